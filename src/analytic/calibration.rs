@@ -1,0 +1,130 @@
+//! Least-squares calibration lines (Ng, Table 1 and Fig. 7).
+
+use crate::error::{Error, Result, finite};
+
+/// Ng's Table 1: force in newtons (weights of 0.25 … 1.5 kg) against strain
+/// reading (×10⁻⁶).
+pub const NG_TABLE_1: [(f64, f64); 6] = [
+    (2.45, 50.0),
+    (4.91, 95.0),
+    (7.36, 148.0),
+    (9.81, 190.0),
+    (12.27, 238.0),
+    (14.72, 290.0),
+];
+
+/// A straight line y = slope · x + intercept fitted by least squares.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LineFit {
+    /// Slope of the fitted line.
+    pub slope: f64,
+    /// Intercept (exactly 0 for a fit through the origin).
+    pub intercept: f64,
+    /// R² about the mean, 1 − SS_res / Σ(y − ȳ)²: the coefficient of
+    /// determination of an ordinary fit. For a fit through the origin it can
+    /// be negative.
+    pub r_squared: f64,
+    /// R² about zero, 1 − SS_res / Σ y²: what a spreadsheet trendline with
+    /// its intercept set to 0 prints (Ng's 0.9998). Equal in meaning to
+    /// `r_squared` only for a fit with an intercept when ȳ = 0.
+    pub r_squared_uncentred: f64,
+}
+
+impl LineFit {
+    /// The line's value at `x`.
+    pub fn at(&self, x: f64) -> f64 {
+        self.slope * x + self.intercept
+    }
+}
+
+fn check(points: &[(f64, f64)], needed: usize) -> Result<()> {
+    if points.len() < needed {
+        return Err(Error::Parse(format!(
+            "a line fit needs at least {needed} points, got {}",
+            points.len()
+        )));
+    }
+    for &(x, y) in points {
+        finite("x", x)?;
+        finite("y", y)?;
+    }
+    Ok(())
+}
+
+fn r_squared(points: &[(f64, f64)], slope: f64, intercept: f64) -> (f64, f64) {
+    let n = points.len() as f64;
+    let mean_y = points.iter().map(|p| p.1).sum::<f64>() / n;
+    let mut ss_res = 0.0;
+    let mut ss_tot = 0.0;
+    let mut ss_zero = 0.0;
+    for &(x, y) in points {
+        let r = y - (slope * x + intercept);
+        ss_res += r * r;
+        ss_tot += (y - mean_y) * (y - mean_y);
+        ss_zero += y * y;
+    }
+    let centred = if ss_tot == 0.0 { 1.0 } else { 1.0 - ss_res / ss_tot };
+    let uncentred = if ss_zero == 0.0 { 1.0 } else { 1.0 - ss_res / ss_zero };
+    (centred, uncentred)
+}
+
+/// Ordinary least squares y = a x + b. Needs two points with distinct x.
+pub fn fit_with_intercept(points: &[(f64, f64)]) -> Result<LineFit> {
+    check(points, 2)?;
+    let n = points.len() as f64;
+    let mx = points.iter().map(|p| p.0).sum::<f64>() / n;
+    let my = points.iter().map(|p| p.1).sum::<f64>() / n;
+    let sxx: f64 = points.iter().map(|p| (p.0 - mx) * (p.0 - mx)).sum();
+    let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    if sxx == 0.0 {
+        return Err(Error::Parse("a line fit needs two distinct x values".into()));
+    }
+    let slope = sxy / sxx;
+    let intercept = my - slope * mx;
+    let (r_squared, r_squared_uncentred) = r_squared(points, slope, intercept);
+    Ok(LineFit {
+        slope,
+        intercept,
+        r_squared,
+        r_squared_uncentred,
+    })
+}
+
+/// Least squares through the origin, y = a x. Needs one point with x ≠ 0.
+pub fn fit_through_origin(points: &[(f64, f64)]) -> Result<LineFit> {
+    check(points, 1)?;
+    let sxx: f64 = points.iter().map(|p| p.0 * p.0).sum();
+    let sxy: f64 = points.iter().map(|p| p.0 * p.1).sum();
+    if sxx == 0.0 {
+        return Err(Error::Parse("a fit through the origin needs some x ≠ 0".into()));
+    }
+    let slope = sxy / sxx;
+    let (r_squared, r_squared_uncentred) = r_squared(points, slope, 0.0);
+    Ok(LineFit {
+        slope,
+        intercept: 0.0,
+        r_squared,
+        r_squared_uncentred,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exact_line_is_recovered() {
+        let pts = [(1.0, 3.0), (2.0, 5.0), (4.0, 9.0)];
+        let f = fit_with_intercept(&pts).unwrap();
+        assert!((f.slope - 2.0).abs() < 1e-15 && (f.intercept - 1.0).abs() < 1e-14);
+        assert!((f.r_squared - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn degenerate_input_is_an_error() {
+        assert!(fit_with_intercept(&[(1.0, 2.0)]).is_err());
+        assert!(fit_with_intercept(&[(1.0, 2.0), (1.0, 3.0)]).is_err());
+        assert!(fit_through_origin(&[(0.0, 2.0)]).is_err());
+        assert!(fit_through_origin(&[(f64::NAN, 2.0)]).is_err());
+    }
+}

@@ -1,0 +1,148 @@
+//! Static forces after Ng: the OM torque line, slider force, side thrust,
+//! friction, transmission angle.
+//!
+//! Ng's M is the textbook's E: the rod AB produced meets the perpendicular
+//! to the stroke through the crank centre there, and OM = CE = −ds/dθ
+//! (signed). Virtual work, T ω + F v_p = 0, gives the slider force F = T/OM
+//! along +x that holds the crank torque T (counter-clockwise positive).
+
+use crate::error::{Error, Result, finite, non_negative};
+use crate::mechanism::Pose;
+
+/// The signed length OM (= CE = E_y = −ds/dθ): the moment arm that turns a
+/// crank torque into a slider force (Ng eq. 2, 5). Zero at the dead centres.
+pub fn om(pose: &Pose) -> f64 {
+    -pose.position_rate()
+}
+
+/// Slider force from crank torque, F_p = T / OM (Ng eq. 6), positive along
+/// +x. `None` at a dead centre, where OM = 0 and no finite slider force
+/// balances a torque.
+pub fn slider_force(pose: &Pose, torque: f64) -> Option<f64> {
+    let om = om(pose);
+    if om == 0.0 {
+        return None;
+    }
+    let f = torque / om;
+    f.is_finite().then_some(f)
+}
+
+/// Crank torque balanced by a slider force F along +x, T = F · OM (Ng eq. 2);
+/// zero at the dead centres, where the slider force passes through C.
+pub fn torque_from_slider_force(pose: &Pose, force: f64) -> f64 {
+    force * om(pose)
+}
+
+/// Side thrust of the guides on the slider, F_s = F_p tan φ (Ng eq. 7),
+/// signed along +y.
+pub fn side_thrust(pose: &Pose, slider_force: f64) -> f64 {
+    slider_force * pose.rise() / pose.run()
+}
+
+/// The slider force needed with friction in the guides.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Friction {
+    /// F_p' = F_p (1 − μ |tan φ|) (Ng eq. 8, where tan φ > 0): friction helps
+    /// hold the slider, so less force is needed.
+    Force(f64),
+    /// μ |tan φ| ≥ 1: friction alone holds the slider and eq. (8) would
+    /// give zero or a negative force. Carries μ |tan φ|.
+    SelfLocking(f64),
+}
+
+/// Slider force with friction coefficient μ ≥ 0 (Ng eq. 8). The normal force
+/// on the guides is the side thrust, which the torque alone fixes, so
+/// eq. (8) is exact; |tan φ| is used so that the result also holds below
+/// the line of stroke (θ in 180°…360°), where friction again opposes the
+/// impending motion.
+pub fn with_friction(pose: &Pose, slider_force: f64, mu: f64) -> Result<Friction> {
+    let mu = non_negative("friction", mu)?;
+    let slider_force = finite("slider force", slider_force)?;
+    let k = mu * (pose.rise() / pose.run()).abs();
+    Ok(if k >= 1.0 {
+        Friction::SelfLocking(k)
+    } else {
+        Friction::Force(slider_force * (1.0 - k))
+    })
+}
+
+/// Coefficient of friction from the tilt at which a block first slides,
+/// μ = tan(tilt) (Ng eq. 10). The tilt must be in [0°, 90°).
+pub fn mu_from_tilt_degrees(tilt: f64) -> Result<f64> {
+    let tilt = non_negative("tilt", tilt)?;
+    if tilt >= 90.0 {
+        return Err(Error::OutOfRange {
+            name: "tilt",
+            value: tilt,
+            reason: "a block slides before the plane is vertical; give a tilt below 90°".into(),
+        });
+    }
+    if tilt == 45.0 {
+        return Ok(1.0);
+    }
+    Ok(tilt.to_radians().tan())
+}
+
+/// Ng's transmission angle β = 180° − φ − θ (eq. 11), in degrees, valid for
+/// an in-line mechanism with 0 < θ < 180°. Use
+/// [`Pose::transmission_angle`] for the general interior angle at the pin.
+pub fn transmission_angle_ng_degrees(pose: &Pose) -> f64 {
+    180.0 - pose.obliquity().to_degrees() - pose.angle().degrees()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Angle, SliderCrank};
+
+    fn pose(d: f64) -> Pose {
+        SliderCrank::in_line(0.025, 0.072)
+            .unwrap()
+            .pose(Angle::from_degrees(d).unwrap())
+    }
+
+    #[test]
+    fn dead_centre_has_no_finite_force() {
+        assert_eq!(slider_force(&pose(0.0), 1.0), None);
+        assert_eq!(slider_force(&pose(180.0), 1.0), None);
+        assert_eq!(torque_from_slider_force(&pose(0.0), 5.0), 0.0);
+    }
+
+    #[test]
+    fn force_and_torque_are_inverse() {
+        let p = pose(37.0);
+        let f = slider_force(&p, 0.3).unwrap();
+        assert!((torque_from_slider_force(&p, f) - 0.3).abs() < 1e-16);
+    }
+
+    #[test]
+    fn ng_eq_6_form_agrees_in_line() {
+        // F = T / (tan φ (r cos θ + l cos φ)).
+        for d in [10.0, 60.0, 90.0, 160.0] {
+            let p = pose(d);
+            let phi = p.obliquity();
+            let eq6 = 0.2 / (phi.tan() * (0.025 * p.angle().cos() + 0.072 * phi.cos()));
+            let f = slider_force(&p, 0.2).unwrap();
+            assert!((f - eq6).abs() < 1e-12 * f, "{d}");
+        }
+    }
+
+    #[test]
+    fn self_locking_is_reported() {
+        let p = pose(90.0);
+        assert!(matches!(with_friction(&p, 10.0, 5.0).unwrap(), Friction::SelfLocking(k) if k > 1.0));
+        match with_friction(&p, 10.0, 1.0).unwrap() {
+            Friction::Force(f) => assert!(f > 0.0 && f < 10.0),
+            other => panic!("{other:?}"),
+        }
+        assert!(with_friction(&p, 10.0, -0.1).is_err());
+    }
+
+    #[test]
+    fn tilt_to_mu() {
+        assert_eq!(mu_from_tilt_degrees(45.0).unwrap(), 1.0);
+        assert_eq!(mu_from_tilt_degrees(0.0).unwrap(), 0.0);
+        assert!(mu_from_tilt_degrees(90.0).is_err());
+        assert!(mu_from_tilt_degrees(-1.0).is_err());
+    }
+}

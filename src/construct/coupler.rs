@@ -1,0 +1,39 @@
+//! Coupler points: points of the rod between A and B, which trace ovals.
+
+use crate::geom::{Point, Vector};
+use crate::mechanism::Pose;
+
+/// The point A + t (B − A) of the rod, t in [0, 1] (0 at the cross-head, 1
+/// at the crank pin). t = 0 traces the line of stroke, t = 1 the crank
+/// circle, and every point between an oval (textbook §34).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CouplerPoint {
+    t: f64,
+}
+
+impl CouplerPoint {
+    /// The coupler point at fraction `t` from A to B; `None` unless
+    /// 0 ≤ t ≤ 1.
+    pub fn new(t: f64) -> Option<Self> {
+        (0.0..=1.0).contains(&t).then_some(Self { t })
+    }
+
+    /// The fraction t.
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+
+    /// Its position at `pose`.
+    pub fn point(&self, pose: &Pose) -> Point {
+        let (a, b) = (pose.a(), pose.b());
+        a + (b - a) * self.t
+    }
+
+    /// Its exact derivative with respect to θ at `pose`.
+    pub fn derivative(&self, pose: &Pose) -> Vector {
+        let r = pose.mechanism().crank();
+        let (s, c) = (pose.angle().sin(), pose.angle().cos());
+        let xa = pose.position_rate();
+        Vector::new(xa + self.t * (-r * s - xa), self.t * r * c)
+    }
+}

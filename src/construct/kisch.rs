@@ -1,0 +1,71 @@
+//! Kisch's construction (textbook Fig. 66).
+
+use super::{AccelerationPoints, VelocityLine};
+use crate::geom::{Circle, Point, Vector, perp};
+use crate::mechanism::Pose;
+
+/// Kisch: on AB describe a semicircle AHB; the circle with centre B and
+/// radius BE cuts it at H; HFG perpendicular to AB gives F on AB and G on
+/// the line through C parallel to the stroke.
+///
+/// F is placed from BA · BF = BE² (BE a mean proportional), which holds
+/// also where H degenerates: at θ = 90° E = B, so H = F = B; at the dead
+/// centres H = F lies on AB. H is taken on the side of AB away from C (the
+/// upper side when C is on AB), at height √(BF · FA) above F. Never needs D.
+///
+/// H exists whenever BE ≤ BA, and for a crank that turns fully that always
+/// holds: BE / BA = r |cos θ| / (l cos φ) < 1 because l > r + |e|.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Kisch {
+    h: Option<Point>,
+    be: f64,
+    points: AccelerationPoints,
+}
+
+impl Kisch {
+    /// Constructs H, F and G from E.
+    pub fn construct(pose: &Pose, e: &VelocityLine) -> Self {
+        let (a, b, c) = (pose.a(), pose.b(), pose.c());
+        let ba = a - b;
+        let be2 = (e.e() - b).norm_squared();
+        let ba2 = ba.norm_squared();
+        let f = b + ba * (be2 / ba2);
+        // HF² = BF · FA (altitude of the right triangle AHB).
+        let bf = be2 / ba2.sqrt();
+        let fa = ba2.sqrt() - bf;
+        let h = (fa >= 0.0).then(|| {
+            let mut n: Vector = perp(&ba) / ba2.sqrt();
+            if n.dot(&(c - b)) > 0.0 || (n.dot(&(c - b)) == 0.0 && n.y < 0.0) {
+                n = -n;
+            }
+            f + n * (bf * fa).sqrt()
+        });
+        Self {
+            h,
+            be: be2.sqrt(),
+            points: AccelerationPoints::from_f(pose, f),
+        }
+    }
+
+    /// H, where the circle about B through E cuts the semicircle on AB;
+    /// `None` only if rounding makes BE > BA at the very limit of assembly.
+    pub fn h(&self) -> Option<Point> {
+        self.h
+    }
+
+    /// The radius BE of the circle about B.
+    pub fn be(&self) -> f64 {
+        self.be
+    }
+
+    /// The circle on AB as diameter (the semicircle AHB is its half away
+    /// from C).
+    pub fn semicircle(pose: &Pose) -> Circle {
+        Circle::on_diameter(pose.a(), pose.b())
+    }
+
+    /// F and G and what they give.
+    pub fn points(&self) -> &AccelerationPoints {
+        &self.points
+    }
+}

@@ -1,0 +1,29 @@
+//! The graphical constructions of textbook §36–37 and Ng's paper, built as
+//! geometry and read off as lengths.
+//!
+//! One construction per file. Each computes only what it needs (Kisch never
+//! builds D) and reports its derived quantity as a rate with respect to the
+//! crank angle θ; multiply by ω or ω² for time rates. [`cross_check`] sets
+//! every value read off a construction beside the analytic core's.
+
+mod acceleration;
+mod centrode;
+mod check;
+mod coupler;
+mod instant_centre;
+mod kisch;
+mod klein;
+mod torque;
+mod velocity_line;
+mod virtual_centres;
+
+pub use acceleration::AccelerationPoints;
+pub use centrode::{Centrode, CentrodeKind};
+pub use check::{CheckRow, Quantity, SweepReport, cross_check, sweep};
+pub use coupler::CouplerPoint;
+pub use instant_centre::InstantCentre;
+pub use kisch::Kisch;
+pub use klein::Klein;
+pub use torque::TorqueLine;
+pub use velocity_line::VelocityLine;
+pub use virtual_centres::{Link, VirtualCentres, kennedy_residual};

@@ -1,0 +1,47 @@
+//! E and the velocity line CE (textbook Fig. 63, Ng Fig. A1 where E is M).
+
+use crate::geom::{Line, Point, Vector};
+use crate::mechanism::Pose;
+
+/// E: the rod AB produced meets the line through C perpendicular to the
+/// stroke. CE / CB = V_p / V_c.
+///
+/// E always exists: the rod is never perpendicular to the stroke for a
+/// mechanism whose crank turns fully. At the dead centres E = C and the
+/// slider is at rest; at θ = 90° E = B.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VelocityLine {
+    e: Point,
+}
+
+impl VelocityLine {
+    /// Constructs E for `pose`.
+    pub fn construct(pose: &Pose) -> Self {
+        // Anchored at B, near E, so that no digits cancel when the offset is
+        // much larger than the crank (E_y = r sin θ + r cos θ h / w).
+        let rod = Line::through(pose.b(), pose.a()).expect("rod length is positive");
+        let vertical = Line::new(pose.c(), Vector::new(0.0, 1.0)).expect("unit direction");
+        // Exactly-parallel test only: the rod is never vertical.
+        let e = rod
+            .intersect_eps(&vertical, 0.0)
+            .point()
+            .expect("the rod of a fully turning crank is never perpendicular to the stroke");
+        Self { e }
+    }
+
+    /// The point E (Ng's M), on the y-axis.
+    pub fn e(&self) -> Point {
+        self.e
+    }
+
+    /// Signed CE: positive when E is above C. Equals −ds/dθ, so the slider
+    /// velocity is −ω · CE and V_p / V_c = CE / CB in magnitude.
+    pub fn ce(&self) -> f64 {
+        self.e.y
+    }
+
+    /// ds/dθ read off the construction, −CE.
+    pub fn velocity_ratio(&self) -> f64 {
+        -self.e.y
+    }
+}

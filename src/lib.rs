@@ -1,0 +1,47 @@
+//! # slider-crank
+//!
+//! Exact kinematics, statics and the classical graphical constructions of the
+//! slider-crank mechanism (textbook §34–37: the velocity line CE, Klein's and
+//! Kisch's acceleration constructions, centrodes; Ng: the OM torque line).
+//!
+//! ## Conventions
+//!
+//! World frame: the crank centre C at the origin, the line of stroke
+//! `y = e` (offset `e`, 0 for an in-line engine), the slider on the `+x`
+//! side. The crank angle θ is counter-clockwise from `+x`; θ = 0 puts the
+//! slider at its outer dead centre. ω > 0 turns the crank counter-clockwise.
+//!
+//! | point | textbook | Ng |
+//! |---|---|---|
+//! | crank centre | C | O |
+//! | crank pin | B | C |
+//! | cross-head | A | P |
+//! | instantaneous centre of the rod | D | I |
+//! | rod produced meets the vertical through C | E | M |
+//!
+//! Velocities and accelerations are signed: d x_A/dt, d² x_A/dt², dφ/dt,
+//! d²φ/dt² with sin φ = (r sin θ − e)/l. Points at infinity are values
+//! ([`geom::Intersection::AtInfinity`]), never NaN or 1e16.
+//!
+//! ```
+//! use slider_crank::{Angle, Kinematics, SliderCrank};
+//! let engine = SliderCrank::in_line(0.5, 3.0)?;          // §35: r = 0.5 ft, l = 3 ft
+//! let pose = engine.pose(Angle::from_degrees(45.0)?);
+//! let k = Kinematics::new(&pose, 26.16)?;               // the book's V_c / r
+//! assert!((k.velocity + 10.3466).abs() < 1e-4);         // ft/s, towards C
+//! # Ok::<(), slider_crank::Error>(())
+//! ```
+#![deny(missing_docs)]
+
+pub mod analytic;
+mod angle;
+pub mod construct;
+mod error;
+pub mod geom;
+mod mechanism;
+pub mod table;
+
+pub use analytic::kinematics::{Kinematics, rpm_to_omega};
+pub use angle::Angle;
+pub use error::{Error, Result};
+pub use mechanism::{Pose, SliderCrank};

@@ -1,0 +1,312 @@
+//! The validated slider-crank mechanism and its pose at a crank angle.
+
+use crate::angle::Angle;
+use crate::error::{Error, Result, finite, positive};
+use crate::geom::Point;
+
+/// An in-line or offset slider-crank chain, validated once.
+///
+/// World frame (DESIGN.md §1): the crank centre C at the origin, the line of
+/// stroke `y = offset`, the slider on the `+x` side; crank angle θ
+/// counter-clockwise from `+x`.
+///
+/// The rod must be longer than `crank + |offset|`, so that the crank turns a
+/// full revolution and every angle is reachable; a shorter rod is an error
+/// that names the bound.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SliderCrank {
+    crank: f64,
+    rod: f64,
+    offset: f64,
+}
+
+impl SliderCrank {
+    /// Validates crank radius `r > 0`, rod length `l > r + |e|` and offset
+    /// `e` (all finite, any consistent unit).
+    pub fn new(crank: f64, rod: f64, offset: f64) -> Result<Self> {
+        let crank = positive("crank", crank)?;
+        let rod = positive("rod", rod)?;
+        let offset = finite("offset", offset)?;
+        let needed = crank + offset.abs();
+        if rod <= needed || !needed.is_finite() {
+            return Err(Error::RodTooShort {
+                crank,
+                rod,
+                offset,
+                needed,
+            });
+        }
+        Ok(Self { crank, rod, offset })
+    }
+
+    /// An in-line mechanism (offset 0).
+    pub fn in_line(crank: f64, rod: f64) -> Result<Self> {
+        Self::new(crank, rod, 0.0)
+    }
+
+    /// Crank radius r.
+    pub fn crank(&self) -> f64 {
+        self.crank
+    }
+
+    /// Connecting-rod length l.
+    pub fn rod(&self) -> f64 {
+        self.rod
+    }
+
+    /// Offset e of the line of stroke from the crank centre.
+    pub fn offset(&self) -> f64 {
+        self.offset
+    }
+
+    /// The ratio n = l / r.
+    pub fn ratio(&self) -> f64 {
+        self.rod / self.crank
+    }
+
+    /// The mechanism at crank angle `angle`.
+    pub fn pose(&self, angle: Angle) -> Pose {
+        Pose::new(*self, angle)
+    }
+
+    /// The outer dead centre: crank and rod in one line, slider farthest out;
+    /// θ = asin(e / (l + r)), in radians in (−π/2, π/2).
+    pub fn outer_dead_centre(&self) -> f64 {
+        (self.offset / (self.rod + self.crank)).asin()
+    }
+
+    /// The inner dead centre: rod folded over the crank, slider nearest;
+    /// θ = π + asin(e / (l − r)). With an offset the two dead centres are
+    /// not 180° apart.
+    pub fn inner_dead_centre(&self) -> f64 {
+        std::f64::consts::PI + (self.offset / (self.rod - self.crank)).asin()
+    }
+
+    /// The stroke: the distance between the slider's two dead-centre
+    /// positions, √((l + r)² − e²) − √((l − r)² − e²); 2r when e = 0.
+    pub fn stroke(&self) -> f64 {
+        let (r, l, e) = (self.crank, self.rod, self.offset);
+        let far = ((l + r - e) * (l + r + e)).sqrt();
+        let near = ((l - r - e) * (l - r + e)).sqrt();
+        // far − near without cancellation: (far² − near²) / (far + near).
+        4.0 * l * r / (far + near)
+    }
+
+    /// Crank angle turned while the slider goes from the outer to the inner
+    /// dead centre (ω > 0), in radians; π when e = 0.
+    pub fn inward_stroke_angle(&self) -> f64 {
+        self.inner_dead_centre() - self.outer_dead_centre()
+    }
+
+    /// Quick-return time ratio at constant ω: the longer stroke's time over
+    /// the shorter's, ≥ 1, exactly 1 for an in-line mechanism.
+    pub fn quick_return_ratio(&self) -> f64 {
+        let inward = self.inward_stroke_angle();
+        let outward = 2.0 * std::f64::consts::PI - inward;
+        inward.max(outward) / inward.min(outward)
+    }
+}
+
+/// The mechanism at one crank angle: the points A, B, C and the exact
+/// derivatives of the slider position and rod obliquity with respect to θ.
+///
+/// Derivatives here are with respect to θ; multiply by ω (first) and ω²
+/// (second) for time derivatives at constant angular speed, as
+/// [`crate::Kinematics`] does.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pose {
+    mechanism: SliderCrank,
+    angle: Angle,
+    /// r sin θ − e: height of the crank pin above the line of stroke.
+    h: f64,
+    /// √(l² − h²) = l cos φ, horizontal extent of the rod (> 0 always).
+    w: f64,
+}
+
+impl Pose {
+    fn new(mechanism: SliderCrank, angle: Angle) -> Self {
+        let (r, l, e) = (mechanism.crank, mechanism.rod, mechanism.offset);
+        let h = r * angle.sin() - e;
+        // Factored to keep precision when the rod is nearly vertical (n → 1).
+        let w = ((l - h) * (l + h)).sqrt();
+        Self {
+            mechanism,
+            angle,
+            h,
+            w,
+        }
+    }
+
+    /// The mechanism this pose belongs to.
+    pub fn mechanism(&self) -> &SliderCrank {
+        &self.mechanism
+    }
+
+    /// The crank angle.
+    pub fn angle(&self) -> Angle {
+        self.angle
+    }
+
+    /// Crank centre C (the origin; Ng's O).
+    pub fn c(&self) -> Point {
+        Point::origin()
+    }
+
+    /// Crank pin B = r(cos θ, sin θ) (Ng's C).
+    pub fn b(&self) -> Point {
+        let r = self.mechanism.crank;
+        Point::new(r * self.angle.cos(), r * self.angle.sin())
+    }
+
+    /// Cross-head A on the line of stroke (Ng's P).
+    pub fn a(&self) -> Point {
+        Point::new(self.position(), self.mechanism.offset)
+    }
+
+    /// Height of the crank pin above the line of stroke, r sin θ − e = l sin φ.
+    pub fn rise(&self) -> f64 {
+        self.h
+    }
+
+    /// Horizontal extent of the rod, l cos φ (always > 0).
+    pub fn run(&self) -> f64 {
+        self.w
+    }
+
+    /// Slider position s = x_A = r cos θ + √(l² − (r sin θ − e)²).
+    pub fn position(&self) -> f64 {
+        self.mechanism.crank * self.angle.cos() + self.w
+    }
+
+    /// ds/dθ = −r sin θ − r cos θ (r sin θ − e)/√(l² − (r sin θ − e)²).
+    pub fn position_rate(&self) -> f64 {
+        let r = self.mechanism.crank;
+        let (s, c) = (self.angle.sin(), self.angle.cos());
+        -r * s - r * c * self.h / self.w
+    }
+
+    /// d²s/dθ² = −r cos θ − r² cos²θ l² / w³ + r sin θ h / w.
+    pub fn position_acceleration(&self) -> f64 {
+        let (r, l) = (self.mechanism.crank, self.mechanism.rod);
+        let (s, c) = (self.angle.sin(), self.angle.cos());
+        let w = self.w;
+        let rc_over_w = r * c / w;
+        -r * c - rc_over_w * rc_over_w * (l / w) * l + r * s * self.h / w
+    }
+
+    /// Obliquity φ of the rod: sin φ = (r sin θ − e)/l, in (−π/2, π/2).
+    pub fn obliquity(&self) -> f64 {
+        self.h.atan2(self.w)
+    }
+
+    /// dφ/dθ = r cos θ / (l cos φ).
+    pub fn obliquity_rate(&self) -> f64 {
+        self.mechanism.crank * self.angle.cos() / self.w
+    }
+
+    /// d²φ/dθ² = −r sin θ / w + r² cos²θ h / w³.
+    pub fn obliquity_acceleration(&self) -> f64 {
+        let r = self.mechanism.crank;
+        let (s, c) = (self.angle.sin(), self.angle.cos());
+        let w = self.w;
+        let rc_over_w = r * c / w;
+        -r * s / w + rc_over_w * rc_over_w * self.h / w
+    }
+
+    /// The textbook's error due to obliquity, x_A − (r cos θ + l) = w − l,
+    /// computed as −h²/(w + l) without cancellation; r(√(n² − sin²θ) − n)
+    /// when e = 0. Never positive.
+    pub fn obliquity_error(&self) -> f64 {
+        -self.h * self.h / (self.w + self.mechanism.rod)
+    }
+
+    /// The interior angle of the triangle C B A at the crank pin, in radians
+    /// in [0, π]: the general transmission angle. For e = 0 and
+    /// 0 < θ < 180° it equals π − φ − θ (Ng eq. 11); it is 0 or π at the
+    /// dead centres.
+    pub fn transmission_angle(&self) -> f64 {
+        let b = self.b();
+        let to_c = self.c() - b;
+        let to_a = self.a() - b;
+        let cross = to_c.x * to_a.y - to_c.y * to_a.x;
+        cross.abs().atan2(to_c.dot(&to_a))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn deg(d: f64) -> Angle {
+        Angle::from_degrees(d).unwrap()
+    }
+
+    #[test]
+    fn validation_names_the_bound() {
+        let err = SliderCrank::new(0.5, 0.4, 0.0).unwrap_err();
+        assert!(matches!(err, Error::RodTooShort { needed, .. } if needed == 0.5));
+        assert!(err.to_string().contains("rod > crank + |offset| = 0.5"));
+        assert!(SliderCrank::new(1.0, 3.0, 2.0).is_err());
+        assert!(SliderCrank::new(1.0, 3.0, -2.0).is_err());
+        assert!(SliderCrank::new(1.0, 3.0, 1.9).is_ok());
+        assert!(SliderCrank::new(-1.0, 3.0, 0.0).is_err());
+        assert!(SliderCrank::new(0.0, 3.0, 0.0).is_err());
+        assert!(SliderCrank::new(f64::NAN, 3.0, 0.0).is_err());
+        assert!(SliderCrank::new(1.0, f64::INFINITY, 0.0).is_err());
+        assert!(SliderCrank::new(1.0, 3.0, f64::NAN).is_err());
+        assert!(SliderCrank::new(f64::MAX, f64::MAX, f64::MAX).is_err());
+    }
+
+    #[test]
+    fn dead_centres_in_line() {
+        let m = SliderCrank::in_line(0.5, 3.0).unwrap();
+        assert_eq!(m.outer_dead_centre(), 0.0);
+        assert_eq!(m.inner_dead_centre(), std::f64::consts::PI);
+        assert!((m.stroke() - 1.0).abs() < 1e-15);
+        assert_eq!(m.quick_return_ratio(), 1.0);
+        let outer = m.pose(deg(0.0));
+        assert_eq!(outer.position(), 3.5);
+        assert_eq!(m.pose(deg(180.0)).position(), 2.5);
+        assert_eq!(outer.position_rate(), 0.0);
+    }
+
+    #[test]
+    fn offset_dead_centres_are_stationary_and_collinear() {
+        let m = SliderCrank::new(1.0, 3.0, 0.7).unwrap();
+        for theta in [m.outer_dead_centre(), m.inner_dead_centre()] {
+            let p = m.pose(Angle::from_radians(theta).unwrap());
+            assert!(p.position_rate().abs() < 1e-14, "{}", p.position_rate());
+            assert!(p.transmission_angle().min(std::f64::consts::PI - p.transmission_angle()) < 1e-7);
+        }
+        let far = m.pose(Angle::from_radians(m.outer_dead_centre()).unwrap()).position();
+        let near = m.pose(Angle::from_radians(m.inner_dead_centre()).unwrap()).position();
+        assert!((far - near - m.stroke()).abs() < 1e-14);
+        assert!(m.quick_return_ratio() > 1.0);
+    }
+
+    #[test]
+    fn rod_has_its_length_at_every_pose() {
+        let m = SliderCrank::new(1.0, 1.05, 0.04).unwrap();
+        for k in 0..360 {
+            let p = m.pose(deg(k as f64));
+            assert!(((p.a() - p.b()).norm() - 1.05).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn transmission_angle_matches_ng_eq_11_in_line() {
+        let m = SliderCrank::in_line(25.0, 72.0).unwrap();
+        for d in [10.0, 45.0, 90.0, 135.0, 170.0] {
+            let p = m.pose(deg(d));
+            let ng = std::f64::consts::PI - p.obliquity() - p.angle().radians();
+            assert!((p.transmission_angle() - ng).abs() < 1e-14, "{d}");
+        }
+    }
+
+    #[test]
+    fn obliquity_error_matches_textbook_form() {
+        let m = SliderCrank::in_line(1.0, 4.0).unwrap();
+        let p = m.pose(deg(90.0));
+        assert!((p.obliquity_error() - (15f64.sqrt() - 4.0)).abs() < 1e-15);
+    }
+}
