@@ -276,10 +276,18 @@ mod tests {
         for theta in [m.outer_dead_centre(), m.inner_dead_centre()] {
             let p = m.pose(Angle::from_radians(theta).unwrap());
             assert!(p.position_rate().abs() < 1e-14, "{}", p.position_rate());
-            assert!(p.transmission_angle().min(std::f64::consts::PI - p.transmission_angle()) < 1e-7);
+            assert!(
+                p.transmission_angle()
+                    .min(std::f64::consts::PI - p.transmission_angle())
+                    < 1e-7
+            );
         }
-        let far = m.pose(Angle::from_radians(m.outer_dead_centre()).unwrap()).position();
-        let near = m.pose(Angle::from_radians(m.inner_dead_centre()).unwrap()).position();
+        let far = m
+            .pose(Angle::from_radians(m.outer_dead_centre()).unwrap())
+            .position();
+        let near = m
+            .pose(Angle::from_radians(m.inner_dead_centre()).unwrap())
+            .position();
         assert!((far - near - m.stroke()).abs() < 1e-14);
         assert!(m.quick_return_ratio() > 1.0);
     }

@@ -2,7 +2,7 @@
 
 use proptest::prelude::*;
 use slider_crank::construct::{
-    CentrodeKind, Centrode, CouplerPoint, InstantCentre, Kisch, Klein, Link, Quantity, TorqueLine,
+    Centrode, CentrodeKind, CouplerPoint, InstantCentre, Kisch, Klein, Link, Quantity, TorqueLine,
     VelocityLine, VirtualCentres, cross_check, kennedy_residual, sweep,
 };
 use slider_crank::geom::Intersection;
@@ -63,13 +63,23 @@ fn d_is_at_infinity_exactly_at_90_and_270_and_finite_just_before() {
         assert_eq!(ic.rod_angular_velocity_ratio(), 0.0);
     }
     let pose = m.pose(deg(89.999999));
-    let d = InstantCentre::construct(&pose).d().point().expect("finite D");
+    let d = InstantCentre::construct(&pose)
+        .d()
+        .point()
+        .expect("finite D");
     // D = (x_A, x_A tan θ).
     let t = pose.angle().sin() / pose.angle().cos();
     assert!(d.y > 1e8, "far up the crank line: {}", d.y);
     assert!((d.x - pose.position()).abs() < 1e-15 * d.x);
     assert!((d.y / (pose.position() * t) - 1.0).abs() < 1e-14);
-    assert!(Klein::construct(&pose, &InstantCentre::construct(&pose), &VelocityLine::construct(&pose)).is_some());
+    assert!(
+        Klein::construct(
+            &pose,
+            &InstantCentre::construct(&pose),
+            &VelocityLine::construct(&pose)
+        )
+        .is_some()
+    );
 }
 
 #[test]
@@ -106,7 +116,10 @@ fn kisch_h_is_on_the_semicircle_and_the_circle_about_b() {
         let kisch = Kisch::construct(&pose, &e);
         let h = kisch.h().expect("BE < BA for n = 6");
         let semi = Kisch::semicircle(&pose);
-        assert!(((h - semi.centre).norm() - semi.radius).abs() < 1e-14, "{k}");
+        assert!(
+            ((h - semi.centre).norm() - semi.radius).abs() < 1e-14,
+            "{k}"
+        );
         assert!(((h - pose.b()).norm() - kisch.be()).abs() < 1e-14, "{k}");
         // HF is perpendicular to AB.
         let hf = kisch.points().f() - h;
@@ -141,7 +154,10 @@ fn fig_67_cg_at_45_degrees() {
     let (s, n) = (0.5f64.sqrt(), 6.0f64);
     let exact = 0.5 * (s + s.powi(4) / (n * n - s * s).powf(1.5));
     assert!((kisch.points().cg() - exact).abs() < 1e-15);
-    assert!((kisch.points().cg() - 0.351).abs() < 0.004, "the drawing's 0.351 is within 1 %");
+    assert!(
+        (kisch.points().cg() - 0.351).abs() < 0.004,
+        "the drawing's 0.351 is within 1 %"
+    );
     // Velocity scale V_c / CB = 13.08 / 0.5 = 26.16; acceleration scale its square.
     let scale = 13.08 / 0.5;
     assert!((scale - 26.16f64).abs() < 1e-12);
@@ -178,7 +194,11 @@ fn kennedy_theorem_holds_for_every_triple() {
     let m = SliderCrank::new(1.0, 3.0, 0.6).unwrap();
     for k in 0..360 {
         let pose = m.pose(deg(k as f64));
-        let vc = VirtualCentres::construct(&pose, &InstantCentre::construct(&pose), &VelocityLine::construct(&pose));
+        let vc = VirtualCentres::construct(
+            &pose,
+            &InstantCentre::construct(&pose),
+            &VelocityLine::construct(&pose),
+        );
         for [p, q, s] in [[A, B, C], [A, B, D], [A, C, D], [B, C, D]] {
             let res = kennedy_residual(
                 &vc.centre(p, q).unwrap(),
@@ -187,8 +207,14 @@ fn kennedy_theorem_holds_for_every_triple() {
             );
             assert!(res.abs() < 1e-13, "{k}: {p:?}{q:?}{s:?} {res}");
         }
-        assert!(matches!(vc.centre(D, C).unwrap(), Intersection::AtInfinity(_)));
-        assert_eq!(vc.centre(A, C).unwrap().point(), Some(VelocityLine::construct(&pose).e()));
+        assert!(matches!(
+            vc.centre(D, C).unwrap(),
+            Intersection::AtInfinity(_)
+        ));
+        assert_eq!(
+            vc.centre(A, C).unwrap().point(),
+            Some(VelocityLine::construct(&pose).e())
+        );
     }
     // Not collinear: a check that the residual can fail.
     let p = |x, y| Intersection::Point(slider_crank::geom::Point::new(x, y));
@@ -205,9 +231,15 @@ fn centrode_derivatives_match_finite_differences() {
             let p = |x: f64| c.point(&m.pose(deg(x))).point().unwrap();
             let fd = (p(d + h) - p(d - h)) / (2.0 * h.to_radians());
             let exact = c.derivative(&m.pose(deg(d))).unwrap();
-            assert!((fd - exact).norm() < 1e-6 * (1.0 + exact.norm()), "{kind:?} {d}");
+            assert!(
+                (fd - exact).norm() < 1e-6 * (1.0 + exact.norm()),
+                "{kind:?} {d}"
+            );
         }
-        assert!(matches!(c.point(&m.pose(deg(90.0))), Intersection::AtInfinity(_)));
+        assert!(matches!(
+            c.point(&m.pose(deg(90.0))),
+            Intersection::AtInfinity(_)
+        ));
         assert!(c.derivative(&m.pose(deg(270.0))).is_none());
     }
     // The fixed centrode is D itself.
@@ -224,7 +256,10 @@ fn moving_centrode_is_d_in_the_rod_frame() {
     let pose = m.pose(deg(40.0));
     let d = InstantCentre::construct(&pose).d().point().unwrap();
     let u = (pose.b() - pose.a()) / 3.0;
-    let local = Centrode::new(CentrodeKind::Moving).point(&pose).point().unwrap();
+    let local = Centrode::new(CentrodeKind::Moving)
+        .point(&pose)
+        .point()
+        .unwrap();
     let back = pose.a() + u * local.x + slider_crank::geom::perp(&u) * local.y;
     assert!((back - d).norm() < 1e-14);
 }
@@ -239,7 +274,8 @@ fn coupler_points_trace_ovals_between_line_and_circle() {
         assert_eq!(CouplerPoint::new(0.0).unwrap().point(&pose), pose.a());
         assert!((CouplerPoint::new(1.0).unwrap().point(&pose) - pose.b()).norm() < 1e-15);
         let h = 1e-6;
-        let fd = (mid.point(&m.pose(deg(k as f64 * 10.0 + h))) - mid.point(&m.pose(deg(k as f64 * 10.0 - h))))
+        let fd = (mid.point(&m.pose(deg(k as f64 * 10.0 + h)))
+            - mid.point(&m.pose(deg(k as f64 * 10.0 - h))))
             / (2.0 * h.to_radians());
         assert!((fd - mid.derivative(&pose)).norm() < 1e-6);
     }

@@ -106,7 +106,10 @@ mod tests {
 
     #[test]
     fn relative_error_of_zero() {
-        let a = Approximation { approx: 0.0, exact: 0.0 };
+        let a = Approximation {
+            approx: 0.0,
+            exact: 0.0,
+        };
         assert_eq!(a.relative_error(), 0.0);
     }
 }

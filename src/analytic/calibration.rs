@@ -63,8 +63,16 @@ fn r_squared(points: &[(f64, f64)], slope: f64, intercept: f64) -> (f64, f64) {
         ss_tot += (y - mean_y) * (y - mean_y);
         ss_zero += y * y;
     }
-    let centred = if ss_tot == 0.0 { 1.0 } else { 1.0 - ss_res / ss_tot };
-    let uncentred = if ss_zero == 0.0 { 1.0 } else { 1.0 - ss_res / ss_zero };
+    let centred = if ss_tot == 0.0 {
+        1.0
+    } else {
+        1.0 - ss_res / ss_tot
+    };
+    let uncentred = if ss_zero == 0.0 {
+        1.0
+    } else {
+        1.0 - ss_res / ss_zero
+    };
     (centred, uncentred)
 }
 
@@ -77,7 +85,9 @@ pub fn fit_with_intercept(points: &[(f64, f64)]) -> Result<LineFit> {
     let sxx: f64 = points.iter().map(|p| (p.0 - mx) * (p.0 - mx)).sum();
     let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
     if sxx == 0.0 {
-        return Err(Error::Parse("a line fit needs two distinct x values".into()));
+        return Err(Error::Parse(
+            "a line fit needs two distinct x values".into(),
+        ));
     }
     let slope = sxy / sxx;
     let intercept = my - slope * mx;
@@ -96,7 +106,9 @@ pub fn fit_through_origin(points: &[(f64, f64)]) -> Result<LineFit> {
     let sxx: f64 = points.iter().map(|p| p.0 * p.0).sum();
     let sxy: f64 = points.iter().map(|p| p.0 * p.1).sum();
     if sxx == 0.0 {
-        return Err(Error::Parse("a fit through the origin needs some x ≠ 0".into()));
+        return Err(Error::Parse(
+            "a fit through the origin needs some x ≠ 0".into(),
+        ));
     }
     let slope = sxy / sxx;
     let (r_squared, r_squared_uncentred) = r_squared(points, slope, 0.0);

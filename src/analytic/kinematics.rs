@@ -74,8 +74,14 @@ mod tests {
             let rate = omega * c / q;
             let acc = -omega * omega * s / q * (n * n - 1.0) / (n * n - s * s);
             assert!((k.velocity - v).abs() <= 1e-13 * r * omega, "{d}");
-            assert!((k.rod_angular_velocity - rate).abs() <= 1e-14 * omega, "{d}");
-            assert!((k.rod_angular_acceleration - acc).abs() <= 1e-13 * omega * omega, "{d}");
+            assert!(
+                (k.rod_angular_velocity - rate).abs() <= 1e-14 * omega,
+                "{d}"
+            );
+            assert!(
+                (k.rod_angular_acceleration - acc).abs() <= 1e-13 * omega * omega,
+                "{d}"
+            );
         }
     }
 

@@ -130,7 +130,9 @@ mod tests {
     #[test]
     fn self_locking_is_reported() {
         let p = pose(90.0);
-        assert!(matches!(with_friction(&p, 10.0, 5.0).unwrap(), Friction::SelfLocking(k) if k > 1.0));
+        assert!(
+            matches!(with_friction(&p, 10.0, 5.0).unwrap(), Friction::SelfLocking(k) if k > 1.0)
+        );
         match with_friction(&p, 10.0, 1.0).unwrap() {
             Friction::Force(f) => assert!(f > 0.0 && f < 10.0),
             other => panic!("{other:?}"),

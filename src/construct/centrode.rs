@@ -59,7 +59,9 @@ impl Centrode {
             return Intersection::AtInfinity(self.asymptote(pose));
         };
         match self.kind {
-            CentrodeKind::Fixed => Intersection::Point(Point::new(pose.position(), pose.mechanism().offset() + k)),
+            CentrodeKind::Fixed => {
+                Intersection::Point(Point::new(pose.position(), pose.mechanism().offset() + k))
+            }
             CentrodeKind::Moving => {
                 let l = pose.mechanism().rod();
                 Intersection::Point(Point::new(k * pose.rise() / l, -k * pose.run() / l))
@@ -77,7 +79,10 @@ impl Centrode {
                 let r = pose.mechanism().crank();
                 let dh = r * pose.angle().cos();
                 let dw = -pose.rise() * dh / pose.run();
-                Vector::new((dk * pose.rise() + k * dh) / l, -(dk * pose.run() + k * dw) / l)
+                Vector::new(
+                    (dk * pose.rise() + k * dh) / l,
+                    -(dk * pose.run() + k * dw) / l,
+                )
             }
         })
     }

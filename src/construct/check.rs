@@ -80,7 +80,12 @@ pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
         scale,
     };
     let mut rows = vec![
-        row(Quantity::Velocity, e.velocity_ratio(), pose.position_rate(), r),
+        row(
+            Quantity::Velocity,
+            e.velocity_ratio(),
+            pose.position_rate(),
+            r,
+        ),
         row(
             Quantity::RodAngularVelocity,
             d.rod_angular_velocity_ratio(),
@@ -151,7 +156,10 @@ pub fn sweep(mechanism: &SliderCrank, samples: usize) -> SweepReport {
     for angle in &angles {
         let pose = mechanism.pose(*angle);
         for row in cross_check(&pose) {
-            let slot = worst.iter_mut().find(|w| w.0 == row.quantity).expect("all listed");
+            let slot = worst
+                .iter_mut()
+                .find(|w| w.0 == row.quantity)
+                .expect("all listed");
             let err = row.scaled_error();
             slot.3 += 1;
             // NaN must not hide: count it as infinite.

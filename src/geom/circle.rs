@@ -108,7 +108,10 @@ mod tests {
     fn tangency_within_tolerance() {
         let a = Circle::new(Point::new(0.0, 0.0), 1.0);
         let b = Circle::new(Point::new(2.0 + 1e-13, 0.0), 1.0);
-        assert!(matches!(a.intersect_circle(&b, 1e-12), CircleIntersection::Tangent(_)));
+        assert!(matches!(
+            a.intersect_circle(&b, 1e-12),
+            CircleIntersection::Tangent(_)
+        ));
         assert_eq!(a.intersect_circle(&b, 0.0), CircleIntersection::None);
         let inner = Circle::new(Point::new(0.5, 0.0), 0.5);
         assert_eq!(

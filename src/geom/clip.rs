@@ -72,7 +72,9 @@ mod tests {
     #[test]
     fn ray_starts_at_its_origin() {
         let f = Frame::new(Point::new(0.0, 0.0), Point::new(10.0, 10.0));
-        let (a, b) = f.clip_ray(Point::new(5.0, 5.0), Vector::new(0.0, 1.0)).unwrap();
+        let (a, b) = f
+            .clip_ray(Point::new(5.0, 5.0), Vector::new(0.0, 1.0))
+            .unwrap();
         assert_eq!((a, b), (Point::new(5.0, 5.0), Point::new(5.0, 10.0)));
         assert!(f.contains(a) && !f.contains(Point::new(11.0, 0.0)));
     }

@@ -118,7 +118,12 @@ impl Line {
         let d2 = other.direction;
         let denom = cross(&d1, &d2);
         if denom.abs() <= eps * d1.norm() * d2.norm() {
-            let scale = self.point.coords.norm().max(other.point.coords.norm()).max(1.0);
+            let scale = self
+                .point
+                .coords
+                .norm()
+                .max(other.point.coords.norm())
+                .max(1.0);
             return if self.signed_distance(other.point).abs() <= eps * scale {
                 Intersection::Coincident
             } else {
@@ -169,7 +174,10 @@ mod tests {
         let b = Line::new(Point::new(1.0, 0.0), Vector::new(0.0, 1.0)).unwrap();
         let p = a.intersect(&b).point().unwrap();
         assert!((p.y - 1e8).abs() < 1e-7);
-        assert!(matches!(a.intersect_eps(&b, 1e-6), Intersection::AtInfinity(_)));
+        assert!(matches!(
+            a.intersect_eps(&b, 1e-6),
+            Intersection::AtInfinity(_)
+        ));
     }
 
     #[test]

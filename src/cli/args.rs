@@ -1,0 +1,173 @@
+//! Flags shared by the subcommands and the parsing of angle specifications.
+
+use clap::Args;
+use slider_crank::{Error, Result, SliderCrank, rpm_to_omega};
+
+/// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
+/// 3 ft rod: r = 0.5 ft, l = 3 ft, in line).
+#[derive(Debug, Clone, Args)]
+pub struct MechanismArgs {
+    /// Crank radius r (any length unit, used consistently)
+    #[arg(long, default_value_t = 0.5, value_name = "R")]
+    pub crank: f64,
+    /// Connecting-rod length l; must exceed r + |e| so the crank turns fully
+    #[arg(long, default_value_t = 3.0, value_name = "L")]
+    pub rod: f64,
+    /// Offset e of the line of stroke from the crank centre (0: in line)
+    #[arg(long, default_value_t = 0.0, value_name = "E")]
+    pub offset: f64,
+}
+
+impl MechanismArgs {
+    /// The validated mechanism.
+    pub fn mechanism(&self) -> Result<SliderCrank> {
+        SliderCrank::new(self.crank, self.rod, self.offset)
+    }
+}
+
+/// Crank speed flags: `--rpm` or `--omega`, default 250 rpm (§35).
+#[derive(Debug, Clone, Args)]
+pub struct SpeedArgs {
+    /// Crank speed in revolutions per minute [default: 250]
+    #[arg(long, value_name = "N", conflicts_with = "omega")]
+    pub rpm: Option<f64>,
+    /// Crank speed ω in rad/s (positive: counter-clockwise)
+    #[arg(long, value_name = "W")]
+    pub omega: Option<f64>,
+}
+
+impl SpeedArgs {
+    /// ω in rad/s.
+    pub fn omega(&self) -> Result<f64> {
+        let omega = match (self.rpm, self.omega) {
+            (_, Some(w)) => check_finite("omega", w)?,
+            (Some(n), None) => rpm_to_omega(check_finite("rpm", n)?),
+            (None, None) => rpm_to_omega(250.0),
+        };
+        Ok(omega)
+    }
+}
+
+fn check_finite(name: &'static str, value: f64) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::NotFinite { name, value })
+    }
+}
+
+/// Most angles a range may produce.
+pub const MAX_ANGLES: usize = 1_000_000;
+
+fn parse_number(text: &str, what: &str) -> Result<f64> {
+    let value: f64 = text.trim().parse().map_err(|_| {
+        Error::Parse(format!(
+            "invalid {what} '{text}': expected degrees like 45, a list 0,30,60 or a range START:STOP:STEP"
+        ))
+    })?;
+    if !value.is_finite() {
+        return Err(Error::Parse(format!(
+            "invalid {what} '{text}': the angle must be a finite number of degrees"
+        )));
+    }
+    Ok(value)
+}
+
+/// Parses `45`, `0,30,60` or `START:STOP:STEP` (STOP included when the
+/// steps reach it; STEP may be negative to count down).
+pub fn parse_angles(spec: &str) -> Result<Vec<f64>> {
+    let mut out = Vec::new();
+    for part in spec.split(',') {
+        let fields: Vec<&str> = part.split(':').collect();
+        match fields.as_slice() {
+            [one] => out.push(parse_number(one, "angle")?),
+            [start, stop, step] => {
+                let (start, stop, step) = (
+                    parse_number(start, "range start")?,
+                    parse_number(stop, "range stop")?,
+                    parse_number(step, "range step")?,
+                );
+                if step == 0.0 || (stop - start) * step < 0.0 {
+                    return Err(Error::Parse(format!(
+                        "invalid range '{part}': the step must be non-zero and lead from start to stop"
+                    )));
+                }
+                let count = ((stop - start) / step * (1.0 + 1e-12)).floor();
+                if count.is_nan() || count >= MAX_ANGLES as f64 {
+                    return Err(Error::Parse(format!(
+                        "invalid range '{part}': more than {MAX_ANGLES} angles"
+                    )));
+                }
+                for k in 0..=(count as usize) {
+                    out.push(start + step * k as f64);
+                }
+            }
+            _ => {
+                return Err(Error::Parse(format!(
+                    "invalid angle '{part}': expected degrees like 45 or a range START:STOP:STEP"
+                )));
+            }
+        }
+        if out.len() > MAX_ANGLES {
+            return Err(Error::Parse(format!("more than {MAX_ANGLES} angles")));
+        }
+    }
+    Ok(out)
+}
+
+/// Parses a comma-separated list of numbers (`inf` allowed where `allow_inf`).
+pub fn parse_list(spec: &str, name: &str, allow_inf: bool) -> Result<Vec<f64>> {
+    spec.split(',')
+        .map(|t| {
+            let t = t.trim();
+            let v: f64 = match t {
+                "inf" | "∞" if allow_inf => f64::INFINITY,
+                _ => t.parse().map_err(|_| {
+                    Error::Parse(format!("invalid {name} '{t}': expected a number"))
+                })?,
+            };
+            if v.is_nan() || (v.is_infinite() && !allow_inf) {
+                return Err(Error::Parse(format!(
+                    "invalid {name} '{t}': expected a finite number"
+                )));
+            }
+            Ok(v)
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_include_their_stop() {
+        assert_eq!(
+            parse_angles("0:90:30").unwrap(),
+            vec![0.0, 30.0, 60.0, 90.0]
+        );
+        assert_eq!(
+            parse_angles("0:100:30").unwrap(),
+            vec![0.0, 30.0, 60.0, 90.0]
+        );
+        assert_eq!(parse_angles("90:0:-45").unwrap(), vec![90.0, 45.0, 0.0]);
+        assert_eq!(parse_angles("0:1:0.1").unwrap().len(), 11);
+        assert_eq!(parse_angles("10,20").unwrap(), vec![10.0, 20.0]);
+    }
+
+    #[test]
+    fn bad_specs_are_refused() {
+        for bad in [
+            "abc",
+            "1e400",
+            "nan",
+            "0:10:0",
+            "0:10:-1",
+            "0:1e9:1e-9",
+            "1:2",
+            "",
+        ] {
+            assert!(parse_angles(bad).is_err(), "{bad}");
+        }
+    }
+}

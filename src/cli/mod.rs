@@ -1,0 +1,6 @@
+//! The subcommands of the `slider-crank` program.
+
+pub mod analyze;
+pub mod args;
+pub mod check;
+pub mod table;
