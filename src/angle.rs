@@ -111,10 +111,19 @@ mod tests {
         ] {
             let a = Angle::from_degrees(d).unwrap();
             let r = d.rem_euclid(360.0).to_radians();
-            assert!((a.sin() - r.sin()).abs() < 4e-16, "{d}");
-            assert!((a.cos() - r.cos()).abs() < 4e-16, "{d}");
+            assert!((a.sin() - r.sin()).abs() < 1e-15, "{d}");
+            assert!((a.cos() - r.cos()).abs() < 1e-15, "{d}");
             assert!((0.0..360.0).contains(&a.degrees()));
         }
+    }
+
+    #[test]
+    fn symmetric_angles_are_bit_identical() {
+        let a = Angle::from_degrees(30.0).unwrap();
+        let b = Angle::from_degrees(-330.0).unwrap();
+        let c = Angle::from_degrees(150.0).unwrap();
+        assert_eq!((a.sin(), a.cos()), (b.sin(), b.cos()));
+        assert_eq!((a.sin(), -a.cos()), (c.sin(), c.cos()));
     }
 
     #[test]
