@@ -14,7 +14,7 @@ use std::process::ExitCode;
 /// outer dead centre). Lengths are in any one unit; the defaults are the
 /// engine of the textbook's §35 (r = 0.5 ft, l = 3 ft, 250 rpm).
 #[derive(Debug, Parser)]
-#[command(name = "slider-crank", version, about, long_about = None, allow_negative_numbers = true)]
+#[command(name = "slider-crank", version, about, long_about = None)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -45,7 +45,26 @@ fn print(text: &str) -> ExitCode {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            if matches!(
+                e.kind(),
+                ErrorKind::DisplayHelp
+                    | ErrorKind::DisplayVersion
+                    | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+            ) {
+                let _ = e.print();
+                return ExitCode::SUCCESS;
+            }
+            // One line: clap's first line names the problem.
+            let text = e.render().to_string();
+            let first = text.lines().next().unwrap_or("invalid arguments");
+            eprintln!("slider-crank: {first} (see --help)");
+            return ExitCode::from(2);
+        }
+    };
     let result = match &cli.command {
         Command::Analyze(args) => cli::analyze::run(args).map(|s| (s, true)),
         Command::Table(args) => cli::table::run(args).map(|s| (s, true)),

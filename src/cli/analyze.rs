@@ -25,10 +25,15 @@ pub struct AnalyzeArgs {
     #[command(flatten)]
     pub speed: SpeedArgs,
     /// Crank torque T (counter-clockwise positive): adds statics (Ng eq. 6–11)
-    #[arg(long, value_name = "T")]
+    #[arg(long, allow_negative_numbers = true, value_name = "T")]
     pub torque: Option<f64>,
     /// Coefficient of friction μ ≥ 0 of the slider in its guides (with --torque)
-    #[arg(long, value_name = "MU", default_value_t = 0.0)]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MU",
+        default_value_t = 0.0
+    )]
     pub friction: f64,
     /// Print JSON (DESIGN.md §4): one object, or an array for several angles
     #[arg(long)]

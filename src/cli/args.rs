@@ -8,13 +8,28 @@ use slider_crank::{Error, Result, SliderCrank, rpm_to_omega};
 #[derive(Debug, Clone, Args)]
 pub struct MechanismArgs {
     /// Crank radius r (any length unit, used consistently)
-    #[arg(long, default_value_t = 0.5, value_name = "R")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        default_value_t = 0.5,
+        value_name = "R"
+    )]
     pub crank: f64,
     /// Connecting-rod length l; must exceed r + |e| so the crank turns fully
-    #[arg(long, default_value_t = 3.0, value_name = "L")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        default_value_t = 3.0,
+        value_name = "L"
+    )]
     pub rod: f64,
     /// Offset e of the line of stroke from the crank centre (0: in line)
-    #[arg(long, default_value_t = 0.0, value_name = "E")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        default_value_t = 0.0,
+        value_name = "E"
+    )]
     pub offset: f64,
 }
 
@@ -29,10 +44,15 @@ impl MechanismArgs {
 #[derive(Debug, Clone, Args)]
 pub struct SpeedArgs {
     /// Crank speed in revolutions per minute [default: 250]
-    #[arg(long, value_name = "N", conflicts_with = "omega")]
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "N",
+        conflicts_with = "omega"
+    )]
     pub rpm: Option<f64>,
     /// Crank speed ω in rad/s (positive: counter-clockwise)
-    #[arg(long, value_name = "W")]
+    #[arg(long, allow_negative_numbers = true, value_name = "W")]
     pub omega: Option<f64>,
 }
 

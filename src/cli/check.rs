@@ -20,7 +20,7 @@ pub struct CheckArgs {
     pub samples: usize,
     /// Largest allowed difference, scaled by r (slider) or 1 (rod rates
     /// per unit ω)
-    #[arg(long, default_value_t = DEFAULT_TOLERANCE, value_name = "T")]
+    #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_TOLERANCE, value_name = "T")]
     pub tolerance: f64,
 }
 

@@ -48,10 +48,10 @@ pub struct TableArgs {
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub angles: Option<String>,
     /// Crank radius (kinematics [default 0.5 ft]; forces [default 25 mm])
-    #[arg(long, value_name = "R")]
+    #[arg(long, allow_negative_numbers = true, value_name = "R")]
     pub crank: Option<f64>,
     /// Rod length (kinematics [default 3 ft]; forces [default 72 mm])
-    #[arg(long, value_name = "L")]
+    #[arg(long, allow_negative_numbers = true, value_name = "L")]
     pub rod: Option<f64>,
     /// Offset of the line of stroke [default 0]
     #[arg(
@@ -66,10 +66,10 @@ pub struct TableArgs {
     /// Crank torque for forces, in force × the length unit [default:
     /// 264.87 N·mm = 1 kg × 9.81 m/s² × 27 mm, the torque Ng's F column
     /// implies]
-    #[arg(long, value_name = "T")]
+    #[arg(long, allow_negative_numbers = true, value_name = "T")]
     pub torque: Option<f64>,
     /// Friction coefficient for forces [default: 1, Ng's 45° tilt]
-    #[arg(long, value_name = "MU")]
+    #[arg(long, allow_negative_numbers = true, value_name = "MU")]
     pub friction: Option<f64>,
     /// Decimals for kinematics [default 4] and forces [default 2]
     #[arg(long, value_name = "D")]

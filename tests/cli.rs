@@ -1,0 +1,276 @@
+//! The command line: the contract of DESIGN.md §4 and clear errors.
+
+use serde_json::Value;
+use std::process::{Command, Output};
+
+fn run(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_slider-crank"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn json(args: &[&str]) -> Value {
+    let out = run(args);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("valid JSON")
+}
+
+fn rel(a: f64, b: f64) -> f64 {
+    (a - b).abs() / b.abs().max(1e-300)
+}
+
+#[test]
+fn analyze_json_matches_the_exact_formulas() {
+    // §35 engine at 45°, 250 rpm: closed forms of the textbook.
+    let v = json(&[
+        "analyze", "--crank", "0.5", "--rod", "3", "--angle", "45", "--rpm", "250", "--json",
+    ]);
+    let w = 250.0 * 2.0 * std::f64::consts::PI / 60.0;
+    let (r, n) = (0.5f64, 6.0f64);
+    let s = 0.5f64.sqrt();
+    let q = (n * n - s * s).sqrt();
+    let a = &v["analytic"];
+    assert!(rel(a["position"].as_f64().unwrap(), r * s + r * q) < 1e-12);
+    assert!(rel(a["velocity"].as_f64().unwrap(), -r * w * (s + s * s / q)) < 1e-12);
+    let acc = -r * w * w * (s + s.powi(4) / (n * n - s * s).powf(1.5));
+    assert!(rel(a["acceleration"].as_f64().unwrap(), acc) < 1e-12);
+    assert!(rel(a["rod_angular_velocity"].as_f64().unwrap(), w * s / q) < 1e-12);
+    let rod_acc = -w * w * s / q * (n * n - 1.0) / (n * n - s * s);
+    assert!(rel(a["rod_angular_acceleration"].as_f64().unwrap(), rod_acc) < 1e-12);
+    assert!(
+        rel(
+            a["rod_angle_deg"].as_f64().unwrap(),
+            (s / n).asin().to_degrees()
+        ) < 1e-12
+    );
+    assert_eq!(v["angle_deg"], 45.0);
+    assert!(rel(v["omega"].as_f64().unwrap(), w) < 1e-15);
+    // graphical agrees with analytic.
+    for key in [
+        "velocity",
+        "acceleration",
+        "rod_angular_velocity",
+        "rod_angular_acceleration",
+    ] {
+        let g = v["graphical"][key].as_f64().unwrap();
+        assert!(rel(g, a[key].as_f64().unwrap()) < 1e-12, "{key}");
+    }
+    assert_eq!(v["points"]["C"], serde_json::json!([0.0, 0.0]));
+    assert!(v.get("statics").is_none());
+}
+
+#[test]
+fn analyze_json_offset_mechanism() {
+    // e = 0.4, r = 1, l = 3.5 at 200°: against the formulas of DESIGN.md §1.
+    let v = json(&[
+        "analyze", "--crank", "1", "--rod", "3.5", "--offset", "-0.4", "--angle", "200", "--omega",
+        "3", "--json",
+    ]);
+    let t = 200f64.to_radians();
+    let (s, c) = t.sin_cos();
+    let h = s + 0.4;
+    let wr = (3.5f64 * 3.5 - h * h).sqrt();
+    let vel = 3.0 * (-s - c * h / wr);
+    assert!(rel(v["analytic"]["velocity"].as_f64().unwrap(), vel) < 1e-12);
+    assert!(rel(v["analytic"]["position"].as_f64().unwrap(), c + wr) < 1e-12);
+    assert_eq!(v["points"]["A"][1], -0.4);
+    assert!(rel(v["graphical"]["velocity"].as_f64().unwrap(), vel) < 1e-12);
+}
+
+#[test]
+fn analyze_at_90_degrees_has_d_at_infinity() {
+    let v = json(&["analyze", "--angle", "90", "--json"]);
+    assert_eq!(v["points"]["D"], Value::Null);
+    assert_eq!(v["graphical"]["rod_angular_velocity"], 0.0);
+    // Every other number is finite (JSON cannot carry NaN anyway: check all).
+    fn all_finite(v: &Value) -> bool {
+        match v {
+            Value::Number(n) => n.as_f64().is_some_and(f64::is_finite),
+            Value::Array(a) => a.iter().all(all_finite),
+            Value::Object(o) => o.values().all(all_finite),
+            _ => true,
+        }
+    }
+    assert!(all_finite(&v));
+    let near = json(&["analyze", "--angle", "89.999999", "--json"]);
+    let d = &near["points"]["D"];
+    let x = d[0].as_f64().unwrap();
+    let y = d[1].as_f64().unwrap();
+    let t = 89.999999f64.to_radians();
+    assert!(rel(x, near["points"]["A"][0].as_f64().unwrap()) < 1e-15);
+    assert!(rel(y, x * t.tan()) < 1e-8, "D = ({x}, {y})");
+}
+
+#[test]
+fn analyze_range_prints_an_array_and_statics() {
+    let v = json(&[
+        "analyze",
+        "--crank",
+        "25",
+        "--rod",
+        "72",
+        "--angle",
+        "0:180:90",
+        "--torque",
+        "264.87",
+        "--friction",
+        "1",
+        "--json",
+    ]);
+    let a = v.as_array().unwrap();
+    assert_eq!(a.len(), 3);
+    // Dead centre: no finite slider force.
+    assert_eq!(a[0]["statics"]["slider_force"], Value::Null);
+    assert_eq!(a[0]["statics"]["OM"], 0.0);
+    // 90°: OM = r, F = T / r.
+    assert!(rel(a[1]["statics"]["OM"].as_f64().unwrap(), 25.0) < 1e-15);
+    assert!(
+        rel(
+            a[1]["statics"]["slider_force"].as_f64().unwrap(),
+            264.87 / 25.0
+        ) < 1e-15
+    );
+    let tan_phi = (25.0f64 / 72.0).asin().tan();
+    let fp = a[1]["statics"]["slider_force_with_friction"]
+        .as_f64()
+        .unwrap();
+    assert!(rel(fp, 264.87 / 25.0 * (1.0 - tan_phi)) < 1e-13);
+    assert!(
+        rel(
+            a[1]["statics"]["transmission_angle_deg"].as_f64().unwrap(),
+            90.0 - (25.0f64 / 72.0).asin().to_degrees()
+        ) < 1e-13
+    );
+}
+
+#[test]
+fn self_locking_is_reported_not_negative() {
+    let v = json(&[
+        "analyze",
+        "--angle",
+        "90",
+        "--torque",
+        "1",
+        "--friction",
+        "10",
+        "--json",
+    ]);
+    assert_eq!(v["statics"]["self_locking"], true);
+    assert_eq!(v["statics"]["slider_force_with_friction"], Value::Null);
+}
+
+#[test]
+fn bad_input_exits_non_zero_with_one_clear_line() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["analyze", "--crank", "0.5", "--rod", "0.4"],
+            "rod 0.4 is too short",
+        ),
+        (
+            &["analyze", "--crank", "nan"],
+            "crank must be a finite number",
+        ),
+        (
+            &["analyze", "--crank", "inf"],
+            "crank must be a finite number",
+        ),
+        (
+            &["analyze", "--crank", "-1"],
+            "crank must be greater than zero",
+        ),
+        (&["analyze", "--angle", "abc"], "invalid angle 'abc'"),
+        (
+            &["analyze", "--angle", "1e400"],
+            "must be a finite number of degrees",
+        ),
+        (
+            &["analyze", "--crank", "1", "--rod", "3", "--offset", "2.5"],
+            "rod > crank + |offset| = 3.5",
+        ),
+        (
+            &["analyze", "--omega", "nan"],
+            "omega must be a finite number",
+        ),
+        (
+            &["analyze", "--torque", "1", "--friction", "-1"],
+            "friction",
+        ),
+        (&["table", "obliquity", "--n", "0.5"], "n = l/r > 1"),
+        (&["check", "--samples", "0"], "samples"),
+    ];
+    for (args, needle) in cases {
+        let out = run(args);
+        assert!(!out.status.success(), "{args:?} succeeded");
+        assert!(out.stdout.is_empty(), "{args:?} printed to stdout");
+        let err = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+        assert!(!err.contains("panicked"), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn acceleration_factor_table_prints_the_textbooks_rows() {
+    let out = run(&["table", "acceleration-factor", "--format", "csv"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "θ,n = 4,n = 4.5,n = 5,n = 5.5,n = 6,n = ∞");
+    assert_eq!(lines[1], "0° or 360°,1.250,1.222,1.200,1.182,1.167,1.000");
+    assert_eq!(
+        lines[4],
+        "90° or 270°,-0.250,-0.222,-0.200,-0.182,-0.167,0.000"
+    );
+    assert_eq!(lines[7], "180°,-0.750,-0.778,-0.800,-0.818,-0.833,-1.000");
+    assert_eq!(lines.len(), 8);
+}
+
+#[test]
+fn forces_table_reproduces_ng_where_ng_is_right() {
+    let out = run(&["table", "forces", "--format", "csv"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let row80 = text.lines().find(|l| l.starts_with("80,")).unwrap();
+    // β = 80.00 printed and right; F within 0.1 % of 10.11.
+    assert!(row80.ends_with(",80.00"), "{row80}");
+    let f: f64 = row80.split(',').nth(1).unwrap().parse().unwrap();
+    assert!((f - 10.11).abs() < 0.011, "{f}");
+}
+
+#[test]
+fn check_passes_and_fails_as_it_should() {
+    let out = run(&[
+        "check",
+        "--crank",
+        "1",
+        "--rod",
+        "1.05",
+        "--offset",
+        "0.045",
+        "--samples",
+        "20000",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
+    assert!(String::from_utf8_lossy(&out.stdout).contains("all within tolerance"));
+    // An impossible tolerance fails with exit code 1.
+    let out = run(&["check", "--samples", "1000", "--tolerance", "1e-300"]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("FAIL"));
+}
+
+#[test]
+fn defaults_run_the_section_35_engine() {
+    let out = run(&["analyze"]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("r = 0.5, l = 3"));
+    assert!(text.contains("θ = 45°"));
+}
