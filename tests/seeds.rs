@@ -18,6 +18,9 @@ fn within_rounding(x: f64, printed: f64, decimals: i32) -> bool {
     (x - printed).abs() <= 0.5 * 10f64.powi(-decimals) + 1e-12
 }
 
+/// π as the seeds' authors rounded it; used only to explain their slips.
+const SEED_PI: f64 = 314.0 / 100.0;
+
 /// The book's crank-pin speed V_c = 13.08 ft/s and r = 0.5 ft: ω = 26.16.
 const BOOK_OMEGA: f64 = 26.16;
 
@@ -52,7 +55,7 @@ fn obliquity_error_at_90_degrees() {
 #[test]
 fn crank_pin_speed_of_section_35() {
     // 250 × 3.14 / 60 = 13.08 uses π ≈ 3.14; exactly π D N / 60 = 13.090.
-    assert!(within_rounding(250.0 * 3.14 / 60.0, 13.08, 2));
+    assert!(within_rounding(250.0 * SEED_PI / 60.0, 13.08, 2));
     let vc = 0.5 * slider_crank::rpm_to_omega(250.0);
     assert!((vc - 13.089_969_389_957_47).abs() < 1e-12);
     assert!(!within_rounding(vc, 13.08, 2));
@@ -223,7 +226,7 @@ fn ng_table_2_f_and_beta_against_the_formulas() {
     // reproduced to its last digit (within 0.01 N where the torque's own
     // rounding is felt).
     for &(d, f, ..) in &NG_TABLE_2 {
-        let t = d * 3.14 / 180.0;
+        let t = d * SEED_PI / 180.0;
         let (s, c) = t.sin_cos();
         let phi = (0.025 * s / 0.072).asin();
         let om = phi.tan() * (0.025 * c + 0.072 * phi.cos());
