@@ -273,8 +273,8 @@ fn ng_table_2_f_prime_uses_one_rows_phi() {
 #[test]
 fn ng_minimum_force_at_transmission_angle_90() {
     // "The lowest force ... occurred when the transmission angle was 90°."
-    // Exactly: F is least where OM is greatest; near θ = 73° on this rig,
-    // where β ≈ 87°; the claim holds only roughly.
+    // Exactly: F is least where OM is greatest, at θ = 72.6° on this rig,
+    // where β = 88.0°; the claim holds only roughly.
     let mut best = (f64::INFINITY, 0.0);
     for k in 100..1700 {
         let d = k as f64 * 0.1;
