@@ -1,1 +1,73 @@
-fn main() {}
+//! All constructions of one pose against the analytic core alone.
+//!
+//! `cargo bench --bench constructions`; the ratio is recorded in
+//! docs/benchmarks.md.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use slider_crank::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine, VirtualCentres};
+use slider_crank::{Angle, SliderCrank};
+use std::hint::black_box;
+
+fn angles() -> Vec<Angle> {
+    (0..360).map(|k| Angle::from_degrees(k as f64 + 0.5).unwrap()).collect()
+}
+
+fn bench(c: &mut Criterion) {
+    let m = SliderCrank::new(0.5, 3.0, 0.1).unwrap();
+    let angles = angles();
+    let mut group = c.benchmark_group("per 360 poses");
+    group.bench_function("analytic core (x, v, a, φ, dφ, d²φ)", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for a in &angles {
+                let p = m.pose(*black_box(a));
+                acc += p.position()
+                    + p.position_rate()
+                    + p.position_acceleration()
+                    + p.obliquity()
+                    + p.obliquity_rate()
+                    + p.obliquity_acceleration();
+            }
+            acc
+        })
+    });
+    group.bench_function("all constructions (D, E, Klein, Kisch, OM, centres)", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for a in &angles {
+                let p = m.pose(*black_box(a));
+                let d = InstantCentre::construct(&p);
+                let e = VelocityLine::construct(&p);
+                let kisch = Kisch::construct(&p, &e);
+                let torque = TorqueLine::construct(&p, &e);
+                let centres = VirtualCentres::construct(&p, &d, &e);
+                acc += d.rod_angular_velocity_ratio()
+                    + e.velocity_ratio()
+                    + kisch.points().acceleration_ratio()
+                    + kisch.points().rod_angular_acceleration_ratio()
+                    + torque.om()
+                    + centres.all().len() as f64;
+                if let Some(k) = Klein::construct(&p, &d, &e) {
+                    acc += k.points().acceleration_ratio();
+                }
+            }
+            acc
+        })
+    });
+    group.bench_function("velocity and Kisch acceleration only (E, F, G)", |b| {
+        b.iter(|| {
+            let mut acc = 0.0;
+            for a in &angles {
+                let p = m.pose(*black_box(a));
+                let e = VelocityLine::construct(&p);
+                let kisch = Kisch::construct(&p, &e);
+                acc += e.velocity_ratio() + kisch.points().acceleration_ratio();
+            }
+            acc
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

@@ -13,7 +13,8 @@ use crate::mechanism::Pose;
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct InstantCentre {
     d: Intersection,
-    rate: f64,
+    /// B − C, the crank.
+    crank: Vector,
 }
 
 impl InstantCentre {
@@ -30,16 +31,7 @@ impl InstantCentre {
             Intersection::Coincident => Intersection::AtInfinity(crank.unit_direction()),
             other => other,
         };
-        // The rod turns about D: ω (B − C) = Ω (B − D) with Ω the rod's
-        // counter-clockwise rate, and dφ/dt = −Ω.
-        let rate = match d {
-            Intersection::Point(d) => {
-                let bd = b - d;
-                -(b - c).dot(&bd) / bd.norm_squared()
-            }
-            _ => 0.0,
-        };
-        Self { d, rate }
+        Self { d, crank: b - c }
     }
 
     /// D, a finite point or a point at infinity.
@@ -51,6 +43,14 @@ impl InstantCentre {
     /// turning (rod angular velocity = ω · CB / BD, textbook §37); 0 when D
     /// is at infinity.
     pub fn rod_angular_velocity_ratio(&self) -> f64 {
-        self.rate
+        // The rod turns about D: ω (B − C) = Ω (B − D) with Ω the rod's
+        // counter-clockwise rate, and dφ/dt = −Ω. B − D = (B − C) − (D − C).
+        match self.d {
+            Intersection::Point(d) => {
+                let bd = self.crank - d.coords;
+                -self.crank.dot(&bd) / bd.norm_squared()
+            }
+            _ => 0.0,
+        }
     }
 }

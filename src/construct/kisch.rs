@@ -17,32 +17,29 @@ use crate::mechanism::Pose;
 /// holds: BE / BA = r |cos θ| / (l cos φ) < 1 because l > r + |e|.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Kisch {
-    h: Option<Point>,
-    be: f64,
+    b: Point,
+    ba: Vector,
+    away: Vector,
+    be2: f64,
+    ratio: f64,
     points: AccelerationPoints,
 }
 
 impl Kisch {
-    /// Constructs H, F and G from E.
+    /// Constructs F and G from E (H and the circle are computed when asked).
     pub fn construct(pose: &Pose, e: &VelocityLine) -> Self {
         let (a, b, c) = (pose.a(), pose.b(), pose.c());
         let ba = a - b;
         let be2 = (e.e() - b).norm_squared();
-        let ba2 = ba.norm_squared();
-        let f = b + ba * (be2 / ba2);
-        // HF² = BF · FA (altitude of the right triangle AHB).
-        let bf = be2 / ba2.sqrt();
-        let fa = ba2.sqrt() - bf;
-        let h = (fa >= 0.0).then(|| {
-            let mut n: Vector = perp(&ba) / ba2.sqrt();
-            if n.dot(&(c - b)) > 0.0 || (n.dot(&(c - b)) == 0.0 && n.y < 0.0) {
-                n = -n;
-            }
-            f + n * (bf * fa).sqrt()
-        });
+        // BF / BA = BE² / BA².
+        let ratio = be2 / ba.norm_squared();
+        let f = b + ba * ratio;
         Self {
-            h,
-            be: be2.sqrt(),
+            b,
+            ba,
+            away: b - c,
+            be2,
+            ratio,
             points: AccelerationPoints::from_f(pose, f),
         }
     }
@@ -50,12 +47,29 @@ impl Kisch {
     /// H, where the circle about B through E cuts the semicircle on AB;
     /// `None` only if rounding makes BE > BA at the very limit of assembly.
     pub fn h(&self) -> Option<Point> {
-        self.h
+        // HF² = BF · FA (altitude of the right triangle AHB).
+        let ba = self.ba.norm();
+        let bf = ba * self.ratio;
+        let fa = ba - bf;
+        if fa < 0.0 {
+            return None;
+        }
+        let mut n: Vector = perp(&self.ba) / ba;
+        let side = n.dot(&self.away);
+        if side < 0.0 || (side == 0.0 && n.y < 0.0) {
+            n = -n;
+        }
+        Some(self.points.f() + n * (bf * fa).sqrt())
     }
 
     /// The radius BE of the circle about B.
     pub fn be(&self) -> f64 {
-        self.be
+        self.be2.sqrt()
+    }
+
+    /// The crank pin B, centre of the circle of radius BE.
+    pub fn b(&self) -> Point {
+        self.b
     }
 
     /// The circle on AB as diameter (the semicircle AHB is its half away

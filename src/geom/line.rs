@@ -117,7 +117,8 @@ impl Line {
         let d1 = self.direction;
         let d2 = other.direction;
         let denom = cross(&d1, &d2);
-        if denom.abs() <= eps * d1.norm() * d2.norm() {
+        // Compared squared: no square roots on the common path.
+        if denom * denom <= eps * eps * d1.norm_squared() * d2.norm_squared() {
             let scale = self
                 .point
                 .coords
