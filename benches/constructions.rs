@@ -4,12 +4,16 @@
 //! docs/benchmarks.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use slider_crank::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine, VirtualCentres};
+use slider_crank::construct::{
+    InstantCentre, Kisch, Klein, TorqueLine, VelocityLine, VirtualCentres,
+};
 use slider_crank::{Angle, SliderCrank};
 use std::hint::black_box;
 
 fn angles() -> Vec<Angle> {
-    (0..360).map(|k| Angle::from_degrees(k as f64 + 0.5).unwrap()).collect()
+    (0..360)
+        .map(|k| Angle::from_degrees(k as f64 + 0.5).unwrap())
+        .collect()
 }
 
 fn bench(c: &mut Criterion) {

@@ -53,7 +53,11 @@ fn kisch_direct(p: &Pose) -> Option<f64> {
     Some(g_from_f(p, ab.foot(h)))
 }
 
-fn worst(poses: impl Iterator<Item = Pose>, f: impl Fn(&Pose) -> Option<f64>, exact: impl Fn(&Pose) -> f64) -> (f64, usize) {
+fn worst(
+    poses: impl Iterator<Item = Pose>,
+    f: impl Fn(&Pose) -> Option<f64>,
+    exact: impl Fn(&Pose) -> f64,
+) -> (f64, usize) {
     let mut w: f64 = 0.0;
     let mut missing = 0;
     for p in poses {
@@ -124,15 +128,29 @@ fn main() {
     // Kisch: circle intersection where H approaches B (θ → 90°) or the
     // circles become tangent.
     for k in [1.0, 1e-2, 1e-4, 1e-6] {
-        let poses = || [90.0 - k, 90.0 + k, 270.0 - k, 270.0 + k].into_iter().map(|d| m.pose(deg(d)));
+        let poses = || {
+            [90.0 - k, 90.0 + k, 270.0 - k, 270.0 + k]
+                .into_iter()
+                .map(|d| m.pose(deg(d)))
+        };
         let exact = |p: &Pose| -p.position_acceleration();
         let direct = worst(poses(), kisch_direct, exact);
         let used = worst(
             poses(),
-            |p| Some(slider_crank::construct::Kisch::construct(p, &VelocityLine::construct(p)).points().cg()),
+            |p| {
+                Some(
+                    slider_crank::construct::Kisch::construct(p, &VelocityLine::construct(p))
+                        .points()
+                        .cg(),
+                )
+            },
             exact,
         );
-        println!("| Kisch F (CG) | n = 4, θ = 90° or 270° ± {k:e}° | {} | {} |", fmt(direct), fmt(used));
+        println!(
+            "| Kisch F (CG) | n = 4, θ = 90° or 270° ± {k:e}° | {} | {} |",
+            fmt(direct),
+            fmt(used)
+        );
     }
     for k in [1e-1, 1e-3, 1e-5, 1e-7, 1e-9] {
         let poses = || {
@@ -144,7 +162,13 @@ fn main() {
         let direct = worst(poses(), kisch_direct, exact);
         let used = worst(
             poses(),
-            |p| Some(slider_crank::construct::Kisch::construct(p, &VelocityLine::construct(p)).points().cg()),
+            |p| {
+                Some(
+                    slider_crank::construct::Kisch::construct(p, &VelocityLine::construct(p))
+                        .points()
+                        .cg(),
+                )
+            },
             exact,
         );
         println!(
@@ -182,7 +206,10 @@ fn main() {
         let p = SliderCrank::in_line(1.0, n).unwrap().pose(deg(45.0));
         let accurate = p.obliquity_error();
         let naive = p.run() - n;
-        println!("| {n:e} | {:.1e} | 0 (reference) |", ((naive - accurate) / accurate).abs());
+        println!(
+            "| {n:e} | {:.1e} | 0 (reference) |",
+            ((naive - accurate) / accurate).abs()
+        );
     }
 
     println!("\n## `check` over the done-when matrix (100 000 poses + singular angles)\n");
@@ -195,11 +222,14 @@ fn main() {
                 let l = n * r;
                 let m = SliderCrank::new(r, l, frac * (l - r)).unwrap();
                 let rep = sweep(&m, 100_000);
-                let (q, e): (Quantity, f64) = rep
-                    .worst
-                    .iter()
-                    .map(|w| (w.0, w.1))
-                    .fold((Quantity::Velocity, 0.0), |a, b| if b.1 > a.1 { b } else { a });
+                let (q, e): (Quantity, f64) =
+                    rep.worst
+                        .iter()
+                        .map(|w| (w.0, w.1))
+                        .fold(
+                            (Quantity::Velocity, 0.0),
+                            |a, b| if b.1 > a.1 { b } else { a },
+                        );
                 overall = overall.max(e);
                 println!("| {r:e} | {n} | {frac} | {e:.1e} | {} |", q.name());
             }
