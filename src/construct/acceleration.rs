@@ -14,7 +14,8 @@ use crate::mechanism::Pose;
 pub struct AccelerationPoints {
     f: Point,
     g: Point,
-    rod_unit: Vector,
+    /// B − A.
+    rod_dir: Vector,
     rod: f64,
 }
 
@@ -24,19 +25,14 @@ impl AccelerationPoints {
     pub(crate) fn from_f(pose: &Pose, f: Point) -> Self {
         let (a, b) = (pose.a(), pose.b());
         let rod_dir = b - a;
-        let perpendicular = Line::new(f, Vector::new(-rod_dir.y, rod_dir.x)).expect("rod");
-        let through_c = Line::new(pose.c(), Vector::new(1.0, 0.0)).expect("unit direction");
+        let perpendicular = Line::from_parts(f, Vector::new(-rod_dir.y, rod_dir.x));
+        let through_c = Line::from_parts(pose.c(), Vector::new(1.0, 0.0));
         let g = perpendicular
             .intersect_eps(&through_c, 0.0)
             .point()
             .expect("the perpendicular to the rod is never horizontal");
         let rod = pose.mechanism().rod();
-        Self {
-            f,
-            g,
-            rod_unit: rod_dir / rod,
-            rod,
-        }
+        Self { f, g, rod_dir, rod }
     }
 
     /// F, on the rod AB.
@@ -63,7 +59,7 @@ impl AccelerationPoints {
     /// Signed length FG, positive when G is to the right of the direction
     /// from A to B. Rod angular acceleration = ω² · FG / l.
     pub fn fg(&self) -> f64 {
-        cross(&(self.g - self.f), &self.rod_unit)
+        cross(&(self.g - self.f), &self.rod_dir) / self.rod
     }
 
     /// d²φ/dθ² read off the construction, FG / l.

@@ -22,8 +22,8 @@ impl InstantCentre {
     /// [`crate::geom::PARALLEL_TOLERANCE`]).
     pub fn construct(pose: &Pose) -> Self {
         let (c, b, a) = (pose.c(), pose.b(), pose.a());
-        let crank = Line::through(c, b).expect("crank radius is positive");
-        let normal_at_a = Line::new(a, Vector::new(0.0, 1.0)).expect("unit direction");
+        let crank = Line::from_parts(c, b - c);
+        let normal_at_a = Line::from_parts(a, Vector::new(0.0, 1.0));
         let d = match crank.intersect(&normal_at_a) {
             // The lines cannot coincide: A is never on CB's perpendicular...
             // unless CB is vertical and passes through A, impossible as

@@ -19,8 +19,8 @@ impl VelocityLine {
     pub fn construct(pose: &Pose) -> Self {
         // Anchored at B, near E, so that no digits cancel when the offset is
         // much larger than the crank (E_y = r sin θ + r cos θ h / w).
-        let rod = Line::through(pose.b(), pose.a()).expect("rod length is positive");
-        let vertical = Line::new(pose.c(), Vector::new(0.0, 1.0)).expect("unit direction");
+        let rod = Line::from_parts(pose.b(), pose.a() - pose.b());
+        let vertical = Line::from_parts(pose.c(), Vector::new(0.0, 1.0));
         // Exactly-parallel test only: the rod is never vertical.
         let e = rod
             .intersect_eps(&vertical, 0.0)

@@ -45,10 +45,19 @@ impl Line {
     /// The line through `point` along `direction`; `None` when the direction
     /// is zero or either is not finite.
     pub fn new(point: Point, direction: Vector) -> Option<Self> {
-        let ok = point.iter().all(|v| v.is_finite())
-            && direction.iter().all(|v| v.is_finite())
-            && direction != Vector::zeros();
+        let ok = point.x.is_finite()
+            && point.y.is_finite()
+            && direction.x.is_finite()
+            && direction.y.is_finite()
+            && (direction.x != 0.0 || direction.y != 0.0);
         ok.then_some(Self { point, direction })
+    }
+
+    /// A line from parts already known to be finite with a non-zero
+    /// direction (the constructions' own lines).
+    pub(crate) fn from_parts(point: Point, direction: Vector) -> Self {
+        debug_assert!(Self::new(point, direction).is_some());
+        Self { point, direction }
     }
 
     /// The line through two points; `None` when they coincide.
