@@ -37,11 +37,17 @@ pub mod analytic;
 mod angle;
 pub mod construct;
 mod error;
+pub mod figure;
 pub mod geom;
 mod mechanism;
+pub mod render;
+pub mod scene;
 pub mod table;
 
 pub use analytic::kinematics::{Kinematics, rpm_to_omega};
 pub use angle::Angle;
 pub use error::{Error, Result};
+pub use figure::{Figure, FigureName};
 pub use mechanism::{Pose, SliderCrank};
+pub use render::Style;
+pub use scene::{Layer, Notation, Page, Scene};

@@ -30,6 +30,10 @@ enum Command {
     /// Sweep the whole turn and compare every construction with the
     /// analytic core; exits 1 if any difference exceeds the tolerance
     Check(cli::check::CheckArgs),
+    /// Draw one of the seeds' figures as SVG (or PNG with --out FILE.png)
+    Figure(cli::figure::FigureArgs),
+    /// Draw the figure a TOML scene file describes
+    Scene(cli::scene::SceneArgs),
 }
 
 fn print(text: &str) -> ExitCode {
@@ -69,6 +73,8 @@ fn main() -> ExitCode {
         Command::Analyze(args) => cli::analyze::run(args).map(|s| (s, true)),
         Command::Table(args) => cli::table::run(args).map(|s| (s, true)),
         Command::Check(args) => cli::check::run(args),
+        Command::Figure(args) => cli::figure::run(args).map(|s| (s, true)),
+        Command::Scene(args) => cli::scene::run(args).map(|s| (s, true)),
     };
     match result {
         Ok((text, ok)) => {

@@ -3,4 +3,6 @@
 pub mod analyze;
 pub mod args;
 pub mod check;
+pub mod figure;
+pub mod scene;
 pub mod table;

@@ -1,0 +1,27 @@
+//! `slider-crank scene FILE.toml`: a figure described by a scene file.
+
+use super::figure::emit;
+use clap::Args;
+use slider_crank::{Error, Result, Scene};
+use std::path::PathBuf;
+
+/// Draw the figure a scene file describes.
+#[derive(Debug, Args)]
+pub struct SceneArgs {
+    /// The scene file (TOML; see examples/*.toml)
+    #[arg(value_name = "FILE.toml")]
+    pub file: PathBuf,
+    /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
+    /// printing SVG
+    #[arg(long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+}
+
+/// Runs the subcommand.
+pub fn run(args: &SceneArgs) -> Result<String> {
+    let text = std::fs::read_to_string(&args.file)
+        .map_err(|e| Error::Io(format!("cannot read {}: {e}", args.file.display())))?;
+    let scene = Scene::from_toml(&text)
+        .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
+    emit(&scene.figure(), args.out.as_ref())
+}

@@ -1,0 +1,19 @@
+//! Figures: an immutable model of panels and primitives in world
+//! coordinates, built by a [`crate::Scene`] and written by
+//! [`crate::render`]; and the catalogue of the seeds' named figures.
+//!
+//! Data flows one way: scene → constructions its layers ask for → this
+//! model → the renderer, which maps each panel's world to the page with the
+//! panel's one [`PageFromWorld`].
+
+mod catalogue;
+mod model;
+mod path;
+mod text;
+mod transform;
+
+pub use catalogue::FigureName;
+pub use model::{Figure, Item, Panel, Role, Shape, TextSize};
+pub use path::{Path, PathBuilder, PathSegment};
+pub use text::{RichText, Run};
+pub use transform::{PageFromWorld, PageRect};

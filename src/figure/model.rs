@@ -1,0 +1,353 @@
+//! The immutable figure model: panels of primitives in world coordinates,
+//! each with a role and a stable id.
+
+use super::{PageFromWorld, PageRect, Path, RichText};
+use crate::geom::{Point, Vector};
+use crate::render::Style;
+use serde_json::{Map, Value};
+
+/// What a primitive is, which fixes how it is drawn (line weight, dash,
+/// colour in the handout style) and its stacking order.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Role {
+    /// The fixed link: hatched ground, guides, bearings.
+    Frame,
+    /// Thin dashed lines that only help (produced lines, circles drawn to
+    /// find a point, ghost poses).
+    Auxiliary,
+    /// A curve traced by the mechanism (centrodes, coupler ovals, diagrams).
+    Curve,
+    /// Construction lines that carry the result (CE, CG, FG, ...).
+    Construction,
+    /// Dimension lines and angle marks.
+    Dimension,
+    /// Force and torque arrows.
+    Force,
+    /// The moving links: crank, rod, slider block, pins.
+    Link,
+    /// Letters, values and notes.
+    Label,
+}
+
+impl Role {
+    /// Every role, in drawing order (later on top).
+    pub const ALL: [Role; 8] = [
+        Role::Frame,
+        Role::Auxiliary,
+        Role::Curve,
+        Role::Construction,
+        Role::Dimension,
+        Role::Force,
+        Role::Link,
+        Role::Label,
+    ];
+
+    /// The lower-case name used in SVG classes.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Role::Frame => "frame",
+            Role::Auxiliary => "auxiliary",
+            Role::Curve => "curve",
+            Role::Construction => "construction",
+            Role::Dimension => "dimension",
+            Role::Force => "force",
+            Role::Link => "link",
+            Role::Label => "label",
+        }
+    }
+}
+
+/// How large a text is set.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TextSize {
+    /// A point letter (A, B, C ...).
+    Letter,
+    /// A value or a short caption beside a line.
+    Small,
+}
+
+/// A primitive. Positions are in the panel's world coordinates; sizes of
+/// symbols (pins, arrowheads, hatch strokes, marks, text) are in page units,
+/// so they look the same at every scale.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    /// A path of lines and cubic Béziers (a fitted curve).
+    Path(Path),
+    /// A polyline, closed or open (no fill).
+    Polyline {
+        /// Vertices in order.
+        points: Vec<Point>,
+        /// Whether the last vertex joins the first.
+        closed: bool,
+    },
+    /// A filled area without outline (tinted in the handout style only).
+    Region {
+        /// Vertices in order.
+        points: Vec<Point>,
+    },
+    /// A full circle.
+    Circle {
+        /// Centre.
+        centre: Point,
+        /// Radius in world units.
+        radius: f64,
+    },
+    /// A circular arc from world angle `start` turning `sweep` radians
+    /// (counter-clockwise in the world when positive).
+    Arc {
+        /// Centre.
+        centre: Point,
+        /// Radius in world units.
+        radius: f64,
+        /// Start angle in radians (world, from +x).
+        start: f64,
+        /// Signed sweep in radians.
+        sweep: f64,
+        /// An arrowhead at the end (a torque).
+        arrow: bool,
+    },
+    /// A pin joint: a small open circle.
+    Pin {
+        /// Centre of the pin.
+        centre: Point,
+    },
+    /// A constructed point: a small filled dot.
+    Dot {
+        /// The point.
+        centre: Point,
+    },
+    /// The fixed bearing of the crank: a pedestal with hatched base below
+    /// the centre (in page terms).
+    Bearing {
+        /// Centre of the shaft.
+        centre: Point,
+    },
+    /// A filled body with a link outline (the slider block).
+    Block {
+        /// Vertices in order.
+        points: Vec<Point>,
+    },
+    /// A straight arrow with its head at `to`.
+    Arrow {
+        /// Tail.
+        from: Point,
+        /// Head.
+        to: Point,
+    },
+    /// Ground hatching along the segment `from`–`to`, on the side `side`
+    /// points to (a world vector).
+    Hatch {
+        /// Start of the hatched edge.
+        from: Point,
+        /// End of the hatched edge.
+        to: Point,
+        /// Which side carries the strokes.
+        side: Vector,
+    },
+    /// A right-angle mark at `vertex` between the directions `u` and `v`.
+    RightAngle {
+        /// The corner.
+        vertex: Point,
+        /// One arm's direction (world).
+        u: Vector,
+        /// The other arm's direction (world).
+        v: Vector,
+    },
+    /// An angle mark: an arc about `vertex` from world angle `start`
+    /// turning `sweep` radians, with an optional text beside it.
+    AngleMark {
+        /// The vertex.
+        vertex: Point,
+        /// Start angle in radians (world).
+        start: f64,
+        /// Signed sweep in radians.
+        sweep: f64,
+        /// The angle's name.
+        text: Option<RichText>,
+    },
+    /// A dimension: extension lines and a double-headed line between `from`
+    /// and `to`, set off by `offset` page units towards the world direction
+    /// `side`, with its text at the middle.
+    Dimension {
+        /// First end.
+        from: Point,
+        /// Second end.
+        to: Point,
+        /// Which way the dimension line is set off (world).
+        side: Vector,
+        /// Offset in page units.
+        offset: f64,
+        /// The text.
+        text: RichText,
+    },
+    /// A text placed near `anchor`, clear of lines and other labels.
+    Label {
+        /// The point labelled.
+        anchor: Point,
+        /// The text.
+        text: RichText,
+        /// How large.
+        size: TextSize,
+    },
+    /// Lines of text at a fixed page position (top-left corner), for scale
+    /// notes.
+    Note {
+        /// Top-left corner in page units.
+        corner: Point,
+        /// The lines.
+        lines: Vec<RichText>,
+    },
+}
+
+/// One primitive with its role and stable id.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Item {
+    /// The id written to SVG (`point-E`, `line-CE`, ...), unique in its
+    /// figure.
+    pub id: String,
+    /// The role.
+    pub role: Role,
+    /// The geometry.
+    pub shape: Shape,
+}
+
+impl Item {
+    /// An item.
+    pub fn new(id: impl Into<String>, role: Role, shape: Shape) -> Self {
+        Self {
+            id: id.into(),
+            role,
+            shape,
+        }
+    }
+}
+
+/// A panel: a page rectangle, its own world-to-page map and its primitives.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Panel {
+    id: String,
+    rect: PageRect,
+    transform: PageFromWorld,
+    items: Vec<Item>,
+}
+
+impl Panel {
+    /// A panel; items are drawn by role, then in the order given.
+    pub fn new(
+        id: impl Into<String>,
+        rect: PageRect,
+        transform: PageFromWorld,
+        items: Vec<Item>,
+    ) -> Self {
+        Self {
+            id: id.into(),
+            rect,
+            transform,
+            items,
+        }
+    }
+
+    /// The panel's id (`panel-mechanism`).
+    pub fn id(&self) -> &str {
+        &self.id
+    }
+
+    /// Where it sits on the page.
+    pub fn rect(&self) -> &PageRect {
+        &self.rect
+    }
+
+    /// Its world-to-page map.
+    pub fn transform(&self) -> &PageFromWorld {
+        &self.transform
+    }
+
+    /// Its primitives.
+    pub fn items(&self) -> &[Item] {
+        &self.items
+    }
+
+    /// The item with `id`, if any.
+    pub fn item(&self, id: &str) -> Option<&Item> {
+        self.items.iter().find(|i| i.id == id)
+    }
+}
+
+/// A whole figure: page size, style, panels and the metadata written to
+/// the SVG's `<metadata>` (DESIGN.md §4).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Figure {
+    name: String,
+    width: f64,
+    height: f64,
+    style: Style,
+    tolerance: f64,
+    panels: Vec<Panel>,
+    metadata: Map<String, Value>,
+}
+
+impl Figure {
+    /// A figure of `width` × `height` page units; `metadata` adds keys to
+    /// the SVG metadata beside the ones the renderer writes (`figure`,
+    /// `page_from_world`, `tolerance`, `style`, `panels`).
+    pub fn new(
+        name: impl Into<String>,
+        width: f64,
+        height: f64,
+        style: Style,
+        tolerance: f64,
+        panels: Vec<Panel>,
+        metadata: Map<String, Value>,
+    ) -> Self {
+        Self {
+            name: name.into(),
+            width,
+            height,
+            style,
+            tolerance,
+            panels,
+            metadata,
+        }
+    }
+
+    /// Its name (`fig-67-example`).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Page width.
+    pub fn width(&self) -> f64 {
+        self.width
+    }
+
+    /// Page height.
+    pub fn height(&self) -> f64 {
+        self.height
+    }
+
+    /// The drawing style.
+    pub fn style(&self) -> Style {
+        self.style
+    }
+
+    /// The drawing tolerance of curves, in page units.
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
+    /// The panels, in drawing order.
+    pub fn panels(&self) -> &[Panel] {
+        &self.panels
+    }
+
+    /// Extra metadata.
+    pub fn metadata(&self) -> &Map<String, Value> {
+        &self.metadata
+    }
+
+    /// The same geometry in another style.
+    pub fn with_style(mut self, style: Style) -> Self {
+        self.style = style;
+        self
+    }
+}

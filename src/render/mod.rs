@@ -1,0 +1,17 @@
+//! The renderer: a [`crate::figure::Figure`] to SVG text (the `svg`
+//! crate), and SVG to PNG (resvg); files are written whole or not at all.
+
+mod labels;
+mod number;
+mod output;
+mod png;
+mod style;
+mod svg;
+
+pub use number::{GRID, fmt};
+pub use output::write_atomic;
+pub use png::to_png;
+pub use style::Style;
+pub use svg::to_svg;
+
+pub(crate) use style::NOTE_LINE;

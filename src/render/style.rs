@@ -1,0 +1,117 @@
+//! The two styles over the same geometry: the textbook's black engraving
+//! and a coloured handout.
+
+use crate::error::{Error, Result};
+use crate::figure::{Role, TextSize};
+use serde::Deserialize;
+
+/// How a figure is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Style {
+    /// Black ink on white: thick links, thin construction lines, dashed
+    /// auxiliaries, italic serif letters.
+    #[default]
+    Textbook,
+    /// The same lines in colour by role, with the similar triangles tinted.
+    Handout,
+}
+
+/// A stroke.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Pen {
+    pub colour: &'static str,
+    pub width: f64,
+    pub dash: Option<&'static str>,
+}
+
+/// Sizes of symbols and text, in page units.
+pub(crate) const PIN_RADIUS: f64 = 4.2;
+pub(crate) const DOT_RADIUS: f64 = 2.1;
+pub(crate) const ARROW_LENGTH: f64 = 10.0;
+pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
+pub(crate) const HATCH_SPACING: f64 = 6.0;
+pub(crate) const HATCH_DEPTH: f64 = 6.5;
+pub(crate) const RIGHT_ANGLE: f64 = 10.0;
+pub(crate) const ANGLE_RADIUS: f64 = 28.0;
+pub(crate) const NOTE_SIZE: f64 = 13.0;
+/// Line height of notes.
+pub(crate) const NOTE_LINE: f64 = 17.0;
+/// The serif faces asked for, best first.
+pub(crate) const FONT_FAMILY: &str = "'Times New Roman', Times, 'DejaVu Serif', serif";
+
+impl Style {
+    /// The name used on the command line and in scene files.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Style::Textbook => "textbook",
+            Style::Handout => "handout",
+        }
+    }
+
+    /// The style of that name.
+    pub fn from_name(name: &str) -> Result<Self> {
+        match name {
+            "textbook" => Ok(Style::Textbook),
+            "handout" => Ok(Style::Handout),
+            _ => Err(Error::Parse(format!(
+                "unknown style '{name}': expected textbook or handout"
+            ))),
+        }
+    }
+
+    /// The stroke of a role.
+    pub(crate) fn pen(&self, role: Role) -> Pen {
+        let dash = match role {
+            Role::Auxiliary => Some("6 3.5"),
+            _ => None,
+        };
+        let (width, colour) = match (self, role) {
+            (Style::Textbook, Role::Frame) => (1.0, "#000000"),
+            (Style::Textbook, Role::Auxiliary) => (0.7, "#000000"),
+            (Style::Textbook, Role::Curve) => (1.0, "#000000"),
+            (Style::Textbook, Role::Construction) => (0.9, "#000000"),
+            (Style::Textbook, Role::Dimension) => (0.6, "#000000"),
+            (Style::Textbook, Role::Force) => (1.4, "#000000"),
+            (Style::Textbook, Role::Link) => (2.6, "#000000"),
+            (Style::Textbook, Role::Label) => (0.6, "#000000"),
+            (Style::Handout, Role::Frame) => (1.0, "#5f6368"),
+            (Style::Handout, Role::Auxiliary) => (0.8, "#7b8794"),
+            (Style::Handout, Role::Curve) => (1.4, "#2e7d32"),
+            (Style::Handout, Role::Construction) => (1.1, "#c62828"),
+            (Style::Handout, Role::Dimension) => (0.8, "#6a1b9a"),
+            (Style::Handout, Role::Force) => (1.8, "#e65100"),
+            (Style::Handout, Role::Link) => (3.0, "#1a237e"),
+            (Style::Handout, Role::Label) => (0.6, "#111111"),
+        };
+        Pen {
+            colour,
+            width,
+            dash,
+        }
+    }
+
+    /// The paper colour.
+    pub(crate) fn paper(&self) -> &'static str {
+        match self {
+            Style::Textbook => "#ffffff",
+            Style::Handout => "#fffdf7",
+        }
+    }
+
+    /// The fill of a tinted region; `None` where the style draws none.
+    pub(crate) fn region(&self) -> Option<(&'static str, f64)> {
+        match self {
+            Style::Textbook => None,
+            Style::Handout => Some(("#c62828", 0.10)),
+        }
+    }
+
+    /// Font size of a text.
+    pub(crate) fn font_size(&self, size: TextSize) -> f64 {
+        match size {
+            TextSize::Letter => 17.0,
+            TextSize::Small => 13.0,
+        }
+    }
+}

@@ -1,0 +1,773 @@
+//! The SVG writer: each panel's primitives mapped to the page by the
+//! panel's one transform, numbers on a fixed grid, ids and order stable.
+
+use super::labels::{Bounds, Obstacles, place};
+use super::number::{fmt, fmt_coefficient};
+use super::style::*;
+use crate::figure::{
+    Figure, Item, PageFromWorld, Panel, Path, PathSegment, RichText, Role, Shape, TextSize,
+};
+use crate::geom::{Point, Vector};
+use serde_json::{Value, json};
+use std::collections::hash_map::DefaultHasher;
+use std::fmt as stdfmt;
+use std::fmt::Write as _;
+use std::hash::Hash;
+use svg::Document;
+use svg::node::element::{Circle, Element, Group, Path as SvgPath, Rectangle, Text};
+use svg::node::{Node, NodeDefaultHash};
+
+/// Markup written as is inside a `<text>` (runs as `<tspan>`s), without
+/// the line breaks the `svg` crate puts between child elements, which
+/// would show as spaces.
+#[derive(Debug, Clone)]
+struct Raw(String);
+
+impl stdfmt::Display for Raw {
+    fn fmt(&self, f: &mut stdfmt::Formatter<'_>) -> stdfmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl Node for Raw {
+    fn get_name(&self) -> &str {
+        "raw"
+    }
+
+    fn is_bare(&self) -> bool {
+        true
+    }
+}
+
+impl NodeDefaultHash for Raw {
+    fn default_hash(&self, state: &mut DefaultHasher) {
+        self.0.hash(state);
+    }
+}
+
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+fn pt(p: Point) -> String {
+    format!("{} {}", fmt(p.x), fmt(p.y))
+}
+
+fn finite(p: &Point) -> bool {
+    p.x.is_finite() && p.y.is_finite()
+}
+
+fn unit(v: Vector) -> Option<Vector> {
+    let n = v.norm();
+    (n > 0.0 && n.is_finite()).then(|| v / n)
+}
+
+/// The cubic Béziers of a circular arc, pieces of at most 30°.
+fn arc_beziers(centre: Point, radius: f64, start: f64, sweep: f64) -> Vec<[Point; 4]> {
+    let n = ((sweep.abs() / (std::f64::consts::PI / 6.0)).ceil() as usize).clamp(1, 64);
+    let delta = sweep / n as f64;
+    let k = 4.0 / 3.0 * (delta / 4.0).tan();
+    (0..n)
+        .map(|i| {
+            let a0 = start + delta * i as f64;
+            let a1 = a0 + delta;
+            let (s0, c0) = a0.sin_cos();
+            let (s1, c1) = a1.sin_cos();
+            let p0 = centre + Vector::new(c0, s0) * radius;
+            let p3 = centre + Vector::new(c1, s1) * radius;
+            let p1 = p0 + Vector::new(-s0, c0) * (k * radius);
+            let p2 = p3 - Vector::new(-s1, c1) * (k * radius);
+            [p0, p1, p2, p3]
+        })
+        .collect()
+}
+
+fn bezier_d(pieces: &[[Point; 4]]) -> String {
+    let mut d = String::new();
+    if let Some(first) = pieces.first() {
+        let _ = write!(d, "M{}", pt(first[0]));
+    }
+    for [_, c1, c2, p] in pieces {
+        let _ = write!(d, " C{} {} {}", pt(*c1), pt(*c2), pt(*p));
+    }
+    d
+}
+
+fn polyline_d(points: &[Point], closed: bool) -> String {
+    let mut d = String::new();
+    for (i, p) in points.iter().enumerate() {
+        let _ = write!(d, "{}{}", if i == 0 { "M" } else { " L" }, pt(*p));
+    }
+    if closed {
+        d.push_str(" Z");
+    }
+    d
+}
+
+fn stroke<T: Node>(mut node: T, pen: Pen) -> T {
+    node.assign("stroke", pen.colour);
+    node.assign("stroke-width", fmt(pen.width));
+    node.assign("fill", "none");
+    if let Some(d) = pen.dash {
+        node.assign("stroke-dasharray", d);
+    }
+    node
+}
+
+fn path(d: String, pen: Pen) -> SvgPath {
+    stroke(SvgPath::new().set("d", d), pen)
+        .set("stroke-linecap", "round")
+        .set("stroke-linejoin", "round")
+}
+
+fn arrow_head(tip: Point, u: Vector, colour: &'static str) -> SvgPath {
+    let n = Vector::new(-u.y, u.x);
+    let back = tip - u * ARROW_LENGTH;
+    let pts = [
+        tip,
+        back + n * ARROW_HALF_WIDTH,
+        back - n * ARROW_HALF_WIDTH,
+    ];
+    SvgPath::new()
+        .set("d", polyline_d(&pts, true))
+        .set("fill", colour)
+        .set("stroke", "none")
+}
+
+/// A text's width and height on the page, for placement.
+fn text_half(text: &RichText, size: f64) -> Vector {
+    Vector::new(0.5 * text.width_em() * size + 1.0, 0.42 * size)
+}
+
+fn starts_italic(text: &RichText) -> bool {
+    text.runs().first().is_some_and(|r| r.italic)
+}
+
+/// A run's characters escaped, with spaces at its ends made no-break so
+/// that no renderer drops them at a `<tspan>` boundary.
+fn run_text(s: &str) -> String {
+    let t = s.trim_matches(' ');
+    if t.is_empty() {
+        return "\u{a0}".repeat(s.len());
+    }
+    let lead = s.len() - s.trim_start_matches(' ').len();
+    let trail = s.len() - s.trim_end_matches(' ').len();
+    format!(
+        "{}{}{}",
+        "\u{a0}".repeat(lead),
+        escape(t),
+        "\u{a0}".repeat(trail)
+    )
+}
+
+/// `<tspan>` runs; `size` is the base size.
+fn runs_markup(text: &RichText, size: f64, base_italic: bool) -> String {
+    let mut out = String::new();
+    let mut shift = 0.0;
+    for run in text.runs() {
+        let dy = if run.subscript { 0.3 * size } else { 0.0 };
+        let mut attrs = String::new();
+        if dy != shift {
+            let _ = write!(attrs, " dy=\"{}\"", fmt(dy - shift));
+            shift = dy;
+        }
+        if run.subscript {
+            let _ = write!(attrs, " font-size=\"{}\"", fmt(0.7 * size));
+        }
+        if run.italic != base_italic {
+            let _ = write!(
+                attrs,
+                " font-style=\"{}\"",
+                if run.italic { "italic" } else { "normal" }
+            );
+        }
+        if attrs.is_empty() {
+            out.push_str(&run_text(&run.text));
+        } else {
+            let _ = write!(out, "<tspan{attrs}>{}</tspan>", run_text(&run.text));
+        }
+    }
+    out
+}
+
+/// A `<text>`; `italic` is the base style its runs differ from.
+fn text_node(
+    id: &str,
+    centre: Point,
+    text: &RichText,
+    size: f64,
+    colour: &str,
+    anchor: &str,
+    italic: bool,
+) -> Text {
+    let x = centre.x;
+    let mut t = Text::new("")
+        .set("id", id)
+        .set("class", Role::Label.name())
+        .set("x", fmt(x))
+        .set("y", fmt(centre.y + 0.35 * size))
+        .set("font-size", fmt(size))
+        .set("fill", colour)
+        .set("text-anchor", anchor);
+    t = t.set("font-style", if italic { "italic" } else { "normal" });
+    t.add(Raw(runs_markup(text, size, italic)))
+}
+
+/// A label waiting to be placed once every line is known.
+struct Pending {
+    id: String,
+    anchor: Point,
+    text: RichText,
+    size: f64,
+    gap: f64,
+}
+
+struct PanelWriter<'a> {
+    t: &'a PageFromWorld,
+    style: crate::render::Style,
+    obstacles: Obstacles,
+    pending: Vec<Pending>,
+}
+
+impl PanelWriter<'_> {
+    fn p(&self, w: Point) -> Point {
+        self.t.apply(w)
+    }
+
+    fn orientation(&self) -> f64 {
+        let [a, b, c, d, _, _] = self.t.coefficients();
+        if a * d - b * c < 0.0 { -1.0 } else { 1.0 }
+    }
+
+    /// The page arc of a world arc about a page centre (page radius).
+    fn page_arc(&self, centre: Point, radius: f64, start: f64, sweep: f64) -> Vec<[Point; 4]> {
+        let dir = self.t.apply_vector(Vector::new(start.cos(), start.sin()));
+        let start = dir.y.atan2(dir.x);
+        arc_beziers(centre, radius, start, sweep * self.orientation())
+    }
+
+    fn item(&mut self, item: &Item) -> Option<Box<dyn Node>> {
+        let pen = self.style.pen(item.role);
+        let id = item.id.as_str();
+        let class = item.role.name();
+        let node: Box<dyn Node> = match &item.shape {
+            Shape::Path(p) => Box::new(self.path(p, pen)?.set("id", id).set("class", class)),
+            Shape::Polyline { points, closed } => {
+                let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+                if pts.len() < 2 || !pts.iter().all(finite) {
+                    return None;
+                }
+                self.obstacles.polyline(&pts);
+                if *closed {
+                    self.obstacles.segment(pts[pts.len() - 1], pts[0]);
+                }
+                let mut node = path(polyline_d(&pts, *closed), pen)
+                    .set("id", id)
+                    .set("class", class);
+                if item.role == Role::Auxiliary && pts.len() == 2 && id.starts_with("line-stroke") {
+                    node = node.set("stroke-dasharray", "14 3 2 3");
+                }
+                Box::new(node)
+            }
+            Shape::Region { points } => {
+                let (colour, opacity) = self.style.region()?;
+                let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+                if pts.len() < 3 || !pts.iter().all(finite) {
+                    return None;
+                }
+                Box::new(
+                    SvgPath::new()
+                        .set("id", id)
+                        .set("class", class)
+                        .set("d", polyline_d(&pts, true))
+                        .set("fill", colour)
+                        .set("fill-opacity", fmt(opacity))
+                        .set("stroke", "none"),
+                )
+            }
+            Shape::Circle { centre, radius } => {
+                let c = self.p(*centre);
+                let pieces: Vec<[Point; 4]> =
+                    arc_beziers(*centre, *radius, 0.0, 2.0 * std::f64::consts::PI)
+                        .into_iter()
+                        .map(|b| b.map(|p| self.p(p)))
+                        .collect();
+                self.bezier_obstacles(&pieces);
+                if !finite(&c) {
+                    return None;
+                }
+                let [a, b, cc, d, _, _] = self.t.coefficients();
+                if (a * a + b * b - cc * cc - d * d).abs() <= 1e-9 * (a * a + b * b) {
+                    Box::new(
+                        stroke(Circle::new(), pen)
+                            .set("id", id)
+                            .set("class", class)
+                            .set("cx", fmt(c.x))
+                            .set("cy", fmt(c.y))
+                            .set("r", fmt(radius * self.t.scale())),
+                    )
+                } else {
+                    Box::new(
+                        path(bezier_d(&pieces), pen)
+                            .set("id", id)
+                            .set("class", class),
+                    )
+                }
+            }
+            Shape::Arc {
+                centre,
+                radius,
+                start,
+                sweep,
+                arrow,
+            } => {
+                let pieces: Vec<[Point; 4]> = arc_beziers(*centre, *radius, *start, *sweep)
+                    .into_iter()
+                    .map(|b| b.map(|p| self.p(p)))
+                    .collect();
+                if !pieces.iter().flatten().all(finite) {
+                    return None;
+                }
+                self.bezier_obstacles(&pieces);
+                let line = path(bezier_d(&pieces), pen);
+                if *arrow {
+                    let last = pieces.last()?;
+                    let u = unit(last[3] - last[2])?;
+                    Box::new(
+                        Group::new()
+                            .set("id", id)
+                            .set("class", class)
+                            .add(line)
+                            .add(arrow_head(last[3], u, pen.colour)),
+                    )
+                } else {
+                    Box::new(line.set("id", id).set("class", class))
+                }
+            }
+            Shape::Pin { centre } => {
+                let c = self.p(*centre);
+                if !finite(&c) {
+                    return None;
+                }
+                self.obstacles
+                    .boxed(Bounds::around(c, Vector::new(PIN_RADIUS, PIN_RADIUS)));
+                Box::new(
+                    Circle::new()
+                        .set("id", id)
+                        .set("class", class)
+                        .set("cx", fmt(c.x))
+                        .set("cy", fmt(c.y))
+                        .set("r", fmt(PIN_RADIUS))
+                        .set("fill", self.style.paper())
+                        .set("stroke", pen.colour)
+                        .set("stroke-width", fmt(1.3)),
+                )
+            }
+            Shape::Dot { centre } => {
+                let c = self.p(*centre);
+                if !finite(&c) {
+                    return None;
+                }
+                self.obstacles
+                    .boxed(Bounds::around(c, Vector::new(DOT_RADIUS, DOT_RADIUS)));
+                Box::new(
+                    Circle::new()
+                        .set("id", id)
+                        .set("class", class)
+                        .set("cx", fmt(c.x))
+                        .set("cy", fmt(c.y))
+                        .set("r", fmt(DOT_RADIUS))
+                        .set("fill", pen.colour)
+                        .set("stroke", "none"),
+                )
+            }
+            Shape::Bearing { centre } => {
+                let c = self.p(*centre);
+                if !finite(&c) {
+                    return None;
+                }
+                let (h, w, base) = (17.0, 10.0, 17.0);
+                let tri = [c, c + Vector::new(-w, h), c + Vector::new(w, h)];
+                let foot = [c + Vector::new(-base, h), c + Vector::new(base, h)];
+                let mut hatch = String::new();
+                let mut x = -base + 3.0;
+                while x <= base {
+                    let s = c + Vector::new(x, h);
+                    let _ = write!(hatch, "M{} L{} ", pt(s), pt(s + Vector::new(-5.0, 6.0)));
+                    x += 5.0;
+                }
+                self.obstacles.polyline(&[tri[0], tri[1], tri[2], tri[0]]);
+                self.obstacles.segment(foot[0], foot[1]);
+                Box::new(
+                    Group::new()
+                        .set("id", id)
+                        .set("class", class)
+                        .add(path(polyline_d(&tri, true), pen).set("fill", self.style.paper()))
+                        .add(path(polyline_d(&foot, false), pen))
+                        .add(path(
+                            hatch.trim_end().to_string(),
+                            Pen { width: 0.7, ..pen },
+                        )),
+                )
+            }
+            Shape::Block { points } => {
+                let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+                if pts.len() < 3 || !pts.iter().all(finite) {
+                    return None;
+                }
+                self.obstacles.polyline(&pts);
+                self.obstacles.segment(pts[pts.len() - 1], pts[0]);
+                Box::new(
+                    path(polyline_d(&pts, true), Pen { width: 1.6, ..pen })
+                        .set("fill", self.style.paper())
+                        .set("id", id)
+                        .set("class", class),
+                )
+            }
+            Shape::Arrow { from, to } => {
+                let (a, b) = (self.p(*from), self.p(*to));
+                if !finite(&a) || !finite(&b) {
+                    return None;
+                }
+                let u = unit(b - a)?;
+                self.obstacles.segment(a, b);
+                Box::new(
+                    Group::new()
+                        .set("id", id)
+                        .set("class", class)
+                        .add(path(
+                            polyline_d(&[a, b - u * (0.6 * ARROW_LENGTH)], false),
+                            pen,
+                        ))
+                        .add(arrow_head(b, u, pen.colour)),
+                )
+            }
+            Shape::Hatch { from, to, side } => {
+                let (a, b) = (self.p(*from), self.p(*to));
+                let t = unit(b - a)?;
+                let n = unit(self.t.apply_vector(*side))?;
+                let len = (b - a).norm();
+                let mut d = String::new();
+                let mut s = 0.5 * HATCH_SPACING;
+                while s < len {
+                    let p = a + t * s;
+                    let q = p + n * HATCH_DEPTH - t * (0.8 * HATCH_DEPTH);
+                    let _ = write!(d, "M{} L{} ", pt(p), pt(q));
+                    s += HATCH_SPACING;
+                }
+                if d.is_empty() {
+                    return None;
+                }
+                self.obstacles
+                    .segment(a + n * (0.5 * HATCH_DEPTH), b + n * (0.5 * HATCH_DEPTH));
+                Box::new(
+                    path(d.trim_end().to_string(), Pen { width: 0.6, ..pen })
+                        .set("id", id)
+                        .set("class", class),
+                )
+            }
+            Shape::RightAngle { vertex, u, v } => {
+                let c = self.p(*vertex);
+                let u = unit(self.t.apply_vector(*u))?;
+                let v = unit(self.t.apply_vector(*v))?;
+                let s = RIGHT_ANGLE;
+                let pts = [c + u * s, c + u * s + v * s, c + v * s];
+                if !pts.iter().all(finite) {
+                    return None;
+                }
+                Box::new(
+                    path(
+                        polyline_d(&pts, false),
+                        Pen {
+                            width: 0.7,
+                            dash: None,
+                            ..pen
+                        },
+                    )
+                    .set("id", id)
+                    .set("class", class),
+                )
+            }
+            Shape::AngleMark {
+                vertex,
+                start,
+                sweep,
+                text,
+            } => {
+                let c = self.p(*vertex);
+                if !finite(&c) {
+                    return None;
+                }
+                let pieces = self.page_arc(c, ANGLE_RADIUS, *start, *sweep);
+                self.bezier_obstacles(&pieces);
+                if let Some(text) = text {
+                    let mid = *start + 0.5 * sweep;
+                    let dir = unit(self.t.apply_vector(Vector::new(mid.cos(), mid.sin())))?;
+                    self.pending.push(Pending {
+                        id: format!("label-{}", id.trim_start_matches("angle-")),
+                        anchor: c + dir * ANGLE_RADIUS,
+                        text: text.clone(),
+                        size: self.style.font_size(TextSize::Small) + 2.0,
+                        gap: 2.0,
+                    });
+                }
+                Box::new(
+                    path(bezier_d(&pieces), pen)
+                        .set("id", id)
+                        .set("class", class),
+                )
+            }
+            Shape::Dimension {
+                from,
+                to,
+                side,
+                offset,
+                text,
+            } => {
+                let (a, b) = (self.p(*from), self.p(*to));
+                let n = unit(self.t.apply_vector(*side))?;
+                let u = unit(b - a)?;
+                let (a2, b2) = (a + n * *offset, b + n * *offset);
+                let ext = |p: Point, q: Point| polyline_d(&[p + n * 3.0, q + n * 4.0], false);
+                let size = self.style.font_size(TextSize::Small) + 1.0;
+                let half = text_half(text, size);
+                let centre = nalgebra::center(&a2, &b2) + n * (half.y + 3.0);
+                self.obstacles.boxed(Bounds::around(centre, half));
+                self.obstacles.segment(a2, b2);
+                Box::new(
+                    Group::new()
+                        .set("id", id)
+                        .set("class", class)
+                        .add(path(ext(a, a2), Pen { width: 0.5, ..pen }))
+                        .add(path(ext(b, b2), Pen { width: 0.5, ..pen }))
+                        .add(path(polyline_d(&[a2 + u * 2.0, b2 - u * 2.0], false), pen))
+                        .add(arrow_head(a2, -u, pen.colour))
+                        .add(arrow_head(b2, u, pen.colour))
+                        .add(text_node(
+                            &format!("{id}-text"),
+                            centre,
+                            text,
+                            size,
+                            pen.colour,
+                            "middle",
+                            starts_italic(text),
+                        )),
+                )
+            }
+            Shape::Label { anchor, text, size } => {
+                let a = self.p(*anchor);
+                if !finite(&a) {
+                    return None;
+                }
+                self.pending.push(Pending {
+                    id: id.to_string(),
+                    anchor: a,
+                    text: text.clone(),
+                    size: self.style.font_size(*size),
+                    gap: if *size == TextSize::Letter { 4.0 } else { 3.0 },
+                });
+                return None;
+            }
+            Shape::Note { corner, lines } => {
+                let mut g = Group::new().set("id", id).set("class", class);
+                let colour = self.style.pen(Role::Label).colour;
+                for (i, line) in lines.iter().enumerate() {
+                    let y = corner.y + NOTE_SIZE * 0.8 + NOTE_LINE * i as f64;
+                    let half = text_half(line, NOTE_SIZE);
+                    self.obstacles.boxed(Bounds::around(
+                        Point::new(corner.x + half.x, y - 0.35 * NOTE_SIZE),
+                        half,
+                    ));
+                    g = g.add(text_node(
+                        &format!("{id}-{}", i + 1),
+                        Point::new(corner.x, y - 0.35 * NOTE_SIZE),
+                        line,
+                        NOTE_SIZE,
+                        colour,
+                        "start",
+                        false,
+                    ));
+                }
+                Box::new(g)
+            }
+        };
+        Some(node)
+    }
+
+    fn bezier_obstacles(&mut self, pieces: &[[Point; 4]]) {
+        for b in pieces {
+            let pts: Vec<Point> = (0..=6)
+                .map(|k| {
+                    let t = k as f64 / 6.0;
+                    let s = 1.0 - t;
+                    Point::from(
+                        b[0].coords * (s * s * s)
+                            + b[1].coords * (3.0 * s * s * t)
+                            + b[2].coords * (3.0 * s * t * t)
+                            + b[3].coords * (t * t * t),
+                    )
+                })
+                .collect();
+            self.obstacles.polyline(&pts);
+        }
+    }
+
+    fn path(&mut self, p: &Path, pen: Pen) -> Option<SvgPath> {
+        let mut d = String::new();
+        let mut last = Point::origin();
+        let mut pieces = Vec::new();
+        for seg in p.segments() {
+            match *seg {
+                PathSegment::MoveTo(q) => {
+                    let q = self.p(q);
+                    let _ = write!(d, "{}M{}", if d.is_empty() { "" } else { " " }, pt(q));
+                    last = q;
+                }
+                PathSegment::LineTo(q) => {
+                    let q = self.p(q);
+                    let _ = write!(d, " L{}", pt(q));
+                    self.obstacles.segment(last, q);
+                    last = q;
+                }
+                PathSegment::CubicTo(c1, c2, q) => {
+                    let (c1, c2, q) = (self.p(c1), self.p(c2), self.p(q));
+                    let _ = write!(d, " C{} {} {}", pt(c1), pt(c2), pt(q));
+                    pieces.push([last, c1, c2, q]);
+                    last = q;
+                }
+                PathSegment::Close => d.push_str(" Z"),
+            }
+        }
+        if !p.points().all(|q| finite(&self.p(q))) {
+            return None;
+        }
+        self.bezier_obstacles(&pieces);
+        Some(path(d, pen))
+    }
+}
+
+fn draw_order(role: Role, shape: &Shape) -> (usize, usize) {
+    let r = Role::ALL.iter().position(|x| *x == role).unwrap_or(0);
+    let s = match shape {
+        Shape::Region { .. } => 0,
+        Shape::Pin { .. } => 2,
+        _ => 1,
+    };
+    (r, s)
+}
+
+fn panel_group(
+    panel: &Panel,
+    style: crate::render::Style,
+    page: &crate::figure::PageRect,
+) -> Group {
+    let t = panel.transform();
+    let coefficients = t.coefficients().map(fmt_coefficient).join(" ");
+    let mut g = Group::new()
+        .set("id", panel.id())
+        .set("data-page-from-world", coefficients);
+    let mut w = PanelWriter {
+        t,
+        style,
+        obstacles: Obstacles::default(),
+        pending: Vec::new(),
+    };
+    let mut order: Vec<(usize, &Item)> = panel.items().iter().enumerate().collect();
+    order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
+    let mut nodes = Vec::new();
+    for (_, item) in &order {
+        if let Some(n) = w.item(item) {
+            nodes.push(n);
+        }
+    }
+    for n in nodes {
+        g = g.add(n);
+    }
+    let colour = style.pen(Role::Label).colour;
+    let pending = std::mem::take(&mut w.pending);
+    for p in pending {
+        let half = text_half(&p.text, p.size);
+        let centre = place(p.anchor, half, p.gap, &w.obstacles, page);
+        w.obstacles.boxed(Bounds::around(centre, half));
+        g = g.add(text_node(
+            &p.id,
+            centre,
+            &p.text,
+            p.size,
+            colour,
+            "middle",
+            starts_italic(&p.text),
+        ));
+    }
+    g
+}
+
+/// The figure as SVG text: `<metadata>` JSON (DESIGN.md §4), a paper
+/// rectangle, one `<g data-page-from-world>` per panel.
+pub fn to_svg(figure: &Figure) -> String {
+    let style = figure.style();
+    let (w, h) = (figure.width(), figure.height());
+    // Labels stay a little inside the page.
+    let page = crate::figure::PageRect::new(2.0, 2.0, w - 4.0, h - 4.0);
+    let mut meta = figure.metadata().clone();
+    meta.insert("figure".into(), json!(figure.name()));
+    meta.insert("style".into(), json!(style.name()));
+    meta.insert("tolerance".into(), json!(figure.tolerance()));
+    meta.insert("width".into(), json!(w));
+    meta.insert("height".into(), json!(h));
+    let coefficients = |t: &PageFromWorld| -> Vec<Value> {
+        t.coefficients()
+            .iter()
+            .map(|c| json!(fmt_coefficient(*c).parse::<f64>().unwrap_or(0.0)))
+            .collect()
+    };
+    if let Some(first) = figure.panels().first() {
+        meta.insert(
+            "page_from_world".into(),
+            Value::Array(coefficients(first.transform())),
+        );
+    }
+    meta.insert(
+        "panels".into(),
+        Value::Array(
+            figure
+                .panels()
+                .iter()
+                .map(|p| {
+                    let r = p.rect();
+                    json!({
+                        "id": p.id(),
+                        "page_from_world": coefficients(p.transform()),
+                        "rect": [r.x, r.y, r.width, r.height],
+                    })
+                })
+                .collect(),
+        ),
+    );
+    let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
+    let mut metadata = Element::new("metadata");
+    metadata.append(svg::node::Text::new(json));
+    let mut doc = Document::new()
+        .set("width", fmt(w))
+        .set("height", fmt(h))
+        .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
+        .set("font-family", FONT_FAMILY)
+        .add(metadata)
+        .add(
+            Rectangle::new()
+                .set("id", "paper")
+                .set("x", 0)
+                .set("y", 0)
+                .set("width", fmt(w))
+                .set("height", fmt(h))
+                .set("fill", style.paper()),
+        );
+    for panel in figure.panels() {
+        doc = doc.add(panel_group(panel, style, &page));
+    }
+    let mut s = doc.to_string();
+    s.push('\n');
+    s
+}

@@ -1,0 +1,246 @@
+//! Collects a panel's primitives while the layers draw: clips lines to the
+//! panel's world frame, keeps ids unique, and shows points that fall off
+//! the page by arrows at its edge.
+
+use crate::figure::{Item, PageFromWorld, RichText, Role, Shape, TextSize};
+use crate::geom::{Direction, Frame, Intersection, Point, Vector};
+use serde_json::{Map, Value, json};
+use std::collections::BTreeSet;
+
+/// Shortest line drawn, in page units: shorter ones are degenerate.
+const MIN_PAGE_LENGTH: f64 = 0.5;
+/// Length of an arrow that points at something off the page.
+const EDGE_ARROW: f64 = 34.0;
+/// How far inside the frame such an arrow ends.
+const EDGE_GAP: f64 = 3.0;
+
+/// How a named point is marked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Marker {
+    /// A pin joint.
+    Pin,
+    /// A small dot.
+    Dot,
+}
+
+pub(crate) struct Canvas {
+    transform: PageFromWorld,
+    frame: Frame,
+    items: Vec<Item>,
+    ids: BTreeSet<String>,
+    points: Map<String, Value>,
+}
+
+impl Canvas {
+    pub(crate) fn new(transform: PageFromWorld, frame: Frame) -> Self {
+        Self {
+            transform,
+            frame,
+            items: Vec::new(),
+            ids: BTreeSet::new(),
+            points: Map::new(),
+        }
+    }
+
+    pub(crate) fn transform(&self) -> &PageFromWorld {
+        &self.transform
+    }
+
+    pub(crate) fn frame(&self) -> &Frame {
+        &self.frame
+    }
+
+    /// World length of `px` page units.
+    pub(crate) fn world(&self, px: f64) -> f64 {
+        px / self.transform.scale()
+    }
+
+    /// Page length of a world length.
+    pub(crate) fn page(&self, length: f64) -> f64 {
+        length * self.transform.scale()
+    }
+
+    pub(crate) fn has(&self, id: &str) -> bool {
+        self.ids.contains(id)
+    }
+
+    /// Adds an item unless one with its id is already there (layers that
+    /// share a line draw it once). Returns whether it was added.
+    pub(crate) fn push(&mut self, id: impl Into<String>, role: Role, shape: Shape) -> bool {
+        let id = id.into();
+        if self.ids.contains(&id) {
+            return false;
+        }
+        self.ids.insert(id.clone());
+        self.items.push(Item::new(id, role, shape));
+        true
+    }
+
+    pub(crate) fn contains(&self, p: Point) -> bool {
+        self.frame.contains(p)
+    }
+
+    /// The segment `a b`, clipped to the frame; nothing if it misses the
+    /// frame or is shorter than half a page unit.
+    pub(crate) fn segment(&mut self, id: impl Into<String>, role: Role, a: Point, b: Point) {
+        if let Some((p, q)) = self.frame.clip_segment(a, b)
+            && self.page((q - p).norm()) >= MIN_PAGE_LENGTH
+        {
+            self.push(
+                id,
+                role,
+                Shape::Polyline {
+                    points: vec![p, q],
+                    closed: false,
+                },
+            );
+        }
+    }
+
+    /// The ray from `origin` along `direction`, clipped to the frame.
+    pub(crate) fn ray(
+        &mut self,
+        id: impl Into<String>,
+        role: Role,
+        origin: Point,
+        direction: Vector,
+    ) {
+        if direction.norm() == 0.0 {
+            return;
+        }
+        if let Some((p, q)) = self.frame.clip_ray(origin, direction)
+            && self.page((q - p).norm()) >= MIN_PAGE_LENGTH
+        {
+            self.push(
+                id,
+                role,
+                Shape::Polyline {
+                    points: vec![p, q],
+                    closed: false,
+                },
+            );
+        }
+    }
+
+    /// A label near `anchor` (placed clear of lines by the renderer).
+    pub(crate) fn label(
+        &mut self,
+        id: impl Into<String>,
+        anchor: Point,
+        text: RichText,
+        size: TextSize,
+    ) {
+        if self.contains(anchor) {
+            self.push(id, Role::Label, Shape::Label { anchor, text, size });
+        }
+    }
+
+    /// Records a named point in the metadata and draws it: its marker and
+    /// letter when on the page, an arrow at the frame edge pointing to it
+    /// (from `from`, a point on the page) when off it.
+    pub(crate) fn point(&mut self, name: &str, p: Point, marker: Marker, from: Point) {
+        let key = format!("point-{name}");
+        if self.has(&key) || self.has(&format!("offpage-{name}")) {
+            return;
+        }
+        self.points
+            .insert(name.to_string(), json!([round(p.x), round(p.y)]));
+        let letter = RichText::italic(name);
+        if self.contains(p) {
+            match marker {
+                Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
+                Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
+            };
+            self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+        } else if let Some((_, edge)) = self.frame.clip_segment(from, p) {
+            let dir = p - from;
+            if dir.norm() > 0.0 {
+                let u = dir.normalize();
+                let head = edge - u * self.world(EDGE_GAP);
+                let tail = head - u * self.world(EDGE_ARROW);
+                self.push(
+                    format!("offpage-{name}"),
+                    Role::Construction,
+                    Shape::Arrow {
+                        from: tail,
+                        to: head,
+                    },
+                );
+                self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
+            }
+        }
+    }
+
+    /// Records a point at infinity in the metadata and shows it by a
+    /// labelled direction arrow at the frame edge, on the ray from `through`
+    /// along `direction`.
+    pub(crate) fn point_at_infinity(&mut self, name: &str, direction: Direction, through: Point) {
+        let id = format!("infinity-{name}");
+        if self.has(&id) {
+            return;
+        }
+        self.points.insert(
+            name.to_string(),
+            json!({"at_infinity": [round(direction.x), round(direction.y)]}),
+        );
+        let u = direction.into_inner();
+        if let Some((_, edge)) = self.frame.clip_ray(through, u) {
+            let head = edge - u * self.world(EDGE_GAP);
+            let tail = head - u * self.world(EDGE_ARROW);
+            if (head - through).dot(&u) > 0.0 {
+                self.push(
+                    id,
+                    Role::Construction,
+                    Shape::Arrow {
+                        from: tail,
+                        to: head,
+                    },
+                );
+                self.label(
+                    format!("label-{name}"),
+                    tail,
+                    RichText::parse(&format!("*{name}* at ∞")),
+                    TextSize::Letter,
+                );
+            }
+        }
+    }
+
+    /// A point that may be at infinity (D): at infinity it is shown by a
+    /// direction arrow on the ray from `from` along `towards` (the caller
+    /// knows which way the construction runs).
+    pub(crate) fn intersection(
+        &mut self,
+        name: &str,
+        p: &Intersection,
+        marker: Marker,
+        from: Point,
+        towards: Vector,
+    ) {
+        match p {
+            Intersection::Point(p) => self.point(name, *p, marker, from),
+            Intersection::AtInfinity(_) => {
+                if let Some(d) = Direction::try_new(towards, 0.0) {
+                    self.point_at_infinity(name, d, from)
+                }
+            }
+            Intersection::Coincident => {}
+        }
+    }
+
+    pub(crate) fn finish(self) -> (Vec<Item>, Map<String, Value>) {
+        (self.items, self.points)
+    }
+}
+
+/// A number for the metadata, to 12 significant digits (stable text).
+pub(crate) fn round(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return 0.0;
+    }
+    let digits = 11 - x.abs().log10().floor() as i32;
+    let digits = digits.clamp(-300, 300);
+    let p = 10f64.powi(digits);
+    let r = (x * p).round() / p;
+    if r.is_finite() { r + 0.0 } else { x }
+}

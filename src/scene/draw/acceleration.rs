@@ -1,0 +1,162 @@
+//! Klein's (Fig. 65) and Kisch's (Fig. 66) acceleration constructions.
+
+use super::Ctx;
+use super::velocity::{basics_d, basics_e};
+use crate::construct::{AccelerationPoints, Kisch};
+use crate::figure::{RichText, Role, Shape, TextSize};
+use crate::geom::{Point, Vector};
+use crate::scene::canvas::{Canvas, Marker};
+use crate::scene::notation::Named::{self, *};
+
+/// FG perpendicular to AB, CG along the line through C parallel to the
+/// stroke, the right angle at F, the points F and G.
+fn fg(ctx: &Ctx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, from_name: Named) {
+    let pose = ctx.main.pose();
+    let (a, b, c) = (pose.a(), pose.b(), pose.c());
+    let (f, g) = (p.f(), p.g());
+    canvas.segment(ctx.line(from_name, G), Role::Construction, from, g);
+    canvas.segment(ctx.line(CrankCentre, G), Role::Construction, c, g);
+    let along = if (a - f).norm() > (b - f).norm() {
+        a - f
+    } else {
+        b - f
+    };
+    if (g - f).norm() > 0.0 {
+        canvas.push(
+            "angle-F",
+            Role::Construction,
+            Shape::RightAngle {
+                vertex: f,
+                u: along,
+                v: g - f,
+            },
+        );
+    }
+    canvas.point(ctx.letter(F), f, Marker::Dot, c);
+    canvas.point(ctx.letter(G), g, Marker::Dot, c);
+}
+
+pub(crate) fn klein(ctx: &Ctx, canvas: &mut Canvas) {
+    basics_e(ctx, canvas);
+    basics_d(ctx, canvas);
+    let pose = ctx.main.pose();
+    let c = pose.c();
+    let e = ctx.main.e().e();
+    match ctx.main.klein() {
+        Some(k) => {
+            let d = k.d();
+            canvas.segment(
+                ctx.line(InstantCentre, VelocityPoint),
+                Role::Auxiliary,
+                d,
+                e,
+            );
+            let f = k.points().f();
+            canvas.segment(ctx.line(CrankCentre, F), Role::Construction, c, f);
+            fg(ctx, canvas, k.points(), f, F);
+        }
+        None => {
+            // D at infinity: DE has no finite end, the construction fails.
+            let r = pose.mechanism().crank();
+            canvas.label(
+                "note-klein",
+                Point::new(0.0, -0.6 * r),
+                RichText::parse(&format!(
+                    "*{}* at infinity: Klein's construction fails",
+                    ctx.letter(InstantCentre)
+                )),
+                TextSize::Small,
+            );
+        }
+    }
+}
+
+/// The arc about `centre` of radius `radius` from direction `from` to
+/// direction `to` the short way, with `over` radians more at each end.
+fn arc_between(centre: Point, radius: f64, from: Vector, to: Vector, over: f64) -> Shape {
+    let a0 = from.y.atan2(from.x);
+    let a1 = to.y.atan2(to.x);
+    let mut sweep = a1 - a0;
+    while sweep > std::f64::consts::PI {
+        sweep -= 2.0 * std::f64::consts::PI;
+    }
+    while sweep < -std::f64::consts::PI {
+        sweep += 2.0 * std::f64::consts::PI;
+    }
+    let s = if sweep >= 0.0 { 1.0 } else { -1.0 };
+    Shape::Arc {
+        centre,
+        radius,
+        start: a0 - s * over,
+        sweep: sweep + 2.0 * s * over,
+        arrow: false,
+    }
+}
+
+pub(crate) fn kisch(ctx: &Ctx, canvas: &mut Canvas) {
+    basics_e(ctx, canvas);
+    let pose = ctx.main.pose();
+    let (a, b) = (pose.a(), pose.b());
+    let k = ctx.main.kisch();
+    let e = ctx.main.e().e();
+    let circle = Kisch::semicircle(pose);
+    // The half of the circle on AB away from C, where H is.
+    let to_a = a - circle.centre;
+    let start = to_a.y.atan2(to_a.x);
+    let side = match k.h() {
+        Some(h) if (h - k.points().f()).norm() > 0.0 => h - k.points().f(),
+        _ => {
+            let n = Vector::new(-(b - a).y, (b - a).x);
+            if n.dot(&(pose.c() - b)) > 0.0 { -n } else { n }
+        }
+    };
+    let mid = Vector::new(-to_a.y, to_a.x); // start turned +90°
+    let sweep = if mid.dot(&side) >= 0.0 {
+        std::f64::consts::PI
+    } else {
+        -std::f64::consts::PI
+    };
+    let (nb, nh) = (ctx.letter(CrankPin), ctx.letter(H));
+    let na = ctx.letter(Slider);
+    canvas.push(
+        format!("semicircle-{na}{nh}{nb}"),
+        Role::Auxiliary,
+        Shape::Arc {
+            centre: circle.centre,
+            radius: circle.radius,
+            start,
+            sweep,
+            arrow: false,
+        },
+    );
+    if let Some(h) = k.h() {
+        let be = k.be();
+        if canvas.page(be) > 1.0 {
+            canvas.push(
+                format!("arc-{nb}{}", ctx.letter(VelocityPoint)),
+                Role::Auxiliary,
+                arc_between(b, be, e - b, h - b, 0.12),
+            );
+        }
+        canvas.segment(ctx.line(CrankPin, H), Role::Auxiliary, b, h);
+        canvas.segment(ctx.line(H, Slider), Role::Auxiliary, h, a);
+        if (h - a).norm() > 0.0
+            && (h - b).norm() > 0.0
+            && canvas.page((h - k.points().f()).norm()) > 8.0
+        {
+            canvas.push(
+                "angle-H",
+                Role::Auxiliary,
+                Shape::RightAngle {
+                    vertex: h,
+                    u: a - h,
+                    v: b - h,
+                },
+            );
+        }
+        canvas.point(nh, h, Marker::Dot, pose.c());
+        fg(ctx, canvas, k.points(), h, H);
+    } else {
+        fg(ctx, canvas, k.points(), k.points().f(), F);
+    }
+}

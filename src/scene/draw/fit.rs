@@ -1,0 +1,106 @@
+//! The world rectangle a figure must show whole.
+
+use super::Ctx;
+use crate::construct::Kisch;
+use crate::geom::{Frame, Intersection, Point};
+use crate::scene::Layer;
+
+/// D is fitted into the page only while its height above the stroke stays
+/// within this many (rod + crank) lengths; farther, it is shown by an arrow
+/// at the frame edge.
+pub(crate) const FAR_POINT: f64 = 0.8;
+
+struct Bounds {
+    min: Point,
+    max: Point,
+}
+
+impl Bounds {
+    fn add(&mut self, p: Point) {
+        if p.x.is_finite() && p.y.is_finite() {
+            self.min = self.min.inf(&p);
+            self.max = self.max.sup(&p);
+        }
+    }
+}
+
+/// Whether D is near enough to be fitted.
+pub(crate) fn d_is_near(ctx: &Ctx) -> Option<Point> {
+    let m = ctx.scene.mechanism();
+    match ctx.main.d().d() {
+        Intersection::Point(d) if (d.y - m.offset()).abs() <= FAR_POINT * (m.rod() + m.crank()) => {
+            Some(d)
+        }
+        _ => None,
+    }
+}
+
+pub(crate) fn frame(ctx: &Ctx) -> Frame {
+    let m = ctx.scene.mechanism();
+    let (r, e) = (m.crank(), m.offset());
+    let s = &ctx.sizes;
+    let (g0, g1) = s.guides(r);
+    let mut b = Bounds {
+        min: Point::new(-r, -r),
+        max: Point::new(r, r),
+    };
+    b.add(Point::new(g0.min(-r), e - s.block_half_height));
+    b.add(Point::new(g1, e + s.block_half_height));
+    let scene = ctx.scene;
+    let pose = ctx.main.pose();
+    let wants_e = [
+        Layer::Velocity,
+        Layer::Klein,
+        Layer::Kisch,
+        Layer::Torque,
+        Layer::VirtualCentres,
+    ]
+    .iter()
+    .any(|l| scene.has(*l));
+    if wants_e {
+        b.add(ctx.main.e().e());
+    }
+    if [
+        Layer::Velocity,
+        Layer::Klein,
+        Layer::VirtualCentres,
+        Layer::Centrodes,
+    ]
+    .iter()
+    .any(|l| scene.has(*l))
+        && let Some(d) = d_is_near(ctx)
+    {
+        b.add(d);
+    }
+    if scene.has(Layer::Klein)
+        && let Some(k) = ctx.main.klein()
+    {
+        b.add(k.points().f());
+        b.add(k.points().g());
+    }
+    if scene.has(Layer::Kisch) {
+        let k = ctx.main.kisch();
+        b.add(k.points().f());
+        b.add(k.points().g());
+        // The half of the circle on AB away from C (where H is).
+        let c = Kisch::semicircle(pose);
+        let ab = pose.b() - pose.a();
+        let mut n = crate::geom::perp(&ab) / ab.norm();
+        if n.dot(&(pose.c() - pose.b())) > 0.0 {
+            n = -n;
+        }
+        let u = ab / ab.norm();
+        for k in 0..=24 {
+            let t = std::f64::consts::PI * k as f64 / 24.0;
+            b.add(c.centre + (u * t.cos() + n * t.sin()) * c.radius);
+        }
+    }
+    if scene.has(Layer::Coupler) {
+        let q = ctx.scene.coupler();
+        for k in 0..72 {
+            let a = crate::Angle::from_degrees(5.0 * k as f64).expect("finite");
+            b.add(q.point(&m.pose(a)));
+        }
+    }
+    Frame::new(b.min, b.max)
+}

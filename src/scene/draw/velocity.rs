@@ -1,0 +1,111 @@
+//! The velocity layer (Fig. 63; Ng Fig. A1): D, E and the similar
+//! triangles ADB and ECB.
+
+use super::Ctx;
+use crate::figure::{Role, Shape};
+use crate::geom::{Intersection, Point, Vector, cross};
+use crate::scene::canvas::{Canvas, Marker};
+use crate::scene::notation::Named::{self, *};
+
+/// E: the perpendicular to the stroke through C, AB produced to meet it,
+/// the right angle at C.
+pub(crate) fn basics_e(ctx: &Ctx, canvas: &mut Canvas) {
+    let pose = ctx.main.pose();
+    let (a, b, c) = (pose.a(), pose.b(), pose.c());
+    let e = ctx.main.e().e();
+    let r = pose.mechanism().crank();
+    let ext = 0.12 * r;
+    canvas.segment(
+        ctx.line(CrankCentre, VelocityPoint),
+        Role::Construction,
+        Point::new(0.0, e.y.min(0.0) - ext),
+        Point::new(0.0, e.y.max(0.0) + ext),
+    );
+    if (e - b).dot(&(b - a)) > 0.0 {
+        canvas.segment(ctx.line(CrankPin, VelocityPoint), Role::Auxiliary, b, e);
+    }
+    if e != c {
+        canvas.push(
+            format!("angle-{}", ctx.letter(CrankCentre)),
+            Role::Construction,
+            Shape::RightAngle {
+                vertex: c,
+                u: Vector::new(1.0, 0.0),
+                v: e - c,
+            },
+        );
+    }
+    canvas.point(ctx.letter(VelocityPoint), e, Marker::Dot, c);
+}
+
+/// D: CB produced meets the perpendicular to the stroke at A; a point off
+/// the page or at infinity is shown by an arrow at the frame edge.
+pub(crate) fn basics_d(ctx: &Ctx, canvas: &mut Canvas) {
+    let pose = ctx.main.pose();
+    let (a, b) = (pose.a(), pose.b());
+    let name = ctx.letter(InstantCentre);
+    let d = ctx.main.d().d();
+    match d {
+        Intersection::Point(p) => {
+            canvas.segment(ctx.line(CrankPin, InstantCentre), Role::Construction, b, p);
+            canvas.segment(ctx.line(Slider, InstantCentre), Role::Construction, a, p);
+            // The block hides a mark at A; only a bare construction has one.
+            if p != a && !ctx.scene.has(crate::scene::Layer::Mechanism) {
+                canvas.push(
+                    format!("angle-{}", ctx.letter(Slider)),
+                    Role::Construction,
+                    Shape::RightAngle {
+                        vertex: a,
+                        u: Vector::new(-1.0, 0.0),
+                        v: p - a,
+                    },
+                );
+            }
+        }
+        Intersection::AtInfinity(_) => {
+            let up = Vector::new(0.0, b.y.signum());
+            canvas.ray(ctx.line(CrankPin, InstantCentre), Role::Construction, b, up);
+            canvas.ray(ctx.line(Slider, InstantCentre), Role::Construction, a, up);
+        }
+        Intersection::Coincident => {}
+    }
+    let towards = Vector::new(0.0, b.y.signum());
+    canvas.intersection(name, &d, Marker::Dot, a, towards);
+}
+
+fn region(ctx: &Ctx, canvas: &mut Canvas, names: [Named; 3], points: [Point; 3]) {
+    let area = cross(&(points[1] - points[0]), &(points[2] - points[0]));
+    if canvas.page(canvas.page(area.abs())) < 4.0 || !points.iter().all(|p| canvas.contains(*p)) {
+        return;
+    }
+    let id = format!(
+        "triangle-{}{}{}",
+        ctx.letter(names[0]),
+        ctx.letter(names[1]),
+        ctx.letter(names[2])
+    );
+    canvas.push(
+        id,
+        Role::Construction,
+        Shape::Region {
+            points: points.to_vec(),
+        },
+    );
+}
+
+pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+    basics_e(ctx, canvas);
+    basics_d(ctx, canvas);
+    let pose = ctx.main.pose();
+    let (a, b, c) = (pose.a(), pose.b(), pose.c());
+    if let Intersection::Point(d) = ctx.main.d().d() {
+        region(ctx, canvas, [Slider, InstantCentre, CrankPin], [a, d, b]);
+    }
+    let e = ctx.main.e().e();
+    region(
+        ctx,
+        canvas,
+        [VelocityPoint, CrankCentre, CrankPin],
+        [e, c, b],
+    );
+}

@@ -1,0 +1,106 @@
+//! The layers a scene can draw.
+
+use crate::error::{Error, Result};
+use serde::Deserialize;
+
+/// One layer of a mechanism figure. Each asks for the constructions it needs
+/// and nothing more.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Layer {
+    /// Frame, crank circle, crank, rod, slider block between guides, pins.
+    /// Computes no construction.
+    Mechanism,
+    /// Dimensions: crank angle θ, the displacement x from mid-stroke, r
+    /// and l (Fig. 62). Computes no construction.
+    Dimensions,
+    /// The rod's fixed and moving centrodes (Fig. 61); needs D.
+    Centrodes,
+    /// The oval traced by a point of the rod. Needs no construction.
+    Coupler,
+    /// The six virtual centres (§34); needs D and E.
+    VirtualCentres,
+    /// D and E with the similar triangles ADB and ECB (Fig. 63).
+    Velocity,
+    /// Klein's acceleration construction (Fig. 65); needs D and E.
+    Klein,
+    /// Kisch's acceleration construction (Fig. 66); needs E, never D.
+    Kisch,
+    /// Ng's OM torque line with the slider force and side thrust; needs E.
+    Torque,
+    /// Scale notes ("*CB* represents V_c = ..."); needs what the drawn
+    /// velocity and acceleration layers need.
+    Scales,
+}
+
+impl Layer {
+    /// Every layer, in drawing order.
+    pub const ALL: [Layer; 10] = [
+        Layer::Mechanism,
+        Layer::Dimensions,
+        Layer::Centrodes,
+        Layer::Coupler,
+        Layer::VirtualCentres,
+        Layer::Velocity,
+        Layer::Klein,
+        Layer::Kisch,
+        Layer::Torque,
+        Layer::Scales,
+    ];
+
+    /// The name used on the command line and in scene files.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Layer::Mechanism => "mechanism",
+            Layer::Dimensions => "dimensions",
+            Layer::Centrodes => "centrodes",
+            Layer::Coupler => "coupler",
+            Layer::VirtualCentres => "virtual-centres",
+            Layer::Velocity => "velocity",
+            Layer::Klein => "klein",
+            Layer::Kisch => "kisch",
+            Layer::Torque => "torque",
+            Layer::Scales => "scales",
+        }
+    }
+
+    /// The layer of that name.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|l| l.name() == name.trim())
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "unknown layer '{}': expected one of {}",
+                    name.trim(),
+                    Self::ALL.map(|l| l.name()).join(", ")
+                ))
+            })
+    }
+
+    /// Parses a comma-separated list (`mechanism,velocity`).
+    pub fn parse_list(spec: &str) -> Result<Vec<Self>> {
+        spec.split(',')
+            .filter(|s| !s.trim().is_empty())
+            .map(Self::from_name)
+            .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip_and_typos_are_named() {
+        for l in Layer::ALL {
+            assert_eq!(Layer::from_name(l.name()).unwrap(), l);
+        }
+        let err = Layer::from_name("kisc").unwrap_err().to_string();
+        assert!(err.contains("'kisc'") && err.contains("kisch"), "{err}");
+        assert_eq!(
+            Layer::parse_list("mechanism, kisch").unwrap(),
+            vec![Layer::Mechanism, Layer::Kisch]
+        );
+    }
+}

@@ -1,0 +1,340 @@
+//! Scenes: what one figure shows, and the lazy evaluation that computes
+//! only what its layers draw.
+//!
+//! A [`Scene`] is a mechanism, one pose (or several for an overlay), the
+//! [`Layer`]s to draw, the page, the style and whether to mirror. Building
+//! it ([`Scene::build`]) asks each layer, in a fixed order, for the
+//! constructions it needs through a cache that computes each at most once
+//! and counts it ([`Evaluations`]); the result is an immutable
+//! [`Figure`] in world coordinates.
+
+mod cache;
+mod canvas;
+mod draw;
+mod file;
+mod layer;
+mod notation;
+
+pub use cache::Evaluations;
+pub use layer::Layer;
+pub use notation::Notation;
+
+use crate::construct::CouplerPoint;
+use crate::error::{Error, Result, finite, positive};
+use crate::figure::Figure;
+use crate::render::Style;
+use crate::{Angle, SliderCrank};
+
+/// Default drawing tolerance of curves, in page units (DESIGN.md §6).
+pub const DEFAULT_TOLERANCE: f64 = 0.01;
+
+/// A page: its size and the margin kept clear on every side, in page units
+/// (SVG user units, 1/96 in).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Page {
+    width: f64,
+    height: f64,
+    margin: f64,
+}
+
+impl Page {
+    /// A page of `width` × `height` with `margin`; each finite, the size
+    /// between 50 and 20000, the margin ≥ 0 and leaving at least 50 units
+    /// of drawing each way.
+    pub fn new(width: f64, height: f64, margin: f64) -> Result<Self> {
+        let width = positive("page width", width)?;
+        let height = positive("page height", height)?;
+        let margin = finite("page margin", margin)?;
+        for (name, v) in [("page width", width), ("page height", height)] {
+            if !(50.0..=20000.0).contains(&v) {
+                return Err(Error::OutOfRange {
+                    name,
+                    value: v,
+                    reason: "a page is between 50 and 20000 units".into(),
+                });
+            }
+        }
+        if margin < 0.0 || width - 2.0 * margin < 50.0 || height - 2.0 * margin < 50.0 {
+            return Err(Error::OutOfRange {
+                name: "page margin",
+                value: margin,
+                reason: "the margin must be ≥ 0 and leave at least 50 units each way".into(),
+            });
+        }
+        Ok(Self {
+            width,
+            height,
+            margin,
+        })
+    }
+
+    /// Width.
+    pub fn width(&self) -> f64 {
+        self.width
+    }
+
+    /// Height.
+    pub fn height(&self) -> f64 {
+        self.height
+    }
+
+    /// Margin.
+    pub fn margin(&self) -> f64 {
+        self.margin
+    }
+}
+
+impl Default for Page {
+    /// 760 × 460 with a margin of 16.
+    fn default() -> Self {
+        Self {
+            width: 760.0,
+            height: 460.0,
+            margin: 16.0,
+        }
+    }
+}
+
+/// What one figure shows. Built with [`Scene::new`] and the `with_*`
+/// methods (each validates its value), or read from TOML with
+/// [`Scene::from_toml`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Scene {
+    name: String,
+    mechanism: SliderCrank,
+    angles: Vec<Angle>,
+    layers: Vec<Layer>,
+    style: Style,
+    notation: Notation,
+    mirror: bool,
+    page: Page,
+    omega: f64,
+    unit: String,
+    force_unit: String,
+    torque: f64,
+    coupler: CouplerPoint,
+    tolerance: f64,
+}
+
+impl Scene {
+    /// The mechanism at `angle`, drawn with the mechanism layer only, in the
+    /// textbook style, not mirrored, on the default page; 250 rpm, lengths
+    /// in feet, torque 1.
+    pub fn new(mechanism: SliderCrank, angle: Angle) -> Self {
+        Self {
+            name: "scene".into(),
+            mechanism,
+            angles: vec![angle],
+            layers: vec![Layer::Mechanism],
+            style: Style::Textbook,
+            notation: Notation::Textbook,
+            mirror: false,
+            page: Page::default(),
+            omega: crate::rpm_to_omega(250.0),
+            unit: "ft".into(),
+            force_unit: "lbf".into(),
+            torque: 1.0,
+            coupler: CouplerPoint::new(0.5).expect("0.5 is in [0, 1]"),
+            tolerance: DEFAULT_TOLERANCE,
+        }
+    }
+
+    /// Names the figure (the `figure` of its metadata).
+    pub fn named(mut self, name: impl Into<String>) -> Self {
+        self.name = name.into();
+        self
+    }
+
+    /// The poses: the first carries the constructions, the others are
+    /// drawn as ghosts by the mechanism layer. Errors when empty.
+    pub fn with_angles(mut self, angles: Vec<Angle>) -> Result<Self> {
+        if angles.is_empty() {
+            return Err(Error::Parse("a scene needs at least one angle".into()));
+        }
+        if angles.len() > 64 {
+            return Err(Error::OutOfRange {
+                name: "angles",
+                value: angles.len() as f64,
+                reason: "at most 64 poses in one figure".into(),
+            });
+        }
+        self.angles = angles;
+        Ok(self)
+    }
+
+    /// The layers to draw (order and repeats do not matter).
+    pub fn with_layers(mut self, layers: impl IntoIterator<Item = Layer>) -> Self {
+        let mut l: Vec<Layer> = layers.into_iter().collect();
+        l.sort();
+        l.dedup();
+        self.layers = l;
+        self
+    }
+
+    /// The style.
+    pub fn with_style(mut self, style: Style) -> Self {
+        self.style = style;
+        self
+    }
+
+    /// The letters.
+    pub fn with_notation(mut self, notation: Notation) -> Self {
+        self.notation = notation;
+        self
+    }
+
+    /// Draws the cylinder on the left (a page transform; the world frame is
+    /// unchanged).
+    pub fn mirrored(mut self, mirror: bool) -> Self {
+        self.mirror = mirror;
+        self
+    }
+
+    /// The page.
+    pub fn with_page(mut self, page: Page) -> Self {
+        self.page = page;
+        self
+    }
+
+    /// The crank speed ω in rad/s, for scale notes (finite, non-zero).
+    pub fn with_omega(mut self, omega: f64) -> Result<Self> {
+        let omega = finite("omega", omega)?;
+        if omega == 0.0 {
+            return Err(Error::NotPositive {
+                name: "omega",
+                value: omega,
+            });
+        }
+        self.omega = omega;
+        Ok(self)
+    }
+
+    /// The length unit written in notes (`ft`, `mm`).
+    pub fn with_unit(mut self, unit: impl Into<String>) -> Self {
+        self.unit = unit.into();
+        self
+    }
+
+    /// The force unit written in notes (`N`, `lbf`).
+    pub fn with_force_unit(mut self, unit: impl Into<String>) -> Self {
+        self.force_unit = unit.into();
+        self
+    }
+
+    /// The crank torque of the torque layer (finite, in force × length).
+    pub fn with_torque(mut self, torque: f64) -> Result<Self> {
+        self.torque = finite("torque", torque)?;
+        Ok(self)
+    }
+
+    /// The point of the rod whose path the coupler layer draws.
+    pub fn with_coupler(mut self, point: CouplerPoint) -> Self {
+        self.coupler = point;
+        self
+    }
+
+    /// The drawing tolerance of curves in page units, in [1e-6, 10].
+    pub fn with_tolerance(mut self, tolerance: f64) -> Result<Self> {
+        let t = positive("tolerance", tolerance)?;
+        if !(1e-6..=10.0).contains(&t) {
+            return Err(Error::OutOfRange {
+                name: "tolerance",
+                value: t,
+                reason: "give a page tolerance between 1e-6 and 10".into(),
+            });
+        }
+        self.tolerance = t;
+        Ok(self)
+    }
+
+    /// The figure's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The mechanism.
+    pub fn mechanism(&self) -> &SliderCrank {
+        &self.mechanism
+    }
+
+    /// The poses (at least one).
+    pub fn angles(&self) -> &[Angle] {
+        &self.angles
+    }
+
+    /// The layers, in drawing order.
+    pub fn layers(&self) -> &[Layer] {
+        &self.layers
+    }
+
+    /// Whether `layer` is drawn.
+    pub fn has(&self, layer: Layer) -> bool {
+        self.layers.contains(&layer)
+    }
+
+    /// The style.
+    pub fn style(&self) -> Style {
+        self.style
+    }
+
+    /// The letters.
+    pub fn notation(&self) -> Notation {
+        self.notation
+    }
+
+    /// Whether the page is mirrored.
+    pub fn is_mirrored(&self) -> bool {
+        self.mirror
+    }
+
+    /// The page.
+    pub fn page(&self) -> &Page {
+        &self.page
+    }
+
+    /// Crank speed ω in rad/s.
+    pub fn omega(&self) -> f64 {
+        self.omega
+    }
+
+    /// Length unit.
+    pub fn unit(&self) -> &str {
+        &self.unit
+    }
+
+    /// Force unit.
+    pub fn force_unit(&self) -> &str {
+        &self.force_unit
+    }
+
+    /// Crank torque.
+    pub fn torque(&self) -> f64 {
+        self.torque
+    }
+
+    /// The coupler point.
+    pub fn coupler(&self) -> CouplerPoint {
+        self.coupler
+    }
+
+    /// The curve tolerance in page units.
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
+    /// Reads a scene from TOML (see `examples/*.toml`). Errors name the line
+    /// and column of the bad key or value.
+    pub fn from_toml(text: &str) -> Result<Self> {
+        file::parse(text)
+    }
+
+    /// Builds the figure, computing only what the layers draw.
+    pub fn figure(&self) -> Figure {
+        self.build().0
+    }
+
+    /// Builds the figure and says what was computed for it.
+    pub fn build(&self) -> (Figure, Evaluations) {
+        draw::build(self)
+    }
+}
