@@ -106,11 +106,11 @@ impl FigureName {
     /// The page it is drawn on.
     pub fn page(&self) -> Page {
         let (w, h) = match self {
-            FigureName::Fig62Displacement => (760.0, 300.0),
+            FigureName::Fig62Displacement => (760.0, 250.0),
             FigureName::Fig63Velocity | FigureName::Fig65Klein => (760.0, 480.0),
             FigureName::Fig66Kisch => (760.0, 420.0),
-            FigureName::Fig67Example => (760.0, 500.0),
-            FigureName::NgFig1Torque => (640.0, 330.0),
+            FigureName::Fig67Example => (760.0, 520.0),
+            FigureName::NgFig1Torque => (640.0, 270.0),
             FigureName::NgFigA1Velocity => (600.0, 480.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")

@@ -107,7 +107,7 @@ impl PathBuilder {
 
     /// A cubic Bézier through control points `c1`, `c2` to `p`.
     pub fn cubic_to(mut self, c1: Point, c2: Point, p: Point) -> Self {
-        self.bad |= !(finite(&c1) && finite(&c2) && finite(&p)) || !self.started();
+        self.bad |= !(finite(&c1) && finite(&c2) && finite(&p) && self.started());
         self.segments.push(PathSegment::CubicTo(c1, c2, p));
         self
     }

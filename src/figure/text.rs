@@ -98,14 +98,19 @@ impl RichText {
     }
 }
 
-/// A rough advance width in ems for a serif face (errs on the wide side).
+/// A rough advance width in ems, on the wide side of the serif faces asked
+/// for (DejaVu Serif is wider than Times).
 fn char_width(c: char) -> f64 {
     match c {
-        ' ' | '.' | ',' | ':' | ';' | '\'' | '|' | 'i' | 'l' | 'j' | 'I' | '(' | ')' => 0.3,
-        'f' | 't' | 'r' | '/' | '-' | '1' => 0.4,
-        'm' | 'w' | 'M' | 'W' | '=' | '+' | '×' | '·' | '≈' => 0.8,
-        c if c.is_ascii_uppercase() => 0.7,
-        _ => 0.56,
+        ' ' | '·' => 0.33,
+        '.' | ',' | ':' | ';' | '\'' | '|' | 'i' | 'l' | 'j' | 'I' | '(' | ')' => 0.36,
+        'f' | 't' | 'r' | '/' | '-' | '²' | '³' => 0.48,
+        'm' | 'w' => 0.92,
+        'M' | 'W' => 0.98,
+        '=' | '+' | '×' | '≈' | '∞' => 0.84,
+        '0'..='9' => 0.64,
+        c if c.is_uppercase() => 0.76,
+        _ => 0.62,
     }
 }
 

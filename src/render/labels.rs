@@ -42,16 +42,33 @@ impl Bounds {
 }
 
 /// What labels must keep clear of.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub(crate) struct Obstacles {
-    segments: Vec<(Point, Point)>,
+    segments: Vec<(Point, Point, f64)>,
     boxes: Vec<Bounds>,
+    /// Weight of the segments added next (thick links cost more to cover).
+    weight: f64,
+}
+
+impl Default for Obstacles {
+    fn default() -> Self {
+        Self {
+            segments: Vec::new(),
+            boxes: Vec::new(),
+            weight: 1.0,
+        }
+    }
 }
 
 impl Obstacles {
+    /// Sets the weight of the segments added from now on.
+    pub fn set_weight(&mut self, weight: f64) {
+        self.weight = weight;
+    }
+
     pub fn segment(&mut self, a: Point, b: Point) {
         if a.x.is_finite() && a.y.is_finite() && b.x.is_finite() && b.y.is_finite() {
-            self.segments.push((a, b));
+            self.segments.push((a, b, self.weight));
         }
     }
 
@@ -69,7 +86,7 @@ impl Obstacles {
     fn cost(&self, b: &Bounds) -> f64 {
         let frame = Frame::new(b.min, b.max);
         let mut cost = 0.0;
-        for (p, q) in &self.segments {
+        for (p, q, w) in &self.segments {
             // Cheap rejection before clipping.
             if p.x.max(q.x) < b.min.x
                 || p.x.min(q.x) > b.max.x
@@ -79,7 +96,7 @@ impl Obstacles {
                 continue;
             }
             if let Some((s, t)) = frame.clip_segment(*p, *q) {
-                cost += 4.0 + (t - s).norm();
+                cost += w * (4.0 + (t - s).norm());
             }
         }
         for o in &self.boxes {
@@ -92,24 +109,12 @@ impl Obstacles {
     }
 }
 
-/// Directions tried, best first: above-right, right, above, ... (page).
-const DIRECTIONS: [(f64, f64); 16] = [
-    (0.7071, -0.7071),
-    (1.0, 0.0),
-    (0.0, -1.0),
-    (-0.7071, -0.7071),
-    (-1.0, 0.0),
-    (0.7071, 0.7071),
-    (0.0, 1.0),
-    (-0.7071, 0.7071),
-    (0.9239, -0.3827),
-    (0.3827, -0.9239),
-    (-0.3827, -0.9239),
-    (-0.9239, -0.3827),
-    (-0.9239, 0.3827),
-    (-0.3827, 0.9239),
-    (0.3827, 0.9239),
-    (0.9239, 0.3827),
+/// Directions tried, best first, in page degrees (y down): above-right,
+/// right, above, above-left, left, below-right, below, below-left, then
+/// the eight between.
+const DIRECTIONS: [f64; 16] = [
+    -45.0, 0.0, -90.0, -135.0, 180.0, 45.0, 90.0, 135.0, -22.5, -67.5, -112.5, -157.5, 157.5,
+    112.5, 67.5, 22.5,
 ];
 
 /// The centre of a box of half-size `half` placed near `anchor`, clear of
@@ -123,9 +128,10 @@ pub(crate) fn place(
     page: &PageRect,
 ) -> Point {
     let mut best: Option<(f64, Point)> = None;
-    for (ring, extra) in [0.0, 7.0, 16.0, 30.0].into_iter().enumerate() {
-        for (k, (dx, dy)) in DIRECTIONS.iter().enumerate() {
-            let u = Vector::new(*dx, *dy);
+    for (ring, extra) in [0.0, 7.0, 16.0, 30.0, 48.0].into_iter().enumerate() {
+        for (k, deg) in DIRECTIONS.iter().enumerate() {
+            let (dy, dx) = deg.to_radians().sin_cos();
+            let u = Vector::new(dx, dy);
             let reach = gap + extra + dx.abs() * half.x + dy.abs() * half.y;
             let centre = anchor + u * reach;
             let b = Bounds::around(centre, half);

@@ -14,7 +14,7 @@ use std::fmt as stdfmt;
 use std::fmt::Write as _;
 use std::hash::Hash;
 use svg::Document;
-use svg::node::element::{Circle, Element, Group, Path as SvgPath, Rectangle, Text};
+use svg::node::element::{Circle, Element, Group, Path as SvgPath, Rectangle};
 use svg::node::{Node, NodeDefaultHash};
 
 /// Markup written as is inside a `<text>` (runs as `<tspan>`s), without
@@ -192,7 +192,8 @@ fn runs_markup(text: &RichText, size: f64, base_italic: bool) -> String {
     out
 }
 
-/// A `<text>`; `italic` is the base style its runs differ from.
+/// A `<text>`; `italic` is the base style its runs differ from. Written as
+/// a plain element so that no line breaks get between its runs.
 fn text_node(
     id: &str,
     centre: Point,
@@ -201,18 +202,18 @@ fn text_node(
     colour: &str,
     anchor: &str,
     italic: bool,
-) -> Text {
-    let x = centre.x;
-    let mut t = Text::new("")
-        .set("id", id)
-        .set("class", Role::Label.name())
-        .set("x", fmt(x))
-        .set("y", fmt(centre.y + 0.35 * size))
-        .set("font-size", fmt(size))
-        .set("fill", colour)
-        .set("text-anchor", anchor);
-    t = t.set("font-style", if italic { "italic" } else { "normal" });
-    t.add(Raw(runs_markup(text, size, italic)))
+) -> Element {
+    let mut t = Element::new("text");
+    t.assign("id", id);
+    t.assign("class", Role::Label.name());
+    t.assign("x", fmt(centre.x));
+    t.assign("y", fmt(centre.y + 0.35 * size));
+    t.assign("font-size", fmt(size));
+    t.assign("fill", colour);
+    t.assign("text-anchor", anchor);
+    t.assign("font-style", if italic { "italic" } else { "normal" });
+    t.append(Raw(runs_markup(text, size, italic)));
+    t
 }
 
 /// A label waiting to be placed once every line is known.
@@ -226,6 +227,7 @@ struct Pending {
 
 struct PanelWriter<'a> {
     t: &'a PageFromWorld,
+    page_width: f64,
     style: crate::render::Style,
     obstacles: Obstacles,
     pending: Vec<Pending>,
@@ -250,6 +252,11 @@ impl PanelWriter<'_> {
 
     fn item(&mut self, item: &Item) -> Option<Box<dyn Node>> {
         let pen = self.style.pen(item.role);
+        self.obstacles.set_weight(match item.role {
+            Role::Link | Role::Force => 3.0,
+            Role::Construction => 1.5,
+            _ => 1.0,
+        });
         let id = item.id.as_str();
         let class = item.role.name();
         let node: Box<dyn Node> = match &item.shape {
@@ -399,7 +406,10 @@ impl PanelWriter<'_> {
                     x += 5.0;
                 }
                 self.obstacles.polyline(&[tri[0], tri[1], tri[2], tri[0]]);
-                self.obstacles.segment(foot[0], foot[1]);
+                self.obstacles.boxed(Bounds {
+                    min: c + Vector::new(-base - 5.0, 0.5 * h),
+                    max: c + Vector::new(base, h + 6.0),
+                });
                 Box::new(
                     Group::new()
                         .set("id", id)
@@ -573,18 +583,27 @@ impl PanelWriter<'_> {
             Shape::Note { corner, lines } => {
                 let mut g = Group::new().set("id", id).set("class", class);
                 let colour = self.style.pen(Role::Label).colour;
+                // One size for all lines, small enough for the longest to
+                // fit between the corner and the page's right edge.
+                let room = (self.page_width - corner.x - 8.0).max(10.0);
+                let widest = lines.iter().map(|l| l.width_em()).fold(0.0, f64::max);
+                let size = if widest * NOTE_SIZE > room {
+                    room / widest
+                } else {
+                    NOTE_SIZE
+                };
                 for (i, line) in lines.iter().enumerate() {
-                    let y = corner.y + NOTE_SIZE * 0.8 + NOTE_LINE * i as f64;
-                    let half = text_half(line, NOTE_SIZE);
+                    let y = corner.y + size * 0.8 + NOTE_LINE * i as f64;
+                    let half = text_half(line, size);
                     self.obstacles.boxed(Bounds::around(
-                        Point::new(corner.x + half.x, y - 0.35 * NOTE_SIZE),
+                        Point::new(corner.x + half.x, y - 0.35 * size),
                         half,
                     ));
                     g = g.add(text_node(
                         &format!("{id}-{}", i + 1),
-                        Point::new(corner.x, y - 0.35 * NOTE_SIZE),
+                        Point::new(corner.x, y - 0.35 * size),
                         line,
-                        NOTE_SIZE,
+                        size,
                         colour,
                         "start",
                         false,
@@ -670,6 +689,7 @@ fn panel_group(
         .set("data-page-from-world", coefficients);
     let mut w = PanelWriter {
         t,
+        page_width: page.x + page.width,
         style,
         obstacles: Obstacles::default(),
         pending: Vec::new(),
@@ -765,7 +785,15 @@ pub fn to_svg(figure: &Figure) -> String {
                 .set("fill", style.paper()),
         );
     for panel in figure.panels() {
-        doc = doc.add(panel_group(panel, style, &page));
+        // Labels stay in their panel, or just outside it (into the
+        // margin) for points near its edge, and always on the page.
+        let r = panel.rect();
+        let x0 = (r.x - 8.0).max(page.x);
+        let y0 = (r.y - 8.0).max(page.y);
+        let x1 = (r.x + r.width + 8.0).min(page.x + page.width);
+        let y1 = (r.y + r.height + 8.0).min(page.y + page.height);
+        let room = crate::figure::PageRect::new(x0, y0, x1 - x0, y1 - y0);
+        doc = doc.add(panel_group(panel, style, &room));
     }
     let mut s = doc.to_string();
     s.push('\n');

@@ -71,6 +71,20 @@ pub(crate) fn klein(ctx: &Ctx, canvas: &mut Canvas) {
     }
 }
 
+/// The unit normal to AB on the side of Kisch's semicircle: away from C,
+/// upwards when C is on AB (as [`Kisch`] places H).
+pub(crate) fn kisch_side(pose: &crate::Pose) -> Vector {
+    let (a, b) = (pose.a(), pose.b());
+    let ab = b - a;
+    let n = Vector::new(-ab.y, ab.x) / ab.norm();
+    let towards_c = n.dot(&(pose.c() - b));
+    if towards_c > 0.0 || (towards_c == 0.0 && n.y < 0.0) {
+        -n
+    } else {
+        n
+    }
+}
+
 /// The arc about `centre` of radius `radius` from direction `from` to
 /// direction `to` the short way, with `over` radians more at each end.
 fn arc_between(centre: Point, radius: f64, from: Vector, to: Vector, over: f64) -> Shape {
@@ -103,13 +117,7 @@ pub(crate) fn kisch(ctx: &Ctx, canvas: &mut Canvas) {
     // The half of the circle on AB away from C, where H is.
     let to_a = a - circle.centre;
     let start = to_a.y.atan2(to_a.x);
-    let side = match k.h() {
-        Some(h) if (h - k.points().f()).norm() > 0.0 => h - k.points().f(),
-        _ => {
-            let n = Vector::new(-(b - a).y, (b - a).x);
-            if n.dot(&(pose.c() - b)) > 0.0 { -n } else { n }
-        }
-    };
+    let side = kisch_side(pose);
     let mid = Vector::new(-to_a.y, to_a.x); // start turned +90°
     let sweep = if mid.dot(&side) >= 0.0 {
         std::f64::consts::PI

@@ -85,10 +85,7 @@ pub(crate) fn frame(ctx: &Ctx) -> Frame {
         // The half of the circle on AB away from C (where H is).
         let c = Kisch::semicircle(pose);
         let ab = pose.b() - pose.a();
-        let mut n = crate::geom::perp(&ab) / ab.norm();
-        if n.dot(&(pose.c() - pose.b())) > 0.0 {
-            n = -n;
-        }
+        let n = super::acceleration::kisch_side(pose);
         let u = ab / ab.norm();
         for k in 0..=24 {
             let t = std::f64::consts::PI * k as f64 / 24.0;

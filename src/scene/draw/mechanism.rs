@@ -30,7 +30,11 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
             radius: r,
         },
     );
-    canvas.push("bearing-C", Role::Frame, Shape::Bearing { centre: c });
+    canvas.push(
+        format!("bearing-{}", ctx.letter(Named::CrankCentre)),
+        Role::Frame,
+        Shape::Bearing { centre: c },
+    );
 
     // Guides with their hatching on the outside.
     let h = s.block_half_height;

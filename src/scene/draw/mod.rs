@@ -97,7 +97,7 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
     let band = if notes.is_empty() {
         0.0
     } else {
-        NOTE_LINE * notes.len() as f64 + 8.0
+        NOTE_LINE * notes.len() as f64 + 14.0
     };
     let mg = page.margin();
     let panel = PageRect::new(

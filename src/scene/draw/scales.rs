@@ -58,9 +58,12 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
             format!(", from *{g}* towards *{c}*")
         };
         out.push(RichText::parse(&format!(
-            "Acceleration scale: 1 {u} = ({})² {u}/s² = {} {u}/s²; *{c}{g}* = {} {u} represents {} {u}/s²{dir}.",
+            "Acceleration scale: 1 {u} = ({})² {u}/s² = {} {u}/s²;",
             sig(w),
             sig(w * w),
+        )));
+        out.push(RichText::parse(&format!(
+            "*{c}{g}* = {} {u} represents the piston acceleration {} {u}/s²{dir}.",
             sig(cg.abs()),
             sig(w * w * cg.abs())
         )));

@@ -1,0 +1,473 @@
+//! The seeds' figures: snapshots, rendering, where labelled points land,
+//! reproducibility, degenerate poses, lazy evaluation.
+
+use resvg::{tiny_skia, usvg};
+use serde_json::Value;
+use slider_crank::figure::{PathSegment, Shape};
+use slider_crank::render::{to_png, to_svg};
+use slider_crank::{Angle, FigureName, Layer, Notation, Scene, SliderCrank, Style};
+
+/// The text of attribute `name` of the element with `id`.
+fn attr(svg: &str, id: &str, name: &str) -> Option<String> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let start = svg[..at].rfind('<')?;
+    let end = at + svg[at..].find('>')?;
+    let tag = &svg[start..end];
+    let key = format!(" {name}=\"");
+    let v = tag.find(&key)? + key.len();
+    Some(tag[v..v + tag[v..].find('"')?].to_string())
+}
+
+fn num(svg: &str, id: &str, name: &str) -> f64 {
+    attr(svg, id, name)
+        .unwrap_or_else(|| panic!("no {name} on #{id}"))
+        .parse()
+        .unwrap()
+}
+
+fn metadata(svg: &str) -> Value {
+    let a = svg.find("<metadata>").unwrap() + "<metadata>".len();
+    let b = svg.find("</metadata>").unwrap();
+    let text = svg[a..b]
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    serde_json::from_str(&text).unwrap()
+}
+
+fn page_from_world(meta: &Value) -> [f64; 6] {
+    let v: Vec<f64> = meta["page_from_world"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect();
+    [v[0], v[1], v[2], v[3], v[4], v[5]]
+}
+
+fn apply(t: &[f64; 6], p: (f64, f64)) -> (f64, f64) {
+    (
+        t[0] * p.0 + t[2] * p.1 + t[4],
+        t[1] * p.0 + t[3] * p.1 + t[5],
+    )
+}
+
+/// The constructed points computed here from the formulas of DESIGN.md
+/// §1–2, independently of the library: C, B, A, D (finite or not), E,
+/// and Kisch's F, G, H.
+struct Expected {
+    c: (f64, f64),
+    b: (f64, f64),
+    a: (f64, f64),
+    d: Option<(f64, f64)>,
+    e: (f64, f64),
+    f: (f64, f64),
+    g: (f64, f64),
+    h: (f64, f64),
+}
+
+fn expected(r: f64, l: f64, e: f64, deg: f64) -> Expected {
+    let t = deg.to_radians();
+    let (s, c) = t.sin_cos();
+    let b = (r * c, r * s);
+    let a = (r * c + (l * l - (r * s - e).powi(2)).sqrt(), e);
+    let d = (c.abs() > 1e-9).then(|| (a.0, a.0 * s / c));
+    // E: the line AB at x = 0.
+    let ey = a.1 + (b.1 - a.1) * (0.0 - a.0) / (b.0 - a.0);
+    let ee = (0.0, ey);
+    // Kisch: BF = BE² / BA along B → A; G on y = 0 with FG ⊥ AB; H at
+    // height √(BF·FA) above F, away from C.
+    let ba = ((a.0 - b.0), (a.1 - b.1));
+    let lab = (ba.0 * ba.0 + ba.1 * ba.1).sqrt();
+    let be2 = (ee.0 - b.0).powi(2) + (ee.1 - b.1).powi(2);
+    let bf = be2 / lab;
+    let u = (ba.0 / lab, ba.1 / lab);
+    let f = (b.0 + u.0 * bf, b.1 + u.1 * bf);
+    let mut n = (-u.1, u.0);
+    let g_t = -f.1 / n.1;
+    let g = (f.0 + n.0 * g_t, 0.0);
+    if n.0 * (0.0 - b.0) + n.1 * (0.0 - b.1) > 0.0 {
+        n = (-n.0, -n.1);
+    }
+    let hf = (bf * (lab - bf)).sqrt();
+    let h = (f.0 + n.0 * hf, f.1 + n.1 * hf);
+    Expected {
+        c: (0.0, 0.0),
+        b,
+        a,
+        d,
+        e: ee,
+        f,
+        g,
+        h,
+    }
+}
+
+fn letters(name: FigureName) -> [&'static str; 5] {
+    if name.is_ng() {
+        ["O", "C", "P", "I", "M"]
+    } else {
+        ["C", "B", "A", "D", "E"]
+    }
+}
+
+fn snapshot_settings() -> insta::Settings {
+    let mut s = insta::Settings::clone_current();
+    s.set_snapshot_path("../snapshots");
+    s.set_prepend_module_to_snapshot(false);
+    s
+}
+
+#[test]
+fn seed_figures_match_their_reviewed_snapshots() {
+    for name in FigureName::ALL {
+        let svg = to_svg(&name.scene().figure());
+        snapshot_settings().bind(|| insta::assert_snapshot!(name.name(), svg));
+    }
+}
+
+fn ink_near(pixmap: &tiny_skia::Pixmap, p: (f64, f64), radius: i64) -> bool {
+    for dy in -radius..=radius {
+        for dx in -radius..=radius {
+            let (x, y) = (p.0.round() as i64 + dx, p.1.round() as i64 + dy);
+            if x < 0 || y < 0 {
+                continue;
+            }
+            if let Some(px) = pixmap.pixel(x as u32, y as u32)
+                && (px.red() as u32 + px.green() as u32 + px.blue() as u32) < 200
+            {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+#[test]
+fn seed_figures_render_with_points_where_the_world_puts_them() {
+    for name in FigureName::ALL {
+        let scene = name.scene();
+        let m = scene.mechanism();
+        let svg = to_svg(&scene.figure());
+        let png = to_png(&svg, 1.0).unwrap();
+        let pixmap = tiny_skia::Pixmap::decode_png(&png).unwrap();
+        let dark = pixmap
+            .pixels()
+            .iter()
+            .filter(|p| (p.red() as u32 + p.green() as u32 + p.blue() as u32) < 300)
+            .count();
+        let total = (pixmap.width() * pixmap.height()) as usize;
+        assert!(
+            dark * 500 > total && dark > 1000,
+            "{}: only {dark} of {total} pixels inked",
+            name.name()
+        );
+
+        let meta = metadata(&svg);
+        assert_eq!(meta["figure"], name.name());
+        let t = page_from_world(&meta);
+        let x = expected(m.crank(), m.rod(), m.offset(), name.angle_degrees());
+        let [lc, lb, la, ld, le] = letters(name);
+        let mut points = vec![(lc, Some(x.c)), (lb, Some(x.b)), (la, Some(x.a))];
+        let layers = name.layers();
+        let wants = |l: &[Layer]| l.iter().any(|x| layers.contains(x));
+        if wants(&[Layer::Velocity, Layer::Klein, Layer::Kisch, Layer::Torque]) {
+            points.push((le, Some(x.e)));
+        }
+        if wants(&[Layer::Velocity, Layer::Klein]) {
+            points.push((ld, x.d));
+        }
+        if wants(&[Layer::Kisch, Layer::Klein]) {
+            points.push(("F", Some(x.f)));
+            points.push(("G", Some(x.g)));
+        }
+        if wants(&[Layer::Kisch]) {
+            points.push(("H", Some(x.h)));
+        }
+        for (letter, world) in points {
+            let world = world.unwrap();
+            let page = apply(&t, world);
+            let id = format!("point-{letter}");
+            let on_page = page.0 >= 0.0
+                && page.1 >= 0.0
+                && page.0 <= num(&svg, "paper", "width")
+                && page.1 <= num(&svg, "paper", "height");
+            if !on_page {
+                // Off the page: an arrow at the edge instead, with its letter.
+                assert!(
+                    attr(&svg, &format!("offpage-{letter}"), "class").is_some(),
+                    "{} {letter}",
+                    name.name()
+                );
+                assert!(attr(&svg, &format!("label-{letter}"), "x").is_some());
+                continue;
+            }
+            let (cx, cy) = (num(&svg, &id, "cx"), num(&svg, &id, "cy"));
+            assert!(
+                (cx - page.0).abs() <= 0.011 && (cy - page.1).abs() <= 0.011,
+                "{} {letter}: drawn at ({cx}, {cy}), world gives {page:?}",
+                name.name()
+            );
+            assert!(
+                ink_near(&pixmap, page, 5),
+                "{} {letter}: no ink at {page:?}",
+                name.name()
+            );
+            let (lx, ly) = (
+                num(&svg, &format!("label-{letter}"), "x"),
+                num(&svg, &format!("label-{letter}"), "y"),
+            );
+            let dist = ((lx - page.0).powi(2) + (ly - page.1).powi(2)).sqrt();
+            assert!(dist < 48.0, "{} {letter}: label {dist} away", name.name());
+        }
+    }
+}
+
+#[test]
+fn two_builds_give_identical_svg() {
+    for name in FigureName::ALL {
+        let a = to_svg(&name.scene().figure());
+        let b = to_svg(&name.scene().figure());
+        assert_eq!(a, b, "{}", name.name());
+    }
+}
+
+/// Everything inside the viewBox, nothing NaN or infinite, measured by
+/// usvg on the parsed file (strokes included).
+fn assert_clean(svg: &str, what: &str) {
+    // Rust writes a non-finite f64 as `inf` or `NaN`, serde_json as `null`.
+    for token in svg.split(|c: char| !c.is_ascii_alphanumeric()) {
+        assert!(
+            !["inf", "NaN", "null"].contains(&token),
+            "{what}: {token} in the SVG"
+        );
+    }
+    static FONTS: std::sync::OnceLock<std::sync::Arc<usvg::fontdb::Database>> =
+        std::sync::OnceLock::new();
+    let fonts = FONTS.get_or_init(|| {
+        let mut db = usvg::fontdb::Database::new();
+        db.load_system_fonts();
+        std::sync::Arc::new(db)
+    });
+    let options = usvg::Options {
+        fontdb: fonts.clone(),
+        ..usvg::Options::default()
+    };
+    let tree = usvg::Tree::from_str(svg, &options).unwrap();
+    let size = tree.size();
+    let b = tree.root().abs_stroke_bounding_box();
+    assert!(
+        b.left() >= -0.01
+            && b.top() >= -0.01
+            && b.right() <= size.width() + 0.01
+            && b.bottom() <= size.height() + 0.01,
+        "{what}: drawing {b:?} leaves the page {size:?}"
+    );
+}
+
+#[test]
+fn degenerate_poses_draw_cleanly_inside_the_page() {
+    let mechanisms = [
+        SliderCrank::in_line(0.5, 3.0).unwrap(),
+        SliderCrank::new(0.5, 3.0, 0.4).unwrap(),
+        SliderCrank::new(1.0, 1.6, -0.5).unwrap(),
+        SliderCrank::in_line(1.0, 1.05).unwrap(),
+        SliderCrank::in_line(1e-6, 3e-6).unwrap(),
+    ];
+    for m in mechanisms {
+        for deg in [0.0, 90.0, 180.0, 270.0, 89.9, 45.0] {
+            for style in [Style::Textbook, Style::Handout] {
+                for mirror in [false, true] {
+                    let scene = Scene::new(m, Angle::from_degrees(deg).unwrap())
+                        .with_layers(Layer::ALL)
+                        .with_style(style)
+                        .mirrored(mirror);
+                    let svg = to_svg(&scene.figure());
+                    assert_clean(&svg, &format!("{m:?} at {deg}° {style:?} mirror {mirror}"));
+                }
+            }
+        }
+    }
+    for name in FigureName::ALL {
+        for deg in [0.0, 90.0, 180.0, 270.0] {
+            let scene = name
+                .scene()
+                .with_angles(vec![Angle::from_degrees(deg).unwrap()])
+                .unwrap();
+            assert_clean(
+                &to_svg(&scene.figure()),
+                &format!("{} at {deg}°", name.name()),
+            );
+        }
+    }
+}
+
+#[test]
+fn d_off_the_page_and_at_infinity_are_shown_by_arrows() {
+    let m = SliderCrank::in_line(0.5, 3.0).unwrap();
+    let at = |deg: f64| {
+        let scene = Scene::new(m, Angle::from_degrees(deg).unwrap())
+            .with_layers([Layer::Mechanism, Layer::Velocity]);
+        to_svg(&scene.figure())
+    };
+    let near_90 = at(88.0);
+    assert!(attr(&near_90, "offpage-D", "class").is_some());
+    assert!(attr(&near_90, "point-D", "cx").is_none());
+    let meta = metadata(&near_90);
+    let d = meta["points"]["D"].as_array().unwrap();
+    let x = expected(0.5, 3.0, 0.0, 88.0).d.unwrap();
+    assert!((d[1].as_f64().unwrap() - x.1).abs() < 1e-6 * x.1);
+    let at_90 = at(90.0);
+    assert!(attr(&at_90, "infinity-D", "class").is_some());
+    assert!(metadata(&at_90)["points"]["D"]["at_infinity"].is_array());
+    assert!(at_90.contains("at ∞"));
+}
+
+#[test]
+fn a_bare_mechanism_computes_no_construction_and_kisch_no_d() {
+    let m = SliderCrank::in_line(0.5, 3.0).unwrap();
+    let scene = |layers: &[Layer]| {
+        Scene::new(m, Angle::from_degrees(45.0).unwrap()).with_layers(layers.to_vec())
+    };
+    let (_, bare) = scene(&[Layer::Mechanism, Layer::Dimensions]).build();
+    assert_eq!(bare.total(), 0);
+    let (_, kisch) = scene(&[Layer::Mechanism, Layer::Kisch, Layer::Scales]).build();
+    assert_eq!(kisch.instant_centre, 0);
+    assert_eq!((kisch.kisch, kisch.velocity_line), (1, 1));
+    assert_eq!(kisch.klein, 0);
+    let (_, all) = scene(&Layer::ALL).build();
+    // Each construction once, however many layers ask for it.
+    assert_eq!(
+        (all.instant_centre, all.velocity_line, all.kisch, all.klein),
+        (1, 1, 1, 1)
+    );
+    let (_, torque) = scene(&[Layer::Torque]).build();
+    assert_eq!((torque.torque_line, torque.instant_centre), (1, 0));
+}
+
+#[test]
+fn mirroring_is_a_page_transform_and_text_is_not_mirrored() {
+    let name = FigureName::Fig63Velocity;
+    let mirrored = to_svg(&name.scene().figure());
+    let plain = to_svg(&name.scene().mirrored(false).figure());
+    let t = page_from_world(&metadata(&mirrored));
+    assert!(t[0] < 0.0 && t[3] < 0.0, "{t:?}");
+    assert!(page_from_world(&metadata(&plain))[0] > 0.0);
+    // The cylinder (A) is left of the crank centre C only when mirrored.
+    assert!(num(&mirrored, "point-A", "cx") < num(&mirrored, "point-C", "cx"));
+    assert!(num(&plain, "point-A", "cx") > num(&plain, "point-C", "cx"));
+    // World metadata is the same; no element carries a transform.
+    assert_eq!(metadata(&mirrored)["points"], metadata(&plain)["points"]);
+    assert!(!mirrored.contains("transform="));
+    assert!(mirrored.contains("data-page-from-world=\""));
+}
+
+#[test]
+fn ng_figures_use_ngs_letters() {
+    let svg = to_svg(&FigureName::NgFigA1Velocity.scene().figure());
+    for id in [
+        "point-O", "point-C", "point-P", "point-I", "point-M", "line-OM",
+    ] {
+        assert!(attr(&svg, id, "class").is_some(), "{id}");
+    }
+    assert!(attr(&svg, "point-E", "class").is_none());
+    let meta = metadata(&svg);
+    assert_eq!(meta["notation"], "ng");
+    assert_eq!(meta["mechanism"]["crank"], 25.0);
+    assert_eq!(meta["mechanism"]["rod"], 72.0);
+    let _ = Notation::Ng;
+}
+
+#[test]
+fn handout_style_keeps_the_geometry_and_adds_colour() {
+    let name = FigureName::Fig67Example;
+    let book = to_svg(&name.scene().figure());
+    let handout = to_svg(&name.scene().with_style(Style::Handout).figure());
+    for id in ["point-E", "point-G", "point-H"] {
+        assert_eq!(attr(&book, id, "cx"), attr(&handout, id, "cx"));
+    }
+    assert_ne!(
+        attr(&book, "link-rod", "stroke"),
+        attr(&handout, "link-rod", "stroke")
+    );
+    assert!(handout.contains("fill-opacity"));
+    assert_eq!(metadata(&handout)["style"], "handout");
+}
+
+#[test]
+fn scale_notes_state_the_velocity_and_acceleration_scales() {
+    let svg = to_svg(&FigureName::Fig67Example.scene().figure());
+    // V_c = rω at 250 rpm with exact π: 0.5 × 250 × 2π / 60 = 13.09 ft/s;
+    // the scale 1 ft = ω = 26.18 ft/s, the acceleration scale ω² = 685.4.
+    let omega = 250.0 * 2.0 * std::f64::consts::PI / 60.0;
+    assert!(svg.contains(&format!("{:.2}", 0.5 * omega)), "V_c");
+    assert!(svg.contains(&format!("{:.2}", omega)), "1 ft = ω");
+    assert!(svg.contains(&format!("{:.1}", omega * omega)), "ω²");
+    // CG from the independent construction, and the acceleration it gives.
+    let x = expected(0.5, 3.0, 0.0, 45.0);
+    let cg = x.g.0.abs();
+    assert!(svg.contains(&format!("{:.4}", cg)), "CG = {cg}");
+    assert!(
+        svg.contains(&format!("{:.1}", omega * omega * cg)),
+        "a = {}",
+        omega * omega * cg
+    );
+}
+
+#[test]
+fn centrode_and_coupler_paths_stay_within_tolerance_of_the_curve() {
+    let m = SliderCrank::in_line(1.0, 2.5).unwrap();
+    let scene = Scene::new(m, Angle::from_degrees(30.0).unwrap()).with_layers([
+        Layer::Mechanism,
+        Layer::Coupler,
+        Layer::Centrodes,
+    ]);
+    let figure = scene.figure();
+    let panel = &figure.panels()[0];
+    let scale = panel.transform().scale();
+    let tol = figure.tolerance();
+    // The coupler point at t = 0.5 from A to B, sampled densely here.
+    let exact: Vec<(f64, f64)> = (0..=20000)
+        .map(|k| {
+            let t = (k as f64 / 20000.0) * std::f64::consts::TAU;
+            let (s, c) = t.sin_cos();
+            let b = (c, s);
+            let a = (c + (2.5f64 * 2.5 - s * s).sqrt(), 0.0);
+            (0.5 * (a.0 + b.0), 0.5 * (a.1 + b.1))
+        })
+        .collect();
+    let item = panel.item("curve-coupler").expect("coupler drawn");
+    let Shape::Path(path) = &item.shape else {
+        panic!("a path")
+    };
+    let mut last = None;
+    let mut checked = 0;
+    for seg in path.segments() {
+        match *seg {
+            PathSegment::MoveTo(p) => last = Some(p),
+            PathSegment::CubicTo(c1, c2, p) => {
+                let p0 = last.unwrap();
+                for k in 1..8 {
+                    let t = k as f64 / 8.0;
+                    let s = 1.0 - t;
+                    let q = p0.coords * (s * s * s)
+                        + c1.coords * (3.0 * s * s * t)
+                        + c2.coords * (3.0 * s * t * t)
+                        + p.coords * (t * t * t);
+                    let d = exact
+                        .iter()
+                        .map(|e| ((e.0 - q.x).powi(2) + (e.1 - q.y).powi(2)).sqrt())
+                        .fold(f64::INFINITY, f64::min);
+                    // The dense sampling itself is within 1e-3 world units
+                    // of the curve (chord error), far below the tolerance.
+                    assert!(d * scale <= tol + 1e-3 * scale, "{} px off", d * scale);
+                    checked += 1;
+                }
+                last = Some(p);
+            }
+            _ => {}
+        }
+    }
+    assert!(checked > 20);
+    assert!(panel.item("curve-centrode-fixed-1").is_some());
+}
