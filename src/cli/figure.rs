@@ -6,21 +6,13 @@ use slider_crank::render::{to_png, to_svg, write_atomic};
 use slider_crank::{Angle, Error, Figure, FigureName, Layer, Result, SliderCrank, Style};
 use std::path::PathBuf;
 
-fn figure_name(s: &str) -> std::result::Result<FigureName, String> {
-    FigureName::from_name(s).map_err(|e| e.to_string())
-}
-
-fn style_name(s: &str) -> std::result::Result<Style, String> {
-    Style::from_name(s).map_err(|e| e.to_string())
-}
-
 /// Draw a figure of the seeds.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
     /// fig-62-displacement, fig-63-velocity, fig-65-klein, fig-66-kisch,
     /// fig-67-example, ng-fig-1-torque or ng-fig-a1-velocity
-    #[arg(value_parser = figure_name, value_name = "NAME")]
-    pub name: FigureName,
+    #[arg(value_name = "NAME")]
+    pub name: String,
     /// Crank radius r [default: the figure's, 0.5 ft or Ng's 25 mm]
     #[arg(long, value_name = "R")]
     pub crank: Option<f64>,
@@ -41,8 +33,8 @@ pub struct FigureArgs {
     #[arg(long, value_name = "LIST")]
     pub layers: Option<String>,
     /// textbook (black ink) or handout (colour) [default: textbook]
-    #[arg(long, value_parser = style_name, value_name = "STYLE")]
-    pub style: Option<Style>,
+    #[arg(long, value_name = "STYLE")]
+    pub style: Option<String>,
     /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
     /// printing SVG
     #[arg(long, value_name = "FILE")]
@@ -71,7 +63,7 @@ pub fn emit(figure: &Figure, out: Option<&PathBuf>) -> Result<String> {
 
 /// Runs the subcommand: the SVG text, or nothing when written to a file.
 pub fn run(args: &FigureArgs) -> Result<String> {
-    let mut scene = args.name.scene();
+    let mut scene = FigureName::from_name(&args.name)?.scene();
     if args.crank.is_some() || args.rod.is_some() || args.offset.is_some() {
         let m = scene.mechanism();
         let mechanism = SliderCrank::new(
@@ -104,8 +96,8 @@ pub fn run(args: &FigureArgs) -> Result<String> {
         }
         scene = scene.with_layers(layers);
     }
-    if let Some(s) = args.style {
-        scene = scene.with_style(s);
+    if let Some(s) = &args.style {
+        scene = scene.with_style(Style::from_name(s)?);
     }
     emit(&scene.figure(), args.out.as_ref())
 }

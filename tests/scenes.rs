@@ -1,0 +1,82 @@
+//! Scene files: the examples build, and every error names its line and
+//! column.
+
+use slider_crank::render::to_svg;
+use slider_crank::{Layer, Scene, Style};
+
+fn error(text: &str) -> String {
+    Scene::from_toml(text).unwrap_err().to_string()
+}
+
+#[test]
+fn every_example_scene_builds_a_clean_figure() {
+    let mut n = 0;
+    for entry in std::fs::read_dir("examples").unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue;
+        }
+        let text = std::fs::read_to_string(&path).unwrap();
+        let scene = Scene::from_toml(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let svg = to_svg(&scene.figure());
+        assert!(svg.starts_with("<svg"), "{}", path.display());
+        assert!(!svg.contains("NaN"), "{}", path.display());
+        n += 1;
+    }
+    assert!(n >= 4, "only {n} examples");
+}
+
+#[test]
+fn a_misspelt_key_is_named_with_its_line_and_column() {
+    let e = error("name = \"x\"\nlayers = [\"mechanism\"]\nanlge = 45\n");
+    assert!(e.starts_with("line 3, column 1:"), "{e}");
+    assert!(e.contains("anlge"), "{e}");
+    // Inside a table, indented.
+    let e = error("[mechanism]\ncrank = 0.5\n  rdo = 3.0\n");
+    assert!(e.starts_with("line 3, column 3:"), "{e}");
+    assert!(e.contains("rdo"), "{e}");
+}
+
+#[test]
+fn a_bad_value_is_named_with_its_line_and_column() {
+    let e = error("angle = 30\nlayers = [\"mechanism\", \"kisc\"]\n");
+    assert!(e.starts_with("line 2, column 24:"), "{e}");
+    assert!(e.contains("kisc") && e.contains("kisch"), "{e}");
+    let e = error("style = \"book\"\n");
+    assert!(e.starts_with("line 1, column 9:"), "{e}");
+    let e = error("[mechanism]\ncrank = -1\nrod = 3\n");
+    assert!(e.starts_with("line 2, column 9:"), "{e}");
+    assert!(e.contains("crank must be greater than zero"), "{e}");
+    let e = error("[mechanism]\ncrank = 1\nrod = 1.5\noffset = 0.6\n");
+    assert!(e.starts_with("line 3, column 7:"), "{e}");
+    assert!(e.contains("too short"), "{e}");
+    let e = error("angle = 10\nangles = [1, 2]\n");
+    assert!(e.starts_with("line 2, column 10:"), "{e}");
+    let e = error("[page]\nwidth = 10\n");
+    assert!(e.starts_with("line 2, column 9:"), "{e}");
+    let e = error("coupler = 1.5\n");
+    assert!(e.starts_with("line 1, column 11:"), "{e}");
+    let e = error("figure = \"fig-64\"\n");
+    assert!(
+        e.starts_with("line 1, column 10:") && e.contains("fig-67-example"),
+        "{e}"
+    );
+    let e = error("angle = \"forty\"\n");
+    assert!(e.starts_with("line 1, column 9:"), "{e}");
+}
+
+#[test]
+fn broken_toml_is_located_too() {
+    let e = error("angle = 45\nlayers = [\"mechanism\"\n");
+    assert!(e.starts_with("line "), "{e}");
+}
+
+#[test]
+fn a_named_figure_can_be_restyled_in_a_scene_file() {
+    let s = Scene::from_toml("figure = \"fig-67-example\"\nstyle = \"handout\"\n").unwrap();
+    assert_eq!(s.name(), "fig-67-example");
+    assert_eq!(s.style(), Style::Handout);
+    assert!(s.has(Layer::Kisch) && s.has(Layer::Scales));
+    assert_eq!(s.angles()[0].degrees(), 45.0);
+    assert!(s.is_mirrored());
+}
