@@ -31,6 +31,23 @@
 //! assert!((k.velocity + 10.3466).abs() < 1e-4);         // ft/s, towards C
 //! # Ok::<(), slider_crank::Error>(())
 //! ```
+//!
+//! ## Figures
+//!
+//! A [`Scene`] says what one figure shows; its layers ask for only the
+//! constructions they draw. It builds an immutable [`Figure`] in world
+//! coordinates, which [`render::to_svg`] writes with one world-to-page map
+//! per panel (and [`render::to_png`] rasterises). The seeds' own figures
+//! are named by [`FigureName`].
+//!
+//! ```
+//! use slider_crank::{FigureName, Layer, render::to_svg};
+//! let scene = FigureName::Fig66Kisch.scene();          // §35 engine at 60°
+//! let (figure, computed) = scene.build();
+//! assert_eq!(computed.instant_centre, 0);              // Kisch needs no D
+//! let svg = to_svg(&figure);
+//! assert!(svg.contains(r#"id="point-G""#) && scene.has(Layer::Kisch));
+//! ```
 #![deny(missing_docs)]
 
 pub mod analytic;

@@ -273,6 +273,8 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
         SliderCrank::new(1.0, 1.6, -0.5).unwrap(),
         SliderCrank::in_line(1.0, 1.05).unwrap(),
         SliderCrank::in_line(1e-6, 3e-6).unwrap(),
+        SliderCrank::in_line(1e9, 4e9).unwrap(),
+        SliderCrank::in_line(1.0, 1e6).unwrap(),
     ];
     for m in mechanisms {
         for deg in [0.0, 90.0, 180.0, 270.0, 89.9, 45.0] {

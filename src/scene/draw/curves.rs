@@ -16,6 +16,8 @@ use std::f64::consts::PI;
 const SAMPLES: usize = 240;
 /// Deepest subdivision of one fitted piece.
 const MAX_DEPTH: u32 = 24;
+/// Most pieces one curve may have, whatever the tolerance asked.
+const MAX_PIECES: usize = 20_000;
 
 /// A curve p(θ) with its θ-derivative; `None` at a pole.
 type Curve<'a> = dyn Fn(f64) -> Option<(Point, Vector)> + 'a;
@@ -61,7 +63,11 @@ fn fit(
         }
     }
     match mid {
-        Some(m) if (worst > tol || !worst.is_finite()) && depth < MAX_DEPTH => {
+        Some(m)
+            if (worst > tol || !worst.is_finite())
+                && depth < MAX_DEPTH
+                && out.len() < MAX_PIECES =>
+        {
             let tm = t0 + 0.5 * h;
             fit(f, t0, a, tm, m, scale, tol, depth + 1, out);
             fit(f, tm, m, t1, b, scale, tol, depth + 1, out);
