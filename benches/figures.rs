@@ -29,8 +29,7 @@ fn figures(c: &mut Criterion) {
     group.finish();
     let svg = to_svg(&FigureName::Fig67Example.scene().figure());
     let mut png = c.benchmark_group("png");
-    png.sample_size(10)
-        .measurement_time(Duration::from_secs(3));
+    png.sample_size(10).measurement_time(Duration::from_secs(3));
     png.bench_function("fig-67-example at 2x", |b| {
         b.iter(|| to_png(black_box(&svg), 2.0).unwrap())
     });
