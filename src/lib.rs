@@ -36,6 +36,7 @@
 pub mod analytic;
 mod angle;
 pub mod construct;
+pub mod diagram;
 mod error;
 pub mod geom;
 mod mechanism;
