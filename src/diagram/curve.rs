@@ -178,10 +178,7 @@ pub fn trace<C: Curve + ?Sized>(
         return Err(Error::OutOfRange {
             name: "pieces",
             value: pieces as f64,
-            reason: format!(
-                "between 1 and the segment limit {}",
-                options.max_segments
-            ),
+            reason: format!("between 1 and the segment limit {}", options.max_segments),
         });
     }
     let delta = tolerance / 8.0;
@@ -368,7 +365,10 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
         let min_y = pts.iter().map(|p| p.y).fold(f64::INFINITY, f64::min) - slack;
         let max_y = pts.iter().map(|p| p.y).fold(f64::NEG_INFINITY, f64::max) + slack;
         // Written so that a NaN anywhere means "does not miss" (halve again).
-        min_x > inner.max().x || max_x < inner.min().x || min_y > inner.max().y || max_y < inner.min().y
+        min_x > inner.max().x
+            || max_x < inner.min().x
+            || min_y > inner.max().y
+            || max_y < inner.min().y
     }
 
     /// A part with both ends inside the frame.
@@ -516,7 +516,7 @@ fn reparameterised(bez: &Bezier, s: &[(Point, Vector); 9]) -> Option<[(Vector, V
         let u = bez.nearest(s[k].0, k as f64 / 8.0)?;
         let b1 = bez.slope(u);
         let speed2 = b1.norm_squared();
-        if !(speed2 > 0.0) {
+        if speed2.is_nan() || speed2 <= 0.0 {
             return None;
         }
         phi[k] = u;
@@ -524,13 +524,21 @@ fn reparameterised(bez: &Bezier, s: &[(Point, Vector); 9]) -> Option<[(Vector, V
     }
     // φ on each eighth lies in the hull of its Hermite control values.
     for k in 0..8 {
-        let controls = [phi[k], phi[k] + slope[k] / 24.0, phi[k + 1] - slope[k + 1] / 24.0, phi[k + 1]];
+        let controls = [
+            phi[k],
+            phi[k] + slope[k] / 24.0,
+            phi[k + 1] - slope[k + 1] / 24.0,
+            phi[k + 1],
+        ];
         if !controls.iter().all(|c| (0.0..=1.0).contains(c)) {
             return None;
         }
     }
     Some(std::array::from_fn(|k| {
-        (bez.at(phi[k]) - s[k].0.coords, bez.slope(phi[k]) * slope[k] - s[k].1)
+        (
+            bez.at(phi[k]) - s[k].0.coords,
+            bez.slope(phi[k]) * slope[k] - s[k].1,
+        )
     }))
 }
 
@@ -588,7 +596,7 @@ impl Bezier {
             let b1 = self.slope(u);
             let f = d.dot(&b1);
             let df = b1.norm_squared() + d.dot(&self.curvature_vector(u));
-            if !(df > 0.0) {
+            if df.is_nan() || df <= 0.0 {
                 return None;
             }
             let next = (u - f / df).clamp(0.0, 1.0);
@@ -664,7 +672,12 @@ mod tests {
     #[test]
     fn chord_error_of_a_parabola() {
         // y = u(1 − u) above the chord y = 0: largest 1/4 at u = 1/2.
-        let s = samples(|u| (Point::new(u, u * (1.0 - u)), Vector::new(1.0, 1.0 - 2.0 * u)));
+        let s = samples(|u| {
+            (
+                Point::new(u, u * (1.0 - u)),
+                Vector::new(1.0, 1.0 - 2.0 * u),
+            )
+        });
         let (segment, error) = chord_fit(&s);
         assert_eq!(segment, Segment::Line(Point::new(1.0, 0.0)));
         assert!((0.25..0.25 * 1.01).contains(&error), "{error}");

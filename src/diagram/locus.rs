@@ -71,10 +71,7 @@ impl Curve for Locus {
             }
             LocusKind::Centrode(kind) => {
                 let centrode = Centrode::new(kind);
-                (
-                    centrode.point(&pose).point()?,
-                    centrode.derivative(&pose)?,
-                )
+                (centrode.point(&pose).point()?, centrode.derivative(&pose)?)
             }
             LocusKind::Coupler(point) => (point.point(&pose), point.derivative(&pose)),
         };

@@ -182,7 +182,7 @@ fn refine(
         _ => true,
     };
     let m = 0.5 * (a.0 + b.0);
-    if !split || !(a.0 < m && m < b.0) {
+    if !(split && a.0 < m && m < b.0) {
         return;
     }
     let mid = (m, at(0, m));

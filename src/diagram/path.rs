@@ -67,7 +67,11 @@ impl Subpath {
     /// The subpath from `start` through `segments`; `None` when any point is
     /// not finite. An empty list of segments is allowed (a lone point).
     pub fn new(start: Point, segments: Vec<Segment>) -> Option<Self> {
-        let ok = finite(&start) && segments.iter().flat_map(Segment::points).all(|p| finite(&p));
+        let ok = finite(&start)
+            && segments
+                .iter()
+                .flat_map(Segment::points)
+                .all(|p| finite(&p));
         ok.then_some(Self { start, segments })
     }
 
