@@ -2,16 +2,17 @@
 //! was made.
 //!
 //! Both are sampled densely in page space (the curve adaptively, so that
-//! neighbouring samples are at most 1/2048 of the frame's diagonal apart,
-//! the path at 33 points per cubic and 17 per line, finer when long). For
+//! neighbouring samples are at most 1/1024 of the frame's diagonal apart,
+//! the path at 17 points per cubic and 9 per line, finer when long). For
 //! each sample of one, the nearest samples of the other are found through a
 //! grid of cells, and the distance is refined by a golden-section search of
 //! the exact point (curve or segment) between the neighbouring samples.
-//! Every distance reported is the distance to a real point of the other
-//! set, so the measure can only err upwards, never hide a deviation at a
-//! sample.
+//! Every distance found is the distance to a real point of the other set,
+//! so it can only err upwards. The largest distances found are then refined
+//! by a golden-section search for the maximum between their neighbouring
+//! samples, so the largest deviation is located, not only sampled.
 
-use super::{Affine, Curve, Path};
+use super::{Affine, Curve, Path, Segment};
 use crate::geom::{Frame, Point};
 use std::ops::RangeInclusive;
 
@@ -43,13 +44,18 @@ impl Deviation {
 /// is exact).
 const BASE_SAMPLES: usize = 2003;
 /// Sample spacing as a fraction of the frame's diagonal.
-const SPACING: f64 = 1.0 / 2048.0;
+const SPACING: f64 = 1.0 / 1024.0;
 /// Halvings of a base interval at most.
 const MAX_REFINE: u32 = 30;
 /// Samples in all at most (the refinement stops there).
 const MAX_SAMPLES: usize = 1 << 22;
-/// Golden-section steps (the bracket shrinks to 0.618^48 ≈ 1e-10 of itself).
-const GOLDEN_STEPS: usize = 48;
+/// Golden-section steps (the bracket shrinks to 0.618^32 ≈ 2e-7 of itself).
+const GOLDEN_STEPS: usize = 32;
+/// Samples per line segment and per cubic at least.
+const LINE_SAMPLES: f64 = 8.0;
+const CUBIC_SAMPLES: f64 = 16.0;
+/// How many of the largest sampled distances are refined.
+const REFINED_MAXIMA: usize = 8;
 
 /// Measures `path` (page coordinates) against `curve` over `range` mapped
 /// by the page-from-world `map`, with `frame` the plot area it was clipped to.
@@ -87,16 +93,15 @@ pub fn measure<C: Curve + ?Sized>(
     };
     let mut path_samples = Vec::new();
     for (k, (start, seg)) in segments.iter().enumerate() {
-        let polygon = match *seg {
-            super::Segment::Line(p) => (p - start).norm(),
-            super::Segment::Cubic(a, b, p) => (a - start).norm() + (b - a).norm() + (p - b).norm(),
+        let (polygon, least) = match *seg {
+            Segment::Line(p) => ((p - start).norm(), LINE_SAMPLES),
+            Segment::Cubic(a, b, p) => (
+                (a - start).norm() + (b - a).norm() + (p - b).norm(),
+                CUBIC_SAMPLES,
+            ),
         };
-        let least = if matches!(seg, super::Segment::Line(_)) {
-            16.0
-        } else {
-            32.0
-        };
-        let n = (polygon / spacing).ceil().clamp(least, 65536.0) as usize;
+        // An even count, so that u = 1/2 is a sample.
+        let n = 2 * ((polygon / spacing / 2.0).ceil().clamp(least / 2.0, 32768.0) as usize);
         for j in 0..=n {
             let u = j as f64 / n as f64;
             path_samples.push((k, u, Some(seg.eval(*start, u))));
@@ -104,23 +109,54 @@ pub fn measure<C: Curve + ?Sized>(
     }
     let path_cloud = Cloud::new(path_samples, &region, spacing);
 
-    let path_to_curve = path_cloud
-        .samples
-        .iter()
-        .filter_map(|&(_, _, p)| p)
-        .map(|q| curve_cloud.distance(q, &curve_at))
-        .fold(0.0, f64::max);
-    let curve_to_path = curve_cloud
-        .samples
-        .iter()
-        .filter_map(|&(_, _, p)| p)
-        .filter(|p| frame.contains(*p))
-        .map(|q| path_cloud.distance(q, &path_at))
-        .fold(0.0, f64::max);
+    let path_to_curve = largest(
+        &path_cloud,
+        &path_at,
+        |q| curve_cloud.distance(q, &curve_at),
+        |_| true,
+    );
+    let curve_to_path = largest(
+        &curve_cloud,
+        &curve_at,
+        |q| path_cloud.distance(q, &path_at),
+        |p| frame.contains(p),
+    );
     Deviation {
         path_to_curve,
         curve_to_path,
     }
+}
+
+/// The largest `distance` over the samples of `cloud` that `keep` accepts,
+/// with the few largest refined by a golden-section search for the maximum
+/// between their neighbours (`at` gives the exact points).
+fn largest(
+    cloud: &Cloud,
+    at: &impl Fn(usize, f64) -> Option<Point>,
+    distance: impl Fn(Point) -> f64,
+    keep: impl Fn(Point) -> bool,
+) -> f64 {
+    let mut scored: Vec<(f64, usize)> = cloud
+        .samples
+        .iter()
+        .enumerate()
+        .filter_map(|(i, s)| s.2.filter(|p| keep(*p)).map(|p| (distance(p), i)))
+        .collect();
+    let mut best = scored.iter().map(|s| s.0).fold(0.0, f64::max);
+    if scored.len() > REFINED_MAXIMA {
+        scored.select_nth_unstable_by(REFINED_MAXIMA, |a, b| b.0.total_cmp(&a.0));
+        scored.truncate(REFINED_MAXIMA);
+    }
+    for (_, i) in scored {
+        let (lo, hi, piece) = cloud.bracket(i);
+        let f = |t: f64| {
+            at(piece, t)
+                .filter(|p| keep(*p))
+                .map_or(0.0, |p| -distance(p))
+        };
+        best = best.max(-golden(f, lo, hi));
+    }
+    best
 }
 
 /// Samples `(piece, parameter, point)` of the curve in parameter order,
@@ -219,7 +255,7 @@ impl Cloud {
                 let p = p?;
                 let (cx, cy) = Self::cell_of(origin, cell, p);
                 (cx >= 0 && cy >= 0 && (cx as usize) < nx && (cy as usize) < ny)
-                    .then_some((cy as usize * nx + cx as usize, i))
+                    .then(|| (cy as usize * nx + cx as usize, i))
             })
             .collect();
         keyed.sort_unstable();
@@ -301,19 +337,41 @@ impl Cloud {
         (best, near)
     }
 
+    /// The parameters of the neighbours of sample `i` in its piece (its own
+    /// at the ends), and the piece.
+    fn bracket(&self, i: usize) -> (f64, f64, usize) {
+        let (piece, t, _) = self.samples[i];
+        let neighbour = |j: Option<usize>| {
+            j.and_then(|j| self.samples.get(j))
+                .filter(|s| s.0 == piece)
+                .map_or(t, |s| s.1)
+        };
+        (neighbour(i.checked_sub(1)), neighbour(Some(i + 1)), piece)
+    }
+
+    /// Distance from `q` to sample `j`, infinite when there is none (or it
+    /// is in another piece than `piece`).
+    fn sample_distance(&self, j: Option<usize>, piece: usize, q: Point) -> f64 {
+        j.and_then(|j| self.samples.get(j))
+            .filter(|s| s.0 == piece)
+            .and_then(|s| s.2)
+            .map_or(f64::INFINITY, |p| (p - q).norm())
+    }
+
     /// The distance from `q` to the set the samples come from, `at` giving
-    /// its exact points.
+    /// its exact points: the nearest samples that are local minima of the
+    /// distance along their piece, each refined between its neighbours.
     fn distance(&self, q: Point, at: &impl Fn(usize, f64) -> Option<Point>) -> f64 {
-        let (mut best, near) = self.near(q, 2.0 * self.spacing);
+        let (mut best, near) = self.near(q, self.spacing);
         for i in near {
-            let (piece, t, _) = self.samples[i];
-            let neighbour = |j: Option<usize>| {
-                j.and_then(|j| self.samples.get(j))
-                    .filter(|s| s.0 == piece)
-                    .map_or(t, |s| s.1)
-            };
-            let lo = neighbour(i.checked_sub(1));
-            let hi = neighbour(Some(i + 1));
+            let piece = self.samples[i].0;
+            let d = self.sample_distance(Some(i), piece, q);
+            if d > self.sample_distance(i.checked_sub(1), piece, q)
+                || d > self.sample_distance(Some(i + 1), piece, q)
+            {
+                continue;
+            }
+            let (lo, hi, _) = self.bracket(i);
             let f = |s: f64| at(piece, s).map_or(f64::INFINITY, |p| (p - q).norm());
             best = best.min(golden(f, lo, hi));
         }
