@@ -575,3 +575,44 @@ fn edge_distance(frame: &Frame, p: Point) -> f64 {
         outside_distance(frame, p)
     }
 }
+
+mod random {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+        /// Random mechanisms, curves, page maps and tolerances: the measured
+        /// deviation is within the tolerance both ways.
+        #[test]
+        fn every_traced_curve_is_within_its_tolerance(
+            log_n_minus_1 in -1.3f64..1.3,
+            offset_frac in -0.9f64..0.9,
+            which in 0usize..4,
+            coupler_t in 0.0f64..=1.0,
+            scale in 100.0f64..400.0,
+            mirror in any::<bool>(),
+            squash in 0.7f64..1.3,
+            shift_x in -100.0f64..100.0,
+            shift_y in -100.0f64..100.0,
+            log_tol in -4.0f64..-1.0,
+        ) {
+            let l = 1.0 + 10f64.powf(log_n_minus_1);
+            let m = SliderCrank::new(1.0, l, offset_frac * (l - 1.0)).unwrap();
+            let kind = match which {
+                0 => LocusKind::PolarVelocity,
+                1 => LocusKind::Centrode(CentrodeKind::Fixed),
+                2 => LocusKind::Centrode(CentrodeKind::Moving),
+                _ => LocusKind::Coupler(CouplerPoint::new(coupler_t).unwrap()),
+            };
+            let curve = Locus::new(m, kind);
+            let sx = if mirror { -scale } else { scale };
+            let map = Affine::scale_translate(sx, -scale * squash, 400.0 + shift_x, 300.0 + shift_y)
+                .unwrap();
+            let frame = Frame::new(Point::new(0.0, 0.0), Point::new(800.0, 600.0));
+            let tol = 10f64.powf(log_tol);
+            let (_, d) = traced(&curve, 0.0..=360.0, &map, &frame, tol);
+            prop_assert!(d.max() <= tol, "{:?} {:?} tol {:e}: {:?}", m, kind, tol, d);
+        }
+    }
+}

@@ -45,11 +45,15 @@
 
 use super::{Affine, Path, Segment, Subpath};
 use crate::error::{Error, Result, finite, positive};
-use crate::geom::{Frame, Point, Vector};
+use crate::geom::{Frame, Point, Vector, cross};
 use std::ops::RangeInclusive;
 
 /// The default tolerance: 0.01 page units (px).
 pub const DEFAULT_TOLERANCE: f64 = 0.01;
+
+/// The largest turn of the curve's tangent between neighbouring samples
+/// (an eighth of a piece) for which the geometric bound is used: 15°.
+const MAX_TURN: f64 = std::f64::consts::PI / 12.0;
 
 /// A plane curve given by its point and its exact derivative with respect to
 /// the parameter, in world coordinates.
@@ -471,11 +475,15 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
     }
 }
 
-/// The Hermite cubic of nine samples `(point, derivative per unit u)` at
-/// u = k/8, and the bound on its error (module docs): the parametric bound,
-/// or when that exceeds `tolerance` the smaller of it and the bound after
-/// matching each sample to its nearest point of the cubic. A segment whose
-/// control points are not finite gets an infinite error.
+/// The cubic for nine samples `(point, derivative per unit u)` at u = k/8,
+/// and the bound on its error (module docs).
+///
+/// First the Hermite cubic with its parametric bound; when that exceeds
+/// `tolerance`, the bound after matching each sample to its nearest point of
+/// the cubic, and a second candidate with the same end tangents whose
+/// lengths make it pass through the middle sample at u = 1/2, bounded the
+/// same way; the candidate with the smaller bound is returned. A segment
+/// whose control points are not finite gets an infinite error.
 fn cubic_fit(s: &[(Point, Vector); 9], tolerance: f64) -> (Segment, f64) {
     let (p0, d0) = s[0];
     let (p3, d3) = s[8];
@@ -491,13 +499,54 @@ fn cubic_fit(s: &[(Point, Vector); 9], tolerance: f64) -> (Segment, f64) {
         let u = k as f64 / 8.0;
         (bez.at(u) - s[k].0.coords, bez.slope(u) - s[k].1)
     });
-    let mut error = hull_bound(&parametric);
-    if error > tolerance
-        && let Some(matched) = reparameterised(&bez, s)
-    {
-        error = error.min(hull_bound(&matched));
+    let mut best = (segment, hull_bound(&parametric));
+    if best.1 > tolerance {
+        if let Some(matched) = reparameterised(&bez, s) {
+            best.1 = best.1.min(hull_bound(&matched));
+        }
+        if let Some((m1, m2)) = through_middle(s) {
+            let bez = Bezier::new(p0, m1, m2, p3);
+            if let Some(matched) = reparameterised(&bez, s) {
+                let error = hull_bound(&matched);
+                if error < best.1 {
+                    best = (Segment::Cubic(m1, m2, p3), error);
+                }
+            }
+        }
     }
-    (segment, if error.is_nan() { f64::INFINITY } else { error })
+    (
+        best.0,
+        if best.1.is_nan() {
+            f64::INFINITY
+        } else {
+            best.1
+        },
+    )
+}
+
+/// Control points with the end tangents of the samples and lengths α, β > 0
+/// chosen so that the cubic's point at u = 1/2 is the middle sample:
+/// (P0 + P3)/2 + 3/8 (α T0 − β T3) = p(1/2). `None` when an end derivative
+/// vanishes, the tangents are nearly parallel, or a length is not positive
+/// or longer than twice the chord.
+fn through_middle(s: &[(Point, Vector); 9]) -> Option<(Point, Point)> {
+    let (p0, d0) = s[0];
+    let (p3, d3) = s[8];
+    let (n0, n3) = (d0.norm(), d3.norm());
+    if n0.is_nan() || n3.is_nan() || n0 <= 0.0 || n3 <= 0.0 {
+        return None;
+    }
+    let (t0, t3) = (d0 / n0, -d3 / n3);
+    let r = (s[4].0 - nalgebra::center(&p0, &p3)) * (8.0 / 3.0);
+    let det = cross(&t0, &t3);
+    if det.abs() < 1e-3 {
+        return None;
+    }
+    let alpha = cross(&r, &t3) / det;
+    let beta = cross(&t0, &r) / det;
+    let chord = (p3 - p0).norm();
+    let ok = |x: f64| x > 0.0 && x <= 2.0 * chord;
+    (ok(alpha) && ok(beta)).then(|| (p0 + t0 * alpha, p3 + t3 * beta))
 }
 
 /// The error of the cubic against the samples with the cubic reparameterised
@@ -506,14 +555,36 @@ fn cubic_fit(s: &[(Point, Vector); 9], tolerance: f64) -> (Segment, f64) {
 /// e(u) = B(φ(u)) − p(u). B∘φ covers the whole cubic as φ goes from 0 to 1
 /// (continuously, staying in [0, 1]), so its distance bounds the geometric
 /// (Hausdorff) distance as the parametric one does, but without the
-/// tangential drift of the two parameterisations. `None` when a projection
-/// fails or φ could leave [0, 1] (then the parametric bound stands).
+/// tangential drift of the two parameterisations.
+///
+/// The hull bound is only as good as the samples resolve e, so φ must be as
+/// smooth as the curve: `None` (the parametric bound stands) unless the
+/// curve's tangent turns by less than [`MAX_TURN`] between neighbouring
+/// samples, every projection settles, φ increases with slopes within a
+/// factor 2 of its secants, and φ stays in [0, 1].
 fn reparameterised(bez: &Bezier, s: &[(Point, Vector); 9]) -> Option<[(Vector, Vector); 9]> {
+    for w in s.windows(2) {
+        let (a, b) = (w[0].1, w[1].1);
+        let (na, nb) = (a.norm(), b.norm());
+        // cos of the turn between the two tangents, compared without division.
+        if na.is_nan()
+            || nb.is_nan()
+            || na <= 0.0
+            || nb <= 0.0
+            || a.dot(&b) < MAX_TURN.cos() * na * nb
+        {
+            return None;
+        }
+    }
     let mut phi = [0.0; 9];
     let mut slope = [1.0; 9];
     phi[8] = 1.0;
-    for k in 1..8 {
-        let u = bez.nearest(s[k].0, k as f64 / 8.0)?;
+    for k in 0..9 {
+        let u = match k {
+            0 => 0.0,
+            8 => 1.0,
+            _ => bez.nearest(s[k].0, k as f64 / 8.0)?,
+        };
         let b1 = bez.slope(u);
         let speed2 = b1.norm_squared();
         if speed2.is_nan() || speed2 <= 0.0 {
@@ -522,8 +593,13 @@ fn reparameterised(bez: &Bezier, s: &[(Point, Vector); 9]) -> Option<[(Vector, V
         phi[k] = u;
         slope[k] = s[k].1.dot(&b1) / speed2;
     }
-    // φ on each eighth lies in the hull of its Hermite control values.
     for k in 0..8 {
+        let secant = (phi[k + 1] - phi[k]) * 8.0;
+        let smooth = |m: f64| m >= 0.5 * secant && m <= 2.0 * secant;
+        if secant.is_nan() || secant <= 0.0 || !smooth(slope[k]) || !smooth(slope[k + 1]) {
+            return None;
+        }
+        // φ on each eighth lies in the hull of its Hermite control values.
         let controls = [
             phi[k],
             phi[k] + slope[k] / 24.0,

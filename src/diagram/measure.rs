@@ -1,19 +1,23 @@
 //! Measuring a path against the exact curve, independently of how the path
 //! was made.
 //!
-//! Both are sampled densely in page space (the curve adaptively, so that
-//! neighbouring samples are at most 1/1024 of the frame's diagonal apart,
-//! the path at 17 points per cubic and 9 per line, finer when long). For
-//! each sample of one, the nearest samples of the other are found through a
-//! grid of cells, and the distance is refined by a golden-section search of
-//! the exact point (curve or segment) between the neighbouring samples.
-//! Every distance found is the distance to a real point of the other set,
-//! so it can only err upwards. The largest distances found are then refined
-//! by a golden-section search for the maximum between their neighbouring
-//! samples, so the largest deviation is located, not only sampled.
+//! Both are sampled densely in page space: the path at 17 points per cubic
+//! and 9 per line at least, the curve at 2004; both are refined until
+//! neighbouring samples are at most 1/1024 of the frame's diagonal apart
+//! and the tangent turns by less than 10° from one to the next. For
+//! each sample of one, the nearby samples of the other are found through a
+//! grid of cells; every interval next to a sample that may neighbour the
+//! nearest point (its distance is within the local sample spacing of the
+//! least) is searched for the exact nearest point, a root of
+//! (p(t) − q)·p′(t), by the Illinois method on the exact point and
+//! derivative (curve or segment). Every distance found is the distance to a
+//! real point of the other set, so it can only err upwards. The largest
+//! distances found are then refined by a golden-section search for the
+//! maximum between their neighbouring samples, so the largest deviation is
+//! located, not only sampled.
 
 use super::{Affine, Curve, Path, Segment};
-use crate::geom::{Frame, Point};
+use crate::geom::{Frame, Point, Vector};
 use std::ops::RangeInclusive;
 
 /// How far a path is from a curve, in page units.
@@ -49,8 +53,12 @@ const SPACING: f64 = 1.0 / 1024.0;
 const MAX_REFINE: u32 = 30;
 /// Samples in all at most (the refinement stops there).
 const MAX_SAMPLES: usize = 1 << 22;
-/// Golden-section steps (the bracket shrinks to 0.618^32 ≈ 2e-7 of itself).
-const GOLDEN_STEPS: usize = 32;
+/// Golden-section steps (the bracket shrinks to 0.618^48 ≈ 1e-10 of itself).
+const GOLDEN_STEPS: usize = 48;
+/// Illinois steps at most.
+const ROOT_STEPS: usize = 60;
+/// The largest turn of the tangent between neighbouring samples: 10°.
+const MAX_TURN: f64 = std::f64::consts::PI / 18.0;
 /// Samples per line segment and per cubic at least.
 const LINE_SAMPLES: f64 = 8.0;
 const CUBIC_SAMPLES: f64 = 16.0;
@@ -72,13 +80,13 @@ pub fn measure<C: Curve + ?Sized>(
     let diag = (frame.max() - frame.min()).norm();
     let spacing = (diag * SPACING).max(1e-9);
     let margin = 0.05 * diag + 64.0 * spacing;
-    let m = nalgebra::Vector2::new(margin, margin);
+    let m = Vector::new(margin, margin);
     let region = Frame::new(frame.min() - m, frame.max() + m);
 
-    let curve_at = |_: usize, t: f64| -> Option<Point> {
-        let (p, _) = curve.eval(t)?;
-        let p = map.point(p);
-        (p.x.is_finite() && p.y.is_finite()).then_some(p)
+    let curve_at = |_: usize, t: f64| -> At {
+        let (p, d) = curve.eval(t)?;
+        let (p, d) = (map.point(p), map.vector(d));
+        finite(p, d).then_some((p, d))
     };
     let curve_cloud = Cloud::new(
         sample_curve(&curve_at, range, &region, spacing),
@@ -87,9 +95,9 @@ pub fn measure<C: Curve + ?Sized>(
     );
 
     let segments: Vec<_> = path.subpaths().iter().flat_map(|s| s.pieces()).collect();
-    let path_at = |k: usize, u: f64| -> Option<Point> {
+    let path_at = |k: usize, u: f64| -> At {
         let (start, seg) = segments.get(k)?;
-        Some(seg.eval(*start, u))
+        Some((seg.eval(*start, u), seg.derivative(*start, u)))
     };
     let mut path_samples = Vec::new();
     for (k, (start, seg)) in segments.iter().enumerate() {
@@ -102,10 +110,8 @@ pub fn measure<C: Curve + ?Sized>(
         };
         // An even count, so that u = 1/2 is a sample.
         let n = 2 * ((polygon / spacing / 2.0).ceil().clamp(least / 2.0, 32768.0) as usize);
-        for j in 0..=n {
-            let u = j as f64 / n as f64;
-            path_samples.push((k, u, Some(seg.eval(*start, u))));
-        }
+        let ts = (0..=n).map(|j| j as f64 / n as f64);
+        sample_piece(k, &path_at, ts, &region, spacing, &mut path_samples);
     }
     let path_cloud = Cloud::new(path_samples, &region, spacing);
 
@@ -127,12 +133,34 @@ pub fn measure<C: Curve + ?Sized>(
     }
 }
 
+/// A point and its derivative with respect to the parameter of its piece.
+type At = Option<(Point, Vector)>;
+
+fn finite(p: Point, d: Vector) -> bool {
+    p.x.is_finite() && p.y.is_finite() && d.x.is_finite() && d.y.is_finite()
+}
+
+/// One sample: the piece (segment index, or 0 for the curve), its parameter
+/// and what is there.
+#[derive(Debug, Clone, Copy)]
+struct Sample {
+    piece: usize,
+    t: f64,
+    at: At,
+}
+
+impl Sample {
+    fn point(&self) -> Option<Point> {
+        self.at.map(|(p, _)| p)
+    }
+}
+
 /// The largest `distance` over the samples of `cloud` that `keep` accepts,
 /// with the few largest refined by a golden-section search for the maximum
 /// between their neighbours (`at` gives the exact points).
 fn largest(
     cloud: &Cloud,
-    at: &impl Fn(usize, f64) -> Option<Point>,
+    at: &impl Fn(usize, f64) -> At,
     distance: impl Fn(Point) -> f64,
     keep: impl Fn(Point) -> bool,
 ) -> f64 {
@@ -140,7 +168,7 @@ fn largest(
         .samples
         .iter()
         .enumerate()
-        .filter_map(|(i, s)| s.2.filter(|p| keep(*p)).map(|p| (distance(p), i)))
+        .filter_map(|(i, s)| s.point().filter(|p| keep(*p)).map(|p| (distance(p), i)))
         .collect();
     let mut best = scored.iter().map(|s| s.0).fold(0.0, f64::max);
     if scored.len() > REFINED_MAXIMA {
@@ -148,89 +176,126 @@ fn largest(
         scored.truncate(REFINED_MAXIMA);
     }
     for (_, i) in scored {
-        let (lo, hi, piece) = cloud.bracket(i);
+        let (lo, hi) = (cloud.neighbour(i, -1), cloud.neighbour(i, 1));
+        let piece = cloud.samples[i].piece;
         let f = |t: f64| {
             at(piece, t)
+                .map(|(p, _)| p)
                 .filter(|p| keep(*p))
                 .map_or(0.0, |p| -distance(p))
         };
-        best = best.max(-golden(f, lo, hi));
+        best = best.max(-golden(f, cloud.samples[lo].t, cloud.samples[hi].t));
     }
     best
 }
 
-/// Samples `(piece, parameter, point)` of the curve in parameter order,
-/// refined until neighbours are `spacing` apart where it matters.
+/// Samples of the curve in parameter order (see [`sample_piece`]).
 fn sample_curve(
-    at: &impl Fn(usize, f64) -> Option<Point>,
+    at: &impl Fn(usize, f64) -> At,
     range: RangeInclusive<f64>,
     region: &Frame,
     spacing: f64,
-) -> Vec<(usize, f64, Option<Point>)> {
+) -> Vec<Sample> {
     let (start, end) = range.into_inner();
     let mut out = Vec::new();
     if !(start.is_finite() && end.is_finite() && end >= start) {
         return out;
     }
-    let ts: Vec<f64> = (0..=BASE_SAMPLES)
-        .map(|i| {
-            if i == BASE_SAMPLES {
-                end
-            } else {
-                start + (end - start) * (i as f64 / BASE_SAMPLES as f64)
-            }
-        })
-        .collect();
-    let mut prev = (ts[0], at(0, ts[0]));
-    out.push((0, prev.0, prev.1));
-    for &t in &ts[1..] {
-        let next = (t, at(0, t));
-        refine(at, prev, next, 0, region, spacing, &mut out);
-        out.push((0, next.0, next.1));
+    let ts = (0..=BASE_SAMPLES).map(|i| {
+        if i == BASE_SAMPLES {
+            end
+        } else {
+            start + (end - start) * (i as f64 / BASE_SAMPLES as f64)
+        }
+    });
+    sample_piece(0, at, ts, region, spacing, &mut out);
+    out
+}
+
+/// Appends samples of `piece` at the parameters `ts` (increasing), refined
+/// between them until neighbours are at most `spacing` apart and the
+/// tangent turns by less than [`MAX_TURN`] from one to the next (and from
+/// either to the chord), wherever the curve is not wholly to one side of
+/// `region`. Between such neighbours the distance to any point has at most
+/// one minimum, which the nearest-point search relies on.
+fn sample_piece(
+    piece: usize,
+    at: &impl Fn(usize, f64) -> At,
+    mut ts: impl Iterator<Item = f64>,
+    region: &Frame,
+    spacing: f64,
+    out: &mut Vec<Sample>,
+) {
+    let sample = |t: f64| Sample {
+        piece,
+        t,
+        at: at(piece, t),
+    };
+    let Some(first) = ts.next() else {
+        return;
+    };
+    let mut prev = sample(first);
+    out.push(prev);
+    for t in ts {
+        let next = sample(t);
+        refine(&sample, prev, next, 0, region, spacing, out);
+        out.push(next);
         prev = next;
     }
-    out
+}
+
+/// Whether the tangent turns by more than [`MAX_TURN`] between two samples
+/// or either tangent is that far from their chord.
+fn turns(a: (Point, Vector), b: (Point, Vector)) -> bool {
+    let cos = MAX_TURN.cos();
+    let chord = b.0 - a.0;
+    let bent = |u: Vector, v: Vector| u.dot(&v) < cos * u.norm() * v.norm();
+    if chord.norm() == 0.0 {
+        return false;
+    }
+    bent(a.1, b.1) || bent(a.1, chord) || bent(chord, b.1)
 }
 
 /// Pushes the samples strictly between `a` and `b`.
 fn refine(
-    at: &impl Fn(usize, f64) -> Option<Point>,
-    a: (f64, Option<Point>),
-    b: (f64, Option<Point>),
+    sample: &impl Fn(f64) -> Sample,
+    a: Sample,
+    b: Sample,
     depth: u32,
     region: &Frame,
     spacing: f64,
-    out: &mut Vec<(usize, f64, Option<Point>)>,
+    out: &mut Vec<Sample>,
 ) {
     if depth >= MAX_REFINE || out.len() >= MAX_SAMPLES {
         return;
     }
-    let split = match (a.1, b.1) {
-        (Some(p), Some(q)) => {
+    let split = match (a.at, b.at) {
+        (Some(pa), Some(pb)) => {
+            let (p, q) = (pa.0, pb.0);
             let (lo, hi) = (region.min(), region.max());
             let same_side = (p.x < lo.x && q.x < lo.x)
                 || (p.x > hi.x && q.x > hi.x)
                 || (p.y < lo.y && q.y < lo.y)
                 || (p.y > hi.y && q.y > hi.y);
-            !same_side && (p - q).norm() > spacing
+            !same_side && ((p - q).norm() > spacing || turns(pa, pb))
         }
         (None, None) => depth < 4,
         _ => true,
     };
-    let m = 0.5 * (a.0 + b.0);
-    if !(split && a.0 < m && m < b.0) {
+    let m = 0.5 * (a.t + b.t);
+    if !(split && a.t < m && m < b.t) {
         return;
     }
-    let mid = (m, at(0, m));
-    refine(at, a, mid, depth + 1, region, spacing, out);
-    out.push((0, mid.0, mid.1));
-    refine(at, mid, b, depth + 1, region, spacing, out);
+    let mid = sample(m);
+    refine(sample, a, mid, depth + 1, region, spacing, out);
+    out.push(mid);
+    refine(sample, mid, b, depth + 1, region, spacing, out);
 }
 
 /// Samples of a curve or path, in parameter order, with a grid of cells over
 /// the region for nearest-sample queries.
 struct Cloud {
-    samples: Vec<(usize, f64, Option<Point>)>,
+    samples: Vec<Sample>,
     origin: Point,
     cell: f64,
     nx: usize,
@@ -242,7 +307,7 @@ struct Cloud {
 }
 
 impl Cloud {
-    fn new(samples: Vec<(usize, f64, Option<Point>)>, region: &Frame, spacing: f64) -> Self {
+    fn new(samples: Vec<Sample>, region: &Frame, spacing: f64) -> Self {
         let size = region.max() - region.min();
         let cell = (size.x.max(size.y) / 512.0).max(spacing);
         let nx = ((size.x / cell).ceil() as usize).clamp(1, 1024);
@@ -251,9 +316,8 @@ impl Cloud {
         let mut keyed: Vec<(usize, usize)> = samples
             .iter()
             .enumerate()
-            .filter_map(|(i, &(_, _, p))| {
-                let p = p?;
-                let (cx, cy) = Self::cell_of(origin, cell, p);
+            .filter_map(|(i, s)| {
+                let (cx, cy) = Self::cell_of(origin, cell, s.point()?);
                 (cx >= 0 && cy >= 0 && (cx as usize) < nx && (cy as usize) < ny)
                     .then(|| (cy as usize * nx + cx as usize, i))
             })
@@ -284,15 +348,28 @@ impl Cloud {
     }
 
     fn point(&self, i: usize) -> Point {
-        self.samples[i].2.unwrap_or(Point::origin())
+        self.samples[i].point().unwrap_or(Point::origin())
     }
 
-    /// The indexed samples within `slack` of the nearest one to `q`, and the
-    /// nearest distance (infinite when none is indexed).
-    fn near(&self, q: Point, slack: f64) -> (f64, Vec<usize>) {
+    /// The index of the sample `step` (±1) from `i` in the same piece, or
+    /// `i` itself at the end of its piece.
+    fn neighbour(&self, i: usize, step: isize) -> usize {
+        i.checked_add_signed(step)
+            .filter(|&j| {
+                self.samples
+                    .get(j)
+                    .is_some_and(|s| s.piece == self.samples[i].piece)
+            })
+            .unwrap_or(i)
+    }
+
+    /// The indexed samples within `slack` of the nearest one to `q`, with
+    /// their distances, and the nearest distance (infinite when none is
+    /// indexed).
+    fn near(&self, q: Point, slack: f64) -> (f64, Vec<(f64, usize)>) {
         let mut seen: Vec<(f64, usize)> = Vec::new();
         if self.members.is_empty() {
-            return (f64::INFINITY, seen.into_iter().map(|s| s.1).collect());
+            return (f64::INFINITY, seen);
         }
         let (qx, qy) = Self::cell_of(self.origin, self.cell, q);
         let inside = qx >= 0 && qy >= 0 && (qx as usize) < self.nx && (qy as usize) < self.ny;
@@ -329,53 +406,94 @@ impl Cloud {
             }
         }
         let best = seen.iter().map(|s| s.0).fold(f64::INFINITY, f64::min);
-        let near = seen
-            .into_iter()
-            .filter(|s| s.0 <= best + slack)
-            .map(|s| s.1)
-            .collect();
-        (best, near)
-    }
-
-    /// The parameters of the neighbours of sample `i` in its piece (its own
-    /// at the ends), and the piece.
-    fn bracket(&self, i: usize) -> (f64, f64, usize) {
-        let (piece, t, _) = self.samples[i];
-        let neighbour = |j: Option<usize>| {
-            j.and_then(|j| self.samples.get(j))
-                .filter(|s| s.0 == piece)
-                .map_or(t, |s| s.1)
-        };
-        (neighbour(i.checked_sub(1)), neighbour(Some(i + 1)), piece)
-    }
-
-    /// Distance from `q` to sample `j`, infinite when there is none (or it
-    /// is in another piece than `piece`).
-    fn sample_distance(&self, j: Option<usize>, piece: usize, q: Point) -> f64 {
-        j.and_then(|j| self.samples.get(j))
-            .filter(|s| s.0 == piece)
-            .and_then(|s| s.2)
-            .map_or(f64::INFINITY, |p| (p - q).norm())
+        seen.retain(|s| s.0 <= best + slack);
+        (best, seen)
     }
 
     /// The distance from `q` to the set the samples come from, `at` giving
-    /// its exact points: the nearest samples that are local minima of the
-    /// distance along their piece, each refined between its neighbours.
-    fn distance(&self, q: Point, at: &impl Fn(usize, f64) -> Option<Point>) -> f64 {
+    /// its exact points and derivatives.
+    ///
+    /// The nearest point lies in an interval between two neighbouring
+    /// samples, each at most the interval's length farther from `q` than it;
+    /// so every interval next to a sample within the local spacing of the
+    /// least sampled distance is searched.
+    fn distance(&self, q: Point, at: &impl Fn(usize, f64) -> At) -> f64 {
         let (mut best, near) = self.near(q, self.spacing);
-        for i in near {
-            let piece = self.samples[i].0;
-            let d = self.sample_distance(Some(i), piece, q);
-            if d > self.sample_distance(i.checked_sub(1), piece, q)
-                || d > self.sample_distance(Some(i + 1), piece, q)
-            {
+        let mut searched: Vec<usize> = Vec::new();
+        for (d, i) in near {
+            let (lo, hi) = (self.neighbour(i, -1), self.neighbour(i, 1));
+            let gap = |j: usize| {
+                self.samples[j]
+                    .point()
+                    .map_or(0.0, |p| (p - self.point(i)).norm())
+            };
+            if d > best + gap(lo).max(gap(hi)) {
                 continue;
             }
-            let (lo, hi, _) = self.bracket(i);
-            let f = |s: f64| at(piece, s).map_or(f64::INFINITY, |p| (p - q).norm());
-            best = best.min(golden(f, lo, hi));
+            for start in [lo, i] {
+                let end = self.neighbour(start, 1);
+                if end == start || searched.contains(&start) {
+                    continue;
+                }
+                searched.push(start);
+                best = best.min(self.nearest_between(start, end, q, at));
+            }
         }
         best
+    }
+
+    /// The least distance from `q` to the piece between samples `a` and `b`
+    /// (neighbours): at a root of g(t) = (p(t) − q)·p′(t) where g changes
+    /// sign from − to +, found by the Illinois method (bisection when the
+    /// secant leaves the bracket), else at an end.
+    fn nearest_between(&self, a: usize, b: usize, q: Point, at: &impl Fn(usize, f64) -> At) -> f64 {
+        let piece = self.samples[a].piece;
+        let g = |s: &Sample| s.at.map(|(p, d)| (p - q).dot(&d));
+        let end_distance = |s: &Sample| s.point().map_or(f64::INFINITY, |p| (p - q).norm());
+        let (sa, sb) = (self.samples[a], self.samples[b]);
+        let best = end_distance(&sa).min(end_distance(&sb));
+        let (Some(mut ga), Some(mut gb)) = (g(&sa), g(&sb)) else {
+            return best;
+        };
+        // A minimum inside: g goes from − to +. An end where the derivative
+        // vanishes (a cusp) has g = 0 and counts for either sign.
+        if !(ga <= 0.0 && gb >= 0.0 && (ga < 0.0 || gb > 0.0)) {
+            return best;
+        }
+        let (mut ta, mut tb) = (sa.t, sb.t);
+        let mut found = best;
+        let mut side = 0;
+        for _ in 0..ROOT_STEPS {
+            let t = (ta * gb - tb * ga) / (gb - ga);
+            let t = if t > ta && t < tb { t } else { 0.5 * (ta + tb) };
+            let Some((p, d)) = at(piece, t) else {
+                break;
+            };
+            found = found.min((p - q).norm());
+            let gt = (p - q).dot(&d);
+            if gt == 0.0 || !(t > ta && t < tb) {
+                break;
+            }
+            if gt < 0.0 {
+                ta = t;
+                ga = gt;
+                if side == -1 {
+                    gb *= 0.5;
+                }
+                side = -1;
+            } else {
+                tb = t;
+                gb = gt;
+                if side == 1 {
+                    ga *= 0.5;
+                }
+                side = 1;
+            }
+            if tb - ta <= 1e-15 * ta.abs().max(tb.abs()).max(1e-300) {
+                break;
+            }
+        }
+        found
     }
 }
 

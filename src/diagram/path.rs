@@ -2,7 +2,7 @@
 //! coordinates.
 
 use super::Affine;
-use crate::geom::Point;
+use crate::geom::{Point, Vector};
 
 /// One piece of a subpath, drawn from the end of the previous piece (or
 /// the subpath's start).
@@ -31,6 +31,18 @@ impl Segment {
                 let v = 1.0 - u;
                 let (b0, b1, b2, b3) = (v * v * v, 3.0 * v * v * u, 3.0 * v * u * u, u * u * u);
                 Point::from(start.coords * b0 + c1.coords * b1 + c2.coords * b2 + p.coords * b3)
+            }
+        }
+    }
+
+    /// The derivative with respect to `u` at `u` of the piece that starts
+    /// at `start`.
+    pub fn derivative(&self, start: Point, u: f64) -> Vector {
+        match self {
+            Segment::Line(p) => p - start,
+            Segment::Cubic(c1, c2, p) => {
+                let v = 1.0 - u;
+                ((c1 - start) * (v * v) + (c2 - c1) * (2.0 * u * v) + (p - c2) * (u * u)) * 3.0
             }
         }
     }
@@ -169,6 +181,20 @@ mod tests {
         assert_eq!(s.eval(start, 1.0), Point::new(1.0, 0.0));
         // (0 + 3·0 + 3·1 + 1)/8, (0 + 3 + 3 + 0)/8
         assert_eq!(s.eval(start, 0.5), Point::new(0.5, 0.75));
+    }
+
+    #[test]
+    fn cubic_derivative_at_the_ends_is_three_times_the_handles() {
+        let s = Segment::Cubic(
+            Point::new(1.0, 2.0),
+            Point::new(3.0, 2.0),
+            Point::new(4.0, 0.0),
+        );
+        let start = Point::new(0.0, 0.0);
+        assert_eq!(s.derivative(start, 0.0), Vector::new(3.0, 6.0));
+        assert_eq!(s.derivative(start, 1.0), Vector::new(3.0, -6.0));
+        let line = Segment::Line(Point::new(2.0, -1.0));
+        assert_eq!(line.derivative(start, 0.3), Vector::new(2.0, -1.0));
     }
 
     #[test]
