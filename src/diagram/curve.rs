@@ -1,47 +1,5 @@
-//! The curve engine: a parametric curve with an exact derivative, traced in
-//! page space as cubic Béziers (or line segments) within a tolerance and
-//! clipped to a frame.
-//!
-//! # How a piece is fitted
-//!
-//! The curve's point and derivative are mapped to the page (the derivative
-//! by the linear part of the map). A piece `[t0, t1]` of the parameter, of
-//! length `h`, becomes the cubic Hermite Bézier with control points
-//! `P0 = p(t0)`, `P1 = P0 + p'(t0) h/3`, `P2 = P3 − p'(t1) h/3`,
-//! `P3 = p(t1)`. Its deviation is measured against the exact curve at the
-//! same parameter, which bounds the geometric distance from above: at nine
-//! parameters `u = k/8` the error `e(u) = B(u) − p(t0 + u h)` and its exact
-//! derivative `e'(u)` are known, and on each eighth the cubic Hermite
-//! interpolant of `e` through them lies in the convex hull of its four
-//! Bézier points, whose largest norm is taken. That bounds the error up to
-//! the fourth-order remainder of an eighth of the piece; a bump narrower
-//! than an eighth that also escapes the fit's samples is the only thing it
-//! can miss, and `tests/curves.rs` measures every emitted path
-//! independently (with [`super::measure`]). A piece that is not within the
-//! tolerance is halved (the samples at `u = 0, 1/4, 1/2, 3/4, 1` become the
-//! halves' even samples, so each halving costs eight evaluations).
-//!
-//! The polyline methods use the same samples: the chord's deviation is the
-//! largest distance from the chord to the Hermite hull points of the curve
-//! (distance to a segment is convex, so the hull's vertices bound it).
-//!
-//! # Clipping, poles and cusps
-//!
-//! A piece is fitted only between two points inside the frame. Where the
-//! curve crosses the frame's edge, or stops being defined (a pole: the
-//! curve returns `None` there, and its points run off the page before it),
-//! the crossing is found by bisection on the exact curve to within an eighth
-//! of the tolerance; the subpath ends there and a new one starts where the
-//! curve comes back. Parts with both ends outside are skipped when the hull
-//! of their Hermite cubic, grown by twice its measured error at the
-//! midpoint, misses the frame, and halved otherwise, so a brief pass through
-//! a corner is found. So no segment ever spans a pole and nothing is drawn
-//! across the page. At a cusp (zero derivative) the Hermite fit still
-//! converges: the error falls with the fourth power of the piece's length.
-//!
-//! Every halving is bounded by [`TraceOptions::max_depth`] and the output by
-//! [`TraceOptions::max_segments`]; when they are not enough the trace
-//! reports an error instead of looping.
+//! The curve engine: [`trace`] and what it needs. The method is described in
+//! the module docs of [`crate::diagram`].
 
 use super::{Affine, Path, Segment, Subpath};
 use crate::error::{Error, Result, finite, positive};
@@ -144,8 +102,8 @@ impl Default for TraceOptions {
 /// `map.inverse()` ([`Path::transform`]) to store it in world coordinates.
 ///
 /// Each emitted segment is within `options.tolerance` of the exact curve (a
-/// measured bound, see the module docs) except with [`Method::Uniform`]; the
-/// path stays inside the frame grown by about the tolerance, and its
+/// measured bound, see [`crate::diagram`]) except with [`Method::Uniform`];
+/// the path stays inside the frame grown by about the tolerance, and its
 /// subpaths end within an eighth of the tolerance of the frame's edge where
 /// the curve leaves it. A curve that is nowhere defined inside the frame
 /// gives an empty path.
