@@ -616,3 +616,32 @@ mod random {
         }
     }
 }
+
+#[test]
+fn degenerate_frames_draw_nothing_and_do_not_panic() {
+    let map = Affine::scale_translate(100.0, -100.0, 150.0, 150.0).unwrap();
+    let options = TraceOptions::default();
+    let point = Frame::new(Point::new(150.0, 150.0), Point::new(150.0, 150.0));
+    let nan = Frame::new(Point::new(f64::NAN, 0.0), Point::new(1.0, f64::NAN));
+    let huge = Frame::new(
+        Point::new(f64::NEG_INFINITY, -1e300),
+        Point::new(f64::INFINITY, 1e300),
+    );
+    for frame in [point, nan] {
+        for method in [Method::Cubic, Method::Polyline, Method::Uniform(10)] {
+            let path = trace(&circle, 0.0..=TAU, &map, &frame, method, &options).unwrap();
+            assert!(path.is_empty(), "{frame:?} {method:?}");
+            let d = measure(&path, &circle, 0.0..=TAU, &map, &frame);
+            assert!(!d.path_to_curve.is_nan() && !d.curve_to_path.is_nan());
+        }
+    }
+    // An unbounded frame clips nothing: the whole circle, within tolerance.
+    let path = trace(&circle, 0.0..=TAU, &map, &huge, Method::Cubic, &options).unwrap();
+    assert_eq!(path.subpaths().len(), 1);
+    let (bounded_map, bounded) = panel(100.0, false, Point::origin(), 300.0, 300.0);
+    assert_eq!(bounded_map, map);
+    let d = measure(&path, &circle, 0.0..=TAU, &map, &bounded);
+    assert_within(&d, options.tolerance, "unbounded frame");
+    let d = measure(&path, &circle, 0.0..=TAU, &map, &huge);
+    assert!(!d.path_to_curve.is_nan() && !d.curve_to_path.is_nan());
+}

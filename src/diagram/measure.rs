@@ -69,7 +69,10 @@ const REFINED_MAXIMA: usize = 8;
 /// by the page-from-world `map`, with `frame` the plot area it was clipped to.
 ///
 /// Degenerate cases: an empty or reversed range has no curve points; a frame
-/// of zero size samples at a spacing of 1e-9 page units.
+/// that is not finite is replaced, for sampling, by the path's bounding box
+/// (nothing is then inside it unless it is infinite), and a frame or box of
+/// zero size takes its sample spacing from the path's extent (1/1024 of it,
+/// or 1/1024 page unit for an empty path).
 pub fn measure<C: Curve + ?Sized>(
     path: &Path,
     curve: &C,
@@ -77,11 +80,25 @@ pub fn measure<C: Curve + ?Sized>(
     map: &Affine,
     frame: &Frame,
 ) -> Deviation {
-    let diag = (frame.max() - frame.min()).norm();
-    let spacing = (diag * SPACING).max(1e-9);
-    let margin = 0.05 * diag + 64.0 * spacing;
+    let finite_frame = [frame.min(), frame.max()]
+        .iter()
+        .all(|p| p.x.is_finite() && p.y.is_finite());
+    let path_box = bounds(path);
+    let (lo, hi) = if finite_frame {
+        (frame.min(), frame.max())
+    } else {
+        path_box.unwrap_or((Point::origin(), Point::origin()))
+    };
+    let diag = (hi - lo).norm();
+    let extent = if diag > 0.0 {
+        diag
+    } else {
+        path_box.map_or(0.0, |(a, b)| (b - a).norm()).max(1.0)
+    };
+    let spacing = extent * SPACING;
+    let margin = 0.05 * extent + 64.0 * spacing;
     let m = Vector::new(margin, margin);
-    let region = Frame::new(frame.min() - m, frame.max() + m);
+    let region = Frame::new(lo - m, hi + m);
 
     let curve_at = |_: usize, t: f64| -> At {
         let (p, d) = curve.eval(t)?;
@@ -131,6 +148,20 @@ pub fn measure<C: Curve + ?Sized>(
         path_to_curve,
         curve_to_path,
     }
+}
+
+/// The bounding box of the path's points and control points, when finite.
+fn bounds(path: &Path) -> Option<(Point, Point)> {
+    let mut points = path.subpaths().iter().flat_map(|s| {
+        std::iter::once(s.start()).chain(s.segments().iter().flat_map(|g| match *g {
+            Segment::Line(p) => [p, p, p],
+            Segment::Cubic(a, b, p) => [a, b, p],
+        }))
+    });
+    let first = points.next()?;
+    let (lo, hi) = points.fold((first, first), |(lo, hi), p| (lo.inf(&p), hi.sup(&p)));
+    let finite = lo.x.is_finite() && lo.y.is_finite() && hi.x.is_finite() && hi.y.is_finite();
+    finite.then_some((lo, hi))
 }
 
 /// A point and its derivative with respect to the parameter of its piece.
