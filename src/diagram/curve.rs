@@ -434,7 +434,7 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
 }
 
 /// The cubic for nine samples `(point, derivative per unit u)` at u = k/8,
-/// and the bound on its error (module docs).
+/// and the bound on its error (see [`crate::diagram`]).
 ///
 /// First the Hermite cubic with its parametric bound; when that exceeds
 /// `tolerance`, the bound after matching each sample to its nearest point of
@@ -645,7 +645,7 @@ impl Bezier {
 }
 
 /// The chord from the first sample to the last and the bound on the
-/// curve's distance from it (module docs).
+/// curve's distance from it (see [`crate::diagram`]).
 fn chord_fit(s: &[(Point, Vector); 9]) -> (Segment, f64) {
     let (a, b) = (s[0].0, s[8].0);
     let ab = b - a;
