@@ -9,7 +9,7 @@
 //! ([`DEFAULT_TOLERANCE`] = 0.01), clipped to a [`Frame`](crate::geom::Frame).
 //! The result is a [`Path`] in page coordinates, which maps to world
 //! coordinates and back exactly through the map's inverse
-//! ([`Path::transform`]). [`measure`] checks a path against the exact curve
+//! ([`Path::transform`]). [`measure()`] checks a path against the exact curve
 //! independently of how it was made.
 //!
 //! # How a piece is fitted
