@@ -53,6 +53,7 @@
 pub mod analytic;
 mod angle;
 pub mod construct;
+pub mod diagram;
 mod error;
 pub mod figure;
 pub mod geom;
