@@ -5,9 +5,10 @@
 use slider_crank::SliderCrank;
 use slider_crank::construct::{CentrodeKind, CouplerPoint};
 use slider_crank::diagram::{
-    Affine, Curve, Deviation, Locus, LocusKind, Method, Path, Segment, Subpath, TraceOptions,
-    measure, trace,
+    Curve, Deviation, Locus, LocusKind, Method, Path, Segment, Subpath, TraceOptions, measure,
+    trace,
 };
+use slider_crank::figure::PageFromWorld;
 use slider_crank::geom::{Frame, Point, Vector};
 use std::f64::consts::{PI, TAU};
 use std::ops::RangeInclusive;
@@ -17,9 +18,9 @@ const TOLERANCES: [f64; 4] = [1e-1, 1e-2, 1e-3, 1e-4];
 /// A page map with `scale` px per world unit, y down, world `centre` at the
 /// page centre of a `w` × `h` frame; `mirror` flips x (the cylinder on the
 /// left, as the textbook draws it).
-fn panel(scale: f64, mirror: bool, centre: Point, w: f64, h: f64) -> (Affine, Frame) {
+fn panel(scale: f64, mirror: bool, centre: Point, w: f64, h: f64) -> (PageFromWorld, Frame) {
     let sx = if mirror { -scale } else { scale };
-    let map = Affine::scale_translate(
+    let map = PageFromWorld::scale_translate(
         sx,
         -scale,
         0.5 * w - sx * centre.x,
@@ -46,7 +47,7 @@ fn mechanisms() -> Vec<SliderCrank> {
 fn traced<C: Curve + ?Sized>(
     curve: &C,
     range: RangeInclusive<f64>,
-    map: &Affine,
+    map: &PageFromWorld,
     frame: &Frame,
     tolerance: f64,
 ) -> (Path, Deviation) {
@@ -89,8 +90,8 @@ fn polar_velocity_curves_are_within_tolerance() {
                 // Wholly inside the frame: one subpath from θ = 0 to 360°.
                 assert_eq!(path.subpaths().len(), 1, "{m:?}");
                 let sub = &path.subpaths()[0];
-                assert_eq!(sub.start(), map.point(world_point(&curve, 0.0)));
-                assert_eq!(sub.end(), map.point(world_point(&curve, 360.0)));
+                assert_eq!(sub.start(), map.apply(world_point(&curve, 0.0)));
+                assert_eq!(sub.end(), map.apply(world_point(&curve, 360.0)));
             }
         }
     }
@@ -110,7 +111,7 @@ fn polar_curve_passes_through_c_at_the_dead_centres() {
         &TraceOptions::default(),
     )
     .unwrap();
-    let c = map.point(Point::origin());
+    let c = map.apply(Point::origin());
     assert_eq!(c, Point::new(200.0, 200.0));
     let sub = &path.subpaths()[0];
     assert_eq!(sub.start(), c);
@@ -152,7 +153,7 @@ fn centrodes_run_to_the_frame_edge_without_spikes() {
                     for end in [sub.start(), sub.end()] {
                         let at_range_end = [0.0, 360.0]
                             .iter()
-                            .any(|&t| (map.point(world_point(&curve, t)) - end).norm() < 1e-9);
+                            .any(|&t| (map.apply(world_point(&curve, t)) - end).norm() < 1e-9);
                         let edge = edge_distance(&frame, end);
                         assert!(
                             at_range_end || edge <= tol,
@@ -238,7 +239,7 @@ fn page_paths_map_to_world_and_back_within_tolerance() {
     let m = SliderCrank::new(1.0, 4.0, 1.5).unwrap();
     let curve = Locus::new(m, LocusKind::Centrode(CentrodeKind::Moving));
     // A sheared, non-uniform map: the engine works in page space anyway.
-    let map = Affine::new([180.0, 20.0, -30.0, -120.0, 400.0, 300.0]).unwrap();
+    let map = PageFromWorld::new([180.0, 20.0, -30.0, -120.0, 400.0, 300.0]).unwrap();
     let frame = Frame::new(Point::new(0.0, 0.0), Point::new(800.0, 600.0));
     let tol = 1e-3;
     let (path, _) = traced(&curve, 0.0..=360.0, &map, &frame, tol);
@@ -306,7 +307,7 @@ fn cusps_converge() {
 #[test]
 fn a_cubic_curve_is_one_segment_per_piece() {
     let curve = |t: f64| Some((Point::new(t, t * t * t), Vector::new(1.0, 3.0 * t * t)));
-    let map = Affine::identity();
+    let map = PageFromWorld::identity();
     let frame = Frame::new(Point::new(-1.0, -1.0), Point::new(2.0, 2.0));
     let options = TraceOptions {
         initial_pieces: 1,
@@ -368,7 +369,7 @@ fn measure_of_an_inscribed_polygon_is_its_sagitta() {
     // 100 (1 − cos(π/n)) both ways.
     let (map, frame) = panel(100.0, false, Point::origin(), 300.0, 300.0);
     for n in [6usize, 40, 333] {
-        let vertex = |k: usize| map.point(circle(TAU * k as f64 / n as f64).unwrap().0);
+        let vertex = |k: usize| map.apply(circle(TAU * k as f64 / n as f64).unwrap().0);
         let segments = (1..=n).map(|k| Segment::Line(vertex(k))).collect();
         let path = Path::new(vec![Subpath::new(vertex(0), segments).unwrap()]);
         let d = measure(&path, &circle, 0.0..=TAU, &map, &frame);
@@ -516,7 +517,7 @@ fn a_jump_is_reported_not_looped_over() {
             Vector::new(1.0, 0.0),
         ))
     };
-    let map = Affine::scale_translate(100.0, 100.0, 0.0, 0.0).unwrap();
+    let map = PageFromWorld::scale_translate(100.0, 100.0, 0.0, 0.0).unwrap();
     let frame = Frame::new(Point::new(-10.0, -10.0), Point::new(200.0, 200.0));
     let err = trace(
         &jump,
@@ -607,7 +608,7 @@ mod random {
             };
             let curve = Locus::new(m, kind);
             let sx = if mirror { -scale } else { scale };
-            let map = Affine::scale_translate(sx, -scale * squash, 400.0 + shift_x, 300.0 + shift_y)
+            let map = PageFromWorld::scale_translate(sx, -scale * squash, 400.0 + shift_x, 300.0 + shift_y)
                 .unwrap();
             let frame = Frame::new(Point::new(0.0, 0.0), Point::new(800.0, 600.0));
             let tol = 10f64.powf(log_tol);
@@ -619,7 +620,7 @@ mod random {
 
 #[test]
 fn degenerate_frames_draw_nothing_and_do_not_panic() {
-    let map = Affine::scale_translate(100.0, -100.0, 150.0, 150.0).unwrap();
+    let map = PageFromWorld::scale_translate(100.0, -100.0, 150.0, 150.0).unwrap();
     let options = TraceOptions::default();
     let point = Frame::new(Point::new(150.0, 150.0), Point::new(150.0, 150.0));
     let nan = Frame::new(Point::new(f64::NAN, 0.0), Point::new(1.0, f64::NAN));

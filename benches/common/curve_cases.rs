@@ -6,7 +6,8 @@
 
 use slider_crank::SliderCrank;
 use slider_crank::construct::CentrodeKind;
-use slider_crank::diagram::{Affine, Locus, LocusKind, Method, Path, TraceOptions, measure, trace};
+use slider_crank::diagram::{Locus, LocusKind, Method, Path, TraceOptions, measure, trace};
+use slider_crank::figure::PageFromWorld;
 use slider_crank::geom::{Frame, Point};
 use std::ops::RangeInclusive;
 
@@ -21,7 +22,7 @@ pub struct Case {
     pub description: &'static str,
     pub curve: Locus,
     pub range: RangeInclusive<f64>,
-    pub map: Affine,
+    pub map: PageFromWorld,
     pub frame: Frame,
 }
 
@@ -37,7 +38,7 @@ pub fn cases() -> Vec<Case> {
             description: "polar velocity curve, n = 6, 300 px/ft, 400 × 400 px",
             curve: Locus::new(engine, LocusKind::PolarVelocity),
             range: 0.0..=360.0,
-            map: Affine::scale_translate(300.0, -300.0, 200.0, 200.0).expect("invertible"),
+            map: PageFromWorld::scale_translate(300.0, -300.0, 200.0, 200.0).expect("invertible"),
             frame: Frame::new(Point::new(0.0, 0.0), Point::new(400.0, 400.0)),
         },
         Case {
@@ -45,7 +46,7 @@ pub fn cases() -> Vec<Case> {
             description: "fixed centrode, n = 6, 150 px/ft, 800 × 500 px",
             curve: Locus::new(engine, LocusKind::Centrode(CentrodeKind::Fixed)),
             range: 0.0..=360.0,
-            map: Affine::scale_translate(150.0, -150.0, 120.0, 250.0).expect("invertible"),
+            map: PageFromWorld::scale_translate(150.0, -150.0, 120.0, 250.0).expect("invertible"),
             frame: Frame::new(Point::new(0.0, 0.0), Point::new(800.0, 500.0)),
         },
     ]

@@ -1,8 +1,9 @@
 //! The curve engine: [`trace`] and what it needs. The method is described in
 //! the module docs of [`crate::diagram`].
 
-use super::{Affine, Path, Segment, Subpath};
+use super::{Path, Segment, Subpath};
 use crate::error::{Error, Result, finite, positive};
+use crate::figure::PageFromWorld;
 use crate::geom::{Frame, Point, Vector, cross};
 use std::ops::RangeInclusive;
 
@@ -115,7 +116,7 @@ impl Default for TraceOptions {
 pub fn trace<C: Curve + ?Sized>(
     curve: &C,
     range: RangeInclusive<f64>,
-    map: &Affine,
+    map: &PageFromWorld,
     frame: &Frame,
     method: Method,
     options: &TraceOptions,
@@ -201,7 +202,7 @@ impl Node {
 
 struct Tracer<'a, C: ?Sized> {
     curve: &'a C,
-    map: &'a Affine,
+    map: &'a PageFromWorld,
     frame: Frame,
     /// The frame grown by `delta`: a fitted piece's interior samples may
     /// stray this far outside.
@@ -234,7 +235,7 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
         let at = self
             .curve
             .eval(t)
-            .map(|(p, d)| (self.map.point(p), self.map.vector(d)))
+            .map(|(p, d)| (self.map.apply(p), self.map.apply_vector(d)))
             .filter(|(p, d)| finite_point(p) && d.x.is_finite() && d.y.is_finite());
         Node {
             t,

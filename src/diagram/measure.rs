@@ -16,7 +16,8 @@
 //! maximum between their neighbouring samples, so the largest deviation is
 //! located, not only sampled.
 
-use super::{Affine, Curve, Path, Segment};
+use super::{Curve, Path, Segment};
+use crate::figure::PageFromWorld;
 use crate::geom::{Frame, Point, Vector};
 use std::ops::RangeInclusive;
 
@@ -77,7 +78,7 @@ pub fn measure<C: Curve + ?Sized>(
     path: &Path,
     curve: &C,
     range: RangeInclusive<f64>,
-    map: &Affine,
+    map: &PageFromWorld,
     frame: &Frame,
 ) -> Deviation {
     let finite_frame = [frame.min(), frame.max()]
@@ -102,7 +103,7 @@ pub fn measure<C: Curve + ?Sized>(
 
     let curve_at = |_: usize, t: f64| -> At {
         let (p, d) = curve.eval(t)?;
-        let (p, d) = (map.point(p), map.vector(d));
+        let (p, d) = (map.apply(p), map.apply_vector(d));
         finite(p, d).then_some((p, d))
     };
     let curve_cloud = Cloud::new(

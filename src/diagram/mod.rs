@@ -4,7 +4,7 @@
 //! A curve comes from the analytic core as a point and its exact derivative
 //! against a parameter ([`Curve`]; the mechanism's own are [`Locus`], in
 //! degrees of crank angle). [`trace`] maps it to the page with a panel's
-//! page-from-world [`Affine`] map and draws it as cubic Béziers (or, for
+//! page-from-world map ([`crate::figure::PageFromWorld`], the same map the figure panels use) and draws it as cubic Béziers (or, for
 //! comparison, line segments) within a tolerance in page units
 //! ([`DEFAULT_TOLERANCE`] = 0.01), clipped to a [`Frame`](crate::geom::Frame).
 //! The result is a [`Path`] in page coordinates, which maps to world
@@ -63,13 +63,14 @@
 //!
 //! ```
 //! use slider_crank::SliderCrank;
-//! use slider_crank::diagram::{Affine, Locus, LocusKind, Method, TraceOptions, measure, trace};
+//! use slider_crank::diagram::{Locus, LocusKind, Method, TraceOptions, measure, trace};
+//! use slider_crank::figure::PageFromWorld;
 //! use slider_crank::geom::{Frame, Point};
 //!
 //! let engine = SliderCrank::in_line(0.5, 3.0)?;
 //! let curve = Locus::new(engine, LocusKind::PolarVelocity);
 //! // 300 px per ft, y down, C at (200, 200) on a 400 × 400 page.
-//! let map = Affine::scale_translate(300.0, -300.0, 200.0, 200.0).unwrap();
+//! let map = PageFromWorld::scale_translate(300.0, -300.0, 200.0, 200.0).unwrap();
 //! let frame = Frame::new(Point::new(0.0, 0.0), Point::new(400.0, 400.0));
 //! let options = TraceOptions::default();
 //! let path = trace(&curve, 0.0..=360.0, &map, &frame, Method::Cubic, &options)?;
@@ -78,13 +79,11 @@
 //! # Ok::<(), slider_crank::Error>(())
 //! ```
 
-mod affine;
 mod curve;
 mod locus;
 mod measure;
 mod path;
 
-pub use affine::Affine;
 pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace};
 pub use locus::{Locus, LocusKind};
 pub use measure::{Deviation, measure};

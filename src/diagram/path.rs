@@ -1,7 +1,7 @@
 //! Paths: subpaths of line and cubic Bézier segments, in page or world
 //! coordinates.
 
-use super::Affine;
+use crate::figure::PageFromWorld;
 use crate::geom::{Point, Vector};
 
 /// One piece of a subpath, drawn from the end of the previous piece (or
@@ -56,10 +56,10 @@ impl Segment {
         list.into_iter().take(n)
     }
 
-    fn map(&self, m: &Affine) -> Self {
+    fn map(&self, m: &PageFromWorld) -> Self {
         match self {
-            Segment::Line(p) => Segment::Line(m.point(*p)),
-            Segment::Cubic(a, b, p) => Segment::Cubic(m.point(*a), m.point(*b), m.point(*p)),
+            Segment::Line(p) => Segment::Line(m.apply(*p)),
+            Segment::Cubic(a, b, p) => Segment::Cubic(m.apply(*a), m.apply(*b), m.apply(*p)),
         }
     }
 }
@@ -152,16 +152,39 @@ impl Path {
     /// inverse of a panel's page-from-world map to store a page path in world
     /// coordinates, and the map itself to bring it back. `None` when a mapped
     /// point overflows to infinity.
-    pub fn transform(&self, map: &Affine) -> Option<Self> {
+    pub fn transform(&self, map: &PageFromWorld) -> Option<Self> {
         let subpaths = self
             .subpaths
             .iter()
             .map(|s| {
                 let segments = s.segments.iter().map(|g| g.map(map)).collect();
-                Subpath::new(map.point(s.start), segments)
+                Subpath::new(map.apply(s.start), segments)
             })
             .collect::<Option<Vec<_>>>()?;
         Some(Self { subpaths })
+    }
+
+    /// The figure path of this page-space path in world coordinates: each
+    /// subpath a move and its segments, mapped back through `map`'s
+    /// inverse; a subpath that ends where it starts (within `1e-9` page
+    /// units) is closed. `None` if the path is empty or a point maps to a
+    /// non-finite one.
+    pub fn to_figure_path(&self, map: &PageFromWorld) -> Option<crate::figure::Path> {
+        let world = self.transform(&map.inverse())?;
+        let mut builder = crate::figure::Path::new();
+        for (page, sub) in self.subpaths.iter().zip(world.subpaths()) {
+            builder = builder.move_to(sub.start());
+            for seg in sub.segments() {
+                builder = match *seg {
+                    Segment::Line(p) => builder.line_to(p),
+                    Segment::Cubic(a, b, p) => builder.cubic_to(a, b, p),
+                };
+            }
+            if (page.end() - page.start()).norm() <= 1e-9 && !page.segments().is_empty() {
+                builder = builder.close();
+            }
+        }
+        builder.build()
     }
 }
 
@@ -219,14 +242,14 @@ mod tests {
         )
         .unwrap();
         let path = Path::new(vec![sub]);
-        let m = Affine::scale_translate(2.0, -1.0, 10.0, 0.0).unwrap();
+        let m = PageFromWorld::scale_translate(2.0, -1.0, 10.0, 0.0).unwrap();
         let mapped = path.transform(&m).unwrap();
         let s = &mapped.subpaths()[0];
         assert_eq!(s.start(), Point::new(12.0, -2.0));
         assert_eq!(s.segments()[0], Segment::Line(Point::new(16.0, -4.0)));
         assert_eq!(s.end(), Point::new(28.0, -10.0));
         assert_eq!(mapped.segment_count(), 2);
-        let huge = Affine::scale_translate(1e150, 1e150, 0.0, 0.0).unwrap();
+        let huge = PageFromWorld::scale_translate(1e150, 1e150, 0.0, 0.0).unwrap();
         let far = Path::new(vec![Subpath::new(Point::new(1e200, 0.0), vec![]).unwrap()]);
         assert!(far.transform(&huge).is_none());
     }

@@ -46,28 +46,76 @@ impl PageRect {
 }
 
 /// `page = (a x + c y + e, b x + d y + f)`: the six numbers of an SVG
-/// `matrix(a b c d e f)`.
+/// `matrix(a b c d e f)`, invertible by construction.
 ///
-/// Mechanism panels use a uniform scale with y flipped (world y up, page y
-/// down) and, for a mirrored figure, x flipped too; plot panels may scale x
-/// and y differently. Text is never transformed by it: the renderer maps
-/// only a label's anchor.
+/// The one world-to-page map of the crate: figure panels and the curve
+/// engine ([`crate::diagram::trace`]) both use it. Mechanism panels use a
+/// uniform scale with y flipped (world y up, page y down) and, for a
+/// mirrored figure, x flipped too; plot panels may scale x and y
+/// differently. Text is never transformed by it: the renderer maps only a
+/// label's anchor. The inverse is computed once, when the map is built, so
+/// `m.inverse().inverse() == m`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct PageFromWorld {
-    a: f64,
-    b: f64,
-    c: f64,
-    d: f64,
-    e: f64,
-    f: f64,
+    m: [f64; 6],
+    inv: [f64; 6],
+}
+
+fn inverse_of(m: &[f64; 6]) -> Option<[f64; 6]> {
+    let [a, b, c, d, e, f] = *m;
+    let det = a * d - b * c;
+    let inv = [
+        d / det,
+        -b / det,
+        -c / det,
+        a / det,
+        (c * f - d * e) / det,
+        (b * e - a * f) / det,
+    ];
+    (det != 0.0 && inv.iter().all(|v| v.is_finite())).then_some(inv)
+}
+
+fn apply(m: &[f64; 6], p: Point) -> Point {
+    Point::new(
+        m[0] * p.x + m[2] * p.y + m[4],
+        m[1] * p.x + m[3] * p.y + m[5],
+    )
 }
 
 impl PageFromWorld {
+    /// The map `[a, b, c, d, e, f]`; `None` unless all six are finite and
+    /// the map is invertible with a finite inverse.
+    pub fn new(coefficients: [f64; 6]) -> Option<Self> {
+        if !coefficients.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let inv = inverse_of(&coefficients)?;
+        Some(Self {
+            m: coefficients,
+            inv,
+        })
+    }
+
+    /// The identity map.
+    pub fn identity() -> Self {
+        let m = [1.0, 0.0, 0.0, 1.0, 0.0, 0.0];
+        Self { m, inv: m }
+    }
+
+    /// `page = (sx x + tx, sy y + ty)`; `None` for a zero or non-finite
+    /// scale or translation.
+    pub fn scale_translate(sx: f64, sy: f64, tx: f64, ty: f64) -> Option<Self> {
+        Self::new([sx, 0.0, 0.0, sy, tx, ty])
+    }
+
     /// The map of uniform `scale` (page units per world unit, > 0) taking
     /// `world` to `page`, with world y up; `mirror` flips x (the textbook's
     /// cylinder on the left). `None` unless everything is finite and the
     /// scale positive.
     pub fn uniform(scale: f64, mirror: bool, world: Point, page: Point) -> Option<Self> {
+        if scale.is_nan() || scale <= 0.0 {
+            return None;
+        }
         let sx = if mirror { -scale } else { scale };
         Self::axes(sx, -scale, world, page)
     }
@@ -76,15 +124,14 @@ impl PageFromWorld {
     /// `world` to `page`: for plot panels with axes. `None` for a zero or
     /// non-finite scale or a non-finite point.
     pub fn axes(sx: f64, sy: f64, world: Point, page: Point) -> Option<Self> {
-        let t = Self {
-            a: sx,
-            b: 0.0,
-            c: 0.0,
-            d: sy,
-            e: page.x - sx * world.x,
-            f: page.y - sy * world.y,
-        };
-        (sx != 0.0 && sy != 0.0 && t.coefficients().iter().all(|v| v.is_finite())).then_some(t)
+        Self::new([
+            sx,
+            0.0,
+            0.0,
+            sy,
+            page.x - sx * world.x,
+            page.y - sy * world.y,
+        ])
     }
 
     /// The largest uniform map that shows the world rectangle `world` whole
@@ -101,52 +148,61 @@ impl PageFromWorld {
 
     /// `[a, b, c, d, e, f]`.
     pub fn coefficients(&self) -> [f64; 6] {
-        [self.a, self.b, self.c, self.d, self.e, self.f]
+        self.m
     }
 
     /// The page point of a world point.
     pub fn apply(&self, p: Point) -> Point {
-        Point::new(
-            self.a * p.x + self.c * p.y + self.e,
-            self.b * p.x + self.d * p.y + self.f,
-        )
+        apply(&self.m, p)
     }
 
-    /// The page vector of a world vector.
+    /// The page vector of a world vector (the linear part only).
     pub fn apply_vector(&self, v: Vector) -> Vector {
-        Vector::new(self.a * v.x + self.c * v.y, self.b * v.x + self.d * v.y)
+        let m = &self.m;
+        Vector::new(m[0] * v.x + m[2] * v.y, m[1] * v.x + m[3] * v.y)
     }
 
-    /// The world point of a page point; `None` if the map is singular.
-    pub fn invert(&self, p: Point) -> Option<Point> {
-        let det = self.a * self.d - self.b * self.c;
-        if det == 0.0 || !det.is_finite() {
-            return None;
+    /// The world point of a page point, solved directly (one rounding
+    /// fewer than applying [`PageFromWorld::inverse`]).
+    pub fn invert(&self, p: Point) -> Point {
+        let [a, b, c, d, e, f] = self.m;
+        let det = a * d - b * c;
+        let (x, y) = (p.x - e, p.y - f);
+        Point::new((d * x - c * y) / det, (a * y - b * x) / det)
+    }
+
+    /// The inverse map, world from page.
+    pub fn inverse(&self) -> Self {
+        Self {
+            m: self.inv,
+            inv: self.m,
         }
-        let (x, y) = (p.x - self.e, p.y - self.f);
-        Some(Point::new(
-            (self.d * x - self.c * y) / det,
-            (-self.b * x + self.a * y) / det,
-        ))
     }
 
     /// Page units per world unit along x (absolute value); for a uniform map
     /// the scale of every length.
     pub fn scale(&self) -> f64 {
-        (self.a * self.a + self.b * self.b).sqrt()
+        self.m[0].hypot(self.m[1])
+    }
+
+    /// The least stretch of the linear part (its smaller singular value):
+    /// a world length ℓ is at least `min_stretch() · ℓ` on the page.
+    pub fn min_stretch(&self) -> f64 {
+        let [a, b, c, d, ..] = self.m;
+        nalgebra::Matrix2::new(a, c, b, d).singular_values().min()
     }
 
     /// Whether x is flipped relative to y (a mirrored page).
     pub fn is_mirrored(&self) -> bool {
-        self.a * self.d - self.b * self.c > 0.0
+        self.m[0] * self.m[3] - self.m[1] * self.m[2] > 0.0
     }
 
-    /// The world rectangle that the page rectangle shows (for an
-    /// axis-aligned map); `None` if the map is singular.
-    pub fn world_frame(&self, page: &PageRect) -> Option<Frame> {
-        let p = self.invert(Point::new(page.x, page.y))?;
-        let q = self.invert(Point::new(page.x + page.width, page.y + page.height))?;
-        Some(Frame::new(p, q))
+    /// The world rectangle that the page rectangle shows (exact for an
+    /// axis-aligned map; the bounding box of the corners' images otherwise).
+    pub fn world_frame(&self, page: &PageRect) -> Frame {
+        let p = self.invert(Point::new(page.x, page.y));
+        let q = self.invert(Point::new(page.x + page.width, page.y + page.height));
+        Frame::new(p, q)
     }
 }
 
@@ -163,9 +219,11 @@ mod tests {
             .unwrap();
         assert_eq!(m.apply(Point::new(1.0, 1.0)), Point::new(-50.0, -40.0));
         assert!(m.is_mirrored() && !t.is_mirrored());
+        assert_eq!(m.invert(Point::new(-50.0, -40.0)), Point::new(1.0, 1.0));
+        assert_eq!(m.inverse().inverse(), m);
         assert_eq!(
-            m.invert(Point::new(-50.0, -40.0)),
-            Some(Point::new(1.0, 1.0))
+            m.inverse().apply(Point::new(-50.0, -40.0)),
+            Point::new(1.0, 1.0)
         );
         assert_eq!(m.coefficients(), [-100.0, 0.0, 0.0, -100.0, 50.0, 60.0]);
     }
@@ -177,7 +235,7 @@ mod tests {
         let t = PageFromWorld::fit(&world, &page, false).unwrap();
         assert_eq!(t.scale(), 100.0);
         assert_eq!(t.apply(Point::new(2.0, 0.5)), Point::new(210.0, 210.0));
-        let shown = t.world_frame(&page).unwrap();
+        let shown = t.world_frame(&page);
         assert_eq!(shown.min(), Point::new(0.0, -1.5));
         assert_eq!(shown.max(), Point::new(4.0, 2.5));
     }
@@ -191,5 +249,7 @@ mod tests {
         assert!(
             PageFromWorld::uniform(f64::NAN, false, Point::origin(), Point::origin()).is_none()
         );
+        assert!(PageFromWorld::new([1.0, 2.0, 2.0, 4.0, 0.0, 0.0]).is_none());
+        assert!(PageFromWorld::new([1e-300, 0.0, 0.0, 1e-300, 0.0, 0.0]).is_none());
     }
 }

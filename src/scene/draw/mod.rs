@@ -16,7 +16,7 @@ use super::cache::{Constructions, Evaluations};
 use super::canvas::{Canvas, round};
 use super::notation::Named;
 use crate::figure::{Figure, PageFromWorld, PageRect, Panel, Role, Shape};
-use crate::geom::{Frame, Point};
+use crate::geom::Point;
 use crate::render::NOTE_LINE;
 use serde_json::{Map, Value, json};
 
@@ -125,9 +125,7 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
             PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
         })
         .expect("a unit map is valid");
-    let frame = transform
-        .world_frame(&panel)
-        .unwrap_or_else(|| Frame::new(world.min(), world.max()));
+    let frame = transform.world_frame(&panel);
     let mut canvas = Canvas::new(transform, frame);
 
     for layer in scene.layers() {
