@@ -41,9 +41,13 @@ impl Sizes {
         let (r, l, e) = (m.crank(), m.rod(), m.offset());
         let far = ((l + r - e) * (l + r + e)).sqrt();
         let near = ((l - r - e) * (l - r + e)).sqrt();
+        // A short rod brings the slider close to the crank: the block
+        // shrinks with l − r (down to 0.3 of its size) so that it does not
+        // hide C and B.
+        let k = ((l - r) / r).clamp(0.3, 1.0);
         Self {
-            block_half_length: 0.36 * r,
-            block_half_height: 0.2 * r,
+            block_half_length: 0.36 * r * k,
+            block_half_height: 0.2 * r * k,
             travel: (near, far),
         }
     }
