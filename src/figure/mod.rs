@@ -13,7 +13,7 @@ mod text;
 mod transform;
 
 pub use catalogue::FigureName;
-pub use model::{Figure, Item, Panel, Role, Shape, TextSize};
+pub use model::{Align, Dash, Figure, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use text::{RichText, Run};
 pub use transform::{PageFromWorld, PageRect};
