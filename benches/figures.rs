@@ -13,8 +13,8 @@ fn figures(c: &mut Criterion) {
         .sample_size(40)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2));
-    for name in FigureName::ALL {
-        let scene = name.scene();
+    for name in FigureName::SCENES {
+        let scene = name.scene().unwrap();
         group.bench_function(format!("model/{}", name.name()), |b| {
             b.iter(|| black_box(&scene).figure())
         });
@@ -27,7 +27,7 @@ fn figures(c: &mut Criterion) {
         });
     }
     group.finish();
-    let svg = to_svg(&FigureName::Fig67Example.scene().figure());
+    let svg = to_svg(&FigureName::Fig67Example.scene().unwrap().figure());
     let mut png = c.benchmark_group("png");
     png.sample_size(10).measurement_time(Duration::from_secs(3));
     png.bench_function("fig-67-example at 2x", |b| {

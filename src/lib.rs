@@ -42,7 +42,7 @@
 //!
 //! ```
 //! use slider_crank::{FigureName, Layer, render::to_svg};
-//! let scene = FigureName::Fig66Kisch.scene();          // §35 engine at 60°
+//! let scene = FigureName::Fig66Kisch.scene().unwrap(); // §35 engine at 60°
 //! let (figure, computed) = scene.build();
 //! assert_eq!(computed.instant_centre, 0);              // Kisch needs no D
 //! let svg = to_svg(&figure);

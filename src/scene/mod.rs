@@ -139,6 +139,13 @@ impl Scene {
         }
     }
 
+    /// The same scene for another mechanism (poses, layers and page are
+    /// kept; constructions are made anew when the figure is built).
+    pub fn with_mechanism(mut self, mechanism: SliderCrank) -> Self {
+        self.mechanism = mechanism;
+        self
+    }
+
     /// Names the figure (the `figure` of its metadata).
     pub fn named(mut self, name: impl Into<String>) -> Self {
         self.name = name.into();
