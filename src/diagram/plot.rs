@@ -91,7 +91,9 @@ impl Plot {
             .filter_map(|t| t.label.as_ref())
             .map(|l| RichText::parse(l).width_em() * TICK_TEXT)
             .fold(0.0, f64::max);
-        let left = widest + TICK + 10.0;
+        // At least the room of "−0000", so that plots stacked in a column
+        // line up.
+        let left = widest.max(3.0 * TICK_TEXT) + TICK + 10.0;
         let last_x = x
             .ticks()
             .iter()
