@@ -166,14 +166,17 @@ impl FigureName {
         FigureName::DIAGRAMS.contains(self)
     }
 
-    /// The mechanism it is drawn for: Ng's rig (r = 25 mm, l = 72 mm) or the
-    /// textbook's §35 engine (r = 0.5 ft, l = 3 ft).
+    /// The mechanism it is drawn for: Ng's rig (r = 25 mm, l = 72 mm), or
+    /// the textbook's §35 engine (r = 0.5 ft, l = 3 ft) except for
+    /// `fig-61-centrodes`, drawn with a shorter rod (l = 1.25 ft, n = 2.5)
+    /// on which the centrodes are far enough apart to read.
     pub fn mechanism(&self) -> SliderCrank {
-        if self.is_ng() {
-            SliderCrank::in_line(25.0, 72.0).expect("Ng's rig is valid")
-        } else {
-            SliderCrank::in_line(0.5, 3.0).expect("the §35 engine is valid")
-        }
+        let m = match self {
+            _ if self.is_ng() => SliderCrank::in_line(25.0, 72.0),
+            FigureName::Fig61Centrodes => SliderCrank::in_line(0.5, 1.25),
+            _ => SliderCrank::in_line(0.5, 3.0),
+        };
+        m.expect("the catalogue's mechanisms are valid")
     }
 
     /// The crank angle it is drawn at (the pose whose construction a
@@ -228,7 +231,7 @@ impl FigureName {
             FigureName::AccelerationDiagrams => (900.0, 760.0),
             FigureName::RodMotion => (760.0, 640.0),
             FigureName::ApproximationError => (900.0, 680.0),
-            FigureName::CouplerCurves => (760.0, 440.0),
+            FigureName::CouplerCurves => (760.0, 340.0),
             FigureName::NgFig2Incline => (620.0, 460.0),
             FigureName::NgFig7Calibration => (640.0, 460.0),
             FigureName::NgFig8Forces => (760.0, 700.0),
