@@ -278,8 +278,9 @@ impl Plot {
         let page = super::Path::new(subpaths);
         for sub in page.subpaths() {
             for (start, seg) in sub.pieces() {
-                for k in 0..4 {
-                    let p = seg.eval(start, k as f64 / 4.0);
+                let n = ((seg.end() - start).norm() / 6.0).ceil().clamp(4.0, 400.0) as usize;
+                for k in 0..n {
+                    let p = seg.eval(start, k as f64 / n as f64);
                     self.remember(p);
                 }
             }
@@ -413,6 +414,12 @@ impl Plot {
     pub fn legend_line(&mut self, text: &str, dash: Dash) {
         self.legend
             .push((RichText::parse(text), Some(Key::Line(dash))));
+    }
+
+    /// A legend entry for markers drawn by [`Plot::points`] without one.
+    pub fn legend_marker(&mut self, text: &str, symbol: Symbol) {
+        self.legend
+            .push((RichText::parse(text), Some(Key::Marker(symbol))));
     }
 
     /// A note: lines of markup set in a free corner of the plot area, after

@@ -87,7 +87,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let rect = ctx.band(top, page.height() - top - 60.0);
     let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
     let y = Axis::nice(
-        &format!("*V*_p (ft/s), towards the crank").replace("ft", unit),
+        &format!("*V*_p ({unit}/s), towards the crank"),
         lo.min(-vc),
         hi.max(vc),
     )?;
