@@ -16,6 +16,7 @@ mod layer;
 mod notation;
 
 pub use cache::Evaluations;
+pub(crate) use canvas::round;
 pub use layer::Layer;
 pub use notation::Notation;
 

@@ -89,7 +89,13 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let period = std::f64::consts::TAU / omega;
     let rect = super::PageRect::new(16.0 + half + 16.0, 16.0, half, row);
     let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
-    let mut time = Plot::new("time-base", rect, x, f_axis(&f_title)?, ctx.tolerance)?.with_caption(
+    // Headroom above the curves for the legend.
+    let headroom = Axis::nice(
+        &f_title,
+        lo.min(-r * w2),
+        hi.max(r * w2) + 0.2 * (hi.max(r * w2) - lo.min(-r * w2)),
+    )?;
+    let mut time = Plot::new("time-base", rect, x, headroom, ctx.tolerance)?.with_caption(
         &format!("(b) Acceleration on a time base, {} rpm", short(ctx.rpm())),
     );
     let exact_t = against_time(m, omega, exact);
@@ -131,27 +137,26 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     };
     let (gmin, gmax) = extent(&m, |p| -p.position_acceleration());
     let reach = gmax.max(-gmin).max(r);
-    // Room on the right of the curves for the legend.
     let world = Frame::new(
         Point::new(-1.08 * r, -1.08 * reach),
-        Point::new(1.08 * reach + 1.7 * r, 1.08 * reach),
+        Point::new(1.08 * reach, 1.08 * reach),
     );
     let top = 16.0 + row + 12.0;
     let rect = super::PageRect::new(16.0, top, half, page.height() - top - 16.0);
     let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance)?
-        .with_caption("(c) Polar acceleration diagram: *CG*′ = *CG* = *f*/ω² on the crank");
+        .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dashed");
     polar_construction(&mut plot, &ctx.pose(), reach);
     plot.curve(
         "curve-polar-acceleration",
         &[(&polar, 0.0..=360.0)],
         Dash::Solid,
-        Some("piston, *G*′"),
+        None,
     )?;
     plot.curve(
         "curve-polar-acceleration-shm",
         &[(&shm_polar, 0.0..=180.0)],
         Dash::Dashed,
-        Some("simple harmonic motion"),
+        None,
     )?;
     sheet.plot(plot);
 

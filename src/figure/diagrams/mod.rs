@@ -233,10 +233,15 @@ impl Sheet {
         ));
     }
 
+    /// The figure, with every number of its metadata rounded to 12
+    /// significant digits (stable text).
     pub fn finish(mut self) -> Figure {
         let page = self.name.page();
         if !self.plots.is_empty() {
             self.meta.insert("plots".into(), Value::Array(self.plots));
+        }
+        for v in self.meta.values_mut() {
+            round_numbers(v);
         }
         Figure::new(
             self.name.name(),
@@ -247,6 +252,23 @@ impl Sheet {
             self.panels,
             self.meta,
         )
+    }
+}
+
+/// Rounds every number in `v` to 12 significant digits.
+fn round_numbers(v: &mut Value) {
+    match v {
+        Value::Number(n) => {
+            if let Some(x) = n.as_f64()
+                && !n.is_i64()
+                && !n.is_u64()
+            {
+                *v = json!(crate::scene::round(x));
+            }
+        }
+        Value::Array(a) => a.iter_mut().for_each(round_numbers),
+        Value::Object(o) => o.values_mut().for_each(round_numbers),
+        _ => {}
     }
 }
 
