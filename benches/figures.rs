@@ -1,8 +1,10 @@
 //! Time to build each seed figure: the scene's constructions and the figure
-//! model, then the SVG text, then both; and one PNG.
+//! model, then the SVG text, then both; each diagram's model and SVG; and
+//! one PNG.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use slider_crank::FigureName;
+use slider_crank::figure::FigureOptions;
 use slider_crank::render::{to_png, to_svg};
 use std::hint::black_box;
 use std::time::Duration;
@@ -24,6 +26,18 @@ fn figures(c: &mut Criterion) {
         });
         group.bench_function(format!("total/{}", name.name()), |b| {
             b.iter(|| to_svg(&black_box(&scene).figure()))
+        });
+    }
+    // The diagrams: plots with curves traced to 0.01 px, and the
+    // mechanism panels they draw on.
+    let defaults = FigureOptions::default();
+    for name in FigureName::DIAGRAMS {
+        group.bench_function(format!("model/{}", name.name()), |b| {
+            b.iter(|| black_box(name).figure(&defaults).unwrap())
+        });
+        let figure = name.figure(&defaults).unwrap();
+        group.bench_function(format!("svg/{}", name.name()), |b| {
+            b.iter(|| to_svg(black_box(&figure)))
         });
     }
     group.finish();
