@@ -38,7 +38,11 @@
 //! constructions they draw. It builds an immutable [`Figure`] in world
 //! coordinates, which [`render::to_svg`] writes with one world-to-page map
 //! per panel (and [`render::to_png`] rasterises). The seeds' own figures
-//! are named by [`FigureName`].
+//! are named by [`FigureName`], and so are the diagrams (velocity and
+//! acceleration against θ, time or position, polar diagrams, centrodes,
+//! Ng's graphs), built by [`FigureName::figure`] from plot panels
+//! ([`diagram::Plot`]) whose curves the curve engine traces to a tolerance
+//! in page units.
 //!
 //! ```
 //! use slider_crank::{FigureName, Layer, render::to_svg};

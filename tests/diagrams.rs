@@ -973,3 +973,28 @@ fn other_mechanisms_draw_cleanly() {
         assert!(svg.contains("id=\"curve-"), "{}", name.name());
     }
 }
+
+#[test]
+fn metadata_keeps_the_contract_and_ids_are_unique() {
+    for name in FigureName::DIAGRAMS {
+        let svg = to_svg(&figure(name));
+        let meta = metadata(&svg);
+        assert_eq!(meta["figure"], name.name());
+        assert!(meta["mechanism"]["crank"].is_number(), "{}", name.name());
+        assert_eq!(meta["page_from_world"].as_array().unwrap().len(), 6);
+        assert!(meta["tolerance"].as_f64().unwrap() > 0.0);
+        let panels = svg.matches("data-page-from-world=\"").count();
+        assert_eq!(panels, meta["panels"].as_array().unwrap().len());
+        let mut ids: Vec<&str> = svg
+            .match_indices(" id=\"")
+            .map(|(i, _)| {
+                let s = &svg[i + 5..];
+                &s[..s.find('"').unwrap()]
+            })
+            .collect();
+        let all = ids.len();
+        ids.sort();
+        ids.dedup();
+        assert_eq!(ids.len(), all, "{}: an id is repeated", name.name());
+    }
+}

@@ -180,7 +180,8 @@ impl FigureName {
     }
 
     /// The crank angle it is drawn at (the pose whose construction a
-    /// diagram shows; the plane's tilt for `ng-fig-2-incline`), in degrees.
+    /// diagram shows; the plane's tilt for `ng-fig-2-incline`), in degrees;
+    /// 0 for a diagram that draws no pose.
     pub fn angle_degrees(&self) -> f64 {
         match self {
             FigureName::Fig62Displacement => 40.0,

@@ -379,12 +379,6 @@ impl Panel {
         })
     }
 
-    /// The same panel under another id.
-    pub fn renamed(mut self, id: impl Into<String>) -> Self {
-        self.id = id.into();
-        self
-    }
-
     /// The same panel with `items` added after its own.
     pub fn with_items(mut self, items: impl IntoIterator<Item = Item>) -> Self {
         self.items.extend(items);

@@ -69,6 +69,7 @@ fn rod(p: &Pose) -> (f64, f64) {
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
     sheet.meta("ratios", serde_json::json!(RATIOS.map(|(n, _)| n)));
     let panels: [(&str, &str, &str, ErrorOf); 4] = [
         (

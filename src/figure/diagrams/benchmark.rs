@@ -69,6 +69,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     };
     let (e0, e1) = range(&|r| r.error);
     let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
     let width = 0.5 * (page.width() - 48.0);
     let height = page.height() - 32.0 - 40.0;
     let dashes = [Dash::Solid, Dash::Dashed, Dash::DashDot, Dash::Dotted];

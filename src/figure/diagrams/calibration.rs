@@ -24,6 +24,7 @@ fn equation(fit: &LineFit) -> String {
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
     let points: Vec<(f64, f64)> = match ctx.options.data.as_deref() {
         Some(text) => Table::parse(text, "data")?.pairs(&["force", "weight"], &["strain"])?,
         None => NG_TABLE_1.to_vec(),

@@ -23,6 +23,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     }
     let mu = mu_from_tilt_degrees(tilt)?;
     let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
     sheet.meta("tilt_deg", serde_json::json!(tilt));
     sheet.meta("mu", serde_json::json!(mu));
     let phi = ctx.angle.radians();
@@ -132,7 +133,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     ));
     let mut label = |id: &str, at: Point, text: &str| {
         items.push(Item::new(
-            format!("label-{id}"),
+            format!("label-force-{id}"),
             Role::Label,
             Shape::Label {
                 anchor: at,
