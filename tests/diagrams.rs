@@ -402,35 +402,7 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
                 }
             }
         }
-        FigureName::Fig61Centrodes => {
-            let (r, l) = (0.5, 1.25);
-            let theta0 = 35.0 * DEG;
-            let fixed = move |t: f64| {
-                let x = engine(r, l, t).0.d(0);
-                (x, x * t.tan())
-            };
-            // In the rod's frame (origin A, x towards B), carried with the
-            // rod at θ0.
-            let moving = move |t: f64| {
-                let x = engine(r, l, t).0.d(0);
-                let k = x * t.tan();
-                let h = r * t.sin();
-                let wr = (l * l - h * h).sqrt();
-                let (px, py) = (k * h / l, -k * wr / l);
-                let a0 = (engine(r, l, theta0).0.d(0), 0.0);
-                let b0 = (r * theta0.cos(), r * theta0.sin());
-                let u = ((b0.0 - a0.0) / l, (b0.1 - a0.1) / l);
-                let v = (-u.1, u.0);
-                (a0.0 + u.0 * px + v.0 * py, a0.1 + u.1 * px + v.1 * py)
-            };
-            let e = 1e-9;
-            let one = (-0.5 * PI + e, 0.5 * PI - e);
-            let two = (0.5 * PI + e, 1.5 * PI - e);
-            add("curve-centrode-fixed-1", exact(fixed, &[one]));
-            add("curve-centrode-fixed-2", exact(fixed, &[two]));
-            add("curve-centrode-moving-1", exact(moving, &[one]));
-            add("curve-centrode-moving-2", exact(moving, &[two]));
-        }
+        FigureName::Fig61Centrodes => return centrodes(35.0),
         FigureName::CouplerCurves => {
             for (t0, id) in [(0.25, "25"), (0.5, "50"), (0.75, "75")] {
                 add(
@@ -485,6 +457,42 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
         }
         _ => {}
     }
+    v
+}
+
+/// The centrodes of fig-61 (r = 0.5, l = 1.25), the moving one carried with
+/// the rod at `degrees`.
+fn centrodes(degrees: f64) -> Vec<(String, Exact)> {
+    let (r, l) = (0.5, 1.25);
+    let theta0 = degrees * DEG;
+    let mut v: Vec<(String, Exact)> = Vec::new();
+    let mut add = |id: &str, e: Exact| v.push((id.to_string(), e));
+
+    let fixed = move |t: f64| {
+        let x = engine(r, l, t).0.d(0);
+        (x, x * t.tan())
+    };
+    // In the rod's frame (origin A, x towards B), carried with the
+    // rod at θ0.
+    let moving = move |t: f64| {
+        let x = engine(r, l, t).0.d(0);
+        let k = x * t.tan();
+        let h = r * t.sin();
+        let wr = (l * l - h * h).sqrt();
+        let (px, py) = (k * h / l, -k * wr / l);
+        let a0 = (engine(r, l, theta0).0.d(0), 0.0);
+        let b0 = (r * theta0.cos(), r * theta0.sin());
+        let u = ((b0.0 - a0.0) / l, (b0.1 - a0.1) / l);
+        let v = (-u.1, u.0);
+        (a0.0 + u.0 * px + v.0 * py, a0.1 + u.1 * px + v.1 * py)
+    };
+    let e = 1e-9;
+    let one = (-0.5 * PI + e, 0.5 * PI - e);
+    let two = (0.5 * PI + e, 1.5 * PI - e);
+    add("curve-centrode-fixed-1", exact(fixed, &[one]));
+    add("curve-centrode-fixed-2", exact(fixed, &[two]));
+    add("curve-centrode-moving-1", exact(moving, &[one]));
+    add("curve-centrode-moving-2", exact(moving, &[two]));
     v
 }
 
@@ -754,20 +762,30 @@ fn diagrams_render_inked_and_clean() {
 
 #[test]
 fn centrode_branches_run_to_the_frame_edge_without_spikes() {
-    let name = FigureName::Fig61Centrodes;
-    let svg = to_svg(&figure(name));
-    let meta = metadata(&svg);
+    // The default pose, and poses at a dead centre and at the poles.
+    for degrees in [35.0, 0.0, 90.0, 200.0, 270.0] {
+        let options = FigureOptions {
+            angle: Some(slider_crank::Angle::from_degrees(degrees).unwrap()),
+            ..FigureOptions::default()
+        };
+        let svg = to_svg(&FigureName::Fig61Centrodes.figure(&options).unwrap());
+        centrodes_reach_the_edge(&svg, degrees);
+    }
+}
+
+fn centrodes_reach_the_edge(svg: &str, degrees: f64) {
+    let meta = metadata(svg);
     let tolerance = meta["tolerance"].as_f64().unwrap();
     let mut top_and_bottom = (false, false);
-    for (id, e) in curves(name) {
-        let (panel, map) = panel_map(&svg, &id);
+    for (id, e) in centrodes(degrees) {
+        let (panel, map) = panel_map(svg, &id);
         let f = frame_of(&meta, &panel);
         let on_edge = |p: P| {
             let dx = (p.0 - f[0]).abs().min((p.0 - f[0] - f[2]).abs());
             let dy = (p.1 - f[1]).abs().min((p.1 - f[1] - f[3]).abs());
             inside(&f, p, -tolerance) && dx.min(dy) <= tolerance
         };
-        let paths = subpaths(&attr(&svg, &id, "d").unwrap());
+        let paths = subpaths(&attr(svg, &id, "d").unwrap());
         assert!(!paths.is_empty(), "{id}");
         let s = sample(&e, &map, 6000);
         for (start, segs) in &paths {
@@ -794,7 +812,10 @@ fn centrode_branches_run_to_the_frame_edge_without_spikes() {
                 for k in 1..32 {
                     let q = eval(at, seg, k as f64 / 32.0);
                     let dev = distance_to_curve(q, &e, &s, &map);
-                    assert!(dev <= tolerance, "{id}: {q:?} is {dev} px off its branch");
+                    assert!(
+                        dev <= tolerance,
+                        "{degrees}° {id}: {q:?} is {dev} px off its branch"
+                    );
                 }
                 at = end(seg);
             }
