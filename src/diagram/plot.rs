@@ -118,7 +118,11 @@ impl Plot {
             Point::new(x0, y0),
             Point::new(area.x, area.y + area.height),
         )
-        .ok_or_else(|| too_small(&rect))?;
+        .ok_or_else(|| Error::OutOfRange {
+            name: "axis range",
+            value: (x1 - x0).max(y1 - y0),
+            reason: "an axis range too large or too small to map onto the page".into(),
+        })?;
         Ok(Self {
             name: name.to_string(),
             rect,
