@@ -1,8 +1,10 @@
 //! Time to build each seed figure: the scene's constructions and the figure
-//! model, then the SVG text, then both; and one PNG.
+//! model, then the SVG text, then both; each diagram's model and SVG; and
+//! one PNG.
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use slider_crank::FigureName;
+use slider_crank::figure::FigureOptions;
 use slider_crank::render::{to_png, to_svg};
 use std::hint::black_box;
 use std::time::Duration;
@@ -13,8 +15,8 @@ fn figures(c: &mut Criterion) {
         .sample_size(40)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_secs(2));
-    for name in FigureName::ALL {
-        let scene = name.scene();
+    for name in FigureName::SCENES {
+        let scene = name.scene().unwrap();
         group.bench_function(format!("model/{}", name.name()), |b| {
             b.iter(|| black_box(&scene).figure())
         });
@@ -26,8 +28,20 @@ fn figures(c: &mut Criterion) {
             b.iter(|| to_svg(&black_box(&scene).figure()))
         });
     }
+    // The diagrams: plots with curves traced to 0.01 px, and the
+    // mechanism panels they draw on.
+    let defaults = FigureOptions::default();
+    for name in FigureName::DIAGRAMS {
+        group.bench_function(format!("model/{}", name.name()), |b| {
+            b.iter(|| black_box(name).figure(&defaults).unwrap())
+        });
+        let figure = name.figure(&defaults).unwrap();
+        group.bench_function(format!("svg/{}", name.name()), |b| {
+            b.iter(|| to_svg(black_box(&figure)))
+        });
+    }
     group.finish();
-    let svg = to_svg(&FigureName::Fig67Example.scene().figure());
+    let svg = to_svg(&FigureName::Fig67Example.scene().unwrap().figure());
     let mut png = c.benchmark_group("png");
     png.sample_size(10).measurement_time(Duration::from_secs(3));
     png.bench_function("fig-67-example at 2x", |b| {

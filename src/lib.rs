@@ -38,11 +38,15 @@
 //! constructions they draw. It builds an immutable [`Figure`] in world
 //! coordinates, which [`render::to_svg`] writes with one world-to-page map
 //! per panel (and [`render::to_png`] rasterises). The seeds' own figures
-//! are named by [`FigureName`].
+//! are named by [`FigureName`], and so are the diagrams (velocity and
+//! acceleration against θ, time or position, polar diagrams, centrodes,
+//! Ng's graphs), built by [`FigureName::figure`] from plot panels
+//! ([`diagram::Plot`]) whose curves the curve engine traces to a tolerance
+//! in page units.
 //!
 //! ```
 //! use slider_crank::{FigureName, Layer, render::to_svg};
-//! let scene = FigureName::Fig66Kisch.scene();          // §35 engine at 60°
+//! let scene = FigureName::Fig66Kisch.scene().unwrap(); // §35 engine at 60°
 //! let (figure, computed) = scene.build();
 //! assert_eq!(computed.instant_centre, 0);              // Kisch needs no D
 //! let svg = to_svg(&figure);

@@ -30,7 +30,7 @@ enum Command {
     /// Sweep the whole turn and compare every construction with the
     /// analytic core; exits 1 if any difference exceeds the tolerance
     Check(cli::check::CheckArgs),
-    /// Draw one of the seeds' figures as SVG (or PNG with --out FILE.png)
+    /// Draw a named figure or diagram as SVG (or PNG with --out FILE.png)
     Figure(cli::figure::FigureArgs),
     /// Draw the figure a TOML scene file describes
     Scene(cli::scene::SceneArgs),

@@ -213,6 +213,30 @@ impl Pose {
         -r * s / w + rc_over_w * rc_over_w * self.h / w
     }
 
+    /// d³s/dθ³ = r sin θ + r sin θ φ′ − 2 r cos θ φ″ − h φ‴ (h = r sin θ − e,
+    /// φ′, φ″, φ‴ the obliquity's derivatives): the rate of change of
+    /// [`Pose::position_acceleration`], which acceleration diagrams need for
+    /// their exact tangents.
+    pub fn position_jerk(&self) -> f64 {
+        let r = self.mechanism.crank;
+        let (s, c) = (self.angle.sin(), self.angle.cos());
+        r * s + r * s * self.obliquity_rate()
+            - 2.0 * r * c * self.obliquity_acceleration()
+            - self.h * self.obliquity_jerk()
+    }
+
+    /// d³φ/dθ³ = h‴/w + (3 h h′ h″ + h′³)/w³ + 3 h² h′³/w⁵ with h = r sin θ − e,
+    /// h′ = r cos θ, h″ = −r sin θ, h‴ = −r cos θ, w = l cos φ: the rate of
+    /// change of [`Pose::obliquity_acceleration`].
+    pub fn obliquity_jerk(&self) -> f64 {
+        let r = self.mechanism.crank;
+        let (s, c) = (self.angle.sin(), self.angle.cos());
+        let (h, w) = (self.h, self.w);
+        let (h1, h2, h3) = (r * c, -r * s, -r * c);
+        let q3 = h1 * h1 * h1 / (w * w * w);
+        h3 / w + 3.0 * h * h1 * h2 / (w * w * w) + q3 + 3.0 * h * h * q3 / (w * w)
+    }
+
     /// The textbook's error due to obliquity, x_A − (r cos θ + l) = w − l,
     /// computed as −h²/(w + l) without cancellation; r(√(n² − sin²θ) − n)
     /// when e = 0. Never positive.
@@ -309,6 +333,42 @@ mod tests {
             let ng = std::f64::consts::PI - p.obliquity() - p.angle().radians();
             assert!((p.transmission_angle() - ng).abs() < 1e-14, "{d}");
         }
+    }
+
+    #[test]
+    fn third_derivatives_match_differences_of_the_second() {
+        // Central differences of the exact second derivatives, against the
+        // exact third, with an offset and a short rod.
+        for m in [
+            SliderCrank::in_line(0.5, 3.0).unwrap(),
+            SliderCrank::new(1.0, 1.6, -0.5).unwrap(),
+        ] {
+            for d in [0.0f64, 10.0, 45.0, 90.0, 150.0, 200.0, 300.0] {
+                let h = 1e-5;
+                let at = |x: f64| m.pose(Angle::from_radians(d.to_radians() + x).unwrap());
+                let (p, q, here) = (at(h), at(-h), at(0.0));
+                let ds3 = (p.position_acceleration() - q.position_acceleration()) / (2.0 * h);
+                let dp3 = (p.obliquity_acceleration() - q.obliquity_acceleration()) / (2.0 * h);
+                let scale = m.crank() * (1.0 + here.position_jerk().abs());
+                assert!(
+                    (here.position_jerk() - ds3).abs() < 1e-7 * scale,
+                    "{m:?} {d}: {} vs {ds3}",
+                    here.position_jerk()
+                );
+                assert!(
+                    (here.obliquity_jerk() - dp3).abs() < 1e-7 * (1.0 + dp3.abs()),
+                    "{m:?} {d}: {} vs {dp3}",
+                    here.obliquity_jerk()
+                );
+            }
+        }
+        // In line at θ = 0: s is even in θ, so s‴(0) = 0; and
+        // φ‴(0) = −(r/l)(1 − r²/l²) from sin φ = (r/l) sin θ.
+        let m = SliderCrank::in_line(0.5, 3.0).unwrap();
+        let outer = m.pose(deg(0.0));
+        assert_eq!(outer.position_jerk(), 0.0);
+        let k: f64 = 1.0 / 6.0;
+        assert!((outer.obliquity_jerk() + k * (1.0 - k * k)).abs() < 1e-16);
     }
 
     #[test]

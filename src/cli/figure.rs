@@ -2,15 +2,20 @@
 
 use super::args::SpeedArgs;
 use clap::Args;
+use slider_crank::figure::{FigureOptions, Fit};
 use slider_crank::render::{to_png, to_svg, write_atomic};
 use slider_crank::{Angle, Error, Figure, FigureName, Layer, Result, SliderCrank, Style};
 use std::path::PathBuf;
 
-/// Draw a figure of the seeds.
+/// Draw a named figure: a mechanism figure of the seeds or a diagram.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
-    /// fig-62-displacement, fig-63-velocity, fig-65-klein, fig-66-kisch,
-    /// fig-67-example, ng-fig-1-torque or ng-fig-a1-velocity
+    /// Mechanism figures: fig-62-displacement, fig-63-velocity,
+    /// fig-65-klein, fig-66-kisch, fig-67-example, ng-fig-1-torque,
+    /// ng-fig-a1-velocity. Diagrams: fig-61-centrodes,
+    /// fig-64-velocity-diagrams, acceleration-diagrams, rod-motion,
+    /// approximation-error, coupler-curves, ng-fig-2-incline,
+    /// ng-fig-7-calibration, ng-fig-8-forces, curve-benchmark
     #[arg(value_name = "NAME")]
     pub name: String,
     /// Crank radius r [default: the figure's, 0.5 ft or Ng's 25 mm]
@@ -22,7 +27,8 @@ pub struct FigureArgs {
     /// Offset e of the line of stroke [default: 0]
     #[arg(long, value_name = "E", allow_hyphen_values = true)]
     pub offset: Option<f64>,
-    /// Crank angle in degrees [default: the figure's]
+    /// Crank angle in degrees of the pose drawn [default: the figure's];
+    /// for ng-fig-2-incline, the tilt of the plane
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub angle: Option<f64>,
     #[command(flatten)]
@@ -35,6 +41,17 @@ pub struct FigureArgs {
     /// textbook (black ink) or handout (colour) [default: textbook]
     #[arg(long, value_name = "STYLE")]
     pub style: Option<String>,
+    /// Measured data, CSV with a header line: ng-fig-8-forces (columns
+    /// angle, force; default examples/ng-experiment.csv, Ng's F'),
+    /// ng-fig-7-calibration (force, strain; default Ng's Table 1),
+    /// curve-benchmark (default docs/curve-benchmarks.csv)
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<PathBuf>,
+    /// Calibration line of ng-fig-7-calibration: origin (Ng's trendline
+    /// through zero), intercept (ordinary least squares) or both
+    /// [default: both]
+    #[arg(long, value_name = "FIT")]
+    pub fit: Option<String>,
     /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
     /// printing SVG
     #[arg(long, value_name = "FILE")]
@@ -63,31 +80,70 @@ pub fn emit(figure: &Figure, out: Option<&PathBuf>) -> Result<String> {
 
 /// Runs the subcommand: the SVG text, or nothing when written to a file.
 pub fn run(args: &FigureArgs) -> Result<String> {
-    let mut scene = FigureName::from_name(&args.name)?.scene();
-    if args.crank.is_some() || args.rod.is_some() || args.offset.is_some() {
-        let m = scene.mechanism();
-        let mechanism = SliderCrank::new(
+    let name = FigureName::from_name(&args.name)?;
+    let mechanism = if args.crank.is_some() || args.rod.is_some() || args.offset.is_some() {
+        let m = name.mechanism();
+        Some(SliderCrank::new(
             args.crank.unwrap_or(m.crank()),
             args.rod.unwrap_or(m.rod()),
             args.offset.unwrap_or(m.offset()),
-        )?;
-        scene = slider_crank::Scene::new(mechanism, scene.angles()[0])
-            .named(scene.name())
-            .with_layers(scene.layers().to_vec())
-            .with_page(*scene.page())
-            .with_style(scene.style())
-            .with_notation(scene.notation())
-            .mirrored(scene.is_mirrored())
-            .with_unit(scene.unit())
-            .with_force_unit(scene.force_unit())
-            .with_torque(scene.torque())?
-            .with_omega(scene.omega())?;
+        )?)
+    } else {
+        None
+    };
+    let angle = args.angle.map(Angle::from_degrees).transpose()?;
+    let omega = if args.speed.rpm.is_some() || args.speed.omega.is_some() {
+        Some(args.speed.omega()?)
+    } else {
+        None
+    };
+    let style = args.style.as_deref().map(Style::from_name).transpose()?;
+    let Some(mut scene) = name.scene() else {
+        if args.layers.is_some() {
+            return Err(Error::Parse(format!(
+                "{} is a diagram: --layers applies to the mechanism figures only",
+                name.name()
+            )));
+        }
+        let data = match &args.data {
+            Some(path) => Some(
+                std::fs::read_to_string(path)
+                    .map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?,
+            ),
+            None => None,
+        };
+        let options = FigureOptions {
+            mechanism,
+            omega,
+            angle,
+            style,
+            data,
+            fit: args.fit.as_deref().map(Fit::from_name).transpose()?,
+        };
+        let figure = name.figure(&options).map_err(|e| match (&args.data, e) {
+            (Some(path), Error::Parse(m)) if m.starts_with("data") => {
+                Error::Parse(format!("{}: {m}", path.display()))
+            }
+            (_, e) => e,
+        })?;
+        return emit(&figure, args.out.as_ref());
+    };
+    for (given, flag) in [
+        (args.data.is_some(), "--data"),
+        (args.fit.is_some(), "--fit"),
+    ] {
+        if given {
+            return Err(Error::Parse(format!("{} does not use {flag}", name.name())));
+        }
     }
-    if let Some(a) = args.angle {
-        scene = scene.with_angles(vec![Angle::from_degrees(a)?])?;
+    if let Some(m) = mechanism {
+        scene = scene.with_mechanism(m);
     }
-    if args.speed.rpm.is_some() || args.speed.omega.is_some() {
-        scene = scene.with_omega(args.speed.omega()?)?;
+    if let Some(a) = angle {
+        scene = scene.with_angles(vec![a])?;
+    }
+    if let Some(w) = omega {
+        scene = scene.with_omega(w)?;
     }
     if let Some(list) = &args.layers {
         let layers = Layer::parse_list(list)?;
@@ -96,8 +152,8 @@ pub fn run(args: &FigureArgs) -> Result<String> {
         }
         scene = scene.with_layers(layers);
     }
-    if let Some(s) = &args.style {
-        scene = scene.with_style(Style::from_name(s)?);
+    if let Some(s) = style {
+        scene = scene.with_style(s);
     }
     emit(&scene.figure(), args.out.as_ref())
 }

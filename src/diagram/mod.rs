@@ -79,12 +79,16 @@
 //! # Ok::<(), slider_crank::Error>(())
 //! ```
 
+mod axis;
 mod curve;
 mod locus;
 mod measure;
 mod path;
+mod plot;
 
+pub use axis::{Axis, Scale, Tick, format_number};
 pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace};
 pub use locus::{Locus, LocusKind};
 pub use measure::{Deviation, measure};
 pub use path::{Path, Segment, Subpath};
+pub use plot::Plot;

@@ -1,5 +1,8 @@
-//! The seeds' mechanism figures, by name, with the seeds' own parameters.
+//! The named figures, with the seeds' own parameters: mechanism figures
+//! drawn by a [`Scene`], and diagrams (plots against θ, time or position,
+//! polar diagrams, centrodes, Ng's graphs).
 
+use super::{Figure, FigureOptions, diagrams};
 use crate::error::{Error, Result};
 use crate::render::Style;
 use crate::scene::{Layer, Notation, Page, Scene};
@@ -30,11 +33,39 @@ pub enum FigureName {
     NgFig1Torque,
     /// Ng Fig. A1: the velocity construction in Ng's letters (I, M).
     NgFigA1Velocity,
+    /// Textbook Fig. 61: the rod's fixed centrode (full) and moving
+    /// centrode (dotted), with the construction of D for one pose.
+    Fig61Centrodes,
+    /// Textbook Fig. 64: the polar diagram of piston velocity (E′ on the
+    /// crank, CE′ = CE), the velocity on a distance base (E″ over A) and on
+    /// a time base against simple harmonic motion.
+    Fig64VelocityDiagrams,
+    /// Piston acceleration on a distance base and a time base against
+    /// simple harmonic motion, and a polar acceleration diagram.
+    AccelerationDiagrams,
+    /// The rod's angular velocity and acceleration against θ (§37), with
+    /// eq. (2a).
+    RodMotion,
+    /// The error of the textbook's approximations (eq. 2, 3, 2a and the
+    /// obliquity term) against θ for n = 4, 5, 6.
+    ApproximationError,
+    /// Ovals traced by points of the rod (§34).
+    CouplerCurves,
+    /// Ng Fig. 2: the block on an inclined plane, μ = tan φ.
+    NgFig2Incline,
+    /// Ng Fig. 7: the calibration points, fitted line(s), equation and R².
+    NgFig7Calibration,
+    /// Ng Fig. 8: F and F′ (theory) against θ with the measured F′, and the
+    /// transmission angle.
+    NgFig8Forces,
+    /// The curve engine's benchmark: segments and time against measured
+    /// error, log–log (docs/curve-benchmarks.csv).
+    CurveBenchmark,
 }
 
 impl FigureName {
-    /// Every named figure.
-    pub const ALL: [FigureName; 7] = [
+    /// The mechanism figures, drawn by a [`Scene`].
+    pub const SCENES: [FigureName; 7] = [
         FigureName::Fig62Displacement,
         FigureName::Fig63Velocity,
         FigureName::Fig65Klein,
@@ -42,6 +73,41 @@ impl FigureName {
         FigureName::Fig67Example,
         FigureName::NgFig1Torque,
         FigureName::NgFigA1Velocity,
+    ];
+
+    /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
+    pub const DIAGRAMS: [FigureName; 10] = [
+        FigureName::Fig61Centrodes,
+        FigureName::Fig64VelocityDiagrams,
+        FigureName::AccelerationDiagrams,
+        FigureName::RodMotion,
+        FigureName::ApproximationError,
+        FigureName::CouplerCurves,
+        FigureName::NgFig2Incline,
+        FigureName::NgFig7Calibration,
+        FigureName::NgFig8Forces,
+        FigureName::CurveBenchmark,
+    ];
+
+    /// Every named figure: the scenes, then the diagrams.
+    pub const ALL: [FigureName; 17] = [
+        FigureName::Fig62Displacement,
+        FigureName::Fig63Velocity,
+        FigureName::Fig65Klein,
+        FigureName::Fig66Kisch,
+        FigureName::Fig67Example,
+        FigureName::NgFig1Torque,
+        FigureName::NgFigA1Velocity,
+        FigureName::Fig61Centrodes,
+        FigureName::Fig64VelocityDiagrams,
+        FigureName::AccelerationDiagrams,
+        FigureName::RodMotion,
+        FigureName::ApproximationError,
+        FigureName::CouplerCurves,
+        FigureName::NgFig2Incline,
+        FigureName::NgFig7Calibration,
+        FigureName::NgFig8Forces,
+        FigureName::CurveBenchmark,
     ];
 
     /// The name (`fig-67-example`).
@@ -54,6 +120,16 @@ impl FigureName {
             FigureName::Fig67Example => "fig-67-example",
             FigureName::NgFig1Torque => "ng-fig-1-torque",
             FigureName::NgFigA1Velocity => "ng-fig-a1-velocity",
+            FigureName::Fig61Centrodes => "fig-61-centrodes",
+            FigureName::Fig64VelocityDiagrams => "fig-64-velocity-diagrams",
+            FigureName::AccelerationDiagrams => "acceleration-diagrams",
+            FigureName::RodMotion => "rod-motion",
+            FigureName::ApproximationError => "approximation-error",
+            FigureName::CouplerCurves => "coupler-curves",
+            FigureName::NgFig2Incline => "ng-fig-2-incline",
+            FigureName::NgFig7Calibration => "ng-fig-7-calibration",
+            FigureName::NgFig8Forces => "ng-fig-8-forces",
+            FigureName::CurveBenchmark => "curve-benchmark",
         }
     }
 
@@ -71,13 +147,41 @@ impl FigureName {
     }
 
     /// Whether it follows Ng's paper (letters O, C, P, I, M; r = 25 mm,
-    /// l = 72 mm) rather than the textbook (§35 engine: r = 0.5 ft,
-    /// l = 3 ft, 250 rpm).
+    /// l = 72 mm; newtons) rather than the textbook (§35 engine:
+    /// r = 0.5 ft, l = 3 ft, 250 rpm).
     pub fn is_ng(&self) -> bool {
-        matches!(self, FigureName::NgFig1Torque | FigureName::NgFigA1Velocity)
+        matches!(
+            self,
+            FigureName::NgFig1Torque
+                | FigureName::NgFigA1Velocity
+                | FigureName::NgFig2Incline
+                | FigureName::NgFig7Calibration
+                | FigureName::NgFig8Forces
+        )
     }
 
-    /// The crank angle it is drawn at, in degrees.
+    /// Whether it is a diagram rather than a mechanism figure drawn by a
+    /// [`Scene`] (then [`FigureName::scene`] is `None`).
+    pub fn is_diagram(&self) -> bool {
+        FigureName::DIAGRAMS.contains(self)
+    }
+
+    /// The mechanism it is drawn for: Ng's rig (r = 25 mm, l = 72 mm), or
+    /// the textbook's §35 engine (r = 0.5 ft, l = 3 ft) except for
+    /// `fig-61-centrodes`, drawn with a shorter rod (l = 1.25 ft, n = 2.5)
+    /// on which the centrodes are far enough apart to read.
+    pub fn mechanism(&self) -> SliderCrank {
+        let m = match self {
+            _ if self.is_ng() => SliderCrank::in_line(25.0, 72.0),
+            FigureName::Fig61Centrodes => SliderCrank::in_line(0.5, 1.25),
+            _ => SliderCrank::in_line(0.5, 3.0),
+        };
+        m.expect("the catalogue's mechanisms are valid")
+    }
+
+    /// The crank angle it is drawn at (the pose whose construction a
+    /// diagram shows; the plane's tilt for `ng-fig-2-incline`), in degrees;
+    /// 0 for a diagram that draws no pose.
     pub fn angle_degrees(&self) -> f64 {
         match self {
             FigureName::Fig62Displacement => 40.0,
@@ -86,10 +190,20 @@ impl FigureName {
             FigureName::Fig67Example => 45.0,
             FigureName::NgFig1Torque => 60.0,
             FigureName::NgFigA1Velocity => 40.0,
+            FigureName::Fig61Centrodes => 35.0,
+            FigureName::Fig64VelocityDiagrams => 50.0,
+            FigureName::AccelerationDiagrams => 45.0,
+            FigureName::RodMotion => 45.0,
+            FigureName::CouplerCurves => 40.0,
+            FigureName::NgFig2Incline => 45.0,
+            FigureName::ApproximationError
+            | FigureName::NgFig7Calibration
+            | FigureName::NgFig8Forces
+            | FigureName::CurveBenchmark => 0.0,
         }
     }
 
-    /// The layers it draws.
+    /// The layers of a mechanism figure; empty for a diagram.
     pub fn layers(&self) -> Vec<Layer> {
         use Layer::*;
         match self {
@@ -100,6 +214,7 @@ impl FigureName {
             FigureName::Fig67Example => vec![Mechanism, Velocity, Kisch, Scales],
             FigureName::NgFig1Torque => vec![Mechanism, Torque],
             FigureName::NgFigA1Velocity => vec![Mechanism, Velocity],
+            _ => Vec::new(),
         }
     }
 
@@ -112,27 +227,69 @@ impl FigureName {
             FigureName::Fig67Example => (760.0, 520.0),
             FigureName::NgFig1Torque => (640.0, 270.0),
             FigureName::NgFigA1Velocity => (600.0, 480.0),
+            FigureName::Fig61Centrodes => (760.0, 600.0),
+            FigureName::Fig64VelocityDiagrams => (860.0, 860.0),
+            FigureName::AccelerationDiagrams => (900.0, 760.0),
+            FigureName::RodMotion => (760.0, 640.0),
+            FigureName::ApproximationError => (900.0, 680.0),
+            FigureName::CouplerCurves => (760.0, 340.0),
+            FigureName::NgFig2Incline => (620.0, 520.0),
+            FigureName::NgFig7Calibration => (640.0, 460.0),
+            FigureName::NgFig8Forces => (760.0, 700.0),
+            FigureName::CurveBenchmark => (900.0, 540.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }
 
-    /// The scene with the seed's own parameters.
-    pub fn scene(&self) -> Scene {
-        let (mechanism, unit, force) = if self.is_ng() {
-            (SliderCrank::in_line(25.0, 72.0), "mm", "N")
-        } else {
-            (SliderCrank::in_line(0.5, 3.0), "ft", "lbf")
+    /// The figure with `options` applied (see [`FigureOptions`]); errors
+    /// for an option the figure does not use, for bad data, and for what
+    /// the mechanism cannot draw.
+    pub fn figure(&self, options: &FigureOptions) -> Result<Figure> {
+        let Some(mut scene) = self.scene() else {
+            return diagrams::build(*self, options);
         };
-        let mechanism = mechanism.expect("the seeds' mechanisms are valid");
+        if let Some(bad) = options
+            .given()
+            .into_iter()
+            .find(|o| *o == "--data" || *o == "--fit")
+        {
+            return Err(Error::Parse(format!("{} does not use {bad}", self.name())));
+        }
+        if let Some(m) = options.mechanism {
+            scene = scene.with_mechanism(m);
+        }
+        if let Some(a) = options.angle {
+            scene = scene.with_angles(vec![a])?;
+        }
+        if let Some(w) = options.omega {
+            scene = scene.with_omega(w)?;
+        }
+        if let Some(s) = options.style {
+            scene = scene.with_style(s);
+        }
+        Ok(scene.figure())
+    }
+
+    /// The scene of a mechanism figure with the seed's own parameters;
+    /// `None` for a diagram (use [`FigureName::figure`]).
+    pub fn scene(&self) -> Option<Scene> {
+        if self.is_diagram() {
+            return None;
+        }
+        let (unit, force) = if self.is_ng() {
+            ("mm", "N")
+        } else {
+            ("ft", "lbf")
+        };
         let angle = Angle::from_degrees(self.angle_degrees()).expect("finite");
-        let scene = Scene::new(mechanism, angle)
+        let scene = Scene::new(self.mechanism(), angle)
             .named(self.name())
             .with_layers(self.layers())
             .with_page(self.page())
             .with_style(Style::Textbook)
             .with_unit(unit)
             .with_force_unit(force);
-        if self.is_ng() {
+        Some(if self.is_ng() {
             scene
                 .with_notation(Notation::Ng)
                 .mirrored(false)
@@ -140,7 +297,7 @@ impl FigureName {
                 .expect("finite")
         } else {
             scene.with_notation(Notation::Textbook).mirrored(true)
-        }
+        })
     }
 }
 
@@ -155,5 +312,10 @@ mod tests {
         }
         let err = FigureName::from_name("fig-64").unwrap_err().to_string();
         assert!(err.contains("fig-63-velocity"), "{err}");
+        assert!(err.contains("curve-benchmark"), "{err}");
+        for f in FigureName::ALL {
+            assert_eq!(f.scene().is_none(), f.is_diagram(), "{}", f.name());
+            assert!(FigureName::SCENES.contains(&f) != FigureName::DIAGRAMS.contains(&f));
+        }
     }
 }

@@ -7,13 +7,16 @@
 //! panel's one [`PageFromWorld`].
 
 mod catalogue;
+mod diagrams;
 mod model;
+mod options;
 mod path;
 mod text;
 mod transform;
 
 pub use catalogue::FigureName;
-pub use model::{Figure, Item, Panel, Role, Shape, TextSize};
+pub use model::{Align, Dash, Figure, Item, Panel, Role, Shape, Symbol, TextSize};
+pub use options::{FigureOptions, Fit};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use text::{RichText, Run};
 pub use transform::{PageFromWorld, PageRect};

@@ -64,6 +64,51 @@ pub enum TextSize {
     Letter,
     /// A value or a short caption beside a line.
     Small,
+    /// Tick labels and legends of a plot.
+    Tick,
+}
+
+/// How a fixed text ([`Shape::Text`]) sits on its point, along its
+/// baseline.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Align {
+    /// The text starts at the point.
+    Start,
+    /// The text is centred on the point.
+    Middle,
+    /// The text ends at the point.
+    End,
+}
+
+/// A stroke pattern for one item, in place of its role's (plots tell
+/// their series apart by it).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Dash {
+    /// A full line.
+    Solid,
+    /// Long dashes.
+    Dashed,
+    /// Dots.
+    Dotted,
+    /// Long dash, dot.
+    DashDot,
+}
+
+/// The symbol of a data point ([`Shape::Marker`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Symbol {
+    /// A filled circle.
+    Disc,
+    /// An open circle.
+    Circle,
+    /// An open square.
+    Square,
+    /// An open triangle, point up.
+    Triangle,
+    /// An open diamond.
+    Diamond,
+    /// A diagonal cross.
+    Cross,
 }
 
 /// A primitive. Positions are in the panel's world coordinates; sizes of
@@ -189,6 +234,29 @@ pub enum Shape {
         /// How large.
         size: TextSize,
     },
+    /// A text set at a fixed place, not moved clear of lines: `offset`
+    /// page units (y down) from the page point of `at`, aligned by `align`
+    /// with the middle of its letters on that place (tick labels, axis
+    /// titles, legends).
+    Text {
+        /// The world point it is set by.
+        at: Point,
+        /// Page offset from that point.
+        offset: Vector,
+        /// The text.
+        text: RichText,
+        /// Where the point is along the text.
+        align: Align,
+        /// How large.
+        size: TextSize,
+    },
+    /// A data point: a symbol of fixed page size centred on a world point.
+    Marker {
+        /// The point.
+        centre: Point,
+        /// Its symbol.
+        symbol: Symbol,
+    },
     /// Lines of text at a fixed page position (top-left corner), for scale
     /// notes.
     Note {
@@ -209,16 +277,25 @@ pub struct Item {
     pub role: Role,
     /// The geometry.
     pub shape: Shape,
+    /// A stroke pattern in place of the role's; `None` keeps the role's.
+    pub dash: Option<Dash>,
 }
 
 impl Item {
-    /// An item.
+    /// An item drawn in its role's stroke.
     pub fn new(id: impl Into<String>, role: Role, shape: Shape) -> Self {
         Self {
             id: id.into(),
             role,
             shape,
+            dash: None,
         }
+    }
+
+    /// The same item stroked with `dash` instead of its role's pattern.
+    pub fn dashed(mut self, dash: Dash) -> Self {
+        self.dash = Some(dash);
+        self
     }
 }
 
@@ -270,6 +347,42 @@ impl Panel {
     /// The item with `id`, if any.
     pub fn item(&self, id: &str) -> Option<&Item> {
         self.items.iter().find(|i| i.id == id)
+    }
+
+    /// The same panel moved by `(dx, dy)` page units: its rectangle, its
+    /// map and the page corners of its notes; world coordinates are
+    /// unchanged. `None` if the move is not finite.
+    pub fn moved(&self, dx: f64, dy: f64) -> Option<Self> {
+        let [a, b, c, d, e, f] = self.transform.coefficients();
+        let transform = PageFromWorld::new([a, b, c, d, e + dx, f + dy])?;
+        let items = self
+            .items
+            .iter()
+            .map(|item| {
+                let mut item = item.clone();
+                if let Shape::Note { corner, .. } = &mut item.shape {
+                    *corner += Vector::new(dx, dy);
+                }
+                item
+            })
+            .collect();
+        Some(Self {
+            id: self.id.clone(),
+            rect: PageRect::new(
+                self.rect.x + dx,
+                self.rect.y + dy,
+                self.rect.width,
+                self.rect.height,
+            ),
+            transform,
+            items,
+        })
+    }
+
+    /// The same panel with `items` added after its own.
+    pub fn with_items(mut self, items: impl IntoIterator<Item = Item>) -> Self {
+        self.items.extend(items);
+        self
     }
 }
 

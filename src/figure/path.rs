@@ -21,7 +21,7 @@ pub enum PathSegment {
 ///
 /// Built through [`Path::new`] and the `move_to`, `line_to`, `cubic_to`,
 /// `close` methods; a segment with a non-finite coordinate, or a drawing
-/// segment before the first `move_to`, is refused at [`Path::build`], which
+/// segment before the first `move_to`, is refused at [`PathBuilder::build`], which
 /// returns `None` then (never a path with NaN in it).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Path {

@@ -8,7 +8,7 @@ mod png;
 mod style;
 mod svg;
 
-pub use number::{GRID, fmt};
+pub use number::{GRID, fmt, trace_tolerance};
 pub use output::write_atomic;
 pub use png::to_png;
 pub use style::Style;

@@ -18,13 +18,31 @@ pub fn fmt(x: f64) -> String {
     format!("{v}")
 }
 
-/// A coefficient of a map, to 6 decimals.
+/// A coefficient of a map, to 6 decimals, or to 7 significant digits
+/// where that is finer (|x| < 1: the small scales of plot axes in large
+/// units), so that the map read back from the file is good to a relative
+/// 1e-7 or better.
 pub fn fmt_coefficient(x: f64) -> String {
     if !x.is_finite() {
         return "0".into();
     }
-    let v = (x * 1e6).round() / 1e6;
+    let decimals = if x != 0.0 && x.abs() < 1.0 {
+        (6 - x.abs().log10().floor() as i32).clamp(6, 300)
+    } else {
+        6
+    };
+    let v: f64 = format!("{x:.*}", decimals as usize).parse().unwrap_or(0.0);
     if v == 0.0 { "0".into() } else { format!("{v}") }
+}
+
+/// The tolerance to trace a curve to so that its path, once written with
+/// every point rounded to the [`GRID`] (up to `GRID/√2` away), is still
+/// within `tolerance` of the curve, with room for the rounding of the map
+/// in the file: `tolerance − 0.8 GRID`. Below `GRID` the written path cannot
+/// keep the promise whatever the trace does; the curve is then traced to a
+/// fifth of `tolerance` (the two rules meet at `GRID`).
+pub fn trace_tolerance(tolerance: f64) -> f64 {
+    (tolerance - 0.8 * GRID).max(0.2 * tolerance)
 }
 
 #[cfg(test)]
@@ -40,5 +58,13 @@ mod tests {
         assert_eq!(fmt(f64::NAN), "0");
         assert_eq!(fmt(-7.126), "-7.13");
         assert_eq!(fmt_coefficient(151.123456789), "151.123457");
+        assert_eq!(fmt_coefficient(-0.0123456789), "-0.01234568");
+        assert_eq!(fmt_coefficient(0.4), "0.4");
+        assert_eq!(fmt_coefficient(1e-9), "0.000000001");
+        assert_eq!(fmt_coefficient(0.0), "0");
+        // Written path within 0.01 of the curve: traced to 0.002.
+        assert!((trace_tolerance(0.01) - 0.002).abs() < 1e-15);
+        assert!((trace_tolerance(0.004) - 0.0008).abs() < 1e-18);
+        assert!((trace_tolerance(0.1) - 0.092).abs() < 1e-15);
     }
 }

@@ -2,7 +2,7 @@
 //! and a coloured handout.
 
 use crate::error::{Error, Result};
-use crate::figure::{Role, TextSize};
+use crate::figure::{Dash, Role, TextSize};
 use serde::Deserialize;
 
 /// How a figure is drawn.
@@ -35,6 +35,8 @@ pub(crate) const HATCH_DEPTH: f64 = 6.5;
 pub(crate) const RIGHT_ANGLE: f64 = 10.0;
 pub(crate) const ANGLE_RADIUS: f64 = 28.0;
 pub(crate) const NOTE_SIZE: f64 = 13.0;
+/// Half the size of a data marker.
+pub(crate) const MARKER_RADIUS: f64 = 3.6;
 /// Line height of notes.
 pub(crate) const NOTE_LINE: f64 = 17.0;
 /// The serif faces asked for, best first.
@@ -91,6 +93,17 @@ impl Style {
         }
     }
 
+    /// The dash array of a stroke pattern (`None`: a full line). Dots are
+    /// zero-length dashes drawn by round caps.
+    pub(crate) fn dash(dash: Dash) -> Option<&'static str> {
+        match dash {
+            Dash::Solid => None,
+            Dash::Dashed => Some("7 4"),
+            Dash::Dotted => Some("0 3.5"),
+            Dash::DashDot => Some("10 3 0 3"),
+        }
+    }
+
     /// The paper colour.
     pub(crate) fn paper(&self) -> &'static str {
         match self {
@@ -112,6 +125,7 @@ impl Style {
         match size {
             TextSize::Letter => 17.0,
             TextSize::Small => 13.0,
+            TextSize::Tick => 12.0,
         }
     }
 }

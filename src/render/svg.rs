@@ -5,9 +5,11 @@ use super::labels::{Bounds, Obstacles, place};
 use super::number::{fmt, fmt_coefficient};
 use super::style::*;
 use crate::figure::{
-    Figure, Item, PageFromWorld, Panel, Path, PathSegment, RichText, Role, Shape, TextSize,
+    Align, Figure, Item, PageFromWorld, Panel, Path, PathSegment, RichText, Role, Shape, Symbol,
+    TextSize,
 };
 use crate::geom::{Point, Vector};
+use crate::render::Style;
 use serde_json::{Value, json};
 use std::collections::hash_map::DefaultHasher;
 use std::fmt as stdfmt;
@@ -251,7 +253,10 @@ impl PanelWriter<'_> {
     }
 
     fn item(&mut self, item: &Item) -> Option<Box<dyn Node>> {
-        let pen = self.style.pen(item.role);
+        let mut pen = self.style.pen(item.role);
+        if let Some(dash) = item.dash {
+            pen.dash = Style::dash(dash);
+        }
         self.obstacles.set_weight(match item.role {
             Role::Link | Role::Force => 3.0,
             Role::Construction => 1.5,
@@ -579,6 +584,92 @@ impl PanelWriter<'_> {
                     gap: if *size == TextSize::Letter { 4.0 } else { 3.0 },
                 });
                 return None;
+            }
+            Shape::Text {
+                at,
+                offset,
+                text,
+                align,
+                size,
+            } => {
+                let c = self.p(*at) + offset;
+                if !finite(&c) {
+                    return None;
+                }
+                let size = self.style.font_size(*size);
+                let half = text_half(text, size);
+                let (anchor, middle) = match align {
+                    Align::Start => ("start", c + Vector::new(half.x, 0.0)),
+                    Align::Middle => ("middle", c),
+                    Align::End => ("end", c - Vector::new(half.x, 0.0)),
+                };
+                self.obstacles.boxed(Bounds::around(middle, half));
+                Box::new(text_node(
+                    id,
+                    c,
+                    text,
+                    size,
+                    self.style.pen(Role::Label).colour,
+                    anchor,
+                    starts_italic(text),
+                ))
+            }
+            Shape::Marker { centre, symbol } => {
+                let c = self.p(*centre);
+                if !finite(&c) {
+                    return None;
+                }
+                let r = MARKER_RADIUS;
+                self.obstacles.boxed(Bounds::around(c, Vector::new(r, r)));
+                let pen = Pen {
+                    width: 1.1,
+                    dash: None,
+                    ..pen
+                };
+                let v = |x: f64, y: f64| c + Vector::new(x, y);
+                let d = match symbol {
+                    Symbol::Disc | Symbol::Circle => {
+                        let fill = if *symbol == Symbol::Disc {
+                            pen.colour
+                        } else {
+                            self.style.paper()
+                        };
+                        return Some(Box::new(
+                            stroke(Circle::new(), pen)
+                                .set("cx", fmt(c.x))
+                                .set("cy", fmt(c.y))
+                                .set("r", fmt(r))
+                                .set("fill", fill)
+                                .set("id", id)
+                                .set("class", class),
+                        ));
+                    }
+                    Symbol::Square => polyline_d(&[v(-r, -r), v(r, -r), v(r, r), v(-r, r)], true),
+                    Symbol::Triangle => {
+                        let h = 1.2 * r;
+                        polyline_d(&[v(0.0, -h), v(h, 0.8 * h), v(-h, 0.8 * h)], true)
+                    }
+                    Symbol::Diamond => {
+                        let h = 1.3 * r;
+                        polyline_d(&[v(0.0, -h), v(h, 0.0), v(0.0, h), v(-h, 0.0)], true)
+                    }
+                    Symbol::Cross => format!(
+                        "{} {}",
+                        polyline_d(&[v(-r, -r), v(r, r)], false),
+                        polyline_d(&[v(-r, r), v(r, -r)], false)
+                    ),
+                };
+                let fill = if *symbol == Symbol::Cross {
+                    "none"
+                } else {
+                    self.style.paper()
+                };
+                Box::new(
+                    path(d, pen)
+                        .set("fill", fill)
+                        .set("id", id)
+                        .set("class", class),
+                )
             }
             Shape::Note { corner, lines } => {
                 let mut g = Group::new().set("id", id).set("class", class);

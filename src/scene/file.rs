@@ -82,7 +82,18 @@ pub(super) fn parse(text: &str) -> Result<Scene> {
         }
     })?;
     let mut scene = match &file.figure {
-        Some(name) => at(text, name.span(), FigureName::from_name(name.get_ref()))?.scene(),
+        Some(name) => {
+            let figure = FigureName::from_name(name.get_ref()).and_then(|f| {
+                f.scene().ok_or_else(|| {
+                    Error::Parse(format!(
+                        "'{}' is a diagram; a scene starts from a mechanism figure: {}",
+                        f.name(),
+                        FigureName::SCENES.map(|s| s.name()).join(", ")
+                    ))
+                })
+            });
+            at(text, name.span(), figure)?
+        }
         None => Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::from_degrees(45.0)?)
             .with_layers([Layer::Mechanism]),
     };

@@ -16,6 +16,7 @@ mod layer;
 mod notation;
 
 pub use cache::Evaluations;
+pub(crate) use canvas::round;
 pub use layer::Layer;
 pub use notation::Notation;
 
@@ -137,6 +138,13 @@ impl Scene {
             coupler: CouplerPoint::new(0.5).expect("0.5 is in [0, 1]"),
             tolerance: DEFAULT_TOLERANCE,
         }
+    }
+
+    /// The same scene for another mechanism (poses, layers and page are
+    /// kept; constructions are made anew when the figure is built).
+    pub fn with_mechanism(mut self, mechanism: SliderCrank) -> Self {
+        self.mechanism = mechanism;
+        self
     }
 
     /// Names the figure (the `figure` of its metadata).

@@ -1,0 +1,344 @@
+//! Plot axes: a range of values, linear or logarithmic, with round ticks
+//! and their labels.
+
+use crate::error::{Error, Result, finite};
+use crate::figure::RichText;
+
+/// How an axis places values.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Scale {
+    /// Equal steps of value are equal lengths; the world coordinate is the
+    /// value.
+    Linear,
+    /// Equal ratios are equal lengths; the world coordinate is log₁₀ of the
+    /// value, which must be positive.
+    Log,
+}
+
+/// One tick of an axis.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tick {
+    /// The value it marks.
+    pub value: f64,
+    /// Its label; `None` for a minor tick (log axes: 2 … 9 × 10ᵏ).
+    pub label: Option<String>,
+}
+
+/// An axis: a title (with its unit), a range of values, a scale and the
+/// step of its ticks.
+///
+/// Ticks of a linear axis are the multiples of the step inside the range,
+/// labelled with as many decimals as the step needs and a true minus sign;
+/// a log axis has a labelled tick at each power of ten (10ᵏ) and minor
+/// ticks between. The range may be widened to round values with
+/// [`Axis::nice`] and [`Axis::log`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct Axis {
+    title: RichText,
+    min: f64,
+    max: f64,
+    scale: Scale,
+    step: f64,
+}
+
+/// How many labelled ticks a linear axis aims at.
+const TARGET_TICKS: f64 = 6.0;
+
+/// The round step (1, 2, 2.5 or 5 × 10ᵏ) nearest above `span / target`.
+fn round_step(span: f64, target: f64) -> f64 {
+    let raw = span / target;
+    let mag = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 2.5, 5.0, 10.0]
+        .iter()
+        .map(|k| k * mag)
+        .find(|s| *s >= raw * (1.0 - 1e-9))
+        .unwrap_or(10.0 * mag)
+}
+
+/// Decimals needed to write multiples of `step` exactly (at most 9).
+fn decimals(step: f64) -> usize {
+    (0..=9)
+        .find(|d| {
+            let v = step * 10f64.powi(*d as i32);
+            (v - v.round()).abs() <= 1e-6 * v.abs().max(1e-300)
+        })
+        .unwrap_or(9)
+}
+
+/// `v` with `decimals` decimals and a true minus sign (U+2212); never
+/// "−0".
+pub fn format_number(v: f64, decimals: usize) -> String {
+    let s = format!("{:.*}", decimals, v);
+    let zero = s
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.');
+    if zero {
+        s.trim_start_matches('-').to_string()
+    } else if let Some(rest) = s.strip_prefix('-') {
+        format!("\u{2212}{rest}")
+    } else {
+        s
+    }
+}
+
+/// 10ᵏ with the exponent in superscript digits.
+fn power_of_ten(k: i32) -> String {
+    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
+    let mut s = String::from("10");
+    if k < 0 {
+        s.push('⁻');
+    }
+    for c in k.unsigned_abs().to_string().chars() {
+        s.push(SUP[c.to_digit(10).unwrap_or(0) as usize]);
+    }
+    s
+}
+
+impl Axis {
+    /// A linear axis over `[min, max]` (finite, min < max) with a round
+    /// step of about six ticks. The title is [`RichText`] markup
+    /// (`V_p (ft/s)`).
+    pub fn linear(title: &str, min: f64, max: f64) -> Result<Self> {
+        let min = finite("axis minimum", min)?;
+        let max = finite("axis maximum", max)?;
+        let span = max - min;
+        if !(span > 0.0 && span.is_finite()) {
+            return Err(Error::OutOfRange {
+                name: "axis maximum",
+                value: max,
+                reason: format!("an axis must increase from its minimum {min}"),
+            });
+        }
+        Ok(Self {
+            title: RichText::parse(title),
+            min,
+            max,
+            scale: Scale::Linear,
+            step: round_step(span, TARGET_TICKS),
+        })
+    }
+
+    /// A linear axis that covers `[lo, hi]`, widened outwards to the
+    /// nearest round ticks. An empty range (lo = hi) is widened by 1 or by
+    /// a tenth of |lo| each way. Errors for non-finite or reversed bounds.
+    pub fn nice(title: &str, lo: f64, hi: f64) -> Result<Self> {
+        let lo = finite("axis minimum", lo)?;
+        let hi = finite("axis maximum", hi)?;
+        if lo > hi {
+            return Err(Error::OutOfRange {
+                name: "axis maximum",
+                value: hi,
+                reason: format!("below the axis minimum {lo}"),
+            });
+        }
+        let (lo, hi) = if hi - lo <= 1e-12 * lo.abs().max(hi.abs()) {
+            let d = if lo == 0.0 { 1.0 } else { 0.1 * lo.abs() };
+            (lo - d, hi + d)
+        } else {
+            (lo, hi)
+        };
+        let step = round_step(hi - lo, TARGET_TICKS);
+        let min = (lo / step + 1e-9).floor() * step;
+        let max = (hi / step - 1e-9).ceil() * step;
+        let mut axis = Self::linear(title, min, max)?;
+        axis.step = step;
+        Ok(axis)
+    }
+
+    /// A logarithmic axis covering `[lo, hi]` (0 < lo ≤ hi, finite),
+    /// widened outwards to whole powers of ten.
+    pub fn log(title: &str, lo: f64, hi: f64) -> Result<Self> {
+        let lo = finite("axis minimum", lo)?;
+        let hi = finite("axis maximum", hi)?;
+        if !(lo > 0.0 && hi >= lo) {
+            return Err(Error::OutOfRange {
+                name: "axis minimum",
+                value: lo,
+                reason: format!("a log axis needs 0 < minimum ≤ maximum ({hi})"),
+            });
+        }
+        let a = (lo.log10() + 1e-9).floor();
+        let mut b = (hi.log10() - 1e-9).ceil();
+        if b <= a {
+            b = a + 1.0;
+        }
+        Ok(Self {
+            title: RichText::parse(title),
+            min: 10f64.powf(a),
+            max: 10f64.powf(b),
+            scale: Scale::Log,
+            step: 1.0,
+        })
+    }
+
+    /// The same axis with ticks at the multiples of `step` (finite,
+    /// positive, at most 1000 ticks over the range): 30° for crank angles.
+    /// Ignored by a log axis.
+    pub fn with_step(mut self, step: f64) -> Result<Self> {
+        let step = crate::error::positive("tick step", step)?;
+        if (self.max - self.min) / step > 1000.0 {
+            return Err(Error::OutOfRange {
+                name: "tick step",
+                value: step,
+                reason: "more than 1000 ticks on one axis".into(),
+            });
+        }
+        if self.scale == Scale::Linear {
+            self.step = step;
+        }
+        Ok(self)
+    }
+
+    /// The title.
+    pub fn title(&self) -> &RichText {
+        &self.title
+    }
+
+    /// The range of values, `(min, max)`.
+    pub fn range(&self) -> (f64, f64) {
+        (self.min, self.max)
+    }
+
+    /// The scale.
+    pub fn scale(&self) -> Scale {
+        self.scale
+    }
+
+    /// The step of labelled ticks on a linear axis (1 decade on a log axis).
+    pub fn step(&self) -> f64 {
+        self.step
+    }
+
+    /// The world coordinate of a value: the value itself, or its log₁₀ on a
+    /// log axis (`None` there for a value ≤ 0 or not finite).
+    pub fn world(&self, value: f64) -> Option<f64> {
+        match self.scale {
+            Scale::Linear => value.is_finite().then_some(value),
+            Scale::Log => (value > 0.0 && value.is_finite()).then(|| value.log10()),
+        }
+    }
+
+    /// The world coordinates of the ends, `(min, max)`.
+    pub fn world_range(&self) -> (f64, f64) {
+        match self.scale {
+            Scale::Linear => (self.min, self.max),
+            Scale::Log => (self.min.log10().round(), self.max.log10().round()),
+        }
+    }
+
+    /// The ticks in increasing order.
+    pub fn ticks(&self) -> Vec<Tick> {
+        match self.scale {
+            Scale::Linear => {
+                let d = decimals(self.step);
+                let first = (self.min / self.step - 1e-9).ceil() as i64;
+                let last = (self.max / self.step + 1e-9).floor() as i64;
+                (first..=last)
+                    .map(|k| {
+                        let value = k as f64 * self.step;
+                        Tick {
+                            value,
+                            label: Some(format_number(value, d)),
+                        }
+                    })
+                    .collect()
+            }
+            Scale::Log => {
+                let (a, b) = self.world_range();
+                let (a, b) = (a as i32, b as i32);
+                let mut ticks = Vec::new();
+                for k in a..=b {
+                    let decade = 10f64.powi(k);
+                    ticks.push(Tick {
+                        value: decade,
+                        label: Some(power_of_ten(k)),
+                    });
+                    if k < b {
+                        ticks.extend((2..=9).map(|m| Tick {
+                            value: m as f64 * decade,
+                            label: None,
+                        }));
+                    }
+                }
+                ticks
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn labels(axis: &Axis) -> Vec<String> {
+        axis.ticks().into_iter().filter_map(|t| t.label).collect()
+    }
+
+    #[test]
+    fn nice_ranges_end_on_round_ticks() {
+        let a = Axis::nice("v", -13.7, 13.2).unwrap();
+        assert_eq!(a.range(), (-15.0, 15.0));
+        assert_eq!(a.step(), 5.0);
+        assert_eq!(labels(&a), ["−15", "−10", "−5", "0", "5", "10", "15"]);
+        let t = Axis::nice("t", 0.0, 0.24).unwrap();
+        assert_eq!(t.step(), 0.05);
+        assert_eq!(labels(&t), ["0.00", "0.05", "0.10", "0.15", "0.20", "0.25"]);
+        let q = Axis::nice("q", 0.0, 9.0).unwrap();
+        assert_eq!(q.step(), 2.0);
+        assert_eq!(q.range(), (0.0, 10.0));
+    }
+
+    #[test]
+    fn explicit_steps_and_quarter_steps() {
+        let a = Axis::linear("θ (°)", 0.0, 360.0)
+            .unwrap()
+            .with_step(30.0)
+            .unwrap();
+        assert_eq!(a.ticks().len(), 13);
+        assert_eq!(labels(&a)[12], "360");
+        let b = Axis::linear("x", 0.0, 10.0)
+            .unwrap()
+            .with_step(2.5)
+            .unwrap();
+        assert_eq!(labels(&b), ["0.0", "2.5", "5.0", "7.5", "10.0"]);
+        assert!(
+            Axis::linear("x", 0.0, 1.0)
+                .unwrap()
+                .with_step(1e-6)
+                .is_err()
+        );
+        assert!(Axis::linear("x", 0.0, 1.0).unwrap().with_step(0.0).is_err());
+    }
+
+    #[test]
+    fn log_axes_have_decades_and_minor_ticks() {
+        let a = Axis::log("error (px)", 3e-6, 0.09).unwrap();
+        assert_eq!(a.range(), (1e-6, 0.1));
+        assert_eq!(a.world_range(), (-6.0, -1.0));
+        assert_eq!(labels(&a), ["10⁻⁶", "10⁻⁵", "10⁻⁴", "10⁻³", "10⁻²", "10⁻¹"]);
+        assert_eq!(a.ticks().len(), 6 + 5 * 8);
+        assert_eq!(a.world(100.0), Some(2.0));
+        assert_eq!(a.world(0.0), None);
+        let one = Axis::log("n", 10.0, 10.0).unwrap();
+        assert_eq!(one.range(), (10.0, 100.0));
+    }
+
+    #[test]
+    fn bad_ranges_are_errors() {
+        assert!(Axis::linear("x", 1.0, 1.0).is_err());
+        assert!(Axis::linear("x", f64::NAN, 1.0).is_err());
+        assert!(Axis::nice("x", 2.0, 1.0).is_err());
+        assert!(Axis::log("x", 0.0, 1.0).is_err());
+        assert!(Axis::log("x", 1.0, f64::INFINITY).is_err());
+        // An empty range is widened, not refused.
+        assert_eq!(Axis::nice("x", 0.0, 0.0).unwrap().range(), (-1.0, 1.0));
+    }
+
+    #[test]
+    fn numbers_use_a_true_minus_and_no_negative_zero() {
+        assert_eq!(format_number(-0.0001, 2), "0.00");
+        assert_eq!(format_number(-2.5, 1), "−2.5");
+        assert_eq!(format_number(3.0, 0), "3");
+    }
+}

@@ -1,0 +1,846 @@
+//! Plot panels: axes with round ticks, titles with units, curves traced by
+//! [`trace`] to a tolerance in page units, data markers and lines, and a
+//! legend set where nothing is drawn.
+
+use super::{Axis, Curve, Method, Scale, TraceOptions, trace};
+use crate::error::{Error, Result};
+use crate::figure::{
+    Align, Dash, Item, PageFromWorld, PageRect, Panel, Path, RichText, Role, Shape, Symbol,
+    TextSize,
+};
+use crate::geom::{Frame, Point, Vector};
+use crate::render::trace_tolerance;
+use serde_json::{Value, json};
+use std::ops::RangeInclusive;
+
+/// Length of a labelled tick, page units.
+const TICK: f64 = 5.0;
+/// Size of tick labels and legend text.
+const TICK_TEXT: f64 = 12.0;
+/// Room above the plot area for the ordinate's title.
+const TOP: f64 = 30.0;
+/// Room below the plot area for tick labels and the abscissa's title.
+const BOTTOM: f64 = 42.0;
+/// Room below that for a caption.
+const CAPTION: f64 = 22.0;
+/// Line height of legends and notes.
+const LEGEND_LINE: f64 = 16.0;
+/// Length of a legend's line sample.
+const KEY: f64 = 28.0;
+
+/// What a legend entry shows beside its text.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Key {
+    Line(Dash),
+    Marker(Symbol),
+}
+
+/// A block of text lines (a legend or a note) set in a free corner.
+#[derive(Debug, Clone)]
+struct Block {
+    id: String,
+    lines: Vec<(RichText, Option<Key>)>,
+}
+
+/// A plot panel being built: with axes ([`Plot::new`]), or without, at a
+/// uniform scale for diagrams in a mechanism's own world coordinates
+/// ([`Plot::world`]).
+///
+/// Item ids are the caller's for what it adds (`curve-...`); the plot's
+/// own (axes, ticks, legend) start with its name. With a log axis the
+/// world coordinate is log₁₀ of the value: [`Plot::curve`],
+/// [`Plot::points`] and [`Plot::line`] take values and convert them.
+#[derive(Debug, Clone)]
+pub struct Plot {
+    name: String,
+    rect: PageRect,
+    area: PageRect,
+    axes: Option<(Axis, Axis)>,
+    map: PageFromWorld,
+    tolerance: f64,
+    grid: bool,
+    items: Vec<Item>,
+    blocks: Vec<Block>,
+    legend: Vec<(RichText, Option<Key>)>,
+    drawn: Vec<Point>,
+    caption: Option<RichText>,
+}
+
+fn too_small(rect: &PageRect) -> Error {
+    Error::OutOfRange {
+        name: "panel width",
+        value: rect.width,
+        reason: format!(
+            "a plot panel of {} × {} leaves no room for its plot",
+            rect.width, rect.height
+        ),
+    }
+}
+
+impl Plot {
+    /// A plot named `name` (its panel is `panel-{name}`) filling `rect`,
+    /// with abscissa `x` and ordinate `y`; curves are drawn to `tolerance`
+    /// page units in the written file. The plot area is `rect` less room
+    /// for tick labels, titles and a caption. Errors when that leaves less
+    /// than 40 × 40 units or the tolerance is not positive.
+    pub fn new(name: &str, rect: PageRect, x: Axis, y: Axis, tolerance: f64) -> Result<Self> {
+        let tolerance = crate::error::positive("tolerance", tolerance)?;
+        let widest = y
+            .ticks()
+            .iter()
+            .filter_map(|t| t.label.as_ref())
+            .map(|l| RichText::parse(l).width_em() * TICK_TEXT)
+            .fold(0.0, f64::max);
+        // At least the room of "−0000", so that plots stacked in a column
+        // line up.
+        let left = widest.max(3.0 * TICK_TEXT) + TICK + 10.0;
+        let last_x = x
+            .ticks()
+            .iter()
+            .rev()
+            .find_map(|t| t.label.clone())
+            .unwrap_or_default();
+        let right = 0.5 * RichText::parse(&last_x).width_em() * TICK_TEXT + 8.0;
+        let area = PageRect::new(
+            rect.x + left,
+            rect.y + TOP,
+            rect.width - left - right,
+            rect.height - TOP - BOTTOM - CAPTION,
+        );
+        if area.width < 40.0 || area.height < 40.0 {
+            return Err(too_small(&rect));
+        }
+        let (x0, x1) = x.world_range();
+        let (y0, y1) = y.world_range();
+        let map = PageFromWorld::axes(
+            area.width / (x1 - x0),
+            -area.height / (y1 - y0),
+            Point::new(x0, y0),
+            Point::new(area.x, area.y + area.height),
+        )
+        .ok_or_else(|| Error::OutOfRange {
+            name: "axis range",
+            value: (x1 - x0).max(y1 - y0),
+            reason: "an axis range too large or too small to map onto the page".into(),
+        })?;
+        Ok(Self {
+            name: name.to_string(),
+            rect,
+            area,
+            axes: Some((x, y)),
+            map,
+            tolerance,
+            grid: false,
+            items: Vec::new(),
+            blocks: Vec::new(),
+            legend: Vec::new(),
+            drawn: Vec::new(),
+            caption: None,
+        })
+    }
+
+    /// A plot without axes showing the world rectangle `world` whole at
+    /// one scale in `rect` (less room for a caption), mirrored in x when
+    /// `mirror`: polar diagrams and curves drawn on the mechanism. Errors
+    /// for an empty rectangle or a non-positive tolerance.
+    pub fn world(
+        name: &str,
+        rect: PageRect,
+        world: &Frame,
+        mirror: bool,
+        tolerance: f64,
+    ) -> Result<Self> {
+        let tolerance = crate::error::positive("tolerance", tolerance)?;
+        let area = PageRect::new(rect.x, rect.y, rect.width, rect.height - CAPTION);
+        if area.width < 40.0 || area.height < 40.0 {
+            return Err(too_small(&rect));
+        }
+        let map = PageFromWorld::fit(world, &area, mirror).ok_or_else(|| Error::OutOfRange {
+            name: "world frame",
+            value: (world.max() - world.min()).norm(),
+            reason: "a world panel needs a rectangle of positive size".into(),
+        })?;
+        Ok(Self::with_map(name, rect, area, map, tolerance))
+    }
+
+    /// A plot without axes with the given map and plot area (a mechanism
+    /// panel taken over from a [`crate::Scene`]).
+    pub(crate) fn with_map(
+        name: &str,
+        rect: PageRect,
+        area: PageRect,
+        map: PageFromWorld,
+        tolerance: f64,
+    ) -> Self {
+        Self {
+            name: name.to_string(),
+            rect,
+            area,
+            axes: None,
+            map,
+            tolerance,
+            grid: false,
+            items: Vec::new(),
+            blocks: Vec::new(),
+            legend: Vec::new(),
+            drawn: Vec::new(),
+            caption: None,
+        }
+    }
+
+    /// Draws dotted grid lines at the labelled ticks.
+    pub fn with_grid(mut self) -> Self {
+        self.grid = true;
+        self
+    }
+
+    /// A caption below the plot (markup, `(a) Velocity on a time base`).
+    pub fn with_caption(mut self, caption: &str) -> Self {
+        self.caption = Some(RichText::parse(caption));
+        self
+    }
+
+    /// The world-to-page map of the panel.
+    pub fn map(&self) -> &PageFromWorld {
+        &self.map
+    }
+
+    /// The plot area (page units): curves are clipped to it.
+    pub fn area(&self) -> PageRect {
+        self.area
+    }
+
+    /// The panel's id, `panel-{name}`.
+    pub fn panel_id(&self) -> String {
+        format!("panel-{}", self.name)
+    }
+
+    /// The world point of a pair of values (log₁₀ on a log axis); `None`
+    /// for a value a log axis cannot show.
+    pub fn world_point(&self, x: f64, y: f64) -> Option<Point> {
+        match &self.axes {
+            Some((ax, ay)) => Some(Point::new(ax.world(x)?, ay.world(y)?)),
+            None => (x.is_finite() && y.is_finite()).then(|| Point::new(x, y)),
+        }
+    }
+
+    fn scales(&self) -> (Scale, Scale) {
+        match &self.axes {
+            Some((x, y)) => (x.scale(), y.scale()),
+            None => (Scale::Linear, Scale::Linear),
+        }
+    }
+
+    fn remember(&mut self, page: Point) {
+        if page.x.is_finite() && page.y.is_finite() {
+            self.drawn.push(page);
+        }
+    }
+
+    /// Traces a curve given in pieces, each a function of values with
+    /// exact derivatives over its own parameter range (pieces meet at
+    /// corners or have different formulas), to the plot's tolerance, clipped
+    /// to the plot area, as one item `id` stroked with `dash`, with a legend
+    /// entry when `legend` is given. A curve wholly outside the area draws
+    /// nothing. Errors are the curve engine's ([`trace`]).
+    pub fn curve(
+        &mut self,
+        id: &str,
+        pieces: &[(&dyn Curve, RangeInclusive<f64>)],
+        dash: Dash,
+        legend: Option<&str>,
+    ) -> Result<()> {
+        let (sx, sy) = self.scales();
+        let ln10 = std::f64::consts::LN_10;
+        let world = |curve: &dyn Curve, t: f64| -> Option<(Point, Vector)> {
+            let (p, d) = curve.eval(t)?;
+            let (x, dx) = match sx {
+                Scale::Linear => (p.x, d.x),
+                Scale::Log if p.x > 0.0 => (p.x.log10(), d.x / (p.x * ln10)),
+                Scale::Log => return None,
+            };
+            let (y, dy) = match sy {
+                Scale::Linear => (p.y, d.y),
+                Scale::Log if p.y > 0.0 => (p.y.log10(), d.y / (p.y * ln10)),
+                Scale::Log => return None,
+            };
+            Some((Point::new(x, y), Vector::new(dx, dy)))
+        };
+        let options = TraceOptions::with_tolerance(trace_tolerance(self.tolerance));
+        let mut subpaths = Vec::new();
+        for (curve, range) in pieces {
+            let traced = trace(
+                &|t: f64| world(*curve, t),
+                range.clone(),
+                &self.map,
+                &self.area.frame(),
+                Method::Cubic,
+                &options,
+            )?;
+            subpaths.extend(traced.subpaths().iter().cloned());
+        }
+        let page = super::Path::new(subpaths);
+        for sub in page.subpaths() {
+            for (start, seg) in sub.pieces() {
+                let n = ((seg.end() - start).norm() / 6.0).ceil().clamp(4.0, 400.0) as usize;
+                for k in 0..n {
+                    let p = seg.eval(start, k as f64 / n as f64);
+                    self.remember(p);
+                }
+            }
+        }
+        if let Some(path) = page.to_figure_path(&self.map) {
+            self.items
+                .push(Item::new(id, Role::Curve, Shape::Path(path)).dashed(dash));
+        }
+        if let Some(text) = legend {
+            self.legend
+                .push((RichText::parse(text), Some(Key::Line(dash))));
+        }
+        Ok(())
+    }
+
+    /// Data points as markers `{id}-1`, `{id}-2`, … (numbered in the order
+    /// given, skipping none: a point outside the plot area or one a log
+    /// axis cannot show keeps its number and is not drawn).
+    pub fn points(
+        &mut self,
+        id: &str,
+        values: &[(f64, f64)],
+        symbol: Symbol,
+        legend: Option<&str>,
+    ) {
+        let frame = self.area.frame();
+        for (k, &(x, y)) in values.iter().enumerate() {
+            let Some(w) = self.world_point(x, y) else {
+                continue;
+            };
+            let page = self.map.apply(w);
+            if !frame.contains(page) {
+                continue;
+            }
+            self.remember(page);
+            self.items.push(Item::new(
+                format!("{id}-{}", k + 1),
+                Role::Curve,
+                Shape::Marker { centre: w, symbol },
+            ));
+        }
+        if let Some(text) = legend {
+            self.legend
+                .push((RichText::parse(text), Some(Key::Marker(symbol))));
+        }
+    }
+
+    /// A polyline through data values (not a traced curve: straight
+    /// between the values), as the item `id`; points a log axis cannot
+    /// show are left out. Nothing is drawn for fewer than two points.
+    pub fn line(&mut self, id: &str, values: &[(f64, f64)], dash: Dash, legend: Option<&str>) {
+        let points: Vec<Point> = values
+            .iter()
+            .filter_map(|&(x, y)| self.world_point(x, y))
+            .collect();
+        if points.len() >= 2 {
+            for p in &points {
+                let page = self.map.apply(*p);
+                self.remember(page);
+            }
+            for w in points.windows(2) {
+                let mid = nalgebra::center(&w[0], &w[1]);
+                self.remember(self.map.apply(mid));
+            }
+            self.items.push(
+                Item::new(
+                    id,
+                    Role::Curve,
+                    Shape::Polyline {
+                        points,
+                        closed: false,
+                    },
+                )
+                .dashed(dash),
+            );
+        }
+        if let Some(text) = legend {
+            self.legend
+                .push((RichText::parse(text), Some(Key::Line(dash))));
+        }
+    }
+
+    /// Adds an item in world coordinates as it is (the legend keeps clear
+    /// of its points and control points).
+    pub fn push(&mut self, item: Item) {
+        self.avoid(&item);
+        self.items.push(item);
+    }
+
+    /// Keeps the legend and notes clear of an item drawn by someone else
+    /// in the same panel.
+    pub fn avoid(&mut self, item: &Item) {
+        let chain: Vec<Point> = match &item.shape {
+            Shape::Path(p) => p.points().collect(),
+            Shape::Polyline { points, closed } => {
+                let mut v = points.clone();
+                if *closed && let Some(first) = points.first() {
+                    v.push(*first);
+                }
+                v
+            }
+            Shape::Region { points } | Shape::Block { points } => points.clone(),
+            Shape::Marker { centre, .. }
+            | Shape::Dot { centre }
+            | Shape::Pin { centre }
+            | Shape::Bearing { centre } => vec![*centre],
+            Shape::Arrow { from, to } | Shape::Hatch { from, to, .. } => vec![*from, *to],
+            Shape::Label { anchor, .. } => vec![*anchor],
+            Shape::Circle { centre, radius } | Shape::Arc { centre, radius, .. } => (0..=48)
+                .map(|k| {
+                    let t = std::f64::consts::TAU * k as f64 / 48.0;
+                    centre + Vector::new(t.cos(), t.sin()) * *radius
+                })
+                .collect(),
+            _ => Vec::new(),
+        };
+        let page: Vec<Point> = chain.iter().map(|p| self.map.apply(*p)).collect();
+        if let [only] = page.as_slice() {
+            self.remember(*only);
+        }
+        for w in page.windows(2) {
+            let n = ((w[1] - w[0]).norm() / 8.0).ceil().clamp(1.0, 500.0) as usize;
+            for k in 0..=n {
+                self.remember(w[0] + (w[1] - w[0]) * (k as f64 / n as f64));
+            }
+        }
+    }
+
+    /// A legend entry without a drawn item (for a series drawn by
+    /// [`Plot::push`]).
+    pub fn legend_line(&mut self, text: &str, dash: Dash) {
+        self.legend
+            .push((RichText::parse(text), Some(Key::Line(dash))));
+    }
+
+    /// A legend entry for markers drawn by [`Plot::points`] without one.
+    pub fn legend_marker(&mut self, text: &str, symbol: Symbol) {
+        self.legend
+            .push((RichText::parse(text), Some(Key::Marker(symbol))));
+    }
+
+    /// A note: lines of markup set in a free corner of the plot area, after
+    /// the legend, as the items `{name}-{id}-1`, …
+    pub fn note(&mut self, id: &str, lines: &[String]) {
+        self.blocks.push(Block {
+            id: format!("{}-{id}", self.name),
+            lines: lines.iter().map(|l| (RichText::parse(l), None)).collect(),
+        });
+    }
+
+    /// The plot's description for the figure's metadata: panel id, plot
+    /// area and, with axes, each axis's title, range and scale.
+    pub fn metadata(&self) -> Value {
+        let r = self.area;
+        let axis = |a: &Axis| {
+            let (min, max) = a.range();
+            json!({
+                "title": a.title().plain(),
+                "min": min,
+                "max": max,
+                "scale": match a.scale() { Scale::Linear => "linear", Scale::Log => "log" },
+            })
+        };
+        let mut v = json!({
+            "panel": self.panel_id(),
+            "area": [r.x, r.y, r.width, r.height],
+        });
+        if let Some((x, y)) = &self.axes {
+            v["x"] = axis(x);
+            v["y"] = axis(y);
+        }
+        v
+    }
+
+    fn unmap(&self, page: Point) -> Point {
+        self.map.invert(page)
+    }
+
+    fn text(&self, id: String, page: Point, text: RichText, align: Align, size: TextSize) -> Item {
+        Item::new(
+            id,
+            Role::Label,
+            Shape::Text {
+                at: self.unmap(page),
+                offset: Vector::zeros(),
+                text,
+                align,
+                size,
+            },
+        )
+    }
+
+    fn segment(&self, id: String, role: Role, a: Point, b: Point) -> Item {
+        Item::new(
+            id,
+            role,
+            Shape::Polyline {
+                points: vec![self.unmap(a), self.unmap(b)],
+                closed: false,
+            },
+        )
+    }
+
+    /// The axes' lines, ticks, labels and titles, the zero lines and the
+    /// grid.
+    fn axis_items(&self, x: &Axis, y: &Axis) -> Vec<Item> {
+        let n = &self.name;
+        let a = self.area;
+        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
+        let mut items = vec![
+            self.segment(
+                format!("{n}-axis-x"),
+                Role::Frame,
+                Point::new(left, bottom),
+                Point::new(right, bottom),
+            ),
+            self.segment(
+                format!("{n}-axis-y"),
+                Role::Frame,
+                Point::new(left, bottom),
+                Point::new(left, top),
+            ),
+        ];
+        let px = |v: f64| x.world(v).map(|w| self.map.apply(Point::new(w, 0.0)).x);
+        let py = |v: f64| y.world(v).map(|w| self.map.apply(Point::new(0.0, w)).y);
+        let inside = |p: f64, lo: f64, hi: f64| p >= lo - 0.01 && p <= hi + 0.01;
+        let mut ticks = Path::new();
+        let mut grid = Path::new();
+        let mut has_ticks = false;
+        let mut has_grid = false;
+        for (k, t) in x.ticks().iter().enumerate() {
+            let Some(p) = px(t.value).filter(|p| inside(*p, left, right)) else {
+                continue;
+            };
+            let len = if t.label.is_some() { TICK } else { 0.6 * TICK };
+            ticks = ticks
+                .move_to(self.unmap(Point::new(p, bottom)))
+                .line_to(self.unmap(Point::new(p, bottom + len)));
+            has_ticks = true;
+            if let Some(label) = &t.label {
+                items.push(self.text(
+                    format!("{n}-tick-x-{}", k + 1),
+                    Point::new(p, bottom + TICK + 9.0),
+                    RichText::parse(label),
+                    Align::Middle,
+                    TextSize::Tick,
+                ));
+                if self.grid && (p - left).abs() > 0.5 && (p - right).abs() > 0.5 {
+                    grid = grid
+                        .move_to(self.unmap(Point::new(p, bottom)))
+                        .line_to(self.unmap(Point::new(p, top)));
+                    has_grid = true;
+                }
+            }
+        }
+        for (k, t) in y.ticks().iter().enumerate() {
+            let Some(p) = py(t.value).filter(|p| inside(*p, top, bottom)) else {
+                continue;
+            };
+            let len = if t.label.is_some() { TICK } else { 0.6 * TICK };
+            ticks = ticks
+                .move_to(self.unmap(Point::new(left, p)))
+                .line_to(self.unmap(Point::new(left - len, p)));
+            has_ticks = true;
+            if let Some(label) = &t.label {
+                items.push(self.text(
+                    format!("{n}-tick-y-{}", k + 1),
+                    Point::new(left - TICK - 3.0, p),
+                    RichText::parse(label),
+                    Align::End,
+                    TextSize::Tick,
+                ));
+                if self.grid && (p - bottom).abs() > 0.5 && (p - top).abs() > 0.5 {
+                    grid = grid
+                        .move_to(self.unmap(Point::new(left, p)))
+                        .line_to(self.unmap(Point::new(right, p)));
+                    has_grid = true;
+                }
+            }
+        }
+        if has_ticks && let Some(path) = ticks.build() {
+            items.push(Item::new(
+                format!("{n}-ticks"),
+                Role::Frame,
+                Shape::Path(path),
+            ));
+        }
+        if has_grid && let Some(path) = grid.build() {
+            items.push(
+                Item::new(format!("{n}-grid"), Role::Dimension, Shape::Path(path))
+                    .dashed(Dash::Dotted),
+            );
+        }
+        // Zero lines where zero is strictly inside a linear range.
+        if let Some(p) = py(0.0).filter(|p| *p > top + 0.5 && *p < bottom - 0.5)
+            && y.scale() == Scale::Linear
+        {
+            items.push(self.segment(
+                format!("{n}-zero-y"),
+                Role::Dimension,
+                Point::new(left, p),
+                Point::new(right, p),
+            ));
+        }
+        if let Some(p) = px(0.0).filter(|p| *p > left + 0.5 && *p < right - 0.5)
+            && x.scale() == Scale::Linear
+        {
+            items.push(self.segment(
+                format!("{n}-zero-x"),
+                Role::Dimension,
+                Point::new(p, bottom),
+                Point::new(p, top),
+            ));
+        }
+        items.push(self.text(
+            format!("{n}-title-x"),
+            Point::new(0.5 * (left + right), bottom + TICK + 27.0),
+            x.title().clone(),
+            Align::Middle,
+            TextSize::Small,
+        ));
+        items.push(self.text(
+            format!("{n}-title-y"),
+            Point::new(self.rect.x + 2.0, top - 19.0),
+            y.title().clone(),
+            Align::Start,
+            TextSize::Small,
+        ));
+        items
+    }
+
+    /// Sets a block of lines in the corner of the plot area where it
+    /// covers the fewest drawn points (and no other block).
+    fn place(&mut self, block: &Block, taken: &mut Vec<(Point, Point)>) -> Vec<Item> {
+        let width = block
+            .lines
+            .iter()
+            .map(|(t, key)| t.width_em() * TICK_TEXT + if key.is_some() { KEY + 8.0 } else { 0.0 })
+            .fold(0.0, f64::max)
+            + 14.0;
+        let height = LEGEND_LINE * block.lines.len() as f64 + 8.0;
+        let a = self.area;
+        let inset = 8.0;
+        let xs = [
+            a.x + a.width - inset - width,
+            a.x + inset,
+            a.x + 0.5 * (a.width - width),
+        ];
+        let ys = [
+            a.y + inset,
+            a.y + a.height - inset - height,
+            a.y + 0.5 * (a.height - height),
+        ];
+        let mut best: Option<(f64, Point)> = None;
+        for (j, y) in ys.iter().enumerate() {
+            for (i, x) in xs.iter().enumerate() {
+                let lo = Point::new(*x, *y);
+                let hi = Point::new(x + width, y + height);
+                let hit = |p: &Point| {
+                    p.x >= lo.x - 3.0 && p.x <= hi.x + 3.0 && p.y >= lo.y - 3.0 && p.y <= hi.y + 3.0
+                };
+                let covered = self.drawn.iter().filter(|p| hit(p)).count() as f64;
+                let clash = taken.iter().any(|(l, h)| {
+                    l.x < hi.x + 4.0 && h.x > lo.x - 4.0 && l.y < hi.y + 4.0 && h.y > lo.y - 4.0
+                });
+                // Corners first, then edges' middles, then the centre.
+                let order = (i.min(2) + j.min(2)) as f64 * 0.01;
+                let score = covered + if clash { 1e6 } else { 0.0 } + order;
+                if best.is_none_or(|(s, _)| score < s) {
+                    best = Some((score, lo));
+                }
+            }
+        }
+        let Some((_, lo)) = best else {
+            return Vec::new();
+        };
+        taken.push((lo, lo + Vector::new(width, height)));
+        let mut items = Vec::new();
+        if block.lines.iter().any(|(_, k)| k.is_some()) {
+            let hi = lo + Vector::new(width, height);
+            items.push(Item::new(
+                format!("{}-box", block.id),
+                Role::Dimension,
+                Shape::Polyline {
+                    points: vec![
+                        self.unmap(lo),
+                        self.unmap(Point::new(hi.x, lo.y)),
+                        self.unmap(hi),
+                        self.unmap(Point::new(lo.x, hi.y)),
+                    ],
+                    closed: true,
+                },
+            ));
+        }
+        for (k, (text, key)) in block.lines.iter().enumerate() {
+            let y = lo.y + 4.0 + LEGEND_LINE * (k as f64 + 0.5);
+            let mut x = lo.x + 7.0;
+            match key {
+                Some(Key::Line(dash)) => {
+                    items.push(
+                        self.segment(
+                            format!("{}-key-{}", block.id, k + 1),
+                            Role::Curve,
+                            Point::new(x, y),
+                            Point::new(x + KEY, y),
+                        )
+                        .dashed(*dash),
+                    );
+                    x += KEY + 8.0;
+                }
+                Some(Key::Marker(symbol)) => {
+                    items.push(Item::new(
+                        format!("{}-key-{}", block.id, k + 1),
+                        Role::Curve,
+                        Shape::Marker {
+                            centre: self.unmap(Point::new(x + 0.5 * KEY, y)),
+                            symbol: *symbol,
+                        },
+                    ));
+                    x += KEY + 8.0;
+                }
+                None => {}
+            }
+            items.push(self.text(
+                format!("{}-{}", block.id, k + 1),
+                Point::new(x, y),
+                text.clone(),
+                Align::Start,
+                TextSize::Tick,
+            ));
+        }
+        items
+    }
+
+    /// The panel: axes, then what was added, then the legend and notes.
+    pub fn finish(mut self) -> Panel {
+        let mut items = match &self.axes {
+            Some((x, y)) => self.axis_items(x, y),
+            None => Vec::new(),
+        };
+        items.append(&mut self.items);
+        let mut blocks = Vec::new();
+        if !self.legend.is_empty() {
+            blocks.push(Block {
+                id: format!("{}-legend", self.name),
+                lines: std::mem::take(&mut self.legend),
+            });
+        }
+        blocks.append(&mut self.blocks);
+        let mut taken = Vec::new();
+        for block in &blocks {
+            let placed = self.place(block, &mut taken);
+            items.extend(placed);
+        }
+        if let Some(caption) = self.caption.take() {
+            let y = self.rect.y + self.rect.height - 0.5 * CAPTION;
+            let x = self.area.x + 0.5 * self.area.width;
+            items.push(self.text(
+                format!("{}-caption", self.name),
+                Point::new(x, y),
+                caption,
+                Align::Middle,
+                TextSize::Small,
+            ));
+        }
+        Panel::new(self.panel_id(), self.rect, self.map, items)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plot() -> Plot {
+        let x = Axis::linear("θ (°)", 0.0, 360.0)
+            .unwrap()
+            .with_step(90.0)
+            .unwrap();
+        let y = Axis::nice("y", -1.0, 1.0).unwrap();
+        Plot::new("p", PageRect::new(0.0, 0.0, 400.0, 300.0), x, y, 0.01).unwrap()
+    }
+
+    #[test]
+    fn the_map_takes_the_axis_ends_to_the_area_corners() {
+        let p = plot();
+        let a = p.area();
+        let lo = p.map().apply(Point::new(0.0, -1.0));
+        let hi = p.map().apply(Point::new(360.0, 1.0));
+        assert!((lo - Point::new(a.x, a.y + a.height)).norm() < 1e-9);
+        assert!((hi - Point::new(a.x + a.width, a.y)).norm() < 1e-9);
+    }
+
+    #[test]
+    fn a_sine_is_traced_within_the_area_with_its_legend() {
+        let mut p = plot();
+        let sine = |t: f64| {
+            let r = t.to_radians();
+            Some((
+                Point::new(t, r.sin()),
+                Vector::new(1.0, r.cos() * std::f64::consts::PI / 180.0),
+            ))
+        };
+        p.curve(
+            "curve-sine",
+            &[(&sine, 0.0..=360.0)],
+            Dash::Solid,
+            Some("sin θ"),
+        )
+        .unwrap();
+        let panel = p.finish();
+        assert!(panel.item("curve-sine").is_some());
+        assert!(panel.item("p-legend-1").is_some());
+        assert!(panel.item("p-tick-x-5").is_some());
+        assert!(panel.item("p-zero-y").is_some());
+        assert_eq!(panel.id(), "panel-p");
+    }
+
+    #[test]
+    fn points_outside_the_area_keep_their_numbers() {
+        let mut p = plot();
+        p.points(
+            "data",
+            &[(10.0, 0.5), (20.0, 5.0), (30.0, -0.5)],
+            Symbol::Disc,
+            None,
+        );
+        let panel = p.finish();
+        assert!(panel.item("data-1").is_some());
+        assert!(panel.item("data-2").is_none());
+        assert!(panel.item("data-3").is_some());
+    }
+
+    #[test]
+    fn a_panel_too_small_for_its_axes_is_an_error() {
+        let x = Axis::linear("x", 0.0, 1.0).unwrap();
+        let y = Axis::linear("y", 0.0, 1.0).unwrap();
+        assert!(Plot::new("p", PageRect::new(0.0, 0.0, 60.0, 60.0), x, y, 0.01).is_err());
+    }
+
+    #[test]
+    fn log_axes_take_values() {
+        let x = Axis::log("e", 1e-5, 1e-1).unwrap();
+        let y = Axis::log("n", 1.0, 1e4).unwrap();
+        let mut p = Plot::new("b", PageRect::new(0.0, 0.0, 400.0, 300.0), x, y, 0.01).unwrap();
+        assert_eq!(p.world_point(1e-3, 100.0), Some(Point::new(-3.0, 2.0)));
+        assert_eq!(p.world_point(0.0, 100.0), None);
+        p.line(
+            "series",
+            &[(1e-4, 10.0), (1e-3, 100.0)],
+            Dash::Dashed,
+            Some("a"),
+        );
+        let panel = p.finish();
+        let Some(Shape::Polyline { points, .. }) = panel.item("series").map(|i| &i.shape) else {
+            panic!("a polyline")
+        };
+        assert_eq!(points[0], Point::new(-4.0, 1.0));
+    }
+}

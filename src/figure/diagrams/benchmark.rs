@@ -1,0 +1,130 @@
+//! The curve engine's benchmark as a figure: segments and time against the
+//! measured error, log–log, for each curve and method of
+//! docs/curve-benchmarks.csv (written by `examples/curve_table.rs`), or of
+//! the table given as data.
+
+use super::{Ctx, PageRect, Sheet, Table};
+use crate::diagram::{Axis, Plot};
+use crate::error::{Error, Result};
+use crate::figure::{Dash, Figure, Symbol};
+use crate::geom::Point;
+
+/// The table the repository ships.
+const TABLE: &str = include_str!("../../../docs/curve-benchmarks.csv");
+
+/// The methods drawn, with their markers and names.
+const METHODS: [(&str, Symbol, &str); 3] = [
+    ("cubic", Symbol::Disc, "cubic Béziers, adaptive"),
+    ("polyline", Symbol::Square, "line segments, adaptive"),
+    ("uniform", Symbol::Triangle, "line segments, equal steps"),
+];
+
+/// One row: curve, method, segments, measured error, time.
+struct Row<'a> {
+    curve: &'a str,
+    method: &'a str,
+    segments: f64,
+    error: f64,
+    time: f64,
+}
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let text = ctx.options.data.as_deref().unwrap_or(TABLE);
+    let table = Table::parse(text, "data")?;
+    let curves = table.texts(table.column(&["curve"])?);
+    let methods = table.texts(table.column(&["method"])?);
+    let segments = table.numbers(table.column(&["segments"])?)?;
+    let errors = table.numbers(table.column(&["measured"])?)?;
+    let times = table.numbers(table.column(&["time"])?)?;
+    let rows: Vec<Row> = (0..curves.len())
+        .map(|k| Row {
+            curve: curves[k],
+            method: methods[k],
+            segments: segments[k],
+            error: errors[k],
+            time: times[k],
+        })
+        .filter(|r| METHODS.iter().any(|m| m.0 == r.method))
+        .filter(|r| r.segments > 0.0 && r.error > 0.0 && r.time > 0.0)
+        .collect();
+    if rows.is_empty() {
+        return Err(Error::Parse(
+            "data: no row of method cubic, polyline or uniform with positive segments, error and time"
+                .into(),
+        ));
+    }
+    let mut names: Vec<&str> = Vec::new();
+    for r in &rows {
+        if !names.contains(&r.curve) {
+            names.push(r.curve);
+        }
+    }
+    let range = |f: &dyn Fn(&Row) -> f64| {
+        rows.iter()
+            .map(f)
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+                (lo.min(v), hi.max(v))
+            })
+    };
+    let (e0, e1) = range(&|r| r.error);
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
+    let width = 0.5 * (page.width() - 48.0);
+    let height = page.height() - 32.0 - 40.0;
+    let dashes = [Dash::Solid, Dash::Dashed, Dash::DashDot, Dash::Dotted];
+    for (k, (name, title, caption, value)) in [
+        (
+            "segments",
+            "segments",
+            "(a) Segments against measured error",
+            (|r: &Row| r.segments) as fn(&Row) -> f64,
+        ),
+        (
+            "time",
+            "time per curve (µs)",
+            "(b) Time against measured error",
+            |r: &Row| r.time,
+        ),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let (lo, hi) = range(&value);
+        let x = Axis::log("measured error (px)", e0, e1)?;
+        // A decade of room above the data for the legend.
+        let y = Axis::log(title, lo, 10.0 * hi)?;
+        let rect = PageRect::new(16.0 + k as f64 * (width + 16.0), 16.0, width, height);
+        let mut plot = Plot::new(name, rect, x, y, ctx.tolerance)?
+            .with_grid()
+            .with_caption(caption);
+        for (j, curve) in names.iter().enumerate() {
+            let dash = dashes[j % dashes.len()];
+            for (method, symbol, _) in METHODS {
+                let mut points: Vec<(f64, f64)> = rows
+                    .iter()
+                    .filter(|r| r.curve == *curve && r.method == method)
+                    .map(|r| (r.error, value(r)))
+                    .collect();
+                points.sort_by(|a, b| a.0.total_cmp(&b.0));
+                let id = format!("{name}-{curve}-{method}");
+                plot.line(&format!("series-{id}"), &points, dash, None);
+                plot.points(&format!("point-{id}"), &points, symbol, None);
+            }
+            plot.legend_line(&format!("curve: {curve}"), dash);
+        }
+        for (_, symbol, label) in METHODS {
+            plot.legend_marker(label, symbol);
+        }
+        sheet.plot(plot);
+    }
+    sheet.notes(
+        Point::new(20.0, page.height() - 40.0),
+        &[if ctx.options.data.is_some() {
+            "From the table given (--data).".to_string()
+        } else {
+            "From docs/curve-benchmarks.csv, written by the curve table example (criterion times on the machine that ran it).".to_string()
+        }],
+    );
+    Ok(sheet.finish())
+}

@@ -1,0 +1,148 @@
+//! A small CSV reader for measured data: a header line of column names,
+//! then one row per line. Fields are separated by commas and trimmed;
+//! blank lines and lines starting with `#` are skipped; there is no
+//! quoting. Errors name the line.
+
+use crate::error::{Error, Result};
+
+/// Most rows read from one file.
+const MAX_ROWS: usize = 100_000;
+
+/// A table read from CSV text.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Table {
+    what: String,
+    names: Vec<String>,
+    /// Line number (1-based) and fields.
+    rows: Vec<(usize, Vec<String>)>,
+}
+
+/// A column name without its unit: `angle (deg)` and `angle_deg` are
+/// `angle`.
+fn bare(name: &str) -> String {
+    let name = name.trim().trim_start_matches('\u{feff}').to_lowercase();
+    name.split(['(', '[', ' ', '_'])
+        .next()
+        .unwrap_or("")
+        .to_string()
+}
+
+impl Table {
+    /// Reads `text`; `what` names the data in errors (`--data FILE`).
+    pub(crate) fn parse(text: &str, what: &str) -> Result<Self> {
+        let mut lines = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| (i + 1, l.trim()))
+            .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
+        let Some((_, header)) = lines.next() else {
+            return Err(Error::Parse(format!("{what}: no header line")));
+        };
+        let names: Vec<String> = header.split(',').map(bare).collect();
+        let mut rows = Vec::new();
+        for (n, line) in lines {
+            let fields: Vec<String> = line.split(',').map(|f| f.trim().to_string()).collect();
+            if fields.len() != names.len() {
+                return Err(Error::Parse(format!(
+                    "{what} line {n}: {} fields where the header has {}",
+                    fields.len(),
+                    names.len()
+                )));
+            }
+            if rows.len() == MAX_ROWS {
+                return Err(Error::Parse(format!("{what}: more than {MAX_ROWS} rows")));
+            }
+            rows.push((n, fields));
+        }
+        if rows.is_empty() {
+            return Err(Error::Parse(format!("{what}: no rows after the header")));
+        }
+        Ok(Self {
+            what: what.to_string(),
+            names,
+            rows,
+        })
+    }
+
+    /// The index of the first column called any of `names` (without
+    /// units, any case).
+    pub(crate) fn column(&self, names: &[&str]) -> Result<usize> {
+        self.names
+            .iter()
+            .position(|n| names.contains(&n.as_str()))
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "{}: no column named {} (the header has {})",
+                    self.what,
+                    names.join(" or "),
+                    self.names.join(", ")
+                ))
+            })
+    }
+
+    /// The column's values as finite numbers.
+    pub(crate) fn numbers(&self, column: usize) -> Result<Vec<f64>> {
+        self.rows
+            .iter()
+            .map(|(n, fields)| {
+                let f = &fields[column];
+                match f.parse::<f64>() {
+                    Ok(v) if v.is_finite() => Ok(v),
+                    _ => Err(Error::Parse(format!(
+                        "{} line {n}: '{f}' in column {} is not a finite number",
+                        self.what, self.names[column]
+                    ))),
+                }
+            })
+            .collect()
+    }
+
+    /// The column's texts.
+    pub(crate) fn texts(&self, column: usize) -> Vec<&str> {
+        self.rows.iter().map(|(_, f)| f[column].as_str()).collect()
+    }
+
+    /// Pairs of two numeric columns found by name.
+    pub(crate) fn pairs(&self, x: &[&str], y: &[&str]) -> Result<Vec<(f64, f64)>> {
+        let xs = self.numbers(self.column(x)?)?;
+        let ys = self.numbers(self.column(y)?)?;
+        Ok(xs.into_iter().zip(ys).collect())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_named_columns_with_units_and_comments() {
+        let t = Table::parse(
+            "# Ng, Table 2\nangle (deg), force_N\n40, 9.22\n\n50,7.65\n",
+            "data",
+        )
+        .unwrap();
+        assert_eq!(
+            t.pairs(&["angle"], &["force"]).unwrap(),
+            [(40.0, 9.22), (50.0, 7.65)]
+        );
+        assert_eq!(t.texts(0), ["40", "50"]);
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let bad = Table::parse("angle,force\n40,abc\n", "d.csv").unwrap();
+        let e = bad.pairs(&["angle"], &["force"]).unwrap_err().to_string();
+        assert!(e.contains("d.csv line 2") && e.contains("abc"), "{e}");
+        let e = Table::parse("angle,force\n40\n", "d.csv").unwrap_err();
+        assert!(e.to_string().contains("line 2: 1 fields"), "{e}");
+        assert!(Table::parse("", "d").is_err());
+        assert!(Table::parse("angle,force\n", "d").is_err());
+        let e = Table::parse("theta,f\n1,2\n", "d")
+            .unwrap()
+            .column(&["angle"])
+            .unwrap_err();
+        assert!(e.to_string().contains("theta, f"), "{e}");
+        let nan = Table::parse("angle,force\n40,NaN\n", "d").unwrap();
+        assert!(nan.pairs(&["angle"], &["force"]).is_err());
+    }
+}

@@ -1,0 +1,198 @@
+//! Ng Fig. 8: the slider force F (theory, eq. 6) and F′ (theory, eq. 8
+//! with μ = 1) against the crank angle, with the measured F′ as points, and
+//! the transmission angle β (eq. 11) below.
+//!
+//! The torque is the one Ng's F column implies, T = 264.87 N·mm (1 kg on
+//! the 27 mm circular crank; docs/seed-errata.md). F′ uses each angle's own
+//! φ (Ng's printed F′ column used the φ of 60° throughout). The measured
+//! points are Ng's experiment column (examples/ng-experiment.csv) unless
+//! other data are given.
+
+use super::{Ctx, PER_DEGREE, Sheet, Table, short, sig};
+use crate::analytic::statics;
+use crate::diagram::{Axis, Curve, Plot};
+use crate::error::{Error, Result};
+use crate::figure::catalogue::NG_TORQUE;
+use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
+use crate::geom::{Point, Vector};
+use crate::{Angle, Pose};
+
+/// Ng's measured F′ against θ.
+const NG_EXPERIMENT: &str = include_str!("../../../examples/ng-experiment.csv");
+
+/// Ng's coefficient of friction (a 45° tilt, eq. 10).
+const MU: f64 = 1.0;
+
+/// |tan φ| and its derivative per radian.
+fn tan_phi(p: &Pose) -> (f64, f64) {
+    let (h, w) = (p.rise(), p.run());
+    let l = p.mechanism().rod();
+    let dh = p.mechanism().crank() * p.angle().cos();
+    let sign = if h < 0.0 { -1.0 } else { 1.0 };
+    (sign * h / w, sign * dh * l * l / (w * w * w))
+}
+
+/// F = T / OM and its derivative per radian; `None` at a dead centre.
+fn force(p: &Pose) -> Option<(f64, f64)> {
+    let f = statics::slider_force(p, NG_TORQUE)?;
+    let s1 = p.position_rate();
+    Some((f, NG_TORQUE * p.position_acceleration() / (s1 * s1)))
+}
+
+/// The root of `f` in (a, b) by bisection, where `f(a)` and `f(b)` differ
+/// in sign; `None` otherwise.
+fn root(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> Option<f64> {
+    let (mut fa, fb) = (f(a), f(b));
+    if fa * fb > 0.0 || (fa * fb).is_nan() {
+        return None;
+    }
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        let fm = f(m);
+        if fa * fm <= 0.0 {
+            b = m;
+        } else {
+            a = m;
+            fa = fm;
+        }
+    }
+    Some(0.5 * (a + b))
+}
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let m = ctx.mechanism;
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
+    sheet.meta("torque", serde_json::json!(NG_TORQUE));
+    sheet.meta("friction", serde_json::json!(MU));
+    let text = ctx.options.data.as_deref().unwrap_or(NG_EXPERIMENT);
+    let measured = Table::parse(text, "data")?.pairs(&["angle", "theta", "θ"], &["force", "f"])?;
+    if let Some((a, _)) = measured.iter().find(|(a, _)| !(0.0..=180.0).contains(a)) {
+        return Err(Error::Parse(format!(
+            "data: angle {a}° is outside the figure's 0° to 180°"
+        )));
+    }
+    let pose_at = |deg: f64| Angle::from_degrees(deg).ok().map(|a| m.pose(a));
+    let f_curve = |deg: f64| -> Option<(Point, Vector)> {
+        let (f, df) = force(&pose_at(deg)?)?;
+        Some((Point::new(deg, f), Vector::new(1.0, df * PER_DEGREE)))
+    };
+    let f1_curve = |deg: f64| -> Option<(Point, Vector)> {
+        let p = pose_at(deg)?;
+        let (f, df) = force(&p)?;
+        let (k, dk) = tan_phi(&p);
+        Some((
+            Point::new(deg, f * (1.0 - MU * k)),
+            Vector::new(1.0, (df * (1.0 - MU * k) - f * MU * dk) * PER_DEGREE),
+        ))
+    };
+    let most = measured.iter().map(|p| p.1).fold(50.0, f64::max);
+    let least = measured.iter().map(|p| p.1).fold(0.0, f64::min);
+    let theta =
+        || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 180.0)?.with_step(20.0) };
+    let height = page.height() - 16.0 - 250.0 - 54.0 - 8.0;
+    let y = Axis::nice("force on the slider (N)", least, most)?;
+    let mut forces = Plot::new("forces", ctx.band(16.0, height), theta()?, y, ctx.tolerance)?
+        .with_caption("(a) Slider force against crank angle");
+    let pieces: [(&dyn Curve, _); 1] = [(&f_curve, 0.0..=180.0)];
+    forces.curve(
+        "curve-force",
+        &pieces,
+        Dash::Solid,
+        Some("*F*, theory: *T* / *OM* (eq. 6)"),
+    )?;
+    let pieces: [(&dyn Curve, _); 1] = [(&f1_curve, 0.0..=180.0)];
+    forces.curve(
+        "curve-force-friction",
+        &pieces,
+        Dash::Dashed,
+        Some("*F*′, theory: *F*(1 − μ tan φ), μ = 1 (eq. 8)"),
+    )?;
+    forces.points(
+        "point-measured",
+        &measured,
+        Symbol::Disc,
+        Some(if ctx.options.data.is_some() {
+            "*F*′, measured (--data)"
+        } else {
+            "*F*′, experiment (Ng, Table 2)"
+        }),
+    );
+    // The least F: where OM = −ds/dθ is greatest, d²s/dθ² = 0.
+    let at = |deg: f64, g: fn(&Pose) -> f64| pose_at(deg).map_or(f64::NAN, |p| g(&p));
+    let least_f = root(|d| at(d, Pose::position_acceleration), 1.0, 179.0);
+    if let Some(d) = least_f
+        && let Some((f, _)) = pose_at(d).as_ref().and_then(force)
+    {
+        forces.points(
+            "point-least-force",
+            &[(d, f)],
+            Symbol::Triangle,
+            Some(&format!("least *F*: θ = {d:.1}°, {} N", sig(f))),
+        );
+    }
+    sheet.plot(forces);
+
+    // (b) Transmission angle.
+    let top = 16.0 + height + 8.0;
+    let y = Axis::linear("transmission angle β (°)", 0.0, 180.0)?.with_step(30.0)?;
+    let mut beta = Plot::new(
+        "transmission",
+        ctx.band(top, 250.0),
+        theta()?,
+        y,
+        ctx.tolerance,
+    )?
+    .with_caption("(b) Transmission angle, β = 180° − φ − θ (eq. 11)");
+    let b_curve = |deg: f64| -> Option<(Point, Vector)> {
+        let p = pose_at(deg)?;
+        Some((
+            Point::new(deg, 180.0 - deg - p.obliquity().to_degrees()),
+            Vector::new(1.0, -1.0 - p.obliquity_rate()),
+        ))
+    };
+    let pieces: [(&dyn Curve, _); 1] = [(&b_curve, 0.0..=180.0)];
+    beta.curve("curve-transmission-angle", &pieces, Dash::Solid, Some("β"))?;
+    let right = root(
+        |d| 90.0 - d - at(d, Pose::obliquity).to_degrees(),
+        0.0,
+        180.0,
+    );
+    if let Some(d) = right {
+        beta.push(
+            Item::new(
+                "line-beta-90",
+                Role::Dimension,
+                Shape::Polyline {
+                    points: vec![Point::new(0.0, 90.0), Point::new(180.0, 90.0)],
+                    closed: false,
+                },
+            )
+            .dashed(Dash::Dotted),
+        );
+        beta.points(
+            "point-beta-90",
+            &[(d, 90.0)],
+            Symbol::Circle,
+            Some(&format!("β = 90° at θ = {d:.1}°")),
+        );
+    }
+    sheet.plot(beta);
+    if let (Some(a), Some(b)) = (least_f, right) {
+        sheet.meta("least_force_deg", serde_json::json!(a));
+        sheet.meta("right_transmission_deg", serde_json::json!(b));
+    }
+    sheet.notes(
+        Point::new(20.0, page.height() - 42.0),
+        &[
+            format!(
+                "Ng's rig: *r* = {} mm, *l* = {} mm; *T* = {NG_TORQUE:.2} N·mm, the torque Ng's *F* column implies (1 kg on the 27 mm crank).",
+                short(m.crank()),
+                short(m.rod()),
+            ),
+            "*F*′ with each angle's φ (Ng's printed *F*′ used φ of 60° throughout). The least *F* is not quite at β = 90°.".into(),
+        ],
+    );
+    Ok(sheet.finish())
+}

@@ -1,0 +1,359 @@
+//! The diagram figures of the catalogue: each file builds one, from plot
+//! panels ([`crate::diagram::Plot`]) and, where the textbook draws on the
+//! mechanism, a [`crate::Scene`]'s panel with curves added.
+
+mod acceleration;
+mod approximation;
+mod benchmark;
+mod calibration;
+mod centrodes;
+mod coupler;
+mod data;
+mod forces;
+mod incline;
+mod rod;
+mod velocity;
+
+use super::{Figure, FigureName, FigureOptions, PageRect, Panel, RichText};
+use crate::diagram::{Plot, format_number};
+use crate::error::{Error, Result};
+use crate::figure::{Item, PageFromWorld, Role, Shape};
+use crate::geom::{Point, Vector};
+use crate::render::Style;
+use crate::scene::{DEFAULT_TOLERANCE, Page, Scene};
+use crate::{Angle, Pose, SliderCrank};
+use serde_json::{Map, Value, json};
+
+pub(crate) use data::Table;
+
+/// Radians per degree: the curves' parameter is θ in degrees.
+pub(crate) const PER_DEGREE: f64 = std::f64::consts::PI / 180.0;
+
+/// Page margin.
+const MARGIN: f64 = 16.0;
+
+/// What a diagram is drawn with: the options resolved against the
+/// figure's own values.
+pub(crate) struct Ctx<'a> {
+    pub name: FigureName,
+    pub options: &'a FigureOptions,
+    pub mechanism: SliderCrank,
+    pub omega: f64,
+    pub angle: Angle,
+    pub style: Style,
+    pub tolerance: f64,
+}
+
+impl Ctx<'_> {
+    /// The length unit of the figure.
+    pub fn unit(&self) -> &'static str {
+        if self.name.is_ng() { "mm" } else { "ft" }
+    }
+
+    /// The page.
+    pub fn page(&self) -> Page {
+        self.name.page()
+    }
+
+    /// The pose whose construction is drawn.
+    pub fn pose(&self) -> Pose {
+        self.mechanism.pose(self.angle)
+    }
+
+    /// V_c = rω.
+    pub fn crank_speed(&self) -> f64 {
+        self.mechanism.crank() * self.omega
+    }
+
+    /// The crank speed in rpm, for notes.
+    pub fn rpm(&self) -> f64 {
+        self.omega * 60.0 / std::f64::consts::TAU
+    }
+
+    /// The page rectangle inside the margin, from `top` down `height` units.
+    pub fn band(&self, top: f64, height: f64) -> PageRect {
+        let page = self.page();
+        PageRect::new(MARGIN, top, page.width() - 2.0 * MARGIN, height)
+    }
+
+    /// A mechanism scene of this figure's engine at its pose, drawn in the
+    /// textbook manner (mirrored, the cylinder on the left) on a page of
+    /// `width` × `height`.
+    pub fn scene(&self, width: f64, height: f64) -> Result<Scene> {
+        Ok(Scene::new(self.mechanism, self.angle)
+            .named(self.name.name())
+            .with_page(Page::new(width, height, MARGIN)?)
+            .with_style(self.style)
+            .with_unit(self.unit())
+            .with_omega(self.omega)?
+            .mirrored(!self.name.is_ng()))
+    }
+}
+
+/// Which options each diagram uses.
+fn uses(name: FigureName) -> &'static [&'static str] {
+    const MECH: &str = "mechanism (--crank, --rod, --offset)";
+    const SPEED: &str = "crank speed (--rpm, --omega)";
+    match name {
+        FigureName::Fig61Centrodes | FigureName::CouplerCurves => &[MECH, "--angle", "--style"],
+        FigureName::Fig64VelocityDiagrams
+        | FigureName::AccelerationDiagrams
+        | FigureName::RodMotion => &[MECH, SPEED, "--angle", "--style"],
+        FigureName::ApproximationError => &["--style"],
+        FigureName::NgFig2Incline => &["--angle", "--style"],
+        FigureName::NgFig7Calibration => &["--data", "--fit", "--style"],
+        FigureName::NgFig8Forces => &[MECH, "--data", "--style"],
+        FigureName::CurveBenchmark => &["--data", "--style"],
+        _ => &[],
+    }
+}
+
+/// Builds the diagram `name` with `options`.
+pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure> {
+    let used = uses(name);
+    if let Some(bad) = options.given().into_iter().find(|o| !used.contains(o)) {
+        return Err(Error::Parse(format!("{} does not use {bad}", name.name())));
+    }
+    let omega = options.omega.unwrap_or_else(|| crate::rpm_to_omega(250.0));
+    if !(omega > 0.0 && omega.is_finite()) {
+        return Err(Error::OutOfRange {
+            name: "omega",
+            value: omega,
+            reason: "the diagrams are drawn for a crank turning counter-clockwise: give a positive speed"
+                .into(),
+        });
+    }
+    let ctx = Ctx {
+        name,
+        options,
+        mechanism: options.mechanism.unwrap_or_else(|| name.mechanism()),
+        omega,
+        angle: match options.angle {
+            Some(a) => a,
+            None => Angle::from_degrees(name.angle_degrees())?,
+        },
+        style: options.style.unwrap_or(Style::Textbook),
+        tolerance: DEFAULT_TOLERANCE,
+    };
+    match name {
+        FigureName::Fig61Centrodes => centrodes::build(&ctx),
+        FigureName::Fig64VelocityDiagrams => velocity::build(&ctx),
+        FigureName::AccelerationDiagrams => acceleration::build(&ctx),
+        FigureName::RodMotion => rod::build(&ctx),
+        FigureName::ApproximationError => approximation::build(&ctx),
+        FigureName::CouplerCurves => coupler::build(&ctx),
+        FigureName::NgFig2Incline => incline::build(&ctx),
+        FigureName::NgFig7Calibration => calibration::build(&ctx),
+        FigureName::NgFig8Forces => forces::build(&ctx),
+        FigureName::CurveBenchmark => benchmark::build(&ctx),
+        _ => Err(Error::Parse(format!(
+            "{} is a mechanism figure, not a diagram",
+            name.name()
+        ))),
+    }
+}
+
+/// A figure being assembled from panels.
+pub(crate) struct Sheet {
+    name: FigureName,
+    style: Style,
+    tolerance: f64,
+    panels: Vec<Panel>,
+    plots: Vec<Value>,
+    meta: Map<String, Value>,
+}
+
+impl Sheet {
+    pub fn new(ctx: &Ctx) -> Self {
+        Self {
+            name: ctx.name,
+            style: ctx.style,
+            tolerance: ctx.tolerance,
+            panels: Vec::new(),
+            plots: Vec::new(),
+            meta: Map::new(),
+        }
+    }
+
+    /// Records the mechanism, speed and pose in the metadata.
+    pub fn mechanism(&mut self, ctx: &Ctx, with_speed: bool, with_angle: bool) {
+        let m = &ctx.mechanism;
+        self.meta.insert(
+            "mechanism".into(),
+            json!({"crank": m.crank(), "rod": m.rod(), "offset": m.offset(), "unit": ctx.unit()}),
+        );
+        if with_speed {
+            self.meta.insert("omega".into(), json!(ctx.omega));
+        }
+        if with_angle {
+            self.meta
+                .insert("angle_deg".into(), json!(ctx.angle.degrees()));
+        }
+    }
+
+    /// Adds a metadata key.
+    pub fn meta(&mut self, key: &str, value: Value) {
+        self.meta.insert(key.into(), value);
+    }
+
+    /// Adds a plot's panel and its description.
+    pub fn plot(&mut self, plot: Plot) {
+        self.plots.push(plot.metadata());
+        self.panels.push(plot.finish());
+    }
+
+    /// Adds a panel as it is.
+    pub fn panel(&mut self, panel: Panel) {
+        self.panels.push(panel);
+    }
+
+    /// Lines of notes from `corner` (page units) down, in a panel of their
+    /// own (`panel-notes`).
+    pub fn notes(&mut self, corner: Point, lines: &[String]) {
+        let item = Item::new(
+            "note-diagram",
+            Role::Label,
+            Shape::Note {
+                corner,
+                lines: lines.iter().map(|l| RichText::parse(l)).collect(),
+            },
+        );
+        let page = self.name.page();
+        let rect = PageRect::new(
+            corner.x,
+            corner.y,
+            (page.width() - MARGIN - corner.x).max(1.0),
+            (page.height() - MARGIN - corner.y).max(1.0),
+        );
+        self.panels.push(Panel::new(
+            "panel-notes",
+            rect,
+            PageFromWorld::identity(),
+            vec![item],
+        ));
+    }
+
+    /// The figure, with every number of its metadata rounded to 12
+    /// significant digits (stable text).
+    pub fn finish(mut self) -> Figure {
+        let page = self.name.page();
+        if !self.plots.is_empty() {
+            self.meta.insert("plots".into(), Value::Array(self.plots));
+        }
+        for v in self.meta.values_mut() {
+            round_numbers(v);
+        }
+        Figure::new(
+            self.name.name(),
+            page.width(),
+            page.height(),
+            self.style,
+            self.tolerance,
+            self.panels,
+            self.meta,
+        )
+    }
+}
+
+/// Rounds every number in `v` to 12 significant digits.
+fn round_numbers(v: &mut Value) {
+    match v {
+        Value::Number(n) => {
+            if let Some(x) = n.as_f64()
+                && !n.is_i64()
+                && !n.is_u64()
+            {
+                *v = json!(crate::scene::round(x));
+            }
+        }
+        Value::Array(a) => a.iter_mut().for_each(round_numbers),
+        Value::Object(o) => o.values_mut().for_each(round_numbers),
+        _ => {}
+    }
+}
+
+/// A value of the pose against the crank angle: the point (θ in degrees,
+/// f) and its derivative per degree, from `f` giving the value and its
+/// derivative per radian.
+pub(crate) fn against_angle<'a>(
+    m: SliderCrank,
+    f: impl Fn(&Pose) -> (f64, f64) + 'a,
+) -> impl Fn(f64) -> Option<(Point, Vector)> + 'a {
+    move |deg| {
+        let pose = m.pose(Angle::from_degrees(deg).ok()?);
+        let (v, dv) = f(&pose);
+        Some((Point::new(deg, v), Vector::new(1.0, dv * PER_DEGREE)))
+    }
+}
+
+/// The same against time t = θ/ω (θ in radians), parameter θ in degrees.
+pub(crate) fn against_time<'a>(
+    m: SliderCrank,
+    omega: f64,
+    f: impl Fn(&Pose) -> (f64, f64) + 'a,
+) -> impl Fn(f64) -> Option<(Point, Vector)> + 'a {
+    move |deg| {
+        let pose = m.pose(Angle::from_degrees(deg).ok()?);
+        let (v, dv) = f(&pose);
+        Some((
+            Point::new(deg * PER_DEGREE / omega, v),
+            Vector::new(PER_DEGREE / omega, dv * PER_DEGREE),
+        ))
+    }
+}
+
+/// The same against the displacement of A from the outer dead centre,
+/// x₀ − x_A, parameter θ in degrees.
+pub(crate) fn against_travel<'a>(
+    m: SliderCrank,
+    f: impl Fn(&Pose) -> (f64, f64) + 'a,
+) -> impl Fn(f64) -> Option<(Point, Vector)> + 'a {
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let far = ((l + r - e) * (l + r + e)).sqrt();
+    move |deg| {
+        let pose = m.pose(Angle::from_degrees(deg).ok()?);
+        let (v, dv) = f(&pose);
+        Some((
+            Point::new(far - pose.position(), v),
+            Vector::new(-pose.position_rate() * PER_DEGREE, dv * PER_DEGREE),
+        ))
+    }
+}
+
+/// The dead centres in degrees, outer then inner (0° and 180° in line).
+pub(crate) fn dead_centres(m: &SliderCrank) -> (f64, f64) {
+    (
+        m.outer_dead_centre().to_degrees(),
+        m.inner_dead_centre().to_degrees(),
+    )
+}
+
+/// Largest |value| of `f` over a turn (721 samples), for axis ranges.
+pub(crate) fn extent(m: &SliderCrank, f: impl Fn(&Pose) -> f64) -> (f64, f64) {
+    (0..=720)
+        .filter_map(|k| Angle::from_degrees(k as f64 * 0.5).ok())
+        .map(|a| f(&m.pose(a)))
+        .filter(|v| v.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        })
+}
+
+/// A number for notes: four significant figures with a true minus sign.
+pub(crate) fn sig(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return "0".into();
+    }
+    let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 12) as usize;
+    format_number(x, digits)
+}
+
+/// Like [`sig`] without trailing zeros (`50°`, `250 rpm`, `0.5 ft`).
+pub(crate) fn short(x: f64) -> String {
+    let s = sig(x);
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}

@@ -1,0 +1,114 @@
+//! The connecting rod's angular velocity and acceleration against the
+//! crank angle (textbook §37), with the approximation of eq. (2a), and the
+//! values at the drawn pose marked.
+//!
+//! Signs are the seeds': dφ/dt and d²φ/dt² of the obliquity φ
+//! (sin φ = (r sin θ − e)/l); the rod's counter-clockwise angular velocity
+//! is −dφ/dt.
+
+use super::{Ctx, Sheet, against_angle, extent, short, sig};
+use crate::Pose;
+use crate::diagram::{Axis, Plot};
+use crate::error::Result;
+use crate::figure::{Dash, Figure, Symbol};
+use crate::geom::Point;
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let m = ctx.mechanism;
+    let omega = ctx.omega;
+    let w2 = omega * omega;
+    let n = m.ratio();
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, true, true);
+    let theta_axis =
+        || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0) };
+    let height = 0.5 * (page.height() - 32.0 - 56.0);
+    let pose = ctx.pose();
+    let theta = pose.angle().degrees();
+
+    // (a) Angular velocity.
+    let (lo, hi) = extent(&m, |p| omega * p.obliquity_rate());
+    let y = Axis::nice("dφ/d*t* (rad/s)", lo, hi)?;
+    let mut velocity = Plot::new(
+        "angular-velocity",
+        ctx.band(16.0, height),
+        theta_axis()?,
+        y,
+        ctx.tolerance,
+    )?
+    .with_caption("(a) Angular velocity of the rod, ω *r* cos θ / (*l* cos φ)");
+    let rate = against_angle(m, |p: &Pose| {
+        (
+            omega * p.obliquity_rate(),
+            omega * p.obliquity_acceleration(),
+        )
+    });
+    velocity.curve(
+        "curve-rod-angular-velocity",
+        &[(&rate, 0.0..=360.0)],
+        Dash::Solid,
+        Some("exact"),
+    )?;
+    let v0 = omega * pose.obliquity_rate();
+    velocity.points(
+        "point-rod-angular-velocity",
+        &[(theta, v0)],
+        Symbol::Circle,
+        Some(&format!("θ = {}°: {} rad/s", short(theta), sig(v0))),
+    );
+    sheet.plot(velocity);
+
+    // (b) Angular acceleration, exact and eq. (2a).
+    let (lo, hi) = extent(&m, |p| w2 * p.obliquity_acceleration());
+    let y = Axis::nice("d²φ/d*t*² (rad/s²)", lo.min(-w2 / n), hi.max(w2 / n))?;
+    let mut acceleration = Plot::new(
+        "angular-acceleration",
+        ctx.band(16.0 + height + 24.0, height),
+        theta_axis()?,
+        y,
+        ctx.tolerance,
+    )?
+    .with_caption("(b) Angular acceleration of the rod");
+    let exact = against_angle(m, |p: &Pose| {
+        (w2 * p.obliquity_acceleration(), w2 * p.obliquity_jerk())
+    });
+    acceleration.curve(
+        "curve-rod-angular-acceleration",
+        &[(&exact, 0.0..=360.0)],
+        Dash::Solid,
+        Some("exact, eq. (2)"),
+    )?;
+    let approx = against_angle(m, |p: &Pose| {
+        let (s, c) = (p.angle().sin(), p.angle().cos());
+        let q = (n - s) * (n + s);
+        (-w2 * s / q.sqrt(), -w2 * n * n * c / (q * q.sqrt()))
+    });
+    acceleration.curve(
+        "curve-rod-angular-acceleration-eq-2a",
+        &[(&approx, 0.0..=360.0)],
+        Dash::Dashed,
+        Some("eq. (2a), −ω² sin θ / √(*n*² − sin²θ)"),
+    )?;
+    let a0 = w2 * pose.obliquity_acceleration();
+    acceleration.points(
+        "point-rod-angular-acceleration",
+        &[(theta, a0)],
+        Symbol::Circle,
+        Some(&format!("θ = {}°: {} rad/s²", short(theta), sig(a0))),
+    );
+    sheet.plot(acceleration);
+    sheet.notes(
+        Point::new(20.0, page.height() - 36.0),
+        &[format!(
+            "*r* = {} {u}, *l* = {} {u} (*n* = {}), {} rpm (ω = {} rad/s). Signs as the seeds': the rod turns counter-clockwise at −dφ/d*t*.",
+            short(m.crank()),
+            short(m.rod()),
+            short(n),
+            short(ctx.rpm()),
+            sig(omega),
+            u = ctx.unit()
+        )],
+    );
+    Ok(sheet.finish())
+}

@@ -1,0 +1,196 @@
+//! Textbook Fig. 64: the polar diagram of piston velocity, the velocity on
+//! a distance base and on a time base against simple harmonic motion.
+//!
+//! The polar diagram sets E′ off on the crank CB itself with CE′ = CE, as
+//! the textbook marks it, so the loop of the return stroke lies below the
+//! line of stroke. ([`crate::diagram::LocusKind::PolarVelocity`] keeps the
+//! sign of CE and lays the return stroke on the crank produced backwards,
+//! which folds its loop onto the first one, mirrored: less legible.)
+//! The distance base sets E″ off above A at the height CE (the velocity
+//! towards the crank positive), so it is one closed curve over the turn.
+
+use super::{Ctx, PER_DEGREE, Sheet, against_time, dead_centres, extent, short, sig};
+use crate::diagram::{Axis, Curve, Locus, LocusKind, Plot};
+use crate::error::Result;
+use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
+use crate::geom::{Point, Vector};
+use crate::scene::Layer;
+use crate::{Angle, Pose};
+
+/// Height of the mechanism panel with its scale notes.
+const TOP: f64 = 400.0;
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let m = ctx.mechanism;
+    let omega = ctx.omega;
+    let unit = ctx.unit();
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, true, true);
+
+    // (a) The mechanism at the drawn pose with E, and the two diagrams in
+    // its own world coordinates.
+    let scene = ctx.scene(page.width(), TOP)?.with_layers([
+        Layer::Mechanism,
+        Layer::Velocity,
+        Layer::Scales,
+    ]);
+    let base = scene.figure();
+    let panel = base.panels()[0].clone();
+    let mut plot = Plot::with_map(
+        "mechanism",
+        *panel.rect(),
+        *panel.rect(),
+        *panel.transform(),
+        ctx.tolerance,
+    );
+    for item in panel.items() {
+        plot.avoid(item);
+    }
+    let polar = Locus::new(m, LocusKind::PolarVelocity);
+    let outward = |deg: f64| polar.eval(deg);
+    let inward = |deg: f64| {
+        polar
+            .eval(deg)
+            .map(|(p, d)| (Point::origin() - p.coords, -d))
+    };
+    let (o, i) = dead_centres(&m);
+    plot.curve(
+        "curve-polar-velocity",
+        &[(&outward, o..=i), (&inward, i..=o + 360.0)],
+        Dash::Solid,
+        Some("polar diagram: *E*′ on the crank, *CE*′ = *CE*"),
+    )?;
+    let distance = |deg: f64| -> Option<(Point, Vector)> {
+        let pose = m.pose(Angle::from_degrees(deg).ok()?);
+        Some((
+            Point::new(pose.position(), -pose.position_rate()),
+            Vector::new(pose.position_rate(), -pose.position_acceleration()) * PER_DEGREE,
+        ))
+    };
+    plot.curve(
+        "curve-distance-base",
+        &[(&distance, 0.0..=360.0)],
+        Dash::Dashed,
+        Some("distance base: *E*″ over *A*, height *CE*"),
+    )?;
+    construction(&mut plot, &ctx.pose());
+    let drawn = plot.finish();
+    sheet.panel(panel.with_items(drawn.items().iter().cloned()));
+
+    // (b) The velocity on a time base over one revolution, against simple
+    // harmonic motion of the same amplitude V_c.
+    let period = std::f64::consts::TAU / omega;
+    let vc = ctx.crank_speed();
+    let (lo, hi) = extent(&m, |p| -omega * p.position_rate());
+    let top = TOP + 6.0;
+    let rect = ctx.band(top, page.height() - top - 60.0);
+    let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
+    let y = Axis::nice(
+        &format!("*V*_p ({unit}/s), towards the crank"),
+        lo.min(-vc),
+        hi.max(vc),
+    )?;
+    let mut time = Plot::new("time-base", rect, x, y, ctx.tolerance)?.with_caption(&format!(
+        "Velocity on a time base: one revolution at {} rpm",
+        short(ctx.rpm())
+    ));
+    let exact = against_time(m, omega, |p: &Pose| {
+        (
+            -omega * p.position_rate(),
+            -omega * p.position_acceleration(),
+        )
+    });
+    time.curve(
+        "curve-time-base",
+        &[(&exact, 0.0..=360.0)],
+        Dash::Solid,
+        Some("piston, *V*_p = −d*x*/d*t*"),
+    )?;
+    let shm = against_time(m, omega, |p: &Pose| {
+        (vc * p.angle().sin(), vc * p.angle().cos())
+    });
+    time.curve(
+        "curve-time-base-shm",
+        &[(&shm, 0.0..=360.0)],
+        Dash::Dashed,
+        Some("simple harmonic motion, *V*_c sin θ"),
+    )?;
+    let pose = ctx.pose();
+    let theta = pose.angle().degrees();
+    time.points(
+        "point-time-base",
+        &[(theta * PER_DEGREE / omega, -omega * pose.position_rate())],
+        Symbol::Disc,
+        Some(&format!("the pose drawn above, θ = {}°", short(theta))),
+    );
+    sheet.plot(time);
+    sheet.notes(
+        Point::new(20.0, page.height() - 48.0),
+        &[
+            format!(
+                "Scale: *CB* = *r* represents *V*_c = *r*ω = {} {unit}/s; *CE*′ and the height of *E*″ represent *V*_p to the same scale.",
+                sig(vc)
+            ),
+            "*E*′ is set off on the crank itself (*CE*′ = *CE*), so the return stroke's loop lies below the crank centre.".to_string(),
+        ],
+    );
+    Ok(sheet.finish())
+}
+
+/// The construction of E′ and E″ for the drawn pose: the arc about C from
+/// E to E′, the line from E across to E″ over A.
+fn construction(plot: &mut Plot, pose: &Pose) {
+    let ce = -pose.position_rate();
+    let r = pose.mechanism().crank();
+    if ce.abs() < 1e-6 * r {
+        return;
+    }
+    let u = Vector::new(pose.angle().cos(), pose.angle().sin());
+    let e1 = Point::origin() + u * ce.abs();
+    let e2 = Point::new(pose.position(), ce);
+    let start = if ce > 0.0 { 0.5 } else { -0.5 } * std::f64::consts::PI;
+    let end = u.y.atan2(u.x);
+    let mut sweep = end - start;
+    while sweep > std::f64::consts::PI {
+        sweep -= std::f64::consts::TAU;
+    }
+    while sweep <= -std::f64::consts::PI {
+        sweep += std::f64::consts::TAU;
+    }
+    plot.push(Item::new(
+        "arc-E-E1",
+        Role::Auxiliary,
+        Shape::Arc {
+            centre: Point::origin(),
+            radius: ce.abs(),
+            start,
+            sweep,
+            arrow: false,
+        },
+    ));
+    plot.push(Item::new(
+        "line-E-E2",
+        Role::Auxiliary,
+        Shape::Polyline {
+            points: vec![Point::new(0.0, ce), e2],
+            closed: false,
+        },
+    ));
+    for (id, p, name) in [("E1", e1, "E′"), ("E2", e2, "E″")] {
+        plot.push(Item::new(
+            format!("point-{id}"),
+            Role::Construction,
+            Shape::Dot { centre: p },
+        ));
+        plot.push(Item::new(
+            format!("label-{id}"),
+            Role::Label,
+            Shape::Label {
+                anchor: p,
+                text: RichText::italic(name),
+                size: TextSize::Letter,
+            },
+        ));
+    }
+}

@@ -1,0 +1,1021 @@
+//! The diagram figures: reviewed snapshots, rendering, and the accuracy of
+//! every curve they draw, measured from the written SVG against the exact
+//! curve computed here from the formulas (DESIGN.md §1–2, the seeds'
+//! equations), independently of the library.
+
+use resvg::tiny_skia;
+use serde_json::Value;
+use slider_crank::FigureName;
+use slider_crank::figure::{Figure, FigureOptions, Fit};
+use slider_crank::render::{to_png, to_svg};
+use std::f64::consts::PI;
+
+fn snapshot_settings() -> insta::Settings {
+    let mut s = insta::Settings::clone_current();
+    s.set_snapshot_path("../snapshots");
+    s.set_prepend_module_to_snapshot(false);
+    s
+}
+
+fn figure(name: FigureName) -> Figure {
+    name.figure(&FigureOptions::default())
+        .unwrap_or_else(|e| panic!("{}: {e}", name.name()))
+}
+
+fn metadata(svg: &str) -> Value {
+    let a = svg.find("<metadata>").unwrap() + "<metadata>".len();
+    let b = svg.find("</metadata>").unwrap();
+    let text = svg[a..b]
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The start tag of the element with `id`.
+fn tag<'a>(svg: &'a str, id: &str) -> Option<&'a str> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let start = svg[..at].rfind('<')?;
+    let end = at + svg[at..].find('>')?;
+    Some(&svg[start..end])
+}
+
+fn attr(svg: &str, id: &str, name: &str) -> Option<String> {
+    let t = tag(svg, id)?;
+    let key = format!(" {name}=\"");
+    let v = t.find(&key)? + key.len();
+    Some(t[v..v + t[v..].find('"')?].to_string())
+}
+
+fn num(svg: &str, id: &str, name: &str) -> f64 {
+    attr(svg, id, name)
+        .unwrap_or_else(|| panic!("no {name} on #{id}"))
+        .parse()
+        .unwrap()
+}
+
+/// An affine map [a b c d e f]: page = (a x + c y + e, b x + d y + f).
+#[derive(Debug, Clone, Copy)]
+struct Map([f64; 6]);
+
+impl Map {
+    fn parse(text: &str) -> Self {
+        let v: Vec<f64> = text.split(' ').map(|t| t.parse().unwrap()).collect();
+        Map([v[0], v[1], v[2], v[3], v[4], v[5]])
+    }
+
+    fn apply(&self, p: (f64, f64)) -> (f64, f64) {
+        let m = self.0;
+        (
+            m[0] * p.0 + m[2] * p.1 + m[4],
+            m[1] * p.0 + m[3] * p.1 + m[5],
+        )
+    }
+
+    fn invert(&self, q: (f64, f64)) -> (f64, f64) {
+        let [a, b, c, d, e, f] = self.0;
+        let det = a * d - b * c;
+        let (x, y) = (q.0 - e, q.1 - f);
+        ((d * x - c * y) / det, (a * y - b * x) / det)
+    }
+}
+
+/// The map of the panel that holds the element with `id`.
+fn panel_map(svg: &str, id: &str) -> (String, Map) {
+    let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+    let key = "data-page-from-world=\"";
+    let g = svg[..at].rfind(key).unwrap() + key.len();
+    let coefficients = &svg[g..g + svg[g..].find('"').unwrap()];
+    let rest = &svg[g..];
+    let pid = rest.find("id=\"").unwrap() + 4;
+    let panel = &rest[pid..pid + rest[pid..].find('"').unwrap()];
+    (panel.to_string(), Map::parse(coefficients))
+}
+
+/// The subpaths of an SVG path `d` (M, L, C, Z as the renderer writes
+/// them), each a start and its segments, in page coordinates.
+type P = (f64, f64);
+
+#[derive(Debug, Clone)]
+enum Seg {
+    Line(P),
+    Cubic(P, P, P),
+}
+
+fn subpaths(d: &str) -> Vec<(P, Vec<Seg>)> {
+    let mut out: Vec<(P, Vec<Seg>)> = Vec::new();
+    let mut tokens = d.split_whitespace().peekable();
+    let mut numbers = Vec::new();
+    let mut command = ' ';
+    let flush = |command: char, numbers: &mut Vec<f64>, out: &mut Vec<(P, Vec<Seg>)>| {
+        match command {
+            'M' => out.push(((numbers[0], numbers[1]), Vec::new())),
+            'L' => out
+                .last_mut()
+                .unwrap()
+                .1
+                .push(Seg::Line((numbers[0], numbers[1]))),
+            'C' => out.last_mut().unwrap().1.push(Seg::Cubic(
+                (numbers[0], numbers[1]),
+                (numbers[2], numbers[3]),
+                (numbers[4], numbers[5]),
+            )),
+            'Z' => {
+                let start = out.last().unwrap().0;
+                out.last_mut().unwrap().1.push(Seg::Line(start));
+            }
+            _ => {}
+        }
+        numbers.clear();
+    };
+    while let Some(t) = tokens.next() {
+        let first = t.chars().next().unwrap();
+        if first.is_ascii_alphabetic() {
+            flush(command, &mut numbers, &mut out);
+            command = first;
+            let rest = &t[1..];
+            if !rest.is_empty() {
+                numbers.push(rest.parse().unwrap());
+            }
+            if command == 'Z' && tokens.peek().is_none() {
+                flush('Z', &mut numbers, &mut out);
+                command = ' ';
+            }
+        } else {
+            numbers.push(t.parse().unwrap());
+        }
+    }
+    flush(command, &mut numbers, &mut out);
+    out
+}
+
+fn eval(start: P, seg: &Seg, t: f64) -> P {
+    match seg {
+        Seg::Line(p) => (start.0 + (p.0 - start.0) * t, start.1 + (p.1 - start.1) * t),
+        Seg::Cubic(a, b, p) => {
+            let s = 1.0 - t;
+            let (w0, w1, w2, w3) = (s * s * s, 3.0 * s * s * t, 3.0 * s * t * t, t * t * t);
+            (
+                w0 * start.0 + w1 * a.0 + w2 * b.0 + w3 * p.0,
+                w0 * start.1 + w1 * a.1 + w2 * b.1 + w3 * p.1,
+            )
+        }
+    }
+}
+
+fn end(seg: &Seg) -> P {
+    match seg {
+        Seg::Line(p) | Seg::Cubic(_, _, p) => *p,
+    }
+}
+
+fn dist(a: P, b: P) -> f64 {
+    (a.0 - b.0).hypot(a.1 - b.1)
+}
+
+// ---------------------------------------------------------------------
+// The exact curves, from the formulas.
+
+/// Truncated Taylor series in θ to the third order: the exact first three
+/// derivatives of the formulas without writing them out.
+#[derive(Debug, Clone, Copy)]
+struct Jet([f64; 4]);
+
+impl Jet {
+    fn var(x: f64) -> Self {
+        Jet([x, 1.0, 0.0, 0.0])
+    }
+    fn c(x: f64) -> Self {
+        Jet([x, 0.0, 0.0, 0.0])
+    }
+    fn add(self, o: Jet) -> Jet {
+        Jet(std::array::from_fn(|k| self.0[k] + o.0[k]))
+    }
+    fn scale(self, s: f64) -> Jet {
+        Jet(self.0.map(|v| v * s))
+    }
+    fn mul(self, o: Jet) -> Jet {
+        let (a, b) = (self.0, o.0);
+        Jet(std::array::from_fn(|k| {
+            (0..=k).map(|i| a[i] * b[k - i]).sum()
+        }))
+    }
+    /// f(self) given f and its first three derivatives at the value.
+    fn compose(self, f: [f64; 4]) -> Jet {
+        let [_, c1, c2, c3] = self.0;
+        Jet([
+            f[0],
+            f[1] * c1,
+            f[1] * c2 + 0.5 * f[2] * c1 * c1,
+            f[1] * c3 + f[2] * c1 * c2 + f[3] * c1 * c1 * c1 / 6.0,
+        ])
+    }
+    fn sin(self) -> Jet {
+        let (s, c) = self.0[0].sin_cos();
+        self.compose([s, c, -s, -c])
+    }
+    fn cos(self) -> Jet {
+        let (s, c) = self.0[0].sin_cos();
+        self.compose([c, -s, -c, s])
+    }
+    fn sqrt(self) -> Jet {
+        let u = self.0[0];
+        let r = u.sqrt();
+        self.compose([r, 0.5 / r, -0.25 / (u * r), 0.375 / (u * u * r)])
+    }
+    fn asin(self) -> Jet {
+        let u = self.0[0];
+        let q = 1.0 - u * u;
+        let r = q.sqrt();
+        self.compose([
+            u.asin(),
+            1.0 / r,
+            u / (q * r),
+            (1.0 + 2.0 * u * u) / (q * q * r),
+        ])
+    }
+    /// The k-th derivative.
+    fn d(&self, k: usize) -> f64 {
+        self.0[k] * [1.0, 1.0, 2.0, 6.0][k]
+    }
+}
+
+/// An in-line engine at θ (radians): the slider position s and the rod
+/// angle φ as jets.
+fn engine(r: f64, l: f64, theta: f64) -> (Jet, Jet) {
+    let t = Jet::var(theta);
+    let h = t.sin().scale(r);
+    let w = Jet::c(l * l).add(h.mul(h).scale(-1.0)).sqrt();
+    let s = t.cos().scale(r).add(w);
+    let phi = h.scale(1.0 / l).asin();
+    (s, phi)
+}
+
+type Param = Box<dyn Fn(f64) -> P>;
+
+/// A curve: world point against its parameter, over ranges.
+struct Exact {
+    f: Param,
+    ranges: Vec<(f64, f64)>,
+}
+
+fn exact(f: impl Fn(f64) -> P + 'static, ranges: &[(f64, f64)]) -> Exact {
+    Exact {
+        f: Box::new(f),
+        ranges: ranges.to_vec(),
+    }
+}
+
+const TURN: (f64, f64) = (0.0, 2.0 * PI);
+const HALF: (f64, f64) = (0.0, PI);
+const DEG: f64 = PI / 180.0;
+
+fn omega() -> f64 {
+    250.0 * 2.0 * PI / 60.0
+}
+
+/// Every curve of the diagram `name` at its defaults, by id; the
+/// parameter is θ in radians except for the calibration lines (force).
+fn curves(name: FigureName) -> Vec<(String, Exact)> {
+    let (r, l) = (0.5, 3.0);
+    let w = omega();
+    let mut v: Vec<(String, Exact)> = Vec::new();
+    let mut add = |id: &str, e: Exact| v.push((id.to_string(), e));
+    match name {
+        FigureName::Fig64VelocityDiagrams => {
+            add(
+                "curve-polar-velocity",
+                exact(
+                    move |t| {
+                        let ce = -engine(r, l, t).0.d(1);
+                        (ce.abs() * t.cos(), ce.abs() * t.sin())
+                    },
+                    &[TURN],
+                ),
+            );
+            add(
+                "curve-distance-base",
+                exact(
+                    move |t| {
+                        let s = engine(r, l, t).0;
+                        (s.d(0), -s.d(1))
+                    },
+                    &[TURN],
+                ),
+            );
+            add(
+                "curve-time-base",
+                exact(move |t| (t / w, -w * engine(r, l, t).0.d(1)), &[TURN]),
+            );
+            add(
+                "curve-time-base-shm",
+                exact(move |t| (t / w, r * w * t.sin()), &[TURN]),
+            );
+        }
+        FigureName::AccelerationDiagrams => {
+            let w2 = w * w;
+            add(
+                "curve-acceleration-distance",
+                exact(
+                    move |t| {
+                        let s = engine(r, l, t).0;
+                        (r + l - s.d(0), -w2 * s.d(2))
+                    },
+                    &[HALF],
+                ),
+            );
+            add(
+                "curve-acceleration-distance-shm",
+                exact(move |t| (r * (1.0 - t.cos()), r * w2 * t.cos()), &[HALF]),
+            );
+            add(
+                "curve-acceleration-time",
+                exact(move |t| (t / w, -w2 * engine(r, l, t).0.d(2)), &[TURN]),
+            );
+            add(
+                "curve-acceleration-time-shm",
+                exact(move |t| (t / w, r * w2 * t.cos()), &[TURN]),
+            );
+            add(
+                "curve-polar-acceleration",
+                exact(
+                    move |t| {
+                        let g = -engine(r, l, t).0.d(2);
+                        (g * t.cos(), g * t.sin())
+                    },
+                    &[TURN],
+                ),
+            );
+            add(
+                "curve-polar-acceleration-shm",
+                exact(
+                    move |t| (r * t.cos() * t.cos(), r * t.cos() * t.sin()),
+                    &[TURN],
+                ),
+            );
+        }
+        FigureName::RodMotion => {
+            let w2 = w * w;
+            let n = l / r;
+            add(
+                "curve-rod-angular-velocity",
+                exact(move |t| (t / DEG, w * engine(r, l, t).1.d(1)), &[TURN]),
+            );
+            add(
+                "curve-rod-angular-acceleration",
+                exact(move |t| (t / DEG, w2 * engine(r, l, t).1.d(2)), &[TURN]),
+            );
+            add(
+                "curve-rod-angular-acceleration-eq-2a",
+                exact(
+                    move |t| {
+                        let s = t.sin();
+                        (t / DEG, -w2 * s / (n * n - s * s).sqrt())
+                    },
+                    &[TURN],
+                ),
+            );
+        }
+        FigureName::ApproximationError => {
+            type Error = fn(f64, f64) -> f64;
+            let panels: [(&str, Error); 4] = [
+                ("obliquity", |n, t| (n * n - t.sin().powi(2)).sqrt() - n),
+                ("velocity", |n, t| {
+                    let eq2 = t.sin() + (2.0 * t).sin() / (2.0 * n);
+                    eq2 + engine(1.0, n, t).0.d(1)
+                }),
+                ("acceleration", |n, t| {
+                    let eq3 = t.cos() + (2.0 * t).cos() / n;
+                    eq3 + engine(1.0, n, t).0.d(2)
+                }),
+                ("rod", |n, t| {
+                    let s = t.sin();
+                    -s / (n * n - s * s).sqrt() - engine(1.0, n, t).1.d(2)
+                }),
+            ];
+            for (panel, f) in panels {
+                for n in [4.0f64, 5.0, 6.0] {
+                    add(
+                        &format!("curve-{panel}-n{}", n as u32),
+                        exact(move |t| (t / DEG, f(n, t)), &[TURN]),
+                    );
+                }
+            }
+        }
+        FigureName::Fig61Centrodes => return centrodes(35.0),
+        FigureName::CouplerCurves => {
+            for (t0, id) in [(0.25, "25"), (0.5, "50"), (0.75, "75")] {
+                add(
+                    &format!("curve-coupler-{id}"),
+                    exact(
+                        move |t| {
+                            let a = engine(r, l, t).0.d(0);
+                            let b = (r * t.cos(), r * t.sin());
+                            (a + (b.0 - a) * t0, b.1 * t0)
+                        },
+                        &[TURN],
+                    ),
+                );
+            }
+        }
+        FigureName::NgFig8Forces => {
+            let (r, l, torque) = (25.0, 72.0, 9.81 * 27.0);
+            let e = 1e-6;
+            let force = move |t: f64| torque / -engine(r, l, t).0.d(1);
+            add(
+                "curve-force",
+                exact(move |t| (t / DEG, force(t)), &[(e, PI - e)]),
+            );
+            add(
+                "curve-force-friction",
+                exact(
+                    move |t| {
+                        let h = r * t.sin();
+                        (t / DEG, force(t) * (1.0 - h / (l * l - h * h).sqrt()))
+                    },
+                    &[(e, PI - e)],
+                ),
+            );
+            add(
+                "curve-transmission-angle",
+                exact(
+                    move |t| (t / DEG, 180.0 - t / DEG - (r * t.sin() / l).asin() / DEG),
+                    &[HALF],
+                ),
+            );
+        }
+        FigureName::NgFig7Calibration => {
+            let (origin, (a, b)) = ng_fits();
+            add(
+                "curve-fit-origin",
+                exact(move |x| (x, origin * x), &[(0.0, 15.0)]),
+            );
+            add(
+                "curve-fit-intercept",
+                exact(move |x| (x, a * x + b), &[(0.0, 15.0)]),
+            );
+        }
+        _ => {}
+    }
+    v
+}
+
+/// The centrodes of fig-61 (r = 0.5, l = 1.25), the moving one carried with
+/// the rod at `degrees`.
+fn centrodes(degrees: f64) -> Vec<(String, Exact)> {
+    let (r, l) = (0.5, 1.25);
+    let theta0 = degrees * DEG;
+    let mut v: Vec<(String, Exact)> = Vec::new();
+    let mut add = |id: &str, e: Exact| v.push((id.to_string(), e));
+
+    let fixed = move |t: f64| {
+        let x = engine(r, l, t).0.d(0);
+        (x, x * t.tan())
+    };
+    // In the rod's frame (origin A, x towards B), carried with the
+    // rod at θ0.
+    let moving = move |t: f64| {
+        let x = engine(r, l, t).0.d(0);
+        let k = x * t.tan();
+        let h = r * t.sin();
+        let wr = (l * l - h * h).sqrt();
+        let (px, py) = (k * h / l, -k * wr / l);
+        let a0 = (engine(r, l, theta0).0.d(0), 0.0);
+        let b0 = (r * theta0.cos(), r * theta0.sin());
+        let u = ((b0.0 - a0.0) / l, (b0.1 - a0.1) / l);
+        let v = (-u.1, u.0);
+        (a0.0 + u.0 * px + v.0 * py, a0.1 + u.1 * px + v.1 * py)
+    };
+    let e = 1e-9;
+    let one = (-0.5 * PI + e, 0.5 * PI - e);
+    let two = (0.5 * PI + e, 1.5 * PI - e);
+    add("curve-centrode-fixed-1", exact(fixed, &[one]));
+    add("curve-centrode-fixed-2", exact(fixed, &[two]));
+    add("curve-centrode-moving-1", exact(moving, &[one]));
+    add("curve-centrode-moving-2", exact(moving, &[two]));
+    v
+}
+
+/// Ng's Table 1 fitted here: the slope through the origin, and the
+/// ordinary slope and intercept.
+fn ng_fits() -> (f64, (f64, f64)) {
+    let pts = [
+        (2.45, 50.0),
+        (4.91, 95.0),
+        (7.36, 148.0),
+        (9.81, 190.0),
+        (12.27, 238.0),
+        (14.72, 290.0),
+    ];
+    let sxy: f64 = pts.iter().map(|p| p.0 * p.1).sum();
+    let sxx: f64 = pts.iter().map(|p| p.0 * p.0).sum();
+    let n = pts.len() as f64;
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let a = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>()
+        / pts.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+    (sxy / sxx, (a, my - a * mx))
+}
+
+/// The exact curve sampled on the page, with its parameters.
+struct Sampled {
+    page: Vec<P>,
+    params: Vec<f64>,
+    /// Index ranges of the pieces (no refinement across a gap).
+    pieces: Vec<(usize, usize)>,
+}
+
+fn sample(e: &Exact, map: &Map, per_piece: usize) -> Sampled {
+    let mut s = Sampled {
+        page: Vec::new(),
+        params: Vec::new(),
+        pieces: Vec::new(),
+    };
+    for &(a, b) in &e.ranges {
+        let first = s.page.len();
+        for k in 0..=per_piece {
+            let t = a + (b - a) * k as f64 / per_piece as f64;
+            let p = map.apply((e.f)(t));
+            if p.0.is_finite() && p.1.is_finite() {
+                s.page.push(p);
+                s.params.push(t);
+            }
+        }
+        s.pieces.push((first, s.page.len()));
+    }
+    s
+}
+
+/// The distance (page units) from `q` to the exact curve: the nearest
+/// sample, then a golden-section search between its neighbours.
+fn distance_to_curve(q: P, e: &Exact, s: &Sampled, map: &Map) -> f64 {
+    let (best, _) = s
+        .page
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (i, dist(*p, q)))
+        .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
+    let (lo_i, hi_i) = s
+        .pieces
+        .iter()
+        .find(|(a, b)| best >= *a && best < *b)
+        .copied()
+        .unwrap();
+    let mut lo = s.params[best.saturating_sub(1).max(lo_i)];
+    let mut hi = s.params[(best + 1).min(hi_i - 1)];
+    let d = |t: f64| dist(map.apply((e.f)(t)), q);
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut x1, mut x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+    let (mut f1, mut f2) = (d(x1), d(x2));
+    for _ in 0..80 {
+        if f1 < f2 {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = d(x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = d(x2);
+        }
+    }
+    f1.min(f2).min(dist(s.page[best], q))
+}
+
+/// The page rectangle curves of `panel` are clipped to: the plot area, or
+/// the whole panel for a mechanism panel.
+fn frame_of(meta: &Value, panel: &str) -> [f64; 4] {
+    let from = |v: &Value| -> [f64; 4] {
+        let a: Vec<f64> = v
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|x| x.as_f64().unwrap())
+            .collect();
+        [a[0], a[1], a[2], a[3]]
+    };
+    if let Some(plots) = meta["plots"].as_array()
+        && let Some(p) = plots.iter().find(|p| p["panel"] == panel)
+    {
+        return from(&p["area"]);
+    }
+    let p = meta["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["id"] == panel)
+        .unwrap();
+    from(&p["rect"])
+}
+
+fn inside(f: &[f64; 4], p: P, margin: f64) -> bool {
+    p.0 >= f[0] + margin
+        && p.0 <= f[0] + f[2] - margin
+        && p.1 >= f[1] + margin
+        && p.1 <= f[1] + f[3] - margin
+}
+
+/// Measures every `curve-*` path of a figure both ways: each written point
+/// (16 per segment) against the exact curve, and each point of the exact
+/// curve inside the frame against the written path. Returns the largest
+/// deviation of the path from the curve, in page units.
+fn measure_figure(name: FigureName, svg: &str) -> f64 {
+    let meta = metadata(svg);
+    let tolerance = meta["tolerance"].as_f64().unwrap();
+    let mut worst: f64 = 0.0;
+    let expected = curves(name);
+    let drawn: Vec<&str> = svg
+        .match_indices("id=\"curve-")
+        .map(|(i, _)| {
+            let s = &svg[i + 4..];
+            &s[..s.find('"').unwrap()]
+        })
+        .collect();
+    let ids: Vec<&str> = expected.iter().map(|(id, _)| id.as_str()).collect();
+    assert_eq!(drawn, ids, "{}: the curves drawn", name.name());
+    for (id, e) in &expected {
+        let before = worst;
+        worst = 0.0;
+        let (panel, map) = panel_map(svg, id);
+        let frame = frame_of(&meta, &panel);
+        let d = attr(svg, id, "d").unwrap();
+        let paths = subpaths(&d);
+        let s = sample(e, &map, 6000);
+        let mut written = Vec::new();
+        for (start, segs) in &paths {
+            let mut at = *start;
+            for seg in segs {
+                for k in 0..16 {
+                    let q = eval(at, seg, k as f64 / 16.0);
+                    written.push(q);
+                    let dev = distance_to_curve(q, e, &s, &map);
+                    worst = worst.max(dev);
+                    assert!(
+                        dev <= tolerance,
+                        "{} {id}: a written point {q:?} is {dev} px from the curve (tolerance {tolerance})",
+                        name.name()
+                    );
+                    // Mapped back to the world it is a point of the curve's
+                    // world too (the map read from the file is invertible).
+                    let w = map.invert(q);
+                    assert!(w.0.is_finite() && w.1.is_finite());
+                }
+                at = end(seg);
+            }
+            written.push(at);
+        }
+        // Nothing of the curve inside the frame is missing from the path.
+        for p in s
+            .page
+            .iter()
+            .step_by(3)
+            .filter(|p| inside(&frame, **p, 1.0))
+        {
+            let near = written
+                .windows(2)
+                .map(|w| {
+                    let (a, b) = (w[0], w[1]);
+                    let ab = (b.0 - a.0, b.1 - a.1);
+                    let len2 = ab.0 * ab.0 + ab.1 * ab.1;
+                    let t = if len2 == 0.0 {
+                        0.0
+                    } else {
+                        (((p.0 - a.0) * ab.0 + (p.1 - a.1) * ab.1) / len2).clamp(0.0, 1.0)
+                    };
+                    dist(*p, (a.0 + ab.0 * t, a.1 + ab.1 * t))
+                })
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                near <= 0.25,
+                "{} {id}: the curve at {p:?} is {near} px from the path",
+                name.name()
+            );
+        }
+        let segments: usize = paths.iter().map(|p| p.1.len()).sum();
+        eprintln!(
+            "{:<26} {id:<40} {segments:>4} segments, largest deviation {worst:.5} px",
+            name.name()
+        );
+        worst = worst.max(before);
+    }
+    worst
+}
+
+// ---------------------------------------------------------------------
+
+#[test]
+fn diagrams_match_their_reviewed_snapshots() {
+    for name in FigureName::DIAGRAMS {
+        let svg = to_svg(&figure(name));
+        snapshot_settings().bind(|| insta::assert_snapshot!(name.name(), svg));
+    }
+}
+
+#[test]
+fn every_curve_is_within_the_tolerance_in_the_metadata() {
+    for name in FigureName::DIAGRAMS {
+        let svg = to_svg(&figure(name));
+        let worst = measure_figure(name, &svg);
+        let meta = metadata(&svg);
+        assert_eq!(meta["tolerance"].as_f64(), Some(0.01));
+        if !curves(name).is_empty() {
+            // Measured, not vacuous: the rounding to the 0.01 grid alone
+            // moves points by a few thousandths.
+            assert!(worst > 1e-4, "{}: {worst}", name.name());
+        }
+    }
+}
+
+#[test]
+fn diagrams_render_inked_and_clean() {
+    for name in FigureName::DIAGRAMS {
+        let svg = to_svg(&figure(name));
+        for token in svg.split(|c: char| !c.is_ascii_alphanumeric()) {
+            assert!(
+                !["inf", "NaN", "null"].contains(&token),
+                "{}: {token} in the SVG",
+                name.name()
+            );
+        }
+        let png = to_png(&svg, 1.0).unwrap();
+        let pixmap = tiny_skia::Pixmap::decode_png(&png).unwrap();
+        let dark = pixmap
+            .pixels()
+            .iter()
+            .filter(|p| (p.red() as u32 + p.green() as u32 + p.blue() as u32) < 300)
+            .count();
+        let total = (pixmap.width() * pixmap.height()) as usize;
+        assert!(
+            dark * 200 > total && dark > 2000,
+            "{}: only {dark} of {total} pixels inked",
+            name.name()
+        );
+        let again = to_svg(&figure(name));
+        assert_eq!(svg, again, "{}: two builds differ", name.name());
+    }
+}
+
+#[test]
+fn centrode_branches_run_to_the_frame_edge_without_spikes() {
+    // The default pose, and poses at a dead centre and at the poles.
+    for degrees in [35.0, 0.0, 90.0, 200.0, 270.0] {
+        let options = FigureOptions {
+            angle: Some(slider_crank::Angle::from_degrees(degrees).unwrap()),
+            ..FigureOptions::default()
+        };
+        let svg = to_svg(&FigureName::Fig61Centrodes.figure(&options).unwrap());
+        centrodes_reach_the_edge(&svg, degrees);
+    }
+}
+
+fn centrodes_reach_the_edge(svg: &str, degrees: f64) {
+    let meta = metadata(svg);
+    let tolerance = meta["tolerance"].as_f64().unwrap();
+    let mut top_and_bottom = (false, false);
+    for (id, e) in centrodes(degrees) {
+        let (panel, map) = panel_map(svg, &id);
+        let f = frame_of(&meta, &panel);
+        let on_edge = |p: P| {
+            let dx = (p.0 - f[0]).abs().min((p.0 - f[0] - f[2]).abs());
+            let dy = (p.1 - f[1]).abs().min((p.1 - f[1] - f[3]).abs());
+            inside(&f, p, -tolerance) && dx.min(dy) <= tolerance
+        };
+        let paths = subpaths(&attr(svg, &id, "d").unwrap());
+        assert!(!paths.is_empty(), "{id}");
+        let s = sample(&e, &map, 6000);
+        for (start, segs) in &paths {
+            let last = end(segs.last().unwrap());
+            assert!(
+                on_edge(*start),
+                "{id}: starts at {start:?}, inside the frame {f:?}"
+            );
+            assert!(
+                on_edge(last),
+                "{id}: ends at {last:?}, inside the frame {f:?}"
+            );
+            if id.contains("fixed") {
+                for p in [*start, last] {
+                    top_and_bottom.0 |= (p.1 - f[1]).abs() <= tolerance;
+                    top_and_bottom.1 |= (p.1 - f[1] - f[3]).abs() <= tolerance;
+                }
+            }
+            // No segment leaves its own branch: every point of every
+            // segment is on the exact branch (a segment across a pole
+            // would join the branch's ends across the page).
+            let mut at = *start;
+            for seg in segs {
+                for k in 1..32 {
+                    let q = eval(at, seg, k as f64 / 32.0);
+                    let dev = distance_to_curve(q, &e, &s, &map);
+                    assert!(
+                        dev <= tolerance,
+                        "{degrees}° {id}: {q:?} is {dev} px off its branch"
+                    );
+                }
+                at = end(seg);
+            }
+        }
+    }
+    assert_eq!(
+        top_and_bottom,
+        (true, true),
+        "the fixed centrode runs off at top and bottom"
+    );
+}
+
+#[test]
+fn the_time_base_ends_after_one_revolution_and_shm_has_the_crank_speed() {
+    let svg = to_svg(&figure(FigureName::Fig64VelocityDiagrams));
+    let (_, map) = panel_map(&svg, "curve-time-base");
+    let paths = subpaths(&attr(&svg, "curve-time-base", "d").unwrap());
+    let last = end(paths.last().unwrap().1.last().unwrap());
+    let w = map.invert(last);
+    // One revolution at 250 rpm: 0.24 s, and the piston at rest again.
+    assert!((w.0 - 0.24).abs() < 1e-4, "{w:?}");
+    assert!(w.1.abs() < 1e-3, "{w:?}");
+    // V_c = rω = 13.09 ft/s is stated, and the SHM peak is drawn at it.
+    assert!(svg.contains("13.09 ft/s"));
+    let meta = metadata(&svg);
+    assert_eq!(meta["mechanism"]["rod"], 3.0);
+    assert!((meta["omega"].as_f64().unwrap() - omega()).abs() < 1e-9);
+}
+
+#[test]
+fn ng_fig_8_marks_the_measured_points_and_the_least_force() {
+    let svg = to_svg(&figure(FigureName::NgFig8Forces));
+    let (_, map) = panel_map(&svg, "point-measured-1");
+    let measured = [
+        (40.0, 9.22),
+        (50.0, 7.65),
+        (60.0, 7.26),
+        (70.0, 6.87),
+        (80.0, 7.06),
+        (90.0, 7.46),
+        (100.0, 8.04),
+        (110.0, 10.20),
+        (120.0, 12.16),
+    ];
+    for (k, p) in measured.iter().enumerate() {
+        let id = format!("point-measured-{}", k + 1);
+        let q = map.apply(*p);
+        assert!((num(&svg, &id, "cx") - q.0).abs() <= 0.006, "{id}");
+        assert!((num(&svg, &id, "cy") - q.1).abs() <= 0.006, "{id}");
+    }
+    assert!(tag(&svg, "point-measured-10").is_none());
+    // The least F is where OM = −ds/dθ is greatest; β = 90° where
+    // θ + φ = 90°: found here by bisection on the formulas.
+    let bisect = |f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64| {
+        for _ in 0..100 {
+            let m = 0.5 * (a + b);
+            if f(a) * f(m) <= 0.0 { b = m } else { a = m }
+        }
+        0.5 * (a + b)
+    };
+    let least = bisect(&|t| engine(25.0, 72.0, t).0.d(2), 0.1, 3.0) / DEG;
+    let right = bisect(&|t| 0.5 * PI - t - (25.0 * t.sin() / 72.0).asin(), 0.1, 3.0) / DEG;
+    let meta = metadata(&svg);
+    assert!((meta["least_force_deg"].as_f64().unwrap() - least).abs() < 1e-9);
+    assert!((meta["right_transmission_deg"].as_f64().unwrap() - right).abs() < 1e-9);
+    assert!(svg.contains(&format!("θ = {least:.1}°")), "{least}");
+    assert!(svg.contains(&format!("θ = {right:.1}°")), "{right}");
+    assert!((least - 72.6).abs() < 0.05 && (right - 70.9).abs() < 0.05);
+}
+
+#[test]
+fn ng_fig_7_states_both_fits_and_r_squared() {
+    let (origin, (a, b)) = ng_fits();
+    let svg = to_svg(&figure(FigureName::NgFig7Calibration));
+    assert!(svg.contains(&format!("{origin:.3}")), "{origin}");
+    assert!(svg.contains(&format!("{a:.3}")) && svg.contains(&format!("{b:.3}")));
+    // Ng's 0.9998 is the R² about zero of the fit through the origin.
+    assert!(svg.contains("0.9998 about zero"));
+    let only = FigureName::NgFig7Calibration
+        .figure(&FigureOptions {
+            fit: Some(Fit::Origin),
+            ..FigureOptions::default()
+        })
+        .unwrap();
+    let only = to_svg(&only);
+    assert!(tag(&only, "curve-fit-origin").is_some());
+    assert!(tag(&only, "curve-fit-intercept").is_none());
+}
+
+#[test]
+fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
+    for (deg, mu) in [(45.0, 1.0), (30.0, (30.0 * DEG).tan())] {
+        let f = FigureName::NgFig2Incline
+            .figure(&FigureOptions {
+                angle: Some(slider_crank::Angle::from_degrees(deg).unwrap()),
+                ..FigureOptions::default()
+            })
+            .unwrap();
+        let svg = to_svg(&f);
+        // The metadata keeps 12 significant digits.
+        assert!((metadata(&svg)["mu"].as_f64().unwrap() - mu).abs() < 1e-11);
+        for id in ["force-weight", "force-normal", "force-friction"] {
+            assert!(tag(&svg, id).is_some(), "{id}");
+        }
+    }
+    for bad in [0.0, 90.0, 120.0, -10.0] {
+        let r = FigureName::NgFig2Incline.figure(&FigureOptions {
+            angle: Some(slider_crank::Angle::from_degrees(bad).unwrap()),
+            ..FigureOptions::default()
+        });
+        assert!(r.is_err(), "{bad}");
+    }
+}
+
+#[test]
+fn options_a_diagram_does_not_use_are_refused() {
+    let data = FigureOptions {
+        data: Some("angle,force\n40,9\n".into()),
+        ..FigureOptions::default()
+    };
+    let e = FigureName::RodMotion.figure(&data).unwrap_err().to_string();
+    assert!(e.contains("rod-motion does not use --data"), "{e}");
+    let e = FigureName::Fig67Example
+        .figure(&data)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("--data"), "{e}");
+    let backwards = FigureOptions {
+        omega: Some(-1.0),
+        ..FigureOptions::default()
+    };
+    assert!(
+        FigureName::Fig64VelocityDiagrams
+            .figure(&backwards)
+            .is_err()
+    );
+    assert!(FigureName::NgFig8Forces.figure(&data).is_ok());
+    let outside = FigureOptions {
+        data: Some("angle,force\n200,9\n".into()),
+        ..FigureOptions::default()
+    };
+    assert!(FigureName::NgFig8Forces.figure(&outside).is_err());
+}
+
+#[test]
+fn other_mechanisms_draw_cleanly() {
+    // An offset engine with a short rod and another speed: curves are
+    // drawn, and nothing non-finite reaches the file.
+    let m = slider_crank::SliderCrank::new(1.0, 2.2, 0.3).unwrap();
+    for name in [
+        FigureName::Fig64VelocityDiagrams,
+        FigureName::AccelerationDiagrams,
+        FigureName::RodMotion,
+        FigureName::CouplerCurves,
+        FigureName::Fig61Centrodes,
+        FigureName::NgFig8Forces,
+    ] {
+        let mut o = FigureOptions {
+            mechanism: Some(m),
+            ..FigureOptions::default()
+        };
+        if !matches!(
+            name,
+            FigureName::CouplerCurves | FigureName::Fig61Centrodes | FigureName::NgFig8Forces
+        ) {
+            o.omega = Some(40.0);
+        }
+        let svg = to_svg(
+            &name
+                .figure(&o)
+                .unwrap_or_else(|e| panic!("{}: {e}", name.name())),
+        );
+        for token in svg.split(|c: char| !c.is_ascii_alphanumeric()) {
+            assert!(!["inf", "NaN", "null"].contains(&token), "{}", name.name());
+        }
+        assert!(svg.contains("id=\"curve-"), "{}", name.name());
+    }
+}
+
+#[test]
+fn metadata_keeps_the_contract_and_ids_are_unique() {
+    for name in FigureName::DIAGRAMS {
+        let svg = to_svg(&figure(name));
+        let meta = metadata(&svg);
+        assert_eq!(meta["figure"], name.name());
+        assert!(meta["mechanism"]["crank"].is_number(), "{}", name.name());
+        assert_eq!(meta["page_from_world"].as_array().unwrap().len(), 6);
+        assert!(meta["tolerance"].as_f64().unwrap() > 0.0);
+        let panels = svg.matches("data-page-from-world=\"").count();
+        assert_eq!(panels, meta["panels"].as_array().unwrap().len());
+        let mut ids: Vec<&str> = svg
+            .match_indices(" id=\"")
+            .map(|(i, _)| {
+                let s = &svg[i + 5..];
+                &s[..s.find('"').unwrap()]
+            })
+            .collect();
+        let all = ids.len();
+        ids.sort();
+        ids.dedup();
+        assert_eq!(ids.len(), all, "{}: an id is repeated", name.name());
+    }
+}
