@@ -234,23 +234,10 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64) {
     if cg.abs() > 1e-6 * r {
         let start = if cg > 0.0 { 0.0 } else { std::f64::consts::PI };
         let end = (g1.y).atan2(g1.x);
-        let mut sweep = end - start;
-        while sweep > std::f64::consts::PI {
-            sweep -= std::f64::consts::TAU;
-        }
-        while sweep <= -std::f64::consts::PI {
-            sweep += std::f64::consts::TAU;
-        }
         plot.push(Item::new(
             "arc-G-G1",
             Role::Auxiliary,
-            Shape::Arc {
-                centre: c,
-                radius: cg.abs(),
-                start,
-                sweep,
-                arrow: false,
-            },
+            super::short_arc(c, cg.abs(), start, end),
         ));
         plot.push(Item::new(
             "point-G",

@@ -91,6 +91,20 @@ impl Ctx<'_> {
 }
 
 /// Which options each diagram uses.
+/// The arc about `centre` of `radius` from the angle `start` to the angle
+/// `end` (radians) the short way round, as a plain (arrowless) arc.
+pub(super) fn short_arc(centre: Point, radius: f64, start: f64, end: f64) -> Shape {
+    let tau = std::f64::consts::TAU;
+    let sweep = (end - start + std::f64::consts::PI).rem_euclid(tau) - std::f64::consts::PI;
+    Shape::Arc {
+        centre,
+        radius,
+        start,
+        sweep,
+        arrow: false,
+    }
+}
+
 fn uses(name: FigureName) -> &'static [&'static str] {
     const MECH: &str = "mechanism (--crank, --rod, --offset)";
     const SPEED: &str = "crank speed (--rpm, --omega)";

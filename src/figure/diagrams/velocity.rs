@@ -151,23 +151,10 @@ fn construction(plot: &mut Plot, pose: &Pose) {
     let e2 = Point::new(pose.position(), ce);
     let start = if ce > 0.0 { 0.5 } else { -0.5 } * std::f64::consts::PI;
     let end = u.y.atan2(u.x);
-    let mut sweep = end - start;
-    while sweep > std::f64::consts::PI {
-        sweep -= std::f64::consts::TAU;
-    }
-    while sweep <= -std::f64::consts::PI {
-        sweep += std::f64::consts::TAU;
-    }
     plot.push(Item::new(
         "arc-E-E1",
         Role::Auxiliary,
-        Shape::Arc {
-            centre: Point::origin(),
-            radius: ce.abs(),
-            start,
-            sweep,
-            arrow: false,
-        },
+        super::short_arc(Point::origin(), ce.abs(), start, end),
     ));
     plot.push(Item::new(
         "line-E-E2",
