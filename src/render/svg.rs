@@ -252,6 +252,25 @@ impl PanelWriter<'_> {
         arc_beziers(centre, radius, start, sweep * self.orientation())
     }
 
+    /// A disc of page `radius` about a world point (pins and dots), kept
+    /// clear by the labels; `None` if the point does not map to a finite one.
+    fn disc(&mut self, id: &str, class: &str, centre: Point, radius: f64) -> Option<Circle> {
+        let c = self.p(centre);
+        if !finite(&c) {
+            return None;
+        }
+        self.obstacles
+            .boxed(Bounds::around(c, Vector::new(radius, radius)));
+        Some(
+            Circle::new()
+                .set("id", id)
+                .set("class", class)
+                .set("cx", fmt(c.x))
+                .set("cy", fmt(c.y))
+                .set("r", fmt(radius)),
+        )
+    }
+
     fn item(&mut self, item: &Item) -> Option<Box<dyn Node>> {
         let mut pen = self.style.pen(item.role);
         if let Some(dash) = item.dash {
@@ -359,41 +378,17 @@ impl PanelWriter<'_> {
                 }
             }
             Shape::Pin { centre } => {
-                let c = self.p(*centre);
-                if !finite(&c) {
-                    return None;
-                }
-                self.obstacles
-                    .boxed(Bounds::around(c, Vector::new(PIN_RADIUS, PIN_RADIUS)));
+                let paper = self.style.paper();
+                let disc = self.disc(id, class, *centre, PIN_RADIUS)?;
                 Box::new(
-                    Circle::new()
-                        .set("id", id)
-                        .set("class", class)
-                        .set("cx", fmt(c.x))
-                        .set("cy", fmt(c.y))
-                        .set("r", fmt(PIN_RADIUS))
-                        .set("fill", self.style.paper())
+                    disc.set("fill", paper)
                         .set("stroke", pen.colour)
                         .set("stroke-width", fmt(1.3)),
                 )
             }
             Shape::Dot { centre } => {
-                let c = self.p(*centre);
-                if !finite(&c) {
-                    return None;
-                }
-                self.obstacles
-                    .boxed(Bounds::around(c, Vector::new(DOT_RADIUS, DOT_RADIUS)));
-                Box::new(
-                    Circle::new()
-                        .set("id", id)
-                        .set("class", class)
-                        .set("cx", fmt(c.x))
-                        .set("cy", fmt(c.y))
-                        .set("r", fmt(DOT_RADIUS))
-                        .set("fill", pen.colour)
-                        .set("stroke", "none"),
-                )
+                let disc = self.disc(id, class, *centre, DOT_RADIUS)?;
+                Box::new(disc.set("fill", pen.colour).set("stroke", "none"))
             }
             Shape::Bearing { centre } => {
                 let c = self.p(*centre);

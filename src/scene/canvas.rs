@@ -83,18 +83,8 @@ impl Canvas {
     /// The segment `a b`, clipped to the frame; nothing if it misses the
     /// frame or is shorter than half a page unit.
     pub(crate) fn segment(&mut self, id: impl Into<String>, role: Role, a: Point, b: Point) {
-        if let Some((p, q)) = self.frame.clip_segment(a, b)
-            && self.page((q - p).norm()) >= MIN_PAGE_LENGTH
-        {
-            self.push(
-                id,
-                role,
-                Shape::Polyline {
-                    points: vec![p, q],
-                    closed: false,
-                },
-            );
-        }
+        let clipped = self.frame.clip_segment(a, b);
+        self.push_clipped(id, role, clipped);
     }
 
     /// The ray from `origin` along `direction`, clipped to the frame.
@@ -108,7 +98,14 @@ impl Canvas {
         if direction.norm() == 0.0 {
             return;
         }
-        if let Some((p, q)) = self.frame.clip_ray(origin, direction)
+        let clipped = self.frame.clip_ray(origin, direction);
+        self.push_clipped(id, role, clipped);
+    }
+
+    /// A clipped piece of line, if any of it is on the page and it is at
+    /// least [`MIN_PAGE_LENGTH`] long there.
+    fn push_clipped(&mut self, id: impl Into<String>, role: Role, clipped: Option<(Point, Point)>) {
+        if let Some((p, q)) = clipped
             && self.page((q - p).norm()) >= MIN_PAGE_LENGTH
         {
             self.push(
