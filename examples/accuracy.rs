@@ -3,7 +3,7 @@
 //!
 //! `cargo run --release --example accuracy`
 
-use slider_crank::construct::{Quantity, VelocityLine, sweep};
+use slider_crank::construct::{Kisch, Quantity, VelocityLine, sweep};
 use slider_crank::geom::{Circle, CircleIntersection, Line, Point, Vector};
 use slider_crank::{Angle, Pose, SliderCrank};
 
@@ -69,6 +69,28 @@ fn worst(
     (w, missing)
 }
 
+/// One table row: Kisch's F through the circles against BA·BF = BE².
+fn kisch_row(poses: &[Pose], region: &str) {
+    let exact = |p: &Pose| -p.position_acceleration();
+    let direct = worst(poses.iter().copied(), kisch_direct, exact);
+    let used = worst(
+        poses.iter().copied(),
+        |p| {
+            Some(
+                Kisch::construct(p, &VelocityLine::construct(p))
+                    .points()
+                    .cg(),
+            )
+        },
+        exact,
+    );
+    println!(
+        "| Kisch F (CG) | {region} | {} | {} |",
+        fmt(direct),
+        fmt(used)
+    );
+}
+
 fn fmt(w: (f64, usize)) -> String {
     if w.1 > 0 {
         format!("{:.1e} ({} poses not constructible)", w.0, w.1)
@@ -126,55 +148,17 @@ fn main() {
     let m = SliderCrank::in_line(1.0, 4.0).unwrap();
 
     // Kisch: circle intersection where H approaches B (θ → 90°) or the
-    // circles become tangent.
+    // circles become tangent, and near the dead centres.
     for k in [1.0, 1e-2, 1e-4, 1e-6] {
-        let poses = || {
-            [90.0 - k, 90.0 + k, 270.0 - k, 270.0 + k]
-                .into_iter()
-                .map(|d| m.pose(deg(d)))
-        };
-        let exact = |p: &Pose| -p.position_acceleration();
-        let direct = worst(poses(), kisch_direct, exact);
-        let used = worst(
-            poses(),
-            |p| {
-                Some(
-                    slider_crank::construct::Kisch::construct(p, &VelocityLine::construct(p))
-                        .points()
-                        .cg(),
-                )
-            },
-            exact,
-        );
-        println!(
-            "| Kisch F (CG) | n = 4, θ = 90° or 270° ± {k:e}° | {} | {} |",
-            fmt(direct),
-            fmt(used)
-        );
+        let poses = [90.0 - k, 90.0 + k, 270.0 - k, 270.0 + k].map(|d| m.pose(deg(d)));
+        kisch_row(&poses, &format!("n = 4, θ = 90° or 270° ± {k:e}°"));
     }
     for k in [1e-1, 1e-3, 1e-5, 1e-7, 1e-9] {
-        let poses = || {
-            [outer + k, outer - k, inner + k, inner - k]
-                .into_iter()
-                .map(|t| off.pose(Angle::from_radians(t).unwrap()))
-        };
-        let exact = |p: &Pose| -p.position_acceleration();
-        let direct = worst(poses(), kisch_direct, exact);
-        let used = worst(
-            poses(),
-            |p| {
-                Some(
-                    slider_crank::construct::Kisch::construct(p, &VelocityLine::construct(p))
-                        .points()
-                        .cg(),
-                )
-            },
-            exact,
-        );
-        println!(
-            "| Kisch F (CG) | n = 4.3, e = 0.37 r, θ = dead centre ± {k:e} rad | {} | {} |",
-            fmt(direct),
-            fmt(used)
+        let poses = [outer + k, outer - k, inner + k, inner - k]
+            .map(|t| off.pose(Angle::from_radians(t).unwrap()));
+        kisch_row(
+            &poses,
+            &format!("n = 4.3, e = 0.37 r, θ = dead centre ± {k:e} rad"),
         );
     }
 
