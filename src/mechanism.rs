@@ -4,6 +4,16 @@ use crate::angle::Angle;
 use crate::error::{Error, Result, finite, positive};
 use crate::geom::Point;
 
+/// Smallest crank radius and rod length accepted, in any unit.
+///
+/// Lengths are squared and multiplied in the constructions (BE², the
+/// distance to a far instantaneous centre); within [`MIN_LENGTH`,
+/// [`MAX_LENGTH`]] every such product stays a normal f64.
+pub const MIN_LENGTH: f64 = 1e-100;
+
+/// Largest crank radius, rod length or offset accepted, in any unit.
+pub const MAX_LENGTH: f64 = 1e100;
+
 /// An in-line or offset slider-crank chain, validated once.
 ///
 /// World frame (DESIGN.md §1): the crank centre C at the origin, the line of
@@ -20,12 +30,28 @@ pub struct SliderCrank {
     offset: f64,
 }
 
+fn in_range(name: &'static str, value: f64) -> Result<f64> {
+    if (MIN_LENGTH..=MAX_LENGTH).contains(&value) {
+        Ok(value)
+    } else {
+        Err(Error::OutOfRange {
+            name,
+            value,
+            reason: format!(
+                "lengths must lie between {MIN_LENGTH:e} and {MAX_LENGTH:e} (any unit: choose one that brings them in range)"
+            ),
+        })
+    }
+}
+
 impl SliderCrank {
     /// Validates crank radius `r > 0`, rod length `l > r + |e|` and offset
-    /// `e` (all finite, any consistent unit).
+    /// `e` (all finite, any consistent unit; r and l between [`MIN_LENGTH`]
+    /// and [`MAX_LENGTH`], so that no product of lengths overflows or
+    /// underflows).
     pub fn new(crank: f64, rod: f64, offset: f64) -> Result<Self> {
-        let crank = positive("crank", crank)?;
-        let rod = positive("rod", rod)?;
+        let crank = in_range("crank", positive("crank", crank)?)?;
+        let rod = in_range("rod", positive("rod", rod)?)?;
         let offset = finite("offset", offset)?;
         let needed = crank + offset.abs();
         if rod <= needed || !needed.is_finite() {
@@ -279,6 +305,16 @@ mod tests {
         assert!(SliderCrank::new(1.0, f64::INFINITY, 0.0).is_err());
         assert!(SliderCrank::new(1.0, 3.0, f64::NAN).is_err());
         assert!(SliderCrank::new(f64::MAX, f64::MAX, f64::MAX).is_err());
+        assert!(matches!(
+            SliderCrank::new(1e300, 3e300, 0.0),
+            Err(Error::OutOfRange { name: "crank", .. })
+        ));
+        assert!(matches!(
+            SliderCrank::new(1e-300, 3e-300, 0.0),
+            Err(Error::OutOfRange { name: "crank", .. })
+        ));
+        assert!(SliderCrank::new(1e-100, 3e-100, 0.0).is_ok());
+        assert!(SliderCrank::new(1e99, 1e100, 0.0).is_ok());
     }
 
     #[test]
