@@ -202,6 +202,22 @@ fn bad_input_exits_non_zero_with_one_clear_line() {
         ),
         (&["table", "obliquity", "--n", "0.5"], "n = l/r > 1"),
         (&["check", "--samples", "0"], "samples"),
+        // Regression: products of such lengths overflowed into a panic.
+        (
+            &["analyze", "--crank", "1e300", "--rod", "3e300"],
+            "lengths must lie between",
+        ),
+        (
+            &[
+                "figure",
+                "fig-67-example",
+                "--crank",
+                "1e-300",
+                "--rod",
+                "3e-300",
+            ],
+            "lengths must lie between",
+        ),
     ];
     for (args, needle) in cases {
         let out = run(args);
