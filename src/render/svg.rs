@@ -443,6 +443,10 @@ impl PanelWriter<'_> {
                 }
                 let u = unit(b - a)?;
                 self.obstacles.segment(a, b);
+                // The head is wider than the shaft: keep labels off it too.
+                let half = 0.5 * ARROW_LENGTH;
+                self.obstacles
+                    .boxed(Bounds::around(b - u * half, Vector::new(half, half)));
                 Box::new(
                     Group::new()
                         .set("id", id)
