@@ -10,7 +10,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum Error {
     /// A parameter is NaN or infinite.
-    #[error("{name} must be a finite number, got {value}")]
+    #[error("{name} must be a finite number, got {}", Num(*.value))]
     NotFinite {
         /// Which parameter (for example `crank`).
         name: &'static str,
@@ -18,7 +18,7 @@ pub enum Error {
         value: f64,
     },
     /// A length or other parameter that must be positive is zero or negative.
-    #[error("{name} must be greater than zero, got {value}")]
+    #[error("{name} must be greater than zero, got {}", Num(*.value))]
     NotPositive {
         /// Which parameter.
         name: &'static str,
@@ -26,7 +26,7 @@ pub enum Error {
         value: f64,
     },
     /// A parameter that must not be negative is negative.
-    #[error("{name} must not be negative, got {value}")]
+    #[error("{name} must not be negative, got {}", Num(*.value))]
     Negative {
         /// Which parameter.
         name: &'static str,
@@ -35,7 +35,8 @@ pub enum Error {
     },
     /// The connecting rod is too short for the crank to turn a full revolution.
     #[error(
-        "rod {rod} is too short for crank {crank} and offset {offset}: the crank turns fully only when rod > crank + |offset| = {needed}"
+        "rod {} is too short for crank {} and offset {}: the crank turns fully only when rod > crank + |offset| = {}",
+        Num(*.rod), Num(*.crank), Num(*.offset), Num(*.needed)
     )]
     RodTooShort {
         /// Crank radius given.
@@ -48,7 +49,7 @@ pub enum Error {
         needed: f64,
     },
     /// A value that is outside the range a computation accepts.
-    #[error("{name} = {value} is out of range: {reason}")]
+    #[error("{name} = {} is out of range: {reason}", Num(*.value))]
     OutOfRange {
         /// Which parameter.
         name: &'static str,
@@ -63,6 +64,21 @@ pub enum Error {
     /// Reading or writing a file failed.
     #[error("{0}")]
     Io(String),
+}
+
+/// A number as a message shows it: plainly in the usual range, in
+/// exponent form when very large or very small (no 100-digit integers).
+struct Num(f64);
+
+impl std::fmt::Display for Num {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let a = self.0.abs();
+        if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
 }
 
 /// The crate's result type.
@@ -94,5 +110,29 @@ pub(crate) fn non_negative(name: &'static str, value: f64) -> Result<f64> {
         Ok(value)
     } else {
         Err(Error::Negative { name, value })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn messages_show_extreme_numbers_compactly() {
+        let e = Error::NotPositive {
+            name: "crank",
+            value: -1e100,
+        };
+        assert_eq!(e.to_string(), "crank must be greater than zero, got -1e100");
+        let e = Error::NotFinite {
+            name: "crank",
+            value: f64::NAN,
+        };
+        assert_eq!(e.to_string(), "crank must be a finite number, got NaN");
+        let e = Error::Negative {
+            name: "friction",
+            value: -0.5,
+        };
+        assert_eq!(e.to_string(), "friction must not be negative, got -0.5");
     }
 }
