@@ -9,6 +9,15 @@ fn run(args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
+/// Asserts a zero exit, showing standard error otherwise.
+fn succeeded(out: &std::process::Output) {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 #[test]
 fn figure_prints_svg_and_two_runs_are_identical() {
     let a = run(&["figure", "fig-67-example"]);
@@ -23,11 +32,7 @@ fn figure_writes_png_or_svg_files() {
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("f.png");
     let out = run(&["figure", "ng-fig-1-torque", "--out", png.to_str().unwrap()]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeded(&out);
     assert!(out.stdout.is_empty());
     let bytes = std::fs::read(&png).unwrap();
     assert_eq!(&bytes[..8], b"\x89PNG\r\n\x1a\n");
@@ -46,11 +51,7 @@ fn figure_writes_png_or_svg_files() {
         "--out",
         svg.to_str().unwrap(),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeded(&out);
     let text = std::fs::read_to_string(&svg).unwrap();
     assert!(text.contains("\"angle_deg\":330.0"));
     assert!(text.contains("\"style\":\"handout\""));
@@ -122,11 +123,7 @@ fn diagrams_take_data_and_fit_flags() {
         "--data",
         data.to_str().unwrap(),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeded(&out);
     let svg = String::from_utf8_lossy(&out.stdout);
     assert!(svg.contains("id=\"point-measured-2\"") && !svg.contains("id=\"point-measured-3\""));
     assert!(svg.contains("measured (--data)"));
@@ -145,11 +142,7 @@ fn diagrams_take_data_and_fit_flags() {
         "--out",
         png.to_str().unwrap(),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    succeeded(&out);
     assert_eq!(&std::fs::read(&png).unwrap()[..4], b"\x89PNG");
 }
 

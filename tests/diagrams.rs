@@ -3,55 +3,19 @@
 //! curve computed here from the formulas (DESIGN.md §1–2, the seeds'
 //! equations), independently of the library.
 
-use resvg::tiny_skia;
+mod common;
+
+use common::{attr, metadata, num, snapshot_settings, tag};
+
 use serde_json::Value;
 use slider_crank::FigureName;
 use slider_crank::figure::{Figure, FigureOptions, Fit};
-use slider_crank::render::{to_png, to_svg};
+use slider_crank::render::to_svg;
 use std::f64::consts::PI;
-
-fn snapshot_settings() -> insta::Settings {
-    let mut s = insta::Settings::clone_current();
-    s.set_snapshot_path("../snapshots");
-    s.set_prepend_module_to_snapshot(false);
-    s
-}
 
 fn figure(name: FigureName) -> Figure {
     name.figure(&FigureOptions::default())
         .unwrap_or_else(|e| panic!("{}: {e}", name.name()))
-}
-
-fn metadata(svg: &str) -> Value {
-    let a = svg.find("<metadata>").unwrap() + "<metadata>".len();
-    let b = svg.find("</metadata>").unwrap();
-    let text = svg[a..b]
-        .replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&");
-    serde_json::from_str(&text).unwrap()
-}
-
-/// The start tag of the element with `id`.
-fn tag<'a>(svg: &'a str, id: &str) -> Option<&'a str> {
-    let at = svg.find(&format!("id=\"{id}\""))?;
-    let start = svg[..at].rfind('<')?;
-    let end = at + svg[at..].find('>')?;
-    Some(&svg[start..end])
-}
-
-fn attr(svg: &str, id: &str, name: &str) -> Option<String> {
-    let t = tag(svg, id)?;
-    let key = format!(" {name}=\"");
-    let v = t.find(&key)? + key.len();
-    Some(t[v..v + t[v..].find('"')?].to_string())
-}
-
-fn num(svg: &str, id: &str, name: &str) -> f64 {
-    attr(svg, id, name)
-        .unwrap_or_else(|| panic!("no {name} on #{id}"))
-        .parse()
-        .unwrap()
 }
 
 /// An affine map [a b c d e f]: page = (a x + c y + e, b x + d y + f).
@@ -742,14 +706,7 @@ fn diagrams_render_inked_and_clean() {
                 name.name()
             );
         }
-        let png = to_png(&svg, 1.0).unwrap();
-        let pixmap = tiny_skia::Pixmap::decode_png(&png).unwrap();
-        let dark = pixmap
-            .pixels()
-            .iter()
-            .filter(|p| (p.red() as u32 + p.green() as u32 + p.blue() as u32) < 300)
-            .count();
-        let total = (pixmap.width() * pixmap.height()) as usize;
+        let (dark, total) = common::inked(&common::render(&svg));
         assert!(
             dark * 200 > total && dark > 2000,
             "{}: only {dark} of {total} pixels inked",

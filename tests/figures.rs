@@ -1,39 +1,15 @@
 //! The seeds' figures: snapshots, rendering, where labelled points land,
 //! reproducibility, degenerate poses, lazy evaluation.
 
+mod common;
+
+use common::{attr, metadata, num, snapshot_settings};
+
 use resvg::{tiny_skia, usvg};
 use serde_json::Value;
 use slider_crank::figure::{PathSegment, Shape};
-use slider_crank::render::{to_png, to_svg};
+use slider_crank::render::to_svg;
 use slider_crank::{Angle, FigureName, Layer, Notation, Scene, SliderCrank, Style};
-
-/// The text of attribute `name` of the element with `id`.
-fn attr(svg: &str, id: &str, name: &str) -> Option<String> {
-    let at = svg.find(&format!("id=\"{id}\""))?;
-    let start = svg[..at].rfind('<')?;
-    let end = at + svg[at..].find('>')?;
-    let tag = &svg[start..end];
-    let key = format!(" {name}=\"");
-    let v = tag.find(&key)? + key.len();
-    Some(tag[v..v + tag[v..].find('"')?].to_string())
-}
-
-fn num(svg: &str, id: &str, name: &str) -> f64 {
-    attr(svg, id, name)
-        .unwrap_or_else(|| panic!("no {name} on #{id}"))
-        .parse()
-        .unwrap()
-}
-
-fn metadata(svg: &str) -> Value {
-    let a = svg.find("<metadata>").unwrap() + "<metadata>".len();
-    let b = svg.find("</metadata>").unwrap();
-    let text = svg[a..b]
-        .replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&");
-    serde_json::from_str(&text).unwrap()
-}
 
 fn page_from_world(meta: &Value) -> [f64; 6] {
     let v: Vec<f64> = meta["page_from_world"]
@@ -111,13 +87,6 @@ fn letters(name: FigureName) -> [&'static str; 5] {
     }
 }
 
-fn snapshot_settings() -> insta::Settings {
-    let mut s = insta::Settings::clone_current();
-    s.set_snapshot_path("../snapshots");
-    s.set_prepend_module_to_snapshot(false);
-    s
-}
-
 #[test]
 fn seed_figures_match_their_reviewed_snapshots() {
     for name in FigureName::SCENES {
@@ -149,14 +118,8 @@ fn seed_figures_render_with_points_where_the_world_puts_them() {
         let scene = name.scene().unwrap();
         let m = scene.mechanism();
         let svg = to_svg(&scene.figure());
-        let png = to_png(&svg, 1.0).unwrap();
-        let pixmap = tiny_skia::Pixmap::decode_png(&png).unwrap();
-        let dark = pixmap
-            .pixels()
-            .iter()
-            .filter(|p| (p.red() as u32 + p.green() as u32 + p.blue() as u32) < 300)
-            .count();
-        let total = (pixmap.width() * pixmap.height()) as usize;
+        let pixmap = common::render(&svg);
+        let (dark, total) = common::inked(&pixmap);
         assert!(
             dark * 500 > total && dark > 1000,
             "{}: only {dark} of {total} pixels inked",

@@ -90,25 +90,21 @@ impl FigureName {
     ];
 
     /// Every named figure: the scenes, then the diagrams.
-    pub const ALL: [FigureName; 17] = [
-        FigureName::Fig62Displacement,
-        FigureName::Fig63Velocity,
-        FigureName::Fig65Klein,
-        FigureName::Fig66Kisch,
-        FigureName::Fig67Example,
-        FigureName::NgFig1Torque,
-        FigureName::NgFigA1Velocity,
-        FigureName::Fig61Centrodes,
-        FigureName::Fig64VelocityDiagrams,
-        FigureName::AccelerationDiagrams,
-        FigureName::RodMotion,
-        FigureName::ApproximationError,
-        FigureName::CouplerCurves,
-        FigureName::NgFig2Incline,
-        FigureName::NgFig7Calibration,
-        FigureName::NgFig8Forces,
-        FigureName::CurveBenchmark,
-    ];
+    pub const ALL: [FigureName; FigureName::SCENES.len() + FigureName::DIAGRAMS.len()] = {
+        let mut all =
+            [FigureName::Fig62Displacement; FigureName::SCENES.len() + FigureName::DIAGRAMS.len()];
+        let mut i = 0;
+        while i < FigureName::SCENES.len() {
+            all[i] = FigureName::SCENES[i];
+            i += 1;
+        }
+        let mut j = 0;
+        while j < FigureName::DIAGRAMS.len() {
+            all[i + j] = FigureName::DIAGRAMS[j];
+            j += 1;
+        }
+        all
+    };
 
     /// The name (`fig-67-example`).
     pub fn name(&self) -> &'static str {

@@ -152,20 +152,34 @@ impl Canvas {
         } else if let Some((_, edge)) = self.frame.clip_segment(from, p) {
             let dir = p - from;
             if dir.norm() > 0.0 {
-                let u = dir.normalize();
-                let head = edge - u * self.world(EDGE_GAP);
-                let tail = head - u * self.world(EDGE_ARROW);
-                self.push(
-                    format!("offpage-{name}"),
-                    Role::Construction,
-                    Shape::Arrow {
-                        from: tail,
-                        to: head,
-                    },
-                );
+                let tail =
+                    self.edge_arrow(format!("offpage-{name}"), edge, dir.normalize(), EDGE_ARROW);
                 self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
             }
         }
+    }
+
+    /// An arrow of `length` page units along the unit `u` that ends just
+    /// inside the frame at `edge` (where a line to an off-page point leaves
+    /// it); returns its tail, where the label goes.
+    pub(crate) fn edge_arrow(
+        &mut self,
+        id: impl Into<String>,
+        edge: Point,
+        u: Vector,
+        length: f64,
+    ) -> Point {
+        let head = edge - u * self.world(EDGE_GAP);
+        let tail = head - u * self.world(length);
+        self.push(
+            id,
+            Role::Construction,
+            Shape::Arrow {
+                from: tail,
+                to: head,
+            },
+        );
+        tail
     }
 
     /// Records a point at infinity in the metadata and shows it by a
@@ -183,16 +197,8 @@ impl Canvas {
         let u = direction.into_inner();
         if let Some((_, edge)) = self.frame.clip_ray(through, u) {
             let head = edge - u * self.world(EDGE_GAP);
-            let tail = head - u * self.world(EDGE_ARROW);
             if (head - through).dot(&u) > 0.0 {
-                self.push(
-                    id,
-                    Role::Construction,
-                    Shape::Arrow {
-                        from: tail,
-                        to: head,
-                    },
-                );
+                let tail = self.edge_arrow(id, edge, u, EDGE_ARROW);
                 self.label(
                     format!("label-{name}"),
                     tail,

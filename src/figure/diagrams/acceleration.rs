@@ -13,7 +13,7 @@ use super::{
 };
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
 use crate::{Angle, Pose};
 
@@ -256,14 +256,6 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64) {
         labels.push(("G1", "G′", g1));
     }
     for (id, name, p) in labels {
-        plot.push(Item::new(
-            format!("label-{id}"),
-            Role::Label,
-            Shape::Label {
-                anchor: p,
-                text: RichText::italic(name),
-                size: TextSize::Letter,
-            },
-        ));
+        plot.push(super::letter(id, p, name));
     }
 }

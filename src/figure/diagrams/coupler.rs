@@ -7,7 +7,7 @@ use crate::Angle;
 use crate::construct::CouplerPoint;
 use crate::diagram::{Curve, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, TextSize};
+use crate::figure::{Dash, Figure, Item, Role, Shape};
 use crate::geom::{Point, Vector};
 use crate::scene::Layer;
 
@@ -60,15 +60,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             Role::Construction,
             Shape::Dot { centre: p },
         ));
-        plot.push(Item::new(
-            format!("label-P{}", k + 1),
-            Role::Label,
-            Shape::Label {
-                anchor: p,
-                text: RichText::italic(&name),
-                size: TextSize::Letter,
-            },
-        ));
+        plot.push(super::letter(&format!("P{}", k + 1), p, &name));
     }
     let drawn = plot.finish();
     sheet.panel(panel.with_items(drawn.items().iter().cloned()));

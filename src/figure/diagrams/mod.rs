@@ -91,6 +91,20 @@ impl Ctx<'_> {
 }
 
 /// Which options each diagram uses.
+/// The italic letter `name` labelling the point `anchor`, id `label-{id}`
+/// (placed clear of lines by the renderer).
+pub(super) fn letter(id: &str, anchor: Point, name: &str) -> Item {
+    Item::new(
+        format!("label-{id}"),
+        Role::Label,
+        Shape::Label {
+            anchor,
+            text: RichText::italic(name),
+            size: crate::figure::TextSize::Letter,
+        },
+    )
+}
+
 /// The arc about `centre` of `radius` from the angle `start` to the angle
 /// `end` (radians) the short way round, as a plain (arrowless) arc.
 pub(super) fn short_arc(centre: Point, radius: f64, start: f64, end: f64) -> Shape {

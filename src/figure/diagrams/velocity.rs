@@ -12,7 +12,7 @@
 use super::{Ctx, PER_DEGREE, Sheet, against_time, dead_centres, extent, short, sig};
 use crate::diagram::{Axis, Curve, Locus, LocusKind, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 use crate::scene::Layer;
 use crate::{Angle, Pose};
@@ -170,14 +170,6 @@ fn construction(plot: &mut Plot, pose: &Pose) {
             Role::Construction,
             Shape::Dot { centre: p },
         ));
-        plot.push(Item::new(
-            format!("label-{id}"),
-            Role::Label,
-            Shape::Label {
-                anchor: p,
-                text: RichText::italic(name),
-                size: TextSize::Letter,
-            },
-        ));
+        plot.push(super::letter(id, p, name));
     }
 }

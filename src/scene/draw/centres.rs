@@ -34,17 +34,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
                 // Off the page: an arrow from the slider towards it.
                 let from = pose.a();
                 if let Some((_, edge)) = canvas.frame().clip_segment(from, x) {
-                    let u = (x - from).normalize();
-                    let head = edge - u * canvas.world(3.0);
-                    let tail = head - u * canvas.world(ARROW);
-                    canvas.push(
-                        id,
-                        Role::Construction,
-                        Shape::Arrow {
-                            from: tail,
-                            to: head,
-                        },
-                    );
+                    let tail = canvas.edge_arrow(id, edge, (x - from).normalize(), ARROW);
                     canvas.label(format!("label-O-{name}"), tail, text, TextSize::Small);
                 }
             }
@@ -61,16 +51,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
                     u = -u;
                 }
                 if let Some((_, edge)) = canvas.frame().clip_ray(from, u) {
-                    let head = edge - u * canvas.world(3.0);
-                    let tail = head - u * canvas.world(ARROW);
-                    canvas.push(
-                        id,
-                        Role::Construction,
-                        Shape::Arrow {
-                            from: tail,
-                            to: head,
-                        },
-                    );
+                    let tail = canvas.edge_arrow(id, edge, u, ARROW);
                     canvas.label(
                         format!("label-O-{name}"),
                         tail,

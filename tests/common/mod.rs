@@ -1,0 +1,62 @@
+//! Helpers shared by the figure tests.
+
+use resvg::tiny_skia;
+use slider_crank::render::to_png;
+
+/// `svg` rendered through resvg at scale 1.
+pub fn render(svg: &str) -> tiny_skia::Pixmap {
+    tiny_skia::Pixmap::decode_png(&to_png(svg, 1.0).unwrap()).unwrap()
+}
+
+/// The dark pixels of a rendering and all its pixels: (dark, total).
+pub fn inked(pixmap: &tiny_skia::Pixmap) -> (usize, usize) {
+    let dark = pixmap
+        .pixels()
+        .iter()
+        .filter(|p| (p.red() as u32 + p.green() as u32 + p.blue() as u32) < 300)
+        .count();
+    (dark, (pixmap.width() * pixmap.height()) as usize)
+}
+
+/// Insta settings that keep snapshots in the top-level `snapshots/`.
+pub fn snapshot_settings() -> insta::Settings {
+    let mut s = insta::Settings::clone_current();
+    s.set_snapshot_path("../snapshots");
+    s.set_prepend_module_to_snapshot(false);
+    s
+}
+
+/// The `<metadata>` JSON of an SVG.
+pub fn metadata(svg: &str) -> serde_json::Value {
+    let a = svg.find("<metadata>").unwrap() + "<metadata>".len();
+    let b = svg.find("</metadata>").unwrap();
+    let text = svg[a..b]
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The start tag of the element with `id`.
+pub fn tag<'a>(svg: &'a str, id: &str) -> Option<&'a str> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let start = svg[..at].rfind('<')?;
+    let end = at + svg[at..].find('>')?;
+    Some(&svg[start..end])
+}
+
+/// The text of attribute `name` of the element with `id`.
+pub fn attr(svg: &str, id: &str, name: &str) -> Option<String> {
+    let t = tag(svg, id)?;
+    let key = format!(" {name}=\"");
+    let v = t.find(&key)? + key.len();
+    Some(t[v..v + t[v..].find('"')?].to_string())
+}
+
+/// A numeric attribute of the element with `id`; panics if missing.
+pub fn num(svg: &str, id: &str, name: &str) -> f64 {
+    attr(svg, id, name)
+        .unwrap_or_else(|| panic!("no {name} on #{id}"))
+        .parse()
+        .unwrap()
+}
