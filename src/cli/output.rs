@@ -1,9 +1,9 @@
 //! Standard output, written so that every failure is seen.
 //!
-//! Rust's own `stdout()` treats a closed descriptor (`>&-`) as a sink that
-//! swallows everything; here the descriptor is duplicated at start, so a
-//! closed standard output is an error before any work, and a full device
-//! (`>/dev/full`) or a reader that went away is an error when written.
+//! A closed standard output (`>&-`) would otherwise swallow everything
+//! (the Rust runtime puts `/dev/null` in its place); here it is an error
+//! before any work, and a full device (`>/dev/full`) or a reader that went
+//! away is an error when written.
 
 use slider_crank::{Error, Result};
 use std::io::{BufWriter, ErrorKind, Write};
@@ -57,9 +57,32 @@ impl Stdout {
 #[cfg(unix)]
 fn raw() -> std::io::Result<Box<dyn Write>> {
     use std::os::fd::AsFd;
-    // Duplicating fails with EBADF when descriptor 1 is closed.
+    if closed_at_start() {
+        return Err(std::io::Error::other("it was closed (>&-)"));
+    }
     let fd = std::io::stdout().as_fd().try_clone_to_owned()?;
     Ok(Box::new(std::fs::File::from(fd)))
+}
+
+/// Whether descriptor 1 was closed when the program started. The Rust
+/// runtime opens `/dev/null` read-write on a closed standard descriptor
+/// before `main`; a shell's `>/dev/null` opens it write-only, so the two
+/// can be told apart (Linux: `/proc/self/fdinfo`).
+#[cfg(unix)]
+fn closed_at_start() -> bool {
+    if !cfg!(target_os = "linux") {
+        return false;
+    }
+    let null =
+        std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == std::path::Path::new("/dev/null"));
+    let flags = std::fs::read_to_string("/proc/self/fdinfo/1")
+        .ok()
+        .and_then(|info| {
+            let line = info.lines().find(|l| l.starts_with("flags:"))?;
+            u32::from_str_radix(line["flags:".len()..].trim(), 8).ok()
+        });
+    // O_ACCMODE = 3, O_RDWR = 2.
+    null && flags.is_some_and(|f| f & 3 == 2)
 }
 
 #[cfg(not(unix))]
