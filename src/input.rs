@@ -24,8 +24,8 @@ pub const MAX_DATA_BYTES: u64 = 4 << 20;
 /// read), or it is not UTF-8 text.
 pub fn read_text(path: &Path, limit: u64, what: &str) -> Result<String> {
     let shown = path.display();
-    let file =
-        std::fs::File::open(path).map_err(|e| Error::Io(format!("cannot read {shown}: {e}")))?;
+    let file = std::fs::File::open(path)
+        .map_err(|e| Error::Io(format!("cannot read {what} {shown}: {e}")))?;
     read_text_from(file, limit, &format!("{what} {shown}"))
 }
 

@@ -7,8 +7,10 @@ use clap::Args;
 use slider_crank::construct::sweep;
 use slider_crank::{Error, Result};
 
-/// Default tolerance of `check`, in the scaled units of DESIGN.md §6.
-pub const DEFAULT_TOLERANCE: f64 = 1e-12;
+/// Default allowance of `check`: a difference passes when it is at most
+/// this many ulps (ε = 2⁻⁵²) times the condition number κ of the quantity
+/// at that pose ([`slider_crank::construct::condition`]).
+pub const DEFAULT_ULPS: f64 = 4.0;
 
 /// Most poses one check sweeps (about a second of work).
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -27,19 +29,21 @@ pub struct CheckArgs {
         allow_hyphen_values = true
     )]
     pub samples: usize,
-    /// Largest allowed difference, scaled by r (slider) or 1 (rod rates
-    /// per unit ω)
-    #[arg(long, allow_hyphen_values = true, default_value_t = DEFAULT_TOLERANCE, value_name = "T")]
-    pub tolerance: f64,
+    /// Allowed difference per unit of condition number, in the scaled
+    /// units of DESIGN.md §6: a difference passes when at most T · κ
+    /// [default: 4 ulps, 4 × 2⁻⁵² ≈ 8.9e-16]
+    #[arg(long, allow_hyphen_values = true, value_name = "T")]
+    pub tolerance: Option<f64>,
 }
 
-/// Runs the check: the report and whether every quantity passed.
+/// Runs the check: the report, and whether every quantity passed.
 pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
     let m = args.mechanism.mechanism()?;
-    if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
+    let tolerance = args.tolerance.unwrap_or(DEFAULT_ULPS * f64::EPSILON);
+    if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(Error::NotPositive {
             name: "tolerance",
-            value: args.tolerance,
+            value: tolerance,
         });
     }
     if args.samples == 0 || args.samples > MAX_SAMPLES {
@@ -50,29 +54,31 @@ pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
         });
     }
     let report = sweep(&m, args.samples);
+    let allowed = tolerance / f64::EPSILON;
     let mut out = format!(
-        "check: r = {}, l = {}, e = {} (n = {}), {} poses, tolerance {:e}\n\n",
+        "check: r = {}, l = {}, e = {} (n = {}), {} poses\n\
+         a difference passes when at most {tolerance:.3e} × κ ({allowed:.1} ulps × κ, κ the condition number of the quantity at that pose)\n\n",
         m.crank(),
         m.rod(),
         m.offset(),
         m.ratio(),
         report.poses,
-        args.tolerance
     );
     out.push_str(&format!(
-        "{:<40}{:>14}{:>16}{:>10}  result\n",
-        "quantity (scaled difference)", "worst", "at θ (°)", "poses"
+        "{:<40}{:>12}{:>10}{:>12}{:>14}  result\n",
+        "quantity", "worst diff", "ulps × κ", "κ there", "at θ (°)"
     ));
     let mut ok = true;
-    for (q, err, at, n) in &report.worst {
-        let pass = *err <= args.tolerance;
+    for ((q, err, _, _), (_, ulps, kappa, at)) in report.worst.iter().zip(&report.worst_ulps) {
+        let pass = *ulps <= allowed;
         ok &= pass;
         out.push_str(&format!(
-            "{:<40}{:>14.3e}{:>16.6}{:>10}  {}\n",
+            "{:<40}{:>12.3e}{:>10.2}{:>12.3e}{:>14.6}  {}\n",
             q.name(),
             err,
+            ulps,
+            kappa,
             at,
-            n,
             if pass { "ok" } else { "FAIL" }
         ));
     }
