@@ -38,8 +38,12 @@ pub struct Table {
     pub notes: Vec<String>,
 }
 
-/// Formats `x` with `decimals` decimals, never as "-0.000".
+/// Formats `x` with `decimals` decimals, never as "-0.000"; from 1e15 on
+/// in exponent form (`1.2500e300`, not 300 digits).
 pub fn fixed(x: f64, decimals: usize) -> String {
+    if x.abs() >= 1e15 {
+        return format!("{:.*e}", decimals, x);
+    }
     let s = format!("{:.*}", decimals, x);
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
         s[1..].to_string()
@@ -353,27 +357,46 @@ pub fn forces(
     angles: &[f64],
     decimals: usize,
 ) -> Result<Table> {
-    let mut rows = Vec::new();
-    for &d in angles {
-        let pose = mechanism.pose(Angle::from_degrees(d)?);
-        let (f, fp) = match slider_force(&pose, torque)? {
-            None => ("∞".to_string(), "∞".to_string()),
-            Some(f) => {
-                let fp = match with_friction(&pose, f, mu)? {
-                    Friction::Force(x) => fixed(x, decimals),
-                    Friction::SelfLocking(_) => "self-locking".into(),
-                };
-                (fixed(f, decimals), fp)
-            }
-        };
-        rows.push(vec![
-            fixed(d, 0),
-            f,
-            fp,
-            fixed(pose.transmission_angle().to_degrees(), 2),
-        ]);
-    }
+    let rows = angles
+        .iter()
+        .map(|&d| forces_row(mechanism, torque, mu, d, decimals))
+        .collect::<Result<Vec<_>>>()?;
     Ok(Table {
+        rows,
+        ..forces_head(mechanism, torque, mu)
+    })
+}
+
+/// One row of [`forces`], at `degrees`.
+pub fn forces_row(
+    mechanism: &SliderCrank,
+    torque: f64,
+    mu: f64,
+    degrees: f64,
+    decimals: usize,
+) -> Result<Vec<String>> {
+    let pose = mechanism.pose(Angle::from_degrees(degrees)?);
+    let (f, fp) = match slider_force(&pose, torque)? {
+        None => ("∞".to_string(), "∞".to_string()),
+        Some(f) => {
+            let fp = match with_friction(&pose, f, mu)? {
+                Friction::Force(x) => fixed(x, decimals),
+                Friction::SelfLocking(_) => "self-locking".into(),
+            };
+            (fixed(f, decimals), fp)
+        }
+    };
+    Ok(vec![
+        fixed(degrees, 0),
+        f,
+        fp,
+        fixed(pose.transmission_angle().to_degrees(), 2),
+    ])
+}
+
+/// The title and headers of [`forces`], without rows.
+pub fn forces_head(mechanism: &SliderCrank, torque: f64, mu: f64) -> Table {
+    Table {
         title: format!(
             "Static forces (Ng Table 2): r = {}, l = {}, e = {}, T = {}, μ = {}",
             mechanism.crank(),
@@ -386,9 +409,9 @@ pub fn forces(
             .iter()
             .map(|s| s.to_string())
             .collect(),
-        rows,
+        rows: vec![],
         notes: vec![],
-    })
+    }
 }
 
 #[cfg(test)]

@@ -89,8 +89,8 @@ fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
     .mechanism()
 }
 
-/// Runs the subcommand. The kinematics table is written a row at a time
-/// (memory does not grow with the number of angles); the others are small.
+/// Runs the subcommand. Every table is written a row at a time: memory
+/// does not grow with the number of angles.
 pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
     let ratios = args
         .n
@@ -98,7 +98,6 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         .map(|s| parse_list(s, "n", true))
         .transpose()?;
     let spec = args.angles.as_deref().map(AngleSpec::parse).transpose()?;
-    let angles = || spec.as_ref().map(|s| s.iter().collect::<Vec<f64>>());
     let decimals = args.decimals.unwrap_or(match args.name {
         TableName::Forces => 2,
         _ => 4,
@@ -115,20 +114,33 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         FormatArg::Markdown => Format::Markdown,
         FormatArg::Csv => Format::Csv,
     };
-    let t = match args.name {
+    match args.name {
         TableName::Obliquity => {
             let ratios = ratios.unwrap_or_else(|| vec![4.0, 5.0, 6.0]);
-            let angles = angles().unwrap_or_else(|| vec![90.0]);
-            let mut t = table::obliquity(&ratios, angles[0])?;
-            for &a in &angles[1..] {
-                t.rows.extend(table::obliquity(&ratios, a)?.rows);
-            }
-            t
+            let spec = spec.unwrap_or(AngleSpec::parse("90")?);
+            let first = spec.iter().next().unwrap_or(90.0);
+            let head = table::obliquity(&ratios, first)?;
+            let rows = || {
+                spec.iter()
+                    .flat_map(|a| match table::obliquity(&ratios, a) {
+                        Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
+                        Err(e) => vec![Err(e)],
+                    })
+            };
+            write_rows(format, &head, rows, out)
         }
-        TableName::AccelerationFactor => table::acceleration_factor_table(
-            &ratios.unwrap_or_else(|| TEXTBOOK_RATIOS.to_vec()),
-            &angles().unwrap_or_else(|| TEXTBOOK_ANGLES.to_vec()),
-        )?,
+        TableName::AccelerationFactor => {
+            let ratios = ratios.unwrap_or_else(|| TEXTBOOK_RATIOS.to_vec());
+            let head = table::acceleration_factor_table(&ratios, &[])?;
+            let row = |d: f64| {
+                let t = table::acceleration_factor_table(&ratios, &[d])?;
+                Ok(t.rows.into_iter().next().unwrap_or_default())
+            };
+            match &spec {
+                Some(spec) => write_rows(format, &head, || spec.iter().map(row), out),
+                None => write_rows(format, &head, || TEXTBOOK_ANGLES.into_iter().map(row), out),
+            }
+        }
         TableName::Kinematics => {
             let m = mechanism(args, 0.5, 3.0)?;
             let omega = args.speed.omega()?;
@@ -141,12 +153,7 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
                 spec.iter()
                     .map(|d| table::kinematics_row(&m, omega, d, decimals))
             };
-            let head = Head {
-                title: &head.title,
-                headers: &head.headers,
-                notes: &head.notes,
-            };
-            return table::render_rows(format, &head, rows, &mut |s| out.text(s));
+            write_rows(format, &head, rows, out)
         }
         TableName::Forces => {
             let m = mechanism(args, 25.0, 72.0)?;
@@ -157,9 +164,36 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
                     value: torque,
                 });
             }
-            let angles = angles().unwrap_or_else(|| (1..=16).map(|k| 10.0 * k as f64).collect());
-            table::forces(&m, torque, args.friction.unwrap_or(1.0), &angles, decimals)?
+            let mu = args.friction.unwrap_or(1.0);
+            let spec = match &spec {
+                Some(s) => s.clone(),
+                None => AngleSpec::parse("10:160:10")?,
+            };
+            let head = table::forces_head(&m, torque, mu);
+            let rows = || {
+                spec.iter()
+                    .map(|d| table::forces_row(&m, torque, mu, d, decimals))
+            };
+            write_rows(format, &head, rows, out)
         }
+    }
+}
+
+/// Writes the rows as they are computed under the title and headers of
+/// `head` (see [`table::render_rows`]).
+fn write_rows<I>(
+    format: Format,
+    head: &table::Table,
+    rows: impl Fn() -> I,
+    out: &mut Stdout,
+) -> Result<()>
+where
+    I: Iterator<Item = Result<Vec<String>>>,
+{
+    let head = Head {
+        title: &head.title,
+        headers: &head.headers,
+        notes: &head.notes,
     };
-    out.text(&t.render(format))
+    table::render_rows(format, &head, rows, &mut |s| out.text(s))
 }
