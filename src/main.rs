@@ -88,9 +88,19 @@ fn parse_error(e: clap::Error) -> ExitCode {
         );
         return ExitCode::from(REFUSED);
     }
-    // One line: clap's first line names the problem.
+    // One line: clap's first paragraph names the problem (and, for a
+    // missing argument, lists it on the lines after the first).
     let text = e.render().to_string();
-    let first = text.lines().next().unwrap_or("invalid arguments");
+    let first: Vec<&str> = text
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    let first = if first.is_empty() {
+        "invalid arguments".to_string()
+    } else {
+        first.join(" ")
+    };
     eprintln!("slider-crank: {first} (see --help)");
     ExitCode::from(REFUSED)
 }

@@ -3,9 +3,8 @@
 #![no_main]
 
 #[allow(dead_code)]
-mod hostile {
-    include!("../../tests/common/hostile.rs");
-}
+#[path = "../../tests/common/hostile.rs"]
+mod hostile;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     let Some((&which, rest)) = data.split_first() else {

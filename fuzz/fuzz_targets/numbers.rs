@@ -2,9 +2,8 @@
 #![no_main]
 
 #[allow(dead_code)]
-mod hostile {
-    include!("../../tests/common/hostile.rs");
-}
+#[path = "../../tests/common/hostile.rs"]
+mod hostile;
 
 #[derive(Debug, arbitrary::Arbitrary)]
 struct Input {

@@ -2,9 +2,8 @@
 #![no_main]
 
 #[allow(dead_code)]
-mod hostile {
-    include!("../../tests/common/hostile.rs");
-}
+#[path = "../../tests/common/hostile.rs"]
+mod hostile;
 
 libfuzzer_sys::fuzz_target!(|data: &[u8]| {
     if let Ok(text) = std::str::from_utf8(data) {
