@@ -83,7 +83,7 @@ mod tests {
         let err = read_text(Path::new("/nonexistent/x.toml"), 10, "scene file").unwrap_err();
         assert!(
             err.to_string()
-                .starts_with("cannot read /nonexistent/x.toml")
+                .starts_with("cannot read scene file /nonexistent/x.toml: ")
         );
     }
 }

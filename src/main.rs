@@ -66,7 +66,7 @@ fn main() -> ExitCode {
         // The reader went away (`| head`): nothing to say, but not a success.
         Err(_) if out.broken_pipe() => ExitCode::from(REFUSED),
         Err(e) => {
-            eprintln!("slider-crank: error: {e}");
+            eprintln!("slider-crank: error: {}", e.one_line());
             ExitCode::from(REFUSED)
         }
     }

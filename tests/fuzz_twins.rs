@@ -1,6 +1,6 @@
 //! Bounded twins of the fuzz targets in `fuzz/` (run there with
-//! `cargo fuzz`): the same properties (`tests/common/hostile.rs`) over a few
-//! dozen generated inputs each, fast enough for every CI run.
+//! `cargo fuzz`): the same properties (`tests/common/hostile.rs`) over 256
+//! generated inputs each, fast enough (under a second) for every CI run.
 
 #[path = "common/hostile.rs"]
 mod hostile;
@@ -44,7 +44,7 @@ fn line() -> impl Strategy<Value = String> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 48, failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
 
     #[test]
     fn numbers_to_analyze_and_figures(
@@ -102,4 +102,22 @@ fn toml_number(x: f64) -> String {
     } else {
         format!("{x:e}")
     }
+}
+
+/// Found by the scene fuzz target: a scene named "… -inf …" writes that
+/// name; it is text, not a number drawn.
+#[test]
+fn a_name_that_says_inf_is_text_not_a_number() {
+    hostile::scene_toml("name = \"a = -inf = NaN\"\nangles = [13, 121]\n");
+    let crash = include_str!("../fuzz/corpus/scene_toml/name-says-inf.toml");
+    hostile::scene_toml(crash);
+}
+
+/// Found by the scene fuzz target: a layer name with a newline escape was
+/// quoted into a message of two lines.
+#[test]
+fn a_quoted_newline_keeps_the_refusal_on_one_line() {
+    hostile::scene_toml("layers = [\"mech\\nanism\"]\n");
+    let crash = include_str!("../fuzz/corpus/scene_toml/layer-name-with-newline.toml");
+    hostile::scene_toml(crash);
 }

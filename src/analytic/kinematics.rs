@@ -9,7 +9,12 @@ use crate::mechanism::Pose;
 /// is left near the limit of assembly [`Kinematics::new`] checks.
 pub const MAX_OMEGA: f64 = 1e100;
 
-/// Checks a crank speed: finite and |ω| ≤ [`MAX_OMEGA`].
+/// Smallest non-zero crank speed |ω| accepted, in rad/s: one turn then
+/// takes 2π/ω ≤ 6.3e100 time units, which a time axis can show.
+pub const MIN_OMEGA: f64 = 1e-100;
+
+/// Checks a crank speed: finite, and 0 or [`MIN_OMEGA`] ≤ |ω| ≤
+/// [`MAX_OMEGA`].
 pub fn check_omega(omega: f64) -> Result<f64> {
     let omega = finite("omega", omega)?;
     if omega.abs() > MAX_OMEGA {
@@ -18,6 +23,15 @@ pub fn check_omega(omega: f64) -> Result<f64> {
             value: omega,
             reason: format!(
                 "a crank speed is at most {MAX_OMEGA:e} rad/s (give it per a shorter unit of time)"
+            ),
+        });
+    }
+    if omega != 0.0 && omega.abs() < MIN_OMEGA {
+        return Err(Error::OutOfRange {
+            name: "omega",
+            value: omega,
+            reason: format!(
+                "a crank speed is 0 or at least {MIN_OMEGA:e} rad/s (give it per a longer unit of time)"
             ),
         });
     }
@@ -133,6 +147,13 @@ mod tests {
         let m = SliderCrank::in_line(1.0, 3.0).unwrap();
         let p = m.pose(Angle::from_degrees(10.0).unwrap());
         assert!(Kinematics::new(&p, f64::NAN).is_err());
+    }
+
+    #[test]
+    fn tiny_speeds_are_refused_but_rest_is_not() {
+        assert!(check_omega(1e-300).is_err());
+        assert_eq!(check_omega(0.0), Ok(0.0));
+        assert_eq!(check_omega(-1e-100), Ok(-1e-100));
     }
 
     #[test]

@@ -91,7 +91,7 @@ fn check_finite(name: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Most angles a range may produce.
-pub const MAX_ANGLES: usize = 1_000_000;
+pub const MAX_ANGLES: usize = 100_000;
 
 fn parse_number(text: &str, what: &str) -> Result<f64> {
     let value: f64 = text.trim().parse().map_err(|_| {
@@ -260,9 +260,11 @@ mod tests {
         assert_eq!(parse_angles("90:0:-45").unwrap(), vec![90.0, 45.0, 0.0]);
         assert_eq!(parse_angles("0:1:0.1").unwrap().len(), 11);
         assert_eq!(parse_angles("10,20").unwrap(), vec![10.0, 20.0]);
-        let spec = AngleSpec::parse("0:999999:1").unwrap();
-        assert_eq!(spec.count, 1_000_000);
-        assert_eq!(spec.iter().last(), Some(999_999.0));
+        let spec = AngleSpec::parse("0:99999:1").unwrap();
+        assert_eq!(spec.count, 100_000);
+        assert_eq!(spec.iter().last(), Some(99_999.0));
+        assert!(AngleSpec::parse("0:100000:1").is_err());
+        assert!(AngleSpec::parse("0:50000:1,0:50000:1").is_err());
     }
 
     #[test]

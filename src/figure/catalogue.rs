@@ -242,7 +242,7 @@ impl FigureName {
     /// the mechanism cannot draw.
     pub fn figure(&self, options: &FigureOptions) -> Result<Figure> {
         let Some(mut scene) = self.scene() else {
-            return diagrams::build(*self, options);
+            return diagrams::build(*self, options).map_err(Error::one_line);
         };
         if let Some(bad) = options
             .given()

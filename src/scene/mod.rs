@@ -204,9 +204,10 @@ impl Scene {
         self
     }
 
-    /// The crank speed ω in rad/s, for scale notes (finite, non-zero).
+    /// The crank speed ω in rad/s, for scale notes (non-zero, at most
+    /// [`crate::MAX_OMEGA`]).
     pub fn with_omega(mut self, omega: f64) -> Result<Self> {
-        let omega = finite("omega", omega)?;
+        let omega = crate::analytic::kinematics::check_omega(omega)?;
         if omega == 0.0 {
             return Err(Error::NotPositive {
                 name: "omega",
@@ -331,9 +332,9 @@ impl Scene {
     }
 
     /// Reads a scene from TOML (see `examples/*.toml`). Errors name the line
-    /// and column of the bad key or value.
+    /// and column of the bad key or value, in one line.
     pub fn from_toml(text: &str) -> Result<Self> {
-        file::parse(text)
+        file::parse(text).map_err(Error::one_line)
     }
 
     /// Builds the figure, computing only what the layers draw.

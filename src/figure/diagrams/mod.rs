@@ -151,6 +151,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
                 .into(),
         });
     }
+    let omega = crate::analytic::kinematics::check_omega(omega)?;
     let ctx = Ctx {
         name,
         options,
