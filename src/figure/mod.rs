@@ -15,7 +15,7 @@ mod text;
 mod transform;
 
 pub use catalogue::FigureName;
-pub use model::{Align, Dash, Figure, Item, Panel, Role, Shape, Symbol, TextSize};
+pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use options::{FigureOptions, Fit};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use text::{RichText, Run};

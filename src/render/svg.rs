@@ -16,7 +16,9 @@ use std::fmt as stdfmt;
 use std::fmt::Write as _;
 use std::hash::Hash;
 use svg::Document;
-use svg::node::element::{Circle, Element, Group, Path as SvgPath, Rectangle};
+use svg::node::element::{
+    Circle, ClipPath, Definitions, Element, Group, Path as SvgPath, Rectangle,
+};
 use svg::node::{Node, NodeDefaultHash};
 
 /// Markup written as is inside a `<text>` (runs as `<tspan>`s), without
@@ -275,10 +277,16 @@ impl PanelWriter<'_> {
         let mut pen = self.style.pen(item.role);
         if let Some(dash) = item.dash {
             pen.dash = Style::dash(dash);
+            if let Some(colour) = self.style.series(dash) {
+                pen.colour = colour;
+            }
+        }
+        if let Some(colour) = item.hue.and_then(|h| self.style.hue(h)) {
+            pen.colour = colour;
         }
         self.obstacles.set_weight(match item.role {
             Role::Link | Role::Force => 3.0,
-            Role::Construction => 1.5,
+            Role::Construction | Role::Result => 1.5,
             _ => 1.0,
         });
         let id = item.id.as_str();
@@ -427,11 +435,16 @@ impl PanelWriter<'_> {
                 if pts.len() < 3 || !pts.iter().all(finite) {
                     return None;
                 }
-                self.obstacles.polyline(&pts);
-                self.obstacles.segment(pts[pts.len() - 1], pts[0]);
+                // No letter inside the block: the whole body is kept clear.
+                let (lo, hi) = pts
+                    .iter()
+                    .fold((pts[0], pts[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+                self.obstacles.boxed(Bounds { min: lo, max: hi });
+                // Unfilled, so that curves and constructions through the
+                // slider (Kisch's semicircle ends at A) stay visible.
                 Box::new(
                     path(polyline_d(&pts, true), Pen { width: 1.6, ..pen })
-                        .set("fill", self.style.paper())
+                        .set("fill", "none")
                         .set("id", id)
                         .set("class", class),
                 )
@@ -792,6 +805,23 @@ fn panel_group(
             nodes.push(n);
         }
     }
+    if panel.is_clipped() {
+        let r = panel.rect();
+        let clip = format!("clip-{}", panel.id());
+        g = g
+            .add(
+                Definitions::new().add(
+                    ClipPath::new().set("id", clip.clone()).add(
+                        Rectangle::new()
+                            .set("x", fmt(r.x))
+                            .set("y", fmt(r.y))
+                            .set("width", fmt(r.width))
+                            .set("height", fmt(r.height)),
+                    ),
+                ),
+            )
+            .set("clip-path", format!("url(#{clip})"));
+    }
     for n in nodes {
         g = g.add(n);
     }
@@ -878,10 +908,12 @@ pub fn to_svg(figure: &Figure) -> String {
         // Labels stay in their panel, or just outside it (into the
         // margin) for points near its edge, and always on the page.
         let r = panel.rect();
-        let x0 = (r.x - 8.0).max(page.x);
-        let y0 = (r.y - 8.0).max(page.y);
-        let x1 = (r.x + r.width + 8.0).min(page.x + page.width);
-        let y1 = (r.y + r.height + 8.0).min(page.y + page.height);
+        // A clipped panel keeps its labels inside.
+        let out = if panel.is_clipped() { -3.0 } else { 8.0 };
+        let x0 = (r.x - out).max(page.x);
+        let y0 = (r.y - out).max(page.y);
+        let x1 = (r.x + r.width + out).min(page.x + page.width);
+        let y1 = (r.y + r.height + out).min(page.y + page.height);
         let room = crate::figure::PageRect::new(x0, y0, x1 - x0, y1 - y0);
         doc = doc.add(panel_group(panel, style, &room));
     }
