@@ -50,7 +50,8 @@
 //! let (figure, computed) = scene.build();
 //! assert_eq!(computed.instant_centre, 0);              // Kisch needs no D
 //! let svg = to_svg(&figure);
-//! assert!(svg.contains(r#"id="point-G""#) && scene.has(Layer::Kisch));
+//! // G is lettered in the enlarged detail of the construction.
+//! assert!(svg.contains(r#"id="detail-point-G""#) && scene.has(Layer::Kisch));
 //! ```
 #![deny(missing_docs)]
 
