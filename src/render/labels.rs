@@ -138,8 +138,8 @@ impl Obstacles {
 
 /// How much farther than touching each ring of candidates sits, page
 /// units: the last keeps a 17-unit letter within 1.5 em of its point
-/// (its gap of 4 plus 21).
-const RINGS: [f64; 5] = [0.0, 5.0, 10.0, 15.0, 21.0];
+/// (its gap of 4 plus 17, with room for the glyphs' side bearings).
+const RINGS: [f64; 5] = [0.0, 4.0, 8.0, 12.0, 17.0];
 
 /// Directions tried, best first, in page degrees (y down): above-right,
 /// right, above, above-left, left, below-right, below, below-left, then
