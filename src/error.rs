@@ -64,6 +64,10 @@ pub enum Error {
     /// Reading or writing a file failed.
     #[error("{0}")]
     Io(String),
+    /// A computation reached one of its limits (the evaluations, halvings
+    /// or segments of a curve); the message says what can be changed.
+    #[error("{0}")]
+    Limit(String),
 }
 
 /// A number as a message shows it: plainly in the usual range, in

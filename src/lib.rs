@@ -62,12 +62,13 @@ pub mod diagram;
 mod error;
 pub mod figure;
 pub mod geom;
+pub mod input;
 mod mechanism;
 pub mod render;
 pub mod scene;
 pub mod table;
 
-pub use analytic::kinematics::{Kinematics, rpm_to_omega};
+pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
 pub use angle::Angle;
 pub use error::{Error, Result};
 pub use figure::{Figure, FigureName};

@@ -2,12 +2,16 @@
 //! the whole turn.
 
 use super::args::MechanismArgs;
+use super::output::Stdout;
 use clap::Args;
 use slider_crank::construct::sweep;
 use slider_crank::{Error, Result};
 
 /// Default tolerance of `check`, in the scaled units of DESIGN.md §6.
 pub const DEFAULT_TOLERANCE: f64 = 1e-12;
+
+/// Most poses one check sweeps (about a second of work).
+pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// Sweep the whole turn and compare each construction with the analytic core.
 #[derive(Debug, Args)]
@@ -16,16 +20,21 @@ pub struct CheckArgs {
     pub mechanism: MechanismArgs,
     /// Equally spaced poses over the turn (the exact dead centres, 0°, 90°,
     /// 180° and 270° are always added)
-    #[arg(long, default_value_t = 100_000, value_name = "N")]
+    #[arg(
+        long,
+        default_value_t = 100_000,
+        value_name = "N",
+        allow_hyphen_values = true
+    )]
     pub samples: usize,
     /// Largest allowed difference, scaled by r (slider) or 1 (rod rates
     /// per unit ω)
-    #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_TOLERANCE, value_name = "T")]
+    #[arg(long, allow_hyphen_values = true, default_value_t = DEFAULT_TOLERANCE, value_name = "T")]
     pub tolerance: f64,
 }
 
 /// Runs the check: the report and whether every quantity passed.
-pub fn run(args: &CheckArgs) -> Result<(String, bool)> {
+pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
     let m = args.mechanism.mechanism()?;
     if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
         return Err(Error::NotPositive {
@@ -33,11 +42,11 @@ pub fn run(args: &CheckArgs) -> Result<(String, bool)> {
             value: args.tolerance,
         });
     }
-    if args.samples == 0 || args.samples > 100_000_000 {
+    if args.samples == 0 || args.samples > MAX_SAMPLES {
         return Err(Error::OutOfRange {
             name: "samples",
             value: args.samples as f64,
-            reason: "give between 1 and 100000000 poses".into(),
+            reason: format!("give between 1 and {MAX_SAMPLES} poses"),
         });
     }
     let report = sweep(&m, args.samples);
@@ -72,5 +81,6 @@ pub fn run(args: &CheckArgs) -> Result<(String, bool)> {
     } else {
         "\nsome quantities exceed the tolerance\n"
     });
-    Ok((out, ok))
+    stdout.text(&out)?;
+    Ok(ok)
 }

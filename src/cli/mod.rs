@@ -4,5 +4,6 @@ pub mod analyze;
 pub mod args;
 pub mod check;
 pub mod figure;
+pub mod output;
 pub mod scene;
 pub mod table;

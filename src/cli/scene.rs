@@ -1,7 +1,9 @@
 //! `slider-crank scene FILE.toml`: a figure described by a scene file.
 
 use super::figure::emit;
+use super::output::Stdout;
 use clap::Args;
+use slider_crank::input::{MAX_SCENE_BYTES, read_text};
 use slider_crank::{Error, Result, Scene};
 use std::path::PathBuf;
 
@@ -12,16 +14,15 @@ pub struct SceneArgs {
     #[arg(value_name = "FILE.toml")]
     pub file: PathBuf,
     /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
-    /// printing SVG
-    #[arg(long, value_name = "FILE")]
+    /// printing SVG; `-` prints SVG
+    #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
 
 /// Runs the subcommand.
-pub fn run(args: &SceneArgs) -> Result<String> {
-    let text = std::fs::read_to_string(&args.file)
-        .map_err(|e| Error::Io(format!("cannot read {}: {e}", args.file.display())))?;
+pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
+    let text = read_text(&args.file, MAX_SCENE_BYTES, "scene file")?;
     let scene = Scene::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
-    emit(&scene.figure(), args.out.as_ref())
+    emit(&scene.figure(), args.out.as_ref(), out)
 }

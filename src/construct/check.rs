@@ -142,19 +142,18 @@ impl SweepReport {
 /// Checks `samples` equally spaced crank angles over the whole turn plus the
 /// exact dead centres, 90° and 270°.
 pub fn sweep(mechanism: &SliderCrank, samples: usize) -> SweepReport {
-    let mut angles: Vec<Angle> = (0..samples)
-        .filter_map(|k| Angle::from_degrees(360.0 * k as f64 / samples as f64).ok())
-        .collect();
-    for d in [0.0, 90.0, 180.0, 270.0] {
-        angles.push(Angle::from_degrees(d).expect("finite"));
-    }
-    for t in [mechanism.outer_dead_centre(), mechanism.inner_dead_centre()] {
-        angles.push(Angle::from_radians(t).expect("finite"));
-    }
+    // Generated as they are checked: memory does not grow with `samples`.
+    let even = (0..samples).map(|k| Angle::from_degrees(360.0 * k as f64 / samples as f64));
+    let quarters = [0.0, 90.0, 180.0, 270.0].map(Angle::from_degrees);
+    let dead =
+        [mechanism.outer_dead_centre(), mechanism.inner_dead_centre()].map(Angle::from_radians);
+    let angles = even.chain(quarters).chain(dead).filter_map(|a| a.ok());
+    let mut poses = 0;
     let mut worst: Vec<(Quantity, f64, f64, usize)> =
         Quantity::ALL.iter().map(|q| (*q, 0.0, 0.0, 0)).collect();
-    for angle in &angles {
-        let pose = mechanism.pose(*angle);
+    for angle in angles {
+        poses += 1;
+        let pose = mechanism.pose(angle);
         for row in cross_check(&pose) {
             let slot = worst
                 .iter_mut()
@@ -170,8 +169,5 @@ pub fn sweep(mechanism: &SliderCrank, samples: usize) -> SweepReport {
             }
         }
     }
-    SweepReport {
-        poses: angles.len(),
-        worst,
-    }
+    SweepReport { poses, worst }
 }

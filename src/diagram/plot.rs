@@ -66,6 +66,9 @@ pub struct Plot {
     caption: Option<RichText>,
 }
 
+/// What a user can change when a curve reaches the curve engine's limits.
+const LIMIT_ADVICE: &str = "a mechanism this close to its limit of assembly (rod = crank + |offset|) changes too fast to draw: give a longer rod or a smaller offset, or data that vary less";
+
 fn too_small(rect: &PageRect) -> Error {
     Error::OutOfRange {
         name: "panel width",
@@ -276,7 +279,13 @@ impl Plot {
                 &self.area.frame(),
                 Method::Cubic,
                 &options,
-            )?;
+            )
+            .map_err(|e| match e {
+                Error::Limit(why) => {
+                    Error::Limit(format!("cannot draw {id}: {why}; {LIMIT_ADVICE}"))
+                }
+                e => e,
+            })?;
             subpaths.extend(traced.subpaths().iter().cloned());
         }
         let page = super::Path::new(subpaths);

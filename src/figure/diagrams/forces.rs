@@ -34,7 +34,7 @@ fn tan_phi(p: &Pose) -> (f64, f64) {
 
 /// F = T / OM and its derivative per radian; `None` at a dead centre.
 fn force(p: &Pose) -> Option<(f64, f64)> {
-    let f = statics::slider_force(p, NG_TORQUE)?;
+    let f = statics::slider_force(p, NG_TORQUE).ok()??;
     let s1 = p.position_rate();
     Some((f, NG_TORQUE * p.position_acceleration() / (s1 * s1)))
 }
