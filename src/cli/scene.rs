@@ -2,6 +2,7 @@
 
 use super::figure::emit;
 use clap::Args;
+use slider_crank::figure::Font;
 use slider_crank::{Error, Result, Scene};
 use std::path::PathBuf;
 
@@ -11,6 +12,11 @@ pub struct SceneArgs {
     /// The scene file (TOML; see examples/*.toml)
     #[arg(value_name = "FILE.toml")]
     pub file: PathBuf,
+    /// Face of the text, over the file's `font` key: new-computer-modern
+    /// (the look of LaTeX books) or libertinus-serif [default: the file's,
+    /// else new-computer-modern]
+    #[arg(long, value_name = "NAME")]
+    pub font: Option<String>,
     /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
     /// printing SVG
     #[arg(long, value_name = "FILE")]
@@ -21,7 +27,10 @@ pub struct SceneArgs {
 pub fn run(args: &SceneArgs) -> Result<String> {
     let text = std::fs::read_to_string(&args.file)
         .map_err(|e| Error::Io(format!("cannot read {}: {e}", args.file.display())))?;
-    let scene = Scene::from_toml(&text)
+    let mut scene = Scene::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
+    if let Some(name) = &args.font {
+        scene = scene.with_font(name.parse::<Font>()?);
+    }
     emit(&scene.figure(), args.out.as_ref())
 }
