@@ -225,15 +225,8 @@ fn assert_clean(svg: &str, what: &str) {
             "{what}: {token} in the SVG"
         );
     }
-    static FONTS: std::sync::OnceLock<std::sync::Arc<usvg::fontdb::Database>> =
-        std::sync::OnceLock::new();
-    let fonts = FONTS.get_or_init(|| {
-        let mut db = usvg::fontdb::Database::new();
-        db.load_system_fonts();
-        std::sync::Arc::new(db)
-    });
     let options = usvg::Options {
-        fontdb: fonts.clone(),
+        fontdb: slider_crank::render::font_database(),
         ..usvg::Options::default()
     };
     let tree = usvg::Tree::from_str(svg, &options).unwrap();

@@ -263,6 +263,9 @@ impl FigureName {
         if let Some(s) = options.style {
             scene = scene.with_style(s);
         }
+        if let Some(f) = options.font {
+            scene = scene.with_font(f);
+        }
         Ok(scene.figure())
     }
 

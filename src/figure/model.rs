@@ -1,7 +1,7 @@
 //! The immutable figure model: panels of primitives in world coordinates,
 //! each with a role and a stable id.
 
-use super::{PageFromWorld, PageRect, Path, RichText};
+use super::{Font, PageFromWorld, PageRect, Path, RichText};
 use crate::geom::{Point, Vector};
 use crate::render::Style;
 use serde_json::{Map, Value};
@@ -435,6 +435,7 @@ pub struct Figure {
     width: f64,
     height: f64,
     style: Style,
+    font: Font,
     tolerance: f64,
     panels: Vec<Panel>,
     metadata: Map<String, Value>,
@@ -443,7 +444,8 @@ pub struct Figure {
 impl Figure {
     /// A figure of `width` × `height` page units; `metadata` adds keys to
     /// the SVG metadata beside the ones the renderer writes (`figure`,
-    /// `page_from_world`, `tolerance`, `style`, `panels`).
+    /// `page_from_world`, `tolerance`, `style`, `panels`). It is set in the
+    /// default [`Font`] until [`Figure::with_font`] says otherwise.
     pub fn new(
         name: impl Into<String>,
         width: f64,
@@ -458,6 +460,7 @@ impl Figure {
             width,
             height,
             style,
+            font: Font::default(),
             tolerance,
             panels,
             metadata,
@@ -484,6 +487,11 @@ impl Figure {
         self.style
     }
 
+    /// The face its text is set in.
+    pub fn font(&self) -> Font {
+        self.font
+    }
+
     /// The drawing tolerance of curves, in page units.
     pub fn tolerance(&self) -> f64 {
         self.tolerance
@@ -502,6 +510,15 @@ impl Figure {
     /// The same geometry in another style.
     pub fn with_style(mut self, style: Style) -> Self {
         self.style = style;
+        self
+    }
+
+    /// The same figure set in another face. Layout already made with
+    /// another face's widths (plot margins, legends) is kept: build the
+    /// figure with the face instead where that matters
+    /// ([`crate::Scene::with_font`], [`super::FigureOptions::font`]).
+    pub fn with_font(mut self, font: Font) -> Self {
+        self.font = font;
         self
     }
 }

@@ -39,8 +39,6 @@ pub(crate) const NOTE_SIZE: f64 = 13.0;
 pub(crate) const MARKER_RADIUS: f64 = 3.6;
 /// Line height of notes.
 pub(crate) const NOTE_LINE: f64 = 17.0;
-/// The serif faces asked for, best first.
-pub(crate) const FONT_FAMILY: &str = "'Times New Roman', Times, 'DejaVu Serif', serif";
 
 impl Style {
     /// The name used on the command line and in scene files.

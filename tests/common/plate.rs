@@ -8,7 +8,7 @@
 use crate::common::{attr, metadata};
 use resvg::usvg;
 use std::collections::HashMap;
-use std::sync::{Arc, OnceLock};
+use std::sync::Arc;
 
 /// A point on the page.
 pub type Pt = (f64, f64);
@@ -75,15 +75,8 @@ pub struct Plate {
 /// The fonts labels are laid out with: the one place to change when the
 /// figures bundle their fonts (load those faces here instead).
 pub fn font_database() -> Arc<usvg::fontdb::Database> {
-    static FONTS: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
-    FONTS
-        .get_or_init(|| {
-            let mut db = usvg::fontdb::Database::new();
-            db.load_system_fonts();
-            db.set_serif_family("DejaVu Serif");
-            Arc::new(db)
-        })
-        .clone()
+    // The bundled faces only: the type the program itself draws with.
+    slider_crank::render::font_database()
 }
 
 impl Rect {

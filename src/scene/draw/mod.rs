@@ -171,7 +171,8 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         scene.tolerance(),
         panels,
         metadata,
-    );
+    )
+    .with_font(scene.font());
     (figure, evaluations)
 }
 
