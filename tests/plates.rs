@@ -335,47 +335,71 @@ fn jobs() -> Vec<(&'static str, (String, SliderCrank), Angle)> {
 /// Threads the sweep runs on (CI has two cores).
 const THREADS: usize = 2;
 
-/// The sweep's outcomes, the work dealt round-robin over [`THREADS`].
+/// The sweep's outcomes in the order of [`jobs`], the work dealt
+/// round-robin over [`THREADS`].
 fn sweep() -> Vec<Outcome> {
     let jobs = jobs();
-    std::thread::scope(|s| {
+    let mut done: Vec<(usize, Outcome)> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..THREADS)
             .map(|t| {
-                let mine = jobs.iter().skip(t).step_by(THREADS);
-                s.spawn(move || mine.map(|(f, m, a)| inspect(f, m, *a)).collect::<Vec<_>>())
+                let mine = jobs.iter().enumerate().skip(t).step_by(THREADS);
+                s.spawn(move || {
+                    mine.map(|(i, (f, m, a))| (i, inspect(f, m, *a)))
+                        .collect::<Vec<_>>()
+                })
             })
             .collect();
         handles
             .into_iter()
             .flat_map(|h| h.join().unwrap())
             .collect()
-    })
+    });
+    done.sort_by_key(|(i, _)| *i);
+    done.into_iter().map(|(_, o)| o).collect()
 }
 
-/// Shares of clean plates per figure and overall, failures per rule, and
-/// the first failures.
-fn report(outcomes: &[Outcome]) -> String {
-    let mut by_figure: BTreeMap<&str, (usize, usize)> = BTreeMap::new();
-    let mut by_rule: BTreeMap<&str, usize> = BTreeMap::new();
+/// Per figure: clean plates, all plates, and plates breaking each rule.
+type Tally<'a> = BTreeMap<&'a str, (usize, usize, BTreeMap<&'static str, usize>)>;
+
+fn tally(outcomes: &[Outcome]) -> Tally<'_> {
+    let mut t = Tally::new();
     for o in outcomes {
-        let e = by_figure.entry(o.figure).or_default();
+        let e = t.entry(o.figure).or_default();
         e.0 += o.failures.is_empty() as usize;
         e.1 += 1;
         let rules: BTreeSet<&str> = o.failures.iter().map(|f| f.rule).collect();
         for r in rules {
-            *by_rule.entry(r).or_default() += 1;
+            *e.2.entry(r).or_default() += 1;
         }
     }
-    let share = |(clean, all): (usize, usize)| 100.0 * clean as f64 / all as f64;
-    let mut text = String::from("clean plates per figure:\n");
-    for (f, n) in &by_figure {
-        text += &format!("  {f:26} {:5.1} % of {}\n", share(*n), n.1);
+    t
+}
+
+/// Shares of clean plates per figure and overall, plates breaking each
+/// rule, and the first failures.
+fn report(outcomes: &[Outcome]) -> String {
+    let share = |clean: usize, all: usize| 100.0 * clean as f64 / all as f64;
+    let mut text = String::from("clean plates per figure (plates breaking each rule):\n");
+    let mut by_rule: BTreeMap<&str, usize> = BTreeMap::new();
+    for (f, (clean, all, rules)) in tally(outcomes) {
+        let broken: Vec<String> = rules
+            .iter()
+            .map(|(r, n)| format!("{}: {n}", &r[..2].trim()))
+            .collect();
+        text += &format!(
+            "  {f:26} {:5.1} % of {all}  ({})\n",
+            share(clean, all),
+            broken.join(", ")
+        );
+        for (r, n) in rules {
+            *by_rule.entry(r).or_default() += n;
+        }
     }
     let clean = outcomes.iter().filter(|o| o.failures.is_empty()).count();
     text += &format!(
         "  {:26} {:5.1} % of {}\n",
         "all",
-        share((clean, outcomes.len())),
+        share(clean, outcomes.len()),
         outcomes.len()
     );
     text += "plates breaking each rule:\n";
@@ -468,6 +492,25 @@ fn a_clean_plate_passes_every_rule() {
     assert_eq!(plate.panels.len(), 1);
     assert_eq!(plate.page_labels.len(), 1, "the note is a page label");
     assert!(plate.panels[0].markers.contains_key("A"));
+}
+
+#[test]
+fn label_boxes_are_the_glyphs_not_the_em_box() {
+    let plate = Plate::read(&clean_with(""));
+    let a = plate.panels[0]
+        .labels
+        .iter()
+        .find(|l| l.id == "label-A")
+        .unwrap();
+    let (w, h) = (a.rect.x1 - a.rect.x0, a.rect.y1 - a.rect.y0);
+    // A capital A of 17 px: about 0.7 em tall, standing on the baseline.
+    assert!((0.6..0.8).contains(&(h / a.font_size)), "{:?}", a.rect);
+    assert!((a.rect.y1 - 185.0).abs() < 0.5, "{:?}", a.rect);
+    assert!(w > 5.0 && w < 17.0, "{:?}", a.rect);
+    assert!(
+        (a.rect.x0 + a.rect.x1) / 2.0 - 60.0 < 1.0,
+        "centred on x = 60"
+    );
 }
 
 #[test]

@@ -73,17 +73,35 @@ pub struct Plate {
 }
 
 /// The fonts labels are laid out with: the one place to change when the
-/// figures bundle their fonts (load those faces here instead).
+/// figures bundle their fonts (load those faces' data here instead of the
+/// system's). The system's font files are read into memory once, so that
+/// laying out thousands of labels does not map them again each time.
 pub fn font_database() -> Arc<usvg::fontdb::Database> {
     static FONTS: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
     FONTS
         .get_or_init(|| {
             let mut db = usvg::fontdb::Database::new();
-            db.load_system_fonts();
+            for data in system_font_files() {
+                db.load_font_data(data);
+            }
             db.set_serif_family("DejaVu Serif");
             Arc::new(db)
         })
         .clone()
+}
+
+/// The bytes of every font file the system has.
+fn system_font_files() -> Vec<Vec<u8>> {
+    let mut system = usvg::fontdb::Database::new();
+    system.load_system_fonts();
+    let paths: std::collections::BTreeSet<_> = system
+        .faces()
+        .filter_map(|f| match &f.source {
+            usvg::fontdb::Source::File(p) => Some(p.clone()),
+            _ => None,
+        })
+        .collect();
+    paths.iter().filter_map(|p| std::fs::read(p).ok()).collect()
 }
 
 impl Rect {
