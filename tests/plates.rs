@@ -473,7 +473,8 @@ const WIDE_POINTS: &str = r#""B":[300,100],"C":[340,150],"E":[340,90],"F":[180,1
 const NARROW_POINTS: &str =
     r#""B":[300,100],"C":[340,110],"E":[330,95],"F":[310,120],"G":[320,110]"#;
 
-fn rules(svg: &str, spread: bool) -> BTreeSet<&'static str> {
+/// The rule of each failure, in order (one entry per failure).
+fn rules(svg: &str, spread: bool) -> Vec<&'static str> {
     check(&Plate::read(svg), spread)
         .iter()
         .map(|f| f.rule)
@@ -517,23 +518,20 @@ fn label_boxes_are_the_glyphs_not_the_em_box() {
 fn a_guide_stopping_at_the_rod_touches_it_without_crossing() {
     // The rod is at y = 140 where x = 108.
     let svg = page(&mechanism_with_guide_to(108.0), NOTE, WIDE_POINTS);
-    assert_eq!(rules(&svg, true), BTreeSet::new());
+    assert_eq!(rules(&svg, true), Vec::<&str>::new());
 }
 
 #[test]
 fn a_rod_through_a_guide_is_caught() {
     let svg = page(&mechanism_with_guide_to(150.0), NOTE, WIDE_POINTS);
-    assert_eq!(rules(&svg, true), BTreeSet::from([RULE_GUIDES]));
+    assert_eq!(rules(&svg, true), [RULE_GUIDES]);
 }
 
 #[test]
 fn a_rod_through_hatching_is_caught() {
     let hatch =
         r##"<path id="hatch-guide-extra" class="frame" d="M105 134 L110 146" stroke="#000"/>"##;
-    assert_eq!(
-        rules(&clean_with(hatch), true),
-        BTreeSet::from([RULE_GUIDES])
-    );
+    assert_eq!(rules(&clean_with(hatch), true), [RULE_GUIDES]);
 }
 
 #[test]
@@ -544,39 +542,36 @@ fn overlapping_labels_are_caught() {
         &format!("{NOTE}{twin}"),
         WIDE_POINTS,
     );
-    assert_eq!(rules(&svg, true), BTreeSet::from([RULE_OVERLAP]));
+    assert_eq!(rules(&svg, true), [RULE_OVERLAP]);
 }
 
 #[test]
 fn a_construction_line_through_a_note_is_caught() {
     let line = r##"<path id="line-CF" class="construction" d="M10 276 L100 276" stroke="#000"/>"##;
-    assert_eq!(rules(&clean_with(line), true), BTreeSet::from([RULE_LINES]));
+    assert_eq!(rules(&clean_with(line), true), [RULE_LINES]);
 }
 
 #[test]
 fn a_letter_far_from_its_point_is_caught() {
     let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="230""#);
-    assert_eq!(
-        rules(&page(&body, NOTE, WIDE_POINTS), true),
-        BTreeSet::from([RULE_NEAR])
-    );
+    assert_eq!(rules(&page(&body, NOTE, WIDE_POINTS), true), [RULE_NEAR]);
 }
 
 #[test]
 fn ink_past_the_page_edge_is_caught() {
     let line = r##"<path id="line-far" class="auxiliary" d="M300 220 L420 220" stroke="#000"/>"##;
-    assert_eq!(rules(&clean_with(line), true), BTreeSet::from([RULE_PAGE]));
+    assert_eq!(rules(&clean_with(line), true), [RULE_PAGE]);
 }
 
 #[test]
 fn a_small_construction_is_caught_and_a_detail_panel_cures_it() {
     let body = mechanism_with_guide_to(CLEAN_MECHANISM_END);
     let small = page(&body, NOTE, NARROW_POINTS);
-    assert_eq!(rules(&small, true), BTreeSet::from([RULE_SPREAD]));
-    assert_eq!(rules(&small, false), BTreeSet::new());
+    assert_eq!(rules(&small, true), [RULE_SPREAD]);
+    assert_eq!(rules(&small, false), Vec::<&str>::new());
     let detail = r#"</g><g id="panel-detail" data-page-from-world="4 0 0 4 -1000 -300">"#;
     let cured = page(&format!("{body}{detail}"), NOTE, NARROW_POINTS);
-    assert_eq!(rules(&cured, true), BTreeSet::new());
+    assert_eq!(rules(&cured, true), Vec::<&str>::new());
 }
 
 #[test]
@@ -588,7 +583,36 @@ fn a_clipped_detail_panel_is_judged_by_what_it_shows() {
 <path id="detail-guide-upper" class="frame" d="M200 100 L200 200" stroke="#000"/>"##;
     let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + detail;
     let svg = page(&body, NOTE, WIDE_POINTS);
-    assert_eq!(rules(&svg, true), BTreeSet::new());
+    assert_eq!(rules(&svg, true), Vec::<&str>::new());
     let unclipped = svg.replace(r#" clip-path="url(#clip-detail)""#, "");
-    assert_eq!(rules(&unclipped, true), BTreeSet::from([RULE_GUIDES]));
+    assert_eq!(rules(&unclipped, true), [RULE_GUIDES]);
+}
+
+#[test]
+fn a_letter_on_its_own_pin_is_caught() {
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="156""#);
+    let failures = check(&Plate::read(&page(&body, NOTE, WIDE_POINTS)), true);
+    assert!(
+        failures.iter().all(|f| f.rule == RULE_LINES),
+        "{failures:?}"
+    );
+    assert!(
+        failures.iter().any(|f| f.ids == "point-A through label-A"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn a_detail_letter_far_from_its_detail_point_is_caught() {
+    let detail = r##"</g><g id="panel-detail" data-page-from-world="4 0 0 4 -1000 -300">
+<circle id="detail-point-F" class="construction" cx="300" cy="80" r="2"/>
+<text id="detail-label-F" class="label" x="300" y="30" font-size="17">F</text>"##;
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + detail;
+    let failures = check(&Plate::read(&page(&body, NOTE, WIDE_POINTS)), true);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert_eq!(failures[0].rule, RULE_NEAR);
+    assert!(
+        failures[0].ids.starts_with("detail-label-F "),
+        "{failures:?}"
+    );
 }
