@@ -335,47 +335,71 @@ fn jobs() -> Vec<(&'static str, (String, SliderCrank), Angle)> {
 /// Threads the sweep runs on (CI has two cores).
 const THREADS: usize = 2;
 
-/// The sweep's outcomes, the work dealt round-robin over [`THREADS`].
+/// The sweep's outcomes in the order of [`jobs`], the work dealt
+/// round-robin over [`THREADS`].
 fn sweep() -> Vec<Outcome> {
     let jobs = jobs();
-    std::thread::scope(|s| {
+    let mut done: Vec<(usize, Outcome)> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..THREADS)
             .map(|t| {
-                let mine = jobs.iter().skip(t).step_by(THREADS);
-                s.spawn(move || mine.map(|(f, m, a)| inspect(f, m, *a)).collect::<Vec<_>>())
+                let mine = jobs.iter().enumerate().skip(t).step_by(THREADS);
+                s.spawn(move || {
+                    mine.map(|(i, (f, m, a))| (i, inspect(f, m, *a)))
+                        .collect::<Vec<_>>()
+                })
             })
             .collect();
         handles
             .into_iter()
             .flat_map(|h| h.join().unwrap())
             .collect()
-    })
+    });
+    done.sort_by_key(|(i, _)| *i);
+    done.into_iter().map(|(_, o)| o).collect()
 }
 
-/// Shares of clean plates per figure and overall, failures per rule, and
-/// the first failures.
-fn report(outcomes: &[Outcome]) -> String {
-    let mut by_figure: BTreeMap<&str, (usize, usize)> = BTreeMap::new();
-    let mut by_rule: BTreeMap<&str, usize> = BTreeMap::new();
+/// Per figure: clean plates, all plates, and plates breaking each rule.
+type Tally<'a> = BTreeMap<&'a str, (usize, usize, BTreeMap<&'static str, usize>)>;
+
+fn tally(outcomes: &[Outcome]) -> Tally<'_> {
+    let mut t = Tally::new();
     for o in outcomes {
-        let e = by_figure.entry(o.figure).or_default();
+        let e = t.entry(o.figure).or_default();
         e.0 += o.failures.is_empty() as usize;
         e.1 += 1;
         let rules: BTreeSet<&str> = o.failures.iter().map(|f| f.rule).collect();
         for r in rules {
-            *by_rule.entry(r).or_default() += 1;
+            *e.2.entry(r).or_default() += 1;
         }
     }
-    let share = |(clean, all): (usize, usize)| 100.0 * clean as f64 / all as f64;
-    let mut text = String::from("clean plates per figure:\n");
-    for (f, n) in &by_figure {
-        text += &format!("  {f:26} {:5.1} % of {}\n", share(*n), n.1);
+    t
+}
+
+/// Shares of clean plates per figure and overall, plates breaking each
+/// rule, and the first failures.
+fn report(outcomes: &[Outcome]) -> String {
+    let share = |clean: usize, all: usize| 100.0 * clean as f64 / all as f64;
+    let mut text = String::from("clean plates per figure (plates breaking each rule):\n");
+    let mut by_rule: BTreeMap<&str, usize> = BTreeMap::new();
+    for (f, (clean, all, rules)) in tally(outcomes) {
+        let broken: Vec<String> = rules
+            .iter()
+            .map(|(r, n)| format!("{}: {n}", &r[..2].trim()))
+            .collect();
+        text += &format!(
+            "  {f:26} {:5.1} % of {all}  ({})\n",
+            share(clean, all),
+            broken.join(", ")
+        );
+        for (r, n) in rules {
+            *by_rule.entry(r).or_default() += n;
+        }
     }
     let clean = outcomes.iter().filter(|o| o.failures.is_empty()).count();
     text += &format!(
         "  {:26} {:5.1} % of {}\n",
         "all",
-        share((clean, outcomes.len())),
+        share(clean, outcomes.len()),
         outcomes.len()
     );
     text += "plates breaking each rule:\n";
@@ -450,7 +474,8 @@ const WIDE_POINTS: &str = r#""B":[300,100],"C":[340,150],"E":[340,90],"F":[180,1
 const NARROW_POINTS: &str =
     r#""B":[300,100],"C":[340,110],"E":[330,95],"F":[310,120],"G":[320,110]"#;
 
-fn rules(svg: &str, spread: bool) -> BTreeSet<&'static str> {
+/// The rule of each failure, in order (one entry per failure).
+fn rules(svg: &str, spread: bool) -> Vec<&'static str> {
     check(&Plate::read(svg), spread)
         .iter()
         .map(|f| f.rule)
@@ -472,26 +497,42 @@ fn a_clean_plate_passes_every_rule() {
 }
 
 #[test]
+fn label_boxes_are_the_glyphs_not_the_em_box() {
+    let plate = Plate::read(&clean_with(""));
+    let a = plate.panels[0]
+        .labels
+        .iter()
+        .find(|l| l.id == "label-A")
+        .unwrap();
+    let (w, h) = (a.rect.x1 - a.rect.x0, a.rect.y1 - a.rect.y0);
+    // A capital A of 17 px: about 0.7 em tall, standing on the baseline.
+    assert!((0.6..0.8).contains(&(h / a.font_size)), "{:?}", a.rect);
+    assert!((a.rect.y1 - 185.0).abs() < 0.5, "{:?}", a.rect);
+    assert!(w > 5.0 && w < 17.0, "{:?}", a.rect);
+    assert!(
+        (a.rect.x0 + a.rect.x1) / 2.0 - 60.0 < 1.0,
+        "centred on x = 60"
+    );
+}
+
+#[test]
 fn a_guide_stopping_at_the_rod_touches_it_without_crossing() {
     // The rod is at y = 140 where x = 108.
     let svg = page(&mechanism_with_guide_to(108.0), NOTE, WIDE_POINTS);
-    assert_eq!(rules(&svg, true), BTreeSet::new());
+    assert_eq!(rules(&svg, true), Vec::<&str>::new());
 }
 
 #[test]
 fn a_rod_through_a_guide_is_caught() {
     let svg = page(&mechanism_with_guide_to(150.0), NOTE, WIDE_POINTS);
-    assert_eq!(rules(&svg, true), BTreeSet::from([RULE_GUIDES]));
+    assert_eq!(rules(&svg, true), [RULE_GUIDES]);
 }
 
 #[test]
 fn a_rod_through_hatching_is_caught() {
     let hatch =
         r##"<path id="hatch-guide-extra" class="frame" d="M105 134 L110 146" stroke="#000"/>"##;
-    assert_eq!(
-        rules(&clean_with(hatch), true),
-        BTreeSet::from([RULE_GUIDES])
-    );
+    assert_eq!(rules(&clean_with(hatch), true), [RULE_GUIDES]);
 }
 
 #[test]
@@ -502,39 +543,36 @@ fn overlapping_labels_are_caught() {
         &format!("{NOTE}{twin}"),
         WIDE_POINTS,
     );
-    assert_eq!(rules(&svg, true), BTreeSet::from([RULE_OVERLAP]));
+    assert_eq!(rules(&svg, true), [RULE_OVERLAP]);
 }
 
 #[test]
 fn a_construction_line_through_a_note_is_caught() {
     let line = r##"<path id="line-CF" class="construction" d="M10 276 L100 276" stroke="#000"/>"##;
-    assert_eq!(rules(&clean_with(line), true), BTreeSet::from([RULE_LINES]));
+    assert_eq!(rules(&clean_with(line), true), [RULE_LINES]);
 }
 
 #[test]
 fn a_letter_far_from_its_point_is_caught() {
     let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="230""#);
-    assert_eq!(
-        rules(&page(&body, NOTE, WIDE_POINTS), true),
-        BTreeSet::from([RULE_NEAR])
-    );
+    assert_eq!(rules(&page(&body, NOTE, WIDE_POINTS), true), [RULE_NEAR]);
 }
 
 #[test]
 fn ink_past_the_page_edge_is_caught() {
     let line = r##"<path id="line-far" class="auxiliary" d="M300 220 L420 220" stroke="#000"/>"##;
-    assert_eq!(rules(&clean_with(line), true), BTreeSet::from([RULE_PAGE]));
+    assert_eq!(rules(&clean_with(line), true), [RULE_PAGE]);
 }
 
 #[test]
 fn a_small_construction_is_caught_and_a_detail_panel_cures_it() {
     let body = mechanism_with_guide_to(CLEAN_MECHANISM_END);
     let small = page(&body, NOTE, NARROW_POINTS);
-    assert_eq!(rules(&small, true), BTreeSet::from([RULE_SPREAD]));
-    assert_eq!(rules(&small, false), BTreeSet::new());
+    assert_eq!(rules(&small, true), [RULE_SPREAD]);
+    assert_eq!(rules(&small, false), Vec::<&str>::new());
     let detail = r#"</g><g id="panel-detail" data-page-from-world="4 0 0 4 -1000 -300">"#;
     let cured = page(&format!("{body}{detail}"), NOTE, NARROW_POINTS);
-    assert_eq!(rules(&cured, true), BTreeSet::new());
+    assert_eq!(rules(&cured, true), Vec::<&str>::new());
 }
 
 #[test]
@@ -546,7 +584,36 @@ fn a_clipped_detail_panel_is_judged_by_what_it_shows() {
 <path id="detail-guide-upper" class="frame" d="M200 100 L200 200" stroke="#000"/>"##;
     let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + detail;
     let svg = page(&body, NOTE, WIDE_POINTS);
-    assert_eq!(rules(&svg, true), BTreeSet::new());
+    assert_eq!(rules(&svg, true), Vec::<&str>::new());
     let unclipped = svg.replace(r#" clip-path="url(#clip-detail)""#, "");
-    assert_eq!(rules(&unclipped, true), BTreeSet::from([RULE_GUIDES]));
+    assert_eq!(rules(&unclipped, true), [RULE_GUIDES]);
+}
+
+#[test]
+fn a_letter_on_its_own_pin_is_caught() {
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="156""#);
+    let failures = check(&Plate::read(&page(&body, NOTE, WIDE_POINTS)), true);
+    assert!(
+        failures.iter().all(|f| f.rule == RULE_LINES),
+        "{failures:?}"
+    );
+    assert!(
+        failures.iter().any(|f| f.ids == "point-A through label-A"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn a_detail_letter_far_from_its_detail_point_is_caught() {
+    let detail = r##"</g><g id="panel-detail" data-page-from-world="4 0 0 4 -1000 -300">
+<circle id="detail-point-F" class="construction" cx="300" cy="80" r="2"/>
+<text id="detail-label-F" class="label" x="300" y="30" font-size="17">F</text>"##;
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + detail;
+    let failures = check(&Plate::read(&page(&body, NOTE, WIDE_POINTS)), true);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert_eq!(failures[0].rule, RULE_NEAR);
+    assert!(
+        failures[0].ids.starts_with("detail-label-F "),
+        "{failures:?}"
+    );
 }

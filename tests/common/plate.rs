@@ -73,7 +73,9 @@ pub struct Plate {
 }
 
 /// The fonts labels are laid out with: the one place to change when the
-/// figures bundle their fonts (load those faces here instead).
+/// figures bundle their fonts (load those faces' data here instead of the
+/// system's). The system's font files are read into memory once, so that
+/// laying out thousands of labels does not map them again each time.
 pub fn font_database() -> Arc<usvg::fontdb::Database> {
     // The bundled faces only: the type the program itself draws with.
     slider_crank::render::font_database()
