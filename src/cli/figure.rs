@@ -3,7 +3,7 @@
 use super::args::SpeedArgs;
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::figure::{FigureOptions, Fit};
+use slider_crank::figure::{FigureOptions, Fit, Font};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{to_png, to_svg, write_atomic};
 use slider_crank::{Angle, Error, Figure, FigureName, Layer, Result, SliderCrank, Style};
@@ -43,6 +43,11 @@ pub struct FigureArgs {
     /// textbook (black ink) or handout (colour) [default: textbook]
     #[arg(long, value_name = "STYLE")]
     pub style: Option<String>,
+    /// Face of the text, bundled (no system fonts needed):
+    /// new-computer-modern (the look of LaTeX books) or libertinus-serif
+    /// [default: new-computer-modern]
+    #[arg(long, value_name = "NAME")]
+    pub font: Option<String>,
     /// Measured data, CSV with a header line: ng-fig-8-forces (columns
     /// angle, force; default examples/ng-experiment.csv, Ng's F'),
     /// ng-fig-7-calibration (force, strain; default Ng's Table 1),
@@ -101,6 +106,7 @@ pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
         None
     };
     let style = args.style.as_deref().map(Style::from_name).transpose()?;
+    let font = args.font.as_deref().map(str::parse::<Font>).transpose()?;
     let Some(mut scene) = name.scene() else {
         if args.layers.is_some() {
             return Err(Error::Parse(format!(
@@ -117,6 +123,7 @@ pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
             omega,
             angle,
             style,
+            font,
             data,
             fit: args.fit.as_deref().map(Fit::from_name).transpose()?,
         };
@@ -154,6 +161,9 @@ pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
     }
     if let Some(s) = style {
         scene = scene.with_style(s);
+    }
+    if let Some(f) = font {
+        scene = scene.with_font(f);
     }
     emit(&scene.figure(), args.out.as_ref(), out)
 }

@@ -3,6 +3,7 @@
 use super::figure::emit;
 use super::output::Stdout;
 use clap::Args;
+use slider_crank::figure::Font;
 use slider_crank::input::{MAX_SCENE_BYTES, read_text};
 use slider_crank::{Error, Result, Scene};
 use std::path::PathBuf;
@@ -13,6 +14,11 @@ pub struct SceneArgs {
     /// The scene file (TOML; see examples/*.toml)
     #[arg(value_name = "FILE.toml")]
     pub file: PathBuf,
+    /// Face of the text, over the file's `font` key: new-computer-modern
+    /// (the look of LaTeX books) or libertinus-serif [default: the file's,
+    /// else new-computer-modern]
+    #[arg(long, value_name = "NAME")]
+    pub font: Option<String>,
     /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
     /// printing SVG; `-` prints SVG
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
@@ -22,7 +28,10 @@ pub struct SceneArgs {
 /// Runs the subcommand.
 pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
     let text = read_text(&args.file, MAX_SCENE_BYTES, "scene file")?;
-    let scene = Scene::from_toml(&text)
+    let mut scene = Scene::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
+    if let Some(name) = &args.font {
+        scene = scene.with_font(name.parse::<Font>()?);
+    }
     emit(&scene.figure(), args.out.as_ref(), out)
 }

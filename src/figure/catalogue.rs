@@ -203,13 +203,13 @@ impl FigureName {
     pub fn layers(&self) -> Vec<Layer> {
         use Layer::*;
         match self {
-            FigureName::Fig62Displacement => vec![Mechanism, Dimensions],
+            FigureName::Fig62Displacement => vec![Mechanism, Angles, Dimensions],
             FigureName::Fig63Velocity => vec![Mechanism, Velocity],
             FigureName::Fig65Klein => vec![Mechanism, Klein],
             FigureName::Fig66Kisch => vec![Mechanism, Kisch],
             FigureName::Fig67Example => vec![Mechanism, Velocity, Kisch, Scales],
-            FigureName::NgFig1Torque => vec![Mechanism, Torque],
-            FigureName::NgFigA1Velocity => vec![Mechanism, Velocity],
+            FigureName::NgFig1Torque => vec![Mechanism, Angles, Torque, Motion],
+            FigureName::NgFigA1Velocity => vec![Mechanism, Velocity, Motion],
             _ => Vec::new(),
         }
     }
@@ -262,6 +262,9 @@ impl FigureName {
         }
         if let Some(s) = options.style {
             scene = scene.with_style(s);
+        }
+        if let Some(f) = options.font {
+            scene = scene.with_font(f);
         }
         Ok(scene.figure())
     }

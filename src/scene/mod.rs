@@ -23,6 +23,7 @@ pub use notation::Notation;
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result, finite, positive};
 use crate::figure::Figure;
+use crate::figure::Font;
 use crate::render::Style;
 use crate::{Angle, SliderCrank};
 
@@ -106,6 +107,7 @@ pub struct Scene {
     angles: Vec<Angle>,
     layers: Vec<Layer>,
     style: Style,
+    font: Font,
     notation: Notation,
     mirror: bool,
     page: Page,
@@ -128,6 +130,7 @@ impl Scene {
             angles: vec![angle],
             layers: vec![Layer::Mechanism],
             style: Style::Textbook,
+            font: Font::default(),
             notation: Notation::Textbook,
             mirror: false,
             page: Page::default(),
@@ -182,6 +185,12 @@ impl Scene {
     /// The style.
     pub fn with_style(mut self, style: Style) -> Self {
         self.style = style;
+        self
+    }
+
+    /// The face of the text.
+    pub fn with_font(mut self, font: Font) -> Self {
+        self.font = font;
         self
     }
 
@@ -284,6 +293,11 @@ impl Scene {
     /// The style.
     pub fn style(&self) -> Style {
         self.style
+    }
+
+    /// The face of the text.
+    pub fn font(&self) -> Font {
+        self.font
     }
 
     /// The letters.
