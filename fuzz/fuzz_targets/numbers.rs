@@ -17,5 +17,7 @@ struct Input {
 }
 
 libfuzzer_sys::fuzz_target!(|i: Input| {
-    hostile::numbers(i.crank, i.rod, i.offset, i.degrees, i.omega, i.torque, i.figure);
+    hostile::numbers(
+        i.crank, i.rod, i.offset, i.degrees, i.omega, i.torque, i.figure,
+    );
 });
