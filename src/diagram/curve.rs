@@ -724,6 +724,28 @@ mod tests {
     }
 
     #[test]
+    fn the_evaluation_budget_ends_a_trace_with_a_limit() {
+        // Issue 9 (1): a curve that wiggles faster than any halving resolves
+        // (sin 1/t near 0) was halved for minutes; the budget stops it.
+        let wild = |t: f64| {
+            let (s, c) = (1.0 / t).sin_cos();
+            Some((Point::new(t, s), Vector::new(1.0, -c / (t * t))))
+        };
+        let map = PageFromWorld::scale_translate(100.0, 100.0, 0.0, 0.0).unwrap();
+        let frame = Frame::new(Point::new(-1.0, -200.0), Point::new(200.0, 200.0));
+        let options = TraceOptions {
+            max_evaluations: 20_000,
+            ..TraceOptions::default()
+        };
+        let err = trace(&wild, 1e-4..=1.0, &map, &frame, Method::Cubic, &options).unwrap_err();
+        assert!(matches!(err, Error::Limit(_)), "{err:?}");
+        assert!(
+            err.to_string().contains("more than 20000 evaluations"),
+            "{err}"
+        );
+    }
+
+    #[test]
     fn chord_error_of_a_parabola() {
         // y = u(1 − u) above the chord y = 0: largest 1/4 at u = 1/2.
         let s = samples(|u| {
