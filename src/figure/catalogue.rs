@@ -221,7 +221,7 @@ impl FigureName {
             FigureName::Fig63Velocity | FigureName::Fig65Klein => (760.0, 480.0),
             FigureName::Fig66Kisch => (760.0, 420.0),
             FigureName::Fig67Example => (760.0, 520.0),
-            FigureName::NgFig1Torque => (640.0, 270.0),
+            FigureName::NgFig1Torque => (640.0, 460.0),
             FigureName::NgFigA1Velocity => (600.0, 480.0),
             FigureName::Fig61Centrodes => (760.0, 600.0),
             FigureName::Fig64VelocityDiagrams => (860.0, 860.0),

@@ -28,6 +28,8 @@ use serde_json::{Map, Value, json};
 const INSET: f64 = 26.0;
 /// Extra room on the slider's side for force arrows.
 const FORCE_ROOM: f64 = 80.0;
+/// Extra room above and below for the side thrust's arrow and its value.
+const SIDE_ROOM: f64 = 56.0;
 
 /// Sizes shared by the layers, in world units.
 pub(crate) struct Sizes {
@@ -220,6 +222,10 @@ fn main_view(ctx: &Ctx, band: f64) -> (PageRect, PageFromWorld) {
     let mut inset = [INSET; 4]; // left, right, top, bottom
     if scene.has(Layer::Torque) {
         inset[if scene.is_mirrored() { 0 } else { 1 }] += FORCE_ROOM;
+        // The side thrust stands up or down from the block (at most
+        // FORCE_ARROW page units), whichever way the rod leans.
+        inset[2] += SIDE_ROOM;
+        inset[3] += SIDE_ROOM;
     }
     let width = page.width() - 2.0 * mg;
     let fit_width = (width - inset[0] - inset[1]).max(20.0);
