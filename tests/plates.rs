@@ -430,7 +430,24 @@ fn every_plate_is_clean() {
         outcomes.len(),
         start.elapsed()
     );
+    if let Ok(path) = std::env::var("PLATES_LOG") {
+        std::fs::write(&path, every_failure(&outcomes)).unwrap();
+    }
     assert!(outcomes.iter().all(|o| o.failures.is_empty()), "{text}");
+}
+
+/// One line per failure of the sweep, for `PLATES_LOG=file`.
+fn every_failure(outcomes: &[Outcome]) -> String {
+    let mut text = String::new();
+    for o in outcomes {
+        for f in &o.failures {
+            text += &format!(
+                "[{}] {} at {:.4}° ({}): {}\n",
+                f.rule, o.figure, o.degrees, o.mechanism, f.ids
+            );
+        }
+    }
+    text
 }
 
 // ------------------------------------------------ the checker, proven to fail

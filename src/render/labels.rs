@@ -159,28 +159,57 @@ pub(crate) fn place(
     obstacles: &Obstacles,
     page: &PageRect,
 ) -> Point {
-    let mut best: Option<(f64, Point)> = None;
-    for (ring, extra) in RINGS.into_iter().enumerate() {
+    // The best so far: its score (cost and distance), its cost, its centre.
+    let mut best = (f64::INFINITY, f64::INFINITY, anchor);
+    let consider = |best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
+        let b = Bounds::around(centre, half);
+        let mut cost = obstacles.cost(&b.inflate(1.5));
+        if !b.inside(page) {
+            cost += 1e6;
+        }
+        if cost + penalty < best.0 {
+            *best = (cost + penalty, cost, centre);
+        }
+    };
+    for extra in RINGS {
         for (k, deg) in DIRECTIONS.iter().enumerate() {
             let (dy, dx) = deg.to_radians().sin_cos();
             let u = Vector::new(dx, dy);
             let reach = gap + extra + dx.abs() * half.x + dy.abs() * half.y;
-            let centre = anchor + u * reach;
-            let b = Bounds::around(centre, half);
-            let mut score =
-                obstacles.cost(&b.inflate(1.5)) + 1.5 * ring as f64 * 4.0 + 0.05 * k as f64;
-            if !b.inside(page) {
-                score += 1e6;
-            }
-            if best.is_none_or(|(s, _)| score < s) {
-                best = Some((score, centre));
-            }
+            consider(&mut best, anchor + u * reach, 1.5 * extra + 0.05 * k as f64);
         }
-        if best.is_some_and(|(s, _)| s < 1.0 + 6.0 * ring as f64) {
-            break;
+        if best.1 < 1.0 {
+            return best.2;
         }
     }
-    best.map_or(anchor, |(_, c)| c)
+    // Every ring is crowded: look at every position of a fine grid within
+    // the last ring's reach, for a nook the sixteen directions miss.
+    for (penalty, centre) in nooks(anchor, half, gap, gap + RINGS[RINGS.len() - 1]) {
+        consider(&mut best, centre, penalty);
+    }
+    best.2
+}
+
+/// Spacing of the fine grid of [`nooks`], page units.
+const NOOK_STEP: f64 = 1.5;
+
+/// Centres of a fine grid around `anchor` whose box (half-size `half`)
+/// keeps at least `gap` / 2 and at most `reach` from the anchor, each with
+/// the penalty its distance beyond `gap` earns (as in the rings).
+fn nooks(anchor: Point, half: Vector, gap: f64, reach: f64) -> impl Iterator<Item = (f64, Point)> {
+    let (nx, ny) = (
+        ((half.x + reach) / NOOK_STEP).ceil() as i32,
+        ((half.y + reach) / NOOK_STEP).ceil() as i32,
+    );
+    (-ny..=ny).flat_map(move |j| {
+        (-nx..=nx).filter_map(move |i| {
+            let d = Vector::new(i as f64 * NOOK_STEP, j as f64 * NOOK_STEP);
+            // Distance from the anchor to the box about anchor + d.
+            let out = Vector::new((d.x.abs() - half.x).max(0.0), (d.y.abs() - half.y).max(0.0));
+            let dist = out.norm();
+            (dist >= 0.5 * gap && dist <= reach).then(|| (1.5 * (dist - gap).max(0.0), anchor + d))
+        })
+    })
 }
 
 #[cfg(test)]

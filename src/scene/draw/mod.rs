@@ -32,6 +32,7 @@ const FORCE_ROOM: f64 = 80.0;
 const SIDE_ROOM: f64 = 56.0;
 
 /// Sizes shared by the layers, in world units.
+#[derive(Debug, Clone, Copy)]
 pub(crate) struct Sizes {
     /// Half the slider block's length along the stroke.
     pub block_half_length: f64,
@@ -41,7 +42,16 @@ pub(crate) struct Sizes {
     pub travel: (f64, f64),
 }
 
+/// The slider block on the page, page units: its largest half length,
+/// small enough that A's letter, kept out of the block, stays within
+/// 1.5 em of A beside it; and its half height, which is also the
+/// channel between the line of stroke and a guide, tall enough for a
+/// letter to sit there clear of both.
+const BLOCK_HALF_LENGTH_MOST: f64 = 20.0;
+const BLOCK_HALF_HEIGHT: f64 = 18.0;
+
 impl Sizes {
+    /// The sizes in proportion to the crank (the fit's first pass).
     fn new(scene: &Scene) -> Self {
         let m = scene.mechanism();
         let (r, l, e) = (m.crank(), m.rod(), m.offset());
@@ -55,6 +65,20 @@ impl Sizes {
             block_half_length: 0.36 * r * k,
             block_half_height: 0.2 * r * k,
             travel: (near, far),
+        }
+    }
+
+    /// The block sized on the page at `scale` page units per world unit:
+    /// [`BLOCK_HALF_HEIGHT`] high, and no longer than
+    /// [`BLOCK_HALF_LENGTH_MOST`] (shorter where the rod is short).
+    fn on_page(self, scale: f64) -> Self {
+        if !(scale.is_finite() && scale > 0.0) {
+            return self;
+        }
+        Self {
+            block_half_length: self.block_half_length.min(BLOCK_HALF_LENGTH_MOST / scale),
+            block_half_height: BLOCK_HALF_HEIGHT / scale,
+            ..self
         }
     }
 
@@ -98,7 +122,7 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         .iter()
         .map(|a| Constructions::new(m.pose(*a)))
         .collect();
-    let ctx = Ctx {
+    let mut ctx = Ctx {
         scene,
         main: &poses[0],
         sizes: Sizes::new(scene),
@@ -120,6 +144,10 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         NOTE_LINE * notes.len() as f64 + 14.0
     };
     let mg = page.margin();
+    // The block is sized on the page at the first fit's scale; the second
+    // fit, with that block, differs from it by a few per cent at most.
+    let (_, first) = main_view(&ctx, band);
+    ctx.sizes = ctx.sizes.on_page(first.scale());
     let (main, transform) = main_view(&ctx, band);
     let detail = detail::detail(&ctx, transform.scale(), page.width() - 2.0 * mg);
     let region = detail.map(|d| detail_frame(&d, transform.scale()));
