@@ -150,12 +150,15 @@ const DIRECTIONS: [f64; 16] = [
 ];
 
 /// The centre of a box of half-size `half` placed near `anchor`, clear of
-/// the obstacles where possible and inside `page`. Deterministic: ties go
-/// to the earlier candidate.
+/// the obstacles where possible and inside `page`: first on rings of
+/// sixteen directions, `gap` and more from the anchor, then, if each of
+/// those is crowded, anywhere on a fine grid no farther than `reach`.
+/// Deterministic: ties go to the earlier candidate.
 pub(crate) fn place(
     anchor: Point,
     half: Vector,
     gap: f64,
+    reach: f64,
     obstacles: &Obstacles,
     page: &PageRect,
 ) -> Point {
@@ -183,8 +186,8 @@ pub(crate) fn place(
         }
     }
     // Every ring is crowded: look at every position of a fine grid within
-    // the last ring's reach, for a nook the sixteen directions miss.
-    for (penalty, centre) in nooks(anchor, half, gap, gap + RINGS[RINGS.len() - 1]) {
+    // `reach`, for a nook the sixteen directions miss.
+    for (penalty, centre) in nooks(anchor, half, gap, reach.max(gap)) {
         consider(&mut best, centre, penalty);
     }
     best.2
@@ -227,6 +230,7 @@ mod tests {
             Point::new(100.0, 100.0),
             Vector::new(5.0, 6.0),
             4.0,
+            24.0,
             &o,
             &page,
         );
@@ -240,10 +244,10 @@ mod tests {
         let mut o = Obstacles::default();
         let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
         let half = Vector::new(5.0, 6.0);
-        let a = place(Point::new(95.0, 5.0), half, 4.0, &o, &page);
+        let a = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
         assert!(Bounds::around(a, half).inside(&page));
         o.boxed(Bounds::around(a, half));
-        let b = place(Point::new(95.0, 5.0), half, 4.0, &o, &page);
+        let b = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
         assert_eq!(
             Bounds::around(a, half).overlap(&Bounds::around(b, half)),
             0.0

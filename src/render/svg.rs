@@ -237,6 +237,10 @@ fn text_node(
     t
 }
 
+/// The farthest a label's box may be put from its anchor, in font sizes
+/// (a letter's glyphs within 1.5 em of its point).
+const REACH: f64 = 1.42;
+
 /// A label waiting to be placed once every line is known.
 struct Pending {
     id: String,
@@ -303,7 +307,8 @@ impl PanelWriter<'_> {
             pen.colour = colour;
         }
         self.obstacles.set_weight(match item.role {
-            Role::Link | Role::Force => 3.0,
+            // Hatching is as bad to letter over as a link.
+            Role::Link | Role::Force | Role::Frame => 3.0,
             Role::Construction | Role::Result => 1.5,
             _ => 1.0,
         });
@@ -505,8 +510,10 @@ impl PanelWriter<'_> {
                 if d.is_empty() {
                     return None;
                 }
-                self.obstacles
-                    .segment(a + n * (0.5 * HATCH_DEPTH), b + n * (0.5 * HATCH_DEPTH));
+                for depth in [0.3, 0.8] {
+                    self.obstacles
+                        .segment(a + n * (depth * HATCH_DEPTH), b + n * (depth * HATCH_DEPTH));
+                }
                 Box::new(
                     path(d.trim_end().to_string(), Pen { width: 0.6, ..pen })
                         .set("id", id)
@@ -852,7 +859,7 @@ fn panel_group(
     let pending = std::mem::take(&mut w.pending);
     for p in pending {
         let half = text_half(&p.text, p.size, font);
-        let centre = place(p.anchor, half, p.gap, &w.obstacles, page);
+        let centre = place(p.anchor, half, p.gap, REACH * p.size, &w.obstacles, page);
         w.obstacles.boxed(Bounds::around(centre, half));
         g = g.add(text_node(
             &p.id,

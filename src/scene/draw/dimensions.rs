@@ -11,6 +11,9 @@ use crate::scene::notation::Named;
 const FIRST: f64 = 22.0;
 /// Spacing of stacked dimension lines, page units.
 const STEP: f64 = 24.0;
+/// How far below the guides the dimensions reach, page units: the
+/// second line, its text and the text's descent.
+pub(crate) const DEPTH: f64 = FIRST + STEP + 26.0;
 
 /// θ at C, φ between the rod and a parallel to the stroke through B, and
 /// the links' lengths r and l.

@@ -92,6 +92,20 @@ pub(crate) fn frame(ctx: &Ctx) -> Frame {
             b.add(c.centre + (u * t.cos() + n * t.sin()) * c.radius);
         }
     }
+    // Arrows drawn to page lengths, once the scale is known.
+    if let Some(scale) = s.page_scale {
+        let world = |page: f64| page / scale;
+        let mut arrows = Vec::new();
+        if scene.has(Layer::Torque) {
+            arrows.extend(super::torque::forces(ctx, &world));
+        }
+        if scene.has(Layer::Motion) {
+            arrows.extend(super::motion::velocities(ctx, &world));
+        }
+        for p in arrows.iter().flat_map(|a| a.reach(&world)) {
+            b.add(p);
+        }
+    }
     if scene.has(Layer::Coupler) {
         let q = ctx.scene.coupler();
         for k in 0..72 {

@@ -26,10 +26,6 @@ use serde_json::{Map, Value, json};
 
 /// Room kept around the fitted drawing for letters, in page units.
 const INSET: f64 = 26.0;
-/// Extra room on the slider's side for force arrows.
-const FORCE_ROOM: f64 = 80.0;
-/// Extra room above and below for the side thrust's arrow and its value.
-const SIDE_ROOM: f64 = 56.0;
 
 /// Sizes shared by the layers, in world units.
 #[derive(Debug, Clone, Copy)]
@@ -40,6 +36,9 @@ pub(crate) struct Sizes {
     pub block_half_height: f64,
     /// The slider's nearest and farthest positions.
     pub travel: (f64, f64),
+    /// Page units per world unit of the main view, once a first fit has
+    /// found it: then arrows drawn to page lengths are fitted too.
+    pub page_scale: Option<f64>,
 }
 
 /// The slider block on the page, page units: its largest half length,
@@ -65,6 +64,7 @@ impl Sizes {
             block_half_length: 0.36 * r * k,
             block_half_height: 0.2 * r * k,
             travel: (near, far),
+            page_scale: None,
         }
     }
 
@@ -78,6 +78,7 @@ impl Sizes {
         Self {
             block_half_length: self.block_half_length.min(BLOCK_HALF_LENGTH_MOST / scale),
             block_half_height: BLOCK_HALF_HEIGHT / scale,
+            page_scale: Some(scale),
             ..self
         }
     }
@@ -88,6 +89,28 @@ impl Sizes {
             self.travel.0 - self.block_half_length - 0.15 * r,
             self.travel.1 + self.block_half_length + 0.15 * r,
         )
+    }
+}
+
+/// An arrow drawn with its name: its id and name, tail and head (world
+/// units).
+pub(crate) struct NamedArrow {
+    pub id: &'static str,
+    pub name: &'static str,
+    pub from: Point,
+    pub to: Point,
+}
+
+/// Room for an arrow's name beyond its ends, page units.
+const NAME_ROOM: f64 = 26.0;
+
+impl NamedArrow {
+    /// The arrow's ends moved outwards by room for its name (`world`
+    /// turns page lengths into world lengths): what the page must hold.
+    pub(crate) fn reach(&self, world: &dyn Fn(f64) -> f64) -> [Point; 2] {
+        let d = self.to - self.from;
+        let room = d / d.norm() * world(NAME_ROOM);
+        [self.from - room, self.to + room]
     }
 }
 
@@ -107,6 +130,10 @@ impl Ctx<'_> {
         self.scene.notation().line(p, q)
     }
 }
+
+/// Fits of the main view: the first in proportion to the crank, the
+/// others with page-sized block and arrows at the scale found before.
+const FITS: usize = 4;
 
 /// Room between the main view and the detail below it, page units.
 const DETAIL_GAP: f64 = 10.0;
@@ -134,6 +161,9 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
     } else {
         Vec::new()
     };
+    if scene.has(Layer::Torque) {
+        notes.extend(torque::notes(&ctx));
+    }
     if m.offset() != 0.0 {
         notes.push(offset_note(scene));
     }
@@ -144,10 +174,13 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         NOTE_LINE * notes.len() as f64 + 14.0
     };
     let mg = page.margin();
-    // The block is sized on the page at the first fit's scale; the second
-    // fit, with that block, differs from it by a few per cent at most.
-    let (_, first) = main_view(&ctx, band);
-    ctx.sizes = ctx.sizes.on_page(first.scale());
+    // The block and the arrows drawn to page lengths are sized at the
+    // scale of the fit before: three fits bring the scale within a fraction
+    // of a per cent of the last.
+    for _ in 0..FITS - 1 {
+        let (_, fit) = main_view(&ctx, band);
+        ctx.sizes = ctx.sizes.on_page(fit.scale());
+    }
     let (main, transform) = main_view(&ctx, band);
     let detail = detail::detail(&ctx, transform.scale(), page.width() - 2.0 * mg);
     let region = detail.map(|d| detail_frame(&d, transform.scale()));
@@ -247,14 +280,7 @@ fn main_view(ctx: &Ctx, band: f64) -> (PageRect, PageFromWorld) {
     let scene = ctx.scene;
     let page = scene.page();
     let mg = page.margin();
-    let mut inset = [INSET; 4]; // left, right, top, bottom
-    if scene.has(Layer::Torque) {
-        inset[if scene.is_mirrored() { 0 } else { 1 }] += FORCE_ROOM;
-        // The side thrust stands up or down from the block (at most
-        // FORCE_ARROW page units), whichever way the rod leans.
-        inset[2] += SIDE_ROOM;
-        inset[3] += SIDE_ROOM;
-    }
+    let inset = [INSET; 4]; // left, right, top, bottom
     let width = page.width() - 2.0 * mg;
     let fit_width = (width - inset[0] - inset[1]).max(20.0);
     let most = (page.height() - 2.0 * mg - band - inset[2] - inset[3]).max(20.0);
@@ -266,13 +292,21 @@ fn main_view(ctx: &Ctx, band: f64) -> (PageRect, PageFromWorld) {
     } else {
         most
     };
-    let panel = PageRect::new(mg, mg, width, drawn + inset[2] + inset[3]);
+    let mut panel = PageRect::new(mg, mg, width, drawn + inset[2] + inset[3]);
     let fit_rect = PageRect::new(mg + inset[0], mg + inset[2], fit_width, drawn);
     let transform = PageFromWorld::fit(&world, &fit_rect, scene.is_mirrored())
         .or_else(|| {
             PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
         })
         .expect("a unit map is valid");
+    if scene.has(Layer::Dimensions) {
+        // The dimensions stacked below the guides: the panel grows to hold
+        // them (the drawing keeps its scale).
+        let e = scene.mechanism().offset();
+        let stroke = transform.apply(Point::new(0.0, e)).y;
+        let reach = stroke + transform.scale() * ctx.sizes.block_half_height + dimensions::DEPTH;
+        panel.height = panel.height.max(reach - panel.y);
+    }
     (panel, transform)
 }
 

@@ -2,51 +2,86 @@
 //! turning arrows, the velocity v_c of the crank pin and v_p of the slider
 //! as arrows drawn to one scale.
 
-use super::Ctx;
+use super::{Ctx, NamedArrow};
 use crate::figure::{Hue, RichText, Role, Shape, TextSize};
-use crate::geom::{Point, Vector};
+use crate::geom::Vector;
 use crate::scene::canvas::Canvas;
 
 /// Length of the arrow v_c, page units; v_p is drawn to the same scale.
 const VC_ARROW: f64 = 54.0;
 /// Shortest velocity arrow drawn, page units.
 const MIN_ARROW: f64 = 14.0;
+/// Distance of the arrow v_p beyond the guide, page units (past the
+/// hatching).
+const VP_CLEAR: f64 = 18.0;
 /// Radius of the ω arrow about the crank centre, page units.
 const OMEGA_RADIUS: f64 = 40.0;
 /// Radius of the Ω arrow about the rod's middle, page units.
 const ROD_RADIUS: f64 = 16.0;
 
 pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
-    let pose = ctx.main.pose();
-    let (a, b) = (pose.a(), pose.b());
-    let turn = ctx.scene.omega().signum();
     // With the torque layer (Ng Fig. 1) the torque's arrow holds the crank
     // centre: the turning arrows are Fig. A1's.
     if !ctx.scene.has(crate::scene::Layer::Torque) {
         turning(ctx, canvas);
     }
-    // v_c: perpendicular to the crank, in the sense of ω.
+    for v in velocities(ctx, &|page| canvas.world(page)) {
+        if !(canvas.contains(v.from) && canvas.contains(v.to)) {
+            continue;
+        }
+        canvas.push_hued(
+            format!("velocity-{}", v.id),
+            Role::Force,
+            Hue::Velocity,
+            Shape::Arrow {
+                from: v.from,
+                to: v.to,
+            },
+        );
+        canvas.label(
+            format!("value-{}", v.id),
+            v.to,
+            RichText::parse(v.name),
+            TextSize::Small,
+        );
+    }
+}
+
+/// The velocity arrows, their page lengths turned to world lengths by
+/// `world`: v_c at the crank pin, perpendicular to the crank in the sense
+/// of ω, [`VC_ARROW`] long; v_p along the stroke to the same scale (at
+/// least [`MIN_ARROW`]), beyond the guide on the side away from the crank
+/// pin. v_p is left out where the slider is at rest.
+pub(crate) fn velocities(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
+    let pose = ctx.main.pose();
+    let (a, b) = (pose.a(), pose.b());
+    let turn = ctx.scene.omega().signum();
+    let mut out = Vec::new();
     let cb = b - pose.c();
     if cb.norm() > 0.0 {
         let u = Vector::new(-cb.y, cb.x) / cb.norm() * turn;
-        velocity(canvas, "vc", b, u, VC_ARROW, "*v*_c");
+        out.push(NamedArrow {
+            id: "vc",
+            name: "*v*_c",
+            from: b,
+            to: b + u * world(VC_ARROW),
+        });
     }
-    // v_p: along the stroke, to the scale of v_c, beside the block.
     let vp = pose.position_rate() / pose.mechanism().crank() * turn;
     let len = VC_ARROW * vp.abs();
     if len >= 1.0 {
         let h = ctx.sizes.block_half_height;
         let side = if b.y >= a.y { -1.0 } else { 1.0 };
-        let from = a + Vector::new(0.0, side * h) + Vector::new(0.0, side * canvas.world(12.0));
-        velocity(
-            canvas,
-            "vp",
+        // Beyond the guide's hatching, with room for the arrow's head.
+        let from = a + Vector::new(0.0, side * (h + world(VP_CLEAR)));
+        out.push(NamedArrow {
+            id: "vp",
+            name: "*v*_p",
             from,
-            Vector::new(vp.signum(), 0.0),
-            len.max(MIN_ARROW),
-            "*v*_p",
-        );
+            to: from + Vector::new(vp.signum(), 0.0) * world(len.max(MIN_ARROW)),
+        });
     }
+    out
 }
 
 /// ω about the crank centre and Ω about the rod's middle.
@@ -104,25 +139,4 @@ fn turning(ctx: &Ctx, canvas: &mut Canvas) {
             TextSize::Letter,
         );
     }
-}
-
-/// A velocity arrow from `from` along the unit `u`, `length` page units,
-/// with its name at the head.
-fn velocity(canvas: &mut Canvas, id: &str, from: Point, u: Vector, length: f64, name: &str) {
-    let to = from + u * canvas.world(length);
-    if !(canvas.contains(from) && canvas.contains(to)) {
-        return;
-    }
-    canvas.push_hued(
-        format!("velocity-{id}"),
-        Role::Force,
-        Hue::Velocity,
-        Shape::Arrow { from, to },
-    );
-    canvas.label(
-        format!("value-{id}"),
-        to,
-        RichText::parse(name),
-        TextSize::Small,
-    );
 }

@@ -1,17 +1,18 @@
 //! Ng's torque line (Fig. 1): OM, the crank torque, the slider force and
 //! the side thrust.
 
-use super::Ctx;
 use super::velocity::basics_e;
+use super::{Ctx, NamedArrow};
 use crate::figure::{RichText, Role, Shape, TextSize};
-use crate::geom::{Point, Vector, cross};
+use crate::geom::{Vector, cross};
 use crate::scene::canvas::Canvas;
 use crate::scene::notation::Named::*;
 
 /// Length of the slider-force arrow, page units.
 const FORCE_ARROW: f64 = 64.0;
-/// Radius of the torque arrow about the crank centre, page units.
-const TORQUE_RADIUS: f64 = 24.0;
+/// Radius of the torque arrow about the crank centre, page units: wide
+/// enough for the centre's letter to sit inside it.
+const TORQUE_RADIUS: f64 = 36.0;
 
 /// A given value as written when short (0.5, 6, 25), else to four
 /// significant figures.
@@ -38,27 +39,37 @@ pub(crate) fn sig(x: f64) -> String {
     }
 }
 
+/// The values the figure names by symbol only, for the notes below it:
+/// OM and T, then the forces (or why there is no finite slider force).
+pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
+    let scene = ctx.scene;
+    let tl = ctx.main.torque();
+    let (unit, force) = (scene.unit(), scene.force_unit());
+    let om = format!("*{}{}*", ctx.letter(CrankCentre), ctx.letter(VelocityPoint));
+    let t = scene.torque();
+    let mut out = vec![RichText::parse(&format!(
+        "Torque line: {om} = {} {unit}, crank torque *T* = {} {force}·{unit}.",
+        sig(tl.om().abs()),
+        short(t)
+    ))];
+    let r = ctx.main.pose().mechanism().crank();
+    let fc = format!("*F*_c = *T*/*r* = {} {force}", sig((t / r).abs()));
+    out.push(RichText::parse(&match tl.slider_force(t) {
+        Some(fp) => format!(
+            "Forces: {fc}, *F*_p = {} {force}, *F*_s = {} {force}.",
+            sig(fp.abs()),
+            sig(tl.side_thrust(fp).abs())
+        ),
+        None => format!("Forces: {fc}; dead centre: {om} = 0, no finite slider force."),
+    }));
+    out
+}
+
 pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     basics_e(ctx, canvas);
     let scene = ctx.scene;
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
-    let tl = ctx.main.torque();
-    let m = tl.m();
-    let (unit, force) = (scene.unit(), scene.force_unit());
-    let om = format!(
-        "*{}{}* = {} {unit}",
-        ctx.letter(CrankCentre),
-        ctx.letter(VelocityPoint),
-        sig(tl.om().abs())
-    );
-    canvas.label(
-        "value-OM",
-        nalgebra::center(&c, &m),
-        RichText::parse(&om),
-        TextSize::Small,
-    );
-
     // The crank torque: an arc arrow about the crank centre.
     let t = scene.torque();
     let radius = canvas.world(TORQUE_RADIUS);
@@ -80,66 +91,29 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     canvas.label(
         "value-T",
         c + Vector::new(mid.cos(), mid.sin()) * radius,
-        RichText::parse(&format!("*T* = {} {force}·{unit}", short(t))),
+        RichText::italic("T"),
         TextSize::Small,
     );
 
-    crank_force(ctx, canvas, t);
-    let s = &ctx.sizes;
-    match tl.slider_force(t) {
-        Some(fp) => {
-            let ux = Vector::new(fp.signum(), 0.0);
-            let face = a + ux * s.block_half_length;
-            let tip = face + ux * canvas.world(FORCE_ARROW);
-            canvas.push(
-                "force-Fp",
-                Role::Force,
-                Shape::Arrow {
-                    from: face,
-                    to: tip,
-                },
-            );
-            canvas.label(
-                "value-Fp",
-                tip,
-                RichText::parse(&format!("*F*_p = {} {force}", sig(fp.abs()))),
-                TextSize::Small,
-            );
-            let fs = tl.side_thrust(fp);
-            if fs != 0.0 {
-                let uy = Vector::new(0.0, fs.signum());
-                let face = a + uy * s.block_half_height;
-                let len = (FORCE_ARROW * (fs / fp).abs()).clamp(16.0, FORCE_ARROW);
-                let tip = face + uy * canvas.world(len);
-                canvas.push(
-                    "force-Fs",
-                    Role::Force,
-                    Shape::Arrow {
-                        from: face,
-                        to: tip,
-                    },
-                );
-                canvas.label(
-                    "value-Fs",
-                    tip,
-                    RichText::parse(&format!("*F*_s = {} {force}", sig(fs.abs()))),
-                    TextSize::Small,
-                );
-            }
+    for f in forces(ctx, &|page| canvas.world(page)) {
+        if !canvas.contains(f.from) {
+            continue;
         }
-        None => {
-            let r = pose.mechanism().crank();
-            canvas.label(
-                "note-dead-centre",
-                Point::new(0.0, -0.6 * r),
-                RichText::parse(&format!(
-                    "dead centre: *{}{}* = 0, no finite slider force",
-                    ctx.letter(CrankCentre),
-                    ctx.letter(VelocityPoint)
-                )),
-                TextSize::Small,
-            );
-        }
+        canvas.push(
+            format!("force-{}", f.id),
+            Role::Force,
+            Shape::Arrow {
+                from: f.from,
+                to: f.to,
+            },
+        );
+        let at = if f.id == "Fc" { f.from } else { f.to };
+        canvas.label(
+            format!("value-{}", f.id),
+            at,
+            RichText::parse(f.name),
+            TextSize::Small,
+        );
     }
 
     // The transmission angle β at the crank pin, between its two links.
@@ -159,40 +133,54 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     }
 }
 
-/// F_c = T / r, the force on the crank pin perpendicular to the crank
-/// (Ng eq. 2), as an arrow pointing at the pin in the torque's sense.
-fn crank_force(ctx: &Ctx, canvas: &mut Canvas, t: f64) {
+/// The force arrows, their page lengths turned to world lengths by
+/// `world`: F_c = T / r on the crank pin, perpendicular to the crank in
+/// the torque's sense (Ng eq. 2), pointing at the pin; the slider force
+/// F_p from the block's face along the stroke, and the side thrust F_s
+/// from its top or bottom (to F_p's scale, within limits). None at a dead
+/// centre, where the slider force is not finite.
+pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     let pose = ctx.main.pose();
-    let (b, c) = (pose.b(), pose.c());
-    let r = pose.mechanism().crank();
+    let (a, b, c) = (pose.a(), pose.b(), pose.c());
+    let t = ctx.scene.torque();
+    let mut out = Vec::new();
     let cb = b - c;
-    if t == 0.0 || cb.norm() == 0.0 {
-        return;
-    }
-    let u = Vector::new(-cb.y, cb.x) / cb.norm() * t.signum();
-    let head = b - u * canvas.world(7.0);
-    let tail = head - u * canvas.world(0.75 * FORCE_ARROW);
-    if !canvas.contains(tail) {
-        return;
-    }
-    canvas.push(
-        "force-Fc",
-        Role::Force,
-        Shape::Arrow {
+    if t != 0.0 && cb.norm() > 0.0 {
+        let u = Vector::new(-cb.y, cb.x) / cb.norm() * t.signum();
+        let head = b - u * world(7.0);
+        let tail = head - u * world(0.75 * FORCE_ARROW);
+        out.push(NamedArrow {
+            id: "Fc",
+            name: "*F*_c",
             from: tail,
             to: head,
-        },
-    );
-    canvas.label(
-        "value-Fc",
-        tail,
-        RichText::parse(&format!(
-            "*F*_c = {} {}",
-            sig((t / r).abs()),
-            ctx.scene.force_unit()
-        )),
-        TextSize::Small,
-    );
+        });
+    }
+    let s = &ctx.sizes;
+    let tl = ctx.main.torque();
+    if let Some(fp) = tl.slider_force(t) {
+        let ux = Vector::new(fp.signum(), 0.0);
+        let face = a + ux * s.block_half_length;
+        out.push(NamedArrow {
+            id: "Fp",
+            name: "*F*_p",
+            from: face,
+            to: face + ux * world(FORCE_ARROW),
+        });
+        let fs = tl.side_thrust(fp);
+        if fs != 0.0 {
+            let uy = Vector::new(0.0, fs.signum());
+            let face = a + uy * s.block_half_height;
+            let len = (FORCE_ARROW * (fs / fp).abs()).clamp(16.0, FORCE_ARROW);
+            out.push(NamedArrow {
+                id: "Fs",
+                name: "*F*_s",
+                from: face,
+                to: face + uy * world(len),
+            });
+        }
+    }
+    out
 }
 
 #[cfg(test)]
