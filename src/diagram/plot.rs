@@ -437,6 +437,13 @@ impl Plot {
         }
     }
 
+    /// The room a legend or note of `lines` lines takes below a plot area
+    /// when it is set in the area's bottom band: its height and the inset
+    /// from the area's edge, page units.
+    pub fn band(lines: usize) -> f64 {
+        LEGEND_LINE * lines as f64 + 8.0 + 8.0
+    }
+
     /// A legend entry without a drawn item (for a series drawn by
     /// [`Plot::push`]).
     pub fn legend_line(&mut self, text: &str, dash: Dash) {

@@ -17,6 +17,7 @@ mod notation;
 
 pub use cache::Evaluations;
 pub(crate) use canvas::round;
+pub(crate) use draw::offset_note;
 pub use layer::Layer;
 pub use notation::Notation;
 

@@ -16,7 +16,7 @@
 use super::{Ctx, Sheet, short};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, Role};
+use crate::figure::{Dash, Figure, Item, PageRect, Role};
 use crate::geom::Point;
 use crate::scene::Layer;
 
@@ -24,15 +24,29 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, true);
-    let notes_height = 44.0;
+    let m = ctx.mechanism;
+    let offset = if m.offset() != 0.0 {
+        Some(crate::scene::offset_note(
+            &ctx.scene(page.width(), page.height())?,
+        ))
+    } else {
+        None
+    };
+    // Two lines of notes, three with the offset's.
+    let notes_height = if offset.is_some() { 62.0 } else { 44.0 };
+    // The legend's band below the mechanism, where nothing is drawn.
+    let band = Plot::band(2);
     let scene = ctx
-        .scene(page.width(), page.height() - notes_height)?
+        .scene(page.width(), page.height() - notes_height - band)?
         .with_layers([Layer::Mechanism, Layer::Centrodes]);
     let panel = scene.figure().panels()[0].clone();
+    let r = *panel.rect();
+    let area = PageRect::new(r.x, r.y, r.width, r.height + band);
     let items: Vec<Item> = panel
         .items()
         .iter()
-        .filter(|i| !i.id.starts_with("label-centrode"))
+        // The offset's caption line joins the sheet's notes.
+        .filter(|i| !i.id.starts_with("label-centrode") && i.id != "note-scales")
         .map(|i| {
             if i.id.starts_with("curve-centrode-moving") {
                 Item::new(i.id.clone(), Role::Curve, i.shape.clone()).dashed(Dash::Dotted)
@@ -43,8 +57,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         .collect();
     let mut plot = Plot::with_map(
         "centrodes",
-        *panel.rect(),
-        *panel.rect(),
+        area,
+        area,
         *panel.transform(),
         ctx.tolerance,
         ctx.font,
@@ -64,10 +78,9 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let panel = crate::figure::Panel::new(panel.id(), *panel.rect(), *panel.transform(), items)
         .with_items(legend.items().iter().cloned());
     sheet.panel(panel);
-    let m = ctx.mechanism;
-    sheet.notes(
-        Point::new(20.0, page.height() - notes_height + 2.0),
-        &[
+    let top = area.y + area.height + 2.0;
+    sheet.fit(top + notes_height);
+    let mut lines = vec![
             format!(
                 "*r* = {} {u}, *l* = {} {u} (*n* = {}). *D*: *CB* produced meets the perpendicular to the stroke at *A*; the centrodes touch there and the moving one rolls on the fixed one.",
                 short(m.crank()),
@@ -76,7 +89,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 u = ctx.unit()
             ),
             "Both run off to infinity as θ → 90° and 270°, where *D* is at infinity; each is drawn in two branches.".into(),
-        ],
-    );
+        ];
+    lines.extend(offset);
+    sheet.notes(Point::new(20.0, top), &lines);
     Ok(sheet.finish())
 }

@@ -7,7 +7,7 @@ use crate::Angle;
 use crate::construct::CouplerPoint;
 use crate::diagram::{Curve, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, Role, Shape};
+use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape};
 use crate::geom::{Point, Vector};
 use crate::scene::Layer;
 
@@ -25,14 +25,18 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.mechanism(ctx, false, true);
     sheet.meta("coupler_points", serde_json::json!(POINTS.map(|(t, ..)| t)));
     let notes_height = 30.0;
+    // The legend's band below the mechanism, where nothing is drawn.
+    let band = Plot::band(POINTS.len());
     let scene = ctx
-        .scene(page.width(), page.height() - notes_height)?
+        .scene(page.width(), page.height() - notes_height - band)?
         .with_layers([Layer::Mechanism]);
     let panel = scene.figure().panels()[0].clone();
+    let r = *panel.rect();
+    let area = PageRect::new(r.x, r.y, r.width, r.height + band);
     let mut plot = Plot::with_map(
         "coupler",
-        *panel.rect(),
-        *panel.rect(),
+        area,
+        area,
         *panel.transform(),
         ctx.tolerance,
         ctx.font,
@@ -65,8 +69,10 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     }
     let drawn = plot.finish();
     sheet.panel(panel.with_items(drawn.items().iter().cloned()));
+    let top = area.y + area.height;
+    sheet.fit(top + notes_height);
     sheet.notes(
-        Point::new(20.0, page.height() - notes_height),
+        Point::new(20.0, top),
         &[format!(
             "*r* = {} {u}, *l* = {} {u} (*n* = {}), drawn at θ = {}°. *A* traces the line of stroke, *B* the crank circle, every point between an oval.",
             short(m.crank()),

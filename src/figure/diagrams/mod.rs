@@ -196,6 +196,8 @@ pub(crate) struct Sheet {
     panels: Vec<Panel>,
     plots: Vec<Value>,
     meta: Map<String, Value>,
+    /// The page's height when fitted to what is drawn ([`Sheet::fit`]).
+    height: Option<f64>,
 }
 
 impl Sheet {
@@ -208,7 +210,15 @@ impl Sheet {
             panels: Vec::new(),
             plots: Vec::new(),
             meta: Map::new(),
+            height: None,
         }
+    }
+
+    /// Ends the page at `bottom` plus the margin (no higher than the
+    /// figure's page): for sheets whose mechanism panel is fitted to the
+    /// pose, so that no empty band is left below.
+    pub fn fit(&mut self, bottom: f64) {
+        self.height = Some((bottom + MARGIN).min(self.name.page().height()));
     }
 
     /// Records the mechanism, speed and pose in the metadata.
@@ -282,7 +292,7 @@ impl Sheet {
         Figure::new(
             self.name.name(),
             page.width(),
-            page.height(),
+            self.height.unwrap_or(page.height()),
             self.style,
             self.tolerance,
             self.panels,

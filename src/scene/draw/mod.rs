@@ -165,7 +165,7 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         notes.extend(torque::notes(&ctx));
     }
     if m.offset() != 0.0 {
-        notes.push(offset_note(scene));
+        notes.push(RichText::parse(&offset_note(scene)));
     }
     let page = scene.page();
     let band = if notes.is_empty() {
@@ -399,18 +399,18 @@ fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnificatio
     );
 }
 
-/// The caption line that names a non-zero offset.
-fn offset_note(scene: &Scene) -> RichText {
+/// The caption line (markup) that names a non-zero offset.
+pub(crate) fn offset_note(scene: &Scene) -> String {
     let e = scene.mechanism().offset();
     let (c, side) = (
         scene.notation().letter(Named::CrankCentre),
         if e > 0.0 { "above" } else { "below" },
     );
-    RichText::parse(&format!(
+    format!(
         "Offset engine: the line of stroke is *e* = {} {} {side} the crank centre *{c}*.",
         torque::sig(e.abs()),
         scene.unit()
-    ))
+    )
 }
 
 fn metadata(scene: &Scene, points: Map<String, Value>, ev: &Evaluations) -> Map<String, Value> {
