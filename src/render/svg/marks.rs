@@ -34,7 +34,7 @@ impl PanelWriter<'_> {
     }
 
     /// A right-angle mark at `vertex` between the world directions `u`
-    /// and `v`: two short full strokes.
+    /// and `v`: two short full strokes, which labels keep off.
     pub(super) fn right_angle(
         &mut self,
         ink: &Ink,
@@ -50,6 +50,7 @@ impl PanelWriter<'_> {
         if !pts.iter().all(finite) {
             return None;
         }
+        self.obstacles.polyline(&pts);
         let pen = Pen {
             width: 0.7,
             dash: None,
@@ -135,5 +136,86 @@ impl PanelWriter<'_> {
         let dir = self.t.apply_vector(Vector::new(start.cos(), start.sin()));
         let start = dir.y.atan2(dir.x);
         super::markup::arc_beziers(centre, radius, start, sweep * self.orientation())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::text::{BASELINE, text_half};
+    use super::super::to_svg;
+    use crate::figure::{
+        Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
+    };
+    use crate::geom::{Point, Vector};
+    use crate::render::Style;
+    use crate::render::style::RIGHT_ANGLE;
+
+    /// The number after `name="` in the element with `id`.
+    fn attribute(svg: &str, id: &str, name: &str) -> f64 {
+        let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+        let start = svg[..at].rfind('<').unwrap();
+        let tag = &svg[start..start + svg[start..].find('>').unwrap()];
+        let from = tag.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+        tag[from..from + tag[from..].find('"').unwrap()]
+            .parse()
+            .unwrap()
+    }
+
+    #[test]
+    fn letters_keep_off_right_angle_marks() {
+        // The mark in each quadrant about the lettered point: wherever the
+        // letter would rather go, it must not sit on the strokes.
+        let vertex = Point::new(100.0, 100.0);
+        let text = RichText::italic("C");
+        for (u, v) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)] {
+            let (u, v) = (Vector::new(u, 0.0), Vector::new(0.0, v));
+            let items = vec![
+                Item::new(
+                    "angle-C",
+                    Role::Construction,
+                    Shape::RightAngle { vertex, u, v },
+                ),
+                Item::new(
+                    "label-C",
+                    Role::Label,
+                    Shape::Label {
+                        anchor: vertex,
+                        text: text.clone(),
+                        size: TextSize::Letter,
+                    },
+                ),
+            ];
+            let rect = PageRect::new(0.0, 0.0, 200.0, 200.0);
+            let panel = Panel::new("panel", rect, PageFromWorld::identity(), items);
+            let figure = Figure::new(
+                "test",
+                200.0,
+                200.0,
+                Style::Textbook,
+                0.01,
+                vec![panel],
+                Default::default(),
+            );
+            let svg = to_svg(&figure);
+            let size = attribute(&svg, "label-C", "font-size");
+            let centre = Point::new(
+                attribute(&svg, "label-C", "x"),
+                attribute(&svg, "label-C", "y") - BASELINE * size,
+            );
+            // The glyph's box (without the unit of room placement adds).
+            let half = text_half(&text, size, Font::default()) - Vector::new(1.0, 1.0);
+            let s = RIGHT_ANGLE;
+            let corner = vertex + u * s + v * s;
+            for (a, b) in [(vertex + u * s, corner), (corner, vertex + v * s)] {
+                for k in 0..=50 {
+                    let p = a + (b - a) * (k as f64 / 50.0);
+                    let d = p - centre;
+                    assert!(
+                        d.x.abs() > half.x || d.y.abs() > half.y,
+                        "u {u:?}, v {v:?}: label at {centre:?} on the mark at {p:?}"
+                    );
+                }
+            }
+        }
     }
 }
