@@ -1,9 +1,9 @@
 //! The immutable figure model: panels of primitives in world coordinates,
 //! each with a role and a stable id.
 
+use super::Style;
 use super::{Font, PageFromWorld, PageRect, Path, RichText};
 use crate::geom::{Point, Vector};
-use crate::render::Style;
 use serde_json::{Map, Value};
 
 /// What a primitive is, which fixes how it is drawn (line weight, dash,

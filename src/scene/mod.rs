@@ -24,7 +24,7 @@ use crate::construct::CouplerPoint;
 use crate::error::{Error, Result, finite, positive};
 use crate::figure::Figure;
 use crate::figure::Font;
-use crate::render::Style;
+use crate::figure::Style;
 use crate::{Angle, SliderCrank};
 
 /// Default drawing tolerance of curves, in page units (DESIGN.md §6).

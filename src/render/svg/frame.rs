@@ -3,9 +3,10 @@
 
 use super::markup::{finite, path, polyline_d, pt, unit};
 use super::{Ink, PanelWriter};
+use crate::figure::Pen;
 use crate::geom::{Point, Vector};
 use crate::render::labels::Bounds;
-use crate::render::style::{HATCH_DEPTH, HATCH_SPACING, Pen};
+use crate::render::sizes::{HATCH_DEPTH, HATCH_SPACING};
 use std::fmt::Write as _;
 use svg::node::Node;
 use svg::node::element::Group;

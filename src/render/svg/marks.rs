@@ -4,10 +4,10 @@
 use super::markup::{arrow_head, bezier_d, finite, path, polyline_d, unit};
 use super::text::{starts_italic, text_half, text_node};
 use super::{Ink, PanelWriter, Pending};
-use crate::figure::{RichText, TextSize};
+use crate::figure::{Pen, RichText, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::labels::Bounds;
-use crate::render::style::{ANGLE_RADIUS, ARROW_LENGTH, Pen, RIGHT_ANGLE};
+use crate::render::sizes::{ANGLE_RADIUS, ARROW_LENGTH, RIGHT_ANGLE};
 use svg::node::Node;
 use svg::node::element::Group;
 
@@ -143,12 +143,12 @@ impl PanelWriter<'_> {
 mod tests {
     use super::super::text::{BASELINE, text_half};
     use super::super::to_svg;
+    use crate::figure::Style;
     use crate::figure::{
         Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
     };
     use crate::geom::{Point, Vector};
-    use crate::render::Style;
-    use crate::render::style::RIGHT_ANGLE;
+    use crate::render::sizes::RIGHT_ANGLE;
 
     /// The number after `name="` in the element with `id`.
     fn attribute(svg: &str, id: &str, name: &str) -> f64 {

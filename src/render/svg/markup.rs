@@ -1,9 +1,10 @@
 //! The pieces every symbol is written with: numbers and points on the
 //! grid, path data of polylines and arcs, strokes and arrowheads.
 
+use crate::figure::Pen;
 use crate::geom::{Point, Vector};
 use crate::render::number::fmt;
-use crate::render::style::{ARROW_HALF_WIDTH, ARROW_LENGTH, Pen};
+use crate::render::sizes::{ARROW_HALF_WIDTH, ARROW_LENGTH};
 use std::collections::hash_map::DefaultHasher;
 use std::fmt as stdfmt;
 use std::fmt::Write as _;

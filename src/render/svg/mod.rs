@@ -19,10 +19,9 @@ mod text;
 
 use super::labels::{Bounds, Obstacles, place};
 use super::number::{fmt, fmt_coefficient};
-use super::style::Pen;
 use crate::figure::{Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape};
+use crate::figure::{Pen, Style};
 use crate::geom::Point;
-use crate::render::Style;
 use serde_json::{Value, json};
 use svg::Document;
 use svg::node::Node;

@@ -8,7 +8,7 @@ use super::{Ink, PanelWriter, Pending};
 use crate::figure::{Align, RichText, Role, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::labels::Bounds;
-use crate::render::style::{NOTE_LINE, NOTE_SIZE};
+use crate::render::sizes::{NOTE_LINE, NOTE_SIZE};
 use svg::node::Node;
 use svg::node::element::Group;
 

@@ -3,11 +3,11 @@
 
 use super::markup::{finite, path, polyline_d, stroke};
 use super::{Ink, PanelWriter};
-use crate::figure::Symbol;
+use crate::figure::{Pen, Symbol};
 use crate::geom::{Point, Vector};
 use crate::render::labels::Bounds;
 use crate::render::number::fmt;
-use crate::render::style::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS, Pen};
+use crate::render::sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
 use svg::node::Node;
 use svg::node::element::Circle;
 
