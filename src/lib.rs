@@ -71,7 +71,7 @@ pub mod table;
 pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
 pub use angle::Angle;
 pub use error::{Error, Result};
+pub use figure::Style;
 pub use figure::{Figure, FigureName, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
-pub use render::Style;
 pub use scene::{Layer, Notation, Page, Scene};

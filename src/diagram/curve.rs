@@ -7,8 +7,21 @@ use crate::figure::PageFromWorld;
 use crate::geom::{Frame, Point, Vector, cross};
 use std::ops::RangeInclusive;
 
-/// The default tolerance: 0.01 page units (px).
+/// The default tolerance: 0.01 page units (px), the bound scenes and
+/// figures ask of their curves unless told otherwise (DESIGN.md §6).
 pub const DEFAULT_TOLERANCE: f64 = 0.01;
+
+/// The tolerance to trace a curve to so that its path, once written with
+/// every point rounded to the writer's grid ([`crate::render::GRID`], up to
+/// `GRID/√2` away), is still within `tolerance` of the curve, with room for
+/// the rounding of the map in the file: `tolerance − 0.8 GRID`. Below
+/// `GRID` the written path cannot keep the promise whatever the trace
+/// does; the curve is then traced to a fifth of `tolerance` (the two rules
+/// meet at `GRID`).
+pub fn trace_tolerance(tolerance: f64) -> f64 {
+    let grid = crate::render::GRID;
+    (tolerance - 0.8 * grid).max(0.2 * tolerance)
+}
 
 /// The largest turn of the curve's tangent between neighbouring samples
 /// (an eighth of a piece) for which the geometric bound is used: 15°.
@@ -93,6 +106,14 @@ impl TraceOptions {
             tolerance,
             ..Self::DEFAULT
         }
+    }
+
+    /// The defaults for a curve that is written to a file and must be
+    /// within `tolerance` (page units) there: traced to
+    /// [`trace_tolerance`]`(tolerance)`, which leaves room for the
+    /// rounding of the written numbers.
+    pub fn written(tolerance: f64) -> Self {
+        Self::with_tolerance(trace_tolerance(tolerance))
     }
 }
 
@@ -695,6 +716,17 @@ fn chord_fit(s: &[(Point, Vector); 9]) -> (Segment, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_written_curve_is_traced_inside_the_rounding_of_the_file() {
+        // Written path within 0.01 of the curve: traced to 0.002.
+        assert!((trace_tolerance(0.01) - 0.002).abs() < 1e-15);
+        assert!((trace_tolerance(0.004) - 0.0008).abs() < 1e-18);
+        assert!((trace_tolerance(0.1) - 0.092).abs() < 1e-15);
+        let options = TraceOptions::written(DEFAULT_TOLERANCE);
+        assert!((options.tolerance - 0.002).abs() < 1e-15);
+        assert_eq!(options.max_depth, TraceOptions::DEFAULT.max_depth);
+    }
 
     fn samples(f: impl Fn(f64) -> (Point, Vector)) -> [(Point, Vector); 9] {
         std::array::from_fn(|k| f(k as f64 / 8.0))

@@ -87,7 +87,7 @@ mod path;
 mod plot;
 
 pub use axis::{Axis, Scale, Tick, format_number};
-pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace};
+pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace, trace_tolerance};
 pub use locus::{Locus, LocusKind};
 pub use measure::{Deviation, measure};
 pub use path::{Path, Segment, Subpath};

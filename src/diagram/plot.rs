@@ -9,7 +9,6 @@ use crate::figure::{
     TextSize,
 };
 use crate::geom::{Frame, Point, Vector};
-use crate::render::trace_tolerance;
 use serde_json::{Value, json};
 use std::ops::RangeInclusive;
 
@@ -284,7 +283,7 @@ impl Plot {
             };
             Some((Point::new(x, y), Vector::new(dx, dy)))
         };
-        let options = TraceOptions::with_tolerance(trace_tolerance(self.tolerance));
+        let options = TraceOptions::written(self.tolerance);
         let mut subpaths = Vec::new();
         for (curve, range) in pieces {
             let traced = trace(

@@ -2,9 +2,9 @@
 //! drawn by a [`Scene`], and diagrams (plots against θ, time or position,
 //! polar diagrams, centrodes, Ng's graphs).
 
+use super::Style;
 use super::{Figure, FigureOptions, diagrams};
 use crate::error::{Error, Result};
-use crate::render::Style;
 use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{Angle, SliderCrank};
 

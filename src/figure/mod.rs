@@ -1,6 +1,7 @@
 //! Figures: an immutable model of panels and primitives in world
-//! coordinates, built by a [`crate::Scene`] and written by
-//! [`crate::render`]; and the catalogue of the seeds' named figures.
+//! coordinates and the [`Style`] they are drawn in, built by a
+//! [`crate::Scene`] and written by the [renderer](super::render); and the
+//! catalogue of the seeds' named figures.
 //!
 //! Data flows one way: scene → constructions its layers ask for → this
 //! model → the renderer, which maps each panel's world to the page with the
@@ -12,6 +13,7 @@ mod font;
 mod model;
 mod options;
 mod path;
+mod style;
 mod text;
 mod transform;
 
@@ -20,5 +22,7 @@ pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
 pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use options::{FigureOptions, Fit};
 pub use path::{Path, PathBuilder, PathSegment};
+pub(crate) use style::Pen;
+pub use style::Style;
 pub use text::{RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
 pub use transform::{PageFromWorld, PageRect};

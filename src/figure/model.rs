@@ -1,9 +1,9 @@
 //! The immutable figure model: panels of primitives in world coordinates,
 //! each with a role and a stable id.
 
+use super::Style;
 use super::{Font, PageFromWorld, PageRect, Path, RichText};
 use crate::geom::{Point, Vector};
-use crate::render::Style;
 use serde_json::{Map, Value};
 
 /// What a primitive is, which fixes how it is drawn (line weight, dash,
@@ -444,8 +444,9 @@ pub struct Figure {
 impl Figure {
     /// A figure of `width` × `height` page units; `metadata` adds keys to
     /// the SVG metadata beside the ones the renderer writes (`figure`,
-    /// `page_from_world`, `tolerance`, `style`, `panels`). It is set in the
-    /// default [`Font`] until [`Figure::with_font`] says otherwise.
+    /// `page_from_world`, `tolerance`, `style`, `panels`); `tolerance` is
+    /// the one its curves were traced to ([`Figure::tolerance`]). It is set
+    /// in the default [`Font`] until [`Figure::with_font`] says otherwise.
     pub fn new(
         name: impl Into<String>,
         width: f64,
@@ -492,7 +493,11 @@ impl Figure {
         self.font
     }
 
-    /// The drawing tolerance of curves, in page units.
+    /// The tolerance, in page units, its curves were traced to by the
+    /// curve engine ([`crate::diagram::trace`]): a record of what the
+    /// engine was asked for and kept (the written paths are within it),
+    /// written to the metadata as `tolerance`; the renderer draws nothing
+    /// by it.
     pub fn tolerance(&self) -> f64 {
         self.tolerance
     }

@@ -1,8 +1,8 @@
 //! What may be changed in a named figure ([`super::FigureName::figure`]).
 
 use super::Font;
+use super::Style;
 use crate::error::{Error, Result};
-use crate::render::Style;
 use crate::{Angle, SliderCrank};
 
 /// Which calibration line `ng-fig-7-calibration` draws.

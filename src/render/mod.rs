@@ -5,13 +5,12 @@ mod labels;
 mod number;
 mod output;
 mod png;
-mod style;
+mod sizes;
 mod svg;
 
-pub use number::{GRID, fmt, trace_tolerance};
+pub use number::{GRID, fmt};
 pub use output::write_atomic;
 pub use png::{font_database, to_png};
-pub use style::Style;
 pub use svg::to_svg;
 
-pub(crate) use style::NOTE_LINE;
+pub(crate) use sizes::NOTE_LINE;

@@ -35,16 +35,6 @@ pub fn fmt_coefficient(x: f64) -> String {
     if v == 0.0 { "0".into() } else { format!("{v}") }
 }
 
-/// The tolerance to trace a curve to so that its path, once written with
-/// every point rounded to the [`GRID`] (up to `GRID/√2` away), is still
-/// within `tolerance` of the curve, with room for the rounding of the map
-/// in the file: `tolerance − 0.8 GRID`. Below `GRID` the written path cannot
-/// keep the promise whatever the trace does; the curve is then traced to a
-/// fifth of `tolerance` (the two rules meet at `GRID`).
-pub fn trace_tolerance(tolerance: f64) -> f64 {
-    (tolerance - 0.8 * GRID).max(0.2 * tolerance)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -62,9 +52,5 @@ mod tests {
         assert_eq!(fmt_coefficient(0.4), "0.4");
         assert_eq!(fmt_coefficient(1e-9), "0.000000001");
         assert_eq!(fmt_coefficient(0.0), "0");
-        // Written path within 0.01 of the curve: traced to 0.002.
-        assert!((trace_tolerance(0.01) - 0.002).abs() < 1e-15);
-        assert!((trace_tolerance(0.004) - 0.0008).abs() < 1e-18);
-        assert!((trace_tolerance(0.1) - 0.092).abs() < 1e-15);
     }
 }

@@ -4,8 +4,8 @@
 use super::{Layer, Notation, Page, Scene};
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
+use crate::figure::Style;
 use crate::figure::{FigureName, Font};
-use crate::render::Style;
 use crate::{Angle, SliderCrank};
 use serde::Deserialize;
 use toml::Spanned;

@@ -25,11 +25,12 @@ use crate::construct::CouplerPoint;
 use crate::error::{Error, Result, finite, positive};
 use crate::figure::Figure;
 use crate::figure::Font;
-use crate::render::Style;
+use crate::figure::Style;
 use crate::{Angle, SliderCrank};
 
-/// Default drawing tolerance of curves, in page units (DESIGN.md §6).
-pub const DEFAULT_TOLERANCE: f64 = 0.01;
+/// Default drawing tolerance of curves, in page units: the curve
+/// engine's (DESIGN.md §6).
+pub use crate::diagram::DEFAULT_TOLERANCE;
 
 /// A page: its size and the margin kept clear on every side, in page units
 /// (SVG user units, 1/96 in).

@@ -15,12 +15,13 @@ mod rod;
 mod velocity;
 
 use super::{Figure, FigureName, FigureOptions, Font, PageRect, Panel, RichText};
+use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::{Plot, format_number};
 use crate::error::{Error, Result};
+use crate::figure::Style;
 use crate::figure::{Item, PageFromWorld, Role, Shape};
 use crate::geom::{Point, Vector};
-use crate::render::Style;
-use crate::scene::{DEFAULT_TOLERANCE, Page, Scene};
+use crate::scene::{Page, Scene};
 use crate::{Angle, Pose, SliderCrank};
 use serde_json::{Map, Value, json};
 

@@ -15,7 +15,7 @@ use std::f64::consts::PI;
 
 /// The curve over (lo, hi), traced by the curve engine to the scene's
 /// tolerance in page units (less the rounding of the written file,
-/// [`crate::render::trace_tolerance`]) and clipped to the canvas frame, as a world path
+/// [`TraceOptions::written`]) and clipped to the canvas frame, as a world path
 /// and a point of it for a label; `None` if none of it is on the page (or,
 /// which the engine's caps make unlikely for these smooth curves, if it
 /// cannot be fitted: then nothing is drawn rather than a wrong curve).
@@ -35,7 +35,7 @@ fn trace(
         map,
         &page,
         Method::Cubic,
-        &TraceOptions::with_tolerance(crate::render::trace_tolerance(tol)),
+        &TraceOptions::written(tol),
     )
     .ok()?;
     // The label goes at the middle of the longest subpath.

@@ -1,8 +1,9 @@
 //! The two styles over the same geometry: the textbook's black engraving
-//! and a coloured handout.
+//! and a coloured handout. A figure carries its style; the renderer asks
+//! it for the pen of each role and hue, the paper and the sizes of text.
 
+use super::{Dash, Hue, Role, TextSize};
 use crate::error::{Error, Result};
-use crate::figure::{Dash, Hue, Role, TextSize};
 use serde::Deserialize;
 
 /// How a figure is drawn.
@@ -24,21 +25,6 @@ pub(crate) struct Pen {
     pub width: f64,
     pub dash: Option<&'static str>,
 }
-
-/// Sizes of symbols and text, in page units.
-pub(crate) const PIN_RADIUS: f64 = 4.2;
-pub(crate) const DOT_RADIUS: f64 = 2.1;
-pub(crate) const ARROW_LENGTH: f64 = 10.0;
-pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
-pub(crate) const HATCH_SPACING: f64 = 6.0;
-pub(crate) const HATCH_DEPTH: f64 = 6.5;
-pub(crate) const RIGHT_ANGLE: f64 = 10.0;
-pub(crate) const ANGLE_RADIUS: f64 = 28.0;
-pub(crate) const NOTE_SIZE: f64 = 13.0;
-/// Half the size of a data marker.
-pub(crate) const MARKER_RADIUS: f64 = 3.6;
-/// Line height of notes.
-pub(crate) const NOTE_LINE: f64 = 17.0;
 
 impl Style {
     /// The name used on the command line and in scene files.

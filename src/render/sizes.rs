@@ -1,0 +1,25 @@
+//! Sizes of the renderer's symbols and text, in page units: the same at
+//! every scale and in both styles.
+
+/// Radius of a pin joint's circle.
+pub(crate) const PIN_RADIUS: f64 = 4.2;
+/// Radius of a constructed point's dot.
+pub(crate) const DOT_RADIUS: f64 = 2.1;
+/// Length of an arrowhead.
+pub(crate) const ARROW_LENGTH: f64 = 10.0;
+/// Half the width of an arrowhead at its back.
+pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
+/// Distance between the strokes of ground hatching.
+pub(crate) const HATCH_SPACING: f64 = 6.0;
+/// Depth of the strip of ground hatching.
+pub(crate) const HATCH_DEPTH: f64 = 6.5;
+/// Length of each side of a right-angle mark.
+pub(crate) const RIGHT_ANGLE: f64 = 10.0;
+/// Radius of an angle mark's arc.
+pub(crate) const ANGLE_RADIUS: f64 = 28.0;
+/// Font size of notes, the largest they are set in.
+pub(crate) const NOTE_SIZE: f64 = 13.0;
+/// Half the size of a data marker.
+pub(crate) const MARKER_RADIUS: f64 = 3.6;
+/// Line height of notes.
+pub(crate) const NOTE_LINE: f64 = 17.0;

@@ -1,0 +1,110 @@
+//! The fixed link: the crank's bearing, the ground hatching of the guides
+//! and the slider block that runs in them.
+
+use super::markup::{finite, path, polyline_d, pt, unit};
+use super::{Ink, PanelWriter};
+use crate::figure::Pen;
+use crate::geom::{Point, Vector};
+use crate::render::labels::Bounds;
+use crate::render::sizes::{HATCH_DEPTH, HATCH_SPACING};
+use std::fmt::Write as _;
+use svg::node::Node;
+use svg::node::element::Group;
+
+impl PanelWriter<'_> {
+    /// The crank's bearing: a pedestal (a triangle on the paper) below the
+    /// shaft's centre, on a hatched foot. Kept clear by labels: the
+    /// triangle's edges and the foot with its hatching.
+    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point) -> Option<Box<dyn Node>> {
+        let c = self.p(centre);
+        if !finite(&c) {
+            return None;
+        }
+        let (h, w, base) = (17.0, 10.0, 17.0);
+        let tri = [c, c + Vector::new(-w, h), c + Vector::new(w, h)];
+        let foot = [c + Vector::new(-base, h), c + Vector::new(base, h)];
+        let mut hatch = String::new();
+        let mut x = -base + 3.0;
+        while x <= base {
+            let s = c + Vector::new(x, h);
+            let _ = write!(hatch, "M{} L{} ", pt(s), pt(s + Vector::new(-5.0, 6.0)));
+            x += 5.0;
+        }
+        self.obstacles.polyline(&[tri[0], tri[1], tri[2], tri[0]]);
+        self.obstacles.boxed(Bounds {
+            min: c + Vector::new(-base - 5.0, 0.5 * h),
+            max: c + Vector::new(base, h + 6.0),
+        });
+        let pen = ink.pen;
+        Some(Box::new(
+            ink.tag(Group::new())
+                .add(path(polyline_d(&tri, true), pen).set("fill", self.style.paper()))
+                .add(path(polyline_d(&foot, false), pen))
+                .add(path(
+                    hatch.trim_end().to_string(),
+                    Pen { width: 0.7, ..pen },
+                )),
+        ))
+    }
+
+    /// Ground hatching: short slanted strokes along `from`–`to` on the
+    /// side `side` (a world vector) points to. Labels keep off the strip.
+    pub(super) fn hatch(
+        &mut self,
+        ink: &Ink,
+        from: Point,
+        to: Point,
+        side: Vector,
+    ) -> Option<Box<dyn Node>> {
+        let (a, b) = (self.p(from), self.p(to));
+        let t = unit(b - a)?;
+        let n = unit(self.t.apply_vector(side))?;
+        let len = (b - a).norm();
+        let mut d = String::new();
+        let mut s = 0.5 * HATCH_SPACING;
+        while s < len {
+            let p = a + t * s;
+            let q = p + n * HATCH_DEPTH - t * (0.8 * HATCH_DEPTH);
+            let _ = write!(d, "M{} L{} ", pt(p), pt(q));
+            s += HATCH_SPACING;
+        }
+        if d.is_empty() {
+            return None;
+        }
+        for depth in [0.3, 0.8] {
+            self.obstacles
+                .segment(a + n * (depth * HATCH_DEPTH), b + n * (depth * HATCH_DEPTH));
+        }
+        Some(Box::new(ink.tag(path(
+            d.trim_end().to_string(),
+            Pen {
+                width: 0.6,
+                ..ink.pen
+            },
+        ))))
+    }
+
+    /// The slider block: its outline, heavier than the guides, unfilled so
+    /// that curves and constructions through the slider (Kisch's
+    /// semicircle ends at A) stay visible. No letter goes inside it.
+    pub(super) fn block(&mut self, ink: &Ink, points: &[Point]) -> Option<Box<dyn Node>> {
+        let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+        if pts.len() < 3 || !pts.iter().all(finite) {
+            return None;
+        }
+        let (lo, hi) = pts
+            .iter()
+            .fold((pts[0], pts[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+        self.obstacles.boxed(Bounds { min: lo, max: hi });
+        Some(Box::new(
+            ink.tag(path(
+                polyline_d(&pts, true),
+                Pen {
+                    width: 1.6,
+                    ..ink.pen
+                },
+            ))
+            .set("fill", "none"),
+        ))
+    }
+}

@@ -1,0 +1,169 @@
+//! Lines: fitted paths, polylines, tinted regions, circles and arcs (an
+//! arrowed arc is a torque). Every line they draw is kept clear by labels.
+
+use super::markup::{
+    arc_beziers, arrow_head, bezier_d, finite, path, polyline_d, pt, stroke, unit,
+};
+use super::{Ink, PanelWriter};
+use crate::figure::{Path, PathSegment, Role};
+use crate::geom::Point;
+use crate::render::number::fmt;
+use std::fmt::Write as _;
+use svg::node::Node;
+use svg::node::element::{Circle, Group, Path as SvgPath};
+
+impl PanelWriter<'_> {
+    /// A fitted path of lines and cubic Béziers.
+    pub(super) fn fitted_path(&mut self, ink: &Ink, p: &Path) -> Option<Box<dyn Node>> {
+        let mut d = String::new();
+        let mut last = Point::origin();
+        let mut pieces = Vec::new();
+        for seg in p.segments() {
+            match *seg {
+                PathSegment::MoveTo(q) => {
+                    let q = self.p(q);
+                    let _ = write!(d, "{}M{}", if d.is_empty() { "" } else { " " }, pt(q));
+                    last = q;
+                }
+                PathSegment::LineTo(q) => {
+                    let q = self.p(q);
+                    let _ = write!(d, " L{}", pt(q));
+                    self.obstacles.segment(last, q);
+                    last = q;
+                }
+                PathSegment::CubicTo(c1, c2, q) => {
+                    let (c1, c2, q) = (self.p(c1), self.p(c2), self.p(q));
+                    let _ = write!(d, " C{} {} {}", pt(c1), pt(c2), pt(q));
+                    pieces.push([last, c1, c2, q]);
+                    last = q;
+                }
+                PathSegment::Close => d.push_str(" Z"),
+            }
+        }
+        if !p.points().all(|q| finite(&self.p(q))) {
+            return None;
+        }
+        self.bezier_obstacles(&pieces);
+        Some(Box::new(ink.tag(path(d, ink.pen))))
+    }
+
+    /// A polyline, open or closed. The line of stroke (`line-stroke…`,
+    /// auxiliary) is drawn as a centre line, long dash and dot.
+    pub(super) fn polyline(
+        &mut self,
+        ink: &Ink,
+        points: &[Point],
+        closed: bool,
+    ) -> Option<Box<dyn Node>> {
+        let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+        if pts.len() < 2 || !pts.iter().all(finite) {
+            return None;
+        }
+        self.obstacles.polyline(&pts);
+        if closed {
+            self.obstacles.segment(pts[pts.len() - 1], pts[0]);
+        }
+        let mut node = ink.tag(path(polyline_d(&pts, closed), ink.pen));
+        if ink.role == Role::Auxiliary && pts.len() == 2 && ink.id.starts_with("line-stroke") {
+            node = node.set("stroke-dasharray", "14 3 2 3");
+        }
+        Some(Box::new(node))
+    }
+
+    /// A tinted area without outline, where the style tints (the similar
+    /// triangles of the handout); not an obstacle.
+    pub(super) fn region(&mut self, ink: &Ink, points: &[Point]) -> Option<Box<dyn Node>> {
+        let (colour, opacity) = self.style.region()?;
+        let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+        if pts.len() < 3 || !pts.iter().all(finite) {
+            return None;
+        }
+        Some(Box::new(
+            ink.tag(SvgPath::new())
+                .set("d", polyline_d(&pts, true))
+                .set("fill", colour)
+                .set("fill-opacity", fmt(opacity))
+                .set("stroke", "none"),
+        ))
+    }
+
+    /// A full circle: a `<circle>` where the panel's map is a similarity,
+    /// else its Bézier image.
+    pub(super) fn circle(
+        &mut self,
+        ink: &Ink,
+        centre: Point,
+        radius: f64,
+    ) -> Option<Box<dyn Node>> {
+        let c = self.p(centre);
+        let pieces: Vec<[Point; 4]> = arc_beziers(centre, radius, 0.0, 2.0 * std::f64::consts::PI)
+            .into_iter()
+            .map(|b| b.map(|p| self.p(p)))
+            .collect();
+        self.bezier_obstacles(&pieces);
+        if !finite(&c) {
+            return None;
+        }
+        let [a, b, cc, d, _, _] = self.t.coefficients();
+        if (a * a + b * b - cc * cc - d * d).abs() <= 1e-9 * (a * a + b * b) {
+            Some(Box::new(
+                ink.tag(stroke(Circle::new(), ink.pen))
+                    .set("cx", fmt(c.x))
+                    .set("cy", fmt(c.y))
+                    .set("r", fmt(radius * self.t.scale())),
+            ))
+        } else {
+            Some(Box::new(ink.tag(path(bezier_d(&pieces), ink.pen))))
+        }
+    }
+
+    /// A circular arc (world angles), with an arrowhead at its end for a
+    /// torque.
+    pub(super) fn arc(
+        &mut self,
+        ink: &Ink,
+        centre: Point,
+        radius: f64,
+        (start, sweep): (f64, f64),
+        arrow: bool,
+    ) -> Option<Box<dyn Node>> {
+        let pieces: Vec<[Point; 4]> = arc_beziers(centre, radius, start, sweep)
+            .into_iter()
+            .map(|b| b.map(|p| self.p(p)))
+            .collect();
+        if !pieces.iter().flatten().all(finite) {
+            return None;
+        }
+        self.bezier_obstacles(&pieces);
+        let line = path(bezier_d(&pieces), ink.pen);
+        if !arrow {
+            return Some(Box::new(ink.tag(line)));
+        }
+        let last = pieces.last()?;
+        let u = unit(last[3] - last[2])?;
+        Some(Box::new(ink.tag(Group::new()).add(line).add(arrow_head(
+            last[3],
+            u,
+            ink.pen.colour,
+        ))))
+    }
+
+    /// Page Bézier pieces as obstacles, each by seven points along it.
+    pub(super) fn bezier_obstacles(&mut self, pieces: &[[Point; 4]]) {
+        for b in pieces {
+            let pts: Vec<Point> = (0..=6)
+                .map(|k| {
+                    let t = k as f64 / 6.0;
+                    let s = 1.0 - t;
+                    Point::from(
+                        b[0].coords * (s * s * s)
+                            + b[1].coords * (3.0 * s * s * t)
+                            + b[2].coords * (3.0 * s * t * t)
+                            + b[3].coords * (t * t * t),
+                    )
+                })
+                .collect();
+            self.obstacles.polyline(&pts);
+        }
+    }
+}

@@ -1,0 +1,221 @@
+//! Marks on a construction: arrows, right-angle marks, angle marks and
+//! dimensions, in page sizes whatever the scale.
+
+use super::markup::{arrow_head, bezier_d, finite, path, polyline_d, unit};
+use super::text::{starts_italic, text_half, text_node};
+use super::{Ink, PanelWriter, Pending};
+use crate::figure::{Pen, RichText, TextSize};
+use crate::geom::{Point, Vector};
+use crate::render::labels::Bounds;
+use crate::render::sizes::{ANGLE_RADIUS, ARROW_LENGTH, RIGHT_ANGLE};
+use svg::node::Node;
+use svg::node::element::Group;
+
+impl PanelWriter<'_> {
+    /// A straight arrow with its head at `to`; labels keep off the shaft
+    /// and the head.
+    pub(super) fn arrow(&mut self, ink: &Ink, from: Point, to: Point) -> Option<Box<dyn Node>> {
+        let (a, b) = (self.p(from), self.p(to));
+        if !finite(&a) || !finite(&b) {
+            return None;
+        }
+        let u = unit(b - a)?;
+        self.obstacles.segment(a, b);
+        // The head is wider than the shaft: keep labels off it too.
+        let half = 0.5 * ARROW_LENGTH;
+        self.obstacles
+            .boxed(Bounds::around(b - u * half, Vector::new(half, half)));
+        let shaft = polyline_d(&[a, b - u * (0.6 * ARROW_LENGTH)], false);
+        Some(Box::new(
+            ink.tag(Group::new())
+                .add(path(shaft, ink.pen))
+                .add(arrow_head(b, u, ink.pen.colour)),
+        ))
+    }
+
+    /// A right-angle mark at `vertex` between the world directions `u`
+    /// and `v`: two short full strokes, which labels keep off.
+    pub(super) fn right_angle(
+        &mut self,
+        ink: &Ink,
+        vertex: Point,
+        u: Vector,
+        v: Vector,
+    ) -> Option<Box<dyn Node>> {
+        let c = self.p(vertex);
+        let u = unit(self.t.apply_vector(u))?;
+        let v = unit(self.t.apply_vector(v))?;
+        let s = RIGHT_ANGLE;
+        let pts = [c + u * s, c + u * s + v * s, c + v * s];
+        if !pts.iter().all(finite) {
+            return None;
+        }
+        self.obstacles.polyline(&pts);
+        let pen = Pen {
+            width: 0.7,
+            dash: None,
+            ..ink.pen
+        };
+        Some(Box::new(ink.tag(path(polyline_d(&pts, false), pen))))
+    }
+
+    /// An angle mark: an arc of page radius [`ANGLE_RADIUS`] about
+    /// `vertex` from the world angle `start` turning `sweep`, its name
+    /// (if any) placed with the labels beside the arc's middle.
+    pub(super) fn angle_mark(
+        &mut self,
+        ink: &Ink,
+        vertex: Point,
+        (start, sweep): (f64, f64),
+        text: Option<&RichText>,
+    ) -> Option<Box<dyn Node>> {
+        let c = self.p(vertex);
+        if !finite(&c) {
+            return None;
+        }
+        let pieces = self.page_arc(c, ANGLE_RADIUS, start, sweep);
+        self.bezier_obstacles(&pieces);
+        if let Some(text) = text {
+            let mid = start + 0.5 * sweep;
+            let dir = unit(self.t.apply_vector(Vector::new(mid.cos(), mid.sin())))?;
+            self.pending.push(Pending {
+                id: format!("label-{}", ink.id.trim_start_matches("angle-")),
+                anchor: c + dir * ANGLE_RADIUS,
+                text: text.clone(),
+                size: self.style.font_size(TextSize::Small) + 2.0,
+                gap: 2.0,
+            });
+        }
+        Some(Box::new(ink.tag(path(bezier_d(&pieces), ink.pen))))
+    }
+
+    /// A dimension between `from` and `to`: extension lines, the line set
+    /// off by `offset` page units towards the world direction `side` with
+    /// a head at each end, and its text beside the middle.
+    pub(super) fn dimension(
+        &mut self,
+        ink: &Ink,
+        (from, to): (Point, Point),
+        side: Vector,
+        offset: f64,
+        text: &RichText,
+    ) -> Option<Box<dyn Node>> {
+        let pen = ink.pen;
+        let (a, b) = (self.p(from), self.p(to));
+        let n = unit(self.t.apply_vector(side))?;
+        let u = unit(b - a)?;
+        let (a2, b2) = (a + n * offset, b + n * offset);
+        let ext = |p: Point, q: Point| polyline_d(&[p + n * 3.0, q + n * 4.0], false);
+        let size = self.style.font_size(TextSize::Small) + 1.0;
+        let half = text_half(text, size, self.font);
+        let centre = nalgebra::center(&a2, &b2) + n * (half.y + 3.0);
+        self.obstacles.boxed(Bounds::around(centre, half));
+        self.obstacles.segment(a2, b2);
+        let thin = Pen { width: 0.5, ..pen };
+        Some(Box::new(
+            ink.tag(Group::new())
+                .add(path(ext(a, a2), thin))
+                .add(path(ext(b, b2), thin))
+                .add(path(polyline_d(&[a2 + u * 2.0, b2 - u * 2.0], false), pen))
+                .add(arrow_head(a2, -u, pen.colour))
+                .add(arrow_head(b2, u, pen.colour))
+                .add(text_node(
+                    &format!("{}-text", ink.id),
+                    centre,
+                    text,
+                    size,
+                    pen.colour,
+                    "middle",
+                    starts_italic(text),
+                )),
+        ))
+    }
+
+    /// The page arc of a world arc about a page centre (page radius).
+    fn page_arc(&self, centre: Point, radius: f64, start: f64, sweep: f64) -> Vec<[Point; 4]> {
+        let dir = self.t.apply_vector(Vector::new(start.cos(), start.sin()));
+        let start = dir.y.atan2(dir.x);
+        super::markup::arc_beziers(centre, radius, start, sweep * self.orientation())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::text::{BASELINE, text_half};
+    use super::super::to_svg;
+    use crate::figure::Style;
+    use crate::figure::{
+        Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
+    };
+    use crate::geom::{Point, Vector};
+    use crate::render::sizes::RIGHT_ANGLE;
+
+    /// The number after `name="` in the element with `id`.
+    fn attribute(svg: &str, id: &str, name: &str) -> f64 {
+        let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+        let start = svg[..at].rfind('<').unwrap();
+        let tag = &svg[start..start + svg[start..].find('>').unwrap()];
+        let from = tag.find(&format!(" {name}=\"")).unwrap() + name.len() + 3;
+        tag[from..from + tag[from..].find('"').unwrap()]
+            .parse()
+            .unwrap()
+    }
+
+    #[test]
+    fn letters_keep_off_right_angle_marks() {
+        // The mark in each quadrant about the lettered point: wherever the
+        // letter would rather go, it must not sit on the strokes.
+        let vertex = Point::new(100.0, 100.0);
+        let text = RichText::italic("C");
+        for (u, v) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)] {
+            let (u, v) = (Vector::new(u, 0.0), Vector::new(0.0, v));
+            let items = vec![
+                Item::new(
+                    "angle-C",
+                    Role::Construction,
+                    Shape::RightAngle { vertex, u, v },
+                ),
+                Item::new(
+                    "label-C",
+                    Role::Label,
+                    Shape::Label {
+                        anchor: vertex,
+                        text: text.clone(),
+                        size: TextSize::Letter,
+                    },
+                ),
+            ];
+            let rect = PageRect::new(0.0, 0.0, 200.0, 200.0);
+            let panel = Panel::new("panel", rect, PageFromWorld::identity(), items);
+            let figure = Figure::new(
+                "test",
+                200.0,
+                200.0,
+                Style::Textbook,
+                0.01,
+                vec![panel],
+                Default::default(),
+            );
+            let svg = to_svg(&figure);
+            let size = attribute(&svg, "label-C", "font-size");
+            let centre = Point::new(
+                attribute(&svg, "label-C", "x"),
+                attribute(&svg, "label-C", "y") - BASELINE * size,
+            );
+            // The glyph's box (without the unit of room placement adds).
+            let half = text_half(&text, size, Font::default()) - Vector::new(1.0, 1.0);
+            let s = RIGHT_ANGLE;
+            let corner = vertex + u * s + v * s;
+            for (a, b) in [(vertex + u * s, corner), (corner, vertex + v * s)] {
+                for k in 0..=50 {
+                    let p = a + (b - a) * (k as f64 / 50.0);
+                    let d = p - centre;
+                    assert!(
+                        d.x.abs() > half.x || d.y.abs() > half.y,
+                        "u {u:?}, v {v:?}: label at {centre:?} on the mark at {p:?}"
+                    );
+                }
+            }
+        }
+    }
+}

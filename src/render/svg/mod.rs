@@ -1,0 +1,313 @@
+//! The SVG writer: each panel's primitives mapped to the page by the
+//! panel's one transform, numbers on a fixed grid, ids and order stable.
+//!
+//! This file writes the document, its metadata and its panels; each item
+//! is drawn by the function of its symbol, one family to a file: lines
+//! ([`lines`]: paths, polylines, regions, circles, arcs), points
+//! ([`points`]: pins, dots, markers), the frame ([`frame`]: bearing,
+//! hatching, slider block), marks ([`marks`]: arrows, right-angle and
+//! angle marks, dimensions) and text ([`notes`]: labels, fixed texts,
+//! notes). Each symbol also tells the label placement what it covers.
+
+mod frame;
+mod lines;
+mod marks;
+mod markup;
+mod notes;
+mod points;
+mod text;
+
+use super::labels::{Bounds, Obstacles, place};
+use super::number::{fmt, fmt_coefficient};
+use crate::figure::{Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape};
+use crate::figure::{Pen, Style};
+use crate::geom::Point;
+use serde_json::{Value, json};
+use svg::Document;
+use svg::node::Node;
+use svg::node::element::{ClipPath, Definitions, Element, Group, Rectangle};
+use text::{starts_italic, text_half, text_node};
+
+/// The farthest a label's box may be put from its anchor, in font sizes
+/// (a letter's glyphs within 1.5 em of its point).
+const REACH: f64 = 1.42;
+
+/// A label waiting to be placed once every line is known.
+struct Pending {
+    id: String,
+    anchor: Point,
+    text: RichText,
+    size: f64,
+    gap: f64,
+}
+
+/// What an item's symbol is written with: its id, its role (the class)
+/// and its pen.
+struct Ink<'a> {
+    id: &'a str,
+    role: Role,
+    pen: Pen,
+}
+
+impl Ink<'_> {
+    /// `node` with the item's id and class.
+    fn tag<T: Node>(&self, mut node: T) -> T {
+        node.assign("id", self.id);
+        node.assign("class", self.role.name());
+        node
+    }
+}
+
+/// The writer of one panel: its map, and what labels must keep clear of.
+struct PanelWriter<'a> {
+    t: &'a PageFromWorld,
+    page_width: f64,
+    style: Style,
+    font: Font,
+    obstacles: Obstacles,
+    pending: Vec<Pending>,
+}
+
+impl PanelWriter<'_> {
+    /// The page point of a world point.
+    fn p(&self, w: Point) -> Point {
+        self.t.apply(w)
+    }
+
+    /// 1 where the map keeps the world's sense of turning, −1 where it
+    /// mirrors it.
+    fn orientation(&self) -> f64 {
+        let [a, b, c, d, _, _] = self.t.coefficients();
+        if a * d - b * c < 0.0 { -1.0 } else { 1.0 }
+    }
+
+    /// The pen of an item: its role's, with its own dash and hue.
+    fn pen(&self, item: &Item) -> Pen {
+        let mut pen = self.style.pen(item.role);
+        if let Some(dash) = item.dash {
+            pen.dash = Style::dash(dash);
+            if let Some(colour) = self.style.series(dash) {
+                pen.colour = colour;
+            }
+        }
+        if let Some(colour) = item.hue.and_then(|h| self.style.hue(h)) {
+            pen.colour = colour;
+        }
+        pen
+    }
+
+    /// The item drawn by its symbol's function; `None` where nothing is
+    /// written now (labels, placed later) or the item is off the map.
+    fn item(&mut self, item: &Item) -> Option<Box<dyn Node>> {
+        let ink = Ink {
+            id: &item.id,
+            role: item.role,
+            pen: self.pen(item),
+        };
+        self.obstacles.set_weight(match item.role {
+            // Hatching is as bad to letter over as a link.
+            Role::Link | Role::Force | Role::Frame => 3.0,
+            Role::Construction | Role::Result => 1.5,
+            _ => 1.0,
+        });
+        match &item.shape {
+            Shape::Path(p) => self.fitted_path(&ink, p),
+            Shape::Polyline { points, closed } => self.polyline(&ink, points, *closed),
+            Shape::Region { points } => self.region(&ink, points),
+            Shape::Circle { centre, radius } => self.circle(&ink, *centre, *radius),
+            Shape::Arc {
+                centre,
+                radius,
+                start,
+                sweep,
+                arrow,
+            } => self.arc(&ink, *centre, *radius, (*start, *sweep), *arrow),
+            Shape::Pin { centre } => self.pin(&ink, *centre),
+            Shape::Dot { centre } => self.dot(&ink, *centre),
+            Shape::Marker { centre, symbol } => self.marker(&ink, *centre, *symbol),
+            Shape::Bearing { centre } => self.bearing(&ink, *centre),
+            Shape::Hatch { from, to, side } => self.hatch(&ink, *from, *to, *side),
+            Shape::Block { points } => self.block(&ink, points),
+            Shape::Arrow { from, to } => self.arrow(&ink, *from, *to),
+            Shape::RightAngle { vertex, u, v } => self.right_angle(&ink, *vertex, *u, *v),
+            Shape::AngleMark {
+                vertex,
+                start,
+                sweep,
+                text,
+            } => self.angle_mark(&ink, *vertex, (*start, *sweep), text.as_ref()),
+            Shape::Dimension {
+                from,
+                to,
+                side,
+                offset,
+                text,
+            } => self.dimension(&ink, (*from, *to), *side, *offset, text),
+            Shape::Label { anchor, text, size } => self.label(&ink, *anchor, text, *size),
+            Shape::Text {
+                at,
+                offset,
+                text,
+                align,
+                size,
+            } => self.text(&ink, (*at, *offset), text, *align, *size),
+            Shape::Note { corner, lines } => self.note(&ink, *corner, lines),
+        }
+    }
+}
+
+/// Where an item is drawn in its panel: by role (later on top), tinted
+/// regions under the role's lines and pins over them.
+fn draw_order(role: Role, shape: &Shape) -> (usize, usize) {
+    let r = Role::ALL.iter().position(|x| *x == role).unwrap_or(0);
+    let s = match shape {
+        Shape::Region { .. } => 0,
+        Shape::Pin { .. } => 2,
+        _ => 1,
+    };
+    (r, s)
+}
+
+/// A panel as a `<g>` with its map in `data-page-from-world`: its items in
+/// drawing order, clipped to its rectangle if it asks, then its labels
+/// placed in `room` clear of everything drawn.
+fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Group {
+    let t = panel.transform();
+    let coefficients = t.coefficients().map(fmt_coefficient).join(" ");
+    let mut g = Group::new()
+        .set("id", panel.id())
+        .set("data-page-from-world", coefficients);
+    let mut w = PanelWriter {
+        t,
+        page_width: room.x + room.width,
+        style,
+        font,
+        obstacles: Obstacles::default(),
+        pending: Vec::new(),
+    };
+    let mut order: Vec<(usize, &Item)> = panel.items().iter().enumerate().collect();
+    order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
+    let nodes: Vec<Box<dyn Node>> = order.iter().filter_map(|(_, item)| w.item(item)).collect();
+    if panel.is_clipped() {
+        g = clipped(g, panel);
+    }
+    for n in nodes {
+        g = g.add(n);
+    }
+    w.place_labels(g, room)
+}
+
+/// `g` clipped to the panel's rectangle (a detail panel).
+fn clipped(g: Group, panel: &Panel) -> Group {
+    let r = panel.rect();
+    let clip = format!("clip-{}", panel.id());
+    let rect = Rectangle::new()
+        .set("x", fmt(r.x))
+        .set("y", fmt(r.y))
+        .set("width", fmt(r.width))
+        .set("height", fmt(r.height));
+    g.add(Definitions::new().add(ClipPath::new().set("id", clip.clone()).add(rect)))
+        .set("clip-path", format!("url(#{clip})"))
+}
+
+impl PanelWriter<'_> {
+    /// The pending labels placed in `room` one by one, each clear of what
+    /// is drawn and of the labels before it, and added to `g`.
+    fn place_labels(mut self, mut g: Group, room: &PageRect) -> Group {
+        let colour = self.style.pen(Role::Label).colour;
+        for p in std::mem::take(&mut self.pending) {
+            let half = text_half(&p.text, p.size, self.font);
+            let centre = place(p.anchor, half, p.gap, REACH * p.size, &self.obstacles, room);
+            self.obstacles.boxed(Bounds::around(centre, half));
+            g = g.add(text_node(
+                &p.id,
+                centre,
+                &p.text,
+                p.size,
+                colour,
+                "middle",
+                starts_italic(&p.text),
+            ));
+        }
+        g
+    }
+}
+
+/// Where a panel's labels may go: in the panel, or just outside it (into
+/// the margin) for points near its edge, and always on the `page`. A
+/// clipped panel (a detail) keeps its labels inside.
+fn label_room(panel: &Panel, page: &PageRect) -> PageRect {
+    let r = panel.rect();
+    let out = if panel.is_clipped() { -3.0 } else { 8.0 };
+    let x0 = (r.x - out).max(page.x);
+    let y0 = (r.y - out).max(page.y);
+    let x1 = (r.x + r.width + out).min(page.x + page.width);
+    let y1 = (r.y + r.height + out).min(page.y + page.height);
+    PageRect::new(x0, y0, x1 - x0, y1 - y0)
+}
+
+/// A map's coefficients as JSON numbers, as written in the panels' attributes.
+fn coefficients(t: &PageFromWorld) -> Value {
+    t.coefficients()
+        .iter()
+        .map(|c| json!(fmt_coefficient(*c).parse::<f64>().unwrap_or(0.0)))
+        .collect()
+}
+
+/// The `<metadata>` element: the figure's own keys and the renderer's
+/// (`figure`, `style`, `tolerance`, page size, the first panel's map and
+/// every panel's map and rectangle), as JSON.
+fn metadata(figure: &Figure) -> Element {
+    let mut meta = figure.metadata().clone();
+    meta.insert("figure".into(), json!(figure.name()));
+    meta.insert("style".into(), json!(figure.style().name()));
+    meta.insert("tolerance".into(), json!(figure.tolerance()));
+    meta.insert("width".into(), json!(figure.width()));
+    meta.insert("height".into(), json!(figure.height()));
+    if let Some(first) = figure.panels().first() {
+        meta.insert("page_from_world".into(), coefficients(first.transform()));
+    }
+    let panels = figure.panels().iter().map(|p| {
+        let r = p.rect();
+        json!({
+            "id": p.id(),
+            "page_from_world": coefficients(p.transform()),
+            "rect": [r.x, r.y, r.width, r.height],
+        })
+    });
+    meta.insert("panels".into(), panels.collect());
+    let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
+    let mut element = Element::new("metadata");
+    element.append(svg::node::Text::new(json));
+    element
+}
+
+/// The figure as SVG text: `<metadata>` JSON (DESIGN.md §4), a paper
+/// rectangle, one `<g data-page-from-world>` per panel.
+pub fn to_svg(figure: &Figure) -> String {
+    let style = figure.style();
+    let (w, h) = (figure.width(), figure.height());
+    // Labels stay a little inside the page.
+    let page = PageRect::new(2.0, 2.0, w - 4.0, h - 4.0);
+    let paper = Rectangle::new()
+        .set("id", "paper")
+        .set("x", 0)
+        .set("y", 0)
+        .set("width", fmt(w))
+        .set("height", fmt(h))
+        .set("fill", style.paper());
+    let mut doc = Document::new()
+        .set("width", fmt(w))
+        .set("height", fmt(h))
+        .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
+        .set("font-family", figure.font().css_family())
+        .add(metadata(figure))
+        .add(paper);
+    for panel in figure.panels() {
+        let room = label_room(panel, &page);
+        doc = doc.add(panel_group(panel, style, figure.font(), &room));
+    }
+    let mut s = doc.to_string();
+    s.push('\n');
+    s
+}

@@ -1,0 +1,118 @@
+//! Text on the figure: letters and values placed clear of everything
+//! drawn (once the panel's lines are all known), texts at fixed places
+//! (ticks, axis titles, legends) and the scale notes.
+
+use super::markup::finite;
+use super::text::{BASELINE, starts_italic, text_half, text_node};
+use super::{Ink, PanelWriter, Pending};
+use crate::figure::{Align, RichText, Role, TextSize};
+use crate::geom::{Point, Vector};
+use crate::render::labels::Bounds;
+use crate::render::sizes::{NOTE_LINE, NOTE_SIZE};
+use svg::node::Node;
+use svg::node::element::Group;
+
+impl PanelWriter<'_> {
+    /// A label near `anchor`: kept to be placed after every line of the
+    /// panel is known, so nothing is written now.
+    pub(super) fn label(
+        &mut self,
+        ink: &Ink,
+        anchor: Point,
+        text: &RichText,
+        size: TextSize,
+    ) -> Option<Box<dyn Node>> {
+        let a = self.p(anchor);
+        if !finite(&a) {
+            return None;
+        }
+        self.pending.push(Pending {
+            id: ink.id.to_string(),
+            anchor: a,
+            text: text.clone(),
+            size: self.style.font_size(size),
+            gap: if size == TextSize::Letter { 4.0 } else { 3.0 },
+        });
+        None
+    }
+
+    /// A text set `offset` page units from the page point of `at`,
+    /// aligned there by `align`; labels keep off it.
+    pub(super) fn text(
+        &mut self,
+        ink: &Ink,
+        (at, offset): (Point, Vector),
+        text: &RichText,
+        align: Align,
+        size: TextSize,
+    ) -> Option<Box<dyn Node>> {
+        let c = self.p(at) + offset;
+        if !finite(&c) {
+            return None;
+        }
+        let size = self.style.font_size(size);
+        let half = text_half(text, size, self.font);
+        let (anchor, middle) = match align {
+            Align::Start => ("start", c + Vector::new(half.x, 0.0)),
+            Align::Middle => ("middle", c),
+            Align::End => ("end", c - Vector::new(half.x, 0.0)),
+        };
+        self.obstacles.boxed(Bounds::around(middle, half));
+        Some(Box::new(text_node(
+            ink.id,
+            c,
+            text,
+            size,
+            self.style.pen(Role::Label).colour,
+            anchor,
+            starts_italic(text),
+        )))
+    }
+
+    /// Lines of a note from the page point `corner` (top left), all in one
+    /// size, small enough for the longest to fit before the page's right
+    /// edge.
+    pub(super) fn note(
+        &mut self,
+        ink: &Ink,
+        corner: Point,
+        lines: &[RichText],
+    ) -> Option<Box<dyn Node>> {
+        let mut g = ink.tag(Group::new());
+        let colour = self.style.pen(Role::Label).colour;
+        let size = self.note_size(corner, lines);
+        for (i, line) in lines.iter().enumerate() {
+            let y = corner.y + size * 0.8 + NOTE_LINE * i as f64;
+            let half = text_half(line, size, self.font);
+            self.obstacles.boxed(Bounds::around(
+                Point::new(corner.x + half.x, y - BASELINE * size),
+                half,
+            ));
+            g = g.add(text_node(
+                &format!("{}-{}", ink.id, i + 1),
+                Point::new(corner.x, y - BASELINE * size),
+                line,
+                size,
+                colour,
+                "start",
+                false,
+            ));
+        }
+        Some(Box::new(g))
+    }
+
+    /// The size of a note's lines: [`NOTE_SIZE`], or less where the
+    /// longest would not fit between `corner` and the page's right edge.
+    fn note_size(&self, corner: Point, lines: &[RichText]) -> f64 {
+        let room = (self.page_width - corner.x - 8.0).max(10.0);
+        let widest = lines
+            .iter()
+            .map(|l| l.width(self.font, NOTE_SIZE))
+            .fold(0.0, f64::max);
+        if widest > room {
+            NOTE_SIZE * room / widest
+        } else {
+            NOTE_SIZE
+        }
+    }
+}

@@ -1,0 +1,107 @@
+//! Text: `<text>` elements of rich runs, and the boxes that keep labels
+//! and notes clear of each other.
+
+use super::markup::{Raw, escape};
+use crate::figure::{Font, RichText, Role, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
+use crate::geom::{Point, Vector};
+use crate::render::number::fmt;
+use std::fmt::Write as _;
+use svg::node::Node;
+use svg::node::element::Element;
+
+/// Where [`text_node`] puts the baseline: this fraction of the size below
+/// the text's centre (half the cap height, near enough).
+pub(super) const BASELINE: f64 = 0.35;
+
+/// Half the width and height of the box about a text's centre that holds
+/// its ink (advances and glyph bounds of `font`) with 1 unit to spare, for
+/// placement.
+pub(super) fn text_half(text: &RichText, size: f64, font: Font) -> Vector {
+    let b = text.measure(font, size);
+    let baseline = BASELINE * size;
+    Vector::new(
+        0.5 * b.width + 1.0,
+        (b.above - baseline).max(b.below + baseline) + 1.0,
+    )
+}
+
+pub(super) fn starts_italic(text: &RichText) -> bool {
+    text.runs().first().is_some_and(|r| r.italic)
+}
+
+/// A run's characters escaped, with spaces at its ends made no-break so
+/// that no renderer drops them at a `<tspan>` boundary.
+fn run_text(s: &str) -> String {
+    let t = s.trim_matches(' ');
+    if t.is_empty() {
+        return "\u{a0}".repeat(s.len());
+    }
+    let lead = s.len() - s.trim_start_matches(' ').len();
+    let trail = s.len() - s.trim_end_matches(' ').len();
+    format!(
+        "{}{}{}",
+        "\u{a0}".repeat(lead),
+        escape(t),
+        "\u{a0}".repeat(trail)
+    )
+}
+
+/// `<tspan>` runs; `size` is the base size.
+fn runs_markup(text: &RichText, size: f64, base_italic: bool) -> String {
+    let mut out = String::new();
+    let mut shift = 0.0;
+    for run in text.runs() {
+        let dy = if run.subscript {
+            SUBSCRIPT_DROP * size
+        } else if run.superscript {
+            -SUPERSCRIPT_RISE * size
+        } else {
+            0.0
+        };
+        let mut attrs = String::new();
+        if dy != shift {
+            let _ = write!(attrs, " dy=\"{}\"", fmt(dy - shift));
+            shift = dy;
+        }
+        if run.subscript || run.superscript {
+            let _ = write!(attrs, " font-size=\"{}\"", fmt(SUBSCRIPT_SIZE * size));
+        }
+        if run.italic != base_italic {
+            let _ = write!(
+                attrs,
+                " font-style=\"{}\"",
+                if run.italic { "italic" } else { "normal" }
+            );
+        }
+        if attrs.is_empty() {
+            out.push_str(&run_text(&run.text));
+        } else {
+            let _ = write!(out, "<tspan{attrs}>{}</tspan>", run_text(&run.text));
+        }
+    }
+    out
+}
+
+/// A `<text>`; `italic` is the base style its runs differ from. Written as
+/// a plain element so that no line breaks get between its runs.
+pub(super) fn text_node(
+    id: &str,
+    centre: Point,
+    text: &RichText,
+    size: f64,
+    colour: &str,
+    anchor: &str,
+    italic: bool,
+) -> Element {
+    let mut t = Element::new("text");
+    t.assign("id", id);
+    t.assign("class", Role::Label.name());
+    t.assign("x", fmt(centre.x));
+    t.assign("y", fmt(centre.y + BASELINE * size));
+    t.assign("font-size", fmt(size));
+    t.assign("fill", colour);
+    t.assign("text-anchor", anchor);
+    t.assign("font-style", if italic { "italic" } else { "normal" });
+    t.append(Raw(runs_markup(text, size, italic)));
+    t
+}
