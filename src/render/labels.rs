@@ -166,7 +166,7 @@ pub(crate) fn place(
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
         let b = Bounds::around(centre, half);
-        let mut cost = obstacles.cost(&b.inflate(1.5));
+        let mut cost = obstacles.cost(&b.inflate(CLEARANCE));
         if !b.inside(page) {
             cost += 1e6;
         }
@@ -192,6 +192,9 @@ pub(crate) fn place(
     }
     best.2
 }
+
+/// Room a label keeps from what it avoids, page units.
+const CLEARANCE: f64 = 1.0;
 
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;

@@ -26,11 +26,11 @@ use serde_json::{Value, json};
 use svg::Document;
 use svg::node::Node;
 use svg::node::element::{ClipPath, Definitions, Element, Group, Rectangle};
-use text::{starts_italic, text_half, text_node};
+use text::{ink_box, starts_italic, text_node};
 
 /// The farthest a label's box may be put from its anchor, in font sizes
 /// (a letter's glyphs within 1.5 em of its point).
-const REACH: f64 = 1.42;
+const REACH: f64 = 1.35;
 
 /// A label waiting to be placed once every line is known.
 struct Pending {
@@ -216,12 +216,12 @@ impl PanelWriter<'_> {
     fn place_labels(mut self, mut g: Group, room: &PageRect) -> Group {
         let colour = self.style.pen(Role::Label).colour;
         for p in std::mem::take(&mut self.pending) {
-            let half = text_half(&p.text, p.size, self.font);
+            let (half, rise) = ink_box(&p.text, p.size, self.font);
             let centre = place(p.anchor, half, p.gap, REACH * p.size, &self.obstacles, room);
             self.obstacles.boxed(Bounds::around(centre, half));
             g = g.add(text_node(
                 &p.id,
-                centre,
+                centre + crate::geom::Vector::new(0.0, rise),
                 &p.text,
                 p.size,
                 colour,

@@ -25,6 +25,17 @@ pub(super) fn text_half(text: &RichText, size: f64, font: Font) -> Vector {
     )
 }
 
+/// The half-size of the box around the ink of `text` (a unit of room on
+/// every side), and the downward shift from the box's centre to the
+/// point [`text_node`] takes (`BASELINE` × `size` above the baseline):
+/// the box of a placed label, tight above and below (a subscript's drop
+/// or a letter's descender counts only on its own side).
+pub(super) fn ink_box(text: &RichText, size: f64, font: Font) -> (Vector, f64) {
+    let b = text.measure(font, size);
+    let half = Vector::new(0.5 * b.width + 1.0, 0.5 * (b.above + b.below) + 1.0);
+    (half, 0.5 * (b.above - b.below) - BASELINE * size)
+}
+
 pub(super) fn starts_italic(text: &RichText) -> bool {
     text.runs().first().is_some_and(|r| r.italic)
 }
