@@ -16,11 +16,13 @@
 //! [`InvertedChain`] (the four inversions).
 
 mod centres;
+mod check;
 mod cylindric;
 mod inversion;
 mod quadric;
 
 pub use centres::{CENTRE_NAMES, ChainCentres, SlotConstruction};
+pub use check::{ChainCheckRow, arc_position_by_iteration, quadric_sweep, slot_sweep};
 pub use cylindric::{ConvergenceRow, CylindricChain, CylindricPose, slot_convergence};
 pub use inversion::{Inversion, InversionPose, InvertedChain, LinkMotion};
 pub use quadric::{

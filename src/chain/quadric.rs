@@ -340,8 +340,11 @@ impl QuadricPose {
                 reason: format!("the crank of this chain reaches only {}", describe(&chain)),
             });
         }
-        // Within the tolerance of a toggle, the toggle itself.
-        let [outer, inner] = [outer, inner].map(|x| if x <= tol { 0.0 } else { x });
+        // Within rounding of a toggle (or beyond it within the tolerance),
+        // the toggle itself. The factors are squares of lengths: the
+        // tolerance on them would be its square root on the height.
+        let rounding = 8.0 * f64::EPSILON * (a + b + c + d) * (a + b + c + d);
+        let [outer, inner] = [outer, inner].map(|x| if x <= rounding { 0.0 } else { x });
         // Distances along the diagonal from B and from O_cd to the foot of
         // the perpendicular from A, and its height.
         let (along, back, height) = if fl == 0.0 {

@@ -6,7 +6,7 @@ use serde_json::{Value, json};
 use slider_crank::analytic::statics::{self, Friction};
 use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
 use slider_crank::geom::{Intersection, Point};
-use slider_crank::{Angle, Kinematics, Result, SliderCrank};
+use slider_crank::{Angle, ChainCentres, Kinematics, Result, SliderCrank};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -38,6 +38,8 @@ pub struct AnalyzeArgs {
     /// Print JSON (DESIGN.md §4): one object, or an array for several angles
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub chain: super::chain::ChainArgs,
 }
 
 /// Everything computed at one angle.
@@ -47,7 +49,7 @@ struct Report {
     c: Point,
     b: Point,
     a: Point,
-    d: Option<Point>,
+    d: Intersection,
     e: Point,
     f: Point,
     g: Point,
@@ -55,6 +57,7 @@ struct Report {
     exact: Kinematics,
     graphical: [f64; 4],
     statics: Option<Statics>,
+    centres: ChainCentres,
 }
 
 struct Statics {
@@ -121,10 +124,7 @@ fn analyse(
         c: pose.c(),
         b: pose.b(),
         a: pose.a(),
-        d: match d.d() {
-            Intersection::Point(p) => Some(p),
-            _ => None,
-        },
+        d: d.d(),
         e: e.e(),
         f: kisch.points().f(),
         g: kisch.points().g(),
@@ -132,6 +132,7 @@ fn analyse(
         exact,
         graphical,
         statics,
+        centres: ChainCentres::of_slider_crank(&pose),
     })
 }
 
@@ -142,7 +143,7 @@ fn to_json(m: &SliderCrank, r: &Report) -> Value {
         "omega": num(r.omega),
         "points": {
             "C": point_json(r.c), "B": point_json(r.b), "A": point_json(r.a),
-            "D": opt_point_json(r.d), "E": point_json(r.e), "F": point_json(r.f),
+            "D": super::chain::centre_json(&r.d), "E": point_json(r.e), "F": point_json(r.f),
             "G": point_json(r.g), "H": opt_point_json(r.h),
         },
         "analytic": {
@@ -159,6 +160,7 @@ fn to_json(m: &SliderCrank, r: &Report) -> Value {
             "rod_angular_velocity": num(r.graphical[2]),
             "rod_angular_acceleration": num(r.graphical[3]),
         },
+        "virtual_centres": super::chain::centres_json(&r.centres),
     });
     if let Some(s) = &r.statics {
         let (with_friction, locking) = match s.with_friction {
@@ -193,7 +195,7 @@ fn to_text(r: &Report) -> String {
         ("C", Some(r.c)),
         ("B", Some(r.b)),
         ("A", Some(r.a)),
-        ("D", r.d),
+        ("D", r.d.point()),
         ("E", Some(r.e)),
         ("F", Some(r.f)),
         ("G", Some(r.g)),
@@ -274,6 +276,15 @@ fn to_text(r: &Report) -> String {
 /// Runs the subcommand, returning the whole output (printed only on success).
 pub fn run(args: &AnalyzeArgs) -> Result<String> {
     let m = args.mechanism.mechanism()?;
+    if args.chain.is_set() && args.torque.is_some() {
+        return Err(slider_crank::Error::Parse(
+            "--torque applies to the engine only, not with --slot-radius, --links or --inversion"
+                .into(),
+        ));
+    }
+    if let Some(out) = super::chain::analyze(m, &args.chain, &args.speed, &args.angle, args.json)? {
+        return Ok(out);
+    }
     let omega = args.speed.omega()?;
     let angles = parse_angles(&args.angle)?;
     if let Some(t) = args.torque.filter(|t| !t.is_finite()) {

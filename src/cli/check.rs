@@ -22,6 +22,8 @@ pub struct CheckArgs {
     /// per unit ω)
     #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_TOLERANCE, value_name = "T")]
     pub tolerance: f64,
+    #[command(flatten)]
+    pub chain: super::chain::ChainArgs,
 }
 
 /// Runs the check: the report and whether every quantity passed.
@@ -39,6 +41,9 @@ pub fn run(args: &CheckArgs) -> Result<(String, bool)> {
             value: args.samples as f64,
             reason: "give between 1 and 100000000 poses".into(),
         });
+    }
+    if let Some(done) = super::chain::check(m, &args.chain, args.samples, args.tolerance)? {
+        return Ok(done);
     }
     let report = sweep(&m, args.samples);
     let mut out = format!(
