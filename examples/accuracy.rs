@@ -43,7 +43,7 @@ fn klein_direct(p: &Pose) -> Option<f64> {
 fn kisch_direct(p: &Pose) -> Option<f64> {
     let e = VelocityLine::construct(p).e();
     let b = p.b();
-    let around_b = Circle::new(b, (e - b).norm());
+    let around_b = Circle::new(b, (e - b).norm()).expect("finite points");
     let semi = Circle::on_diameter(p.a(), b);
     let h = match semi.intersect_circle(&around_b, 0.0) {
         CircleIntersection::Two(h, _) | CircleIntersection::Tangent(h) => h,

@@ -57,9 +57,16 @@ impl Angle {
 
     /// The angle of `radians` radians. No exact reduction is possible here
     /// (π is not a float); prefer [`Angle::from_degrees`] for given angles.
+    /// The reduced angle is in `[0, 2π)` and its degrees in `[0, 360)`
+    /// even where rounding would give 2π (a tiny negative angle is 0).
     pub fn from_radians(radians: f64) -> Result<Self> {
         let radians = finite("angle", radians)?;
-        let reduced = radians.rem_euclid(2.0 * PI);
+        let mut reduced = radians.rem_euclid(2.0 * PI);
+        // rem_euclid(−1e-17) rounds up to 2π itself; and just below 2π the
+        // degrees may round up to 360.
+        if reduced >= 2.0 * PI || reduced.to_degrees() >= 360.0 {
+            reduced = 0.0;
+        }
         let (sin, cos) = radians.sin_cos();
         Ok(Self {
             degrees: reduced.to_degrees(),
@@ -130,6 +137,16 @@ mod tests {
     fn tiny_negative_angle_reduces_into_range() {
         let a = Angle::from_degrees(-1e-20).unwrap();
         assert!((0.0..360.0).contains(&a.degrees()));
+    }
+
+    #[test]
+    fn tiny_negative_radians_reduce_into_range() {
+        // Issue 9 (10): −1e-17 rad gave 360° and 2π.
+        for r in [-1e-17, -1e-300, -5e-324, -0.0, 2.0 * PI, -2.0 * PI, 1e300] {
+            let a = Angle::from_radians(r).unwrap();
+            assert!((0.0..360.0).contains(&a.degrees()), "{r}: {}", a.degrees());
+            assert!((0.0..2.0 * PI).contains(&a.radians()), "{r}");
+        }
     }
 
     #[test]

@@ -64,6 +64,46 @@ pub enum Error {
     /// Reading or writing a file failed.
     #[error("{0}")]
     Io(String),
+    /// A computation reached one of its limits (the evaluations, halvings
+    /// or segments of a curve); the message says what can be changed.
+    #[error("{0}")]
+    Limit(String),
+}
+
+impl Error {
+    /// The same error with every control character of its texts (a
+    /// newline or carriage return quoted from a user's file) written as an
+    /// escape (`\n`), so that the message is one line.
+    pub fn one_line(self) -> Self {
+        match self {
+            Error::OutOfRange {
+                name,
+                value,
+                reason,
+            } => Error::OutOfRange {
+                name,
+                value,
+                reason: escape_controls(&reason),
+            },
+            Error::Parse(m) => Error::Parse(escape_controls(&m)),
+            Error::Io(m) => Error::Io(escape_controls(&m)),
+            Error::Limit(m) => Error::Limit(escape_controls(&m)),
+            e => e,
+        }
+    }
+}
+
+/// `text` with control characters escaped (`\n`, `\r`, `\u{1b}`).
+fn escape_controls(text: &str) -> String {
+    text.chars()
+        .map(|c| {
+            if c.is_control() {
+                c.escape_default().to_string()
+            } else {
+                c.to_string()
+            }
+        })
+        .collect()
 }
 
 /// A number as a message shows it: plainly in the usual range, in
@@ -134,5 +174,12 @@ mod tests {
             value: -0.5,
         };
         assert_eq!(e.to_string(), "friction must not be negative, got -0.5");
+    }
+
+    #[test]
+    fn quoted_newlines_are_escaped() {
+        // Found by fuzzing: a layer name "a\nb" in a scene file.
+        let e = Error::Parse("unknown variant `a\nb\r`".into()).one_line();
+        assert_eq!(e.to_string(), "unknown variant `a\\nb\\r`");
     }
 }

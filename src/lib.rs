@@ -50,7 +50,8 @@
 //! let (figure, computed) = scene.build();
 //! assert_eq!(computed.instant_centre, 0);              // Kisch needs no D
 //! let svg = to_svg(&figure);
-//! assert!(svg.contains(r#"id="point-G""#) && scene.has(Layer::Kisch));
+//! // G is lettered in the enlarged detail of the construction.
+//! assert!(svg.contains(r#"id="detail-point-G""#) && scene.has(Layer::Kisch));
 //! ```
 #![deny(missing_docs)]
 
@@ -62,12 +63,13 @@ pub mod diagram;
 mod error;
 pub mod figure;
 pub mod geom;
+pub mod input;
 mod mechanism;
 pub mod render;
 pub mod scene;
 pub mod table;
 
-pub use analytic::kinematics::{Kinematics, rpm_to_omega};
+pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
 pub use angle::Angle;
 pub use chain::{
     Assembly, ChainCentres, ConvergenceRow, CrankReach, CylindricChain, CylindricPose,
@@ -75,7 +77,7 @@ pub use chain::{
     QuadricPose, SlotConstruction, slot_convergence,
 };
 pub use error::{Error, Result};
-pub use figure::{Figure, FigureName};
+pub use figure::{Figure, FigureName, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
 pub use render::Style;
 pub use scene::{Layer, Notation, Page, Scene};

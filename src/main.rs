@@ -3,7 +3,6 @@
 mod cli;
 
 use clap::{Parser, Subcommand};
-use std::io::Write;
 use std::process::ExitCode;
 
 /// Exact kinematics, statics and the classical graphical constructions of
@@ -36,54 +35,72 @@ enum Command {
     Scene(cli::scene::SceneArgs),
 }
 
-fn print(text: &str) -> ExitCode {
-    let mut out = std::io::stdout().lock();
-    match out.write_all(text.as_bytes()).and_then(|_| out.flush()) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+/// Exit code of a refused run (bad input, unwritable output).
+const REFUSED: u8 = 2;
+
+fn main() -> ExitCode {
+    // Checked before anything opens a file, which could otherwise take the
+    // number of a closed standard output.
+    let mut out = match cli::output::Stdout::open() {
+        Ok(out) => out,
         Err(e) => {
-            eprintln!("slider-crank: error: cannot write output: {e}");
-            ExitCode::from(2)
+            eprintln!("slider-crank: error: cannot write to standard output: {e}");
+            return ExitCode::from(REFUSED);
+        }
+    };
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return parse_error(e),
+    };
+    let result = match &cli.command {
+        Command::Analyze(args) => cli::analyze::run(args, &mut out).map(|()| true),
+        Command::Table(args) => cli::table::run(args, &mut out).map(|()| true),
+        Command::Check(args) => cli::check::run(args, &mut out),
+        Command::Figure(args) => cli::figure::run(args, &mut out).map(|()| true),
+        Command::Scene(args) => cli::scene::run(args, &mut out).map(|()| true),
+    }
+    .and_then(|ok| out.finish().map(|()| ok));
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        // The reader went away (`| head`): nothing to say, but not a success.
+        Err(_) if out.broken_pipe() => ExitCode::from(REFUSED),
+        Err(e) => {
+            eprintln!("slider-crank: error: {}", e.one_line());
+            ExitCode::from(REFUSED)
         }
     }
 }
 
-fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
-        Err(e) => {
-            use clap::error::ErrorKind;
-            if matches!(
-                e.kind(),
-                ErrorKind::DisplayHelp
-                    | ErrorKind::DisplayVersion
-                    | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
-            ) {
-                let _ = e.print();
-                return ExitCode::SUCCESS;
-            }
-            // One line: clap's first line names the problem.
-            let text = e.render().to_string();
-            let first = text.lines().next().unwrap_or("invalid arguments");
-            eprintln!("slider-crank: {first} (see --help)");
-            return ExitCode::from(2);
-        }
-    };
-    let result = match &cli.command {
-        Command::Analyze(args) => cli::analyze::run(args).map(|s| (s, true)),
-        Command::Table(args) => cli::table::run(args).map(|s| (s, true)),
-        Command::Check(args) => cli::check::run(args),
-        Command::Figure(args) => cli::figure::run(args).map(|s| (s, true)),
-        Command::Scene(args) => cli::scene::run(args).map(|s| (s, true)),
-    };
-    match result {
-        Ok((text, ok)) => {
-            let code = print(&text);
-            if ok { code } else { ExitCode::from(1) }
-        }
-        Err(e) => {
-            eprintln!("slider-crank: error: {e}");
-            ExitCode::from(2)
-        }
+/// Help and version print with exit 0; anything else (no subcommand, an
+/// unknown flag) is one line on standard error and exit 2.
+fn parse_error(e: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
+        return match e.print() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(_) => ExitCode::from(REFUSED),
+        };
     }
+    if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+        eprintln!(
+            "slider-crank: a subcommand is required: analyze, table, check, figure or scene (see --help)"
+        );
+        return ExitCode::from(REFUSED);
+    }
+    // One line: clap's first paragraph names the problem (and, for a
+    // missing argument, lists it on the lines after the first).
+    let text = e.render().to_string();
+    let first: Vec<&str> = text
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect();
+    let first = if first.is_empty() {
+        "invalid arguments".to_string()
+    } else {
+        first.join(" ")
+    };
+    eprintln!("slider-crank: {first} (see --help)");
+    ExitCode::from(REFUSED)
 }

@@ -38,8 +38,12 @@ pub struct Table {
     pub notes: Vec<String>,
 }
 
-/// Formats `x` with `decimals` decimals, never as "-0.000".
+/// Formats `x` with `decimals` decimals, never as "-0.000"; from 1e15 on
+/// in exponent form (`1.2500e300`, not 300 digits).
 pub fn fixed(x: f64, decimals: usize) -> String {
+    if x.abs() >= 1e15 {
+        return format!("{:.*e}", decimals, x);
+    }
     let s = format!("{:.*}", decimals, x);
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
         s[1..].to_string()
@@ -51,93 +55,143 @@ pub fn fixed(x: f64, decimals: usize) -> String {
 fn ratio_label(n: f64) -> String {
     if n.is_infinite() {
         "∞".into()
+    } else if n >= 1e15 {
+        format!("{n:e}")
     } else {
         format!("{n}")
+    }
+}
+
+/// A root of the obliquity table: 2 decimals as printed in §35, exponent
+/// form beyond 1e15, ∞ for the infinitely long rod.
+fn root_label(x: f64) -> String {
+    if x.is_infinite() {
+        "∞".into()
+    } else if x >= 1e15 {
+        format!("{x:.2e}")
+    } else {
+        fixed(x, 2)
     }
 }
 
 impl Table {
     /// Renders the table.
     pub fn render(&self, format: Format) -> String {
+        let mut out = String::new();
+        let rows = || self.rows.iter().cloned().map(Ok);
+        let head = Head {
+            title: &self.title,
+            headers: &self.headers,
+            notes: &self.notes,
+        };
+        // Rows held in memory cannot fail.
+        let _ = render_rows(format, &head, rows, &mut |s| {
+            out.push_str(s);
+            Ok(())
+        });
+        out
+    }
+}
+
+/// What a table says around its rows.
+#[derive(Debug, Clone, Copy)]
+pub struct Head<'a> {
+    /// What the table shows.
+    pub title: &'a str,
+    /// Column headers.
+    pub headers: &'a [String],
+    /// Notes printed under the table (text and Markdown only).
+    pub notes: &'a [String],
+}
+
+fn csv_line(cells: &[String]) -> String {
+    let quoted: Vec<String> = cells
+        .iter()
+        .map(|c| {
+            if c.contains(',') {
+                format!("\"{c}\"")
+            } else {
+                c.clone()
+            }
+        })
+        .collect();
+    quoted.join(",") + "\n"
+}
+
+fn text_line(cells: &[String], width: &[usize]) -> String {
+    let padded: Vec<String> = cells
+        .iter()
+        .enumerate()
+        .map(|(i, c)| {
+            let pad = " ".repeat(width[i].saturating_sub(c.chars().count()));
+            if i == 0 {
+                format!("{c}{pad}")
+            } else {
+                format!("{pad}{c}")
+            }
+        })
+        .collect();
+    padded.join("  ").trim_end().to_string() + "\n"
+}
+
+/// Writes a table whose rows are computed as they are written, so that
+/// memory does not grow with the number of rows: `rows` makes a fresh
+/// iterator of the rows each time it is called. It is called twice: a
+/// first pass finds the column widths and any error, so that nothing is
+/// written when a row fails; the second pass writes, one row at a time,
+/// through `out`.
+pub fn render_rows<I>(
+    format: Format,
+    head: &Head,
+    rows: impl Fn() -> I,
+    out: &mut dyn FnMut(&str) -> Result<()>,
+) -> Result<()>
+where
+    I: Iterator<Item = Result<Vec<String>>>,
+{
+    let mut width: Vec<usize> = head.headers.iter().map(|h| h.chars().count()).collect();
+    for row in rows() {
+        for (w, c) in width.iter_mut().zip(row?.iter()) {
+            *w = (*w).max(c.chars().count());
+        }
+    }
+    match format {
+        Format::Csv => out(&csv_line(head.headers))?,
+        Format::Markdown => {
+            out(&format!("**{}**\n\n", head.title))?;
+            out(&format!("| {} |\n", head.headers.join(" | ")))?;
+            out(&format!("|{}\n", "---|".repeat(head.headers.len())))?;
+        }
+        Format::Text => {
+            out(&format!("{}\n\n", head.title))?;
+            out(&text_line(head.headers, &width))?;
+        }
+    }
+    for row in rows() {
+        let row = row?;
         match format {
-            Format::Csv => {
-                let mut out = String::new();
-                let line = |cells: &[String]| {
-                    cells
-                        .iter()
-                        .map(|c| {
-                            if c.contains(',') {
-                                format!("\"{c}\"")
-                            } else {
-                                c.clone()
-                            }
-                        })
-                        .collect::<Vec<_>>()
-                        .join(",")
-                };
-                out.push_str(&line(&self.headers));
-                out.push('\n');
-                for r in &self.rows {
-                    out.push_str(&line(r));
-                    out.push('\n');
-                }
-                out
+            Format::Csv => out(&csv_line(&row))?,
+            Format::Markdown => out(&format!("| {} |\n", row.join(" | ")))?,
+            Format::Text => out(&text_line(&row, &width))?,
+        }
+    }
+    match format {
+        Format::Csv => {}
+        Format::Markdown => {
+            for n in head.notes {
+                out(&format!("\n{n}\n"))?;
             }
-            Format::Markdown => {
-                let mut out = format!("**{}**\n\n", self.title);
-                out.push_str(&format!("| {} |\n", self.headers.join(" | ")));
-                out.push_str(&format!("|{}\n", "---|".repeat(self.headers.len())));
-                for r in &self.rows {
-                    out.push_str(&format!("| {} |\n", r.join(" | ")));
-                }
-                for n in &self.notes {
-                    out.push_str(&format!("\n{n}\n"));
-                }
-                out
+        }
+        Format::Text => {
+            for n in head.notes {
+                out(&format!("\n{n}"))?;
             }
-            Format::Text => {
-                let cols = self.headers.len();
-                let width: Vec<usize> = (0..cols)
-                    .map(|i| {
-                        std::iter::once(&self.headers[i])
-                            .chain(self.rows.iter().map(|r| &r[i]))
-                            .map(|c| c.chars().count())
-                            .max()
-                            .unwrap_or(0)
-                    })
-                    .collect();
-                let line = |cells: &[String]| {
-                    let padded: Vec<String> = cells
-                        .iter()
-                        .enumerate()
-                        .map(|(i, c)| {
-                            let pad = width[i] - c.chars().count();
-                            if i == 0 {
-                                format!("{c}{}", " ".repeat(pad))
-                            } else {
-                                format!("{}{c}", " ".repeat(pad))
-                            }
-                        })
-                        .collect();
-                    padded.join("  ").trim_end().to_string()
-                };
-                let mut out = format!("{}\n\n", self.title);
-                out.push_str(&line(&self.headers));
-                out.push('\n');
-                for r in &self.rows {
-                    out.push_str(&line(r));
-                    out.push('\n');
-                }
-                for n in &self.notes {
-                    out.push_str(&format!("\n{n}"));
-                }
-                if !self.notes.is_empty() {
-                    out.push('\n');
-                }
-                out
+            if !head.notes.is_empty() {
+                out("\n")?;
             }
         }
     }
+    Ok(())
 }
 
 fn check_ratios(ratios: &[f64]) -> Result<()> {
@@ -153,6 +207,20 @@ fn check_ratios(ratios: &[f64]) -> Result<()> {
     Ok(())
 }
 
+/// √(n² − sin²θ) and the error due to obliquity √(n² − sin²θ) − n, in
+/// crank radii, for n > 1 and s = sin θ: computed as n √((1 − s/n)(1 + s/n))
+/// so that no n up to the largest f64 overflows, and the error as
+/// −(s/n) s/(root/n + 1) without cancellation or overflow. n = ∞ gives (∞, 0), the infinitely
+/// long rod.
+pub fn obliquity_error(n: f64, s: f64) -> (f64, f64) {
+    if n.is_infinite() {
+        return (f64::INFINITY, 0.0);
+    }
+    let q = s / n;
+    let unit = ((1.0 - q) * (1.0 + q)).sqrt();
+    (n * unit, -q * s / (unit + 1.0))
+}
+
 /// The textbook's error due to obliquity at θ (default 90°): rows n,
 /// √(n² − sin²θ) and √(n² − sin²θ) − n (in crank radii), 2 decimals as
 /// printed in §35.
@@ -162,10 +230,8 @@ pub fn obliquity(ratios: &[f64], theta_degrees: f64) -> Result<Table> {
     let s = a.sin();
     let mut rows = Vec::new();
     for &n in ratios {
-        let root = ((n - s) * (n + s)).sqrt();
-        // root − n without cancellation.
-        let err = -s * s / (root + n);
-        rows.push(vec![ratio_label(n), fixed(root, 2), fixed(err, 2)]);
+        let (root, err) = obliquity_error(n, s);
+        rows.push(vec![ratio_label(n), root_label(root), fixed(err, 2)]);
     }
     Ok(Table {
         title: format!(
@@ -222,21 +288,39 @@ pub fn kinematics(
     angles: &[f64],
     decimals: usize,
 ) -> Result<Table> {
-    let mut rows = Vec::new();
-    for &d in angles {
-        let pose = mechanism.pose(Angle::from_degrees(d)?);
-        let k = Kinematics::new(&pose, omega)?;
-        rows.push(vec![
-            fixed(d, 1),
-            fixed(k.position, decimals),
-            fixed(k.velocity, decimals),
-            fixed(k.acceleration, decimals),
-            fixed(k.rod_angle.to_degrees(), decimals),
-            fixed(k.rod_angular_velocity, decimals),
-            fixed(k.rod_angular_acceleration, decimals),
-        ]);
-    }
+    let rows = angles
+        .iter()
+        .map(|&d| kinematics_row(mechanism, omega, d, decimals))
+        .collect::<Result<Vec<_>>>()?;
     Ok(Table {
+        rows,
+        ..kinematics_head(mechanism, omega)
+    })
+}
+
+/// One row of [`kinematics`], at `degrees`.
+pub fn kinematics_row(
+    mechanism: &SliderCrank,
+    omega: f64,
+    degrees: f64,
+    decimals: usize,
+) -> Result<Vec<String>> {
+    let pose = mechanism.pose(Angle::from_degrees(degrees)?);
+    let k = Kinematics::new(&pose, omega)?;
+    Ok(vec![
+        fixed(degrees, 1),
+        fixed(k.position, decimals),
+        fixed(k.velocity, decimals),
+        fixed(k.acceleration, decimals),
+        fixed(k.rod_angle.to_degrees(), decimals),
+        fixed(k.rod_angular_velocity, decimals),
+        fixed(k.rod_angular_acceleration, decimals),
+    ])
+}
+
+/// The title and headers of [`kinematics`], without rows.
+pub fn kinematics_head(mechanism: &SliderCrank, omega: f64) -> Table {
+    Table {
         title: format!(
             "Kinematics: r = {}, l = {}, e = {}, ω = {} rad/s",
             mechanism.crank(),
@@ -256,9 +340,9 @@ pub fn kinematics(
         .iter()
         .map(|s| s.to_string())
         .collect(),
-        rows,
+        rows: vec![],
         notes: vec![],
-    })
+    }
 }
 
 /// Ng's Table 2 columns: F (eq. 6), F' (eq. 8) and β (eq. 11 in general
@@ -273,27 +357,46 @@ pub fn forces(
     angles: &[f64],
     decimals: usize,
 ) -> Result<Table> {
-    let mut rows = Vec::new();
-    for &d in angles {
-        let pose = mechanism.pose(Angle::from_degrees(d)?);
-        let (f, fp) = match slider_force(&pose, torque) {
-            None => ("∞".to_string(), "∞".to_string()),
-            Some(f) => {
-                let fp = match with_friction(&pose, f, mu)? {
-                    Friction::Force(x) => fixed(x, decimals),
-                    Friction::SelfLocking(_) => "self-locking".into(),
-                };
-                (fixed(f, decimals), fp)
-            }
-        };
-        rows.push(vec![
-            fixed(d, 0),
-            f,
-            fp,
-            fixed(pose.transmission_angle().to_degrees(), 2),
-        ]);
-    }
+    let rows = angles
+        .iter()
+        .map(|&d| forces_row(mechanism, torque, mu, d, decimals))
+        .collect::<Result<Vec<_>>>()?;
     Ok(Table {
+        rows,
+        ..forces_head(mechanism, torque, mu)
+    })
+}
+
+/// One row of [`forces`], at `degrees`.
+pub fn forces_row(
+    mechanism: &SliderCrank,
+    torque: f64,
+    mu: f64,
+    degrees: f64,
+    decimals: usize,
+) -> Result<Vec<String>> {
+    let pose = mechanism.pose(Angle::from_degrees(degrees)?);
+    let (f, fp) = match slider_force(&pose, torque)? {
+        None => ("∞".to_string(), "∞".to_string()),
+        Some(f) => {
+            let fp = match with_friction(&pose, f, mu)? {
+                Friction::Force(x) => fixed(x, decimals),
+                Friction::SelfLocking(_) => "self-locking".into(),
+            };
+            (fixed(f, decimals), fp)
+        }
+    };
+    Ok(vec![
+        fixed(degrees, 0),
+        f,
+        fp,
+        fixed(pose.transmission_angle().to_degrees(), 2),
+    ])
+}
+
+/// The title and headers of [`forces`], without rows.
+pub fn forces_head(mechanism: &SliderCrank, torque: f64, mu: f64) -> Table {
+    Table {
         title: format!(
             "Static forces (Ng Table 2): r = {}, l = {}, e = {}, T = {}, μ = {}",
             mechanism.crank(),
@@ -306,9 +409,9 @@ pub fn forces(
             .iter()
             .map(|s| s.to_string())
             .collect(),
-        rows,
+        rows: vec![],
         notes: vec![],
-    })
+    }
 }
 
 #[cfg(test)]
@@ -331,6 +434,56 @@ mod tests {
             notes: vec![],
         };
         assert_eq!(t.render(Format::Csv), "a,b\n\"1,5\",2\n");
+    }
+
+    #[test]
+    fn obliquity_of_huge_ratios_is_finite() {
+        // Issue 9 (5): n = 1e308 printed inf. √(n² − 1) − n → −1/(2n).
+        let (root, err) = obliquity_error(1e308, 1.0);
+        assert_eq!(root, 1e308);
+        assert_eq!(err, -0.5 / 1e308);
+        let t = obliquity(&[1e308, f64::INFINITY], 90.0).unwrap();
+        assert_eq!(t.rows[0][..2], ["1e308", "1.00e308"]);
+        assert_eq!(t.rows[1][1..], ["∞", "0.00"]);
+        assert!(!t.render(Format::Csv).contains("inf"));
+    }
+
+    #[test]
+    fn rows_written_one_at_a_time_match_the_whole_table() {
+        let m = SliderCrank::in_line(0.5, 3.0).unwrap();
+        let angles = [0.0, 30.0, 45.0, 90.0];
+        let whole = kinematics(&m, 26.0, &angles, 4).unwrap();
+        let head = kinematics_head(&m, 26.0);
+        let h = Head {
+            title: &head.title,
+            headers: &head.headers,
+            notes: &head.notes,
+        };
+        for format in [Format::Text, Format::Csv, Format::Markdown] {
+            let mut out = String::new();
+            let rows = || angles.iter().map(|&d| kinematics_row(&m, 26.0, d, 4));
+            render_rows(format, &h, rows, &mut |s| {
+                out.push_str(s);
+                Ok(())
+            })
+            .unwrap();
+            assert_eq!(out, whole.render(format));
+        }
+        // A failing row writes nothing.
+        let mut out = String::new();
+        let rows = || {
+            [1e99, f64::NAN]
+                .into_iter()
+                .map(|d| kinematics_row(&m, 26.0, d, 4))
+        };
+        assert!(
+            render_rows(Format::Csv, &h, rows, &mut |s| {
+                out.push_str(s);
+                Ok(())
+            })
+            .is_err()
+        );
+        assert!(out.is_empty());
     }
 
     #[test]

@@ -21,6 +21,17 @@ fn page_from_world(meta: &Value) -> [f64; 6] {
     [v[0], v[1], v[2], v[3], v[4], v[5]]
 }
 
+/// The map of the panel `id`, from the metadata's list of panels.
+fn panel_map(meta: &Value, id: &str) -> [f64; 6] {
+    let panel = meta["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["id"] == id)
+        .unwrap_or_else(|| panic!("no panel {id}"));
+    page_from_world(panel)
+}
+
 fn apply(t: &[f64; 6], p: (f64, f64)) -> (f64, f64) {
     (
         t[0] * p.0 + t[2] * p.1 + t[4],
@@ -149,8 +160,17 @@ fn seed_figures_render_with_points_where_the_world_puts_them() {
         }
         for (letter, world) in points {
             let world = world.unwrap();
+            // Constructed points inside a detail's frame are lettered in the
+            // detail only (its own map, ids prefixed `detail-`).
+            let in_detail = attr(&svg, &format!("point-{letter}"), "cx").is_none()
+                && attr(&svg, &format!("detail-point-{letter}"), "cx").is_some();
+            let (t, prefix) = if in_detail {
+                (panel_map(&meta, "panel-detail"), "detail-")
+            } else {
+                (t, "")
+            };
             let page = apply(&t, world);
-            let id = format!("point-{letter}");
+            let id = format!("{prefix}point-{letter}");
             let on_page = page.0 >= 0.0
                 && page.1 >= 0.0
                 && page.0 <= num(&svg, "paper", "width")
@@ -177,8 +197,8 @@ fn seed_figures_render_with_points_where_the_world_puts_them() {
                 name.name()
             );
             let (lx, ly) = (
-                num(&svg, &format!("label-{letter}"), "x"),
-                num(&svg, &format!("label-{letter}"), "y"),
+                num(&svg, &format!("{prefix}label-{letter}"), "x"),
+                num(&svg, &format!("{prefix}label-{letter}"), "y"),
             );
             let dist = ((lx - page.0).powi(2) + (ly - page.1).powi(2)).sqrt();
             assert!(dist < 48.0, "{} {letter}: label {dist} away", name.name());
@@ -205,20 +225,14 @@ fn assert_clean(svg: &str, what: &str) {
             "{what}: {token} in the SVG"
         );
     }
-    static FONTS: std::sync::OnceLock<std::sync::Arc<usvg::fontdb::Database>> =
-        std::sync::OnceLock::new();
-    let fonts = FONTS.get_or_init(|| {
-        let mut db = usvg::fontdb::Database::new();
-        db.load_system_fonts();
-        std::sync::Arc::new(db)
-    });
     let options = usvg::Options {
-        fontdb: fonts.clone(),
+        fontdb: slider_crank::render::font_database(),
         ..usvg::Options::default()
     };
     let tree = usvg::Tree::from_str(svg, &options).unwrap();
     let size = tree.size();
-    let b = tree.root().abs_stroke_bounding_box();
+    // What is visible: a clipped panel (a detail) counts only inside its clip.
+    let b = tree.root().abs_layer_bounding_box();
     assert!(
         b.left() >= -0.01
             && b.top() >= -0.01

@@ -213,7 +213,7 @@ fn ng_table_2_f_and_beta_against_the_formulas() {
     let mut worst: f64 = 0.0;
     for &(d, f, _, _, beta) in &NG_TABLE_2 {
         let pose = rig().pose(deg(d));
-        let exact = statics::slider_force(&pose, NG_TORQUE).unwrap();
+        let exact = statics::slider_force(&pose, NG_TORQUE).unwrap().unwrap();
         worst = worst.max((exact - f).abs() / exact);
         // β: eq. (11) and the general interior angle agree; printed within
         // 0.035° (π ≈ 3.14 again).
@@ -263,7 +263,7 @@ fn ng_table_2_f_prime_uses_one_rows_phi() {
     }
     // At 90° eq. (8) gives 6.67 N against the printed 7.25 N.
     let pose = rig().pose(deg(90.0));
-    let f = statics::slider_force(&pose, NG_TORQUE).unwrap();
+    let f = statics::slider_force(&pose, NG_TORQUE).unwrap().unwrap();
     let Friction::Force(fp) = statics::with_friction(&pose, f, 1.0).unwrap() else {
         panic!()
     };
@@ -278,7 +278,9 @@ fn ng_minimum_force_at_transmission_angle_90() {
     let mut best = (f64::INFINITY, 0.0);
     for k in 100..1700 {
         let d = k as f64 * 0.1;
-        let f = statics::slider_force(&rig().pose(deg(d)), NG_TORQUE).unwrap();
+        let f = statics::slider_force(&rig().pose(deg(d)), NG_TORQUE)
+            .unwrap()
+            .unwrap();
         if f < best.0 {
             best = (f, d);
         }

@@ -1,7 +1,42 @@
 //! Exact kinematics of the slider and the rod at constant crank speed.
 
-use crate::error::{Result, finite};
+use crate::error::{Error, Result, finite};
 use crate::mechanism::Pose;
+
+/// Largest crank speed |ω| accepted, in rad/s (any unit of time: choose one
+/// that brings the speed in range). With lengths up to
+/// [`crate::MAX_LENGTH`], ω² times a length stays far from overflow; what
+/// is left near the limit of assembly [`Kinematics::new`] checks.
+pub const MAX_OMEGA: f64 = 1e100;
+
+/// Smallest non-zero crank speed |ω| accepted, in rad/s: one turn then
+/// takes 2π/ω ≤ 6.3e100 time units, which a time axis can show.
+pub const MIN_OMEGA: f64 = 1e-100;
+
+/// Checks a crank speed: finite, and 0 or [`MIN_OMEGA`] ≤ |ω| ≤
+/// [`MAX_OMEGA`].
+pub fn check_omega(omega: f64) -> Result<f64> {
+    let omega = finite("omega", omega)?;
+    if omega.abs() > MAX_OMEGA {
+        return Err(Error::OutOfRange {
+            name: "omega",
+            value: omega,
+            reason: format!(
+                "a crank speed is at most {MAX_OMEGA:e} rad/s (give it per a shorter unit of time)"
+            ),
+        });
+    }
+    if omega != 0.0 && omega.abs() < MIN_OMEGA {
+        return Err(Error::OutOfRange {
+            name: "omega",
+            value: omega,
+            reason: format!(
+                "a crank speed is 0 or at least {MIN_OMEGA:e} rad/s (give it per a longer unit of time)"
+            ),
+        });
+    }
+    Ok(omega)
+}
 
 /// Converts revolutions per minute to radians per second (exact π).
 pub fn rpm_to_omega(rpm: f64) -> f64 {
@@ -34,11 +69,15 @@ pub struct Kinematics {
 }
 
 impl Kinematics {
-    /// The exact kinematics of `pose` at crank speed `omega` (finite, any
-    /// sign; 0 gives a mechanism at rest).
+    /// The exact kinematics of `pose` at crank speed `omega` (any sign, at
+    /// most [`MAX_OMEGA`]; 0 gives a mechanism at rest).
+    ///
+    /// Errors: ω not finite or beyond [`MAX_OMEGA`], or a velocity or
+    /// acceleration beyond the largest f64 (a huge crank near the limit of
+    /// assembly, l → r + |e|, spun fast): every field returned is finite.
     pub fn new(pose: &Pose, omega: f64) -> Result<Self> {
-        let omega = finite("omega", omega)?;
-        Ok(Self {
+        let omega = check_omega(omega)?;
+        let k = Self {
             omega,
             position: pose.position(),
             velocity: omega * pose.position_rate(),
@@ -46,7 +85,25 @@ impl Kinematics {
             rod_angle: pose.obliquity(),
             rod_angular_velocity: omega * pose.obliquity_rate(),
             rod_angular_acceleration: omega * omega * pose.obliquity_acceleration(),
-        })
+        };
+        let values = [
+            k.velocity,
+            k.acceleration,
+            k.rod_angular_velocity,
+            k.rod_angular_acceleration,
+        ];
+        if values.iter().all(|v| v.is_finite()) {
+            Ok(k)
+        } else {
+            Err(Error::OutOfRange {
+                name: "omega",
+                value: omega,
+                reason: format!(
+                    "the accelerations at θ = {}° exceed the largest number (about 1.8e308): give ω per a longer unit of time or the lengths in a smaller unit",
+                    pose.angle().degrees()
+                ),
+            })
+        }
     }
 }
 
@@ -90,5 +147,33 @@ mod tests {
         let m = SliderCrank::in_line(1.0, 3.0).unwrap();
         let p = m.pose(Angle::from_degrees(10.0).unwrap());
         assert!(Kinematics::new(&p, f64::NAN).is_err());
+    }
+
+    #[test]
+    fn tiny_speeds_are_refused_but_rest_is_not() {
+        assert!(check_omega(1e-300).is_err());
+        assert_eq!(check_omega(0.0), Ok(0.0));
+        assert_eq!(check_omega(-1e-100), Ok(-1e-100));
+    }
+
+    #[test]
+    fn huge_speeds_are_errors_not_infinities() {
+        // Issue 9 (5): ω = 1e200 gave ±inf and NaN.
+        let m = SliderCrank::in_line(1.0, 3.0).unwrap();
+        let p = m.pose(Angle::from_degrees(0.0).unwrap());
+        let err = Kinematics::new(&p, 1e200).unwrap_err();
+        assert!(
+            err.to_string().starts_with("omega = 1e200 is out of range"),
+            "{err}"
+        );
+        // Within MAX_OMEGA but overflowing near the limit of assembly.
+        let m = SliderCrank::in_line(1e99, 1e99 * (1.0 + 4.0 * f64::EPSILON)).unwrap();
+        let p = m.pose(Angle::from_degrees(1e-9).unwrap());
+        match Kinematics::new(&p, 1e100) {
+            Ok(k) => assert!(k.acceleration.is_finite() && k.velocity.is_finite()),
+            Err(e) => assert!(e.to_string().contains("exceed the largest number"), "{e}"),
+        }
+        let k = Kinematics::new(&m.pose(Angle::from_degrees(0.0).unwrap()), 1e100).unwrap();
+        assert!(k.acceleration.is_finite());
     }
 }

@@ -16,15 +16,30 @@ pub fn om(pose: &Pose) -> f64 {
 }
 
 /// Slider force from crank torque, F_p = T / OM (Ng eq. 6), positive along
-/// +x. `None` at a dead centre, where OM = 0 and no finite slider force
-/// balances a torque.
-pub fn slider_force(pose: &Pose, torque: f64) -> Option<f64> {
+/// +x. `Ok(None)` only at a dead centre, where OM = 0 and no finite slider
+/// force balances a torque.
+///
+/// Errors: a torque that is not finite, or a force beyond the largest f64
+/// (a huge torque on a tiny mechanism: OM is small but not zero).
+pub fn slider_force(pose: &Pose, torque: f64) -> Result<Option<f64>> {
+    let torque = finite("torque", torque)?;
     let om = om(pose);
     if om == 0.0 {
-        return None;
+        return Ok(None);
     }
     let f = torque / om;
-    f.is_finite().then_some(f)
+    if f.is_finite() {
+        Ok(Some(f))
+    } else {
+        Err(Error::OutOfRange {
+            name: "torque",
+            value: torque,
+            reason: format!(
+                "the slider force T/OM at θ = {}° (OM = {om:e}) exceeds the largest number (about 1.8e308): give the torque in a larger unit or the lengths in a smaller one",
+                pose.angle().degrees()
+            ),
+        })
+    }
 }
 
 /// Crank torque balanced by a slider force F along +x, T = F · OM (Ng eq. 2);
@@ -103,15 +118,15 @@ mod tests {
 
     #[test]
     fn dead_centre_has_no_finite_force() {
-        assert_eq!(slider_force(&pose(0.0), 1.0), None);
-        assert_eq!(slider_force(&pose(180.0), 1.0), None);
+        assert_eq!(slider_force(&pose(0.0), 1.0), Ok(None));
+        assert_eq!(slider_force(&pose(180.0), 1.0), Ok(None));
         assert_eq!(torque_from_slider_force(&pose(0.0), 5.0), 0.0);
     }
 
     #[test]
     fn force_and_torque_are_inverse() {
         let p = pose(37.0);
-        let f = slider_force(&p, 0.3).unwrap();
+        let f = slider_force(&p, 0.3).unwrap().unwrap();
         assert!((torque_from_slider_force(&p, f) - 0.3).abs() < 1e-16);
     }
 
@@ -122,9 +137,24 @@ mod tests {
             let p = pose(d);
             let phi = p.obliquity();
             let eq6 = 0.2 / (phi.tan() * (0.025 * p.angle().cos() + 0.072 * phi.cos()));
-            let f = slider_force(&p, 0.2).unwrap();
+            let f = slider_force(&p, 0.2).unwrap().unwrap();
             assert!((f - eq6).abs() < 1e-12 * f, "{d}");
         }
+    }
+
+    #[test]
+    fn overflow_is_an_error_not_a_dead_centre() {
+        // Issue 9 (6): T = 1e308 on r = 1e-100, l = 3e-100 at 45°:
+        // OM ≈ 8.8e-101, not zero.
+        let m = SliderCrank::in_line(1e-100, 3e-100).unwrap();
+        let p = m.pose(Angle::from_degrees(45.0).unwrap());
+        assert!(om(&p) > 8e-101);
+        let err = slider_force(&p, 1e308).unwrap_err();
+        assert!(
+            err.to_string().contains("exceeds the largest number"),
+            "{err}"
+        );
+        assert!(slider_force(&p, f64::NAN).is_err());
     }
 
     #[test]

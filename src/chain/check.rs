@@ -142,9 +142,10 @@ pub fn quadric_sweep(chain: &QuadricChain, samples: usize) -> Vec<ChainCheckRow>
             };
             let deg = angle.degrees();
             let circles = Circle::new(p.b(), chain.coupler())
-                .intersect_circle(&Circle::new(chain.lever_pivot(), chain.lever()), 0.0);
+                .zip(Circle::new(chain.lever_pivot(), chain.lever()))
+                .map(|(one, two)| one.intersect_circle(&two, 0.0));
             let by_circles = match circles {
-                CircleIntersection::Two(x, y) => {
+                Some(CircleIntersection::Two(x, y)) => {
                     let left = cross(&(chain.lever_pivot() - p.b()), &(x - p.b())) > 0.0;
                     Some(if left == (mode == Assembly::Open) {
                         x
@@ -152,7 +153,7 @@ pub fn quadric_sweep(chain: &QuadricChain, samples: usize) -> Vec<ChainCheckRow>
                         y
                     })
                 }
-                CircleIntersection::Tangent(x) => Some(x),
+                Some(CircleIntersection::Tangent(x)) => Some(x),
                 _ => None,
             };
             worst.add(0, deg, by_circles.map(|x| (x - p.a()).norm() / size));

@@ -1,12 +1,13 @@
 //! `slider-crank analyze`: exact and graphical values at one or more angles.
 
-use super::args::{MechanismArgs, SpeedArgs, parse_angles};
+use super::args::{AngleSpec, MechanismArgs, SpeedArgs};
+use super::output::Stdout;
 use clap::Args;
 use serde_json::{Value, json};
 use slider_crank::analytic::statics::{self, Friction};
 use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
 use slider_crank::geom::{Intersection, Point};
-use slider_crank::{Angle, ChainCentres, Kinematics, Result, SliderCrank};
+use slider_crank::{Angle, ChainCentres, Error, Kinematics, Result, SliderCrank};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -74,6 +75,17 @@ fn num(x: f64) -> f64 {
     x + 0.0
 }
 
+/// `x` with `decimals` decimals, in exponent form beyond 1e12 or below
+/// 1e-6 (no 300-digit numbers), right-aligned in `width`.
+fn fixed(x: f64, decimals: usize, width: usize) -> String {
+    let a = x.abs();
+    if a != 0.0 && !(1e-6..1e12).contains(&a) {
+        format!("{:>width$.decimals$e}", num(x))
+    } else {
+        format!("{:>width$.decimals$}", num(x))
+    }
+}
+
 fn point_json(p: Point) -> Value {
     json!([num(p.x), num(p.y)])
 }
@@ -103,7 +115,7 @@ fn analyse(
     let statics = match torque {
         None => None,
         Some(t) => {
-            let force = statics::slider_force(&pose, t);
+            let force = statics::slider_force(&pose, t)?;
             let with_friction = match force {
                 Some(f) => Some(statics::with_friction(&pose, f, mu)?),
                 None => None,
@@ -118,6 +130,15 @@ fn analyse(
             })
         }
     };
+    if let Some(bad) = graphical.iter().find(|g| !g.is_finite()) {
+        return Err(Error::OutOfRange {
+            name: "omega",
+            value: omega,
+            reason: format!(
+                "the values read off the construction at θ = {degrees}° ({bad}) exceed the largest number: give ω per a longer unit of time or the lengths in a smaller unit"
+            ),
+        });
+    }
     Ok(Report {
         degrees: pose.angle().degrees(),
         omega,
@@ -183,7 +204,7 @@ fn to_json(m: &SliderCrank, r: &Report) -> Value {
 
 fn fmt_point(p: Option<Point>) -> String {
     match p {
-        Some(p) => format!("({:.6}, {:.6})", num(p.x), num(p.y)),
+        Some(p) => format!("({}, {})", fixed(p.x, 6, 0), fixed(p.y, 6, 0)),
         None => "at infinity".into(),
     }
 }
@@ -209,9 +230,9 @@ fn to_text(r: &Report) -> String {
     ));
     let k = &r.exact;
     out.push_str(&format!(
-        "  {:<26}{:>20.10}\n",
+        "  {:<26}{}\n",
         "position x_A",
-        num(k.position)
+        fixed(k.position, 10, 20)
     ));
     let rows = [
         ("velocity dx/dt", k.velocity, r.graphical[0]),
@@ -228,38 +249,42 @@ fn to_text(r: &Report) -> String {
         ),
     ];
     out.push_str(&format!(
-        "  {:<26}{:>20.10}\n",
+        "  {:<26}{}\n",
         "rod angle φ (°)",
-        num(k.rod_angle.to_degrees())
+        fixed(k.rod_angle.to_degrees(), 10, 20)
     ));
     for (name, a, g) in rows {
         out.push_str(&format!(
-            "  {:<26}{:>20.10}{:>20.10}\n",
+            "  {:<26}{}{}\n",
             name,
-            num(a),
-            num(g)
+            fixed(a, 10, 20),
+            fixed(g, 10, 20)
         ));
     }
     if let Some(s) = &r.statics {
         out.push_str(&format!("  statics (μ = {})\n", s.mu));
         out.push_str(&format!(
-            "    OM (= CE)                 {:.10}\n",
-            num(s.om)
+            "    OM (= CE)                 {}\n",
+            fixed(s.om, 10, 0)
         ));
         match s.force {
             Some(f) => {
-                out.push_str(&format!("    slider force F_p          {:.10}\n", num(f)));
                 out.push_str(&format!(
-                    "    side thrust F_s           {:.10}\n",
-                    num(s.side_thrust.unwrap_or(0.0))
+                    "    slider force F_p          {}\n",
+                    fixed(f, 10, 0)
+                ));
+                out.push_str(&format!(
+                    "    side thrust F_s           {}\n",
+                    fixed(s.side_thrust.unwrap_or(0.0), 10, 0)
                 ));
             }
             None => out.push_str("    slider force F_p          unbounded (dead centre: OM = 0)\n"),
         }
         match s.with_friction {
-            Some(Friction::Force(f)) => {
-                out.push_str(&format!("    with friction F_p'        {:.10}\n", num(f)))
-            }
+            Some(Friction::Force(f)) => out.push_str(&format!(
+                "    with friction F_p'        {}\n",
+                fixed(f, 10, 0)
+            )),
             Some(Friction::SelfLocking(k)) => out.push_str(&format!(
                 "    with friction F_p'        self-locking (μ|tan φ| = {k:.6} ≥ 1)\n"
             )),
@@ -273,60 +298,89 @@ fn to_text(r: &Report) -> String {
     out
 }
 
-/// Runs the subcommand, returning the whole output (printed only on success).
-pub fn run(args: &AnalyzeArgs) -> Result<String> {
+/// The reports at every angle of `spec`, computed as they are used.
+fn reports<'a>(
+    m: &'a SliderCrank,
+    spec: &'a AngleSpec,
+    omega: f64,
+    args: &'a AnalyzeArgs,
+) -> impl Iterator<Item = Result<Report>> + 'a {
+    spec.iter()
+        .map(move |d| analyse(m, d, omega, args.torque, args.friction))
+}
+
+/// Indents every line of `text` by two spaces (an element of a pretty
+/// JSON array).
+fn indented(text: &str) -> String {
+    text.lines()
+        .map(|l| format!("  {l}"))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+fn pretty(value: &Value) -> Result<String> {
+    serde_json::to_string_pretty(value).map_err(|e| Error::Io(e.to_string()))
+}
+
+/// Runs the subcommand. Rows are computed twice, never held: a first
+/// pass finds any error (so that nothing is printed then), the second
+/// prints each angle as it is computed.
+pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     let m = args.mechanism.mechanism()?;
     if args.chain.is_set() && args.torque.is_some() {
-        return Err(slider_crank::Error::Parse(
+        return Err(Error::Parse(
             "--torque applies to the engine only, not with --slot-radius, --links or --inversion"
                 .into(),
         ));
     }
-    if let Some(out) = super::chain::analyze(m, &args.chain, &args.speed, &args.angle, args.json)? {
-        return Ok(out);
+    if super::chain::analyze(m, &args.chain, &args.speed, &args.angle, args.json, out)? {
+        return Ok(());
     }
     let omega = args.speed.omega()?;
-    let angles = parse_angles(&args.angle)?;
+    let spec = AngleSpec::parse(&args.angle)?;
     if let Some(t) = args.torque.filter(|t| !t.is_finite()) {
-        return Err(slider_crank::Error::NotFinite {
+        return Err(Error::NotFinite {
             name: "torque",
             value: t,
         });
     }
     if !(args.friction >= 0.0 && args.friction.is_finite()) {
-        return Err(slider_crank::Error::OutOfRange {
+        return Err(Error::OutOfRange {
             name: "friction",
             value: args.friction,
             reason: "the coefficient of friction must be a finite number ≥ 0".into(),
         });
     }
-    let reports = angles
-        .iter()
-        .map(|&d| analyse(&m, d, omega, args.torque, args.friction))
-        .collect::<Result<Vec<_>>>()?;
-    if args.json {
-        let value = if reports.len() == 1 && !args.angle.contains([':', ',']) {
-            to_json(&m, &reports[0])
-        } else {
-            Value::Array(reports.iter().map(|r| to_json(&m, r)).collect())
-        };
-        let mut s = serde_json::to_string_pretty(&value)
-            .map_err(|e| slider_crank::Error::Io(e.to_string()))?;
-        s.push('\n');
-        return Ok(s);
+    for r in reports(&m, &spec, omega, args) {
+        r?;
     }
-    let mut out = format!(
-        "slider-crank: r = {}, l = {}, e = {} (n = {}), ω = {:.6} rad/s, V_c = rω = {:.6}\n",
+    if args.json {
+        if !spec.is_list() {
+            if let Some(r) = reports(&m, &spec, omega, args).next() {
+                out.text(&pretty(&to_json(&m, &r?))?)?;
+                out.text("\n")?;
+            }
+            return Ok(());
+        }
+        out.text("[")?;
+        for (i, r) in reports(&m, &spec, omega, args).enumerate() {
+            out.text(if i == 0 { "\n" } else { ",\n" })?;
+            out.text(&indented(&pretty(&to_json(&m, &r?))?))?;
+        }
+        return out.text("\n]\n");
+    }
+    out.text(&format!(
+        "slider-crank: r = {}, l = {}, e = {} (n = {}), ω = {} rad/s, V_c = rω = {}\n",
         m.crank(),
         m.rod(),
         m.offset(),
         m.ratio(),
-        omega,
-        m.crank() * omega
-    );
-    for r in &reports {
-        out.push('\n');
-        out.push_str(&to_text(r));
+        fixed(omega, 6, 0),
+        fixed(m.crank() * omega, 6, 0)
+    ))?;
+    for r in reports(&m, &spec, omega, args) {
+        out.text("\n")?;
+        out.text(&to_text(&r?))?;
     }
-    Ok(out)
+    Ok(())
 }

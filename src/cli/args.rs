@@ -1,6 +1,7 @@
 //! Flags shared by the subcommands and the parsing of angle specifications.
 
 use clap::Args;
+use slider_crank::analytic::kinematics::check_omega;
 use slider_crank::{Error, Result, SliderCrank, rpm_to_omega};
 
 /// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
@@ -10,7 +11,7 @@ pub struct MechanismArgs {
     /// Crank radius r (any length unit, used consistently)
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         default_value_t = 0.5,
         value_name = "R"
     )]
@@ -18,7 +19,7 @@ pub struct MechanismArgs {
     /// Connecting-rod length l; must exceed r + |e| so the crank turns fully
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         default_value_t = 3.0,
         value_name = "L"
     )]
@@ -26,7 +27,7 @@ pub struct MechanismArgs {
     /// Offset e of the line of stroke from the crank centre (0: in line)
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         default_value_t = 0.0,
         value_name = "E"
     )]
@@ -46,27 +47,40 @@ pub struct SpeedArgs {
     /// Crank speed in revolutions per minute [default: 250]
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         value_name = "N",
         conflicts_with = "omega"
     )]
     pub rpm: Option<f64>,
     /// Crank speed ω in rad/s (positive: counter-clockwise)
-    #[arg(long, allow_negative_numbers = true, value_name = "W")]
+    #[arg(long, allow_hyphen_values = true, value_name = "W")]
     pub omega: Option<f64>,
 }
 
 impl SpeedArgs {
     /// ω in rad/s.
     pub fn omega(&self) -> Result<f64> {
-        let omega = match (self.rpm, self.omega) {
-            (_, Some(w)) => check_finite("omega", w)?,
-            (Some(n), None) => rpm_to_omega(check_finite("rpm", n)?),
-            (None, None) => rpm_to_omega(250.0),
-        };
-        Ok(omega)
+        match (self.rpm, self.omega) {
+            (_, Some(w)) => check_omega(w),
+            (Some(n), None) => {
+                let n = check_finite("rpm", n)?;
+                if n.abs() > MAX_RPM {
+                    return Err(Error::OutOfRange {
+                        name: "rpm",
+                        value: n,
+                        reason: format!("a crank speed is at most {MAX_RPM:e} rpm"),
+                    });
+                }
+                check_omega(rpm_to_omega(n))
+            }
+            (None, None) => Ok(rpm_to_omega(250.0)),
+        }
     }
 }
+
+/// Largest |rpm|: the one whose ω is [`slider_crank::MAX_OMEGA`], rounded
+/// down to a round number.
+const MAX_RPM: f64 = 9e100;
 
 fn check_finite(name: &'static str, value: f64) -> Result<f64> {
     if value.is_finite() {
@@ -77,62 +91,135 @@ fn check_finite(name: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Most angles a range may produce.
-pub const MAX_ANGLES: usize = 1_000_000;
+pub const MAX_ANGLES: usize = 100_000;
 
 fn parse_number(text: &str, what: &str) -> Result<f64> {
     let value: f64 = text.trim().parse().map_err(|_| {
         Error::Parse(format!(
-            "invalid {what} '{text}': expected degrees like 45, a list 0,30,60 or a range START:STOP:STEP"
+            "invalid {what} '{}': expected degrees like 45, a list 0,30,60 or a range START:STOP:STEP",
+            shorten(text)
         ))
     })?;
     if !value.is_finite() {
         return Err(Error::Parse(format!(
-            "invalid {what} '{text}': the angle must be a finite number of degrees"
+            "invalid {what} '{}': the angle must be a finite number of degrees",
+            shorten(text)
         )));
     }
     Ok(value)
 }
 
-/// Parses `45`, `0,30,60` or `START:STOP:STEP` (STOP included when the
-/// steps reach it; STEP may be negative to count down).
-pub fn parse_angles(spec: &str) -> Result<Vec<f64>> {
-    let mut out = Vec::new();
-    for part in spec.split(',') {
-        let fields: Vec<&str> = part.split(':').collect();
-        match fields.as_slice() {
-            [one] => out.push(parse_number(one, "angle")?),
-            [start, stop, step] => {
-                let (start, stop, step) = (
-                    parse_number(start, "range start")?,
-                    parse_number(stop, "range stop")?,
-                    parse_number(step, "range step")?,
-                );
-                if step == 0.0 || (stop - start) * step < 0.0 {
-                    return Err(Error::Parse(format!(
-                        "invalid range '{part}': the step must be non-zero and lead from start to stop"
-                    )));
-                }
-                let count = ((stop - start) / step * (1.0 + 1e-12)).floor();
-                if count.is_nan() || count >= MAX_ANGLES as f64 {
-                    return Err(Error::Parse(format!(
-                        "invalid range '{part}': more than {MAX_ANGLES} angles"
-                    )));
-                }
-                for k in 0..=(count as usize) {
-                    out.push(start + step * k as f64);
-                }
-            }
-            _ => {
+/// One part of an angle specification.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum AnglePart {
+    One(f64),
+    /// start + k · step for k = 0 ..= last.
+    Range {
+        start: f64,
+        step: f64,
+        last: usize,
+    },
+}
+
+/// A parsed angle specification (`45`, `0,30,60`, `START:STOP:STEP`), held
+/// as its parts so that a range of a million angles takes no memory.
+#[derive(Debug, Clone, PartialEq)]
+pub struct AngleSpec {
+    parts: Vec<AnglePart>,
+    count: usize,
+}
+
+impl AngleSpec {
+    /// Parses `45`, `0,30,60` or `START:STOP:STEP` (STOP included when the
+    /// steps reach it; STEP may be negative to count down); at most
+    /// [`MAX_ANGLES`] angles.
+    pub fn parse(spec: &str) -> Result<Self> {
+        let mut parts = Vec::new();
+        let mut count = 0usize;
+        for part in spec.split(',') {
+            let parsed = parse_part(part)?;
+            count += match parsed {
+                AnglePart::One(_) => 1,
+                AnglePart::Range { last, .. } => last + 1,
+            };
+            if count > MAX_ANGLES {
                 return Err(Error::Parse(format!(
-                    "invalid angle '{part}': expected degrees like 45 or a range START:STOP:STEP"
+                    "invalid angles '{}': more than {MAX_ANGLES} angles",
+                    shorten(spec)
                 )));
             }
+            parts.push(parsed);
         }
-        if out.len() > MAX_ANGLES {
-            return Err(Error::Parse(format!("more than {MAX_ANGLES} angles")));
-        }
+        Ok(Self { parts, count })
     }
-    Ok(out)
+
+    /// The angles in order.
+    pub fn iter(&self) -> impl Iterator<Item = f64> + '_ {
+        self.parts.iter().flat_map(|p| {
+            let (start, step, last) = match *p {
+                AnglePart::One(a) => (a, 0.0, 0),
+                AnglePart::Range { start, step, last } => (start, step, last),
+            };
+            (0..=last).map(move |k| start + step * k as f64)
+        })
+    }
+
+    /// Whether there is more than one angle or the text asked for a list.
+    pub fn is_list(&self) -> bool {
+        self.parts.len() > 1 || matches!(self.parts[0], AnglePart::Range { .. })
+    }
+}
+
+/// At most 40 characters of a user's text, for a message.
+fn shorten(text: &str) -> String {
+    let mut s: String = text.chars().take(40).collect();
+    if text.chars().count() > 40 {
+        s.push('…');
+    }
+    s
+}
+
+fn parse_part(part: &str) -> Result<AnglePart> {
+    let fields: Vec<&str> = part.split(':').collect();
+    match fields.as_slice() {
+        [one] => Ok(AnglePart::One(parse_number(one, "angle")?)),
+        [start, stop, step] => {
+            let (start, stop, step) = (
+                parse_number(start, "range start")?,
+                parse_number(stop, "range stop")?,
+                parse_number(step, "range step")?,
+            );
+            if step == 0.0 || (stop - start) * step < 0.0 {
+                return Err(Error::Parse(format!(
+                    "invalid range '{}': the step must be non-zero and lead from start to stop",
+                    shorten(part)
+                )));
+            }
+            let count = ((stop - start) / step * (1.0 + 1e-12)).floor();
+            if count.is_nan() || count >= MAX_ANGLES as f64 {
+                return Err(Error::Parse(format!(
+                    "invalid range '{}': more than {MAX_ANGLES} angles",
+                    shorten(part)
+                )));
+            }
+            Ok(AnglePart::Range {
+                start,
+                step,
+                last: count as usize,
+            })
+        }
+        _ => Err(Error::Parse(format!(
+            "invalid angle '{}': expected degrees like 45 or a range START:STOP:STEP",
+            shorten(part)
+        ))),
+    }
+}
+
+/// Parses `45`, `0,30,60` or `START:STOP:STEP` into the list of angles
+/// (see [`AngleSpec::parse`]).
+#[cfg(test)]
+fn parse_angles(spec: &str) -> Result<Vec<f64>> {
+    Ok(AngleSpec::parse(spec)?.iter().collect())
 }
 
 /// Parses a comma-separated list of numbers (`inf` allowed where `allow_inf`).
@@ -173,6 +260,11 @@ mod tests {
         assert_eq!(parse_angles("90:0:-45").unwrap(), vec![90.0, 45.0, 0.0]);
         assert_eq!(parse_angles("0:1:0.1").unwrap().len(), 11);
         assert_eq!(parse_angles("10,20").unwrap(), vec![10.0, 20.0]);
+        let spec = AngleSpec::parse("0:99999:1").unwrap();
+        assert_eq!(spec.count, 100_000);
+        assert_eq!(spec.iter().last(), Some(99_999.0));
+        assert!(AngleSpec::parse("0:100000:1").is_err());
+        assert!(AngleSpec::parse("0:50000:1,0:50000:1").is_err());
     }
 
     #[test]

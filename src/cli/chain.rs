@@ -2,7 +2,8 @@
 //! `--links`, `--inversion`, and `check` for the curved slot and the quadric
 //! chain.
 
-use super::args::{SpeedArgs, parse_angles};
+use super::args::{AngleSpec, SpeedArgs};
+use super::output::Stdout;
 use clap::{Args, ValueEnum};
 use serde_json::{Value, json};
 use slider_crank::chain::{
@@ -227,19 +228,22 @@ fn inversion_json(chain: &InvertedChain, degrees: f64, omega: f64) -> Result<Val
     }))
 }
 
-/// `analyze` for the chain flags: `Ok(None)` when none is given.
+/// `analyze` for the chain flags: `Ok(false)` when none is given. As for
+/// the engine, rows are computed twice, never held: a first pass finds any
+/// error (so that nothing is printed then), the second prints each angle.
 pub fn analyze(
     m: SliderCrank,
     chain: &ChainArgs,
     speed: &SpeedArgs,
     angle_spec: &str,
     as_json: bool,
-) -> Result<Option<String>> {
+    out: &mut Stdout,
+) -> Result<bool> {
     if !chain.is_set() {
-        return Ok(None);
+        return Ok(false);
     }
     let omega = speed.omega()?;
-    let angles = parse_angles(angle_spec)?;
+    let spec = AngleSpec::parse(angle_spec)?;
     let one: Box<dyn Fn(f64) -> Result<Value>> = if let Some(rho) = chain.slot_radius {
         let slot = CylindricChain::new(m, rho)?;
         Box::new(move |d| slot_json(&slot, d, omega))
@@ -250,23 +254,35 @@ pub fn analyze(
         let inv = InvertedChain::new(m, Inversion::from_number(n)?);
         Box::new(move |d| inversion_json(&inv, d, omega))
     };
-    let values = angles.iter().map(|&d| one(d)).collect::<Result<Vec<_>>>()?;
-    let value = if values.len() == 1 && !angle_spec.contains([':', ',']) {
-        values.into_iter().next().expect("one")
-    } else {
-        Value::Array(values)
-    };
+    for d in spec.iter() {
+        one(d)?;
+    }
+    let pretty = |v: &Value| serde_json::to_string_pretty(v).map_err(|e| Error::Io(e.to_string()));
     if as_json {
-        let mut s = serde_json::to_string_pretty(&value).map_err(|e| Error::Io(e.to_string()))?;
-        s.push('\n');
-        return Ok(Some(s));
+        if !spec.is_list() {
+            for d in spec.iter() {
+                out.text(&pretty(&one(d)?)?)?;
+                out.text("\n")?;
+            }
+            return Ok(true);
+        }
+        out.text("[")?;
+        for (i, d) in spec.iter().enumerate() {
+            out.text(if i == 0 { "\n" } else { ",\n" })?;
+            let text = pretty(&one(d)?)?;
+            let lines: Vec<String> = text.lines().map(|l| format!("  {l}")).collect();
+            out.text(&lines.join("\n"))?;
+        }
+        out.text("\n]\n")?;
+        return Ok(true);
     }
-    let mut out = String::new();
-    for v in value.as_array().cloned().unwrap_or_else(|| vec![value]) {
-        flatten("", &v, &mut out);
-        out.push('\n');
+    for d in spec.iter() {
+        let mut text = String::new();
+        flatten("", &one(d)?, &mut text);
+        text.push('\n');
+        out.text(&text)?;
     }
-    Ok(Some(out))
+    Ok(true)
 }
 
 /// One `key.sub = value` line per number, for the text output.

@@ -2,12 +2,23 @@
 //! the whole turn.
 
 use super::args::MechanismArgs;
+use super::output::Stdout;
 use clap::Args;
 use slider_crank::construct::sweep;
 use slider_crank::{Error, Result};
 
-/// Default tolerance of `check`, in the scaled units of DESIGN.md §6.
-pub const DEFAULT_TOLERANCE: f64 = 1e-12;
+/// Default allowance of `check`: a difference passes when it is at most
+/// this many ulps (ε = 2⁻⁵²) times the condition number κ of the quantity
+/// at that pose ([`slider_crank::construct::condition`]).
+pub const DEFAULT_ULPS: f64 = 4.0;
+
+/// Default allowance of `check --slot-radius` and `check --links`: the
+/// largest scaled difference (DESIGN.md §6) between the chain's two
+/// formulations.
+pub const CHAIN_TOLERANCE: f64 = 1e-12;
+
+/// Most poses one check sweeps (about a second of work).
+pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// Sweep the whole turn and compare each construction with the analytic core.
 #[derive(Debug, Args)]
@@ -16,59 +27,72 @@ pub struct CheckArgs {
     pub mechanism: MechanismArgs,
     /// Equally spaced poses over the turn (the exact dead centres, 0°, 90°,
     /// 180° and 270° are always added)
-    #[arg(long, default_value_t = 100_000, value_name = "N")]
+    #[arg(
+        long,
+        default_value_t = 100_000,
+        value_name = "N",
+        allow_hyphen_values = true
+    )]
     pub samples: usize,
-    /// Largest allowed difference, scaled by r (slider) or 1 (rod rates
-    /// per unit ω)
-    #[arg(long, allow_negative_numbers = true, default_value_t = DEFAULT_TOLERANCE, value_name = "T")]
-    pub tolerance: f64,
+    /// Allowed difference per unit of condition number, in the scaled
+    /// units of DESIGN.md §6: a difference passes when at most T · κ
+    /// [default: 4 ulps, 4 × 2⁻⁵² ≈ 8.9e-16]. With --slot-radius or
+    /// --links: the largest allowed scaled difference itself (DESIGN.md §6
+    /// scaling, no condition number) [default there: 1e-12]
+    #[arg(long, allow_hyphen_values = true, value_name = "T")]
+    pub tolerance: Option<f64>,
     #[command(flatten)]
     pub chain: super::chain::ChainArgs,
 }
 
-/// Runs the check: the report and whether every quantity passed.
-pub fn run(args: &CheckArgs) -> Result<(String, bool)> {
+/// Runs the check: the report, and whether every quantity passed.
+pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
     let m = args.mechanism.mechanism()?;
-    if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
+    let tolerance = args.tolerance.unwrap_or(DEFAULT_ULPS * f64::EPSILON);
+    if !(tolerance.is_finite() && tolerance > 0.0) {
         return Err(Error::NotPositive {
             name: "tolerance",
-            value: args.tolerance,
+            value: tolerance,
         });
     }
-    if args.samples == 0 || args.samples > 100_000_000 {
+    if args.samples == 0 || args.samples > MAX_SAMPLES {
         return Err(Error::OutOfRange {
             name: "samples",
             value: args.samples as f64,
-            reason: "give between 1 and 100000000 poses".into(),
+            reason: format!("give between 1 and {MAX_SAMPLES} poses"),
         });
     }
-    if let Some(done) = super::chain::check(m, &args.chain, args.samples, args.tolerance)? {
-        return Ok(done);
+    let chain_tolerance = args.tolerance.unwrap_or(CHAIN_TOLERANCE);
+    if let Some((text, ok)) = super::chain::check(m, &args.chain, args.samples, chain_tolerance)? {
+        stdout.text(&text)?;
+        return Ok(ok);
     }
     let report = sweep(&m, args.samples);
+    let allowed = tolerance / f64::EPSILON;
     let mut out = format!(
-        "check: r = {}, l = {}, e = {} (n = {}), {} poses, tolerance {:e}\n\n",
+        "check: r = {}, l = {}, e = {} (n = {}), {} poses\n\
+         a difference passes when at most {tolerance:.3e} × κ ({allowed:.1} ulps × κ, κ the condition number of the quantity at that pose)\n\n",
         m.crank(),
         m.rod(),
         m.offset(),
         m.ratio(),
         report.poses,
-        args.tolerance
     );
     out.push_str(&format!(
-        "{:<40}{:>14}{:>16}{:>10}  result\n",
-        "quantity (scaled difference)", "worst", "at θ (°)", "poses"
+        "{:<40}{:>12}{:>10}{:>12}{:>14}  result\n",
+        "quantity", "worst diff", "ulps × κ", "κ there", "at θ (°)"
     ));
     let mut ok = true;
-    for (q, err, at, n) in &report.worst {
-        let pass = *err <= args.tolerance;
+    for ((q, err, _, _), (_, ulps, kappa, at)) in report.worst.iter().zip(&report.worst_ulps) {
+        let pass = *ulps <= allowed;
         ok &= pass;
         out.push_str(&format!(
-            "{:<40}{:>14.3e}{:>16.6}{:>10}  {}\n",
+            "{:<40}{:>12.3e}{:>10.2}{:>12.3e}{:>14.6}  {}\n",
             q.name(),
             err,
+            ulps,
+            kappa,
             at,
-            n,
             if pass { "ok" } else { "FAIL" }
         ));
     }
@@ -77,5 +101,6 @@ pub fn run(args: &CheckArgs) -> Result<(String, bool)> {
     } else {
         "\nsome quantities exceed the tolerance\n"
     });
-    Ok((out, ok))
+    stdout.text(&out)?;
+    Ok(ok)
 }

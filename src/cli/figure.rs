@@ -1,8 +1,10 @@
 //! `slider-crank figure NAME`: one of the seeds' figures as SVG or PNG.
 
 use super::args::SpeedArgs;
+use super::output::Stdout;
 use clap::Args;
-use slider_crank::figure::{FigureOptions, Fit};
+use slider_crank::figure::{FigureOptions, Fit, Font};
+use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{to_png, to_svg, write_atomic};
 use slider_crank::{Angle, Error, Figure, FigureName, Layer, Result, SliderCrank, Style};
 use std::path::PathBuf;
@@ -19,10 +21,10 @@ pub struct FigureArgs {
     #[arg(value_name = "NAME")]
     pub name: String,
     /// Crank radius r [default: the figure's, 0.5 ft or Ng's 25 mm]
-    #[arg(long, value_name = "R")]
+    #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub crank: Option<f64>,
     /// Rod length l [default: the figure's, 3 ft or Ng's 72 mm]
-    #[arg(long, value_name = "L")]
+    #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub rod: Option<f64>,
     /// Offset e of the line of stroke [default: 0]
     #[arg(long, value_name = "E", allow_hyphen_values = true)]
@@ -41,6 +43,11 @@ pub struct FigureArgs {
     /// textbook (black ink) or handout (colour) [default: textbook]
     #[arg(long, value_name = "STYLE")]
     pub style: Option<String>,
+    /// Face of the text, bundled (no system fonts needed):
+    /// new-computer-modern (the look of LaTeX books) or libertinus-serif
+    /// [default: new-computer-modern]
+    #[arg(long, value_name = "NAME")]
+    pub font: Option<String>,
     /// Measured data, CSV with a header line: ng-fig-8-forces (columns
     /// angle, force; default examples/ng-experiment.csv, Ng's F'),
     /// ng-fig-7-calibration (force, strain; default Ng's Table 1),
@@ -53,17 +60,18 @@ pub struct FigureArgs {
     #[arg(long, value_name = "FIT")]
     pub fit: Option<String>,
     /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
-    /// printing SVG
-    #[arg(long, value_name = "FILE")]
+    /// printing SVG; `-` prints SVG. A device or FIFO is written in place;
+    /// a symbolic link is followed and its target replaced
+    #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
 
-/// Writes the figure to `out` (PNG for `.png`) or returns its SVG text.
-pub fn emit(figure: &Figure, out: Option<&PathBuf>) -> Result<String> {
+/// Writes the figure to `path` (PNG for `.png`), or its SVG text to
+/// standard output without a path or for `-`.
+pub fn emit(figure: &Figure, path: Option<&PathBuf>, out: &mut Stdout) -> Result<()> {
     let svg = to_svg(figure);
-    match out {
-        None => Ok(svg),
-        Some(path) => {
+    match path {
+        Some(path) if path.as_os_str() != "-" => {
             let png = path
                 .extension()
                 .is_some_and(|e| e.eq_ignore_ascii_case("png"));
@@ -72,14 +80,14 @@ pub fn emit(figure: &Figure, out: Option<&PathBuf>) -> Result<String> {
             } else {
                 svg.into_bytes()
             };
-            write_atomic(path, &bytes)?;
-            Ok(String::new())
+            write_atomic(path, &bytes)
         }
+        _ => out.text(&svg),
     }
 }
 
-/// Runs the subcommand: the SVG text, or nothing when written to a file.
-pub fn run(args: &FigureArgs) -> Result<String> {
+/// Runs the subcommand: SVG on standard output, or the file written.
+pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
     let name = FigureName::from_name(&args.name)?;
     let mechanism = if args.crank.is_some() || args.rod.is_some() || args.offset.is_some() {
         let m = name.mechanism();
@@ -98,6 +106,7 @@ pub fn run(args: &FigureArgs) -> Result<String> {
         None
     };
     let style = args.style.as_deref().map(Style::from_name).transpose()?;
+    let font = args.font.as_deref().map(str::parse::<Font>).transpose()?;
     let Some(mut scene) = name.scene() else {
         if args.layers.is_some() {
             return Err(Error::Parse(format!(
@@ -106,10 +115,7 @@ pub fn run(args: &FigureArgs) -> Result<String> {
             )));
         }
         let data = match &args.data {
-            Some(path) => Some(
-                std::fs::read_to_string(path)
-                    .map_err(|e| Error::Io(format!("cannot read {}: {e}", path.display())))?,
-            ),
+            Some(path) => Some(read_text(path, MAX_DATA_BYTES, "data file")?),
             None => None,
         };
         let options = FigureOptions {
@@ -117,6 +123,7 @@ pub fn run(args: &FigureArgs) -> Result<String> {
             omega,
             angle,
             style,
+            font,
             data,
             fit: args.fit.as_deref().map(Fit::from_name).transpose()?,
         };
@@ -126,7 +133,7 @@ pub fn run(args: &FigureArgs) -> Result<String> {
             }
             (_, e) => e,
         })?;
-        return emit(&figure, args.out.as_ref());
+        return emit(&figure, args.out.as_ref(), out);
     };
     for (given, flag) in [
         (args.data.is_some(), "--data"),
@@ -155,5 +162,8 @@ pub fn run(args: &FigureArgs) -> Result<String> {
     if let Some(s) = style {
         scene = scene.with_style(s);
     }
-    emit(&scene.figure(), args.out.as_ref())
+    if let Some(f) = font {
+        scene = scene.with_font(f);
+    }
+    emit(&scene.figure(), args.out.as_ref(), out)
 }

@@ -5,5 +5,6 @@ pub mod args;
 pub mod chain;
 pub mod check;
 pub mod figure;
+pub mod output;
 pub mod scene;
 pub mod table;

@@ -1,7 +1,10 @@
 //! `slider-crank scene FILE.toml`: a figure described by a scene file.
 
 use super::figure::emit;
+use super::output::Stdout;
 use clap::Args;
+use slider_crank::figure::Font;
+use slider_crank::input::{MAX_SCENE_BYTES, read_text};
 use slider_crank::{Error, Result, Scene};
 use std::path::PathBuf;
 
@@ -11,17 +14,24 @@ pub struct SceneArgs {
     /// The scene file (TOML; see examples/*.toml)
     #[arg(value_name = "FILE.toml")]
     pub file: PathBuf,
+    /// Face of the text, over the file's `font` key: new-computer-modern
+    /// (the look of LaTeX books) or libertinus-serif [default: the file's,
+    /// else new-computer-modern]
+    #[arg(long, value_name = "NAME")]
+    pub font: Option<String>,
     /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
-    /// printing SVG
-    #[arg(long, value_name = "FILE")]
+    /// printing SVG; `-` prints SVG
+    #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
 
 /// Runs the subcommand.
-pub fn run(args: &SceneArgs) -> Result<String> {
-    let text = std::fs::read_to_string(&args.file)
-        .map_err(|e| Error::Io(format!("cannot read {}: {e}", args.file.display())))?;
-    let scene = Scene::from_toml(&text)
+pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
+    let text = read_text(&args.file, MAX_SCENE_BYTES, "scene file")?;
+    let mut scene = Scene::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
-    emit(&scene.figure(), args.out.as_ref())
+    if let Some(name) = &args.font {
+        scene = scene.with_font(name.parse::<Font>()?);
+    }
+    emit(&scene.figure(), args.out.as_ref(), out)
 }

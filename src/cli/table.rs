@@ -1,8 +1,9 @@
 //! `slider-crank table`: the seeds' tables and sweeps.
 
-use super::args::{MechanismArgs, SpeedArgs, parse_angles, parse_list};
+use super::args::{AngleSpec, MechanismArgs, SpeedArgs, parse_list};
+use super::output::Stdout;
 use clap::{Args, ValueEnum};
-use slider_crank::table::{self, Format, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
+use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
 use slider_crank::{Error, Result, SliderCrank};
 
 /// Which table.
@@ -40,7 +41,7 @@ pub struct TableArgs {
     pub format: FormatArg,
     /// Ratios n = l/r for obliquity and acceleration-factor, comma-separated
     /// (inf for the infinitely long rod) [default: the textbook's]
-    #[arg(long, value_name = "LIST")]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub n: Option<String>,
     /// Crank angles in degrees: a list or START:STOP:STEP [default: the
     /// textbook's rows; 90 for obliquity; 0:360:30 for kinematics; 10:160:10
@@ -48,17 +49,17 @@ pub struct TableArgs {
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub angles: Option<String>,
     /// Crank radius (kinematics [default 0.5 ft]; forces [default 25 mm])
-    #[arg(long, allow_negative_numbers = true, value_name = "R")]
+    #[arg(long, allow_hyphen_values = true, value_name = "R")]
     pub crank: Option<f64>,
     /// Rod length (kinematics [default 3 ft]; forces [default 72 mm])
-    #[arg(long, allow_negative_numbers = true, value_name = "L")]
+    #[arg(long, allow_hyphen_values = true, value_name = "L")]
     pub rod: Option<f64>,
     /// Offset of the line of stroke [default 0]
     #[arg(
         long,
         value_name = "E",
         default_value_t = 0.0,
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     pub offset: f64,
     #[command(flatten)]
@@ -66,13 +67,13 @@ pub struct TableArgs {
     /// Crank torque for forces, in force × the length unit [default:
     /// 264.87 N·mm = 1 kg × 9.81 m/s² × 27 mm, the torque Ng's F column
     /// implies]
-    #[arg(long, allow_negative_numbers = true, value_name = "T")]
+    #[arg(long, allow_hyphen_values = true, value_name = "T")]
     pub torque: Option<f64>,
     /// Friction coefficient for forces [default: 1, Ng's 45° tilt]
-    #[arg(long, allow_negative_numbers = true, value_name = "MU")]
+    #[arg(long, allow_hyphen_values = true, value_name = "MU")]
     pub friction: Option<f64>,
     /// Decimals for kinematics [default 4] and forces [default 2]
-    #[arg(long, value_name = "D")]
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub decimals: Option<usize>,
 }
 
@@ -88,14 +89,15 @@ fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
     .mechanism()
 }
 
-/// Runs the subcommand, returning the whole output.
-pub fn run(args: &TableArgs) -> Result<String> {
+/// Runs the subcommand. Every table is written a row at a time: memory
+/// does not grow with the number of angles.
+pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
     let ratios = args
         .n
         .as_deref()
         .map(|s| parse_list(s, "n", true))
         .transpose()?;
-    let angles = args.angles.as_deref().map(parse_angles).transpose()?;
+    let spec = args.angles.as_deref().map(AngleSpec::parse).transpose()?;
     let decimals = args.decimals.unwrap_or(match args.name {
         TableName::Forces => 2,
         _ => 4,
@@ -107,24 +109,51 @@ pub fn run(args: &TableArgs) -> Result<String> {
             reason: "at most 17 decimals are meaningful in f64".into(),
         });
     }
-    let t = match args.name {
+    let format = match args.format {
+        FormatArg::Text => Format::Text,
+        FormatArg::Markdown => Format::Markdown,
+        FormatArg::Csv => Format::Csv,
+    };
+    match args.name {
         TableName::Obliquity => {
             let ratios = ratios.unwrap_or_else(|| vec![4.0, 5.0, 6.0]);
-            let angles = angles.unwrap_or_else(|| vec![90.0]);
-            let mut t = table::obliquity(&ratios, angles[0])?;
-            for &a in &angles[1..] {
-                t.rows.extend(table::obliquity(&ratios, a)?.rows);
-            }
-            t
+            let spec = spec.unwrap_or(AngleSpec::parse("90")?);
+            let first = spec.iter().next().unwrap_or(90.0);
+            let head = table::obliquity(&ratios, first)?;
+            let rows = || {
+                spec.iter()
+                    .flat_map(|a| match table::obliquity(&ratios, a) {
+                        Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
+                        Err(e) => vec![Err(e)],
+                    })
+            };
+            write_rows(format, &head, rows, out)
         }
-        TableName::AccelerationFactor => table::acceleration_factor_table(
-            &ratios.unwrap_or_else(|| TEXTBOOK_RATIOS.to_vec()),
-            &angles.unwrap_or_else(|| TEXTBOOK_ANGLES.to_vec()),
-        )?,
+        TableName::AccelerationFactor => {
+            let ratios = ratios.unwrap_or_else(|| TEXTBOOK_RATIOS.to_vec());
+            let head = table::acceleration_factor_table(&ratios, &[])?;
+            let row = |d: f64| {
+                let t = table::acceleration_factor_table(&ratios, &[d])?;
+                Ok(t.rows.into_iter().next().unwrap_or_default())
+            };
+            match &spec {
+                Some(spec) => write_rows(format, &head, || spec.iter().map(row), out),
+                None => write_rows(format, &head, || TEXTBOOK_ANGLES.into_iter().map(row), out),
+            }
+        }
         TableName::Kinematics => {
             let m = mechanism(args, 0.5, 3.0)?;
-            let angles = angles.unwrap_or_else(|| (0..=12).map(|k| 30.0 * k as f64).collect());
-            table::kinematics(&m, args.speed.omega()?, &angles, decimals)?
+            let omega = args.speed.omega()?;
+            let spec = match &spec {
+                Some(s) => s.clone(),
+                None => AngleSpec::parse("0:360:30")?,
+            };
+            let head = table::kinematics_head(&m, omega);
+            let rows = || {
+                spec.iter()
+                    .map(|d| table::kinematics_row(&m, omega, d, decimals))
+            };
+            write_rows(format, &head, rows, out)
         }
         TableName::Forces => {
             let m = mechanism(args, 25.0, 72.0)?;
@@ -135,14 +164,36 @@ pub fn run(args: &TableArgs) -> Result<String> {
                     value: torque,
                 });
             }
-            let angles = angles.unwrap_or_else(|| (1..=16).map(|k| 10.0 * k as f64).collect());
-            table::forces(&m, torque, args.friction.unwrap_or(1.0), &angles, decimals)?
+            let mu = args.friction.unwrap_or(1.0);
+            let spec = match &spec {
+                Some(s) => s.clone(),
+                None => AngleSpec::parse("10:160:10")?,
+            };
+            let head = table::forces_head(&m, torque, mu);
+            let rows = || {
+                spec.iter()
+                    .map(|d| table::forces_row(&m, torque, mu, d, decimals))
+            };
+            write_rows(format, &head, rows, out)
         }
+    }
+}
+
+/// Writes the rows as they are computed under the title and headers of
+/// `head` (see [`table::render_rows`]).
+fn write_rows<I>(
+    format: Format,
+    head: &table::Table,
+    rows: impl Fn() -> I,
+    out: &mut Stdout,
+) -> Result<()>
+where
+    I: Iterator<Item = Result<Vec<String>>>,
+{
+    let head = Head {
+        title: &head.title,
+        headers: &head.headers,
+        notes: &head.notes,
     };
-    let format = match args.format {
-        FormatArg::Text => Format::Text,
-        FormatArg::Markdown => Format::Markdown,
-        FormatArg::Csv => Format::Csv,
-    };
-    Ok(t.render(format))
+    table::render_rows(format, &head, rows, &mut |s| out.text(s))
 }

@@ -57,6 +57,10 @@ pub struct CheckRow {
     pub analytic: f64,
     /// The scale of DESIGN.md §6: r for the slider, 1 for the rod.
     pub scale: f64,
+    /// The condition number κ of the quantity at this pose (≥ 1, see
+    /// [`condition`]): moving any input (r, l, e, θ) by one part in
+    /// 2⁻⁵² moves the exact scaled value by about κ · 2⁻⁵².
+    pub condition: f64,
 }
 
 impl CheckRow {
@@ -64,6 +68,48 @@ impl CheckRow {
     pub fn scaled_error(&self) -> f64 {
         (self.graphical - self.analytic).abs() / self.scale
     }
+
+    /// The scaled error in units of the rounding the problem itself allows,
+    /// |graphical − analytic| / (scale · ε · κ), ε = 2⁻⁵²: a few for every
+    /// pose, however near the limit of assembly.
+    pub fn ulps(&self) -> f64 {
+        self.scaled_error() / (f64::EPSILON * self.condition)
+    }
+}
+
+/// The condition number κ of `quantity` at `pose`, in the scaled units of
+/// DESIGN.md §6: κ = 1 + T (1 + k (l/w)²), where T is the sum of the
+/// magnitudes of the terms of its formula (scaled), w = l cos φ, and k = 2
+/// for the rates (one w in a denominator), 6 for the accelerations (w³).
+///
+/// Every quantity is a sum of terms that divide by powers of
+/// w = √(l² − h²), h = r sin θ − e. A relative change δ of the inputs
+/// changes w by about δ (l² + h²)/w ≤ 2δ l²/w, so each power of 1/w
+/// multiplies a term's relative sensitivity by 2 (l/w)²; terms that nearly
+/// cancel (the acceleration near 90° when l → r) keep their own
+/// sensitivity, which is why T sums magnitudes. Near the limit of assembly
+/// (l → r + |e|, w → 0 where the rod lines up with the crank) κ grows
+/// without bound: there the answer itself is ill-conditioned, and so is any
+/// construction of it.
+pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
+    let m = pose.mechanism();
+    let (l, h, w) = (m.rod(), pose.rise(), pose.run());
+    let (s, c) = (pose.angle().sin().abs(), pose.angle().cos().abs());
+    let r = m.crank();
+    let (rc_w, h) = (r * c / w, h.abs());
+    // Terms over r (slider) or 1 (rod), as in Pose's formulas.
+    let (terms, k) = match quantity {
+        Quantity::Velocity => (s + c * h / w, 2.0),
+        Quantity::RodAngularVelocity => (rc_w, 2.0),
+        Quantity::AccelerationKisch | Quantity::AccelerationKlein => {
+            (c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0)
+        }
+        Quantity::RodAngularAccelerationKisch | Quantity::RodAngularAccelerationKlein => {
+            (r * s / w + rc_w * rc_w * h / w, 6.0)
+        }
+    };
+    let lw = l / w;
+    1.0 + terms * (1.0 + k * lw * lw)
 }
 
 /// Every construction of `pose` against the analytic core. Klein's rows are
@@ -78,6 +124,7 @@ pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
         graphical,
         analytic,
         scale,
+        condition: condition(pose, quantity),
     };
     let mut rows = vec![
         row(
@@ -130,6 +177,9 @@ pub struct SweepReport {
     /// Per quantity: the largest scaled error, the crank angle (degrees)
     /// where it occurred, and the number of poses where it was available.
     pub worst: Vec<(Quantity, f64, f64, usize)>,
+    /// Per quantity: the largest [`CheckRow::ulps`], the condition number
+    /// κ there and the crank angle (degrees).
+    pub worst_ulps: Vec<(Quantity, f64, f64, f64)>,
 }
 
 impl SweepReport {
@@ -142,19 +192,20 @@ impl SweepReport {
 /// Checks `samples` equally spaced crank angles over the whole turn plus the
 /// exact dead centres, 90° and 270°.
 pub fn sweep(mechanism: &SliderCrank, samples: usize) -> SweepReport {
-    let mut angles: Vec<Angle> = (0..samples)
-        .filter_map(|k| Angle::from_degrees(360.0 * k as f64 / samples as f64).ok())
-        .collect();
-    for d in [0.0, 90.0, 180.0, 270.0] {
-        angles.push(Angle::from_degrees(d).expect("finite"));
-    }
-    for t in [mechanism.outer_dead_centre(), mechanism.inner_dead_centre()] {
-        angles.push(Angle::from_radians(t).expect("finite"));
-    }
+    // Generated as they are checked: memory does not grow with `samples`.
+    let even = (0..samples).map(|k| Angle::from_degrees(360.0 * k as f64 / samples as f64));
+    let quarters = [0.0, 90.0, 180.0, 270.0].map(Angle::from_degrees);
+    let dead =
+        [mechanism.outer_dead_centre(), mechanism.inner_dead_centre()].map(Angle::from_radians);
+    let angles = even.chain(quarters).chain(dead).filter_map(|a| a.ok());
+    let mut poses = 0;
+    let mut worst_ulps: Vec<(Quantity, f64, f64, f64)> =
+        Quantity::ALL.iter().map(|q| (*q, 0.0, 1.0, 0.0)).collect();
     let mut worst: Vec<(Quantity, f64, f64, usize)> =
         Quantity::ALL.iter().map(|q| (*q, 0.0, 0.0, 0)).collect();
-    for angle in &angles {
-        let pose = mechanism.pose(*angle);
+    for angle in angles {
+        poses += 1;
+        let pose = mechanism.pose(angle);
         for row in cross_check(&pose) {
             let slot = worst
                 .iter_mut()
@@ -168,10 +219,20 @@ pub fn sweep(mechanism: &SliderCrank, samples: usize) -> SweepReport {
                 slot.1 = err;
                 slot.2 = angle.degrees();
             }
+            let u = worst_ulps
+                .iter_mut()
+                .find(|w| w.0 == row.quantity)
+                .expect("all listed");
+            let ulps = row.ulps();
+            let ulps = if ulps.is_nan() { f64::INFINITY } else { ulps };
+            if ulps > u.1 {
+                *u = (row.quantity, ulps, row.condition, angle.degrees());
+            }
         }
     }
     SweepReport {
-        poses: angles.len(),
+        poses,
         worst,
+        worst_ulps,
     }
 }

@@ -19,7 +19,7 @@ mod virtual_centres;
 
 pub use acceleration::AccelerationPoints;
 pub use centrode::{Centrode, CentrodeKind};
-pub use check::{CheckRow, Quantity, SweepReport, cross_check, sweep};
+pub use check::{CheckRow, Quantity, SweepReport, condition, cross_check, sweep};
 pub use coupler::CouplerPoint;
 pub use instant_centre::InstantCentre;
 pub use kisch::Kisch;

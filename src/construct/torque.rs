@@ -37,7 +37,10 @@ impl TorqueLine {
         self.m.y
     }
 
-    /// F_p = T / OM along +x (Ng eq. 2, 6); `None` at a dead centre.
+    /// F_p = T / OM along +x (Ng eq. 2, 6); `None` at a dead centre, and
+    /// also when T / OM exceeds the largest f64 (a huge torque on a tiny
+    /// mechanism): [`crate::analytic::statics::slider_force`] tells the two
+    /// apart.
     pub fn slider_force(&self, torque: f64) -> Option<f64> {
         let f = torque / self.m.y;
         (self.m.y != 0.0 && f.is_finite()).then_some(f)

@@ -44,6 +44,33 @@ pub struct Axis {
 /// How many labelled ticks a linear axis aims at.
 const TARGET_TICKS: f64 = 6.0;
 
+/// Largest |value| an axis shows: 1e300, so that spans, round steps and
+/// the page map of values up to it stay finite (any unit: choose one that
+/// brings the data in range).
+pub const MAX_AXIS_VALUE: f64 = 1e300;
+
+/// Smallest positive value a log axis shows (its decades stay normal
+/// numbers, 10⁻³⁰⁰ … 10³⁰⁰).
+pub const MIN_LOG_VALUE: f64 = 1e-300;
+
+/// Most decades of a log axis (9 ticks each).
+pub const MAX_DECADES: f64 = 100.0;
+
+/// Checks that `value` is finite and within ±[`MAX_AXIS_VALUE`].
+fn axis_value(name: &'static str, value: f64) -> Result<f64> {
+    let value = finite(name, value)?;
+    if value.abs() > MAX_AXIS_VALUE {
+        return Err(Error::OutOfRange {
+            name,
+            value,
+            reason: format!(
+                "a plot shows values within ±{MAX_AXIS_VALUE:e} (give the data in a larger unit)"
+            ),
+        });
+    }
+    Ok(value)
+}
+
 /// The round step (1, 2, 2.5 or 5 × 10ᵏ) nearest above `span / target`.
 fn round_step(span: f64, target: f64) -> f64 {
     let raw = span / target;
@@ -96,12 +123,31 @@ fn power_of_ten(k: i32) -> String {
 }
 
 impl Axis {
+    /// The label of the `k`-th multiple of the step.
+    fn label(&self, k: i64) -> String {
+        let step = self.step;
+        if (1e-4..1e6).contains(&step) {
+            return format_number(k as f64 * step, decimals(step));
+        }
+        let p = step.log10().floor() as i32;
+        let mantissa = step / 10f64.powi(p);
+        let v = k as f64 * mantissa;
+        if v == 0.0 {
+            return "0".into();
+        }
+        format!(
+            "{}×{}",
+            format_number(v, decimals(mantissa)),
+            power_of_ten(p)
+        )
+    }
+
     /// A linear axis over `[min, max]` (finite, min < max) with a round
     /// step of about six ticks. The title is [`RichText`] markup
     /// (`V_p (ft/s)`).
     pub fn linear(title: &str, min: f64, max: f64) -> Result<Self> {
-        let min = finite("axis minimum", min)?;
-        let max = finite("axis maximum", max)?;
+        let min = axis_value("axis minimum", min)?;
+        let max = axis_value("axis maximum", max)?;
         let span = max - min;
         if !(span > 0.0 && span.is_finite()) {
             return Err(Error::OutOfRange {
@@ -123,8 +169,8 @@ impl Axis {
     /// nearest round ticks. An empty range (lo = hi) is widened by 1 or by
     /// a tenth of |lo| each way. Errors for non-finite or reversed bounds.
     pub fn nice(title: &str, lo: f64, hi: f64) -> Result<Self> {
-        let lo = finite("axis minimum", lo)?;
-        let hi = finite("axis maximum", hi)?;
+        let lo = axis_value("axis minimum", lo)?;
+        let hi = axis_value("axis maximum", hi)?;
         if lo > hi {
             return Err(Error::OutOfRange {
                 name: "axis maximum",
@@ -138,7 +184,8 @@ impl Axis {
         } else {
             (lo, hi)
         };
-        let step = round_step(hi - lo, TARGET_TICKS);
+        // Halves: hi − lo may exceed the largest f64, hi/2 − lo/2 cannot.
+        let step = round_step(hi / 2.0 - lo / 2.0, TARGET_TICKS / 2.0);
         let min = (lo / step + 1e-9).floor() * step;
         let max = (hi / step - 1e-9).ceil() * step;
         let mut axis = Self::linear(title, min, max)?;
@@ -146,16 +193,35 @@ impl Axis {
         Ok(axis)
     }
 
-    /// A logarithmic axis covering `[lo, hi]` (0 < lo ≤ hi, finite),
-    /// widened outwards to whole powers of ten.
+    /// A logarithmic axis covering `[lo, hi]` ([`MIN_LOG_VALUE`] ≤ lo ≤
+    /// hi ≤ [`MAX_AXIS_VALUE`]), widened outwards to whole powers of ten;
+    /// at most [`MAX_DECADES`] decades.
     pub fn log(title: &str, lo: f64, hi: f64) -> Result<Self> {
-        let lo = finite("axis minimum", lo)?;
-        let hi = finite("axis maximum", hi)?;
+        let lo = axis_value("axis minimum", lo)?;
+        let hi = axis_value("axis maximum", hi)?;
         if !(lo > 0.0 && hi >= lo) {
             return Err(Error::OutOfRange {
                 name: "axis minimum",
                 value: lo,
                 reason: format!("a log axis needs 0 < minimum ≤ maximum ({hi})"),
+            });
+        }
+        if lo < MIN_LOG_VALUE {
+            return Err(Error::OutOfRange {
+                name: "axis minimum",
+                value: lo,
+                reason: format!(
+                    "a log axis shows values from {MIN_LOG_VALUE:e} (give the data in a smaller unit)"
+                ),
+            });
+        }
+        if hi.log10() - lo.log10() > MAX_DECADES {
+            return Err(Error::OutOfRange {
+                name: "axis maximum",
+                value: hi,
+                reason: format!(
+                    "a log axis shows at most {MAX_DECADES} decades (the minimum is {lo:e})"
+                ),
             });
         }
         let a = (lo.log10() + 1e-9).floor();
@@ -227,11 +293,11 @@ impl Axis {
         }
     }
 
-    /// The ticks in increasing order.
+    /// The ticks in increasing order. Labels of a linear axis whose step
+    /// is 10⁶ or more, or below 10⁻⁴, share a power of ten: `2.5×10⁹⁹`.
     pub fn ticks(&self) -> Vec<Tick> {
         match self.scale {
             Scale::Linear => {
-                let d = decimals(self.step);
                 let first = (self.min / self.step - 1e-9).ceil() as i64;
                 let last = (self.max / self.step + 1e-9).floor() as i64;
                 (first..=last)
@@ -239,7 +305,7 @@ impl Axis {
                         let value = k as f64 * self.step;
                         Tick {
                             value,
-                            label: Some(format_number(value, d)),
+                            label: Some(self.label(k)),
                         }
                     })
                     .collect()
@@ -333,6 +399,36 @@ mod tests {
         assert!(Axis::log("x", 1.0, f64::INFINITY).is_err());
         // An empty range is widened, not refused.
         assert_eq!(Axis::nice("x", 0.0, 0.0).unwrap().range(), (-1.0, 1.0));
+    }
+
+    #[test]
+    fn extreme_ranges_are_refused_or_drawn_finite() {
+        // Issue 9 (2): 5e-324 gave a world range of (−inf, 0).
+        let err = Axis::log("t", 5e-324, 1.0).unwrap_err().to_string();
+        assert!(err.contains("a log axis shows values from 1e-300"), "{err}");
+        let a = Axis::log("t", 1e-300, 1e-250).unwrap();
+        assert_eq!(a.world_range(), (-300.0, -250.0));
+        assert!(Axis::log("t", 1e-200, 1e200).is_err());
+        // Issue 9 (9): ±1e308 said "axis minimum must be a finite number, got NaN".
+        let err = Axis::nice("F", -1e308, 1e308).unwrap_err().to_string();
+        assert!(err.contains("a plot shows values within ±1e300"), "{err}");
+        let a = Axis::nice("F", -1e300, 1e300).unwrap();
+        let (lo, hi) = a.range();
+        assert!(lo.is_finite() && hi.is_finite() && lo <= -1e300 && hi >= 1e300);
+    }
+
+    #[test]
+    fn huge_and_tiny_steps_are_labelled_with_a_power_of_ten() {
+        // Issue 9 (9): 100-digit labels left no room for the plot.
+        let a = Axis::nice("v", 0.0, 9e99).unwrap();
+        assert_eq!(a.step(), 2e99);
+        assert_eq!(
+            labels(&a),
+            ["0", "2×10⁹⁹", "4×10⁹⁹", "6×10⁹⁹", "8×10⁹⁹", "10×10⁹⁹"]
+        );
+        let b = Axis::nice("x", 0.0, 2.4e-6).unwrap();
+        assert_eq!(labels(&b)[1], "5×10⁻⁷");
+        assert!(labels(&a).iter().all(|l| l.chars().count() <= 8));
     }
 
     #[test]

@@ -70,16 +70,21 @@ pub struct TraceOptions {
     /// The most segments a trace may emit (default 1 000 000); more is an
     /// error.
     pub max_segments: usize,
+    /// The most evaluations of the curve one trace may make (default
+    /// 1 000 000, well under a second); more is an error
+    /// ([`crate::Error::Limit`]), so that no curve takes unbounded time.
+    pub max_evaluations: usize,
 }
 
 impl TraceOptions {
     /// The defaults: [`DEFAULT_TOLERANCE`], 4 initial pieces, depth 50,
-    /// 1 000 000 segments.
+    /// 1 000 000 segments, 1 000 000 evaluations.
     pub const DEFAULT: Self = Self {
         tolerance: DEFAULT_TOLERANCE,
         initial_pieces: 4,
         max_depth: 50,
         max_segments: 1_000_000,
+        max_evaluations: 1_000_000,
     };
 
     /// The defaults with another tolerance (page units).
@@ -110,9 +115,9 @@ impl Default for TraceOptions {
 /// gives an empty path.
 ///
 /// Errors: a tolerance that is not finite and positive, a range that is not
-/// finite or not increasing, zero pieces, a curve that cannot be fitted
-/// within the depth limit (a jump, for example), or more segments than
-/// allowed.
+/// finite or not increasing, zero pieces; and [`crate::Error::Limit`] for a
+/// curve that cannot be fitted within the depth limit (a jump, for
+/// example), more segments or more evaluations than allowed.
 pub fn trace<C: Curve + ?Sized>(
     curve: &C,
     range: RangeInclusive<f64>,
@@ -164,6 +169,8 @@ pub fn trace<C: Curve + ?Sized>(
         depth,
         max_segments: options.max_segments,
         segments: 0,
+        evaluations: std::cell::Cell::new(0),
+        max_evaluations: options.max_evaluations,
         subpaths: Vec::new(),
         current: None,
     };
@@ -221,6 +228,9 @@ struct Tracer<'a, C: ?Sized> {
     depth: u32,
     max_segments: usize,
     segments: usize,
+    /// Evaluations made so far, and the most allowed.
+    evaluations: std::cell::Cell<usize>,
+    max_evaluations: usize,
     subpaths: Vec<Subpath>,
     /// The subpath being built and the parameter where it ends.
     current: Option<(Subpath, f64)>,
@@ -232,6 +242,7 @@ fn finite_point(p: &Point) -> bool {
 
 impl<C: Curve + ?Sized> Tracer<'_, C> {
     fn node(&self, t: f64) -> Node {
+        self.evaluations.set(self.evaluations.get() + 1);
         let at = self
             .curve
             .eval(t)
@@ -250,8 +261,20 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
         (b.t - a.t > self.min_dt && a.t < m && m < b.t).then_some(m)
     }
 
+    /// An error once the curve has been evaluated more often than allowed.
+    fn budget(&self, t: f64) -> Result<()> {
+        if self.evaluations.get() <= self.max_evaluations {
+            return Ok(());
+        }
+        Err(Error::Limit(format!(
+            "the curve needs more than {} evaluations to be drawn within {} page units (it turns or jumps too fast near parameter {t})",
+            self.max_evaluations, self.tolerance
+        )))
+    }
+
     /// Any part of the curve between two nodes.
     fn interval(&mut self, a: Node, b: Node) -> Result<()> {
+        self.budget(a.t)?;
         match (a.inside, b.inside) {
             (true, true) => self.fit(a, b),
             (true, false) => {
@@ -359,6 +382,7 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
     /// Fits the piece whose samples at u = 0, 1/4, 1/2, 3/4, 1 are `even`.
     fn fit_samples(&mut self, even: [Node; 5]) -> Result<()> {
         let (a, b) = (even[0], even[4]);
+        self.budget(a.t)?;
         let h = b.t - a.t;
         let mut n = [a; 9];
         for (k, node) in n.iter_mut().enumerate() {
@@ -391,14 +415,10 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
             return self.emit(&a, &b, segment);
         }
         if self.midpoint(&a, &b).is_none() {
-            return Err(Error::OutOfRange {
-                name: "tolerance",
-                value: self.tolerance,
-                reason: format!(
-                    "the curve cannot be drawn within it near parameter {}: {} halvings were not enough (error {error:.3e})",
-                    a.t, self.depth
-                ),
-            });
+            return Err(Error::Limit(format!(
+                "the curve cannot be drawn within {} page units near parameter {}: {} halvings were not enough (error {error:.3e})",
+                self.tolerance, a.t, self.depth
+            )));
         }
         self.fit_samples([n[0], n[1], n[2], n[3], n[4]])?;
         self.fit_samples([n[4], n[5], n[6], n[7], n[8]])
@@ -407,11 +427,10 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
     fn emit(&mut self, a: &Node, b: &Node, segment: Segment) -> Result<()> {
         self.segments += 1;
         if self.segments > self.max_segments {
-            return Err(Error::OutOfRange {
-                name: "tolerance",
-                value: self.tolerance,
-                reason: format!("more than {} segments would be needed", self.max_segments),
-            });
+            return Err(Error::Limit(format!(
+                "the curve needs more than {} segments to be drawn within {} page units",
+                self.max_segments, self.tolerance
+            )));
         }
         match &mut self.current {
             Some((sub, end)) if *end == a.t => {
@@ -702,6 +721,28 @@ mod tests {
         let s = samples(|u| (Point::new(u, u.powi(4)), Vector::new(1.0, 4.0 * u.powi(3))));
         let (_, error) = cubic_fit(&s, 0.0);
         assert!((0.0625 - 1e-15..0.0625 * 1.01).contains(&error), "{error}");
+    }
+
+    #[test]
+    fn the_evaluation_budget_ends_a_trace_with_a_limit() {
+        // Issue 9 (1): a curve that wiggles faster than any halving resolves
+        // (sin 1/t near 0) was halved for minutes; the budget stops it.
+        let wild = |t: f64| {
+            let (s, c) = (1.0 / t).sin_cos();
+            Some((Point::new(t, s), Vector::new(1.0, -c / (t * t))))
+        };
+        let map = PageFromWorld::scale_translate(100.0, 100.0, 0.0, 0.0).unwrap();
+        let frame = Frame::new(Point::new(-1.0, -200.0), Point::new(200.0, 200.0));
+        let options = TraceOptions {
+            max_evaluations: 20_000,
+            ..TraceOptions::default()
+        };
+        let err = trace(&wild, 1e-4..=1.0, &map, &frame, Method::Cubic, &options).unwrap_err();
+        assert!(matches!(err, Error::Limit(_)), "{err:?}");
+        assert!(
+            err.to_string().contains("more than 20000 evaluations"),
+            "{err}"
+        );
     }
 
     #[test]

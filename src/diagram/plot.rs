@@ -5,7 +5,7 @@
 use super::{Axis, Curve, Method, Scale, TraceOptions, trace};
 use crate::error::{Error, Result};
 use crate::figure::{
-    Align, Dash, Item, PageFromWorld, PageRect, Panel, Path, RichText, Role, Shape, Symbol,
+    Align, Dash, Font, Item, PageFromWorld, PageRect, Panel, Path, RichText, Role, Shape, Symbol,
     TextSize,
 };
 use crate::geom::{Frame, Point, Vector};
@@ -58,6 +58,7 @@ pub struct Plot {
     axes: Option<(Axis, Axis)>,
     map: PageFromWorld,
     tolerance: f64,
+    font: Font,
     grid: bool,
     items: Vec<Item>,
     blocks: Vec<Block>,
@@ -65,6 +66,9 @@ pub struct Plot {
     drawn: Vec<Point>,
     caption: Option<RichText>,
 }
+
+/// What a user can change when a curve reaches the curve engine's limits.
+const LIMIT_ADVICE: &str = "a mechanism this close to its limit of assembly (rod = crank + |offset|) changes too fast to draw: give a longer rod or a smaller offset, or data that vary less";
 
 fn too_small(rect: &PageRect) -> Error {
     Error::OutOfRange {
@@ -81,15 +85,23 @@ impl Plot {
     /// A plot named `name` (its panel is `panel-{name}`) filling `rect`,
     /// with abscissa `x` and ordinate `y`; curves are drawn to `tolerance`
     /// page units in the written file. The plot area is `rect` less room
-    /// for tick labels, titles and a caption. Errors when that leaves less
-    /// than 40 × 40 units or the tolerance is not positive.
-    pub fn new(name: &str, rect: PageRect, x: Axis, y: Axis, tolerance: f64) -> Result<Self> {
+    /// for tick labels (measured in `font`, the face the figure is set
+    /// in), titles and a caption. Errors when that leaves less than
+    /// 40 × 40 units or the tolerance is not positive.
+    pub fn new(
+        name: &str,
+        rect: PageRect,
+        x: Axis,
+        y: Axis,
+        tolerance: f64,
+        font: Font,
+    ) -> Result<Self> {
         let tolerance = crate::error::positive("tolerance", tolerance)?;
         let widest = y
             .ticks()
             .iter()
             .filter_map(|t| t.label.as_ref())
-            .map(|l| RichText::parse(l).width_em() * TICK_TEXT)
+            .map(|l| RichText::parse(l).width(font, TICK_TEXT))
             .fold(0.0, f64::max);
         // At least the room of "−0000", so that plots stacked in a column
         // line up.
@@ -100,7 +112,7 @@ impl Plot {
             .rev()
             .find_map(|t| t.label.clone())
             .unwrap_or_default();
-        let right = 0.5 * RichText::parse(&last_x).width_em() * TICK_TEXT + 8.0;
+        let right = 0.5 * RichText::parse(&last_x).width(font, TICK_TEXT) + 8.0;
         let area = PageRect::new(
             rect.x + left,
             rect.y + TOP,
@@ -130,6 +142,7 @@ impl Plot {
             axes: Some((x, y)),
             map,
             tolerance,
+            font,
             grid: false,
             items: Vec::new(),
             blocks: Vec::new(),
@@ -141,14 +154,16 @@ impl Plot {
 
     /// A plot without axes showing the world rectangle `world` whole at
     /// one scale in `rect` (less room for a caption), mirrored in x when
-    /// `mirror`: polar diagrams and curves drawn on the mechanism. Errors
-    /// for an empty rectangle or a non-positive tolerance.
+    /// `mirror`: polar diagrams and curves drawn on the mechanism; legends
+    /// are measured in `font`. Errors for an empty rectangle or a
+    /// non-positive tolerance.
     pub fn world(
         name: &str,
         rect: PageRect,
         world: &Frame,
         mirror: bool,
         tolerance: f64,
+        font: Font,
     ) -> Result<Self> {
         let tolerance = crate::error::positive("tolerance", tolerance)?;
         let area = PageRect::new(rect.x, rect.y, rect.width, rect.height - CAPTION);
@@ -160,17 +175,19 @@ impl Plot {
             value: (world.max() - world.min()).norm(),
             reason: "a world panel needs a rectangle of positive size".into(),
         })?;
-        Ok(Self::with_map(name, rect, area, map, tolerance))
+        Ok(Self::with_map(name, rect, area, map, tolerance, font))
     }
 
     /// A plot without axes with the given map and plot area (a mechanism
-    /// panel taken over from a [`crate::Scene`]).
+    /// panel taken over from a [`crate::Scene`]), legends measured in
+    /// `font`.
     pub(crate) fn with_map(
         name: &str,
         rect: PageRect,
         area: PageRect,
         map: PageFromWorld,
         tolerance: f64,
+        font: Font,
     ) -> Self {
         Self {
             name: name.to_string(),
@@ -179,6 +196,7 @@ impl Plot {
             axes: None,
             map,
             tolerance,
+            font,
             grid: false,
             items: Vec::new(),
             blocks: Vec::new(),
@@ -276,7 +294,13 @@ impl Plot {
                 &self.area.frame(),
                 Method::Cubic,
                 &options,
-            )?;
+            )
+            .map_err(|e| match e {
+                Error::Limit(why) => {
+                    Error::Limit(format!("cannot draw {id}: {why}; {LIMIT_ADVICE}"))
+                }
+                e => e,
+            })?;
             subpaths.extend(traced.subpaths().iter().cloned());
         }
         let page = super::Path::new(subpaths);
@@ -622,7 +646,9 @@ impl Plot {
         let width = block
             .lines
             .iter()
-            .map(|(t, key)| t.width_em() * TICK_TEXT + if key.is_some() { KEY + 8.0 } else { 0.0 })
+            .map(|(t, key)| {
+                t.width(self.font, TICK_TEXT) + if key.is_some() { KEY + 8.0 } else { 0.0 }
+            })
             .fold(0.0, f64::max)
             + 14.0;
         let height = LEGEND_LINE * block.lines.len() as f64 + 8.0;
@@ -764,7 +790,15 @@ mod tests {
             .with_step(90.0)
             .unwrap();
         let y = Axis::nice("y", -1.0, 1.0).unwrap();
-        Plot::new("p", PageRect::new(0.0, 0.0, 400.0, 300.0), x, y, 0.01).unwrap()
+        Plot::new(
+            "p",
+            PageRect::new(0.0, 0.0, 400.0, 300.0),
+            x,
+            y,
+            0.01,
+            Font::default(),
+        )
+        .unwrap()
     }
 
     #[test]
@@ -821,14 +855,32 @@ mod tests {
     fn a_panel_too_small_for_its_axes_is_an_error() {
         let x = Axis::linear("x", 0.0, 1.0).unwrap();
         let y = Axis::linear("y", 0.0, 1.0).unwrap();
-        assert!(Plot::new("p", PageRect::new(0.0, 0.0, 60.0, 60.0), x, y, 0.01).is_err());
+        assert!(
+            Plot::new(
+                "p",
+                PageRect::new(0.0, 0.0, 60.0, 60.0),
+                x,
+                y,
+                0.01,
+                Font::default()
+            )
+            .is_err()
+        );
     }
 
     #[test]
     fn log_axes_take_values() {
         let x = Axis::log("e", 1e-5, 1e-1).unwrap();
         let y = Axis::log("n", 1.0, 1e4).unwrap();
-        let mut p = Plot::new("b", PageRect::new(0.0, 0.0, 400.0, 300.0), x, y, 0.01).unwrap();
+        let mut p = Plot::new(
+            "b",
+            PageRect::new(0.0, 0.0, 400.0, 300.0),
+            x,
+            y,
+            0.01,
+            Font::default(),
+        )
+        .unwrap();
         assert_eq!(p.world_point(1e-3, 100.0), Some(Point::new(-3.0, 2.0)));
         assert_eq!(p.world_point(0.0, 100.0), None);
         p.line(

@@ -203,13 +203,13 @@ impl FigureName {
     pub fn layers(&self) -> Vec<Layer> {
         use Layer::*;
         match self {
-            FigureName::Fig62Displacement => vec![Mechanism, Dimensions],
+            FigureName::Fig62Displacement => vec![Mechanism, Angles, Dimensions],
             FigureName::Fig63Velocity => vec![Mechanism, Velocity],
             FigureName::Fig65Klein => vec![Mechanism, Klein],
             FigureName::Fig66Kisch => vec![Mechanism, Kisch],
             FigureName::Fig67Example => vec![Mechanism, Velocity, Kisch, Scales],
-            FigureName::NgFig1Torque => vec![Mechanism, Torque],
-            FigureName::NgFigA1Velocity => vec![Mechanism, Velocity],
+            FigureName::NgFig1Torque => vec![Mechanism, Angles, Torque, Motion],
+            FigureName::NgFigA1Velocity => vec![Mechanism, Velocity, Motion],
             _ => Vec::new(),
         }
     }
@@ -221,7 +221,7 @@ impl FigureName {
             FigureName::Fig63Velocity | FigureName::Fig65Klein => (760.0, 480.0),
             FigureName::Fig66Kisch => (760.0, 420.0),
             FigureName::Fig67Example => (760.0, 520.0),
-            FigureName::NgFig1Torque => (640.0, 270.0),
+            FigureName::NgFig1Torque => (640.0, 460.0),
             FigureName::NgFigA1Velocity => (600.0, 480.0),
             FigureName::Fig61Centrodes => (760.0, 600.0),
             FigureName::Fig64VelocityDiagrams => (860.0, 860.0),
@@ -242,7 +242,7 @@ impl FigureName {
     /// the mechanism cannot draw.
     pub fn figure(&self, options: &FigureOptions) -> Result<Figure> {
         let Some(mut scene) = self.scene() else {
-            return diagrams::build(*self, options);
+            return diagrams::build(*self, options).map_err(Error::one_line);
         };
         if let Some(bad) = options
             .given()
@@ -262,6 +262,9 @@ impl FigureName {
         }
         if let Some(s) = options.style {
             scene = scene.with_style(s);
+        }
+        if let Some(f) = options.font {
+            scene = scene.with_font(f);
         }
         Ok(scene.figure())
     }

@@ -8,6 +8,7 @@
 
 mod catalogue;
 mod diagrams;
+mod font;
 mod model;
 mod options;
 mod path;
@@ -15,8 +16,9 @@ mod text;
 mod transform;
 
 pub use catalogue::FigureName;
-pub use model::{Align, Dash, Figure, Item, Panel, Role, Shape, Symbol, TextSize};
+pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
+pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use options::{FigureOptions, Fit};
 pub use path::{Path, PathBuilder, PathSegment};
-pub use text::{RichText, Run};
+pub use text::{RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
 pub use transform::{PageFromWorld, PageRect};

@@ -1,7 +1,7 @@
 //! The immutable figure model: panels of primitives in world coordinates,
 //! each with a role and a stable id.
 
-use super::{PageFromWorld, PageRect, Path, RichText};
+use super::{Font, PageFromWorld, PageRect, Path, RichText};
 use crate::geom::{Point, Vector};
 use crate::render::Style;
 use serde_json::{Map, Value};
@@ -17,8 +17,11 @@ pub enum Role {
     Auxiliary,
     /// A curve traced by the mechanism (centrodes, coupler ovals, diagrams).
     Curve,
-    /// Construction lines that carry the result (CE, CG, FG, ...).
+    /// Construction lines (CF, FG, BD, ...).
     Construction,
+    /// The lengths a construction is made for, read off at a scale (CE,
+    /// CG; Ng's OM): drawn heavier than the lines that find them.
+    Result,
     /// Dimension lines and angle marks.
     Dimension,
     /// Force and torque arrows.
@@ -31,11 +34,12 @@ pub enum Role {
 
 impl Role {
     /// Every role, in drawing order (later on top).
-    pub const ALL: [Role; 8] = [
+    pub const ALL: [Role; 9] = [
         Role::Frame,
         Role::Auxiliary,
         Role::Curve,
         Role::Construction,
+        Role::Result,
         Role::Dimension,
         Role::Force,
         Role::Link,
@@ -49,6 +53,7 @@ impl Role {
             Role::Auxiliary => "auxiliary",
             Role::Curve => "curve",
             Role::Construction => "construction",
+            Role::Result => "result",
             Role::Dimension => "dimension",
             Role::Force => "force",
             Role::Link => "link",
@@ -92,6 +97,18 @@ pub enum Dash {
     Dotted,
     /// Long dash, dot.
     DashDot,
+}
+
+/// What a line stands for, where colour can say it (the handout style):
+/// one hue for velocity, one for acceleration, one for forces.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Hue {
+    /// Velocity constructions and arrows (E, D, CE, v_c, v_p, ω, Ω).
+    Velocity,
+    /// Acceleration constructions (Klein, Kisch: F, G, H, CG).
+    Acceleration,
+    /// Forces and torques (OM, F_p, F_s, F_c, T).
+    Force,
 }
 
 /// The symbol of a data point ([`Shape::Marker`]).
@@ -279,6 +296,8 @@ pub struct Item {
     pub shape: Shape,
     /// A stroke pattern in place of the role's; `None` keeps the role's.
     pub dash: Option<Dash>,
+    /// What the line stands for, if colour should say it.
+    pub hue: Option<Hue>,
 }
 
 impl Item {
@@ -289,7 +308,14 @@ impl Item {
             role,
             shape,
             dash: None,
+            hue: None,
         }
+    }
+
+    /// The same item marked as standing for `hue`.
+    pub fn hued(mut self, hue: Hue) -> Self {
+        self.hue = Some(hue);
+        self
     }
 
     /// The same item stroked with `dash` instead of its role's pattern.
@@ -306,6 +332,7 @@ pub struct Panel {
     rect: PageRect,
     transform: PageFromWorld,
     items: Vec<Item>,
+    clipped: bool,
 }
 
 impl Panel {
@@ -321,7 +348,20 @@ impl Panel {
             rect,
             transform,
             items,
+            clipped: false,
         }
+    }
+
+    /// The same panel with nothing drawn outside its rectangle (a detail,
+    /// whose circles and lines run on beyond the region it enlarges).
+    pub fn clipped(mut self) -> Self {
+        self.clipped = true;
+        self
+    }
+
+    /// Whether the renderer clips the panel to its rectangle.
+    pub fn is_clipped(&self) -> bool {
+        self.clipped
     }
 
     /// The panel's id (`panel-mechanism`).
@@ -376,6 +416,7 @@ impl Panel {
             ),
             transform,
             items,
+            clipped: self.clipped,
         })
     }
 
@@ -394,6 +435,7 @@ pub struct Figure {
     width: f64,
     height: f64,
     style: Style,
+    font: Font,
     tolerance: f64,
     panels: Vec<Panel>,
     metadata: Map<String, Value>,
@@ -402,7 +444,8 @@ pub struct Figure {
 impl Figure {
     /// A figure of `width` × `height` page units; `metadata` adds keys to
     /// the SVG metadata beside the ones the renderer writes (`figure`,
-    /// `page_from_world`, `tolerance`, `style`, `panels`).
+    /// `page_from_world`, `tolerance`, `style`, `panels`). It is set in the
+    /// default [`Font`] until [`Figure::with_font`] says otherwise.
     pub fn new(
         name: impl Into<String>,
         width: f64,
@@ -417,6 +460,7 @@ impl Figure {
             width,
             height,
             style,
+            font: Font::default(),
             tolerance,
             panels,
             metadata,
@@ -443,6 +487,11 @@ impl Figure {
         self.style
     }
 
+    /// The face its text is set in.
+    pub fn font(&self) -> Font {
+        self.font
+    }
+
     /// The drawing tolerance of curves, in page units.
     pub fn tolerance(&self) -> f64 {
         self.tolerance
@@ -461,6 +510,15 @@ impl Figure {
     /// The same geometry in another style.
     pub fn with_style(mut self, style: Style) -> Self {
         self.style = style;
+        self
+    }
+
+    /// The same figure set in another face. Layout already made with
+    /// another face's widths (plot margins, legends) is kept: build the
+    /// figure with the face instead where that matters
+    /// ([`crate::Scene::with_font`], [`super::FigureOptions::font`]).
+    pub fn with_font(mut self, font: Font) -> Self {
+        self.font = font;
         self
     }
 }

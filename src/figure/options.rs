@@ -1,5 +1,6 @@
 //! What may be changed in a named figure ([`super::FigureName::figure`]).
 
+use super::Font;
 use crate::error::{Error, Result};
 use crate::render::Style;
 use crate::{Angle, SliderCrank};
@@ -56,6 +57,8 @@ pub struct FigureOptions {
     pub angle: Option<Angle>,
     /// The drawing style (default textbook).
     pub style: Option<Style>,
+    /// The face of the text (default [`Font::NewComputerModern`]).
+    pub font: Option<Font>,
     /// CSV text of measured data: columns `angle` and `force` for
     /// `ng-fig-8-forces` (Ng's measured F′ by default), `force` and
     /// `strain` for `ng-fig-7-calibration` (Ng's Table 1), the columns of
@@ -81,6 +84,9 @@ impl FigureOptions {
         }
         if self.style.is_some() {
             v.push("--style");
+        }
+        if self.font.is_some() {
+            v.push("--font");
         }
         if self.data.is_some() {
             v.push("--data");

@@ -1,6 +1,33 @@
 //! Short rich texts: letters, subscripts and italic runs for labels and
 //! notes.
 
+use super::{Font, FontStyle, TextBox};
+
+/// A subscript's size, as a fraction of its line's.
+pub const SUBSCRIPT_SIZE: f64 = 0.7;
+/// How far a subscript's baseline sits below its line's, as a fraction of
+/// the line's size.
+pub const SUBSCRIPT_DROP: f64 = 0.3;
+/// How far a superscript's baseline sits above its line's, as a fraction
+/// of the line's size (superscripts are set at [`SUBSCRIPT_SIZE`] too).
+pub const SUPERSCRIPT_RISE: f64 = 0.38;
+
+/// The Unicode superscripts and what they are set as.
+const SUPERSCRIPTS: [(char, char); 12] = [
+    ('⁰', '0'),
+    ('¹', '1'),
+    ('²', '2'),
+    ('³', '3'),
+    ('⁴', '4'),
+    ('⁵', '5'),
+    ('⁶', '6'),
+    ('⁷', '7'),
+    ('⁸', '8'),
+    ('⁹', '9'),
+    ('⁻', '−'),
+    ('⁺', '+'),
+];
+
 /// One run of a [`RichText`].
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Run {
@@ -8,6 +35,10 @@ pub struct Run {
     pub text: String,
     /// Set as a subscript.
     pub subscript: bool,
+    /// Set as a superscript (exponents written with the Unicode
+    /// superscript characters, kept here as plain digits and signs so that
+    /// every face has their glyphs).
+    pub superscript: bool,
     /// Set in italic.
     pub italic: bool,
 }
@@ -15,7 +46,10 @@ pub struct Run {
 /// A line of text made of runs.
 ///
 /// [`RichText::parse`] reads a small markup: `_x` or `_{xy}` is a subscript,
-/// `*...*` is italic (for point letters inside a roman note). A label made
+/// `*...*` is italic (for point letters inside a roman note); the Unicode
+/// superscripts `⁰`–`⁹`, `⁻`, `⁺` become superscript runs of `0`–`9`,
+/// `−`, `+` (most text faces have no glyphs of their own for `⁴` or `⁻`). A
+/// label made
 /// with [`RichText::italic`] is italic throughout.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct RichText {
@@ -29,20 +63,31 @@ impl RichText {
         let mut runs: Vec<Run> = Vec::new();
         let mut italic = false;
         let mut chars = markup.chars().peekable();
-        let push = |runs: &mut Vec<Run>, text: String, subscript: bool, italic: bool| {
-            if text.is_empty() {
+        let push_run = |runs: &mut Vec<Run>, run: Run| {
+            if run.text.is_empty() {
                 return;
             }
             match runs.last_mut() {
-                Some(last) if last.subscript == subscript && last.italic == italic => {
-                    last.text.push_str(&text)
+                Some(last)
+                    if last.subscript == run.subscript
+                        && last.superscript == run.superscript
+                        && last.italic == run.italic =>
+                {
+                    last.text.push_str(&run.text)
                 }
-                _ => runs.push(Run {
+                _ => runs.push(run),
+            }
+        };
+        let push = |runs: &mut Vec<Run>, text: String, subscript: bool, italic: bool| {
+            push_run(
+                runs,
+                Run {
                     text,
                     subscript,
+                    superscript: false,
                     italic,
-                }),
-            }
+                },
+            )
         };
         while let Some(ch) = chars.next() {
             match ch {
@@ -61,7 +106,18 @@ impl RichText {
                     Some(c) => push(&mut runs, c.to_string(), true, italic),
                     None => push(&mut runs, "_".into(), false, italic),
                 },
-                c => push(&mut runs, c.to_string(), false, italic),
+                c => match SUPERSCRIPTS.iter().find(|(sup, _)| *sup == c) {
+                    Some((_, plain)) => push_run(
+                        &mut runs,
+                        Run {
+                            text: plain.to_string(),
+                            subscript: false,
+                            superscript: true,
+                            italic,
+                        },
+                    ),
+                    None => push(&mut runs, c.to_string(), false, italic),
+                },
             }
         }
         Self { runs }
@@ -81,36 +137,54 @@ impl RichText {
         &self.runs
     }
 
-    /// The characters without markup.
+    /// The characters without markup (superscripts as the Unicode
+    /// superscript characters).
     pub fn plain(&self) -> String {
-        self.runs.iter().map(|r| r.text.as_str()).collect()
-    }
-
-    /// The width in ems, estimated for a serif face (subscripts at 70 %).
-    pub fn width_em(&self) -> f64 {
+        let sup = |c: char| {
+            SUPERSCRIPTS
+                .iter()
+                .find(|(_, plain)| *plain == c)
+                .map_or(c, |(s, _)| *s)
+        };
         self.runs
             .iter()
-            .map(|r| {
-                let w: f64 = r.text.chars().map(char_width).sum();
-                if r.subscript { 0.7 * w } else { w }
+            .flat_map(|r| {
+                r.text
+                    .chars()
+                    .map(move |c| if r.superscript { sup(c) } else { c })
             })
-            .sum()
+            .collect()
     }
-}
 
-/// A rough advance width in ems, on the wide side of the serif faces asked
-/// for (DejaVu Serif is wider than Times).
-fn char_width(c: char) -> f64 {
-    match c {
-        ' ' | '·' => 0.33,
-        '.' | ',' | ':' | ';' | '\'' | '|' | 'i' | 'l' | 'j' | 'I' | '(' | ')' => 0.36,
-        'f' | 't' | 'r' | '/' | '-' | '²' | '³' => 0.48,
-        'm' | 'w' => 0.92,
-        'M' | 'W' => 0.98,
-        '=' | '+' | '×' | '≈' | '∞' => 0.84,
-        '0'..='9' => 0.64,
-        c if c.is_uppercase() => 0.76,
-        _ => 0.62,
+    /// The extent of the text set in `font` at `size`, run by run: each
+    /// run in its own style, subscripts at 70 % of `size` and
+    /// [`SUBSCRIPT_DROP`] × `size` below the baseline, superscripts at 70 %
+    /// and [`SUPERSCRIPT_RISE`] × `size` above it.
+    pub fn measure(&self, font: Font, size: f64) -> TextBox {
+        self.runs.iter().fold(TextBox::default(), |b, r| {
+            let style = FontStyle::from_italic(r.italic);
+            let shifted = |drop: f64| {
+                let t = font.measure(&r.text, SUBSCRIPT_SIZE * size, style);
+                TextBox {
+                    above: t.above - drop * size,
+                    below: t.below + drop * size,
+                    ..t
+                }
+            };
+            let run = if r.subscript {
+                shifted(SUBSCRIPT_DROP)
+            } else if r.superscript {
+                shifted(-SUPERSCRIPT_RISE)
+            } else {
+                font.measure(&r.text, size, style)
+            };
+            b.then(run)
+        })
+    }
+
+    /// The width of the text set in `font` at `size` (page units).
+    pub fn width(&self, font: Font, size: f64) -> f64 {
+        self.measure(font, size).width
     }
 }
 
@@ -140,10 +214,42 @@ mod tests {
     }
 
     #[test]
+    fn unicode_superscripts_become_superscript_runs() {
+        let t = RichText::parse("10⁻⁶ ft/s²");
+        let runs: Vec<(&str, bool)> = t
+            .runs()
+            .iter()
+            .map(|r| (r.text.as_str(), r.superscript))
+            .collect();
+        assert_eq!(
+            runs,
+            vec![("10", false), ("−6", true), (" ft/s", false), ("2", true)]
+        );
+        assert_eq!(t.plain(), "10⁻⁶ ft/s²");
+        let f = Font::NewComputerModern;
+        let b = t.measure(f, 10.0);
+        // The exponent's ink reaches above the digits' cap height.
+        assert!(b.above > f.measure("10", 10.0, FontStyle::Regular).above + 1.0);
+    }
+
+    #[test]
     fn italic_label_and_trailing_underscore() {
         let t = RichText::italic("F_p");
         assert!(t.runs().iter().all(|r| r.italic));
         assert_eq!(RichText::parse("a_").plain(), "a_");
-        assert!(RichText::parse("M").width_em() > RichText::parse("i").width_em());
+    }
+
+    #[test]
+    fn measured_run_by_run() {
+        let f = Font::NewComputerModern;
+        let (it, up) = (FontStyle::Italic, FontStyle::Regular);
+        // "V_c = 2": V italic, c an italic subscript at 70 %, the rest roman.
+        let t = RichText::parse("*V_c* = 2");
+        let expected = f.width("V", 20.0, it) + f.width("c", 14.0, it) + f.width(" = 2", 20.0, up);
+        assert!((t.width(f, 20.0) - expected).abs() < 1e-9);
+        // Subscripts reach below the baseline by the drop.
+        let b = t.measure(f, 20.0);
+        assert!(b.below >= 0.3 * 20.0 - 1e-9, "{b:?}");
+        assert!(RichText::parse("M").width(f, 10.0) > RichText::parse("i").width(f, 10.0));
     }
 }

@@ -26,9 +26,12 @@ pub enum CircleIntersection {
 }
 
 impl Circle {
-    /// The circle with `centre` and `radius`.
-    pub fn new(centre: Point, radius: f64) -> Self {
-        Self { centre, radius }
+    /// The circle with `centre` and `radius`; `None` when the centre is
+    /// not finite or the radius is negative, NaN or infinite.
+    pub fn new(centre: Point, radius: f64) -> Option<Self> {
+        let ok =
+            centre.x.is_finite() && centre.y.is_finite() && radius.is_finite() && radius >= 0.0;
+        ok.then_some(Self { centre, radius })
     }
 
     /// The circle on the segment `p q` as diameter.
@@ -89,12 +92,22 @@ impl Circle {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn bad_circles_are_refused() {
+        // Issue 9 (10): Circle::new accepted NaN.
+        assert!(Circle::new(Point::new(f64::NAN, 0.0), 1.0).is_none());
+        assert!(Circle::new(Point::origin(), f64::NAN).is_none());
+        assert!(Circle::new(Point::origin(), -1.0).is_none());
+        assert!(Circle::new(Point::origin(), f64::INFINITY).is_none());
+        assert_eq!(Circle::new(Point::origin(), 0.0).unwrap().radius, 0.0);
+    }
+
     use super::*;
 
     #[test]
     fn two_circles_cross_symmetrically() {
-        let a = Circle::new(Point::new(0.0, 0.0), 5.0);
-        let b = Circle::new(Point::new(8.0, 0.0), 5.0);
+        let a = Circle::new(Point::new(0.0, 0.0), 5.0).unwrap();
+        let b = Circle::new(Point::new(8.0, 0.0), 5.0).unwrap();
         match a.intersect_circle(&b, 1e-12) {
             CircleIntersection::Two(p, q) => {
                 assert_eq!(p, Point::new(4.0, 3.0));
@@ -106,14 +119,14 @@ mod tests {
 
     #[test]
     fn tangency_within_tolerance() {
-        let a = Circle::new(Point::new(0.0, 0.0), 1.0);
-        let b = Circle::new(Point::new(2.0 + 1e-13, 0.0), 1.0);
+        let a = Circle::new(Point::new(0.0, 0.0), 1.0).unwrap();
+        let b = Circle::new(Point::new(2.0 + 1e-13, 0.0), 1.0).unwrap();
         assert!(matches!(
             a.intersect_circle(&b, 1e-12),
             CircleIntersection::Tangent(_)
         ));
         assert_eq!(a.intersect_circle(&b, 0.0), CircleIntersection::None);
-        let inner = Circle::new(Point::new(0.5, 0.0), 0.5);
+        let inner = Circle::new(Point::new(0.5, 0.0), 0.5).unwrap();
         assert_eq!(
             a.intersect_circle(&inner, 1e-12),
             CircleIntersection::Tangent(Point::new(1.0, 0.0))
@@ -123,7 +136,7 @@ mod tests {
 
     #[test]
     fn line_cuts_circle_in_direction_order() {
-        let c = Circle::new(Point::new(0.0, 0.0), 2.0);
+        let c = Circle::new(Point::new(0.0, 0.0), 2.0).unwrap();
         let l = Line::new(Point::new(-5.0, 0.0), Vector::new(1.0, 0.0)).unwrap();
         assert_eq!(
             c.intersect_line(&l, 1e-12),

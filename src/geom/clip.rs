@@ -11,7 +11,16 @@ pub struct Frame {
 }
 
 impl Frame {
-    /// The rectangle spanned by two corners (in any order).
+    /// The rectangle spanned by two corners (in any order); `None` when a
+    /// coordinate is NaN or infinite. Use this for corners from outside.
+    pub fn try_new(a: Point, b: Point) -> Option<Self> {
+        let ok = [a.x, a.y, b.x, b.y].iter().all(|v| v.is_finite());
+        ok.then(|| Self::new(a, b))
+    }
+
+    /// The rectangle spanned by two corners (in any order), known to be
+    /// finite (the program's own frames; [`Frame::try_new`] checks). A NaN
+    /// coordinate gives a frame that contains no point, never a panic.
     pub fn new(a: Point, b: Point) -> Self {
         Self {
             aabb: Aabb::new(a.inf(&b), a.sup(&b)),
@@ -57,6 +66,18 @@ impl Frame {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn nan_corners_are_refused_or_contain_nothing() {
+        // Issue 9 (10): Frame::new accepted NaN.
+        let nan = Point::new(f64::NAN, 0.0);
+        let one = Point::new(1.0, 1.0);
+        assert!(Frame::try_new(nan, one).is_none());
+        assert!(Frame::try_new(Point::new(f64::INFINITY, 0.0), one).is_none());
+        assert!(Frame::try_new(Point::origin(), one).is_some());
+        let f = Frame::new(nan, one);
+        assert!(!f.contains(Point::new(0.5, 0.5)));
+    }
+
     use super::*;
 
     #[test]

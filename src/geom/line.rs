@@ -101,16 +101,36 @@ impl Line {
         }
     }
 
-    /// The foot of the perpendicular from `p` to this line.
-    pub fn foot(&self, p: Point) -> Point {
-        let t = (p - self.point).dot(&self.direction) / self.direction.norm_squared();
-        self.at(t)
+    /// The direction scaled to unit length without overflow or underflow
+    /// (directions of 1e308 or 1e-320 included).
+    fn unit(&self) -> Vector {
+        let d = self.direction;
+        let big = d.x.abs().max(d.y.abs());
+        let v = d / big;
+        v / v.norm()
     }
 
-    /// Signed distance of `p` from the line, positive to the left of the
-    /// direction.
+    /// The foot of the perpendicular from `p` (finite) to this line.
+    ///
+    /// Computed on halved coordinates with a unit direction, so that points
+    /// and directions anywhere in the range of f64 (1e308 included) give a
+    /// finite foot; only a foot that itself lies beyond the largest f64
+    /// (about 1.8e308) has an infinite coordinate. A non-finite `p` gives a
+    /// non-finite foot.
+    pub fn foot(&self, p: Point) -> Point {
+        let u = self.unit();
+        let half = (p.coords * 0.5 - self.point.coords * 0.5).dot(&u);
+        let half_foot = self.point.coords * 0.5 + u * half;
+        Point::from(half_foot * 2.0)
+    }
+
+    /// Signed distance of `p` (finite) from the line, positive to the left
+    /// of the direction; computed without intermediate overflow (points of
+    /// 1e308 included), ±infinity only when the distance itself exceeds the
+    /// largest f64.
     pub fn signed_distance(&self, p: Point) -> f64 {
-        cross(&self.direction, &(p - self.point)) / self.direction.norm()
+        let half = p.coords * 0.5 - self.point.coords * 0.5;
+        2.0 * cross(&self.unit(), &half)
     }
 
     /// Intersection with [`PARALLEL_TOLERANCE`].
@@ -194,6 +214,18 @@ mod tests {
     fn degenerate_lines_are_refused() {
         assert!(Line::through(Point::new(1.0, 1.0), Point::new(1.0, 1.0)).is_none());
         assert!(Line::new(Point::new(f64::NAN, 0.0), Vector::new(1.0, 0.0)).is_none());
+    }
+
+    #[test]
+    fn foot_and_distance_of_huge_coordinates_are_finite() {
+        // Issue 9 (10): NaN for coordinates of 1e308.
+        let l = Line::new(Point::new(-1e308, 0.0), Vector::new(1e308, 0.0)).unwrap();
+        let p = Point::new(1e308, 1e308);
+        assert_eq!(l.foot(p), Point::new(1e308, 0.0));
+        assert_eq!(l.signed_distance(p), 1e308);
+        let tiny = Line::new(Point::new(0.0, 0.0), Vector::new(0.0, 5e-324)).unwrap();
+        assert_eq!(tiny.foot(Point::new(3.0, 4.0)), Point::new(0.0, 4.0));
+        assert_eq!(tiny.signed_distance(Point::new(3.0, 4.0)), -3.0);
     }
 
     #[test]

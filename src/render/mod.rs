@@ -10,7 +10,7 @@ mod svg;
 
 pub use number::{GRID, fmt, trace_tolerance};
 pub use output::write_atomic;
-pub use png::to_png;
+pub use png::{font_database, to_png};
 pub use style::Style;
 pub use svg::to_svg;
 

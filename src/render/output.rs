@@ -2,31 +2,110 @@
 
 use crate::error::{Error, Result};
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-/// Writes `bytes` to `path` through a temporary file in the same directory,
-/// renamed over the target only when complete: a reader never sees half a
-/// file, and a failure leaves any old file as it was.
+/// Most symbolic links followed from one output path (as the kernel's
+/// `ELOOP` limit).
+const MAX_LINKS: usize = 40;
+
+/// Where the bytes for an output path go.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub enum OutputTarget {
+    /// A regular file (existing or not), replaced whole through a temporary
+    /// file in its directory: the path after following every symbolic link,
+    /// so that a link is kept and its target replaced.
+    Replace(PathBuf),
+    /// A device, FIFO, socket or a `/proc` descriptor link (`/dev/stdout`,
+    /// `/dev/null`, a named pipe): opened and written in place, never
+    /// replaced.
+    Direct(PathBuf),
+}
+
+/// Decides how `path` is written: see [`OutputTarget`].
+///
+/// Errors: a directory, a loop of links (more than 40), or a link that
+/// cannot be read.
+pub fn output_target(path: &Path) -> Result<OutputTarget> {
+    let fail = |why: String| Error::Io(format!("cannot write {}: {why}", path.display()));
+    let mut current = path.to_path_buf();
+    for _ in 0..MAX_LINKS {
+        let meta = match std::fs::symlink_metadata(&current) {
+            Ok(m) => m,
+            // Not there yet: created (the directory is checked when writing).
+            Err(_) => return Ok(OutputTarget::Replace(current)),
+        };
+        let kind = meta.file_type();
+        if kind.is_symlink() {
+            let link = std::fs::read_link(&current).map_err(|e| fail(e.to_string()))?;
+            // A descriptor link (/dev/stdout → /proc/self/fd/1 → pipe:[…])
+            // names no file to replace: write through it.
+            if link.starts_with("/proc") || link.starts_with("/dev/fd") {
+                return Ok(OutputTarget::Direct(path.to_path_buf()));
+            }
+            current = match current.parent() {
+                Some(dir) if link.is_relative() => dir.join(link),
+                _ => link,
+            };
+        } else if kind.is_dir() {
+            return Err(fail("it is a directory".into()));
+        } else if kind.is_file() {
+            return Ok(OutputTarget::Replace(current));
+        } else {
+            return Ok(OutputTarget::Direct(path.to_path_buf()));
+        }
+    }
+    Err(fail(format!("more than {MAX_LINKS} symbolic links")))
+}
+
+/// Writes `bytes` to `path` as [`output_target`] decides.
+///
+/// A regular file is written through a temporary file in the same
+/// directory, renamed over the target only when complete: a reader never
+/// sees half a file, a failure leaves any old file as it was and no
+/// temporary file behind, a symbolic link stays a link (its target is
+/// replaced), and an existing file keeps its permissions (new files are
+/// readable by all, 0644). A device or FIFO is written directly; a write
+/// error there (`/dev/full`) is an error.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     let fail = |e: std::io::Error| Error::Io(format!("cannot write {}: {e}", path.display()));
+    match output_target(path)? {
+        OutputTarget::Direct(p) => {
+            let mut file = std::fs::OpenOptions::new()
+                .write(true)
+                .open(&p)
+                .map_err(fail)?;
+            file.write_all(bytes)
+                .and_then(|_| file.flush())
+                .map_err(fail)
+        }
+        OutputTarget::Replace(p) => replace(&p, bytes).map_err(fail),
+    }
+}
+
+/// Replaces the regular file `path` (or creates it) through a temporary
+/// file in its directory.
+fn replace(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
+    let old = std::fs::metadata(path).ok().map(|m| m.permissions());
     let mut tmp = tempfile::Builder::new()
         .prefix(".slider-crank-")
-        .tempfile_in(dir)
-        .map_err(fail)?;
-    tmp.write_all(bytes).map_err(fail)?;
-    tmp.as_file().sync_all().map_err(fail)?;
-    // An ordinary file, readable by others (temporary files are private).
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(tmp.path(), std::fs::Permissions::from_mode(0o644))
-            .map_err(fail)?;
-    }
-    tmp.persist(path).map_err(|e| fail(e.error))?;
+        .tempfile_in(dir)?;
+    tmp.write_all(bytes)?;
+    tmp.as_file().sync_all()?;
+    // An ordinary file, readable by others (temporary files are private),
+    // unless it replaces one with its own permissions.
+    let permissions = match old {
+        Some(p) => p,
+        #[cfg(unix)]
+        None => std::os::unix::fs::PermissionsExt::from_mode(0o644),
+        #[cfg(not(unix))]
+        None => tmp.as_file().metadata()?.permissions(),
+    };
+    std::fs::set_permissions(tmp.path(), permissions)?;
+    tmp.persist(path).map_err(|e| e.error)?;
     Ok(())
 }
 
@@ -44,5 +123,47 @@ mod tests {
         assert!(err.to_string().contains("cannot write"), "{err}");
         // No temporary file is left behind.
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_link_is_kept_and_its_target_replaced() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("real.svg");
+        std::fs::write(&target, b"old").unwrap();
+        let link = dir.path().join("link.svg");
+        std::os::unix::fs::symlink("real.svg", &link).unwrap();
+        write_atomic(&link, b"new").unwrap();
+        assert!(
+            std::fs::symlink_metadata(&link)
+                .unwrap()
+                .file_type()
+                .is_symlink()
+        );
+        assert_eq!(std::fs::read(&target).unwrap(), b"new");
+        // A dangling link creates its target.
+        let dangling = dir.path().join("dangling.svg");
+        std::os::unix::fs::symlink("made.svg", &dangling).unwrap();
+        write_atomic(&dangling, b"x").unwrap();
+        assert_eq!(std::fs::read(dir.path().join("made.svg")).unwrap(), b"x");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn devices_are_written_in_place_and_their_errors_reported() {
+        assert_eq!(
+            output_target(Path::new("/dev/null")).unwrap(),
+            OutputTarget::Direct("/dev/null".into())
+        );
+        write_atomic(Path::new("/dev/null"), b"x").unwrap();
+        if Path::new("/dev/full").exists() {
+            let err = write_atomic(Path::new("/dev/full"), b"x").unwrap_err();
+            assert!(
+                err.to_string().starts_with("cannot write /dev/full: "),
+                "{err}"
+            );
+        }
+        let err = write_atomic(Path::new("/tmp"), b"x").unwrap_err();
+        assert_eq!(err.to_string(), "cannot write /tmp: it is a directory");
     }
 }

@@ -1,25 +1,50 @@
-//! SVG to PNG through resvg, with the system's fonts loaded once.
+//! SVG to PNG through resvg, with the bundled faces only: no system font
+//! is ever loaded, so the same SVG gives the same bytes on every machine.
 
 use crate::error::{Error, Result};
+use crate::figure::Font;
+use resvg::usvg::fontdb::{Database, Source};
 use resvg::{tiny_skia, usvg};
 use std::sync::{Arc, OnceLock};
 
-fn fonts() -> Arc<usvg::fontdb::Database> {
-    static FONTS: OnceLock<Arc<usvg::fontdb::Database>> = OnceLock::new();
+/// Loads every bundled face ([`Font::files`] of each [`Font`], in order,
+/// which is the order resvg falls back in) into `db`, straight from the
+/// bytes in the binary.
+fn load_bundled(db: &mut Database) {
+    for font in Font::ALL {
+        for data in font.files() {
+            db.load_font_source(Source::Binary(Arc::new(data)));
+        }
+    }
+    db.set_serif_family(Font::default().family());
+}
+
+/// The font database [`to_png`] renders with: the bundled faces only,
+/// loaded once (for rendering the SVG with usvg or resvg directly).
+pub fn font_database() -> Arc<Database> {
+    static FONTS: OnceLock<Arc<Database>> = OnceLock::new();
     FONTS
         .get_or_init(|| {
-            let mut db = usvg::fontdb::Database::new();
-            db.load_system_fonts();
-            db.set_serif_family("DejaVu Serif");
+            let mut db = Database::new();
+            load_bundled(&mut db);
             Arc::new(db)
         })
         .clone()
 }
 
+/// Most pixels of a PNG (24 megapixels, 96 MB of canvas: a 2400 × 2400
+/// page at scale 2). A larger picture is refused with a message, never
+/// allocated.
+pub const MAX_PNG_PIXELS: u64 = 24_000_000;
+
 /// Renders SVG text to PNG bytes at `scale` pixels per page unit (1 for
-/// the page size, 2 for a sharper picture). Letters use the system's
-/// serif fonts; without any, lines are still drawn.
+/// the page size, 2 for a sharper picture). Letters are set in the
+/// bundled faces ([`Font`]) whatever fonts the machine has.
 pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
+    render(svg, scale, font_database())
+}
+
+fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
     if !(scale.is_finite() && scale > 0.0 && scale <= 16.0) {
         return Err(Error::OutOfRange {
             name: "scale",
@@ -28,7 +53,7 @@ pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
         });
     }
     let options = usvg::Options {
-        fontdb: fonts(),
+        fontdb,
         ..usvg::Options::default()
     };
     let tree = usvg::Tree::from_str(svg, &options)
@@ -42,6 +67,19 @@ pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
             value: scale as f64,
             reason: "the picture would be empty".into(),
         })?;
+    let pixels = u64::from(size.width()) * u64::from(size.height());
+    if pixels > MAX_PNG_PIXELS {
+        return Err(Error::OutOfRange {
+            name: "PNG size",
+            value: pixels as f64,
+            reason: format!(
+                "a PNG of {} × {} pixels is more than the {} megapixels this program draws: make the page smaller, or write SVG",
+                size.width(),
+                size.height(),
+                MAX_PNG_PIXELS / 1_000_000
+            ),
+        });
+    }
     let mut pixmap =
         tiny_skia::Pixmap::new(size.width(), size.height()).ok_or_else(|| Error::OutOfRange {
             name: "scale",
@@ -56,4 +94,109 @@ pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
     pixmap
         .encode_png()
         .map_err(|e| Error::Io(format!("cannot encode PNG: {e}")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::{FigureOptions, FontStyle};
+    use crate::render::to_svg;
+    use crate::{FigureName, Style};
+    use resvg::usvg::fontdb::{Family, Query};
+
+    #[test]
+    fn huge_pages_are_refused_before_drawing() {
+        // Issue 9 (8): a 20000 × 20000 page took 12 GB.
+        let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" width="20000" height="20000"/>"#;
+        let err = to_png(svg, 2.0).unwrap_err().to_string();
+        assert!(
+            err.contains("a PNG of 40000 × 40000 pixels is more than the 24 megapixels"),
+            "{err}"
+        );
+        let small = r#"<svg xmlns="http://www.w3.org/2000/svg" width="100" height="50"/>"#;
+        assert!(to_png(small, 2.0).unwrap().starts_with(b"\x89PNG"));
+    }
+
+    /// Every font file under `dir` (the machine's fonts), read with std
+    /// alone: the font database is built without file-system support.
+    fn load_dir(db: &mut Database, dir: &std::path::Path) {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            return;
+        };
+        for e in entries.flatten() {
+            let p = e.path();
+            if p.is_dir() {
+                load_dir(db, &p);
+            } else if p
+                .extension()
+                .and_then(|x| x.to_str())
+                .is_some_and(|x| ["ttf", "otf", "ttc", "otc"].contains(&x.to_lowercase().as_str()))
+                && let Ok(bytes) = std::fs::read(&p)
+            {
+                db.load_font_data(bytes);
+            }
+        }
+    }
+
+    #[test]
+    fn the_svg_family_is_found_among_the_bundled_faces() {
+        let db = font_database();
+        for font in Font::ALL {
+            let id = db
+                .query(&Query {
+                    families: &[Family::Name(font.family())],
+                    style: usvg::fontdb::Style::Italic,
+                    ..Query::default()
+                })
+                .expect("family found");
+            let name = db.face(id).map(|f| f.post_script_name.clone());
+            assert_eq!(
+                name.as_deref(),
+                Some(font.postscript_name(FontStyle::Italic))
+            );
+        }
+    }
+
+    #[test]
+    fn png_bytes_do_not_depend_on_the_machines_fonts() {
+        // Other fonts a machine may have: its own, and the faces
+        // typst-assets ships that the figures do not use (DejaVu Sans
+        // Mono, Libertinus bold, the maths faces), loaded after the
+        // bundled ones.
+        let mut crowded = Database::new();
+        load_bundled(&mut crowded);
+        let bundled_faces = crowded.len();
+        load_dir(&mut crowded, std::path::Path::new("/usr/share/fonts"));
+        for data in typst_assets::fonts() {
+            crowded.load_font_source(Source::Binary(Arc::new(data)));
+        }
+        assert!(crowded.len() > bundled_faces + 10, "{}", crowded.len());
+        let crowded = Arc::new(crowded);
+        for (name, font) in [
+            (FigureName::Fig67Example, Font::NewComputerModern),
+            (FigureName::NgFig1Torque, Font::LibertinusSerif),
+            (FigureName::Fig64VelocityDiagrams, Font::NewComputerModern),
+        ] {
+            let options = FigureOptions {
+                font: Some(font),
+                style: Some(Style::Handout),
+                ..FigureOptions::default()
+            };
+            let svg = to_svg(&name.figure(&options).unwrap());
+            let alone = render(&svg, 1.0, font_database()).unwrap();
+            let with_machine = render(&svg, 1.0, crowded.clone()).unwrap();
+            assert!(alone == with_machine, "{}", name.name());
+            // The text is drawn at all: without fonts the bytes differ.
+            let bare = render(&svg, 1.0, Arc::new(Database::new())).unwrap();
+            assert!(alone != bare, "{}", name.name());
+            // The SVG's family is the face drawn: a database of that face
+            // alone gives the same bytes (no fallback to the generic serif).
+            let mut only = Database::new();
+            for data in font.files() {
+                only.load_font_source(Source::Binary(Arc::new(data)));
+            }
+            let only = render(&svg, 1.0, Arc::new(only)).unwrap();
+            assert!(alone == only, "{}", name.name());
+        }
+    }
 }

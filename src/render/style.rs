@@ -2,7 +2,7 @@
 //! and a coloured handout.
 
 use crate::error::{Error, Result};
-use crate::figure::{Dash, Role, TextSize};
+use crate::figure::{Dash, Hue, Role, TextSize};
 use serde::Deserialize;
 
 /// How a figure is drawn.
@@ -39,8 +39,6 @@ pub(crate) const NOTE_SIZE: f64 = 13.0;
 pub(crate) const MARKER_RADIUS: f64 = 3.6;
 /// Line height of notes.
 pub(crate) const NOTE_LINE: f64 = 17.0;
-/// The serif faces asked for, best first.
-pub(crate) const FONT_FAMILY: &str = "'Times New Roman', Times, 'DejaVu Serif', serif";
 
 impl Style {
     /// The name used on the command line and in scene files.
@@ -73,6 +71,7 @@ impl Style {
             (Style::Textbook, Role::Auxiliary) => (0.7, "#000000"),
             (Style::Textbook, Role::Curve) => (1.0, "#000000"),
             (Style::Textbook, Role::Construction) => (0.9, "#000000"),
+            (Style::Textbook, Role::Result) => (1.9, "#000000"),
             (Style::Textbook, Role::Dimension) => (0.6, "#000000"),
             (Style::Textbook, Role::Force) => (1.4, "#000000"),
             (Style::Textbook, Role::Link) => (2.6, "#000000"),
@@ -81,6 +80,7 @@ impl Style {
             (Style::Handout, Role::Auxiliary) => (0.8, "#7b8794"),
             (Style::Handout, Role::Curve) => (1.4, "#2e7d32"),
             (Style::Handout, Role::Construction) => (1.1, "#c62828"),
+            (Style::Handout, Role::Result) => (2.2, "#c62828"),
             (Style::Handout, Role::Dimension) => (0.8, "#6a1b9a"),
             (Style::Handout, Role::Force) => (1.8, "#e65100"),
             (Style::Handout, Role::Link) => (3.0, "#1a237e"),
@@ -90,6 +90,34 @@ impl Style {
             colour,
             width,
             dash,
+        }
+    }
+
+    /// The colour of a line standing for `hue`: black in the textbook; in
+    /// the handout three hues of the Okabe–Ito palette, told apart by
+    /// colour-blind readers and by lightness in greyscale print.
+    pub(crate) fn hue(&self, hue: Hue) -> Option<&'static str> {
+        match self {
+            Style::Textbook => None,
+            Style::Handout => Some(match hue {
+                Hue::Velocity => "#0072b2",
+                Hue::Acceleration => "#d55e00",
+                Hue::Force => "#009e73",
+            }),
+        }
+    }
+
+    /// The colour of a plotted series by its dash, in the handout (each
+    /// series differs in both); `None` keeps the role's colour.
+    pub(crate) fn series(&self, dash: Dash) -> Option<&'static str> {
+        match self {
+            Style::Textbook => None,
+            Style::Handout => Some(match dash {
+                Dash::Solid => "#0072b2",
+                Dash::Dashed => "#d55e00",
+                Dash::Dotted => "#009e73",
+                Dash::DashDot => "#cc79a7",
+            }),
         }
     }
 

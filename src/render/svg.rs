@@ -5,8 +5,8 @@ use super::labels::{Bounds, Obstacles, place};
 use super::number::{fmt, fmt_coefficient};
 use super::style::*;
 use crate::figure::{
-    Align, Figure, Item, PageFromWorld, Panel, Path, PathSegment, RichText, Role, Shape, Symbol,
-    TextSize,
+    Align, Figure, Font, Item, PageFromWorld, Panel, Path, PathSegment, RichText, Role,
+    SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Shape, Symbol, TextSize,
 };
 use crate::geom::{Point, Vector};
 use crate::render::Style;
@@ -16,7 +16,9 @@ use std::fmt as stdfmt;
 use std::fmt::Write as _;
 use std::hash::Hash;
 use svg::Document;
-use svg::node::element::{Circle, Element, Group, Path as SvgPath, Rectangle};
+use svg::node::element::{
+    Circle, ClipPath, Definitions, Element, Group, Path as SvgPath, Rectangle,
+};
 use svg::node::{Node, NodeDefaultHash};
 
 /// Markup written as is inside a `<text>` (runs as `<tspan>`s), without
@@ -138,9 +140,20 @@ fn arrow_head(tip: Point, u: Vector, colour: &'static str) -> SvgPath {
         .set("stroke", "none")
 }
 
-/// A text's width and height on the page, for placement.
-fn text_half(text: &RichText, size: f64) -> Vector {
-    Vector::new(0.5 * text.width_em() * size + 1.0, 0.42 * size)
+/// Where [`text_node`] puts the baseline: this fraction of the size below
+/// the text's centre (half the cap height, near enough).
+const BASELINE: f64 = 0.35;
+
+/// Half the width and height of the box about a text's centre that holds
+/// its ink (advances and glyph bounds of `font`) with 1 unit to spare, for
+/// placement.
+fn text_half(text: &RichText, size: f64, font: Font) -> Vector {
+    let b = text.measure(font, size);
+    let baseline = BASELINE * size;
+    Vector::new(
+        0.5 * b.width + 1.0,
+        (b.above - baseline).max(b.below + baseline) + 1.0,
+    )
 }
 
 fn starts_italic(text: &RichText) -> bool {
@@ -169,14 +182,20 @@ fn runs_markup(text: &RichText, size: f64, base_italic: bool) -> String {
     let mut out = String::new();
     let mut shift = 0.0;
     for run in text.runs() {
-        let dy = if run.subscript { 0.3 * size } else { 0.0 };
+        let dy = if run.subscript {
+            SUBSCRIPT_DROP * size
+        } else if run.superscript {
+            -SUPERSCRIPT_RISE * size
+        } else {
+            0.0
+        };
         let mut attrs = String::new();
         if dy != shift {
             let _ = write!(attrs, " dy=\"{}\"", fmt(dy - shift));
             shift = dy;
         }
-        if run.subscript {
-            let _ = write!(attrs, " font-size=\"{}\"", fmt(0.7 * size));
+        if run.subscript || run.superscript {
+            let _ = write!(attrs, " font-size=\"{}\"", fmt(SUBSCRIPT_SIZE * size));
         }
         if run.italic != base_italic {
             let _ = write!(
@@ -209,7 +228,7 @@ fn text_node(
     t.assign("id", id);
     t.assign("class", Role::Label.name());
     t.assign("x", fmt(centre.x));
-    t.assign("y", fmt(centre.y + 0.35 * size));
+    t.assign("y", fmt(centre.y + BASELINE * size));
     t.assign("font-size", fmt(size));
     t.assign("fill", colour);
     t.assign("text-anchor", anchor);
@@ -231,6 +250,7 @@ struct PanelWriter<'a> {
     t: &'a PageFromWorld,
     page_width: f64,
     style: crate::render::Style,
+    font: Font,
     obstacles: Obstacles,
     pending: Vec<Pending>,
 }
@@ -275,10 +295,16 @@ impl PanelWriter<'_> {
         let mut pen = self.style.pen(item.role);
         if let Some(dash) = item.dash {
             pen.dash = Style::dash(dash);
+            if let Some(colour) = self.style.series(dash) {
+                pen.colour = colour;
+            }
+        }
+        if let Some(colour) = item.hue.and_then(|h| self.style.hue(h)) {
+            pen.colour = colour;
         }
         self.obstacles.set_weight(match item.role {
             Role::Link | Role::Force => 3.0,
-            Role::Construction => 1.5,
+            Role::Construction | Role::Result => 1.5,
             _ => 1.0,
         });
         let id = item.id.as_str();
@@ -427,11 +453,16 @@ impl PanelWriter<'_> {
                 if pts.len() < 3 || !pts.iter().all(finite) {
                     return None;
                 }
-                self.obstacles.polyline(&pts);
-                self.obstacles.segment(pts[pts.len() - 1], pts[0]);
+                // No letter inside the block: the whole body is kept clear.
+                let (lo, hi) = pts
+                    .iter()
+                    .fold((pts[0], pts[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+                self.obstacles.boxed(Bounds { min: lo, max: hi });
+                // Unfilled, so that curves and constructions through the
+                // slider (Kisch's semicircle ends at A) stay visible.
                 Box::new(
                     path(polyline_d(&pts, true), Pen { width: 1.6, ..pen })
-                        .set("fill", self.style.paper())
+                        .set("fill", "none")
                         .set("id", id)
                         .set("class", class),
                 )
@@ -546,7 +577,7 @@ impl PanelWriter<'_> {
                 let (a2, b2) = (a + n * *offset, b + n * *offset);
                 let ext = |p: Point, q: Point| polyline_d(&[p + n * 3.0, q + n * 4.0], false);
                 let size = self.style.font_size(TextSize::Small) + 1.0;
-                let half = text_half(text, size);
+                let half = text_half(text, size, self.font);
                 let centre = nalgebra::center(&a2, &b2) + n * (half.y + 3.0);
                 self.obstacles.boxed(Bounds::around(centre, half));
                 self.obstacles.segment(a2, b2);
@@ -596,7 +627,7 @@ impl PanelWriter<'_> {
                     return None;
                 }
                 let size = self.style.font_size(*size);
-                let half = text_half(text, size);
+                let half = text_half(text, size, self.font);
                 let (anchor, middle) = match align {
                     Align::Start => ("start", c + Vector::new(half.x, 0.0)),
                     Align::Middle => ("middle", c),
@@ -676,22 +707,25 @@ impl PanelWriter<'_> {
                 // One size for all lines, small enough for the longest to
                 // fit between the corner and the page's right edge.
                 let room = (self.page_width - corner.x - 8.0).max(10.0);
-                let widest = lines.iter().map(|l| l.width_em()).fold(0.0, f64::max);
-                let size = if widest * NOTE_SIZE > room {
-                    room / widest
+                let widest = lines
+                    .iter()
+                    .map(|l| l.width(self.font, NOTE_SIZE))
+                    .fold(0.0, f64::max);
+                let size = if widest > room {
+                    NOTE_SIZE * room / widest
                 } else {
                     NOTE_SIZE
                 };
                 for (i, line) in lines.iter().enumerate() {
                     let y = corner.y + size * 0.8 + NOTE_LINE * i as f64;
-                    let half = text_half(line, size);
+                    let half = text_half(line, size, self.font);
                     self.obstacles.boxed(Bounds::around(
-                        Point::new(corner.x + half.x, y - 0.35 * size),
+                        Point::new(corner.x + half.x, y - BASELINE * size),
                         half,
                     ));
                     g = g.add(text_node(
                         &format!("{id}-{}", i + 1),
-                        Point::new(corner.x, y - 0.35 * size),
+                        Point::new(corner.x, y - BASELINE * size),
                         line,
                         size,
                         colour,
@@ -770,6 +804,7 @@ fn draw_order(role: Role, shape: &Shape) -> (usize, usize) {
 fn panel_group(
     panel: &Panel,
     style: crate::render::Style,
+    font: Font,
     page: &crate::figure::PageRect,
 ) -> Group {
     let t = panel.transform();
@@ -781,6 +816,7 @@ fn panel_group(
         t,
         page_width: page.x + page.width,
         style,
+        font,
         obstacles: Obstacles::default(),
         pending: Vec::new(),
     };
@@ -792,13 +828,30 @@ fn panel_group(
             nodes.push(n);
         }
     }
+    if panel.is_clipped() {
+        let r = panel.rect();
+        let clip = format!("clip-{}", panel.id());
+        g = g
+            .add(
+                Definitions::new().add(
+                    ClipPath::new().set("id", clip.clone()).add(
+                        Rectangle::new()
+                            .set("x", fmt(r.x))
+                            .set("y", fmt(r.y))
+                            .set("width", fmt(r.width))
+                            .set("height", fmt(r.height)),
+                    ),
+                ),
+            )
+            .set("clip-path", format!("url(#{clip})"));
+    }
     for n in nodes {
         g = g.add(n);
     }
     let colour = style.pen(Role::Label).colour;
     let pending = std::mem::take(&mut w.pending);
     for p in pending {
-        let half = text_half(&p.text, p.size);
+        let half = text_half(&p.text, p.size, font);
         let centre = place(p.anchor, half, p.gap, &w.obstacles, page);
         w.obstacles.boxed(Bounds::around(centre, half));
         g = g.add(text_node(
@@ -863,7 +916,7 @@ pub fn to_svg(figure: &Figure) -> String {
         .set("width", fmt(w))
         .set("height", fmt(h))
         .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
-        .set("font-family", FONT_FAMILY)
+        .set("font-family", figure.font().css_family())
         .add(metadata)
         .add(
             Rectangle::new()
@@ -878,12 +931,14 @@ pub fn to_svg(figure: &Figure) -> String {
         // Labels stay in their panel, or just outside it (into the
         // margin) for points near its edge, and always on the page.
         let r = panel.rect();
-        let x0 = (r.x - 8.0).max(page.x);
-        let y0 = (r.y - 8.0).max(page.y);
-        let x1 = (r.x + r.width + 8.0).min(page.x + page.width);
-        let y1 = (r.y + r.height + 8.0).min(page.y + page.height);
+        // A clipped panel keeps its labels inside.
+        let out = if panel.is_clipped() { -3.0 } else { 8.0 };
+        let x0 = (r.x - out).max(page.x);
+        let y0 = (r.y - out).max(page.y);
+        let x1 = (r.x + r.width + out).min(page.x + page.width);
+        let y1 = (r.y + r.height + out).min(page.y + page.height);
         let room = crate::figure::PageRect::new(x0, y0, x1 - x0, y1 - y0);
-        doc = doc.add(panel_group(panel, style, &room));
+        doc = doc.add(panel_group(panel, style, figure.font(), &room));
     }
     let mut s = doc.to_string();
     s.push('\n');

@@ -2,7 +2,7 @@
 //! panel's world frame, keeps ids unique, and shows points that fall off
 //! the page by arrows at its edge.
 
-use crate::figure::{Item, PageFromWorld, RichText, Role, Shape, TextSize};
+use crate::figure::{Hue, Item, PageFromWorld, RichText, Role, Shape, TextSize};
 use crate::geom::{Direction, Frame, Intersection, Point, Vector};
 use serde_json::{Map, Value, json};
 use std::collections::BTreeSet;
@@ -29,6 +29,16 @@ pub(crate) struct Canvas {
     items: Vec<Item>,
     ids: BTreeSet<String>,
     points: Map<String, Value>,
+    /// Put before every id (a detail panel's `detail-`).
+    prefix: &'static str,
+    /// Whether points off the frame are shown by arrows at its edge (not
+    /// in a detail, which shows only its region).
+    edge_arrows: bool,
+    /// Where constructed points get neither dot nor letter (the region a
+    /// detail shows lettered).
+    quiet: Option<Frame>,
+    /// What the lines drawn now stand for (set per layer).
+    hue: Option<Hue>,
 }
 
 impl Canvas {
@@ -39,7 +49,46 @@ impl Canvas {
             items: Vec::new(),
             ids: BTreeSet::new(),
             points: Map::new(),
+            prefix: "",
+            edge_arrows: true,
+            quiet: None,
+            hue: None,
         }
+    }
+
+    /// Sets what the lines drawn from now on stand for; returns the
+    /// previous setting.
+    pub(crate) fn set_hue(&mut self, hue: Option<Hue>) -> Option<Hue> {
+        std::mem::replace(&mut self.hue, hue)
+    }
+
+    /// Adds an item standing for `hue` (see [`Canvas::push`]).
+    pub(crate) fn push_hued(
+        &mut self,
+        id: impl Into<String>,
+        role: Role,
+        hue: Hue,
+        shape: Shape,
+    ) -> bool {
+        let old = self.set_hue(Some(hue));
+        let added = self.push(id, role, shape);
+        self.hue = old;
+        added
+    }
+
+    /// Leaves the dots and letters of constructed points inside `region`
+    /// to a detail (pins and lines are still drawn).
+    pub(crate) fn quiet(mut self, region: Frame) -> Self {
+        self.quiet = Some(region);
+        self
+    }
+
+    /// The canvas of a detail: every id gets `prefix`, and points off the
+    /// frame are left out rather than shown by arrows.
+    pub(crate) fn detail(mut self, prefix: &'static str) -> Self {
+        self.prefix = prefix;
+        self.edge_arrows = false;
+        self
     }
 
     pub(crate) fn transform(&self) -> &PageFromWorld {
@@ -72,7 +121,13 @@ impl Canvas {
             return false;
         }
         self.ids.insert(id.clone());
-        self.items.push(Item::new(id, role, shape));
+        let mut item = Item::new(format!("{}{id}", self.prefix), role, shape);
+        if let Some(h) = self.hue
+            && !matches!(role, Role::Link | Role::Frame | Role::Label)
+        {
+            item = item.hued(h);
+        }
+        self.items.push(item);
         true
     }
 
@@ -143,12 +198,15 @@ impl Canvas {
         self.points
             .insert(name.to_string(), json!([round(p.x), round(p.y)]));
         let letter = RichText::italic(name);
-        if self.contains(p) {
+        let quiet = marker == Marker::Dot && self.quiet.is_some_and(|f| f.contains(p));
+        if quiet {
+        } else if self.contains(p) {
             match marker {
                 Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
                 Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
             };
             self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+        } else if !self.edge_arrows {
         } else if let Some((_, edge)) = self.frame.clip_segment(from, p) {
             let dir = p - from;
             if dir.norm() > 0.0 {
@@ -195,6 +253,9 @@ impl Canvas {
             json!({"at_infinity": [round(direction.x), round(direction.y)]}),
         );
         let u = direction.into_inner();
+        if !self.edge_arrows {
+            return;
+        }
         if let Some((_, edge)) = self.frame.clip_ray(through, u) {
             let head = edge - u * self.world(EDGE_GAP);
             if (head - through).dot(&u) > 0.0 {

@@ -4,7 +4,7 @@
 use super::{Layer, Notation, Page, Scene};
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
-use crate::figure::FigureName;
+use crate::figure::{FigureName, Font};
 use crate::render::Style;
 use crate::{Angle, SliderCrank};
 use serde::Deserialize;
@@ -21,6 +21,7 @@ struct SceneFile {
     angles: Option<Spanned<Vec<f64>>>,
     layers: Option<Vec<Layer>>,
     style: Option<Style>,
+    font: Option<Font>,
     notation: Option<Notation>,
     mirror: Option<bool>,
     page: Option<PageFile>,
@@ -148,6 +149,9 @@ pub(super) fn parse(text: &str) -> Result<Scene> {
     }
     if let Some(s) = file.style {
         scene = scene.with_style(s);
+    }
+    if let Some(f) = file.font {
+        scene = scene.with_font(f);
     }
     if let Some(n) = file.notation {
         scene = scene.with_notation(n);

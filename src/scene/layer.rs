@@ -11,8 +11,11 @@ pub enum Layer {
     /// Frame, crank circle, crank, rod, slider block between guides, pins.
     /// Computes no construction.
     Mechanism,
-    /// Dimensions: crank angle θ, the displacement x from mid-stroke, r
-    /// and l (Fig. 62). Computes no construction.
+    /// The angles and lengths that define the pose: crank angle θ, rod
+    /// angle φ, r and l (Fig. 62; Ng Fig. 1). Computes no construction.
+    Angles,
+    /// Dimensions: the displacement x from mid-stroke, the stroke, and the
+    /// offset e when it is not zero (Fig. 62). Computes no construction.
     Dimensions,
     /// The rod's fixed and moving centrodes (Fig. 61); needs D.
     Centrodes,
@@ -26,8 +29,13 @@ pub enum Layer {
     Klein,
     /// Kisch's acceleration construction (Fig. 66); needs E, never D.
     Kisch,
-    /// Ng's OM torque line with the slider force and side thrust; needs E.
+    /// Ng's OM torque line with the slider force, the side thrust and the
+    /// force F_c on the crank pin; needs E.
     Torque,
+    /// The motion (Ng Figs. 1 and A1): the crank's ω and the rod's Ω as
+    /// turning arrows, the velocities v_c of the crank pin and v_p of the
+    /// slider. Computes no construction.
+    Motion,
     /// Scale notes ("*CB* represents V_c = ..."); needs what the drawn
     /// velocity and acceleration layers need.
     Scales,
@@ -35,8 +43,9 @@ pub enum Layer {
 
 impl Layer {
     /// Every layer, in drawing order.
-    pub const ALL: [Layer; 10] = [
+    pub const ALL: [Layer; 12] = [
         Layer::Mechanism,
+        Layer::Angles,
         Layer::Dimensions,
         Layer::Centrodes,
         Layer::Coupler,
@@ -45,6 +54,7 @@ impl Layer {
         Layer::Klein,
         Layer::Kisch,
         Layer::Torque,
+        Layer::Motion,
         Layer::Scales,
     ];
 
@@ -52,6 +62,7 @@ impl Layer {
     pub fn name(&self) -> &'static str {
         match self {
             Layer::Mechanism => "mechanism",
+            Layer::Angles => "angles",
             Layer::Dimensions => "dimensions",
             Layer::Centrodes => "centrodes",
             Layer::Coupler => "coupler",
@@ -60,6 +71,7 @@ impl Layer {
             Layer::Klein => "klein",
             Layer::Kisch => "kisch",
             Layer::Torque => "torque",
+            Layer::Motion => "motion",
             Layer::Scales => "scales",
         }
     }

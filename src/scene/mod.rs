@@ -23,6 +23,7 @@ pub use notation::Notation;
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result, finite, positive};
 use crate::figure::Figure;
+use crate::figure::Font;
 use crate::render::Style;
 use crate::{Angle, SliderCrank};
 
@@ -106,6 +107,7 @@ pub struct Scene {
     angles: Vec<Angle>,
     layers: Vec<Layer>,
     style: Style,
+    font: Font,
     notation: Notation,
     mirror: bool,
     page: Page,
@@ -128,6 +130,7 @@ impl Scene {
             angles: vec![angle],
             layers: vec![Layer::Mechanism],
             style: Style::Textbook,
+            font: Font::default(),
             notation: Notation::Textbook,
             mirror: false,
             page: Page::default(),
@@ -185,6 +188,12 @@ impl Scene {
         self
     }
 
+    /// The face of the text.
+    pub fn with_font(mut self, font: Font) -> Self {
+        self.font = font;
+        self
+    }
+
     /// The letters.
     pub fn with_notation(mut self, notation: Notation) -> Self {
         self.notation = notation;
@@ -204,9 +213,10 @@ impl Scene {
         self
     }
 
-    /// The crank speed ω in rad/s, for scale notes (finite, non-zero).
+    /// The crank speed ω in rad/s, for scale notes (non-zero, at most
+    /// [`crate::MAX_OMEGA`]).
     pub fn with_omega(mut self, omega: f64) -> Result<Self> {
-        let omega = finite("omega", omega)?;
+        let omega = crate::analytic::kinematics::check_omega(omega)?;
         if omega == 0.0 {
             return Err(Error::NotPositive {
                 name: "omega",
@@ -285,6 +295,11 @@ impl Scene {
         self.style
     }
 
+    /// The face of the text.
+    pub fn font(&self) -> Font {
+        self.font
+    }
+
     /// The letters.
     pub fn notation(&self) -> Notation {
         self.notation
@@ -331,9 +346,9 @@ impl Scene {
     }
 
     /// Reads a scene from TOML (see `examples/*.toml`). Errors name the line
-    /// and column of the bad key or value.
+    /// and column of the bad key or value, in one line.
     pub fn from_toml(text: &str) -> Result<Self> {
-        file::parse(text)
+        file::parse(text).map_err(Error::one_line)
     }
 
     /// Builds the figure, computing only what the layers draw.

@@ -42,8 +42,15 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         0.0,
         (far - near).max(2.0 * r),
     )?;
-    let mut distance = Plot::new("distance-base", rect, x, f_axis(&f_title)?, ctx.tolerance)?
-        .with_caption("(a) Acceleration on a distance base");
+    let mut distance = Plot::new(
+        "distance-base",
+        rect,
+        x,
+        f_axis(&f_title)?,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption("(a) Acceleration on a distance base");
     let outward = against_travel(m, exact);
     let mut pieces: Vec<(&dyn crate::diagram::Curve, std::ops::RangeInclusive<f64>)> =
         vec![(&outward, o..=i)];
@@ -95,9 +102,11 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         lo.min(-r * w2),
         hi.max(r * w2) + 0.2 * (hi.max(r * w2) - lo.min(-r * w2)),
     )?;
-    let mut time = Plot::new("time-base", rect, x, headroom, ctx.tolerance)?.with_caption(
-        &format!("(b) Acceleration on a time base, {} rpm", short(ctx.rpm())),
-    );
+    let mut time = Plot::new("time-base", rect, x, headroom, ctx.tolerance, ctx.font)?
+        .with_caption(&format!(
+            "(b) Acceleration on a time base, {} rpm",
+            short(ctx.rpm())
+        ));
     let exact_t = against_time(m, omega, exact);
     time.curve(
         "curve-acceleration-time",
@@ -143,7 +152,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     );
     let top = 16.0 + row + 12.0;
     let rect = super::PageRect::new(16.0, top, half, page.height() - top - 16.0);
-    let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance)?
+    let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dashed");
     polar_construction(&mut plot, &ctx.pose(), reach);
     plot.curve(

@@ -121,7 +121,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             width,
             height,
         );
-        let mut plot = Plot::new(name, rect, x, y, ctx.tolerance)?.with_caption(caption);
+        let mut plot = Plot::new(name, rect, x, y, ctx.tolerance, ctx.font)?.with_caption(caption);
         for (m, (n, dash)) in engines.iter().zip(RATIOS) {
             let curve = against_angle(*m, f);
             let pieces: [(&dyn Curve, _); 1] = [(&curve, 0.0..=360.0)];

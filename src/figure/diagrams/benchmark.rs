@@ -95,7 +95,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         // A decade of room above the data for the legend.
         let y = Axis::log(title, lo, 10.0 * hi)?;
         let rect = PageRect::new(16.0 + k as f64 * (width + 16.0), 16.0, width, height);
-        let mut plot = Plot::new(name, rect, x, y, ctx.tolerance)?
+        let mut plot = Plot::new(name, rect, x, y, ctx.tolerance, ctx.font)?
             .with_grid()
             .with_caption(caption);
         for (j, curve) in names.iter().enumerate() {

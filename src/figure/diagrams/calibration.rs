@@ -51,7 +51,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         all_y.iter().cloned().fold(f64::NEG_INFINITY, f64::max),
     )?;
     let rect = PageRect::new(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 20.0);
-    let mut plot = Plot::new("calibration", rect, x, y, ctx.tolerance)?.with_caption(
+    let mut plot = Plot::new("calibration", rect, x, y, ctx.tolerance, ctx.font)?.with_caption(
         if ctx.options.data.is_some() {
             "Calibration of the force transducer (--data)"
         } else {

@@ -47,6 +47,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         *panel.rect(),
         *panel.transform(),
         ctx.tolerance,
+        ctx.font,
     );
     for item in &items {
         plot.avoid(item);

@@ -35,6 +35,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         *panel.rect(),
         *panel.transform(),
         ctx.tolerance,
+        ctx.font,
     );
     for item in panel.items() {
         plot.avoid(item);

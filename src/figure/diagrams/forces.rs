@@ -34,7 +34,7 @@ fn tan_phi(p: &Pose) -> (f64, f64) {
 
 /// F = T / OM and its derivative per radian; `None` at a dead centre.
 fn force(p: &Pose) -> Option<(f64, f64)> {
-    let f = statics::slider_force(p, NG_TORQUE)?;
+    let f = statics::slider_force(p, NG_TORQUE).ok()??;
     let s1 = p.position_rate();
     Some((f, NG_TORQUE * p.position_acceleration() / (s1 * s1)))
 }
@@ -93,8 +93,15 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 180.0)?.with_step(20.0) };
     let height = page.height() - 16.0 - 250.0 - 54.0 - 8.0;
     let y = Axis::nice("force on the slider (N)", least, most)?;
-    let mut forces = Plot::new("forces", ctx.band(16.0, height), theta()?, y, ctx.tolerance)?
-        .with_caption("(a) Slider force against crank angle");
+    let mut forces = Plot::new(
+        "forces",
+        ctx.band(16.0, height),
+        theta()?,
+        y,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption("(a) Slider force against crank angle");
     let pieces: [(&dyn Curve, _); 1] = [(&f_curve, 0.0..=180.0)];
     forces.curve(
         "curve-force",
@@ -143,6 +150,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         theta()?,
         y,
         ctx.tolerance,
+        ctx.font,
     )?
     .with_caption("(b) Transmission angle, β = 180° − φ − θ (eq. 11)");
     let b_curve = |deg: f64| -> Option<(Point, Vector)> {

@@ -152,8 +152,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(foot.x + 0.12, top.y + 0.06),
     );
     let rect = PageRect::new(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 64.0);
-    let mut plot =
-        Plot::world("incline", rect, &world, false, ctx.tolerance)?.with_caption(&format!(
+    let mut plot = Plot::world("incline", rect, &world, false, ctx.tolerance, ctx.font)?
+        .with_caption(&format!(
             "A block on a plane tilted at φ = {}°, on the point of sliding",
             short(tilt)
         ));

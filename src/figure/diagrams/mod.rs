@@ -14,7 +14,7 @@ mod incline;
 mod rod;
 mod velocity;
 
-use super::{Figure, FigureName, FigureOptions, PageRect, Panel, RichText};
+use super::{Figure, FigureName, FigureOptions, Font, PageRect, Panel, RichText};
 use crate::diagram::{Plot, format_number};
 use crate::error::{Error, Result};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
@@ -41,6 +41,7 @@ pub(crate) struct Ctx<'a> {
     pub omega: f64,
     pub angle: Angle,
     pub style: Style,
+    pub font: Font,
     pub tolerance: f64,
 }
 
@@ -84,6 +85,7 @@ impl Ctx<'_> {
             .named(self.name.name())
             .with_page(Page::new(width, height, MARGIN)?)
             .with_style(self.style)
+            .with_font(self.font)
             .with_unit(self.unit())
             .with_omega(self.omega)?
             .mirrored(!self.name.is_ng()))
@@ -123,15 +125,17 @@ fn uses(name: FigureName) -> &'static [&'static str] {
     const MECH: &str = "mechanism (--crank, --rod, --offset)";
     const SPEED: &str = "crank speed (--rpm, --omega)";
     match name {
-        FigureName::Fig61Centrodes | FigureName::CouplerCurves => &[MECH, "--angle", "--style"],
+        FigureName::Fig61Centrodes | FigureName::CouplerCurves => {
+            &[MECH, "--angle", "--style", "--font"]
+        }
         FigureName::Fig64VelocityDiagrams
         | FigureName::AccelerationDiagrams
-        | FigureName::RodMotion => &[MECH, SPEED, "--angle", "--style"],
-        FigureName::ApproximationError => &["--style"],
-        FigureName::NgFig2Incline => &["--angle", "--style"],
-        FigureName::NgFig7Calibration => &["--data", "--fit", "--style"],
-        FigureName::NgFig8Forces => &[MECH, "--data", "--style"],
-        FigureName::CurveBenchmark => &["--data", "--style"],
+        | FigureName::RodMotion => &[MECH, SPEED, "--angle", "--style", "--font"],
+        FigureName::ApproximationError => &["--style", "--font"],
+        FigureName::NgFig2Incline => &["--angle", "--style", "--font"],
+        FigureName::NgFig7Calibration => &["--data", "--fit", "--style", "--font"],
+        FigureName::NgFig8Forces => &[MECH, "--data", "--style", "--font"],
+        FigureName::CurveBenchmark => &["--data", "--style", "--font"],
         _ => &[],
     }
 }
@@ -151,6 +155,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
                 .into(),
         });
     }
+    let omega = crate::analytic::kinematics::check_omega(omega)?;
     let ctx = Ctx {
         name,
         options,
@@ -161,6 +166,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
             None => Angle::from_degrees(name.angle_degrees())?,
         },
         style: options.style.unwrap_or(Style::Textbook),
+        font: options.font.unwrap_or_default(),
         tolerance: DEFAULT_TOLERANCE,
     };
     match name {
@@ -185,6 +191,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
 pub(crate) struct Sheet {
     name: FigureName,
     style: Style,
+    font: Font,
     tolerance: f64,
     panels: Vec<Panel>,
     plots: Vec<Value>,
@@ -196,6 +203,7 @@ impl Sheet {
         Self {
             name: ctx.name,
             style: ctx.style,
+            font: ctx.font,
             tolerance: ctx.tolerance,
             panels: Vec::new(),
             plots: Vec::new(),
@@ -280,6 +288,7 @@ impl Sheet {
             self.panels,
             self.meta,
         )
+        .with_font(self.font)
     }
 }
 

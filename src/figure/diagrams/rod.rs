@@ -36,6 +36,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         theta_axis()?,
         y,
         ctx.tolerance,
+        ctx.font,
     )?
     .with_caption("(a) Angular velocity of the rod, ω *r* cos θ / (*l* cos φ)");
     let rate = against_angle(m, |p: &Pose| {
@@ -68,6 +69,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         theta_axis()?,
         y,
         ctx.tolerance,
+        ctx.font,
     )?
     .with_caption("(b) Angular acceleration of the rod");
     let exact = against_angle(m, |p: &Pose| {

@@ -43,6 +43,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         *panel.rect(),
         *panel.transform(),
         ctx.tolerance,
+        ctx.font,
     );
     for item in panel.items() {
         plot.avoid(item);
@@ -91,10 +92,11 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         lo.min(-vc),
         hi.max(vc),
     )?;
-    let mut time = Plot::new("time-base", rect, x, y, ctx.tolerance)?.with_caption(&format!(
-        "Velocity on a time base: one revolution at {} rpm",
-        short(ctx.rpm())
-    ));
+    let mut time =
+        Plot::new("time-base", rect, x, y, ctx.tolerance, ctx.font)?.with_caption(&format!(
+            "Velocity on a time base: one revolution at {} rpm",
+            short(ctx.rpm())
+        ));
     let exact = against_time(m, omega, |p: &Pose| {
         (
             -omega * p.position_rate(),

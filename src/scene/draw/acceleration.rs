@@ -3,7 +3,7 @@
 use super::Ctx;
 use super::velocity::{basics_d, basics_e};
 use crate::construct::{AccelerationPoints, Kisch};
-use crate::figure::{RichText, Role, Shape, TextSize};
+use crate::figure::{Role, Shape};
 use crate::geom::{Point, Vector};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
@@ -15,7 +15,7 @@ fn fg(ctx: &Ctx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, from_
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let (f, g) = (p.f(), p.g());
     canvas.segment(ctx.line(from_name, G), Role::Construction, from, g);
-    canvas.segment(ctx.line(CrankCentre, G), Role::Construction, c, g);
+    canvas.segment(ctx.line(CrankCentre, G), Role::Result, c, g);
     let along = if (a - f).norm() > (b - f).norm() {
         a - f
     } else {
@@ -56,17 +56,13 @@ pub(crate) fn klein(ctx: &Ctx, canvas: &mut Canvas) {
             fg(ctx, canvas, k.points(), f, F);
         }
         None => {
-            // D at infinity: DE has no finite end, the construction fails.
-            let r = pose.mechanism().crank();
-            canvas.label(
-                "note-klein",
-                Point::new(0.0, -0.6 * r),
-                RichText::parse(&format!(
-                    "*{}* at infinity: Klein's construction fails",
-                    ctx.letter(InstantCentre)
-                )),
-                TextSize::Small,
-            );
+            // D at infinity (θ = 90°, 270°): DE is the perpendicular to the
+            // stroke through E, so CF, parallel to it, is the perpendicular
+            // through C, and meets AB at F = B. The limit of the
+            // construction, with the F and G that Kisch finds without D.
+            let p = *ctx.main.kisch().points();
+            canvas.segment(ctx.line(CrankCentre, F), Role::Construction, c, p.f());
+            fg(ctx, canvas, &p, p.f(), F);
         }
     }
 }

@@ -12,10 +12,11 @@ const FIRST: f64 = 22.0;
 /// Spacing of stacked dimension lines, page units.
 const STEP: f64 = 24.0;
 
-pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+/// θ at C, φ between the rod and a parallel to the stroke through B, and
+/// the links' lengths r and l.
+pub(crate) fn angles(ctx: &Ctx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
     let m = pose.mechanism();
-    let (r, e) = (m.crank(), m.offset());
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let theta = pose.angle().radians();
     if theta > 0.0 {
@@ -30,6 +31,52 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
             },
         );
     }
+    // φ at B: a short parallel to the stroke towards the slider, and the
+    // arc from it to the rod.
+    let ba = a - b;
+    let phi = ba.y.atan2(ba.x);
+    if canvas.page(ba.norm()) * phi.abs() > 6.0 {
+        let reach = canvas.world(PARALLEL).min(0.6 * ba.x);
+        canvas.segment(
+            "line-parallel-B",
+            Role::Auxiliary,
+            b,
+            b + Vector::new(reach, 0.0),
+        );
+        canvas.push(
+            "angle-phi",
+            Role::Dimension,
+            Shape::AngleMark {
+                vertex: b,
+                start: 0.0,
+                sweep: phi,
+                text: Some(RichText::italic("φ")),
+            },
+        );
+    }
+    canvas.label(
+        "value-r",
+        nalgebra::center(&c, &b),
+        RichText::italic("r"),
+        TextSize::Small,
+    );
+    let l = if ctx.scene.notation() == crate::scene::Notation::Ng {
+        RichText::italic("l")
+    } else {
+        RichText::parse(&format!("*l* = {}*r*", super::torque::short(m.ratio())))
+    };
+    canvas.label("value-l", nalgebra::center(&b, &a), l, TextSize::Small);
+}
+
+/// Length of the parallel to the stroke through B that φ is measured
+/// from, page units.
+const PARALLEL: f64 = 62.0;
+
+pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+    let pose = ctx.main.pose();
+    let m = pose.mechanism();
+    let e = m.offset();
+    let (a, c) = (pose.a(), pose.c());
     // Mid-stroke O and the displacement x = OA (signed: A beyond O, away
     // from C, is positive here).
     let (near, far) = ctx.sizes.travel;
@@ -61,17 +108,25 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
             text: RichText::parse("stroke"),
         },
     );
-    canvas.label(
-        "value-r",
-        nalgebra::center(&c, &b),
-        RichText::italic("r"),
-        TextSize::Small,
+}
+
+/// The offset e of the line of stroke from the crank centre, dimensioned
+/// beyond the crank circle on the side away from the slider.
+pub(crate) fn offset(ctx: &Ctx, canvas: &mut Canvas) {
+    let m = ctx.scene.mechanism();
+    let (r, e) = (m.crank(), m.offset());
+    if canvas.page(e.abs()) < 4.0 {
+        return;
+    }
+    canvas.push(
+        "dimension-e",
+        Role::Dimension,
+        Shape::Dimension {
+            from: Point::origin(),
+            to: Point::new(0.0, e),
+            side: Vector::new(-1.0, 0.0),
+            offset: canvas.page(r) + 18.0,
+            text: RichText::italic("e"),
+        },
     );
-    canvas.label(
-        "value-l",
-        nalgebra::center(&b, &a),
-        RichText::parse(&format!("*l* = {}*r*", super::torque::short(m.ratio()))),
-        TextSize::Small,
-    );
-    let _ = r;
 }

@@ -3,9 +3,11 @@
 mod acceleration;
 mod centres;
 mod curves;
+mod detail;
 mod dimensions;
 mod fit;
 mod mechanism;
+mod motion;
 mod scales;
 mod torque;
 mod velocity;
@@ -15,8 +17,10 @@ use super::Scene;
 use super::cache::{Constructions, Evaluations};
 use super::canvas::{Canvas, round};
 use super::notation::Named;
-use crate::figure::{Figure, PageFromWorld, PageRect, Panel, Role, Shape};
-use crate::geom::Point;
+use crate::figure::{
+    Align, Figure, Hue, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
+};
+use crate::geom::{Frame, Point, Vector};
 use crate::render::NOTE_LINE;
 use serde_json::{Map, Value, json};
 
@@ -24,6 +28,8 @@ use serde_json::{Map, Value, json};
 const INSET: f64 = 26.0;
 /// Extra room on the slider's side for force arrows.
 const FORCE_ROOM: f64 = 80.0;
+/// Extra room above and below for the side thrust's arrow and its value.
+const SIDE_ROOM: f64 = 56.0;
 
 /// Sizes shared by the layers, in world units.
 pub(crate) struct Sizes {
@@ -78,6 +84,13 @@ impl Ctx<'_> {
     }
 }
 
+/// Room between the main view and the detail below it, page units.
+const DETAIL_GAP: f64 = 10.0;
+/// Height of the detail's caption line, page units.
+const CAPTION: f64 = 22.0;
+/// Room between the detail and the notes below it, page units.
+const NOTE_GAP: f64 = 8.0;
+
 pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
     let m = scene.mechanism();
     let poses: Vec<Constructions> = scene
@@ -91,12 +104,15 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         sizes: Sizes::new(scene),
     };
 
-    // Notes first: their number of lines fixes the band below the panel.
-    let notes = if scene.has(Layer::Scales) {
+    // Notes first: their number of lines fixes the band below the panels.
+    let mut notes = if scene.has(Layer::Scales) {
         scales::notes(&ctx)
     } else {
         Vec::new()
     };
+    if m.offset() != 0.0 {
+        notes.push(offset_note(scene));
+    }
     let page = scene.page();
     let band = if notes.is_empty() {
         0.0
@@ -104,54 +120,39 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         NOTE_LINE * notes.len() as f64 + 14.0
     };
     let mg = page.margin();
-    let panel = PageRect::new(
-        mg,
-        mg,
-        page.width() - 2.0 * mg,
-        (page.height() - 2.0 * mg - band).max(20.0),
-    );
-    let mut inset = [INSET; 4]; // left, right, top, bottom
-    if scene.has(Layer::Torque) {
-        inset[if scene.is_mirrored() { 0 } else { 1 }] += FORCE_ROOM;
+    let (main, transform) = main_view(&ctx, band);
+    let detail = detail::detail(&ctx, transform.scale(), page.width() - 2.0 * mg);
+    let region = detail.map(|d| detail_frame(&d, transform.scale()));
+    let mut canvas = Canvas::new(transform, transform.world_frame(&main));
+    if let Some(frame) = region {
+        // The letters of the constructed points are the detail's.
+        canvas = canvas.quiet(frame);
     }
-    let mut fit_rect = PageRect::new(
-        panel.x + inset[0],
-        panel.y + inset[2],
-        panel.width - inset[0] - inset[1],
-        panel.height - inset[2] - inset[3],
-    );
-    if fit_rect.width < 20.0 || fit_rect.height < 20.0 {
-        fit_rect = panel;
-    }
-    let world = fit::frame(&ctx);
-    let transform = PageFromWorld::fit(&world, &fit_rect, scene.is_mirrored())
-        .or_else(|| {
-            PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
-        })
-        .expect("a unit map is valid");
-    let frame = transform.world_frame(&panel);
-    let mut canvas = Canvas::new(transform, frame);
+    draw_layers(&ctx, &poses, &mut canvas, true);
 
-    for layer in scene.layers() {
-        match layer {
-            Layer::Mechanism => mechanism::draw(&ctx, &poses[1..], &mut canvas),
-            Layer::Dimensions => dimensions::draw(&ctx, &mut canvas),
-            Layer::Centrodes => curves::centrodes(&ctx, &mut canvas),
-            Layer::Coupler => curves::coupler(&ctx, &mut canvas),
-            Layer::VirtualCentres => centres::draw(&ctx, &mut canvas),
-            Layer::Velocity => velocity::draw(&ctx, &mut canvas),
-            Layer::Klein => acceleration::klein(&ctx, &mut canvas),
-            Layer::Kisch => acceleration::kisch(&ctx, &mut canvas),
-            Layer::Torque => torque::draw(&ctx, &mut canvas),
-            Layer::Scales => {}
-        }
+    let mut bottom = main.y + main.height;
+    let mut panels = Vec::new();
+    if let (Some(d), Some(frame)) = (detail, region) {
+        let panel = detail_panel(
+            &ctx,
+            &poses,
+            &d,
+            &frame,
+            transform.scale(),
+            bottom,
+            page.width(),
+        );
+        mark_detail(&mut canvas, &frame, panel.rect(), d.magnification);
+        bottom = panel.rect().y + panel.rect().height + NOTE_GAP;
+        panels.push(panel);
     }
+    let height = bottom + band + mg;
     if !notes.is_empty() {
         canvas.push(
             "note-scales",
             Role::Label,
             Shape::Note {
-                corner: Point::new(mg + 4.0, page.height() - mg - band + 4.0),
+                corner: Point::new(mg + 4.0, bottom + 4.0),
                 lines: notes,
             },
         );
@@ -163,16 +164,191 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
     }
     let (items, points) = canvas.finish();
     let metadata = metadata(scene, points, &evaluations);
+    panels.insert(0, Panel::new("panel-mechanism", main, transform, items));
     let figure = Figure::new(
         scene.name(),
         page.width(),
-        page.height(),
+        height,
         scene.style(),
         scene.tolerance(),
-        vec![Panel::new("panel-mechanism", panel, transform, items)],
+        panels,
         metadata,
-    );
+    )
+    .with_font(scene.font());
     (figure, evaluations)
+}
+
+/// Every layer of the scene, in order, on `canvas`; the scale notes only
+/// when `notes` (the main view).
+fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bool) {
+    for layer in ctx.scene.layers() {
+        canvas.set_hue(match layer {
+            Layer::Velocity | Layer::Motion => Some(Hue::Velocity),
+            Layer::Klein | Layer::Kisch => Some(Hue::Acceleration),
+            Layer::Torque => Some(Hue::Force),
+            _ => None,
+        });
+        match layer {
+            Layer::Mechanism => {
+                mechanism::draw(ctx, &poses[1..], canvas);
+                if main {
+                    dimensions::offset(ctx, canvas);
+                }
+            }
+            Layer::Angles => dimensions::angles(ctx, canvas),
+            Layer::Dimensions if main => dimensions::draw(ctx, canvas),
+            Layer::Dimensions => {}
+            Layer::Motion => motion::draw(ctx, canvas),
+            Layer::Centrodes => curves::centrodes(ctx, canvas),
+            Layer::Coupler => curves::coupler(ctx, canvas),
+            Layer::VirtualCentres => centres::draw(ctx, canvas),
+            Layer::Velocity => velocity::draw(ctx, canvas),
+            Layer::Klein => acceleration::klein(ctx, canvas),
+            Layer::Kisch => acceleration::kisch(ctx, canvas),
+            Layer::Torque => torque::draw(ctx, canvas),
+            Layer::Scales => {}
+        }
+    }
+    canvas.set_hue(None);
+}
+
+/// The main view: the panel at the top of the page, as wide as the page
+/// allows and only as tall as what it draws needs (the scene's page
+/// height, less the notes' `band`, is the most it may take), and its map.
+fn main_view(ctx: &Ctx, band: f64) -> (PageRect, PageFromWorld) {
+    let scene = ctx.scene;
+    let page = scene.page();
+    let mg = page.margin();
+    let mut inset = [INSET; 4]; // left, right, top, bottom
+    if scene.has(Layer::Torque) {
+        inset[if scene.is_mirrored() { 0 } else { 1 }] += FORCE_ROOM;
+        // The side thrust stands up or down from the block (at most
+        // FORCE_ARROW page units), whichever way the rod leans.
+        inset[2] += SIDE_ROOM;
+        inset[3] += SIDE_ROOM;
+    }
+    let width = page.width() - 2.0 * mg;
+    let fit_width = (width - inset[0] - inset[1]).max(20.0);
+    let most = (page.height() - 2.0 * mg - band - inset[2] - inset[3]).max(20.0);
+    let world = fit::frame(ctx);
+    let size = world.max() - world.min();
+    let scale = (fit_width / size.x).min(most / size.y);
+    let drawn = if scale.is_finite() && scale > 0.0 {
+        (size.y * scale).max(20.0)
+    } else {
+        most
+    };
+    let panel = PageRect::new(mg, mg, width, drawn + inset[2] + inset[3]);
+    let fit_rect = PageRect::new(mg + inset[0], mg + inset[2], fit_width, drawn);
+    let transform = PageFromWorld::fit(&world, &fit_rect, scene.is_mirrored())
+        .or_else(|| {
+            PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
+        })
+        .expect("a unit map is valid");
+    (panel, transform)
+}
+
+/// The world frame a detail shows: its region with room for letters, at
+/// least [`detail::MIN_HEIGHT`] page units tall.
+fn detail_frame(d: &detail::Detail, main_scale: f64) -> Frame {
+    let scale = main_scale * d.magnification;
+    let pad = detail::PAD / scale;
+    let (lo, hi) = (d.region.min(), d.region.max());
+    let grow = (0.5 * detail::MIN_HEIGHT / scale - 0.5 * (hi.y - lo.y) - pad).max(0.0);
+    Frame::new(
+        lo - Vector::new(pad, pad + grow),
+        hi + Vector::new(pad, pad + grow),
+    )
+}
+
+/// The detail panel showing `frame` below `top`, centred on a page
+/// `width` wide.
+fn detail_panel(
+    ctx: &Ctx,
+    poses: &[Constructions],
+    d: &detail::Detail,
+    frame: &Frame,
+    main_scale: f64,
+    top: f64,
+    width: f64,
+) -> Panel {
+    let scene = ctx.scene;
+    let scale = main_scale * d.magnification;
+    let size = (frame.max() - frame.min()) * scale;
+    let rect = PageRect::new(
+        0.5 * (width - size.x),
+        top + DETAIL_GAP + CAPTION,
+        size.x,
+        size.y,
+    );
+    let centre = nalgebra::center(&frame.min(), &frame.max());
+    let transform = PageFromWorld::uniform(scale, scene.is_mirrored(), centre, rect.centre())
+        .expect("a finite positive scale");
+    let mut canvas = Canvas::new(transform, *frame).detail("detail-");
+    draw_layers(ctx, poses, &mut canvas, false);
+    let (items, _) = canvas.finish();
+    Panel::new("panel-detail", rect, transform, items).clipped()
+}
+
+/// The frame on the main view matching the detail, with its
+/// magnification beside it; the detail's border and caption (drawn by the
+/// main view, so that the detail's clip leaves them whole).
+fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
+    let (lo, hi) = (frame.min(), frame.max());
+    let x = torque::short(magnification);
+    canvas.push(
+        "detail-frame",
+        Role::Frame,
+        Shape::Polyline {
+            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
+            closed: true,
+        },
+    );
+    canvas.label(
+        "label-detail",
+        Point::new(lo.x, hi.y),
+        RichText::parse(&format!("×{x}")),
+        TextSize::Small,
+    );
+    let t = *canvas.transform();
+    let (x0, y0) = (rect.x, rect.y);
+    let (x1, y1) = (rect.x + rect.width, rect.y + rect.height);
+    let border = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+        .map(|(x, y)| t.invert(Point::new(x, y)))
+        .to_vec();
+    canvas.push(
+        "detail-border",
+        Role::Frame,
+        Shape::Polyline {
+            points: border,
+            closed: true,
+        },
+    );
+    canvas.push(
+        "detail-caption",
+        Role::Label,
+        Shape::Text {
+            at: t.invert(Point::new(x0, y0)),
+            offset: Vector::new(0.0, -0.5 * CAPTION),
+            text: RichText::parse(&format!("Detail ×{x}")),
+            align: Align::Start,
+            size: TextSize::Small,
+        },
+    );
+}
+
+/// The caption line that names a non-zero offset.
+fn offset_note(scene: &Scene) -> RichText {
+    let e = scene.mechanism().offset();
+    let (c, side) = (
+        scene.notation().letter(Named::CrankCentre),
+        if e > 0.0 { "above" } else { "below" },
+    );
+    RichText::parse(&format!(
+        "Offset engine: the line of stroke is *e* = {} {} {side} the crank centre *{c}*.",
+        torque::sig(e.abs()),
+        scene.unit()
+    ))
 }
 
 fn metadata(scene: &Scene, points: Map<String, Value>, ev: &Evaluations) -> Map<String, Value> {

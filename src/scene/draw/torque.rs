@@ -84,6 +84,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
         TextSize::Small,
     );
 
+    crank_force(ctx, canvas, t);
     let s = &ctx.sizes;
     match tl.slider_force(t) {
         Some(fp) => {
@@ -156,6 +157,42 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
             },
         );
     }
+}
+
+/// F_c = T / r, the force on the crank pin perpendicular to the crank
+/// (Ng eq. 2), as an arrow pointing at the pin in the torque's sense.
+fn crank_force(ctx: &Ctx, canvas: &mut Canvas, t: f64) {
+    let pose = ctx.main.pose();
+    let (b, c) = (pose.b(), pose.c());
+    let r = pose.mechanism().crank();
+    let cb = b - c;
+    if t == 0.0 || cb.norm() == 0.0 {
+        return;
+    }
+    let u = Vector::new(-cb.y, cb.x) / cb.norm() * t.signum();
+    let head = b - u * canvas.world(7.0);
+    let tail = head - u * canvas.world(0.75 * FORCE_ARROW);
+    if !canvas.contains(tail) {
+        return;
+    }
+    canvas.push(
+        "force-Fc",
+        Role::Force,
+        Shape::Arrow {
+            from: tail,
+            to: head,
+        },
+    );
+    canvas.label(
+        "value-Fc",
+        tail,
+        RichText::parse(&format!(
+            "*F*_c = {} {}",
+            sig((t / r).abs()),
+            ctx.scene.force_unit()
+        )),
+        TextSize::Small,
+    );
 }
 
 #[cfg(test)]

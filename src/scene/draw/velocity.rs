@@ -2,7 +2,7 @@
 //! triangles ADB and ECB.
 
 use super::Ctx;
-use crate::figure::{Role, Shape};
+use crate::figure::{Hue, Role, Shape};
 use crate::geom::{Intersection, Point, Vector, cross};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
@@ -10,17 +10,20 @@ use crate::scene::notation::Named::{self, *};
 /// E: the perpendicular to the stroke through C, AB produced to meet it,
 /// the right angle at C.
 pub(crate) fn basics_e(ctx: &Ctx, canvas: &mut Canvas) {
+    let hue = canvas.set_hue(Some(Hue::Velocity));
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let e = ctx.main.e().e();
     let r = pose.mechanism().crank();
     let ext = 0.12 * r;
+    // The perpendicular through C, and on it the result CE, heavier.
     canvas.segment(
-        ctx.line(CrankCentre, VelocityPoint),
+        format!("{}-produced", ctx.line(CrankCentre, VelocityPoint)),
         Role::Construction,
         Point::new(0.0, e.y.min(0.0) - ext),
         Point::new(0.0, e.y.max(0.0) + ext),
     );
+    canvas.segment(ctx.line(CrankCentre, VelocityPoint), Role::Result, c, e);
     if (e - b).dot(&(b - a)) > 0.0 {
         canvas.segment(ctx.line(CrankPin, VelocityPoint), Role::Auxiliary, b, e);
     }
@@ -36,11 +39,13 @@ pub(crate) fn basics_e(ctx: &Ctx, canvas: &mut Canvas) {
         );
     }
     canvas.point(ctx.letter(VelocityPoint), e, Marker::Dot, c);
+    canvas.set_hue(hue);
 }
 
 /// D: CB produced meets the perpendicular to the stroke at A; a point off
 /// the page or at infinity is shown by an arrow at the frame edge.
 pub(crate) fn basics_d(ctx: &Ctx, canvas: &mut Canvas) {
+    let hue = canvas.set_hue(Some(Hue::Velocity));
     let pose = ctx.main.pose();
     let (a, b) = (pose.a(), pose.b());
     let name = ctx.letter(InstantCentre);
@@ -71,6 +76,7 @@ pub(crate) fn basics_d(ctx: &Ctx, canvas: &mut Canvas) {
     }
     let towards = Vector::new(0.0, b.y.signum());
     canvas.intersection(name, &d, Marker::Dot, a, towards);
+    canvas.set_hue(hue);
 }
 
 fn region(ctx: &Ctx, canvas: &mut Canvas, names: [Named; 3], points: [Point; 3]) {

@@ -1,0 +1,413 @@
+//! The bundled type: the faces a figure is set in, their files (from the
+//! `typst-assets` crate, so nothing depends on the fonts of the machine)
+//! and text measured with their own glyph metrics.
+//!
+//! The default is New Computer Modern, the face of LaTeX books: most
+//! readers of these figures are textbook authors writing in LaTeX, whose
+//! body text and formulas are set in Computer Modern, so the letters on a
+//! figure match the θ, φ and *AB* of the page around it. Libertinus Serif
+//! is the alternative for books set in Linux Libertine or similar faces.
+
+use crate::error::{Error, Result};
+use serde::Deserialize;
+use skrifa::instance::{LocationRef, Size};
+use skrifa::metrics::GlyphMetrics;
+use skrifa::string::StringId;
+use skrifa::{FontRef, GlyphId, MetadataProvider};
+use std::collections::HashMap;
+use std::fmt;
+use std::str::FromStr;
+use std::sync::{Mutex, OnceLock};
+
+/// A bundled face, chosen with `--font` or a scene file's `font` key.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+#[non_exhaustive]
+pub enum Font {
+    /// New Computer Modern (10 pt design size), the look of LaTeX books.
+    #[default]
+    NewComputerModern,
+    /// Libertinus Serif, a Linux Libertine descendant; a little darker
+    /// and narrower than Computer Modern.
+    LibertinusSerif,
+}
+
+/// Upright or italic.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum FontStyle {
+    /// Upright (roman).
+    #[default]
+    Regular,
+    /// Italic (point letters, variables).
+    Italic,
+}
+
+impl FontStyle {
+    /// [`FontStyle::Italic`] if `italic`, else [`FontStyle::Regular`].
+    pub fn from_italic(italic: bool) -> Self {
+        if italic {
+            FontStyle::Italic
+        } else {
+            FontStyle::Regular
+        }
+    }
+}
+
+/// A face's vertical metrics, in ems (multiply by the font size).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct VerticalMetrics {
+    /// Height of the ascender line above the baseline.
+    pub ascent: f64,
+    /// Depth of the descender line below the baseline (positive).
+    pub descent: f64,
+    /// Height of flat capitals above the baseline.
+    pub cap_height: f64,
+}
+
+/// The extent of a set text, in page units, from the start of its
+/// baseline.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct TextBox {
+    /// The sum of the glyph advances.
+    pub width: f64,
+    /// The highest ink above the baseline.
+    pub above: f64,
+    /// The lowest ink below the baseline (positive below).
+    pub below: f64,
+}
+
+impl TextBox {
+    /// The box of `self` followed on the same line by `next`.
+    pub fn then(self, next: TextBox) -> TextBox {
+        TextBox {
+            width: self.width + next.width,
+            above: self.above.max(next.above),
+            below: self.below.max(next.below),
+        }
+    }
+}
+
+/// One face parsed once: its character map, advances and ink bounds.
+struct Face {
+    font: FontRef<'static>,
+    glyphs: GlyphMetrics<'static>,
+    units_per_em: f64,
+    vertical: VerticalMetrics,
+    /// Ink bottom and top of each character met so far, in ems (outlines
+    /// are decoded once per character).
+    ink: Mutex<HashMap<char, (f64, f64)>>,
+}
+
+impl Face {
+    fn parse(data: &'static [u8]) -> Face {
+        let font = FontRef::new(data).expect("a bundled font parses");
+        let m = font.metrics(Size::unscaled(), LocationRef::default());
+        let units_per_em = f64::from(m.units_per_em);
+        let em = |v: f32| f64::from(v) / units_per_em;
+        Face {
+            glyphs: font.glyph_metrics(Size::unscaled(), LocationRef::default()),
+            units_per_em,
+            vertical: VerticalMetrics {
+                ascent: em(m.ascent),
+                descent: -em(m.descent),
+                cap_height: em(m.cap_height.unwrap_or(0.7 * m.units_per_em as f32)),
+            },
+            font,
+            ink: Mutex::new(HashMap::new()),
+        }
+    }
+
+    fn advance(&self, g: GlyphId) -> f64 {
+        let a = self.glyphs.advance_width(g).unwrap_or(0.0);
+        f64::from(a) / self.units_per_em
+    }
+
+    /// Ink bottom and top of `c`, whose glyph here is `g`.
+    fn ink(&self, c: char, g: GlyphId) -> (f64, f64) {
+        let mut cache = self.ink.lock().unwrap_or_else(|e| e.into_inner());
+        *cache
+            .entry(c)
+            .or_insert_with(|| match self.glyphs.bounds(g) {
+                Some(b) if b.y_max > b.y_min => (
+                    f64::from(b.y_min) / self.units_per_em,
+                    f64::from(b.y_max) / self.units_per_em,
+                ),
+                _ => (0.0, 0.0),
+            })
+    }
+}
+
+/// The typst-assets face of that PostScript name, parsed.
+fn bundled(postscript_name: &str) -> Face {
+    let data = typst_assets::fonts()
+        .find(|data| {
+            FontRef::new(data).is_ok_and(|f| {
+                f.localized_strings(StringId::POSTSCRIPT_NAME)
+                    .english_or_first()
+                    .is_some_and(|n| n.to_string() == postscript_name)
+            })
+        })
+        .expect("typst-assets ships the bundled faces");
+    Face::parse(data)
+}
+
+impl Font {
+    /// Every bundled face, the default first.
+    pub const ALL: [Font; 2] = [Font::NewComputerModern, Font::LibertinusSerif];
+
+    /// The name on the command line and in scene files.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Font::NewComputerModern => "new-computer-modern",
+            Font::LibertinusSerif => "libertinus-serif",
+        }
+    }
+
+    /// The family name in the font files (what a renderer matches).
+    /// Characters missing from the text faces of New Computer Modern (the
+    /// primes ′ and ″) come from its maths face, NewComputerModern Math.
+    pub fn family(&self) -> &'static str {
+        match self {
+            Font::NewComputerModern => "NewComputerModern",
+            Font::LibertinusSerif => "Libertinus Serif",
+        }
+    }
+
+    /// The CSS `font-family` list the SVG asks for: the family first, then
+    /// the names other installations give it and the nearest faces, then
+    /// the generic serif.
+    pub fn css_family(&self) -> &'static str {
+        match self {
+            Font::NewComputerModern => {
+                "NewComputerModern, 'NewComputerModern Math', 'New Computer Modern', 'Latin Modern Roman', 'CMU Serif', serif"
+            }
+            Font::LibertinusSerif => {
+                "'Libertinus Serif', 'Linux Libertine O', 'Linux Libertine', serif"
+            }
+        }
+    }
+
+    /// The PostScript name of a style's file.
+    pub(crate) fn postscript_name(&self, style: FontStyle) -> &'static str {
+        match (self, style) {
+            (Font::NewComputerModern, FontStyle::Regular) => "NewCM10-Regular",
+            (Font::NewComputerModern, FontStyle::Italic) => "NewCM10-Italic",
+            (Font::LibertinusSerif, FontStyle::Regular) => "LibertinusSerif-Regular",
+            (Font::LibertinusSerif, FontStyle::Italic) => "LibertinusSerif-Italic",
+        }
+    }
+
+    fn index(&self, style: FontStyle) -> usize {
+        let f = Font::ALL.iter().position(|f| f == self).unwrap_or(0);
+        2 * f + usize::from(style == FontStyle::Italic)
+    }
+
+    /// The font file (OpenType) of a style, bundled in the binary.
+    pub fn data(&self, style: FontStyle) -> &'static [u8] {
+        self.face(style).font.data().as_bytes()
+    }
+
+    /// Every font file the face is drawn from: regular, italic, and the
+    /// face its missing symbols come from (New Computer Modern's maths
+    /// face). A renderer falling back to them in this order draws what
+    /// [`Font::width`] measures.
+    pub fn files(&self) -> Vec<&'static [u8]> {
+        let mut v = vec![self.data(FontStyle::Regular), self.data(FontStyle::Italic)];
+        v.extend(self.symbols().map(|f| f.font.data().as_bytes()));
+        v
+    }
+
+    fn face(&self, style: FontStyle) -> &'static Face {
+        static FACES: [OnceLock<Face>; 4] = [const { OnceLock::new() }; 4];
+        FACES[self.index(style)].get_or_init(|| bundled(self.postscript_name(style)))
+    }
+
+    /// The face of the symbols missing from the text faces.
+    fn symbols(&self) -> Option<&'static Face> {
+        static MATH: OnceLock<Face> = OnceLock::new();
+        match self {
+            Font::NewComputerModern => Some(MATH.get_or_init(|| bundled("NewCMMath-Regular"))),
+            Font::LibertinusSerif => None,
+        }
+    }
+
+    /// The face and glyph `c` is drawn with: the style's own, else the
+    /// symbols face's, else the style's `.notdef`.
+    fn glyph(&self, c: char, style: FontStyle) -> (&'static Face, GlyphId) {
+        let face = self.face(style);
+        if let Some(g) = face.font.charmap().map(c) {
+            return (face, g);
+        }
+        if let Some(sym) = self.symbols()
+            && let Some(g) = sym.font.charmap().map(c)
+        {
+            return (sym, g);
+        }
+        (face, GlyphId::NOTDEF)
+    }
+
+    /// The width of `text` at `size` (page units): the glyph advances
+    /// summed (no kerning).
+    pub fn width(&self, text: &str, size: f64, style: FontStyle) -> f64 {
+        size * text
+            .chars()
+            .map(|c| {
+                let (face, g) = self.glyph(c, style);
+                face.advance(g)
+            })
+            .sum::<f64>()
+    }
+
+    /// The width and ink height and depth of `text` at `size`.
+    pub fn measure(&self, text: &str, size: f64, style: FontStyle) -> TextBox {
+        let (mut bottom, mut top) = (0.0f64, 0.0f64);
+        for c in text.chars() {
+            let (face, g) = self.glyph(c, style);
+            let (b, t) = face.ink(c, g);
+            bottom = bottom.min(b);
+            top = top.max(t);
+        }
+        TextBox {
+            width: self.width(text, size, style),
+            above: size * top,
+            below: -size * bottom,
+        }
+    }
+
+    /// Ascent, descent and cap height of a style.
+    pub fn metrics(&self, style: FontStyle) -> VerticalMetrics {
+        self.face(style).vertical
+    }
+
+    /// Whether the face (with its symbols face) has a glyph for `c` (else
+    /// a renderer falls back to another font).
+    pub fn has_glyph(&self, c: char, style: FontStyle) -> bool {
+        self.glyph(c, style).1 != GlyphId::NOTDEF
+    }
+
+    /// The names of the faces, for help texts and errors.
+    pub fn names() -> String {
+        Font::ALL.map(|f| f.name()).join(", ")
+    }
+}
+
+impl fmt::Display for Font {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Font {
+    type Err = Error;
+
+    fn from_str(s: &str) -> Result<Self> {
+        Font::ALL
+            .into_iter()
+            .find(|f| f.name() == s)
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "unknown font '{s}': expected one of {}",
+                    Font::names()
+                ))
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use skrifa::raw::TableProvider;
+
+    /// The advances of `text` in ems, read from the raw `cmap` and `hmtx`
+    /// tables of the file.
+    fn raw_advances(data: &[u8], text: &str) -> f64 {
+        let font = skrifa::raw::FontRef::new(data).unwrap();
+        let cmap = font.cmap().unwrap();
+        let hmtx = font.hmtx().unwrap();
+        let upem = f64::from(font.head().unwrap().units_per_em());
+        text.chars()
+            .map(|c| {
+                let g = cmap.map_codepoint(c).expect("glyph");
+                f64::from(hmtx.advance(g).expect("advance")) / upem
+            })
+            .sum()
+    }
+
+    #[test]
+    fn width_is_the_sum_of_the_advances_in_the_file() {
+        for font in Font::ALL {
+            for style in [FontStyle::Regular, FontStyle::Italic] {
+                let text = "OM = 1.25 ft, θ";
+                let expected = 17.0 * raw_advances(font.data(style), text);
+                let got = font.width(text, 17.0, style);
+                assert!((got - expected).abs() < 1e-9, "{font} {style:?}");
+                assert!(got > 17.0 * 5.0 && got < 17.0 * 12.0, "{got}");
+            }
+        }
+    }
+
+    #[test]
+    fn faces_and_styles_differ() {
+        let s = "Klein's construction FCG";
+        let ncm = Font::NewComputerModern.width(s, 13.0, FontStyle::Regular);
+        let lib = Font::LibertinusSerif.width(s, 13.0, FontStyle::Regular);
+        assert!((ncm - lib).abs() > 0.02 * ncm, "{ncm} {lib}");
+        for font in Font::ALL {
+            // Italic letters have advances of their own (the sums of a
+            // whole line can come out close).
+            let differ = ('a'..='z')
+                .filter(|c| {
+                    let c = c.to_string();
+                    let r = font.width(&c, 10.0, FontStyle::Regular);
+                    (r - font.width(&c, 10.0, FontStyle::Italic)).abs() > 0.05
+                })
+                .count();
+            assert!(differ >= 9, "{font}: {differ} of 26 letters");
+            assert_ne!(font.data(FontStyle::Regular), font.data(FontStyle::Italic));
+        }
+    }
+
+    #[test]
+    fn vertical_metrics_and_ink() {
+        for font in Font::ALL {
+            for style in [FontStyle::Regular, FontStyle::Italic] {
+                let m = font.metrics(style);
+                assert!(m.cap_height > 0.6 && m.cap_height < 0.75, "{font} {m:?}");
+                assert!(m.ascent > m.cap_height && m.descent > 0.1, "{font} {m:?}");
+                // A capital's ink stands on the baseline and reaches the
+                // cap height; p's descender goes below it.
+                let h = font.measure("H", 10.0, style);
+                assert!((h.above - 10.0 * m.cap_height).abs() < 0.3, "{h:?} {m:?}");
+                assert!(h.below.abs() < 0.3, "{h:?}");
+                assert!(font.measure("p", 10.0, style).below > 1.0);
+                assert_eq!(font.measure(" ", 10.0, style).above, 0.0);
+            }
+        }
+    }
+
+    #[test]
+    fn primes_of_new_computer_modern_come_from_its_maths_face() {
+        let f = Font::NewComputerModern;
+        let math = f.files()[2];
+        assert_eq!(f.files().len(), 3);
+        assert!(f.has_glyph('′', FontStyle::Italic));
+        let expected = 12.0 * raw_advances(math, "′″");
+        assert!((f.width("′″", 12.0, FontStyle::Regular) - expected).abs() < 1e-9);
+        assert_eq!(Font::LibertinusSerif.files().len(), 2);
+    }
+
+    #[test]
+    fn names_round_trip() {
+        for f in Font::ALL {
+            assert_eq!(f.to_string().parse::<Font>().unwrap(), f);
+            assert!(f.css_family().contains(f.family()));
+        }
+        assert_eq!(Font::default(), Font::NewComputerModern);
+        assert_eq!(
+            "libertinus-serif".parse::<Font>().unwrap(),
+            Font::LibertinusSerif
+        );
+        let e = "times".parse::<Font>().unwrap_err().to_string();
+        assert!(e.contains("new-computer-modern, libertinus-serif"), "{e}");
+    }
+}

@@ -1,0 +1,89 @@
+//! Reading input files with a bound on their size.
+//!
+//! Every file the program reads (scene files, `--data` CSV) goes through
+//! [`read_text`]: it reads as the file streams and stops one byte past the
+//! limit, so `/dev/zero` or a huge file costs at most the limit in memory,
+//! and the message names the file and the limit.
+
+use crate::error::{Error, Result};
+use std::io::Read;
+use std::path::Path;
+
+/// Largest scene file read, in bytes (1 MiB: a scene is a few hundred).
+pub const MAX_SCENE_BYTES: u64 = 1 << 20;
+
+/// Largest `--data` CSV file read, in bytes (4 MiB; the data reader also
+/// stops at 100 000 rows).
+pub const MAX_DATA_BYTES: u64 = 4 << 20;
+
+/// Reads the UTF-8 text of `path`, at most `limit` bytes. `what` names the
+/// file in messages (`scene file`, `data file`).
+///
+/// Errors: the file cannot be opened or read (a directory, a missing
+/// file), it holds more than `limit` bytes (only `limit + 1` are ever
+/// read), or it is not UTF-8 text.
+pub fn read_text(path: &Path, limit: u64, what: &str) -> Result<String> {
+    let shown = path.display();
+    let file = std::fs::File::open(path)
+        .map_err(|e| Error::Io(format!("cannot read {what} {shown}: {e}")))?;
+    read_text_from(file, limit, &format!("{what} {shown}"))
+}
+
+/// [`read_text`] for any reader (standard input, a pipe); `what` names the
+/// source in messages.
+pub fn read_text_from(reader: impl Read, limit: u64, what: &str) -> Result<String> {
+    let mut bytes = Vec::new();
+    reader
+        .take(limit.saturating_add(1))
+        .read_to_end(&mut bytes)
+        .map_err(|e| Error::Io(format!("cannot read {what}: {e}")))?;
+    if bytes.len() as u64 > limit {
+        return Err(Error::Io(format!(
+            "{what} is larger than {} (the most this program reads)",
+            size(limit)
+        )));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        Error::Parse(format!(
+            "{what} is not UTF-8 text (byte {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
+
+/// A byte count as people read it: `1 MiB`, `4 MiB`, `512 bytes`.
+fn size(bytes: u64) -> String {
+    if bytes >= 1 << 20 && bytes.is_multiple_of(1 << 20) {
+        format!("{} MiB", bytes >> 20)
+    } else {
+        format!("{bytes} bytes")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stops_one_byte_past_the_limit() {
+        let endless = std::io::repeat(0);
+        let err = read_text_from(endless, 1 << 20, "data file z").unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "data file z is larger than 1 MiB (the most this program reads)"
+        );
+        assert_eq!(read_text_from(&b"abc"[..], 3, "f").unwrap(), "abc");
+        assert!(read_text_from(&b"abcd"[..], 3, "f").is_err());
+    }
+
+    #[test]
+    fn binary_and_missing_files_are_errors() {
+        let err = read_text_from(&[0x61, 0xff][..], 10, "scene file s").unwrap_err();
+        assert_eq!(err.to_string(), "scene file s is not UTF-8 text (byte 1)");
+        let err = read_text(Path::new("/nonexistent/x.toml"), 10, "scene file").unwrap_err();
+        assert!(
+            err.to_string()
+                .starts_with("cannot read scene file /nonexistent/x.toml: ")
+        );
+    }
+}

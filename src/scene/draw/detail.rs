@@ -1,0 +1,109 @@
+//! The enlarged detail of the constructions about the crank (Figs. 65–67):
+//! which region, at what magnification.
+//!
+//! Klein's and Kisch's triangles FCG lie within about r of the crank
+//! centre, while the page must also hold the rod, the slider and its
+//! guides: with the §35 engine (n = 6) the crank radius is about 75 page
+//! units, and F, G sit within a dozen units of B and C. The acceleration
+//! layers therefore always carry a detail. The velocity layer gets one
+//! when its triangle ECB spans less than [`THRESHOLD`] page units: below
+//! that its three letters (each about 12 × 17 units, kept 4 units from
+//! their points) with the pins of B and C and the right-angle mark at C
+//! cannot all sit clear of its sides. The torque layer draws at the page's
+//! scale only (its values are written on the figure).
+
+use super::Ctx;
+use crate::geom::{Frame, Point};
+use crate::scene::Layer;
+
+/// The extent, page units, under which the velocity triangle ECB gets a
+/// detail (see the module docs).
+pub(crate) const THRESHOLD: f64 = 60.0;
+/// The larger side of the detailed points' box in the detail, page units
+/// (at least the 150 the plates require, with room for letters).
+const TARGET: f64 = 230.0;
+/// Room around the detailed points inside the detail, page units (letters
+/// of the outer points, right-angle marks).
+pub(crate) const PAD: f64 = 34.0;
+/// The least height of a detail, page units: room above and below a flat
+/// construction (near the dead centres) for its letters.
+pub(crate) const MIN_HEIGHT: f64 = 150.0;
+/// Magnifications offered: round numbers a reader takes in at a glance,
+/// 2, 2.5, 3, 4, 5, 6, 8 times a power of ten, from 2 to 8e12.
+fn steps() -> impl DoubleEndedIterator<Item = f64> + Clone {
+    (0..13).flat_map(|k| {
+        let p = 10f64.powi(k);
+        let first = if k == 0 { 1 } else { 0 };
+        [1.0, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0][first..]
+            .iter()
+            .map(move |m| m * p)
+            .collect::<Vec<_>>()
+    })
+}
+
+/// What the detail shows: the world region (the detailed points' box),
+/// and the magnification over the main view.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Detail {
+    pub region: Frame,
+    pub magnification: f64,
+}
+
+/// The points of the constructions about the crank that the scene draws.
+fn points(ctx: &Ctx) -> Vec<Point> {
+    let scene = ctx.scene;
+    let pose = ctx.main.pose();
+    let mut pts = vec![pose.b(), pose.c()];
+    pts.push(ctx.main.e().e());
+    if scene.has(Layer::Kisch) {
+        let k = ctx.main.kisch();
+        pts.extend([k.points().f(), k.points().g()]);
+        pts.extend(k.h());
+    } else if scene.has(Layer::Klein) {
+        match ctx.main.klein() {
+            Some(k) => pts.extend([k.points().f(), k.points().g()]),
+            // The limiting construction (D at infinity): Kisch's F and G.
+            None => {
+                let k = ctx.main.kisch();
+                pts.extend([k.points().f(), k.points().g()]);
+            }
+        }
+    }
+    pts
+}
+
+/// The detail a scene drawn at `scale` page units per world unit needs,
+/// if any, no wider than `max_width` page units.
+pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
+    let scene = ctx.scene;
+    let acceleration = scene.has(Layer::Klein) || scene.has(Layer::Kisch);
+    let velocity = scene.has(Layer::Velocity);
+    if !(acceleration || velocity) || !scene.has(Layer::Mechanism) {
+        return None;
+    }
+    let pts = points(ctx);
+    let mut min = pts[0];
+    let mut max = pts[0];
+    for p in &pts {
+        min = min.inf(p);
+        max = max.sup(p);
+    }
+    let size = max - min;
+    let extent = size.x.max(size.y) * scale;
+    if !acceleration && extent >= THRESHOLD {
+        return None;
+    }
+    if !(extent > 0.0 && extent.is_finite()) {
+        return None;
+    }
+    let wanted = TARGET / extent;
+    let fits = |m: f64| size.x * scale * m + 2.0 * PAD <= max_width;
+    let magnification = steps()
+        .find(|m| *m >= wanted)
+        .filter(|m| fits(*m))
+        .or_else(|| steps().rev().find(|m| fits(*m)))?;
+    Some(Detail {
+        region: Frame::new(min, max),
+        magnification,
+    })
+}

@@ -1,0 +1,165 @@
+//! The properties every input must keep, shared by the fuzz targets
+//! (`fuzz/`, libFuzzer) and their bounded proptest twins (`tests/fuzz_twins.rs`):
+//! no panic; a refusal is one non-empty line; a figure written has no
+//! NaN or infinity in it; the numbers of an analysis are finite.
+
+use slider_crank::analytic::statics;
+use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
+use slider_crank::figure::FigureOptions;
+use slider_crank::render::to_svg;
+use slider_crank::{Angle, Figure, FigureName, Kinematics, Scene, SliderCrank};
+
+/// The diagrams that read `--data` CSV.
+pub const DATA_FIGURES: [&str; 3] = ["ng-fig-8-forces", "ng-fig-7-calibration", "curve-benchmark"];
+
+/// A refusal: one line, not empty.
+pub fn assert_one_line(message: &str) {
+    assert!(!message.is_empty(), "empty error message");
+    assert!(
+        !message.contains('\n'),
+        "error of more than one line: {message}"
+    );
+}
+
+/// No token of `text` is a non-finite number as Rust or JSON writes it
+/// (`NaN`, `inf`, `-inf`); the word "infinity" of "D at infinity" is prose.
+pub fn assert_no_non_finite(text: &str) {
+    for token in text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '.')) {
+        let t = token.to_ascii_lowercase();
+        assert!(
+            t != "nan" && t != "inf",
+            "non-finite number '{token}' written"
+        );
+    }
+}
+
+/// Every attribute value of `svg` but ids and classes (which may carry a
+/// user's text, as a scene's name may say "-inf") holds no NaN or
+/// infinity; the metadata is JSON, which cannot.
+pub fn assert_svg_numbers_finite(svg: &str) {
+    let mut rest = svg;
+    while let Some(eq) = rest.find("=\"") {
+        let name_start = rest[..eq]
+            .rfind(|c: char| c.is_whitespace())
+            .map_or(0, |i| i + 1);
+        let name = &rest[name_start..eq];
+        let value_start = eq + 2;
+        let Some(len) = rest[value_start..].find('"') else {
+            break;
+        };
+        if name != "id" && name != "class" {
+            assert_no_non_finite(&rest[value_start..value_start + len]);
+        }
+        rest = &rest[value_start + len + 1..];
+    }
+}
+
+fn check_figure(figure: Result<Figure, slider_crank::Error>) {
+    match figure {
+        Ok(f) => assert_svg_numbers_finite(&to_svg(&f)),
+        Err(e) => assert_one_line(&e.to_string()),
+    }
+}
+
+/// Scene file text to a figure.
+pub fn scene_toml(text: &str) {
+    match Scene::from_toml(text) {
+        Ok(scene) => assert_svg_numbers_finite(&to_svg(&scene.figure())),
+        Err(e) => assert_one_line(&e.to_string()),
+    }
+}
+
+/// CSV text as `--data` of one of [`DATA_FIGURES`].
+pub fn csv_data(which: u8, text: &str) {
+    let name = DATA_FIGURES[which as usize % DATA_FIGURES.len()];
+    let options = FigureOptions {
+        data: Some(text.to_string()),
+        ..FigureOptions::default()
+    };
+    check_figure(FigureName::from_name(name).unwrap().figure(&options));
+}
+
+/// Mechanism and angle numbers to what `analyze` computes, and to the
+/// named figure `which` (an index into [`FigureName::ALL`]).
+pub fn numbers(
+    crank: f64,
+    rod: f64,
+    offset: f64,
+    degrees: f64,
+    omega: f64,
+    torque: f64,
+    which: u8,
+) {
+    let m = match SliderCrank::new(crank, rod, offset) {
+        Ok(m) => m,
+        Err(e) => return assert_one_line(&e.to_string()),
+    };
+    let angle = match Angle::from_degrees(degrees) {
+        Ok(a) => a,
+        Err(e) => return assert_one_line(&e.to_string()),
+    };
+    analyze(&m, angle, omega, torque);
+    let name = FigureName::ALL[which as usize % FigureName::ALL.len()];
+    // Ng's incline takes a tilt below 90° for its angle.
+    let angle = if name.name() == "ng-fig-2-incline" {
+        Angle::from_degrees(degrees.rem_euclid(90.0)).ok()
+    } else {
+        Some(angle)
+    };
+    // A figure refuses options it does not use: drop them until it takes
+    // the mechanism.
+    let tries = [
+        (Some(m), Some(omega), angle),
+        (Some(m), None, angle),
+        (Some(m), Some(omega), None),
+        (Some(m), None, None),
+        (None, Some(omega), angle),
+        (None, None, angle),
+        (None, Some(omega), None),
+    ];
+    for (mechanism, omega, angle) in tries {
+        let options = FigureOptions {
+            mechanism,
+            omega,
+            angle,
+            ..FigureOptions::default()
+        };
+        let figure = name.figure(&options);
+        if !matches!(&figure, Err(e) if e.to_string().contains("does not use")) {
+            return check_figure(figure);
+        }
+    }
+}
+
+fn analyze(m: &SliderCrank, angle: Angle, omega: f64, torque: f64) {
+    let pose = m.pose(angle);
+    match Kinematics::new(&pose, omega) {
+        Ok(k) => {
+            for v in [k.position, k.velocity, k.acceleration, k.rod_angle] {
+                assert!(v.is_finite(), "{k:?}");
+            }
+            assert!(k.rod_angular_velocity.is_finite() && k.rod_angular_acceleration.is_finite());
+        }
+        Err(e) => assert_one_line(&e.to_string()),
+    }
+    let e = VelocityLine::construct(&pose);
+    let d = InstantCentre::construct(&pose);
+    let kisch = Kisch::construct(&pose, &e);
+    for p in [
+        pose.a(),
+        pose.b(),
+        e.e(),
+        kisch.points().f(),
+        kisch.points().g(),
+    ] {
+        assert!(p.x.is_finite() && p.y.is_finite(), "{p:?}");
+    }
+    assert!(d.rod_angular_velocity_ratio().is_finite());
+    assert!(e.velocity_ratio().is_finite());
+    assert!(kisch.points().acceleration_ratio().is_finite());
+    match statics::slider_force(&pose, torque) {
+        Ok(Some(f)) => assert!(f.is_finite()),
+        Ok(None) => assert_eq!(statics::om(&pose), 0.0),
+        Err(e) => assert_one_line(&e.to_string()),
+    }
+}

@@ -1,0 +1,619 @@
+//! The plate check (issue 8): every mechanism figure, over a sweep of poses
+//! and mechanisms, read back from its SVG alone and held to five rules:
+//! links clear of the guides, labels clear of each other and of the lines,
+//! each point's letter near its point, nothing off the page, and the
+//! acceleration constructions of Figs. 65–67 large enough to read in some
+//! panel. Below the sweep, hand-written plates prove each rule can fail.
+
+#[allow(dead_code)] // the helpers the other figure tests use
+mod common;
+#[path = "common/plate.rs"]
+mod plate;
+
+use plate::{Label, Panel, Plate, Rect, Seg};
+use slider_crank::figure::FigureOptions;
+use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
+use std::collections::{BTreeMap, BTreeSet};
+use std::time::Instant;
+
+/// Ends of guide and hatch strokes may touch a link within this (px).
+const TOUCH: f64 = 0.5;
+/// Glyph boxes are shrunk by this (px) so that glyphs merely touching pass.
+const GLYPH_SLACK: f64 = 0.5;
+/// A point's letter lies within this many font sizes of its point.
+const REACH_EM: f64 = 1.5;
+/// Ink may reach this far (px) past the page edge.
+const PAGE_SLACK: f64 = 0.5;
+/// The least extent (px) of B, C, E, F, G in some panel of Figs. 65–67.
+const SPREAD: f64 = 150.0;
+/// Classes of the lines labels keep clear of.
+const LINE_CLASSES: [&str; 3] = ["link", "construction", "auxiliary"];
+
+const RULE_BUILD: &str = "0 figure builds";
+const RULE_GUIDES: &str = "1 links clear of guides";
+const RULE_OVERLAP: &str = "2a labels apart";
+const RULE_LINES: &str = "2b lines clear of labels";
+const RULE_NEAR: &str = "3 letter near its point";
+const RULE_PAGE: &str = "4 inside the page";
+const RULE_SPREAD: &str = "5 construction readable";
+
+/// One broken rule on one plate, with the ids involved.
+#[derive(Debug, Clone, PartialEq)]
+struct Failure {
+    rule: &'static str,
+    ids: String,
+}
+
+fn fail(rule: &'static str, ids: String) -> Failure {
+    Failure { rule, ids }
+}
+
+/// The id without the panel's prefix (`detail-link-rod` → `link-rod`).
+fn bare<'a>(panel: &Panel, id: &'a str) -> &'a str {
+    id.strip_prefix(panel.prefix.as_str()).unwrap_or(id)
+}
+
+/// Rule 1: no link segment meets a guide or hatch stroke (their ends
+/// trimmed by [`TOUCH`], so a guide that stops at the rod passes).
+fn guides_crossed(plate: &Plate) -> Vec<Failure> {
+    let mut out = Vec::new();
+    for panel in &plate.panels {
+        let of = |p: &dyn Fn(&str) -> bool| {
+            panel
+                .strokes
+                .iter()
+                .filter(move |s| p(bare(panel, &s.id)))
+                .collect::<Vec<_>>()
+        };
+        let links = of(&|id| id.starts_with("link-"));
+        let guides = of(&|id| id.starts_with("guide-") || id.starts_with("hatch-"));
+        for link in links.iter().filter(|l| l.class == "link") {
+            for guide in &guides {
+                if crosses(&link.segs, &guide.segs) {
+                    out.push(fail(RULE_GUIDES, format!("{} × {}", link.id, guide.id)));
+                }
+            }
+        }
+    }
+    out
+}
+
+fn crosses(link: &[Seg], guide: &[Seg]) -> bool {
+    guide
+        .iter()
+        .map(|g| g.trimmed(TOUCH))
+        .any(|g| link.iter().any(|l| l.meets(&g)))
+}
+
+/// Each mechanism panel's labels together with the page's (notes).
+fn label_groups(plate: &Plate) -> Vec<Vec<&Label>> {
+    let page = plate.page_labels.iter();
+    if plate.panels.is_empty() {
+        return vec![page.collect()];
+    }
+    plate
+        .panels
+        .iter()
+        .map(|p| p.labels.iter().chain(page.clone()).collect())
+        .collect()
+}
+
+/// Rule 2a: no two glyph boxes (shrunk by [`GLYPH_SLACK`]) overlap.
+fn labels_overlap(plate: &Plate) -> Vec<Failure> {
+    let mut pairs = BTreeSet::new();
+    for group in label_groups(plate) {
+        for (i, a) in group.iter().enumerate() {
+            for b in &group[i + 1..] {
+                if a.rect
+                    .shrunk(GLYPH_SLACK)
+                    .overlaps(&b.rect.shrunk(GLYPH_SLACK))
+                {
+                    pairs.insert(format!("{} × {}", a.id, b.id));
+                }
+            }
+        }
+    }
+    pairs.into_iter().map(|p| fail(RULE_OVERLAP, p)).collect()
+}
+
+/// Rule 2b: no line of a link or construction enters a glyph box of a
+/// label of its panel or of the page.
+fn lines_through_labels(plate: &Plate) -> Vec<Failure> {
+    let mut pairs = BTreeSet::new();
+    for (panel, labels) in plate.panels.iter().zip(label_groups(plate)) {
+        let lines = panel
+            .strokes
+            .iter()
+            .filter(|s| LINE_CLASSES.contains(&s.class.as_str()));
+        for line in lines {
+            for label in &labels {
+                let r = label.rect.shrunk(GLYPH_SLACK);
+                if line.segs.iter().any(|s| r.clip(s).is_some()) {
+                    pairs.insert(format!("{} through {}", line.id, label.id));
+                }
+            }
+        }
+    }
+    pairs.into_iter().map(|p| fail(RULE_LINES, p)).collect()
+}
+
+/// Rule 3: every point marker on the page has its letter (`label-X` for
+/// `point-X`, in the same panel) within [`REACH_EM`] font sizes.
+fn labels_far(plate: &Plate) -> Vec<Failure> {
+    let page = plate.page();
+    let mut out = Vec::new();
+    for panel in &plate.panels {
+        for (letter, &at) in &panel.markers {
+            if page.distance_to(at) > 0.0 {
+                continue;
+            }
+            let id = format!("{}label-{letter}", panel.prefix);
+            let Some(label) = panel.labels.iter().find(|l| l.id == id) else {
+                out.push(fail(
+                    RULE_NEAR,
+                    format!("{}point-{letter} has no {id}", panel.prefix),
+                ));
+                continue;
+            };
+            let (d, reach) = (label.rect.distance_to(at), REACH_EM * label.font_size);
+            if d > reach {
+                out.push(fail(
+                    RULE_NEAR,
+                    format!("{id} {d:.1} px from its point (≤ {reach:.1})"),
+                ));
+            }
+        }
+    }
+    out
+}
+
+/// Rule 4: the ink of every element lies inside the page (with
+/// [`PAGE_SLACK`]); each offending id once.
+fn off_page(plate: &Plate) -> Vec<Failure> {
+    let page = plate.page().shrunk(-PAGE_SLACK);
+    let ids: BTreeSet<&str> = plate
+        .ink
+        .iter()
+        .filter(|(_, r)| !page.contains(r))
+        .map(|(id, _)| {
+            if id.is_empty() {
+                "(no id)"
+            } else {
+                id.as_str()
+            }
+        })
+        .collect();
+    ids.into_iter()
+        .map(|id| fail(RULE_PAGE, id.to_string()))
+        .collect()
+}
+
+/// Rule 5: B, C, E, F, G span at least [`SPREAD`] px in some mechanism
+/// panel (markers, else metadata points mapped by the panel).
+fn construction_small(plate: &Plate) -> Vec<Failure> {
+    let spans: Vec<(String, f64)> = plate
+        .panels
+        .iter()
+        .map(|panel| {
+            let at = ["B", "C", "E", "F", "G"]
+                .iter()
+                .filter_map(|l| plate.point(panel, l));
+            let span = Rect::around(at).map_or(0.0, |r| r.span());
+            (panel.id.clone(), span)
+        })
+        .collect();
+    if spans.iter().any(|(_, s)| *s >= SPREAD) {
+        return Vec::new();
+    }
+    let said: Vec<String> = spans
+        .iter()
+        .map(|(id, s)| format!("{id} {s:.0} px"))
+        .collect();
+    vec![fail(
+        RULE_SPREAD,
+        format!("B C E F G span {}", said.join(", ")),
+    )]
+}
+
+/// Every rule on one plate; rule 5 only where `spread` asks for it.
+fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
+    let mut out = guides_crossed(plate);
+    out.extend(labels_overlap(plate));
+    out.extend(lines_through_labels(plate));
+    out.extend(labels_far(plate));
+    out.extend(off_page(plate));
+    if spread {
+        out.extend(construction_small(plate));
+    }
+    out
+}
+
+// ---------------------------------------------------------------- the sweep
+
+/// The mechanism figures, and the diagrams that draw the mechanism.
+const FIGURES: [&str; 10] = [
+    "fig-62-displacement",
+    "fig-63-velocity",
+    "fig-65-klein",
+    "fig-66-kisch",
+    "fig-67-example",
+    "ng-fig-1-torque",
+    "ng-fig-a1-velocity",
+    "fig-61-centrodes",
+    "fig-64-velocity-diagrams",
+    "coupler-curves",
+];
+
+/// Figures held to rule 5.
+const SPREAD_FIGURES: [&str; 3] = ["fig-65-klein", "fig-66-kisch", "fig-67-example"];
+
+/// Short and long rods, offsets of ±0.8 (l − r), tiny and huge r.
+fn mechanisms() -> Vec<(String, SliderCrank)> {
+    let m = |r: f64, l: f64, e: f64| {
+        let name = format!("r={r:e} l={l:e} e={e:e}");
+        (name, SliderCrank::new(r, l, e).unwrap())
+    };
+    vec![
+        m(0.5, 3.0, 0.0),
+        m(1.0, 1.2, 0.0),
+        m(1.0, 50.0, 0.0),
+        m(1.0, 4.0, 2.4),
+        m(1.0, 4.0, -2.4),
+        m(1.0, 1.5, -0.4),
+        m(1e-6, 4e-6, 0.0),
+        m(1e6, 4e6, 0.0),
+    ]
+}
+
+/// Every 10°, both dead centres, 90°, 270°, and 1° either side of each of
+/// the last four; the same angle once.
+fn poses(m: &SliderCrank) -> Vec<Angle> {
+    let mut angles: Vec<Angle> = (0..36)
+        .map(|k| Angle::from_degrees(10.0 * k as f64).unwrap())
+        .collect();
+    let dead = [m.outer_dead_centre(), m.inner_dead_centre()].map(|r| r.to_degrees());
+    for key in [dead[0], dead[1], 90.0, 270.0] {
+        let exact = match key {
+            90.0 | 270.0 => Angle::from_degrees(key).unwrap(),
+            _ => Angle::from_radians(key.to_radians()).unwrap(),
+        };
+        let sides = [key - 1.0, key + 1.0].map(|d| Angle::from_degrees(d).unwrap());
+        for a in [exact, sides[0], sides[1]] {
+            let near = |b: &Angle| {
+                let d = (a.degrees() - b.degrees()).rem_euclid(360.0);
+                d.min(360.0 - d) < 1e-6
+            };
+            if !angles.iter().any(near) {
+                angles.push(a);
+            }
+        }
+    }
+    angles
+}
+
+/// One plate of the sweep and what it broke.
+struct Outcome {
+    figure: &'static str,
+    mechanism: String,
+    degrees: f64,
+    failures: Vec<Failure>,
+}
+
+/// The plate of `figure` for `mechanism` at `angle`, checked.
+fn inspect(figure: &'static str, mechanism: &(String, SliderCrank), angle: Angle) -> Outcome {
+    let options = FigureOptions {
+        mechanism: Some(mechanism.1),
+        angle: Some(angle),
+        ..FigureOptions::default()
+    };
+    let built = FigureName::from_name(figure).unwrap().figure(&options);
+    let failures = match built {
+        Ok(f) => check(&Plate::read(&to_svg(&f)), SPREAD_FIGURES.contains(&figure)),
+        Err(e) => vec![fail(RULE_BUILD, e.to_string())],
+    };
+    Outcome {
+        figure,
+        mechanism: mechanism.0.clone(),
+        degrees: angle.degrees(),
+        failures,
+    }
+}
+
+/// Every (figure, mechanism, angle) of the sweep.
+fn jobs() -> Vec<(&'static str, (String, SliderCrank), Angle)> {
+    let mut out = Vec::new();
+    for figure in FIGURES {
+        for m in mechanisms() {
+            for a in poses(&m.1) {
+                out.push((figure, m.clone(), a));
+            }
+        }
+    }
+    out
+}
+
+/// Threads the sweep runs on (CI has two cores).
+const THREADS: usize = 2;
+
+/// The sweep's outcomes in the order of [`jobs`], the work dealt
+/// round-robin over [`THREADS`].
+fn sweep() -> Vec<Outcome> {
+    let jobs = jobs();
+    let mut done: Vec<(usize, Outcome)> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..THREADS)
+            .map(|t| {
+                let mine = jobs.iter().enumerate().skip(t).step_by(THREADS);
+                s.spawn(move || {
+                    mine.map(|(i, (f, m, a))| (i, inspect(f, m, *a)))
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().unwrap())
+            .collect()
+    });
+    done.sort_by_key(|(i, _)| *i);
+    done.into_iter().map(|(_, o)| o).collect()
+}
+
+/// Per figure: clean plates, all plates, and plates breaking each rule.
+type Tally<'a> = BTreeMap<&'a str, (usize, usize, BTreeMap<&'static str, usize>)>;
+
+fn tally(outcomes: &[Outcome]) -> Tally<'_> {
+    let mut t = Tally::new();
+    for o in outcomes {
+        let e = t.entry(o.figure).or_default();
+        e.0 += o.failures.is_empty() as usize;
+        e.1 += 1;
+        let rules: BTreeSet<&str> = o.failures.iter().map(|f| f.rule).collect();
+        for r in rules {
+            *e.2.entry(r).or_default() += 1;
+        }
+    }
+    t
+}
+
+/// Shares of clean plates per figure and overall, plates breaking each
+/// rule, and the first failures.
+fn report(outcomes: &[Outcome]) -> String {
+    let share = |clean: usize, all: usize| 100.0 * clean as f64 / all as f64;
+    let mut text = String::from("clean plates per figure (plates breaking each rule):\n");
+    let mut by_rule: BTreeMap<&str, usize> = BTreeMap::new();
+    for (f, (clean, all, rules)) in tally(outcomes) {
+        let broken: Vec<String> = rules
+            .iter()
+            .map(|(r, n)| format!("{}: {n}", &r[..2].trim()))
+            .collect();
+        text += &format!(
+            "  {f:26} {:5.1} % of {all}  ({})\n",
+            share(clean, all),
+            broken.join(", ")
+        );
+        for (r, n) in rules {
+            *by_rule.entry(r).or_default() += n;
+        }
+    }
+    let clean = outcomes.iter().filter(|o| o.failures.is_empty()).count();
+    text += &format!(
+        "  {:26} {:5.1} % of {}\n",
+        "all",
+        share(clean, outcomes.len()),
+        outcomes.len()
+    );
+    text += "plates breaking each rule:\n";
+    for (r, n) in &by_rule {
+        text += &format!("  {r:26} {n}\n");
+    }
+    text += "first failures:\n";
+    let failures = outcomes
+        .iter()
+        .flat_map(|o| o.failures.iter().map(move |f| (o, f)));
+    for (o, f) in failures.take(20) {
+        text += &format!(
+            "  [{}] {} at {:.4}° ({}): {}\n",
+            f.rule, o.figure, o.degrees, o.mechanism, f.ids
+        );
+    }
+    text
+}
+
+#[test]
+#[ignore = "the plates are not all clean yet (24 % of the sweep on the first run): run with --ignored"]
+fn every_plate_is_clean() {
+    let start = Instant::now();
+    let outcomes = sweep();
+    let text = report(&outcomes);
+    println!(
+        "{text}({} plates in {:.1?})",
+        outcomes.len(),
+        start.elapsed()
+    );
+    assert!(outcomes.iter().all(|o| o.failures.is_empty()), "{text}");
+}
+
+// ------------------------------------------------ the checker, proven to fail
+
+/// A 400 × 300 page: a mechanism panel drawn at page scale holding
+/// `mechanism`, a notes panel holding `notes`, and metadata `points`.
+fn page(mechanism: &str, notes: &str, points: &str) -> String {
+    format!(
+        r##"<svg xmlns="http://www.w3.org/2000/svg" width="400" height="300" viewBox="0 0 400 300" font-family="serif">
+<metadata>{{"points":{{{points}}}}}</metadata>
+<g id="panel-mechanism" data-page-from-world="1 0 0 1 0 0">
+{mechanism}
+</g>
+<g id="panel-notes" data-page-from-world="1 0 0 1 0 0">
+{notes}
+</g>
+</svg>"##
+    )
+}
+
+/// Channel between y = 140 and 160 from x = 20 to `end`; the rod from A
+/// (60, 150) rises to B (300, 100) and leaves the channel at x = 108.
+fn mechanism_with_guide_to(end: f64) -> String {
+    format!(
+        r##"<path id="guide-upper" class="frame" d="M20 140 L{end} 140" stroke="#000" fill="none"/>
+<path id="hatch-guide-upper" class="frame" d="M30 140 L35 134 M40 140 L45 134" stroke="#000" fill="none"/>
+<path id="guide-lower" class="frame" d="M20 160 L{end} 160" stroke="#000" fill="none"/>
+<path id="link-rod" class="link" d="M60 150 L300 100" stroke="#000" stroke-width="2.6" fill="none"/>
+<path id="link-crank" class="link" d="M300 100 L340 150" stroke="#000" stroke-width="2.6" fill="none"/>
+<circle id="point-A" class="link" cx="60" cy="150" r="4" fill="#fff" stroke="#000"/>
+<text id="label-A" class="label" x="60" y="185" font-size="17" text-anchor="middle">A</text>"##
+    )
+}
+
+const CLEAN_MECHANISM_END: f64 = 90.0;
+const NOTE: &str =
+    r##"<text id="note-1" class="label" x="20" y="280" font-size="12">a note</text>"##;
+/// B, C, E, F, G spread 160 px wide on the page.
+const WIDE_POINTS: &str = r#""B":[300,100],"C":[340,150],"E":[340,90],"F":[180,120],"G":[180,150]"#;
+/// B, C, E, F, G within 40 px.
+const NARROW_POINTS: &str =
+    r#""B":[300,100],"C":[340,110],"E":[330,95],"F":[310,120],"G":[320,110]"#;
+
+/// The rule of each failure, in order (one entry per failure).
+fn rules(svg: &str, spread: bool) -> Vec<&'static str> {
+    check(&Plate::read(svg), spread)
+        .iter()
+        .map(|f| f.rule)
+        .collect()
+}
+
+fn clean_with(extra: &str) -> String {
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + extra;
+    page(&body, NOTE, WIDE_POINTS)
+}
+
+#[test]
+fn a_clean_plate_passes_every_rule() {
+    let plate = Plate::read(&clean_with(""));
+    assert_eq!(check(&plate, true), Vec::new());
+    assert_eq!(plate.panels.len(), 1);
+    assert_eq!(plate.page_labels.len(), 1, "the note is a page label");
+    assert!(plate.panels[0].markers.contains_key("A"));
+}
+
+#[test]
+fn label_boxes_are_the_glyphs_not_the_em_box() {
+    let plate = Plate::read(&clean_with(""));
+    let a = plate.panels[0]
+        .labels
+        .iter()
+        .find(|l| l.id == "label-A")
+        .unwrap();
+    let (w, h) = (a.rect.x1 - a.rect.x0, a.rect.y1 - a.rect.y0);
+    // A capital A of 17 px: about 0.7 em tall, standing on the baseline.
+    assert!((0.6..0.8).contains(&(h / a.font_size)), "{:?}", a.rect);
+    assert!((a.rect.y1 - 185.0).abs() < 0.5, "{:?}", a.rect);
+    assert!(w > 5.0 && w < 17.0, "{:?}", a.rect);
+    assert!(
+        (a.rect.x0 + a.rect.x1) / 2.0 - 60.0 < 1.0,
+        "centred on x = 60"
+    );
+}
+
+#[test]
+fn a_guide_stopping_at_the_rod_touches_it_without_crossing() {
+    // The rod is at y = 140 where x = 108.
+    let svg = page(&mechanism_with_guide_to(108.0), NOTE, WIDE_POINTS);
+    assert_eq!(rules(&svg, true), Vec::<&str>::new());
+}
+
+#[test]
+fn a_rod_through_a_guide_is_caught() {
+    let svg = page(&mechanism_with_guide_to(150.0), NOTE, WIDE_POINTS);
+    assert_eq!(rules(&svg, true), [RULE_GUIDES]);
+}
+
+#[test]
+fn a_rod_through_hatching_is_caught() {
+    let hatch =
+        r##"<path id="hatch-guide-extra" class="frame" d="M105 134 L110 146" stroke="#000"/>"##;
+    assert_eq!(rules(&clean_with(hatch), true), [RULE_GUIDES]);
+}
+
+#[test]
+fn overlapping_labels_are_caught() {
+    let twin = r##"<text id="note-2" class="label" x="26" y="282" font-size="12">a note</text>"##;
+    let svg = page(
+        &mechanism_with_guide_to(CLEAN_MECHANISM_END),
+        &format!("{NOTE}{twin}"),
+        WIDE_POINTS,
+    );
+    assert_eq!(rules(&svg, true), [RULE_OVERLAP]);
+}
+
+#[test]
+fn a_construction_line_through_a_note_is_caught() {
+    let line = r##"<path id="line-CF" class="construction" d="M10 276 L100 276" stroke="#000"/>"##;
+    assert_eq!(rules(&clean_with(line), true), [RULE_LINES]);
+}
+
+#[test]
+fn a_letter_far_from_its_point_is_caught() {
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="230""#);
+    assert_eq!(rules(&page(&body, NOTE, WIDE_POINTS), true), [RULE_NEAR]);
+}
+
+#[test]
+fn ink_past_the_page_edge_is_caught() {
+    let line = r##"<path id="line-far" class="auxiliary" d="M300 220 L420 220" stroke="#000"/>"##;
+    assert_eq!(rules(&clean_with(line), true), [RULE_PAGE]);
+}
+
+#[test]
+fn a_small_construction_is_caught_and_a_detail_panel_cures_it() {
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END);
+    let small = page(&body, NOTE, NARROW_POINTS);
+    assert_eq!(rules(&small, true), [RULE_SPREAD]);
+    assert_eq!(rules(&small, false), Vec::<&str>::new());
+    let detail = r#"</g><g id="panel-detail" data-page-from-world="4 0 0 4 -1000 -300">"#;
+    let cured = page(&format!("{body}{detail}"), NOTE, NARROW_POINTS);
+    assert_eq!(rules(&cured, true), Vec::<&str>::new());
+}
+
+#[test]
+fn a_clipped_detail_panel_is_judged_by_what_it_shows() {
+    // The detail rod and guide cross at (200, 150), outside the clip.
+    let detail = r##"</g><clipPath id="clip-detail"><rect x="250" y="20" width="140" height="100"/></clipPath>
+<g id="panel-detail" clip-path="url(#clip-detail)" data-page-from-world="4 0 0 4 -1000 -300">
+<path id="detail-link-rod" class="link" d="M100 150 L300 150" stroke="#000"/>
+<path id="detail-guide-upper" class="frame" d="M200 100 L200 200" stroke="#000"/>"##;
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + detail;
+    let svg = page(&body, NOTE, WIDE_POINTS);
+    assert_eq!(rules(&svg, true), Vec::<&str>::new());
+    let unclipped = svg.replace(r#" clip-path="url(#clip-detail)""#, "");
+    assert_eq!(rules(&unclipped, true), [RULE_GUIDES]);
+}
+
+#[test]
+fn a_letter_on_its_own_pin_is_caught() {
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="156""#);
+    let failures = check(&Plate::read(&page(&body, NOTE, WIDE_POINTS)), true);
+    assert!(
+        failures.iter().all(|f| f.rule == RULE_LINES),
+        "{failures:?}"
+    );
+    assert!(
+        failures.iter().any(|f| f.ids == "point-A through label-A"),
+        "{failures:?}"
+    );
+}
+
+#[test]
+fn a_detail_letter_far_from_its_detail_point_is_caught() {
+    let detail = r##"</g><g id="panel-detail" data-page-from-world="4 0 0 4 -1000 -300">
+<circle id="detail-point-F" class="construction" cx="300" cy="80" r="2"/>
+<text id="detail-label-F" class="label" x="300" y="30" font-size="17">F</text>"##;
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + detail;
+    let failures = check(&Plate::read(&page(&body, NOTE, WIDE_POINTS)), true);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert_eq!(failures[0].rule, RULE_NEAR);
+    assert!(
+        failures[0].ids.starts_with("detail-label-F "),
+        "{failures:?}"
+    );
+}
