@@ -150,6 +150,26 @@ impl ChainCentres {
         })
     }
 
+    /// The six as a JSON object keyed `O_ab` … `O_cd`: each `[x, y]`, or
+    /// `{"at_infinity": [dx, dy]}`, or `{"indeterminate": true}` where two
+    /// coincident lines leave it anywhere on a line (the same form in
+    /// `analyze --json` and in the figures' metadata).
+    pub fn to_json(&self) -> serde_json::Value {
+        let num = |x: f64| x + 0.0;
+        let mut map = serde_json::Map::new();
+        for (name, centre) in self.named() {
+            let value = match centre {
+                Intersection::Point(p) => serde_json::json!([num(p.x), num(p.y)]),
+                Intersection::AtInfinity(d) => {
+                    serde_json::json!({"at_infinity": [num(d.x), num(d.y)]})
+                }
+                Intersection::Coincident => serde_json::json!({"indeterminate": true}),
+            };
+            map.insert(name.to_string(), value);
+        }
+        serde_json::Value::Object(map)
+    }
+
     /// The centres seen from another link's frame: points mapped by the rigid
     /// motion `p ↦ rotation · (p − origin)`, directions turned by `rotation`
     /// (a unit complex number as (cos, sin)).

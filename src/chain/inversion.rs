@@ -182,6 +182,10 @@ pub struct InversionPose {
     rates: [f64; 4],
     /// Their rates of change per unit (dθ/dt)² at constant dθ/dt.
     accels: [f64; 4],
+    /// The fixed link's frame: its origin in the engine's frame and the
+    /// rotation (cos, sin) from engine directions to its own.
+    origin: Point,
+    rotation: Vector,
 }
 
 impl InversionPose {
@@ -201,6 +205,8 @@ impl InversionPose {
             centres,
             rates,
             accels,
+            origin,
+            rotation: turn,
         }
     }
 
@@ -212,6 +218,18 @@ impl InversionPose {
     /// The engine's pose at the same relative position.
     pub fn engine_pose(&self) -> &Pose {
         &self.pose
+    }
+
+    /// A point of the engine's frame (d fixed) seen from the fixed link's
+    /// frame: the rigid motion that [`InversionPose::centres`] applies.
+    pub fn place(&self, p: Point) -> Point {
+        Point::from(self.turn(p - self.origin))
+    }
+
+    /// A direction of the engine's frame turned into the fixed link's.
+    pub fn turn(&self, v: Vector) -> Vector {
+        let r = self.rotation;
+        Vector::new(r.x * v.x - r.y * v.y, r.y * v.x + r.x * v.y)
     }
 
     /// The six virtual centres in the fixed link's frame (the same points of

@@ -94,13 +94,10 @@ pub fn centre_json(c: &Intersection) -> Value {
     }
 }
 
-/// The six centres as a JSON object keyed `O_ab` … `O_cd`.
+/// The six centres as a JSON object keyed `O_ab` … `O_cd` (the form the
+/// figures' metadata uses too).
 pub fn centres_json(c: &ChainCentres) -> Value {
-    let mut map = serde_json::Map::new();
-    for (name, centre) in c.named() {
-        map.insert(name.to_string(), centre_json(&centre));
-    }
-    Value::Object(map)
+    c.to_json()
 }
 
 fn opt(x: Option<f64>) -> Value {

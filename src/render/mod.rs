@@ -12,6 +12,7 @@ pub use number::{GRID, fmt, trace_tolerance};
 pub use output::write_atomic;
 pub use png::{font_database, to_png};
 pub use style::Style;
+pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING};
 pub use svg::to_svg;
 
 pub(crate) use style::NOTE_LINE;
