@@ -57,6 +57,7 @@
 
 pub mod analytic;
 mod angle;
+pub mod chain;
 pub mod construct;
 pub mod diagram;
 mod error;
@@ -70,6 +71,11 @@ pub mod table;
 
 pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
 pub use angle::Angle;
+pub use chain::{
+    Assembly, ChainCentres, ConvergenceRow, CrankReach, CylindricChain, CylindricPose,
+    GrashofClass, Inversion, InversionPose, InvertedChain, LinkMotion, LinkRates, QuadricChain,
+    QuadricPose, SlotConstruction, slot_convergence,
+};
 pub use error::{Error, Result};
 pub use figure::Style;
 pub use figure::{Figure, FigureName, Font};

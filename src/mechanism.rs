@@ -30,7 +30,7 @@ pub struct SliderCrank {
     offset: f64,
 }
 
-fn in_range(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn in_range(name: &'static str, value: f64) -> Result<f64> {
     if (MIN_LENGTH..=MAX_LENGTH).contains(&value) {
         Ok(value)
     } else {

@@ -85,7 +85,16 @@ fn analyze_json_offset_mechanism() {
 #[test]
 fn analyze_at_90_degrees_has_d_at_infinity() {
     let v = json(&["analyze", "--angle", "90", "--json"]);
-    assert_eq!(v["points"]["D"], Value::Null);
+    assert_eq!(
+        v["points"]["D"],
+        serde_json::json!({"at_infinity": [0.0, 1.0]})
+    );
+    assert_eq!(v["virtual_centres"]["O_bd"], v["points"]["D"]);
+    assert_eq!(
+        v["virtual_centres"]["O_cd"],
+        serde_json::json!({"at_infinity": [0.0, 1.0]})
+    );
+    assert_eq!(v["virtual_centres"]["O_ac"], v["points"]["E"]);
     assert_eq!(v["graphical"]["rod_angular_velocity"], 0.0);
     // Every other number is finite (JSON cannot carry NaN anyway: check all).
     fn all_finite(v: &Value) -> bool {
@@ -289,4 +298,111 @@ fn defaults_run_the_section_35_engine() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.contains("r = 0.5, l = 3"));
     assert!(text.contains("θ = 45°"));
+}
+
+#[test]
+fn analyze_curved_slot_converges_to_the_straight_slot() {
+    let straight = json(&["analyze", "--angle", "45", "--json"]);
+    let v = json(&[
+        "analyze",
+        "--angle",
+        "45",
+        "--slot-radius",
+        "1e12",
+        "--json",
+    ]);
+    assert_eq!(v["points"]["O_cd"], serde_json::json!([0.0, -1e12]));
+    assert_eq!(v["virtual_centres"]["O_cd"], v["points"]["O_cd"]);
+    for (key, scale) in [("velocity", 13.0), ("acceleration", 350.0)] {
+        let a = v["analytic"][key].as_f64().unwrap();
+        let b = straight["analytic"][key].as_f64().unwrap();
+        assert!((a - b).abs() < 1e-10 * scale, "{key}: {a} {b}");
+        let g = v["graphical"][key].as_f64().unwrap();
+        assert!((g - a).abs() < 1e-12 * scale, "{key}: {g} {a}");
+    }
+    let x = straight["analytic"]["position"].as_f64().unwrap();
+    assert!((v["analytic"]["arc_position"].as_f64().unwrap() - x).abs() < 1e-10);
+    let names = ["O_ab", "O_ac", "O_ad", "O_bc", "O_bd", "O_cd"];
+    let keys: Vec<&String> = v["virtual_centres"].as_object().unwrap().keys().collect();
+    assert_eq!(keys, names);
+}
+
+#[test]
+fn analyze_quadric_chain_and_inversions() {
+    let v = json(&[
+        "analyze",
+        "--links",
+        "1,3,2.5,3.2",
+        "--angle",
+        "30",
+        "--assembly",
+        "crossed",
+        "--json",
+    ]);
+    let p = |k: &str| {
+        let a = v["points"][k].as_array().unwrap();
+        (a[0].as_f64().unwrap(), a[1].as_f64().unwrap())
+    };
+    let (a, b, o) = (p("A"), p("B"), p("O_cd"));
+    assert!(((a.0 - b.0).hypot(a.1 - b.1) - 3.0).abs() < 1e-14);
+    assert!(((a.0 - o.0).hypot(a.1 - o.1) - 2.5).abs() < 1e-14);
+    assert_eq!(v["mechanism"]["grashof"], "crank_rocker");
+    assert_eq!(v["mechanism"]["assembly"], "crossed");
+    // The slotted lever (inversion 3) in line, r/l = 1/2: time ratio 2.
+    let v = json(&[
+        "analyze",
+        "--crank",
+        "1",
+        "--rod",
+        "2",
+        "--inversion",
+        "3",
+        "--json",
+    ]);
+    assert!((v["time_ratio"].as_f64().unwrap() - 2.0).abs() < 1e-14);
+    assert_eq!(v["fixed"], "b");
+    assert_eq!(v["links"]["b"]["angular_velocity"], 0.0);
+    // The hand pump's handle at the end of its swing: no motion, no NaN.
+    let v = json(&["analyze", "--inversion", "4", "--angle", "90", "--json"]);
+    assert_eq!(v["links"]["a"]["angular_velocity"], Value::Null);
+    assert!(v["virtual_centres"]["O_cd"]["at_infinity"].is_array());
+}
+
+#[test]
+fn check_covers_the_curved_slot_and_the_quadric_chain() {
+    for args in [
+        &["check", "--slot-radius", "-3.6", "--samples", "2000"][..],
+        &["check", "--slot-radius", "1e15", "--samples", "2000"][..],
+        &["check", "--links", "3,2,3,4.5", "--samples", "2000"][..],
+    ] {
+        let out = run(args);
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stdout)
+        );
+        assert!(String::from_utf8_lossy(&out.stdout).contains("all within tolerance"));
+    }
+}
+
+#[test]
+fn chain_errors_are_one_line() {
+    for args in [
+        &["analyze", "--slot-radius", "1.7"][..],
+        &["analyze", "--links", "1,2,3"][..],
+        &["analyze", "--links", "1,2,3,7"][..],
+        &["analyze", "--links", "3,2,3,4.5", "--angle", "170"][..],
+        &["analyze", "--inversion", "5"][..],
+        &["analyze", "--slot-radius", "5", "--links", "1,3,2.5,3.2"][..],
+        &["analyze", "--inversion", "2", "--torque", "1"][..],
+    ] {
+        let out = run(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stderr).lines().count(),
+            1,
+            "{args:?}"
+        );
+    }
 }

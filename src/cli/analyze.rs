@@ -7,7 +7,7 @@ use serde_json::{Value, json};
 use slider_crank::analytic::statics::{self, Friction};
 use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
 use slider_crank::geom::{Intersection, Point};
-use slider_crank::{Angle, Error, Kinematics, Result, SliderCrank};
+use slider_crank::{Angle, ChainCentres, Error, Kinematics, Result, SliderCrank};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -39,6 +39,8 @@ pub struct AnalyzeArgs {
     /// Print JSON (DESIGN.md §4): one object, or an array for several angles
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub chain: super::chain::ChainArgs,
 }
 
 /// Everything computed at one angle.
@@ -48,7 +50,7 @@ struct Report {
     c: Point,
     b: Point,
     a: Point,
-    d: Option<Point>,
+    d: Intersection,
     e: Point,
     f: Point,
     g: Point,
@@ -56,6 +58,7 @@ struct Report {
     exact: Kinematics,
     graphical: [f64; 4],
     statics: Option<Statics>,
+    centres: ChainCentres,
 }
 
 struct Statics {
@@ -142,10 +145,7 @@ fn analyse(
         c: pose.c(),
         b: pose.b(),
         a: pose.a(),
-        d: match d.d() {
-            Intersection::Point(p) => Some(p),
-            _ => None,
-        },
+        d: d.d(),
         e: e.e(),
         f: kisch.points().f(),
         g: kisch.points().g(),
@@ -153,6 +153,7 @@ fn analyse(
         exact,
         graphical,
         statics,
+        centres: ChainCentres::of_slider_crank(&pose),
     })
 }
 
@@ -163,7 +164,7 @@ fn to_json(m: &SliderCrank, r: &Report) -> Value {
         "omega": num(r.omega),
         "points": {
             "C": point_json(r.c), "B": point_json(r.b), "A": point_json(r.a),
-            "D": opt_point_json(r.d), "E": point_json(r.e), "F": point_json(r.f),
+            "D": super::chain::centre_json(&r.d), "E": point_json(r.e), "F": point_json(r.f),
             "G": point_json(r.g), "H": opt_point_json(r.h),
         },
         "analytic": {
@@ -180,6 +181,7 @@ fn to_json(m: &SliderCrank, r: &Report) -> Value {
             "rod_angular_velocity": num(r.graphical[2]),
             "rod_angular_acceleration": num(r.graphical[3]),
         },
+        "virtual_centres": super::chain::centres_json(&r.centres),
     });
     if let Some(s) = &r.statics {
         let (with_friction, locking) = match s.with_friction {
@@ -214,7 +216,7 @@ fn to_text(r: &Report) -> String {
         ("C", Some(r.c)),
         ("B", Some(r.b)),
         ("A", Some(r.a)),
-        ("D", r.d),
+        ("D", r.d.point()),
         ("E", Some(r.e)),
         ("F", Some(r.f)),
         ("G", Some(r.g)),
@@ -325,6 +327,15 @@ fn pretty(value: &Value) -> Result<String> {
 /// prints each angle as it is computed.
 pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     let m = args.mechanism.mechanism()?;
+    if args.chain.is_set() && args.torque.is_some() {
+        return Err(Error::Parse(
+            "--torque applies to the engine only, not with --slot-radius, --links or --inversion"
+                .into(),
+        ));
+    }
+    if super::chain::analyze(m, &args.chain, &args.speed, &args.angle, args.json, out)? {
+        return Ok(());
+    }
     let omega = args.speed.omega()?;
     let spec = AngleSpec::parse(&args.angle)?;
     if let Some(t) = args.torque.filter(|t| !t.is_finite()) {

@@ -12,6 +12,11 @@ use slider_crank::{Error, Result};
 /// at that pose ([`slider_crank::construct::condition`]).
 pub const DEFAULT_ULPS: f64 = 4.0;
 
+/// Default allowance of `check --slot-radius` and `check --links`: the
+/// largest scaled difference (DESIGN.md §6) between the chain's two
+/// formulations.
+pub const CHAIN_TOLERANCE: f64 = 1e-12;
+
 /// Most poses one check sweeps (about a second of work).
 pub const MAX_SAMPLES: usize = 1_000_000;
 
@@ -31,9 +36,13 @@ pub struct CheckArgs {
     pub samples: usize,
     /// Allowed difference per unit of condition number, in the scaled
     /// units of DESIGN.md §6: a difference passes when at most T · κ
-    /// [default: 4 ulps, 4 × 2⁻⁵² ≈ 8.9e-16]
+    /// [default: 4 ulps, 4 × 2⁻⁵² ≈ 8.9e-16]. With --slot-radius or
+    /// --links: the largest allowed scaled difference itself (DESIGN.md §6
+    /// scaling, no condition number) [default there: 1e-12]
     #[arg(long, allow_hyphen_values = true, value_name = "T")]
     pub tolerance: Option<f64>,
+    #[command(flatten)]
+    pub chain: super::chain::ChainArgs,
 }
 
 /// Runs the check: the report, and whether every quantity passed.
@@ -52,6 +61,11 @@ pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
             value: args.samples as f64,
             reason: format!("give between 1 and {MAX_SAMPLES} poses"),
         });
+    }
+    let chain_tolerance = args.tolerance.unwrap_or(CHAIN_TOLERANCE);
+    if let Some((text, ok)) = super::chain::check(m, &args.chain, args.samples, chain_tolerance)? {
+        stdout.text(&text)?;
+        return Ok(ok);
     }
     let report = sweep(&m, args.samples);
     let allowed = tolerance / f64::EPSILON;

@@ -17,7 +17,10 @@ pub struct FigureArgs {
     /// ng-fig-a1-velocity. Diagrams: fig-61-centrodes,
     /// fig-64-velocity-diagrams, acceleration-diagrams, rod-motion,
     /// approximation-error, coupler-curves, ng-fig-2-incline,
-    /// ng-fig-7-calibration, ng-fig-8-forces, curve-benchmark
+    /// ng-fig-7-calibration, ng-fig-8-forces, curve-benchmark,
+    /// fig-60-chains, inversion-1-engine, inversion-2-rotating-block,
+    /// inversion-3-oscillating-cylinder, inversion-4-hand-pump,
+    /// slot-convergence
     #[arg(value_name = "NAME")]
     pub name: String,
     /// Crank radius r [default: the figure's, 0.5 ft or Ng's 25 mm]

@@ -2,6 +2,7 @@
 
 pub mod analyze;
 pub mod args;
+pub mod chain;
 pub mod check;
 pub mod figure;
 pub mod output;

@@ -91,4 +91,5 @@ pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace, trace_tol
 pub use locus::{Locus, LocusKind};
 pub use measure::{Deviation, measure};
 pub use path::{Path, Segment, Subpath};
+pub(crate) use plot::CAPTION;
 pub use plot::Plot;

@@ -21,7 +21,7 @@ const TOP: f64 = 30.0;
 /// Room below the plot area for tick labels and the abscissa's title.
 const BOTTOM: f64 = 42.0;
 /// Room below that for a caption.
-const CAPTION: f64 = 22.0;
+pub(crate) const CAPTION: f64 = 22.0;
 /// Line height of legends and notes.
 const LEGEND_LINE: f64 = 16.0;
 /// Length of a legend's line sample.

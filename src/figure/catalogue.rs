@@ -61,6 +61,24 @@ pub enum FigureName {
     /// The curve engine's benchmark: segments and time against measured
     /// error, log–log (docs/curve-benchmarks.csv).
     CurveBenchmark,
+    /// Textbook Fig. 60: (a) the quadric crank chain, (b) the block in a
+    /// curved slot with its centre O_cd, (c) the straight slot, O_cd at
+    /// infinity; links a, b, c, d, one crank angle.
+    Fig60Chains,
+    /// Inversion 1, the frame d fixed: the direct-acting engine, with its
+    /// six virtual centres.
+    Inversion1Engine,
+    /// Inversion 2, the crank a fixed: the rotating block (Whitworth's
+    /// quick return, the Gnome engine).
+    Inversion2RotatingBlock,
+    /// Inversion 3, the rod b fixed: the oscillating cylinder, the crank
+    /// and slotted lever quick return.
+    Inversion3OscillatingCylinder,
+    /// Inversion 4, the block c fixed: the hand pump.
+    Inversion4HandPump,
+    /// The curved slot's difference from the straight slot against its
+    /// radius ρ from 1 to 1e15, log–log.
+    SlotConvergence,
 }
 
 impl FigureName {
@@ -76,7 +94,7 @@ impl FigureName {
     ];
 
     /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 10] = [
+    pub const DIAGRAMS: [FigureName; 16] = [
         FigureName::Fig61Centrodes,
         FigureName::Fig64VelocityDiagrams,
         FigureName::AccelerationDiagrams,
@@ -87,6 +105,12 @@ impl FigureName {
         FigureName::NgFig7Calibration,
         FigureName::NgFig8Forces,
         FigureName::CurveBenchmark,
+        FigureName::Fig60Chains,
+        FigureName::Inversion1Engine,
+        FigureName::Inversion2RotatingBlock,
+        FigureName::Inversion3OscillatingCylinder,
+        FigureName::Inversion4HandPump,
+        FigureName::SlotConvergence,
     ];
 
     /// Every named figure: the scenes, then the diagrams.
@@ -126,6 +150,12 @@ impl FigureName {
             FigureName::NgFig7Calibration => "ng-fig-7-calibration",
             FigureName::NgFig8Forces => "ng-fig-8-forces",
             FigureName::CurveBenchmark => "curve-benchmark",
+            FigureName::Fig60Chains => "fig-60-chains",
+            FigureName::Inversion1Engine => "inversion-1-engine",
+            FigureName::Inversion2RotatingBlock => "inversion-2-rotating-block",
+            FigureName::Inversion3OscillatingCylinder => "inversion-3-oscillating-cylinder",
+            FigureName::Inversion4HandPump => "inversion-4-hand-pump",
+            FigureName::SlotConvergence => "slot-convergence",
         }
     }
 
@@ -170,6 +200,12 @@ impl FigureName {
         let m = match self {
             _ if self.is_ng() => SliderCrank::in_line(25.0, 72.0),
             FigureName::Fig61Centrodes => SliderCrank::in_line(0.5, 1.25),
+            FigureName::Fig60Chains
+            | FigureName::Inversion1Engine
+            | FigureName::Inversion2RotatingBlock
+            | FigureName::Inversion3OscillatingCylinder
+            | FigureName::Inversion4HandPump => SliderCrank::in_line(0.5, 1.5),
+            FigureName::SlotConvergence => SliderCrank::in_line(0.2, 0.6),
             _ => SliderCrank::in_line(0.5, 3.0),
         };
         m.expect("the catalogue's mechanisms are valid")
@@ -192,7 +228,13 @@ impl FigureName {
             FigureName::RodMotion => 45.0,
             FigureName::CouplerCurves => 40.0,
             FigureName::NgFig2Incline => 45.0,
+            FigureName::Fig60Chains => 50.0,
+            FigureName::Inversion1Engine
+            | FigureName::Inversion2RotatingBlock
+            | FigureName::Inversion3OscillatingCylinder
+            | FigureName::Inversion4HandPump => 60.0,
             FigureName::ApproximationError
+            | FigureName::SlotConvergence
             | FigureName::NgFig7Calibration
             | FigureName::NgFig8Forces
             | FigureName::CurveBenchmark => 0.0,
@@ -233,6 +275,12 @@ impl FigureName {
             FigureName::NgFig7Calibration => (640.0, 460.0),
             FigureName::NgFig8Forces => (760.0, 700.0),
             FigureName::CurveBenchmark => (900.0, 540.0),
+            FigureName::Fig60Chains => (900.0, 420.0),
+            FigureName::Inversion1Engine
+            | FigureName::Inversion2RotatingBlock
+            | FigureName::Inversion3OscillatingCylinder
+            | FigureName::Inversion4HandPump => (760.0, 620.0),
+            FigureName::SlotConvergence => (760.0, 560.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }

@@ -22,7 +22,7 @@ pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
 pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use options::{FigureOptions, Fit};
 pub use path::{Path, PathBuilder, PathSegment};
-pub(crate) use style::Pen;
 pub use style::Style;
+pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING, Pen};
 pub use text::{RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
 pub use transform::{PageFromWorld, PageRect};

@@ -143,3 +143,9 @@ impl Style {
         }
     }
 }
+
+/// Distance between the strokes of ground hatching, page units (the
+/// writer's and the hand-drawn sketches' alike).
+pub(crate) const HATCH_SPACING: f64 = 6.0;
+/// Depth of the strip of ground hatching, page units.
+pub(crate) const HATCH_DEPTH: f64 = 6.5;

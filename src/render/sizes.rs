@@ -9,10 +9,7 @@ pub(crate) const DOT_RADIUS: f64 = 2.1;
 pub(crate) const ARROW_LENGTH: f64 = 10.0;
 /// Half the width of an arrowhead at its back.
 pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
-/// Distance between the strokes of ground hatching.
-pub(crate) const HATCH_SPACING: f64 = 6.0;
-/// Depth of the strip of ground hatching.
-pub(crate) const HATCH_DEPTH: f64 = 6.5;
+pub(crate) use crate::figure::{HATCH_DEPTH, HATCH_SPACING};
 /// Length of each side of a right-angle mark.
 pub(crate) const RIGHT_ANGLE: f64 = 10.0;
 /// Radius of an angle mark's arc.

@@ -7,14 +7,19 @@ mod approximation;
 mod benchmark;
 mod calibration;
 mod centrodes;
+mod chains;
+mod convergence;
 mod coupler;
 mod data;
 mod forces;
 mod incline;
+mod inversions;
 mod rod;
+mod sketch;
 mod velocity;
 
 use super::{Figure, FigureName, FigureOptions, Font, PageRect, Panel, RichText};
+use crate::chain::Inversion;
 use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::{Plot, format_number};
 use crate::error::{Error, Result};
@@ -126,9 +131,14 @@ fn uses(name: FigureName) -> &'static [&'static str] {
     const MECH: &str = "mechanism (--crank, --rod, --offset)";
     const SPEED: &str = "crank speed (--rpm, --omega)";
     match name {
-        FigureName::Fig61Centrodes | FigureName::CouplerCurves => {
-            &[MECH, "--angle", "--style", "--font"]
-        }
+        FigureName::Fig61Centrodes
+        | FigureName::CouplerCurves
+        | FigureName::Fig60Chains
+        | FigureName::Inversion1Engine
+        | FigureName::Inversion2RotatingBlock
+        | FigureName::Inversion3OscillatingCylinder
+        | FigureName::Inversion4HandPump => &[MECH, "--angle", "--style", "--font"],
+        FigureName::SlotConvergence => &[MECH, "--style", "--font"],
         FigureName::Fig64VelocityDiagrams
         | FigureName::AccelerationDiagrams
         | FigureName::RodMotion => &[MECH, SPEED, "--angle", "--style", "--font"],
@@ -181,6 +191,12 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         FigureName::NgFig7Calibration => calibration::build(&ctx),
         FigureName::NgFig8Forces => forces::build(&ctx),
         FigureName::CurveBenchmark => benchmark::build(&ctx),
+        FigureName::Fig60Chains => chains::build(&ctx),
+        FigureName::Inversion1Engine => inversions::build(&ctx, Inversion::Frame),
+        FigureName::Inversion2RotatingBlock => inversions::build(&ctx, Inversion::Crank),
+        FigureName::Inversion3OscillatingCylinder => inversions::build(&ctx, Inversion::Rod),
+        FigureName::Inversion4HandPump => inversions::build(&ctx, Inversion::Slider),
+        FigureName::SlotConvergence => convergence::build(&ctx),
         _ => Err(Error::Parse(format!(
             "{} is a mechanism figure, not a diagram",
             name.name()
@@ -197,7 +213,7 @@ pub(crate) struct Sheet {
     panels: Vec<Panel>,
     plots: Vec<Value>,
     meta: Map<String, Value>,
-    /// The page's height when fitted to what is drawn ([`Sheet::fit`]).
+    /// The page's height when not the catalogue's (fitted to a drawing).
     height: Option<f64>,
 }
 
@@ -220,6 +236,11 @@ impl Sheet {
     /// pose, so that no empty band is left below.
     pub fn fit(&mut self, bottom: f64) {
         self.height = Some((bottom + MARGIN).min(self.name.page().height()));
+    }
+
+    /// Sets the page's height (a page fitted to its drawing).
+    pub fn height(&mut self, height: f64) {
+        self.height = Some(height);
     }
 
     /// Records the mechanism, speed and pose in the metadata.
@@ -270,7 +291,7 @@ impl Sheet {
             corner.x,
             corner.y,
             (page.width() - MARGIN - corner.x).max(1.0),
-            (page.height() - MARGIN - corner.y).max(1.0),
+            (self.height.unwrap_or(page.height()) - MARGIN - corner.y).max(1.0),
         );
         self.panels.push(Panel::new(
             "panel-notes",
@@ -284,6 +305,7 @@ impl Sheet {
     /// significant digits (stable text).
     pub fn finish(mut self) -> Figure {
         let page = self.name.page();
+        let height = self.height.unwrap_or(page.height());
         if !self.plots.is_empty() {
             self.meta.insert("plots".into(), Value::Array(self.plots));
         }
@@ -293,7 +315,7 @@ impl Sheet {
         Figure::new(
             self.name.name(),
             page.width(),
-            self.height.unwrap_or(page.height()),
+            height,
             self.style,
             self.tolerance,
             self.panels,
@@ -301,6 +323,22 @@ impl Sheet {
         )
         .with_font(self.font)
     }
+}
+
+/// The rectangle, from the top margin down, of a world panel showing
+/// `world` whole across the page's width (less the margins) with a caption
+/// below, no taller than the catalogue's page leaves above notes
+/// `notes_height` tall.
+pub(crate) fn fitted_rect(page: &Page, world: &crate::geom::Frame, notes_height: f64) -> PageRect {
+    let width = page.width() - 2.0 * MARGIN;
+    let most = page.height() - 2.0 * MARGIN - notes_height - crate::diagram::CAPTION;
+    let size = world.max() - world.min();
+    let tall = if size.x > 0.0 && size.y.is_finite() {
+        (width * size.y / size.x).clamp(60.0, most.max(60.0))
+    } else {
+        most
+    };
+    PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION)
 }
 
 /// Rounds every number in `v` to 12 significant digits.

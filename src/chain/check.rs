@@ -1,0 +1,236 @@
+//! Cross-checks of the curved slot and the quadric chain: each exact value
+//! beside one from an independent formulation, in scaled units.
+
+use super::centres::{ChainCentres, SlotConstruction};
+use super::cylindric::CylindricChain;
+use super::quadric::{Assembly, QuadricChain};
+use crate::angle::Angle;
+use crate::construct::Link;
+use crate::geom::{Circle, CircleIntersection, Intersection, Point, cross};
+
+/// The worst scaled difference of one quantity over a sweep: its name, the
+/// difference, the crank angle in degrees where it occurred, and the number
+/// of poses where both values existed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ChainCheckRow {
+    /// What is compared, and with what.
+    pub name: &'static str,
+    /// The worst scaled difference (infinite if a NaN appeared).
+    pub worst: f64,
+    /// Where, in degrees.
+    pub at_degrees: f64,
+    /// Poses compared.
+    pub poses: usize,
+}
+
+struct Worst(Vec<ChainCheckRow>);
+
+impl Worst {
+    fn new(names: &[&'static str]) -> Self {
+        Self(
+            names
+                .iter()
+                .map(|&name| ChainCheckRow {
+                    name,
+                    worst: 0.0,
+                    at_degrees: 0.0,
+                    poses: 0,
+                })
+                .collect(),
+        )
+    }
+
+    fn add(&mut self, i: usize, degrees: f64, difference: Option<f64>) {
+        let Some(err) = difference else { return };
+        let err = if err.is_nan() { f64::INFINITY } else { err };
+        let row = &mut self.0[i];
+        row.poses += 1;
+        if err > row.worst || row.poses == 1 {
+            row.worst = err;
+            row.at_degrees = degrees;
+        }
+    }
+}
+
+/// The block's arc position found by Newton's method on the slot's arc
+/// parameter, A(σ) = (sin κσ / κ, e + (1 − cos κσ)/κ) written with sinc so
+/// that κ = 0 is the line, starting from the straight slot's x_A: a
+/// closure independent of the quadratic the core solves.
+pub fn arc_position_by_iteration(chain: &CylindricChain, angle: Angle) -> f64 {
+    let m = chain.mechanism();
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let k = -chain.curvature();
+    let b = Point::new(r * angle.cos(), r * angle.sin());
+    let sinc = |t: f64| if t == 0.0 { 1.0 } else { t.sin() / t };
+    let mut s = m.pose(angle).position();
+    for _ in 0..60 {
+        let t = k * s;
+        let a = Point::new(s * sinc(t), e + 0.5 * k * s * s * sinc(0.5 * t).powi(2));
+        let tangent = crate::geom::Vector::new(t.cos(), t.sin());
+        let g = (a - b).norm_squared() - l * l;
+        let step = g / (2.0 * (a - b).dot(&tangent));
+        s -= step;
+        if step.abs() <= 1e-17 * (s.abs() + r) {
+            break;
+        }
+    }
+    s
+}
+
+/// The curved slot over `samples` crank angles (and 0°, 90°, 180°, 270°):
+/// arc position against [`arc_position_by_iteration`] (scaled by l + r), the
+/// block's velocity from E and from D, its acceleration from Klein (scaled
+/// by r), and the rod's angular velocity from D (unscaled).
+pub fn slot_sweep(chain: &CylindricChain, samples: usize) -> Vec<ChainCheckRow> {
+    let r = chain.mechanism().crank();
+    let mut worst = Worst::new(&[
+        "arc position (Newton on the arc; /(l+r))",
+        "velocity (E, O_ac)",
+        "velocity (D, O_bd)",
+        "acceleration (Klein)",
+        "rod angular velocity (D, O_bd)",
+    ]);
+    for angle in angles(samples) {
+        let p = chain.pose(angle);
+        let s = SlotConstruction::construct(&p);
+        let deg = angle.degrees();
+        let diff = |x: Option<f64>, y: f64, scale: f64| x.map(|x| (x - y).abs() / scale);
+        let by_newton = arc_position_by_iteration(chain, angle);
+        // Positions are of size l + r, and rounded at that size.
+        let size = r + chain.mechanism().rod();
+        worst.add(0, deg, diff(Some(by_newton), p.arc_position(), size));
+        worst.add(1, deg, diff(s.arc_rate_from_e(), p.arc_rate(), r));
+        worst.add(2, deg, diff(s.arc_rate_from_d(), p.arc_rate(), r));
+        worst.add(
+            3,
+            deg,
+            diff(s.arc_acceleration_from_klein(), p.arc_acceleration(), r),
+        );
+        worst.add(
+            4,
+            deg,
+            diff(s.obliquity_rate_from_d(), p.obliquity_rate(), 1.0),
+        );
+    }
+    worst.0
+}
+
+/// The quadric chain in both modes over `samples` crank angles it reaches
+/// (and its limits): the pin A against the intersection of the circles
+/// about B and O_cd (scaled by the longest link), the coupler's angular
+/// velocity from O_bd and the lever's from O_ac (scaled by 1 + |value|:
+/// near a toggle they grow without bound).
+pub fn quadric_sweep(chain: &QuadricChain, samples: usize) -> Vec<ChainCheckRow> {
+    let size = chain
+        .crank()
+        .max(chain.coupler())
+        .max(chain.lever())
+        .max(chain.frame());
+    let mut worst = Worst::new(&[
+        "pin A (circle intersection)",
+        "coupler angular velocity (O_bd)",
+        "lever angular velocity (O_ac)",
+    ]);
+    let mut list = angles(samples);
+    for t in chain.reach().limits() {
+        list.push(Angle::from_radians(t).expect("finite"));
+    }
+    for angle in list {
+        for mode in [Assembly::Open, Assembly::Crossed] {
+            let Ok(p) = chain.pose(angle, mode) else {
+                continue;
+            };
+            let deg = angle.degrees();
+            let circles = Circle::new(p.b(), chain.coupler())
+                .zip(Circle::new(chain.lever_pivot(), chain.lever()))
+                .map(|(one, two)| one.intersect_circle(&two, 0.0));
+            let by_circles = match circles {
+                Some(CircleIntersection::Two(x, y)) => {
+                    let left = cross(&(chain.lever_pivot() - p.b()), &(x - p.b())) > 0.0;
+                    Some(if left == (mode == Assembly::Open) {
+                        x
+                    } else {
+                        y
+                    })
+                }
+                Some(CircleIntersection::Tangent(x)) => Some(x),
+                _ => None,
+            };
+            worst.add(0, deg, by_circles.map(|x| (x - p.a()).norm() / size));
+            let Some(rates) = p.rates() else { continue };
+            let centres = ChainCentres::of_quadric(&p);
+            let rel = |x: Option<f64>, y: f64| x.map(|x| (x - y).abs() / (1.0 + y.abs()));
+            worst.add(
+                1,
+                deg,
+                rel(coupler_rate(&centres, p.b()), rates.coupler_velocity),
+            );
+            worst.add(
+                2,
+                deg,
+                rel(lever_rate(&centres, chain.frame()), rates.lever_velocity),
+            );
+        }
+    }
+    worst.0
+}
+
+/// The coupler turns about O_bd: ω_b (B − O_bd) = B, so ω_b = B·(B − O_bd)/|B − O_bd|².
+fn coupler_rate(centres: &ChainCentres, b: Point) -> Option<f64> {
+    match centres.centre(Link::B, Link::D)? {
+        Intersection::Point(d) => {
+            let bd = b - d;
+            Some(b.coords.dot(&bd) / bd.norm_squared())
+        }
+        Intersection::AtInfinity(_) => Some(0.0),
+        Intersection::Coincident => None,
+    }
+}
+
+/// Crank and lever share O_ac's velocity: ω_c = x / (x − d) for O_ac on the
+/// frame line at x; 1 when it is at infinity.
+fn lever_rate(centres: &ChainCentres, d: f64) -> Option<f64> {
+    match centres.centre(Link::A, Link::C)? {
+        Intersection::Point(e) => Some(e.x / (e.x - d)),
+        Intersection::AtInfinity(_) => Some(1.0),
+        Intersection::Coincident => None,
+    }
+}
+
+fn angles(samples: usize) -> Vec<Angle> {
+    let n = samples.max(1);
+    let mut out: Vec<Angle> = (0..n)
+        .filter_map(|k| Angle::from_degrees(360.0 * k as f64 / n as f64).ok())
+        .collect();
+    for d in [0.0, 90.0, 180.0, 270.0] {
+        out.push(Angle::from_degrees(d).expect("finite"));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::SliderCrank;
+
+    #[test]
+    fn sweeps_pass_at_1e_12() {
+        let m = SliderCrank::new(1.0, 2.0, -0.3).unwrap();
+        for rho in [1.01 * 3.0, -1.01 * 3.0, 1e3, 1e15] {
+            for row in slot_sweep(&CylindricChain::new(m, rho).unwrap(), 720) {
+                assert!(row.worst < 1e-12, "{rho}: {row:?}");
+                assert!(row.poses > 0);
+            }
+        }
+        for links in [
+            [1.0, 3.0, 2.5, 3.2],
+            [3.0, 2.0, 3.0, 4.5],
+            [1.0, 3.0, 1.0, 3.0],
+        ] {
+            let q = QuadricChain::new(links[0], links[1], links[2], links[3]).unwrap();
+            for row in quadric_sweep(&q, 720) {
+                assert!(row.worst < 1e-12, "{links:?}: {row:?}");
+            }
+        }
+    }
+}

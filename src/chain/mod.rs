@@ -1,0 +1,30 @@
+//! The slider-crank chain as a whole (textbook §34, Fig. 60): the quadric
+//! crank chain (a), the block in a curved slot (b), the straight slot (c),
+//! their six virtual centres, and the four inversions.
+//!
+//! Links (textbook letters): a crank, b coupler or connecting rod, c lever
+//! or slider block, d frame. Pins: C = O_ad, B = O_ab, A = O_bc; O_cd is the
+//! lever's pivot, the slot's centre, or the point at infinity on the
+//! perpendicular to a straight stroke.
+//!
+//! One concept per file: [`QuadricChain`] (four lengths, both assembly
+//! modes, Grashof class, reach, toggles and change points),
+//! [`CylindricChain`] (the curved slot, computed from its curvature so that
+//! κ = 0 is today's [`crate::SliderCrank`]), [`ChainCentres`] (the six
+//! virtual centres of any of them, Kennedy's theorem, and the velocity and
+//! acceleration constructions carried over to the curved slot), and
+//! [`InvertedChain`] (the four inversions).
+
+mod centres;
+mod check;
+mod cylindric;
+mod inversion;
+mod quadric;
+
+pub use centres::{CENTRE_NAMES, ChainCentres, SlotConstruction};
+pub use check::{ChainCheckRow, arc_position_by_iteration, quadric_sweep, slot_sweep};
+pub use cylindric::{ConvergenceRow, CylindricChain, CylindricPose, slot_convergence};
+pub use inversion::{Inversion, InversionPose, InvertedChain, LinkMotion};
+pub use quadric::{
+    Assembly, CLOSURE_TOLERANCE, CrankReach, GrashofClass, LinkRates, QuadricChain, QuadricPose,
+};

@@ -1,0 +1,260 @@
+//! Textbook Fig. 60: (a) the quadric crank chain, (b) the same chain with
+//! the lever c replaced by a block sliding in a circular slot of the
+//! lever's radius (the cylindric slider-crank chain), (c) the radius grown
+//! to infinity: the straight slot, O_cd at infinity. Side by side, at one
+//! scale and the same crank angle, links lettered a, b, c, d.
+//!
+//! (a) is computed as a quadric chain ([`QuadricChain`], from
+//! [`CylindricChain::as_quadric`]) and turned into the slot's frame; (b) by
+//! the cylindric chain; (c) is today's engine. The slot radius is
+//! [`slot_radius`] of the mechanism.
+
+use super::sketch::{Sketch, Slot};
+use super::{Ctx, Sheet, short};
+use crate::chain::{ChainCentres, CylindricChain};
+use crate::diagram::Plot;
+use crate::error::Result;
+use crate::figure::{Align, Figure, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Intersection, Point, Vector};
+use crate::{Angle, SliderCrank};
+use serde_json::json;
+
+/// The slot radius drawn in (b): 0.8 (l + r + |e|), well above the
+/// least radius the crank turns with, (l + r + e)/2.
+pub(crate) fn slot_radius(m: &SliderCrank) -> f64 {
+    0.8 * (m.rod() + m.crank() + m.offset().abs())
+}
+
+/// Half length and half height of the block (as the mechanism figures:
+/// smaller for a short rod).
+pub(super) fn block_size(m: &SliderCrank) -> (f64, f64) {
+    let r = m.crank();
+    let k = ((m.rod() - r) / r).clamp(0.3, 1.0);
+    (0.36 * r * k, 0.2 * r * k)
+}
+
+/// The middle of the slot of radius `rho` (`None`: straight) at arc length
+/// σ from T = (0, e), offset δ across it.
+fn slot_point(e: f64, rho: Option<f64>, s: f64, delta: f64) -> Point {
+    match rho {
+        None => Point::new(s, e + delta),
+        Some(rho) => {
+            let (sin, cos) = (s / rho).sin_cos();
+            Point::new((rho + delta) * sin, e - rho + (rho + delta) * cos)
+        }
+    }
+}
+
+/// The arc lengths the block's middle reaches over a turn.
+fn travel(chain: &CylindricChain) -> (f64, f64) {
+    (0..720)
+        .map(|k| chain.pose(Angle::from_degrees(0.5 * k as f64).expect("finite")))
+        .map(|p| p.arc_position())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
+            (lo.min(s), hi.max(s))
+        })
+}
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let m = ctx.mechanism;
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let rho = slot_radius(&m);
+    let curved = CylindricChain::new(m, rho)?;
+    let straight = CylindricChain::straight(m);
+    let (quadric, mode, turn) = curved.as_quadric().expect("a curved slot");
+    let angle = ctx.angle;
+    let qpose = quadric.pose(Angle::from_degrees(angle.degrees() - turn)?, mode)?;
+    let rotate = |p: Point| {
+        let (s, c) = turn.to_radians().sin_cos();
+        Point::new(c * p.x - s * p.y, s * p.x + c * p.y)
+    };
+    let (lh, hh) = block_size(&m);
+    let (lo, hi) = travel(&curved);
+    let (lo_s, hi_s) = travel(&straight);
+    let o_cd = Point::new(0.0, e - rho);
+
+    // One sub-drawing's extent, the same for all three.
+    let reach = 0.15 * r;
+    let x0 = -r - reach;
+    let far = slot_point(e, Some(rho), hi + lh + reach, 0.0)
+        .x
+        .max(hi_s + lh + reach);
+    let y0 = o_cd.y;
+    let y1 = r.max(e + hh);
+    let width = far - x0;
+    let height = y1 - y0;
+    let pad = 0.12 * width.max(height);
+    let gap = 0.5 * pad;
+    let step = width + 2.0 * pad + gap;
+    let notes_height = 44.0;
+    let world = Frame::new(
+        Point::new(x0 - pad, y0 - pad),
+        Point::new(x0 + 3.0 * step - gap - pad, y1 + pad),
+    );
+    let rect = super::fitted_rect(&page, &world, notes_height);
+    let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
+    let map = *plot.map();
+    let shown = map.world_frame(&plot.area());
+    let mut centres = serde_json::Map::new();
+
+    for (k, suffix) in ["-a", "-b", "-c"].into_iter().enumerate() {
+        let dx = Vector::new(k as f64 * step, 0.0);
+        let frame = Frame::new(
+            Point::new(x0 - pad + dx.x, shown.min().y),
+            Point::new(x0 + width + pad + dx.x, shown.max().y),
+        );
+        let mut s = Sketch::new(map, frame, suffix);
+        let c = Point::origin() + dx;
+        // The crank circle and the crank in every panel.
+        s.push(
+            "circle-crank",
+            Role::Curve,
+            Shape::Circle {
+                centre: c,
+                radius: r,
+            },
+        );
+        let (b, a, key) = match k {
+            0 => (rotate(qpose.b()) + dx, rotate(qpose.a()) + dx, "a"),
+            1 => {
+                let p = curved.pose(angle);
+                (p.b() + dx, p.a() + dx, "b")
+            }
+            _ => {
+                let p = straight.pose(angle);
+                (p.b() + dx, p.a() + dx, "c")
+            }
+        };
+        s.bearing("C", c);
+        s.link("crank", vec![c, b]);
+        s.link("rod", vec![b, a]);
+        s.pin("C", c);
+        s.pin("B", b);
+        let mid = |p: Point, q: Point| Point::from((p.coords + q.coords) * 0.5);
+        s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
+        s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
+        match k {
+            0 => {
+                // The lever c about O_cd; the frame d from C to O_cd, hatched.
+                let o = o_cd + dx;
+                s.bearing("O-cd", o);
+                s.link("lever", vec![o, a]);
+                s.link("frame", vec![c, o]);
+                let avoid = [(c, b), (b, a), (o, a)];
+                let ends = super::sketch::PIN_CLEAR;
+                s.hatch_link("frame", c, o, &avoid, ends);
+                s.pin("A", a);
+                s.point("O-cd", o, "*O*_{cd}", true, c);
+                s.letter("link-c", mid(o, a), "*c*", TextSize::Letter);
+                s.letter("link-d", mid(c, o), "*d*", TextSize::Letter);
+                let (sin, cos) = turn.to_radians().sin_cos();
+                // Turned from the quadric chain's frame (O_cd on +x) into
+                // the slot's.
+                let of_quadric =
+                    ChainCentres::of_quadric(&qpose).moved(Point::origin(), Vector::new(cos, sin));
+                centres.insert(key.into(), of_quadric.to_json());
+            }
+            _ => {
+                let rho_k = (k == 1).then_some(rho);
+                let pose = if k == 1 {
+                    curved.pose(angle)
+                } else {
+                    straight.pose(angle)
+                };
+                let (lo, hi) = if k == 1 { (lo, hi) } else { (lo_s, hi_s) };
+                let point = move |sigma: f64, delta: f64| slot_point(e, rho_k, sigma, delta) + dx;
+                let slot = Slot {
+                    point: &point,
+                    straight: rho_k.is_none(),
+                    range: (lo - lh - reach, hi + lh + reach),
+                    half_height: hh,
+                    block: (pose.arc_position(), lh + s.world(4.0)),
+                };
+                // The slot's middle line, then the guides.
+                let mid_line: Vec<Point> = (0..=48)
+                    .map(|j| {
+                        point(
+                            slot.range.0 + (slot.range.1 - slot.range.0) * j as f64 / 48.0,
+                            0.0,
+                        )
+                    })
+                    .collect();
+                s.push(
+                    "line-slot",
+                    Role::Auxiliary,
+                    Shape::Polyline {
+                        points: mid_line,
+                        closed: false,
+                    },
+                );
+                s.guides("slot", &slot, c, r, (b, a));
+                // The block, following the slot.
+                let sa = pose.arc_position();
+                let mut outline: Vec<Point> = (0..=8)
+                    .map(|j| point(sa - lh + 2.0 * lh * j as f64 / 8.0, -hh))
+                    .collect();
+                outline.extend((0..=8).map(|j| point(sa + lh - 2.0 * lh * j as f64 / 8.0, hh)));
+                s.push("block-slider", Role::Link, Shape::Block { points: outline });
+                s.pin("A", a);
+                s.letter("link-c", point(sa, -hh), "*c*", TextSize::Letter);
+                s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
+                match pose.chain().slot_centre() {
+                    Intersection::Point(o) => {
+                        let o = o + dx;
+                        s.segment("line-radius", Role::Auxiliary, o, a);
+                        s.point("O-cd", o, "*O*_{cd}", false, c);
+                    }
+                    _ => s.at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}"),
+                }
+                centres.insert(key.into(), ChainCentres::of_cylindric(&pose).to_json());
+            }
+        }
+        let caption = match k {
+            0 => "(a) quadric crank chain".to_string(),
+            1 => format!("(b) block in a curved slot, ρ = {}", short(rho)),
+            _ => "(c) straight slot, ρ = ∞".to_string(),
+        };
+        let cx = x0 + 0.5 * width + dx.x;
+        s.push(
+            "caption",
+            Role::Label,
+            Shape::Text {
+                at: Point::new(cx, shown.min().y),
+                offset: Vector::new(0.0, 12.0),
+                text: RichText::parse(&caption),
+                align: Align::Middle,
+                size: TextSize::Small,
+            },
+        );
+        for item in s.finish() {
+            plot.push(item);
+        }
+    }
+
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, true);
+    sheet.meta("slot_radius", json!(rho));
+    sheet.meta("virtual_centres", serde_json::Value::Object(centres));
+    sheet.plot(plot);
+    let bottom = rect.y + rect.height + 6.0;
+    sheet.height(bottom + notes_height);
+    sheet.notes(
+        Point::new(20.0, bottom),
+        &[
+            format!(
+                "Crank *a* = *r* = {}, rod *b* = *l* = {}{}, θ = {}° in all three.",
+                short(r),
+                short(l),
+                if e == 0.0 {
+                    String::new()
+                } else {
+                    format!(", offset *e* = {}", short(e))
+                },
+                short(angle.degrees())
+            ),
+            "(a) lever *c* = ρ about *O*_{cd}, frame *d* = *CO*_{cd}; (b) the block *c* in a slot of radius ρ about *O*_{cd}; (c) ρ → ∞.".to_string(),
+        ],
+    );
+    Ok(sheet.finish())
+}

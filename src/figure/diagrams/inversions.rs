@@ -1,0 +1,412 @@
+//! The four inversions of the slider-crank chain (textbook §34), one
+//! figure each: the chain seen from its fixed link, which is hatched, at
+//! the relative position θ (the crank a against the frame d, as in the
+//! engine), with its six virtual centres lettered O_ab … O_cd and the lines
+//! of Kennedy's theorem that find O_bd and O_ac. A centre off the page is
+//! shown by an arrow at the panel's edge, a centre at infinity by an arrow
+//! along its direction.
+//!
+//! Each drawing is made in the fixed link's frame
+//! ([`InversionPose::place`]): the frame d (1), the crank a (2), the rod
+//! b (3) or the block c (4) lies still on the page whatever θ is; the panel
+//! shows every place the moving links reach over a turn, so that the scale
+//! does not change with θ.
+
+use super::sketch::{PIN_CLEAR, Seg, Sketch, Slot};
+use super::{Ctx, Sheet, short};
+use crate::chain::{Inversion, InversionPose, InvertedChain};
+use crate::construct::Link;
+use crate::diagram::Plot;
+use crate::error::Result;
+use crate::figure::{Figure, Role, Shape, TextSize};
+use crate::geom::{Frame, Intersection, Point, Vector};
+use crate::{Angle, SliderCrank};
+use serde_json::json;
+
+/// The block's half length and half height: smaller than in Fig. 60, so
+/// that the letter of its pin finds room beside it when the block turns.
+fn block_size(m: &SliderCrank) -> (f64, f64) {
+    let (lh, hh) = super::chains::block_size(m);
+    (0.7 * lh, 0.8 * hh)
+}
+
+/// Room left at the panel's edge for an arrow and its letter, page units.
+const EDGE_ROOM: f64 = 64.0;
+
+/// Centres nearer than this on the page (page units) to a lettered point
+/// share its place and are named in the notes.
+const CROWDED: f64 = 18.0;
+
+/// The chain's pieces at one pose, in the fixed link's frame.
+struct Parts {
+    c: Point,
+    b: Point,
+    a: Point,
+    /// The foot of the perpendicular from C on the line of stroke.
+    t: Point,
+    /// The far end of the frame's guide or slotted bar.
+    f: Point,
+    /// The line of stroke's direction (+x in the engine) and its normal.
+    u: Vector,
+    v: Vector,
+}
+
+/// Lengths along the stroke: the slot's near and far ends of travel.
+fn ends(m: &SliderCrank) -> (f64, f64) {
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let far = ((l + r - e) * (l + r + e)).sqrt();
+    let near = ((l - r - e) * (l - r + e)).sqrt();
+    (near, far)
+}
+
+fn parts(m: &SliderCrank, p: &InversionPose) -> Parts {
+    let (lh, _) = block_size(m);
+    let e = m.offset();
+    let (_, far) = ends(m);
+    let pose = p.engine_pose();
+    Parts {
+        c: p.place(pose.c()),
+        b: p.place(pose.b()),
+        a: p.place(pose.a()),
+        t: p.place(Point::new(0.0, e)),
+        f: p.place(Point::new(far + lh + 0.15 * m.crank(), e)),
+        u: p.turn(Vector::new(1.0, 0.0)),
+        v: p.turn(Vector::new(0.0, 1.0)),
+    }
+}
+
+/// The corners of the block about `a`.
+fn block(parts: &Parts, lh: f64, hh: f64) -> Vec<Point> {
+    let (a, u, v) = (parts.a, parts.u, parts.v);
+    vec![
+        a - u * lh - v * hh,
+        a + u * lh - v * hh,
+        a + u * lh + v * hh,
+        a - u * lh + v * hh,
+    ]
+}
+
+fn letter(link: Link) -> &'static str {
+    match link {
+        Link::A => "a",
+        Link::B => "b",
+        Link::C => "c",
+        Link::D => "d",
+    }
+}
+
+/// The world frame of every place the chain reaches over a turn, with
+/// the rod's instantaneous centre's partner O_ac (E, always finite).
+fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
+    let (lh, hh) = block_size(m);
+    let r = m.crank();
+    let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
+    let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+    let mut add = |p: Point| {
+        lo = lo.inf(&p);
+        hi = hi.sup(&p);
+    };
+    for k in 0..240 {
+        let p = chain.pose(Angle::from_degrees(1.5 * k as f64).expect("finite"));
+        let q = parts(m, &p);
+        for x in [q.c, q.b, q.a, q.t, q.f] {
+            add(x);
+        }
+        for x in block(&q, lh, hh) {
+            add(x);
+        }
+        // The crank circle about C where the frame is fixed.
+        if chain.inversion() == Inversion::Frame {
+            add(q.c + Vector::new(r, r));
+            add(q.c - Vector::new(r, r));
+        }
+        if let Some(Intersection::Point(e)) = p.centres().centre(Link::A, Link::C) {
+            add(e);
+        }
+    }
+    Frame::new(lo, hi)
+}
+
+pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
+    let page = ctx.page();
+    let m = ctx.mechanism;
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let chain = InvertedChain::new(m, inversion);
+    let pose = chain.pose(ctx.angle);
+    let (lh, hh) = block_size(&m);
+    let (near, far) = ends(&m);
+
+    let box_ = extent(&m, &chain);
+    let size = box_.max() - box_.min();
+    let pad = 0.1 * size.x.max(size.y);
+    let world = Frame::new(
+        box_.min() - Vector::new(pad, pad),
+        box_.max() + Vector::new(pad, pad),
+    );
+    let notes_height = 44.0;
+    let rect = super::fitted_rect(&page, &world, notes_height);
+    let fixed = inversion.fixed();
+    let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?
+        .with_caption(&format!(
+            "Inversion {}: link *{}* fixed, {}",
+            inversion.number(),
+            letter(fixed),
+            inversion.name()
+        ));
+    let map = *plot.map();
+    let shown = map.world_frame(&plot.area());
+    let mut s = Sketch::new(map, shown, "");
+    let q = parts(&m, &pose);
+    let (c, b, a) = (q.c, q.b, q.a);
+    let mid = |p: Point, q: Point| Point::from((p.coords + q.coords) * 0.5);
+
+    // The path of the driven link's far pin.
+    let path = match inversion {
+        Inversion::Frame => Some((c, r, b)),
+        Inversion::Crank => Some((b, l, a)),
+        Inversion::Rod => Some((b, r, c)),
+        Inversion::Slider => None,
+    };
+    if let Some((centre, radius, _)) = path {
+        s.push("circle-path", Role::Curve, Shape::Circle { centre, radius });
+    } else {
+        // The handle's swing: B − A = l(−cos φ, sin φ), φ between its
+        // extremes.
+        let top = ((r - e) / l).clamp(-1.0, 1.0).asin();
+        let bottom = ((-r - e) / l).clamp(-1.0, 1.0).asin();
+        s.push(
+            "arc-path",
+            Role::Curve,
+            Shape::Arc {
+                centre: a,
+                radius: l,
+                start: std::f64::consts::PI - top,
+                sweep: top - bottom,
+                arrow: false,
+            },
+        );
+    }
+
+    // The frame d: guides if fixed, else the slotted bar from C.
+    let bar: Vec<Point> = if e == 0.0 {
+        vec![c, q.f]
+    } else {
+        vec![c, q.t, q.f]
+    };
+    let corners = block(&q, lh, hh);
+    let mut moving: Vec<Seg> = Vec::new();
+    if fixed != Link::A {
+        moving.push((c, b));
+    }
+    if fixed != Link::B {
+        moving.push((b, a));
+    }
+    if fixed != Link::D {
+        moving.extend(bar.windows(2).map(|w| (w[0], w[1])));
+    }
+    if fixed != Link::C {
+        moving.extend((0..4).map(|k| (corners[k], corners[(k + 1) % 4])));
+    }
+    match fixed {
+        Link::D => {
+            s.bearing("C", c);
+            let (u, v, t) = (q.u, q.v, q.t);
+            let point = move |sigma: f64, delta: f64| t + u * sigma + v * delta;
+            let slot = Slot {
+                point: &point,
+                straight: true,
+                range: (near - lh - 0.15 * r, far + lh + 0.15 * r),
+                half_height: hh,
+                block: (pose.engine_pose().a().x, lh + s.world(4.0)),
+            };
+            s.segment("line-stroke", Role::Auxiliary, t - u * r, q.f);
+            s.guides("stroke", &slot, c, r, (b, a));
+            s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
+        }
+        _ => {
+            s.link("frame", bar.clone());
+            let at = Point::from(q.f.coords * 0.85 + q.t.coords * 0.15);
+            s.letter("link-d", at, "*d*", TextSize::Letter);
+        }
+    }
+    match fixed {
+        Link::A => {
+            s.bearing("C", c);
+            s.bearing("B", b);
+            s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
+        }
+        Link::B => {
+            // The block's trunnion at A is in the fixed rod; a bearing
+            // there would crowd the block.
+            s.bearing("B", b);
+            s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
+        }
+        Link::C => {
+            // The block is the fixed barrel: hatched on the face away from
+            // the handle.
+            let (lower, upper) = ((corners[0], corners[1]), (corners[3], corners[2]));
+            let away = if q.v.dot(&(b - a)) > 0.0 {
+                (lower, -q.v)
+            } else {
+                (upper, q.v)
+            };
+            s.hatch_edge("block", away.0, &[away.1], &moving, 0.0);
+        }
+        Link::D => {}
+    }
+    s.link("crank", vec![c, b]);
+    s.link("rod", vec![b, a]);
+    s.push(
+        "block-slider",
+        Role::Link,
+        Shape::Block {
+            points: corners.clone(),
+        },
+    );
+    s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
+    s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
+    s.letter(
+        "link-c",
+        if fixed == Link::D {
+            // Below the block, between the guides' hatching.
+            mid(corners[0], corners[1]) - q.v * s.world(4.0)
+        } else {
+            // At its far end, clear of the normal at A.
+            mid(corners[1], corners[2]) + q.u * s.world(4.0)
+        },
+        "*c*",
+        TextSize::Letter,
+    );
+
+    // The six centres, and Kennedy's lines that find O_bd and O_ac.
+    let centres = *pose.centres();
+    let get = |p: Link, q: Link| centres.centre(p, q).expect("distinct links");
+    let o_bd = get(Link::B, Link::D);
+    let o_ac = get(Link::A, Link::C);
+    if let Intersection::Point(d) = o_bd {
+        produced(&mut s, "line-CB-O-bd", c, b, d);
+        // Off the page, the line stops short of the edge, where O_cd's
+        // arrow and letter continue it.
+        let end = match shown.clip_segment(a, d) {
+            Some((_, edge)) if !shown.contains(d) && (edge - a).norm() > 0.0 => {
+                let u = (edge - a).normalize();
+                let back = s.world(EDGE_ROOM).min(0.5 * (edge - a).norm());
+                edge - u * back
+            }
+            _ => d,
+        };
+        s.segment("line-A-O-bd", Role::Auxiliary, a, end);
+    }
+    if let Intersection::Point(x) = o_ac {
+        produced(&mut s, "line-AB-O-ac", a, b, x);
+        s.segment("line-C-O-ac", Role::Auxiliary, c, x);
+    }
+    // The pins are three of the centres: C = O_ad, B = O_ab, A = O_bc
+    // (said in the notes; a single letter keeps close to its pin).
+    s.point("C", c, "*C*", true, c);
+    s.point("B", b, "*B*", true, c);
+    s.point("A", a, "*A*", true, c);
+    // O_cd lies on the normal at A, as O_bd does: its arrow continues
+    // the line A O_bd.
+    let towards_d = match o_bd {
+        Intersection::Point(d) => d - a,
+        _ => Vector::zeros(),
+    };
+    // A centre on a pin or on another centre, as drawn, is named in the
+    // notes instead of lettered on top of it.
+    let mut lettered: Vec<(Point, &str)> = vec![(c, "*C*"), (b, "*B*"), (a, "*A*")];
+    let mut together: Vec<String> = Vec::new();
+    for (key, markup, centre, from, along) in [
+        ("O-bd", "*O*_{bd}", o_bd, b, b - c),
+        ("O-ac", "*O*_{ac}", o_ac, b, b - a),
+        ("O-cd", "*O*_{cd}", get(Link::C, Link::D), a, towards_d),
+    ] {
+        match centre {
+            Intersection::Point(p) => {
+                let near = lettered
+                    .iter()
+                    .find(|(q, _)| map.apply_vector(p - q).norm() < CROWDED);
+                match near {
+                    Some((_, other)) if s.contains(p) => {
+                        together.push(format!("{markup} at {other}"));
+                        s.push(
+                            &format!("centre-{key}"),
+                            Role::Construction,
+                            Shape::Dot { centre: p },
+                        );
+                    }
+                    _ => {
+                        s.point(key, p, markup, false, from);
+                        lettered.push((p, markup));
+                    }
+                }
+            }
+            Intersection::AtInfinity(dir) => {
+                let mut u = dir.into_inner();
+                if u.dot(&along) < 0.0 {
+                    u = -u;
+                }
+                if along == Vector::zeros() {
+                    // Either way along the normal at A: the longer run.
+                    let room =
+                        |w: Vector| shown.clip_ray(from, w).map_or(0.0, |(p, q)| (q - p).norm());
+                    if room(-u) > room(u) {
+                        u = -u;
+                    }
+                }
+                s.at_infinity(key, from, u, markup);
+            }
+            Intersection::Coincident => {}
+        }
+    }
+    for item in s.finish() {
+        plot.push(item);
+    }
+
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, true);
+    sheet.meta("inversion", json!(inversion.number()));
+    sheet.meta("fixed", json!(letter(fixed)));
+    sheet.meta("driver", json!(letter(inversion.driver())));
+    sheet.meta("virtual_centres", centres.to_json());
+    sheet.plot(plot);
+    let mut line = format!(
+        "The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. The fixed link is hatched.",
+        short(ctx.angle.degrees()),
+        short(r),
+        short(l),
+        if e == 0.0 {
+            String::new()
+        } else {
+            format!(", *e* = {}", short(e))
+        },
+    );
+    if let Some(ratio) = chain.time_ratio() {
+        line.push_str(&format!(
+            " Time ratio of the quick return {}.",
+            short(ratio)
+        ));
+    }
+    if !together.is_empty() {
+        line.push_str(&format!(" Here {}.", together.join(", ")));
+    }
+    let lines = [
+        line,
+        "Pins *C* = *O*_{ad}, *B* = *O*_{ab}, *A* = *O*_{bc}; by Kennedy's theorem *O*_{bd} on *CB* and the normal to the stroke at *A*, *O*_{ac} on *AB* and the normal at *C*.".to_string(),
+    ];
+    let bottom = rect.y + rect.height + 6.0;
+    sheet.height(bottom + notes_height);
+    sheet.notes(Point::new(20.0, bottom), &lines);
+    Ok(sheet.finish())
+}
+
+/// The line `p q` produced to `x` on it, from whichever of p and q is
+/// nearer; nothing when x lies between them (the link itself shows it).
+fn produced(s: &mut Sketch, id: &str, p: Point, q: Point, x: Point) {
+    let along = (x - p).dot(&(q - p)) / (q - p).norm_squared();
+    if (0.0..=1.0).contains(&along) {
+        return;
+    }
+    let from = if along > 1.0 { q } else { p };
+    s.segment(id, Role::Auxiliary, from, x);
+}

@@ -1,0 +1,503 @@
+//! Drawing a linkage on a world panel, for the chain figures: links, pins,
+//! bearings, slots with their guides, ground hatching kept clear of the
+//! moving links, and points on, off or at infinity of the page.
+//!
+//! Every id gets the sketch's suffix (`link-crank-a` in panel (a) of
+//! Fig. 60), so that several sketches can share one panel.
+
+use crate::figure::{HATCH_DEPTH, HATCH_SPACING};
+use crate::figure::{Item, PageFromWorld, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Point, Vector, perp};
+
+/// Length of an arrow pointing at something off the page, page units.
+const EDGE_ARROW: f64 = 34.0;
+/// How far inside the frame such an arrow ends, page units.
+const EDGE_GAP: f64 = 3.0;
+/// Clear distance kept between a hatch stroke and a moving link, page units.
+const HATCH_CLEAR: f64 = 2.5;
+/// Shortest run of hatch strokes drawn.
+const HATCH_RUN: usize = 2;
+/// Length of one chord of a curved guide, page units.
+const CHORD: f64 = 12.0;
+/// Clear distance between a guide's open end and the rod, page units.
+const ROD_CLEARANCE: f64 = 5.0;
+/// How far the hatching leans along a guide, page units.
+const HATCH_SLANT: f64 = 6.0;
+/// Room left unhatched at a fixed link's pins, page units.
+pub(super) const PIN_CLEAR: f64 = 8.0;
+/// Half width and depth of a bearing below its centre, page units.
+const BEARING_REACH: f64 = 25.0;
+/// Clear distance between a guide and the crank circle or a bearing.
+const CIRCLE_CLEARANCE: f64 = 7.0;
+/// Shortest guide drawn, page units.
+const GUIDE_MIN: f64 = 12.0;
+
+/// Runs of hatch strokes: (chord, first stroke, last stroke) in page
+/// units along the chord.
+type Runs = Vec<(usize, f64, f64)>;
+
+/// A piece of a moving link, in world coordinates.
+pub(super) type Seg = (Point, Point);
+
+/// A slot the block slides in: the path of its middle, `point(σ, δ)` at
+/// arc length σ and normal offset δ, and the arc-length range its guides
+/// cover.
+pub(super) struct Slot<'a> {
+    /// The point at arc length σ along the slot, offset δ across it
+    /// (δ > 0 on the side of +y at the slot's middle).
+    pub point: &'a dyn Fn(f64, f64) -> Point,
+    /// Whether the slot is straight (one chord per guide).
+    pub straight: bool,
+    /// The arc lengths the guides run between (towards the crank first).
+    pub range: (f64, f64),
+    /// Half the block's height: the guides are this far from the middle.
+    pub half_height: f64,
+    /// The block's arc length and half length: alongside it the rod, which
+    /// starts at its middle, may come close to the guides.
+    pub block: (f64, f64),
+}
+
+/// Items being drawn in one world frame with one map to the page.
+pub(super) struct Sketch {
+    map: PageFromWorld,
+    frame: Frame,
+    suffix: &'static str,
+    items: Vec<Item>,
+}
+
+impl Sketch {
+    /// A sketch clipped to the world `frame`, mapped by `map`; `suffix`
+    /// ends every id.
+    pub fn new(map: PageFromWorld, frame: Frame, suffix: &'static str) -> Self {
+        Self {
+            map,
+            frame,
+            suffix,
+            items: Vec::new(),
+        }
+    }
+
+    /// World length of `px` page units.
+    pub fn world(&self, px: f64) -> f64 {
+        px / self.map.scale()
+    }
+
+    fn page(&self, p: Point) -> Point {
+        self.map.apply(p)
+    }
+
+    fn id(&self, base: &str) -> String {
+        format!("{base}{}", self.suffix)
+    }
+
+    /// Whether `p` is inside the frame.
+    pub fn contains(&self, p: Point) -> bool {
+        self.frame.contains(p)
+    }
+
+    /// Adds an item with id `base` + suffix.
+    pub fn push(&mut self, base: &str, role: Role, shape: Shape) {
+        let id = self.id(base);
+        self.items.push(Item::new(id, role, shape));
+    }
+
+    /// The segment `a b` clipped to the frame (nothing if it misses it or
+    /// is shorter than half a page unit there).
+    pub fn segment(&mut self, base: &str, role: Role, a: Point, b: Point) {
+        if let Some((p, q)) = self.frame.clip_segment(a, b)
+            && (self.page(q) - self.page(p)).norm() >= 0.5
+        {
+            self.push(
+                base,
+                role,
+                Shape::Polyline {
+                    points: vec![p, q],
+                    closed: false,
+                },
+            );
+        }
+    }
+
+    /// A moving link through `points` (`link-{name}`).
+    pub fn link(&mut self, name: &str, points: Vec<Point>) {
+        self.push(
+            &format!("link-{name}"),
+            Role::Link,
+            Shape::Polyline {
+                points,
+                closed: false,
+            },
+        );
+    }
+
+    /// A pin joint without a letter (`pin-{name}`).
+    pub fn pin(&mut self, name: &str, p: Point) {
+        if self.contains(p) {
+            self.push(&format!("pin-{name}"), Role::Link, Shape::Pin { centre: p });
+        }
+    }
+
+    /// A fixed bearing under `p` (`bearing-{name}`).
+    pub fn bearing(&mut self, name: &str, p: Point) {
+        if self.contains(p) {
+            self.push(
+                &format!("bearing-{name}"),
+                Role::Frame,
+                Shape::Bearing { centre: p },
+            );
+        }
+    }
+
+    /// A letter or short markup near `anchor` (`label-{name}`), placed clear
+    /// of lines by the renderer; nothing when `anchor` is off the frame.
+    pub fn letter(&mut self, name: &str, anchor: Point, markup: &str, size: TextSize) {
+        if self.contains(anchor) {
+            self.push(
+                &format!("label-{name}"),
+                Role::Label,
+                Shape::Label {
+                    anchor,
+                    text: RichText::parse(markup),
+                    size,
+                },
+            );
+        }
+    }
+
+    /// A lettered point (`point-{key}`, `label-{key}`): a pin or a dot
+    /// with its letter when on the frame, else an arrow at the frame's
+    /// edge on the line from `from` (a point on the frame) towards it.
+    pub fn point(&mut self, key: &str, p: Point, markup: &str, pin: bool, from: Point) {
+        if self.contains(p) {
+            let (role, shape) = if pin {
+                (Role::Link, Shape::Pin { centre: p })
+            } else {
+                (Role::Construction, Shape::Dot { centre: p })
+            };
+            self.push(&format!("point-{key}"), role, shape);
+            self.letter(key, p, markup, TextSize::Letter);
+        } else if let Some((_, edge)) = self.frame.clip_segment(from, p)
+            && (p - from).norm() > 0.0
+        {
+            let u = (p - from).normalize();
+            if let Some(tail) = self.edge_arrow(&format!("offpage-{key}"), from, edge, u) {
+                self.letter(key, tail, markup, TextSize::Letter);
+            }
+        }
+    }
+
+    /// A point at infinity in the direction `u`: an arrow at the frame's
+    /// edge on the ray from `from`, lettered `markup` "at ∞".
+    pub fn at_infinity(&mut self, key: &str, from: Point, u: Vector, markup: &str) {
+        if u.norm() == 0.0 {
+            return;
+        }
+        let u = u.normalize();
+        if let Some((_, edge)) = self.frame.clip_ray(from, u)
+            && let Some(tail) = self.edge_arrow(&format!("infinity-{key}"), from, edge, u)
+        {
+            self.letter(key, tail, &format!("{markup} at ∞"), TextSize::Letter);
+        }
+    }
+
+    /// An arrow along `u` ending just inside the frame at `edge`, if it
+    /// fits between `from` and the edge; returns its tail.
+    fn edge_arrow(&mut self, base: &str, from: Point, edge: Point, u: Vector) -> Option<Point> {
+        let head = edge - u * self.world(EDGE_GAP);
+        let tail = head - u * self.world(EDGE_ARROW);
+        if (tail - from).dot(&u) < 0.0 {
+            return None;
+        }
+        self.push(
+            base,
+            Role::Construction,
+            Shape::Arrow {
+                from: tail,
+                to: head,
+            },
+        );
+        Some(tail)
+    }
+
+    /// Ground hatching along the fixed edge `p q` on whichever of `sides`
+    /// (world vectors) keeps more strokes clear of the moving links
+    /// `avoid`, leaving out strokes that would touch them and those within
+    /// `ends` page units of either end (`hatch-{name}-k`).
+    pub fn hatch_edge(
+        &mut self,
+        name: &str,
+        (p, q): Seg,
+        sides: &[Vector],
+        avoid: &[Seg],
+        ends: f64,
+    ) {
+        let mut best: Option<(f64, Vector, Runs)> = None;
+        for &side in sides {
+            let runs = self.clear_runs(&[p, q], &|_| side, avoid, ends);
+            let count = runs.iter().map(|x| x.2 - x.1 + 1.0).sum::<f64>();
+            if best.as_ref().is_none_or(|b| count > b.0) {
+                best = Some((count, side, runs));
+            }
+        }
+        if let Some((_, side, runs)) = best {
+            self.emit_hatch(name, &[p, q], &|_| side, &runs);
+        }
+    }
+
+    /// Ground hatching along the fixed link `p q`, on the clearer side.
+    pub fn hatch_link(&mut self, name: &str, p: Point, q: Point, avoid: &[Seg], ends: f64) {
+        let n = perp(&(q - p));
+        self.hatch_edge(name, (p, q), &[n, -n], avoid, ends);
+    }
+
+    /// The two guides of a fixed `slot`, hatched on their outer sides,
+    /// open towards the crank where the rod `rod` (from the crank pin to
+    /// the block) crosses them and clear of the crank circle of radius
+    /// `crank` about `centre` and its bearing (`guide-{name}-upper`,
+    /// `hatch-{name}-upper-k`, …).
+    pub fn guides(&mut self, name: &str, slot: &Slot, centre: Point, crank: f64, rod: Seg) {
+        let reach = crank.max(self.world(BEARING_REACH)) + self.world(CIRCLE_CLEARANCE);
+        let h = slot.half_height;
+        for (id, delta) in [("upper", h), ("lower", -h)] {
+            let (s0, s1) = slot.range;
+            // From the far end back towards the crank, in steps of about
+            // a page unit.
+            let far = self.page((slot.point)(s1, delta));
+            let near = self.page((slot.point)(s0, delta));
+            let steps = ((far - near).norm() * if slot.straight { 1.0 } else { 1.6 })
+                .ceil()
+                .clamp(2.0, 20000.0) as usize;
+            let at = |k: usize| s1 + (s0 - s1) * k as f64 / steps as f64;
+            let (rb, ra) = (self.page(rod.0), self.page(rod.1));
+            let mut last = 0;
+            let mut crossed: Option<(usize, f64)> = None;
+            for k in 1..=steps {
+                let (p0, p1) = ((slot.point)(at(k - 1), delta), (slot.point)(at(k), delta));
+                if (p1 - centre).norm() < reach {
+                    break;
+                }
+                let (q0, q1) = (self.page(p0), self.page(p1));
+                if let Some(sin) = crossing(q0, q1, rb, ra) {
+                    crossed = Some((k, sin));
+                    break;
+                }
+                // Beyond the block the rod keeps its distance from the
+                // guide (it runs inside a curved slot before leaving it).
+                let beside = (at(k) - slot.block.0).abs() <= slot.block.1;
+                if !beside && segment_distance(q1, q1, rb, ra) < ROD_CLEARANCE + HATCH_SLANT {
+                    break;
+                }
+                last = k;
+            }
+            if let Some((k, sin)) = crossed {
+                // Back off from the crossing so that the rod clears the
+                // guide's end and its leaning hatch.
+                let back = (ROD_CLEARANCE / sin.max(0.05) + HATCH_SLANT).ceil() as usize;
+                let per_step = (far - near).norm() / steps as f64;
+                let n = (back as f64 / per_step.max(1e-9)).ceil() as usize;
+                last = k.saturating_sub(n + 1).min(last);
+            }
+            let span = self.page((slot.point)(at(last), delta)) - far;
+            if last == 0 || span.norm() < GUIDE_MIN {
+                continue;
+            }
+            let chords = if slot.straight {
+                1
+            } else {
+                (span.norm() / CHORD).ceil().max(1.0) as usize
+            };
+            // From the open end to the far end.
+            let points: Vec<Point> = (0..=chords)
+                .map(|j| {
+                    let s = at(last) + (s1 - at(last)) * j as f64 / chords as f64;
+                    (slot.point)(s, delta)
+                })
+                .collect();
+            self.push(
+                &format!("guide-{name}-{id}"),
+                Role::Frame,
+                Shape::Polyline {
+                    points: points.clone(),
+                    closed: false,
+                },
+            );
+            let outward = |j: usize| {
+                let (a, b) = (points[j], points[j + 1]);
+                let n = perp(&(b - a));
+                // Away from the slot's middle.
+                let mid = (slot.point)(
+                    at(last) + (s1 - at(last)) * (j as f64 + 0.5) / chords as f64,
+                    0.0,
+                );
+                if n.dot(&(a - mid)) >= 0.0 { n } else { -n }
+            };
+            let avoid = [rod];
+            let runs = self.clear_runs(&points, &outward, &avoid, 0.0);
+            self.emit_hatch(&format!("{name}-{id}"), &points, &outward, &runs);
+        }
+    }
+
+    /// The runs of hatch strokes along the polyline `points` on the sides
+    /// `side(chord)` that keep [`HATCH_CLEAR`] from every segment of
+    /// `avoid` and `ends` from the polyline's ends: (chord, from, to) in
+    /// page units along the chord, covering whole strokes as the renderer
+    /// places them.
+    fn clear_runs(
+        &self,
+        points: &[Point],
+        side: &dyn Fn(usize) -> Vector,
+        avoid: &[Seg],
+        ends: f64,
+    ) -> Runs {
+        let avoid: Vec<(Point, Point)> = avoid
+            .iter()
+            .map(|(a, b)| (self.page(*a), self.page(*b)))
+            .collect();
+        let total: f64 = points
+            .windows(2)
+            .map(|w| (self.page(w[1]) - self.page(w[0])).norm())
+            .sum();
+        let mut runs = Vec::new();
+        let mut walked = 0.0;
+        for (j, w) in points.windows(2).enumerate() {
+            let (a, b) = (self.page(w[0]), self.page(w[1]));
+            let len = (b - a).norm();
+            let (Some(t), Some(n)) = (unit(b - a), unit(self.map.apply_vector(side(j)))) else {
+                walked += len;
+                continue;
+            };
+            let mut run: Option<(f64, f64)> = None;
+            let mut s = 0.5 * HATCH_SPACING;
+            let mut strokes = 0;
+            while s < len {
+                let p = a + t * s;
+                let q = p + n * HATCH_DEPTH - t * (0.8 * HATCH_DEPTH);
+                let along = walked + s;
+                let clear = along >= ends
+                    && along <= total - ends
+                    && avoid
+                        .iter()
+                        .all(|(c, d)| segment_distance(p, q, *c, *d) > HATCH_CLEAR);
+                if clear {
+                    run = Some(match run {
+                        Some((first, _)) => (first, s),
+                        None => (s, s),
+                    });
+                    strokes += 1;
+                } else if let Some((first, last)) = run.take() {
+                    if strokes >= HATCH_RUN {
+                        runs.push((j, first, last));
+                    }
+                    strokes = 0;
+                }
+                s += HATCH_SPACING;
+            }
+            if let Some((first, last)) = run
+                && strokes >= HATCH_RUN
+            {
+                runs.push((j, first, last));
+            }
+            walked += len;
+        }
+        runs
+    }
+
+    fn emit_hatch(
+        &mut self,
+        name: &str,
+        points: &[Point],
+        side: &dyn Fn(usize) -> Vector,
+        runs: &[(usize, f64, f64)],
+    ) {
+        for (k, &(j, first, last)) in runs.iter().enumerate() {
+            let (a, b) = (self.page(points[j]), self.page(points[j + 1]));
+            let Some(t) = unit(b - a) else { continue };
+            let half = 0.5 * HATCH_SPACING;
+            let from = self.map.invert(a + t * (first - half));
+            let to = self.map.invert(a + t * (last + half));
+            self.push(
+                &format!("hatch-{name}-{k}"),
+                Role::Frame,
+                Shape::Hatch {
+                    from,
+                    to,
+                    side: side(j),
+                },
+            );
+        }
+    }
+
+    /// The items drawn.
+    pub fn finish(self) -> Vec<Item> {
+        self.items
+    }
+}
+
+fn unit(v: Vector) -> Option<Vector> {
+    let n = v.norm();
+    (n > 0.0 && n.is_finite()).then(|| v / n)
+}
+
+/// Where the segments `a b` and `c d` cross: the sine of the angle between
+/// them; `None` if they do not.
+fn crossing(a: Point, b: Point, c: Point, d: Point) -> Option<f64> {
+    let o = |p: Point, q: Point, r: Point| crate::geom::cross(&(q - p), &(r - p));
+    let (d1, d2) = (o(c, d, a), o(c, d, b));
+    let (d3, d4) = (o(a, b, c), o(a, b, d));
+    if d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != 0.0 || d2 != 0.0) {
+        let (u, v) = (unit(b - a)?, unit(d - c)?);
+        Some(crate::geom::cross(&u, &v).abs())
+    } else {
+        None
+    }
+}
+
+/// The distance between the segments `a b` and `c d`.
+pub(super) fn segment_distance(a: Point, b: Point, c: Point, d: Point) -> f64 {
+    if crossing(a, b, c, d).is_some() {
+        return 0.0;
+    }
+    [
+        point_segment(a, c, d),
+        point_segment(b, c, d),
+        point_segment(c, a, b),
+        point_segment(d, a, b),
+    ]
+    .into_iter()
+    .fold(f64::INFINITY, f64::min)
+}
+
+fn point_segment(p: Point, a: Point, b: Point) -> f64 {
+    let ab = b - a;
+    let len2 = ab.norm_squared();
+    if len2 == 0.0 {
+        return (p - a).norm();
+    }
+    let t = ((p - a).dot(&ab) / len2).clamp(0.0, 1.0);
+    (p - (a + ab * t)).norm()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn distances_between_segments() {
+        let p = |x: f64, y: f64| Point::new(x, y);
+        assert_eq!(
+            segment_distance(p(0., 0.), p(2., 0.), p(1., -1.), p(1., 1.)),
+            0.0
+        );
+        assert_eq!(
+            segment_distance(p(0., 0.), p(2., 0.), p(3., 0.), p(4., 1.)),
+            1.0
+        );
+        assert_eq!(
+            segment_distance(p(0., 0.), p(2., 0.), p(1., 2.), p(1., 5.)),
+            2.0
+        );
+        assert!(crossing(p(0., 0.), p(2., 0.), p(1., 1.), p(1., 3.)).is_none());
+        let sin = crossing(p(0., 0.), p(2., 0.), p(0., -1.), p(2., 1.)).unwrap();
+        assert!((sin - 0.5f64.sqrt()).abs() < 1e-15);
+    }
+}
