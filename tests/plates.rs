@@ -420,7 +420,7 @@ fn report(outcomes: &[Outcome]) -> String {
 }
 
 #[test]
-#[ignore = "the plates are not all clean yet (24 % of the sweep on the first run): run with --ignored"]
+#[ignore = "the plates are not all clean yet (95.3 % of the sweep): run with --ignored"]
 fn every_plate_is_clean() {
     let start = Instant::now();
     let outcomes = sweep();
