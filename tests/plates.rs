@@ -291,6 +291,9 @@ fn poses(m: &SliderCrank) -> Vec<Angle> {
     angles
 }
 
+/// A figure, a mechanism, and the pose (the figure's own when `None`).
+type Job = (&'static str, (String, SliderCrank), Option<Angle>);
+
 /// One plate of the sweep and what it broke.
 struct Outcome {
     figure: &'static str,
@@ -300,10 +303,14 @@ struct Outcome {
 }
 
 /// The plate of `figure` for `mechanism` at `angle`, checked.
-fn inspect(figure: &'static str, mechanism: &(String, SliderCrank), angle: Angle) -> Outcome {
+fn inspect(
+    figure: &'static str,
+    mechanism: &(String, SliderCrank),
+    angle: Option<Angle>,
+) -> Outcome {
     let options = FigureOptions {
         mechanism: Some(mechanism.1),
-        angle: Some(angle),
+        angle,
         ..FigureOptions::default()
     };
     let built = FigureName::from_name(figure).unwrap().figure(&options);
@@ -314,18 +321,18 @@ fn inspect(figure: &'static str, mechanism: &(String, SliderCrank), angle: Angle
     Outcome {
         figure,
         mechanism: mechanism.0.clone(),
-        degrees: angle.degrees(),
+        degrees: angle.map_or(0.0, |a| a.degrees()),
         failures,
     }
 }
 
 /// Every (figure, mechanism, angle) of the sweep.
-fn jobs() -> Vec<(&'static str, (String, SliderCrank), Angle)> {
+fn jobs() -> Vec<Job> {
     let mut out = Vec::new();
     for figure in FIGURES {
         for m in mechanisms() {
             for a in poses(&m.1) {
-                out.push((figure, m.clone(), a));
+                out.push((figure, m.clone(), Some(a)));
             }
         }
     }
@@ -337,8 +344,7 @@ const THREADS: usize = 2;
 
 /// The sweep's outcomes in the order of [`jobs`], the work dealt
 /// round-robin over [`THREADS`].
-fn sweep() -> Vec<Outcome> {
-    let jobs = jobs();
+fn sweep(jobs: &[Job]) -> Vec<Outcome> {
     let mut done: Vec<(usize, Outcome)> = std::thread::scope(|s| {
         let handles: Vec<_> = (0..THREADS)
             .map(|t| {
@@ -423,7 +429,7 @@ fn report(outcomes: &[Outcome]) -> String {
 #[ignore = "the plates are not all clean yet (95.3 % of the sweep): run with --ignored"]
 fn every_plate_is_clean() {
     let start = Instant::now();
-    let outcomes = sweep();
+    let outcomes = sweep(&jobs());
     let text = report(&outcomes);
     println!(
         "{text}({} plates in {:.1?})",
@@ -491,38 +497,7 @@ fn chain_plates_are_clean() {
             }
         }
     }
-    let outcomes: Vec<Outcome> = std::thread::scope(|s| {
-        let handles: Vec<_> = (0..THREADS)
-            .map(|t| {
-                let mine = jobs.iter().skip(t).step_by(THREADS);
-                s.spawn(move || {
-                    mine.map(|(figure, mech, angle)| {
-                        let options = FigureOptions {
-                            mechanism: Some(mech.1),
-                            angle: *angle,
-                            ..FigureOptions::default()
-                        };
-                        let built = FigureName::from_name(figure).unwrap().figure(&options);
-                        let failures = match built {
-                            Ok(f) => check(&Plate::read(&to_svg(&f)), false),
-                            Err(e) => vec![fail(RULE_BUILD, e.to_string())],
-                        };
-                        Outcome {
-                            figure,
-                            mechanism: mech.0.clone(),
-                            degrees: angle.map_or(0.0, |a| a.degrees()),
-                            failures,
-                        }
-                    })
-                    .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
+    let outcomes = sweep(&jobs);
     let text = report(&outcomes);
     println!(
         "{text}({} plates in {:.1?})",
