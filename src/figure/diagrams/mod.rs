@@ -235,7 +235,7 @@ impl Sheet {
     /// figure's page): for sheets whose mechanism panel is fitted to the
     /// pose, so that no empty band is left below.
     pub fn fit(&mut self, bottom: f64) {
-        self.height = Some((bottom + MARGIN).min(self.name.page().height()));
+        self.height((bottom + MARGIN).min(self.name.page().height()));
     }
 
     /// Sets the page's height (a page fitted to its drawing).
