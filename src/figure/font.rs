@@ -93,9 +93,16 @@ struct Face {
     glyphs: GlyphMetrics<'static>,
     units_per_em: f64,
     vertical: VerticalMetrics,
-    /// Ink bottom and top of each character met so far, in ems (outlines
-    /// are decoded once per character).
-    ink: Mutex<HashMap<char, (f64, f64)>>,
+}
+
+/// What the text measures need of one character in one style, in ems:
+/// its advance, its ink bottom and top, and whether a face has it.
+#[derive(Debug, Clone, Copy)]
+struct CharMetrics {
+    advance: f64,
+    bottom: f64,
+    top: f64,
+    present: bool,
 }
 
 impl Face {
@@ -113,7 +120,6 @@ impl Face {
                 cap_height: em(m.cap_height.unwrap_or(0.7 * m.units_per_em as f32)),
             },
             font,
-            ink: Mutex::new(HashMap::new()),
         }
     }
 
@@ -122,18 +128,15 @@ impl Face {
         f64::from(a) / self.units_per_em
     }
 
-    /// Ink bottom and top of `c`, whose glyph here is `g`.
-    fn ink(&self, c: char, g: GlyphId) -> (f64, f64) {
-        let mut cache = self.ink.lock().unwrap_or_else(|e| e.into_inner());
-        *cache
-            .entry(c)
-            .or_insert_with(|| match self.glyphs.bounds(g) {
-                Some(b) if b.y_max > b.y_min => (
-                    f64::from(b.y_min) / self.units_per_em,
-                    f64::from(b.y_max) / self.units_per_em,
-                ),
-                _ => (0.0, 0.0),
-            })
+    /// Ink bottom and top of glyph `g`.
+    fn ink(&self, g: GlyphId) -> (f64, f64) {
+        match self.glyphs.bounds(g) {
+            Some(b) if b.y_max > b.y_min => (
+                f64::from(b.y_min) / self.units_per_em,
+                f64::from(b.y_max) / self.units_per_em,
+            ),
+            _ => (0.0, 0.0),
+        }
     }
 }
 
@@ -246,29 +249,45 @@ impl Font {
         (face, GlyphId::NOTDEF)
     }
 
+    /// The metrics of `c` in `style`, looked up in the faces once per
+    /// character (outlines and character maps are decoded only then).
+    fn char_metrics(&self, c: char, style: FontStyle) -> CharMetrics {
+        type Cache = Mutex<HashMap<char, CharMetrics>>;
+        static CACHES: [OnceLock<Cache>; 4] = [const { OnceLock::new() }; 4];
+        let cache = CACHES[self.index(style)].get_or_init(Cache::default);
+        let mut cache = cache.lock().unwrap_or_else(|e| e.into_inner());
+        *cache.entry(c).or_insert_with(|| {
+            let (face, g) = self.glyph(c, style);
+            let (bottom, top) = face.ink(g);
+            CharMetrics {
+                advance: face.advance(g),
+                bottom,
+                top,
+                present: g != GlyphId::NOTDEF,
+            }
+        })
+    }
+
     /// The width of `text` at `size` (page units): the glyph advances
     /// summed (no kerning).
     pub fn width(&self, text: &str, size: f64, style: FontStyle) -> f64 {
         size * text
             .chars()
-            .map(|c| {
-                let (face, g) = self.glyph(c, style);
-                face.advance(g)
-            })
+            .map(|c| self.char_metrics(c, style).advance)
             .sum::<f64>()
     }
 
     /// The width and ink height and depth of `text` at `size`.
     pub fn measure(&self, text: &str, size: f64, style: FontStyle) -> TextBox {
-        let (mut bottom, mut top) = (0.0f64, 0.0f64);
+        let (mut bottom, mut top, mut width) = (0.0f64, 0.0f64, 0.0);
         for c in text.chars() {
-            let (face, g) = self.glyph(c, style);
-            let (b, t) = face.ink(c, g);
-            bottom = bottom.min(b);
-            top = top.max(t);
+            let m = self.char_metrics(c, style);
+            bottom = bottom.min(m.bottom);
+            top = top.max(m.top);
+            width += m.advance;
         }
         TextBox {
-            width: self.width(text, size, style),
+            width: size * width,
             above: size * top,
             below: -size * bottom,
         }
@@ -282,7 +301,7 @@ impl Font {
     /// Whether the face (with its symbols face) has a glyph for `c` (else
     /// a renderer falls back to another font).
     pub fn has_glyph(&self, c: char, style: FontStyle) -> bool {
-        self.glyph(c, style).1 != GlyphId::NOTDEF
+        self.char_metrics(c, style).present
     }
 
     /// The names of the faces, for help texts and errors.

@@ -2,9 +2,9 @@
 //! positions around the anchor, scored against nearby segments and boxes.
 
 use crate::figure::PageRect;
-use crate::geom::{Frame, Point, Vector};
+use crate::geom::{Point, Vector};
 use rstar::primitives::{GeomWithData, Rectangle};
-use rstar::{AABB, RTree};
+use rstar::{AABB, RTree, RTreeObject};
 
 /// An axis-aligned box on the page.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,6 +35,22 @@ impl Bounds {
         w * h
     }
 
+    /// Whether the two boxes meet, touching included (as the index's
+    /// envelope query counts them).
+    fn meets(&self, o: &Bounds) -> bool {
+        self.min.x <= o.max.x
+            && o.min.x <= self.max.x
+            && self.min.y <= o.max.y
+            && o.min.y <= self.max.y
+    }
+
+    fn contains(&self, o: &Bounds) -> bool {
+        self.min.x <= o.min.x
+            && self.min.y <= o.min.y
+            && o.max.x <= self.max.x
+            && o.max.y <= self.max.y
+    }
+
     fn inside(&self, r: &PageRect) -> bool {
         self.min.x >= r.x
             && self.min.y >= r.y
@@ -59,6 +75,9 @@ pub(crate) struct Obstacles {
     segments: Vec<(Point, Point, f64)>,
     boxes: Vec<Bounds>,
     index: RTree<Entry>,
+    /// Obstacles added since the index was last built, looked at one by
+    /// one.
+    pending: Vec<Entry>,
     /// Weight of the segments added next (thick links cost more to cover).
     weight: f64,
 }
@@ -69,6 +88,7 @@ impl Default for Obstacles {
             segments: Vec::new(),
             boxes: Vec::new(),
             index: RTree::new(),
+            pending: Vec::new(),
             weight: 1.0,
         }
     }
@@ -88,8 +108,22 @@ impl Obstacles {
         if a.x.is_finite() && a.y.is_finite() && b.x.is_finite() && b.y.is_finite() {
             let i = self.segments.len();
             self.segments.push((a, b, self.weight));
-            self.index
-                .insert(GeomWithData::new(rectangle(a, b), Obstacle::Segment(i)));
+            self.pending
+                .push(GeomWithData::new(rectangle(a, b), Obstacle::Segment(i)));
+        }
+    }
+
+    /// Puts what was added so far into the spatial index (in one bulk
+    /// load when the index is empty, which builds a better tree faster
+    /// than inserting one by one).
+    pub fn build(&mut self) {
+        let pending = std::mem::take(&mut self.pending);
+        if self.index.size() == 0 {
+            self.index = RTree::bulk_load(pending);
+        } else {
+            for entry in pending {
+                self.index.insert(entry);
+            }
         }
     }
 
@@ -106,26 +140,93 @@ impl Obstacles {
         {
             let i = self.boxes.len();
             self.boxes.push(b);
-            self.index
-                .insert(GeomWithData::new(rectangle(b.min, b.max), Obstacle::Box(i)));
+            self.pending
+                .push(GeomWithData::new(rectangle(b.min, b.max), Obstacle::Box(i)));
+        }
+    }
+
+    /// The obstacles whose boxes meet `within`, taken out of the index
+    /// once for a whole search, in the index's own order (so that the sums
+    /// of [`Near::cost`] add in the order a query per candidate would).
+    fn near(&self, within: &Bounds) -> Near<'_> {
+        let env = AABB::from_corners([within.min.x, within.min.y], [within.max.x, within.max.y]);
+        let bounds = |entry: &Entry| {
+            let e = entry.geom().envelope();
+            let (lo, hi) = (e.lower(), e.upper());
+            let bounds = Bounds {
+                min: Point::new(lo[0], lo[1]),
+                max: Point::new(hi[0], hi[1]),
+            };
+            (bounds, entry.data)
+        };
+        let found = self
+            .index
+            .locate_in_envelope_intersecting(env)
+            .map(bounds)
+            .chain(
+                self.pending
+                    .iter()
+                    .map(bounds)
+                    .filter(|(b, _)| b.meets(within)),
+            )
+            .collect();
+        Near {
+            obstacles: self,
+            within: *within,
+            found,
         }
     }
 
     /// Length of line inside `b` plus a large weight for boxes it overlaps.
+    #[cfg(test)]
     fn cost(&self, b: &Bounds) -> f64 {
-        let frame = Frame::new(b.min, b.max);
+        self.near(b).cost(b)
+    }
+}
+
+/// The obstacles near one label's search, with their boxes.
+struct Near<'a> {
+    obstacles: &'a Obstacles,
+    within: Bounds,
+    found: Vec<(Bounds, Obstacle)>,
+}
+
+impl Near<'_> {
+    /// The part that meets the horizontal band from `top` to `bottom`.
+    fn band(&self, top: f64, bottom: f64) -> Near<'_> {
+        let mut within = self.within;
+        within.min.y = within.min.y.max(top);
+        within.max.y = within.max.y.min(bottom);
+        Near {
+            obstacles: self.obstacles,
+            within,
+            found: self
+                .found
+                .iter()
+                .filter(|(b, _)| b.min.y <= bottom && top <= b.max.y)
+                .copied()
+                .collect(),
+        }
+    }
+
+    /// Length of line inside `b` plus a large weight for boxes it
+    /// overlaps; `b` must lie within the search's bounds.
+    fn cost(&self, b: &Bounds) -> f64 {
+        debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
-        let near = AABB::from_corners([b.min.x, b.min.y], [b.max.x, b.max.y]);
-        for entry in self.index.locate_in_envelope_intersecting(near) {
-            match entry.data {
+        for (bounds, obstacle) in &self.found {
+            if !bounds.meets(b) {
+                continue;
+            }
+            match *obstacle {
                 Obstacle::Segment(i) => {
-                    let (p, q, w) = self.segments[i];
-                    if let Some((s, t)) = frame.clip_segment(p, q) {
-                        cost += w * (4.0 + (t - s).norm());
+                    let (p, q, w) = self.obstacles.segments[i];
+                    if let Some(length) = length_inside(p, q, b) {
+                        cost += w * (4.0 + length);
                     }
                 }
                 Obstacle::Box(i) => {
-                    let a = b.overlap(&self.boxes[i]);
+                    let a = b.overlap(&self.obstacles.boxes[i]);
                     if a > 0.0 {
                         cost += 200.0 + a;
                     }
@@ -134,6 +235,34 @@ impl Obstacles {
         }
         cost
     }
+}
+
+/// The length of the segment `pq` inside `b` (Liang and Barsky's
+/// clipping), or `None` if it misses the box; a segment that only touches
+/// the box, or a point inside it, has length 0.
+fn length_inside(p: Point, q: Point, b: &Bounds) -> Option<f64> {
+    let d = q - p;
+    let (mut t0, mut t1) = (0.0f64, 1.0f64);
+    for (towards, room) in [
+        (-d.x, p.x - b.min.x),
+        (d.x, b.max.x - p.x),
+        (-d.y, p.y - b.min.y),
+        (d.y, b.max.y - p.y),
+    ] {
+        if towards == 0.0 {
+            if room < 0.0 {
+                return None;
+            }
+        } else {
+            let t = room / towards;
+            if towards < 0.0 {
+                t0 = t0.max(t);
+            } else {
+                t1 = t1.min(t);
+            }
+        }
+    }
+    (t0 <= t1).then(|| (t1 - t0) * d.norm())
 }
 
 /// How much farther than touching each ring of candidates sits, page
@@ -149,6 +278,17 @@ const DIRECTIONS: [f64; 16] = [
     112.5, 67.5, 22.5,
 ];
 
+/// The unit vectors of [`DIRECTIONS`], (cos, sin), computed once.
+fn directions() -> &'static [(f64, f64); 16] {
+    static UNITS: std::sync::OnceLock<[(f64, f64); 16]> = std::sync::OnceLock::new();
+    UNITS.get_or_init(|| {
+        DIRECTIONS.map(|deg| {
+            let (sin, cos) = deg.to_radians().sin_cos();
+            (cos, sin)
+        })
+    })
+}
+
 /// The centre of a box of half-size `half` placed near `anchor`, clear of
 /// the obstacles where possible and inside `page`: first on rings of
 /// sixteen directions, `gap` and more from the anchor, then, if each of
@@ -162,11 +302,21 @@ pub(crate) fn place(
     obstacles: &Obstacles,
     page: &PageRect,
 ) -> Point {
+    // Every candidate box lies within this one (a ring's centre is at
+    // most gap + 17 + half.x + half.y out, a nook's box edge at most
+    // `reach`): its obstacles are looked up once.
+    let out = gap.max(reach) + RINGS[RINGS.len() - 1] + NOOK_STEP + 2.0 * (half.x + half.y);
+    let near = obstacles.near(&Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE));
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
-    let consider = |best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
+    let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
+        // The cost is never negative: a candidate whose penalty alone
+        // reaches the best score cannot beat it.
+        if penalty >= best.0 {
+            return;
+        }
         let b = Bounds::around(centre, half);
-        let mut cost = obstacles.cost(&b.inflate(CLEARANCE));
+        let mut cost = near.cost(&b.inflate(CLEARANCE));
         if !b.inside(page) {
             cost += 1e6;
         }
@@ -174,12 +324,17 @@ pub(crate) fn place(
             *best = (cost + penalty, cost, centre);
         }
     };
+    let units = directions();
     for extra in RINGS {
-        for (k, deg) in DIRECTIONS.iter().enumerate() {
-            let (dy, dx) = deg.to_radians().sin_cos();
+        for (k, &(dx, dy)) in units.iter().enumerate() {
             let u = Vector::new(dx, dy);
             let reach = gap + extra + dx.abs() * half.x + dy.abs() * half.y;
-            consider(&mut best, anchor + u * reach, 1.5 * extra + 0.05 * k as f64);
+            consider(
+                &near,
+                &mut best,
+                anchor + u * reach,
+                1.5 * extra + 0.05 * k as f64,
+            );
         }
         if best.1 < 1.0 {
             return best.2;
@@ -187,8 +342,17 @@ pub(crate) fn place(
     }
     // Every ring is crowded: look at every position of a fine grid within
     // `reach`, for a nook the sixteen directions miss.
-    for (penalty, centre) in nooks(anchor, half, gap, reach.max(gap)) {
-        consider(&mut best, centre, penalty);
+    // `reach`, for a nook the sixteen directions miss; row by row, each
+    // looking only at what crosses its band.
+    for row in nooks(anchor, half, gap, reach.max(gap)) {
+        let Some((_, first)) = row.first() else {
+            continue;
+        };
+        let y = first.y;
+        let band = near.band(y - half.y - CLEARANCE, y + half.y + CLEARANCE);
+        for (penalty, centre) in row {
+            consider(&band, &mut best, centre, penalty);
+        }
     }
     best.2
 }
@@ -199,22 +363,31 @@ const CLEARANCE: f64 = 1.0;
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;
 
-/// Centres of a fine grid around `anchor` whose box (half-size `half`)
-/// keeps at least `gap` / 2 and at most `reach` from the anchor, each with
-/// the penalty its distance beyond `gap` earns (as in the rings).
-fn nooks(anchor: Point, half: Vector, gap: f64, reach: f64) -> impl Iterator<Item = (f64, Point)> {
+/// Rows (top to bottom) of the centres of a fine grid around `anchor`
+/// whose box (half-size `half`) keeps at least `gap` / 2 and at most
+/// `reach` from the anchor, each with the penalty its distance beyond
+/// `gap` earns (as in the rings).
+fn nooks(
+    anchor: Point,
+    half: Vector,
+    gap: f64,
+    reach: f64,
+) -> impl Iterator<Item = Vec<(f64, Point)>> {
     let (nx, ny) = (
         ((half.x + reach) / NOOK_STEP).ceil() as i32,
         ((half.y + reach) / NOOK_STEP).ceil() as i32,
     );
-    (-ny..=ny).flat_map(move |j| {
-        (-nx..=nx).filter_map(move |i| {
-            let d = Vector::new(i as f64 * NOOK_STEP, j as f64 * NOOK_STEP);
-            // Distance from the anchor to the box about anchor + d.
-            let out = Vector::new((d.x.abs() - half.x).max(0.0), (d.y.abs() - half.y).max(0.0));
-            let dist = out.norm();
-            (dist >= 0.5 * gap && dist <= reach).then(|| (1.5 * (dist - gap).max(0.0), anchor + d))
-        })
+    (-ny..=ny).map(move |j| {
+        (-nx..=nx)
+            .filter_map(move |i| {
+                let d = Vector::new(i as f64 * NOOK_STEP, j as f64 * NOOK_STEP);
+                // Distance from the anchor to the box about anchor + d.
+                let out = Vector::new((d.x.abs() - half.x).max(0.0), (d.y.abs() - half.y).max(0.0));
+                let dist = out.norm();
+                (dist >= 0.5 * gap && dist <= reach)
+                    .then(|| (1.5 * (dist - gap).max(0.0), anchor + d))
+            })
+            .collect()
     })
 }
 
@@ -240,6 +413,25 @@ mod tests {
         let b = Bounds::around(c, Vector::new(5.0, 6.0));
         assert_eq!(o.cost(&b), 0.0, "{c:?}");
         assert!((c - Point::new(100.0, 100.0)).norm() < 20.0);
+    }
+
+    #[test]
+    fn length_inside_a_box_is_the_clipped_length() {
+        let b = Bounds::around(Point::new(0.0, 0.0), Vector::new(2.0, 1.0));
+        let at = |x, y| Point::new(x, y);
+        let close = |got: Option<f64>, want: f64| {
+            let got = got.expect("the segment meets the box");
+            assert!((got - want).abs() < 1e-12, "{got} ≠ {want}");
+        };
+        // Across, diagonal, partly in, along an edge, missing, a point.
+        close(length_inside(at(-5.0, 0.0), at(5.0, 0.0), &b), 4.0);
+        close(length_inside(at(-1.0, -1.0), at(1.0, 1.0), &b), 8f64.sqrt());
+        close(length_inside(at(1.0, 0.5), at(5.0, 0.5), &b), 1.0);
+        close(length_inside(at(-5.0, 1.0), at(5.0, 1.0), &b), 4.0);
+        close(length_inside(at(0.5, 0.5), at(0.5, 0.5), &b), 0.0);
+        assert_eq!(length_inside(at(-5.0, 1.5), at(5.0, 1.5), &b), None);
+        assert_eq!(length_inside(at(3.0, -3.0), at(5.0, 3.0), &b), None);
+        assert_eq!(length_inside(at(-3.0, 0.0), at(-2.5, 0.0), &b), None);
     }
 
     #[test]

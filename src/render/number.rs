@@ -8,14 +8,60 @@ pub const GRID: f64 = 0.01;
 /// Non-finite input writes `0` (the model never holds one; this keeps NaN
 /// out of the file whatever happens).
 pub fn fmt(x: f64) -> String {
-    if !x.is_finite() {
-        return "0".into();
+    OnGrid(x).to_string()
+}
+
+/// A number written as [`fmt`] writes it, straight into a formatter (no
+/// string of its own: path data writes thousands of them).
+#[derive(Debug, Clone, Copy)]
+pub struct OnGrid(pub f64);
+
+impl std::fmt::Display for OnGrid {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if !x.is_finite() {
+            return f.write_str("0");
+        }
+        let n = (x / GRID).round();
+        if n == 0.0 {
+            return f.write_str("0");
+        }
+        if n.abs() >= 1e12 {
+            return write!(f, "{}", n / (1.0 / GRID));
+        }
+        // Hundredths as an integer, written without float formatting:
+        // below 1e10 units the decimal of n / 100 is the shortest that
+        // reads back as that double, which is what `{}` on the quotient
+        // would write.
+        let n = n as i64;
+        let (mut rest, cents) = (n.unsigned_abs() / 100, n.unsigned_abs() % 100);
+        // Written backwards into a buffer: the decimals without trailing
+        // zeros, the point, the whole part, the sign.
+        let mut buf = [0u8; 24];
+        let mut at = buf.len();
+        let mut put = |b: u8| {
+            at -= 1;
+            buf[at] = b;
+        };
+        if cents != 0 {
+            if cents % 10 != 0 {
+                put(b'0' + (cents % 10) as u8);
+            }
+            put(b'0' + (cents / 10) as u8);
+            put(b'.');
+        }
+        loop {
+            put(b'0' + (rest % 10) as u8);
+            rest /= 10;
+            if rest == 0 {
+                break;
+            }
+        }
+        if n < 0 {
+            put(b'-');
+        }
+        f.write_str(std::str::from_utf8(&buf[at..]).unwrap_or("0"))
     }
-    let v = (x / GRID).round() / (1.0 / GRID);
-    if v == 0.0 {
-        return "0".into();
-    }
-    format!("{v}")
 }
 
 /// A coefficient of a map, to 6 decimals, or to 7 significant digits
@@ -52,5 +98,24 @@ mod tests {
         assert_eq!(fmt_coefficient(0.4), "0.4");
         assert_eq!(fmt_coefficient(1e-9), "0.000000001");
         assert_eq!(fmt_coefficient(0.0), "0");
+    }
+
+    #[test]
+    fn integer_writing_matches_the_quotient_written_as_a_float() {
+        // The hundredths written as integers read back as what `{}` on
+        // (x / GRID).round() / 100 writes, over many scales and signs.
+        let mut x = 1.234_567_89e-3_f64;
+        while x < 1e13 {
+            for v in [x, -x, x * 1.000_000_7, -x * 0.999_999_3] {
+                let float = (v / GRID).round() / (1.0 / GRID);
+                let expected = if float == 0.0 {
+                    "0".to_string()
+                } else {
+                    format!("{float}")
+                };
+                assert_eq!(fmt(v), expected, "{v}");
+            }
+            x *= 1.37;
+        }
     }
 }

@@ -3,7 +3,7 @@
 
 use crate::figure::Pen;
 use crate::geom::{Point, Vector};
-use crate::render::number::fmt;
+use crate::render::number::{OnGrid, fmt};
 use crate::render::sizes::{ARROW_HALF_WIDTH, ARROW_LENGTH};
 use std::collections::hash_map::DefaultHasher;
 use std::fmt as stdfmt;
@@ -41,14 +41,28 @@ impl NodeDefaultHash for Raw {
 }
 
 pub(super) fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            c => out.push(c),
+        }
+    }
+    out
 }
 
-/// A page point as path data: `x y` on the grid.
-pub(super) fn pt(p: Point) -> String {
-    format!("{} {}", fmt(p.x), fmt(p.y))
+/// A page point as path data: `x y` on the grid, written straight into
+/// the path's string.
+pub(super) fn pt(p: Point) -> impl stdfmt::Display {
+    struct Pt(Point);
+    impl stdfmt::Display for Pt {
+        fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+            write!(f, "{} {}", OnGrid(self.0.x), OnGrid(self.0.y))
+        }
+    }
+    Pt(p)
 }
 
 pub(super) fn finite(p: &Point) -> bool {

@@ -215,6 +215,7 @@ impl PanelWriter<'_> {
     /// is drawn and of the labels before it, and added to `g`.
     fn place_labels(mut self, mut g: Group, room: &PageRect) -> Group {
         let colour = self.style.pen(Role::Label).colour;
+        self.obstacles.build();
         for p in std::mem::take(&mut self.pending) {
             let (half, rise) = ink_box(&p.text, p.size, self.font);
             let centre = place(p.anchor, half, p.gap, REACH * p.size, &self.obstacles, room);
