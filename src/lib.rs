@@ -81,3 +81,8 @@ pub use figure::Style;
 pub use figure::{Figure, FigureName, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
 pub use scene::{Layer, Notation, Page, Scene};
+
+/// The examples of README.md, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+mod readme {}
