@@ -151,10 +151,8 @@ fn broken_in(root: &Path, file: &Path, text: &str) -> Vec<Broken> {
                     continue;
                 }
                 let cited = token_at(line, at);
-                if cited.len() > prefix.len() || cited == prefix {
-                    if !exists(root, cited) {
-                        report(cited);
-                    }
+                if !exists(root, cited) {
+                    report(cited);
                 }
             }
         }
