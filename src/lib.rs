@@ -53,6 +53,17 @@
 //! // G is lettered in the enlarged detail of the construction.
 //! assert!(svg.contains(r#"id="detail-point-G""#) && scene.has(Layer::Kisch));
 //! ```
+//!
+//! ## Features
+//!
+//! - `cli` (default): the `slider-crank` program (clap).
+//! - `png` (default): PNG output through resvg ([`render::to_png`]; without
+//!   the feature it returns [`Error::Unsupported`]).
+//!
+//! With `default-features = false` the crate computes every number and
+//! writes SVG, with neither clap nor resvg among its dependencies. The
+//! design, the command-line contract and the JSON schema are in
+//! `docs/design.md` in the repository.
 #![deny(missing_docs)]
 
 pub mod analytic;
