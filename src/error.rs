@@ -68,6 +68,10 @@ pub enum Error {
     /// or segments of a curve); the message says what can be changed.
     #[error("{0}")]
     Limit(String),
+    /// Something this build of the crate leaves out (PNG output without
+    /// the `png` feature); the message names the feature.
+    #[error("{0}")]
+    Unsupported(String),
 }
 
 impl Error {

@@ -53,6 +53,17 @@
 //! // G is lettered in the enlarged detail of the construction.
 //! assert!(svg.contains(r#"id="detail-point-G""#) && scene.has(Layer::Kisch));
 //! ```
+//!
+//! ## Features
+//!
+//! - `cli` (default): the `slider-crank` program (clap).
+//! - `png` (default): PNG output through resvg ([`render::to_png`]; without
+//!   the feature it returns [`Error::Unsupported`]).
+//!
+//! With `default-features = false` the crate computes every number and
+//! writes SVG, with neither clap nor resvg among its dependencies. The
+//! design, the command-line contract and the JSON schema are in
+//! `docs/design.md` in the repository.
 #![deny(missing_docs)]
 
 pub mod analytic;
@@ -81,3 +92,8 @@ pub use figure::Style;
 pub use figure::{Figure, FigureName, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
 pub use scene::{Layer, Notation, Page, Scene};
+
+/// The examples of README.md, compiled and run with the doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+mod readme {}

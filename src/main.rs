@@ -6,14 +6,24 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 /// Exact kinematics, statics and the classical graphical constructions of
-/// the slider-crank mechanism.
+/// the slider-crank mechanism, drawn as textbook figures (SVG or PNG).
 ///
-/// World frame: crank centre C at the origin, line of stroke y = offset,
-/// slider on the +x side, crank angle counter-clockwise from +x (0° is the
-/// outer dead centre). Lengths are in any one unit; the defaults are the
-/// engine of the textbook's §35 (r = 0.5 ft, l = 3 ft, 250 rpm).
+/// Frame: crank centre C at the origin, line of stroke y = e (the offset),
+/// slider A on the +x side; crank angle θ in degrees, counter-clockwise
+/// from +x (0° is the outer dead centre); a positive speed turns the crank
+/// counter-clockwise. Letters: C crank centre, B crank pin, A cross-head,
+/// D instantaneous centre of the rod, E where the rod produced meets the
+/// perpendicular to the stroke through C.
+///
+/// Units: lengths in any one unit (ft, mm, m); crank speed in rpm or rad/s;
+/// velocities come out in that length unit per second, accelerations per
+/// second squared, the rod's rates in rad/s and rad/s². The defaults are
+/// the engine of the textbook's §35 (r = 0.5 ft, l = 3 ft, 250 rpm).
+///
+/// Errors go to standard error as one line, with exit code 2 and nothing on
+/// standard output.
 #[derive(Debug, Parser)]
-#[command(name = "slider-crank", version, about, long_about = None)]
+#[command(name = "slider-crank", version)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -23,11 +33,26 @@ struct Cli {
 enum Command {
     /// Positions, velocities and accelerations at an angle: exact values and
     /// those read off the constructions (CE, CG, BD, FG); statics with --torque
+    ///
+    /// Lengths are in the unit of --crank; velocities in that unit per
+    /// second, accelerations per second squared, the rod's angular velocity
+    /// and acceleration in rad/s and rad/s² (signed: d x_A/dt, d² x_A/dt²,
+    /// dφ/dt, d²φ/dt² with sin φ = (r sin θ − e)/l).
     Analyze(cli::analyze::AnalyzeArgs),
-    /// Print a table: obliquity, acceleration-factor, kinematics, forces
+    /// Print a table of the seeds or a sweep: obliquity, acceleration-factor,
+    /// kinematics, forces
     Table(cli::table::TableArgs),
     /// Sweep the whole turn and compare every construction with the
     /// analytic core; exits 1 if any difference exceeds the tolerance
+    ///
+    /// Differences are scaled (lengths and the slider's rates by r, the
+    /// rod's rates per unit ω; docs/design.md §6), so no speed is needed.
+    /// Exit code 0: every quantity within the tolerance; 1: some exceed it;
+    /// 2: bad input.
+    #[command(
+        mut_arg("assembly", |a| a.hide(true)),
+        mut_arg("inversion", |a| a.hide(true))
+    )]
     Check(cli::check::CheckArgs),
     /// Draw a named figure or diagram as SVG (or PNG with --out FILE.png)
     Figure(cli::figure::FigureArgs),

@@ -16,7 +16,7 @@ pub const MAX_LENGTH: f64 = 1e100;
 
 /// An in-line or offset slider-crank chain, validated once.
 ///
-/// World frame (DESIGN.md §1): the crank centre C at the origin, the line of
+/// World frame (docs/design.md §1): the crank centre C at the origin, the line of
 /// stroke `y = offset`, the slider on the `+x` side; crank angle θ
 /// counter-clockwise from `+x`.
 ///

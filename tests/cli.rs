@@ -1,4 +1,4 @@
-//! The command line: the contract of DESIGN.md §4 and clear errors.
+//! The command line: the contract of docs/design.md §4 and clear errors.
 
 use serde_json::Value;
 use std::process::{Command, Output};
@@ -66,7 +66,7 @@ fn analyze_json_matches_the_exact_formulas() {
 
 #[test]
 fn analyze_json_offset_mechanism() {
-    // e = 0.4, r = 1, l = 3.5 at 200°: against the formulas of DESIGN.md §1.
+    // e = 0.4, r = 1, l = 3.5 at 200°: against the formulas of docs/design.md §1.
     let v = json(&[
         "analyze", "--crank", "1", "--rod", "3.5", "--offset", "-0.4", "--angle", "200", "--omega",
         "3", "--json",
@@ -404,5 +404,102 @@ fn chain_errors_are_one_line() {
             1,
             "{args:?}"
         );
+    }
+}
+
+/// The `--help` text of `args` (a subcommand, or none for the program).
+fn help(args: &[&str]) -> String {
+    let mut all = args.to_vec();
+    all.push("--help");
+    let out = run(&all);
+    assert!(out.status.success(), "{all:?}");
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+/// The paragraphs of a help text that describe one option or argument:
+/// from a line starting with `-` or `<` (after its indent) to the next.
+fn option_blocks(text: &str) -> Vec<String> {
+    let mut blocks: Vec<String> = Vec::new();
+    for line in text.lines() {
+        let t = line.trim_start();
+        let starts = line.starts_with("  ") && (t.starts_with('-') || t.starts_with('<'));
+        if starts || blocks.is_empty() {
+            blocks.push(String::new());
+        }
+        let block = blocks.last_mut().expect("one block");
+        block.push_str(line);
+        block.push('\n');
+    }
+    blocks
+}
+
+const SUBCOMMANDS: [&str; 5] = ["analyze", "table", "check", "figure", "scene"];
+
+#[test]
+fn help_shows_each_default_once_and_numbers_as_written() {
+    for cmd in SUBCOMMANDS {
+        let text = help(&[cmd]);
+        for block in option_blocks(&text) {
+            assert!(
+                block.matches("[default").count() <= 1,
+                "{cmd}: a default shown twice in\n{block}"
+            );
+        }
+        // No float printed out to its last digit (0.000000000001 for 1e-12).
+        assert!(!text.contains("00000000"), "{cmd}: {text}");
+    }
+}
+
+#[test]
+fn check_help_gives_the_tolerances_in_exponent_form() {
+    let text = help(&["check"]);
+    assert!(text.contains("1e-12"), "{text}");
+    assert!(!text.contains("0.000000000001"), "{text}");
+    assert!(text.contains("8.9e-16"), "{text}");
+    // Flags check does not take are not offered.
+    assert!(
+        !text.contains("--inversion") && !text.contains("--assembly"),
+        "{text}"
+    );
+    // but still explained when given.
+    let out = run(&["check", "--inversion", "2"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("check takes no --inversion"));
+}
+
+#[test]
+fn table_help_shows_the_offset_default_once() {
+    let text = help(&["table"]);
+    let offset = option_blocks(&text)
+        .into_iter()
+        .find(|b| b.trim_start().starts_with("--offset"))
+        .expect("--offset is listed");
+    assert_eq!(offset.matches("default").count(), 1, "{offset}");
+    assert!(offset.contains("[default: 0]"), "{offset}");
+    // The speed is that of the kinematics table.
+    assert!(text.contains("Crank speed for kinematics"), "{text}");
+}
+
+#[test]
+fn d_is_the_instantaneous_centre_of_the_rod() {
+    for text in [
+        help(&[]),
+        String::from_utf8(run(&["analyze"]).stdout).unwrap(),
+    ] {
+        assert!(!text.contains("rod centre"), "{text}");
+        assert!(text.contains("D instantaneous centre of the rod"), "{text}");
+    }
+    assert!(!help(&["analyze"]).contains("rod centre"));
+}
+
+#[test]
+fn help_names_the_units() {
+    let top = help(&[]);
+    for unit in ["rpm", "rad/s", "per second", "degrees"] {
+        assert!(top.contains(unit), "{unit}: {top}");
+    }
+    let analyze = help(&["analyze"]);
+    for unit in ["rad/s²", "per second squared", "force × the length unit"] {
+        assert!(analyze.contains(unit), "{unit}: {analyze}");
     }
 }

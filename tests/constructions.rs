@@ -1,4 +1,4 @@
-//! Every construction against the analytic core (DESIGN.md §2, §6).
+//! Every construction against the analytic core (docs/design.md §2, §6).
 
 use proptest::prelude::*;
 use slider_crank::construct::{

@@ -1,6 +1,6 @@
 //! The diagram figures: reviewed snapshots, rendering, and the accuracy of
 //! every curve they draw, measured from the written SVG against the exact
-//! curve computed here from the formulas (DESIGN.md §1–2, the seeds'
+//! curve computed here from the formulas (docs/design.md §1–2, the seeds'
 //! equations), independently of the library.
 
 mod common;

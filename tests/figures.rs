@@ -39,7 +39,7 @@ fn apply(t: &[f64; 6], p: (f64, f64)) -> (f64, f64) {
     )
 }
 
-/// The constructed points computed here from the formulas of DESIGN.md
+/// The constructed points computed here from the formulas of docs/design.md
 /// §1–2, independently of the library: C, B, A, D (finite or not), E,
 /// and Kisch's F, G, H.
 struct Expected {

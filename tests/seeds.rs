@@ -1,4 +1,4 @@
-//! Every number printed in the seeds (DESIGN.md §3). Where the seed is right
+//! Every number printed in the seeds (docs/design.md §3). Where the seed is right
 //! the printed value is asserted within its printed rounding; where it is
 //! not, the correct value is asserted and `docs/seed-errata.md` says why.
 

@@ -14,8 +14,9 @@ use slider_crank::{Angle, ChainCentres, Error, Kinematics, Result, SliderCrank};
 pub struct AnalyzeArgs {
     #[command(flatten)]
     pub mechanism: MechanismArgs,
-    /// Crank angle in degrees, counter-clockwise from the line of stroke
-    /// (0: outer dead centre); also a list 0,30,60 or a range START:STOP:STEP
+    /// Crank angle θ in degrees, counter-clockwise from +x, the direction
+    /// from the crank centre towards the slider (0: outer dead centre): one
+    /// angle, a list 0,30,60 or a range START:STOP:STEP (STOP included)
     #[arg(
         long,
         default_value = "45",
@@ -25,10 +26,14 @@ pub struct AnalyzeArgs {
     pub angle: String,
     #[command(flatten)]
     pub speed: SpeedArgs,
-    /// Crank torque T (counter-clockwise positive): adds statics (Ng eq. 6–11)
+    /// Crank torque T, counter-clockwise positive, in force × the length
+    /// unit (N·mm for lengths in mm): adds the statics of Ng eq. 6–11 (OM,
+    /// slider force, side thrust, friction, transmission angle), the
+    /// forces in that force unit
     #[arg(long, allow_negative_numbers = true, value_name = "T")]
     pub torque: Option<f64>,
-    /// Coefficient of friction μ ≥ 0 of the slider in its guides (with --torque)
+    /// Coefficient of friction μ ≥ 0 of the slider in its guides (used
+    /// with --torque)
     #[arg(
         long,
         allow_negative_numbers = true,
@@ -36,7 +41,8 @@ pub struct AnalyzeArgs {
         default_value_t = 0.0
     )]
     pub friction: f64,
-    /// Print JSON (DESIGN.md §4): one object, or an array for several angles
+    /// Print JSON (schema in docs/design.md §4): one object, or an array
+    /// for a list or range of angles
     #[arg(long)]
     pub json: bool,
     #[command(flatten)]
@@ -211,7 +217,11 @@ fn fmt_point(p: Option<Point>) -> String {
 
 fn to_text(r: &Report) -> String {
     let mut out = format!("θ = {}°\n", r.degrees);
-    out.push_str("  points (C crank centre, B crank pin, A cross-head, D rod centre, E on CE, F G H Kisch)\n");
+    out.push_str(
+        "  points: C crank centre, B crank pin, A cross-head, D instantaneous centre of the rod,\n          \
+         E where the rod produced meets the perpendicular to the stroke through C,\n          \
+         F and G of Klein's and Kisch's constructions, H of Kisch's\n",
+    );
     for (name, p) in [
         ("C", Some(r.c)),
         ("B", Some(r.b)),

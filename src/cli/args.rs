@@ -8,7 +8,8 @@ use slider_crank::{Error, Result, SliderCrank, rpm_to_omega};
 /// 3 ft rod: r = 0.5 ft, l = 3 ft, in line).
 #[derive(Debug, Clone, Args)]
 pub struct MechanismArgs {
-    /// Crank radius r (any length unit, used consistently)
+    /// Crank radius r, in any length unit (give the rod and the offset in
+    /// the same unit)
     #[arg(
         long,
         allow_hyphen_values = true,
@@ -24,7 +25,8 @@ pub struct MechanismArgs {
         value_name = "L"
     )]
     pub rod: f64,
-    /// Offset e of the line of stroke from the crank centre (0: in line)
+    /// Offset e of the line of stroke from the crank centre: the stroke is
+    /// the line y = e (0: in line; positive: above the crank centre)
     #[arg(
         long,
         allow_hyphen_values = true,
@@ -44,7 +46,8 @@ impl MechanismArgs {
 /// Crank speed flags: `--rpm` or `--omega`, default 250 rpm (§35).
 #[derive(Debug, Clone, Args)]
 pub struct SpeedArgs {
-    /// Crank speed in revolutions per minute [default: 250]
+    /// Crank speed in revolutions per minute, positive counter-clockwise
+    /// (or give --omega) [default: 250]
     #[arg(
         long,
         allow_hyphen_values = true,
@@ -52,7 +55,8 @@ pub struct SpeedArgs {
         conflicts_with = "omega"
     )]
     pub rpm: Option<f64>,
-    /// Crank speed ω in rad/s (positive: counter-clockwise)
+    /// Crank speed ω in rad/s, positive counter-clockwise (instead of
+    /// --rpm)
     #[arg(long, allow_hyphen_values = true, value_name = "W")]
     pub omega: Option<f64>,
 }

@@ -17,9 +17,10 @@ use slider_crank::{Angle, Assembly, Error, Inversion, Result, SliderCrank};
 /// The chain flags shared by `analyze` and `check`.
 #[derive(Debug, Clone, Args)]
 pub struct ChainArgs {
-    /// Radius ρ of a circular slot for the block (Fig. 60 b): its centre O_cd
-    /// is at (0, e − ρ), below the stroke for ρ > 0; |ρ| must exceed
-    /// (l + r ± e)/2
+    /// Put the block in a circular slot of radius ρ (Fig. 60 b), in the
+    /// length unit: its centre O_cd is at (0, e − ρ), below the stroke for
+    /// ρ > 0, above it for ρ < 0; |ρ| must exceed (l + r + e)/2 for ρ > 0,
+    /// (l + r − e)/2 for ρ < 0
     #[arg(
         long,
         allow_negative_numbers = true,
@@ -27,17 +28,17 @@ pub struct ChainArgs {
         conflicts_with_all = ["links", "inversion"]
     )]
     pub slot_radius: Option<f64>,
-    /// A quadric crank chain instead (Fig. 60 a): crank, coupler, lever and
-    /// frame lengths
+    /// A quadric crank chain instead of the engine (Fig. 60 a): the lengths
+    /// of crank a, coupler b, lever c and frame d, comma-separated (in place
+    /// of --crank, --rod and --offset)
     #[arg(long, value_name = "A,B,C,D", conflicts_with = "inversion")]
     pub links: Option<String>,
-    /// Assembly mode of the quadric chain (with --links): A left (open) or
-    /// right (crossed) of the diagonal from B to O_cd
+    /// Assembly mode of the quadric chain (with --links)
     #[arg(long, value_enum, default_value_t = AssemblyArg::Open, requires = "links")]
     pub assembly: AssemblyArg,
     /// Fix another link of the slider-crank chain: 1 frame d (the engine),
     /// 2 crank a, 3 rod b, 4 slider c; --angle is then the crank's angle
-    /// against the frame and --rpm/--omega the driver's speed
+    /// against the frame and --rpm or --omega the speed of the driving link
     #[arg(long, value_name = "N")]
     pub inversion: Option<u32>,
 }
@@ -45,9 +46,9 @@ pub struct ChainArgs {
 /// The assembly mode flag.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum AssemblyArg {
-    /// A to the left of B → O_cd
+    /// A to the left of the diagonal from B to O_cd
     Open,
-    /// A to the right of B → O_cd
+    /// A to the right of the diagonal from B to O_cd
     Crossed,
 }
 

@@ -13,7 +13,7 @@ use slider_crank::{Error, Result};
 pub const DEFAULT_ULPS: f64 = 4.0;
 
 /// Default allowance of `check --slot-radius` and `check --links`: the
-/// largest scaled difference (DESIGN.md §6) between the chain's two
+/// largest scaled difference (docs/design.md §6) between the chain's two
 /// formulations.
 pub const CHAIN_TOLERANCE: f64 = 1e-12;
 
@@ -25,8 +25,8 @@ pub const MAX_SAMPLES: usize = 1_000_000;
 pub struct CheckArgs {
     #[command(flatten)]
     pub mechanism: MechanismArgs,
-    /// Equally spaced poses over the turn (the exact dead centres, 0°, 90°,
-    /// 180° and 270° are always added)
+    /// Equally spaced poses over the turn, at most 1000000 (the dead
+    /// centres and 0°, 90°, 180° and 270° are always added)
     #[arg(
         long,
         default_value_t = 100_000,
@@ -34,11 +34,11 @@ pub struct CheckArgs {
         allow_hyphen_values = true
     )]
     pub samples: usize,
-    /// Allowed difference per unit of condition number, in the scaled
-    /// units of DESIGN.md §6: a difference passes when at most T · κ
-    /// [default: 4 ulps, 4 × 2⁻⁵² ≈ 8.9e-16]. With --slot-radius or
-    /// --links: the largest allowed scaled difference itself (DESIGN.md §6
-    /// scaling, no condition number) [default there: 1e-12]
+    /// Allowed difference, in the scaled units of docs/design.md §6. For
+    /// the engine a difference passes when it is at most T · κ, κ the
+    /// condition number of the quantity at that pose; with --slot-radius or
+    /// --links, when it is at most T itself [default: 4 × 2⁻⁵² ≈ 8.9e-16
+    /// (4 ulps) for the engine, 1e-12 with --slot-radius or --links]
     #[arg(long, allow_hyphen_values = true, value_name = "T")]
     pub tolerance: Option<f64>,
     #[command(flatten)]

@@ -12,24 +12,26 @@ use std::path::PathBuf;
 /// Draw a named figure: a mechanism figure of the seeds or a diagram.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
-    /// Mechanism figures: fig-62-displacement, fig-63-velocity,
-    /// fig-65-klein, fig-66-kisch, fig-67-example, ng-fig-1-torque,
-    /// ng-fig-a1-velocity. Diagrams: fig-61-centrodes,
+    /// The figure. Mechanism figures: fig-62-displacement,
+    /// fig-63-velocity, fig-65-klein, fig-66-kisch, fig-67-example,
+    /// ng-fig-1-torque, ng-fig-a1-velocity. Diagrams: fig-61-centrodes,
     /// fig-64-velocity-diagrams, acceleration-diagrams, rod-motion,
     /// approximation-error, coupler-curves, ng-fig-2-incline,
-    /// ng-fig-7-calibration, ng-fig-8-forces, curve-benchmark,
-    /// fig-60-chains, inversion-1-engine, inversion-2-rotating-block,
-    /// inversion-3-oscillating-cylinder, inversion-4-hand-pump,
-    /// slot-convergence
+    /// ng-fig-7-calibration, ng-fig-8-forces, curve-benchmark. The chain of
+    /// Fig. 60: fig-60-chains, inversion-1-engine,
+    /// inversion-2-rotating-block, inversion-3-oscillating-cylinder,
+    /// inversion-4-hand-pump, slot-convergence
     #[arg(value_name = "NAME")]
     pub name: String,
-    /// Crank radius r [default: the figure's, 0.5 ft or Ng's 25 mm]
+    /// Crank radius r [default: the figure's own, 0.5 ft for the §35
+    /// engine, 25 mm for Ng's rig]
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub crank: Option<f64>,
-    /// Rod length l [default: the figure's, 3 ft or Ng's 72 mm]
+    /// Rod length l, in the unit of r [default: the figure's own, 3 ft for
+    /// the §35 engine, 72 mm for Ng's rig]
     #[arg(long, value_name = "L", allow_hyphen_values = true)]
     pub rod: Option<f64>,
-    /// Offset e of the line of stroke [default: 0]
+    /// Offset e of the line of stroke, in the unit of r [default: 0]
     #[arg(long, value_name = "E", allow_hyphen_values = true)]
     pub offset: Option<f64>,
     /// Crank angle in degrees of the pose drawn [default: the figure's];
@@ -38,12 +40,13 @@ pub struct FigureArgs {
     pub angle: Option<f64>,
     #[command(flatten)]
     pub speed: SpeedArgs,
-    /// Layers to draw, comma-separated: mechanism, dimensions, centrodes,
-    /// coupler, virtual-centres, velocity, klein, kisch, torque, scales
-    /// [default: the figure's]
+    /// Layers of a mechanism figure, comma-separated: mechanism,
+    /// dimensions, centrodes, coupler, virtual-centres, velocity, klein,
+    /// kisch, torque, scales [default: the figure's]
     #[arg(long, value_name = "LIST")]
     pub layers: Option<String>,
-    /// textbook (black ink) or handout (colour) [default: textbook]
+    /// Drawing style: textbook (black ink) or handout (colour) [default:
+    /// textbook]
     #[arg(long, value_name = "STYLE")]
     pub style: Option<String>,
     /// Face of the text, bundled (no system fonts needed):
@@ -62,9 +65,10 @@ pub struct FigureArgs {
     /// [default: both]
     #[arg(long, value_name = "FIT")]
     pub fit: Option<String>,
-    /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
-    /// printing SVG; `-` prints SVG. A device or FIFO is written in place;
-    /// a symbolic link is followed and its target replaced
+    /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit)
+    /// when FILE ends in .png, SVG otherwise; `-` prints SVG. A device or
+    /// FIFO is written in place; a symbolic link is kept and its target
+    /// replaced
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }

@@ -19,8 +19,10 @@ pub struct SceneArgs {
     /// else new-computer-modern]
     #[arg(long, value_name = "NAME")]
     pub font: Option<String>,
-    /// Write to FILE (PNG when it ends in .png, SVG otherwise) instead of
-    /// printing SVG; `-` prints SVG
+    /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit)
+    /// when FILE ends in .png, SVG otherwise; `-` prints SVG. A device or
+    /// FIFO is written in place; a symbolic link is kept and its target
+    /// replaced
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }

@@ -9,13 +9,13 @@ use slider_crank::{Error, Result, SliderCrank};
 /// Which table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum TableName {
-    /// Error due to obliquity √(n² − sin²θ) − n at θ = 90° (textbook §35)
+    /// Error due to obliquity √(n² − sin²θ) − n, in crank radii, at θ = 90° (textbook §35)
     Obliquity,
     /// cos θ + cos 2θ / n, the textbook's table of eq. (3)
     AccelerationFactor,
-    /// A θ sweep of x, v, a and the rod's angle and rates
+    /// A θ sweep of the slider's position, velocity and acceleration and the rod's angle and rates
     Kinematics,
-    /// Ng's Table 2: F, F' and β against θ
+    /// Ng's Table 2: slider force F, with friction F' and transmission angle β against θ
     Forces,
 }
 
@@ -40,21 +40,25 @@ pub struct TableArgs {
     #[arg(long, value_enum, default_value_t = FormatArg::Text)]
     pub format: FormatArg,
     /// Ratios n = l/r for obliquity and acceleration-factor, comma-separated
-    /// (inf for the infinitely long rod) [default: the textbook's]
+    /// (inf for the infinitely long rod) [default: the textbook's, 4,5,6
+    /// for obliquity and 4,4.5,5,5.5,6,inf for acceleration-factor]
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub n: Option<String>,
-    /// Crank angles in degrees: a list or START:STOP:STEP [default: the
-    /// textbook's rows; 90 for obliquity; 0:360:30 for kinematics; 10:160:10
-    /// for forces]
+    /// Crank angles in degrees: a list or START:STOP:STEP [default: 90 for
+    /// obliquity, the textbook's rows 0:180:30 for acceleration-factor,
+    /// 0:360:30 for kinematics, Ng's rows 10:160:10 for forces]
     #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
     pub angles: Option<String>,
-    /// Crank radius (kinematics [default 0.5 ft]; forces [default 25 mm])
+    /// Crank radius r for kinematics and forces, in any length unit
+    /// [default: 0.5 (ft, §35) for kinematics, 25 (mm, Ng) for forces]
     #[arg(long, allow_hyphen_values = true, value_name = "R")]
     pub crank: Option<f64>,
-    /// Rod length (kinematics [default 3 ft]; forces [default 72 mm])
+    /// Rod length l for kinematics and forces, in the unit of --crank
+    /// [default: 3 (ft, §35) for kinematics, 72 (mm, Ng) for forces]
     #[arg(long, allow_hyphen_values = true, value_name = "L")]
     pub rod: Option<f64>,
-    /// Offset of the line of stroke [default 0]
+    /// Offset e of the line of stroke for kinematics and forces, in the
+    /// unit of --crank (0: in line)
     #[arg(
         long,
         value_name = "E",
@@ -62,17 +66,30 @@ pub struct TableArgs {
         allow_hyphen_values = true
     )]
     pub offset: f64,
-    #[command(flatten)]
-    pub speed: SpeedArgs,
-    /// Crank torque for forces, in force × the length unit [default:
+    /// Crank speed for kinematics, in revolutions per minute, positive
+    /// counter-clockwise (or give --omega) [default: 250]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "N",
+        conflicts_with = "omega"
+    )]
+    pub rpm: Option<f64>,
+    /// Crank speed ω for kinematics, in rad/s, positive counter-clockwise
+    /// (instead of --rpm)
+    #[arg(long, allow_hyphen_values = true, value_name = "W")]
+    pub omega: Option<f64>,
+    /// Crank torque T for forces, in force × the length unit [default:
     /// 264.87 N·mm = 1 kg × 9.81 m/s² × 27 mm, the torque Ng's F column
     /// implies]
     #[arg(long, allow_hyphen_values = true, value_name = "T")]
     pub torque: Option<f64>,
-    /// Friction coefficient for forces [default: 1, Ng's 45° tilt]
+    /// Coefficient of friction μ ≥ 0 of the slider for forces [default: 1,
+    /// Ng's 45° tilt]
     #[arg(long, allow_hyphen_values = true, value_name = "MU")]
     pub friction: Option<f64>,
-    /// Decimals for kinematics [default 4] and forces [default 2]
+    /// Decimals printed by kinematics and forces [default: 4 for
+    /// kinematics, 2 for forces]
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub decimals: Option<usize>,
 }
@@ -143,7 +160,11 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         }
         TableName::Kinematics => {
             let m = mechanism(args, 0.5, 3.0)?;
-            let omega = args.speed.omega()?;
+            let omega = SpeedArgs {
+                rpm: args.rpm,
+                omega: args.omega,
+            }
+            .omega()?;
             let spec = match &spec {
                 Some(s) => s.clone(),
                 None => AngleSpec::parse("0:360:30")?,

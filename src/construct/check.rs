@@ -1,5 +1,5 @@
 //! Cross-checks: each value read off a construction beside the analytic
-//! core's, in the scaled units of DESIGN.md §6.
+//! core's, in the scaled units of docs/design.md §6.
 
 use super::{InstantCentre, Kisch, Klein, VelocityLine};
 use crate::angle::Angle;
@@ -55,7 +55,7 @@ pub struct CheckRow {
     pub graphical: f64,
     /// From the analytic core.
     pub analytic: f64,
-    /// The scale of DESIGN.md §6: r for the slider, 1 for the rod.
+    /// The scale of docs/design.md §6: r for the slider, 1 for the rod.
     pub scale: f64,
     /// The condition number κ of the quantity at this pose (≥ 1, see
     /// [`condition`]): moving any input (r, l, e, θ) by one part in
@@ -78,7 +78,7 @@ impl CheckRow {
 }
 
 /// The condition number κ of `quantity` at `pose`, in the scaled units of
-/// DESIGN.md §6: κ = 1 + T (1 + k (l/w)²), where T is the sum of the
+/// docs/design.md §6: κ = 1 + T (1 + k (l/w)²), where T is the sum of the
 /// magnitudes of the terms of its formula (scaled), w = l cos φ, and k = 2
 /// for the rates (one w in a denominator), 6 for the accelerations (w³).
 ///

@@ -8,7 +8,7 @@ use crate::geom::{Frame, Point, Vector, cross};
 use std::ops::RangeInclusive;
 
 /// The default tolerance: 0.01 page units (px), the bound scenes and
-/// figures ask of their curves unless told otherwise (DESIGN.md §6).
+/// figures ask of their curves unless told otherwise (docs/design.md §6).
 pub const DEFAULT_TOLERANCE: f64 = 0.01;
 
 /// The tolerance to trace a curve to so that its path, once written with

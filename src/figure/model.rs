@@ -428,7 +428,7 @@ impl Panel {
 }
 
 /// A whole figure: page size, style, panels and the metadata written to
-/// the SVG's `<metadata>` (DESIGN.md §4).
+/// the SVG's `<metadata>` (docs/design.md §4).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
     name: String,

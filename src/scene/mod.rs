@@ -29,7 +29,7 @@ use crate::figure::Style;
 use crate::{Angle, SliderCrank};
 
 /// Default drawing tolerance of curves, in page units: the curve
-/// engine's (DESIGN.md §6).
+/// engine's (docs/design.md §6).
 pub use crate::diagram::DEFAULT_TOLERANCE;
 
 /// A page: its size and the margin kept clear on every side, in page units

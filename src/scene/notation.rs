@@ -2,7 +2,7 @@
 
 use serde::Deserialize;
 
-/// The letters of a figure (DESIGN.md §1): the textbook's C, B, A, D, E or
+/// The letters of a figure (docs/design.md §1): the textbook's C, B, A, D, E or
 /// Ng's O, C, P, I, M for the same points.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "kebab-case")]

@@ -283,7 +283,7 @@ fn metadata(figure: &Figure) -> Element {
     element
 }
 
-/// The figure as SVG text: `<metadata>` JSON (DESIGN.md §4), a paper
+/// The figure as SVG text: `<metadata>` JSON (docs/design.md §4), a paper
 /// rectangle, one `<g data-page-from-world>` per panel.
 pub fn to_svg(figure: &Figure) -> String {
     let style = figure.style();
