@@ -30,9 +30,12 @@ impl PanelWriter<'_> {
             let _ = write!(hatch, "M{} L{} ", pt(s), pt(s + Vector::new(-5.0, 6.0)));
             x += 5.0;
         }
+        // The triangle and the foot are lines to keep clear of; the
+        // hatching under the foot is a strip no letter enters.
         self.obstacles.polyline(&[tri[0], tri[1], tri[2], tri[0]]);
+        self.obstacles.segment(foot[0], foot[1]);
         self.obstacles.boxed(Bounds {
-            min: c + Vector::new(-base - 5.0, 0.5 * h),
+            min: c + Vector::new(-base - 5.0, h),
             max: c + Vector::new(base, h + 6.0),
         });
         let pen = ink.pen;
