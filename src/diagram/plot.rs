@@ -64,6 +64,9 @@ pub struct Plot {
     legend: Vec<(RichText, Option<Key>)>,
     drawn: Vec<Point>,
     caption: Option<RichText>,
+    /// Blocks try the bottom corners first (the band [`Plot::band`] keeps
+    /// free for them).
+    below: bool,
 }
 
 /// What a user can change when a curve reaches the curve engine's limits.
@@ -148,6 +151,7 @@ impl Plot {
             legend: Vec::new(),
             drawn: Vec::new(),
             caption: None,
+            below: false,
         })
     }
 
@@ -202,7 +206,15 @@ impl Plot {
             legend: Vec::new(),
             drawn: Vec::new(),
             caption: None,
+            below: false,
         }
+    }
+
+    /// Sets the legend and notes in the bottom band of the area when it is
+    /// free there (see [`Plot::band`]), before the other corners.
+    pub(crate) fn blocks_below(mut self) -> Self {
+        self.below = true;
+        self
     }
 
     /// Draws dotted grid lines at the labelled ticks.
@@ -682,8 +694,14 @@ impl Plot {
                 let clash = taken.iter().any(|(l, h)| {
                     l.x < hi.x + 4.0 && h.x > lo.x - 4.0 && l.y < hi.y + 4.0 && h.y > lo.y - 4.0
                 });
-                // Corners first, then edges' middles, then the centre.
-                let order = (i.min(2) + j.min(2)) as f64 * 0.01;
+                // Corners first, then edges' middles, then the centre;
+                // with `below`, the bottom row before the top.
+                let row = match (self.below, j) {
+                    (true, 0) => 1,
+                    (true, 1) => 0,
+                    _ => j,
+                };
+                let order = (i.min(2) + row) as f64 * 0.01;
                 let score = covered + if clash { 1e6 } else { 0.0 } + order;
                 if best.is_none_or(|(s, _)| score < s) {
                     best = Some((score, lo));

@@ -62,7 +62,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         *panel.transform(),
         ctx.tolerance,
         ctx.font,
-    );
+    )
+    .blocks_below();
     for item in &items {
         plot.avoid(item);
     }

@@ -40,7 +40,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         *panel.transform(),
         ctx.tolerance,
         ctx.font,
-    );
+    )
+    .blocks_below();
     for item in panel.items() {
         plot.avoid(item);
     }

@@ -83,7 +83,13 @@ pub(crate) fn kisch_side(pose: &crate::Pose) -> Vector {
 
 /// The arc about `centre` of radius `radius` from direction `from` to
 /// direction `to` the short way, with `over` radians more at each end.
-fn arc_between(centre: Point, radius: f64, from: Vector, to: Vector, over: f64) -> Shape {
+pub(super) fn arc_between(
+    centre: Point,
+    radius: f64,
+    from: Vector,
+    to: Vector,
+    over: f64,
+) -> Shape {
     let a0 = from.y.atan2(from.x);
     let a1 = to.y.atan2(to.x);
     let mut sweep = a1 - a0;
@@ -102,6 +108,9 @@ fn arc_between(centre: Point, radius: f64, from: Vector, to: Vector, over: f64) 
         arrow: false,
     }
 }
+
+/// How far Kisch's arc BE runs on past E and H, radians.
+pub(super) const BE_OVERSHOOT: f64 = 0.12;
 
 pub(crate) fn kisch(ctx: &Ctx, canvas: &mut Canvas) {
     basics_e(ctx, canvas);
@@ -139,7 +148,7 @@ pub(crate) fn kisch(ctx: &Ctx, canvas: &mut Canvas) {
             canvas.push(
                 format!("arc-{nb}{}", ctx.letter(VelocityPoint)),
                 Role::Auxiliary,
-                arc_between(b, be, e - b, h - b, 0.12),
+                arc_between(b, be, e - b, h - b, BE_OVERSHOOT),
             );
         }
         canvas.segment(ctx.line(CrankPin, H), Role::Auxiliary, b, h);

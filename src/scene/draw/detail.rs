@@ -49,16 +49,19 @@ pub(crate) struct Detail {
     pub magnification: f64,
 }
 
-/// The points of the constructions about the crank that the scene draws.
-fn points(ctx: &Ctx) -> Vec<Point> {
+/// The points of the constructions about the crank that the scene draws:
+/// B, C, E and the construction's F and G first (the core the plates
+/// measure), then Kisch's H where it exists.
+fn points(ctx: &Ctx) -> (Vec<Point>, Option<Point>) {
     let scene = ctx.scene;
     let pose = ctx.main.pose();
     let mut pts = vec![pose.b(), pose.c()];
     pts.push(ctx.main.e().e());
+    let mut h = None;
     if scene.has(Layer::Kisch) {
         let k = ctx.main.kisch();
         pts.extend([k.points().f(), k.points().g()]);
-        pts.extend(k.h());
+        h = k.h();
     } else if scene.has(Layer::Klein) {
         match ctx.main.klein() {
             Some(k) => pts.extend([k.points().f(), k.points().g()]),
@@ -69,11 +72,27 @@ fn points(ctx: &Ctx) -> Vec<Point> {
             }
         }
     }
-    pts
+    (pts, h)
+}
+
+/// The least larger side of the core points' box (B, C, E, F, G) in the
+/// detail, page units: the 150 the plates require, with a margin.
+const CORE_TARGET: f64 = 160.0;
+
+/// The box of `pts`.
+fn bounds(pts: &[Point]) -> (Point, Point) {
+    let mut min = pts[0];
+    let mut max = pts[0];
+    for p in pts {
+        min = min.inf(p);
+        max = max.sup(p);
+    }
+    (min, max)
 }
 
 /// The detail a scene drawn at `scale` page units per world unit needs,
-/// if any, no wider than `max_width` page units.
+/// if any, no wider than `max_width` page units. Kisch's H joins the
+/// region only where the core still gets [`CORE_TARGET`] with it.
 pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
     let scene = ctx.scene;
     let acceleration = scene.has(Layer::Klein) || scene.has(Layer::Kisch);
@@ -81,29 +100,37 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
     if !(acceleration || velocity) || !scene.has(Layer::Mechanism) {
         return None;
     }
-    let pts = points(ctx);
-    let mut min = pts[0];
-    let mut max = pts[0];
-    for p in &pts {
-        min = min.inf(p);
-        max = max.sup(p);
-    }
-    let size = max - min;
-    let extent = size.x.max(size.y) * scale;
-    if !acceleration && extent >= THRESHOLD {
+    let (core, h) = points(ctx);
+    let (cmin, cmax) = bounds(&core);
+    let core_size = cmax - cmin;
+    let core_extent = core_size.x.max(core_size.y) * scale;
+    if !(core_extent > 0.0 && core_extent.is_finite())
+        || (!acceleration && core_extent >= THRESHOLD)
+    {
         return None;
     }
-    if !(extent > 0.0 && extent.is_finite()) {
-        return None;
+    let with_h = h.map(|h| [core.as_slice(), &[h]].concat());
+    let fitted = |pts: &[Point]| {
+        let (min, max) = bounds(pts);
+        let size = max - min;
+        let extent = size.x.max(size.y) * scale;
+        if !(extent > 0.0 && extent.is_finite()) {
+            return None;
+        }
+        let wanted = (TARGET / extent).max(CORE_TARGET / core_extent);
+        let fits = |m: f64| size.x * scale * m + 2.0 * PAD <= max_width;
+        let magnification = steps()
+            .find(|m| *m >= wanted)
+            .filter(|m| fits(*m))
+            .or_else(|| steps().rev().find(|m| fits(*m)))?;
+        Some(Detail {
+            region: Frame::new(min, max),
+            magnification,
+        })
+    };
+    let enough = |d: &Detail| core_extent * d.magnification >= CORE_TARGET;
+    match with_h.as_deref().and_then(fitted) {
+        Some(d) if enough(&d) => Some(d),
+        _ => fitted(&core),
     }
-    let wanted = TARGET / extent;
-    let fits = |m: f64| size.x * scale * m + 2.0 * PAD <= max_width;
-    let magnification = steps()
-        .find(|m| *m >= wanted)
-        .filter(|m| fits(*m))
-        .or_else(|| steps().rev().find(|m| fits(*m)))?;
-    Some(Detail {
-        region: Frame::new(min, max),
-        magnification,
-    })
 }

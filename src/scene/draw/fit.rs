@@ -2,7 +2,8 @@
 
 use super::Ctx;
 use crate::construct::Kisch;
-use crate::geom::{Frame, Intersection, Point};
+use crate::figure::Shape;
+use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::scene::Layer;
 
 /// D is fitted into the page only while its height above the stroke stays
@@ -90,6 +91,25 @@ pub(crate) fn frame(ctx: &Ctx) -> Frame {
         for k in 0..=24 {
             let t = std::f64::consts::PI * k as f64 / 24.0;
             b.add(c.centre + (u * t.cos() + n * t.sin()) * c.radius);
+        }
+        // The arc BE about B, from E to H.
+        if let Some(h) = k.h() {
+            let (pin, e) = (pose.b(), ctx.main.e().e());
+            let over = super::acceleration::BE_OVERSHOOT;
+            let arc = super::acceleration::arc_between(pin, k.be(), e - pin, h - pin, over);
+            if let Shape::Arc {
+                centre,
+                radius,
+                start,
+                sweep,
+                ..
+            } = arc
+            {
+                for k in 0..=24 {
+                    let t = start + sweep * k as f64 / 24.0;
+                    b.add(centre + Vector::new(t.cos(), t.sin()) * radius);
+                }
+            }
         }
     }
     // Arrows drawn to page lengths, once the scale is known.
