@@ -6,6 +6,7 @@
 //! (signed). Virtual work, T ω + F v_p = 0, gives the slider force F = T/OM
 //! along +x that holds the crank torque T (counter-clockwise positive).
 
+use crate::angle::Angle;
 use crate::error::{Error, Result, finite, non_negative};
 use crate::mechanism::Pose;
 
@@ -20,10 +21,19 @@ pub fn om(pose: &Pose) -> f64 {
 /// force balances a torque.
 ///
 /// Errors: a torque that is not finite, or a force beyond the largest f64
-/// (a huge torque on a tiny mechanism: OM is small but not zero).
+/// (a huge torque on a tiny mechanism: OM is small but not zero). The
+/// torque line of the construction ([`crate::construct::TorqueLine`])
+/// divides through the same function, so the two agree on which is which.
 pub fn slider_force(pose: &Pose, torque: f64) -> Result<Option<f64>> {
+    force_over_arm(torque, om(pose), pose.angle())
+}
+
+/// F_p = T / OM for a signed moment arm `om` at the crank angle `angle`:
+/// `Ok(None)` when OM = 0 (a dead centre), an error when T is not finite
+/// or the quotient is beyond the largest f64. The one division behind
+/// [`slider_force`] and [`crate::construct::TorqueLine::slider_force`].
+pub(crate) fn force_over_arm(torque: f64, om: f64, angle: Angle) -> Result<Option<f64>> {
     let torque = finite("torque", torque)?;
-    let om = om(pose);
     if om == 0.0 {
         return Ok(None);
     }
@@ -35,12 +45,16 @@ pub fn slider_force(pose: &Pose, torque: f64) -> Result<Option<f64>> {
             name: "torque",
             value: torque,
             reason: format!(
-                "the slider force T/OM at θ = {}° (OM = {om:e}) exceeds the largest number (about 1.8e308): give the torque in a larger unit or the lengths in a smaller one",
-                pose.angle().degrees()
+                "the slider force T/OM at θ = {}° (OM = {om:e}) exceeds the largest number (about 1.8e308): {UNIT_ADVICE}",
+                angle.degrees()
             ),
         })
     }
 }
+
+/// What to do when a force exceeds the largest f64: forces scale with the
+/// unit of force the torque is given in (lengths cancel: T/OM is force).
+const UNIT_ADVICE: &str = "give the torque in a larger unit of force (kN·m rather than N·m)";
 
 /// Crank torque balanced by a slider force F along +x, T = F · OM (Ng eq. 2);
 /// zero at the dead centres, where the slider force passes through C.
@@ -50,8 +64,32 @@ pub fn torque_from_slider_force(pose: &Pose, force: f64) -> f64 {
 
 /// Side thrust of the guides on the slider, F_s = F_p tan φ (Ng eq. 7),
 /// signed along +y.
-pub fn side_thrust(pose: &Pose, slider_force: f64) -> f64 {
-    slider_force * pose.rise() / pose.run()
+///
+/// Errors: a slider force that is not finite, or a thrust beyond the
+/// largest f64 (a huge force near the limit of assembly, where tan φ
+/// grows without bound as the rod lines up with the crank).
+pub fn side_thrust(pose: &Pose, slider_force: f64) -> Result<f64> {
+    thrust(slider_force, pose.rise() / pose.run(), pose.angle())
+}
+
+/// F_s = F_p tan φ at the crank angle `angle`, an error when F_p is not
+/// finite or the product is beyond the largest f64. The one product
+/// behind [`side_thrust`] and [`crate::construct::TorqueLine::side_thrust`].
+pub(crate) fn thrust(slider_force: f64, tan_phi: f64, angle: Angle) -> Result<f64> {
+    let slider_force = finite("slider force", slider_force)?;
+    let fs = slider_force * tan_phi;
+    if fs.is_finite() {
+        Ok(fs)
+    } else {
+        Err(Error::OutOfRange {
+            name: "slider force",
+            value: slider_force,
+            reason: format!(
+                "the side thrust F_p tan φ at θ = {}° (tan φ = {tan_phi:e}) exceeds the largest number (about 1.8e308): {UNIT_ADVICE}",
+                angle.degrees()
+            ),
+        })
+    }
 }
 
 /// The slider force needed with friction in the guides.

@@ -8,7 +8,7 @@ mod png;
 mod sizes;
 mod svg;
 
-pub use number::{GRID, fmt};
+pub use number::{GRID, fmt, plain};
 pub use output::write_atomic;
 pub use png::{font_database, to_png};
 pub use svg::to_svg;
