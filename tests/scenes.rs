@@ -100,7 +100,9 @@ fn text_of(svg: &str, id: &str) -> String {
             _ => {}
         }
     }
-    out
+    out.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&")
 }
 
 #[test]
@@ -127,6 +129,16 @@ fn a_force_beyond_the_largest_number_is_not_drawn_as_a_dead_centre() {
     for bad in ["inf", "NaN", "= 0 "] {
         assert!(!forces.contains(bad), "{bad}: {forces}");
     }
+    // A hair from the dead centre, OM = 2.3e-332 is below the smallest
+    // number: not written 0, not a dead centre; F_s = T/(4r) exceeds the
+    // largest number too.
+    let svg = scene(1e-230, "3e-100");
+    let om = text_of(&svg, "note-scales-1");
+    assert!(om.contains("CE < 4.941×10−324"), "{om}");
+    let forces = text_of(&svg, "note-scales-2");
+    assert!(!forces.contains("dead centre"), "{forces}");
+    assert!(forces.contains("Fp = T/CE exceeds"), "{forces}");
+    assert!(forces.contains("Fs exceeds"), "{forces}");
     // At the dead centre it is one.
     let svg = scene(0.0, "3e-100");
     let forces = text_of(&svg, "note-scales-2");

@@ -20,6 +20,7 @@ pub struct TorqueLine {
     m: Point,
     tan_phi: f64,
     angle: Angle,
+    crank: f64,
 }
 
 impl TorqueLine {
@@ -29,8 +30,15 @@ impl TorqueLine {
         let rod = b - a;
         Self {
             m: e.e(),
-            tan_phi: rod.y / -rod.x,
+            // Read off the rod, or per unit crank where its rise is below
+            // the normal range (a tiny crank a hair from the stroke).
+            tan_phi: if rod.y.abs() >= f64::MIN_POSITIVE {
+                rod.y / -rod.x
+            } else {
+                pose.tan_obliquity()
+            },
             angle: pose.angle(),
+            crank: pose.mechanism().crank(),
         }
     }
 
@@ -55,7 +63,41 @@ impl TorqueLine {
     /// largest f64, as [`crate::analytic::statics::slider_force`] (the
     /// same division, with OM read off the construction).
     pub fn slider_force(&self, torque: f64) -> Result<Option<f64>> {
-        statics::force_over_arm(torque, self.m.y, self.angle)
+        statics::force_over_arm(torque, self.arm(), self.angle)
+    }
+
+    /// F_s = T tan φ / OM, finite wherever the side thrust is, also when
+    /// F_p alone is beyond the largest f64 (then |tan φ| < 1 for a finite
+    /// F_s, and T tan φ is finite): `Ok(None)` at a dead centre; the error
+    /// of [`TorqueLine::slider_force`] or [`TorqueLine::side_thrust`]
+    /// when F_s too is beyond it.
+    pub(crate) fn side_thrust_from_torque(&self, torque: f64) -> Result<Option<f64>> {
+        match self.slider_force(torque) {
+            Ok(Some(fp)) => self.side_thrust(fp).map(Some),
+            Ok(None) => Ok(None),
+            Err(e) => {
+                let moment = torque * self.tan_phi;
+                if !moment.is_finite() {
+                    return Err(e);
+                }
+                statics::force_over_arm(moment, self.arm(), self.angle).map_err(|_| e)
+            }
+        }
+    }
+
+    fn arm(&self) -> statics::Arm {
+        statics::Arm {
+            om: self.m.y,
+            crank: self.crank,
+            per_crank: self.om_per_crank(),
+        }
+    }
+
+    /// OM / r = sin θ + cos θ tan φ, tan φ read off the rod: zero only at a
+    /// dead centre, also where OM itself is below the smallest f64 (a tiny
+    /// crank a hair from a dead centre).
+    pub fn om_per_crank(&self) -> f64 {
+        statics::om_per_crank(self.angle, self.tan_phi)
     }
 
     /// Side thrust F_s = F_p tan φ (Ng eq. 7), tan φ read off the rod; an
@@ -103,6 +145,17 @@ mod tests {
         let f = tl.slider_force(1.0).unwrap().unwrap();
         assert!(f.is_finite() && (f * tl.om() - 1.0).abs() < 1e-15);
         assert!(tl.slider_force(f64::INFINITY).is_err());
+        // OM below the smallest number, a hair from the dead centre: the
+        // same error, not a dead centre.
+        let (pose, tl) = line(&m, 1e-230);
+        assert_eq!(tl.om(), 0.0);
+        assert!(tl.om_per_crank() > 0.0);
+        let err = tl.slider_force(1.0).unwrap_err();
+        assert!(
+            err.to_string().contains("below the smallest number"),
+            "{err}"
+        );
+        assert!(statics::slider_force(&pose, 1.0).is_err());
     }
 
     #[test]

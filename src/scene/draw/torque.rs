@@ -57,9 +57,15 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
     let (unit, force) = (scene.unit(), scene.force_unit());
     let om = format!("*{}{}*", ctx.letter(CrankCentre), ctx.letter(VelocityPoint));
     let t = scene.torque();
+    // OM below the smallest number (a tiny crank a hair from a dead
+    // centre) is not written 0: that is a dead centre.
+    let arm = if tl.om() == 0.0 && tl.om_per_crank() != 0.0 {
+        format!("< {} {unit}", sig(f64::from_bits(1)))
+    } else {
+        format!("= {} {unit}", sig(tl.om().abs()))
+    };
     let mut out = vec![RichText::parse(&format!(
-        "Torque line: {om} = {} {unit}, crank torque *T* = {} {force}·{unit}.",
-        sig(tl.om().abs()),
+        "Torque line: {om} {arm}, crank torque *T* = {} {force}·{unit}.",
         short(t)
     ))];
     let r = ctx.main.pose().mechanism().crank();
@@ -72,20 +78,17 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
         ),
         Ok(None) => format!("Forces: {fc}; dead centre: {om} = 0, no finite slider force."),
         // T / OM beyond the largest number: OM is small, not zero.
-        Err(_) => {
-            // F_s = T tan φ / OM may still be finite (tan φ small).
-            let tan_phi = tl.tan_phi();
-            let fs = if (t * tan_phi).is_finite() {
-                t * tan_phi / tl.om()
-            } else {
-                f64::INFINITY
-            };
-            format!(
-                "Forces: {fc}, *F*_p = *T*/{om} {}, *F*_s {}.",
-                amount(f64::INFINITY, force),
-                amount(fs, force)
+        Err(_) => format!(
+            "Forces: {fc}, *F*_p = *T*/{om} {}, *F*_s {}.",
+            amount(f64::INFINITY, force),
+            amount(
+                tl.side_thrust_from_torque(t)
+                    .ok()
+                    .flatten()
+                    .unwrap_or(f64::INFINITY),
+                force
             )
-        }
+        ),
     }));
     out
 }
@@ -199,7 +202,7 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     let sense = match tl.slider_force(t) {
         Ok(Some(fp)) => Some((fp.signum(), fp != 0.0)),
         Ok(None) => None,
-        Err(_) => Some((t.signum() * tl.om().signum(), true)),
+        Err(_) => Some((t.signum() * tl.om_per_crank().signum(), true)),
     };
     if let Some((sign, nonzero)) = sense {
         let ux = Vector::new(sign, 0.0);
