@@ -88,7 +88,9 @@ fn closed() -> std::io::Error {
 /// descriptor before `main` (a shell's `>/dev/null` opens it for writing
 /// only). Portable Unix, no `/proc`: the descriptor's device number is
 /// the null device's, and reading from it succeeds (it gives end of file
-/// at once; a write-only descriptor refuses with EBADF).
+/// at once; a write-only descriptor refuses with EBADF). The one input
+/// mistaken for it is `1<>/dev/null`, the null device opened read-write
+/// by hand.
 #[cfg(unix)]
 fn replaced_closed(file: &std::fs::File) -> bool {
     use std::io::Read;
