@@ -102,9 +102,16 @@ fn main() -> ExitCode {
 fn parse_error(e: clap::Error) -> ExitCode {
     use clap::error::ErrorKind;
     if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
-        return match e.print() {
+        // Flushed here, where an error can still be told: a full device
+        // or a reader gone is not a success.
+        use std::io::Write;
+        return match e.print().and_then(|()| std::io::stdout().flush()) {
             Ok(()) => ExitCode::SUCCESS,
-            Err(_) => ExitCode::from(REFUSED),
+            Err(err) if err.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::from(REFUSED),
+            Err(err) => {
+                eprintln!("slider-crank: error: cannot write to standard output: {err}");
+                ExitCode::from(REFUSED)
+            }
         };
     }
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {

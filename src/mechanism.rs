@@ -199,6 +199,19 @@ impl Pose {
         self.w
     }
 
+    /// tan φ = (r sin θ − e) / (l cos φ). Per unit crank,
+    /// (sin θ − e/r) / (w/r), where r sin θ − e is below the normal range
+    /// of f64 (a tiny crank a hair from the line of stroke): the quotient
+    /// of two underflowed lengths would be 0 where tan φ is not.
+    pub fn tan_obliquity(&self) -> f64 {
+        if self.h.abs() >= f64::MIN_POSITIVE {
+            self.h / self.w
+        } else {
+            let (r, e) = (self.mechanism.crank, self.mechanism.offset);
+            (self.angle.sin() - e / r) / (self.w / r)
+        }
+    }
+
     /// Slider position s = x_A = r cos θ + √(l² − (r sin θ − e)²).
     pub fn position(&self) -> f64 {
         self.mechanism.crank * self.angle.cos() + self.w
@@ -289,6 +302,21 @@ mod tests {
 
     fn deg(d: f64) -> Angle {
         Angle::from_degrees(d).unwrap()
+    }
+
+    #[test]
+    fn tan_obliquity_survives_an_underflowed_rise() {
+        // r sin θ = 1e-100 · 1.7e-232 is below the smallest f64; tan φ is
+        // sin θ / √(n² − sin²θ) ≈ 5.8e-233, not 0.
+        let m = SliderCrank::in_line(1e-100, 3e-100).unwrap();
+        let p = m.pose(deg(1e-230));
+        assert_eq!(p.rise(), 0.0);
+        let expected = 1e-230f64.to_radians() / 3.0;
+        assert!((p.tan_obliquity() / expected - 1.0).abs() < 1e-15);
+        // Elsewhere it is the quotient of the two lengths.
+        let p = SliderCrank::new(0.5, 3.0, 0.1).unwrap().pose(deg(33.0));
+        assert_eq!(p.tan_obliquity(), p.rise() / p.run());
+        assert_eq!(m.pose(deg(180.0)).tan_obliquity(), 0.0);
     }
 
     #[test]

@@ -7,6 +7,7 @@ use crate::analytic::statics::{Friction, slider_force, with_friction};
 use crate::angle::Angle;
 use crate::error::{Error, Result};
 use crate::mechanism::SliderCrank;
+use crate::render::plain;
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).
 pub const TEXTBOOK_RATIOS: [f64; 6] = [4.0, 4.5, 5.0, 5.5, 6.0, f64::INFINITY];
@@ -236,7 +237,7 @@ pub fn obliquity(ratios: &[f64], theta_degrees: f64) -> Result<Table> {
     Ok(Table {
         title: format!(
             "Error due to obliquity at θ = {}°, in crank radii (textbook §35)",
-            theta_degrees
+            plain(theta_degrees)
         ),
         headers: vec![
             "n".into(),
@@ -323,10 +324,10 @@ pub fn kinematics_head(mechanism: &SliderCrank, omega: f64) -> Table {
     Table {
         title: format!(
             "Kinematics: r = {}, l = {}, e = {}, ω = {} rad/s",
-            mechanism.crank(),
-            mechanism.rod(),
-            mechanism.offset(),
-            omega
+            plain(mechanism.crank()),
+            plain(mechanism.rod()),
+            plain(mechanism.offset()),
+            plain(omega)
         ),
         headers: [
             "θ (°)",
@@ -399,11 +400,11 @@ pub fn forces_head(mechanism: &SliderCrank, torque: f64, mu: f64) -> Table {
     Table {
         title: format!(
             "Static forces (Ng Table 2): r = {}, l = {}, e = {}, T = {}, μ = {}",
-            mechanism.crank(),
-            mechanism.rod(),
-            mechanism.offset(),
-            torque,
-            mu
+            plain(mechanism.crank()),
+            plain(mechanism.rod()),
+            plain(mechanism.offset()),
+            plain(torque),
+            plain(mu)
         ),
         headers: ["θ (°)", "F (eq. 6)", "F' (eq. 8)", "β (°)"]
             .iter()

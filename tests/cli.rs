@@ -1,6 +1,7 @@
 //! The command line: the contract of docs/design.md §4 and clear errors.
 
 use serde_json::Value;
+use std::path::Path;
 use std::process::{Command, Output};
 
 fn run(args: &[&str]) -> Output {
@@ -502,4 +503,95 @@ fn help_names_the_units() {
     for unit in ["rad/s²", "per second squared", "force × the length unit"] {
         assert!(analyze.contains(unit), "{unit}: {analyze}");
     }
+}
+
+/// Runs the binary with `args` through `sh`, standard output redirected
+/// by `redirect` (`>&-`, `>/dev/full`, ...).
+#[cfg(unix)]
+fn run_redirected(args: &[&str], redirect: &str) -> Output {
+    let script = format!("\"$0\" \"$@\" {redirect}");
+    Command::new("sh")
+        .arg("-c")
+        .arg(script)
+        .arg(env!("CARGO_BIN_EXE_slider-crank"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("sh runs")
+}
+
+/// Every subcommand, help and version: what each prints to standard output.
+const EVERY_OUTPUT: [&[&str]; 9] = [
+    &["analyze"],
+    &["analyze", "--json", "--angle", "0:360:30"],
+    &["table", "obliquity"],
+    &["check", "--samples", "100"],
+    &["figure", "fig-66-kisch"],
+    &["scene", "examples/ng-torque.toml"],
+    &["--help"],
+    &["analyze", "--help"],
+    &["--version"],
+];
+
+/// A refusal of standard output: exit 2, one line on standard error
+/// naming standard output and `why`.
+#[cfg(unix)]
+fn assert_stdout_refused(out: &Output, args: &[&str], why: &str) {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+    assert!(
+        stderr.starts_with("slider-crank: error: cannot write to standard output: ")
+            && stderr.contains(why),
+        "{args:?}: {stderr}"
+    );
+}
+
+#[test]
+#[cfg(unix)]
+fn closed_standard_output_is_an_error() {
+    // Issue 9 (10): `slider-crank analyze >&-` printed nothing and exited
+    // 0. (Stdio::null() is an open /dev/null, not a closed descriptor:
+    // the shell closes it.)
+    for args in EVERY_OUTPUT {
+        let out = run_redirected(args, ">&-");
+        assert_stdout_refused(&out, args, "it was closed");
+    }
+}
+
+#[test]
+#[cfg(unix)]
+fn a_full_device_on_standard_output_is_an_error() {
+    if !Path::new("/dev/full").exists() {
+        eprintln!("no /dev/full here: skipped");
+        return;
+    }
+    for args in EVERY_OUTPUT {
+        let out = run_redirected(args, ">/dev/full");
+        assert_stdout_refused(&out, args, "No space left on device");
+    }
+}
+
+#[test]
+#[cfg(unix)]
+fn the_null_device_is_not_taken_for_a_closed_output() {
+    // Opened for writing, by the shell or by Stdio::null(): written to, as
+    // the user asked. Only the runtime's stand-in for a closed descriptor
+    // (the null device opened for reading and writing) is refused.
+    let out = run_redirected(&["analyze"], ">/dev/null");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let out = Command::new(env!("CARGO_BIN_EXE_slider-crank"))
+        .arg("analyze")
+        .stdout(std::process::Stdio::null())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }

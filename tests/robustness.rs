@@ -65,6 +65,12 @@ fn scratch() -> tempfile::TempDir {
         "[page]\nwidth = 20000\nheight = 20000\n",
     )
     .unwrap();
+    std::fs::write(
+        p("huge-torque.toml"),
+        "angle = 45\nlayers = [\"mechanism\", \"velocity\", \"torque\"]\ntorque = 1e308\n\
+         [mechanism]\ncrank = 1e-100\nrod = 3e-100\n",
+    )
+    .unwrap();
     std::fs::write(p("old.svg"), "old").unwrap();
     std::fs::write(p("real.svg"), "old").unwrap();
     std::os::unix::fs::symlink("real.svg", p("link.svg")).unwrap();
@@ -87,13 +93,22 @@ fn run(row: &Row, dir: &Path, bin: &str, timeout: &str) -> std::process::Output 
 fn every_row_of_the_robustness_table_holds() {
     let rows = rows();
     assert!(rows.len() >= 60, "{} rows", rows.len());
+    let readme = include_str!("../README.md");
+    assert!(
+        readme.contains(&format!("{} bad or extreme inputs", rows.len())),
+        "README.md gives another count than the table's {} rows",
+        rows.len()
+    );
     let dir = scratch();
     let bin = std::env::var("ROBUSTNESS_BIN").unwrap_or(env!("CARGO_BIN_EXE_slider-crank").into());
     let bin = std::fs::canonicalize(bin).unwrap();
     let timeout = std::env::var("ROBUSTNESS_TIMEOUT").unwrap_or("60".into());
     let mut failures = Vec::new();
+    let mut times = Vec::new();
     for row in &rows {
+        let start = std::time::Instant::now();
         let out = run(row, dir.path(), bin.to_str().unwrap(), &timeout);
+        times.push((start.elapsed().as_secs_f64(), row.command.as_str()));
         let stderr = String::from_utf8_lossy(&out.stderr);
         let stdout = String::from_utf8_lossy(&out.stdout);
         let code = out.status.code();
@@ -130,6 +145,10 @@ fn every_row_of_the_robustness_table_holds() {
             ));
         }
     }
+    times.sort_by(|a, b| b.0.total_cmp(&a.0));
+    for (t, command) in times.iter().take(3) {
+        eprintln!("slowest: {t:.2} s  {command}");
+    }
     // The files that refused or redirected writes must not have changed.
     let read = |name: &str| std::fs::read_to_string(dir.path().join(name)).unwrap();
     assert_eq!(read("old.svg"), "old", "a refused run replaced old.svg");
@@ -160,4 +179,169 @@ fn every_row_of_the_robustness_table_holds() {
         rows.len(),
         failures.join("\n")
     );
+}
+
+/// The code spans of a Markdown cell, `\|` unescaped.
+fn spans(cell: &str) -> Vec<String> {
+    cell.split('`')
+        .skip(1)
+        .step_by(2)
+        .map(|s| s.replace("\\|", "|"))
+        .collect()
+}
+
+/// One row of the regression table: its cells.
+fn regression_rows() -> Vec<Vec<String>> {
+    let doc = include_str!("../docs/robustness.md");
+    let section = doc
+        .split("## Regressions against the version before hardening")
+        .nth(1)
+        .expect("the regression section");
+    let section = section.split("\n## ").next().unwrap();
+    section
+        .lines()
+        .filter(|l| l.starts_with("| ") && l.as_bytes().get(2).is_some_and(u8::is_ascii_digit))
+        .map(|line| {
+            let cells: Vec<String> = line
+                .trim_matches('|')
+                .split(" | ")
+                .map(|c| c.trim().to_string())
+                .collect();
+            assert_eq!(cells.len(), 5, "a row of five cells: {line}");
+            cells
+        })
+        .collect()
+}
+
+/// Every test function a row names exists, and a row that says "table"
+/// has its command in the table above (with the real devices).
+#[test]
+fn every_point_of_the_regression_table_is_tested() {
+    let rows = regression_rows();
+    let points: std::collections::BTreeSet<u32> = rows
+        .iter()
+        .map(|r| r[0].split(' ').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(
+        points,
+        (1..=10).collect(),
+        "each of the ten points has rows"
+    );
+    let table: Vec<String> = self::rows().into_iter().map(|r| r.command).collect();
+    let mut sources = String::new();
+    for dir in ["src", "tests"] {
+        let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)];
+        while let Some(d) = stack.pop() {
+            for entry in std::fs::read_dir(d).unwrap() {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    stack.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs") {
+                    sources.push_str(&std::fs::read_to_string(path).unwrap());
+                }
+            }
+        }
+    }
+    let commands = include_str!("regressions/commands.tsv");
+    for row in &rows {
+        let tests = &row[4];
+        let input = spans(&row[1]).into_iter().next().unwrap();
+        if input.starts_with("slider-crank") {
+            assert!(
+                commands.lines().any(|l| l.ends_with(&format!("\t{input}"))),
+                "{input} is not in tests/regressions/commands.tsv"
+            );
+        }
+        if tests.starts_with("table") {
+            let real = input
+                .replace("--out full", "--out /dev/full")
+                .replace("--out stdout", "--out /dev/stdout");
+            assert!(table.contains(&real), "{real} is not in the table");
+        }
+        for name in spans(tests) {
+            assert!(
+                sources.contains(&format!("fn {name}(")),
+                "no test function {name}"
+            );
+        }
+        assert!(
+            tests.starts_with("table") || !spans(tests).is_empty(),
+            "{input}: no test named"
+        );
+    }
+    // Every command the script runs has its row.
+    for line in commands.lines().filter(|l| !l.starts_with('#')) {
+        let command = line.split('\t').nth(1).unwrap();
+        assert!(
+            rows.iter().any(|r| r[1] == format!("`{command}`")),
+            "{command} has no row"
+        );
+    }
+}
+
+/// `tests/regressions/run.sh` on the built binary: every "now" cell of
+/// the regression table holds, and the devices and links are kept.
+#[test]
+fn the_regression_table_holds_now() {
+    let bin = std::env::var("ROBUSTNESS_BIN").unwrap_or(env!("CARGO_BIN_EXE_slider-crank").into());
+    let script = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/regressions/run.sh");
+    let out = Command::new("bash")
+        .arg(script)
+        .arg(bin)
+        .output()
+        .expect("bash runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report = String::from_utf8(out.stdout).unwrap();
+    let lines: Vec<Vec<&str>> = report.lines().map(|l| l.split('\t').collect()).collect();
+    let mut failures = Vec::new();
+    for row in regression_rows() {
+        let input = spans(&row[1]).into_iter().next().unwrap();
+        if !input.starts_with("slider-crank") {
+            continue;
+        }
+        let Some(line) = lines.iter().find(|l| l.get(1) == Some(&input.as_str())) else {
+            failures.push(format!("{input}: not run"));
+            continue;
+        };
+        if line.get(2).is_some_and(|s| s.starts_with("skipped")) {
+            continue;
+        }
+        let (status, printed, stderr) = (line[2], line[5], line.get(6).copied().unwrap_or(""));
+        let expected = row[3].split([':', ';']).next().unwrap();
+        if status != expected {
+            failures.push(format!("{input}: {status}, the table says {expected}"));
+        }
+        let quoted = spans(&row[3]);
+        if quoted.is_empty() && !stderr.is_empty() {
+            failures.push(format!("{input}: said {stderr}"));
+        }
+        for text in quoted {
+            if !stderr.contains(&text) {
+                failures.push(format!("{input}: standard error lacks '{text}': {stderr}"));
+            }
+        }
+        if printed.contains("(holds") || printed.contains("(says") {
+            failures.push(format!("{input}: printed {printed}"));
+        }
+    }
+    for (file, now) in [
+        ("link.svg", "still a link; real.svg starts <svg"),
+        ("stdout", "still a link"),
+        ("full", "still a device"),
+    ] {
+        let line = lines.iter().find(|l| l[0] == "files" && l[1] == file);
+        // `full` is made only when run as root.
+        if let Some(line) = line {
+            if line[2] != now {
+                failures.push(format!("{file}: {}", line[2]));
+            }
+        } else if file != "full" {
+            failures.push(format!("{file}: not reported"));
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -80,3 +80,76 @@ fn a_named_figure_can_be_restyled_in_a_scene_file() {
     assert_eq!(s.angles()[0].degrees(), 45.0);
     assert!(s.is_mirrored());
 }
+
+/// The text of the SVG element with id `id`, markup removed.
+fn text_of(svg: &str, id: &str) -> String {
+    let start = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let body = &svg[start..];
+    let body = &body[body.find('>').unwrap() + 1..body.find("</text>").unwrap()];
+    let mut out = String::new();
+    let mut in_tag = false;
+    for c in body.chars() {
+        match c {
+            '<' => in_tag = true,
+            '>' => in_tag = false,
+            // The notes keep a symbol with its value by no-break spaces.
+            '\u{a0}' if !in_tag => out.push(' '),
+            c if !in_tag => out.push(c),
+            _ => {}
+        }
+    }
+    out.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&")
+}
+
+#[test]
+fn a_force_beyond_the_largest_number_is_not_drawn_as_a_dead_centre() {
+    // Issue 9 (6), on the figure: T = 1e308 on r = 1e-100, l = 3e-100 at
+    // 45°, where OM = 8.8e-101 is small but not zero. The notes said "dead
+    // centre: OM = 0" and wrote F_c = T/r = inf as 0.
+    let scene = |angle: f64, rod: &str| {
+        let text = format!(
+            "angle = {angle}\nlayers = [\"mechanism\", \"velocity\", \"torque\"]\ntorque = 1e308\n\
+             [mechanism]\ncrank = 1e-100\nrod = {rod}\n"
+        );
+        to_svg(&Scene::from_toml(&text).unwrap().figure())
+    };
+    let svg = scene(45.0, "3e-100");
+    let om = text_of(&svg, "note-scales-1");
+    assert!(om.contains("8.786×10−101"), "{om}");
+    let forces = text_of(&svg, "note-scales-2");
+    assert!(!forces.contains("dead centre"), "{forces}");
+    assert!(forces.contains("Fc = T/r exceeds 1.798×10308"), "{forces}");
+    assert!(forces.contains("Fp = T/CE exceeds 1.798×10308"), "{forces}");
+    // The slider force's arrow is drawn in the sense of T / OM.
+    assert!(svg.contains("id=\"force-Fp\""));
+    for bad in ["inf", "NaN", "= 0 "] {
+        assert!(!forces.contains(bad), "{bad}: {forces}");
+    }
+    // A hair from the dead centre, OM = 2.3e-332 is below the smallest
+    // number: not written 0, not a dead centre; F_s = T/(4r) exceeds the
+    // largest number too.
+    let svg = scene(1e-230, "3e-100");
+    let om = text_of(&svg, "note-scales-1");
+    assert!(om.contains("CE < 4.941×10−324"), "{om}");
+    let forces = text_of(&svg, "note-scales-2");
+    assert!(!forces.contains("dead centre"), "{forces}");
+    assert!(forces.contains("Fp = T/CE exceeds"), "{forces}");
+    assert!(forces.contains("Fs exceeds"), "{forces}");
+    // At the dead centre it is one.
+    let svg = scene(0.0, "3e-100");
+    let forces = text_of(&svg, "note-scales-2");
+    assert!(forces.contains("dead centre: CE = 0"), "{forces}");
+    assert!(!svg.contains("id=\"force-Fp\""));
+    // A finite force whose side thrust is beyond the largest number (one
+    // ulp from the limit of assembly, at 90°).
+    let text = "angle = 90\nlayers = [\"mechanism\", \"velocity\", \"torque\"]\ntorque = 1e308\n\
+                [mechanism]\ncrank = 1\nrod = 1.0000000000000002\n";
+    let svg = to_svg(&Scene::from_toml(text).unwrap().figure());
+    let forces = text_of(&svg, "note-scales-2");
+    assert!(forces.contains("Fp = 1.000×10308"), "{forces}");
+    assert!(forces.contains("Fs exceeds 1.798×10308"), "{forces}");
+}

@@ -6,8 +6,10 @@
 //! (signed). Virtual work, T ω + F v_p = 0, gives the slider force F = T/OM
 //! along +x that holds the crank torque T (counter-clockwise positive).
 
+use crate::angle::Angle;
 use crate::error::{Error, Result, finite, non_negative};
 use crate::mechanism::Pose;
+use crate::render::plain;
 
 /// The signed length OM (= CE = E_y = −ds/dθ): the moment arm that turns a
 /// crank torque into a slider force (Ng eq. 2, 5). Zero at the dead centres.
@@ -20,27 +22,75 @@ pub fn om(pose: &Pose) -> f64 {
 /// force balances a torque.
 ///
 /// Errors: a torque that is not finite, or a force beyond the largest f64
-/// (a huge torque on a tiny mechanism: OM is small but not zero).
+/// (a huge torque on a tiny mechanism: OM is small but not zero). The
+/// torque line of the construction ([`crate::construct::TorqueLine`])
+/// divides through the same function, so the two agree on which is which.
 pub fn slider_force(pose: &Pose, torque: f64) -> Result<Option<f64>> {
-    let torque = finite("torque", torque)?;
-    let om = om(pose);
-    if om == 0.0 {
-        return Ok(None);
-    }
-    let f = torque / om;
-    if f.is_finite() {
-        Ok(Some(f))
-    } else {
-        Err(Error::OutOfRange {
-            name: "torque",
-            value: torque,
-            reason: format!(
-                "the slider force T/OM at θ = {}° (OM = {om:e}) exceeds the largest number (about 1.8e308): give the torque in a larger unit or the lengths in a smaller one",
-                pose.angle().degrees()
-            ),
-        })
-    }
+    let tan_phi = pose.tan_obliquity();
+    let arm = Arm {
+        om: om(pose),
+        crank: pose.mechanism().crank(),
+        per_crank: om_per_crank(pose.angle(), tan_phi),
+    };
+    force_over_arm(torque, arm, pose.angle())
 }
+
+/// The moment arm OM of a pose, in world units and per unit crank.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Arm {
+    /// Signed OM (= CE), world units: zero at a dead centre, and also when
+    /// r · OM/r is below the smallest f64 (a tiny crank a hair from a dead
+    /// centre).
+    pub om: f64,
+    /// The crank radius r.
+    pub crank: f64,
+    /// OM / r = sin θ + cos θ tan φ, which is zero only at a dead centre.
+    pub per_crank: f64,
+}
+
+/// OM / r = sin θ + cos θ tan φ (E_y = r sin θ + r cos θ tan φ): the arm
+/// per unit crank, which does not underflow where OM does.
+pub(crate) fn om_per_crank(angle: Angle, tan_phi: f64) -> f64 {
+    angle.sin() + angle.cos() * tan_phi
+}
+
+/// F_p = T / OM for the moment arm `arm` at the crank angle `angle`:
+/// `Ok(None)` at a dead centre (OM / r = 0), an error when T is not finite
+/// or the quotient is beyond the largest f64. The one division behind
+/// [`slider_force`] and [`crate::construct::TorqueLine::slider_force`].
+pub(crate) fn force_over_arm(torque: f64, arm: Arm, angle: Angle) -> Result<Option<f64>> {
+    let torque = finite("torque", torque)?;
+    let f = if arm.om != 0.0 {
+        torque / arm.om
+    } else if arm.per_crank == 0.0 {
+        return Ok(None);
+    } else {
+        // OM = r · (OM/r) is below the smallest f64, so r < 1 and
+        // |OM/r| < 1: neither quotient shrinks, and the first overflows
+        // only when the force does.
+        torque / arm.crank / arm.per_crank
+    };
+    if f.is_finite() {
+        return Ok(Some(f));
+    }
+    let om = if arm.om != 0.0 {
+        format!("OM = {:e}", arm.om)
+    } else {
+        format!("OM = {:e} r, below the smallest number", arm.per_crank)
+    };
+    Err(Error::OutOfRange {
+        name: "torque",
+        value: torque,
+        reason: format!(
+            "the slider force T/OM at θ = {}° ({om}) exceeds the largest number (about 1.8e308): {UNIT_ADVICE}",
+            plain(angle.degrees())
+        ),
+    })
+}
+
+/// What to do when a force exceeds the largest f64: forces scale with the
+/// unit of force the torque is given in (lengths cancel: T/OM is force).
+const UNIT_ADVICE: &str = "give the torque in a larger unit of force (kN·m rather than N·m)";
 
 /// Crank torque balanced by a slider force F along +x, T = F · OM (Ng eq. 2);
 /// zero at the dead centres, where the slider force passes through C.
@@ -50,8 +100,32 @@ pub fn torque_from_slider_force(pose: &Pose, force: f64) -> f64 {
 
 /// Side thrust of the guides on the slider, F_s = F_p tan φ (Ng eq. 7),
 /// signed along +y.
-pub fn side_thrust(pose: &Pose, slider_force: f64) -> f64 {
-    slider_force * pose.rise() / pose.run()
+///
+/// Errors: a slider force that is not finite, or a thrust beyond the
+/// largest f64 (a huge force near the limit of assembly, where tan φ
+/// grows without bound as the rod lines up with the crank).
+pub fn side_thrust(pose: &Pose, slider_force: f64) -> Result<f64> {
+    thrust(slider_force, pose.tan_obliquity(), pose.angle())
+}
+
+/// F_s = F_p tan φ at the crank angle `angle`, an error when F_p is not
+/// finite or the product is beyond the largest f64. The one product
+/// behind [`side_thrust`] and [`crate::construct::TorqueLine::side_thrust`].
+pub(crate) fn thrust(slider_force: f64, tan_phi: f64, angle: Angle) -> Result<f64> {
+    let slider_force = finite("slider force", slider_force)?;
+    let fs = slider_force * tan_phi;
+    if fs.is_finite() {
+        Ok(fs)
+    } else {
+        Err(Error::OutOfRange {
+            name: "slider force",
+            value: slider_force,
+            reason: format!(
+                "the side thrust F_p tan φ at θ = {}° (tan φ = {tan_phi:e}) exceeds the largest number (about 1.8e308): {UNIT_ADVICE}",
+                plain(angle.degrees())
+            ),
+        })
+    }
 }
 
 /// The slider force needed with friction in the guides.
@@ -73,7 +147,7 @@ pub enum Friction {
 pub fn with_friction(pose: &Pose, slider_force: f64, mu: f64) -> Result<Friction> {
     let mu = non_negative("friction", mu)?;
     let slider_force = finite("slider force", slider_force)?;
-    let k = mu * (pose.rise() / pose.run()).abs();
+    let k = mu * pose.tan_obliquity().abs();
     Ok(if k >= 1.0 {
         Friction::SelfLocking(k)
     } else {
@@ -155,6 +229,25 @@ mod tests {
             "{err}"
         );
         assert!(slider_force(&p, f64::NAN).is_err());
+    }
+
+    #[test]
+    fn an_arm_below_the_smallest_number_is_not_a_dead_centre() {
+        // θ = 1e-230° on r = 1e-100: OM = r (sin θ + cos θ tan φ) ≈ 2.3e-332
+        // is below the smallest f64 and computes as 0, but OM / r does not.
+        let m = SliderCrank::in_line(1e-100, 3e-100).unwrap();
+        let p = m.pose(Angle::from_degrees(1e-230).unwrap());
+        assert_eq!(om(&p), 0.0);
+        let err = slider_force(&p, 1.0).unwrap_err().to_string();
+        assert!(err.contains("θ = 1e-230°"), "{err}");
+        assert!(err.contains("below the smallest number"), "{err}");
+        // A torque small enough gives the finite force T / (r · OM/r).
+        let f = slider_force(&p, 1e-30).unwrap().unwrap();
+        let expected = 1e-30 / 1e-100 / (1e-230f64.to_radians() * (1.0 + 1.0 / 3.0));
+        assert!((f / expected - 1.0).abs() < 1e-12, "{f} {expected}");
+        // At the dead centre itself OM / r is zero too.
+        let p = m.pose(Angle::from_degrees(180.0).unwrap());
+        assert_eq!(slider_force(&p, 1e-30), Ok(None));
     }
 
     #[test]

@@ -7,6 +7,7 @@ use serde_json::{Value, json};
 use slider_crank::analytic::statics::{self, Friction};
 use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
 use slider_crank::geom::{Intersection, Point};
+use slider_crank::render::plain;
 use slider_crank::{Angle, ChainCentres, Error, Kinematics, Result, SliderCrank};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
@@ -92,6 +93,12 @@ fn fixed(x: f64, decimals: usize, width: usize) -> String {
     }
 }
 
+/// A value column of the text table: [`fixed`] in 20 characters, with at
+/// least one space before it however long the number.
+fn column(x: f64) -> String {
+    format!("{:>20}", format!(" {}", fixed(x, 10, 0)))
+}
+
 fn point_json(p: Point) -> Value {
     json!([num(p.x), num(p.y)])
 }
@@ -122,14 +129,17 @@ fn analyse(
         None => None,
         Some(t) => {
             let force = statics::slider_force(&pose, t)?;
-            let with_friction = match force {
-                Some(f) => Some(statics::with_friction(&pose, f, mu)?),
-                None => None,
+            let (side_thrust, with_friction) = match force {
+                Some(f) => (
+                    Some(statics::side_thrust(&pose, f)?),
+                    Some(statics::with_friction(&pose, f, mu)?),
+                ),
+                None => (None, None),
             };
             Some(Statics {
                 om: statics::om(&pose),
                 force,
-                side_thrust: force.map(|f| statics::side_thrust(&pose, f)),
+                side_thrust,
                 with_friction,
                 transmission: pose.transmission_angle().to_degrees(),
                 mu,
@@ -239,11 +249,7 @@ fn to_text(r: &Report) -> String {
         "quantity", "analytic", "graphical"
     ));
     let k = &r.exact;
-    out.push_str(&format!(
-        "  {:<26}{}\n",
-        "position x_A",
-        fixed(k.position, 10, 20)
-    ));
+    out.push_str(&format!("  {:<26}{}\n", "position x_A", column(k.position)));
     let rows = [
         ("velocity dx/dt", k.velocity, r.graphical[0]),
         ("acceleration d²x/dt²", k.acceleration, r.graphical[1]),
@@ -261,18 +267,13 @@ fn to_text(r: &Report) -> String {
     out.push_str(&format!(
         "  {:<26}{}\n",
         "rod angle φ (°)",
-        fixed(k.rod_angle.to_degrees(), 10, 20)
+        column(k.rod_angle.to_degrees())
     ));
     for (name, a, g) in rows {
-        out.push_str(&format!(
-            "  {:<26}{}{}\n",
-            name,
-            fixed(a, 10, 20),
-            fixed(g, 10, 20)
-        ));
+        out.push_str(&format!("  {:<26}{}{}\n", name, column(a), column(g)));
     }
     if let Some(s) = &r.statics {
-        out.push_str(&format!("  statics (μ = {})\n", s.mu));
+        out.push_str(&format!("  statics (μ = {})\n", plain(num(s.mu))));
         out.push_str(&format!(
             "    OM (= CE)                 {}\n",
             fixed(s.om, 10, 0)
@@ -381,10 +382,10 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     }
     out.text(&format!(
         "slider-crank: r = {}, l = {}, e = {} (n = {}), ω = {} rad/s, V_c = rω = {}\n",
-        m.crank(),
-        m.rod(),
-        m.offset(),
-        m.ratio(),
+        plain(m.crank()),
+        plain(m.rod()),
+        plain(m.offset()),
+        plain(m.ratio()),
         fixed(omega, 6, 0),
         fixed(m.crank() * omega, 6, 0)
     ))?;

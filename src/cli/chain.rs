@@ -12,6 +12,7 @@ use slider_crank::chain::{
 };
 use slider_crank::construct::Link;
 use slider_crank::geom::{Intersection, Point};
+use slider_crank::render::plain;
 use slider_crank::{Angle, Assembly, Error, Inversion, Result, SliderCrank};
 
 /// The chain flags shared by `analyze` and `check`.
@@ -317,10 +318,11 @@ pub fn check(
         let slot = CylindricChain::new(m, rho)?;
         (
             format!(
-                "check: curved slot ρ = {rho}, r = {}, l = {}, e = {}",
-                m.crank(),
-                m.rod(),
-                m.offset()
+                "check: curved slot ρ = {}, r = {}, l = {}, e = {}",
+                plain(rho),
+                plain(m.crank()),
+                plain(m.rod()),
+                plain(m.offset())
             ),
             slot_sweep(&slot, samples),
         )

@@ -5,6 +5,7 @@ use super::args::MechanismArgs;
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::construct::sweep;
+use slider_crank::render::plain;
 use slider_crank::{Error, Result};
 
 /// Default allowance of `check`: a difference passes when it is at most
@@ -72,10 +73,10 @@ pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
     let mut out = format!(
         "check: r = {}, l = {}, e = {} (n = {}), {} poses\n\
          a difference passes when at most {tolerance:.3e} × κ ({allowed:.1} ulps × κ, κ the condition number of the quantity at that pose)\n\n",
-        m.crank(),
-        m.rod(),
-        m.offset(),
-        m.ratio(),
+        plain(m.crank()),
+        plain(m.rod()),
+        plain(m.offset()),
+        plain(m.ratio()),
         report.poses,
     );
     out.push_str(&format!(

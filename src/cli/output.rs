@@ -1,9 +1,12 @@
 //! Standard output, written so that every failure is seen.
 //!
 //! A closed standard output (`>&-`) would otherwise swallow everything
-//! (the Rust runtime puts `/dev/null` in its place); here it is an error
-//! before any work, and a full device (`>/dev/full`) or a reader that went
-//! away is an error when written.
+//! (the Rust runtime puts `/dev/null` in its place, and the standard
+//! library takes EBADF on standard output for success); here it is an
+//! error before any work, and a full device (`>/dev/full`) or a reader
+//! that went away is an error when written or flushed. Output goes
+//! through a duplicate of descriptor 1, so that every write error is
+//! seen.
 
 use slider_crank::{Error, Result};
 use std::io::{BufWriter, ErrorKind, Write};
@@ -57,32 +60,46 @@ impl Stdout {
 #[cfg(unix)]
 fn raw() -> std::io::Result<Box<dyn Write>> {
     use std::os::fd::AsFd;
-    if closed_at_start() {
-        return Err(std::io::Error::other("it was closed (>&-)"));
+    // A descriptor closed and never replaced (a runtime that leaves it
+    // closed) cannot be duplicated: EBADF.
+    let fd = match std::io::stdout().as_fd().try_clone_to_owned() {
+        Ok(fd) => fd,
+        Err(e) if e.raw_os_error() == Some(EBADF) => return Err(closed()),
+        Err(e) => return Err(e),
+    };
+    let file = std::fs::File::from(fd);
+    if replaced_closed(&file) {
+        return Err(closed());
     }
-    let fd = std::io::stdout().as_fd().try_clone_to_owned()?;
-    Ok(Box::new(std::fs::File::from(fd)))
+    Ok(Box::new(file))
 }
 
-/// Whether descriptor 1 was closed when the program started. The Rust
-/// runtime opens `/dev/null` read-write on a closed standard descriptor
-/// before `main`; a shell's `>/dev/null` opens it write-only, so the two
-/// can be told apart (Linux: `/proc/self/fdinfo`).
+/// EBADF, the same number on every Unix.
 #[cfg(unix)]
-fn closed_at_start() -> bool {
-    if !cfg!(target_os = "linux") {
+const EBADF: i32 = 9;
+
+#[cfg(unix)]
+fn closed() -> std::io::Error {
+    std::io::Error::other("it was closed (>&-)")
+}
+
+/// Whether standard output is the null device opened for reading and
+/// writing: what the Rust runtime puts in place of a closed standard
+/// descriptor before `main` (a shell's `>/dev/null` opens it for writing
+/// only). Portable Unix, no `/proc`: the descriptor's device number is
+/// the null device's, and reading from it succeeds (it gives end of file
+/// at once; a write-only descriptor refuses with EBADF). The one input
+/// mistaken for it is `1<>/dev/null`, the null device opened read-write
+/// by hand.
+#[cfg(unix)]
+fn replaced_closed(file: &std::fs::File) -> bool {
+    use std::io::Read;
+    use std::os::unix::fs::{FileTypeExt, MetadataExt};
+    let (Ok(meta), Ok(null)) = (file.metadata(), std::fs::metadata("/dev/null")) else {
         return false;
-    }
-    let null =
-        std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == std::path::Path::new("/dev/null"));
-    let flags = std::fs::read_to_string("/proc/self/fdinfo/1")
-        .ok()
-        .and_then(|info| {
-            let line = info.lines().find(|l| l.starts_with("flags:"))?;
-            u32::from_str_radix(line["flags:".len()..].trim(), 8).ok()
-        });
-    // O_ACCMODE = 3, O_RDWR = 2.
-    null && flags.is_some_and(|f| f & 3 == 2)
+    };
+    let is_null = meta.file_type().is_char_device() && meta.rdev() == null.rdev();
+    is_null && (&*file).read(&mut [0u8; 1]).is_ok()
 }
 
 #[cfg(not(unix))]

@@ -110,7 +110,7 @@ pub fn format_number(v: f64, decimals: usize) -> String {
 }
 
 /// 10ᵏ with the exponent in superscript digits.
-fn power_of_ten(k: i32) -> String {
+pub(crate) fn power_of_ten(k: i32) -> String {
     const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
     let mut s = String::from("10");
     if k < 0 {

@@ -86,6 +86,7 @@ mod measure;
 mod path;
 mod plot;
 
+pub(crate) use axis::power_of_ten;
 pub use axis::{Axis, Scale, Tick, format_number};
 pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace, trace_tolerance};
 pub use locus::{Locus, LocusKind};

@@ -10,7 +10,7 @@ mod png;
 mod sizes;
 mod svg;
 
-pub use number::{GRID, fmt};
+pub use number::{GRID, fmt, plain};
 pub use output::write_atomic;
 #[cfg(feature = "png")]
 pub use png::{font_database, to_png};

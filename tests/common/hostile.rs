@@ -4,7 +4,7 @@
 //! NaN or infinity in it; the numbers of an analysis are finite.
 
 use slider_crank::analytic::statics;
-use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
+use slider_crank::construct::{InstantCentre, Kisch, TorqueLine, VelocityLine};
 use slider_crank::figure::FigureOptions;
 use slider_crank::render::to_svg;
 use slider_crank::{Angle, Figure, FigureName, Kinematics, Scene, SliderCrank};
@@ -158,8 +158,28 @@ fn analyze(m: &SliderCrank, angle: Angle, omega: f64, torque: f64) {
     assert!(e.velocity_ratio().is_finite());
     assert!(kisch.points().acceleration_ratio().is_finite());
     match statics::slider_force(&pose, torque) {
-        Ok(Some(f)) => assert!(f.is_finite()),
+        Ok(Some(f)) => {
+            assert!(f.is_finite());
+            match statics::side_thrust(&pose, f) {
+                Ok(s) => assert!(s.is_finite()),
+                Err(e) => assert_one_line(&e.to_string()),
+            }
+        }
         Ok(None) => assert_eq!(statics::om(&pose), 0.0),
+        Err(e) => assert_one_line(&e.to_string()),
+    }
+    // The torque line read off the construction: a dead centre only where
+    // OM is zero, never for a force beyond the largest number.
+    let line = TorqueLine::construct(&pose, &e);
+    match line.slider_force(torque) {
+        Ok(Some(f)) => {
+            assert!(f.is_finite());
+            match line.side_thrust(f) {
+                Ok(s) => assert!(s.is_finite()),
+                Err(e) => assert_one_line(&e.to_string()),
+            }
+        }
+        Ok(None) => assert_eq!(line.om(), 0.0),
         Err(e) => assert_one_line(&e.to_string()),
     }
 }

@@ -25,10 +25,20 @@ pub(crate) fn short(x: f64) -> String {
     }
 }
 
-/// Four significant figures, no exponent for ordinary magnitudes.
+/// Four significant figures, no exponent for ordinary magnitudes; below
+/// 1e-9 and from 1e15 a power of ten (`8.786×10⁻¹⁰¹`), never hundreds of
+/// digits or a tiny value written as zero.
 pub(crate) fn sig(x: f64) -> String {
     if x == 0.0 || !x.is_finite() {
         return "0".into();
+    }
+    if !(1e-9..1e15).contains(&x.abs()) {
+        let s = format!("{x:.3e}");
+        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
+        return format!(
+            "{mantissa}×{}",
+            crate::diagram::power_of_ten(exponent.parse().unwrap_or(0))
+        );
     }
     let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 12) as usize;
     let s = format!("{:.*}", digits, x);
@@ -47,22 +57,51 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
     let (unit, force) = (scene.unit(), scene.force_unit());
     let om = format!("*{}{}*", ctx.letter(CrankCentre), ctx.letter(VelocityPoint));
     let t = scene.torque();
+    // OM below the smallest number (a tiny crank a hair from a dead
+    // centre) is not written 0: that is a dead centre.
+    let arm = if tl.om() == 0.0 && tl.om_per_crank() != 0.0 {
+        format!("< {} {unit}", sig(f64::from_bits(1)))
+    } else {
+        format!("= {} {unit}", sig(tl.om().abs()))
+    };
     let mut out = vec![RichText::parse(&format!(
-        "Torque line: {om} = {} {unit}, crank torque *T* = {} {force}·{unit}.",
-        sig(tl.om().abs()),
+        "Torque line: {om} {arm}, crank torque *T* = {} {force}·{unit}.",
         short(t)
     ))];
     let r = ctx.main.pose().mechanism().crank();
-    let fc = format!("*F*_c = *T*/*r* = {} {force}", sig((t / r).abs()));
+    let fc = format!("*F*_c = *T*/*r* {}", amount(t / r, force));
     out.push(RichText::parse(&match tl.slider_force(t) {
-        Some(fp) => format!(
-            "Forces: {fc}, *F*_p = {} {force}, *F*_s = {} {force}.",
-            sig(fp.abs()),
-            sig(tl.side_thrust(fp).abs())
+        Ok(Some(fp)) => format!(
+            "Forces: {fc}, *F*_p {}, *F*_s {}.",
+            amount(fp, force),
+            amount(tl.side_thrust(fp).unwrap_or(f64::INFINITY), force)
         ),
-        None => format!("Forces: {fc}; dead centre: {om} = 0, no finite slider force."),
+        Ok(None) => format!("Forces: {fc}; dead centre: {om} = 0, no finite slider force."),
+        // T / OM beyond the largest number: OM is small, not zero.
+        Err(_) => format!(
+            "Forces: {fc}, *F*_p = *T*/{om} {}, *F*_s {}.",
+            amount(f64::INFINITY, force),
+            amount(
+                tl.side_thrust_from_torque(t)
+                    .ok()
+                    .flatten()
+                    .unwrap_or(f64::INFINITY),
+                force
+            )
+        ),
     }));
     out
+}
+
+/// `= 12.35 N` for a force's magnitude, or `exceeds 1.8×10³⁰⁸ N` when it is
+/// beyond the largest number (a huge torque on a tiny mechanism): never
+/// `inf`, never a false 0.
+fn amount(x: f64, unit: &str) -> String {
+    if x.is_finite() {
+        format!("= {} {unit}", sig(x.abs()))
+    } else {
+        format!("exceeds {} {unit}", sig(f64::MAX))
+    }
 }
 
 pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
@@ -158,8 +197,15 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     }
     let s = &ctx.sizes;
     let tl = ctx.main.torque();
-    if let Some(fp) = tl.slider_force(t) {
-        let ux = Vector::new(fp.signum(), 0.0);
+    // The slider force's sense along +x, and whether it is zero; a force
+    // beyond the largest number still has the sense of T / OM.
+    let sense = match tl.slider_force(t) {
+        Ok(Some(fp)) => Some((fp.signum(), fp != 0.0)),
+        Ok(None) => None,
+        Err(_) => Some((t.signum() * tl.om_per_crank().signum(), true)),
+    };
+    if let Some((sign, nonzero)) = sense {
+        let ux = Vector::new(sign, 0.0);
         let face = a + ux * s.block_half_length;
         out.push(NamedArrow {
             id: "Fp",
@@ -167,11 +213,13 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
             from: face,
             to: face + ux * world(FORCE_ARROW),
         });
-        let fs = tl.side_thrust(fp);
-        if fs != 0.0 {
-            let uy = Vector::new(0.0, fs.signum());
+        // F_s = F_p tan φ: its sense and its length to F_p's scale need
+        // only tan φ.
+        let tan_phi = tl.tan_phi();
+        if nonzero && tan_phi != 0.0 {
+            let uy = Vector::new(0.0, sign * tan_phi.signum());
             let face = a + uy * s.block_half_height;
-            let len = (FORCE_ARROW * (fs / fp).abs()).clamp(16.0, FORCE_ARROW);
+            let len = (FORCE_ARROW * tan_phi.abs()).clamp(16.0, FORCE_ARROW);
             out.push(NamedArrow {
                 id: "Fs",
                 name: "*F*_s",
@@ -195,5 +243,17 @@ mod tests {
         assert_eq!(sig(-0.00001), "-0.00001000");
         assert_eq!(sig(0.0), "0");
         assert_eq!(sig(12345.6), "12346");
+        // Issue 9: no 309-digit integers, no tiny value written as 0.
+        assert_eq!(sig(8.786053663290565e-101), "8.786×10⁻¹⁰¹");
+        assert_eq!(sig(f64::MAX), "1.798×10³⁰⁸");
+        assert_eq!(sig(-2.6487e102), "-2.649×10¹⁰²");
+        assert_eq!(sig(1e15), "1.000×10¹⁵");
+        assert_eq!(sig(1e-9), "0.000000001000");
+    }
+
+    #[test]
+    fn amounts_beyond_the_largest_number_say_so() {
+        assert_eq!(super::amount(-2.5, "N"), "= 2.500 N");
+        assert_eq!(super::amount(f64::INFINITY, "N"), "exceeds 1.798×10³⁰⁸ N");
     }
 }
