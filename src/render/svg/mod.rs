@@ -9,6 +9,7 @@
 //! angle marks, dimensions) and text ([`notes`]: labels, fixed texts,
 //! notes). Each symbol also tells the label placement what it covers.
 
+mod cull;
 mod frame;
 mod lines;
 mod marks;
@@ -185,7 +186,13 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
         obstacles: Obstacles::default(),
         pending: Vec::new(),
     };
-    let mut order: Vec<(usize, &Item)> = panel.items().iter().enumerate().collect();
+    let clip = panel.is_clipped().then(|| *panel.rect());
+    let mut order: Vec<(usize, &Item)> = panel
+        .items()
+        .iter()
+        .enumerate()
+        .filter(|(_, item)| clip.is_none_or(|r| cull::may_show(t, &r, &item.shape)))
+        .collect();
     order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
     let nodes: Vec<Box<dyn Node>> = order.iter().filter_map(|(_, item)| w.item(item)).collect();
     if panel.is_clipped() {

@@ -1,0 +1,97 @@
+//! Culling a clipped panel (a detail): what lies wholly outside its
+//! rectangle is not written, since the clip would hide it anyway.
+
+use crate::figure::{PageFromWorld, PageRect, Shape};
+use crate::geom::{Point, Vector};
+use crate::render::sizes::ANGLE_RADIUS;
+
+/// Page room around the points of a symbol drawn to page sizes: pins,
+/// dots and markers; arrows' heads; a right-angle mark.
+const MARK: f64 = 20.0;
+/// Room around a bearing's centre (its triangle, foot and hatching).
+const BEARING: f64 = 30.0;
+/// Room around a letter's anchor: its search reach and the letter itself.
+const LETTER: f64 = 60.0;
+
+/// Whether `shape`, mapped by `t`, may show in `rect`: its world points
+/// mapped to the page, grown by what its symbol adds in page units, meet
+/// the rectangle. Conservative: texts set at fixed places and notes
+/// always show; a shape with a non-finite point is left to its writer.
+pub(super) fn may_show(t: &PageFromWorld, rect: &PageRect, shape: &Shape) -> bool {
+    let square = |c: Point, r: f64| {
+        [
+            c + Vector::new(-r, -r),
+            c + Vector::new(r, r),
+            c + Vector::new(-r, r),
+            c + Vector::new(r, -r),
+        ]
+    };
+    let (points, room): (Vec<Point>, f64) = match shape {
+        Shape::Path(p) => (p.points().collect(), 2.0),
+        Shape::Polyline { points, .. } | Shape::Region { points } | Shape::Block { points } => {
+            (points.clone(), 2.0)
+        }
+        Shape::Circle { centre, radius } | Shape::Arc { centre, radius, .. } => {
+            (square(*centre, *radius).to_vec(), MARK)
+        }
+        Shape::Pin { centre } | Shape::Dot { centre } | Shape::Marker { centre, .. } => {
+            (vec![*centre], MARK)
+        }
+        Shape::Bearing { centre } => (vec![*centre], BEARING),
+        Shape::Arrow { from, to } | Shape::Hatch { from, to, .. } => (vec![*from, *to], MARK),
+        Shape::RightAngle { vertex, .. } => (vec![*vertex], MARK),
+        Shape::AngleMark { vertex, .. } => (vec![*vertex], ANGLE_RADIUS + LETTER),
+        Shape::Dimension {
+            from, to, offset, ..
+        } => (vec![*from, *to], offset.abs() + LETTER),
+        Shape::Label { anchor, .. } => (vec![*anchor], LETTER),
+        Shape::Text { .. } | Shape::Note { .. } => return true,
+    };
+    let page: Vec<Point> = points.iter().map(|p| t.apply(*p)).collect();
+    if page.is_empty() || !page.iter().all(|p| p.x.is_finite() && p.y.is_finite()) {
+        return true;
+    }
+    let (mut lo, mut hi) = (page[0], page[0]);
+    for p in &page {
+        lo = lo.inf(p);
+        hi = hi.sup(p);
+    }
+    lo.x - room <= rect.x + rect.width
+        && hi.x + room >= rect.x
+        && lo.y - room <= rect.y + rect.height
+        && hi.y + room >= rect.y
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn what_lies_wholly_outside_is_culled_and_what_reaches_in_is_kept() {
+        let t = PageFromWorld::uniform(1.0, false, Point::origin(), Point::origin()).unwrap();
+        // The page rectangle about the origin, so that the map's flip of
+        // y does not matter.
+        let rect = PageRect::new(-50.0, -50.0, 100.0, 100.0);
+        let far = Shape::Pin {
+            centre: Point::new(500.0, 500.0),
+        };
+        assert!(!may_show(&t, &rect, &far));
+        // A segment crossing the rectangle with both ends outside.
+        let across = Shape::Polyline {
+            points: vec![Point::new(-150.0, 0.0), Point::new(150.0, 0.0)],
+            closed: false,
+        };
+        assert!(may_show(&t, &rect, &across));
+        // A circle whose centre is outside but whose rim reaches in.
+        let circle = Shape::Circle {
+            centre: Point::new(-150.0, 0.0),
+            radius: 120.0,
+        };
+        assert!(may_show(&t, &rect, &circle));
+        // A pin just outside still shows its disc.
+        let near = Shape::Pin {
+            centre: Point::new(55.0, 0.0),
+        };
+        assert!(may_show(&t, &rect, &near));
+    }
+}
