@@ -79,6 +79,7 @@ mod mechanism;
 pub mod render;
 pub mod scene;
 pub mod table;
+mod units;
 
 pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
 pub use angle::Angle;
@@ -91,7 +92,8 @@ pub use error::{Error, Result};
 pub use figure::Style;
 pub use figure::{Figure, FigureName, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
-pub use scene::{Layer, Notation, Page, Scene};
+pub use scene::{Layer, Notation, Page, Scene, SceneFile};
+pub use units::{MAX_UNIT_CHARS, Unit, Units};
 
 /// The examples of README.md, compiled and run with the doctests.
 #[cfg(doctest)]

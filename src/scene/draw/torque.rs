@@ -44,7 +44,7 @@ pub(crate) fn sig(x: f64) -> String {
 pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
     let scene = ctx.scene;
     let tl = ctx.main.torque();
-    let (unit, force) = (scene.unit(), scene.force_unit());
+    let (unit, force) = (scene.units().length(), scene.units().force());
     let om = format!("*{}{}*", ctx.letter(CrankCentre), ctx.letter(VelocityPoint));
     let t = scene.torque();
     let mut out = vec![RichText::parse(&format!(
