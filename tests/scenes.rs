@@ -18,8 +18,10 @@ fn every_example_scene_builds_a_clean_figure() {
             continue;
         }
         let text = std::fs::read_to_string(&path).unwrap();
-        let scene = Scene::from_toml(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let svg = to_svg(&scene.figure());
+        let figure = SceneFile::from_toml(&text)
+            .and_then(|f| f.figure())
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let svg = to_svg(&figure);
         assert!(svg.starts_with("<svg"), "{}", path.display());
         assert!(!svg.contains("NaN"), "{}", path.display());
         n += 1;

@@ -8,8 +8,8 @@ use slider_crank::{Error, Result, SliderCrank, Unit, Units, rpm_to_omega};
 /// 3 ft rod: r = 0.5 ft, l = 3 ft, in line).
 #[derive(Debug, Clone, Args)]
 pub struct MechanismArgs {
-    /// Crank radius r, in any length unit (give the rod and the offset in
-    /// the same unit)
+    /// Crank radius r, in any length unit, named by --unit (give the rod and
+    /// the offset in the same unit)
     #[arg(
         long,
         allow_hyphen_values = true,

@@ -23,8 +23,8 @@ pub struct FigureArgs {
     /// inversion-4-hand-pump, slot-convergence
     #[arg(value_name = "NAME")]
     pub name: String,
-    /// Crank radius r [default: the figure's own, 0.5 ft for the §35
-    /// engine, 25 mm for Ng's rig]
+    /// Crank radius r, in the length unit (--unit) [default: the figure's
+    /// own, 0.5 ft for the §35 engine, 25 mm for Ng's rig]
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub crank: Option<f64>,
     /// Rod length l, in the unit of r [default: the figure's own, 3 ft for
@@ -86,9 +86,9 @@ pub struct FigureArgs {
     /// to place it at that size [default: the figure's own]
     #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
     pub width: Option<PageLength>,
-    /// Page height, as --width; a figure fitted to its drawing may end
-    /// higher, and one with an enlarged detail grows below it [default:
-    /// the figure's own]
+    /// Page height, as --width; the most a mechanism figure fitted to its
+    /// drawing takes (it may end shorter, and grows for an enlarged
+    /// detail) [default: the figure's own]
     #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
     pub height: Option<PageLength>,
     /// A title, set centred below the figure (the page grows by a line)

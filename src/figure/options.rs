@@ -2,7 +2,7 @@
 
 use super::Font;
 use super::Style;
-use super::{PageLength, Title};
+use super::{PageLength, PageUnit, Title};
 use crate::error::{Error, Result};
 use crate::scene::Page;
 use crate::{Angle, Layer, Notation, SliderCrank, Unit};
@@ -140,19 +140,15 @@ impl FigureOptions {
     /// the SVG's size is then in the unit of the width if that is mm or in,
     /// else in that of the height.
     pub(crate) fn page(&self, page: &Page) -> Result<Page> {
-        let get = |l: Option<PageLength>, own: f64| l.map_or(own, |l| l.page_units());
-        let unit = [self.width, self.height]
-            .into_iter()
-            .flatten()
-            .map(|l| l.unit())
-            .find(|u| u.is_physical())
-            .unwrap_or(page.unit());
-        Ok(Page::new(
-            get(self.width, page.width()),
-            get(self.height, page.height()),
+        if self.width.is_none() && self.height.is_none() {
+            return Ok(*page);
+        }
+        let own = |v: f64| PageLength::new(v, PageUnit::Px);
+        Page::sized(
+            self.width.map_or_else(|| own(page.width()), Ok)?,
+            self.height.map_or_else(|| own(page.height()), Ok)?,
             page.margin(),
-        )?
-        .with_unit(unit))
+        )
     }
 }
 
