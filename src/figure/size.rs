@@ -126,23 +126,25 @@ impl FromStr for PageLength {
                 "invalid page length '{shown}': {why} (a positive number of px, the default, mm or in: 800, 120mm, 4.5in)"
             ))
         };
-        // NaN, inf and plain numbers: page units.
-        let whole = s.parse::<f64>().ok().map(|_| (s, PageUnit::Px));
-        let (number, unit) = match whole {
-            Some(w) => w,
-            None => match s
-                .len()
-                .checked_sub(2)
-                .and_then(|i| s.get(i..).zip(s.get(..i)))
-            {
-                Some((suffix, number)) if suffix.chars().all(|c| c.is_ascii_alphabetic()) => (
-                    number,
-                    suffix
-                        .parse::<PageUnit>()
-                        .map_err(|_| bad("unknown unit"))?,
-                ),
-                _ => (s, PageUnit::Px),
-            },
+        // NaN, inf and plain numbers are page units; then a known suffix;
+        // other letters at the end are an unknown unit.
+        let (number, unit) = if s.parse::<f64>().is_ok() {
+            (s, PageUnit::Px)
+        } else if let Some((n, u)) = [PageUnit::Px, PageUnit::Mm, PageUnit::In]
+            .into_iter()
+            .find_map(|u| s.strip_suffix(u.name()).map(|n| (n, u)))
+        {
+            (n, u)
+        } else {
+            let n = s.trim_end_matches(char::is_alphabetic);
+            if !n.is_empty() && n.len() < s.len() {
+                let unit: String = s[n.len()..]
+                    .chars()
+                    .flat_map(char::escape_default)
+                    .collect();
+                return Err(bad(&format!("unknown unit '{unit}'")));
+            }
+            (s, PageUnit::Px)
         };
         let value: f64 = number.parse().map_err(|_| bad("not a number"))?;
         if !value.is_finite() {

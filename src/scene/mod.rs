@@ -86,7 +86,30 @@ impl Page {
         } else {
             height.unit()
         };
-        Ok(Self::new(width.page_units(), height.page_units(), margin)?.with_unit(unit))
+        let page = Self::new(width.page_units(), height.page_units(), margin);
+        // A size out of bounds is named as it was given (`0.1in`).
+        let page = page.map_err(|e| match e {
+            Error::OutOfRange {
+                name: name @ ("page width" | "page height"),
+                reason,
+                ..
+            } => {
+                let given = if name == "page width" { width } else { height };
+                let units = format!("{:.2}", given.page_units());
+                let units = units.trim_end_matches('0').trim_end_matches('.');
+                Error::OutOfRange {
+                    name,
+                    value: given.value(),
+                    reason: if given.unit().is_physical() {
+                        format!("{given} is {units} page units; {reason}")
+                    } else {
+                        reason
+                    },
+                }
+            }
+            e => e,
+        })?;
+        Ok(page.with_unit(unit))
     }
 
     /// The same page with its size written in `unit` in the SVG

@@ -205,7 +205,8 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         page: options.page(&name.page())?,
         mirror: options.mirror.unwrap_or(!name.is_ng()),
     };
-    match name {
+    let page = ctx.page;
+    let built = match name {
         FigureName::Fig61Centrodes => centrodes::build(&ctx),
         FigureName::Fig64VelocityDiagrams => velocity::build(&ctx),
         FigureName::AccelerationDiagrams => acceleration::build(&ctx),
@@ -226,7 +227,22 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
             "{} is a mechanism figure, not a diagram",
             name.name()
         ))),
-    }
+    };
+    // A page asked for that the diagram's bands do not fit: say so in its
+    // terms rather than a plot's.
+    let asked = options.width.is_some() || options.height.is_some();
+    built.map_err(|e| match e {
+        Error::OutOfRange {
+            name: "panel width" | "panel height",
+            ..
+        } if asked => Error::Parse(format!(
+            "a page of {} × {} units leaves no room for the plots of {}: give it a larger width or height",
+            format_number(page.width(), 1),
+            format_number(page.height(), 1),
+            name.name()
+        )),
+        e => e,
+    })
 }
 
 /// A figure being assembled from panels.
