@@ -21,7 +21,9 @@
 //!
 //! Velocities and accelerations are signed: d x_A/dt, d² x_A/dt², dφ/dt,
 //! d²φ/dt² with sin φ = (r sin θ − e)/l. Points at infinity are values
-//! ([`geom::Intersection::AtInfinity`]), never NaN or 1e16.
+//! ([`geom::Intersection::AtInfinity`]), never NaN or 1e16. Lengths and
+//! forces are in the user's units, which figures, tables and JSON name
+//! ([`Units`]: names only, no number is converted).
 //!
 //! ```
 //! use slider_crank::{Angle, Kinematics, SliderCrank};
