@@ -91,8 +91,9 @@ pub struct FigureOptions {
     /// The page's width (default the figure's own); in mm or in, the SVG
     /// gives its size in that unit ([`crate::Page::sized`]).
     pub width: Option<PageLength>,
-    /// The page's height (default the figure's own; a figure fitted to
-    /// its drawing may end higher, or grow below it for an enlarged detail).
+    /// The page's height (default the figure's own): the most a mechanism
+    /// figure fitted to its drawing takes (it may end shorter, and grows
+    /// for an enlarged detail); a diagram lays its bands out on it.
     pub height: Option<PageLength>,
     /// A title, set below the figure and written as the SVG's `<title>`.
     pub title: Option<Title>,
