@@ -21,7 +21,9 @@
 //!
 //! Velocities and accelerations are signed: d x_A/dt, d² x_A/dt², dφ/dt,
 //! d²φ/dt² with sin φ = (r sin θ − e)/l. Points at infinity are values
-//! ([`geom::Intersection::AtInfinity`]), never NaN or 1e16.
+//! ([`geom::Intersection::AtInfinity`]), never NaN or 1e16. Lengths and
+//! forces are in the user's units, which figures, tables and JSON name
+//! ([`Units`]: names only, no number is converted).
 //!
 //! ```
 //! use slider_crank::{Angle, Kinematics, SliderCrank};
@@ -79,6 +81,7 @@ mod mechanism;
 pub mod render;
 pub mod scene;
 pub mod table;
+mod units;
 
 pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
 pub use angle::Angle;
@@ -91,7 +94,8 @@ pub use error::{Error, Result};
 pub use figure::Style;
 pub use figure::{Figure, FigureName, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
-pub use scene::{Layer, Notation, Page, Scene};
+pub use scene::{Layer, Notation, Page, Scene, SceneFile};
+pub use units::{MAX_UNIT_CHARS, Unit, Units};
 
 /// The examples of README.md, compiled and run with the doctests.
 #[cfg(doctest)]

@@ -15,10 +15,14 @@ use std::process::ExitCode;
 /// D instantaneous centre of the rod, E where the rod produced meets the
 /// perpendicular to the stroke through C.
 ///
-/// Units: lengths in any one unit (ft, mm, m); crank speed in rpm or rad/s;
+/// Units: lengths in any one unit (ft, mm, m) and forces in any one unit,
+/// named by --unit and --force-unit wherever they are printed or drawn
+/// (names only: no number is converted); crank speed in rpm or rad/s;
 /// velocities come out in that length unit per second, accelerations per
-/// second squared, the rod's rates in rad/s and rad/s². The defaults are
-/// the engine of the textbook's §35 (r = 0.5 ft, l = 3 ft, 250 rpm).
+/// second squared, torques in force·length, the rod's rates in rad/s and
+/// rad/s². The defaults are the engine of the textbook's §35 (r = 0.5 ft,
+/// l = 3 ft, 250 rpm) and the seeds' own units (ft and lbf for the
+/// textbook's figures, mm and N for Ng's).
 ///
 /// Errors go to standard error as one line, with exit code 2 and nothing on
 /// standard output.
@@ -34,10 +38,11 @@ enum Command {
     /// Positions, velocities and accelerations at an angle: exact values and
     /// those read off the constructions (CE, CG, BD, FG); statics with --torque
     ///
-    /// Lengths are in the unit of --crank; velocities in that unit per
-    /// second, accelerations per second squared, the rod's angular velocity
-    /// and acceleration in rad/s and rad/s² (signed: d x_A/dt, d² x_A/dt²,
-    /// dφ/dt, d²φ/dt² with sin φ = (r sin θ − e)/l).
+    /// Lengths are in one unit, named by --unit (ft by default, the §35
+    /// engine's); velocities in that unit per second, accelerations per
+    /// second squared, the rod's angular velocity and acceleration in rad/s
+    /// and rad/s² (signed: d x_A/dt, d² x_A/dt², dφ/dt, d²φ/dt² with sin φ
+    /// = (r sin θ − e)/l). The JSON names them under `units`.
     Analyze(cli::analyze::AnalyzeArgs),
     /// Print a table of the seeds or a sweep: obliquity, acceleration-factor,
     /// kinematics, forces
@@ -56,7 +61,8 @@ enum Command {
     Check(cli::check::CheckArgs),
     /// Draw a named figure or diagram as SVG (or PNG with --out FILE.png)
     Figure(cli::figure::FigureArgs),
-    /// Draw the figure a TOML scene file describes
+    /// Draw the figure a TOML scene file describes (a mechanism figure, or
+    /// a named diagram with the file's changes)
     Scene(cli::scene::SceneArgs),
 }
 

@@ -8,6 +8,7 @@ use crate::angle::Angle;
 use crate::error::{Error, Result};
 use crate::mechanism::SliderCrank;
 use crate::render::plain;
+use crate::units::Units;
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).
 pub const TEXTBOOK_RATIOS: [f64; 6] = [4.0, 4.5, 5.0, 5.5, 6.0, f64::INFINITY];
@@ -282,12 +283,14 @@ pub fn acceleration_factor_table(ratios: &[f64], angles: &[f64]) -> Result<Table
 }
 
 /// A θ sweep of the slider's position, velocity and acceleration and the
-/// rod's angle and rates, for crank speed `omega` (rad/s).
+/// rod's angle and rates, for crank speed `omega` (rad/s), the lengths
+/// named in `units` (headers `x_A (ft)`, `dx/dt (ft/s)`).
 pub fn kinematics(
     mechanism: &SliderCrank,
     omega: f64,
     angles: &[f64],
     decimals: usize,
+    units: &Units,
 ) -> Result<Table> {
     let rows = angles
         .iter()
@@ -295,7 +298,7 @@ pub fn kinematics(
         .collect::<Result<Vec<_>>>()?;
     Ok(Table {
         rows,
-        ..kinematics_head(mechanism, omega)
+        ..kinematics_head(mechanism, omega, units)
     })
 }
 
@@ -320,27 +323,25 @@ pub fn kinematics_row(
 }
 
 /// The title and headers of [`kinematics`], without rows.
-pub fn kinematics_head(mechanism: &SliderCrank, omega: f64) -> Table {
+pub fn kinematics_head(mechanism: &SliderCrank, omega: f64, units: &Units) -> Table {
+    let u = units.length();
     Table {
         title: format!(
-            "Kinematics: r = {}, l = {}, e = {}, ω = {} rad/s",
+            "Kinematics: r = {} {u}, l = {} {u}, e = {} {u}, ω = {} rad/s",
             plain(mechanism.crank()),
             plain(mechanism.rod()),
             plain(mechanism.offset()),
             plain(omega)
         ),
-        headers: [
-            "θ (°)",
-            "x_A",
-            "dx/dt",
-            "d²x/dt²",
-            "φ (°)",
-            "dφ/dt",
-            "d²φ/dt²",
-        ]
-        .iter()
-        .map(|s| s.to_string())
-        .collect(),
+        headers: vec![
+            "θ (°)".into(),
+            format!("x_A ({u})"),
+            format!("dx/dt ({})", units.velocity()),
+            format!("d²x/dt² ({})", units.acceleration()),
+            "φ (°)".into(),
+            "dφ/dt (rad/s)".into(),
+            "d²φ/dt² (rad/s²)".into(),
+        ],
         rows: vec![],
         notes: vec![],
     }
@@ -348,15 +349,16 @@ pub fn kinematics_head(mechanism: &SliderCrank, omega: f64) -> Table {
 
 /// Ng's Table 2 columns: F (eq. 6), F' (eq. 8) and β (eq. 11 in general
 /// form) for crank torque `torque` and friction `mu`. Lengths and torque in
-/// consistent units (the defaults of the command line are mm and N·mm,
-/// giving newtons). A dead centre prints "∞"; self-locking prints
-/// "self-locking".
+/// consistent units, named by `units` (the defaults of the command line
+/// are mm and N·mm, giving newtons). A dead centre prints "∞";
+/// self-locking prints "self-locking".
 pub fn forces(
     mechanism: &SliderCrank,
     torque: f64,
     mu: f64,
     angles: &[f64],
     decimals: usize,
+    units: &Units,
 ) -> Result<Table> {
     let rows = angles
         .iter()
@@ -364,7 +366,7 @@ pub fn forces(
         .collect::<Result<Vec<_>>>()?;
     Ok(Table {
         rows,
-        ..forces_head(mechanism, torque, mu)
+        ..forces_head(mechanism, torque, mu, units)
     })
 }
 
@@ -396,20 +398,24 @@ pub fn forces_row(
 }
 
 /// The title and headers of [`forces`], without rows.
-pub fn forces_head(mechanism: &SliderCrank, torque: f64, mu: f64) -> Table {
+pub fn forces_head(mechanism: &SliderCrank, torque: f64, mu: f64, units: &Units) -> Table {
+    let (u, f) = (units.length(), units.force());
     Table {
         title: format!(
-            "Static forces (Ng Table 2): r = {}, l = {}, e = {}, T = {}, μ = {}",
+            "Static forces (Ng Table 2): r = {} {u}, l = {} {u}, e = {} {u}, T = {} {}, μ = {}",
             plain(mechanism.crank()),
             plain(mechanism.rod()),
             plain(mechanism.offset()),
             plain(torque),
+            units.torque(),
             plain(mu)
         ),
-        headers: ["θ (°)", "F (eq. 6)", "F' (eq. 8)", "β (°)"]
-            .iter()
-            .map(|s| s.to_string())
-            .collect(),
+        headers: vec![
+            "θ (°)".into(),
+            format!("F eq. 6 ({f})"),
+            format!("F' eq. 8 ({f})"),
+            "β (°)".into(),
+        ],
         rows: vec![],
         notes: vec![],
     }
@@ -453,8 +459,8 @@ mod tests {
     fn rows_written_one_at_a_time_match_the_whole_table() {
         let m = SliderCrank::in_line(0.5, 3.0).unwrap();
         let angles = [0.0, 30.0, 45.0, 90.0];
-        let whole = kinematics(&m, 26.0, &angles, 4).unwrap();
-        let head = kinematics_head(&m, 26.0);
+        let whole = kinematics(&m, 26.0, &angles, 4, &Units::FOOT_POUND).unwrap();
+        let head = kinematics_head(&m, 26.0, &Units::FOOT_POUND);
         let h = Head {
             title: &head.title,
             headers: &head.headers,

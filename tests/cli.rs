@@ -297,7 +297,11 @@ fn defaults_run_the_section_35_engine() {
     let out = run(&["analyze"]);
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
-    assert!(text.contains("r = 0.5, l = 3"));
+    assert!(text.contains("r = 0.5 ft, l = 3 ft"), "{text}");
+    assert!(
+        text.contains("velocity dx/dt") && text.contains("ft/s\n"),
+        "{text}"
+    );
     assert!(text.contains("θ = 45°"));
 }
 
@@ -593,5 +597,94 @@ fn the_null_device_is_not_taken_for_a_closed_output() {
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
+    );
+}
+
+#[test]
+fn analyze_carries_the_unit_names() {
+    let v = json(&["analyze", "--unit", "mm", "--json"]);
+    let u = &v["units"];
+    assert_eq!(u["length"], "mm");
+    assert_eq!(u["velocity"], "mm/s");
+    assert_eq!(u["acceleration"], "mm/s²");
+    assert_eq!(u["force"], "lbf");
+    assert_eq!(u["torque"], "lbf·mm");
+    assert_eq!(u["angular_velocity"], "rad/s");
+    // Names only: the numbers are those without the flag.
+    let plain = json(&["analyze", "--json"]);
+    assert_eq!(plain["analytic"], v["analytic"]);
+    assert_eq!(plain["units"]["length"], "ft");
+    assert_eq!(plain["units"]["force"], "lbf");
+    // Every object of a list, the chain's objects too.
+    let list = json(&[
+        "analyze",
+        "--unit",
+        "in",
+        "--force-unit",
+        "kN",
+        "--angle",
+        "0,90",
+        "--json",
+    ]);
+    for v in list.as_array().unwrap() {
+        assert_eq!(v["units"]["torque"], "kN·in");
+    }
+    for chain in [
+        vec!["--slot-radius", "5"],
+        vec!["--links", "1,3,4,3.5"],
+        vec!["--inversion", "3"],
+    ] {
+        let mut args = vec!["analyze", "--json", "--unit", "m"];
+        args.extend(chain.iter());
+        assert_eq!(json(&args)["units"]["velocity"], "m/s", "{chain:?}");
+    }
+    // The text names them beside the numbers.
+    let out = run(&[
+        "analyze",
+        "--crank",
+        "25",
+        "--rod",
+        "72",
+        "--unit",
+        "mm",
+        "--force-unit",
+        "N",
+        "--torque",
+        "264.87",
+    ]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.contains("r = 25 mm, l = 72 mm"), "{text}");
+    for line in [
+        "velocity dx/dt",
+        "acceleration d²x/dt²",
+        "slider force F_p",
+        "OM (= CE)",
+    ] {
+        let l = text.lines().find(|l| l.contains(line)).unwrap();
+        let unit = l.split_whitespace().last().unwrap();
+        assert!(["mm/s", "mm/s²", "N", "mm"].contains(&unit), "{l}");
+    }
+    assert!(!text.contains("ft"), "{text}");
+}
+
+#[test]
+fn tables_name_their_units() {
+    let out = run(&["table", "kinematics", "--unit", "m", "--format", "csv"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.starts_with("θ (°),x_A (m),dx/dt (m/s),d²x/dt² (m/s²),φ (°),dφ/dt (rad/s),"),
+        "{text}"
+    );
+    let out = run(&["table", "forces", "--force-unit", "kN"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("T = 264.87 kN·mm") && text.contains("F eq. 6 (kN)"),
+        "{text}"
+    );
+    let out = run(&["table", "forces"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("r = 25 mm") && text.contains("F eq. 6 (N)"),
+        "{text}"
     );
 }

@@ -1,8 +1,9 @@
 //! Scene files: the examples build, and every error names its line and
 //! column.
 
+use slider_crank::figure::PageUnit;
 use slider_crank::render::to_svg;
-use slider_crank::{Layer, Scene, Style};
+use slider_crank::{FigureName, Layer, Scene, SceneFile, Style, Units};
 
 fn error(text: &str) -> String {
     Scene::from_toml(text).unwrap_err().to_string()
@@ -17,8 +18,10 @@ fn every_example_scene_builds_a_clean_figure() {
             continue;
         }
         let text = std::fs::read_to_string(&path).unwrap();
-        let scene = Scene::from_toml(&text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-        let svg = to_svg(&scene.figure());
+        let figure = SceneFile::from_toml(&text)
+            .and_then(|f| f.figure())
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        let svg = to_svg(&figure);
         assert!(svg.starts_with("<svg"), "{}", path.display());
         assert!(!svg.contains("NaN"), "{}", path.display());
         n += 1;
@@ -152,4 +155,99 @@ fn a_force_beyond_the_largest_number_is_not_drawn_as_a_dead_centre() {
     let forces = text_of(&svg, "note-scales-2");
     assert!(forces.contains("Fp = 1.000×10308"), "{forces}");
     assert!(forces.contains("Fs exceeds 1.798×10308"), "{forces}");
+}
+
+#[test]
+fn a_scene_file_may_start_from_a_diagram() {
+    let text = "figure = \"fig-64-velocity-diagrams\"\nangle = 30\nomega = 100\n\
+                [mechanism]\ncrank = 150\nrod = 600\n[units]\nlength = \"mm\"\n\
+                [page]\nwidth = \"200mm\"\n";
+    let SceneFile::Diagram(name, options) = SceneFile::from_toml(text).unwrap() else {
+        panic!("a diagram");
+    };
+    assert_eq!(name, FigureName::Fig64VelocityDiagrams);
+    assert_eq!(options.length_unit.as_ref().unwrap().as_str(), "mm");
+    assert_eq!(options.angle.unwrap().degrees(), 30.0);
+    let svg = to_svg(&SceneFile::from_toml(text).unwrap().figure().unwrap());
+    assert!(svg.contains("(mm/s)") && !svg.contains("ft"));
+    assert!(svg.contains("width=\"200mm\""));
+    // Scene::from_toml reads mechanism figures only, and says where to look.
+    let e = error(text);
+    assert!(e.contains("is a diagram") && e.contains("SceneFile"), "{e}");
+}
+
+#[test]
+fn a_diagram_refuses_the_keys_it_does_not_use_at_their_place() {
+    let e = |text: &str| SceneFile::from_toml(text).unwrap_err().to_string();
+    let err = e("figure = \"rod-motion\"\nlayers = [\"mechanism\"]\n");
+    assert!(
+        err.starts_with("line 2, column 10:") && err.contains("`layers`"),
+        "{err}"
+    );
+    let err = e("figure = \"ng-fig-7-calibration\"\nangle = 30\n");
+    assert!(
+        err.starts_with("line 2, column 9:") && err.contains("does not use `angle`"),
+        "{err}"
+    );
+    let err = e("figure = \"rod-motion\"\nmirror = true\n");
+    assert!(err.contains("does not use `mirror`"), "{err}");
+    let err = e("figure = \"fig-64-velocity-diagrams\"\nnotation = \"ng\"\n");
+    assert!(err.contains("does not use `notation`"), "{err}");
+    let err = e("figure = \"fig-64-velocity-diagrams\"\n[page]\nmargin = 4\n");
+    assert!(err.starts_with("line 3, column 10:"), "{err}");
+    let err = e("figure = \"rod-motion\"\nrpm = -100\n");
+    assert!(
+        err.starts_with("line 2, column 7:") && err.contains("positive"),
+        "{err}"
+    );
+}
+
+#[test]
+fn units_are_grouped_and_the_old_spelling_still_reads() {
+    let new = Scene::from_toml("[units]\nlength = \"mm\"\nforce = \"N\"\n").unwrap();
+    let old =
+        Scene::from_toml("force_unit = \"N\"\n[mechanism]\ncrank = 0.5\nrod = 3\nunit = \"mm\"\n")
+            .unwrap();
+    assert_eq!(new.units(), &Units::MILLIMETRE_NEWTON);
+    assert_eq!(old.units(), new.units());
+    let e = error("force_unit = \"N\"\n[units]\nforce = \"kN\"\n");
+    assert!(
+        e.starts_with("line 3, column 9:") && e.contains("[units] force"),
+        "{e}"
+    );
+    let e = error("[units]\nlength = \"\"\n");
+    assert!(
+        e.starts_with("line 2, column 10:") && e.contains("invalid unit name"),
+        "{e}"
+    );
+    let e = error("[units]\nlenght = \"mm\"\n");
+    assert!(e.starts_with("line 2, column 1:"), "{e}");
+}
+
+#[test]
+fn a_scene_page_may_be_physical_and_the_figure_titled() {
+    let s = Scene::from_toml(
+        "figure = \"fig-63-velocity\"\ntitle = \"Fig. 63\"\nnotation = \"ng\"\n[page]\nwidth = \"6in\"\nheight = 400\n",
+    )
+    .unwrap();
+    assert_eq!(s.page().width(), 576.0);
+    assert_eq!(s.page().unit(), PageUnit::In);
+    let svg = to_svg(&s.figure());
+    assert!(svg.contains("width=\"6in\"") && svg.contains("<title>Fig. 63</title>"));
+    assert!(svg.contains("id=\"line-OM\""));
+    let e = error("[page]\nwidth = \"6 parsecs\"\n");
+    assert!(
+        e.starts_with("line 2, column 9:") && e.contains("invalid page length"),
+        "{e}"
+    );
+    let e = error("[page]\nwidth = \"0.2in\"\n");
+    assert!(
+        e.starts_with("line 2, column 9:") && e.contains("between 50"),
+        "{e}"
+    );
+    let e = error("title = \"\"\n");
+    assert!(
+        e.starts_with("line 1, column 9:") && e.contains("invalid title"),
+        "{e}"
+    );
 }

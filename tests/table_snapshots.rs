@@ -3,7 +3,7 @@
 //! table differs from Ng's Table 2 as docs/seed-errata.md explains).
 
 use slider_crank::table::{self, Format, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
-use slider_crank::{SliderCrank, rpm_to_omega};
+use slider_crank::{SliderCrank, Units, rpm_to_omega};
 
 fn settings() -> insta::Settings {
     let mut s = insta::Settings::clone_current();
@@ -29,7 +29,7 @@ fn obliquity_markdown() {
 fn forces_text() {
     let m = SliderCrank::in_line(25.0, 72.0).unwrap();
     let angles: Vec<f64> = (1..=16).map(|k| 10.0 * k as f64).collect();
-    let t = table::forces(&m, 264.87, 1.0, &angles, 2).unwrap();
+    let t = table::forces(&m, 264.87, 1.0, &angles, 2, &Units::MILLIMETRE_NEWTON).unwrap();
     settings().bind(|| insta::assert_snapshot!("table-forces", t.render(Format::Text)));
 }
 
@@ -37,6 +37,6 @@ fn forces_text() {
 fn kinematics_csv() {
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
     let angles: Vec<f64> = (0..=12).map(|k| 30.0 * k as f64).collect();
-    let t = table::kinematics(&m, rpm_to_omega(250.0), &angles, 4).unwrap();
+    let t = table::kinematics(&m, rpm_to_omega(250.0), &angles, 4, &Units::FOOT_POUND).unwrap();
     settings().bind(|| insta::assert_snapshot!("table-kinematics", t.render(Format::Csv)));
 }

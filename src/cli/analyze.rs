@@ -1,6 +1,6 @@
 //! `slider-crank analyze`: exact and graphical values at one or more angles.
 
-use super::args::{AngleSpec, MechanismArgs, SpeedArgs};
+use super::args::{AngleSpec, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
 use serde_json::{Value, json};
@@ -8,7 +8,7 @@ use slider_crank::analytic::statics::{self, Friction};
 use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
 use slider_crank::geom::{Intersection, Point};
 use slider_crank::render::plain;
-use slider_crank::{Angle, ChainCentres, Error, Kinematics, Result, SliderCrank};
+use slider_crank::{Angle, ChainCentres, Error, Kinematics, Result, SliderCrank, Units};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -28,9 +28,9 @@ pub struct AnalyzeArgs {
     #[command(flatten)]
     pub speed: SpeedArgs,
     /// Crank torque T, counter-clockwise positive, in force × the length
-    /// unit (N·mm for lengths in mm): adds the statics of Ng eq. 6–11 (OM,
-    /// slider force, side thrust, friction, transmission angle), the
-    /// forces in that force unit
+    /// unit (FORCE·UNIT, N·mm for lengths in mm): adds the statics of Ng
+    /// eq. 6–11 (OM, slider force, side thrust, friction, transmission
+    /// angle), the forces in that force unit
     #[arg(long, allow_negative_numbers = true, value_name = "T")]
     pub torque: Option<f64>,
     /// Coefficient of friction μ ≥ 0 of the slider in its guides (used
@@ -46,6 +46,8 @@ pub struct AnalyzeArgs {
     /// for a list or range of angles
     #[arg(long)]
     pub json: bool,
+    #[command(flatten)]
+    pub units: UnitArgs,
     #[command(flatten)]
     pub chain: super::chain::ChainArgs,
 }
@@ -173,9 +175,10 @@ fn analyse(
     })
 }
 
-fn to_json(m: &SliderCrank, r: &Report) -> Value {
+fn to_json(m: &SliderCrank, r: &Report, units: &Units) -> Value {
     let mut v = json!({
         "mechanism": {"crank": m.crank(), "rod": m.rod(), "offset": num(m.offset())},
+        "units": units,
         "angle_deg": num(r.degrees),
         "omega": num(r.omega),
         "points": {
@@ -225,13 +228,14 @@ fn fmt_point(p: Option<Point>) -> String {
     }
 }
 
-fn to_text(r: &Report) -> String {
+fn to_text(r: &Report, units: &Units) -> String {
+    let length = units.length();
     let mut out = format!("θ = {}°\n", r.degrees);
-    out.push_str(
-        "  points: C crank centre, B crank pin, A cross-head, D instantaneous centre of the rod,\n          \
+    out.push_str(&format!(
+        "  points ({length}): C crank centre, B crank pin, A cross-head, D instantaneous centre of the rod,\n          \
          E where the rod produced meets the perpendicular to the stroke through C,\n          \
          F and G of Klein's and Kisch's constructions, H of Kisch's\n",
-    );
+    ));
     for (name, p) in [
         ("C", Some(r.c)),
         ("B", Some(r.b)),
@@ -245,47 +249,72 @@ fn to_text(r: &Report) -> String {
         out.push_str(&format!("    {name}  {}\n", fmt_point(p)));
     }
     out.push_str(&format!(
-        "  {:<26}{:>20}{:>20}\n",
+        "  {:<26}{:>20}{:>20}  unit\n",
         "quantity", "analytic", "graphical"
     ));
     let k = &r.exact;
-    out.push_str(&format!("  {:<26}{}\n", "position x_A", column(k.position)));
+    out.push_str(&format!(
+        "  {:<26}{}{:20}  {length}\n",
+        "position x_A",
+        column(k.position),
+        ""
+    ));
+    let (velocity, acceleration) = (units.velocity(), units.acceleration());
     let rows = [
-        ("velocity dx/dt", k.velocity, r.graphical[0]),
-        ("acceleration d²x/dt²", k.acceleration, r.graphical[1]),
+        (
+            "velocity dx/dt",
+            k.velocity,
+            r.graphical[0],
+            velocity.as_str(),
+        ),
+        (
+            "acceleration d²x/dt²",
+            k.acceleration,
+            r.graphical[1],
+            acceleration.as_str(),
+        ),
         (
             "rod angular velocity",
             k.rod_angular_velocity,
             r.graphical[2],
+            "rad/s",
         ),
         (
             "rod angular accel.",
             k.rod_angular_acceleration,
             r.graphical[3],
+            "rad/s²",
         ),
     ];
     out.push_str(&format!(
-        "  {:<26}{}\n",
-        "rod angle φ (°)",
-        column(k.rod_angle.to_degrees())
+        "  {:<26}{}{:20}  °\n",
+        "rod angle φ",
+        column(k.rod_angle.to_degrees()),
+        ""
     ));
-    for (name, a, g) in rows {
-        out.push_str(&format!("  {:<26}{}{}\n", name, column(a), column(g)));
+    for (name, a, g, unit) in rows {
+        out.push_str(&format!(
+            "  {:<26}{}{}  {unit}\n",
+            name,
+            column(a),
+            column(g)
+        ));
     }
     if let Some(s) = &r.statics {
+        let force = units.force();
         out.push_str(&format!("  statics (μ = {})\n", plain(num(s.mu))));
         out.push_str(&format!(
-            "    OM (= CE)                 {}\n",
+            "    OM (= CE)                 {} {length}\n",
             fixed(s.om, 10, 0)
         ));
         match s.force {
             Some(f) => {
                 out.push_str(&format!(
-                    "    slider force F_p          {}\n",
+                    "    slider force F_p          {} {force}\n",
                     fixed(f, 10, 0)
                 ));
                 out.push_str(&format!(
-                    "    side thrust F_s           {}\n",
+                    "    side thrust F_s           {} {force}\n",
                     fixed(s.side_thrust.unwrap_or(0.0), 10, 0)
                 ));
             }
@@ -293,7 +322,7 @@ fn to_text(r: &Report) -> String {
         }
         match s.with_friction {
             Some(Friction::Force(f)) => out.push_str(&format!(
-                "    with friction F_p'        {}\n",
+                "    with friction F_p'        {} {force}\n",
                 fixed(f, 10, 0)
             )),
             Some(Friction::SelfLocking(k)) => out.push_str(&format!(
@@ -344,7 +373,16 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
                 .into(),
         ));
     }
-    if super::chain::analyze(m, &args.chain, &args.speed, &args.angle, args.json, out)? {
+    let units = args.units.units(Units::FOOT_POUND);
+    if super::chain::analyze(
+        m,
+        &args.chain,
+        &args.speed,
+        &args.angle,
+        args.json,
+        &units,
+        out,
+    )? {
         return Ok(());
     }
     let omega = args.speed.omega()?;
@@ -368,7 +406,7 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     if args.json {
         if !spec.is_list() {
             if let Some(r) = reports(&m, &spec, omega, args).next() {
-                out.text(&pretty(&to_json(&m, &r?))?)?;
+                out.text(&pretty(&to_json(&m, &r?, &units))?)?;
                 out.text("\n")?;
             }
             return Ok(());
@@ -376,22 +414,24 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
         out.text("[")?;
         for (i, r) in reports(&m, &spec, omega, args).enumerate() {
             out.text(if i == 0 { "\n" } else { ",\n" })?;
-            out.text(&indented(&pretty(&to_json(&m, &r?))?))?;
+            out.text(&indented(&pretty(&to_json(&m, &r?, &units))?))?;
         }
         return out.text("\n]\n");
     }
+    let u = units.length();
     out.text(&format!(
-        "slider-crank: r = {}, l = {}, e = {} (n = {}), ω = {} rad/s, V_c = rω = {}\n",
+        "slider-crank: r = {} {u}, l = {} {u}, e = {} {u} (n = {}), ω = {} rad/s, V_c = rω = {} {}\n",
         plain(m.crank()),
         plain(m.rod()),
         plain(m.offset()),
         plain(m.ratio()),
         fixed(omega, 6, 0),
-        fixed(m.crank() * omega, 6, 0)
+        fixed(m.crank() * omega, 6, 0),
+        units.velocity()
     ))?;
     for r in reports(&m, &spec, omega, args) {
         out.text("\n")?;
-        out.text(&to_text(&r?))?;
+        out.text(&to_text(&r?, &units))?;
     }
     Ok(())
 }

@@ -2,14 +2,14 @@
 
 use clap::Args;
 use slider_crank::analytic::kinematics::check_omega;
-use slider_crank::{Error, Result, SliderCrank, rpm_to_omega};
+use slider_crank::{Error, Result, SliderCrank, Unit, Units, rpm_to_omega};
 
 /// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
 /// 3 ft rod: r = 0.5 ft, l = 3 ft, in line).
 #[derive(Debug, Clone, Args)]
 pub struct MechanismArgs {
-    /// Crank radius r, in any length unit (give the rod and the offset in
-    /// the same unit)
+    /// Crank radius r, in any length unit, named by --unit (give the rod and
+    /// the offset in the same unit)
     #[arg(
         long,
         allow_hyphen_values = true,
@@ -40,6 +40,37 @@ impl MechanismArgs {
     /// The validated mechanism.
     pub fn mechanism(&self) -> Result<SliderCrank> {
         SliderCrank::new(self.crank, self.rod, self.offset)
+    }
+}
+
+/// The unit flags of every command that prints or draws quantities. Units
+/// are names only: the numbers are taken to be in them, never converted.
+#[derive(Debug, Clone, Args)]
+pub struct UnitArgs {
+    /// Name of the length unit the lengths are given in (mm, m, in, ft,
+    /// ...), written beside lengths, speeds (UNIT/s), accelerations
+    /// (UNIT/s²) and torques; a name only, no number is converted
+    /// [default: the seed's, ft for the textbook's engine, mm for Ng's rig]
+    #[arg(long = "unit", value_name = "UNIT")]
+    pub length: Option<Unit>,
+    /// Name of the force unit (N, kN, lbf, ...), written beside forces and
+    /// torques (FORCE·UNIT) [default: the seed's, lbf for the textbook's
+    /// engine, N for Ng's rig]
+    #[arg(long = "force-unit", value_name = "FORCE")]
+    pub force: Option<Unit>,
+}
+
+impl UnitArgs {
+    /// The units asked for, each defaulting to that of `own`.
+    pub fn units(&self, own: Units) -> Units {
+        let mut units = own;
+        if let Some(u) = &self.length {
+            units = units.with_length(u.clone());
+        }
+        if let Some(u) = &self.force {
+            units = units.with_force(u.clone());
+        }
+        units
     }
 }
 

@@ -13,7 +13,7 @@ use slider_crank::chain::{
 use slider_crank::construct::Link;
 use slider_crank::geom::{Intersection, Point};
 use slider_crank::render::plain;
-use slider_crank::{Angle, Assembly, Error, Inversion, Result, SliderCrank};
+use slider_crank::{Angle, Assembly, Error, Inversion, Result, SliderCrank, Units};
 
 /// The chain flags shared by `analyze` and `check`.
 #[derive(Debug, Clone, Args)]
@@ -236,6 +236,7 @@ pub fn analyze(
     speed: &SpeedArgs,
     angle_spec: &str,
     as_json: bool,
+    units: &Units,
     out: &mut Stdout,
 ) -> Result<bool> {
     if !chain.is_set() {
@@ -243,7 +244,7 @@ pub fn analyze(
     }
     let omega = speed.omega()?;
     let spec = AngleSpec::parse(angle_spec)?;
-    let one: Box<dyn Fn(f64) -> Result<Value>> = if let Some(rho) = chain.slot_radius {
+    let values: Box<dyn Fn(f64) -> Result<Value>> = if let Some(rho) = chain.slot_radius {
         let slot = CylindricChain::new(m, rho)?;
         Box::new(move |d| slot_json(&slot, d, omega))
     } else if let Some((q, mode)) = chain.quadric()? {
@@ -252,6 +253,11 @@ pub fn analyze(
         let n = chain.inversion.expect("is_set");
         let inv = InvertedChain::new(m, Inversion::from_number(n)?);
         Box::new(move |d| inversion_json(&inv, d, omega))
+    };
+    let one = |d: f64| -> Result<Value> {
+        let mut v = values(d)?;
+        v["units"] = json!(units);
+        Ok(v)
     };
     for d in spec.iter() {
         one(d)?;

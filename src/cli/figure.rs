@@ -1,12 +1,12 @@
 //! `slider-crank figure NAME`: one of the seeds' figures as SVG or PNG.
 
-use super::args::SpeedArgs;
+use super::args::{SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::figure::{FigureOptions, Fit, Font};
+use slider_crank::figure::{FigureOptions, Fit, Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{to_png, to_svg, write_atomic};
-use slider_crank::{Angle, Error, Figure, FigureName, Layer, Result, SliderCrank, Style};
+use slider_crank::{Angle, Error, Figure, FigureName, Layer, Notation, Result, SliderCrank, Style};
 use std::path::PathBuf;
 
 /// Draw a named figure: a mechanism figure of the seeds or a diagram.
@@ -23,8 +23,8 @@ pub struct FigureArgs {
     /// inversion-4-hand-pump, slot-convergence
     #[arg(value_name = "NAME")]
     pub name: String,
-    /// Crank radius r [default: the figure's own, 0.5 ft for the §35
-    /// engine, 25 mm for Ng's rig]
+    /// Crank radius r, in the length unit (--unit) [default: the figure's
+    /// own, 0.5 ft for the §35 engine, 25 mm for Ng's rig]
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
     pub crank: Option<f64>,
     /// Rod length l, in the unit of r [default: the figure's own, 3 ft for
@@ -65,10 +65,41 @@ pub struct FigureArgs {
     /// [default: both]
     #[arg(long, value_name = "FIT")]
     pub fit: Option<String>,
-    /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit)
-    /// when FILE ends in .png, SVG otherwise; `-` prints SVG. A device or
-    /// FIFO is written in place; a symbolic link is kept and its target
-    /// replaced
+    #[command(flatten)]
+    pub units: UnitArgs,
+    /// Letters of a mechanism figure: textbook (C, B, A, D, E) or ng (O,
+    /// C, P, I, M) [default: the figure's]
+    #[arg(long, value_name = "LETTERS")]
+    pub notation: Option<Notation>,
+    /// Draw the mechanism mirrored, the cylinder on the left, as the
+    /// textbook's figures are by default (mechanism figures,
+    /// fig-61-centrodes, fig-64-velocity-diagrams, coupler-curves)
+    #[arg(long, overrides_with = "no_mirror")]
+    pub mirror: bool,
+    /// Draw the mechanism unmirrored, the cylinder on the right, as Ng's
+    /// figures are by default
+    #[arg(long, overrides_with = "mirror")]
+    pub no_mirror: bool,
+    /// Page width: page units (px, 96 to the inch) like 800, or a size in
+    /// mm or in like 120mm or 4.5in, after which the SVG gives its width
+    /// and height in that unit (its viewBox stays in page units) for a book
+    /// to place it at that size [default: the figure's own]
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
+    pub width: Option<PageLength>,
+    /// Page height, as --width; the most a mechanism figure fitted to its
+    /// drawing takes (it may end shorter, and grows for an enlarged
+    /// detail) [default: the figure's own]
+    #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
+    pub height: Option<PageLength>,
+    /// A title, set centred below the figure (the page grows by a line)
+    /// and written as the SVG's <title>; *A* sets A in italic, V_p a
+    /// subscript
+    #[arg(long, value_name = "TEXT", allow_hyphen_values = true)]
+    pub title: Option<Title>,
+    /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit,
+    /// whatever unit the page is given in) when FILE ends in .png, SVG
+    /// otherwise; `-` prints SVG. A device or FIFO is written in place; a
+    /// symbolic link is kept and its target replaced
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
@@ -93,9 +124,8 @@ pub fn emit(figure: &Figure, path: Option<&PathBuf>, out: &mut Stdout) -> Result
     }
 }
 
-/// Runs the subcommand: SVG on standard output, or the file written.
-pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
-    let name = FigureName::from_name(&args.name)?;
+/// The options the flags ask for, validated.
+fn options(args: &FigureArgs, name: FigureName) -> Result<FigureOptions> {
     let mechanism = if args.crank.is_some() || args.rod.is_some() || args.offset.is_some() {
         let m = name.mechanism();
         Some(SliderCrank::new(
@@ -106,71 +136,57 @@ pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
     } else {
         None
     };
-    let angle = args.angle.map(Angle::from_degrees).transpose()?;
     let omega = if args.speed.rpm.is_some() || args.speed.omega.is_some() {
         Some(args.speed.omega()?)
     } else {
         None
     };
-    let style = args.style.as_deref().map(Style::from_name).transpose()?;
-    let font = args.font.as_deref().map(str::parse::<Font>).transpose()?;
-    let Some(mut scene) = name.scene() else {
-        if args.layers.is_some() {
-            return Err(Error::Parse(format!(
-                "{} is a diagram: --layers applies to the mechanism figures only",
-                name.name()
-            )));
-        }
-        let data = match &args.data {
-            Some(path) => Some(read_text(path, MAX_DATA_BYTES, "data file")?),
-            None => None,
-        };
-        let options = FigureOptions {
-            mechanism,
-            omega,
-            angle,
-            style,
-            font,
-            data,
-            fit: args.fit.as_deref().map(Fit::from_name).transpose()?,
-        };
-        let figure = name.figure(&options).map_err(|e| match (&args.data, e) {
-            (Some(path), Error::Parse(m)) if m.starts_with("data") => {
-                Error::Parse(format!("{}: {m}", path.display()))
+    let layers = match &args.layers {
+        Some(list) => {
+            let layers = Layer::parse_list(list)?;
+            if layers.is_empty() {
+                return Err(Error::Parse("--layers names no layer".into()));
             }
-            (_, e) => e,
-        })?;
-        return emit(&figure, args.out.as_ref(), out);
+            Some(layers)
+        }
+        None => None,
     };
-    for (given, flag) in [
-        (args.data.is_some(), "--data"),
-        (args.fit.is_some(), "--fit"),
-    ] {
-        if given {
-            return Err(Error::Parse(format!("{} does not use {flag}", name.name())));
+    let data = match &args.data {
+        Some(path) => Some(read_text(path, MAX_DATA_BYTES, "data file")?),
+        None => None,
+    };
+    Ok(FigureOptions {
+        mechanism,
+        omega,
+        angle: args.angle.map(Angle::from_degrees).transpose()?,
+        style: args.style.as_deref().map(Style::from_name).transpose()?,
+        font: args.font.as_deref().map(str::parse::<Font>).transpose()?,
+        layers,
+        data,
+        fit: args.fit.as_deref().map(Fit::from_name).transpose()?,
+        length_unit: args.units.length.clone(),
+        force_unit: args.units.force.clone(),
+        notation: args.notation,
+        mirror: match (args.mirror, args.no_mirror) {
+            (true, _) => Some(true),
+            (_, true) => Some(false),
+            _ => None,
+        },
+        width: args.width,
+        height: args.height,
+        title: args.title.clone(),
+    })
+}
+
+/// Runs the subcommand: SVG on standard output, or the file written.
+pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
+    let name = FigureName::from_name(&args.name)?;
+    let options = options(args, name)?;
+    let figure = name.figure(&options).map_err(|e| match (&args.data, e) {
+        (Some(path), Error::Parse(m)) if m.starts_with("data") => {
+            Error::Parse(format!("{}: {m}", path.display()))
         }
-    }
-    if let Some(m) = mechanism {
-        scene = scene.with_mechanism(m);
-    }
-    if let Some(a) = angle {
-        scene = scene.with_angles(vec![a])?;
-    }
-    if let Some(w) = omega {
-        scene = scene.with_omega(w)?;
-    }
-    if let Some(list) = &args.layers {
-        let layers = Layer::parse_list(list)?;
-        if layers.is_empty() {
-            return Err(Error::Parse("--layers names no layer".into()));
-        }
-        scene = scene.with_layers(layers);
-    }
-    if let Some(s) = style {
-        scene = scene.with_style(s);
-    }
-    if let Some(f) = font {
-        scene = scene.with_font(f);
-    }
-    emit(&scene.figure(), args.out.as_ref(), out)
+        (_, e) => e,
+    })?;
+    emit(&figure, args.out.as_ref(), out)
 }

@@ -5,10 +5,11 @@ use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
 use slider_crank::input::{MAX_SCENE_BYTES, read_text};
-use slider_crank::{Error, Result, Scene};
+use slider_crank::{Error, Result, SceneFile, Unit};
 use std::path::PathBuf;
 
-/// Draw the figure a scene file describes.
+/// Draw the figure a scene file describes: a mechanism figure, or one of
+/// the named diagrams with the file's changes.
 #[derive(Debug, Args)]
 pub struct SceneArgs {
     /// The scene file (TOML; see examples/*.toml)
@@ -19,6 +20,15 @@ pub struct SceneArgs {
     /// else new-computer-modern]
     #[arg(long, value_name = "NAME")]
     pub font: Option<String>,
+    /// Name of the length unit, over the file's `[units] length` (a name
+    /// only, no number is converted) [default: the file's, else its
+    /// figure's, else ft]
+    #[arg(long = "unit", value_name = "UNIT")]
+    pub length_unit: Option<Unit>,
+    /// Name of the force unit, over the file's `[units] force` [default:
+    /// the file's, else its figure's, else lbf]
+    #[arg(long = "force-unit", value_name = "FORCE")]
+    pub force_unit: Option<Unit>,
     /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit)
     /// when FILE ends in .png, SVG otherwise; `-` prints SVG. A device or
     /// FIFO is written in place; a symbolic link is kept and its target
@@ -30,10 +40,28 @@ pub struct SceneArgs {
 /// Runs the subcommand.
 pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
     let text = read_text(&args.file, MAX_SCENE_BYTES, "scene file")?;
-    let mut scene = Scene::from_toml(&text)
+    let file = SceneFile::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
-    if let Some(name) = &args.font {
-        scene = scene.with_font(name.parse::<Font>()?);
-    }
-    emit(&scene.figure(), args.out.as_ref(), out)
+    let font = args.font.as_deref().map(str::parse::<Font>).transpose()?;
+    let figure = match file {
+        SceneFile::Mechanism(mut scene) => {
+            if let Some(f) = font {
+                scene = scene.with_font(f);
+            }
+            if let Some(u) = &args.length_unit {
+                scene = scene.with_length_unit(u.clone());
+            }
+            if let Some(u) = &args.force_unit {
+                scene = scene.with_force_unit(u.clone());
+            }
+            scene.figure()
+        }
+        SceneFile::Diagram(name, mut options) => {
+            options.font = font.or(options.font);
+            options.length_unit = args.length_unit.clone().or(options.length_unit);
+            options.force_unit = args.force_unit.clone().or(options.force_unit);
+            name.figure(&options)?
+        }
+    };
+    emit(&figure, args.out.as_ref(), out)
 }

@@ -1,10 +1,10 @@
 //! `slider-crank table`: the seeds' tables and sweeps.
 
-use super::args::{AngleSpec, MechanismArgs, SpeedArgs, parse_list};
+use super::args::{AngleSpec, MechanismArgs, SpeedArgs, UnitArgs, parse_list};
 use super::output::Stdout;
 use clap::{Args, ValueEnum};
 use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
-use slider_crank::{Error, Result, SliderCrank};
+use slider_crank::{Error, Result, SliderCrank, Units};
 
 /// Which table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -92,6 +92,8 @@ pub struct TableArgs {
     /// kinematics, 2 for forces]
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub decimals: Option<usize>,
+    #[command(flatten)]
+    pub units: UnitArgs,
 }
 
 /// Ng's torque as implied by Table 2's F column, N·mm.
@@ -169,7 +171,8 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
                 Some(s) => s.clone(),
                 None => AngleSpec::parse("0:360:30")?,
             };
-            let head = table::kinematics_head(&m, omega);
+            let units = args.units.units(Units::FOOT_POUND);
+            let head = table::kinematics_head(&m, omega, &units);
             let rows = || {
                 spec.iter()
                     .map(|d| table::kinematics_row(&m, omega, d, decimals))
@@ -190,7 +193,8 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
                 Some(s) => s.clone(),
                 None => AngleSpec::parse("10:160:10")?,
             };
-            let head = table::forces_head(&m, torque, mu);
+            let units = args.units.units(Units::MILLIMETRE_NEWTON);
+            let head = table::forces_head(&m, torque, mu, &units);
             let rows = || {
                 spec.iter()
                     .map(|d| table::forces_row(&m, torque, mu, d, decimals))

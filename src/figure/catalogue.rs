@@ -6,7 +6,7 @@ use super::Style;
 use super::{Figure, FigureOptions, diagrams};
 use crate::error::{Error, Result};
 use crate::scene::{Layer, Notation, Page, Scene};
-use crate::{Angle, SliderCrank};
+use crate::{Angle, SliderCrank, Units};
 
 /// Ng's crank torque implied by his Table 2 (1 kg × 9.81 m/s² × 27 mm), in
 /// N·mm.
@@ -256,6 +256,17 @@ impl FigureName {
         }
     }
 
+    /// The units of its seed: millimetres and newtons for Ng's figures,
+    /// feet and pounds-force for the textbook's. The default of
+    /// [`FigureOptions::length_unit`] and [`FigureOptions::force_unit`].
+    pub fn units(&self) -> Units {
+        if self.is_ng() {
+            Units::MILLIMETRE_NEWTON
+        } else {
+            Units::FOOT_POUND
+        }
+    }
+
     /// The page it is drawn on.
     pub fn page(&self) -> Page {
         let (w, h) = match self {
@@ -314,6 +325,32 @@ impl FigureName {
         if let Some(f) = options.font {
             scene = scene.with_font(f);
         }
+        if let Some(layers) = &options.layers {
+            if layers.is_empty() {
+                return Err(Error::Parse(format!(
+                    "{}: the list of layers is empty",
+                    self.name()
+                )));
+            }
+            scene = scene.with_layers(layers.iter().copied());
+        }
+        if let Some(u) = &options.length_unit {
+            scene = scene.with_length_unit(u.clone());
+        }
+        if let Some(u) = &options.force_unit {
+            scene = scene.with_force_unit(u.clone());
+        }
+        if let Some(n) = options.notation {
+            scene = scene.with_notation(n);
+        }
+        if let Some(m) = options.mirror {
+            scene = scene.mirrored(m);
+        }
+        let page = options.page(scene.page())?;
+        scene = scene.with_page(page);
+        if let Some(t) = &options.title {
+            scene = scene.with_title(t.clone());
+        }
         Ok(scene.figure())
     }
 
@@ -323,19 +360,13 @@ impl FigureName {
         if self.is_diagram() {
             return None;
         }
-        let (unit, force) = if self.is_ng() {
-            ("mm", "N")
-        } else {
-            ("ft", "lbf")
-        };
         let angle = Angle::from_degrees(self.angle_degrees()).expect("finite");
         let scene = Scene::new(self.mechanism(), angle)
             .named(self.name())
             .with_layers(self.layers())
             .with_page(self.page())
             .with_style(Style::Textbook)
-            .with_unit(unit)
-            .with_force_unit(force);
+            .with_units(self.units());
         Some(if self.is_ng() {
             scene
                 .with_notation(Notation::Ng)

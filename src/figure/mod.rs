@@ -13,16 +13,21 @@ mod font;
 mod model;
 mod options;
 mod path;
+mod size;
 mod style;
 mod text;
 mod transform;
 
 pub use catalogue::FigureName;
+pub(crate) use diagrams::unused as unused_option;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
 pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use options::{FigureOptions, Fit};
 pub use path::{Path, PathBuilder, PathSegment};
+pub use size::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use style::Style;
 pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING, Pen};
-pub use text::{RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
+pub use text::{
+    MAX_TITLE_CHARS, RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Title,
+};
 pub use transform::{PageFromWorld, PageRect};

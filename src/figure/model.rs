@@ -2,7 +2,7 @@
 //! each with a role and a stable id.
 
 use super::Style;
-use super::{Font, PageFromWorld, PageRect, Path, RichText};
+use super::{Font, PageFromWorld, PageRect, PageUnit, Path, RichText, Title};
 use crate::geom::{Point, Vector};
 use serde_json::{Map, Value};
 
@@ -439,7 +439,16 @@ pub struct Figure {
     tolerance: f64,
     panels: Vec<Panel>,
     metadata: Map<String, Value>,
+    size_unit: PageUnit,
+    title: Option<Title>,
 }
+
+/// How far below a figure's last line its title's baseline sits, page
+/// units.
+const TITLE_DROP: f64 = 10.0;
+/// How much a title makes the page grow, page units: the drop, the
+/// descenders and a margin.
+const TITLE_BAND: f64 = 30.0;
 
 impl Figure {
     /// A figure of `width` × `height` page units; `metadata` adds keys to
@@ -465,6 +474,8 @@ impl Figure {
             tolerance,
             panels,
             metadata,
+            size_unit: PageUnit::Px,
+            title: None,
         }
     }
 
@@ -515,6 +526,65 @@ impl Figure {
     /// The same geometry in another style.
     pub fn with_style(mut self, style: Style) -> Self {
         self.style = style;
+        self
+    }
+
+    /// The unit the SVG gives its `width` and `height` in: page units
+    /// ([`PageUnit::Px`], the default) or, for a page asked for in
+    /// millimetres or inches, that unit (`width="120mm"`); the `viewBox`
+    /// stays in page units, 96 to the inch.
+    pub fn size_unit(&self) -> PageUnit {
+        self.size_unit
+    }
+
+    /// The same figure with its size written in `unit` (see
+    /// [`Figure::size_unit`]).
+    pub fn with_size_unit(mut self, unit: PageUnit) -> Self {
+        self.size_unit = unit;
+        self
+    }
+
+    /// Its title, if it has one.
+    pub fn title(&self) -> Option<&Title> {
+        self.title.as_ref()
+    }
+
+    /// The same figure with `title` set centred in a band added below it
+    /// (panel `panel-title`, item `title`; the page grows by 30 units, a
+    /// long title is set smaller to fit) and written as the SVG's
+    /// `<title>`. A second title replaces the first.
+    pub fn with_title(mut self, title: Title) -> Self {
+        if self.title.is_some() {
+            self.panels.retain(|p| p.id() != "panel-title");
+            self.height -= TITLE_BAND;
+        }
+        let text = title.rich();
+        let size = self.style.font_size(super::TextSize::Letter);
+        let fits = text.width(self.font, size) <= self.width - 40.0;
+        let shape = if fits {
+            Shape::Text {
+                at: Point::new(0.5 * self.width, self.height + TITLE_DROP),
+                offset: Vector::zeros(),
+                text,
+                align: Align::Middle,
+                size: super::TextSize::Letter,
+            }
+        } else {
+            // A note is set smaller until it fits the page's width.
+            Shape::Note {
+                corner: Point::new(20.0, self.height + TITLE_DROP - 12.0),
+                lines: vec![text],
+            }
+        };
+        let rect = PageRect::new(0.0, self.height, self.width, TITLE_BAND);
+        self.panels.push(Panel::new(
+            "panel-title",
+            rect,
+            PageFromWorld::identity(),
+            vec![Item::new("title", Role::Label, shape)],
+        ));
+        self.height += TITLE_BAND;
+        self.title = Some(title);
         self
     }
 

@@ -2,8 +2,10 @@
 
 use super::Font;
 use super::Style;
+use super::{PageLength, PageUnit, Title};
 use crate::error::{Error, Result};
-use crate::{Angle, SliderCrank};
+use crate::scene::Page;
+use crate::{Angle, Layer, Notation, SliderCrank, Unit};
 
 /// Which calibration line `ng-fig-7-calibration` draws.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -43,7 +45,10 @@ impl Fit {
 
 /// Changes to a named figure; `None` keeps the figure's own value. A
 /// figure that has no use for an option given refuses it (an error naming
-/// the option) rather than ignoring it.
+/// the option) rather than ignoring it. The units, the page size and the
+/// title are taken by every figure: a figure that writes no force (or no
+/// length) has nowhere to name that unit, and its metadata keeps the
+/// length unit.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct FigureOptions {
     /// The mechanism (figures of the textbook: the §35 engine, r = 0.5 ft,
@@ -59,6 +64,8 @@ pub struct FigureOptions {
     pub style: Option<Style>,
     /// The face of the text (default [`Font::NewComputerModern`]).
     pub font: Option<Font>,
+    /// The layers of a mechanism figure (default: the seed's).
+    pub layers: Option<Vec<Layer>>,
     /// CSV text of measured data: columns `angle` and `force` for
     /// `ng-fig-8-forces` (Ng's measured F′ by default), `force` and
     /// `strain` for `ng-fig-7-calibration` (Ng's Table 1), the columns of
@@ -66,6 +73,30 @@ pub struct FigureOptions {
     pub data: Option<String>,
     /// Which calibration line `ng-fig-7-calibration` draws (default both).
     pub fit: Option<Fit>,
+    /// The name of the length unit the mechanism is given in (the
+    /// figure's own by default: `ft` for the textbook's, `mm` for Ng's);
+    /// speeds are written in it per second. A name only: no number is
+    /// converted.
+    pub length_unit: Option<Unit>,
+    /// The name of the force unit (the figure's own by default: `lbf` for
+    /// the textbook's, `N` for Ng's); torques are written force·length.
+    pub force_unit: Option<Unit>,
+    /// The letters of a mechanism figure (default: the seed's).
+    pub notation: Option<Notation>,
+    /// Whether the mechanism is drawn mirrored, the cylinder on the left
+    /// (default: the seed's, mirrored for the textbook, not for Ng); the
+    /// mechanism figures and the diagrams drawn on the mechanism
+    /// (`fig-61-centrodes`, `fig-64-velocity-diagrams`, `coupler-curves`).
+    pub mirror: Option<bool>,
+    /// The page's width (default the figure's own); in mm or in, the SVG
+    /// gives its size in that unit ([`crate::Page::sized`]).
+    pub width: Option<PageLength>,
+    /// The page's height (default the figure's own): the most a mechanism
+    /// figure fitted to its drawing takes (it may end shorter, and grows
+    /// for an enlarged detail); a diagram lays its bands out on it.
+    pub height: Option<PageLength>,
+    /// A title, set below the figure and written as the SVG's `<title>`.
+    pub title: Option<Title>,
 }
 
 impl FigureOptions {
@@ -88,13 +119,37 @@ impl FigureOptions {
         if self.font.is_some() {
             v.push("--font");
         }
+        if self.layers.is_some() {
+            v.push("--layers");
+        }
         if self.data.is_some() {
             v.push("--data");
         }
         if self.fit.is_some() {
             v.push("--fit");
         }
+        if self.notation.is_some() {
+            v.push("--notation");
+        }
+        if self.mirror.is_some() {
+            v.push("--mirror");
+        }
         v
+    }
+
+    /// `page` with the width and height asked for in place of its own;
+    /// the SVG's size is then in the unit of the width if that is mm or in,
+    /// else in that of the height.
+    pub(crate) fn page(&self, page: &Page) -> Result<Page> {
+        if self.width.is_none() && self.height.is_none() {
+            return Ok(*page);
+        }
+        let own = |v: f64| PageLength::new(v, PageUnit::Px);
+        Page::sized(
+            self.width.map_or_else(|| own(page.width()), Ok)?,
+            self.height.map_or_else(|| own(page.height()), Ok)?,
+            page.margin(),
+        )
     }
 }
 

@@ -188,9 +188,80 @@ impl RichText {
     }
 }
 
+/// Longest title, in characters.
+pub const MAX_TITLE_CHARS: usize = 200;
+
+/// A figure's title: set as a caption centred below the figure and written
+/// as the SVG's `<title>`. It may use the notes' markup ([`RichText::parse`]:
+/// `*A*` in italic, `V_p` or `O_{bd}` with a subscript). Made by
+/// [`Title::new`] or [`str::parse`]: 1 to [`MAX_TITLE_CHARS`] characters, not
+/// all spaces, no control characters.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Title(String);
+
+impl Title {
+    /// The title `text`; an error (one line) when it is empty or blank,
+    /// longer than [`MAX_TITLE_CHARS`] or holds a control character (a
+    /// line break).
+    pub fn new(text: &str) -> crate::error::Result<Self> {
+        let bad = |why: &str| Err(crate::error::Error::Parse(format!("invalid title: {why}")));
+        if text.trim().is_empty() {
+            return bad("it is empty");
+        }
+        if text.chars().count() > MAX_TITLE_CHARS {
+            return bad(&format!("it is longer than {MAX_TITLE_CHARS} characters"));
+        }
+        if text.chars().any(char::is_control) {
+            return bad("it holds a control character (a title is one line)");
+        }
+        Ok(Title(text.to_string()))
+    }
+
+    /// The text as given, with its markup.
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+
+    /// The text as set: the markup parsed.
+    pub fn rich(&self) -> RichText {
+        RichText::parse(&self.0)
+    }
+}
+
+impl std::str::FromStr for Title {
+    type Err = crate::error::Error;
+
+    fn from_str(s: &str) -> crate::error::Result<Self> {
+        Title::new(s)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for Title {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let text = String::deserialize(d)?;
+        Title::new(&text).map_err(serde::de::Error::custom)
+    }
+}
+
+impl std::fmt::Display for Title {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn titles_are_one_line_of_text() {
+        let t: Title = "Velocity of *A*, V_p".parse().unwrap();
+        assert_eq!(t.rich().plain(), "Velocity of A, Vp");
+        for bad in ["", "   ", "two\nlines", &"x".repeat(201)] {
+            let e = bad.parse::<Title>().unwrap_err().to_string();
+            assert!(e.starts_with("invalid title"), "{e}");
+        }
+    }
 
     #[test]
     fn subscripts_and_italics() {

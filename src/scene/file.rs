@@ -1,34 +1,38 @@
 //! Scene files in TOML. Every error names the line and column of the bad
 //! key or value.
 
-use super::{Layer, Notation, Page, Scene};
+use super::{Layer, Notation, Page, Scene, SceneFile};
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
 use crate::figure::Style;
-use crate::figure::{FigureName, Font};
-use crate::{Angle, SliderCrank};
+use crate::figure::{FigureName, FigureOptions, Font, PageLength, Title};
+use crate::{Angle, SliderCrank, Unit};
 use serde::Deserialize;
+use std::ops::Range;
 use toml::Spanned;
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct SceneFile {
+struct File {
     /// A named figure to start from; the other keys override it.
     figure: Option<Spanned<String>>,
-    name: Option<String>,
+    name: Option<Spanned<String>>,
+    title: Option<Title>,
     mechanism: Option<MechanismFile>,
+    units: Option<UnitsFile>,
     angle: Option<Spanned<f64>>,
     angles: Option<Spanned<Vec<f64>>>,
-    layers: Option<Vec<Layer>>,
+    layers: Option<Spanned<Vec<Layer>>>,
     style: Option<Style>,
     font: Option<Font>,
-    notation: Option<Notation>,
-    mirror: Option<bool>,
+    notation: Option<Spanned<Notation>>,
+    mirror: Option<Spanned<bool>>,
     page: Option<PageFile>,
     rpm: Option<Spanned<f64>>,
     omega: Option<Spanned<f64>>,
     torque: Option<Spanned<f64>>,
-    force_unit: Option<String>,
+    /// The older spelling of `[units] force`.
+    force_unit: Option<Spanned<Unit>>,
     coupler: Option<Spanned<f64>>,
     tolerance: Option<Spanned<f64>>,
 }
@@ -39,14 +43,22 @@ struct MechanismFile {
     crank: Spanned<f64>,
     rod: Spanned<f64>,
     offset: Option<Spanned<f64>>,
-    unit: Option<String>,
+    /// The older spelling of `[units] length`.
+    unit: Option<Spanned<Unit>>,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct UnitsFile {
+    length: Option<Spanned<Unit>>,
+    force: Option<Spanned<Unit>>,
 }
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct PageFile {
-    width: Option<Spanned<f64>>,
-    height: Option<Spanned<f64>>,
+    width: Option<Spanned<PageLength>>,
+    height: Option<Spanned<PageLength>>,
     margin: Option<Spanned<f64>>,
 }
 
@@ -64,62 +76,149 @@ fn line_column(text: &str, at: usize) -> (usize, usize) {
     (line, column)
 }
 
-fn located(text: &str, span: std::ops::Range<usize>, message: impl std::fmt::Display) -> Error {
+fn located(text: &str, span: Range<usize>, message: impl std::fmt::Display) -> Error {
     let (line, column) = line_column(text, span.start);
     Error::Parse(format!("line {line}, column {column}: {message}"))
 }
 
 /// Runs a validation, locating its error at `span`.
-fn at<T>(text: &str, span: std::ops::Range<usize>, r: Result<T>) -> Result<T> {
+fn at<T>(text: &str, span: Range<usize>, r: Result<T>) -> Result<T> {
     r.map_err(|e| located(text, span, e))
 }
 
-pub(super) fn parse(text: &str) -> Result<Scene> {
-    let file: SceneFile = toml::from_str(text).map_err(|e| {
+pub(super) fn parse(text: &str) -> Result<SceneFile> {
+    let file: File = toml::from_str(text).map_err(|e| {
         let message = e.message().trim().to_string();
         match e.span() {
             Some(span) => located(text, span, message),
             None => Error::Parse(message),
         }
     })?;
-    let mut scene = match &file.figure {
-        Some(name) => {
-            let figure = FigureName::from_name(name.get_ref()).and_then(|f| {
-                f.scene().ok_or_else(|| {
-                    Error::Parse(format!(
-                        "'{}' is a diagram; a scene starts from a mechanism figure: {}",
-                        f.name(),
-                        FigureName::SCENES.map(|s| s.name()).join(", ")
-                    ))
-                })
-            });
-            at(text, name.span(), figure)?
+    if let Some(name) = &file.figure {
+        let figure = at(text, name.span(), FigureName::from_name(name.get_ref()))?;
+        if figure.is_diagram() {
+            return diagram(text, file, figure);
         }
+    }
+    Ok(SceneFile::Mechanism(mechanism_scene(text, file)?))
+}
+
+/// The validated mechanism of a `[mechanism]` table, an error located at
+/// the value that is wrong: the crank, the rod, or the offset.
+fn mechanism(text: &str, m: &MechanismFile) -> Result<SliderCrank> {
+    let offset = m.offset.as_ref().map_or(0.0, |o| *o.get_ref());
+    let built = SliderCrank::new(*m.crank.get_ref(), *m.rod.get_ref(), offset);
+    let span = match &built {
+        Err(Error::NotPositive { name: "crank", .. } | Error::NotFinite { name: "crank", .. }) => {
+            m.crank.span()
+        }
+        Err(Error::NotFinite { name: "offset", .. }) => {
+            m.offset.as_ref().map_or(m.rod.span(), |o| o.span())
+        }
+        _ => m.rod.span(),
+    };
+    at(text, span, built)
+}
+
+/// The length and force units the file names: `[units] length` and
+/// `force`, or their older spellings `[mechanism] unit` and `force_unit`
+/// (one spelling for each).
+fn units(text: &str, file: &File) -> Result<(Option<Unit>, Option<Unit>)> {
+    let new = file.units.as_ref();
+    let pick =
+        |new: Option<&Spanned<Unit>>, old: Option<&Spanned<Unit>>, key: &str, was: &str| match (
+            new, old,
+        ) {
+            (Some(n), Some(_)) => Err(located(
+                text,
+                n.span(),
+                format!("give the {key} unit once: `[units] {key}` replaces the older `{was}`"),
+            )),
+            (n, o) => Ok(n.or(o).map(|u| u.get_ref().clone())),
+        };
+    let length = pick(
+        new.and_then(|u| u.length.as_ref()),
+        file.mechanism.as_ref().and_then(|m| m.unit.as_ref()),
+        "length",
+        "[mechanism] unit",
+    )?;
+    let force = pick(
+        new.and_then(|u| u.force.as_ref()),
+        file.force_unit.as_ref(),
+        "force",
+        "force_unit",
+    )?;
+    Ok((length, force))
+}
+
+/// `page` with the file's `[page]` keys in place of its own, an error
+/// located at the value out of range.
+fn page(text: &str, p: &PageFile, page: &Page) -> Result<Page> {
+    let options = FigureOptions {
+        width: p.width.as_ref().map(|w| *w.get_ref()),
+        height: p.height.as_ref().map(|h| *h.get_ref()),
+        ..FigureOptions::default()
+    };
+    let margin = p.margin.as_ref().map_or(page.margin(), |m| *m.get_ref());
+    let base = Page::new(page.width(), page.height(), margin).map(|b| b.with_unit(page.unit()));
+    let built = base.and_then(|b| options.page(&b));
+    let span = match &built {
+        Err(
+            Error::NotPositive { name, .. }
+            | Error::NotFinite { name, .. }
+            | Error::OutOfRange { name, .. },
+        ) => match *name {
+            "page width" => p.width.as_ref().map(|s| s.span()),
+            "page height" => p.height.as_ref().map(|s| s.span()),
+            _ => p.margin.as_ref().map(|s| s.span()),
+        },
+        _ => None,
+    };
+    match span {
+        Some(span) => at(text, span, built),
+        None => built,
+    }
+}
+
+/// ω from `rpm` or `omega` (not both), with the span it was given at.
+fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
+    match (&file.rpm, &file.omega) {
+        (Some(_), Some(w)) => Err(located(
+            text,
+            w.span(),
+            "give either `rpm` or `omega`, not both",
+        )),
+        (Some(n), None) => Ok(Some((crate::rpm_to_omega(*n.get_ref()), n.span()))),
+        (None, Some(w)) => Ok(Some((*w.get_ref(), w.span()))),
+        (None, None) => Ok(None),
+    }
+}
+
+fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
+    let mut scene = match &file.figure {
+        Some(name) => FigureName::from_name(name.get_ref())?
+            .scene()
+            .expect("a mechanism figure has a scene"),
         None => Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::from_degrees(45.0)?)
             .with_layers([Layer::Mechanism]),
     };
-    if let Some(n) = file.name {
-        scene = scene.named(n);
+    if let Some(n) = &file.name {
+        scene = scene.named(n.get_ref().clone());
     } else if file.figure.is_none() {
         scene = scene.named("scene");
     }
-    if let Some(m) = file.mechanism {
-        let offset = m.offset.as_ref().map_or(0.0, |o| *o.get_ref());
-        let built = SliderCrank::new(*m.crank.get_ref(), *m.rod.get_ref(), offset);
-        // Name the value that is wrong: the crank, the rod, or the offset.
-        let span = match &built {
-            Err(
-                Error::NotPositive { name: "crank", .. } | Error::NotFinite { name: "crank", .. },
-            ) => m.crank.span(),
-            Err(Error::NotFinite { name: "offset", .. }) => {
-                m.offset.as_ref().map_or(m.rod.span(), |o| o.span())
-            }
-            _ => m.rod.span(),
-        };
-        scene.mechanism = at(text, span, built)?;
-        if let Some(u) = m.unit {
-            scene.unit = u;
-        }
+    if let Some(t) = &file.title {
+        scene = scene.with_title(t.clone());
+    }
+    if let Some(m) = &file.mechanism {
+        scene = scene.with_mechanism(mechanism(text, m)?);
+    }
+    let (length, force) = units(text, &file)?;
+    if let Some(u) = length {
+        scene = scene.with_length_unit(u);
+    }
+    if let Some(u) = force {
+        scene = scene.with_force_unit(u);
     }
     match (&file.angle, &file.angles) {
         (Some(_), Some(b)) => {
@@ -144,8 +243,8 @@ pub(super) fn parse(text: &str) -> Result<Scene> {
         }
         (None, None) => {}
     }
-    if let Some(layers) = file.layers {
-        scene = scene.with_layers(layers);
+    if let Some(layers) = &file.layers {
+        scene = scene.with_layers(layers.get_ref().iter().copied());
     }
     if let Some(s) = file.style {
         scene = scene.with_style(s);
@@ -153,59 +252,21 @@ pub(super) fn parse(text: &str) -> Result<Scene> {
     if let Some(f) = file.font {
         scene = scene.with_font(f);
     }
-    if let Some(n) = file.notation {
-        scene = scene.with_notation(n);
+    if let Some(n) = &file.notation {
+        scene = scene.with_notation(*n.get_ref());
     }
-    if let Some(m) = file.mirror {
-        scene = scene.mirrored(m);
+    if let Some(m) = &file.mirror {
+        scene = scene.mirrored(*m.get_ref());
     }
-    if let Some(p) = file.page {
-        let get = |v: &Option<Spanned<f64>>, d: f64| v.as_ref().map_or(d, |s| *s.get_ref());
-        let page = Page::new(
-            get(&p.width, scene.page.width()),
-            get(&p.height, scene.page.height()),
-            get(&p.margin, scene.page.margin()),
-        );
-        let span = match &page {
-            Err(
-                Error::NotPositive { name, .. }
-                | Error::NotFinite { name, .. }
-                | Error::OutOfRange { name, .. },
-            ) => match *name {
-                "page width" => p.width.as_ref().map(|s| s.span()),
-                "page height" => p.height.as_ref().map(|s| s.span()),
-                _ => p.margin.as_ref().map(|s| s.span()),
-            },
-            _ => None,
-        };
-        scene.page = match span {
-            Some(span) => at(text, span, page)?,
-            None => page?,
-        };
+    if let Some(p) = &file.page {
+        let built = page(text, p, scene.page())?;
+        scene = scene.with_page(built);
     }
-    match (&file.rpm, &file.omega) {
-        (Some(_), Some(w)) => {
-            return Err(located(
-                text,
-                w.span(),
-                "give either `rpm` or `omega`, not both",
-            ));
-        }
-        (Some(n), None) => {
-            scene = at(
-                text,
-                n.span(),
-                scene.with_omega(crate::rpm_to_omega(*n.get_ref())),
-            )?
-        }
-        (None, Some(w)) => scene = at(text, w.span(), scene.with_omega(*w.get_ref()))?,
-        (None, None) => {}
+    if let Some((omega, span)) = speed(text, &file)? {
+        scene = at(text, span, scene.with_omega(omega))?;
     }
     if let Some(t) = &file.torque {
         scene = at(text, t.span(), scene.with_torque(*t.get_ref()))?;
-    }
-    if let Some(f) = file.force_unit {
-        scene = scene.with_force_unit(f);
     }
     if let Some(q) = &file.coupler {
         let point = CouplerPoint::new(*q.get_ref()).ok_or_else(|| Error::OutOfRange {
@@ -219,6 +280,126 @@ pub(super) fn parse(text: &str) -> Result<Scene> {
         scene = at(text, t.span(), scene.with_tolerance(*t.get_ref()))?;
     }
     Ok(scene)
+}
+
+/// A named diagram with the file's changes: the keys of the mechanism
+/// figures' scenes (`name`, `angles`, `layers`, `torque`, `coupler`,
+/// `tolerance`, `[page] margin`) are refused, and so is any key the
+/// diagram has no use for, each at its line and column.
+fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
+    let scene_only = [
+        ("name", file.name.as_ref().map(|s| s.span())),
+        ("angles", file.angles.as_ref().map(|s| s.span())),
+        ("layers", file.layers.as_ref().map(|s| s.span())),
+        ("torque", file.torque.as_ref().map(|s| s.span())),
+        ("coupler", file.coupler.as_ref().map(|s| s.span())),
+        ("tolerance", file.tolerance.as_ref().map(|s| s.span())),
+        (
+            "[page] margin",
+            file.page
+                .as_ref()
+                .and_then(|p| p.margin.as_ref())
+                .map(|s| s.span()),
+        ),
+    ];
+    for (key, span) in scene_only {
+        if let Some(span) = span {
+            return Err(located(
+                text,
+                span,
+                format!(
+                    "`{key}` is a key of the mechanism figures; {} is a diagram",
+                    name.name()
+                ),
+            ));
+        }
+    }
+    // Each option alone, refused where the diagram does not use it.
+    let refuse = |one: FigureOptions, key: &str, span: Range<usize>| -> Result<()> {
+        match crate::figure::unused_option(name, &one) {
+            Some(_) => Err(located(
+                text,
+                span,
+                format!("{} does not use `{key}`", name.name()),
+            )),
+            None => Ok(()),
+        }
+    };
+    let mut options = FigureOptions::default();
+    if let Some(m) = &file.mechanism {
+        let built = mechanism(text, m)?;
+        refuse(
+            FigureOptions {
+                mechanism: Some(built),
+                ..FigureOptions::default()
+            },
+            "[mechanism]",
+            m.crank.span(),
+        )?;
+        options.mechanism = Some(built);
+    }
+    if let Some(a) = &file.angle {
+        let angle = at(text, a.span(), Angle::from_degrees(*a.get_ref()))?;
+        refuse(
+            FigureOptions {
+                angle: Some(angle),
+                ..FigureOptions::default()
+            },
+            "angle",
+            a.span(),
+        )?;
+        options.angle = Some(angle);
+    }
+    if let Some((omega, span)) = speed(text, &file)? {
+        let key = if file.rpm.is_some() { "rpm" } else { "omega" };
+        refuse(
+            FigureOptions {
+                omega: Some(omega),
+                ..FigureOptions::default()
+            },
+            key,
+            span.clone(),
+        )?;
+        if !(omega > 0.0 && omega.is_finite()) {
+            return Err(located(
+                text,
+                span,
+                "the diagrams are drawn for a crank turning counter-clockwise: give a positive speed",
+            ));
+        }
+        options.omega = Some(omega);
+    }
+    if let Some(n) = &file.notation {
+        refuse(
+            FigureOptions {
+                notation: Some(*n.get_ref()),
+                ..FigureOptions::default()
+            },
+            "notation",
+            n.span(),
+        )?;
+    }
+    if let Some(m) = &file.mirror {
+        refuse(
+            FigureOptions {
+                mirror: Some(*m.get_ref()),
+                ..FigureOptions::default()
+            },
+            "mirror",
+            m.span(),
+        )?;
+        options.mirror = Some(*m.get_ref());
+    }
+    options.style = file.style;
+    options.font = file.font;
+    options.title = file.title.clone();
+    (options.length_unit, options.force_unit) = units(text, &file)?;
+    if let Some(p) = &file.page {
+        page(text, p, &name.page())?;
+        options.width = p.width.as_ref().map(|w| *w.get_ref());
+        options.height = p.height.as_ref().map(|h| *h.get_ref());
+    }
+    Ok(SceneFile::Diagram(name, options))
 }
 
 #[cfg(test)]

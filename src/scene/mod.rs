@@ -26,19 +26,21 @@ use crate::error::{Error, Result, finite, positive};
 use crate::figure::Figure;
 use crate::figure::Font;
 use crate::figure::Style;
-use crate::{Angle, SliderCrank};
+use crate::figure::{FigureName, FigureOptions, PageLength, PageUnit, Title};
+use crate::{Angle, SliderCrank, Unit, Units};
 
 /// Default drawing tolerance of curves, in page units: the curve
 /// engine's (docs/design.md §6).
 pub use crate::diagram::DEFAULT_TOLERANCE;
 
 /// A page: its size and the margin kept clear on every side, in page units
-/// (SVG user units, 1/96 in).
+/// (SVG user units, 1/96 in), and the unit the SVG gives its size in.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Page {
     width: f64,
     height: f64,
     margin: f64,
+    unit: PageUnit,
 }
 
 impl Page {
@@ -54,7 +56,7 @@ impl Page {
                 return Err(Error::OutOfRange {
                     name,
                     value: v,
-                    reason: "a page is between 50 and 20000 units".into(),
+                    reason: "a page is between 50 and 20000 units (px, 96 to the inch: 13.3 mm to 5.29 m)".into(),
                 });
             }
         }
@@ -69,7 +71,58 @@ impl Page {
             width,
             height,
             margin,
+            unit: PageUnit::Px,
         })
+    }
+
+    /// A page of `width` × `height` given with their units ([`PageLength`]:
+    /// `800`, `120mm`, `4.5in`), laid out in page units (96 to the inch),
+    /// with `margin` in page units. The SVG gives its size in the unit of
+    /// `width` if that is physical (mm or in), else in that of `height`
+    /// ([`Page::unit`]). The bounds are those of [`Page::new`].
+    pub fn sized(width: PageLength, height: PageLength, margin: f64) -> Result<Self> {
+        let unit = if width.unit().is_physical() {
+            width.unit()
+        } else {
+            height.unit()
+        };
+        let page = Self::new(width.page_units(), height.page_units(), margin);
+        // A size out of bounds is named as it was given (`0.1in`).
+        let page = page.map_err(|e| match e {
+            Error::OutOfRange {
+                name: name @ ("page width" | "page height"),
+                reason,
+                ..
+            } => {
+                let given = if name == "page width" { width } else { height };
+                let units = format!("{:.2}", given.page_units());
+                let units = units.trim_end_matches('0').trim_end_matches('.');
+                Error::OutOfRange {
+                    name,
+                    value: given.value(),
+                    reason: if given.unit().is_physical() {
+                        format!("{given} is {units} page units; {reason}")
+                    } else {
+                        reason
+                    },
+                }
+            }
+            e => e,
+        })?;
+        Ok(page.with_unit(unit))
+    }
+
+    /// The same page with its size written in `unit` in the SVG
+    /// (`width="120mm"`); the layout is unchanged.
+    pub fn with_unit(mut self, unit: PageUnit) -> Self {
+        self.unit = unit;
+        self
+    }
+
+    /// The unit the SVG gives the page's size in (page units unless a
+    /// physical size was asked).
+    pub fn unit(&self) -> PageUnit {
+        self.unit
     }
 
     /// Width.
@@ -95,6 +148,38 @@ impl Default for Page {
             width: 760.0,
             height: 460.0,
             margin: 16.0,
+            unit: PageUnit::Px,
+        }
+    }
+}
+
+/// What a scene file describes: a mechanism figure, drawn by a [`Scene`],
+/// or one of the named diagrams with the changes the file asks for
+/// (`figure = "fig-64-velocity-diagrams"`; its mechanism, speed, angle,
+/// units, page, title, style and font).
+#[derive(Debug, Clone, PartialEq)]
+pub enum SceneFile {
+    /// A mechanism figure: a named one changed by the file, or one made
+    /// from scratch.
+    Mechanism(Scene),
+    /// A diagram of the catalogue, drawn by [`FigureName::figure`] with
+    /// these options.
+    Diagram(FigureName, FigureOptions),
+}
+
+impl SceneFile {
+    /// Reads a scene file (TOML; see `examples/*.toml` and docs/design.md
+    /// §4). Errors name the line and column of the bad key or value, in one
+    /// line.
+    pub fn from_toml(text: &str) -> Result<Self> {
+        file::parse(text).map_err(Error::one_line)
+    }
+
+    /// The figure it describes.
+    pub fn figure(&self) -> Result<Figure> {
+        match self {
+            SceneFile::Mechanism(scene) => Ok(scene.figure()),
+            SceneFile::Diagram(name, options) => name.figure(options),
         }
     }
 }
@@ -114,8 +199,8 @@ pub struct Scene {
     mirror: bool,
     page: Page,
     omega: f64,
-    unit: String,
-    force_unit: String,
+    units: Units,
+    title: Option<Title>,
     torque: f64,
     coupler: CouplerPoint,
     tolerance: f64,
@@ -123,8 +208,9 @@ pub struct Scene {
 
 impl Scene {
     /// The mechanism at `angle`, drawn with the mechanism layer only, in the
-    /// textbook style, not mirrored, on the default page; 250 rpm, lengths
-    /// in feet, torque 1.
+    /// textbook style, not mirrored, on the default page, untitled; 250
+    /// rpm, lengths in feet and forces in pounds-force
+    /// ([`Units::FOOT_POUND`]), torque 1.
     pub fn new(mechanism: SliderCrank, angle: Angle) -> Self {
         Self {
             name: "scene".into(),
@@ -137,8 +223,8 @@ impl Scene {
             mirror: false,
             page: Page::default(),
             omega: crate::rpm_to_omega(250.0),
-            unit: "ft".into(),
-            force_unit: "lbf".into(),
+            units: Units::FOOT_POUND,
+            title: None,
             torque: 1.0,
             coupler: CouplerPoint::new(0.5).expect("0.5 is in [0, 1]"),
             tolerance: DEFAULT_TOLERANCE,
@@ -229,15 +315,29 @@ impl Scene {
         Ok(self)
     }
 
-    /// The length unit written in notes (`ft`, `mm`).
-    pub fn with_unit(mut self, unit: impl Into<String>) -> Self {
-        self.unit = unit.into();
+    /// The units written in notes and metadata: names only, the numbers
+    /// are not converted (give the mechanism in the length unit).
+    pub fn with_units(mut self, units: Units) -> Self {
+        self.units = units;
         self
     }
 
-    /// The force unit written in notes (`N`, `lbf`).
-    pub fn with_force_unit(mut self, unit: impl Into<String>) -> Self {
-        self.force_unit = unit.into();
+    /// The same units with another length unit (`mm`).
+    pub fn with_length_unit(mut self, unit: Unit) -> Self {
+        self.units = self.units.with_length(unit);
+        self
+    }
+
+    /// The same units with another force unit (`N`).
+    pub fn with_force_unit(mut self, unit: Unit) -> Self {
+        self.units = self.units.with_force(unit);
+        self
+    }
+
+    /// A title, set centred below the figure and written as the SVG's
+    /// `<title>` ([`crate::Figure::with_title`]).
+    pub fn with_title(mut self, title: Title) -> Self {
+        self.title = Some(title);
         self
     }
 
@@ -322,14 +422,14 @@ impl Scene {
         self.omega
     }
 
-    /// Length unit.
-    pub fn unit(&self) -> &str {
-        &self.unit
+    /// The units.
+    pub fn units(&self) -> &Units {
+        &self.units
     }
 
-    /// Force unit.
-    pub fn force_unit(&self) -> &str {
-        &self.force_unit
+    /// The title, if any.
+    pub fn title(&self) -> Option<&Title> {
+        self.title.as_ref()
     }
 
     /// Crank torque.
@@ -348,9 +448,17 @@ impl Scene {
     }
 
     /// Reads a scene from TOML (see `examples/*.toml`). Errors name the line
-    /// and column of the bad key or value, in one line.
+    /// and column of the bad key or value, in one line. A file that starts
+    /// from a diagram is refused: [`SceneFile::from_toml`] reads those too.
     pub fn from_toml(text: &str) -> Result<Self> {
-        file::parse(text).map_err(Error::one_line)
+        match SceneFile::from_toml(text)? {
+            SceneFile::Mechanism(scene) => Ok(scene),
+            SceneFile::Diagram(name, _) => Err(Error::Parse(format!(
+                "'{}' is a diagram; a scene starts from a mechanism figure ({}), and SceneFile::from_toml reads diagrams too",
+                name.name(),
+                FigureName::SCENES.map(|s| s.name()).join(", ")
+            ))),
+        }
     }
 
     /// Builds the figure, computing only what the layers draw.

@@ -38,6 +38,20 @@ impl Notation {
         }
     }
 
+    /// The notation of that name (`textbook`, `ng`); the error lists the
+    /// names.
+    pub fn from_name(name: &str) -> crate::error::Result<Self> {
+        [Notation::Textbook, Notation::Ng]
+            .into_iter()
+            .find(|n| n.name() == name)
+            .ok_or_else(|| {
+                crate::error::Error::Parse(format!(
+                    "unknown notation '{}': expected textbook (C, B, A, D, E) or ng (O, C, P, I, M)",
+                    name.escape_default()
+                ))
+            })
+    }
+
     pub(crate) fn letter(&self, p: Named) -> &'static str {
         use Named::*;
         match (self, p) {
@@ -66,9 +80,31 @@ impl Notation {
     }
 }
 
+impl std::str::FromStr for Notation {
+    type Err = crate::error::Error;
+
+    fn from_str(s: &str) -> crate::error::Result<Self> {
+        Notation::from_name(s)
+    }
+}
+
+impl std::fmt::Display for Notation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for n in [Notation::Textbook, Notation::Ng] {
+            assert_eq!(n.to_string().parse::<Notation>().unwrap(), n);
+        }
+        assert!("book".parse::<Notation>().is_err());
+    }
 
     #[test]
     fn ng_letters_name_the_same_points() {

@@ -7,7 +7,7 @@ use slider_crank::analytic::statics;
 use slider_crank::construct::{InstantCentre, Kisch, TorqueLine, VelocityLine};
 use slider_crank::figure::FigureOptions;
 use slider_crank::render::to_svg;
-use slider_crank::{Angle, Figure, FigureName, Kinematics, Scene, SliderCrank};
+use slider_crank::{Angle, Figure, FigureName, Kinematics, SceneFile, SliderCrank};
 
 /// The diagrams that read `--data` CSV.
 pub const DATA_FIGURES: [&str; 3] = ["ng-fig-8-forces", "ng-fig-7-calibration", "curve-benchmark"];
@@ -63,8 +63,8 @@ fn check_figure(figure: Result<Figure, slider_crank::Error>) {
 
 /// Scene file text to a figure.
 pub fn scene_toml(text: &str) {
-    match Scene::from_toml(text) {
-        Ok(scene) => assert_svg_numbers_finite(&to_svg(&scene.figure())),
+    match SceneFile::from_toml(text).and_then(|f| f.figure()) {
+        Ok(figure) => assert_svg_numbers_finite(&to_svg(&figure)),
         Err(e) => assert_one_line(&e.to_string()),
     }
 }

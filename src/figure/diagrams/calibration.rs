@@ -38,7 +38,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let (y_lo, y_hi) = points
         .iter()
         .fold((0.0f64, 0.0f64), |(lo, hi), p| (lo.min(p.1), hi.max(p.1)));
-    let x = Axis::nice("force (N)", x_lo, x_hi)?;
+    let x = Axis::nice(&format!("force ({})", ctx.units.force()), x_lo, x_hi)?;
     let (x0, x1) = x.range();
     let ends = |f: &LineFit| [f.at(x0), f.at(x1)];
     let mut all_y = vec![y_lo, y_hi];

@@ -92,7 +92,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let theta =
         || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 180.0)?.with_step(20.0) };
     let height = page.height() - 16.0 - 250.0 - 54.0 - 8.0;
-    let y = Axis::nice("force on the slider (N)", least, most)?;
+    let force_unit = ctx.units.force();
+    let y = Axis::nice(&format!("force on the slider ({force_unit})"), least, most)?;
     let mut forces = Plot::new(
         "forces",
         ctx.band(16.0, height),
@@ -136,7 +137,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             "point-least-force",
             &[(d, f)],
             Symbol::Triangle,
-            Some(&format!("least *F*: θ = {d:.1}°, {} N", sig(f))),
+            Some(&format!("least *F*: θ = {d:.1}°, {} {force_unit}", sig(f))),
         );
     }
     sheet.plot(forces);
@@ -195,9 +196,16 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(20.0, page.height() - 42.0),
         &[
             format!(
-                "Ng's rig: *r* = {} mm, *l* = {} mm; *T* = {NG_TORQUE:.2} N·mm, the torque Ng's *F* column implies (1 kg on the 27 mm crank).",
+                "Ng's rig: *r* = {} {u}, *l* = {} {u}; *T* = {NG_TORQUE:.2} {}, the torque Ng's *F* column implies{}.",
                 short(m.crank()),
                 short(m.rod()),
+                ctx.units.torque(),
+                if ctx.units == crate::Units::MILLIMETRE_NEWTON {
+                    " (1 kg on the 27 mm crank)"
+                } else {
+                    ""
+                },
+                u = ctx.unit(),
             ),
             "*F*′ with each angle's φ (Ng's printed *F*′ used φ of 60° throughout). The least *F* is not quite at β = 90°.".into(),
         ],

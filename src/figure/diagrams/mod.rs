@@ -27,7 +27,7 @@ use crate::figure::Style;
 use crate::figure::{Item, PageFromWorld, Role, Shape};
 use crate::geom::{Point, Vector};
 use crate::scene::{Page, Scene};
-use crate::{Angle, Pose, SliderCrank};
+use crate::{Angle, Pose, SliderCrank, Unit, Units};
 use serde_json::{Map, Value, json};
 
 pub(crate) use data::Table;
@@ -49,17 +49,23 @@ pub(crate) struct Ctx<'a> {
     pub style: Style,
     pub font: Font,
     pub tolerance: f64,
+    /// The units named in notes and axis titles.
+    pub units: Units,
+    /// The page, the catalogue's or the one asked for.
+    pub page: Page,
+    /// Whether the mechanism is drawn mirrored (the cylinder on the left).
+    pub mirror: bool,
 }
 
 impl Ctx<'_> {
     /// The length unit of the figure.
-    pub fn unit(&self) -> &'static str {
-        if self.name.is_ng() { "mm" } else { "ft" }
+    pub fn unit(&self) -> &Unit {
+        self.units.length()
     }
 
     /// The page.
     pub fn page(&self) -> Page {
-        self.name.page()
+        self.page
     }
 
     /// The pose whose construction is drawn.
@@ -84,17 +90,17 @@ impl Ctx<'_> {
     }
 
     /// A mechanism scene of this figure's engine at its pose, drawn in the
-    /// textbook manner (mirrored, the cylinder on the left) on a page of
-    /// `width` × `height`.
+    /// textbook manner (mirrored, the cylinder on the left, unless the
+    /// options say otherwise) on a page of `width` × `height`.
     pub fn scene(&self, width: f64, height: f64) -> Result<Scene> {
         Ok(Scene::new(self.mechanism, self.angle)
             .named(self.name.name())
             .with_page(Page::new(width, height, MARGIN)?)
             .with_style(self.style)
             .with_font(self.font)
-            .with_unit(self.unit())
+            .with_units(self.units.clone())
             .with_omega(self.omega)?
-            .mirrored(!self.name.is_ng()))
+            .mirrored(self.mirror))
     }
 }
 
@@ -131,17 +137,21 @@ fn uses(name: FigureName) -> &'static [&'static str] {
     const MECH: &str = "mechanism (--crank, --rod, --offset)";
     const SPEED: &str = "crank speed (--rpm, --omega)";
     match name {
-        FigureName::Fig61Centrodes
-        | FigureName::CouplerCurves
-        | FigureName::Fig60Chains
+        FigureName::Fig61Centrodes | FigureName::CouplerCurves => {
+            &[MECH, "--angle", "--style", "--font", "--mirror"]
+        }
+        FigureName::Fig60Chains
         | FigureName::Inversion1Engine
         | FigureName::Inversion2RotatingBlock
         | FigureName::Inversion3OscillatingCylinder
         | FigureName::Inversion4HandPump => &[MECH, "--angle", "--style", "--font"],
         FigureName::SlotConvergence => &[MECH, "--style", "--font"],
-        FigureName::Fig64VelocityDiagrams
-        | FigureName::AccelerationDiagrams
-        | FigureName::RodMotion => &[MECH, SPEED, "--angle", "--style", "--font"],
+        FigureName::Fig64VelocityDiagrams => {
+            &[MECH, SPEED, "--angle", "--style", "--font", "--mirror"]
+        }
+        FigureName::AccelerationDiagrams | FigureName::RodMotion => {
+            &[MECH, SPEED, "--angle", "--style", "--font"]
+        }
         FigureName::ApproximationError => &["--style", "--font"],
         FigureName::NgFig2Incline => &["--angle", "--style", "--font"],
         FigureName::NgFig7Calibration => &["--data", "--fit", "--style", "--font"],
@@ -151,10 +161,16 @@ fn uses(name: FigureName) -> &'static [&'static str] {
     }
 }
 
+/// The first option of `options` that the diagram `name` does not use,
+/// named as on the command line (`--angle`).
+pub(crate) fn unused(name: FigureName, options: &FigureOptions) -> Option<&'static str> {
+    let used = uses(name);
+    options.given().into_iter().find(|o| !used.contains(o))
+}
+
 /// Builds the diagram `name` with `options`.
 pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure> {
-    let used = uses(name);
-    if let Some(bad) = options.given().into_iter().find(|o| !used.contains(o)) {
+    if let Some(bad) = unused(name, options) {
         return Err(Error::Parse(format!("{} does not use {bad}", name.name())));
     }
     let omega = options.omega.unwrap_or_else(|| crate::rpm_to_omega(250.0));
@@ -179,8 +195,18 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         style: options.style.unwrap_or(Style::Textbook),
         font: options.font.unwrap_or_default(),
         tolerance: DEFAULT_TOLERANCE,
+        units: {
+            let own = name.units();
+            Units::new(
+                options.length_unit.clone().unwrap_or(own.length().clone()),
+                options.force_unit.clone().unwrap_or(own.force().clone()),
+            )
+        },
+        page: options.page(&name.page())?,
+        mirror: options.mirror.unwrap_or(!name.is_ng()),
     };
-    match name {
+    let page = ctx.page;
+    let built = match name {
         FigureName::Fig61Centrodes => centrodes::build(&ctx),
         FigureName::Fig64VelocityDiagrams => velocity::build(&ctx),
         FigureName::AccelerationDiagrams => acceleration::build(&ctx),
@@ -201,12 +227,29 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
             "{} is a mechanism figure, not a diagram",
             name.name()
         ))),
-    }
+    };
+    // A page asked for that the diagram's bands do not fit: say so in its
+    // terms rather than a plot's.
+    let asked = options.width.is_some() || options.height.is_some();
+    built.map_err(|e| match e {
+        Error::OutOfRange {
+            name: "panel width" | "panel height",
+            ..
+        } if asked => Error::Parse(format!(
+            "a page of {} × {} units leaves no room for the plots of {}: give it a larger width or height",
+            format_number(page.width(), 1),
+            format_number(page.height(), 1),
+            name.name()
+        )),
+        e => e,
+    })
 }
 
 /// A figure being assembled from panels.
 pub(crate) struct Sheet {
     name: FigureName,
+    page: Page,
+    title: Option<crate::figure::Title>,
     style: Style,
     font: Font,
     tolerance: f64,
@@ -221,6 +264,8 @@ impl Sheet {
     pub fn new(ctx: &Ctx) -> Self {
         Self {
             name: ctx.name,
+            page: ctx.page,
+            title: ctx.options.title.clone(),
             style: ctx.style,
             font: ctx.font,
             tolerance: ctx.tolerance,
@@ -235,7 +280,7 @@ impl Sheet {
     /// figure's page): for sheets whose mechanism panel is fitted to the
     /// pose, so that no empty band is left below.
     pub fn fit(&mut self, bottom: f64) {
-        self.height((bottom + MARGIN).min(self.name.page().height()));
+        self.height((bottom + MARGIN).min(self.page.height()));
     }
 
     /// Sets the page's height (a page fitted to its drawing).
@@ -286,7 +331,7 @@ impl Sheet {
                 lines: lines.iter().map(|l| RichText::parse(l)).collect(),
             },
         );
-        let page = self.name.page();
+        let page = self.page;
         let rect = PageRect::new(
             corner.x,
             corner.y,
@@ -304,7 +349,7 @@ impl Sheet {
     /// The figure, with every number of its metadata rounded to 12
     /// significant digits (stable text).
     pub fn finish(mut self) -> Figure {
-        let page = self.name.page();
+        let page = self.page;
         let height = self.height.unwrap_or(page.height());
         if !self.plots.is_empty() {
             self.meta.insert("plots".into(), Value::Array(self.plots));
@@ -312,7 +357,7 @@ impl Sheet {
         for v in self.meta.values_mut() {
             round_numbers(v);
         }
-        Figure::new(
+        let figure = Figure::new(
             self.name.name(),
             page.width(),
             height,
@@ -322,6 +367,11 @@ impl Sheet {
             self.meta,
         )
         .with_font(self.font)
+        .with_size_unit(page.unit());
+        match self.title {
+            Some(t) => figure.with_title(t),
+            None => figure,
+        }
     }
 }
 

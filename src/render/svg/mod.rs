@@ -20,13 +20,15 @@ mod text;
 
 use super::labels::{Bounds, Obstacles, place};
 use super::number::{fmt, fmt_coefficient};
-use crate::figure::{Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape};
+use crate::figure::{
+    Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
+};
 use crate::figure::{Pen, Style};
 use crate::geom::Point;
 use serde_json::{Value, json};
 use svg::Document;
 use svg::node::Node;
-use svg::node::element::{ClipPath, Definitions, Element, Group, Rectangle};
+use svg::node::element::{ClipPath, Definitions, Element, Group, Rectangle, Title};
 use text::{ink_box, starts_italic, text_node};
 
 /// The farthest a label's box may be put from its anchor, in font sizes
@@ -272,6 +274,9 @@ fn metadata(figure: &Figure) -> Element {
     meta.insert("tolerance".into(), json!(figure.tolerance()));
     meta.insert("width".into(), json!(figure.width()));
     meta.insert("height".into(), json!(figure.height()));
+    if let Some(title) = figure.title() {
+        meta.insert("title".into(), json!(title.rich().plain()));
+    }
     if let Some(first) = figure.panels().first() {
         meta.insert("page_from_world".into(), coefficients(first.transform()));
     }
@@ -290,11 +295,24 @@ fn metadata(figure: &Figure) -> Element {
     element
 }
 
-/// The figure as SVG text: `<metadata>` JSON (docs/design.md §4), a paper
-/// rectangle, one `<g data-page-from-world>` per panel.
+/// A page length for the root's `width` or `height`: page units as they
+/// are, a physical size with its unit (`120mm`).
+fn root_size(x: f64, unit: PageUnit) -> String {
+    if unit.is_physical() {
+        format!("{}{unit}", fmt(x / unit.page_units()))
+    } else {
+        fmt(x)
+    }
+}
+
+/// The figure as SVG text: a `<title>` if the figure has one, `<metadata>`
+/// JSON (docs/design.md §4), a paper rectangle, one `<g
+/// data-page-from-world>` per panel. The root's `width` and `height` are
+/// in the figure's [`Figure::size_unit`], its `viewBox` in page units.
 pub fn to_svg(figure: &Figure) -> String {
     let style = figure.style();
     let (w, h) = (figure.width(), figure.height());
+    let unit = figure.size_unit();
     // Labels stay a little inside the page.
     let page = PageRect::new(2.0, 2.0, w - 4.0, h - 4.0);
     let paper = Rectangle::new()
@@ -305,12 +323,14 @@ pub fn to_svg(figure: &Figure) -> String {
         .set("height", fmt(h))
         .set("fill", style.paper());
     let mut doc = Document::new()
-        .set("width", fmt(w))
-        .set("height", fmt(h))
+        .set("width", root_size(w, unit))
+        .set("height", root_size(h, unit))
         .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
-        .set("font-family", figure.font().css_family())
-        .add(metadata(figure))
-        .add(paper);
+        .set("font-family", figure.font().css_family());
+    if let Some(title) = figure.title() {
+        doc = doc.add(Title::new(title.rich().plain()));
+    }
+    let mut doc = doc.add(metadata(figure)).add(paper);
     for panel in figure.panels() {
         let room = label_room(panel, &page);
         doc = doc.add(panel_group(panel, style, figure.font(), &room));

@@ -235,7 +235,12 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
         panels,
         metadata,
     )
-    .with_font(scene.font());
+    .with_font(scene.font())
+    .with_size_unit(page.unit());
+    let figure = match scene.title() {
+        Some(t) => figure.with_title(t.clone()),
+        None => figure,
+    };
     (figure, evaluations)
 }
 
@@ -409,7 +414,7 @@ pub(crate) fn offset_note(scene: &Scene) -> String {
     format!(
         "Offset engine: the line of stroke is *e* = {} {} {side} the crank centre *{c}*.",
         torque::sig(e.abs()),
-        scene.unit()
+        scene.units().length()
     )
 }
 
@@ -418,7 +423,7 @@ fn metadata(scene: &Scene, points: Map<String, Value>, ev: &Evaluations) -> Map<
     let mut meta = Map::new();
     meta.insert(
         "mechanism".into(),
-        json!({"crank": round(m.crank()), "rod": round(m.rod()), "offset": round(m.offset()), "unit": scene.unit()}),
+        json!({"crank": round(m.crank()), "rod": round(m.rod()), "offset": round(m.offset()), "unit": scene.units().length()}),
     );
     meta.insert(
         "angle_deg".into(),

@@ -13,7 +13,7 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
     let pose = ctx.main.pose();
     let r = pose.mechanism().crank();
     let w = scene.omega().abs();
-    let u = scene.unit();
+    let u = scene.units().length();
     let l = |n| ctx.letter(n);
     let (c, b, e) = (l(CrankCentre), l(CrankPin), l(VelocityPoint));
     let mut out = vec![RichText::parse(&format!(

@@ -54,7 +54,7 @@ pub(crate) fn sig(x: f64) -> String {
 pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
     let scene = ctx.scene;
     let tl = ctx.main.torque();
-    let (unit, force) = (scene.unit(), scene.force_unit());
+    let (unit, force) = (scene.units().length(), scene.units().force());
     let om = format!("*{}{}*", ctx.letter(CrankCentre), ctx.letter(VelocityPoint));
     let t = scene.torque();
     // OM below the smallest number (a tiny crank a hair from a dead
@@ -96,7 +96,7 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
 /// `= 12.35 N` for a force's magnitude, or `exceeds 1.8×10³⁰⁸ N` when it is
 /// beyond the largest number (a huge torque on a tiny mechanism): never
 /// `inf`, never a false 0.
-fn amount(x: f64, unit: &str) -> String {
+fn amount(x: f64, unit: &(impl std::fmt::Display + ?Sized)) -> String {
     if x.is_finite() {
         format!("= {} {unit}", sig(x.abs()))
     } else {

@@ -1,0 +1,243 @@
+//! Unit names: what the numbers of a figure, table or JSON object are in.
+//!
+//! Units are names only. The crate never converts a number: the user's
+//! lengths are in the user's unit, and the names say which, in notes, axis
+//! titles, table headers and JSON. Speeds are written `<length>/s`,
+//! accelerations `<length>/s²`, torques `<force>·<length>`; angular rates
+//! are always rad/s and rad/s².
+
+use crate::error::{Error, Result};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use std::borrow::Cow;
+use std::fmt;
+use std::str::FromStr;
+
+/// Longest unit name, in characters.
+pub const MAX_UNIT_CHARS: usize = 16;
+
+/// Characters a unit name may not hold: XML markup and the markup of the
+/// figures' notes (`*` italic, `_` subscript, `{}` grouping), quotes and
+/// backslashes.
+const FORBIDDEN: [char; 11] = ['<', '>', '&', '"', '\'', '*', '_', '{', '}', '\\', '`'];
+
+/// The name of a unit (`mm`, `ft`, `N`, `lbf`): 1 to [`MAX_UNIT_CHARS`]
+/// printable characters, no spaces, no markup. Made by [`Unit::new`] or
+/// [`str::parse`], which check the name once; every `Unit` is valid.
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Unit(Cow<'static, str>);
+
+impl Unit {
+    /// Feet, the length unit of the textbook's figures.
+    pub const FOOT: Unit = Unit(Cow::Borrowed("ft"));
+    /// Millimetres, the length unit of Ng's figures.
+    pub const MILLIMETRE: Unit = Unit(Cow::Borrowed("mm"));
+    /// Pounds-force, the force unit of the textbook's figures.
+    pub const POUND_FORCE: Unit = Unit(Cow::Borrowed("lbf"));
+    /// Newtons, the force unit of Ng's figures.
+    pub const NEWTON: Unit = Unit(Cow::Borrowed("N"));
+
+    /// The unit of that name; an error (one line) says what a name may
+    /// hold when it is empty, longer than [`MAX_UNIT_CHARS`], or holds a
+    /// space, a control character or markup (`< > & " ' * _ { } \` and the
+    /// backquote).
+    pub fn new(name: &str) -> Result<Self> {
+        let shown: String = name
+            .chars()
+            .take(MAX_UNIT_CHARS + 4)
+            .flat_map(char::escape_default)
+            .collect();
+        let bad = |why: &str| {
+            Err(Error::Parse(format!(
+                "invalid unit name '{shown}': {why} (a unit name is 1 to {MAX_UNIT_CHARS} printable characters without spaces or any of < > & \" ' * _ {{ }} \\ `, such as mm, in, N, lbf)"
+            )))
+        };
+        if name.is_empty() {
+            return bad("it is empty");
+        }
+        if name.chars().count() > MAX_UNIT_CHARS {
+            return bad("it is too long");
+        }
+        if let Some(c) = name
+            .chars()
+            .find(|c| c.is_control() || c.is_whitespace() || FORBIDDEN.contains(c))
+        {
+            let what = if c.is_control() {
+                "a control character".to_string()
+            } else if c.is_whitespace() {
+                "a space".to_string()
+            } else {
+                format!("the character {c}")
+            };
+            return bad(&format!("it holds {what}"));
+        }
+        Ok(Unit(Cow::Owned(name.to_string())))
+    }
+
+    /// The name.
+    pub fn as_str(&self) -> &str {
+        &self.0
+    }
+}
+
+impl FromStr for Unit {
+    type Err = Error;
+
+    fn from_str(s: &str) -> Result<Self> {
+        Unit::new(s)
+    }
+}
+
+impl fmt::Display for Unit {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl Serialize for Unit {
+    fn serialize<S: Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.serialize_str(&self.0)
+    }
+}
+
+impl<'de> Deserialize<'de> for Unit {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        Unit::new(&name).map_err(serde::de::Error::custom)
+    }
+}
+
+/// The units of a figure, table or JSON object: a length unit and a force
+/// unit, from which the others are named ([`Units::velocity`],
+/// [`Units::acceleration`], [`Units::torque`]).
+#[derive(Debug, Clone, PartialEq, Eq, Hash)]
+pub struct Units {
+    length: Unit,
+    force: Unit,
+}
+
+impl Units {
+    /// Feet and pounds-force: the textbook's (the §35 engine), and the
+    /// default of the command line's numbers and of [`crate::Scene::new`].
+    pub const FOOT_POUND: Units = Units {
+        length: Unit::FOOT,
+        force: Unit::POUND_FORCE,
+    };
+    /// Millimetres and newtons: Ng's.
+    pub const MILLIMETRE_NEWTON: Units = Units {
+        length: Unit::MILLIMETRE,
+        force: Unit::NEWTON,
+    };
+
+    /// Lengths in `length`, forces in `force`.
+    pub fn new(length: Unit, force: Unit) -> Self {
+        Self { length, force }
+    }
+
+    /// The same with another length unit.
+    pub fn with_length(mut self, length: Unit) -> Self {
+        self.length = length;
+        self
+    }
+
+    /// The same with another force unit.
+    pub fn with_force(mut self, force: Unit) -> Self {
+        self.force = force;
+        self
+    }
+
+    /// The unit of lengths (`mm`).
+    pub fn length(&self) -> &Unit {
+        &self.length
+    }
+
+    /// The unit of forces (`N`).
+    pub fn force(&self) -> &Unit {
+        &self.force
+    }
+
+    /// The unit of speeds: the length unit per second (`mm/s`).
+    pub fn velocity(&self) -> String {
+        format!("{}/s", self.length)
+    }
+
+    /// The unit of accelerations: the length unit per second squared
+    /// (`mm/s²`).
+    pub fn acceleration(&self) -> String {
+        format!("{}/s²", self.length)
+    }
+
+    /// The unit of torques: force times length (`N·mm`).
+    pub fn torque(&self) -> String {
+        format!("{}·{}", self.force, self.length)
+    }
+}
+
+impl Default for Units {
+    /// [`Units::FOOT_POUND`].
+    fn default() -> Self {
+        Units::FOOT_POUND
+    }
+}
+
+impl Serialize for Units {
+    /// `{"length": "mm", "force": "N", "velocity": "mm/s", "acceleration":
+    /// "mm/s²", "torque": "N·mm", "angular_velocity": "rad/s",
+    /// "angular_acceleration": "rad/s²"}`.
+    fn serialize<S: Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(7))?;
+        m.serialize_entry("length", self.length.as_str())?;
+        m.serialize_entry("force", self.force.as_str())?;
+        m.serialize_entry("velocity", &self.velocity())?;
+        m.serialize_entry("acceleration", &self.acceleration())?;
+        m.serialize_entry("torque", &self.torque())?;
+        m.serialize_entry("angular_velocity", "rad/s")?;
+        m.serialize_entry("angular_acceleration", "rad/s²")?;
+        m.end()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_are_checked_once() {
+        for good in [
+            "mm", "m", "in", "ft", "N", "kN", "lbf", "µm", "N·m", "cm/10",
+        ] {
+            assert_eq!(good.parse::<Unit>().unwrap().as_str(), good);
+        }
+        for bad in [
+            "",
+            "m m",
+            " mm",
+            "mm\n",
+            "<b>",
+            "a&b",
+            "*m*",
+            "m_s",
+            "{m}",
+            "\"",
+            "abcdefghijklmnopq",
+        ] {
+            let e = bad.parse::<Unit>().unwrap_err().to_string();
+            assert!(e.starts_with("invalid unit name"), "{bad}: {e}");
+            assert!(!e.contains('\n'), "{e}");
+        }
+        assert!("abcdefghijklmnop".parse::<Unit>().is_ok());
+    }
+
+    #[test]
+    fn derived_names() {
+        let u = Units::new(Unit::MILLIMETRE, "kN".parse().unwrap());
+        assert_eq!(u.velocity(), "mm/s");
+        assert_eq!(u.acceleration(), "mm/s²");
+        assert_eq!(u.torque(), "kN·mm");
+        let json = serde_json::to_value(&u).unwrap();
+        assert_eq!(json["length"], "mm");
+        assert_eq!(json["force"], "kN");
+        assert_eq!(json["velocity"], "mm/s");
+        assert_eq!(Units::default(), Units::FOOT_POUND);
+    }
+}
