@@ -3,8 +3,10 @@
 //! a text its standard error contains, and no `inf` or `NaN` printed.
 //!
 //! `ROBUSTNESS_BIN` runs another binary (the release build) and
-//! `ROBUSTNESS_TIMEOUT` sets the timeout in seconds (default 60, for the
-//! unoptimised build).
+//! `ROBUSTNESS_TIMEOUT` sets the timeout in seconds (default 180: the
+//! unoptimised build takes about 13 s for the 100 000 rows of one row
+//! here, more on a loaded machine; CI holds the release binary to the
+//! table's 10 s separately).
 
 #![cfg(unix)]
 
@@ -102,7 +104,7 @@ fn every_row_of_the_robustness_table_holds() {
     let dir = scratch();
     let bin = std::env::var("ROBUSTNESS_BIN").unwrap_or(env!("CARGO_BIN_EXE_slider-crank").into());
     let bin = std::fs::canonicalize(bin).unwrap();
-    let timeout = std::env::var("ROBUSTNESS_TIMEOUT").unwrap_or("60".into());
+    let timeout = std::env::var("ROBUSTNESS_TIMEOUT").unwrap_or("180".into());
     let mut failures = Vec::new();
     let mut times = Vec::new();
     for row in &rows {
