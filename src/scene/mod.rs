@@ -175,6 +175,18 @@ impl SceneFile {
         file::parse(text).map_err(Error::one_line)
     }
 
+    /// Every key a scene file may hold, read off the parser's own
+    /// structs: the top-level keys (`angle`), and each table (`page`)
+    /// followed by its keys as `table.key` (`page.width`). The reference,
+    /// docs/scene-format.md, gives each with its type, default and range.
+    pub fn keys() -> Vec<String> {
+        file::keys()
+    }
+
+    /// The version of scene files this program reads, the integer a file
+    /// may give as `version` (newer or invalid versions are refused).
+    pub const VERSION: i64 = file::VERSION;
+
     /// The figure it describes.
     pub fn figure(&self) -> Result<Figure> {
         match self {
