@@ -14,6 +14,7 @@ mod draw;
 mod file;
 mod layer;
 mod notation;
+pub(crate) mod write;
 
 pub use cache::Evaluations;
 pub(crate) use canvas::round;
