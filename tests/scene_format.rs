@@ -66,7 +66,7 @@ fn cells(row: &str) -> Vec<String> {
 
 /// The rows of the key tables of a section: the key (the first cell, in
 /// backquotes) and the cells.
-fn key_rows<'a>(lines: &[&'a str]) -> Vec<(String, Vec<String>)> {
+fn key_rows(lines: &[&str]) -> Vec<(String, Vec<String>)> {
     lines
         .iter()
         .filter(|l| l.starts_with("| `"))
