@@ -6,7 +6,9 @@
 //! it ([`Scene::build`]) asks each layer, in a fixed order, for the
 //! constructions it needs through a cache that computes each at most once
 //! and counts it ([`Evaluations`]); the result is an immutable
-//! [`Figure`] in world coordinates.
+//! [`Figure`] in world coordinates. The page is fitted to the scene's own
+//! pose, or held over a range of poses ([`Scene::held_over`],
+//! [`Scene::frames`]) so that a series of figures shares one map.
 
 mod cache;
 mod canvas;
