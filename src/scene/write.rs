@@ -98,7 +98,8 @@ fn units_table(out: &mut String, units: &crate::Units) {
 }
 
 /// The scene file of a mechanism figure's `scene`, every key given:
-/// reading it back gives the same scene.
+/// reading it back gives the same scene (a held view, which no key
+/// expresses, aside).
 pub(crate) fn scene(name: FigureName, scene: &Scene) -> String {
     let mut out = String::new();
     comment(
