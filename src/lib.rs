@@ -56,6 +56,13 @@
 //! assert!(svg.contains(r#"id="detail-point-G""#) && scene.has(Layer::Kisch));
 //! ```
 //!
+//! A scene is fitted to its own pose; [`Scene::held_over`] holds its page
+//! map over a range of poses and [`Scene::frames`] draws a series in one
+//! such view (the whole revolution by default). [`SceneFile::from_toml`]
+//! reads scene files, whose keys `docs/scene-format.md` lists
+//! ([`SceneFile::keys`]); [`FigureName::scene_toml`] writes the file of a
+//! named figure.
+//!
 //! ## Features
 //!
 //! - `cli` (default): the `slider-crank` program (clap).

@@ -688,3 +688,66 @@ fn tables_name_their_units() {
         "{text}"
     );
 }
+
+#[test]
+fn print_default_writes_a_scene_file_that_draws_the_named_figure() {
+    let dir =
+        std::env::temp_dir().join(format!("slider-crank-print-default-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for name in [
+        "fig-62-displacement",
+        "fig-63-velocity",
+        "fig-65-klein",
+        "fig-66-kisch",
+        "fig-67-example",
+        "ng-fig-1-torque",
+        "ng-fig-a1-velocity",
+        "fig-64-velocity-diagrams",
+    ] {
+        let toml = run(&["scene", "--print-default", name]);
+        assert!(toml.status.success(), "{name}");
+        assert!(toml.stderr.is_empty(), "{name}");
+        let path = dir.join(format!("{name}.toml"));
+        std::fs::write(&path, &toml.stdout).unwrap();
+        let from_file = run(&["scene", path.to_str().unwrap()]);
+        assert!(
+            from_file.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&from_file.stderr)
+        );
+        let own = run(&["figure", name]);
+        assert!(from_file.stdout == own.stdout, "{name}: the SVG differs");
+    }
+    // A name that is no figure, or a file as well: one line, exit 2.
+    for args in [
+        &["scene", "--print-default", "fig-6"][..],
+        &["scene", "x.toml", "--print-default", "fig-63-velocity"],
+        &[
+            "scene",
+            "--print-default",
+            "fig-63-velocity",
+            "--out",
+            "x.svg",
+        ],
+        &["scene"],
+    ] {
+        let out = run(args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert!(out.stdout.is_empty(), "{args:?}");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+    }
+    // A newer scene file is refused for its version, in one line.
+    let path = dir.join("newer.toml");
+    std::fs::write(&path, "version = 2\nbrand_new_key = true\n").unwrap();
+    let out = run(&["scene", path.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.trim_end().ends_with(
+            "newer.toml: line 1, column 11: this scene file is version 2, newer than this program reads: it reads version 1"
+        ),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -704,3 +704,79 @@ fn a_detail_letter_far_from_its_detail_point_is_caught() {
         "{failures:?}"
     );
 }
+
+// ------------------------------------------------------------ held views
+
+/// Every `data-page-from-world` of an SVG, in order, and the metadata's
+/// maps (the figure's and its panels'), with the page's size.
+fn maps(svg: &str) -> (Vec<String>, serde_json::Value) {
+    let key = "data-page-from-world=\"";
+    let attrs = svg
+        .match_indices(key)
+        .map(|(at, _)| {
+            let v = &svg[at + key.len()..];
+            v[..v.find('"').unwrap()].to_string()
+        })
+        .collect();
+    let meta = common::metadata(svg);
+    let panels: Vec<_> = meta["panels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| (p["id"].clone(), p["page_from_world"].clone()))
+        .collect();
+    let held = serde_json::json!({
+        "page_from_world": meta["page_from_world"],
+        "panels": format!("{panels:?}"),
+        "width": meta["width"],
+        "height": meta["height"],
+    });
+    (attrs, held)
+}
+
+#[test]
+fn a_series_held_over_the_revolution_keeps_one_page_map_and_stays_on_the_page() {
+    let every_10: Vec<Angle> = (0..36)
+        .map(|k| Angle::from_degrees(10.0 * f64::from(k)).unwrap())
+        .collect();
+    let engine = slider_crank::Scene::new(SliderCrank::in_line(0.5, 3.0).unwrap(), every_10[0])
+        .with_layers([
+            slider_crank::Layer::Mechanism,
+            slider_crank::Layer::Velocity,
+        ]);
+    // Fitted to each pose, the velocity layer moves the map from frame to
+    // frame (D rises and falls with θ).
+    let single = |angle: f64| {
+        let s = engine
+            .clone()
+            .with_angles(vec![Angle::from_degrees(angle).unwrap()])
+            .unwrap();
+        maps(&to_svg(&s.figure()))
+    };
+    assert_ne!(single(0.0).1, single(30.0).1);
+    let scenes = [
+        ("velocity", engine),
+        ("fig-65-klein", FigureName::Fig65Klein.scene().unwrap()),
+        ("fig-67-example", FigureName::Fig67Example.scene().unwrap()),
+        ("ng-fig-1-torque", FigureName::NgFig1Torque.scene().unwrap()),
+    ];
+    let mut report = Vec::new();
+    for (name, scene) in scenes {
+        let frames = scene.frames(&every_10).unwrap();
+        assert_eq!(frames.len(), 36);
+        let first = maps(&to_svg(&frames[0]));
+        assert!(!first.0.is_empty(), "{name}: no panel map");
+        for (angle, frame) in every_10.iter().zip(&frames) {
+            let svg = to_svg(frame);
+            let at = angle.degrees();
+            let these = maps(&svg);
+            assert_eq!(these.0, first.0, "{name} at {at}°: the panels' maps");
+            assert_eq!(these.1, first.1, "{name} at {at}°: the metadata's maps");
+            assert_eq!(common::metadata(&svg)["angle_deg"], at, "{name}");
+            for f in off_page(&Plate::read(&svg)) {
+                report.push(format!("{name} at {at}°: {} {}", f.rule, f.ids));
+            }
+        }
+    }
+    assert!(report.is_empty(), "off the page:\n{}", report.join("\n"));
+}

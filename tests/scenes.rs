@@ -251,3 +251,52 @@ fn a_scene_page_may_be_physical_and_the_figure_titled() {
         "{e}"
     );
 }
+
+#[test]
+fn a_series_is_the_scene_held_over_its_range_at_each_angle() {
+    use slider_crank::Angle;
+    let degrees =
+        |d: &[f64]| -> Vec<Angle> { d.iter().map(|d| Angle::from_degrees(*d).unwrap()).collect() };
+    let scene = FigureName::Fig65Klein.scene().unwrap();
+    assert_eq!(scene.held(), None);
+    // Held over a quarter turn: each frame is that scene at its angle.
+    let range = degrees(&[0.0, 30.0, 60.0, 90.0]);
+    let held = scene.clone().held_over(range.clone()).unwrap();
+    assert_eq!(held.held(), Some(range.as_slice()));
+    let angles = degrees(&[15.0, 90.0]);
+    let frames = held.frames(&angles).unwrap();
+    for (a, frame) in angles.iter().zip(&frames) {
+        let one = held.clone().with_angles(vec![*a]).unwrap().figure();
+        assert_eq!(to_svg(frame), to_svg(&one));
+    }
+    // Not held: the series is held over the whole revolution, so a frame
+    // differs from the figure fitted to its own pose.
+    let frames = scene.frames(&angles).unwrap();
+    let own = scene.clone().with_angles(vec![angles[0]]).unwrap().figure();
+    assert_ne!(
+        frames[0].panels()[0].transform(),
+        own.panels()[0].transform()
+    );
+    // An overlay keeps its ghosts, its first pose moves.
+    let overlay = scene.with_angles(degrees(&[30.0, 200.0])).unwrap();
+    let frame = &overlay.frames(&degrees(&[70.0])).unwrap()[0];
+    let svg = to_svg(frame);
+    assert!(svg.contains("\"angles_deg\":[70.0,200.0]"), "{svg}");
+}
+
+#[test]
+fn a_held_view_needs_one_to_3600_angles() {
+    use slider_crank::Angle;
+    let scene = FigureName::Fig63Velocity.scene().unwrap();
+    let e = scene.clone().held_over(Vec::new()).unwrap_err().to_string();
+    assert_eq!(e, "a view is held over at least one angle");
+    let many = vec![Angle::from_degrees(0.0).unwrap(); 3601];
+    let e = scene
+        .clone()
+        .held_over(many.clone())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("at most 3600"), "{e}");
+    assert!(scene.frames(&[]).is_err());
+    assert!(scene.frames(&many).is_err());
+}

@@ -5,16 +5,26 @@ use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
 use slider_crank::input::{MAX_SCENE_BYTES, read_text};
-use slider_crank::{Error, Result, SceneFile, Unit};
+use slider_crank::{Error, FigureName, Result, SceneFile, Unit};
 use std::path::PathBuf;
 
 /// Draw the figure a scene file describes: a mechanism figure, or one of
 /// the named diagrams with the file's changes.
 #[derive(Debug, Args)]
 pub struct SceneArgs {
-    /// The scene file (TOML; see examples/*.toml)
-    #[arg(value_name = "FILE.toml")]
-    pub file: PathBuf,
+    /// The scene file (TOML; docs/scene-format.md, examples/*.toml)
+    #[arg(value_name = "FILE.toml", required_unless_present = "print_default")]
+    pub file: Option<PathBuf>,
+    /// Print the scene file of the named figure instead of drawing one: every
+    /// key it uses at the figure's own value, with comments, a starting
+    /// point to edit (`scene` on it draws that figure). NAME is any name
+    /// `figure` takes
+    #[arg(
+        long,
+        value_name = "NAME",
+        conflicts_with_all = ["file", "font", "length_unit", "force_unit", "out"]
+    )]
+    pub print_default: Option<String>,
     /// Face of the text, over the file's `font` key: new-computer-modern
     /// (the look of LaTeX books) or libertinus-serif [default: the file's,
     /// else new-computer-modern]
@@ -39,9 +49,16 @@ pub struct SceneArgs {
 
 /// Runs the subcommand.
 pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
-    let text = read_text(&args.file, MAX_SCENE_BYTES, "scene file")?;
+    if let Some(name) = &args.print_default {
+        return out.text(&FigureName::from_name(name)?.scene_toml());
+    }
+    let path = args
+        .file
+        .as_ref()
+        .expect("clap requires FILE without --print-default");
+    let text = read_text(path, MAX_SCENE_BYTES, "scene file")?;
     let file = SceneFile::from_toml(&text)
-        .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
+        .map_err(|e| Error::Parse(format!("{}: {e}", path.display())))?;
     let font = args.font.as_deref().map(str::parse::<Font>).transpose()?;
     let figure = match file {
         SceneFile::Mechanism(mut scene) => {

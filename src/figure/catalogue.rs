@@ -354,6 +354,20 @@ impl FigureName {
         Ok(scene.figure())
     }
 
+    /// The scene file of this figure, as a starting point: every key it
+    /// uses at the figure's own value, each with a comment (what
+    /// `slider-crank scene --print-default NAME` prints). A mechanism
+    /// figure's file gives every key of its scene and reads back to the
+    /// same scene; a diagram's starts from `figure = "NAME"` and gives the
+    /// keys that diagram takes (its data, where it has any, is given on
+    /// the command line). See docs/scene-format.md.
+    pub fn scene_toml(&self) -> String {
+        match self.scene() {
+            Some(scene) => crate::scene::write::scene(*self, &scene),
+            None => crate::scene::write::diagram(*self),
+        }
+    }
+
     /// The scene of a mechanism figure with the seed's own parameters;
     /// `None` for a diagram (use [`FigureName::figure`]).
     pub fn scene(&self) -> Option<Scene> {

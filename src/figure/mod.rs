@@ -20,6 +20,7 @@ mod transform;
 
 pub use catalogue::FigureName;
 pub(crate) use diagrams::unused as unused_option;
+pub(crate) use diagrams::uses as diagram_uses;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
 pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use options::{FigureOptions, Fit};

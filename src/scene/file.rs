@@ -1,5 +1,7 @@
 //! Scene files in TOML. Every error names the line and column of the bad
-//! key or value.
+//! key or value. The keys are those of the serde structs below
+//! ([`keys`] lists them from the structs themselves); docs/scene-format.md
+//! is their reference.
 
 use super::{Layer, Notation, Page, Scene, SceneFile};
 use crate::construct::CouplerPoint;
@@ -11,9 +13,15 @@ use serde::Deserialize;
 use std::ops::Range;
 use toml::Spanned;
 
+/// The version of scene files this program reads (the `version` key).
+pub(crate) const VERSION: i64 = 1;
+
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct File {
+    /// The version of the format, read before the rest ([`Versioned`]).
+    #[serde(rename = "version")]
+    _version: Option<serde::de::IgnoredAny>,
     /// A named figure to start from; the other keys override it.
     figure: Option<Spanned<String>>,
     name: Option<Spanned<String>>,
@@ -62,6 +70,37 @@ struct PageFile {
     margin: Option<Spanned<f64>>,
 }
 
+/// The `version` key alone, read before the rest of the file so that a
+/// newer file is refused for its version rather than for a key this
+/// program does not know.
+#[derive(Debug, Deserialize)]
+struct Versioned {
+    version: Option<Spanned<toml::Value>>,
+}
+
+/// Refuses a file of another version than [`VERSION`] (a newer one, or a
+/// version that is not a positive integer), at its line and column.
+fn check_version(text: &str) -> Result<()> {
+    // Broken TOML is reported by the full parse, with its location.
+    let Ok(Versioned {
+        version: Some(version),
+    }) = toml::from_str::<Versioned>(text)
+    else {
+        return Ok(());
+    };
+    let message = match version.get_ref() {
+        toml::Value::Integer(v) if *v == VERSION => return Ok(()),
+        toml::Value::Integer(v) if *v > VERSION => format!(
+            "this scene file is version {v}, newer than this program reads: it reads version {VERSION}"
+        ),
+        other => format!(
+            "invalid version {}: this program reads scene files of version {VERSION} (an integer)",
+            other.to_string().chars().take(40).collect::<String>()
+        ),
+    };
+    Err(located(text, version.span(), message))
+}
+
 /// 1-based line and column of byte offset `at` in `text`.
 fn line_column(text: &str, at: usize) -> (usize, usize) {
     let at = at.min(text.len());
@@ -87,6 +126,7 @@ fn at<T>(text: &str, span: Range<usize>, r: Result<T>) -> Result<T> {
 }
 
 pub(super) fn parse(text: &str) -> Result<SceneFile> {
+    check_version(text)?;
     let file: File = toml::from_str(text).map_err(|e| {
         let message = e.message().trim().to_string();
         match e.span() {
@@ -402,9 +442,171 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
     Ok(SceneFile::Diagram(name, options))
 }
 
+/// Every key a scene file may hold, read off the serde structs that parse
+/// it: the top-level keys, each followed by the keys of its table as
+/// `table.key` when it holds one, in the order of the structs.
+pub(crate) fn keys() -> Vec<String> {
+    let mut keys = Vec::new();
+    for &field in introspect::fields::<File>() {
+        keys.push(field.to_string());
+        if let Some(inner) = introspect::table_fields::<File>(field) {
+            keys.extend(inner.iter().map(|k| format!("{field}.{k}")));
+        }
+    }
+    keys
+}
+
+/// The field names of derived `Deserialize` impls, asked of the impls
+/// themselves: a deserializer that drives them only far enough to see the
+/// names they expect.
+mod introspect {
+    use serde::Deserialize;
+    use serde::de::{self, DeserializeSeed, Deserializer, IntoDeserializer, MapAccess, Visitor};
+
+    type E = de::value::Error;
+    type Names = Option<&'static [&'static str]>;
+
+    /// Ends a deserialization once it has shown what was wanted.
+    fn stop() -> E {
+        de::Error::custom("only listing keys")
+    }
+
+    /// Records the field names of the struct deserialized from it (through
+    /// an `Option`); any other value stops.
+    struct Fields<'a>(&'a mut Names);
+
+    impl<'de> Deserializer<'de> for Fields<'_> {
+        type Error = E;
+
+        fn deserialize_any<V: Visitor<'de>>(self, _: V) -> Result<V::Value, E> {
+            Err(stop())
+        }
+
+        fn deserialize_option<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, E> {
+            visitor.visit_some(self)
+        }
+
+        fn deserialize_struct<V: Visitor<'de>>(
+            self,
+            name: &'static str,
+            fields: &'static [&'static str],
+            _: V,
+        ) -> Result<V::Value, E> {
+            // `Spanned` is a struct to serde, a value to TOML.
+            if !name.starts_with("$__") {
+                *self.0 = Some(fields);
+            }
+            Err(stop())
+        }
+
+        serde::forward_to_deserialize_any! {
+            bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str
+            string bytes byte_buf unit unit_struct newtype_struct seq tuple
+            tuple_struct map enum identifier ignored_any
+        }
+    }
+
+    /// A table of one key whose value records the fields of a struct.
+    struct One<'a> {
+        key: Option<&'static str>,
+        names: &'a mut Names,
+    }
+
+    impl<'de> Deserializer<'de> for One<'_> {
+        type Error = E;
+
+        fn deserialize_any<V: Visitor<'de>>(self, visitor: V) -> Result<V::Value, E> {
+            visitor.visit_map(self)
+        }
+
+        serde::forward_to_deserialize_any! {
+            bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str
+            string bytes byte_buf option unit unit_struct newtype_struct seq
+            tuple tuple_struct map struct enum identifier ignored_any
+        }
+    }
+
+    impl<'de> MapAccess<'de> for One<'_> {
+        type Error = E;
+
+        fn next_key_seed<K: DeserializeSeed<'de>>(
+            &mut self,
+            seed: K,
+        ) -> Result<Option<K::Value>, E> {
+            self.key
+                .take()
+                .map(|k| seed.deserialize(k.into_deserializer()))
+                .transpose()
+        }
+
+        fn next_value_seed<V: DeserializeSeed<'de>>(&mut self, seed: V) -> Result<V::Value, E> {
+            seed.deserialize(Fields(self.names))
+        }
+    }
+
+    /// The field names of the struct `T`.
+    pub(super) fn fields<T: for<'de> Deserialize<'de>>() -> &'static [&'static str] {
+        let mut names = None;
+        let _ = T::deserialize(Fields(&mut names));
+        names.unwrap_or(&[])
+    }
+
+    /// The field names of the table held by the field `key` of the struct
+    /// `T`; `None` when that field holds a value.
+    pub(super) fn table_fields<T: for<'de> Deserialize<'de>>(
+        key: &'static str,
+    ) -> Option<&'static [&'static str]> {
+        let mut names = None;
+        let _ = T::deserialize(One {
+            key: Some(key),
+            names: &mut names,
+        });
+        names
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_keys_are_those_of_the_structs() {
+        let keys = keys();
+        for k in [
+            "version",
+            "figure",
+            "mechanism",
+            "mechanism.crank",
+            "mechanism.unit",
+            "units.force",
+            "page.margin",
+            "force_unit",
+            "tolerance",
+        ] {
+            assert!(keys.iter().any(|x| x == k), "{k} missing from {keys:?}");
+        }
+        assert!(!keys.iter().any(|x| x.starts_with("angle.")), "{keys:?}");
+        assert_eq!(keys.len(), 29, "{keys:?}");
+    }
+
+    #[test]
+    fn a_newer_or_invalid_version_is_refused_first() {
+        let e = parse("version = 2\nnew_key = 1\n").unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "line 1, column 11: this scene file is version 2, newer than this program reads: it reads version 1"
+        );
+        for bad in ["0", "-1", "1.0", "\"1\"", "[1]"] {
+            let e = parse(&format!("version = {bad}\n"))
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.starts_with("line 1, column 11: invalid version ") && e.contains("version 1"),
+                "{e}"
+            );
+        }
+        assert!(parse("version = 1\n").is_ok());
+    }
 
     #[test]
     fn line_and_column_are_one_based() {

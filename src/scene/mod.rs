@@ -6,7 +6,9 @@
 //! it ([`Scene::build`]) asks each layer, in a fixed order, for the
 //! constructions it needs through a cache that computes each at most once
 //! and counts it ([`Evaluations`]); the result is an immutable
-//! [`Figure`] in world coordinates.
+//! [`Figure`] in world coordinates. The page is fitted to the scene's own
+//! pose, or held over a range of poses ([`Scene::held_over`],
+//! [`Scene::frames`]) so that a series of figures shares one map.
 
 mod cache;
 mod canvas;
@@ -14,6 +16,7 @@ mod draw;
 mod file;
 mod layer;
 mod notation;
+pub(crate) mod write;
 
 pub use cache::Evaluations;
 pub(crate) use canvas::round;
@@ -175,6 +178,18 @@ impl SceneFile {
         file::parse(text).map_err(Error::one_line)
     }
 
+    /// Every key a scene file may hold, read off the parser's own
+    /// structs: the top-level keys (`angle`), and each table (`page`)
+    /// followed by its keys as `table.key` (`page.width`). The reference,
+    /// docs/scene-format.md, gives each with its type, default and range.
+    pub fn keys() -> Vec<String> {
+        file::keys()
+    }
+
+    /// The version of scene files this program reads, the integer a file
+    /// may give as `version` (newer or invalid versions are refused).
+    pub const VERSION: i64 = file::VERSION;
+
     /// The figure it describes.
     pub fn figure(&self) -> Result<Figure> {
         match self {
@@ -204,6 +219,20 @@ pub struct Scene {
     torque: f64,
     coupler: CouplerPoint,
     tolerance: f64,
+    /// The poses the page map is held over ([`Scene::held_over`]).
+    held: Option<Vec<Angle>>,
+}
+
+/// The most poses a view is held over ([`Scene::held_over`]): every tenth
+/// of a degree.
+const MAX_HELD: usize = 3600;
+
+/// The poses a series is held over by default: the whole revolution,
+/// every degree.
+fn revolution() -> Vec<Angle> {
+    (0..360)
+        .map(|d| Angle::from_degrees(f64::from(d)).expect("finite"))
+        .collect()
 }
 
 impl Scene {
@@ -228,6 +257,7 @@ impl Scene {
             torque: 1.0,
             coupler: CouplerPoint::new(0.5).expect("0.5 is in [0, 1]"),
             tolerance: DEFAULT_TOLERANCE,
+            held: None,
         }
     }
 
@@ -367,6 +397,107 @@ impl Scene {
         Ok(self)
     }
 
+    /// Holds the page map over the poses at `angles`: the figure is laid
+    /// out once for what the scene draws at all of them (the drawing, the
+    /// room for the notes, the detail) instead of for its own pose, so that
+    /// figures drawn at any of those angles share one page-from-world map
+    /// per panel and one page size, as the frames of an animation or a
+    /// series of plates must. [`Scene::frames`] draws such a series, held
+    /// over the whole revolution unless the scene holds other poses.
+    ///
+    /// - D is fitted into the page wherever it comes within 0.8 (l + r) of
+    ///   the line of stroke at one of the poses; farther, and at infinity
+    ///   (θ = 90° and 270°, CB perpendicular to the stroke), it is shown by
+    ///   an arrow at the frame's edge, as in a single figure. Near those
+    ///   angles D climbs far from the stroke, so a view held over the whole
+    ///   turn with a layer that draws D (velocity, Klein, the virtual
+    ///   centres, the centrodes) is drawn smaller than one pose alone.
+    /// - The detail (the acceleration constructions of Figs. 65–67, and a
+    ///   velocity triangle too small to letter) is held too: when any pose
+    ///   needs one, every figure has one, showing the union of the regions
+    ///   the poses' details would show at the least of their
+    ///   magnifications, lowered until it fits the page's width (none when
+    ///   not even ×2 fits). The constructions of a pose outside that
+    ///   region are clipped at its border.
+    /// - A pose outside the range is drawn in the same map: whatever it
+    ///   draws beyond what the range draws may leave the page (lines are
+    ///   clipped to it, far points shown by arrows at its edge), and if it
+    ///   has more notes than any pose of the range, the page grows below
+    ///   for them (the maps stay).
+    ///
+    /// The constructions computed for the fit are not counted in the
+    /// figure's [`Evaluations`], which count what it draws. Errors when
+    /// `angles` is empty or holds more than 3600 angles.
+    pub fn held_over(mut self, angles: Vec<Angle>) -> Result<Self> {
+        if angles.is_empty() {
+            return Err(Error::Parse(
+                "a view is held over at least one angle".into(),
+            ));
+        }
+        if angles.len() > MAX_HELD {
+            return Err(Error::OutOfRange {
+                name: "held angles",
+                value: angles.len() as f64,
+                reason: format!("a view is held over at most {MAX_HELD} poses"),
+            });
+        }
+        self.held = Some(angles);
+        Ok(self)
+    }
+
+    /// The poses the page map is held over ([`Scene::held_over`]); `None`
+    /// when the figure is fitted to its own pose.
+    pub fn held(&self) -> Option<&[Angle]> {
+        self.held.as_deref()
+    }
+
+    /// The figures of the scene at each of `angles`, in order: its first
+    /// pose moved to each angle (the ghosts of an overlay stay where they
+    /// are), all laid out once in a view held over the scene's
+    /// [`Scene::held`] poses, or over the whole revolution (every degree)
+    /// when it holds none. Every frame then has the same page-from-world
+    /// map in each panel and the same page size (see
+    /// [`Scene::held_over`] for D at infinity, the detail and poses
+    /// outside the range). Each frame is the figure of
+    /// `self.held_over(range)?.with_angles(..)?`, byte for byte. Errors
+    /// when `angles` is empty or holds more than 3600 angles.
+    ///
+    /// ```
+    /// use slider_crank::{Angle, Layer, Scene, SliderCrank};
+    /// let scene = Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::from_degrees(0.0)?)
+    ///     .with_layers([Layer::Mechanism, Layer::Velocity]);
+    /// let angles: Vec<Angle> = (0..36)
+    ///     .map(|k| Angle::from_degrees(10.0 * f64::from(k)))
+    ///     .collect::<Result<_, _>>()?;
+    /// let frames = scene.frames(&angles)?;
+    /// assert_eq!(frames.len(), 36);
+    /// assert!(frames.iter().all(|f| f.panels()[0].transform() == frames[0].panels()[0].transform()));
+    /// # Ok::<(), slider_crank::Error>(())
+    /// ```
+    pub fn frames(&self, angles: &[Angle]) -> Result<Vec<Figure>> {
+        if angles.is_empty() || angles.len() > MAX_HELD {
+            return Err(Error::OutOfRange {
+                name: "frames",
+                value: angles.len() as f64,
+                reason: format!("a series has 1 to {MAX_HELD} frames"),
+            });
+        }
+        let range = match &self.held {
+            Some(held) => held.clone(),
+            None => revolution(),
+        };
+        let held = self.clone().held_over(range)?;
+        let layout = draw::held(&held, held.held().unwrap_or_default());
+        angles
+            .iter()
+            .map(|a| {
+                let mut poses = held.angles.clone();
+                poses[0] = *a;
+                Ok(draw::build(&held.clone().with_angles(poses)?, Some(&layout)).0)
+            })
+            .collect()
+    }
+
     /// The figure's name.
     pub fn name(&self) -> &str {
         &self.name
@@ -466,8 +597,10 @@ impl Scene {
         self.build().0
     }
 
-    /// Builds the figure and says what was computed for it.
+    /// Builds the figure and says what was computed for it: fitted to
+    /// its own pose, or in the view held over [`Scene::held`].
     pub fn build(&self) -> (Figure, Evaluations) {
-        draw::build(self)
+        let layout = self.held.as_deref().map(|a| draw::held(self, a));
+        draw::build(self, layout.as_ref())
     }
 }

@@ -133,7 +133,9 @@ pub(super) fn short_arc(centre: Point, radius: f64, start: f64, end: f64) -> Sha
     }
 }
 
-fn uses(name: FigureName) -> &'static [&'static str] {
+/// The options the diagram `name` uses, named as on the command line
+/// (`--angle`); the others are refused.
+pub(crate) fn uses(name: FigureName) -> &'static [&'static str] {
     const MECH: &str = "mechanism (--crank, --rod, --offset)";
     const SPEED: &str = "crank speed (--rpm, --omega)";
     match name {

@@ -43,7 +43,7 @@ fn steps() -> impl DoubleEndedIterator<Item = f64> + Clone {
 
 /// What the detail shows: the world region (the detailed points' box),
 /// and the magnification over the main view.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Detail {
     pub region: Frame,
     pub magnification: f64,
@@ -133,4 +133,31 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
         Some(d) if enough(&d) => Some(d),
         _ => fitted(&core),
     }
+}
+
+/// One detail for the poses of a held view, whose `details` are those
+/// each pose needs: the union of their regions at the least of their
+/// magnifications, lowered to a step that fits `max_width` page units at
+/// `scale` (none when not even the least step fits; none when no pose
+/// needs one).
+pub(crate) fn union(details: &[Detail], scale: f64, max_width: f64) -> Option<Detail> {
+    let first = details.first()?;
+    let (mut lo, mut hi) = (first.region.min(), first.region.max());
+    let mut least = first.magnification;
+    for d in &details[1..] {
+        lo = lo.inf(&d.region.min());
+        hi = hi.sup(&d.region.max());
+        least = least.min(d.magnification);
+    }
+    let width = (hi.x - lo.x) * scale;
+    let fits = |m: f64| width * m + 2.0 * PAD <= max_width;
+    let magnification = if fits(least) {
+        least
+    } else {
+        steps().rev().find(|m| *m <= least && fits(*m))?
+    };
+    Some(Detail {
+        region: Frame::new(lo, hi),
+        magnification,
+    })
 }

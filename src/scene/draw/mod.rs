@@ -17,6 +17,7 @@ use super::Scene;
 use super::cache::{Constructions, Evaluations};
 use super::canvas::{Canvas, round};
 use super::notation::Named;
+use crate::Angle;
 use crate::figure::{
     Align, Figure, Hue, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
 };
@@ -28,7 +29,7 @@ use serde_json::{Map, Value, json};
 const INSET: f64 = 26.0;
 
 /// Sizes shared by the layers, in world units.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Sizes {
     /// Half the slider block's length along the stroke.
     pub block_half_length: f64,
@@ -142,7 +143,122 @@ const CAPTION: f64 = 22.0;
 /// Room between the detail and the notes below it, page units.
 const NOTE_GAP: f64 = 8.0;
 
-pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
+/// Where a figure's drawing goes on the page: the block's sizes, the room
+/// kept for the notes, the main view's panel and map, and the detail.
+/// Fitted to one pose ([`fit`]) or held over several ([`held`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Layout {
+    sizes: Sizes,
+    /// The notes' band the fit left room for, page units.
+    band: f64,
+    main: PageRect,
+    transform: PageFromWorld,
+    detail: Option<detail::Detail>,
+}
+
+/// The notes of the scene at the pose of `ctx`: their number of lines
+/// fixes the band below the panels.
+fn notes(ctx: &Ctx) -> Vec<RichText> {
+    let scene = ctx.scene;
+    let mut notes = if scene.has(Layer::Scales) {
+        scales::notes(ctx)
+    } else {
+        Vec::new()
+    };
+    if scene.has(Layer::Torque) {
+        notes.extend(torque::notes(ctx));
+    }
+    if scene.mechanism().offset() != 0.0 {
+        notes.push(RichText::parse(&offset_note(scene)));
+    }
+    notes
+}
+
+/// The band the notes take below the panels, page units.
+fn band(notes: &[RichText]) -> f64 {
+    if notes.is_empty() {
+        0.0
+    } else {
+        NOTE_LINE * notes.len() as f64 + 14.0
+    }
+}
+
+/// The layout fitted to the pose of `ctx` with its notes' `band`.
+fn fit(ctx: &Ctx, band: f64) -> Layout {
+    let mut ctx = Ctx {
+        sizes: Sizes::new(ctx.scene),
+        ..*ctx
+    };
+    // The block and the arrows drawn to page lengths are sized at the
+    // scale of the fit before: three fits bring the scale within a fraction
+    // of a per cent of the last.
+    for _ in 0..FITS - 1 {
+        let (_, fit) = main_view(&ctx, band, fit::frame(&ctx));
+        ctx.sizes = ctx.sizes.on_page(fit.scale());
+    }
+    let (main, transform) = main_view(&ctx, band, fit::frame(&ctx));
+    let page = ctx.scene.page();
+    let detail = detail::detail(&ctx, transform.scale(), page.width() - 2.0 * page.margin());
+    Layout {
+        sizes: ctx.sizes,
+        band,
+        main,
+        transform,
+        detail,
+    }
+}
+
+/// The layout held over the poses at `angles`: one fit to what the scene
+/// draws at all of them (the union of their frames, the most notes of any),
+/// and one detail showing the union of their details' regions at the least
+/// of their magnifications, narrowed to the page if need be.
+pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
+    let m = scene.mechanism();
+    let poses: Vec<Constructions> = angles
+        .iter()
+        .map(|a| Constructions::new(m.pose(*a)))
+        .collect();
+    let mut ctxs: Vec<Ctx> = poses
+        .iter()
+        .map(|main| Ctx {
+            scene,
+            main,
+            sizes: Sizes::new(scene),
+        })
+        .collect();
+    let band = ctxs.iter().map(|c| band(&notes(c))).fold(0.0, f64::max);
+    let union = |ctxs: &[Ctx]| {
+        ctxs.iter()
+            .map(fit::frame)
+            .reduce(|a, b| Frame::new(a.min().inf(&b.min()), a.max().sup(&b.max())))
+            .expect("at least one pose")
+    };
+    for _ in 0..FITS - 1 {
+        let (_, fit) = main_view(&ctxs[0], band, union(&ctxs));
+        let sizes = ctxs[0].sizes.on_page(fit.scale());
+        for c in &mut ctxs {
+            c.sizes = sizes;
+        }
+    }
+    let (main, transform) = main_view(&ctxs[0], band, union(&ctxs));
+    let page = scene.page();
+    let width = page.width() - 2.0 * page.margin();
+    let details: Vec<detail::Detail> = ctxs
+        .iter()
+        .filter_map(|c| detail::detail(c, transform.scale(), width))
+        .collect();
+    Layout {
+        sizes: ctxs[0].sizes,
+        band,
+        main,
+        transform,
+        detail: detail::union(&details, transform.scale(), width),
+    }
+}
+
+/// Builds the figure of `scene`, in `layout` when one is held, else in
+/// the layout fitted to its own pose.
+pub(crate) fn build(scene: &Scene, layout: Option<&Layout>) -> (Figure, Evaluations) {
     let m = scene.mechanism();
     let poses: Vec<Constructions> = scene
         .angles()
@@ -156,33 +272,20 @@ pub(crate) fn build(scene: &Scene) -> (Figure, Evaluations) {
     };
 
     // Notes first: their number of lines fixes the band below the panels.
-    let mut notes = if scene.has(Layer::Scales) {
-        scales::notes(&ctx)
-    } else {
-        Vec::new()
+    let notes = notes(&ctx);
+    let own = band(&notes);
+    let layout = match layout {
+        Some(held) => *held,
+        None => fit(&ctx, own),
     };
-    if scene.has(Layer::Torque) {
-        notes.extend(torque::notes(&ctx));
-    }
-    if m.offset() != 0.0 {
-        notes.push(RichText::parse(&offset_note(scene)));
-    }
+    ctx.sizes = layout.sizes;
     let page = scene.page();
-    let band = if notes.is_empty() {
-        0.0
-    } else {
-        NOTE_LINE * notes.len() as f64 + 14.0
-    };
+    // A pose outside a held range may have more notes than it left room
+    // for: the page grows for them, the map stays.
+    let band = own.max(layout.band);
     let mg = page.margin();
-    // The block and the arrows drawn to page lengths are sized at the
-    // scale of the fit before: three fits bring the scale within a fraction
-    // of a per cent of the last.
-    for _ in 0..FITS - 1 {
-        let (_, fit) = main_view(&ctx, band);
-        ctx.sizes = ctx.sizes.on_page(fit.scale());
-    }
-    let (main, transform) = main_view(&ctx, band);
-    let detail = detail::detail(&ctx, transform.scale(), page.width() - 2.0 * mg);
+    let (main, transform) = (layout.main, layout.transform);
+    let detail = layout.detail;
     let region = detail.map(|d| detail_frame(&d, transform.scale()));
     let mut canvas = Canvas::new(transform, transform.world_frame(&main));
     if let Some(frame) = region {
@@ -280,8 +383,9 @@ fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bo
 
 /// The main view: the panel at the top of the page, as wide as the page
 /// allows and only as tall as what it draws needs (the scene's page
-/// height, less the notes' `band`, is the most it may take), and its map.
-fn main_view(ctx: &Ctx, band: f64) -> (PageRect, PageFromWorld) {
+/// height, less the notes' `band`, is the most it may take), and its map,
+/// fitted to the `world` rectangle.
+fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
     let scene = ctx.scene;
     let page = scene.page();
     let mg = page.margin();
@@ -289,7 +393,6 @@ fn main_view(ctx: &Ctx, band: f64) -> (PageRect, PageFromWorld) {
     let width = page.width() - 2.0 * mg;
     let fit_width = (width - inset[0] - inset[1]).max(20.0);
     let most = (page.height() - 2.0 * mg - band - inset[2] - inset[3]).max(20.0);
-    let world = fit::frame(ctx);
     let size = world.max() - world.min();
     let scale = (fit_width / size.x).min(most / size.y);
     let drawn = if scale.is_finite() && scale > 0.0 {

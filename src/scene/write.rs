@@ -1,0 +1,361 @@
+//! Scene files written out: the TOML of a named figure with every key it
+//! uses at the figure's own value, each with a comment, as a starting
+//! point. The parser reads it back to the same figure.
+
+use super::Scene;
+use crate::Layer;
+use crate::figure::{FigureName, PageLength, PageUnit, diagram_uses};
+use std::fmt::Write;
+
+/// A number as TOML: an integer where the value is one (`45`, `250`),
+/// else the shortest text that reads back to the same f64 (`0.01`,
+/// `1e-100`).
+fn number(v: f64) -> String {
+    if v == v.trunc() && v.abs() < 1e15 {
+        format!("{}", v as i64)
+    } else {
+        format!("{v:?}")
+    }
+}
+
+/// A text as a TOML string, quoted and escaped.
+fn text(s: &str) -> String {
+    toml::Value::String(s.to_string()).to_string()
+}
+
+/// A page length in `unit` that reads back to `units` page units exactly
+/// (`"160mm"`), or the page units themselves.
+fn page_length(units: f64, unit: PageUnit) -> String {
+    if unit.is_physical() {
+        let mut v = units / unit.page_units();
+        for _ in 0..8 {
+            match PageLength::new(v, unit) {
+                Ok(l) if l.page_units() == units => return text(&format!("{}{unit}", number(v))),
+                Ok(l) if l.page_units() < units => v = v.next_up(),
+                _ => v = v.next_down(),
+            }
+        }
+    }
+    number(units)
+}
+
+/// The crank speed as `rpm = N` where a number of revolutions per minute
+/// reads back to `omega` exactly, else as `omega = W`.
+fn speed(omega: f64) -> String {
+    let rpm = omega * 60.0 / std::f64::consts::TAU;
+    let round: f64 = format!("{rpm:.9e}").parse().unwrap_or(rpm);
+    match [round, rpm]
+        .into_iter()
+        .find(|n| crate::rpm_to_omega(*n) == omega)
+    {
+        Some(n) => format!("rpm = {}", number(n)),
+        None => format!("omega = {}", number(omega)),
+    }
+}
+
+/// Appends `comment` as `#` lines of at most 78 characters.
+fn comment(out: &mut String, comment: &str) {
+    let mut line = String::from("#");
+    for word in comment.split(' ') {
+        if line.len() > 1 && line.chars().count() + 1 + word.chars().count() > 78 {
+            let _ = writeln!(out, "{line}");
+            line = String::from("#");
+        }
+        line.push(' ');
+        line.push_str(word);
+    }
+    let _ = writeln!(out, "{line}");
+}
+
+/// Appends `comment` and `line`.
+fn key(out: &mut String, text: &str, line: &str) {
+    comment(out, text);
+    let _ = writeln!(out, "{line}");
+}
+
+const VERSION: &str = "The version of the scene file format (1, the one this program reads).";
+const STYLE: &str = "The style: textbook (black ink) or handout (colour).";
+const FONT: &str = "The face of the text: new-computer-modern or libertinus-serif.";
+const TITLE: &str =
+    "A title set centred below the figure (*A* italic, V_p a subscript); none by default.";
+const MECHANISM: &str = "Crank radius r, rod length l (> r + |e|) and offset e of the line of stroke, in the length unit.";
+const UNITS: &str = "The names of the units, written beside quantities; no number is converted.";
+const PAGE: &str = "The page: a number of page units (px, 96 to the inch), or a text with its unit, \"120mm\" or \"4.5in\".";
+
+fn mechanism_table(out: &mut String, m: &crate::SliderCrank) {
+    out.push_str("\n[mechanism]\n");
+    comment(out, MECHANISM);
+    let _ = writeln!(out, "crank = {}", number(m.crank()));
+    let _ = writeln!(out, "rod = {}", number(m.rod()));
+    let _ = writeln!(out, "offset = {}", number(m.offset()));
+}
+
+fn units_table(out: &mut String, units: &crate::Units) {
+    out.push_str("\n[units]\n");
+    comment(out, UNITS);
+    let _ = writeln!(out, "length = {}", text(units.length().as_str()));
+    let _ = writeln!(out, "force = {}", text(units.force().as_str()));
+}
+
+/// The scene file of a mechanism figure's `scene`, every key given:
+/// reading it back gives the same scene (a held view, which no key
+/// expresses, aside).
+pub(crate) fn scene(name: FigureName, scene: &Scene) -> String {
+    let mut out = String::new();
+    comment(
+        &mut out,
+        &format!(
+            "The scene of {0} with every key at the figure's own value: `slider-crank scene` on this file draws what `slider-crank figure {0}` draws. Change a value, or delete a key to take its default (docs/scene-format.md).",
+            name.name()
+        ),
+    );
+    out.push('\n');
+    key(
+        &mut out,
+        VERSION,
+        &format!("version = {}", super::file::VERSION),
+    );
+    key(
+        &mut out,
+        "The name written in the figure's metadata.",
+        &format!("name = {}", text(scene.name())),
+    );
+    let degrees: Vec<String> = scene.angles().iter().map(|a| number(a.degrees())).collect();
+    if let [one] = degrees.as_slice() {
+        key(
+            &mut out,
+            "Crank angle θ in degrees, counter-clockwise from the line of stroke (0: outer dead centre).",
+            &format!("angle = {one}"),
+        );
+    } else {
+        key(
+            &mut out,
+            "The poses, degrees: the first carries the constructions, the others are ghosts.",
+            &format!("angles = [{}]", degrees.join(", ")),
+        );
+    }
+    let all: Vec<&str> = Layer::ALL.iter().map(|l| l.name()).collect();
+    let layers: Vec<String> = scene.layers().iter().map(|l| text(l.name())).collect();
+    key(
+        &mut out,
+        &format!("The layers drawn, any of: {}.", all.join(", ")),
+        &format!("layers = [{}]", layers.join(", ")),
+    );
+    key(
+        &mut out,
+        STYLE,
+        &format!("style = {}", text(scene.style().name())),
+    );
+    key(
+        &mut out,
+        FONT,
+        &format!("font = {}", text(scene.font().name())),
+    );
+    key(
+        &mut out,
+        "The letters: textbook (C, B, A, D, E) or ng (O, C, P, I, M).",
+        &format!("notation = {}", text(scene.notation().name())),
+    );
+    key(
+        &mut out,
+        "Whether the cylinder is drawn on the left, as the textbook draws it.",
+        &format!("mirror = {}", scene.is_mirrored()),
+    );
+    key(
+        &mut out,
+        "Crank speed, revolutions per minute (or omega, rad/s; counter-clockwise when positive).",
+        &speed(scene.omega()),
+    );
+    key(
+        &mut out,
+        "Crank torque of the torque layer, force × length.",
+        &format!("torque = {}", number(scene.torque())),
+    );
+    key(
+        &mut out,
+        "The point of the rod whose path the coupler layer draws, from A (0) to B (1).",
+        &format!("coupler = {}", number(scene.coupler().t())),
+    );
+    key(
+        &mut out,
+        "The drawing tolerance of curves, page units.",
+        &format!("tolerance = {}", number(scene.tolerance())),
+    );
+    match scene.title() {
+        Some(t) => key(&mut out, TITLE, &format!("title = {}", text(t.as_str()))),
+        None => key(&mut out, TITLE, "# title = \"…\""),
+    }
+    mechanism_table(&mut out, scene.mechanism());
+    units_table(&mut out, scene.units());
+    let page = scene.page();
+    out.push_str("\n[page]\n");
+    comment(
+        &mut out,
+        &format!(
+            "{PAGE} The height is the most the figure takes: it ends below its drawing. The margin is in page units."
+        ),
+    );
+    let _ = writeln!(out, "width = {}", page_length(page.width(), page.unit()));
+    let _ = writeln!(out, "height = {}", page_length(page.height(), page.unit()));
+    let _ = writeln!(out, "margin = {}", number(page.margin()));
+    out
+}
+
+/// The scene file of a diagram: `figure` and the keys it uses, at its own
+/// values.
+pub(crate) fn diagram(name: FigureName) -> String {
+    const MECH: &str = "mechanism (--crank, --rod, --offset)";
+    const SPEED: &str = "crank speed (--rpm, --omega)";
+    let uses = diagram_uses(name);
+    let mut out = String::new();
+    let data = match (uses.contains(&"--data"), uses.contains(&"--fit")) {
+        (true, true) => {
+            " Its measured data (--data) and its fit (--fit) are given on the command line only."
+        }
+        (true, false) => " Its measured data (--data) is given on the command line only.",
+        _ => "",
+    };
+    comment(
+        &mut out,
+        &format!(
+            "The diagram {0} with every key it takes at its own value: `slider-crank scene` on this file draws what `slider-crank figure {0}` draws. Change a value, or delete a key to take its default (docs/scene-format.md).{data}",
+            name.name()
+        ),
+    );
+    out.push('\n');
+    key(
+        &mut out,
+        VERSION,
+        &format!("version = {}", super::file::VERSION),
+    );
+    key(
+        &mut out,
+        "The diagram: its keys below change it.",
+        &format!("figure = {}", text(name.name())),
+    );
+    if uses.contains(&"--angle") {
+        let what = if name == FigureName::NgFig2Incline {
+            "The tilt of the plane, degrees (0 < φ < 90)."
+        } else {
+            "Crank angle θ of the pose whose construction is drawn, degrees."
+        };
+        key(
+            &mut out,
+            what,
+            &format!("angle = {}", number(name.angle_degrees())),
+        );
+    }
+    if uses.contains(&SPEED) {
+        key(
+            &mut out,
+            "Crank speed, revolutions per minute (or omega, rad/s), positive.",
+            &speed(crate::rpm_to_omega(250.0)),
+        );
+    }
+    key(&mut out, STYLE, "style = \"textbook\"");
+    key(
+        &mut out,
+        FONT,
+        &format!("font = {}", text(crate::Font::default().name())),
+    );
+    if uses.contains(&"--mirror") {
+        key(
+            &mut out,
+            "Whether the mechanism is drawn with the cylinder on the left.",
+            &format!("mirror = {}", !name.is_ng()),
+        );
+    }
+    key(&mut out, TITLE, "# title = \"…\"");
+    if uses.contains(&MECH) {
+        mechanism_table(&mut out, &name.mechanism());
+    }
+    units_table(&mut out, &name.units());
+    let page = name.page();
+    out.push_str("\n[page]\n");
+    comment(
+        &mut out,
+        &format!("{PAGE} The diagram lays its plots out on it."),
+    );
+    let _ = writeln!(out, "width = {}", number(page.width()));
+    let _ = writeln!(out, "height = {}", number(page.height()));
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_read_back() {
+        for v in [0.0, 45.0, 250.0, 0.01, 264.87, 1e-100, 1.5e300, -3.25, 1e15] {
+            let s = number(v);
+            let back: f64 = toml::from_str::<toml::Table>(&format!("v = {s}")).unwrap()["v"]
+                .as_float()
+                .or_else(|| {
+                    toml::from_str::<toml::Table>(&format!("v = {s}")).unwrap()["v"]
+                        .as_integer()
+                        .map(|i| i as f64)
+                })
+                .unwrap();
+            assert_eq!(back, v, "{s}");
+        }
+        assert_eq!(number(45.0), "45");
+        assert_eq!(number(0.5), "0.5");
+    }
+
+    #[test]
+    fn speeds_read_back() {
+        assert_eq!(speed(crate::rpm_to_omega(250.0)), "rpm = 250");
+        assert_eq!(speed(crate::rpm_to_omega(1200.0)), "rpm = 1200");
+        assert_eq!(speed(26.16), "omega = 26.16");
+    }
+
+    #[test]
+    fn a_scene_reads_back_to_itself() {
+        use crate::construct::CouplerPoint;
+        use crate::figure::Title;
+        use crate::{Angle, Page, SliderCrank, Style, Units};
+        let angles = [30.0, 120.0, 212.5].map(|d| Angle::from_degrees(d).unwrap());
+        let page = Page::sized("160mm".parse().unwrap(), "4.5in".parse().unwrap(), 12.5).unwrap();
+        let scene = Scene::new(SliderCrank::new(25.0, 72.0, -3.5).unwrap(), angles[0])
+            .named("a \"quoted\" name")
+            .with_angles(angles.to_vec())
+            .unwrap()
+            .with_layers([Layer::Mechanism, Layer::Coupler, Layer::Torque])
+            .with_style(Style::Handout)
+            .with_font(crate::Font::LibertinusSerif)
+            .with_notation(crate::Notation::Ng)
+            .mirrored(true)
+            .with_page(page)
+            .with_omega(-26.16)
+            .unwrap()
+            .with_units(Units::MILLIMETRE_NEWTON)
+            .with_title(Title::new("Ng's rig, *O* and *M*").unwrap())
+            .with_torque(264.87)
+            .unwrap()
+            .with_coupler(CouplerPoint::new(0.25).unwrap())
+            .with_tolerance(0.005)
+            .unwrap();
+        let text = super::scene(FigureName::Fig67Example, &scene);
+        match super::super::file::parse(&text).unwrap() {
+            crate::SceneFile::Mechanism(back) => assert_eq!(back, scene, "{text}"),
+            _ => panic!("a diagram"),
+        }
+    }
+
+    #[test]
+    fn physical_page_lengths_read_back() {
+        for (v, u) in [
+            (160.0, PageUnit::Mm),
+            (4.5, PageUnit::In),
+            (33.3, PageUnit::Mm),
+        ] {
+            let units = PageLength::new(v, u).unwrap().page_units();
+            let s = page_length(units, u);
+            let l: PageLength = s.trim_matches('"').parse().unwrap();
+            assert_eq!(l.page_units(), units, "{s}");
+            assert_eq!(l.unit(), u);
+        }
+        assert_eq!(page_length(760.0, PageUnit::Px), "760");
+    }
+}
