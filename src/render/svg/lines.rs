@@ -4,8 +4,8 @@
 use super::markup::{
     arc_beziers, arrow_head, bezier_d, finite, path, polyline_d, pt, stroke, unit,
 };
-use super::{Ink, PanelWriter};
-use crate::figure::{Path, PathSegment, Role};
+use super::{Ink, PanelWriter, centre};
+use crate::figure::{Path, PathSegment};
 use crate::geom::Point;
 use crate::render::number::fmt;
 use std::fmt::Write as _;
@@ -63,11 +63,21 @@ impl PanelWriter<'_> {
         if closed {
             self.obstacles.segment(pts[pts.len() - 1], pts[0]);
         }
-        let mut node = ink.tag(path(polyline_d(&pts, closed), ink.pen));
-        if ink.role == Role::Auxiliary && pts.len() == 2 && ink.id.starts_with("line-stroke") {
-            node = node.set("stroke-dasharray", "14 3 2 3");
+        if pts.len() == 2 && !closed && centre::is_centre_line(ink.role, ink.id) {
+            // Written once the labels are placed (with gaps for them).
+            self.centre_lines.push(centre::CentreLine {
+                node: usize::MAX,
+                id: ink.id.to_string(),
+                role: ink.role,
+                pen: ink.pen,
+                from: pts[0],
+                to: pts[1],
+            });
+            return Some(Box::new(
+                self.centre_lines[self.centre_lines.len() - 1].written(&[]),
+            ));
         }
-        Some(Box::new(node))
+        Some(Box::new(ink.tag(path(polyline_d(&pts, closed), ink.pen))))
     }
 
     /// A tinted area without outline, where the style tints (the similar

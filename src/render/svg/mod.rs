@@ -9,6 +9,7 @@
 //! angle marks, dimensions) and text ([`notes`]: labels, fixed texts,
 //! notes). Each symbol also tells the label placement what it covers.
 
+mod centre;
 mod cull;
 mod frame;
 mod lines;
@@ -69,6 +70,8 @@ struct PanelWriter<'a> {
     font: Font,
     obstacles: Obstacles,
     pending: Vec<Pending>,
+    /// Centre lines to write again once the labels are placed.
+    centre_lines: Vec<centre::CentreLine>,
 }
 
 impl PanelWriter<'_> {
@@ -108,6 +111,8 @@ impl PanelWriter<'_> {
             pen: self.pen(item),
         };
         self.obstacles.set_weight(match item.role {
+            // A letter may sit on a centre line, which opens for it.
+            role if centre::is_centre_line(role, &item.id) => centre::WEIGHT,
             // Hatching is as bad to letter over as a link.
             Role::Link | Role::Force | Role::Frame => 3.0,
             Role::Construction | Role::Result => 1.5,
@@ -187,6 +192,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
         font,
         obstacles: Obstacles::default(),
         pending: Vec::new(),
+        centre_lines: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -196,14 +202,32 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
         .filter(|(_, item)| clip.is_none_or(|r| cull::may_show(t, &r, &item.shape)))
         .collect();
     order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
-    let nodes: Vec<Box<dyn Node>> = order.iter().filter_map(|(_, item)| w.item(item)).collect();
+    let mut nodes: Vec<Box<dyn Node>> = Vec::new();
+    for (_, item) in &order {
+        let lines = w.centre_lines.len();
+        if let Some(node) = w.item(item) {
+            if let Some(line) = w.centre_lines.get_mut(lines) {
+                line.node = nodes.len();
+            }
+            nodes.push(node);
+        }
+    }
+    let (texts, boxes) = w.place_labels(room);
+    for line in &w.centre_lines {
+        if let Some(node) = nodes.get_mut(line.node) {
+            *node = Box::new(line.written(&boxes));
+        }
+    }
     if panel.is_clipped() {
         g = clipped(g, panel);
     }
     for n in nodes {
         g = g.add(n);
     }
-    w.place_labels(g, room)
+    for t in texts {
+        g = g.add(t);
+    }
+    g
 }
 
 /// `g` clipped to the panel's rectangle (a detail panel).
@@ -221,15 +245,19 @@ fn clipped(g: Group, panel: &Panel) -> Group {
 
 impl PanelWriter<'_> {
     /// The pending labels placed in `room` one by one, each clear of what
-    /// is drawn and of the labels before it, and added to `g`.
-    fn place_labels(mut self, mut g: Group, room: &PageRect) -> Group {
+    /// is drawn and of the labels before it: their text elements and
+    /// their boxes.
+    fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
         let colour = self.style.pen(Role::Label).colour;
         self.obstacles.build();
+        let (mut texts, mut boxes) = (Vec::new(), Vec::new());
         for p in std::mem::take(&mut self.pending) {
             let (half, rise) = ink_box(&p.text, p.size, self.font);
             let centre = place(p.anchor, half, p.gap, REACH * p.size, &self.obstacles, room);
-            self.obstacles.boxed(Bounds::around(centre, half));
-            g = g.add(text_node(
+            let b = Bounds::around(centre, half);
+            self.obstacles.boxed(b);
+            boxes.push(b);
+            texts.push(text_node(
                 &p.id,
                 centre + crate::geom::Vector::new(0.0, rise),
                 &p.text,
@@ -239,7 +267,7 @@ impl PanelWriter<'_> {
                 starts_italic(&p.text),
             ));
         }
-        g
+        (texts, boxes)
     }
 }
 
