@@ -114,13 +114,16 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
 }
 
 /// The offset e of the line of stroke from the crank centre, dimensioned
-/// beyond the crank circle on the side away from the slider.
+/// on the side away from the slider, beyond the crank circle and beyond
+/// whatever the constructions draw on that side (Kisch's semicircle and
+/// its arc reach past the circle at some poses).
 pub(crate) fn offset(ctx: &Ctx, canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     if canvas.page(e.abs()) < 4.0 {
         return;
     }
+    let beyond = r.max(-super::fit::frame(ctx).min().x);
     canvas.push(
         "dimension-e",
         Role::Dimension,
@@ -128,7 +131,7 @@ pub(crate) fn offset(ctx: &Ctx, canvas: &mut Canvas) {
             from: Point::origin(),
             to: Point::new(0.0, e),
             side: Vector::new(-1.0, 0.0),
-            offset: canvas.page(r) + 18.0,
+            offset: canvas.page(beyond) + 18.0,
             text: RichText::italic("e"),
         },
     );
