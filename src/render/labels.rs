@@ -237,17 +237,23 @@ impl Near<'_> {
     }
 }
 
-/// The length of the segment `pq` inside `b` (Liang and Barsky's
-/// clipping), or `None` if it misses the box; a segment that only touches
-/// the box, or a point inside it, has length 0.
+/// The length of the segment `pq` inside `b`, or `None` if it misses the
+/// box; a segment that only touches the box, or a point inside it, has
+/// length 0.
 fn length_inside(p: Point, q: Point, b: &Bounds) -> Option<f64> {
     let d = q - p;
+    span(p, d, b).map(|(t0, t1)| (t1 - t0) * d.norm())
+}
+
+/// The parameters `t0 ≤ t1` within 0..1 between which `from + t d` lies
+/// in the box `b` (Liang and Barsky's clipping), if it meets it.
+pub(crate) fn span(from: Point, d: Vector, b: &Bounds) -> Option<(f64, f64)> {
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for (towards, room) in [
-        (-d.x, p.x - b.min.x),
-        (d.x, b.max.x - p.x),
-        (-d.y, p.y - b.min.y),
-        (d.y, b.max.y - p.y),
+        (-d.x, from.x - b.min.x),
+        (d.x, b.max.x - from.x),
+        (-d.y, from.y - b.min.y),
+        (d.y, b.max.y - from.y),
     ] {
         if towards == 0.0 {
             if room < 0.0 {
@@ -262,7 +268,7 @@ fn length_inside(p: Point, q: Point, b: &Bounds) -> Option<f64> {
             }
         }
     }
-    (t0 <= t1).then(|| (t1 - t0) * d.norm())
+    (t0 <= t1).then_some((t0, t1))
 }
 
 /// How much farther than touching each ring of candidates sits, page

@@ -7,7 +7,7 @@ use super::Ink;
 use super::markup::{path, pt};
 use crate::figure::{Pen, Role};
 use crate::geom::{Point, Vector};
-use crate::render::labels::Bounds;
+use crate::render::labels::{Bounds, span};
 use std::fmt::Write as _;
 use svg::node::element::Path as SvgPath;
 
@@ -70,7 +70,13 @@ fn pieces(from: Point, to: Point, boxes: &[Bounds]) -> Vec<(Point, Point)> {
     let room = Vector::new(GAP_ROOM, GAP_ROOM);
     let mut cuts: Vec<(f64, f64)> = boxes
         .iter()
-        .filter_map(|b| span(from, d, b.min - room, b.max + room))
+        .filter_map(|b| {
+            let grown = Bounds {
+                min: b.min - room,
+                max: b.max + room,
+            };
+            span(from, d, &grown)
+        })
         .collect();
     cuts.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out = Vec::new();
@@ -85,32 +91,6 @@ fn pieces(from: Point, to: Point, boxes: &[Bounds]) -> Vec<(Point, Point)> {
         out.push((from + d * at, to));
     }
     out
-}
-
-/// The parameters (within 0..1) where `from + t d` is inside the box from
-/// `min` to `max` (Liang and Barsky), if it enters it.
-fn span(from: Point, d: Vector, min: Point, max: Point) -> Option<(f64, f64)> {
-    let (mut t0, mut t1) = (0.0f64, 1.0f64);
-    for (towards, room) in [
-        (-d.x, from.x - min.x),
-        (d.x, max.x - from.x),
-        (-d.y, from.y - min.y),
-        (d.y, max.y - from.y),
-    ] {
-        if towards == 0.0 {
-            if room < 0.0 {
-                return None;
-            }
-        } else {
-            let t = room / towards;
-            if towards < 0.0 {
-                t0 = t0.max(t);
-            } else {
-                t1 = t1.min(t);
-            }
-        }
-    }
-    (t0 < t1).then_some((t0, t1))
 }
 
 #[cfg(test)]
