@@ -6,7 +6,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 /// Exact kinematics, statics and the classical graphical constructions of
-/// the slider-crank mechanism, drawn as textbook figures (SVG or PNG).
+/// the slider-crank mechanism, drawn as textbook figures (SVG, PNG or PDF).
 ///
 /// Frame: crank centre C at the origin, line of stroke y = e (the offset),
 /// slider A on the +x side; crank angle θ in degrees, counter-clockwise
@@ -54,7 +54,8 @@ enum Command {
         mut_arg("inversion", |a| a.hide(true))
     )]
     Check(cli::check::CheckArgs),
-    /// Draw a named figure or diagram as SVG (or PNG with --out FILE.png)
+    /// Draw a named figure or diagram as SVG (or PNG or PDF with --out
+    /// FILE.png, FILE.pdf)
     Figure(cli::figure::FigureArgs),
     /// Draw the figure a TOML scene file describes
     Scene(cli::scene::SceneArgs),

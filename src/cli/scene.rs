@@ -1,6 +1,6 @@
 //! `slider-crank scene FILE.toml`: a figure described by a scene file.
 
-use super::figure::emit;
+use super::figure::{destination, emit};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
@@ -19,21 +19,23 @@ pub struct SceneArgs {
     /// else new-computer-modern]
     #[arg(long, value_name = "NAME")]
     pub font: Option<String>,
-    /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit)
-    /// when FILE ends in .png, SVG otherwise; `-` prints SVG. A device or
-    /// FIFO is written in place; a symbolic link is kept and its target
-    /// replaced
+    /// Write to FILE instead of printing SVG, in the format its extension
+    /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
+    /// embedded); SVG for a name without an extension, any other is
+    /// refused; `-` prints SVG. A device or FIFO is written in place; a
+    /// symbolic link is kept and its target replaced
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
 
 /// Runs the subcommand.
 pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
+    let to = destination(args.out.as_ref())?;
     let text = read_text(&args.file, MAX_SCENE_BYTES, "scene file")?;
     let mut scene = Scene::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", args.file.display())))?;
     if let Some(name) = &args.font {
         scene = scene.with_font(name.parse::<Font>()?);
     }
-    emit(&scene.figure(), args.out.as_ref(), out)
+    emit(&scene.figure(), to, out)
 }
