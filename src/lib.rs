@@ -73,6 +73,7 @@ pub mod construct;
 pub mod diagram;
 mod error;
 pub mod figure;
+pub mod gallery;
 pub mod geom;
 pub mod input;
 mod mechanism;

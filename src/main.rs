@@ -59,6 +59,13 @@ enum Command {
     Figure(cli::figure::FigureArgs),
     /// Draw the figure a TOML scene file describes
     Scene(cli::scene::SceneArgs),
+    /// Write every named figure as SVG, PNG and PDF, every table, and an
+    /// index.html with a caption naming the seed and figure each reproduces
+    ///
+    /// The figures are drawn at the seeds' own parameters, as `figure NAME`
+    /// draws them; the tables are those `table NAME` prints. A progress line
+    /// goes to standard error. Each file is written whole or not at all.
+    Gallery(cli::gallery::GalleryArgs),
 }
 
 /// Exit code of a refused run (bad input, unwritable output).
@@ -84,6 +91,7 @@ fn main() -> ExitCode {
         Command::Check(args) => cli::check::run(args, &mut out),
         Command::Figure(args) => cli::figure::run(args, &mut out).map(|()| true),
         Command::Scene(args) => cli::scene::run(args, &mut out).map(|()| true),
+        Command::Gallery(args) => cli::gallery::run(args).map(|()| true),
     }
     .and_then(|ok| out.finish().map(|()| ok));
     match result {
@@ -117,7 +125,7 @@ fn parse_error(e: clap::Error) -> ExitCode {
     }
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         eprintln!(
-            "slider-crank: a subcommand is required: analyze, table, check, figure or scene (see --help)"
+            "slider-crank: a subcommand is required: gallery, analyze, table, check, figure or scene (see --help)"
         );
         return ExitCode::from(REFUSED);
     }

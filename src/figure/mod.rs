@@ -13,11 +13,13 @@ mod font;
 mod model;
 mod options;
 mod path;
+mod source;
 mod style;
 mod text;
 mod transform;
 
 pub use catalogue::FigureName;
+pub(crate) use catalogue::NG_TORQUE;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
 pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
 pub use options::{FigureOptions, Fit};
