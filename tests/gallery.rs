@@ -187,3 +187,72 @@ fn an_error_names_the_file_and_keeps_what_was_there() {
     assert!(Path::new(&dir.path().join("fig-63-velocity.svg")).is_file());
     assert!(!dir.path().join("index.html").exists());
 }
+
+#[test]
+fn a_manifest_chooses_the_contents_and_check_finds_what_differs() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy("examples/offset-kisch.toml", dir.path().join("kisch.toml")).unwrap();
+    let manifest = dir.path().join("book.toml");
+    std::fs::write(
+        &manifest,
+        "figures = [\"fig-63-velocity\"]\nscenes = [\"kisch.toml\"]\nformats = [\"svg\", \"pdf\"]\nfont = \"libertinus-serif\"\n",
+    )
+    .unwrap();
+    let out_dir = dir.path().join("g");
+    let (m, g) = (manifest.to_str().unwrap(), out_dir.to_str().unwrap());
+    succeeded(&run(&["gallery", "--manifest", m, "--out", g]));
+    let files: BTreeSet<String> = std::fs::read_dir(&out_dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    let mut expected: BTreeSet<String> = [
+        "fig-63-velocity.svg",
+        "fig-63-velocity.pdf",
+        "kisch.svg",
+        "kisch.pdf",
+        "index.html",
+    ]
+    .map(String::from)
+    .into();
+    expected.extend(TableName::ALL.map(|t| format!("table-{}.txt", t.name())));
+    assert_eq!(files, expected);
+    let pdf = std::fs::read(out_dir.join("fig-63-velocity.pdf")).unwrap();
+    assert!(String::from_utf8_lossy(&pdf).contains("LibertinusSerif-Italic"));
+    let html = std::fs::read_to_string(out_dir.join("index.html")).unwrap();
+    assert!(
+        html.contains("Scene file <code>kisch.toml</code>"),
+        "{html}"
+    );
+
+    // Up to date: exit 0, nothing on standard output.
+    let check = run(&["gallery", "--manifest", m, "--out", g, "--check"]);
+    succeeded(&check);
+    assert!(check.stdout.is_empty());
+
+    // One file changed, one removed: exit 1, each named, nothing written.
+    std::fs::write(out_dir.join("kisch.svg"), b"changed").unwrap();
+    std::fs::remove_file(out_dir.join("table-forces.txt")).unwrap();
+    let check = run(&["gallery", "--manifest", m, "--out", g, "--check"]);
+    assert_eq!(check.status.code(), Some(1));
+    let said = String::from_utf8(check.stdout).unwrap();
+    assert_eq!(said.lines().count(), 2, "{said}");
+    assert!(said.contains("kisch.svg differs"), "{said}");
+    assert!(said.contains("table-forces.txt is missing"), "{said}");
+    assert_eq!(
+        std::fs::read(out_dir.join("kisch.svg")).unwrap(),
+        b"changed"
+    );
+    assert!(!out_dir.join("table-forces.txt").exists());
+
+    // A bad manifest: one line with the line and column.
+    std::fs::write(
+        &manifest,
+        "figures = [\"fig-63-velocity\"]\nstyle = \"sepia\"\n",
+    )
+    .unwrap();
+    let bad = run(&["gallery", "--manifest", m, "--out", g]);
+    assert_eq!(bad.status.code(), Some(2));
+    let err = String::from_utf8(bad.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("book.toml: line 2, column 9:"), "{err}");
+}

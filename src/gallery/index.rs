@@ -2,7 +2,7 @@
 //! seed, section and figure it reproduces, what it shows, its files and
 //! the command that draws it), then the tables as HTML tables.
 
-use super::Gallery;
+use super::{Gallery, SceneEntry};
 use crate::FigureName;
 use crate::render::FileFormat;
 use crate::table::{Table, TableName};
@@ -79,6 +79,9 @@ pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
                                 li { a href={ "#" (id) } { (heading) } }
                             }
                         }
+                        @if !gallery.scenes.is_empty() {
+                            li { a href="#scenes" { "Scene files" } }
+                        }
                         li { a href="#tables" { "Tables" } }
                     }
                 }
@@ -89,6 +92,14 @@ pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
                             @for f in figures {
                                 (figure(f, gallery.formats()))
                             }
+                        }
+                    }
+                }
+                @if !gallery.scenes.is_empty() {
+                    section id="scenes" {
+                        h2 { "Scene files" }
+                        @for entry in &gallery.scenes {
+                            (scene(entry, gallery.formats()))
                         }
                     }
                 }
@@ -148,6 +159,35 @@ fn figure(f: FigureName, formats: &[FileFormat]) -> Markup {
                 }
                 br;
                 code { "slider-crank figure " (f.name()) }
+            }
+        }
+    }
+}
+
+/// One scene: its picture, the scene file it was drawn from, its files.
+fn scene(entry: &SceneEntry, formats: &[FileFormat]) -> Markup {
+    let file = |format: FileFormat| format!("{}.{}", entry.name, format.extension());
+    let picture = [FileFormat::Png, FileFormat::Svg]
+        .into_iter()
+        .find(|p| formats.contains(p))
+        .map(file);
+    html! {
+        figure id={ "scene-" (entry.name) } {
+            @if let Some(src) = &picture {
+                a href=(file(formats[0])) {
+                    img src=(src) alt={ "The scene of " (entry.file) } loading="lazy";
+                }
+            }
+            figcaption {
+                span.source { "Scene file " code { (entry.file) } } ". "
+                br;
+                span.files {
+                    @for &format in formats {
+                        a href=(file(format)) { (format.extension().to_uppercase()) }
+                    }
+                }
+                br;
+                code { "slider-crank scene " (entry.file) }
             }
         }
     }

@@ -27,12 +27,13 @@
 //! ```
 
 mod index;
+mod manifest;
 
 use crate::error::{Error, Result};
 use crate::figure::{FigureOptions, Font};
 use crate::render::{FileFormat, to_svg};
 use crate::table::{Format, TableName};
-use crate::{FigureName, Style};
+use crate::{FigureName, Scene, Style};
 
 /// The name of the gallery's index page.
 pub const INDEX: &str = "index.html";
@@ -43,9 +44,19 @@ pub const INDEX: &str = "index.html";
 #[derive(Debug, Clone, PartialEq)]
 pub struct Gallery {
     figures: Vec<FigureName>,
+    scenes: Vec<SceneEntry>,
     formats: Vec<FileFormat>,
     style: Option<Style>,
     font: Option<Font>,
+}
+
+/// A scene of a gallery: the name of its files, the scene file it was
+/// read from (as the manifest gives it), the scene.
+#[derive(Debug, Clone, PartialEq)]
+struct SceneEntry {
+    name: String,
+    file: String,
+    scene: Scene,
 }
 
 /// One file of a gallery: its name in the gallery's directory and its
@@ -71,6 +82,7 @@ impl Gallery {
     pub fn new() -> Self {
         Gallery {
             figures: FigureName::ALL.to_vec(),
+            scenes: Vec::new(),
             formats: FileFormat::ALL.to_vec(),
             style: None,
             font: None,
@@ -111,6 +123,44 @@ impl Gallery {
         self
     }
 
+    /// Adds a scene, drawn after the named figures into files named
+    /// `name.svg`, …; `source` says where it comes from in its caption (a
+    /// scene file's path). Errors when a figure or another scene already
+    /// has that name, or the name is not a plain file name.
+    pub fn with_scene(mut self, name: &str, source: &str, scene: Scene) -> Result<Self> {
+        self.add_scene(SceneEntry {
+            name: name.into(),
+            file: source.into(),
+            scene,
+        })?;
+        Ok(self)
+    }
+
+    fn add_scene(&mut self, entry: SceneEntry) -> Result<()> {
+        let name = &entry.name;
+        let plain = !name.is_empty()
+            && !name.starts_with('.')
+            && !name.contains(['/', '\\'])
+            && name != INDEX;
+        if !plain {
+            return Err(Error::Parse(format!(
+                "'{name}' cannot name a gallery's files"
+            )));
+        }
+        let taken = self.figures.iter().any(|f| f.name() == name)
+            || self.scenes.iter().any(|s| &s.name == name)
+            || TableName::ALL
+                .iter()
+                .any(|t| Self::table_file(*t).strip_suffix(".txt") == Some(name));
+        if taken {
+            return Err(Error::Parse(format!(
+                "two entries of the gallery are named {name}: rename the scene file"
+            )));
+        }
+        self.scenes.push(entry);
+        Ok(())
+    }
+
     /// The figures, in the order they are made.
     pub fn figures(&self) -> &[FigureName] {
         &self.figures
@@ -132,26 +182,46 @@ impl Gallery {
     }
 
     /// Every file [`Gallery::build`] makes, in that order: each figure in
-    /// each format, the tables, then [`INDEX`].
+    /// each format, each scene in each format, the tables, then [`INDEX`].
     pub fn file_names(&self) -> Vec<String> {
         let figures = self.figures.iter().flat_map(|&f| {
             self.formats
                 .iter()
                 .map(move |&format| Self::figure_file(f, format))
         });
+        let scenes = self.scenes.iter().flat_map(|s| {
+            self.formats
+                .iter()
+                .map(move |format| format!("{}.{}", s.name, format.extension()))
+        });
         figures
+            .chain(scenes)
             .chain(TableName::ALL.into_iter().map(Self::table_file))
             .chain([INDEX.to_string()])
             .collect()
     }
 
-    /// Makes every file of [`Gallery::file_names`], in order, and hands
-    /// each to `each` as soon as it is made; stops at the first error
-    /// (of a figure, of a format this build leaves out, or of `each`).
-    pub fn build(&self, mut each: impl FnMut(GalleryFile) -> Result<()>) -> Result<()> {
+    /// Whether this build can make the gallery: an error when it has no
+    /// format, or one that this build leaves out (naming the feature).
+    pub fn can_build(&self) -> Result<()> {
         if self.formats.is_empty() {
             return Err(Error::Parse("a gallery needs at least one format".into()));
         }
+        match self.formats.iter().find(|f| !f.is_supported()) {
+            Some(f) => Err(Error::Unsupported(format!(
+                "the gallery's {} files need the `{}` feature of slider-crank, which this build leaves out",
+                f.extension().to_uppercase(),
+                f.extension()
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// Makes every file of [`Gallery::file_names`], in order, and hands
+    /// each to `each` as soon as it is made; stops at the first error
+    /// (of [`Gallery::can_build`], of a figure, or of `each`).
+    pub fn build(&self, mut each: impl FnMut(GalleryFile) -> Result<()>) -> Result<()> {
+        self.can_build()?;
         let options = FigureOptions {
             style: self.style,
             font: self.font,
@@ -161,6 +231,14 @@ impl Gallery {
             let svg = to_svg(&figure.figure(&options)?);
             for &format in &self.formats {
                 let name = Self::figure_file(figure, format);
+                let bytes = format.encode(&svg)?;
+                each(GalleryFile { name, bytes })?;
+            }
+        }
+        for entry in &self.scenes {
+            let svg = to_svg(&entry.scene.figure());
+            for &format in &self.formats {
+                let name = format!("{}.{}", entry.name, format.extension());
                 let bytes = format.encode(&svg)?;
                 each(GalleryFile { name, bytes })?;
             }

@@ -30,6 +30,16 @@ impl FileFormat {
         }
     }
 
+    /// Whether this build writes the format: SVG always, PNG with the
+    /// `png` feature, PDF with the `pdf` feature.
+    pub fn is_supported(&self) -> bool {
+        match self {
+            FileFormat::Svg => true,
+            FileFormat::Png => cfg!(feature = "png"),
+            FileFormat::Pdf => cfg!(feature = "pdf"),
+        }
+    }
+
     /// The format of that name or extension (`svg`, `png`, `pdf`, in any
     /// case); the error names the formats.
     pub fn from_name(name: &str) -> Result<Self> {
