@@ -1,7 +1,9 @@
 //! The gallery: every named figure at the seed's own parameters in each
 //! file format, every table `slider-crank table` prints, and an
 //! `index.html` that shows them with a caption naming the seed, section and
-//! figure each reproduces.
+//! figure each reproduces. A manifest ([`Gallery::from_manifest`]) can
+//! choose the figures, add scene files, and set the formats, style and
+//! face.
 //!
 //! [`Gallery::build`] makes the files one at a time, in the order of
 //! [`Gallery::file_names`], and hands each to the caller (which writes it,
