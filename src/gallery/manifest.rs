@@ -55,9 +55,12 @@ fn at<T, U>(text: &str, s: &Spanned<U>, r: Result<T>) -> Result<T> {
 }
 
 impl Gallery {
-    /// The gallery a manifest describes (see the [module](self)
-    /// documentation); scene files are read from `base`, the manifest's
-    /// directory.
+    /// The gallery a manifest describes: TOML with the keys `figures`
+    /// (names; default every one), `scenes` (scene files, read from
+    /// `base`, the manifest's directory, and named after their files),
+    /// `formats` (svg, png, pdf), `style` and `font` (for every figure, and
+    /// for each scene file that sets none). Unknown keys are errors; every
+    /// error names its line and column.
     pub fn from_manifest(text: &str, base: &Path) -> Result<Gallery> {
         let file: ManifestFile = toml::from_str(text).map_err(|e| {
             let message = e.message().trim().to_string();

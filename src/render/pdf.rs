@@ -47,7 +47,8 @@ const SYSTEM_INFO: SystemInfo = SystemInfo {
 /// faces ([`crate::Font`]) whatever fonts the machine has, and embedded.
 ///
 /// Errors: SVG that cannot be read, and what the PDF writer does not draw
-/// (see the [module](self) documentation).
+/// ([`Error::Unsupported`]: gradients, patterns, images, masks, filters,
+/// group opacity, stroked text).
 pub fn to_pdf(svg: &str) -> Result<Vec<u8>> {
     let options = usvg::Options {
         fontdb: font_database(),
