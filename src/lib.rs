@@ -39,7 +39,8 @@
 //! A [`Scene`] says what one figure shows; its layers ask for only the
 //! constructions they draw. It builds an immutable [`Figure`] in world
 //! coordinates, which [`render::to_svg`] writes with one world-to-page map
-//! per panel (and [`render::to_png`] rasterises). The seeds' own figures
+//! per panel (and [`render::to_png`] rasterises, [`render::to_pdf`] sets as
+//! a vector page). The seeds' own figures
 //! are named by [`FigureName`], and so are the diagrams (velocity and
 //! acceleration against θ, time or position, polar diagrams, centrodes,
 //! Ng's graphs), built by [`FigureName::figure`] from plot panels
@@ -68,9 +69,17 @@
 //! - `cli` (default): the `slider-crank` program (clap).
 //! - `png` (default): PNG output through resvg ([`render::to_png`]; without
 //!   the feature it returns [`Error::Unsupported`]).
+//! - `pdf` (default): vector PDF output with the bundled faces embedded
+//!   ([`render::to_pdf`]; without the feature it returns
+//!   [`Error::Unsupported`]).
+//!
+//! [`gallery`] makes every named figure in each format, the tables and an
+//! `index.html` captioning each figure with the seed section it
+//! reproduces.
 //!
 //! With `default-features = false` the crate computes every number and
-//! writes SVG, with neither clap nor resvg among its dependencies. The
+//! writes SVG, with neither clap nor resvg nor the PDF writer among its
+//! dependencies. The
 //! design, the command-line contract and the JSON schema are in
 //! `docs/design.md` in the repository.
 #![deny(missing_docs)]
@@ -82,6 +91,7 @@ pub mod construct;
 pub mod diagram;
 mod error;
 pub mod figure;
+pub mod gallery;
 pub mod geom;
 pub mod input;
 mod mechanism;

@@ -6,7 +6,7 @@ use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
 /// Exact kinematics, statics and the classical graphical constructions of
-/// the slider-crank mechanism, drawn as textbook figures (SVG or PNG).
+/// the slider-crank mechanism, drawn as textbook figures (SVG, PNG or PDF).
 ///
 /// Frame: crank centre C at the origin, line of stroke y = e (the offset),
 /// slider A on the +x side; crank angle θ in degrees, counter-clockwise
@@ -59,11 +59,22 @@ enum Command {
         mut_arg("inversion", |a| a.hide(true))
     )]
     Check(cli::check::CheckArgs),
-    /// Draw a named figure or diagram as SVG (or PNG with --out FILE.png)
+    /// Draw a named figure or diagram as SVG (or PNG or PDF with --out
+    /// FILE.png, FILE.pdf)
     Figure(cli::figure::FigureArgs),
     /// Draw the figure a TOML scene file describes (a mechanism figure, or
     /// a named diagram with the file's changes)
     Scene(cli::scene::SceneArgs),
+    /// Write every named figure as SVG, PNG and PDF, every table, and an
+    /// index.html with a caption naming the seed and figure each reproduces
+    ///
+    /// The figures are drawn at the seeds' own parameters, as `figure NAME`
+    /// draws them; the tables are those `table NAME` prints. A progress line
+    /// goes to standard error. Each file is written whole or not at all.
+    /// With --check nothing is written: exit code 0 when every file in the
+    /// directory is what this build makes, 1 when some differ or are
+    /// missing (each printed), 2 for an error.
+    Gallery(cli::gallery::GalleryArgs),
 }
 
 /// Exit code of a refused run (bad input, unwritable output).
@@ -89,6 +100,7 @@ fn main() -> ExitCode {
         Command::Check(args) => cli::check::run(args, &mut out),
         Command::Figure(args) => cli::figure::run(args, &mut out).map(|()| true),
         Command::Scene(args) => cli::scene::run(args, &mut out).map(|()| true),
+        Command::Gallery(args) => cli::gallery::run(args, &mut out),
     }
     .and_then(|ok| out.finish().map(|()| ok));
     match result {
@@ -122,7 +134,7 @@ fn parse_error(e: clap::Error) -> ExitCode {
     }
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         eprintln!(
-            "slider-crank: a subcommand is required: analyze, table, check, figure or scene (see --help)"
+            "slider-crank: a subcommand is required: gallery, analyze, table, check, figure or scene (see --help)"
         );
         return ExitCode::from(REFUSED);
     }

@@ -421,6 +421,89 @@ pub fn forces_head(mechanism: &SliderCrank, torque: f64, mu: f64, units: &Units)
     }
 }
 
+/// The tables `slider-crank table NAME` prints, each with that command's
+/// defaults.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum TableName {
+    /// The error due to obliquity at θ = 90° for n = 4, 5, 6 (textbook §35).
+    Obliquity,
+    /// cos θ + cos 2θ / n, θ = 0° … 180°, n = 4 … 6 and ∞ (textbook §35).
+    AccelerationFactor,
+    /// The §35 engine at 250 rpm, θ = 0° … 360° by 30°.
+    Kinematics,
+    /// Ng's Table 2 columns: F, F′ and β for θ = 10° … 160°.
+    Forces,
+}
+
+impl TableName {
+    /// Every table, in the order `slider-crank table --help` lists them.
+    pub const ALL: [TableName; 4] = [
+        TableName::Obliquity,
+        TableName::AccelerationFactor,
+        TableName::Kinematics,
+        TableName::Forces,
+    ];
+
+    /// The name the `table` command takes (`acceleration-factor`).
+    pub fn name(&self) -> &'static str {
+        match self {
+            TableName::Obliquity => "obliquity",
+            TableName::AccelerationFactor => "acceleration-factor",
+            TableName::Kinematics => "kinematics",
+            TableName::Forces => "forces",
+        }
+    }
+
+    /// The seed and section it reproduces.
+    pub fn source(&self) -> &'static str {
+        match self {
+            TableName::Obliquity => {
+                "Textbook, Chapter IV “Slider-crank chains”, §35: the error due to obliquity"
+            }
+            TableName::AccelerationFactor => {
+                "Textbook, Chapter IV “Slider-crank chains”, §35: the table of eq. (3)"
+            }
+            TableName::Kinematics => {
+                "Textbook, Chapter IV “Slider-crank chains”, §35–37: the engine of §35, exact values (no table in the seed)"
+            }
+            TableName::Forces => {
+                "Ng, “A slider-crank experiment to determine the action of static forces”, Table 2"
+            }
+        }
+    }
+
+    /// The table with the defaults of `slider-crank table NAME`: n = 4, 5, 6
+    /// at 90°; the textbook's rows and columns; r = 0.5 ft, l = 3 ft,
+    /// 250 rpm, 4 decimals; r = 25 mm, l = 72 mm, T = 264.87 N·mm, μ = 1,
+    /// 2 decimals.
+    pub fn table(&self) -> Result<Table> {
+        let every = |from: u32, to: u32, step: u32| -> Vec<f64> {
+            (from..=to).step_by(step as usize).map(f64::from).collect()
+        };
+        match self {
+            TableName::Obliquity => obliquity(&[4.0, 5.0, 6.0], 90.0),
+            TableName::AccelerationFactor => {
+                acceleration_factor_table(&TEXTBOOK_RATIOS, &TEXTBOOK_ANGLES)
+            }
+            TableName::Kinematics => kinematics(
+                &SliderCrank::in_line(0.5, 3.0)?,
+                crate::rpm_to_omega(250.0),
+                &every(0, 360, 30),
+                4,
+                &Units::FOOT_POUND,
+            ),
+            TableName::Forces => forces(
+                &SliderCrank::in_line(25.0, 72.0)?,
+                crate::figure::NG_TORQUE,
+                1.0,
+                &every(10, 160, 10),
+                2,
+                &Units::MILLIMETRE_NEWTON,
+            ),
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -5,9 +5,9 @@ use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::{FigureOptions, Fit, Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
-use slider_crank::render::{to_png, to_svg, write_atomic};
+use slider_crank::render::{FileFormat, to_svg, write_atomic};
 use slider_crank::{Angle, Error, Figure, FigureName, Layer, Notation, Result, SliderCrank, Style};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// Draw a named figure: a mechanism figure of the seeds or a diagram.
 #[derive(Debug, Args)]
@@ -96,31 +96,32 @@ pub struct FigureArgs {
     /// subscript
     #[arg(long, value_name = "TEXT", allow_hyphen_values = true)]
     pub title: Option<Title>,
-    /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit,
-    /// whatever unit the page is given in) when FILE ends in .png, SVG
-    /// otherwise; `-` prints SVG. A device or FIFO is written in place; a
+    /// Write to FILE instead of printing SVG, in the format its extension
+    /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
+    /// embedded); SVG for a name without an extension, any other is
+    /// refused; `-` prints SVG. A device or FIFO is written in place; a
     /// symbolic link is kept and its target replaced
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
 
-/// Writes the figure to `path` (PNG for `.png`), or its SVG text to
-/// standard output without a path or for `-`.
-pub fn emit(figure: &Figure, path: Option<&PathBuf>, out: &mut Stdout) -> Result<()> {
-    let svg = to_svg(figure);
+/// Where `--out` sends a figure: a file and the format its extension
+/// names, or standard output (`None`: no `--out`, or `-`). Called before
+/// any work, so that an unknown extension is refused at once.
+pub fn destination(path: Option<&PathBuf>) -> Result<Option<(&Path, FileFormat)>> {
     match path {
-        Some(path) if path.as_os_str() != "-" => {
-            let png = path
-                .extension()
-                .is_some_and(|e| e.eq_ignore_ascii_case("png"));
-            let bytes = if png {
-                to_png(&svg, 2.0)?
-            } else {
-                svg.into_bytes()
-            };
-            write_atomic(path, &bytes)
-        }
-        _ => out.text(&svg),
+        Some(path) if path.as_os_str() != "-" => Ok(Some((path, FileFormat::from_path(path)?))),
+        _ => Ok(None),
+    }
+}
+
+/// Writes the figure to the file in its format (whole or not at all), or
+/// its SVG text to standard output.
+pub fn emit(figure: &Figure, to: Option<(&Path, FileFormat)>, out: &mut Stdout) -> Result<()> {
+    let svg = to_svg(figure);
+    match to {
+        Some((path, format)) => write_atomic(path, &format.encode(&svg)?),
+        None => out.text(&svg),
     }
 }
 
@@ -181,6 +182,7 @@ fn options(args: &FigureArgs, name: FigureName) -> Result<FigureOptions> {
 /// Runs the subcommand: SVG on standard output, or the file written.
 pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
     let name = FigureName::from_name(&args.name)?;
+    let to = destination(args.out.as_ref())?;
     let options = options(args, name)?;
     let figure = name.figure(&options).map_err(|e| match (&args.data, e) {
         (Some(path), Error::Parse(m)) if m.starts_with("data") => {
@@ -188,5 +190,5 @@ pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
         }
         (_, e) => e,
     })?;
-    emit(&figure, args.out.as_ref(), out)
+    emit(&figure, to, out)
 }

@@ -5,6 +5,7 @@ pub mod args;
 pub mod chain;
 pub mod check;
 pub mod figure;
+pub mod gallery;
 pub mod output;
 pub mod scene;
 pub mod table;

@@ -1,6 +1,6 @@
 //! `slider-crank scene FILE.toml`: a figure described by a scene file.
 
-use super::figure::emit;
+use super::figure::{destination, emit};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
@@ -39,16 +39,18 @@ pub struct SceneArgs {
     /// the file's, else its figure's, else lbf]
     #[arg(long = "force-unit", value_name = "FORCE")]
     pub force_unit: Option<Unit>,
-    /// Write to FILE instead of printing SVG: PNG (2 pixels per page unit)
-    /// when FILE ends in .png, SVG otherwise; `-` prints SVG. A device or
-    /// FIFO is written in place; a symbolic link is kept and its target
-    /// replaced
+    /// Write to FILE instead of printing SVG, in the format its extension
+    /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
+    /// embedded); SVG for a name without an extension, any other is
+    /// refused; `-` prints SVG. A device or FIFO is written in place; a
+    /// symbolic link is kept and its target replaced
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
 
 /// Runs the subcommand.
 pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
+    let to = destination(args.out.as_ref())?;
     if let Some(name) = &args.print_default {
         return out.text(&FigureName::from_name(name)?.scene_toml());
     }
@@ -80,5 +82,5 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
             name.figure(&options)?
         }
     };
-    emit(&figure, args.out.as_ref(), out)
+    emit(&figure, to, out)
 }

@@ -1,19 +1,29 @@
 //! The renderer: a [`crate::figure::Figure`] to SVG text (the `svg`
-//! crate), and SVG to PNG (resvg, with the `png` feature); files are
-//! written whole or not at all.
+//! crate), SVG to PNG (resvg, with the `png` feature) and to vector PDF
+//! (with the `pdf` feature); files are written whole or not at all.
 
+#[cfg(any(feature = "png", feature = "pdf"))]
+mod fonts;
+mod format;
 mod labels;
 mod number;
 mod output;
+#[cfg(feature = "pdf")]
+mod pdf;
 #[cfg(feature = "png")]
 mod png;
 mod sizes;
 mod svg;
 
+#[cfg(any(feature = "png", feature = "pdf"))]
+pub use fonts::font_database;
+pub use format::FileFormat;
 pub use number::{GRID, fmt, plain};
 pub use output::write_atomic;
+#[cfg(feature = "pdf")]
+pub use pdf::{POINTS_PER_UNIT, to_pdf};
 #[cfg(feature = "png")]
-pub use png::{font_database, to_png};
+pub use png::to_png;
 pub use svg::to_svg;
 
 /// Renders SVG text to PNG bytes: built without the `png` feature, this
@@ -27,14 +37,34 @@ pub fn to_png(svg: &str, scale: f32) -> crate::Result<Vec<u8>> {
     ))
 }
 
+/// Renders SVG text to PDF bytes: built without the `pdf` feature, this
+/// returns [`Error::Unsupported`](crate::Error::Unsupported) whatever the
+/// input (build with `features = ["pdf"]` for PDF output).
+#[cfg(not(feature = "pdf"))]
+pub fn to_pdf(svg: &str) -> crate::Result<Vec<u8>> {
+    let _ = svg;
+    Err(crate::Error::Unsupported(
+        "PDF output needs the `pdf` feature of slider-crank, which this build leaves out: write SVG instead".into(),
+    ))
+}
+
 pub(crate) use sizes::NOTE_LINE;
 
-#[cfg(all(test, not(feature = "png")))]
+#[cfg(test)]
 mod tests {
+    #[cfg(not(feature = "png"))]
     #[test]
     fn png_without_the_feature_is_an_error_that_names_it() {
         let err = super::to_png("<svg/>", 1.0).unwrap_err();
         assert!(matches!(err, crate::Error::Unsupported(_)));
         assert!(err.to_string().contains("`png` feature"), "{err}");
+    }
+
+    #[cfg(not(feature = "pdf"))]
+    #[test]
+    fn pdf_without_the_feature_is_an_error_that_names_it() {
+        let err = super::to_pdf("<svg/>").unwrap_err();
+        assert!(matches!(err, crate::Error::Unsupported(_)));
+        assert!(err.to_string().contains("`pdf` feature"), "{err}");
     }
 }

@@ -1,36 +1,11 @@
 //! SVG to PNG through resvg, with the bundled faces only: no system font
 //! is ever loaded, so the same SVG gives the same bytes on every machine.
 
+use super::fonts::font_database;
 use crate::error::{Error, Result};
-use crate::figure::Font;
-use resvg::usvg::fontdb::{Database, Source};
-use resvg::{tiny_skia, usvg};
-use std::sync::{Arc, OnceLock};
-
-/// Loads every bundled face ([`Font::files`] of each [`Font`], in order,
-/// which is the order resvg falls back in) into `db`, straight from the
-/// bytes in the binary.
-fn load_bundled(db: &mut Database) {
-    for font in Font::ALL {
-        for data in font.files() {
-            db.load_font_source(Source::Binary(Arc::new(data)));
-        }
-    }
-    db.set_serif_family(Font::default().family());
-}
-
-/// The font database [`to_png`] renders with: the bundled faces only,
-/// loaded once (for rendering the SVG with usvg or resvg directly).
-pub fn font_database() -> Arc<Database> {
-    static FONTS: OnceLock<Arc<Database>> = OnceLock::new();
-    FONTS
-        .get_or_init(|| {
-            let mut db = Database::new();
-            load_bundled(&mut db);
-            Arc::new(db)
-        })
-        .clone()
-}
+use resvg::tiny_skia;
+use std::sync::Arc;
+use usvg::fontdb::Database;
 
 /// Most pixels of a PNG (24 megapixels, 96 MB of canvas: a 2400 × 2400
 /// page at scale 2). A larger picture is refused with a message, never
@@ -39,7 +14,7 @@ pub const MAX_PNG_PIXELS: u64 = 24_000_000;
 
 /// Renders SVG text to PNG bytes at `scale` pixels per page unit (1 for
 /// the page size, 2 for a sharper picture). Letters are set in the
-/// bundled faces ([`Font`]) whatever fonts the machine has.
+/// bundled faces ([`Font`](crate::Font)) whatever fonts the machine has.
 pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
     render(svg, scale, font_database())
 }
@@ -99,10 +74,12 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::figure::{FigureOptions, FontStyle};
+    use crate::figure::{FigureOptions, Font, FontStyle};
+    use crate::render::fonts::load_bundled;
     use crate::render::to_svg;
     use crate::{FigureName, Style};
-    use resvg::usvg::fontdb::{Family, Query};
+    use usvg::fontdb::Source;
+    use usvg::fontdb::{Family, Query};
 
     #[test]
     fn huge_pages_are_refused_before_drawing() {

@@ -1,0 +1,244 @@
+//! The gallery's `index.html`: each figure shown with its caption (the
+//! seed, section and figure it reproduces, what it shows, its files and
+//! the command that draws it), then the tables as HTML tables.
+
+use super::{Gallery, SceneEntry};
+use crate::FigureName;
+use crate::render::FileFormat;
+use crate::table::{Table, TableName};
+use maud::{DOCTYPE, Markup, PreEscaped, html};
+
+/// The page's style sheet: a plain book page.
+const STYLE: &str = "
+body { font-family: 'New Computer Modern', 'Latin Modern Roman', Georgia, serif;
+       max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #111; line-height: 1.4; }
+figure { margin: 2.5rem 0; }
+figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
+figcaption { margin-top: .5rem; }
+.source { font-weight: bold; }
+.files a { margin-right: .6rem; }
+code { font-size: .9em; }
+table { border-collapse: collapse; margin: 1rem 0; }
+th, td { padding: .2rem .7rem; text-align: right; border-bottom: 1px solid #ddd; }
+caption { text-align: left; font-weight: bold; padding-bottom: .3rem; }
+";
+
+/// The three groups of figures and their headings.
+fn groups(figures: &[FigureName]) -> [(&'static str, &'static str, Vec<FigureName>); 3] {
+    let chain = |f: &FigureName| {
+        matches!(
+            f,
+            FigureName::Fig60Chains
+                | FigureName::Inversion1Engine
+                | FigureName::Inversion2RotatingBlock
+                | FigureName::Inversion3OscillatingCylinder
+                | FigureName::Inversion4HandPump
+                | FigureName::SlotConvergence
+        )
+    };
+    let pick = |keep: &dyn Fn(&FigureName) -> bool| figures.iter().copied().filter(keep).collect();
+    [
+        (
+            "mechanisms",
+            "Mechanism figures",
+            pick(&|f| !f.is_diagram()),
+        ),
+        (
+            "diagrams",
+            "Diagrams",
+            pick(&|f| f.is_diagram() && !chain(f)),
+        ),
+        ("chain", "The chain of Fig. 60", pick(&chain)),
+    ]
+}
+
+/// The whole page.
+pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
+    let markup = html! {
+        (DOCTYPE)
+        html lang="en" {
+            head {
+                meta charset="utf-8";
+                meta name="viewport" content="width=device-width, initial-scale=1";
+                title { "slider-crank: the figures and tables of the seeds" }
+                style { (PreEscaped(STYLE)) }
+            }
+            body {
+                h1 { "The figures and tables of the seeds" }
+                p {
+                    "The classical graphical constructions of the slider-crank mechanism, drawn anew "
+                    "at each seed’s own parameters from the text of the textbook chapter "
+                    "“Slider-crank chains” (Chapter IV, §34–37) and of T. W. Ng, “A slider-crank "
+                    "experiment to determine the action of static forces”. Each figure is given as "
+                    (formats(gallery.formats())) "; the picture links to the first."
+                }
+                nav {
+                    ul {
+                        @for (id, heading, figures) in groups(gallery.figures()) {
+                            @if !figures.is_empty() {
+                                li { a href={ "#" (id) } { (heading) } }
+                            }
+                        }
+                        @if !gallery.scenes.is_empty() {
+                            li { a href="#scenes" { "Scene files" } }
+                        }
+                        li { a href="#tables" { "Tables" } }
+                    }
+                }
+                @for (id, heading, figures) in groups(gallery.figures()) {
+                    @if !figures.is_empty() {
+                        section id=(id) {
+                            h2 { (heading) }
+                            @for f in figures {
+                                (figure(f, gallery.formats()))
+                            }
+                        }
+                    }
+                }
+                @if !gallery.scenes.is_empty() {
+                    section id="scenes" {
+                        h2 { "Scene files" }
+                        @for entry in &gallery.scenes {
+                            (scene(entry, gallery.formats()))
+                        }
+                    }
+                }
+                section id="tables" {
+                    h2 { "Tables" }
+                    @for (name, t) in tables {
+                        (table(*name, t))
+                    }
+                }
+                footer {
+                    p {
+                        "Made by slider-crank " (env!("CARGO_PKG_VERSION"))
+                        " with " code { "slider-crank gallery" } "."
+                    }
+                }
+            }
+        }
+    };
+    markup.into_string()
+}
+
+/// "SVG, PNG and PDF".
+fn formats(formats: &[FileFormat]) -> String {
+    let names: Vec<String> = formats
+        .iter()
+        .map(|f| f.extension().to_uppercase())
+        .collect();
+    match names.as_slice() {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+    }
+}
+
+/// One figure: its picture (the PNG, else the SVG), caption and files.
+fn figure(f: FigureName, formats: &[FileFormat]) -> Markup {
+    let file = |format| Gallery::figure_file(f, format);
+    let picture = [FileFormat::Png, FileFormat::Svg]
+        .into_iter()
+        .find(|p| formats.contains(p))
+        .map(file);
+    html! {
+        figure id=(f.name()) {
+            @if let Some(src) = &picture {
+                a href=(file(formats[0])) {
+                    img src=(src) alt=(f.description()) loading="lazy";
+                }
+            }
+            figcaption {
+                span.source { (f.source()) } ". "
+                (f.description())
+                br;
+                span.files {
+                    @for &format in formats {
+                        a href=(file(format)) { (format.extension().to_uppercase()) }
+                    }
+                }
+                br;
+                code { "slider-crank figure " (f.name()) }
+            }
+        }
+    }
+}
+
+/// One scene: its picture, the scene file it was drawn from, its files.
+fn scene(entry: &SceneEntry, formats: &[FileFormat]) -> Markup {
+    let file = |format: FileFormat| format!("{}.{}", entry.name, format.extension());
+    let picture = [FileFormat::Png, FileFormat::Svg]
+        .into_iter()
+        .find(|p| formats.contains(p))
+        .map(file);
+    html! {
+        figure id={ "scene-" (entry.name) } {
+            @if let Some(src) = &picture {
+                a href=(file(formats[0])) {
+                    img src=(src) alt={ "The scene of " (entry.file) } loading="lazy";
+                }
+            }
+            figcaption {
+                span.source { "Scene file " code { (entry.file) } } ". "
+                br;
+                span.files {
+                    @for &format in formats {
+                        a href=(file(format)) { (format.extension().to_uppercase()) }
+                    }
+                }
+                br;
+                code { "slider-crank scene " (entry.file) }
+            }
+        }
+    }
+}
+
+/// One table: its title as the caption, the seed it reproduces, its text
+/// file.
+fn table(name: TableName, t: &Table) -> Markup {
+    html! {
+        div.table id={ "table-" (name.name()) } {
+            table {
+                caption { (t.title) }
+                thead { tr { @for h in &t.headers { th { (h) } } } }
+                tbody {
+                    @for row in &t.rows {
+                        tr { @for cell in row { td { (cell) } } }
+                    }
+                }
+            }
+            @for note in &t.notes {
+                p { (note) }
+            }
+            p {
+                span.source { (name.source()) } ". "
+                a href=(Gallery::table_file(name)) { "Text" } " "
+                code { "slider-crank table " (name.name()) }
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn formats_are_listed_as_a_sentence() {
+        assert_eq!(formats(&FileFormat::ALL), "SVG, PNG and PDF");
+        assert_eq!(formats(&[FileFormat::Pdf]), "PDF");
+    }
+
+    #[test]
+    fn text_is_escaped() {
+        let t = Table {
+            title: "a < b & c".into(),
+            headers: vec!["<th>".into()],
+            rows: vec![vec!["\"x\"".into()]],
+            notes: vec![],
+        };
+        let html = table(TableName::Forces, &t).into_string();
+        assert!(html.contains("a &lt; b &amp; c"), "{html}");
+        assert!(!html.contains("<th>\"x\"") && html.contains("&lt;th&gt;"));
+    }
+}

@@ -1,0 +1,115 @@
+//! The file formats a figure is written in, told by the file's extension.
+
+use crate::error::{Error, Result};
+use std::path::Path;
+
+/// A file format of figures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum FileFormat {
+    /// SVG text ([`to_svg`](super::to_svg)), the reference.
+    Svg,
+    /// PNG at 2 pixels per page unit ([`to_png`](super::to_png), feature
+    /// `png`).
+    Png,
+    /// Vector PDF with the faces embedded ([`to_pdf`](super::to_pdf),
+    /// feature `pdf`).
+    Pdf,
+}
+
+impl FileFormat {
+    /// Every format, in the order a gallery lists them.
+    pub const ALL: [FileFormat; 3] = [FileFormat::Svg, FileFormat::Png, FileFormat::Pdf];
+
+    /// The extension, without the dot (`svg`, `png`, `pdf`); also the
+    /// format's name.
+    pub fn extension(&self) -> &'static str {
+        match self {
+            FileFormat::Svg => "svg",
+            FileFormat::Png => "png",
+            FileFormat::Pdf => "pdf",
+        }
+    }
+
+    /// Whether this build writes the format: SVG always, PNG with the
+    /// `png` feature, PDF with the `pdf` feature.
+    pub fn is_supported(&self) -> bool {
+        match self {
+            FileFormat::Svg => true,
+            FileFormat::Png => cfg!(feature = "png"),
+            FileFormat::Pdf => cfg!(feature = "pdf"),
+        }
+    }
+
+    /// The format of that name or extension (`svg`, `png`, `pdf`, in any
+    /// case); the error names the formats.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|f| f.extension().eq_ignore_ascii_case(name))
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "unknown format '{name}': the formats are svg, png and pdf"
+                ))
+            })
+    }
+
+    /// The format a file is written in, by its extension: `.svg`, `.png`,
+    /// `.pdf` (in any case); SVG for a name without one (`-`, a device such
+    /// as `/dev/stdout`, a FIFO). Any other extension is an error that
+    /// names the formats.
+    pub fn from_path(path: &Path) -> Result<Self> {
+        match path.extension() {
+            None => Ok(FileFormat::Svg),
+            Some(ext) => ext
+                .to_str()
+                .and_then(|e| Self::from_name(e).ok())
+                .ok_or_else(|| {
+                    Error::Parse(format!(
+                        "cannot write {}: .{} is not an output format: give a file ending in .svg, .png or .pdf",
+                        path.display(),
+                        ext.to_string_lossy()
+                    ))
+                }),
+        }
+    }
+
+    /// The bytes of the figure whose SVG is `svg` in this format (PNG at 2
+    /// pixels per page unit). Errors when this build leaves the format's
+    /// feature out ([`Error::Unsupported`]) and as the converters do.
+    pub fn encode(&self, svg: &str) -> Result<Vec<u8>> {
+        match self {
+            FileFormat::Svg => Ok(svg.as_bytes().to_vec()),
+            FileFormat::Png => super::to_png(svg, 2.0),
+            FileFormat::Pdf => super::to_pdf(svg),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_extension_tells_the_format() {
+        for (path, format) in [
+            ("a.svg", FileFormat::Svg),
+            ("a.PNG", FileFormat::Png),
+            ("dir.x/fig.pdf", FileFormat::Pdf),
+            ("-", FileFormat::Svg),
+            ("/dev/stdout", FileFormat::Svg),
+            ("figure", FileFormat::Svg),
+        ] {
+            assert_eq!(FileFormat::from_path(Path::new(path)).unwrap(), format);
+        }
+        for path in ["x.jpg", "x.eps", "x.svg.bak", ".pdf.tmp"] {
+            let err = FileFormat::from_path(Path::new(path))
+                .unwrap_err()
+                .to_string();
+            assert!(
+                err.starts_with(&format!("cannot write {path}: ."))
+                    && err.ends_with("give a file ending in .svg, .png or .pdf"),
+                "{err}"
+            );
+        }
+    }
+}
