@@ -27,6 +27,29 @@ pub enum Format {
     Csv,
 }
 
+impl Format {
+    /// The name on the command line: `text`, `markdown`, `csv`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Format::Text => "text",
+            Format::Markdown => "markdown",
+            Format::Csv => "csv",
+        }
+    }
+
+    /// The format of that name; the error lists the names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        [Format::Text, Format::Markdown, Format::Csv]
+            .into_iter()
+            .find(|f| f.name() == name)
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "unknown format '{name}': expected text, markdown or csv"
+                ))
+            })
+    }
+}
+
 /// A table of formatted cells with a title and notes.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Table {

@@ -37,6 +37,26 @@ pub enum Assembly {
 }
 
 impl Assembly {
+    /// The name on the command line: `open`, `crossed`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Assembly::Open => "open",
+            Assembly::Crossed => "crossed",
+        }
+    }
+
+    /// The assembly mode of that name; the error lists the names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        [Assembly::Open, Assembly::Crossed]
+            .into_iter()
+            .find(|a| a.name() == name)
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "unknown assembly '{name}': expected open or crossed"
+                ))
+            })
+    }
+
     fn sign(self) -> f64 {
         match self {
             Assembly::Open => 1.0,

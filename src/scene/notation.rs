@@ -80,20 +80,6 @@ impl Notation {
     }
 }
 
-impl std::str::FromStr for Notation {
-    type Err = crate::error::Error;
-
-    fn from_str(s: &str) -> crate::error::Result<Self> {
-        Notation::from_name(s)
-    }
-}
-
-impl std::fmt::Display for Notation {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
