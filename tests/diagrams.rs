@@ -722,7 +722,7 @@ fn centrode_branches_run_to_the_frame_edge_without_spikes() {
     // The default pose, and poses at a dead centre and at the poles.
     for degrees in [35.0, 0.0, 90.0, 200.0, 270.0] {
         let options = FigureOptions {
-            angle: Some(slider_crank::Angle::from_degrees(degrees).unwrap()),
+            angle: Some(slider_crank::Angle::deg(degrees)),
             ..FigureOptions::default()
         };
         let svg = to_svg(&FigureName::Fig61Centrodes.figure(&options).unwrap());
@@ -867,7 +867,7 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
     for (deg, mu) in [(45.0, 1.0), (30.0, (30.0 * DEG).tan())] {
         let f = FigureName::NgFig2Incline
             .figure(&FigureOptions {
-                angle: Some(slider_crank::Angle::from_degrees(deg).unwrap()),
+                angle: Some(slider_crank::Angle::deg(deg)),
                 ..FigureOptions::default()
             })
             .unwrap();
@@ -880,7 +880,7 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
     }
     for bad in [0.0, 90.0, 120.0, -10.0] {
         let r = FigureName::NgFig2Incline.figure(&FigureOptions {
-            angle: Some(slider_crank::Angle::from_degrees(bad).unwrap()),
+            angle: Some(slider_crank::Angle::deg(bad)),
             ..FigureOptions::default()
         });
         assert!(r.is_err(), "{bad}");

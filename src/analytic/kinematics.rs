@@ -123,7 +123,7 @@ mod tests {
         let (r, n, omega) = (0.5, 6.0, 26.16);
         let m = SliderCrank::in_line(r, n * r).unwrap();
         for d in [0.0, 10.0, 45.0, 90.0, 135.0, 200.0, 300.0] {
-            let a = Angle::from_degrees(d).unwrap();
+            let a = Angle::deg(d);
             let k = Kinematics::new(&m.pose(a), omega).unwrap();
             let (s, c) = (a.sin(), a.cos());
             let q = (n * n - s * s).sqrt();
@@ -145,7 +145,7 @@ mod tests {
     #[test]
     fn omega_must_be_finite() {
         let m = SliderCrank::in_line(1.0, 3.0).unwrap();
-        let p = m.pose(Angle::from_degrees(10.0).unwrap());
+        let p = m.pose(Angle::deg(10.0));
         assert!(Kinematics::new(&p, f64::NAN).is_err());
     }
 
@@ -160,7 +160,7 @@ mod tests {
     fn huge_speeds_are_errors_not_infinities() {
         // Issue 9 (5): ω = 1e200 gave ±inf and NaN.
         let m = SliderCrank::in_line(1.0, 3.0).unwrap();
-        let p = m.pose(Angle::from_degrees(0.0).unwrap());
+        let p = m.pose(Angle::deg(0.0));
         let err = Kinematics::new(&p, 1e200).unwrap_err();
         assert!(
             err.to_string().starts_with("omega = 1e200 is out of range"),
@@ -168,12 +168,12 @@ mod tests {
         );
         // Within MAX_OMEGA but overflowing near the limit of assembly.
         let m = SliderCrank::in_line(1e99, 1e99 * (1.0 + 4.0 * f64::EPSILON)).unwrap();
-        let p = m.pose(Angle::from_degrees(1e-9).unwrap());
+        let p = m.pose(Angle::deg(1e-9));
         match Kinematics::new(&p, 1e100) {
             Ok(k) => assert!(k.acceleration.is_finite() && k.velocity.is_finite()),
             Err(e) => assert!(e.to_string().contains("exceed the largest number"), "{e}"),
         }
-        let k = Kinematics::new(&m.pose(Angle::from_degrees(0.0).unwrap()), 1e100).unwrap();
+        let k = Kinematics::new(&m.pose(Angle::deg(0.0)), 1e100).unwrap();
         assert!(k.acceleration.is_finite());
     }
 }
