@@ -13,6 +13,7 @@ use thiserror::Error;
 /// Two errors are equal when their variants and fields are; the operating
 /// system's errors of two [`Error::Io`] are compared by their kind.
 #[derive(Debug, Clone, Error)]
+#[non_exhaustive]
 pub enum Error {
     /// A parameter is NaN or infinite.
     #[error("{name} must be a finite number, got {}", Num(*.value))]

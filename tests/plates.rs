@@ -306,11 +306,9 @@ fn inspect(
     mechanism: &(String, SliderCrank),
     angle: Option<Angle>,
 ) -> Outcome {
-    let options = FigureOptions {
-        mechanism: Some(mechanism.1),
-        angle,
-        ..FigureOptions::default()
-    };
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(mechanism.1);
+    options.angle = angle;
     let built = FigureName::from_name(figure).unwrap().figure(&options);
     let failures = match built {
         Ok(f) => check(&Plate::read(&to_svg(&f)), SPREAD_FIGURES.contains(&figure)),

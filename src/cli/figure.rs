@@ -155,27 +155,27 @@ fn options(args: &FigureArgs, name: FigureName) -> Result<FigureOptions> {
         Some(path) => Some(read_text(path, MAX_DATA_BYTES, "data file")?),
         None => None,
     };
-    Ok(FigureOptions {
-        mechanism,
-        omega,
-        angle: args.angle.map(Angle::from_degrees).transpose()?,
-        style: args.style,
-        font: args.font,
-        layers,
-        data,
-        fit: args.fit,
-        length_unit: args.units.length.clone(),
-        force_unit: args.units.force.clone(),
-        notation: args.notation,
-        mirror: match (args.mirror, args.no_mirror) {
-            (true, _) => Some(true),
-            (_, true) => Some(false),
-            _ => None,
-        },
-        width: args.width,
-        height: args.height,
-        title: args.title.clone(),
-    })
+    let mut options = FigureOptions::default();
+    options.mechanism = mechanism;
+    options.omega = omega;
+    options.angle = args.angle.map(Angle::from_degrees).transpose()?;
+    options.style = args.style;
+    options.font = args.font;
+    options.layers = layers;
+    options.data = data;
+    options.fit = args.fit;
+    options.length_unit = args.units.length.clone();
+    options.force_unit = args.units.force.clone();
+    options.notation = args.notation;
+    options.mirror = match (args.mirror, args.no_mirror) {
+        (true, _) => Some(true),
+        (_, true) => Some(false),
+        _ => None,
+    };
+    options.width = args.width;
+    options.height = args.height;
+    options.title = args.title.clone();
+    Ok(options)
 }
 
 /// Runs the subcommand: SVG on standard output, or the file written.

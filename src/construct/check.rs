@@ -7,6 +7,7 @@ use crate::mechanism::{Pose, SliderCrank};
 
 /// A quantity that a construction gives and the analytic core computes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
 pub enum Quantity {
     /// Slider velocity from CE (E, Fig. 63), scaled by rω.
     Velocity,

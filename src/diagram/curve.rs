@@ -66,8 +66,11 @@ pub enum Method {
     Uniform(usize),
 }
 
-/// The tolerance and the limits of a trace.
+/// The tolerance and the limits of a trace. Limits may be added in later
+/// versions: start from [`TraceOptions::DEFAULT`] (or
+/// [`TraceOptions::with_tolerance`]) and set the fields wanted.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct TraceOptions {
     /// The largest distance, in page units, allowed between the path and the
     /// exact curve ([`DEFAULT_TOLERANCE`]). Must be finite and positive.

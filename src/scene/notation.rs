@@ -6,6 +6,7 @@ use serde::Deserialize;
 /// Ng's O, C, P, I, M for the same points.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "kebab-case")]
+#[non_exhaustive]
 pub enum Notation {
     /// Crank centre C, crank pin B, cross-head A, D, E, F, G, H.
     #[default]
