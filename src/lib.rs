@@ -63,6 +63,29 @@
 //! ([`SceneFile::keys`]); [`FigureName::scene_toml`] writes the file of a
 //! named figure.
 //!
+//! ## The shape of the API
+//!
+//! - Angles: [`Angle::from_degrees`] for input (an error for NaN or
+//!   infinity), [`Angle::deg`] for literals (`Angle::deg(30.0)`).
+//! - Every value named on the command line and in scene files
+//!   ([`FigureName`], [`Layer`], [`Style`], [`Notation`], [`Font`],
+//!   [`figure::Fit`], [`Assembly`], [`table::Format`]) parses with
+//!   `str::parse` and writes its name with `Display`, and the two
+//!   round-trip; a wrong name is an [`Error::Parse`] listing the names.
+//!   A [`Unit`] (any name within its rules) parses and writes the same way.
+//! - The results worth storing ([`Kinematics`],
+//!   [`analytic::approx::Approximation`], [`analytic::calibration::LineFit`],
+//!   [`analytic::statics::Friction`], [`construct::CheckRow`],
+//!   [`construct::SweepReport`], [`LinkRates`], [`LinkMotion`],
+//!   [`ConvergenceRow`], the chain's check rows) implement serde's
+//!   `Serialize`.
+//! - Enums and option structs that are expected to grow are
+//!   `#[non_exhaustive]`: match them with a `_` arm, and build
+//!   [`figure::FigureOptions`] and [`diagram::TraceOptions`] from their
+//!   defaults by setting fields.
+//! - [`Error::Io`] keeps the file and the operating system's error as its
+//!   `source`.
+//!
 //! ## Features
 //!
 //! - `cli` (default): the `slider-crank` program (clap).

@@ -7,7 +7,7 @@
 use crate::mechanism::Pose;
 
 /// An approximate value beside the exact one it stands for.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Approximation {
     /// The value of the approximate formula.
     pub approx: f64,

@@ -50,7 +50,11 @@ pub fn rpm_to_omega(rpm: f64) -> f64 {
 /// are d x_A/dt and d²x_A/dt²; the rod's are dφ/dt and d²φ/dt² (the seeds'
 /// sign; the rod's counter-clockwise angular velocity is −dφ/dt). At the dead
 /// centres the slider velocity is exactly zero for an in-line mechanism.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// It serialises (serde) as a map of its field names to numbers, in the
+/// user's units and radians: the values as computed, which `analyze --json`
+/// writes in its own schema (the rod angle there in degrees).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Kinematics {
     /// Crank speed ω in rad/s.
     pub omega: f64,
@@ -109,6 +113,19 @@ impl Kinematics {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn serialises_with_its_field_names() {
+        let m = crate::SliderCrank::in_line(0.5, 3.0).unwrap();
+        let k = super::Kinematics::new(&m.pose(crate::Angle::deg(45.0)), 26.16).unwrap();
+        let json: serde_json::Value = serde_json::to_value(k).unwrap();
+        assert_eq!(json["velocity"].as_f64(), Some(k.velocity));
+        assert_eq!(json["rod_angle"].as_f64(), Some(k.rod_angle));
+        assert_eq!(json.as_object().unwrap().len(), 7);
+        let text = serde_json::to_string(&k).unwrap();
+        let back: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(back["omega"].as_f64(), Some(26.16));
+    }
+
     use super::*;
     use crate::{Angle, SliderCrank};
 

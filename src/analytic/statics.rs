@@ -129,7 +129,8 @@ pub(crate) fn thrust(slider_force: f64, tan_phi: f64, angle: Angle) -> Result<f6
 }
 
 /// The slider force needed with friction in the guides.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Friction {
     /// F_p' = F_p (1 − μ |tan φ|) (Ng eq. 8, where tan φ > 0): friction helps
     /// hold the slider, so less force is needed.

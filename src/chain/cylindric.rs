@@ -318,7 +318,7 @@ impl CylindricPose {
 /// The difference between the curved and the straight slot at one radius:
 /// the worst over the turn of |σ − x_A| / r, |dσ/dθ − dx_A/dθ| / r and
 /// |d²σ/dθ² − d²x_A/dθ²| / r.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct ConvergenceRow {
     /// The slot radius ρ.
     pub radius: f64,

@@ -159,7 +159,7 @@ impl InvertedChain {
 /// Angular velocities and accelerations of the four links (a, b, c, d in
 /// that order) relative to the fixed link, and the sliding of c on d, for
 /// the driver turning at constant speed.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LinkMotion {
     /// Angular velocities (counter-clockwise, rad/s) of a, b, c, d.
     pub velocity: [f64; 4],

@@ -300,7 +300,7 @@ impl QuadricChain {
 /// Angular velocities and accelerations of the coupler and lever per unit
 /// crank rate, for a crank turning at constant speed (counter-clockwise
 /// positive; multiply velocities by ω and accelerations by ω²).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LinkRates {
     /// Coupler b: dλ_b/dθ.
     pub coupler_velocity: f64,
