@@ -11,9 +11,7 @@ use slider_crank::{Angle, SliderCrank};
 use std::hint::black_box;
 
 fn angles() -> Vec<Angle> {
-    (0..360)
-        .map(|k| Angle::from_degrees(k as f64 + 0.5).unwrap())
-        .collect()
+    (0..360).map(|k| Angle::deg(k as f64 + 0.5)).collect()
 }
 
 fn bench(c: &mut Criterion) {

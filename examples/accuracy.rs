@@ -7,10 +7,6 @@ use slider_crank::construct::{Kisch, Quantity, VelocityLine, sweep};
 use slider_crank::geom::{Circle, CircleIntersection, Line, Point, Vector};
 use slider_crank::{Angle, Pose, SliderCrank};
 
-fn deg(d: f64) -> Angle {
-    Angle::from_degrees(d).unwrap()
-}
-
 /// E_y by intersecting the rod line anchored at A with the vertical.
 fn e_direct(p: &Pose) -> f64 {
     let rod = Line::through(p.a(), p.b()).unwrap();
@@ -107,7 +103,7 @@ fn main() {
     // E: anchored at A against anchored at B, large offset and huge n.
     for (n, frac) in [(6.0, 0.0), (1e3, 0.9), (1e6, 0.9)] {
         let m = SliderCrank::new(1.0, n, frac * (n - 1.0)).unwrap();
-        let poses = || (0..3600).map(move |k| m.pose(deg(k as f64 * 0.1)));
+        let poses = || (0..3600).map(move |k| m.pose(Angle::deg(k as f64 * 0.1)));
         let exact = |p: &Pose| -p.position_rate();
         let direct = worst(poses(), |p| Some(e_direct(p)), exact);
         let used = worst(poses(), |p| Some(VelocityLine::construct(p).ce()), exact);
@@ -150,7 +146,7 @@ fn main() {
     // Kisch: circle intersection where H approaches B (θ → 90°) or the
     // circles become tangent, and near the dead centres.
     for k in [1.0, 1e-2, 1e-4, 1e-6] {
-        let poses = [90.0 - k, 90.0 + k, 270.0 - k, 270.0 + k].map(|d| m.pose(deg(d)));
+        let poses = [90.0 - k, 90.0 + k, 270.0 - k, 270.0 + k].map(|d| m.pose(Angle::deg(d)));
         kisch_row(&poses, &format!("n = 4, θ = 90° or 270° ± {k:e}°"));
     }
     for k in [1e-1, 1e-3, 1e-5, 1e-7, 1e-9] {
@@ -187,7 +183,7 @@ fn main() {
     println!("| n | w − l | −h²/(w + l) |");
     println!("|---|---|---|");
     for n in [10.0, 1e3, 1e6, 1e8] {
-        let p = SliderCrank::in_line(1.0, n).unwrap().pose(deg(45.0));
+        let p = SliderCrank::in_line(1.0, n).unwrap().pose(Angle::deg(45.0));
         let accurate = p.obliquity_error();
         let naive = p.run() - n;
         println!(

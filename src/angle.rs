@@ -55,6 +55,28 @@ impl Angle {
         })
     }
 
+    /// The angle of `degrees` degrees, reduced exactly, for a literal or a
+    /// value known to be finite: `Angle::deg(30.0)`. The same angle as
+    /// [`Angle::from_degrees`], without the `Result`.
+    ///
+    /// # Panics
+    ///
+    /// On NaN or infinity (use [`Angle::from_degrees`] for input).
+    ///
+    /// ```
+    /// use slider_crank::Angle;
+    /// assert_eq!(Angle::deg(90.0).cos(), 0.0);
+    /// assert_eq!(Angle::deg(-30.0), Angle::from_degrees(330.0)?);
+    /// # Ok::<(), slider_crank::Error>(())
+    /// ```
+    #[track_caller]
+    pub fn deg(degrees: f64) -> Self {
+        match Self::from_degrees(degrees) {
+            Ok(angle) => angle,
+            Err(_) => panic!("Angle::deg takes a finite number of degrees, not {degrees}"),
+        }
+    }
+
     /// The angle of `radians` radians. No exact reduction is possible here
     /// (π is not a float); prefer [`Angle::from_degrees`] for given angles.
     /// The reduced angle is in `[0, 2π)` and its degrees in `[0, 360)`
@@ -104,7 +126,7 @@ mod tests {
     #[test]
     fn multiples_of_ninety_are_exact() {
         for k in -8i32..=8 {
-            let a = Angle::from_degrees(90.0 * k as f64).unwrap();
+            let a = Angle::deg(90.0 * k as f64);
             let expected =
                 [(0.0, 1.0), (1.0, 0.0), (0.0, -1.0), (-1.0, 0.0)][k.rem_euclid(4) as usize];
             assert_eq!((a.sin(), a.cos()), expected, "k = {k}");
@@ -116,7 +138,7 @@ mod tests {
         for d in [
             1.0, 29.0, 45.0, 134.0, 136.0, 200.0, 314.0, 359.5, -30.0, 725.0,
         ] {
-            let a = Angle::from_degrees(d).unwrap();
+            let a = Angle::deg(d);
             let r = d.rem_euclid(360.0).to_radians();
             assert!((a.sin() - r.sin()).abs() < 1e-15, "{d}");
             assert!((a.cos() - r.cos()).abs() < 1e-15, "{d}");
@@ -126,16 +148,16 @@ mod tests {
 
     #[test]
     fn symmetric_angles_are_bit_identical() {
-        let a = Angle::from_degrees(30.0).unwrap();
-        let b = Angle::from_degrees(-330.0).unwrap();
-        let c = Angle::from_degrees(150.0).unwrap();
+        let a = Angle::deg(30.0);
+        let b = Angle::deg(-330.0);
+        let c = Angle::deg(150.0);
         assert_eq!((a.sin(), a.cos()), (b.sin(), b.cos()));
         assert_eq!((a.sin(), -a.cos()), (c.sin(), c.cos()));
     }
 
     #[test]
     fn tiny_negative_angle_reduces_into_range() {
-        let a = Angle::from_degrees(-1e-20).unwrap();
+        let a = Angle::deg(-1e-20);
         assert!((0.0..360.0).contains(&a.degrees()));
     }
 

@@ -1,5 +1,7 @@
 //! The crate's one error type.
 
+use std::path::PathBuf;
+use std::sync::Arc;
 use thiserror::Error;
 
 /// Everything that can go wrong at the boundary of the crate: bad numbers,
@@ -7,7 +9,11 @@ use thiserror::Error;
 ///
 /// Each message names the offending value and what would be needed instead,
 /// so that the command line can print it as one line on standard error.
-#[derive(Debug, Clone, PartialEq, Error)]
+///
+/// Two errors are equal when their variants and fields are; the operating
+/// system's errors of two [`Error::Io`] are compared by their kind.
+#[derive(Debug, Clone, Error)]
+#[non_exhaustive]
 pub enum Error {
     /// A parameter is NaN or infinite.
     #[error("{name} must be a finite number, got {}", Num(*.value))]
@@ -61,9 +67,23 @@ pub enum Error {
     /// Input text that could not be understood (angle ranges, lists, files).
     #[error("{0}")]
     Parse(String),
-    /// Reading or writing a file failed.
-    #[error("{0}")]
-    Io(String),
+    /// Reading or writing failed (a file, standard output, the PNG
+    /// encoder). The message is the whole of what is shown: it names the
+    /// file and quotes the cause; the cause itself is kept as the error's
+    /// [`source`](std::error::Error::source) when the operating system
+    /// gave one.
+    #[error("{message}")]
+    Io {
+        /// What failed, as printed (`cannot write out.svg: Permission
+        /// denied (os error 13)`).
+        message: String,
+        /// The file read or written, when there is one.
+        path: Option<PathBuf>,
+        /// The operating system's error, when one caused the failure
+        /// (shared, so that the error stays `Clone`).
+        #[source]
+        source: Option<Arc<std::io::Error>>,
+    },
     /// A computation reached one of its limits (the evaluations, halvings
     /// or segments of a curve); the message says what can be changed.
     #[error("{0}")]
@@ -75,6 +95,26 @@ pub enum Error {
 }
 
 impl Error {
+    /// An [`Error::Io`] about `path` with the operating system's `source`;
+    /// `message` is what is printed.
+    pub fn io_at(message: String, path: &std::path::Path, source: std::io::Error) -> Self {
+        Error::Io {
+            message,
+            path: Some(path.to_path_buf()),
+            source: Some(Arc::new(source)),
+        }
+    }
+
+    /// An [`Error::Io`] about `path` without an operating-system cause
+    /// (a path that exists but is the wrong kind of file).
+    pub fn io_about(message: String, path: &std::path::Path) -> Self {
+        Error::Io {
+            message,
+            path: Some(path.to_path_buf()),
+            source: None,
+        }
+    }
+
     /// The same error with every control character of its texts (a
     /// newline or carriage return quoted from a user's file) written as an
     /// escape (`\n`), so that the message is one line.
@@ -90,9 +130,74 @@ impl Error {
                 reason: escape_controls(&reason),
             },
             Error::Parse(m) => Error::Parse(escape_controls(&m)),
-            Error::Io(m) => Error::Io(escape_controls(&m)),
+            Error::Io {
+                message,
+                path,
+                source,
+            } => Error::Io {
+                message: escape_controls(&message),
+                path,
+                source,
+            },
             Error::Limit(m) => Error::Limit(escape_controls(&m)),
             e => e,
+        }
+    }
+}
+
+impl PartialEq for Error {
+    fn eq(&self, other: &Self) -> bool {
+        use Error::*;
+        match (self, other) {
+            (NotFinite { name: a, value: x }, NotFinite { name: b, value: y })
+            | (NotPositive { name: a, value: x }, NotPositive { name: b, value: y })
+            | (Negative { name: a, value: x }, Negative { name: b, value: y }) => a == b && x == y,
+            (
+                RodTooShort {
+                    crank,
+                    rod,
+                    offset,
+                    needed,
+                },
+                RodTooShort {
+                    crank: c,
+                    rod: r,
+                    offset: o,
+                    needed: n,
+                },
+            ) => crank == c && rod == r && offset == o && needed == n,
+            (
+                OutOfRange {
+                    name,
+                    value,
+                    reason,
+                },
+                OutOfRange {
+                    name: n,
+                    value: v,
+                    reason: r,
+                },
+            ) => name == n && value == v && reason == r,
+            (Parse(a), Parse(b)) | (Limit(a), Limit(b)) | (Unsupported(a), Unsupported(b)) => {
+                a == b
+            }
+            (
+                Io {
+                    message,
+                    path,
+                    source,
+                },
+                Io {
+                    message: m,
+                    path: p,
+                    source: s,
+                },
+            ) => {
+                message == m
+                    && path == p
+                    && source.as_ref().map(|e| e.kind()) == s.as_ref().map(|e| e.kind())
+            }
+            _ => false,
         }
     }
 }

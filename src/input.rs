@@ -8,6 +8,7 @@
 use crate::error::{Error, Result};
 use std::io::Read;
 use std::path::Path;
+use std::sync::Arc;
 
 /// Largest scene file read, in bytes (1 MiB: a scene is a few hundred).
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;
@@ -24,9 +25,21 @@ pub const MAX_DATA_BYTES: u64 = 4 << 20;
 /// read), or it is not UTF-8 text.
 pub fn read_text(path: &Path, limit: u64, what: &str) -> Result<String> {
     let shown = path.display();
-    let file = std::fs::File::open(path)
-        .map_err(|e| Error::Io(format!("cannot read {what} {shown}: {e}")))?;
-    read_text_from(file, limit, &format!("{what} {shown}"))
+    let file = std::fs::File::open(path).map_err(|e| Error::Io {
+        message: format!("cannot read {what} {shown}: {e}"),
+        path: Some(path.to_path_buf()),
+        source: Some(Arc::new(e)),
+    })?;
+    read_text_from(file, limit, &format!("{what} {shown}")).map_err(|e| match e {
+        Error::Io {
+            message, source, ..
+        } => Error::Io {
+            message,
+            path: Some(path.to_path_buf()),
+            source,
+        },
+        e => e,
+    })
 }
 
 /// [`read_text`] for any reader (standard input, a pipe); `what` names the
@@ -36,12 +49,20 @@ pub fn read_text_from(reader: impl Read, limit: u64, what: &str) -> Result<Strin
     reader
         .take(limit.saturating_add(1))
         .read_to_end(&mut bytes)
-        .map_err(|e| Error::Io(format!("cannot read {what}: {e}")))?;
+        .map_err(|e| Error::Io {
+            message: format!("cannot read {what}: {e}"),
+            path: None,
+            source: Some(Arc::new(e)),
+        })?;
     if bytes.len() as u64 > limit {
-        return Err(Error::Io(format!(
-            "{what} is larger than {} (the most this program reads)",
-            size(limit)
-        )));
+        return Err(Error::Io {
+            message: format!(
+                "{what} is larger than {} (the most this program reads)",
+                size(limit)
+            ),
+            path: None,
+            source: None,
+        });
     }
     String::from_utf8(bytes).map_err(|e| {
         Error::Parse(format!(
@@ -63,6 +84,30 @@ fn size(bytes: u64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_missing_file_keeps_its_path_and_the_system_error() {
+        let path = Path::new("/nonexistent/scene.toml");
+        let e = read_text(path, 10, "scene file").unwrap_err();
+        assert!(
+            e.to_string()
+                .starts_with("cannot read scene file /nonexistent/scene.toml: "),
+            "{e}"
+        );
+        let Error::Io {
+            path: Some(p),
+            source: Some(os),
+            ..
+        } = &e
+        else {
+            panic!("{e:?}");
+        };
+        assert_eq!(p, path);
+        assert_eq!(os.kind(), std::io::ErrorKind::NotFound);
+        let source = std::error::Error::source(&e).expect("a source");
+        assert_eq!(source.to_string(), os.to_string());
+        assert_eq!(e.clone(), e);
+    }
 
     #[test]
     fn stops_one_byte_past_the_limit() {

@@ -64,6 +64,29 @@
 //! ([`SceneFile::keys`]); [`FigureName::scene_toml`] writes the file of a
 //! named figure.
 //!
+//! ## The shape of the API
+//!
+//! - Angles: [`Angle::from_degrees`] for input (an error for NaN or
+//!   infinity), [`Angle::deg`] for literals (`Angle::deg(30.0)`).
+//! - Every value named on the command line and in scene files
+//!   ([`FigureName`], [`Layer`], [`Style`], [`Notation`], [`Font`],
+//!   [`figure::Fit`], [`Assembly`], [`table::Format`]) parses with
+//!   `str::parse` and writes its name with `Display`, and the two
+//!   round-trip; a wrong name is an [`Error::Parse`] listing the names.
+//!   A [`Unit`] (any name within its rules) parses and writes the same way.
+//! - The results worth storing ([`Kinematics`],
+//!   [`analytic::approx::Approximation`], [`analytic::calibration::LineFit`],
+//!   [`analytic::statics::Friction`], [`construct::CheckRow`],
+//!   [`construct::SweepReport`], [`LinkRates`], [`LinkMotion`],
+//!   [`ConvergenceRow`], the chain's check rows) implement serde's
+//!   `Serialize`.
+//! - Enums and option structs that are expected to grow are
+//!   `#[non_exhaustive]`: match them with a `_` arm, and build
+//!   [`figure::FigureOptions`] and [`diagram::TraceOptions`] from their
+//!   defaults by setting fields.
+//! - [`Error::Io`] keeps the file and the operating system's error as its
+//!   `source`.
+//!
 //! ## Features
 //!
 //! - `cli` (default): the `slider-crank` program (clap).
@@ -83,6 +106,37 @@
 //! design, the command-line contract and the JSON schema are in
 //! `docs/design.md` in the repository.
 #![deny(missing_docs)]
+
+/// `FromStr` through `from_name` and `Display` through `name` for a value
+/// enum named on the command line and in scene files, so that
+/// `x.to_string().parse() == Ok(x)`; the parse error lists the names.
+macro_rules! parse_by_name {
+    ($($t:ty),+ $(,)?) => {$(
+        impl ::std::str::FromStr for $t {
+            type Err = $crate::Error;
+
+            fn from_str(s: &str) -> $crate::Result<Self> {
+                <$t>::from_name(s)
+            }
+        }
+
+        impl ::std::fmt::Display for $t {
+            fn fmt(&self, f: &mut ::std::fmt::Formatter<'_>) -> ::std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+    )+};
+}
+
+parse_by_name!(
+    figure::Style,
+    figure::Fit,
+    FigureName,
+    Layer,
+    Notation,
+    Assembly,
+    table::Format,
+);
 
 pub mod analytic;
 mod angle;
@@ -118,3 +172,40 @@ pub use units::{MAX_UNIT_CHARS, Unit, Units};
 #[cfg(doctest)]
 #[doc = include_str!("../README.md")]
 mod readme {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::figure::Fit;
+    use crate::table::Format;
+    use std::fmt::Display;
+    use std::str::FromStr;
+
+    fn round_trips<T>(all: &[T])
+    where
+        T: FromStr<Err = Error> + Display + PartialEq + std::fmt::Debug,
+    {
+        for x in all {
+            assert_eq!(x.to_string().parse::<T>().as_ref(), Ok(x), "{x}");
+        }
+        let Err(Error::Parse(message)) = "no-such-name".parse::<T>() else {
+            panic!("a wrong name is refused");
+        };
+        // The error names every value it would have taken.
+        for x in all {
+            assert!(message.contains(&x.to_string()), "{message} lacks {x}");
+        }
+    }
+
+    #[test]
+    fn value_enums_round_trip_through_their_names() {
+        round_trips(&[Style::Textbook, Style::Handout]);
+        round_trips(&[Fit::Origin, Fit::Intercept, Fit::Both]);
+        round_trips(&FigureName::ALL);
+        round_trips(&Layer::ALL);
+        round_trips(&[Notation::Textbook, Notation::Ng]);
+        round_trips(&[Assembly::Open, Assembly::Crossed]);
+        round_trips(&[Format::Text, Format::Markdown, Format::Csv]);
+        round_trips(&Font::ALL);
+    }
+}

@@ -300,23 +300,21 @@ impl Pose {
 mod tests {
     use super::*;
 
-    fn deg(d: f64) -> Angle {
-        Angle::from_degrees(d).unwrap()
-    }
-
     #[test]
     fn tan_obliquity_survives_an_underflowed_rise() {
         // r sin θ = 1e-100 · 1.7e-232 is below the smallest f64; tan φ is
         // sin θ / √(n² − sin²θ) ≈ 5.8e-233, not 0.
         let m = SliderCrank::in_line(1e-100, 3e-100).unwrap();
-        let p = m.pose(deg(1e-230));
+        let p = m.pose(Angle::deg(1e-230));
         assert_eq!(p.rise(), 0.0);
         let expected = 1e-230f64.to_radians() / 3.0;
         assert!((p.tan_obliquity() / expected - 1.0).abs() < 1e-15);
         // Elsewhere it is the quotient of the two lengths.
-        let p = SliderCrank::new(0.5, 3.0, 0.1).unwrap().pose(deg(33.0));
+        let p = SliderCrank::new(0.5, 3.0, 0.1)
+            .unwrap()
+            .pose(Angle::deg(33.0));
         assert_eq!(p.tan_obliquity(), p.rise() / p.run());
-        assert_eq!(m.pose(deg(180.0)).tan_obliquity(), 0.0);
+        assert_eq!(m.pose(Angle::deg(180.0)).tan_obliquity(), 0.0);
     }
 
     #[test]
@@ -352,9 +350,9 @@ mod tests {
         assert_eq!(m.inner_dead_centre(), std::f64::consts::PI);
         assert!((m.stroke() - 1.0).abs() < 1e-15);
         assert_eq!(m.quick_return_ratio(), 1.0);
-        let outer = m.pose(deg(0.0));
+        let outer = m.pose(Angle::deg(0.0));
         assert_eq!(outer.position(), 3.5);
-        assert_eq!(m.pose(deg(180.0)).position(), 2.5);
+        assert_eq!(m.pose(Angle::deg(180.0)).position(), 2.5);
         assert_eq!(outer.position_rate(), 0.0);
     }
 
@@ -384,7 +382,7 @@ mod tests {
     fn rod_has_its_length_at_every_pose() {
         let m = SliderCrank::new(1.0, 1.05, 0.04).unwrap();
         for k in 0..360 {
-            let p = m.pose(deg(k as f64));
+            let p = m.pose(Angle::deg(k as f64));
             assert!(((p.a() - p.b()).norm() - 1.05).abs() < 1e-15);
         }
     }
@@ -393,7 +391,7 @@ mod tests {
     fn transmission_angle_matches_ng_eq_11_in_line() {
         let m = SliderCrank::in_line(25.0, 72.0).unwrap();
         for d in [10.0, 45.0, 90.0, 135.0, 170.0] {
-            let p = m.pose(deg(d));
+            let p = m.pose(Angle::deg(d));
             let ng = std::f64::consts::PI - p.obliquity() - p.angle().radians();
             assert!((p.transmission_angle() - ng).abs() < 1e-14, "{d}");
         }
@@ -429,7 +427,7 @@ mod tests {
         // In line at θ = 0: s is even in θ, so s‴(0) = 0; and
         // φ‴(0) = −(r/l)(1 − r²/l²) from sin φ = (r/l) sin θ.
         let m = SliderCrank::in_line(0.5, 3.0).unwrap();
-        let outer = m.pose(deg(0.0));
+        let outer = m.pose(Angle::deg(0.0));
         assert_eq!(outer.position_jerk(), 0.0);
         let k: f64 = 1.0 / 6.0;
         assert!((outer.obliquity_jerk() + k * (1.0 - k * k)).abs() < 1e-16);
@@ -438,7 +436,7 @@ mod tests {
     #[test]
     fn obliquity_error_matches_textbook_form() {
         let m = SliderCrank::in_line(1.0, 4.0).unwrap();
-        let p = m.pose(deg(90.0));
+        let p = m.pose(Angle::deg(90.0));
         assert!((p.obliquity_error() - (15f64.sqrt() - 4.0)).abs() < 1e-15);
     }
 }

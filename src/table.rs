@@ -18,6 +18,7 @@ pub const TEXTBOOK_ANGLES: [f64; 7] = [0.0, 30.0, 60.0, 90.0, 120.0, 150.0, 180.
 
 /// Output format of a table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Format {
     /// Aligned columns for a terminal.
     Text,
@@ -25,6 +26,29 @@ pub enum Format {
     Markdown,
     /// Comma-separated values with a header row.
     Csv,
+}
+
+impl Format {
+    /// The name on the command line: `text`, `markdown`, `csv`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Format::Text => "text",
+            Format::Markdown => "markdown",
+            Format::Csv => "csv",
+        }
+    }
+
+    /// The format of that name; the error lists the names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        [Format::Text, Format::Markdown, Format::Csv]
+            .into_iter()
+            .find(|f| f.name() == name)
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "unknown format '{name}': expected text, markdown or csv"
+                ))
+            })
+    }
 }
 
 /// A table of formatted cells with a title and notes.

@@ -38,7 +38,7 @@ proptest! {
     #[test]
     fn kinematics_scale_with_omega(n in 1.1f64..50.0, theta in 0.0f64..360.0, w in -500.0f64..500.0) {
         let m = mech(0.3, n, 0.2);
-        let p = m.pose(Angle::from_degrees(theta).unwrap());
+        let p = m.pose(Angle::deg(theta));
         let k = Kinematics::new(&p, w).unwrap();
         prop_assert_eq!(k.velocity, w * p.position_rate());
         prop_assert_eq!(k.acceleration, w * w * p.position_acceleration());
@@ -51,8 +51,8 @@ proptest! {
     ) {
         let k = 10f64.powf(log_k);
         let (a, b) = (mech(1.0, n, frac), mech(k, n, frac));
-        let pa = a.pose(Angle::from_degrees(theta).unwrap());
-        let pb = b.pose(Angle::from_degrees(theta).unwrap());
+        let pa = a.pose(Angle::deg(theta));
+        let pb = b.pose(Angle::deg(theta));
         let close = |x: f64, y: f64| (x - y).abs() <= 1e-13 * (1.0 + x.abs().max(y.abs()));
         prop_assert!(close(pb.position() / k, pa.position()));
         prop_assert!(close(pb.position_rate() / k, pa.position_rate()));
@@ -68,7 +68,7 @@ proptest! {
         // neglected terms), and the error due to obliquity by 1/(2n) crank
         // radii (to 1/n more).
         for n in [10.0, 100.0, 1000.0] {
-            let p = mech(1.0, n, 0.0).pose(Angle::from_degrees(theta).unwrap());
+            let p = mech(1.0, n, 0.0).pose(Angle::deg(theta));
             let n3 = n * n * n;
             prop_assert!(approx::velocity(&p, 1.0).error().abs() * n3 <= 3.0);
             prop_assert!(approx::acceleration(&p, 1.0).error().abs() * n3 <= 3.0);
@@ -81,7 +81,7 @@ proptest! {
 #[test]
 fn approximation_errors_at_45_degrees_fall_like_n_cubed() {
     let e = |n: f64| {
-        let p = mech(1.0, n, 0.0).pose(Angle::from_degrees(45.0).unwrap());
+        let p = mech(1.0, n, 0.0).pose(Angle::deg(45.0));
         approx::velocity(&p, 1.0).error().abs()
     };
     let ratio = e(10.0) / e(20.0);

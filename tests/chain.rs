@@ -17,10 +17,6 @@ fn rad(t: f64) -> Angle {
     Angle::from_radians(t).unwrap()
 }
 
-fn deg(d: f64) -> Angle {
-    Angle::from_degrees(d).unwrap()
-}
-
 /// The angle of `v` unwrapped to lie within π of `near`.
 fn unwrap(v: Vector, near: f64) -> f64 {
     let t = v.y.atan2(v.x);
@@ -72,7 +68,7 @@ fn change_point_rates_are_the_limits_from_the_counter_clockwise_side() {
         let q = QuadricChain::new(l[0], l[1], l[2], l[3]).unwrap();
         for t0 in [0.0, 180.0] {
             for mode in [Assembly::Open, Assembly::Crossed] {
-                let p = q.pose(deg(t0), mode).unwrap();
+                let p = q.pose(Angle::deg(t0), mode).unwrap();
                 let Some(rates) = p.rates() else {
                     panic!("{l:?} {t0} {mode:?}: no rates")
                 };
@@ -248,8 +244,8 @@ fn curved_slot_is_the_quadric_chain_with_the_lever_as_long_as_the_radius() {
             // The quadric chain in its own frame, turned into the slot's.
             let (s, c) = turn.to_radians().sin_cos();
             for d in (0..360).step_by(5) {
-                let p = slot.pose(deg(d as f64));
-                let qp = q.pose(deg(d as f64 - turn), mode).unwrap();
+                let p = slot.pose(Angle::deg(d as f64));
+                let qp = q.pose(Angle::deg(d as f64 - turn), mode).unwrap();
                 let a = qp.a();
                 let a = Vector::new(c * a.x - s * a.y, s * a.x + c * a.y);
                 assert!((a - p.a().coords).norm() < 1e-13 * rho.abs(), "{rho} {d}");
@@ -276,7 +272,7 @@ fn at_rho_1e12_the_difference_is_the_first_order_term_to_rounding() {
     for rho in [1e12, -1e12, 1e15] {
         let slot = CylindricChain::new(m, rho).unwrap();
         for d in [10.0, 45.0, 100.0, 200.0, 300.0] {
-            let (p, q) = (slot.pose(deg(d)), m.pose(deg(d)));
+            let (p, q) = (slot.pose(Angle::deg(d)), m.pose(Angle::deg(d)));
             let x = q.position();
             let first = -(1.0 / rho) * q.rise() * x * x / (2.0 * q.run());
             let residual = p.arc_position() - x - first;
@@ -397,18 +393,18 @@ fn drivers_turn_without_stopping_except_the_hand_pump_handle() {
     for inv in [Inversion::Frame, Inversion::Crank, Inversion::Rod] {
         let chain = InvertedChain::new(m, inv);
         for d in 0..360 {
-            let motion = chain.pose(deg(d as f64)).motion(1.0);
+            let motion = chain.pose(Angle::deg(d as f64)).motion(1.0);
             assert!(motion.is_some(), "{inv:?} {d}");
             let v = motion.unwrap().velocity;
             assert!(v.iter().all(|x| x.is_finite()), "{inv:?} {d}");
         }
     }
     let pump = InvertedChain::new(m, Inversion::Slider);
-    assert!(pump.pose(deg(90.0)).motion(1.0).is_none());
-    assert!(pump.pose(deg(45.0)).motion(1.0).is_some());
+    assert!(pump.pose(Angle::deg(90.0)).motion(1.0).is_none());
+    assert!(pump.pose(Angle::deg(45.0)).motion(1.0).is_some());
     // Whitworth at constant driver speed: the driver b turns at ω
     // relative to the fixed a.
-    let w = InvertedChain::new(m, Inversion::Crank).pose(deg(30.0));
+    let w = InvertedChain::new(m, Inversion::Crank).pose(Angle::deg(30.0));
     let motion = w.motion(2.0).unwrap();
     assert!((motion.velocity[1] - 2.0).abs() < 1e-15);
     assert_eq!(motion.velocity[0], 0.0);

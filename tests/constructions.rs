@@ -10,10 +10,6 @@ use slider_crank::{Angle, SliderCrank};
 
 const TOL: f64 = 1e-12;
 
-fn deg(d: f64) -> Angle {
-    Angle::from_degrees(d).unwrap()
-}
-
 fn assert_sweep(m: &SliderCrank, samples: usize) {
     let report = sweep(m, samples);
     for (q, err, at, n) in &report.worst {
@@ -47,7 +43,7 @@ proptest! {
         let r = 10f64.powf(log_r);
         let l = r * (1.0 + 10f64.powf(log_n_minus_1));
         let m = SliderCrank::new(r, l, offset_frac * (l - r)).unwrap();
-        let pose = m.pose(deg(theta));
+        let pose = m.pose(Angle::deg(theta));
         for row in cross_check(&pose) {
             prop_assert!(row.scaled_error() <= TOL, "{:?} {} {}", row.quantity, row.graphical, row.analytic);
         }
@@ -58,11 +54,11 @@ proptest! {
 fn d_is_at_infinity_exactly_at_90_and_270_and_finite_just_before() {
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
     for d in [90.0, 270.0, -90.0, 450.0] {
-        let ic = InstantCentre::construct(&m.pose(deg(d)));
+        let ic = InstantCentre::construct(&m.pose(Angle::deg(d)));
         assert!(matches!(ic.d(), Intersection::AtInfinity(_)), "{d}");
         assert_eq!(ic.rod_angular_velocity_ratio(), 0.0);
     }
-    let pose = m.pose(deg(89.999999));
+    let pose = m.pose(Angle::deg(89.999999));
     let d = InstantCentre::construct(&pose)
         .d()
         .point()
@@ -86,7 +82,7 @@ fn d_is_at_infinity_exactly_at_90_and_270_and_finite_just_before() {
 fn klein_is_unavailable_only_where_d_is_at_infinity() {
     let m = SliderCrank::new(1.0, 4.0, 0.5).unwrap();
     for k in 0..360 {
-        let pose = m.pose(deg(k as f64));
+        let pose = m.pose(Angle::deg(k as f64));
         let d = InstantCentre::construct(&pose);
         let klein = Klein::construct(&pose, &d, &VelocityLine::construct(&pose));
         assert_eq!(klein.is_none(), k == 90 || k == 270, "{k}");
@@ -97,7 +93,7 @@ fn klein_is_unavailable_only_where_d_is_at_infinity() {
 fn klein_and_kisch_give_the_same_f_and_g() {
     let m = SliderCrank::new(1.0, 3.5, -0.4).unwrap();
     for k in 0..720 {
-        let pose = m.pose(deg(k as f64 * 0.5));
+        let pose = m.pose(Angle::deg(k as f64 * 0.5));
         let e = VelocityLine::construct(&pose);
         let kisch = Kisch::construct(&pose, &e);
         if let Some(klein) = Klein::construct(&pose, &InstantCentre::construct(&pose), &e) {
@@ -111,7 +107,7 @@ fn klein_and_kisch_give_the_same_f_and_g() {
 fn kisch_h_is_on_the_semicircle_and_the_circle_about_b() {
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
     for k in 0..72 {
-        let pose = m.pose(deg(k as f64 * 5.0));
+        let pose = m.pose(Angle::deg(k as f64 * 5.0));
         let e = VelocityLine::construct(&pose);
         let kisch = Kisch::construct(&pose, &e);
         let h = kisch.h().expect("BE < BA for n = 6");
@@ -134,7 +130,7 @@ fn kisch_h_exists_even_near_the_assembly_limit() {
     for e in [0.0, 0.049, -0.049] {
         let m = SliderCrank::new(1.0, 1.05, e).unwrap();
         for k in 0..3600 {
-            let pose = m.pose(deg(k as f64 * 0.1));
+            let pose = m.pose(Angle::deg(k as f64 * 0.1));
             let kisch = Kisch::construct(&pose, &VelocityLine::construct(&pose));
             assert!(kisch.be() < pose.mechanism().rod(), "{k}");
             assert!(kisch.h().is_some(), "{k}");
@@ -149,7 +145,7 @@ fn fig_67_cg_at_45_degrees() {
     // §36: CG = 0.351 ft measured on the drawing; the construction gives the
     // exact 0.3541 ft (r (cos θ + sin⁴θ/(n² − sin²θ)^{3/2}) at 45°, n = 6).
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
-    let pose = m.pose(deg(45.0));
+    let pose = m.pose(Angle::deg(45.0));
     let kisch = Kisch::construct(&pose, &VelocityLine::construct(&pose));
     let (s, n) = (0.5f64.sqrt(), 6.0f64);
     let exact = 0.5 * (s + s.powi(4) / (n * n - s * s).powf(1.5));
@@ -172,7 +168,7 @@ fn ng_appendix_velocity_ratio_om_over_oc() {
     // v_p / v_c = OM / OC (A3) and IP / IC (A2), on Ng's rig.
     let m = SliderCrank::in_line(25.0, 72.0).unwrap();
     for d in [10.0, 40.0, 70.0, 100.0, 130.0, 160.0] {
-        let pose = m.pose(deg(d));
+        let pose = m.pose(Angle::deg(d));
         let e = VelocityLine::construct(&pose);
         let i = InstantCentre::construct(&pose).d().point().unwrap();
         let ratio_a3 = e.ce() / 25.0;
@@ -193,7 +189,7 @@ fn kennedy_theorem_holds_for_every_triple() {
     use Link::*;
     let m = SliderCrank::new(1.0, 3.0, 0.6).unwrap();
     for k in 0..360 {
-        let pose = m.pose(deg(k as f64));
+        let pose = m.pose(Angle::deg(k as f64));
         let vc = VirtualCentres::construct(
             &pose,
             &InstantCentre::construct(&pose),
@@ -228,22 +224,22 @@ fn centrode_derivatives_match_finite_differences() {
         let c = Centrode::new(kind);
         for d in [10.0, 60.0, 120.0, 200.0, 300.0] {
             let h = 1e-6;
-            let p = |x: f64| c.point(&m.pose(deg(x))).point().unwrap();
+            let p = |x: f64| c.point(&m.pose(Angle::deg(x))).point().unwrap();
             let fd = (p(d + h) - p(d - h)) / (2.0 * h.to_radians());
-            let exact = c.derivative(&m.pose(deg(d))).unwrap();
+            let exact = c.derivative(&m.pose(Angle::deg(d))).unwrap();
             assert!(
                 (fd - exact).norm() < 1e-6 * (1.0 + exact.norm()),
                 "{kind:?} {d}"
             );
         }
         assert!(matches!(
-            c.point(&m.pose(deg(90.0))),
+            c.point(&m.pose(Angle::deg(90.0))),
             Intersection::AtInfinity(_)
         ));
-        assert!(c.derivative(&m.pose(deg(270.0))).is_none());
+        assert!(c.derivative(&m.pose(Angle::deg(270.0))).is_none());
     }
     // The fixed centrode is D itself.
-    let pose = m.pose(deg(33.0));
+    let pose = m.pose(Angle::deg(33.0));
     assert_eq!(
         Centrode::new(CentrodeKind::Fixed).point(&pose).point(),
         InstantCentre::construct(&pose).d().point()
@@ -253,7 +249,7 @@ fn centrode_derivatives_match_finite_differences() {
 #[test]
 fn moving_centrode_is_d_in_the_rod_frame() {
     let m = SliderCrank::new(1.0, 3.0, -0.3).unwrap();
-    let pose = m.pose(deg(40.0));
+    let pose = m.pose(Angle::deg(40.0));
     let d = InstantCentre::construct(&pose).d().point().unwrap();
     let u = (pose.b() - pose.a()) / 3.0;
     let local = Centrode::new(CentrodeKind::Moving)
@@ -270,12 +266,12 @@ fn coupler_points_trace_ovals_between_line_and_circle() {
     let mid = CouplerPoint::new(0.5).unwrap();
     assert!(CouplerPoint::new(1.5).is_none());
     for k in 0..36 {
-        let pose = m.pose(deg(k as f64 * 10.0));
+        let pose = m.pose(Angle::deg(k as f64 * 10.0));
         assert_eq!(CouplerPoint::new(0.0).unwrap().point(&pose), pose.a());
         assert!((CouplerPoint::new(1.0).unwrap().point(&pose) - pose.b()).norm() < 1e-15);
         let h = 1e-6;
-        let fd = (mid.point(&m.pose(deg(k as f64 * 10.0 + h)))
-            - mid.point(&m.pose(deg(k as f64 * 10.0 - h))))
+        let fd = (mid.point(&m.pose(Angle::deg(k as f64 * 10.0 + h)))
+            - mid.point(&m.pose(Angle::deg(k as f64 * 10.0 - h))))
             / (2.0 * h.to_radians());
         assert!((fd - mid.derivative(&pose)).norm() < 1e-6);
     }
@@ -285,7 +281,7 @@ fn coupler_points_trace_ovals_between_line_and_circle() {
 fn rod_rates_have_the_seeds_sign() {
     // At 45°, n = 6: dφ/dt > 0 and d²φ/dt² < 0 (§37: 3.10 and −80.1 rad/s…).
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
-    let rows = cross_check(&m.pose(deg(45.0)));
+    let rows = cross_check(&m.pose(Angle::deg(45.0)));
     let get = |q| rows.iter().find(|r| r.quantity == q).unwrap().graphical;
     assert!(get(Quantity::RodAngularVelocity) > 0.0);
     assert!(get(Quantity::RodAngularAccelerationKisch) < 0.0);

@@ -268,10 +268,8 @@ fn cusps_converge() {
     for pieces in [4, 3] {
         let mut counts = Vec::new();
         for tol in TOLERANCES {
-            let options = TraceOptions {
-                initial_pieces: pieces,
-                ..TraceOptions::with_tolerance(tol)
-            };
+            let mut options = TraceOptions::with_tolerance(tol);
+            options.initial_pieces = pieces;
             let path = trace(&astroid, 0.0..=TAU, &map, &frame, Method::Cubic, &options).unwrap();
             let d = measure(&path, &astroid, 0.0..=TAU, &map, &frame);
             assert_within(&d, tol, &format!("astroid, {pieces} pieces, tol {tol}"));
@@ -293,10 +291,8 @@ fn cusps_converge() {
     };
     let (map, frame) = panel(200.0, false, Point::new(0.5, 0.0), 300.0, 500.0);
     for tol in TOLERANCES {
-        let options = TraceOptions {
-            initial_pieces: 3,
-            ..TraceOptions::with_tolerance(tol)
-        };
+        let mut options = TraceOptions::with_tolerance(tol);
+        options.initial_pieces = 3;
         let path = trace(&cusp, -1.0..=1.0, &map, &frame, Method::Cubic, &options).unwrap();
         let d = measure(&path, &cusp, -1.0..=1.0, &map, &frame);
         assert_within(&d, tol, &format!("semicubical cusp, tol {tol}"));
@@ -309,10 +305,8 @@ fn a_cubic_curve_is_one_segment_per_piece() {
     let curve = |t: f64| Some((Point::new(t, t * t * t), Vector::new(1.0, 3.0 * t * t)));
     let map = PageFromWorld::identity();
     let frame = Frame::new(Point::new(-1.0, -1.0), Point::new(2.0, 2.0));
-    let options = TraceOptions {
-        initial_pieces: 1,
-        ..TraceOptions::with_tolerance(1e-12)
-    };
+    let mut options = TraceOptions::with_tolerance(1e-12);
+    options.initial_pieces = 1;
     let path = trace(&curve, 0.0..=1.0, &map, &frame, Method::Cubic, &options).unwrap();
     assert_eq!(path.segment_count(), 1);
     let Segment::Cubic(c1, c2, end) = path.subpaths()[0].segments()[0] else {
@@ -496,15 +490,11 @@ fn bad_requests_are_errors_not_panics() {
     assert!(run(f64::NAN..=1.0, Method::Cubic, ok).is_err());
     assert!(run(-f64::MAX..=f64::MAX, Method::Cubic, ok).is_err());
     assert!(run(0.0..=1.0, Method::Uniform(0), ok).is_err());
-    let none = TraceOptions {
-        initial_pieces: 0,
-        ..ok
-    };
+    let mut none = ok;
+    none.initial_pieces = 0;
     assert!(run(0.0..=1.0, Method::Cubic, none).is_err());
-    let few = TraceOptions {
-        max_segments: 5,
-        ..TraceOptions::with_tolerance(1e-6)
-    };
+    let mut few = TraceOptions::with_tolerance(1e-6);
+    few.max_segments = 5;
     let err = run(0.0..=TAU, Method::Cubic, few).unwrap_err();
     assert!(err.to_string().contains("more than 5 segments"), "{err}");
 }

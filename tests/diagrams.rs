@@ -721,10 +721,8 @@ fn diagrams_render_inked_and_clean() {
 fn centrode_branches_run_to_the_frame_edge_without_spikes() {
     // The default pose, and poses at a dead centre and at the poles.
     for degrees in [35.0, 0.0, 90.0, 200.0, 270.0] {
-        let options = FigureOptions {
-            angle: Some(slider_crank::Angle::from_degrees(degrees).unwrap()),
-            ..FigureOptions::default()
-        };
+        let mut options = FigureOptions::default();
+        options.angle = Some(slider_crank::Angle::deg(degrees));
         let svg = to_svg(&FigureName::Fig61Centrodes.figure(&options).unwrap());
         centrodes_reach_the_edge(&svg, degrees);
     }
@@ -852,9 +850,10 @@ fn ng_fig_7_states_both_fits_and_r_squared() {
     // Ng's 0.9998 is the R² about zero of the fit through the origin.
     assert!(svg.contains("0.9998 about zero"));
     let only = FigureName::NgFig7Calibration
-        .figure(&FigureOptions {
-            fit: Some(Fit::Origin),
-            ..FigureOptions::default()
+        .figure(&{
+            let mut o = FigureOptions::default();
+            o.fit = Some(Fit::Origin);
+            o
         })
         .unwrap();
     let only = to_svg(&only);
@@ -866,9 +865,10 @@ fn ng_fig_7_states_both_fits_and_r_squared() {
 fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
     for (deg, mu) in [(45.0, 1.0), (30.0, (30.0 * DEG).tan())] {
         let f = FigureName::NgFig2Incline
-            .figure(&FigureOptions {
-                angle: Some(slider_crank::Angle::from_degrees(deg).unwrap()),
-                ..FigureOptions::default()
+            .figure(&{
+                let mut o = FigureOptions::default();
+                o.angle = Some(slider_crank::Angle::deg(deg));
+                o
             })
             .unwrap();
         let svg = to_svg(&f);
@@ -879,9 +879,10 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
         }
     }
     for bad in [0.0, 90.0, 120.0, -10.0] {
-        let r = FigureName::NgFig2Incline.figure(&FigureOptions {
-            angle: Some(slider_crank::Angle::from_degrees(bad).unwrap()),
-            ..FigureOptions::default()
+        let r = FigureName::NgFig2Incline.figure(&{
+            let mut o = FigureOptions::default();
+            o.angle = Some(slider_crank::Angle::deg(bad));
+            o
         });
         assert!(r.is_err(), "{bad}");
     }
@@ -889,10 +890,8 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
 
 #[test]
 fn options_a_diagram_does_not_use_are_refused() {
-    let data = FigureOptions {
-        data: Some("angle,force\n40,9\n".into()),
-        ..FigureOptions::default()
-    };
+    let mut data = FigureOptions::default();
+    data.data = Some("angle,force\n40,9\n".into());
     let e = FigureName::RodMotion.figure(&data).unwrap_err().to_string();
     assert!(e.contains("rod-motion does not use --data"), "{e}");
     let e = FigureName::Fig67Example
@@ -900,20 +899,16 @@ fn options_a_diagram_does_not_use_are_refused() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("--data"), "{e}");
-    let backwards = FigureOptions {
-        omega: Some(-1.0),
-        ..FigureOptions::default()
-    };
+    let mut backwards = FigureOptions::default();
+    backwards.omega = Some(-1.0);
     assert!(
         FigureName::Fig64VelocityDiagrams
             .figure(&backwards)
             .is_err()
     );
     assert!(FigureName::NgFig8Forces.figure(&data).is_ok());
-    let outside = FigureOptions {
-        data: Some("angle,force\n200,9\n".into()),
-        ..FigureOptions::default()
-    };
+    let mut outside = FigureOptions::default();
+    outside.data = Some("angle,force\n200,9\n".into());
     assert!(FigureName::NgFig8Forces.figure(&outside).is_err());
 }
 
@@ -930,10 +925,8 @@ fn other_mechanisms_draw_cleanly() {
         FigureName::Fig61Centrodes,
         FigureName::NgFig8Forces,
     ] {
-        let mut o = FigureOptions {
-            mechanism: Some(m),
-            ..FigureOptions::default()
-        };
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(m);
         if !matches!(
             name,
             FigureName::CouplerCurves | FigureName::Fig61Centrodes | FigureName::NgFig8Forces

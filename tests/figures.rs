@@ -257,7 +257,7 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
         for deg in [0.0, 90.0, 180.0, 270.0, 89.9, 45.0] {
             for style in [Style::Textbook, Style::Handout] {
                 for mirror in [false, true] {
-                    let scene = Scene::new(m, Angle::from_degrees(deg).unwrap())
+                    let scene = Scene::new(m, Angle::deg(deg))
                         .with_layers(Layer::ALL)
                         .with_style(style)
                         .mirrored(mirror);
@@ -272,7 +272,7 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
             let scene = name
                 .scene()
                 .unwrap()
-                .with_angles(vec![Angle::from_degrees(deg).unwrap()])
+                .with_angles(vec![Angle::deg(deg)])
                 .unwrap();
             assert_clean(
                 &to_svg(&scene.figure()),
@@ -286,8 +286,7 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
 fn d_off_the_page_and_at_infinity_are_shown_by_arrows() {
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
     let at = |deg: f64| {
-        let scene = Scene::new(m, Angle::from_degrees(deg).unwrap())
-            .with_layers([Layer::Mechanism, Layer::Velocity]);
+        let scene = Scene::new(m, Angle::deg(deg)).with_layers([Layer::Mechanism, Layer::Velocity]);
         to_svg(&scene.figure())
     };
     let near_90 = at(88.0);
@@ -306,9 +305,7 @@ fn d_off_the_page_and_at_infinity_are_shown_by_arrows() {
 #[test]
 fn a_bare_mechanism_computes_no_construction_and_kisch_no_d() {
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
-    let scene = |layers: &[Layer]| {
-        Scene::new(m, Angle::from_degrees(45.0).unwrap()).with_layers(layers.to_vec())
-    };
+    let scene = |layers: &[Layer]| Scene::new(m, Angle::deg(45.0)).with_layers(layers.to_vec());
     let (_, bare) = scene(&[Layer::Mechanism, Layer::Dimensions]).build();
     assert_eq!(bare.total(), 0);
     let (_, kisch) = scene(&[Layer::Mechanism, Layer::Kisch, Layer::Scales]).build();
@@ -397,7 +394,7 @@ fn scale_notes_state_the_velocity_and_acceleration_scales() {
 #[test]
 fn centrode_and_coupler_paths_stay_within_tolerance_of_the_curve() {
     let m = SliderCrank::in_line(1.0, 2.5).unwrap();
-    let scene = Scene::new(m, Angle::from_degrees(30.0).unwrap()).with_layers([
+    let scene = Scene::new(m, Angle::deg(30.0)).with_layers([
         Layer::Mechanism,
         Layer::Coupler,
         Layer::Centrodes,

@@ -61,10 +61,8 @@ fn every_character_of_every_named_figure_has_a_glyph_in_every_face() {
 #[test]
 fn the_svg_names_the_chosen_face_first() {
     for font in Font::ALL {
-        let options = FigureOptions {
-            font: Some(font),
-            ..FigureOptions::default()
-        };
+        let mut options = FigureOptions::default();
+        options.font = Some(font);
         for name in [FigureName::Fig65Klein, FigureName::AccelerationDiagrams] {
             let svg = to_svg(&name.figure(&options).unwrap());
             let family = svg
@@ -86,10 +84,8 @@ fn label_boxes_follow_the_faces_widths() {
     // labels and legends of the plots are measured in the chosen face:
     // the same figure lays out differently.
     let svg = |font| {
-        let options = FigureOptions {
-            font: Some(font),
-            ..FigureOptions::default()
-        };
+        let mut options = FigureOptions::default();
+        options.font = Some(font);
         to_svg(&FigureName::AccelerationDiagrams.figure(&options).unwrap())
     };
     let (ncm, lib) = (svg(Font::NewComputerModern), svg(Font::LibertinusSerif));

@@ -268,16 +268,14 @@ fn mechanisms() -> Vec<(String, SliderCrank)> {
 /// Every 10°, both dead centres, 90°, 270°, and 1° either side of each of
 /// the last four; the same angle once.
 fn poses(m: &SliderCrank) -> Vec<Angle> {
-    let mut angles: Vec<Angle> = (0..36)
-        .map(|k| Angle::from_degrees(10.0 * k as f64).unwrap())
-        .collect();
+    let mut angles: Vec<Angle> = (0..36).map(|k| Angle::deg(10.0 * k as f64)).collect();
     let dead = [m.outer_dead_centre(), m.inner_dead_centre()].map(|r| r.to_degrees());
     for key in [dead[0], dead[1], 90.0, 270.0] {
         let exact = match key {
-            90.0 | 270.0 => Angle::from_degrees(key).unwrap(),
+            90.0 | 270.0 => Angle::deg(key),
             _ => Angle::from_radians(key.to_radians()).unwrap(),
         };
-        let sides = [key - 1.0, key + 1.0].map(|d| Angle::from_degrees(d).unwrap());
+        let sides = [key - 1.0, key + 1.0].map(Angle::deg);
         for a in [exact, sides[0], sides[1]] {
             let near = |b: &Angle| {
                 let d = (a.degrees() - b.degrees()).rem_euclid(360.0);
@@ -308,11 +306,9 @@ fn inspect(
     mechanism: &(String, SliderCrank),
     angle: Option<Angle>,
 ) -> Outcome {
-    let options = FigureOptions {
-        mechanism: Some(mechanism.1),
-        angle,
-        ..FigureOptions::default()
-    };
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(mechanism.1);
+    options.angle = angle;
     let built = FigureName::from_name(figure).unwrap().figure(&options);
     let failures = match built {
         Ok(f) => check(&Plate::read(&to_svg(&f)), SPREAD_FIGURES.contains(&figure)),
@@ -747,10 +743,7 @@ fn a_series_held_over_the_revolution_keeps_one_page_map_and_stays_on_the_page() 
     // Fitted to each pose, the velocity layer moves the map from frame to
     // frame (D rises and falls with θ).
     let single = |angle: f64| {
-        let s = engine
-            .clone()
-            .with_angles(vec![Angle::from_degrees(angle).unwrap()])
-            .unwrap();
+        let s = engine.clone().with_angles(vec![Angle::deg(angle)]).unwrap();
         maps(&to_svg(&s.figure()))
     };
     assert_ne!(single(0.0).1, single(30.0).1);

@@ -255,8 +255,7 @@ fn a_scene_page_may_be_physical_and_the_figure_titled() {
 #[test]
 fn a_series_is_the_scene_held_over_its_range_at_each_angle() {
     use slider_crank::Angle;
-    let degrees =
-        |d: &[f64]| -> Vec<Angle> { d.iter().map(|d| Angle::from_degrees(*d).unwrap()).collect() };
+    let degrees = |d: &[f64]| -> Vec<Angle> { d.iter().map(|d| Angle::deg(*d)).collect() };
     let scene = FigureName::Fig65Klein.scene().unwrap();
     assert_eq!(scene.held(), None);
     // Held over a quarter turn: each frame is that scene at its angle.
@@ -290,7 +289,7 @@ fn a_held_view_needs_one_to_3600_angles() {
     let scene = FigureName::Fig63Velocity.scene().unwrap();
     let e = scene.clone().held_over(Vec::new()).unwrap_err().to_string();
     assert_eq!(e, "a view is held over at least one angle");
-    let many = vec![Angle::from_degrees(0.0).unwrap(); 3601];
+    let many = vec![Angle::deg(0.0); 3601];
     let e = scene
         .clone()
         .held_over(many.clone())

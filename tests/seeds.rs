@@ -9,10 +9,6 @@ use slider_crank::construct::{Kisch, VelocityLine};
 use slider_crank::table::{self, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
 use slider_crank::{Angle, Kinematics, SliderCrank};
 
-fn deg(d: f64) -> Angle {
-    Angle::from_degrees(d).unwrap()
-}
-
 /// |x − printed| within half a unit of the printed last digit.
 fn within_rounding(x: f64, printed: f64, decimals: i32) -> bool {
     (x - printed).abs() <= 0.5 * 10f64.powi(-decimals) + 1e-12
@@ -47,7 +43,7 @@ fn obliquity_error_at_90_degrees() {
         (5.0, 24f64.sqrt() - 5.0),
         (6.0, 35f64.sqrt() - 6.0),
     ] {
-        let p = SliderCrank::in_line(1.0, n).unwrap().pose(deg(90.0));
+        let p = SliderCrank::in_line(1.0, n).unwrap().pose(Angle::deg(90.0));
         assert!((p.obliquity_error() - exact).abs() < 1e-15);
     }
 }
@@ -63,7 +59,7 @@ fn crank_pin_speed_of_section_35() {
 
 #[test]
 fn piston_velocity_at_45_degrees() {
-    let pose = engine().pose(deg(45.0));
+    let pose = engine().pose(Angle::deg(45.0));
     let v = approx::velocity(&pose, BOOK_OMEGA);
     // Eq. (2): 13.08 × 0.79044 = 10.339 (printed 10.340).
     assert!(within_rounding(-v.approx, 10.339, 3));
@@ -107,7 +103,7 @@ fn acceleration_factor_table_digit_for_digit() {
     }
     // The table's symmetry claim: θ and 360° − θ give the same value.
     for &d in &TEXTBOOK_ANGLES {
-        let (a, b) = (deg(d), deg(360.0 - d));
+        let (a, b) = (Angle::deg(d), Angle::deg(360.0 - d));
         for n in TEXTBOOK_RATIOS {
             let fa = approx::acceleration_factor(a.sin(), a.cos(), n);
             let fb = approx::acceleration_factor(b.sin(), b.cos(), n);
@@ -118,7 +114,7 @@ fn acceleration_factor_table_digit_for_digit() {
 
 #[test]
 fn piston_acceleration_at_45_degrees() {
-    let pose = engine().pose(deg(45.0));
+    let pose = engine().pose(Angle::deg(45.0));
     let a = approx::acceleration(&pose, BOOK_OMEGA);
     // Eq. (3): 13.08² / 0.5 × 0.70711 = 241.95 (printed 242.1).
     assert!(within_rounding(-a.approx, 242.0, 1));
@@ -129,7 +125,7 @@ fn piston_acceleration_at_45_degrees() {
 
 #[test]
 fn fig_67_scales_and_cg() {
-    let pose = engine().pose(deg(45.0));
+    let pose = engine().pose(Angle::deg(45.0));
     let kisch = Kisch::construct(&pose, &VelocityLine::construct(&pose));
     let cg = kisch.points().cg();
     // The drawing's CG = 0.351 ft is a measurement; the construction gives 0.354.
@@ -146,7 +142,7 @@ fn fig_67_scales_and_cg() {
 
 #[test]
 fn rod_motion_at_45_degrees() {
-    let pose = engine().pose(deg(45.0));
+    let pose = engine().pose(Angle::deg(45.0));
     let n = 6.0f64;
     let s = 0.5f64.sqrt();
     // √(n² − sin²θ) = 5.96 (right).
@@ -199,7 +195,7 @@ fn ng_table_2_f_column_implies_one_kilogram() {
     // T = F · OM for every row, with the exact formulas: all within 0.5 % of
     // 0.26487 N·m, and twice the 0.5 kg load of the text.
     for &(d, f, ..) in &NG_TABLE_2 {
-        let pose = rig().pose(deg(d));
+        let pose = rig().pose(Angle::deg(d));
         let t = statics::torque_from_slider_force(&pose, f);
         assert!((t / NG_TORQUE - 1.0).abs() < 0.005, "{d}: {t}");
         assert!((t / (0.5 * 9.81 * 0.027) - 2.0).abs() < 0.01);
@@ -212,7 +208,7 @@ fn ng_table_2_f_and_beta_against_the_formulas() {
     // π ≈ 3.14 in the degree conversion (up to 0.4 % at 160°).
     let mut worst: f64 = 0.0;
     for &(d, f, _, _, beta) in &NG_TABLE_2 {
-        let pose = rig().pose(deg(d));
+        let pose = rig().pose(Angle::deg(d));
         let exact = statics::slider_force(&pose, NG_TORQUE).unwrap().unwrap();
         worst = worst.max((exact - f).abs() / exact);
         // β: eq. (11) and the general interior angle agree; printed within
@@ -233,7 +229,7 @@ fn ng_table_2_f_and_beta_against_the_formulas() {
         assert!((NG_TORQUE / om - f).abs() < 0.011, "{d}");
     }
     // Rows right as printed with the exact formulas (within rounding).
-    let pose = rig().pose(deg(80.0));
+    let pose = rig().pose(Angle::deg(80.0));
     assert!(within_rounding(
         statics::transmission_angle_ng_degrees(&pose),
         80.00,
@@ -244,13 +240,13 @@ fn ng_table_2_f_and_beta_against_the_formulas() {
 #[test]
 fn ng_table_2_f_prime_uses_one_rows_phi() {
     // Printed F'/F = 0.6847 in every row = 1 − tan 17.50°, the φ of θ = 60°.
-    let phi60 = rig().pose(deg(60.0)).obliquity();
+    let phi60 = rig().pose(Angle::deg(60.0)).obliquity();
     for &(d, f, fp, ..) in &NG_TABLE_2 {
         assert!((fp / f - (1.0 - phi60.tan())).abs() < 0.001, "{d}");
     }
     // Eq. (8) with each row's own φ (μ = 1) differs except at 60° and 120°.
     for &(d, f, fp, ..) in &NG_TABLE_2 {
-        let pose = rig().pose(deg(d));
+        let pose = rig().pose(Angle::deg(d));
         let Friction::Force(correct) = statics::with_friction(&pose, f, 1.0).unwrap() else {
             panic!("no self-locking on Ng's rig")
         };
@@ -262,7 +258,7 @@ fn ng_table_2_f_prime_uses_one_rows_phi() {
         );
     }
     // At 90° eq. (8) gives 6.67 N against the printed 7.25 N.
-    let pose = rig().pose(deg(90.0));
+    let pose = rig().pose(Angle::deg(90.0));
     let f = statics::slider_force(&pose, NG_TORQUE).unwrap().unwrap();
     let Friction::Force(fp) = statics::with_friction(&pose, f, 1.0).unwrap() else {
         panic!()
@@ -278,14 +274,17 @@ fn ng_minimum_force_at_transmission_angle_90() {
     let mut best = (f64::INFINITY, 0.0);
     for k in 100..1700 {
         let d = k as f64 * 0.1;
-        let f = statics::slider_force(&rig().pose(deg(d)), NG_TORQUE)
+        let f = statics::slider_force(&rig().pose(Angle::deg(d)), NG_TORQUE)
             .unwrap()
             .unwrap();
         if f < best.0 {
             best = (f, d);
         }
     }
-    let beta = rig().pose(deg(best.1)).transmission_angle().to_degrees();
+    let beta = rig()
+        .pose(Angle::deg(best.1))
+        .transmission_angle()
+        .to_degrees();
     assert!((best.1 - 73.0).abs() < 2.0, "{best:?}");
     assert!(
         (beta - 90.0).abs() < 5.0 && (beta - 90.0).abs() > 0.5,

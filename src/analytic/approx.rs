@@ -7,7 +7,7 @@
 use crate::mechanism::Pose;
 
 /// An approximate value beside the exact one it stands for.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Approximation {
     /// The value of the approximate formula.
     pub approx: f64,
@@ -97,7 +97,7 @@ mod tests {
     #[test]
     fn approximations_are_exact_at_dead_centres_where_they_should_be() {
         let m = SliderCrank::in_line(1.0, 4.0).unwrap();
-        let p = m.pose(Angle::from_degrees(0.0).unwrap());
+        let p = m.pose(Angle::deg(0.0));
         assert_eq!(velocity(&p, 1.0).error(), 0.0);
         assert_eq!(rod_angular_acceleration(&p, 1.0).error(), 0.0);
         // eq. 3 at θ = 0: −(1 + 1/n) exactly.

@@ -14,7 +14,7 @@ pub const NG_TABLE_1: [(f64, f64); 6] = [
 ];
 
 /// A straight line y = slope · x + intercept fitted by least squares.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LineFit {
     /// Slope of the fitted line.
     pub slope: f64,

@@ -50,7 +50,11 @@ pub fn rpm_to_omega(rpm: f64) -> f64 {
 /// are d x_A/dt and d²x_A/dt²; the rod's are dφ/dt and d²φ/dt² (the seeds'
 /// sign; the rod's counter-clockwise angular velocity is −dφ/dt). At the dead
 /// centres the slider velocity is exactly zero for an in-line mechanism.
-#[derive(Debug, Clone, Copy, PartialEq)]
+///
+/// It serialises (serde) as a map of its field names to numbers, in the
+/// user's units and radians: the values as computed, which `analyze --json`
+/// writes in its own schema (the rod angle there in degrees).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Kinematics {
     /// Crank speed ω in rad/s.
     pub omega: f64,
@@ -109,6 +113,19 @@ impl Kinematics {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn serialises_with_its_field_names() {
+        let m = crate::SliderCrank::in_line(0.5, 3.0).unwrap();
+        let k = super::Kinematics::new(&m.pose(crate::Angle::deg(45.0)), 26.16).unwrap();
+        let json: serde_json::Value = serde_json::to_value(k).unwrap();
+        assert_eq!(json["velocity"].as_f64(), Some(k.velocity));
+        assert_eq!(json["rod_angle"].as_f64(), Some(k.rod_angle));
+        assert_eq!(json.as_object().unwrap().len(), 7);
+        let text = serde_json::to_string(&k).unwrap();
+        let back: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(back["omega"].as_f64(), Some(26.16));
+    }
+
     use super::*;
     use crate::{Angle, SliderCrank};
 
@@ -123,7 +140,7 @@ mod tests {
         let (r, n, omega) = (0.5, 6.0, 26.16);
         let m = SliderCrank::in_line(r, n * r).unwrap();
         for d in [0.0, 10.0, 45.0, 90.0, 135.0, 200.0, 300.0] {
-            let a = Angle::from_degrees(d).unwrap();
+            let a = Angle::deg(d);
             let k = Kinematics::new(&m.pose(a), omega).unwrap();
             let (s, c) = (a.sin(), a.cos());
             let q = (n * n - s * s).sqrt();
@@ -145,7 +162,7 @@ mod tests {
     #[test]
     fn omega_must_be_finite() {
         let m = SliderCrank::in_line(1.0, 3.0).unwrap();
-        let p = m.pose(Angle::from_degrees(10.0).unwrap());
+        let p = m.pose(Angle::deg(10.0));
         assert!(Kinematics::new(&p, f64::NAN).is_err());
     }
 
@@ -160,7 +177,7 @@ mod tests {
     fn huge_speeds_are_errors_not_infinities() {
         // Issue 9 (5): ω = 1e200 gave ±inf and NaN.
         let m = SliderCrank::in_line(1.0, 3.0).unwrap();
-        let p = m.pose(Angle::from_degrees(0.0).unwrap());
+        let p = m.pose(Angle::deg(0.0));
         let err = Kinematics::new(&p, 1e200).unwrap_err();
         assert!(
             err.to_string().starts_with("omega = 1e200 is out of range"),
@@ -168,12 +185,12 @@ mod tests {
         );
         // Within MAX_OMEGA but overflowing near the limit of assembly.
         let m = SliderCrank::in_line(1e99, 1e99 * (1.0 + 4.0 * f64::EPSILON)).unwrap();
-        let p = m.pose(Angle::from_degrees(1e-9).unwrap());
+        let p = m.pose(Angle::deg(1e-9));
         match Kinematics::new(&p, 1e100) {
             Ok(k) => assert!(k.acceleration.is_finite() && k.velocity.is_finite()),
             Err(e) => assert!(e.to_string().contains("exceed the largest number"), "{e}"),
         }
-        let k = Kinematics::new(&m.pose(Angle::from_degrees(0.0).unwrap()), 1e100).unwrap();
+        let k = Kinematics::new(&m.pose(Angle::deg(0.0)), 1e100).unwrap();
         assert!(k.acceleration.is_finite());
     }
 }

@@ -129,7 +129,8 @@ pub(crate) fn thrust(slider_force: f64, tan_phi: f64, angle: Angle) -> Result<f6
 }
 
 /// The slider force needed with friction in the guides.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
 pub enum Friction {
     /// F_p' = F_p (1 − μ |tan φ|) (Ng eq. 8, where tan φ > 0): friction helps
     /// hold the slider, so less force is needed.
@@ -187,7 +188,7 @@ mod tests {
     fn pose(d: f64) -> Pose {
         SliderCrank::in_line(0.025, 0.072)
             .unwrap()
-            .pose(Angle::from_degrees(d).unwrap())
+            .pose(Angle::deg(d))
     }
 
     #[test]
@@ -221,7 +222,7 @@ mod tests {
         // Issue 9 (6): T = 1e308 on r = 1e-100, l = 3e-100 at 45°:
         // OM ≈ 8.8e-101, not zero.
         let m = SliderCrank::in_line(1e-100, 3e-100).unwrap();
-        let p = m.pose(Angle::from_degrees(45.0).unwrap());
+        let p = m.pose(Angle::deg(45.0));
         assert!(om(&p) > 8e-101);
         let err = slider_force(&p, 1e308).unwrap_err();
         assert!(
@@ -236,7 +237,7 @@ mod tests {
         // θ = 1e-230° on r = 1e-100: OM = r (sin θ + cos θ tan φ) ≈ 2.3e-332
         // is below the smallest f64 and computes as 0, but OM / r does not.
         let m = SliderCrank::in_line(1e-100, 3e-100).unwrap();
-        let p = m.pose(Angle::from_degrees(1e-230).unwrap());
+        let p = m.pose(Angle::deg(1e-230));
         assert_eq!(om(&p), 0.0);
         let err = slider_force(&p, 1.0).unwrap_err().to_string();
         assert!(err.contains("θ = 1e-230°"), "{err}");
@@ -246,7 +247,7 @@ mod tests {
         let expected = 1e-30 / 1e-100 / (1e-230f64.to_radians() * (1.0 + 1.0 / 3.0));
         assert!((f / expected - 1.0).abs() < 1e-12, "{f} {expected}");
         // At the dead centre itself OM / r is zero too.
-        let p = m.pose(Angle::from_degrees(180.0).unwrap());
+        let p = m.pose(Angle::deg(180.0));
         assert_eq!(slider_force(&p, 1e-30), Ok(None));
     }
 

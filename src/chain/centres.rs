@@ -312,16 +312,12 @@ mod tests {
     use crate::chain::{Assembly, CylindricChain, QuadricChain};
     use crate::{Angle, SliderCrank};
 
-    fn deg(d: f64) -> Angle {
-        Angle::from_degrees(d).unwrap()
-    }
-
     #[test]
     fn straight_slot_centres_match_the_existing_constructions() {
         use crate::construct::{InstantCentre, VelocityLine, VirtualCentres};
         let m = SliderCrank::new(1.0, 3.0, 0.3).unwrap();
         for d in [0.0, 30.0, 90.0, 200.0, 270.0] {
-            let pose = m.pose(deg(d));
+            let pose = m.pose(Angle::deg(d));
             let old = VirtualCentres::construct(
                 &pose,
                 &InstantCentre::construct(&pose),
@@ -348,7 +344,7 @@ mod tests {
         let m = QuadricChain::new(1.0, 3.0, 2.5, 3.2).unwrap();
         for d in (0..360).step_by(15) {
             for mode in [Assembly::Open, Assembly::Crossed] {
-                let c = ChainCentres::of_quadric(&m.pose(deg(d as f64), mode).unwrap());
+                let c = ChainCentres::of_quadric(&m.pose(Angle::deg(d as f64), mode).unwrap());
                 for r in c.kennedy_residuals() {
                     assert!(r.abs() < 1e-14, "{d} {mode:?}: {r}");
                 }
@@ -362,7 +358,7 @@ mod tests {
         for rho in [2.0, -2.0, 7.0, 1e6] {
             let slot = CylindricChain::new(m, rho).unwrap();
             for d in (0..360).step_by(10) {
-                let p = slot.pose(deg(d as f64));
+                let p = slot.pose(Angle::deg(d as f64));
                 let s = SlotConstruction::construct(&p);
                 let tol = 1e-12 * (1.0 + p.arc_acceleration().abs());
                 assert!((s.arc_rate_from_e().unwrap() - p.arc_rate()).abs() < tol);

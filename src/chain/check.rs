@@ -11,7 +11,7 @@ use crate::geom::{Circle, CircleIntersection, Intersection, Point, cross};
 /// The worst scaled difference of one quantity over a sweep: its name, the
 /// difference, the crank angle in degrees where it occurred, and the number
 /// of poses where both values existed.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct ChainCheckRow {
     /// What is compared, and with what.
     pub name: &'static str,

@@ -318,7 +318,7 @@ impl CylindricPose {
 /// The difference between the curved and the straight slot at one radius:
 /// the worst over the turn of |σ − x_A| / r, |dσ/dθ − dx_A/dθ| / r and
 /// |d²σ/dθ² − d²x_A/dθ²| / r.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct ConvergenceRow {
     /// The slot radius ρ.
     pub radius: f64,
@@ -371,10 +371,6 @@ pub fn slot_convergence(
 mod tests {
     use super::*;
 
-    fn deg(d: f64) -> Angle {
-        Angle::from_degrees(d).unwrap()
-    }
-
     #[test]
     fn the_radius_must_let_the_crank_turn() {
         let m = SliderCrank::new(1.0, 3.0, 0.5).unwrap();
@@ -396,7 +392,10 @@ mod tests {
         let m = SliderCrank::new(1.0, 1.05, 0.04).unwrap();
         let slot = CylindricChain::straight(m);
         for d in 0..360 {
-            let (p, q) = (slot.pose(deg(d as f64)), m.pose(deg(d as f64)));
+            let (p, q) = (
+                slot.pose(Angle::deg(d as f64)),
+                m.pose(Angle::deg(d as f64)),
+            );
             assert_eq!(p.arc_position(), q.position(), "{d}");
             assert_eq!(p.a(), q.a(), "{d}");
             assert_eq!(p.slot_angle(), 0.0);
@@ -419,7 +418,7 @@ mod tests {
                 panic!()
             };
             for d in (0..360).step_by(7) {
-                let p = slot.pose(deg(d as f64));
+                let p = slot.pose(Angle::deg(d as f64));
                 assert!(((p.a() - o).norm() - rho.abs()).abs() < 1e-13 * rho.abs());
                 assert!(((p.a() - p.b()).norm() - 3.0).abs() < 1e-14);
             }

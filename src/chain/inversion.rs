@@ -159,7 +159,7 @@ impl InvertedChain {
 /// Angular velocities and accelerations of the four links (a, b, c, d in
 /// that order) relative to the fixed link, and the sliding of c on d, for
 /// the driver turning at constant speed.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LinkMotion {
     /// Angular velocities (counter-clockwise, rad/s) of a, b, c, d.
     pub velocity: [f64; 4],
@@ -330,8 +330,8 @@ mod tests {
         let m = SliderCrank::new(1.0, 3.0, 0.2).unwrap();
         for inv in Inversion::ALL {
             let chain = InvertedChain::new(m, inv);
-            let first = chain.pose(Angle::from_degrees(10.0).unwrap());
-            let later = chain.pose(Angle::from_degrees(130.0).unwrap());
+            let first = chain.pose(Angle::deg(10.0));
+            let later = chain.pose(Angle::deg(130.0));
             assert_eq!(first.link_rate(inv.fixed()), 0.0);
             // The pins of the fixed link do not move in its frame.
             let pins: &[(Link, Link)] = match inv {

@@ -37,6 +37,26 @@ pub enum Assembly {
 }
 
 impl Assembly {
+    /// The name on the command line: `open`, `crossed`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Assembly::Open => "open",
+            Assembly::Crossed => "crossed",
+        }
+    }
+
+    /// The assembly mode of that name; the error lists the names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        [Assembly::Open, Assembly::Crossed]
+            .into_iter()
+            .find(|a| a.name() == name)
+            .ok_or_else(|| {
+                Error::Parse(format!(
+                    "unknown assembly '{name}': expected open or crossed"
+                ))
+            })
+    }
+
     fn sign(self) -> f64 {
         match self {
             Assembly::Open => 1.0,
@@ -280,7 +300,7 @@ impl QuadricChain {
 /// Angular velocities and accelerations of the coupler and lever per unit
 /// crank rate, for a crank turning at constant speed (counter-clockwise
 /// positive; multiply velocities by ω and accelerations by ω²).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct LinkRates {
     /// Coupler b: dλ_b/dθ.
     pub coupler_velocity: f64,
@@ -508,10 +528,6 @@ fn describe(chain: &QuadricChain) -> String {
 mod tests {
     use super::*;
 
-    fn deg(d: f64) -> Angle {
-        Angle::from_degrees(d).unwrap()
-    }
-
     #[test]
     fn validation_refuses_chains_that_cannot_move() {
         assert!(QuadricChain::new(1.0, 2.0, 3.0, 6.0).is_err());
@@ -544,7 +560,7 @@ mod tests {
         let cos = (9.0 + 20.25 - 25.0) / (2.0 * 3.0 * 4.5);
         assert!((r.upper() - f64::acos(cos)).abs() < 1e-15);
         assert_eq!(r.lower(), 0.0);
-        assert!(m.pose(deg(170.0), Assembly::Open).is_err());
+        assert!(m.pose(Angle::deg(170.0), Assembly::Open).is_err());
         let at = Angle::from_radians(r.upper()).unwrap();
         let toggle = m.pose(at, Assembly::Open).unwrap();
         assert!(toggle.is_toggle() && toggle.rates().is_none());
@@ -559,18 +575,18 @@ mod tests {
     fn parallelogram_open_branch_translates_the_coupler() {
         let m = QuadricChain::new(1.0, 3.0, 1.0, 3.0).unwrap();
         for d in [0.0, 30.0, 90.0, 179.0] {
-            let p = m.pose(deg(d), Assembly::Open).unwrap();
+            let p = m.pose(Angle::deg(d), Assembly::Open).unwrap();
             let r = p.rates().unwrap();
             assert!(r.coupler_velocity.abs() < 1e-15, "{d}: {r:?}");
             assert!((r.lever_velocity - 1.0).abs() < 1e-15, "{d}");
         }
         // At θ = 180° the parallelogram is the crossed branch (the side of
         // the diagonal changes as the chain passes the line).
-        let p = m.pose(deg(180.0), Assembly::Crossed).unwrap();
+        let p = m.pose(Angle::deg(180.0), Assembly::Crossed).unwrap();
         assert_eq!(p.rates().unwrap().coupler_velocity, 0.0);
         // The anti-parallelogram at θ = 0: 2a/(a − d) from the node equation.
         let x = m
-            .pose(deg(0.0), Assembly::Crossed)
+            .pose(Angle::deg(0.0), Assembly::Crossed)
             .unwrap()
             .rates()
             .unwrap();

@@ -359,7 +359,11 @@ fn indented(text: &str) -> String {
 }
 
 fn pretty(value: &Value) -> Result<String> {
-    serde_json::to_string_pretty(value).map_err(|e| Error::Io(e.to_string()))
+    serde_json::to_string_pretty(value).map_err(|e| Error::Io {
+        message: e.to_string(),
+        path: None,
+        source: Some(std::sync::Arc::new(e.into())),
+    })
 }
 
 /// Runs the subcommand. Rows are computed twice, never held: a first

@@ -262,7 +262,13 @@ pub fn analyze(
     for d in spec.iter() {
         one(d)?;
     }
-    let pretty = |v: &Value| serde_json::to_string_pretty(v).map_err(|e| Error::Io(e.to_string()));
+    let pretty = |v: &Value| {
+        serde_json::to_string_pretty(v).map_err(|e| Error::Io {
+            message: e.to_string(),
+            path: None,
+            source: Some(std::sync::Arc::new(e.into())),
+        })
+    };
     if as_json {
         if !spec.is_list() {
             for d in spec.iter() {

@@ -22,7 +22,7 @@ pub struct FigureArgs {
     /// inversion-2-rotating-block, inversion-3-oscillating-cylinder,
     /// inversion-4-hand-pump, slot-convergence
     #[arg(value_name = "NAME")]
-    pub name: String,
+    pub name: FigureName,
     /// Crank radius r, in the length unit (--unit) [default: the figure's
     /// own, 0.5 ft for the §35 engine, 25 mm for Ng's rig]
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
@@ -48,12 +48,12 @@ pub struct FigureArgs {
     /// Drawing style: textbook (black ink) or handout (colour) [default:
     /// textbook]
     #[arg(long, value_name = "STYLE")]
-    pub style: Option<String>,
+    pub style: Option<Style>,
     /// Face of the text, bundled (no system fonts needed):
     /// new-computer-modern (the look of LaTeX books) or libertinus-serif
     /// [default: new-computer-modern]
     #[arg(long, value_name = "NAME")]
-    pub font: Option<String>,
+    pub font: Option<Font>,
     /// Measured data, CSV with a header line: ng-fig-8-forces (columns
     /// angle, force; default examples/ng-experiment.csv, Ng's F'),
     /// ng-fig-7-calibration (force, strain; default Ng's Table 1),
@@ -64,7 +64,7 @@ pub struct FigureArgs {
     /// through zero), intercept (ordinary least squares) or both
     /// [default: both]
     #[arg(long, value_name = "FIT")]
-    pub fit: Option<String>,
+    pub fit: Option<Fit>,
     #[command(flatten)]
     pub units: UnitArgs,
     /// Letters of a mechanism figure: textbook (C, B, A, D, E) or ng (O,
@@ -156,32 +156,32 @@ fn options(args: &FigureArgs, name: FigureName) -> Result<FigureOptions> {
         Some(path) => Some(read_text(path, MAX_DATA_BYTES, "data file")?),
         None => None,
     };
-    Ok(FigureOptions {
-        mechanism,
-        omega,
-        angle: args.angle.map(Angle::from_degrees).transpose()?,
-        style: args.style.as_deref().map(Style::from_name).transpose()?,
-        font: args.font.as_deref().map(str::parse::<Font>).transpose()?,
-        layers,
-        data,
-        fit: args.fit.as_deref().map(Fit::from_name).transpose()?,
-        length_unit: args.units.length.clone(),
-        force_unit: args.units.force.clone(),
-        notation: args.notation,
-        mirror: match (args.mirror, args.no_mirror) {
-            (true, _) => Some(true),
-            (_, true) => Some(false),
-            _ => None,
-        },
-        width: args.width,
-        height: args.height,
-        title: args.title.clone(),
-    })
+    let mut options = FigureOptions::default();
+    options.mechanism = mechanism;
+    options.omega = omega;
+    options.angle = args.angle.map(Angle::from_degrees).transpose()?;
+    options.style = args.style;
+    options.font = args.font;
+    options.layers = layers;
+    options.data = data;
+    options.fit = args.fit;
+    options.length_unit = args.units.length.clone();
+    options.force_unit = args.units.force.clone();
+    options.notation = args.notation;
+    options.mirror = match (args.mirror, args.no_mirror) {
+        (true, _) => Some(true),
+        (_, true) => Some(false),
+        _ => None,
+    };
+    options.width = args.width;
+    options.height = args.height;
+    options.title = args.title.clone();
+    Ok(options)
 }
 
 /// Runs the subcommand: SVG on standard output, or the file written.
 pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
-    let name = FigureName::from_name(&args.name)?;
+    let name = args.name;
     let to = destination(args.out.as_ref())?;
     let options = options(args, name)?;
     let figure = name.figure(&options).map_err(|e| match (&args.data, e) {

@@ -76,9 +76,10 @@ pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
         // The file being made or written when the error came (a write
         // error names it already).
         Err(e) => Err(match names.get(made) {
-            Some(name) if !e.to_string().contains(name.as_str()) => {
-                Error::Io(format!("gallery: {name}: {}", e.one_line()))
-            }
+            Some(name) if !e.to_string().contains(name.as_str()) => Error::io_about(
+                format!("gallery: {name}: {}", e.one_line()),
+                &dir.join(name),
+            ),
             _ => e,
         }),
         Ok(()) => {
@@ -103,7 +104,8 @@ fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
             Ok(_) => "differs",
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => "is missing",
             Err(e) => {
-                return Err(Error::Io(format!("cannot read {}: {e}", path.display())));
+                let message = format!("cannot read {}: {e}", path.display());
+                return Err(Error::io_at(message, &path, e));
             }
         };
         differ += 1;
@@ -132,15 +134,19 @@ fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
 fn prepare(dir: &Path) -> Result<()> {
     match std::fs::metadata(dir) {
         Ok(m) if m.is_dir() => Ok(()),
-        Ok(_) => Err(Error::Io(format!(
-            "cannot write the gallery into {}: it exists and is not a directory",
-            dir.display()
-        ))),
+        Ok(_) => Err(Error::io_about(
+            format!(
+                "cannot write the gallery into {}: it exists and is not a directory",
+                dir.display()
+            ),
+            dir,
+        )),
         Err(_) => std::fs::create_dir_all(dir).map_err(|e| {
-            Error::Io(format!(
+            let message = format!(
                 "cannot create the gallery's directory {}: {e}",
                 dir.display()
-            ))
+            );
+            Error::io_at(message, dir, e)
         }),
     }
 }

@@ -52,7 +52,11 @@ impl Stdout {
     fn check(&mut self, result: std::io::Result<()>) -> Result<()> {
         result.map_err(|e| {
             self.failed.get_or_insert(e.kind());
-            Error::Io(format!("cannot write to standard output: {e}"))
+            Error::Io {
+                message: format!("cannot write to standard output: {e}"),
+                path: None,
+                source: Some(std::sync::Arc::new(e)),
+            }
         })
     }
 }

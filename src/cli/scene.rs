@@ -24,12 +24,12 @@ pub struct SceneArgs {
         value_name = "NAME",
         conflicts_with_all = ["file", "font", "length_unit", "force_unit", "out"]
     )]
-    pub print_default: Option<String>,
+    pub print_default: Option<FigureName>,
     /// Face of the text, over the file's `font` key: new-computer-modern
     /// (the look of LaTeX books) or libertinus-serif [default: the file's,
     /// else new-computer-modern]
     #[arg(long, value_name = "NAME")]
-    pub font: Option<String>,
+    pub font: Option<Font>,
     /// Name of the length unit, over the file's `[units] length` (a name
     /// only, no number is converted) [default: the file's, else its
     /// figure's, else ft]
@@ -52,7 +52,7 @@ pub struct SceneArgs {
 pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
     let to = destination(args.out.as_ref())?;
     if let Some(name) = &args.print_default {
-        return out.text(&FigureName::from_name(name)?.scene_toml());
+        return out.text(&name.scene_toml());
     }
     let path = args
         .file
@@ -61,7 +61,7 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
     let text = read_text(path, MAX_SCENE_BYTES, "scene file")?;
     let file = SceneFile::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", path.display())))?;
-    let font = args.font.as_deref().map(str::parse::<Font>).transpose()?;
+    let font = args.font;
     let figure = match file {
         SceneFile::Mechanism(mut scene) => {
             if let Some(f) = font {

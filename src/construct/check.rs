@@ -6,7 +6,9 @@ use crate::angle::Angle;
 use crate::mechanism::{Pose, SliderCrank};
 
 /// A quantity that a construction gives and the analytic core computes.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, serde::Serialize)]
+#[serde(rename_all = "kebab-case")]
+#[non_exhaustive]
 pub enum Quantity {
     /// Slider velocity from CE (E, Fig. 63), scaled by rω.
     Velocity,
@@ -47,7 +49,7 @@ impl Quantity {
 }
 
 /// One quantity at one pose, as θ-rates (ds/dθ, d²s/dθ², dφ/dθ, d²φ/dθ²).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct CheckRow {
     /// What is compared.
     pub quantity: Quantity,
@@ -170,7 +172,7 @@ pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
 }
 
 /// The worst scaled error of each quantity over a sweep.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
 pub struct SweepReport {
     /// Poses checked.
     pub poses: usize,

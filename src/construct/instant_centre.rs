@@ -39,9 +39,12 @@ impl InstantCentre {
         self.d
     }
 
-    /// dφ/dθ read off the construction: |CB / BD| with the sign of the rod's
-    /// turning (rod angular velocity = ω · CB / BD, textbook §37); 0 when D
-    /// is at infinity.
+    /// dφ/dθ, the derivative of the rod's obliquity φ against the crank
+    /// angle θ (dimensionless), read off the construction: |CB / BD| with
+    /// the sign of the rod's turning (rod angular velocity dφ/dt = ω dφ/dθ,
+    /// of magnitude ω · CB / BD, textbook §37); 0 when D is at infinity.
+    /// The counterpart of
+    /// [`Pose::obliquity_rate`](crate::Pose::obliquity_rate).
     pub fn rod_angular_velocity_ratio(&self) -> f64 {
         // The rod turns about D: ω (B − C) = Ω (B − D) with Ω the rod's
         // counter-clockwise rate, and dφ/dt = −Ω. B − D = (B − C) − (D − C).

@@ -114,7 +114,7 @@ mod tests {
     use crate::SliderCrank;
 
     fn line(m: &SliderCrank, degrees: f64) -> (Pose, TorqueLine) {
-        let pose = m.pose(Angle::from_degrees(degrees).unwrap());
+        let pose = m.pose(Angle::deg(degrees));
         let tl = TorqueLine::construct(&pose, &VelocityLine::construct(&pose));
         (pose, tl)
     }

@@ -34,13 +34,18 @@ impl VelocityLine {
         self.e
     }
 
-    /// Signed CE: positive when E is above C. Equals −ds/dθ, so the slider
-    /// velocity is −ω · CE and V_p / V_c = CE / CB in magnitude.
+    /// The signed length CE, in the mechanism's length unit: positive when
+    /// E is above C. Equals −ds/dθ (s = x_A the slider's position, θ the
+    /// crank angle), so the slider velocity is ds/dt = −ω · CE and
+    /// V_p / V_c = CE / CB in magnitude.
     pub fn ce(&self) -> f64 {
         self.e.y
     }
 
-    /// ds/dθ read off the construction, −CE.
+    /// ds/dθ, the derivative of the slider's position s = x_A against the
+    /// crank angle θ (length per rad), read off the construction: −CE. Not a
+    /// ratio of two velocities: the slider velocity per ω (ds/dt = ω ds/dθ),
+    /// the counterpart of [`Pose::position_rate`](crate::Pose::position_rate).
     pub fn velocity_ratio(&self) -> f64 {
         -self.e.y
     }

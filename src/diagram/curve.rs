@@ -7,8 +7,11 @@ use crate::figure::PageFromWorld;
 use crate::geom::{Frame, Point, Vector, cross};
 use std::ops::RangeInclusive;
 
-/// The default tolerance: 0.01 page units (px), the bound scenes and
-/// figures ask of their curves unless told otherwise (docs/design.md §6).
+/// The default tolerance of every traced curve: the largest distance, 0.01
+/// page units (px), allowed between a drawn curve and the exact one. Scenes,
+/// the named figures and [`TraceOptions::DEFAULT`] ask it of their curves
+/// unless told otherwise (docs/design.md §6); the crate's one such
+/// constant.
 pub const DEFAULT_TOLERANCE: f64 = 0.01;
 
 /// The tolerance to trace a curve to so that its path, once written with
@@ -66,8 +69,11 @@ pub enum Method {
     Uniform(usize),
 }
 
-/// The tolerance and the limits of a trace.
+/// The tolerance and the limits of a trace. Limits may be added in later
+/// versions: start from [`TraceOptions::DEFAULT`] (or
+/// [`TraceOptions::with_tolerance`]) and set the fields wanted.
 #[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
 pub struct TraceOptions {
     /// The largest distance, in page units, allowed between the path and the
     /// exact curve ([`DEFAULT_TOLERANCE`]). Must be finite and positive.

@@ -89,7 +89,7 @@ mod tests {
         let m = SliderCrank::in_line(0.5, 3.0).unwrap();
         let curve = Locus::new(m, LocusKind::PolarVelocity);
         for d in [0.0, 30.0, 45.0, 90.0, 200.0] {
-            let angle = Angle::from_degrees(d).unwrap();
+            let angle = Angle::deg(d);
             let ce = VelocityLine::construct(&m.pose(angle)).ce();
             let (p, _) = curve.eval(d).unwrap();
             let expected = Point::new(ce * angle.cos(), ce * angle.sin());

@@ -120,7 +120,11 @@ impl Subpath {
     }
 }
 
-/// A list of subpaths: what a curve becomes once traced and clipped.
+/// A list of subpaths: what a curve becomes once traced and clipped, in
+/// page coordinates (or in world coordinates through
+/// [`Path::transform`]), each subpath a start and its segments. Not the
+/// path a figure draws: that is [`crate::figure::Path`], in a panel's world
+/// coordinates, which [`Path::to_figure_path`] makes of this one.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Path {
     subpaths: Vec<Subpath>,

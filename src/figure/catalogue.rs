@@ -14,6 +14,7 @@ pub const NG_TORQUE: f64 = 9.81 * 27.0;
 
 /// A figure of the seeds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
 pub enum FigureName {
     /// Textbook Fig. 62: the crank angle θ and the displacement x of the
     /// cross-head from mid-stroke.

@@ -9,6 +9,7 @@ use serde_json::{Map, Value};
 /// What a primitive is, which fixes how it is drawn (line weight, dash,
 /// colour in the handout style) and its stacking order.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[non_exhaustive]
 pub enum Role {
     /// The fixed link: hatched ground, guides, bearings.
     Frame,
@@ -102,6 +103,7 @@ pub enum Dash {
 /// What a line stands for, where colour can say it (the handout style):
 /// one hue for velocity, one for acceleration, one for forces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Hue {
     /// Velocity constructions and arrows (E, D, CE, v_c, v_p, ω, Ω).
     Velocity,
@@ -113,6 +115,7 @@ pub enum Hue {
 
 /// The symbol of a data point ([`Shape::Marker`]).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Symbol {
     /// A filled circle.
     Disc,
@@ -132,6 +135,7 @@ pub enum Symbol {
 /// symbols (pins, arrowheads, hatch strokes, marks, text) are in page units,
 /// so they look the same at every scale.
 #[derive(Debug, Clone, PartialEq)]
+#[non_exhaustive]
 pub enum Shape {
     /// A path of lines and cubic Béziers (a fitted curve).
     Path(Path),

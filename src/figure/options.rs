@@ -49,7 +49,19 @@ impl Fit {
 /// title are taken by every figure: a figure that writes no force (or no
 /// length) has nowhere to name that unit, and its metadata keeps the
 /// length unit.
+///
+/// Options may be added in later versions: start from
+/// [`FigureOptions::default`] and set the fields wanted.
+///
+/// ```
+/// use slider_crank::{FigureName, figure::{FigureOptions, Fit}};
+/// let mut options = FigureOptions::default();
+/// options.fit = Some(Fit::Origin);
+/// let figure = FigureName::NgFig7Calibration.figure(&options)?;
+/// # Ok::<(), slider_crank::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq, Default)]
+#[non_exhaustive]
 pub struct FigureOptions {
     /// The mechanism (figures of the textbook: the §35 engine, r = 0.5 ft,
     /// l = 3 ft; Ng's: r = 25 mm, l = 72 mm).

@@ -9,6 +9,7 @@ use serde::Deserialize;
 /// How a figure is drawn.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "kebab-case")]
+#[non_exhaustive]
 pub enum Style {
     /// Black ink on white: thick links, thin construction lines, dashed
     /// auxiliaries, italic serif letters.

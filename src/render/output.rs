@@ -3,6 +3,7 @@
 use crate::error::{Error, Result};
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 /// Most symbolic links followed from one output path (as the kernel's
 /// `ELOOP` limit).
@@ -26,7 +27,11 @@ pub enum OutputTarget {
 /// Errors: a directory, a loop of links (more than 40), or a link that
 /// cannot be read.
 pub fn output_target(path: &Path) -> Result<OutputTarget> {
-    let fail = |why: String| Error::Io(format!("cannot write {}: {why}", path.display()));
+    let fail = |why: String, source: Option<std::io::Error>| Error::Io {
+        message: format!("cannot write {}: {why}", path.display()),
+        path: Some(path.to_path_buf()),
+        source: source.map(Arc::new),
+    };
     let mut current = path.to_path_buf();
     for _ in 0..MAX_LINKS {
         let meta = match std::fs::symlink_metadata(&current) {
@@ -36,7 +41,7 @@ pub fn output_target(path: &Path) -> Result<OutputTarget> {
         };
         let kind = meta.file_type();
         if kind.is_symlink() {
-            let link = std::fs::read_link(&current).map_err(|e| fail(e.to_string()))?;
+            let link = std::fs::read_link(&current).map_err(|e| fail(e.to_string(), Some(e)))?;
             // A descriptor link (/dev/stdout → /proc/self/fd/1 → pipe:[…])
             // names no file to replace: write through it.
             if link.starts_with("/proc") || link.starts_with("/dev/fd") {
@@ -47,14 +52,14 @@ pub fn output_target(path: &Path) -> Result<OutputTarget> {
                 _ => link,
             };
         } else if kind.is_dir() {
-            return Err(fail("it is a directory".into()));
+            return Err(fail("it is a directory".into(), None));
         } else if kind.is_file() {
             return Ok(OutputTarget::Replace(current));
         } else {
             return Ok(OutputTarget::Direct(path.to_path_buf()));
         }
     }
-    Err(fail(format!("more than {MAX_LINKS} symbolic links")))
+    Err(fail(format!("more than {MAX_LINKS} symbolic links"), None))
 }
 
 /// Writes `bytes` to `path` as [`output_target`] decides.
@@ -67,7 +72,11 @@ pub fn output_target(path: &Path) -> Result<OutputTarget> {
 /// readable by all, 0644). A device or FIFO is written directly; a write
 /// error there (`/dev/full`) is an error.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
-    let fail = |e: std::io::Error| Error::Io(format!("cannot write {}: {e}", path.display()));
+    let fail = |e: std::io::Error| Error::Io {
+        message: format!("cannot write {}: {e}", path.display()),
+        path: Some(path.to_path_buf()),
+        source: Some(Arc::new(e)),
+    };
     match output_target(path)? {
         OutputTarget::Direct(p) => {
             let mut file = std::fs::OpenOptions::new()

@@ -66,9 +66,11 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
         tiny_skia::Transform::from_scale(scale, scale),
         &mut pixmap.as_mut(),
     );
-    pixmap
-        .encode_png()
-        .map_err(|e| Error::Io(format!("cannot encode PNG: {e}")))
+    pixmap.encode_png().map_err(|e| Error::Io {
+        message: format!("cannot encode PNG: {e}"),
+        path: None,
+        source: None,
+    })
 }
 
 #[cfg(test)]

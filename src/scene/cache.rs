@@ -158,7 +158,7 @@ mod tests {
     #[test]
     fn each_construction_is_computed_once_and_kisch_needs_no_d() {
         let m = SliderCrank::in_line(0.5, 3.0).unwrap();
-        let c = Constructions::new(m.pose(Angle::from_degrees(45.0).unwrap()));
+        let c = Constructions::new(m.pose(Angle::deg(45.0)));
         assert_eq!(c.evaluations().total(), 0);
         c.kisch();
         c.kisch();

@@ -7,6 +7,7 @@ use serde::Deserialize;
 /// and nothing more.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Deserialize)]
 #[serde(rename_all = "kebab-case")]
+#[non_exhaustive]
 pub enum Layer {
     /// Frame, crank circle, crank, rod, slider block between guides, pins.
     /// Computes no construction.

@@ -32,9 +32,7 @@ use crate::figure::Style;
 use crate::figure::{FigureName, FigureOptions, PageLength, PageUnit, Title};
 use crate::{Angle, SliderCrank, Unit, Units};
 
-/// Default drawing tolerance of curves, in page units: the curve
-/// engine's (docs/design.md §6).
-pub use crate::diagram::DEFAULT_TOLERANCE;
+use crate::diagram::DEFAULT_TOLERANCE;
 
 /// A page: its size and the margin kept clear on every side, in page units
 /// (SVG user units, 1/96 in), and the unit the SVG gives its size in.

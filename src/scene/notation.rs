@@ -6,6 +6,7 @@ use serde::Deserialize;
 /// Ng's O, C, P, I, M for the same points.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "kebab-case")]
+#[non_exhaustive]
 pub enum Notation {
     /// Crank centre C, crank pin B, cross-head A, D, E, F, G, H.
     #[default]
@@ -77,20 +78,6 @@ impl Notation {
     /// The id of the line between two named points (`line-CE`, `line-OM`).
     pub(crate) fn line(&self, p: Named, q: Named) -> String {
         format!("line-{}{}", self.letter(p), self.letter(q))
-    }
-}
-
-impl std::str::FromStr for Notation {
-    type Err = crate::error::Error;
-
-    fn from_str(s: &str) -> crate::error::Result<Self> {
-        Notation::from_name(s)
-    }
-}
-
-impl std::fmt::Display for Notation {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
     }
 }
 

@@ -315,7 +315,7 @@ mod tests {
         use crate::construct::CouplerPoint;
         use crate::figure::Title;
         use crate::{Angle, Page, SliderCrank, Style, Units};
-        let angles = [30.0, 120.0, 212.5].map(|d| Angle::from_degrees(d).unwrap());
+        let angles = [30.0, 120.0, 212.5].map(Angle::deg);
         let page = Page::sized("160mm".parse().unwrap(), "4.5in".parse().unwrap(), 12.5).unwrap();
         let scene = Scene::new(SliderCrank::new(25.0, 72.0, -3.5).unwrap(), angles[0])
             .named("a \"quoted\" name")

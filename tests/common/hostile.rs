@@ -72,10 +72,8 @@ pub fn scene_toml(text: &str) {
 /// CSV text as `--data` of one of [`DATA_FIGURES`].
 pub fn csv_data(which: u8, text: &str) {
     let name = DATA_FIGURES[which as usize % DATA_FIGURES.len()];
-    let options = FigureOptions {
-        data: Some(text.to_string()),
-        ..FigureOptions::default()
-    };
+    let mut options = FigureOptions::default();
+    options.data = Some(text.to_string());
     check_figure(FigureName::from_name(name).unwrap().figure(&options));
 }
 
@@ -118,12 +116,10 @@ pub fn numbers(
         (None, Some(omega), None),
     ];
     for (mechanism, omega, angle) in tries {
-        let options = FigureOptions {
-            mechanism,
-            omega,
-            angle,
-            ..FigureOptions::default()
-        };
+        let mut options = FigureOptions::default();
+        options.mechanism = mechanism;
+        options.omega = omega;
+        options.angle = angle;
         let figure = name.figure(&options);
         if !matches!(&figure, Err(e) if e.to_string().contains("does not use")) {
             return check_figure(figure);
