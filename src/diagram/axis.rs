@@ -193,9 +193,8 @@ impl Axis {
         Ok(axis)
     }
 
-    /// A logarithmic axis covering `[lo, hi]` ([`MIN_LOG_VALUE`] ≤ lo ≤
-    /// hi ≤ [`MAX_AXIS_VALUE`]), widened outwards to whole powers of ten;
-    /// at most [`MAX_DECADES`] decades.
+    /// A logarithmic axis covering `[lo, hi]` (1e-300 ≤ lo ≤ hi ≤ 1e300),
+    /// widened outwards to whole powers of ten; at most 100 decades.
     pub fn log(title: &str, lo: f64, hi: f64) -> Result<Self> {
         let lo = axis_value("axis minimum", lo)?;
         let hi = axis_value("axis maximum", hi)?;

@@ -62,7 +62,8 @@ pub fn output_target(path: &Path) -> Result<OutputTarget> {
     Err(fail(format!("more than {MAX_LINKS} symbolic links"), None))
 }
 
-/// Writes `bytes` to `path` as [`output_target`] decides.
+/// Writes `bytes` to `path` as the kind of file there decides (a device
+/// or FIFO in place, a symbolic link's target, a regular file whole).
 ///
 /// A regular file is written through a temporary file in the same
 /// directory, renamed over the target only when complete: a reader never
