@@ -518,7 +518,7 @@ impl TableName {
             ),
             TableName::Forces => forces(
                 &SliderCrank::in_line(25.0, 72.0)?,
-                crate::figure::NG_TORQUE,
+                crate::analytic::statics::NG_TORQUE,
                 1.0,
                 &every(10, 160, 10),
                 2,

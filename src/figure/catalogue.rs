@@ -8,9 +8,7 @@ use crate::error::{Error, Result};
 use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{Angle, SliderCrank, Units};
 
-/// Ng's crank torque implied by his Table 2 (1 kg × 9.81 m/s² × 27 mm), in
-/// N·mm.
-pub const NG_TORQUE: f64 = 9.81 * 27.0;
+use crate::analytic::statics::NG_TORQUE;
 
 /// A figure of the seeds.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]

@@ -20,7 +20,6 @@ mod text;
 mod transform;
 
 pub use catalogue::FigureName;
-pub(crate) use catalogue::NG_TORQUE;
 pub(crate) use diagrams::unused as unused_option;
 pub(crate) use diagrams::uses as diagram_uses;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};

@@ -10,9 +10,9 @@
 
 use super::{Ctx, PER_DEGREE, Sheet, Table, short, sig};
 use crate::analytic::statics;
+use crate::analytic::statics::NG_TORQUE;
 use crate::diagram::{Axis, Curve, Plot};
 use crate::error::{Error, Result};
-use crate::figure::catalogue::NG_TORQUE;
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 use crate::{Angle, Pose};
