@@ -287,3 +287,29 @@ mod tests {
         assert_eq!(e.to_string(), "unknown variant `a\\nb\\r`");
     }
 }
+
+/// A number as text shows it (messages, titles, a given value echoed):
+/// plainly in the usual range, in exponent form when very large or very
+/// small (`1e-300`, not 300 zeros; `1e308`, not 309 digits).
+pub fn plain(x: f64) -> String {
+    let a = x.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) {
+        format!("{x:e}")
+    } else {
+        format!("{x}")
+    }
+}
+
+#[cfg(test)]
+mod plain_tests {
+    use super::plain;
+
+    #[test]
+    fn numbers_in_messages_are_plain_or_in_exponent_form() {
+        assert_eq!(plain(1e-100), "1e-100");
+        assert_eq!(plain(-1e308), "-1e308");
+        assert_eq!(plain(0.025), "0.025");
+        assert_eq!(plain(-0.0), "-0");
+        assert_eq!(plain(f64::NAN), "NaN");
+    }
+}

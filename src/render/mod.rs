@@ -15,10 +15,11 @@ mod png;
 mod sizes;
 mod svg;
 
+pub use crate::error::plain;
 #[cfg(any(feature = "png", feature = "pdf"))]
 pub use fonts::font_database;
 pub use format::FileFormat;
-pub use number::{GRID, fmt, plain};
+pub use number::{GRID, fmt};
 pub use output::write_atomic;
 #[cfg(feature = "pdf")]
 pub use pdf::{POINTS_PER_UNIT, to_pdf};

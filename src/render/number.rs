@@ -81,18 +81,6 @@ pub fn fmt_coefficient(x: f64) -> String {
     if v == 0.0 { "0".into() } else { format!("{v}") }
 }
 
-/// A number as text shows it (messages, titles, a given value echoed):
-/// plainly in the usual range, in exponent form when very large or very
-/// small (`1e-300`, not 300 zeros; `1e308`, not 309 digits).
-pub fn plain(x: f64) -> String {
-    let a = x.abs();
-    if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) {
-        format!("{x:e}")
-    } else {
-        format!("{x}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -110,11 +98,6 @@ mod tests {
         assert_eq!(fmt_coefficient(0.4), "0.4");
         assert_eq!(fmt_coefficient(1e-9), "0.000000001");
         assert_eq!(fmt_coefficient(0.0), "0");
-        assert_eq!(plain(1e-100), "1e-100");
-        assert_eq!(plain(-1e308), "-1e308");
-        assert_eq!(plain(0.025), "0.025");
-        assert_eq!(plain(-0.0), "-0");
-        assert_eq!(plain(f64::NAN), "NaN");
     }
 
     #[test]
