@@ -12,6 +12,7 @@ mod output;
 mod pdf;
 #[cfg(feature = "png")]
 mod png;
+mod save;
 mod sizes;
 mod svg;
 
@@ -25,6 +26,7 @@ pub use output::write_atomic;
 pub use pdf::{POINTS_PER_UNIT, to_pdf};
 #[cfg(feature = "png")]
 pub use png::to_png;
+pub use save::save;
 pub use svg::to_svg;
 
 /// Renders SVG text to PNG bytes: built without the `png` feature, this
