@@ -264,7 +264,9 @@ fn moving_centrode_is_d_in_the_rod_frame() {
 fn coupler_points_trace_ovals_between_line_and_circle() {
     let m = SliderCrank::in_line(1.0, 4.0).unwrap();
     let mid = CouplerPoint::new(0.5).unwrap();
-    assert!(CouplerPoint::new(1.5).is_none());
+    let err = CouplerPoint::new(1.5).unwrap_err().to_string();
+    assert!(err.contains("from A (0) to B (1)"), "{err}");
+    assert!(CouplerPoint::new(f64::NAN).is_err());
     for k in 0..36 {
         let pose = m.pose(Angle::deg(k as f64 * 10.0));
         assert_eq!(CouplerPoint::new(0.0).unwrap().point(&pose), pose.a());

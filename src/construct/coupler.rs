@@ -1,5 +1,6 @@
 //! Coupler points: points of the rod between A and B, which trace ovals.
 
+use crate::error::{Error, Result};
 use crate::geom::{Point, Vector};
 use crate::mechanism::Pose;
 
@@ -12,10 +13,18 @@ pub struct CouplerPoint {
 }
 
 impl CouplerPoint {
-    /// The coupler point at fraction `t` from A to B; `None` unless
-    /// 0 ≤ t ≤ 1.
-    pub fn new(t: f64) -> Option<Self> {
-        (0.0..=1.0).contains(&t).then_some(Self { t })
+    /// The coupler point at fraction `t` from A to B; an
+    /// [`Error::OutOfRange`] unless 0 ≤ t ≤ 1 (NaN included).
+    pub fn new(t: f64) -> Result<Self> {
+        if (0.0..=1.0).contains(&t) {
+            Ok(Self { t })
+        } else {
+            Err(Error::OutOfRange {
+                name: "coupler",
+                value: t,
+                reason: "the coupler point is a fraction of the rod from A (0) to B (1)".into(),
+            })
+        }
     }
 
     /// The fraction t.

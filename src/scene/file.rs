@@ -309,11 +309,7 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         scene = at(text, t.span(), scene.with_torque(*t.get_ref()))?;
     }
     if let Some(q) = &file.coupler {
-        let point = CouplerPoint::new(*q.get_ref()).ok_or_else(|| Error::OutOfRange {
-            name: "coupler",
-            value: *q.get_ref(),
-            reason: "the coupler point is a fraction of the rod from A (0) to B (1)".into(),
-        });
+        let point = CouplerPoint::new(*q.get_ref());
         scene = scene.with_coupler(at(text, q.span(), point)?);
     }
     if let Some(t) = &file.tolerance {
