@@ -1,22 +1,10 @@
 //! The `figure` and `scene` subcommands.
 
-use std::process::Command;
-
-fn run(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_slider-crank"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-/// Asserts a zero exit, showing standard error otherwise.
-fn succeeded(out: &std::process::Output) {
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
+mod command;
+#[allow(dead_code)] // the helpers the figure tests use
+mod common;
+use command::{run, succeeded};
+use common::metadata;
 
 #[test]
 fn figure_prints_svg_and_two_runs_are_identical() {
@@ -208,17 +196,6 @@ fn svg_of(args: &[&str]) -> String {
     let out = run(args);
     succeeded(&out);
     String::from_utf8(out.stdout).unwrap()
-}
-
-/// The `<metadata>` JSON of an SVG.
-fn metadata(svg: &str) -> serde_json::Value {
-    let a = svg.find("<metadata>").unwrap() + "<metadata>".len();
-    let b = svg.find("</metadata>").unwrap();
-    let text = svg[a..b]
-        .replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&");
-    serde_json::from_str(&text).unwrap()
 }
 
 /// The text of every `<text>` element (tspans joined, superscripts set

@@ -1,26 +1,12 @@
 //! `slider-crank gallery`: the whole catalogue in three formats, the
 //! tables, and an index whose every link resolves.
 
+mod command;
+use command::{run, succeeded};
 use slider_crank::FigureName;
 use slider_crank::table::TableName;
 use std::collections::BTreeSet;
 use std::path::Path;
-use std::process::Command;
-
-fn run(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_slider-crank"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn succeeded(out: &std::process::Output) {
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
 
 /// The values of every `href="…"` and `src="…"` of the page.
 fn links(html: &str) -> Vec<String> {

@@ -5,23 +5,10 @@
 //! `pdftotext` (`.ci/run` installs them); where they are not installed
 //! those checks are skipped with a note saying so.
 
+mod command;
+use command::{run, succeeded};
 use std::path::Path;
 use std::process::Command;
-
-fn run(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_slider-crank"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn succeeded(out: &std::process::Output) {
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-}
 
 /// The standard output of a poppler tool run on `pdf`, or `None` (with
 /// the reason printed) when the tool is not installed.

@@ -18,6 +18,7 @@ use crate::error::{Error, Result};
 use crate::figure::Font;
 use crate::input::{MAX_SCENE_BYTES, read_text};
 use crate::render::FileFormat;
+use crate::scene::{located, toml_error};
 use crate::{FigureName, Scene, Style};
 use serde::Deserialize;
 use std::path::Path;
@@ -33,25 +34,9 @@ struct ManifestFile {
     font: Option<Spanned<String>>,
 }
 
-/// 1-based line and column of byte offset `at` in `text`.
-fn line_column(text: &str, at: usize) -> (usize, usize) {
-    let before = &text[..at.min(text.len())];
-    let line = before.matches('\n').count() + 1;
-    let column = before
-        .rfind('\n')
-        .map_or(before, |i| &before[i + 1..])
-        .chars()
-        .count()
-        + 1;
-    (line, column)
-}
-
 /// `r`, its error placed at the value of `s`.
 fn at<T, U>(text: &str, s: &Spanned<U>, r: Result<T>) -> Result<T> {
-    r.map_err(|e| {
-        let (line, column) = line_column(text, s.span().start);
-        Error::Parse(format!("line {line}, column {column}: {}", e.one_line()))
-    })
+    r.map_err(|e| located(text, s.span(), e.one_line()))
 }
 
 impl Gallery {
@@ -62,16 +47,7 @@ impl Gallery {
     /// for each scene file that sets none). Unknown keys are errors; every
     /// error names its line and column.
     pub fn from_manifest(text: &str, base: &Path) -> Result<Gallery> {
-        let file: ManifestFile = toml::from_str(text).map_err(|e| {
-            let message = e.message().trim().to_string();
-            match e.span() {
-                Some(span) => {
-                    let (line, column) = line_column(text, span.start);
-                    Error::Parse(format!("line {line}, column {column}: {message}"))
-                }
-                None => Error::Parse(message),
-            }
-        })?;
+        let file: ManifestFile = toml::from_str(text).map_err(|e| toml_error(text, &e))?;
         let mut gallery = Gallery::new();
         if let Some(figures) = &file.figures {
             let names = figures

@@ -115,7 +115,19 @@ fn line_column(text: &str, at: usize) -> (usize, usize) {
     (line, column)
 }
 
-fn located(text: &str, span: Range<usize>, message: impl std::fmt::Display) -> Error {
+/// A TOML syntax or key error of `text`, placed at its line and column
+/// when the parser gives a place.
+pub(crate) fn toml_error(text: &str, e: &toml::de::Error) -> Error {
+    let message = e.message().trim().to_string();
+    match e.span() {
+        Some(span) => located(text, span, message),
+        None => Error::Parse(message),
+    }
+}
+
+/// A parse error whose message starts with the line and column of `span`
+/// in `text` (scene files and gallery manifests alike).
+pub(crate) fn located(text: &str, span: Range<usize>, message: impl std::fmt::Display) -> Error {
     let (line, column) = line_column(text, span.start);
     Error::Parse(format!("line {line}, column {column}: {message}"))
 }
@@ -127,13 +139,7 @@ fn at<T>(text: &str, span: Range<usize>, r: Result<T>) -> Result<T> {
 
 pub(super) fn parse(text: &str) -> Result<SceneFile> {
     check_version(text)?;
-    let file: File = toml::from_str(text).map_err(|e| {
-        let message = e.message().trim().to_string();
-        match e.span() {
-            Some(span) => located(text, span, message),
-            None => Error::Parse(message),
-        }
-    })?;
+    let file: File = toml::from_str(text).map_err(|e| toml_error(text, &e))?;
     if let Some(name) = &file.figure {
         let figure = at(text, name.span(), FigureName::from_name(name.get_ref()))?;
         if figure.is_diagram() {

@@ -21,6 +21,7 @@ pub(crate) mod write;
 pub use cache::Evaluations;
 pub(crate) use canvas::round;
 pub(crate) use draw::offset_note;
+pub(crate) use file::{located, toml_error};
 pub use layer::Layer;
 pub use notation::Notation;
 

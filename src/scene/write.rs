@@ -97,23 +97,33 @@ fn units_table(out: &mut String, units: &crate::Units) {
     let _ = writeln!(out, "force = {}", text(units.force().as_str()));
 }
 
+/// The opening of a file printed for `name`: what it is (`what`), how to
+/// use it, anything `more` to say, and its version.
+fn header(out: &mut String, what: &str, name: FigureName, more: &str) {
+    comment(
+        out,
+        &format!(
+            "{what}: `slider-crank scene` on this file draws what `slider-crank figure {0}` draws. Change a value, or delete a key to take its default (docs/scene-format.md).{more}",
+            name.name()
+        ),
+    );
+    out.push('\n');
+    key(out, VERSION, &format!("version = {}", super::file::VERSION));
+}
+
 /// The scene file of a mechanism figure's `scene`, every key given:
 /// reading it back gives the same scene (a held view, which no key
 /// expresses, aside).
 pub(crate) fn scene(name: FigureName, scene: &Scene) -> String {
     let mut out = String::new();
-    comment(
+    header(
         &mut out,
         &format!(
-            "The scene of {0} with every key at the figure's own value: `slider-crank scene` on this file draws what `slider-crank figure {0}` draws. Change a value, or delete a key to take its default (docs/scene-format.md).",
+            "The scene of {} with every key at the figure's own value",
             name.name()
         ),
-    );
-    out.push('\n');
-    key(
-        &mut out,
-        VERSION,
-        &format!("version = {}", super::file::VERSION),
+        name,
+        "",
     );
     key(
         &mut out,
@@ -215,18 +225,14 @@ pub(crate) fn diagram(name: FigureName) -> String {
         (true, false) => " Its measured data (--data) is given on the command line only.",
         _ => "",
     };
-    comment(
+    header(
         &mut out,
         &format!(
-            "The diagram {0} with every key it takes at its own value: `slider-crank scene` on this file draws what `slider-crank figure {0}` draws. Change a value, or delete a key to take its default (docs/scene-format.md).{data}",
+            "The diagram {} with every key it takes at its own value",
             name.name()
         ),
-    );
-    out.push('\n');
-    key(
-        &mut out,
-        VERSION,
-        &format!("version = {}", super::file::VERSION),
+        name,
+        data,
     );
     key(
         &mut out,

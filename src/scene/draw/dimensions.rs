@@ -116,14 +116,16 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
 /// The offset e of the line of stroke from the crank centre, dimensioned
 /// on the side away from the slider, beyond the crank circle and beyond
 /// whatever the constructions draw on that side (Kisch's semicircle and
-/// its arc reach past the circle at some poses).
+/// its arc reach past the circle at some poses): beyond the frame the main
+/// view was fitted to, so that in a held view it stays put.
 pub(crate) fn offset(ctx: &Ctx, canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     if canvas.page(e.abs()) < 4.0 {
         return;
     }
-    let beyond = r.max(-super::fit::frame(ctx).min().x);
+    let reach = ctx.sizes.fitted.unwrap_or_else(|| super::fit::frame(ctx));
+    let beyond = r.max(-reach.min().x);
     canvas.push(
         "dimension-e",
         Role::Dimension,

@@ -40,6 +40,9 @@ pub(crate) struct Sizes {
     /// Page units per world unit of the main view, once a first fit has
     /// found it: then arrows drawn to page lengths are fitted too.
     pub page_scale: Option<f64>,
+    /// The world frame the main view was fitted to (over every held pose),
+    /// once fitted: what the drawing reaches, for what is set beyond it.
+    pub fitted: Option<Frame>,
 }
 
 /// The slider block on the page, page units: its largest half length,
@@ -66,6 +69,7 @@ impl Sizes {
             block_half_height: 0.2 * r * k,
             travel: (near, far),
             page_scale: None,
+            fitted: None,
         }
     }
 
@@ -196,7 +200,9 @@ fn fit(ctx: &Ctx, band: f64) -> Layout {
         let (_, fit) = main_view(&ctx, band, fit::frame(&ctx));
         ctx.sizes = ctx.sizes.on_page(fit.scale());
     }
-    let (main, transform) = main_view(&ctx, band, fit::frame(&ctx));
+    let frame = fit::frame(&ctx);
+    let (main, transform) = main_view(&ctx, band, frame);
+    ctx.sizes.fitted = Some(frame);
     let page = ctx.scene.page();
     let detail = detail::detail(&ctx, transform.scale(), page.width() - 2.0 * page.margin());
     Layout {
@@ -240,7 +246,8 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
             c.sizes = sizes;
         }
     }
-    let (main, transform) = main_view(&ctxs[0], band, union(&ctxs));
+    let frame = union(&ctxs);
+    let (main, transform) = main_view(&ctxs[0], band, frame);
     let page = scene.page();
     let width = page.width() - 2.0 * page.margin();
     let details: Vec<detail::Detail> = ctxs
@@ -248,7 +255,10 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
         .filter_map(|c| detail::detail(c, transform.scale(), width))
         .collect();
     Layout {
-        sizes: ctxs[0].sizes,
+        sizes: Sizes {
+            fitted: Some(frame),
+            ..ctxs[0].sizes
+        },
         band,
         main,
         transform,
