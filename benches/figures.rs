@@ -4,7 +4,7 @@
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use slider_crank::FigureName;
-use slider_crank::figure::FigureOptions;
+use slider_crank::catalogue::FigureOptions;
 use slider_crank::render::{to_png, to_svg};
 use std::hint::black_box;
 use std::time::Duration;

@@ -70,7 +70,7 @@
 //!   infinity), [`Angle::deg`] for literals (`Angle::deg(30.0)`).
 //! - Every value named on the command line and in scene files
 //!   ([`FigureName`], [`Layer`], [`Style`], [`Notation`], [`Font`],
-//!   [`figure::Fit`], [`Assembly`], [`table::Format`]) parses with
+//!   [`catalogue::Fit`], [`Assembly`], [`table::Format`]) parses with
 //!   `str::parse` and writes its name with `Display`, and the two
 //!   round-trip; a wrong name is an [`Error::Parse`] listing the names.
 //!   A [`Unit`] (any name within its rules) parses and writes the same way.
@@ -82,7 +82,7 @@
 //!   `Serialize`.
 //! - Enums and option structs that are expected to grow are
 //!   `#[non_exhaustive]`: match them with a `_` arm, and build
-//!   [`figure::FigureOptions`] and [`diagram::TraceOptions`] from their
+//!   [`catalogue::FigureOptions`] and [`diagram::TraceOptions`] from their
 //!   defaults by setting fields.
 //! - [`Error::Io`] keeps the file and the operating system's error as its
 //!   `source`.
@@ -130,7 +130,7 @@ macro_rules! parse_by_name {
 
 parse_by_name!(
     figure::Style,
-    figure::Fit,
+    catalogue::Fit,
     FigureName,
     Layer,
     Notation,
@@ -140,6 +140,7 @@ parse_by_name!(
 
 pub mod analytic;
 mod angle;
+pub mod catalogue;
 pub mod chain;
 pub mod construct;
 pub mod diagram;
@@ -156,6 +157,7 @@ mod units;
 
 pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
 pub use angle::Angle;
+pub use catalogue::{FigureName, SceneFile};
 pub use chain::{
     Assembly, ChainCentres, ConvergenceRow, CrankReach, CylindricChain, CylindricPose,
     GrashofClass, Inversion, InversionPose, InvertedChain, LinkMotion, LinkRates, QuadricChain,
@@ -163,9 +165,9 @@ pub use chain::{
 };
 pub use error::{Error, Result};
 pub use figure::Style;
-pub use figure::{Figure, FigureName, Font};
+pub use figure::{Figure, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
-pub use scene::{Layer, Notation, Page, Scene, SceneFile};
+pub use scene::{Layer, Notation, Page, Scene};
 pub use units::{MAX_UNIT_CHARS, Unit, Units};
 
 /// The examples of README.md, compiled and run with the doctests.
@@ -176,7 +178,7 @@ mod readme {}
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::figure::Fit;
+    use crate::catalogue::Fit;
     use crate::table::Format;
     use std::fmt::Display;
     use std::str::FromStr;

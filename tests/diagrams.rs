@@ -9,7 +9,8 @@ use common::{attr, metadata, num, snapshot_settings, tag};
 
 use serde_json::Value;
 use slider_crank::FigureName;
-use slider_crank::figure::{Figure, FigureOptions, Fit};
+use slider_crank::catalogue::{FigureOptions, Fit};
+use slider_crank::figure::Figure;
 use slider_crank::render::to_svg;
 use std::f64::consts::PI;
 

@@ -2,9 +2,15 @@
 //! every bundled face (nothing falls back to another font), the SVG asks
 //! for the chosen face first, and `--font` and the scene key choose it.
 
-use slider_crank::figure::{FigureOptions, FontStyle};
+use slider_crank::catalogue::FigureOptions;
+use slider_crank::figure::FontStyle;
 use slider_crank::render::to_svg;
-use slider_crank::{FigureName, Font, Scene};
+use slider_crank::{FigureName, Font, Scene, SceneFile};
+
+/// The scene of a scene file that describes a mechanism figure.
+fn read_scene(text: &str) -> slider_crank::Result<Scene> {
+    SceneFile::from_toml(text)?.into_scene()
+}
 use std::collections::BTreeSet;
 use std::process::Command;
 
@@ -99,10 +105,10 @@ fn label_boxes_follow_the_faces_widths() {
 
 #[test]
 fn the_scene_file_key_and_the_command_line_choose_the_face() {
-    let s = Scene::from_toml("figure = \"fig-66-kisch\"\nfont = \"libertinus-serif\"\n").unwrap();
+    let s = read_scene("figure = \"fig-66-kisch\"\nfont = \"libertinus-serif\"\n").unwrap();
     assert_eq!(s.font(), Font::LibertinusSerif);
     assert!(to_svg(&s.figure()).contains("font-family=\"&apos;Libertinus Serif&apos;"));
-    let e = Scene::from_toml("figure = \"fig-66-kisch\"\nfont = \"comic\"\n")
+    let e = read_scene("figure = \"fig-66-kisch\"\nfont = \"comic\"\n")
         .unwrap_err()
         .to_string();
     assert!(

@@ -11,7 +11,7 @@ mod common;
 mod plate;
 
 use plate::{Label, Panel, Plate, Rect, Seg};
-use slider_crank::figure::FigureOptions;
+use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
 use std::collections::{BTreeMap, BTreeSet};
 use std::time::Instant;

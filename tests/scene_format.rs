@@ -3,7 +3,7 @@
 //! key, and the scene file printed for each named figure reads back to
 //! that figure.
 
-use slider_crank::figure::FigureOptions;
+use slider_crank::catalogue::FigureOptions;
 use slider_crank::render::to_svg;
 use slider_crank::{FigureName, SceneFile};
 

@@ -5,8 +5,13 @@ use slider_crank::figure::PageUnit;
 use slider_crank::render::to_svg;
 use slider_crank::{FigureName, Layer, Scene, SceneFile, Style, Units};
 
+/// The scene of a scene file that describes a mechanism figure.
+fn read_scene(text: &str) -> slider_crank::Result<Scene> {
+    SceneFile::from_toml(text)?.into_scene()
+}
+
 fn error(text: &str) -> String {
-    Scene::from_toml(text).unwrap_err().to_string()
+    read_scene(text).unwrap_err().to_string()
 }
 
 #[test]
@@ -56,7 +61,7 @@ fn broken_toml_is_located_too() {
 
 #[test]
 fn a_named_figure_can_be_restyled_in_a_scene_file() {
-    let s = Scene::from_toml("figure = \"fig-67-example\"\nstyle = \"handout\"\n").unwrap();
+    let s = read_scene("figure = \"fig-67-example\"\nstyle = \"handout\"\n").unwrap();
     assert_eq!(s.name(), "fig-67-example");
     assert_eq!(s.style(), Style::Handout);
     assert!(s.has(Layer::Kisch) && s.has(Layer::Scales));
@@ -98,7 +103,7 @@ fn a_force_beyond_the_largest_number_is_not_drawn_as_a_dead_centre() {
             "angle = {angle}\nlayers = [\"mechanism\", \"velocity\", \"torque\"]\ntorque = 1e308\n\
              [mechanism]\ncrank = 1e-100\nrod = {rod}\n"
         );
-        to_svg(&Scene::from_toml(&text).unwrap().figure())
+        to_svg(&read_scene(&text).unwrap().figure())
     };
     let svg = scene(45.0, "3e-100");
     let om = text_of(&svg, "note-scales-1");
@@ -131,7 +136,7 @@ fn a_force_beyond_the_largest_number_is_not_drawn_as_a_dead_centre() {
     // ulp from the limit of assembly, at 90°).
     let text = "angle = 90\nlayers = [\"mechanism\", \"velocity\", \"torque\"]\ntorque = 1e308\n\
                 [mechanism]\ncrank = 1\nrod = 1.0000000000000002\n";
-    let svg = to_svg(&Scene::from_toml(text).unwrap().figure());
+    let svg = to_svg(&read_scene(text).unwrap().figure());
     let forces = text_of(&svg, "note-scales-2");
     assert!(forces.contains("Fp = 1.000×10308"), "{forces}");
     assert!(forces.contains("Fs exceeds 1.798×10308"), "{forces}");
@@ -153,7 +158,10 @@ fn a_scene_file_may_start_from_a_diagram() {
     assert!(svg.contains("width=\"200mm\""));
     // Scene::from_toml reads mechanism figures only, and says where to look.
     let e = error(text);
-    assert!(e.contains("is a diagram") && e.contains("SceneFile"), "{e}");
+    assert!(
+        e.contains("is a diagram") && e.contains("fig-67-example"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -184,10 +192,9 @@ fn a_diagram_refuses_the_keys_it_does_not_use_at_their_place() {
 
 #[test]
 fn units_are_grouped_and_the_old_spelling_still_reads() {
-    let new = Scene::from_toml("[units]\nlength = \"mm\"\nforce = \"N\"\n").unwrap();
-    let old =
-        Scene::from_toml("force_unit = \"N\"\n[mechanism]\ncrank = 0.5\nrod = 3\nunit = \"mm\"\n")
-            .unwrap();
+    let new = read_scene("[units]\nlength = \"mm\"\nforce = \"N\"\n").unwrap();
+    let old = read_scene("force_unit = \"N\"\n[mechanism]\ncrank = 0.5\nrod = 3\nunit = \"mm\"\n")
+        .unwrap();
     assert_eq!(new.units(), &Units::MILLIMETRE_NEWTON);
     assert_eq!(old.units(), new.units());
     let e = error("force_unit = \"N\"\n[units]\nforce = \"kN\"\n");
@@ -206,7 +213,7 @@ fn units_are_grouped_and_the_old_spelling_still_reads() {
 
 #[test]
 fn a_scene_page_may_be_physical_and_the_figure_titled() {
-    let s = Scene::from_toml(
+    let s = read_scene(
         "figure = \"fig-63-velocity\"\ntitle = \"Fig. 63\"\nnotation = \"ng\"\n[page]\nwidth = \"6in\"\nheight = 400\n",
     )
     .unwrap();

@@ -3,7 +3,8 @@
 use super::args::{SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::figure::{FigureOptions, Fit, Font, PageLength, Title};
+use slider_crank::catalogue::{FigureOptions, Fit};
+use slider_crank::figure::{Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
 use slider_crank::{Angle, Error, Figure, FigureName, Layer, Notation, Result, SliderCrank, Style};

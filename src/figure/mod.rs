@@ -1,30 +1,22 @@
 //! Figures: an immutable model of panels and primitives in world
 //! coordinates and the [`Style`] they are drawn in, built by a
-//! [`crate::Scene`] and written by the [renderer](super::render); and the
-//! catalogue of the seeds' named figures.
+//! [`crate::Scene`] or a [diagram](crate::catalogue) and written by the
+//! [renderer](super::render).
 //!
 //! Data flows one way: scene → constructions its layers ask for → this
 //! model → the renderer, which maps each panel's world to the page with the
 //! panel's one [`PageFromWorld`].
 
-mod catalogue;
-mod diagrams;
 mod font;
 mod model;
-mod options;
 mod path;
 mod size;
-mod source;
 mod style;
 mod text;
 mod transform;
 
-pub use catalogue::FigureName;
-pub(crate) use diagrams::unused as unused_option;
-pub(crate) use diagrams::uses as diagram_uses;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
 pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
-pub use options::{FigureOptions, Fit};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use size::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use style::Style;

@@ -14,12 +14,12 @@
 //! its line and column, or the scene file it is about.
 
 use super::{Gallery, SceneEntry};
+use crate::catalogue::{located, toml_error};
 use crate::error::{Error, Result};
 use crate::figure::Font;
 use crate::input::{MAX_SCENE_BYTES, read_text};
 use crate::render::FileFormat;
-use crate::scene::{located, toml_error};
-use crate::{FigureName, Scene, Style};
+use crate::{FigureName, SceneFile, Style};
 use serde::Deserialize;
 use std::path::Path;
 use toml::Spanned;
@@ -86,7 +86,9 @@ fn scene_entry(gallery: &Gallery, base: &Path, path: &str) -> Result<SceneEntry>
     let full = base.join(path);
     let text = read_text(&full, MAX_SCENE_BYTES, "scene file")?;
     let named = |e: Error| Error::Parse(format!("{path}: {}", e.one_line()));
-    let mut scene = Scene::from_toml(&text).map_err(named)?;
+    let mut scene = SceneFile::from_toml(&text)
+        .and_then(SceneFile::into_scene)
+        .map_err(named)?;
     let keys = text
         .parse::<toml::Table>()
         .map_err(|e| named(Error::Parse(e.to_string())))?;

@@ -31,8 +31,9 @@
 mod index;
 mod manifest;
 
+use crate::catalogue::FigureOptions;
 use crate::error::{Error, Result};
-use crate::figure::{FigureOptions, Font};
+use crate::figure::Font;
 use crate::render::{FileFormat, to_svg};
 use crate::table::{Format, TableName};
 use crate::{FigureName, Scene, Style};

@@ -566,7 +566,7 @@ fn deflate(data: &[u8]) -> Vec<u8> {
 mod tests {
     use super::*;
     use crate::FigureName;
-    use crate::figure::FigureOptions;
+    use crate::catalogue::FigureOptions;
     use crate::render::to_svg;
 
     #[test]

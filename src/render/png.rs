@@ -76,7 +76,8 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::figure::{FigureOptions, Font, FontStyle};
+    use crate::catalogue::FigureOptions;
+    use crate::figure::{Font, FontStyle};
     use crate::render::fonts::load_bundled;
     use crate::render::to_svg;
     use crate::{FigureName, Style};

@@ -17,7 +17,7 @@ use std::path::Path;
 ///
 /// ```no_run
 /// use slider_crank::FigureName;
-/// use slider_crank::figure::FigureOptions;
+/// use slider_crank::catalogue::FigureOptions;
 /// use slider_crank::render::save;
 ///
 /// let figure = FigureName::Fig67Example.figure(&FigureOptions::default())?;

@@ -13,15 +13,12 @@
 mod cache;
 mod canvas;
 mod draw;
-mod file;
 mod layer;
 mod notation;
-pub(crate) mod write;
 
 pub use cache::Evaluations;
 pub(crate) use canvas::round;
 pub(crate) use draw::offset_note;
-pub(crate) use file::{located, toml_error};
 pub use layer::Layer;
 pub use notation::Notation;
 
@@ -30,7 +27,7 @@ use crate::error::{Error, Result, finite, positive};
 use crate::figure::Figure;
 use crate::figure::Font;
 use crate::figure::Style;
-use crate::figure::{FigureName, FigureOptions, PageLength, PageUnit, Title};
+use crate::figure::{PageLength, PageUnit, Title};
 use crate::{Angle, SliderCrank, Unit, Units};
 
 use crate::diagram::DEFAULT_TOLERANCE;
@@ -155,52 +152,9 @@ impl Default for Page {
     }
 }
 
-/// What a scene file describes: a mechanism figure, drawn by a [`Scene`],
-/// or one of the named diagrams with the changes the file asks for
-/// (`figure = "fig-64-velocity-diagrams"`; its mechanism, speed, angle,
-/// units, page, title, style and font).
-#[derive(Debug, Clone, PartialEq)]
-pub enum SceneFile {
-    /// A mechanism figure: a named one changed by the file, or one made
-    /// from scratch.
-    Mechanism(Scene),
-    /// A diagram of the catalogue, drawn by [`FigureName::figure`] with
-    /// these options.
-    Diagram(FigureName, FigureOptions),
-}
-
-impl SceneFile {
-    /// Reads a scene file (TOML; see `examples/*.toml` and docs/design.md
-    /// §4). Errors name the line and column of the bad key or value, in one
-    /// line.
-    pub fn from_toml(text: &str) -> Result<Self> {
-        file::parse(text).map_err(Error::one_line)
-    }
-
-    /// Every key a scene file may hold, read off the parser's own
-    /// structs: the top-level keys (`angle`), and each table (`page`)
-    /// followed by its keys as `table.key` (`page.width`). The reference,
-    /// docs/scene-format.md, gives each with its type, default and range.
-    pub fn keys() -> Vec<String> {
-        file::keys()
-    }
-
-    /// The version of scene files this program reads, the integer a file
-    /// may give as `version` (newer or invalid versions are refused).
-    pub const VERSION: i64 = file::VERSION;
-
-    /// The figure it describes.
-    pub fn figure(&self) -> Result<Figure> {
-        match self {
-            SceneFile::Mechanism(scene) => Ok(scene.figure()),
-            SceneFile::Diagram(name, options) => name.figure(options),
-        }
-    }
-}
-
 /// What one figure shows. Built with [`Scene::new`] and the `with_*`
 /// methods (each validates its value), or read from TOML with
-/// [`Scene::from_toml`].
+/// [`SceneFile::from_toml`](crate::SceneFile::from_toml).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
     name: String,
@@ -575,20 +529,6 @@ impl Scene {
     /// The curve tolerance in page units.
     pub fn tolerance(&self) -> f64 {
         self.tolerance
-    }
-
-    /// Reads a scene from TOML (see `examples/*.toml`). Errors name the line
-    /// and column of the bad key or value, in one line. A file that starts
-    /// from a diagram is refused: [`SceneFile::from_toml`] reads those too.
-    pub fn from_toml(text: &str) -> Result<Self> {
-        match SceneFile::from_toml(text)? {
-            SceneFile::Mechanism(scene) => Ok(scene),
-            SceneFile::Diagram(name, _) => Err(Error::Parse(format!(
-                "'{}' is a diagram; a scene starts from a mechanism figure ({}), and SceneFile::from_toml reads diagrams too",
-                name.name(),
-                FigureName::SCENES.map(|s| s.name()).join(", ")
-            ))),
-        }
     }
 
     /// Builds the figure, computing only what the layers draw.

@@ -4,8 +4,8 @@
 //! NaN or infinity in it; the numbers of an analysis are finite.
 
 use slider_crank::analytic::statics;
+use slider_crank::catalogue::FigureOptions;
 use slider_crank::construct::{InstantCentre, Kisch, TorqueLine, VelocityLine};
-use slider_crank::figure::FigureOptions;
 use slider_crank::render::to_svg;
 use slider_crank::{Angle, Figure, FigureName, Kinematics, SceneFile, SliderCrank};
 

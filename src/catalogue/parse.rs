@@ -3,11 +3,11 @@
 //! ([`keys`] lists them from the structs themselves); docs/scene-format.md
 //! is their reference.
 
-use super::{Layer, Notation, Page, Scene, SceneFile};
+use super::{FigureName, FigureOptions, SceneFile, diagrams};
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
-use crate::figure::Style;
-use crate::figure::{FigureName, FigureOptions, Font, PageLength, Title};
+use crate::figure::{Font, PageLength, Style, Title};
+use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{Angle, SliderCrank, Unit};
 use serde::Deserialize;
 use std::ops::Range;
@@ -358,7 +358,7 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
     }
     // Each option alone, refused where the diagram does not use it.
     let refuse = |one: FigureOptions, key: &str, span: Range<usize>| -> Result<()> {
-        match crate::figure::unused_option(name, &one) {
+        match diagrams::unused(name, &one) {
             Some(_) => Err(located(
                 text,
                 span,

@@ -1,9 +1,7 @@
 //! What may be changed in a named figure ([`super::FigureName::figure`]).
 
-use super::Font;
-use super::Style;
-use super::{PageLength, PageUnit, Title};
 use crate::error::{Error, Result};
+use crate::figure::{Font, PageLength, PageUnit, Style, Title};
 use crate::scene::Page;
 use crate::{Angle, Layer, Notation, SliderCrank, Unit};
 
@@ -54,7 +52,7 @@ impl Fit {
 /// [`FigureOptions::default`] and set the fields wanted.
 ///
 /// ```
-/// use slider_crank::{FigureName, figure::{FigureOptions, Fit}};
+/// use slider_crank::{FigureName, catalogue::{FigureOptions, Fit}};
 /// let mut options = FigureOptions::default();
 /// options.fit = Some(Fit::Origin);
 /// let figure = FigureName::NgFig7Calibration.figure(&options)?;

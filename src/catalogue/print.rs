@@ -2,9 +2,9 @@
 //! uses at the figure's own value, each with a comment, as a starting
 //! point. The parser reads it back to the same figure.
 
-use super::Scene;
-use crate::Layer;
-use crate::figure::{FigureName, PageLength, PageUnit, diagram_uses};
+use super::{FigureName, diagrams, parse};
+use crate::figure::{PageLength, PageUnit};
+use crate::scene::{Layer, Scene};
 use std::fmt::Write;
 
 /// A number as TOML: an integer where the value is one (`45`, `250`),
@@ -108,7 +108,7 @@ fn header(out: &mut String, what: &str, name: FigureName, more: &str) {
         ),
     );
     out.push('\n');
-    key(out, VERSION, &format!("version = {}", super::file::VERSION));
+    key(out, VERSION, &format!("version = {}", parse::VERSION));
 }
 
 /// The scene file of a mechanism figure's `scene`, every key given:
@@ -216,7 +216,7 @@ pub(crate) fn scene(name: FigureName, scene: &Scene) -> String {
 pub(crate) fn diagram(name: FigureName) -> String {
     const MECH: &str = "mechanism (--crank, --rod, --offset)";
     const SPEED: &str = "crank speed (--rpm, --omega)";
-    let uses = diagram_uses(name);
+    let uses = diagrams::uses(name);
     let mut out = String::new();
     let data = match (uses.contains(&"--data"), uses.contains(&"--fit")) {
         (true, true) => {
@@ -343,7 +343,7 @@ mod tests {
             .with_tolerance(0.005)
             .unwrap();
         let text = super::scene(FigureName::Fig67Example, &scene);
-        match super::super::file::parse(&text).unwrap() {
+        match super::super::parse::parse(&text).unwrap() {
             crate::SceneFile::Mechanism(back) => assert_eq!(back, scene, "{text}"),
             _ => panic!("a diagram"),
         }

@@ -5,9 +5,10 @@
 
 use super::{Ctx, PageRect, Sheet, Table};
 use crate::analytic::calibration::{LineFit, NG_TABLE_1, fit_through_origin, fit_with_intercept};
+use crate::catalogue::Fit;
 use crate::diagram::{Axis, Curve, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Fit, Symbol};
+use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::{Point, Vector};
 use serde_json::json;
 

@@ -18,12 +18,13 @@ mod rod;
 mod sketch;
 mod velocity;
 
-use super::{Figure, FigureName, FigureOptions, Font, PageRect, Panel, RichText};
+use super::{FigureName, FigureOptions};
 use crate::chain::Inversion;
 use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::{Plot, format_number};
 use crate::error::{Error, Result};
 use crate::figure::Style;
+use crate::figure::{Figure, Font, PageRect, Panel, RichText};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
 use crate::geom::{Point, Vector};
 use crate::scene::{Page, Scene};

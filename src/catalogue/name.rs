@@ -2,9 +2,9 @@
 //! drawn by a [`Scene`], and diagrams (plots against θ, time or position,
 //! polar diagrams, centrodes, Ng's graphs).
 
-use super::Style;
-use super::{Figure, FigureOptions, diagrams};
+use super::{FigureOptions, diagrams, print};
 use crate::error::{Error, Result};
+use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{Angle, SliderCrank, Units};
 
@@ -362,8 +362,8 @@ impl FigureName {
     /// the command line). See docs/scene-format.md.
     pub fn scene_toml(&self) -> String {
         match self.scene() {
-            Some(scene) => crate::scene::write::scene(*self, &scene),
-            None => crate::scene::write::diagram(*self),
+            Some(scene) => print::scene(*self, &scene),
+            None => print::diagram(*self),
         }
     }
 

@@ -1,0 +1,20 @@
+//! The catalogue of the seeds' named figures, with their own parameters,
+//! and the scene files that start from them: mechanism figures drawn by a
+//! [`Scene`](crate::Scene), and diagrams (plots against θ, time or
+//! position, polar diagrams, centrodes, Ng's graphs, the chain's figures).
+//!
+//! It sits above the scenes and the diagrams it builds from, and below the
+//! gallery and the command line that name its figures.
+
+mod diagrams;
+mod name;
+mod options;
+mod parse;
+mod print;
+mod scene_file;
+mod source;
+
+pub use name::FigureName;
+pub use options::{FigureOptions, Fit};
+pub(crate) use parse::{located, toml_error};
+pub use scene_file::SceneFile;
