@@ -409,3 +409,44 @@ fn drivers_turn_without_stopping_except_the_hand_pump_handle() {
     assert!((motion.velocity[1] - 2.0).abs() < 1e-15);
     assert_eq!(motion.velocity[0], 0.0);
 }
+
+/// The metadata of a chain figure drawn for `mechanism` at `degrees`.
+fn chain_figure(name: slider_crank::FigureName, r: f64, l: f64, degrees: f64) -> serde_json::Value {
+    let mut options = slider_crank::catalogue::FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
+    options.angle = Some(Angle::from_degrees(degrees).unwrap());
+    let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+    let start = svg.find("<metadata>").unwrap() + "<metadata>".len();
+    let end = svg.find("</metadata>").unwrap();
+    serde_json::from_str(&svg[start..end]).unwrap()
+}
+
+#[test]
+fn fig_60_panels_a_and_b_have_the_same_six_centres_and_c_does_not() {
+    // §34: the curved slot of the lever's radius moves the links exactly
+    // as the lever does, so the six centres of (a) and (b) agree; (c), the
+    // straight slot, has O_cd at infinity.
+    for (r, l) in [(0.5, 1.5), (1.0, 1.2), (1.0, 20.0)] {
+        for degrees in [0.0, 50.0, 90.0, 175.0, 270.0, 300.0] {
+            let meta = chain_figure(slider_crank::FigureName::Fig60Chains, r, l, degrees);
+            let centres = &meta["virtual_centres"];
+            let scale = r + l;
+            for key in ["O_ab", "O_ac", "O_ad", "O_bc", "O_bd", "O_cd"] {
+                let (a, b) = (&centres["a"][key], &centres["b"][key]);
+                let at = format!("r={r} l={l} θ={degrees}° {key}: {a} vs {b}");
+                if a.get("at_infinity").is_some() {
+                    assert_eq!(a, b, "{at}");
+                    continue;
+                }
+                for k in 0..2 {
+                    let (x, y) = (a[k].as_f64().unwrap(), b[k].as_f64().unwrap());
+                    assert!((x - y).abs() <= 1e-11 * scale.max(x.abs()), "{at}");
+                }
+            }
+            assert!(
+                centres["c"]["O_cd"].get("at_infinity").is_some(),
+                "{centres}"
+            );
+        }
+    }
+}
