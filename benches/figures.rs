@@ -18,14 +18,14 @@ fn figures(c: &mut Criterion) {
     for name in FigureName::SCENES {
         let scene = name.scene().unwrap();
         group.bench_function(format!("model/{}", name.name()), |b| {
-            b.iter(|| black_box(&scene).figure())
+            b.iter(|| black_box(&scene).figure().unwrap())
         });
-        let figure = scene.figure();
+        let figure = scene.figure().unwrap();
         group.bench_function(format!("svg/{}", name.name()), |b| {
             b.iter(|| to_svg(black_box(&figure)))
         });
         group.bench_function(format!("total/{}", name.name()), |b| {
-            b.iter(|| to_svg(&black_box(&scene).figure()))
+            b.iter(|| to_svg(&black_box(&scene).figure().unwrap()))
         });
     }
     // The diagrams: plots with curves traced to 0.01 px, and the
@@ -41,7 +41,7 @@ fn figures(c: &mut Criterion) {
         });
     }
     group.finish();
-    let svg = to_svg(&FigureName::Fig67Example.scene().unwrap().figure());
+    let svg = to_svg(&FigureName::Fig67Example.scene().unwrap().figure().unwrap());
     let mut png = c.benchmark_group("png");
     png.sample_size(10).measurement_time(Duration::from_secs(3));
     png.bench_function("fig-67-example at 2x", |b| {

@@ -29,7 +29,12 @@ fn main() {
     let scene = figure.scene().expect("a seed figure builds");
     let mut bytes = 0;
     for _ in 0..n {
-        bytes += to_svg(&std::hint::black_box(&scene).figure()).len();
+        bytes += to_svg(
+            &std::hint::black_box(&scene)
+                .figure()
+                .expect("a seed figure builds"),
+        )
+        .len();
     }
     println!("{bytes} bytes written");
 }

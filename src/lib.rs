@@ -50,14 +50,15 @@
 //! ```
 //! use slider_crank::{FigureName, Layer, render::to_svg};
 //! let scene = FigureName::Fig66Kisch.scene().unwrap(); // §35 engine at 60°
-//! let (figure, computed) = scene.build();
+//! let (figure, computed) = scene.build()?;
 //! assert_eq!(computed.instant_centre, 0);              // Kisch needs no D
 //! let svg = to_svg(&figure);
 //! // G is lettered in the enlarged detail of the construction.
 //! assert!(svg.contains(r#"id="detail-point-G""#) && scene.has(Layer::Kisch));
+//! # Ok::<(), slider_crank::Error>(())
 //! ```
 //!
-//! A scene is fitted to its own pose; [`Scene::held_over`] holds its page
+//! A scene is fitted to its own pose; [`Scene::with_held_view`] holds its page
 //! map over a range of poses and [`Scene::frames`] draws a series in one
 //! such view (the whole revolution by default). [`SceneFile::from_toml`]
 //! reads scene files, whose keys `docs/scene-format.md` lists
@@ -66,6 +67,12 @@
 //!
 //! ## The shape of the API
 //!
+//! - Builders cannot fail: [`Scene`]'s `with_*` methods take any value,
+//!   and the settings that can be out of range are checked once, when the
+//!   figure is built ([`Scene::build`], [`Scene::figure`],
+//!   [`Scene::frames`]), with one `Result`. Values with rules of their own
+//!   are checked where they are made ([`SliderCrank::new`],
+//!   [`Angle::from_degrees`], [`Page::new`], [`construct::CouplerPoint::new`]).
 //! - Angles: [`Angle::from_degrees`] for input (an error for NaN or
 //!   infinity), [`Angle::deg`] for literals (`Angle::deg(30.0)`).
 //! - Every value named on the command line and in scene files

@@ -101,7 +101,7 @@ fn letters(name: FigureName) -> [&'static str; 5] {
 #[test]
 fn seed_figures_match_their_reviewed_snapshots() {
     for name in FigureName::SCENES {
-        let svg = to_svg(&name.scene().unwrap().figure());
+        let svg = to_svg(&name.scene().unwrap().figure().unwrap());
         snapshot_settings().bind(|| insta::assert_snapshot!(name.name(), svg));
     }
 }
@@ -128,7 +128,7 @@ fn seed_figures_render_with_points_where_the_world_puts_them() {
     for name in FigureName::SCENES {
         let scene = name.scene().unwrap();
         let m = scene.mechanism();
-        let svg = to_svg(&scene.figure());
+        let svg = to_svg(&scene.figure().unwrap());
         let pixmap = common::render(&svg);
         let (dark, total) = common::inked(&pixmap);
         assert!(
@@ -209,8 +209,8 @@ fn seed_figures_render_with_points_where_the_world_puts_them() {
 #[test]
 fn two_builds_give_identical_svg() {
     for name in FigureName::SCENES {
-        let a = to_svg(&name.scene().unwrap().figure());
-        let b = to_svg(&name.scene().unwrap().figure());
+        let a = to_svg(&name.scene().unwrap().figure().unwrap());
+        let b = to_svg(&name.scene().unwrap().figure().unwrap());
         assert_eq!(a, b, "{}", name.name());
     }
 }
@@ -260,8 +260,8 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
                     let scene = Scene::new(m, Angle::deg(deg))
                         .with_layers(Layer::ALL)
                         .with_style(style)
-                        .mirrored(mirror);
-                    let svg = to_svg(&scene.figure());
+                        .with_mirror(mirror);
+                    let svg = to_svg(&scene.figure().unwrap());
                     assert_clean(&svg, &format!("{m:?} at {deg}° {style:?} mirror {mirror}"));
                 }
             }
@@ -269,13 +269,9 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
     }
     for name in FigureName::SCENES {
         for deg in [0.0, 90.0, 180.0, 270.0] {
-            let scene = name
-                .scene()
-                .unwrap()
-                .with_angles(vec![Angle::deg(deg)])
-                .unwrap();
+            let scene = name.scene().unwrap().with_angles(vec![Angle::deg(deg)]);
             assert_clean(
-                &to_svg(&scene.figure()),
+                &to_svg(&scene.figure().unwrap()),
                 &format!("{} at {deg}°", name.name()),
             );
         }
@@ -287,7 +283,7 @@ fn d_off_the_page_and_at_infinity_are_shown_by_arrows() {
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
     let at = |deg: f64| {
         let scene = Scene::new(m, Angle::deg(deg)).with_layers([Layer::Mechanism, Layer::Velocity]);
-        to_svg(&scene.figure())
+        to_svg(&scene.figure().unwrap())
     };
     let near_90 = at(88.0);
     assert!(attr(&near_90, "offpage-D", "class").is_some());
@@ -306,27 +302,31 @@ fn d_off_the_page_and_at_infinity_are_shown_by_arrows() {
 fn a_bare_mechanism_computes_no_construction_and_kisch_no_d() {
     let m = SliderCrank::in_line(0.5, 3.0).unwrap();
     let scene = |layers: &[Layer]| Scene::new(m, Angle::deg(45.0)).with_layers(layers.to_vec());
-    let (_, bare) = scene(&[Layer::Mechanism, Layer::Dimensions]).build();
+    let (_, bare) = scene(&[Layer::Mechanism, Layer::Dimensions])
+        .build()
+        .unwrap();
     assert_eq!(bare.total(), 0);
-    let (_, kisch) = scene(&[Layer::Mechanism, Layer::Kisch, Layer::Scales]).build();
+    let (_, kisch) = scene(&[Layer::Mechanism, Layer::Kisch, Layer::Scales])
+        .build()
+        .unwrap();
     assert_eq!(kisch.instant_centre, 0);
     assert_eq!((kisch.kisch, kisch.velocity_line), (1, 1));
     assert_eq!(kisch.klein, 0);
-    let (_, all) = scene(&Layer::ALL).build();
+    let (_, all) = scene(&Layer::ALL).build().unwrap();
     // Each construction once, however many layers ask for it.
     assert_eq!(
         (all.instant_centre, all.velocity_line, all.kisch, all.klein),
         (1, 1, 1, 1)
     );
-    let (_, torque) = scene(&[Layer::Torque]).build();
+    let (_, torque) = scene(&[Layer::Torque]).build().unwrap();
     assert_eq!((torque.torque_line, torque.instant_centre), (1, 0));
 }
 
 #[test]
 fn mirroring_is_a_page_transform_and_text_is_not_mirrored() {
     let name = FigureName::Fig63Velocity;
-    let mirrored = to_svg(&name.scene().unwrap().figure());
-    let plain = to_svg(&name.scene().unwrap().mirrored(false).figure());
+    let mirrored = to_svg(&name.scene().unwrap().figure().unwrap());
+    let plain = to_svg(&name.scene().unwrap().with_mirror(false).figure().unwrap());
     let t = page_from_world(&metadata(&mirrored));
     assert!(t[0] < 0.0 && t[3] < 0.0, "{t:?}");
     assert!(page_from_world(&metadata(&plain))[0] > 0.0);
@@ -341,7 +341,13 @@ fn mirroring_is_a_page_transform_and_text_is_not_mirrored() {
 
 #[test]
 fn ng_figures_use_ngs_letters() {
-    let svg = to_svg(&FigureName::NgFigA1Velocity.scene().unwrap().figure());
+    let svg = to_svg(
+        &FigureName::NgFigA1Velocity
+            .scene()
+            .unwrap()
+            .figure()
+            .unwrap(),
+    );
     for id in [
         "point-O", "point-C", "point-P", "point-I", "point-M", "line-OM",
     ] {
@@ -358,8 +364,15 @@ fn ng_figures_use_ngs_letters() {
 #[test]
 fn handout_style_keeps_the_geometry_and_adds_colour() {
     let name = FigureName::Fig67Example;
-    let book = to_svg(&name.scene().unwrap().figure());
-    let handout = to_svg(&name.scene().unwrap().with_style(Style::Handout).figure());
+    let book = to_svg(&name.scene().unwrap().figure().unwrap());
+    let handout = to_svg(
+        &name
+            .scene()
+            .unwrap()
+            .with_style(Style::Handout)
+            .figure()
+            .unwrap(),
+    );
     for id in ["point-E", "point-G", "point-H"] {
         assert_eq!(attr(&book, id, "cx"), attr(&handout, id, "cx"));
     }
@@ -373,7 +386,7 @@ fn handout_style_keeps_the_geometry_and_adds_colour() {
 
 #[test]
 fn scale_notes_state_the_velocity_and_acceleration_scales() {
-    let svg = to_svg(&FigureName::Fig67Example.scene().unwrap().figure());
+    let svg = to_svg(&FigureName::Fig67Example.scene().unwrap().figure().unwrap());
     // V_c = rω at 250 rpm with exact π: 0.5 × 250 × 2π / 60 = 13.09 ft/s;
     // the scale 1 ft = ω = 26.18 ft/s, the acceleration scale ω² = 685.4.
     let omega = 250.0 * 2.0 * std::f64::consts::PI / 60.0;
@@ -399,7 +412,7 @@ fn centrode_and_coupler_paths_stay_within_tolerance_of_the_curve() {
         Layer::Coupler,
         Layer::Centrodes,
     ]);
-    let figure = scene.figure();
+    let figure = scene.figure().unwrap();
     let panel = &figure.panels()[0];
     let scale = panel.transform().scale();
     let tol = figure.tolerance();

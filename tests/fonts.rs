@@ -107,7 +107,7 @@ fn label_boxes_follow_the_faces_widths() {
 fn the_scene_file_key_and_the_command_line_choose_the_face() {
     let s = read_scene("figure = \"fig-66-kisch\"\nfont = \"libertinus-serif\"\n").unwrap();
     assert_eq!(s.font(), Font::LibertinusSerif);
-    assert!(to_svg(&s.figure()).contains("font-family=\"&apos;Libertinus Serif&apos;"));
+    assert!(to_svg(&s.figure().unwrap()).contains("font-family=\"&apos;Libertinus Serif&apos;"));
     let e = read_scene("figure = \"fig-66-kisch\"\nfont = \"comic\"\n")
         .unwrap_err()
         .to_string();

@@ -743,8 +743,8 @@ fn a_series_held_over_the_revolution_keeps_one_page_map_and_stays_on_the_page() 
     // Fitted to each pose, the velocity layer moves the map from frame to
     // frame (D rises and falls with θ).
     let single = |angle: f64| {
-        let s = engine.clone().with_angles(vec![Angle::deg(angle)]).unwrap();
-        maps(&to_svg(&s.figure()))
+        let s = engine.clone().with_angles(vec![Angle::deg(angle)]);
+        maps(&to_svg(&s.figure().unwrap()))
     };
     assert_ne!(single(0.0).1, single(30.0).1);
     let scenes = [

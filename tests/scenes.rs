@@ -103,7 +103,7 @@ fn a_force_beyond_the_largest_number_is_not_drawn_as_a_dead_centre() {
             "angle = {angle}\nlayers = [\"mechanism\", \"velocity\", \"torque\"]\ntorque = 1e308\n\
              [mechanism]\ncrank = 1e-100\nrod = {rod}\n"
         );
-        to_svg(&read_scene(&text).unwrap().figure())
+        to_svg(&read_scene(&text).unwrap().figure().unwrap())
     };
     let svg = scene(45.0, "3e-100");
     let om = text_of(&svg, "note-scales-1");
@@ -136,7 +136,7 @@ fn a_force_beyond_the_largest_number_is_not_drawn_as_a_dead_centre() {
     // ulp from the limit of assembly, at 90°).
     let text = "angle = 90\nlayers = [\"mechanism\", \"velocity\", \"torque\"]\ntorque = 1e308\n\
                 [mechanism]\ncrank = 1\nrod = 1.0000000000000002\n";
-    let svg = to_svg(&read_scene(text).unwrap().figure());
+    let svg = to_svg(&read_scene(text).unwrap().figure().unwrap());
     let forces = text_of(&svg, "note-scales-2");
     assert!(forces.contains("Fp = 1.000×10308"), "{forces}");
     assert!(forces.contains("Fs exceeds 1.798×10308"), "{forces}");
@@ -219,7 +219,7 @@ fn a_scene_page_may_be_physical_and_the_figure_titled() {
     .unwrap();
     assert_eq!(s.page().width(), 576.0);
     assert_eq!(s.page().unit(), PageUnit::In);
-    let svg = to_svg(&s.figure());
+    let svg = to_svg(&s.figure().unwrap());
     assert!(svg.contains("width=\"6in\"") && svg.contains("<title>Fig. 63</title>"));
     assert!(svg.contains("id=\"line-OM\""));
     let e = error("[page]\nwidth = \"6 parsecs\"\n");
@@ -247,24 +247,24 @@ fn a_series_is_the_scene_held_over_its_range_at_each_angle() {
     assert_eq!(scene.held(), None);
     // Held over a quarter turn: each frame is that scene at its angle.
     let range = degrees(&[0.0, 30.0, 60.0, 90.0]);
-    let held = scene.clone().held_over(range.clone()).unwrap();
+    let held = scene.clone().with_held_view(range.clone());
     assert_eq!(held.held(), Some(range.as_slice()));
     let angles = degrees(&[15.0, 90.0]);
     let frames = held.frames(&angles).unwrap();
     for (a, frame) in angles.iter().zip(&frames) {
-        let one = held.clone().with_angles(vec![*a]).unwrap().figure();
+        let one = held.clone().with_angles(vec![*a]).figure().unwrap();
         assert_eq!(to_svg(frame), to_svg(&one));
     }
     // Not held: the series is held over the whole revolution, so a frame
     // differs from the figure fitted to its own pose.
     let frames = scene.frames(&angles).unwrap();
-    let own = scene.clone().with_angles(vec![angles[0]]).unwrap().figure();
+    let own = scene.clone().with_angles(vec![angles[0]]).figure().unwrap();
     assert_ne!(
         frames[0].panels()[0].transform(),
         own.panels()[0].transform()
     );
     // An overlay keeps its ghosts, its first pose moves.
-    let overlay = scene.with_angles(degrees(&[30.0, 200.0])).unwrap();
+    let overlay = scene.with_angles(degrees(&[30.0, 200.0]));
     let frame = &overlay.frames(&degrees(&[70.0])).unwrap()[0];
     let svg = to_svg(frame);
     assert!(svg.contains("\"angles_deg\":[70.0,200.0]"), "{svg}");
@@ -274,12 +274,16 @@ fn a_series_is_the_scene_held_over_its_range_at_each_angle() {
 fn a_held_view_needs_one_to_3600_angles() {
     use slider_crank::Angle;
     let scene = FigureName::Fig63Velocity.scene().unwrap();
-    let e = scene.clone().held_over(Vec::new()).unwrap_err().to_string();
+    // Checked once, when the figure is built.
+    let held = scene.clone().with_held_view(Vec::new());
+    let e = held.figure().unwrap_err().to_string();
     assert_eq!(e, "a view is held over at least one angle");
+    assert!(held.frames(&[Angle::deg(0.0)]).is_err());
     let many = vec![Angle::deg(0.0); 3601];
     let e = scene
         .clone()
-        .held_over(many.clone())
+        .with_held_view(many.clone())
+        .figure()
         .unwrap_err()
         .to_string();
     assert!(e.contains("at most 3600"), "{e}");

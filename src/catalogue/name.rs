@@ -313,10 +313,10 @@ impl FigureName {
             scene = scene.with_mechanism(m);
         }
         if let Some(a) = options.angle {
-            scene = scene.with_angles(vec![a])?;
+            scene = scene.with_angles(vec![a]);
         }
         if let Some(w) = options.omega {
-            scene = scene.with_omega(w)?;
+            scene = scene.with_omega(w);
         }
         if let Some(s) = options.style {
             scene = scene.with_style(s);
@@ -343,14 +343,14 @@ impl FigureName {
             scene = scene.with_notation(n);
         }
         if let Some(m) = options.mirror {
-            scene = scene.mirrored(m);
+            scene = scene.with_mirror(m);
         }
         let page = options.page(scene.page())?;
         scene = scene.with_page(page);
         if let Some(t) = &options.title {
             scene = scene.with_title(t.clone());
         }
-        Ok(scene.figure())
+        scene.figure()
     }
 
     /// The scene file of this figure, as a starting point: every key it
@@ -375,7 +375,7 @@ impl FigureName {
         }
         let angle = Angle::from_degrees(self.angle_degrees()).expect("finite");
         let scene = Scene::new(self.mechanism(), angle)
-            .named(self.name())
+            .with_name(self.name())
             .with_layers(self.layers())
             .with_page(self.page())
             .with_style(Style::Textbook)
@@ -383,11 +383,10 @@ impl FigureName {
         Some(if self.is_ng() {
             scene
                 .with_notation(Notation::Ng)
-                .mirrored(false)
+                .with_mirror(false)
                 .with_torque(NG_TORQUE)
-                .expect("finite")
         } else {
-            scene.with_notation(Notation::Textbook).mirrored(true)
+            scene.with_notation(Notation::Textbook).with_mirror(true)
         })
     }
 }

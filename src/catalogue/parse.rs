@@ -7,7 +7,7 @@ use super::{FigureName, FigureOptions, SceneFile, diagrams};
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
 use crate::figure::{Font, PageLength, Style, Title};
-use crate::scene::{Layer, Notation, Page, Scene};
+use crate::scene::{Layer, Notation, Page, Scene, valid};
 use crate::{Angle, SliderCrank, Unit};
 use serde::Deserialize;
 use std::ops::Range;
@@ -249,9 +249,9 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
             .with_layers([Layer::Mechanism]),
     };
     if let Some(n) = &file.name {
-        scene = scene.named(n.get_ref().clone());
+        scene = scene.with_name(n.get_ref().clone());
     } else if file.figure.is_none() {
-        scene = scene.named("scene");
+        scene = scene.with_name("scene");
     }
     if let Some(t) = &file.title {
         scene = scene.with_title(t.clone());
@@ -276,7 +276,7 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         }
         (Some(a), None) => {
             let angle = at(text, a.span(), Angle::from_degrees(*a.get_ref()))?;
-            scene = scene.with_angles(vec![angle])?;
+            scene = scene.with_angles(vec![angle]);
         }
         (None, Some(list)) => {
             let angles = list
@@ -285,7 +285,8 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
                 .map(|d| Angle::from_degrees(*d))
                 .collect::<Result<Vec<_>>>();
             let angles = at(text, list.span(), angles)?;
-            scene = at(text, list.span(), scene.with_angles(angles))?;
+            at(text, list.span(), valid::angles(&angles))?;
+            scene = scene.with_angles(angles);
         }
         (None, None) => {}
     }
@@ -302,24 +303,24 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         scene = scene.with_notation(*n.get_ref());
     }
     if let Some(m) = &file.mirror {
-        scene = scene.mirrored(*m.get_ref());
+        scene = scene.with_mirror(*m.get_ref());
     }
     if let Some(p) = &file.page {
         let built = page(text, p, scene.page())?;
         scene = scene.with_page(built);
     }
     if let Some((omega, span)) = speed(text, &file)? {
-        scene = at(text, span, scene.with_omega(omega))?;
+        scene = scene.with_omega(at(text, span, valid::omega(omega))?);
     }
     if let Some(t) = &file.torque {
-        scene = at(text, t.span(), scene.with_torque(*t.get_ref()))?;
+        scene = scene.with_torque(at(text, t.span(), valid::torque(*t.get_ref()))?);
     }
     if let Some(q) = &file.coupler {
         let point = CouplerPoint::new(*q.get_ref());
         scene = scene.with_coupler(at(text, q.span(), point)?);
     }
     if let Some(t) = &file.tolerance {
-        scene = at(text, t.span(), scene.with_tolerance(*t.get_ref()))?;
+        scene = scene.with_tolerance(at(text, t.span(), valid::tolerance(*t.get_ref()))?);
     }
     Ok(scene)
 }

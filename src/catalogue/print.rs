@@ -324,24 +324,20 @@ mod tests {
         let angles = [30.0, 120.0, 212.5].map(Angle::deg);
         let page = Page::sized("160mm".parse().unwrap(), "4.5in".parse().unwrap(), 12.5).unwrap();
         let scene = Scene::new(SliderCrank::new(25.0, 72.0, -3.5).unwrap(), angles[0])
-            .named("a \"quoted\" name")
+            .with_name("a \"quoted\" name")
             .with_angles(angles.to_vec())
-            .unwrap()
             .with_layers([Layer::Mechanism, Layer::Coupler, Layer::Torque])
             .with_style(Style::Handout)
             .with_font(crate::Font::LibertinusSerif)
             .with_notation(crate::Notation::Ng)
-            .mirrored(true)
+            .with_mirror(true)
             .with_page(page)
             .with_omega(-26.16)
-            .unwrap()
             .with_units(Units::MILLIMETRE_NEWTON)
             .with_title(Title::new("Ng's rig, *O* and *M*").unwrap())
             .with_torque(264.87)
-            .unwrap()
             .with_coupler(CouplerPoint::new(0.25).unwrap())
-            .with_tolerance(0.005)
-            .unwrap();
+            .with_tolerance(0.005);
         let text = super::scene(FigureName::Fig67Example, &scene);
         match super::super::parse::parse(&text).unwrap() {
             crate::SceneFile::Mechanism(back) => assert_eq!(back, scene, "{text}"),

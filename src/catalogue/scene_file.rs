@@ -56,7 +56,7 @@ impl SceneFile {
     /// The figure it describes.
     pub fn figure(&self) -> Result<Figure> {
         match self {
-            SceneFile::Mechanism(scene) => Ok(scene.figure()),
+            SceneFile::Mechanism(scene) => scene.figure(),
             SceneFile::Diagram(name, options) => name.figure(options),
         }
     }

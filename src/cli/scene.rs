@@ -73,7 +73,7 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
             if let Some(u) = &args.force_unit {
                 scene = scene.with_force_unit(u.clone());
             }
-            scene.figure()
+            scene.figure()?
         }
         SceneFile::Diagram(name, mut options) => {
             options.font = font.or(options.font);

@@ -239,7 +239,7 @@ impl Gallery {
             }
         }
         for entry in &self.scenes {
-            let svg = to_svg(&entry.scene.figure());
+            let svg = to_svg(&entry.scene.figure()?);
             for &format in &self.formats {
                 let name = format!("{}.{}", entry.name, format.extension());
                 let bytes = format.encode(&svg)?;

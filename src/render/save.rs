@@ -38,7 +38,7 @@ mod tests {
     #[test]
     fn the_extension_chooses_the_format_and_an_unknown_one_writes_nothing() {
         let dir = tempfile::tempdir().unwrap();
-        let figure = FigureName::Fig63Velocity.scene().unwrap().figure();
+        let figure = FigureName::Fig63Velocity.scene().unwrap().figure().unwrap();
         let svg = dir.path().join("f.svg");
         save(&figure, &svg).unwrap();
         assert_eq!(std::fs::read_to_string(&svg).unwrap(), to_svg(&figure));

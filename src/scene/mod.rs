@@ -7,7 +7,7 @@
 //! constructions it needs through a cache that computes each at most once
 //! and counts it ([`Evaluations`]); the result is an immutable
 //! [`Figure`] in world coordinates. The page is fitted to the scene's own
-//! pose, or held over a range of poses ([`Scene::held_over`],
+//! pose, or held over a range of poses ([`Scene::with_held_view`],
 //! [`Scene::frames`]) so that a series of figures shares one map.
 
 mod cache;
@@ -15,6 +15,7 @@ mod canvas;
 mod draw;
 mod layer;
 mod notation;
+pub(crate) mod valid;
 
 pub use cache::Evaluations;
 pub(crate) use canvas::round;
@@ -153,8 +154,23 @@ impl Default for Page {
 }
 
 /// What one figure shows. Built with [`Scene::new`] and the `with_*`
-/// methods (each validates its value), or read from TOML with
-/// [`SceneFile::from_toml`](crate::SceneFile::from_toml).
+/// methods, which cannot fail: the settings that can be out of range (the
+/// speed, the torque, the tolerance, the number of poses) are checked
+/// once, together, when the figure is built ([`Scene::build`],
+/// [`Scene::figure`], [`Scene::frames`]), with one `Result`. Read from
+/// TOML with [`SceneFile::from_toml`](crate::SceneFile::from_toml), which
+/// checks each value where the file gives it.
+///
+/// ```
+/// use slider_crank::{Angle, Layer, Scene, SliderCrank};
+/// let figure = Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::deg(30.0))
+///     .with_layers([Layer::Mechanism, Layer::Velocity, Layer::Torque])
+///     .with_omega(26.18)
+///     .with_torque(12.0)
+///     .with_mirror(true)
+///     .figure()?;
+/// # Ok::<(), slider_crank::Error>(())
+/// ```
 #[derive(Debug, Clone, PartialEq)]
 pub struct Scene {
     name: String,
@@ -172,13 +188,9 @@ pub struct Scene {
     torque: f64,
     coupler: CouplerPoint,
     tolerance: f64,
-    /// The poses the page map is held over ([`Scene::held_over`]).
+    /// The poses the page map is held over ([`Scene::with_held_view`]).
     held: Option<Vec<Angle>>,
 }
-
-/// The most poses a view is held over ([`Scene::held_over`]): every tenth
-/// of a degree.
-const MAX_HELD: usize = 3600;
 
 /// The poses a series is held over by default: the whole revolution,
 /// every degree.
@@ -222,26 +234,17 @@ impl Scene {
     }
 
     /// Names the figure (the `figure` of its metadata).
-    pub fn named(mut self, name: impl Into<String>) -> Self {
+    pub fn with_name(mut self, name: impl Into<String>) -> Self {
         self.name = name.into();
         self
     }
 
     /// The poses: the first carries the constructions, the others are
-    /// drawn as ghosts by the mechanism layer. Errors when empty.
-    pub fn with_angles(mut self, angles: Vec<Angle>) -> Result<Self> {
-        if angles.is_empty() {
-            return Err(Error::Parse("a scene needs at least one angle".into()));
-        }
-        if angles.len() > 64 {
-            return Err(Error::OutOfRange {
-                name: "angles",
-                value: angles.len() as f64,
-                reason: "at most 64 poses in one figure".into(),
-            });
-        }
+    /// drawn as ghosts by the mechanism layer. Building the figure fails
+    /// when there is none or more than 64.
+    pub fn with_angles(mut self, angles: Vec<Angle>) -> Self {
         self.angles = angles;
-        Ok(self)
+        self
     }
 
     /// The layers to draw (order and repeats do not matter).
@@ -273,7 +276,7 @@ impl Scene {
 
     /// Draws the cylinder on the left (a page transform; the world frame is
     /// unchanged).
-    pub fn mirrored(mut self, mirror: bool) -> Self {
+    pub fn with_mirror(mut self, mirror: bool) -> Self {
         self.mirror = mirror;
         self
     }
@@ -284,18 +287,11 @@ impl Scene {
         self
     }
 
-    /// The crank speed ω in rad/s, for scale notes (non-zero, at most
-    /// [`crate::MAX_OMEGA`]).
-    pub fn with_omega(mut self, omega: f64) -> Result<Self> {
-        let omega = crate::analytic::kinematics::check_omega(omega)?;
-        if omega == 0.0 {
-            return Err(Error::NotPositive {
-                name: "omega",
-                value: omega,
-            });
-        }
+    /// The crank speed ω in rad/s, for scale notes. Building the figure
+    /// fails unless it is non-zero and within [`crate::MAX_OMEGA`].
+    pub fn with_omega(mut self, omega: f64) -> Self {
         self.omega = omega;
-        Ok(self)
+        self
     }
 
     /// The units written in notes and metadata: names only, the numbers
@@ -324,10 +320,11 @@ impl Scene {
         self
     }
 
-    /// The crank torque of the torque layer (finite, in force × length).
-    pub fn with_torque(mut self, torque: f64) -> Result<Self> {
-        self.torque = finite("torque", torque)?;
-        Ok(self)
+    /// The crank torque of the torque layer, in force × length. Building
+    /// the figure fails unless it is finite.
+    pub fn with_torque(mut self, torque: f64) -> Self {
+        self.torque = torque;
+        self
     }
 
     /// The point of the rod whose path the coupler layer draws.
@@ -336,18 +333,11 @@ impl Scene {
         self
     }
 
-    /// The drawing tolerance of curves in page units, in [1e-6, 10].
-    pub fn with_tolerance(mut self, tolerance: f64) -> Result<Self> {
-        let t = positive("tolerance", tolerance)?;
-        if !(1e-6..=10.0).contains(&t) {
-            return Err(Error::OutOfRange {
-                name: "tolerance",
-                value: t,
-                reason: "give a page tolerance between 1e-6 and 10".into(),
-            });
-        }
-        self.tolerance = t;
-        Ok(self)
+    /// The drawing tolerance of curves in page units. Building the figure
+    /// fails unless it is in [1e-6, 10].
+    pub fn with_tolerance(mut self, tolerance: f64) -> Self {
+        self.tolerance = tolerance;
+        self
     }
 
     /// Holds the page map over the poses at `angles`: the figure is laid
@@ -379,26 +369,14 @@ impl Scene {
     ///   for them (the maps stay).
     ///
     /// The constructions computed for the fit are not counted in the
-    /// figure's [`Evaluations`], which count what it draws. Errors when
-    /// `angles` is empty or holds more than 3600 angles.
-    pub fn held_over(mut self, angles: Vec<Angle>) -> Result<Self> {
-        if angles.is_empty() {
-            return Err(Error::Parse(
-                "a view is held over at least one angle".into(),
-            ));
-        }
-        if angles.len() > MAX_HELD {
-            return Err(Error::OutOfRange {
-                name: "held angles",
-                value: angles.len() as f64,
-                reason: format!("a view is held over at most {MAX_HELD} poses"),
-            });
-        }
+    /// figure's [`Evaluations`], which count what it draws. Building the
+    /// figure fails when `angles` is empty or holds more than 3600 angles.
+    pub fn with_held_view(mut self, angles: Vec<Angle>) -> Self {
         self.held = Some(angles);
-        Ok(self)
+        self
     }
 
-    /// The poses the page map is held over ([`Scene::held_over`]); `None`
+    /// The poses the page map is held over ([`Scene::with_held_view`]); `None`
     /// when the figure is fitted to its own pose.
     pub fn held(&self) -> Option<&[Angle]> {
         self.held.as_deref()
@@ -410,9 +388,9 @@ impl Scene {
     /// [`Scene::held`] poses, or over the whole revolution (every degree)
     /// when it holds none. Every frame then has the same page-from-world
     /// map in each panel and the same page size (see
-    /// [`Scene::held_over`] for D at infinity, the detail and poses
+    /// [`Scene::with_held_view`] for D at infinity, the detail and poses
     /// outside the range). Each frame is the figure of
-    /// `self.held_over(range)?.with_angles(..)?`, byte for byte. Errors
+    /// `self.with_held_view(range).with_angles(..)`, byte for byte. Errors
     /// when `angles` is empty or holds more than 3600 angles.
     ///
     /// ```
@@ -428,27 +406,29 @@ impl Scene {
     /// # Ok::<(), slider_crank::Error>(())
     /// ```
     pub fn frames(&self, angles: &[Angle]) -> Result<Vec<Figure>> {
-        if angles.is_empty() || angles.len() > MAX_HELD {
+        valid::scene(self)?;
+        if angles.is_empty() || angles.len() > valid::MAX_HELD {
             return Err(Error::OutOfRange {
                 name: "frames",
                 value: angles.len() as f64,
-                reason: format!("a series has 1 to {MAX_HELD} frames"),
+                reason: format!("a series has 1 to {} frames", valid::MAX_HELD),
             });
         }
         let range = match &self.held {
             Some(held) => held.clone(),
             None => revolution(),
         };
-        let held = self.clone().held_over(range)?;
+        let held = self.clone().with_held_view(range);
+        valid::scene(&held)?;
         let layout = draw::held(&held, held.held().unwrap_or_default());
-        angles
+        Ok(angles
             .iter()
             .map(|a| {
                 let mut poses = held.angles.clone();
                 poses[0] = *a;
-                Ok(draw::build(&held.clone().with_angles(poses)?, Some(&layout)).0)
+                draw::build(&held.clone().with_angles(poses), Some(&layout)).0
             })
-            .collect()
+            .collect())
     }
 
     /// The figure's name.
@@ -531,15 +511,20 @@ impl Scene {
         self.tolerance
     }
 
-    /// Builds the figure, computing only what the layers draw.
-    pub fn figure(&self) -> Figure {
-        self.build().0
+    /// Builds the figure, computing only what the layers draw. Errors
+    /// name the first setting out of range (see [`Scene::build`]).
+    pub fn figure(&self) -> Result<Figure> {
+        Ok(self.build()?.0)
     }
 
     /// Builds the figure and says what was computed for it: fitted to
-    /// its own pose, or in the view held over [`Scene::held`].
-    pub fn build(&self) -> (Figure, Evaluations) {
+    /// its own pose, or in the view held over [`Scene::held`]. The one
+    /// check of the settings: the speed non-zero and within
+    /// [`crate::MAX_OMEGA`], the torque finite, the tolerance in
+    /// [1e-6, 10], 1 to 64 poses, 1 to 3600 held poses.
+    pub fn build(&self) -> Result<(Figure, Evaluations)> {
+        valid::scene(self)?;
         let layout = self.held.as_deref().map(|a| draw::held(self, a));
-        draw::build(self, layout.as_ref())
+        Ok(draw::build(self, layout.as_ref()))
     }
 }

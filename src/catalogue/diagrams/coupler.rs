@@ -30,7 +30,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let scene = ctx
         .scene(page.width(), page.height() - notes_height - band)?
         .with_layers([Layer::Mechanism]);
-    let panel = scene.figure().panels()[0].clone();
+    let panel = scene.figure()?.panels()[0].clone();
     let r = *panel.rect();
     let area = PageRect::new(r.x, r.y, r.width, r.height + band);
     let mut plot = Plot::with_map(

@@ -95,13 +95,13 @@ impl Ctx<'_> {
     /// options say otherwise) on a page of `width` × `height`.
     pub fn scene(&self, width: f64, height: f64) -> Result<Scene> {
         Ok(Scene::new(self.mechanism, self.angle)
-            .named(self.name.name())
+            .with_name(self.name.name())
             .with_page(Page::new(width, height, MARGIN)?)
             .with_style(self.style)
             .with_font(self.font)
             .with_units(self.units.clone())
-            .with_omega(self.omega)?
-            .mirrored(self.mirror))
+            .with_omega(self.omega)
+            .with_mirror(self.mirror))
     }
 }
 

@@ -35,7 +35,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Layer::Velocity,
         Layer::Scales,
     ]);
-    let base = scene.figure();
+    let base = scene.figure()?;
     let panel = base.panels()[0].clone();
     let mut plot = Plot::with_map(
         "mechanism",
