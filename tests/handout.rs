@@ -318,6 +318,11 @@ fn a_class_is_thirty_distinct_sheets_with_keys_the_same_for_the_same_seed() {
         assert_self_contained(&sheet, "sheet");
         assert_self_contained(&key, "key");
         assert!(sheet.contains(&format!("Exercise {k}")));
+        // The sheet draws the mechanism on a grid, no construction.
+        assert!(sheet.contains("id=\"sheet-grid\"") && sheet.contains("sheet-link-rod"));
+        for drawn in ["point-D", "point-E", "line-CE", "note-scales", "detail-"] {
+            assert!(!sheet.contains(drawn), "sheet {k} draws {drawn}");
+        }
         // The key agrees with analyze for its engine.
         let json = analyze_for(&key, &[]);
         assert!(agrees_with_analyze(&key, &json) >= 17);

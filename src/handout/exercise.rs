@@ -30,7 +30,12 @@ fn heading(h: &Handout, what: &str) -> String {
 /// The exercise sheet: data, the mechanism to scale on a grid, what to
 /// construct, and a field for each answer. No answer is on it.
 pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
-    let figure = figures::mechanism(h, FigureName::Fig62Displacement, Some(&[Layer::Mechanism]))?;
+    let fitted = figures::mechanism(
+        h,
+        FigureName::Fig63Velocity,
+        Some(&[Layer::Mechanism, Layer::Velocity]),
+    )?;
+    let figure = figures::only_the_mechanism(&fitted);
     let panel = &figure.panels()[0];
     let step = figures::grid_step(panel, GRID_SQUARE);
     let svg = figures::under_drawing(&to_svg(&figure), &figures::grid(panel, step));

@@ -3,7 +3,7 @@
 
 use super::Handout;
 use crate::error::Result;
-use crate::figure::{Figure, FigureOptions, Panel};
+use crate::figure::{Figure, FigureOptions, Panel, Role};
 use crate::render::{fmt, to_svg};
 use crate::{FigureName, Layer};
 
@@ -84,6 +84,44 @@ pub(super) fn velocity_diagrams(h: &Handout) -> Result<Figure> {
         figure.metadata().clone(),
     )
     .with_font(figure.font()))
+}
+
+/// The mechanism alone, on the page `fitted` was fitted to: the frame, the
+/// links, the crank circle, the line of stroke and the letters A, B, C of
+/// its first panel, the rest (constructions, dimensions, notes, an
+/// enlarged detail) left out. Drawn on the page of a figure with the
+/// velocity construction, it leaves room for the student's D and E.
+pub(super) fn only_the_mechanism(fitted: &Figure) -> Figure {
+    let Some(panel) = fitted.panels().first() else {
+        return fitted.clone();
+    };
+    let keep = |item: &crate::figure::Item| {
+        let id = item.id.as_str();
+        if id.starts_with("detail-") {
+            return false;
+        }
+        match item.role {
+            Role::Frame | Role::Link => true,
+            Role::Curve => id == "circle-crank",
+            Role::Auxiliary => id.starts_with("line-stroke"),
+            Role::Label => ["label-A", "label-B", "label-C"].contains(&id),
+            _ => false,
+        }
+    };
+    let items = panel.items().iter().filter(|i| keep(i)).cloned().collect();
+    let rect = *panel.rect();
+    let height = (rect.y + rect.height + rect.y).min(fitted.height());
+    let panel = Panel::new(panel.id(), rect, *panel.transform(), items);
+    Figure::new(
+        fitted.name(),
+        fitted.width(),
+        height,
+        fitted.style(),
+        fitted.tolerance(),
+        vec![panel],
+        fitted.metadata().clone(),
+    )
+    .with_font(fitted.font())
 }
 
 /// The SVG of `figure` to be inlined in a page that holds other figures:
