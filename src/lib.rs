@@ -105,7 +105,9 @@
 //!
 //! [`gallery`] makes every named figure in each format, the tables and an
 //! `index.html` captioning each figure with the seed section it
-//! reproduces.
+//! reproduces. [`handout`] writes printable pages that work one engine
+//! through §35–37 and Ng step by step, and exercise sheets with their
+//! answer keys for a whole class.
 //!
 //! With `default-features = false` the crate computes every number and
 //! writes SVG, with neither clap nor resvg nor the PDF writer among its
@@ -143,6 +145,7 @@ parse_by_name!(
     Notation,
     Assembly,
     table::Format,
+    handout::Paper,
 );
 
 pub mod analytic;
@@ -155,6 +158,8 @@ mod error;
 pub mod figure;
 pub mod gallery;
 pub mod geom;
+pub mod handout;
+mod html;
 pub mod input;
 mod mechanism;
 pub mod render;

@@ -75,6 +75,18 @@ enum Command {
     /// directory is what this build makes, 1 when some differ or are
     /// missing (each printed), 2 for an error.
     Gallery(cli::gallery::GalleryArgs),
+    /// Write a printable teaching handout (HTML) that works one engine
+    /// through §35–37 and Ng step by step; or an exercise sheet and its
+    /// answer key (--exercise); or sheets for a whole class (--class)
+    ///
+    /// The page is one self-contained file: the figures inlined as SVG, no
+    /// script, nothing fetched from the network. Every value read off a
+    /// construction is set beside the exact value (the numbers `analyze`
+    /// prints, also in each value's data-value attribute). Print rules for
+    /// A4 or Letter keep every figure and table on one page. Each file is
+    /// written whole or not at all; a failed run leaves none.
+    #[command(mut_arg("length", |a| a.visible_alias("units")))]
+    Handout(cli::handout::HandoutArgs),
 }
 
 /// Exit code of a refused run (bad input, unwritable output).
@@ -101,6 +113,7 @@ fn main() -> ExitCode {
         Command::Figure(args) => cli::figure::run(args, &mut out).map(|()| true),
         Command::Scene(args) => cli::scene::run(args, &mut out).map(|()| true),
         Command::Gallery(args) => cli::gallery::run(args, &mut out),
+        Command::Handout(args) => cli::handout::run(args, &mut out).map(|()| true),
     }
     .and_then(|ok| out.finish().map(|()| ok));
     match result {
@@ -134,7 +147,7 @@ fn parse_error(e: clap::Error) -> ExitCode {
     }
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         eprintln!(
-            "slider-crank: a subcommand is required: gallery, analyze, table, check, figure or scene (see --help)"
+            "slider-crank: a subcommand is required: gallery, handout, analyze, table, check, figure or scene (see --help)"
         );
         return ExitCode::from(REFUSED);
     }

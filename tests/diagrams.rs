@@ -970,3 +970,36 @@ fn metadata_keeps_the_contract_and_ids_are_unique() {
         assert_eq!(ids.len(), all, "{}: an id is repeated", name.name());
     }
 }
+
+#[test]
+fn fig_64_makes_room_for_the_detail_of_a_small_velocity_triangle() {
+    // r = 60, l = 240 at 40° on Fig. 64's page: CE is too small to letter,
+    // so the scene sets a detail below its drawing; the time base must
+    // start below it and below the scale notes.
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(slider_crank::SliderCrank::in_line(60.0, 240.0).unwrap());
+    options.angle = Some(slider_crank::Angle::deg(40.0));
+    let svg = to_svg(&FigureName::Fig64VelocityDiagrams.figure(&options).unwrap());
+    let panels = metadata(&svg)["panels"].as_array().unwrap().clone();
+    let rect = |id: &str| -> Vec<f64> {
+        let p = panels
+            .iter()
+            .find(|p| p["id"] == id)
+            .unwrap_or_else(|| panic!("{id}"));
+        p["rect"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect()
+    };
+    let detail = rect("panel-detail");
+    let time = rect("panel-time-base");
+    assert!(time[1] > detail[1] + detail[3], "{detail:?} {time:?}");
+    // The scale notes of the mechanism's panel lie above the time base.
+    let y: f64 = attr(&svg, "note-scales-3", "y")
+        .expect("three scale notes")
+        .parse()
+        .unwrap();
+    assert!(y < time[1], "notes at {y}, time base from {}", time[1]);
+}

@@ -4,11 +4,11 @@ use super::args::{AngleSpec, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
 use serde_json::{Value, json};
-use slider_crank::analytic::statics::{self, Friction};
-use slider_crank::construct::{InstantCentre, Kisch, VelocityLine};
-use slider_crank::geom::{Intersection, Point};
+use slider_crank::analytic::statics::Friction;
+use slider_crank::construct::Reading;
+use slider_crank::geom::Point;
 use slider_crank::render::plain;
-use slider_crank::{Angle, ChainCentres, Error, Kinematics, Result, SliderCrank, Units};
+use slider_crank::{Angle, ChainCentres, Error, Result, SliderCrank, Units};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -52,31 +52,11 @@ pub struct AnalyzeArgs {
     pub chain: super::chain::ChainArgs,
 }
 
-/// Everything computed at one angle.
+/// Everything computed at one angle: the reading and the six virtual
+/// centres.
 struct Report {
-    degrees: f64,
-    omega: f64,
-    c: Point,
-    b: Point,
-    a: Point,
-    d: Intersection,
-    e: Point,
-    f: Point,
-    g: Point,
-    h: Option<Point>,
-    exact: Kinematics,
-    graphical: [f64; 4],
-    statics: Option<Statics>,
+    reading: Reading,
     centres: ChainCentres,
-}
-
-struct Statics {
-    om: f64,
-    force: Option<f64>,
-    side_thrust: Option<f64>,
-    with_friction: Option<Friction>,
-    transmission: f64,
-    mu: f64,
 }
 
 /// +0.0 for −0.0, so that no "-0" is printed.
@@ -117,72 +97,21 @@ fn analyse(
     mu: f64,
 ) -> Result<Report> {
     let pose = m.pose(Angle::from_degrees(degrees)?);
-    let exact = Kinematics::new(&pose, omega)?;
-    let d = InstantCentre::construct(&pose);
-    let e = VelocityLine::construct(&pose);
-    let kisch = Kisch::construct(&pose, &e);
-    let graphical = [
-        omega * e.velocity_ratio(),
-        omega * omega * kisch.points().acceleration_ratio(),
-        omega * d.rod_angular_velocity_ratio(),
-        omega * omega * kisch.points().rod_angular_acceleration_ratio(),
-    ];
-    let statics = match torque {
-        None => None,
-        Some(t) => {
-            let force = statics::slider_force(&pose, t)?;
-            let (side_thrust, with_friction) = match force {
-                Some(f) => (
-                    Some(statics::side_thrust(&pose, f)?),
-                    Some(statics::with_friction(&pose, f, mu)?),
-                ),
-                None => (None, None),
-            };
-            Some(Statics {
-                om: statics::om(&pose),
-                force,
-                side_thrust,
-                with_friction,
-                transmission: pose.transmission_angle().to_degrees(),
-                mu,
-            })
-        }
-    };
-    if let Some(bad) = graphical.iter().find(|g| !g.is_finite()) {
-        return Err(Error::OutOfRange {
-            name: "omega",
-            value: omega,
-            reason: format!(
-                "the values read off the construction at θ = {degrees}° ({bad}) exceed the largest number: give ω per a longer unit of time or the lengths in a smaller unit"
-            ),
-        });
-    }
     Ok(Report {
-        degrees: pose.angle().degrees(),
-        omega,
-        c: pose.c(),
-        b: pose.b(),
-        a: pose.a(),
-        d: d.d(),
-        e: e.e(),
-        f: kisch.points().f(),
-        g: kisch.points().g(),
-        h: kisch.h(),
-        exact,
-        graphical,
-        statics,
+        reading: Reading::new(&pose, omega, torque, mu)?,
         centres: ChainCentres::of_slider_crank(&pose),
     })
 }
 
-fn to_json(m: &SliderCrank, r: &Report, units: &Units) -> Value {
+fn to_json(m: &SliderCrank, report: &Report, units: &Units) -> Value {
+    let r = &report.reading;
     let mut v = json!({
         "mechanism": {"crank": m.crank(), "rod": m.rod(), "offset": num(m.offset())},
         "units": units,
-        "angle_deg": num(r.degrees),
+        "angle_deg": num(r.pose.angle().degrees()),
         "omega": num(r.omega),
         "points": {
-            "C": point_json(r.c), "B": point_json(r.b), "A": point_json(r.a),
+            "C": point_json(r.pose.c()), "B": point_json(r.pose.b()), "A": point_json(r.pose.a()),
             "D": super::chain::centre_json(&r.d), "E": point_json(r.e), "F": point_json(r.f),
             "G": point_json(r.g), "H": opt_point_json(r.h),
         },
@@ -195,12 +124,12 @@ fn to_json(m: &SliderCrank, r: &Report, units: &Units) -> Value {
             "rod_angular_acceleration": num(r.exact.rod_angular_acceleration),
         },
         "graphical": {
-            "velocity": num(r.graphical[0]),
-            "acceleration": num(r.graphical[1]),
-            "rod_angular_velocity": num(r.graphical[2]),
-            "rod_angular_acceleration": num(r.graphical[3]),
+            "velocity": num(r.graphical.velocity),
+            "acceleration": num(r.graphical.acceleration),
+            "rod_angular_velocity": num(r.graphical.rod_angular_velocity),
+            "rod_angular_acceleration": num(r.graphical.rod_angular_acceleration),
         },
-        "virtual_centres": super::chain::centres_json(&r.centres),
+        "virtual_centres": super::chain::centres_json(&report.centres),
     });
     if let Some(s) = &r.statics {
         let (with_friction, locking) = match s.with_friction {
@@ -215,7 +144,7 @@ fn to_json(m: &SliderCrank, r: &Report, units: &Units) -> Value {
             "slider_force_with_friction": with_friction,
             "self_locking": locking,
             "friction": s.mu,
-            "transmission_angle_deg": num(s.transmission),
+            "transmission_angle_deg": num(s.transmission_deg),
         });
     }
     v
@@ -228,18 +157,19 @@ fn fmt_point(p: Option<Point>) -> String {
     }
 }
 
-fn to_text(r: &Report, units: &Units) -> String {
+fn to_text(report: &Report, units: &Units) -> String {
+    let r = &report.reading;
     let length = units.length();
-    let mut out = format!("θ = {}°\n", r.degrees);
+    let mut out = format!("θ = {}°\n", r.pose.angle().degrees());
     out.push_str(&format!(
         "  points ({length}): C crank centre, B crank pin, A cross-head, D instantaneous centre of the rod,\n          \
          E where the rod produced meets the perpendicular to the stroke through C,\n          \
          F and G of Klein's and Kisch's constructions, H of Kisch's\n",
     ));
     for (name, p) in [
-        ("C", Some(r.c)),
-        ("B", Some(r.b)),
-        ("A", Some(r.a)),
+        ("C", Some(r.pose.c())),
+        ("B", Some(r.pose.b())),
+        ("A", Some(r.pose.a())),
         ("D", r.d.point()),
         ("E", Some(r.e)),
         ("F", Some(r.f)),
@@ -264,25 +194,25 @@ fn to_text(r: &Report, units: &Units) -> String {
         (
             "velocity dx/dt",
             k.velocity,
-            r.graphical[0],
+            r.graphical.velocity,
             velocity.as_str(),
         ),
         (
             "acceleration d²x/dt²",
             k.acceleration,
-            r.graphical[1],
+            r.graphical.acceleration,
             acceleration.as_str(),
         ),
         (
             "rod angular velocity",
             k.rod_angular_velocity,
-            r.graphical[2],
+            r.graphical.rod_angular_velocity,
             "rad/s",
         ),
         (
             "rod angular accel.",
             k.rod_angular_acceleration,
-            r.graphical[3],
+            r.graphical.rod_angular_acceleration,
             "rad/s²",
         ),
     ];
@@ -332,7 +262,7 @@ fn to_text(r: &Report, units: &Units) -> String {
         }
         out.push_str(&format!(
             "    transmission angle β (°)  {:.10}\n",
-            num(s.transmission)
+            num(s.transmission_deg)
         ));
     }
     out

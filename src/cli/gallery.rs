@@ -1,13 +1,12 @@
 //! `slider-crank gallery [--out DIR]`: every named figure as SVG, PNG and
 //! PDF, every table, and an index.html, written into a directory.
 
-use super::output::Stdout;
+use super::output::{Progress, Stdout};
 use clap::Args;
 use slider_crank::gallery::Gallery;
 use slider_crank::input::{MAX_SCENE_BYTES, read_text};
 use slider_crank::render::write_atomic;
 use slider_crank::{Error, FigureName, Result};
-use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
 /// Write the gallery: every figure at the seed's parameters, every table,
@@ -63,7 +62,7 @@ pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
     }
     prepare(dir)?;
     let names = gallery.file_names();
-    let mut progress = Progress::new(names.len());
+    let mut progress = Progress::new("gallery", names.len());
     let mut made = 0;
     let result = gallery.build(|file| {
         progress.show(made + 1, &file.name);
@@ -93,7 +92,7 @@ pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
 /// standard output for each that differs or is missing.
 fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
     let names = gallery.file_names();
-    let mut progress = Progress::new(names.len());
+    let mut progress = Progress::new("gallery", names.len());
     let (mut done, mut differ) = (0, 0);
     let result = gallery.build(|file| {
         done += 1;
@@ -148,38 +147,5 @@ fn prepare(dir: &Path) -> Result<()> {
             );
             Error::io_at(message, dir, e)
         }),
-    }
-}
-
-/// The progress line on standard error: rewritten in place on a terminal,
-/// one line per file otherwise.
-struct Progress {
-    total: usize,
-    terminal: bool,
-}
-
-impl Progress {
-    fn new(total: usize) -> Self {
-        Progress {
-            total,
-            terminal: std::io::stderr().is_terminal(),
-        }
-    }
-
-    fn show(&mut self, done: usize, name: &str) {
-        let mut err = std::io::stderr().lock();
-        // Progress is a courtesy: a standard error that cannot be written
-        // does not stop the gallery.
-        let _ = if self.terminal {
-            write!(err, "\r\x1b[2Kgallery: {done}/{} {name}", self.total).and_then(|()| err.flush())
-        } else {
-            writeln!(err, "gallery: {done}/{} {name}", self.total)
-        };
-    }
-
-    fn finish(&mut self) {
-        if self.terminal {
-            let _ = writeln!(std::io::stderr());
-        }
     }
 }

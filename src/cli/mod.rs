@@ -6,6 +6,7 @@ pub mod chain;
 pub mod check;
 pub mod figure;
 pub mod gallery;
+pub mod handout;
 pub mod output;
 pub mod scene;
 pub mod table;

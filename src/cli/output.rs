@@ -9,7 +9,7 @@
 //! seen.
 
 use slider_crank::{Error, Result};
-use std::io::{BufWriter, ErrorKind, Write};
+use std::io::{BufWriter, ErrorKind, IsTerminal, Write};
 
 /// The program's standard output, buffered.
 pub struct Stdout {
@@ -109,4 +109,43 @@ fn replaced_closed(file: &std::fs::File) -> bool {
 #[cfg(not(unix))]
 fn raw() -> std::io::Result<Box<dyn Write>> {
     Ok(Box::new(std::io::stdout()))
+}
+
+/// The progress line on standard error: rewritten in place on a terminal,
+/// one line per file otherwise.
+pub struct Progress {
+    what: &'static str,
+    total: usize,
+    terminal: bool,
+}
+
+impl Progress {
+    /// A progress line for `total` steps, each line starting with `what:`.
+    pub fn new(what: &'static str, total: usize) -> Self {
+        Progress {
+            what,
+            total,
+            terminal: std::io::stderr().is_terminal(),
+        }
+    }
+
+    /// Shows step `done` of the total, on `name`.
+    pub fn show(&mut self, done: usize, name: &str) {
+        let mut err = std::io::stderr().lock();
+        // Progress is a courtesy: a standard error that cannot be written
+        // does not stop the work.
+        let _ = if self.terminal {
+            write!(err, "\r\x1b[2K{}: {done}/{} {name}", self.what, self.total)
+                .and_then(|()| err.flush())
+        } else {
+            writeln!(err, "{}: {done}/{} {name}", self.what, self.total)
+        };
+    }
+
+    /// Ends the line on a terminal.
+    pub fn finish(&mut self) {
+        if self.terminal {
+            let _ = writeln!(std::io::stderr());
+        }
+    }
 }

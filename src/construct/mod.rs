@@ -4,7 +4,8 @@
 //! One construction per file. Each computes only what it needs (Kisch never
 //! builds D) and reports its derived quantity as a rate with respect to the
 //! crank angle θ; multiply by ω or ω² for time rates. [`cross_check`] sets
-//! every value read off a construction beside the analytic core's.
+//! every value read off a construction beside the analytic core's;
+//! [`Reading`] holds everything read at one pose (what `analyze` prints).
 
 mod acceleration;
 mod centrode;
@@ -13,6 +14,7 @@ mod coupler;
 mod instant_centre;
 mod kisch;
 mod klein;
+mod reading;
 mod torque;
 mod velocity_line;
 mod virtual_centres;
@@ -24,6 +26,7 @@ pub use coupler::CouplerPoint;
 pub use instant_centre::InstantCentre;
 pub use kisch::Kisch;
 pub use klein::Klein;
+pub use reading::{Graphical, Reading, Statics};
 pub use torque::TorqueLine;
 pub use velocity_line::VelocityLine;
 pub use virtual_centres::{Link, VirtualCentres, kennedy_residual};

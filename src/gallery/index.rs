@@ -4,23 +4,18 @@
 
 use super::{Gallery, SceneEntry};
 use crate::FigureName;
+use crate::html::document;
 use crate::render::FileFormat;
 use crate::table::{Table, TableName};
-use maud::{DOCTYPE, Markup, PreEscaped, html};
+use maud::{Markup, html};
 
-/// The page's style sheet: a plain book page.
+/// The page's own style, after the book page of [`crate::html::BOOK_STYLE`].
 const STYLE: &str = "
-body { font-family: 'New Computer Modern', 'Latin Modern Roman', Georgia, serif;
-       max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #111; line-height: 1.4; }
 figure { margin: 2.5rem 0; }
 figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
 figcaption { margin-top: .5rem; }
 .source { font-weight: bold; }
 .files a { margin-right: .6rem; }
-code { font-size: .9em; }
-table { border-collapse: collapse; margin: 1rem 0; }
-th, td { padding: .2rem .7rem; text-align: right; border-bottom: 1px solid #ddd; }
-caption { text-align: left; font-weight: bold; padding-bottom: .3rem; }
 ";
 
 /// The three groups of figures and their headings.
@@ -54,71 +49,64 @@ fn groups(figures: &[FigureName]) -> [(&'static str, &'static str, Vec<FigureNam
 
 /// The whole page.
 pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
-    let markup = html! {
-        (DOCTYPE)
-        html lang="en" {
-            head {
-                meta charset="utf-8";
-                meta name="viewport" content="width=device-width, initial-scale=1";
-                title { "slider-crank: the figures and tables of the seeds" }
-                style { (PreEscaped(STYLE)) }
-            }
-            body {
-                h1 { "The figures and tables of the seeds" }
-                p {
-                    "The classical graphical constructions of the slider-crank mechanism, drawn anew "
-                    "at each seed’s own parameters from the text of the textbook chapter "
-                    "“Slider-crank chains” (Chapter IV, §34–37) and of T. W. Ng, “A slider-crank "
-                    "experiment to determine the action of static forces”. Each figure is given as "
-                    (formats(gallery.formats())) "; the picture links to the first."
-                }
-                nav {
-                    ul {
-                        @for (id, heading, figures) in groups(gallery.figures()) {
-                            @if !figures.is_empty() {
-                                li { a href={ "#" (id) } { (heading) } }
-                            }
-                        }
-                        @if !gallery.scenes.is_empty() {
-                            li { a href="#scenes" { "Scene files" } }
-                        }
-                        li { a href="#tables" { "Tables" } }
-                    }
-                }
+    let body = html! {
+        h1 { "The figures and tables of the seeds" }
+        p {
+            "The classical graphical constructions of the slider-crank mechanism, drawn anew "
+            "at each seed’s own parameters from the text of the textbook chapter "
+            "“Slider-crank chains” (Chapter IV, §34–37) and of T. W. Ng, “A slider-crank "
+            "experiment to determine the action of static forces”. Each figure is given as "
+            (formats(gallery.formats())) "; the picture links to the first."
+        }
+        nav {
+            ul {
                 @for (id, heading, figures) in groups(gallery.figures()) {
                     @if !figures.is_empty() {
-                        section id=(id) {
-                            h2 { (heading) }
-                            @for f in figures {
-                                (figure(f, gallery.formats()))
-                            }
-                        }
+                        li { a href={ "#" (id) } { (heading) } }
                     }
                 }
                 @if !gallery.scenes.is_empty() {
-                    section id="scenes" {
-                        h2 { "Scene files" }
-                        @for entry in &gallery.scenes {
-                            (scene(entry, gallery.formats()))
-                        }
-                    }
+                    li { a href="#scenes" { "Scene files" } }
                 }
-                section id="tables" {
-                    h2 { "Tables" }
-                    @for (name, t) in tables {
-                        (table(*name, t))
-                    }
-                }
-                footer {
-                    p {
-                        "Made by slider-crank " (env!("CARGO_PKG_VERSION"))
-                        " with " code { "slider-crank gallery" } "."
+                li { a href="#tables" { "Tables" } }
+            }
+        }
+        @for (id, heading, figures) in groups(gallery.figures()) {
+            @if !figures.is_empty() {
+                section id=(id) {
+                    h2 { (heading) }
+                    @for f in figures {
+                        (figure(f, gallery.formats()))
                     }
                 }
             }
         }
+        @if !gallery.scenes.is_empty() {
+            section id="scenes" {
+                h2 { "Scene files" }
+                @for entry in &gallery.scenes {
+                    (scene(entry, gallery.formats()))
+                }
+            }
+        }
+        section id="tables" {
+            h2 { "Tables" }
+            @for (name, t) in tables {
+                (table(*name, t))
+            }
+        }
+        footer {
+            p {
+                "Made by slider-crank " (env!("CARGO_PKG_VERSION"))
+                " with " code { "slider-crank gallery" } "."
+            }
+        }
     };
-    markup.into_string()
+    document(
+        "slider-crank: the figures and tables of the seeds",
+        STYLE,
+        body,
+    )
 }
 
 /// "SVG, PNG and PDF".

@@ -36,6 +36,10 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Layer::Scales,
     ]);
     let base = scene.figure()?;
+    // A velocity triangle too small to letter gets an enlarged detail, set
+    // by the scene below its drawing with the scale notes: the rest of the
+    // sheet moves down by what that adds.
+    let grown = (base.height() - TOP).max(0.0);
     let panel = base.panels()[0].clone();
     let mut plot = Plot::with_map(
         "mechanism",
@@ -78,14 +82,17 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     construction(&mut plot, &ctx.pose());
     let drawn = plot.finish();
     sheet.panel(panel.with_items(drawn.items().iter().cloned()));
+    for detail in &base.panels()[1..] {
+        sheet.panel(detail.clone());
+    }
 
     // (b) The velocity on a time base over one revolution, against simple
     // harmonic motion of the same amplitude V_c.
     let period = std::f64::consts::TAU / omega;
     let vc = ctx.crank_speed();
     let (lo, hi) = extent(&m, |p| -omega * p.position_rate());
-    let top = TOP + 6.0;
-    let rect = ctx.band(top, page.height() - top - 60.0);
+    let top = TOP + grown + 6.0;
+    let rect = ctx.band(top, page.height() - TOP - 6.0 - 60.0);
     let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
     let y = Axis::nice(
         &format!("*V*_p ({unit}/s), towards the crank"),
@@ -127,8 +134,9 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Some(&format!("the pose drawn above, θ = {}°", short(theta))),
     );
     sheet.plot(time);
+    sheet.height(page.height() + grown);
     sheet.notes(
-        Point::new(20.0, page.height() - 48.0),
+        Point::new(20.0, page.height() + grown - 48.0),
         &[
             format!(
                 "Scale: *CB* = *r* represents *V*_c = *r*ω = {} {unit}/s; *CE*′ and the height of *E*″ represent *V*_p to the same scale.",

@@ -1,0 +1,174 @@
+//! `slider-crank handout`: a printable page that works one engine through
+//! §35–37 and Ng; with `--exercise`, an exercise sheet and its answer key;
+//! with `--class N`, a sheet and a key for each of N engines and a table
+//! of every answer.
+
+use super::args::{MechanismArgs, SpeedArgs, UnitArgs};
+use super::output::{Progress, Stdout};
+use clap::Args;
+use slider_crank::handout::{Class, Handout, Paper};
+use slider_crank::render::write_atomic;
+use slider_crank::{Angle, Error, Result, Units};
+use std::path::{Path, PathBuf};
+
+/// Write a teaching handout, an exercise sheet with its key, or a class's
+/// sheets.
+#[derive(Debug, Args)]
+pub struct HandoutArgs {
+    #[command(flatten)]
+    pub mechanism: MechanismArgs,
+    #[command(flatten)]
+    pub speed: SpeedArgs,
+    /// Crank angle θ in degrees of the pose worked through,
+    /// counter-clockwise from +x, the direction from the crank centre
+    /// towards the slider (0: outer dead centre)
+    #[arg(
+        long,
+        default_value_t = 45.0,
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
+    pub angle: f64,
+    #[command(flatten)]
+    pub units: UnitArgs,
+    /// Crank torque T, counter-clockwise positive, in force × the length
+    /// unit (FORCE·UNIT): adds the step of Ng's OM line and the forces
+    /// (slider force, side thrust, friction, transmission angle)
+    #[arg(long, allow_negative_numbers = true, value_name = "T")]
+    pub torque: Option<f64>,
+    /// Coefficient of friction μ ≥ 0 of the slider in its guides (used
+    /// with --torque)
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MU",
+        default_value_t = 0.0,
+        requires = "torque"
+    )]
+    pub friction: f64,
+    /// The paper the page is printed on: a4 or letter (the CSS @page size;
+    /// no figure or table is broken across two pages)
+    #[arg(long, value_name = "PAPER", default_value = "a4")]
+    pub paper: Paper,
+    /// Write an exercise sheet instead: only the mechanism to scale on a
+    /// faint grid, the data and empty answer fields; its answer key goes
+    /// beside it, FILE-key.html
+    #[arg(long)]
+    pub exercise: bool,
+    /// Write exercise sheets for a class of N different engines (in line,
+    /// n = l/r from 3.5 to 6, angles clear of the dead centres and the
+    /// quarter turns, 100 to 1500 rpm), drawn from --seed: FILE-01.html
+    /// and FILE-01-key.html for each, and FILE-answers.html with every
+    /// answer for the teacher. Implies --exercise; the engines are the
+    /// class's own, so --crank, --rod, --offset, --angle and the speed are
+    /// not taken
+    #[arg(
+        long,
+        value_name = "N",
+        conflicts_with_all = ["crank", "rod", "offset", "angle", "rpm", "omega"]
+    )]
+    pub class: Option<usize>,
+    /// The seed the class's engines are drawn from: the same seed gives
+    /// the same engines on every machine and with every version
+    #[arg(long, value_name = "S", default_value_t = 1, requires = "class")]
+    pub seed: u64,
+    /// The page to write, an .html file; an exercise's key and a class's
+    /// files are named after it. Each file is written whole or not at all
+    #[arg(long, value_name = "FILE.html", default_value = "handout.html")]
+    pub out: PathBuf,
+}
+
+/// The path without its `.html` (or `.htm`) extension, to which `-key`,
+/// `-01` and `-answers` are added; an error for any other extension.
+fn stem(path: &Path) -> Result<String> {
+    let text = path.to_string_lossy().into_owned();
+    match path.extension().and_then(|e| e.to_str()) {
+        Some("html") => Ok(text[..text.len() - 5].to_string()),
+        Some("htm") => Ok(text[..text.len() - 4].to_string()),
+        None if !text.is_empty() && !text.ends_with('/') => Ok(text),
+        _ => Err(Error::Parse(format!(
+            "cannot write {}: a handout is an HTML page, give a file ending in .html",
+            path.display()
+        ))),
+    }
+}
+
+/// Writes every file, each whole; if one cannot be written, the ones this
+/// run created are removed again, so that a failed run leaves no file.
+fn write_all(files: &[(PathBuf, String)], progress: Option<&mut Progress>) -> Result<()> {
+    let mut created: Vec<&Path> = Vec::new();
+    let mut progress = progress;
+    for (i, (path, text)) in files.iter().enumerate() {
+        if let Some(p) = progress.as_deref_mut() {
+            p.show(i + 1, &path.display().to_string());
+        }
+        let existed = path.exists();
+        if let Err(e) = write_atomic(path, text.as_bytes()) {
+            for p in created {
+                let _ = std::fs::remove_file(p);
+            }
+            return Err(e);
+        }
+        if !existed {
+            created.push(path);
+        }
+    }
+    Ok(())
+}
+
+/// Runs the subcommand: the files written; nothing on standard output.
+pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
+    let stem = stem(&args.out)?;
+    let units = args.units.units(Units::FOOT_POUND);
+    let mut template = Handout::new(
+        args.mechanism.mechanism()?,
+        Angle::from_degrees(args.angle)?,
+    )
+    .with_omega(args.speed.omega()?)?
+    .with_units(units)
+    .with_paper(args.paper);
+    if let Some(t) = args.torque {
+        template = template.with_torque(t, args.friction)?;
+    }
+    let path = |suffix: &str| PathBuf::from(format!("{stem}{suffix}.html"));
+    if let Some(count) = args.class {
+        let class = Class::draw(count, args.seed, &template)?;
+        let width = count.to_string().len().max(2);
+        let mut files = Vec::with_capacity(2 * count + 1);
+        for (i, h) in class.handouts().iter().enumerate() {
+            let no = format!("-{:0width$}", i + 1);
+            files.push((path(&no), h.exercise()?));
+            files.push((path(&format!("{no}-key")), h.key()?));
+        }
+        files.push((path("-answers"), class.answers()?));
+        let mut progress = Progress::new("handout", files.len());
+        let result = write_all(&files, Some(&mut progress));
+        progress.finish();
+        result?;
+        eprintln!(
+            "handout: {count} exercises, their keys and the answers, {}",
+            path("-answers").display()
+        );
+        return Ok(());
+    }
+    if args.exercise {
+        let files = [
+            (args.out.clone(), template.exercise()?),
+            (path("-key"), template.key()?),
+        ];
+        return write_all(&files, None);
+    }
+    write_all(&[(args.out.clone(), template.page()?)], None)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn files_are_named_after_the_page() {
+        assert_eq!(stem(Path::new("a/b.html")).unwrap(), "a/b");
+        assert_eq!(stem(Path::new("sheet")).unwrap(), "sheet");
+        assert!(stem(Path::new("x.pdf")).is_err());
+    }
+}

@@ -1,0 +1,144 @@
+//! Exercise sheets and their answer keys. A sheet draws only the mechanism
+//! to scale on a faint grid, with the data and empty answer fields; the
+//! key draws the whole construction and gives every answer read off it
+//! beside the exact value.
+
+use super::page::{
+    command, conventions, data_table, footer, picture, plain_data, style, values_table,
+};
+use super::steps::{Picture, data_sentence, rows};
+use super::{Handout, figures};
+use crate::construct::Reading;
+use crate::error::Result;
+use crate::html::{document, rich};
+use crate::render::to_svg;
+use crate::{FigureName, Layer};
+use maud::html;
+
+/// Page units of a grid square, about: 4.5 mm when a 760-unit figure is
+/// printed across an A4 page.
+const GRID_SQUARE: f64 = 20.0;
+
+/// The heading of a sheet or key.
+fn heading(h: &Handout, what: &str) -> String {
+    match &h.title {
+        Some(t) => format!("{t}: {what}"),
+        None => format!("The slider-crank engine: {what}"),
+    }
+}
+
+/// The exercise sheet: data, the mechanism to scale on a grid, what to
+/// construct, and a field for each answer. No answer is on it.
+pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
+    let fitted = figures::mechanism(
+        h,
+        FigureName::Fig63Velocity,
+        Some(&[Layer::Mechanism, Layer::Velocity]),
+    )?;
+    let figure = figures::only_the_mechanism(&fitted);
+    let panel = &figure.panels()[0];
+    let step = figures::grid_step(panel, GRID_SQUARE);
+    let svg = figures::under_drawing(&to_svg(&figure), &figures::grid(panel, step));
+    let svg = figures::inline_svg(&svg, "sheet");
+    let u = h.units().length().as_str().to_string();
+    let asked: Vec<_> = rows(h, r).into_iter().filter(|row| row.asked).collect();
+    let title = heading(h, "exercise");
+    let mut tasks = vec![
+        "Produce *CB* to meet the perpendicular to the stroke through *A* in *D*, and *AB* to meet the perpendicular to the stroke through *C* in *E* (§36, Fig. 63). Measure *CE* and *BD*.".to_string(),
+        "Write down the velocity scale and find the piston velocity from *CE*, signed as d*x*/d*t* (negative towards the crank).".into(),
+        "Find *F* and *G* by Kisch's construction (§36, Fig. 66): the semicircle on *AB*, the circle about *B* through *E*, *HFG* perpendicular to *AB*. Measure *CG* and *FG*; enlarge the construction beside the drawing if it is too small to read.".into(),
+        "Write down the acceleration scale and find the piston acceleration from *CG*, and the rod's angular velocity (*V*_c/*BD*) and angular acceleration (ω² · *FG*/*l*) (§37).".into(),
+    ];
+    if h.torque().is_some() {
+        tasks.push("With the crank torque *T*, find the slider force *F*_p = *T*/*OM* (*OM* = *CE*), the side thrust, the force with friction, and the transmission angle (Ng, eq. 6–11).".into());
+    }
+    let body = html! {
+        header.title {
+            h1 { (title) }
+            p.subtitle { "Name: ______________________   Date: ____________" }
+        }
+        p { (rich(&data_sentence(h))) }
+        (data_table(h))
+        (conventions(h))
+        div.sheet-figure {
+            (picture(
+                &Picture {
+                    svg,
+                    caption: format!(
+                        "The engine to scale at θ = {}°. Grid squares of {} {u}, lines through the crank centre *C*.",
+                        super::steps::short(h.angle().degrees()),
+                        crate::render::plain(step)
+                    ),
+                },
+                "Drawing.",
+            ))
+        }
+        section.step {
+            h2 { "Construct" }
+            ol {
+                @for t in &tasks { li { (rich(t)) } }
+            }
+        }
+        section.step {
+            h2 { "Answers" }
+            div.block {
+                table.answers {
+                    thead { tr { th { "quantity" } th { "your answer" } th.unit { "unit" } } }
+                    tbody {
+                        @for row in &asked {
+                            tr {
+                                td { (rich(&row.quantity)) }
+                                td.answer {}
+                                td.unit { (rich(&row.unit)) }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        (footer(&command(h, " --exercise")))
+    };
+    Ok(document(
+        &format!("{title}: {}", plain_data(h)),
+        &style(h.paper()),
+        body,
+    ))
+}
+
+/// The answer key: the data, the construction drawn (and Ng's figure with
+/// a torque), every answer read off it beside the exact value.
+pub(super) fn key(h: &Handout, r: &Reading) -> Result<String> {
+    let title = heading(h, "answer key");
+    let construction = figures::mechanism(h, FigureName::Fig67Example, None)?;
+    let mut pictures = vec![Picture {
+        svg: figures::inline(&construction, "key"),
+        caption: "The construction: *D* and *E*, Kisch's construction for *F* and *G*, the scales."
+            .into(),
+    }];
+    if h.torque().is_some() {
+        let ng = figures::mechanism(h, FigureName::NgFig1Torque, None)?;
+        pictures.push(Picture {
+            svg: figures::inline(&ng, "key-ng"),
+            caption: "The torque line *OM* and the forces (Ng's letters: *O* crank centre, *C* crank pin, *P* slider).".into(),
+        });
+    }
+    let all = rows(h, r);
+    let body = html! {
+        header.title {
+            h1 { (title) }
+            p.subtitle { "For the teacher: the answers to the exercise sheet of the same engine." }
+        }
+        p { (rich(&data_sentence(h))) }
+        (data_table(h))
+        (values_table(&all, Some("The answers")))
+        @for (i, p) in pictures.iter().enumerate() {
+            (picture(p, &format!("Figure {}.", i + 1)))
+        }
+        (footer(&command(h, " --exercise")))
+    };
+    Ok(document(
+        &format!("{title}: {}", plain_data(h)),
+        &style(h.paper()),
+        body,
+    ))
+}

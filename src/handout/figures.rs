@@ -1,0 +1,213 @@
+//! The figures of a handout: the named figures of the catalogue drawn for
+//! the handout's engine, and their SVG made fit to be inlined in a page.
+
+use super::Handout;
+use crate::catalogue::FigureOptions;
+use crate::error::Result;
+use crate::figure::{Figure, Panel, Role};
+use crate::render::{fmt, to_svg};
+use crate::{FigureName, Layer};
+
+/// The mechanism figure `name` (one drawn by a scene) for the handout's
+/// engine, pose, speed and units; `layers` in place of the figure's own
+/// where given. With the handout's torque for Ng's figure.
+pub(super) fn mechanism(h: &Handout, name: FigureName, layers: Option<&[Layer]>) -> Result<Figure> {
+    let scene = name
+        .scene()
+        .expect("the handout draws mechanism figures by a scene");
+    let mut scene = scene
+        .with_mechanism(*h.mechanism())
+        .with_angles(vec![h.angle()])
+        .with_omega(h.omega())
+        .with_units(h.units().clone());
+    if let Some(layers) = layers {
+        scene = scene.with_layers(layers.iter().copied());
+    }
+    if let Some(t) = h.torque() {
+        scene = scene.with_torque(t);
+    }
+    scene.figure()
+}
+
+/// The diagram `name` for the handout's engine, pose, speed and units.
+pub(super) fn diagram(h: &Handout, name: FigureName) -> Result<Figure> {
+    let options = FigureOptions {
+        mechanism: Some(*h.mechanism()),
+        omega: Some(h.omega()),
+        angle: Some(h.angle()),
+        length_unit: Some(h.units().length().clone()),
+        force_unit: Some(h.units().force().clone()),
+        ..FigureOptions::default()
+    };
+    name.figure(&options)
+}
+
+/// The mechanism alone, on the page `fitted` was fitted to: the frame, the
+/// links, the crank circle, the line of stroke and the letters A, B, C of
+/// its first panel, the rest (constructions, dimensions, notes, an
+/// enlarged detail) left out. Drawn on the page of a figure with the
+/// velocity construction, it leaves room for the student's D and E.
+pub(super) fn only_the_mechanism(fitted: &Figure) -> Figure {
+    let Some(panel) = fitted.panels().first() else {
+        return fitted.clone();
+    };
+    let keep = |item: &crate::figure::Item| {
+        let id = item.id.as_str();
+        if id.starts_with("detail-") {
+            return false;
+        }
+        match item.role {
+            Role::Frame | Role::Link => true,
+            Role::Curve => id == "circle-crank",
+            Role::Auxiliary => id.starts_with("line-stroke"),
+            Role::Label => ["label-A", "label-B", "label-C"].contains(&id),
+            _ => false,
+        }
+    };
+    let items = panel.items().iter().filter(|i| keep(i)).cloned().collect();
+    let rect = *panel.rect();
+    let height = (rect.y + rect.height + rect.y).min(fitted.height());
+    let panel = Panel::new(panel.id(), rect, *panel.transform(), items);
+    Figure::new(
+        fitted.name(),
+        fitted.width(),
+        height,
+        fitted.style(),
+        fitted.tolerance(),
+        vec![panel],
+        fitted.metadata().clone(),
+    )
+    .with_font(fitted.font())
+}
+
+/// The SVG of `figure` to be inlined in a page that holds other figures:
+/// every `id` prefixed with `prefix-`, and every reference to one
+/// (`url(#…)`, `href="#…"`) with it, so that no two elements of the page
+/// share an id and each figure's references stay its own. The SVG
+/// namespace attribute, which HTML does not need, is left out, so that the
+/// page names no address.
+pub(super) fn inline(figure: &Figure, prefix: &str) -> String {
+    inline_svg(&to_svg(figure), prefix)
+}
+
+/// [`inline`] on SVG text.
+pub(super) fn inline_svg(svg: &str, prefix: &str) -> String {
+    svg.replace(" xmlns=\"http://www.w3.org/2000/svg\"", "")
+        .replace(" id=\"", &format!(" id=\"{prefix}-"))
+        .replace("url(#", &format!("url(#{prefix}-"))
+        .replace("href=\"#", &format!("href=\"#{prefix}-"))
+}
+
+/// A faint grid of squares `step` world units wide over the mechanism's
+/// panel, lines through the crank centre C, as SVG to be set just above
+/// the figure's paper: the page on which a student measures and draws.
+pub(super) fn grid(panel: &Panel, step: f64) -> String {
+    let rect = panel.rect();
+    let map = panel.transform();
+    let corners = [
+        map.invert(crate::geom::Point::new(rect.x, rect.y)),
+        map.invert(crate::geom::Point::new(
+            rect.x + rect.width,
+            rect.y + rect.height,
+        )),
+    ];
+    let (x0, x1) = (
+        corners[0].x.min(corners[1].x),
+        corners[0].x.max(corners[1].x),
+    );
+    let (y0, y1) = (
+        corners[0].y.min(corners[1].y),
+        corners[0].y.max(corners[1].y),
+    );
+    let mut d = String::new();
+    let (top, bottom) = (rect.y, rect.y + rect.height);
+    let (left, right) = (rect.x, rect.x + rect.width);
+    let mut k = (x0 / step).ceil();
+    while k * step <= x1 {
+        let x = map.apply(crate::geom::Point::new(k * step, 0.0)).x;
+        d.push_str(&format!("M{} {}V{}", fmt(x), fmt(top), fmt(bottom)));
+        k += 1.0;
+    }
+    let mut k = (y0 / step).ceil();
+    while k * step <= y1 {
+        let y = map.apply(crate::geom::Point::new(0.0, k * step)).y;
+        d.push_str(&format!("M{} {}H{}", fmt(left), fmt(y), fmt(right)));
+        k += 1.0;
+    }
+    format!(
+        "<g id=\"grid\" class=\"grid\"><path d=\"{d}\" fill=\"none\" stroke=\"#9ab8d6\" stroke-opacity=\"0.55\" stroke-width=\"0.5\"/></g>"
+    )
+}
+
+/// A round grid step (1, 2 or 5 × 10^k world units) that makes squares
+/// of about `target` page units at the panel's scale.
+pub(super) fn grid_step(panel: &Panel, target: f64) -> f64 {
+    let per_unit = panel.transform().scale();
+    let raw = target / per_unit;
+    let decade = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .min_by(|a, b| {
+            (a.ln() - raw.ln())
+                .abs()
+                .total_cmp(&(b.ln() - raw.ln()).abs())
+        })
+        .unwrap_or(decade)
+}
+
+/// `svg` with `layer` set just above its paper (the white page), below
+/// everything drawn.
+pub(super) fn under_drawing(svg: &str, layer: &str) -> String {
+    match svg.find("id=\"paper\"") {
+        Some(at) => match svg[at..].find("/>") {
+            Some(end) => {
+                let cut = at + end + 2;
+                format!("{}\n{layer}{}", &svg[..cut], &svg[cut..])
+            }
+            None => svg.to_string(),
+        },
+        None => svg.to_string(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Angle, SliderCrank};
+
+    #[test]
+    fn ids_are_prefixed_and_nothing_refers_to_one() {
+        let h = Handout::new(SliderCrank::in_line(0.5, 2.0).unwrap(), Angle::deg(40.0));
+        let f = mechanism(&h, FigureName::Fig63Velocity, None).unwrap();
+        let svg = inline(&f, "step-2");
+        assert!(svg.contains("id=\"step-2-point-E\""), "{svg}");
+        assert!(!svg.contains(" id=\"point-E\""));
+        // A clipped detail keeps its clip.
+        let f = mechanism(&h, FigureName::Fig66Kisch, None).unwrap();
+        let svg = inline(&f, "k");
+        if svg.contains("clip-path") {
+            assert!(
+                svg.contains("url(#k-clip-panel-detail)")
+                    && svg.contains("id=\"k-clip-panel-detail\"")
+            );
+        }
+    }
+
+    #[test]
+    fn the_grid_goes_under_the_drawing_through_c() {
+        let h = Handout::new(SliderCrank::in_line(60.0, 240.0).unwrap(), Angle::deg(40.0));
+        let f = mechanism(&h, FigureName::Fig62Displacement, Some(&[Layer::Mechanism])).unwrap();
+        let panel = &f.panels()[0];
+        let step = grid_step(panel, 18.0);
+        assert!([1.0, 2.0, 5.0, 10.0, 20.0].contains(&step), "{step}");
+        let svg = under_drawing(&to_svg(&f), &grid(panel, step));
+        let paper = svg.find("id=\"paper\"").unwrap();
+        let grid_at = svg.find("id=\"grid\"").unwrap();
+        let first_link = svg.find("link-crank").unwrap();
+        assert!(paper < grid_at && grid_at < first_link);
+        // A vertical line through C (x = 0).
+        let cx = panel.transform().apply(crate::geom::Point::origin()).x;
+        assert!(svg.contains(&format!("M{} ", fmt(cx))), "{svg}");
+    }
+}

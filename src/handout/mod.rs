@@ -1,0 +1,263 @@
+//! Teaching handouts and exercise sheets: self-contained printable HTML
+//! pages for one engine.
+//!
+//! [`Handout::page`] works the engine through textbook §35–37 and Ng's
+//! paper step by step: the mechanism to scale, D and E, the velocity
+//! scale, Kisch's construction with its enlarged detail, the acceleration
+//! scale, the rod's rates, the OM line and the forces when a torque is
+//! given, and the velocity and acceleration diagrams; every value read off
+//! a construction is set beside the exact one. [`Handout::exercise`] draws
+//! only the mechanism to scale on a faint grid, with the data and empty
+//! answer fields, and [`Handout::key`] is its answer key. [`Class`] makes
+//! a class's worth of different engines from a seed, reproducibly
+//! ([`SplitMix64`]).
+//!
+//! Every page is one file: figures inlined as SVG, the style sheet in the
+//! page, nothing fetched from anywhere. Print rules for A4 or Letter
+//! ([`Paper`]) keep each figure and table on one page. Each value is
+//! written with its full precision in a `data-value` attribute beside a
+//! `data-key` that names it as `analyze --json` does
+//! (`graphical.velocity`, `statics.OM`), so that a program can read the
+//! page.
+//!
+//! ```
+//! use slider_crank::handout::Handout;
+//! use slider_crank::{Angle, SliderCrank};
+//!
+//! let engine = SliderCrank::in_line(0.5, 3.0)?; // the §35 engine
+//! let handout = Handout::new(engine, Angle::deg(45.0));
+//! let page = handout.page()?;
+//! assert!(page.contains(r#"data-key="graphical.velocity""#));
+//! assert!(!page.contains("<script"));
+//! # Ok::<(), slider_crank::Error>(())
+//! ```
+
+mod class;
+mod exercise;
+mod figures;
+mod page;
+mod random;
+mod steps;
+
+pub use class::Class;
+pub use random::SplitMix64;
+
+use crate::analytic::kinematics::check_omega;
+use crate::construct::Reading;
+use crate::error::{Error, Result};
+use crate::{Angle, SliderCrank, Units};
+
+/// The paper a page is printed on.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Paper {
+    /// ISO A4, 210 × 297 mm.
+    #[default]
+    A4,
+    /// US Letter, 8.5 × 11 in.
+    Letter,
+}
+
+impl Paper {
+    /// The name on the command line: `a4`, `letter`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Paper::A4 => "a4",
+            Paper::Letter => "letter",
+        }
+    }
+
+    /// The paper of that name; the error lists the names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        match name {
+            "a4" => Ok(Paper::A4),
+            "letter" => Ok(Paper::Letter),
+            _ => Err(Error::Parse(format!(
+                "unknown paper '{name}': expected a4 or letter"
+            ))),
+        }
+    }
+
+    /// The size of the CSS `@page` rule: `A4`, `letter`.
+    pub fn css_size(&self) -> &'static str {
+        match self {
+            Paper::A4 => "A4",
+            Paper::Letter => "letter",
+        }
+    }
+}
+
+/// One engine at one crank angle, to be worked through on a handout or set
+/// as an exercise. Built with [`Handout::new`] and the `with_*` methods,
+/// each of which validates its value.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Handout {
+    mechanism: SliderCrank,
+    angle: Angle,
+    omega: f64,
+    units: Units,
+    torque: Option<f64>,
+    friction: f64,
+    paper: Paper,
+    title: Option<String>,
+}
+
+impl Handout {
+    /// `mechanism` at `angle`, turning at 250 rpm (the §35 engine's),
+    /// lengths in feet and forces in pounds-force, no torque, on A4.
+    pub fn new(mechanism: SliderCrank, angle: Angle) -> Self {
+        Self {
+            mechanism,
+            angle,
+            omega: crate::rpm_to_omega(250.0),
+            units: Units::FOOT_POUND,
+            torque: None,
+            friction: 0.0,
+            paper: Paper::A4,
+            title: None,
+        }
+    }
+
+    /// At crank speed `omega` in rad/s (positive counter-clockwise); an
+    /// error when it is not finite or out of range.
+    pub fn with_omega(mut self, omega: f64) -> Result<Self> {
+        self.omega = check_omega(omega)?;
+        Ok(self)
+    }
+
+    /// With lengths and forces in `units` (names only: no number is
+    /// converted).
+    pub fn with_units(mut self, units: Units) -> Self {
+        self.units = units;
+        self
+    }
+
+    /// With a crank torque `torque` (force × length, counter-clockwise
+    /// positive) and the coefficient of friction `friction` of the slider
+    /// in its guides: adds the OM line and the forces (Ng). An error for a
+    /// torque that is not finite or a coefficient that is negative or not
+    /// finite.
+    pub fn with_torque(mut self, torque: f64, friction: f64) -> Result<Self> {
+        if !torque.is_finite() {
+            return Err(Error::NotFinite {
+                name: "torque",
+                value: torque,
+            });
+        }
+        if !(friction >= 0.0 && friction.is_finite()) {
+            return Err(Error::OutOfRange {
+                name: "friction",
+                value: friction,
+                reason: "the coefficient of friction must be a finite number ≥ 0".into(),
+            });
+        }
+        self.torque = Some(torque);
+        self.friction = friction;
+        Ok(self)
+    }
+
+    /// Printed on `paper`.
+    pub fn with_paper(mut self, paper: Paper) -> Self {
+        self.paper = paper;
+        self
+    }
+
+    /// With a heading of its own (an exercise sheet's "Exercise 7").
+    pub fn with_title(mut self, title: impl Into<String>) -> Self {
+        self.title = Some(title.into());
+        self
+    }
+
+    /// The mechanism.
+    pub fn mechanism(&self) -> &SliderCrank {
+        &self.mechanism
+    }
+
+    /// The crank angle.
+    pub fn angle(&self) -> Angle {
+        self.angle
+    }
+
+    /// The crank speed ω in rad/s.
+    pub fn omega(&self) -> f64 {
+        self.omega
+    }
+
+    /// The crank speed in revolutions per minute.
+    pub fn rpm(&self) -> f64 {
+        self.omega * 60.0 / std::f64::consts::TAU
+    }
+
+    /// The units.
+    pub fn units(&self) -> &Units {
+        &self.units
+    }
+
+    /// The crank torque, if given.
+    pub fn torque(&self) -> Option<f64> {
+        self.torque
+    }
+
+    /// The coefficient of friction (used with a torque).
+    pub fn friction(&self) -> f64 {
+        self.friction
+    }
+
+    /// The paper.
+    pub fn paper(&self) -> Paper {
+        self.paper
+    }
+
+    /// Everything read at the pose: what `analyze` prints for this engine.
+    pub fn reading(&self) -> Result<Reading> {
+        let pose = self.mechanism.pose(self.angle);
+        Reading::new(&pose, self.omega, self.torque, self.friction)
+    }
+
+    /// The worked handout: every step with its figure and values.
+    pub fn page(&self) -> Result<String> {
+        let reading = self.reading()?;
+        let steps = steps::steps(self, &reading)?;
+        Ok(page::handout(self, &steps, &steps::rows(self, &reading)))
+    }
+
+    /// The exercise sheet: the mechanism to scale on a faint grid, the
+    /// data, and empty answer fields (no answer on it).
+    pub fn exercise(&self) -> Result<String> {
+        let reading = self.reading()?;
+        exercise::sheet(self, &reading)
+    }
+
+    /// The exercise's answer key: the data, the construction drawn, and
+    /// every answer read off it beside the exact value.
+    pub fn key(&self) -> Result<String> {
+        let reading = self.reading()?;
+        exercise::key(self, &reading)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn paper_names_round_trip() {
+        for p in [Paper::A4, Paper::Letter] {
+            assert_eq!(Paper::from_name(p.name()), Ok(p));
+        }
+        assert!(
+            Paper::from_name("a5")
+                .unwrap_err()
+                .to_string()
+                .contains("a4 or letter")
+        );
+    }
+
+    #[test]
+    fn bad_values_are_refused() {
+        let h = Handout::new(SliderCrank::in_line(1.0, 4.0).unwrap(), Angle::deg(30.0));
+        assert!(h.clone().with_omega(f64::NAN).is_err());
+        assert!(h.clone().with_torque(f64::INFINITY, 0.0).is_err());
+        assert!(h.clone().with_torque(1.0, -1.0).is_err());
+        assert!(h.with_torque(1.0, 0.5).is_ok());
+    }
+}

@@ -1,0 +1,76 @@
+//! What the crate's HTML pages share (the gallery's index, the handouts and
+//! exercise sheets): the document around a body, the book-page style sheet
+//! and rich text set as HTML. Every page is written through maud
+//! templates, so every text is escaped.
+
+use crate::figure::RichText;
+use maud::{DOCTYPE, Markup, PreEscaped, html};
+
+/// The style sheet every page starts from: a plain book page, serif type,
+/// ruled tables.
+pub(crate) const BOOK_STYLE: &str = "
+body { font-family: 'New Computer Modern', 'Latin Modern Roman', Georgia, serif;
+       max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #111; line-height: 1.4; }
+code { font-size: .9em; }
+table { border-collapse: collapse; margin: 1rem 0; }
+th, td { padding: .2rem .7rem; text-align: right; border-bottom: 1px solid #ddd; }
+caption { text-align: left; font-weight: bold; padding-bottom: .3rem; }
+";
+
+/// A whole page: `<!DOCTYPE html>`, the head with `title` and the style
+/// sheet [`BOOK_STYLE`] followed by `style`, and `body`.
+pub(crate) fn document(title: &str, style: &str, body: Markup) -> String {
+    html! {
+        (DOCTYPE)
+        html lang="en" {
+            head {
+                meta charset="utf-8";
+                meta name="viewport" content="width=device-width, initial-scale=1";
+                title { (title) }
+                style { (PreEscaped(BOOK_STYLE)) (PreEscaped(style)) }
+            }
+            body { (body) }
+        }
+    }
+    .into_string()
+}
+
+/// The markup of [`RichText::parse`] (`*A*` italic, `V_p` a subscript,
+/// `²` a superscript) as HTML: `<i>`, `<sub>`, `<sup>`, every text escaped.
+pub(crate) fn rich(markup: &str) -> Markup {
+    let text = RichText::parse(markup);
+    html! {
+        @for run in text.runs() {
+            @if run.subscript {
+                sub { @if run.italic { i { (run.text) } } @else { (run.text) } }
+            } @else if run.superscript {
+                sup { @if run.italic { i { (run.text) } } @else { (run.text) } }
+            } @else if run.italic {
+                i { (run.text) }
+            } @else {
+                (run.text)
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rich_text_is_set_in_html_and_escaped() {
+        assert_eq!(
+            rich("*CE* = V_p / ω² <b>").into_string(),
+            "<i>CE</i> = V<sub>p</sub> / ω<sup>2</sup> &lt;b&gt;"
+        );
+    }
+
+    #[test]
+    fn a_document_has_its_title_and_both_style_sheets() {
+        let page = document("a < b", "p { x: y }", html! { p { "body" } });
+        assert!(page.starts_with("<!DOCTYPE html>"));
+        assert!(page.contains("<title>a &lt; b</title>"));
+        assert!(page.contains("border-collapse") && page.contains("p { x: y }"));
+    }
+}

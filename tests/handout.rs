@@ -1,0 +1,381 @@
+//! `slider-crank handout`: the page works the same numbers `analyze`
+//! prints, is one self-contained printable file; exercise sheets for a
+//! class are reproducible from their seed and hold no answer; bad input
+//! leaves no file.
+
+mod command;
+use command::{run, succeeded};
+use serde_json::Value;
+use std::collections::BTreeSet;
+use std::path::Path;
+
+/// Every `data-key="K" … data-value="V"` pair of the page, in order.
+fn values(html: &str) -> Vec<(String, f64)> {
+    let mut found = Vec::new();
+    let mut rest = html;
+    while let Some(i) = rest.find("data-key=\"") {
+        rest = &rest[i + 10..];
+        let end = rest.find('"').unwrap();
+        let key = rest[..end].to_string();
+        let tag_end = rest.find('>').unwrap();
+        let tag = &rest[..tag_end];
+        if let Some(j) = tag.find("data-value=\"") {
+            let v = &tag[j + 12..];
+            let v = &v[..v.find('"').unwrap()];
+            found.push((key, v.parse::<f64>().unwrap_or_else(|_| panic!("{v}"))));
+        }
+        rest = &rest[end..];
+    }
+    found
+}
+
+/// The number at a dotted path of the JSON (`graphical.velocity`).
+fn at<'a>(json: &'a Value, key: &str) -> Option<&'a Value> {
+    key.split('.').try_fold(json, |v, k| v.get(k))
+}
+
+fn read(path: &Path) -> String {
+    std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()))
+}
+
+/// Every value of the page that `analyze --json` also gives equals it (to
+/// the last digits: serde_json's default float parsing may be an ulp or
+/// two off the number written); the lengths of the constructions are the coordinates of E and
+/// G. Returns how many were compared.
+fn agrees_with_analyze(html: &str, json: &Value) -> usize {
+    let mut compared = 0;
+    for (key, value) in values(html) {
+        let expected = match key.as_str() {
+            "construction.CE" => json["points"]["E"][1].as_f64(),
+            "construction.CG" => json["points"]["G"][0].as_f64(),
+            _ => at(json, &key).and_then(Value::as_f64),
+        };
+        if let Some(expected) = expected {
+            assert!(
+                (value - expected).abs() <= 1e-14 * expected.abs(),
+                "{key}: {value} against {expected}"
+            );
+            compared += 1;
+        }
+    }
+    compared
+}
+
+/// The analyze JSON for the engine a page states (its data cells).
+fn analyze_for(html: &str, extra: &[&str]) -> Value {
+    let data: std::collections::BTreeMap<String, f64> = values(html).into_iter().collect();
+    let text = |k: &str| format!("{}", data[k]);
+    let (crank, rod, offset, angle, omega) = (
+        text("mechanism.crank"),
+        text("mechanism.rod"),
+        text("mechanism.offset"),
+        text("angle_deg"),
+        text("omega"),
+    );
+    let mut args = vec![
+        "analyze", "--json", "--crank", &crank, "--rod", &rod, "--offset", &offset, "--angle",
+        &angle, "--omega", &omega,
+    ];
+    args.extend_from_slice(extra);
+    let out = run(&args);
+    succeeded(&out);
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
+#[test]
+fn the_handout_shows_the_numbers_analyze_prints() {
+    let dir = tempfile::tempdir().unwrap();
+    // The §35 engine; an offset engine with forces; a short rod (n = 1.5)
+    // past the inner dead centre; an offset below the crank centre.
+    let engines: [&[&str]; 4] = [
+        &[
+            "--crank", "0.5", "--rod", "3", "--angle", "45", "--rpm", "250",
+        ],
+        &[
+            "--crank",
+            "60",
+            "--rod",
+            "210",
+            "--offset",
+            "10",
+            "--angle",
+            "40",
+            "--unit",
+            "mm",
+            "--torque",
+            "2000",
+            "--friction",
+            "0.2",
+        ],
+        &[
+            "--crank", "1", "--rod", "1.5", "--angle", "200", "--omega", "10", "--torque", "5",
+        ],
+        &[
+            "--crank",
+            "2",
+            "--rod",
+            "7",
+            "--offset",
+            "-0.5",
+            "--angle",
+            "300",
+            "--rpm",
+            "1200",
+            "--torque",
+            "-3",
+            "--friction",
+            "1",
+        ],
+    ];
+    for (i, engine) in engines.iter().enumerate() {
+        let page = dir.path().join(format!("h{i}.html"));
+        let mut args = vec!["handout", "--out", page.to_str().unwrap()];
+        args.extend_from_slice(engine);
+        let out = run(&args);
+        succeeded(&out);
+        assert!(out.stdout.is_empty());
+        let html = read(&page);
+        let statics: Vec<&str> = engine
+            .windows(2)
+            .filter(|w| w[0] == "--torque" || w[0] == "--friction")
+            .flatten()
+            .copied()
+            .collect();
+        let json = analyze_for(&html, &statics);
+        let compared = agrees_with_analyze(&html, &json);
+        // The data (5), the exact values (6), the values read off the
+        // constructions (4), CE and CG; and the statics (5) with a torque.
+        let least = if statics.is_empty() { 17 } else { 22 };
+        assert!(
+            compared >= least,
+            "{engine:?}: only {compared} values compared"
+        );
+        for key in [
+            "graphical.velocity",
+            "graphical.acceleration",
+            "graphical.rod_angular_velocity",
+            "graphical.rod_angular_acceleration",
+            "analytic.velocity",
+        ] {
+            assert!(html.contains(&format!("data-key=\"{key}\"")), "{key}");
+        }
+    }
+}
+
+/// What a self-contained page must not have.
+fn assert_self_contained(html: &str, name: &str) {
+    for bad in [
+        "http:", "https:", "src=", "<link", "<script", "@import", "url(http",
+    ] {
+        assert!(!html.contains(bad), "{name} holds {bad}");
+    }
+    assert!(html.contains("<svg"), "{name} has its figures inlined");
+}
+
+/// The page's style sheet.
+fn style(html: &str) -> &str {
+    let from = html.find("<style>").unwrap();
+    let to = html.find("</style>").unwrap();
+    &html[from..to]
+}
+
+/// Asserts that every selector in `blocks` is in a rule that keeps it on
+/// one page.
+fn assert_unbroken(css: &str, blocks: &[&str]) {
+    let rules: Vec<&str> = css
+        .split('}')
+        .filter(|r| r.contains("break-inside: avoid"))
+        .collect();
+    for block in blocks {
+        assert!(
+            rules.iter().any(|r| r
+                .split('{')
+                .next()
+                .unwrap()
+                .split(',')
+                .any(|s| s.trim() == *block)),
+            "{block} may break across pages"
+        );
+    }
+}
+
+#[test]
+fn the_page_is_self_contained_and_prints_whole_figures_on_the_paper_asked_for() {
+    let dir = tempfile::tempdir().unwrap();
+    for (paper, size) in [(None, "size: A4"), (Some("letter"), "size: letter")] {
+        let page = dir.path().join("page.html");
+        // The handout, then an exercise sheet and its key.
+        for exercise in [false, true] {
+            let mut args = vec!["handout", "--out", page.to_str().unwrap(), "--torque", "10"];
+            if let Some(p) = paper {
+                args.extend_from_slice(&["--paper", p]);
+            }
+            if exercise {
+                args.push("--exercise");
+            }
+            succeeded(&run(&args));
+            if !exercise {
+                let html = read(&page);
+                assert!(html.contains("The slider-crank engine, worked through"));
+                for step in [
+                    "Kisch's construction",
+                    "The OM line and the forces",
+                    "The velocity scale",
+                ] {
+                    assert!(html.contains(step), "{step}");
+                }
+            }
+            let mut pages = vec![page.clone()];
+            if exercise {
+                pages.push(dir.path().join("page-key.html"));
+            }
+            for p in pages {
+                let html = read(&p);
+                let name = p.display().to_string();
+                assert_self_contained(&html, &name);
+                let css = style(&html);
+                assert!(css.contains("@page") && css.contains(size), "{name}: {css}");
+                assert_unbroken(css, &["figure", "table", ".block"]);
+                assert!(html.contains("<figure>") && html.contains("<table"));
+                // No two elements share an id.
+                let mut ids = BTreeSet::new();
+                let mut rest = html.as_str();
+                while let Some(i) = rest.find(" id=\"") {
+                    rest = &rest[i + 5..];
+                    let id = &rest[..rest.find('"').unwrap()];
+                    assert!(ids.insert(id.to_string()), "{name}: id {id} twice");
+                }
+            }
+        }
+    }
+}
+
+/// The files of a directory, by name.
+fn files(dir: &Path) -> std::collections::BTreeMap<String, Vec<u8>> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| {
+            let e = e.unwrap();
+            (
+                e.file_name().into_string().unwrap(),
+                std::fs::read(e.path()).unwrap(),
+            )
+        })
+        .collect()
+}
+
+fn class(dir: &Path, seed: &str) -> std::process::Output {
+    let out = dir.join("sheet.html");
+    run(&[
+        "handout",
+        "--exercise",
+        "--class",
+        "30",
+        "--seed",
+        seed,
+        "--unit",
+        "mm",
+        "--out",
+        out.to_str().unwrap(),
+    ])
+}
+
+#[test]
+fn a_class_is_thirty_distinct_sheets_with_keys_the_same_for_the_same_seed() {
+    let (one, again, two) = (
+        tempfile::tempdir().unwrap(),
+        tempfile::tempdir().unwrap(),
+        tempfile::tempdir().unwrap(),
+    );
+    let out = class(one.path(), "1");
+    succeeded(&out);
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(stderr.contains("handout: 1/61 "), "{stderr}");
+    assert!(stderr.contains("handout: 61/61 "), "{stderr}");
+    let made = files(one.path());
+    assert_eq!(made.len(), 61, "{:?}", made.keys());
+    let sheets: BTreeSet<&Vec<u8>> = (1..=30)
+        .map(|k| &made[&format!("sheet-{k:02}.html")])
+        .collect();
+    assert_eq!(sheets.len(), 30, "30 different sheets");
+    assert!(made.contains_key("sheet-answers.html"));
+
+    // The same seed: the same bytes; another seed: other engines.
+    succeeded(&class(again.path(), "1"));
+    assert_eq!(made, files(again.path()));
+    succeeded(&class(two.path(), "2"));
+    let other = files(two.path());
+    assert_eq!(other.len(), 61);
+    assert!((1..=30).all(|k| {
+        let name = format!("sheet-{k:02}.html");
+        made[&name] != other[&name]
+    }));
+
+    let answers = String::from_utf8(made["sheet-answers.html"].clone()).unwrap();
+    for k in 1..=30 {
+        let sheet = String::from_utf8(made[&format!("sheet-{k:02}.html")].clone()).unwrap();
+        let key = String::from_utf8(made[&format!("sheet-{k:02}-key.html")].clone()).unwrap();
+        assert_self_contained(&sheet, "sheet");
+        assert_self_contained(&key, "key");
+        assert!(sheet.contains(&format!("Exercise {k}")));
+        // The sheet draws the mechanism on a grid, no construction.
+        assert!(sheet.contains("id=\"sheet-grid\"") && sheet.contains("sheet-link-rod"));
+        for drawn in ["point-D", "point-E", "line-CE", "note-scales", "detail-"] {
+            assert!(!sheet.contains(drawn), "sheet {k} draws {drawn}");
+        }
+        // The key agrees with analyze for its engine.
+        let json = analyze_for(&key, &[]);
+        assert!(agrees_with_analyze(&key, &json) >= 17);
+        // The sheet holds no answer: no value but the data, and none of
+        // the key's numbers.
+        for (name, value) in values(&sheet) {
+            assert!(
+                !["analytic.", "graphical.", "construction.", "statics."]
+                    .iter()
+                    .any(|p| name.starts_with(p)),
+                "sheet {k} gives {name}"
+            );
+            let _ = value;
+        }
+        for (name, value) in values(&key) {
+            if name.starts_with("graphical.") || name.starts_with("analytic.") {
+                let text = format!("{value}");
+                assert!(!sheet.contains(&text), "sheet {k} holds {name} = {text}");
+            }
+        }
+        // The teacher's table has the engine's velocity read off CE.
+        let (_, v) = values(&key)
+            .into_iter()
+            .find(|(name, _)| name == "graphical.velocity")
+            .unwrap();
+        assert!(answers.contains(&format!("data-value=\"{v}\"")), "{k}");
+    }
+}
+
+#[test]
+fn bad_input_is_one_line_a_failure_and_no_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("h.html");
+    let out = out.to_str().unwrap();
+    let missing = dir.path().join("no/such/dir/h.html");
+    let missing = missing.to_str().unwrap();
+    let cases: [&[&str]; 6] = [
+        &["handout", "--exercise", "--class", "0", "--out", out],
+        &["handout", "--crank", "1", "--rod", "0.5", "--out", out],
+        &["handout", "--out", missing],
+        &["handout", "--exercise", "--out", missing],
+        &["handout", "--class", "3", "--crank", "2", "--out", out],
+        &["handout", "--out", &out.replace(".html", ".pdf")],
+    ];
+    for args in cases {
+        let result = run(args);
+        assert!(!result.status.success(), "{args:?}");
+        assert_eq!(result.status.code(), Some(2), "{args:?}");
+        assert!(result.stdout.is_empty());
+        let stderr = String::from_utf8(result.stderr).unwrap();
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+        let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+        assert!(left.is_empty(), "{args:?} left {left:?}");
+    }
+}
