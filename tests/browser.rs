@@ -1,0 +1,382 @@
+//! The teaching pages in a real browser (issue 12): the gallery's
+//! `index.html`, a handout, an exercise sheet and an animation opened in
+//! headless Chromium. Each page must load with no script error and no
+//! failed request, draw every figure (ink where each `<svg>` and `<img>`
+//! is), and print on A4 with no figure or table taller than the printable
+//! page (each is `break-inside: avoid`, so one that fits is never cut); the
+//! animation must move.
+//!
+//! Chromium is found as `$CHROMIUM`, `chromium` or `chromium-browser`.
+//! Without it these tests say so and pass, unless
+//! `SLIDER_CRANK_BROWSER=required` (set by `.ci/run`, which installs it).
+
+mod command;
+
+use command::{run, succeeded};
+use resvg::tiny_skia::Pixmap;
+use serde_json::Value;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The width of the screen the pages are opened at, CSS px.
+const SCREEN: u32 = 1100;
+/// A4's printable width and height at the handout's margins (210 − 30 mm,
+/// 297 − 30 mm), in CSS px (96 per inch).
+const A4_PRINTABLE: (f64, f64) = (180.0 / 25.4 * 96.0, 267.0 / 25.4 * 96.0);
+/// The tallest screenshot taken, px (Chromium's texture limit is 16384).
+const TALLEST: f64 = 16000.0;
+
+/// The browser, or `None` (with a note) when it is missing and not
+/// required.
+fn browser() -> Option<PathBuf> {
+    let named = std::env::var_os("CHROMIUM").map(PathBuf::from);
+    let found = named
+        .into_iter()
+        .chain(["chromium", "chromium-browser"].map(PathBuf::from))
+        .find(|b| {
+            Command::new(b)
+                .arg("--version")
+                .output()
+                .is_ok_and(|o| o.status.success())
+        });
+    if found.is_none() {
+        assert!(
+            std::env::var("SLIDER_CRANK_BROWSER").as_deref() != Ok("required"),
+            "Chromium is required (SLIDER_CRANK_BROWSER=required) but was not found"
+        );
+        eprintln!("Chromium not found: the browser tests are skipped");
+    }
+    found
+}
+
+/// Headless Chromium on `url` with `extra` flags; its standard output.
+fn chromium(browser: &Path, width: u32, height: u32, extra: &[&str], url: &str) -> String {
+    let out = Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--hide-scrollbars",
+            "--allow-file-access-from-files",
+            "--virtual-time-budget=3000",
+            &format!("--window-size={width},{height}"),
+        ])
+        .args(extra)
+        .arg(url)
+        .output()
+        .expect("Chromium runs");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+fn url(path: &Path) -> String {
+    format!("file://{}", path.canonicalize().unwrap().display())
+}
+
+/// Listens, before the page's own scripts run, for script errors, failed
+/// loads and `console.error`; once loaded, writes what it heard and the
+/// box of every figure into the page as `<pre id="probe">` JSON. With
+/// `#print` in the URL it first applies the page's `@media print` rules,
+/// so that the boxes are those of the printed page.
+const PROBE: &str = r#"<script>
+(() => {
+  const errors = [];
+  window.addEventListener('error', e => {
+    const t = e.target;
+    errors.push(t && t !== window ? 'failed to load ' + (t.src || t.href || t.tagName) : String(e.message));
+  }, true);
+  window.addEventListener('unhandledrejection', e => errors.push('unhandled rejection ' + e.reason));
+  const error = console.error.bind(console);
+  console.error = (...a) => { errors.push(a.join(' ')); error(...a); };
+  window.addEventListener('load', () => {
+    if (location.hash === '#print') {
+      const css = [];
+      for (const sheet of document.styleSheets) {
+        for (const rule of sheet.cssRules) {
+          if (rule.media && rule.media.mediaText.includes('print')) {
+            for (const inner of rule.cssRules) css.push(inner.cssText);
+          }
+        }
+      }
+      const style = document.createElement('style');
+      style.textContent = css.join('\n');
+      document.head.appendChild(style);
+    }
+    const box = e => { const r = e.getBoundingClientRect(); return [r.left + scrollX, r.top + scrollY, r.width, r.height]; };
+    const figures = [...document.querySelectorAll('svg, img')]
+      .filter(e => !e.parentElement.closest('svg'))
+      .map(e => ({ box: box(e), loaded: e.tagName !== 'IMG' || (e.complete && e.naturalWidth > 0) }));
+    const blocks = [...document.querySelectorAll('figure, table, .block')]
+      .map(e => ({ tag: e.tagName, id: e.id, height: box(e)[3] }));
+    const out = document.createElement('pre');
+    out.id = 'probe';
+    out.textContent = JSON.stringify({ errors, figures, blocks, height: document.documentElement.scrollHeight });
+    document.body.appendChild(out);
+  });
+})();
+</script>"#;
+
+/// What the probe heard on `page` opened `width` px wide.
+fn probe(browser: &Path, page: &Path, width: u32, print: bool) -> Value {
+    let html = std::fs::read_to_string(page).unwrap();
+    let at = html.find("<head>").expect("a <head>") + "<head>".len();
+    let probed = page.with_file_name(format!(
+        "probe-{}",
+        page.file_name().unwrap().to_string_lossy()
+    ));
+    std::fs::write(&probed, format!("{}{PROBE}{}", &html[..at], &html[at..])).unwrap();
+    let hash = if print { "#print" } else { "" };
+    let dom = chromium(browser, width, 900, &["--dump-dom"], &(url(&probed) + hash));
+    std::fs::remove_file(&probed).unwrap();
+    let start = dom.find("<pre id=\"probe\">").expect("the probe ran") + 16;
+    let end = start + dom[start..].find("</pre>").unwrap();
+    let json = dom[start..end]
+        .replace("&quot;", "\"")
+        .replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&amp;", "&");
+    serde_json::from_str(&json).unwrap()
+}
+
+/// Opens `page` as a reader would and checks it: no error, every figure
+/// loaded and inked in a screenshot.
+fn check_page(browser: &Path, page: &Path) -> Value {
+    let name = page.display();
+    let report = probe(browser, page, SCREEN, false);
+    assert_eq!(report["errors"], Value::Array(vec![]), "{name}");
+    let figures = report["figures"].as_array().unwrap();
+    assert!(!figures.is_empty(), "{name}: no figure");
+    let height = report["height"].as_f64().unwrap().min(TALLEST);
+    let shot = page.with_extension("shot.png");
+    chromium(
+        browser,
+        SCREEN,
+        height as u32,
+        &[&format!("--screenshot={}", shot.display())],
+        &url(page),
+    );
+    let pixmap = Pixmap::load_png(&shot).unwrap();
+    std::fs::remove_file(&shot).unwrap();
+    for (k, f) in figures.iter().enumerate() {
+        assert_eq!(
+            f["loaded"],
+            Value::Bool(true),
+            "{name}: figure {k} not loaded"
+        );
+        let b: Vec<f64> = f["box"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect();
+        assert!(
+            b[2] > 10.0 && b[3] > 10.0,
+            "{name}: figure {k} has no size: {b:?}"
+        );
+        if b[1] + b[3] > height {
+            continue; // below the screenshot (only on very long pages)
+        }
+        let ink = inked(&pixmap, &b);
+        assert!(
+            ink as f64 > 1e-3 * b[2] * b[3],
+            "{name}: figure {k} at {b:?} is blank ({ink} inked pixels)"
+        );
+    }
+    report
+}
+
+/// Pixels darker than light grey inside the box `[x, y, w, h]`.
+fn inked(pixmap: &Pixmap, b: &[f64]) -> usize {
+    let (x0, y0) = (b[0].max(0.0) as u32, b[1].max(0.0) as u32);
+    let x1 = ((b[0] + b[2]) as u32).min(pixmap.width());
+    let y1 = ((b[1] + b[3]) as u32).min(pixmap.height());
+    let mut n = 0;
+    for y in y0..y1 {
+        for x in x0..x1 {
+            let p = pixmap.pixel(x, y).unwrap().demultiply();
+            if p.alpha() > 0 && p.red().min(p.green()).min(p.blue()) < 160 {
+                n += 1;
+            }
+        }
+    }
+    n
+}
+
+/// Prints `page` to PDF and checks it: A4 pages, every figure's caption in
+/// its text, and, laid out as printed, no figure or table taller than
+/// the printable page.
+fn check_print(browser: &Path, page: &Path) {
+    let name = page.display();
+    let report = probe(browser, page, A4_PRINTABLE.0.round() as u32, true);
+    for block in report["blocks"].as_array().unwrap() {
+        let h = block["height"].as_f64().unwrap();
+        assert!(
+            h <= A4_PRINTABLE.1,
+            "{name}: {block} is taller than an A4 page ({:.0} px) and would be cut",
+            A4_PRINTABLE.1
+        );
+    }
+    let pdf = page.with_extension("print.pdf");
+    chromium(
+        browser,
+        SCREEN,
+        900,
+        &[
+            "--no-pdf-header-footer",
+            &format!("--print-to-pdf={}", pdf.display()),
+        ],
+        &url(page),
+    );
+    let Ok(info) = Command::new("pdfinfo").arg(&pdf).output() else {
+        eprintln!("pdfinfo not found: the printed page size is not checked");
+        return;
+    };
+    let info = String::from_utf8_lossy(&info.stdout);
+    assert!(info.contains("(A4)"), "{name}: {info}");
+    let text = Command::new("pdftotext")
+        .arg(&pdf)
+        .arg("-")
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&text.stdout);
+    let html = std::fs::read_to_string(page).unwrap();
+    let captions = html.matches("<figcaption").count();
+    assert!(captions > 0, "{name}: no captions");
+    for k in 1..=captions {
+        assert!(
+            text.contains(&format!("Figure {k}.")) || text.contains(&format!("FIGURE {k}.")),
+            "{name}: the caption of figure {k} is not in the printed text"
+        );
+    }
+}
+
+#[test]
+fn the_gallery_index_shows_every_figure() {
+    let Some(browser) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("gallery");
+    succeeded(&run(&["gallery", "--out", out.to_str().unwrap()]));
+    let report = check_page(&browser, &out.join("index.html"));
+    // Every figure of the gallery is shown (one PNG each).
+    let shown = report["figures"].as_array().unwrap().len();
+    let pngs = std::fs::read_dir(&out)
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .path()
+                .extension()
+                .is_some_and(|x| x == "png")
+        })
+        .count();
+    assert!(pngs >= 20, "{pngs} figures in the gallery");
+    assert_eq!(shown, pngs, "figures shown in index.html");
+}
+
+#[test]
+fn the_checks_fail_on_a_broken_page() {
+    let Some(browser) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let page = |name: &str, body: &str| {
+        let path = dir.path().join(name);
+        std::fs::write(
+            &path,
+            format!("<!DOCTYPE html><html><head><title>t</title></head><body>{body}</body></html>"),
+        )
+        .unwrap();
+        path
+    };
+    let fails = |path: PathBuf, what: &str| {
+        let b = browser.clone();
+        let r = std::panic::catch_unwind(move || check_page(&b, &path));
+        assert!(r.is_err(), "{what} passed the check");
+    };
+    fails(
+        page(
+            "missing.html",
+            r#"<img src="nowhere.png" width="50" height="50">"#,
+        ),
+        "a missing image",
+    );
+    fails(
+        page("blank.html", r#"<svg width="200" height="100"></svg>"#),
+        "a blank figure",
+    );
+    fails(
+        page(
+            "script.html",
+            r#"<svg width="50" height="50"><rect width="50" height="50"/></svg><script>undefinedFunction()</script>"#,
+        ),
+        "a script error",
+    );
+    let tall = page(
+        "tall.html",
+        r#"<figure><svg width="100" height="3000"><rect width="100" height="3000"/></svg><figcaption>Figure 1.</figcaption></figure>"#,
+    );
+    let b = browser.clone();
+    assert!(
+        std::panic::catch_unwind(move || check_print(&b, &tall)).is_err(),
+        "a figure taller than a page"
+    );
+    // And a sound page passes.
+    check_page(
+        &browser,
+        &page(
+            "sound.html",
+            r#"<svg width="50" height="50"><rect width="50" height="50"/></svg>"#,
+        ),
+    );
+}
+
+#[test]
+fn a_handout_loads_draws_and_prints_on_a4() {
+    let Some(browser) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("engine.html");
+    succeeded(&run(&[
+        "handout",
+        "--crank",
+        "60",
+        "--rod",
+        "240",
+        "--offset",
+        "10",
+        "--unit",
+        "mm",
+        "--rpm",
+        "900",
+        "--angle",
+        "40",
+        "--torque",
+        "2000",
+        "--out",
+        page.to_str().unwrap(),
+    ]));
+    check_page(&browser, &page);
+    check_print(&browser, &page);
+}
+
+#[test]
+fn an_exercise_sheet_and_its_key_load_and_draw() {
+    let Some(browser) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("sheet.html");
+    succeeded(&run(&[
+        "handout",
+        "--crank",
+        "0.5",
+        "--rod",
+        "2.5",
+        "--angle",
+        "130",
+        "--exercise",
+        "--out",
+        page.to_str().unwrap(),
+    ]));
+    check_page(&browser, &page);
+    check_page(&browser, &dir.path().join("sheet-key.html"));
+}
