@@ -117,7 +117,10 @@ fn main() {
     // Klein: line intersection near the dead centres (an offset mechanism,
     // so that the dead centres are not at exact angles).
     let off = SliderCrank::new(1.0, 4.3, 0.37).unwrap();
-    let (outer, inner) = (off.outer_dead_centre(), off.inner_dead_centre());
+    let (outer, inner) = (
+        off.outer_dead_centre().radians(),
+        off.inner_dead_centre().radians(),
+    );
     for k in [1e-1, 1e-3, 1e-5, 1e-7, 1e-9] {
         let poses = || {
             [outer + k, outer - k, inner + k, inner - k]

@@ -96,16 +96,26 @@ impl SliderCrank {
     }
 
     /// The outer dead centre: crank and rod in one line, slider farthest out;
-    /// θ = asin(e / (l + r)), in radians in (−π/2, π/2).
-    pub fn outer_dead_centre(&self) -> f64 {
-        (self.offset / (self.rod + self.crank)).asin()
+    /// θ = asin(e / (l + r)), 0° in line. As every [`Angle`] it is reduced
+    /// to [0°, 360°): with a negative offset it lies just below 360°.
+    pub fn outer_dead_centre(&self) -> Angle {
+        Angle::from_radians(self.dead_centres().0).expect("asin of a ratio below 1 is finite")
     }
 
     /// The inner dead centre: rod folded over the crank, slider nearest;
-    /// θ = π + asin(e / (l − r)). With an offset the two dead centres are
-    /// not 180° apart.
-    pub fn inner_dead_centre(&self) -> f64 {
-        std::f64::consts::PI + (self.offset / (self.rod - self.crank)).asin()
+    /// θ = π + asin(e / (l − r)), 180° in line. With an offset the two dead
+    /// centres are not 180° apart.
+    pub fn inner_dead_centre(&self) -> Angle {
+        Angle::from_radians(self.dead_centres().1).expect("asin of a ratio below 1 is finite")
+    }
+
+    /// The outer and inner dead centres in radians, unreduced: the outer in
+    /// (−π/2, π/2), the inner in (π/2, 3π/2).
+    pub(crate) fn dead_centres(&self) -> (f64, f64) {
+        (
+            (self.offset / (self.rod + self.crank)).asin(),
+            std::f64::consts::PI + (self.offset / (self.rod - self.crank)).asin(),
+        )
     }
 
     /// The stroke: the distance between the slider's two dead-centre
@@ -121,7 +131,8 @@ impl SliderCrank {
     /// Crank angle turned while the slider goes from the outer to the inner
     /// dead centre (ω > 0), in radians; π when e = 0.
     pub fn inward_stroke_angle(&self) -> f64 {
-        self.inner_dead_centre() - self.outer_dead_centre()
+        let (outer, inner) = self.dead_centres();
+        inner - outer
     }
 
     /// Quick-return time ratio at constant ω: the longer stroke's time over
@@ -346,8 +357,10 @@ mod tests {
     #[test]
     fn dead_centres_in_line() {
         let m = SliderCrank::in_line(0.5, 3.0).unwrap();
-        assert_eq!(m.outer_dead_centre(), 0.0);
-        assert_eq!(m.inner_dead_centre(), std::f64::consts::PI);
+        assert_eq!(m.outer_dead_centre(), Angle::deg(0.0));
+        assert_eq!(m.inner_dead_centre().degrees(), 180.0);
+        let below = SliderCrank::new(1.0, 3.0, -0.5).unwrap();
+        assert!((below.outer_dead_centre().degrees() - (360.0 - 7.180755781)).abs() < 1e-8);
         assert!((m.stroke() - 1.0).abs() < 1e-15);
         assert_eq!(m.quick_return_ratio(), 1.0);
         let outer = m.pose(Angle::deg(0.0));
@@ -360,7 +373,7 @@ mod tests {
     fn offset_dead_centres_are_stationary_and_collinear() {
         let m = SliderCrank::new(1.0, 3.0, 0.7).unwrap();
         for theta in [m.outer_dead_centre(), m.inner_dead_centre()] {
-            let p = m.pose(Angle::from_radians(theta).unwrap());
+            let p = m.pose(theta);
             assert!(p.position_rate().abs() < 1e-14, "{}", p.position_rate());
             assert!(
                 p.transmission_angle()
@@ -368,12 +381,8 @@ mod tests {
                     < 1e-7
             );
         }
-        let far = m
-            .pose(Angle::from_radians(m.outer_dead_centre()).unwrap())
-            .position();
-        let near = m
-            .pose(Angle::from_radians(m.inner_dead_centre()).unwrap())
-            .position();
+        let far = m.pose(m.outer_dead_centre()).position();
+        let near = m.pose(m.inner_dead_centre()).position();
         assert!((far - near - m.stroke()).abs() < 1e-14);
         assert!(m.quick_return_ratio() > 1.0);
     }

@@ -269,7 +269,7 @@ fn mechanisms() -> Vec<(String, SliderCrank)> {
 /// the last four; the same angle once.
 fn poses(m: &SliderCrank) -> Vec<Angle> {
     let mut angles: Vec<Angle> = (0..36).map(|k| Angle::deg(10.0 * k as f64)).collect();
-    let dead = [m.outer_dead_centre(), m.inner_dead_centre()].map(|r| r.to_degrees());
+    let dead = [m.outer_dead_centre(), m.inner_dead_centre()].map(|a| a.degrees());
     for key in [dead[0], dead[1], 90.0, 270.0] {
         let exact = match key {
             90.0 | 270.0 => Angle::deg(key),

@@ -197,8 +197,7 @@ pub fn sweep(mechanism: &SliderCrank, samples: usize) -> SweepReport {
     // Generated as they are checked: memory does not grow with `samples`.
     let even = (0..samples).map(|k| Angle::from_degrees(360.0 * k as f64 / samples as f64));
     let quarters = [0.0, 90.0, 180.0, 270.0].map(Angle::from_degrees);
-    let dead =
-        [mechanism.outer_dead_centre(), mechanism.inner_dead_centre()].map(Angle::from_radians);
+    let dead = [mechanism.outer_dead_centre(), mechanism.inner_dead_centre()].map(Ok);
     let angles = even.chain(quarters).chain(dead).filter_map(|a| a.ok());
     let mut poses = 0;
     let mut worst_ulps: Vec<(Quantity, f64, f64, f64)> =

@@ -461,10 +461,8 @@ pub(crate) fn against_travel<'a>(
 
 /// The dead centres in degrees, outer then inner (0° and 180° in line).
 pub(crate) fn dead_centres(m: &SliderCrank) -> (f64, f64) {
-    (
-        m.outer_dead_centre().to_degrees(),
-        m.inner_dead_centre().to_degrees(),
-    )
+    let (outer, inner) = m.dead_centres();
+    (outer.to_degrees(), inner.to_degrees())
 }
 
 /// Largest |value| of `f` over a turn (721 samples), for axis ranges.
