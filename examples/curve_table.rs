@@ -15,7 +15,7 @@
 mod cases;
 
 use cases::{Case, TOLERANCES, cases};
-use slider_crank::diagram::{Method, Path};
+use slider_crank::diagram::{Method, TracedPath};
 use std::fmt::Write as _;
 use std::time::Instant;
 
@@ -53,7 +53,7 @@ fn self_timed_us(case: &Case, method: Method, tol: f64) -> f64 {
     batches[7]
 }
 
-fn row(case: &Case, name: &'static str, method: Method, tol: f64, path: &Path) -> Row {
+fn row(case: &Case, name: &'static str, method: Method, tol: f64, path: &TracedPath) -> Row {
     let group = format!("curves-{}", case.name);
     let (time_us, timed_by) = match criterion_mean_us(&group, name, &format!("{tol:e}")) {
         Some(t) => (t, "criterion"),

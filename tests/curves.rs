@@ -5,8 +5,8 @@
 use slider_crank::SliderCrank;
 use slider_crank::construct::{CentrodeKind, CouplerPoint};
 use slider_crank::diagram::{
-    Curve, Deviation, Locus, LocusKind, Method, Path, Segment, Subpath, TraceOptions, measure,
-    trace,
+    Curve, Deviation, Locus, LocusKind, Method, Segment, Subpath, TraceOptions, TracedPath,
+    measure, trace,
 };
 use slider_crank::figure::PageFromWorld;
 use slider_crank::geom::{Frame, Point, Vector};
@@ -50,7 +50,7 @@ fn traced<C: Curve + ?Sized>(
     map: &PageFromWorld,
     frame: &Frame,
     tolerance: f64,
-) -> (Path, Deviation) {
+) -> (TracedPath, Deviation) {
     let options = TraceOptions::with_tolerance(tolerance);
     let path = trace(curve, range.clone(), map, frame, Method::Cubic, &options)
         .unwrap_or_else(|e| panic!("tolerance {tolerance}: {e}"));
@@ -365,7 +365,7 @@ fn measure_of_an_inscribed_polygon_is_its_sagitta() {
     for n in [6usize, 40, 333] {
         let vertex = |k: usize| map.apply(circle(TAU * k as f64 / n as f64).unwrap().0);
         let segments = (1..=n).map(|k| Segment::Line(vertex(k))).collect();
-        let path = Path::new(vec![Subpath::new(vertex(0), segments).unwrap()]);
+        let path = TracedPath::new(vec![Subpath::new(vertex(0), segments).unwrap()]);
         let d = measure(&path, &circle, 0.0..=TAU, &map, &frame);
         let sagitta = 100.0 * (1.0 - (PI / n as f64).cos());
         assert!(
@@ -399,7 +399,7 @@ fn measure_sees_a_missing_branch_and_a_spike() {
         d.curve_to_path
     );
     // A line across the middle: 100 px from the circle at the centre.
-    let spike = Path::new(vec![
+    let spike = TracedPath::new(vec![
         Subpath::new(
             Point::new(50.0, 150.0),
             vec![Segment::Line(Point::new(250.0, 150.0))],
@@ -412,7 +412,7 @@ fn measure_sees_a_missing_branch_and_a_spike() {
         "{}",
         d.path_to_curve
     );
-    let empty = measure(&Path::default(), &circle, 0.0..=TAU, &map, &frame);
+    let empty = measure(&TracedPath::default(), &circle, 0.0..=TAU, &map, &frame);
     assert_eq!(empty.path_to_curve, 0.0);
     assert_eq!(empty.curve_to_path, f64::INFINITY);
 }

@@ -6,7 +6,7 @@
 
 use slider_crank::SliderCrank;
 use slider_crank::construct::CentrodeKind;
-use slider_crank::diagram::{Locus, LocusKind, Method, Path, TraceOptions, measure, trace};
+use slider_crank::diagram::{Locus, LocusKind, Method, TraceOptions, TracedPath, measure, trace};
 use slider_crank::figure::PageFromWorld;
 use slider_crank::geom::{Frame, Point};
 use std::ops::RangeInclusive;
@@ -54,7 +54,7 @@ pub fn cases() -> Vec<Case> {
 
 impl Case {
     /// Traces with `method` at `tolerance`.
-    pub fn trace(&self, method: Method, tolerance: f64) -> Path {
+    pub fn trace(&self, method: Method, tolerance: f64) -> TracedPath {
         let options = TraceOptions::with_tolerance(tolerance);
         trace(
             &self.curve,
@@ -68,7 +68,7 @@ impl Case {
     }
 
     /// The measured deviation of `path` (the larger of both ways).
-    pub fn error(&self, path: &Path) -> f64 {
+    pub fn error(&self, path: &TracedPath) -> f64 {
         measure(
             path,
             &self.curve,

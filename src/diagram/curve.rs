@@ -1,7 +1,7 @@
 //! The curve engine: [`trace`] and what it needs. The method is described in
 //! the module docs of [`crate::diagram`].
 
-use super::{Path, Segment, Subpath};
+use super::{Segment, Subpath, TracedPath};
 use crate::error::{Error, Result, finite, positive};
 use crate::figure::PageFromWorld;
 use crate::geom::{Frame, Point, Vector, cross};
@@ -132,7 +132,7 @@ impl Default for TraceOptions {
 /// Traces `curve` over the parameter `range` (closed, start < end) through
 /// the page-from-world `map`, clipped to `frame` (page coordinates), by
 /// `method`. The result is in page coordinates; map it with
-/// `map.inverse()` ([`Path::transform`]) to store it in world coordinates.
+/// `map.inverse()` ([`TracedPath::transform`]) to store it in world coordinates.
 ///
 /// Each emitted segment is within `options.tolerance` of the exact curve (a
 /// measured bound, see [`crate::diagram`]) except with [`Method::Uniform`];
@@ -152,7 +152,7 @@ pub fn trace<C: Curve + ?Sized>(
     frame: &Frame,
     method: Method,
     options: &TraceOptions,
-) -> Result<Path> {
+) -> Result<TracedPath> {
     let tolerance = positive("tolerance", options.tolerance)?;
     let (start, end) = range.into_inner();
     let start = finite("range start", start)?;
@@ -215,7 +215,7 @@ pub fn trace<C: Curve + ?Sized>(
     if let Some((sub, _)) = tracer.current.take() {
         tracer.subpaths.push(sub);
     }
-    Ok(Path::new(tracer.subpaths))
+    Ok(TracedPath::new(tracer.subpaths))
 }
 
 /// The curve at one parameter, in page coordinates.

@@ -16,7 +16,7 @@
 //! maximum between their neighbouring samples, so the largest deviation is
 //! located, not only sampled.
 
-use super::{Curve, Path, Segment};
+use super::{Curve, Segment, TracedPath};
 use crate::figure::PageFromWorld;
 use crate::geom::{Frame, Point, Vector};
 use std::ops::RangeInclusive;
@@ -75,7 +75,7 @@ const REFINED_MAXIMA: usize = 8;
 /// zero size takes its sample spacing from the path's extent (1/1024 of it,
 /// or 1/1024 page unit for an empty path).
 pub fn measure<C: Curve + ?Sized>(
-    path: &Path,
+    path: &TracedPath,
     curve: &C,
     range: RangeInclusive<f64>,
     map: &PageFromWorld,
@@ -152,7 +152,7 @@ pub fn measure<C: Curve + ?Sized>(
 }
 
 /// The bounding box of the path's points and control points, when finite.
-fn bounds(path: &Path) -> Option<(Point, Point)> {
+fn bounds(path: &TracedPath) -> Option<(Point, Point)> {
     let mut points = path.subpaths().iter().flat_map(|s| {
         std::iter::once(s.start()).chain(s.segments().iter().flat_map(|g| match *g {
             Segment::Line(p) => [p, p, p],

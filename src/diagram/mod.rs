@@ -7,9 +7,9 @@
 //! page-from-world map ([`crate::figure::PageFromWorld`], the same map the figure panels use) and draws it as cubic Béziers (or, for
 //! comparison, line segments) within a tolerance in page units
 //! ([`DEFAULT_TOLERANCE`] = 0.01), clipped to a [`Frame`](crate::geom::Frame).
-//! The result is a [`Path`] in page coordinates, which maps to world
+//! The result is a [`TracedPath`] in page coordinates, which maps to world
 //! coordinates and back exactly through the map's inverse
-//! ([`Path::transform`]). [`measure()`] checks a path against the exact curve
+//! ([`TracedPath::transform`]). [`measure()`] checks a path against the exact curve
 //! independently of how it was made.
 //!
 //! # How a piece is fitted
@@ -91,6 +91,6 @@ pub use axis::{Axis, Scale, Tick, format_number};
 pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace, trace_tolerance};
 pub use locus::{Locus, LocusKind};
 pub use measure::{Deviation, measure};
-pub use path::{Path, Segment, Subpath};
+pub use path::{Segment, Subpath, TracedPath};
 pub(crate) use plot::CAPTION;
 pub use plot::Plot;

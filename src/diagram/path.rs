@@ -122,15 +122,15 @@ impl Subpath {
 
 /// A list of subpaths: what a curve becomes once traced and clipped, in
 /// page coordinates (or in world coordinates through
-/// [`Path::transform`]), each subpath a start and its segments. Not the
+/// [`TracedPath::transform`]), each subpath a start and its segments. Not the
 /// path a figure draws: that is [`crate::figure::Path`], in a panel's world
-/// coordinates, which [`Path::to_figure_path`] makes of this one.
+/// coordinates, which [`TracedPath::to_figure_path`] makes of this one.
 #[derive(Debug, Clone, PartialEq, Default)]
-pub struct Path {
+pub struct TracedPath {
     subpaths: Vec<Subpath>,
 }
 
-impl Path {
+impl TracedPath {
     /// The path made of `subpaths`.
     pub fn new(subpaths: Vec<Subpath>) -> Self {
         Self { subpaths }
@@ -245,7 +245,7 @@ mod tests {
             ],
         )
         .unwrap();
-        let path = Path::new(vec![sub]);
+        let path = TracedPath::new(vec![sub]);
         let m = PageFromWorld::scale_translate(2.0, -1.0, 10.0, 0.0).unwrap();
         let mapped = path.transform(&m).unwrap();
         let s = &mapped.subpaths()[0];
@@ -254,7 +254,7 @@ mod tests {
         assert_eq!(s.end(), Point::new(28.0, -10.0));
         assert_eq!(mapped.segment_count(), 2);
         let huge = PageFromWorld::scale_translate(1e150, 1e150, 0.0, 0.0).unwrap();
-        let far = Path::new(vec![Subpath::new(Point::new(1e200, 0.0), vec![]).unwrap()]);
+        let far = TracedPath::new(vec![Subpath::new(Point::new(1e200, 0.0), vec![]).unwrap()]);
         assert!(far.transform(&huge).is_none());
     }
 }

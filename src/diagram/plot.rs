@@ -314,7 +314,7 @@ impl Plot {
             })?;
             subpaths.extend(traced.subpaths().iter().cloned());
         }
-        let page = super::Path::new(subpaths);
+        let page = super::TracedPath::new(subpaths);
         for sub in page.subpaths() {
             for (start, seg) in sub.pieces() {
                 let n = ((seg.end() - start).norm() / 6.0).ceil().clamp(4.0, 400.0) as usize;

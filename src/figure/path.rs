@@ -18,8 +18,8 @@ pub enum PathSegment {
 
 /// A path a figure draws, in its panel's world coordinates: subpaths of
 /// lines and cubic Béziers, each starting with [`PathSegment::MoveTo`].
-/// (A curve traced by the curve engine is a [`crate::diagram::Path`], in
-/// page coordinates, until [`crate::diagram::Path::to_figure_path`] turns
+/// (A curve traced by the curve engine is a [`crate::diagram::TracedPath`], in
+/// page coordinates, until [`crate::diagram::TracedPath::to_figure_path`] turns
 /// it into one of these.)
 ///
 /// Built through [`Path::new`] and the `move_to`, `line_to`, `cubic_to`,

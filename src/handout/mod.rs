@@ -39,7 +39,7 @@ mod page;
 mod random;
 mod steps;
 
-pub use class::Class;
+pub use class::{Class, MAX_CLASS};
 pub use random::SplitMix64;
 
 use crate::analytic::kinematics::check_omega;
