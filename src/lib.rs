@@ -150,6 +150,7 @@ parse_by_name!(
 
 pub mod analytic;
 mod angle;
+pub mod animate;
 pub mod catalogue;
 pub mod chain;
 pub mod construct;
