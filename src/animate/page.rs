@@ -4,6 +4,7 @@
 //! fetched; without the script the page shows the first frame, and a
 //! printed page shows the frame on screen without the controls.
 
+use super::svg::seconds;
 use super::{Animation, Frame};
 use crate::render::{fmt, root_size};
 use maud::{DOCTYPE, Markup, PreEscaped, html};
@@ -13,7 +14,8 @@ const STYLE: &str = "
 body { font-family: Georgia, 'Times New Roman', serif; margin: 1.5rem auto; max-width: 64rem;
        padding: 0 1rem; color: #111; }
 .stage svg { display: block; max-width: 100%; height: auto; }
-.controls { display: flex; align-items: center; gap: 1rem; margin-top: .8rem; }
+.controls { display: flex; align-items: center; gap: 1rem; padding: .5rem 0; position: sticky;
+            top: 0; background: #fff; }
 .controls input { flex: 1; }
 .controls output { min-width: 6em; font-variant-numeric: tabular-nums; }
 @media print { .controls { display: none; } }
@@ -25,12 +27,12 @@ body { font-family: Georgia, 'Times New Roman', serif; margin: 1.5rem auto; max-
 const SCRIPT: &str = "
 (() => {
   const stage = document.getElementById('stage');
-  const frames = stage.querySelectorAll('.frame');
+  const frames = stage.querySelectorAll(':scope > .animation-frame');
   const slider = document.getElementById('angle');
   const value = document.getElementById('angle-value');
   const button = document.getElementById('play');
   const step = Number(stage.dataset.period) * 1000 / frames.length;
-  let shown = 0, timer = null, start = 0, from = 0;
+  let shown = 0, timer = null, start = null, from = 0;
   const show = (k) => {
     frames[shown].hidden = true;
     frames[k].hidden = false;
@@ -39,13 +41,14 @@ const SCRIPT: &str = "
     value.textContent = '\\u03b8 = ' + frames[k].dataset.angleDeg + '\\u00b0';
   };
   const tick = (now) => {
-    const k = (from + Math.floor((now - start) / step)) % frames.length;
+    if (start === null) start = now;
+    const k = (from + Math.floor(Math.max(0, now - start) / step)) % frames.length;
     if (k !== shown) show(k);
     timer = requestAnimationFrame(tick);
   };
   const play = () => {
     from = shown;
-    start = performance.now();
+    start = null;
     timer = requestAnimationFrame(tick);
     button.textContent = 'Pause';
     button.setAttribute('aria-pressed', 'true');
@@ -77,10 +80,9 @@ pub(super) fn document(animation: &Animation) -> String {
             }
             body {
                 h1 { (heading) }
-                div #stage .stage data-period=(animation.period()) {
-                    @for (k, frame) in animation.frames().iter().enumerate() {
-                        (frame_view(animation, frame, k))
-                    }
+                p {
+                    "One revolution of the crank in " (animation.frames().len()) " frames, "
+                    (seconds(animation.period())) " s a turn; the slider sets the crank angle θ."
                 }
                 div .controls {
                     button #play type="button" aria-pressed="false" { "Play" }
@@ -88,6 +90,11 @@ pub(super) fn document(animation: &Animation) -> String {
                         step="1" value="0" aria-label="Crank angle (frame)";
                     output #angle-value for="angle" {
                         "θ = " (fmt(first.angle().degrees())) "°"
+                    }
+                }
+                div #stage .stage data-period=(animation.period()) {
+                    @for (k, frame) in animation.frames().iter().enumerate() {
+                        (frame_view(animation, frame, k))
                     }
                 }
                 script { (PreEscaped(SCRIPT)) }
@@ -103,7 +110,7 @@ fn frame_view(animation: &Animation, frame: &Frame, k: usize) -> Markup {
     let (w, h) = (animation.width(), animation.height());
     let unit = animation.size_unit();
     html! {
-        div .frame id=(prefix.trim_end_matches('-')) hidden[k > 0]
+        div .animation-frame id=(prefix.trim_end_matches('-')) hidden[k > 0]
             data-angle-deg=(fmt(frame.angle().degrees())) {
             svg xmlns="http://www.w3.org/2000/svg" width=(root_size(w, unit))
                 height=(root_size(h, unit)) viewBox={ "0 0 " (fmt(w)) " " (fmt(h)) }

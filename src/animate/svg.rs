@@ -5,7 +5,7 @@
 //! without what belongs to one pose (`angle_deg`, `points`,
 //! `evaluations`) and with an `animation` object (`frames`, `period`,
 //! `angles_deg`, the `id_prefix` of frame 0), then one group per frame
-//! (`id="f000"`, `class="frame"`, `data-angle-deg`), holding the still
+//! (`id="f000"`, `class="animation-frame"`, `data-angle-deg`), holding the still
 //! figure with its ids prefixed (`f000-point-E`) and its own metadata.
 //!
 //! Each group carries an SMIL `<animate>` of its `visibility`
@@ -50,7 +50,7 @@ fn group(frame: &Frame, k: usize, count: usize, period: f64) -> Element {
     let prefix = Frame::prefix(k);
     let mut g = Element::new("g");
     g.assign("id", prefix.trim_end_matches('-'));
-    g.assign("class", "frame");
+    g.assign("class", "animation-frame");
     g.assign("data-angle-deg", fmt(frame.angle().degrees()));
     if k > 0 {
         g.assign("visibility", "hidden");
@@ -91,7 +91,7 @@ fn key_time(i: usize, count: usize) -> String {
 }
 
 /// A period in seconds, to the millisecond (at least one).
-fn seconds(period: f64) -> String {
+pub(super) fn seconds(period: f64) -> String {
     let ms = (period * 1000.0).round().max(1.0);
     let s = format!("{:.3}", ms / 1000.0);
     s.trim_end_matches('0').trim_end_matches('.').to_string()

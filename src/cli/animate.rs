@@ -30,7 +30,7 @@ pub struct AnimateArgs {
     #[command(flatten)]
     pub flags: FigureFlags,
     /// Frames per revolution, 2 to 720 (72: one every 5°)
-    #[arg(long, value_name = "N", default_value_t = DEFAULT_FRAMES)]
+    #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = DEFAULT_FRAMES)]
     pub frames: usize,
     /// Seconds per revolution, more than 0 and at most 3600
     #[arg(long, value_name = "S", allow_hyphen_values = true, default_value_t = DEFAULT_PERIOD)]
@@ -52,6 +52,16 @@ pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
     } else {
         AnimationFormat::from_path(&args.out)?
     };
+    if args.flags.data.is_some() || args.flags.fit.is_some() {
+        let flag = if args.flags.data.is_some() {
+            "--data"
+        } else {
+            "--fit"
+        };
+        return Err(Error::Parse(format!(
+            "animate takes no {flag}: the mechanism figures draw no measured data"
+        )));
+    }
     let scene = options(&args.flags, args.name)
         .and_then(|o| args.name.scene_with(&o))?
         .ok_or_else(|| not_animated(args.name))?;
