@@ -100,7 +100,7 @@ fn stills(scene: &slider_crank::Scene, animation: &Animation) -> Vec<String> {
     let angles: Vec<Angle> = animation.frames().iter().map(Frame::angle).collect();
     let mut held: Vec<Angle> = (0..360).map(|d| Angle::deg(f64::from(d))).collect();
     held.extend_from_slice(&angles);
-    let held = scene.clone().held_over(held).unwrap();
+    let held = scene.clone().with_held_view(held);
     held.frames(&angles).unwrap().iter().map(to_svg).collect()
 }
 
@@ -433,4 +433,98 @@ fn frames_drawn_alone_are_plates() {
         }
     }
     assert!(report.is_empty(), "{}", report.join("\n"));
+}
+
+// ------------------------------------------------------ in a browser
+
+/// A headless Chromium on the path, if there is one.
+fn chromium() -> Option<&'static str> {
+    ["chromium", "chromium-browser", "google-chrome"]
+        .into_iter()
+        .find(|name| {
+            std::process::Command::new(name)
+                .arg("--version")
+                .output()
+                .is_ok_and(|o| o.status.success())
+        })
+}
+
+/// Chromium run headless on `file` with `args`, given a minute; its
+/// standard output (through a file: a page's DOM fills a pipe).
+fn browse(browser: &str, file: &Path, args: &[&str]) -> Vec<u8> {
+    use std::process::{Command, Stdio};
+    use std::time::{Duration, Instant};
+    let url = format!("file://{}", file.display());
+    let dump = file.with_extension("out");
+    let mut child = Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--hide-scrollbars",
+        ])
+        .args(args)
+        .arg(url)
+        .stdout(std::fs::File::create(&dump).unwrap())
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    let deadline = Instant::now() + Duration::from_secs(60);
+    while child.try_wait().unwrap().is_none() {
+        if Instant::now() > deadline {
+            child.kill().unwrap();
+            panic!("{browser} took more than a minute on {}", file.display());
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+    std::fs::read(&dump).unwrap()
+}
+
+#[test]
+fn chromium_plays_the_svg_and_the_page() {
+    let Some(browser) = chromium() else {
+        eprintln!("no chromium here: skipped");
+        return;
+    };
+    let dir = scratch("chromium");
+    let (svg, html) = (dir.join("a.svg"), dir.join("a.html"));
+    for out in [&svg, &html] {
+        let path = out.to_str().unwrap();
+        succeeded(&run(&[
+            "animate",
+            "fig-63-velocity",
+            "--frames",
+            "8",
+            "--out",
+            path,
+        ]));
+    }
+    // The page's script moves the slider on: one frame shown, not the
+    // first, and the angle written beside the slider is its angle.
+    let dom = browse(
+        browser,
+        &html,
+        &["--virtual-time-budget=3000", "--dump-dom"],
+    );
+    let dom = String::from_utf8(dom).unwrap();
+    let shown: Vec<&str> = dom
+        .match_indices("<div class=\"animation-frame\"")
+        .map(|(at, _)| &dom[at..at + dom[at..].find('>').unwrap()])
+        .filter(|tag| !tag.contains("hidden"))
+        .collect();
+    assert_eq!(shown.len(), 1, "{shown:?}");
+    assert!(!shown[0].contains("id=\"f000\""), "still the first frame");
+    let angle = shown[0].split("data-angle-deg=\"").nth(1).unwrap();
+    let angle = &angle[..angle.find('"').unwrap()];
+    assert!(dom.contains(&format!("θ = {angle}°")), "{angle}");
+    // The SVG plays by itself: two moments of the turn look different.
+    let shot = |ms: u32| {
+        let png = dir.join(format!("at-{ms}.png"));
+        let budget = format!("--virtual-time-budget={ms}");
+        let target = format!("--screenshot={}", png.display());
+        browse(browser, &svg, &[&budget, &target, "--window-size=760,1200"]);
+        std::fs::read(&png).unwrap()
+    };
+    assert_ne!(shot(700), shot(2700));
+    std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -129,8 +129,12 @@ impl Animation {
         self.sheet.title.as_deref()
     }
 
-    /// The self-playing SVG: every frame a group shown in turn, the
-    /// revolution repeated without end ([`svg`](self) module docs).
+    /// The self-playing SVG: every frame a group (`id="f000"`, its ids
+    /// prefixed `f000-`) shown in turn for 1/N of the period by an SMIL
+    /// `<animate>` of its visibility, the revolution repeated without end;
+    /// a viewer that does not animate shows the first frame. The root's
+    /// metadata is the first frame's without the keys of its pose, with an
+    /// `animation` object (`frames`, `period`, `angles_deg`).
     pub fn to_svg(&self) -> String {
         svg::document(self)
     }

@@ -32,7 +32,7 @@ const SCRIPT: &str = "
   const value = document.getElementById('angle-value');
   const button = document.getElementById('play');
   const step = Number(stage.dataset.period) * 1000 / frames.length;
-  let shown = 0, timer = null, start = null, from = 0;
+  let shown = 0, timer = null, start = 0, from = 0;
   const show = (k) => {
     frames[shown].hidden = true;
     frames[k].hidden = false;
@@ -40,21 +40,19 @@ const SCRIPT: &str = "
     slider.value = k;
     value.textContent = '\\u03b8 = ' + frames[k].dataset.angleDeg + '\\u00b0';
   };
-  const tick = (now) => {
-    if (start === null) start = now;
-    const k = (from + Math.floor(Math.max(0, now - start) / step)) % frames.length;
+  const tick = () => {
+    const k = (from + Math.floor((performance.now() - start) / step)) % frames.length;
     if (k !== shown) show(k);
-    timer = requestAnimationFrame(tick);
   };
   const play = () => {
     from = shown;
-    start = null;
-    timer = requestAnimationFrame(tick);
+    start = performance.now();
+    timer = setInterval(tick, Math.max(step / 2, 10));
     button.textContent = 'Pause';
     button.setAttribute('aria-pressed', 'true');
   };
   const pause = () => {
-    cancelAnimationFrame(timer);
+    clearInterval(timer);
     timer = null;
     button.textContent = 'Play';
     button.setAttribute('aria-pressed', 'false');
