@@ -328,6 +328,24 @@ fn an_existing_file_is_kept_when_the_request_is_refused() {
 }
 
 #[test]
+fn a_dash_prints_the_svg_and_a_bare_name_gets_svg() {
+    let out = run(&[
+        "animate",
+        "fig-62-displacement",
+        "--frames",
+        "3",
+        "--out",
+        "-",
+    ]);
+    succeeded(&out);
+    let printed = String::from_utf8(out.stdout).unwrap();
+    assert!(printed.starts_with("<svg") && printed.contains("<animate "));
+    assert_eq!(svg_frames(&printed).len(), 3);
+    let written = animate("bare", "turn", &["fig-62-displacement", "--frames", "3"]);
+    assert_eq!(written, printed);
+}
+
+#[test]
 fn the_options_of_figure_reach_every_frame() {
     let svg = animate(
         "options",
