@@ -249,6 +249,9 @@ fn ids_are_unique_and_nothing_is_fetched() {
     assert_eq!(svg.matches("<animate ").count(), 6);
     assert_eq!(svg.matches("calcMode=\"discrete\"").count(), 6);
     assert_eq!(svg.matches("visibility=\"hidden\"").count(), 5);
+    // Nothing inside a frame sets its own visibility, which would show
+    // through a hidden frame.
+    assert_eq!(svg.matches(" visibility=").count(), 5);
     assert!(svg.starts_with("<svg") && svg.trim_end().ends_with("</svg>"));
     // The page: a slider over the frames, a play button, its script.
     assert!(html.starts_with("<!DOCTYPE html>"));
