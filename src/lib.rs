@@ -60,7 +60,9 @@
 //!
 //! A scene is fitted to its own pose; [`Scene::with_held_view`] holds its page
 //! map over a range of poses and [`Scene::frames`] draws a series in one
-//! such view (the whole revolution by default). [`SceneFile::from_toml`]
+//! such view (the whole revolution by default); [`animate::Animation`]
+//! plays one revolution of such a series as a self-playing SVG or an HTML
+//! page with a slider. [`SceneFile::from_toml`]
 //! reads scene files, whose keys `docs/scene-format.md` lists
 //! ([`SceneFile::keys`]); [`FigureName::scene_toml`] writes the file of a
 //! named figure.
@@ -150,6 +152,7 @@ parse_by_name!(
 
 pub mod analytic;
 mod angle;
+pub mod animate;
 pub mod catalogue;
 pub mod chain;
 pub mod construct;

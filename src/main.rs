@@ -87,6 +87,14 @@ enum Command {
     /// written whole or not at all; a failed run leaves none.
     #[command(mut_arg("length", |a| a.visible_alias("units")))]
     Handout(cli::handout::HandoutArgs),
+    /// Animate a mechanism figure through one revolution of the crank: a
+    /// self-playing SVG, or an HTML page with a slider and a play button
+    ///
+    /// Every frame is the figure `figure NAME --angle θ` draws, in one
+    /// view held over the whole turn, so that only the mechanism and its
+    /// constructions move. Progress goes to standard error when drawing
+    /// takes more than a moment; the file is written whole or not at all.
+    Animate(cli::animate::AnimateArgs),
 }
 
 /// Exit code of a refused run (bad input, unwritable output).
@@ -114,6 +122,7 @@ fn main() -> ExitCode {
         Command::Scene(args) => cli::scene::run(args, &mut out).map(|()| true),
         Command::Gallery(args) => cli::gallery::run(args, &mut out),
         Command::Handout(args) => cli::handout::run(args, &mut out).map(|()| true),
+        Command::Animate(args) => cli::animate::run(args, &mut out).map(|()| true),
     }
     .and_then(|ok| out.finish().map(|()| ok));
     match result {
@@ -147,7 +156,7 @@ fn parse_error(e: clap::Error) -> ExitCode {
     }
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         eprintln!(
-            "slider-crank: a subcommand is required: gallery, handout, analyze, table, check, figure or scene (see --help)"
+            "slider-crank: a subcommand is required: gallery, handout, analyze, table, check, figure, scene or animate (see --help)"
         );
         return ExitCode::from(REFUSED);
     }

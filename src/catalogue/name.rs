@@ -299,8 +299,19 @@ impl FigureName {
     /// for an option the figure does not use, for bad data, and for what
     /// the mechanism cannot draw.
     pub fn figure(&self, options: &FigureOptions) -> Result<Figure> {
+        match self.scene_with(options)? {
+            Some(scene) => scene.figure(),
+            None => diagrams::build(*self, options).map_err(Error::one_line),
+        }
+    }
+
+    /// The scene of a mechanism figure with `options` applied, the scene
+    /// [`FigureName::figure`] draws; `None` for a diagram, which has no
+    /// scene. Errors as [`FigureName::figure`] for an option a mechanism
+    /// figure does not use (`--data`, `--fit`) or a bad value.
+    pub fn scene_with(&self, options: &FigureOptions) -> Result<Option<Scene>> {
         let Some(mut scene) = self.scene() else {
-            return diagrams::build(*self, options).map_err(Error::one_line);
+            return Ok(None);
         };
         if let Some(bad) = options
             .given()
@@ -350,7 +361,7 @@ impl FigureName {
         if let Some(t) = &options.title {
             scene = scene.with_title(t.clone());
         }
-        scene.figure()
+        Ok(Some(scene))
     }
 
     /// The scene file of this figure, as a starting point: every key it

@@ -24,6 +24,21 @@ pub struct FigureArgs {
     /// inversion-4-hand-pump, slot-convergence
     #[arg(value_name = "NAME")]
     pub name: FigureName,
+    #[command(flatten)]
+    pub flags: FigureFlags,
+    /// Write to FILE instead of printing SVG, in the format its extension
+    /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
+    /// embedded); SVG for a name without an extension, any other is
+    /// refused; `-` prints SVG. A device or FIFO is written in place; a
+    /// symbolic link is kept and its target replaced
+    #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
+    pub out: Option<PathBuf>,
+}
+
+/// The changes to a named figure that `figure` and `animate` take: the
+/// mechanism, pose, speed, layers, look, units, page and title.
+#[derive(Debug, Args)]
+pub struct FigureFlags {
     /// Crank radius r, in the length unit (--unit) [default: the figure's
     /// own, 0.5 ft for the §35 engine, 25 mm for Ng's rig]
     #[arg(long, value_name = "R", allow_hyphen_values = true)]
@@ -97,13 +112,6 @@ pub struct FigureArgs {
     /// subscript
     #[arg(long, value_name = "TEXT", allow_hyphen_values = true)]
     pub title: Option<Title>,
-    /// Write to FILE instead of printing SVG, in the format its extension
-    /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
-    /// embedded); SVG for a name without an extension, any other is
-    /// refused; `-` prints SVG. A device or FIFO is written in place; a
-    /// symbolic link is kept and its target replaced
-    #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
-    pub out: Option<PathBuf>,
 }
 
 /// Where `--out` sends a figure: a file and the format its extension
@@ -127,7 +135,7 @@ pub fn emit(figure: &Figure, to: Option<(&Path, FileFormat)>, out: &mut Stdout) 
 }
 
 /// The options the flags ask for, validated.
-fn options(args: &FigureArgs, name: FigureName) -> Result<FigureOptions> {
+pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     let mechanism = if args.crank.is_some() || args.rod.is_some() || args.offset.is_some() {
         let m = name.mechanism();
         Some(SliderCrank::new(
@@ -184,12 +192,14 @@ fn options(args: &FigureArgs, name: FigureName) -> Result<FigureOptions> {
 pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
     let name = args.name;
     let to = destination(args.out.as_ref())?;
-    let options = options(args, name)?;
-    let figure = name.figure(&options).map_err(|e| match (&args.data, e) {
-        (Some(path), Error::Parse(m)) if m.starts_with("data") => {
-            Error::Parse(format!("{}: {m}", path.display()))
-        }
-        (_, e) => e,
-    })?;
+    let options = options(&args.flags, name)?;
+    let figure = name
+        .figure(&options)
+        .map_err(|e| match (&args.flags.data, e) {
+            (Some(path), Error::Parse(m)) if m.starts_with("data") => {
+                Error::Parse(format!("{}: {m}", path.display()))
+            }
+            (_, e) => e,
+        })?;
     emit(&figure, to, out)
 }

@@ -1,6 +1,7 @@
 //! The subcommands of the `slider-crank` program.
 
 pub mod analyze;
+pub mod animate;
 pub mod args;
 pub mod chain;
 pub mod check;

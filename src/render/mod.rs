@@ -27,6 +27,7 @@ pub use pdf::{POINTS_PER_UNIT, to_pdf};
 #[cfg(feature = "png")]
 pub use png::to_png;
 pub use save::save;
+pub(crate) use svg::root_size;
 pub use svg::to_svg;
 
 /// Renders SVG text to PNG bytes: built without the `png` feature, this

@@ -406,6 +406,17 @@ impl Scene {
     /// # Ok::<(), slider_crank::Error>(())
     /// ```
     pub fn frames(&self, angles: &[Angle]) -> Result<Vec<Figure>> {
+        Ok(self.frame_series(angles)?.collect())
+    }
+
+    /// The figures [`Scene::frames`] draws, one at a time: the view is
+    /// laid out at once, each frame when the iterator reaches it (for a
+    /// long series shown with its progress, or written as it is drawn).
+    /// Errors as [`Scene::frames`].
+    pub fn frame_series<'a>(
+        &self,
+        angles: &'a [Angle],
+    ) -> Result<impl Iterator<Item = Figure> + use<'a>> {
         valid::scene(self)?;
         if angles.is_empty() || angles.len() > valid::MAX_HELD {
             return Err(Error::OutOfRange {
@@ -421,14 +432,13 @@ impl Scene {
         let held = self.clone().with_held_view(range);
         valid::scene(&held)?;
         let layout = draw::held(&held, held.held().unwrap_or_default());
-        Ok(angles
-            .iter()
-            .map(|a| {
-                let mut poses = held.angles.clone();
-                poses[0] = *a;
-                draw::build(&held.clone().with_angles(poses), Some(&layout)).0
-            })
-            .collect())
+        Ok(angles.iter().map(move |a| {
+            let mut frame = held.clone();
+            // The first pose moved; the number of poses is unchanged, so
+            // the frame stays as valid as the held scene.
+            frame.angles[0] = *a;
+            draw::build(&frame, Some(&layout)).0
+        }))
     }
 
     /// The figure's name.

@@ -325,7 +325,7 @@ fn metadata(figure: &Figure) -> Element {
 
 /// A page length for the root's `width` or `height`: page units as they
 /// are, a physical size with its unit (`120mm`).
-fn root_size(x: f64, unit: PageUnit) -> String {
+pub(crate) fn root_size(x: f64, unit: PageUnit) -> String {
     if unit.is_physical() {
         format!("{}{unit}", fmt(x / unit.page_units()))
     } else {

@@ -1,0 +1,228 @@
+//! Animations: one revolution of a mechanism figure, its constructions
+//! moving with the crank.
+//!
+//! An [`Animation`] is a series of still figures of one [`Scene`], the
+//! crank turned by equal steps through a whole revolution from the scene's
+//! own pose, all drawn in one view held over the revolution
+//! ([`Scene::frames`]), so that nothing moves but the mechanism and its
+//! constructions: E slides on its line, D runs off to infinity and back as
+//! an arrow at the frame's edge, Kisch's H, F and G follow the pin. Each
+//! frame is exactly the figure [`Scene::frames`] draws at its angle, with
+//! the same plate standards as a still figure.
+//!
+//! It is written as a self-playing SVG ([`Animation::to_svg`]: the frames
+//! shown in turn by SMIL, as Chromium and Firefox play it) or as an HTML
+//! page with a slider for the crank angle and a play button
+//! ([`Animation::to_html`]); both are self-contained, and
+//! [`AnimationFormat`] tells them by a file's extension.
+
+mod format;
+mod frames;
+mod page;
+mod svg;
+
+pub use format::AnimationFormat;
+pub use frames::{Frame, prefixed};
+
+use crate::error::{Error, Result};
+use crate::figure::PageUnit;
+use crate::{Angle, Scene};
+
+/// Frames per revolution unless asked otherwise: one every 5°.
+pub const DEFAULT_FRAMES: usize = 72;
+
+/// The fewest frames of an animation: two poses half a turn apart.
+pub const MIN_FRAMES: usize = 2;
+
+/// The most frames of an animation: one every half degree.
+pub const MAX_FRAMES: usize = 720;
+
+/// Seconds per revolution unless asked otherwise.
+pub const DEFAULT_PERIOD: f64 = 4.0;
+
+/// The longest period, in seconds: an hour per revolution.
+pub const MAX_PERIOD: f64 = 3600.0;
+
+/// One revolution of a mechanism figure: the still frames and the time
+/// the revolution takes.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Animation {
+    name: String,
+    period: f64,
+    frames: Vec<Frame>,
+    sheet: frames::Sheet,
+}
+
+impl Animation {
+    /// `count` frames of `scene`, its first pose turned by 360°/`count`
+    /// from one frame to the next, starting at the scene's own pose, all
+    /// in one view held over the revolution, played once every `period`
+    /// seconds.
+    ///
+    /// The view is held over every degree of the turn and the frames' own
+    /// angles (over the scene's [`Scene::held`] poses and the frames'
+    /// angles when it holds some), so a pose of the animation never
+    /// reaches past the page and a different `count` keeps the same view.
+    /// Errors when `count` is outside [`MIN_FRAMES`]..=[`MAX_FRAMES`] or
+    /// `period` is not a finite number of seconds in (0, [`MAX_PERIOD`]].
+    pub fn new(scene: &Scene, count: usize, period: f64) -> Result<Self> {
+        Self::with_progress(scene, count, period, |_, _| {})
+    }
+
+    /// [`Animation::new`], calling `progress(done, count)` after each
+    /// frame is drawn (`done` from 1 to `count`), for a long series.
+    pub fn with_progress(
+        scene: &Scene,
+        count: usize,
+        period: f64,
+        progress: impl FnMut(usize, usize),
+    ) -> Result<Self> {
+        let period = check_period(period)?;
+        let angles = angles(scene.angles()[0], count)?;
+        let (frames, sheet) = frames::draw(scene, &angles, progress)?;
+        Ok(Self {
+            name: scene.name().to_string(),
+            period,
+            frames,
+            sheet,
+        })
+    }
+
+    /// The figure's name (`fig-66-kisch`).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Seconds per revolution.
+    pub fn period(&self) -> f64 {
+        self.period
+    }
+
+    /// The frames, in the order they are played (at least two).
+    pub fn frames(&self) -> &[Frame] {
+        &self.frames
+    }
+
+    /// The page's width in page units, the same for every frame.
+    pub fn width(&self) -> f64 {
+        self.sheet.width
+    }
+
+    /// The page's height in page units: the tallest frame's (a frame
+    /// needing more room for its notes than the others is not cut).
+    pub fn height(&self) -> f64 {
+        self.frames.iter().map(Frame::height).fold(0.0, f64::max)
+    }
+
+    /// The unit the page's size is written in ([`crate::Page::unit`]).
+    pub fn size_unit(&self) -> PageUnit {
+        self.sheet.unit
+    }
+
+    /// The CSS font family the frames are set in.
+    pub fn font_family(&self) -> &str {
+        self.sheet.font_family
+    }
+
+    /// The figure's title in plain text, if it has one.
+    pub fn title(&self) -> Option<&str> {
+        self.sheet.title.as_deref()
+    }
+
+    /// The self-playing SVG: every frame a group (`id="f000"`, its ids
+    /// prefixed `f000-`) shown in turn for 1/N of the period by an SMIL
+    /// `<animate>` of its visibility, the revolution repeated without end;
+    /// a viewer that does not animate shows the first frame. The root's
+    /// metadata is the first frame's without the keys of its pose, with an
+    /// `animation` object (`frames`, `period`, `angles_deg`).
+    pub fn to_svg(&self) -> String {
+        svg::document(self)
+    }
+
+    /// The HTML page: the frames inline, a slider to scrub the crank
+    /// angle and a play/pause button (a small inline script; nothing
+    /// fetched).
+    pub fn to_html(&self) -> String {
+        page::document(self)
+    }
+
+    /// The animation in `format`.
+    pub fn encode(&self, format: AnimationFormat) -> String {
+        match format {
+            AnimationFormat::Svg => self.to_svg(),
+            AnimationFormat::Html => self.to_html(),
+        }
+    }
+}
+
+/// `period` checked: finite, positive, at most [`MAX_PERIOD`].
+fn check_period(period: f64) -> Result<f64> {
+    if !period.is_finite() {
+        return Err(Error::NotFinite {
+            name: "period",
+            value: period,
+        });
+    }
+    if period <= 0.0 || period > MAX_PERIOD {
+        return Err(Error::OutOfRange {
+            name: "period",
+            value: period,
+            reason: format!("a revolution takes more than 0 and at most {MAX_PERIOD} seconds"),
+        });
+    }
+    Ok(period)
+}
+
+/// The `count` angles of a revolution from `start`, in equal steps.
+fn angles(start: Angle, count: usize) -> Result<Vec<Angle>> {
+    if !(MIN_FRAMES..=MAX_FRAMES).contains(&count) {
+        return Err(Error::OutOfRange {
+            name: "frames",
+            value: count as f64,
+            reason: format!("an animation has {MIN_FRAMES} to {MAX_FRAMES} frames"),
+        });
+    }
+    (0..count)
+        .map(|k| Angle::from_degrees(start.degrees() + 360.0 * k as f64 / count as f64))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::SliderCrank;
+
+    fn engine() -> Scene {
+        Scene::new(SliderCrank::in_line(0.5, 3.0).unwrap(), Angle::deg(30.0))
+    }
+
+    #[test]
+    fn the_frames_turn_once_from_the_scene_pose() {
+        let a = angles(Angle::deg(30.0), 4).unwrap();
+        let d: Vec<f64> = a.iter().map(Angle::degrees).collect();
+        assert_eq!(d, [30.0, 120.0, 210.0, 300.0]);
+        // 90° and 270° land exactly: D is at infinity there.
+        let a = angles(Angle::deg(0.0), 4).unwrap();
+        assert_eq!(a[1].cos(), 0.0);
+    }
+
+    #[test]
+    fn counts_and_periods_out_of_range_are_refused() {
+        for n in [0, 1, MAX_FRAMES + 1, 100_000] {
+            let e = Animation::new(&engine(), n, 4.0).unwrap_err();
+            assert!(e.to_string().contains("2 to 720 frames"), "{n}: {e}");
+        }
+        for p in [0.0, -1.0, f64::NAN, f64::INFINITY, MAX_PERIOD * 2.0] {
+            assert!(Animation::new(&engine(), 4, p).is_err(), "{p}");
+        }
+    }
+
+    #[test]
+    fn progress_counts_every_frame() {
+        let mut seen = Vec::new();
+        let a = Animation::with_progress(&engine(), 3, 1.0, |d, n| seen.push((d, n))).unwrap();
+        assert_eq!(seen, [(1, 3), (2, 3), (3, 3)]);
+        assert_eq!(a.frames().len(), 3);
+        assert_eq!(a.frames()[2].angle().degrees(), 270.0);
+    }
+}

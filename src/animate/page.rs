@@ -1,0 +1,121 @@
+//! The HTML page of an animation: the frames inline, one shown at a time,
+//! a range slider over the frames to scrub the crank angle and a
+//! play/pause button, driven by a small inline script. Nothing is
+//! fetched; without the script the page shows the first frame, and a
+//! printed page shows the frame on screen without the controls.
+
+use super::svg::seconds;
+use super::{Animation, Frame};
+use crate::render::{fmt, root_size};
+use maud::{DOCTYPE, Markup, PreEscaped, html};
+
+/// The page's style sheet.
+const STYLE: &str = "
+body { font-family: Georgia, 'Times New Roman', serif; margin: 1.5rem auto; max-width: 64rem;
+       padding: 0 1rem; color: #111; }
+.stage svg { display: block; max-width: 100%; height: auto; }
+.controls { display: flex; align-items: center; gap: 1rem; padding: .5rem 0; position: sticky;
+            top: 0; background: #fff; }
+.controls input { flex: 1; }
+.controls output { min-width: 6em; font-variant-numeric: tabular-nums; }
+@media print { .controls { display: none; } }
+";
+
+/// Shows one frame at a time: the slider picks it, the button plays the
+/// revolution in its period from the frame shown (and pauses), playing
+/// from the start unless the reader prefers reduced motion.
+const SCRIPT: &str = "
+(() => {
+  const stage = document.getElementById('stage');
+  const frames = stage.querySelectorAll(':scope > .animation-frame');
+  const slider = document.getElementById('angle');
+  const value = document.getElementById('angle-value');
+  const button = document.getElementById('play');
+  const step = Number(stage.dataset.period) * 1000 / frames.length;
+  let shown = 0, timer = null, start = 0, from = 0;
+  const show = (k) => {
+    frames[shown].hidden = true;
+    frames[k].hidden = false;
+    shown = k;
+    slider.value = k;
+    value.textContent = '\\u03b8 = ' + frames[k].dataset.angleDeg + '\\u00b0';
+  };
+  const tick = () => {
+    const k = (from + Math.floor((performance.now() - start) / step)) % frames.length;
+    if (k !== shown) show(k);
+  };
+  const play = () => {
+    from = shown;
+    start = performance.now();
+    timer = setInterval(tick, Math.max(step / 2, 10));
+    button.textContent = 'Pause';
+    button.setAttribute('aria-pressed', 'true');
+  };
+  const pause = () => {
+    clearInterval(timer);
+    timer = null;
+    button.textContent = 'Play';
+    button.setAttribute('aria-pressed', 'false');
+  };
+  button.addEventListener('click', () => (timer === null ? play() : pause()));
+  slider.addEventListener('input', () => { pause(); show(Number(slider.value)); });
+  if (!matchMedia('(prefers-reduced-motion: reduce)').matches) play();
+})();
+";
+
+/// The whole page.
+pub(super) fn document(animation: &Animation) -> String {
+    let heading = animation.title().unwrap_or(animation.name());
+    let first = &animation.frames()[0];
+    let markup = html! {
+        (DOCTYPE)
+        html lang="en" {
+            head {
+                meta charset="utf-8";
+                meta name="viewport" content="width=device-width, initial-scale=1";
+                title { (heading) ": one revolution of the crank" }
+                style { (PreEscaped(STYLE)) }
+            }
+            body {
+                h1 { (heading) }
+                p {
+                    "One revolution of the crank in " (animation.frames().len()) " frames, "
+                    (seconds(animation.period())) " s a turn; the slider sets the crank angle θ."
+                }
+                div .controls {
+                    button #play type="button" aria-pressed="false" { "Play" }
+                    input #angle type="range" min="0" max=(animation.frames().len() - 1)
+                        step="1" value="0" aria-label="Crank angle (frame)";
+                    output #angle-value for="angle" {
+                        "θ = " (fmt(first.angle().degrees())) "°"
+                    }
+                }
+                div #stage .stage data-period=(animation.period()) {
+                    @for (k, frame) in animation.frames().iter().enumerate() {
+                        (frame_view(animation, frame, k))
+                    }
+                }
+                script { (PreEscaped(SCRIPT)) }
+            }
+        }
+    };
+    markup.into_string()
+}
+
+/// Frame `k` as an inline SVG in its own block, hidden but for the first.
+fn frame_view(animation: &Animation, frame: &Frame, k: usize) -> Markup {
+    let prefix = Frame::prefix(k);
+    let (w, h) = (animation.width(), animation.height());
+    let unit = animation.size_unit();
+    html! {
+        div .animation-frame id=(prefix.trim_end_matches('-')) hidden[k > 0]
+            data-angle-deg=(fmt(frame.angle().degrees())) {
+            svg xmlns="http://www.w3.org/2000/svg" width=(root_size(w, unit))
+                height=(root_size(h, unit)) viewBox={ "0 0 " (fmt(w)) " " (fmt(h)) }
+                font-family=(animation.font_family()) role="img"
+                aria-label={ (animation.name()) " at θ = " (fmt(frame.angle().degrees())) "°" } {
+                (PreEscaped(frame.body(&prefix)))
+            }
+        }
+    }
+}

@@ -1,0 +1,140 @@
+//! `slider-crank animate NAME --out FILE`: one revolution of a mechanism
+//! figure, as a self-playing SVG or an HTML page with a slider.
+
+use super::figure::{FigureFlags, options};
+use super::output::Stdout;
+use clap::Args;
+use slider_crank::animate::{Animation, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
+use slider_crank::render::write_atomic;
+use slider_crank::{Error, FigureName, Result};
+use std::io::{IsTerminal, Write};
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+/// Animate a mechanism figure through one revolution of the crank.
+#[derive(Debug, Args)]
+#[command(
+    mut_arg("angle", |a| a.help(
+        "Crank angle in degrees of the first frame; the others follow at equal steps \
+         counter-clockwise round the turn [default: the figure's]"
+    )),
+    mut_arg("data", |a| a.hide(true)),
+    mut_arg("fit", |a| a.hide(true))
+)]
+pub struct AnimateArgs {
+    /// The mechanism figure: fig-62-displacement, fig-63-velocity,
+    /// fig-65-klein, fig-66-kisch, fig-67-example, ng-fig-1-torque,
+    /// ng-fig-a1-velocity (the diagrams are not animated)
+    #[arg(value_name = "NAME")]
+    pub name: FigureName,
+    #[command(flatten)]
+    pub flags: FigureFlags,
+    /// Frames per revolution, 2 to 720 (72: one every 5°)
+    #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = DEFAULT_FRAMES)]
+    pub frames: usize,
+    /// Seconds per revolution, more than 0 and at most 3600
+    #[arg(long, value_name = "S", allow_hyphen_values = true, default_value_t = DEFAULT_PERIOD)]
+    pub period: f64,
+    /// The file to write, in the format its extension names: .svg (plays
+    /// by itself in a browser) or .html (a page with a slider for the
+    /// crank angle and a play/pause button); both self-contained. `-`
+    /// prints the SVG. Written whole or not at all
+    #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
+    pub out: PathBuf,
+}
+
+/// Runs the subcommand: the file written, progress on standard error when
+/// the frames take more than a moment.
+pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
+    let to_stdout = args.out.as_os_str() == "-";
+    let format = if to_stdout {
+        AnimationFormat::Svg
+    } else {
+        AnimationFormat::from_path(&args.out)?
+    };
+    if args.flags.data.is_some() || args.flags.fit.is_some() {
+        let flag = if args.flags.data.is_some() {
+            "--data"
+        } else {
+            "--fit"
+        };
+        return Err(Error::Parse(format!(
+            "animate takes no {flag}: the mechanism figures draw no measured data"
+        )));
+    }
+    let scene = options(&args.flags, args.name)
+        .and_then(|o| args.name.scene_with(&o))?
+        .ok_or_else(|| not_animated(args.name))?;
+    let mut progress = Progress::new();
+    let animation = Animation::with_progress(&scene, args.frames, args.period, |done, total| {
+        progress.show(done, total)
+    });
+    progress.finish();
+    let text = animation?.encode(format);
+    if to_stdout {
+        out.text(&text)
+    } else {
+        write_atomic(&args.out, text.as_bytes())
+    }
+}
+
+/// The refusal of a diagram, naming the figures that are animated.
+fn not_animated(name: FigureName) -> Error {
+    let names: Vec<&str> = FigureName::SCENES.iter().map(FigureName::name).collect();
+    Error::Parse(format!(
+        "{} is a diagram: animate draws the mechanism figures, {}",
+        name.name(),
+        names.join(", ")
+    ))
+}
+
+/// The progress line on standard error, once drawing has taken more than
+/// a moment: rewritten in place on a terminal, a line a second otherwise.
+struct Progress {
+    start: Instant,
+    last: Option<Instant>,
+    terminal: bool,
+}
+
+impl Progress {
+    /// How long drawing goes on before progress is shown.
+    const MOMENT: Duration = Duration::from_millis(700);
+
+    fn new() -> Self {
+        Self {
+            start: Instant::now(),
+            last: None,
+            terminal: std::io::stderr().is_terminal(),
+        }
+    }
+
+    fn show(&mut self, done: usize, total: usize) {
+        let now = Instant::now();
+        let every = if self.terminal {
+            Duration::from_millis(100)
+        } else {
+            Duration::from_secs(1)
+        };
+        let due = self.last.map_or(Self::MOMENT, |_| every);
+        if now - self.last.unwrap_or(self.start) < due && done < total {
+            return;
+        }
+        if self.last.is_none() && done == total {
+            return; // done within the moment: nothing to show
+        }
+        self.last = Some(now);
+        let mut err = std::io::stderr().lock();
+        // A courtesy: a standard error that cannot be written stops nothing.
+        let _ = if self.terminal {
+            write!(err, "\r\x1b[2Kanimate: frame {done}/{total}").and_then(|()| err.flush())
+        } else {
+            writeln!(err, "animate: frame {done}/{total}")
+        };
+    }
+
+    fn finish(&mut self) {
+        if self.terminal && self.last.is_some() {
+            let _ = writeln!(std::io::stderr());
+        }
+    }
+}
