@@ -51,6 +51,16 @@ impl Bounds {
             && o.max.y <= self.max.y
     }
 
+    /// The glyphs of a label's box: the box less its [`ROOM`], save on
+    /// the right, where an italic letter's ink may lean out past its
+    /// advance.
+    fn glyphs(&self) -> Self {
+        Self {
+            min: self.min + Vector::new(ROOM, ROOM),
+            max: self.max - Vector::new(0.0, ROOM),
+        }
+    }
+
     fn inside(&self, r: &PageRect) -> bool {
         self.min.x >= r.x
             && self.min.y >= r.y
@@ -212,6 +222,18 @@ impl Near<'_> {
     /// Length of line inside `b` plus a large weight for boxes it
     /// overlaps; `b` must lie within the search's bounds.
     fn cost(&self, b: &Bounds) -> f64 {
+        self.cost_of(b, 0.0)
+    }
+
+    /// Whether `b` meets a box or a line a letter may not sit on (one of
+    /// weight [`OPEN`] or more: not a centre line, which opens for it).
+    fn struck(&self, b: &Bounds) -> bool {
+        self.cost_of(b, OPEN) > 0.0
+    }
+
+    /// [`Near::cost`] of the boxes and of the segments weighing at least
+    /// `least`.
+    fn cost_of(&self, b: &Bounds, least: f64) -> f64 {
         debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
         for (bounds, obstacle) in &self.found {
@@ -221,6 +243,9 @@ impl Near<'_> {
             match *obstacle {
                 Obstacle::Segment(i) => {
                     let (p, q, w) = self.obstacles.segments[i];
+                    if w < least {
+                        continue;
+                    }
                     if let Some(length) = length_inside(p, q, b) {
                         cost += w * (4.0 + length);
                     }
@@ -299,6 +324,8 @@ fn directions() -> &'static [(f64, f64); 16] {
 /// the obstacles where possible and inside `page`: first on rings of
 /// sixteen directions, `gap` and more from the anchor, then, if each of
 /// those is crowded, anywhere on a fine grid no farther than `reach`.
+/// Where every place is crowded, one where only the room about the glyphs
+/// meets something beats any where the glyphs do ([`STRUCK`]).
 /// Deterministic: ties go to the earlier candidate.
 pub(crate) fn place(
     anchor: Point,
@@ -323,6 +350,10 @@ pub(crate) fn place(
         }
         let b = Bounds::around(centre, half);
         let mut cost = near.cost(&b.inflate(CLEARANCE));
+        if cost > 0.0 && near.struck(&b.glyphs()) {
+            // Not only the room about the glyphs is crowded: the glyphs.
+            cost += STRUCK;
+        }
         if !b.inside(page) {
             cost += 1e6;
         }
@@ -347,7 +378,6 @@ pub(crate) fn place(
         }
     }
     // Every ring is crowded: look at every position of a fine grid within
-    // `reach`, for a nook the sixteen directions miss.
     // `reach`, for a nook the sixteen directions miss; row by row, each
     // looking only at what crosses its band.
     for row in nooks(anchor, half, gap, reach.max(gap)) {
@@ -365,6 +395,19 @@ pub(crate) fn place(
 
 /// Room a label keeps from what it avoids, page units.
 const CLEARANCE: f64 = 1.0;
+
+/// Room a label's box keeps about its glyphs on every side, page units:
+/// the box less this is the ink.
+pub(crate) const ROOM: f64 = 1.0;
+
+/// The least weight of a line no letter may sit on (lighter ones open
+/// for letters).
+const OPEN: f64 = 1.0;
+
+/// What a place costs more whose glyphs themselves (not only the room
+/// about them) meet something: any place where only the room is crowded
+/// is better.
+const STRUCK: f64 = 1000.0;
 
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;

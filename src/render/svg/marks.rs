@@ -84,6 +84,7 @@ impl PanelWriter<'_> {
                 text: text.clone(),
                 size: self.style.font_size(TextSize::Small) + 2.0,
                 gap: 2.0,
+                letter: false,
             });
         }
         Some(Box::new(ink.tag(path(bezier_d(&pieces), ink.pen))))

@@ -32,6 +32,7 @@ impl PanelWriter<'_> {
             text: text.clone(),
             size: self.style.font_size(size),
             gap: if size == TextSize::Letter { 4.0 } else { 3.0 },
+            letter: size == TextSize::Letter,
         });
         None
     }
