@@ -83,7 +83,8 @@ enum Obstacle {
 #[derive(Debug)]
 pub(crate) struct Obstacles {
     segments: Vec<(Point, Point, f64)>,
-    boxes: Vec<Bounds>,
+    /// Each box, and whether it is hollow ([`Obstacles::hollow`]).
+    boxes: Vec<(Bounds, bool)>,
     index: RTree<Entry>,
     /// Obstacles added since the index was last built, looked at one by
     /// one.
@@ -144,12 +145,26 @@ impl Obstacles {
     }
 
     pub fn boxed(&mut self, b: Bounds) {
+        self.add_box(b, false);
+    }
+
+    /// A box no label enters save the letter of a point inside it, which
+    /// keeps off its outline only (a slider block large enough to hold
+    /// its pin's letter beside the pin).
+    pub fn hollow(&mut self, b: Bounds) {
+        let (p, q) = (b.min, b.max);
+        let corners = [p, Point::new(q.x, p.y), q, Point::new(p.x, q.y), p];
+        self.polyline(&corners);
+        self.add_box(b, true);
+    }
+
+    fn add_box(&mut self, b: Bounds, hollow: bool) {
         if [b.min.x, b.min.y, b.max.x, b.max.y]
             .iter()
             .all(|v| v.is_finite())
         {
             let i = self.boxes.len();
-            self.boxes.push(b);
+            self.boxes.push((b, hollow));
             self.pending
                 .push(GeomWithData::new(rectangle(b.min, b.max), Obstacle::Box(i)));
         }
@@ -157,8 +172,9 @@ impl Obstacles {
 
     /// The obstacles whose boxes meet `within`, taken out of the index
     /// once for a whole search, in the index's own order (so that the sums
-    /// of [`Near::cost`] add in the order a query per candidate would).
-    fn near(&self, within: &Bounds) -> Near<'_> {
+    /// of [`Near::cost`] add in the order a query per candidate would);
+    /// not the hollow boxes that hold `anchor`.
+    fn near(&self, within: &Bounds, anchor: Point) -> Near<'_> {
         let env = AABB::from_corners([within.min.x, within.min.y], [within.max.x, within.max.y]);
         let bounds = |entry: &Entry| {
             let e = entry.geom().envelope();
@@ -179,6 +195,7 @@ impl Obstacles {
                     .map(bounds)
                     .filter(|(b, _)| b.meets(within)),
             )
+            .filter(|(_, o)| !self.holds(*o, anchor))
             .collect();
         Near {
             obstacles: self,
@@ -187,10 +204,19 @@ impl Obstacles {
         }
     }
 
+    /// Whether `o` is a hollow box holding `p`.
+    fn holds(&self, o: Obstacle, p: Point) -> bool {
+        let Obstacle::Box(i) = o else {
+            return false;
+        };
+        let (b, hollow) = self.boxes[i];
+        hollow && b.contains(&Bounds { min: p, max: p })
+    }
+
     /// Length of line inside `b` plus a large weight for boxes it overlaps.
     #[cfg(test)]
     fn cost(&self, b: &Bounds) -> f64 {
-        self.near(b).cost(b)
+        self.near(b, b.min).cost(b)
     }
 }
 
@@ -251,7 +277,7 @@ impl Near<'_> {
                     }
                 }
                 Obstacle::Box(i) => {
-                    let a = b.overlap(&self.obstacles.boxes[i]);
+                    let a = b.overlap(&self.obstacles.boxes[i].0);
                     if a > 0.0 {
                         cost += 200.0 + a;
                     }
@@ -339,7 +365,8 @@ pub(crate) fn place(
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
     // `reach`): its obstacles are looked up once.
     let out = gap.max(reach) + RINGS[RINGS.len() - 1] + NOOK_STEP + 2.0 * (half.x + half.y);
-    let near = obstacles.near(&Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE));
+    let within = Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
+    let near = obstacles.near(&within, anchor);
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
@@ -481,6 +508,21 @@ mod tests {
         assert_eq!(length_inside(at(-5.0, 1.5), at(5.0, 1.5), &b), None);
         assert_eq!(length_inside(at(3.0, -3.0), at(5.0, 3.0), &b), None);
         assert_eq!(length_inside(at(-3.0, 0.0), at(-2.5, 0.0), &b), None);
+    }
+
+    #[test]
+    fn a_hollow_box_takes_the_letter_of_its_own_point_only() {
+        let page = PageRect::new(0.0, 0.0, 400.0, 400.0);
+        let half = Vector::new(6.0, 7.0);
+        let block = Bounds::around(Point::new(200.0, 200.0), Vector::new(60.0, 60.0));
+        let mut o = Obstacles::default();
+        o.hollow(block);
+        // The point inside: its letter stays beside it, inside the block.
+        let inside = place(Point::new(200.0, 200.0), half, 4.0, 22.0, &o, &page);
+        assert!(block.contains(&Bounds::around(inside, half)), "{inside:?}");
+        // A point outside keeps its letter out of the block.
+        let outside = place(Point::new(265.0, 200.0), half, 4.0, 22.0, &o, &page);
+        assert_eq!(block.overlap(&Bounds::around(outside, half)), 0.0);
     }
 
     #[test]
