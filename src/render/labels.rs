@@ -173,8 +173,9 @@ impl Obstacles {
     /// The obstacles whose boxes meet `within`, taken out of the index
     /// once for a whole search, in the index's own order (so that the sums
     /// of [`Near::cost`] add in the order a query per candidate would);
-    /// not the hollow boxes that hold `anchor`.
-    fn near(&self, within: &Bounds, anchor: Point) -> Near<'_> {
+    /// not the hollow boxes that hold `anchor`, the point of the letter
+    /// looked for.
+    fn near(&self, within: &Bounds, anchor: Option<Point>) -> Near<'_> {
         let env = AABB::from_corners([within.min.x, within.min.y], [within.max.x, within.max.y]);
         let bounds = |entry: &Entry| {
             let e = entry.geom().envelope();
@@ -195,7 +196,7 @@ impl Obstacles {
                     .map(bounds)
                     .filter(|(b, _)| b.meets(within)),
             )
-            .filter(|(_, o)| !self.holds(*o, anchor))
+            .filter(|(_, o)| anchor.is_none_or(|a| !self.holds(*o, a)))
             .collect();
         Near {
             obstacles: self,
@@ -214,9 +215,8 @@ impl Obstacles {
     }
 
     /// Length of line inside `b` plus a large weight for boxes it overlaps.
-    #[cfg(test)]
-    fn cost(&self, b: &Bounds) -> f64 {
-        self.near(b, b.min).cost(b)
+    pub fn cost(&self, b: &Bounds) -> f64 {
+        self.near(b, None).cost(b)
     }
 }
 
@@ -366,7 +366,7 @@ pub(crate) fn place(
     // `reach`): its obstacles are looked up once.
     let out = gap.max(reach) + RINGS[RINGS.len() - 1] + NOOK_STEP + 2.0 * (half.x + half.y);
     let within = Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
-    let near = obstacles.near(&within, anchor);
+    let near = obstacles.near(&within, Some(anchor));
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
