@@ -51,6 +51,16 @@ impl Bounds {
             && o.max.y <= self.max.y
     }
 
+    /// The glyphs of a label's box: the box less its [`ROOM`], save on
+    /// the right, where an italic letter's ink may lean out past its
+    /// advance.
+    fn glyphs(&self) -> Self {
+        Self {
+            min: self.min + Vector::new(ROOM, ROOM),
+            max: self.max - Vector::new(0.0, ROOM),
+        }
+    }
+
     fn inside(&self, r: &PageRect) -> bool {
         self.min.x >= r.x
             && self.min.y >= r.y
@@ -73,7 +83,8 @@ enum Obstacle {
 #[derive(Debug)]
 pub(crate) struct Obstacles {
     segments: Vec<(Point, Point, f64)>,
-    boxes: Vec<Bounds>,
+    /// Each box, and whether it is hollow ([`Obstacles::hollow`]).
+    boxes: Vec<(Bounds, bool)>,
     index: RTree<Entry>,
     /// Obstacles added since the index was last built, looked at one by
     /// one.
@@ -134,12 +145,26 @@ impl Obstacles {
     }
 
     pub fn boxed(&mut self, b: Bounds) {
+        self.add_box(b, false);
+    }
+
+    /// A box no label enters save the letter of a point inside it, which
+    /// keeps off its outline only (a slider block large enough to hold
+    /// its pin's letter beside the pin).
+    pub fn hollow(&mut self, b: Bounds) {
+        let (p, q) = (b.min, b.max);
+        let corners = [p, Point::new(q.x, p.y), q, Point::new(p.x, q.y), p];
+        self.polyline(&corners);
+        self.add_box(b, true);
+    }
+
+    fn add_box(&mut self, b: Bounds, hollow: bool) {
         if [b.min.x, b.min.y, b.max.x, b.max.y]
             .iter()
             .all(|v| v.is_finite())
         {
             let i = self.boxes.len();
-            self.boxes.push(b);
+            self.boxes.push((b, hollow));
             self.pending
                 .push(GeomWithData::new(rectangle(b.min, b.max), Obstacle::Box(i)));
         }
@@ -147,8 +172,10 @@ impl Obstacles {
 
     /// The obstacles whose boxes meet `within`, taken out of the index
     /// once for a whole search, in the index's own order (so that the sums
-    /// of [`Near::cost`] add in the order a query per candidate would).
-    fn near(&self, within: &Bounds) -> Near<'_> {
+    /// of [`Near::cost`] add in the order a query per candidate would);
+    /// not the hollow boxes that hold `anchor`, the point of the letter
+    /// looked for.
+    fn near(&self, within: &Bounds, anchor: Option<Point>) -> Near<'_> {
         let env = AABB::from_corners([within.min.x, within.min.y], [within.max.x, within.max.y]);
         let bounds = |entry: &Entry| {
             let e = entry.geom().envelope();
@@ -169,6 +196,7 @@ impl Obstacles {
                     .map(bounds)
                     .filter(|(b, _)| b.meets(within)),
             )
+            .filter(|(_, o)| anchor.is_none_or(|a| !self.holds(*o, a)))
             .collect();
         Near {
             obstacles: self,
@@ -177,10 +205,18 @@ impl Obstacles {
         }
     }
 
+    /// Whether `o` is a hollow box holding `p`.
+    fn holds(&self, o: Obstacle, p: Point) -> bool {
+        let Obstacle::Box(i) = o else {
+            return false;
+        };
+        let (b, hollow) = self.boxes[i];
+        hollow && b.contains(&Bounds { min: p, max: p })
+    }
+
     /// Length of line inside `b` plus a large weight for boxes it overlaps.
-    #[cfg(test)]
-    fn cost(&self, b: &Bounds) -> f64 {
-        self.near(b).cost(b)
+    pub fn cost(&self, b: &Bounds) -> f64 {
+        self.near(b, None).cost(b)
     }
 }
 
@@ -212,6 +248,18 @@ impl Near<'_> {
     /// Length of line inside `b` plus a large weight for boxes it
     /// overlaps; `b` must lie within the search's bounds.
     fn cost(&self, b: &Bounds) -> f64 {
+        self.cost_of(b, 0.0)
+    }
+
+    /// Whether `b` meets a box or a line a letter may not sit on (one of
+    /// weight [`OPEN`] or more: not a centre line, which opens for it).
+    fn struck(&self, b: &Bounds) -> bool {
+        self.cost_of(b, OPEN) > 0.0
+    }
+
+    /// [`Near::cost`] of the boxes and of the segments weighing at least
+    /// `least`.
+    fn cost_of(&self, b: &Bounds, least: f64) -> f64 {
         debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
         for (bounds, obstacle) in &self.found {
@@ -221,12 +269,15 @@ impl Near<'_> {
             match *obstacle {
                 Obstacle::Segment(i) => {
                     let (p, q, w) = self.obstacles.segments[i];
+                    if w < least {
+                        continue;
+                    }
                     if let Some(length) = length_inside(p, q, b) {
                         cost += w * (4.0 + length);
                     }
                 }
                 Obstacle::Box(i) => {
-                    let a = b.overlap(&self.obstacles.boxes[i]);
+                    let a = b.overlap(&self.obstacles.boxes[i].0);
                     if a > 0.0 {
                         cost += 200.0 + a;
                     }
@@ -299,6 +350,8 @@ fn directions() -> &'static [(f64, f64); 16] {
 /// the obstacles where possible and inside `page`: first on rings of
 /// sixteen directions, `gap` and more from the anchor, then, if each of
 /// those is crowded, anywhere on a fine grid no farther than `reach`.
+/// Where every place is crowded, one where only the room about the glyphs
+/// meets something beats any where the glyphs do ([`STRUCK`]).
 /// Deterministic: ties go to the earlier candidate.
 pub(crate) fn place(
     anchor: Point,
@@ -312,7 +365,8 @@ pub(crate) fn place(
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
     // `reach`): its obstacles are looked up once.
     let out = gap.max(reach) + RINGS[RINGS.len() - 1] + NOOK_STEP + 2.0 * (half.x + half.y);
-    let near = obstacles.near(&Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE));
+    let within = Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
+    let near = obstacles.near(&within, Some(anchor));
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
@@ -323,6 +377,10 @@ pub(crate) fn place(
         }
         let b = Bounds::around(centre, half);
         let mut cost = near.cost(&b.inflate(CLEARANCE));
+        if cost > 0.0 && near.struck(&b.glyphs()) {
+            // Not only the room about the glyphs is crowded: the glyphs.
+            cost += STRUCK;
+        }
         if !b.inside(page) {
             cost += 1e6;
         }
@@ -347,7 +405,6 @@ pub(crate) fn place(
         }
     }
     // Every ring is crowded: look at every position of a fine grid within
-    // `reach`, for a nook the sixteen directions miss.
     // `reach`, for a nook the sixteen directions miss; row by row, each
     // looking only at what crosses its band.
     for row in nooks(anchor, half, gap, reach.max(gap)) {
@@ -365,6 +422,19 @@ pub(crate) fn place(
 
 /// Room a label keeps from what it avoids, page units.
 const CLEARANCE: f64 = 1.0;
+
+/// Room a label's box keeps about its glyphs on every side, page units:
+/// the box less this is the ink.
+pub(crate) const ROOM: f64 = 1.0;
+
+/// The least weight of a line no letter may sit on (lighter ones open
+/// for letters).
+const OPEN: f64 = 1.0;
+
+/// What a place costs more whose glyphs themselves (not only the room
+/// about them) meet something: any place where only the room is crowded
+/// is better.
+const STRUCK: f64 = 1000.0;
 
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;
@@ -438,6 +508,21 @@ mod tests {
         assert_eq!(length_inside(at(-5.0, 1.5), at(5.0, 1.5), &b), None);
         assert_eq!(length_inside(at(3.0, -3.0), at(5.0, 3.0), &b), None);
         assert_eq!(length_inside(at(-3.0, 0.0), at(-2.5, 0.0), &b), None);
+    }
+
+    #[test]
+    fn a_hollow_box_takes_the_letter_of_its_own_point_only() {
+        let page = PageRect::new(0.0, 0.0, 400.0, 400.0);
+        let half = Vector::new(6.0, 7.0);
+        let block = Bounds::around(Point::new(200.0, 200.0), Vector::new(60.0, 60.0));
+        let mut o = Obstacles::default();
+        o.hollow(block);
+        // The point inside: its letter stays beside it, inside the block.
+        let inside = place(Point::new(200.0, 200.0), half, 4.0, 22.0, &o, &page);
+        assert!(block.contains(&Bounds::around(inside, half)), "{inside:?}");
+        // A point outside keeps its letter out of the block.
+        let outside = place(Point::new(265.0, 200.0), half, 4.0, 22.0, &o, &page);
+        assert_eq!(block.overlap(&Bounds::around(outside, half)), 0.0);
     }
 
     #[test]

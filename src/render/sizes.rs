@@ -3,6 +3,8 @@
 
 /// Radius of a pin joint's circle.
 pub(crate) const PIN_RADIUS: f64 = 4.2;
+/// Room between a point and its letter's box.
+pub(crate) const LETTER_GAP: f64 = 4.0;
 /// Radius of a constructed point's dot.
 pub(crate) const DOT_RADIUS: f64 = 2.1;
 /// Length of an arrowhead.

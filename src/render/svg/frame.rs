@@ -4,9 +4,10 @@
 use super::markup::{finite, path, polyline_d, pt, unit};
 use super::{Ink, PanelWriter};
 use crate::figure::Pen;
+use crate::figure::TextSize;
 use crate::geom::{Point, Vector};
 use crate::render::labels::Bounds;
-use crate::render::sizes::{HATCH_DEPTH, HATCH_SPACING};
+use crate::render::sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
 use std::fmt::Write as _;
 use svg::node::Node;
 use svg::node::element::Group;
@@ -89,7 +90,9 @@ impl PanelWriter<'_> {
 
     /// The slider block: its outline, heavier than the guides, unfilled so
     /// that curves and constructions through the slider (Kisch's
-    /// semicircle ends at A) stay visible. No letter goes inside it.
+    /// semicircle ends at A) stay visible. No letter goes inside it, save
+    /// its pin's where it is enlarged (in a detail) so much that the
+    /// letter no longer reaches past it: then inside, beside the pin.
     pub(super) fn block(&mut self, ink: &Ink, points: &[Point]) -> Option<Box<dyn Node>> {
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 3 || !pts.iter().all(finite) {
@@ -98,7 +101,16 @@ impl PanelWriter<'_> {
         let (lo, hi) = pts
             .iter()
             .fold((pts[0], pts[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
-        self.obstacles.boxed(Bounds { min: lo, max: hi });
+        let b = Bounds { min: lo, max: hi };
+        // Room beside the pin for its letter: the pin, the letter's gap
+        // and the letter.
+        let letter = self.style.font_size(TextSize::Letter);
+        let roomy = PIN_RADIUS + LETTER_GAP + letter;
+        if (hi - lo).min() >= 2.0 * roomy {
+            self.obstacles.hollow(b);
+        } else {
+            self.obstacles.boxed(b);
+        }
         Some(Box::new(
             ink.tag(path(
                 polyline_d(&pts, true),

@@ -8,6 +8,10 @@ use crate::figure::{Pen, RichText, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::labels::Bounds;
 use crate::render::sizes::{ANGLE_RADIUS, ARROW_LENGTH, RIGHT_ANGLE};
+
+/// Step by which a dimension's text slides along its line off a line
+/// drawn through it, page units.
+const SLIDE: f64 = 4.0;
 use svg::node::Node;
 use svg::node::element::Group;
 
@@ -84,6 +88,7 @@ impl PanelWriter<'_> {
                 text: text.clone(),
                 size: self.style.font_size(TextSize::Small) + 2.0,
                 gap: 2.0,
+                letter: false,
             });
         }
         Some(Box::new(ink.tag(path(bezier_d(&pieces), ink.pen))))
@@ -108,7 +113,7 @@ impl PanelWriter<'_> {
         let ext = |p: Point, q: Point| polyline_d(&[p + n * 3.0, q + n * 4.0], false);
         let size = self.style.font_size(TextSize::Small) + 1.0;
         let half = text_half(text, size, self.font);
-        let centre = nalgebra::center(&a2, &b2) + n * (half.y + 3.0);
+        let centre = self.dimension_text((a2, b2), n, half);
         self.obstacles.boxed(Bounds::around(centre, half));
         self.obstacles.segment(a2, b2);
         let thin = Pen { width: 0.5, ..pen };
@@ -129,6 +134,32 @@ impl PanelWriter<'_> {
                     starts_italic(text),
                 )),
         ))
+    }
+
+    /// The centre of a dimension's text (half-size `half`) beside its
+    /// line `a2`–`b2` on the side `n`: at the middle, or where a line
+    /// drawn already runs through it, slid along the dimension line (by
+    /// steps of [`SLIDE`], the text within the line's ends) as little as
+    /// clears it by a step, else as little as clears it; the middle where
+    /// nothing does.
+    fn dimension_text(&self, (a2, b2): (Point, Point), n: Vector, half: Vector) -> Point {
+        let middle = nalgebra::center(&a2, &b2) + n * (half.y + 3.0);
+        let Some(u) = unit(b2 - a2) else {
+            return middle;
+        };
+        let steps = ((0.5 * (b2 - a2).norm() - half.x) / SLIDE).floor().max(0.0) as i32;
+        let places = (0..=steps)
+            .flat_map(|k| [k, -k])
+            .map(|k| middle + u * (SLIDE * f64::from(k)));
+        let clear = |c: &Point, margin: f64| {
+            let b = Bounds::around(*c, half + Vector::new(margin, 0.0));
+            self.obstacles.cost(&b) == 0.0
+        };
+        places
+            .clone()
+            .find(|c| clear(c, SLIDE))
+            .or_else(|| places.clone().find(|c| clear(c, 0.0)))
+            .unwrap_or(middle)
     }
 
     /// The page arc of a world arc about a page centre (page radius).

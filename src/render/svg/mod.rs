@@ -19,7 +19,7 @@ mod notes;
 mod points;
 mod text;
 
-use super::labels::{Bounds, Obstacles, place};
+use super::labels::{Bounds, Obstacles, ROOM, place};
 use super::number::{fmt, fmt_coefficient};
 use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
@@ -32,9 +32,10 @@ use svg::node::Node;
 use svg::node::element::{ClipPath, Definitions, Element, Group, Rectangle, Title};
 use text::{ink_box, starts_italic, text_node};
 
-/// The farthest a label's box may be put from its anchor, in font sizes
-/// (a letter's glyphs within 1.5 em of its point).
-const REACH: f64 = 1.35;
+/// The farthest a label's glyphs may be put from its anchor, in font
+/// sizes: 1.5 em, less the side bearing (up to about 0.15 em) by which an
+/// italic letter's ink sits inside its advance, less a margin.
+const REACH: f64 = 1.3;
 
 /// A label waiting to be placed once every line is known.
 struct Pending {
@@ -43,6 +44,9 @@ struct Pending {
     text: RichText,
     size: f64,
     gap: f64,
+    /// Whether it is a point's letter, placed before the values and
+    /// names, which are freer to move.
+    letter: bool,
 }
 
 /// What an item's symbol is written with: its id, its role (the class)
@@ -244,16 +248,20 @@ fn clipped(g: Group, panel: &Panel) -> Group {
 }
 
 impl PanelWriter<'_> {
-    /// The pending labels placed in `room` one by one, each clear of what
-    /// is drawn and of the labels before it: their text elements and
-    /// their boxes.
+    /// The pending labels placed in `room` one by one, the points'
+    /// letters first, each clear of what is drawn and of the labels
+    /// before it: their text elements and their boxes.
     fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
         let colour = self.style.pen(Role::Label).colour;
         self.obstacles.build();
         let (mut texts, mut boxes) = (Vec::new(), Vec::new());
-        for p in std::mem::take(&mut self.pending) {
+        let mut pending = std::mem::take(&mut self.pending);
+        pending.sort_by_key(|p| !p.letter);
+        for p in pending {
             let (half, rise) = ink_box(&p.text, p.size, self.font);
-            let centre = place(p.anchor, half, p.gap, REACH * p.size, &self.obstacles, room);
+            // The box keeps [`ROOM`] about the glyphs: its reach is that less.
+            let reach = REACH * p.size - ROOM;
+            let centre = place(p.anchor, half, p.gap, reach, &self.obstacles, room);
             let b = Bounds::around(centre, half);
             self.obstacles.boxed(b);
             boxes.push(b);

@@ -8,7 +8,7 @@ use super::{Ink, PanelWriter, Pending};
 use crate::figure::{Align, RichText, Role, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::labels::Bounds;
-use crate::render::sizes::{NOTE_LINE, NOTE_SIZE};
+use crate::render::sizes::{LETTER_GAP, NOTE_LINE, NOTE_SIZE};
 use svg::node::Node;
 use svg::node::element::Group;
 
@@ -31,7 +31,12 @@ impl PanelWriter<'_> {
             anchor: a,
             text: text.clone(),
             size: self.style.font_size(size),
-            gap: if size == TextSize::Letter { 4.0 } else { 3.0 },
+            gap: if size == TextSize::Letter {
+                LETTER_GAP
+            } else {
+                3.0
+            },
+            letter: size == TextSize::Letter,
         });
         None
     }

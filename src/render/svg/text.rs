@@ -4,6 +4,7 @@
 use super::markup::{Raw, escape};
 use crate::figure::{Font, RichText, Role, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
 use crate::geom::{Point, Vector};
+use crate::render::labels::ROOM;
 use crate::render::number::fmt;
 use std::fmt::Write as _;
 use svg::node::Node;
@@ -14,25 +15,25 @@ use svg::node::element::Element;
 pub(super) const BASELINE: f64 = 0.35;
 
 /// Half the width and height of the box about a text's centre that holds
-/// its ink (advances and glyph bounds of `font`) with 1 unit to spare, for
+/// its ink (advances and glyph bounds of `font`) with [`ROOM`] to spare, for
 /// placement.
 pub(super) fn text_half(text: &RichText, size: f64, font: Font) -> Vector {
     let b = text.measure(font, size);
     let baseline = BASELINE * size;
     Vector::new(
-        0.5 * b.width + 1.0,
-        (b.above - baseline).max(b.below + baseline) + 1.0,
+        0.5 * b.width + ROOM,
+        (b.above - baseline).max(b.below + baseline) + ROOM,
     )
 }
 
-/// The half-size of the box around the ink of `text` (a unit of room on
+/// The half-size of the box around the ink of `text` ([`ROOM`] on
 /// every side), and the downward shift from the box's centre to the
 /// point [`text_node`] takes (`BASELINE` × `size` above the baseline):
 /// the box of a placed label, tight above and below (a subscript's drop
 /// or a letter's descender counts only on its own side).
 pub(super) fn ink_box(text: &RichText, size: f64, font: Font) -> (Vector, f64) {
     let b = text.measure(font, size);
-    let half = Vector::new(0.5 * b.width + 1.0, 0.5 * (b.above + b.below) + 1.0);
+    let half = Vector::new(0.5 * b.width + ROOM, 0.5 * (b.above + b.below) + ROOM);
     (half, 0.5 * (b.above - b.below) - BASELINE * size)
 }
 

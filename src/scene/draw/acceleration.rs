@@ -56,14 +56,22 @@ pub(crate) fn klein(ctx: &Ctx, canvas: &mut Canvas) {
             fg(ctx, canvas, k.points(), f, F);
         }
         None => {
-            // D at infinity (θ = 90°, 270°): DE is the perpendicular to the
-            // stroke through E, so CF, parallel to it, is the perpendicular
-            // through C, and meets AB at F = B. The limit of the
-            // construction, with the F and G that Kisch finds without D.
-            let p = *ctx.main.kisch().points();
+            let p = klein_points(ctx);
             canvas.segment(ctx.line(CrankCentre, F), Role::Construction, c, p.f());
             fg(ctx, canvas, &p, p.f(), F);
         }
+    }
+}
+
+/// The F and G the Klein layer draws: Klein's, or with D at infinity
+/// (θ = 90°, 270°) the limit of his construction. There DE is the
+/// perpendicular to the stroke through E, so CF, parallel to it, is the
+/// perpendicular through C, and meets AB at F = B: the F and G that Kisch
+/// finds without D.
+pub(crate) fn klein_points(ctx: &Ctx) -> AccelerationPoints {
+    match ctx.main.klein() {
+        Some(k) => *k.points(),
+        None => *ctx.main.kisch().points(),
     }
 }
 

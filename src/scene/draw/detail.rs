@@ -63,14 +63,8 @@ fn points(ctx: &Ctx) -> (Vec<Point>, Option<Point>) {
         pts.extend([k.points().f(), k.points().g()]);
         h = k.h();
     } else if scene.has(Layer::Klein) {
-        match ctx.main.klein() {
-            Some(k) => pts.extend([k.points().f(), k.points().g()]),
-            // The limiting construction (D at infinity): Kisch's F and G.
-            None => {
-                let k = ctx.main.kisch();
-                pts.extend([k.points().f(), k.points().g()]);
-            }
-        }
+        let k = super::acceleration::klein_points(ctx);
+        pts.extend([k.f(), k.g()]);
     }
     (pts, h)
 }

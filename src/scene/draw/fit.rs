@@ -73,11 +73,10 @@ pub(crate) fn frame(ctx: &Ctx) -> Frame {
     {
         b.add(d);
     }
-    if scene.has(Layer::Klein)
-        && let Some(k) = ctx.main.klein()
-    {
-        b.add(k.points().f());
-        b.add(k.points().g());
+    if scene.has(Layer::Klein) {
+        let k = super::acceleration::klein_points(ctx);
+        b.add(k.f());
+        b.add(k.g());
     }
     if scene.has(Layer::Kisch) {
         let k = ctx.main.kisch();
