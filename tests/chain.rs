@@ -450,3 +450,37 @@ fn fig_60_panels_a_and_b_have_the_same_six_centres_and_c_does_not() {
         }
     }
 }
+
+#[test]
+fn every_inversion_figure_letters_its_pins_as_centres() {
+    // Each figure letters the six centres: the three pins by their names
+    // O_ad, O_ab, O_bc, the other three lettered or named in the notes.
+    for name in [
+        slider_crank::FigureName::Inversion1Engine,
+        slider_crank::FigureName::Inversion2RotatingBlock,
+        slider_crank::FigureName::Inversion3OscillatingCylinder,
+        slider_crank::FigureName::Inversion4HandPump,
+    ] {
+        let svg = slider_crank::render::to_svg(
+            &name
+                .figure(&slider_crank::catalogue::FigureOptions::default())
+                .unwrap(),
+        );
+        for (pin, sub) in [("C", "ad"), ("B", "ab"), ("A", "bc")] {
+            let at = svg
+                .find(&format!("id=\"label-{pin}\""))
+                .unwrap_or_else(|| panic!("{}: no label {pin}", name.name()));
+            let text = &svg[at..at + svg[at..].find("</text>").unwrap()];
+            assert!(
+                text.contains(">O<tspan") && text.contains(&format!(">{sub}</tspan>")),
+                "{}: {text}",
+                name.name()
+            );
+        }
+        for key in ["bd", "ac", "cd"] {
+            let lettered = svg.contains(&format!("id=\"label-O-{key}\""));
+            let noted = svg.contains(&format!(">{key}</tspan> at "));
+            assert!(lettered || noted, "{}: O_{key}", name.name());
+        }
+    }
+}

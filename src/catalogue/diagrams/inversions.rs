@@ -301,11 +301,12 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
         produced(&mut s, "line-AB-O-ac", a, b, x);
         s.segment("line-C-O-ac", Role::Auxiliary, c, x);
     }
-    // The pins are three of the centres: C = O_ad, B = O_ab, A = O_bc
-    // (said in the notes; a single letter keeps close to its pin).
-    s.point("C", c, "*C*", true, c);
-    s.point("B", b, "*B*", true, c);
-    s.point("A", a, "*A*", true, c);
+    // The pins are three of the six centres, lettered as such: C = O_ad,
+    // B = O_ab, A = O_bc (the notes give the letters of Figs. 62–67).
+    let pins = [(c, "*O*_{ad}"), (b, "*O*_{ab}"), (a, "*O*_{bc}")];
+    for ((p, markup), key) in pins.into_iter().zip(["C", "B", "A"]) {
+        s.point(key, p, markup, true, c);
+    }
     // O_cd lies on the normal at A, as O_bd does: its arrow continues
     // the line A O_bd.
     let towards_d = match o_bd {
@@ -314,7 +315,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     };
     // A centre on a pin or on another centre, as drawn, is named in the
     // notes instead of lettered on top of it.
-    let mut lettered: Vec<(Point, &str)> = vec![(c, "*C*"), (b, "*B*"), (a, "*A*")];
+    let mut lettered: Vec<(Point, &str)> = pins.to_vec();
     let mut together: Vec<String> = Vec::new();
     for (key, markup, centre, from, along) in [
         ("O-bd", "*O*_{bd}", o_bd, b, b - c),
@@ -392,7 +393,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     }
     let lines = [
         line,
-        "Pins *C* = *O*_{ad}, *B* = *O*_{ab}, *A* = *O*_{bc}; by Kennedy's theorem *O*_{bd} on *CB* and the normal to the stroke at *A*, *O*_{ac} on *AB* and the normal at *C*.".to_string(),
+        "The pins *O*_{ad}, *O*_{ab}, *O*_{bc} are *C*, *B*, *A* of Figs. 62–67; by Kennedy's theorem *O*_{bd} on *O*_{ad}*O*_{ab} and on the normal to the stroke at *O*_{bc}, *O*_{ac} on *O*_{ab}*O*_{bc} and on the normal at *O*_{ad}.".to_string(),
     ];
     let bottom = rect.y + rect.height + 6.0;
     sheet.height(bottom + notes_height);
