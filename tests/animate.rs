@@ -504,6 +504,10 @@ fn browse(browser: &str, file: &Path, args: &[&str]) -> Vec<u8> {
 #[test]
 fn chromium_plays_the_page() {
     let Some(browser) = chromium() else {
+        assert!(
+            std::env::var("SLIDER_CRANK_BROWSER").as_deref() != Ok("required"),
+            "Chromium is required (SLIDER_CRANK_BROWSER=required) but was not found"
+        );
         eprintln!("no chromium here: skipped");
         return;
     };

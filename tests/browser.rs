@@ -2,7 +2,7 @@
 //! `index.html`, a handout, an exercise sheet and an animation opened in
 //! headless Chromium. Each page must load with no script error and no
 //! failed request, draw every figure (ink where each `<svg>` and `<img>`
-//! is), and print on A4 with no figure or table taller than the printable
+//! shown is), and print on A4 with no figure or table taller than the printable
 //! page (each is `break-inside: avoid`, so one that fits is never cut); the
 //! animation must move.
 //!
@@ -49,8 +49,18 @@ fn browser() -> Option<PathBuf> {
     found
 }
 
-/// Headless Chromium on `url` with `extra` flags; its standard output.
-fn chromium(browser: &Path, width: u32, height: u32, extra: &[&str], url: &str) -> String {
+/// Virtual time a page is given to load and run, ms.
+const SETTLE_MS: u32 = 3000;
+
+/// Headless Chromium on `url` with `extra` flags, `budget` ms of virtual
+/// time; its standard output.
+fn chromium_at(
+    browser: &Path,
+    (width, height): (u32, u32),
+    budget: u32,
+    extra: &[&str],
+    url: &str,
+) -> String {
     let out = Command::new(browser)
         .args([
             "--headless",
@@ -58,7 +68,7 @@ fn chromium(browser: &Path, width: u32, height: u32, extra: &[&str], url: &str) 
             "--disable-gpu",
             "--hide-scrollbars",
             "--allow-file-access-from-files",
-            "--virtual-time-budget=3000",
+            &format!("--virtual-time-budget={budget}"),
             &format!("--window-size={width},{height}"),
         ])
         .args(extra)
@@ -71,6 +81,11 @@ fn chromium(browser: &Path, width: u32, height: u32, extra: &[&str], url: &str) 
         String::from_utf8_lossy(&out.stderr)
     );
     String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// [`chromium_at`] with the page settled.
+fn chromium(browser: &Path, width: u32, height: u32, extra: &[&str], url: &str) -> String {
+    chromium_at(browser, (width, height), SETTLE_MS, extra, url)
 }
 
 fn url(path: &Path) -> String {
@@ -108,7 +123,7 @@ const PROBE: &str = r#"<script>
     }
     const box = e => { const r = e.getBoundingClientRect(); return [r.left + scrollX, r.top + scrollY, r.width, r.height]; };
     const figures = [...document.querySelectorAll('svg, img')]
-      .filter(e => !e.parentElement.closest('svg'))
+      .filter(e => !e.parentElement.closest('svg') && e.getClientRects().length > 0)
       .map(e => ({ box: box(e), loaded: e.tagName !== 'IMG' || (e.complete && e.naturalWidth > 0) }));
     const blocks = [...document.querySelectorAll('figure, table, .block')]
       .map(e => ({ tag: e.tagName, id: e.id, height: box(e)[3] }));
@@ -379,4 +394,37 @@ fn an_exercise_sheet_and_its_key_load_and_draw() {
     ]));
     check_page(&browser, &page);
     check_page(&browser, &dir.path().join("sheet-key.html"));
+}
+
+#[test]
+fn an_animation_plays_and_its_frame_is_drawn() {
+    let Some(browser) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("kisch.html");
+    succeeded(&run(&[
+        "animate",
+        "fig-66-kisch",
+        "--frames",
+        "24",
+        "--period",
+        "2",
+        "--out",
+        page.to_str().unwrap(),
+    ]));
+    // One frame shown at a time, drawn, with no script error.
+    let report = check_page(&browser, &page);
+    assert_eq!(report["figures"].as_array().unwrap().len(), 1, "{report}");
+    // Playing: two moments a second apart show different frames.
+    let shot = |ms: u32| {
+        let path = dir.path().join(format!("at-{ms}.png"));
+        chromium_at(
+            &browser,
+            (SCREEN, 900),
+            ms,
+            &[&format!("--screenshot={}", path.display())],
+            &url(&page),
+        );
+        std::fs::read(&path).unwrap()
+    };
+    assert!(shot(500) != shot(1500), "the animation does not move");
 }
