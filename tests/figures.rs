@@ -461,3 +461,45 @@ fn centrode_and_coupler_paths_stay_within_tolerance_of_the_curve() {
     assert!(checked > 20);
     assert!(panel.item("curve-centrode-fixed-1").is_some());
 }
+
+#[test]
+fn the_polar_layer_traces_fig_64_as_far_as_the_crank_has_turned() {
+    // E′ is on the crank at CE′ = |CE| = |dx/dθ| from C, computed here from
+    // the displacement x = r cos θ + √(l² − r² sin² θ) (in line).
+    let (r, l) = (1.0_f64, 3.0_f64);
+    let m = SliderCrank::in_line(r, l).unwrap();
+    let ce = |t: f64| {
+        let s = t.sin();
+        (r * s + r * r * s * t.cos() / (l * l - r * r * s * s).sqrt()).abs()
+    };
+    for (degrees, pieces) in [(0.0, 0), (60.0, 1), (179.0, 1), (250.0, 2), (359.0, 2)] {
+        let figure = Scene::new(m, Angle::deg(degrees))
+            .with_layers([Layer::Mechanism, Layer::Polar])
+            .figure()
+            .unwrap();
+        let panel = &figure.panels()[0];
+        let traced = (1..=2)
+            .filter(|k| panel.item(&format!("curve-polar-{k}")).is_some())
+            .count();
+        assert_eq!(traced, pieces, "θ = {degrees}°");
+        let Some(dot) = panel.item("point-E-polar") else {
+            assert_eq!(degrees, 0.0, "no E′ at {degrees}°");
+            continue;
+        };
+        let Shape::Dot { centre } = dot.shape else {
+            panic!("a dot")
+        };
+        let t = degrees.to_radians();
+        let along = centre.x * t.cos() + centre.y * t.sin();
+        let across = -centre.x * t.sin() + centre.y * t.cos();
+        assert!(
+            (along - ce(t)).abs() < 1e-12,
+            "θ = {degrees}°: {along} vs {}",
+            ce(t)
+        );
+        assert!(
+            across.abs() < 1e-12,
+            "θ = {degrees}°: off the crank by {across}"
+        );
+    }
+}

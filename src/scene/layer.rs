@@ -22,6 +22,12 @@ pub enum Layer {
     Centrodes,
     /// The oval traced by a point of the rod. Needs no construction.
     Coupler,
+    /// The polar diagram of piston velocity (Fig. 64) as far as the crank
+    /// has turned: E′ on the crank at CE′ = |CE| from C, traced from the
+    /// outer dead centre to the drawn pose (nothing at the outer dead
+    /// centre itself, the whole curve just before it), with E′ lettered.
+    /// Computes no construction: CE comes from the analytic core.
+    Polar,
     /// The six virtual centres (§34); needs D and E.
     VirtualCentres,
     /// D and E with the similar triangles ADB and ECB (Fig. 63).
@@ -44,12 +50,13 @@ pub enum Layer {
 
 impl Layer {
     /// Every layer, in drawing order.
-    pub const ALL: [Layer; 12] = [
+    pub const ALL: [Layer; 13] = [
         Layer::Mechanism,
         Layer::Angles,
         Layer::Dimensions,
         Layer::Centrodes,
         Layer::Coupler,
+        Layer::Polar,
         Layer::VirtualCentres,
         Layer::Velocity,
         Layer::Klein,
@@ -67,6 +74,7 @@ impl Layer {
             Layer::Dimensions => "dimensions",
             Layer::Centrodes => "centrodes",
             Layer::Coupler => "coupler",
+            Layer::Polar => "polar",
             Layer::VirtualCentres => "virtual-centres",
             Layer::Velocity => "velocity",
             Layer::Klein => "klein",

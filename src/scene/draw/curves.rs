@@ -6,7 +6,7 @@ use super::Ctx;
 use super::velocity::basics_d;
 use crate::Angle;
 use crate::construct::{Centrode, CentrodeKind};
-use crate::diagram::{self, Method, TraceOptions};
+use crate::diagram::{self, Curve, Locus, LocusKind, Method, TraceOptions};
 use crate::figure::{Path, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, perp};
 use crate::scene::canvas::{Canvas, Marker};
@@ -119,4 +119,51 @@ pub(crate) fn coupler(ctx: &Ctx, canvas: &mut Canvas) {
     let here = ctx.main.pose();
     let p = q.point(here);
     canvas.point(ctx.letter(Named::Coupler), p, Marker::Dot, here.c());
+}
+
+/// Fig. 64's polar diagram of piston velocity as far as the crank has
+/// turned: E′ on the crank at CE′ = |CE| from C (on the crank itself on
+/// the return stroke too, as the textbook sets it off), traced from the
+/// outer dead centre to the drawn pose, and E′ lettered there. At the
+/// outer dead centre itself nothing is traced yet (E′ = C).
+pub(crate) fn polar(ctx: &Ctx, canvas: &mut Canvas) {
+    let m = *ctx.scene.mechanism();
+    let locus = Locus::new(m, LocusKind::PolarVelocity);
+    let (outer, inner) = m.dead_centres();
+    let (o, i) = (outer.to_degrees(), inner.to_degrees());
+    let mut theta = ctx.main.pose().angle().degrees();
+    if theta < o {
+        theta += 360.0;
+    }
+    let outward = |d: f64| locus.eval(d);
+    let inward = |d: f64| locus.eval(d).map(|(p, v)| (Point::origin() - p.coords, -v));
+    let tol = ctx.scene.tolerance();
+    let mut k = 0;
+    let pieces = [(o, theta.min(i), false), (i, theta, true)];
+    for (lo, hi, back) in pieces.into_iter().filter(|(lo, hi, _)| hi > lo) {
+        let traced = if back {
+            trace(&inward, lo, hi, canvas, tol)
+        } else {
+            trace(&outward, lo, hi, canvas, tol)
+        };
+        if let Some((path, _)) = traced {
+            k += 1;
+            canvas.push(format!("curve-polar-{k}"), Role::Curve, Shape::Path(path));
+        }
+    }
+    let here = if theta > i {
+        inward(theta)
+    } else {
+        outward(theta)
+    };
+    if let Some((p, _)) = here
+        && p != Point::origin()
+    {
+        canvas.push(
+            "point-E-polar",
+            Role::Construction,
+            Shape::Dot { centre: p },
+        );
+        canvas.label("label-E-polar", p, RichText::italic("E′"), TextSize::Letter);
+    }
 }

@@ -125,6 +125,16 @@ pub(crate) fn frame(ctx: &Ctx) -> Frame {
             b.add(p);
         }
     }
+    if scene.has(Layer::Polar) {
+        let polar = crate::diagram::Locus::new(*m, crate::diagram::LocusKind::PolarVelocity);
+        for k in 0..72 {
+            if let Some((p, _)) = crate::diagram::Curve::eval(&polar, 5.0 * k as f64) {
+                // The return stroke's loop is set off on the crank itself.
+                b.add(p);
+                b.add(Point::origin() - p.coords);
+            }
+        }
+    }
     if scene.has(Layer::Coupler) {
         let q = ctx.scene.coupler();
         for k in 0..72 {

@@ -380,6 +380,7 @@ fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bo
             Layer::Motion => motion::draw(ctx, canvas),
             Layer::Centrodes => curves::centrodes(ctx, canvas),
             Layer::Coupler => curves::coupler(ctx, canvas),
+            Layer::Polar => curves::polar(ctx, canvas),
             Layer::VirtualCentres => centres::draw(ctx, canvas),
             Layer::Velocity => velocity::draw(ctx, canvas),
             Layer::Klein => acceleration::klein(ctx, canvas),
