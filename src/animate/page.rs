@@ -7,12 +7,11 @@
 use super::svg::seconds;
 use super::{Animation, Frame};
 use crate::render::{fmt, root_size};
-use maud::{DOCTYPE, Markup, PreEscaped, html};
+use maud::{Markup, PreEscaped, html};
 
-/// The page's style sheet.
+/// The page's style, after the shared book page ([`crate::html::document`]).
 const STYLE: &str = "
-body { font-family: Georgia, 'Times New Roman', serif; margin: 1.5rem auto; max-width: 64rem;
-       padding: 0 1rem; color: #111; }
+body { max-width: 64rem; }
 .stage svg { display: block; max-width: 100%; height: auto; }
 .controls { display: flex; align-items: center; gap: 1rem; padding: .5rem 0; position: sticky;
             top: 0; background: #fff; }
@@ -67,39 +66,29 @@ const SCRIPT: &str = "
 pub(super) fn document(animation: &Animation) -> String {
     let heading = animation.title().unwrap_or(animation.name());
     let first = &animation.frames()[0];
-    let markup = html! {
-        (DOCTYPE)
-        html lang="en" {
-            head {
-                meta charset="utf-8";
-                meta name="viewport" content="width=device-width, initial-scale=1";
-                title { (heading) ": one revolution of the crank" }
-                style { (PreEscaped(STYLE)) }
-            }
-            body {
-                h1 { (heading) }
-                p {
-                    "One revolution of the crank in " (animation.frames().len()) " frames, "
-                    (seconds(animation.period())) " s a turn; the slider sets the crank angle θ."
-                }
-                div .controls {
-                    button #play type="button" aria-pressed="false" { "Play" }
-                    input #angle type="range" min="0" max=(animation.frames().len() - 1)
-                        step="1" value="0" aria-label="Crank angle (frame)";
-                    output #angle-value for="angle" {
-                        "θ = " (fmt(first.angle().degrees())) "°"
-                    }
-                }
-                div #stage .stage data-period=(animation.period()) {
-                    @for (k, frame) in animation.frames().iter().enumerate() {
-                        (frame_view(animation, frame, k))
-                    }
-                }
-                script { (PreEscaped(SCRIPT)) }
+    let title = format!("{heading}: one revolution of the crank");
+    let body = html! {
+        h1 { (heading) }
+        p {
+            "One revolution of the crank in " (animation.frames().len()) " frames, "
+            (seconds(animation.period())) " s a turn; the slider sets the crank angle θ."
+        }
+        div .controls {
+            button #play type="button" aria-pressed="false" { "Play" }
+            input #angle type="range" min="0" max=(animation.frames().len() - 1)
+                step="1" value="0" aria-label="Crank angle (frame)";
+            output #angle-value for="angle" {
+                "θ = " (fmt(first.angle().degrees())) "°"
             }
         }
+        div #stage .stage data-period=(animation.period()) {
+            @for (k, frame) in animation.frames().iter().enumerate() {
+                (frame_view(animation, frame, k))
+            }
+        }
+        script { (PreEscaped(SCRIPT)) }
     };
-    markup.into_string()
+    crate::html::document(&title, STYLE, body)
 }
 
 /// Frame `k` as an inline SVG in its own block, hidden but for the first.
