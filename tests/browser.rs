@@ -20,9 +20,23 @@ use std::process::Command;
 
 /// The width of the screen the pages are opened at, CSS px.
 const SCREEN: u32 = 1100;
-/// A4's printable width and height at the handout's margins (210 − 30 mm,
-/// 297 − 30 mm), in CSS px (96 per inch).
-const A4_PRINTABLE: (f64, f64) = (180.0 / 25.4 * 96.0, 267.0 / 25.4 * 96.0);
+/// A paper the handout prints on: how pdfinfo names it, and its printable
+/// width and height at the handout's margins (15 mm each side, 14 mm top,
+/// 16 mm bottom), in CSS px (96 per inch).
+struct Paper {
+    pdfinfo: &'static str,
+    printable: (f64, f64),
+}
+
+const PX_PER_MM: f64 = 96.0 / 25.4;
+const A4: Paper = Paper {
+    pdfinfo: "(A4)",
+    printable: ((210.0 - 30.0) * PX_PER_MM, (297.0 - 30.0) * PX_PER_MM),
+};
+const LETTER: Paper = Paper {
+    pdfinfo: "(letter)",
+    printable: ((215.9 - 30.0) * PX_PER_MM, (279.4 - 30.0) * PX_PER_MM),
+};
 /// The tallest screenshot taken, px (Chromium's texture limit is 16384).
 const TALLEST: f64 = 16000.0;
 
@@ -221,18 +235,19 @@ fn inked(pixmap: &Pixmap, b: &[f64]) -> usize {
     n
 }
 
-/// Prints `page` to PDF and checks it: A4 pages, every figure's caption in
-/// its text, and, laid out as printed, no figure or table taller than
-/// the printable page.
-fn check_print(browser: &Path, page: &Path) {
+/// Prints `page` to PDF and checks it: pages of `paper`, every figure's
+/// caption in its text, and, laid out as printed, no figure or table
+/// taller than the printable page.
+fn check_print(browser: &Path, page: &Path, paper: &Paper) {
     let name = page.display();
-    let report = probe(browser, page, A4_PRINTABLE.0.round() as u32, true);
+    let (width, height) = paper.printable;
+    let report = probe(browser, page, width.round() as u32, true);
     for block in report["blocks"].as_array().unwrap() {
         let h = block["height"].as_f64().unwrap();
         assert!(
-            h <= A4_PRINTABLE.1,
-            "{name}: {block} is taller than an A4 page ({:.0} px) and would be cut",
-            A4_PRINTABLE.1
+            h <= height,
+            "{name}: {block} is taller than a page {} ({height:.0} px) and would be cut",
+            paper.pdfinfo
         );
     }
     let pdf = page.with_extension("print.pdf");
@@ -251,7 +266,7 @@ fn check_print(browser: &Path, page: &Path) {
         return;
     };
     let info = String::from_utf8_lossy(&info.stdout);
-    assert!(info.contains("(A4)"), "{name}: {info}");
+    assert!(info.contains(paper.pdfinfo), "{name}: {info}");
     let text = Command::new("pdftotext")
         .arg(&pdf)
         .arg("-")
@@ -334,7 +349,7 @@ fn the_checks_fail_on_a_broken_page() {
     );
     let b = browser.clone();
     assert!(
-        std::panic::catch_unwind(move || check_print(&b, &tall)).is_err(),
+        std::panic::catch_unwind(move || check_print(&b, &tall, &A4)).is_err(),
         "a figure taller than a page"
     );
     // And a sound page passes.
@@ -348,7 +363,7 @@ fn the_checks_fail_on_a_broken_page() {
 }
 
 #[test]
-fn a_handout_loads_draws_and_prints_on_a4() {
+fn a_handout_loads_draws_and_prints_on_a4_and_letter() {
     let Some(browser) = browser() else { return };
     let dir = tempfile::tempdir().unwrap();
     let page = dir.path().join("engine.html");
@@ -372,7 +387,31 @@ fn a_handout_loads_draws_and_prints_on_a4() {
         page.to_str().unwrap(),
     ]));
     check_page(&browser, &page);
-    check_print(&browser, &page);
+    check_print(&browser, &page, &A4);
+    // The same engine on Letter.
+    let letter = dir.path().join("letter.html");
+    succeeded(&run(&[
+        "handout",
+        "--crank",
+        "60",
+        "--rod",
+        "240",
+        "--offset",
+        "10",
+        "--unit",
+        "mm",
+        "--rpm",
+        "900",
+        "--angle",
+        "40",
+        "--torque",
+        "2000",
+        "--paper",
+        "letter",
+        "--out",
+        letter.to_str().unwrap(),
+    ]));
+    check_print(&browser, &letter, &LETTER);
 }
 
 #[test]
