@@ -2,7 +2,7 @@
 //! `index.html`, a handout, an exercise sheet and an animation opened in
 //! headless Chromium. Each page must load with no script error and no
 //! failed request, draw every figure (ink where each `<svg>` and `<img>`
-//! shown is), and print on A4 with no figure or table taller than the printable
+//! shown is), and print on A4 and Letter with no figure or table taller than the printable
 //! page (each is `break-inside: avoid`, so one that fits is never cut); the
 //! animation must move.
 //!
