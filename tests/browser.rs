@@ -366,52 +366,20 @@ fn the_checks_fail_on_a_broken_page() {
 fn a_handout_loads_draws_and_prints_on_a4_and_letter() {
     let Some(browser) = browser() else { return };
     let dir = tempfile::tempdir().unwrap();
-    let page = dir.path().join("engine.html");
-    succeeded(&run(&[
-        "handout",
-        "--crank",
-        "60",
-        "--rod",
-        "240",
-        "--offset",
-        "10",
-        "--unit",
-        "mm",
-        "--rpm",
-        "900",
-        "--angle",
-        "40",
-        "--torque",
-        "2000",
-        "--out",
-        page.to_str().unwrap(),
-    ]));
+    // An offset engine in millimetres with its forces.
+    let engine = "--crank 60 --rod 240 --offset 10 --unit mm --rpm 900 --angle 40 --torque 2000";
+    let write = |name: &str, paper: &str| {
+        let page = dir.path().join(name);
+        let mut args = vec!["handout"];
+        args.extend(engine.split(' '));
+        args.extend(["--paper", paper, "--out", page.to_str().unwrap()]);
+        succeeded(&run(&args));
+        page
+    };
+    let page = write("engine.html", "a4");
     check_page(&browser, &page);
     check_print(&browser, &page, &A4);
-    // The same engine on Letter.
-    let letter = dir.path().join("letter.html");
-    succeeded(&run(&[
-        "handout",
-        "--crank",
-        "60",
-        "--rod",
-        "240",
-        "--offset",
-        "10",
-        "--unit",
-        "mm",
-        "--rpm",
-        "900",
-        "--angle",
-        "40",
-        "--torque",
-        "2000",
-        "--paper",
-        "letter",
-        "--out",
-        letter.to_str().unwrap(),
-    ]));
-    check_print(&browser, &letter, &LETTER);
+    check_print(&browser, &write("letter.html", "letter"), &LETTER);
 }
 
 #[test]
