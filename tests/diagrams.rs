@@ -1003,3 +1003,32 @@ fn fig_64_makes_room_for_the_detail_of_a_small_velocity_triangle() {
         .unwrap();
     assert!(y < time[1], "notes at {y}, time base from {}", time[1]);
 }
+
+#[test]
+fn fig_64_sets_the_legend_of_a_flat_drawing_in_a_band_below_it() {
+    // l = 50 r: the mechanism is a thin strip with no clear corner; the
+    // legend goes below the scene's notes and above the time base.
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(slider_crank::SliderCrank::in_line(1.0, 50.0).unwrap());
+    options.angle = Some(slider_crank::Angle::deg(179.0));
+    let svg = to_svg(&FigureName::Fig64VelocityDiagrams.figure(&options).unwrap());
+    let y = |id: &str| -> f64 {
+        attr(&svg, id, "y")
+            .unwrap_or_else(|| panic!("{id}"))
+            .parse()
+            .unwrap()
+    };
+    let notes = y("note-scales-3");
+    let legend = y("mechanism-legend-1");
+    let panels = metadata(&svg)["panels"].as_array().unwrap().clone();
+    let time = panels
+        .iter()
+        .find(|p| p["id"] == "panel-time-base")
+        .unwrap()["rect"][1]
+        .as_f64()
+        .unwrap();
+    assert!(
+        notes < legend && legend < time,
+        "notes {notes}, legend {legend}, time base {time}"
+    );
+}

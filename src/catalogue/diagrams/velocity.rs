@@ -12,13 +12,17 @@
 use super::{Ctx, PER_DEGREE, Sheet, against_time, dead_centres, extent, short, sig};
 use crate::diagram::{Axis, Curve, Locus, LocusKind, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 use crate::scene::Layer;
 use crate::{Angle, Pose};
 
 /// Height of the mechanism panel with its scale notes.
 const TOP: f64 = 400.0;
+
+/// A mechanism drawing less tall than this (page units) cannot hold the
+/// two-line legend in a corner clear of it.
+const FLAT: f64 = 120.0;
 
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
@@ -41,14 +45,25 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     // sheet moves down by what that adds.
     let grown = (base.height() - TOP).max(0.0);
     let panel = base.panels()[0].clone();
-    let mut plot = Plot::with_map(
+    // A drawing too flat to hold the legend beside it (a long rod) has it
+    // in a band of its own below the scene's notes.
+    let r = *panel.rect();
+    let band = if r.height < FLAT { Plot::band(2) } else { 0.0 };
+    let area = PageRect::new(r.x, r.y, r.width, TOP + grown + band - r.y);
+    let grown = grown + band;
+    let plot = Plot::with_map(
         "mechanism",
-        *panel.rect(),
-        *panel.rect(),
+        r,
+        if band > 0.0 { area } else { r },
         *panel.transform(),
         ctx.tolerance,
         ctx.font,
     );
+    let mut plot = if band > 0.0 {
+        plot.blocks_below()
+    } else {
+        plot
+    };
     for item in panel.items() {
         plot.avoid(item);
     }
