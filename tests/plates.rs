@@ -26,8 +26,10 @@ const REACH_EM: f64 = 1.5;
 const PAGE_SLACK: f64 = 0.5;
 /// The least extent (px) of B, C, E, F, G in some panel of Figs. 65–67.
 const SPREAD: f64 = 150.0;
-/// Classes of the lines labels keep clear of.
-const LINE_CLASSES: [&str; 3] = ["link", "construction", "auxiliary"];
+/// Classes of the lines labels keep clear of (the frame: guides, their
+/// hatching, bearings; not the line of stroke, a centre line that opens
+/// for a letter).
+const LINE_CLASSES: [&str; 4] = ["link", "construction", "auxiliary", "frame"];
 
 const RULE_BUILD: &str = "0 figure builds";
 const RULE_GUIDES: &str = "1 links clear of guides";
@@ -116,15 +118,16 @@ fn labels_overlap(plate: &Plate) -> Vec<Failure> {
     pairs.into_iter().map(|p| fail(RULE_OVERLAP, p)).collect()
 }
 
-/// Rule 2b: no line of a link or construction enters a glyph box of a
-/// label of its panel or of the page.
+/// Rule 2b: no line of a link, a construction or the frame (guides and
+/// their hatching) enters a glyph box of a label of its panel or of the
+/// page; the line of stroke, a centre line, opens for letters.
 fn lines_through_labels(plate: &Plate) -> Vec<Failure> {
     let mut pairs = BTreeSet::new();
     for (panel, labels) in plate.panels.iter().zip(label_groups(plate)) {
         let lines = panel
             .strokes
             .iter()
-            .filter(|s| LINE_CLASSES.contains(&s.class.as_str()));
+            .filter(|s| LINE_CLASSES.contains(&s.class.as_str()) && !s.id.contains("line-stroke"));
         for line in lines {
             for label in &labels {
                 let r = label.rect.shrunk(GLYPH_SLACK);
@@ -422,7 +425,7 @@ fn report(outcomes: &[Outcome]) -> String {
 }
 
 #[test]
-#[ignore = "the plates are not all clean yet (99.9 % of the sweep, 4 of 3580 plates): run with --ignored"]
+#[ignore = "the plates are not all clean yet (98.7 % of the sweep, 48 of 3580 plates, hatching counted): run with --ignored"]
 fn every_plate_is_clean() {
     let start = Instant::now();
     let outcomes = sweep(&jobs());

@@ -30,7 +30,7 @@ pub(crate) fn slot_radius(m: &SliderCrank) -> f64 {
 pub(super) fn block_size(m: &SliderCrank) -> (f64, f64) {
     let r = m.crank();
     let k = ((m.rod() - r) / r).clamp(0.3, 1.0);
-    (0.36 * r * k, 0.2 * r * k)
+    (0.36 * r * k, 0.17 * r * k)
 }
 
 /// The middle of the slot of radius `rho` (`None`: straight) at arc length
