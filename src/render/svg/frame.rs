@@ -1,6 +1,7 @@
 //! The fixed link: the crank's bearing, the ground hatching of the guides
 //! and the slider block that runs in them.
 
+use super::hatching::Hatching;
 use super::markup::{finite, path, polyline_d, pt, unit};
 use super::{Ink, PanelWriter};
 use crate::figure::Pen;
@@ -64,28 +65,34 @@ impl PanelWriter<'_> {
         let t = unit(b - a)?;
         let n = unit(self.t.apply_vector(side))?;
         let len = (b - a).norm();
-        let mut d = String::new();
+        let mut strokes = Vec::new();
         let mut s = 0.5 * HATCH_SPACING;
         while s < len {
             let p = a + t * s;
-            let q = p + n * HATCH_DEPTH - t * (0.8 * HATCH_DEPTH);
-            let _ = write!(d, "M{} L{} ", pt(p), pt(q));
+            strokes.push((p, p + n * HATCH_DEPTH - t * (0.8 * HATCH_DEPTH)));
             s += HATCH_SPACING;
         }
-        if d.is_empty() {
+        if strokes.is_empty() {
             return None;
         }
         for depth in [0.3, 0.8] {
             self.obstacles
                 .segment(a + n * (depth * HATCH_DEPTH), b + n * (depth * HATCH_DEPTH));
         }
-        Some(Box::new(ink.tag(path(
-            d.trim_end().to_string(),
-            Pen {
+        // Written again once the labels are placed, open where one sits.
+        let hatching = Hatching {
+            node: usize::MAX,
+            id: ink.id.to_string(),
+            role: ink.role,
+            pen: Pen {
                 width: 0.6,
                 ..ink.pen
             },
-        ))))
+            strokes,
+        };
+        let node = hatching.written(&[]).map(|p| Box::new(p) as Box<dyn Node>);
+        self.hatchings.push(hatching);
+        node
     }
 
     /// The slider block: its outline, heavier than the guides, unfilled so

@@ -12,6 +12,7 @@
 mod centre;
 mod cull;
 mod frame;
+mod hatching;
 mod lines;
 mod marks;
 mod markup;
@@ -76,6 +77,8 @@ struct PanelWriter<'a> {
     pending: Vec<Pending>,
     /// Centre lines to write again once the labels are placed.
     centre_lines: Vec<centre::CentreLine>,
+    /// Hatchings to write again once the labels are placed.
+    hatchings: Vec<hatching::Hatching>,
 }
 
 impl PanelWriter<'_> {
@@ -197,6 +200,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
         obstacles: Obstacles::default(),
         pending: Vec::new(),
         centre_lines: Vec::new(),
+        hatchings: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -208,10 +212,13 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
     order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
     let mut nodes: Vec<Box<dyn Node>> = Vec::new();
     for (_, item) in &order {
-        let lines = w.centre_lines.len();
+        let (lines, hatchings) = (w.centre_lines.len(), w.hatchings.len());
         if let Some(node) = w.item(item) {
             if let Some(line) = w.centre_lines.get_mut(lines) {
                 line.node = nodes.len();
+            }
+            if let Some(hatching) = w.hatchings.get_mut(hatchings) {
+                hatching.node = nodes.len();
             }
             nodes.push(node);
         }
@@ -220,6 +227,15 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
     for line in &w.centre_lines {
         if let Some(node) = nodes.get_mut(line.node) {
             *node = Box::new(line.written(&boxes));
+        }
+    }
+    // A hatching every stroke of which lies under letters is left empty.
+    for hatching in &w.hatchings {
+        if let Some(node) = nodes.get_mut(hatching.node) {
+            *node = match hatching.written(&boxes) {
+                Some(p) => Box::new(p),
+                None => Box::new(Group::new()),
+            };
         }
     }
     if panel.is_clipped() {
