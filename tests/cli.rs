@@ -751,3 +751,17 @@ fn print_default_writes_a_scene_file_that_draws_the_named_figure() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn figure_help_names_every_layer() {
+    let help = String::from_utf8(run(&["figure", "--help"]).stdout).unwrap();
+    let at = help.find("--layers").expect("a --layers option");
+    let text = &help[at..at + help[at..].find("[default").unwrap()];
+    for layer in slider_crank::Layer::ALL {
+        assert!(
+            text.contains(layer.name()),
+            "{} missing from: {text}",
+            layer.name()
+        );
+    }
+}

@@ -56,9 +56,10 @@ pub struct FigureFlags {
     pub angle: Option<f64>,
     #[command(flatten)]
     pub speed: SpeedArgs,
-    /// Layers of a mechanism figure, comma-separated: mechanism,
-    /// dimensions, centrodes, coupler, virtual-centres, velocity, klein,
-    /// kisch, torque, scales [default: the figure's]
+    /// Layers of a mechanism figure, comma-separated: mechanism, angles,
+    /// dimensions, centrodes, coupler, polar (Fig. 64's polar diagram as
+    /// far as the crank has turned), virtual-centres, velocity, klein,
+    /// kisch, torque, motion, scales [default: the figure's]
     #[arg(long, value_name = "LIST")]
     pub layers: Option<String>,
     /// Drawing style: textbook (black ink) or handout (colour) [default:
