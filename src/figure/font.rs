@@ -74,16 +74,39 @@ pub struct TextBox {
     pub above: f64,
     /// The lowest ink below the baseline (positive below).
     pub below: f64,
+    /// Where the ink begins, from the start of the baseline (negative
+    /// where the first glyph reaches back before it); 0 for a text with
+    /// no ink.
+    pub left: f64,
+    /// Where the ink ends, from the start of the baseline: past
+    /// [`TextBox::width`] where the last glyph overhangs its advance, as an
+    /// italic capital does; 0 for a text with no ink.
+    pub right: f64,
 }
 
 impl TextBox {
     /// The box of `self` followed on the same line by `next`.
     pub fn then(self, next: TextBox) -> TextBox {
+        let (left, right) = match (self.has_ink(), next.has_ink()) {
+            (_, false) => (self.left, self.right),
+            (false, true) => (self.width + next.left, self.width + next.right),
+            (true, true) => (
+                self.left.min(self.width + next.left),
+                self.right.max(self.width + next.right),
+            ),
+        };
         TextBox {
             width: self.width + next.width,
             above: self.above.max(next.above),
             below: self.below.max(next.below),
+            left,
+            right,
         }
+    }
+
+    /// Whether any glyph leaves ink (not only spaces).
+    fn has_ink(&self) -> bool {
+        self.right > self.left
     }
 }
 
@@ -96,12 +119,15 @@ struct Face {
 }
 
 /// What the text measures need of one character in one style, in ems:
-/// its advance, its ink bottom and top, and whether a face has it.
+/// its advance, its ink bottom, top, left and right (from its origin), and
+/// whether a face has it.
 #[derive(Debug, Clone, Copy)]
 struct CharMetrics {
     advance: f64,
     bottom: f64,
     top: f64,
+    left: f64,
+    right: f64,
     present: bool,
 }
 
@@ -128,14 +154,14 @@ impl Face {
         f64::from(a) / self.units_per_em
     }
 
-    /// Ink bottom and top of glyph `g`.
-    fn ink(&self, g: GlyphId) -> (f64, f64) {
+    /// Ink bounds of glyph `g` from its origin, in ems: left, bottom,
+    /// right, top (all 0 for a glyph without ink).
+    fn ink(&self, g: GlyphId) -> [f64; 4] {
         match self.glyphs.bounds(g) {
-            Some(b) if b.y_max > b.y_min => (
-                f64::from(b.y_min) / self.units_per_em,
-                f64::from(b.y_max) / self.units_per_em,
-            ),
-            _ => (0.0, 0.0),
+            Some(b) if b.y_max > b.y_min && b.x_max > b.x_min => {
+                [b.x_min, b.y_min, b.x_max, b.y_max].map(|v| f64::from(v) / self.units_per_em)
+            }
+            _ => [0.0; 4],
         }
     }
 }
@@ -258,11 +284,13 @@ impl Font {
         let mut cache = cache.lock().unwrap_or_else(|e| e.into_inner());
         *cache.entry(c).or_insert_with(|| {
             let (face, g) = self.glyph(c, style);
-            let (bottom, top) = face.ink(g);
+            let [left, bottom, right, top] = face.ink(g);
             CharMetrics {
                 advance: face.advance(g),
                 bottom,
                 top,
+                left,
+                right,
                 present: g != GlyphId::NOTDEF,
             }
         })
@@ -277,19 +305,30 @@ impl Font {
             .sum::<f64>()
     }
 
-    /// The width and ink height and depth of `text` at `size`.
+    /// The width and the ink's height, depth and left and right ends of
+    /// `text` at `size`.
     pub fn measure(&self, text: &str, size: f64, style: FontStyle) -> TextBox {
         let (mut bottom, mut top, mut width) = (0.0f64, 0.0f64, 0.0);
+        let (mut left, mut right) = (f64::INFINITY, f64::NEG_INFINITY);
         for c in text.chars() {
             let m = self.char_metrics(c, style);
             bottom = bottom.min(m.bottom);
             top = top.max(m.top);
+            if m.right > m.left {
+                left = left.min(width + m.left);
+                right = right.max(width + m.right);
+            }
             width += m.advance;
+        }
+        if left > right {
+            (left, right) = (0.0, 0.0);
         }
         TextBox {
             width: size * width,
             above: size * top,
             below: -size * bottom,
+            left: size * left,
+            right: size * right,
         }
     }
 
@@ -401,6 +440,29 @@ mod tests {
                 assert!(font.measure("p", 10.0, style).below > 1.0);
                 assert_eq!(font.measure(" ", 10.0, style).above, 0.0);
             }
+        }
+    }
+
+    #[test]
+    fn ink_ends_are_the_glyph_outlines_not_the_advances() {
+        for font in Font::ALL {
+            // An italic capital leans past its advance; an upright one
+            // keeps its ink within it, side bearings on both sides.
+            let p = font.measure("P", 20.0, FontStyle::Italic);
+            assert!(p.right > p.width + 0.3, "{font} {p:?}");
+            let h = font.measure("H", 20.0, FontStyle::Regular);
+            assert!(h.left > 0.0 && h.right < h.width, "{font} {h:?}");
+            assert!(h.right - h.left > 0.6 * h.width, "{font} {h:?}");
+            // Spaces have no ink: they only move the ink that follows.
+            let sp = font.measure(" ", 20.0, FontStyle::Regular);
+            assert_eq!((sp.left, sp.right), (0.0, 0.0));
+            let both = sp.then(h);
+            assert!((both.left - (sp.width + h.left)).abs() < 1e-12, "{both:?}");
+            assert!((both.right - (sp.width + h.right)).abs() < 1e-12);
+            let joined = font.measure(" H", 20.0, FontStyle::Regular);
+            assert!((joined.left - both.left).abs() < 1e-9, "{joined:?}");
+            assert!((joined.right - both.right).abs() < 1e-9, "{joined:?}");
+            assert_eq!(h.then(sp).right, h.right);
         }
     }
 

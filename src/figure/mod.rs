@@ -20,7 +20,7 @@ pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, Text
 pub use path::{Path, PathBuilder, PathSegment};
 pub use size::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use style::Style;
-pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING, Pen};
+pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING, Pen, RIGHT_ANGLE};
 pub use text::{
     MAX_TITLE_CHARS, RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Title,
 };

@@ -150,3 +150,6 @@ impl Style {
 pub(crate) const HATCH_SPACING: f64 = 6.0;
 /// Depth of the strip of ground hatching, page units.
 pub(crate) const HATCH_DEPTH: f64 = 6.5;
+/// Length of each side of a right-angle mark, page units (the scene
+/// draws one only on a leg longer than two of them).
+pub(crate) const RIGHT_ANGLE: f64 = 10.0;

@@ -11,9 +11,7 @@ pub(crate) const DOT_RADIUS: f64 = 2.1;
 pub(crate) const ARROW_LENGTH: f64 = 10.0;
 /// Half the width of an arrowhead at its back.
 pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
-pub(crate) use crate::figure::{HATCH_DEPTH, HATCH_SPACING};
-/// Length of each side of a right-angle mark.
-pub(crate) const RIGHT_ANGLE: f64 = 10.0;
+pub(crate) use crate::figure::{HATCH_DEPTH, HATCH_SPACING, RIGHT_ANGLE};
 /// Radius of an angle mark's arc.
 pub(crate) const ANGLE_RADIUS: f64 = 28.0;
 /// Font size of notes, the largest they are set in.

@@ -37,6 +37,9 @@ pub(crate) struct Canvas {
     /// Where constructed points get neither dot nor letter (the region a
     /// detail shows lettered).
     quiet: Option<Frame>,
+    /// Where the marks about the crank (angles, the torque arrow) are left
+    /// to a detail of the crank.
+    bare: Option<Frame>,
     /// What the lines drawn now stand for (set per layer).
     hue: Option<Hue>,
 }
@@ -52,6 +55,7 @@ impl Canvas {
             prefix: "",
             edge_arrows: true,
             quiet: None,
+            bare: None,
             hue: None,
         }
     }
@@ -81,6 +85,19 @@ impl Canvas {
     pub(crate) fn quiet(mut self, region: Frame) -> Self {
         self.quiet = Some(region);
         self
+    }
+
+    /// Leaves the marks about the crank inside `region` (angle marks, the
+    /// torque arrow, the names on the crank) to a detail of the crank: the
+    /// layers ask [`Canvas::is_bare`] before drawing them.
+    pub(crate) fn bare(mut self, region: Frame) -> Self {
+        self.bare = Some(region);
+        self
+    }
+
+    /// Whether marks about `p` are left to a detail ([`Canvas::bare`]).
+    pub(crate) fn is_bare(&self, p: Point) -> bool {
+        self.bare.is_some_and(|f| f.contains(p))
     }
 
     /// The canvas of a detail: every id gets `prefix`, and points off the

@@ -274,7 +274,7 @@ impl PanelWriter<'_> {
         let mut pending = std::mem::take(&mut self.pending);
         pending.sort_by_key(|p| !p.letter);
         for p in pending {
-            let (half, rise) = ink_box(&p.text, p.size, self.font);
+            let (half, shift) = ink_box(&p.text, p.size, self.font);
             // The box keeps [`ROOM`] about the glyphs: its reach is that less.
             let reach = REACH * p.size - ROOM;
             let centre = place(p.anchor, half, p.gap, reach, &self.obstacles, room);
@@ -283,7 +283,7 @@ impl PanelWriter<'_> {
             boxes.push(b);
             texts.push(text_node(
                 &p.id,
-                centre + crate::geom::Vector::new(0.0, rise),
+                centre + shift,
                 &p.text,
                 p.size,
                 colour,

@@ -27,14 +27,28 @@ pub(super) fn text_half(text: &RichText, size: f64, font: Font) -> Vector {
 }
 
 /// The half-size of the box around the ink of `text` ([`ROOM`] on
-/// every side), and the downward shift from the box's centre to the
-/// point [`text_node`] takes (`BASELINE` × `size` above the baseline):
-/// the box of a placed label, tight above and below (a subscript's drop
-/// or a letter's descender counts only on its own side).
-pub(super) fn ink_box(text: &RichText, size: f64, font: Font) -> (Vector, f64) {
+/// every side), and the shift from the box's centre to the point
+/// [`text_node`] takes (the middle of the advances, `BASELINE` × `size`
+/// above the baseline): the box of a placed label, tight on every side (a
+/// subscript's drop or a letter's descender counts only on its own side,
+/// an italic capital's overhang only on the right). A text without ink
+/// (spaces) gets the box of its advances.
+pub(super) fn ink_box(text: &RichText, size: f64, font: Font) -> (Vector, Vector) {
     let b = text.measure(font, size);
-    let half = Vector::new(0.5 * b.width + ROOM, 0.5 * (b.above + b.below) + ROOM);
-    (half, 0.5 * (b.above - b.below) - BASELINE * size)
+    let (left, right) = if b.right > b.left {
+        (b.left, b.right)
+    } else {
+        (0.0, b.width)
+    };
+    let half = Vector::new(
+        0.5 * (right - left) + ROOM,
+        0.5 * (b.above + b.below) + ROOM,
+    );
+    let shift = Vector::new(
+        0.5 * b.width - 0.5 * (left + right),
+        0.5 * (b.above - b.below) - BASELINE * size,
+    );
+    (half, shift)
 }
 
 pub(super) fn starts_italic(text: &RichText) -> bool {

@@ -9,11 +9,21 @@
 //! when its triangle ECB spans less than [`THRESHOLD`] page units: below
 //! that its three letters (each about 12 × 17 units, kept 4 units from
 //! their points) with the pins of B and C and the right-angle mark at C
-//! cannot all sit clear of its sides. The torque layer draws at the page's
-//! scale only (its values are written on the figure).
+//! cannot all sit clear of its sides.
+//!
+//! The torque layer (Ng's Fig. 1) marks the crank centre and the crank
+//! pin: the torque arrow of radius 36 units about the centre, the θ arc of
+//! radius 28 inside it, β and φ at the pin, the right angle at the centre,
+//! and the letters of the centre, the pin and M, each about 12 × 17 units
+//! within 1.5 em of its point. They fit inside the crank circle only where
+//! its radius is at least [`CRANK_THRESHOLD`] units (an arrow's and a
+//! letter's width beyond the torque arrow); a smaller crank (a long rod, or
+//! an offset that makes the page's scale small) gets a detail of the crank
+//! that carries those marks, at least [`CRANK_TARGET`] units in radius,
+//! and the main view shows the links, pins and forces alone there.
 
 use super::Ctx;
-use crate::geom::{Frame, Point};
+use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 
 /// The extent, page units, under which the velocity triangle ECB gets a
@@ -41,12 +51,30 @@ fn steps() -> impl DoubleEndedIterator<Item = f64> + Clone {
     })
 }
 
+/// The crank radius, page units, under which the torque layer gets a
+/// detail of the crank (see the module docs).
+pub(crate) const CRANK_THRESHOLD: f64 = 90.0;
+/// The least crank radius in a crank's detail, page units.
+const CRANK_TARGET: f64 = 110.0;
+
+/// What a detail enlarges.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Focus {
+    /// The velocity or acceleration construction about B and C: the
+    /// main view leaves its constructed points' letters to the detail.
+    Construction,
+    /// The crank of a torque figure: the main view leaves the marks about
+    /// the crank (angles, the torque arrow, M's letter) to the detail.
+    Crank,
+}
+
 /// What the detail shows: the world region (the detailed points' box),
-/// and the magnification over the main view.
+/// the magnification over the main view, and what it enlarges.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Detail {
     pub region: Frame,
     pub magnification: f64,
+    pub focus: Focus,
 }
 
 /// The points of the constructions about the crank that the scene draws:
@@ -91,8 +119,11 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
     let scene = ctx.scene;
     let acceleration = scene.has(Layer::Klein) || scene.has(Layer::Kisch);
     let velocity = scene.has(Layer::Velocity);
-    if !(acceleration || velocity) || !scene.has(Layer::Mechanism) {
+    if !scene.has(Layer::Mechanism) {
         return None;
+    }
+    if !(acceleration || velocity) {
+        return crank(ctx, scale, max_width);
     }
     let (core, h) = points(ctx);
     let (cmin, cmax) = bounds(&core);
@@ -120,6 +151,7 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
         Some(Detail {
             region: Frame::new(min, max),
             magnification,
+            focus: Focus::Construction,
         })
     };
     let enough = |d: &Detail| core_extent * d.magnification >= CORE_TARGET;
@@ -127,6 +159,36 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
         Some(d) if enough(&d) => Some(d),
         _ => fitted(&core),
     }
+}
+
+/// The detail of the crank a torque figure drawn at `scale` needs, if
+/// any (its crank radius under [`CRANK_THRESHOLD`] page units): the crank
+/// circle and M, enlarged to [`CRANK_TARGET`] or as near as `max_width`
+/// allows.
+fn crank(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
+    if !ctx.scene.has(Layer::Torque) {
+        return None;
+    }
+    let pose = ctx.main.pose();
+    let r = pose.mechanism().crank();
+    let radius = r * scale;
+    if !(radius > 0.0 && radius < CRANK_THRESHOLD) {
+        return None;
+    }
+    let c = pose.c();
+    let m = ctx.main.e().e();
+    let (lo, hi) = bounds(&[c - Vector::new(r, r), c + Vector::new(r, r), m]);
+    let width = (hi.x - lo.x) * scale;
+    let fits = |k: f64| width * k + 2.0 * PAD <= max_width;
+    let magnification = steps()
+        .find(|k| k * radius >= CRANK_TARGET)
+        .filter(|k| fits(*k))
+        .or_else(|| steps().rev().find(|k| fits(*k)))?;
+    Some(Detail {
+        region: Frame::new(lo, hi),
+        magnification,
+        focus: Focus::Crank,
+    })
 }
 
 /// One detail for the poses of a held view, whose `details` are those
@@ -153,5 +215,6 @@ pub(crate) fn union(details: &[Detail], scale: f64, max_width: f64) -> Option<De
     Some(Detail {
         region: Frame::new(lo, hi),
         magnification,
+        focus: first.focus,
     })
 }

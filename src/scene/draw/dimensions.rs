@@ -22,7 +22,7 @@ pub(crate) fn angles(ctx: &Ctx, canvas: &mut Canvas) {
     let m = pose.mechanism();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let theta = pose.angle().radians();
-    if theta > 0.0 {
+    if theta > 0.0 && !canvas.is_bare(c) {
         canvas.push(
             "angle-theta",
             Role::Dimension,
@@ -38,7 +38,7 @@ pub(crate) fn angles(ctx: &Ctx, canvas: &mut Canvas) {
     // arc from it to the rod.
     let ba = a - b;
     let phi = ba.y.atan2(ba.x);
-    if canvas.page(ba.norm()) * phi.abs() > 6.0 {
+    if canvas.page(ba.norm()) * phi.abs() > 6.0 && !canvas.is_bare(b) {
         let reach = canvas.world(PARALLEL).min(0.6 * ba.x);
         canvas.segment(
             "line-parallel-B",
@@ -57,12 +57,10 @@ pub(crate) fn angles(ctx: &Ctx, canvas: &mut Canvas) {
             },
         );
     }
-    canvas.label(
-        "value-r",
-        nalgebra::center(&c, &b),
-        RichText::italic("r"),
-        TextSize::Small,
-    );
+    let mid = nalgebra::center(&c, &b);
+    if !canvas.is_bare(mid) {
+        canvas.label("value-r", mid, RichText::italic("r"), TextSize::Small);
+    }
     let l = if ctx.scene.notation() == crate::scene::Notation::Ng {
         RichText::italic("l")
     } else {

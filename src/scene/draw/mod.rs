@@ -298,9 +298,13 @@ pub(crate) fn build(scene: &Scene, layout: Option<&Layout>) -> (Figure, Evaluati
     let detail = layout.detail;
     let region = detail.map(|d| detail_frame(&d, transform.scale()));
     let mut canvas = Canvas::new(transform, transform.world_frame(&main));
-    if let Some(frame) = region {
-        // The letters of the constructed points are the detail's.
+    if let (Some(frame), Some(d)) = (region, detail) {
+        // The letters of the constructed points are the detail's, and
+        // with a crank's detail the marks about the crank too.
         canvas = canvas.quiet(frame);
+        if d.focus == detail::Focus::Crank {
+            canvas = canvas.bare(frame);
+        }
     }
     draw_layers(&ctx, &poses, &mut canvas, true);
 

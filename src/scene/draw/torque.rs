@@ -4,7 +4,7 @@
 use super::velocity::basics_e;
 use super::{Ctx, NamedArrow};
 use crate::figure::{RichText, Role, Shape, TextSize};
-use crate::geom::{Vector, cross};
+use crate::geom::{Point, Vector, cross};
 use crate::scene::canvas::Canvas;
 use crate::scene::notation::Named::*;
 
@@ -109,31 +109,11 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     let scene = ctx.scene;
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
-    // The crank torque: an arc arrow about the crank centre.
-    let t = scene.torque();
-    let radius = canvas.world(TORQUE_RADIUS);
-    let turn = if t >= 0.0 { 1.0 } else { -1.0 };
-    let start = -0.9 * turn;
-    let sweep = turn * 4.4;
-    canvas.push(
-        "torque-T",
-        Role::Force,
-        Shape::Arc {
-            centre: c,
-            radius,
-            start,
-            sweep,
-            arrow: true,
-        },
-    );
-    let mid = start + 0.5 * sweep + std::f64::consts::PI;
-    canvas.label(
-        "value-T",
-        c + Vector::new(mid.cos(), mid.sin()) * radius,
-        RichText::italic("T"),
-        TextSize::Small,
-    );
-
+    // The crank torque: an arc arrow about the crank centre (left to a
+    // detail of the crank where there is one).
+    if !canvas.is_bare(c) {
+        torque_arrow(canvas, c, scene.torque());
+    }
     for f in forces(ctx, &|page| canvas.world(page)) {
         if !canvas.contains(f.from) {
             continue;
@@ -158,7 +138,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     // The transmission angle β at the crank pin, between its two links.
     let (u, v) = (c - b, a - b);
     let sweep = cross(&u, &v).atan2(u.dot(&v));
-    if sweep.abs() > 1e-3 {
+    if sweep.abs() > 1e-3 && !canvas.is_bare(b) {
         canvas.push(
             "angle-beta",
             Role::Dimension,
@@ -170,6 +150,33 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
             },
         );
     }
+}
+
+/// The crank torque `t` as an arc arrow about the crank centre `c`,
+/// lettered T in its gap.
+fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64) {
+    let radius = canvas.world(TORQUE_RADIUS);
+    let turn = if t >= 0.0 { 1.0 } else { -1.0 };
+    let start = -0.9 * turn;
+    let sweep = turn * 4.4;
+    canvas.push(
+        "torque-T",
+        Role::Force,
+        Shape::Arc {
+            centre: c,
+            radius,
+            start,
+            sweep,
+            arrow: true,
+        },
+    );
+    let mid = start + 0.5 * sweep + std::f64::consts::PI;
+    canvas.label(
+        "value-T",
+        c + Vector::new(mid.cos(), mid.sin()) * radius,
+        RichText::italic("T"),
+        TextSize::Small,
+    );
 }
 
 /// The force arrows, their page lengths turned to world lengths by

@@ -2,10 +2,14 @@
 //! triangles ADB and ECB.
 
 use super::Ctx;
-use crate::figure::{Hue, Role, Shape};
+use crate::figure::{Hue, RIGHT_ANGLE, Role, Shape};
 use crate::geom::{Intersection, Point, Vector, cross};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
+
+/// How far past its ends the perpendicular through C is produced at
+/// most, page units.
+const PRODUCED: f64 = 12.0;
 
 /// E: the perpendicular to the stroke through C, AB produced to meet it,
 /// the right angle at C.
@@ -15,7 +19,10 @@ pub(crate) fn basics_e(ctx: &Ctx, canvas: &mut Canvas) {
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let e = ctx.main.e().e();
     let r = pose.mechanism().crank();
-    let ext = 0.12 * r;
+    // Produced a little past C and E: an eighth of the crank, but no more
+    // than [`PRODUCED`] on the page, so that a large crank leaves room
+    // for E's letter beyond it.
+    let ext = (0.12 * r).min(canvas.world(PRODUCED));
     // The perpendicular through C, and on it the result CE, heavier.
     canvas.segment(
         format!("{}-produced", ctx.line(CrankCentre, VelocityPoint)),
@@ -27,7 +34,9 @@ pub(crate) fn basics_e(ctx: &Ctx, canvas: &mut Canvas) {
     if (e - b).dot(&(b - a)) > 0.0 {
         canvas.segment(ctx.line(CrankPin, VelocityPoint), Role::Auxiliary, b, e);
     }
-    if e != c {
+    // The mark needs a leg longer than itself: with C and E closer than
+    // two marks' sides it would hide E.
+    if canvas.page((e - c).norm()) >= 2.0 * RIGHT_ANGLE && !canvas.is_bare(c) {
         canvas.push(
             format!("angle-{}", ctx.letter(CrankCentre)),
             Role::Construction,
