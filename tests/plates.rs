@@ -425,7 +425,6 @@ fn report(outcomes: &[Outcome]) -> String {
 }
 
 #[test]
-#[ignore = "the plates are not all clean yet (99.9 % of the sweep, 4 of 3580 plates): run with --ignored"]
 fn every_plate_is_clean() {
     let start = Instant::now();
     let outcomes = sweep(&jobs());

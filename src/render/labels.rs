@@ -69,6 +69,14 @@ impl Bounds {
     }
 }
 
+/// The obstacles' counts at a moment ([`Obstacles::mark`]).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Mark {
+    segments: usize,
+    boxes: usize,
+    pending: usize,
+}
+
 /// One obstacle in the spatial index: a segment or a box, by its index.
 type Entry = GeomWithData<Rectangle<[f64; 2]>, Obstacle>;
 
@@ -136,6 +144,23 @@ impl Obstacles {
                 self.index.insert(entry);
             }
         }
+    }
+
+    /// How many obstacles there are now, to [`Obstacles::rollback`] to.
+    pub fn mark(&self) -> Mark {
+        Mark {
+            segments: self.segments.len(),
+            boxes: self.boxes.len(),
+            pending: self.pending.len(),
+        }
+    }
+
+    /// Forgets what was added since `mark` was taken, if the index was not
+    /// built in between.
+    pub fn rollback(&mut self, mark: Mark) {
+        self.segments.truncate(mark.segments);
+        self.boxes.truncate(mark.boxes);
+        self.pending.truncate(mark.pending);
     }
 
     pub fn polyline(&mut self, points: &[Point]) {
@@ -352,7 +377,9 @@ fn directions() -> &'static [(f64, f64); 16] {
 /// those is crowded, anywhere on a fine grid no farther than `reach`.
 /// Where every place is crowded, one where only the room about the glyphs
 /// meets something beats any where the glyphs do ([`STRUCK`]).
-/// Deterministic: ties go to the earlier candidate.
+/// Deterministic: ties go to the earlier candidate. Returns the centre
+/// and its cost: 0 where nothing is near, [`STRUCK`] or more where the
+/// glyphs themselves meet something.
 pub(crate) fn place(
     anchor: Point,
     half: Vector,
@@ -360,7 +387,7 @@ pub(crate) fn place(
     reach: f64,
     obstacles: &Obstacles,
     page: &PageRect,
-) -> Point {
+) -> (Point, f64) {
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
     // `reach`): its obstacles are looked up once.
@@ -401,7 +428,7 @@ pub(crate) fn place(
             );
         }
         if best.1 < 1.0 {
-            return best.2;
+            return (best.2, best.1);
         }
     }
     // Every ring is crowded: look at every position of a fine grid within
@@ -417,7 +444,7 @@ pub(crate) fn place(
             consider(&band, &mut best, centre, penalty);
         }
     }
-    best.2
+    (best.2, best.1)
 }
 
 /// Room a label keeps from what it avoids, page units.
@@ -434,7 +461,7 @@ const OPEN: f64 = 1.0;
 /// What a place costs more whose glyphs themselves (not only the room
 /// about them) meet something: any place where only the room is crowded
 /// is better.
-const STRUCK: f64 = 1000.0;
+pub(crate) const STRUCK: f64 = 1000.0;
 
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;
@@ -478,7 +505,7 @@ mod tests {
         o.segment(Point::new(0.0, 100.0), Point::new(200.0, 100.0));
         o.segment(Point::new(100.0, 100.0), Point::new(200.0, 0.0));
         let page = PageRect::new(0.0, 0.0, 200.0, 200.0);
-        let c = place(
+        let (c, cost) = place(
             Point::new(100.0, 100.0),
             Vector::new(5.0, 6.0),
             4.0,
@@ -488,6 +515,7 @@ mod tests {
         );
         let b = Bounds::around(c, Vector::new(5.0, 6.0));
         assert_eq!(o.cost(&b), 0.0, "{c:?}");
+        assert_eq!(cost, 0.0);
         assert!((c - Point::new(100.0, 100.0)).norm() < 20.0);
     }
 
@@ -518,10 +546,10 @@ mod tests {
         let mut o = Obstacles::default();
         o.hollow(block);
         // The point inside: its letter stays beside it, inside the block.
-        let inside = place(Point::new(200.0, 200.0), half, 4.0, 22.0, &o, &page);
+        let (inside, _) = place(Point::new(200.0, 200.0), half, 4.0, 22.0, &o, &page);
         assert!(block.contains(&Bounds::around(inside, half)), "{inside:?}");
         // A point outside keeps its letter out of the block.
-        let outside = place(Point::new(265.0, 200.0), half, 4.0, 22.0, &o, &page);
+        let (outside, _) = place(Point::new(265.0, 200.0), half, 4.0, 22.0, &o, &page);
         assert_eq!(block.overlap(&Bounds::around(outside, half)), 0.0);
     }
 
@@ -530,13 +558,37 @@ mod tests {
         let mut o = Obstacles::default();
         let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
         let half = Vector::new(5.0, 6.0);
-        let a = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
+        let (a, _) = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
         assert!(Bounds::around(a, half).inside(&page));
+        let mark = o.mark();
         o.boxed(Bounds::around(a, half));
-        let b = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
+        let (b, _) = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
         assert_eq!(
             Bounds::around(a, half).overlap(&Bounds::around(b, half)),
             0.0
         );
+        // Rolled back, the first label's place is free again.
+        o.rollback(mark);
+        assert_eq!(
+            place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page).0,
+            a
+        );
+    }
+
+    #[test]
+    fn a_place_whose_glyphs_meet_a_line_costs_struck() {
+        // Links every 8 units across the page: no letter 16 units tall
+        // fits between two.
+        let mut o = Obstacles::default();
+        o.set_weight(3.0);
+        let p = Point::new(50.0, 50.0);
+        for k in 0..=12 {
+            let y = 8.0 * k as f64 + 2.0;
+            o.segment(Point::new(0.0, y), Point::new(100.0, y));
+        }
+        o.build();
+        let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
+        let (_, cost) = place(p, Vector::new(6.0, 8.0), 4.0, 20.0, &o, &page);
+        assert!(cost >= STRUCK, "{cost}");
     }
 }

@@ -1,10 +1,10 @@
-//! Centre lines broken at letters: as a draughtsman interrupts a centre
-//! line where a letter or dimension text must sit on it, the line of
-//! stroke is written after the labels are placed, with a gap at each
-//! label box it crosses.
+//! Lines broken at letters: as a draughtsman interrupts a centre line or
+//! a dimension line where a letter must sit on it, the line of stroke and
+//! the arcs of angle marks are written after the labels are placed, with a
+//! gap at each label box they cross.
 
 use super::Ink;
-use super::markup::{path, pt};
+use super::markup::{arc_beziers, bezier_d, path, pt};
 use crate::figure::{Pen, Role};
 use crate::geom::{Point, Vector};
 use crate::render::labels::{Bounds, span};
@@ -20,8 +20,9 @@ const GAP_ROOM: f64 = 1.5;
 /// Shortest piece of line worth writing, page units.
 const SHORTEST: f64 = 0.5;
 
-/// The weight of a centre line in the label search: a letter on it costs
-/// little, since the line opens for it, but a clean place still wins.
+/// The weight of a line that opens for letters (a centre line, an angle
+/// mark's arc) in the label search: a letter on it costs little, since
+/// the line opens for it, but a clean place still wins.
 pub(super) const WEIGHT: f64 = 0.25;
 
 /// Whether the item is a centre line that opens for letters: the line of
@@ -30,18 +31,32 @@ pub(super) fn is_centre_line(role: Role, id: &str) -> bool {
     role == Role::Auxiliary && id.starts_with("line-stroke")
 }
 
-/// A centre line waiting for the labels: where its node sits in the
-/// panel's drawing order, and what it is written with.
-pub(super) struct CentreLine {
+/// The course of a line that opens for letters, in page coordinates.
+#[derive(Debug, Clone, Copy)]
+pub(super) enum Course {
+    /// A centre line from one point to another, written dash-dotted.
+    Centre { from: Point, to: Point },
+    /// An angle mark's arc: its centre, radius, and the page angles it
+    /// starts at and turns through (radians).
+    Arc {
+        centre: Point,
+        radius: f64,
+        start: f64,
+        sweep: f64,
+    },
+}
+
+/// A line waiting for the labels: where its node sits in the panel's
+/// drawing order, and what it is written with.
+pub(super) struct OpenLine {
     pub node: usize,
     pub id: String,
     pub role: Role,
     pub pen: Pen,
-    pub from: Point,
-    pub to: Point,
+    pub course: Course,
 }
 
-impl CentreLine {
+impl OpenLine {
     /// The line as a path, one sub-path per piece left between the
     /// `boxes` it crosses.
     pub fn written(&self, boxes: &[Bounds]) -> SvgPath {
@@ -51,12 +66,95 @@ impl CentreLine {
             pen: self.pen,
         };
         let mut d = String::new();
-        for (s, t) in pieces(self.from, self.to, boxes) {
-            let sep = if d.is_empty() { "" } else { " " };
-            let _ = write!(d, "{sep}M{} L{}", pt(s), pt(t));
+        match self.course {
+            Course::Centre { from, to } => {
+                for (s, t) in pieces(from, to, boxes) {
+                    let sep = if d.is_empty() { "" } else { " " };
+                    let _ = write!(d, "{sep}M{} L{}", pt(s), pt(t));
+                }
+                ink.tag(path(d, self.pen)).set("stroke-dasharray", DASH)
+            }
+            Course::Arc {
+                centre,
+                radius,
+                start,
+                sweep,
+            } => {
+                for (t0, t1) in arc_pieces(centre, radius, (start, sweep), boxes) {
+                    let sep = if d.is_empty() { "" } else { " " };
+                    let piece = arc_beziers(centre, radius, start + t0 * sweep, (t1 - t0) * sweep);
+                    let _ = write!(d, "{sep}{}", bezier_d(&piece));
+                }
+                ink.tag(path(d, self.pen))
+            }
         }
-        ink.tag(path(d, self.pen)).set("stroke-dasharray", DASH)
     }
+}
+
+/// Length of the steps along an arc at which [`arc_pieces`] looks for
+/// letters, page units.
+const ARC_STEP: f64 = 0.25;
+
+/// The pieces, as fractions 0..1 of the sweep, of the arc about `centre`
+/// of `radius` from the page angle `start` turning `sweep` that lie
+/// outside every box (each grown by [`GAP_ROOM`]); the whole arc where it
+/// crosses none. Found in steps of [`ARC_STEP`] along the arc.
+fn arc_pieces(
+    centre: Point,
+    radius: f64,
+    (start, sweep): (f64, f64),
+    boxes: &[Bounds],
+) -> Vec<(f64, f64)> {
+    let room = Vector::new(GAP_ROOM, GAP_ROOM);
+    let reach = Vector::new(radius, radius);
+    let near: Vec<Bounds> = boxes
+        .iter()
+        .map(|b| Bounds {
+            min: b.min - room,
+            max: b.max + room,
+        })
+        .filter(|b| {
+            let ring = Bounds {
+                min: centre - reach,
+                max: centre + reach,
+            };
+            b.min.x <= ring.max.x
+                && ring.min.x <= b.max.x
+                && b.min.y <= ring.max.y
+                && ring.min.y <= b.max.y
+        })
+        .collect();
+    let length = (sweep * radius).abs();
+    if near.is_empty() || !(length > 0.0) {
+        return vec![(0.0, 1.0)];
+    }
+    let n = ((length / ARC_STEP).ceil() as usize).clamp(1, 100_000);
+    let outside = |k: usize| {
+        let a = start + sweep * k as f64 / n as f64;
+        let p = centre + Vector::new(a.cos(), a.sin()) * radius;
+        !near
+            .iter()
+            .any(|b| b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y)
+    };
+    let mut out = Vec::new();
+    let mut begin = None;
+    for k in 0..=n {
+        match (outside(k), begin) {
+            (true, None) => begin = Some(k),
+            (false, Some(b)) => {
+                out.push((b, k - 1));
+                begin = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(b) = begin {
+        out.push((b, n));
+    }
+    out.into_iter()
+        .filter(|(b, e)| (e - b) as f64 / n as f64 * length > SHORTEST)
+        .map(|(b, e)| (b as f64 / n as f64, e as f64 / n as f64))
+        .collect()
 }
 
 /// The pieces of the segment `from`–`to` outside every box (each grown by
@@ -96,6 +194,47 @@ fn pieces(from: Point, to: Point, boxes: &[Bounds]) -> Vec<(Point, Point)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn an_arc_opens_where_a_letter_sits_and_only_there() {
+        let c = Point::new(0.0, 0.0);
+        let quarter = std::f64::consts::FRAC_PI_2;
+        // A letter over the middle of a quarter arc of radius 20.
+        let mid = Point::new(
+            20.0 * (0.5f64 * quarter).cos(),
+            20.0 * (0.5f64 * quarter).sin(),
+        );
+        let letter = Bounds::around(mid, Vector::new(3.0, 3.0));
+        let p = arc_pieces(c, 20.0, (0.0, quarter), &[letter]);
+        assert_eq!(p.len(), 2, "{p:?}");
+        assert_eq!(p[0].0, 0.0);
+        assert_eq!(p[1].1, 1.0);
+        // Every point left is outside the grown box, and the gap is about
+        // as long as the grown box is wide along the arc (9 units of 31).
+        for (t0, t1) in &p {
+            for t in [*t0, *t1] {
+                let a = t * quarter;
+                let q = Point::new(20.0 * a.cos(), 20.0 * a.sin());
+                let grown = 3.0 + GAP_ROOM;
+                assert!(
+                    (q - mid).x.abs() > grown - 0.3 || (q - mid).y.abs() > grown - 0.3,
+                    "{q:?}"
+                );
+            }
+        }
+        let gap = (p[1].0 - p[0].1) * quarter * 20.0;
+        assert!(gap > 9.0 && gap < 13.5, "{gap}");
+        // A letter clear of the arc leaves it whole; a clockwise sweep
+        // opens the same way.
+        let clear = Bounds::around(Point::new(0.0, 0.0), Vector::new(3.0, 3.0));
+        assert_eq!(
+            arc_pieces(c, 20.0, (0.0, quarter), &[clear]),
+            vec![(0.0, 1.0)]
+        );
+        let back = arc_pieces(c, 20.0, (quarter, -quarter), &[letter]);
+        assert_eq!(back.len(), 2, "{back:?}");
+        assert!((back[0].1 - (1.0 - p[1].0)).abs() < 0.02, "{back:?} {p:?}");
+    }
 
     #[test]
     fn a_line_opens_where_a_letter_sits_and_only_there() {

@@ -65,16 +65,12 @@ impl PanelWriter<'_> {
         }
         if pts.len() == 2 && !closed && centre::is_centre_line(ink.role, ink.id) {
             // Written once the labels are placed (with gaps for them).
-            self.centre_lines.push(centre::CentreLine {
-                node: usize::MAX,
-                id: ink.id.to_string(),
-                role: ink.role,
-                pen: ink.pen,
-                from: pts[0],
-                to: pts[1],
-            });
-            return Some(Box::new(
-                self.centre_lines[self.centre_lines.len() - 1].written(&[]),
+            return Some(self.open_line(
+                ink,
+                centre::Course::Centre {
+                    from: pts[0],
+                    to: pts[1],
+                },
             ));
         }
         Some(Box::new(ink.tag(path(polyline_d(&pts, closed), ink.pen))))
@@ -159,6 +155,21 @@ impl PanelWriter<'_> {
     }
 
     /// Page Bézier pieces as obstacles, each by seven points along it.
+    /// A line that opens for letters, written whole now and again with
+    /// its gaps once the labels are placed.
+    pub(super) fn open_line(&mut self, ink: &Ink, course: centre::Course) -> Box<dyn Node> {
+        let line = centre::OpenLine {
+            node: usize::MAX,
+            id: ink.id.to_string(),
+            role: ink.role,
+            pen: ink.pen,
+            course,
+        };
+        let node = Box::new(line.written(&[]));
+        self.open_lines.push(line);
+        node
+    }
+
     pub(super) fn bezier_obstacles(&mut self, pieces: &[[Point; 4]]) {
         for b in pieces {
             let pts: Vec<Point> = (0..=6)

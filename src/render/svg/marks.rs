@@ -1,7 +1,8 @@
 //! Marks on a construction: arrows, right-angle marks, angle marks and
 //! dimensions, in page sizes whatever the scale.
 
-use super::markup::{arrow_head, bezier_d, finite, path, polyline_d, unit};
+use super::centre::Course;
+use super::markup::{arc_beziers, arrow_head, finite, path, polyline_d, unit};
 use super::text::{starts_italic, text_half, text_node};
 use super::{Ink, PanelWriter, Pending};
 use crate::figure::{Pen, RichText, TextSize};
@@ -77,8 +78,14 @@ impl PanelWriter<'_> {
         if !finite(&c) {
             return None;
         }
-        let pieces = self.page_arc(c, ANGLE_RADIUS, start, sweep);
-        self.bezier_obstacles(&pieces);
+        let (page_start, page_sweep) = self.page_angles(start, sweep);
+        self.bezier_obstacles(&arc_beziers(c, ANGLE_RADIUS, page_start, page_sweep));
+        let course = Course::Arc {
+            centre: c,
+            radius: ANGLE_RADIUS,
+            start: page_start,
+            sweep: page_sweep,
+        };
         if let Some(text) = text {
             let mid = start + 0.5 * sweep;
             let dir = unit(self.t.apply_vector(Vector::new(mid.cos(), mid.sin())))?;
@@ -91,7 +98,7 @@ impl PanelWriter<'_> {
                 letter: false,
             });
         }
-        Some(Box::new(ink.tag(path(bezier_d(&pieces), ink.pen))))
+        Some(self.open_line(ink, course))
     }
 
     /// A dimension between `from` and `to`: extension lines, the line set
@@ -162,11 +169,11 @@ impl PanelWriter<'_> {
             .unwrap_or(middle)
     }
 
-    /// The page arc of a world arc about a page centre (page radius).
-    fn page_arc(&self, centre: Point, radius: f64, start: f64, sweep: f64) -> Vec<[Point; 4]> {
+    /// The page angles (start, sweep) of an arc from the world angle
+    /// `start` turning `sweep`.
+    fn page_angles(&self, start: f64, sweep: f64) -> (f64, f64) {
         let dir = self.t.apply_vector(Vector::new(start.cos(), start.sin()));
-        let start = dir.y.atan2(dir.x);
-        super::markup::arc_beziers(centre, radius, start, sweep * self.orientation())
+        (dir.y.atan2(dir.x), sweep * self.orientation())
     }
 }
 

@@ -20,7 +20,7 @@ mod notes;
 mod points;
 mod text;
 
-use super::labels::{Bounds, Obstacles, ROOM, place};
+use super::labels::{Bounds, Obstacles, ROOM, STRUCK, place};
 use super::number::{fmt, fmt_coefficient};
 use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
@@ -39,6 +39,7 @@ use text::{ink_box, starts_italic, text_node};
 const REACH: f64 = 1.3;
 
 /// A label waiting to be placed once every line is known.
+#[derive(Clone)]
 struct Pending {
     id: String,
     anchor: Point,
@@ -75,8 +76,9 @@ struct PanelWriter<'a> {
     font: Font,
     obstacles: Obstacles,
     pending: Vec<Pending>,
-    /// Centre lines to write again once the labels are placed.
-    centre_lines: Vec<centre::CentreLine>,
+    /// Lines that open for letters, to write again once the labels are
+    /// placed.
+    open_lines: Vec<centre::OpenLine>,
     /// Hatchings to write again once the labels are placed.
     hatchings: Vec<hatching::Hatching>,
 }
@@ -120,6 +122,8 @@ impl PanelWriter<'_> {
         self.obstacles.set_weight(match item.role {
             // A letter may sit on a centre line, which opens for it.
             role if centre::is_centre_line(role, &item.id) => centre::WEIGHT,
+            // An angle mark's arc opens for a letter too.
+            _ if matches!(item.shape, Shape::AngleMark { .. }) => centre::WEIGHT,
             // Hatching is as bad to letter over as a link.
             Role::Link | Role::Force | Role::Frame => 3.0,
             Role::Construction | Role::Result => 1.5,
@@ -199,7 +203,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
         font,
         obstacles: Obstacles::default(),
         pending: Vec::new(),
-        centre_lines: Vec::new(),
+        open_lines: Vec::new(),
         hatchings: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
@@ -212,9 +216,9 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
     order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
     let mut nodes: Vec<Box<dyn Node>> = Vec::new();
     for (_, item) in &order {
-        let (lines, hatchings) = (w.centre_lines.len(), w.hatchings.len());
+        let (lines, hatchings) = (w.open_lines.len(), w.hatchings.len());
         if let Some(node) = w.item(item) {
-            if let Some(line) = w.centre_lines.get_mut(lines) {
+            if let Some(line) = w.open_lines.get_mut(lines) {
                 line.node = nodes.len();
             }
             if let Some(hatching) = w.hatchings.get_mut(hatchings) {
@@ -224,7 +228,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
         }
     }
     let (texts, boxes) = w.place_labels(room);
-    for line in &w.centre_lines {
+    for line in &w.open_lines {
         if let Some(node) = nodes.get_mut(line.node) {
             *node = Box::new(line.written(&boxes));
         }
@@ -266,33 +270,94 @@ fn clipped(g: Group, panel: &Panel) -> Group {
 impl PanelWriter<'_> {
     /// The pending labels placed in `room` one by one, the points'
     /// letters first, each clear of what is drawn and of the labels
-    /// before it: their text elements and their boxes.
+    /// before it: their text elements and their boxes. Where some label
+    /// could not keep its glyphs clear, the labels are placed once more
+    /// with those first (an earlier label may have taken the one place
+    /// they had), and the better of the two placings is kept: fewer
+    /// struck labels, then less cost.
     fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
-        let colour = self.style.pen(Role::Label).colour;
         self.obstacles.build();
-        let (mut texts, mut boxes) = (Vec::new(), Vec::new());
         let mut pending = std::mem::take(&mut self.pending);
         pending.sort_by_key(|p| !p.letter);
-        for p in pending {
-            let (half, shift) = ink_box(&p.text, p.size, self.font);
-            // The box keeps [`ROOM`] about the glyphs: its reach is that less.
-            let reach = REACH * p.size - ROOM;
-            let centre = place(p.anchor, half, p.gap, reach, &self.obstacles, room);
-            let b = Bounds::around(centre, half);
-            self.obstacles.boxed(b);
-            boxes.push(b);
-            texts.push(text_node(
-                &p.id,
-                centre + shift,
-                &p.text,
-                p.size,
-                colour,
-                "middle",
-                starts_italic(&p.text),
-            ));
-        }
-        (texts, boxes)
+        let start = self.obstacles.mark();
+        let first = self.placing(&pending, room);
+        let struck = |placed: &[Placed]| {
+            let n = placed.iter().filter(|p| p.cost >= STRUCK).count();
+            (n, placed.iter().map(|p| p.cost).sum::<f64>())
+        };
+        let (n, cost) = struck(&first);
+        let chosen = if n == 0 {
+            first
+        } else {
+            self.obstacles.rollback(start);
+            let (lost, kept): (Vec<_>, Vec<_>) = pending
+                .iter()
+                .zip(&first)
+                .partition(|(_, placed)| placed.cost >= STRUCK);
+            let again: Vec<Pending> = lost
+                .into_iter()
+                .chain(kept)
+                .map(|(p, _)| p.clone())
+                .collect();
+            let second = self.placing(&again, room);
+            let (n2, cost2) = struck(&second);
+            if (n2, cost2) < (n, cost) {
+                second
+            } else {
+                first
+            }
+        };
+        let colour = self.style.pen(Role::Label).colour;
+        chosen
+            .into_iter()
+            .map(|p| {
+                let text = text_node(
+                    &p.id,
+                    p.at,
+                    &p.text,
+                    p.size,
+                    colour,
+                    "middle",
+                    starts_italic(&p.text),
+                );
+                (text, p.bounds)
+            })
+            .unzip()
     }
+
+    /// The `pending` labels placed in their order, each box added to the
+    /// obstacles as it is placed.
+    fn placing(&mut self, pending: &[Pending], room: &PageRect) -> Vec<Placed> {
+        pending
+            .iter()
+            .map(|p| {
+                let (half, shift) = ink_box(&p.text, p.size, self.font);
+                // The box keeps [`ROOM`] about the glyphs: its reach is that less.
+                let reach = REACH * p.size - ROOM;
+                let (centre, cost) = place(p.anchor, half, p.gap, reach, &self.obstacles, room);
+                let bounds = Bounds::around(centre, half);
+                self.obstacles.boxed(bounds);
+                Placed {
+                    id: p.id.clone(),
+                    text: p.text.clone(),
+                    size: p.size,
+                    at: centre + shift,
+                    bounds,
+                    cost,
+                }
+            })
+            .collect()
+    }
+}
+
+/// A label placed: where its text goes, its box, and what the place cost.
+struct Placed {
+    id: String,
+    text: RichText,
+    size: f64,
+    at: Point,
+    bounds: Bounds,
+    cost: f64,
 }
 
 /// Where a panel's labels may go: in the panel, or just outside it (into

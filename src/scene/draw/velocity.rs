@@ -9,7 +9,7 @@ use crate::scene::notation::Named::{self, *};
 
 /// How far past its ends the perpendicular through C is produced at
 /// most, page units.
-const PRODUCED: f64 = 12.0;
+const PRODUCED: f64 = 6.0;
 
 /// E: the perpendicular to the stroke through C, AB produced to meet it,
 /// the right angle at C.
