@@ -26,9 +26,10 @@ const SHORTEST: f64 = 0.5;
 pub(super) const WEIGHT: f64 = 0.25;
 
 /// Whether the item is a centre line that opens for letters: the line of
-/// stroke (`line-stroke…`, auxiliary).
+/// stroke (`line-stroke…`, auxiliary), in the main view or a detail
+/// (`detail-line-stroke…`).
 pub(super) fn is_centre_line(role: Role, id: &str) -> bool {
-    role == Role::Auxiliary && id.starts_with("line-stroke")
+    role == Role::Auxiliary && id.trim_start_matches("detail-").starts_with("line-stroke")
 }
 
 /// The course of a line that opens for letters, in page coordinates.
