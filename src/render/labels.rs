@@ -21,7 +21,8 @@ impl Bounds {
         }
     }
 
-    fn inflate(&self, by: f64) -> Self {
+    /// The box grown by `by` on every side.
+    pub(crate) fn inflate(&self, by: f64) -> Self {
         let d = Vector::new(by, by);
         Self {
             min: self.min - d,
@@ -37,11 +38,16 @@ impl Bounds {
 
     /// Whether the two boxes meet, touching included (as the index's
     /// envelope query counts them).
-    fn meets(&self, o: &Bounds) -> bool {
+    pub(crate) fn meets(&self, o: &Bounds) -> bool {
         self.min.x <= o.max.x
             && o.min.x <= self.max.x
             && self.min.y <= o.max.y
             && o.min.y <= self.max.y
+    }
+
+    /// Whether the point `p` lies in the box, edges included.
+    pub(crate) fn holds(&self, p: Point) -> bool {
+        self.min.x <= p.x && p.x <= self.max.x && self.min.y <= p.y && p.y <= self.max.y
     }
 
     fn contains(&self, o: &Bounds) -> bool {
@@ -51,14 +57,10 @@ impl Bounds {
             && o.max.y <= self.max.y
     }
 
-    /// The glyphs of a label's box: the box less its [`ROOM`], save on
-    /// the right, where an italic letter's ink may lean out past its
-    /// advance.
+    /// The glyphs of a label's box: the box less its [`ROOM`] (the box
+    /// is measured on the ink, an italic letter's overhang included).
     fn glyphs(&self) -> Self {
-        Self {
-            min: self.min + Vector::new(ROOM, ROOM),
-            max: self.max - Vector::new(0.0, ROOM),
-        }
+        self.inflate(-ROOM)
     }
 
     fn inside(&self, r: &PageRect) -> bool {

@@ -106,36 +106,21 @@ fn arc_pieces(
     (start, sweep): (f64, f64),
     boxes: &[Bounds],
 ) -> Vec<(f64, f64)> {
-    let room = Vector::new(GAP_ROOM, GAP_ROOM);
-    let reach = Vector::new(radius, radius);
+    let ring = Bounds::around(centre, Vector::new(radius, radius));
     let near: Vec<Bounds> = boxes
         .iter()
-        .map(|b| Bounds {
-            min: b.min - room,
-            max: b.max + room,
-        })
-        .filter(|b| {
-            let ring = Bounds {
-                min: centre - reach,
-                max: centre + reach,
-            };
-            b.min.x <= ring.max.x
-                && ring.min.x <= b.max.x
-                && b.min.y <= ring.max.y
-                && ring.min.y <= b.max.y
-        })
+        .map(|b| b.inflate(GAP_ROOM))
+        .filter(|b| b.meets(&ring))
         .collect();
     let length = (sweep * radius).abs();
-    if near.is_empty() || !(length > 0.0) {
+    if near.is_empty() || length.is_nan() || length <= 0.0 {
         return vec![(0.0, 1.0)];
     }
     let n = ((length / ARC_STEP).ceil() as usize).clamp(1, 100_000);
     let outside = |k: usize| {
         let a = start + sweep * k as f64 / n as f64;
         let p = centre + Vector::new(a.cos(), a.sin()) * radius;
-        !near
-            .iter()
-            .any(|b| b.min.x <= p.x && p.x <= b.max.x && b.min.y <= p.y && p.y <= b.max.y)
+        !near.iter().any(|b| b.holds(p))
     };
     let mut out = Vec::new();
     let mut begin = None;
@@ -166,16 +151,9 @@ fn pieces(from: Point, to: Point, boxes: &[Bounds]) -> Vec<(Point, Point)> {
     if length == 0.0 {
         return vec![(from, to)];
     }
-    let room = Vector::new(GAP_ROOM, GAP_ROOM);
     let mut cuts: Vec<(f64, f64)> = boxes
         .iter()
-        .filter_map(|b| {
-            let grown = Bounds {
-                min: b.min - room,
-                max: b.max + room,
-            };
-            span(from, d, &grown)
-        })
+        .filter_map(|b| span(from, d, &b.inflate(GAP_ROOM)))
         .collect();
     cuts.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut out = Vec::new();
