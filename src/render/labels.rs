@@ -275,18 +275,20 @@ impl Near<'_> {
     /// Length of line inside `b` plus a large weight for boxes it
     /// overlaps; `b` must lie within the search's bounds.
     fn cost(&self, b: &Bounds) -> f64 {
-        self.cost_of(b, 0.0)
+        self.cost_of(b, 0.0, f64::INFINITY)
     }
 
     /// Whether `b` meets a box or a line a letter may not sit on (one of
     /// weight [`OPEN`] or more: not a centre line, which opens for it).
     fn struck(&self, b: &Bounds) -> bool {
-        self.cost_of(b, OPEN) > 0.0
+        self.cost_of(b, OPEN, f64::MIN_POSITIVE) > 0.0
     }
 
     /// [`Near::cost`] of the boxes and of the segments weighing at least
-    /// `least`.
-    fn cost_of(&self, b: &Bounds, least: f64) -> f64 {
+    /// `least`, or some sum not below `limit` once it reaches it (the
+    /// terms are never negative: a caller that only asks whether the cost
+    /// stays under `limit` learns it sooner).
+    fn cost_of(&self, b: &Bounds, least: f64, limit: f64) -> f64 {
         debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
         for (bounds, obstacle) in &self.found {
@@ -301,12 +303,18 @@ impl Near<'_> {
                     }
                     if let Some(length) = length_inside(p, q, b) {
                         cost += w * (4.0 + length);
+                        if cost >= limit {
+                            return cost;
+                        }
                     }
                 }
                 Obstacle::Box(i) => {
                     let a = b.overlap(&self.obstacles.boxes[i].0);
                     if a > 0.0 {
                         cost += 200.0 + a;
+                        if cost >= limit {
+                            return cost;
+                        }
                     }
                 }
             }
@@ -405,7 +413,12 @@ pub(crate) fn place(
             return;
         }
         let b = Bounds::around(centre, half);
-        let mut cost = near.cost(&b.inflate(CLEARANCE));
+        // A candidate whose cost reaches this cannot beat the best.
+        let limit = best.0 - penalty;
+        let mut cost = near.cost_of(&b.inflate(CLEARANCE), 0.0, limit);
+        if cost >= limit {
+            return;
+        }
         if cost > 0.0 && near.struck(&b.glyphs()) {
             // Not only the room about the glyphs is crowded: the glyphs.
             cost += STRUCK;
