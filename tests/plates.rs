@@ -785,3 +785,56 @@ fn a_series_held_over_the_revolution_keeps_one_page_map_and_stays_on_the_page() 
     }
     assert!(report.is_empty(), "off the page:\n{}", report.join("\n"));
 }
+
+/// Ng's Fig. 1 for `(r, l)` at `degrees`, as SVG.
+fn ng_fig_1(r: f64, l: f64, degrees: f64) -> String {
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
+    options.angle = Some(Angle::deg(degrees));
+    let name = FigureName::from_name("ng-fig-1-torque").unwrap();
+    to_svg(&name.figure(&options).unwrap())
+}
+
+#[test]
+fn a_small_crank_gets_a_detail_that_carries_its_marks() {
+    // l = 50 r: the crank is a few units on the page. The detail draws
+    // θ, β, the torque arrow and M's letter; the main view only the links,
+    // pins and forces there.
+    let svg = ng_fig_1(1.0, 50.0, 220.0);
+    let plate = Plate::read(&svg);
+    assert!(
+        plate.panels.iter().any(|p| p.prefix == "detail-"),
+        "no detail"
+    );
+    for id in [
+        "angle-theta",
+        "angle-beta",
+        "torque-T",
+        "label-M",
+        "value-T",
+    ] {
+        assert!(svg.contains(&format!("id=\"detail-{id}\"")), "detail-{id}");
+        assert!(
+            !svg.contains(&format!("id=\"{id}\"")),
+            "{id} in the main view"
+        );
+    }
+    for id in [
+        "point-O",
+        "label-O",
+        "point-C",
+        "force-Fp",
+        "detail-point-O",
+    ] {
+        assert!(svg.contains(&format!("id=\"{id}\"")), "{id}");
+    }
+    assert!(
+        check(&plate, false).is_empty(),
+        "{:?}",
+        check(&plate, false)
+    );
+    // Ng's own rig (its crank about 95 units on the page) needs none.
+    let own = ng_fig_1(25.0, 72.0, 60.0);
+    assert!(!own.contains("panel-detail"));
+    assert!(own.contains("id=\"torque-T\"") && own.contains("id=\"angle-theta\""));
+}

@@ -143,11 +143,7 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
             return None;
         }
         let wanted = (TARGET / extent).max(CORE_TARGET / core_extent);
-        let fits = |m: f64| size.x * scale * m + 2.0 * PAD <= max_width;
-        let magnification = steps()
-            .find(|m| *m >= wanted)
-            .filter(|m| fits(*m))
-            .or_else(|| steps().rev().find(|m| fits(*m)))?;
+        let magnification = magnify(wanted, size.x * scale, max_width)?;
         Some(Detail {
             region: Frame::new(min, max),
             magnification,
@@ -159,6 +155,17 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
         Some(d) if enough(&d) => Some(d),
         _ => fitted(&core),
     }
+}
+
+/// The first magnification step of at least `wanted` at which a region
+/// `width` page units wide in the main view fits `max_width` with its
+/// padding, else the largest step that fits (none if none does).
+fn magnify(wanted: f64, width: f64, max_width: f64) -> Option<f64> {
+    let fits = |m: f64| width * m + 2.0 * PAD <= max_width;
+    steps()
+        .find(|m| *m >= wanted)
+        .filter(|m| fits(*m))
+        .or_else(|| steps().rev().find(|m| fits(*m)))
 }
 
 /// The detail of the crank a torque figure drawn at `scale` needs, if
@@ -178,12 +185,7 @@ fn crank(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
     let c = pose.c();
     let m = ctx.main.e().e();
     let (lo, hi) = bounds(&[c - Vector::new(r, r), c + Vector::new(r, r), m]);
-    let width = (hi.x - lo.x) * scale;
-    let fits = |k: f64| width * k + 2.0 * PAD <= max_width;
-    let magnification = steps()
-        .find(|k| k * radius >= CRANK_TARGET)
-        .filter(|k| fits(*k))
-        .or_else(|| steps().rev().find(|k| fits(*k)))?;
+    let magnification = magnify(CRANK_TARGET / radius, (hi.x - lo.x) * scale, max_width)?;
     Some(Detail {
         region: Frame::new(lo, hi),
         magnification,
