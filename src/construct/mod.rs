@@ -26,6 +26,7 @@ pub use coupler::CouplerPoint;
 pub use instant_centre::InstantCentre;
 pub use kisch::Kisch;
 pub use klein::Klein;
+pub(crate) use reading::check_load;
 pub use reading::{Graphical, Reading, Statics};
 pub use torque::TorqueLine;
 pub use velocity_line::VelocityLine;

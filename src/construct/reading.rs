@@ -142,19 +142,7 @@ impl Reading {
     }
 
     fn statics(pose: &Pose, torque: f64, mu: f64) -> Result<Statics> {
-        if !torque.is_finite() {
-            return Err(Error::NotFinite {
-                name: "torque",
-                value: torque,
-            });
-        }
-        if !(mu >= 0.0 && mu.is_finite()) {
-            return Err(Error::OutOfRange {
-                name: "friction",
-                value: mu,
-                reason: "the coefficient of friction must be a finite number ≥ 0".into(),
-            });
-        }
+        check_load(torque, mu)?;
         let force = statics::slider_force(pose, torque)?;
         let (side_thrust, with_friction) = match force {
             Some(f) => (
@@ -183,6 +171,26 @@ impl Reading {
     pub fn bf(&self) -> f64 {
         (self.f - self.pose.b()).norm()
     }
+}
+
+/// Checks a crank torque and a coefficient of friction once: an error for
+/// a torque that is not finite or a coefficient that is negative or not
+/// finite.
+pub(crate) fn check_load(torque: f64, mu: f64) -> Result<()> {
+    if !torque.is_finite() {
+        return Err(Error::NotFinite {
+            name: "torque",
+            value: torque,
+        });
+    }
+    if !(mu >= 0.0 && mu.is_finite()) {
+        return Err(Error::OutOfRange {
+            name: "friction",
+            value: mu,
+            reason: "the coefficient of friction must be a finite number ≥ 0".into(),
+        });
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -137,19 +137,7 @@ impl Handout {
     /// torque that is not finite or a coefficient that is negative or not
     /// finite.
     pub fn with_torque(mut self, torque: f64, friction: f64) -> Result<Self> {
-        if !torque.is_finite() {
-            return Err(Error::NotFinite {
-                name: "torque",
-                value: torque,
-            });
-        }
-        if !(friction >= 0.0 && friction.is_finite()) {
-            return Err(Error::OutOfRange {
-                name: "friction",
-                value: friction,
-                reason: "the coefficient of friction must be a finite number ≥ 0".into(),
-            });
-        }
+        crate::construct::check_load(torque, friction)?;
         self.torque = Some(torque);
         self.friction = friction;
         Ok(self)
