@@ -16,32 +16,27 @@
 //! shows the first frame: the others are hidden by their attribute.
 
 use super::{Animation, Frame};
-use crate::render::{fmt, root_size};
-use ::svg::Document;
-use ::svg::node::element::{Element, Title};
-use ::svg::node::{Blob, Node, Text};
+use crate::render::{Element, Node, fmt, root_size};
 use serde_json::{Map, Value, json};
 
 /// The document.
 pub(super) fn document(animation: &Animation) -> String {
     let (w, h) = (animation.width(), animation.height());
     let unit = animation.size_unit();
-    let mut doc = Document::new()
+    let mut doc = Element::document()
         .set("width", root_size(w, unit))
         .set("height", root_size(h, unit))
         .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
-        .set("font-family", animation.font_family());
+        .set("font-family", animation.font_family().to_owned());
     if let Some(title) = animation.title() {
-        doc = doc.add(Title::new(title));
+        doc = doc.add(Element::new("title").add(Node::Text(title.to_owned())));
     }
     doc = doc.add(metadata(animation));
     let count = animation.frames().len();
     for (k, frame) in animation.frames().iter().enumerate() {
         doc = doc.add(group(frame, k, count, animation.period()));
     }
-    let mut s = doc.to_string();
-    s.push('\n');
-    s
+    doc.to_document()
 }
 
 /// Frame `k` of `count`: its group, hidden but for the first, and the
@@ -49,13 +44,13 @@ pub(super) fn document(animation: &Animation) -> String {
 fn group(frame: &Frame, k: usize, count: usize, period: f64) -> Element {
     let prefix = Frame::prefix(k);
     let mut g = Element::new("g");
-    g.assign("id", prefix.trim_end_matches('-'));
+    g.assign("id", prefix.trim_end_matches('-').to_owned());
     g.assign("class", "animation-frame");
     g.assign("data-angle-deg", fmt(frame.angle().degrees()));
     if k > 0 {
         g.assign("visibility", "hidden");
     }
-    g.append(Blob::new(frame.body(&prefix)));
+    g.append(Node::Block(frame.body(&prefix)));
     g.append(turn(k, count, period));
     g
 }
@@ -121,7 +116,7 @@ fn metadata(animation: &Animation) -> Element {
     );
     let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
     let mut element = Element::new("metadata");
-    element.append(Text::new(json));
+    element.append(Node::Text(json));
     element
 }
 

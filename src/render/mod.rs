@@ -1,7 +1,8 @@
-//! The renderer: a [`crate::figure::Figure`] to SVG text (the `svg`
-//! crate), SVG to PNG (resvg, with the `png` feature) and to vector PDF
+//! The renderer: a [`crate::figure::Figure`] to SVG text (its own small
+//! element writer), SVG to PNG (resvg, with the `png` feature) and to vector PDF
 //! (with the `pdf` feature); files are written whole or not at all.
 
+mod element;
 #[cfg(any(feature = "png", feature = "pdf"))]
 mod fonts;
 mod format;
@@ -17,6 +18,7 @@ mod sizes;
 mod svg;
 
 pub use crate::error::plain;
+pub(crate) use element::{Element, Node};
 #[cfg(any(feature = "png", feature = "pdf"))]
 pub use fonts::font_database;
 pub use format::FileFormat;

@@ -7,9 +7,9 @@ use super::Ink;
 use super::markup::{arc_beziers, bezier_d, path, pt};
 use crate::figure::{Pen, Role};
 use crate::geom::{Point, Vector};
+use crate::render::Element;
 use crate::render::labels::{Bounds, span};
 use std::fmt::Write as _;
-use svg::node::element::Path as SvgPath;
 
 /// The dash pattern of a centre line: long dash, gap, dot, gap.
 pub(super) const DASH: &str = "14 3 2 3";
@@ -60,7 +60,7 @@ pub(super) struct OpenLine {
 impl OpenLine {
     /// The line as a path, one sub-path per piece left between the
     /// `boxes` it crosses.
-    pub fn written(&self, boxes: &[Bounds]) -> SvgPath {
+    pub fn written(&self, boxes: &[Bounds]) -> Element {
         let ink = Ink {
             id: &self.id,
             role: self.role,

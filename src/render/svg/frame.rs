@@ -7,17 +7,16 @@ use super::{Ink, PanelWriter};
 use crate::figure::Pen;
 use crate::figure::TextSize;
 use crate::geom::{Point, Vector};
+use crate::render::Element;
 use crate::render::labels::Bounds;
 use crate::render::sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
 use std::fmt::Write as _;
-use svg::node::Node;
-use svg::node::element::Group;
 
 impl PanelWriter<'_> {
     /// The crank's bearing: a pedestal (a triangle on the paper) below the
     /// shaft's centre, on a hatched foot. Kept clear by labels: the
     /// triangle's edges and the foot with its hatching.
-    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point) -> Option<Box<dyn Node>> {
+    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point) -> Option<Element> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
@@ -41,15 +40,15 @@ impl PanelWriter<'_> {
             max: c + Vector::new(base, h + 6.0),
         });
         let pen = ink.pen;
-        Some(Box::new(
-            ink.tag(Group::new())
+        Some(
+            ink.tag(Element::new("g"))
                 .add(path(polyline_d(&tri, true), pen).set("fill", self.style.paper()))
                 .add(path(polyline_d(&foot, false), pen))
                 .add(path(
                     hatch.trim_end().to_string(),
                     Pen { width: 0.7, ..pen },
                 )),
-        ))
+        )
     }
 
     /// Ground hatching: short slanted strokes along `from`–`to` on the
@@ -60,7 +59,7 @@ impl PanelWriter<'_> {
         from: Point,
         to: Point,
         side: Vector,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let (a, b) = (self.p(from), self.p(to));
         let t = unit(b - a)?;
         let n = unit(self.t.apply_vector(side))?;
@@ -90,7 +89,7 @@ impl PanelWriter<'_> {
             },
             strokes,
         };
-        let node = hatching.written(&[]).map(|p| Box::new(p) as Box<dyn Node>);
+        let node = hatching.written(&[]);
         self.hatchings.push(hatching);
         node
     }
@@ -100,7 +99,7 @@ impl PanelWriter<'_> {
     /// semicircle ends at A) stay visible. No letter goes inside it, save
     /// its pin's where it is enlarged (in a detail) so much that the
     /// letter no longer reaches past it: then inside, beside the pin.
-    pub(super) fn block(&mut self, ink: &Ink, points: &[Point]) -> Option<Box<dyn Node>> {
+    pub(super) fn block(&mut self, ink: &Ink, points: &[Point]) -> Option<Element> {
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 3 || !pts.iter().all(finite) {
             return None;
@@ -118,7 +117,7 @@ impl PanelWriter<'_> {
         } else {
             self.obstacles.boxed(b);
         }
-        Some(Box::new(
+        Some(
             ink.tag(path(
                 polyline_d(&pts, true),
                 Pen {
@@ -127,6 +126,6 @@ impl PanelWriter<'_> {
                 },
             ))
             .set("fill", "none"),
-        ))
+        )
     }
 }

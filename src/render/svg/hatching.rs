@@ -8,9 +8,9 @@ use super::Ink;
 use super::markup::{path, pt};
 use crate::figure::{Pen, Role};
 use crate::geom::{Point, Vector};
+use crate::render::Element;
 use crate::render::labels::{Bounds, span};
 use std::fmt::Write as _;
-use svg::node::element::Path as SvgPath;
 
 /// Room kept between a letter's box and the strokes left, page units.
 const ROOM: f64 = 1.0;
@@ -28,7 +28,7 @@ pub(super) struct Hatching {
 impl Hatching {
     /// The strokes that meet none of the `boxes` (each grown by [`ROOM`]),
     /// as one path; `None` when every stroke is covered.
-    pub fn written(&self, boxes: &[Bounds]) -> Option<SvgPath> {
+    pub fn written(&self, boxes: &[Bounds]) -> Option<Element> {
         let ink = Ink {
             id: &self.id,
             role: self.role,

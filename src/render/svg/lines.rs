@@ -7,14 +7,13 @@ use super::markup::{
 use super::{Ink, PanelWriter, centre};
 use crate::figure::{Path, PathSegment};
 use crate::geom::Point;
+use crate::render::Element;
 use crate::render::number::fmt;
 use std::fmt::Write as _;
-use svg::node::Node;
-use svg::node::element::{Circle, Group, Path as SvgPath};
 
 impl PanelWriter<'_> {
     /// A fitted path of lines and cubic Béziers.
-    pub(super) fn fitted_path(&mut self, ink: &Ink, p: &Path) -> Option<Box<dyn Node>> {
+    pub(super) fn fitted_path(&mut self, ink: &Ink, p: &Path) -> Option<Element> {
         let mut d = String::new();
         let mut last = Point::origin();
         let mut pieces = Vec::new();
@@ -44,7 +43,7 @@ impl PanelWriter<'_> {
             return None;
         }
         self.bezier_obstacles(&pieces);
-        Some(Box::new(ink.tag(path(d, ink.pen))))
+        Some(ink.tag(path(d, ink.pen)))
     }
 
     /// A polyline, open or closed. The line of stroke (`line-stroke…`,
@@ -54,7 +53,7 @@ impl PanelWriter<'_> {
         ink: &Ink,
         points: &[Point],
         closed: bool,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 2 || !pts.iter().all(finite) {
             return None;
@@ -73,34 +72,29 @@ impl PanelWriter<'_> {
                 },
             ));
         }
-        Some(Box::new(ink.tag(path(polyline_d(&pts, closed), ink.pen))))
+        Some(ink.tag(path(polyline_d(&pts, closed), ink.pen)))
     }
 
     /// A tinted area without outline, where the style tints (the similar
     /// triangles of the handout); not an obstacle.
-    pub(super) fn region(&mut self, ink: &Ink, points: &[Point]) -> Option<Box<dyn Node>> {
+    pub(super) fn region(&mut self, ink: &Ink, points: &[Point]) -> Option<Element> {
         let (colour, opacity) = self.style.region()?;
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 3 || !pts.iter().all(finite) {
             return None;
         }
-        Some(Box::new(
-            ink.tag(SvgPath::new())
+        Some(
+            ink.tag(Element::new("path"))
                 .set("d", polyline_d(&pts, true))
                 .set("fill", colour)
                 .set("fill-opacity", fmt(opacity))
                 .set("stroke", "none"),
-        ))
+        )
     }
 
     /// A full circle: a `<circle>` where the panel's map is a similarity,
     /// else its Bézier image.
-    pub(super) fn circle(
-        &mut self,
-        ink: &Ink,
-        centre: Point,
-        radius: f64,
-    ) -> Option<Box<dyn Node>> {
+    pub(super) fn circle(&mut self, ink: &Ink, centre: Point, radius: f64) -> Option<Element> {
         let c = self.p(centre);
         let pieces: Vec<[Point; 4]> = arc_beziers(centre, radius, 0.0, 2.0 * std::f64::consts::PI)
             .into_iter()
@@ -112,14 +106,14 @@ impl PanelWriter<'_> {
         }
         let [a, b, cc, d, _, _] = self.t.coefficients();
         if (a * a + b * b - cc * cc - d * d).abs() <= 1e-9 * (a * a + b * b) {
-            Some(Box::new(
-                ink.tag(stroke(Circle::new(), ink.pen))
+            Some(
+                ink.tag(stroke(Element::new("circle"), ink.pen))
                     .set("cx", fmt(c.x))
                     .set("cy", fmt(c.y))
                     .set("r", fmt(radius * self.t.scale())),
-            ))
+            )
         } else {
-            Some(Box::new(ink.tag(path(bezier_d(&pieces), ink.pen))))
+            Some(ink.tag(path(bezier_d(&pieces), ink.pen)))
         }
     }
 
@@ -132,7 +126,7 @@ impl PanelWriter<'_> {
         radius: f64,
         (start, sweep): (f64, f64),
         arrow: bool,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let pieces: Vec<[Point; 4]> = arc_beziers(centre, radius, start, sweep)
             .into_iter()
             .map(|b| b.map(|p| self.p(p)))
@@ -143,21 +137,21 @@ impl PanelWriter<'_> {
         self.bezier_obstacles(&pieces);
         let line = path(bezier_d(&pieces), ink.pen);
         if !arrow {
-            return Some(Box::new(ink.tag(line)));
+            return Some(ink.tag(line));
         }
         let last = pieces.last()?;
         let u = unit(last[3] - last[2])?;
-        Some(Box::new(ink.tag(Group::new()).add(line).add(arrow_head(
-            last[3],
-            u,
-            ink.pen.colour,
-        ))))
+        Some(
+            ink.tag(Element::new("g"))
+                .add(line)
+                .add(arrow_head(last[3], u, ink.pen.colour)),
+        )
     }
 
     /// Page Bézier pieces as obstacles, each by seven points along it.
     /// A line that opens for letters, written whole now and again with
     /// its gaps once the labels are placed.
-    pub(super) fn open_line(&mut self, ink: &Ink, course: centre::Course) -> Box<dyn Node> {
+    pub(super) fn open_line(&mut self, ink: &Ink, course: centre::Course) -> Element {
         let line = centre::OpenLine {
             node: usize::MAX,
             id: ink.id.to_string(),
@@ -165,7 +159,7 @@ impl PanelWriter<'_> {
             pen: ink.pen,
             course,
         };
-        let node = Box::new(line.written(&[]));
+        let node = line.written(&[]);
         self.open_lines.push(line);
         node
     }

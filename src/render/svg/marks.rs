@@ -7,19 +7,18 @@ use super::text::{starts_italic, text_half, text_node};
 use super::{Ink, PanelWriter, Pending};
 use crate::figure::{Pen, RichText, TextSize};
 use crate::geom::{Point, Vector};
+use crate::render::Element;
 use crate::render::labels::Bounds;
 use crate::render::sizes::{ANGLE_RADIUS, ARROW_LENGTH, RIGHT_ANGLE};
 
 /// Step by which a dimension's text slides along its line off a line
 /// drawn through it, page units.
 const SLIDE: f64 = 4.0;
-use svg::node::Node;
-use svg::node::element::Group;
 
 impl PanelWriter<'_> {
     /// A straight arrow with its head at `to`; labels keep off the shaft
     /// and the head.
-    pub(super) fn arrow(&mut self, ink: &Ink, from: Point, to: Point) -> Option<Box<dyn Node>> {
+    pub(super) fn arrow(&mut self, ink: &Ink, from: Point, to: Point) -> Option<Element> {
         let (a, b) = (self.p(from), self.p(to));
         if !finite(&a) || !finite(&b) {
             return None;
@@ -31,11 +30,11 @@ impl PanelWriter<'_> {
         self.obstacles
             .boxed(Bounds::around(b - u * half, Vector::new(half, half)));
         let shaft = polyline_d(&[a, b - u * (0.6 * ARROW_LENGTH)], false);
-        Some(Box::new(
-            ink.tag(Group::new())
+        Some(
+            ink.tag(Element::new("g"))
                 .add(path(shaft, ink.pen))
                 .add(arrow_head(b, u, ink.pen.colour)),
-        ))
+        )
     }
 
     /// A right-angle mark at `vertex` between the world directions `u`
@@ -46,7 +45,7 @@ impl PanelWriter<'_> {
         vertex: Point,
         u: Vector,
         v: Vector,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let c = self.p(vertex);
         let u = unit(self.t.apply_vector(u))?;
         let v = unit(self.t.apply_vector(v))?;
@@ -61,7 +60,7 @@ impl PanelWriter<'_> {
             dash: None,
             ..ink.pen
         };
-        Some(Box::new(ink.tag(path(polyline_d(&pts, false), pen))))
+        Some(ink.tag(path(polyline_d(&pts, false), pen)))
     }
 
     /// An angle mark: an arc of page radius [`ANGLE_RADIUS`] about
@@ -73,7 +72,7 @@ impl PanelWriter<'_> {
         vertex: Point,
         (start, sweep): (f64, f64),
         text: Option<&RichText>,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let c = self.p(vertex);
         if !finite(&c) {
             return None;
@@ -111,7 +110,7 @@ impl PanelWriter<'_> {
         side: Vector,
         offset: f64,
         text: &RichText,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let pen = ink.pen;
         let (a, b) = (self.p(from), self.p(to));
         let n = unit(self.t.apply_vector(side))?;
@@ -124,8 +123,8 @@ impl PanelWriter<'_> {
         self.obstacles.boxed(Bounds::around(centre, half));
         self.obstacles.segment(a2, b2);
         let thin = Pen { width: 0.5, ..pen };
-        Some(Box::new(
-            ink.tag(Group::new())
+        Some(
+            ink.tag(Element::new("g"))
                 .add(path(ext(a, a2), thin))
                 .add(path(ext(b, b2), thin))
                 .add(path(polyline_d(&[a2 + u * 2.0, b2 - u * 2.0], false), pen))
@@ -140,7 +139,7 @@ impl PanelWriter<'_> {
                     "middle",
                     starts_italic(text),
                 )),
-        ))
+        )
     }
 
     /// The centre of a dimension's text (half-size `half`) beside its

@@ -3,42 +3,11 @@
 
 use crate::figure::Pen;
 use crate::geom::{Point, Vector};
+use crate::render::Element;
 use crate::render::number::{OnGrid, fmt};
 use crate::render::sizes::{ARROW_HALF_WIDTH, ARROW_LENGTH};
-use std::collections::hash_map::DefaultHasher;
 use std::fmt as stdfmt;
 use std::fmt::Write as _;
-use std::hash::Hash;
-use svg::node::element::Path as SvgPath;
-use svg::node::{Node, NodeDefaultHash};
-
-/// Markup written as is inside a `<text>` (runs as `<tspan>`s), without
-/// the line breaks the `svg` crate puts between child elements, which
-/// would show as spaces.
-#[derive(Debug, Clone)]
-pub(super) struct Raw(pub String);
-
-impl stdfmt::Display for Raw {
-    fn fmt(&self, f: &mut stdfmt::Formatter<'_>) -> stdfmt::Result {
-        f.write_str(&self.0)
-    }
-}
-
-impl Node for Raw {
-    fn get_name(&self) -> &str {
-        "raw"
-    }
-
-    fn is_bare(&self) -> bool {
-        true
-    }
-}
-
-impl NodeDefaultHash for Raw {
-    fn default_hash(&self, state: &mut DefaultHasher) {
-        self.0.hash(state);
-    }
-}
 
 pub(super) fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
@@ -118,7 +87,7 @@ pub(super) fn polyline_d(points: &[Point], closed: bool) -> String {
 }
 
 /// `node` stroked with `pen`, unfilled.
-pub(super) fn stroke<T: Node>(mut node: T, pen: Pen) -> T {
+pub(super) fn stroke(mut node: Element, pen: Pen) -> Element {
     node.assign("stroke", pen.colour);
     node.assign("stroke-width", fmt(pen.width));
     node.assign("fill", "none");
@@ -129,14 +98,14 @@ pub(super) fn stroke<T: Node>(mut node: T, pen: Pen) -> T {
 }
 
 /// A stroked path with round caps and joins.
-pub(super) fn path(d: String, pen: Pen) -> SvgPath {
-    stroke(SvgPath::new().set("d", d), pen)
+pub(super) fn path(d: String, pen: Pen) -> Element {
+    stroke(Element::new("path").set("d", d), pen)
         .set("stroke-linecap", "round")
         .set("stroke-linejoin", "round")
 }
 
 /// A filled arrowhead with its tip at `tip`, pointing along the unit `u`.
-pub(super) fn arrow_head(tip: Point, u: Vector, colour: &'static str) -> SvgPath {
+pub(super) fn arrow_head(tip: Point, u: Vector, colour: &'static str) -> Element {
     let n = Vector::new(-u.y, u.x);
     let back = tip - u * ARROW_LENGTH;
     let pts = [
@@ -144,7 +113,7 @@ pub(super) fn arrow_head(tip: Point, u: Vector, colour: &'static str) -> SvgPath
         back + n * ARROW_HALF_WIDTH,
         back - n * ARROW_HALF_WIDTH,
     ];
-    SvgPath::new()
+    Element::new("path")
         .set("d", polyline_d(&pts, true))
         .set("fill", colour)
         .set("stroke", "none")

@@ -27,10 +27,8 @@ use crate::figure::{
 };
 use crate::figure::{Pen, Style};
 use crate::geom::Point;
+use crate::render::{Element, Node};
 use serde_json::{Value, json};
-use svg::Document;
-use svg::node::Node;
-use svg::node::element::{ClipPath, Definitions, Element, Group, Rectangle, Title};
 use text::{ink_box, starts_italic, text_node};
 
 /// The farthest a label's glyphs may be put from its anchor, in font
@@ -61,8 +59,8 @@ struct Ink<'a> {
 
 impl Ink<'_> {
     /// `node` with the item's id and class.
-    fn tag<T: Node>(&self, mut node: T) -> T {
-        node.assign("id", self.id);
+    fn tag(&self, mut node: Element) -> Element {
+        node.assign("id", self.id.to_owned());
         node.assign("class", self.role.name());
         node
     }
@@ -113,7 +111,7 @@ impl PanelWriter<'_> {
 
     /// The item drawn by its symbol's function; `None` where nothing is
     /// written now (labels, placed later) or the item is off the map.
-    fn item(&mut self, item: &Item) -> Option<Box<dyn Node>> {
+    fn item(&mut self, item: &Item) -> Option<Element> {
         let ink = Ink {
             id: &item.id,
             role: item.role,
@@ -190,11 +188,11 @@ fn draw_order(role: Role, shape: &Shape) -> (usize, usize) {
 /// A panel as a `<g>` with its map in `data-page-from-world`: its items in
 /// drawing order, clipped to its rectangle if it asks, then its labels
 /// placed in `room` clear of everything drawn.
-fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Group {
+fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Element {
     let t = panel.transform();
     let coefficients = t.coefficients().map(fmt_coefficient).join(" ");
-    let mut g = Group::new()
-        .set("id", panel.id())
+    let mut g = Element::new("g")
+        .set("id", panel.id().to_owned())
         .set("data-page-from-world", coefficients);
     let mut w = PanelWriter {
         t,
@@ -214,7 +212,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
         .filter(|(_, item)| clip.is_none_or(|r| cull::may_show(t, &r, &item.shape)))
         .collect();
     order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
-    let mut nodes: Vec<Box<dyn Node>> = Vec::new();
+    let mut nodes: Vec<Element> = Vec::new();
     for (_, item) in &order {
         let (lines, hatchings) = (w.open_lines.len(), w.hatchings.len());
         if let Some(node) = w.item(item) {
@@ -230,15 +228,15 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
     let (texts, boxes) = w.place_labels(room);
     for line in &w.open_lines {
         if let Some(node) = nodes.get_mut(line.node) {
-            *node = Box::new(line.written(&boxes));
+            *node = line.written(&boxes);
         }
     }
     // A hatching every stroke of which lies under letters is left empty.
     for hatching in &w.hatchings {
         if let Some(node) = nodes.get_mut(hatching.node) {
             *node = match hatching.written(&boxes) {
-                Some(p) => Box::new(p),
-                None => Box::new(Group::new()),
+                Some(p) => p,
+                None => Element::new("g"),
             };
         }
     }
@@ -255,15 +253,15 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Grou
 }
 
 /// `g` clipped to the panel's rectangle (a detail panel).
-fn clipped(g: Group, panel: &Panel) -> Group {
+fn clipped(g: Element, panel: &Panel) -> Element {
     let r = panel.rect();
     let clip = format!("clip-{}", panel.id());
-    let rect = Rectangle::new()
+    let rect = Element::new("rect")
         .set("x", fmt(r.x))
         .set("y", fmt(r.y))
         .set("width", fmt(r.width))
         .set("height", fmt(r.height));
-    g.add(Definitions::new().add(ClipPath::new().set("id", clip.clone()).add(rect)))
+    g.add(Element::new("defs").add(Element::new("clipPath").set("id", clip.clone()).add(rect)))
         .set("clip-path", format!("url(#{clip})"))
 }
 
@@ -408,7 +406,7 @@ fn metadata(figure: &Figure) -> Element {
     meta.insert("panels".into(), panels.collect());
     let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
     let mut element = Element::new("metadata");
-    element.append(svg::node::Text::new(json));
+    element.append(Node::Text(json));
     element
 }
 
@@ -432,27 +430,25 @@ pub fn to_svg(figure: &Figure) -> String {
     let unit = figure.size_unit();
     // Labels stay a little inside the page.
     let page = PageRect::new(2.0, 2.0, w - 4.0, h - 4.0);
-    let paper = Rectangle::new()
+    let paper = Element::new("rect")
         .set("id", "paper")
-        .set("x", 0)
-        .set("y", 0)
+        .set("x", "0")
+        .set("y", "0")
         .set("width", fmt(w))
         .set("height", fmt(h))
         .set("fill", style.paper());
-    let mut doc = Document::new()
+    let mut doc = Element::document()
         .set("width", root_size(w, unit))
         .set("height", root_size(h, unit))
         .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
         .set("font-family", figure.font().css_family());
     if let Some(title) = figure.title() {
-        doc = doc.add(Title::new(title.rich().plain()));
+        doc = doc.add(Element::new("title").add(Node::Text(title.rich().plain())));
     }
     let mut doc = doc.add(metadata(figure)).add(paper);
     for panel in figure.panels() {
         let room = label_room(panel, &page);
         doc = doc.add(panel_group(panel, style, figure.font(), &room));
     }
-    let mut s = doc.to_string();
-    s.push('\n');
-    s
+    doc.to_document()
 }

@@ -7,10 +7,9 @@ use super::text::{BASELINE, starts_italic, text_half, text_node};
 use super::{Ink, PanelWriter, Pending};
 use crate::figure::{Align, RichText, Role, TextSize};
 use crate::geom::{Point, Vector};
+use crate::render::Element;
 use crate::render::labels::Bounds;
 use crate::render::sizes::{LETTER_GAP, NOTE_LINE, NOTE_SIZE};
-use svg::node::Node;
-use svg::node::element::Group;
 
 impl PanelWriter<'_> {
     /// A label near `anchor`: kept to be placed after every line of the
@@ -21,7 +20,7 @@ impl PanelWriter<'_> {
         anchor: Point,
         text: &RichText,
         size: TextSize,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let a = self.p(anchor);
         if !finite(&a) {
             return None;
@@ -50,7 +49,7 @@ impl PanelWriter<'_> {
         text: &RichText,
         align: Align,
         size: TextSize,
-    ) -> Option<Box<dyn Node>> {
+    ) -> Option<Element> {
         let c = self.p(at) + offset;
         if !finite(&c) {
             return None;
@@ -63,7 +62,7 @@ impl PanelWriter<'_> {
             Align::End => ("end", c - Vector::new(half.x, 0.0)),
         };
         self.obstacles.boxed(Bounds::around(middle, half));
-        Some(Box::new(text_node(
+        Some(text_node(
             ink.id,
             c,
             text,
@@ -71,19 +70,14 @@ impl PanelWriter<'_> {
             self.style.pen(Role::Label).colour,
             anchor,
             starts_italic(text),
-        )))
+        ))
     }
 
     /// Lines of a note from the page point `corner` (top left), all in one
     /// size, small enough for the longest to fit before the page's right
     /// edge.
-    pub(super) fn note(
-        &mut self,
-        ink: &Ink,
-        corner: Point,
-        lines: &[RichText],
-    ) -> Option<Box<dyn Node>> {
-        let mut g = ink.tag(Group::new());
+    pub(super) fn note(&mut self, ink: &Ink, corner: Point, lines: &[RichText]) -> Option<Element> {
+        let mut g = ink.tag(Element::new("g"));
         let colour = self.style.pen(Role::Label).colour;
         let size = self.note_size(corner, lines);
         for (i, line) in lines.iter().enumerate() {
@@ -103,7 +97,7 @@ impl PanelWriter<'_> {
                 false,
             ));
         }
-        Some(Box::new(g))
+        Some(g)
     }
 
     /// The size of a note's lines: [`NOTE_SIZE`], or less where the

@@ -5,16 +5,15 @@ use super::markup::{finite, path, polyline_d, stroke};
 use super::{Ink, PanelWriter};
 use crate::figure::{Pen, Symbol};
 use crate::geom::{Point, Vector};
+use crate::render::Element;
 use crate::render::labels::Bounds;
 use crate::render::number::fmt;
 use crate::render::sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
-use svg::node::Node;
-use svg::node::element::Circle;
 
 impl PanelWriter<'_> {
     /// A disc of page `radius` about a world point (pins and dots), kept
     /// clear by the labels; `None` if the point does not map to a finite one.
-    fn disc(&mut self, ink: &Ink, centre: Point, radius: f64) -> Option<Circle> {
+    fn disc(&mut self, ink: &Ink, centre: Point, radius: f64) -> Option<Element> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
@@ -22,7 +21,7 @@ impl PanelWriter<'_> {
         self.obstacles
             .boxed(Bounds::around(c, Vector::new(radius, radius)));
         Some(
-            ink.tag(Circle::new())
+            ink.tag(Element::new("circle"))
                 .set("cx", fmt(c.x))
                 .set("cy", fmt(c.y))
                 .set("r", fmt(radius)),
@@ -30,31 +29,24 @@ impl PanelWriter<'_> {
     }
 
     /// A pin joint: a small open circle on the paper.
-    pub(super) fn pin(&mut self, ink: &Ink, centre: Point) -> Option<Box<dyn Node>> {
+    pub(super) fn pin(&mut self, ink: &Ink, centre: Point) -> Option<Element> {
         let paper = self.style.paper();
         let disc = self.disc(ink, centre, PIN_RADIUS)?;
-        Some(Box::new(
+        Some(
             disc.set("fill", paper)
                 .set("stroke", ink.pen.colour)
                 .set("stroke-width", fmt(1.3)),
-        ))
+        )
     }
 
     /// A constructed point: a small filled dot.
-    pub(super) fn dot(&mut self, ink: &Ink, centre: Point) -> Option<Box<dyn Node>> {
+    pub(super) fn dot(&mut self, ink: &Ink, centre: Point) -> Option<Element> {
         let disc = self.disc(ink, centre, DOT_RADIUS)?;
-        Some(Box::new(
-            disc.set("fill", ink.pen.colour).set("stroke", "none"),
-        ))
+        Some(disc.set("fill", ink.pen.colour).set("stroke", "none"))
     }
 
     /// A data point: its symbol at a fixed page size, full lines.
-    pub(super) fn marker(
-        &mut self,
-        ink: &Ink,
-        centre: Point,
-        symbol: Symbol,
-    ) -> Option<Box<dyn Node>> {
+    pub(super) fn marker(&mut self, ink: &Ink, centre: Point, symbol: Symbol) -> Option<Element> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
@@ -72,20 +64,20 @@ impl PanelWriter<'_> {
             } else {
                 self.style.paper()
             };
-            return Some(Box::new(
-                ink.tag(stroke(Circle::new(), pen))
+            return Some(
+                ink.tag(stroke(Element::new("circle"), pen))
                     .set("cx", fmt(c.x))
                     .set("cy", fmt(c.y))
                     .set("r", fmt(r))
                     .set("fill", fill),
-            ));
+            );
         };
         let fill = if symbol == Symbol::Cross {
             "none"
         } else {
             self.style.paper()
         };
-        Some(Box::new(ink.tag(path(d, pen)).set("fill", fill)))
+        Some(ink.tag(path(d, pen)).set("fill", fill))
     }
 }
 

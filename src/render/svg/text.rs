@@ -1,14 +1,13 @@
 //! Text: `<text>` elements of rich runs, and the boxes that keep labels
 //! and notes clear of each other.
 
-use super::markup::{Raw, escape};
+use super::markup::escape;
 use crate::figure::{Font, RichText, Role, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
 use crate::geom::{Point, Vector};
 use crate::render::labels::ROOM;
 use crate::render::number::fmt;
+use crate::render::{Element, Node};
 use std::fmt::Write as _;
-use svg::node::Node;
-use svg::node::element::Element;
 
 /// Where [`text_node`] puts the baseline: this fraction of the size below
 /// the text's centre (half the cap height, near enough).
@@ -115,12 +114,12 @@ pub(super) fn text_node(
     centre: Point,
     text: &RichText,
     size: f64,
-    colour: &str,
-    anchor: &str,
+    colour: &'static str,
+    anchor: &'static str,
     italic: bool,
 ) -> Element {
     let mut t = Element::new("text");
-    t.assign("id", id);
+    t.assign("id", id.to_owned());
     t.assign("class", Role::Label.name());
     t.assign("x", fmt(centre.x));
     t.assign("y", fmt(centre.y + BASELINE * size));
@@ -128,6 +127,6 @@ pub(super) fn text_node(
     t.assign("fill", colour);
     t.assign("text-anchor", anchor);
     t.assign("font-style", if italic { "italic" } else { "normal" });
-    t.append(Raw(runs_markup(text, size, italic)));
+    t.append(Node::Raw(runs_markup(text, size, italic)));
     t
 }
