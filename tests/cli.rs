@@ -210,6 +210,11 @@ fn bad_input_exits_non_zero_with_one_clear_line() {
             &["analyze", "--torque", "1", "--friction", "-1"],
             "friction",
         ),
+        // Friction acts only with a load on the crank.
+        (
+            &["analyze", "--friction", "0.2"],
+            "required arguments were not provided: --torque",
+        ),
         (&["table", "obliquity", "--n", "0.5"], "n = l/r > 1"),
         (&["check", "--samples", "0"], "samples"),
         // Regression: products of such lengths overflowed into a panic.

@@ -1,6 +1,6 @@
 //! `slider-crank analyze`: exact and graphical values at one or more angles.
 
-use super::args::{AngleSpec, MechanismArgs, SpeedArgs, UnitArgs};
+use super::args::{AngleSpec, LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
 use serde_json::{Value, json};
@@ -27,21 +27,8 @@ pub struct AnalyzeArgs {
     pub angle: String,
     #[command(flatten)]
     pub speed: SpeedArgs,
-    /// Crank torque T, counter-clockwise positive, in force × the length
-    /// unit (FORCE·UNIT, N·mm for lengths in mm): adds the statics of Ng
-    /// eq. 6–11 (OM, slider force, side thrust, friction, transmission
-    /// angle), the forces in that force unit
-    #[arg(long, allow_negative_numbers = true, value_name = "T")]
-    pub torque: Option<f64>,
-    /// Coefficient of friction μ ≥ 0 of the slider in its guides (used
-    /// with --torque)
-    #[arg(
-        long,
-        allow_negative_numbers = true,
-        value_name = "MU",
-        default_value_t = 0.0
-    )]
-    pub friction: f64,
+    #[command(flatten)]
+    pub load: LoadArgs,
     /// Print JSON (schema in docs/design.md §4): one object, or an array
     /// for a list or range of angles
     #[arg(long)]
@@ -276,7 +263,7 @@ fn reports<'a>(
     args: &'a AnalyzeArgs,
 ) -> impl Iterator<Item = Result<Report>> + 'a {
     spec.iter()
-        .map(move |d| analyse(m, d, omega, args.torque, args.friction))
+        .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction))
 }
 
 /// Indents every line of `text` by two spaces (an element of a pretty
@@ -301,7 +288,7 @@ fn pretty(value: &Value) -> Result<String> {
 /// prints each angle as it is computed.
 pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     let m = args.mechanism.mechanism()?;
-    if args.chain.is_set() && args.torque.is_some() {
+    if args.chain.is_set() && args.load.torque.is_some() {
         return Err(Error::Parse(
             "--torque applies to the engine only, not with --slot-radius, --links or --inversion"
                 .into(),
@@ -321,19 +308,6 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     }
     let omega = args.speed.omega()?;
     let spec = AngleSpec::parse(&args.angle)?;
-    if let Some(t) = args.torque.filter(|t| !t.is_finite()) {
-        return Err(Error::NotFinite {
-            name: "torque",
-            value: t,
-        });
-    }
-    if !(args.friction >= 0.0 && args.friction.is_finite()) {
-        return Err(Error::OutOfRange {
-            name: "friction",
-            value: args.friction,
-            reason: "the coefficient of friction must be a finite number ≥ 0".into(),
-        });
-    }
     for r in reports(&m, &spec, omega, args) {
         r?;
     }

@@ -113,6 +113,28 @@ impl SpeedArgs {
     }
 }
 
+/// The load on the crank: `--torque` and, with it, `--friction`. The
+/// values are checked where the statics are computed.
+#[derive(Debug, Clone, Args)]
+pub struct LoadArgs {
+    /// Crank torque T, counter-clockwise positive, in force × the length
+    /// unit (FORCE·UNIT, N·mm for lengths in mm): adds the statics of Ng
+    /// eq. 6–11 (the OM line, slider force, side thrust, friction,
+    /// transmission angle), the forces in the force unit
+    #[arg(long, allow_negative_numbers = true, value_name = "T")]
+    pub torque: Option<f64>,
+    /// Coefficient of friction μ ≥ 0 of the slider in its guides (with
+    /// --torque)
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "MU",
+        default_value_t = 0.0,
+        requires = "torque"
+    )]
+    pub friction: f64,
+}
+
 /// Largest |rpm|: the one whose ω is [`slider_crank::MAX_OMEGA`], rounded
 /// down to a round number.
 const MAX_RPM: f64 = 9e100;

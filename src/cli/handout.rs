@@ -3,7 +3,7 @@
 //! with `--class N`, a sheet and a key for each of N engines and a table
 //! of every answer.
 
-use super::args::{MechanismArgs, SpeedArgs, UnitArgs};
+use super::args::{LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::{Progress, Stdout};
 use clap::Args;
 use slider_crank::handout::{Class, Handout, Paper};
@@ -31,21 +31,8 @@ pub struct HandoutArgs {
     pub angle: f64,
     #[command(flatten)]
     pub units: UnitArgs,
-    /// Crank torque T, counter-clockwise positive, in force × the length
-    /// unit (FORCE·UNIT): adds the step of Ng's OM line and the forces
-    /// (slider force, side thrust, friction, transmission angle)
-    #[arg(long, allow_negative_numbers = true, value_name = "T")]
-    pub torque: Option<f64>,
-    /// Coefficient of friction μ ≥ 0 of the slider in its guides (used
-    /// with --torque)
-    #[arg(
-        long,
-        allow_negative_numbers = true,
-        value_name = "MU",
-        default_value_t = 0.0,
-        requires = "torque"
-    )]
-    pub friction: f64,
+    #[command(flatten)]
+    pub load: LoadArgs,
     /// The paper the page is printed on: a4 or letter (the CSS @page size;
     /// no figure or table is broken across two pages)
     #[arg(long, value_name = "PAPER", default_value = "a4")]
@@ -127,8 +114,8 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
     .with_omega(args.speed.omega()?)?
     .with_units(units)
     .with_paper(args.paper);
-    if let Some(t) = args.torque {
-        template = template.with_torque(t, args.friction)?;
+    if let Some(t) = args.load.torque {
+        template = template.with_torque(t, args.load.friction)?;
     }
     let path = |suffix: &str| PathBuf::from(format!("{stem}{suffix}.html"));
     if let Some(count) = args.class {
