@@ -838,3 +838,42 @@ fn a_small_crank_gets_a_detail_that_carries_its_marks() {
     assert!(!own.contains("panel-detail"));
     assert!(own.contains("id=\"torque-T\"") && own.contains("id=\"angle-theta\""));
 }
+
+#[test]
+fn the_torque_arrow_keeps_off_a_block_beside_the_bearing() {
+    // n = 1.2 near the inner dead centre: the block stands a fifth of the
+    // crank from O, inside the torque arrow's radius. The arc opens
+    // towards it instead of running through it; at Ng's own rig the gap
+    // stays below O.
+    for (l, degrees) in [(1.2, 160.0), (1.2, 180.0), (1.3, 200.0), (1.2, 179.0)] {
+        let svg = ng_fig_1(1.0, l, degrees);
+        let plate = Plate::read(&svg);
+        let panel = &plate.panels[0];
+        let block = plate
+            .ink
+            .iter()
+            .find(|(id, _)| id == "block-slider")
+            .map(|(_, r)| r.shrunk(1.0))
+            .expect("the block");
+        let arc = panel
+            .strokes
+            .iter()
+            .find(|s| s.id == "torque-T")
+            .expect("the torque arrow");
+        for s in &arc.segs {
+            assert!(
+                block.clip(s).is_none(),
+                "l = {l} at {degrees}°: the torque arrow crosses the block at {s:?}"
+            );
+        }
+    }
+    let own = ng_fig_1(25.0, 72.0, 60.0);
+    let plate = Plate::read(&own);
+    let o = plate.point(&plate.panels[0], "O").expect("O");
+    let t = plate.panels[0]
+        .labels
+        .iter()
+        .find(|l| l.id == "value-T")
+        .expect("T");
+    assert!(t.rect.y0 > o.1, "T is lettered in the gap below O");
+}

@@ -13,6 +13,12 @@ const FORCE_ARROW: f64 = 64.0;
 /// Radius of the torque arrow about the crank centre, page units: wide
 /// enough for the centre's letter to sit inside it.
 const TORQUE_RADIUS: f64 = 36.0;
+/// What the torque arc turns through, radians (about 252°): the rest is
+/// the gap its letter sits in.
+const TORQUE_SWEEP: f64 = 4.4;
+/// Room kept between the torque arc and the slider's block, page units
+/// (an arrowhead's length).
+const ARROW_ROOM: f64 = 8.0;
 
 /// A given value as written when short (0.5, 6, 25), else to four
 /// significant figures.
@@ -112,7 +118,14 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     // The crank torque: an arc arrow about the crank centre (left to a
     // detail of the crank where there is one).
     if !canvas.is_bare(c) {
-        torque_arrow(canvas, c, scene.torque());
+        // Where the slider's block comes within the arc's reach (a short
+        // rod near the inner dead centre), the arc opens towards it.
+        let s = &ctx.sizes;
+        let ca = a - c;
+        let block = s.block_half_length.hypot(s.block_half_height);
+        let near = ca.norm() - block < canvas.world(TORQUE_RADIUS + ARROW_ROOM);
+        let gap = near.then(|| ca.y.atan2(ca.x));
+        torque_arrow(canvas, c, scene.torque(), gap);
     }
     for f in forces(ctx, &|page| canvas.world(page)) {
         if !canvas.contains(f.from) {
@@ -153,12 +166,19 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
 }
 
 /// The crank torque `t` as an arc arrow about the crank centre `c`,
-/// lettered T in its gap.
-fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64) {
+/// lettered T. The gap is below the centre (above it for a clockwise
+/// torque) and holds the letter; or it is centred on the world direction
+/// `gap` where one is given (the slider's block, which the arc would
+/// otherwise cross), and the letter goes beside the arc's middle.
+fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
     let radius = canvas.world(TORQUE_RADIUS);
     let turn = if t >= 0.0 { 1.0 } else { -1.0 };
-    let start = -0.9 * turn;
-    let sweep = turn * 4.4;
+    let sweep = turn * TORQUE_SWEEP;
+    // The gap's middle is half a sweep and half a turn past the start.
+    let start = match gap {
+        Some(g) => g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI),
+        None => -0.9 * turn,
+    };
     canvas.push(
         "torque-T",
         Role::Force,
@@ -170,7 +190,12 @@ fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64) {
             arrow: true,
         },
     );
-    let mid = start + 0.5 * sweep + std::f64::consts::PI;
+    // T in the gap, or, where the gap holds the block, beside the arc's
+    // middle.
+    let mid = match gap {
+        Some(_) => start + 0.5 * sweep,
+        None => start + 0.5 * sweep + std::f64::consts::PI,
+    };
     canvas.label(
         "value-T",
         c + Vector::new(mid.cos(), mid.sin()) * radius,
