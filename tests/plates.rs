@@ -843,8 +843,9 @@ fn a_small_crank_gets_a_detail_that_carries_its_marks() {
 fn the_torque_arrow_keeps_off_a_block_beside_the_bearing() {
     // n = 1.2 near the inner dead centre: the block stands a fifth of the
     // crank from O, inside the torque arrow's radius. The arc opens
-    // towards it instead of running through it; at Ng's own rig the gap
-    // stays below O.
+    // towards it instead of running through it, and the slider force
+    // pushes on the block's far face; at Ng's own rig the gap stays below
+    // O.
     for (l, degrees) in [(1.2, 160.0), (1.2, 180.0), (1.3, 200.0), (1.2, 179.0)] {
         let svg = ng_fig_1(1.0, l, degrees);
         let plate = Plate::read(&svg);
@@ -864,6 +865,18 @@ fn the_torque_arrow_keeps_off_a_block_beside_the_bearing() {
             assert!(
                 block.clip(s).is_none(),
                 "l = {l} at {degrees}°: the torque arrow crosses the block at {s:?}"
+            );
+        }
+        // The slider force pushes on the block's far face rather than
+        // running from it through the bearing.
+        let o = plate.point(panel, "O").expect("O");
+        // (None at the dead centre, where the force is not finite.)
+        let fp = panel.strokes.iter().find(|s| s.id == "force-Fp");
+        assert_eq!(fp.is_some(), degrees != 180.0, "F_p at {degrees}°");
+        for s in fp.iter().flat_map(|fp| &fp.segs) {
+            assert!(
+                s.0.0.min(s.1.0) > block.x0,
+                "l = {l} at {degrees}°: F_p runs from the block towards O {o:?}: {s:?}"
             );
         }
     }

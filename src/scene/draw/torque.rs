@@ -207,7 +207,9 @@ fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
 /// The force arrows, their page lengths turned to world lengths by
 /// `world`: F_c = T / r on the crank pin, perpendicular to the crank in
 /// the torque's sense (Ng eq. 2), pointing at the pin; the slider force
-/// F_p from the block's face along the stroke, and the side thrust F_s
+/// F_p from the block's face along the stroke (or, where that arrow would
+/// run into the crank's bearing, pushing on the block's far face), and
+/// the side thrust F_s
 /// from its top or bottom (to F_p's scale, within limits). None at a dead
 /// centre, where the slider force is not finite.
 pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
@@ -239,11 +241,22 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     if let Some((sign, nonzero)) = sense {
         let ux = Vector::new(sign, 0.0);
         let face = a + ux * s.block_half_length;
+        let length = world(FORCE_ARROW);
+        // An arrow from the block towards the crank centre that would
+        // reach its bearing and torque arrow (a short rod near the inner
+        // dead centre) pushes on the block's far face instead.
+        let reach = s.block_half_length + length + world(TORQUE_RADIUS + ARROW_ROOM);
+        let (from, to) = if sign * (c.x - a.x) > 0.0 && (c.x - a.x).abs() < reach {
+            let back = a - ux * s.block_half_length;
+            (back - ux * length, back)
+        } else {
+            (face, face + ux * length)
+        };
         out.push(NamedArrow {
             id: "Fp",
             name: "*F*_p",
-            from: face,
-            to: face + ux * world(FORCE_ARROW),
+            from,
+            to,
         });
         // F_s = F_p tan φ: its sense and its length to F_p's scale need
         // only tan φ.
