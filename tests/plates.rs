@@ -890,3 +890,22 @@ fn the_torque_arrow_keeps_off_a_block_beside_the_bearing() {
         .expect("T");
     assert!(t.rect.y0 > o.1, "T is lettered in the gap below O");
 }
+
+#[test]
+fn a_small_crank_on_a_long_rod_keeps_a_block_not_a_bar() {
+    // l = 50 r: the crank is a few units on the page, the slider far from
+    // it. The block's length follows the slider's distance from the
+    // crank, so it stays longer than it is high, as at Ng's own rig.
+    for (r, l) in [(1.0, 50.0), (1.0, 20.0), (25.0, 72.0)] {
+        let svg = ng_fig_1(r, l, 220.0);
+        let plate = Plate::read(&svg);
+        let block = plate
+            .ink
+            .iter()
+            .find(|(id, _)| id == "block-slider")
+            .map(|(_, r)| *r)
+            .expect("the block");
+        let (w, h) = (block.x1 - block.x0, block.y1 - block.y0);
+        assert!(w > h, "l = {l} r: the block is {w} by {h}");
+    }
+}

@@ -35,6 +35,10 @@ pub(crate) struct Sizes {
     pub block_half_length: f64,
     /// Half the block's height (the guides are this far from the stroke).
     pub block_half_height: f64,
+    /// The most half length the block may have without coming near the
+    /// crank centre at the inner dead centre: 0.36 of the slider's nearest
+    /// distance from it (at least 0.36 × 0.3 r).
+    block_room: f64,
     /// The slider's nearest and farthest positions.
     pub travel: (f64, f64),
     /// Page units per world unit of the main view, once a first fit has
@@ -67,6 +71,7 @@ impl Sizes {
         Self {
             block_half_length: 0.36 * r * k,
             block_half_height: 0.2 * r * k,
+            block_room: 0.36 * near.max(0.3 * r),
             travel: (near, far),
             page_scale: None,
             fitted: None,
@@ -74,14 +79,18 @@ impl Sizes {
     }
 
     /// The block sized on the page at `scale` page units per world unit:
-    /// [`BLOCK_HALF_HEIGHT`] high, and no longer than
-    /// [`BLOCK_HALF_LENGTH_MOST`] (shorter where the rod is short).
+    /// [`BLOCK_HALF_HEIGHT`] high, and [`BLOCK_HALF_LENGTH_MOST`] long
+    /// where the slider keeps far enough from the crank centre (shorter
+    /// where the rod is short). A small crank on a long rod does not make
+    /// the block a thin bar: its length follows the slider's distance from
+    /// the crank, not the crank.
     fn on_page(self, scale: f64) -> Self {
         if !(scale.is_finite() && scale > 0.0) {
             return self;
         }
+        let room = self.block_room.max(self.block_half_length);
         Self {
-            block_half_length: self.block_half_length.min(BLOCK_HALF_LENGTH_MOST / scale),
+            block_half_length: room.min(BLOCK_HALF_LENGTH_MOST / scale),
             block_half_height: BLOCK_HALF_HEIGHT / scale,
             page_scale: Some(scale),
             ..self
