@@ -839,6 +839,16 @@ fn a_small_crank_gets_a_detail_that_carries_its_marks() {
     assert!(own.contains("id=\"torque-T\"") && own.contains("id=\"angle-theta\""));
 }
 
+/// The ink box of the slider block of a plate.
+fn slider_block(plate: &Plate) -> Rect {
+    plate
+        .ink
+        .iter()
+        .find(|(id, _)| id == "block-slider")
+        .map(|(_, r)| *r)
+        .expect("the block")
+}
+
 #[test]
 fn the_torque_arrow_keeps_off_a_block_beside_the_bearing() {
     // n = 1.2 near the inner dead centre: the block stands a fifth of the
@@ -850,12 +860,7 @@ fn the_torque_arrow_keeps_off_a_block_beside_the_bearing() {
         let svg = ng_fig_1(1.0, l, degrees);
         let plate = Plate::read(&svg);
         let panel = &plate.panels[0];
-        let block = plate
-            .ink
-            .iter()
-            .find(|(id, _)| id == "block-slider")
-            .map(|(_, r)| r.shrunk(1.0))
-            .expect("the block");
+        let block = slider_block(&plate).shrunk(1.0);
         let arc = panel
             .strokes
             .iter()
@@ -899,12 +904,7 @@ fn a_small_crank_on_a_long_rod_keeps_a_block_not_a_bar() {
     for (r, l) in [(1.0, 50.0), (1.0, 20.0), (25.0, 72.0)] {
         let svg = ng_fig_1(r, l, 220.0);
         let plate = Plate::read(&svg);
-        let block = plate
-            .ink
-            .iter()
-            .find(|(id, _)| id == "block-slider")
-            .map(|(_, r)| *r)
-            .expect("the block");
+        let block = slider_block(&plate);
         let (w, h) = (block.x1 - block.x0, block.y1 - block.y0);
         assert!(w > h, "l = {l} r: the block is {w} by {h}");
     }

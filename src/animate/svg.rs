@@ -29,7 +29,7 @@ pub(super) fn document(animation: &Animation) -> String {
         .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
         .set("font-family", animation.font_family().to_owned());
     if let Some(title) = animation.title() {
-        doc = doc.add(Element::new("title").add(Node::Text(title.to_owned())));
+        doc = doc.add(Element::text("title", title.to_owned()));
     }
     doc = doc.add(metadata(animation));
     let count = animation.frames().len();
@@ -115,9 +115,7 @@ fn metadata(animation: &Animation) -> Element {
         }),
     );
     let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
-    let mut element = Element::new("metadata");
-    element.append(Node::Text(json));
-    element
+    Element::text("metadata", json)
 }
 
 /// The JSON object of a still figure's `<metadata>`.

@@ -49,6 +49,12 @@ impl Element {
         }
     }
 
+    /// An element `name` holding only the character data `text` (a
+    /// `<title>`, a `<metadata>`), written on its line.
+    pub(crate) fn text(name: &'static str, text: String) -> Self {
+        Element::new(name).add(Node::Text(text))
+    }
+
     /// The root `<svg>` element with its namespace.
     pub(crate) fn document() -> Self {
         Element::new("svg").set("xmlns", "http://www.w3.org/2000/svg")
@@ -142,6 +148,13 @@ impl From<Element> for Node {
     fn from(e: Element) -> Self {
         Node::Element(e)
     }
+}
+
+/// `s` as character data: `&`, `<` and `>` escaped.
+pub(crate) fn escape_text(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    escape_into(&mut out, s, false);
+    out
 }
 
 /// `s` appended to `out` with `&`, `<`, `>` escaped, and in an attribute

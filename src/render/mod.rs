@@ -18,7 +18,7 @@ mod sizes;
 mod svg;
 
 pub use crate::error::plain;
-pub(crate) use element::{Element, Node};
+pub(crate) use element::{Element, Node, escape_text};
 #[cfg(any(feature = "png", feature = "pdf"))]
 pub use fonts::font_database;
 pub use format::FileFormat;

@@ -148,7 +148,6 @@ impl PanelWriter<'_> {
         )
     }
 
-    /// Page Bézier pieces as obstacles, each by seven points along it.
     /// A line that opens for letters, written whole now and again with
     /// its gaps once the labels are placed.
     pub(super) fn open_line(&mut self, ink: &Ink, course: centre::Course) -> Element {
@@ -164,6 +163,7 @@ impl PanelWriter<'_> {
         node
     }
 
+    /// Page Bézier pieces as obstacles, each by seven points along it.
     pub(super) fn bezier_obstacles(&mut self, pieces: &[[Point; 4]]) {
         for b in pieces {
             let pts: Vec<Point> = (0..=6)

@@ -9,19 +9,6 @@ use crate::render::sizes::{ARROW_HALF_WIDTH, ARROW_LENGTH};
 use std::fmt as stdfmt;
 use std::fmt::Write as _;
 
-pub(super) fn escape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    for c in s.chars() {
-        match c {
-            '&' => out.push_str("&amp;"),
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            c => out.push(c),
-        }
-    }
-    out
-}
-
 /// A page point as path data: `x y` on the grid, written straight into
 /// the path's string.
 pub(super) fn pt(p: Point) -> impl stdfmt::Display {

@@ -27,7 +27,7 @@ use crate::figure::{
 };
 use crate::figure::{Pen, Style};
 use crate::geom::Point;
-use crate::render::{Element, Node};
+use crate::render::Element;
 use serde_json::{Value, json};
 use text::{ink_box, starts_italic, text_node};
 
@@ -37,7 +37,6 @@ use text::{ink_box, starts_italic, text_node};
 const REACH: f64 = 1.3;
 
 /// A label waiting to be placed once every line is known.
-#[derive(Clone)]
 struct Pending {
     id: String,
     anchor: Point,
@@ -278,55 +277,52 @@ impl PanelWriter<'_> {
         let mut pending = std::mem::take(&mut self.pending);
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
-        let first = self.placing(&pending, room);
+        let first: Vec<&Pending> = pending.iter().collect();
+        let placed = self.placing(&first, room);
         let struck = |placed: &[Placed]| {
             let n = placed.iter().filter(|p| p.cost >= STRUCK).count();
             (n, placed.iter().map(|p| p.cost).sum::<f64>())
         };
-        let (n, cost) = struck(&first);
-        let chosen = if n == 0 {
-            first
+        let (n, cost) = struck(&placed);
+        let (order, placed) = if n == 0 {
+            (first, placed)
         } else {
             self.obstacles.rollback(start);
-            let (lost, kept): (Vec<_>, Vec<_>) = pending
+            let (lost, kept): (Vec<_>, Vec<_>) = first
                 .iter()
-                .zip(&first)
-                .partition(|(_, placed)| placed.cost >= STRUCK);
-            let again: Vec<Pending> = lost
-                .into_iter()
-                .chain(kept)
-                .map(|(p, _)| p.clone())
-                .collect();
+                .zip(&placed)
+                .partition(|(_, p)| p.cost >= STRUCK);
+            let again: Vec<&Pending> = lost.into_iter().chain(kept).map(|(p, _)| *p).collect();
             let second = self.placing(&again, room);
-            let (n2, cost2) = struck(&second);
-            if (n2, cost2) < (n, cost) {
-                second
+            if struck(&second) < (n, cost) {
+                (again, second)
             } else {
-                first
+                (first, placed)
             }
         };
         let colour = self.style.pen(Role::Label).colour;
-        chosen
+        order
             .into_iter()
-            .map(|p| {
+            .zip(placed)
+            .map(|(p, at)| {
                 let text = text_node(
                     &p.id,
-                    p.at,
+                    at.at,
                     &p.text,
                     p.size,
                     colour,
                     "middle",
                     starts_italic(&p.text),
                 );
-                (text, p.bounds)
+                (text, at.bounds)
             })
             .unzip()
     }
 
-    /// The `pending` labels placed in their order, each box added to the
+    /// The labels placed in the `order` given, each box added to the
     /// obstacles as it is placed.
-    fn placing(&mut self, pending: &[Pending], room: &PageRect) -> Vec<Placed> {
-        pending
+    fn placing(&mut self, order: &[&Pending], room: &PageRect) -> Vec<Placed> {
+        order
             .iter()
             .map(|p| {
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
@@ -336,9 +332,6 @@ impl PanelWriter<'_> {
                 let bounds = Bounds::around(centre, half);
                 self.obstacles.boxed(bounds);
                 Placed {
-                    id: p.id.clone(),
-                    text: p.text.clone(),
-                    size: p.size,
                     at: centre + shift,
                     bounds,
                     cost,
@@ -348,11 +341,9 @@ impl PanelWriter<'_> {
     }
 }
 
-/// A label placed: where its text goes, its box, and what the place cost.
+/// Where a label was placed: the point its text is written at, its box,
+/// and what the place cost.
 struct Placed {
-    id: String,
-    text: RichText,
-    size: f64,
     at: Point,
     bounds: Bounds,
     cost: f64,
@@ -405,9 +396,7 @@ fn metadata(figure: &Figure) -> Element {
     });
     meta.insert("panels".into(), panels.collect());
     let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
-    let mut element = Element::new("metadata");
-    element.append(Node::Text(json));
-    element
+    Element::text("metadata", json)
 }
 
 /// A page length for the root's `width` or `height`: page units as they
@@ -443,7 +432,7 @@ pub fn to_svg(figure: &Figure) -> String {
         .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
         .set("font-family", figure.font().css_family());
     if let Some(title) = figure.title() {
-        doc = doc.add(Element::new("title").add(Node::Text(title.rich().plain())));
+        doc = doc.add(Element::text("title", title.rich().plain()));
     }
     let mut doc = doc.add(metadata(figure)).add(paper);
     for panel in figure.panels() {

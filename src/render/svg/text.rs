@@ -1,12 +1,11 @@
 //! Text: `<text>` elements of rich runs, and the boxes that keep labels
 //! and notes clear of each other.
 
-use super::markup::escape;
 use crate::figure::{Font, RichText, Role, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
 use crate::geom::{Point, Vector};
 use crate::render::labels::ROOM;
 use crate::render::number::fmt;
-use crate::render::{Element, Node};
+use crate::render::{Element, Node, escape_text};
 use std::fmt::Write as _;
 
 /// Where [`text_node`] puts the baseline: this fraction of the size below
@@ -66,7 +65,7 @@ fn run_text(s: &str) -> String {
     format!(
         "{}{}{}",
         "\u{a0}".repeat(lead),
-        escape(t),
+        escape_text(t),
         "\u{a0}".repeat(trail)
     )
 }

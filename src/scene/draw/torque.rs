@@ -209,9 +209,8 @@ fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
 /// the torque's sense (Ng eq. 2), pointing at the pin; the slider force
 /// F_p from the block's face along the stroke (or, where that arrow would
 /// run into the crank's bearing, pushing on the block's far face), and
-/// the side thrust F_s
-/// from its top or bottom (to F_p's scale, within limits). None at a dead
-/// centre, where the slider force is not finite.
+/// the side thrust F_s from its top or bottom (to F_p's scale, within
+/// limits). None at a dead centre, where the slider force is not finite.
 pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
