@@ -788,11 +788,38 @@ fn a_series_held_over_the_revolution_keeps_one_page_map_and_stays_on_the_page() 
 
 /// Ng's Fig. 1 for `(r, l)` at `degrees`, as SVG.
 fn ng_fig_1(r: f64, l: f64, degrees: f64) -> String {
+    figure("ng-fig-1-torque", r, l, degrees)
+}
+
+/// The SVG of the figure `name` of a mechanism without offset at `degrees`.
+fn figure(name: &str, r: f64, l: f64, degrees: f64) -> String {
     let mut options = FigureOptions::default();
     options.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
     options.angle = Some(Angle::deg(degrees));
-    let name = FigureName::from_name("ng-fig-1-torque").unwrap();
+    let name = FigureName::from_name(name).unwrap();
     to_svg(&name.figure(&options).unwrap())
+}
+
+#[test]
+fn fig_62_with_a_small_crank_marks_its_angles_in_a_detail() {
+    // l = 50 r: the crank circle is 13 units in radius on the page, too
+    // small for θ's arc and letter and r's letter; the detail has them.
+    let svg = figure("fig-62-displacement", 1.0, 50.0, 40.0);
+    let plate = Plate::read(&svg);
+    assert!(plate.panels.iter().any(|p| p.prefix == "detail-"));
+    for id in ["angle-theta", "value-r"] {
+        assert!(svg.contains(&format!("id=\"detail-{id}\"")), "detail-{id}");
+        assert!(!svg.contains(&format!("id=\"{id}\"")), "{id} in the main");
+    }
+    for id in ["value-l", "dimension-x", "dimension-stroke", "label-A"] {
+        assert!(svg.contains(&format!("id=\"{id}\"")), "{id}");
+    }
+    let problems = check(&plate, false);
+    assert!(problems.is_empty(), "{problems:?}");
+    // A rod of 12 cranks leaves the circle 46 units: no detail.
+    let near = figure("fig-62-displacement", 1.0, 12.0, 40.0);
+    assert!(!near.contains("panel-detail"));
+    assert!(near.contains("id=\"angle-theta\""));
 }
 
 #[test]

@@ -14,6 +14,12 @@ use crate::render::sizes::{ANGLE_RADIUS, ARROW_LENGTH, RIGHT_ANGLE};
 /// Step by which a dimension's text slides along its line off a line
 /// drawn through it, page units.
 const SLIDE: f64 = 4.0;
+/// The least clear length between a dimension's two heads drawn inside
+/// its extension lines, page units; a shorter dimension has its heads
+/// outside, pointing in.
+const HEADS_GAP: f64 = 4.0;
+/// How far a dimension line runs on past an outside head, page units.
+const LEADER: f64 = 6.0;
 
 impl PanelWriter<'_> {
     /// A straight arrow with its head at `to`; labels keep off the shaft
@@ -102,7 +108,9 @@ impl PanelWriter<'_> {
 
     /// A dimension between `from` and `to`: extension lines, the line set
     /// off by `offset` page units towards the world direction `side` with
-    /// a head at each end, and its text beside the middle.
+    /// a head at each end, and its text beside the middle. A dimension
+    /// shorter than two heads and [`HEADS_GAP`] has its heads outside the
+    /// extension lines, pointing in, as a draughtsman draws a small one.
     pub(super) fn dimension(
         &mut self,
         ink: &Ink,
@@ -121,15 +129,24 @@ impl PanelWriter<'_> {
         let half = text_half(text, size, self.font);
         let centre = self.dimension_text((a2, b2), n, half);
         self.obstacles.boxed(Bounds::around(centre, half));
-        self.obstacles.segment(a2, b2);
+        // Too short for both heads inside: the heads point in from
+        // outside the extension lines, on the line produced each way.
+        let outside = (b2 - a2).norm() < 2.0 * ARROW_LENGTH + HEADS_GAP;
+        let (line, towards) = if outside {
+            let past = u * (ARROW_LENGTH + LEADER);
+            ([a2 - past, b2 + past], u)
+        } else {
+            ([a2 + u * 2.0, b2 - u * 2.0], -u)
+        };
+        self.obstacles.segment(line[0], line[1]);
         let thin = Pen { width: 0.5, ..pen };
         Some(
             ink.tag(Element::new("g"))
                 .add(path(ext(a, a2), thin))
                 .add(path(ext(b, b2), thin))
-                .add(path(polyline_d(&[a2 + u * 2.0, b2 - u * 2.0], false), pen))
-                .add(arrow_head(a2, -u, pen.colour))
-                .add(arrow_head(b2, u, pen.colour))
+                .add(path(polyline_d(&line, false), pen))
+                .add(arrow_head(a2, towards, pen.colour))
+                .add(arrow_head(b2, -towards, pen.colour))
                 .add(text_node(
                     &format!("{}-text", ink.id),
                     centre,
@@ -198,6 +215,72 @@ mod tests {
             .unwrap()
     }
 
+    /// The figure of one panel holding `items`, 200 units square, world
+    /// and page alike.
+    fn one_panel(items: Vec<Item>) -> Figure {
+        let rect = PageRect::new(0.0, 0.0, 200.0, 200.0);
+        let panel = Panel::new("panel", rect, PageFromWorld::identity(), items);
+        Figure::new(
+            "test",
+            200.0,
+            200.0,
+            Style::Textbook,
+            0.01,
+            vec![panel],
+            Default::default(),
+        )
+    }
+
+    /// The x coordinates of the paths of the group `id`, path by path.
+    fn path_xs(svg: &str, id: &str) -> Vec<Vec<f64>> {
+        let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+        let group = &svg[at..at + svg[at..].find("</g>").unwrap()];
+        group
+            .split(" d=\"")
+            .skip(1)
+            .map(|d| {
+                let d = &d[..d.find('"').unwrap()];
+                let numbers: Vec<f64> = d
+                    .split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+                    .filter_map(|t| t.parse().ok())
+                    .collect();
+                numbers.iter().step_by(2).copied().collect()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_short_dimension_has_its_heads_outside() {
+        for (length, outside) in [(12.0, true), (40.0, false)] {
+            let (from, to) = (Point::new(80.0, 100.0), Point::new(80.0 + length, 100.0));
+            let item = Item::new(
+                "dimension-x",
+                Role::Dimension,
+                Shape::Dimension {
+                    from,
+                    to,
+                    side: Vector::new(0.0, -1.0),
+                    offset: 20.0,
+                    text: RichText::italic("x"),
+                },
+            );
+            let svg = to_svg(&one_panel(vec![item]));
+            let paths = path_xs(&svg, "dimension-x");
+            // Extension lines, the line, then the two heads.
+            let line = &paths[2];
+            let (lo, hi) = line
+                .iter()
+                .fold((f64::MAX, f64::MIN), |(lo, hi), x| (lo.min(*x), hi.max(*x)));
+            assert_eq!(lo < from.x && hi > to.x, outside, "{length}: line {line:?}");
+            // A head's tip is on its extension line; its back is outside
+            // the dimension when the heads point in.
+            let head = &paths[3];
+            let back = head[1];
+            assert!((head[0] - from.x).abs() < 1e-9, "{length}: {head:?}");
+            assert_eq!(back < from.x, outside, "{length}: head {head:?}");
+        }
+    }
+
     #[test]
     fn letters_keep_off_right_angle_marks() {
         // The mark in each quadrant about the lettered point: wherever the
@@ -222,18 +305,7 @@ mod tests {
                     },
                 ),
             ];
-            let rect = PageRect::new(0.0, 0.0, 200.0, 200.0);
-            let panel = Panel::new("panel", rect, PageFromWorld::identity(), items);
-            let figure = Figure::new(
-                "test",
-                200.0,
-                200.0,
-                Style::Textbook,
-                0.01,
-                vec![panel],
-                Default::default(),
-            );
-            let svg = to_svg(&figure);
+            let svg = to_svg(&one_panel(items));
             let size = attribute(&svg, "label-C", "font-size");
             let centre = Point::new(
                 attribute(&svg, "label-C", "x"),

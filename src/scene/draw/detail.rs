@@ -21,6 +21,13 @@
 //! an offset that makes the page's scale small) gets a detail of the crank
 //! that carries those marks, at least [`CRANK_TARGET`] units in radius,
 //! and the main view shows the links, pins and forces alone there.
+//!
+//! The angles layer without a torque (Fig. 62) marks less about the crank:
+//! θ's arc of radius 28 units with its letter, r's letter beside the crank
+//! and φ at the pin. They fit a crank circle of [`ANGLES_THRESHOLD`] units;
+//! on Fig. 62's page a rod of 20 cranks draws the circle 30 units in
+//! radius, where θ's letter sits on the crank and r's on the pin. A smaller
+//! crank gets a detail at least [`ANGLES_TARGET`] units in radius.
 
 use super::Ctx;
 use crate::geom::{Frame, Point, Vector};
@@ -56,6 +63,12 @@ fn steps() -> impl DoubleEndedIterator<Item = f64> + Clone {
 pub(crate) const CRANK_THRESHOLD: f64 = 90.0;
 /// The least crank radius in a crank's detail, page units.
 const CRANK_TARGET: f64 = 110.0;
+/// The crank radius, page units, under which a figure marking the crank's
+/// angles without a torque gets a detail of the crank (see the module
+/// docs).
+pub(crate) const ANGLES_THRESHOLD: f64 = 40.0;
+/// The least crank radius in the detail of such a figure, page units.
+const ANGLES_TARGET: f64 = 80.0;
 
 /// What a detail enlarges.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -171,21 +184,31 @@ fn magnify(wanted: f64, width: f64, max_width: f64) -> Option<f64> {
 /// The detail of the crank a torque figure drawn at `scale` needs, if
 /// any (its crank radius under [`CRANK_THRESHOLD`] page units): the crank
 /// circle and M, enlarged to [`CRANK_TARGET`] or as near as `max_width`
-/// allows.
+/// allows. A figure marking the crank's angles without a torque has the
+/// crank circle alone, under [`ANGLES_THRESHOLD`], enlarged to
+/// [`ANGLES_TARGET`]. None for a figure marking neither.
 fn crank(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
-    if !ctx.scene.has(Layer::Torque) {
+    let torque = ctx.scene.has(Layer::Torque);
+    let (threshold, target) = if torque {
+        (CRANK_THRESHOLD, CRANK_TARGET)
+    } else if ctx.scene.has(Layer::Angles) {
+        (ANGLES_THRESHOLD, ANGLES_TARGET)
+    } else {
         return None;
-    }
+    };
     let pose = ctx.main.pose();
     let r = pose.mechanism().crank();
     let radius = r * scale;
-    if !(radius > 0.0 && radius < CRANK_THRESHOLD) {
+    if !(radius > 0.0 && radius < threshold) {
         return None;
     }
     let c = pose.c();
-    let m = ctx.main.e().e();
-    let (lo, hi) = bounds(&[c - Vector::new(r, r), c + Vector::new(r, r), m]);
-    let magnification = magnify(CRANK_TARGET / radius, (hi.x - lo.x) * scale, max_width)?;
+    let mut pts = vec![c - Vector::new(r, r), c + Vector::new(r, r)];
+    if torque {
+        pts.push(ctx.main.e().e());
+    }
+    let (lo, hi) = bounds(&pts);
+    let magnification = magnify(target / radius, (hi.x - lo.x) * scale, max_width)?;
     Some(Detail {
         region: Frame::new(lo, hi),
         magnification,
