@@ -936,3 +936,39 @@ fn a_small_crank_on_a_long_rod_keeps_a_block_not_a_bar() {
         assert!(w > h, "l = {l} r: the block is {w} by {h}");
     }
 }
+
+#[test]
+fn the_offset_dimension_keeps_clear_of_a_crank_detail_frame() {
+    // Ng Fig. 1 with l = 4 r and e = 1.5 r at 300°: the crank gets a
+    // detail, whose frame on the main view reaches about as far beyond the
+    // crank circle as the offset's dimension is set; the dimension line ran
+    // along the frame's edge.
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, 4.0, 1.5).unwrap());
+    options.angle = Some(Angle::deg(300.0));
+    let name = FigureName::from_name("ng-fig-1-torque").unwrap();
+    let svg = to_svg(&name.figure(&options).unwrap());
+    let plate = Plate::read(&svg);
+    let main = &plate.panels[0];
+    assert_eq!(main.id, "panel-mechanism");
+    let upright = |id: &str| -> Vec<f64> {
+        main.strokes
+            .iter()
+            .filter(|s| s.id == id)
+            .flat_map(|s| s.segs.iter())
+            .filter(|s| (s.0.0 - s.1.0).abs() < 0.01 && (s.0.1 - s.1.1).abs() > 20.0)
+            .map(|s| s.0.0)
+            .collect()
+    };
+    let dimension = upright("dimension-e");
+    let frame = upright("detail-frame");
+    assert!(!dimension.is_empty(), "no dimension line");
+    assert!(frame.len() >= 2, "no detail frame");
+    for x in &dimension {
+        for f in &frame {
+            assert!((x - f).abs() >= 8.0, "dimension at {x}, frame edge at {f}");
+        }
+    }
+    let problems = check(&plate, false);
+    assert!(problems.is_empty(), "{problems:?}");
+}

@@ -210,10 +210,16 @@ fn fit(ctx: &Ctx, band: f64) -> Layout {
         ctx.sizes = ctx.sizes.on_page(fit.scale());
     }
     let frame = fit::frame(&ctx);
-    let (main, transform) = main_view(&ctx, band, frame);
-    ctx.sizes.fitted = Some(frame);
+    let (mut main, mut transform) = main_view(&ctx, band, frame);
     let page = ctx.scene.page();
-    let detail = detail::detail(&ctx, transform.scale(), page.width() - 2.0 * page.margin());
+    let width = page.width() - 2.0 * page.margin();
+    let mut detail = detail::detail(&ctx, transform.scale(), width);
+    let grown = beside_detail(ctx.scene, frame, detail.as_ref(), transform.scale());
+    if grown != frame {
+        (main, transform) = main_view(&ctx, band, grown);
+        detail = detail::detail(&ctx, transform.scale(), width);
+    }
+    ctx.sizes.fitted = Some(grown);
     Layout {
         sizes: ctx.sizes,
         band,
@@ -256,23 +262,57 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
         }
     }
     let frame = union(&ctxs);
-    let (main, transform) = main_view(&ctxs[0], band, frame);
     let page = scene.page();
     let width = page.width() - 2.0 * page.margin();
-    let details: Vec<detail::Detail> = ctxs
-        .iter()
-        .filter_map(|c| detail::detail(c, transform.scale(), width))
-        .collect();
+    let held_detail = |frame: Frame| {
+        let (main, transform) = main_view(&ctxs[0], band, frame);
+        let details: Vec<detail::Detail> = ctxs
+            .iter()
+            .filter_map(|c| detail::detail(c, transform.scale(), width))
+            .collect();
+        let detail = detail::union(&details, transform.scale(), width);
+        (main, transform, detail)
+    };
+    let (mut main, mut transform, mut detail) = held_detail(frame);
+    let grown = beside_detail(scene, frame, detail.as_ref(), transform.scale());
+    if grown != frame {
+        (main, transform, detail) = held_detail(grown);
+    }
     Layout {
         sizes: Sizes {
-            fitted: Some(frame),
+            fitted: Some(grown),
             ..ctxs[0].sizes
         },
         band,
         main,
         transform,
-        detail: detail::union(&details, transform.scale(), width),
+        detail,
     }
+}
+
+/// The world `frame` of the main view grown on the side of the offset's
+/// dimension (world −x, see [`dimensions::offset`]) to take in the frame
+/// drawn on the main view round the region of `detail`: the dimension is
+/// set beyond what the view was fitted to, and would otherwise run along
+/// that frame's edge. The frame as it is without an offset, without a
+/// detail, or where the detail's frame stays inside it.
+fn beside_detail(
+    scene: &Scene,
+    frame: Frame,
+    detail: Option<&detail::Detail>,
+    scale: f64,
+) -> Frame {
+    let Some(d) = detail else {
+        return frame;
+    };
+    if scene.mechanism().offset() == 0.0 || !scene.has(Layer::Mechanism) {
+        return frame;
+    }
+    let left = detail_frame(d, scale).min().x;
+    if left >= frame.min().x {
+        return frame;
+    }
+    Frame::new(Point::new(left, frame.min().y), frame.max())
 }
 
 /// Builds the figure of `scene`, in `layout` when one is held, else in
