@@ -20,6 +20,11 @@ const SLIDE: f64 = 4.0;
 const HEADS_GAP: f64 = 4.0;
 /// How far a dimension line runs on past an outside head, page units.
 const LEADER: f64 = 6.0;
+/// The first stretch of an extension line, from its point, on which a
+/// letter may stand (a point's letter beside it, as A's beside the slider
+/// on the line of stroke), page units: a slider block's half height and a
+/// little more.
+const EXTENSION_FREE: f64 = 20.0;
 
 impl PanelWriter<'_> {
     /// A straight arrow with its head at `to`; labels keep off the shaft
@@ -139,6 +144,13 @@ impl PanelWriter<'_> {
             ([a2 + u * 2.0, b2 - u * 2.0], -u)
         };
         self.obstacles.segment(line[0], line[1]);
+        // Letters keep off the extension lines but for their first
+        // stretch, where the dimensioned point's own letter may stand.
+        for (p, q) in [(a, a2), (b, b2)] {
+            if (q - p).norm() > EXTENSION_FREE + 4.0 {
+                self.obstacles.segment(p + n * EXTENSION_FREE, q + n * 4.0);
+            }
+        }
         let thin = Pen { width: 0.5, ..pen };
         Some(
             ink.tag(Element::new("g"))
@@ -279,6 +291,55 @@ mod tests {
             assert!((head[0] - from.x).abs() < 1e-9, "{length}: {head:?}");
             assert_eq!(back < from.x, outside, "{length}: head {head:?}");
         }
+    }
+
+    #[test]
+    fn labels_keep_off_extension_lines() {
+        // A dimension upright at x = 180 set off 120 to the left: its
+        // extension lines run along y = 100 and y = 140. A label asked for
+        // on the upper one, 70 from its point, with a link just above it:
+        // right of its anchor it would sit across the extension line.
+        let items = vec![
+            Item::new(
+                "dimension-e",
+                Role::Dimension,
+                Shape::Dimension {
+                    from: Point::new(180.0, 100.0),
+                    to: Point::new(180.0, 140.0),
+                    side: Vector::new(-1.0, 0.0),
+                    offset: 120.0,
+                    text: RichText::italic("e"),
+                },
+            ),
+            Item::new(
+                "link-rod",
+                Role::Link,
+                Shape::Polyline {
+                    points: vec![Point::new(60.0, 92.0), Point::new(170.0, 92.0)],
+                    closed: false,
+                },
+            ),
+            Item::new(
+                "value-v",
+                Role::Label,
+                Shape::Label {
+                    anchor: Point::new(110.0, 100.0),
+                    text: RichText::italic("v"),
+                    size: TextSize::Small,
+                },
+            ),
+        ];
+        let svg = to_svg(&one_panel(items));
+        let size = attribute(&svg, "value-v", "font-size");
+        let centre_y = attribute(&svg, "value-v", "y") - BASELINE * size;
+        let half = text_half(&RichText::italic("v"), size, Font::default());
+        // `half` carries a unit of room on each side, which placement lets
+        // touch a line, and the glyph's box a unit more.
+        assert!(
+            (centre_y - 100.0).abs() > half.y - 2.0,
+            "label centred at y {centre_y}, half height {}",
+            half.y
+        );
     }
 
     #[test]
