@@ -66,7 +66,7 @@ const CRANK_TARGET: f64 = 110.0;
 /// The crank radius, page units, under which a figure marking the crank's
 /// angles without a torque gets a detail of the crank (see the module
 /// docs).
-pub(crate) const ANGLES_THRESHOLD: f64 = 40.0;
+const ANGLES_THRESHOLD: f64 = 40.0;
 /// The least crank radius in the detail of such a figure, page units.
 const ANGLES_TARGET: f64 = 80.0;
 
