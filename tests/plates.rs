@@ -788,36 +788,53 @@ fn a_series_held_over_the_revolution_keeps_one_page_map_and_stays_on_the_page() 
 
 /// Ng's Fig. 1 for `(r, l)` at `degrees`, as SVG.
 fn ng_fig_1(r: f64, l: f64, degrees: f64) -> String {
-    figure("ng-fig-1-torque", r, l, degrees)
+    figure("ng-fig-1-torque", (r, l, 0.0), degrees)
 }
 
-/// The SVG of the figure `name` of a mechanism without offset at `degrees`.
-fn figure(name: &str, r: f64, l: f64, degrees: f64) -> String {
+/// The SVG of the figure `name` of the mechanism `(r, l, e)` at `degrees`.
+fn figure(name: &str, (r, l, e): (f64, f64, f64), degrees: f64) -> String {
     let mut options = FigureOptions::default();
-    options.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
+    options.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
     options.angle = Some(Angle::deg(degrees));
     let name = FigureName::from_name(name).unwrap();
     to_svg(&name.figure(&options).unwrap())
+}
+
+/// Asserts that `svg` has a detail panel drawing the items `detailed`,
+/// which the main view leaves to it, that the main view draws `kept`,
+/// and that the plate is clean.
+fn assert_detail_carries(svg: &str, detailed: &[&str], kept: &[&str]) {
+    let plate = Plate::read(svg);
+    assert!(
+        plate.panels.iter().any(|p| p.prefix == "detail-"),
+        "no detail"
+    );
+    for id in detailed {
+        assert!(svg.contains(&format!("id=\"detail-{id}\"")), "detail-{id}");
+        assert!(
+            !svg.contains(&format!("id=\"{id}\"")),
+            "{id} in the main view"
+        );
+    }
+    for id in kept {
+        assert!(svg.contains(&format!("id=\"{id}\"")), "{id}");
+    }
+    let problems = check(&plate, false);
+    assert!(problems.is_empty(), "{problems:?}");
 }
 
 #[test]
 fn fig_62_with_a_small_crank_marks_its_angles_in_a_detail() {
     // l = 50 r: the crank circle is 13 units in radius on the page, too
     // small for θ's arc and letter and r's letter; the detail has them.
-    let svg = figure("fig-62-displacement", 1.0, 50.0, 40.0);
-    let plate = Plate::read(&svg);
-    assert!(plate.panels.iter().any(|p| p.prefix == "detail-"));
-    for id in ["angle-theta", "value-r"] {
-        assert!(svg.contains(&format!("id=\"detail-{id}\"")), "detail-{id}");
-        assert!(!svg.contains(&format!("id=\"{id}\"")), "{id} in the main");
-    }
-    for id in ["value-l", "dimension-x", "dimension-stroke", "label-A"] {
-        assert!(svg.contains(&format!("id=\"{id}\"")), "{id}");
-    }
-    let problems = check(&plate, false);
-    assert!(problems.is_empty(), "{problems:?}");
+    let svg = figure("fig-62-displacement", (1.0, 50.0, 0.0), 40.0);
+    assert_detail_carries(
+        &svg,
+        &["angle-theta", "value-r"],
+        &["value-l", "dimension-x", "dimension-stroke", "label-A"],
+    );
     // A rod of 12 cranks leaves the circle 46 units: no detail.
-    let near = figure("fig-62-displacement", 1.0, 12.0, 40.0);
+    let near = figure("fig-62-displacement", (1.0, 12.0, 0.0), 40.0);
     assert!(!near.contains("panel-detail"));
     assert!(near.contains("id=\"angle-theta\""));
 }
@@ -828,37 +845,22 @@ fn a_small_crank_gets_a_detail_that_carries_its_marks() {
     // θ, β, the torque arrow and M's letter; the main view only the links,
     // pins and forces there.
     let svg = ng_fig_1(1.0, 50.0, 220.0);
-    let plate = Plate::read(&svg);
-    assert!(
-        plate.panels.iter().any(|p| p.prefix == "detail-"),
-        "no detail"
-    );
-    for id in [
-        "angle-theta",
-        "angle-beta",
-        "torque-T",
-        "label-M",
-        "value-T",
-    ] {
-        assert!(svg.contains(&format!("id=\"detail-{id}\"")), "detail-{id}");
-        assert!(
-            !svg.contains(&format!("id=\"{id}\"")),
-            "{id} in the main view"
-        );
-    }
-    for id in [
-        "point-O",
-        "label-O",
-        "point-C",
-        "force-Fp",
-        "detail-point-O",
-    ] {
-        assert!(svg.contains(&format!("id=\"{id}\"")), "{id}");
-    }
-    assert!(
-        check(&plate, false).is_empty(),
-        "{:?}",
-        check(&plate, false)
+    assert_detail_carries(
+        &svg,
+        &[
+            "angle-theta",
+            "angle-beta",
+            "torque-T",
+            "label-M",
+            "value-T",
+        ],
+        &[
+            "point-O",
+            "label-O",
+            "point-C",
+            "force-Fp",
+            "detail-point-O",
+        ],
     );
     // Ng's own rig (its crank about 95 units on the page) needs none.
     let own = ng_fig_1(25.0, 72.0, 60.0);
@@ -943,11 +945,7 @@ fn the_offset_dimension_keeps_clear_of_a_crank_detail_frame() {
     // detail, whose frame on the main view reaches about as far beyond the
     // crank circle as the offset's dimension is set; the dimension line ran
     // along the frame's edge.
-    let mut options = FigureOptions::default();
-    options.mechanism = Some(SliderCrank::new(1.0, 4.0, 1.5).unwrap());
-    options.angle = Some(Angle::deg(300.0));
-    let name = FigureName::from_name("ng-fig-1-torque").unwrap();
-    let svg = to_svg(&name.figure(&options).unwrap());
+    let svg = figure("ng-fig-1-torque", (1.0, 4.0, 1.5), 300.0);
     let plate = Plate::read(&svg);
     let main = &plate.panels[0];
     assert_eq!(main.id, "panel-mechanism");

@@ -209,19 +209,35 @@ fn fit(ctx: &Ctx, band: f64) -> Layout {
         let (_, fit) = main_view(&ctx, band, fit::frame(&ctx));
         ctx.sizes = ctx.sizes.on_page(fit.scale());
     }
-    let frame = fit::frame(&ctx);
-    let (mut main, mut transform) = main_view(&ctx, band, frame);
     let page = ctx.scene.page();
     let width = page.width() - 2.0 * page.margin();
-    let mut detail = detail::detail(&ctx, transform.scale(), width);
+    with_detail(&ctx, band, fit::frame(&ctx), |scale| {
+        detail::detail(&ctx, scale, width)
+    })
+}
+
+/// The layout whose main view is fitted to the world `frame` (with the
+/// sizes of `ctx`), and the detail `details` gives at its scale; fitted
+/// once more where the offset's dimension needs room beside the detail's
+/// frame ([`beside_detail`]).
+fn with_detail(
+    ctx: &Ctx,
+    band: f64,
+    frame: Frame,
+    details: impl Fn(f64) -> Option<detail::Detail>,
+) -> Layout {
+    let (mut main, mut transform) = main_view(ctx, band, frame);
+    let mut detail = details(transform.scale());
     let grown = beside_detail(ctx.scene, frame, detail.as_ref(), transform.scale());
     if grown != frame {
-        (main, transform) = main_view(&ctx, band, grown);
-        detail = detail::detail(&ctx, transform.scale(), width);
+        (main, transform) = main_view(ctx, band, grown);
+        detail = details(transform.scale());
     }
-    ctx.sizes.fitted = Some(grown);
     Layout {
-        sizes: ctx.sizes,
+        sizes: Sizes {
+            fitted: Some(grown),
+            ..ctx.sizes
+        },
         band,
         main,
         transform,
@@ -261,33 +277,15 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
             c.sizes = sizes;
         }
     }
-    let frame = union(&ctxs);
     let page = scene.page();
     let width = page.width() - 2.0 * page.margin();
-    let held_detail = |frame: Frame| {
-        let (main, transform) = main_view(&ctxs[0], band, frame);
+    with_detail(&ctxs[0], band, union(&ctxs), |scale| {
         let details: Vec<detail::Detail> = ctxs
             .iter()
-            .filter_map(|c| detail::detail(c, transform.scale(), width))
+            .filter_map(|c| detail::detail(c, scale, width))
             .collect();
-        let detail = detail::union(&details, transform.scale(), width);
-        (main, transform, detail)
-    };
-    let (mut main, mut transform, mut detail) = held_detail(frame);
-    let grown = beside_detail(scene, frame, detail.as_ref(), transform.scale());
-    if grown != frame {
-        (main, transform, detail) = held_detail(grown);
-    }
-    Layout {
-        sizes: Sizes {
-            fitted: Some(grown),
-            ..ctxs[0].sizes
-        },
-        band,
-        main,
-        transform,
-        detail,
-    }
+        detail::union(&details, scale, width)
+    })
 }
 
 /// The world `frame` of the main view grown on the side of the offset's
