@@ -1,4 +1,7 @@
 //! The `slider-crank` command line.
+// As in the library: no `unwrap` or `expect` without a proof it cannot
+// fail (`tests/panic_free.rs`).
+#![deny(clippy::unwrap_used, clippy::expect_used)]
 
 mod cli;
 

@@ -98,6 +98,8 @@ impl SliderCrank {
     /// The outer dead centre: crank and rod in one line, slider farthest out;
     /// θ = asin(e / (l + r)), 0° in line. As every [`Angle`] it is reduced
     /// to [0°, 360°): with a negative offset it lies just below 360°.
+    // cannot fail: asin of e / (l + r), |e| < l + r, is finite: Angle::from_radians takes it.
+    #[allow(clippy::expect_used)]
     pub fn outer_dead_centre(&self) -> Angle {
         Angle::from_radians(self.dead_centres().0).expect("asin of a ratio below 1 is finite")
     }
@@ -105,6 +107,8 @@ impl SliderCrank {
     /// The inner dead centre: rod folded over the crank, slider nearest;
     /// θ = π + asin(e / (l − r)), 180° in line. With an offset the two dead
     /// centres are not 180° apart.
+    // cannot fail: π + asin of e / (l − r), |e| < l − r, is finite: Angle::from_radians takes it.
+    #[allow(clippy::expect_used)]
     pub fn inner_dead_centre(&self) -> Angle {
         Angle::from_radians(self.dead_centres().1).expect("asin of a ratio below 1 is finite")
     }

@@ -281,14 +281,15 @@ pub fn acceleration_factor_table(ratios: &[f64], angles: &[f64]) -> Result<Table
     let mut rows = Vec::new();
     for &d in angles {
         let a = Angle::from_degrees(d)?;
+        // `plain`: 1e308° in exponent form, not 309 digits.
         let label = if d == 0.0 {
             "0° or 360°".to_string()
         } else if a.degrees() == 180.0 || d == 180.0 {
-            format!("{d}°")
+            format!("{}°", plain(d))
         } else if (0.0..180.0).contains(&d) {
-            format!("{d}° or {}°", 360.0 - d)
+            format!("{}° or {}°", plain(d), plain(360.0 - d))
         } else {
-            format!("{d}°")
+            format!("{}°", plain(d))
         };
         let mut row = vec![label];
         for &n in ratios {
@@ -531,6 +532,28 @@ impl TableName {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every double, subnormals and the largest included: at most 15
+    /// digits before the point, exponent form beyond, never "inf".
+    #[test]
+    fn every_double_is_fixed_within_a_width() {
+        let mut x = 5e-324_f64;
+        while x.is_finite() {
+            for v in [x, -x] {
+                for decimals in [0, 3, 17] {
+                    let s = fixed(v, decimals);
+                    assert!(s.len() <= 17 + decimals + 7, "{v:e}: {s}");
+                    // Rounded, 1.7976931348623157e308 to 0 decimals
+                    // reads "2e308": beyond the largest double, but text.
+                    assert!(s.parse::<f64>().is_ok(), "{v:e}: {s}");
+                    assert!(!s.contains("inf") && !s.contains("NaN"), "{v:e}: {s}");
+                }
+            }
+            x *= 1.37;
+        }
+        assert_eq!(fixed(f64::MAX, 3), "1.798e308");
+        assert_eq!(fixed(5e-324, 3), "0.000");
+    }
 
     #[test]
     fn negative_zero_is_not_printed() {

@@ -1,6 +1,6 @@
 //! Bounded twins of the fuzz targets in `fuzz/` (run there with
 //! `cargo fuzz`): the same properties (`tests/common/hostile.rs`) over 256
-//! generated inputs each, fast enough (under a second) for every CI run.
+//! generated inputs each, fast enough for every CI run.
 
 #[path = "common/hostile.rs"]
 mod hostile;
@@ -91,6 +91,95 @@ proptest! {
         );
         hostile::scene_toml(&toml);
     }
+}
+
+/// One `key = value` line of a scene file for a named figure, or none.
+fn key_line(
+    key: &'static str,
+    value: impl Strategy<Value = String>,
+) -> impl Strategy<Value = Option<String>> {
+    prop::option::of(value.prop_map(move |v| format!("{key} = {v}\n")))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 256, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// The twin of the `named_scene` fuzz target: every named figure, each
+    /// of its keys given or not (a figure refuses keys it does not use).
+    #[test]
+    fn named_scene_files_to_figures(
+        which in 0usize..64,
+        top in (
+            key_line("angle", number().prop_map(toml_number)),
+            key_line("rpm", number().prop_map(toml_number)),
+            key_line("omega", number().prop_map(toml_number)),
+            key_line("torque", number().prop_map(toml_number)),
+            key_line("mirror", prop::sample::select(vec!["true".to_string(), "false".into()])),
+            key_line("style", prop::sample::select(vec!["\"textbook\"".to_string(), "\"handout\"".into(), "\"x\"".into()])),
+            key_line("title", "\"[ -~]{0,12}\""),
+        ),
+        mechanism in prop::option::of((number(), number(), number())),
+        page in prop::option::of((number(), number())),
+        junk in "[ -~\n]{0,30}",
+    ) {
+        let name = slider_crank::FigureName::ALL[which % slider_crank::FigureName::ALL.len()].name();
+        let (a, b, c, d, e, f, g) = top;
+        let mut text = format!("{name}\n");
+        for line in [a, b, c, d, e, f, g].into_iter().flatten() {
+            text.push_str(&line);
+        }
+        text.push_str(&junk);
+        if let Some((r, l, o)) = mechanism {
+            text.push_str(&format!(
+                "\n[mechanism]\ncrank = {}\nrod = {}\noffset = {}\n",
+                toml_number(r), toml_number(l), toml_number(o)
+            ));
+        }
+        if let Some((w, h)) = page {
+            text.push_str(&format!("\n[page]\nwidth = {}\nheight = {}\n", toml_number(w), toml_number(h)));
+        }
+        hostile::named_scene(&text);
+    }
+}
+
+/// The seeds of the `named_scene` fuzz target, each a hostile input found
+/// by hand: the chain at the largest lengths (a panic: `expect("a curved
+/// slot")`), an incline tilted 1e300°, an empty list of layers, a page
+/// narrower than its margins.
+#[test]
+fn the_named_scene_seeds_hold() {
+    for text in [
+        include_str!("../fuzz/corpus/named_scene/chains-near-the-largest-length.toml"),
+        include_str!("../fuzz/corpus/named_scene/velocity-diagrams.toml"),
+        include_str!("../fuzz/corpus/named_scene/incline-huge-angle.toml"),
+        include_str!("../fuzz/corpus/named_scene/no-layers.toml"),
+        include_str!("../fuzz/corpus/named_scene/coupler-at-the-limit.toml"),
+        include_str!("../fuzz/corpus/named_scene/calibration-narrow-page.toml"),
+    ] {
+        hostile::named_scene(text);
+    }
+}
+
+/// Fig. 60 with a rod and crank near the largest length: its slot's
+/// radius, 0.8 (l + r + |e|), passes that length; the figure was a panic
+/// (`expect("a curved slot")`), it is now refused naming the rod.
+#[test]
+fn a_chain_figure_beyond_the_largest_slot_is_refused_not_a_panic() {
+    let file = slider_crank::SceneFile::from_toml(
+        "figure = \"fig-60-chains\"\n[mechanism]\ncrank = 4e99\nrod = 1e100\n",
+    )
+    .unwrap();
+    let e = file.figure().unwrap_err().to_string();
+    assert!(
+        e.starts_with("rod = 1e100 is out of range: fig-60-chains draws a slot of radius 0.8 (l + r + |e|) = 1.12e100"),
+        "{e}"
+    );
+    // Just below the bound it is drawn.
+    let file = slider_crank::SceneFile::from_toml(
+        "figure = \"fig-60-chains\"\n[mechanism]\ncrank = 2e99\nrod = 1e100\n",
+    )
+    .unwrap();
+    hostile::assert_svg_numbers_finite(&slider_crank::render::to_svg(&file.figure().unwrap()));
 }
 
 /// A float as TOML writes it (`inf`, `nan`, exponent form).

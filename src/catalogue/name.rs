@@ -195,6 +195,8 @@ impl FigureName {
     /// the textbook's §35 engine (r = 0.5 ft, l = 3 ft) except for
     /// `fig-61-centrodes`, drawn with a shorter rod (l = 1.25 ft, n = 2.5)
     /// on which the centrodes are far enough apart to read.
+    // cannot fail: the lengths are constants above whose rods exceed crank + offset; `every_named_figure_builds` builds each.
+    #[allow(clippy::expect_used)]
     pub fn mechanism(&self) -> SliderCrank {
         let m = match self {
             _ if self.is_ng() => SliderCrank::in_line(25.0, 72.0),
@@ -208,6 +210,21 @@ impl FigureName {
             _ => SliderCrank::in_line(0.5, 3.0),
         };
         m.expect("the catalogue's mechanisms are valid")
+    }
+
+    /// The angle for this figure from `degrees` as the user gave them:
+    /// a crank angle (any finite number, reduced to a turn), or for
+    /// `ng-fig-2-incline` the plane's tilt, strictly between 0° and 90°
+    /// and refused as given (`1e300` is not the tilt 0° it reduces to).
+    pub fn angle(&self, degrees: f64) -> Result<Angle> {
+        if *self == FigureName::NgFig2Incline && !(degrees > 0.0 && degrees < 90.0) {
+            return Err(Error::OutOfRange {
+                name: "angle",
+                value: degrees,
+                reason: "the tilt of the plane is between 0° and 90°".into(),
+            });
+        }
+        Angle::from_degrees(degrees)
     }
 
     /// The crank angle it is drawn at (the pose whose construction a
@@ -267,6 +284,8 @@ impl FigureName {
     }
 
     /// The page it is drawn on.
+    // cannot fail: the sizes are constants between 250 and 900 with a margin of 16.
+    #[allow(clippy::expect_used)]
     pub fn page(&self) -> Page {
         let (w, h) = match self {
             FigureName::Fig62Displacement => (760.0, 250.0),
@@ -384,6 +403,8 @@ impl FigureName {
         if self.is_diagram() {
             return None;
         }
+        // cannot fail: the figures' angles are finite constants.
+        #[allow(clippy::expect_used)]
         let angle = Angle::from_degrees(self.angle_degrees()).expect("finite");
         let scene = Scene::new(self.mechanism(), angle)
             .with_name(self.name())

@@ -241,6 +241,8 @@ fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
 }
 
 fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
+    // cannot fail: a diagram's file returned above; a mechanism figure has a scene.
+    #[allow(clippy::expect_used)]
     let mut scene = match &file.figure {
         Some(name) => FigureName::from_name(name.get_ref())?
             .scene()
@@ -291,6 +293,10 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         (None, None) => {}
     }
     if let Some(layers) = &file.layers {
+        // An empty list would draw a blank page: refused as `--layers ''`.
+        if layers.get_ref().is_empty() {
+            return Err(located(text, layers.span(), "layers names no layer"));
+        }
         scene = scene.with_layers(layers.get_ref().iter().copied());
     }
     if let Some(s) = file.style {
@@ -382,7 +388,7 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
         options.mechanism = Some(built);
     }
     if let Some(a) = &file.angle {
-        let angle = at(text, a.span(), Angle::from_degrees(*a.get_ref()))?;
+        let angle = at(text, a.span(), name.angle(*a.get_ref()))?;
         refuse(
             FigureOptions {
                 angle: Some(angle),

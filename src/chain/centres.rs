@@ -145,6 +145,8 @@ impl ChainCentres {
         use Link::*;
         let triples = [(A, B, C), (A, B, D), (A, C, D), (B, C, D)];
         triples.map(|(x, y, z)| {
+            // cannot fail: the triples name distinct links, and `centre` is `None` only for a link with itself.
+            #[allow(clippy::expect_used)]
             let get = |p, q| self.centre(p, q).expect("distinct links");
             kennedy_residual(&get(x, y), &get(y, z), &get(x, z))
         })
@@ -230,6 +232,8 @@ impl SlotConstruction {
     }
 
     /// D = O_bd (a point, or at infinity where CB is parallel to the lever).
+    // cannot fail: B and D are distinct links.
+    #[allow(clippy::expect_used)]
     pub fn d(&self) -> Intersection {
         self.centres.centre(Link::B, Link::D).expect("distinct")
     }

@@ -61,6 +61,8 @@ impl Inversion {
     }
 
     /// Its number, 1 to 4.
+    // cannot fail: ALL lists every variant.
+    #[allow(clippy::expect_used)]
     pub fn number(&self) -> u32 {
         Self::ALL.iter().position(|i| i == self).expect("listed") as u32 + 1
     }
@@ -147,6 +149,8 @@ impl InvertedChain {
             return None;
         }
         let phi = |d: f64| {
+            // cannot fail: `d` is one of the finite angles of the sweep below.
+            #[allow(clippy::expect_used)]
             let a = Angle::from_degrees(d).expect("finite");
             self.mechanism.pose(a).obliquity()
         };

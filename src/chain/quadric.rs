@@ -327,7 +327,16 @@ pub struct QuadricPose {
 
 impl QuadricPose {
     fn new(chain: QuadricChain, angle: Angle, mode: Assembly) -> Result<Self> {
-        let (a, b, c, d) = (chain.a, chain.b, chain.c, chain.d);
+        // Lengths scaled by a power of two near the longest (exact), so
+        // that the products of four lengths below neither overflow nor
+        // underflow at any scale; the pose is scaled back at the end.
+        let scale = unit_scale(chain.a.max(chain.b).max(chain.c).max(chain.d));
+        let (a, b, c, d) = (
+            chain.a / scale,
+            chain.b / scale,
+            chain.c / scale,
+            chain.d / scale,
+        );
         let (sin, cos) = (angle.sin(), angle.cos());
         let pin = Point::new(a * cos, a * sin);
         // 1 ± cos θ without cancellation.
@@ -376,13 +385,13 @@ impl QuadricPose {
             (along, back, height.min(b))
         };
         let side = perp(&unit) * (height * mode.sign());
-        let coupler = unit * along + side;
-        let lever = unit * back + side;
+        let coupler = (unit * along + side) * scale;
+        let lever = (unit * back + side) * scale;
         Ok(Self {
             chain,
             angle,
             mode,
-            b: pin,
+            b: pin * scale,
             coupler,
             lever,
         })
@@ -510,6 +519,12 @@ impl QuadricPose {
             lever_acceleration: 0.0,
         })
     }
+}
+
+/// The power of two nearest below `longest` (a positive, finite length):
+/// dividing by it is exact and brings the longest link into [1, 2).
+fn unit_scale(longest: f64) -> f64 {
+    2f64.powi(longest.log2().floor() as i32)
 }
 
 fn describe(chain: &QuadricChain) -> String {

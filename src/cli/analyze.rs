@@ -147,7 +147,7 @@ fn fmt_point(p: Option<Point>) -> String {
 fn to_text(report: &Report, units: &Units) -> String {
     let r = &report.reading;
     let length = units.length();
-    let mut out = format!("θ = {}°\n", r.pose.angle().degrees());
+    let mut out = format!("θ = {}°\n", plain(r.pose.angle().degrees()));
     out.push_str(&format!(
         "  points ({length}): C crank centre, B crank pin, A cross-head, D instantaneous centre of the rod,\n          \
          E where the rod produced meets the perpendicular to the stroke through C,\n          \
@@ -243,7 +243,8 @@ fn to_text(report: &Report, units: &Units) -> String {
                 fixed(f, 10, 0)
             )),
             Some(Friction::SelfLocking(k)) => out.push_str(&format!(
-                "    with friction F_p'        self-locking (μ|tan φ| = {k:.6} ≥ 1)\n"
+                "    with friction F_p'        self-locking (μ|tan φ| = {} ≥ 1)\n",
+                fixed(k, 6, 0)
             )),
             None => {}
         }

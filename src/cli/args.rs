@@ -191,6 +191,7 @@ impl AngleSpec {
     /// steps reach it; STEP may be negative to count down); at most
     /// [`MAX_ANGLES`] angles.
     pub fn parse(spec: &str) -> Result<Self> {
+        no_control(spec, "angles")?;
         let mut parts = Vec::new();
         let mut count = 0usize;
         for part in spec.split(',') {
@@ -223,8 +224,23 @@ impl AngleSpec {
 
     /// Whether there is more than one angle or the text asked for a list.
     pub fn is_list(&self) -> bool {
-        self.parts.len() > 1 || matches!(self.parts[0], AnglePart::Range { .. })
+        self.parts.len() > 1 || matches!(self.parts.first(), Some(AnglePart::Range { .. }))
     }
+}
+
+/// Refuses a list or range with a line break, tab or other control
+/// character inside (`1,2<newline>,3,4`): spaces around the numbers are
+/// what a user types; a line break is a script's mistake. The text is
+/// echoed escaped, on one line.
+fn no_control(spec: &str, what: &str) -> Result<()> {
+    if spec.chars().any(char::is_control) {
+        let escaped: String = spec.escape_debug().collect();
+        return Err(Error::Parse(format!(
+            "invalid {what} '{}': a list holds no line break, tab or other control character",
+            shorten(&escaped)
+        )));
+    }
+    Ok(())
 }
 
 /// At most 40 characters of a user's text, for a message.
@@ -281,6 +297,7 @@ fn parse_angles(spec: &str) -> Result<Vec<f64>> {
 
 /// Parses a comma-separated list of numbers (`inf` allowed where `allow_inf`).
 pub fn parse_list(spec: &str, name: &str, allow_inf: bool) -> Result<Vec<f64>> {
+    no_control(spec, &format!("{name}s"))?;
     spec.split(',')
         .map(|t| {
             let t = t.trim();

@@ -32,7 +32,11 @@ pub struct ChainArgs {
     /// A quadric crank chain instead of the engine (Fig. 60 a): the lengths
     /// of crank a, coupler b, lever c and frame d, comma-separated (in place
     /// of --crank, --rod and --offset)
-    #[arg(long, value_name = "A,B,C,D", conflicts_with = "inversion")]
+    #[arg(
+        long,
+        value_name = "A,B,C,D",
+        conflicts_with_all = ["inversion", "crank", "rod", "offset"]
+    )]
     pub links: Option<String>,
     /// Assembly mode of the quadric chain (with --links)
     #[arg(long, value_enum, default_value_t = AssemblyArg::Open, requires = "links")]
@@ -250,7 +254,8 @@ pub fn analyze(
     } else if let Some((q, mode)) = chain.quadric()? {
         Box::new(move |d| quadric_json(&q, mode, d, omega))
     } else {
-        let n = chain.inversion.expect("is_set");
+        // `is_set` with neither of the others: the inversion is given.
+        let n = chain.inversion.unwrap_or(1);
         let inv = InvertedChain::new(m, Inversion::from_number(n)?);
         Box::new(move |d| inversion_json(&inv, d, omega))
     };
@@ -342,10 +347,10 @@ pub fn check(
         (
             format!(
                 "check: quadric chain a = {}, b = {}, c = {}, d = {} ({}), both assembly modes",
-                q.crank(),
-                q.coupler(),
-                q.lever(),
-                q.frame(),
+                plain(q.crank()),
+                plain(q.coupler()),
+                plain(q.lever()),
+                plain(q.frame()),
                 grashof_name(q.grashof())
             ),
             quadric_sweep(&q, samples),
@@ -353,19 +358,22 @@ pub fn check(
     } else {
         return Ok(None);
     };
-    let mut out = format!("{title}, tolerance {tolerance:e}\n\n");
+    let mut out = format!(
+        "{title}\na difference passes when at most {tolerance:.3e} × κ, κ the condition number of the quantity at that pose (1 far from a toggle or the slot's limit)\n\n"
+    );
     out.push_str(&format!(
-        "{:<40}{:>14}{:>16}{:>10}  result\n",
-        "quantity (scaled difference)", "worst", "at θ (°)", "poses"
+        "{:<40}{:>14}{:>12}{:>16}{:>10}  result\n",
+        "quantity (scaled difference)", "worst", "κ there", "at θ (°)", "poses"
     ));
     let mut ok = true;
     for row in &rows {
-        let pass = row.worst <= tolerance;
+        let pass = row.passes(tolerance);
         ok &= pass;
         out.push_str(&format!(
-            "{:<40}{:>14.3e}{:>16.6}{:>10}  {}\n",
+            "{:<40}{:>14.3e}{:>12.3e}{:>16.6}{:>10}  {}\n",
             row.name,
             row.worst,
+            row.condition,
             row.at_degrees,
             row.poses,
             if pass { "ok" } else { "FAIL" }

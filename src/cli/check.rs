@@ -18,6 +18,11 @@ pub const DEFAULT_ULPS: f64 = 4.0;
 /// formulations.
 pub const CHAIN_TOLERANCE: f64 = 1e-12;
 
+/// The largest allowance: a scaled difference of 1 is the size of the
+/// quantity (beyond it everything passes, and T/ε overflows to infinity
+/// near 1e308).
+pub const MAX_TOLERANCE: f64 = 1.0;
+
 /// Most poses one check sweeps (about a second of work).
 pub const MAX_SAMPLES: usize = 1_000_000;
 
@@ -46,6 +51,16 @@ pub struct CheckArgs {
     pub chain: super::chain::ChainArgs,
 }
 
+/// An allowance in ulps: one decimal up to a million (`4.0`), exponent
+/// form beyond (`4.504e15` for a tolerance of 1, not 16 digits).
+fn ulps_text(ulps: f64) -> String {
+    if ulps < 1e6 {
+        format!("{ulps:.1}")
+    } else {
+        format!("{ulps:.3e}")
+    }
+}
+
 /// Runs the check: the report, and whether every quantity passed.
 pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
     let m = args.mechanism.mechanism()?;
@@ -54,6 +69,13 @@ pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
         return Err(Error::NotPositive {
             name: "tolerance",
             value: tolerance,
+        });
+    }
+    if tolerance > MAX_TOLERANCE {
+        return Err(Error::OutOfRange {
+            name: "tolerance",
+            value: tolerance,
+            reason: "give at most 1: a difference of 1 in scaled units is the size of the quantity itself".into(),
         });
     }
     if args.samples == 0 || args.samples > MAX_SAMPLES {
@@ -72,12 +94,13 @@ pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
     let allowed = tolerance / f64::EPSILON;
     let mut out = format!(
         "check: r = {}, l = {}, e = {} (n = {}), {} poses\n\
-         a difference passes when at most {tolerance:.3e} × κ ({allowed:.1} ulps × κ, κ the condition number of the quantity at that pose)\n\n",
+         a difference passes when at most {tolerance:.3e} × κ ({} ulps × κ, κ the condition number of the quantity at that pose)\n\n",
         plain(m.crank()),
         plain(m.rod()),
         plain(m.offset()),
         plain(m.ratio()),
         report.poses,
+        ulps_text(allowed),
     );
     out.push_str(&format!(
         "{:<40}{:>12}{:>10}{:>12}{:>14}  result\n",

@@ -7,7 +7,7 @@ use slider_crank::catalogue::{FigureOptions, Fit};
 use slider_crank::figure::{Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
-use slider_crank::{Angle, Error, Figure, FigureName, Layer, Notation, Result, SliderCrank, Style};
+use slider_crank::{Error, Figure, FigureName, Layer, Notation, Result, SliderCrank, Style};
 use std::path::{Path, PathBuf};
 
 /// Draw a named figure: a mechanism figure of the seeds or a diagram.
@@ -91,11 +91,11 @@ pub struct FigureFlags {
     /// Draw the mechanism mirrored, the cylinder on the left, as the
     /// textbook's figures are by default (mechanism figures,
     /// fig-61-centrodes, fig-64-velocity-diagrams, coupler-curves)
-    #[arg(long, overrides_with = "no_mirror")]
+    #[arg(long, conflicts_with = "no_mirror")]
     pub mirror: bool,
     /// Draw the mechanism unmirrored, the cylinder on the right, as Ng's
     /// figures are by default
-    #[arg(long, overrides_with = "mirror")]
+    #[arg(long)]
     pub no_mirror: bool,
     /// Page width: page units (px, 96 to the inch) like 800, or a size in
     /// mm or in like 120mm or 4.5in, after which the SVG gives its width
@@ -169,7 +169,7 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     let mut options = FigureOptions::default();
     options.mechanism = mechanism;
     options.omega = omega;
-    options.angle = args.angle.map(Angle::from_degrees).transpose()?;
+    options.angle = args.angle.map(|d| name.angle(d)).transpose()?;
     options.style = args.style;
     options.font = args.font;
     options.layers = layers;

@@ -52,7 +52,7 @@ pub struct HandoutArgs {
     #[arg(
         long,
         value_name = "N",
-        conflicts_with_all = ["crank", "rod", "offset", "angle", "rpm", "omega"]
+        conflicts_with_all = ["crank", "rod", "offset", "angle", "rpm", "omega", "torque"]
     )]
     pub class: Option<usize>,
     /// The seed the class's engines are drawn from: the same seed gives

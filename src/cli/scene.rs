@@ -54,6 +54,8 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
     if let Some(name) = &args.print_default {
         return out.text(&name.scene_toml());
     }
+    // cannot fail: clap requires FILE unless --print-default, which returned above.
+    #[allow(clippy::expect_used)]
     let path = args
         .file
         .as_ref()

@@ -59,13 +59,8 @@ pub struct TableArgs {
     pub rod: Option<f64>,
     /// Offset e of the line of stroke for kinematics and forces, in the
     /// unit of --crank (0: in line)
-    #[arg(
-        long,
-        value_name = "E",
-        default_value_t = 0.0,
-        allow_hyphen_values = true
-    )]
-    pub offset: f64,
+    #[arg(long, value_name = "E", allow_hyphen_values = true)]
+    pub offset: Option<f64>,
     /// Crank speed for kinematics, in revolutions per minute, positive
     /// counter-clockwise (or give --omega) [default: 250]
     #[arg(
@@ -103,7 +98,7 @@ fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
     MechanismArgs {
         crank: args.crank.unwrap_or(crank),
         rod: args.rod.unwrap_or(rod),
-        offset: args.offset,
+        offset: args.offset.unwrap_or(0.0),
     }
     .mechanism()
 }
@@ -111,6 +106,12 @@ fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
 /// Runs the subcommand. Every table is written a row at a time: memory
 /// does not grow with the number of angles.
 pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
+    if let Some(bad) = unused(args) {
+        return Err(Error::Parse(format!(
+            "table {} does not use {bad}",
+            table_name(args.name)
+        )));
+    }
     let ratios = args
         .n
         .as_deref()
@@ -202,6 +203,58 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
             write_rows(format, &head, rows, out)
         }
     }
+}
+
+/// The table's name as typed (`acceleration-factor`).
+fn table_name(name: TableName) -> String {
+    name.to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_string())
+}
+
+/// The first option given that the table does not use, named as on the
+/// command line: a table refuses what it would silently ignore (the
+/// ratio tables take no mechanism, speed, load or units; kinematics no
+/// ratios, load or force unit; forces no ratios or speed).
+fn unused(args: &TableArgs) -> Option<&'static str> {
+    let given = [
+        ("--n", args.n.is_some()),
+        ("--crank", args.crank.is_some()),
+        ("--rod", args.rod.is_some()),
+        ("--offset", args.offset.is_some()),
+        ("--rpm", args.rpm.is_some()),
+        ("--omega", args.omega.is_some()),
+        ("--torque", args.torque.is_some()),
+        ("--friction", args.friction.is_some()),
+        ("--decimals", args.decimals.is_some()),
+        ("--unit", args.units.length.is_some()),
+        ("--force-unit", args.units.force.is_some()),
+    ];
+    let used: &[&str] = match args.name {
+        TableName::Obliquity | TableName::AccelerationFactor => &["--n"],
+        TableName::Kinematics => &[
+            "--crank",
+            "--rod",
+            "--offset",
+            "--rpm",
+            "--omega",
+            "--decimals",
+            "--unit",
+        ],
+        TableName::Forces => &[
+            "--crank",
+            "--rod",
+            "--offset",
+            "--torque",
+            "--friction",
+            "--decimals",
+            "--unit",
+            "--force-unit",
+        ],
+    };
+    given
+        .into_iter()
+        .find(|(flag, given)| *given && !used.contains(flag))
+        .map(|(flag, _)| flag)
 }
 
 /// Writes the rows as they are computed under the title and headers of

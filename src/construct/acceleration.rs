@@ -31,6 +31,8 @@ impl AccelerationPoints {
         let rod_dir = b - a;
         let perpendicular = Line::from_parts(f, Vector::new(-rod_dir.y, rod_dir.x));
         let through_c = Line::from_parts(pose.c(), Vector::new(1.0, 0.0));
+        // cannot fail: the perpendicular to the rod is horizontal only if the rod is vertical, which w > 0 rules out (see VelocityLine).
+        #[allow(clippy::expect_used)]
         let g = perpendicular
             .intersect_eps(&through_c, 0.0)
             .point()

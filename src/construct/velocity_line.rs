@@ -22,6 +22,8 @@ impl VelocityLine {
         let rod = Line::from_parts(pose.b(), pose.a() - pose.b());
         let vertical = Line::from_parts(pose.c(), Vector::new(0.0, 1.0));
         // Exactly-parallel test only: the rod is never vertical.
+        // cannot fail: for a crank that turns fully (l > r + |e|) the rod's run w = √((l − h)(l + h)) > 0, so the rod is never parallel to the vertical through C.
+        #[allow(clippy::expect_used)]
         let e = rod
             .intersect_eps(&vertical, 0.0)
             .point()

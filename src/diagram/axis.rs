@@ -95,7 +95,12 @@ fn decimals(step: f64) -> usize {
 /// `v` with `decimals` decimals and a true minus sign (U+2212); never
 /// "−0".
 pub fn format_number(v: f64, decimals: usize) -> String {
-    let s = format!("{:.*}", decimals, v);
+    // From 1e15 on in exponent form (`1.00e308`, not 309 digits).
+    let s = if v.abs() >= 1e15 {
+        format!("{:.*e}", decimals, v)
+    } else {
+        format!("{:.*}", decimals, v)
+    };
     let zero = s
         .trim_start_matches('-')
         .chars()
@@ -435,5 +440,27 @@ mod tests {
         assert_eq!(format_number(-0.0001, 2), "0.00");
         assert_eq!(format_number(-2.5, 1), "−2.5");
         assert_eq!(format_number(3.0, 0), "3");
+        assert_eq!(format_number(-1e308, 2), "−1.00e308");
+        // Every double in bounded width, a true minus, never "inf".
+        let mut x = 5e-324_f64;
+        while x.is_finite() {
+            for v in [x, -x] {
+                for decimals in [0, 2, 9] {
+                    let s = format_number(v, decimals);
+                    assert!(s.chars().count() <= 17 + decimals, "{v:e}: {s}");
+                    let text = s.replace('\u{2212}', "-");
+                    if let Some((mantissa, _)) = text.split_once('e') {
+                        assert!(v.abs() >= 1e15, "{v:e}: {s}");
+                        let m: f64 = mantissa.parse().unwrap();
+                        assert!((1.0..=10.0).contains(&m.abs()), "{v:e}: {s}");
+                    } else {
+                        let back: f64 = text.parse().unwrap();
+                        let half = 0.5 * 10f64.powi(-(decimals as i32));
+                        assert!((back - v).abs() <= half + 1e-15 * v.abs(), "{v:e}: {s}");
+                    }
+                }
+            }
+            x *= 1.37;
+        }
     }
 }

@@ -132,6 +132,8 @@ struct CharMetrics {
 }
 
 impl Face {
+    // cannot fail: only the faces compiled in are parsed (`bundled`), and the tests parse every one.
+    #[allow(clippy::expect_used)]
     fn parse(data: &'static [u8]) -> Face {
         let font = FontRef::new(data).expect("a bundled font parses");
         let m = font.metrics(Size::unscaled(), LocationRef::default());
@@ -167,6 +169,8 @@ impl Face {
 }
 
 /// The typst-assets face of that PostScript name, parsed.
+// cannot fail: the names asked for are the two of `Font`, which typst-assets (a pinned version) ships; the tests load both.
+#[allow(clippy::expect_used)]
 fn bundled(postscript_name: &str) -> Face {
     let data = typst_assets::fonts()
         .find(|data| {

@@ -159,9 +159,12 @@ impl FromStr for PageLength {
 
 impl fmt::Display for PageLength {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // In exponent form far from a page's sizes (`5e-324mm`, not 324
+        // digits).
+        let value = crate::error::plain(self.value);
         match self.unit {
-            PageUnit::Px => write!(f, "{}", self.value),
-            u => write!(f, "{}{u}", self.value),
+            PageUnit::Px => write!(f, "{value}"),
+            u => write!(f, "{value}{u}"),
         }
     }
 }

@@ -12,6 +12,8 @@ use crate::{FigureName, Layer};
 /// engine, pose, speed and units; `layers` in place of the figure's own
 /// where given. With the handout's torque for Ng's figure.
 pub(super) fn mechanism(h: &Handout, name: FigureName, layers: Option<&[Layer]>) -> Result<Figure> {
+    // cannot fail: the handout passes mechanism figures only (the constants of this module), and every mechanism figure has a scene.
+    #[allow(clippy::expect_used)]
     let scene = name
         .scene()
         .expect("the handout draws mechanism figures by a scene");

@@ -27,7 +27,14 @@ impl std::fmt::Display for OnGrid {
             return f.write_str("0");
         }
         if n.abs() >= 1e12 {
-            return write!(f, "{}", n / (1.0 / GRID));
+            // From 1e15 units on in exponent form: `{}` writes every digit
+            // of a double (309 for 1e308).
+            let units = n / (1.0 / GRID);
+            return if units.abs() >= 1e15 {
+                write!(f, "{units:e}")
+            } else {
+                write!(f, "{units}")
+            };
         }
         // Hundredths as an integer, written without float formatting:
         // below 1e10 units the decimal of n / 100 is the shortest that
@@ -78,7 +85,17 @@ pub fn fmt_coefficient(x: f64) -> String {
         6
     };
     let v: f64 = format!("{x:.*}", decimals as usize).parse().unwrap_or(0.0);
-    if v == 0.0 { "0".into() } else { format!("{v}") }
+    if v == 0.0 {
+        return "0".into();
+    }
+    // Fixed notation within MAX_FIXED_WIDTH characters (`0.000000001`),
+    // exponent form beyond (`1e-97`, not 97 zeros).
+    let fixed = format!("{v}");
+    if fixed.len() > crate::error::MAX_FIXED_WIDTH {
+        format!("{v:e}")
+    } else {
+        fixed
+    }
 }
 
 #[cfg(test)]
@@ -98,6 +115,35 @@ mod tests {
         assert_eq!(fmt_coefficient(0.4), "0.4");
         assert_eq!(fmt_coefficient(1e-9), "0.000000001");
         assert_eq!(fmt_coefficient(0.0), "0");
+    }
+
+    /// Every double, subnormals and the largest included: finite text of
+    /// bounded width that reads back to the value (on the grid for `fmt`,
+    /// to 7 significant digits for `fmt_coefficient`); was 309 digits for
+    /// 1e308 and 300 zeros for a coefficient of 1e-300.
+    #[test]
+    fn every_double_is_written_within_a_width() {
+        let mut x = 5e-324_f64;
+        while x.is_finite() {
+            for v in [x, -x] {
+                let (grid, coefficient) = (fmt(v), fmt_coefficient(v));
+                for s in [&grid, &coefficient] {
+                    assert!(s.len() <= 26, "{v:e}: {s}");
+                    assert!(s.parse::<f64>().is_ok_and(f64::is_finite), "{v:e}: {s}");
+                }
+                let back: f64 = grid.parse().unwrap();
+                assert!((back - v).abs() <= 0.005 + 1e-15 * v.abs(), "{v:e}: {grid}");
+                let back: f64 = coefficient.parse().unwrap();
+                assert!(
+                    (back - v).abs() <= 1e-6 * v.abs().max(1e-6),
+                    "{v:e}: {coefficient}"
+                );
+            }
+            x *= 1.37;
+        }
+        assert_eq!(fmt(f64::MAX), "1.7976931348623157e308");
+        assert_eq!(fmt_coefficient(1e-300), "1e-300");
+        assert_eq!(fmt_coefficient(5e-324), "0");
     }
 
     #[test]

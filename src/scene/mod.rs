@@ -24,7 +24,7 @@ pub use layer::Layer;
 pub use notation::Notation;
 
 use crate::construct::CouplerPoint;
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Result, finite, plain, positive};
 use crate::figure::Figure;
 use crate::figure::Font;
 use crate::figure::Style;
@@ -32,6 +32,24 @@ use crate::figure::{PageLength, PageUnit, Title};
 use crate::{Angle, SliderCrank, Unit, Units};
 
 use crate::diagram::DEFAULT_TOLERANCE;
+
+/// The bounds of a page's size, as a refusal gives them.
+const PAGE_RANGE: &str =
+    "a page is between 50 and 20000 units (px, 96 to the inch: 13.3 mm to 5.29 m)";
+
+/// Page units in a message: two decimals at most (`9.6`), exponent form
+/// far from the page's range (`1.8e-322`, not 0), words for an overflow
+/// (`1e308mm is more than the largest number of page units`).
+fn units_text(units: f64) -> String {
+    if (0.01..1e15).contains(&units) {
+        let text = format!("{units:.2}");
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else if units.is_finite() {
+        plain(units)
+    } else {
+        "more than the largest number of".into()
+    }
+}
 
 /// A page: its size and the margin kept clear on every side, in page units
 /// (SVG user units, 1/96 in), and the unit the SVG gives its size in.
@@ -56,16 +74,31 @@ impl Page {
                 return Err(Error::OutOfRange {
                     name,
                     value: v,
-                    reason: "a page is between 50 and 20000 units (px, 96 to the inch: 13.3 mm to 5.29 m)".into(),
+                    reason: PAGE_RANGE.into(),
                 });
             }
         }
-        if margin < 0.0 || width - 2.0 * margin < 50.0 || height - 2.0 * margin < 50.0 {
+        if margin < 0.0 {
             return Err(Error::OutOfRange {
                 name: "page margin",
                 value: margin,
                 reason: "the margin must be ≥ 0 and leave at least 50 units each way".into(),
             });
+        }
+        // A page too small for the margin names the side given, not the
+        // margin (which a figure sets itself: `--width 60` has no margin).
+        for (name, v) in [("page width", width), ("page height", height)] {
+            if v - 2.0 * margin < 50.0 {
+                return Err(Error::OutOfRange {
+                    name,
+                    value: v,
+                    reason: format!(
+                        "a margin of {} on each side leaves less than 50 units of drawing: give at least {}",
+                        plain(margin),
+                        plain(50.0 + 2.0 * margin)
+                    ),
+                });
+            }
         }
         Ok(Self {
             width,
@@ -87,27 +120,34 @@ impl Page {
             height.unit()
         };
         let page = Self::new(width.page_units(), height.page_units(), margin);
-        // A size out of bounds is named as it was given (`0.1in`).
-        let page = page.map_err(|e| match e {
-            Error::OutOfRange {
-                name: name @ ("page width" | "page height"),
-                reason,
-                ..
-            } => {
-                let given = if name == "page width" { width } else { height };
-                let units = format!("{:.2}", given.page_units());
-                let units = units.trim_end_matches('0').trim_end_matches('.');
+        // A size out of bounds is named as it was given (`0.1in`), also
+        // when its page units overflow (`1e308mm`, not "got inf").
+        let page = page.map_err(|e| {
+            let (name, reason) = match e {
                 Error::OutOfRange {
-                    name,
-                    value: given.value(),
-                    reason: if given.unit().is_physical() {
-                        format!("{given} is {units} page units; {reason}")
-                    } else {
-                        reason
-                    },
-                }
+                    name: name @ ("page width" | "page height"),
+                    reason,
+                    ..
+                } => (name, reason),
+                Error::NotFinite {
+                    name: name @ ("page width" | "page height"),
+                    ..
+                } => (name, PAGE_RANGE.to_string()),
+                e => return e,
+            };
+            let given = if name == "page width" { width } else { height };
+            Error::OutOfRange {
+                name,
+                value: given.value(),
+                reason: if given.unit().is_physical() {
+                    format!(
+                        "{given} is {} page units; {reason}",
+                        units_text(given.page_units())
+                    )
+                } else {
+                    reason
+                },
             }
-            e => e,
         })?;
         Ok(page.with_unit(unit))
     }
@@ -194,6 +234,8 @@ pub struct Scene {
 
 /// The poses a series is held over by default: the whole revolution,
 /// every degree.
+// cannot fail: whole degrees 0 to 359 are finite.
+#[allow(clippy::expect_used)]
 fn revolution() -> Vec<Angle> {
     (0..360)
         .map(|d| Angle::from_degrees(f64::from(d)).expect("finite"))
@@ -205,6 +247,8 @@ impl Scene {
     /// textbook style, not mirrored, on the default page, untitled; 250
     /// rpm, lengths in feet and forces in pounds-force
     /// ([`Units::FOOT_POUND`]), torque 1.
+    // cannot fail: the coupler point's fraction is the constant 0.5.
+    #[allow(clippy::expect_used)]
     pub fn new(mechanism: SliderCrank, angle: Angle) -> Self {
         Self {
             name: "scene".into(),

@@ -69,6 +69,19 @@ pub fn scene_toml(text: &str) {
     }
 }
 
+/// A scene file for a named figure, diagram or mechanism figure alike:
+/// the first line of `text` names it (a line that names none picks one by
+/// the sum of its bytes, so that every figure is reached), the rest is
+/// the file after its `figure = "NAME"`.
+pub fn named_scene(text: &str) {
+    let (first, body) = text.split_once('\n').unwrap_or((text, ""));
+    let name = FigureName::from_name(first.trim()).unwrap_or_else(|_| {
+        let sum: usize = first.bytes().map(usize::from).sum();
+        FigureName::ALL[sum % FigureName::ALL.len()]
+    });
+    scene_toml(&format!("figure = \"{}\"\n{body}", name.name()));
+}
+
 /// CSV text as `--data` of one of [`DATA_FIGURES`].
 pub fn csv_data(which: u8, text: &str) {
     let name = DATA_FIGURES[which as usize % DATA_FIGURES.len()];

@@ -13,7 +13,7 @@ use super::sketch::{Sketch, Slot};
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, CylindricChain};
 use crate::diagram::Plot;
-use crate::error::Result;
+use crate::error::{Error, Result, plain};
 use crate::figure::{Align, Figure, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::{Angle, SliderCrank};
@@ -48,8 +48,9 @@ fn slot_point(e: f64, rho: Option<f64>, s: f64, delta: f64) -> Point {
 /// The arc lengths the block's middle reaches over a turn.
 fn travel(chain: &CylindricChain) -> (f64, f64) {
     (0..720)
-        .map(|k| chain.pose(Angle::from_degrees(0.5 * k as f64).expect("finite")))
-        .map(|p| p.arc_position())
+        // Half degrees from 0 to 359.5 are finite angles: `ok()` drops none.
+        .filter_map(|k| Angle::from_degrees(0.5 * k as f64).ok())
+        .map(|a| chain.pose(a).arc_position())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), s| {
             (lo.min(s), hi.max(s))
         })
@@ -62,7 +63,21 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let rho = slot_radius(&m);
     let curved = CylindricChain::new(m, rho)?;
     let straight = CylindricChain::straight(m);
-    let (quadric, mode, turn) = curved.as_quadric().expect("a curved slot");
+    // The slot's radius is a lever of the quadric chain, whose lengths end
+    // at MAX_LENGTH as the mechanism's do: 0.8 (l + r + |e|) passes it for
+    // a rod and crank near the largest length.
+    let Some((quadric, mode, turn)) = curved.as_quadric() else {
+        return Err(Error::OutOfRange {
+            name: "rod",
+            value: l,
+            reason: format!(
+                "fig-60-chains draws a slot of radius 0.8 (l + r + |e|) = {}, beyond the largest length {}: give l + r + |e| at most {}",
+                plain(rho),
+                plain(crate::MAX_LENGTH),
+                plain(crate::MAX_LENGTH / 0.8)
+            ),
+        });
+    };
     let angle = ctx.angle;
     let qpose = quadric.pose(Angle::from_degrees(angle.degrees() - turn)?, mode)?;
     let rotate = |p: Point| {

@@ -47,6 +47,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     }
     let pose = ctx.pose();
     for (k, (t, id, frac, dash)) in POINTS.into_iter().enumerate() {
+        // cannot fail: the fractions of POINTS are constants in [0, 1].
+        #[allow(clippy::expect_used)]
         let q = CouplerPoint::new(t).expect("fractions in [0, 1]");
         let curve = move |deg: f64| -> Option<(Point, Vector)> {
             let pose = m.pose(Angle::from_degrees(deg).ok()?);

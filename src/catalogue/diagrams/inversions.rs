@@ -107,6 +107,8 @@ fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
         hi = hi.sup(&p);
     };
     for k in 0..240 {
+        // cannot fail: multiples of 1.5° below 360° are finite.
+        #[allow(clippy::expect_used)]
         let p = chain.pose(Angle::from_degrees(1.5 * k as f64).expect("finite"));
         let q = parts(m, &p);
         for x in [q.c, q.b, q.a, q.t, q.f] {
@@ -280,6 +282,8 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
 
     // The six centres, and Kennedy's lines that find O_bd and O_ac.
     let centres = *pose.centres();
+    // cannot fail: it is asked only for pairs of distinct links below.
+    #[allow(clippy::expect_used)]
     let get = |p: Link, q: Link| centres.centre(p, q).expect("distinct links");
     let o_bd = get(Link::B, Link::D);
     let o_ac = get(Link::A, Link::C);

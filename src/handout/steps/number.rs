@@ -11,9 +11,12 @@ pub(in crate::handout) fn show(x: f64) -> String {
         let digits = (3 - a.log10().floor() as i32).clamp(0, 12) as usize;
         format!("{x:.digits$}")
     } else {
-        let k = a.log10().floor() as i32;
-        let m = x / 10f64.powi(k);
-        format!("{m:.3} × 10{}", superscript(k))
+        // The mantissa and exponent as `{:e}` rounds them (4 figures): no
+        // division by 10ᵏ, which is 0 for subnormals (inf × 10⁻³²⁴) and
+        // rounds 9.9996e10 to "10.000 × 10¹⁰".
+        let e = format!("{x:.3e}");
+        let (m, k) = e.split_once('e').unwrap_or((&e, "0"));
+        format!("{m} × 10{}", superscript(k.parse().unwrap_or(0)))
     };
     text.replace('-', "−")
 }
@@ -55,5 +58,29 @@ mod tests {
         assert_eq!(short(250.0), "250");
         assert_eq!(short(0.5), "0.5");
         assert_eq!(short(1.5e10), "1.500 × 10¹⁰");
+    }
+
+    /// Every double, subnormals and the largest included, shows as a
+    /// mantissa of four figures in [1, 10) and an exponent (was "inf ×
+    /// 10⁻³²⁴" for 5e-324 and "10.000 × 10¹⁰" for 9.9996e10).
+    #[test]
+    fn every_double_shows_a_mantissa_below_ten() {
+        assert_eq!(show(5e-324), "4.941 × 10⁻³²⁴");
+        assert_eq!(show(-2.2250738585072014e-308), "−2.225 × 10⁻³⁰⁸");
+        assert_eq!(show(f64::MAX), "1.798 × 10³⁰⁸");
+        assert_eq!(show(9.9996e10), "1.000 × 10¹¹");
+        assert_eq!(show(9.99996e-5), "1.000 × 10⁻⁴");
+        let mut x = 5e-324_f64;
+        while x.is_finite() {
+            let s = show(x);
+            assert!(!s.contains("inf") && !s.contains("NaN"), "{x:e}: {s}");
+            if let Some((m, _)) = s.split_once(" × ") {
+                let m: f64 = m.parse().unwrap();
+                assert!((1.0..10.0).contains(&m), "{x:e}: {s}");
+            } else {
+                assert!(s.len() <= 16, "{x:e}: {s}");
+            }
+            x *= 3.7;
+        }
     }
 }

@@ -264,6 +264,9 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
         })
         .collect();
     let band = ctxs.iter().map(|c| band(&notes(c))).fold(0.0, f64::max);
+    // cannot fail: one context per pose, and a scene has at least one pose
+    // (`valid::angles` refuses an empty list).
+    #[allow(clippy::expect_used)]
     let union = |ctxs: &[Ctx]| {
         ctxs.iter()
             .map(fit::frame)
@@ -464,6 +467,9 @@ fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
     };
     let mut panel = PageRect::new(mg, mg, width, drawn + inset[2] + inset[3]);
     let fit_rect = PageRect::new(mg + inset[0], mg + inset[2], fit_width, drawn);
+    // cannot fail: the fallback, a map of scale 1 between finite points,
+    // is valid.
+    #[allow(clippy::expect_used)]
     let transform = PageFromWorld::fit(&world, &fit_rect, scene.is_mirrored())
         .or_else(|| {
             PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
@@ -514,6 +520,10 @@ fn detail_panel(
         size.y,
     );
     let centre = nalgebra::center(&frame.min(), &frame.max());
+    // cannot fail: the scale is the main view's (finite and positive, as
+    // `PageFromWorld::fit` made it) times one of the finite magnification
+    // steps of `detail`, about the middle of a finite frame.
+    #[allow(clippy::expect_used)]
     let transform = PageFromWorld::uniform(scale, scene.is_mirrored(), centre, rect.centre())
         .expect("a finite positive scale");
     let mut canvas = Canvas::new(transform, *frame).detail("detail-");
