@@ -24,7 +24,7 @@ pub struct ChainArgs {
     /// (l + r − e)/2 for ρ < 0
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         value_name = "RHO",
         conflicts_with_all = ["links", "inversion"]
     )]
@@ -32,7 +32,12 @@ pub struct ChainArgs {
     /// A quadric crank chain instead of the engine (Fig. 60 a): the lengths
     /// of crank a, coupler b, lever c and frame d, comma-separated (in place
     /// of --crank, --rod and --offset)
-    #[arg(long, value_name = "A,B,C,D", conflicts_with = "inversion")]
+    #[arg(
+        long,
+        allow_hyphen_values = true,
+        value_name = "A,B,C,D",
+        conflicts_with = "inversion"
+    )]
     pub links: Option<String>,
     /// Assembly mode of the quadric chain (with --links)
     #[arg(long, value_enum, default_value_t = AssemblyArg::Open, requires = "links")]
