@@ -115,9 +115,33 @@ impl Error {
         }
     }
 
+    /// Most characters of a user's value quoted by [`Error::show`].
+    pub const MAX_SHOWN_CHARS: usize = 60;
+
+    /// Most characters of a message's text after [`Error::one_line`].
+    pub const MAX_MESSAGE_CHARS: usize = 1000;
+
+    /// A value given by a user as a message quotes it: its control
+    /// characters, bidirectional controls (U+202E, which would reverse the
+    /// rest of the line on a terminal) and non-characters written as
+    /// escapes (`\r`, `\u{202e}`), and cut to [`Error::MAX_SHOWN_CHARS`]
+    /// characters with `…` after (a 100 KB title is not echoed whole). The
+    /// empty value stays empty.
+    pub fn show(value: &str) -> String {
+        let mut shown = escape_controls(value);
+        if shown.chars().count() > Error::MAX_SHOWN_CHARS {
+            shown = shown.chars().take(Error::MAX_SHOWN_CHARS).collect();
+            shown.push('…');
+        }
+        shown
+    }
+
     /// The same error with every control character of its texts (a
-    /// newline or carriage return quoted from a user's file) written as an
-    /// escape (`\n`), so that the message is one line.
+    /// newline or carriage return quoted from a user's file), and every
+    /// bidirectional control and non-character, written as an escape
+    /// (`\n`, `\u{202e}`), so that the message is one line and reads as
+    /// printed; a text longer than [`Error::MAX_MESSAGE_CHARS`] characters is
+    /// cut there, with `…`.
     pub fn one_line(self) -> Self {
         match self {
             Error::OutOfRange {
@@ -202,17 +226,29 @@ impl PartialEq for Error {
     }
 }
 
-/// `text` with control characters escaped (`\n`, `\r`, `\u{1b}`).
+/// `text` with control characters (`\n`, `\r`, `\u{1b}`), bidirectional
+/// controls and non-characters escaped, cut to [`Error::MAX_MESSAGE_CHARS`].
 fn escape_controls(text: &str) -> String {
-    text.chars()
-        .map(|c| {
-            if c.is_control() {
-                c.escape_default().to_string()
-            } else {
-                c.to_string()
-            }
-        })
-        .collect()
+    let mut out = String::with_capacity(text.len());
+    for (i, c) in text.chars().enumerate() {
+        if i == Error::MAX_MESSAGE_CHARS {
+            out.push('…');
+            break;
+        }
+        if c.is_control() || is_bidi_control(c) || crate::figure::is_noncharacter(c) {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// The characters that reorder the text after them on a terminal: the
+/// embeddings, overrides and isolates of Unicode's bidirectional
+/// algorithm, and its marks.
+fn is_bidi_control(c: char) -> bool {
+    matches!(c, '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
 
 /// A number as a message shows it: plainly in the usual range, in
@@ -260,6 +296,21 @@ pub(crate) fn non_negative(name: &'static str, value: f64) -> Result<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn values_are_shown_escaped_and_cut() {
+        assert_eq!(Error::show("a\rb"), "a\\rb");
+        assert_eq!(Error::show("x\u{202E}y\u{FFFE}"), "x\\u{202e}y\\u{fffe}");
+        assert_eq!(Error::show("é ok"), "é ok");
+        let long = Error::show(&"t".repeat(100_000));
+        assert_eq!(long, format!("{}…", "t".repeat(60)));
+        let e = Error::Parse(format!("unknown figure '{}\u{2066}'", "f".repeat(5000))).one_line();
+        let text = e.to_string();
+        assert_eq!(text.chars().count(), 1001);
+        assert!(text.ends_with("ff…"), "{text}");
+        let e = Error::Parse("a\u{202E}b".into()).one_line();
+        assert_eq!(e.to_string(), "a\\u{202e}b");
+    }
 
     #[test]
     fn messages_show_extreme_numbers_compactly() {

@@ -1,9 +1,10 @@
 //! Reading input files with a bound on their size.
 //!
-//! Every file the program reads (scene files, `--data` CSV) goes through
-//! [`read_text`]: it reads as the file streams and stops one byte past the
-//! limit, so `/dev/zero` or a huge file costs at most the limit in memory,
-//! and the message names the file and the limit.
+//! Every file the program reads (scene files, manifests, `--data` CSV)
+//! goes through [`read_text`], and the files `gallery --check` compares
+//! through [`read_bytes_from`]: they read as the file streams and stop one
+//! byte past the limit, so `/dev/zero` or a huge file costs at most the
+//! limit in memory, and the message names the file and the limit.
 
 use crate::error::{Error, Result};
 use std::io::Read;
@@ -45,6 +46,20 @@ pub fn read_text(path: &Path, limit: u64, what: &str) -> Result<String> {
 /// [`read_text`] for any reader (standard input, a pipe); `what` names the
 /// source in messages.
 pub fn read_text_from(reader: impl Read, limit: u64, what: &str) -> Result<String> {
+    let bytes = read_bytes_from(reader, limit, what)?;
+    String::from_utf8(bytes).map_err(|e| {
+        Error::Parse(format!(
+            "{what} is not UTF-8 text (byte {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
+
+/// The bytes of `reader`, at most `limit` (only `limit + 1` are ever
+/// read); `what` names the source in messages.
+///
+/// Errors: reading fails, or there are more than `limit` bytes.
+pub fn read_bytes_from(reader: impl Read, limit: u64, what: &str) -> Result<Vec<u8>> {
     let mut bytes = Vec::new();
     reader
         .take(limit.saturating_add(1))
@@ -64,12 +79,7 @@ pub fn read_text_from(reader: impl Read, limit: u64, what: &str) -> Result<Strin
             source: None,
         });
     }
-    String::from_utf8(bytes).map_err(|e| {
-        Error::Parse(format!(
-            "{what} is not UTF-8 text (byte {})",
-            e.utf8_error().valid_up_to()
-        ))
-    })
+    Ok(bytes)
 }
 
 /// A byte count as people read it: `1 MiB`, `4 MiB`, `512 bytes`.

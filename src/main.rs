@@ -109,7 +109,9 @@ fn main() -> ExitCode {
     let mut out = match cli::output::Stdout::open() {
         Ok(out) => out,
         Err(e) => {
-            eprintln!("slider-crank: error: cannot write to standard output: {e}");
+            cli::output::say(&format!(
+                "slider-crank: error: cannot write to standard output: {e}"
+            ));
             return ExitCode::from(REFUSED);
         }
     };
@@ -117,6 +119,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return parse_error(e),
     };
+    stop_cleanly_on_signals();
     let result = match &cli.command {
         Command::Analyze(args) => cli::analyze::run(args, &mut out).map(|()| true),
         Command::Table(args) => cli::table::run(args, &mut out).map(|()| true),
@@ -134,16 +137,44 @@ fn main() -> ExitCode {
         // The reader went away (`| head`): nothing to say, but not a success.
         Err(_) if out.broken_pipe() => ExitCode::from(REFUSED),
         Err(e) => {
-            eprintln!("slider-crank: error: {}", e.one_line());
+            cli::output::say(&format!("slider-crank: error: {}", e.one_line()));
             ExitCode::from(REFUSED)
         }
     }
 }
 
+/// On Ctrl-C (SIGINT), SIGTERM or SIGHUP: the temporary files of the
+/// writes in progress removed (after a gallery's renames, if they have
+/// begun), then the program ends as the signal would have ended it. A
+/// program that cannot watch for signals runs unwatched (they end it as
+/// before, leaving its temporary files).
+#[cfg(unix)]
+fn stop_cleanly_on_signals() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+        return;
+    };
+    let watch = move || {
+        if let Some(signal) = signals.forever().next() {
+            slider_crank::render::remove_pending();
+            let _ = signal_hook::low_level::emulate_default_handler(signal);
+            // A signal whose default is not to end the program (none of
+            // these three): end it as the shell would report the signal.
+            std::process::exit(128 + signal);
+        }
+    };
+    let _ = std::thread::Builder::new()
+        .name("signals".into())
+        .spawn(watch);
+}
+
+#[cfg(not(unix))]
+fn stop_cleanly_on_signals() {}
+
 /// Help and version print with exit 0; anything else (no subcommand, an
 /// unknown flag) is one line on standard error and exit 2.
 fn parse_error(e: clap::Error) -> ExitCode {
-    use clap::error::ErrorKind;
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
     if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) {
         // Flushed here, where an error can still be told: a full device
         // or a reader gone is not a success.
@@ -152,20 +183,30 @@ fn parse_error(e: clap::Error) -> ExitCode {
             Ok(()) => ExitCode::SUCCESS,
             Err(err) if err.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::from(REFUSED),
             Err(err) => {
-                eprintln!("slider-crank: error: cannot write to standard output: {err}");
+                cli::output::say(&format!(
+                    "slider-crank: error: cannot write to standard output: {err}"
+                ));
                 ExitCode::from(REFUSED)
             }
         };
     }
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
-        eprintln!(
-            "slider-crank: a subcommand is required: gallery, handout, analyze, table, check, figure, scene or animate (see --help)"
+        cli::output::say(
+            "slider-crank: a subcommand is required: gallery, handout, analyze, table, check, figure, scene or animate (see --help)",
         );
         return ExitCode::from(REFUSED);
     }
     // One line: clap's first paragraph names the problem (and, for a
-    // missing argument, lists it on the lines after the first).
-    let text = e.render().to_string();
+    // missing argument, lists it on the lines after the first); the value
+    // it quotes is shown escaped and cut (a carriage return, a bidi
+    // override or 100 KB are not echoed as given).
+    let mut text = e.render().to_string();
+    for kind in [ContextKind::InvalidValue, ContextKind::InvalidArg] {
+        if let Some(ContextValue::String(raw)) = e.get(kind) {
+            let shown = format!("'{}'", slider_crank::Error::show(raw));
+            text = text.replace(&format!("'{raw}'"), &shown);
+        }
+    }
     let first: Vec<&str> = text
         .lines()
         .take_while(|l| !l.trim().is_empty())
@@ -176,6 +217,7 @@ fn parse_error(e: clap::Error) -> ExitCode {
     } else {
         first.join(" ")
     };
-    eprintln!("slider-crank: {first} (see --help)");
+    let first = slider_crank::Error::Parse(first).one_line();
+    cli::output::say(&format!("slider-crank: {first} (see --help)"));
     ExitCode::from(REFUSED)
 }

@@ -77,7 +77,81 @@ fn scratch() -> tempfile::TempDir {
     std::fs::write(p("real.svg"), "old").unwrap();
     std::os::unix::fs::symlink("real.svg", p("link.svg")).unwrap();
     std::os::unix::fs::symlink("loop.svg", p("loop.svg")).unwrap();
+    second_round(dir.path());
     dir
+}
+
+/// The files of the second round's rows (docs/robustness.md, "Second
+/// round: files, links and processes").
+fn second_round(dir: &Path) {
+    let p = |name: &str| dir.join(name);
+    // A gallery's directory holding what --check must not read whole or
+    // wait on: a link to an endless device, a 3 GB sparse file, a FIFO.
+    std::fs::create_dir(p("hostile")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", p("hostile/index.html")).unwrap();
+    let sparse = std::fs::File::create(p("hostile/fig-63-velocity.svg")).unwrap();
+    sparse.set_len(3 << 30).unwrap();
+    let fifo = Command::new("mkfifo")
+        .arg(p("hostile/fig-63-velocity.png"))
+        .status()
+        .unwrap();
+    assert!(fifo.success());
+    // A link planted in a gallery's directory, pointing out of it.
+    std::fs::create_dir(p("planted")).unwrap();
+    std::fs::write(p("victim.txt"), "victim").unwrap();
+    std::os::unix::fs::symlink("../victim.txt", p("planted/index.html")).unwrap();
+    std::fs::write(p("nonchar.toml"), "name = \"a\\uFFFEb\"\n").unwrap();
+    std::fs::write(p("v-huge.toml"), "version = 99999999999999999999\n").unwrap();
+    std::fs::write(p("v-2e63.toml"), "version = 9223372036854775808\n").unwrap();
+    // Inputs that an output must not replace.
+    std::fs::write(p("myscene"), "[mechanism]\ncrank = 0.5\nrod = 3.0\n").unwrap();
+    std::os::unix::fs::symlink("myscene", p("myscene-link")).unwrap();
+    std::fs::write(p("data.svg"), "angle,force\n40,3\n50,4\n").unwrap();
+    std::fs::write(p("ro.svg"), "old").unwrap();
+    let mut readonly = std::fs::metadata(p("ro.svg")).unwrap().permissions();
+    readonly.set_readonly(true);
+    std::fs::set_permissions(p("ro.svg"), readonly).unwrap();
+}
+
+/// After the second round's rows: the files they must not have replaced
+/// or followed.
+fn second_round_kept(dir: &Path) -> Vec<String> {
+    let read = |name: &str| std::fs::read_to_string(dir.join(name)).unwrap_or_default();
+    let mut broken = Vec::new();
+    for (name, was) in [
+        ("victim.txt", "victim"),
+        ("myscene", "[mechanism]\ncrank = 0.5\nrod = 3.0\n"),
+        ("data.svg", "angle,force\n40,3\n50,4\n"),
+        ("ro.svg", "old"),
+    ] {
+        if read(name) != was {
+            broken.push(format!("{name} was replaced"));
+        }
+    }
+    let planted = std::fs::symlink_metadata(dir.join("planted/index.html")).unwrap();
+    if !planted.is_file() || !read("planted/index.html").starts_with("<!DOCTYPE html>") {
+        broken.push("planted/index.html is not the gallery's index".into());
+    }
+    if !std::fs::symlink_metadata(dir.join("myscene-link"))
+        .unwrap()
+        .is_symlink()
+    {
+        broken.push("myscene-link is no longer a link".into());
+    }
+    for sub in ["planted", "hostile"] {
+        let left = std::fs::read_dir(dir.join(sub))
+            .unwrap()
+            .filter_map(|e| e.ok())
+            .any(|e| {
+                e.file_name()
+                    .to_string_lossy()
+                    .starts_with(".slider-crank-")
+            });
+        if left {
+            broken.push(format!("temporary files left in {sub}"));
+        }
+    }
+    broken
 }
 
 fn run(row: &Row, dir: &Path, bin: &str, timeout: &str) -> std::process::Output {
@@ -164,6 +238,8 @@ fn every_row_of_the_robustness_table_holds() {
         read("real.svg").starts_with("<svg"),
         "the link's target was not written"
     );
+    let kept = second_round_kept(dir.path());
+    assert!(kept.is_empty(), "{}", kept.join("\n"));
     let leftovers: Vec<_> = std::fs::read_dir(dir.path())
         .unwrap()
         .filter_map(|e| e.ok())
@@ -346,4 +422,80 @@ fn the_regression_table_holds_now() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The rows of the second round's regression table: point, input,
+/// before, now, tests.
+fn second_round_rows() -> Vec<Vec<String>> {
+    let doc = include_str!("../docs/robustness.md");
+    let section = doc
+        .split("## Second round: regressions")
+        .nth(1)
+        .expect("the second round's regression section");
+    let section = section.split("\n## ").next().unwrap();
+    section
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| point"))
+        .map(|line| {
+            let cells: Vec<String> = line
+                .trim_matches('|')
+                .split(" | ")
+                .map(|c| c.trim().to_string())
+                .collect();
+            assert_eq!(cells.len(), 5, "a row of five cells: {line}");
+            cells
+        })
+        .collect()
+}
+
+/// Each point of the second round has a row, and each row a test: a row
+/// of the table above (its input, as run) or test functions that exist.
+#[test]
+fn every_point_of_the_second_round_is_tested() {
+    let rows = second_round_rows();
+    let points: std::collections::BTreeSet<&str> = rows.iter().map(|r| r[0].as_str()).collect();
+    let expected = [
+        "bounded reads",
+        "links",
+        "text",
+        "processes",
+        "standard error",
+        "negative numbers",
+        "version",
+        "inputs",
+        "index",
+        "parallel",
+    ];
+    assert_eq!(points, expected.into_iter().collect());
+    let table: Vec<String> = self::rows().into_iter().map(|r| r.command).collect();
+    let mut sources = String::new();
+    for dir in ["src", "tests"] {
+        let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)];
+        while let Some(d) = stack.pop() {
+            for entry in std::fs::read_dir(d).unwrap() {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    stack.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs") {
+                    sources.push_str(&std::fs::read_to_string(path).unwrap());
+                }
+            }
+        }
+    }
+    for row in &rows {
+        let input = spans(&row[1]).into_iter().next().unwrap_or_default();
+        if row[4].starts_with("table") {
+            assert!(table.contains(&input), "{input} is not in the table");
+        }
+        for name in spans(&row[4]) {
+            assert!(
+                sources.contains(&format!("fn {name}(")),
+                "no test function {name}"
+            );
+        }
+        assert!(
+            row[4].starts_with("table") || !spans(&row[4]).is_empty(),
+            "{input}: no test named"
+        );
+    }
 }

@@ -75,7 +75,70 @@ struct PageFile {
 /// program does not know.
 #[derive(Debug, Deserialize)]
 struct Versioned {
-    version: Option<Spanned<toml::Value>>,
+    version: Option<Spanned<Version>>,
+}
+
+/// A `version` as written: an integer of any size TOML reads (beyond
+/// `i64` too, which `toml::Value` cannot hold), or something else, shown
+/// as written (cut to 40 characters).
+#[derive(Debug)]
+enum Version {
+    Integer(i128),
+    Other(String),
+}
+
+impl<'de> Deserialize<'de> for Version {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        d.deserialize_any(VersionVisitor)
+    }
+}
+
+struct VersionVisitor;
+
+impl<'de> serde::de::Visitor<'de> for VersionVisitor {
+    type Value = Version;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a version number")
+    }
+    fn visit_i64<E>(self, v: i64) -> std::result::Result<Version, E> {
+        Ok(Version::Integer(v.into()))
+    }
+    fn visit_u64<E>(self, v: u64) -> std::result::Result<Version, E> {
+        Ok(Version::Integer(v.into()))
+    }
+    fn visit_i128<E>(self, v: i128) -> std::result::Result<Version, E> {
+        Ok(Version::Integer(v))
+    }
+    fn visit_u128<E>(self, v: u128) -> std::result::Result<Version, E> {
+        Ok(Version::Integer(i128::try_from(v).unwrap_or(i128::MAX)))
+    }
+    fn visit_f64<E>(self, v: f64) -> std::result::Result<Version, E> {
+        Ok(Version::Other(format!("{v:?}")))
+    }
+    fn visit_bool<E>(self, v: bool) -> std::result::Result<Version, E> {
+        Ok(Version::Other(v.to_string()))
+    }
+    fn visit_str<E>(self, v: &str) -> std::result::Result<Version, E> {
+        Ok(Version::Other(format!("{v:?}")))
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(
+        self,
+        mut seq: A,
+    ) -> std::result::Result<Version, A::Error> {
+        while seq.next_element::<serde::de::IgnoredAny>()?.is_some() {}
+        Ok(Version::Other("an array".into()))
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(
+        self,
+        mut map: A,
+    ) -> std::result::Result<Version, A::Error> {
+        while map
+            .next_entry::<serde::de::IgnoredAny, serde::de::IgnoredAny>()?
+            .is_some()
+        {}
+        Ok(Version::Other("a table".into()))
+    }
 }
 
 /// Refuses a file of another version than [`VERSION`] (a newer one, or a
@@ -89,14 +152,19 @@ fn check_version(text: &str) -> Result<()> {
         return Ok(());
     };
     let message = match version.get_ref() {
-        toml::Value::Integer(v) if *v == VERSION => return Ok(()),
-        toml::Value::Integer(v) if *v > VERSION => format!(
+        Version::Integer(v) if *v == i128::from(VERSION) => return Ok(()),
+        Version::Integer(v) if *v > i128::from(VERSION) => format!(
             "this scene file is version {v}, newer than this program reads: it reads version {VERSION}"
         ),
-        other => format!(
-            "invalid version {}: this program reads scene files of version {VERSION} (an integer)",
-            other.to_string().chars().take(40).collect::<String>()
-        ),
+        other => {
+            let shown = match other {
+                Version::Integer(v) => v.to_string(),
+                Version::Other(s) => s.chars().take(40).collect(),
+            };
+            format!(
+                "invalid version {shown}: this program reads scene files of version {VERSION} (an integer)"
+            )
+        }
     };
     Err(located(text, version.span(), message))
 }
@@ -240,6 +308,24 @@ fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
     }
 }
 
+/// Refuses a scene `name` (written into the figure's metadata) that holds
+/// a control character or a non-character, as a title does.
+fn check_name(name: &str) -> Result<()> {
+    let bad = name
+        .chars()
+        .find(|&c| c.is_control() || crate::figure::is_noncharacter(c));
+    match bad {
+        None => Ok(()),
+        Some(c) if c.is_control() => Err(Error::Parse(
+            "invalid name: it holds a control character (a name is one line)".into(),
+        )),
+        Some(c) => Err(Error::Parse(format!(
+            "invalid name: it holds the non-character U+{:04X} (not text, and not allowed in SVG)",
+            u32::from(c)
+        ))),
+    }
+}
+
 fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
     // cannot fail: a diagram's file returned above; a mechanism figure has a scene.
     #[allow(clippy::expect_used)]
@@ -251,6 +337,7 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
             .with_layers([Layer::Mechanism]),
     };
     if let Some(n) = &file.name {
+        at(text, n.span(), check_name(n.get_ref()))?;
         scene = scene.with_name(n.get_ref().clone());
     } else if file.figure.is_none() {
         scene = scene.with_name("scene");
@@ -615,6 +702,42 @@ mod tests {
             );
         }
         assert!(parse("version = 1\n").is_ok());
+    }
+
+    #[test]
+    fn names_and_titles_with_non_characters_are_refused_at_their_place() {
+        for (text, expected) in [
+            (
+                "name = \"a\\uFFFEb\"\n",
+                "line 1, column 8: invalid name: it holds the non-character U+FFFE",
+            ),
+            (
+                "name = \"a\\rb\"\n",
+                "line 1, column 8: invalid name: it holds a control character",
+            ),
+            (
+                "\ntitle = \"\\uFFFF\"\n",
+                "line 2, column 9: invalid title: it holds the non-character U+FFFF",
+            ),
+        ] {
+            let e = parse(text).unwrap_err().to_string();
+            assert!(e.starts_with(expected), "{text}: {e}");
+        }
+    }
+
+    #[test]
+    fn versions_beyond_64_bits_are_newer_not_version_1() {
+        for huge in ["9223372036854775808", "99999999999999999999"] {
+            let e = parse(&format!("version = {huge}\n"))
+                .unwrap_err()
+                .to_string();
+            assert_eq!(
+                e,
+                format!(
+                    "line 1, column 11: this scene file is version {huge}, newer than this program reads: it reads version 1"
+                )
+            );
+        }
     }
 
     #[test]

@@ -121,13 +121,13 @@ pub struct LoadArgs {
     /// unit (FORCE·UNIT, N·mm for lengths in mm): adds the statics of Ng
     /// eq. 6–11 (the OM line, slider force, side thrust, friction,
     /// transmission angle), the forces in the force unit
-    #[arg(long, allow_negative_numbers = true, value_name = "T")]
+    #[arg(long, allow_hyphen_values = true, value_name = "T")]
     pub torque: Option<f64>,
     /// Coefficient of friction μ ≥ 0 of the slider in its guides (with
     /// --torque)
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         value_name = "MU",
         default_value_t = 0.0,
         requires = "torque"

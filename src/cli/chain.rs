@@ -24,7 +24,7 @@ pub struct ChainArgs {
     /// (l + r − e)/2 for ρ < 0
     #[arg(
         long,
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         value_name = "RHO",
         conflicts_with_all = ["links", "inversion"]
     )]
@@ -34,6 +34,7 @@ pub struct ChainArgs {
     /// of --crank, --rod and --offset)
     #[arg(
         long,
+        allow_hyphen_values = true,
         value_name = "A,B,C,D",
         conflicts_with_all = ["inversion", "crank", "rod", "offset"]
     )]

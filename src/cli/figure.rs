@@ -6,7 +6,7 @@ use clap::Args;
 use slider_crank::catalogue::{FigureOptions, Fit};
 use slider_crank::figure::{Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
-use slider_crank::render::{FileFormat, to_svg, write_atomic};
+use slider_crank::render::{FileFormat, same_file, to_svg, write_atomic};
 use slider_crank::{Error, Figure, FigureName, Layer, Notation, Result, SliderCrank, Style};
 use std::path::{Path, PathBuf};
 
@@ -125,6 +125,25 @@ pub fn destination(path: Option<&PathBuf>) -> Result<Option<(&Path, FileFormat)>
     }
 }
 
+/// Refuses an output file that is one of the inputs (`what`: "the scene
+/// file"), the same file through any link: the figure drawn from it would
+/// replace it. Standard output, a file not there yet and a device (which
+/// is written in place, not replaced) are never refused.
+pub fn not_an_input(to: Option<(&Path, FileFormat)>, input: &Path, what: &str) -> Result<()> {
+    let regular = |p: &Path| std::fs::metadata(p).is_ok_and(|m| m.is_file());
+    match to {
+        Some((path, _)) if regular(path) && same_file(path, input) => Err(Error::io_about(
+            format!(
+                "cannot write {}: it is {what} {}, read to draw the figure (give another --out)",
+                path.display(),
+                input.display()
+            ),
+            path,
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// Writes the figure to the file in its format (whole or not at all), or
 /// its SVG text to standard output.
 pub fn emit(figure: &Figure, to: Option<(&Path, FileFormat)>, out: &mut Stdout) -> Result<()> {
@@ -193,6 +212,9 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
 pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
     let name = args.name;
     let to = destination(args.out.as_ref())?;
+    if let Some(data) = &args.flags.data {
+        not_an_input(to, data, "the data file")?;
+    }
     let options = options(&args.flags, name)?;
     let figure = name
         .figure(&options)

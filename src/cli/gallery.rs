@@ -1,12 +1,13 @@
 //! `slider-crank gallery [--out DIR]`: every named figure as SVG, PNG and
 //! PDF, every table, and an index.html, written into a directory.
 
-use super::output::{Progress, Stdout};
+use super::output::{Progress, Stdout, say};
 use clap::Args;
-use slider_crank::gallery::Gallery;
-use slider_crank::input::{MAX_SCENE_BYTES, read_text};
-use slider_crank::render::write_atomic;
+use slider_crank::gallery::{Gallery, GalleryFile};
+use slider_crank::input::{MAX_SCENE_BYTES, read_bytes_from, read_text};
+use slider_crank::render::{Pending, uninterrupted, write_protected};
 use slider_crank::{Error, FigureName, Result};
+use std::io::{ErrorKind, Write};
 use std::path::{Path, PathBuf};
 
 /// Write the gallery: every figure at the seed's parameters, every table,
@@ -14,7 +15,9 @@ use std::path::{Path, PathBuf};
 #[derive(Debug, Args)]
 pub struct GalleryArgs {
     /// The directory to write into, created if missing; files of the same
-    /// names are replaced (each whole), others left alone
+    /// names are replaced (all at once when every one is made; a link of
+    /// such a name is replaced, not followed), others left alone; one
+    /// gallery is written into a directory at a time
     #[arg(long, value_name = "DIR", default_value = "gallery")]
     pub out: PathBuf,
     /// Rebuild the gallery in memory and compare it with the files in DIR,
@@ -58,32 +61,143 @@ pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
     gallery.can_build()?;
     let dir = &args.out;
     if args.check {
+        let _lock = lock(dir, false)?;
         return check(&gallery, dir, out);
     }
     prepare(dir)?;
+    let _lock = lock(dir, true)?;
     let names = gallery.file_names();
+    for name in &names {
+        writable(&dir.join(name))?;
+    }
     let mut progress = Progress::new("gallery", names.len());
-    let mut made = 0;
+    let mut staged = Vec::new();
     let result = gallery.build(|file| {
-        progress.show(made + 1, &file.name);
-        write_atomic(&dir.join(&file.name), &file.bytes)?;
-        made += 1;
+        progress.show(staged.len() + 1, &file.name);
+        staged.push(stage(dir, &file)?);
         Ok(())
     });
     progress.finish();
-    match result {
+    if let Err(e) = result {
         // The file being made or written when the error came (a write
         // error names it already).
-        Err(e) => Err(match names.get(made) {
+        return Err(match names.get(staged.len()) {
             Some(name) if !e.to_string().contains(name.as_str()) => Error::io_about(
                 format!("gallery: {name}: {}", e.one_line()),
                 &dir.join(name),
             ),
             _ => e,
-        }),
-        Ok(()) => {
-            eprintln!("gallery: {} files in {}", names.len(), dir.display());
-            Ok(true)
+        });
+    }
+    commit(dir, staged)?;
+    say(&format!(
+        "gallery: {} files in {}",
+        names.len(),
+        dir.display()
+    ));
+    Ok(true)
+}
+
+/// A file of the gallery written under a temporary name in its directory,
+/// and the name it takes when the whole gallery is made.
+struct Staged {
+    name: String,
+    file: tempfile::TempPath,
+    _pending: Pending,
+}
+
+/// Writes `file` under a temporary name in `dir` (a `.slider-crank-`
+/// file, removed if the program stops before [`commit`]).
+fn stage(dir: &Path, file: &GalleryFile) -> Result<Staged> {
+    let path = dir.join(&file.name);
+    let fail =
+        |e: std::io::Error| Error::io_at(format!("cannot write {}: {e}", path.display()), &path, e);
+    let mut tmp = tempfile::Builder::new()
+        .prefix(".slider-crank-")
+        .tempfile_in(dir)
+        .map_err(fail)?;
+    let pending = Pending::new(tmp.path());
+    tmp.write_all(&file.bytes)
+        .and_then(|()| tmp.as_file().sync_all())
+        .map_err(fail)?;
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        let readable = std::fs::Permissions::from_mode(0o644);
+        tmp.as_file().set_permissions(readable).map_err(fail)?;
+    }
+    Ok(Staged {
+        name: file.name.clone(),
+        file: tmp.into_temp_path(),
+        _pending: pending,
+    })
+}
+
+/// Renames every staged file over its name, with an interruption held off
+/// until all are renamed: the directory holds the old gallery or the new
+/// one. A name that is a symbolic link is replaced by the file (the link
+/// is not followed out of the directory).
+fn commit(dir: &Path, staged: Vec<Staged>) -> Result<()> {
+    uninterrupted(|| {
+        for s in staged {
+            let path = dir.join(&s.name);
+            s.file.persist(&path).map_err(|e| {
+                let message = format!("cannot write {}: {}", path.display(), e.error);
+                Error::io_at(message, &path, e.error)
+            })?;
+        }
+        Ok(())
+    })
+}
+
+/// Refuses, before anything is made, a name of the gallery that is a
+/// directory or a write-protected file. Anything else there (a file, a
+/// link, a FIFO) is replaced.
+fn writable(path: &Path) -> Result<()> {
+    let Ok(meta) = std::fs::symlink_metadata(path) else {
+        return Ok(());
+    };
+    let why = if meta.is_dir() {
+        "it is a directory"
+    } else if meta.is_file() && write_protected(&meta) {
+        "it is write-protected (make it writable, or write the gallery elsewhere)"
+    } else {
+        return Ok(());
+    };
+    Err(Error::io_about(
+        format!("cannot write {}: {why}", path.display()),
+        path,
+    ))
+}
+
+/// Locks the gallery's directory for this process: `exclusive` to write
+/// it, shared to compare it. Another slider-crank writing it is an error
+/// (two galleries written at once would mix their files); the lock ends
+/// with the returned file. A file system without locks is written
+/// unlocked.
+fn lock(dir: &Path, exclusive: bool) -> Result<Option<std::fs::File>> {
+    let Ok(handle) = std::fs::File::open(dir) else {
+        // A missing directory (for --check): nothing to lock.
+        return Ok(None);
+    };
+    let locked = if exclusive {
+        handle.try_lock()
+    } else {
+        handle.try_lock_shared()
+    };
+    match locked {
+        Ok(()) => Ok(Some(handle)),
+        Err(std::fs::TryLockError::WouldBlock) => Err(Error::io_about(
+            format!(
+                "another slider-crank is writing the gallery in {}: run again when it has finished",
+                dir.display()
+            ),
+            dir,
+        )),
+        Err(std::fs::TryLockError::Error(e)) if e.kind() == ErrorKind::Unsupported => Ok(None),
+        Err(std::fs::TryLockError::Error(e)) => {
+            let message = format!("cannot lock the gallery's directory {}: {e}", dir.display());
+            Err(Error::io_at(message, dir, e))
         }
     }
 }
@@ -98,34 +212,78 @@ fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
         done += 1;
         progress.show(done, &file.name);
         let path = dir.join(&file.name);
-        let verdict = match std::fs::read(&path) {
-            Ok(bytes) if bytes == file.bytes => return Ok(()),
-            Ok(_) => "differs",
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => "is missing",
-            Err(e) => {
-                let message = format!("cannot read {}: {e}", path.display());
-                return Err(Error::io_at(message, &path, e));
-            }
+        let Some(verdict) = compare(&path, &file.bytes)? else {
+            return Ok(());
         };
         differ += 1;
-        out.text(&format!("{} {verdict}\n", path.display()))
+        out.text(&format!(
+            "{} {verdict}
+",
+            path.display()
+        ))
     });
     progress.finish();
     result?;
     if differ == 0 {
-        eprintln!(
+        say(&format!(
             "gallery: the {} files in {} are up to date",
             names.len(),
             dir.display()
-        );
+        ));
     } else {
-        eprintln!(
+        say(&format!(
             "gallery: {differ} of {} files in {} differ from this build's",
             names.len(),
             dir.display()
-        );
+        ));
     }
     Ok(differ == 0)
+}
+
+/// How the file at `path` differs from `bytes` (`None`: it holds them).
+/// Only a regular file is read (never a link, a FIFO or a device), and no
+/// more of it than `bytes` holds and one byte.
+fn compare(path: &Path, bytes: &[u8]) -> Result<Option<&'static str>> {
+    let unreadable = |e: std::io::Error| {
+        let message = format!("cannot read {}: {e}", path.display());
+        Error::io_at(message, path, e)
+    };
+    let meta = match std::fs::symlink_metadata(path) {
+        Ok(m) => m,
+        Err(e) if e.kind() == ErrorKind::NotFound => return Ok(Some("is missing")),
+        Err(e) => return Err(unreadable(e)),
+    };
+    if !meta.is_file() {
+        return Ok(Some("is not a regular file"));
+    }
+    if meta.len() != bytes.len() as u64 {
+        return Ok(Some("differs"));
+    }
+    let file = open_regular(path).map_err(unreadable)?;
+    let shown = path.display().to_string();
+    // A file that grew since: more than `bytes` is a difference.
+    match read_bytes_from(file, bytes.len() as u64, &shown) {
+        Ok(read) if read == bytes => Ok(None),
+        Ok(_) => Ok(Some("differs")),
+        Err(Error::Io { source: None, .. }) => Ok(Some("differs")),
+        Err(e) => Err(e),
+    }
+}
+
+/// Opens `path` for reading without following a link or waiting for a
+/// FIFO's writer (a file swapped for either since it was looked at).
+#[cfg(unix)]
+fn open_regular(path: &Path) -> std::io::Result<std::fs::File> {
+    use std::os::unix::fs::OpenOptionsExt;
+    std::fs::OpenOptions::new()
+        .read(true)
+        .custom_flags(libc::O_NOFOLLOW | libc::O_NONBLOCK)
+        .open(path)
+}
+
+#[cfg(not(unix))]
+fn open_regular(path: &Path) -> std::io::Result<std::fs::File> {
+    std::fs::File::open(path)
 }
 
 /// Checks the output directory: an existing directory (or a link to one)

@@ -132,10 +132,10 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
         let result = write_all(&files, Some(&mut progress));
         progress.finish();
         result?;
-        eprintln!(
+        super::output::say(&format!(
             "handout: {count} exercises, their keys and the answers, {}",
             path("-answers").display()
-        );
+        ));
         return Ok(());
     }
     if args.exercise {

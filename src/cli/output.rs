@@ -111,6 +111,13 @@ fn raw() -> std::io::Result<Box<dyn Write>> {
     Ok(Box::new(std::io::stdout()))
 }
 
+/// Writes `line` and a line break to standard error. A standard error
+/// that cannot be written (full, closed) is ignored: the exit code still
+/// tells the outcome, and a message is no reason to panic.
+pub fn say(line: &str) {
+    let _ = writeln!(std::io::stderr(), "{line}");
+}
+
 /// The progress line on standard error: rewritten in place on a terminal,
 /// one line per file otherwise.
 pub struct Progress {

@@ -1,6 +1,6 @@
 //! `slider-crank scene FILE.toml`: a figure described by a scene file.
 
-use super::figure::{destination, emit};
+use super::figure::{destination, emit, not_an_input};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
@@ -60,6 +60,7 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
         .file
         .as_ref()
         .expect("clap requires FILE without --print-default");
+    not_an_input(to, path, "the scene file")?;
     let text = read_text(path, MAX_SCENE_BYTES, "scene file")?;
     let file = SceneFile::from_toml(&text)
         .map_err(|e| Error::Parse(format!("{}: {e}", path.display())))?;

@@ -23,5 +23,6 @@ pub use style::Style;
 pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING, Pen, RIGHT_ANGLE};
 pub use text::{
     MAX_TITLE_CHARS, RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Title,
+    is_noncharacter,
 };
 pub use transform::{PageFromWorld, PageRect};

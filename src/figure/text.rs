@@ -188,6 +188,16 @@ impl RichText {
     }
 }
 
+/// Whether `c` is one of Unicode's 66 non-characters (U+FDD0 to U+FDEF,
+/// and the last two code points of each plane, U+FFFE and U+FFFF among
+/// them): never text, and U+FFFE and U+FFFF are not allowed in XML at all,
+/// so a figure refuses them in any text it writes, as it refuses control
+/// characters.
+pub fn is_noncharacter(c: char) -> bool {
+    let u = u32::from(c);
+    (0xFDD0..=0xFDEF).contains(&u) || u & 0xFFFE == 0xFFFE
+}
+
 /// Longest title, in characters.
 pub const MAX_TITLE_CHARS: usize = 200;
 
@@ -195,14 +205,14 @@ pub const MAX_TITLE_CHARS: usize = 200;
 /// as the SVG's `<title>`. It may use the notes' markup ([`RichText::parse`]:
 /// `*A*` in italic, `V_p` or `O_{bd}` with a subscript). Made by
 /// [`Title::new`] or [`str::parse`]: 1 to [`MAX_TITLE_CHARS`] characters, not
-/// all spaces, no control characters.
+/// all spaces, no control characters and no non-characters.
 #[derive(Debug, Clone, PartialEq, Eq, Hash)]
 pub struct Title(String);
 
 impl Title {
     /// The title `text`; an error (one line) when it is empty or blank,
-    /// longer than [`MAX_TITLE_CHARS`] or holds a control character (a
-    /// line break).
+    /// longer than [`MAX_TITLE_CHARS`], or holds a control character (a
+    /// line break) or a non-character ([`is_noncharacter`]: U+FFFE).
     pub fn new(text: &str) -> crate::error::Result<Self> {
         let bad = |why: &str| Err(crate::error::Error::Parse(format!("invalid title: {why}")));
         if text.trim().is_empty() {
@@ -213,6 +223,12 @@ impl Title {
         }
         if text.chars().any(char::is_control) {
             return bad("it holds a control character (a title is one line)");
+        }
+        if let Some(c) = text.chars().find(|&c| is_noncharacter(c)) {
+            return bad(&format!(
+                "it holds the non-character U+{:04X} (not text, and not allowed in SVG)",
+                u32::from(c)
+            ));
         }
         Ok(Title(text.to_string()))
     }
@@ -261,6 +277,34 @@ mod tests {
             let e = bad.parse::<Title>().unwrap_err().to_string();
             assert!(e.starts_with("invalid title"), "{e}");
         }
+    }
+
+    #[test]
+    fn non_characters_are_refused_as_control_characters_are() {
+        for bad in [
+            "a\u{FFFE}b",
+            "\u{FFFF}",
+            "x\u{FDD0}",
+            "\u{10FFFF}",
+            "\u{1FFFE}",
+        ] {
+            let e = bad.parse::<Title>().unwrap_err().to_string();
+            assert!(
+                e.starts_with("invalid title: it holds the non-character U+"),
+                "{e}"
+            );
+        }
+        // Their neighbours are text.
+        for good in [
+            "\u{FFFD}",
+            "\u{FDCF}",
+            "\u{FDF0}",
+            "\u{10FFFD}",
+            "\u{202E}x",
+        ] {
+            assert!(good.parse::<Title>().is_ok(), "{good:?}");
+        }
+        assert!(is_noncharacter('\u{FFFE}') && !is_noncharacter('\u{FFFD}'));
     }
 
     #[test]

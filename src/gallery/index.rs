@@ -2,6 +2,7 @@
 //! seed, section and figure it reproduces, what it shows, its files and
 //! the command that draws it), then the tables as HTML tables.
 
+use super::quote::{shell_word, url_path};
 use super::{Gallery, SceneEntry};
 use crate::FigureName;
 use crate::html::document;
@@ -154,7 +155,7 @@ fn figure(f: FigureName, formats: &[FileFormat]) -> Markup {
 
 /// One scene: its picture, the scene file it was drawn from, its files.
 fn scene(entry: &SceneEntry, formats: &[FileFormat]) -> Markup {
-    let file = |format: FileFormat| format!("{}.{}", entry.name, format.extension());
+    let file = |format: FileFormat| url_path(&format!("{}.{}", entry.name, format.extension()));
     let picture = [FileFormat::Png, FileFormat::Svg]
         .into_iter()
         .find(|p| formats.contains(p))
@@ -175,7 +176,7 @@ fn scene(entry: &SceneEntry, formats: &[FileFormat]) -> Markup {
                     }
                 }
                 br;
-                code { "slider-crank scene " (entry.file) }
+                code { "slider-crank scene " (shell_word(&entry.file)) }
             }
         }
     }

@@ -5,8 +5,8 @@
 //! choose the figures, add scene files, and set the formats, style and
 //! face.
 //!
-//! [`Gallery::build`] makes the files one at a time, in the order of
-//! [`Gallery::file_names`], and hands each to the caller (which writes it,
+//! [`Gallery::build`] makes the files on every core and hands each to the
+//! caller in the order of [`Gallery::file_names`] (the caller writes it,
 //! or compares it with a file on disk); nothing is written here.
 //!
 //! ```
@@ -30,6 +30,8 @@
 
 mod index;
 mod manifest;
+mod parallel;
+mod quote;
 
 use crate::catalogue::FigureOptions;
 use crate::error::{Error, Result};
@@ -220,46 +222,102 @@ impl Gallery {
         }
     }
 
-    /// Makes every file of [`Gallery::file_names`], in order, and hands
-    /// each to `each` as soon as it is made; stops at the first error
-    /// (of [`Gallery::can_build`], of a figure, or of `each`).
+    /// Makes every file of [`Gallery::file_names`] and hands each to
+    /// `each`, in that order, as soon as it and those before it are made;
+    /// stops at the first error (of [`Gallery::can_build`], of a figure,
+    /// or of `each`).
+    ///
+    /// The figures, scenes and tables are made on as many threads as the
+    /// machine runs at once ([`std::thread::available_parallelism`]; one
+    /// on a single core); `each` runs on the calling thread, in order, so
+    /// the files and their order are those of a single thread.
     pub fn build(&self, mut each: impl FnMut(GalleryFile) -> Result<()>) -> Result<()> {
         self.can_build()?;
-        let options = FigureOptions {
-            style: self.style,
-            font: self.font,
-            ..FigureOptions::default()
-        };
-        for &figure in &self.figures {
-            let svg = to_svg(&figure.figure(&options)?);
-            for &format in &self.formats {
-                let name = Self::figure_file(figure, format);
-                let bytes = format.encode(&svg)?;
-                each(GalleryFile { name, bytes })?;
-            }
-        }
-        for entry in &self.scenes {
-            let svg = to_svg(&entry.scene.figure()?);
-            for &format in &self.formats {
-                let name = format!("{}.{}", entry.name, format.extension());
-                let bytes = format.encode(&svg)?;
-                each(GalleryFile { name, bytes })?;
-            }
-        }
+        let jobs = self.jobs();
+        let threads = std::thread::available_parallelism()
+            .map_or(1, |n| n.get())
+            .min(jobs.len());
         let mut tables = Vec::new();
-        for table in TableName::ALL {
-            let t = table.table()?;
-            each(GalleryFile {
-                name: Self::table_file(table),
-                bytes: t.render(Format::Text).into_bytes(),
-            })?;
-            tables.push((table, t));
-        }
+        parallel::in_order(
+            &jobs,
+            threads,
+            |job| self.make(job),
+            |made| {
+                for file in made.files {
+                    each(file)?;
+                }
+                tables.extend(made.table);
+                Ok(())
+            },
+        )?;
         each(GalleryFile {
             name: INDEX.into(),
             bytes: index::page(self, &tables).into_bytes(),
         })
     }
+
+    /// What [`Gallery::build`] makes before the index, in order.
+    fn jobs(&self) -> Vec<Job> {
+        let figures = self.figures.iter().map(|&f| Job::Figure(f));
+        let scenes = (0..self.scenes.len()).map(Job::Scene);
+        let tables = TableName::ALL.into_iter().map(Job::Table);
+        figures.chain(scenes).chain(tables).collect()
+    }
+
+    /// The files of one job (and the table, for the index).
+    fn make(&self, job: &Job) -> Result<Made> {
+        let (svg, name) = match *job {
+            Job::Figure(figure) => {
+                let options = FigureOptions {
+                    style: self.style,
+                    font: self.font,
+                    ..FigureOptions::default()
+                };
+                (to_svg(&figure.figure(&options)?), figure.name())
+            }
+            Job::Scene(i) => {
+                let entry = &self.scenes[i];
+                (to_svg(&entry.scene.figure()?), entry.name.as_str())
+            }
+            Job::Table(table) => {
+                let t = table.table()?;
+                return Ok(Made {
+                    files: vec![GalleryFile {
+                        name: Self::table_file(table),
+                        bytes: t.render(Format::Text).into_bytes(),
+                    }],
+                    table: Some((table, t)),
+                });
+            }
+        };
+        let files = self
+            .formats
+            .iter()
+            .map(|&format| {
+                Ok(GalleryFile {
+                    name: format!("{name}.{}", format.extension()),
+                    bytes: format.encode(&svg)?,
+                })
+            })
+            .collect::<Result<_>>()?;
+        Ok(Made { files, table: None })
+    }
+}
+
+/// One piece of a gallery's work: a figure or scene in every format, or a
+/// table.
+#[derive(Debug, Clone, Copy)]
+enum Job {
+    Figure(FigureName),
+    /// The scene at this index of [`Gallery::scenes`].
+    Scene(usize),
+    Table(TableName),
+}
+
+/// What one [`Job`] made.
+struct Made {
+    files: Vec<GalleryFile>,
+    table: Option<(TableName, crate::table::Table)>,
 }
 
 #[cfg(test)]
@@ -279,6 +337,29 @@ mod tests {
             }
         }
         assert_eq!(names.last().unwrap(), INDEX);
+    }
+
+    #[test]
+    fn the_index_quotes_a_scene_file_for_the_shell_and_its_files_for_urls() {
+        let scene = FigureName::Fig63Velocity.scene().unwrap();
+        let gallery = Gallery::new()
+            .with_figures([])
+            .with_formats([FileFormat::Svg])
+            .with_scene("x;touch PWNED;#", "x;touch PWNED;#.toml", scene.clone())
+            .unwrap()
+            .with_scene("a?b%c", "a?b%c.toml", scene)
+            .unwrap();
+        let page = index::page(&gallery, &[]);
+        assert!(
+            page.contains("<code>slider-crank scene 'x;touch PWNED;#.toml'</code>"),
+            "{page}"
+        );
+        assert!(
+            page.contains("href=\"x%3Btouch%20PWNED%3B%23.svg\""),
+            "{page}"
+        );
+        assert!(page.contains("src=\"a%3Fb%25c.svg\""), "{page}");
+        assert!(!page.contains("href=\"x;"), "{page}");
     }
 
     #[test]

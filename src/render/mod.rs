@@ -11,6 +11,7 @@ mod number;
 mod output;
 #[cfg(feature = "pdf")]
 mod pdf;
+mod pending;
 #[cfg(feature = "png")]
 mod png;
 mod save;
@@ -23,9 +24,10 @@ pub(crate) use element::{Element, Node, escape_text};
 pub use fonts::font_database;
 pub use format::FileFormat;
 pub use number::{GRID, fmt};
-pub use output::write_atomic;
+pub use output::{same_file, write_atomic, write_protected};
 #[cfg(feature = "pdf")]
 pub use pdf::{POINTS_PER_UNIT, to_pdf};
+pub use pending::{Pending, remove_pending, uninterrupted};
 #[cfg(feature = "png")]
 pub use png::to_png;
 pub use save::save;

@@ -5,6 +5,8 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use super::pending::Pending;
+
 /// Most symbolic links followed from one output path (as the kernel's
 /// `ELOOP` limit).
 const MAX_LINKS: usize = 40;
@@ -54,12 +56,52 @@ pub fn output_target(path: &Path) -> Result<OutputTarget> {
         } else if kind.is_dir() {
             return Err(fail("it is a directory".into(), None));
         } else if kind.is_file() {
+            if write_protected(&meta) {
+                return Err(fail(
+                    "it is write-protected (give another file, or make it writable)".into(),
+                    None,
+                ));
+            }
             return Ok(OutputTarget::Replace(current));
         } else {
             return Ok(OutputTarget::Direct(path.to_path_buf()));
         }
     }
     Err(fail(format!("more than {MAX_LINKS} symbolic links"), None))
+}
+
+/// Whether a regular file grants nobody write permission (mode 444): it
+/// is not replaced, not even by a user who could (the owner, root).
+#[cfg(unix)]
+pub fn write_protected(meta: &std::fs::Metadata) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    meta.permissions().mode() & 0o222 == 0
+}
+
+#[cfg(not(unix))]
+pub fn write_protected(meta: &std::fs::Metadata) -> bool {
+    meta.permissions().readonly()
+}
+
+/// Whether `a` and `b` name the same existing file (through any links):
+/// an output that would replace an input is refused with this.
+#[cfg(unix)]
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (std::fs::metadata(a), std::fs::metadata(b)) {
+        (Ok(x), Ok(y)) => x.dev() == y.dev() && x.ino() == y.ino(),
+        _ => false,
+    }
+}
+
+/// Whether `a` and `b` name the same existing file (compared by their
+/// canonical paths).
+#[cfg(not(unix))]
+pub fn same_file(a: &Path, b: &Path) -> bool {
+    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(x), Ok(y)) => x == y,
+        _ => false,
+    }
 }
 
 /// Writes `bytes` to `path` as the kind of file there decides (a device
@@ -103,6 +145,7 @@ fn replace(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let mut tmp = tempfile::Builder::new()
         .prefix(".slider-crank-")
         .tempfile_in(dir)?;
+    let _pending = Pending::new(tmp.path());
     tmp.write_all(bytes)?;
     tmp.as_file().sync_all()?;
     // An ordinary file, readable by others (temporary files are private),
