@@ -23,7 +23,7 @@ pub(crate) use element::{Element, Node, escape_text};
 pub use fonts::font_database;
 pub use format::FileFormat;
 pub use number::{GRID, fmt};
-pub use output::write_atomic;
+pub use output::{write_atomic, write_atomic_with};
 #[cfg(feature = "pdf")]
 pub use pdf::{POINTS_PER_UNIT, to_pdf};
 #[cfg(feature = "png")]
