@@ -287,13 +287,13 @@ fn refused(name: &str, args: &[&str], file: &str, says: &str) {
 #[test]
 fn bad_requests_are_refused_in_one_line_and_write_nothing() {
     let k = "fig-66-kisch";
-    refused("f0", &[k, "--frames", "0"], "a.svg", "2 to 720 frames");
-    refused("f1", &[k, "--frames", "1"], "a.svg", "2 to 720 frames");
+    refused("f0", &[k, "--frames", "0"], "a.svg", "2 to 3600 frames");
+    refused("f1", &[k, "--frames", "1"], "a.svg", "2 to 3600 frames");
     refused(
         "fbig",
         &[k, "--frames", "100000"],
         "a.svg",
-        "2 to 720 frames",
+        "2 to 3600 frames",
     );
     refused("fneg", &[k, "--frames", "-3"], "a.svg", "--frames");
     refused("pneg", &[k, "--period", "-1"], "a.svg", "period");

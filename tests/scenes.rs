@@ -271,7 +271,7 @@ fn a_series_is_the_scene_held_over_its_range_at_each_angle() {
 }
 
 #[test]
-fn a_held_view_needs_one_to_3600_angles() {
+fn a_held_view_needs_one_to_3960_angles() {
     use slider_crank::Angle;
     let scene = FigureName::Fig63Velocity.scene().unwrap();
     // Checked once, when the figure is built.
@@ -279,14 +279,14 @@ fn a_held_view_needs_one_to_3600_angles() {
     let e = held.figure().unwrap_err().to_string();
     assert_eq!(e, "a view is held over at least one angle");
     assert!(held.frames(&[Angle::deg(0.0)]).is_err());
-    let many = vec![Angle::deg(0.0); 3601];
+    let many = vec![Angle::deg(0.0); 3961];
     let e = scene
         .clone()
         .with_held_view(many.clone())
         .figure()
         .unwrap_err()
         .to_string();
-    assert!(e.contains("at most 3600"), "{e}");
+    assert!(e.contains("at most 3960"), "{e}");
     assert!(scene.frames(&[]).is_err());
     assert!(scene.frames(&many).is_err());
 }

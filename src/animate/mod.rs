@@ -22,7 +22,7 @@ mod page;
 mod svg;
 
 pub use format::AnimationFormat;
-pub use frames::{Frame, prefixed};
+pub use frames::{Frame, MAX_EVALUATIONS, prefixed};
 
 use crate::error::{Error, Result};
 use crate::figure::PageUnit;
@@ -34,8 +34,11 @@ pub const DEFAULT_FRAMES: usize = 72;
 /// The fewest frames of an animation: two poses half a turn apart.
 pub const MIN_FRAMES: usize = 2;
 
-/// The most frames of an animation: one every half degree.
-pub const MAX_FRAMES: usize = 720;
+/// The most frames of an animation: one every tenth of a degree. The
+/// frames are written as they are drawn ([`write`]), so memory does not
+/// grow with their number; their curves are bounded in all
+/// ([`MAX_EVALUATIONS`]).
+pub const MAX_FRAMES: usize = 3600;
 
 /// Seconds per revolution unless asked otherwise.
 pub const DEFAULT_PERIOD: f64 = 4.0;
@@ -153,6 +156,126 @@ impl Animation {
             AnimationFormat::Html => self.to_html(),
         }
     }
+
+    /// What the documents need besides the frames' markup.
+    fn reel(&self) -> Reel<'_> {
+        Reel {
+            name: &self.name,
+            period: self.period,
+            sheet: &self.sheet,
+            height: self.height(),
+            angles: self.frames.iter().map(Frame::angle).collect(),
+            first: &self.frames[0],
+        }
+    }
+}
+
+/// Draws [`Animation::new`]'s animation of `scene` and writes it in
+/// `format` a frame at a time to `sink`, calling `progress(done, count)`
+/// after each frame is written: memory does not grow with `count`. The
+/// bytes are [`Animation::encode`]'s. The frames' models are built twice
+/// (a first pass finds the tallest page, which the document states before
+/// any frame), the SVG of each once.
+///
+/// Errors: as [`Animation::new`], the animation's curves beyond
+/// [`MAX_EVALUATIONS`] (before anything is written), and any error of
+/// `sink`, which ends the writing.
+pub fn write(
+    scene: &Scene,
+    (count, period): (usize, f64),
+    format: AnimationFormat,
+    sink: &mut dyn FnMut(&str) -> Result<()>,
+    mut progress: impl FnMut(usize, usize),
+) -> Result<()> {
+    let period = check_period(period)?;
+    let series = frames::Series::new(scene, angles(scene.angles()[0], count)?);
+    let survey = series.survey()?;
+    let reel = Reel {
+        name: scene.name(),
+        period,
+        sheet: &survey.sheet,
+        height: survey.height,
+        angles: series.angles().to_vec(),
+        first: &survey.first,
+    };
+    let mut done = 0;
+    let frames = series.frames()?.inspect(|_| {
+        done += 1;
+        progress(done, count);
+    });
+    match format {
+        AnimationFormat::Svg => svg::write(&reel, frames, sink),
+        AnimationFormat::Html => page::write(&reel, frames, sink),
+    }
+}
+
+/// What a document of an animation needs besides the frames' markup:
+/// the page, the period, the frames' angles and the first frame (whose
+/// metadata the SVG's root carries).
+pub(super) struct Reel<'a> {
+    name: &'a str,
+    period: f64,
+    sheet: &'a frames::Sheet,
+    height: f64,
+    angles: Vec<Angle>,
+    first: &'a Frame,
+}
+
+impl Reel<'_> {
+    /// The figure's name.
+    fn name(&self) -> &str {
+        self.name
+    }
+
+    /// Seconds per revolution.
+    fn period(&self) -> f64 {
+        self.period
+    }
+
+    /// The page's width in page units.
+    fn width(&self) -> f64 {
+        self.sheet.width
+    }
+
+    /// The tallest frame's height in page units.
+    fn height(&self) -> f64 {
+        self.height
+    }
+
+    /// The unit the page's size is written in.
+    fn size_unit(&self) -> PageUnit {
+        self.sheet.unit
+    }
+
+    /// The CSS font family the frames are set in.
+    fn font_family(&self) -> &str {
+        self.sheet.font_family
+    }
+
+    /// The figure's title in plain text, if it has one.
+    fn title(&self) -> Option<&str> {
+        self.sheet.title.as_deref()
+    }
+
+    /// The frames' angles, in the order they are played.
+    fn angles(&self) -> &[Angle] {
+        &self.angles
+    }
+
+    /// The first frame.
+    fn first(&self) -> &Frame {
+        self.first
+    }
+}
+
+/// Where the frames go in a document's skeleton ([`split`]); no markup the
+/// renderer writes holds a NUL.
+const FRAMES_HERE: &str = "\u{0}frames\u{0}";
+
+/// A document written with [`FRAMES_HERE`] in place of its frames, cut
+/// there: what comes before the frames and what after.
+fn split(skeleton: &str) -> (&str, &str) {
+    skeleton.split_once(FRAMES_HERE).unwrap_or((skeleton, ""))
 }
 
 /// `period` checked: finite, positive, at most [`MAX_PERIOD`].
@@ -210,7 +333,7 @@ mod tests {
     fn counts_and_periods_out_of_range_are_refused() {
         for n in [0, 1, MAX_FRAMES + 1, 100_000] {
             let e = Animation::new(&engine(), n, 4.0).unwrap_err();
-            assert!(e.to_string().contains("2 to 720 frames"), "{n}: {e}");
+            assert!(e.to_string().contains("2 to 3600 frames"), "{n}: {e}");
         }
         for p in [0.0, -1.0, f64::NAN, f64::INFINITY, MAX_PERIOD * 2.0] {
             assert!(Animation::new(&engine(), 4, p).is_err(), "{p}");

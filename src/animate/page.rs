@@ -5,7 +5,8 @@
 //! printed page shows the frame on screen without the controls.
 
 use super::svg::seconds;
-use super::{Animation, Frame};
+use super::{Animation, FRAMES_HERE, Frame, Reel, split};
+use crate::error::Result;
 use crate::render::{fmt, root_size};
 use maud::{Markup, PreEscaped, html};
 
@@ -64,27 +65,52 @@ const SCRIPT: &str = "
 
 /// The whole page.
 pub(super) fn document(animation: &Animation) -> String {
+    let mut out = String::new();
+    let frames = animation.frames().iter().cloned();
+    let _: Result<()> = write(&animation.reel(), frames, &mut |s| {
+        out.push_str(s);
+        Ok(())
+    });
+    out
+}
+
+/// The page written to `sink` a frame at a time, as `frames` are drawn.
+pub(super) fn write(
+    animation: &Reel,
+    frames: impl Iterator<Item = Frame>,
+    sink: &mut dyn FnMut(&str) -> Result<()>,
+) -> Result<()> {
+    let skeleton = skeleton(animation);
+    let (head, tail) = split(&skeleton);
+    sink(head)?;
+    for (k, frame) in frames.enumerate() {
+        sink(&frame_view(animation, &frame, k).into_string())?;
+    }
+    sink(tail)
+}
+
+/// The page with [`FRAMES_HERE`] where the frames go.
+fn skeleton(animation: &Reel) -> String {
     let heading = animation.title().unwrap_or(animation.name());
-    let first = &animation.frames()[0];
+    let first = animation.first();
+    let count = animation.angles().len();
     let title = format!("{heading}: one revolution of the crank");
     let body = html! {
         h1 { (heading) }
         p {
-            "One revolution of the crank in " (animation.frames().len()) " frames, "
+            "One revolution of the crank in " (count) " frames, "
             (seconds(animation.period())) " s a turn; the slider sets the crank angle θ."
         }
         div .controls {
             button #play type="button" aria-pressed="false" { "Play" }
-            input #angle type="range" min="0" max=(animation.frames().len() - 1)
+            input #angle type="range" min="0" max=(count - 1)
                 step="1" value="0" aria-label="Crank angle (frame)";
             output #angle-value for="angle" {
                 "θ = " (fmt(first.angle().degrees())) "°"
             }
         }
         div #stage .stage data-period=(animation.period()) {
-            @for (k, frame) in animation.frames().iter().enumerate() {
-                (frame_view(animation, frame, k))
-            }
+            (PreEscaped(FRAMES_HERE))
         }
         script { (PreEscaped(SCRIPT)) }
     };
@@ -92,7 +118,7 @@ pub(super) fn document(animation: &Animation) -> String {
 }
 
 /// Frame `k` as an inline SVG in its own block, hidden but for the first.
-fn frame_view(animation: &Animation, frame: &Frame, k: usize) -> Markup {
+fn frame_view(animation: &Reel, frame: &Frame, k: usize) -> Markup {
     let prefix = Frame::prefix(k);
     let (w, h) = (animation.width(), animation.height());
     let unit = animation.size_unit();

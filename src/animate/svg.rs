@@ -15,12 +15,44 @@
 //! in a page or as an image. A viewer that does not animate (resvg, print)
 //! shows the first frame: the others are hidden by their attribute.
 
-use super::{Animation, Frame};
+use super::{Animation, FRAMES_HERE, Frame, Reel, split};
+use crate::error::Result;
 use crate::render::{Element, Node, fmt, root_size};
 use serde_json::{Map, Value, json};
 
 /// The document.
 pub(super) fn document(animation: &Animation) -> String {
+    let mut out = String::new();
+    let frames = animation.frames().iter().cloned();
+    let _: Result<()> = write(&animation.reel(), frames, &mut |s| {
+        out.push_str(s);
+        Ok(())
+    });
+    out
+}
+
+/// The document written to `sink` a frame at a time, as `frames` are
+/// drawn.
+pub(super) fn write(
+    animation: &Reel,
+    frames: impl Iterator<Item = Frame>,
+    sink: &mut dyn FnMut(&str) -> Result<()>,
+) -> Result<()> {
+    let skeleton = skeleton(animation);
+    let (head, tail) = split(&skeleton);
+    sink(head)?;
+    let count = animation.angles().len();
+    for (k, frame) in frames.enumerate() {
+        if k > 0 {
+            sink("\n")?;
+        }
+        sink(&group(&frame, k, count, animation.period()).to_string())?;
+    }
+    sink(tail)
+}
+
+/// The document with [`FRAMES_HERE`] where the frames' groups go.
+fn skeleton(animation: &Reel) -> String {
     let (w, h) = (animation.width(), animation.height());
     let unit = animation.size_unit();
     let mut doc = Element::document()
@@ -32,10 +64,7 @@ pub(super) fn document(animation: &Animation) -> String {
         doc = doc.add(Element::text("title", title.to_owned()));
     }
     doc = doc.add(metadata(animation));
-    let count = animation.frames().len();
-    for (k, frame) in animation.frames().iter().enumerate() {
-        doc = doc.add(group(frame, k, count, animation.period()));
-    }
+    doc = doc.add(Node::Block(FRAMES_HERE.into()));
     doc.to_document()
 }
 
@@ -94,21 +123,17 @@ pub(super) fn seconds(period: f64) -> String {
 
 /// The document's metadata: the first frame's, less what belongs to its
 /// pose, with the animation's own.
-fn metadata(animation: &Animation) -> Element {
-    let mut meta = frame_metadata(animation.frames()[0].svg()).unwrap_or_default();
+fn metadata(animation: &Reel) -> Element {
+    let mut meta = frame_metadata(animation.first().svg()).unwrap_or_default();
     for key in ["angle_deg", "points", "evaluations"] {
         meta.remove(key);
     }
     meta.insert("height".into(), json!(animation.height()));
-    let angles: Vec<f64> = animation
-        .frames()
-        .iter()
-        .map(|f| f.angle().degrees())
-        .collect();
+    let angles: Vec<f64> = animation.angles().iter().map(|a| a.degrees()).collect();
     meta.insert(
         "animation".into(),
         json!({
-            "frames": animation.frames().len(),
+            "frames": angles.len(),
             "period": animation.period(),
             "angles_deg": angles,
             "id_prefix": Frame::prefix(0),

@@ -1,6 +1,6 @@
 //! `slider-crank analyze`: exact and graphical values at one or more angles.
 
-use super::args::{AngleSpec, LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
+use super::args::{AngleSpec, GuardArgs, LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
 use serde_json::{Value, json};
@@ -37,7 +37,17 @@ pub struct AnalyzeArgs {
     pub units: UnitArgs,
     #[command(flatten)]
     pub chain: super::chain::ChainArgs,
+    #[command(flatten)]
+    pub guard: GuardArgs,
 }
+
+/// The numbers written for one angle, the columns of `--max-cells`: the
+/// mechanism (3), angle and ω (2), eight points (16), the analytic (6) and
+/// graphical (4) values and six virtual centres (12).
+const VALUES_PER_ANGLE: u64 = 43;
+
+/// What `--torque` adds to [`VALUES_PER_ANGLE`]: the seven statics.
+const STATICS_VALUES: u64 = 7;
 
 /// Everything computed at one angle: the reading and the six virtual
 /// centres.
@@ -267,13 +277,48 @@ fn reports<'a>(
         .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction))
 }
 
-/// Indents every line of `text` by two spaces (an element of a pretty
-/// JSON array).
-fn indented(text: &str) -> String {
-    text.lines()
-        .map(|l| format!("  {l}"))
-        .collect::<Vec<_>>()
-        .join("\n")
+/// Writes `objects` as one pretty JSON array, each serialised straight
+/// to standard output as it is computed (never a string of its own, nor
+/// the array held): the bytes of `to_string_pretty` on the whole array.
+fn stream_array(objects: impl Iterator<Item = Result<Value>>, out: &mut Stdout) -> Result<()> {
+    struct Array<I>(std::cell::RefCell<I>);
+    impl<I: Iterator<Item = Result<Value>>> serde::Serialize for Array<I> {
+        fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+            use serde::ser::{Error as _, SerializeSeq};
+            let mut seq = s.serialize_seq(None)?;
+            for v in &mut *self.0.borrow_mut() {
+                seq.serialize_element(&v.map_err(S::Error::custom)?)?;
+            }
+            seq.end()
+        }
+    }
+    /// Standard output as a writer, keeping its own error.
+    struct Sink<'a>(&'a mut Stdout, Option<Error>);
+    impl std::io::Write for Sink<'_> {
+        fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
+            match self.0.bytes(bytes) {
+                Ok(()) => Ok(bytes.len()),
+                Err(e) => {
+                    self.1 = Some(e);
+                    Err(std::io::Error::other("standard output"))
+                }
+            }
+        }
+        fn flush(&mut self) -> std::io::Result<()> {
+            Ok(())
+        }
+    }
+    let mut sink = Sink(out, None);
+    let written = serde_json::to_writer_pretty(&mut sink, &Array(objects.into()));
+    match (written, sink.1) {
+        (_, Some(e)) => Err(e),
+        (Ok(()), None) => Ok(()),
+        (Err(e), None) => Err(Error::Io {
+            message: e.to_string(),
+            path: None,
+            source: Some(std::sync::Arc::new(e.into())),
+        }),
+    }
 }
 
 fn pretty(value: &Value) -> Result<String> {
@@ -296,6 +341,17 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
         ));
     }
     let units = args.units.units(Units::FOOT_POUND);
+    let angles = AngleSpec::parse(&args.angle)?.len();
+    let statics = if args.load.torque.is_some() {
+        STATICS_VALUES
+    } else {
+        0
+    };
+    args.guard.check(
+        "analyze",
+        (angles, &format!("{angles} angles")),
+        (VALUES_PER_ANGLE + statics, "values each"),
+    )?;
     if super::chain::analyze(
         m,
         &args.chain,
@@ -320,12 +376,9 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
             }
             return Ok(());
         }
-        out.text("[")?;
-        for (i, r) in reports(&m, &spec, omega, args).enumerate() {
-            out.text(if i == 0 { "\n" } else { ",\n" })?;
-            out.text(&indented(&pretty(&to_json(&m, &r?, &units))?))?;
-        }
-        return out.text("\n]\n");
+        let objects = reports(&m, &spec, omega, args).map(|r| Ok(to_json(&m, &r?, &units)));
+        stream_array(objects, out)?;
+        return out.text("\n");
     }
     let u = units.length();
     out.text(&format!(

@@ -4,8 +4,8 @@
 use super::figure::{FigureFlags, options};
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::animate::{Animation, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
-use slider_crank::render::write_atomic;
+use slider_crank::animate::{self, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
+use slider_crank::render::write_atomic_with;
 use slider_crank::{Error, FigureName, Result};
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
@@ -29,7 +29,9 @@ pub struct AnimateArgs {
     pub name: FigureName,
     #[command(flatten)]
     pub flags: FigureFlags,
-    /// Frames per revolution, 2 to 720 (72: one every 5°)
+    /// Frames per revolution, 2 to 3600 (72: one every 5°), written as
+    /// they are drawn; their curves are bounded in all (a frame whose
+    /// curves take the curve engine's whole budget allows few frames)
     #[arg(long, value_name = "N", allow_hyphen_values = true, default_value_t = DEFAULT_FRAMES)]
     pub frames: usize,
     /// Seconds per revolution, more than 0 and at most 3600
@@ -66,16 +68,23 @@ pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
         .and_then(|o| args.name.scene_with(&o))?
         .ok_or_else(|| not_animated(args.name))?;
     let mut progress = Progress::new();
-    let animation = Animation::with_progress(&scene, args.frames, args.period, |done, total| {
-        progress.show(done, total)
-    });
-    progress.finish();
-    let text = animation?.encode(format);
-    if to_stdout {
-        out.text(&text)
+    let request = (args.frames, args.period);
+    let mut show = |done, total| progress.show(done, total);
+    let written = if to_stdout {
+        animate::write(&scene, request, format, &mut |s| out.text(s), &mut show)
     } else {
-        write_atomic(&args.out, text.as_bytes())
-    }
+        write_atomic_with(&args.out, |sink| {
+            animate::write(
+                &scene,
+                request,
+                format,
+                &mut |s| sink(s.as_bytes()),
+                &mut show,
+            )
+        })
+    };
+    progress.finish();
+    written
 }
 
 /// The refusal of a diagram, naming the figures that are animated.

@@ -147,8 +147,49 @@ fn check_finite(name: &'static str, value: f64) -> Result<f64> {
     }
 }
 
-/// Most angles a range may produce.
-pub const MAX_ANGLES: usize = 100_000;
+/// Most angles one range may describe: 2⁵³, past which the angles of a
+/// range are no longer distinct numbers. What a command may compute is
+/// bounded by [`GuardArgs`], not here.
+pub const MAX_RANGE: f64 = 9_007_199_254_740_992.0;
+
+/// The default of `--max-cells`: fifty million values, about a gigabyte
+/// of text and a minute of work (a million angles of `analyze --json` are
+/// 45 million).
+pub const DEFAULT_MAX_CELLS: u64 = 50_000_000;
+
+/// The one guard on the size of a request: the values a command computes
+/// (rows × columns), checked before any work.
+#[derive(Debug, Clone, Args)]
+pub struct GuardArgs {
+    /// Most values a command computes: rows × columns of a table, angles
+    /// × the values of each for analyze, poses × quantities for check. A
+    /// larger request is refused before any work, with its size; give a
+    /// larger N to lift the bound (the rows are streamed: memory does not
+    /// grow with them)
+    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_CELLS)]
+    pub max_cells: u64,
+}
+
+impl GuardArgs {
+    /// Checks `rows` × `columns` against `--max-cells`; `rows_are` and
+    /// `columns_are` say what they are for the message (`100000 angles ×
+    /// 200 ratios = 20000000 rows`, `columns`).
+    pub fn check(
+        &self,
+        command: &str,
+        (rows, rows_are): (u64, &str),
+        (columns, columns_are): (u64, &str),
+    ) -> Result<()> {
+        let cells = u128::from(rows) * u128::from(columns);
+        if cells <= u128::from(self.max_cells) {
+            return Ok(());
+        }
+        Err(Error::Parse(format!(
+            "{command} asks for {rows_are} × {columns} {columns_are} = {cells} values, more than --max-cells {}: give --max-cells {cells} (or more) to compute them, or fewer angles",
+            self.max_cells
+        )))
+    }
+}
 
 fn parse_number(text: &str, what: &str) -> Result<f64> {
     let value: f64 = text.trim().parse().map_err(|_| {
@@ -174,7 +215,7 @@ enum AnglePart {
     Range {
         start: f64,
         step: f64,
-        last: usize,
+        last: u64,
     },
 }
 
@@ -183,29 +224,24 @@ enum AnglePart {
 #[derive(Debug, Clone, PartialEq)]
 pub struct AngleSpec {
     parts: Vec<AnglePart>,
-    count: usize,
+    count: u64,
 }
 
 impl AngleSpec {
     /// Parses `45`, `0,30,60` or `START:STOP:STEP` (STOP included when the
-    /// steps reach it; STEP may be negative to count down); at most
-    /// [`MAX_ANGLES`] angles.
+    /// steps reach it; STEP may be negative to count down); a range of at
+    /// most [`MAX_RANGE`] angles (what a command computes is bounded by
+    /// [`GuardArgs`]).
     pub fn parse(spec: &str) -> Result<Self> {
         no_control(spec, "angles")?;
         let mut parts = Vec::new();
-        let mut count = 0usize;
+        let mut count = 0u64;
         for part in spec.split(',') {
             let parsed = parse_part(part)?;
-            count += match parsed {
+            count = count.saturating_add(match parsed {
                 AnglePart::One(_) => 1,
                 AnglePart::Range { last, .. } => last + 1,
-            };
-            if count > MAX_ANGLES {
-                return Err(Error::Parse(format!(
-                    "invalid angles '{}': more than {MAX_ANGLES} angles",
-                    shorten(spec)
-                )));
-            }
+            });
             parts.push(parsed);
         }
         Ok(Self { parts, count })
@@ -220,6 +256,11 @@ impl AngleSpec {
             };
             (0..=last).map(move |k| start + step * k as f64)
         })
+    }
+
+    /// How many angles there are.
+    pub fn len(&self) -> u64 {
+        self.count
     }
 
     /// Whether there is more than one angle or the text asked for a list.
@@ -268,17 +309,21 @@ fn parse_part(part: &str) -> Result<AnglePart> {
                     shorten(part)
                 )));
             }
-            let count = ((stop - start) / step * (1.0 + 1e-12)).floor();
-            if count.is_nan() || count >= MAX_ANGLES as f64 {
+            // A STOP the steps reach up to rounding is included (0:1:0.1
+            // has 11 angles); 64 ulps rather than a fixed 1e-12, which
+            // would add an angle to a range of 10¹² steps.
+            let count = ((stop - start) / step * (1.0 + 64.0 * f64::EPSILON)).floor();
+            if count.is_nan() || count >= MAX_RANGE {
                 return Err(Error::Parse(format!(
-                    "invalid range '{}': more than {MAX_ANGLES} angles",
-                    shorten(part)
+                    "invalid range '{}': more than {} angles",
+                    shorten(part),
+                    MAX_RANGE as u64
                 )));
             }
             Ok(AnglePart::Range {
                 start,
                 step,
-                last: count as usize,
+                last: count as u64,
             })
         }
         _ => Err(Error::Parse(format!(
@@ -335,10 +380,13 @@ mod tests {
         assert_eq!(parse_angles("0:1:0.1").unwrap().len(), 11);
         assert_eq!(parse_angles("10,20").unwrap(), vec![10.0, 20.0]);
         let spec = AngleSpec::parse("0:99999:1").unwrap();
-        assert_eq!(spec.count, 100_000);
+        assert_eq!(spec.len(), 100_000);
         assert_eq!(spec.iter().last(), Some(99_999.0));
-        assert!(AngleSpec::parse("0:100000:1").is_err());
-        assert!(AngleSpec::parse("0:50000:1,0:50000:1").is_err());
+        // No cap on a range's length short of 2⁵³ angles: the commands
+        // bound what they compute (GuardArgs).
+        let spec = AngleSpec::parse("0:1e9:1e-3,5").unwrap();
+        assert_eq!(spec.len(), 1_000_000_000_001 + 1);
+        assert!(AngleSpec::parse("0:1e300:1e-300").is_err());
     }
 
     #[test]

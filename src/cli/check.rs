@@ -1,10 +1,10 @@
 //! `slider-crank check`: every construction against the analytic core over
 //! the whole turn.
 
-use super::args::MechanismArgs;
+use super::args::{GuardArgs, MechanismArgs};
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::construct::sweep;
+use slider_crank::construct::{Quantity, sweep};
 use slider_crank::render::plain;
 use slider_crank::{Error, Result};
 
@@ -23,16 +23,14 @@ pub const CHAIN_TOLERANCE: f64 = 1e-12;
 /// near 1e308).
 pub const MAX_TOLERANCE: f64 = 1.0;
 
-/// Most poses one check sweeps (about a second of work).
-pub const MAX_SAMPLES: usize = 1_000_000;
-
 /// Sweep the whole turn and compare each construction with the analytic core.
 #[derive(Debug, Args)]
 pub struct CheckArgs {
     #[command(flatten)]
     pub mechanism: MechanismArgs,
-    /// Equally spaced poses over the turn, at most 1000000 (the dead
-    /// centres and 0°, 90°, 180° and 270° are always added)
+    /// Equally spaced poses over the turn, at least 1 (the dead centres
+    /// and 0°, 90°, 180° and 270° are always added); poses × the quantities
+    /// compared are bounded by --max-cells
     #[arg(
         long,
         default_value_t = 100_000,
@@ -49,6 +47,8 @@ pub struct CheckArgs {
     pub tolerance: Option<f64>,
     #[command(flatten)]
     pub chain: super::chain::ChainArgs,
+    #[command(flatten)]
+    pub guard: GuardArgs,
 }
 
 /// An allowance in ulps: one decimal up to a million (`4.0`), exponent
@@ -78,13 +78,19 @@ pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
             reason: "give at most 1: a difference of 1 in scaled units is the size of the quantity itself".into(),
         });
     }
-    if args.samples == 0 || args.samples > MAX_SAMPLES {
+    if args.samples == 0 {
         return Err(Error::OutOfRange {
             name: "samples",
-            value: args.samples as f64,
-            reason: format!("give between 1 and {MAX_SAMPLES} poses"),
+            value: 0.0,
+            reason: "give at least 1 pose".into(),
         });
     }
+    let poses = args.samples as u64;
+    args.guard.check(
+        "check",
+        (poses, &format!("{poses} poses")),
+        (Quantity::ALL.len() as u64, "quantities"),
+    )?;
     let chain_tolerance = args.tolerance.unwrap_or(CHAIN_TOLERANCE);
     if let Some((text, ok)) = super::chain::check(m, &args.chain, args.samples, chain_tolerance)? {
         stdout.text(&text)?;

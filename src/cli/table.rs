@@ -1,6 +1,6 @@
 //! `slider-crank table`: the seeds' tables and sweeps.
 
-use super::args::{AngleSpec, MechanismArgs, SpeedArgs, UnitArgs, parse_list};
+use super::args::{AngleSpec, GuardArgs, MechanismArgs, SpeedArgs, UnitArgs, parse_list};
 use super::output::Stdout;
 use clap::{Args, ValueEnum};
 use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
@@ -89,6 +89,8 @@ pub struct TableArgs {
     pub decimals: Option<usize>,
     #[command(flatten)]
     pub units: UnitArgs,
+    #[command(flatten)]
+    pub guard: GuardArgs,
 }
 
 /// Ng's torque as implied by Table 2's F column, N·mm.
@@ -104,7 +106,8 @@ fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
 }
 
 /// Runs the subcommand. Every table is written a row at a time: memory
-/// does not grow with the number of angles.
+/// does not grow with the number of angles; rows × columns are bounded by
+/// `--max-cells` before any is computed.
 pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
     if let Some(bad) = unused(args) {
         return Err(Error::Parse(format!(
@@ -140,6 +143,13 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
             let spec = spec.unwrap_or(AngleSpec::parse("90")?);
             let first = spec.iter().next().unwrap_or(90.0);
             let head = table::obliquity(&ratios, first)?;
+            let (angles, n) = (spec.len(), ratios.len() as u64);
+            let rows = angles.saturating_mul(n);
+            args.guard.check(
+                "table obliquity",
+                (rows, &format!("{angles} angles × {n} ratios = {rows} rows")),
+                (head.headers.len() as u64, "columns"),
+            )?;
             let rows = || {
                 spec.iter()
                     .flat_map(|a| match table::obliquity(&ratios, a) {
@@ -152,6 +162,14 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         TableName::AccelerationFactor => {
             let ratios = ratios.unwrap_or_else(|| TEXTBOOK_RATIOS.to_vec());
             let head = table::acceleration_factor_table(&ratios, &[])?;
+            let angles = spec
+                .as_ref()
+                .map_or(TEXTBOOK_ANGLES.len() as u64, AngleSpec::len);
+            args.guard.check(
+                "table acceleration-factor",
+                (angles, &format!("{angles} angles")),
+                (head.headers.len() as u64, "columns"),
+            )?;
             let row = |d: f64| {
                 let t = table::acceleration_factor_table(&ratios, &[d])?;
                 Ok(t.rows.into_iter().next().unwrap_or_default())
@@ -174,6 +192,7 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
             };
             let units = args.units.units(Units::FOOT_POUND);
             let head = table::kinematics_head(&m, omega, &units);
+            guard_angles(args, "table kinematics", &spec, &head)?;
             let rows = || {
                 spec.iter()
                     .map(|d| table::kinematics_row(&m, omega, d, decimals))
@@ -196,6 +215,7 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
             };
             let units = args.units.units(Units::MILLIMETRE_NEWTON);
             let head = table::forces_head(&m, torque, mu, &units);
+            guard_angles(args, "table forces", &spec, &head)?;
             let rows = || {
                 spec.iter()
                     .map(|d| table::forces_row(&m, torque, mu, d, decimals))
@@ -255,6 +275,22 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
         .into_iter()
         .find(|(flag, given)| *given && !used.contains(flag))
         .map(|(flag, _)| flag)
+}
+
+/// `--max-cells` against a row per angle of `spec` with the columns of
+/// `head`.
+fn guard_angles(
+    args: &TableArgs,
+    command: &str,
+    spec: &AngleSpec,
+    head: &table::Table,
+) -> Result<()> {
+    let angles = spec.len();
+    args.guard.check(
+        command,
+        (angles, &format!("{angles} angles")),
+        (head.headers.len() as u64, "columns"),
+    )
 }
 
 /// Writes the rows as they are computed under the title and headers of

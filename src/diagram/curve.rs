@@ -218,6 +218,18 @@ pub fn trace<C: Curve + ?Sized>(
     Ok(TracedPath::new(tracer.subpaths))
 }
 
+thread_local! {
+    /// Curve evaluations made on this thread by every trace so far.
+    static EVALUATIONS: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// The curve evaluations every trace on this thread has made so far: the
+/// difference over a piece of work is what its curves cost (an animation
+/// bounds its frames' total by it).
+pub(crate) fn evaluations_on_this_thread() -> u64 {
+    EVALUATIONS.with(std::cell::Cell::get)
+}
+
 /// The curve at one parameter, in page coordinates.
 #[derive(Debug, Clone, Copy)]
 struct Node {
@@ -270,6 +282,7 @@ fn finite_point(p: &Point) -> bool {
 impl<C: Curve + ?Sized> Tracer<'_, C> {
     fn node(&self, t: f64) -> Node {
         self.evaluations.set(self.evaluations.get() + 1);
+        EVALUATIONS.with(|n| n.set(n.get() + 1));
         let at = self
             .curve
             .eval(t)

@@ -88,6 +88,7 @@ mod plot;
 
 pub(crate) use axis::power_of_ten;
 pub use axis::{Axis, Scale, Tick, format_number};
+pub(crate) use curve::evaluations_on_this_thread;
 pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace, trace_tolerance};
 pub use locus::{Locus, LocusKind};
 pub use measure::{Deviation, measure};

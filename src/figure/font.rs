@@ -115,7 +115,6 @@ struct Face {
     font: FontRef<'static>,
     glyphs: GlyphMetrics<'static>,
     units_per_em: f64,
-    vertical: VerticalMetrics,
 }
 
 /// What the text measures need of one character in one style, in ems:
@@ -137,17 +136,23 @@ impl Face {
     fn parse(data: &'static [u8]) -> Face {
         let font = FontRef::new(data).expect("a bundled font parses");
         let m = font.metrics(Size::unscaled(), LocationRef::default());
-        let units_per_em = f64::from(m.units_per_em);
-        let em = |v: f32| f64::from(v) / units_per_em;
         Face {
             glyphs: font.glyph_metrics(Size::unscaled(), LocationRef::default()),
-            units_per_em,
-            vertical: VerticalMetrics {
-                ascent: em(m.ascent),
-                descent: -em(m.descent),
-                cap_height: em(m.cap_height.unwrap_or(0.7 * m.units_per_em as f32)),
-            },
+            units_per_em: f64::from(m.units_per_em),
             font,
+        }
+    }
+
+    /// Ascent, descent and cap height, in ems (what the glyph table
+    /// holds).
+    #[cfg(test)]
+    fn vertical(&self) -> VerticalMetrics {
+        let m = self.font.metrics(Size::unscaled(), LocationRef::default());
+        let em = |v: f32| f64::from(v) / self.units_per_em;
+        VerticalMetrics {
+            ascent: em(m.ascent),
+            descent: -em(m.descent),
+            cap_height: em(m.cap_height.unwrap_or(0.7 * m.units_per_em as f32)),
         }
     }
 
@@ -279,25 +284,44 @@ impl Font {
         (face, GlyphId::NOTDEF)
     }
 
-    /// The metrics of `c` in `style`, looked up in the faces once per
-    /// character (outlines and character maps are decoded only then).
+    /// The metrics of `c` in `style`: from the table made from the faces
+    /// ([`glyphs`](super::glyphs)) for the characters figures use, so
+    /// that no outline is decoded while a figure is set; any other
+    /// character looked up in the faces once per process.
     fn char_metrics(&self, c: char, style: FontStyle) -> CharMetrics {
-        type Cache = Mutex<HashMap<char, CharMetrics>>;
-        static CACHES: [OnceLock<Cache>; 4] = [const { OnceLock::new() }; 4];
-        let cache = CACHES[self.index(style)].get_or_init(Cache::default);
-        let mut cache = cache.lock().unwrap_or_else(|e| e.into_inner());
-        *cache.entry(c).or_insert_with(|| {
-            let (face, g) = self.glyph(c, style);
-            let [left, bottom, right, top] = face.ink(g);
-            CharMetrics {
-                advance: face.advance(g),
+        let table = super::glyphs::TABLES[self.index(style)];
+        if let Ok(i) = table.chars.binary_search_by_key(&c, |g| g.0) {
+            let (_, [advance, left, bottom, right, top]) = table.chars[i];
+            return CharMetrics {
+                advance,
                 bottom,
                 top,
                 left,
                 right,
-                present: g != GlyphId::NOTDEF,
-            }
-        })
+                present: true,
+            };
+        }
+        type Cache = Mutex<HashMap<char, CharMetrics>>;
+        static CACHES: [OnceLock<Cache>; 4] = [const { OnceLock::new() }; 4];
+        let cache = CACHES[self.index(style)].get_or_init(Cache::default);
+        let mut cache = cache.lock().unwrap_or_else(|e| e.into_inner());
+        *cache
+            .entry(c)
+            .or_insert_with(|| self.measured_metrics(c, style))
+    }
+
+    /// The metrics of `c` in `style` read from the faces' outlines.
+    fn measured_metrics(&self, c: char, style: FontStyle) -> CharMetrics {
+        let (face, g) = self.glyph(c, style);
+        let [left, bottom, right, top] = face.ink(g);
+        CharMetrics {
+            advance: face.advance(g),
+            bottom,
+            top,
+            left,
+            right,
+            present: g != GlyphId::NOTDEF,
+        }
     }
 
     /// The width of `text` at `size` (page units): the glyph advances
@@ -338,7 +362,7 @@ impl Font {
 
     /// Ascent, descent and cap height of a style.
     pub fn metrics(&self, style: FontStyle) -> VerticalMetrics {
-        self.face(style).vertical
+        super::glyphs::TABLES[self.index(style)].vertical
     }
 
     /// Whether the face (with its symbols face) has a glyph for `c` (else
@@ -494,5 +518,108 @@ mod tests {
         );
         let e = "times".parse::<Font>().unwrap_err().to_string();
         assert!(e.contains("new-computer-modern, libertinus-serif"), "{e}");
+    }
+
+    /// The characters the glyph table holds, where a face (or its
+    /// symbols face) has them: ASCII and Latin-1, Greek, the dashes,
+    /// quotes and primes, super- and subscripts, arrows and the
+    /// mathematical signs the figures write.
+    const TABLE_RANGES: [(char, char); 9] = [
+        (' ', '~'),
+        ('\u{a0}', 'ÿ'),
+        ('Α', 'ω'),
+        ('ϑ', 'ϖ'),
+        ('\u{2010}', '\u{2044}'),
+        ('⁰', 'ₜ'),
+        ('←', '↓'),
+        ('∂', '∞'),
+        ('≈', '≥'),
+    ];
+
+    /// The source of `glyphs.rs`: every character of [`TABLE_RANGES`] the
+    /// faces have, measured from their outlines as [`Font::measured_metrics`]
+    /// does, written exactly (`{:?}` of an f64 reads back as itself).
+    fn glyph_table_source() -> String {
+        let mut out = String::from(GLYPHS_HEAD);
+        let mut names = Vec::new();
+        for font in Font::ALL {
+            for style in [FontStyle::Regular, FontStyle::Italic] {
+                let name = format!("{}_{style:?}", font.name().replace('-', "_")).to_uppercase();
+                let v = font.face(style).vertical();
+                out.push_str(&format!(
+                    "\n/// {} {style:?}.\nstatic {name}: GlyphTable = GlyphTable {{\n    vertical: VerticalMetrics {{ ascent: {:?}, descent: {:?}, cap_height: {:?} }},\n    chars: &[\n",
+                    font.name(), v.ascent, v.descent, v.cap_height
+                ));
+                for (lo, hi) in TABLE_RANGES {
+                    for c in lo..=hi {
+                        let m = font.measured_metrics(c, style);
+                        if m.present {
+                            out.push_str(&format!(
+                                "        ({c:?}, [{:?}, {:?}, {:?}, {:?}, {:?}]),\n",
+                                m.advance, m.left, m.bottom, m.right, m.top
+                            ));
+                        }
+                    }
+                }
+                out.push_str("    ],\n};\n");
+                names.push(name);
+            }
+        }
+        out.push_str(&format!(
+            "\n/// By [`Font::index`](super::font): each face's regular, then italic.\npub(super) static TABLES: [&GlyphTable; 4] = [{}];\n",
+            names.iter().map(|n| format!("&{n}")).collect::<Vec<_>>().join(", ")
+        ));
+        out
+    }
+
+    const GLYPHS_HEAD: &str =
+        "//! Glyph metrics of the bundled faces, in ems: each style's vertical
+//! metrics and, for the characters figures write, the advance and the ink
+//! bounds (left, bottom, right, top) read from the glyph outlines, so
+//! that setting a figure's text decodes no outline (the first figure of a
+//! process costs what the hundredth does). Written from the faces by the
+//! test `the_glyph_table_is_what_the_faces_measure` in `font.rs` (run it
+//! with SLIDER_CRANK_WRITE_GLYPHS=1 after changing the faces or the
+//! characters); not edited by hand.
+
+use super::font::VerticalMetrics;
+
+/// The metrics of one style of a face.
+pub(super) struct GlyphTable {
+    /// Ascent, descent and cap height.
+    pub vertical: VerticalMetrics,
+    /// (character, [advance, left, bottom, right, top]), sorted by
+    /// character; only characters the face or its symbols face has.
+    pub chars: &'static [(char, [f64; 5])],
+}
+";
+
+    #[test]
+    fn the_glyph_table_is_what_the_faces_measure() {
+        let source = glyph_table_source();
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/src/figure/glyphs.rs");
+        if std::env::var_os("SLIDER_CRANK_WRITE_GLYPHS").is_some() {
+            std::fs::write(path, &source).unwrap();
+        }
+        let written = std::fs::read_to_string(path).unwrap();
+        assert!(
+            written == source,
+            "src/figure/glyphs.rs is not what the bundled faces measure: rerun this test with SLIDER_CRANK_WRITE_GLYPHS=1"
+        );
+        // The table and the outlines agree through the public measures.
+        for font in Font::ALL {
+            for style in [FontStyle::Regular, FontStyle::Italic] {
+                for c in ['A', 'θ', '′', '₂', '−', 'ω', '°', '∞'] {
+                    let m = font.measured_metrics(c, style);
+                    let t = font.char_metrics(c, style);
+                    assert_eq!(
+                        (m.advance, m.left, m.bottom, m.right, m.top, m.present),
+                        (t.advance, t.left, t.bottom, t.right, t.top, t.present),
+                        "{font} {style:?} {c}"
+                    );
+                }
+                assert_eq!(font.metrics(style), font.face(style).vertical());
+            }
+        }
     }
 }

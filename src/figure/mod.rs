@@ -8,6 +8,9 @@
 //! panel's one [`PageFromWorld`].
 
 mod font;
+// Written by a test from the bundled faces (see the file), not by hand.
+#[rustfmt::skip]
+mod glyphs;
 mod model;
 mod path;
 mod size;

@@ -24,7 +24,7 @@ pub(crate) use element::{Element, Node, escape_text};
 pub use fonts::font_database;
 pub use format::FileFormat;
 pub use number::{GRID, fmt};
-pub use output::{same_file, write_atomic, write_protected};
+pub use output::{same_file, write_atomic, write_atomic_with, write_protected};
 #[cfg(feature = "pdf")]
 pub use pdf::{POINTS_PER_UNIT, to_pdf};
 pub use pending::{Pending, remove_pending, uninterrupted};

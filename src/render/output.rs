@@ -115,10 +115,26 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
 /// readable by all, 0644). A device or FIFO is written directly; a write
 /// error there (`/dev/full`) is an error.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
+    write_atomic_with(path, |sink| sink(bytes))
+}
+
+/// [`write_atomic`] of what `write` gives its sink a piece at a time (a
+/// long animation, never held whole): the same kinds of file, the same
+/// whole-or-nothing replacement. An error from `write` (its own, or the
+/// sink's, which names `path`) leaves any old file as it was.
+pub fn write_atomic_with(
+    path: &Path,
+    write: impl FnOnce(&mut dyn FnMut(&[u8]) -> Result<()>) -> Result<()>,
+) -> Result<()> {
     let fail = |e: std::io::Error| Error::Io {
         message: format!("cannot write {}: {e}", path.display()),
         path: Some(path.to_path_buf()),
         source: Some(Arc::new(e)),
+    };
+    let fill = |file: &mut std::fs::File| -> Result<()> {
+        let mut out = std::io::BufWriter::with_capacity(1 << 16, file);
+        write(&mut |bytes| out.write_all(bytes).map_err(fail))?;
+        out.flush().map_err(fail)
     };
     match output_target(path)? {
         OutputTarget::Direct(p) => {
@@ -126,27 +142,40 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
                 .write(true)
                 .open(&p)
                 .map_err(fail)?;
-            file.write_all(bytes)
-                .and_then(|_| file.flush())
-                .map_err(fail)
+            fill(&mut file)
         }
-        OutputTarget::Replace(p) => replace(&p, bytes).map_err(fail),
+        OutputTarget::Replace(p) => replace(&p, fill, fail),
     }
 }
 
 /// Replaces the regular file `path` (or creates it) through a temporary
-/// file in its directory.
-fn replace(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+/// file in its directory, written by `fill`.
+fn replace(
+    path: &Path,
+    fill: impl FnOnce(&mut std::fs::File) -> Result<()>,
+    fail: impl Fn(std::io::Error) -> Error,
+) -> Result<()> {
+    let mut tmp = temporary(path).map_err(&fail)?;
+    let _pending = Pending::new(tmp.path());
+    fill(tmp.as_file_mut())?;
+    persist(path, tmp).map_err(fail)
+}
+
+/// An empty temporary file beside `path`.
+fn temporary(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
-    let old = std::fs::metadata(path).ok().map(|m| m.permissions());
-    let mut tmp = tempfile::Builder::new()
+    tempfile::Builder::new()
         .prefix(".slider-crank-")
-        .tempfile_in(dir)?;
-    let _pending = Pending::new(tmp.path());
-    tmp.write_all(bytes)?;
+        .tempfile_in(dir)
+}
+
+/// The written temporary file `tmp` renamed over `path`, with the
+/// permissions of the file it replaces.
+fn persist(path: &Path, tmp: tempfile::NamedTempFile) -> std::io::Result<()> {
+    let old = std::fs::metadata(path).ok().map(|m| m.permissions());
     tmp.as_file().sync_all()?;
     // An ordinary file, readable by others (temporary files are private),
     // unless it replaces one with its own permissions.

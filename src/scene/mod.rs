@@ -414,7 +414,7 @@ impl Scene {
     ///
     /// The constructions computed for the fit are not counted in the
     /// figure's [`Evaluations`], which count what it draws. Building the
-    /// figure fails when `angles` is empty or holds more than 3600 angles.
+    /// figure fails when `angles` is empty or holds more than 3960 angles.
     pub fn with_held_view(mut self, angles: Vec<Angle>) -> Self {
         self.held = Some(angles);
         self
@@ -435,7 +435,7 @@ impl Scene {
     /// [`Scene::with_held_view`] for D at infinity, the detail and poses
     /// outside the range). Each frame is the figure of
     /// `self.with_held_view(range).with_angles(..)`, byte for byte. Errors
-    /// when `angles` is empty or holds more than 3600 angles.
+    /// when `angles` is empty or holds more than 3960 angles.
     ///
     /// ```
     /// use slider_crank::{Angle, Layer, Scene, SliderCrank};
@@ -575,7 +575,7 @@ impl Scene {
     /// its own pose, or in the view held over [`Scene::held`]. The one
     /// check of the settings: the speed non-zero and within
     /// [`crate::MAX_OMEGA`], the torque finite, the tolerance in
-    /// [1e-6, 10], 1 to 64 poses, 1 to 3600 held poses.
+    /// [1e-6, 10], 1 to 64 poses, 1 to 3960 held poses.
     pub fn build(&self) -> Result<(Figure, Evaluations)> {
         valid::scene(self)?;
         let layout = self.held.as_deref().map(|a| draw::held(self, a));

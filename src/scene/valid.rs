@@ -10,8 +10,9 @@ use crate::error::{Error, Result, finite, positive};
 pub(crate) const MAX_POSES: usize = 64;
 
 /// The most poses a view is held over ([`Scene::with_held_view`]): every
-/// tenth of a degree.
-pub(crate) const MAX_HELD: usize = 3600;
+/// tenth of a degree and every degree, the most an animation holds (its
+/// 3600 frames with the revolution).
+pub(crate) const MAX_HELD: usize = 3960;
 
 /// Every setting of `scene` that can be out of range.
 pub(crate) fn scene(scene: &Scene) -> Result<()> {
