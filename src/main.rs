@@ -161,18 +161,27 @@ fn parse_error(e: clap::Error) -> ExitCode {
         return ExitCode::from(REFUSED);
     }
     // One line: clap's first paragraph names the problem (and, for a
-    // missing argument, lists it on the lines after the first).
+    // missing argument, lists it on the lines after the first), then its
+    // tips (the subcommand or flag nearest a misspelt one).
     let text = e.render().to_string();
     let first: Vec<&str> = text
         .lines()
         .take_while(|l| !l.trim().is_empty())
         .map(str::trim)
         .collect();
-    let first = if first.is_empty() {
+    let mut first = if first.is_empty() {
         "invalid arguments".to_string()
     } else {
         first.join(" ")
     };
+    for tip in text
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with("tip:"))
+    {
+        first.push_str("; ");
+        first.push_str(tip);
+    }
     eprintln!("slider-crank: {first} (see --help)");
     ExitCode::from(REFUSED)
 }

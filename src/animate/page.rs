@@ -38,6 +38,7 @@ const SCRIPT: &str = "
     shown = k;
     slider.value = k;
     value.textContent = '\\u03b8 = ' + frames[k].dataset.angleDeg + '\\u00b0';
+    slider.setAttribute('aria-valuetext', value.textContent);
   };
   const tick = () => {
     const k = (from + Math.floor((performance.now() - start) / step)) % frames.length;
@@ -62,9 +63,21 @@ const SCRIPT: &str = "
 })();
 ";
 
+/// What the page is headed with: the title given, else the figure's
+/// place in its source (`Textbook, Chapter IV “Slider-crank chains”, §36,
+/// Fig. 66 (Kisch’s construction)`), else the scene's name.
+fn heading(animation: &Animation) -> String {
+    match animation.title() {
+        Some(t) => t.to_string(),
+        None => crate::FigureName::from_name(animation.name())
+            .map(|f| f.source())
+            .unwrap_or_else(|_| animation.name().to_string()),
+    }
+}
+
 /// The whole page.
 pub(super) fn document(animation: &Animation) -> String {
-    let heading = animation.title().unwrap_or(animation.name());
+    let heading = heading(animation);
     let first = &animation.frames()[0];
     let title = format!("{heading}: one revolution of the crank");
     let body = html! {
@@ -76,14 +89,15 @@ pub(super) fn document(animation: &Animation) -> String {
         div .controls {
             button #play type="button" aria-pressed="false" { "Play" }
             input #angle type="range" min="0" max=(animation.frames().len() - 1)
-                step="1" value="0" aria-label="Crank angle (frame)";
+                step="1" value="0" aria-label="Crank angle θ"
+                aria-valuetext={ "θ = " (fmt(first.angle().degrees())) "°" };
             output #angle-value for="angle" {
                 "θ = " (fmt(first.angle().degrees())) "°"
             }
         }
         div #stage .stage data-period=(animation.period()) {
             @for (k, frame) in animation.frames().iter().enumerate() {
-                (frame_view(animation, frame, k))
+                (frame_view(animation, &heading, frame, k))
             }
         }
         script { (PreEscaped(SCRIPT)) }
@@ -92,7 +106,7 @@ pub(super) fn document(animation: &Animation) -> String {
 }
 
 /// Frame `k` as an inline SVG in its own block, hidden but for the first.
-fn frame_view(animation: &Animation, frame: &Frame, k: usize) -> Markup {
+fn frame_view(animation: &Animation, heading: &str, frame: &Frame, k: usize) -> Markup {
     let prefix = Frame::prefix(k);
     let (w, h) = (animation.width(), animation.height());
     let unit = animation.size_unit();
@@ -102,7 +116,7 @@ fn frame_view(animation: &Animation, frame: &Frame, k: usize) -> Markup {
             svg xmlns="http://www.w3.org/2000/svg" width=(root_size(w, unit))
                 height=(root_size(h, unit)) viewBox={ "0 0 " (fmt(w)) " " (fmt(h)) }
                 font-family=(animation.font_family()) role="img"
-                aria-label={ (animation.name()) " at θ = " (fmt(frame.angle().degrees())) "°" } {
+                aria-label={ (heading) " at θ = " (fmt(frame.angle().degrees())) "°" } {
                 (PreEscaped(frame.body(&prefix)))
             }
         }
