@@ -90,9 +90,11 @@ impl Class {
             }
             drawn.push(engine);
             let (r, n, angle, rpm) = engine;
-            // The rod as the sheet prints it (four figures: 1148, not
-            // 1147.5), so that the key works from the data on the sheet.
-            let rod = show(r * n).parse().unwrap_or(r * n);
+            // The crank and rod as the sheet prints them (four figures:
+            // 1148, not 1147.5; 0.95, not 0.9500000000000001), so that the
+            // key works from the data on the sheet.
+            let printed = |x: f64| show(x).parse().unwrap_or(x);
+            let (r, rod) = (printed(r), printed(r * n));
             let mechanism = SliderCrank::in_line(r, rod)?;
             let mut h = template.clone();
             h.mechanism = mechanism;

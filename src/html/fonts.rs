@@ -205,9 +205,12 @@ mod tests {
         let whole = FontRef::new(data).unwrap();
         let advance = |f: &FontRef, c: char| {
             let g = f.charmap().map(c).unwrap();
-            f.glyph_metrics(skrifa::instance::Size::unscaled(), Default::default())
-                .advance_width(g)
-                .unwrap()
+            f.glyph_metrics(
+                skrifa::instance::Size::unscaled(),
+                skrifa::instance::LocationRef::default(),
+            )
+            .advance_width(g)
+            .unwrap()
         };
         for c in "θAB x".chars() {
             assert_eq!(advance(&small, c), advance(&whole, c), "{c}");
