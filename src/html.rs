@@ -1,15 +1,18 @@
 //! What the crate's HTML pages share (the gallery's index, the handouts and
 //! exercise sheets): the document around a body, the book-page style sheet
 //! and rich text set as HTML. Every page is written through maud
-//! templates, so every text is escaped.
+//! templates, so every text is escaped. Every page carries the faces it
+//! is set in ([`fonts`]).
 
-use crate::figure::RichText;
+mod fonts;
+
+use crate::figure::{Font, RichText};
 use maud::{DOCTYPE, Markup, PreEscaped, html};
 
 /// The style sheet every page starts from: a plain book page, serif type,
 /// ruled tables.
 pub(crate) const BOOK_STYLE: &str = "
-body { font-family: 'New Computer Modern', 'Latin Modern Roman', Georgia, serif;
+body { font-family: NewComputerModern, 'NewComputerModern Math', 'Latin Modern Roman', serif;
        max-width: 60rem; margin: 2rem auto; padding: 0 1rem; color: #111; line-height: 1.4; }
 code { font-size: .9em; }
 table { border-collapse: collapse; margin: 1rem 0; }
@@ -18,8 +21,17 @@ caption { text-align: left; font-weight: bold; padding-bottom: .3rem; }
 ";
 
 /// A whole page: `<!DOCTYPE html>`, the head with `title` and the style
-/// sheet [`BOOK_STYLE`] followed by `style`, and `body`.
+/// sheet [`BOOK_STYLE`] followed by `style`, and `body`; the style sheet
+/// carries the faces of the page's text (New Computer Modern, and
+/// Libertinus Serif where a figure is set in it), cut to the characters
+/// the page holds.
 pub(crate) fn document(title: &str, style: &str, body: Markup) -> String {
+    let body = body.into_string();
+    let fonts: Vec<Font> = Font::ALL
+        .into_iter()
+        .filter(|f| *f == Font::default() || body.contains(f.family()))
+        .collect();
+    let faces = fonts::font_faces(&format!("{title}{body}"), &fonts);
     html! {
         (DOCTYPE)
         html lang="en" {
@@ -27,9 +39,9 @@ pub(crate) fn document(title: &str, style: &str, body: Markup) -> String {
                 meta charset="utf-8";
                 meta name="viewport" content="width=device-width, initial-scale=1";
                 title { (title) }
-                style { (PreEscaped(BOOK_STYLE)) (PreEscaped(style)) }
+                style { (PreEscaped(faces)) (PreEscaped(BOOK_STYLE)) (PreEscaped(style)) }
             }
-            body { (body) }
+            body { (PreEscaped(body)) }
         }
     }
     .into_string()

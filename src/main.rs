@@ -197,9 +197,10 @@ fn parse_error(e: clap::Error) -> ExitCode {
         return ExitCode::from(REFUSED);
     }
     // One line: clap's first paragraph names the problem (and, for a
-    // missing argument, lists it on the lines after the first); the value
-    // it quotes is shown escaped and cut (a carriage return, a bidi
-    // override or 100 KB are not echoed as given).
+    // missing argument, lists it on the lines after the first), then its
+    // tips (the subcommand or flag nearest a misspelt one); the value it
+    // quotes is shown escaped and cut (a carriage return, a bidi override
+    // or 100 KB are not echoed as given).
     let mut text = e.render().to_string();
     for kind in [ContextKind::InvalidValue, ContextKind::InvalidArg] {
         if let Some(ContextValue::String(raw)) = e.get(kind) {
@@ -212,11 +213,19 @@ fn parse_error(e: clap::Error) -> ExitCode {
         .take_while(|l| !l.trim().is_empty())
         .map(str::trim)
         .collect();
-    let first = if first.is_empty() {
+    let mut first = if first.is_empty() {
         "invalid arguments".to_string()
     } else {
         first.join(" ")
     };
+    for tip in text
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with("tip:"))
+    {
+        first.push_str("; ");
+        first.push_str(tip);
+    }
     let first = slider_crank::Error::Parse(first).one_line();
     cli::output::say(&format!("slider-crank: {first} (see --help)"));
     ExitCode::from(REFUSED)

@@ -412,11 +412,12 @@ pub fn kinematics_head(mechanism: &SliderCrank, omega: f64, units: &Units) -> Ta
     let u = units.length();
     Table {
         title: format!(
-            "Kinematics: r = {} {u}, l = {} {u}, e = {} {u}, ω = {} rad/s",
+            "Kinematics: r = {} {u}, l = {} {u}, e = {} {u}, {} rpm (ω = {} rad/s)",
             plain(mechanism.crank()),
             plain(mechanism.rod()),
             plain(mechanism.offset()),
-            plain(omega)
+            crate::catalogue::diagrams::short(omega * 60.0 / std::f64::consts::TAU),
+            crate::catalogue::diagrams::sig(omega)
         ),
         headers: vec![
             "θ (°)".into(),
@@ -549,7 +550,7 @@ impl TableName {
                 "Textbook, Chapter IV “Slider-crank chains”, §35: the table of eq. (3)"
             }
             TableName::Kinematics => {
-                "Textbook, Chapter IV “Slider-crank chains”, §35–37: the engine of §35, exact values (no table in the seed)"
+                "Textbook, Chapter IV “Slider-crank chains”, §35–37: the engine of §35, exact values (no table in the chapter)"
             }
             TableName::Forces => {
                 "Ng, “A slider-crank experiment to determine the action of static forces”, Table 2"

@@ -77,6 +77,18 @@ impl Unit {
     pub fn as_str(&self) -> &str {
         &self.0
     }
+
+    /// The force unit that goes with this length unit: newtons with the
+    /// metric lengths (`mm`, `cm`, `m`, `km`, `µm`), pounds-force with the
+    /// imperial ones (`in`, `ft`, `yd`, `mi`); `None` for any other name
+    /// (a force unit, `cm/10`), which has no usual partner.
+    pub fn usual_force(&self) -> Option<Unit> {
+        match self.as_str() {
+            "mm" | "cm" | "dm" | "m" | "km" | "µm" | "um" | "μm" | "nm" => Some(Unit::NEWTON),
+            "in" | "ft" | "yd" | "mi" => Some(Unit::POUND_FORCE),
+            _ => None,
+        }
+    }
 }
 
 impl FromStr for Unit {
@@ -143,6 +155,23 @@ impl Units {
     pub fn with_force(mut self, force: Unit) -> Self {
         self.force = force;
         self
+    }
+
+    /// These units with `length` and `force` in place of their own, as a
+    /// user asks for them: a length unit given without a force unit brings
+    /// the force unit that goes with it ([`Unit::usual_force`]: `mm` brings
+    /// `N`, `in` brings `lbf`), so that millimetres never meet
+    /// pounds-force unless asked. With neither given, the units unchanged;
+    /// a length unit with no usual partner keeps the force unit.
+    pub fn asked(self, length: Option<&Unit>, force: Option<&Unit>) -> Self {
+        let force = force
+            .cloned()
+            .or_else(|| length.and_then(Unit::usual_force))
+            .unwrap_or(self.force);
+        Units {
+            length: length.cloned().unwrap_or(self.length),
+            force,
+        }
     }
 
     /// The unit of lengths (`mm`).
@@ -239,5 +268,27 @@ mod tests {
         assert_eq!(json["force"], "kN");
         assert_eq!(json["velocity"], "mm/s");
         assert_eq!(Units::default(), Units::FOOT_POUND);
+    }
+
+    #[test]
+    fn a_length_unit_brings_its_force_unit() {
+        let unit = |s: &str| s.parse::<Unit>().unwrap();
+        let textbook = Units::FOOT_POUND;
+        let mm = textbook.clone().asked(Some(&unit("mm")), None);
+        assert_eq!(mm.force().as_str(), "N");
+        assert_eq!(mm.torque(), "N·mm");
+        let m = Units::MILLIMETRE_NEWTON.asked(Some(&unit("in")), None);
+        assert_eq!(m.torque(), "lbf·in");
+        // Asked for both: both as given, however odd.
+        let both = textbook
+            .clone()
+            .asked(Some(&unit("mm")), Some(&unit("lbf")));
+        assert_eq!(both.torque(), "lbf·mm");
+        // A name with no usual partner keeps the force unit.
+        let odd = textbook.clone().asked(Some(&unit("cubit")), None);
+        assert_eq!(odd.torque(), "lbf·cubit");
+        assert_eq!(textbook.clone().asked(None, None), textbook);
+        let kn = textbook.asked(None, Some(&unit("kN")));
+        assert_eq!(kn.torque(), "kN·ft");
     }
 }

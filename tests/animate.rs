@@ -551,3 +551,25 @@ fn chromium_plays_the_page() {
     // machine may not do within a virtual-time budget.
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn the_page_is_headed_by_the_figure_and_its_slider_speaks_the_angle() {
+    // Issue 22: the heading was the slug, the slider announced 0–71.
+    let html = animate("a11y", "k.html", &["fig-66-kisch", "--frames", "4"]);
+    let h1 = &html[html.find("<h1>").unwrap() + 4..html.find("</h1>").unwrap()];
+    assert!(
+        h1.contains("Fig. 66") && !h1.contains("fig-66-kisch"),
+        "{h1}"
+    );
+    let slider = &html[html.find("<input").unwrap()..];
+    let slider = &slider[..slider.find('>').unwrap()];
+    assert!(slider.contains("aria-valuetext=\"θ = 0°\""), "{slider}");
+    // The script keeps it in step with the frame shown.
+    assert!(html.contains("setAttribute('aria-valuetext'"), "the script");
+    let titled = animate(
+        "a11y-title",
+        "k.html",
+        &["fig-66-kisch", "--frames", "4", "--title", "Kisch"],
+    );
+    assert!(titled.contains("<h1>Kisch</h1>"));
+}

@@ -141,9 +141,32 @@ const PROBE: &str = r#"<script>
       .map(e => ({ box: box(e), loaded: e.tagName !== 'IMG' || (e.complete && e.naturalWidth > 0) }));
     const blocks = [...document.querySelectorAll('figure, table, .block')]
       .map(e => ({ tag: e.tagName, id: e.id, height: box(e)[3] }));
+    // Every text of a drawing inside the drawing, and every legend's text
+    // inside the legend's frame, as the browser set them.
+    const overflows = [];
+    const inside = (a, b) => a.left >= b.left - 0.5 && a.right <= b.right + 0.5
+      && a.top >= b.top - 0.5 && a.bottom <= b.bottom + 0.5;
+    for (const svg of document.querySelectorAll('svg')) {
+      if (svg.parentElement.closest('svg') || svg.getClientRects().length === 0) continue;
+      const frame = svg.getBoundingClientRect();
+      for (const t of svg.querySelectorAll('text')) {
+        const r = t.getBoundingClientRect();
+        if (r.width > 0 && !inside(r, frame)) overflows.push(t.textContent);
+      }
+      for (const box of svg.querySelectorAll('[id$="-legend-box"]')) {
+        const stem = box.id.slice(0, -'box'.length);
+        const frame = box.getBoundingClientRect();
+        for (const t of svg.querySelectorAll('text[id^="' + stem + '"]')) {
+          const r = t.getBoundingClientRect();
+          if (r.width > 0 && !inside(r, frame)) overflows.push(t.textContent);
+        }
+      }
+    }
+    const notes = [...document.querySelectorAll('svg text[id*="note-"]')]
+      .filter(t => t.getClientRects().length > 0).map(t => t.textContent);
     const out = document.createElement('pre');
     out.id = 'probe';
-    out.textContent = JSON.stringify({ errors, figures, blocks, height: document.documentElement.scrollHeight });
+    out.textContent = JSON.stringify({ errors, figures, blocks, overflows, notes, height: document.documentElement.scrollHeight });
     document.body.appendChild(out);
   });
 })();
@@ -242,6 +265,12 @@ fn check_print(browser: &Path, page: &Path, paper: &Paper) {
     let name = page.display();
     let (width, height) = paper.printable;
     let report = probe(browser, page, width.round() as u32, true);
+    assert_eq!(
+        report["overflows"],
+        Value::Array(vec![]),
+        "{name}: texts past their drawing or legend on {}",
+        paper.pdfinfo
+    );
     for block in report["blocks"].as_array().unwrap() {
         let h = block["height"].as_f64().unwrap();
         assert!(
@@ -266,20 +295,74 @@ fn check_print(browser: &Path, page: &Path, paper: &Paper) {
         return;
     };
     let info = String::from_utf8_lossy(&info.stdout);
-    assert!(info.contains(paper.pdfinfo), "{name}: {info}");
+    let html = std::fs::read_to_string(page).unwrap();
+    // A page that names its paper prints on it (the animation names none).
+    if html.contains("@page") {
+        assert!(info.contains(paper.pdfinfo), "{name}: {info}");
+    }
     let text = Command::new("pdftotext")
-        .arg(&pdf)
-        .arg("-")
+        .args(["-raw", pdf.to_str().unwrap(), "-"])
         .output()
         .unwrap();
     let text = String::from_utf8_lossy(&text.stdout);
-    let html = std::fs::read_to_string(page).unwrap();
-    let captions = html.matches("<figcaption").count();
-    assert!(captions > 0, "{name}: no captions");
+    let captions = html.matches("<span class=\"label\">Figure ").count();
     for k in 1..=captions {
         assert!(
             text.contains(&format!("Figure {k}.")) || text.contains(&format!("FIGURE {k}.")),
             "{name}: the caption of figure {k} is not in the printed text"
+        );
+    }
+    // Every note of the drawings printed whole, in the faces the page
+    // carries (issue 22: a fallback face cut Fig. 5's note short).
+    let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+    let printed = bare(&text);
+    let notes = report["notes"].as_array().unwrap();
+    for note in notes {
+        let note = note.as_str().unwrap();
+        assert!(
+            printed.contains(&bare(note)),
+            "{name}: the note “{note}” is not whole in the printed text on {}",
+            paper.pdfinfo
+        );
+    }
+    assert_fonts_embedded(&pdf);
+}
+
+/// The printed PDF's faces: the page's own, every one embedded, no
+/// fallback text face. Chromium embeds the faces a page carries (CFF
+/// outlines) as Type 3 fonts, which have no name; a face it found on the
+/// system has its name (`DejaVuSerif`). The monospace face of the
+/// commands (`code`) is the reader's own.
+fn assert_fonts_embedded(pdf: &Path) {
+    let Ok(out) = Command::new("pdffonts").arg(pdf).output() else {
+        eprintln!("pdffonts not found: the printed faces are not checked");
+        return;
+    };
+    let list = String::from_utf8_lossy(&out.stdout);
+    let fonts: Vec<Vec<&str>> = list
+        .lines()
+        .skip(2)
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    let carried =
+        |name: &str| name == "[none]" || name.contains("NewCM") || name.contains("Libertinus");
+    assert!(
+        fonts.iter().any(|f| carried(f[0])),
+        "{}: none of the page's faces: {list}",
+        pdf.display()
+    );
+    for f in &fonts {
+        assert!(
+            carried(f[0]) || f[0].contains("Mono"),
+            "{}: a fallback face {}: {list}",
+            pdf.display(),
+            f[0]
+        );
+        // The column "emb", fifth from the end, says yes.
+        assert!(
+            f.len() >= 6 && f[f.len() - 5] == "yes",
+            "{}: {f:?}",
+            pdf.display()
         );
     }
 }
@@ -380,27 +463,53 @@ fn a_handout_loads_draws_and_prints_on_a4_and_letter() {
     check_page(&browser, &page);
     check_print(&browser, &page, &A4);
     check_print(&browser, &write("letter.html", "letter"), &LETTER);
+    // Issue 22's teacher's engine, whose Fig. 5 note and Fig. 8 legend a
+    // fallback face once overran.
+    let teacher =
+        "--crank 60 --rod 240 --unit mm --rpm 1500 --angle 30 --torque 5000 --friction 0.1";
+    for (file, paper, size) in [
+        ("t-a4.html", "a4", &A4),
+        ("t-letter.html", "letter", &LETTER),
+    ] {
+        let page = dir.path().join(file);
+        let mut args = vec!["handout"];
+        args.extend(teacher.split(' '));
+        args.extend(["--paper", paper, "--out", page.to_str().unwrap()]);
+        succeeded(&run(&args));
+        check_print(&browser, &page, size);
+    }
 }
 
 #[test]
-fn an_exercise_sheet_and_its_key_load_and_draw() {
+fn an_exercise_sheet_and_its_key_load_draw_and_print_on_a4_and_letter() {
     let Some(browser) = browser() else { return };
     let dir = tempfile::tempdir().unwrap();
-    let page = dir.path().join("sheet.html");
-    succeeded(&run(&[
-        "handout",
-        "--crank",
-        "0.5",
-        "--rod",
-        "2.5",
-        "--angle",
-        "130",
-        "--exercise",
-        "--out",
-        page.to_str().unwrap(),
-    ]));
-    check_page(&browser, &page);
-    check_page(&browser, &dir.path().join("sheet-key.html"));
+    for (paper, size) in [("a4", &A4), ("letter", &LETTER)] {
+        let page = dir.path().join(format!("sheet-{paper}.html"));
+        succeeded(&run(&[
+            "handout",
+            "--crank",
+            "0.5",
+            "--rod",
+            "2.5",
+            "--angle",
+            "130",
+            "--torque",
+            "40",
+            "--exercise",
+            "--paper",
+            paper,
+            "--out",
+            page.to_str().unwrap(),
+        ]));
+        let key = dir.path().join(format!("sheet-{paper}-key.html"));
+        if paper == "a4" {
+            check_page(&browser, &page);
+            check_page(&browser, &key);
+        }
+        check_print(&browser, &page, size);
+        check_print(&browser, &key, size);
+    }
 }
 
 #[test]
@@ -421,6 +530,9 @@ fn an_animation_plays_and_its_frame_is_drawn() {
     // One frame shown at a time, drawn, with no script error.
     let report = check_page(&browser, &page);
     assert_eq!(report["figures"].as_array().unwrap().len(), 1, "{report}");
+    // Printed, the frame shown keeps its faces and its notes whole.
+    check_print(&browser, &page, &A4);
+    check_print(&browser, &page, &LETTER);
     // Playing: two moments a second apart show different frames.
     let shot = |ms: u32| {
         let path = dir.path().join(format!("at-{ms}.png"));

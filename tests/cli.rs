@@ -612,9 +612,16 @@ fn analyze_carries_the_unit_names() {
     assert_eq!(u["length"], "mm");
     assert_eq!(u["velocity"], "mm/s");
     assert_eq!(u["acceleration"], "mm/s²");
-    assert_eq!(u["force"], "lbf");
-    assert_eq!(u["torque"], "lbf·mm");
+    // Millimetres bring newtons (issue 22: never lbf·mm unless asked).
+    assert_eq!(u["force"], "N");
+    assert_eq!(u["torque"], "N·mm");
     assert_eq!(u["angular_velocity"], "rad/s");
+    let torque = json(&["analyze", "--unit", "mm", "--torque", "5000", "--json"]);
+    assert_eq!(torque["units"]["torque"], "N·mm");
+    let asked = json(&["analyze", "--unit", "mm", "--force-unit", "lbf", "--json"]);
+    assert_eq!(asked["units"]["torque"], "lbf·mm");
+    let m = json(&["analyze", "--unit", "m", "--json"]);
+    assert_eq!(m["units"]["torque"], "N·m");
     // Names only: the numbers are those without the flag.
     let plain = json(&["analyze", "--json"]);
     assert_eq!(plain["analytic"], v["analytic"]);
@@ -678,6 +685,13 @@ fn tables_name_their_units() {
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(
         text.starts_with("θ (°),x_A (m),dx/dt (m/s),d²x/dt² (m/s²),φ (°),dφ/dt (rad/s),"),
+        "{text}"
+    );
+    // The title gives the speed as a reader would write it (issue 22).
+    let out = run(&["table", "kinematics"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(
+        text.contains("250 rpm (ω = 26.18 rad/s)") && !text.contains("26.1799"),
         "{text}"
     );
     let out = run(&["table", "forces", "--force-unit", "kN"]);
@@ -768,5 +782,66 @@ fn figure_help_names_every_layer() {
             "{} missing from: {text}",
             layer.name()
         );
+    }
+}
+
+/// A refused run: exit 2, one line on standard error, returned.
+fn refused(args: &[&str]) -> String {
+    let out = run(args);
+    assert_eq!(out.status.code(), Some(2), "{args:?}");
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+    stderr
+}
+
+#[test]
+fn a_mistake_is_told_what_to_write() {
+    // Issue 22: each message says what the user meant.
+    let e = refused(&["figure", "fig-67-exmaple"]);
+    assert!(e.contains("did you mean 'fig-67-example'?"), "{e}");
+    let e = refused(&["figure", "klein"]);
+    assert!(e.contains("did you mean 'fig-65-klein'?"), "{e}");
+    let e = refused(&["analyse"]);
+    assert!(e.contains("'analyze'"), "{e}");
+    // `table` takes --angle as `analyze` does, and `analyze` --angles.
+    let out = run(&[
+        "table",
+        "kinematics",
+        "--angle",
+        "0:360:90",
+        "--format",
+        "csv",
+    ]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(text.lines().count(), 6, "{text}");
+    let both = json(&["analyze", "--angles", "0,90", "--json"]);
+    assert_eq!(both.as_array().map(Vec::len), Some(2));
+    // A missing folder is named, for every command that writes one file.
+    let dir = tempfile::tempdir().unwrap();
+    let missing = dir.path().join("nope");
+    for (args, file) in [
+        (&["figure", "fig-66-kisch", "--out"][..], "x.svg"),
+        (&["handout", "--out"][..], "h.html"),
+        (
+            &["animate", "fig-66-kisch", "--frames", "4", "--out"][..],
+            "a.html",
+        ),
+    ] {
+        let path = missing.join(file);
+        let mut args = args.to_vec();
+        args.push(path.to_str().unwrap());
+        let e = refused(&args);
+        assert!(
+            e.contains(&format!("the folder {} does not exist", missing.display())),
+            "{args:?}: {e}"
+        );
+        assert!(!missing.exists());
+    }
+    // Page widths in cm and pt as well as mm and in.
+    for (width, attribute) in [("12cm", "width=\"12cm\""), ("340pt", "width=\"340pt\"")] {
+        let out = run(&["figure", "fig-66-kisch", "--width", width]);
+        assert!(out.status.success(), "{width}");
+        let svg = String::from_utf8(out.stdout).unwrap();
+        assert!(svg.contains(attribute), "{width}");
     }
 }

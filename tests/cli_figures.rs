@@ -316,6 +316,16 @@ fn fig_67_notes_follow_the_unit() {
         t.contains("kN·m.") && t.contains(" kN,") && !t.contains("mm"),
         "{t}"
     );
+    // Inches bring pounds-force to Ng's figure, millimetres newtons to the
+    // textbook's.
+    let inch = svg_of(&["figure", "ng-fig-1-torque", "--unit", "in"]);
+    let t = texts(&inch).join("\n");
+    assert!(t.contains("lbf·in") && !t.contains("N·in"), "{t}");
+    let f = svg_of(&["figure", "ng-fig-8-forces", "--unit", "in"]);
+    assert_eq!(
+        metadata(&f)["plots"][0]["y"]["title"],
+        "force on the slider (lbf)"
+    );
     // A diagram of forces names the force unit on its axis.
     let f = svg_of(&["figure", "ng-fig-8-forces", "--force-unit", "lbf"]);
     let y = metadata(&f)["plots"][0]["y"]["title"]

@@ -379,3 +379,172 @@ fn bad_input_is_one_line_a_failure_and_no_file() {
         assert!(left.is_empty(), "{args:?} left {left:?}");
     }
 }
+
+#[test]
+fn millimetres_bring_newtons_to_the_sheet_and_the_handout() {
+    // Issue 22: `--unit mm` with a torque once printed lbf·mm.
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("page.html");
+    let base = [
+        "handout",
+        "--crank",
+        "60",
+        "--rod",
+        "240",
+        "--rpm",
+        "1500",
+        "--angle",
+        "30",
+        "--unit",
+        "mm",
+        "--torque",
+        "5000",
+        "--friction",
+        "0.1",
+        "--out",
+    ];
+    let mut args = base.to_vec();
+    args.push(page.to_str().unwrap());
+    succeeded(&run(&args));
+    let html = read(&page);
+    assert!(html.contains("N·mm") && !html.contains("lbf"), "{html}");
+    args.push("--exercise");
+    succeeded(&run(&args));
+    let sheet = read(&page);
+    assert!(
+        sheet.contains("Lengths in mm, forces in N.") && !sheet.contains("lbf"),
+        "{sheet}"
+    );
+}
+
+#[test]
+fn every_drawing_of_a_page_is_an_image_named_by_its_caption() {
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("page.html");
+    let out = page.to_str().unwrap();
+    succeeded(&run(&[
+        "handout",
+        "--torque",
+        "10",
+        "--exercise",
+        "--out",
+        out,
+    ]));
+    succeeded(&run(&[
+        "handout",
+        "--out",
+        out.replace("page", "whole").as_str(),
+    ]));
+    for name in ["page.html", "page-key.html", "whole.html"] {
+        let html = read(&dir.path().join(name));
+        let roots: Vec<&str> = html.split("<svg").skip(1).collect();
+        assert!(!roots.is_empty(), "{name}");
+        for root in roots {
+            let tag = &root[..root.find('>').unwrap()];
+            assert!(tag.contains("role=\"img\""), "{name}: {tag}");
+            let label = tag.split("aria-label=\"").nth(1).unwrap_or("");
+            assert!(
+                label.starts_with("Figure ") || label.starts_with("Drawing."),
+                "{name}: {tag}"
+            );
+            assert!(label.len() > 20, "{name}: {tag}");
+        }
+    }
+}
+
+#[test]
+fn the_steps_sign_what_the_tables_sign_and_the_command_gives_rpm() {
+    // Issue 22's engine: FG and the rod's angular acceleration are
+    // negative at 30°, the footer once wrote --omega 157.0796…
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("page.html");
+    succeeded(&run(&[
+        "handout",
+        "--crank",
+        "60",
+        "--rod",
+        "240",
+        "--rpm",
+        "1500",
+        "--angle",
+        "30",
+        "--unit",
+        "mm",
+        "--out",
+        page.to_str().unwrap(),
+    ]));
+    let html = read(&page);
+    let step = html
+        .split("<p")
+        .find(|p| p.contains("gives its angular acceleration"))
+        .expect("the step of FG");
+    let values: std::collections::BTreeMap<String, f64> = values(&html).into_iter().collect();
+    let fg = values["construction.FG"];
+    assert!(fg < 0.0, "{fg}");
+    let shown = |x: f64| format!("{:.2}", x).replace('-', "−");
+    assert!(step.contains(&format!("= {} mm", shown(fg))), "{step}");
+    assert!(step.contains("= −"), "{step}");
+    assert!(
+        html.contains("--rpm 1500 ") && !html.contains("--omega"),
+        "footer"
+    );
+    // The caption of the engine says where x is measured from, as the
+    // table does.
+    assert!(
+        !html.contains("from mid-stroke.") && html.contains("distance from the crank centre"),
+        "caption"
+    );
+}
+
+#[test]
+fn a_sheet_is_drawn_at_the_round_scale_it_states() {
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("sheet.html");
+    for (engine, unit_mm) in [
+        (&["--crank", "60", "--rod", "240", "--unit", "mm"][..], 1.0),
+        (&["--crank", "0.5", "--rod", "2.5"][..], 304.8),
+    ] {
+        let mut args = vec!["handout", "--exercise", "--angle", "40"];
+        args.extend_from_slice(engine);
+        args.extend(["--out", page.to_str().unwrap()]);
+        succeeded(&run(&args));
+        let html = read(&page);
+        let stated = html.split("Drawn at 1:").nth(1).expect("a stated scale");
+        let ratio: f64 = stated[..stated.find(' ').unwrap()].parse().unwrap();
+        let svg = &html[html.find("<svg").unwrap()..];
+        let root = &svg[..svg.find('>').unwrap()];
+        let width: f64 = root
+            .split("style=\"width: ")
+            .nth(1)
+            .unwrap()
+            .split("mm")
+            .next()
+            .unwrap()
+            .parse()
+            .unwrap();
+        let view: Vec<f64> = root
+            .split("viewBox=\"")
+            .nth(1)
+            .unwrap()
+            .split('"')
+            .next()
+            .unwrap()
+            .split(' ')
+            .map(|v| v.parse().unwrap())
+            .collect();
+        let map = svg.split("\"page_from_world\":[").nth(1).unwrap();
+        let m: Vec<f64> = map[..map.find(']').unwrap()]
+            .split(',')
+            .map(|v| v.parse().unwrap())
+            .collect();
+        let per_unit = m[0].hypot(m[1]);
+        // Paper millimetres per millimetre of the engine.
+        let drawn = width / view[2] * per_unit / unit_mm;
+        assert!(
+            (drawn * ratio - 1.0).abs() < 1e-9,
+            "1:{ratio} against 1:{}",
+            1.0 / drawn
+        );
+        assert!(width <= 180.0 + 1e-9, "{width} mm");
+    }
+}

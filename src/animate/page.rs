@@ -39,6 +39,7 @@ const SCRIPT: &str = "
     shown = k;
     slider.value = k;
     value.textContent = '\\u03b8 = ' + frames[k].dataset.angleDeg + '\\u00b0';
+    slider.setAttribute('aria-valuetext', value.textContent);
   };
   const tick = () => {
     const k = (from + Math.floor((performance.now() - start) / step)) % frames.length;
@@ -63,6 +64,18 @@ const SCRIPT: &str = "
 })();
 ";
 
+/// What the page is headed with: the title given, else the figure's
+/// place in its source (`Textbook, Chapter IV “Slider-crank chains”, §36,
+/// Fig. 66 (Kisch’s construction)`), else the scene's name.
+fn heading(animation: &Reel) -> String {
+    match animation.title() {
+        Some(t) => t.to_string(),
+        None => crate::FigureName::from_name(animation.name())
+            .map(|f| f.source())
+            .unwrap_or_else(|_| animation.name().to_string()),
+    }
+}
+
 /// The whole page.
 pub(super) fn document(animation: &Animation) -> String {
     let mut out = String::new();
@@ -80,18 +93,18 @@ pub(super) fn write(
     frames: impl Iterator<Item = Frame>,
     sink: &mut dyn FnMut(&str) -> Result<()>,
 ) -> Result<()> {
-    let skeleton = skeleton(animation);
+    let heading = heading(animation);
+    let skeleton = skeleton(animation, &heading);
     let (head, tail) = split(&skeleton);
     sink(head)?;
     for (k, frame) in frames.enumerate() {
-        sink(&frame_view(animation, &frame, k).into_string())?;
+        sink(&frame_view(animation, &heading, &frame, k).into_string())?;
     }
     sink(tail)
 }
 
 /// The page with [`FRAMES_HERE`] where the frames go.
-fn skeleton(animation: &Reel) -> String {
-    let heading = animation.title().unwrap_or(animation.name());
+fn skeleton(animation: &Reel, heading: &str) -> String {
     let first = animation.first();
     let count = animation.angles().len();
     let title = format!("{heading}: one revolution of the crank");
@@ -104,7 +117,8 @@ fn skeleton(animation: &Reel) -> String {
         div .controls {
             button #play type="button" aria-pressed="false" { "Play" }
             input #angle type="range" min="0" max=(count - 1)
-                step="1" value="0" aria-label="Crank angle (frame)";
+                step="1" value="0" aria-label="Crank angle θ"
+                aria-valuetext={ "θ = " (fmt(first.angle().degrees())) "°" };
             output #angle-value for="angle" {
                 "θ = " (fmt(first.angle().degrees())) "°"
             }
@@ -118,7 +132,7 @@ fn skeleton(animation: &Reel) -> String {
 }
 
 /// Frame `k` as an inline SVG in its own block, hidden but for the first.
-fn frame_view(animation: &Reel, frame: &Frame, k: usize) -> Markup {
+fn frame_view(animation: &Reel, heading: &str, frame: &Frame, k: usize) -> Markup {
     let prefix = Frame::prefix(k);
     let (w, h) = (animation.width(), animation.height());
     let unit = animation.size_unit();
@@ -128,7 +142,7 @@ fn frame_view(animation: &Reel, frame: &Frame, k: usize) -> Markup {
             svg xmlns="http://www.w3.org/2000/svg" width=(root_size(w, unit))
                 height=(root_size(h, unit)) viewBox={ "0 0 " (fmt(w)) " " (fmt(h)) }
                 font-family=(animation.font_family()) role="img"
-                aria-label={ (animation.name()) " at θ = " (fmt(frame.angle().degrees())) "°" } {
+                aria-label={ (heading) " at θ = " (fmt(frame.angle().degrees())) "°" } {
                 (PreEscaped(frame.body(&prefix)))
             }
         }

@@ -158,17 +158,46 @@ impl FigureName {
         }
     }
 
-    /// The figure of that name; the error lists the names.
+    /// The figure of that name; the error suggests the nearest name
+    /// ([`FigureName::nearest`]), if any is near, and lists them all.
     pub fn from_name(name: &str) -> Result<Self> {
         Self::ALL
             .into_iter()
             .find(|f| f.name() == name)
             .ok_or_else(|| {
+                let hint = Self::nearest(name)
+                    .map(|f| format!(": did you mean '{}'?", f.name()))
+                    .unwrap_or_default();
                 Error::Parse(format!(
-                    "unknown figure '{name}': expected one of {}",
+                    "unknown figure '{name}'{hint} (the figures: {})",
                     Self::ALL.map(|f| f.name()).join(", ")
                 ))
             })
+    }
+
+    /// The figure a mistyped `name` most likely meant: the only one whose
+    /// name holds it whole (`klein` → `fig-65-klein`, compared without
+    /// case), else the one fewest edits away when that is at most a third
+    /// of the name's length (`fig-67-exmaple` → `fig-67-example`); `None`
+    /// when none is near or two are equally near.
+    pub fn nearest(name: &str) -> Option<Self> {
+        let name = name.to_lowercase();
+        let holding: Vec<Self> = Self::ALL
+            .into_iter()
+            .filter(|f| name.len() >= 3 && f.name().contains(name.as_str()))
+            .collect();
+        if let [only] = holding[..] {
+            return Some(only);
+        }
+        let mut by_distance: Vec<(usize, Self)> = Self::ALL
+            .into_iter()
+            .map(|f| (strsim::levenshtein(&name, f.name()), f))
+            .collect();
+        by_distance.sort_by_key(|d| d.0);
+        match by_distance[..] {
+            [(d, f), (next, _), ..] if d < next && 3 * d <= name.chars().count() => Some(f),
+            _ => None,
+        }
     }
 
     /// Whether it follows Ng's paper (letters O, C, P, I, M; r = 25 mm,
@@ -363,12 +392,11 @@ impl FigureName {
             }
             scene = scene.with_layers(layers.iter().copied());
         }
-        if let Some(u) = &options.length_unit {
-            scene = scene.with_length_unit(u.clone());
-        }
-        if let Some(u) = &options.force_unit {
-            scene = scene.with_force_unit(u.clone());
-        }
+        let units = scene
+            .units()
+            .clone()
+            .asked(options.length_unit.as_ref(), options.force_unit.as_ref());
+        scene = scene.with_units(units);
         if let Some(n) = options.notation {
             scene = scene.with_notation(n);
         }
@@ -426,6 +454,28 @@ impl FigureName {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_mistyped_name_is_told_the_nearest() {
+        let near = |s: &str| FigureName::nearest(s).map(|f| f.name());
+        assert_eq!(near("fig-67-exmaple"), Some("fig-67-example"));
+        assert_eq!(near("klein"), Some("fig-65-klein"));
+        assert_eq!(near("Kisch"), Some("fig-66-kisch"));
+        assert_eq!(near("rod-moton"), Some("rod-motion"));
+        // Held by several names, or far from all: no guess.
+        assert_eq!(near("fig"), None);
+        assert_eq!(near("zzzzzzzz"), None);
+        let e = FigureName::from_name("fig-67-exmaple")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("did you mean 'fig-67-example'?"), "{e}");
+        assert!(!e.contains('\n'), "{e}");
+        let e = FigureName::from_name("zzzzzzzz").unwrap_err().to_string();
+        assert!(
+            !e.contains("did you mean") && e.contains("fig-66-kisch"),
+            "{e}"
+        );
+    }
 
     #[test]
     fn names_round_trip() {

@@ -88,8 +88,10 @@ pub struct FigureOptions {
     /// speeds are written in it per second. A name only: no number is
     /// converted.
     pub length_unit: Option<Unit>,
-    /// The name of the force unit (the figure's own by default: `lbf` for
-    /// the textbook's, `N` for Ng's); torques are written force·length.
+    /// The name of the force unit; torques are written force·length. By
+    /// default the one that goes with [`FigureOptions::length_unit`] (`N`
+    /// for `mm`, `lbf` for `in`: [`crate::Unit::usual_force`]), else the
+    /// figure's own (`lbf` for the textbook's, `N` for Ng's).
     pub force_unit: Option<Unit>,
     /// The letters of a mechanism figure (default: the seed's).
     pub notation: Option<Notation>,
@@ -98,7 +100,7 @@ pub struct FigureOptions {
     /// mechanism figures and the diagrams drawn on the mechanism
     /// (`fig-61-centrodes`, `fig-64-velocity-diagrams`, `coupler-curves`).
     pub mirror: Option<bool>,
-    /// The page's width (default the figure's own); in mm or in, the SVG
+    /// The page's width (default the figure's own); in mm, cm, in or pt, the SVG
     /// gives its size in that unit ([`crate::Page::sized`]).
     pub width: Option<PageLength>,
     /// The page's height (default the figure's own): the most a mechanism
@@ -148,7 +150,7 @@ impl FigureOptions {
     }
 
     /// `page` with the width and height asked for in place of its own;
-    /// the SVG's size is then in the unit of the width if that is mm or in,
+    /// the SVG's size is then in the unit of the width if that is physical,
     /// else in that of the height.
     pub(crate) fn page(&self, page: &Page) -> Result<Page> {
         if self.width.is_none() && self.height.is_none() {

@@ -28,8 +28,8 @@ struct File {
     title: Option<Title>,
     mechanism: Option<MechanismFile>,
     units: Option<UnitsFile>,
-    angle: Option<Spanned<f64>>,
-    angles: Option<Spanned<Vec<f64>>>,
+    angle: Option<Spanned<Degrees>>,
+    angles: Option<Spanned<Vec<Degrees>>>,
     layers: Option<Spanned<Vec<Layer>>>,
     style: Option<Style>,
     font: Option<Font>,
@@ -43,6 +43,53 @@ struct File {
     force_unit: Option<Spanned<Unit>>,
     coupler: Option<Spanned<f64>>,
     tolerance: Option<Spanned<f64>>,
+}
+
+/// A crank angle in a scene file: a number of degrees. A text such as
+/// `"120deg"` or `"120°"` is refused with what to write instead.
+#[derive(Debug, Clone, Copy)]
+struct Degrees(f64);
+
+impl<'de> Deserialize<'de> for Degrees {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Self, D::Error> {
+        struct Visitor;
+        impl serde::de::Visitor<'_> for Visitor {
+            type Value = Degrees;
+
+            fn expecting(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+                f.write_str("an angle in degrees, a number such as 120")
+            }
+
+            fn visit_f64<E: serde::de::Error>(self, v: f64) -> std::result::Result<Degrees, E> {
+                Ok(Degrees(v))
+            }
+
+            fn visit_i64<E: serde::de::Error>(self, v: i64) -> std::result::Result<Degrees, E> {
+                Ok(Degrees(v as f64))
+            }
+
+            fn visit_u64<E: serde::de::Error>(self, v: u64) -> std::result::Result<Degrees, E> {
+                Ok(Degrees(v as f64))
+            }
+
+            fn visit_str<E: serde::de::Error>(self, v: &str) -> std::result::Result<Degrees, E> {
+                let number = v
+                    .trim()
+                    .trim_end_matches(|c: char| c.is_alphabetic() || c == '°')
+                    .trim();
+                let shown: String = v.chars().take(20).flat_map(char::escape_default).collect();
+                Err(E::custom(match number.parse::<f64>() {
+                    Ok(n) if n.is_finite() => format!(
+                        "an angle is a number of degrees without quotes or unit: write {n} for \"{shown}\""
+                    ),
+                    _ => format!(
+                        "an angle is a number of degrees without quotes or unit, such as 120, not \"{shown}\""
+                    ),
+                }))
+            }
+        }
+        d.deserialize_any(Visitor)
+    }
 }
 
 #[derive(Debug, Deserialize)]
@@ -349,12 +396,8 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         scene = scene.with_mechanism(mechanism(text, m)?);
     }
     let (length, force) = units(text, &file)?;
-    if let Some(u) = length {
-        scene = scene.with_length_unit(u);
-    }
-    if let Some(u) = force {
-        scene = scene.with_force_unit(u);
-    }
+    let units = scene.units().clone().asked(length.as_ref(), force.as_ref());
+    scene = scene.with_units(units);
     match (&file.angle, &file.angles) {
         (Some(_), Some(b)) => {
             return Err(located(
@@ -364,14 +407,14 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
             ));
         }
         (Some(a), None) => {
-            let angle = at(text, a.span(), Angle::from_degrees(*a.get_ref()))?;
+            let angle = at(text, a.span(), Angle::from_degrees(a.get_ref().0))?;
             scene = scene.with_angles(vec![angle]);
         }
         (None, Some(list)) => {
             let angles = list
                 .get_ref()
                 .iter()
-                .map(|d| Angle::from_degrees(*d))
+                .map(|d| Angle::from_degrees(d.0))
                 .collect::<Result<Vec<_>>>();
             let angles = at(text, list.span(), angles)?;
             at(text, list.span(), valid::angles(&angles))?;
@@ -475,7 +518,7 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
         options.mechanism = Some(built);
     }
     if let Some(a) = &file.angle {
-        let angle = at(text, a.span(), name.angle(*a.get_ref()))?;
+        let angle = at(text, a.span(), name.angle(a.get_ref().0))?;
         refuse(
             FigureOptions {
                 angle: Some(angle),
@@ -738,6 +781,21 @@ mod tests {
                 )
             );
         }
+    }
+
+    #[test]
+    fn an_angle_with_a_unit_is_told_what_to_write() {
+        let e = parse("figure = \"fig-66-kisch\"\nangle = \"120deg\"\n")
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("line 2, column 9: "), "{e}");
+        assert!(e.contains("write 120 for \"120deg\""), "{e}");
+        assert!(!e.contains("f64") && !e.contains('\n'), "{e}");
+        let e = parse("angles = [30, \"60°\"]\n").unwrap_err().to_string();
+        assert!(e.contains("write 60 for"), "{e}");
+        let e = parse("angle = \"north\"\n").unwrap_err().to_string();
+        assert!(e.contains("such as 120"), "{e}");
+        assert!(parse("figure = \"fig-66-kisch\"\nangle = 120\n").is_ok());
     }
 
     #[test]

@@ -27,25 +27,25 @@ impl FigureName {
             FigureName::Fig64VelocityDiagrams => (BOOK, "§36, Fig. 64"),
             FigureName::AccelerationDiagrams => (
                 BOOK,
-                "§35–36, eq. (3) and the acceleration scale of Fig. 67; the seed describes these diagrams without a figure",
+                "§35–36, eq. (3) and the acceleration scale of Fig. 67; the chapter describes these diagrams without a figure",
             ),
             FigureName::RodMotion => (
                 BOOK,
-                "§37, the rod’s angular motion and eq. (2a); no figure in the seed",
+                "§37, the rod’s angular motion and eq. (2a); no figure in the chapter",
             ),
             FigureName::ApproximationError => (
                 BOOK,
-                "§35 and §37, eqs. (2), (3), (2a) and the error due to obliquity; no figure in the seed",
+                "§35 and §37, eqs. (2), (3), (2a) and the error due to obliquity; no figure in the chapter",
             ),
             FigureName::CouplerCurves => (
                 BOOK,
-                "§34, the ovals traced by points of the rod; no figure in the seed",
+                "§34, the ovals traced by points of the rod; no figure in the chapter",
             ),
             FigureName::NgFig2Incline => (NG, "Fig. 2 (eq. 10)"),
             FigureName::NgFig7Calibration => (NG, "Fig. 7 (Table 1)"),
             FigureName::NgFig8Forces => (NG, "Fig. 8 (Table 2, eqs. 6, 8 and 11)"),
             FigureName::CurveBenchmark => {
-                return "Not from the seeds: the benchmark of the curve engine that traces every diagram (docs/benchmarks.md)".into();
+                return "Not from the sources: the benchmark of the curve engine that traces every diagram (docs/benchmarks.md)".into();
             }
             FigureName::Fig60Chains => (BOOK, "§34, Fig. 60"),
             FigureName::Inversion1Engine => {
@@ -62,7 +62,7 @@ impl FigureName {
             }
             FigureName::SlotConvergence => (
                 BOOK,
-                "§34, Fig. 60 (b) against (c): the curved slot tending to the straight one; no figure in the seed",
+                "§34, Fig. 60 (b) against (c): the curved slot tending to the straight one; no figure in the chapter",
             ),
         };
         format!("{seed}, {place}")

@@ -20,6 +20,7 @@ pub struct AnalyzeArgs {
     /// angle, a list 0,30,60 or a range START:STOP:STEP (STOP included)
     #[arg(
         long,
+        visible_alias = "angles",
         default_value = "45",
         value_name = "DEG",
         allow_hyphen_values = true

@@ -40,7 +40,8 @@ pub struct AnimateArgs {
     /// The file to write, in the format its extension names: .svg (plays
     /// by itself in a browser) or .html (a page with a slider for the
     /// crank angle and a play/pause button); both self-contained. `-`
-    /// prints the SVG. Written whole or not at all
+    /// prints the SVG. Written whole or not at all, in a folder that must
+    /// exist (only `gallery` makes its folder)
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: PathBuf,
 }

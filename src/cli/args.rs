@@ -50,27 +50,23 @@ pub struct UnitArgs {
     /// Name of the length unit the lengths are given in (mm, m, in, ft,
     /// ...), written beside lengths, speeds (UNIT/s), accelerations
     /// (UNIT/s²) and torques; a name only, no number is converted
-    /// [default: the seed's, ft for the textbook's engine, mm for Ng's rig]
+    /// [default: the figure's own, ft for the textbook's engine, mm for
+    /// Ng's rig]
     #[arg(long = "unit", value_name = "UNIT")]
     pub length: Option<Unit>,
     /// Name of the force unit (N, kN, lbf, ...), written beside forces and
-    /// torques (FORCE·UNIT) [default: the seed's, lbf for the textbook's
-    /// engine, N for Ng's rig]
+    /// torques (FORCE·UNIT) [default: the one that goes with --unit, N for
+    /// mm, cm, m and lbf for in, ft; without --unit the figure's own, lbf
+    /// for the textbook's engine, N for Ng's rig]
     #[arg(long = "force-unit", value_name = "FORCE")]
     pub force: Option<Unit>,
 }
 
 impl UnitArgs {
-    /// The units asked for, each defaulting to that of `own`.
+    /// The units asked for, each defaulting to that of `own`, the force
+    /// unit following --unit when only that is given ([`Units::asked`]).
     pub fn units(&self, own: Units) -> Units {
-        let mut units = own;
-        if let Some(u) = &self.length {
-            units = units.with_length(u.clone());
-        }
-        if let Some(u) = &self.force {
-            units = units.with_force(u.clone());
-        }
-        units
+        own.asked(self.length.as_ref(), self.force.as_ref())
     }
 }
 

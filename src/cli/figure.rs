@@ -30,7 +30,8 @@ pub struct FigureArgs {
     /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
     /// embedded); SVG for a name without an extension, any other is
     /// refused; `-` prints SVG. A device or FIFO is written in place; a
-    /// symbolic link is kept and its target replaced
+    /// symbolic link is kept and its target replaced. The folder must
+    /// exist (only `gallery` makes its folder)
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
@@ -98,7 +99,7 @@ pub struct FigureFlags {
     #[arg(long)]
     pub no_mirror: bool,
     /// Page width: page units (px, 96 to the inch) like 800, or a size in
-    /// mm or in like 120mm or 4.5in, after which the SVG gives its width
+    /// mm, cm, in or pt like 120mm, 12cm or 4.5in, after which the SVG gives its width
     /// and height in that unit (its viewBox stays in page units) for a book
     /// to place it at that size [default: the figure's own]
     #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]

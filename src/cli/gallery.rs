@@ -10,7 +10,7 @@ use slider_crank::{Error, FigureName, Result};
 use std::io::{ErrorKind, Write};
 use std::path::{Path, PathBuf};
 
-/// Write the gallery: every figure at the seed's parameters, every table,
+/// Write the gallery: every figure at its source's parameters, every table,
 /// and an index.html.
 #[derive(Debug, Args)]
 pub struct GalleryArgs {

@@ -60,7 +60,8 @@ pub struct HandoutArgs {
     #[arg(long, value_name = "S", default_value_t = 1, requires = "class")]
     pub seed: u64,
     /// The page to write, an .html file; an exercise's key and a class's
-    /// files are named after it. Each file is written whole or not at all
+    /// files are named after it, in its folder, which must exist (only
+    /// `gallery` makes its folder). Each file is written whole or not at all
     #[arg(long, value_name = "FILE.html", default_value = "handout.html")]
     pub out: PathBuf,
 }

@@ -36,14 +36,16 @@ pub struct SceneArgs {
     #[arg(long = "unit", value_name = "UNIT")]
     pub length_unit: Option<Unit>,
     /// Name of the force unit, over the file's `[units] force` [default:
-    /// the file's, else its figure's, else lbf]
+    /// the one that goes with --unit (N for mm, cm, m; lbf for in, ft),
+    /// else the file's, else its figure's, else lbf]
     #[arg(long = "force-unit", value_name = "FORCE")]
     pub force_unit: Option<Unit>,
     /// Write to FILE instead of printing SVG, in the format its extension
     /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
     /// embedded); SVG for a name without an extension, any other is
     /// refused; `-` prints SVG. A device or FIFO is written in place; a
-    /// symbolic link is kept and its target replaced
+    /// symbolic link is kept and its target replaced. The folder must
+    /// exist (only `gallery` makes its folder)
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
 }
@@ -70,18 +72,21 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
             if let Some(f) = font {
                 scene = scene.with_font(f);
             }
-            if let Some(u) = &args.length_unit {
-                scene = scene.with_length_unit(u.clone());
-            }
-            if let Some(u) = &args.force_unit {
-                scene = scene.with_force_unit(u.clone());
-            }
+            let units = scene
+                .units()
+                .clone()
+                .asked(args.length_unit.as_ref(), args.force_unit.as_ref());
+            scene = scene.with_units(units);
             scene.figure()?
         }
         SceneFile::Diagram(name, mut options) => {
             options.font = font.or(options.font);
             options.length_unit = args.length_unit.clone().or(options.length_unit);
-            options.force_unit = args.force_unit.clone().or(options.force_unit);
+            options.force_unit = args
+                .force_unit
+                .clone()
+                .or_else(|| args.length_unit.as_ref().and_then(Unit::usual_force))
+                .or(options.force_unit);
             name.figure(&options)?
         }
     };

@@ -46,8 +46,14 @@ pub struct TableArgs {
     pub n: Option<String>,
     /// Crank angles in degrees: a list or START:STOP:STEP [default: 90 for
     /// obliquity, the textbook's rows 0:180:30 for acceleration-factor,
-    /// 0:360:30 for kinematics, Ng's rows 10:160:10 for forces]
-    #[arg(long, value_name = "DEG", allow_hyphen_values = true)]
+    /// 0:360:30 for kinematics, Ng's rows 10:160:10 for forces]; --angle,
+    /// as `analyze` spells it, is the same
+    #[arg(
+        long,
+        visible_alias = "angle",
+        value_name = "DEG",
+        allow_hyphen_values = true
+    )]
     pub angles: Option<String>,
     /// Crank radius r for kinematics and forces, in any length unit
     /// [default: 0.5 (ft, §35) for kinematics, 25 (mm, Ng) for forces]

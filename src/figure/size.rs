@@ -1,4 +1,5 @@
-//! Page lengths with a unit: pixels (page units), millimetres or inches.
+//! Page lengths with a unit: pixels (page units), millimetres,
+//! centimetres, inches or points.
 //!
 //! A page unit is the SVG user unit, the CSS pixel: 1/96 in. A page asked
 //! for in millimetres or inches is laid out at that size in page units (96
@@ -24,28 +25,46 @@ pub enum PageUnit {
     Mm,
     /// Inches.
     In,
+    /// Centimetres.
+    Cm,
+    /// Points, 72 to the inch.
+    Pt,
 }
 
 impl PageUnit {
-    /// The suffix: `px`, `mm`, `in`.
+    /// Every unit, page units first.
+    pub const ALL: [PageUnit; 5] = [
+        PageUnit::Px,
+        PageUnit::Mm,
+        PageUnit::Cm,
+        PageUnit::In,
+        PageUnit::Pt,
+    ];
+
+    /// The suffix: `px`, `mm`, `cm`, `in`, `pt` (also SVG's and CSS's).
     pub fn name(&self) -> &'static str {
         match self {
             PageUnit::Px => "px",
             PageUnit::Mm => "mm",
             PageUnit::In => "in",
+            PageUnit::Cm => "cm",
+            PageUnit::Pt => "pt",
         }
     }
 
-    /// Page units in one of this unit (1, 96/25.4, 96).
+    /// Page units in one of this unit (1, 96/25.4, 96/2.54, 96, 96/72).
     pub fn page_units(&self) -> f64 {
         match self {
             PageUnit::Px => 1.0,
             PageUnit::Mm => UNITS_PER_INCH / 25.4,
             PageUnit::In => UNITS_PER_INCH,
+            PageUnit::Cm => UNITS_PER_INCH / 2.54,
+            PageUnit::Pt => UNITS_PER_INCH / 72.0,
         }
     }
 
-    /// Whether it is a physical unit (mm or in) rather than page units.
+    /// Whether it is a physical unit (mm, cm, in, pt) rather than page
+    /// units.
     pub fn is_physical(&self) -> bool {
         *self != PageUnit::Px
     }
@@ -61,12 +80,10 @@ impl FromStr for PageUnit {
     type Err = Error;
 
     fn from_str(s: &str) -> Result<Self> {
-        match s {
-            "px" => Ok(PageUnit::Px),
-            "mm" => Ok(PageUnit::Mm),
-            "in" => Ok(PageUnit::In),
-            _ => Err(Error::Parse(format!(
-                "unknown page unit '{}': expected px, mm or in",
+        match PageUnit::ALL.into_iter().find(|u| u.name() == s) {
+            Some(u) => Ok(u),
+            None => Err(Error::Parse(format!(
+                "unknown page unit '{}': expected px, mm, cm, in or pt",
                 s.escape_default()
             ))),
         }
@@ -123,14 +140,14 @@ impl FromStr for PageLength {
         let shown: String = s.chars().take(40).flat_map(char::escape_default).collect();
         let bad = |why: &str| {
             Error::Parse(format!(
-                "invalid page length '{shown}': {why} (a positive number of px, the default, mm or in: 800, 120mm, 4.5in)"
+                "invalid page length '{shown}': {why} (a positive number of px, the default, mm, cm, in or pt: 800, 120mm, 12cm, 4.5in, 340pt)"
             ))
         };
         // NaN, inf and plain numbers are page units; then a known suffix;
         // other letters at the end are an unknown unit.
         let (number, unit) = if s.parse::<f64>().is_ok() {
             (s, PageUnit::Px)
-        } else if let Some((n, u)) = [PageUnit::Px, PageUnit::Mm, PageUnit::In]
+        } else if let Some((n, u)) = PageUnit::ALL
             .into_iter()
             .find_map(|u| s.strip_suffix(u.name()).map(|n| (n, u)))
         {
@@ -218,6 +235,12 @@ mod tests {
         }
         assert_eq!("4.5in".parse::<PageLength>().unwrap().to_string(), "4.5in");
         assert_eq!("800".parse::<PageLength>().unwrap().to_string(), "800");
+        // Centimetres and points as well (issue 22).
+        let l: PageLength = "12cm".parse().unwrap();
+        assert_eq!((l.value(), l.unit()), (12.0, PageUnit::Cm));
+        assert!((l.page_units() - 120.0 * 96.0 / 25.4).abs() < 1e-9);
+        assert_eq!("72pt".parse::<PageLength>().unwrap().page_units(), 96.0);
+        assert_eq!("12cm".parse::<PageLength>().unwrap().to_string(), "12cm");
     }
 
     #[test]
@@ -232,7 +255,7 @@ mod tests {
             "",
             "mm",
             "12 mm",
-            "12cm",
+            "12km",
             "12e",
             "1e999in",
         ] {

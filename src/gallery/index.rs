@@ -19,8 +19,10 @@ figcaption { margin-top: .5rem; }
 .files a { margin-right: .6rem; }
 ";
 
-/// The three groups of figures and their headings.
-fn groups(figures: &[FigureName]) -> [(&'static str, &'static str, Vec<FigureName>); 3] {
+/// The four groups of figures and their headings: the teaching figures,
+/// then the developers' benchmark on its own.
+fn groups(figures: &[FigureName]) -> [(&'static str, &'static str, Vec<FigureName>); 4] {
+    let developer = |f: &FigureName| *f == FigureName::CurveBenchmark;
     let chain = |f: &FigureName| {
         matches!(
             f,
@@ -42,21 +44,29 @@ fn groups(figures: &[FigureName]) -> [(&'static str, &'static str, Vec<FigureNam
         (
             "diagrams",
             "Diagrams",
-            pick(&|f| f.is_diagram() && !chain(f)),
+            pick(&|f| f.is_diagram() && !chain(f) && !developer(f)),
         ),
         ("chain", "The chain of Fig. 60", pick(&chain)),
+        (
+            "developers",
+            "For developers: the accuracy of the drawn curves",
+            pick(&developer),
+        ),
     ]
 }
 
 /// The whole page.
 pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
     let body = html! {
-        h1 { "The figures and tables of the seeds" }
+        h1 { "The slider-crank chain: figures and tables of a textbook chapter and Ng’s paper" }
         p {
             "The classical graphical constructions of the slider-crank mechanism, drawn anew "
-            "at each seed’s own parameters from the text of the textbook chapter "
-            "“Slider-crank chains” (Chapter IV, §34–37) and of T. W. Ng, “A slider-crank "
-            "experiment to determine the action of static forces”. Each figure is given as "
+            "at each source’s own parameters from two texts. The first is the chapter "
+            "“Slider-crank chains” of a textbook (Chapter IV, §34–37; the text "
+            "of the chapter gives neither the book’s title nor its author). The second is "
+            "T. W. Ng, “A slider-crank experiment to determine the action of static forces”, "
+            "Faculty of Engineering, National University of Singapore (the text of the paper "
+            "gives no journal or year). Each figure is given as "
             (formats(gallery.formats())) "; the picture links to the first."
         }
         nav {
@@ -104,7 +114,7 @@ pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
         }
     };
     document(
-        "slider-crank: the figures and tables of the seeds",
+        "slider-crank: figures and tables of the slider-crank chain",
         STYLE,
         body,
     )
@@ -192,7 +202,7 @@ fn table(name: TableName, t: &Table) -> Markup {
                 thead { tr { @for h in &t.headers { th { (h) } } } }
                 tbody {
                     @for row in &t.rows {
-                        tr { @for cell in row { td { (cell) } } }
+                        tr { @for cell in row { td { (minus(cell)) } } }
                     }
                 }
             }
@@ -208,9 +218,38 @@ fn table(name: TableName, t: &Table) -> Markup {
     }
 }
 
+/// A table cell as a reader sees it: a minus sign (U+2212) where the
+/// text files write a hyphen before a number (`-399.8104`).
+fn minus(cell: &str) -> String {
+    match cell.strip_prefix('-') {
+        Some(rest) if rest.starts_with(|c: char| c.is_ascii_digit() || c == '.') => {
+            format!("−{rest}")
+        }
+        _ => cell.to_string(),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_negative_cell_has_a_minus_sign() {
+        assert_eq!(minus("-399.8104"), "−399.8104");
+        assert_eq!(minus("-.5"), "−.5");
+        assert_eq!(minus("3.5"), "3.5");
+        assert_eq!(minus("-"), "-");
+        assert_eq!(minus("self-locking"), "self-locking");
+    }
+
+    #[test]
+    fn the_benchmark_is_kept_apart_from_the_teaching_figures() {
+        let [mechanisms, diagrams, chain, developers] = groups(&FigureName::ALL);
+        for (_, _, figures) in [mechanisms, diagrams, chain] {
+            assert!(!figures.contains(&FigureName::CurveBenchmark));
+        }
+        assert_eq!(developers.2, vec![FigureName::CurveBenchmark]);
+    }
 
     #[test]
     fn formats_are_listed_as_a_sentence() {

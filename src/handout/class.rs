@@ -10,7 +10,7 @@
 
 use super::page::{footer, style, value_cell};
 use super::random::SplitMix64;
-use super::steps::{Row, rows, short};
+use super::steps::{Row, rows, short, show};
 use super::{Handout, Paper};
 use crate::error::{Error, Result};
 use crate::html::{document, rich};
@@ -90,7 +90,12 @@ impl Class {
             }
             drawn.push(engine);
             let (r, n, angle, rpm) = engine;
-            let mechanism = SliderCrank::in_line(r, r * n)?;
+            // The crank and rod as the sheet prints them (four figures:
+            // 1148, not 1147.5; 0.95, not 0.9500000000000001), so that the
+            // key works from the data on the sheet.
+            let printed = |x: f64| show(x).parse().unwrap_or(x);
+            let (r, rod) = (printed(r), printed(r * n));
+            let mechanism = SliderCrank::in_line(r, rod)?;
             let mut h = template.clone();
             h.mechanism = mechanism;
             h.angle = Angle::from_degrees(angle)?;
@@ -205,6 +210,25 @@ mod tests {
             assert!((3.5 - 1e-12..=6.0 + 1e-12).contains(&n), "{n}");
             let d = x.angle().degrees();
             assert!(d % 90.0 >= 10.0 && d % 90.0 <= 80.0 || (d % 180.0 - 90.0).abs() >= 10.0);
+        }
+    }
+
+    #[test]
+    fn a_sheet_prints_the_very_engine_its_key_works() {
+        // Issue 22: l = 1147.5 mm was printed 1148, and the key used 1147.5.
+        for unit in ["mm", "ft", "in", "m"] {
+            let t = template().with_units(crate::Units::new(
+                unit.parse().unwrap(),
+                crate::Unit::NEWTON,
+            ));
+            for h in Class::draw(300, 7, &t).unwrap().handouts() {
+                let m = h.mechanism();
+                for x in [m.crank(), m.rod()] {
+                    assert_eq!(short(x).parse::<f64>(), Ok(x), "{unit}: {x}");
+                }
+                let rpm: f64 = short(h.rpm()).parse().unwrap();
+                assert_eq!(crate::rpm_to_omega(rpm), h.omega());
+            }
         }
     }
 

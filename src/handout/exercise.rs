@@ -6,6 +6,7 @@
 use super::page::{
     command, conventions, data_table, footer, picture, plain_data, style, values_table,
 };
+use super::scale::round_scale;
 use super::steps::{Picture, data_sentence, rows};
 use super::{Handout, figures};
 use crate::construct::Reading;
@@ -41,6 +42,25 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
     let svg = figures::under_drawing(&to_svg(&figure), &figures::grid(panel, step));
     let svg = figures::inline_svg(&svg, "sheet");
     let u = h.units().length().as_str().to_string();
+    let scale = round_scale(figure.width(), panel.transform().scale(), &u, h.paper());
+    let (svg, stated) = match &scale {
+        Some(s) => (
+            svg.replacen(
+                "<svg",
+                &format!(
+                    "<svg style=\"width: {}mm; height: {}mm; max-width: none; max-height: none\"",
+                    crate::render::fmt(s.width_mm),
+                    crate::render::fmt(s.width_mm * figure.height() / figure.width())
+                ),
+                1,
+            ),
+            format!(
+                " Drawn at {} (print at 100 %, not fitted to the page).",
+                s.ratio
+            ),
+        ),
+        None => (svg, String::new()),
+    };
     let asked: Vec<_> = rows(h, r).into_iter().filter(|row| row.asked).collect();
     let title = heading(h, "exercise");
     let mut tasks = vec![
@@ -65,7 +85,7 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
                 &Picture {
                     svg,
                     caption: format!(
-                        "The engine to scale at θ = {}°. Grid squares of {} {u}, lines through the crank centre *C*.",
+                        "The engine to scale at θ = {}°.{stated} Grid squares of {} {u}, lines through the crank centre *C*.",
                         super::steps::short(h.angle().degrees()),
                         crate::render::plain(step)
                     ),

@@ -37,6 +37,7 @@ mod exercise;
 mod figures;
 mod page;
 mod random;
+mod scale;
 mod steps;
 
 pub use class::{Class, MAX_CLASS};

@@ -4,6 +4,7 @@
 
 use super::steps::{Picture, Row, Step, Value, data_sentence, short, show};
 use super::{Handout, Paper};
+use crate::figure::RichText;
 use crate::html::{document, rich};
 use crate::render::plain;
 use maud::{Markup, PreEscaped, html};
@@ -183,11 +184,18 @@ pub(super) fn data_table(h: &Handout) -> Markup {
     }
 }
 
-/// A figure with its caption.
+/// A figure with its caption; the drawing is an image to assistive
+/// technology, named by the caption's text.
 pub(super) fn picture(p: &Picture, label: &str) -> Markup {
+    let name = format!("{label} {}", RichText::parse(&p.caption).plain());
+    let named = format!(
+        "<svg role=\"img\" aria-label=\"{}\"",
+        html! { (name) }.into_string()
+    );
+    let svg = p.svg.replacen("<svg", &named, 1);
     html! {
         figure {
-            (PreEscaped(&p.svg))
+            (PreEscaped(svg))
             figcaption { span.label { (label) } " " (rich(&p.caption)) }
         }
     }
@@ -212,11 +220,11 @@ pub(super) fn conventions(h: &Handout) -> Markup {
 pub(super) fn command(h: &Handout, extra: &str) -> String {
     let m = h.mechanism();
     let mut c = format!(
-        "slider-crank handout --crank {} --rod {} --offset {} --omega {} --angle {} --unit {} --force-unit {}",
+        "slider-crank handout --crank {} --rod {} --offset {} {} --angle {} --unit {} --force-unit {}",
         plain(m.crank()),
         plain(m.rod()),
         plain(m.offset()),
-        plain(h.omega()),
+        speed_flag(h.omega()),
         plain(h.angle().degrees()),
         h.units().length().as_str(),
         h.units().force().as_str()
@@ -231,6 +239,18 @@ pub(super) fn command(h: &Handout, extra: &str) -> String {
     c.push_str(&format!(" --paper {}", h.paper().name()));
     c.push_str(extra);
     c
+}
+
+/// The crank speed as the command line would be given it: `--rpm N` with
+/// the shortest N (at most 12 decimals) that gives this very ω back
+/// (`--rpm 1500`, not the digits of 50π), else `--omega ω`.
+fn speed_flag(omega: f64) -> String {
+    let rpm = omega * 60.0 / std::f64::consts::TAU;
+    (0..=12)
+        .map(|digits| format!("{rpm:.digits$}"))
+        .find(|text| text.parse().map(crate::rpm_to_omega) == Ok(omega))
+        .map(|text| format!("--rpm {}", plain(text.parse().unwrap_or(rpm))))
+        .unwrap_or_else(|| format!("--omega {}", plain(omega)))
 }
 
 /// The page's footer: the program and the command.
@@ -315,4 +335,28 @@ pub(super) fn plain_data(h: &Handout) -> String {
         short(m.offset()),
         short(h.angle().degrees())
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The ω a speed flag gives.
+    fn given(flag: &str) -> f64 {
+        let (name, value) = flag.split_once(' ').unwrap();
+        let value: f64 = value.parse().unwrap();
+        match name {
+            "--rpm" => crate::rpm_to_omega(value),
+            _ => value,
+        }
+    }
+
+    #[test]
+    fn the_command_gives_the_speed_as_it_was_given() {
+        assert_eq!(speed_flag(crate::rpm_to_omega(1500.0)), "--rpm 1500");
+        assert_eq!(speed_flag(crate::rpm_to_omega(33.25)), "--rpm 33.25");
+        for omega in [10.0, 157.07963267948966, 1e-3, 0.1 + 0.2] {
+            assert_eq!(given(&speed_flag(omega)), omega, "{omega}");
+        }
+    }
 }

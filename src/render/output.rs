@@ -38,8 +38,12 @@ pub fn output_target(path: &Path) -> Result<OutputTarget> {
     for _ in 0..MAX_LINKS {
         let meta = match std::fs::symlink_metadata(&current) {
             Ok(m) => m,
-            // Not there yet: created (the directory is checked when writing).
-            Err(_) => return Ok(OutputTarget::Replace(current)),
+            // Not there yet: created, in a folder that must exist (a
+            // single file's folder is never made: a typo there would make
+            // one).
+            Err(_) => {
+                return missing_folder(&current).map_or(Ok(OutputTarget::Replace(current)), Err);
+            }
         };
         let kind = meta.file_type();
         if kind.is_symlink() {
@@ -102,6 +106,24 @@ pub fn same_file(a: &Path, b: &Path) -> bool {
         (Ok(x), Ok(y)) => x == y,
         _ => false,
     }
+}
+
+/// The error for a new file `path` whose folder does not exist, naming
+/// the folder; `None` when it exists (or is the working directory).
+fn missing_folder(path: &Path) -> Option<Error> {
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty())?;
+    if dir.is_dir() {
+        return None;
+    }
+    Some(Error::Io {
+        message: format!(
+            "cannot write {}: the folder {} does not exist (create it first, or give another)",
+            path.display(),
+            dir.display()
+        ),
+        path: Some(path.to_path_buf()),
+        source: None,
+    })
 }
 
 /// Writes `bytes` to `path` as the kind of file there decides (a device
@@ -202,7 +224,15 @@ mod tests {
         write_atomic(&p, b"<svg/>").unwrap();
         assert_eq!(std::fs::read(&p).unwrap(), b"<svg/>");
         let err = write_atomic(&dir.path().join("missing/f.svg"), b"x").unwrap_err();
-        assert!(err.to_string().contains("cannot write"), "{err}");
+        let folder = dir.path().join("missing");
+        assert!(
+            err.to_string().ends_with(&format!(
+                "the folder {} does not exist (create it first, or give another)",
+                folder.display()
+            )),
+            "{err}"
+        );
+        assert!(!folder.exists());
         // No temporary file is left behind.
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
     }

@@ -111,7 +111,7 @@ impl Page {
     /// A page of `width` × `height` given with their units ([`PageLength`]:
     /// `800`, `120mm`, `4.5in`), laid out in page units (96 to the inch),
     /// with `margin` in page units. The SVG gives its size in the unit of
-    /// `width` if that is physical (mm or in), else in that of `height`
+    /// `width` if that is physical (mm, cm, in or pt), else in that of `height`
     /// ([`Page::unit`]). The bounds are those of [`Page::new`].
     pub fn sized(width: PageLength, height: PageLength, margin: f64) -> Result<Self> {
         let unit = if width.unit().is_physical() {

@@ -198,13 +198,9 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         style: options.style.unwrap_or(Style::Textbook),
         font: options.font.unwrap_or_default(),
         tolerance: DEFAULT_TOLERANCE,
-        units: {
-            let own = name.units();
-            Units::new(
-                options.length_unit.clone().unwrap_or(own.length().clone()),
-                options.force_unit.clone().unwrap_or(own.force().clone()),
-            )
-        },
+        units: name
+            .units()
+            .asked(options.length_unit.as_ref(), options.force_unit.as_ref()),
         page: options.page(&name.page())?,
         mirror: options.mirror.unwrap_or(!name.is_ng()),
     };

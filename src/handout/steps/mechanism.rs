@@ -21,7 +21,7 @@ pub(super) fn mechanism(w: &Work) -> Result<Step> {
             &fig62,
             "fig-62",
             format!(
-                "The engine at θ = {}°: crank angle θ, obliquity φ, the displacement *x* of the cross-head from mid-stroke.",
+                "The engine at θ = {}°: crank angle θ, obliquity φ, and the cross-head's displacement from mid-stroke *O* as the textbook draws it; the table gives *x*, its distance from the crank centre *C*.",
                 short(w.h.angle().degrees())
             ),
         )],

@@ -15,10 +15,10 @@ pub(super) fn rod(w: &Work) -> Result<Step> {
     let r = w.r;
     let mut text = vec![angular_velocity(w)];
     text.push(format!(
-        "*FG* = {} {} gives its angular acceleration, ω² · *FG*/*l* = {} rad/s².",
-        show(r.fg.abs()),
+        "*FG* = {} {}, signed as in the table, gives its angular acceleration, ω² · *FG*/*l* = {} rad/s².",
+        show(r.fg),
         w.length(),
-        show(r.graphical.rod_angular_acceleration.abs())
+        show(r.graphical.rod_angular_acceleration)
     ));
     if w.in_line() {
         text.push(format!(
