@@ -6,6 +6,7 @@ use clap::Args;
 use serde_json::{Value, json};
 use slider_crank::analytic::statics::Friction;
 use slider_crank::construct::Reading;
+use slider_crank::dynamics::{Engine, EnginePose};
 use slider_crank::geom::Point;
 use slider_crank::render::plain;
 use slider_crank::{Angle, ChainCentres, Error, Result, SliderCrank, Units};
@@ -37,13 +38,16 @@ pub struct AnalyzeArgs {
     pub units: UnitArgs,
     #[command(flatten)]
     pub chain: super::chain::ChainArgs,
+    #[command(flatten)]
+    pub engine: super::dynamics::EngineArgs,
 }
 
 /// Everything computed at one angle: the reading and the six virtual
 /// centres.
-struct Report {
+struct Report<'a> {
     reading: Reading,
     centres: ChainCentres,
+    dynamics: Option<(&'a Engine, EnginePose)>,
 }
 
 /// +0.0 for −0.0, so that no "-0" is printed.
@@ -76,17 +80,20 @@ fn opt_point_json(p: Option<Point>) -> Value {
     p.map(point_json).unwrap_or(Value::Null)
 }
 
-fn analyse(
+fn analyse<'a>(
     m: &SliderCrank,
     degrees: f64,
     omega: f64,
     torque: Option<f64>,
     mu: f64,
-) -> Result<Report> {
-    let pose = m.pose(Angle::from_degrees(degrees)?);
+    engine: Option<&'a Engine>,
+) -> Result<Report<'a>> {
+    let angle = Angle::from_degrees(degrees)?;
+    let pose = m.pose(angle);
     Ok(Report {
         reading: Reading::new(&pose, omega, torque, mu)?,
         centres: ChainCentres::of_slider_crank(&pose),
+        dynamics: engine.map(|e| Ok((e, e.at(angle)?))).transpose()?,
     })
 }
 
@@ -133,6 +140,9 @@ fn to_json(m: &SliderCrank, report: &Report, units: &Units) -> Value {
             "friction": s.mu,
             "transmission_angle_deg": num(s.transmission_deg),
         });
+    }
+    if let Some((engine, at)) = &report.dynamics {
+        v["dynamics"] = super::dynamics::to_json(engine, at, r.pose.angle(), units);
     }
     v
 }
@@ -252,6 +262,9 @@ fn to_text(report: &Report, units: &Units) -> String {
             num(s.transmission_deg)
         ));
     }
+    if let Some((engine, at)) = &report.dynamics {
+        out.push_str(&super::dynamics::to_text(engine, at, r.pose.angle(), units));
+    }
     out
 }
 
@@ -261,9 +274,10 @@ fn reports<'a>(
     spec: &'a AngleSpec,
     omega: f64,
     args: &'a AnalyzeArgs,
-) -> impl Iterator<Item = Result<Report>> + 'a {
+    engine: Option<&'a Engine>,
+) -> impl Iterator<Item = Result<Report<'a>>> + 'a {
     spec.iter()
-        .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction))
+        .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction, engine))
 }
 
 /// Indents every line of `text` by two spaces (an element of a pretty
@@ -294,6 +308,9 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
                 .into(),
         ));
     }
+    if args.chain.is_set() {
+        super::dynamics::refuse_with_chain(&args.engine)?;
+    }
     let units = args.units.units(Units::FOOT_POUND);
     if super::chain::analyze(
         m,
@@ -308,19 +325,21 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     }
     let omega = args.speed.omega()?;
     let spec = AngleSpec::parse(&args.angle)?;
-    for r in reports(&m, &spec, omega, args) {
+    let engine = args.engine.engine(m, omega)?;
+    let engine = engine.as_ref();
+    for r in reports(&m, &spec, omega, args, engine) {
         r?;
     }
     if args.json {
         if !spec.is_list() {
-            if let Some(r) = reports(&m, &spec, omega, args).next() {
+            if let Some(r) = reports(&m, &spec, omega, args, engine).next() {
                 out.text(&pretty(&to_json(&m, &r?, &units))?)?;
                 out.text("\n")?;
             }
             return Ok(());
         }
         out.text("[")?;
-        for (i, r) in reports(&m, &spec, omega, args).enumerate() {
+        for (i, r) in reports(&m, &spec, omega, args, engine).enumerate() {
             out.text(if i == 0 { "\n" } else { ",\n" })?;
             out.text(&indented(&pretty(&to_json(&m, &r?, &units))?))?;
         }
@@ -337,7 +356,7 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
         fixed(m.crank() * omega, 6, 0),
         units.velocity()
     ))?;
-    for r in reports(&m, &spec, omega, args) {
+    for r in reports(&m, &spec, omega, args, engine) {
         out.text("\n")?;
         out.text(&to_text(&r?, &units))?;
     }
