@@ -14,7 +14,7 @@ use crate::dynamics::quadrature::integrate;
 use crate::dynamics::turning::total_torque;
 use crate::dynamics::{EXAMPLE_MASS, Engine, GasForce, IndicatorDiagram, TurningMoment};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Point, Vector};
 
 /// The example engine's indicator diagram.
@@ -61,7 +61,9 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         ctx.tolerance,
         ctx.font,
     )?
-    .with_caption("(a) Turning-moment diagram, *T* = *F* · *OM* + the rod's inertia torque");
+    .with_caption(
+        "(a) Turning-moment diagram, *T* = *F*·*OM*, the mean line and the areas between them",
+    );
     for (k, lobe) in tm.lobes.iter().enumerate() {
         let n = ((lobe.to_deg - lobe.from_deg) * 2.0).ceil().max(2.0) as usize;
         let mut points: Vec<Point> = (0..=n)
@@ -77,6 +79,22 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             Role::Construction,
             Shape::Region { points },
         ));
+        // Each area's value, half-way between the curve and the mean line
+        // at the middle of the lobe, where the lobe is wide enough to carry it.
+        if lobe.to_deg - lobe.from_deg >= 25.0 {
+            let mid = 0.5 * (lobe.from_deg + lobe.to_deg);
+            let anchor = Point::new(mid, 0.5 * (torque(mid) + tm.mean));
+            let sign = if lobe.area > 0.0 { "+" } else { "−" };
+            plot.push(Item::new(
+                format!("label-lobe-{}", k + 1),
+                Role::Label,
+                Shape::Label {
+                    anchor,
+                    text: RichText::parse(&format!("{sign}{}", sig(lobe.area.abs()))),
+                    size: TextSize::Small,
+                },
+            ));
+        }
     }
     let curves: Vec<Box<dyn Curve>> = pieces.iter().map(|&(a, b)| piece(&torque, a, b)).collect();
     let traced: Vec<(&dyn Curve, _)> = curves
@@ -116,7 +134,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         ctx.tolerance,
         ctx.font,
     )?
-    .with_caption("(b) Energy stored in the flywheel, *E* = ∫ (*T* − *T*_mean) dθ");
+    .with_caption("(b) Energy stored in the flywheel, *E* = ∫ (*T* − *T*_{mean}) dθ, and its fluctuation Δ*E*");
     let e_curve = move |deg: f64| -> Option<(Point, Vector)> {
         let slope = torque(deg) - tm.mean;
         Some((
