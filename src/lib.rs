@@ -161,6 +161,7 @@ pub mod catalogue;
 pub mod chain;
 pub mod construct;
 pub mod diagram;
+pub mod dynamics;
 mod error;
 pub mod figure;
 pub mod gallery;

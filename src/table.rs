@@ -519,15 +519,19 @@ pub enum TableName {
     Kinematics,
     /// Ng's Table 2 columns: F, F′ and β for θ = 10° … 160°.
     Forces,
+    /// The engine of §35 with a reciprocating mass of 10 slug at 250 rpm:
+    /// inertia force, piston effort and crank effort, θ = 0° … 360° by 30°.
+    Dynamics,
 }
 
 impl TableName {
     /// Every table, in the order `slider-crank table --help` lists them.
-    pub const ALL: [TableName; 4] = [
+    pub const ALL: [TableName; 5] = [
         TableName::Obliquity,
         TableName::AccelerationFactor,
         TableName::Kinematics,
         TableName::Forces,
+        TableName::Dynamics,
     ];
 
     /// The name the `table` command takes (`acceleration-factor`).
@@ -537,6 +541,7 @@ impl TableName {
             TableName::AccelerationFactor => "acceleration-factor",
             TableName::Kinematics => "kinematics",
             TableName::Forces => "forces",
+            TableName::Dynamics => "dynamics",
         }
     }
 
@@ -554,6 +559,9 @@ impl TableName {
             }
             TableName::Forces => {
                 "Ng, “A slider-crank experiment to determine the action of static forces”, Table 2"
+            }
+            TableName::Dynamics => {
+                "Textbook §37 (Klein's CG) and Ng (T = F · OM), carried on by standard engine dynamics: the turning moment and the fluctuation of energy (no table in either seed)"
             }
         }
     }
@@ -586,6 +594,7 @@ impl TableName {
                 2,
                 &Units::MILLIMETRE_NEWTON,
             ),
+            TableName::Dynamics => crate::dynamics::example_table(&every(0, 360, 30)),
         }
     }
 }

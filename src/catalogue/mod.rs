@@ -14,6 +14,7 @@ mod print;
 mod scene_file;
 mod source;
 
+pub(crate) use diagrams::Table as DataTable;
 pub use name::FigureName;
 pub use options::{FigureOptions, Fit};
 pub(crate) use parse::{located, toml_error};

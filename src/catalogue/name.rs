@@ -78,6 +78,10 @@ pub enum FigureName {
     /// The curved slot's difference from the straight slot against its
     /// radius ρ from 1 to 1e15, log–log.
     SlotConvergence,
+    /// The turning-moment diagram of an engine (§37's inertia force and
+    /// Ng's T = F · OM over a turn) with its mean line and the areas
+    /// between them, and the flywheel's energy diagram.
+    TurningMoment,
 }
 
 impl FigureName {
@@ -93,7 +97,7 @@ impl FigureName {
     ];
 
     /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 16] = [
+    pub const DIAGRAMS: [FigureName; 17] = [
         FigureName::Fig61Centrodes,
         FigureName::Fig64VelocityDiagrams,
         FigureName::AccelerationDiagrams,
@@ -110,6 +114,7 @@ impl FigureName {
         FigureName::Inversion3OscillatingCylinder,
         FigureName::Inversion4HandPump,
         FigureName::SlotConvergence,
+        FigureName::TurningMoment,
     ];
 
     /// Every named figure: the scenes, then the diagrams.
@@ -155,6 +160,7 @@ impl FigureName {
             FigureName::Inversion3OscillatingCylinder => "inversion-3-oscillating-cylinder",
             FigureName::Inversion4HandPump => "inversion-4-hand-pump",
             FigureName::SlotConvergence => "slot-convergence",
+            FigureName::TurningMoment => "turning-moment",
         }
     }
 
@@ -282,7 +288,8 @@ impl FigureName {
             | FigureName::SlotConvergence
             | FigureName::NgFig7Calibration
             | FigureName::NgFig8Forces
-            | FigureName::CurveBenchmark => 0.0,
+            | FigureName::CurveBenchmark
+            | FigureName::TurningMoment => 0.0,
         }
     }
 
@@ -339,6 +346,7 @@ impl FigureName {
             | FigureName::Inversion3OscillatingCylinder
             | FigureName::Inversion4HandPump => (760.0, 620.0),
             FigureName::SlotConvergence => (760.0, 560.0),
+            FigureName::TurningMoment => (900.0, 760.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }

@@ -48,6 +48,10 @@ impl FigureName {
                 return "Not from the sources: the benchmark of the curve engine that traces every diagram (docs/benchmarks.md)".into();
             }
             FigureName::Fig60Chains => (BOOK, "§34, Fig. 60"),
+            FigureName::TurningMoment => (
+                BOOK,
+                "§35–37 (the piston’s acceleration, Klein’s CG) with Ng’s T = F · OM, carried over a turn by standard engine dynamics (docs/dynamics.md); no figure in either seed",
+            ),
             FigureName::Inversion1Engine => {
                 (BOOK, "§34, the first inversion of the chain of Fig. 60")
             }
@@ -136,6 +140,9 @@ impl FigureName {
             }
             FigureName::Inversion4HandPump => {
                 "The block c fixed (the hand pump): the plunger sliding in the fixed barrel, the handle swinging about A."
+            }
+            FigureName::TurningMoment => {
+                "The §35 engine at 250 rpm with a 10 slug reciprocating mass and a steam indicator diagram: the torque on the crank against θ, its mean line and the areas between them, and the energy stored in the flywheel with its fluctuation ΔE."
             }
             FigureName::SlotConvergence => {
                 "The block in a slot of radius ρ against the straight slot: the largest differences of position, velocity and acceleration for ρ = 1 to 10¹⁵, log–log."

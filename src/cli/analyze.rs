@@ -6,6 +6,7 @@ use clap::Args;
 use serde_json::{Value, json};
 use slider_crank::analytic::statics::Friction;
 use slider_crank::construct::Reading;
+use slider_crank::dynamics::{Engine, EnginePose};
 use slider_crank::geom::Point;
 use slider_crank::render::plain;
 use slider_crank::{Angle, ChainCentres, Error, Result, SliderCrank, Units};
@@ -40,6 +41,8 @@ pub struct AnalyzeArgs {
     pub chain: super::chain::ChainArgs,
     #[command(flatten)]
     pub guard: GuardArgs,
+    #[command(flatten)]
+    pub engine: super::dynamics::EngineArgs,
 }
 
 /// The numbers written for one angle, the columns of `--max-cells`: the
@@ -52,9 +55,10 @@ const STATICS_VALUES: u64 = 7;
 
 /// Everything computed at one angle: the reading and the six virtual
 /// centres.
-struct Report {
+struct Report<'a> {
     reading: Reading,
     centres: ChainCentres,
+    dynamics: Option<(&'a Engine, EnginePose)>,
 }
 
 /// +0.0 for −0.0, so that no "-0" is printed.
@@ -87,17 +91,20 @@ fn opt_point_json(p: Option<Point>) -> Value {
     p.map(point_json).unwrap_or(Value::Null)
 }
 
-fn analyse(
+fn analyse<'a>(
     m: &SliderCrank,
     degrees: f64,
     omega: f64,
     torque: Option<f64>,
     mu: f64,
-) -> Result<Report> {
-    let pose = m.pose(Angle::from_degrees(degrees)?);
+    engine: Option<&'a Engine>,
+) -> Result<Report<'a>> {
+    let angle = Angle::from_degrees(degrees)?;
+    let pose = m.pose(angle);
     Ok(Report {
         reading: Reading::new(&pose, omega, torque, mu)?,
         centres: ChainCentres::of_slider_crank(&pose),
+        dynamics: engine.map(|e| Ok((e, e.at(angle)?))).transpose()?,
     })
 }
 
@@ -144,6 +151,9 @@ fn to_json(m: &SliderCrank, report: &Report, units: &Units) -> Value {
             "friction": s.mu,
             "transmission_angle_deg": num(s.transmission_deg),
         });
+    }
+    if let Some((engine, at)) = &report.dynamics {
+        v["dynamics"] = super::dynamics::to_json(engine, at, r.pose.angle(), units);
     }
     v
 }
@@ -264,6 +274,9 @@ fn to_text(report: &Report, units: &Units) -> String {
             num(s.transmission_deg)
         ));
     }
+    if let Some((engine, at)) = &report.dynamics {
+        out.push_str(&super::dynamics::to_text(engine, at, r.pose.angle(), units));
+    }
     out
 }
 
@@ -273,9 +286,10 @@ fn reports<'a>(
     spec: &'a AngleSpec,
     omega: f64,
     args: &'a AnalyzeArgs,
-) -> impl Iterator<Item = Result<Report>> + 'a {
+    engine: Option<&'a Engine>,
+) -> impl Iterator<Item = Result<Report<'a>>> + 'a {
     spec.iter()
-        .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction))
+        .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction, engine))
 }
 
 /// Writes `objects` as one pretty JSON array, each serialised straight
@@ -341,6 +355,9 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
                 .into(),
         ));
     }
+    if args.chain.is_set() {
+        super::dynamics::refuse_with_chain(&args.engine)?;
+    }
     let units = args.units.units(Units::FOOT_POUND);
     let angles = AngleSpec::parse(&args.angle)?.len();
     let statics = if args.load.torque.is_some() {
@@ -366,18 +383,20 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     }
     let omega = args.speed.omega()?;
     let spec = AngleSpec::parse(&args.angle)?;
-    for r in reports(&m, &spec, omega, args) {
+    let engine = args.engine.engine(m, omega)?;
+    let engine = engine.as_ref();
+    for r in reports(&m, &spec, omega, args, engine) {
         r?;
     }
     if args.json {
         if !spec.is_list() {
-            if let Some(r) = reports(&m, &spec, omega, args).next() {
+            if let Some(r) = reports(&m, &spec, omega, args, engine).next() {
                 out.text(&pretty(&to_json(&m, &r?, &units))?)?;
                 out.text("\n")?;
             }
             return Ok(());
         }
-        let objects = reports(&m, &spec, omega, args).map(|r| Ok(to_json(&m, &r?, &units)));
+        let objects = reports(&m, &spec, omega, args, engine).map(|r| Ok(to_json(&m, &r?, &units)));
         stream_array(objects, out)?;
         return out.text("\n");
     }
@@ -392,7 +411,7 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
         fixed(m.crank() * omega, 6, 0),
         units.velocity()
     ))?;
-    for r in reports(&m, &spec, omega, args) {
+    for r in reports(&m, &spec, omega, args, engine) {
         out.text("\n")?;
         out.text(&to_text(&r?, &units))?;
     }

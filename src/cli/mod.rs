@@ -5,6 +5,7 @@ pub mod animate;
 pub mod args;
 pub mod chain;
 pub mod check;
+pub mod dynamics;
 pub mod figure;
 pub mod gallery;
 pub mod handout;

@@ -17,6 +17,8 @@ pub enum TableName {
     Kinematics,
     /// Ng's Table 2: slider force F, with friction F' and transmission angle β against θ
     Forces,
+    /// Engine dynamics against θ: gas and inertia forces, piston effort, rod force, thrust on the guides, crank effort F·OM and the rod's torque; the turn's mean torque, fluctuation of energy and flywheel as notes (engine flags --mass … --flywheel; default the §35 engine with m = 10)
+    Dynamics,
 }
 
 /// Output formats.
@@ -97,6 +99,10 @@ pub struct TableArgs {
     pub units: UnitArgs,
     #[command(flatten)]
     pub guard: GuardArgs,
+    #[command(flatten)]
+    pub engine: super::dynamics::EngineArgs,
+    #[command(flatten)]
+    pub turn: super::dynamics::TurnArgs,
 }
 
 /// Ng's torque as implied by Table 2's F column, N·mm.
@@ -228,6 +234,7 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
             };
             write_rows(format, &head, rows, out)
         }
+        TableName::Dynamics => dynamics(args, spec, decimals, format, out),
     }
 }
 
@@ -254,6 +261,16 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
         ("--decimals", args.decimals.is_some()),
         ("--unit", args.units.length.is_some()),
         ("--force-unit", args.units.force.is_some()),
+        ("--mass", args.engine.mass.is_some()),
+        ("--rod-mass", args.engine.rod_mass.is_some()),
+        ("--rod-cg", args.engine.rod_cg.is_some()),
+        ("--rod-gyration", args.engine.rod_gyration.is_some()),
+        ("--gas-force", args.engine.gas_force.is_some()),
+        ("--indicator", args.engine.indicator.is_some()),
+        ("--bore", args.engine.bore.is_some()),
+        ("--phases", args.turn.phases.is_some()),
+        ("--fluctuation", args.turn.fluctuation.is_some()),
+        ("--flywheel", args.turn.flywheel.is_some()),
     ];
     let used: &[&str] = match args.name {
         TableName::Obliquity | TableName::AccelerationFactor => &["--n"],
@@ -276,6 +293,26 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
             "--unit",
             "--force-unit",
         ],
+        TableName::Dynamics => &[
+            "--crank",
+            "--rod",
+            "--offset",
+            "--rpm",
+            "--omega",
+            "--decimals",
+            "--unit",
+            "--force-unit",
+            "--mass",
+            "--rod-mass",
+            "--rod-cg",
+            "--rod-gyration",
+            "--gas-force",
+            "--indicator",
+            "--bore",
+            "--phases",
+            "--fluctuation",
+            "--flywheel",
+        ],
     };
     given
         .into_iter()
@@ -297,6 +334,43 @@ fn guard_angles(
         (angles, &format!("{angles} angles")),
         (head.headers.len() as u64, "columns"),
     )
+}
+
+/// `table dynamics`: the engine's forces and torques at each angle; the
+/// turn's results in the notes.
+fn dynamics(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let m = mechanism(args, 0.5, 3.0)?;
+    let omega = SpeedArgs {
+        rpm: args.rpm,
+        omega: args.omega,
+    }
+    .omega()?;
+    let engine = match args.engine.engine(m, omega)? {
+        Some(e) => e,
+        None => {
+            slider_crank::dynamics::Engine::new(m, slider_crank::dynamics::EXAMPLE_MASS, omega)?
+        }
+    };
+    let phases = args.turn.phases()?;
+    let spec = match spec {
+        Some(s) => s,
+        None => AngleSpec::parse("0:360:30")?,
+    };
+    let units = args.units.units(Units::FOOT_POUND);
+    let head =
+        slider_crank::dynamics::dynamics_head(&engine, &phases, args.turn.flywheel(), &units)?;
+    guard_angles(args, "table dynamics", &spec, &head)?;
+    let rows = || {
+        spec.iter()
+            .map(|d| slider_crank::dynamics::dynamics_row(&engine, &phases, d, decimals))
+    };
+    write_rows(format, &head, rows, out)
 }
 
 /// Writes the rows as they are computed under the title and headers of

@@ -16,6 +16,7 @@ mod incline;
 mod inversions;
 mod rod;
 mod sketch;
+mod turning;
 mod velocity;
 
 use super::{FigureName, FigureOptions};
@@ -160,6 +161,7 @@ pub(crate) fn uses(name: FigureName) -> &'static [&'static str] {
         FigureName::NgFig7Calibration => &["--data", "--fit", "--style", "--font"],
         FigureName::NgFig8Forces => &[MECH, "--data", "--style", "--font"],
         FigureName::CurveBenchmark => &["--data", "--style", "--font"],
+        FigureName::TurningMoment => &[MECH, SPEED, "--data", "--style", "--font"],
         _ => &[],
     }
 }
@@ -222,6 +224,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         FigureName::Inversion3OscillatingCylinder => inversions::build(&ctx, Inversion::Rod),
         FigureName::Inversion4HandPump => inversions::build(&ctx, Inversion::Slider),
         FigureName::SlotConvergence => convergence::build(&ctx),
+        FigureName::TurningMoment => turning::build(&ctx),
         _ => Err(Error::Parse(format!(
             "{} is a mechanism figure, not a diagram",
             name.name()

@@ -1,0 +1,187 @@
+//! The turning-moment diagram: (a) the torque on the crank against θ with
+//! its mean line and the areas between them, (b) the energy stored in the
+//! flywheel, E(θ) = ∫ (T − T_mean) dθ, with its fluctuation ΔE.
+//!
+//! The engine is the catalogue's (§35's by default) with the example
+//! reciprocating mass and a 10 in bore, its gas force from an indicator
+//! diagram (examples/indicator.csv unless `--data` gives another).
+//! Tangents are central differences within each smooth piece (T has kinks
+//! at the dead centres and the diagram's rows); the values are exact.
+
+use super::{Ctx, Sheet, short, sig};
+use crate::diagram::{Axis, Curve, Plot};
+use crate::dynamics::quadrature::integrate;
+use crate::dynamics::turning::total_torque;
+use crate::dynamics::{EXAMPLE_MASS, Engine, GasForce, IndicatorDiagram, TurningMoment};
+use crate::error::Result;
+use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
+use crate::geom::{Point, Vector};
+
+/// The example engine's indicator diagram.
+const INDICATOR: &str = include_str!("../../../examples/indicator.csv");
+
+/// The example engine's bore, 10 in in feet.
+const BORE: f64 = 10.0 / 12.0;
+
+/// Step of the tangents' differences, radians.
+const STEP: f64 = 1e-6;
+
+/// The example engine of the figure.
+pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
+    let text = ctx.options.data.as_deref().unwrap_or(INDICATOR);
+    let diagram = IndicatorDiagram::from_csv(text, BORE, "data")?;
+    Engine::new(ctx.mechanism, EXAMPLE_MASS, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
+}
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let engine = engine(ctx)?;
+    let tm = TurningMoment::new(&engine, &[0.0])?;
+    let phases = [0.0];
+    let torque = |deg: f64| total_torque(&engine, &phases, deg.to_radians());
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, true, false);
+    sheet.meta("mean_torque", serde_json::json!(tm.mean));
+    sheet.meta("fluctuation", serde_json::json!(tm.fluctuation));
+    let pieces: Vec<(f64, f64)> = tm.kinks_deg.windows(2).map(|w| (w[0], w[1])).collect();
+    let theta =
+        || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0) };
+    let height = 0.5 * (page.height() - 32.0 - 24.0 - 56.0);
+    let t_unit = ctx.units.torque();
+
+    // (a) T against θ, the mean line and the areas.
+    let (lo, hi) = (0..=720)
+        .map(|k| torque(k as f64 * 0.5))
+        .fold((tm.mean, tm.mean), |(a, b), t| (a.min(t), b.max(t)));
+    let mut plot = Plot::new(
+        "turning-moment",
+        ctx.band(16.0, height),
+        theta()?,
+        Axis::nice(&format!("torque on the crank *T* ({t_unit})"), lo, hi)?,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption(
+        "(a) Turning-moment diagram, *T* = *F*·*OM*, the mean line and the areas between them",
+    );
+    for (k, lobe) in tm.lobes.iter().enumerate() {
+        let n = ((lobe.to_deg - lobe.from_deg) * 2.0).ceil().max(2.0) as usize;
+        let mut points: Vec<Point> = (0..=n)
+            .map(|i| {
+                let d = lobe.from_deg + (lobe.to_deg - lobe.from_deg) * i as f64 / n as f64;
+                Point::new(d, torque(d))
+            })
+            .collect();
+        points.push(Point::new(lobe.to_deg, tm.mean));
+        points.push(Point::new(lobe.from_deg, tm.mean));
+        plot.push(Item::new(
+            format!("region-lobe-{}", k + 1),
+            Role::Construction,
+            Shape::Region { points },
+        ));
+        // Each area's value, half-way between the curve and the mean line
+        // at the middle of the lobe, where the lobe is wide enough to carry it.
+        if lobe.to_deg - lobe.from_deg >= 25.0 {
+            let mid = 0.5 * (lobe.from_deg + lobe.to_deg);
+            let anchor = Point::new(mid, 0.5 * (torque(mid) + tm.mean));
+            let sign = if lobe.area > 0.0 { "+" } else { "−" };
+            plot.push(Item::new(
+                format!("label-lobe-{}", k + 1),
+                Role::Label,
+                Shape::Label {
+                    anchor,
+                    text: RichText::parse(&format!("{sign}{}", sig(lobe.area.abs()))),
+                    size: TextSize::Small,
+                },
+            ));
+        }
+    }
+    let curves: Vec<Box<dyn Curve>> = pieces.iter().map(|&(a, b)| piece(&torque, a, b)).collect();
+    let traced: Vec<(&dyn Curve, _)> = curves
+        .iter()
+        .zip(&pieces)
+        .map(|(c, &(a, b))| (c.as_ref(), a..=b))
+        .collect();
+    plot.curve("curve-torque", &traced, Dash::Solid, Some("*T*(θ)"))?;
+    plot.line(
+        "line-mean-torque",
+        &[(0.0, tm.mean), (360.0, tm.mean)],
+        Dash::Dashed,
+        Some(&format!("mean torque {} {t_unit}", sig(tm.mean))),
+    );
+    sheet.plot(plot);
+
+    // (b) The energy stored, E(θ).
+    let energy = |deg: f64| -> f64 {
+        let t = deg.to_radians();
+        let Some(lobe) = tm.lobes.iter().find(|l| t <= l.to_deg.to_radians()) else {
+            return 0.0;
+        };
+        let before = lobe.energy - lobe.area;
+        let excess = |x: f64| total_torque(&engine, &phases, x) - tm.mean;
+        let from = lobe.from_deg.to_radians();
+        before + integrate(&excess, from, t.max(from), tm.tolerance)
+    };
+    let values: Vec<f64> = tm.lobes.iter().map(|l| l.energy).chain([0.0]).collect();
+    let (elo, ehi) = values
+        .iter()
+        .fold((0.0f64, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
+    let mut plot = Plot::new(
+        "energy",
+        ctx.band(16.0 + height + 24.0, height),
+        theta()?,
+        Axis::nice(&format!("energy stored *E* ({t_unit})"), elo, ehi)?,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption("(b) Energy stored in the flywheel, *E* = ∫ (*T* − *T*_{mean}) dθ, and its fluctuation Δ*E*");
+    let e_curve = move |deg: f64| -> Option<(Point, Vector)> {
+        let slope = torque(deg) - tm.mean;
+        Some((
+            Point::new(deg, energy(deg)),
+            Vector::new(1.0, slope * super::PER_DEGREE),
+        ))
+    };
+    plot.curve(
+        "curve-energy",
+        &[(&e_curve, 0.0..=360.0)],
+        Dash::Solid,
+        Some("*E*(θ)"),
+    )?;
+    let extremes = [(tm.max_energy_deg, ehi), (tm.min_energy_deg, elo)];
+    plot.points(
+        "point-energy",
+        &extremes,
+        Symbol::Circle,
+        Some(&format!("Δ*E* = {} {t_unit}", sig(tm.fluctuation))),
+    );
+    sheet.plot(plot);
+    let m = ctx.mechanism;
+    sheet.notes(
+        Point::new(20.0, page.height() - 40.0),
+        &[
+            format!(
+                "*r* = {} {u}, *l* = {} {u}, {} rpm; reciprocating mass {} {f}·s²/{u}, bore {} {u}; gas force from the indicator diagram{}.",
+                short(m.crank()), short(m.rod()), short(ctx.rpm()), short(EXAMPLE_MASS), short(BORE),
+                if ctx.options.data.is_some() { " given (--data)" } else { " of examples/indicator.csv" },
+                u = ctx.unit(), f = ctx.units.force()
+            ),
+            format!(
+                "Work per turn {} {t_unit}; {} areas between the crossings, integrated to {:.0e} {t_unit}; most energy at θ = {}°, least at {}°.",
+                sig(tm.work), tm.lobes.len(), tm.tolerance, short(tm.max_energy_deg), short(tm.min_energy_deg)
+            ),
+        ],
+    );
+    Ok(sheet.finish())
+}
+
+/// T on [a, b] degrees as a curve with its slope by central differences
+/// kept inside the piece.
+fn piece<'a>(torque: &'a dyn Fn(f64) -> f64, a: f64, b: f64) -> Box<dyn Curve + 'a> {
+    Box::new(move |deg: f64| -> Option<(Point, Vector)> {
+        let h = STEP.to_degrees();
+        let (lo, hi) = ((deg - h).max(a), (deg + h).min(b));
+        let slope = (torque(hi) - torque(lo)) / (hi - lo);
+        Some((Point::new(deg, torque(deg)), Vector::new(1.0, slope)))
+    })
+}

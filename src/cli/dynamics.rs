@@ -1,0 +1,265 @@
+//! The engine flags of `analyze` and `table dynamics`: masses, gas force,
+//! cylinders and flywheel; and the dynamics section of `analyze`.
+
+use clap::Args;
+use serde_json::{Value, json};
+use slider_crank::dynamics::{
+    Engine, EnginePose, FlywheelAsk, GasForce, IndicatorDiagram, RodMass, unbalanced_forces,
+};
+use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::render::plain;
+use slider_crank::{Angle, Error, Result, SliderCrank, Units};
+use std::path::PathBuf;
+
+/// The engine's masses and gas force. Any of them adds the dynamics.
+#[derive(Debug, Clone, Args)]
+pub struct EngineArgs {
+    /// Reciprocating mass m (piston and cross-head) in the unit that makes
+    /// mass × length/s² the force unit (kg with m and N, slug with ft and
+    /// lbf): adds the engine's dynamics (inertia force exact and by
+    /// Klein's CG, piston effort, rod force, thrust on the guides, crank
+    /// effort T = F·OM) [default: 0 with another dynamics flag]
+    #[arg(long, allow_negative_numbers = true, value_name = "M")]
+    pub mass: Option<f64>,
+    /// The connecting rod's mass (give --rod-cg and --rod-gyration with it)
+    #[arg(long, allow_negative_numbers = true, value_name = "M", requires_all = ["rod_cg", "rod_gyration"])]
+    pub rod_mass: Option<f64>,
+    /// Distance BG of the rod's centre of mass from the crank pin, in the
+    /// length unit (0 ≤ BG ≤ l)
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "BG",
+        requires = "rod_mass"
+    )]
+    pub rod_cg: Option<f64>,
+    /// The rod's radius of gyration k about its centre of mass
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "K",
+        requires = "rod_mass"
+    )]
+    pub rod_gyration: Option<f64>,
+    /// A constant gas force on the piston, positive towards the crank
+    /// centre, in the force unit
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "F",
+        conflicts_with = "indicator"
+    )]
+    pub gas_force: Option<f64>,
+    /// An indicator diagram for a cycle of one turn: CSV with the columns
+    /// fraction (of the stroke from the outer dead centre, 0 to 1),
+    /// expansion and compression (gauge pressures, force per length²);
+    /// give --bore with it
+    #[arg(long, value_name = "CSV", requires = "bore")]
+    pub indicator: Option<PathBuf>,
+    /// The cylinder's bore D (piston area π D²/4), in the length unit
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "D",
+        requires = "indicator"
+    )]
+    pub bore: Option<f64>,
+}
+
+impl EngineArgs {
+    /// Whether any dynamics flag was given.
+    pub fn is_set(&self) -> bool {
+        self.mass.is_some()
+            || self.rod_mass.is_some()
+            || self.gas_force.is_some()
+            || self.indicator.is_some()
+    }
+
+    /// The engine asked for, `None` without a dynamics flag.
+    pub fn engine(&self, mechanism: SliderCrank, omega: f64) -> Result<Option<Engine>> {
+        if !self.is_set() {
+            return Ok(None);
+        }
+        let mut engine = Engine::new(mechanism, self.mass.unwrap_or(0.0), omega)?;
+        if let (Some(m), Some(cg), Some(k)) = (self.rod_mass, self.rod_cg, self.rod_gyration) {
+            engine = engine.with_rod(RodMass::new(m, cg, k)?)?;
+        }
+        if let Some(f) = self.gas_force {
+            engine = engine.with_gas(GasForce::Constant(f))?;
+        }
+        if let (Some(path), Some(bore)) = (&self.indicator, self.bore) {
+            let text = read_text(path, MAX_DATA_BYTES, "indicator diagram")?;
+            let what = format!("indicator diagram {}", path.display());
+            engine = engine.with_gas(GasForce::Indicator(IndicatorDiagram::from_csv(
+                &text, bore, &what,
+            )?))?;
+        }
+        Ok(Some(engine))
+    }
+}
+
+/// The turn's flags of `table dynamics`: cylinders and flywheel.
+#[derive(Debug, Clone, Args)]
+pub struct TurnArgs {
+    /// Phase angles of the cylinders' cranks in degrees, ahead of the
+    /// first, comma-separated (0,180: two cylinders opposite) [default: 0,
+    /// one cylinder]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub phases: Option<String>,
+    /// Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω: adds
+    /// the flywheel I = ΔE / (ω² C_s) to the notes
+    #[arg(
+        long,
+        allow_negative_numbers = true,
+        value_name = "CS",
+        conflicts_with = "flywheel"
+    )]
+    pub fluctuation: Option<f64>,
+    /// A flywheel's moment of inertia I (FORCE·s²·UNIT): adds its
+    /// coefficient of fluctuation of speed to the notes
+    #[arg(long, allow_negative_numbers = true, value_name = "I")]
+    pub flywheel: Option<f64>,
+}
+
+impl TurnArgs {
+    /// The phases in degrees.
+    pub fn phases(&self) -> Result<Vec<f64>> {
+        match &self.phases {
+            Some(s) => super::args::parse_list(s, "phase", false),
+            None => Ok(vec![0.0]),
+        }
+    }
+
+    /// What the flywheel note asks.
+    pub fn flywheel(&self) -> FlywheelAsk {
+        match (self.fluctuation, self.flywheel) {
+            (Some(c), _) => FlywheelAsk::Coefficient(c),
+            (_, Some(i)) => FlywheelAsk::Inertia(i),
+            _ => FlywheelAsk::None,
+        }
+    }
+}
+
+/// +0.0 for −0.0.
+fn num(x: f64) -> f64 {
+    x + 0.0
+}
+
+/// The unit of mass the forces imply: FORCE·s²/LENGTH.
+fn mass_unit(units: &Units) -> String {
+    format!("{}·s²/{}", units.force(), units.length())
+}
+
+/// The dynamics of `engine` at `angle` as `analyze --json` writes it.
+pub fn to_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
+    let b = unbalanced_forces(engine, angle);
+    let mut v = json!({
+        "units": {"force": units.force(), "torque": units.torque(), "mass": mass_unit(units)},
+        "sign": "forces along the stroke positive towards the crank centre; torques counter-clockwise positive",
+        "reciprocating_mass": engine.reciprocating_mass(),
+        "gas_force": num(at.gas_force),
+        "inertia_force": num(at.inertia_force),
+        "inertia_force_klein": num(at.inertia_force_graphical),
+        "piston_effort": num(at.piston_effort),
+        "rod_force": num(at.rod_force),
+        "guide_thrust": num(at.guide_thrust),
+        "OM": num(at.om),
+        "crank_effort": num(at.crank_effort),
+        "crank_effort_exact": num(at.crank_effort_exact),
+        "torque": num(at.torque),
+        "unbalanced": {
+            "primary": num(b.primary), "secondary": num(b.secondary),
+            "exact": num(b.exact), "remainder": num(b.remainder),
+        },
+        "rod": Value::Null,
+    });
+    if let Some(r) = at.rod {
+        v["rod"] = json!({
+            "inertia_force": [num(r.force[0]), num(r.force[1])],
+            "inertia_couple": num(r.couple),
+            "torque": num(r.torque),
+            "equivalent": {
+                "mass_at_crosshead": num(r.mass_at_crosshead),
+                "mass_at_crank_pin": num(r.mass_at_crank_pin),
+                "correction_couple": num(r.correction_couple),
+                "correction_torque": num(r.correction_torque),
+                "torque": num(r.equivalent_torque),
+            },
+        });
+    }
+    v
+}
+
+/// The dynamics section of `analyze`'s text.
+pub fn to_text(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> String {
+    let (f, t, u) = (
+        units.force().to_string(),
+        units.torque(),
+        units.length().to_string(),
+    );
+    let b = unbalanced_forces(engine, angle);
+    let mut out = format!(
+        "  dynamics (m = {} {}, forces positive towards the crank centre, torques counter-clockwise)\n",
+        plain(engine.reciprocating_mass()),
+        mass_unit(units)
+    );
+    let mut row = |name: &str, x: f64, unit: &str| {
+        out.push_str(&format!("    {name:<34}{:>20}  {unit}\n", number(x)));
+    };
+    row("gas force", at.gas_force, &f);
+    row("inertia force m a (exact)", at.inertia_force, &f);
+    row(
+        "inertia force −m ω² CG (Klein)",
+        at.inertia_force_graphical,
+        &f,
+    );
+    row("piston effort F", at.piston_effort, &f);
+    row("force along the rod F/cos φ", at.rod_force, &f);
+    row("thrust on the guides −F tan φ", at.guide_thrust, &f);
+    row("OM (Ng's line)", at.om, &u);
+    row("crank effort F·OM", at.crank_effort, &t);
+    row("crank effort F r sin(θ+φ)/cos φ", at.crank_effort_exact, &t);
+    if let Some(r) = at.rod {
+        row("rod inertia force x", r.force[0], &f);
+        row("rod inertia force y", r.force[1], &f);
+        row("rod inertia couple", r.couple, &t);
+        row("rod torque on the crank (exact)", r.torque, &t);
+        row(
+            "rod mass at the cross-head m_A",
+            r.mass_at_crosshead,
+            &mass_unit(units),
+        );
+        row(
+            "rod mass at the crank pin m_B",
+            r.mass_at_crank_pin,
+            &mass_unit(units),
+        );
+        row("correction couple", r.correction_couple, &t);
+        row("rod torque (two masses + couple)", r.equivalent_torque, &t);
+    }
+    row("torque on the crank T", at.torque, &t);
+    row("primary force m r ω² cos θ", b.primary, &f);
+    row("secondary force m r ω² cos 2θ / n", b.secondary, &f);
+    row("exact unbalanced force −m a", b.exact, &f);
+    out
+}
+
+/// Ten decimals, exponent form beyond 1e12 or below 1e-6.
+fn number(x: f64) -> String {
+    let a = x.abs();
+    if a != 0.0 && !(1e-6..1e12).contains(&a) {
+        format!("{:.10e}", num(x))
+    } else {
+        format!("{:.10}", num(x))
+    }
+}
+
+/// Refuses the dynamics flags where they do not apply.
+pub fn refuse_with_chain(args: &EngineArgs) -> Result<()> {
+    if args.is_set() {
+        return Err(Error::Parse(
+            "--mass, --rod-mass, --gas-force and --indicator apply to the engine only, not with --slot-radius, --links or --inversion".into(),
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,48 @@
+//! Engine dynamics: the inertia of the reciprocating parts and the rod,
+//! the crank effort through Ng's OM line, the turning-moment diagram over
+//! a turn, the fluctuation of energy and the flywheel, and the primary and
+//! secondary unbalanced forces.
+//!
+//! The textbook's §37 gives the piston acceleration (Klein's CG) and Ng's
+//! paper the torque line (T = F · OM); what follows from them, the rod as
+//! an equivalent dynamical system, the turning-moment diagram and the
+//! flywheel, is standard engine dynamics beyond both
+//! (`docs/dynamics.md` derives every formula).
+//!
+//! Sign conventions: the piston effort F and the gas force act along the
+//! line of stroke, **positive towards the crank centre** (−x), the way the
+//! gas pushes in a cylinder beyond the slider; F = −F_p of Ng's statics.
+//! The crank effort T is the torque the piston and rod forces deliver to
+//! the crank, counter-clockwise positive, so that T ω = −F v (v = dx_A/dt)
+//! and T = F · OM. The crank turns at a constant speed ω; gravity and
+//! friction are left out.
+//!
+//! ```
+//! use slider_crank::{Angle, SliderCrank};
+//! use slider_crank::dynamics::{Engine, GasForce};
+//! let m = SliderCrank::in_line(0.5, 3.0)?;                  // §35's engine
+//! let engine = Engine::new(m, 2.0, 26.18)?.with_gas(GasForce::Constant(1000.0))?;
+//! let at = engine.at(Angle::deg(90.0))?;
+//! // At 90° OM = r, so T = F r.
+//! assert!((at.crank_effort - at.piston_effort * 0.5).abs() < 1e-9);
+//! # Ok::<(), slider_crank::Error>(())
+//! ```
+
+mod balance;
+mod engine;
+mod flywheel;
+mod gas;
+mod pose;
+pub(crate) mod quadrature;
+mod rod;
+mod table;
+pub(crate) mod turning;
+
+pub use balance::{Balance, unbalanced_forces};
+pub use engine::Engine;
+pub use flywheel::Flywheel;
+pub use gas::{GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS};
+pub use pose::EnginePose;
+pub use rod::{RodInertia, RodMass};
+pub use table::{EXAMPLE_MASS, FlywheelAsk, dynamics_head, dynamics_row, example_table};
+pub use turning::{Lobe, MAX_CYLINDERS, RELATIVE_TOLERANCE, TurningMoment};

@@ -1,0 +1,138 @@
+//! The forces and the crank effort of an engine at one pose.
+
+use super::engine::Engine;
+use super::rod::RodInertia;
+use crate::angle::Angle;
+use crate::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine};
+use crate::error::{Error, Result};
+use crate::mechanism::Pose;
+
+/// Everything the dynamics gives at one pose. Forces along the line of
+/// stroke are positive towards the crank centre; torques on the crank are
+/// counter-clockwise positive (see [`crate::dynamics`]).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct EnginePose {
+    /// The crank angle θ in degrees.
+    pub angle_deg: f64,
+    /// The gas force on the piston.
+    pub gas_force: f64,
+    /// The inertia force of the reciprocating parts, exact: m a towards the
+    /// crank (−m a along +x, a = d²x_A/dt²).
+    pub inertia_force: f64,
+    /// The same from Klein's construction, a = −ω² CG (Kisch's where D is
+    /// at infinity, θ = 90° and 270° in line).
+    pub inertia_force_graphical: f64,
+    /// The piston effort F = gas force + inertia force of the
+    /// reciprocating parts (the rod's inertia is in `rod`).
+    pub piston_effort: f64,
+    /// The force along the rod, F / cos φ (compression positive).
+    pub rod_force: f64,
+    /// The thrust of the slider on its guides along +y, −F tan φ (Ng's
+    /// F_s = F_p tan φ with F_p = −F).
+    pub guide_thrust: f64,
+    /// OM (= CE) read off Ng's torque line.
+    pub om: f64,
+    /// The crank effort of the piston effort, F · OM, OM from the
+    /// construction.
+    pub crank_effort: f64,
+    /// The same by the exact formula F r sin(θ + φ) / cos φ.
+    pub crank_effort_exact: f64,
+    /// The rod's inertia, `None` for a massless rod.
+    pub rod: Option<RodInertia>,
+    /// The whole torque on the crank: the gas and reciprocating parts'
+    /// crank effort and the rod's exact inertia torque.
+    pub torque: f64,
+}
+
+impl Engine {
+    /// The forces and torques at the crank angle `angle`.
+    ///
+    /// Errors: a force beyond the largest number (very large masses or
+    /// pressures near the limit of assembly).
+    pub fn at(&self, angle: Angle) -> Result<EnginePose> {
+        let pose = self.mechanism().pose(angle);
+        let omega = self.omega();
+        let w2 = omega * omega;
+        let gas = self.gas().at(&pose, omega);
+        let m = self.reciprocating_mass();
+        let inertia_force = m * w2 * pose.position_acceleration();
+        let inertia_force_graphical = -m * w2 * graphical_cg(&pose);
+        let rod = self.rod().map(|r| RodInertia::new(&pose, r, omega));
+        let piston_effort = gas + inertia_force;
+        let tan_phi = pose.tan_obliquity();
+        let cos_phi = pose.run() / pose.mechanism().rod();
+        let line = TorqueLine::construct(&pose, &VelocityLine::construct(&pose));
+        let om = line.om();
+        let crank_effort_exact = piston_effort * exact_arm(&pose);
+        let at = EnginePose {
+            angle_deg: angle.degrees(),
+            gas_force: gas,
+            inertia_force,
+            inertia_force_graphical,
+            piston_effort,
+            rod_force: piston_effort / cos_phi,
+            guide_thrust: -piston_effort * tan_phi,
+            om,
+            crank_effort: piston_effort * om,
+            crank_effort_exact,
+            torque: crank_effort_exact + rod.map_or(0.0, |r| r.torque),
+            rod,
+        };
+        at.check(angle)
+    }
+}
+
+impl EnginePose {
+    fn check(self, angle: Angle) -> Result<Self> {
+        let values = [
+            self.inertia_force,
+            self.inertia_force_graphical,
+            self.piston_effort,
+            self.rod_force,
+            self.guide_thrust,
+            self.crank_effort,
+            self.torque,
+        ];
+        if values.iter().all(|v| v.is_finite()) {
+            Ok(self)
+        } else {
+            Err(Error::OutOfRange {
+                name: "angle",
+                value: angle.degrees(),
+                reason: "a force or torque of the engine here exceeds the largest number (about 1.8e308): give the masses or pressures in larger units".into(),
+            })
+        }
+    }
+}
+
+/// r sin(θ + φ) / cos φ, the exact moment arm of the piston effort, from
+/// θ and φ alone (not from the construction's E).
+fn exact_arm(pose: &Pose) -> f64 {
+    let phi = pose.obliquity();
+    let r = pose.mechanism().crank();
+    r * (pose.angle().radians() + phi).sin() / phi.cos()
+}
+
+/// CG of Klein's construction, or of Kisch's where D is at infinity.
+fn graphical_cg(pose: &Pose) -> f64 {
+    let e = VelocityLine::construct(pose);
+    match Klein::construct(pose, &InstantCentre::construct(pose), &e) {
+        Some(k) => k.points().cg(),
+        None => Kisch::construct(pose, &e).points().cg(),
+    }
+}
+
+impl Engine {
+    /// The whole torque on the crank at `pose` by the exact formulas alone
+    /// (no construction, no check): what the turning-moment diagram
+    /// integrates. Equal to [`EnginePose::torque`].
+    pub fn torque(&self, pose: &Pose) -> f64 {
+        let omega = self.omega();
+        let effort = self.gas().at(pose, omega)
+            + self.reciprocating_mass() * omega * omega * pose.position_acceleration();
+        let rod = self
+            .rod()
+            .map_or(0.0, |r| RodInertia::new(pose, r, omega).torque);
+        effort * exact_arm(pose) + rod
+    }
+}

@@ -1,0 +1,86 @@
+//! Adaptive quadrature and root finding for the turning-moment diagram.
+
+/// Most halvings of one interval by [`integrate`] (2⁻⁴⁰ of a turn is far
+/// below any angle that matters).
+const MAX_DEPTH: u32 = 40;
+
+/// ∫ f over [a, b] by adaptive Simpson's rule with Richardson's
+/// correction, to the absolute tolerance `tol` (each half gets half the
+/// tolerance; an interval is accepted when its two halves and the whole
+/// agree to 15 tol). Exact for cubics. `f` must be smooth on [a, b]:
+/// split the range at its kinks first.
+pub(crate) fn integrate(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
+    let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
+    let whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
+    step(f, [a, b], [fa, fm, fb], whole, tol, MAX_DEPTH)
+}
+
+fn step(
+    f: &dyn Fn(f64) -> f64,
+    [a, b]: [f64; 2],
+    [fa, fm, fb]: [f64; 3],
+    whole: f64,
+    tol: f64,
+    depth: u32,
+) -> f64 {
+    let m = 0.5 * (a + b);
+    let (l, r) = (0.5 * (a + m), 0.5 * (m + b));
+    let (fl, fr) = (f(l), f(r));
+    let left = (m - a) / 6.0 * (fa + 4.0 * fl + fm);
+    let right = (b - m) / 6.0 * (fm + 4.0 * fr + fb);
+    let delta = left + right - whole;
+    if depth == 0 || delta.abs() <= 15.0 * tol {
+        return left + right + delta / 15.0;
+    }
+    step(f, [a, m], [fa, fl, fm], left, 0.5 * tol, depth - 1)
+        + step(f, [m, b], [fm, fr, fb], right, 0.5 * tol, depth - 1)
+}
+
+/// A root of `f` between `a` and `b`, where f(a) and f(b) have opposite
+/// signs (or one is zero), by bisection to the last bit of the angle.
+pub(crate) fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let mut fa = f(a);
+    if fa == 0.0 {
+        return a;
+    }
+    for _ in 0..200 {
+        let m = 0.5 * (a + b);
+        if m <= a.min(b) || m >= a.max(b) {
+            break;
+        }
+        let fm = f(m);
+        if fm == 0.0 {
+            return m;
+        }
+        if (fm < 0.0) == (fa < 0.0) {
+            a = m;
+            fa = fm;
+        } else {
+            b = m;
+        }
+    }
+    0.5 * (a + b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn integrates_to_its_tolerance() {
+        // ∫₀^π sin = 2; ∫₀^1 eˣ = e − 1; a cubic exactly.
+        let v = integrate(&f64::sin, 0.0, std::f64::consts::PI, 1e-12);
+        assert!((v - 2.0).abs() < 1e-12, "{v}");
+        let v = integrate(&f64::exp, 0.0, 1.0, 1e-13);
+        assert!((v - (std::f64::consts::E - 1.0)).abs() < 1e-13, "{v}");
+        let v = integrate(&|x| x * x * x - x, -1.0, 2.0, 1.0);
+        assert!((v - 2.25).abs() < 1e-14, "{v}");
+    }
+
+    #[test]
+    fn bisects_to_the_root() {
+        let x = bisect(&|x: f64| x.cos(), 1.0, 2.0);
+        assert!((x - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert_eq!(bisect(&|x: f64| x - 1.0, 1.0, 3.0), 1.0);
+    }
+}

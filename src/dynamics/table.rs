@@ -1,0 +1,160 @@
+//! `table dynamics`: the forces and torques of an engine against θ, with
+//! the turn's mean torque, fluctuation of energy and flywheel as notes.
+
+use super::engine::Engine;
+use super::flywheel::Flywheel;
+use super::turning::TurningMoment;
+use crate::angle::Angle;
+use crate::error::Result;
+use crate::render::plain;
+use crate::table::{Table, fixed};
+use crate::units::Units;
+
+/// What the flywheel note works out: the flywheel for a coefficient of
+/// fluctuation of speed, or the coefficient of a given flywheel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum FlywheelAsk {
+    /// No flywheel note.
+    None,
+    /// The moment of inertia for this coefficient C_s.
+    Coefficient(f64),
+    /// The coefficient for this moment of inertia I.
+    Inertia(f64),
+}
+
+/// The title, headers and notes of the dynamics table of `engine` with
+/// cylinders at `phases_deg` (the notes hold the turn's results).
+///
+/// Errors: those of [`TurningMoment::new`] and [`Flywheel`].
+pub fn dynamics_head(
+    engine: &Engine,
+    phases_deg: &[f64],
+    flywheel: FlywheelAsk,
+    units: &Units,
+) -> Result<Table> {
+    let (u, f, t) = (units.length(), units.force(), units.torque());
+    let m = engine.mechanism();
+    let turn = TurningMoment::new(engine, phases_deg)?;
+    let mut headers = vec![
+        "θ (°)".to_string(),
+        format!("gas ({f})"),
+        format!("inertia ({f})"),
+        format!("F ({f})"),
+        format!("rod ({f})"),
+        format!("guides ({f})"),
+        format!("OM ({u})"),
+        format!("F·OM ({t})"),
+        format!("T rod ({t})"),
+        format!("T ({t})"),
+    ];
+    if turn.phases_deg.len() > 1 {
+        headers.push(format!("T all ({t})"));
+    }
+    let mut notes = vec![
+        "Forces along the stroke are positive towards the crank centre; F = gas + inertia; rod: F / cos φ (compression); guides: the slider's thrust along +y, −F tan φ; T = F·OM + the rod's inertia torque, counter-clockwise positive.".to_string(),
+        format!(
+            "Over the turn ({} cylinder{} at {}°): work {} {t}, mean torque {} {t}, fluctuation of energy ΔE = {} {t} (most energy at θ = {}°, least at {}°; {} areas, integrated to {:.1e} {t}).",
+            turn.phases_deg.len(),
+            if turn.phases_deg.len() == 1 { "" } else { "s" },
+            turn.phases_deg.iter().map(|d| plain(*d)).collect::<Vec<_>>().join(", "),
+            sig(turn.work), sig(turn.mean), sig(turn.fluctuation),
+            fixed(turn.max_energy_deg, 2), fixed(turn.min_energy_deg, 2),
+            turn.lobes.len(), turn.tolerance,
+        ),
+    ];
+    let fw = match flywheel {
+        FlywheelAsk::None => None,
+        FlywheelAsk::Coefficient(c) => Some(Flywheel::for_coefficient(
+            turn.fluctuation,
+            engine.omega(),
+            c,
+        )?),
+        FlywheelAsk::Inertia(i) => {
+            Some(Flywheel::for_inertia(turn.fluctuation, engine.omega(), i)?)
+        }
+    };
+    if let Some(fw) = fw {
+        notes.push(format!(
+            "Flywheel: I = ΔE / (ω² C_s) = {} {f}·s²·{u} for C_s = {}.",
+            sig(fw.inertia),
+            sig(fw.coefficient)
+        ));
+    }
+    Ok(Table {
+        title: format!(
+            "Engine dynamics: r = {} {u}, l = {} {u}, e = {} {u}, m = {} {f}·s²/{u}, ω = {} rad/s",
+            plain(m.crank()),
+            plain(m.rod()),
+            plain(m.offset()),
+            plain(engine.reciprocating_mass()),
+            plain(engine.omega())
+        ),
+        headers,
+        rows: vec![],
+        notes,
+    })
+}
+
+/// Six significant figures, exponent form outside 1e-4…1e9.
+fn sig(x: f64) -> String {
+    let a = x.abs();
+    if a != 0.0 && !(1e-4..1e9).contains(&a) {
+        format!("{x:.5e}")
+    } else {
+        let decimals = if a == 0.0 {
+            0
+        } else {
+            (5 - a.log10().floor() as i32).max(0) as usize
+        };
+        fixed(x, decimals)
+    }
+}
+
+/// One row of the dynamics table at `degrees`.
+pub fn dynamics_row(
+    engine: &Engine,
+    phases_deg: &[f64],
+    degrees: f64,
+    decimals: usize,
+) -> Result<Vec<String>> {
+    let angle = Angle::from_degrees(degrees)?;
+    let at = engine.at(angle)?;
+    let mut row = vec![
+        fixed(degrees, 1),
+        fixed(at.gas_force, decimals),
+        fixed(at.inertia_force, decimals),
+        fixed(at.piston_effort, decimals),
+        fixed(at.rod_force, decimals),
+        fixed(at.guide_thrust, decimals),
+        fixed(at.om, decimals),
+        fixed(at.crank_effort, decimals),
+        fixed(at.rod.map_or(0.0, |r| r.torque), decimals),
+        fixed(at.torque, decimals),
+    ];
+    if phases_deg.len() > 1 {
+        row.push(fixed(
+            engine.torque_of_cylinders(phases_deg, angle)?,
+            decimals,
+        ));
+    }
+    Ok(row)
+}
+
+/// The reciprocating mass of the example engine, in slug (about 322 lbf
+/// of piston and cross-head): an illustration, the textbook gives none.
+pub const EXAMPLE_MASS: f64 = 10.0;
+
+/// The dynamics table of the example engine: §35's (r = 0.5 ft, l = 3 ft,
+/// 250 rpm) with [`EXAMPLE_MASS`], no gas force, one cylinder, 4 decimals,
+/// at `angles` (degrees).
+pub fn example_table(angles: &[f64]) -> Result<Table> {
+    let m = crate::SliderCrank::in_line(0.5, 3.0)?;
+    let engine = Engine::new(m, EXAMPLE_MASS, crate::rpm_to_omega(250.0))?;
+    let head = dynamics_head(&engine, &[0.0], FlywheelAsk::None, &Units::FOOT_POUND)?;
+    let rows = angles
+        .iter()
+        .map(|&d| dynamics_row(&engine, &[0.0], d, 4))
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Table { rows, ..head })
+}

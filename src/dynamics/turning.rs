@@ -1,0 +1,238 @@
+//! The turning-moment diagram over one turn: the mean torque, the areas
+//! above and below it and the fluctuation of energy.
+
+use super::engine::Engine;
+use super::gas::GasForce;
+use super::quadrature::{bisect, integrate};
+use crate::angle::Angle;
+use crate::error::{Error, Result, finite};
+use std::f64::consts::TAU;
+
+/// Samples per turn that bracket the crossings of the mean line.
+const BRACKETS: usize = 720;
+
+/// Relative tolerance of the integrals: each is within this fraction of
+/// max |T| × 2π.
+pub const RELATIVE_TOLERANCE: f64 = 1e-12;
+
+/// Most cylinders of one engine.
+pub const MAX_CYLINDERS: usize = 64;
+
+/// One area between the turning-moment curve and its mean line, between
+/// two crossings (or the ends of the turn).
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct Lobe {
+    /// Where it starts, crank angle in degrees.
+    pub from_deg: f64,
+    /// Where it ends.
+    pub to_deg: f64,
+    /// ∫ (T − T_mean) dθ over it: positive above the mean (energy stored
+    /// in the flywheel), negative below.
+    pub area: f64,
+    /// The energy stored since θ = 0 at its end, the sum of the areas so
+    /// far.
+    pub energy: f64,
+}
+
+/// The turning-moment diagram of an engine of one or more cylinders: each
+/// is the same engine on a crank `phase` degrees ahead of the first
+/// (cylinder i's crank at θ + δ_i), and T(θ) is the sum of their torques.
+///
+/// Integrals are by adaptive Simpson quadrature, split at every kink (dead
+/// centres and the indicator diagram's rows) and at the exact crossings of
+/// the mean line (found by bisection), to an absolute tolerance of
+/// [`RELATIVE_TOLERANCE`] × max |T| × 2π. A crossing where the curve only
+/// touches the mean line is not a crossing and is not needed: the energy's
+/// extremes are at true crossings.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct TurningMoment {
+    /// The cylinders' phase angles δ_i in degrees (the first 0).
+    pub phases_deg: Vec<f64>,
+    /// The work of one turn, ∫ T dθ over 0…2π.
+    pub work: f64,
+    /// The mean torque, work / 2π.
+    pub mean: f64,
+    /// The largest |T| seen (the scale of the tolerance).
+    pub peak: f64,
+    /// The absolute tolerance of the integrals.
+    pub tolerance: f64,
+    /// The areas between the curve and its mean line, in order from θ = 0.
+    pub lobes: Vec<Lobe>,
+    /// The fluctuation of energy ΔE = E_max − E_min.
+    pub fluctuation: f64,
+    /// The crank angle (degrees) of the most energy stored (the greatest
+    /// speed).
+    pub max_energy_deg: f64,
+    /// The crank angle of the least (the least speed).
+    pub min_energy_deg: f64,
+    /// The angles in degrees where T has a kink (dead centres, the
+    /// indicator diagram's rows), with 0 and 360: T is smooth between.
+    pub kinks_deg: Vec<f64>,
+}
+
+impl TurningMoment {
+    /// The diagram of `engine` with cylinders at `phases_deg` (one 0 for a
+    /// single cylinder; an empty list is one cylinder).
+    ///
+    /// Errors: a phase not finite, more than [`MAX_CYLINDERS`].
+    pub fn new(engine: &Engine, phases_deg: &[f64]) -> Result<Self> {
+        let phases = check_phases(phases_deg)?;
+        let radians: Vec<f64> = phases.iter().map(|d| d.to_radians()).collect();
+        let torque = |t: f64| total_torque(engine, &radians, t);
+        let breaks = breakpoints(engine, &radians);
+        let peak = (0..BRACKETS)
+            .map(|i| torque(TAU * i as f64 / BRACKETS as f64).abs())
+            .fold(0.0, f64::max);
+        let tolerance = RELATIVE_TOLERANCE * peak * TAU;
+        let over = |f: &dyn Fn(f64) -> f64, a: f64, b: f64| -> f64 {
+            pieces(&breaks, a, b)
+                .map(|(x, y)| integrate(f, x, y, tolerance * (y - x) / TAU))
+                .sum()
+        };
+        let work = over(&torque, 0.0, TAU);
+        let mean = work / TAU;
+        let excess = |t: f64| torque(t) - mean;
+        let crossings = crossings(&excess, &breaks);
+        let mut lobes = Vec::with_capacity(crossings.len() + 1);
+        let (mut energy, mut start) = (0.0, 0.0);
+        let (mut max, mut min) = ((0.0, 0.0), (0.0, 0.0));
+        for end in crossings.into_iter().chain([TAU]) {
+            let area = over(&excess, start, end);
+            energy += area;
+            lobes.push(Lobe {
+                from_deg: start.to_degrees(),
+                to_deg: end.to_degrees(),
+                area,
+                energy,
+            });
+            if energy > max.0 {
+                max = (energy, end);
+            }
+            if energy < min.0 {
+                min = (energy, end);
+            }
+            start = end;
+        }
+        Ok(Self {
+            phases_deg: phases,
+            work,
+            mean,
+            peak,
+            tolerance,
+            lobes,
+            fluctuation: max.0 - min.0,
+            max_energy_deg: max.1.to_degrees() % 360.0,
+            min_energy_deg: min.1.to_degrees() % 360.0,
+            kinks_deg: breaks.iter().map(|t| t.to_degrees()).collect(),
+        })
+    }
+}
+
+fn check_phases(phases: &[f64]) -> Result<Vec<f64>> {
+    if phases.len() > MAX_CYLINDERS {
+        return Err(Error::OutOfRange {
+            name: "cylinders",
+            value: phases.len() as f64,
+            reason: format!("an engine has at most {MAX_CYLINDERS} cylinders"),
+        });
+    }
+    if phases.is_empty() {
+        return Ok(vec![0.0]);
+    }
+    phases.iter().map(|&d| finite("phase", d)).collect()
+}
+
+/// T(θ) = Σ T_i(θ + δ_i), θ and δ_i in radians.
+pub(crate) fn total_torque(engine: &Engine, phases: &[f64], theta: f64) -> f64 {
+    phases
+        .iter()
+        .map(|d| match Angle::from_radians(theta + d) {
+            Ok(a) => engine.torque(&engine.mechanism().pose(a)),
+            Err(_) => 0.0,
+        })
+        .sum()
+}
+
+/// The angles in [0, 2π) where some cylinder's torque has a kink: its
+/// dead centres and, with an indicator diagram, the poses of its rows on
+/// both strokes; sorted, with 0 and 2π.
+fn breakpoints(engine: &Engine, phases: &[f64]) -> Vec<f64> {
+    let m = engine.mechanism();
+    let (outer, inner) = (
+        m.outer_dead_centre().radians(),
+        m.inner_dead_centre().radians(),
+    );
+    let inner = if inner < outer { inner + TAU } else { inner };
+    let mut own = vec![outer, inner];
+    if let GasForce::Indicator(d) = engine.gas() {
+        let x_outer = m.pose(m.outer_dead_centre()).position();
+        for &f in &d.fractions()[1..d.fractions().len() - 1] {
+            let target = x_outer - f * m.stroke();
+            let gap =
+                |t: f64| Angle::from_radians(t).map_or(0.0, |a| m.pose(a).position() - target);
+            own.push(bisect(&gap, outer, inner));
+            own.push(bisect(&gap, inner, outer + TAU));
+        }
+    }
+    let mut all: Vec<f64> = phases
+        .iter()
+        .flat_map(|d| own.iter().map(move |t| (t - d).rem_euclid(TAU)))
+        .filter(|t| *t > 0.0 && *t < TAU)
+        .collect();
+    all.extend([0.0, TAU]);
+    all.sort_by(f64::total_cmp);
+    all.dedup();
+    all
+}
+
+/// The pieces of [a, b] between the breakpoints.
+fn pieces(breaks: &[f64], a: f64, b: f64) -> impl Iterator<Item = (f64, f64)> + '_ {
+    let inner = breaks.iter().copied().filter(move |&t| t > a && t < b);
+    let points: Vec<f64> = std::iter::once(a).chain(inner).chain([b]).collect();
+    (1..points.len())
+        .map(move |i| (points[i - 1], points[i]))
+        .filter(|(x, y)| y > x)
+}
+
+/// The angles in (0, 2π) where `f` changes sign, bracketed by samples
+/// (at least [`BRACKETS`] per turn, and at every breakpoint) and found by
+/// bisection.
+fn crossings(f: &dyn Fn(f64) -> f64, breaks: &[f64]) -> Vec<f64> {
+    let mut samples: Vec<f64> = (0..=BRACKETS)
+        .map(|i| TAU * i as f64 / BRACKETS as f64)
+        .collect();
+    samples.extend_from_slice(breaks);
+    samples.sort_by(f64::total_cmp);
+    samples.dedup();
+    let values: Vec<f64> = samples.iter().map(|&t| f(t)).collect();
+    let mut roots = Vec::new();
+    for i in 1..samples.len() {
+        let (a, b) = (values[i - 1], values[i]);
+        if a == 0.0 && i > 1 && samples[i - 1] < TAU {
+            // A sample exactly on the line: a crossing where the sign
+            // changes across it.
+            if (values[i - 2] < 0.0) != (b < 0.0) && values[i - 2] != 0.0 && b != 0.0 {
+                roots.push(samples[i - 1]);
+            }
+        } else if a != 0.0 && b != 0.0 && (a < 0.0) != (b < 0.0) {
+            roots.push(bisect(f, samples[i - 1], samples[i]));
+        }
+    }
+    roots
+}
+
+impl Engine {
+    /// T(θ) of cylinders at `phases_deg` (degrees ahead of the first),
+    /// the sum of their torques ([`Engine::torque`]).
+    ///
+    /// Errors: a phase that is not finite.
+    pub fn torque_of_cylinders(&self, phases_deg: &[f64], angle: Angle) -> Result<f64> {
+        let phases = check_phases(phases_deg)?;
+        let mut sum = 0.0;
+        for d in phases {
+            let a = Angle::from_degrees(angle.degrees() + d)?;
+            sum += self.torque(&self.mechanism().pose(a));
+        }
+        Ok(sum)
+    }
+}
