@@ -3,12 +3,12 @@
 use super::args::{AngleSpec, LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
-use serde_json::{Value, json};
+use serde_json::Value;
 use slider_crank::analytic::statics::Friction;
 use slider_crank::construct::Reading;
 use slider_crank::geom::Point;
 use slider_crank::render::plain;
-use slider_crank::{Angle, ChainCentres, Error, Result, SliderCrank, Units};
+use slider_crank::{Angle, Error, Result, SliderCrank, Units};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -39,12 +39,9 @@ pub struct AnalyzeArgs {
     pub chain: super::chain::ChainArgs,
 }
 
-/// Everything computed at one angle: the reading and the six virtual
-/// centres.
-struct Report {
-    reading: Reading,
-    centres: ChainCentres,
-}
+/// Everything computed at one angle ([`Reading::to_json`] adds the six
+/// virtual centres).
+type Report = Reading;
 
 /// +0.0 for −0.0, so that no "-0" is printed.
 fn num(x: f64) -> f64 {
@@ -68,14 +65,6 @@ fn column(x: f64) -> String {
     format!("{:>20}", format!(" {}", fixed(x, 10, 0)))
 }
 
-fn point_json(p: Point) -> Value {
-    json!([num(p.x), num(p.y)])
-}
-
-fn opt_point_json(p: Option<Point>) -> Value {
-    p.map(point_json).unwrap_or(Value::Null)
-}
-
 fn analyse(
     m: &SliderCrank,
     degrees: f64,
@@ -84,57 +73,11 @@ fn analyse(
     mu: f64,
 ) -> Result<Report> {
     let pose = m.pose(Angle::from_degrees(degrees)?);
-    Ok(Report {
-        reading: Reading::new(&pose, omega, torque, mu)?,
-        centres: ChainCentres::of_slider_crank(&pose),
-    })
+    Reading::new(&pose, omega, torque, mu)
 }
 
 fn to_json(m: &SliderCrank, report: &Report, units: &Units) -> Value {
-    let r = &report.reading;
-    let mut v = json!({
-        "mechanism": {"crank": m.crank(), "rod": m.rod(), "offset": num(m.offset())},
-        "units": units,
-        "angle_deg": num(r.pose.angle().degrees()),
-        "omega": num(r.omega),
-        "points": {
-            "C": point_json(r.pose.c()), "B": point_json(r.pose.b()), "A": point_json(r.pose.a()),
-            "D": super::chain::centre_json(&r.d), "E": point_json(r.e), "F": point_json(r.f),
-            "G": point_json(r.g), "H": opt_point_json(r.h),
-        },
-        "analytic": {
-            "position": num(r.exact.position),
-            "velocity": num(r.exact.velocity),
-            "acceleration": num(r.exact.acceleration),
-            "rod_angle_deg": num(r.exact.rod_angle.to_degrees()),
-            "rod_angular_velocity": num(r.exact.rod_angular_velocity),
-            "rod_angular_acceleration": num(r.exact.rod_angular_acceleration),
-        },
-        "graphical": {
-            "velocity": num(r.graphical.velocity),
-            "acceleration": num(r.graphical.acceleration),
-            "rod_angular_velocity": num(r.graphical.rod_angular_velocity),
-            "rod_angular_acceleration": num(r.graphical.rod_angular_acceleration),
-        },
-        "virtual_centres": super::chain::centres_json(&report.centres),
-    });
-    if let Some(s) = &r.statics {
-        let (with_friction, locking) = match s.with_friction {
-            Some(Friction::Force(f)) => (json!(num(f)), false),
-            Some(Friction::SelfLocking(_)) => (Value::Null, true),
-            None => (Value::Null, false),
-        };
-        v["statics"] = json!({
-            "OM": num(s.om),
-            "slider_force": s.force.map(num),
-            "side_thrust": s.side_thrust.map(num),
-            "slider_force_with_friction": with_friction,
-            "self_locking": locking,
-            "friction": s.mu,
-            "transmission_angle_deg": num(s.transmission_deg),
-        });
-    }
-    v
+    report.to_json(m, units)
 }
 
 fn fmt_point(p: Option<Point>) -> String {
@@ -145,7 +88,7 @@ fn fmt_point(p: Option<Point>) -> String {
 }
 
 fn to_text(report: &Report, units: &Units) -> String {
-    let r = &report.reading;
+    let r = report;
     let length = units.length();
     let mut out = format!("θ = {}°\n", r.pose.angle().degrees());
     out.push_str(&format!(
