@@ -23,6 +23,7 @@ written, ``TypeError`` for a value of the wrong type).
 from __future__ import annotations
 
 import json
+import numbers
 import os
 from dataclasses import dataclass, field
 from typing import Any, Dict, Optional, Tuple, Union
@@ -45,6 +46,7 @@ __all__ = [
     "Figure",
     "figure",
     "table",
+    "gallery",
     "FIGURES",
 ]
 
@@ -220,6 +222,18 @@ class Sweep:
     graphical: Optional[GraphicalSweep]
 
 
+def _real(x: float) -> float:
+    """``x`` as a float; a TypeError for what is not a real number (a
+    string, None)."""
+    if isinstance(x, numbers.Real):
+        return float(x)
+    raise TypeError(f"expected a real number, got {type(x).__name__} {x!r}")
+
+
+def _option(x: Optional[float]) -> Optional[float]:
+    return None if x is None else _real(x)
+
+
 def _angles(thetas: npt.ArrayLike) -> npt.NDArray[np.float64]:
     """The angles as a C-contiguous float64 array (a copy only where
     needed); a TypeError for values that are not real numbers."""
@@ -228,7 +242,7 @@ def _angles(thetas: npt.ArrayLike) -> npt.NDArray[np.float64]:
         raise TypeError(
             f"thetas must be real numbers of degrees, got an array of dtype {a.dtype}"
         )
-    return np.ascontiguousarray(a, dtype=np.float64)
+    return np.asarray(a, dtype=np.float64, order="C")
 
 
 class SliderCrank:
@@ -258,7 +272,7 @@ class SliderCrank:
         unit: str = "ft",
         force_unit: str = "lbf",
     ) -> None:
-        crank, rod, offset = float(crank), float(rod), float(offset)
+        crank, rod, offset = _real(crank), _real(rod), _real(offset)
         _core.check_engine(crank, rod, offset, unit, force_unit)
         self._crank, self._rod, self._offset = crank, rod, offset
         self._unit, self._force_unit = unit, force_unit
@@ -321,10 +335,10 @@ class SliderCrank:
             self._offset,
             self._unit,
             self._force_unit,
-            float(theta_deg),
+            _real(theta_deg),
             w,
-            None if torque is None else float(torque),
-            0.0 if friction is None else float(friction),
+            _option(torque),
+            0.0 if friction is None else _real(friction),
         )
         return Analysis._from_json(text)
 
@@ -382,12 +396,12 @@ class SliderCrank:
             self._offset,
             self._unit,
             self._force_unit,
-            float(theta_deg),
+            _real(theta_deg),
             w,
             which,
             paper,
-            None if torque is None else float(torque),
-            0.0 if friction is None else float(friction),
+            _option(torque),
+            0.0 if friction is None else _real(friction),
         )
 
     def handout(
@@ -556,12 +570,12 @@ def figure(
         layers = ",".join(layers)
     svg = _core.figure(
         name,
-        crank=None if crank is None else float(crank),
-        rod=None if rod is None else float(rod),
-        offset=None if offset is None else float(offset),
-        angle=None if angle is None else float(angle),
-        rpm=None if rpm is None else float(rpm),
-        omega=None if omega is None else float(omega),
+        crank=_option(crank),
+        rod=_option(rod),
+        offset=_option(offset),
+        angle=_option(angle),
+        rpm=_option(rpm),
+        omega=_option(omega),
         layers=layers,
         style=style,
         font=font,
@@ -609,16 +623,33 @@ def table(
     return _core.table(
         name,
         format,
-        n=None if n is None else [float(x) for x in n],
+        n=None if n is None else [_real(x) for x in n],
         angles=None if angles is None else _angles(angles).reshape(-1).tolist(),
-        crank=None if crank is None else float(crank),
-        rod=None if rod is None else float(rod),
-        offset=float(offset),
-        rpm=None if rpm is None else float(rpm),
-        omega=None if omega is None else float(omega),
-        torque=None if torque is None else float(torque),
-        friction=None if friction is None else float(friction),
+        crank=_option(crank),
+        rod=_option(rod),
+        offset=_real(offset),
+        rpm=_option(rpm),
+        omega=_option(omega),
+        torque=_option(torque),
+        friction=_option(friction),
         decimals=decimals,
         unit=unit,
         force_unit=force_unit,
     )
+
+
+def gallery(
+    out: Union[str, "os.PathLike[str]"] = "gallery",
+    only: Union[None, str, "list[str]", Tuple[str, ...]] = None,
+) -> "list[str]":
+    """Writes the gallery into the directory ``out`` (made if missing), as
+    ``slider-crank gallery --out DIR`` does: every named figure as SVG,
+    PNG and PDF, the textbook's tables and an ``index.html`` captioning
+    each figure with the section it reproduces; ``only`` limits it to
+    some figures (a list or a comma-separated string). Each file is
+    written whole or not at all. Returns the names of the files."""
+    path = os.fspath(out)
+    os.makedirs(path, exist_ok=True)
+    if isinstance(only, str):
+        only = only.split(",")
+    return _core.gallery(path, None if only is None else list(only))

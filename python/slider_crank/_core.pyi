@@ -18,6 +18,7 @@ __all__ = [
     "figure_names",
     "handout",
     "table",
+    "gallery",
     "VERSION",
 ]
 
@@ -99,3 +100,4 @@ def table(
     unit: Optional[str] = None,
     force_unit: Optional[str] = None,
 ) -> str: ...
+def gallery(out: str, only: Optional[list[str]] = None) -> list[str]: ...

@@ -13,14 +13,17 @@ use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::construct::Reading;
+use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
 use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
 use std::path::PathBuf;
 
-/// The Python exception for a library error.
+/// The Python exception for a library error, with the command line's message
+/// (the one line the command line prints, control characters escaped).
 fn py_err(e: Error) -> PyErr {
+    let e = e.one_line();
     match e {
         Error::Io { .. } => PyOSError::new_err(e.to_string()),
         e => PyValueError::new_err(e.to_string()),
@@ -129,6 +132,13 @@ fn sweep(
         .map_err(py_err)
 }
 
+/// Angles per thread below which a sweep stays on one thread.
+const MIN_CHUNK: usize = 16_384;
+
+/// Fills the rows of `out` (rows × n) for `thetas`, split by columns over
+/// the machine's cores for long sweeps. Each value depends on its angle
+/// alone, so the split changes no number; the error is that of the first
+/// bad angle.
 fn fill(
     m: &SliderCrank,
     omega: f64,
@@ -137,6 +147,44 @@ fn fill(
     graphical: bool,
 ) -> slider_crank::Result<()> {
     let n = thetas.len();
+    if n == 0 {
+        return Ok(());
+    }
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+    let chunk = n.div_ceil(threads.min(n.div_ceil(MIN_CHUNK)).max(1));
+    let mut pieces: Vec<Vec<&mut [f64]>> = (0..n.div_ceil(chunk)).map(|_| Vec::new()).collect();
+    for row in out.chunks_mut(n) {
+        for (piece, part) in pieces.iter_mut().zip(row.chunks_mut(chunk)) {
+            piece.push(part);
+        }
+    }
+    let mut jobs = thetas.chunks(chunk).zip(pieces);
+    let Some((first, mut rows)) = jobs.next() else {
+        return Ok(());
+    };
+    std::thread::scope(|scope| {
+        let others: Vec<_> = jobs
+            .map(|(t, mut r)| scope.spawn(move || fill_chunk(m, omega, t, &mut r, graphical)))
+            .collect();
+        let mut result = fill_chunk(m, omega, first, &mut rows, graphical);
+        for handle in others {
+            let r = handle
+                .join()
+                .unwrap_or_else(|e| std::panic::resume_unwind(e));
+            result = result.and(r);
+        }
+        result
+    })
+}
+
+/// Fills column `i` of each of `rows` for the angle `thetas[i]`.
+fn fill_chunk(
+    m: &SliderCrank,
+    omega: f64,
+    thetas: &[f64],
+    rows: &mut [&mut [f64]],
+    graphical: bool,
+) -> slider_crank::Result<()> {
     for (i, &degrees) in thetas.iter().enumerate() {
         let pose = m.pose(Angle::from_degrees(degrees)?);
         let k = if graphical {
@@ -149,7 +197,7 @@ fn fill(
                 g.rod_angular_acceleration,
             ];
             for (row, v) in values.into_iter().enumerate() {
-                out[(ANALYTIC_ROWS + row) * n + i] = v + 0.0;
+                rows[ANALYTIC_ROWS + row][i] = v + 0.0;
             }
             reading.exact
         } else {
@@ -164,7 +212,7 @@ fn fill(
             k.rod_angular_acceleration,
         ];
         for (row, v) in values.into_iter().enumerate() {
-            out[row * n + i] = v + 0.0;
+            rows[row][i] = v + 0.0;
         }
     }
     Ok(())
@@ -450,6 +498,28 @@ fn table(
     Ok(text)
 }
 
+/// Writes the gallery `slider-crank gallery --out DIR [--only LIST]`
+/// writes into the directory `out` (which exists): every named figure (or
+/// those of `only`) as SVG, PNG and PDF, the tables and `index.html`, each
+/// file whole or not at all. Returns the names of the files.
+#[pyfunction]
+#[pyo3(signature = (out, only=None))]
+fn gallery(py: Python<'_>, out: PathBuf, only: Option<Vec<String>>) -> PyResult<Vec<String>> {
+    let mut gallery = Gallery::new();
+    if let Some(list) = only {
+        let figures = list
+            .iter()
+            .map(|n| FigureName::from_name(n.trim()))
+            .collect::<slider_crank::Result<Vec<_>>>()
+            .map_err(py_err)?;
+        gallery = gallery.with_figures(figures);
+    }
+    gallery.can_build().map_err(py_err)?;
+    py.detach(|| gallery.build(|file| write_atomic(&out.join(&file.name), &file.bytes)))
+        .map_err(py_err)?;
+    Ok(gallery.file_names())
+}
+
 /// The names of the figures, in the order `--help` lists them.
 #[pyfunction]
 fn figure_names() -> Vec<String> {
@@ -469,6 +539,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(figure_names, m)?)?;
     m.add_function(wrap_pyfunction!(handout, m)?)?;
     m.add_function(wrap_pyfunction!(table, m)?)?;
+    m.add_function(wrap_pyfunction!(gallery, m)?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

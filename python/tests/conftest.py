@@ -55,12 +55,14 @@ class Cli:
         return json.loads(self.stdout(args))
 
     def error(self, args: Sequence[str]) -> str:
-        """The message of a refused command, without its `slider-crank: `."""
+        """The message of a refused command, without its `slider-crank: `
+        and `error: ` (a flag clap refused ends in ` (see --help)`)."""
         done = self.run(args)
         assert done.returncode == 2, (args, done.returncode, done.stdout[:200])
         lines: List[str] = done.stderr.decode().splitlines()
         assert len(lines) == 1 and lines[0].startswith("slider-crank: "), lines
-        return lines[0][len("slider-crank: ") :]
+        message = lines[0][len("slider-crank: ") :]
+        return message[len("error: ") :] if message.startswith("error: ") else message
 
 
 @pytest.fixture(scope="session")

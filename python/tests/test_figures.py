@@ -62,3 +62,14 @@ def test_every_named_figure_draws() -> None:
     for name in sc.FIGURES:
         svg = sc.figure(name).svg
         assert svg.startswith("<svg") or svg.startswith("<?xml"), name
+
+
+def test_gallery_is_the_command_lines(cli: Cli, tmp_path: Path) -> None:
+    names = sc.gallery(tmp_path / "py", only=["fig-66-kisch", "ng-fig-1-torque"])
+    cli.stdout(["gallery", "--only=fig-66-kisch,ng-fig-1-torque", f"--out={tmp_path / 'cli'}"])
+    written = sorted(p.name for p in (tmp_path / "cli").iterdir())
+    assert sorted(names) == written and "index.html" in names
+    for name in names:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    with pytest.raises(ValueError, match="fig-66-kisch"):
+        sc.gallery(tmp_path / "x", only="fig-99")

@@ -82,8 +82,8 @@ def test_any_array_like_any_shape() -> None:
                   tuple(range(0, 360, 30)),
                   np.arange(0, 360, 30, dtype=np.int32),
                   np.arange(0, 360, 30, dtype=np.float32),
-                  np.arange(0, 720, 30.0)[::2] * 1.0,
-                  np.arange(0, 720, 30.0)[::2],  # not contiguous
+                  np.arange(0, 360, 15.0)[::2],  # not contiguous
+                  np.arange(330, -1, -30.0)[::-1],  # a negative stride
                   np.asfortranarray(np.arange(12.0).reshape(3, 4) * 30)):
         got = engine.sweep(given, omega=2.0)
         assert np.array_equal(got.velocity.reshape(-1), want.velocity)
@@ -113,3 +113,18 @@ def test_threads_sweeping_at_once_get_the_same_results() -> None:
         assert s.graphical is not None and a.graphical is not None
         assert np.array_equal(s.acceleration, a.acceleration)
         assert np.array_equal(s.graphical.acceleration, a.graphical.acceleration)
+
+
+def test_a_long_sweep_reports_its_first_bad_angle() -> None:
+    engine = sc.SliderCrank(0.5, 3.0)
+    deg = np.linspace(0, 360, 100_000)
+    deg[20_000], deg[70_000] = np.nan, np.inf
+    with pytest.raises(ValueError) as caught:
+        engine.sweep(deg)
+    with pytest.raises(ValueError) as first:
+        engine.at(np.nan)
+    assert str(caught.value) == str(first.value)
+    deg[20_000] = 1.0
+    with pytest.raises(ValueError) as second:
+        engine.sweep(deg, graphical=True)
+    assert "inf" in str(second.value)
