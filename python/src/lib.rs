@@ -11,6 +11,7 @@
 use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
+use slider_crank::animate::{Animation, AnimationFormat};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::construct::Reading;
 use slider_crank::gallery::Gallery;
@@ -18,7 +19,7 @@ use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
 use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The Python exception for a library error, with the command line's message
 /// (the one line the command line prints, control characters escaped).
@@ -223,7 +224,7 @@ fn fill_chunk(
 #[pyfunction]
 #[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
-    notation=None, mirror=None, width=None, height=None, title=None))]
+    notation=None, mirror=None, width=None, height=None, title=None, animate=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -246,6 +247,7 @@ fn figure(
     width: Option<&str>,
     height: Option<&str>,
     title: Option<&str>,
+    animate: Option<(usize, f64, String)>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
     let mut options = FigureOptions::default();
@@ -283,6 +285,9 @@ fn figure(
     options.width = width.map(parse).transpose()?;
     options.height = height.map(parse).transpose()?;
     options.title = title.map(parse).transpose()?;
+    if let Some((frames, period, path)) = animate {
+        return animation(py, name, &options, frames, period, &path);
+    }
     py.detach(|| {
         name.figure(&options)
             .map(|f| to_svg(&f))
@@ -294,6 +299,41 @@ fn figure(
             })
     })
     .map_err(py_err)
+}
+
+/// One revolution of the mechanism figure `name` drawn with `options`, as
+/// `slider-crank animate --out PATH` writes it: a self-playing SVG or an
+/// HTML page with a slider, as `path`'s extension (.svg, .html) says.
+fn animation(
+    py: Python<'_>,
+    name: FigureName,
+    options: &FigureOptions,
+    frames: usize,
+    period: f64,
+    path: &str,
+) -> PyResult<String> {
+    let format = AnimationFormat::from_path(Path::new(path)).map_err(py_err)?;
+    if let Some(flag) = [
+        (options.data.is_some(), "--data"),
+        (options.fit.is_some(), "--fit"),
+    ]
+    .iter()
+    .find_map(|&(given, flag)| given.then_some(flag))
+    {
+        return Err(PyValueError::new_err(format!(
+            "animate takes no {flag}: the mechanism figures draw no measured data"
+        )));
+    }
+    let scene = name.scene_with(options).map_err(py_err)?.ok_or_else(|| {
+        let names: Vec<&str> = FigureName::SCENES.iter().map(FigureName::name).collect();
+        PyValueError::new_err(format!(
+            "{} is a diagram: animate draws the mechanism figures, {}",
+            name.name(),
+            names.join(", ")
+        ))
+    })?;
+    py.detach(|| Animation::new(&scene, frames, period).map(|a| a.encode(format)))
+        .map_err(py_err)
 }
 
 /// The bytes of the figure whose SVG is `svg` in the format `format`

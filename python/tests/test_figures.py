@@ -73,3 +73,32 @@ def test_gallery_is_the_command_lines(cli: Cli, tmp_path: Path) -> None:
         assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
     with pytest.raises(ValueError, match="fig-66-kisch"):
         sc.gallery(tmp_path / "x", only="fig-99")
+
+
+@pytest.mark.parametrize("ext", ["svg", "html"])
+def test_animation_is_the_command_lines(cli: Cli, tmp_path: Path, ext: str) -> None:
+    theirs = tmp_path / f"cli.{ext}"
+    cli.stdout(["animate", "fig-63-velocity", "--frames=4", "--period=2", "--angle=10",
+                "--style=handout", f"--out={theirs}"])
+    ours = tmp_path / f"py.{ext}"
+    text = sc.animate("fig-63-velocity", ours, frames=4, period=2, angle=10, style="handout")
+    assert ours.read_bytes() == theirs.read_bytes()
+    assert text == theirs.read_text(encoding="utf-8")
+    assert sc.animate("fig-63-velocity", frames=4, period=2, angle=10, style="handout",
+                      html=ext == "html") == text
+
+
+def test_animation_errors(cli: Cli, tmp_path: Path) -> None:
+    for args, call in (
+        (["fig-61-centrodes", f"--out={tmp_path / 'a.svg'}"],
+         lambda: sc.animate("fig-61-centrodes", tmp_path / "a.svg")),
+        (["fig-66-kisch", f"--out={tmp_path / 'a.gif'}"],
+         lambda: sc.animate("fig-66-kisch", tmp_path / "a.gif")),
+        (["fig-66-kisch", "--frames=1", f"--out={tmp_path / 'a.svg'}"],
+         lambda: sc.animate("fig-66-kisch", tmp_path / "a.svg", frames=1)),
+    ):
+        message = cli.error(["animate", *args])
+        with pytest.raises(ValueError) as caught:
+            call()
+        assert str(caught.value) == message
+    assert list(tmp_path.iterdir()) == []
