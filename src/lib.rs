@@ -175,7 +175,7 @@ pub mod scene;
 pub mod table;
 mod units;
 
-pub use analytic::kinematics::{Kinematics, MAX_OMEGA, rpm_to_omega};
+pub use analytic::kinematics::{Kinematics, MAX_OMEGA, omega_from_rpm, rpm_to_omega};
 pub use angle::Angle;
 pub use catalogue::{FigureName, SceneFile};
 pub use chain::{

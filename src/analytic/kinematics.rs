@@ -43,6 +43,25 @@ pub fn rpm_to_omega(rpm: f64) -> f64 {
     rpm * (2.0 * std::f64::consts::PI / 60.0)
 }
 
+/// Largest |rpm| [`omega_from_rpm`] takes: the speed whose ω is
+/// [`MAX_OMEGA`], rounded down to a round number.
+pub const MAX_RPM: f64 = 9e100;
+
+/// A crank speed given in revolutions per minute as ω in rad/s, checked as
+/// `--rpm` is: finite, |rpm| ≤ [`MAX_RPM`], and the ω it gives within
+/// [`check_omega`]'s range (a tiny non-zero speed is refused).
+pub fn omega_from_rpm(rpm: f64) -> Result<f64> {
+    let rpm = finite("rpm", rpm)?;
+    if rpm.abs() > MAX_RPM {
+        return Err(Error::OutOfRange {
+            name: "rpm",
+            value: rpm,
+            reason: format!("a crank speed is at most {MAX_RPM:e} rpm"),
+        });
+    }
+    check_omega(rpm_to_omega(rpm))
+}
+
 /// Slider and rod motion at one pose for a constant crank speed ω (rad/s,
 /// positive counter-clockwise).
 ///

@@ -3,13 +3,13 @@
 use super::args::{AngleSpec, GuardArgs, LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
-use serde_json::{Value, json};
+use serde_json::Value;
 use slider_crank::analytic::statics::Friction;
 use slider_crank::construct::Reading;
 use slider_crank::dynamics::{Engine, EnginePose};
 use slider_crank::geom::Point;
 use slider_crank::render::plain;
-use slider_crank::{Angle, ChainCentres, Error, Result, SliderCrank, Units};
+use slider_crank::{Angle, Error, Result, SliderCrank, Units};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -53,11 +53,10 @@ const VALUES_PER_ANGLE: u64 = 43;
 /// What `--torque` adds to [`VALUES_PER_ANGLE`]: the seven statics.
 const STATICS_VALUES: u64 = 7;
 
-/// Everything computed at one angle: the reading and the six virtual
-/// centres.
+/// Everything computed at one angle: the reading ([`Reading::to_json`]
+/// adds the six virtual centres) and, with masses, the engine's forces.
 struct Report<'a> {
     reading: Reading,
-    centres: ChainCentres,
     dynamics: Option<(&'a Engine, EnginePose)>,
 }
 
@@ -83,14 +82,6 @@ fn column(x: f64) -> String {
     format!("{:>20}", format!(" {}", fixed(x, 10, 0)))
 }
 
-fn point_json(p: Point) -> Value {
-    json!([num(p.x), num(p.y)])
-}
-
-fn opt_point_json(p: Option<Point>) -> Value {
-    p.map(point_json).unwrap_or(Value::Null)
-}
-
 fn analyse<'a>(
     m: &SliderCrank,
     degrees: f64,
@@ -103,57 +94,14 @@ fn analyse<'a>(
     let pose = m.pose(angle);
     Ok(Report {
         reading: Reading::new(&pose, omega, torque, mu)?,
-        centres: ChainCentres::of_slider_crank(&pose),
         dynamics: engine.map(|e| Ok((e, e.at(angle)?))).transpose()?,
     })
 }
 
 fn to_json(m: &SliderCrank, report: &Report, units: &Units) -> Value {
-    let r = &report.reading;
-    let mut v = json!({
-        "mechanism": {"crank": m.crank(), "rod": m.rod(), "offset": num(m.offset())},
-        "units": units,
-        "angle_deg": num(r.pose.angle().degrees()),
-        "omega": num(r.omega),
-        "points": {
-            "C": point_json(r.pose.c()), "B": point_json(r.pose.b()), "A": point_json(r.pose.a()),
-            "D": super::chain::centre_json(&r.d), "E": point_json(r.e), "F": point_json(r.f),
-            "G": point_json(r.g), "H": opt_point_json(r.h),
-        },
-        "analytic": {
-            "position": num(r.exact.position),
-            "velocity": num(r.exact.velocity),
-            "acceleration": num(r.exact.acceleration),
-            "rod_angle_deg": num(r.exact.rod_angle.to_degrees()),
-            "rod_angular_velocity": num(r.exact.rod_angular_velocity),
-            "rod_angular_acceleration": num(r.exact.rod_angular_acceleration),
-        },
-        "graphical": {
-            "velocity": num(r.graphical.velocity),
-            "acceleration": num(r.graphical.acceleration),
-            "rod_angular_velocity": num(r.graphical.rod_angular_velocity),
-            "rod_angular_acceleration": num(r.graphical.rod_angular_acceleration),
-        },
-        "virtual_centres": super::chain::centres_json(&report.centres),
-    });
-    if let Some(s) = &r.statics {
-        let (with_friction, locking) = match s.with_friction {
-            Some(Friction::Force(f)) => (json!(num(f)), false),
-            Some(Friction::SelfLocking(_)) => (Value::Null, true),
-            None => (Value::Null, false),
-        };
-        v["statics"] = json!({
-            "OM": num(s.om),
-            "slider_force": s.force.map(num),
-            "side_thrust": s.side_thrust.map(num),
-            "slider_force_with_friction": with_friction,
-            "self_locking": locking,
-            "friction": s.mu,
-            "transmission_angle_deg": num(s.transmission_deg),
-        });
-    }
+    let mut v = report.reading.to_json(m, units);
     if let Some((engine, at)) = &report.dynamics {
-        v["dynamics"] = super::dynamics::to_json(engine, at, r.pose.angle(), units);
+        v["dynamics"] = super::dynamics::to_json(engine, at, report.reading.pose.angle(), units);
     }
     v
 }

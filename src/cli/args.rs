@@ -1,7 +1,7 @@
 //! Flags shared by the subcommands and the parsing of angle specifications.
 
 use clap::Args;
-use slider_crank::analytic::kinematics::check_omega;
+use slider_crank::analytic::kinematics::{check_omega, omega_from_rpm};
 use slider_crank::{Error, Result, SliderCrank, Unit, Units, rpm_to_omega};
 
 /// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
@@ -93,17 +93,7 @@ impl SpeedArgs {
     pub fn omega(&self) -> Result<f64> {
         match (self.rpm, self.omega) {
             (_, Some(w)) => check_omega(w),
-            (Some(n), None) => {
-                let n = check_finite("rpm", n)?;
-                if n.abs() > MAX_RPM {
-                    return Err(Error::OutOfRange {
-                        name: "rpm",
-                        value: n,
-                        reason: format!("a crank speed is at most {MAX_RPM:e} rpm"),
-                    });
-                }
-                check_omega(rpm_to_omega(n))
-            }
+            (Some(n), None) => omega_from_rpm(n),
             (None, None) => Ok(rpm_to_omega(250.0)),
         }
     }
@@ -129,18 +119,6 @@ pub struct LoadArgs {
         requires = "torque"
     )]
     pub friction: f64,
-}
-
-/// Largest |rpm|: the one whose ω is [`slider_crank::MAX_OMEGA`], rounded
-/// down to a round number.
-const MAX_RPM: f64 = 9e100;
-
-fn check_finite(name: &'static str, value: f64) -> Result<f64> {
-    if value.is_finite() {
-        Ok(value)
-    } else {
-        Err(Error::NotFinite { name, value })
-    }
 }
 
 /// Most angles one range may describe: 2⁵³, past which the angles of a

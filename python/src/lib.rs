@@ -1,0 +1,585 @@
+//! `slider_crank._core`: the library's entry points for the Python package.
+//!
+//! The Python half (`slider_crank/__init__.py`) holds the classes users see
+//! and their documentation; these functions take plain values, validate
+//! them with the library (the command line's checks and messages), compute
+//! with the library and hand back text, bytes or filled numpy arrays. A
+//! library error becomes `ValueError` (`OSError` for a file that cannot be
+//! read or written), its message the line the command line prints after
+//! `slider-crank: `.
+
+use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::prelude::*;
+use slider_crank::animate::{Animation, AnimationFormat};
+use slider_crank::catalogue::FigureOptions;
+use slider_crank::construct::Reading;
+use slider_crank::gallery::Gallery;
+use slider_crank::handout::Handout;
+use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::render::{FileFormat, to_svg, write_atomic};
+use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
+use std::path::{Path, PathBuf};
+
+/// The Python exception for a library error, with the command line's message
+/// (the one line the command line prints, control characters escaped).
+fn py_err(e: Error) -> PyErr {
+    let e = e.one_line();
+    match e {
+        Error::Io { .. } => PyOSError::new_err(e.to_string()),
+        e => PyValueError::new_err(e.to_string()),
+    }
+}
+
+fn parse<T: std::str::FromStr<Err = Error>>(text: &str) -> PyResult<T> {
+    text.parse().map_err(py_err)
+}
+
+/// The engine, validated as `--crank --rod --offset` are.
+fn engine(crank: f64, rod: f64, offset: f64) -> PyResult<SliderCrank> {
+    SliderCrank::new(crank, rod, offset).map_err(py_err)
+}
+
+/// The units `--unit` and `--force-unit` name, validated.
+fn units(unit: &str, force_unit: &str) -> PyResult<Units> {
+    Ok(Units::FOOT_POUND
+        .with_length(parse::<Unit>(unit)?)
+        .with_force(parse::<Unit>(force_unit)?))
+}
+
+/// Checks an engine and its units; raises the command line's message.
+#[pyfunction]
+fn check_engine(crank: f64, rod: f64, offset: f64, unit: &str, force_unit: &str) -> PyResult<()> {
+    engine(crank, rod, offset)?;
+    units(unit, force_unit)?;
+    Ok(())
+}
+
+/// ω in rad/s from `rpm` or `omega` (at most one given), checked as
+/// `--rpm` and `--omega` are; 250 rpm when neither is.
+#[pyfunction]
+#[pyo3(signature = (rpm=None, omega=None))]
+fn crank_speed(rpm: Option<f64>, omega: Option<f64>) -> PyResult<f64> {
+    let omega = match (rpm, omega) {
+        (Some(_), Some(_)) => {
+            return Err(PyValueError::new_err(
+                "give the crank speed as rpm or as omega, not both",
+            ));
+        }
+        (_, Some(w)) => slider_crank::analytic::kinematics::check_omega(w),
+        (Some(n), None) => slider_crank::omega_from_rpm(n),
+        (None, None) => Ok(slider_crank::rpm_to_omega(250.0)),
+    };
+    omega.map_err(py_err)
+}
+
+/// The object `analyze --json` prints at one angle, as JSON text.
+#[pyfunction]
+#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, torque=None, friction=0.0))]
+#[allow(clippy::too_many_arguments)]
+fn analyze(
+    crank: f64,
+    rod: f64,
+    offset: f64,
+    unit: &str,
+    force_unit: &str,
+    degrees: f64,
+    omega: f64,
+    torque: Option<f64>,
+    friction: f64,
+) -> PyResult<String> {
+    let m = engine(crank, rod, offset)?;
+    let units = units(unit, force_unit)?;
+    let pose = m.pose(Angle::from_degrees(degrees).map_err(py_err)?);
+    let reading = Reading::new(&pose, omega, torque, friction).map_err(py_err)?;
+    Ok(reading.to_json(&m, &units).to_string())
+}
+
+/// The rows `sweep` fills: the six analytic values, then the four
+/// graphical ones.
+const ANALYTIC_ROWS: usize = 6;
+const GRAPHICAL_ROWS: usize = 4;
+
+/// Fills `out` (rows × n, C order) for the angles `thetas` (degrees):
+/// position, velocity, acceleration, rod angle (degrees), rod angular
+/// velocity and acceleration, and with 10 rows also the velocity,
+/// acceleration and rod rates read off the constructions. The GIL is
+/// released while it computes. Errors with the first bad angle's message
+/// (nothing is promised of `out` then).
+#[pyfunction]
+fn sweep(
+    py: Python<'_>,
+    crank: f64,
+    rod: f64,
+    offset: f64,
+    omega: f64,
+    thetas: PyReadonlyArray1<'_, f64>,
+    mut out: PyReadwriteArray2<'_, f64>,
+) -> PyResult<()> {
+    let m = engine(crank, rod, offset)?;
+    let shape = out.shape().to_vec();
+    let n = thetas.len();
+    let graphical = match shape[0] {
+        ANALYTIC_ROWS => false,
+        r if r == ANALYTIC_ROWS + GRAPHICAL_ROWS => true,
+        r => return Err(PyValueError::new_err(format!("out has {r} rows"))),
+    };
+    if shape[1] != n {
+        return Err(PyValueError::new_err("out and thetas differ in length"));
+    }
+    let thetas = thetas.as_slice()?;
+    let out = out.as_slice_mut()?;
+    py.detach(|| fill(&m, omega, thetas, out, graphical))
+        .map_err(py_err)
+}
+
+/// Angles per thread below which a sweep stays on one thread.
+const MIN_CHUNK: usize = 16_384;
+
+/// Fills the rows of `out` (rows × n) for `thetas`, split by columns over
+/// the machine's cores for long sweeps. Each value depends on its angle
+/// alone, so the split changes no number; the error is that of the first
+/// bad angle.
+fn fill(
+    m: &SliderCrank,
+    omega: f64,
+    thetas: &[f64],
+    out: &mut [f64],
+    graphical: bool,
+) -> slider_crank::Result<()> {
+    let n = thetas.len();
+    if n == 0 {
+        return Ok(());
+    }
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+    let chunk = n.div_ceil(threads.min(n.div_ceil(MIN_CHUNK)).max(1));
+    let mut pieces: Vec<Vec<&mut [f64]>> = (0..n.div_ceil(chunk)).map(|_| Vec::new()).collect();
+    for row in out.chunks_mut(n) {
+        for (piece, part) in pieces.iter_mut().zip(row.chunks_mut(chunk)) {
+            piece.push(part);
+        }
+    }
+    let mut jobs = thetas.chunks(chunk).zip(pieces);
+    let Some((first, mut rows)) = jobs.next() else {
+        return Ok(());
+    };
+    std::thread::scope(|scope| {
+        let others: Vec<_> = jobs
+            .map(|(t, mut r)| scope.spawn(move || fill_chunk(m, omega, t, &mut r, graphical)))
+            .collect();
+        let mut result = fill_chunk(m, omega, first, &mut rows, graphical);
+        for handle in others {
+            let r = handle
+                .join()
+                .unwrap_or_else(|e| std::panic::resume_unwind(e));
+            result = result.and(r);
+        }
+        result
+    })
+}
+
+/// Fills column `i` of each of `rows` for the angle `thetas[i]`.
+fn fill_chunk(
+    m: &SliderCrank,
+    omega: f64,
+    thetas: &[f64],
+    rows: &mut [&mut [f64]],
+    graphical: bool,
+) -> slider_crank::Result<()> {
+    for (i, &degrees) in thetas.iter().enumerate() {
+        let pose = m.pose(Angle::from_degrees(degrees)?);
+        let k = if graphical {
+            let reading = Reading::new(&pose, omega, None, 0.0)?;
+            let g = reading.graphical;
+            let values = [
+                g.velocity,
+                g.acceleration,
+                g.rod_angular_velocity,
+                g.rod_angular_acceleration,
+            ];
+            for (row, v) in values.into_iter().enumerate() {
+                rows[ANALYTIC_ROWS + row][i] = v + 0.0;
+            }
+            reading.exact
+        } else {
+            Kinematics::new(&pose, omega)?
+        };
+        let values = [
+            k.position,
+            k.velocity,
+            k.acceleration,
+            k.rod_angle.to_degrees(),
+            k.rod_angular_velocity,
+            k.rod_angular_acceleration,
+        ];
+        for (row, v) in values.into_iter().enumerate() {
+            rows[row][i] = v + 0.0;
+        }
+    }
+    Ok(())
+}
+
+/// The SVG of a named figure with the options the `figure` command's
+/// flags give (`None`: the flag not given).
+#[pyfunction]
+#[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
+    layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
+    notation=None, mirror=None, width=None, height=None, title=None, animate=None))]
+#[allow(clippy::too_many_arguments)]
+fn figure(
+    py: Python<'_>,
+    name: &str,
+    crank: Option<f64>,
+    rod: Option<f64>,
+    offset: Option<f64>,
+    angle: Option<f64>,
+    rpm: Option<f64>,
+    omega: Option<f64>,
+    layers: Option<&str>,
+    style: Option<&str>,
+    font: Option<&str>,
+    data: Option<PathBuf>,
+    fit: Option<&str>,
+    unit: Option<&str>,
+    force_unit: Option<&str>,
+    notation: Option<&str>,
+    mirror: Option<bool>,
+    width: Option<&str>,
+    height: Option<&str>,
+    title: Option<&str>,
+    animate: Option<(usize, f64, String)>,
+) -> PyResult<String> {
+    let name: FigureName = parse(name)?;
+    let mut options = FigureOptions::default();
+    if crank.is_some() || rod.is_some() || offset.is_some() {
+        let m = name.mechanism();
+        options.mechanism = Some(engine(
+            crank.unwrap_or(m.crank()),
+            rod.unwrap_or(m.rod()),
+            offset.unwrap_or(m.offset()),
+        )?);
+    }
+    if rpm.is_some() || omega.is_some() {
+        options.omega = Some(crank_speed(rpm, omega)?);
+    }
+    if let Some(list) = layers {
+        let layers = Layer::parse_list(list).map_err(py_err)?;
+        if layers.is_empty() {
+            return Err(PyValueError::new_err("--layers names no layer"));
+        }
+        options.layers = Some(layers);
+    }
+    options.angle = angle.map(Angle::from_degrees).transpose().map_err(py_err)?;
+    options.style = style.map(parse).transpose()?;
+    options.font = font.map(parse).transpose()?;
+    options.data = data
+        .as_ref()
+        .map(|p| read_text(p, MAX_DATA_BYTES, "data file"))
+        .transpose()
+        .map_err(py_err)?;
+    options.fit = fit.map(parse).transpose()?;
+    options.length_unit = unit.map(parse).transpose()?;
+    options.force_unit = force_unit.map(parse).transpose()?;
+    options.notation = notation.map(parse).transpose()?;
+    options.mirror = mirror;
+    options.width = width.map(parse).transpose()?;
+    options.height = height.map(parse).transpose()?;
+    options.title = title.map(parse).transpose()?;
+    if let Some((frames, period, path)) = animate {
+        return animation(py, name, &options, frames, period, &path);
+    }
+    py.detach(|| {
+        name.figure(&options)
+            .map(|f| to_svg(&f))
+            .map_err(|e| match (&data, e) {
+                (Some(path), Error::Parse(m)) if m.starts_with("data") => {
+                    Error::Parse(format!("{}: {m}", path.display()))
+                }
+                (_, e) => e,
+            })
+    })
+    .map_err(py_err)
+}
+
+/// One revolution of the mechanism figure `name` drawn with `options`, as
+/// `slider-crank animate --out PATH` writes it: a self-playing SVG or an
+/// HTML page with a slider, as `path`'s extension (.svg, .html) says.
+fn animation(
+    py: Python<'_>,
+    name: FigureName,
+    options: &FigureOptions,
+    frames: usize,
+    period: f64,
+    path: &str,
+) -> PyResult<String> {
+    let format = AnimationFormat::from_path(Path::new(path)).map_err(py_err)?;
+    if let Some(flag) = [
+        (options.data.is_some(), "--data"),
+        (options.fit.is_some(), "--fit"),
+    ]
+    .iter()
+    .find_map(|&(given, flag)| given.then_some(flag))
+    {
+        return Err(PyValueError::new_err(format!(
+            "animate takes no {flag}: the mechanism figures draw no measured data"
+        )));
+    }
+    let scene = name.scene_with(options).map_err(py_err)?.ok_or_else(|| {
+        let names: Vec<&str> = FigureName::SCENES.iter().map(FigureName::name).collect();
+        PyValueError::new_err(format!(
+            "{} is a diagram: animate draws the mechanism figures, {}",
+            name.name(),
+            names.join(", ")
+        ))
+    })?;
+    py.detach(|| Animation::new(&scene, frames, period).map(|a| a.encode(format)))
+        .map_err(py_err)
+}
+
+/// The bytes of the figure whose SVG is `svg` in the format `format`
+/// names (`svg`, `png` at 2 pixels per page unit, `pdf`).
+#[pyfunction]
+fn encode<'py>(
+    py: Python<'py>,
+    svg: &str,
+    format: &str,
+) -> PyResult<Bound<'py, pyo3::types::PyBytes>> {
+    let format = FileFormat::from_name(format).map_err(py_err)?;
+    let bytes = py.detach(|| format.encode(svg)).map_err(py_err)?;
+    Ok(pyo3::types::PyBytes::new(py, &bytes))
+}
+
+/// Writes the figure whose SVG is `svg` to `path` in the format its
+/// extension names, whole or not at all, as `--out` does.
+#[pyfunction]
+fn save(py: Python<'_>, svg: &str, path: PathBuf) -> PyResult<()> {
+    let format = FileFormat::from_path(&path).map_err(py_err)?;
+    py.detach(|| write_atomic(&path, &format.encode(svg)?))
+        .map_err(py_err)
+}
+
+/// The teaching page `slider-crank handout` writes (`which` = "page"),
+/// or its exercise sheet ("exercise") or answer key ("key"), as HTML.
+#[pyfunction]
+#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, which, paper="a4", torque=None, friction=0.0))]
+#[allow(clippy::too_many_arguments)]
+fn handout(
+    py: Python<'_>,
+    crank: f64,
+    rod: f64,
+    offset: f64,
+    unit: &str,
+    force_unit: &str,
+    degrees: f64,
+    omega: f64,
+    which: &str,
+    paper: &str,
+    torque: Option<f64>,
+    friction: f64,
+) -> PyResult<String> {
+    let mut h = Handout::new(
+        engine(crank, rod, offset)?,
+        Angle::from_degrees(degrees).map_err(py_err)?,
+    )
+    .with_omega(omega)
+    .map_err(py_err)?
+    .with_units(units(unit, force_unit)?)
+    .with_paper(parse(paper)?);
+    if let Some(t) = torque {
+        h = h.with_torque(t, friction).map_err(py_err)?;
+    }
+    py.detach(|| match which {
+        "exercise" => h.exercise(),
+        "key" => h.key(),
+        _ => h.page(),
+    })
+    .map_err(py_err)
+}
+
+/// Ng's torque as implied by Table 2's F column, N·mm (the `table forces`
+/// default).
+const NG_TABLE_2_TORQUE: f64 = 1.0 * 9.81 * 27.0;
+
+/// The ratios n of a table, refused as `--n` refuses them.
+fn ratios(given: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
+    let ratios = given.unwrap_or_else(|| default.to_vec());
+    if let Some(x) = ratios.iter().find(|x| x.is_nan()) {
+        return Err(PyValueError::new_err(format!(
+            "invalid n '{x}': expected a finite number"
+        )));
+    }
+    Ok(ratios)
+}
+
+/// A table as `slider-crank table NAME` prints it, with its flags as
+/// arguments (`None`: the table's default).
+#[pyfunction]
+#[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=0.0,
+    rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None))]
+#[allow(clippy::too_many_arguments)]
+fn table(
+    name: &str,
+    format: &str,
+    n: Option<Vec<f64>>,
+    angles: Option<Vec<f64>>,
+    crank: Option<f64>,
+    rod: Option<f64>,
+    offset: f64,
+    rpm: Option<f64>,
+    omega: Option<f64>,
+    torque: Option<f64>,
+    friction: Option<f64>,
+    decimals: Option<usize>,
+    unit: Option<&str>,
+    force_unit: Option<&str>,
+) -> PyResult<String> {
+    use slider_crank::table::{self as t, Format, Head, Table};
+    let format: Format = parse(format)?;
+    let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
+    if decimals > 17 {
+        return Err(py_err(Error::OutOfRange {
+            name: "decimals",
+            value: decimals as f64,
+            reason: "at most 17 decimals are meaningful in f64".into(),
+        }));
+    }
+    if let Some(a) = angles.iter().flatten().find(|a| !a.is_finite()) {
+        return Err(PyValueError::new_err(format!(
+            "invalid angle '{a}': the angle must be a finite number of degrees"
+        )));
+    }
+    let with_units = |own: Units| -> PyResult<Units> {
+        let mut u = own;
+        if let Some(l) = unit {
+            u = u.with_length(parse(l)?);
+        }
+        if let Some(f) = force_unit {
+            u = u.with_force(parse(f)?);
+        }
+        Ok(u)
+    };
+    let angles_or = |d: &[f64]| angles.clone().unwrap_or_else(|| d.to_vec());
+    let range = |a: f64, b: f64, step: f64| -> Vec<f64> {
+        (0..=((b - a) / step) as usize)
+            .map(|k| a + step * k as f64)
+            .collect()
+    };
+    let (head, rows): (Table, Vec<slider_crank::Result<Vec<String>>>) = match name {
+        "obliquity" => {
+            let ratios = ratios(n, &[4.0, 5.0, 6.0])?;
+            let spec = angles_or(&[90.0]);
+            let head =
+                t::obliquity(&ratios, spec.first().copied().unwrap_or(90.0)).map_err(py_err)?;
+            let rows = spec
+                .iter()
+                .flat_map(|&a| match t::obliquity(&ratios, a) {
+                    Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
+                    Err(e) => vec![Err(e)],
+                })
+                .collect();
+            (head, rows)
+        }
+        "acceleration-factor" => {
+            let ratios = ratios(n, &t::TEXTBOOK_RATIOS)?;
+            let head = t::acceleration_factor_table(&ratios, &[]).map_err(py_err)?;
+            let rows = angles_or(&t::TEXTBOOK_ANGLES)
+                .into_iter()
+                .map(|d| {
+                    let t = t::acceleration_factor_table(&ratios, &[d])?;
+                    Ok(t.rows.into_iter().next().unwrap_or_default())
+                })
+                .collect();
+            (head, rows)
+        }
+        "kinematics" => {
+            let m = engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
+            let w = crank_speed(rpm, omega)?;
+            let head = t::kinematics_head(&m, w, &with_units(Units::FOOT_POUND)?);
+            let rows = angles_or(&range(0.0, 360.0, 30.0))
+                .into_iter()
+                .map(|d| t::kinematics_row(&m, w, d, decimals))
+                .collect();
+            (head, rows)
+        }
+        "forces" => {
+            let m = engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
+            let torque = torque.unwrap_or(NG_TABLE_2_TORQUE);
+            if !torque.is_finite() {
+                return Err(py_err(Error::NotFinite {
+                    name: "torque",
+                    value: torque,
+                }));
+            }
+            let mu = friction.unwrap_or(1.0);
+            let head = t::forces_head(&m, torque, mu, &with_units(Units::MILLIMETRE_NEWTON)?);
+            let rows = angles_or(&range(10.0, 160.0, 10.0))
+                .into_iter()
+                .map(|d| t::forces_row(&m, torque, mu, d, decimals))
+                .collect();
+            (head, rows)
+        }
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics and forces"
+            )));
+        }
+    };
+    let head = Head {
+        title: &head.title,
+        headers: &head.headers,
+        notes: &head.notes,
+    };
+    let mut text = String::new();
+    t::render_rows(format, &head, || rows.iter().cloned(), &mut |s| {
+        text.push_str(s);
+        Ok(())
+    })
+    .map_err(py_err)?;
+    Ok(text)
+}
+
+/// Writes the gallery `slider-crank gallery --out DIR [--only LIST]`
+/// writes into the directory `out` (which exists): every named figure (or
+/// those of `only`) as SVG, PNG and PDF, the tables and `index.html`, each
+/// file whole or not at all. Returns the names of the files.
+#[pyfunction]
+#[pyo3(signature = (out, only=None))]
+fn gallery(py: Python<'_>, out: PathBuf, only: Option<Vec<String>>) -> PyResult<Vec<String>> {
+    let mut gallery = Gallery::new();
+    if let Some(list) = only {
+        let figures = list
+            .iter()
+            .map(|n| FigureName::from_name(n.trim()))
+            .collect::<slider_crank::Result<Vec<_>>>()
+            .map_err(py_err)?;
+        gallery = gallery.with_figures(figures);
+    }
+    gallery.can_build().map_err(py_err)?;
+    py.detach(|| gallery.build(|file| write_atomic(&out.join(&file.name), &file.bytes)))
+        .map_err(py_err)?;
+    Ok(gallery.file_names())
+}
+
+/// The names of the figures, in the order `--help` lists them.
+#[pyfunction]
+fn figure_names() -> Vec<String> {
+    FigureName::ALL.iter().map(|n| n.to_string()).collect()
+}
+
+/// The native half of the `slider_crank` package.
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(check_engine, m)?)?;
+    m.add_function(wrap_pyfunction!(crank_speed, m)?)?;
+    m.add_function(wrap_pyfunction!(analyze, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(figure, m)?)?;
+    m.add_function(wrap_pyfunction!(encode, m)?)?;
+    m.add_function(wrap_pyfunction!(save, m)?)?;
+    m.add_function(wrap_pyfunction!(figure_names, m)?)?;
+    m.add_function(wrap_pyfunction!(handout, m)?)?;
+    m.add_function(wrap_pyfunction!(table, m)?)?;
+    m.add_function(wrap_pyfunction!(gallery, m)?)?;
+    m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
+    Ok(())
+}

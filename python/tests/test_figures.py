@@ -1,0 +1,104 @@
+"""Figures drawn in-process are byte for byte what `slider-crank figure`
+writes for the same options."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Dict, List
+
+import pytest
+
+import slider_crank as sc
+from conftest import Cli
+
+CASES: List[Any] = [
+    ("fig-66-kisch", {}, []),
+    ("fig-65-klein", {"angle": 130, "rod": 2.0, "offset": 0.2, "style": "handout"},
+     ["--angle=130", "--rod=2.0", "--offset=0.2", "--style=handout"]),
+    ("ng-fig-1-torque", {"notation": "textbook", "mirror": True, "width": "120mm",
+                         "title": "The *OM* line"},
+     ["--notation=textbook", "--mirror", "--width=120mm", "--title=The *OM* line"]),
+    ("fig-64-velocity-diagrams", {"rpm": 300, "font": "libertinus-serif"},
+     ["--rpm=300", "--font=libertinus-serif"]),
+    ("fig-63-velocity", {"layers": ["mechanism", "velocity"], "unit": "m", "height": 500},
+     ["--layers=mechanism,velocity", "--unit=m", "--height=500"]),
+    ("ng-fig-7-calibration", {"fit": "origin"}, ["--fit=origin"]),
+    ("inversion-2-rotating-block", {"angle": 40}, ["--angle=40"]),
+]
+
+
+@pytest.mark.parametrize("name,options,flags", CASES)
+def test_figure_svg_is_the_command_lines(
+    cli: Cli, name: str, options: Dict[str, Any], flags: List[str]
+) -> None:
+    assert sc.figure(name, **options).svg == cli.stdout(["figure", name, *flags])
+
+
+def test_engine_figure_draws_that_engine(cli: Cli) -> None:
+    engine = sc.SliderCrank(25, 72, 10, unit="mm", force_unit="N")
+    want = cli.stdout(["figure", "fig-67-example", "--crank=25.0", "--rod=72.0",
+                       "--offset=10.0", "--unit=mm", "--force-unit=N", "--angle=60",
+                       "--omega=3"])
+    got = engine.figure("fig-67-example", angle=60, omega=3)
+    assert got.svg == want
+    assert got._repr_svg_() == want
+
+
+@pytest.mark.parametrize("ext", ["svg", "png", "pdf"])
+def test_saved_files_are_the_command_lines(cli: Cli, tmp_path: Path, ext: str) -> None:
+    ours, theirs = tmp_path / f"ours.{ext}", tmp_path / f"theirs.{ext}"
+    sc.figure("fig-66-kisch", angle=200).save(ours)
+    cli.stdout(["figure", "fig-66-kisch", "--angle=200", f"--out={theirs}"])
+    assert ours.read_bytes() == theirs.read_bytes()
+    f = sc.figure("fig-66-kisch", angle=200)
+    if ext == "png":
+        assert f.png() == theirs.read_bytes()
+    if ext == "pdf":
+        assert f.pdf()[:5] == b"%PDF-"
+
+
+def test_every_named_figure_draws() -> None:
+    assert "fig-66-kisch" in sc.FIGURES and len(sc.FIGURES) >= 20
+    for name in sc.FIGURES:
+        svg = sc.figure(name).svg
+        assert svg.startswith("<svg") or svg.startswith("<?xml"), name
+
+
+def test_gallery_is_the_command_lines(cli: Cli, tmp_path: Path) -> None:
+    names = sc.gallery(tmp_path / "py", only=["fig-66-kisch", "ng-fig-1-torque"])
+    cli.stdout(["gallery", "--only=fig-66-kisch,ng-fig-1-torque", f"--out={tmp_path / 'cli'}"])
+    written = sorted(p.name for p in (tmp_path / "cli").iterdir())
+    assert sorted(names) == written and "index.html" in names
+    for name in names:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    with pytest.raises(ValueError, match="fig-66-kisch"):
+        sc.gallery(tmp_path / "x", only="fig-99")
+
+
+@pytest.mark.parametrize("ext", ["svg", "html"])
+def test_animation_is_the_command_lines(cli: Cli, tmp_path: Path, ext: str) -> None:
+    theirs = tmp_path / f"cli.{ext}"
+    cli.stdout(["animate", "fig-63-velocity", "--frames=4", "--period=2", "--angle=10",
+                "--style=handout", f"--out={theirs}"])
+    ours = tmp_path / f"py.{ext}"
+    text = sc.animate("fig-63-velocity", ours, frames=4, period=2, angle=10, style="handout")
+    assert ours.read_bytes() == theirs.read_bytes()
+    assert text == theirs.read_text(encoding="utf-8")
+    assert sc.animate("fig-63-velocity", frames=4, period=2, angle=10, style="handout",
+                      html=ext == "html") == text
+
+
+def test_animation_errors(cli: Cli, tmp_path: Path) -> None:
+    for args, call in (
+        (["fig-61-centrodes", f"--out={tmp_path / 'a.svg'}"],
+         lambda: sc.animate("fig-61-centrodes", tmp_path / "a.svg")),
+        (["fig-66-kisch", f"--out={tmp_path / 'a.gif'}"],
+         lambda: sc.animate("fig-66-kisch", tmp_path / "a.gif")),
+        (["fig-66-kisch", "--frames=1", f"--out={tmp_path / 'a.svg'}"],
+         lambda: sc.animate("fig-66-kisch", tmp_path / "a.svg", frames=1)),
+    ):
+        message = cli.error(["animate", *args])
+        with pytest.raises(ValueError) as caught:
+            call()
+        assert str(caught.value) == message
+    assert list(tmp_path.iterdir()) == []
