@@ -26,8 +26,10 @@ pub enum OutputTarget {
 
 /// Decides how `path` is written: see [`OutputTarget`].
 ///
-/// Errors: a directory, a loop of links (more than 40), or a link that
-/// cannot be read.
+/// Errors: a directory, a write-protected regular file (no write
+/// permission for anyone, mode 444: refused even for a user who could
+/// replace it), a loop of links (more than 40), or a link that cannot be
+/// read.
 pub fn output_target(path: &Path) -> Result<OutputTarget> {
     let fail = |why: String, source: Option<std::io::Error>| Error::Io {
         message: format!("cannot write {}: {why}", path.display()),
