@@ -178,6 +178,15 @@ fn check_evaluations(scene: &Scene, spent: u64, done: u64, count: u64) -> Result
     )))
 }
 
+/// [`check_evaluations`] for an animation of Fig. 66.
+#[cfg(test)]
+pub(super) fn check_evaluations_for_test(spent: u64, done: u64, count: u64) -> Result<()> {
+    let scene = crate::FigureName::Fig66Kisch
+        .scene()
+        .expect("a seed figure");
+    check_evaluations(&scene, spent, done, count)
+}
+
 /// The frames of `scene` at `angles` (at least one), in a view held over
 /// the whole revolution and the frames' angles
 /// ([`super::Animation::new`]), calling `progress` after each, and what

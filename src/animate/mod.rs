@@ -348,4 +348,54 @@ mod tests {
         assert_eq!(a.frames().len(), 3);
         assert_eq!(a.frames()[2].angle().degrees(), 270.0);
     }
+
+    #[test]
+    fn written_a_frame_at_a_time_is_the_document_held_whole() {
+        let scene = engine();
+        let whole = Animation::new(&scene, 5, 2.0).unwrap();
+        for format in [AnimationFormat::Svg, AnimationFormat::Html] {
+            let (mut out, mut pieces, mut seen) = (String::new(), 0, Vec::new());
+            let mut sink = |s: &str| {
+                out.push_str(s);
+                pieces += 1;
+                Ok(())
+            };
+            write(&scene, (5, 2.0), format, &mut sink, |d, n| {
+                seen.push((d, n))
+            })
+            .unwrap();
+            assert_eq!(out, whole.encode(format), "{format:?}");
+            // The head, five frames (and the newlines between them in
+            // SVG), the tail: never the document in one piece.
+            assert!(pieces >= 7, "{pieces}");
+            assert_eq!(seen, [(1, 5), (2, 5), (3, 5), (4, 5), (5, 5)]);
+        }
+        // A failing sink ends the writing with its error.
+        let mut calls = 0;
+        let mut failing = |_: &str| {
+            calls += 1;
+            Err(Error::Parse("full".into()))
+        };
+        let e = write(
+            &engine(),
+            (5, 2.0),
+            AnimationFormat::Svg,
+            &mut failing,
+            |_, _| {},
+        );
+        assert_eq!(e.unwrap_err().to_string(), "full");
+        assert_eq!(calls, 1);
+    }
+
+    #[test]
+    fn frames_whose_curves_take_the_engines_budget_are_refused_first() {
+        let e = frames::check_evaluations_for_test(950_000, 1, 720).unwrap_err();
+        let e = e.to_string();
+        assert!(
+            e.contains("720 frames × 950000 = 684000000, more than the 20000000"),
+            "{e}"
+        );
+        assert!(e.contains("give at most 21 frames"), "{e}");
+        assert!(frames::check_evaluations_for_test(20_000, 4, 3600).is_ok());
+    }
 }

@@ -140,7 +140,12 @@ pub struct GuardArgs {
     /// larger request is refused before any work, with its size; give a
     /// larger N to lift the bound (the rows are streamed: memory does not
     /// grow with them)
-    #[arg(long, value_name = "N", default_value_t = DEFAULT_MAX_CELLS)]
+    #[arg(
+        long,
+        value_name = "N",
+        default_value_t = DEFAULT_MAX_CELLS,
+        allow_hyphen_values = true
+    )]
     pub max_cells: u64,
 }
 

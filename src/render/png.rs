@@ -152,6 +152,50 @@ mod tests {
         assert!(to_png(small, 2.0).unwrap().starts_with(b"\x89PNG"));
     }
 
+    #[test]
+    fn the_paper_reaches_the_last_row_and_column() {
+        // Issue 20: a page of 120 mm (453.54 units) is 908 pixels at
+        // scale 2, its last column 9 % paper; and 800 × 300 asked of Fig.
+        // 67. Every pixel is opaque, the edges the paper's colour.
+        for (name, width, height, style) in [
+            (FigureName::Fig60Chains, "120mm", None, Style::Textbook),
+            (FigureName::Fig67Example, "800", Some("300"), Style::Handout),
+        ] {
+            let options = FigureOptions {
+                width: Some(width.parse().unwrap()),
+                height: height.map(|h| h.parse().unwrap()),
+                style: Some(style),
+                ..FigureOptions::default()
+            };
+            let svg = to_svg(&name.figure(&options).unwrap());
+            let png = to_png(&svg, 2.0).unwrap();
+            let pixmap = tiny_skia::Pixmap::decode_png(&png).unwrap();
+            let (w, h) = (pixmap.width(), pixmap.height());
+            let paper = match style {
+                Style::Textbook => [255, 255, 255],
+                _ => [255, 253, 247],
+            };
+            for y in 0..h {
+                for x in 0..w {
+                    let p = pixmap.pixel(x, y).unwrap();
+                    assert_eq!(p.alpha(), 255, "{} ({x}, {y})", name.name());
+                    if x + 1 == w || y + 1 == h {
+                        assert_eq!(
+                            [p.red(), p.green(), p.blue()],
+                            paper,
+                            "{} ({x}, {y})",
+                            name.name()
+                        );
+                    }
+                }
+            }
+        }
+        // An SVG without a paper keeps its transparency.
+        let bare = r#"<svg xmlns="http://www.w3.org/2000/svg" width="10.5" height="10"/>"#;
+        let pixmap = tiny_skia::Pixmap::decode_png(&to_png(bare, 1.0).unwrap()).unwrap();
+        assert_eq!(pixmap.pixel(0, 0).unwrap().alpha(), 0);
+    }
+
     /// Every font file under `dir` (the machine's fonts), read with std
     /// alone: the font database is built without file-system support.
     fn load_dir(db: &mut Database, dir: &std::path::Path) {
