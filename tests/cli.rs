@@ -808,7 +808,7 @@ fn analyze_reports_the_engines_dynamics() {
     assert!(!out.status.success());
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.starts_with("slider-crank: rod-cg = 4 is out of range"),
+        err.starts_with("slider-crank: error: rod-cg = 4 is out of range"),
         "{err}"
     );
     assert_eq!(err.lines().count(), 1);
