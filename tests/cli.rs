@@ -845,3 +845,64 @@ fn a_mistake_is_told_what_to_write() {
         assert!(svg.contains(attribute), "{width}");
     }
 }
+
+#[test]
+fn analyze_reports_the_engines_dynamics() {
+    // At 90° in line OM = r, so T = F r; m a from the closed form
+    // a = r ω² / √(n² − 1) (n = 6): F = 5000 + 10 · 0.5 ω² / √35.
+    let v = json(&[
+        "analyze",
+        "--angle",
+        "90",
+        "--omega",
+        "20",
+        "--mass",
+        "10",
+        "--gas-force",
+        "5000",
+        "--json",
+    ]);
+    let d = &v["dynamics"];
+    let f = 5000.0 + 10.0 * 0.5 * 400.0 / 35f64.sqrt();
+    assert!(rel(d["piston_effort"].as_f64().unwrap(), f) < 1e-12, "{d}");
+    assert!(rel(d["crank_effort"].as_f64().unwrap(), 0.5 * f) < 1e-12);
+    assert_eq!(d["units"]["mass"], "lbf·s²/ft");
+    assert!(d["rod"].is_null());
+    // A rod's centre of mass beyond its length is one line on stderr.
+    let out = run(&[
+        "analyze",
+        "--mass",
+        "1",
+        "--rod-mass",
+        "1",
+        "--rod-cg",
+        "4",
+        "--rod-gyration",
+        "1",
+    ]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.starts_with("slider-crank: error: rod-cg = 4 is out of range"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1);
+}
+
+#[test]
+fn table_dynamics_gives_the_turn_and_the_flywheel() {
+    let out = run(&["table", "dynamics", "--fluctuation", "0.02"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("Over the turn (1 cylinder at 0°)"), "{text}");
+    assert!(text.contains("Flywheel: I = ΔE / (ω² C_s)"), "{text}");
+    assert_eq!(
+        text.lines().filter(|l| l.starts_with("90.0 ")).count(),
+        1,
+        "{text}"
+    );
+}

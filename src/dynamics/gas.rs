@@ -64,7 +64,8 @@ impl IndicatorDiagram {
     ) -> Result<Self> {
         let bore = positive("bore", bore)?;
         let n = fractions.len();
-        if n < 2 || n > MAX_INDICATOR_ROWS || expansion.len() != n || compression.len() != n {
+        if !(2..=MAX_INDICATOR_ROWS).contains(&n) || expansion.len() != n || compression.len() != n
+        {
             return Err(Error::Parse(format!(
                 "an indicator diagram has 2 to {MAX_INDICATOR_ROWS} rows, each with a fraction and two pressures"
             )));

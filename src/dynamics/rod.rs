@@ -101,7 +101,9 @@ impl RodInertia {
         let correction_torque = -correction_couple * p1;
         let mass_at_crosshead = rod.mass * beta;
         let mass_at_crank_pin = rod.mass * (1.0 - beta);
-        let crank_pin = -w2 * mass_at_crank_pin * r * r * (c * s - s * c);
+        // m_B on the crank pin: −ω² m_B B″ · B′, zero (B″ ⟂ B′ on the circle).
+        let (b1, b2) = ([-r * s, r * c], [-r * c, -r * s]);
+        let crank_pin = -w2 * mass_at_crank_pin * (b2[0] * b1[0] + b2[1] * b1[1]);
         Self {
             force: [-rod.mass * w2 * g2[0], -rod.mass * w2 * g2[1]],
             couple,
