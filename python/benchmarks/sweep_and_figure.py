@@ -47,6 +47,7 @@ def matplotlib_figure(engine: sc.SliderCrank, theta: float) -> str:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.patches import Circle, Rectangle
 
     p = engine.at(theta).points
     C, B, A, E = (p[k] for k in "CBAE")
@@ -56,8 +57,8 @@ def matplotlib_figure(engine: sc.SliderCrank, theta: float) -> str:
     ax.plot([C[0], B[0], A[0]], [C[1], B[1], A[1]], "k-", lw=2)
     ax.plot([A[0], E[0]], [A[1], E[1]], "k--", lw=0.8)
     ax.plot([C[0], E[0]], [C[1], E[1]], "k-", lw=1.5)
-    ax.add_patch(plt.Circle(C, engine.crank, fill=False, lw=0.5))
-    ax.add_patch(plt.Rectangle((A[0] - 0.15, A[1] - 0.1), 0.3, 0.2, fill=False))
+    ax.add_patch(Circle(C, engine.crank, fill=False, lw=0.5))
+    ax.add_patch(Rectangle((A[0] - 0.15, A[1] - 0.1), 0.3, 0.2, fill=False))
     ax.axhline(engine.offset, color="k", lw=0.5)
     for name, q in zip("CBAE", (C, B, A, E)):
         ax.annotate(name, q, textcoords="offset points", xytext=(4, 4), style="italic")
