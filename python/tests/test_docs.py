@@ -18,7 +18,7 @@ def test_every_public_name_is_documented() -> None:
 
 
 def test_help_on_slider_crank_explains_the_engine() -> None:
-    text = pydoc.render_doc(sc.SliderCrank, renderer=pydoc.plaintext)
+    text = pydoc.render_doc(sc.SliderCrank, renderer=pydoc.plaintext)  # type: ignore[attr-defined]
     for phrase in ("crank radius", "ValueError", "at(self, theta_deg", "analyze",
                    "GIL released", "rpm"):
         assert phrase in text, phrase

@@ -4,7 +4,7 @@ writes for the same options."""
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any, Dict, List
+from typing import Any, Callable, Dict, List, Tuple
 
 import pytest
 
@@ -89,14 +89,15 @@ def test_animation_is_the_command_lines(cli: Cli, tmp_path: Path, ext: str) -> N
 
 
 def test_animation_errors(cli: Cli, tmp_path: Path) -> None:
-    for args, call in (
+    cases: List[Tuple[List[str], Callable[[], str]]] = [
         (["fig-61-centrodes", f"--out={tmp_path / 'a.svg'}"],
          lambda: sc.animate("fig-61-centrodes", tmp_path / "a.svg")),
         (["fig-66-kisch", f"--out={tmp_path / 'a.gif'}"],
          lambda: sc.animate("fig-66-kisch", tmp_path / "a.gif")),
         (["fig-66-kisch", "--frames=1", f"--out={tmp_path / 'a.svg'}"],
          lambda: sc.animate("fig-66-kisch", tmp_path / "a.svg", frames=1)),
-    ):
+    ]
+    for args, call in cases:
         message = cli.error(["animate", *args])
         with pytest.raises(ValueError) as caught:
             call()
