@@ -348,9 +348,8 @@ impl Sketch {
                     // and their leaning hatch.
                     let back = ROD_CLEARANCE / sin.max(0.05) + HATCH_SLANT;
                     let n = (back / per_step.max(1e-9)).ceil() as usize + 1;
-                    for j in k.saturating_sub(n).max(1)..=(k + n).min(steps) {
-                        open[j] = true;
-                    }
+                    let (lo, hi) = (k.saturating_sub(n).max(1), (k + n).min(steps));
+                    open[lo..=hi].fill(true);
                 }
                 if segment_distance(q1, q1, *u, *v) < ROD_CLEARANCE + HATCH_SLANT {
                     open[k] = true;
