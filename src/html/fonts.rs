@@ -145,7 +145,13 @@ fn with_tables(font: &[u8], extra: &[([u8; 4], Vec<u8>)]) -> Vec<u8> {
         .map(|k| {
             let record = 12 + 16 * k;
             let (offset, length) = (be32(record + 8), be32(record + 12));
-            let tag = font[record..record + 4].try_into().expect("four bytes");
+            // The bundled faces' own directory (never a user's file).
+            let tag = [
+                font[record],
+                font[record + 1],
+                font[record + 2],
+                font[record + 3],
+            ];
             (tag, font[offset..offset + length].to_vec())
         })
         .chain(extra.iter().cloned())
