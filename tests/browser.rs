@@ -320,7 +320,7 @@ fn check_print(browser: &Path, page: &Path, paper: &Paper) {
     for note in notes {
         let note = note.as_str().unwrap().replace("&nbsp;", " ");
         assert!(
-            printed.contains(&bare(note)),
+            printed.contains(&bare(&note)),
             "{name}: the note “{note}” is not whole in the printed text on {}",
             paper.pdfinfo
         );
