@@ -563,7 +563,7 @@ fn the_page_is_headed_by_the_figure_and_its_slider_speaks_the_angle() {
     );
     let slider = &html[html.find("<input").unwrap()..];
     let slider = &slider[..slider.find('>').unwrap()];
-    assert!(slider.contains("aria-valuetext=\"θ = 0°\""), "{slider}");
+    assert!(slider.contains("aria-valuetext=\"θ = 60°\""), "{slider}");
     // The script keeps it in step with the frame shown.
     assert!(html.contains("setAttribute('aria-valuetext'"), "the script");
     let titled = animate(

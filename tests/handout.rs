@@ -541,7 +541,7 @@ fn a_sheet_is_drawn_at_the_round_scale_it_states() {
         // Paper millimetres per millimetre of the engine.
         let drawn = width / view[2] * per_unit / unit_mm;
         assert!(
-            (drawn * ratio - 1.0).abs() < 1e-9,
+            (drawn * ratio - 1.0).abs() < 1e-4, // to the digits the page writes
             "1:{ratio} against 1:{}",
             1.0 / drawn
         );

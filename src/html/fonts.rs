@@ -30,11 +30,14 @@ pub(crate) fn font_faces(text: &str, fonts: &[Font]) -> String {
     for font in fonts {
         let files = font.files();
         let regular = FontRef::new(font.data(FontStyle::Regular)).ok();
-        let in_text = |c: &char| {
-            regular
-                .as_ref()
-                .is_some_and(|f| f.charmap().map(*c).is_some())
-        };
+        let italic = FontRef::new(font.data(FontStyle::Italic)).ok();
+        let has =
+            |f: &Option<FontRef>, c: char| f.as_ref().is_some_and(|f| f.charmap().map(c).is_some());
+        let in_text = |c: &char| has(&regular, *c);
+        // A browser looks for a character the italic face lacks in the
+        // next family, not in the regular face: the symbols face carries
+        // those too.
+        let in_both = |c: &char| has(&regular, *c) && has(&italic, *c);
         let faces = [
             (font.family().to_string(), "normal", files[0], true),
             (font.family().to_string(), "italic", files[1], true),
@@ -44,7 +47,7 @@ pub(crate) fn font_faces(text: &str, fonts: &[Font]) -> String {
             css.push_str(&rule(&family, style, data, wanted));
         }
         if let Some(symbols) = files.get(2) {
-            let missing = chars.iter().copied().filter(|c| !in_text(c));
+            let missing = chars.iter().copied().filter(|c| !in_both(c));
             css.push_str(&rule(
                 &format!("{} Math", font.family()),
                 "normal",
