@@ -26,12 +26,19 @@ caption { text-align: left; font-weight: bold; padding-bottom: .3rem; }
 /// Libertinus Serif where a figure is set in it), cut to the characters
 /// the page holds.
 pub(crate) fn document(title: &str, style: &str, body: Markup) -> String {
+    document_covering(title, style, body, "")
+}
+
+/// [`document`] whose faces also carry the characters of `also`: the text
+/// of what is written into the page after it is made (an animation's
+/// frames, streamed in place of a placeholder).
+pub(crate) fn document_covering(title: &str, style: &str, body: Markup, also: &str) -> String {
     let body = body.into_string();
     let fonts: Vec<Font> = Font::ALL
         .into_iter()
-        .filter(|f| *f == Font::default() || body.contains(f.family()))
+        .filter(|f| *f == Font::default() || body.contains(f.family()) || also.contains(f.family()))
         .collect();
-    let faces = fonts::font_faces(&format!("{title}{body}"), &fonts);
+    let faces = fonts::font_faces(&format!("{title}{body}{also}"), &fonts);
     html! {
         (DOCTYPE)
         html lang="en" {

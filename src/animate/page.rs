@@ -128,7 +128,15 @@ fn skeleton(animation: &Reel, heading: &str) -> String {
         }
         script { (PreEscaped(SCRIPT)) }
     };
-    crate::html::document(&title, STYLE, body)
+    // The frames are written into the page after it is made: its faces
+    // carry the first frame's characters, and every digit, sign and unit
+    // the other frames' numbers may hold.
+    let frames = format!(
+        "{}0123456789.,+-\u{2212}°{}",
+        frame_view(animation, heading, first, 0).into_string(),
+        animation.font_family()
+    );
+    crate::html::document_covering(&title, STYLE, body, &frames)
 }
 
 /// Frame `k` as an inline SVG in its own block, hidden but for the first.

@@ -5,7 +5,7 @@ use super::output::{Progress, Stdout, say};
 use clap::Args;
 use slider_crank::gallery::{Gallery, GalleryFile};
 use slider_crank::input::{MAX_SCENE_BYTES, read_bytes_from, read_text};
-use slider_crank::render::{Pending, uninterrupted, write_protected};
+use slider_crank::render::{Pending, make_pending, uninterrupted, write_protected};
 use slider_crank::{Error, FigureName, Result};
 use std::io::{ErrorKind, Write};
 use std::path::{Path, PathBuf};
@@ -112,11 +112,12 @@ fn stage(dir: &Path, file: &GalleryFile) -> Result<Staged> {
     let path = dir.join(&file.name);
     let fail =
         |e: std::io::Error| Error::io_at(format!("cannot write {}: {e}", path.display()), &path, e);
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".slider-crank-")
-        .tempfile_in(dir)
-        .map_err(fail)?;
-    let pending = Pending::new(tmp.path());
+    let (mut tmp, pending) = make_pending(|| {
+        tempfile::Builder::new()
+            .prefix(".slider-crank-")
+            .tempfile_in(dir)
+    })
+    .map_err(fail)?;
     tmp.write_all(&file.bytes)
         .and_then(|()| tmp.as_file().sync_all())
         .map_err(fail)?;

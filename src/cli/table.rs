@@ -66,7 +66,7 @@ pub struct TableArgs {
     #[arg(long, allow_hyphen_values = true, value_name = "L")]
     pub rod: Option<f64>,
     /// Offset e of the line of stroke for kinematics and forces, in the
-    /// unit of --crank (0: in line)
+    /// unit of --crank [default: 0]
     #[arg(long, value_name = "E", allow_hyphen_values = true)]
     pub offset: Option<f64>,
     /// Crank speed for kinematics, in revolutions per minute, positive

@@ -4,15 +4,24 @@
 /// below any angle that matters).
 const MAX_DEPTH: u32 = 40;
 
+/// Most evaluations of `f` by one [`integrate`]: the depth alone would
+/// allow 2⁴⁰ where the tolerance cannot be met (an engine at the limit of
+/// assembly, whose torque spikes near the dead centres). A smooth piece of
+/// a turning-moment diagram takes a few hundred.
+const MAX_EVALUATIONS: u32 = 1 << 16;
+
 /// ∫ f over [a, b] by adaptive Simpson's rule with Richardson's
 /// correction, to the absolute tolerance `tol` (each half gets half the
 /// tolerance; an interval is accepted when its two halves and the whole
 /// agree to 15 tol). Exact for cubics. `f` must be smooth on [a, b]:
-/// split the range at its kinks first.
+/// split the range at its kinks first. After [`MAX_EVALUATIONS`] the
+/// intervals still open are accepted as they stand (the work stays
+/// bounded; the tolerance is then not guaranteed).
 pub(crate) fn integrate(f: &dyn Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
     let (fa, fm, fb) = (f(a), f(0.5 * (a + b)), f(b));
     let whole = (b - a) / 6.0 * (fa + 4.0 * fm + fb);
-    step(f, [a, b], [fa, fm, fb], whole, tol, MAX_DEPTH)
+    let mut left = MAX_EVALUATIONS;
+    step(f, [a, b], [fa, fm, fb], whole, (tol, MAX_DEPTH), &mut left)
 }
 
 fn step(
@@ -20,20 +29,22 @@ fn step(
     [a, b]: [f64; 2],
     [fa, fm, fb]: [f64; 3],
     whole: f64,
-    tol: f64,
-    depth: u32,
+    (tol, depth): (f64, u32),
+    budget: &mut u32,
 ) -> f64 {
     let m = 0.5 * (a + b);
     let (l, r) = (0.5 * (a + m), 0.5 * (m + b));
     let (fl, fr) = (f(l), f(r));
+    *budget = budget.saturating_sub(2);
     let left = (m - a) / 6.0 * (fa + 4.0 * fl + fm);
     let right = (b - m) / 6.0 * (fm + 4.0 * fr + fb);
     let delta = left + right - whole;
-    if depth == 0 || delta.abs() <= 15.0 * tol {
+    if depth == 0 || *budget == 0 || delta.abs() <= 15.0 * tol {
         return left + right + delta / 15.0;
     }
-    step(f, [a, m], [fa, fl, fm], left, 0.5 * tol, depth - 1)
-        + step(f, [m, b], [fm, fr, fb], right, 0.5 * tol, depth - 1)
+    let half = (0.5 * tol, depth - 1);
+    step(f, [a, m], [fa, fl, fm], left, half, budget)
+        + step(f, [m, b], [fm, fr, fb], right, half, budget)
 }
 
 /// A root of `f` between `a` and `b`, where f(a) and f(b) have opposite

@@ -27,7 +27,7 @@ pub use number::{GRID, fmt};
 pub use output::{same_file, write_atomic, write_atomic_with, write_protected};
 #[cfg(feature = "pdf")]
 pub use pdf::{POINTS_PER_UNIT, to_pdf};
-pub use pending::{Pending, remove_pending, uninterrupted};
+pub use pending::{Pending, make_pending, remove_pending, uninterrupted};
 #[cfg(feature = "png")]
 pub use png::to_png;
 pub use save::save;

@@ -29,7 +29,9 @@ impl std::fmt::Display for OnGrid {
         if n.abs() >= 1e12 {
             // From 1e15 units on in exponent form: `{}` writes every digit
             // of a double (309 for 1e308).
-            let units = n / (1.0 / GRID);
+            // Beyond f64::MAX × GRID the hundredths overflow: x itself is
+            // far coarser than the grid there.
+            let units = if n.is_finite() { n / (1.0 / GRID) } else { x };
             return if units.abs() >= 1e15 {
                 write!(f, "{units:e}")
             } else {

@@ -5,7 +5,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::pending::Pending;
+use super::pending::make_pending;
 
 /// Most symbolic links followed from one output path (as the kernel's
 /// `ELOOP` limit).
@@ -179,8 +179,7 @@ fn replace(
     fill: impl FnOnce(&mut std::fs::File) -> Result<()>,
     fail: impl Fn(std::io::Error) -> Error,
 ) -> Result<()> {
-    let mut tmp = temporary(path).map_err(&fail)?;
-    let _pending = Pending::new(tmp.path());
+    let (mut tmp, _pending) = make_pending(|| temporary(path)).map_err(&fail)?;
     fill(tmp.as_file_mut())?;
     persist(path, tmp).map_err(fail)
 }

@@ -46,6 +46,20 @@ impl Drop for Pending {
     }
 }
 
+/// Makes a temporary file with `make` and registers it, with
+/// [`remove_pending`] held off meanwhile: a signal arriving between the
+/// file's creation and its registration would otherwise leave it behind
+/// (and once the removal has run, no temporary file is made at all: the
+/// program is ending).
+pub fn make_pending(
+    make: impl FnOnce() -> std::io::Result<tempfile::NamedTempFile>,
+) -> std::io::Result<(tempfile::NamedTempFile, Pending)> {
+    let _guard = lock(&COMMIT);
+    let file = make()?;
+    let pending = Pending::new(file.path());
+    Ok((file, pending))
+}
+
 /// Runs `f` (a group of renames) with [`remove_pending`] held off until
 /// it returns.
 pub fn uninterrupted<T>(f: impl FnOnce() -> T) -> T {

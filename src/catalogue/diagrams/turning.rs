@@ -112,6 +112,10 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.plot(plot);
 
     // (b) The energy stored, E(θ).
+    let values: Vec<f64> = tm.lobes.iter().map(|l| l.energy).chain([0.0]).collect();
+    let (elo, ehi) = values
+        .iter()
+        .fold((0.0f64, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
     let energy = |deg: f64| -> f64 {
         let t = deg.to_radians();
         let Some(lobe) = tm.lobes.iter().find(|l| t <= l.to_deg.to_radians()) else {
@@ -122,10 +126,6 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         let from = lobe.from_deg.to_radians();
         before + integrate(&excess, from, t.max(from), tm.tolerance)
     };
-    let values: Vec<f64> = tm.lobes.iter().map(|l| l.energy).chain([0.0]).collect();
-    let (elo, ehi) = values
-        .iter()
-        .fold((0.0f64, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
     let mut plot = Plot::new(
         "energy",
         ctx.band(16.0 + height + 24.0, height),
