@@ -203,7 +203,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                         closed: false,
                     },
                 );
-                s.guides("slot", &slot, c, (b, a));
+                s.guides("slot", &slot, c, r, (b, a));
                 // The block, following the slot.
                 let sa = pose.arc_position();
                 let mut outline: Vec<Point> = (0..=8)

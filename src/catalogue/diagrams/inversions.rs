@@ -222,7 +222,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
                 block: (pose.engine_pose().a().x, lh + s.world(4.0)),
             };
             s.segment("line-stroke", Role::Auxiliary, t - u * r, q.f);
-            s.guides("stroke", &slot, c, (b, a));
+            s.guides("stroke", &slot, c, r, (b, a));
             s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
         }
         _ => {

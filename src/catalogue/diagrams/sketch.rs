@@ -25,10 +25,10 @@ const ROD_CLEARANCE: f64 = 5.0;
 const HATCH_SLANT: f64 = 6.0;
 /// Room left unhatched at a fixed link's pins, page units.
 pub(super) const PIN_CLEAR: f64 = 8.0;
-/// The bearing's reach about its centre, page units: the pedestal and its
-/// hatched foot below, the shaft's pin above, with a little paper all
-/// round. Left, right, below, above (page y downwards).
-const BEARING_BOX: [f64; 4] = [25.0, 20.0, 26.0, 8.0];
+/// Half width and depth of a bearing below its centre, page units.
+const BEARING_REACH: f64 = 25.0;
+/// Clear distance between a guide and the crank circle or a bearing.
+const CIRCLE_CLEARANCE: f64 = 7.0;
 /// Shortest guide drawn, page units.
 const GUIDE_MIN: f64 = 12.0;
 
@@ -251,13 +251,12 @@ impl Sketch {
     }
 
     /// The two guides of a fixed `slot`, hatched on their outer sides,
-    /// under the block over the slot's whole `range`: broken where the
-    /// rod `rod` (from the crank pin to the block) or the crank (from
-    /// `centre` to the pin) passes in front of them and round the bearing
-    /// at `centre`, but run across the crank circle, a path and not a
-    /// part (`guide-{name}-upper`, `guide-{name}-upper-2`, … in order
-    /// from the far end, with their hatching `hatch-{name}-upper-k`, …).
-    pub fn guides(&mut self, name: &str, slot: &Slot, centre: Point, rod: Seg) {
+    /// open towards the crank where the rod `rod` (from the crank pin to
+    /// the block) crosses them and clear of the crank circle of radius
+    /// `crank` about `centre` and its bearing (`guide-{name}-upper`,
+    /// `hatch-{name}-upper-k`, …).
+    pub fn guides(&mut self, name: &str, slot: &Slot, centre: Point, crank: f64, rod: Seg) {
+        let reach = crank.max(self.world(BEARING_REACH)) + self.world(CIRCLE_CLEARANCE);
         let h = slot.half_height;
         for (id, delta) in [("upper", h), ("lower", -h)] {
             let (s0, s1) = slot.range;
@@ -269,135 +268,73 @@ impl Sketch {
                 .ceil()
                 .clamp(2.0, 20000.0) as usize;
             let at = |k: usize| s1 + (s0 - s1) * k as f64 / steps as f64;
-            let step = |k: usize| {
+            let (rb, ra) = (self.page(rod.0), self.page(rod.1));
+            let mut last = 0;
+            let mut crossed: Option<(usize, f64)> = None;
+            for k in 1..=steps {
                 let (p0, p1) = ((slot.point)(at(k - 1), delta), (slot.point)(at(k), delta));
-                (self.page(p0), self.page(p1))
+                if (p1 - centre).norm() < reach {
+                    break;
+                }
+                let (q0, q1) = (self.page(p0), self.page(p1));
+                if let Some(sin) = crossing(q0, q1, rb, ra) {
+                    crossed = Some((k, sin));
+                    break;
+                }
+                // Beyond the block the rod keeps its distance from the
+                // guide (it runs inside a curved slot before leaving it).
+                let beside = (at(k) - slot.block.0).abs() <= slot.block.1;
+                if !beside && segment_distance(q1, q1, rb, ra) < ROD_CLEARANCE + HATCH_SLANT {
+                    break;
+                }
+                last = k;
+            }
+            if let Some((k, sin)) = crossed {
+                // Back off from the crossing so that the rod clears the
+                // guide's end and its leaning hatch.
+                let back = (ROD_CLEARANCE / sin.max(0.05) + HATCH_SLANT).ceil() as usize;
+                let per_step = (far - near).norm() / steps as f64;
+                let n = (back as f64 / per_step.max(1e-9)).ceil() as usize;
+                last = k.saturating_sub(n + 1).min(last);
+            }
+            let span = self.page((slot.point)(at(last), delta)) - far;
+            if last == 0 || span.norm() < GUIDE_MIN {
+                continue;
+            }
+            let chords = if slot.straight {
+                1
+            } else {
+                (span.norm() / CHORD).ceil().max(1.0) as usize
             };
-            let open = self.open_steps(slot, centre, rod, steps, &at, &step);
-            let mut piece = 0;
-            let mut k = 1;
-            while k <= steps {
-                if open[k] {
-                    k += 1;
-                    continue;
-                }
-                let first = k;
-                while k <= steps && !open[k] {
-                    k += 1;
-                }
-                let (from, to) = (at(first - 1), at(k - 1));
-                let span =
-                    self.page((slot.point)(to, delta)) - self.page((slot.point)(from, delta));
-                if span.norm() < GUIDE_MIN {
-                    continue;
-                }
-                piece += 1;
-                let suffix = if piece == 1 {
-                    String::new()
-                } else {
-                    format!("-{piece}")
-                };
-                self.guide_piece(
-                    &format!("{name}-{id}{suffix}"),
-                    slot,
-                    delta,
-                    (from, to),
-                    rod,
-                    centre,
+            // From the open end to the far end.
+            let points: Vec<Point> = (0..=chords)
+                .map(|j| {
+                    let s = at(last) + (s1 - at(last)) * j as f64 / chords as f64;
+                    (slot.point)(s, delta)
+                })
+                .collect();
+            self.push(
+                &format!("guide-{name}-{id}"),
+                Role::Frame,
+                Shape::Polyline {
+                    points: points.clone(),
+                    closed: false,
+                },
+            );
+            let outward = |j: usize| {
+                let (a, b) = (points[j], points[j + 1]);
+                let n = perp(&(b - a));
+                // Away from the slot's middle.
+                let mid = (slot.point)(
+                    at(last) + (s1 - at(last)) * (j as f64 + 0.5) / chords as f64,
+                    0.0,
                 );
-            }
+                if n.dot(&(a - mid)) >= 0.0 { n } else { -n }
+            };
+            let avoid = [rod];
+            let runs = self.clear_runs(&points, &outward, &avoid, 0.0);
+            self.emit_hatch(&format!("{name}-{id}"), &points, &outward, &runs);
         }
-    }
-
-    /// Which steps `step(k)` (page points, k from 1) of a guide stay open:
-    /// in the bearing's box about `centre`, within [`ROD_CLEARANCE`] and
-    /// the hatching's slant of the rod or the crank (save alongside the
-    /// block, where the rod runs in the slot from its middle), and a
-    /// crossing's back-off either side of where one crosses. Index 0 is
-    /// unused.
-    fn open_steps(
-        &self,
-        slot: &Slot,
-        centre: Point,
-        rod: Seg,
-        steps: usize,
-        at: &dyn Fn(usize) -> f64,
-        step: &dyn Fn(usize) -> (Point, Point),
-    ) -> Vec<bool> {
-        let c = self.page(centre);
-        let (rb, ra) = (self.page(rod.0), self.page(rod.1));
-        let links = [(rb, ra), (c, rb)];
-        let mut open = vec![false; steps + 1];
-        let per_step = (step(steps).1 - step(1).0).norm() / steps as f64;
-        for k in 1..=steps {
-            let (q0, q1) = step(k);
-            let d = q1 - c;
-            let [left, right, below, above] = BEARING_BOX;
-            if d.x > -left && d.x < right && d.y < below && d.y > -above {
-                open[k] = true;
-            }
-            for (i, (u, v)) in links.iter().enumerate() {
-                // The rod leaves the block through its edge, on the
-                // guide's line: the guide runs on under the block.
-                let beside = i == 0 && (at(k) - slot.block.0).abs() <= slot.block.1;
-                if beside {
-                    continue;
-                }
-                if let Some(sin) = crossing(q0, q1, *u, *v) {
-                    // Back off so that the link clears the guide's ends
-                    // and their leaning hatch.
-                    let back = ROD_CLEARANCE / sin.max(0.05) + HATCH_SLANT;
-                    let n = (back / per_step.max(1e-9)).ceil() as usize + 1;
-                    let (lo, hi) = (k.saturating_sub(n).max(1), (k + n).min(steps));
-                    open[lo..=hi].fill(true);
-                }
-                if segment_distance(q1, q1, *u, *v) < ROD_CLEARANCE + HATCH_SLANT {
-                    open[k] = true;
-                }
-            }
-        }
-        open
-    }
-
-    /// One piece of a guide, from arc length `range.0` to `range.1` at
-    /// offset `delta`, with its hatching clear of the rod and the crank.
-    fn guide_piece(
-        &mut self,
-        id: &str,
-        slot: &Slot,
-        delta: f64,
-        (from, to): (f64, f64),
-        rod: Seg,
-        centre: Point,
-    ) {
-        let length = self.page((slot.point)(to, delta)) - self.page((slot.point)(from, delta));
-        let chords = if slot.straight {
-            1
-        } else {
-            (length.norm() / CHORD).ceil().max(1.0) as usize
-        };
-        let s = |j: f64| from + (to - from) * j / chords as f64;
-        let points: Vec<Point> = (0..=chords)
-            .map(|j| (slot.point)(s(j as f64), delta))
-            .collect();
-        self.push(
-            &format!("guide-{id}"),
-            Role::Frame,
-            Shape::Polyline {
-                points: points.clone(),
-                closed: false,
-            },
-        );
-        let outward = |j: usize| {
-            let (a, b) = (points[j], points[j + 1]);
-            let n = perp(&(b - a));
-            // Away from the slot's middle.
-            let mid = (slot.point)(s(j as f64 + 0.5), 0.0);
-            if n.dot(&(a - mid)) >= 0.0 { n } else { -n }
-        };
-        let avoid = [rod, (centre, rod.0)];
-        let runs = self.clear_runs(&points, &outward, &avoid, 0.0);
-        self.emit_hatch(id, &points, &outward, &runs);
     }
 
     /// The runs of hatch strokes along the polyline `points` on the sides
