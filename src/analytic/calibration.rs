@@ -192,9 +192,9 @@ mod tests {
             (1e-300, 1e-300),
             (1e300, 1e300),
             (1e-300, 1.0),
-            // Subnormal x (a slope of 7 / 3e-320 would itself overflow:
-            // refused, rightly, so y is scaled down with it).
-            (3e-320, 7e-20),
+            // x at the least normal numbers, y small with it so that the
+            // slope (about 7e-8 / 3e-308) is a number.
+            (3e-308, 7e-8),
             (1e150, 1e-150),
         ] {
             let p: Vec<_> = pts.iter().map(|&(x, y)| (x * sx, y * sy)).collect();

@@ -179,8 +179,8 @@ fn check_evaluations(scene: &Scene, spent: u64, done: u64, count: u64) -> Result
 }
 
 /// [`check_evaluations`] for an animation of Fig. 66.
-// cannot fail: Fig. 66 is a mechanism figure, whose scene always builds.
 #[cfg(test)]
+// cannot fail: Fig. 66 is a mechanism figure, whose scene always builds.
 #[allow(clippy::expect_used)]
 pub(super) fn check_evaluations_for_test(spent: u64, done: u64, count: u64) -> Result<()> {
     let scene = crate::FigureName::Fig66Kisch
