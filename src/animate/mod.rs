@@ -35,7 +35,7 @@ pub const DEFAULT_FRAMES: usize = 72;
 pub const MIN_FRAMES: usize = 2;
 
 /// The most frames of an animation: one every tenth of a degree. The
-/// frames are written as they are drawn ([`write`]), so memory does not
+/// frames are written as they are drawn ([`write()`]), so memory does not
 /// grow with their number; their curves are bounded in all
 /// ([`MAX_EVALUATIONS`]).
 pub const MAX_FRAMES: usize = 3600;
