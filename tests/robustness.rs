@@ -270,15 +270,20 @@ fn spans(cell: &str) -> Vec<String> {
 
 /// One row of the regression table: its cells.
 fn regression_rows() -> Vec<Vec<String>> {
+    five_cell_rows("## Regressions against the version before hardening", |l| {
+        l.as_bytes().get(2).is_some_and(u8::is_ascii_digit)
+    })
+}
+
+/// The rows of the five-cell table under `heading` (up to the next
+/// heading) that `keep` takes (`| ` already checked), as trimmed cells.
+fn five_cell_rows(heading: &str, keep: fn(&str) -> bool) -> Vec<Vec<String>> {
     let doc = include_str!("../docs/robustness.md");
-    let section = doc
-        .split("## Regressions against the version before hardening")
-        .nth(1)
-        .expect("the regression section");
+    let section = doc.split(heading).nth(1).expect("the table's section");
     let section = section.split("\n## ").next().unwrap();
     section
         .lines()
-        .filter(|l| l.starts_with("| ") && l.as_bytes().get(2).is_some_and(u8::is_ascii_digit))
+        .filter(|l| l.starts_with("| ") && keep(l))
         .map(|line| {
             let cells: Vec<String> = line
                 .trim_matches('|')
@@ -429,25 +434,9 @@ fn the_regression_table_holds_now() {
 /// The rows of the second round's regression table: point, input,
 /// before, now, tests.
 fn second_round_rows() -> Vec<Vec<String>> {
-    let doc = include_str!("../docs/robustness.md");
-    let section = doc
-        .split("## Second round: regressions")
-        .nth(1)
-        .expect("the second round's regression section");
-    let section = section.split("\n## ").next().unwrap();
-    section
-        .lines()
-        .filter(|l| l.starts_with("| ") && !l.starts_with("| point"))
-        .map(|line| {
-            let cells: Vec<String> = line
-                .trim_matches('|')
-                .split(" | ")
-                .map(|c| c.trim().to_string())
-                .collect();
-            assert_eq!(cells.len(), 5, "a row of five cells: {line}");
-            cells
-        })
-        .collect()
+    five_cell_rows("## Second round: regressions", |l| {
+        !l.starts_with("| point")
+    })
 }
 
 /// Each point of the second round has a row, and each row a test: a row

@@ -139,14 +139,26 @@ impl Animation {
     /// metadata is the first frame's without the keys of its pose, with an
     /// `animation` object (`frames`, `period`, `angles_deg`).
     pub fn to_svg(&self) -> String {
-        svg::document(self)
+        self.collected(svg::write)
     }
 
     /// The HTML page: the frames inline, a slider to scrub the crank
     /// angle and a play/pause button (a small inline script; nothing
     /// fetched).
     pub fn to_html(&self) -> String {
-        page::document(self)
+        self.collected(page::write)
+    }
+
+    /// What `write` writes of this animation, as one string (writing to a
+    /// string cannot fail).
+    fn collected(&self, write: DocumentWriter) -> String {
+        let mut out = String::new();
+        let mut frames = self.frames.iter().cloned();
+        let _: Result<()> = write(&self.reel(), &mut frames, &mut |s| {
+            out.push_str(s);
+            Ok(())
+        });
+        out
     }
 
     /// The animation in `format`.
@@ -199,15 +211,21 @@ pub fn write(
         first: &survey.first,
     };
     let mut done = 0;
-    let frames = series.frames()?.inspect(|_| {
+    let mut frames = series.frames()?.inspect(|_| {
         done += 1;
         progress(done, count);
     });
-    match format {
-        AnimationFormat::Svg => svg::write(&reel, frames, sink),
-        AnimationFormat::Html => page::write(&reel, frames, sink),
-    }
+    let write: DocumentWriter = match format {
+        AnimationFormat::Svg => svg::write,
+        AnimationFormat::Html => page::write,
+    };
+    write(&reel, &mut frames, sink)
 }
+
+/// A document's writer ([`svg::write`], [`page::write`]): the reel, its
+/// frames as they are drawn, and the sink the text goes to.
+type DocumentWriter =
+    fn(&Reel, &mut dyn Iterator<Item = Frame>, &mut dyn FnMut(&str) -> Result<()>) -> Result<()>;
 
 /// What a document of an animation needs besides the frames' markup:
 /// the page, the period, the frames' angles and the first frame (whose

@@ -5,7 +5,7 @@
 //! printed page shows the frame on screen without the controls.
 
 use super::svg::seconds;
-use super::{Animation, FRAMES_HERE, Frame, Reel, split};
+use super::{FRAMES_HERE, Frame, Reel, split};
 use crate::error::Result;
 use crate::render::{fmt, root_size};
 use maud::{Markup, PreEscaped, html};
@@ -76,21 +76,10 @@ fn heading(animation: &Reel) -> String {
     }
 }
 
-/// The whole page.
-pub(super) fn document(animation: &Animation) -> String {
-    let mut out = String::new();
-    let frames = animation.frames().iter().cloned();
-    let _: Result<()> = write(&animation.reel(), frames, &mut |s| {
-        out.push_str(s);
-        Ok(())
-    });
-    out
-}
-
 /// The page written to `sink` a frame at a time, as `frames` are drawn.
 pub(super) fn write(
     animation: &Reel,
-    frames: impl Iterator<Item = Frame>,
+    frames: &mut dyn Iterator<Item = Frame>,
     sink: &mut dyn FnMut(&str) -> Result<()>,
 ) -> Result<()> {
     let heading = heading(animation);

@@ -15,27 +15,16 @@
 //! in a page or as an image. A viewer that does not animate (resvg, print)
 //! shows the first frame: the others are hidden by their attribute.
 
-use super::{Animation, FRAMES_HERE, Frame, Reel, split};
+use super::{FRAMES_HERE, Frame, Reel, split};
 use crate::error::Result;
 use crate::render::{Element, Node, fmt, root_size};
 use serde_json::{Map, Value, json};
-
-/// The document.
-pub(super) fn document(animation: &Animation) -> String {
-    let mut out = String::new();
-    let frames = animation.frames().iter().cloned();
-    let _: Result<()> = write(&animation.reel(), frames, &mut |s| {
-        out.push_str(s);
-        Ok(())
-    });
-    out
-}
 
 /// The document written to `sink` a frame at a time, as `frames` are
 /// drawn.
 pub(super) fn write(
     animation: &Reel,
-    frames: impl Iterator<Item = Frame>,
+    frames: &mut dyn Iterator<Item = Frame>,
     sink: &mut dyn FnMut(&str) -> Result<()>,
 ) -> Result<()> {
     let skeleton = skeleton(animation);
