@@ -933,3 +933,32 @@ fn analyze_streams_json_and_refuses_beyond_the_guard() {
         "{e}"
     );
 }
+
+/// The turning-moment figure states an offset engine's offset (its stroke
+/// and work differ from the in-line engine's), and no offset in line.
+#[test]
+fn the_turning_moment_notes_state_the_offset() {
+    let svg = |extra: &[&str]| {
+        let mut args = vec!["figure", "turning-moment", "--crank", "0.5", "--rod", "1.2"];
+        args.extend_from_slice(extra);
+        let out = run(&args);
+        assert!(
+            out.status.success(),
+            "{:?}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    // The notes set "= " after a letter with a no-break space.
+    let offset = svg(&["--offset", "0.1"]);
+    assert!(
+        offset.contains("</tspan>\u{a0}= 0.1 ft, 250 rpm"),
+        "offset not stated"
+    );
+    let in_line = svg(&[]);
+    assert!(
+        in_line.contains("</tspan>\u{a0}= 1.2 ft, 250 rpm"),
+        "rod not stated"
+    );
+    assert!(!in_line.contains(">e</tspan>"), "an offset stated in line");
+}

@@ -161,8 +161,11 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(20.0, page.height() - 40.0),
         &[
             format!(
-                "*r* = {} {u}, *l* = {} {u}, {} rpm; reciprocating mass {} {f}·s²/{u}, bore {} {u}; gas force from the indicator diagram{}.",
-                short(m.crank()), short(m.rod()), short(ctx.rpm()), short(EXAMPLE_MASS), short(BORE),
+                "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {f}·s²/{u}, bore {} {u}; gas force from the indicator diagram{}.",
+                short(m.crank()), short(m.rod()),
+                // An offset engine says so (its stroke, and so its work, differ).
+                if m.offset() == 0.0 { String::new() } else { format!(", *e* = {} {}", short(m.offset()), ctx.unit()) },
+                short(ctx.rpm()), short(EXAMPLE_MASS), short(BORE),
                 if ctx.options.data.is_some() { " given (--data)" } else { " of examples/indicator.csv" },
                 u = ctx.unit(), f = ctx.units.force()
             ),
