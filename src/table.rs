@@ -205,19 +205,21 @@ fn csv_line(cells: &[String]) -> String {
 }
 
 fn text_line(cells: &[String], width: &[usize]) -> String {
-    let padded: Vec<String> = cells
-        .iter()
-        .enumerate()
-        .map(|(i, c)| {
-            let pad = " ".repeat(width[i].saturating_sub(c.chars().count()));
-            if i == 0 {
-                format!("{c}{pad}")
-            } else {
-                format!("{pad}{c}")
-            }
-        })
-        .collect();
-    padded.join("  ").trim_end().to_string() + "\n"
+    let mut line = String::with_capacity(width.iter().sum::<usize>() + 2 * width.len() + 1);
+    for (i, (c, w)) in cells.iter().zip(width).enumerate() {
+        let pad = w.saturating_sub(c.chars().count());
+        if i == 0 {
+            line.push_str(c);
+            line.extend(std::iter::repeat_n(' ', pad));
+        } else {
+            line.push_str("  ");
+            line.extend(std::iter::repeat_n(' ', pad));
+            line.push_str(c);
+        }
+    }
+    line.truncate(line.trim_end().len());
+    line.push('\n');
+    line
 }
 
 /// Writes a table whose rows are computed as they are written, so that

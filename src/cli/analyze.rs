@@ -272,7 +272,12 @@ fn stream_array(objects: impl Iterator<Item = Result<Value>>, out: &mut Stdout) 
         }
     }
     let mut sink = Sink(out, None);
-    let written = serde_json::to_writer_pretty(&mut sink, &Array(objects.into()));
+    // serde_json writes a token at a time: gathered here into large
+    // writes, each checked once.
+    let mut buffered = std::io::BufWriter::with_capacity(1 << 16, &mut sink);
+    let written = serde_json::to_writer_pretty(&mut buffered, &Array(objects.into()))
+        .and_then(|()| std::io::Write::flush(&mut buffered).map_err(serde_json::Error::io));
+    drop(buffered);
     match (written, sink.1) {
         (_, Some(e)) => Err(e),
         (Ok(()), None) => Ok(()),

@@ -327,7 +327,7 @@ impl Page {
                 gs.pair(Name(format!("G{i}").as_bytes()), *r);
             }
         }
-        pdf.stream(contents, &deflate(&content))
+        pdf.stream(contents, &deflate(&content)?)
             .filter(Filter::FlateDecode);
         pdf.document_info(info)
             .producer(TextStr(concat!("slider-crank ", env!("CARGO_PKG_VERSION"))));
@@ -455,7 +455,7 @@ fn write_face(
     } else {
         subset
     };
-    let compressed = deflate(&program);
+    let compressed = deflate(&program)?;
     let mut stream = pdf.stream(file, &compressed);
     stream.filter(Filter::FlateDecode);
     if cff {
@@ -558,8 +558,18 @@ fn outline_clip(group: &Group, t: Transform, c: &mut Content, any: &mut bool) ->
     Ok(())
 }
 
-fn deflate(data: &[u8]) -> Vec<u8> {
-    miniz_oxide::deflate::compress_to_vec_zlib(data, 6)
+/// A stream's bytes compressed as zlib (`/FlateDecode`) at level 6.
+fn deflate(data: &[u8]) -> Result<Vec<u8>> {
+    use std::io::Write;
+    let mut encoder = flate2::write::ZlibEncoder::new(Vec::new(), flate2::Compression::new(6));
+    encoder
+        .write_all(data)
+        .and_then(|()| encoder.finish())
+        .map_err(|e| Error::Io {
+            message: format!("cannot compress a PDF stream: {e}"),
+            path: None,
+            source: None,
+        })
 }
 
 #[cfg(test)]

@@ -115,11 +115,10 @@ fn encode_opaque(pixmap: &tiny_skia::Pixmap) -> std::result::Result<Vec<u8>, png
     encoder.set_deflate_compression(png::DeflateCompression::Level(6));
     let mut writer = encoder.write_header()?;
     let mut stream = writer.stream_writer()?;
-    let mut row = Vec::with_capacity(3 * w as usize);
+    let mut row = vec![0; 3 * w as usize];
     for pixels in pixmap.data().chunks_exact(4 * w as usize) {
-        row.clear();
-        for px in pixels.chunks_exact(4) {
-            row.extend_from_slice(&px[..3]);
+        for (rgb, rgba) in row.chunks_exact_mut(3).zip(pixels.chunks_exact(4)) {
+            rgb.copy_from_slice(&rgba[..3]);
         }
         std::io::Write::write_all(&mut stream, &row)?;
     }
