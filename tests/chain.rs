@@ -485,6 +485,48 @@ fn every_inversion_figure_letters_its_pins_as_centres() {
     }
 }
 
+/// The notes of an inversion figure call a centre "at" a pin only when
+/// the two are one point. With a rod of 35 cranks at 12° (issue 20)
+/// O_ac lies 0.2137 r from O_ad (C), within a letter of it on the page:
+/// the notes gave "Here O_ac at O_ad"; they now give the distance. At
+/// 0° the two are one point (the rod along the line of stroke) and are
+/// still said to be at each other.
+#[test]
+fn centres_near_a_pin_are_called_coincident_only_when_they_are() {
+    let notes = |degrees: f64| {
+        let mut options = slider_crank::catalogue::FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, 35.0, 0.0).unwrap());
+        options.angle = Some(Angle::from_degrees(degrees).unwrap());
+        let svg = slider_crank::render::to_svg(
+            &slider_crank::FigureName::Inversion1Engine
+                .figure(&options)
+                .unwrap(),
+        );
+        // The note from "Here" on, its tags dropped, its no-break spaces
+        // read as spaces.
+        let at = svg
+            .find("Here")
+            .unwrap_or_else(|| panic!("{degrees}°: the notes name no centre"));
+        let mut text = String::new();
+        let mut in_tag = false;
+        for ch in svg[at..].chars().take(600) {
+            match ch {
+                '<' => in_tag = true,
+                '>' => in_tag = false,
+                '\u{a0}' if !in_tag => text.push(' '),
+                _ if !in_tag => text.push(ch),
+                _ => {}
+            }
+        }
+        text
+    };
+    let apart = notes(12.0);
+    assert!(!apart.contains("Oac at "), "{apart}");
+    assert!(apart.contains("Oac 0.2137 from Oad"), "{apart}");
+    let together = notes(0.0);
+    assert!(together.contains("Oac at Oad"), "{together}");
+}
+
 /// The loop closes at every scale the chain takes: B + coupler = O_cd +
 /// lever, each link of its length, to rounding of the longest, for chains
 /// of every Grashof class from 1e-150 to 1e150 (lengths beyond 1e±100 are

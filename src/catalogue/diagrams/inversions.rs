@@ -37,6 +37,25 @@ const EDGE_ROOM: f64 = 64.0;
 /// share its place and are named in the notes.
 const CROWDED: f64 = 18.0;
 
+/// Two centres closer than this fraction of the chain's size (r + l +
+/// |e|) are one point (the construction's rounding, some ulps, is far
+/// below it); farther apart, the notes give their distance instead of
+/// calling them coincident.
+const COINCIDENT: f64 = 1e-9;
+
+/// How the notes place a centre `markup` at `p` drawn on top of the
+/// lettered point `other` at `q`: "at" it when the two are one point (to
+/// [`COINCIDENT`] of the chain's `size`), else their distance, so that
+/// two centres 0.2 apart on a long chain are never called coincident.
+fn where_near(markup: &str, p: Point, other: &str, q: Point, size: f64) -> String {
+    let apart = (p - q).norm();
+    if apart <= COINCIDENT * size {
+        format!("{markup} at {other}")
+    } else {
+        format!("{markup} {} from {other}", short(apart))
+    }
+}
+
 /// The chain's pieces at one pose, in the fixed link's frame.
 struct Parts {
     c: Point,
@@ -332,8 +351,8 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
                     .iter()
                     .find(|(q, _)| map.apply_vector(p - q).norm() < CROWDED);
                 match near {
-                    Some((_, other)) if s.contains(p) => {
-                        together.push(format!("{markup} at {other}"));
+                    Some(&(q, other)) if s.contains(p) => {
+                        together.push(where_near(markup, p, other, q, r + l + e.abs()));
                         s.push(
                             &format!("centre-{key}"),
                             Role::Construction,
