@@ -334,7 +334,7 @@ mod tests {
             .with_page(page)
             .with_omega(-26.16)
             .with_units(Units::MILLIMETRE_NEWTON)
-            .with_title(Title::new("Ng's rig, *O* and *M*").unwrap())
+            .with_title(Title::new("Ng’s rig, *O* and *M*").unwrap())
             .with_torque(264.87)
             .with_coupler(CouplerPoint::new(0.25).unwrap())
             .with_tolerance(0.005);

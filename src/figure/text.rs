@@ -49,8 +49,16 @@ pub struct Run {
 /// `*...*` is italic (for point letters inside a roman note); the Unicode
 /// superscripts `⁰`–`⁹`, `⁻`, `⁺` become superscript runs of `0`–`9`,
 /// `−`, `+` (most text faces have no glyphs of their own for `⁴` or `⁻`). A
-/// label made
-/// with [`RichText::italic`] is italic throughout.
+/// label made with [`RichText::italic`] is italic throughout, but for its
+/// subscripts and superscripts.
+///
+/// One typographic convention holds in every text, drawing and note
+/// alike (ISO 80000-2, as a book sets it; docs/design.md): a quantity's
+/// symbol is italic, Latin or Greek (a small Greek letter is italic
+/// wherever it is written, but π, a number); subscripts, which here are
+/// descriptive (links, points, `c` for crank, digits), and exponents are
+/// upright; a prime (′, ″) is set in the style of the letter it marks.
+/// Numbers, units and words are upright.
 #[derive(Debug, Clone, PartialEq, Eq, Default)]
 pub struct RichText {
     runs: Vec<Run>,
@@ -101,9 +109,9 @@ impl RichText {
                             }
                             sub.push(c);
                         }
-                        push(&mut runs, sub, true, italic);
+                        push(&mut runs, sub, true, false);
                     }
-                    Some(c) => push(&mut runs, c.to_string(), true, italic),
+                    Some(c) => push(&mut runs, c.to_string(), true, false),
                     None => push(&mut runs, "_".into(), false, italic),
                 },
                 c => match SUPERSCRIPTS.iter().find(|(sup, _)| *sup == c) {
@@ -113,21 +121,25 @@ impl RichText {
                             text: plain.to_string(),
                             subscript: false,
                             superscript: true,
-                            italic,
+                            italic: false,
                         },
                     ),
-                    None => push(&mut runs, c.to_string(), false, italic),
+                    None => {
+                        let style = italic || is_quantity_greek(c) || primes_italic(&runs, c);
+                        push(&mut runs, c.to_string(), false, style)
+                    }
                 },
             }
         }
         Self { runs }
     }
 
-    /// The markup parsed and set in italic throughout (point letters).
+    /// The markup parsed and set in italic throughout (point letters),
+    /// but for its subscripts and superscripts, which stay upright.
     pub fn italic(markup: &str) -> Self {
         let mut t = Self::parse(markup);
         for r in &mut t.runs {
-            r.italic = true;
+            r.italic |= !(r.subscript || r.superscript);
         }
         t
     }
@@ -186,6 +198,21 @@ impl RichText {
     pub fn width(&self, font: Font, size: f64) -> f64 {
         self.measure(font, size).width
     }
+}
+
+/// Whether `c` is a small Greek letter, set italic as a quantity's
+/// symbol wherever it is written (θ, φ, ω, μ, …); not π, a number.
+fn is_quantity_greek(c: char) -> bool {
+    matches!(c, 'α'..='ω' | 'ϑ' | 'ϕ' | 'ϵ') && c != 'π' && c != 'ς'
+}
+
+/// Whether `c` is a prime that follows an italic letter, and so is set in
+/// italic with it (the prime belongs to the symbol it marks: *E*′).
+fn primes_italic(runs: &[Run], c: char) -> bool {
+    matches!(c, '′' | '″' | '‴')
+        && runs
+            .last()
+            .is_some_and(|r| r.italic && !r.subscript && !r.superscript)
 }
 
 /// Whether `c` is one of Unicode's 66 non-characters (U+FDD0 to U+FDEF,
@@ -349,18 +376,61 @@ mod tests {
 
     #[test]
     fn italic_label_and_trailing_underscore() {
-        let t = RichText::italic("F_p");
-        assert!(t.runs().iter().all(|r| r.italic));
+        // The symbol italic, its descriptive subscript upright.
+        let t = RichText::italic("F_p′");
+        let runs: Vec<(&str, bool)> = t
+            .runs()
+            .iter()
+            .map(|r| (r.text.as_str(), r.italic))
+            .collect();
+        assert_eq!(runs, vec![("F", true), ("p", false), ("′", true)]);
         assert_eq!(RichText::parse("a_").plain(), "a_");
+    }
+
+    #[test]
+    fn one_convention_greek_italic_primes_with_their_letter() {
+        // Issue 20: θ upright in notes beside italic θ in the drawing, a
+        // roman prime after an italic E, italic subscript digits.
+        let t = RichText::parse("at θ = 30°, *E*′ and *CG*″, 2π rad, ω², *P*_1, E′");
+        let runs: Vec<(&str, bool)> = t
+            .runs()
+            .iter()
+            .map(|r| (r.text.as_str(), r.italic))
+            .collect();
+        assert_eq!(
+            runs,
+            vec![
+                ("at ", false),
+                ("θ", true),
+                (" = 30°, ", false),
+                ("E′", true),
+                (" and ", false),
+                ("CG″", true),
+                (", 2π rad, ", false),
+                ("ω", true),
+                ("2", false),
+                (", ", false),
+                ("P", true),
+                ("1", false),
+                (", E′", false),
+            ]
+        );
+        for c in ['α', 'β', 'θ', 'φ', 'ϕ', 'ω', 'μ'] {
+            assert!(is_quantity_greek(c), "{c}");
+        }
+        for c in ['π', 'Δ', 'Ω', 'a', '′'] {
+            assert!(!is_quantity_greek(c), "{c}");
+        }
     }
 
     #[test]
     fn measured_run_by_run() {
         let f = Font::NewComputerModern;
         let (it, up) = (FontStyle::Italic, FontStyle::Regular);
-        // "V_c = 2": V italic, c an italic subscript at 70 %, the rest roman.
+        // "V_c = 2": V italic, c an upright subscript at 70 %, the rest
+        // roman.
         let t = RichText::parse("*V_c* = 2");
-        let expected = f.width("V", 20.0, it) + f.width("c", 14.0, it) + f.width(" = 2", 20.0, up);
+        let expected = f.width("V", 20.0, it) + f.width("c", 14.0, up) + f.width(" = 2", 20.0, up);
         assert!((t.width(f, 20.0) - expected).abs() < 1e-9);
         // Subscripts reach below the baseline by the drop.
         let b = t.measure(f, 20.0);

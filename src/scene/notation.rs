@@ -75,6 +75,15 @@ impl Notation {
         }
     }
 
+    /// The letter of a velocity: the textbook's *V* (*V*_c, *V*_p), Ng's
+    /// *v* (*v*_c, *v*_p).
+    pub(crate) fn velocity(&self) -> &'static str {
+        match self {
+            Notation::Textbook => "V",
+            Notation::Ng => "v",
+        }
+    }
+
     /// The id of the line between two named points (`line-CE`, `line-OM`).
     pub(crate) fn line(&self, p: Named, q: Named) -> String {
         format!("line-{}{}", self.letter(p), self.letter(q))
@@ -101,5 +110,7 @@ mod tests {
             Notation::Ng.line(Named::CrankCentre, Named::VelocityPoint),
             "line-OM"
         );
+        assert_eq!(Notation::Ng.velocity(), "v");
+        assert_eq!(Notation::Textbook.velocity(), "V");
     }
 }

@@ -138,7 +138,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(20.0, page.height() - 44.0),
         &[
             "Approximation − exact, divided by *r*, *V*_c = *r*ω, *r*ω² or ω², so the same for any crank and speed; in-line engine.".into(),
-            "Signs as the textbook's: velocity and acceleration towards the crank positive; the rod's d²φ/d*t*² as in §37.".into(),
+            "Signs as the textbook’s: velocity and acceleration towards the crank positive; the rod’s d²φ/d*t*² as in §37.".into(),
         ],
     );
     Ok(sheet.finish())

@@ -82,7 +82,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 fit.r_squared_uncentred
             ));
             notes.push(format!(
-                "(Ng's 0.9998), {:.4} about the mean",
+                "(Ng’s 0.9998), {:.4} about the mean",
                 fit.r_squared
             ));
         } else {

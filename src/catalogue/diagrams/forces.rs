@@ -70,7 +70,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let measured = Table::parse(text, "data")?.pairs(&["angle", "theta", "θ"], &["force", "f"])?;
     if let Some((a, _)) = measured.iter().find(|(a, _)| !(0.0..=180.0).contains(a)) {
         return Err(Error::Parse(format!(
-            "data: angle {a}° is outside the figure's 0° to 180°"
+            "data: angle {a}° is outside the figure’s 0° to 180°"
         )));
     }
     let pose_at = |deg: f64| Angle::from_degrees(deg).ok().map(|a| m.pose(a));
@@ -196,7 +196,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(20.0, page.height() - 42.0),
         &[
             format!(
-                "Ng's rig: *r* = {} {u}, *l* = {} {u}; *T* = {NG_TORQUE:.2} {}, the torque Ng's *F* column implies{}.",
+                "Ng’s rig: *r* = {} {u}, *l* = {} {u}; *T* = {NG_TORQUE:.2} {}, the torque Ng’s *F* column implies{}.",
                 short(m.crank()),
                 short(m.rod()),
                 ctx.units.torque(),
@@ -207,7 +207,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 },
                 u = ctx.unit(),
             ),
-            "*F*′ with each angle's φ (Ng's printed *F*′ used φ of 60° throughout). The least *F* is not quite at β = 90°.".into(),
+            "*F*′ with each angle’s φ (Ng’s printed *F*′ used φ of 60° throughout). The least *F* is not quite at β = 90°.".into(),
         ],
     );
     Ok(sheet.finish())

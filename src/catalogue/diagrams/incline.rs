@@ -164,14 +164,14 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.notes(
         Point::new(20.0, page.height() - 60.0),
         &[
-            "Along the plane: *mg* sin φ = μ *N* = μ *mg* cos φ (eq. 9), so μ = tan φ (eq. 10)."
+            "Along the plane: *mg* sin φ = μ*N* = μ*mg* cos φ (eq. 9), so μ = tan φ (eq. 10)."
                 .into(),
             format!(
                 "φ = {}°: μ = tan φ = {}{}",
                 short(tilt),
                 short(mu),
                 if tilt == 45.0 {
-                    " (Ng's rig first slid at 45°: μ = 1)."
+                    " (Ng’s rig first slid at 45°: μ = 1)."
                 } else {
                     "."
                 }

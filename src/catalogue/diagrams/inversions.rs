@@ -416,7 +416,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     }
     let lines = [
         line,
-        "The pins *O*_{ad}, *O*_{ab}, *O*_{bc} are *C*, *B*, *A* of Figs. 62–67; by Kennedy's theorem *O*_{bd} on *O*_{ad}*O*_{ab} and on the normal to the stroke at *O*_{bc}, *O*_{ac} on *O*_{ab}*O*_{bc} and on the normal at *O*_{ad}.".to_string(),
+        "The pins *O*_{ad}, *O*_{ab}, *O*_{bc} are *C*, *B*, *A* of Figs. 62–67; by Kennedy’s theorem *O*_{bd} on *O*_{ad}*O*_{ab} and on the normal to the stroke at *O*_{bc}, *O*_{ac} on *O*_{ab}*O*_{bc} and on the normal at *O*_{ad}.".to_string(),
     ];
     let bottom = rect.y + rect.height + 6.0;
     sheet.height(bottom + notes_height);

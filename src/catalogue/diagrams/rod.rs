@@ -103,7 +103,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.notes(
         Point::new(20.0, page.height() - 36.0),
         &[format!(
-            "*r* = {} {u}, *l* = {} {u} (*n* = {}), {} rpm (ω = {} rad/s). Signs as in the textbook and Ng's paper: the rod turns counter-clockwise at −dφ/d*t*.",
+            "*r* = {} {u}, *l* = {} {u} (*n* = {}), {} rpm (ω = {} rad/s). Signs as in the textbook and Ng’s paper: the rod turns counter-clockwise at −dφ/d*t*.",
             short(m.crank()),
             short(m.rod()),
             short(n),

@@ -157,7 +157,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 "Scale: *CB* = *r* represents *V*_c = *r*ω = {} {unit}/s; *CE*′ and the height of *E*″ represent *V*_p to the same scale.",
                 sig(vc)
             ),
-            "*E*′ is set off on the crank itself (*CE*′ = *CE*), so the return stroke's loop lies below the crank centre.".to_string(),
+            "*E*′ is set off on the crank itself (*CE*′ = *CE*), so the return stroke’s loop lies below the crank centre.".to_string(),
         ],
     );
     Ok(sheet.finish())

@@ -16,8 +16,9 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
     let u = scene.units().length();
     let l = |n| ctx.letter(n);
     let (c, b, e) = (l(CrankCentre), l(CrankPin), l(VelocityPoint));
+    let v = scene.notation().velocity();
     let mut out = vec![RichText::parse(&format!(
-        "Velocity scale: *{c}{b}* = {} {u} represents *V*_c = *r*ω = {} {u}/s, so 1 {u} = {} {u}/s.",
+        "Velocity scale: *{c}{b}* = {} {u} represents *{v}*_c = *r*ω = {} {u}/s, so 1 {u} = {} {u}/s.",
         short(r),
         sig(r * w),
         sig(w)
@@ -27,8 +28,8 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
         .any(|x| scene.has(*x));
     if uses_e {
         let ce = ctx.main.e().ce();
-        let v = w * ce.abs();
-        let dir = if v == 0.0 {
+        let speed = w * ce.abs();
+        let dir = if speed == 0.0 {
             String::from(" (dead centre: at rest)")
         } else if scene.omega() * ce > 0.0 {
             format!(", towards *{c}*")
@@ -36,9 +37,9 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
             format!(", away from *{c}*")
         };
         out.push(RichText::parse(&format!(
-            "*{c}{e}* = {} {u} represents the piston velocity *V*_p = {} {u}/s{dir}.",
+            "*{c}{e}* = {} {u} represents the piston velocity *{v}*_p = {} {u}/s{dir}.",
             sig(ce.abs()),
-            sig(v)
+            sig(speed)
         )));
     }
     let acceleration = if scene.has(Layer::Kisch) {
@@ -74,7 +75,7 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
         let bd = (d - pose.b()).norm();
         if bd > 0.0 {
             out.push(RichText::parse(&format!(
-                "Rod: angular velocity *V*_c / *{b}{}* = {} rad/s.",
+                "Rod: angular velocity *{v}*_c / *{b}{}* = {} rad/s.",
                 l(InstantCentre),
                 sig(r * w / bd)
             )));

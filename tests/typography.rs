@@ -1,0 +1,203 @@
+//! One typographic convention in every figure, read from the written SVG
+//! alone (docs/design.md, "Typography"): a small Greek letter (a
+//! quantity's symbol, π excepted) is italic wherever it is written,
+//! drawing, legend, caption or note; digits, subscripts and exponents are
+//! upright; a prime is set in the style of the letter it marks; no
+//! straight apostrophe is set.
+
+use slider_crank::catalogue::FigureOptions;
+use slider_crank::render::to_svg;
+use slider_crank::{FigureName, Notation};
+
+/// One character as set: the character, italic, and whether it is in a
+/// subscript or exponent (a run with a size of its own).
+#[derive(Debug, Clone, Copy)]
+struct Set {
+    c: char,
+    italic: bool,
+    small: bool,
+}
+
+/// The value of attribute `name` in a start tag's text.
+fn attr<'a>(tag: &'a str, name: &str) -> Option<&'a str> {
+    let key = format!(" {name}=\"");
+    let at = tag.find(&key)? + key.len();
+    tag[at..].find('"').map(|end| &tag[at..at + end])
+}
+
+/// The characters of `text` (element content), entities decoded.
+fn chars(text: &str) -> Vec<char> {
+    text.replace("&lt;", "<")
+        .replace("&gt;", ">")
+        .replace("&quot;", "\"")
+        .replace("&apos;", "'")
+        .replace("&amp;", "&")
+        .chars()
+        .collect()
+}
+
+/// Every `<text>` of `svg`: its id and its characters as set. The writer
+/// puts runs in flat `<tspan>`s, each with the attributes it changes.
+fn texts(svg: &str) -> Vec<(String, Vec<Set>)> {
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(start) = rest.find("<text ") {
+        let tag_end = start + rest[start..].find('>').expect("a closed tag");
+        let tag = &rest[start..tag_end];
+        let close = tag_end + rest[tag_end..].find("</text>").expect("a text closes");
+        let base = attr(tag, "font-style") == Some("italic");
+        let id = attr(tag, "id").unwrap_or("").to_string();
+        let mut set = Vec::new();
+        let mut body = &rest[tag_end + 1..close];
+        while !body.is_empty() {
+            match body.find("<tspan") {
+                Some(0) => {
+                    let open = body.find('>').expect("a closed tspan tag");
+                    let span = &body[..open];
+                    let end = body.find("</tspan>").expect("a tspan closes");
+                    let italic = attr(span, "font-style").map_or(base, |s| s == "italic");
+                    let small = attr(span, "font-size").is_some();
+                    for c in chars(&body[open + 1..end]) {
+                        set.push(Set { c, italic, small });
+                    }
+                    body = &body[end + "</tspan>".len()..];
+                }
+                found => {
+                    let end = found.unwrap_or(body.len());
+                    for c in chars(&body[..end]) {
+                        set.push(Set {
+                            c,
+                            italic: base,
+                            small: false,
+                        });
+                    }
+                    body = &body[end..];
+                }
+            }
+        }
+        out.push((id, set));
+        rest = &rest[close..];
+    }
+    out
+}
+
+/// What breaks the convention in one text, if anything.
+fn fault(text: &[Set]) -> Option<String> {
+    for (i, s) in text.iter().enumerate() {
+        let greek = matches!(s.c, 'α'..='ω' | 'ϑ' | 'ϕ' | 'ϵ') && s.c != 'π';
+        if greek && !s.italic {
+            return Some(format!("{} upright", s.c));
+        }
+        if s.c.is_ascii_digit() && s.italic {
+            return Some(format!("digit {} italic", s.c));
+        }
+        if s.small && s.italic {
+            return Some(format!("subscript or exponent {} italic", s.c));
+        }
+        if s.c == '\'' {
+            return Some("a straight apostrophe".into());
+        }
+        if matches!(s.c, '′' | '″' | '‴')
+            && let Some(before) = i.checked_sub(1).and_then(|j| text.get(j))
+            && before.c.is_alphabetic()
+            && !before.small
+            && before.italic != s.italic
+        {
+            return Some(format!("{}{} in two styles", before.c, s.c));
+        }
+    }
+    None
+}
+
+/// The whole text, for a message.
+fn plain(text: &[Set]) -> String {
+    text.iter().map(|s| s.c).collect()
+}
+
+#[test]
+fn every_figure_sets_one_typographic_convention() {
+    let mut cases: Vec<(String, String)> = FigureName::ALL
+        .iter()
+        .map(|name| {
+            let svg = to_svg(&name.figure(&FigureOptions::default()).unwrap());
+            (name.name().to_string(), svg)
+        })
+        .collect();
+    for name in [FigureName::Fig67Example, FigureName::Fig63Velocity] {
+        let mut options = FigureOptions::default();
+        options.notation = Some(Notation::Ng);
+        let svg = to_svg(&name.figure(&options).unwrap());
+        cases.push((format!("{} --notation ng", name.name()), svg));
+    }
+    let mut faults = Vec::new();
+    for (what, svg) in &cases {
+        for (id, text) in texts(svg) {
+            if let Some(f) = fault(&text) {
+                faults.push(format!("{what} #{id}: {f} in \"{}\"", plain(&text)));
+            }
+        }
+    }
+    assert!(faults.is_empty(), "{}", faults.join("\n"));
+}
+
+#[test]
+fn the_checker_sees_each_fault() {
+    // The checker itself, on texts the writer could set wrongly.
+    let svg = |body: &str| format!("<svg><text id=\"t\" font-style=\"normal\">{body}</text></svg>");
+    let fault_of = |body: &str| {
+        let t = texts(&svg(body));
+        fault(&t[0].1)
+    };
+    assert_eq!(fault_of("at θ = 30°"), Some("θ upright".into()));
+    assert_eq!(
+        fault_of("<tspan font-style=\"italic\">θ</tspan> = 30°"),
+        None
+    );
+    assert_eq!(
+        fault_of("<tspan font-style=\"italic\">E</tspan>′"),
+        Some("E′ in two styles".into())
+    );
+    assert_eq!(fault_of("<tspan font-style=\"italic\">E′</tspan>"), None);
+    assert_eq!(
+        fault_of(
+            "<tspan font-style=\"italic\">P</tspan><tspan dy=\"3\" font-size=\"9\" font-style=\"italic\">1</tspan>"
+        ),
+        Some("digit 1 italic".into())
+    );
+    assert_eq!(
+        fault_of("V<tspan dy=\"3\" font-size=\"9\" font-style=\"italic\">c</tspan>"),
+        Some("subscript or exponent c italic".into())
+    );
+    assert_eq!(
+        fault_of("Ng&apos;s paper"),
+        Some("a straight apostrophe".into())
+    );
+    assert_eq!(fault_of("2π rad, Ng’s paper"), None);
+}
+
+/// Whether a text sets the velocity letter `v` (italic) with the
+/// subscript c or p.
+fn has_velocity(text: &[Set], v: char) -> bool {
+    text.windows(2)
+        .any(|w| w[0].c == v && w[0].italic && w[1].small && matches!(w[1].c, 'c' | 'p'))
+}
+
+#[test]
+fn ng_notation_writes_ngs_small_v() {
+    // Issue 20: `--notation ng` on Fig. 67 still wrote V_c, V_p where Ng
+    // writes v_c, v_p; the textbook's letters stay capital.
+    for (notation, ours, theirs) in [(Notation::Ng, 'v', 'V'), (Notation::Textbook, 'V', 'v')] {
+        let mut options = FigureOptions::default();
+        options.notation = Some(notation);
+        let svg = to_svg(&FigureName::Fig67Example.figure(&options).unwrap());
+        let all = texts(&svg);
+        assert!(
+            all.iter().any(|(_, t)| has_velocity(t, ours)),
+            "{notation:?}"
+        );
+        assert!(
+            !all.iter().any(|(_, t)| has_velocity(t, theirs)),
+            "{notation:?}"
+        );
+    }
+}
