@@ -5,9 +5,11 @@
 //! upright; a prime is set in the style of the letter it marks; no
 //! straight apostrophe is set.
 
+use skrifa::MetadataProvider;
 use slider_crank::catalogue::FigureOptions;
+use slider_crank::figure::FontStyle;
 use slider_crank::render::to_svg;
-use slider_crank::{FigureName, Notation};
+use slider_crank::{FigureName, Font, Notation};
 
 /// One character as set: the character, italic, and whether it is in a
 /// subscript or exponent (a run with a size of its own).
@@ -97,7 +99,7 @@ fn fault(text: &[Set]) -> Option<String> {
         if s.c == '\'' {
             return Some("a straight apostrophe".into());
         }
-        if matches!(s.c, '′' | '″' | '‴')
+        if matches!(s.c, '′' | '″' | '‴' | 'ʹ' | 'ʺ')
             && let Some(before) = i.checked_sub(1).and_then(|j| text.get(j))
             && before.c.is_alphabetic()
             && !before.small
@@ -199,5 +201,45 @@ fn ng_notation_writes_ngs_small_v() {
             !all.iter().any(|(_, t)| has_velocity(t, theirs)),
             "{notation:?}"
         );
+    }
+}
+
+/// Whether the text face of `font` in `style` (not its maths face) has
+/// `c`, read from the font file's character map.
+fn text_face_has(font: Font, style: FontStyle, c: char) -> bool {
+    let face = skrifa::FontRef::new(font.data(style)).unwrap();
+    face.charmap().map(c).is_some()
+}
+
+#[test]
+fn every_character_is_in_its_own_text_face() {
+    // A character the text face lacks (′, ∫ in New Computer Modern) is
+    // found by a renderer in the maths face, and resvg then sets the whole
+    // line in that upright face: every italic of it lost in the PNG and
+    // the PDF (issue 20, "F′, theory: F(1 − μ tan φ)" all roman). Every
+    // character of every figure, in both faces, is in the text face of its
+    // own style.
+    for font in Font::ALL {
+        let mut options = FigureOptions::default();
+        options.font = Some(font);
+        for name in FigureName::ALL {
+            let svg = to_svg(&name.figure(&options).unwrap());
+            for (id, text) in texts(&svg) {
+                for s in &text {
+                    let style = if s.italic {
+                        FontStyle::Italic
+                    } else {
+                        FontStyle::Regular
+                    };
+                    assert!(
+                        s.c == '\u{a0}' || text_face_has(font, style, s.c),
+                        "{} in {font}: {:?} ({style:?}) of #{id} \"{}\" is not in the text face",
+                        name.name(),
+                        s.c,
+                        plain(&text)
+                    );
+                }
+            }
+        }
     }
 }

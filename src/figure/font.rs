@@ -203,7 +203,8 @@ impl Font {
 
     /// The family name in the font files (what a renderer matches).
     /// Characters missing from the text faces of New Computer Modern (the
-    /// primes ′ and ″) come from its maths face, NewComputerModern Math.
+    /// primes ′ and ″, which figures set as ʹ and ʺ, and ∫) come from its
+    /// maths face, NewComputerModern Math.
     pub fn family(&self) -> &'static str {
         match self {
             Font::NewComputerModern => "NewComputerModern",
@@ -521,12 +522,14 @@ mod tests {
     }
 
     /// The characters the glyph table holds, where a face (or its
-    /// symbols face) has them: ASCII and Latin-1, Greek, the dashes,
-    /// quotes and primes, super- and subscripts, arrows and the
+    /// symbols face) has them: ASCII and Latin-1, the modifier primes
+    /// (the primes figures set), Greek, the dashes, quotes and primes,
+    /// super- and subscripts, arrows and the
     /// mathematical signs the figures write.
-    const TABLE_RANGES: [(char, char); 9] = [
+    const TABLE_RANGES: [(char, char); 10] = [
         (' ', '~'),
         ('\u{a0}', 'ÿ'),
+        ('ʹ', 'ʺ'),
         ('Α', 'ω'),
         ('ϑ', 'ϖ'),
         ('\u{2010}', '\u{2044}'),

@@ -126,7 +126,7 @@ impl RichText {
                     ),
                     None => {
                         let style = italic || is_quantity_greek(c) || primes_italic(&runs, c);
-                        push(&mut runs, c.to_string(), false, style)
+                        push(&mut runs, text_prime(c).to_string(), false, style)
                     }
                 },
             }
@@ -206,10 +206,23 @@ fn is_quantity_greek(c: char) -> bool {
     matches!(c, 'α'..='ω' | 'ϑ' | 'ϕ' | 'ϵ') && c != 'π' && c != 'ς'
 }
 
+/// The prime `c` as the text faces set it: ′ and ″ as the modifier
+/// primes ʹ and ʺ, which every bundled text face has in both styles (New
+/// Computer Modern's text faces have no ′: a renderer finding it only in
+/// the maths face would set the whole line in that upright face); any
+/// other character as it is.
+fn text_prime(c: char) -> char {
+    match c {
+        '′' => 'ʹ',
+        '″' => 'ʺ',
+        c => c,
+    }
+}
+
 /// Whether `c` is a prime that follows an italic letter, and so is set in
 /// italic with it (the prime belongs to the symbol it marks: *E*′).
 fn primes_italic(runs: &[Run], c: char) -> bool {
-    matches!(c, '′' | '″' | '‴')
+    matches!(c, '′' | '″' | '‴' | 'ʹ' | 'ʺ')
         && runs
             .last()
             .is_some_and(|r| r.italic && !r.subscript && !r.superscript)
@@ -383,14 +396,15 @@ mod tests {
             .iter()
             .map(|r| (r.text.as_str(), r.italic))
             .collect();
-        assert_eq!(runs, vec![("F", true), ("p", false), ("′", true)]);
+        assert_eq!(runs, vec![("F", true), ("p", false), ("ʹ", true)]);
         assert_eq!(RichText::parse("a_").plain(), "a_");
     }
 
     #[test]
     fn one_convention_greek_italic_primes_with_their_letter() {
         // Issue 20: θ upright in notes beside italic θ in the drawing, a
-        // roman prime after an italic E, italic subscript digits.
+        // roman prime after an italic E, italic subscript digits. Primes
+        // are set as the modifier primes the text faces have.
         let t = RichText::parse("at θ = 30°, *E*′ and *CG*″, 2π rad, ω², *P*_1, E′");
         let runs: Vec<(&str, bool)> = t
             .runs()
@@ -403,16 +417,16 @@ mod tests {
                 ("at ", false),
                 ("θ", true),
                 (" = 30°, ", false),
-                ("E′", true),
+                ("Eʹ", true),
                 (" and ", false),
-                ("CG″", true),
+                ("CGʺ", true),
                 (", 2π rad, ", false),
                 ("ω", true),
                 ("2", false),
                 (", ", false),
                 ("P", true),
                 ("1", false),
-                (", E′", false),
+                (", Eʹ", false),
             ]
         );
         for c in ['α', 'β', 'θ', 'φ', 'ϕ', 'ω', 'μ'] {

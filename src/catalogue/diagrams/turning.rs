@@ -134,7 +134,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         ctx.tolerance,
         ctx.font,
     )?
-    .with_caption("(b) Energy stored in the flywheel, *E* = ∫ (*T* − *T*_{mean}) dθ, and its fluctuation Δ*E*");
+    .with_caption("(b) Energy stored in the flywheel, *E*, the area under *T* − *T*_{mean} from θ = 0, and its fluctuation Δ*E*");
     let e_curve = move |deg: f64| -> Option<(Point, Vector)> {
         let slope = torque(deg) - tm.mean;
         Some((
