@@ -243,3 +243,117 @@ fn every_character_is_in_its_own_text_face() {
         }
     }
 }
+
+/// The page sizes an author fixes (issue 20): a column of 120 mm, a
+/// 4.5-inch column, and a wide short page.
+const FIXED_PAGES: [(&str, Option<&str>); 3] =
+    [("120mm", None), ("4.5in", None), ("800", Some("300"))];
+
+/// The value of a `<text>`'s attribute, as a number.
+fn number(tag: &str, name: &str) -> f64 {
+    attr(tag, name).and_then(|v| v.parse().ok()).unwrap()
+}
+
+#[test]
+fn notes_keep_their_size_on_a_fixed_page() {
+    // `--width 120mm` shrank Fig. 60's notes to 4–6 pt while its letters
+    // stayed 12.75 pt; the notes now wrap (and the page grows) instead:
+    // every line of every note is set at the notes' 13 units, on every
+    // figure at each fixed size, and none reaches past the page's right
+    // edge (widths from the face's own advances).
+    let font = Font::NewComputerModern;
+    for (width, height) in FIXED_PAGES {
+        for name in FigureName::ALL {
+            let mut options = FigureOptions::default();
+            options.width = Some(width.parse().unwrap());
+            options.height = height.map(|h| h.parse().unwrap());
+            // A diagram whose plots do not fit a page refuses it by name.
+            let figure = match name.figure(&options) {
+                Ok(f) => f,
+                Err(e) if e.to_string().contains("leaves no room for the plots") => continue,
+                Err(e) => panic!("{}: {e}", name.name()),
+            };
+            let svg = to_svg(&figure);
+            let view: Vec<f64> = attr(&svg, "viewBox")
+                .unwrap()
+                .split(' ')
+                .map(|v| v.parse().unwrap())
+                .collect();
+            let mut rest = svg.as_str();
+            while let Some(at) = rest.find("<text ") {
+                let tag = &rest[at..at + rest[at..].find('>').unwrap()];
+                rest = &rest[at + tag.len()..];
+                if !attr(tag, "id").unwrap_or("").starts_with("note-") {
+                    continue;
+                }
+                let size = number(tag, "font-size");
+                let what = format!("{} at {width} × {height:?}: {tag}", name.name());
+                assert_eq!(size, 13.0, "{what}");
+                let text = &rest[1..rest.find("</text>").unwrap()];
+                let (_, set) = &texts(&format!("{tag}>{text}</text>"))[0];
+                let advance: f64 = set
+                    .iter()
+                    .map(|s| {
+                        let style = if s.italic {
+                            FontStyle::Italic
+                        } else {
+                            FontStyle::Regular
+                        };
+                        font.width(
+                            &s.c.to_string(),
+                            if s.small { 0.7 * size } else { size },
+                            style,
+                        )
+                    })
+                    .sum();
+                assert!(
+                    number(tag, "x") + advance <= view[2] + 0.5,
+                    "{what}: {advance}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn panel_captions_never_run_together() {
+    // Fig. 60's three captions at 120 mm ran into each other; each is
+    // now broken to its panel's width. The lines of neighbouring
+    // captions at one height do not overlap.
+    let font = Font::NewComputerModern;
+    for (width, height) in FIXED_PAGES {
+        let mut options = FigureOptions::default();
+        options.width = Some(width.parse().unwrap());
+        options.height = height.map(|h| h.parse().unwrap());
+        let svg = to_svg(&FigureName::Fig60Chains.figure(&options).unwrap());
+        let mut spans: Vec<(f64, f64, f64)> = Vec::new();
+        for (id, set) in texts(&svg) {
+            if !id.starts_with("caption") {
+                continue;
+            }
+            let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+            let start = svg[..at].rfind("<text ").unwrap();
+            let tag = &svg[start..at + svg[at..].find('>').unwrap()];
+            let (x, y, size) = (number(tag, "x"), number(tag, "y"), number(tag, "font-size"));
+            let w: f64 = set
+                .iter()
+                .map(|s| {
+                    let style = if s.italic {
+                        FontStyle::Italic
+                    } else {
+                        FontStyle::Regular
+                    };
+                    font.width(&s.c.to_string(), size, style)
+                })
+                .sum();
+            spans.push((y, x - 0.5 * w, x + 0.5 * w));
+        }
+        assert!(spans.len() >= 3, "{width}: {spans:?}");
+        for (i, a) in spans.iter().enumerate() {
+            for b in &spans[i + 1..] {
+                let apart = (a.0 - b.0).abs() > 1.0 || a.2 <= b.1 || b.2 <= a.1;
+                assert!(apart, "{width}: captions overlap {a:?} {b:?}");
+            }
+        }
+    }
+}

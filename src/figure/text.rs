@@ -198,6 +198,86 @@ impl RichText {
     pub fn width(&self, font: Font, size: f64) -> f64 {
         self.measure(font, size).width
     }
+
+    /// The text broken at its spaces into lines no wider than `width` set
+    /// in `font` at `size`, as many words on each as fit, so that a note
+    /// keeps its size on a narrow page. A word wider than `width` has a
+    /// line of its own (it is never cut); a text that fits is one line;
+    /// an empty text stays one empty line. Only plain spaces break: a
+    /// no-break space, or a space in a subscript, holds its words
+    /// together.
+    pub fn wrap(&self, font: Font, size: f64, width: f64) -> Vec<RichText> {
+        if self.width(font, size) <= width {
+            return vec![self.clone()];
+        }
+        let mut lines = Vec::new();
+        let mut line = RichText::default();
+        for word in self.words() {
+            if line.runs.is_empty() {
+                line = word;
+                continue;
+            }
+            let mut longer = line.clone();
+            longer.push(Run {
+                text: " ".into(),
+                subscript: false,
+                superscript: false,
+                italic: false,
+            });
+            for r in word.runs.iter().cloned() {
+                longer.push(r);
+            }
+            if longer.width(font, size) <= width {
+                line = longer;
+            } else {
+                lines.push(std::mem::replace(&mut line, word));
+            }
+        }
+        lines.push(line);
+        lines
+    }
+
+    /// The words of the text: its runs cut at the plain spaces of
+    /// ordinary (not sub- or superscript) runs, the spaces dropped.
+    fn words(&self) -> Vec<RichText> {
+        let mut words = Vec::new();
+        let mut word = RichText::default();
+        for run in &self.runs {
+            if run.subscript || run.superscript {
+                word.push(run.clone());
+                continue;
+            }
+            for (i, piece) in run.text.split(' ').enumerate() {
+                if i > 0 && !word.runs.is_empty() {
+                    words.push(std::mem::take(&mut word));
+                }
+                if !piece.is_empty() {
+                    word.push(Run {
+                        text: piece.to_string(),
+                        ..run.clone()
+                    });
+                }
+            }
+        }
+        if !word.runs.is_empty() {
+            words.push(word);
+        }
+        words
+    }
+
+    /// Appends `run`, joined to the last run when their styles agree.
+    fn push(&mut self, run: Run) {
+        match self.runs.last_mut() {
+            Some(last)
+                if last.subscript == run.subscript
+                    && last.superscript == run.superscript
+                    && last.italic == run.italic =>
+            {
+                last.text.push_str(&run.text)
+            }
+            _ => self.runs.push(run),
+        }
+    }
 }
 
 /// Whether `c` is a small Greek letter, set italic as a quantity's
@@ -435,6 +515,53 @@ mod tests {
         for c in ['π', 'Δ', 'Ω', 'a', '′'] {
             assert!(!is_quantity_greek(c), "{c}");
         }
+    }
+
+    #[test]
+    fn notes_wrap_at_spaces_and_keep_their_runs() {
+        let f = Font::NewComputerModern;
+        let t = RichText::parse("The pins *O*_{ad} and *O*_{ab} are *C* and *B* of Figs. 62–67.");
+        let whole = t.width(f, 13.0);
+        // Wide enough: one line, the same text.
+        assert_eq!(t.wrap(f, 13.0, whole), vec![t.clone()]);
+        // A third of the width: several lines, each within it (but for a
+        // word wider than it), together the same words in the same styles.
+        let lines = t.wrap(f, 13.0, whole / 3.0);
+        assert!(lines.len() >= 3, "{lines:?}");
+        for l in &lines {
+            assert!(l.width(f, 13.0) <= whole / 3.0 + 1e-9, "{l:?}");
+        }
+        let joined: Vec<String> = lines.iter().map(RichText::plain).collect();
+        assert_eq!(joined.join(" "), t.plain());
+        let styled = |ts: &[RichText]| -> Vec<(String, bool, bool)> {
+            ts.iter()
+                .flat_map(|l| {
+                    l.runs()
+                        .iter()
+                        .map(|r| (r.text.replace(' ', ""), r.subscript, r.italic))
+                })
+                .filter(|(s, _, _)| !s.is_empty())
+                .collect()
+        };
+        let (a, b) = (styled(&lines), styled(std::slice::from_ref(&t)));
+        let concat = |v: &[(String, bool, bool)]| -> Vec<(String, bool, bool)> {
+            let mut out: Vec<(String, bool, bool)> = Vec::new();
+            for (s, sub, it) in v {
+                match out.last_mut() {
+                    Some(l) if l.1 == *sub && l.2 == *it => l.0.push_str(s),
+                    _ => out.push((s.clone(), *sub, *it)),
+                }
+            }
+            out
+        };
+        assert_eq!(concat(&a), concat(&b));
+        // A word longer than the width is never cut.
+        let long = RichText::parse("Supercalifragilistic word");
+        let lines = long.wrap(f, 13.0, 10.0);
+        assert_eq!(
+            lines.iter().map(RichText::plain).collect::<Vec<_>>(),
+            ["Supercalifragilistic", "word"]
+        );
     }
 
     #[test]

@@ -56,7 +56,7 @@ pub fn to_pdf(svg: &str) -> crate::Result<Vec<u8>> {
     ))
 }
 
-pub(crate) use sizes::NOTE_LINE;
+pub(crate) use sizes::{NOTE_LINE, NOTE_SIZE};
 
 #[cfg(test)]
 mod tests {

@@ -9,7 +9,7 @@
 //! the cylindric chain; (c) is today's engine. The slot radius is
 //! [`slot_radius`] of the mechanism.
 
-use super::sketch::{Sketch, Slot};
+use super::sketch::{BEARING_REACH, Sketch, Slot};
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, CylindricChain};
 use crate::diagram::Plot;
@@ -18,6 +18,9 @@ use crate::figure::{Align, Figure, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::{Angle, SliderCrank};
 use serde_json::json;
+
+/// The distance between the lines of a panel's caption, page units.
+const CAPTION_LINE: f64 = 16.0;
 
 /// The slot radius drawn in (b): 0.8 (l + r + |e|), well above the
 /// least radius the crank turns with, (l + r + e)/2.
@@ -112,6 +115,24 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let map = *plot.map();
     let shown = map.world_frame(&plot.area());
     let mut centres = serde_json::Map::new();
+    // Each panel's caption broken to the panel's width at its own size, so
+    // that a narrow page gives two lines, never captions run together.
+    let caption_size = ctx.style.font_size(TextSize::Small);
+    let room = (step - gap) * map.scale() - 4.0;
+    let captions: Vec<Vec<RichText>> = [
+        "(a) quadric crank chain".to_string(),
+        // No-break spaces keep each equation on one line.
+        format!("(b) block in a curved slot, ρ\u{a0}=\u{a0}{}", short(rho)),
+        "(c) straight slot, ρ\u{a0}=\u{a0}∞".to_string(),
+    ]
+    .iter()
+    .map(|c| RichText::parse(c).wrap(ctx.font, caption_size, room))
+    .collect();
+    // Below O_cd's bearing, which keeps its page size however small the
+    // panel's pad is drawn.
+    let clear = (BEARING_REACH - pad * map.scale()).max(0.0);
+    let extra =
+        clear + CAPTION_LINE * (captions.iter().map(Vec::len).max().unwrap_or(1) - 1) as f64;
 
     for (k, suffix) in ["-a", "-b", "-c"].into_iter().enumerate() {
         let dx = Vector::new(k as f64 * step, 0.0);
@@ -225,23 +246,20 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 centres.insert(key.into(), ChainCentres::of_cylindric(&pose).to_json());
             }
         }
-        let caption = match k {
-            0 => "(a) quadric crank chain".to_string(),
-            1 => format!("(b) block in a curved slot, ρ = {}", short(rho)),
-            _ => "(c) straight slot, ρ = ∞".to_string(),
-        };
         let cx = x0 + 0.5 * width + dx.x;
-        s.push(
-            "caption",
-            Role::Label,
-            Shape::Text {
-                at: Point::new(cx, shown.min().y),
-                offset: Vector::new(0.0, 12.0),
-                text: RichText::parse(&caption),
-                align: Align::Middle,
-                size: TextSize::Small,
-            },
-        );
+        for (i, line) in captions.get(k).into_iter().flatten().enumerate() {
+            s.push(
+                if i == 0 { "caption" } else { "caption-more" },
+                Role::Label,
+                Shape::Text {
+                    at: Point::new(cx, shown.min().y),
+                    offset: Vector::new(0.0, 12.0 + clear + CAPTION_LINE * i as f64),
+                    text: line.clone(),
+                    align: Align::Middle,
+                    size: TextSize::Small,
+                },
+            );
+        }
         for item in s.finish() {
             plot.push(item);
         }
@@ -252,7 +270,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.meta("slot_radius", json!(rho));
     sheet.meta("virtual_centres", serde_json::Value::Object(centres));
     sheet.plot(plot);
-    let bottom = rect.y + rect.height + 6.0;
+    let bottom = rect.y + rect.height + 6.0 + extra;
     sheet.height(bottom + notes_height);
     sheet.notes(
         Point::new(20.0, bottom),

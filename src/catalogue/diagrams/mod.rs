@@ -28,6 +28,7 @@ use crate::figure::Style;
 use crate::figure::{Figure, Font, PageRect, Panel, RichText};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
 use crate::geom::{Point, Vector};
+use crate::render::{NOTE_LINE, NOTE_SIZE};
 use crate::scene::{Page, Scene};
 use crate::{Angle, Pose, SliderCrank, Unit, Units};
 use serde_json::{Map, Value, json};
@@ -260,6 +261,9 @@ pub(crate) struct Sheet {
     meta: Map<String, Value>,
     /// The page's height when not the catalogue's (fitted to a drawing).
     height: Option<f64>,
+    /// The height the notes' wrapped lines add to what the sheet laid
+    /// out for them (a line each), page units: the page grows by it.
+    notes_extra: f64,
 }
 
 impl Sheet {
@@ -275,6 +279,7 @@ impl Sheet {
             plots: Vec::new(),
             meta: Map::new(),
             height: None,
+            notes_extra: 0.0,
         }
     }
 
@@ -324,21 +329,25 @@ impl Sheet {
 
     /// Lines of notes from `corner` (page units) down, in a panel of their
     /// own (`panel-notes`).
+    /// Each line is broken to fit the page at the notes' size (as the
+    /// writer sets them from `corner`, with 8 units to spare), so that a
+    /// narrow page adds lines, and grows to hold them, instead of
+    /// shrinking the type.
     pub fn notes(&mut self, corner: Point, lines: &[String]) {
-        let item = Item::new(
-            "note-diagram",
-            Role::Label,
-            Shape::Note {
-                corner,
-                lines: lines.iter().map(|l| RichText::parse(l)).collect(),
-            },
-        );
+        let room = self.page.width() - MARGIN - corner.x - 8.0;
+        let given = lines.len();
+        let lines: Vec<RichText> = lines
+            .iter()
+            .flat_map(|l| RichText::parse(l).wrap(self.font, NOTE_SIZE, room))
+            .collect();
+        self.notes_extra = NOTE_LINE * lines.len().saturating_sub(given) as f64;
+        let item = Item::new("note-diagram", Role::Label, Shape::Note { corner, lines });
         let page = self.page;
         let rect = PageRect::new(
             corner.x,
             corner.y,
             (page.width() - MARGIN - corner.x).max(1.0),
-            (self.height.unwrap_or(page.height()) - MARGIN - corner.y).max(1.0),
+            (self.height.unwrap_or(page.height()) + self.notes_extra - MARGIN - corner.y).max(1.0),
         );
         self.panels.push(Panel::new(
             "panel-notes",
@@ -352,7 +361,7 @@ impl Sheet {
     /// significant digits (stable text).
     pub fn finish(mut self) -> Figure {
         let page = self.page;
-        let height = self.height.unwrap_or(page.height());
+        let height = self.height.unwrap_or(page.height()) + self.notes_extra;
         if !self.plots.is_empty() {
             self.meta.insert("plots".into(), Value::Array(self.plots));
         }

@@ -26,7 +26,7 @@ const HATCH_SLANT: f64 = 6.0;
 /// Room left unhatched at a fixed link's pins, page units.
 pub(super) const PIN_CLEAR: f64 = 8.0;
 /// Half width and depth of a bearing below its centre, page units.
-const BEARING_REACH: f64 = 25.0;
+pub(super) const BEARING_REACH: f64 = 25.0;
 /// Clear distance between a guide and the crank circle or a bearing.
 const CIRCLE_CLEARANCE: f64 = 7.0;
 /// Shortest guide drawn, page units.

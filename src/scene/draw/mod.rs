@@ -22,7 +22,7 @@ use crate::figure::{
     Align, Figure, Hue, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
 };
 use crate::geom::{Frame, Point, Vector};
-use crate::render::NOTE_LINE;
+use crate::render::{NOTE_LINE, NOTE_SIZE};
 use serde_json::{Map, Value, json};
 
 /// Room kept around the fitted drawing for letters, in page units.
@@ -184,7 +184,15 @@ fn notes(ctx: &Ctx) -> Vec<RichText> {
     if scene.mechanism().offset() != 0.0 {
         notes.push(RichText::parse(&offset_note(scene)));
     }
+    // Each note broken into lines that fit the page at the notes' size
+    // (set from `mg + 4` with 8 units to spare, as the writer sets them),
+    // so that a narrow page adds lines instead of shrinking the type.
+    let page = scene.page();
+    let room = page.width() - 2.0 * page.margin() - 12.0;
     notes
+        .iter()
+        .flat_map(|n| n.wrap(scene.font(), NOTE_SIZE, room))
+        .collect()
 }
 
 /// The band the notes take below the panels, page units.
