@@ -373,6 +373,16 @@ mod tests {
     }
 
     #[test]
+    fn a_scene_without_an_angle_is_refused_not_a_panic() {
+        let scene = engine().with_angles(Vec::new());
+        let e = Animation::new(&scene, 4, 1.0).unwrap_err();
+        assert!(e.to_string().contains("at least one angle"), "{e}");
+        let mut sink = |_: &str| Ok(());
+        let e = write(&scene, (4, 1.0), AnimationFormat::Svg, &mut sink, |_, _| {}).unwrap_err();
+        assert!(e.to_string().contains("at least one angle"), "{e}");
+    }
+
+    #[test]
     fn progress_counts_every_frame() {
         let mut seen = Vec::new();
         let a = Animation::with_progress(&engine(), 3, 1.0, |d, n| seen.push((d, n))).unwrap();
