@@ -117,10 +117,10 @@
 //! design, the command-line contract and the JSON schema are in
 //! `docs/design.md` in the repository.
 #![deny(missing_docs)]
-// No panic on a path from input: an `unwrap` or `expect` outside the
-// tests is allowed only where a comment proves it cannot fail
+// No panic on a path from input: an `unwrap`, `expect`, index or slice
+// outside the tests is allowed only where a comment proves it cannot fail
 // (`tests/panic_free.rs` holds every allowance to one).
-#![deny(clippy::unwrap_used, clippy::expect_used)]
+#![deny(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
 
 /// `FromStr` through `from_name` and `Display` through `name` for a value
 /// enum named on the command line and in scene files, so that

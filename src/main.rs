@@ -1,7 +1,7 @@
 //! The `slider-crank` command line.
-// As in the library: no `unwrap` or `expect` without a proof it cannot
-// fail (`tests/panic_free.rs`).
-#![deny(clippy::unwrap_used, clippy::expect_used)]
+// As in the library: no `unwrap`, `expect`, index or slice without a
+// proof it cannot fail (`tests/panic_free.rs`).
+#![deny(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
 
 mod cli;
 

@@ -112,6 +112,9 @@ fn fixed_fast(x: f64, decimals: usize) -> Option<String> {
     let p = 10u64.pow(decimals as u32);
     let mut digits = [0u8; 40];
     let mut at = digits.len();
+    // cannot fail: n ≤ 1e15 and decimals ≤ 17 (`POW10`), so at most 17
+    // decimals, a point, 16 whole digits and a sign: 35 bytes of the 40.
+    #[allow(clippy::indexing_slicing)]
     let mut put = |b: u8| {
         at -= 1;
         digits[at] = b;
@@ -135,7 +138,9 @@ fn fixed_fast(x: f64, decimals: usize) -> Option<String> {
     if x < 0.0 && n != 0 {
         put(b'-');
     }
-    std::str::from_utf8(&digits[at..]).ok().map(str::to_owned)
+    std::str::from_utf8(digits.get(at..)?)
+        .ok()
+        .map(str::to_owned)
 }
 
 fn ratio_label(n: f64) -> String {

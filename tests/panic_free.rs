@@ -1,12 +1,13 @@
 //! No panic on a path from input. Clippy (`.ci/run`: `-D warnings`)
-//! refuses `unwrap` and `expect` in the library and the program through
-//! the `deny` at the top of src/lib.rs and src/main.rs; this test holds
-//! that `deny` in place and every allowance of it to a proof: each
-//! `#[allow(clippy::unwrap_used)]` or `#[allow(clippy::expect_used)]` in
-//! src/ sits under a comment that starts `// cannot fail:` and says why.
-//! It also reads the code outside the tests for an `unwrap` or `expect`
-//! with no allowance above it in its function, so that the rule holds
-//! where clippy is not run.
+//! refuses `unwrap`, `expect`, indexing and slicing in the library and the
+//! program through the `deny` at the top of src/lib.rs and src/main.rs;
+//! this test holds that `deny` in place and every allowance of it to a
+//! proof: each `#[allow(clippy::unwrap_used)]`,
+//! `#[allow(clippy::expect_used)]` or `#[allow(clippy::indexing_slicing)]`
+//! in src/ sits under a comment that starts `// cannot fail:` and says
+//! why. It also reads the code outside the tests for an `unwrap` or
+//! `expect` with no allowance above it in its function, so that the rule
+//! holds where clippy is not run.
 
 use std::path::{Path, PathBuf};
 
@@ -41,42 +42,54 @@ fn code_lines(text: &str) -> Vec<&str> {
 
 const ALLOWANCES: [&str; 2] = ["allow(clippy::unwrap_used)", "allow(clippy::expect_used)"];
 
+/// The allowance of an index or a slice.
+const INDEXING: &str = "allow(clippy::indexing_slicing)";
+
+/// The `deny` at the top of both crate roots.
+const DENY: &str = "#![deny(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]";
+
 #[test]
-fn the_library_and_the_program_deny_unwrap_and_expect() {
+fn the_library_and_the_program_deny_unwrap_expect_and_indexing() {
     for file in ["src/lib.rs", "src/main.rs"] {
         let text =
             std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(file)).unwrap();
-        assert!(
-            text.contains("#![deny(clippy::unwrap_used, clippy::expect_used)]"),
-            "{file} lost its deny"
-        );
+        assert!(text.contains(DENY), "{file} lost its deny");
     }
 }
 
-#[test]
-fn every_allowance_carries_its_proof() {
-    let mut allowances = 0;
+/// The allowances among `lines` (code before the tests) that `is_allowance`
+/// picks: their 1-based line numbers, and those of them with no comment
+/// starting `// cannot fail:` in the comment block right above.
+fn allowances(lines: &[&str], is_allowance: impl Fn(&str) -> bool) -> (Vec<usize>, Vec<usize>) {
+    let mut all = Vec::new();
+    let mut missing = Vec::new();
+    for (i, line) in lines.iter().enumerate() {
+        if !is_allowance(line) {
+            continue;
+        }
+        all.push(i + 1);
+        let proof = lines[..i]
+            .iter()
+            .rev()
+            .take_while(|l| l.trim_start().starts_with("//") && !l.trim_start().starts_with("///"))
+            .any(|l| l.contains("// cannot fail:"));
+        if !proof {
+            missing.push(i + 1);
+        }
+    }
+    (all, missing)
+}
+
+/// Every allowance `is_allowance` picks in src/ has its proof, and there
+/// are at most `most` of them.
+fn every_allowance_of(is_allowance: impl Fn(&str) -> bool, most: usize) {
+    let mut count = 0;
     let mut missing = Vec::new();
     for path in sources() {
         let text = std::fs::read_to_string(&path).unwrap();
-        let lines = code_lines(&text);
-        for (i, line) in lines.iter().enumerate() {
-            if !ALLOWANCES.iter().any(|a| line.contains(a)) {
-                continue;
-            }
-            allowances += 1;
-            // The comment block right above the attribute.
-            let proof = lines[..i]
-                .iter()
-                .rev()
-                .take_while(|l| {
-                    l.trim_start().starts_with("//") && !l.trim_start().starts_with("///")
-                })
-                .any(|l| l.contains("// cannot fail:"));
-            if !proof {
-                missing.push(format!("{}:{}", path.display(), i + 1));
-            }
-        }
+        let (all, bare) = allowances(&code_lines(&text), &is_allowance);
+        count += all.len();
+        missing.extend(bare.iter().map(|n| format!("{}:{n}", path.display())));
     }
     assert!(
         missing.is_empty(),
@@ -84,7 +97,35 @@ fn every_allowance_carries_its_proof() {
         missing.join("\n")
     );
     // The count is the audit's: raise it only with a proof for each.
-    assert!(allowances <= 30, "{allowances} allowances");
+    assert!(count <= most, "{count} allowances");
+}
+
+#[test]
+fn every_allowance_carries_its_proof() {
+    every_allowance_of(|l| ALLOWANCES.iter().any(|a| l.contains(a)), 30);
+}
+
+#[test]
+fn every_index_allowance_carries_its_proof() {
+    every_allowance_of(|l| l.contains(INDEXING), 20);
+}
+
+#[test]
+fn an_index_allowance_without_its_proof_is_found() {
+    let code = [
+        "// cannot fail: i < 4, the array's length.",
+        "#[allow(clippy::indexing_slicing)]",
+        "fn proved(a: [u8; 4], i: usize) -> u8 { a[i % 4] }",
+        "/// Documented, but no proof.",
+        "#[allow(clippy::indexing_slicing)]",
+        "fn bare(a: &[u8]) -> u8 { a[0] }",
+        "    // A comment that proves nothing.",
+        "    #[allow(clippy::indexing_slicing)]",
+        "    let x = v[3];",
+    ];
+    let (all, missing) = allowances(&code, |l| l.contains(INDEXING));
+    assert_eq!(all, [2, 5, 8]);
+    assert_eq!(missing, [5, 8]);
 }
 
 /// Whether a clippy allowance of `unwrap` or `expect` stands in the

@@ -81,7 +81,7 @@ impl Animation {
         progress: impl FnMut(usize, usize),
     ) -> Result<Self> {
         let period = check_period(period)?;
-        let angles = angles(scene.angles()[0], count)?;
+        let angles = angles(first_angle(scene)?, count)?;
         let (frames, sheet) = frames::draw(scene, &angles, progress)?;
         Ok(Self {
             name: scene.name().to_string(),
@@ -170,6 +170,10 @@ impl Animation {
     }
 
     /// What the documents need besides the frames' markup.
+    // cannot fail: an animation is made only by `with_progress`, with a
+    // frame for each of its `count` ≥ MIN_FRAMES angles (`angles` refuses
+    // fewer).
+    #[allow(clippy::indexing_slicing)]
     fn reel(&self) -> Reel<'_> {
         Reel {
             name: &self.name,
@@ -200,7 +204,7 @@ pub fn write(
     mut progress: impl FnMut(usize, usize),
 ) -> Result<()> {
     let period = check_period(period)?;
-    let series = frames::Series::new(scene, angles(scene.angles()[0], count)?);
+    let series = frames::Series::new(scene, angles(first_angle(scene)?, count)?);
     let survey = series.survey()?;
     let reel = Reel {
         name: scene.name(),
@@ -315,6 +319,16 @@ fn check_period(period: f64) -> Result<f64> {
 }
 
 /// The `count` angles of a revolution from `start`, in equal steps.
+/// The scene's first pose, where an animation starts; an error for a
+/// scene with none.
+fn first_angle(scene: &Scene) -> Result<Angle> {
+    scene
+        .angles()
+        .first()
+        .copied()
+        .ok_or_else(|| Error::Parse("a scene needs at least one angle".into()))
+}
+
 fn angles(start: Angle, count: usize) -> Result<Vec<Angle>> {
     if !(MIN_FRAMES..=MAX_FRAMES).contains(&count) {
         return Err(Error::OutOfRange {
@@ -356,6 +370,16 @@ mod tests {
         for p in [0.0, -1.0, f64::NAN, f64::INFINITY, MAX_PERIOD * 2.0] {
             assert!(Animation::new(&engine(), 4, p).is_err(), "{p}");
         }
+    }
+
+    #[test]
+    fn a_scene_without_an_angle_is_refused_not_a_panic() {
+        let scene = engine().with_angles(Vec::new());
+        let e = Animation::new(&scene, 4, 1.0).unwrap_err();
+        assert!(e.to_string().contains("at least one angle"), "{e}");
+        let mut sink = |_: &str| Ok(());
+        let e = write(&scene, (4, 1.0), AnimationFormat::Svg, &mut sink, |_, _| {}).unwrap_err();
+        assert!(e.to_string().contains("at least one angle"), "{e}");
     }
 
     #[test]

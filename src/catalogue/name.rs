@@ -118,6 +118,9 @@ impl FigureName {
     ];
 
     /// Every named figure: the scenes, then the diagrams.
+    // cannot fail: evaluated when the crate is built, where an index out of
+    // range is a build error.
+    #[allow(clippy::indexing_slicing)]
     pub const ALL: [FigureName; FigureName::SCENES.len() + FigureName::DIAGRAMS.len()] = {
         let mut all =
             [FigureName::Fig62Displacement; FigureName::SCENES.len() + FigureName::DIAGRAMS.len()];

@@ -124,8 +124,9 @@ impl ChainCentres {
         let (p, q) = if p <= q { (p, q) } else { (q, p) };
         PAIRS
             .iter()
-            .position(|&pair| pair == (p, q))
-            .map(|i| self.centres[i])
+            .zip(self.centres)
+            .find(|&(&pair, _)| pair == (p, q))
+            .map(|(_, centre)| centre)
     }
 
     /// All six, in the order of [`CENTRE_NAMES`].
@@ -134,6 +135,9 @@ impl ChainCentres {
     }
 
     /// (name, centre) for all six.
+    // cannot fail: `from_fn` makes an array of six, so i < 6, and both
+    // arrays hold six.
+    #[allow(clippy::indexing_slicing)]
     pub fn named(&self) -> [(&'static str, Intersection); 6] {
         std::array::from_fn(|i| (CENTRE_NAMES[i], self.centres[i]))
     }

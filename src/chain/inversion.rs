@@ -51,7 +51,10 @@ impl Inversion {
     /// The inversion numbered 1 to 4; other numbers are an error.
     pub fn from_number(n: u32) -> Result<Self> {
         match n {
-            1..=4 => Ok(Self::ALL[n as usize - 1]),
+            1 => Ok(Inversion::Frame),
+            2 => Ok(Inversion::Crank),
+            3 => Ok(Inversion::Rod),
+            4 => Ok(Inversion::Slider),
             _ => Err(Error::OutOfRange {
                 name: "inversion",
                 value: n as f64,
@@ -96,12 +99,14 @@ impl Inversion {
     }
 }
 
-fn index(link: Link) -> usize {
+/// The value of `link` in `values`, given for a, b, c, d in order.
+fn of(values: &[f64; 4], link: Link) -> f64 {
+    let [a, b, c, d] = *values;
     match link {
-        Link::A => 0,
-        Link::B => 1,
-        Link::C => 2,
-        Link::D => 3,
+        Link::A => a,
+        Link::B => b,
+        Link::C => c,
+        Link::D => d,
     }
 }
 
@@ -198,9 +203,9 @@ impl InversionPose {
         // not at all.
         let engine = [1.0, -pose.obliquity_rate(), 0.0, 0.0];
         let engine_acc = [0.0, -pose.obliquity_acceleration(), 0.0, 0.0];
-        let f = index(inversion.fixed());
-        let rates = engine.map(|w| w - engine[f]);
-        let accels = engine_acc.map(|w| w - engine_acc[f]);
+        let fixed = inversion.fixed();
+        let rates = engine.map(|w| w - of(&engine, fixed));
+        let accels = engine_acc.map(|w| w - of(&engine_acc, fixed));
         let (origin, turn) = frame_of(inversion, &pose);
         let centres = ChainCentres::of_slider_crank(&pose).moved(origin, turn);
         Self {
@@ -245,12 +250,12 @@ impl InversionPose {
     /// The angular velocity of `link` relative to the fixed link per unit
     /// dθ/dt (θ: crank a against frame d).
     pub fn link_rate(&self, link: Link) -> f64 {
-        self.rates[index(link)]
+        of(&self.rates, link)
     }
 
     /// d/dθ of [`InversionPose::link_rate`].
     pub fn link_acceleration(&self, link: Link) -> f64 {
-        self.accels[index(link)]
+        of(&self.accels, link)
     }
 
     /// The angular velocity of `p` relative to `q` per unit dθ/dt: the same
@@ -264,8 +269,8 @@ impl InversionPose {
     /// rest relative to the fixed link for every dθ/dt (the hand pump's
     /// handle at the end of its swing, θ = 90°, 270°).
     pub fn motion(&self, omega: f64) -> Option<LinkMotion> {
-        let d = index(self.inversion.driver());
-        let (k, k1) = (self.rates[d], self.accels[d]);
+        let driver = self.inversion.driver();
+        let (k, k1) = (of(&self.rates, driver), of(&self.accels, driver));
         if k == 0.0 {
             return None;
         }
@@ -273,11 +278,16 @@ impl InversionPose {
         let accel = -omega * omega * k1 / (k * k * k);
         let s1 = self.pose.position_rate();
         let s2 = self.pose.position_acceleration();
+        let mut acceleration = [0.0; 4];
+        for (x, (a, w)) in acceleration
+            .iter_mut()
+            .zip(self.accels.iter().zip(&self.rates))
+        {
+            *x = a * rate * rate + w * accel;
+        }
         Some(LinkMotion {
             velocity: self.rates.map(|w| w * rate),
-            acceleration: std::array::from_fn(|i| {
-                self.accels[i] * rate * rate + self.rates[i] * accel
-            }),
+            acceleration,
             sliding_velocity: s1 * rate,
             sliding_acceleration: s2 * rate * rate + s1 * accel,
         })

@@ -100,8 +100,9 @@ fn analyse<'a>(
 
 fn to_json(m: &SliderCrank, report: &Report, units: &Units) -> Value {
     let mut v = report.reading.to_json(m, units);
-    if let Some((engine, at)) = &report.dynamics {
-        v["dynamics"] = super::dynamics::to_json(engine, at, report.reading.pose.angle(), units);
+    if let (Some((engine, at)), Some(fields)) = (&report.dynamics, v.as_object_mut()) {
+        let dynamics = super::dynamics::to_json(engine, at, report.reading.pose.angle(), units);
+        fields.insert("dynamics".into(), dynamics);
     }
     v
 }

@@ -209,8 +209,8 @@ fn inversion_json(chain: &InvertedChain, degrees: f64, omega: f64) -> Result<Val
         links.insert(
             link_name(l).into(),
             json!({
-                "angular_velocity": opt(motion.map(|x| x.velocity[i])),
-                "angular_acceleration": opt(motion.map(|x| x.acceleration[i])),
+                "angular_velocity": opt(motion.and_then(|x| x.velocity.get(i).copied())),
+                "angular_acceleration": opt(motion.and_then(|x| x.acceleration.get(i).copied())),
             }),
         );
     }
@@ -262,7 +262,9 @@ pub fn analyze(
     };
     let one = |d: f64| -> Result<Value> {
         let mut v = values(d)?;
-        v["units"] = json!(units);
+        if let Some(fields) = v.as_object_mut() {
+            fields.insert("units".into(), json!(units));
+        }
         Ok(v)
     };
     for d in spec.iter() {

@@ -174,7 +174,7 @@ pub fn to_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) ->
         "rod": Value::Null,
     });
     if let Some(r) = at.rod {
-        v["rod"] = json!({
+        let rod = json!({
             "inertia_force": [num(r.force[0]), num(r.force[1])],
             "inertia_couple": num(r.couple),
             "torque": num(r.torque),
@@ -186,6 +186,9 @@ pub fn to_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) ->
                 "torque": num(r.equivalent_torque),
             },
         });
+        if let Some(fields) = v.as_object_mut() {
+            fields.insert("rod".into(), rod);
+        }
     }
     v
 }

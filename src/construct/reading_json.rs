@@ -61,7 +61,7 @@ impl Reading {
                 Some(Friction::SelfLocking(_)) => (Value::Null, true),
                 None => (Value::Null, false),
             };
-            v["statics"] = json!({
+            let statics = json!({
                 "OM": num(s.om),
                 "slider_force": s.force.map(num),
                 "side_thrust": s.side_thrust.map(num),
@@ -70,6 +70,9 @@ impl Reading {
                 "friction": s.mu,
                 "transmission_angle_deg": num(s.transmission_deg),
             });
+            if let Some(fields) = v.as_object_mut() {
+                fields.insert("statics".into(), statics);
+            }
         }
         v
     }

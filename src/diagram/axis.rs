@@ -122,7 +122,9 @@ pub(crate) fn power_of_ten(k: i32) -> String {
         s.push('⁻');
     }
     for c in k.unsigned_abs().to_string().chars() {
-        s.push(SUP[c.to_digit(10).unwrap_or(0) as usize]);
+        if let Some(&d) = c.to_digit(10).and_then(|d| SUP.get(d as usize)) {
+            s.push(d);
+        }
     }
     s
 }

@@ -421,17 +421,20 @@ impl<C: Curve + ?Sized> Tracer<'_, C> {
 
     /// Fits the piece whose samples at u = 0, 1/4, 1/2, 3/4, 1 are `even`.
     fn fit_samples(&mut self, even: [Node; 5]) -> Result<()> {
-        let (a, b) = (even[0], even[4]);
+        let [a, e1, e2, e3, b] = even;
         self.budget(a.t)?;
         let h = b.t - a.t;
-        let mut n = [a; 9];
-        for (k, node) in n.iter_mut().enumerate() {
-            *node = if k % 2 == 0 {
-                even[k / 2]
-            } else {
-                self.node(a.t + h * (k as f64 / 8.0))
-            };
-        }
+        let n = [
+            a,
+            self.node(a.t + h * (1.0 / 8.0)),
+            e1,
+            self.node(a.t + h * (3.0 / 8.0)),
+            e2,
+            self.node(a.t + h * (5.0 / 8.0)),
+            e3,
+            self.node(a.t + h * (7.0 / 8.0)),
+            b,
+        ];
         let mut samples = [(Point::origin(), Vector::zeros()); 9];
         for (s, node) in samples.iter_mut().zip(&n) {
             match node.at {
@@ -513,10 +516,11 @@ fn cubic_fit(s: &[(Point, Vector); 9], tolerance: f64) -> (Segment, f64) {
     }
     let bez = Bezier::new(p0, c1, c2, p3);
     // Parametric: e(u) = B(u) − p(u), e'(u) = B'(u) − p'(u).
-    let parametric: [(Vector, Vector); 9] = std::array::from_fn(|k| {
+    let mut parametric = [(Vector::zeros(), Vector::zeros()); 9];
+    for (k, (e, (p, d))) in parametric.iter_mut().zip(s).enumerate() {
         let u = k as f64 / 8.0;
-        (bez.at(u) - s[k].0.coords, bez.slope(u) - s[k].1)
-    });
+        *e = (bez.at(u) - p.coords, bez.slope(u) - d);
+    }
     let mut best = (segment, hull_bound(&parametric));
     if best.1 > tolerance {
         if let Some(matched) = reparameterised(&bez, s) {
@@ -581,68 +585,57 @@ fn through_middle(s: &[(Point, Vector); 9]) -> Option<(Point, Point)> {
 /// samples, every projection settles, φ increases with slopes within a
 /// factor 2 of its secants, and φ stays in [0, 1].
 fn reparameterised(bez: &Bezier, s: &[(Point, Vector); 9]) -> Option<[(Vector, Vector); 9]> {
-    for w in s.windows(2) {
-        let (a, b) = (w[0].1, w[1].1);
+    for ((_, a), (_, b)) in s.iter().zip(&s[1..]) {
         let (na, nb) = (a.norm(), b.norm());
         // cos of the turn between the two tangents, compared without division.
         if na.is_nan()
             || nb.is_nan()
             || na <= 0.0
             || nb <= 0.0
-            || a.dot(&b) < MAX_TURN.cos() * na * nb
+            || a.dot(b) < MAX_TURN.cos() * na * nb
         {
             return None;
         }
     }
-    let mut phi = [0.0; 9];
-    let mut slope = [1.0; 9];
-    phi[8] = 1.0;
-    for k in 0..9 {
+    // φ and its slope at each sample.
+    let mut phi = [(0.0, 1.0); 9];
+    for (k, (f, &(p, d))) in phi.iter_mut().zip(s).enumerate() {
         let u = match k {
             0 => 0.0,
             8 => 1.0,
-            _ => bez.nearest(s[k].0, k as f64 / 8.0)?,
+            _ => bez.nearest(p, k as f64 / 8.0)?,
         };
         let b1 = bez.slope(u);
         let speed2 = b1.norm_squared();
         if speed2.is_nan() || speed2 <= 0.0 {
             return None;
         }
-        phi[k] = u;
-        slope[k] = s[k].1.dot(&b1) / speed2;
+        *f = (u, d.dot(&b1) / speed2);
     }
-    for k in 0..8 {
-        let secant = (phi[k + 1] - phi[k]) * 8.0;
+    for (&(f0, m0), &(f1, m1)) in phi.iter().zip(&phi[1..]) {
+        let secant = (f1 - f0) * 8.0;
         let smooth = |m: f64| m >= 0.5 * secant && m <= 2.0 * secant;
-        if secant.is_nan() || secant <= 0.0 || !smooth(slope[k]) || !smooth(slope[k + 1]) {
+        if secant.is_nan() || secant <= 0.0 || !smooth(m0) || !smooth(m1) {
             return None;
         }
         // φ on each eighth lies in the hull of its Hermite control values.
-        let controls = [
-            phi[k],
-            phi[k] + slope[k] / 24.0,
-            phi[k + 1] - slope[k + 1] / 24.0,
-            phi[k + 1],
-        ];
+        let controls = [f0, f0 + m0 / 24.0, f1 - m1 / 24.0, f1];
         if !controls.iter().all(|c| (0.0..=1.0).contains(c)) {
             return None;
         }
     }
-    Some(std::array::from_fn(|k| {
-        (
-            bez.at(phi[k]) - s[k].0.coords,
-            bez.slope(phi[k]) * slope[k] - s[k].1,
-        )
-    }))
+    let mut matched = [(Vector::zeros(), Vector::zeros()); 9];
+    for (e, (&(f, m), &(p, d))) in matched.iter_mut().zip(phi.iter().zip(s)) {
+        *e = (bez.at(f) - p.coords, bez.slope(f) * m - d);
+    }
+    Some(matched)
 }
 
 /// The largest norm over the Bézier hulls of the cubic Hermite interpolant
 /// of an error sampled with its derivative (per unit u) at u = k/8.
 fn hull_bound(e: &[(Vector, Vector); 9]) -> f64 {
     let mut worst: f64 = 0.0;
-    for w in e.windows(2) {
-        let (e0, s0) = w[0];
-        let (e1, s1) = w[1];
+    for (&(e0, s0), &(e1, s1)) in e.iter().zip(&e[1..]) {
         for v in [e0, e0 + s0 / 24.0, e1 - s1 / 24.0, e1] {
             worst = worst.max(v.norm());
         }
@@ -719,9 +712,7 @@ fn chord_fit(s: &[(Point, Vector); 9]) -> (Segment, f64) {
         (p - (a + ab * t)).norm()
     };
     let mut worst: f64 = 0.0;
-    for w in s.windows(2) {
-        let (p0, d0) = w[0];
-        let (p1, d1) = w[1];
+    for (&(p0, d0), &(p1, d1)) in s.iter().zip(&s[1..]) {
         for p in [p0, p0 + d0 / 24.0, p1 - d1 / 24.0, p1] {
             worst = worst.max(distance(p));
         }

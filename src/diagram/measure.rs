@@ -209,14 +209,14 @@ fn largest(
     }
     for (_, i) in scored {
         let (lo, hi) = (cloud.neighbour(i, -1), cloud.neighbour(i, 1));
-        let piece = cloud.samples[i].piece;
+        let piece = cloud.sample(i).piece;
         let f = |t: f64| {
             at(piece, t)
                 .map(|(p, _)| p)
                 .filter(|p| keep(*p))
                 .map_or(0.0, |p| -distance(p))
         };
-        best = best.max(-golden(f, cloud.samples[lo].t, cloud.samples[hi].t));
+        best = best.max(-golden(f, cloud.sample(lo).t, cloud.sample(hi).t));
     }
     best
 }
@@ -357,10 +357,14 @@ impl Cloud {
         keyed.sort_unstable();
         let mut starts = vec![0; nx * ny + 1];
         for &(c, _) in &keyed {
-            starts[c + 1] += 1;
+            if let Some(count) = starts.get_mut(c + 1) {
+                *count += 1;
+            }
         }
-        for c in 0..nx * ny {
-            starts[c + 1] += starts[c];
+        let mut total = 0;
+        for start in &mut starts {
+            total += *start;
+            *start = total;
         }
         Self {
             members: keyed.into_iter().map(|(_, i)| i).collect(),
@@ -379,8 +383,18 @@ impl Cloud {
         (c.x.floor() as i64, c.y.floor() as i64)
     }
 
+    /// The sample at `i`.
+    // cannot fail: every index a cloud hands around is a position in its
+    // `samples` (which never change after `new`): from their enumeration
+    // (`members`, the maxima in `largest`), or `neighbour`'s, which is
+    // either its argument or checked with `get`.
+    #[allow(clippy::indexing_slicing)]
+    fn sample(&self, i: usize) -> &Sample {
+        &self.samples[i]
+    }
+
     fn point(&self, i: usize) -> Point {
-        self.samples[i].point().unwrap_or(Point::origin())
+        self.sample(i).point().unwrap_or(Point::origin())
     }
 
     /// The index of the sample `step` (±1) from `i` in the same piece, or
@@ -390,7 +404,7 @@ impl Cloud {
             .filter(|&j| {
                 self.samples
                     .get(j)
-                    .is_some_and(|s| s.piece == self.samples[i].piece)
+                    .is_some_and(|s| s.piece == self.sample(i).piece)
             })
             .unwrap_or(i)
     }
@@ -422,7 +436,11 @@ impl Cloud {
                     while cx <= qx + r {
                         if cx >= 0 && (cx as usize) < self.nx {
                             let c = cy as usize * self.nx + cx as usize;
-                            for &i in &self.members[self.starts[c]..self.starts[c + 1]] {
+                            let members = match self.starts.get(c..=c + 1) {
+                                Some(&[a, b]) => self.members.get(a..b).unwrap_or_default(),
+                                _ => &[],
+                            };
+                            for &i in members {
                                 let d = (self.point(i) - q).norm();
                                 best = best.min(d);
                                 seen.push((d, i));
@@ -455,7 +473,7 @@ impl Cloud {
         for (d, i) in near {
             let (lo, hi) = (self.neighbour(i, -1), self.neighbour(i, 1));
             let gap = |j: usize| {
-                self.samples[j]
+                self.sample(j)
                     .point()
                     .map_or(0.0, |p| (p - self.point(i)).norm())
             };
@@ -479,10 +497,10 @@ impl Cloud {
     /// sign from − to +, found by the Illinois method (bisection when the
     /// secant leaves the bracket), else at an end.
     fn nearest_between(&self, a: usize, b: usize, q: Point, at: &impl Fn(usize, f64) -> At) -> f64 {
-        let piece = self.samples[a].piece;
+        let piece = self.sample(a).piece;
         let g = |s: &Sample| s.at.map(|(p, d)| (p - q).dot(&d));
         let end_distance = |s: &Sample| s.point().map_or(f64::INFINITY, |p| (p - q).norm());
-        let (sa, sb) = (self.samples[a], self.samples[b]);
+        let (sa, sb) = (*self.sample(a), *self.sample(b));
         let best = end_distance(&sa).min(end_distance(&sb));
         let (Some(mut ga), Some(mut gb)) = (g(&sa), g(&sb)) else {
             return best;

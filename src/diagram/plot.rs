@@ -380,8 +380,8 @@ impl Plot {
                 let page = self.map.apply(*p);
                 self.remember(page);
             }
-            for w in points.windows(2) {
-                let mid = nalgebra::center(&w[0], &w[1]);
+            for (a, b) in points.iter().zip(points.iter().skip(1)) {
+                let mid = nalgebra::center(a, b);
                 self.remember(self.map.apply(mid));
             }
             self.items.push(
@@ -440,10 +440,10 @@ impl Plot {
         if let [only] = page.as_slice() {
             self.remember(*only);
         }
-        for w in page.windows(2) {
-            let n = ((w[1] - w[0]).norm() / 8.0).ceil().clamp(1.0, 500.0) as usize;
+        for (&a, &b) in page.iter().zip(page.iter().skip(1)) {
+            let n = ((b - a).norm() / 8.0).ceil().clamp(1.0, 500.0) as usize;
             for k in 0..=n {
-                self.remember(w[0] + (w[1] - w[0]) * (k as f64 / n as f64));
+                self.remember(a + (b - a) * (k as f64 / n as f64));
             }
         }
     }
@@ -494,9 +494,9 @@ impl Plot {
             "panel": self.panel_id(),
             "area": [r.x, r.y, r.width, r.height],
         });
-        if let Some((x, y)) = &self.axes {
-            v["x"] = axis(x);
-            v["y"] = axis(y);
+        if let (Some((x, y)), Some(fields)) = (&self.axes, v.as_object_mut()) {
+            fields.insert("x".into(), axis(x));
+            fields.insert("y".into(), axis(y));
         }
         v
     }

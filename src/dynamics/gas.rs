@@ -70,9 +70,9 @@ impl IndicatorDiagram {
                 "an indicator diagram has 2 to {MAX_INDICATOR_ROWS} rows, each with a fraction and two pressures"
             )));
         }
-        if fractions[0] != 0.0
-            || fractions[n - 1] != 1.0
-            || fractions.windows(2).any(|w| w[0] >= w[1])
+        if fractions.first() != Some(&0.0)
+            || fractions.last() != Some(&1.0)
+            || successive(&fractions).any(|(a, b)| a >= b)
         {
             return Err(Error::Parse(
                 "the indicator diagram's stroke fractions rise strictly from 0 to 1".into(),
@@ -128,6 +128,9 @@ impl IndicatorDiagram {
 
     /// The pressure at stroke fraction `x` (clamped to 0…1) on the
     /// expansion stroke (`true`) or the compression stroke.
+    // cannot fail: `new` holds the three columns to one length n ≥ 2, and
+    // i is clamped to 1..=n − 1.
+    #[allow(clippy::indexing_slicing)]
     pub fn pressure(&self, x: f64, expansion: bool) -> f64 {
         let p = if expansion {
             &self.expansion
@@ -148,11 +151,13 @@ impl IndicatorDiagram {
     /// expansion minus compression, by the trapezoid rule, exact for the
     /// linear pieces).
     pub fn work(&self, stroke: f64) -> f64 {
-        let loop_area: f64 = (1..self.fractions.len())
-            .map(|i| {
-                let dx = self.fractions[i] - self.fractions[i - 1];
-                let hi = self.expansion[i] + self.expansion[i - 1];
-                let lo = self.compression[i] + self.compression[i - 1];
+        let loop_area: f64 = successive(&self.fractions)
+            .zip(successive(&self.expansion))
+            .zip(successive(&self.compression))
+            .map(|(((f0, f1), (e0, e1)), (c0, c1))| {
+                let dx = f1 - f0;
+                let hi = e1 + e0;
+                let lo = c1 + c0;
                 0.5 * dx * (hi - lo)
             })
             .sum();
@@ -169,6 +174,11 @@ impl IndicatorDiagram {
         let expansion = direction * pose.position_rate() < 0.0;
         self.area * self.pressure(x, expansion)
     }
+}
+
+/// The pairs of neighbouring values of `v`, in order.
+fn successive(v: &[f64]) -> impl Iterator<Item = (f64, f64)> + '_ {
+    v.iter().copied().zip(v.iter().copied().skip(1))
 }
 
 #[cfg(test)]

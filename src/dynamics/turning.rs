@@ -166,7 +166,9 @@ fn breakpoints(engine: &Engine, phases: &[f64]) -> Vec<f64> {
     let mut own = vec![outer, inner];
     if let GasForce::Indicator(d) = engine.gas() {
         let x_outer = m.pose(m.outer_dead_centre()).position();
-        for &f in &d.fractions()[1..d.fractions().len() - 1] {
+        let fractions = d.fractions();
+        let middle = fractions.get(1..fractions.len().saturating_sub(1));
+        for &f in middle.unwrap_or_default() {
             let target = x_outer - f * m.stroke();
             let gap =
                 |t: f64| Angle::from_radians(t).map_or(0.0, |a| m.pose(a).position() - target);
@@ -188,9 +190,10 @@ fn breakpoints(engine: &Engine, phases: &[f64]) -> Vec<f64> {
 /// The pieces of [a, b] between the breakpoints.
 fn pieces(breaks: &[f64], a: f64, b: f64) -> impl Iterator<Item = (f64, f64)> + '_ {
     let inner = breaks.iter().copied().filter(move |&t| t > a && t < b);
-    let points: Vec<f64> = std::iter::once(a).chain(inner).chain([b]).collect();
-    (1..points.len())
-        .map(move |i| (points[i - 1], points[i]))
+    let mut previous = a;
+    inner
+        .chain([b])
+        .map(move |t| (std::mem::replace(&mut previous, t), t))
         .filter(|(x, y)| y > x)
 }
 
@@ -204,19 +207,23 @@ fn crossings(f: &dyn Fn(f64) -> f64, breaks: &[f64]) -> Vec<f64> {
     samples.extend_from_slice(breaks);
     samples.sort_by(f64::total_cmp);
     samples.dedup();
-    let values: Vec<f64> = samples.iter().map(|&t| f(t)).collect();
+    let values: Vec<(f64, f64)> = samples.iter().map(|&t| (t, f(t))).collect();
     let mut roots = Vec::new();
-    for i in 1..samples.len() {
-        let (a, b) = (values[i - 1], values[i]);
-        if a == 0.0 && i > 1 && samples[i - 1] < TAU {
+    // The value at the sample before the pair, when there is one.
+    let mut before: Option<f64> = None;
+    for (&(s0, a), &(s1, b)) in values.iter().zip(values.iter().skip(1)) {
+        match before {
             // A sample exactly on the line: a crossing where the sign
             // changes across it.
-            if (values[i - 2] < 0.0) != (b < 0.0) && values[i - 2] != 0.0 && b != 0.0 {
-                roots.push(samples[i - 1]);
+            Some(c) if a == 0.0 && s0 < TAU && (c < 0.0) != (b < 0.0) && c != 0.0 && b != 0.0 => {
+                roots.push(s0);
             }
-        } else if a != 0.0 && b != 0.0 && (a < 0.0) != (b < 0.0) {
-            roots.push(bisect(f, samples[i - 1], samples[i]));
+            _ if a != 0.0 && b != 0.0 && (a < 0.0) != (b < 0.0) => {
+                roots.push(bisect(f, s0, s1));
+            }
+            _ => {}
         }
+        before = Some(a);
     }
     roots
 }

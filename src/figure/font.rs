@@ -236,9 +236,16 @@ impl Font {
         }
     }
 
-    fn index(&self, style: FontStyle) -> usize {
-        let f = Font::ALL.iter().position(|f| f == self).unwrap_or(0);
-        2 * f + usize::from(style == FontStyle::Italic)
+    /// The entry for `style` of this font in `slots`, which holds the
+    /// regular and italic of each font in the order of [`Font::ALL`].
+    fn slot<'a, T>(&self, style: FontStyle, slots: &'a [T; 4]) -> &'a T {
+        let [cm, cm_italic, libertinus, libertinus_italic] = slots;
+        match (self, style) {
+            (Font::NewComputerModern, FontStyle::Regular) => cm,
+            (Font::NewComputerModern, FontStyle::Italic) => cm_italic,
+            (Font::LibertinusSerif, FontStyle::Regular) => libertinus,
+            (Font::LibertinusSerif, FontStyle::Italic) => libertinus_italic,
+        }
     }
 
     /// The font file (OpenType) of a style, bundled in the binary.
@@ -258,7 +265,8 @@ impl Font {
 
     fn face(&self, style: FontStyle) -> &'static Face {
         static FACES: [OnceLock<Face>; 4] = [const { OnceLock::new() }; 4];
-        FACES[self.index(style)].get_or_init(|| bundled(self.postscript_name(style)))
+        self.slot(style, &FACES)
+            .get_or_init(|| bundled(self.postscript_name(style)))
     }
 
     /// The face of the symbols missing from the text faces.
@@ -290,9 +298,11 @@ impl Font {
     /// that no outline is decoded while a figure is set; any other
     /// character looked up in the faces once per process.
     fn char_metrics(&self, c: char, style: FontStyle) -> CharMetrics {
-        let table = super::glyphs::TABLES[self.index(style)];
-        if let Ok(i) = table.chars.binary_search_by_key(&c, |g| g.0) {
-            let (_, [advance, left, bottom, right, top]) = table.chars[i];
+        let table = self.slot(style, &super::glyphs::TABLES);
+        let found = table.chars.binary_search_by_key(&c, |g| g.0).ok();
+        if let Some(&(_, [advance, left, bottom, right, top])) =
+            found.and_then(|i| table.chars.get(i))
+        {
             return CharMetrics {
                 advance,
                 bottom,
@@ -304,7 +314,7 @@ impl Font {
         }
         type Cache = Mutex<HashMap<char, CharMetrics>>;
         static CACHES: [OnceLock<Cache>; 4] = [const { OnceLock::new() }; 4];
-        let cache = CACHES[self.index(style)].get_or_init(Cache::default);
+        let cache = self.slot(style, &CACHES).get_or_init(Cache::default);
         let mut cache = cache.lock().unwrap_or_else(|e| e.into_inner());
         *cache
             .entry(c)
@@ -363,7 +373,7 @@ impl Font {
 
     /// Ascent, descent and cap height of a style.
     pub fn metrics(&self, style: FontStyle) -> VerticalMetrics {
-        super::glyphs::TABLES[self.index(style)].vertical
+        self.slot(style, &super::glyphs::TABLES).vertical
     }
 
     /// Whether the face (with its symbols face) has a glyph for `c` (else

@@ -142,8 +142,8 @@ fn figure(f: FigureName, formats: &[FileFormat]) -> Markup {
         .map(file);
     html! {
         figure id=(f.name()) {
-            @if let Some(src) = &picture {
-                a href=(file(formats[0])) {
+            @if let (Some(src), Some(&first)) = (&picture, formats.first()) {
+                a href=(file(first)) {
                     img src=(src) alt=(f.description()) loading="lazy";
                 }
             }
@@ -172,8 +172,8 @@ fn scene(entry: &SceneEntry, formats: &[FileFormat]) -> Markup {
         .map(file);
     html! {
         figure id={ "scene-" (entry.name) } {
-            @if let Some(src) = &picture {
-                a href=(file(formats[0])) {
+            @if let (Some(src), Some(&first)) = (&picture, formats.first()) {
+                a href=(file(first)) {
                     img src=(src) alt={ "The scene of " (entry.file) } loading="lazy";
                 }
             }

@@ -276,6 +276,9 @@ impl Gallery {
                 (to_svg(&figure.figure(&options)?), figure.name())
             }
             Job::Scene(i) => {
+                // cannot fail: the scene jobs are made from
+                // `0..self.scenes.len()`.
+                #[allow(clippy::indexing_slicing)]
                 let entry = &self.scenes[i];
                 (to_svg(&entry.scene.figure()?), entry.name.as_str())
             }

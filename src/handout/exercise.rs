@@ -37,6 +37,9 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
         Some(&[Layer::Mechanism, Layer::Velocity]),
     )?;
     let figure = figures::only_the_mechanism(&fitted);
+    // cannot fail: `fitted` is a scene's figure, whose first panel is its
+    // main view (`draw::build`), and `only_the_mechanism` keeps that one.
+    #[allow(clippy::indexing_slicing)]
     let panel = &figure.panels()[0];
     let step = figures::grid_step(panel, GRID_SQUARE);
     let svg = figures::under_drawing(&to_svg(&figure), &figures::grid(panel, step));

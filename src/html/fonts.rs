@@ -39,8 +39,18 @@ pub(crate) fn font_faces(text: &str, fonts: &[Font]) -> String {
         // those too.
         let in_both = |c: &char| has(&regular, *c) && has(&italic, *c);
         let faces = [
-            (font.family().to_string(), "normal", files[0], true),
-            (font.family().to_string(), "italic", files[1], true),
+            (
+                font.family().to_string(),
+                "normal",
+                font.data(FontStyle::Regular),
+                true,
+            ),
+            (
+                font.family().to_string(),
+                "italic",
+                font.data(FontStyle::Italic),
+                true,
+            ),
         ];
         for (family, style, data, text_face) in faces {
             let wanted = chars.iter().copied().filter(|c| !text_face || in_text(c));
@@ -73,7 +83,8 @@ fn rule(family: &str, style: &str, data: &[u8], chars: impl Iterator<Item = char
 }
 
 /// The face in `data` with only the glyphs of `chars` (those it maps),
-/// and a character map for them; `None` when it maps none of them.
+/// and a character map for them; `None` when it maps none of them or
+/// cannot be cut.
 pub(crate) fn cut(data: &[u8], chars: impl Iterator<Item = char>) -> Option<Vec<u8>> {
     let font = FontRef::new(data).ok()?;
     let charmap = font.charmap();
@@ -91,10 +102,10 @@ pub(crate) fn cut(data: &[u8], chars: impl Iterator<Item = char>) -> Option<Vec<
     map.sort_unstable();
     let subset = subsetter::subset(data, 0, &remapper).ok()?;
     let os2 = font.table_data(Tag::new(b"OS/2"))?;
-    Some(with_tables(
+    with_tables(
         &subset,
         &[(*b"cmap", cmap(&map)), (*b"OS/2", os2.as_bytes().to_vec())],
-    ))
+    )
 }
 
 /// A `cmap` table with one subtable (Windows, Unicode BMP) of format 4:
@@ -138,32 +149,25 @@ fn cmap(map: &[(u16, u16)]) -> Vec<u8> {
 
 /// The OpenType font `font` with `extra` tables added, its directory
 /// rewritten in tag order with the checksums and `head`'s checksum
-/// adjustment.
-fn with_tables(font: &[u8], extra: &[([u8; 4], Vec<u8>)]) -> Vec<u8> {
-    let be16 = |at: usize| u16::from_be_bytes([font[at], font[at + 1]]) as usize;
-    let be32 = |at: usize| {
-        u32::from_be_bytes([font[at], font[at + 1], font[at + 2], font[at + 3]]) as usize
-    };
-    let mut tables: Vec<([u8; 4], Vec<u8>)> = (0..be16(4))
+/// adjustment; `None` when its directory points outside it.
+fn with_tables(font: &[u8], extra: &[([u8; 4], Vec<u8>)]) -> Option<Vec<u8>> {
+    let be16 = |at: usize| Some(u16::from_be_bytes(font.get(at..at + 2)?.try_into().ok()?));
+    let be32 = |at: usize| Some(u32::from_be_bytes(font.get(at..at + 4)?.try_into().ok()?));
+    let mut tables: Vec<([u8; 4], Vec<u8>)> = (0..be16(4)? as usize)
         .map(|k| {
             let record = 12 + 16 * k;
-            let (offset, length) = (be32(record + 8), be32(record + 12));
+            let (offset, length) = (be32(record + 8)? as usize, be32(record + 12)? as usize);
             // The bundled faces' own directory (never a user's file).
-            let tag = [
-                font[record],
-                font[record + 1],
-                font[record + 2],
-                font[record + 3],
-            ];
-            (tag, font[offset..offset + length].to_vec())
+            let tag: [u8; 4] = font.get(record..record + 4)?.try_into().ok()?;
+            Some((tag, font.get(offset..offset + length)?.to_vec()))
         })
-        .chain(extra.iter().cloned())
-        .collect();
+        .chain(extra.iter().cloned().map(Some))
+        .collect::<Option<_>>()?;
     tables.sort_by_key(|t| t.0);
     let count = tables.len() as u16;
     let selector = 15 - count.leading_zeros() as u16;
     let range = 16 * (1u16 << selector);
-    let mut out = font[..4].to_vec();
+    let mut out = font.get(..4)?.to_vec();
     for v in [count, range, selector, 16 * count - range] {
         out.extend(v.to_be_bytes());
     }
@@ -171,7 +175,7 @@ fn with_tables(font: &[u8], extra: &[([u8; 4], Vec<u8>)]) -> Vec<u8> {
     let mut head = None;
     for (tag, data) in &mut tables {
         if tag == b"head" {
-            data[8..12].fill(0);
+            data.get_mut(8..12)?.fill(0);
             head = Some(offset + 8);
         }
         out.extend(*tag);
@@ -186,9 +190,10 @@ fn with_tables(font: &[u8], extra: &[([u8; 4], Vec<u8>)]) -> Vec<u8> {
     }
     if let Some(at) = head {
         let adjustment = 0xB1B0_AFBAu32.wrapping_sub(checksum(&out));
-        out[at..at + 4].copy_from_slice(&adjustment.to_be_bytes());
+        out.get_mut(at..at + 4)?
+            .copy_from_slice(&adjustment.to_be_bytes());
     }
-    out
+    Some(out)
 }
 
 /// The OpenType checksum: the sum of the big-endian 32-bit words, the last
@@ -196,7 +201,9 @@ fn with_tables(font: &[u8], extra: &[([u8; 4], Vec<u8>)]) -> Vec<u8> {
 fn checksum(data: &[u8]) -> u32 {
     data.chunks(4).fold(0u32, |sum, word| {
         let mut w = [0u8; 4];
-        w[..word.len()].copy_from_slice(word);
+        for (to, from) in w.iter_mut().zip(word) {
+            *to = *from;
+        }
         sum.wrapping_add(u32::from_be_bytes(w))
     })
 }

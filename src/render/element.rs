@@ -71,7 +71,11 @@ impl Element {
     pub(crate) fn assign(&mut self, name: &'static str, value: impl Into<Value>) {
         let value = value.into();
         match self.attributes.binary_search_by(|(k, _)| k.cmp(&name)) {
-            Ok(i) => self.attributes[i].1 = value,
+            Ok(i) => {
+                if let Some((_, old)) = self.attributes.get_mut(i) {
+                    *old = value;
+                }
+            }
             Err(i) => self.attributes.insert(i, (name, value)),
         }
     }
@@ -164,17 +168,17 @@ fn escape_into(out: &mut String, s: &str, quotes: bool) {
     while let Some(i) = rest.find(['&', '<', '>', '"', '\'']) {
         let (head, tail) = rest.split_at(i);
         out.push_str(head);
-        let c = tail.as_bytes()[0];
-        out.push_str(match c {
-            b'&' => "&amp;",
-            b'<' => "&lt;",
-            b'>' => "&gt;",
-            b'"' if quotes => "&quot;",
-            b'\'' if quotes => "&apos;",
-            b'"' => "\"",
+        let mut chars = tail.chars();
+        out.push_str(match chars.next() {
+            Some('&') => "&amp;",
+            Some('<') => "&lt;",
+            Some('>') => "&gt;",
+            Some('"') if quotes => "&quot;",
+            Some('\'') if quotes => "&apos;",
+            Some('"') => "\"",
             _ => "'",
         });
-        rest = &tail[1..];
+        rest = chars.as_str();
     }
     out.push_str(rest);
 }

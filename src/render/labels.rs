@@ -166,8 +166,8 @@ impl Obstacles {
     }
 
     pub fn polyline(&mut self, points: &[Point]) {
-        for w in points.windows(2) {
-            self.segment(w[0], w[1]);
+        for (&a, &b) in points.iter().zip(points.iter().skip(1)) {
+            self.segment(a, b);
         }
     }
 
@@ -237,7 +237,9 @@ impl Obstacles {
         let Obstacle::Box(i) = o else {
             return false;
         };
-        let (b, hollow) = self.boxes[i];
+        let Some(&(b, hollow)) = self.boxes.get(i) else {
+            return false;
+        };
         hollow && b.contains(&Bounds { min: p, max: p })
     }
 
@@ -297,7 +299,9 @@ impl Near<'_> {
             }
             match *obstacle {
                 Obstacle::Segment(i) => {
-                    let (p, q, w) = self.obstacles.segments[i];
+                    let Some(&(p, q, w)) = self.obstacles.segments.get(i) else {
+                        continue;
+                    };
                     if w < least {
                         continue;
                     }
@@ -309,7 +313,7 @@ impl Near<'_> {
                     }
                 }
                 Obstacle::Box(i) => {
-                    let a = b.overlap(&self.obstacles.boxes[i].0);
+                    let a = self.obstacles.boxes.get(i).map_or(0.0, |o| b.overlap(&o.0));
                     if a > 0.0 {
                         cost += 200.0 + a;
                         if cost >= limit {
@@ -401,7 +405,8 @@ pub(crate) fn place(
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
     // `reach`): its obstacles are looked up once.
-    let out = gap.max(reach) + RINGS[RINGS.len() - 1] + NOOK_STEP + 2.0 * (half.x + half.y);
+    let [.., last_ring] = RINGS;
+    let out = gap.max(reach) + last_ring + NOOK_STEP + 2.0 * (half.x + half.y);
     let within = Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
     let near = obstacles.near(&within, Some(anchor));
     // The best so far: its score (cost and distance), its cost, its centre.

@@ -48,6 +48,9 @@ impl std::fmt::Display for OnGrid {
         // zeros, the point, the whole part, the sign.
         let mut buf = [0u8; 24];
         let mut at = buf.len();
+        // cannot fail: |n| < 1e12, so at most 10 whole digits, a point, 2
+        // decimals and a sign: 14 bytes of the 24.
+        #[allow(clippy::indexing_slicing)]
         let mut put = |b: u8| {
             at -= 1;
             buf[at] = b;
@@ -69,7 +72,8 @@ impl std::fmt::Display for OnGrid {
         if n < 0 {
             put(b'-');
         }
-        f.write_str(std::str::from_utf8(&buf[at..]).unwrap_or("0"))
+        let written = buf.get(at..).unwrap_or_default();
+        f.write_str(std::str::from_utf8(written).unwrap_or("0"))
     }
 }
 

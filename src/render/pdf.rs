@@ -247,6 +247,9 @@ impl Page {
                         c.set_font(Name(format!("F{index}").as_bytes()), size);
                         current = Some(index);
                     }
+                    // cannot fail: `face` gives a position in `faces` (one
+                    // found there or the one it pushed), which only grow.
+                    #[allow(clippy::indexing_slicing)]
                     let face = &mut self.faces[index];
                     let old = u16::try_from(glyph.id.0)
                         .map_err(|_| Error::Limit("a glyph id beyond 65535".into()))?;

@@ -118,7 +118,9 @@ fn encode_opaque(pixmap: &tiny_skia::Pixmap) -> std::result::Result<Vec<u8>, png
     let mut row = vec![0; 3 * w as usize];
     for pixels in pixmap.data().chunks_exact(4 * w as usize) {
         for (rgb, rgba) in row.chunks_exact_mut(3).zip(pixels.chunks_exact(4)) {
-            rgb.copy_from_slice(&rgba[..3]);
+            if let Some(colour) = rgba.get(..3) {
+                rgb.copy_from_slice(colour);
+            }
         }
         std::io::Write::write_all(&mut stream, &row)?;
     }

@@ -480,7 +480,9 @@ impl Scene {
             let mut frame = held.clone();
             // The first pose moved; the number of poses is unchanged, so
             // the frame stays as valid as the held scene.
-            frame.angles[0] = *a;
+            if let Some(first) = frame.angles.first_mut() {
+                *first = *a;
+            }
             draw::build(&frame, Some(&layout)).0
         }))
     }

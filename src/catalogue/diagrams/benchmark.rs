@@ -37,13 +37,18 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let segments = table.numbers(table.column(&["segments"])?)?;
     let errors = table.numbers(table.column(&["measured"])?)?;
     let times = table.numbers(table.column(&["time"])?)?;
-    let rows: Vec<Row> = (0..curves.len())
-        .map(|k| Row {
-            curve: curves[k],
-            method: methods[k],
-            segments: segments[k],
-            error: errors[k],
-            time: times[k],
+    let rows: Vec<Row> = curves
+        .into_iter()
+        .zip(methods)
+        .zip(segments)
+        .zip(errors)
+        .zip(times)
+        .map(|((((curve, method), segments), error), time)| Row {
+            curve,
+            method,
+            segments,
+            error,
+            time,
         })
         .filter(|r| METHODS.iter().any(|m| m.0 == r.method))
         .filter(|r| r.segments > 0.0 && r.error > 0.0 && r.time > 0.0)
@@ -98,8 +103,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         let mut plot = Plot::new(name, rect, x, y, ctx.tolerance, ctx.font)?
             .with_grid()
             .with_caption(caption);
-        for (j, curve) in names.iter().enumerate() {
-            let dash = dashes[j % dashes.len()];
+        for (curve, &dash) in names.iter().zip(dashes.iter().cycle()) {
             for (method, symbol, _) in METHODS {
                 let mut points: Vec<(f64, f64)> = rows
                     .iter()

@@ -39,6 +39,9 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let scene = ctx
         .scene(page.width(), page.height() - notes_height - band)?
         .with_layers([Layer::Mechanism, Layer::Centrodes]);
+    // cannot fail: a scene's figure has its main view as its first panel
+    // (`draw::build` puts it there).
+    #[allow(clippy::indexing_slicing)]
     let panel = scene.figure()?.panels()[0].clone();
     let r = *panel.rect();
     let area = PageRect::new(r.x, r.y, r.width, r.height + band);

@@ -26,14 +26,14 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         .map(|k| 10f64.powf(k as f64 / PER_DECADE as f64))
         .filter(|rho| *rho > bound * (1.0 + 1e-9))
         .collect();
-    if radii.len() < 2 {
+    let (Some(&least), 2..) = (radii.first(), radii.len()) else {
         return Err(Error::OutOfRange {
             name: "rod",
             value: l,
             reason: "the slot radii from 1 to 1e15 need (rod + crank + offset)/2 well below 1e15"
                 .into(),
         });
-    }
+    };
     let rows = slot_convergence(&m, &radii, SAMPLES)?;
     type Value = fn(&crate::chain::ConvergenceRow) -> f64;
     let series: [(&str, &str, Symbol, Value); 3] = [
@@ -63,7 +63,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         .iter()
         .flat_map(|w| series.map(|s| (s.3)(w)))
         .fold(0.0f64, f64::max);
-    let x = Axis::log("slot radius ρ", radii[0], 1e15)?;
+    let x = Axis::log("slot radius ρ", least, 1e15)?;
     let y = Axis::log(
         "worst difference over the turn, in units of *r*",
         floor * 0.1,
@@ -89,9 +89,11 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         plot.legend_marker(legend, symbol);
     }
     // The slope −1 through the velocity at the middle radius.
-    let middle = &rows[rows.len() / 2];
-    let k = middle.velocity * middle.radius;
-    let guide: Vec<(f64, f64)> = [radii[0], 1e15]
+    // (No guide without rows: a NaN passes no filter.)
+    let k = rows
+        .get(rows.len() / 2)
+        .map_or(f64::NAN, |middle| middle.velocity * middle.radius);
+    let guide: Vec<(f64, f64)> = [least, 1e15]
         .into_iter()
         .map(|rho| (rho, k / rho))
         .filter(|(_, v)| *v >= floor * 0.1)
@@ -102,7 +104,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     }
     plot.line(
         "guide-rounding",
-        &[(radii[0], floor), (1e15, floor)],
+        &[(least, floor), (1e15, floor)],
         Dash::Dotted,
         None,
     );

@@ -81,6 +81,10 @@ impl Table {
     }
 
     /// The column's values as finite numbers.
+    // cannot fail: every row has as many fields as the header has names
+    // (`parse` refuses a row with more or fewer), and every caller passes a
+    // position in the names found by `column`.
+    #[allow(clippy::indexing_slicing)]
     pub(crate) fn numbers(&self, column: usize) -> Result<Vec<f64>> {
         self.rows
             .iter()
@@ -98,6 +102,9 @@ impl Table {
     }
 
     /// The column's texts.
+    // cannot fail: as for `numbers`, the column is one of `column`'s and
+    // every row has a field for each.
+    #[allow(clippy::indexing_slicing)]
     pub(crate) fn texts(&self, column: usize) -> Vec<&str> {
         self.rows.iter().map(|(_, f)| f[column].as_str()).collect()
     }

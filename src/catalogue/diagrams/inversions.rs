@@ -95,9 +95,9 @@ fn parts(m: &SliderCrank, p: &InversionPose) -> Parts {
 }
 
 /// The corners of the block about `a`.
-fn block(parts: &Parts, lh: f64, hh: f64) -> Vec<Point> {
+fn block(parts: &Parts, lh: f64, hh: f64) -> [Point; 4] {
     let (a, u, v) = (parts.a, parts.u, parts.v);
-    vec![
+    [
         a - u * lh - v * hh,
         a + u * lh - v * hh,
         a + u * lh + v * hh,
@@ -223,10 +223,10 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
         moving.push((b, a));
     }
     if fixed != Link::D {
-        moving.extend(bar.windows(2).map(|w| (w[0], w[1])));
+        moving.extend(bar.iter().copied().zip(bar.iter().copied().skip(1)));
     }
     if fixed != Link::C {
-        moving.extend((0..4).map(|k| (corners[k], corners[(k + 1) % 4])));
+        moving.extend(corners.into_iter().zip(corners.into_iter().cycle().skip(1)));
     }
     match fixed {
         Link::D => {
@@ -281,7 +281,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
         "block-slider",
         Role::Link,
         Shape::Block {
-            points: corners.clone(),
+            points: corners.to_vec(),
         },
     );
     s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);

@@ -321,8 +321,11 @@ impl Sketch {
                     closed: false,
                 },
             );
+            // (No direction, so no hatching, for a segment not in `points`.)
             let outward = |j: usize| {
-                let (a, b) = (points[j], points[j + 1]);
+                let (Some(&a), Some(&b)) = (points.get(j), points.get(j + 1)) else {
+                    return Vector::zeros();
+                };
                 let n = perp(&(b - a));
                 // Away from the slot's middle.
                 let mid = (slot.point)(
@@ -354,13 +357,14 @@ impl Sketch {
             .map(|(a, b)| (self.page(*a), self.page(*b)))
             .collect();
         let total: f64 = points
-            .windows(2)
-            .map(|w| (self.page(w[1]) - self.page(w[0])).norm())
+            .iter()
+            .zip(points.iter().skip(1))
+            .map(|(&a, &b)| (self.page(b) - self.page(a)).norm())
             .sum();
         let mut runs = Vec::new();
         let mut walked = 0.0;
-        for (j, w) in points.windows(2).enumerate() {
-            let (a, b) = (self.page(w[0]), self.page(w[1]));
+        for (j, (&a, &b)) in points.iter().zip(points.iter().skip(1)).enumerate() {
+            let (a, b) = (self.page(a), self.page(b));
             let len = (b - a).norm();
             let (Some(t), Some(n)) = (unit(b - a), unit(self.map.apply_vector(side(j)))) else {
                 walked += len;
@@ -410,7 +414,10 @@ impl Sketch {
         runs: &[(usize, f64, f64)],
     ) {
         for (k, &(j, first, last)) in runs.iter().enumerate() {
-            let (a, b) = (self.page(points[j]), self.page(points[j + 1]));
+            let (Some(&a), Some(&b)) = (points.get(j), points.get(j + 1)) else {
+                continue;
+            };
+            let (a, b) = (self.page(a), self.page(b));
             let Some(t) = unit(b - a) else { continue };
             let half = 0.5 * HATCH_SPACING;
             let from = self.map.invert(a + t * (first - half));

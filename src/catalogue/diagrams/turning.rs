@@ -43,7 +43,12 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.mechanism(ctx, true, false);
     sheet.meta("mean_torque", serde_json::json!(tm.mean));
     sheet.meta("fluctuation", serde_json::json!(tm.fluctuation));
-    let pieces: Vec<(f64, f64)> = tm.kinks_deg.windows(2).map(|w| (w[0], w[1])).collect();
+    let kinks = &tm.kinks_deg;
+    let pieces: Vec<(f64, f64)> = kinks
+        .iter()
+        .copied()
+        .zip(kinks.iter().copied().skip(1))
+        .collect();
     let theta =
         || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0) };
     let height = 0.5 * (page.height() - 32.0 - 24.0 - 56.0);

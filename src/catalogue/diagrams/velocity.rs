@@ -44,6 +44,9 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     // by the scene below its drawing with the scale notes: the rest of the
     // sheet moves down by what that adds.
     let grown = (base.height() - TOP).max(0.0);
+    // cannot fail: a scene's figure has its main view as its first panel
+    // (`draw::build` puts it there).
+    #[allow(clippy::indexing_slicing)]
     let panel = base.panels()[0].clone();
     // A drawing too flat to hold the legend beside it (a long rod) has it
     // in a band of its own below the scene's notes.
@@ -97,7 +100,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     construction(&mut plot, &ctx.pose());
     let drawn = plot.finish();
     sheet.panel(panel.with_items(drawn.items().iter().cloned()));
-    for detail in &base.panels()[1..] {
+    for detail in base.panels().iter().skip(1) {
         sheet.panel(detail.clone());
     }
 

@@ -36,9 +36,12 @@ pub(in crate::handout) fn short(x: f64) -> String {
 fn superscript(k: i32) -> String {
     k.to_string()
         .chars()
-        .map(|c| match c {
-            '-' => '⁻',
-            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'][d as usize - '0' as usize],
+        .filter_map(|c| match c {
+            '-' => Some('⁻'),
+            d => d
+                .to_digit(10)
+                .and_then(|d| ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'].get(d as usize))
+                .copied(),
         })
         .collect()
 }

@@ -48,10 +48,13 @@ pub(super) fn may_show(t: &PageFromWorld, rect: &PageRect, shape: &Shape) -> boo
         Shape::Text { .. } | Shape::Note { .. } => return true,
     };
     let page: Vec<Point> = points.iter().map(|p| t.apply(*p)).collect();
-    if page.is_empty() || !page.iter().all(|p| p.x.is_finite() && p.y.is_finite()) {
+    let Some(&first) = page.first() else {
+        return true;
+    };
+    if !page.iter().all(|p| p.x.is_finite() && p.y.is_finite()) {
         return true;
     }
-    let (mut lo, mut hi) = (page[0], page[0]);
+    let (mut lo, mut hi) = (first, first);
     for p in &page {
         lo = lo.inf(p);
         hi = hi.sup(p);

@@ -104,9 +104,10 @@ impl PanelWriter<'_> {
         if pts.len() < 3 || !pts.iter().all(finite) {
             return None;
         }
+        let &first = pts.first()?;
         let (lo, hi) = pts
             .iter()
-            .fold((pts[0], pts[0]), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
+            .fold((first, first), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
         let b = Bounds { min: lo, max: hi };
         // Room beside the pin for its letter: the pin, the letter's gap
         // and the letter.

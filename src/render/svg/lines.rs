@@ -59,18 +59,15 @@ impl PanelWriter<'_> {
             return None;
         }
         self.obstacles.polyline(&pts);
-        if closed {
-            self.obstacles.segment(pts[pts.len() - 1], pts[0]);
+        if closed && let (Some(&last), Some(&first)) = (pts.last(), pts.first()) {
+            self.obstacles.segment(last, first);
         }
-        if pts.len() == 2 && !closed && centre::is_centre_line(ink.role, ink.id) {
+        if let [from, to] = *pts.as_slice()
+            && !closed
+            && centre::is_centre_line(ink.role, ink.id)
+        {
             // Written once the labels are placed (with gaps for them).
-            return Some(self.open_line(
-                ink,
-                centre::Course::Centre {
-                    from: pts[0],
-                    to: pts[1],
-                },
-            ));
+            return Some(self.open_line(ink, centre::Course::Centre { from, to }));
         }
         Some(ink.tag(path(polyline_d(&pts, closed), ink.pen)))
     }

@@ -43,7 +43,7 @@ fn trace(
         .subpaths()
         .iter()
         .max_by_key(|s| s.segments().len())?;
-    let anchor = longest.segments()[longest.segments().len() / 2].end();
+    let anchor = longest.segments().get(longest.segments().len() / 2)?.end();
     Some((traced.to_figure_path(map)?, map.invert(anchor)))
 }
 

@@ -51,8 +51,9 @@ fn steps() -> impl DoubleEndedIterator<Item = f64> + Clone {
     (0..13).flat_map(|k| {
         let p = 10f64.powi(k);
         let first = if k == 0 { 1 } else { 0 };
-        [1.0, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0][first..]
+        [1.0, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0]
             .iter()
+            .skip(first)
             .map(move |m| m * p)
             .collect::<Vec<_>>()
     })
@@ -114,10 +115,11 @@ fn points(ctx: &Ctx) -> (Vec<Point>, Option<Point>) {
 /// detail, page units: the 150 the plates require, with a margin.
 const CORE_TARGET: f64 = 160.0;
 
-/// The box of `pts`.
+/// The box of `pts` (the origin's when there are none).
 fn bounds(pts: &[Point]) -> (Point, Point) {
-    let mut min = pts[0];
-    let mut max = pts[0];
+    let first = pts.first().copied().unwrap_or_else(Point::origin);
+    let mut min = first;
+    let mut max = first;
     for p in pts {
         min = min.inf(p);
         max = max.sup(p);
@@ -225,7 +227,7 @@ pub(crate) fn union(details: &[Detail], scale: f64, max_width: f64) -> Option<De
     let first = details.first()?;
     let (mut lo, mut hi) = (first.region.min(), first.region.max());
     let mut least = first.magnification;
-    for d in &details[1..] {
+    for d in details.iter().skip(1) {
         lo = lo.inf(&d.region.min());
         hi = hi.sup(&d.region.max());
         least = least.min(d.magnification);

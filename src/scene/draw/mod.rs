@@ -257,6 +257,9 @@ fn with_detail(
 /// draws at all of them (the union of their frames, the most notes of any),
 /// and one detail showing the union of their details' regions at the least
 /// of their magnifications, narrowed to the page if need be.
+// cannot fail: one context per pose, and the held poses are at least one
+// (`valid::held_view` refuses an empty list).
+#[allow(clippy::indexing_slicing)]
 pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
     let m = scene.mechanism();
     let poses: Vec<Constructions> = angles
@@ -333,6 +336,9 @@ pub(crate) fn build(scene: &Scene, layout: Option<&Layout>) -> (Figure, Evaluati
         .iter()
         .map(|a| Constructions::new(m.pose(*a)))
         .collect();
+    // cannot fail: a scene is drawn only once `valid::scene` has passed it,
+    // which refuses one without a pose.
+    #[allow(clippy::indexing_slicing)]
     let mut ctx = Ctx {
         scene,
         main: &poses[0],
@@ -431,7 +437,7 @@ fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bo
         });
         match layer {
             Layer::Mechanism => {
-                mechanism::draw(ctx, &poses[1..], canvas);
+                mechanism::draw(ctx, poses.get(1..).unwrap_or_default(), canvas);
                 if main {
                     dimensions::offset(ctx, canvas);
                 }
@@ -610,7 +616,7 @@ fn metadata(scene: &Scene, points: Map<String, Value>, ev: &Evaluations) -> Map<
     );
     meta.insert(
         "angle_deg".into(),
-        json!(round(scene.angles()[0].degrees())),
+        json!(scene.angles().first().map(|a| round(a.degrees()))),
     );
     if scene.angles().len() > 1 {
         let all: Vec<f64> = scene.angles().iter().map(|a| round(a.degrees())).collect();
