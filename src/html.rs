@@ -81,7 +81,8 @@ mod tests {
     fn rich_text_is_set_in_html_and_escaped() {
         assert_eq!(
             rich("*CE* = V_p / ω² <b>").into_string(),
-            "<i>CE</i> = V<sub>p</sub> / ω<sup>2</sup> &lt;b&gt;"
+            // ω italic as everywhere (the typographic convention).
+            "<i>CE</i> = V<sub>p</sub> / <i>ω</i><sup>2</sup> &lt;b&gt;"
         );
     }
 
