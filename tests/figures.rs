@@ -503,3 +503,21 @@ fn the_polar_layer_traces_fig_64_as_far_as_the_crank_has_turned() {
         );
     }
 }
+
+/// Ng's torque (264.87 N·mm) is a number the figure keeps whatever the
+/// engine or unit (a unit is a name): drawn for a 2 mm crank in metres
+/// it printed T = 264.87 N·m and F_p = 130 249 N without a word (issue
+/// 20). The notes now say whose number it is; on Ng's own rig they do
+/// not.
+#[test]
+fn ngs_torque_on_another_engine_is_said_to_be_ngs() {
+    let says = |options: &slider_crank::catalogue::FigureOptions| {
+        let svg = to_svg(&FigureName::NgFig1Torque.figure(options).unwrap());
+        svg.contains("Ng’s number for his rig")
+    };
+    let mut other = slider_crank::catalogue::FigureOptions::default();
+    other.mechanism = Some(SliderCrank::new(0.002, 0.006, 0.0).unwrap());
+    other.length_unit = Some("m".parse().unwrap());
+    assert!(says(&other));
+    assert!(!says(&slider_crank::catalogue::FigureOptions::default()));
+}

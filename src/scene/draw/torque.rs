@@ -3,6 +3,7 @@
 
 use super::velocity::basics_e;
 use super::{Ctx, NamedArrow};
+use crate::analytic::statics::NG_TORQUE;
 use crate::figure::{RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
 use crate::scene::canvas::Canvas;
@@ -96,7 +97,27 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
             )
         ),
     }));
+    if let Some(note) = borrowed_torque(ctx, t) {
+        out.push(RichText::parse(&note));
+    }
     out
+}
+
+/// A note when the torque is Ng's (264.87 N·mm, 1 kg on a 27 mm arm)
+/// drawn for another engine or in another unit: the number is kept as it
+/// is (a unit is a name, nothing is converted), so the figure says where
+/// it came from and how to give the engine's own. `None` for Ng's rig in
+/// millimetres, or any other torque.
+fn borrowed_torque(ctx: &Ctx, t: f64) -> Option<String> {
+    let m = ctx.main.pose().mechanism();
+    let units = ctx.scene.units();
+    let ngs_rig = m.crank() == 25.0 && m.rod() == 72.0 && units.length().to_string() == "mm";
+    (t == NG_TORQUE && !ngs_rig).then(|| {
+        format!(
+            "*T* is Ng’s number for his rig (1 kg on a 27 mm arm, {} N·mm), kept as it is: give this engine’s own in a scene file (torque = …).",
+            short(NG_TORQUE)
+        )
+    })
 }
 
 /// `= 12.35 N` for a force's magnitude, or `exceeds 1.8×10³⁰⁸ N` when it is
