@@ -547,3 +547,50 @@ fn an_animation_plays_and_its_frame_is_drawn() {
     };
     assert!(shot(500) != shot(1500), "the animation does not move");
 }
+
+/// Prints the standalone SVG `svg` (opened as the browser opens a file)
+/// to PDF and checks its faces are the figure's own, embedded.
+fn check_svg_faces(browser: &Path, svg: &Path) {
+    let pdf = svg.with_extension("print.pdf");
+    chromium(
+        browser,
+        SCREEN,
+        900,
+        &[
+            "--no-pdf-header-footer",
+            &format!("--print-to-pdf={}", pdf.display()),
+        ],
+        &url(svg),
+    );
+    assert_fonts_embedded(&pdf);
+}
+
+#[test]
+fn a_standalone_svg_with_embed_fonts_is_set_in_its_own_face() {
+    let Some(browser) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    // Italic letters, Greek, primes (from the maths face) and digits.
+    for name in ["fig-67-example", "ng-fig-8-forces", "rod-motion"] {
+        let svg = dir.path().join(format!("{name}.svg"));
+        succeeded(&run(&[
+            "figure",
+            name,
+            "--embed-fonts",
+            "--out",
+            svg.to_str().unwrap(),
+        ]));
+        check_svg_faces(&browser, &svg);
+    }
+    // Libertinus Serif too.
+    let svg = dir.path().join("libertinus.svg");
+    succeeded(&run(&[
+        "figure",
+        "fig-66-kisch",
+        "--font",
+        "libertinus-serif",
+        "--embed-fonts",
+        "--out",
+        svg.to_str().unwrap(),
+    ]));
+    check_svg_faces(&browser, &svg);
+}

@@ -31,8 +31,14 @@ pub(crate) fn font_faces(text: &str, fonts: &[Font]) -> String {
     let chars: BTreeSet<char> = text
         .chars()
         .flat_map(|c| std::iter::once(c).chain(c.to_uppercase()))
-        .filter(|c| !c.is_control())
         .collect();
+    faces_of(&chars, fonts)
+}
+
+/// The `@font-face` rules of [`font_faces`] for exactly the characters
+/// `chars` (control characters left out); empty when `chars` is.
+pub(crate) fn faces_of(chars: &BTreeSet<char>, fonts: &[Font]) -> String {
+    let chars: BTreeSet<char> = chars.iter().copied().filter(|c| !c.is_control()).collect();
     let mut css = String::new();
     for font in fonts {
         let files = font.files();

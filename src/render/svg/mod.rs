@@ -11,6 +11,7 @@
 
 mod centre;
 mod cull;
+mod embed;
 mod frame;
 mod hatching;
 mod lines;
@@ -28,6 +29,7 @@ use crate::figure::{
 use crate::figure::{Pen, Style};
 use crate::geom::Point;
 use crate::render::Element;
+pub use embed::to_svg_with_fonts;
 use serde_json::{Value, json};
 use text::{ink_box, starts_italic, text_node};
 
