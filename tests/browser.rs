@@ -477,7 +477,50 @@ fn a_handout_loads_draws_and_prints_on_a4_and_letter() {
         args.extend(["--paper", paper, "--out", page.to_str().unwrap()]);
         succeeded(&run(&args));
         check_print(&browser, &page, size);
+        // Issue 22: pages half empty where a tall figure went on to the
+        // next. Printed, it takes 9 A4 or 10 Letter pages, and every page
+        // but the last is set at least half way down.
+        let fills = page_fills(&page.with_extension("print.pdf"));
+        let most = if paper == "a4" { 9 } else { 10 };
+        assert!(fills.len() <= most, "{file}: {} pages", fills.len());
+        for (k, fill) in fills.iter().enumerate().take(fills.len() - 1) {
+            assert!(
+                *fill >= 0.5,
+                "{file}: page {} set {:.0} % of the way down: {fills:.2?}",
+                k + 1,
+                100.0 * fill
+            );
+        }
     }
+}
+
+/// How far down each page of the printed `pdf` its text reaches: the
+/// bottom of its lowest word (a figure's lowest text is its caption)
+/// from the top of the printable page, as a fraction of the printable
+/// height (the handout's margins: 14 mm top, 16 mm bottom).
+fn page_fills(pdf: &Path) -> Vec<f64> {
+    let out = Command::new("pdftotext")
+        .args(["-bbox", pdf.to_str().unwrap(), "-"])
+        .output()
+        .unwrap();
+    let html = String::from_utf8_lossy(&out.stdout);
+    let number = |tag: &str, name: &str| -> f64 {
+        let at = tag.find(&format!("{name}=\"")).unwrap() + name.len() + 2;
+        tag[at..at + tag[at..].find('"').unwrap()].parse().unwrap()
+    };
+    let pt_per_mm = 72.0 / 25.4;
+    html.split("<page ")
+        .skip(1)
+        .map(|page| {
+            let height = number(page, "height");
+            let lowest = page
+                .split("<word ")
+                .skip(1)
+                .map(|w| number(w, "yMax"))
+                .fold(0.0, f64::max);
+            (lowest - 14.0 * pt_per_mm) / (height - 30.0 * pt_per_mm)
+        })
+        .collect()
 }
 
 #[test]
