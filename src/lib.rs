@@ -107,6 +107,9 @@
 //! - `html` (default): the HTML pages and the faces they carry (maud,
 //!   subsetter, base64): [`gallery`], [`handout`], an animation's page
 //!   and an SVG with its faces embedded.
+//! - `fonts` (default; `png`, `pdf` and `html` need it): the bundled
+//!   faces' files ([`Font::data`]); without it text is measured from the
+//!   glyph table alone.
 //!
 //! [`gallery`] makes every named figure in each format, the tables and an
 //! `index.html` captioning each figure with the seed section it

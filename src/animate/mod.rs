@@ -378,11 +378,12 @@ mod tests {
     fn written_a_frame_at_a_time_is_the_document_held_whole() {
         let scene = engine();
         let whole = Animation::new(&scene, 5, 2.0).unwrap();
-        for format in [
+        let formats: &[AnimationFormat] = &[
             AnimationFormat::Svg,
             #[cfg(feature = "html")]
             AnimationFormat::Html,
-        ] {
+        ];
+        for &format in formats {
             let (mut out, mut pieces, mut seen) = (String::new(), 0, Vec::new());
             let mut sink = |s: &str| {
                 out.push_str(s);
