@@ -4,7 +4,7 @@
 //! templates, so every text is escaped. Every page carries the faces it
 //! is set in ([`fonts`]).
 
-mod fonts;
+pub(crate) mod fonts;
 
 use crate::figure::{Font, RichText};
 use maud::{DOCTYPE, Markup, PreEscaped, html};

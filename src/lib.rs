@@ -104,6 +104,12 @@
 //! - `pdf` (default): vector PDF output with the bundled faces embedded
 //!   ([`render::to_pdf`]; without the feature it returns
 //!   [`Error::Unsupported`]).
+//! - `html` (default): the HTML pages and the faces they carry (maud,
+//!   subsetter, base64): [`gallery`], [`handout`], an animation's page
+//!   and an SVG with its faces embedded.
+//! - `fonts` (default; `png`, `pdf` and `html` need it): the bundled
+//!   faces' files ([`Font::data`]); without it text is measured from the
+//!   glyph table alone.
 //!
 //! [`gallery`] makes every named figure in each format, the tables and an
 //! `index.html` captioning each figure with the seed section it
@@ -151,8 +157,9 @@ parse_by_name!(
     Notation,
     Assembly,
     table::Format,
-    handout::Paper,
 );
+#[cfg(feature = "html")]
+parse_by_name!(handout::Paper);
 
 pub mod analytic;
 mod angle;
@@ -164,9 +171,12 @@ pub mod diagram;
 pub mod dynamics;
 mod error;
 pub mod figure;
+#[cfg(feature = "html")]
 pub mod gallery;
 pub mod geom;
+#[cfg(feature = "html")]
 pub mod handout;
+#[cfg(feature = "html")]
 mod html;
 pub mod input;
 mod mechanism;

@@ -962,3 +962,21 @@ fn the_turning_moment_notes_state_the_offset() {
     );
     assert!(!in_line.contains(">e</tspan>"), "an offset stated in line");
 }
+
+#[test]
+fn embed_fonts_is_refused_for_png_and_pdf_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    for file in ["x.png", "x.pdf"] {
+        let path = dir.path().join(file);
+        let args = [
+            "figure",
+            "fig-63-velocity",
+            "--embed-fonts",
+            "--out",
+            path.to_str().unwrap(),
+        ];
+        let e = refused(&args);
+        assert!(e.contains("--embed-fonts is for SVG output"), "{e}");
+        assert!(!path.exists(), "{file} written");
+    }
+}

@@ -10,7 +10,8 @@ pub enum AnimationFormat {
     /// A self-playing SVG ([`super::Animation::to_svg`]).
     Svg,
     /// An HTML page with a slider and a play button
-    /// ([`super::Animation::to_html`]).
+    /// ([`super::Animation::to_html`]; feature `html`).
+    #[cfg(feature = "html")]
     Html,
 }
 
@@ -19,6 +20,7 @@ impl AnimationFormat {
     pub fn extension(&self) -> &'static str {
         match self {
             AnimationFormat::Svg => "svg",
+            #[cfg(feature = "html")]
             AnimationFormat::Html => "html",
         }
     }
@@ -26,23 +28,34 @@ impl AnimationFormat {
     /// The format of a file by its extension, `.svg` or `.html` (in any
     /// case); SVG for a name without one (a device such as
     /// `/dev/stdout`, a FIFO). Any other extension, `.htm` included, is an
-    /// error that names the two.
+    /// error that names the two (the one, SVG, without the feature
+    /// `html`).
     pub fn from_path(path: &Path) -> Result<Self> {
         let Some(ext) = path.extension() else {
             return Ok(AnimationFormat::Svg);
         };
-        [AnimationFormat::Svg, AnimationFormat::Html]
-            .into_iter()
-            .find(|f| ext.eq_ignore_ascii_case(f.extension()))
-            .ok_or_else(|| {
-                Error::Parse(format!(
-                    "cannot write {}: .{} is not an animation format: give a file ending in .svg (plays by itself) or .html (with a slider)",
-                    path.display(),
-                    ext.to_string_lossy()
-                ))
-            })
+        [
+            AnimationFormat::Svg,
+            #[cfg(feature = "html")]
+            AnimationFormat::Html,
+        ]
+        .into_iter()
+        .find(|f| ext.eq_ignore_ascii_case(f.extension()))
+        .ok_or_else(|| {
+            Error::Parse(format!(
+                "cannot write {}: .{} is not an animation format: give a file ending in {FORMATS}",
+                path.display(),
+                ext.to_string_lossy()
+            ))
+        })
     }
 }
+
+/// The formats `from_path` names in its error.
+#[cfg(feature = "html")]
+const FORMATS: &str = ".svg (plays by itself) or .html (with a slider)";
+#[cfg(not(feature = "html"))]
+const FORMATS: &str = ".svg (plays by itself; the feature `html` writes .html pages)";
 
 #[cfg(test)]
 mod tests {
@@ -52,6 +65,7 @@ mod tests {
     fn the_extension_tells_the_format() {
         for (path, format) in [
             ("a.svg", AnimationFormat::Svg),
+            #[cfg(feature = "html")]
             ("a.HTML", AnimationFormat::Html),
             ("/dev/stdout", AnimationFormat::Svg),
         ] {
@@ -62,5 +76,8 @@ mod tests {
             let e = e.to_string();
             assert!(e.contains(".svg") && e.contains(".html"), "{e}");
         }
+        // Without the feature, a page is refused, naming the feature.
+        #[cfg(not(feature = "html"))]
+        assert!(AnimationFormat::from_path(Path::new("a.html")).is_err());
     }
 }

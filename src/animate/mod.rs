@@ -18,6 +18,7 @@
 
 mod format;
 mod frames;
+#[cfg(feature = "html")]
 mod page;
 mod svg;
 
@@ -144,7 +145,8 @@ impl Animation {
 
     /// The HTML page: the frames inline, a slider to scrub the crank
     /// angle and a play/pause button (a small inline script; nothing
-    /// fetched).
+    /// fetched). Feature `html`.
+    #[cfg(feature = "html")]
     pub fn to_html(&self) -> String {
         self.collected(page::write)
     }
@@ -165,6 +167,7 @@ impl Animation {
     pub fn encode(&self, format: AnimationFormat) -> String {
         match format {
             AnimationFormat::Svg => self.to_svg(),
+            #[cfg(feature = "html")]
             AnimationFormat::Html => self.to_html(),
         }
     }
@@ -221,6 +224,7 @@ pub fn write(
     });
     let write: DocumentWriter = match format {
         AnimationFormat::Svg => svg::write,
+        #[cfg(feature = "html")]
         AnimationFormat::Html => page::write,
     };
     write(&reel, &mut frames, sink)
@@ -235,6 +239,8 @@ type DocumentWriter =
 /// the page, the period, the frames' angles and the first frame (whose
 /// metadata the SVG's root carries).
 pub(super) struct Reel<'a> {
+    // read by the HTML page's heading only
+    #[cfg_attr(not(feature = "html"), allow(dead_code))]
     name: &'a str,
     period: f64,
     sheet: &'a frames::Sheet,
@@ -245,6 +251,7 @@ pub(super) struct Reel<'a> {
 
 impl Reel<'_> {
     /// The figure's name.
+    #[cfg(feature = "html")]
     fn name(&self) -> &str {
         self.name
     }
@@ -395,7 +402,12 @@ mod tests {
     fn written_a_frame_at_a_time_is_the_document_held_whole() {
         let scene = engine();
         let whole = Animation::new(&scene, 5, 2.0).unwrap();
-        for format in [AnimationFormat::Svg, AnimationFormat::Html] {
+        let formats: &[AnimationFormat] = &[
+            AnimationFormat::Svg,
+            #[cfg(feature = "html")]
+            AnimationFormat::Html,
+        ];
+        for &format in formats {
             let (mut out, mut pieces, mut seen) = (String::new(), 0, Vec::new());
             let mut sink = |s: &str| {
                 out.push_str(s);

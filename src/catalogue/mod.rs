@@ -17,5 +17,6 @@ mod source;
 pub(crate) use diagrams::Table as DataTable;
 pub use name::FigureName;
 pub use options::{FigureOptions, Fit};
+#[cfg(feature = "html")]
 pub(crate) use parse::{located, toml_error};
 pub use scene_file::SceneFile;

@@ -90,5 +90,5 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
             name.figure(&options)?
         }
     };
-    emit(&figure, to, out)
+    emit(&figure, to, false, out)
 }

@@ -27,6 +27,7 @@ pub use coupler::CouplerPoint;
 pub use instant_centre::InstantCentre;
 pub use kisch::Kisch;
 pub use klein::Klein;
+#[cfg(feature = "html")]
 pub(crate) use reading::check_load;
 pub use reading::{Graphical, Reading, Statics};
 pub use torque::TorqueLine;

@@ -10,9 +10,13 @@
 
 use crate::error::{Error, Result};
 use serde::Deserialize;
+#[cfg(feature = "fonts")]
 use skrifa::instance::{LocationRef, Size};
+#[cfg(feature = "fonts")]
 use skrifa::metrics::GlyphMetrics;
+#[cfg(feature = "fonts")]
 use skrifa::string::StringId;
+#[cfg(feature = "fonts")]
 use skrifa::{FontRef, GlyphId, MetadataProvider};
 use std::collections::HashMap;
 use std::fmt;
@@ -111,6 +115,7 @@ impl TextBox {
 }
 
 /// One face parsed once: its character map, advances and ink bounds.
+#[cfg(feature = "fonts")]
 struct Face {
     font: FontRef<'static>,
     glyphs: GlyphMetrics<'static>,
@@ -130,6 +135,7 @@ struct CharMetrics {
     present: bool,
 }
 
+#[cfg(feature = "fonts")]
 impl Face {
     // cannot fail: only the faces compiled in are parsed (`bundled`), and the tests parse every one.
     #[allow(clippy::expect_used)]
@@ -176,6 +182,7 @@ impl Face {
 /// The typst-assets face of that PostScript name, parsed.
 // cannot fail: the names asked for are the two of `Font`, which typst-assets (a pinned version) ships; the tests load both.
 #[allow(clippy::expect_used)]
+#[cfg(feature = "fonts")]
 fn bundled(postscript_name: &str) -> Face {
     let data = typst_assets::fonts()
         .find(|data| {
@@ -227,6 +234,7 @@ impl Font {
     }
 
     /// The PostScript name of a style's file.
+    #[cfg(feature = "fonts")]
     pub(crate) fn postscript_name(&self, style: FontStyle) -> &'static str {
         match (self, style) {
             (Font::NewComputerModern, FontStyle::Regular) => "NewCM10-Regular",
@@ -248,7 +256,9 @@ impl Font {
         }
     }
 
-    /// The font file (OpenType) of a style, bundled in the binary.
+    /// The font file (OpenType) of a style, bundled in the binary
+    /// (feature `fonts`).
+    #[cfg(feature = "fonts")]
     pub fn data(&self, style: FontStyle) -> &'static [u8] {
         self.face(style).font.data().as_bytes()
     }
@@ -256,13 +266,15 @@ impl Font {
     /// Every font file the face is drawn from: regular, italic, and the
     /// face its missing symbols come from (New Computer Modern's maths
     /// face). A renderer falling back to them in this order draws what
-    /// [`Font::width`] measures.
+    /// [`Font::width`] measures. Feature `fonts`.
+    #[cfg(feature = "fonts")]
     pub fn files(&self) -> Vec<&'static [u8]> {
         let mut v = vec![self.data(FontStyle::Regular), self.data(FontStyle::Italic)];
         v.extend(self.symbols().map(|f| f.font.data().as_bytes()));
         v
     }
 
+    #[cfg(feature = "fonts")]
     fn face(&self, style: FontStyle) -> &'static Face {
         static FACES: [OnceLock<Face>; 4] = [const { OnceLock::new() }; 4];
         self.slot(style, &FACES)
@@ -270,6 +282,7 @@ impl Font {
     }
 
     /// The face of the symbols missing from the text faces.
+    #[cfg(feature = "fonts")]
     fn symbols(&self) -> Option<&'static Face> {
         static MATH: OnceLock<Face> = OnceLock::new();
         match self {
@@ -280,6 +293,7 @@ impl Font {
 
     /// The face and glyph `c` is drawn with: the style's own, else the
     /// symbols face's, else the style's `.notdef`.
+    #[cfg(feature = "fonts")]
     fn glyph(&self, c: char, style: FontStyle) -> (&'static Face, GlyphId) {
         let face = self.face(style);
         if let Some(g) = face.font.charmap().map(c) {
@@ -321,7 +335,30 @@ impl Font {
             .or_insert_with(|| self.measured_metrics(c, style))
     }
 
+    /// The metrics of `c` in `style` without the faces (feature `fonts`
+    /// off): those of the table's M, the widest capital but one, and
+    /// missing. Only characters outside the glyph table (ASCII,
+    /// Latin-1, Greek and the signs figures use) are measured so.
+    #[cfg(not(feature = "fonts"))]
+    fn measured_metrics(&self, _: char, style: FontStyle) -> CharMetrics {
+        let table = super::glyphs::TABLES[self.index(style)];
+        let m = table
+            .chars
+            .binary_search_by_key(&'M', |g| g.0)
+            .map_or([1.0, 0.0, 0.0, 1.0, 0.7], |i| table.chars[i].1);
+        let [advance, left, bottom, right, top] = m;
+        CharMetrics {
+            advance,
+            bottom,
+            top,
+            left,
+            right,
+            present: false,
+        }
+    }
+
     /// The metrics of `c` in `style` read from the faces' outlines.
+    #[cfg(feature = "fonts")]
     fn measured_metrics(&self, c: char, style: FontStyle) -> CharMetrics {
         let (face, g) = self.glyph(c, style);
         let [left, bottom, right, top] = face.ink(g);
@@ -413,8 +450,10 @@ impl FromStr for Font {
 #[cfg(test)]
 mod tests {
     use super::*;
+    #[cfg(feature = "fonts")]
     use skrifa::raw::TableProvider;
 
+    #[cfg(feature = "fonts")]
     /// The advances of `text` in ems, read from the raw `cmap` and `hmtx`
     /// tables of the file.
     fn raw_advances(data: &[u8], text: &str) -> f64 {
@@ -430,6 +469,7 @@ mod tests {
             .sum()
     }
 
+    #[cfg(feature = "fonts")]
     #[test]
     fn width_is_the_sum_of_the_advances_in_the_file() {
         for font in Font::ALL {
@@ -443,6 +483,7 @@ mod tests {
         }
     }
 
+    #[cfg(feature = "fonts")]
     #[test]
     fn faces_and_styles_differ() {
         let s = "Klein's construction FCG";
@@ -505,6 +546,7 @@ mod tests {
         }
     }
 
+    #[cfg(feature = "fonts")]
     #[test]
     fn primes_of_new_computer_modern_come_from_its_maths_face() {
         let f = Font::NewComputerModern;
@@ -531,6 +573,7 @@ mod tests {
         assert!(e.contains("new-computer-modern, libertinus-serif"), "{e}");
     }
 
+    #[cfg(feature = "fonts")]
     /// The characters the glyph table holds, where a face (or its
     /// symbols face) has them: ASCII and Latin-1, the modifier primes
     /// (the primes figures set), Greek, the dashes, quotes and primes,
@@ -549,6 +592,7 @@ mod tests {
         ('≈', '≥'),
     ];
 
+    #[cfg(feature = "fonts")]
     /// The source of `glyphs.rs`: every character of [`TABLE_RANGES`] the
     /// faces have, measured from their outlines as [`Font::measured_metrics`]
     /// does, written exactly (`{:?}` of an f64 reads back as itself).
@@ -585,6 +629,7 @@ mod tests {
         out
     }
 
+    #[cfg(feature = "fonts")]
     const GLYPHS_HEAD: &str =
         "//! Glyph metrics of the bundled faces, in ems: each style's vertical
 //! metrics and, for the characters figures write, the advance and the ink
@@ -610,6 +655,7 @@ pub(super) struct GlyphTable {
 }
 ";
 
+    #[cfg(feature = "fonts")]
     #[test]
     fn the_glyph_table_is_what_the_faces_measure() {
         let source = glyph_table_source();
@@ -636,6 +682,19 @@ pub(super) struct GlyphTable {
                 }
                 assert_eq!(font.metrics(style), font.face(style).vertical());
             }
+        }
+    }
+
+    /// Without the faces, a character outside the glyph table.
+    #[test]
+    #[cfg(not(feature = "fonts"))]
+    fn a_character_outside_the_table_is_measured_as_an_m_and_missing() {
+        for font in Font::ALL {
+            let m = font.measure("M", 10.0, FontStyle::Italic);
+            assert_eq!(font.measure("\u{4E2D}", 10.0, FontStyle::Italic), m);
+            assert!(m.width > 5.0, "{m:?}");
+            assert!(!font.has_glyph('\u{4E2D}', FontStyle::Regular));
+            assert!(font.has_glyph('θ', FontStyle::Regular));
         }
     }
 }

@@ -23,9 +23,22 @@ use subsetter::GlyphRemapper;
 /// characters of `text` it draws, under the family names the figures ask
 /// for ([`Font::css_family`]). Bold is synthesised from the regular face.
 /// A face none of whose characters `text` holds is left out; empty for an
-/// empty `text`.
+/// empty `text`. The capitals of `text`'s letters are carried too: a
+/// browser sets small capitals (a caption's "Figure") from the face's
+/// capitals at a smaller size, and one it lacks (the I of "Drawing")
+/// comes from a system face.
 pub(crate) fn font_faces(text: &str, fonts: &[Font]) -> String {
-    let chars: BTreeSet<char> = text.chars().filter(|c| !c.is_control()).collect();
+    let chars: BTreeSet<char> = text
+        .chars()
+        .flat_map(|c| std::iter::once(c).chain(c.to_uppercase()))
+        .collect();
+    faces_of(&chars, fonts)
+}
+
+/// The `@font-face` rules of [`font_faces`] for exactly the characters
+/// `chars` (control characters left out); empty when `chars` is.
+pub(crate) fn faces_of(chars: &BTreeSet<char>, fonts: &[Font]) -> String {
+    let chars: BTreeSet<char> = chars.iter().copied().filter(|c| !c.is_control()).collect();
     let mut css = String::new();
     for font in fonts {
         let files = font.files();
@@ -246,5 +259,23 @@ mod tests {
         let plain = font_faces("θ = 30°", &[Font::NewComputerModern]);
         assert_eq!(plain.matches("@font-face").count(), 2, "{plain}");
         assert!(font_faces("", &[Font::NewComputerModern]).is_empty());
+    }
+
+    #[test]
+    fn a_page_carries_the_capitals_its_small_capitals_are_set_from() {
+        // "Drawing." in small capitals is set as "DRAWING." from the
+        // regular face: its cut maps the I the text does not hold.
+        let css = font_faces("Drawing.", &[Font::NewComputerModern]);
+        let regular = css.lines().next().unwrap();
+        let start = regular.find("base64,").unwrap() + "base64,".len();
+        let end = start + regular[start..].find(')').unwrap();
+        let data = base64::engine::general_purpose::STANDARD
+            .decode(&regular[start..end])
+            .unwrap();
+        let face = FontRef::new(&data).unwrap();
+        for c in "DRAWINGrawing.".chars() {
+            assert!(face.charmap().map(c).is_some(), "{c}");
+        }
+        assert!(face.charmap().map('Q').is_none());
     }
 }

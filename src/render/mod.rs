@@ -33,6 +33,8 @@ pub use png::to_png;
 pub use save::save;
 pub(crate) use svg::root_size;
 pub use svg::to_svg;
+#[cfg(feature = "html")]
+pub use svg::to_svg_with_fonts;
 
 /// Renders SVG text to PNG bytes: built without the `png` feature, this
 /// returns [`Error::Unsupported`](crate::Error::Unsupported) whatever the

@@ -11,6 +11,8 @@
 
 mod centre;
 mod cull;
+#[cfg(feature = "html")]
+mod embed;
 mod frame;
 mod hatching;
 mod lines;
@@ -28,6 +30,8 @@ use crate::figure::{
 use crate::figure::{Pen, Style};
 use crate::geom::Point;
 use crate::render::Element;
+#[cfg(feature = "html")]
+pub use embed::to_svg_with_fonts;
 use serde_json::{Value, json};
 use text::{ink_box, starts_italic, text_node};
 
