@@ -341,11 +341,13 @@ impl Font {
     /// Latin-1, Greek and the signs figures use) are measured so.
     #[cfg(not(feature = "fonts"))]
     fn measured_metrics(&self, _: char, style: FontStyle) -> CharMetrics {
-        let table = super::glyphs::TABLES[self.index(style)];
+        let table = self.slot(style, &super::glyphs::TABLES);
         let m = table
             .chars
             .binary_search_by_key(&'M', |g| g.0)
-            .map_or([1.0, 0.0, 0.0, 1.0, 0.7], |i| table.chars[i].1);
+            .ok()
+            .and_then(|i| table.chars.get(i))
+            .map_or([1.0, 0.0, 0.0, 1.0, 0.7], |g| g.1);
         let [advance, left, bottom, right, top] = m;
         CharMetrics {
             advance,
