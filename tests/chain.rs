@@ -3,6 +3,10 @@
 //! the straight slot's first-order perturbation, Kennedy's theorem, and the
 //! inversions' link angles read off their own frames.
 
+#[allow(dead_code)] // the helpers the figure tests use
+mod common;
+
+use common::read_text;
 use proptest::prelude::*;
 use slider_crank::chain::{arc_position_by_iteration, quadric_sweep, slot_sweep};
 use slider_crank::construct::Link;
@@ -502,23 +506,11 @@ fn centres_near_a_pin_are_called_coincident_only_when_they_are() {
                 .figure(&options)
                 .unwrap(),
         );
-        // The note from "Here" on, its tags dropped, its no-break spaces
-        // read as spaces.
+        // The note from "Here" on, as read.
         let at = svg
             .find("Here")
             .unwrap_or_else(|| panic!("{degrees}°: the notes name no centre"));
-        let mut text = String::new();
-        let mut in_tag = false;
-        for ch in svg[at..].chars().take(600) {
-            match ch {
-                '<' => in_tag = true,
-                '>' => in_tag = false,
-                '\u{a0}' if !in_tag => text.push(' '),
-                _ if !in_tag => text.push(ch),
-                _ => {}
-            }
-        }
-        text
+        read_text(&svg[at..]).chars().take(200).collect::<String>()
     };
     let apart = notes(12.0);
     assert!(!apart.contains("Oac at "), "{apart}");

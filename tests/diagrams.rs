@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{attr, metadata, num, snapshot_settings, tag};
+use common::{attr, metadata, num, read_text, snapshot_settings, tag};
 
 use serde_json::Value;
 use slider_crank::FigureName;
@@ -842,19 +842,8 @@ fn ng_fig_8_marks_the_measured_points_and_the_least_force() {
     let meta = metadata(&svg);
     assert!((meta["least_force_deg"].as_f64().unwrap() - least).abs() < 1e-9);
     assert!((meta["right_transmission_deg"].as_f64().unwrap() - right).abs() < 1e-9);
-    // The text as read, its runs' tags dropped (θ is set in italic, its
-    // value upright; a run's edge spaces are no-break spaces).
-    let mut text = String::new();
-    let mut in_tag = false;
-    for ch in svg.chars() {
-        match ch {
-            '<' => in_tag = true,
-            '>' => in_tag = false,
-            '\u{a0}' if !in_tag => text.push(' '),
-            _ if !in_tag => text.push(ch),
-            _ => {}
-        }
-    }
+    // The text as read (θ is set in italic, its value upright).
+    let text = read_text(&svg);
     assert!(text.contains(&format!("θ = {least:.1}°")), "{least}");
     assert!(text.contains(&format!("θ = {right:.1}°")), "{right}");
     assert!((least - 72.6).abs() < 0.05 && (right - 70.9).abs() < 0.05);

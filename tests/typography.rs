@@ -254,6 +254,22 @@ fn number(tag: &str, name: &str) -> f64 {
     attr(tag, name).and_then(|v| v.parse().ok()).unwrap()
 }
 
+/// The advance of characters as set at `size` in `font` (subscripts and
+/// exponents at 70 %), from the face's own widths.
+fn advance(font: Font, set: &[Set], size: f64) -> f64 {
+    set.iter()
+        .map(|s| {
+            let style = if s.italic {
+                FontStyle::Italic
+            } else {
+                FontStyle::Regular
+            };
+            let at = if s.small { 0.7 * size } else { size };
+            font.width(&s.c.to_string(), at, style)
+        })
+        .sum()
+}
+
 #[test]
 fn notes_keep_their_size_on_a_fixed_page() {
     // `--width 120mm` shrank Fig. 60's notes to 4–6 pt while its letters
@@ -291,21 +307,7 @@ fn notes_keep_their_size_on_a_fixed_page() {
                 assert_eq!(size, 13.0, "{what}");
                 let text = &rest[1..rest.find("</text>").unwrap()];
                 let (_, set) = &texts(&format!("{tag}>{text}</text>"))[0];
-                let advance: f64 = set
-                    .iter()
-                    .map(|s| {
-                        let style = if s.italic {
-                            FontStyle::Italic
-                        } else {
-                            FontStyle::Regular
-                        };
-                        font.width(
-                            &s.c.to_string(),
-                            if s.small { 0.7 * size } else { size },
-                            style,
-                        )
-                    })
-                    .sum();
+                let advance = advance(font, set, size);
                 assert!(
                     number(tag, "x") + advance <= view[2] + 0.5,
                     "{what}: {advance}"
@@ -335,17 +337,7 @@ fn panel_captions_never_run_together() {
             let start = svg[..at].rfind("<text ").unwrap();
             let tag = &svg[start..at + svg[at..].find('>').unwrap()];
             let (x, y, size) = (number(tag, "x"), number(tag, "y"), number(tag, "font-size"));
-            let w: f64 = set
-                .iter()
-                .map(|s| {
-                    let style = if s.italic {
-                        FontStyle::Italic
-                    } else {
-                        FontStyle::Regular
-                    };
-                    font.width(&s.c.to_string(), size, style)
-                })
-                .sum();
+            let w = advance(font, &set, size);
             spans.push((y, x - 0.5 * w, x + 0.5 * w));
         }
         assert!(spans.len() >= 3, "{width}: {spans:?}");

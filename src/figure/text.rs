@@ -68,34 +68,14 @@ impl RichText {
     /// Parses the markup; unbalanced `*` runs to the end, a trailing `_` is
     /// kept as a character.
     pub fn parse(markup: &str) -> Self {
-        let mut runs: Vec<Run> = Vec::new();
+        let mut out = RichText::default();
         let mut italic = false;
         let mut chars = markup.chars().peekable();
-        let push_run = |runs: &mut Vec<Run>, run: Run| {
-            if run.text.is_empty() {
-                return;
-            }
-            match runs.last_mut() {
-                Some(last)
-                    if last.subscript == run.subscript
-                        && last.superscript == run.superscript
-                        && last.italic == run.italic =>
-                {
-                    last.text.push_str(&run.text)
-                }
-                _ => runs.push(run),
-            }
-        };
-        let push = |runs: &mut Vec<Run>, text: String, subscript: bool, italic: bool| {
-            push_run(
-                runs,
-                Run {
-                    text,
-                    subscript,
-                    superscript: false,
-                    italic,
-                },
-            )
+        let run = |text: String, subscript: bool, italic: bool| Run {
+            text,
+            subscript,
+            superscript: false,
+            italic,
         };
         while let Some(ch) = chars.next() {
             match ch {
@@ -109,29 +89,24 @@ impl RichText {
                             }
                             sub.push(c);
                         }
-                        push(&mut runs, sub, true, false);
+                        out.push(run(sub, true, false));
                     }
-                    Some(c) => push(&mut runs, c.to_string(), true, false),
-                    None => push(&mut runs, "_".into(), false, italic),
+                    Some(c) => out.push(run(c.to_string(), true, false)),
+                    None => out.push(run("_".into(), false, italic)),
                 },
                 c => match SUPERSCRIPTS.iter().find(|(sup, _)| *sup == c) {
-                    Some((_, plain)) => push_run(
-                        &mut runs,
-                        Run {
-                            text: plain.to_string(),
-                            subscript: false,
-                            superscript: true,
-                            italic: false,
-                        },
-                    ),
+                    Some((_, plain)) => out.push(Run {
+                        superscript: true,
+                        ..run(plain.to_string(), false, false)
+                    }),
                     None => {
-                        let style = italic || is_quantity_greek(c) || primes_italic(&runs, c);
-                        push(&mut runs, text_prime(c).to_string(), false, style)
+                        let style = italic || is_quantity_greek(c) || primes_italic(&out.runs, c);
+                        out.push(run(text_prime(c).to_string(), false, style))
                     }
                 },
             }
         }
-        Self { runs }
+        out
     }
 
     /// The markup parsed and set in italic throughout (point letters),
@@ -265,8 +240,12 @@ impl RichText {
         words
     }
 
-    /// Appends `run`, joined to the last run when their styles agree.
+    /// Appends `run`, joined to the last run when their styles agree; an
+    /// empty run adds nothing.
     fn push(&mut self, run: Run) {
+        if run.text.is_empty() {
+            return;
+        }
         match self.runs.last_mut() {
             Some(last)
                 if last.subscript == run.subscript

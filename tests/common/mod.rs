@@ -60,3 +60,20 @@ pub fn num(svg: &str, id: &str, name: &str) -> f64 {
         .parse()
         .unwrap()
 }
+
+/// The text of `svg` as a reader sees it: its tags dropped, its no-break
+/// spaces (a run's edge spaces) read as spaces.
+pub fn read_text(svg: &str) -> String {
+    let mut text = String::new();
+    let mut in_tag = false;
+    for ch in svg.chars() {
+        match ch {
+            '<' => in_tag = true,
+            '>' => in_tag = false,
+            '\u{a0}' if !in_tag => text.push(' '),
+            _ if !in_tag => text.push(ch),
+            _ => {}
+        }
+    }
+    text
+}
