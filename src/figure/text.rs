@@ -178,9 +178,10 @@ impl RichText {
     /// in `font` at `size`, as many words on each as fit, so that a note
     /// keeps its size on a narrow page. A word wider than `width` has a
     /// line of its own (it is never cut); a text that fits is one line;
-    /// an empty text stays one empty line. Only plain spaces break: a
-    /// no-break space, or a space in a subscript, holds its words
-    /// together.
+    /// an empty text stays one empty line. Only plain spaces break, and
+    /// not those that hold a number to its unit (after a digit) or an
+    /// equation's sign to its sides (about `=`); a no-break space, or a
+    /// space in a subscript, holds its words together.
     pub fn wrap(&self, font: Font, size: f64, width: f64) -> Vec<RichText> {
         if self.width(font, size) <= width {
             return vec![self.clone()];
@@ -192,16 +193,7 @@ impl RichText {
                 line = word;
                 continue;
             }
-            let mut longer = line.clone();
-            longer.push(Run {
-                text: " ".into(),
-                subscript: false,
-                superscript: false,
-                italic: false,
-            });
-            for r in word.runs.iter().cloned() {
-                longer.push(r);
-            }
+            let longer = line.joined(&word);
             if longer.width(font, size) <= width {
                 line = longer;
             } else {
@@ -237,7 +229,38 @@ impl RichText {
         if !word.runs.is_empty() {
             words.push(word);
         }
-        words
+        // A number stays with its unit, `=` with both its sides.
+        let mut held: Vec<RichText> = Vec::new();
+        for word in words {
+            let text = word.plain();
+            match held.last_mut() {
+                Some(last)
+                    if last.plain().ends_with(|c: char| c.is_ascii_digit())
+                        || text == "="
+                        || last.plain().ends_with(" =")
+                        || last.plain() == "=" =>
+                {
+                    *last = last.joined(&word);
+                }
+                _ => held.push(word),
+            }
+        }
+        held
+    }
+
+    /// This text, a plain space, then `other`.
+    fn joined(&self, other: &RichText) -> RichText {
+        let mut out = self.clone();
+        out.push(Run {
+            text: " ".into(),
+            subscript: false,
+            superscript: false,
+            italic: false,
+        });
+        for r in other.runs.iter().cloned() {
+            out.push(r);
+        }
+        out
     }
 
     /// Appends `run`, joined to the last run when their styles agree; an
@@ -534,6 +557,15 @@ mod tests {
             out
         };
         assert_eq!(concat(&a), concat(&b));
+        // A number keeps its unit, an equation its sides.
+        let t = RichText::parse("where the torque *T* = 264.87 N·mm is kept as it is");
+        for w in [40.0, 60.0, 90.0] {
+            let lines: Vec<String> = t.wrap(f, 13.0, w).iter().map(RichText::plain).collect();
+            assert!(
+                lines.iter().any(|l| l.contains("T = 264.87 N·mm")),
+                "{w}: {lines:?}"
+            );
+        }
         // A word longer than the width is never cut.
         let long = RichText::parse("Supercalifragilistic word");
         let lines = long.wrap(f, 13.0, 10.0);
