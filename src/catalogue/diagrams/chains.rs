@@ -205,7 +205,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                     straight: rho_k.is_none(),
                     range: (lo - lh - reach, hi + lh + reach),
                     half_height: hh,
-                    block: (pose.arc_position(), lh + s.world(4.0)),
+                    block: (pose.arc_position(), lh),
                 };
                 // The slot's middle line, then the guides.
                 let mid_line: Vec<Point> = (0..=48)
@@ -224,7 +224,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                         closed: false,
                     },
                 );
-                s.guides("slot", &slot, c, r, (b, a));
+                s.guides("slot", &slot, c, (b, a));
                 // The block, following the slot.
                 let sa = pose.arc_position();
                 let mut outline: Vec<Point> = (0..=8)

@@ -238,10 +238,10 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
                 straight: true,
                 range: (near - lh - 0.15 * r, far + lh + 0.15 * r),
                 half_height: hh,
-                block: (pose.engine_pose().a().x, lh + s.world(4.0)),
+                block: (pose.engine_pose().a().x, lh),
             };
             s.segment("line-stroke", Role::Auxiliary, t - u * r, q.f);
-            s.guides("stroke", &slot, c, r, (b, a));
+            s.guides("stroke", &slot, c, (b, a));
             s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
         }
         _ => {

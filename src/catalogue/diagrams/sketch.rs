@@ -29,6 +29,9 @@ pub(super) const PIN_CLEAR: f64 = 8.0;
 pub(super) const BEARING_REACH: f64 = 25.0;
 /// Clear distance between a guide and the crank circle or a bearing.
 const CIRCLE_CLEARANCE: f64 = 7.0;
+/// How far beyond the block's ends the rod may come close to its guides,
+/// page units.
+const BLOCK_MARGIN: f64 = 4.0;
 /// Shortest guide drawn, page units.
 const GUIDE_MIN: f64 = 12.0;
 
@@ -52,8 +55,9 @@ pub(super) struct Slot<'a> {
     pub range: (f64, f64),
     /// Half the block's height: the guides are this far from the middle.
     pub half_height: f64,
-    /// The block's arc length and half length: alongside it the rod, which
-    /// starts at its middle, may come close to the guides.
+    /// The block's arc length and half length: the guides always run under
+    /// it, and alongside it (within [`BLOCK_MARGIN`]) the rod, which starts
+    /// at its middle, may come close to them.
     pub block: (f64, f64),
 }
 
@@ -252,11 +256,14 @@ impl Sketch {
 
     /// The two guides of a fixed `slot`, hatched on their outer sides,
     /// open towards the crank where the rod `rod` (from the crank pin to
-    /// the block) crosses them and clear of the crank circle of radius
-    /// `crank` about `centre` and its bearing (`guide-{name}-upper`,
+    /// the block) crosses them and clear of the bearing at `centre`, but
+    /// never short of the block: they run across the crank circle (a path,
+    /// not a part) and under the whole block (`guide-{name}-upper`,
     /// `hatch-{name}-upper-k`, …).
-    pub fn guides(&mut self, name: &str, slot: &Slot, centre: Point, crank: f64, rod: Seg) {
-        let reach = crank.max(self.world(BEARING_REACH)) + self.world(CIRCLE_CLEARANCE);
+    pub fn guides(&mut self, name: &str, slot: &Slot, centre: Point, rod: Seg) {
+        // The crank circle is the path of the pin, not a part: the guide
+        // runs across it, and stops only short of the bearing.
+        let reach = self.world(BEARING_REACH) + self.world(CIRCLE_CLEARANCE);
         let h = slot.half_height;
         for (id, delta) in [("upper", h), ("lower", -h)] {
             let (s0, s1) = slot.range;
@@ -270,20 +277,34 @@ impl Sketch {
             let at = |k: usize| s1 + (s0 - s1) * k as f64 / steps as f64;
             let (rb, ra) = (self.page(rod.0), self.page(rod.1));
             let mut last = 0;
+            // The last step still under the block: the guide reaches it.
+            let mut block_end = 0;
             let mut crossed: Option<(usize, f64)> = None;
             for k in 1..=steps {
                 let (p0, p1) = ((slot.point)(at(k - 1), delta), (slot.point)(at(k), delta));
-                if (p1 - centre).norm() < reach {
+                // Under the block (and beyond it) the guide always runs:
+                // the block never slides on nothing, and the rod leaves it
+                // through its edge on the guide's line.
+                // A step that starts under the block is drawn whatever
+                // it meets: it reaches the block's near edge, or lies
+                // under the block.
+                let under = at(k - 1) >= slot.block.0 - slot.block.1;
+                if under {
+                    block_end = k;
+                }
+                if !under && (p1 - centre).norm() < reach {
                     break;
                 }
                 let (q0, q1) = (self.page(p0), self.page(p1));
-                if let Some(sin) = crossing(q0, q1, rb, ra) {
+                if let Some(sin) = crossing(q0, q1, rb, ra).filter(|_| !under) {
                     crossed = Some((k, sin));
                     break;
                 }
-                // Beyond the block the rod keeps its distance from the
-                // guide (it runs inside a curved slot before leaving it).
-                let beside = (at(k) - slot.block.0).abs() <= slot.block.1;
+                // Beyond the block towards the crank the rod keeps its
+                // distance from the guide (it runs inside a curved slot
+                // before leaving it); on the block's far side there is no
+                // rod.
+                let beside = at(k) >= slot.block.0 - slot.block.1 - self.world(BLOCK_MARGIN);
                 if !beside && segment_distance(q1, q1, rb, ra) < ROD_CLEARANCE + HATCH_SLANT {
                     break;
                 }
@@ -295,7 +316,7 @@ impl Sketch {
                 let back = (ROD_CLEARANCE / sin.max(0.05) + HATCH_SLANT).ceil() as usize;
                 let per_step = (far - near).norm() / steps as f64;
                 let n = (back as f64 / per_step.max(1e-9)).ceil() as usize;
-                last = k.saturating_sub(n + 1).min(last);
+                last = k.saturating_sub(n + 1).min(last).max(block_end);
             }
             let span = self.page((slot.point)(at(last), delta)) - far;
             if last == 0 || span.norm() < GUIDE_MIN {

@@ -160,12 +160,16 @@ impl PanelWriter<'_> {
         node
     }
 
-    /// Page Bézier pieces as obstacles, each by seven points along it.
+    /// Page Bézier pieces as obstacles, each by enough points along it
+    /// that the chords keep within [`FLAT`] of the curve (at least six:
+    /// a large arc, in a magnified detail, bows far from a chord of a
+    /// sixth of it).
     pub(super) fn bezier_obstacles(&mut self, pieces: &[[Point; 4]]) {
         for b in pieces {
-            let pts: Vec<Point> = (0..=6)
+            let n = chords(b);
+            let pts: Vec<Point> = (0..=n)
                 .map(|k| {
-                    let t = k as f64 / 6.0;
+                    let t = k as f64 / n as f64;
                     let s = 1.0 - t;
                     Point::from(
                         b[0].coords * (s * s * s)
@@ -177,5 +181,31 @@ impl PanelWriter<'_> {
                 .collect();
             self.obstacles.polyline(&pts);
         }
+    }
+}
+
+/// How far, page units, an obstacle's chords may stray from its curve.
+const FLAT: f64 = 0.25;
+
+/// The number of chords that follow the cubic `b` within [`FLAT`]: its
+/// control points' distance `d` from the chord bounds the curve's bow,
+/// and `n` equal steps in t leave at most about 3d / (4 n²).
+fn chords(b: &[Point; 4]) -> usize {
+    let chord = b[3] - b[0];
+    let len = chord.norm();
+    let off = |p: Point| {
+        let v = p - b[0];
+        if len > 0.0 {
+            (v.x * chord.y - v.y * chord.x).abs() / len
+        } else {
+            v.norm()
+        }
+    };
+    let d = off(b[1]).max(off(b[2]));
+    let n = (0.75 * d / FLAT).sqrt().ceil();
+    if n.is_finite() {
+        n.clamp(6.0, 256.0) as usize
+    } else {
+        6
     }
 }

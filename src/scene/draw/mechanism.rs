@@ -1,50 +1,146 @@
 //! The mechanism layer: frame, crank circle, links, slider and guides.
 
 use super::Ctx;
-use crate::figure::{RichText, Role, Shape, TextSize};
+use crate::figure::{HATCH_DEPTH, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::scene::cache::Constructions;
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named;
 
-/// Clear distance, page units, kept between a guide's open end and the
-/// rod (the rod's half width, the guide's, and the slant of the hatching).
-const ROD_CLEARANCE: f64 = 5.0;
-/// Clear distance, page units, between a guide and the crank circle or
-/// the bearing.
-const CIRCLE_CLEARANCE: f64 = 7.0;
-/// The bearing's half width and depth below the crank centre, page units
-/// (with its hatching).
-const BEARING_REACH: f64 = 25.0;
-/// Shortest guide drawn, page units.
+/// Clear distance, page units, kept between a guide (with its hatching)
+/// and a link passing in front of it: the link's half width, the
+/// guide's, and a little paper.
+const LINK_CLEARANCE: f64 = 5.0;
+/// The bearing's reach about the crank centre, page units: the pedestal
+/// and its hatched foot below (see the SVG writer's bearing), the shaft's
+/// pin above, with a little paper all round. Left, right, below, above.
+const BEARING_BOX: [f64; 4] = [25.0, 20.0, 26.0, 8.0];
+/// Shortest piece of guide drawn, page units.
 const GUIDE_MIN: f64 = 12.0;
+/// How far the hatching leans back along the guide, page units.
+const HATCH_SLANT: f64 = 6.0;
 
-/// Where the guide at height `y` may begin (its end towards the crank):
-/// clear of the crank circle and the bearing, and beyond the point where
-/// the rod crosses its line, so that no link is ever drawn through it.
-fn guide_start(ctx: &Ctx, canvas: &Canvas, y: f64) -> f64 {
-    let m = ctx.scene.mechanism();
+/// A stretch of a guide along x, world units.
+type Span = (f64, f64);
+
+/// The stretches of the guide at height `y`, hatched towards `side`
+/// (±1), that stay open (of its `hatch`ing, or of its line): where the
+/// crank or the rod passes in front of it (a link is a part in front of
+/// the frame, and the frame's line behind it is broken on either side, as
+/// a draughtsman breaks a hidden line), and round the bearing (a part of
+/// the frame the guide does not run through). The crank circle is the
+/// path of the pin, not a part: the guide runs across it unbroken. The
+/// line is never open under the block: the block always slides on its
+/// guide (the rod leaves it through its edge on the guide's line, and a
+/// block standing over the bearing, with rods of little more than a
+/// crank near the inner dead centre, keeps its guide there).
+fn openings(ctx: &Ctx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> Vec<Span> {
     let pose = ctx.main.pose();
-    let (a, b) = (pose.a(), pose.b());
-    let reach = m.crank().max(canvas.world(BEARING_REACH)) + canvas.world(CIRCLE_CLEARANCE);
-    let mut start = if y.abs() < reach {
-        (reach * reach - y * y).sqrt()
-    } else {
-        f64::NEG_INFINITY
-    };
-    // The rod from A (on the stroke, between the guides) towards B crosses
-    // the line y when B is beyond it.
-    if (b.y - y) * (a.y - y) < 0.0 {
-        let t = (y - a.y) / (b.y - a.y);
-        let x = a.x + t * (b.x - a.x);
-        let sin = ((b.y - a.y) / (b - a).norm()).abs();
-        start = start.max(x + canvas.world(ROD_CLEARANCE) / sin + canvas.world(HATCH_SLANT));
+    let (c, b, a) = (pose.c(), pose.b(), pose.a());
+    let depth = y + side * canvas.world(HATCH_DEPTH);
+    let (lo, hi) = (y.min(depth), y.max(depth));
+    let slant = canvas.world(HATCH_SLANT);
+    let d = canvas.world(LINK_CLEARANCE);
+    let mut open: Vec<Span> = [(c, b), (b, a)]
+        .into_iter()
+        .filter_map(|(p, q)| x_within(p, q, lo - d, hi + d))
+        .map(|(x0, x1)| (x0 - d, x1 + d + slant))
+        .collect();
+    let [left, right, below, above] = BEARING_BOX.map(|v| canvas.world(v));
+    if hi > c.y - below && lo < c.y + above {
+        open.push((c.x - left, c.x + right + slant));
     }
-    start
+    if hatch {
+        return open;
+    }
+    let l = ctx.sizes.block_half_length;
+    open.into_iter()
+        .flat_map(|o| pieces(o, vec![(a.x - l, a.x + l)]))
+        .collect()
 }
 
-/// How far the hatching leans along the guide, page units.
-const HATCH_SLANT: f64 = 6.0;
+/// The x extent of the part of the segment `p q` between the heights
+/// `lo` and `hi`; `None` where it keeps outside them.
+fn x_within(p: Point, q: Point, lo: f64, hi: f64) -> Option<Span> {
+    let dy = q.y - p.y;
+    let (t0, t1) = if dy.abs() < 1e-12 {
+        if p.y < lo || p.y > hi {
+            return None;
+        }
+        (0.0, 1.0)
+    } else {
+        let (u, v) = ((lo - p.y) / dy, (hi - p.y) / dy);
+        (u.min(v).max(0.0), u.max(v).min(1.0))
+    };
+    if t0 > t1 {
+        return None;
+    }
+    let (x0, x1) = (p.x + t0 * (q.x - p.x), p.x + t1 * (q.x - p.x));
+    Some((x0.min(x1), x0.max(x1)))
+}
+
+/// `whole` less the `openings`: the pieces of guide drawn, in order.
+fn pieces(whole: Span, mut openings: Vec<Span>) -> Vec<Span> {
+    openings.sort_by(|u, v| u.0.total_cmp(&v.0));
+    let mut out = Vec::new();
+    let mut from = whole.0;
+    for (o0, o1) in openings {
+        if o0 > from {
+            out.push((from, o0.min(whole.1)));
+        }
+        from = from.max(o1);
+    }
+    if from < whole.1 {
+        out.push((from, whole.1));
+    }
+    out.retain(|(u, v)| v > u);
+    out
+}
+
+/// The guides under the block over its whole travel, each hatched on
+/// its outer side and broken where [`openings`] says; pieces shorter
+/// than [`GUIDE_MIN`] are left out. Ids `guide-upper`, `guide-upper-2`,
+/// … in order along the stroke, each with its `hatch-` twin.
+fn guides(ctx: &Ctx, canvas: &mut Canvas) {
+    let m = ctx.scene.mechanism();
+    let e = m.offset();
+    let whole = ctx.sizes.guides(m.crank());
+    let h = ctx.sizes.block_half_height;
+    for (name, y, side) in [("upper", e + h, 1.0), ("lower", e - h, -1.0)] {
+        let drawn: Vec<Span> = pieces(whole, openings(ctx, canvas, y, side, false))
+            .into_iter()
+            .filter(|(u, v)| canvas.page(v - u) >= GUIDE_MIN)
+            .collect();
+        let hatched = pieces(whole, openings(ctx, canvas, y, side, true));
+        for (k, (u, v)) in drawn.into_iter().enumerate() {
+            let id = match k {
+                0 => format!("guide-{name}"),
+                _ => format!("guide-{name}-{}", k + 1),
+            };
+            canvas.segment(id.clone(), Role::Frame, Point::new(u, y), Point::new(v, y));
+            let runs = hatched
+                .iter()
+                .map(|(p, q)| (p.max(u), q.min(v)))
+                .filter(|(p, q)| canvas.page(q - p) >= GUIDE_MIN)
+                .collect::<Vec<_>>();
+            for (j, (p, q)) in runs.into_iter().enumerate() {
+                let hatch = match j {
+                    0 => format!("hatch-{id}"),
+                    _ => format!("hatch-{id}-{}", j + 1),
+                };
+                canvas.push(
+                    hatch,
+                    Role::Frame,
+                    Shape::Hatch {
+                        from: Point::new(p, y),
+                        to: Point::new(q, y),
+                        side: Vector::new(0.0, side),
+                    },
+                );
+            }
+        }
+    }
+}
 
 pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
@@ -53,6 +149,7 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let (c, b, a) = (pose.c(), pose.b(), pose.a());
     let s = &ctx.sizes;
     let (g0, g1) = s.guides(r);
+    let h = s.block_half_height;
 
     // The line of stroke (a centre line) and the crank-pin circle.
     canvas.segment(
@@ -75,26 +172,9 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
         Shape::Bearing { centre: c },
     );
 
-    // Guides with their hatching on the outside, open where the rod or
-    // the crank circle would cross them.
-    let h = s.block_half_height;
-    for (id, y, side) in [("upper", e + h, 1.0), ("lower", e - h, -1.0)] {
-        let start = guide_start(ctx, canvas, y).max(g0);
-        if canvas.page(g1 - start) < GUIDE_MIN {
-            continue;
-        }
-        let (p, q) = (Point::new(start, y), Point::new(g1, y));
-        canvas.segment(format!("guide-{id}"), Role::Frame, p, q);
-        canvas.push(
-            format!("hatch-guide-{id}"),
-            Role::Frame,
-            Shape::Hatch {
-                from: p,
-                to: q,
-                side: Vector::new(0.0, side),
-            },
-        );
-    }
+    // Guides with their hatching on the outside, under the block over
+    // its whole travel.
+    guides(ctx, canvas);
 
     // Ghost poses first, so the main pose is drawn over them.
     for (k, g) in ghosts.iter().enumerate() {
