@@ -522,3 +522,31 @@ fn ngs_torque_on_another_engine_is_said_to_be_ngs() {
     assert!(says(&other));
     assert!(!says(&slider_crank::catalogue::FigureOptions::default()));
 }
+
+/// Ng's φ and β share the crank pin C as their vertex: each arc is drawn
+/// at its own radius (measured from the arc's first point to C in the
+/// written SVG), so that the two read as two angles, not one arc, at
+/// every pose where both are drawn.
+#[test]
+fn two_angles_at_one_vertex_are_two_arcs() {
+    let radius = |svg: &str, id: &str| {
+        let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
+        let mut xy = d.trim_start_matches('M').split([' ', 'C']);
+        let x: f64 = xy.next().unwrap().parse().unwrap();
+        let y: f64 = xy.next().unwrap().parse().unwrap();
+        let (cx, cy) = (num(svg, "point-C", "cx"), num(svg, "point-C", "cy"));
+        (x - cx).hypot(y - cy)
+    };
+    for deg in [30.0, 60.0, 100.0, 120.0, 150.0] {
+        let scene = FigureName::NgFig1Torque
+            .scene()
+            .unwrap()
+            .with_angles(vec![Angle::deg(deg)]);
+        let svg = to_svg(&scene.figure().unwrap());
+        let (phi, beta) = (radius(&svg, "angle-phi"), radius(&svg, "angle-beta"));
+        assert!(
+            (beta - phi).abs() >= 10.0,
+            "{deg}°: φ at {phi}, β at {beta}"
+        );
+    }
+}

@@ -9,7 +9,7 @@ use crate::figure::{Pen, RichText, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::Bounds;
-use crate::render::sizes::{ANGLE_RADIUS, ARROW_LENGTH, RIGHT_ANGLE};
+use crate::render::sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
 
 /// Step by which a dimension's text slides along its line off a line
 /// drawn through it, page units.
@@ -89,10 +89,18 @@ impl PanelWriter<'_> {
             return None;
         }
         let (page_start, page_sweep) = self.page_angles(start, sweep);
-        self.bezier_obstacles(&arc_beziers(c, ANGLE_RADIUS, page_start, page_sweep));
+        // A further angle at the same vertex gets a larger arc.
+        let before = self
+            .angle_vertices
+            .iter()
+            .filter(|v| (**v - c).norm() < 1.0)
+            .count();
+        self.angle_vertices.push(c);
+        let radius = ANGLE_RADIUS + ANGLE_STEP * before as f64;
+        self.bezier_obstacles(&arc_beziers(c, radius, page_start, page_sweep));
         let course = Course::Arc {
             centre: c,
-            radius: ANGLE_RADIUS,
+            radius,
             start: page_start,
             sweep: page_sweep,
         };
@@ -101,7 +109,7 @@ impl PanelWriter<'_> {
             let dir = unit(self.t.apply_vector(Vector::new(mid.cos(), mid.sin())))?;
             self.pending.push(Pending {
                 id: format!("label-{}", ink.id.trim_start_matches("angle-")),
-                anchor: c + dir * ANGLE_RADIUS,
+                anchor: c + dir * radius,
                 text: text.clone(),
                 size: self.style.font_size(TextSize::Small) + 2.0,
                 gap: 2.0,

@@ -82,6 +82,8 @@ struct PanelWriter<'a> {
     open_lines: Vec<centre::OpenLine>,
     /// Hatchings to write again once the labels are placed.
     hatchings: Vec<hatching::Hatching>,
+    /// The page vertices of the angle marks written so far.
+    angle_vertices: Vec<Point>,
 }
 
 impl PanelWriter<'_> {
@@ -206,6 +208,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
         pending: Vec::new(),
         open_lines: Vec::new(),
         hatchings: Vec::new(),
+        angle_vertices: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
