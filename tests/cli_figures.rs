@@ -438,7 +438,7 @@ fn a_physical_width_gives_the_svg_a_physical_size() {
     let svg = svg_of(&["figure", "ng-fig-8-forces", "--width", "4.5in"]);
     assert_eq!(attr(root(&svg), "width"), "4.5in");
     assert!(attr(root(&svg), "height").ends_with("in"));
-    let svg = svg_of(&["figure", "fig-63-velocity", "--height", "100mm"]);
+    let svg = svg_of(&["figure", "fig-62-displacement", "--height", "100mm"]);
     assert_eq!(attr(root(&svg), "width"), "201.08mm"); // 760 units
     let svg = svg_of(&["figure", "fig-63-velocity", "--width", "800"]);
     assert_eq!(attr(root(&svg), "width"), "800");
@@ -582,4 +582,55 @@ fn bad_page_sizes_titles_and_letters_are_one_line_with_exit_2() {
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains("does not use --"), "{err}");
     }
+}
+
+/// A height asked for is held: the figure ends within it (a short one
+/// stays shorter), and one whose detail and notes need more is refused in
+/// one line naming the height it needs, which is then enough.
+#[test]
+fn a_height_asked_for_is_never_exceeded() {
+    let height = |svg: &str| -> f64 { attr(root(svg), "height").parse().unwrap() };
+    for (name, asked) in [
+        ("fig-62-displacement", "200"),
+        ("fig-62-displacement", "600"),
+        ("ng-fig-1-torque", "700"),
+        ("fig-67-example", "1000"),
+    ] {
+        let svg = svg_of(&["figure", name, "--height", asked]);
+        let h = height(&svg);
+        assert!(
+            h <= asked.parse::<f64>().unwrap() + 0.5,
+            "{name} at {asked}: {h}"
+        );
+    }
+    let out = run(&[
+        "figure",
+        "fig-67-example",
+        "--width",
+        "800",
+        "--height",
+        "300",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("page height = 300"), "{err}");
+    let needed: f64 = err
+        .split("needs ")
+        .nth(1)
+        .and_then(|t| t.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no height named: {err}"));
+    assert!(needed > 300.0, "{err}");
+    let asked = format!("{needed}");
+    let svg = svg_of(&[
+        "figure",
+        "fig-67-example",
+        "--width",
+        "800",
+        "--height",
+        &asked,
+    ]);
+    assert!(height(&svg) <= needed + 0.5);
 }

@@ -103,9 +103,11 @@ pub struct FigureOptions {
     /// The page's width (default the figure's own); in mm, cm, in or pt, the SVG
     /// gives its size in that unit ([`crate::Page::sized`]).
     pub width: Option<PageLength>,
-    /// The page's height (default the figure's own): the most a mechanism
-    /// figure fitted to its drawing takes (it may end shorter, and grows
-    /// for an enlarged detail); a diagram lays its bands out on it.
+    /// The page's height (default the figure's own, which a mechanism
+    /// figure's enlarged detail grows): given, a mechanism figure ends
+    /// within it or is refused naming the height it needs
+    /// ([`crate::Page::with_height_held`]); a diagram lays its bands out
+    /// on it.
     pub height: Option<PageLength>,
     /// A title, set below the figure and written as the SVG's `<title>`.
     pub title: Option<Title>,
@@ -157,11 +159,17 @@ impl FigureOptions {
             return Ok(*page);
         }
         let own = |v: f64| PageLength::new(v, PageUnit::Px);
-        Page::sized(
+        let sized = Page::sized(
             self.width.map_or_else(|| own(page.width()), Ok)?,
             self.height.map_or_else(|| own(page.height()), Ok)?,
             page.margin(),
-        )
+        )?;
+        // A height asked for is the page's: the figure ends within it.
+        Ok(match self.height {
+            Some(_) => sized.with_height_held(),
+            None if page.holds_height() => sized.with_height_held(),
+            None => sized,
+        })
     }
 }
 

@@ -322,7 +322,12 @@ fn page(text: &str, p: &PageFile, page: &Page) -> Result<Page> {
     };
     let margin = p.margin.as_ref().map_or(page.margin(), |m| *m.get_ref());
     let base = Page::new(page.width(), page.height(), margin).map(|b| b.with_unit(page.unit()));
-    let built = base.and_then(|b| options.page(&b));
+    // A scene file's height is the most the drawing takes (a file
+    // written by `scene --print-default` carries the figure's own, which
+    // grows for a detail): only a height asked for with the figure is held.
+    let built = base
+        .and_then(|b| options.page(&b))
+        .map(Page::with_height_free);
     let span = match &built {
         Err(
             Error::NotPositive { name, .. }

@@ -110,9 +110,10 @@ pub struct FigureFlags {
     /// to place it at that size [default: the figure's own]
     #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
     pub width: Option<PageLength>,
-    /// Page height, as --width; the most a mechanism figure fitted to its
-    /// drawing takes (it may end shorter, and grows for an enlarged
-    /// detail) [default: the figure's own]
+    /// Page height, as --width; a mechanism figure ends within it (it may
+    /// end shorter) and is refused, naming the height it needs, where its
+    /// enlarged detail and notes do not fit [default: the figure's own,
+    /// which grows for a detail]
     #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
     pub height: Option<PageLength>,
     /// A title, set centred below the figure (the page grows by a line)

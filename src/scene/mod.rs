@@ -34,6 +34,10 @@ use crate::{Angle, SliderCrank, Unit, Units};
 use crate::diagram::DEFAULT_TOLERANCE;
 
 /// The bounds of a page's size, as a refusal gives them.
+/// How far, page units, a figure may end past a held page height (the
+/// rounding of its parts' sizes) before it is refused.
+const HEIGHT_SLACK: f64 = 0.5;
+
 const PAGE_RANGE: &str =
     "a page is between 50 and 20000 units (px, 96 to the inch: 13.3 mm to 5.29 m)";
 
@@ -59,6 +63,7 @@ pub struct Page {
     height: f64,
     margin: f64,
     unit: PageUnit,
+    held: bool,
 }
 
 impl Page {
@@ -105,6 +110,7 @@ impl Page {
             height,
             margin,
             unit: PageUnit::Px,
+            held: false,
         })
     }
 
@@ -159,6 +165,30 @@ impl Page {
         self
     }
 
+    /// The same page with its height held (the height an author asks
+    /// for): a mechanism figure fits its drawing within it, and one whose
+    /// detail or notes would grow the page past it is refused by
+    /// [`Scene::build`], naming the height it needs, instead of coming out
+    /// taller than asked.
+    pub fn with_height_held(mut self) -> Self {
+        self.held = true;
+        self
+    }
+
+    /// The same page with its height the most the main drawing takes
+    /// (the default): the page grows for a detail and for notes.
+    pub(crate) fn with_height_free(mut self) -> Self {
+        self.held = false;
+        self
+    }
+
+    /// Whether the height is held ([`Page::with_height_held`]); otherwise
+    /// it is the most the main drawing takes, and the page grows for a
+    /// detail and for notes.
+    pub fn holds_height(&self) -> bool {
+        self.held
+    }
+
     /// The unit the SVG gives the page's size in (page units unless a
     /// physical size was asked).
     pub fn unit(&self) -> PageUnit {
@@ -189,6 +219,7 @@ impl Default for Page {
             height: 460.0,
             margin: 16.0,
             unit: PageUnit::Px,
+            held: false,
         }
     }
 }
@@ -581,6 +612,19 @@ impl Scene {
     pub fn build(&self) -> Result<(Figure, Evaluations)> {
         valid::scene(self)?;
         let layout = self.held.as_deref().map(|a| draw::held(self, a));
-        Ok(draw::build(self, layout.as_ref()))
+        let (figure, evaluations) = draw::build(self, layout.as_ref());
+        let page = self.page;
+        if page.holds_height() && figure.height() > page.height() + HEIGHT_SLACK {
+            return Err(Error::OutOfRange {
+                name: "page height",
+                value: page.height(),
+                reason: format!(
+                    "this figure needs {} page units at this width (its drawing, detail and notes); \
+                     give at least that, or leave the height to the figure",
+                    figure.height().ceil()
+                ),
+            });
+        }
+        Ok((figure, evaluations))
     }
 }

@@ -204,6 +204,47 @@ fn band(notes: &[RichText]) -> f64 {
     }
 }
 
+/// The layout fitted to the pose of `ctx` with its notes' `band`; on a
+/// page whose height is held ([`crate::scene::Page::holds_height`]),
+/// fitted again with the main view shrunk by what the figure took past
+/// the height (the dimensions stacked below the guides, a detail), until
+/// it ends within it or [`HEIGHT_REFITS`] tries are spent (a detail's
+/// size is its own, not the main view's: such a figure may still not fit,
+/// and is refused by the scene).
+fn fit_within(ctx: &Ctx, band: f64) -> Layout {
+    let page = ctx.scene.page();
+    let mut layout = fit(ctx, band);
+    let mut reserve = band;
+    for _ in 0..HEIGHT_REFITS {
+        let over = layout.height(band, page.margin()) - page.height();
+        if !page.holds_height() || over <= 0.0 {
+            break;
+        }
+        reserve += over;
+        layout = fit(ctx, reserve);
+        layout.band = band;
+    }
+    layout
+}
+
+/// The most refits [`fit_within`] makes to end within a held height.
+const HEIGHT_REFITS: usize = 4;
+
+impl Layout {
+    /// The height of the page this layout draws with notes `band` tall
+    /// and margin `mg`: the main view, the detail below it, the notes.
+    fn height(&self, band: f64, mg: f64) -> f64 {
+        let mut bottom = self.main.y + self.main.height;
+        if let Some(d) = &self.detail {
+            let scale = self.transform.scale();
+            let frame = detail_frame(d, scale);
+            let tall = (frame.max().y - frame.min().y) * scale * d.magnification;
+            bottom += DETAIL_GAP + CAPTION + tall + NOTE_GAP;
+        }
+        bottom + band + mg
+    }
+}
+
 /// The layout fitted to the pose of `ctx` with its notes' `band`.
 fn fit(ctx: &Ctx, band: f64) -> Layout {
     let mut ctx = Ctx {
@@ -350,7 +391,7 @@ pub(crate) fn build(scene: &Scene, layout: Option<&Layout>) -> (Figure, Evaluati
     let own = band(&notes);
     let layout = match layout {
         Some(held) => *held,
-        None => fit(&ctx, own),
+        None => fit_within(&ctx, own),
     };
     ctx.sizes = layout.sizes;
     let page = scene.page();
