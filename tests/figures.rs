@@ -550,3 +550,38 @@ fn two_angles_at_one_vertex_are_two_arcs() {
         );
     }
 }
+
+/// A long rod draws the crank small; the chain's blocks keep a size a
+/// reader sees (at least 24 × 14 page units across their corners) in
+/// Fig. 60 (b) and (c) and in the inversions at l = 35 r, where a block in
+/// proportion to the crank was 9 × 4 units and vanished into its pin.
+#[test]
+fn blocks_keep_their_size_beside_a_small_crank() {
+    let extent = |svg: &str, id: &str| {
+        let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
+        let v: Vec<f64> = d
+            .split(|c: char| c.is_ascii_alphabetic() || c == ' ')
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        let (xs, ys): (Vec<f64>, Vec<f64>) = v.chunks(2).map(|p| (p[0], p[1])).unzip();
+        let span = |a: &[f64]| {
+            a.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                - a.iter().copied().fold(f64::INFINITY, f64::min)
+        };
+        span(&xs).hypot(span(&ys))
+    };
+    let mut options = slider_crank::catalogue::FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, 35.0, 0.0).unwrap());
+    options.angle = Some(Angle::deg(12.0));
+    let least = 24.0_f64.hypot(14.0) - 0.5;
+    for (name, id) in [
+        (FigureName::Fig60Chains, "block-slider-b"),
+        (FigureName::Fig60Chains, "block-slider-c"),
+        (FigureName::Inversion1Engine, "block-slider"),
+        (FigureName::Inversion4HandPump, "block-slider"),
+    ] {
+        let svg = to_svg(&name.figure(&options).unwrap());
+        let across = extent(&svg, id);
+        assert!(across >= least, "{name:?} {id}: {across}");
+    }
+}

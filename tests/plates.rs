@@ -235,28 +235,48 @@ fn beyond(block: &[(f64, f64)], guide: &[(f64, f64)]) -> Option<String> {
 }
 
 /// How far the `block`'s points reach past the guide's `end` along the
-/// guide's own direction there (its last segment, outwards): a curved
-/// guide is measured along its tangent, not its chord, so that the block's
-/// corners on the far side of the slot do not seem to overhang it.
-/// `guide` holds the segments' ends in pairs.
+/// guide's own direction there, outwards: a curved guide is measured along
+/// its tangent at the end (its last chord turned on by half the turn from
+/// the chord before, the tangent of the arc through the three points), not
+/// its chord, so that the block's corners on the slot's far side do not
+/// seem to overhang it. `guide` holds the segments' ends in pairs.
 fn past_end(block: &[(f64, f64)], guide: &[(f64, f64)], end: (f64, f64)) -> f64 {
-    let other = guide
-        .chunks(2)
-        .filter_map(|s| match s {
-            [p, q] if *q == end && p != q => Some(*p),
-            [p, q] if *p == end && p != q => Some(*q),
+    let before = |p: (f64, f64)| {
+        guide.chunks(2).find_map(|s| match s {
+            [a, b] if *b == p && a != b => Some(*a),
+            [a, b] if *a == p && a != b => Some(*b),
             _ => None,
         })
-        .next()
-        .unwrap_or(end);
-    let (dx, dy) = (end.0 - other.0, end.1 - other.1);
-    let n = dx.hypot(dy);
-    if n == 0.0 {
+    };
+    let unit = |from: (f64, f64), to: (f64, f64)| {
+        let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+        let n = dx.hypot(dy);
+        (dx / n, dy / n)
+    };
+    let Some(other) = before(end) else {
         return f64::INFINITY;
-    }
+    };
+    let last = unit(other, end);
+    // The chord before the last, where the guide goes on (a polyline's
+    // pieces are joined end to end; a straight guide has none).
+    let turned = guide
+        .chunks(2)
+        .find_map(|s| match s {
+            [a, b] if *b == other && *a != end && a != b => Some(*a),
+            [a, b] if *a == other && *b != end && a != b => Some(*b),
+            _ => None,
+        })
+        .map(|prev| {
+            let first = unit(prev, other);
+            let cross = first.0 * last.1 - first.1 * last.0;
+            let turn = 0.5 * cross.atan2(first.0 * last.0 + first.1 * last.1);
+            let (s, c) = turn.sin_cos();
+            (c * last.0 - s * last.1, s * last.0 + c * last.1)
+        })
+        .unwrap_or(last);
     block
         .iter()
-        .map(|p| ((p.0 - end.0) * dx + (p.1 - end.1) * dy) / n)
+        .map(|p| (p.0 - end.0) * turned.0 + (p.1 - end.1) * turned.1)
         .fold(f64::NEG_INFINITY, f64::max)
 }
 

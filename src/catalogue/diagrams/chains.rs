@@ -36,6 +36,20 @@ pub(super) fn block_size(m: &SliderCrank) -> (f64, f64) {
     (0.36 * r * k, 0.17 * r * k)
 }
 
+/// The least half length and half height of a block on the page, page
+/// units: a long rod draws the crank small, and a block in proportion to
+/// it would vanish into its pin (Fig. 60 (b) and (c) at l = 35 r).
+const BLOCK_LEAST: (f64, f64) = (12.0, 7.0);
+
+/// The block's half sizes `(lh, hh)` (world units) made at least
+/// [`BLOCK_LEAST`] on a page drawn at `scale` page units per world unit.
+pub(super) fn block_on_page((lh, hh): (f64, f64), scale: f64) -> (f64, f64) {
+    if !(scale.is_finite() && scale > 0.0) {
+        return (lh, hh);
+    }
+    (lh.max(BLOCK_LEAST.0 / scale), hh.max(BLOCK_LEAST.1 / scale))
+}
+
 /// The middle of the slot of radius `rho` (`None`: straight) at arc length
 /// σ from T = (0, e), offset δ across it.
 fn slot_point(e: f64, rho: Option<f64>, s: f64, delta: f64) -> Point {
@@ -113,6 +127,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let rect = super::fitted_rect(&page, &world, notes_height);
     let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
     let map = *plot.map();
+    let (lh, hh) = block_on_page((lh, hh), map.scale());
     let shown = map.world_frame(&plot.area());
     let mut centres = serde_json::Map::new();
     // Each panel's caption broken to the panel's width at its own size, so

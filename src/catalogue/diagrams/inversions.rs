@@ -175,6 +175,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
             inversion.name()
         ));
     let map = *plot.map();
+    let (lh, hh) = super::chains::block_on_page((lh, hh), map.scale());
     let shown = map.world_frame(&plot.area());
     let mut s = Sketch::new(map, shown, "");
     let q = parts(&m, &pose);
