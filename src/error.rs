@@ -235,7 +235,7 @@ fn escape_controls(text: &str) -> String {
             out.push('…');
             break;
         }
-        if c.is_control() || is_bidi_control(c) || crate::figure::is_noncharacter(c) {
+        if c.is_control() || is_bidi_control(c) || is_noncharacter(c) {
             out.extend(c.escape_default());
         } else {
             out.push(c);
@@ -257,7 +257,7 @@ struct Num(f64);
 
 impl std::fmt::Display for Num {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&crate::render::plain(self.0))
+        f.write_str(&crate::number::plain(self.0))
     }
 }
 
@@ -292,6 +292,38 @@ pub(crate) fn non_negative(name: &'static str, value: f64) -> Result<f64> {
         Err(Error::Negative { name, value })
     }
 }
+
+/// Whether `c` is one of Unicode's 66 non-characters (U+FDD0 to U+FDEF,
+/// and the last two code points of each plane, U+FFFE and U+FFFF among
+/// them): never text, and U+FFFE and U+FFFF are not allowed in XML at all,
+/// so a figure refuses them in any text it writes, as it refuses control
+/// characters.
+pub fn is_noncharacter(c: char) -> bool {
+    let u = u32::from(c);
+    (0xFDD0..=0xFDEF).contains(&u) || u & 0xFFFE == 0xFFFE
+}
+
+/// `FromStr` through `from_name` and `Display` through `name` for a value
+/// enum named on the command line and in scene files, so that
+/// `x.to_string().parse() == Ok(x)`; the parse error lists the names.
+macro_rules! parse_by_name {
+    ($($t:ty),+ $(,)?) => {$(
+        impl ::std::str::FromStr for $t {
+            type Err = $crate::error::Error;
+
+            fn from_str(s: &str) -> $crate::error::Result<Self> {
+                <$t>::from_name(s)
+            }
+        }
+
+        impl ::std::fmt::Display for $t {
+            fn fmt(&self, f: &mut ::std::fmt::Formatter<'_>) -> ::std::fmt::Result {
+                f.write_str(self.name())
+            }
+        }
+    )+};
+}
+pub(crate) use parse_by_name;
 
 #[cfg(test)]
 mod tests {
@@ -336,56 +368,5 @@ mod tests {
         // Found by fuzzing: a layer name "a\nb" in a scene file.
         let e = Error::Parse("unknown variant `a\nb\r`".into()).one_line();
         assert_eq!(e.to_string(), "unknown variant `a\\nb\\r`");
-    }
-}
-
-/// The most characters a number written in fixed notation takes where
-/// the shortest decimal that reads back is written (`{}` of a double,
-/// which never switches to exponent form by itself): beyond it the number
-/// is written in exponent form. 24 holds every value of the catalogue's
-/// scales (`0.000000001`, `123456789012.25`) and none of the hundreds of
-/// digits of 1e-300 or 1e308.
-pub const MAX_FIXED_WIDTH: usize = 24;
-
-/// A number as text shows it (messages, titles, a given value echoed):
-/// plainly in the usual range, in exponent form when very large or very
-/// small (`1e-300`, not 300 zeros; `1e308`, not 309 digits).
-pub fn plain(x: f64) -> String {
-    let a = x.abs();
-    if a != 0.0 && a.is_finite() && !(1e-4..1e15).contains(&a) {
-        format!("{x:e}")
-    } else {
-        format!("{x}")
-    }
-}
-
-#[cfg(test)]
-mod plain_tests {
-    use super::plain;
-
-    #[test]
-    fn numbers_in_messages_are_plain_or_in_exponent_form() {
-        assert_eq!(plain(1e-100), "1e-100");
-        assert_eq!(plain(-1e308), "-1e308");
-        assert_eq!(plain(0.025), "0.025");
-        assert_eq!(plain(-0.0), "-0");
-        assert_eq!(plain(f64::NAN), "NaN");
-    }
-
-    /// Every double, subnormals and the largest included, in at most 24
-    /// characters that read back to it exactly.
-    #[test]
-    fn every_double_is_plain_within_a_width() {
-        let mut x = 5e-324_f64;
-        while x.is_finite() {
-            for v in [x, -x] {
-                let s = plain(v);
-                assert!(s.len() <= super::MAX_FIXED_WIDTH, "{v:e}: {s}");
-                assert_eq!(s.parse::<f64>().unwrap(), v, "{s}");
-            }
-            // 1.37 × the least subnormal rounds back to it: step at least an ulp.
-            x = (x * 1.37).max(f64::from_bits(x.to_bits() + 1));
-        }
-        assert_eq!(plain(f64::MAX), "1.7976931348623157e308");
     }
 }

@@ -128,45 +128,13 @@
 // (`tests/panic_free.rs` holds every allowance to one).
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
 
-/// `FromStr` through `from_name` and `Display` through `name` for a value
-/// enum named on the command line and in scene files, so that
-/// `x.to_string().parse() == Ok(x)`; the parse error lists the names.
-macro_rules! parse_by_name {
-    ($($t:ty),+ $(,)?) => {$(
-        impl ::std::str::FromStr for $t {
-            type Err = $crate::Error;
-
-            fn from_str(s: &str) -> $crate::Result<Self> {
-                <$t>::from_name(s)
-            }
-        }
-
-        impl ::std::fmt::Display for $t {
-            fn fmt(&self, f: &mut ::std::fmt::Formatter<'_>) -> ::std::fmt::Result {
-                f.write_str(self.name())
-            }
-        }
-    )+};
-}
-
-parse_by_name!(
-    figure::Style,
-    catalogue::Fit,
-    FigureName,
-    Layer,
-    Notation,
-    Assembly,
-    table::Format,
-);
-#[cfg(feature = "html")]
-parse_by_name!(handout::Paper);
-
 pub mod analytic;
 mod angle;
 pub mod animate;
 pub mod catalogue;
 pub mod chain;
 pub mod construct;
+mod csv;
 pub mod diagram;
 pub mod dynamics;
 mod error;
@@ -179,7 +147,9 @@ pub mod handout;
 #[cfg(feature = "html")]
 mod html;
 pub mod input;
+
 mod mechanism;
+pub mod number;
 pub mod render;
 pub mod scene;
 pub mod table;

@@ -1,6 +1,7 @@
 //! Least-squares calibration lines (Ng, Table 1 and Fig. 7).
 
-use crate::error::{Error, Result, finite, plain};
+use crate::error::{Error, Result, finite};
+use crate::number::plain;
 
 /// Ng's Table 1: force in newtons (weights of 0.25 … 1.5 kg) against strain
 /// reading (×10⁻⁶).

@@ -7,8 +7,9 @@
 //! along +x that holds the crank torque T (counter-clockwise positive).
 
 use crate::angle::Angle;
-use crate::error::{Error, Result, finite, non_negative, plain};
+use crate::error::{Error, Result, finite, non_negative};
 use crate::mechanism::Pose;
+use crate::number::plain;
 
 /// Ng's crank torque implied by his Table 2 (1 kg × 9.81 m/s² × 27 mm), in
 /// N·mm.

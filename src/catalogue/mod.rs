@@ -14,7 +14,6 @@ mod print;
 mod scene_file;
 mod source;
 
-pub(crate) use diagrams::Table as DataTable;
 pub use name::FigureName;
 pub use options::{FigureOptions, Fit};
 #[cfg(feature = "html")]

@@ -84,6 +84,8 @@ pub enum FigureName {
     TurningMoment,
 }
 
+crate::error::parse_by_name!(FigureName);
+
 impl FigureName {
     /// The mechanism figures, drawn by a [`Scene`].
     pub const SCENES: [FigureName; 7] = [

@@ -18,6 +18,8 @@ pub enum Fit {
     Both,
 }
 
+crate::error::parse_by_name!(Fit);
+
 impl Fit {
     /// The name on the command line: `origin`, `intercept`, `both`.
     pub fn name(&self) -> &'static str {

@@ -36,6 +36,8 @@ pub enum Assembly {
     Crossed,
 }
 
+crate::error::parse_by_name!(Assembly);
+
 impl Assembly {
     /// The name on the command line: `open`, `crossed`.
     pub fn name(&self) -> &'static str {

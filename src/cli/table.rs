@@ -363,12 +363,11 @@ fn dynamics(
         None => AngleSpec::parse("0:360:30")?,
     };
     let units = args.units.units(Units::FOOT_POUND);
-    let head =
-        slider_crank::dynamics::dynamics_head(&engine, &phases, args.turn.flywheel(), &units)?;
+    let head = slider_crank::table::dynamics_head(&engine, &phases, args.turn.flywheel(), &units)?;
     guard_angles(args, "table dynamics", &spec, &head)?;
     let rows = || {
         spec.iter()
-            .map(|d| slider_crank::dynamics::dynamics_row(&engine, &phases, d, decimals))
+            .map(|d| slider_crank::table::dynamics_row(&engine, &phases, d, decimals))
     };
     write_rows(format, &head, rows, out)
 }

@@ -15,7 +15,6 @@ mod instant_centre;
 mod kisch;
 mod klein;
 mod reading;
-mod reading_json;
 mod torque;
 mod velocity_line;
 mod virtual_centres;

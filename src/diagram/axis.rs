@@ -3,6 +3,7 @@
 
 use crate::error::{Error, Result, finite};
 use crate::figure::RichText;
+use crate::number::{format_number, power_of_ten};
 
 /// How an axis places values.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -90,43 +91,6 @@ fn decimals(step: f64) -> usize {
             (v - v.round()).abs() <= 1e-6 * v.abs().max(1e-300)
         })
         .unwrap_or(9)
-}
-
-/// `v` with `decimals` decimals and a true minus sign (U+2212); never
-/// "−0".
-pub fn format_number(v: f64, decimals: usize) -> String {
-    // From 1e15 on in exponent form (`1.00e308`, not 309 digits).
-    let s = if v.abs() >= 1e15 {
-        format!("{:.*e}", decimals, v)
-    } else {
-        format!("{:.*}", decimals, v)
-    };
-    let zero = s
-        .trim_start_matches('-')
-        .chars()
-        .all(|c| c == '0' || c == '.');
-    if zero {
-        s.trim_start_matches('-').to_string()
-    } else if let Some(rest) = s.strip_prefix('-') {
-        format!("\u{2212}{rest}")
-    } else {
-        s
-    }
-}
-
-/// 10ᵏ with the exponent in superscript digits.
-pub(crate) fn power_of_ten(k: i32) -> String {
-    const SUP: [char; 10] = ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹'];
-    let mut s = String::from("10");
-    if k < 0 {
-        s.push('⁻');
-    }
-    for c in k.unsigned_abs().to_string().chars() {
-        if let Some(&d) = c.to_digit(10).and_then(|d| SUP.get(d as usize)) {
-            s.push(d);
-        }
-    }
-    s
 }
 
 impl Axis {

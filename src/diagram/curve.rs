@@ -15,14 +15,14 @@ use std::ops::RangeInclusive;
 pub const DEFAULT_TOLERANCE: f64 = 0.01;
 
 /// The tolerance to trace a curve to so that its path, once written with
-/// every point rounded to the writer's grid ([`crate::render::GRID`], up to
+/// every point rounded to the writer's grid ([`crate::number::GRID`], up to
 /// `GRID/√2` away), is still within `tolerance` of the curve, with room for
 /// the rounding of the map in the file: `tolerance − 0.8 GRID`. Below
 /// `GRID` the written path cannot keep the promise whatever the trace
 /// does; the curve is then traced to a fifth of `tolerance` (the two rules
 /// meet at `GRID`).
 pub fn trace_tolerance(tolerance: f64) -> f64 {
-    let grid = crate::render::GRID;
+    let grid = crate::number::GRID;
     (tolerance - 0.8 * grid).max(0.2 * tolerance)
 }
 

@@ -86,8 +86,8 @@ mod measure;
 mod path;
 mod plot;
 
-pub(crate) use axis::power_of_ten;
-pub use axis::{Axis, Scale, Tick, format_number};
+pub use crate::number::format_number;
+pub use axis::{Axis, Scale, Tick};
 pub(crate) use curve::evaluations_on_this_thread;
 pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace, trace_tolerance};
 pub use locus::{Locus, LocusKind};

@@ -57,7 +57,7 @@ impl Engine {
                 value: rod.cg(),
                 reason: format!(
                     "the rod's centre of mass lies on the rod, 0 ≤ BG ≤ l = {}",
-                    crate::error::plain(l)
+                    crate::number::plain(l)
                 ),
             });
         }
@@ -124,6 +124,10 @@ impl Engine {
         self.omega
     }
 }
+
+/// The reciprocating mass of the example engine, in slug (about 322 lbf
+/// of piston and cross-head): an illustration, the textbook gives none.
+pub const EXAMPLE_MASS: f64 = 10.0;
 
 #[cfg(test)]
 mod tests {

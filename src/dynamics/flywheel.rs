@@ -86,6 +86,19 @@ fn check(fluctuation: f64, omega: f64) -> Result<f64> {
     }
 }
 
+/// What the flywheel note works out: the flywheel for a coefficient of
+/// fluctuation of speed, or the coefficient of a given flywheel.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[non_exhaustive]
+pub enum FlywheelAsk {
+    /// No flywheel note.
+    None,
+    /// The moment of inertia for this coefficient C_s.
+    Coefficient(f64),
+    /// The coefficient for this moment of inertia I.
+    Inertia(f64),
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

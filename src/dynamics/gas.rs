@@ -1,7 +1,7 @@
 //! The gas force on the piston: none, a constant, or an indicator diagram
 //! of pressure against the fraction of the stroke.
 
-use crate::catalogue::DataTable;
+use crate::csv::Table as DataTable;
 use crate::error::{Error, Result, positive};
 use crate::mechanism::Pose;
 

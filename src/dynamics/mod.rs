@@ -35,14 +35,12 @@ mod gas;
 mod pose;
 pub(crate) mod quadrature;
 mod rod;
-mod table;
 pub(crate) mod turning;
 
 pub use balance::{Balance, unbalanced_forces};
-pub use engine::Engine;
-pub use flywheel::Flywheel;
+pub use engine::{EXAMPLE_MASS, Engine};
+pub use flywheel::{Flywheel, FlywheelAsk};
 pub use gas::{GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS};
 pub use pose::EnginePose;
 pub use rod::{RodInertia, RodMass};
-pub use table::{EXAMPLE_MASS, FlywheelAsk, dynamics_head, dynamics_row, example_table};
 pub use turning::{Lobe, MAX_CYLINDERS, RELATIVE_TOLERANCE, TurningMoment};

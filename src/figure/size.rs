@@ -178,7 +178,7 @@ impl fmt::Display for PageLength {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         // In exponent form far from a page's sizes (`5e-324mm`, not 324
         // digits).
-        let value = crate::error::plain(self.value);
+        let value = crate::number::plain(self.value);
         match self.unit {
             PageUnit::Px => write!(f, "{value}"),
             u => write!(f, "{value}{u}"),

@@ -19,6 +19,8 @@ pub enum Style {
     Handout,
 }
 
+crate::error::parse_by_name!(Style);
+
 /// A stroke.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Pen {
@@ -150,6 +152,11 @@ impl Style {
 pub(crate) const HATCH_SPACING: f64 = 6.0;
 /// Depth of the strip of ground hatching, page units.
 pub(crate) const HATCH_DEPTH: f64 = 6.5;
+/// Font size of notes, the largest they are set in (the layouts that
+/// leave room for notes and the writer that sets them share it).
+pub(crate) const NOTE_SIZE: f64 = 13.0;
+/// Line height of notes, page units.
+pub(crate) const NOTE_LINE: f64 = 17.0;
 /// Length of each side of a right-angle mark, page units (the scene
 /// draws one only on a leg longer than two of them).
 pub(crate) const RIGHT_ANGLE: f64 = 10.0;

@@ -2,6 +2,7 @@
 //! notes.
 
 use super::{Font, FontStyle, TextBox};
+use crate::error::is_noncharacter;
 
 /// A subscript's size, as a fraction of its line's.
 pub const SUBSCRIPT_SIZE: f64 = 0.7;
@@ -308,16 +309,6 @@ fn primes_italic(runs: &[Run], c: char) -> bool {
         && runs
             .last()
             .is_some_and(|r| r.italic && !r.subscript && !r.superscript)
-}
-
-/// Whether `c` is one of Unicode's 66 non-characters (U+FDD0 to U+FDEF,
-/// and the last two code points of each plane, U+FFFE and U+FFFF among
-/// them): never text, and U+FFFE and U+FFFF are not allowed in XML at all,
-/// so a figure refuses them in any text it writes, as it refuses control
-/// characters.
-pub fn is_noncharacter(c: char) -> bool {
-    let u = u32::from(c);
-    (0xFDD0..=0xFDEF).contains(&u) || u & 0xFFFE == 0xFFFE
 }
 
 /// Longest title, in characters.

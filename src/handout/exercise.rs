@@ -90,7 +90,7 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
                     caption: format!(
                         "The engine to scale at θ = {}°.{stated} Grid squares of {} {u}, lines through the crank centre *C*.",
                         super::steps::short(h.angle().degrees()),
-                        crate::render::plain(step)
+                        crate::number::plain(step)
                     ),
                 },
                 "Drawing.",

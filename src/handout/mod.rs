@@ -58,6 +58,8 @@ pub enum Paper {
     Letter,
 }
 
+crate::error::parse_by_name!(Paper);
+
 impl Paper {
     /// The name on the command line: `a4`, `letter`.
     pub fn name(&self) -> &'static str {

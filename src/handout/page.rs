@@ -6,7 +6,7 @@ use super::steps::{Picture, Row, Step, Value, data_sentence, short, show};
 use super::{Handout, Paper};
 use crate::figure::RichText;
 use crate::html::{document, rich};
-use crate::render::plain;
+use crate::number::plain;
 use maud::{Markup, PreEscaped, html};
 
 /// The style of every handout page after the book page's, with the print

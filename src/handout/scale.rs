@@ -63,9 +63,9 @@ pub(super) fn round_scale(width: f64, per_unit: f64, unit: &str, paper: Paper) -
         .map(|m| m * decade)
         .find(|&r| r >= q * (1.0 - 1e-12))?;
     let ratio = if round >= 1.0 {
-        format!("1:{}", crate::render::plain(round))
+        format!("1:{}", crate::number::plain(round))
     } else {
-        format!("{}:1", crate::render::plain(1.0 / round))
+        format!("{}:1", crate::number::plain(1.0 / round))
     };
     Some(Scale {
         width_mm: full * q / round,

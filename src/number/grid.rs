@@ -97,7 +97,7 @@ pub fn fmt_coefficient(x: f64) -> String {
     // Fixed notation within MAX_FIXED_WIDTH characters (`0.000000001`),
     // exponent form beyond (`1e-97`, not 97 zeros).
     let fixed = format!("{v}");
-    if fixed.len() > crate::error::MAX_FIXED_WIDTH {
+    if fixed.len() > super::MAX_FIXED_WIDTH {
         format!("{v:e}")
     } else {
         fixed

@@ -7,7 +7,6 @@ mod element;
 mod fonts;
 mod format;
 mod labels;
-mod number;
 mod output;
 #[cfg(feature = "pdf")]
 mod pdf;
@@ -18,12 +17,12 @@ mod save;
 mod sizes;
 mod svg;
 
-pub use crate::error::plain;
+pub use crate::number::plain;
+pub use crate::number::{GRID, fmt};
 pub(crate) use element::{Element, Node, escape_text};
 #[cfg(any(feature = "png", feature = "pdf"))]
 pub use fonts::font_database;
 pub use format::FileFormat;
-pub use number::{GRID, fmt};
 pub use output::{same_file, write_atomic, write_atomic_with, write_protected};
 #[cfg(feature = "pdf")]
 pub use pdf::{POINTS_PER_UNIT, to_pdf};
@@ -57,8 +56,6 @@ pub fn to_pdf(svg: &str) -> crate::Result<Vec<u8>> {
         "PDF output needs the `pdf` feature of slider-crank, which this build leaves out: write SVG instead".into(),
     ))
 }
-
-pub(crate) use sizes::{NOTE_LINE, NOTE_SIZE};
 
 #[cfg(test)]
 mod tests {

@@ -48,6 +48,8 @@ pub enum Layer {
     Scales,
 }
 
+crate::error::parse_by_name!(Layer);
+
 impl Layer {
     /// Every layer, in drawing order.
     pub const ALL: [Layer; 13] = [

@@ -24,11 +24,12 @@ pub use layer::Layer;
 pub use notation::Notation;
 
 use crate::construct::CouplerPoint;
-use crate::error::{Error, Result, finite, plain, positive};
+use crate::error::{Error, Result, finite, positive};
 use crate::figure::Figure;
 use crate::figure::Font;
 use crate::figure::Style;
 use crate::figure::{PageLength, PageUnit, Title};
+use crate::number::plain;
 use crate::{Angle, SliderCrank, Unit, Units};
 
 use crate::diagram::DEFAULT_TOLERANCE;

@@ -15,6 +15,8 @@ pub enum Notation {
     Ng,
 }
 
+crate::error::parse_by_name!(Notation);
+
 /// The points a figure may name.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Named {

@@ -13,9 +13,10 @@ use super::sketch::{BEARING_REACH, Sketch, Slot};
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, CylindricChain};
 use crate::diagram::Plot;
-use crate::error::{Error, Result, plain};
+use crate::error::{Error, Result};
 use crate::figure::{Align, Figure, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
+use crate::number::plain;
 use crate::{Angle, SliderCrank};
 use serde_json::json;
 

@@ -10,7 +10,6 @@ mod centrodes;
 mod chains;
 mod convergence;
 mod coupler;
-mod data;
 mod forces;
 mod incline;
 mod inversions;
@@ -22,18 +21,20 @@ mod velocity;
 use super::{FigureName, FigureOptions};
 use crate::chain::Inversion;
 use crate::diagram::DEFAULT_TOLERANCE;
-use crate::diagram::{Plot, format_number};
+use crate::diagram::Plot;
 use crate::error::{Error, Result};
 use crate::figure::Style;
 use crate::figure::{Figure, Font, PageRect, Panel, RichText};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
+use crate::figure::{NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Point, Vector};
-use crate::render::{NOTE_LINE, NOTE_SIZE};
+use crate::number::format_number;
+pub(crate) use crate::number::{short, sig};
 use crate::scene::{Page, Scene};
 use crate::{Angle, Pose, SliderCrank, Unit, Units};
 use serde_json::{Map, Value, json};
 
-pub(crate) use data::Table;
+pub(crate) use crate::csv::Table;
 
 /// Radians per degree: the curves' parameter is θ in degrees.
 pub(crate) const PER_DEGREE: f64 = std::f64::consts::PI / 180.0;
@@ -482,23 +483,4 @@ pub(crate) fn extent(m: &SliderCrank, f: impl Fn(&Pose) -> f64) -> (f64, f64) {
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
             (lo.min(v), hi.max(v))
         })
-}
-
-/// A number for notes: four significant figures with a true minus sign.
-pub(crate) fn sig(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return "0".into();
-    }
-    let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 12) as usize;
-    format_number(x, digits)
-}
-
-/// Like [`sig`] without trailing zeros (`50°`, `250 rpm`, `0.5 ft`).
-pub(crate) fn short(x: f64) -> String {
-    let s = sig(x);
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
-    }
 }

@@ -7,8 +7,8 @@ use super::markup::{
 use super::{Ink, PanelWriter, centre};
 use crate::figure::{Path, PathSegment};
 use crate::geom::Point;
+use crate::number::fmt;
 use crate::render::Element;
-use crate::render::number::fmt;
 use std::fmt::Write as _;
 
 impl PanelWriter<'_> {

@@ -3,8 +3,8 @@
 
 use crate::figure::Pen;
 use crate::geom::{Point, Vector};
+use crate::number::{OnGrid, fmt};
 use crate::render::Element;
-use crate::render::number::{OnGrid, fmt};
 use crate::render::sizes::{ARROW_HALF_WIDTH, ARROW_LENGTH};
 use std::fmt as stdfmt;
 use std::fmt::Write as _;

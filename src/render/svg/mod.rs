@@ -23,12 +23,12 @@ mod points;
 mod text;
 
 use super::labels::{Bounds, Obstacles, ROOM, STRUCK, place};
-use super::number::{fmt, fmt_coefficient};
 use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
 };
 use crate::figure::{Pen, Style};
 use crate::geom::Point;
+use crate::number::{fmt, fmt_coefficient};
 use crate::render::Element;
 #[cfg(feature = "html")]
 pub use embed::to_svg_with_fonts;

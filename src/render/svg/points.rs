@@ -5,9 +5,9 @@ use super::markup::{finite, path, polyline_d, stroke};
 use super::{Ink, PanelWriter};
 use crate::figure::{Pen, Symbol};
 use crate::geom::{Point, Vector};
+use crate::number::fmt;
 use crate::render::Element;
 use crate::render::labels::Bounds;
-use crate::render::number::fmt;
 use crate::render::sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
 
 impl PanelWriter<'_> {

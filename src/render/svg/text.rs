@@ -3,8 +3,8 @@
 
 use crate::figure::{Font, RichText, Role, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE};
 use crate::geom::{Point, Vector};
+use crate::number::fmt;
 use crate::render::labels::ROOM;
-use crate::render::number::fmt;
 use crate::render::{Element, Node, escape_text};
 use std::fmt::Write as _;
 

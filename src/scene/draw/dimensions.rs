@@ -64,7 +64,7 @@ pub(crate) fn angles(ctx: &Ctx, canvas: &mut Canvas) {
     let l = if ctx.scene.notation() == crate::scene::Notation::Ng {
         RichText::italic("l")
     } else {
-        RichText::parse(&format!("*l* = {}*r*", super::torque::short(m.ratio())))
+        RichText::parse(&format!("*l* = {}*r*", crate::number::short(m.ratio())))
     };
     canvas.label("value-l", nalgebra::center(&b, &a), l, TextSize::Small);
 }

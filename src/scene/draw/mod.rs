@@ -21,8 +21,8 @@ use crate::Angle;
 use crate::figure::{
     Align, Figure, Hue, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
 };
+use crate::figure::{NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Frame, Point, Vector};
-use crate::render::{NOTE_LINE, NOTE_SIZE};
 use serde_json::{Map, Value, json};
 
 /// Room kept around the fitted drawing for letters, in page units.
@@ -592,7 +592,7 @@ fn detail_panel(
 /// main view, so that the detail's clip leaves them whole).
 fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
     let (lo, hi) = (frame.min(), frame.max());
-    let x = torque::short(magnification);
+    let x = crate::number::short(magnification);
     canvas.push(
         "detail-frame",
         Role::Frame,
@@ -643,7 +643,7 @@ pub(crate) fn offset_note(scene: &Scene) -> String {
     );
     format!(
         "Offset engine: the line of stroke is *e* = {} {} {side} the crank centre *{c}*.",
-        torque::sig(e.abs()),
+        crate::number::sig(e.abs()),
         scene.units().length()
     )
 }

@@ -2,9 +2,9 @@
 //! (§36: "CB represents V_c", the acceleration scale n²).
 
 use super::Ctx;
-use super::torque::{short, sig};
 use crate::figure::RichText;
 use crate::geom::Intersection;
+use crate::number::{short, sig};
 use crate::scene::Layer;
 use crate::scene::notation::Named::*;
 

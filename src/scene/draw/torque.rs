@@ -6,6 +6,7 @@ use super::{Ctx, NamedArrow};
 use crate::analytic::statics::NG_TORQUE;
 use crate::figure::{RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
+use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
 use crate::scene::notation::Named::*;
 
@@ -20,41 +21,6 @@ const TORQUE_SWEEP: f64 = 4.4;
 /// Room kept between the torque arc and the slider's block, page units
 /// (an arrowhead's length).
 const ARROW_ROOM: f64 = 8.0;
-
-/// A given value as written when short (0.5, 6, 25), else to four
-/// significant figures.
-pub(crate) fn short(x: f64) -> String {
-    let s = format!("{}", x + 0.0);
-    if s.len() <= 6 && !s.contains('e') {
-        s
-    } else {
-        sig(x)
-    }
-}
-
-/// Four significant figures, no exponent for ordinary magnitudes; below
-/// 1e-9 and from 1e15 a power of ten (`8.786×10⁻¹⁰¹`), never hundreds of
-/// digits or a tiny value written as zero.
-pub(crate) fn sig(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return "0".into();
-    }
-    if !(1e-9..1e15).contains(&x.abs()) {
-        let s = format!("{x:.3e}");
-        let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
-        return format!(
-            "{mantissa}×{}",
-            crate::diagram::power_of_ten(exponent.parse().unwrap_or(0))
-        );
-    }
-    let digits = (3 - x.abs().log10().floor() as i32).clamp(0, 12) as usize;
-    let s = format!("{:.*}", digits, x);
-    if s.starts_with("-0") && s.trim_start_matches(['-', '0', '.']).is_empty() {
-        s[1..].to_string()
-    } else {
-        s
-    }
-}
 
 /// The values the figure names by symbol only, for the notes below it:
 /// OM and T, then the forces (or why there is no finite slider force).
@@ -73,7 +39,7 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
     };
     let mut out = vec![RichText::parse(&format!(
         "Torque line: {om} {arm}, crank torque *T* = {} {force}·{unit}.",
-        short(t)
+        given(t)
     ))];
     let r = ctx.main.pose().mechanism().crank();
     let fc = format!("*F*_c = *T*/*r* {}", amount(t / r, force));
@@ -115,7 +81,7 @@ fn borrowed_torque(ctx: &Ctx, t: f64) -> Option<String> {
     (t == NG_TORQUE && !ngs_rig).then(|| {
         format!(
             "*T* is Ng’s number for his rig (1 kg on a 27 mm arm, {} N·mm), kept as it is: give this engine’s own in a scene file (torque = …).",
-            short(NG_TORQUE)
+            given(NG_TORQUE)
         )
     })
 }
@@ -298,24 +264,6 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
 
 #[cfg(test)]
 mod tests {
-    use super::sig;
-
-    #[test]
-    fn four_significant_figures() {
-        assert_eq!(sig(13.0899), "13.09");
-        assert_eq!(sig(242.04), "242.0");
-        assert_eq!(sig(0.35301), "0.3530");
-        assert_eq!(sig(-0.00001), "-0.00001000");
-        assert_eq!(sig(0.0), "0");
-        assert_eq!(sig(12345.6), "12346");
-        // Issue 9: no 309-digit integers, no tiny value written as 0.
-        assert_eq!(sig(8.786053663290565e-101), "8.786×10⁻¹⁰¹");
-        assert_eq!(sig(f64::MAX), "1.798×10³⁰⁸");
-        assert_eq!(sig(-2.6487e102), "-2.649×10¹⁰²");
-        assert_eq!(sig(1e15), "1.000×10¹⁵");
-        assert_eq!(sig(1e-9), "0.000000001000");
-    }
-
     #[test]
     fn amounts_beyond_the_largest_number_say_so() {
         assert_eq!(super::amount(-2.5, "N"), "= 2.500 N");

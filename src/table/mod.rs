@@ -1,14 +1,19 @@
 //! The printed tables: the textbook's obliquity and acceleration-factor
 //! tables, kinematics sweeps and Ng's Table 2, in text, Markdown or CSV.
 
+mod dynamics;
+mod reading_json;
+
 use crate::analytic::approx::acceleration_factor;
 use crate::analytic::kinematics::Kinematics;
 use crate::analytic::statics::{Friction, slider_force, with_friction};
 use crate::angle::Angle;
 use crate::error::{Error, Result};
 use crate::mechanism::SliderCrank;
-use crate::render::plain;
+pub use crate::number::fixed;
+use crate::number::plain;
 use crate::units::Units;
+pub use dynamics::{dynamics_head, dynamics_row, example_table};
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).
 pub const TEXTBOOK_RATIOS: [f64; 6] = [4.0, 4.5, 5.0, 5.5, 6.0, f64::INFINITY];
@@ -27,6 +32,8 @@ pub enum Format {
     /// Comma-separated values with a header row.
     Csv,
 }
+
+crate::error::parse_by_name!(Format);
 
 impl Format {
     /// The name on the command line: `text`, `markdown`, `csv`.
@@ -62,85 +69,6 @@ pub struct Table {
     pub rows: Vec<Vec<String>>,
     /// Notes printed under the table (text and Markdown only).
     pub notes: Vec<String>,
-}
-
-/// Formats `x` with `decimals` decimals, never as "-0.000"; from 1e15 on
-/// in exponent form (`1.2500e300`, not 300 digits).
-pub fn fixed(x: f64, decimals: usize) -> String {
-    if let Some(s) = fixed_fast(x, decimals) {
-        return s;
-    }
-    if x.abs() >= 1e15 {
-        return format!("{:.*e}", decimals, x);
-    }
-    let s = format!("{:.*}", decimals, x);
-    if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
-        s[1..].to_string()
-    } else {
-        s
-    }
-}
-
-/// Powers of ten exact in f64, up to the 17 decimals a table writes.
-const POW10: [f64; 18] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-    1e17,
-];
-
-/// [`fixed`] of an ordinary number (0, or 1e-6 ≤ |x| < 1e12, with fewer
-/// than 10¹⁵ units of the last decimal) without float formatting: x
-/// scaled by an exact power of ten and rounded to an integer, whose
-/// digits are written. The scaled product is within half an ulp of the
-/// exact one, so the rounding is the exact decimal's wherever the product
-/// is more than an ulp from a half; nearer one (and outside the ordinary
-/// range) `None`, and `format!` decides.
-fn fixed_fast(x: f64, decimals: usize) -> Option<String> {
-    let a = x.abs();
-    if !(a == 0.0 || (1e-6..1e12).contains(&a)) {
-        return None;
-    }
-    let scaled = a * POW10.get(decimals)?;
-    if scaled >= 1e15 {
-        return None;
-    }
-    let whole = scaled.floor();
-    let frac = scaled - whole;
-    if (frac - 0.5).abs() <= scaled * f64::EPSILON {
-        return None;
-    }
-    let n = if frac > 0.5 { whole + 1.0 } else { whole } as u64;
-    let p = 10u64.pow(decimals as u32);
-    let mut digits = [0u8; 40];
-    let mut at = digits.len();
-    // cannot fail: n ≤ 1e15 and decimals ≤ 17 (`POW10`), so at most 17
-    // decimals, a point, 16 whole digits and a sign: 35 bytes of the 40.
-    #[allow(clippy::indexing_slicing)]
-    let mut put = |b: u8| {
-        at -= 1;
-        digits[at] = b;
-    };
-    let mut frac_part = n % p;
-    for _ in 0..decimals {
-        put(b'0' + (frac_part % 10) as u8);
-        frac_part /= 10;
-    }
-    if decimals > 0 {
-        put(b'.');
-    }
-    let mut int_part = n / p;
-    loop {
-        put(b'0' + (int_part % 10) as u8);
-        int_part /= 10;
-        if int_part == 0 {
-            break;
-        }
-    }
-    if x < 0.0 && n != 0 {
-        put(b'-');
-    }
-    std::str::from_utf8(digits.get(at..)?)
-        .ok()
-        .map(str::to_owned)
 }
 
 fn ratio_label(n: f64) -> String {
@@ -423,8 +351,8 @@ pub fn kinematics_head(mechanism: &SliderCrank, omega: f64, units: &Units) -> Ta
             plain(mechanism.crank()),
             plain(mechanism.rod()),
             plain(mechanism.offset()),
-            crate::catalogue::diagrams::short(omega * 60.0 / std::f64::consts::TAU),
-            crate::catalogue::diagrams::sig(omega)
+            crate::number::short(omega * 60.0 / std::f64::consts::TAU),
+            crate::number::sig(omega)
         ),
         headers: vec![
             "θ (°)".into(),
@@ -601,7 +529,7 @@ impl TableName {
                 2,
                 &Units::MILLIMETRE_NEWTON,
             ),
-            TableName::Dynamics => crate::dynamics::example_table(&every(0, 360, 30)),
+            TableName::Dynamics => dynamics::example_table(&every(0, 360, 30)),
         }
     }
 }
@@ -609,36 +537,6 @@ impl TableName {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Every double, subnormals and the largest included: at most 15
-    /// digits before the point, exponent form beyond, never "inf".
-    #[test]
-    fn every_double_is_fixed_within_a_width() {
-        let mut x = 5e-324_f64;
-        while x.is_finite() {
-            for v in [x, -x] {
-                for decimals in [0, 3, 17] {
-                    let s = fixed(v, decimals);
-                    assert!(s.len() <= 17 + decimals + 7, "{v:e}: {s}");
-                    // Rounded, 1.7976931348623157e308 to 0 decimals
-                    // reads "2e308": beyond the largest double, but text.
-                    assert!(s.parse::<f64>().is_ok(), "{v:e}: {s}");
-                    assert!(!s.contains("inf") && !s.contains("NaN"), "{v:e}: {s}");
-                }
-            }
-            // 1.37 × the least subnormal rounds back to it: step at least an ulp.
-            x = (x * 1.37).max(f64::from_bits(x.to_bits() + 1));
-        }
-        assert_eq!(fixed(f64::MAX, 3), "1.798e308");
-        assert_eq!(fixed(5e-324, 3), "0.000");
-    }
-
-    #[test]
-    fn negative_zero_is_not_printed() {
-        assert_eq!(fixed(-0.0, 3), "0.000");
-        assert_eq!(fixed(-0.0004, 3), "0.000");
-        assert_eq!(fixed(-0.0005001, 3), "-0.001");
-    }
 
     #[test]
     fn csv_quotes_commas() {
@@ -705,64 +603,5 @@ mod tests {
     fn bad_ratio_is_refused() {
         assert!(obliquity(&[1.0], 90.0).is_err());
         assert!(acceleration_factor_table(&[f64::NAN], &[0.0]).is_err());
-    }
-
-    /// What `{:.N}` writes, without a negative zero: the formatting
-    /// [`fixed_fast`] must match digit for digit.
-    fn formatted(x: f64, decimals: usize) -> String {
-        let s = format!("{:.*}", decimals, x);
-        if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
-            s[1..].to_string()
-        } else {
-            s
-        }
-    }
-
-    #[test]
-    fn the_fast_number_writer_has_the_digits_of_the_formatter() {
-        // Over 30 decades, both signs, every count of decimals, with
-        // mantissas from a fixed sequence and the halves that decide a
-        // rounding (0.125, 2.5, 0.0625 …, exact in binary).
-        let mut state = 0x2545_f491_4f6c_dd1d_u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let (mut fast, mut total) = (0, 0);
-        for decade in -8..22 {
-            for k in 0..300 {
-                let mantissa = match k {
-                    0 => 1.0,
-                    1 => 1.25,
-                    2 => 2.5,
-                    3 => 0.625,
-                    4 => 9.999_999_999_999_998,
-                    _ => 1.0 + 9.0 * next(),
-                };
-                let x = mantissa * 10f64.powi(decade);
-                for x in [x, -x, (x * 8.0).round() / 8.0, x.round() + 0.5] {
-                    for decimals in 0..=17 {
-                        total += 1;
-                        if let Some(s) = fixed_fast(x, decimals) {
-                            fast += 1;
-                            assert_eq!(s, formatted(x, decimals), "{x:e} to {decimals}");
-                        }
-                    }
-                }
-            }
-        }
-        // The ordinary range (a third of these, which reach 1e22 and 17
-        // decimals) is the fast path's.
-        assert!(fast * 3 > total, "{fast} of {total}");
-        assert_eq!(fixed_fast(0.0, 3).as_deref(), Some("0.000"));
-        assert_eq!(fixed_fast(-0.0, 2).as_deref(), Some("0.00"));
-        assert_eq!(fixed_fast(-0.000_001, 2).as_deref(), Some("0.00"));
-        assert_eq!(fixed_fast(-1.5, 0), None); // a half: the formatter's
-        assert_eq!(fixed_fast(1e-7, 4), None); // outside the ordinary range
-        assert_eq!(fixed_fast(2e12, 1), None);
-        assert_eq!(fixed_fast(f64::NAN, 1), None);
-        assert_eq!(fixed(-12.345_67, 3), "-12.346");
     }
 }

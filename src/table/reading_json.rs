@@ -1,10 +1,12 @@
 //! A [`Reading`] as the JSON object `analyze --json` prints (schema in
 //! `docs/design.md` §4), for the command line and the Python package alike.
 
-use super::Reading;
 use crate::analytic::statics::Friction;
+use crate::chain::ChainCentres;
+use crate::construct::Reading;
 use crate::geom::{Intersection, Point};
-use crate::{ChainCentres, SliderCrank, Units};
+use crate::mechanism::SliderCrank;
+use crate::units::Units;
 use serde_json::{Value, json};
 
 /// +0.0 for −0.0, so that no "-0" is written.

@@ -1,27 +1,13 @@
 //! `table dynamics`: the forces and torques of an engine against θ, with
 //! the turn's mean torque, fluctuation of energy and flywheel as notes.
 
-use super::engine::Engine;
-use super::flywheel::Flywheel;
-use super::turning::TurningMoment;
+use super::Table;
 use crate::angle::Angle;
+use crate::dynamics::{EXAMPLE_MASS, Engine, Flywheel, FlywheelAsk, TurningMoment};
 use crate::error::Result;
-use crate::render::plain;
-use crate::table::{Table, fixed};
+use crate::number::fixed;
+use crate::number::plain;
 use crate::units::Units;
-
-/// What the flywheel note works out: the flywheel for a coefficient of
-/// fluctuation of speed, or the coefficient of a given flywheel.
-#[derive(Debug, Clone, Copy, PartialEq)]
-#[non_exhaustive]
-pub enum FlywheelAsk {
-    /// No flywheel note.
-    None,
-    /// The moment of inertia for this coefficient C_s.
-    Coefficient(f64),
-    /// The coefficient for this moment of inertia I.
-    Inertia(f64),
-}
 
 /// The title, headers and notes of the dynamics table of `engine` with
 /// cylinders at `phases_deg` (the notes hold the turn's results).
@@ -140,10 +126,6 @@ pub fn dynamics_row(
     }
     Ok(row)
 }
-
-/// The reciprocating mass of the example engine, in slug (about 322 lbf
-/// of piston and cross-head): an illustration, the textbook gives none.
-pub const EXAMPLE_MASS: f64 = 10.0;
 
 /// The dynamics table of the example engine: §35's (r = 0.5 ft, l = 3 ft,
 /// 250 rpm) with [`EXAMPLE_MASS`], no gas force, one cylinder, 4 decimals,
