@@ -234,7 +234,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
-const FIGURES: [&str; 10] = [
+const FIGURES: [&str; 11] = [
     "fig-62-displacement",
     "fig-63-velocity",
     "fig-65-klein",
@@ -245,6 +245,7 @@ const FIGURES: [&str; 10] = [
     "fig-61-centrodes",
     "fig-64-velocity-diagrams",
     "coupler-curves",
+    "inertia-force",
 ];
 
 /// Figures held to rule 5.

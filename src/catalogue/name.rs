@@ -82,6 +82,12 @@ pub enum FigureName {
     /// Ng's T = F · OM over a turn) with its mean line and the areas
     /// between them, and the flywheel's energy diagram.
     TurningMoment,
+    /// The inertia force of the reciprocating parts on the mechanism:
+    /// Klein's CG read as the piston's acceleration and scaled by m ω² to
+    /// the force, drawn at the cross-head against the acceleration,
+    /// resolved along the rod and on the guides, and the crank effort
+    /// T = F · OM through Ng's torque line.
+    InertiaForce,
 }
 
 impl FigureName {
@@ -97,7 +103,7 @@ impl FigureName {
     ];
 
     /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 17] = [
+    pub const DIAGRAMS: [FigureName; 18] = [
         FigureName::Fig61Centrodes,
         FigureName::Fig64VelocityDiagrams,
         FigureName::AccelerationDiagrams,
@@ -115,6 +121,7 @@ impl FigureName {
         FigureName::Inversion4HandPump,
         FigureName::SlotConvergence,
         FigureName::TurningMoment,
+        FigureName::InertiaForce,
     ];
 
     /// Every named figure: the scenes, then the diagrams.
@@ -164,6 +171,7 @@ impl FigureName {
             FigureName::Inversion4HandPump => "inversion-4-hand-pump",
             FigureName::SlotConvergence => "slot-convergence",
             FigureName::TurningMoment => "turning-moment",
+            FigureName::InertiaForce => "inertia-force",
         }
     }
 
@@ -280,6 +288,7 @@ impl FigureName {
             FigureName::Fig64VelocityDiagrams => 50.0,
             FigureName::AccelerationDiagrams => 45.0,
             FigureName::RodMotion => 45.0,
+            FigureName::InertiaForce => 30.0,
             FigureName::CouplerCurves => 40.0,
             FigureName::NgFig2Incline => 45.0,
             FigureName::Fig60Chains => 50.0,
@@ -350,6 +359,7 @@ impl FigureName {
             | FigureName::Inversion4HandPump => (760.0, 620.0),
             FigureName::SlotConvergence => (760.0, 560.0),
             FigureName::TurningMoment => (900.0, 760.0),
+            FigureName::InertiaForce => (760.0, 760.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }
@@ -367,7 +377,7 @@ impl FigureName {
     /// The scene of a mechanism figure with `options` applied, the scene
     /// [`FigureName::figure`] draws; `None` for a diagram, which has no
     /// scene. Errors as [`FigureName::figure`] for an option a mechanism
-    /// figure does not use (`--data`, `--fit`) or a bad value.
+    /// figure does not use (`--data`, `--fit`, `--mass`) or a bad value.
     pub fn scene_with(&self, options: &FigureOptions) -> Result<Option<Scene>> {
         let Some(mut scene) = self.scene() else {
             return Ok(None);
@@ -375,7 +385,7 @@ impl FigureName {
         if let Some(bad) = options
             .given()
             .into_iter()
-            .find(|o| *o == "--data" || *o == "--fit")
+            .find(|o| *o == "--data" || *o == "--fit" || *o == "--mass")
         {
             return Err(Error::Parse(format!("{} does not use {bad}", self.name())));
         }

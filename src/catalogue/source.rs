@@ -52,6 +52,10 @@ impl FigureName {
                 BOOK,
                 "§35–37 (the piston’s acceleration, Klein’s CG) with Ng’s T = F · OM, carried over a turn by standard engine dynamics (docs/dynamics.md); no figure in either seed",
             ),
+            FigureName::InertiaForce => (
+                BOOK,
+                "§36, Fig. 65 (Klein’s CG, the piston’s acceleration to the scale ω²) with Ng’s T = F · OM (eq. 2), the inertia force by d’Alembert (docs/dynamics.md §2); no figure in either seed",
+            ),
             FigureName::Inversion1Engine => {
                 (BOOK, "§34, the first inversion of the chain of Fig. 60")
             }
@@ -143,6 +147,9 @@ impl FigureName {
             }
             FigureName::TurningMoment => {
                 "The §35 engine at 250 rpm with a 10 slug reciprocating mass and a steam indicator diagram: the torque on the crank against θ, its mean line and the areas between them, and the energy stored in the flywheel with its fluctuation ΔE."
+            }
+            FigureName::InertiaForce => {
+                "The §35 engine at 30° and 250 rpm with a 10 slug reciprocating mass: Klein’s construction, CG read as the inertia force m ω² CG and drawn at the cross-head against the acceleration; the force resolved along the rod and on the guides; the crank effort T = F · OM through Ng’s OM (= CE)."
             }
             FigureName::SlotConvergence => {
                 "The block in a slot of radius ρ against the straight slot: the largest differences of position, velocity and acceleration for ρ = 1 to 10¹⁵, log–log."

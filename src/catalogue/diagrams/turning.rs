@@ -30,7 +30,8 @@ const STEP: f64 = 1e-6;
 pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
     let text = ctx.options.data.as_deref().unwrap_or(INDICATOR);
     let diagram = IndicatorDiagram::from_csv(text, BORE, "data")?;
-    Engine::new(ctx.mechanism, EXAMPLE_MASS, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
+    let mass = ctx.options.mass.unwrap_or(EXAMPLE_MASS);
+    Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
 }
 
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
@@ -170,7 +171,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 short(m.crank()), short(m.rod()),
                 // An offset engine says so (its stroke, and so its work, differ).
                 if m.offset() == 0.0 { String::new() } else { format!(", *e* = {} {}", short(m.offset()), ctx.unit()) },
-                short(ctx.rpm()), short(EXAMPLE_MASS), short(BORE),
+                short(ctx.rpm()), short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)), short(BORE),
                 if ctx.options.data.is_some() { " given (--data)" } else { " of examples/indicator.csv" },
                 u = ctx.unit(), f = ctx.units.force()
             ),

@@ -1,0 +1,168 @@
+//! The engine dynamics figures read back from their SVG: the lengths of
+//! the drawn arrows and the numbers of the notes against formulas written
+//! here, not the library's.
+
+#[allow(dead_code)] // the helpers the other figure tests use
+mod common;
+
+use common::{attr, metadata, read_text};
+use slider_crank::catalogue::FigureOptions;
+use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
+
+/// ω of 250 rpm.
+fn omega() -> f64 {
+    250.0 * std::f64::consts::TAU / 60.0
+}
+
+/// The example engine's reciprocating mass (the figures' default).
+const MASS: f64 = 10.0;
+
+/// The figure `name` of the mechanism (r, l, e) at `degrees`.
+fn svg(name: FigureName, (r, l, e): (f64, f64, f64), degrees: f64) -> String {
+    let mut o = FigureOptions::default();
+    o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+    o.angle = Some(Angle::from_degrees(degrees).unwrap());
+    to_svg(&name.figure(&o).unwrap())
+}
+
+/// The six numbers of a panel's `data-page-from-world`.
+fn panel_map(svg: &str, panel: &str) -> [f64; 6] {
+    let text = attr(svg, panel, "data-page-from-world").unwrap();
+    let v: Vec<f64> = text.split(' ').map(|s| s.parse().unwrap()).collect();
+    [v[0], v[1], v[2], v[3], v[4], v[5]]
+}
+
+/// The tail and the tip of the arrow `id` on the page: the start of its
+/// shaft and the first point of its head (the renderer draws the head
+/// from the tip).
+fn arrow(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let mut paths = svg[at..].split(" d=\"M").skip(1).map(|s| {
+        let end = s.find(|c: char| c.is_ascii_alphabetic()).unwrap();
+        let mut xy = s[..end]
+            .split_whitespace()
+            .map(|v| v.parse::<f64>().unwrap());
+        (xy.next().unwrap(), xy.next().unwrap())
+    });
+    let tail = paths.next().unwrap();
+    let tip = paths.next().unwrap();
+    (tail, tip)
+}
+
+fn length((a, b): ((f64, f64), (f64, f64))) -> f64 {
+    (b.0 - a.0).hypot(b.1 - a.1)
+}
+
+/// d²x_A/dθ² of the slider, x_A = r cos θ + √(l² − (r sin θ − e)²),
+/// differentiated by hand.
+fn x2(r: f64, l: f64, e: f64, t: f64) -> f64 {
+    let (u, u1, u2) = (r * t.sin() - e, r * t.cos(), -r * t.sin());
+    let s = (l * l - u * u).sqrt();
+    -r * t.cos() - (u1 * u1 + u * u2) / s - (u * u1).powi(2) / s.powi(3)
+}
+
+/// The engines and poses of the checks: the default, near the dead
+/// centres and at 90°, the shortest and a long rod, an offset.
+const CASES: [((f64, f64, f64), f64); 8] = [
+    ((0.5, 3.0, 0.0), 30.0),
+    ((0.5, 3.0, 0.0), 2.0),
+    ((0.5, 3.0, 0.0), 90.0),
+    ((0.5, 3.0, 0.0), 178.0),
+    ((1.0, 1.05, 0.0), 60.0),
+    ((1.0, 1.05, 0.0), 200.0),
+    ((1.0, 50.0, 0.0), 30.0),
+    ((1.0, 4.0, 1.0), 120.0),
+];
+
+#[test]
+fn the_inertia_force_arrow_is_m_a_at_the_drawings_scale() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
+        let t = deg.to_radians();
+        let w2 = omega() * omega();
+        // −m a along +x, a = ω² d²x/dθ².
+        let force = -MASS * w2 * x2(r, l, e, t);
+        let map = panel_map(&svg, "panel-mechanism");
+        let scale = map[0].abs();
+        let drawn = arrow(&svg, "force-inertia");
+        // At the drawing's scale 1 length unit is m ω² force units.
+        let want = force.abs() / (MASS * w2) * scale;
+        assert!(
+            (length(drawn) - want).abs() < 0.05,
+            "{r} {l} {e} at {deg}°: drawn {} for {want}",
+            length(drawn)
+        );
+        // Against the acceleration: along +x on the page where −m a is.
+        let page_dx = drawn.1.0 - drawn.0.0;
+        assert!(page_dx * map[0] * force > 0.0, "{r} {l} {e} at {deg}°");
+        // In line, the two-term series is within 1/n² of it (at n = 50).
+        if e == 0.0 && l / r > 10.0 {
+            let n = l / r;
+            let series = MASS * r * w2 * (t.cos() + (2.0 * t).cos() / n);
+            assert!((series - force).abs() < MASS * r * w2 / (n * n));
+        }
+    }
+}
+
+#[test]
+fn the_triangle_of_forces_closes_along_the_rod_and_the_guides() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
+        let t = deg.to_radians();
+        let sin_phi = (r * t.sin() - e) / l;
+        let cos_phi = (1.0 - sin_phi * sin_phi).sqrt();
+        let fi = length(arrow(&svg, "force-triangle-inertia"));
+        let fq = length(arrow(&svg, "force-triangle-rod"));
+        // The rounding of the written file (0.01) over a force ≥ 40 units.
+        let tol = 0.05 / fi.min(fq);
+        assert!((fq / fi - 1.0 / cos_phi).abs() < tol, "{deg}°");
+        if sin_phi.abs() > 1e-3 {
+            let fn_ = length(arrow(&svg, "force-triangle-guides"));
+            assert!((fn_ / fi - (sin_phi / cos_phi).abs()).abs() < tol, "{deg}°");
+        }
+    }
+}
+
+/// `x` to four significant figures as the notes write it (a true minus).
+fn four(x: f64) -> String {
+    let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+    format!("{x:.digits$}").replace('-', "−")
+}
+
+#[test]
+fn the_notes_give_the_crank_effort_f_om_with_units() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
+        let t = deg.to_radians();
+        let force = MASS * omega() * omega() * x2(r, l, e, t); // towards C
+        let sin_phi = (r * t.sin() - e) / l;
+        let tan_phi = sin_phi / (1.0 - sin_phi * sin_phi).sqrt();
+        // OM: the rod produced meets the perpendicular through C.
+        let om = r * t.sin() + r * t.cos() * tan_phi;
+        // Read without spaces: a wrapped note may break a line anywhere.
+        let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+        let text = bare(&read_text(&svg));
+        let torque = bare(&format!("T = Fi·OM = {} lbf·ft", four(force * om)));
+        assert!(text.contains(&torque), "{deg}°: {torque} in {text}");
+        let inertia = bare(&format!("= {} lbf (exact", four(force.abs())));
+        assert!(text.contains(&inertia), "{deg}°: {inertia} in {text}");
+        let meta = metadata(&svg);
+        let om_meta = meta["inertia"]["om"].as_f64().unwrap();
+        assert!((om_meta - om).abs() < 1e-9 * (r + l), "{deg}°");
+    }
+}
+
+#[test]
+fn the_inertia_force_figure_needs_a_positive_mass() {
+    for bad in [0.0, -1.0, f64::NAN] {
+        let mut o = FigureOptions::default();
+        o.mass = Some(bad);
+        let e = FigureName::InertiaForce.figure(&o).unwrap_err().to_string();
+        assert!(e.contains("mass") && !e.contains('\n'), "{e}");
+    }
+    let mut o = FigureOptions::default();
+    o.mass = Some(2.0);
+    assert!(FigureName::Fig65Klein.figure(&o).is_err());
+}
