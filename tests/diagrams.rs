@@ -319,6 +319,33 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
                 ),
             );
         }
+        FigureName::PrimarySecondary => {
+            // The figures' reciprocating mass, 10 slug.
+            let k = 10.0 * r * w * w;
+            let n = l / r;
+            let series = move |t: f64| k * (t.cos() + (2.0 * t).cos() / n);
+            let inertia = move |t: f64| -10.0 * w * w * engine(r, l, t).0.d(2);
+            add(
+                "curve-primary",
+                exact(move |t| (t / DEG, k * t.cos()), &[TURN]),
+            );
+            add(
+                "curve-secondary",
+                exact(move |t| (t / DEG, k * (2.0 * t).cos() / n), &[TURN]),
+            );
+            add(
+                "curve-primary-secondary",
+                exact(move |t| (t / DEG, series(t)), &[TURN]),
+            );
+            add(
+                "curve-inertia-exact",
+                exact(move |t| (t / DEG, inertia(t)), &[TURN]),
+            );
+            add(
+                "curve-remainder",
+                exact(move |t| (t / DEG, inertia(t) - series(t)), &[TURN]),
+            );
+        }
         FigureName::RodMotion => {
             let w2 = w * w;
             let n = l / r;

@@ -166,3 +166,45 @@ fn the_inertia_force_figure_needs_a_positive_mass() {
     o.mass = Some(2.0);
     assert!(FigureName::Fig65Klein.figure(&o).is_err());
 }
+
+#[test]
+fn the_unbalanced_forces_notes_give_the_amplitudes_and_the_remainder() {
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 50.0, 0.0),
+        (1.0, 4.0, 1.0),
+    ] {
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+        let svg = to_svg(&FigureName::PrimarySecondary.figure(&o).unwrap());
+        let w2 = omega() * omega();
+        let (k, n) = (MASS * r * w2, l / r);
+        // The largest of exact − (primary + secondary) over 721 angles.
+        let worst = (0..=720)
+            .map(|i| (i as f64 * 0.5).to_radians())
+            .map(|t| -MASS * w2 * x2(r, l, e, t) - k * (t.cos() + (2.0 * t).cos() / n))
+            .fold(0.0f64, |a, v| a.max(v.abs()));
+        let meta = metadata(&svg);
+        let got = meta["unbalanced"]["largest_remainder"].as_f64().unwrap();
+        assert!((got - worst).abs() <= 1e-9 * k, "{l}: {got} for {worst}");
+        let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+        let text = bare(&read_text(&svg));
+        // The file sets a square as a raised 2.
+        for want in [
+            format!("mrω2 = {} lbf", four(k)),
+            format!("mrω2/n = {} lbf", four(k / n)),
+        ] {
+            assert!(text.contains(&bare(&want)), "{want} in {text}");
+        }
+        // In line the remainder is of the order of m r ω² / n³: about
+        // half of it at 90° for a long rod.
+        if e == 0.0 && n > 10.0 {
+            assert!(
+                (worst * n.powi(3) / k - 0.5).abs() < 0.01,
+                "{}",
+                worst * n.powi(3) / k
+            );
+        }
+    }
+}

@@ -519,6 +519,24 @@ fn chain_plates_are_clean() {
     }
 }
 
+/// The engine dynamics figures that are not drawn on the mechanism:
+/// `primary-secondary` once per mechanism of [`mechanisms`].
+const DYNAMICS_FIGURES: [&str; 1] = ["primary-secondary"];
+
+#[test]
+fn dynamics_plates_are_clean() {
+    let mut jobs = Vec::new();
+    for figure in DYNAMICS_FIGURES {
+        for m in mechanisms() {
+            jobs.push((figure, m, None));
+        }
+    }
+    let outcomes = sweep(&jobs);
+    let text = report(&outcomes);
+    println!("{text}({} plates)", outcomes.len());
+    assert!(outcomes.iter().all(|o| o.failures.is_empty()), "{text}");
+}
+
 // ------------------------------------------------ the checker, proven to fail
 
 /// A 400 × 300 page: a mechanism panel drawn at page scale holding

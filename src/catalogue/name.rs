@@ -88,6 +88,10 @@ pub enum FigureName {
     /// resolved along the rod and on the guides, and the crank effort
     /// T = F · OM through Ng's torque line.
     InertiaForce,
+    /// The primary and secondary unbalanced forces of the reciprocating
+    /// parts (m r ω² cos θ, m r ω² cos 2θ / n), their sum and the exact
+    /// inertia force against θ, and what the two terms leave out.
+    PrimarySecondary,
 }
 
 impl FigureName {
@@ -103,7 +107,7 @@ impl FigureName {
     ];
 
     /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 18] = [
+    pub const DIAGRAMS: [FigureName; 19] = [
         FigureName::Fig61Centrodes,
         FigureName::Fig64VelocityDiagrams,
         FigureName::AccelerationDiagrams,
@@ -122,6 +126,7 @@ impl FigureName {
         FigureName::SlotConvergence,
         FigureName::TurningMoment,
         FigureName::InertiaForce,
+        FigureName::PrimarySecondary,
     ];
 
     /// Every named figure: the scenes, then the diagrams.
@@ -172,6 +177,7 @@ impl FigureName {
             FigureName::SlotConvergence => "slot-convergence",
             FigureName::TurningMoment => "turning-moment",
             FigureName::InertiaForce => "inertia-force",
+            FigureName::PrimarySecondary => "primary-secondary",
         }
     }
 
@@ -301,7 +307,8 @@ impl FigureName {
             | FigureName::NgFig7Calibration
             | FigureName::NgFig8Forces
             | FigureName::CurveBenchmark
-            | FigureName::TurningMoment => 0.0,
+            | FigureName::TurningMoment
+            | FigureName::PrimarySecondary => 0.0,
         }
     }
 
@@ -360,6 +367,7 @@ impl FigureName {
             FigureName::SlotConvergence => (760.0, 560.0),
             FigureName::TurningMoment => (900.0, 760.0),
             FigureName::InertiaForce => (760.0, 760.0),
+            FigureName::PrimarySecondary => (900.0, 760.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }

@@ -56,6 +56,10 @@ impl FigureName {
                 BOOK,
                 "§36, Fig. 65 (Klein’s CG, the piston’s acceleration to the scale ω²) with Ng’s T = F · OM (eq. 2), the inertia force by d’Alembert (docs/dynamics.md §2); no figure in either seed",
             ),
+            FigureName::PrimarySecondary => (
+                BOOK,
+                "§35, eq. (3) and its table of cos θ + cos 2θ / n, carried on by the balancing of the reciprocating parts (docs/dynamics.md §6); no figure in either seed",
+            ),
             FigureName::Inversion1Engine => {
                 (BOOK, "§34, the first inversion of the chain of Fig. 60")
             }
@@ -150,6 +154,9 @@ impl FigureName {
             }
             FigureName::InertiaForce => {
                 "The §35 engine at 30° and 250 rpm with a 10 slug reciprocating mass: Klein’s construction, CG read as the inertia force m ω² CG and drawn at the cross-head against the acceleration; the force resolved along the rod and on the guides; the crank effort T = F · OM through Ng’s OM (= CE)."
+            }
+            FigureName::PrimarySecondary => {
+                "The §35 engine at 250 rpm with a 10 slug reciprocating mass: the primary force m r ω² cos θ, the secondary m r ω² cos 2θ / n, their sum and the exact inertia force against θ, and the exact force less the two terms."
             }
             FigureName::SlotConvergence => {
                 "The block in a slot of radius ρ against the straight slot: the largest differences of position, velocity and acceleration for ρ = 1 to 10¹⁵, log–log."

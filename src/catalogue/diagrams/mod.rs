@@ -18,6 +18,7 @@ mod inversions;
 mod rod;
 mod sketch;
 mod turning;
+mod unbalanced;
 mod velocity;
 
 use super::{FigureName, FigureOptions};
@@ -184,6 +185,7 @@ pub(crate) fn uses(name: FigureName) -> &'static [&'static str] {
         FigureName::NgFig8Forces => &[MECH, "--data", "--style", "--font"],
         FigureName::CurveBenchmark => &["--data", "--style", "--font"],
         FigureName::TurningMoment => &[MECH, SPEED, "--data", "--mass", "--style", "--font"],
+        FigureName::PrimarySecondary => &[MECH, SPEED, "--mass", "--style", "--font"],
         FigureName::InertiaForce => &[
             MECH, SPEED, "--angle", "--mass", "--style", "--font", "--mirror",
         ],
@@ -251,6 +253,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         FigureName::SlotConvergence => convergence::build(&ctx),
         FigureName::TurningMoment => turning::build(&ctx),
         FigureName::InertiaForce => inertia::build(&ctx),
+        FigureName::PrimarySecondary => unbalanced::build(&ctx),
         _ => Err(Error::Parse(format!(
             "{} is a mechanism figure, not a diagram",
             name.name()
