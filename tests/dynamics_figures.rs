@@ -208,3 +208,85 @@ fn the_unbalanced_forces_notes_give_the_amplitudes_and_the_remainder() {
         }
     }
 }
+
+/// The world point of a page point in a panel whose map has no rotation.
+fn to_world(map: &[f64; 6], (x, y): (f64, f64)) -> (f64, f64) {
+    assert!(map[1] == 0.0 && map[2] == 0.0, "{map:?}");
+    ((x - map[4]) / map[0], (y - map[5]) / map[3])
+}
+
+/// The world vector of the arrow `id` in `panel`.
+fn world_arrow(svg: &str, panel: &str, id: &str) -> (f64, f64) {
+    let map = panel_map(svg, panel);
+    let (tail, tip) = arrow(svg, id);
+    let (a, b) = (to_world(&map, tail), to_world(&map, tip));
+    (b.0 - a.0, b.1 - a.1)
+}
+
+#[test]
+fn the_direct_and_reverse_cranks_project_to_the_primary_and_secondary_forces() {
+    use slider_crank::dynamics::{Engine, unbalanced_forces};
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        let t = deg.to_radians();
+        let w2 = omega() * omega();
+        let n = l / r;
+        // Each crank carries m/2: at r and ω (primary), at r/4n and 2ω
+        // (secondary), at ±θ and ±2θ.
+        for (name, force, angle, sum) in [
+            ("primary", 0.5 * MASS * r * w2, t, MASS * r * w2 * t.cos()),
+            (
+                "secondary",
+                0.5 * MASS * (r / (4.0 * n)) * 4.0 * w2,
+                2.0 * t,
+                MASS * r * w2 * (2.0 * t).cos() / n,
+            ),
+        ] {
+            let panel = format!("panel-{name}");
+            let d = world_arrow(&svg, &panel, &format!("force-{name}-direct"));
+            let v = world_arrow(&svg, &panel, &format!("force-{name}-reverse"));
+            let tol = 2e-3 * force;
+            let at = |x: (f64, f64), a: f64| (x.0 - force * a.cos()).hypot(x.1 - force * a.sin());
+            assert!(at(d, angle) < tol, "{name} direct at {deg}°: {d:?}");
+            assert!(at(v, -angle) < tol, "{name} reverse at {deg}°: {v:?}");
+            // The components on the line of stroke sum to the force; those
+            // across it cancel.
+            assert!((d.0 + v.0 - sum).abs() < 2.0 * tol, "{name} at {deg}°");
+            assert!((d.1 + v.1).abs() < 2.0 * tol, "{name} at {deg}°");
+        }
+        // The secondary cranks' force is balance.rs's secondary force.
+        let m = SliderCrank::new(r, l, e).unwrap();
+        let engine = Engine::new(m, MASS, omega()).unwrap();
+        let b = unbalanced_forces(&engine, Angle::from_degrees(deg).unwrap());
+        let meta = metadata(&svg);
+        let secondary = meta["cranks"]["secondary"].as_f64().unwrap();
+        assert!((secondary - b.secondary).abs() <= 1e-9 * MASS * r * w2);
+        assert!((MASS * r * w2 * (2.0 * t).cos() / n - b.secondary).abs() <= 1e-9 * MASS * r * w2);
+    }
+}
+
+#[test]
+fn on_the_line_of_stroke_primary_and_secondary_sum_to_the_series_beside_the_exact_force() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        let t = deg.to_radians();
+        let w2 = omega() * omega();
+        let k = MASS * r * w2;
+        let n = l / r;
+        let want = [
+            ("force-sum-primary", k * t.cos()),
+            ("force-sum-secondary", k * (2.0 * t).cos() / n),
+            ("force-sum-exact", -MASS * w2 * x2(r, l, e, t)),
+        ];
+        for (id, value) in want {
+            if value.abs() < 1e-2 * k {
+                continue;
+            }
+            let (x, y) = world_arrow(&svg, "panel-sum", id);
+            assert!(
+                (x - value).abs() < 2e-3 * k && y.abs() < 1e-9 * k,
+                "{id} at {deg}°: {x} for {value}"
+            );
+        }
+    }
+}

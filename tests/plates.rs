@@ -520,15 +520,22 @@ fn chain_plates_are_clean() {
 }
 
 /// The engine dynamics figures that are not drawn on the mechanism:
-/// `primary-secondary` once per mechanism of [`mechanisms`].
-const DYNAMICS_FIGURES: [&str; 1] = ["primary-secondary"];
+/// `primary-secondary` once per mechanism of [`mechanisms`],
+/// `direct-reverse-cranks` at each of its poses of [`poses`].
+const DYNAMICS_FIGURES: [&str; 2] = ["primary-secondary", "direct-reverse-cranks"];
 
 #[test]
 fn dynamics_plates_are_clean() {
     let mut jobs = Vec::new();
     for figure in DYNAMICS_FIGURES {
         for m in mechanisms() {
-            jobs.push((figure, m, None));
+            if figure == "primary-secondary" {
+                jobs.push((figure, m, None));
+                continue;
+            }
+            for a in poses(&m.1) {
+                jobs.push((figure, m.clone(), Some(a)));
+            }
         }
     }
     let outcomes = sweep(&jobs);

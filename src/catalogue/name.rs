@@ -92,6 +92,11 @@ pub enum FigureName {
     /// parts (m r ω² cos θ, m r ω² cos 2θ / n), their sum and the exact
     /// inertia force against θ, and what the two terms leave out.
     PrimarySecondary,
+    /// The direct and reverse crank method: the primary force as the
+    /// resultant of cranks at ±θ, the secondary as that of cranks of
+    /// radius r/4n at ±2θ, their components on the line of stroke summing
+    /// to the force.
+    DirectReverseCranks,
 }
 
 impl FigureName {
@@ -107,7 +112,7 @@ impl FigureName {
     ];
 
     /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 19] = [
+    pub const DIAGRAMS: [FigureName; 20] = [
         FigureName::Fig61Centrodes,
         FigureName::Fig64VelocityDiagrams,
         FigureName::AccelerationDiagrams,
@@ -127,6 +132,7 @@ impl FigureName {
         FigureName::TurningMoment,
         FigureName::InertiaForce,
         FigureName::PrimarySecondary,
+        FigureName::DirectReverseCranks,
     ];
 
     /// Every named figure: the scenes, then the diagrams.
@@ -178,6 +184,7 @@ impl FigureName {
             FigureName::TurningMoment => "turning-moment",
             FigureName::InertiaForce => "inertia-force",
             FigureName::PrimarySecondary => "primary-secondary",
+            FigureName::DirectReverseCranks => "direct-reverse-cranks",
         }
     }
 
@@ -294,7 +301,7 @@ impl FigureName {
             FigureName::Fig64VelocityDiagrams => 50.0,
             FigureName::AccelerationDiagrams => 45.0,
             FigureName::RodMotion => 45.0,
-            FigureName::InertiaForce => 30.0,
+            FigureName::InertiaForce | FigureName::DirectReverseCranks => 30.0,
             FigureName::CouplerCurves => 40.0,
             FigureName::NgFig2Incline => 45.0,
             FigureName::Fig60Chains => 50.0,
@@ -368,6 +375,7 @@ impl FigureName {
             FigureName::TurningMoment => (900.0, 760.0),
             FigureName::InertiaForce => (760.0, 760.0),
             FigureName::PrimarySecondary => (900.0, 760.0),
+            FigureName::DirectReverseCranks => (900.0, 660.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }

@@ -60,6 +60,10 @@ impl FigureName {
                 BOOK,
                 "§35, eq. (3) and its table of cos θ + cos 2θ / n, carried on by the balancing of the reciprocating parts (docs/dynamics.md §6); no figure in either seed",
             ),
+            FigureName::DirectReverseCranks => (
+                BOOK,
+                "§35, eq. (3): its two terms as the direct and reverse cranks of the balancing of the reciprocating parts (docs/dynamics.md §6); no figure in either seed",
+            ),
             FigureName::Inversion1Engine => {
                 (BOOK, "§34, the first inversion of the chain of Fig. 60")
             }
@@ -157,6 +161,9 @@ impl FigureName {
             }
             FigureName::PrimarySecondary => {
                 "The §35 engine at 250 rpm with a 10 slug reciprocating mass: the primary force m r ω² cos θ, the secondary m r ω² cos 2θ / n, their sum and the exact inertia force against θ, and the exact force less the two terms."
+            }
+            FigureName::DirectReverseCranks => {
+                "The §35 engine at 30° and 250 rpm with a 10 slug reciprocating mass: the primary force as the resultant of the direct and reverse cranks at ±θ, each carrying m/2 at r, the secondary as that of cranks at ±2θ, each m/2 at r/4n turning at 2ω, and the two on the line of stroke against the exact inertia force."
             }
             FigureName::SlotConvergence => {
                 "The block in a slot of radius ρ against the straight slot: the largest differences of position, velocity and acceleration for ρ = 1 to 10¹⁵, log–log."

@@ -22,7 +22,8 @@ pub struct FigureArgs {
     /// Fig. 60: fig-60-chains, inversion-1-engine,
     /// inversion-2-rotating-block, inversion-3-oscillating-cylinder,
     /// inversion-4-hand-pump, slot-convergence. Engine dynamics (--mass):
-    /// turning-moment, inertia-force, primary-secondary
+    /// turning-moment, inertia-force, primary-secondary,
+    /// direct-reverse-cranks
     #[arg(value_name = "NAME")]
     pub name: FigureName,
     #[command(flatten)]

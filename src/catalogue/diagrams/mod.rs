@@ -10,6 +10,7 @@ mod centrodes;
 mod chains;
 mod convergence;
 mod coupler;
+mod cranks;
 mod data;
 mod forces;
 mod incline;
@@ -186,6 +187,7 @@ pub(crate) fn uses(name: FigureName) -> &'static [&'static str] {
         FigureName::CurveBenchmark => &["--data", "--style", "--font"],
         FigureName::TurningMoment => &[MECH, SPEED, "--data", "--mass", "--style", "--font"],
         FigureName::PrimarySecondary => &[MECH, SPEED, "--mass", "--style", "--font"],
+        FigureName::DirectReverseCranks => &[MECH, SPEED, "--angle", "--mass", "--style", "--font"],
         FigureName::InertiaForce => &[
             MECH, SPEED, "--angle", "--mass", "--style", "--font", "--mirror",
         ],
@@ -254,6 +256,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         FigureName::TurningMoment => turning::build(&ctx),
         FigureName::InertiaForce => inertia::build(&ctx),
         FigureName::PrimarySecondary => unbalanced::build(&ctx),
+        FigureName::DirectReverseCranks => cranks::build(&ctx),
         _ => Err(Error::Parse(format!(
             "{} is a mechanism figure, not a diagram",
             name.name()
