@@ -235,7 +235,7 @@ fn inertia_arrow(panel: &Panel, pose: &crate::Pose, f: &Forces, scale: f64) -> V
 /// the gap faces the block and T goes beside the arc's middle. Nothing at
 /// a dead centre, where T = 0.
 fn torque_arrow(c: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
-    if t == 0.0 || !(scale > 0.0) {
+    if t == 0.0 || scale.is_nan() || scale <= 0.0 {
         return Vec::new();
     }
     let radius = TORQUE_RADIUS / scale;
