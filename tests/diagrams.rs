@@ -710,11 +710,13 @@ fn diagrams_match_their_reviewed_snapshots() {
 
 #[test]
 fn every_curve_is_within_the_tolerance_in_the_metadata() {
-    // The turning-moment diagram's torque is not yet written here from
-    // formulas of the test's own (its values are held by tests/dynamics.rs).
+    // The turning-moment diagram's torque, and so the flywheel's energy
+    // and speed, is not yet written here from formulas of the test's own
+    // (its values are held by tests/dynamics.rs, the flywheel's by
+    // tests/dynamics_figures.rs).
     for name in FigureName::DIAGRAMS
         .into_iter()
-        .filter(|n| *n != FigureName::TurningMoment)
+        .filter(|n| ![FigureName::TurningMoment, FigureName::Flywheel].contains(n))
     {
         let svg = to_svg(&figure(name));
         let worst = measure_figure(name, &svg);

@@ -290,3 +290,70 @@ fn on_the_line_of_stroke_primary_and_secondary_sum_to_the_series_beside_the_exac
         }
     }
 }
+
+/// The on-curve points (world) of the path `id`: the ends of its
+/// segments, mapped back through its panel's map.
+fn path_points(svg: &str, panel: &str, id: &str) -> Vec<(f64, f64)> {
+    let map = panel_map(svg, panel);
+    let d = attr(svg, id, "d").unwrap();
+    let mut out = Vec::new();
+    for part in d.split(['M', 'L', 'C']).filter(|p| !p.trim().is_empty()) {
+        let v: Vec<f64> = part
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        // The last pair of each command is the point on the curve.
+        if let [.., x, y] = v[..] {
+            out.push(to_world(&map, (x, y)));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_flywheel_holds_the_speed_within_its_coefficient() {
+    for (cs, r, l) in [(0.02, 0.5, 3.0), (0.3, 0.5, 3.0), (0.05, 0.5, 1.2)] {
+        let mut o = FigureOptions::default();
+        o.fluctuation = Some(cs);
+        o.mechanism = Some(SliderCrank::in_line(r, l).unwrap());
+        let svg = to_svg(&FigureName::Flywheel.figure(&o).unwrap());
+        let meta = metadata(&svg);
+        let de = meta["flywheel"]["fluctuation"].as_f64().unwrap();
+        let inertia = meta["flywheel"]["inertia"].as_f64().unwrap();
+        let w = omega();
+        // I = ΔE / (ω² C_s).
+        assert!((inertia * w * w * cs - de).abs() <= 1e-10 * de, "{cs}");
+        // Every drawn speed ω(θ) stores ½ I (ω² − ω_min²) between 0 and
+        // ΔE, and the curve reaches both.
+        let least = w * (1.0 - 0.5 * cs);
+        let stored: Vec<f64> = path_points(&svg, "panel-speed", "curve-speed")
+            .iter()
+            .map(|&(_, speed)| 0.5 * inertia * (speed * speed - least * least))
+            .collect();
+        let lo = stored.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = stored.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        assert!(lo > -0.01 * de && lo < 0.02 * de, "{cs}: {lo} of {de}");
+        assert!(hi < 1.01 * de && hi > 0.98 * de, "{cs}: {hi} of {de}");
+        // The energy curve rises from 0 to ΔE as well.
+        let energy = path_points(&svg, "panel-energy-above-least", "curve-energy-above-least");
+        let top = energy.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+        let bottom = energy.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        assert!(
+            bottom > -0.01 * de && top < 1.01 * de && top > 0.98 * de,
+            "{cs}"
+        );
+        let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+        let text = bare(&read_text(&svg));
+        let want = bare(&format!(
+            "ωmin = {} to ωmax = {} rad/s",
+            four(least),
+            four(w * (1.0 + 0.5 * cs))
+        ));
+        assert!(text.contains(&want), "{want} in {text}");
+    }
+    for bad in [0.0, 2.0, -0.1, f64::NAN] {
+        let mut o = FigureOptions::default();
+        o.fluctuation = Some(bad);
+        assert!(FigureName::Flywheel.figure(&o).is_err(), "{bad}");
+    }
+}

@@ -97,6 +97,11 @@ pub enum FigureName {
     /// radius r/4n at ±2θ, their components on the line of stroke summing
     /// to the force.
     DirectReverseCranks,
+    /// The flywheel: the energy stored above its least over the turn,
+    /// rising by the fluctuation of energy ΔE, and the crank speed with
+    /// the flywheel I = ΔE / (ω² C_s) of a coefficient of fluctuation of
+    /// speed C_s.
+    Flywheel,
 }
 
 impl FigureName {
@@ -112,7 +117,7 @@ impl FigureName {
     ];
 
     /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 20] = [
+    pub const DIAGRAMS: [FigureName; 21] = [
         FigureName::Fig61Centrodes,
         FigureName::Fig64VelocityDiagrams,
         FigureName::AccelerationDiagrams,
@@ -133,6 +138,7 @@ impl FigureName {
         FigureName::InertiaForce,
         FigureName::PrimarySecondary,
         FigureName::DirectReverseCranks,
+        FigureName::Flywheel,
     ];
 
     /// Every named figure: the scenes, then the diagrams.
@@ -185,6 +191,7 @@ impl FigureName {
             FigureName::InertiaForce => "inertia-force",
             FigureName::PrimarySecondary => "primary-secondary",
             FigureName::DirectReverseCranks => "direct-reverse-cranks",
+            FigureName::Flywheel => "flywheel",
         }
     }
 
@@ -315,7 +322,8 @@ impl FigureName {
             | FigureName::NgFig8Forces
             | FigureName::CurveBenchmark
             | FigureName::TurningMoment
-            | FigureName::PrimarySecondary => 0.0,
+            | FigureName::PrimarySecondary
+            | FigureName::Flywheel => 0.0,
         }
     }
 
@@ -376,6 +384,7 @@ impl FigureName {
             FigureName::InertiaForce => (760.0, 760.0),
             FigureName::PrimarySecondary => (900.0, 760.0),
             FigureName::DirectReverseCranks => (900.0, 660.0),
+            FigureName::Flywheel => (900.0, 760.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }
@@ -393,7 +402,8 @@ impl FigureName {
     /// The scene of a mechanism figure with `options` applied, the scene
     /// [`FigureName::figure`] draws; `None` for a diagram, which has no
     /// scene. Errors as [`FigureName::figure`] for an option a mechanism
-    /// figure does not use (`--data`, `--fit`, `--mass`) or a bad value.
+    /// figure does not use (`--data`, `--fit`, `--mass`, `--fluctuation`) or a
+    /// bad value.
     pub fn scene_with(&self, options: &FigureOptions) -> Result<Option<Scene>> {
         let Some(mut scene) = self.scene() else {
             return Ok(None);
@@ -401,7 +411,7 @@ impl FigureName {
         if let Some(bad) = options
             .given()
             .into_iter()
-            .find(|o| *o == "--data" || *o == "--fit" || *o == "--mass")
+            .find(|o| ["--data", "--fit", "--mass", "--fluctuation"].contains(o))
         {
             return Err(Error::Parse(format!("{} does not use {bad}", self.name())));
         }

@@ -102,6 +102,9 @@ pub struct FigureOptions {
     /// §35 engine in feet); default 10 ([`crate::dynamics::EXAMPLE_MASS`]).
     /// The figures that draw the inertia force need it positive.
     pub mass: Option<f64>,
+    /// The coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω of
+    /// the `flywheel` figure, 0 < C_s < 2 (default 0.02).
+    pub fluctuation: Option<f64>,
     /// Whether the mechanism is drawn mirrored, the cylinder on the left
     /// (default: the seed's, mirrored for the textbook, not for Ng); the
     /// mechanism figures and the diagrams drawn on the mechanism
@@ -155,6 +158,9 @@ impl FigureOptions {
         }
         if self.mass.is_some() {
             v.push("--mass");
+        }
+        if self.fluctuation.is_some() {
+            v.push("--fluctuation");
         }
         v
     }

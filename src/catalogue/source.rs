@@ -64,6 +64,10 @@ impl FigureName {
                 BOOK,
                 "§35, eq. (3): its two terms as the direct and reverse cranks of the balancing of the reciprocating parts (docs/dynamics.md §6); no figure in either seed",
             ),
+            FigureName::Flywheel => (
+                BOOK,
+                "§35–37 (the piston’s acceleration) with Ng’s T = F · OM, carried over a turn to the fluctuation of energy and the flywheel (docs/dynamics.md §4–5); no figure in either seed",
+            ),
             FigureName::Inversion1Engine => {
                 (BOOK, "§34, the first inversion of the chain of Fig. 60")
             }
@@ -164,6 +168,9 @@ impl FigureName {
             }
             FigureName::DirectReverseCranks => {
                 "The §35 engine at 30° and 250 rpm with a 10 slug reciprocating mass: the primary force as the resultant of the direct and reverse cranks at ±θ, each carrying m/2 at r, the secondary as that of cranks at ±2θ, each m/2 at r/4n turning at 2ω, and the two on the line of stroke against the exact inertia force."
+            }
+            FigureName::Flywheel => {
+                "The turning-moment figure’s engine: the energy stored above its least over the turn, rising by ΔE, and the crank speed with the flywheel I = ΔE/(ω² C_s) for C_s = 0.02, between ω_min and ω_max."
             }
             FigureName::SlotConvergence => {
                 "The block in a slot of radius ρ against the straight slot: the largest differences of position, velocity and acceleration for ρ = 1 to 10¹⁵, log–log."

@@ -23,7 +23,7 @@ pub struct FigureArgs {
     /// inversion-2-rotating-block, inversion-3-oscillating-cylinder,
     /// inversion-4-hand-pump, slot-convergence. Engine dynamics (--mass):
     /// turning-moment, inertia-force, primary-secondary,
-    /// direct-reverse-cranks
+    /// direct-reverse-cranks, flywheel (--fluctuation)
     #[arg(value_name = "NAME")]
     pub name: FigureName,
     #[command(flatten)]
@@ -97,6 +97,11 @@ pub struct FigureFlags {
     /// force unit (slug with ft and lbf, kg with m and N) [default: 10]
     #[arg(long, value_name = "M", allow_hyphen_values = true)]
     pub mass: Option<f64>,
+    /// Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω of the
+    /// flywheel figure, which draws the flywheel I = ΔE/(ω² C_s) it needs
+    /// [default: 0.02]
+    #[arg(long, value_name = "CS", allow_hyphen_values = true)]
+    pub fluctuation: Option<f64>,
     #[command(flatten)]
     pub units: UnitArgs,
     /// Letters of a mechanism figure: textbook (C, B, A, D, E) or ng (O,
@@ -223,6 +228,7 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     options.force_unit = args.units.force.clone();
     options.notation = args.notation;
     options.mass = args.mass;
+    options.fluctuation = args.fluctuation;
     options.mirror = match (args.mirror, args.no_mirror) {
         (true, _) => Some(true),
         (_, true) => Some(false),

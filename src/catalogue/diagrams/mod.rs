@@ -12,6 +12,7 @@ mod convergence;
 mod coupler;
 mod cranks;
 mod data;
+mod flywheel;
 mod forces;
 mod incline;
 mod inertia;
@@ -187,6 +188,15 @@ pub(crate) fn uses(name: FigureName) -> &'static [&'static str] {
         FigureName::CurveBenchmark => &["--data", "--style", "--font"],
         FigureName::TurningMoment => &[MECH, SPEED, "--data", "--mass", "--style", "--font"],
         FigureName::PrimarySecondary => &[MECH, SPEED, "--mass", "--style", "--font"],
+        FigureName::Flywheel => &[
+            MECH,
+            SPEED,
+            "--data",
+            "--mass",
+            "--fluctuation",
+            "--style",
+            "--font",
+        ],
         FigureName::DirectReverseCranks => &[MECH, SPEED, "--angle", "--mass", "--style", "--font"],
         FigureName::InertiaForce => &[
             MECH, SPEED, "--angle", "--mass", "--style", "--font", "--mirror",
@@ -257,6 +267,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         FigureName::InertiaForce => inertia::build(&ctx),
         FigureName::PrimarySecondary => unbalanced::build(&ctx),
         FigureName::DirectReverseCranks => cranks::build(&ctx),
+        FigureName::Flywheel => flywheel::build(&ctx),
         _ => Err(Error::Parse(format!(
             "{} is a mechanism figure, not a diagram",
             name.name()
