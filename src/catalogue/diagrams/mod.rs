@@ -38,6 +38,7 @@ use crate::{Angle, Pose, SliderCrank, Unit, Units};
 use serde_json::{Map, Value, json};
 
 pub(crate) use data::Table;
+pub(crate) use flywheel::DEFAULT_COEFFICIENT;
 
 /// Radians per degree: the curves' parameter is θ in degrees.
 pub(crate) const PER_DEGREE: f64 = std::f64::consts::PI / 180.0;
