@@ -12,7 +12,7 @@ use super::{Ctx, Sheet, against_angle, extent, positive_mass, short, sig};
 use crate::Pose;
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure};
+use crate::figure::{Dash, Figure, PageRect};
 use crate::geom::Point;
 
 /// The four forces of panel (a) at a pose, each with its derivative per
@@ -56,30 +56,43 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let mass = positive_mass(ctx)?;
     let m = ctx.mechanism;
     let k = mass * m.crank() * ctx.omega * ctx.omega;
-    let f_unit = ctx.units.force();
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, false);
-    let theta =
-        || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0) };
     let tall = page.height() - 16.0 - 24.0 - 72.0;
     let (a_height, b_height) = (0.62 * tall, 0.38 * tall);
+    sheet.plot(forces_plot(ctx, k, ctx.band(16.0, a_height))?);
+    let (plot, worst) = remainder_plot(ctx, k, ctx.band(16.0 + a_height + 24.0, b_height))?;
+    sheet.plot(plot);
+    sheet.meta(
+        "unbalanced",
+        serde_json::json!({"mass": mass, "m_r_omega2": k, "largest_remainder": worst}),
+    );
+    sheet.notes(
+        Point::new(20.0, page.height() - 56.0),
+        &notes(ctx, mass, k, worst),
+    );
+    Ok(sheet.finish())
+}
 
-    // (a) The four forces.
+/// The crank-angle axis.
+fn theta() -> Result<Axis> {
+    Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0)
+}
+
+/// (a) The four forces of [`forces`] against θ, `k` = m r ω², in `rect`.
+fn forces_plot(ctx: &Ctx, k: f64, rect: PageRect) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let values = |p: &Pose| forces(p).map(|f| f.0);
     let (_, high) = extent(&m, |p| {
-        forces(p)
-            .iter()
-            .map(|f| f.0)
-            .fold(f64::NEG_INFINITY, f64::max)
+        values(p).into_iter().fold(f64::NEG_INFINITY, f64::max)
     });
-    let (low, _) = extent(&m, |p| {
-        forces(p).iter().map(|f| f.0).fold(f64::INFINITY, f64::min)
-    });
+    let (low, _) = extent(&m, |p| values(p).into_iter().fold(f64::INFINITY, f64::min));
     let mut plot = Plot::new(
         "unbalanced",
-        ctx.band(16.0, a_height),
+        rect,
         theta()?,
         Axis::nice(
-            &format!("force on the frame along the stroke ({f_unit})"),
+            &format!("force on the frame along the stroke ({})", ctx.units.force()),
             k * low,
             k * high,
         )?,
@@ -96,20 +109,23 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         });
         plot.curve(id, &[(&curve, 0.0..=360.0)], dash, Some(legend))?;
     }
-    sheet.plot(plot);
+    Ok(plot)
+}
 
-    // (b) The remainder.
+/// (b) The exact force less the two terms against θ, in `rect`, and the
+/// largest of it over the turn (721 angles).
+fn remainder_plot(ctx: &Ctx, k: f64, rect: PageRect) -> Result<(Plot, f64)> {
     let remainder = |p: &Pose| {
         let [_, _, sum, exact] = forces(p);
         (k * (exact.0 - sum.0), k * (exact.1 - sum.1))
     };
-    let (rlo, rhi) = extent(&m, |p| remainder(p).0);
+    let (rlo, rhi) = extent(&ctx.mechanism, |p| remainder(p).0);
     let mut plot = Plot::new(
         "remainder",
-        ctx.band(16.0 + a_height + 24.0, b_height),
+        rect,
         theta()?,
         Axis::nice(
-            &format!("exact − (primary + secondary) ({f_unit})"),
+            &format!("exact − (primary + secondary) ({})", ctx.units.force()),
             rlo.min(0.0),
             rhi.max(0.0),
         )?,
@@ -119,25 +135,14 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     .with_caption(
         "(b) What the two terms leave out: the higher harmonics, of the order of *m\u{a0}r*ω²/*n*³",
     );
-    let curve = against_angle(m, remainder);
+    let curve = against_angle(ctx.mechanism, remainder);
     plot.curve(
         "curve-remainder",
         &[(&curve, 0.0..=360.0)],
         Dash::Solid,
         None,
     )?;
-    sheet.plot(plot);
-
-    let worst = rlo.abs().max(rhi.abs());
-    sheet.meta(
-        "unbalanced",
-        serde_json::json!({"mass": mass, "m_r_omega2": k, "largest_remainder": worst}),
-    );
-    sheet.notes(
-        Point::new(20.0, page.height() - 56.0),
-        &notes(ctx, mass, k, worst),
-    );
-    Ok(sheet.finish())
+    Ok((plot, rlo.abs().max(rhi.abs())))
 }
 
 /// The notes: the engine, the amplitudes and the largest remainder.
