@@ -163,12 +163,19 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
 
 /// The slider block's extent along x in the panel, world units.
 fn block_extent(panel: &Panel) -> Option<(f64, f64)> {
+    block_span(panel, |p| p.x)
+}
+
+/// The least and greatest of `coordinate` over the slider block's
+/// corners in the panel.
+fn block_span(panel: &Panel, coordinate: impl Fn(&Point) -> f64) -> Option<(f64, f64)> {
     panel.items().iter().find_map(|item| match &item.shape {
         Shape::Block { points } => Some(
             points
                 .iter()
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                    (lo.min(p.x), hi.max(p.x))
+                .map(&coordinate)
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(v), hi.max(v))
                 }),
         ),
         _ => None,
@@ -176,10 +183,12 @@ fn block_extent(panel: &Panel) -> Option<(f64, f64)> {
 }
 
 /// The inertia force at the cross-head: an arrow of the length CG (the
-/// drawing's scale is 1 length unit to m ω² force units) on the line of
-/// stroke, pulling the block from one face or pushing on it, on the
+/// drawing's scale is 1 length unit to m ω² force units) along the line
+/// of stroke, pulling the block from one face or pushing on it, on the
 /// crank's side of the block where it keeps clear of the crank centre's
-/// torque arrow, else on the far side, within the panel.
+/// torque arrow, else on the far side, within the panel; set off the
+/// line of stroke by a quarter of the block's height on the side away
+/// from the rod, which near the dead centres lies on that line.
 fn inertia_arrow(panel: &Panel, pose: &crate::Pose, f: &Forces, scale: f64) -> Vec<Item> {
     let (a, c) = (pose.a(), pose.c());
     let length = f.points.cg().abs();
@@ -205,7 +214,9 @@ fn inertia_arrow(panel: &Panel, pose: &crate::Pose, f: &Forces, scale: f64) -> V
     } else {
         (far, -toward)
     };
-    let face = Point::new(face, a.y);
+    let quarter = block_span(panel, |p| p.y).map_or(0.0, |(lo, hi)| 0.25 * (hi - lo));
+    let away = if pose.b().y > a.y { -1.0 } else { 1.0 };
+    let face = Point::new(face, a.y + away * quarter);
     let along = Vector::new(out * length, 0.0);
     // Pulled from the face where the force points away from the block on
     // this side, pushed on it where it points into the block.
