@@ -980,3 +980,48 @@ fn embed_fonts_is_refused_for_png_and_pdf_and_writes_nothing() {
         assert!(!path.exists(), "{file} written");
     }
 }
+
+/// The engine dynamics figures refuse a mass or a coefficient they cannot
+/// draw, and a mechanism figure refuses both, in one line, writing
+/// nothing.
+#[test]
+fn dynamics_figures_refuse_bad_masses_and_coefficients_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("x.png");
+    let out_file = path.to_str().unwrap();
+    for args in [
+        vec!["figure", "inertia-force", "--mass", "0"],
+        vec!["figure", "direct-reverse-cranks", "--mass", "-3"],
+        vec!["figure", "primary-secondary", "--mass", "nan"],
+        vec!["figure", "flywheel", "--fluctuation", "2"],
+        vec!["figure", "flywheel", "--fluctuation", "0"],
+        vec!["figure", "fig-65-klein", "--mass", "2"],
+        vec!["figure", "rod-motion", "--fluctuation", "0.1"],
+    ] {
+        let mut args = args.clone();
+        args.extend(["--out", out_file]);
+        let out = run(&args);
+        assert!(!out.status.success(), "{args:?}");
+        let e = String::from_utf8(out.stderr).unwrap();
+        assert_eq!(e.lines().count(), 1, "{args:?}: {e}");
+        assert!(e.starts_with("slider-crank: "), "{e}");
+        assert!(e.contains("mass") || e.contains("fluctuation"), "{e}");
+        assert!(!path.exists(), "{args:?} wrote a file");
+    }
+    let out = run(&[
+        "figure",
+        "flywheel",
+        "--mass",
+        "2.5",
+        "--fluctuation",
+        "0.05",
+        "--out",
+        out_file,
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(path.exists());
+}

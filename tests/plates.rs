@@ -428,7 +428,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
-const FIGURES: [&str; 10] = [
+const FIGURES: [&str; 11] = [
     "fig-62-displacement",
     "fig-63-velocity",
     "fig-65-klein",
@@ -439,6 +439,7 @@ const FIGURES: [&str; 10] = [
     "fig-61-centrodes",
     "fig-64-velocity-diagrams",
     "coupler-curves",
+    "inertia-force",
 ];
 
 /// Figures held to rule 5.
@@ -727,6 +728,32 @@ fn chain_plates_are_clean() {
         let failures = check(&Plate::read(&svg), false);
         assert!(failures.is_empty(), "{figure}: {failures:?}");
     }
+}
+
+/// The engine dynamics figures that are not drawn on the mechanism:
+/// `primary-secondary` and `flywheel` once per mechanism of
+/// [`mechanisms`], `direct-reverse-cranks` at each of its poses of
+/// [`poses`].
+const DYNAMICS_FIGURES: [&str; 3] = ["primary-secondary", "flywheel", "direct-reverse-cranks"];
+
+#[test]
+fn dynamics_plates_are_clean() {
+    let mut jobs = Vec::new();
+    for figure in DYNAMICS_FIGURES {
+        for m in mechanisms() {
+            if figure != "direct-reverse-cranks" {
+                jobs.push((figure, m, None));
+                continue;
+            }
+            for a in poses(&m.1) {
+                jobs.push((figure, m.clone(), Some(a)));
+            }
+        }
+    }
+    let outcomes = sweep(&jobs);
+    let text = report(&outcomes);
+    println!("{text}({} plates)", outcomes.len());
+    assert!(outcomes.iter().all(|o| o.failures.is_empty()), "{text}");
 }
 
 // ------------------------------------------------ the checker, proven to fail

@@ -82,6 +82,26 @@ pub enum FigureName {
     /// Ng's T = F · OM over a turn) with its mean line and the areas
     /// between them, and the flywheel's energy diagram.
     TurningMoment,
+    /// The inertia force of the reciprocating parts on the mechanism:
+    /// Klein's CG read as the piston's acceleration and scaled by m ω² to
+    /// the force, drawn at the cross-head against the acceleration,
+    /// resolved along the rod and on the guides, and the crank effort
+    /// T = F · OM through Ng's torque line.
+    InertiaForce,
+    /// The primary and secondary unbalanced forces of the reciprocating
+    /// parts (m r ω² cos θ, m r ω² cos 2θ / n), their sum and the exact
+    /// inertia force against θ, and what the two terms leave out.
+    PrimarySecondary,
+    /// The direct and reverse crank method: the primary force as the
+    /// resultant of cranks at ±θ, the secondary as that of cranks of
+    /// radius r/4n at ±2θ, their components on the line of stroke summing
+    /// to the force.
+    DirectReverseCranks,
+    /// The flywheel: the energy stored above its least over the turn,
+    /// rising by the fluctuation of energy ΔE, and the crank speed with
+    /// the flywheel I = ΔE / (ω² C_s) of a coefficient of fluctuation of
+    /// speed C_s.
+    Flywheel,
 }
 
 crate::error::parse_by_name!(FigureName);
@@ -99,7 +119,7 @@ impl FigureName {
     ];
 
     /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 17] = [
+    pub const DIAGRAMS: [FigureName; 21] = [
         FigureName::Fig61Centrodes,
         FigureName::Fig64VelocityDiagrams,
         FigureName::AccelerationDiagrams,
@@ -117,6 +137,10 @@ impl FigureName {
         FigureName::Inversion4HandPump,
         FigureName::SlotConvergence,
         FigureName::TurningMoment,
+        FigureName::InertiaForce,
+        FigureName::PrimarySecondary,
+        FigureName::DirectReverseCranks,
+        FigureName::Flywheel,
     ];
 
     /// Every named figure: the scenes, then the diagrams.
@@ -166,6 +190,10 @@ impl FigureName {
             FigureName::Inversion4HandPump => "inversion-4-hand-pump",
             FigureName::SlotConvergence => "slot-convergence",
             FigureName::TurningMoment => "turning-moment",
+            FigureName::InertiaForce => "inertia-force",
+            FigureName::PrimarySecondary => "primary-secondary",
+            FigureName::DirectReverseCranks => "direct-reverse-cranks",
+            FigureName::Flywheel => "flywheel",
         }
     }
 
@@ -282,6 +310,7 @@ impl FigureName {
             FigureName::Fig64VelocityDiagrams => 50.0,
             FigureName::AccelerationDiagrams => 45.0,
             FigureName::RodMotion => 45.0,
+            FigureName::InertiaForce | FigureName::DirectReverseCranks => 30.0,
             FigureName::CouplerCurves => 40.0,
             FigureName::NgFig2Incline => 45.0,
             FigureName::Fig60Chains => 50.0,
@@ -294,7 +323,9 @@ impl FigureName {
             | FigureName::NgFig7Calibration
             | FigureName::NgFig8Forces
             | FigureName::CurveBenchmark
-            | FigureName::TurningMoment => 0.0,
+            | FigureName::TurningMoment
+            | FigureName::PrimarySecondary
+            | FigureName::Flywheel => 0.0,
         }
     }
 
@@ -352,6 +383,10 @@ impl FigureName {
             | FigureName::Inversion4HandPump => (760.0, 620.0),
             FigureName::SlotConvergence => (760.0, 560.0),
             FigureName::TurningMoment => (900.0, 760.0),
+            FigureName::InertiaForce => (760.0, 760.0),
+            FigureName::PrimarySecondary => (900.0, 760.0),
+            FigureName::DirectReverseCranks => (900.0, 660.0),
+            FigureName::Flywheel => (900.0, 760.0),
         };
         Page::new(w, h, 16.0).expect("catalogue pages are valid")
     }
@@ -369,7 +404,8 @@ impl FigureName {
     /// The scene of a mechanism figure with `options` applied, the scene
     /// [`FigureName::figure`] draws; `None` for a diagram, which has no
     /// scene. Errors as [`FigureName::figure`] for an option a mechanism
-    /// figure does not use (`--data`, `--fit`) or a bad value.
+    /// figure does not use (`--data`, `--fit`, `--mass`, `--fluctuation`) or a
+    /// bad value.
     pub fn scene_with(&self, options: &FigureOptions) -> Result<Option<Scene>> {
         let Some(mut scene) = self.scene() else {
             return Ok(None);
@@ -377,7 +413,7 @@ impl FigureName {
         if let Some(bad) = options
             .given()
             .into_iter()
-            .find(|o| *o == "--data" || *o == "--fit")
+            .find(|o| ["--data", "--fit", "--mass", "--fluctuation"].contains(o))
         {
             return Err(Error::Parse(format!("{} does not use {bad}", self.name())));
         }

@@ -97,6 +97,16 @@ pub struct FigureOptions {
     pub force_unit: Option<Unit>,
     /// The letters of a mechanism figure (default: the seed's).
     pub notation: Option<Notation>,
+    /// The reciprocating mass m (piston and cross-head) of the engine
+    /// dynamics figures (`turning-moment`, `inertia-force`,
+    /// `primary-secondary`, `direct-reverse-cranks`), in the unit that
+    /// makes mass × length/s² the force unit (slug, lbf·s²/ft, for the
+    /// §35 engine in feet); default 10 ([`crate::dynamics::EXAMPLE_MASS`]).
+    /// The figures that draw the inertia force need it positive.
+    pub mass: Option<f64>,
+    /// The coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω of
+    /// the `flywheel` figure, 0 < C_s < 2 (default 0.02).
+    pub fluctuation: Option<f64>,
     /// Whether the mechanism is drawn mirrored, the cylinder on the left
     /// (default: the seed's, mirrored for the textbook, not for Ng); the
     /// mechanism figures and the diagrams drawn on the mechanism
@@ -149,6 +159,12 @@ impl FigureOptions {
         }
         if self.mirror.is_some() {
             v.push("--mirror");
+        }
+        if self.mass.is_some() {
+            v.push("--mass");
+        }
+        if self.fluctuation.is_some() {
+            v.push("--fluctuation");
         }
         v
     }

@@ -43,6 +43,10 @@ struct File {
     force_unit: Option<Spanned<Unit>>,
     coupler: Option<Spanned<f64>>,
     tolerance: Option<Spanned<f64>>,
+    /// The reciprocating mass of the engine dynamics diagrams.
+    mass: Option<Spanned<f64>>,
+    /// The coefficient of fluctuation of speed of `flywheel`.
+    fluctuation: Option<Spanned<f64>>,
 }
 
 /// A crank angle in a scene file: a number of degrees. A text such as
@@ -378,6 +382,25 @@ fn check_name(name: &str) -> Result<()> {
     }
 }
 
+/// Refuses the keys of the engine dynamics diagrams (`mass`,
+/// `fluctuation`) in a mechanism figure's file, at their line.
+fn no_dynamics(text: &str, file: &File) -> Result<()> {
+    let keys = [
+        ("mass", file.mass.as_ref().map(|m| m.span())),
+        ("fluctuation", file.fluctuation.as_ref().map(|c| c.span())),
+    ];
+    match keys.into_iter().find_map(|(k, s)| s.map(|s| (k, s))) {
+        Some((key, span)) => Err(located(
+            text,
+            span,
+            format!(
+                "`{key}` is a key of the engine dynamics diagrams (turning-moment, inertia-force, primary-secondary, direct-reverse-cranks, flywheel), not of a mechanism figure"
+            ),
+        )),
+        None => Ok(()),
+    }
+}
+
 fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
     // cannot fail: a diagram's file returned above; a mechanism figure has a scene.
     #[allow(clippy::expect_used)]
@@ -388,6 +411,7 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         None => Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::from_degrees(45.0)?)
             .with_layers([Layer::Mechanism]),
     };
+    no_dynamics(text, &file)?;
     if let Some(n) = &file.name {
         at(text, n.span(), check_name(n.get_ref()))?;
         scene = scene.with_name(n.get_ref().clone());
@@ -574,6 +598,28 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
         )?;
         options.mirror = Some(*m.get_ref());
     }
+    if let Some(m) = &file.mass {
+        refuse(
+            FigureOptions {
+                mass: Some(*m.get_ref()),
+                ..FigureOptions::default()
+            },
+            "mass",
+            m.span(),
+        )?;
+        options.mass = Some(*m.get_ref());
+    }
+    if let Some(c) = &file.fluctuation {
+        refuse(
+            FigureOptions {
+                fluctuation: Some(*c.get_ref()),
+                ..FigureOptions::default()
+            },
+            "fluctuation",
+            c.span(),
+        )?;
+        options.fluctuation = Some(*c.get_ref());
+    }
     options.style = file.style;
     options.font = file.font;
     options.title = file.title.clone();
@@ -730,7 +776,7 @@ mod tests {
             assert!(keys.iter().any(|x| x == k), "{k} missing from {keys:?}");
         }
         assert!(!keys.iter().any(|x| x.starts_with("angle.")), "{keys:?}");
-        assert_eq!(keys.len(), 29, "{keys:?}");
+        assert_eq!(keys.len(), 31, "{keys:?}");
     }
 
     #[test]

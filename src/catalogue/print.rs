@@ -271,6 +271,23 @@ pub(crate) fn diagram(name: FigureName) -> String {
             &format!("mirror = {}", !name.is_ng()),
         );
     }
+    if uses.contains(&"--mass") {
+        key(
+            &mut out,
+            "Reciprocating mass m of the engine, force·s²/length (slug with lbf and ft), positive.",
+            &format!("mass = {}", number(crate::dynamics::EXAMPLE_MASS)),
+        );
+    }
+    if uses.contains(&"--fluctuation") {
+        key(
+            &mut out,
+            "Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω, above 0 and below 2.",
+            &format!(
+                "fluctuation = {}",
+                number(super::diagrams::DEFAULT_COEFFICIENT)
+            ),
+        );
+    }
     key(&mut out, TITLE, "# title = \"…\"");
     if uses.contains(&MECH) {
         mechanism_table(&mut out, &name.mechanism());

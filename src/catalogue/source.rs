@@ -52,6 +52,22 @@ impl FigureName {
                 BOOK,
                 "§35–37 (the piston’s acceleration, Klein’s CG) with Ng’s T = F · OM, carried over a turn by standard engine dynamics (docs/dynamics.md); no figure in either seed",
             ),
+            FigureName::InertiaForce => (
+                BOOK,
+                "§36, Fig. 65 (Klein’s CG, the piston’s acceleration to the scale ω²) with Ng’s T = F · OM (eq. 2), the inertia force by d’Alembert (docs/dynamics.md §2); no figure in either seed",
+            ),
+            FigureName::PrimarySecondary => (
+                BOOK,
+                "§35, eq. (3) and its table of cos θ + cos 2θ / n, carried on by the balancing of the reciprocating parts (docs/dynamics.md §6); no figure in either seed",
+            ),
+            FigureName::DirectReverseCranks => (
+                BOOK,
+                "§35, eq. (3): its two terms as the direct and reverse cranks of the balancing of the reciprocating parts (docs/dynamics.md §6); no figure in either seed",
+            ),
+            FigureName::Flywheel => (
+                BOOK,
+                "§35–37 (the piston’s acceleration) with Ng’s T = F · OM, carried over a turn to the fluctuation of energy and the flywheel (docs/dynamics.md §4–5); no figure in either seed",
+            ),
             FigureName::Inversion1Engine => {
                 (BOOK, "§34, the first inversion of the chain of Fig. 60")
             }
@@ -143,6 +159,18 @@ impl FigureName {
             }
             FigureName::TurningMoment => {
                 "The §35 engine at 250 rpm with a 10 slug reciprocating mass and a steam indicator diagram: the torque on the crank against θ, its mean line and the areas between them, and the energy stored in the flywheel with its fluctuation ΔE."
+            }
+            FigureName::InertiaForce => {
+                "The §35 engine at 30° and 250 rpm with a 10 slug reciprocating mass: Klein’s construction, CG read as the inertia force m ω² CG and drawn at the cross-head against the acceleration; the force resolved along the rod and on the guides; the crank effort T = F · OM through Ng’s OM (= CE)."
+            }
+            FigureName::PrimarySecondary => {
+                "The §35 engine at 250 rpm with a 10 slug reciprocating mass: the primary force m r ω² cos θ, the secondary m r ω² cos 2θ / n, their sum and the exact inertia force against θ, and the exact force less the two terms."
+            }
+            FigureName::DirectReverseCranks => {
+                "The §35 engine at 30° and 250 rpm with a 10 slug reciprocating mass: the primary force as the resultant of the direct and reverse cranks at ±θ, each carrying m/2 at r, the secondary as that of cranks at ±2θ, each m/2 at r/4n turning at 2ω, and the two on the line of stroke against the exact inertia force."
+            }
+            FigureName::Flywheel => {
+                "The turning-moment figure’s engine: the energy stored above its least over the turn, rising by ΔE, and the crank speed with the flywheel I = ΔE/(ω² C_s) for C_s = 0.02, between ω_min and ω_max."
             }
             FigureName::SlotConvergence => {
                 "The block in a slot of radius ρ against the straight slot: the largest differences of position, velocity and acceleration for ρ = 1 to 10¹⁵, log–log."

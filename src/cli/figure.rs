@@ -21,7 +21,9 @@ pub struct FigureArgs {
     /// ng-fig-7-calibration, ng-fig-8-forces, curve-benchmark. The chain of
     /// Fig. 60: fig-60-chains, inversion-1-engine,
     /// inversion-2-rotating-block, inversion-3-oscillating-cylinder,
-    /// inversion-4-hand-pump, slot-convergence
+    /// inversion-4-hand-pump, slot-convergence. Engine dynamics (--mass):
+    /// turning-moment, inertia-force, primary-secondary,
+    /// direct-reverse-cranks, flywheel (--fluctuation)
     #[arg(value_name = "NAME")]
     pub name: FigureName,
     #[command(flatten)]
@@ -89,6 +91,17 @@ pub struct FigureFlags {
     /// [default: both]
     #[arg(long, value_name = "FIT")]
     pub fit: Option<Fit>,
+    /// Reciprocating mass m of the engine dynamics figures
+    /// (turning-moment, inertia-force, primary-secondary,
+    /// direct-reverse-cranks), in the unit that makes mass × length/s² the
+    /// force unit (slug with ft and lbf, kg with m and N) [default: 10]
+    #[arg(long, value_name = "M", allow_hyphen_values = true)]
+    pub mass: Option<f64>,
+    /// Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω of the
+    /// flywheel figure, which draws the flywheel I = ΔE/(ω² C_s) it needs
+    /// [default: 0.02]
+    #[arg(long, value_name = "CS", allow_hyphen_values = true)]
+    pub fluctuation: Option<f64>,
     #[command(flatten)]
     pub units: UnitArgs,
     /// Letters of a mechanism figure: textbook (C, B, A, D, E) or ng (O,
@@ -215,6 +228,8 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     options.length_unit = args.units.length.clone();
     options.force_unit = args.units.force.clone();
     options.notation = args.notation;
+    options.mass = args.mass;
+    options.fluctuation = args.fluctuation;
     options.mirror = match (args.mirror, args.no_mirror) {
         (true, _) => Some(true),
         (_, true) => Some(false),

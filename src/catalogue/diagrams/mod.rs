@@ -10,12 +10,16 @@ mod centrodes;
 mod chains;
 mod convergence;
 mod coupler;
+mod cranks;
+mod flywheel;
 mod forces;
 mod incline;
+mod inertia;
 mod inversions;
 mod rod;
 mod sketch;
 mod turning;
+mod unbalanced;
 mod velocity;
 
 use super::{FigureName, FigureOptions};
@@ -35,6 +39,7 @@ use crate::{Angle, Pose, SliderCrank, Unit, Units};
 use serde_json::{Map, Value, json};
 
 pub(crate) use crate::csv::Table;
+pub(crate) use flywheel::DEFAULT_COEFFICIENT;
 
 /// Radians per degree: the curves' parameter is θ in degrees.
 pub(crate) const PER_DEGREE: f64 = std::f64::consts::PI / 180.0;
@@ -108,7 +113,27 @@ impl Ctx<'_> {
     }
 }
 
-/// Which options each diagram uses.
+/// The reciprocating mass of a figure that draws the inertia force of
+/// the reciprocating parts: the one asked for (`--mass`), else the
+/// example engine's ([`crate::dynamics::EXAMPLE_MASS`]). Errors for a
+/// mass that is not positive and finite: with none there is no force to
+/// draw, and its scale m ω² would be zero.
+pub(crate) fn positive_mass(ctx: &Ctx) -> Result<f64> {
+    let m = ctx.options.mass.unwrap_or(crate::dynamics::EXAMPLE_MASS);
+    if m > 0.0 && m.is_finite() {
+        Ok(m)
+    } else {
+        Err(Error::OutOfRange {
+            name: "mass",
+            value: m,
+            reason: format!(
+                "{} draws the inertia force of the reciprocating parts: give a positive, finite --mass",
+                ctx.name.name()
+            ),
+        })
+    }
+}
+
 /// The italic letter `name` labelling the point `anchor`, id `label-{id}`
 /// (placed clear of lines by the renderer).
 pub(super) fn letter(id: &str, anchor: Point, name: &str) -> Item {
@@ -163,7 +188,21 @@ pub(crate) fn uses(name: FigureName) -> &'static [&'static str] {
         FigureName::NgFig7Calibration => &["--data", "--fit", "--style", "--font"],
         FigureName::NgFig8Forces => &[MECH, "--data", "--style", "--font"],
         FigureName::CurveBenchmark => &["--data", "--style", "--font"],
-        FigureName::TurningMoment => &[MECH, SPEED, "--data", "--style", "--font"],
+        FigureName::TurningMoment => &[MECH, SPEED, "--data", "--mass", "--style", "--font"],
+        FigureName::PrimarySecondary => &[MECH, SPEED, "--mass", "--style", "--font"],
+        FigureName::Flywheel => &[
+            MECH,
+            SPEED,
+            "--data",
+            "--mass",
+            "--fluctuation",
+            "--style",
+            "--font",
+        ],
+        FigureName::DirectReverseCranks => &[MECH, SPEED, "--angle", "--mass", "--style", "--font"],
+        FigureName::InertiaForce => &[
+            MECH, SPEED, "--angle", "--mass", "--style", "--font", "--mirror",
+        ],
         _ => &[],
     }
 }
@@ -227,6 +266,10 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         FigureName::Inversion4HandPump => inversions::build(&ctx, Inversion::Slider),
         FigureName::SlotConvergence => convergence::build(&ctx),
         FigureName::TurningMoment => turning::build(&ctx),
+        FigureName::InertiaForce => inertia::build(&ctx),
+        FigureName::PrimarySecondary => unbalanced::build(&ctx),
+        FigureName::DirectReverseCranks => cranks::build(&ctx),
+        FigureName::Flywheel => flywheel::build(&ctx),
         _ => Err(Error::Parse(format!(
             "{} is a mechanism figure, not a diagram",
             name.name()

@@ -30,7 +30,8 @@ const STEP: f64 = 1e-6;
 pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
     let text = ctx.options.data.as_deref().unwrap_or(INDICATOR);
     let diagram = IndicatorDiagram::from_csv(text, BORE, "data")?;
-    Engine::new(ctx.mechanism, EXAMPLE_MASS, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
+    let mass = ctx.options.mass.unwrap_or(EXAMPLE_MASS);
+    Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
 }
 
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
@@ -121,16 +122,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let (elo, ehi) = values
         .iter()
         .fold((0.0f64, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
-    let energy = |deg: f64| -> f64 {
-        let t = deg.to_radians();
-        let Some(lobe) = tm.lobes.iter().find(|l| t <= l.to_deg.to_radians()) else {
-            return 0.0;
-        };
-        let before = lobe.energy - lobe.area;
-        let excess = |x: f64| total_torque(&engine, &phases, x) - tm.mean;
-        let from = lobe.from_deg.to_radians();
-        before + integrate(&excess, from, t.max(from), tm.tolerance)
-    };
+    let energy = |deg: f64| stored(&engine, &tm, deg);
     let mut plot = Plot::new(
         "energy",
         ctx.band(16.0 + height + 24.0, height),
@@ -170,7 +162,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 short(m.crank()), short(m.rod()),
                 // An offset engine says so (its stroke, and so its work, differ).
                 if m.offset() == 0.0 { String::new() } else { format!(", *e* = {} {}", short(m.offset()), ctx.unit()) },
-                short(ctx.rpm()), short(EXAMPLE_MASS), short(BORE),
+                short(ctx.rpm()), short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)), short(BORE),
                 if ctx.options.data.is_some() { " given (--data)" } else { " of examples/indicator.csv" },
                 u = ctx.unit(), f = ctx.units.force()
             ),
@@ -181,6 +173,20 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         ],
     );
     Ok(sheet.finish())
+}
+
+/// The energy stored in the flywheel at `deg` degrees of the turn of
+/// `tm`, E(θ) = ∫₀^θ (T − T_mean) dθ: the lobes' energy up to the one
+/// holding θ, and the integral over that one to θ (one cylinder).
+pub(super) fn stored(engine: &Engine, tm: &TurningMoment, deg: f64) -> f64 {
+    let t = deg.to_radians();
+    let Some(lobe) = tm.lobes.iter().find(|l| t <= l.to_deg.to_radians()) else {
+        return 0.0;
+    };
+    let before = lobe.energy - lobe.area;
+    let excess = |x: f64| total_torque(engine, &[0.0], x) - tm.mean;
+    let from = lobe.from_deg.to_radians();
+    before + integrate(&excess, from, t.max(from), tm.tolerance)
 }
 
 /// T on [a, b] degrees as a curve with its slope by central differences

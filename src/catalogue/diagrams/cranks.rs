@@ -1,0 +1,336 @@
+//! The direct and reverse crank method (`docs/dynamics.md` §6): (a) the
+//! primary force m r ω² cos θ as the resultant of two cranks each
+//! carrying m/2 at radius r, the direct crank at θ turning with the
+//! engine and the reverse crank at −θ turning against it; (b) the
+//! secondary force m r ω² cos 2θ / n as the resultant of two cranks each
+//! carrying m/2 at radius r/4n, at ±2θ, turning at ±2ω; (c) the two
+//! resultants on the line of stroke, head to tail, against the exact
+//! inertia force.
+//!
+//! The panels are drawn in force units (each crank as the centrifugal
+//! force of its mass), unmirrored: away from the crank is to the right.
+//! Each crank's component on the line of stroke is half its resultant;
+//! their components across it cancel.
+
+use super::{Ctx, Sheet, positive_mass, short, sig};
+use crate::diagram::Plot;
+use crate::error::Result;
+use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
+use crate::geom::{Frame, Point, Vector};
+
+/// An arrow shorter than this fraction of its panel's crank is left out
+/// (a resultant at 90° or 45°): the notes give its value, zero.
+const SHORTEST: f64 = 1e-3;
+
+/// One pair of cranks: the force each carries and the angle of the
+/// direct one, radians.
+#[derive(Clone, Copy)]
+struct Pair {
+    /// `primary` or `secondary`, for ids.
+    name: &'static str,
+    /// The force each crank's mass exerts along it, m/2 × radius × speed².
+    force: f64,
+    /// The direct crank's angle (θ or 2θ); the reverse is at minus it.
+    angle: f64,
+    /// How the angle is written (θ, 2θ).
+    written: &'static str,
+}
+
+impl Pair {
+    /// The direct crank's force as a vector.
+    fn direct(&self) -> Vector {
+        Vector::new(self.angle.cos(), self.angle.sin()) * self.force
+    }
+
+    /// The reverse crank's: the direct mirrored in the line of stroke.
+    fn reverse(&self) -> Vector {
+        let d = self.direct();
+        Vector::new(d.x, -d.y)
+    }
+
+    /// Their resultant along the line of stroke.
+    fn resultant(&self) -> f64 {
+        self.direct().x + self.reverse().x
+    }
+}
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let mass = positive_mass(ctx)?;
+    let m = ctx.mechanism;
+    let k = mass * m.crank() * ctx.omega * ctx.omega;
+    let angle = ctx.angle;
+    let (s, c) = (angle.sin(), angle.cos());
+    // 2θ from the angle's sine and cosine, exact where they are.
+    let twice = (2.0 * s * c).atan2(2.0 * c * c - 1.0);
+    let primary = Pair {
+        name: "primary",
+        force: 0.5 * k,
+        angle: s.atan2(c),
+        written: "θ",
+    };
+    let secondary = Pair {
+        name: "secondary",
+        force: 0.5 * k / m.ratio(),
+        angle: twice,
+        written: "2θ",
+    };
+    let exact = -mass * ctx.omega * ctx.omega * ctx.pose().position_acceleration();
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, true, true);
+    sheet.meta(
+        "cranks",
+        serde_json::json!({
+            "mass": mass,
+            "primary_crank_force": primary.force,
+            "secondary_crank_force": secondary.force,
+            "primary": primary.resultant(),
+            "secondary": secondary.resultant(),
+            "exact": exact,
+        }),
+    );
+    let half = 0.5 * (page.width() - 48.0);
+    // The panels' world is 3.65 × 2.6 cranks (see `pair_plot`).
+    let most = (page.height() - 16.0 - 24.0 - 140.0 - 64.0).max(120.0);
+    let tall = (half * 2.6 / 3.65 + crate::diagram::CAPTION).min(most);
+    let (pa, sa) = (
+        PageRect::new(16.0, 16.0, half, tall),
+        PageRect::new(32.0 + half, 16.0, half, tall),
+    );
+    sheet.plot(pair_plot(
+        ctx,
+        &primary,
+        pa,
+        "(a) Primary: *m*/2 at *r* on cranks at ±θ, turning at ±ω",
+    )?);
+    sheet.plot(pair_plot(
+        ctx,
+        &secondary,
+        sa,
+        "(b) Secondary: *m*/2 at *r*/4*n* on cranks at ±2θ, turning at ±2ω",
+    )?);
+    let band = ctx.band(16.0 + tall + 16.0, 140.0);
+    sheet.plot(sum_plot(ctx, &primary, &secondary, exact, band)?);
+    let top = band.y + band.height + 8.0;
+    sheet.height(top + 64.0 + 16.0);
+    sheet.notes(
+        Point::new(20.0, top),
+        &notes(ctx, mass, k, &primary, &secondary, exact),
+    );
+    Ok(sheet.finish())
+}
+
+/// A force arrow and its label at its middle, or nothing for an arrow
+/// shorter than `least`.
+fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> {
+    if (to - from).norm() <= least {
+        return Vec::new();
+    }
+    vec![
+        Item::new(
+            format!("force-{id}"),
+            Role::Force,
+            Shape::Arrow { from, to },
+        ),
+        Item::new(
+            format!("value-{id}"),
+            Role::Label,
+            Shape::Label {
+                anchor: from + (to - from) * 0.5,
+                text: RichText::parse(text),
+                size: TextSize::Small,
+            },
+        ),
+    ]
+}
+
+/// A thin line between two points.
+fn line(id: &str, role: Role, from: Point, to: Point) -> Item {
+    Item::new(
+        id,
+        role,
+        Shape::Polyline {
+            points: vec![from, to],
+            closed: false,
+        },
+    )
+}
+
+/// (a) or (b): the circle of the cranks, the line of stroke, the direct
+/// and reverse cranks with their angles, their components on the line of
+/// stroke head to tail, and the projections.
+fn pair_plot(ctx: &Ctx, pair: &Pair, rect: PageRect, caption: &str) -> Result<Plot> {
+    let f = pair.force;
+    let o = Point::origin();
+    // Room for the circle and, on its side, the resultant (up to 2f).
+    let side = if pair.resultant() >= 0.0 { 1.0 } else { -1.0 };
+    let (near, far) = (-1.35 * f * side, 2.3 * f * side);
+    let world = Frame::new(
+        Point::new(near.min(far), -1.3 * f),
+        Point::new(near.max(far), 1.3 * f),
+    );
+    let mut plot =
+        Plot::world(pair.name, rect, &world, false, ctx.tolerance, ctx.font)?.with_caption(caption);
+    let name = pair.name;
+    plot.push(Item::new(
+        format!("circle-{name}"),
+        Role::Auxiliary,
+        Shape::Circle {
+            centre: o,
+            radius: f,
+        },
+    ));
+    plot.push(
+        line(
+            &format!("line-stroke-{name}"),
+            Role::Auxiliary,
+            Point::new(-1.3 * f * side, 0.0),
+            Point::new(2.25 * f * side, 0.0),
+        )
+        .dashed(Dash::DashDot),
+    );
+    let (d, r) = (o + pair.direct(), o + pair.reverse());
+    let least = SHORTEST * f;
+    for item in arrow(&format!("{name}-direct"), o, d, "direct", least)
+        .into_iter()
+        .chain(arrow(&format!("{name}-reverse"), o, r, "reverse", least))
+    {
+        plot.push(item);
+    }
+    angle_marks(&mut plot, pair);
+    // The components along the stroke, head to tail, and the projections.
+    let foot = Point::new(d.x, 0.0);
+    let tip = Point::new(pair.resultant(), 0.0);
+    if (d - foot).norm() > least {
+        plot.push(
+            line(&format!("projection-{name}"), Role::Construction, d, r).dashed(Dash::Dashed),
+        );
+    }
+    for (id, from, to) in [("direct", o, foot), ("reverse", foot, tip)] {
+        if (to - from).norm() > least {
+            plot.push(Item::new(
+                format!("component-{name}-{id}"),
+                Role::Force,
+                Shape::Arrow { from, to },
+            ));
+        }
+    }
+    plot.points(
+        &format!("point-{name}-resultant"),
+        &[(tip.x, 0.0)],
+        Symbol::Disc,
+        None,
+    );
+    Ok(plot)
+}
+
+/// The angles of the direct crank (from the line of stroke to it) and of
+/// the reverse (to it the other way), where they are wide enough to mark.
+fn angle_marks(plot: &mut Plot, pair: &Pair) {
+    if pair.angle.abs() < 5f64.to_radians() || pair.force <= 0.0 {
+        return;
+    }
+    for (id, sweep, text) in [
+        ("direct", pair.angle, pair.written.to_string()),
+        ("reverse", -pair.angle, format!("−{}", pair.written)),
+    ] {
+        plot.push(Item::new(
+            format!("angle-{}-{id}", pair.name),
+            Role::Dimension,
+            Shape::AngleMark {
+                vertex: Point::origin(),
+                start: 0.0,
+                sweep,
+                text: Some(RichText::parse(&text)),
+            },
+        ));
+    }
+}
+
+/// (c) The two resultants on the line of stroke, head to tail (the
+/// secondary a little above, where it would run back over the primary),
+/// and below them the exact inertia force, a dashed line joining the
+/// sum's end to it.
+fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: PageRect) -> Result<Plot> {
+    let (a, b) = (p.resultant(), p.resultant() + s.resultant());
+    let values = [0.0, a, b, exact];
+    let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let span = (hi - lo).max(2.0 * p.force);
+    let row = 0.045 * span;
+    let world = Frame::new(
+        Point::new(lo - 0.12 * span, -2.0 * row),
+        Point::new(hi + 0.12 * span, 2.0 * row),
+    );
+    let mut plot = Plot::world("sum", rect, &world, false, ctx.tolerance, ctx.font)?.with_caption(
+        "(c) On the line of stroke: primary + secondary, and the exact inertia force −*m a* below",
+    );
+    let least = SHORTEST * p.force;
+    plot.push(
+        line(
+            "line-stroke-sum",
+            Role::Auxiliary,
+            Point::new(lo - 0.1 * span, 0.0),
+            Point::new(hi + 0.1 * span, 0.0),
+        )
+        .dashed(Dash::DashDot),
+    );
+    let pt = |x: f64, y: f64| Point::new(x, y);
+    let items = arrow("sum-primary", pt(0.0, 0.0), pt(a, 0.0), "primary", least)
+        .into_iter()
+        .chain(arrow(
+            "sum-secondary",
+            pt(a, row),
+            pt(b, row),
+            "secondary",
+            least,
+        ))
+        .chain(arrow(
+            "sum-exact",
+            pt(0.0, -row),
+            pt(exact, -row),
+            "exact",
+            least,
+        ));
+    for item in items {
+        plot.push(item);
+    }
+    plot.push(
+        line("line-sum-end", Role::Construction, pt(b, row), pt(b, -row)).dashed(Dash::Dashed),
+    );
+    plot.points(
+        "point-sum-origin",
+        &[(0.0, 0.0), (0.0, -row)],
+        Symbol::Disc,
+        None,
+    );
+    Ok(plot)
+}
+
+/// The notes: the engine, the cranks' forces, the two resultants, their
+/// sum and the exact force, with units.
+fn notes(ctx: &Ctx, mass: f64, k: f64, p: &Pair, s: &Pair, exact: f64) -> Vec<String> {
+    let m = ctx.mechanism;
+    let (u, f) = (ctx.unit(), ctx.units.force());
+    vec![
+        format!(
+            "*r* = {} {u}, *l* = {} {u} (*n* = {}), θ = {}°, {} rpm; *m* = {} {f}·s²/{u}, *m\u{a0}r*ω² = {} {f}. Each primary crank carries (*m*/2)*r*ω² = {} {f}, each secondary (*m*/2)(*r*/4*n*)(2ω)² = {} {f}; away from the crank is to the right.",
+            short(m.crank()),
+            short(m.rod()),
+            short(m.ratio()),
+            short(ctx.angle.degrees()),
+            short(ctx.rpm()),
+            short(mass),
+            sig(k),
+            sig(p.force),
+            sig(s.force),
+        ),
+        format!(
+            "Primary *m\u{a0}r*ω² cos θ = {} {f}, secondary *m\u{a0}r*ω² cos 2θ/*n* = {} {f}, their sum {} {f}; the exact inertia force −*m a* = {} {f}.",
+            sig(p.resultant()),
+            sig(s.resultant()),
+            sig(p.resultant() + s.resultant()),
+            sig(exact),
+        ),
+    ]
+}

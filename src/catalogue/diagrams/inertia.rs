@@ -1,0 +1,404 @@
+//! The inertia-force construction on the mechanism: (a) Klein's
+//! construction (textbook §36, Fig. 65) drawn by the scene, its CG read as
+//! the piston's acceleration a = ω² · CG, directed from G towards C, and
+//! so, scaled by m ω², as the inertia force of the reciprocating parts,
+//! m ω² · CG from C towards G; that force drawn at the cross-head, against
+//! the acceleration, to the scale of the drawing (1 length unit = m ω²
+//! force units); the crank effort T = F · OM about C through Ng's torque
+//! line (OM = CE, drawn by the construction); (b) the force at the
+//! cross-head resolved into the thrust along the rod, F_Q = F / cos φ, and
+//! the thrust on the guides, F_N = F tan φ, a triangle of forces to its
+//! own scale.
+//!
+//! The force is the inertia force alone (no gas force): the piston effort
+//! F of `docs/dynamics.md` §2 with the cylinder empty. At θ = 90° and 270°
+//! in line D is at infinity and the scene draws Kisch's G, which is the
+//! same point.
+
+use super::{Ctx, Sheet, positive_mass, short, sig};
+use crate::construct::{AccelerationPoints, InstantCentre, Kisch, Klein, VelocityLine};
+use crate::diagram::Plot;
+use crate::dynamics::{Engine, EnginePose};
+use crate::error::Result;
+use crate::figure::{Figure, Item, PageRect, Panel, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Point, Vector};
+use crate::scene::Layer;
+
+/// Height given to the scene of the mechanism, page units (it ends
+/// shorter when the drawing is flat, and grows by an enlarged detail).
+const SCENE: f64 = 430.0;
+
+/// The most height and width of the triangle of forces, page units.
+const TRIANGLE: (f64, f64) = (440.0, 180.0);
+
+/// Room for the notes below the triangle, page units.
+const NOTES: f64 = 64.0;
+
+/// Radius of the crank effort's arc arrow about C, page units.
+const TORQUE_RADIUS: f64 = 30.0;
+
+/// What the arc arrow of the crank effort turns through, radians.
+const TORQUE_SWEEP: f64 = 4.4;
+
+/// Room kept for an arrow's name and between arrows, page units.
+const ROOM: f64 = 12.0;
+
+/// An arrow shorter than this on the page (page units) is left out: the
+/// notes give its value.
+const SHORTEST: f64 = 2.0;
+
+/// The engine's forces at the figure's pose.
+struct Forces {
+    /// The forces and torques by the dynamics module.
+    at: EnginePose,
+    /// Klein's F and G (Kisch's where D is at infinity).
+    points: AccelerationPoints,
+    /// The reciprocating mass.
+    mass: f64,
+    /// m ω², force units per length unit of CG.
+    scale: f64,
+}
+
+impl Forces {
+    fn new(ctx: &Ctx) -> Result<Self> {
+        let mass = positive_mass(ctx)?;
+        let engine = Engine::new(ctx.mechanism, mass, ctx.omega)?;
+        let at = engine.at(ctx.angle)?;
+        Ok(Self {
+            at,
+            points: acceleration_points(&ctx.pose()),
+            mass,
+            scale: mass * ctx.omega * ctx.omega,
+        })
+    }
+
+    /// The inertia force as a world vector: m ω² (G − C).
+    fn vector(&self) -> Vector {
+        Vector::new(-self.at.piston_effort, 0.0)
+    }
+}
+
+/// The points of the scene's Klein layer: Klein's, or Kisch's where D is
+/// at infinity (the same F and G, `docs/design.md` §2).
+fn acceleration_points(pose: &crate::Pose) -> AccelerationPoints {
+    let e = VelocityLine::construct(pose);
+    match Klein::construct(pose, &InstantCentre::construct(pose), &e) {
+        Some(k) => *k.points(),
+        None => *Kisch::construct(pose, &e).points(),
+    }
+}
+
+pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+    let forces = Forces::new(ctx)?;
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, true, true);
+    metadata(&mut sheet, &forces);
+    let bottom = mechanism(ctx, &forces, &mut sheet)?;
+    let top = match triangle(ctx, &forces, bottom + 8.0)? {
+        Some(plot) => {
+            let area = plot.area();
+            sheet.plot(plot);
+            area.y + area.height + crate::diagram::CAPTION
+        }
+        None => bottom,
+    };
+    // The page holds what was set: a detail or the triangle may take it
+    // past the figure's own height.
+    sheet.height(top + NOTES + 16.0);
+    sheet.notes(Point::new(20.0, top + 8.0), &notes(ctx, &forces));
+    Ok(sheet.finish())
+}
+
+/// The values of the figure in its metadata (the length and force units
+/// of the mechanism's).
+fn metadata(sheet: &mut Sheet, f: &Forces) {
+    let at = &f.at;
+    sheet.meta(
+        "inertia",
+        serde_json::json!({
+            "mass": f.mass,
+            "force_per_length": f.scale,
+            "cg": f.points.cg(),
+            "inertia_force": at.inertia_force,
+            "inertia_force_graphical": at.inertia_force_graphical,
+            "rod_force": at.rod_force,
+            "guide_thrust": at.guide_thrust,
+            "om": at.om,
+            "crank_effort": at.crank_effort,
+            "crank_effort_exact": at.crank_effort_exact,
+        }),
+    );
+}
+
+/// The scene's mechanism with Klein's construction, the inertia force at
+/// the cross-head and the crank effort added to its main view; its
+/// details as drawn. Returns the bottom of what it set on the page.
+fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
+    let scene = ctx
+        .scene(ctx.page().width(), SCENE)?
+        .with_layers([Layer::Mechanism, Layer::Klein]);
+    let base = scene.figure()?;
+    let mut panels = base.panels().iter();
+    let Some(main) = panels.next() else {
+        return Ok(base.height());
+    };
+    let scale = main.transform().scale();
+    let pose = ctx.pose();
+    let mut items = inertia_arrow(main, &pose, f, scale);
+    let block = block_extent(main).map(|(lo, hi)| {
+        let x = if (pose.c().x - lo).abs() < (pose.c().x - hi).abs() {
+            lo
+        } else {
+            hi
+        };
+        Point::new(x, pose.a().y)
+    });
+    items.extend(torque_arrow(pose.c(), block, f.at.crank_effort, scale));
+    sheet.panel(main.clone().with_items(items));
+    for detail in panels {
+        sheet.panel(detail.clone());
+    }
+    Ok(base.height())
+}
+
+/// The slider block's extent along x in the panel, world units.
+fn block_extent(panel: &Panel) -> Option<(f64, f64)> {
+    block_span(panel, |p| p.x)
+}
+
+/// The least and greatest of `coordinate` over the slider block's
+/// corners in the panel.
+fn block_span(panel: &Panel, coordinate: impl Fn(&Point) -> f64) -> Option<(f64, f64)> {
+    panel.items().iter().find_map(|item| match &item.shape {
+        Shape::Block { points } => Some(
+            points
+                .iter()
+                .map(&coordinate)
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+                    (lo.min(v), hi.max(v))
+                }),
+        ),
+        _ => None,
+    })
+}
+
+/// The inertia force at the cross-head: an arrow of the length CG (the
+/// drawing's scale is 1 length unit to m ω² force units) along the line
+/// of stroke, pulling the block from one face or pushing on it, on the
+/// crank's side of the block where it keeps clear of the crank centre's
+/// torque arrow, else on the far side, within the panel; set off the
+/// line of stroke by a quarter of the block's height on the side away
+/// from the rod, which near the dead centres lies on that line.
+fn inertia_arrow(panel: &Panel, pose: &crate::Pose, f: &Forces, scale: f64) -> Vec<Item> {
+    let (a, c) = (pose.a(), pose.c());
+    let length = f.points.cg().abs();
+    if length * scale < SHORTEST {
+        return Vec::new();
+    }
+    let toward = if c.x < a.x { -1.0 } else { 1.0 };
+    let (lo, hi) = block_extent(panel).unwrap_or((a.x, a.x));
+    let (near, far) = if toward < 0.0 { (lo, hi) } else { (hi, lo) };
+    // Room on the crank's side: up to the torque arrow about C.
+    let clear = (near - c.x).abs() - (TORQUE_RADIUS + 2.0 * ROOM) / scale;
+    // Room beyond the far face: up to the panel's edge, less room for the
+    // arrow's name.
+    let edge = |corner: Point| panel.transform().invert(corner).x;
+    let r = panel.rect();
+    let ends = [
+        edge(Point::new(r.x, r.y)),
+        edge(Point::new(r.x + r.width, r.y)),
+    ];
+    let beyond = ends.iter().map(|x| (x - far) * -toward).fold(0.0, f64::max) - ROOM / scale;
+    let (face, out) = if length <= clear || length > beyond {
+        (near, toward)
+    } else {
+        (far, -toward)
+    };
+    let quarter = block_span(panel, |p| p.y).map_or(0.0, |(lo, hi)| 0.25 * (hi - lo));
+    let away = if pose.b().y > a.y { -1.0 } else { 1.0 };
+    let face = Point::new(face, a.y + away * quarter);
+    let along = Vector::new(out * length, 0.0);
+    // Pulled from the face where the force points away from the block on
+    // this side, pushed on it where it points into the block.
+    let (from, to) = if f.vector().x * out > 0.0 {
+        (face, face + along)
+    } else {
+        (face + along, face)
+    };
+    vec![
+        Item::new("force-inertia", Role::Force, Shape::Arrow { from, to }),
+        Item::new(
+            "value-inertia",
+            Role::Label,
+            Shape::Label {
+                anchor: face + along * 0.5,
+                text: RichText::parse("*F*_i"),
+                size: TextSize::Small,
+            },
+        ),
+    ]
+}
+
+/// The crank effort `t` as an arc arrow about the crank centre `c` in its
+/// sense, lettered T in the arc's gap: below C (above it for a clockwise
+/// effort), or where the slider's block comes within the arc's reach
+/// (`block`, its nearest point, a short rod near the inner dead centre)
+/// the gap faces the block and T goes beside the arc's middle. Nothing at
+/// a dead centre, where T = 0.
+fn torque_arrow(c: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
+    if t == 0.0 || scale.is_nan() || scale <= 0.0 {
+        return Vec::new();
+    }
+    let radius = TORQUE_RADIUS / scale;
+    let turn = t.signum();
+    let sweep = turn * TORQUE_SWEEP;
+    let gap = block
+        .filter(|b| (b - c).norm() < radius + ROOM / scale)
+        .map(|b| (b.y - c.y).atan2(b.x - c.x));
+    let (start, mid) = match gap {
+        Some(g) => {
+            let start = g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI);
+            (start, start + 0.5 * sweep)
+        }
+        None => (
+            -0.9 * turn,
+            -0.9 * turn + 0.5 * sweep + std::f64::consts::PI,
+        ),
+    };
+    vec![
+        Item::new(
+            "torque-T",
+            Role::Force,
+            Shape::Arc {
+                centre: c,
+                radius,
+                start,
+                sweep,
+                arrow: true,
+            },
+        ),
+        Item::new(
+            "value-T",
+            Role::Label,
+            Shape::Label {
+                anchor: c + Vector::new(mid.cos(), mid.sin()) * radius,
+                text: RichText::italic("T"),
+                size: TextSize::Small,
+            },
+        ),
+    ]
+}
+
+/// (b) The triangle of forces at the cross-head: F_i = F_Q + F_N, to its
+/// own scale, drawn as the mechanism is (mirrored with it), centred on
+/// the page from `top` down, no taller than it needs. `None` where there
+/// is no force (a = 0).
+fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
+    let pose = ctx.pose();
+    let at = &f.at;
+    let fi = f.vector();
+    if fi.x == 0.0 {
+        return Ok(None);
+    }
+    let rod = (pose.b() - pose.a()) / ctx.mechanism.rod();
+    let q = rod * at.rod_force;
+    let o = Point::origin();
+    let corners = [o, o + fi, o + q];
+    let (lo, hi) = corners.iter().fold(
+        (
+            Point::new(f64::INFINITY, f64::INFINITY),
+            Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY),
+        ),
+        |(lo, hi), p| (lo.inf(p), hi.sup(p)),
+    );
+    let size = (hi - lo).norm();
+    let pad = Vector::new(0.12 * size, 0.12 * size);
+    let world = Frame::new(lo - pad, hi + pad);
+    let span = world.max() - world.min();
+    let width = TRIANGLE.0.min(ctx.page().width() - 32.0);
+    let tall = (width * span.y / span.x).clamp(48.0, TRIANGLE.1);
+    let rect = PageRect::new(
+        0.5 * (ctx.page().width() - width),
+        top,
+        width,
+        tall + crate::diagram::CAPTION,
+    );
+    let mut plot = Plot::world("forces", rect, &world, ctx.mirror, ctx.tolerance, ctx.font)?
+        .with_caption("(b) The inertia force at the cross-head: *F*_i = *F*_Q + *F*_N, along the rod and on the guides");
+    let arrow =
+        |id: &str, from: Point, to: Point| Item::new(id, Role::Force, Shape::Arrow { from, to });
+    let label = |id: &str, at: Point, text: &str| {
+        Item::new(
+            format!("value-{id}"),
+            Role::Label,
+            Shape::Label {
+                anchor: at,
+                text: RichText::parse(text),
+                size: TextSize::Small,
+            },
+        )
+    };
+    plot.push(arrow("force-triangle-inertia", o, o + fi));
+    plot.push(label("triangle-inertia", o + fi * 0.5, "*F*_i"));
+    plot.push(arrow("force-triangle-rod", o, o + q));
+    plot.push(label("triangle-rod", o + q * 0.5, "*F*_Q"));
+    if at.guide_thrust != 0.0 {
+        plot.push(arrow("force-triangle-guides", o + q, o + fi));
+        plot.push(label("triangle-guides", o + (q + fi) * 0.5, "*F*_N"));
+    }
+    Ok(Some(plot))
+}
+
+/// The notes: the engine, the scale, and every force with its value and
+/// unit, the graphical beside the exact.
+fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
+    let m = ctx.mechanism;
+    let at = &f.at;
+    let (u, fu) = (ctx.unit(), ctx.units.force());
+    let t = ctx.units.torque();
+    let sense = |x: f64, towards: &str, away: &str| {
+        if x > 0.0 {
+            towards.to_string()
+        } else if x < 0.0 {
+            away.to_string()
+        } else {
+            String::new()
+        }
+    };
+    vec![
+        format!(
+            "*r* = {} {u}, *l* = {} {u}{}, θ = {}°, {} rpm; reciprocating mass *m* = {} {fu}·s²/{u}, no gas force. Scale: *CG* is the acceleration ω²·*CG* and the inertia force *m*ω²·*CG*: 1 {u} = {} {fu}.",
+            short(m.crank()),
+            short(m.rod()),
+            if m.offset() == 0.0 {
+                String::new()
+            } else {
+                format!(", *e* = {} {u}", short(m.offset()))
+            },
+            short(ctx.angle.degrees()),
+            short(ctx.rpm()),
+            short(f.mass),
+            sig(f.scale),
+        ),
+        format!(
+            "*CG* = {} {u}: *a* = {} {u}/s², inertia force *F*_i = *m*ω²·*CG* = {} {fu} (exact *m* d²*x*/d*t*² = {} {fu}){}.",
+            sig(f.points.cg().abs()),
+            sig(ctx.omega * ctx.omega * f.points.cg().abs()),
+            sig(at.inertia_force_graphical.abs()),
+            sig(at.inertia_force.abs()),
+            sense(
+                at.inertia_force,
+                ", towards the crank",
+                ", away from the crank"
+            ),
+        ),
+        format!(
+            "Along the rod *F*_Q = *F*_i/cos φ = {} {fu}, on the guides *F*_N = *F*_i tan φ = {} {fu}; *OM* = *CE* = {} {u}, crank effort *T* = *F*_i·*OM* = {} {t} (exact *F*_i *r* sin(θ + φ)/cos φ = {} {t}).",
+            sig(at.rod_force.abs()),
+            sig(at.guide_thrust.abs()),
+            sig(at.om.abs()),
+            sig(at.crank_effort),
+            sig(at.crank_effort_exact),
+        ),
+    ]
+}

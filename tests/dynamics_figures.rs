@@ -1,0 +1,359 @@
+//! The engine dynamics figures read back from their SVG: the lengths of
+//! the drawn arrows and the numbers of the notes against formulas written
+//! here, not the library's.
+
+#[allow(dead_code)] // the helpers the other figure tests use
+mod common;
+
+use common::{attr, metadata, read_text};
+use slider_crank::catalogue::FigureOptions;
+use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
+
+/// ω of 250 rpm.
+fn omega() -> f64 {
+    250.0 * std::f64::consts::TAU / 60.0
+}
+
+/// The example engine's reciprocating mass (the figures' default).
+const MASS: f64 = 10.0;
+
+/// The figure `name` of the mechanism (r, l, e) at `degrees`.
+fn svg(name: FigureName, (r, l, e): (f64, f64, f64), degrees: f64) -> String {
+    let mut o = FigureOptions::default();
+    o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+    o.angle = Some(Angle::from_degrees(degrees).unwrap());
+    to_svg(&name.figure(&o).unwrap())
+}
+
+/// The six numbers of a panel's `data-page-from-world`.
+fn panel_map(svg: &str, panel: &str) -> [f64; 6] {
+    let text = attr(svg, panel, "data-page-from-world").unwrap();
+    let v: Vec<f64> = text.split(' ').map(|s| s.parse().unwrap()).collect();
+    [v[0], v[1], v[2], v[3], v[4], v[5]]
+}
+
+/// The tail and the tip of the arrow `id` on the page: the start of its
+/// shaft and the first point of its head (the renderer draws the head
+/// from the tip).
+fn arrow(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let mut paths = svg[at..].split(" d=\"M").skip(1).map(|s| {
+        let end = s.find(|c: char| c.is_ascii_alphabetic()).unwrap();
+        let mut xy = s[..end]
+            .split_whitespace()
+            .map(|v| v.parse::<f64>().unwrap());
+        (xy.next().unwrap(), xy.next().unwrap())
+    });
+    let tail = paths.next().unwrap();
+    let tip = paths.next().unwrap();
+    (tail, tip)
+}
+
+fn length((a, b): ((f64, f64), (f64, f64))) -> f64 {
+    (b.0 - a.0).hypot(b.1 - a.1)
+}
+
+/// d²x_A/dθ² of the slider, x_A = r cos θ + √(l² − (r sin θ − e)²),
+/// differentiated by hand.
+fn x2(r: f64, l: f64, e: f64, t: f64) -> f64 {
+    let (u, u1, u2) = (r * t.sin() - e, r * t.cos(), -r * t.sin());
+    let s = (l * l - u * u).sqrt();
+    -r * t.cos() - (u1 * u1 + u * u2) / s - (u * u1).powi(2) / s.powi(3)
+}
+
+/// The engines and poses of the checks: the default, near the dead
+/// centres and at 90°, the shortest and a long rod, an offset.
+const CASES: [((f64, f64, f64), f64); 8] = [
+    ((0.5, 3.0, 0.0), 30.0),
+    ((0.5, 3.0, 0.0), 2.0),
+    ((0.5, 3.0, 0.0), 90.0),
+    ((0.5, 3.0, 0.0), 178.0),
+    ((1.0, 1.05, 0.0), 60.0),
+    ((1.0, 1.05, 0.0), 200.0),
+    ((1.0, 50.0, 0.0), 30.0),
+    ((1.0, 4.0, 1.0), 120.0),
+];
+
+#[test]
+fn the_inertia_force_arrow_is_m_a_at_the_drawings_scale() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
+        let t = deg.to_radians();
+        let w2 = omega() * omega();
+        // −m a along +x, a = ω² d²x/dθ².
+        let force = -MASS * w2 * x2(r, l, e, t);
+        let map = panel_map(&svg, "panel-mechanism");
+        let scale = map[0].abs();
+        let drawn = arrow(&svg, "force-inertia");
+        // At the drawing's scale 1 length unit is m ω² force units.
+        let want = force.abs() / (MASS * w2) * scale;
+        assert!(
+            (length(drawn) - want).abs() < 0.05,
+            "{r} {l} {e} at {deg}°: drawn {} for {want}",
+            length(drawn)
+        );
+        // Against the acceleration: along +x on the page where −m a is.
+        let page_dx = drawn.1.0 - drawn.0.0;
+        assert!(page_dx * map[0] * force > 0.0, "{r} {l} {e} at {deg}°");
+        // In line, the two-term series is within 1/n² of it (at n = 50).
+        if e == 0.0 && l / r > 10.0 {
+            let n = l / r;
+            let series = MASS * r * w2 * (t.cos() + (2.0 * t).cos() / n);
+            assert!((series - force).abs() < MASS * r * w2 / (n * n));
+        }
+    }
+}
+
+#[test]
+fn the_triangle_of_forces_closes_along_the_rod_and_the_guides() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
+        let t = deg.to_radians();
+        let sin_phi = (r * t.sin() - e) / l;
+        let cos_phi = (1.0 - sin_phi * sin_phi).sqrt();
+        let fi = length(arrow(&svg, "force-triangle-inertia"));
+        let fq = length(arrow(&svg, "force-triangle-rod"));
+        // The rounding of the written file (0.01) over a force ≥ 40 units.
+        let tol = 0.05 / fi.min(fq);
+        assert!((fq / fi - 1.0 / cos_phi).abs() < tol, "{deg}°");
+        if sin_phi.abs() > 1e-3 {
+            let fn_ = length(arrow(&svg, "force-triangle-guides"));
+            assert!((fn_ / fi - (sin_phi / cos_phi).abs()).abs() < tol, "{deg}°");
+        }
+    }
+}
+
+/// `x` to four significant figures as the notes write it (a true minus).
+fn four(x: f64) -> String {
+    let digits = (3 - x.abs().log10().floor() as i32).max(0) as usize;
+    format!("{x:.digits$}").replace('-', "−")
+}
+
+#[test]
+fn the_notes_give_the_crank_effort_f_om_with_units() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
+        let t = deg.to_radians();
+        let force = MASS * omega() * omega() * x2(r, l, e, t); // towards C
+        let sin_phi = (r * t.sin() - e) / l;
+        let tan_phi = sin_phi / (1.0 - sin_phi * sin_phi).sqrt();
+        // OM: the rod produced meets the perpendicular through C.
+        let om = r * t.sin() + r * t.cos() * tan_phi;
+        // Read without spaces: a wrapped note may break a line anywhere.
+        let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+        let text = bare(&read_text(&svg));
+        let torque = bare(&format!("T = Fi·OM = {} lbf·ft", four(force * om)));
+        assert!(text.contains(&torque), "{deg}°: {torque} in {text}");
+        let inertia = bare(&format!("= {} lbf (exact", four(force.abs())));
+        assert!(text.contains(&inertia), "{deg}°: {inertia} in {text}");
+        let meta = metadata(&svg);
+        let om_meta = meta["inertia"]["om"].as_f64().unwrap();
+        assert!((om_meta - om).abs() < 1e-9 * (r + l), "{deg}°");
+    }
+}
+
+#[test]
+fn the_inertia_force_figure_needs_a_positive_mass() {
+    for bad in [0.0, -1.0, f64::NAN] {
+        let mut o = FigureOptions::default();
+        o.mass = Some(bad);
+        let e = FigureName::InertiaForce.figure(&o).unwrap_err().to_string();
+        assert!(e.contains("mass") && !e.contains('\n'), "{e}");
+    }
+    let mut o = FigureOptions::default();
+    o.mass = Some(2.0);
+    assert!(FigureName::Fig65Klein.figure(&o).is_err());
+}
+
+#[test]
+fn the_unbalanced_forces_notes_give_the_amplitudes_and_the_remainder() {
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 50.0, 0.0),
+        (1.0, 4.0, 1.0),
+    ] {
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+        let svg = to_svg(&FigureName::PrimarySecondary.figure(&o).unwrap());
+        let w2 = omega() * omega();
+        let (k, n) = (MASS * r * w2, l / r);
+        // The largest of exact − (primary + secondary) over 721 angles.
+        let worst = (0..=720)
+            .map(|i| (i as f64 * 0.5).to_radians())
+            .map(|t| -MASS * w2 * x2(r, l, e, t) - k * (t.cos() + (2.0 * t).cos() / n))
+            .fold(0.0f64, |a, v| a.max(v.abs()));
+        let meta = metadata(&svg);
+        let got = meta["unbalanced"]["largest_remainder"].as_f64().unwrap();
+        assert!((got - worst).abs() <= 1e-9 * k, "{l}: {got} for {worst}");
+        let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+        let text = bare(&read_text(&svg));
+        // The file sets a square as a raised 2.
+        for want in [
+            format!("mrω2 = {} lbf", four(k)),
+            format!("mrω2/n = {} lbf", four(k / n)),
+        ] {
+            assert!(text.contains(&bare(&want)), "{want} in {text}");
+        }
+        // In line the remainder is of the order of m r ω² / n³: about
+        // half of it at 90° for a long rod.
+        if e == 0.0 && n > 10.0 {
+            assert!(
+                (worst * n.powi(3) / k - 0.5).abs() < 0.01,
+                "{}",
+                worst * n.powi(3) / k
+            );
+        }
+    }
+}
+
+/// The world point of a page point in a panel whose map has no rotation.
+fn to_world(map: &[f64; 6], (x, y): (f64, f64)) -> (f64, f64) {
+    assert!(map[1] == 0.0 && map[2] == 0.0, "{map:?}");
+    ((x - map[4]) / map[0], (y - map[5]) / map[3])
+}
+
+/// The world vector of the arrow `id` in `panel`.
+fn world_arrow(svg: &str, panel: &str, id: &str) -> (f64, f64) {
+    let map = panel_map(svg, panel);
+    let (tail, tip) = arrow(svg, id);
+    let (a, b) = (to_world(&map, tail), to_world(&map, tip));
+    (b.0 - a.0, b.1 - a.1)
+}
+
+#[test]
+fn the_direct_and_reverse_cranks_project_to_the_primary_and_secondary_forces() {
+    use slider_crank::dynamics::{Engine, unbalanced_forces};
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        let t = deg.to_radians();
+        let w2 = omega() * omega();
+        let n = l / r;
+        // Each crank carries m/2: at r and ω (primary), at r/4n and 2ω
+        // (secondary), at ±θ and ±2θ.
+        for (name, force, angle, sum) in [
+            ("primary", 0.5 * MASS * r * w2, t, MASS * r * w2 * t.cos()),
+            (
+                "secondary",
+                0.5 * MASS * (r / (4.0 * n)) * 4.0 * w2,
+                2.0 * t,
+                MASS * r * w2 * (2.0 * t).cos() / n,
+            ),
+        ] {
+            let panel = format!("panel-{name}");
+            let d = world_arrow(&svg, &panel, &format!("force-{name}-direct"));
+            let v = world_arrow(&svg, &panel, &format!("force-{name}-reverse"));
+            let tol = 2e-3 * force;
+            let at = |x: (f64, f64), a: f64| (x.0 - force * a.cos()).hypot(x.1 - force * a.sin());
+            assert!(at(d, angle) < tol, "{name} direct at {deg}°: {d:?}");
+            assert!(at(v, -angle) < tol, "{name} reverse at {deg}°: {v:?}");
+            // The components on the line of stroke sum to the force; those
+            // across it cancel.
+            assert!((d.0 + v.0 - sum).abs() < 2.0 * tol, "{name} at {deg}°");
+            assert!((d.1 + v.1).abs() < 2.0 * tol, "{name} at {deg}°");
+        }
+        // The secondary cranks' force is balance.rs's secondary force.
+        let m = SliderCrank::new(r, l, e).unwrap();
+        let engine = Engine::new(m, MASS, omega()).unwrap();
+        let b = unbalanced_forces(&engine, Angle::from_degrees(deg).unwrap());
+        let meta = metadata(&svg);
+        let secondary = meta["cranks"]["secondary"].as_f64().unwrap();
+        assert!((secondary - b.secondary).abs() <= 1e-9 * MASS * r * w2);
+        assert!((MASS * r * w2 * (2.0 * t).cos() / n - b.secondary).abs() <= 1e-9 * MASS * r * w2);
+    }
+}
+
+#[test]
+fn on_the_line_of_stroke_primary_and_secondary_sum_to_the_series_beside_the_exact_force() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        let t = deg.to_radians();
+        let w2 = omega() * omega();
+        let k = MASS * r * w2;
+        let n = l / r;
+        let want = [
+            ("force-sum-primary", k * t.cos()),
+            ("force-sum-secondary", k * (2.0 * t).cos() / n),
+            ("force-sum-exact", -MASS * w2 * x2(r, l, e, t)),
+        ];
+        for (id, value) in want {
+            if value.abs() < 1e-2 * k {
+                continue;
+            }
+            let (x, y) = world_arrow(&svg, "panel-sum", id);
+            assert!(
+                (x - value).abs() < 2e-3 * k && y.abs() < 1e-9 * k,
+                "{id} at {deg}°: {x} for {value}"
+            );
+        }
+    }
+}
+
+/// The on-curve points (world) of the path `id`: the ends of its
+/// segments, mapped back through its panel's map.
+fn path_points(svg: &str, panel: &str, id: &str) -> Vec<(f64, f64)> {
+    let map = panel_map(svg, panel);
+    let d = attr(svg, id, "d").unwrap();
+    let mut out = Vec::new();
+    for part in d.split(['M', 'L', 'C']).filter(|p| !p.trim().is_empty()) {
+        let v: Vec<f64> = part
+            .split_whitespace()
+            .map(|x| x.parse().unwrap())
+            .collect();
+        // The last pair of each command is the point on the curve.
+        if let [.., x, y] = v[..] {
+            out.push(to_world(&map, (x, y)));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_flywheel_holds_the_speed_within_its_coefficient() {
+    for (cs, r, l) in [(0.02, 0.5, 3.0), (0.3, 0.5, 3.0), (0.05, 0.5, 1.2)] {
+        let mut o = FigureOptions::default();
+        o.fluctuation = Some(cs);
+        o.mechanism = Some(SliderCrank::in_line(r, l).unwrap());
+        let svg = to_svg(&FigureName::Flywheel.figure(&o).unwrap());
+        let meta = metadata(&svg);
+        let de = meta["flywheel"]["fluctuation"].as_f64().unwrap();
+        let inertia = meta["flywheel"]["inertia"].as_f64().unwrap();
+        let w = omega();
+        // I = ΔE / (ω² C_s).
+        assert!((inertia * w * w * cs - de).abs() <= 1e-10 * de, "{cs}");
+        // Every drawn speed ω(θ) stores ½ I (ω² − ω_min²) between 0 and
+        // ΔE, and the curve reaches both.
+        let least = w * (1.0 - 0.5 * cs);
+        let stored: Vec<f64> = path_points(&svg, "panel-speed", "curve-speed")
+            .iter()
+            .map(|&(_, speed)| 0.5 * inertia * (speed * speed - least * least))
+            .collect();
+        let lo = stored.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = stored.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        assert!(lo > -0.01 * de && lo < 0.02 * de, "{cs}: {lo} of {de}");
+        assert!(hi < 1.01 * de && hi > 0.98 * de, "{cs}: {hi} of {de}");
+        // The energy curve rises from 0 to ΔE as well.
+        let energy = path_points(&svg, "panel-energy-above-least", "curve-energy-above-least");
+        let top = energy.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max);
+        let bottom = energy.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        assert!(
+            bottom > -0.01 * de && top < 1.01 * de && top > 0.98 * de,
+            "{cs}"
+        );
+        let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
+        let text = bare(&read_text(&svg));
+        let want = bare(&format!(
+            "ωmin = {} to ωmax = {} rad/s",
+            four(least),
+            four(w * (1.0 + 0.5 * cs))
+        ));
+        assert!(text.contains(&want), "{want} in {text}");
+    }
+    for bad in [0.0, 2.0, -0.1, f64::NAN] {
+        let mut o = FigureOptions::default();
+        o.fluctuation = Some(bad);
+        assert!(FigureName::Flywheel.figure(&o).is_err(), "{bad}");
+    }
+}
