@@ -21,6 +21,9 @@ use slider_crank::render::{FileFormat, to_svg, write_atomic};
 use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
 use std::path::{Path, PathBuf};
 
+mod chain;
+mod dynamics;
+
 /// The Python exception for a library error, with the command line's message
 /// (the one line the command line prints, control characters escaped).
 fn py_err(e: Error) -> PyErr {
@@ -415,9 +418,11 @@ fn ratios(given: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
 /// arguments (`None`: the table's default).
 #[pyfunction]
 #[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=0.0,
-    rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None))]
+    rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None,
+    engine=None, phases=None, fluctuation=None, flywheel=None))]
 #[allow(clippy::too_many_arguments)]
 fn table(
+    py: Python<'_>,
     name: &str,
     format: &str,
     n: Option<Vec<f64>>,
@@ -432,6 +437,10 @@ fn table(
     decimals: Option<usize>,
     unit: Option<&str>,
     force_unit: Option<&str>,
+    engine: Option<Bound<'_, dynamics::PyEngine>>,
+    phases: Option<Vec<f64>>,
+    fluctuation: Option<f64>,
+    flywheel: Option<f64>,
 ) -> PyResult<String> {
     use slider_crank::table::{self as t, Format, Head, Table};
     let format: Format = parse(format)?;
@@ -492,7 +501,7 @@ fn table(
             (head, rows)
         }
         "kinematics" => {
-            let m = engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
+            let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
             let w = crank_speed(rpm, omega)?;
             let head = t::kinematics_head(&m, w, &with_units(Units::FOOT_POUND)?);
             let rows = angles_or(&range(0.0, 360.0, 30.0))
@@ -502,7 +511,7 @@ fn table(
             (head, rows)
         }
         "forces" => {
-            let m = engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
+            let m = self::engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
             let torque = torque.unwrap_or(NG_TABLE_2_TORQUE);
             if !torque.is_finite() {
                 return Err(py_err(Error::NotFinite {
@@ -518,9 +527,34 @@ fn table(
                 .collect();
             (head, rows)
         }
+        "dynamics" => {
+            let engine =
+                engine.ok_or_else(|| PyValueError::new_err("table dynamics needs an engine"))?;
+            let engine = engine.get().engine();
+            let phases = phases.unwrap_or_else(|| vec![0.0]);
+            let ask = match (fluctuation, flywheel) {
+                (Some(_), Some(_)) => {
+                    return Err(PyValueError::new_err(
+                        "fluctuation cannot be used with flywheel: give the coefficient of fluctuation of speed or the flywheel, not both",
+                    ));
+                }
+                (Some(c), _) => slider_crank::dynamics::FlywheelAsk::Coefficient(c),
+                (_, Some(i)) => slider_crank::dynamics::FlywheelAsk::Inertia(i),
+                _ => slider_crank::dynamics::FlywheelAsk::None,
+            };
+            let units = with_units(Units::FOOT_POUND)?;
+            let head = py
+                .detach(|| slider_crank::dynamics::dynamics_head(engine, &phases, ask, &units))
+                .map_err(py_err)?;
+            let rows = angles_or(&range(0.0, 360.0, 30.0))
+                .into_iter()
+                .map(|d| slider_crank::dynamics::dynamics_row(engine, &phases, d, decimals))
+                .collect();
+            (head, rows)
+        }
         _ => {
             return Err(PyValueError::new_err(format!(
-                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics and forces"
+                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics, forces and dynamics"
             )));
         }
     };
@@ -580,6 +614,10 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(handout, m)?)?;
     m.add_function(wrap_pyfunction!(table, m)?)?;
     m.add_function(wrap_pyfunction!(gallery, m)?)?;
+    m.add_class::<dynamics::PyEngine>()?;
+    m.add("EXAMPLE_MASS", slider_crank::dynamics::EXAMPLE_MASS)?;
+    m.add("DYNAMICS_ROWS", dynamics::SWEEP_ROWS)?;
+    chain::register(m)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
