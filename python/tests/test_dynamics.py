@@ -270,3 +270,20 @@ def test_wrong_types_are_type_errors() -> None:
         ENGINE.at(45, mass="10")  # type: ignore[arg-type]
     with pytest.raises(TypeError):
         ENGINE.turning_moment(phases=["a"])  # type: ignore[list-item]
+
+
+def test_threads_sweeping_the_forces_at_once_agree() -> None:
+    from concurrent.futures import ThreadPoolExecutor
+
+    engine = sc.SliderCrank(0.5, 3.0, 0.1)
+    deg = np.linspace(0, 720, 20_001)
+    one = engine.sweep(deg, omega=30, mass=2, rod_mass=1, rod_cg=1, rod_gyration=1).dynamics
+    assert one is not None
+    with ThreadPoolExecutor(4) as pool:
+        runs = list(pool.map(
+            lambda _: engine.sweep(deg, omega=30, mass=2, rod_mass=1, rod_cg=1, rod_gyration=1).dynamics,
+            range(8),
+        ))
+    for run in runs:
+        assert run is not None
+        assert np.array_equal(run.torque, one.torque) and np.array_equal(run.rod_torque, one.rod_torque)
