@@ -27,6 +27,7 @@ __all__ = [
     "slot_at",
     "inversion_at",
     "chain_check",
+    "engine_check",
     "VERSION",
     "EXAMPLE_MASS",
     "DYNAMICS_ROWS",
@@ -183,3 +184,10 @@ def chain_check(
     samples: int = 100000,
     tolerance: Optional[float] = None,
 ) -> tuple[str, bool, list[tuple[str, float, float, float, int, bool]]]: ...
+def engine_check(
+    crank: float,
+    rod: float,
+    offset: float,
+    samples: int = 100000,
+    tolerance: Optional[float] = None,
+) -> tuple[str, bool, list[tuple[str, float, float, float, int, bool, float]]]: ...

@@ -16,11 +16,7 @@ use slider_crank::chain::{
 use slider_crank::construct::Link;
 use slider_crank::geom::{Intersection, Point};
 use slider_crank::render::plain;
-use slider_crank::{Angle, Assembly, Error, Inversion, SliderCrank};
-
-/// The most samples times quantities `check` computes, as the command
-/// line's default `--max-cells`.
-const MAX_CELLS: u64 = 50_000_000;
+use slider_crank::{Angle, Assembly, Inversion, SliderCrank};
 
 /// The chain's default allowance in `check` (the command line's).
 const CHAIN_TOLERANCE: f64 = 1e-12;
@@ -151,21 +147,7 @@ fn chain_check(
     samples: usize,
     tolerance: Option<f64>,
 ) -> PyResult<(String, bool, Vec<CheckRow>)> {
-    let tolerance = check_tolerance(tolerance)?;
-    if samples == 0 {
-        return Err(py_err(Error::OutOfRange {
-            name: "samples",
-            value: 0.0,
-            reason: "give at least 1 pose".into(),
-        }));
-    }
-    let quantities = slider_crank::construct::Quantity::ALL.len();
-    let cells = samples as u128 * quantities as u128;
-    if cells > u128::from(MAX_CELLS) {
-        return Err(PyValueError::new_err(format!(
-            "check asks for {samples} poses × {quantities} quantities = {cells} values, more than {MAX_CELLS}: give fewer samples"
-        )));
-    }
+    let tolerance = crate::check::check_arguments(samples, tolerance, CHAIN_TOLERANCE)?;
     let (title, rows) = match (links, slot) {
         (Some(links), _) => {
             let q = quadric(links)?;
@@ -209,26 +191,6 @@ fn chain_check(
         })
         .collect();
     Ok((text, ok, rows))
-}
-
-/// The allowance `check --tolerance` takes for a chain, checked as the
-/// command line checks it (1e-12 when not given).
-fn check_tolerance(tolerance: Option<f64>) -> PyResult<f64> {
-    let t = tolerance.unwrap_or(CHAIN_TOLERANCE);
-    if !(t.is_finite() && t > 0.0) {
-        return Err(py_err(Error::NotPositive {
-            name: "tolerance",
-            value: t,
-        }));
-    }
-    if t > 1.0 {
-        return Err(py_err(Error::OutOfRange {
-            name: "tolerance",
-            value: t,
-            reason: "give at most 1: a difference of 1 in scaled units is the size of the quantity itself".into(),
-        }));
-    }
-    Ok(t)
 }
 
 /// Registers the chain's functions.

@@ -22,6 +22,7 @@ use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Uni
 use std::path::{Path, PathBuf};
 
 mod chain;
+mod check;
 mod dynamics;
 
 /// The Python exception for a library error, with the command line's message
@@ -627,6 +628,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("EXAMPLE_MASS", slider_crank::dynamics::EXAMPLE_MASS)?;
     m.add("DYNAMICS_ROWS", dynamics::SWEEP_ROWS)?;
     chain::register(m)?;
+    m.add_function(wrap_pyfunction!(check::engine_check, m)?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

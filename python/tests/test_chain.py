@@ -83,6 +83,9 @@ CHECKS: List[Any] = [
      ["--links=2,2,2,2", "--samples=100", "--tolerance=1e-15"]),
     (lambda: sc.SliderCrank(0.5, 1.5, 0.1).curved_slot(2).check(samples=300),
      ["--crank=0.5", "--rod=1.5", "--offset=0.1", "--slot-radius=2", "--samples=300"]),
+    (lambda: sc.SliderCrank(0.5, 3.0, 0.1).check(samples=2000), ["--offset=0.1", "--samples=2000"]),
+    (lambda: sc.SliderCrank(1.0, 1.0001).check(samples=1000, tolerance=1e-16),
+     ["--crank=1", "--rod=1.0001", "--samples=1000", "--tolerance=1e-16"]),
 ]
 
 
@@ -94,6 +97,7 @@ def test_checks_are_the_commands_report(cli: Cli, call: Callable[[], sc.CheckRep
     assert report.passed == (done.returncode == 0)
     assert all(row.passed for row in report.rows) == report.passed
     assert len(report.rows) == done.stdout.decode().count("  ok\n") + done.stdout.decode().count("  FAIL\n")
+    assert len(report.rows) > 0
 
 
 # the chain's figures take the figure options: the command's SVG for the same
@@ -148,6 +152,8 @@ ERRORS: List[Any] = [
     (lambda: sc.QuadricChain(1, 3, 2.5, 3).check(samples=0), ["check", "--links=1,3,2.5,3", "--samples=0"]),
     (lambda: sc.QuadricChain(1, 3, 2.5, 3).check(tolerance=2), ["check", "--links=1,3,2.5,3", "--tolerance=2"]),
     (lambda: sc.QuadricChain(1, 3, 2.5, 3).check(tolerance=-1), ["check", "--links=1,3,2.5,3", "--tolerance=-1"]),
+    (lambda: sc.SliderCrank(0.5, 3).check(tolerance=math.nan), ["check", "--tolerance=NaN"]),
+    (lambda: sc.SliderCrank(0.5, 3).check(samples=0), ["check", "--samples=0"]),
     (lambda: sc.SliderCrank(0.5, 1.5).curved_slot(1), ["analyze", "--crank=0.5", "--rod=1.5", "--slot-radius=1"]),
     (lambda: sc.SliderCrank(0.5, 1.5).curved_slot(math.nan), ["analyze", "--crank=0.5", "--rod=1.5", "--slot-radius=NaN"]),
     (lambda: sc.SliderCrank(0.5, 1.5).inversion(5), ["analyze", "--crank=0.5", "--rod=1.5", "--inversion=5"]),
