@@ -653,11 +653,6 @@ class SliderCrank:
         >>> abs(turn.mean) < 1e-9 * turn.peak    # inertia forces do no net work
         True
         """
-        if fluctuation is not None and flywheel is not None:
-            raise ValueError(
-                "fluctuation cannot be used with flywheel: give the coefficient "
-                "of fluctuation of speed or the flywheel, not both"
-            )
         w = _core.crank_speed(rpm, omega)
         engine = self._engine(
             w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore,

@@ -10,7 +10,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use serde_json::{Value, json};
 use slider_crank::dynamics::{
-    Engine, EnginePose, Flywheel, GasForce, IndicatorDiagram, RodMass, TurningMoment,
+    Engine, EnginePose, Flywheel, FlywheelAsk, GasForce, IndicatorDiagram, RodMass, TurningMoment,
     unbalanced_forces,
 };
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
@@ -156,23 +156,33 @@ impl PyEngine {
         fluctuation: Option<f64>,
         flywheel: Option<f64>,
     ) -> PyResult<String> {
-        if fluctuation.is_some() && flywheel.is_some() {
-            return Err(PyValueError::new_err(
-                "fluctuation cannot be used with flywheel: give the coefficient of fluctuation of speed or the flywheel, not both",
-            ));
-        }
+        let ask = flywheel_ask(fluctuation, flywheel)?;
         let engine = &self.engine;
         py.detach(|| {
             let turn = TurningMoment::new(engine, &phases)?;
             let (de, w) = (turn.fluctuation, engine.omega());
-            let wheel = match (fluctuation, flywheel) {
-                (Some(c), _) => Some(Flywheel::for_coefficient(de, w, c)?),
-                (_, Some(i)) => Some(Flywheel::for_inertia(de, w, i)?),
+            let wheel = match ask {
+                FlywheelAsk::Coefficient(c) => Some(Flywheel::for_coefficient(de, w, c)?),
+                FlywheelAsk::Inertia(i) => Some(Flywheel::for_inertia(de, w, i)?),
                 _ => None,
             };
             Ok(json!({"turn": turn, "flywheel": wheel}).to_string())
         })
         .map_err(py_err)
+    }
+}
+
+/// What the flywheel is asked for: the inertia for the coefficient of
+/// fluctuation of speed `fluctuation`, or the coefficient of the flywheel
+/// `flywheel` (`--fluctuation`, `--flywheel`: at most one).
+pub fn flywheel_ask(fluctuation: Option<f64>, flywheel: Option<f64>) -> PyResult<FlywheelAsk> {
+    match (fluctuation, flywheel) {
+        (Some(_), Some(_)) => Err(PyValueError::new_err(
+            "fluctuation cannot be used with flywheel: give the coefficient of fluctuation of speed or the flywheel, not both",
+        )),
+        (Some(c), _) => Ok(FlywheelAsk::Coefficient(c)),
+        (_, Some(i)) => Ok(FlywheelAsk::Inertia(i)),
+        _ => Ok(FlywheelAsk::None),
     }
 }
 

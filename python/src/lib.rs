@@ -542,16 +542,7 @@ fn table(
                 engine.ok_or_else(|| PyValueError::new_err("table dynamics needs an engine"))?;
             let engine = engine.get().engine();
             let phases = phases.unwrap_or_else(|| vec![0.0]);
-            let ask = match (fluctuation, flywheel) {
-                (Some(_), Some(_)) => {
-                    return Err(PyValueError::new_err(
-                        "fluctuation cannot be used with flywheel: give the coefficient of fluctuation of speed or the flywheel, not both",
-                    ));
-                }
-                (Some(c), _) => slider_crank::dynamics::FlywheelAsk::Coefficient(c),
-                (_, Some(i)) => slider_crank::dynamics::FlywheelAsk::Inertia(i),
-                _ => slider_crank::dynamics::FlywheelAsk::None,
-            };
+            let ask = dynamics::flywheel_ask(fluctuation, flywheel)?;
             let units = with_units(Units::FOOT_POUND)?;
             let head = py
                 .detach(|| slider_crank::dynamics::dynamics_head(engine, &phases, ask, &units))

@@ -287,3 +287,14 @@ def test_threads_sweeping_the_forces_at_once_agree() -> None:
     for run in runs:
         assert run is not None
         assert np.array_equal(run.torque, one.torque) and np.array_equal(run.rod_torque, one.rod_torque)
+
+
+def test_a_flywheel_is_asked_one_way() -> None:
+    """The command line's parser refuses --fluctuation with --flywheel."""
+    for call in (
+        lambda: ENGINE.turning_moment(mass=1, fluctuation=0.02, flywheel=3),
+        lambda: sc.table("dynamics", fluctuation=0.02, flywheel=3),
+    ):
+        with pytest.raises(ValueError) as caught:
+            call()
+        assert "fluctuation cannot be used with flywheel" in str(caught.value)
