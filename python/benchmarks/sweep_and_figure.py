@@ -82,6 +82,14 @@ def main() -> None:
     print(f"  numpy closed form x, v, a        {t_np * ns:7.1f}")
     print(f"  sweep (x, v, a, phi, rod rates)  {t_sweep * ns:7.1f}  ({t_sweep / t_np:.2f} of numpy)")
     print(f"  sweep with the graphical values  {t_graph * ns:7.1f}  ({t_graph / t_np:.2f} of numpy)")
+    t_forces = best(lambda: engine.sweep(deg, omega=w, mass=10.0, gas_force=2000.0))
+    print(f"  sweep with the forces and torque {t_forces * ns:7.1f}  ({t_forces / t_np:.2f} of numpy)")
+    small = deg[:1000]
+    t_np_small = best(lambda: numpy_closed_form(r, l, e, w, small), repeat=200)
+    t_small = best(lambda: engine.sweep(small, omega=w, graphical=True), repeat=200)
+    print("1000 poses, µs a call (best of 200):")
+    print(f"  numpy closed form x, v, a        {t_np_small * 1e6:7.1f}")
+    print(f"  sweep with the graphical values  {t_small * 1e6:7.1f}  ({t_small / t_np_small:.2f} of numpy)")
     # a new pose for each repetition
     angles = iter(range(1, 1000))
     t_fig = best(lambda: sc.figure("fig-63-velocity", angle=next(angles)), repeat=20)

@@ -26,7 +26,7 @@ import json
 import numbers
 import os
 from dataclasses import dataclass, field
-from typing import Any, Dict, Optional, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -39,6 +39,19 @@ __all__ = [
     "Values",
     "GraphicalValues",
     "Statics",
+    "Dynamics",
+    "RodDynamics",
+    "Unbalanced",
+    "DynamicsSweep",
+    "TurningMoment",
+    "Lobe",
+    "Flywheel",
+    "QuadricChain",
+    "CurvedSlot",
+    "Inversion",
+    "ChainAnalysis",
+    "CheckReport",
+    "CheckRow",
     "AtInfinity",
     "Indeterminate",
     "Sweep",
@@ -139,6 +152,107 @@ class Statics:
 
 
 @dataclass(frozen=True)
+class RodDynamics:
+    """The connecting rod's inertia at one pose (an engine with
+    ``rod_mass``): its inertia force (x, y) at the centre of mass G and
+    couple, the torque they deliver to the crank (exact, rigid body), and
+    the same rod as the equivalent dynamical system (two masses, at the
+    cross-head and the crank pin, and the correction couple) with the
+    torque that system gives: equal to ``torque``."""
+
+    inertia_force: Point
+    inertia_couple: float
+    torque: float
+    mass_at_crosshead: float
+    mass_at_crank_pin: float
+    correction_couple: float
+    correction_torque: float
+    equivalent_torque: float
+
+
+@dataclass(frozen=True)
+class Unbalanced:
+    """The unbalanced force of the reciprocating parts along the stroke:
+    the primary m r ω² cos θ and secondary m r ω² cos 2θ / n parts, the
+    exact −m a, and the remainder (the higher harmonics)."""
+
+    primary: float
+    secondary: float
+    exact: float
+    remainder: float
+
+
+@dataclass(frozen=True)
+class Dynamics:
+    """The engine's forces and torques at one pose, the member
+    ``dynamics`` of ``analyze --mass … --json`` (``at(..., mass=...)``).
+
+    Forces along the stroke are positive towards the crank centre, torques
+    on the crank counter-clockwise positive; ``units`` names the force,
+    torque and mass units. ``inertia_force`` is the reciprocating parts'
+    m a exact, ``inertia_force_klein`` the same from Klein's construction
+    (−m ω² CG); ``piston_effort`` F = gas + inertia force; ``rod_force``
+    F / cos φ (compression positive); ``guide_thrust`` −F tan φ, the
+    slider's thrust on its guides along +y; ``OM`` Ng's torque arm read off
+    the construction; ``crank_effort`` F · OM and ``crank_effort_exact``
+    F r sin(θ + φ) / cos φ; ``torque`` the whole torque on the crank (the
+    crank effort and the rod's inertia torque); ``rod`` ``None`` for a
+    massless rod.
+    """
+
+    units: Dict[str, str]
+    reciprocating_mass: float
+    gas_force: float
+    inertia_force: float
+    inertia_force_klein: float
+    piston_effort: float
+    rod_force: float
+    guide_thrust: float
+    OM: float
+    crank_effort: float
+    crank_effort_exact: float
+    torque: float
+    unbalanced: Unbalanced
+    rod: Optional[RodDynamics]
+
+    @classmethod
+    def _from_json(cls, v: Dict[str, Any]) -> "Dynamics":
+        rod = v["rod"]
+        return cls(
+            units=dict(v["units"]),
+            unbalanced=Unbalanced(**v["unbalanced"]),
+            rod=None
+            if rod is None
+            else RodDynamics(
+                inertia_force=(rod["inertia_force"][0], rod["inertia_force"][1]),
+                inertia_couple=rod["inertia_couple"],
+                torque=rod["torque"],
+                equivalent_torque=rod["equivalent"]["torque"],
+                mass_at_crosshead=rod["equivalent"]["mass_at_crosshead"],
+                mass_at_crank_pin=rod["equivalent"]["mass_at_crank_pin"],
+                correction_couple=rod["equivalent"]["correction_couple"],
+                correction_torque=rod["equivalent"]["correction_torque"],
+            ),
+            **{k: v[k] for k in _DYNAMICS_VALUES},
+        )
+
+
+_DYNAMICS_VALUES = (
+    "reciprocating_mass",
+    "gas_force",
+    "inertia_force",
+    "inertia_force_klein",
+    "piston_effort",
+    "rod_force",
+    "guide_thrust",
+    "OM",
+    "crank_effort",
+    "crank_effort_exact",
+    "torque",
+)
+
+
+@dataclass(frozen=True)
 class Analysis:
     """Everything ``slider-crank analyze --json`` prints at one angle.
 
@@ -149,8 +263,9 @@ class Analysis:
     constructions) and H (Kisch's; ``None`` only at the very limit of
     assembly) to their positions. ``virtual_centres`` maps ``O_ab`` …
     ``O_cd`` (links a frame, b crank, c rod, d slider) to a :data:`Centre`.
-    ``statics`` is ``None`` unless a torque was given. :meth:`to_dict`
-    gives the JSON object itself.
+    ``statics`` is ``None`` unless a torque was given; ``dynamics`` is
+    ``None`` unless a mass or gas force was given (see :class:`Dynamics`).
+    :meth:`to_dict` gives the JSON object itself.
     """
 
     crank: float
@@ -164,11 +279,16 @@ class Analysis:
     graphical: GraphicalValues
     virtual_centres: Dict[str, Centre]
     statics: Optional[Statics]
+    dynamics: Optional[Dynamics]
     _json: Dict[str, Any] = field(repr=False, compare=False)
 
     @classmethod
-    def _from_json(cls, text: str) -> "Analysis":
+    def _from_json(cls, text: str, dynamics: Optional[str] = None) -> "Analysis":
         v = json.loads(text)
+        if dynamics is not None:
+            # the command line's object has its keys in sorted order
+            v = dict(sorted({**v, "dynamics": json.loads(dynamics)}.items()))
+        d = v.get("dynamics")
         m = v["mechanism"]
         s = v.get("statics")
         return cls(
@@ -185,6 +305,7 @@ class Analysis:
             graphical=GraphicalValues(**v["graphical"]),
             virtual_centres={k: _centre(c) for k, c in v["virtual_centres"].items()},
             statics=None if s is None else Statics(**s),
+            dynamics=None if d is None else Dynamics._from_json(d),
             _json=v,
         )
 
@@ -207,11 +328,107 @@ class GraphicalSweep:
 
 
 @dataclass(frozen=True)
+class DynamicsSweep:
+    """The engine's forces and torques over a sweep (numpy arrays shaped
+    as the angles), each the value of :class:`Dynamics` of that name at
+    that angle; ``rod_torque`` is the rod's inertia torque (``rod.torque``,
+    0 for a massless rod), ``primary`` and ``secondary`` the unbalanced
+    forces."""
+
+    gas_force: npt.NDArray[np.float64]
+    inertia_force: npt.NDArray[np.float64]
+    inertia_force_klein: npt.NDArray[np.float64]
+    piston_effort: npt.NDArray[np.float64]
+    rod_force: npt.NDArray[np.float64]
+    guide_thrust: npt.NDArray[np.float64]
+    OM: npt.NDArray[np.float64]
+    crank_effort: npt.NDArray[np.float64]
+    crank_effort_exact: npt.NDArray[np.float64]
+    rod_torque: npt.NDArray[np.float64]
+    torque: npt.NDArray[np.float64]
+    primary: npt.NDArray[np.float64]
+    secondary: npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Lobe:
+    """One area between the turning-moment curve and its mean line, from
+    ``from_deg`` to ``to_deg``: ``area`` = ∫ (T − T_mean) dθ over it
+    (positive above the mean: energy stored in the flywheel) and
+    ``energy`` the energy stored since θ = 0 at its end."""
+
+    from_deg: float
+    to_deg: float
+    area: float
+    energy: float
+
+
+@dataclass(frozen=True)
+class Flywheel:
+    """A flywheel for the fluctuation of energy ``fluctuation`` ΔE at the
+    mean crank speed ``omega``: its moment of inertia ``inertia`` I and
+    the coefficient of fluctuation of speed ``coefficient`` C_s, with
+    ΔE = I ω² C_s (one of the two was given)."""
+
+    fluctuation: float
+    omega: float
+    inertia: float
+    coefficient: float
+
+
+@dataclass(frozen=True)
+class TurningMoment:
+    """The turning-moment diagram over one turn (the notes of ``table
+    dynamics``, in full precision): the cylinders' phase angles, the work
+    of a turn ∫ T dθ, the ``mean`` torque, the largest |T| (``peak``), the
+    absolute ``tolerance`` of the integrals, the areas between the curve
+    and its mean line (``lobes``), the fluctuation of energy ΔE
+    (``fluctuation``) with the crank angles of the most and least energy
+    stored, the angles where T has a kink, and the ``flywheel`` asked for
+    (``None`` unless ``fluctuation=`` or ``flywheel=`` was given).
+
+    The integrals are adaptive Simpson quadrature split at every kink and
+    at the exact crossings of the mean line, each within ``tolerance``."""
+
+    phases_deg: Tuple[float, ...]
+    work: float
+    mean: float
+    peak: float
+    tolerance: float
+    lobes: Tuple[Lobe, ...]
+    fluctuation: float
+    max_energy_deg: float
+    min_energy_deg: float
+    kinks_deg: Tuple[float, ...]
+    flywheel: Optional[Flywheel]
+
+    @classmethod
+    def _from_json(cls, text: str) -> "TurningMoment":
+        v = json.loads(text)
+        t, f = v["turn"], v["flywheel"]
+        return cls(
+            phases_deg=tuple(t["phases_deg"]),
+            work=t["work"],
+            mean=t["mean"],
+            peak=t["peak"],
+            tolerance=t["tolerance"],
+            lobes=tuple(Lobe(**x) for x in t["lobes"]),
+            fluctuation=t["fluctuation"],
+            max_energy_deg=t["max_energy_deg"],
+            min_energy_deg=t["min_energy_deg"],
+            kinks_deg=tuple(t["kinks_deg"]),
+            flywheel=None if f is None else Flywheel(**f),
+        )
+
+
+@dataclass(frozen=True)
 class Sweep:
     """The exact values over an array of crank angles, each a float64
     numpy array shaped as ``theta_deg`` (see :class:`Values`);
     ``graphical`` holds the values read off the constructions when asked
-    for (``sweep(..., graphical=True)``), else ``None``."""
+    for (``sweep(..., graphical=True)``), else ``None``; ``dynamics`` the
+    engine's forces and torques when a mass or gas force is given, else
+    ``None``."""
 
     theta_deg: npt.NDArray[np.float64]
     position: npt.NDArray[np.float64]
@@ -221,6 +438,7 @@ class Sweep:
     rod_angular_velocity: npt.NDArray[np.float64]
     rod_angular_acceleration: npt.NDArray[np.float64]
     graphical: Optional[GraphicalSweep]
+    dynamics: Optional[DynamicsSweep] = None
 
 
 def _real(x: float) -> float:
@@ -317,6 +535,14 @@ class SliderCrank:
         omega: Optional[float] = None,
         torque: Optional[float] = None,
         friction: Optional[float] = None,
+        *,
+        mass: Optional[float] = None,
+        rod_mass: Optional[float] = None,
+        rod_cg: Optional[float] = None,
+        rod_gyration: Optional[float] = None,
+        gas_force: Optional[float] = None,
+        indicator: Union[None, str, "os.PathLike[str]"] = None,
+        bore: Optional[float] = None,
     ) -> Analysis:
         """Analyses the engine at crank angle ``theta_deg`` (degrees), as
         ``slider-crank analyze --angle θ --json`` does.
@@ -326,10 +552,27 @@ class SliderCrank:
         ``torque`` T (counter-clockwise positive, force × length) the
         result carries Ng's statics, with the slider's coefficient of
         friction ``friction`` μ ≥ 0 (0 by default; only with a torque).
+
+        The engine's masses and gas force, the flags of ``analyze --mass
+        …``, add its dynamics (:class:`Dynamics`, the JSON's member
+        ``dynamics``): ``mass`` the reciprocating mass m (piston and
+        cross-head; 0 when only another is given) in the unit that makes
+        mass × length/s² the force unit (kg with m and N, slug with ft and
+        lbf); ``rod_mass`` with ``rod_cg`` (BG, the rod's centre of mass
+        from the crank pin, 0 ≤ BG ≤ l) and ``rod_gyration`` (its radius of
+        gyration k) the rod's mass; ``gas_force`` a constant force on the
+        piston, positive towards the crank centre, or ``indicator`` a CSV
+        file (columns fraction of the stroke from the outer dead centre,
+        expansion and compression pressures) with the cylinder's ``bore``.
+
+        >>> engine = SliderCrank(0.5, 3.0)
+        >>> round(engine.at(90, rpm=250, mass=10).dynamics.torque, 2)   # lbf·ft
+        289.63
         """
         w = _core.crank_speed(rpm, omega)
         if friction is not None and torque is None:
             raise ValueError("friction applies with a torque: give torque= too")
+        engine = self._engine(w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore)
         text = _core.analyze(
             self._crank,
             self._rod,
@@ -341,7 +584,109 @@ class SliderCrank:
             _option(torque),
             0.0 if friction is None else _real(friction),
         )
-        return Analysis._from_json(text)
+        degrees = _real(theta_deg)
+        dynamics = None
+        if engine is not None:
+            dynamics = engine.at(degrees, self._unit, self._force_unit)
+        return Analysis._from_json(text, dynamics)
+
+    def _engine(
+        self,
+        w: float,
+        mass: Optional[float],
+        rod_mass: Optional[float],
+        rod_cg: Optional[float],
+        rod_gyration: Optional[float],
+        gas_force: Optional[float],
+        indicator: Union[None, str, "os.PathLike[str]"],
+        bore: Optional[float],
+        default_mass: Optional[float] = None,
+    ) -> Optional[_core.Engine]:
+        """The native engine of these keywords; ``None`` when none is
+        given (or, with ``default_mass``, an engine of that mass)."""
+        given = (mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore)
+        if all(x is None for x in given):
+            if default_mass is None:
+                return None
+            mass = default_mass
+        return _core.Engine(
+            self._crank,
+            self._rod,
+            self._offset,
+            w,
+            mass=_option(mass),
+            rod_mass=_option(rod_mass),
+            rod_cg=_option(rod_cg),
+            rod_gyration=_option(rod_gyration),
+            gas_force=_option(gas_force),
+            indicator=None if indicator is None else os.fspath(indicator),
+            bore=_option(bore),
+        )
+
+    def turning_moment(
+        self,
+        rpm: Optional[float] = None,
+        omega: Optional[float] = None,
+        *,
+        mass: Optional[float] = None,
+        rod_mass: Optional[float] = None,
+        rod_cg: Optional[float] = None,
+        rod_gyration: Optional[float] = None,
+        gas_force: Optional[float] = None,
+        indicator: Union[None, str, "os.PathLike[str]"] = None,
+        bore: Optional[float] = None,
+        phases: Sequence[float] = (0.0,),
+        fluctuation: Optional[float] = None,
+        flywheel: Optional[float] = None,
+    ) -> TurningMoment:
+        """The turning-moment diagram over one turn, as ``table dynamics``
+        works it out in its notes: the mean torque, the fluctuation of
+        energy ΔE and, with ``fluctuation`` (the coefficient of fluctuation
+        of speed C_s) or ``flywheel`` (a moment of inertia I), the
+        flywheel. ``phases`` are the cylinders' crank angles ahead of the
+        first, in degrees (``(0, 180)``: two opposite cranks). Speed as in
+        :meth:`at`, masses and gas force as there; with none of them, the
+        example engine's reciprocating mass m = 10 as ``table dynamics``
+        takes it.
+
+        >>> turn = SliderCrank(0.5, 3.0).turning_moment(mass=10, fluctuation=0.02)
+        >>> abs(turn.mean) < 1e-9 * turn.peak    # inertia forces do no net work
+        True
+        """
+        w = _core.crank_speed(rpm, omega)
+        engine = self._engine(
+            w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore,
+            default_mass=_core.EXAMPLE_MASS,
+        )
+        assert engine is not None
+        text = engine.turning_moment(
+            [_real(p) for p in phases], _option(fluctuation), _option(flywheel)
+        )
+        return TurningMoment._from_json(text)
+
+    def check(self, samples: int = 100_000, tolerance: Optional[float] = None) -> "CheckReport":
+        """``slider-crank check``: every construction against the analytic
+        core at ``samples`` equally spaced crank angles (and the dead
+        centres, 0°, 90°, 180° and 270°); a difference passes when at most
+        ``tolerance`` (4 × 2⁻⁵², 4 ulps, by default) times the condition
+        number κ of the quantity at that pose. The report is the command's,
+        byte for byte; ``passed`` is its exit status 0."""
+        result = _core.engine_check(
+            self._crank, self._rod, self._offset, _samples(samples), _option(tolerance)
+        )
+        return CheckReport._from(result)
+
+    def curved_slot(self, slot_radius: float) -> "CurvedSlot":
+        """This engine with its block in a circular slot of radius
+        ``slot_radius`` ρ (Fig. 60 b, ``analyze --slot-radius``)."""
+        return CurvedSlot(self, slot_radius)
+
+    def inversion(self, number: int) -> "Inversion":
+        """The inversion ``number`` of this engine's chain (``analyze
+        --inversion N``): 1 the frame fixed (the engine), 2 the crank fixed
+        (the rotating block), 3 the rod fixed (the oscillating cylinder),
+        4 the slider fixed (the hand pump)."""
+        return Inversion(self, number)
 
     def sweep(
         self,
@@ -349,6 +694,14 @@ class SliderCrank:
         rpm: Optional[float] = None,
         omega: Optional[float] = None,
         graphical: bool = False,
+        *,
+        mass: Optional[float] = None,
+        rod_mass: Optional[float] = None,
+        rod_cg: Optional[float] = None,
+        rod_gyration: Optional[float] = None,
+        gas_force: Optional[float] = None,
+        indicator: Union[None, str, "os.PathLike[str]"] = None,
+        bore: Optional[float] = None,
     ) -> Sweep:
         """The exact values at every crank angle of ``thetas`` (degrees;
         any array-like of real numbers, any shape), as numpy float64
@@ -359,14 +712,24 @@ class SliderCrank:
         library with the GIL released, one pass over the angles; each
         value equals the one :meth:`at` gives at that angle. A NaN or
         infinite angle raises ``ValueError`` (the first one met).
+
+        The masses and gas force of :meth:`at` add the engine's forces and
+        torques at every angle (:class:`DynamicsSweep`), each equal to the
+        value of :attr:`Analysis.dynamics` there.
         """
         w = _core.crank_speed(rpm, omega)
+        engine = self._engine(w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore)
         a = _angles(thetas)
         flat = a.reshape(-1)
         rows = 10 if graphical else 6
         out = np.empty((rows, flat.size), dtype=np.float64)
         _core.sweep(self._crank, self._rod, self._offset, w, flat, out)
         r = [row.reshape(a.shape) for row in out]
+        dynamics = None
+        if engine is not None:
+            forces = np.empty((_core.DYNAMICS_ROWS, flat.size), dtype=np.float64)
+            engine.sweep(flat, forces)
+            dynamics = DynamicsSweep(*(row.reshape(a.shape) for row in forces))
         return Sweep(
             theta_deg=a,
             position=r[0],
@@ -376,6 +739,7 @@ class SliderCrank:
             rod_angular_velocity=r[4],
             rod_angular_acceleration=r[5],
             graphical=GraphicalSweep(*r[6:10]) if graphical else None,
+            dynamics=dynamics,
         )
 
     def _handout(
@@ -603,6 +967,22 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
 
 
 
+#: The keywords each table takes beyond ``format``, ``angles`` (the
+#: command line refuses a flag its table does not use, as :func:`table`
+#: refuses the keyword).
+_TABLE_USES: Dict[str, Tuple[str, ...]] = {
+    "obliquity": ("n",),
+    "acceleration-factor": ("n",),
+    "kinematics": ("crank", "rod", "offset", "rpm", "omega", "decimals", "unit"),
+    "forces": ("crank", "rod", "offset", "torque", "friction", "decimals", "unit", "force_unit"),
+    "dynamics": (
+        "crank", "rod", "offset", "rpm", "omega", "decimals", "unit", "force_unit",
+        "mass", "rod_mass", "rod_cg", "rod_gyration", "gas_force", "indicator", "bore",
+        "phases", "fluctuation", "flywheel",
+    ),
+}
+
+
 def table(
     name: str,
     format: str = "text",
@@ -611,7 +991,7 @@ def table(
     angles: Optional[npt.ArrayLike] = None,
     crank: Optional[float] = None,
     rod: Optional[float] = None,
-    offset: float = 0.0,
+    offset: Optional[float] = None,
     rpm: Optional[float] = None,
     omega: Optional[float] = None,
     torque: Optional[float] = None,
@@ -619,17 +999,48 @@ def table(
     decimals: Optional[int] = None,
     unit: Optional[str] = None,
     force_unit: Optional[str] = None,
+    mass: Optional[float] = None,
+    rod_mass: Optional[float] = None,
+    rod_cg: Optional[float] = None,
+    rod_gyration: Optional[float] = None,
+    gas_force: Optional[float] = None,
+    indicator: Union[None, str, "os.PathLike[str]"] = None,
+    bore: Optional[float] = None,
+    phases: Optional[Sequence[float]] = None,
+    fluctuation: Optional[float] = None,
+    flywheel: Optional[float] = None,
 ) -> str:
     """A table as ``slider-crank table NAME`` prints it: ``obliquity``,
-    ``acceleration-factor`` (the textbook's), ``kinematics`` (a θ sweep)
-    or ``forces`` (Ng's Table 2); ``format`` is ``text``, ``markdown`` or
+    ``acceleration-factor`` (the textbook's), ``kinematics`` (a θ sweep),
+    ``forces`` (Ng's Table 2) or ``dynamics`` (an engine's forces and
+    torques against θ, the turn's mean torque, fluctuation of energy and
+    flywheel in its notes); ``format`` is ``text``, ``markdown`` or
     ``csv``. Each keyword is the flag of that name (``None``: the table's
     default): ``n`` the ratios l/r (``math.inf`` for the infinitely long
     rod), ``angles`` the crank angles in degrees (any array-like),
-    ``crank``, ``rod``, ``offset`` the mechanism of ``kinematics`` and
-    ``forces``, ``rpm`` or ``omega`` the speed, ``torque`` and
-    ``friction`` the load of ``forces``, ``decimals`` the digits printed.
+    ``crank``, ``rod``, ``offset`` the mechanism of ``kinematics``,
+    ``forces`` and ``dynamics``, ``rpm`` or ``omega`` the speed, ``torque``
+    and ``friction`` the load of ``forces``, ``decimals`` the digits
+    printed; ``mass`` … ``bore`` the engine of ``dynamics`` (as in
+    :meth:`SliderCrank.at`; without any, the example mass m = 10),
+    ``phases`` its cylinders' crank angles, ``fluctuation`` (C_s) or
+    ``flywheel`` (I) its flywheel note. A keyword the table does not use
+    raises ``ValueError``, as the command line refuses the flag.
     """
+    given = {k: v for k, v in locals().items() if k not in ("name", "format", "angles")}
+    uses = _TABLE_USES.get(name)
+    if uses is not None:
+        unused = [k for k, v in given.items() if v is not None and k not in uses]
+        if unused:
+            raise ValueError(f"table {name} does not use {unused[0]}")
+    engine = None
+    if name == "dynamics":
+        m = _table_engine(crank, rod, offset)
+        w = _core.crank_speed(rpm, omega)
+        engine = m._engine(
+            w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore,
+            default_mass=_core.EXAMPLE_MASS,
+        )
     return _core.table(
         name,
         format,
@@ -637,7 +1048,7 @@ def table(
         angles=None if angles is None else _angles(angles).reshape(-1).tolist(),
         crank=_option(crank),
         rod=_option(rod),
-        offset=_real(offset),
+        offset=0.0 if offset is None else _real(offset),
         rpm=_option(rpm),
         omega=_option(omega),
         torque=_option(torque),
@@ -645,6 +1056,21 @@ def table(
         decimals=decimals,
         unit=unit,
         force_unit=force_unit,
+        engine=engine,
+        phases=None if phases is None else [_real(p) for p in phases],
+        fluctuation=_option(fluctuation),
+        flywheel=_option(flywheel),
+    )
+
+
+def _table_engine(
+    crank: Optional[float], rod: Optional[float], offset: Optional[float]
+) -> SliderCrank:
+    """The mechanism of ``table dynamics``: §35's engine by default."""
+    return SliderCrank(
+        0.5 if crank is None else crank,
+        3.0 if rod is None else rod,
+        0.0 if offset is None else offset,
     )
 
 
@@ -701,3 +1127,275 @@ def animate(
     if out is not None:
         _write(out, text)
     return text
+
+
+class ChainAnalysis:
+    """What ``slider-crank analyze --json`` prints at one angle for a
+    chain of Fig. 60 (``--links``, ``--slot-radius`` or ``--inversion``):
+    :meth:`to_dict` gives that object whole, ``chain["analytic"]`` (or any
+    other member) a part of it; ``points`` and ``virtual_centres`` are
+    those members with each point as in :class:`Analysis` (an
+    :class:`AtInfinity` or :class:`Indeterminate` where the JSON writes
+    one; empty where the JSON has none). Rates the pose leaves undefined
+    (at a toggle) are ``None``, the JSON's ``null``."""
+
+    __slots__ = ("_json", "points", "virtual_centres")
+
+    def __init__(self, text: str) -> None:
+        self._json: Dict[str, Any] = json.loads(text)
+        points = self._json.get("points", {})
+        self.points: Dict[str, Optional[Centre]] = {
+            k: None if p is None else _centre(p) for k, p in points.items()
+        }
+        self.virtual_centres: Dict[str, Centre] = {
+            k: _centre(c) for k, c in self._json["virtual_centres"].items()
+        }
+
+    @property
+    def angle_deg(self) -> float:
+        """The crank angle θ in degrees."""
+        return float(self._json["angle_deg"])
+
+    @property
+    def omega(self) -> float:
+        """The driving link's speed in rad/s."""
+        return float(self._json["omega"])
+
+    def __getitem__(self, key: str) -> Any:
+        value = self._json[key]
+        return json.loads(json.dumps(value)) if isinstance(value, (dict, list)) else value
+
+    def to_dict(self) -> Dict[str, Any]:
+        """The object ``analyze --json`` prints, as a new dict."""
+        copy: Dict[str, Any] = json.loads(json.dumps(self._json))
+        return copy
+
+    def __repr__(self) -> str:
+        return f"<ChainAnalysis at θ = {self.angle_deg}°: {', '.join(self._json)}>"
+
+
+@dataclass(frozen=True)
+class CheckRow:
+    """One quantity of a check: the worst scaled difference between the
+    two formulations (a construction and the analytic core for the
+    engine), the condition number κ there, the crank angle where it is,
+    the poses compared and whether it passed (worst ≤ tolerance × κ; for
+    the engine, the worst of difference / κ in ulps, ``ulps``, within the
+    allowance, else ``ulps`` is ``None``)."""
+
+    name: str
+    worst: float
+    condition: float
+    at_deg: float
+    poses: int
+    passed: bool
+    ulps: Optional[float] = None
+
+
+@dataclass(frozen=True)
+class CheckReport:
+    """The result of ``slider-crank check``: the report it
+    prints (``text``, also ``str(report)``), whether every quantity passed
+    (the command's exit status 0) and the rows."""
+
+    text: str
+    passed: bool
+    rows: Tuple[CheckRow, ...]
+
+    def __str__(self) -> str:
+        return self.text
+
+    @classmethod
+    def _from(cls, result: Tuple[str, bool, "list[Any]"]) -> "CheckReport":
+        text, passed, rows = result
+        return cls(text, passed, tuple(CheckRow(*r) for r in rows))
+
+
+def _samples(samples: int) -> int:
+    if isinstance(samples, bool) or not isinstance(samples, numbers.Integral):
+        raise TypeError(f"samples must be an integer, got {type(samples).__name__} {samples!r}")
+    if samples < 0:
+        raise ValueError(f"samples = {samples} is out of range: give at least 1 pose")
+    return int(samples)
+
+
+class QuadricChain:
+    """The quadric crank chain of Fig. 60 a (``analyze --links
+    a,b,c,d``): crank ``crank`` a, coupler ``coupler`` b, lever ``lever``
+    c and frame ``frame`` d, in the length unit ``unit``; ``assembly``
+    ``"open"`` (A to the left of the diagonal from B to O_cd) or
+    ``"crossed"``. Lengths are validated as the command line validates
+    them (positive, finite, the chain closes), errors raised as
+    ``ValueError`` with its messages.
+
+    >>> chain = QuadricChain(1, 3, 2.5, 3)
+    >>> chain.at(30, omega=1)["mechanism"]["grashof"]
+    'crank_rocker'
+    """
+
+    __slots__ = ("_links", "_assembly", "_unit", "_force_unit")
+
+    def __init__(
+        self,
+        crank: float,
+        coupler: float,
+        lever: float,
+        frame: float,
+        assembly: str = "open",
+        unit: str = "ft",
+        force_unit: str = "lbf",
+    ) -> None:
+        links = (_real(crank), _real(coupler), _real(lever), _real(frame))
+        _core.check_quadric(links, assembly)
+        _core.check_engine(1.0, 2.0, 0.0, unit, force_unit)
+        self._links: Tuple[float, float, float, float] = links
+        self._assembly: str = assembly
+        self._unit: str = unit
+        self._force_unit: str = force_unit
+
+    @property
+    def links(self) -> Tuple[float, float, float, float]:
+        """The lengths a, b, c, d."""
+        return self._links
+
+    @property
+    def assembly(self) -> str:
+        """The assembly mode, ``open`` or ``crossed``."""
+        return self._assembly
+
+    def __repr__(self) -> str:
+        a, b, c, d = self._links
+        return (
+            f"QuadricChain(crank={a!r}, coupler={b!r}, lever={c!r}, frame={d!r}, "
+            f"assembly={self._assembly!r}, unit={self._unit!r}, force_unit={self._force_unit!r})"
+        )
+
+    def at(
+        self, theta_deg: float, rpm: Optional[float] = None, omega: Optional[float] = None
+    ) -> ChainAnalysis:
+        """The chain at crank angle ``theta_deg`` as ``analyze --links
+        --json`` prints it: points, the coupler's and lever's angles and
+        rates (``None`` at a toggle), the Grashof class, the crank's reach
+        and the six virtual centres. A crank angle the crank cannot reach
+        (a rocker) raises ``ValueError``. Speed as in :meth:`SliderCrank.at`."""
+        w = _core.crank_speed(rpm, omega)
+        text = _core.quadric_at(
+            self._links, self._assembly, _real(theta_deg), w, self._unit, self._force_unit
+        )
+        return ChainAnalysis(text)
+
+    def check(self, samples: int = 100_000, tolerance: Optional[float] = None) -> CheckReport:
+        """``slider-crank check --links``: the chain's two formulations
+        compared over ``samples`` crank angles in both assembly modes; a
+        difference passes when at most ``tolerance`` (1e-12 by default) × κ."""
+        result = _core.chain_check(
+            links=self._links, samples=_samples(samples), tolerance=_option(tolerance)
+        )
+        return CheckReport._from(result)
+
+
+class CurvedSlot:
+    """An engine with its block in a circular slot (Fig. 60 b, ``analyze
+    --slot-radius ρ``): the slot's centre O_cd at (0, e − ρ), below the
+    stroke for ρ > 0, above it for ρ < 0; |ρ| must exceed (l + r + e)/2
+    (ρ > 0) or (l + r − e)/2 (ρ < 0). Made by
+    :meth:`SliderCrank.curved_slot`."""
+
+    __slots__ = ("_engine", "_radius")
+
+    def __init__(self, engine: SliderCrank, slot_radius: float) -> None:
+        radius = _real(slot_radius)
+        _core.check_slot(engine.crank, engine.rod, engine.offset, radius)
+        self._engine: SliderCrank = engine
+        self._radius: float = radius
+
+    @property
+    def slot_radius(self) -> float:
+        """The slot's radius ρ."""
+        return self._radius
+
+    def __repr__(self) -> str:
+        return f"{self._engine!r}.curved_slot({self._radius!r})"
+
+    def at(
+        self, theta_deg: float, rpm: Optional[float] = None, omega: Optional[float] = None
+    ) -> ChainAnalysis:
+        """The chain at crank angle ``theta_deg`` as ``analyze
+        --slot-radius --json`` prints it: the block's arc position and its
+        rates, exact and read off the construction (``None`` where the
+        construction leaves them undefined), the rod's and lever's angles
+        and rates, and the six virtual centres."""
+        e = self._engine
+        w = _core.crank_speed(rpm, omega)
+        text = _core.slot_at(
+            e.crank, e.rod, e.offset, self._radius, _real(theta_deg), w, e.unit, e.force_unit
+        )
+        return ChainAnalysis(text)
+
+    def check(self, samples: int = 100_000, tolerance: Optional[float] = None) -> CheckReport:
+        """``slider-crank check --slot-radius``: the slot's construction
+        against the exact values over ``samples`` crank angles; a
+        difference passes when at most ``tolerance`` (1e-12 by default) × κ."""
+        e = self._engine
+        result = _core.chain_check(
+            slot=(e.crank, e.rod, e.offset, self._radius),
+            samples=_samples(samples),
+            tolerance=_option(tolerance),
+        )
+        return CheckReport._from(result)
+
+
+class Inversion:
+    """An inversion of the slider-crank chain (``analyze --inversion
+    N``): the same four links with another fixed. ``number`` 1 fixes the
+    frame d (the engine), 2 the crank a (the rotating block), 3 the rod b
+    (the oscillating cylinder), 4 the slider c (the hand pump). The crank
+    angle is the crank's against the frame and the speed that of the
+    driving link. Made by :meth:`SliderCrank.inversion`."""
+
+    __slots__ = ("_engine", "_number")
+
+    def __init__(self, engine: SliderCrank, number: int) -> None:
+        if isinstance(number, bool) or not isinstance(number, numbers.Integral):
+            raise TypeError(f"the inversion is a number 1 to 4, got {number!r}")
+        n = int(number)
+        if not 0 <= n < 2**32:
+            raise ValueError(f"invalid inversion {n}: expected 1, 2, 3 or 4")
+        _core.check_inversion(engine.crank, engine.rod, engine.offset, n)
+        self._engine: SliderCrank = engine
+        self._number: int = n
+
+    @property
+    def number(self) -> int:
+        """The inversion's number, 1 to 4."""
+        return self._number
+
+    @property
+    def figure_name(self) -> str:
+        """The name of this inversion's figure (``inversion-2-rotating-block``)."""
+        prefix = f"inversion-{self._number}-"
+        return next(n for n in FIGURES if n.startswith(prefix))
+
+    def __repr__(self) -> str:
+        return f"{self._engine!r}.inversion({self._number})"
+
+    def at(
+        self, theta_deg: float, rpm: Optional[float] = None, omega: Optional[float] = None
+    ) -> ChainAnalysis:
+        """The inversion at crank angle ``theta_deg`` as ``analyze
+        --inversion --json`` prints it: its name, the fixed and driving
+        links, each link's angular velocity and acceleration, the sliding
+        velocity and acceleration (``None`` where the driver stands at a
+        dead point), the quick-return time ratio and the six virtual
+        centres."""
+        e = self._engine
+        w = _core.crank_speed(rpm, omega)
+        text = _core.inversion_at(
+            e.crank, e.rod, e.offset, self._number, _real(theta_deg), w, e.unit, e.force_unit
+        )
+        return ChainAnalysis(text)
+
+    def figure(self, **options: Any) -> Figure:
+        """This inversion's figure drawn for the engine (see
+        :meth:`SliderCrank.figure`)."""
+        return self._engine.figure(self.figure_name, **options)

@@ -2,7 +2,7 @@
 JSON text, SVG text, bytes or filled numpy arrays out. Use the classes of
 ``slider_crank``; these functions are their implementation."""
 
-from typing import Optional
+from typing import Optional, final
 
 import numpy as np
 import numpy.typing as npt
@@ -19,10 +19,23 @@ __all__ = [
     "handout",
     "table",
     "gallery",
+    "Engine",
+    "check_quadric",
+    "check_slot",
+    "check_inversion",
+    "quadric_at",
+    "slot_at",
+    "inversion_at",
+    "chain_check",
+    "engine_check",
     "VERSION",
+    "EXAMPLE_MASS",
+    "DYNAMICS_ROWS",
 ]
 
 VERSION: str
+EXAMPLE_MASS: float
+DYNAMICS_ROWS: int
 
 def check_engine(
     crank: float, rod: float, offset: float, unit: str, force_unit: str
@@ -100,5 +113,81 @@ def table(
     decimals: Optional[int] = None,
     unit: Optional[str] = None,
     force_unit: Optional[str] = None,
+    engine: Optional[Engine] = None,
+    phases: Optional[list[float]] = None,
+    fluctuation: Optional[float] = None,
+    flywheel: Optional[float] = None,
 ) -> str: ...
 def gallery(out: str, only: Optional[list[str]] = None) -> list[str]: ...
+
+@final
+class Engine:
+    def __new__(
+        cls,
+        crank: float,
+        rod: float,
+        offset: float,
+        omega: float,
+        mass: Optional[float] = None,
+        rod_mass: Optional[float] = None,
+        rod_cg: Optional[float] = None,
+        rod_gyration: Optional[float] = None,
+        gas_force: Optional[float] = None,
+        indicator: Optional[str] = None,
+        bore: Optional[float] = None,
+    ) -> Engine: ...
+    def at(self, degrees: float, unit: str, force_unit: str) -> str: ...
+    def sweep(
+        self, thetas: npt.NDArray[np.float64], out: npt.NDArray[np.float64]
+    ) -> None: ...
+    def turning_moment(
+        self,
+        phases: list[float],
+        fluctuation: Optional[float] = None,
+        flywheel: Optional[float] = None,
+    ) -> str: ...
+
+def check_quadric(links: tuple[float, float, float, float], mode: str) -> None: ...
+def check_slot(crank: float, rod: float, offset: float, rho: float) -> None: ...
+def check_inversion(crank: float, rod: float, offset: float, n: int) -> None: ...
+def quadric_at(
+    links: tuple[float, float, float, float],
+    mode: str,
+    degrees: float,
+    omega: float,
+    unit: str,
+    force_unit: str,
+) -> str: ...
+def slot_at(
+    crank: float,
+    rod: float,
+    offset: float,
+    rho: float,
+    degrees: float,
+    omega: float,
+    unit: str,
+    force_unit: str,
+) -> str: ...
+def inversion_at(
+    crank: float,
+    rod: float,
+    offset: float,
+    n: int,
+    degrees: float,
+    omega: float,
+    unit: str,
+    force_unit: str,
+) -> str: ...
+def chain_check(
+    links: Optional[tuple[float, float, float, float]] = None,
+    slot: Optional[tuple[float, float, float, float]] = None,
+    samples: int = 100000,
+    tolerance: Optional[float] = None,
+) -> tuple[str, bool, list[tuple[str, float, float, float, int, bool]]]: ...
+def engine_check(
+    crank: float,
+    rod: float,
+    offset: float,
+    samples: int = 100000,
+    tolerance: Optional[float] = None,
+) -> tuple[str, bool, list[tuple[str, float, float, float, int, bool, float]]]: ...

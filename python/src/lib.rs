@@ -21,6 +21,10 @@ use slider_crank::render::{FileFormat, to_svg, write_atomic};
 use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
 use std::path::{Path, PathBuf};
 
+mod chain;
+mod check;
+mod dynamics;
+
 /// The Python exception for a library error, with the command line's message
 /// (the one line the command line prints, control characters escaped).
 fn py_err(e: Error) -> PyErr {
@@ -136,6 +140,14 @@ fn sweep(
 /// Angles per thread below which a sweep stays on one thread.
 const MIN_CHUNK: usize = 16_384;
 
+/// The machine's cores, asked once: the standard library finds them by
+/// reading the control group's quota from files, which took about 100 µs
+/// a call, more than a sweep of a thousand angles.
+fn cores() -> usize {
+    static CORES: std::sync::OnceLock<usize> = std::sync::OnceLock::new();
+    *CORES.get_or_init(|| std::thread::available_parallelism().map_or(1, |t| t.get()))
+}
+
 /// Fills the rows of `out` (rows × n) for `thetas`, split by columns over
 /// the machine's cores for long sweeps. Each value depends on its angle
 /// alone, so the split changes no number; the error is that of the first
@@ -151,8 +163,9 @@ fn fill(
     if n == 0 {
         return Ok(());
     }
-    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
-    let chunk = n.div_ceil(threads.min(n.div_ceil(MIN_CHUNK)).max(1));
+    let pieces_wanted = n.div_ceil(MIN_CHUNK);
+    let threads = if pieces_wanted > 1 { cores() } else { 1 };
+    let chunk = n.div_ceil(threads.min(pieces_wanted).max(1));
     let mut pieces: Vec<Vec<&mut [f64]>> = (0..n.div_ceil(chunk)).map(|_| Vec::new()).collect();
     for row in out.chunks_mut(n) {
         for (piece, part) in pieces.iter_mut().zip(row.chunks_mut(chunk)) {
@@ -415,9 +428,11 @@ fn ratios(given: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
 /// arguments (`None`: the table's default).
 #[pyfunction]
 #[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=0.0,
-    rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None))]
+    rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None,
+    engine=None, phases=None, fluctuation=None, flywheel=None))]
 #[allow(clippy::too_many_arguments)]
 fn table(
+    py: Python<'_>,
     name: &str,
     format: &str,
     n: Option<Vec<f64>>,
@@ -432,6 +447,10 @@ fn table(
     decimals: Option<usize>,
     unit: Option<&str>,
     force_unit: Option<&str>,
+    engine: Option<Bound<'_, dynamics::PyEngine>>,
+    phases: Option<Vec<f64>>,
+    fluctuation: Option<f64>,
+    flywheel: Option<f64>,
 ) -> PyResult<String> {
     use slider_crank::table::{self as t, Format, Head, Table};
     let format: Format = parse(format)?;
@@ -492,7 +511,7 @@ fn table(
             (head, rows)
         }
         "kinematics" => {
-            let m = engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
+            let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
             let w = crank_speed(rpm, omega)?;
             let head = t::kinematics_head(&m, w, &with_units(Units::FOOT_POUND)?);
             let rows = angles_or(&range(0.0, 360.0, 30.0))
@@ -502,7 +521,7 @@ fn table(
             (head, rows)
         }
         "forces" => {
-            let m = engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
+            let m = self::engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
             let torque = torque.unwrap_or(NG_TABLE_2_TORQUE);
             if !torque.is_finite() {
                 return Err(py_err(Error::NotFinite {
@@ -518,9 +537,25 @@ fn table(
                 .collect();
             (head, rows)
         }
+        "dynamics" => {
+            let engine =
+                engine.ok_or_else(|| PyValueError::new_err("table dynamics needs an engine"))?;
+            let engine = engine.get().engine();
+            let phases = phases.unwrap_or_else(|| vec![0.0]);
+            let ask = dynamics::flywheel_ask(fluctuation, flywheel)?;
+            let units = with_units(Units::FOOT_POUND)?;
+            let head = py
+                .detach(|| slider_crank::dynamics::dynamics_head(engine, &phases, ask, &units))
+                .map_err(py_err)?;
+            let rows = angles_or(&range(0.0, 360.0, 30.0))
+                .into_iter()
+                .map(|d| slider_crank::dynamics::dynamics_row(engine, &phases, d, decimals))
+                .collect();
+            (head, rows)
+        }
         _ => {
             return Err(PyValueError::new_err(format!(
-                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics and forces"
+                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics, forces and dynamics"
             )));
         }
     };
@@ -580,6 +615,11 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(handout, m)?)?;
     m.add_function(wrap_pyfunction!(table, m)?)?;
     m.add_function(wrap_pyfunction!(gallery, m)?)?;
+    m.add_class::<dynamics::PyEngine>()?;
+    m.add("EXAMPLE_MASS", slider_crank::dynamics::EXAMPLE_MASS)?;
+    m.add("DYNAMICS_ROWS", dynamics::SWEEP_ROWS)?;
+    chain::register(m)?;
+    m.add_function(wrap_pyfunction!(check::engine_check, m)?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -13,7 +13,8 @@ def test_every_public_name_is_documented() -> None:
         item = getattr(sc, name)
         if callable(item):
             assert item.__doc__ and len(item.__doc__) > 60, name
-    for method in ("at", "sweep", "figure", "handout", "exercise"):
+    for method in ("at", "sweep", "figure", "handout", "exercise", "turning_moment",
+                   "curved_slot", "inversion"):
         assert getattr(sc.SliderCrank, method).__doc__, method
 
 

@@ -8,7 +8,7 @@ from typing import Any, List
 import pytest
 
 import slider_crank as sc
-from conftest import REPO
+from conftest import REPO, Cli
 
 nbformat = pytest.importorskip("nbformat")
 nbclient = pytest.importorskip("nbclient")
@@ -22,7 +22,7 @@ def stdout(cell: Any) -> str:
     return "".join(o["text"] for o in cell.get("outputs", []) if o.get("name") == "stdout")
 
 
-def test_the_notebook_runs_and_shows_its_results(tmp_path: Path) -> None:
+def test_the_notebook_runs_and_shows_its_results(tmp_path: Path, cli: Cli) -> None:
     nb = nbformat.read(REPO / "examples/slider-crank.ipynb", as_version=4)
     nbclient.NotebookClient(
         nb, timeout=300, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}
@@ -44,3 +44,16 @@ def test_the_notebook_runs_and_shows_its_results(tmp_path: Path) -> None:
     # The handout is written where the notebook runs.
     written = (tmp_path / "slider-crank-handout.html").read_text(encoding="utf-8")
     assert written == engine.handout(45, rpm=250)
+    # The dynamics: T = F·OM at 60° as analyze prints it, the turning
+    # moment plotted, the turn's mean torque, ΔE and flywheel.
+    d = cli.json(["analyze", "--json", "--angle=60", "--rpm=250", "--mass=10", "--gas-force=2000"])
+    d = d["dynamics"]
+    assert (
+        f"at 60°: F = {d['piston_effort']:.2f} lbf, OM = {d['OM']:.4f} ft, "
+        f"T = F·OM = {d['crank_effort']:.2f} lbf·ft" in stdout(code[4])
+    )
+    assert len(outputs(code[4], "image/png")) == 1
+    turn = engine.turning_moment(rpm=250, fluctuation=0.02, mass=10, gas_force=2000)
+    assert turn.flywheel is not None
+    assert f"mean torque {turn.mean:.6g} lbf·ft, ΔE = {turn.fluctuation:.6g} lbf·ft" in stdout(code[4])
+    assert f"I = {turn.flywheel.inertia:.6g} lbf·s²·ft" in stdout(code[4])

@@ -1,0 +1,287 @@
+//! The engine's dynamics for Python: an [`Engine`] built from the keywords
+//! that mirror `analyze --mass …` and `table dynamics`'s flags, its
+//! dynamics object at one pose (the `dynamics` member of `analyze --json`),
+//! a sweep of its forces and torques into numpy rows, and the turn's
+//! turning moment and flywheel.
+
+use crate::{py_err, units};
+use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use serde_json::{Value, json};
+use slider_crank::dynamics::{
+    Engine, EnginePose, Flywheel, FlywheelAsk, GasForce, IndicatorDiagram, RodMass, TurningMoment,
+    unbalanced_forces,
+};
+use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::{Angle, SliderCrank, Units};
+use std::path::PathBuf;
+
+/// An engine with its masses, gas force and crank speed, validated as
+/// `analyze --mass … --rod-mass … --gas-force … --indicator … --bore …`
+/// validate them (the library's checks and messages).
+#[pyclass(module = "slider_crank._core", name = "Engine", frozen)]
+pub struct PyEngine {
+    engine: Engine,
+}
+
+/// The pairings clap enforces on the command line, in the keywords'
+/// names: the rod's three values together, an indicator diagram with its
+/// bore, and a constant gas force or an indicator diagram, not both.
+fn check_pairs(
+    rod: (Option<f64>, Option<f64>, Option<f64>),
+    gas_force: Option<f64>,
+    indicator: Option<&PathBuf>,
+    bore: Option<f64>,
+) -> PyResult<()> {
+    let missing: Vec<&str> = match rod {
+        (None, None, None) | (Some(_), Some(_), Some(_)) => vec![],
+        (m, cg, k) => [(m, "rod_mass"), (cg, "rod_cg"), (k, "rod_gyration")]
+            .iter()
+            .filter(|(v, _)| v.is_none())
+            .map(|&(_, name)| name)
+            .collect(),
+    };
+    let problem = if !missing.is_empty() {
+        Some(format!(
+            "the rod's mass is given by rod_mass, rod_cg and rod_gyration together: {} not given",
+            missing.join(" and ")
+        ))
+    } else if gas_force.is_some() && indicator.is_some() {
+        Some("gas_force cannot be used with indicator: give a constant gas force or an indicator diagram".into())
+    } else if indicator.is_some() != bore.is_some() {
+        Some(
+            "an indicator diagram needs the cylinder's bore: give indicator and bore together"
+                .into(),
+        )
+    } else {
+        None
+    };
+    problem.map_or(Ok(()), |p| Err(PyValueError::new_err(p)))
+}
+
+#[pymethods]
+impl PyEngine {
+    /// The engine of crank `crank`, rod `rod`, offset `offset` at crank
+    /// speed `omega` (rad/s) with reciprocating mass `mass` (0 when not
+    /// given), a rod of mass `rod_mass` with its centre of mass `rod_cg`
+    /// from the crank pin and radius of gyration `rod_gyration`, and a
+    /// constant `gas_force` or the indicator diagram read from the CSV
+    /// file `indicator` with the cylinder's `bore`.
+    #[new]
+    #[pyo3(signature = (crank, rod, offset, omega, mass=None, rod_mass=None, rod_cg=None,
+        rod_gyration=None, gas_force=None, indicator=None, bore=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        crank: f64,
+        rod: f64,
+        offset: f64,
+        omega: f64,
+        mass: Option<f64>,
+        rod_mass: Option<f64>,
+        rod_cg: Option<f64>,
+        rod_gyration: Option<f64>,
+        gas_force: Option<f64>,
+        indicator: Option<PathBuf>,
+        bore: Option<f64>,
+    ) -> PyResult<Self> {
+        check_pairs(
+            (rod_mass, rod_cg, rod_gyration),
+            gas_force,
+            indicator.as_ref(),
+            bore,
+        )?;
+        let m = SliderCrank::new(crank, rod, offset).map_err(py_err)?;
+        let build = || -> slider_crank::Result<Engine> {
+            let mut engine = Engine::new(m, mass.unwrap_or(0.0), omega)?;
+            if let (Some(m), Some(cg), Some(k)) = (rod_mass, rod_cg, rod_gyration) {
+                engine = engine.with_rod(RodMass::new(m, cg, k)?)?;
+            }
+            if let Some(f) = gas_force {
+                engine = engine.with_gas(GasForce::Constant(f))?;
+            }
+            if let (Some(path), Some(bore)) = (&indicator, bore) {
+                let text = read_text(path, MAX_DATA_BYTES, "indicator diagram")?;
+                let what = format!("indicator diagram {}", path.display());
+                let diagram = IndicatorDiagram::from_csv(&text, bore, &what)?;
+                engine = engine.with_gas(GasForce::Indicator(diagram))?;
+            }
+            Ok(engine)
+        };
+        Ok(Self {
+            engine: build().map_err(py_err)?,
+        })
+    }
+
+    /// The dynamics at `degrees` as `analyze --json` writes its member
+    /// `dynamics`, as JSON text, in the units `unit` and `force_unit`.
+    fn at(&self, degrees: f64, unit: &str, force_unit: &str) -> PyResult<String> {
+        let units = units(unit, force_unit)?;
+        let angle = Angle::from_degrees(degrees).map_err(py_err)?;
+        let at = self.engine.at(angle).map_err(py_err)?;
+        Ok(to_json(&self.engine, &at, angle, &units).to_string())
+    }
+
+    /// Fills `out` (SWEEP_ROWS × n, C order) with the forces and torques
+    /// at the angles `thetas` (degrees), the GIL released; errors with the
+    /// first bad angle's message (nothing is promised of `out` then).
+    fn sweep(
+        &self,
+        py: Python<'_>,
+        thetas: PyReadonlyArray1<'_, f64>,
+        mut out: PyReadwriteArray2<'_, f64>,
+    ) -> PyResult<()> {
+        let n = thetas.len();
+        if out.shape() != [SWEEP_ROWS, n] {
+            return Err(PyValueError::new_err(format!(
+                "out must be {SWEEP_ROWS} rows of {n} values"
+            )));
+        }
+        let thetas = thetas.as_slice()?;
+        let out = out.as_slice_mut()?;
+        py.detach(|| fill(&self.engine, thetas, out))
+            .map_err(py_err)
+    }
+
+    /// The turning moment of cylinders at `phases` (degrees ahead of the
+    /// first) as JSON text: the diagram's work, mean, lobes and
+    /// fluctuation of energy, and the flywheel for the coefficient of
+    /// fluctuation of speed `fluctuation` or the coefficient of the
+    /// flywheel `flywheel` (at most one), `null` with neither.
+    #[pyo3(signature = (phases, fluctuation=None, flywheel=None))]
+    fn turning_moment(
+        &self,
+        py: Python<'_>,
+        phases: Vec<f64>,
+        fluctuation: Option<f64>,
+        flywheel: Option<f64>,
+    ) -> PyResult<String> {
+        let ask = flywheel_ask(fluctuation, flywheel)?;
+        let engine = &self.engine;
+        py.detach(|| {
+            let turn = TurningMoment::new(engine, &phases)?;
+            let (de, w) = (turn.fluctuation, engine.omega());
+            let wheel = match ask {
+                FlywheelAsk::Coefficient(c) => Some(Flywheel::for_coefficient(de, w, c)?),
+                FlywheelAsk::Inertia(i) => Some(Flywheel::for_inertia(de, w, i)?),
+                _ => None,
+            };
+            Ok(json!({"turn": turn, "flywheel": wheel}).to_string())
+        })
+        .map_err(py_err)
+    }
+}
+
+/// What the flywheel is asked for: the inertia for the coefficient of
+/// fluctuation of speed `fluctuation`, or the coefficient of the flywheel
+/// `flywheel` (`--fluctuation`, `--flywheel`: at most one).
+pub fn flywheel_ask(fluctuation: Option<f64>, flywheel: Option<f64>) -> PyResult<FlywheelAsk> {
+    match (fluctuation, flywheel) {
+        (Some(_), Some(_)) => Err(PyValueError::new_err(
+            "fluctuation cannot be used with flywheel: give the coefficient of fluctuation of speed or the flywheel, not both",
+        )),
+        (Some(c), _) => Ok(FlywheelAsk::Coefficient(c)),
+        (_, Some(i)) => Ok(FlywheelAsk::Inertia(i)),
+        _ => Ok(FlywheelAsk::None),
+    }
+}
+
+impl PyEngine {
+    /// The engine.
+    pub fn engine(&self) -> &Engine {
+        &self.engine
+    }
+}
+
+/// The rows `Engine.sweep` fills, in the order of [`sweep_values`].
+pub const SWEEP_ROWS: usize = 13;
+
+/// The values of one pose in the order of the sweep's rows: gas force,
+/// inertia force (exact, and by Klein's construction), piston effort, rod
+/// force, guide thrust, OM, crank effort (F·OM, and by the exact formula),
+/// the rod's torque (0 for a massless rod), the torque on the crank, and
+/// the primary and secondary unbalanced forces.
+fn sweep_values(engine: &Engine, at: &EnginePose, angle: Angle) -> [f64; SWEEP_ROWS] {
+    let b = unbalanced_forces(engine, angle);
+    [
+        at.gas_force,
+        at.inertia_force,
+        at.inertia_force_graphical,
+        at.piston_effort,
+        at.rod_force,
+        at.guide_thrust,
+        at.om,
+        at.crank_effort,
+        at.crank_effort_exact,
+        at.rod.map_or(0.0, |r| r.torque),
+        at.torque,
+        b.primary,
+        b.secondary,
+    ]
+}
+
+/// Fills the rows of `out` (SWEEP_ROWS × n) for `thetas`.
+fn fill(engine: &Engine, thetas: &[f64], out: &mut [f64]) -> slider_crank::Result<()> {
+    let n = thetas.len();
+    for (i, &degrees) in thetas.iter().enumerate() {
+        let angle = Angle::from_degrees(degrees)?;
+        let at = engine.at(angle)?;
+        for (row, v) in sweep_values(engine, &at, angle).into_iter().enumerate() {
+            out[row * n + i] = v + 0.0;
+        }
+    }
+    Ok(())
+}
+
+// What follows mirrors `src/cli/dynamics.rs` (`to_json`), the layout of
+// `analyze --json`'s member `dynamics`; python/tests/test_dynamics.py
+// compares the two digit for digit.
+
+/// +0.0 for −0.0.
+fn num(x: f64) -> f64 {
+    x + 0.0
+}
+
+/// The unit of mass the forces imply: FORCE·s²/LENGTH.
+fn mass_unit(units: &Units) -> String {
+    format!("{}·s²/{}", units.force(), units.length())
+}
+
+/// The dynamics of `engine` at `angle` as `analyze --json` writes it.
+fn to_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
+    let b = unbalanced_forces(engine, angle);
+    let rod = at.rod.map_or(Value::Null, |r| {
+        json!({
+            "inertia_force": [num(r.force[0]), num(r.force[1])],
+            "inertia_couple": num(r.couple),
+            "torque": num(r.torque),
+            "equivalent": {
+                "mass_at_crosshead": num(r.mass_at_crosshead),
+                "mass_at_crank_pin": num(r.mass_at_crank_pin),
+                "correction_couple": num(r.correction_couple),
+                "correction_torque": num(r.correction_torque),
+                "torque": num(r.equivalent_torque),
+            },
+        })
+    });
+    json!({
+        "units": {"force": units.force(), "torque": units.torque(), "mass": mass_unit(units)},
+        "sign": "forces along the stroke positive towards the crank centre; torques counter-clockwise positive",
+        "reciprocating_mass": engine.reciprocating_mass(),
+        "gas_force": num(at.gas_force),
+        "inertia_force": num(at.inertia_force),
+        "inertia_force_klein": num(at.inertia_force_graphical),
+        "piston_effort": num(at.piston_effort),
+        "rod_force": num(at.rod_force),
+        "guide_thrust": num(at.guide_thrust),
+        "OM": num(at.om),
+        "crank_effort": num(at.crank_effort),
+        "crank_effort_exact": num(at.crank_effort_exact),
+        "torque": num(at.torque),
+        "unbalanced": {
+            "primary": num(b.primary), "secondary": num(b.secondary),
+            "exact": num(b.exact), "remainder": num(b.remainder),
+        },
+        "rod": rod,
+    })
+}
