@@ -545,11 +545,11 @@ fn table(
             let ask = dynamics::flywheel_ask(fluctuation, flywheel)?;
             let units = with_units(Units::FOOT_POUND)?;
             let head = py
-                .detach(|| slider_crank::dynamics::dynamics_head(engine, &phases, ask, &units))
+                .detach(|| slider_crank::table::dynamics_head(engine, &phases, ask, &units))
                 .map_err(py_err)?;
             let rows = angles_or(&range(0.0, 360.0, 30.0))
                 .into_iter()
-                .map(|d| slider_crank::dynamics::dynamics_row(engine, &phases, d, decimals))
+                .map(|d| slider_crank::table::dynamics_row(engine, &phases, d, decimals))
                 .collect();
             (head, rows)
         }
