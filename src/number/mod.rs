@@ -1,7 +1,7 @@
 //! Numbers as text, for every layer: in running text ([`plain`]), on the
 //! SVG's grid of page coordinates ([`fmt`]), to fixed decimals as tables
 //! print them ([`fixed`]), and set on a figure with one rule of
-//! significant figures ([`sig`], [`short`], [`format_number`]).
+//! significant figures (`sig`, `short`, [`format_number`]).
 //!
 //! Each writer keeps every double, subnormals and the largest included,
 //! to a bounded width: exponent form (or a power of ten on a figure) where
