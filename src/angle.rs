@@ -21,7 +21,7 @@ pub struct Angle {
 impl Angle {
     /// The angle of `degrees` degrees, reduced exactly.
     ///
-    /// Errors with [`crate::Error::NotFinite`] for NaN or infinity. Any finite
+    /// Errors with [`crate::error::Error::NotFinite`] for NaN or infinity. Any finite
     /// value is accepted: the crank of a valid mechanism turns fully.
     pub fn from_degrees(degrees: f64) -> Result<Self> {
         let degrees = finite("angle", degrees)?;

@@ -153,7 +153,7 @@ impl SliderCrank {
 ///
 /// Derivatives here are with respect to θ; multiply by ω (first) and ω²
 /// (second) for time derivatives at constant angular speed, as
-/// [`crate::Kinematics`] does.
+/// [`crate::analytic::kinematics::Kinematics`] does.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pose {
     mechanism: SliderCrank,

@@ -129,7 +129,7 @@ pub struct Units {
 
 impl Units {
     /// Feet and pounds-force: the textbook's (the §35 engine), and the
-    /// default of the command line's numbers and of [`crate::Scene::new`].
+    /// default of the command line's numbers and of [`crate::scene::Scene::new`].
     pub const FOOT_POUND: Units = Units {
         length: Unit::FOOT,
         force: Unit::POUND_FORCE,

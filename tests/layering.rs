@@ -1,8 +1,9 @@
 //! The layering of `src/` (docs/design.md, "Layering"): every module
 //! imports only from the modules its row of the table names, read from
 //! the `use` lines and `crate::` paths of the code outside its tests; a
-//! name the crate root re-exports counts as its defining module's. The
-//! crate root only declares modules and re-exports.
+//! name the crate root re-exports is imported from its defining module,
+//! never through the root. The crate root only declares modules and
+//! re-exports.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::Path;
@@ -99,6 +100,36 @@ fn reached(line: &str, roots: &BTreeMap<String, String>) -> Vec<String> {
     out
 }
 
+/// A name of the crate root's re-exports reached through the root
+/// (`crate::Angle`, `crate::{Angle, …}`), if the line has one: modules
+/// import a name from the module that defines it, so that no arrow runs
+/// up through the root. (A module's own name, `crate::angle::…`, is not
+/// one: the root's names are its types, constants and functions.)
+fn root_name_in(line: &str, roots: &BTreeMap<String, String>) -> Option<String> {
+    let mut rest = line;
+    while let Some(at) = rest.find("crate::") {
+        let after = &rest[at + "crate::".len()..];
+        let heads: Vec<&str> = match after.strip_prefix('{') {
+            Some(g) => g[..g.find('}').unwrap_or(g.len())]
+                .split(',')
+                .map(str::trim)
+                .collect(),
+            None => vec![after],
+        };
+        for head in heads {
+            let end = head
+                .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .unwrap_or(head.len());
+            let name = &head[..end];
+            if roots.contains_key(name) {
+                return Some(name.to_string());
+            }
+        }
+        rest = after;
+    }
+    None
+}
+
 #[test]
 fn every_import_runs_down_the_layering_table() {
     let table = allowed();
@@ -108,6 +139,7 @@ fn every_import_runs_down_the_layering_table() {
     files(Path::new("src"), &mut paths);
     paths.sort();
     let mut wrong = Vec::new();
+    let mut through_root = Vec::new();
     let mut seen = BTreeSet::new();
     for path in &paths {
         let rel = path.strip_prefix("src").unwrap();
@@ -134,6 +166,9 @@ fn every_import_runs_down_the_layering_table() {
             if code.starts_with("//") {
                 continue;
             }
+            if let Some(name) = root_name_in(code, &roots) {
+                through_root.push(format!("{}:{}: crate::{name}", path.display(), n + 1));
+            }
             for target in reached(code, &roots) {
                 let known = table.contains_key(&target);
                 if known && target != module && !may.contains(&target) {
@@ -146,6 +181,11 @@ fn every_import_runs_down_the_layering_table() {
         wrong.is_empty(),
         "imports against the layering:\n{}",
         wrong.join("\n")
+    );
+    assert!(
+        through_root.is_empty(),
+        "names imported through the crate root (import them from their module):\n{}",
+        through_root.join("\n")
     );
     // Every row names a module that exists, and every module has a row.
     let rows: BTreeSet<String> = table.keys().cloned().collect();
@@ -163,6 +203,10 @@ fn the_reader_finds_modules_behind_paths_groups_and_root_names() {
     );
     let line = "use crate::{Angle, geom::Point}; let x = crate::render::fmt(1.0);";
     assert_eq!(reached(line, &roots), ["angle", "geom", "render"]);
+    assert_eq!(root_name_in(line, &roots).as_deref(), Some("Angle"));
+    let call = "let w = crate::rpm_to_omega(250.0);";
+    assert_eq!(root_name_in(call, &roots).as_deref(), Some("rpm_to_omega"));
+    assert_eq!(root_name_in("use crate::angle::Angle;", &roots), None);
 }
 
 /// The crate root declares modules and re-exports, nothing else: no

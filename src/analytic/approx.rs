@@ -92,7 +92,7 @@ pub fn simple_harmonic_position(pose: &Pose) -> Approximation {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Angle, SliderCrank};
+    use crate::{angle::Angle, mechanism::SliderCrank};
 
     #[test]
     fn approximations_are_exact_at_dead_centres_where_they_should_be() {

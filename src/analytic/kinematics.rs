@@ -5,7 +5,7 @@ use crate::mechanism::Pose;
 
 /// Largest crank speed |ω| accepted, in rad/s (any unit of time: choose one
 /// that brings the speed in range). With lengths up to
-/// [`crate::MAX_LENGTH`], ω² times a length stays far from overflow; what
+/// [`crate::mechanism::MAX_LENGTH`], ω² times a length stays far from overflow; what
 /// is left near the limit of assembly [`Kinematics::new`] checks.
 pub const MAX_OMEGA: f64 = 1e100;
 
@@ -134,8 +134,8 @@ impl Kinematics {
 mod tests {
     #[test]
     fn serialises_with_its_field_names() {
-        let m = crate::SliderCrank::in_line(0.5, 3.0).unwrap();
-        let k = super::Kinematics::new(&m.pose(crate::Angle::deg(45.0)), 26.16).unwrap();
+        let m = crate::mechanism::SliderCrank::in_line(0.5, 3.0).unwrap();
+        let k = super::Kinematics::new(&m.pose(crate::angle::Angle::deg(45.0)), 26.16).unwrap();
         let json: serde_json::Value = serde_json::to_value(k).unwrap();
         assert_eq!(json["velocity"].as_f64(), Some(k.velocity));
         assert_eq!(json["rod_angle"].as_f64(), Some(k.rod_angle));
@@ -146,7 +146,7 @@ mod tests {
     }
 
     use super::*;
-    use crate::{Angle, SliderCrank};
+    use crate::{angle::Angle, mechanism::SliderCrank};
 
     #[test]
     fn rpm_conversion() {

@@ -187,7 +187,7 @@ pub fn transmission_angle_ng_degrees(pose: &Pose) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Angle, SliderCrank};
+    use crate::{angle::Angle, mechanism::SliderCrank};
 
     fn pose(d: f64) -> Pose {
         SliderCrank::in_line(0.025, 0.072)

@@ -5,7 +5,7 @@
 use crate::error::{Error, Result};
 use crate::figure::{Figure, PageUnit};
 use crate::render::to_svg;
-use crate::{Angle, Scene};
+use crate::{angle::Angle, scene::Scene};
 
 /// One frame: the crank angle and the still figure drawn there.
 #[derive(Debug, Clone, PartialEq)]
@@ -183,7 +183,7 @@ fn check_evaluations(scene: &Scene, spent: u64, done: u64, count: u64) -> Result
 // cannot fail: Fig. 66 is a mechanism figure, whose scene always builds.
 #[allow(clippy::expect_used)]
 pub(super) fn check_evaluations_for_test(spent: u64, done: u64, count: u64) -> Result<()> {
-    let scene = crate::FigureName::Fig66Kisch
+    let scene = crate::catalogue::FigureName::Fig66Kisch
         .scene()
         .expect("a seed figure");
     check_evaluations(&scene, spent, done, count)

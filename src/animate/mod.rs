@@ -27,7 +27,7 @@ pub use frames::{Frame, MAX_EVALUATIONS, prefixed};
 
 use crate::error::{Error, Result};
 use crate::figure::PageUnit;
-use crate::{Angle, Scene};
+use crate::{angle::Angle, scene::Scene};
 
 /// Frames per revolution unless asked otherwise: one every 5°.
 pub const DEFAULT_FRAMES: usize = 72;
@@ -118,7 +118,7 @@ impl Animation {
         self.frames.iter().map(Frame::height).fold(0.0, f64::max)
     }
 
-    /// The unit the page's size is written in ([`crate::Page::unit`]).
+    /// The unit the page's size is written in ([`crate::scene::Page::unit`]).
     pub fn size_unit(&self) -> PageUnit {
         self.sheet.unit
     }
@@ -352,7 +352,7 @@ fn angles(start: Angle, count: usize) -> Result<Vec<Angle>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::SliderCrank;
+    use crate::mechanism::SliderCrank;
 
     fn engine() -> Scene {
         Scene::new(SliderCrank::in_line(0.5, 3.0).unwrap(), Angle::deg(30.0))

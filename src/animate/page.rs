@@ -70,7 +70,7 @@ const SCRIPT: &str = "
 fn heading(animation: &Reel) -> String {
     match animation.title() {
         Some(t) => t.to_string(),
-        None => crate::FigureName::from_name(animation.name())
+        None => crate::catalogue::FigureName::from_name(animation.name())
             .map(|f| f.source())
             .unwrap_or_else(|_| animation.name().to_string()),
     }

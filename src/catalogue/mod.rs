@@ -1,6 +1,6 @@
 //! The catalogue of the seeds' named figures, with their own parameters,
 //! and the scene files that start from them: mechanism figures drawn by a
-//! [`Scene`](crate::Scene), and diagrams (plots against θ, time or
+//! [`Scene`](crate::scene::Scene), and diagrams (plots against θ, time or
 //! position, polar diagrams, centrodes, Ng's graphs, the chain's figures).
 //!
 //! It sits above the scenes and the diagrams it builds from, and below the

@@ -6,7 +6,7 @@ use super::{FigureOptions, diagrams, print};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
-use crate::{Angle, SliderCrank, Units};
+use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
 use crate::analytic::statics::NG_TORQUE;
 

@@ -3,7 +3,7 @@
 use crate::error::{Error, Result};
 use crate::figure::{Font, PageLength, PageUnit, Style, Title};
 use crate::scene::Page;
-use crate::{Angle, Layer, Notation, SliderCrank, Unit};
+use crate::{angle::Angle, mechanism::SliderCrank, scene::Layer, scene::Notation, units::Unit};
 
 /// Which calibration line `ng-fig-7-calibration` draws.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -92,7 +92,7 @@ pub struct FigureOptions {
     pub length_unit: Option<Unit>,
     /// The name of the force unit; torques are written force·length. By
     /// default the one that goes with [`FigureOptions::length_unit`] (`N`
-    /// for `mm`, `lbf` for `in`: [`crate::Unit::usual_force`]), else the
+    /// for `mm`, `lbf` for `in`: [`crate::units::Unit::usual_force`]), else the
     /// figure's own (`lbf` for the textbook's, `N` for Ng's).
     pub force_unit: Option<Unit>,
     /// The letters of a mechanism figure (default: the seed's).
@@ -113,12 +113,12 @@ pub struct FigureOptions {
     /// (`fig-61-centrodes`, `fig-64-velocity-diagrams`, `coupler-curves`).
     pub mirror: Option<bool>,
     /// The page's width (default the figure's own); in mm, cm, in or pt, the SVG
-    /// gives its size in that unit ([`crate::Page::sized`]).
+    /// gives its size in that unit ([`crate::scene::Page::sized`]).
     pub width: Option<PageLength>,
     /// The page's height (default the figure's own, which a mechanism
     /// figure's enlarged detail grows): given, a mechanism figure ends
     /// within it or is refused naming the height it needs
-    /// ([`crate::Page::with_height_held`]); a diagram lays its bands out
+    /// ([`crate::scene::Page::with_height_held`]); a diagram lays its bands out
     /// on it.
     pub height: Option<PageLength>,
     /// A title, set below the figure and written as the SVG's `<title>`.

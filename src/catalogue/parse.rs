@@ -8,7 +8,7 @@ use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
 use crate::figure::{Font, PageLength, Style, Title};
 use crate::scene::{Layer, Notation, Page, Scene, valid};
-use crate::{Angle, SliderCrank, Unit};
+use crate::{angle::Angle, mechanism::SliderCrank, units::Unit};
 use serde::Deserialize;
 use std::ops::Range;
 use toml::Spanned;
@@ -358,7 +358,10 @@ fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
             w.span(),
             "give either `rpm` or `omega`, not both",
         )),
-        (Some(n), None) => Ok(Some((crate::rpm_to_omega(*n.get_ref()), n.span()))),
+        (Some(n), None) => Ok(Some((
+            crate::analytic::kinematics::rpm_to_omega(*n.get_ref()),
+            n.span(),
+        ))),
         (None, Some(w)) => Ok(Some((*w.get_ref(), w.span()))),
         (None, None) => Ok(None),
     }

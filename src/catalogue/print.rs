@@ -46,7 +46,7 @@ fn speed(omega: f64) -> String {
     let round: f64 = format!("{rpm:.9e}").parse().unwrap_or(rpm);
     match [round, rpm]
         .into_iter()
-        .find(|n| crate::rpm_to_omega(*n) == omega)
+        .find(|n| crate::analytic::kinematics::rpm_to_omega(*n) == omega)
     {
         Some(n) => format!("rpm = {}", number(n)),
         None => format!("omega = {}", number(omega)),
@@ -82,7 +82,7 @@ const MECHANISM: &str = "Crank radius r, rod length l (> r + |e|) and offset e o
 const UNITS: &str = "The names of the units, written beside quantities; no number is converted.";
 const PAGE: &str = "The page: a number of page units (px, 96 to the inch), or a text with its unit, \"120mm\" or \"4.5in\".";
 
-fn mechanism_table(out: &mut String, m: &crate::SliderCrank) {
+fn mechanism_table(out: &mut String, m: &crate::mechanism::SliderCrank) {
     out.push_str("\n[mechanism]\n");
     comment(out, MECHANISM);
     let _ = writeln!(out, "crank = {}", number(m.crank()));
@@ -90,7 +90,7 @@ fn mechanism_table(out: &mut String, m: &crate::SliderCrank) {
     let _ = writeln!(out, "offset = {}", number(m.offset()));
 }
 
-fn units_table(out: &mut String, units: &crate::Units) {
+fn units_table(out: &mut String, units: &crate::units::Units) {
     out.push_str("\n[units]\n");
     comment(out, UNITS);
     let _ = writeln!(out, "length = {}", text(units.length().as_str()));
@@ -255,14 +255,14 @@ pub(crate) fn diagram(name: FigureName) -> String {
         key(
             &mut out,
             "Crank speed, revolutions per minute (or omega, rad/s), positive.",
-            &speed(crate::rpm_to_omega(250.0)),
+            &speed(crate::analytic::kinematics::rpm_to_omega(250.0)),
         );
     }
     key(&mut out, STYLE, "style = \"textbook\"");
     key(
         &mut out,
         FONT,
-        &format!("font = {}", text(crate::Font::default().name())),
+        &format!("font = {}", text(crate::figure::Font::default().name())),
     );
     if uses.contains(&"--mirror") {
         key(
@@ -328,8 +328,14 @@ mod tests {
 
     #[test]
     fn speeds_read_back() {
-        assert_eq!(speed(crate::rpm_to_omega(250.0)), "rpm = 250");
-        assert_eq!(speed(crate::rpm_to_omega(1200.0)), "rpm = 1200");
+        assert_eq!(
+            speed(crate::analytic::kinematics::rpm_to_omega(250.0)),
+            "rpm = 250"
+        );
+        assert_eq!(
+            speed(crate::analytic::kinematics::rpm_to_omega(1200.0)),
+            "rpm = 1200"
+        );
         assert_eq!(speed(26.16), "omega = 26.16");
     }
 
@@ -337,7 +343,9 @@ mod tests {
     fn a_scene_reads_back_to_itself() {
         use crate::construct::CouplerPoint;
         use crate::figure::Title;
-        use crate::{Angle, Page, SliderCrank, Style, Units};
+        use crate::{
+            angle::Angle, figure::Style, mechanism::SliderCrank, scene::Page, units::Units,
+        };
         let angles = [30.0, 120.0, 212.5].map(Angle::deg);
         let page = Page::sized("160mm".parse().unwrap(), "4.5in".parse().unwrap(), 12.5).unwrap();
         let scene = Scene::new(SliderCrank::new(25.0, 72.0, -3.5).unwrap(), angles[0])
@@ -345,8 +353,8 @@ mod tests {
             .with_angles(angles.to_vec())
             .with_layers([Layer::Mechanism, Layer::Coupler, Layer::Torque])
             .with_style(Style::Handout)
-            .with_font(crate::Font::LibertinusSerif)
-            .with_notation(crate::Notation::Ng)
+            .with_font(crate::figure::Font::LibertinusSerif)
+            .with_notation(crate::scene::Notation::Ng)
             .with_mirror(true)
             .with_page(page)
             .with_omega(-26.16)
@@ -357,7 +365,7 @@ mod tests {
             .with_tolerance(0.005);
         let text = super::scene(FigureName::Fig67Example, &scene);
         match super::super::parse::parse(&text).unwrap() {
-            crate::SceneFile::Mechanism(back) => assert_eq!(back, scene, "{text}"),
+            crate::catalogue::SceneFile::Mechanism(back) => assert_eq!(back, scene, "{text}"),
             _ => panic!("a diagram"),
         }
     }

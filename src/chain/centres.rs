@@ -10,7 +10,7 @@
 //! the perpendicular at C: O_bd = D and O_ac = E.
 //!
 //! Which constructions generalise to the curved slot (centre O_cd on the
-//! perpendicular to the stroke through C, [`crate::CylindricChain`]):
+//! perpendicular to the stroke through C, [`crate::chain::CylindricChain`]):
 //!
 //! - **E** carries over unchanged: O_ac is still where the rod produced meets
 //!   the perpendicular through C, because O_cd lies on it. CE / CB is now the
@@ -318,7 +318,7 @@ fn sine(u: Vector, v: Vector) -> f64 {
 mod tests {
     use super::*;
     use crate::chain::{Assembly, CylindricChain, QuadricChain};
-    use crate::{Angle, SliderCrank};
+    use crate::{angle::Angle, mechanism::SliderCrank};
 
     #[test]
     fn straight_slot_centres_match_the_existing_constructions() {

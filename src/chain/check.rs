@@ -261,7 +261,7 @@ fn angles(samples: usize) -> Vec<Angle> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::SliderCrank;
+    use crate::mechanism::SliderCrank;
 
     #[test]
     fn sweeps_pass_at_1e_12() {

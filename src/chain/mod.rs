@@ -10,7 +10,7 @@
 //! One concept per file: [`QuadricChain`] (four lengths, both assembly
 //! modes, Grashof class, reach, toggles and change points),
 //! [`CylindricChain`] (the curved slot, computed from its curvature so that
-//! κ = 0 is today's [`crate::SliderCrank`]), [`ChainCentres`] (the six
+//! κ = 0 is today's [`crate::mechanism::SliderCrank`]), [`ChainCentres`] (the six
 //! virtual centres of any of them, Kennedy's theorem, and the velocity and
 //! acceleration constructions carried over to the curved slot), and
 //! [`InvertedChain`] (the four inversions).

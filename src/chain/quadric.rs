@@ -165,7 +165,7 @@ pub struct QuadricChain {
 
 impl QuadricChain {
     /// Validates the four lengths (each finite, positive, within
-    /// [`crate::MIN_LENGTH`, `crate::MAX_LENGTH`]); the longest must be
+    /// [`crate::mechanism::MIN_LENGTH`, `crate::mechanism::MAX_LENGTH`]); the longest must be
     /// shorter than the other three together, else the chain is rigid or
     /// cannot close. Uses [`CLOSURE_TOLERANCE`].
     pub fn new(crank: f64, coupler: f64, lever: f64, frame: f64) -> Result<Self> {

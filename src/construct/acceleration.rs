@@ -65,7 +65,7 @@ impl AccelerationPoints {
     /// construction: −CG. Not a ratio of two accelerations: it is the
     /// piston acceleration per ω² at constant ω (d²s/dt² = ω² d²s/dθ²), the
     /// construction's counterpart of
-    /// [`Pose::position_acceleration`](crate::Pose::position_acceleration).
+    /// [`Pose::position_acceleration`](crate::mechanism::Pose::position_acceleration).
     pub fn acceleration_ratio(&self) -> f64 {
         -self.g.x
     }
@@ -82,7 +82,7 @@ impl AccelerationPoints {
     /// crank angle θ (dimensionless, per rad²), read off the construction:
     /// FG / l. The rod's angular acceleration per ω² at constant ω, the
     /// counterpart of
-    /// [`Pose::obliquity_acceleration`](crate::Pose::obliquity_acceleration).
+    /// [`Pose::obliquity_acceleration`](crate::mechanism::Pose::obliquity_acceleration).
     pub fn rod_angular_acceleration_ratio(&self) -> f64 {
         self.fg() / self.rod
     }

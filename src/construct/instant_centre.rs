@@ -44,7 +44,7 @@ impl InstantCentre {
     /// the sign of the rod's turning (rod angular velocity dφ/dt = ω dφ/dθ,
     /// of magnitude ω · CB / BD, textbook §37); 0 when D is at infinity.
     /// The counterpart of
-    /// [`Pose::obliquity_rate`](crate::Pose::obliquity_rate).
+    /// [`Pose::obliquity_rate`](crate::mechanism::Pose::obliquity_rate).
     pub fn rod_angular_velocity_ratio(&self) -> f64 {
         // The rod turns about D: ω (B − C) = Ω (B − D) with Ω the rod's
         // counter-clockwise rate, and dφ/dt = −Ω. B − D = (B − C) − (D − C).

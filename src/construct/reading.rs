@@ -7,7 +7,7 @@ use super::{InstantCentre, Kisch, VelocityLine};
 use crate::analytic::statics::{self, Friction};
 use crate::error::{Error, Result};
 use crate::geom::{Intersection, Point};
-use crate::{Kinematics, Pose};
+use crate::{analytic::kinematics::Kinematics, mechanism::Pose};
 
 /// The values read off the constructions at a pose, scaled to time rates at
 /// the crank speed ω (textbook §36–37): the piston velocity ω · CE, its
@@ -196,7 +196,7 @@ pub(crate) fn check_load(torque: f64, mu: f64) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Angle, SliderCrank};
+    use crate::{angle::Angle, mechanism::SliderCrank};
 
     #[test]
     fn the_constructions_give_the_exact_values() {

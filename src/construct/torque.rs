@@ -111,7 +111,7 @@ impl TorqueLine {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::SliderCrank;
+    use crate::mechanism::SliderCrank;
 
     fn line(m: &SliderCrank, degrees: f64) -> (Pose, TorqueLine) {
         let pose = m.pose(Angle::deg(degrees));

@@ -47,7 +47,7 @@ impl VelocityLine {
     /// ds/dθ, the derivative of the slider's position s = x_A against the
     /// crank angle θ (length per rad), read off the construction: −CE. Not a
     /// ratio of two velocities: the slider velocity per ω (ds/dt = ω ds/dθ),
-    /// the counterpart of [`Pose::position_rate`](crate::Pose::position_rate).
+    /// the counterpart of [`Pose::position_rate`](crate::mechanism::Pose::position_rate).
     pub fn velocity_ratio(&self) -> f64 {
         -self.e.y
     }

@@ -91,7 +91,7 @@ pub struct TraceOptions {
     pub max_segments: usize,
     /// The most evaluations of the curve one trace may make (default
     /// 1 000 000, well under a second); more is an error
-    /// ([`crate::Error::Limit`]), so that no curve takes unbounded time.
+    /// ([`crate::error::Error::Limit`]), so that no curve takes unbounded time.
     pub max_evaluations: usize,
 }
 
@@ -142,7 +142,7 @@ impl Default for TraceOptions {
 /// gives an empty path.
 ///
 /// Errors: a tolerance that is not finite and positive, a range that is not
-/// finite or not increasing, zero pieces; and [`crate::Error::Limit`] for a
+/// finite or not increasing, zero pieces; and [`crate::error::Error::Limit`] for a
 /// curve that cannot be fitted within the depth limit (a jump, for
 /// example), more segments or more evaluations than allowed.
 pub fn trace<C: Curve + ?Sized>(

@@ -3,7 +3,7 @@
 use super::Curve;
 use crate::construct::{Centrode, CentrodeKind, CouplerPoint};
 use crate::geom::{Point, Vector};
-use crate::{Angle, SliderCrank};
+use crate::{angle::Angle, mechanism::SliderCrank};
 
 /// Radians per degree: derivatives with respect to θ in radians times this
 /// are per degree.

@@ -182,7 +182,7 @@ impl Plot {
     }
 
     /// A plot without axes with the given map and plot area (a mechanism
-    /// panel taken over from a [`crate::Scene`]), legends measured in
+    /// panel taken over from a [`crate::scene::Scene`]), legends measured in
     /// `font`.
     pub(crate) fn with_map(
         name: &str,

@@ -25,7 +25,7 @@ pub struct Engine {
 
 impl Engine {
     /// An engine with reciprocating mass `reciprocating` (≥ 0) at crank
-    /// speed `omega` (rad/s, as [`crate::Kinematics::new`] takes it), a
+    /// speed `omega` (rad/s, as [`crate::analytic::kinematics::Kinematics::new`] takes it), a
     /// massless rod and no gas force.
     ///
     /// Errors: a mass that is negative or not finite, a speed out of

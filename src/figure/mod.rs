@@ -1,6 +1,6 @@
 //! Figures: an immutable model of panels and primitives in world
 //! coordinates and the [`Style`] they are drawn in, built by a
-//! [`crate::Scene`] or a [diagram](crate::catalogue) and written by the
+//! [`crate::scene::Scene`] or a [diagram](crate::catalogue) and written by the
 //! [renderer](super::render).
 //!
 //! Data flows one way: scene → constructions its layers ask for → this

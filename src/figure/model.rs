@@ -595,7 +595,7 @@ impl Figure {
     /// The same figure set in another face. Layout already made with
     /// another face's widths (plot margins, legends) is kept: build the
     /// figure with the face instead where that matters
-    /// ([`crate::Scene::with_font`], [`crate::catalogue::FigureOptions::font`]).
+    /// ([`crate::scene::Scene::with_font`], [`crate::catalogue::FigureOptions::font`]).
     pub fn with_font(mut self, font: Font) -> Self {
         self.font = font;
         self

@@ -4,7 +4,7 @@
 
 use super::quote::{shell_word, url_path};
 use super::{Gallery, SceneEntry};
-use crate::FigureName;
+use crate::catalogue::FigureName;
 use crate::html::document;
 use crate::render::FileFormat;
 use crate::table::{Table, TableName};

@@ -19,7 +19,7 @@ use crate::error::{Error, Result};
 use crate::figure::Font;
 use crate::input::{MAX_SCENE_BYTES, read_text};
 use crate::render::FileFormat;
-use crate::{FigureName, SceneFile, Style};
+use crate::{catalogue::FigureName, catalogue::SceneFile, figure::Style};
 use serde::Deserialize;
 use std::path::Path;
 use toml::Spanned;

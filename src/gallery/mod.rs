@@ -38,7 +38,7 @@ use crate::error::{Error, Result};
 use crate::figure::Font;
 use crate::render::{FileFormat, to_svg};
 use crate::table::{Format, TableName};
-use crate::{FigureName, Scene, Style};
+use crate::{catalogue::FigureName, figure::Style, scene::Scene};
 
 /// The name of the gallery's index page.
 pub const INDEX: &str = "index.html";

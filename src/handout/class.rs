@@ -14,7 +14,7 @@ use super::steps::{Row, rows, short, show};
 use super::{Handout, Paper};
 use crate::error::{Error, Result};
 use crate::html::{document, rich};
-use crate::{Angle, SliderCrank};
+use crate::{angle::Angle, mechanism::SliderCrank};
 use maud::html;
 
 /// Most engines in a class.
@@ -100,7 +100,7 @@ impl Class {
             h.mechanism = mechanism;
             h.angle = Angle::from_degrees(angle)?;
             h = h
-                .with_omega(crate::rpm_to_omega(rpm))?
+                .with_omega(crate::analytic::kinematics::rpm_to_omega(rpm))?
                 .with_title(format!("Exercise {}", handouts.len() + 1));
             handouts.push(h);
         }
@@ -217,9 +217,9 @@ mod tests {
     fn a_sheet_prints_the_very_engine_its_key_works() {
         // Issue 22: l = 1147.5 mm was printed 1148, and the key used 1147.5.
         for unit in ["mm", "ft", "in", "m"] {
-            let t = template().with_units(crate::Units::new(
+            let t = template().with_units(crate::units::Units::new(
                 unit.parse().unwrap(),
-                crate::Unit::NEWTON,
+                crate::units::Unit::NEWTON,
             ));
             for h in Class::draw(300, 7, &t).unwrap().handouts() {
                 let m = h.mechanism();
@@ -227,7 +227,7 @@ mod tests {
                     assert_eq!(short(x).parse::<f64>(), Ok(x), "{unit}: {x}");
                 }
                 let rpm: f64 = short(h.rpm()).parse().unwrap();
-                assert_eq!(crate::rpm_to_omega(rpm), h.omega());
+                assert_eq!(crate::analytic::kinematics::rpm_to_omega(rpm), h.omega());
             }
         }
     }

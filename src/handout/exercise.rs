@@ -13,7 +13,7 @@ use crate::construct::Reading;
 use crate::error::Result;
 use crate::html::{document, rich};
 use crate::render::to_svg;
-use crate::{FigureName, Layer};
+use crate::{catalogue::FigureName, scene::Layer};
 use maud::html;
 
 /// Page units of a grid square, about: 4.5 mm when a 760-unit figure is

@@ -6,7 +6,7 @@ use crate::catalogue::FigureOptions;
 use crate::error::Result;
 use crate::figure::{Figure, Panel, Role};
 use crate::render::{fmt, to_svg};
-use crate::{FigureName, Layer};
+use crate::{catalogue::FigureName, scene::Layer};
 
 /// The mechanism figure `name` (one drawn by a scene) for the handout's
 /// engine, pose, speed and units; `layers` in place of the figure's own
@@ -176,7 +176,7 @@ pub(super) fn under_drawing(svg: &str, layer: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Angle, SliderCrank};
+    use crate::{angle::Angle, mechanism::SliderCrank};
 
     #[test]
     fn ids_are_prefixed_and_nothing_refers_to_one() {

@@ -46,7 +46,7 @@ pub use random::SplitMix64;
 use crate::analytic::kinematics::check_omega;
 use crate::construct::Reading;
 use crate::error::{Error, Result};
-use crate::{Angle, SliderCrank, Units};
+use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
 /// The paper a page is printed on.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -111,7 +111,7 @@ impl Handout {
         Self {
             mechanism,
             angle,
-            omega: crate::rpm_to_omega(250.0),
+            omega: crate::analytic::kinematics::rpm_to_omega(250.0),
             units: Units::FOOT_POUND,
             torque: None,
             friction: 0.0,

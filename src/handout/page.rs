@@ -256,7 +256,7 @@ fn speed_flag(omega: f64) -> String {
     let rpm = omega * 60.0 / std::f64::consts::TAU;
     (0..=12)
         .map(|digits| format!("{rpm:.digits$}"))
-        .find(|text| text.parse().map(crate::rpm_to_omega) == Ok(omega))
+        .find(|text| text.parse().map(crate::analytic::kinematics::rpm_to_omega) == Ok(omega))
         .map(|text| format!("--rpm {}", plain(text.parse().unwrap_or(rpm))))
         .unwrap_or_else(|| format!("--omega {}", plain(omega)))
 }
@@ -354,15 +354,21 @@ mod tests {
         let (name, value) = flag.split_once(' ').unwrap();
         let value: f64 = value.parse().unwrap();
         match name {
-            "--rpm" => crate::rpm_to_omega(value),
+            "--rpm" => crate::analytic::kinematics::rpm_to_omega(value),
             _ => value,
         }
     }
 
     #[test]
     fn the_command_gives_the_speed_as_it_was_given() {
-        assert_eq!(speed_flag(crate::rpm_to_omega(1500.0)), "--rpm 1500");
-        assert_eq!(speed_flag(crate::rpm_to_omega(33.25)), "--rpm 33.25");
+        assert_eq!(
+            speed_flag(crate::analytic::kinematics::rpm_to_omega(1500.0)),
+            "--rpm 1500"
+        );
+        assert_eq!(
+            speed_flag(crate::analytic::kinematics::rpm_to_omega(33.25)),
+            "--rpm 33.25"
+        );
         for omega in [10.0, 157.07963267948966, 1e-3, 0.1 + 0.2] {
             assert_eq!(given(&speed_flag(omega)), omega, "{omega}");
         }

@@ -36,23 +36,23 @@ pub use svg::to_svg;
 pub use svg::to_svg_with_fonts;
 
 /// Renders SVG text to PNG bytes: built without the `png` feature, this
-/// returns [`Error::Unsupported`](crate::Error::Unsupported) whatever the
+/// returns [`Error::Unsupported`](crate::error::Error::Unsupported) whatever the
 /// input (build with `features = ["png"]` for PNG output).
 #[cfg(not(feature = "png"))]
-pub fn to_png(svg: &str, scale: f32) -> crate::Result<Vec<u8>> {
+pub fn to_png(svg: &str, scale: f32) -> crate::error::Result<Vec<u8>> {
     let _ = (svg, scale);
-    Err(crate::Error::Unsupported(
+    Err(crate::error::Error::Unsupported(
         "PNG output needs the `png` feature of slider-crank, which this build leaves out: write SVG instead".into(),
     ))
 }
 
 /// Renders SVG text to PDF bytes: built without the `pdf` feature, this
-/// returns [`Error::Unsupported`](crate::Error::Unsupported) whatever the
+/// returns [`Error::Unsupported`](crate::error::Error::Unsupported) whatever the
 /// input (build with `features = ["pdf"]` for PDF output).
 #[cfg(not(feature = "pdf"))]
-pub fn to_pdf(svg: &str) -> crate::Result<Vec<u8>> {
+pub fn to_pdf(svg: &str) -> crate::error::Result<Vec<u8>> {
     let _ = svg;
-    Err(crate::Error::Unsupported(
+    Err(crate::error::Error::Unsupported(
         "PDF output needs the `pdf` feature of slider-crank, which this build leaves out: write SVG instead".into(),
     ))
 }
@@ -63,7 +63,7 @@ mod tests {
     #[test]
     fn png_without_the_feature_is_an_error_that_names_it() {
         let err = super::to_png("<svg/>", 1.0).unwrap_err();
-        assert!(matches!(err, crate::Error::Unsupported(_)));
+        assert!(matches!(err, crate::error::Error::Unsupported(_)));
         assert!(err.to_string().contains("`png` feature"), "{err}");
     }
 
@@ -71,7 +71,7 @@ mod tests {
     #[test]
     fn pdf_without_the_feature_is_an_error_that_names_it() {
         let err = super::to_pdf("<svg/>").unwrap_err();
-        assert!(matches!(err, crate::Error::Unsupported(_)));
+        assert!(matches!(err, crate::error::Error::Unsupported(_)));
         assert!(err.to_string().contains("`pdf` feature"), "{err}");
     }
 }

@@ -44,7 +44,7 @@ const SYSTEM_INFO: SystemInfo = SystemInfo {
 
 /// Renders SVG text to the bytes of a one-page vector PDF, the page the
 /// SVG's size at [`POINTS_PER_UNIT`]. Letters are set in the bundled
-/// faces ([`crate::Font`]) whatever fonts the machine has, and embedded.
+/// faces ([`crate::figure::Font`]) whatever fonts the machine has, and embedded.
 ///
 /// Errors: SVG that cannot be read, and what the PDF writer does not draw
 /// ([`Error::Unsupported`]: gradients, patterns, images, masks, filters,
@@ -578,7 +578,7 @@ fn deflate(data: &[u8]) -> Result<Vec<u8>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::FigureName;
+    use crate::catalogue::FigureName;
     use crate::catalogue::FigureOptions;
     use crate::render::to_svg;
 

@@ -14,7 +14,7 @@ pub const MAX_PNG_PIXELS: u64 = 24_000_000;
 
 /// Renders SVG text to PNG bytes at `scale` pixels per page unit (1 for
 /// the page size, 2 for a sharper picture). Letters are set in the
-/// bundled faces ([`Font`](crate::Font)) whatever fonts the machine has.
+/// bundled faces ([`Font`](crate::figure::Font)) whatever fonts the machine has.
 pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
     render(svg, scale, font_database())
 }
@@ -136,7 +136,7 @@ mod tests {
     use crate::figure::{Font, FontStyle};
     use crate::render::fonts::load_bundled;
     use crate::render::to_svg;
-    use crate::{FigureName, Style};
+    use crate::{catalogue::FigureName, figure::Style};
     use usvg::fontdb::Source;
     use usvg::fontdb::{Family, Query};
 

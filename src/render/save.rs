@@ -10,10 +10,10 @@ use std::path::Path;
 /// extension), whole or not at all: what `Figure::save` would be, kept
 /// here because the figure model knows nothing of its writers.
 ///
-/// Errors: an unknown extension ([`Error::Parse`](crate::Error::Parse),
+/// Errors: an unknown extension ([`Error::Parse`](crate::error::Error::Parse),
 /// before anything is written), a format whose feature this build leaves
-/// out ([`Error::Unsupported`](crate::Error::Unsupported)), or the write
-/// itself ([`Error::Io`](crate::Error::Io), the existing file untouched).
+/// out ([`Error::Unsupported`](crate::error::Error::Unsupported)), or the write
+/// itself ([`Error::Io`](crate::error::Error::Io), the existing file untouched).
 ///
 /// ```no_run
 /// use slider_crank::FigureName;
@@ -33,7 +33,7 @@ pub fn save(figure: &Figure, path: impl AsRef<Path>) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::FigureName;
+    use crate::catalogue::FigureName;
 
     #[test]
     fn the_extension_chooses_the_format_and_an_unknown_one_writes_nothing() {

@@ -153,7 +153,7 @@ impl Constructions {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Angle, SliderCrank};
+    use crate::{angle::Angle, mechanism::SliderCrank};
 
     #[test]
     fn each_construction_is_computed_once_and_kisch_needs_no_d() {

@@ -30,7 +30,7 @@ use crate::figure::Font;
 use crate::figure::Style;
 use crate::figure::{PageLength, PageUnit, Title};
 use crate::number::plain;
-use crate::{Angle, SliderCrank, Unit, Units};
+use crate::{angle::Angle, mechanism::SliderCrank, units::Unit, units::Units};
 
 use crate::diagram::DEFAULT_TOLERANCE;
 
@@ -230,7 +230,7 @@ impl Default for Page {
 /// speed, the torque, the tolerance, the number of poses) are checked
 /// once, together, when the figure is built ([`Scene::build`],
 /// [`Scene::figure`], [`Scene::frames`]), with one `Result`. Read from
-/// TOML with [`SceneFile::from_toml`](crate::SceneFile::from_toml), which
+/// TOML with [`SceneFile::from_toml`](crate::catalogue::SceneFile::from_toml), which
 /// checks each value where the file gives it.
 ///
 /// ```
@@ -292,7 +292,7 @@ impl Scene {
             notation: Notation::Textbook,
             mirror: false,
             page: Page::default(),
-            omega: crate::rpm_to_omega(250.0),
+            omega: crate::analytic::kinematics::rpm_to_omega(250.0),
             units: Units::FOOT_POUND,
             title: None,
             torque: 1.0,
@@ -364,7 +364,7 @@ impl Scene {
     }
 
     /// The crank speed ω in rad/s, for scale notes. Building the figure
-    /// fails unless it is non-zero and within [`crate::MAX_OMEGA`].
+    /// fails unless it is non-zero and within [`crate::analytic::kinematics::MAX_OMEGA`].
     pub fn with_omega(mut self, omega: f64) -> Self {
         self.omega = omega;
         self
@@ -390,7 +390,7 @@ impl Scene {
     }
 
     /// A title, set centred below the figure and written as the SVG's
-    /// `<title>` ([`crate::Figure::with_title`]).
+    /// `<title>` ([`crate::figure::Figure::with_title`]).
     pub fn with_title(mut self, title: Title) -> Self {
         self.title = Some(title);
         self
@@ -608,7 +608,7 @@ impl Scene {
     /// Builds the figure and says what was computed for it: fitted to
     /// its own pose, or in the view held over [`Scene::held`]. The one
     /// check of the settings: the speed non-zero and within
-    /// [`crate::MAX_OMEGA`], the torque finite, the tolerance in
+    /// [`crate::analytic::kinematics::MAX_OMEGA`], the torque finite, the tolerance in
     /// [1e-6, 10], 1 to 64 poses, 1 to 3960 held poses.
     pub fn build(&self) -> Result<(Figure, Evaluations)> {
         valid::scene(self)?;

@@ -3,7 +3,7 @@
 //! that its message points at the key.
 
 use super::Scene;
-use crate::Angle;
+use crate::angle::Angle;
 use crate::error::{Error, Result, finite, positive};
 
 /// The most poses one figure draws (the first and its ghosts).
@@ -27,7 +27,7 @@ pub(crate) fn scene(scene: &Scene) -> Result<()> {
 }
 
 /// A crank speed for the scale notes: non-zero, within
-/// [`crate::MAX_OMEGA`].
+/// [`crate::analytic::kinematics::MAX_OMEGA`].
 pub(crate) fn omega(omega: f64) -> Result<f64> {
     let omega = crate::analytic::kinematics::check_omega(omega)?;
     if omega == 0.0 {

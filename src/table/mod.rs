@@ -516,7 +516,7 @@ impl TableName {
             }
             TableName::Kinematics => kinematics(
                 &SliderCrank::in_line(0.5, 3.0)?,
-                crate::rpm_to_omega(250.0),
+                crate::analytic::kinematics::rpm_to_omega(250.0),
                 &every(0, 360, 30),
                 4,
                 &Units::FOOT_POUND,

@@ -15,7 +15,7 @@ use crate::diagram::{Axis, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
-use crate::{Angle, Pose};
+use crate::{angle::Angle, mechanism::Pose};
 
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();

@@ -12,7 +12,7 @@ use crate::diagram::{Axis, Curve, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure};
 use crate::geom::Point;
-use crate::{Angle, Pose, SliderCrank};
+use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
 
 /// The ratios n = l/r drawn, with their dashes.
 const RATIOS: [(f64, Dash); 3] = [

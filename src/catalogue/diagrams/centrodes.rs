@@ -11,7 +11,7 @@
 //! with n = 6 both centrodes are nearly straight and close to the slider's
 //! vertical.
 //!
-//! [`FigureName::mechanism`]: crate::FigureName::mechanism
+//! [`FigureName::mechanism`]: crate::catalogue::FigureName::mechanism
 
 use super::{Ctx, Sheet, short};
 use crate::diagram::Plot;

@@ -17,7 +17,7 @@ use crate::error::{Error, Result};
 use crate::figure::{Align, Figure, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::number::plain;
-use crate::{Angle, SliderCrank};
+use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
 
 /// The distance between the lines of a panel's caption, page units.
@@ -91,8 +91,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             reason: format!(
                 "fig-60-chains draws a slot of radius 0.8 (l + r + |e|) = {}, beyond the largest length {}: give l + r + |e| at most {}",
                 plain(rho),
-                plain(crate::MAX_LENGTH),
-                plain(crate::MAX_LENGTH / 0.8)
+                plain(crate::mechanism::MAX_LENGTH),
+                plain(crate::mechanism::MAX_LENGTH / 0.8)
             ),
         });
     };

@@ -3,7 +3,7 @@
 //! on the mechanism with each point marked at the drawn pose.
 
 use super::{Ctx, PER_DEGREE, Sheet, short};
-use crate::Angle;
+use crate::angle::Angle;
 use crate::construct::CouplerPoint;
 use crate::diagram::{Curve, Plot};
 use crate::error::Result;

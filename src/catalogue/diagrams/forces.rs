@@ -15,7 +15,7 @@ use crate::diagram::{Axis, Curve, Plot};
 use crate::error::{Error, Result};
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
-use crate::{Angle, Pose};
+use crate::{angle::Angle, mechanism::Pose};
 
 /// Ng's measured F′ against θ.
 const NG_EXPERIMENT: &str = include_str!("../../../examples/ng-experiment.csv");
@@ -200,7 +200,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 short(m.crank()),
                 short(m.rod()),
                 ctx.units.torque(),
-                if ctx.units == crate::Units::MILLIMETRE_NEWTON {
+                if ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
                     " (1 kg on the 27 mm crank)"
                 } else {
                     ""

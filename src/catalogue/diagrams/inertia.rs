@@ -80,7 +80,7 @@ impl Forces {
 
 /// The points of the scene's Klein layer: Klein's, or Kisch's where D is
 /// at infinity (the same F and G, `docs/design.md` §2).
-fn acceleration_points(pose: &crate::Pose) -> AccelerationPoints {
+fn acceleration_points(pose: &crate::mechanism::Pose) -> AccelerationPoints {
     let e = VelocityLine::construct(pose);
     match Klein::construct(pose, &InstantCentre::construct(pose), &e) {
         Some(k) => *k.points(),
@@ -189,7 +189,12 @@ fn block_span(panel: &Panel, coordinate: impl Fn(&Point) -> f64) -> Option<(f64,
 /// torque arrow, else on the far side, within the panel; set off the
 /// line of stroke by a quarter of the block's height on the side away
 /// from the rod, which near the dead centres lies on that line.
-fn inertia_arrow(panel: &Panel, pose: &crate::Pose, f: &Forces, scale: f64) -> Vec<Item> {
+fn inertia_arrow(
+    panel: &Panel,
+    pose: &crate::mechanism::Pose,
+    f: &Forces,
+    scale: f64,
+) -> Vec<Item> {
     let (a, c) = (pose.a(), pose.c());
     let length = f.points.cg().abs();
     if length * scale < SHORTEST {

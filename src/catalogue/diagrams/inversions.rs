@@ -20,7 +20,7 @@ use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Figure, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
-use crate::{Angle, SliderCrank};
+use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
 
 /// The block's half length and half height: smaller than in Fig. 60, so

@@ -1,6 +1,6 @@
 //! The diagram figures of the catalogue: each file builds one, from plot
 //! panels ([`crate::diagram::Plot`]) and, where the textbook draws on the
-//! mechanism, a [`crate::Scene`]'s panel with curves added.
+//! mechanism, a [`crate::scene::Scene`]'s panel with curves added.
 
 mod acceleration;
 mod approximation;
@@ -35,7 +35,7 @@ use crate::geom::{Point, Vector};
 use crate::number::format_number;
 pub(crate) use crate::number::{short, sig};
 use crate::scene::{Page, Scene};
-use crate::{Angle, Pose, SliderCrank, Unit, Units};
+use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank, units::Unit, units::Units};
 use serde_json::{Map, Value, json};
 
 pub(crate) use crate::csv::Table;
@@ -219,7 +219,9 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
     if let Some(bad) = unused(name, options) {
         return Err(Error::Parse(format!("{} does not use {bad}", name.name())));
     }
-    let omega = options.omega.unwrap_or_else(|| crate::rpm_to_omega(250.0));
+    let omega = options
+        .omega
+        .unwrap_or_else(|| crate::analytic::kinematics::rpm_to_omega(250.0));
     if !(omega > 0.0 && omega.is_finite()) {
         return Err(Error::OutOfRange {
             name: "omega",

@@ -7,11 +7,11 @@
 //! is −dφ/dt.
 
 use super::{Ctx, Sheet, against_angle, extent, short, sig};
-use crate::Pose;
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::Point;
+use crate::mechanism::Pose;
 
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();

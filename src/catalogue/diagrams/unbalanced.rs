@@ -9,11 +9,11 @@
 //! slider's jerk for the exact force).
 
 use super::{Ctx, Sheet, against_angle, extent, positive_mass, short, sig};
-use crate::Pose;
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, PageRect};
 use crate::geom::Point;
+use crate::mechanism::Pose;
 
 /// The four forces of panel (a) at a pose, each with its derivative per
 /// radian, in units of m r ω²: primary, secondary, their sum, exact.

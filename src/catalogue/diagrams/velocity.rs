@@ -15,7 +15,7 @@ use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 use crate::scene::Layer;
-use crate::{Angle, Pose};
+use crate::{angle::Angle, mechanism::Pose};
 
 /// Height of the mechanism panel with its scale notes.
 const TOP: f64 = 400.0;

@@ -2,7 +2,7 @@
 
 use super::work::Work;
 use super::{Picture, Step};
-use crate::FigureName;
+use crate::catalogue::FigureName;
 use crate::error::Result;
 use crate::handout::figures;
 

@@ -5,7 +5,7 @@ use super::data::side;
 use super::number::{short, show};
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
-use crate::FigureName;
+use crate::catalogue::FigureName;
 use crate::error::Result;
 use crate::handout::figures;
 

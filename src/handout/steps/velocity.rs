@@ -4,8 +4,8 @@
 use super::number::{short, show};
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
-use crate::FigureName;
 use crate::analytic::approx;
+use crate::catalogue::FigureName;
 use crate::error::Result;
 use crate::handout::figures;
 

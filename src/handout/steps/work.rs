@@ -3,7 +3,7 @@
 
 use crate::construct::Reading;
 use crate::handout::Handout;
-use crate::{Pose, SliderCrank};
+use crate::{mechanism::Pose, mechanism::SliderCrank};
 
 /// Units of a page.
 pub(super) struct Names {

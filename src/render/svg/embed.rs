@@ -67,7 +67,7 @@ fn drawn_chars(svg: &str) -> BTreeSet<char> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::FigureName;
+    use crate::catalogue::FigureName;
     use base64::Engine as _;
     use skrifa::{FontRef, MetadataProvider};
 

@@ -77,7 +77,7 @@ pub(crate) fn klein_points(ctx: &Ctx) -> AccelerationPoints {
 
 /// The unit normal to AB on the side of Kisch's semicircle: away from C,
 /// upwards when C is on AB (as [`Kisch`] places H).
-pub(crate) fn kisch_side(pose: &crate::Pose) -> Vector {
+pub(crate) fn kisch_side(pose: &crate::mechanism::Pose) -> Vector {
     let (a, b) = (pose.a(), pose.b());
     let ab = b - a;
     let n = Vector::new(-ab.y, ab.x) / ab.norm();

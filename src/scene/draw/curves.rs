@@ -4,7 +4,7 @@
 
 use super::Ctx;
 use super::velocity::basics_d;
-use crate::Angle;
+use crate::angle::Angle;
 use crate::construct::{Centrode, CentrodeKind};
 use crate::diagram::{self, Curve, Locus, LocusKind, Method, TraceOptions};
 use crate::figure::{Path, RichText, Role, Shape, TextSize};
@@ -47,7 +47,7 @@ fn trace(
     Some((traced.to_figure_path(map)?, map.invert(anchor)))
 }
 
-fn pose_at(ctx: &Ctx, t: f64) -> Option<crate::Pose> {
+fn pose_at(ctx: &Ctx, t: f64) -> Option<crate::mechanism::Pose> {
     Angle::from_radians(t)
         .ok()
         .map(|a| ctx.scene.mechanism().pose(a))

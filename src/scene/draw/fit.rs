@@ -140,7 +140,7 @@ pub(crate) fn frame(ctx: &Ctx) -> Frame {
         for k in 0..72 {
             // cannot fail: multiples of 5° below 360° are finite.
             #[allow(clippy::expect_used)]
-            let a = crate::Angle::from_degrees(5.0 * k as f64).expect("finite");
+            let a = crate::angle::Angle::from_degrees(5.0 * k as f64).expect("finite");
             b.add(q.point(&m.pose(a)));
         }
     }

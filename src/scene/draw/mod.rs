@@ -17,7 +17,7 @@ use super::Scene;
 use super::cache::{Constructions, Evaluations};
 use super::canvas::{Canvas, round};
 use super::notation::Named;
-use crate::Angle;
+use crate::angle::Angle;
 use crate::figure::{
     Align, Figure, Hue, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
 };
