@@ -18,7 +18,7 @@ use crate::chain::{Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Figure, Role, Shape, TextSize};
+use crate::figure::{Figure, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -148,6 +148,27 @@ fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
     Frame::new(lo, hi)
 }
 
+/// The panel's caption, `Inversion 2: link a fixed, rotating block: …`,
+/// where it fits the panel `width` on one line; on a narrower page the
+/// caption keeps `Inversion 2: link a fixed` and the notes open with the
+/// inversion's name (the second of the pair, empty when the caption holds
+/// it), so that no caption runs past the page's edges.
+fn caption(ctx: &Ctx, inversion: Inversion, width: f64) -> (String, String) {
+    let head = format!(
+        "Inversion {}: link *{}* fixed",
+        inversion.number(),
+        letter(inversion.fixed())
+    );
+    let full = format!("{head}, {}", inversion.name());
+    let size = ctx.style.font_size(TextSize::Small);
+    if RichText::parse(&full).width(ctx.font, size) <= width - 8.0 {
+        (full, String::new())
+    } else {
+        let named = format!("Inversion {}: {}. ", inversion.number(), inversion.name());
+        (head, named)
+    }
+}
+
 pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
@@ -167,13 +188,9 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     let notes_height = 44.0;
     let rect = super::fitted_rect(&page, &world, notes_height);
     let fixed = inversion.fixed();
+    let (caption, named) = caption(ctx, inversion, rect.width);
     let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?
-        .with_caption(&format!(
-            "Inversion {}: link *{}* fixed, {}",
-            inversion.number(),
-            letter(fixed),
-            inversion.name()
-        ));
+        .with_caption(&caption);
     let map = *plot.map();
     let (lh, hh) = super::chains::block_on_page((lh, hh), map.scale());
     let shown = map.world_frame(&plot.area());
@@ -396,7 +413,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     sheet.meta("virtual_centres", centres.to_json());
     sheet.plot(plot);
     let mut line = format!(
-        "The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. The fixed link is hatched.",
+        "{named}The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. The fixed link is hatched.",
         short(ctx.angle.degrees()),
         short(r),
         short(l),
