@@ -5,7 +5,7 @@ use super::centre::Course;
 use super::markup::{arc_beziers, arrow_head, finite, path, polyline_d, unit};
 use super::text::{starts_italic, text_half, text_node};
 use super::{Ink, PanelWriter, Pending};
-use crate::figure::{Pen, RichText, TextSize};
+use crate::figure::{Item, PageFromWorld, Pen, RichText, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::Bounds;
@@ -74,6 +74,16 @@ impl PanelWriter<'_> {
         Some(ink.tag(path(polyline_d(&pts, false), pen)))
     }
 
+    /// The radius of the angle mark of `sweep` (its size) at the page
+    /// point `c`: [`ANGLE_RADIUS`], and [`ANGLE_STEP`] more for each larger
+    /// angle at the same vertex ([`angle_radii`]).
+    fn angle_radius(&self, c: Point, sweep: f64) -> f64 {
+        self.angle_radii
+            .iter()
+            .find(|(v, s, _)| (*v - c).norm() < 1.0 && *s == sweep)
+            .map_or(ANGLE_RADIUS, |(_, _, r)| *r)
+    }
+
     /// An angle mark: an arc of page radius [`ANGLE_RADIUS`] about
     /// `vertex` from the world angle `start` turning `sweep`, its name
     /// (if any) placed with the labels beside the arc's middle.
@@ -89,14 +99,7 @@ impl PanelWriter<'_> {
             return None;
         }
         let (page_start, page_sweep) = self.page_angles(start, sweep);
-        // A further angle at the same vertex gets a larger arc.
-        let before = self
-            .angle_vertices
-            .iter()
-            .filter(|v| (**v - c).norm() < 1.0)
-            .count();
-        self.angle_vertices.push(c);
-        let radius = ANGLE_RADIUS + ANGLE_STEP * before as f64;
+        let radius = self.angle_radius(c, sweep.abs());
         self.bezier_obstacles(&arc_beziers(c, radius, page_start, page_sweep));
         let course = Course::Arc {
             centre: c,
@@ -396,4 +399,30 @@ mod tests {
             }
         }
     }
+}
+
+/// The radii of the angle marks among `items` drawn by the map `t`: at a
+/// vertex shared by several, the largest angle innermost at
+/// [`ANGLE_RADIUS`] and each smaller one [`ANGLE_STEP`] further out, so
+/// that two adjacent angles (Ng's β and φ at the crank pin) read as two,
+/// and the smaller, whose letter needs the room, gets the longer arc. As
+/// (page vertex, size of the sweep, radius).
+pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64, f64)> {
+    let marks: Vec<(Point, f64)> = items
+        .iter()
+        .filter_map(|item| match &item.shape {
+            Shape::AngleMark { vertex, sweep, .. } => Some((t.apply(*vertex), sweep.abs())),
+            _ => None,
+        })
+        .collect();
+    marks
+        .iter()
+        .map(|&(c, sweep)| {
+            let larger = marks
+                .iter()
+                .filter(|(v, s)| (*v - c).norm() < 1.0 && *s > sweep)
+                .count();
+            (c, sweep, ANGLE_RADIUS + ANGLE_STEP * larger as f64)
+        })
+        .collect()
 }

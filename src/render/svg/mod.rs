@@ -82,8 +82,8 @@ struct PanelWriter<'a> {
     open_lines: Vec<centre::OpenLine>,
     /// Hatchings to write again once the labels are placed.
     hatchings: Vec<hatching::Hatching>,
-    /// The page vertices of the angle marks written so far.
-    angle_vertices: Vec<Point>,
+    /// The angle marks' radii: (page vertex, size of the sweep, radius).
+    angle_radii: Vec<(Point, f64, f64)>,
 }
 
 impl PanelWriter<'_> {
@@ -208,7 +208,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
         pending: Vec::new(),
         open_lines: Vec::new(),
         hatchings: Vec::new(),
-        angle_vertices: Vec::new(),
+        angle_radii: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -218,6 +218,8 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
         .filter(|(_, item)| clip.is_none_or(|r| cull::may_show(t, &r, &item.shape)))
         .collect();
     order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
+    let shown: Vec<&Item> = order.iter().map(|(_, item)| *item).collect();
+    w.angle_radii = marks::angle_radii(t, &shown);
     let mut nodes: Vec<Element> = Vec::new();
     for (_, item) in &order {
         let (lines, hatchings) = (w.open_lines.len(), w.hatchings.len());
