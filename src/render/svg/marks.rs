@@ -216,6 +216,32 @@ impl PanelWriter<'_> {
     }
 }
 
+/// The radii of the angle marks among `items` drawn by the map `t`: at a
+/// vertex shared by several, the largest angle innermost at
+/// [`ANGLE_RADIUS`] and each smaller one [`ANGLE_STEP`] further out, so
+/// that two adjacent angles (Ng's β and φ at the crank pin) read as two,
+/// and the smaller, whose letter needs the room, gets the longer arc. As
+/// (page vertex, size of the sweep, radius).
+pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64, f64)> {
+    let marks: Vec<(Point, f64)> = items
+        .iter()
+        .filter_map(|item| match &item.shape {
+            Shape::AngleMark { vertex, sweep, .. } => Some((t.apply(*vertex), sweep.abs())),
+            _ => None,
+        })
+        .collect();
+    marks
+        .iter()
+        .map(|&(c, sweep)| {
+            let larger = marks
+                .iter()
+                .filter(|(v, s)| (*v - c).norm() < 1.0 && *s > sweep)
+                .count();
+            (c, sweep, ANGLE_RADIUS + ANGLE_STEP * larger as f64)
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::super::text::{BASELINE, text_half};
@@ -399,30 +425,4 @@ mod tests {
             }
         }
     }
-}
-
-/// The radii of the angle marks among `items` drawn by the map `t`: at a
-/// vertex shared by several, the largest angle innermost at
-/// [`ANGLE_RADIUS`] and each smaller one [`ANGLE_STEP`] further out, so
-/// that two adjacent angles (Ng's β and φ at the crank pin) read as two,
-/// and the smaller, whose letter needs the room, gets the longer arc. As
-/// (page vertex, size of the sweep, radius).
-pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64, f64)> {
-    let marks: Vec<(Point, f64)> = items
-        .iter()
-        .filter_map(|item| match &item.shape {
-            Shape::AngleMark { vertex, sweep, .. } => Some((t.apply(*vertex), sweep.abs())),
-            _ => None,
-        })
-        .collect();
-    marks
-        .iter()
-        .map(|&(c, sweep)| {
-            let larger = marks
-                .iter()
-                .filter(|(v, s)| (*v - c).norm() < 1.0 && *s > sweep)
-                .count();
-            (c, sweep, ANGLE_RADIUS + ANGLE_STEP * larger as f64)
-        })
-        .collect()
 }
