@@ -59,14 +59,36 @@ pub(crate) fn sig(x: f64) -> String {
     format_number(x, digits)
 }
 
-/// [`sig`] without trailing zeros (`50°`, `250 rpm`, `0.5 ft`).
+/// [`sig`] without trailing zeros (`50°`, `250 rpm`, `0.5 ft`, `2×10⁻⁸`).
 pub(crate) fn short(x: f64) -> String {
     let s = sig(x);
-    if s.contains('.') && !s.contains('×') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
+    let trim = |m: &str| {
+        if m.contains('.') {
+            m.trim_end_matches('0').trim_end_matches('.').to_string()
+        } else {
+            m.to_string()
+        }
+    };
+    match s.split_once('×') {
+        Some((mantissa, power)) => format!("{}×{power}", trim(mantissa)),
+        None => trim(&s),
     }
+}
+
+/// `x` to one significant figure as a power of ten (`2×10⁻⁸`): a bound
+/// or a tolerance, whose size is what a reader needs. 0 and non-finite
+/// values write `0`.
+pub(crate) fn power_form(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return "0".into();
+    }
+    let s = format!("{:.0e}", x.abs());
+    let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
+    let sign = if x < 0.0 { "\u{2212}" } else { "" };
+    format!(
+        "{sign}{mantissa}×{}",
+        power_of_ten(exponent.parse().unwrap_or(0))
+    )
 }
 
 /// A value given as input, set on a figure as it was given: its shortest
@@ -100,7 +122,9 @@ mod tests {
         assert_eq!(short(250.0), "250");
         assert_eq!(short(12.345), "12.35");
         assert_eq!(short(-1.5), "\u{2212}1.5");
-        assert_eq!(short(1e20), "1.000×10²⁰");
+        assert_eq!(short(1e20), "1×10²⁰");
+        assert_eq!(short(2.5e-10), "2.5×10⁻¹⁰");
+        assert_eq!(power_form(2.2e-8), "2×10⁻⁸");
         assert_eq!(given(264.87), "264.87");
         assert_eq!(given(-2.5), "\u{2212}2.5");
         assert_eq!(given(1e-300), "1.000×10⁻³⁰⁰");

@@ -167,8 +167,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 u = ctx.unit(), f = ctx.units.force()
             ),
             format!(
-                "Work per turn {} {t_unit}; {} areas between the crossings, integrated to {:.0e} {t_unit}; most energy at θ = {}°, least at {}°.",
-                sig(tm.work), tm.lobes.len(), tm.tolerance, short(tm.max_energy_deg), short(tm.min_energy_deg)
+                "Work per turn {} {t_unit}; {} areas between the crossings, integrated to {} {t_unit}; most energy at θ = {}°, least at {}°.",
+                sig(tm.work), tm.lobes.len(), crate::number::power_form(tm.tolerance), short(tm.max_energy_deg), short(tm.min_energy_deg)
             ),
         ],
     );
