@@ -70,34 +70,41 @@ fn files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
     }
 }
 
-/// The modules and root names a line of code reaches through `crate::`:
-/// `crate::geom::Point`, `crate::{Angle, SliderCrank}`, `crate::Angle`.
-fn reached(line: &str, roots: &BTreeMap<String, String>) -> Vec<String> {
+/// The names right after each `crate::` of a line of code:
+/// `crate::geom::Point` gives `geom`, `crate::{Angle, render::fmt}` gives
+/// `Angle` and `render`.
+fn heads(line: &str) -> Vec<&str> {
     let mut out = Vec::new();
     let mut rest = line;
     while let Some(at) = rest.find("crate::") {
         let after = &rest[at + "crate::".len()..];
-        let names: Vec<&str> = if let Some(group) = after.strip_prefix('{') {
-            let close = group.find('}').unwrap_or(group.len());
-            group[..close]
+        let starts: Vec<&str> = match after.strip_prefix('{') {
+            Some(g) => g[..g.find('}').unwrap_or(g.len())]
                 .split(',')
-                .map(|n| n.trim().split("::").next().unwrap_or(""))
-                .collect()
-        } else {
-            let end = after
-                .find(|c: char| !(c.is_alphanumeric() || c == '_'))
-                .unwrap_or(after.len());
-            vec![&after[..end]]
+                .map(str::trim)
+                .collect(),
+            None => vec![after],
         };
-        for name in names.into_iter().filter(|n| !n.is_empty()) {
-            match roots.get(name) {
-                Some(module) => out.push(module.clone()),
-                None => out.push(name.to_string()),
+        for head in starts {
+            let end = head
+                .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .unwrap_or(head.len());
+            if end > 0 {
+                out.push(&head[..end]);
             }
         }
         rest = after;
     }
     out
+}
+
+/// The modules a line of code reaches through `crate::` (a name the root
+/// re-exports counted as its defining module).
+fn reached(line: &str, roots: &BTreeMap<String, String>) -> Vec<String> {
+    heads(line)
+        .into_iter()
+        .map(|name| roots.get(name).cloned().unwrap_or_else(|| name.to_string()))
+        .collect()
 }
 
 /// A name of the crate root's re-exports reached through the root
@@ -106,28 +113,10 @@ fn reached(line: &str, roots: &BTreeMap<String, String>) -> Vec<String> {
 /// up through the root. (A module's own name, `crate::angle::…`, is not
 /// one: the root's names are its types, constants and functions.)
 fn root_name_in(line: &str, roots: &BTreeMap<String, String>) -> Option<String> {
-    let mut rest = line;
-    while let Some(at) = rest.find("crate::") {
-        let after = &rest[at + "crate::".len()..];
-        let heads: Vec<&str> = match after.strip_prefix('{') {
-            Some(g) => g[..g.find('}').unwrap_or(g.len())]
-                .split(',')
-                .map(str::trim)
-                .collect(),
-            None => vec![after],
-        };
-        for head in heads {
-            let end = head
-                .find(|c: char| !(c.is_alphanumeric() || c == '_'))
-                .unwrap_or(head.len());
-            let name = &head[..end];
-            if roots.contains_key(name) {
-                return Some(name.to_string());
-            }
-        }
-        rest = after;
-    }
-    None
+    heads(line)
+        .into_iter()
+        .find(|name| roots.contains_key(*name))
+        .map(String::from)
 }
 
 #[test]
