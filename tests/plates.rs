@@ -39,6 +39,11 @@ const RULE_LINES: &str = "2b lines clear of labels";
 const RULE_NEAR: &str = "3 letter near its point";
 const RULE_PAGE: &str = "4 inside the page";
 const RULE_SPREAD: &str = "5 construction readable";
+const RULE_TEXTS: &str = "6 texts apart";
+const RULE_SIZE: &str = "7 text large enough";
+/// The least size of any text on a page, px (a printed figure's smallest
+/// type, about 8 pt at the page's own size).
+const LEAST_TEXT: f64 = 11.0;
 
 /// One broken rule on one plate, with the ids involved.
 #[derive(Debug, Clone, PartialEq)]
@@ -753,6 +758,81 @@ fn dynamics_plates_are_clean() {
     let outcomes = sweep(&jobs);
     let text = report(&outcomes);
     println!("{text}({} plates)", outcomes.len());
+    assert!(outcomes.iter().all(|o| o.failures.is_empty()), "{text}");
+}
+
+/// The page sizes an author may fix, besides the figure's own.
+const PAGE_SIZES: [(&str, Option<&str>); 3] =
+    [("120mm", None), ("4.5in", None), ("800", Some("300"))];
+
+/// Rule 6: no two texts of the page (ticks, titles, captions, legends,
+/// letters, notes) overlap, glyph boxes shrunk by [`GLYPH_SLACK`].
+fn texts_overlap(plate: &Plate) -> Vec<Failure> {
+    let mut pairs = BTreeSet::new();
+    for (i, a) in plate.texts.iter().enumerate() {
+        for b in &plate.texts[i + 1..] {
+            if a.rect
+                .shrunk(GLYPH_SLACK)
+                .overlaps(&b.rect.shrunk(GLYPH_SLACK))
+            {
+                pairs.insert(format!("{} × {}", a.id, b.id));
+            }
+        }
+    }
+    pairs.into_iter().map(|p| fail(RULE_TEXTS, p)).collect()
+}
+
+/// Rule 7: every text is set at least [`LEAST_TEXT`] px.
+fn texts_small(plate: &Plate) -> Vec<Failure> {
+    let ids: BTreeSet<String> = plate
+        .texts
+        .iter()
+        .filter(|t| t.font_size < LEAST_TEXT - 1e-9)
+        .map(|t| format!("{} at {:.1} px", t.id, t.font_size))
+        .collect();
+    ids.into_iter().map(|p| fail(RULE_SIZE, p)).collect()
+}
+
+/// Every figure at its own defaults on its own page and on each of
+/// [`PAGE_SIZES`]: the plate rules, no two texts overlapping anywhere on
+/// the page (diagrams included) and no text under [`LEAST_TEXT`].
+#[test]
+fn every_figure_is_clean_on_every_page_size() {
+    let mut outcomes = Vec::new();
+    for name in FigureName::ALL {
+        let sizes = std::iter::once(None).chain(PAGE_SIZES.iter().map(Some));
+        for size in sizes {
+            let mut options = FigureOptions::default();
+            if let Some((width, height)) = size {
+                options.width = Some(width.parse().unwrap());
+                options.height = height.map(|h| h.parse().unwrap());
+            }
+            let failures = match name.figure(&options) {
+                Ok(f) => {
+                    let plate = Plate::read(&to_svg(&f));
+                    let spread = SPREAD_FIGURES.contains(&name.name());
+                    let mut all = check(&plate, spread && size.is_none());
+                    all.extend(texts_overlap(&plate));
+                    all.extend(texts_small(&plate));
+                    all
+                }
+                // A page too small for the figure is refused by name.
+                Err(e) if e.to_string().contains("page") => Vec::new(),
+                Err(e) => vec![fail(RULE_BUILD, e.to_string())],
+            };
+            outcomes.push(Outcome {
+                figure: name.name(),
+                mechanism: size.map_or("own page".into(), |(w, h)| format!("{w} × {h:?}")),
+                degrees: 0.0,
+                failures,
+            });
+        }
+    }
+    let text = report(&outcomes);
+    println!("{text}");
+    if let Ok(path) = std::env::var("PAGES_LOG") {
+        std::fs::write(&path, every_failure(&outcomes)).unwrap();
+    }
     assert!(outcomes.iter().all(|o| o.failures.is_empty()), "{text}");
 }
 

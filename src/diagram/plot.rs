@@ -22,10 +22,45 @@ const TOP: f64 = 30.0;
 const BOTTOM: f64 = 42.0;
 /// Room below that for a caption.
 pub(crate) const CAPTION: f64 = 22.0;
+/// Size of a caption's text (the style's small text, which every style
+/// sets at this size).
+const CAPTION_TEXT: f64 = 13.0;
+/// Line height of a caption broken over several lines.
+const CAPTION_LINE: f64 = 16.0;
 /// Line height of legends and notes.
 const LEGEND_LINE: f64 = 16.0;
 /// Length of a legend's line sample.
 const KEY: f64 = 28.0;
+
+/// Spacing (page units) of the points a straight line leaves for the
+/// legend to keep clear of.
+const LINE_SAMPLE: f64 = 6.0;
+/// Space between neighbouring labels of a horizontal axis, page units.
+const LABEL_GAP: f64 = 8.0;
+/// Least distance between labels of a vertical axis, in label sizes.
+const LABEL_PITCH: f64 = 1.4;
+/// Strides tried, in order, for keeping every k-th tick label.
+const STRIDES: [usize; 8] = [1, 2, 5, 10, 20, 50, 100, 200];
+/// The shortest decade of a log axis (page units) that keeps its minor
+/// ticks.
+const LEAST_DECADE: f64 = 24.0;
+
+/// Which way an axis runs on the page: its labels are measured across
+/// (their widths) or up (their height).
+#[derive(Debug, Clone, Copy)]
+enum Direction {
+    Across,
+    Up,
+}
+
+/// A tick as drawn: its value, its label if it keeps one, and whether it
+/// is a major (once labelled) tick.
+#[derive(Debug, Clone)]
+struct Shown {
+    value: f64,
+    label: Option<String>,
+    major: bool,
+}
 
 /// What a legend entry shows beside its text.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -63,7 +98,11 @@ pub struct Plot {
     blocks: Vec<Block>,
     legend: Vec<(RichText, Option<Key>)>,
     drawn: Vec<Point>,
-    caption: Option<RichText>,
+    caption: Vec<RichText>,
+    /// How the map follows a change of the area: the world rectangle and
+    /// its mirroring for a world plot; `None` for a plot with axes (the
+    /// axes' ranges map onto the area) or a map taken over.
+    world: Option<(Frame, bool)>,
     /// Blocks try the bottom corners first (the band [`Plot::band`] keeps
     /// free for them).
     below: bool,
@@ -150,7 +189,8 @@ impl Plot {
             blocks: Vec::new(),
             legend: Vec::new(),
             drawn: Vec::new(),
-            caption: None,
+            caption: Vec::new(),
+            world: None,
             below: false,
         })
     }
@@ -178,7 +218,9 @@ impl Plot {
             value: (world.max() - world.min()).norm(),
             reason: "a world panel needs a rectangle of positive size".into(),
         })?;
-        Ok(Self::with_map(name, rect, area, map, tolerance, font))
+        let mut plot = Self::with_map(name, rect, area, map, tolerance, font);
+        plot.world = Some((*world, mirror));
+        Ok(plot)
     }
 
     /// A plot without axes with the given map and plot area (a mechanism
@@ -205,7 +247,8 @@ impl Plot {
             blocks: Vec::new(),
             legend: Vec::new(),
             drawn: Vec::new(),
-            caption: None,
+            caption: Vec::new(),
+            world: None,
             below: false,
         }
     }
@@ -223,15 +266,75 @@ impl Plot {
         self
     }
 
-    /// A caption below the plot (markup, `(a) Velocity on a time base`).
+    /// A caption below the plot (markup, `(a) Velocity on a time base`),
+    /// broken at its spaces to the panel's width; each line past the
+    /// first takes its height from the plot area, whose map follows. Call
+    /// it before drawing. A single word wider than the panel stays whole
+    /// (the writer fits it); a plot whose map was taken over keeps its
+    /// area, so there the caption stays on one line.
     pub fn with_caption(mut self, caption: &str) -> Self {
-        self.caption = Some(RichText::parse(caption));
+        let text = RichText::parse(caption);
+        let lines = match (&self.axes, &self.world) {
+            (None, None) => vec![text],
+            _ => text.wrap(self.font, CAPTION_TEXT, self.caption_room()),
+        };
+        let extra = CAPTION_LINE * (lines.len() - 1) as f64;
+        if extra > 0.0 && self.area.height - extra >= 40.0 {
+            self.area = PageRect::new(
+                self.area.x,
+                self.area.y,
+                self.area.width,
+                self.area.height - extra,
+            );
+            self.remap();
+            self.caption = lines;
+        } else {
+            self.caption = vec![RichText::parse(caption)];
+        }
         self
+    }
+
+    /// The widest caption line centred under the plot area that stays
+    /// 4 units inside the panel.
+    fn caption_room(&self) -> f64 {
+        let centre = self.area.x + 0.5 * self.area.width;
+        let left = centre - self.rect.x;
+        let right = self.rect.x + self.rect.width - centre;
+        2.0 * left.min(right) - 8.0
+    }
+
+    /// The map again after the area changed: the axes' ranges onto the
+    /// area, or the world rectangle fitted into it.
+    fn remap(&mut self) {
+        let map = match (&self.axes, &self.world) {
+            (Some((x, y)), _) => {
+                let (x0, x1) = x.world_range();
+                let (y0, y1) = y.world_range();
+                PageFromWorld::axes(
+                    self.area.width / (x1 - x0),
+                    -self.area.height / (y1 - y0),
+                    Point::new(x0, y0),
+                    Point::new(self.area.x, self.area.y + self.area.height),
+                )
+            }
+            (None, Some((world, mirror))) => PageFromWorld::fit(world, &self.area, *mirror),
+            (None, None) => None,
+        };
+        // The ranges mapped onto a larger area before, so they map now.
+        if let Some(map) = map {
+            self.map = map;
+        }
     }
 
     /// The world-to-page map of the panel.
     pub fn map(&self) -> &PageFromWorld {
         &self.map
+    }
+
+    /// The panel's rectangle (page units): the area with its axes'
+    /// labels, titles and caption.
+    pub fn rect(&self) -> PageRect {
+        self.rect
     }
 
     /// The plot area (page units): curves are clipped to it.
@@ -376,13 +479,14 @@ impl Plot {
             .filter_map(|&(x, y)| self.world_point(x, y))
             .collect();
         if points.len() >= 2 {
-            for p in &points {
-                let page = self.map.apply(*p);
-                self.remember(page);
-            }
+            // Every few units along each piece, so that a legend counts
+            // how much of the line it would cover.
             for (a, b) in points.iter().zip(points.iter().skip(1)) {
-                let mid = nalgebra::center(a, b);
-                self.remember(self.map.apply(mid));
+                let (pa, pb) = (self.map.apply(*a), self.map.apply(*b));
+                let steps = ((pb - pa).norm() / LINE_SAMPLE).ceil().clamp(1.0, 1e4) as usize;
+                for k in 0..=steps {
+                    self.remember(pa + (pb - pa) * (k as f64 / steps as f64));
+                }
             }
             self.items.push(
                 Item::new(
@@ -532,6 +636,81 @@ impl Plot {
 
     /// The axes' lines, ticks, labels and titles, the zero lines and the
     /// grid.
+    /// The ticks of an axis as drawn along `lo..=hi` (page units, `page`
+    /// taking a value to its page coordinate): where labels would crowd,
+    /// only every second, fifth, tenth … keeps its label (the others stay
+    /// long ticks); where a log axis's decades are too short for minor
+    /// ticks to read, those go.
+    fn thinned(
+        &self,
+        axis: &Axis,
+        page: &dyn Fn(f64) -> Option<f64>,
+        lo: f64,
+        hi: f64,
+        direction: Direction,
+    ) -> Vec<Shown> {
+        let ticks = axis.ticks();
+        let at: Vec<(usize, f64, f64)> = ticks
+            .iter()
+            .enumerate()
+            .filter_map(|(i, t)| {
+                let label = t.label.as_ref()?;
+                let p = page(t.value).filter(|p| *p >= lo - 0.01 && *p <= hi + 0.01)?;
+                let need = match direction {
+                    Direction::Across => {
+                        RichText::parse(label).width(self.font, TICK_TEXT) + LABEL_GAP
+                    }
+                    Direction::Up => LABEL_PITCH * TICK_TEXT,
+                };
+                Some((i, p, need))
+            })
+            .collect();
+        let room = |stride: usize| {
+            at.iter()
+                .step_by(stride)
+                .zip(at.iter().step_by(stride).skip(1))
+                .all(|(a, b)| (b.1 - a.1).abs() >= 0.5 * (a.2 + b.2))
+        };
+        let stride = STRIDES
+            .iter()
+            .copied()
+            .find(|s| room(*s))
+            .unwrap_or(at.len().max(1));
+        // A decade shorter than this leaves no room between minor ticks.
+        let decade = at
+            .iter()
+            .zip(at.iter().skip(1))
+            .map(|(a, b)| (b.1 - a.1).abs())
+            .fold(f64::INFINITY, f64::min);
+        let minors = axis.scale() == Scale::Linear || decade >= LEAST_DECADE;
+        // Kept labels fall on round multiples (10⁰, 10⁵, … or 0, 100, …)
+        // where that keeps two of them.
+        let round = |i: &usize| {
+            let w = ticks.get(*i).and_then(|t| axis.world(t.value));
+            w.is_some_and(|w| ((w / axis.step()).round() as i64).rem_euclid(stride as i64) == 0)
+        };
+        let mut kept: Vec<usize> = at.iter().map(|a| a.0).filter(round).collect();
+        if stride == 1 || kept.len() < 2 {
+            kept = at.iter().step_by(stride).map(|a| a.0).collect();
+        }
+        ticks
+            .into_iter()
+            .enumerate()
+            .filter_map(|(i, t)| {
+                let major = t.label.is_some();
+                if !major && !minors {
+                    return None;
+                }
+                let label = t.label.filter(|_| kept.contains(&i));
+                Some(Shown {
+                    value: t.value,
+                    label,
+                    major,
+                })
+            })
+            .collect()
+    }
+
     fn axis_items(&self, x: &Axis, y: &Axis) -> Vec<Item> {
         let n = &self.name;
         let a = self.area;
@@ -557,11 +736,16 @@ impl Plot {
         let mut grid = Path::new();
         let mut has_ticks = false;
         let mut has_grid = false;
-        for (k, t) in x.ticks().iter().enumerate() {
+        let x_ticks = self.thinned(x, &px, left, right, Direction::Across);
+        for (k, t) in x_ticks.iter().enumerate() {
             let Some(p) = px(t.value).filter(|p| inside(*p, left, right)) else {
                 continue;
             };
-            let len = if t.label.is_some() { TICK } else { 0.6 * TICK };
+            let len = if t.label.is_some() || t.major {
+                TICK
+            } else {
+                0.6 * TICK
+            };
             ticks = ticks
                 .move_to(self.unmap(Point::new(p, bottom)))
                 .line_to(self.unmap(Point::new(p, bottom + len)));
@@ -582,11 +766,16 @@ impl Plot {
                 }
             }
         }
-        for (k, t) in y.ticks().iter().enumerate() {
+        let y_ticks = self.thinned(y, &py, top, bottom, Direction::Up);
+        for (k, t) in y_ticks.iter().enumerate() {
             let Some(p) = py(t.value).filter(|p| inside(*p, top, bottom)) else {
                 continue;
             };
-            let len = if t.label.is_some() { TICK } else { 0.6 * TICK };
+            let len = if t.label.is_some() || t.major {
+                TICK
+            } else {
+                0.6 * TICK
+            };
             ticks = ticks
                 .move_to(self.unmap(Point::new(left, p)))
                 .line_to(self.unmap(Point::new(left - len, p)));
@@ -789,16 +978,17 @@ impl Plot {
             let placed = self.place(block, &mut taken);
             items.extend(placed);
         }
-        if let Some(caption) = self.caption.take() {
-            let y = self.rect.y + self.rect.height - 0.5 * CAPTION;
+        let lines = std::mem::take(&mut self.caption);
+        let last = lines.len().saturating_sub(1);
+        for (i, line) in lines.into_iter().enumerate() {
+            let up = CAPTION_LINE * (last - i) as f64;
+            let y = self.rect.y + self.rect.height - 0.5 * CAPTION - up;
             let x = self.area.x + 0.5 * self.area.width;
-            items.push(self.text(
-                format!("{}-caption", self.name),
-                Point::new(x, y),
-                caption,
-                Align::Middle,
-                TextSize::Small,
-            ));
+            let id = match i {
+                0 => format!("{}-caption", self.name),
+                _ => format!("{}-caption-{}", self.name, i + 1),
+            };
+            items.push(self.text(id, Point::new(x, y), line, Align::Middle, TextSize::Small));
         }
         Panel::new(self.panel_id(), self.rect, self.map, items)
     }

@@ -65,6 +65,10 @@ pub struct Plate {
     pub panels: Vec<Panel>,
     /// Labels outside the mechanism and diagram panels (notes).
     pub page_labels: Vec<Label>,
+    /// Every text of the figure, whatever its panel or class (ticks,
+    /// titles, captions, legends, letters, notes), clipped as drawn, its
+    /// size in px as written (the size times the text's scale).
+    pub texts: Vec<Label>,
     /// The ink box of every element drawn, with its id (or its nearest
     /// ancestor's).
     pub ink: Vec<(String, Rect)>,
@@ -391,9 +395,6 @@ impl Plate {
         let glyphs = text.flattened().abs_bounding_box();
         let rect = Rect::from_usvg(glyphs);
         self.add_ink(ctx, rect);
-        if class_of(svg, &ctx.owner) != "label" {
-            return;
-        }
         let rect = match ctx.clip {
             Some(c) => match c.intersection(&rect) {
                 Some(r) => r,
@@ -406,6 +407,16 @@ impl Plate {
             .first()
             .and_then(|c| c.spans().first())
             .map_or(16.0, |s| s.font_size().get() as f64);
+        let ts = text.abs_transform();
+        let scale = ((ts.sx * ts.sy - ts.kx * ts.ky).abs() as f64).sqrt();
+        self.texts.push(Label {
+            id: ctx.owner.clone(),
+            rect,
+            font_size: font_size * scale,
+        });
+        if class_of(svg, &ctx.owner) != "label" {
+            return;
+        }
         let label = Label {
             id: ctx.owner.clone(),
             rect,

@@ -13,9 +13,14 @@ use super::{
 };
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, NOTE_LINE, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
 use crate::{angle::Angle, mechanism::Pose};
+
+/// The narrowest page (page units) that sets (a) and (b) side by side:
+/// each column then holds the ordinate's title, about 260 units at the
+/// small size, and the abscissa's.
+const NARROWEST_COLUMNS: f64 = 700.0;
 
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
@@ -28,8 +33,23 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let (lo, hi) = extent(&m, |p| -w2 * p.position_acceleration());
     let f_axis = |title: &str| Axis::nice(title, lo.min(-r * w2), hi.max(r * w2));
     let f_title = format!("*f* = −d²*x*/d*t*² ({unit}/s²), towards the crank");
-    let half = 0.5 * (page.width() - 32.0 - 16.0);
+    // Two columns where a column holds the axes' titles; on a narrower
+    // page the three panels are stacked at the page's width and the notes
+    // go below them.
+    let columns = page.width() >= NARROWEST_COLUMNS;
+    let half = match columns {
+        true => 0.5 * (page.width() - 32.0 - 16.0),
+        false => page.width() - 32.0,
+    };
     let row = 350.0;
+    // Where (b) and (c) go: beside (a) and below both, or each below.
+    let (b_at, c_top) = match columns {
+        true => (Point::new(16.0 + half + 16.0, 16.0), 16.0 + row + 12.0),
+        false => (
+            Point::new(16.0, 16.0 + row + 12.0),
+            16.0 + 2.0 * (row + 12.0),
+        ),
+    };
     let exact = |p: &Pose| (-w2 * p.position_acceleration(), -w2 * p.position_jerk());
     let (o, i) = dead_centres(&m);
 
@@ -94,7 +114,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
 
     // (b) Time base.
     let period = std::f64::consts::TAU / omega;
-    let rect = super::PageRect::new(16.0 + half + 16.0, 16.0, half, row);
+    let rect = super::PageRect::new(b_at.x, b_at.y, half, row);
     let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
     // Headroom above the curves for the legend.
     let headroom = Axis::nice(
@@ -150,8 +170,10 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(-1.08 * r, -1.08 * reach),
         Point::new(1.08 * reach, 1.08 * reach),
     );
-    let top = 16.0 + row + 12.0;
-    let rect = super::PageRect::new(16.0, top, half, page.height() - top - 16.0);
+    let top = c_top;
+    // As tall as beside the notes on the figure's own page.
+    let tall = page.height() - (16.0 + row + 12.0) - 16.0;
+    let rect = super::PageRect::new(16.0, top, half, tall);
     let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dashed");
     polar_construction(&mut plot, &ctx.pose(), reach);
@@ -171,8 +193,16 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
 
     let pose = ctx.pose();
     let cg = -pose.position_acceleration();
+    let corner = match columns {
+        true => Point::new(16.0 + half + 28.0, top + 30.0),
+        false => {
+            let below = top + tall + 12.0;
+            sheet.height(below + 6.0 * NOTE_LINE + 16.0);
+            Point::new(28.0, below)
+        }
+    };
     sheet.notes(
-        Point::new(16.0 + half + 28.0, top + 30.0),
+        corner,
         &[
             format!(
                 "Engine: *r* = {} {unit}, *l* = {} {unit} (*n* = {}), {} rpm,",

@@ -28,6 +28,10 @@ struct Row<'a> {
     time: f64,
 }
 
+/// The narrowest page (page units) that sets the two plots side by side,
+/// each with its legend inside.
+const NARROWEST_COLUMNS: f64 = 700.0;
+
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let text = ctx.options.data.as_deref().unwrap_or(TABLE);
@@ -75,8 +79,26 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let (e0, e1) = range(&|r| r.error);
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
-    let width = 0.5 * (page.width() - 48.0);
+    // Side by side where each holds its legend (about 330 units wide);
+    // on a narrower page one above the other, each as tall as beside.
+    let columns = page.width() >= NARROWEST_COLUMNS;
+    let width = match columns {
+        true => 0.5 * (page.width() - 48.0),
+        false => page.width() - 32.0,
+    };
     let height = page.height() - 32.0 - 40.0;
+    let place = |k: usize| match columns {
+        true => Point::new(16.0 + k as f64 * (width + 16.0), 16.0),
+        false => Point::new(16.0, 16.0 + k as f64 * (height + 16.0)),
+    };
+    let notes_top = match columns {
+        true => page.height() - 40.0,
+        false => {
+            let top = 16.0 + 2.0 * (height + 16.0);
+            sheet.height(top + 40.0);
+            top
+        }
+    };
     let dashes = [Dash::Solid, Dash::Dashed, Dash::DashDot, Dash::Dotted];
     for (k, (name, title, caption, value)) in [
         (
@@ -99,7 +121,8 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         let x = Axis::log("measured error (px)", e0, e1)?;
         // A decade of room above the data for the legend.
         let y = Axis::log(title, lo, 10.0 * hi)?;
-        let rect = PageRect::new(16.0 + k as f64 * (width + 16.0), 16.0, width, height);
+        let at = place(k);
+        let rect = PageRect::new(at.x, at.y, width, height);
         let mut plot = Plot::new(name, rect, x, y, ctx.tolerance, ctx.font)?
             .with_grid()
             .with_caption(caption);
@@ -123,7 +146,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         sheet.plot(plot);
     }
     sheet.notes(
-        Point::new(20.0, page.height() - 40.0),
+        Point::new(20.0, notes_top),
         &[if ctx.options.data.is_some() {
             "From the table given (--data).".to_string()
         } else {

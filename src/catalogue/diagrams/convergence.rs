@@ -79,20 +79,25 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut plot = Plot::new("convergence", rect, x, y, ctx.tolerance, ctx.font)?
         .with_grid()
         .with_caption("The curved slot against the straight slot");
-    for (id, legend, symbol, value) in series {
+    // The three series lie within a factor of a few of each other: each
+    // sets its markers at every third radius, the three staggered, so
+    // that no marker covers another; its line runs through every radius.
+    for (i, (id, legend, symbol, value)) in series.into_iter().enumerate() {
         let points: Vec<(f64, f64)> = rows
             .iter()
             .map(|w| (w.radius, positive(value(w))))
             .collect();
+        let marked: Vec<(f64, f64)> = points.iter().copied().skip(i).step_by(3).collect();
         plot.line(&format!("series-{id}"), &points, Dash::Solid, None);
-        plot.points(&format!("point-{id}"), &points, symbol, None);
+        plot.points(&format!("point-{id}"), &marked, symbol, None);
         plot.legend_marker(legend, symbol);
     }
-    // The slope −1 through the velocity at the middle radius.
+    // The slope −1 a decade above the velocity at the middle radius, so
+    // that it runs beside the series instead of under them.
     // (No guide without rows: a NaN passes no filter.)
     let k = rows
         .get(rows.len() / 2)
-        .map_or(f64::NAN, |middle| middle.velocity * middle.radius);
+        .map_or(f64::NAN, |middle| 10.0 * middle.velocity * middle.radius);
     let guide: Vec<(f64, f64)> = [least, 1e15]
         .into_iter()
         .map(|rho| (rho, k / rho))
@@ -100,7 +105,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         .collect();
     if guide.len() == 2 {
         plot.line("guide-slope", &guide, Dash::Dashed, None);
-        plot.legend_line("slope −1: falling as 1/ρ", Dash::Dashed);
+        plot.legend_line("slope −1: falling as 1/ρ (a decade above)", Dash::Dashed);
     }
     plot.line(
         "guide-rounding",

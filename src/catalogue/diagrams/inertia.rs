@@ -96,9 +96,9 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let bottom = mechanism(ctx, &forces, &mut sheet)?;
     let top = match triangle(ctx, &forces, bottom + 8.0)? {
         Some(plot) => {
-            let area = plot.area();
+            let rect = plot.rect();
             sheet.plot(plot);
-            area.y + area.height + crate::diagram::CAPTION
+            rect.y + rect.height
         }
         None => bottom,
     };
