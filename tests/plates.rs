@@ -1315,3 +1315,73 @@ fn the_offset_dimension_keeps_clear_of_a_crank_detail_frame() {
     let problems = check(&plate, false);
     assert!(problems.is_empty(), "{problems:?}");
 }
+
+/// The plate of `figure` for a crank of 1 and `rod` at `degrees`.
+fn short_rod_plate(figure: &str, rod: f64, degrees: f64) -> Plate {
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+    options.angle = Some(Angle::deg(degrees));
+    let f = FigureName::from_name(figure).unwrap().figure(&options);
+    Plate::read(&to_svg(&f.unwrap()))
+}
+
+/// The least distance (px) between the markers of `letters` in `panel`.
+fn closest(plate: &Plate, panel: &Panel, letters: &[&str]) -> f64 {
+    let at: Vec<(f64, f64)> = letters
+        .iter()
+        .map(|l| plate.point(panel, l).unwrap_or_else(|| panic!("{l}")))
+        .collect();
+    let mut least = f64::INFINITY;
+    for (i, a) in at.iter().enumerate() {
+        for b in &at[i + 1..] {
+            least = least.min((a.0 - b.0).hypot(a.1 - b.1));
+        }
+    }
+    least
+}
+
+#[test]
+fn crowded_points_get_a_detail_around_them_and_nothing_else() {
+    // Kisch's construction at l = 1.08 r, 93°: F, H, B and E lay within a
+    // few units of each other on the main view with no detail. A detail
+    // now draws them at least 20 px apart (F, the foot of the
+    // perpendicular on the rod, lies 0.0175 r from B), each with its
+    // letter.
+    let plate = short_rod_plate("fig-66-kisch", 1.08, 93.0);
+    let main = &plate.panels[0];
+    assert!(closest(&plate, main, &["F", "H", "B", "E"]) < 30.0);
+    let detail = plate
+        .panels
+        .iter()
+        .find(|p| p.prefix == "detail-")
+        .expect("a detail");
+    let apart = closest(&plate, detail, &["F", "H", "B", "E"]);
+    assert!(apart >= 20.0, "{apart}");
+    for l in ["F", "H", "B", "E"] {
+        let id = format!("detail-label-{l}");
+        assert!(detail.labels.iter().any(|x| x.id == id), "{id}");
+    }
+    // Klein's at 37°: F and G crowd, nothing else does. The detail was the
+    // whole mechanism at ×2 (a page 1968 px tall); it is now F and G with
+    // their surroundings, not the block, the crank pin or C.
+    let plate = short_rod_plate("fig-65-klein", 1.08, 37.0);
+    let detail = plate
+        .panels
+        .iter()
+        .find(|p| p.prefix == "detail-")
+        .expect("a detail");
+    for l in ["F", "G"] {
+        assert!(detail.markers.contains_key(l), "{l}");
+    }
+    for l in ["A", "B", "C"] {
+        assert!(!detail.markers.contains_key(l), "{l} in the detail");
+    }
+    // Where nothing crowds on a main view large enough, no detail.
+    let plate = short_rod_plate("fig-65-klein", 1.5, 60.0);
+    assert_eq!(
+        plate.panels.len(),
+        1,
+        "{:?}",
+        plate.panels.iter().map(|p| &p.id).collect::<Vec<_>>()
+    );
+}

@@ -5,11 +5,21 @@
 //! centre, while the page must also hold the rod, the slider and its
 //! guides: with the §35 engine (n = 6) the crank radius is about 75 page
 //! units, and F, G sit within a dozen units of B and C. The acceleration
-//! layers therefore always carry a detail. The velocity layer gets one
-//! when its triangle ECB spans less than [`THRESHOLD`] page units: below
-//! that its three letters (each about 12 × 17 units, kept 4 units from
-//! their points) with the pins of B and C and the right-angle mark at C
-//! cannot all sit clear of its sides.
+//! layers therefore carry a detail of the whole construction while it
+//! spans less than [`CORE_TARGET`] units on the main view. The velocity
+//! layer gets one when its triangle ECB spans less than [`THRESHOLD`]
+//! page units: below that its three letters (each about 12 × 17 units,
+//! kept 4 units from their points) with the pins of B and C and the
+//! right-angle mark at C cannot all sit clear of its sides.
+//!
+//! A construction the main view draws larger than that (a short rod,
+//! where the crank fills the page) is readable there, but some of its
+//! lettered points may still crowd: near 90° with l = 1.08 r, F, H, B and
+//! E lie within a few units of each other. Its detail is then drawn
+//! around the points that crowd (any two lettered points within
+//! [`CROWD`] units), magnified until they stand [`APART`]; where nothing
+//! crowds there is none (a detail repeating the whole mechanism at ×2
+//! helps nobody).
 //!
 //! The torque layer (Ng's Fig. 1) marks the crank centre and the crank
 //! pin: the torque arrow of radius 36 units about the centre, the θ arc of
@@ -144,12 +154,46 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
     let (cmin, cmax) = bounds(&core);
     let core_size = cmax - cmin;
     let core_extent = core_size.x.max(core_size.y) * scale;
-    if !(core_extent > 0.0 && core_extent.is_finite())
-        || (!acceleration && core_extent >= THRESHOLD)
-    {
+    if !(core_extent > 0.0 && core_extent.is_finite()) {
         return None;
     }
-    let with_h = h.map(|h| [core.as_slice(), &[h]].concat());
+    // A construction the main view draws large enough to read needs a
+    // detail only where its lettered points crowd (a short rod: F, H, B
+    // and E together near 90°).
+    let readable = match acceleration {
+        true => core_extent >= CORE_TARGET,
+        false => core_extent >= THRESHOLD,
+    };
+    if !readable {
+        return whole(&core, h, core_extent, scale, max_width);
+    }
+    let mut lettered = [core.as_slice(), &[ctx.main.pose().a()]].concat();
+    lettered.extend(h);
+    // The acceleration constructions' pins (C among A, E, F, G on a short
+    // rod) need their letters' room inside the frame; the velocity
+    // triangle's frame stays tight, clear of the letters about it.
+    let room = if acceleration { CROWD_ROOM } else { 0.0 };
+    match crowded(&lettered, room, scale, max_width) {
+        Crowding::Apart => None,
+        // Points too close to separate (near a dead centre): the whole
+        // construction enlarged, its letters set about it.
+        Crowding::Together if acceleration => whole(&core, h, core_extent, scale, max_width),
+        Crowding::Together => None,
+        Crowding::Separable(d) => Some(d),
+    }
+}
+
+/// The detail of the whole construction about the crank (B, C, E, F, G,
+/// with Kisch's H where the core keeps [`CORE_TARGET`] with it), whose
+/// core spans `core_extent` page units in a main view at `scale`.
+fn whole(
+    core: &[Point],
+    h: Option<Point>,
+    core_extent: f64,
+    scale: f64,
+    max_width: f64,
+) -> Option<Detail> {
+    let with_h = h.map(|h| [core, &[h]].concat());
     let fitted = |pts: &[Point]| {
         let (min, max) = bounds(pts);
         let size = max - min;
@@ -168,8 +212,85 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
     let enough = |d: &Detail| core_extent * d.magnification >= CORE_TARGET;
     match with_h.as_deref().and_then(fitted) {
         Some(d) if enough(&d) => Some(d),
-        _ => fitted(&core),
+        _ => fitted(core),
     }
+}
+
+/// Distance apart (page units) under which two lettered points crowd:
+/// each letter, about 12 × 17 units set 4 units from its point, has no
+/// side clear of the other point's letter and lines.
+const CROWD: f64 = 30.0;
+/// Room (main view's page units) between the crowded points and their
+/// detail's region, so that its frame on the main view leaves the pins'
+/// letters room.
+const CROWD_ROOM: f64 = 12.0;
+/// How far apart crowded points are drawn in their detail, page units.
+const APART: f64 = 45.0;
+/// The most a crowding detail magnifies: points closer than
+/// [`CROWD`] / this in the main view are taken as one (a dead centre,
+/// where E meets C), which no detail separates.
+const MOST_CROWDED: f64 = 16.0;
+/// The largest side of a crowding detail's region in the detail, page
+/// units: the crowded points and their near neighbours, not the
+/// mechanism again.
+const CROWD_EXTENT: f64 = 320.0;
+
+/// The detail of the points of `lettered` (world) that crowd in a main
+/// view at `scale`: the box of every point within [`CROWD`] page units
+/// of another (those within [`CROWD`] / [`MOST_CROWDED`] are taken as
+/// one, which the detail does not try to separate) grown by `room` page
+/// units each way, magnified until the closest such pair is [`APART`], the box
+/// at most [`CROWD_EXTENT`], and the detail within `max_width`.
+fn crowded(lettered: &[Point], room: f64, scale: f64, max_width: f64) -> Crowding {
+    let mut members: Vec<Point> = Vec::new();
+    let mut closest = f64::INFINITY;
+    let mut together = false;
+    for (i, a) in lettered.iter().enumerate() {
+        for b in lettered.iter().skip(i + 1) {
+            let d = (b - a).norm() * scale;
+            if (CROWD / MOST_CROWDED..CROWD).contains(&d) {
+                members.extend([*a, *b]);
+                closest = closest.min(d);
+            } else if d > 0.0 && d < CROWD / MOST_CROWDED {
+                // Their letters still need the detail's room.
+                members.extend([*a, *b]);
+                together = true;
+            }
+        }
+    }
+    if !closest.is_finite() {
+        return match together {
+            true => Crowding::Together,
+            false => Crowding::Apart,
+        };
+    }
+    let (lo, hi) = bounds(&members);
+    let extent = ((hi - lo) * scale).max();
+    // The frame on the main view kept clear of the crowded points, so
+    // that the letters of the pins among them find room inside it.
+    let room = Vector::new(room, room) / scale;
+    let (lo, hi) = (lo - room, hi + room);
+    let size = (hi - lo) * scale;
+    let wanted = (APART / closest).min(CROWD_EXTENT / extent.max(1e-9));
+    match magnify(wanted.max(1.0), size.x, max_width) {
+        Some(magnification) => Crowding::Separable(Detail {
+            region: Frame::new(lo, hi),
+            magnification,
+            focus: Focus::Construction,
+        }),
+        None => Crowding::Together,
+    }
+}
+
+/// How the lettered points of a construction lie in the main view.
+enum Crowding {
+    /// No two within [`CROWD`] page units.
+    Apart,
+    /// Some crowd, and this detail separates them.
+    Separable(Detail),
+    /// Some lie closer than any detail separates (and none that one
+    /// would).
+    Together,
 }
 
 /// The first magnification step of at least `wanted` at which a region
