@@ -914,6 +914,24 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
         for id in ["force-weight", "force-normal", "force-friction"] {
             assert!(tag(&svg, id).is_some(), "{id}");
         }
+        // μN runs parallel to the plane and clear of its line (it was
+        // drawn on the plane's edge).
+        let numbers = |d: &str| -> Vec<f64> {
+            d.split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+                .filter_map(|t| t.parse().ok())
+                .collect()
+        };
+        let plane = numbers(&attr(&svg, "plane", "d").unwrap());
+        let at = svg.find("id=\"force-friction\"").unwrap();
+        let d = &svg[at..];
+        let d = &d[d.find(" d=\"").unwrap() + 4..];
+        let arrow = numbers(&d[..d.find('"').unwrap()]);
+        let (x0, y0, x1, y1) = (plane[0], plane[1], plane[2], plane[3]);
+        let off = |x: f64, y: f64| {
+            ((x1 - x0) * (y0 - y) - (x0 - x) * (y1 - y0)).abs() / (x1 - x0).hypot(y1 - y0)
+        };
+        let (a, b) = (off(arrow[0], arrow[1]), off(arrow[2], arrow[3]));
+        assert!(a > 4.0 && (a - b).abs() < 0.05, "{deg}°: {a} {b}");
     }
     for bad in [0.0, 90.0, 120.0, -10.0] {
         let r = FigureName::NgFig2Incline.figure(&{

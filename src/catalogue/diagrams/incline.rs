@@ -82,11 +82,16 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     // N acts across the contact face; drawn on its line through G.
     let face = g + n * (0.5 * side);
     items.push(arrow("force-normal", Role::Force, face, face + n * normal));
+    // Friction acts in the contact face: drawn from the block's uphill
+    // face, parallel to the plane and just clear of its line, so that the
+    // arrow reads as a force and not as the plane's edge.
+    let clear = n * (0.1 * side);
+    let friction_at = contact + u * (0.5 * side) + clear;
     items.push(arrow(
         "force-friction",
         Role::Force,
-        contact + u * (0.5 * side),
-        contact + u * (0.5 * side + friction),
+        friction_at,
+        friction_at + u * friction,
     ));
     items.push(arrow(
         "component-along",
@@ -144,7 +149,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     };
     label("weight", g + down * weight, "*mg*");
     label("normal", face + n * normal, "*N*");
-    label("friction", contact + u * (0.5 * side + friction), "μ*N*");
+    label("friction", friction_at + u * friction, "μ*N*");
     label("along", g - u * (weight * s), "*mg* sin φ");
     label("across", g - n * (weight * c), "*mg* cos φ");
     let world = Frame::new(
