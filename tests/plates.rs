@@ -1385,3 +1385,57 @@ fn crowded_points_get_a_detail_around_them_and_nothing_else() {
         plate.panels.iter().map(|p| &p.id).collect::<Vec<_>>()
     );
 }
+
+#[test]
+fn fig_62_dimensions_the_stroke_on_the_side_away_from_the_crank() {
+    // With the line of stroke 1.7 r above the crank centre the stroke's
+    // dimension below the guides ran into the rod and its arrowhead
+    // landed on it; it now stands above the guides, clear of the rod and
+    // the crank circle. Without an offset it stays below (Fig. 62).
+    let ink = |plate: &Plate, id: &str| {
+        plate
+            .ink
+            .iter()
+            .filter(|(i, _)| i == id)
+            .map(|(_, r)| *r)
+            .reduce(|a, b| Rect {
+                x0: a.x0.min(b.x0),
+                y0: a.y0.min(b.y0),
+                x1: a.x1.max(b.x1),
+                y1: a.y1.max(b.y1),
+            })
+            .unwrap_or_else(|| panic!("{id}"))
+    };
+    for degrees in [3.0, 90.0, 177.0, 270.0] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, 3.0, 1.7).unwrap());
+        options.angle = Some(Angle::deg(degrees));
+        let f = FigureName::Fig62Displacement.figure(&options).unwrap();
+        let plate = Plate::read(&to_svg(&f));
+        let text = ink(&plate, "dimension-stroke-text");
+        assert!(text.y1 < ink(&plate, "guide-upper").y0, "{degrees}°");
+        let segs = |id: &str| -> Vec<Seg> {
+            plate.panels[0]
+                .strokes
+                .iter()
+                .filter(|s| s.id == id)
+                .flat_map(|s| s.segs.clone())
+                .collect()
+        };
+        let dimension = segs("dimension-stroke");
+        assert!(!dimension.is_empty());
+        for other in ["link-rod", "link-crank", "circle-crank"] {
+            let hit = segs(other)
+                .iter()
+                .any(|o| dimension.iter().any(|d| d.meets(o)));
+            assert!(!hit, "{degrees}° {other}");
+        }
+        assert!(check(&plate, false).is_empty(), "{degrees}°");
+    }
+    let plate = Plate::read(&to_svg(
+        &FigureName::Fig62Displacement
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    ));
+    assert!(ink(&plate, "dimension-stroke-text").y0 > ink(&plate, "guide-lower").y1);
+}

@@ -4,6 +4,7 @@
 use super::Ctx;
 use crate::figure::{RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
+use crate::mechanism::SliderCrank;
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named;
 
@@ -73,6 +74,15 @@ pub(crate) fn angles(ctx: &Ctx, canvas: &mut Canvas) {
 /// from, page units.
 const PARALLEL: f64 = 62.0;
 
+/// Whether the displacement and the stroke are dimensioned above the
+/// guides: where the line of stroke runs above the whole crank circle
+/// (an offset e > r), the side away from the crank; below them otherwise
+/// (the textbook's Fig. 62), where the crank circle reaches past the
+/// stroke both ways or lies above it.
+pub(crate) fn above(m: &SliderCrank) -> bool {
+    m.offset() > m.crank()
+}
+
 pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
     let m = pose.mechanism();
@@ -82,7 +92,10 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     // from C, is positive here).
     let (near, far) = ctx.sizes.travel;
     let o = Point::new(0.5 * (near + far), e);
-    let below = Vector::new(0.0, -1.0);
+    let below = match above(&m) {
+        true => Vector::new(0.0, 1.0),
+        false => Vector::new(0.0, -1.0),
+    };
     let guide = canvas.page(ctx.sizes.block_half_height);
     canvas.point(ctx.letter(Named::MidStroke), o, Marker::Dot, c);
     if canvas.page((a - o).norm()) > 2.0 {

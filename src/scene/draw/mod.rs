@@ -506,6 +506,27 @@ fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bo
 /// height, less the notes' `band`, is the most it may take), and its map,
 /// fitted to the `world` rectangle.
 fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
+    let (panel, transform) = main_view_with(ctx, band, world, 0.0);
+    let scene = ctx.scene;
+    if !(scene.has(Layer::Dimensions) && dimensions::above(&scene.mechanism())) {
+        return (panel, transform);
+    }
+    // The dimensions stacked above the guides: the drawing moves down to
+    // make room for them and the panel grows (the drawing keeps its
+    // scale).
+    let e = scene.mechanism().offset();
+    let stroke = transform.apply(Point::new(0.0, e)).y;
+    let top = stroke - transform.scale() * ctx.sizes.block_half_height - dimensions::DEPTH;
+    let short = panel.y - top;
+    if short <= 0.0 {
+        return (panel, transform);
+    }
+    main_view_with(ctx, band, world, short + 2.0)
+}
+
+/// [`main_view`] with `room` page units more above the drawing, the
+/// panel as much taller.
+fn main_view_with(ctx: &Ctx, band: f64, world: Frame, room: f64) -> (PageRect, PageFromWorld) {
     let scene = ctx.scene;
     let page = scene.page();
     let mg = page.margin();
@@ -520,8 +541,8 @@ fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
     } else {
         most
     };
-    let mut panel = PageRect::new(mg, mg, width, drawn + inset[2] + inset[3]);
-    let fit_rect = PageRect::new(mg + inset[0], mg + inset[2], fit_width, drawn);
+    let mut panel = PageRect::new(mg, mg, width, drawn + inset[2] + inset[3] + room);
+    let fit_rect = PageRect::new(mg + inset[0], mg + inset[2] + room, fit_width, drawn);
     // cannot fail: the fallback, a map of scale 1 between finite points,
     // is valid.
     #[allow(clippy::expect_used)]
@@ -530,7 +551,7 @@ fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
             PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
         })
         .expect("a unit map is valid");
-    if scene.has(Layer::Dimensions) {
+    if scene.has(Layer::Dimensions) && !dimensions::above(&scene.mechanism()) {
         // The dimensions stacked below the guides: the panel grows to hold
         // them (the drawing keeps its scale).
         let e = scene.mechanism().offset();
