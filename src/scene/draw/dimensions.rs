@@ -92,7 +92,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     // from C, is positive here).
     let (near, far) = ctx.sizes.travel;
     let o = Point::new(0.5 * (near + far), e);
-    let below = match above(&m) {
+    let below = match above(m) {
         true => Vector::new(0.0, 1.0),
         false => Vector::new(0.0, -1.0),
     };

@@ -508,7 +508,7 @@ fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bo
 fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
     let (panel, transform) = main_view_with(ctx, band, world, 0.0);
     let scene = ctx.scene;
-    if !(scene.has(Layer::Dimensions) && dimensions::above(&scene.mechanism())) {
+    if !(scene.has(Layer::Dimensions) && dimensions::above(scene.mechanism())) {
         return (panel, transform);
     }
     // The dimensions stacked above the guides: the drawing moves down to
@@ -551,7 +551,7 @@ fn main_view_with(ctx: &Ctx, band: f64, world: Frame, room: f64) -> (PageRect, P
             PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
         })
         .expect("a unit map is valid");
-    if scene.has(Layer::Dimensions) && !dimensions::above(&scene.mechanism()) {
+    if scene.has(Layer::Dimensions) && !dimensions::above(scene.mechanism()) {
         // The dimensions stacked below the guides: the panel grows to hold
         // them (the drawing keeps its scale).
         let e = scene.mechanism().offset();
