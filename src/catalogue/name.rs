@@ -388,7 +388,9 @@ impl FigureName {
             FigureName::DirectReverseCranks => (900.0, 660.0),
             FigureName::Flywheel => (900.0, 760.0),
         };
-        Page::new(w, h, 16.0).expect("catalogue pages are valid")
+        Page::new(w, h, 16.0)
+            .expect("catalogue pages are valid")
+            .with_width_fitted()
     }
 
     /// The figure with `options` applied (see [`FigureOptions`]); errors

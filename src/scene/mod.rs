@@ -38,6 +38,12 @@ use crate::diagram::DEFAULT_TOLERANCE;
 /// How far, page units, a figure may end past a held page height (the
 /// rounding of its parts' sizes) before it is refused.
 const HEIGHT_SLACK: f64 = 0.5;
+/// The narrowest page a figure's own page is narrowed to
+/// ([`Page::with_width_fitted`]), page units: room for a line of notes.
+pub const LEAST_FITTED_WIDTH: f64 = 420.0;
+/// A page is narrowed where its drawing takes less than this share of
+/// its width.
+const FIT_WIDTH_BELOW: f64 = 0.85;
 
 const PAGE_RANGE: &str =
     "a page is between 50 and 20000 units (px, 96 to the inch: 13.3 mm to 5.29 m)";
@@ -65,6 +71,7 @@ pub struct Page {
     margin: f64,
     unit: PageUnit,
     held: bool,
+    fitted: bool,
 }
 
 impl Page {
@@ -112,6 +119,7 @@ impl Page {
             margin,
             unit: PageUnit::Px,
             held: false,
+            fitted: false,
         })
     }
 
@@ -176,6 +184,35 @@ impl Page {
         self
     }
 
+    /// The same page with its width the most the drawing takes: a
+    /// mechanism figure whose drawing is fitted to the height (a short
+    /// rod, whose crank circle is as tall as the engine is long) comes on
+    /// a page narrowed to what it draws, at least [`LEAST_FITTED_WIDTH`]
+    /// units, and its notes are set to that width. The figures' own pages;
+    /// a width asked for is kept.
+    pub fn with_width_fitted(mut self) -> Self {
+        self.fitted = true;
+        self
+    }
+
+    /// Whether the width may be narrowed to the drawing
+    /// ([`Page::with_width_fitted`]).
+    pub fn fits_width(&self) -> bool {
+        self.fitted
+    }
+
+    /// The same page `width` units wide (the other settings kept); errors
+    /// as [`Page::new`] for a width out of range.
+    pub(crate) fn with_width(self, width: f64) -> Result<Self> {
+        let page = Self::new(width, self.height, self.margin)?;
+        Ok(Self {
+            unit: self.unit,
+            held: self.held,
+            fitted: self.fitted,
+            ..page
+        })
+    }
+
     /// The same page with its height the most the main drawing takes
     /// (the default): the page grows for a detail and for notes.
     pub(crate) fn with_height_free(mut self) -> Self {
@@ -221,6 +258,7 @@ impl Default for Page {
             margin: 16.0,
             unit: PageUnit::Px,
             held: false,
+            fitted: false,
         }
     }
 }
@@ -612,6 +650,15 @@ impl Scene {
     /// [1e-6, 10], 1 to 64 poses, 1 to 3960 held poses.
     pub fn build(&self) -> Result<(Figure, Evaluations)> {
         valid::scene(self)?;
+        if self.held.is_none() && self.page.fits_width() {
+            let used = draw::used_width(self).max(LEAST_FITTED_WIDTH);
+            if used < FIT_WIDTH_BELOW * self.page.width() {
+                let mut narrow = self.clone();
+                narrow.page = self.page.with_width(used.ceil())?;
+                narrow.page.fitted = false;
+                return narrow.build();
+            }
+        }
         let layout = self.held.as_deref().map(|a| draw::held(self, a));
         let (figure, evaluations) = draw::build(self, layout.as_ref());
         let page = self.page;

@@ -204,6 +204,36 @@ fn band(notes: &[RichText]) -> f64 {
     }
 }
 
+/// The width of the page (page units, margins included) that the scene's
+/// drawing fitted to its own pose takes: its main view's drawing with
+/// the view's insets, or its detail where that is wider.
+pub(crate) fn used_width(scene: &Scene) -> f64 {
+    let m = scene.mechanism();
+    let poses: Vec<Constructions> = scene
+        .angles()
+        .iter()
+        .map(|a| Constructions::new(m.pose(*a)))
+        .collect();
+    let Some(main) = poses.first() else {
+        return scene.page().width();
+    };
+    let ctx = Ctx {
+        scene,
+        main,
+        sizes: Sizes::new(scene),
+    };
+    let layout = fit_within(&ctx, band(&notes(&ctx)));
+    let scale = layout.transform.scale();
+    let mg = scene.page().margin();
+    let world = layout.sizes.fitted.unwrap_or_else(|| fit::frame(&ctx));
+    let drawn = (world.max().x - world.min().x) * scale + 2.0 * INSET;
+    let detail = layout.detail.map_or(0.0, |d| {
+        let frame = detail_frame(&d, scale);
+        (frame.max().x - frame.min().x) * scale * d.magnification
+    });
+    drawn.max(detail) + 2.0 * mg
+}
+
 /// The layout fitted to the pose of `ctx` with its notes' `band`; on a
 /// page whose height is held ([`crate::scene::Page::holds_height`]),
 /// fitted again with the main view shrunk by what the figure took past
