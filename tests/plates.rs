@@ -41,6 +41,9 @@ const RULE_PAGE: &str = "4 inside the page";
 const RULE_SPREAD: &str = "5 construction readable";
 const RULE_TEXTS: &str = "6 texts apart";
 const RULE_SIZE: &str = "7 text large enough";
+const RULE_FILL: &str = "8 page filled";
+/// The least share of the page's width the drawing's ink spans.
+const FILL: f64 = 0.6;
 /// The least size of any text on a page, px (a printed figure's smallest
 /// type, about 8 pt at the page's own size).
 const LEAST_TEXT: f64 = 11.0;
@@ -416,9 +419,41 @@ fn construction_small(plate: &Plate) -> Vec<Failure> {
     )]
 }
 
+/// Rule 8: the ink of the mechanism panels spans at least [`FILL`] of
+/// the page's width (a short-rod drawing took a third of its page).
+fn page_unfilled(plate: &Plate) -> Vec<Failure> {
+    let Some(first) = plate.panels.first() else {
+        return Vec::new();
+    };
+    let drawn = plate
+        .ink
+        .iter()
+        .filter(|(id, _)| !id.starts_with("note") && !id.starts_with("title"))
+        .map(|(_, r)| *r)
+        .reduce(|a, b| Rect {
+            x0: a.x0.min(b.x0),
+            y0: a.y0.min(b.y0),
+            x1: a.x1.max(b.x1),
+            y1: a.y1.max(b.y1),
+        });
+    match drawn {
+        Some(r) if r.x1 - r.x0 < FILL * plate.width => vec![fail(
+            RULE_FILL,
+            format!(
+                "{} spans {:.0} of {:.0} px",
+                first.id,
+                r.x1 - r.x0,
+                plate.width
+            ),
+        )],
+        _ => Vec::new(),
+    }
+}
+
 /// Every rule on one plate; rule 5 only where `spread` asks for it.
 fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
     let mut out = guides_crossed(plate);
+    out.extend(page_unfilled(plate));
     out.extend(block_off_guides(plate));
     out.extend(labels_overlap(plate));
     out.extend(lines_through_labels(plate));
@@ -1438,4 +1473,12 @@ fn fig_62_dimensions_the_stroke_on_the_side_away_from_the_crank() {
             .unwrap(),
     ));
     assert!(ink(&plate, "dimension-stroke-text").y0 > ink(&plate, "guide-lower").y1);
+}
+
+#[test]
+fn a_drawing_in_a_third_of_its_page_is_caught() {
+    let narrow = r##"<path id="link-rod" class="link" d="M60 150 L180 100" stroke="#000" stroke-width="2.6" fill="none"/>"##;
+    let svg = page(narrow, NOTE, WIDE_POINTS);
+    assert!(rules(&svg, false).contains(&RULE_FILL));
+    assert!(!rules(&clean_with(""), false).contains(&RULE_FILL));
 }
