@@ -863,7 +863,8 @@ fn every_curve_is_within_the_tolerance_in_the_metadata() {
 #[test]
 fn the_tests_quadrature_of_the_turn_is_finer_than_the_tolerance() {
     let (fine, coarse) = (Turn::new(TURN_STEPS), Turn::new(TURN_STEPS / 2));
-    let pairs: [(FigureName, &str, fn(&Turn, f64) -> f64); 4] = [
+    type OfTurn = fn(&Turn, f64) -> f64;
+    let pairs: [(FigureName, &str, OfTurn); 4] = [
         (FigureName::TurningMoment, "curve-torque", Turn::torque),
         (FigureName::TurningMoment, "curve-energy", Turn::energy),
         (FigureName::Flywheel, "curve-energy-above-least", |t, x| {

@@ -244,6 +244,13 @@ pub(super) fn command(h: &Handout, extra: &str) -> String {
             plain(h.friction())
         ));
     }
+    if let Some((mass, fluctuation)) = h.dynamics() {
+        c.push_str(&format!(
+            " --mass {} --fluctuation {}",
+            plain(mass),
+            plain(fluctuation)
+        ));
+    }
     c.push_str(&format!(" --paper {}", h.paper().name()));
     c.push_str(extra);
     c
@@ -286,7 +293,11 @@ pub(super) fn handout(h: &Handout, steps: &[Step], all: &[Row]) -> String {
             p.subtitle {
                 "The velocity and acceleration of the cross-head and the connecting rod by the "
                 "constructions of “Slider-crank chains” (§35–37) and the static forces after "
-                "T. W. Ng, for one engine."
+                "T. W. Ng, for one engine"
+                @if h.dynamics().is_some() {
+                    "; then its inertia forces, turning moment and flywheel"
+                }
+                "."
             }
         }
         p { (rich(&data_sentence(h))) }
