@@ -138,7 +138,8 @@ impl Handout {
     }
 
     /// With lengths and forces in `units` (names only: no number is
-    /// converted).
+    /// converted). With the dynamics ([`Handout::with_dynamics`]) any but
+    /// feet and pounds-force make [`Handout::page`] an error.
     pub fn with_units(mut self, units: Units) -> Self {
         self.units = units;
         self
@@ -302,6 +303,24 @@ mod tests {
         assert!(h.clone().with_omega(f64::NAN).is_err());
         assert!(h.clone().with_torque(f64::INFINITY, 0.0).is_err());
         assert!(h.clone().with_torque(1.0, -1.0).is_err());
-        assert!(h.with_torque(1.0, 0.5).is_ok());
+        assert!(h.clone().with_torque(1.0, 0.5).is_ok());
+        assert!(h.clone().with_dynamics(0.0, 0.02).is_err());
+        assert!(h.clone().with_dynamics(1.0, 2.0).is_err());
+        assert!(h.clone().with_dynamics(1.0, f64::NAN).is_err());
+        assert!(
+            h.clone()
+                .with_units(Units::MILLIMETRE_NEWTON)
+                .with_dynamics(1.0, 0.02)
+                .is_err()
+        );
+        // Units changed after the dynamics are refused when the page is
+        // made, as the indicator diagram is in lbf/ft².
+        let late = h.with_dynamics(1.0, 0.02).unwrap();
+        assert_eq!(late.dynamics(), Some((1.0, 0.02)));
+        let e = late
+            .with_units(Units::MILLIMETRE_NEWTON)
+            .page()
+            .unwrap_err();
+        assert!(e.to_string().contains("lbf/ft²"), "{e}");
     }
 }
