@@ -285,7 +285,7 @@ fn the_dynamics_are_on_the_page_only_with_a_mass() {
     ] {
         assert!(summary.contains(&format!("data-key=\"{key}\"")), "{key}");
     }
-    assert!(with.contains("--mass 10 --fluctuation 0.02 --paper a4"));
+    assert!(with.contains("--paper a4 --mass 10 --fluctuation 0.02"));
 }
 
 #[test]

@@ -244,16 +244,21 @@ pub(super) fn command(h: &Handout, extra: &str) -> String {
             plain(h.friction())
         ));
     }
-    if let Some((mass, fluctuation)) = h.dynamics() {
-        c.push_str(&format!(
-            " --mass {} --fluctuation {}",
-            plain(mass),
-            plain(fluctuation)
-        ));
-    }
     c.push_str(&format!(" --paper {}", h.paper().name()));
     c.push_str(extra);
     c
+}
+
+/// The flags of the dynamics the handout works (only a handout does:
+/// an exercise asks none of them), or none.
+fn dynamics_flags(h: &Handout) -> String {
+    h.dynamics().map_or(String::new(), |(mass, fluctuation)| {
+        format!(
+            " --mass {} --fluctuation {}",
+            plain(mass),
+            plain(fluctuation)
+        )
+    })
 }
 
 /// The crank speed as the command line would be given it: `--rpm N` with
@@ -334,7 +339,7 @@ pub(super) fn handout(h: &Handout, steps: &[Step], all: &[Row]) -> String {
             }
             (values_table(all, None))
         }
-        (footer(&command(h, "")))
+        (footer(&command(h, &dynamics_flags(h))))
     };
     document(
         &format!("{}: {}", title, plain_data(h)),

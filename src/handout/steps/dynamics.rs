@@ -22,7 +22,7 @@ const BORE: f64 = 10.0 / 12.0;
 
 /// What the dynamics steps share: the engine with its mass and gas
 /// force, its forces at the pose, the turn and the flywheel.
-pub(super) struct Dynamics {
+struct Worked {
     engine: Engine,
     diagram: IndicatorDiagram,
     at: EnginePose,
@@ -30,12 +30,12 @@ pub(super) struct Dynamics {
     flywheel: Flywheel,
 }
 
-impl Dynamics {
+impl Worked {
     /// The dynamics of the handout's engine; `None` without a mass.
     ///
     /// Errors: units other than feet and pounds-force (the indicator
     /// diagram's), and those of the engine's forces.
-    pub fn of(w: &Work) -> Result<Option<Self>> {
+    fn of(w: &Work) -> Result<Option<Self>> {
         let Some((mass, fluctuation)) = w.h.dynamics() else {
             return Ok(None);
         };
@@ -62,7 +62,7 @@ impl Dynamics {
 
 /// The three steps of the dynamics, none without a mass.
 pub(super) fn dynamics(w: &Work) -> Result<Vec<Step>> {
-    let Some(d) = Dynamics::of(w)? else {
+    let Some(d) = Worked::of(w)? else {
         return Ok(Vec::new());
     };
     Ok(vec![inertia(w, &d)?, turning(w, &d)?, flywheel(w, &d)?])
@@ -75,7 +75,7 @@ fn mass_unit(w: &Work) -> String {
 
 /// The inertia force from Klein's *CG*, the gas force, the piston effort
 /// and the crank effort *F*·*OM*.
-fn inertia(w: &Work, d: &Dynamics) -> Result<Step> {
+fn inertia(w: &Work, d: &Worked) -> Result<Step> {
     let figure = figures::dynamics(w.h, FigureName::InertiaForce)?;
     let (at, f, u) = (&d.at, &w.n.force, w.length());
     let m = d.engine.reciprocating_mass();
@@ -126,7 +126,7 @@ fn inertia(w: &Work, d: &Dynamics) -> Result<Step> {
 }
 
 /// The forces at the pose and the crank effort.
-fn inertia_rows(w: &Work, d: &Dynamics) -> Vec<Row> {
+fn inertia_rows(w: &Work, d: &Worked) -> Vec<Row> {
     let at = &d.at;
     let force = &w.n.force;
     vec![
@@ -165,7 +165,7 @@ fn inertia_rows(w: &Work, d: &Dynamics) -> Vec<Row> {
 
 /// The turning-moment diagram: the work of the turn, the mean torque and
 /// the fluctuation of energy.
-fn turning(w: &Work, d: &Dynamics) -> Result<Step> {
+fn turning(w: &Work, d: &Worked) -> Result<Step> {
     let figure = figures::dynamics(w.h, FigureName::TurningMoment)?;
     let (tm, t) = (&d.turn, &w.n.torque);
     let indicated = d.diagram.work(w.mechanism().stroke());
@@ -198,7 +198,7 @@ fn turning(w: &Work, d: &Dynamics) -> Result<Step> {
 }
 
 /// The work, the mean torque and ΔE.
-fn turning_rows(w: &Work, d: &Dynamics) -> Vec<Row> {
+fn turning_rows(w: &Work, d: &Worked) -> Vec<Row> {
     let (tm, t) = (&d.turn, &w.n.torque);
     let row = |q: &str, key, v| Row::new(q, None, Some(Value::of(key, v)), t);
     vec![
@@ -217,7 +217,7 @@ fn turning_rows(w: &Work, d: &Dynamics) -> Vec<Row> {
 }
 
 /// The flywheel for the coefficient of fluctuation of speed.
-fn flywheel(w: &Work, d: &Dynamics) -> Result<Step> {
+fn flywheel(w: &Work, d: &Worked) -> Result<Step> {
     let figure = figures::dynamics(w.h, FigureName::Flywheel)?;
     let fly = &d.flywheel;
     let omega = w.omega();
