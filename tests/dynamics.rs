@@ -220,6 +220,19 @@ fn the_four_stroke_cycle_does_its_indicator_diagrams_work_over_720_degrees() {
         // Two cylinders half a cycle apart (360°) do twice the work.
         let two = TurningMoment::new(&e, &[0.0, 360.0]).unwrap();
         assert!((two.work - 2.0 * expected).abs() <= 1e-10 * expected.abs());
+        // Four firing every 180° of the cycle: four times the work, and a
+        // torque that repeats every half turn, each cylinder in its turn.
+        let firing = [0.0, 180.0, 360.0, 540.0];
+        let four = TurningMoment::new(&e, &firing).unwrap();
+        assert!((four.work - 4.0 * expected).abs() <= 1e-10 * expected.abs());
+        for k in 0..36 {
+            let deg = 5.0 * k as f64 + 0.5;
+            let t = |d: f64| e.torque_of_cylinders(&firing, Angle::deg(d)).unwrap();
+            let (a, b) = (t(deg), t(deg + 180.0));
+            assert!((a - b).abs() <= 1e-9 * four.peak, "{n}: {deg}°: {a} vs {b}");
+        }
+        let spans: Vec<f64> = four.lobes.iter().map(|l| l.to_deg - l.from_deg).collect();
+        assert!(four.lobes.len() >= 8, "{n}: {spans:?}");
     }
 }
 
