@@ -494,6 +494,39 @@ fn a_handout_loads_draws_and_prints_on_a4_and_letter() {
     }
 }
 
+#[test]
+fn a_handout_with_the_engines_dynamics_prints_on_a4_and_letter() {
+    let Some(browser) = browser() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    // The §35 engine with a reciprocating mass: three more steps, each a
+    // tall figure. Printed, 11 pages on either paper (the page without
+    // them takes 8), every page but the last at least half full.
+    for (file, paper, size) in [
+        ("d-a4.html", "a4", &A4),
+        ("d-letter.html", "letter", &LETTER),
+    ] {
+        let page = dir.path().join(file);
+        let args = ["handout", "--mass", "10", "--paper", paper, "--out"];
+        let mut args = args.to_vec();
+        args.push(page.to_str().unwrap());
+        succeeded(&run(&args));
+        if paper == "a4" {
+            check_page(&browser, &page);
+        }
+        check_print(&browser, &page, size);
+        let fills = page_fills(&page.with_extension("print.pdf"));
+        assert!(fills.len() <= 11, "{file}: {} pages", fills.len());
+        for (k, fill) in fills.iter().enumerate().take(fills.len() - 1) {
+            assert!(
+                *fill >= 0.5,
+                "{file}: page {} set {:.0} % of the way down: {fills:.2?}",
+                k + 1,
+                100.0 * fill
+            );
+        }
+    }
+}
+
 /// How far down each page of the printed `pdf` its text reaches: the
 /// bottom of its lowest word (a figure's lowest text is its caption)
 /// from the top of the printable page, as a fraction of the printable

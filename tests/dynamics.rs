@@ -181,6 +181,166 @@ fn the_turn_does_the_indicator_diagrams_work() {
     }
 }
 
+/// A four-stroke diagram written here: [`CSV`]'s expansion and
+/// compression, and the pumping strokes' lines (gauge, the intake below
+/// the atmosphere).
+const CSV4: &str = "fraction,expansion,exhaust,intake,compression\n\
+    0,10,0.6,-0.2,1\n0.1,9,0.5,-0.3,1\n0.4,5,0.4,-0.3,1.5\n1,2,0.3,-0.1,3\n";
+
+/// The pumping loop of [`CSV4`] by hand: intake 0.1·(−0.5)/2 +
+/// 0.3·(−0.6)/2 + 0.6·(−0.4)/2 = −0.025 − 0.09 − 0.12 = −0.235; exhaust
+/// 0.1·1.1/2 + 0.3·0.9/2 + 0.6·0.7/2 = 0.055 + 0.135 + 0.21 = 0.4; intake
+/// less exhaust −0.635. With [`LOOP`], 2.69 over the cycle.
+const LOOP4: f64 = 2.69;
+
+#[test]
+fn the_four_stroke_cycle_does_its_indicator_diagrams_work_over_720_degrees() {
+    let d = IndicatorDiagram::from_csv_cycle(CSV4, 0.2, "csv").unwrap();
+    assert_eq!(d.turns(), 2);
+    for (n, frac, mass, w) in [
+        (4.0, 0.0, 0.0, 50.0),
+        (5.0, 0.4, 2.0, 30.0),
+        (1.5, -0.3, 0.5, -40.0),
+    ] {
+        let e = engine(0.3, n, frac, mass, w)
+            .with_gas(GasForce::Indicator(d.clone()))
+            .unwrap();
+        let stroke = e.mechanism().stroke();
+        let expected = PI * 0.01 * stroke * LOOP4 * w.signum();
+        let tm = TurningMoment::new(&e, &[0.0]).unwrap();
+        assert_eq!(tm.cycle_deg, 720.0);
+        assert!(
+            (tm.work - expected).abs() <= 1e-10 * expected.abs(),
+            "{n}: {} vs {expected}",
+            tm.work
+        );
+        assert!((tm.mean - expected / (2.0 * TAU)).abs() <= 1e-10 * tm.mean.abs());
+        assert_eq!(tm.kinks_deg.last(), Some(&720.0));
+        assert!(tm.lobes.last().unwrap().to_deg == 720.0);
+        // Two cylinders half a cycle apart (360°) do twice the work.
+        let two = TurningMoment::new(&e, &[0.0, 360.0]).unwrap();
+        assert!((two.work - 2.0 * expected).abs() <= 1e-10 * expected.abs());
+        // Four firing every 180° of the cycle: four times the work, and a
+        // torque that repeats every half turn, each cylinder in its turn.
+        let firing = [0.0, 180.0, 360.0, 540.0];
+        let four = TurningMoment::new(&e, &firing).unwrap();
+        assert!((four.work - 4.0 * expected).abs() <= 1e-10 * expected.abs());
+        for k in 0..36 {
+            let deg = 5.0 * k as f64 + 0.5;
+            let t = |d: f64| e.torque_of_cylinders(&firing, Angle::deg(d)).unwrap();
+            let (a, b) = (t(deg), t(deg + 180.0));
+            assert!((a - b).abs() <= 1e-9 * four.peak, "{n}: {deg}°: {a} vs {b}");
+        }
+        let spans: Vec<f64> = four.lobes.iter().map(|l| l.to_deg - l.from_deg).collect();
+        assert!(four.lobes.len() >= 8, "{n}: {spans:?}");
+    }
+}
+
+#[test]
+fn the_four_stroke_fluctuation_of_energy_matches_a_brute_sum_over_720_degrees() {
+    let d = IndicatorDiagram::from_csv_cycle(CSV4, 0.2, "csv").unwrap();
+    let e = engine(0.3, 5.0, 0.4, 0.05, 30.0)
+        .with_gas(GasForce::Indicator(d))
+        .unwrap();
+    let tm = TurningMoment::new(&e, &[0.0]).unwrap();
+    // Trapezoids of T over 400 000 steps of the two turns, each turn's T
+    // from the library's per-pose torque in that turn.
+    let steps = 400_000;
+    let h = 2.0 * TAU / steps as f64;
+    let values: Vec<f64> = (0..=steps)
+        .map(|i| {
+            let t = i as f64 * h;
+            let pose = e.mechanism().pose(Angle::from_radians(t).unwrap());
+            e.torque_in_turn(&pose, usize::from(t >= TAU))
+        })
+        .collect();
+    let work: f64 = values.windows(2).map(|p| 0.5 * h * (p[0] + p[1])).sum();
+    assert!((tm.work - work).abs() <= 1e-7 * tm.peak * 2.0 * TAU);
+    let mean = work / (2.0 * TAU);
+    let (mut energy, mut hi, mut lo) = (0.0f64, 0.0f64, 0.0f64);
+    for p in values.windows(2) {
+        energy += 0.5 * h * (p[0] + p[1]) - mean * h;
+        hi = hi.max(energy);
+        lo = lo.min(energy);
+    }
+    assert!(
+        (tm.fluctuation - (hi - lo)).abs() <= 1e-6 * (hi - lo),
+        "{} vs {}",
+        tm.fluctuation,
+        hi - lo
+    );
+    // The inertia forces count (a fluctuation unlike the gas alone's).
+    let gas_only = TurningMoment::new(
+        &engine(0.3, 5.0, 0.4, 0.0, 30.0)
+            .with_gas(GasForce::Indicator(
+                IndicatorDiagram::from_csv_cycle(CSV4, 0.2, "csv").unwrap(),
+            ))
+            .unwrap(),
+        &[0.0],
+    )
+    .unwrap();
+    assert!((gas_only.fluctuation - tm.fluctuation).abs() > 0.01 * tm.fluctuation);
+}
+
+#[test]
+fn the_second_turn_of_a_four_stroke_cycle_is_intake_and_compression() {
+    // Massless, so that T = −F dx/dθ with F the gas force alone.
+    let d = IndicatorDiagram::from_csv_cycle(CSV4, 0.2, "csv").unwrap();
+    let e = engine(0.3, 4.0, 0.0, 0.0, 50.0)
+        .with_gas(GasForce::Indicator(d))
+        .unwrap();
+    let (r, l) = (0.3, 1.2);
+    let area = PI * 0.01;
+    // The line's pressure at the fraction of the stroke (rows of CSV4).
+    let line = |column: usize, f: f64| {
+        let rows = [
+            [0.0, 10.0, 0.6, -0.2, 1.0],
+            [0.1, 9.0, 0.5, -0.3, 1.0],
+            [0.4, 5.0, 0.4, -0.3, 1.5],
+            [1.0, 2.0, 0.3, -0.1, 3.0],
+        ];
+        let k = rows.windows(2).position(|w| f <= w[1][0]).unwrap();
+        let (a, b) = (rows[k], rows[k + 1]);
+        a[column] + (b[column] - a[column]) * (f - a[0]) / (b[0] - a[0])
+    };
+    // θ in the first turn, its line there and in the second turn.
+    for (deg, first, second) in [(40.0, 1, 3), (130.0, 1, 3), (220.0, 2, 4), (300.0, 2, 4)] {
+        let t: f64 = f64::to_radians(deg);
+        let f = (r + l - x(r, l, 0.0, t)) / (2.0 * r);
+        let pose = e.mechanism().pose(Angle::deg(deg));
+        for (turn, column) in [(0, first), (1, second)] {
+            let expected = -area * line(column, f) * x1(r, l, 0.0, t);
+            let got = e.torque_in_turn(&pose, turn);
+            assert!(
+                (got - expected).abs() <= 1e-12 * expected.abs().max(1e-3),
+                "{deg}° turn {turn}: {got} vs {expected}"
+            );
+        }
+    }
+    // The table's rows past 360° are the second turn: at 450° the
+    // intake's pressure, at 90° the expansion's.
+    for (deg, column) in [(90.0, 1), (450.0, 3)] {
+        let t: f64 = f64::to_radians(deg);
+        let f = (r + l - x(r, l, 0.0, t)) / (2.0 * r);
+        let row = slider_crank::table::dynamics_row(&e, &[0.0], deg, 9).unwrap();
+        assert_eq!(row[1], format!("{:.9}", area * line(column, f)), "{deg}°");
+    }
+    // The columns say what cycle it is: one pumping column alone is
+    // refused, and the one-turn reader keeps to its two lines.
+    let half = "fraction,expansion,exhaust,compression\n0,1,0,0\n1,1,0,0\n";
+    let err = IndicatorDiagram::from_csv_cycle(half, 0.2, "h.csv").unwrap_err();
+    assert!(
+        err.to_string().contains("both an exhaust and an intake"),
+        "{err}"
+    );
+    assert_eq!(
+        IndicatorDiagram::from_csv(CSV4, 0.2, "csv")
+            .unwrap()
+            .turns(),
+        1
+    );
+}
+
 #[test]
 fn the_fluctuation_of_energy_matches_a_brute_sum() {
     let d = IndicatorDiagram::from_csv(CSV, 0.2, "csv").unwrap();

@@ -50,10 +50,13 @@ pub struct EngineArgs {
         conflicts_with = "indicator"
     )]
     pub gas_force: Option<f64>,
-    /// An indicator diagram for a cycle of one turn: CSV with the columns
-    /// fraction (of the stroke from the outer dead centre, 0 to 1),
-    /// expansion and compression (gauge pressures, force per length²);
-    /// give --bore with it
+    /// An indicator diagram: CSV with the columns fraction (of the stroke
+    /// from the outer dead centre, 0 to 1), expansion and compression
+    /// (gauge pressures, force per length²) for a cycle of one turn; with
+    /// exhaust and intake columns too, a four-stroke cycle of 720° (table
+    /// dynamics: the results over both turns and rows past 360° in the
+    /// second; analyze: the first turn, expansion and exhaust); give
+    /// --bore with it
     #[arg(long, value_name = "CSV", requires = "bore")]
     pub indicator: Option<PathBuf>,
     /// The cylinder's bore D (piston area π D²/4), in the length unit
@@ -90,7 +93,7 @@ impl EngineArgs {
         if let (Some(path), Some(bore)) = (&self.indicator, self.bore) {
             let text = read_text(path, MAX_DATA_BYTES, "indicator diagram")?;
             let what = format!("indicator diagram {}", path.display());
-            engine = engine.with_gas(GasForce::Indicator(IndicatorDiagram::from_csv(
+            engine = engine.with_gas(GasForce::Indicator(IndicatorDiagram::from_csv_cycle(
                 &text, bore, &what,
             )?))?;
         }

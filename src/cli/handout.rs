@@ -1,5 +1,5 @@
 //! `slider-crank handout`: a printable page that works one engine through
-//! §35–37 and Ng; with `--exercise`, an exercise sheet and its answer key;
+//! §35–37 and Ng (and its dynamics, given `--mass`); with `--exercise`, an exercise sheet and its answer key;
 //! with `--class N`, a sheet and a key for each of N engines and a table
 //! of every answer.
 
@@ -33,6 +33,30 @@ pub struct HandoutArgs {
     pub units: UnitArgs,
     #[command(flatten)]
     pub load: LoadArgs,
+    /// Work the engine's dynamics after the diagrams, for a reciprocating
+    /// mass M (piston and cross-head) in slug (lbf·s²/ft): the inertia
+    /// force from Klein's CG, the crank effort T = F·OM with the gas force
+    /// of the steam indicator diagram of the turning-moment figure
+    /// (examples/indicator.csv, 10 in bore), the turning-moment diagram
+    /// with its mean torque and ΔE, and the flywheel; three steps and
+    /// their figures, about three more pages. Needs the units ft and lbf
+    #[arg(
+        long,
+        value_name = "M",
+        allow_negative_numbers = true,
+        conflicts_with_all = ["exercise", "class"]
+    )]
+    pub mass: Option<f64>,
+    /// The coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω
+    /// the flywheel of --mass is sized for
+    #[arg(
+        long,
+        value_name = "CS",
+        default_value_t = 0.02,
+        allow_negative_numbers = true,
+        requires = "mass"
+    )]
+    pub fluctuation: f64,
     /// The paper the page is printed on: a4 or letter (the CSS @page size;
     /// no figure or table is broken across two pages)
     #[arg(long, value_name = "PAPER", default_value = "a4")]
@@ -117,6 +141,9 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
     .with_paper(args.paper);
     if let Some(t) = args.load.torque {
         template = template.with_torque(t, args.load.friction)?;
+    }
+    if let Some(m) = args.mass {
+        template = template.with_dynamics(m, args.fluctuation)?;
     }
     let path = |suffix: &str| PathBuf::from(format!("{stem}{suffix}.html"));
     if let Some(count) = args.class {

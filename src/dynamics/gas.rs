@@ -22,12 +22,26 @@ pub enum GasForce {
 
 impl GasForce {
     /// The force at `pose` for a crank turning at `omega` (its sign says
-    /// which stroke the piston is on).
+    /// which stroke the piston is on), in the first turn of the cycle.
     pub fn at(&self, pose: &Pose, omega: f64) -> f64 {
+        self.at_turn(pose, omega, 0)
+    }
+
+    /// The force at `pose` in turn `turn` of the cycle (0 or 1 for a
+    /// four-stroke diagram; every turn is the same for a one-turn cycle).
+    pub fn at_turn(&self, pose: &Pose, omega: f64, turn: usize) -> f64 {
         match self {
             GasForce::None => 0.0,
             GasForce::Constant(f) => *f,
-            GasForce::Indicator(d) => d.force(pose, omega),
+            GasForce::Indicator(d) => d.force_in_turn(pose, omega, turn),
+        }
+    }
+
+    /// The turns of its cycle: 2 for a four-stroke indicator diagram, else 1.
+    pub fn turns(&self) -> usize {
+        match self {
+            GasForce::Indicator(d) => d.turns(),
+            _ => 1,
         }
     }
 }
@@ -41,11 +55,18 @@ impl GasForce {
 /// the rows. The force is pressure × bore area π D²/4, positive towards
 /// the crank. At a dead centre the two strokes' pressures may differ: OM
 /// is zero there and the crank effort stays continuous.
+///
+/// A four-stroke diagram ([`IndicatorDiagram::with_pumping`]) spans two
+/// turns: from the outer dead centre (θ = 0, ω > 0) expansion, exhaust
+/// (turn 0), intake, compression (turn 1); the pumping strokes have lines
+/// of their own.
 #[derive(Debug, Clone, PartialEq)]
 pub struct IndicatorDiagram {
     fractions: Vec<f64>,
     expansion: Vec<f64>,
     compression: Vec<f64>,
+    /// The exhaust and intake lines of a four-stroke cycle.
+    pumping: Option<(Vec<f64>, Vec<f64>)>,
     area: f64,
 }
 
@@ -93,8 +114,65 @@ impl IndicatorDiagram {
             fractions,
             expansion,
             compression,
+            pumping: None,
             area,
         })
+    }
+
+    /// The same diagram as a four-stroke cycle of two turns, with the
+    /// exhaust and intake lines (pressures at the same fractions).
+    ///
+    /// Errors: a line of another length than the fractions, a value not
+    /// finite, a force beyond the largest number.
+    pub fn with_pumping(mut self, exhaust: Vec<f64>, intake: Vec<f64>) -> Result<Self> {
+        let n = self.fractions.len();
+        if exhaust.len() != n || intake.len() != n {
+            return Err(Error::Parse(
+                "the exhaust and intake lines have a pressure at each stroke fraction".into(),
+            ));
+        }
+        let checked = Self::new(self.fractions.clone(), exhaust, intake, 1.0)?;
+        for &p in checked.expansion.iter().chain(&checked.compression) {
+            if !(p * self.area).is_finite() {
+                return Err(Error::OutOfRange {
+                    name: "pressure",
+                    value: p,
+                    reason: "pressure × bore area exceeds the largest number".into(),
+                });
+            }
+        }
+        self.pumping = Some((checked.expansion, checked.compression));
+        Ok(self)
+    }
+
+    /// The turns of the cycle: 2 with the pumping lines (four-stroke),
+    /// else 1.
+    pub fn turns(&self) -> usize {
+        if self.pumping.is_some() { 2 } else { 1 }
+    }
+
+    /// Reads a diagram as [`IndicatorDiagram::from_csv`] does, and a
+    /// four-stroke one when the CSV also has the columns `exhaust` and
+    /// `intake`: the columns say what cycle the data is of.
+    ///
+    /// Errors: those of `from_csv`; one of the two pumping columns
+    /// without the other.
+    pub fn from_csv_cycle(text: &str, bore: f64, what: &str) -> Result<Self> {
+        let d = Self::from_csv(text, bore, what)?;
+        let table = DataTable::parse(text, what)?;
+        let named = |n: &str| table.column(&[n]).ok();
+        match (named("exhaust"), named("intake")) {
+            (None, None) => Ok(d),
+            (Some(e), Some(i)) => d
+                .with_pumping(table.numbers(e)?, table.numbers(i)?)
+                .map_err(|e| match e {
+                    Error::Parse(m) => Error::Parse(format!("{what}: {m}")),
+                    e => e,
+                }),
+            _ => Err(Error::Parse(format!(
+                "{what}: a four-stroke indicator diagram has both an exhaust and an intake column"
+            ))),
+        }
     }
 
     /// Reads CSV text with the columns `fraction` (or `stroke`),
@@ -128,15 +206,20 @@ impl IndicatorDiagram {
 
     /// The pressure at stroke fraction `x` (clamped to 0…1) on the
     /// expansion stroke (`true`) or the compression stroke.
-    // cannot fail: `new` holds the three columns to one length n ≥ 2, and
-    // i is clamped to 1..=n − 1.
-    #[allow(clippy::indexing_slicing)]
     pub fn pressure(&self, x: f64, expansion: bool) -> f64 {
         let p = if expansion {
             &self.expansion
         } else {
             &self.compression
         };
+        self.interpolate(p, x)
+    }
+
+    /// The line `p` at stroke fraction `x` (clamped to 0…1).
+    // cannot fail: `new` and `with_pumping` hold every line to the
+    // fractions' length n ≥ 2, and i is clamped to 1..=n − 1.
+    #[allow(clippy::indexing_slicing)]
+    fn interpolate(&self, p: &[f64], x: f64) -> f64 {
         let x = x.clamp(0.0, 1.0);
         let i = self
             .fractions
@@ -148,31 +231,49 @@ impl IndicatorDiagram {
     }
 
     /// The work of one cycle, area × stroke × ∮ p dx (the diagram's area,
-    /// expansion minus compression, by the trapezoid rule, exact for the
-    /// linear pieces).
+    /// expansion minus compression, and for a four-stroke cycle intake
+    /// minus exhaust, by the trapezoid rule, exact for the linear pieces).
     pub fn work(&self, stroke: f64) -> f64 {
-        let loop_area: f64 = successive(&self.fractions)
-            .zip(successive(&self.expansion))
-            .zip(successive(&self.compression))
-            .map(|(((f0, f1), (e0, e1)), (c0, c1))| {
-                let dx = f1 - f0;
-                let hi = e1 + e0;
-                let lo = c1 + c0;
-                0.5 * dx * (hi - lo)
-            })
-            .sum();
-        self.area * stroke * loop_area
+        let mut area = self.loop_area(&self.expansion, &self.compression);
+        if let Some((exhaust, intake)) = &self.pumping {
+            area += self.loop_area(intake, exhaust);
+        }
+        self.area * stroke * area
     }
 
-    /// The force at `pose`: on the expansion stroke while the piston
-    /// moves towards the crank (ω ds/dθ < 0; at rest, while ds/dθ < 0).
+    /// ∫ (out − back) dx over the stroke by the trapezoid rule.
+    fn loop_area(&self, out: &[f64], back: &[f64]) -> f64 {
+        successive(&self.fractions)
+            .zip(successive(out))
+            .zip(successive(back))
+            .map(|(((f0, f1), (o0, o1)), (b0, b1))| 0.5 * (f1 - f0) * (o1 + o0 - b1 - b0))
+            .sum()
+    }
+
+    /// The force at `pose` in the first turn: on the expansion stroke
+    /// while the piston moves towards the crank (ω ds/dθ < 0; at rest,
+    /// while ds/dθ < 0).
     pub fn force(&self, pose: &Pose, omega: f64) -> f64 {
+        self.force_in_turn(pose, omega, 0)
+    }
+
+    /// The force at `pose` in turn `turn` of the cycle (taken modulo its
+    /// turns): towards the crank the expansion line (turn 0) or the
+    /// intake (turn 1); away from it the compression line, or for a
+    /// four-stroke cycle the exhaust (turn 0).
+    pub fn force_in_turn(&self, pose: &Pose, omega: f64, turn: usize) -> f64 {
         let m = pose.mechanism();
         let outer = m.pose(m.outer_dead_centre()).position();
         let x = (outer - pose.position()) / m.stroke();
         let direction = if omega < 0.0 { -1.0 } else { 1.0 };
-        let expansion = direction * pose.position_rate() < 0.0;
-        self.area * self.pressure(x, expansion)
+        let towards = direction * pose.position_rate() < 0.0;
+        let line = match (&self.pumping, turn % self.turns(), towards) {
+            (_, 0, true) => &self.expansion,
+            (Some((exhaust, _)), 0, false) => exhaust,
+            (Some((_, intake)), _, true) => intake,
+            _ => &self.compression,
+        };
+        self.area * self.interpolate(line, x)
     }
 }
 

@@ -50,10 +50,19 @@ impl Engine {
     /// Errors: a force beyond the largest number (very large masses or
     /// pressures near the limit of assembly).
     pub fn at(&self, angle: Angle) -> Result<EnginePose> {
+        self.at_turn(angle, 0)
+    }
+
+    /// [`Engine::at`] in turn `turn` of the gas force's cycle (1: the
+    /// intake and compression of a four-stroke cycle; for a one-turn
+    /// cycle every turn is the same).
+    ///
+    /// Errors: as [`Engine::at`].
+    pub fn at_turn(&self, angle: Angle, turn: usize) -> Result<EnginePose> {
         let pose = self.mechanism().pose(angle);
         let omega = self.omega();
         let w2 = omega * omega;
-        let gas = self.gas().at(&pose, omega);
+        let gas = self.gas().at_turn(&pose, omega, turn);
         let m = self.reciprocating_mass();
         let inertia_force = m * w2 * pose.position_acceleration();
         let inertia_force_graphical = -m * w2 * graphical_cg(&pose);
@@ -127,8 +136,14 @@ impl Engine {
     /// (no construction, no check): what the turning-moment diagram
     /// integrates. Equal to [`EnginePose::torque`].
     pub fn torque(&self, pose: &Pose) -> f64 {
+        self.torque_in_turn(pose, 0)
+    }
+
+    /// [`Engine::torque`] in turn `turn` of the gas force's cycle (the
+    /// second turn of a four-stroke cycle: intake and compression).
+    pub fn torque_in_turn(&self, pose: &Pose, turn: usize) -> f64 {
         let omega = self.omega();
-        let effort = self.gas().at(pose, omega)
+        let effort = self.gas().at_turn(pose, omega, turn)
             + self.reciprocating_mass() * omega * omega * pose.position_acceleration();
         let rod = self
             .rod()

@@ -100,6 +100,25 @@ pub(super) fn inline_svg(svg: &str, prefix: &str) -> String {
         .replace("href=\"#", &format!("href=\"#{prefix}-"))
 }
 
+/// The dynamics diagram `name` for the handout's engine, pose, speed,
+/// units, reciprocating mass and coefficient of fluctuation of speed (the
+/// figures' own gas force, their indicator diagram); the pose only for
+/// the one drawn at a pose, the inertia force's.
+pub(super) fn dynamics(h: &Handout, name: FigureName) -> Result<Figure> {
+    let (mass, fluctuation) = h.dynamics().unzip();
+    let options = FigureOptions {
+        mechanism: Some(*h.mechanism()),
+        omega: Some(h.omega()),
+        angle: Some(h.angle()).filter(|_| name == FigureName::InertiaForce),
+        length_unit: Some(h.units().length().clone()),
+        force_unit: Some(h.units().force().clone()),
+        mass,
+        fluctuation: fluctuation.filter(|_| name == FigureName::Flywheel),
+        ..FigureOptions::default()
+    };
+    name.figure(&options)
+}
+
 /// A faint grid of squares `step` world units wide over the mechanism's
 /// panel, lines through the crank centre C, as SVG to be set just above
 /// the figure's paper: the page on which a student measures and draws.

@@ -89,6 +89,14 @@ impl Paper {
     }
 }
 
+/// The dynamics a handout works: the reciprocating mass and the
+/// coefficient of fluctuation of speed the flywheel is sized for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Dynamics {
+    mass: f64,
+    fluctuation: f64,
+}
+
 /// One engine at one crank angle, to be worked through on a handout or set
 /// as an exercise. Built with [`Handout::new`] and the `with_*` methods,
 /// each of which validates its value.
@@ -100,6 +108,7 @@ pub struct Handout {
     units: Units,
     torque: Option<f64>,
     friction: f64,
+    dynamics: Option<Dynamics>,
     paper: Paper,
     title: Option<String>,
 }
@@ -115,6 +124,7 @@ impl Handout {
             units: Units::FOOT_POUND,
             torque: None,
             friction: 0.0,
+            dynamics: None,
             paper: Paper::A4,
             title: None,
         }
@@ -128,7 +138,8 @@ impl Handout {
     }
 
     /// With lengths and forces in `units` (names only: no number is
-    /// converted).
+    /// converted). With the dynamics ([`Handout::with_dynamics`]) any but
+    /// feet and pounds-force make [`Handout::page`] an error.
     pub fn with_units(mut self, units: Units) -> Self {
         self.units = units;
         self
@@ -143,6 +154,36 @@ impl Handout {
         crate::construct::check_load(torque, friction)?;
         self.torque = Some(torque);
         self.friction = friction;
+        Ok(self)
+    }
+
+    /// With the engine's dynamics worked after the diagrams: the
+    /// reciprocating mass `mass` (> 0, in the unit that makes mass ×
+    /// length/s² the force unit: slug with ft and lbf) and the gas force
+    /// of the turning-moment figure's steam indicator diagram
+    /// (`examples/indicator.csv`, 10 in bore), through the inertia force,
+    /// the crank effort *F*·*OM*, the turning-moment diagram and the
+    /// flywheel for the coefficient of fluctuation of speed `fluctuation`
+    /// (0 < C_s < 2; 0.02 is usual).
+    ///
+    /// Errors: a mass not positive or not finite; a coefficient out of
+    /// range; units other than feet and pounds-force, the units of the
+    /// indicator diagram (lbf/ft²) and its bore.
+    pub fn with_dynamics(mut self, mass: f64, fluctuation: f64) -> Result<Self> {
+        let mass = crate::error::positive("mass", mass)?;
+        if !(fluctuation > 0.0 && fluctuation < 2.0) {
+            return Err(Error::OutOfRange {
+                name: "fluctuation",
+                value: fluctuation,
+                reason: "the coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω is above 0 and below 2 (where the least speed would be zero)".into(),
+            });
+        }
+        if self.units != Units::FOOT_POUND {
+            return Err(Error::Parse(
+                "the handout's dynamics take their gas force from an indicator diagram in lbf/ft² with a 10 in bore: give lengths in ft and forces in lbf with --mass".into(),
+            ));
+        }
+        self.dynamics = Some(Dynamics { mass, fluctuation });
         Ok(self)
     }
 
@@ -193,6 +234,12 @@ impl Handout {
         self.friction
     }
 
+    /// The reciprocating mass and the coefficient of fluctuation of speed
+    /// of the dynamics, if they are worked.
+    pub fn dynamics(&self) -> Option<(f64, f64)> {
+        self.dynamics.map(|d| (d.mass, d.fluctuation))
+    }
+
     /// The paper.
     pub fn paper(&self) -> Paper {
         self.paper
@@ -208,7 +255,14 @@ impl Handout {
     pub fn page(&self) -> Result<String> {
         let reading = self.reading()?;
         let steps = steps::steps(self, &reading)?;
-        Ok(page::handout(self, &steps, &steps::rows(self, &reading)))
+        let mut all = steps::rows(self, &reading);
+        all.extend(
+            steps
+                .iter()
+                .filter(|s| steps::DYNAMICS.contains(&s.id))
+                .flat_map(|s| s.rows.clone()),
+        );
+        Ok(page::handout(self, &steps, &all))
     }
 
     /// The exercise sheet: the mechanism to scale on a faint grid, the
@@ -249,6 +303,24 @@ mod tests {
         assert!(h.clone().with_omega(f64::NAN).is_err());
         assert!(h.clone().with_torque(f64::INFINITY, 0.0).is_err());
         assert!(h.clone().with_torque(1.0, -1.0).is_err());
-        assert!(h.with_torque(1.0, 0.5).is_ok());
+        assert!(h.clone().with_torque(1.0, 0.5).is_ok());
+        assert!(h.clone().with_dynamics(0.0, 0.02).is_err());
+        assert!(h.clone().with_dynamics(1.0, 2.0).is_err());
+        assert!(h.clone().with_dynamics(1.0, f64::NAN).is_err());
+        assert!(
+            h.clone()
+                .with_units(Units::MILLIMETRE_NEWTON)
+                .with_dynamics(1.0, 0.02)
+                .is_err()
+        );
+        // Units changed after the dynamics are refused when the page is
+        // made, as the indicator diagram is in lbf/ft².
+        let late = h.with_dynamics(1.0, 0.02).unwrap();
+        assert_eq!(late.dynamics(), Some((1.0, 0.02)));
+        let e = late
+            .with_units(Units::MILLIMETRE_NEWTON)
+            .page()
+            .unwrap_err();
+        assert!(e.to_string().contains("lbf/ft²"), "{e}");
     }
 }

@@ -249,6 +249,18 @@ pub(super) fn command(h: &Handout, extra: &str) -> String {
     c
 }
 
+/// The flags of the dynamics the handout works (only a handout does:
+/// an exercise asks none of them), or none.
+fn dynamics_flags(h: &Handout) -> String {
+    h.dynamics().map_or(String::new(), |(mass, fluctuation)| {
+        format!(
+            " --mass {} --fluctuation {}",
+            plain(mass),
+            plain(fluctuation)
+        )
+    })
+}
+
 /// The crank speed as the command line would be given it: `--rpm N` with
 /// the shortest N (at most 12 decimals) that gives this very ω back
 /// (`--rpm 1500`, not the digits of 50π), else `--omega ω`.
@@ -286,7 +298,11 @@ pub(super) fn handout(h: &Handout, steps: &[Step], all: &[Row]) -> String {
             p.subtitle {
                 "The velocity and acceleration of the cross-head and the connecting rod by the "
                 "constructions of “Slider-crank chains” (§35–37) and the static forces after "
-                "T. W. Ng, for one engine."
+                "T. W. Ng, for one engine"
+                @if h.dynamics().is_some() {
+                    "; then its inertia forces, turning moment and flywheel"
+                }
+                "."
             }
         }
         p { (rich(&data_sentence(h))) }
@@ -323,7 +339,7 @@ pub(super) fn handout(h: &Handout, steps: &[Step], all: &[Row]) -> String {
             }
             (values_table(all, None))
         }
-        (footer(&command(h, "")))
+        (footer(&command(h, &dynamics_flags(h))))
     };
     document(
         &format!("{}: {}", title, plain_data(h)),

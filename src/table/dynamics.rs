@@ -40,7 +40,8 @@ pub fn dynamics_head(
     let mut notes = vec![
         "Forces along the stroke are positive towards the crank centre; F = gas + inertia; rod: F / cos φ (compression); guides: the slider's thrust along +y, −F tan φ; T = F·OM + the rod's inertia torque, counter-clockwise positive.".to_string(),
         format!(
-            "Over the turn ({} cylinder{} at {}°): work {} {t}, mean torque {} {t}, fluctuation of energy ΔE = {} {t} (most energy at θ = {}°, least at {}°; {} areas, integrated to {:.1e} {t}).",
+            "Over the {} ({} cylinder{} at {}°): work {} {t}, mean torque {} {t}, fluctuation of energy ΔE = {} {t} (most energy at θ = {}°, least at {}°; {} areas, integrated to {:.1e} {t}).",
+            if turn.cycle_deg > 360.0 { "four-stroke cycle of 720°, rows past 360° in its second turn" } else { "turn" },
             turn.phases_deg.len(),
             if turn.phases_deg.len() == 1 { "" } else { "s" },
             turn.phases_deg.iter().map(|d| plain(*d)).collect::<Vec<_>>().join(", "),
@@ -97,7 +98,8 @@ fn sig(x: f64) -> String {
     }
 }
 
-/// One row of the dynamics table at `degrees`.
+/// One row of the dynamics table at `degrees`; past 360° (to 720°) in
+/// the second turn of a four-stroke cycle.
 pub fn dynamics_row(
     engine: &Engine,
     phases_deg: &[f64],
@@ -105,7 +107,9 @@ pub fn dynamics_row(
     decimals: usize,
 ) -> Result<Vec<String>> {
     let angle = Angle::from_degrees(degrees)?;
-    let at = engine.at(angle)?;
+    let turns = engine.gas().turns() as i64;
+    let turn = (degrees.div_euclid(360.0) as i64).rem_euclid(turns);
+    let at = engine.at_turn(angle, turn as usize)?;
     let mut row = vec![
         fixed(degrees, 1),
         fixed(at.gas_force, decimals),
@@ -119,8 +123,10 @@ pub fn dynamics_row(
         fixed(at.torque, decimals),
     ];
     if phases_deg.len() > 1 {
+        // The turn carried by the phases: cylinder i at θ + δ_i + 360° turn.
+        let shifted: Vec<f64> = phases_deg.iter().map(|d| d + 360.0 * turn as f64).collect();
         row.push(fixed(
-            engine.torque_of_cylinders(phases_deg, angle)?,
+            engine.torque_of_cylinders(&shifted, angle)?,
             decimals,
         ));
     }

@@ -5,13 +5,15 @@
 //! One file per group of steps: the mechanism to scale (§35), the velocity
 //! (D and E, the velocity scale), the acceleration (Kisch's construction,
 //! the acceleration scale), the rod's rates (§37), the OM line and the
-//! forces (Ng) and the diagrams. Each step is a function of the [`Work`]
+//! forces (Ng), the diagrams and, given a mass, the engine's dynamics.
+//! Each step is a function of the [`Work`]
 //! they share, and its rows a function of their own, so that an exercise
 //! sheet has every row without drawing a figure.
 
 mod acceleration;
 mod data;
 mod diagrams;
+mod dynamics;
 mod forces;
 mod mechanism;
 mod number;
@@ -31,6 +33,7 @@ use crate::error::Result;
 use crate::figure::Figure;
 use acceleration::{acceleration_scale, acceleration_scale_rows, kisch, kisch_rows};
 use diagrams::diagrams;
+use dynamics::dynamics;
 use forces::{forces, forces_rows};
 use mechanism::{mechanism, mechanism_rows};
 use rod::{rod, rod_rows};
@@ -67,8 +70,12 @@ pub(super) struct Step {
     pub rows: Vec<Row>,
 }
 
+/// The ids of the steps of the engine's dynamics, whose rows the page's
+/// summary adds to [`rows`] (an exercise asks none of them).
+pub(super) const DYNAMICS: [&str; 3] = ["inertia", "turning-moment", "flywheel"];
+
 /// Every step of the handout, in order; the OM line and the forces only
-/// when a torque is given.
+/// when a torque is given, the dynamics only when a mass is.
 pub(super) fn steps(h: &Handout, r: &Reading) -> Result<Vec<Step>> {
     let w = Work::new(h, r);
     let mut steps = vec![
@@ -81,6 +88,7 @@ pub(super) fn steps(h: &Handout, r: &Reading) -> Result<Vec<Step>> {
     ];
     steps.extend(forces(&w)?);
     steps.push(diagrams(&w)?);
+    steps.extend(dynamics(&w)?);
     Ok(steps)
 }
 
