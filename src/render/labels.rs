@@ -280,20 +280,28 @@ impl Near<'_> {
         self.cost_of(b, 0.0, f64::INFINITY)
     }
 
-    /// Whether `b` meets a box or a line a letter may not sit on (one of
-    /// weight [`OPEN`] or more: not a centre line, which opens for it).
-    fn struck(&self, b: &Bounds) -> bool {
-        self.cost_of(b, OPEN, f64::MIN_POSITIVE) > 0.0
-    }
-
     /// [`Near::cost`] of the boxes and of the segments weighing at least
     /// `least`, or some sum not below `limit` once it reaches it (the
     /// terms are never negative: a caller that only asks whether the cost
     /// stays under `limit` learns it sooner).
     fn cost_of(&self, b: &Bounds, least: f64, limit: f64) -> f64 {
+        self.cost_among(self.found.iter(), b, least, limit)
+    }
+
+    /// [`Near::cost_of`] over `found`, some of [`Near::found`] in their
+    /// order, which must hold every one of them that meets `b`.
+    fn cost_among<'f>(
+        &self,
+        found: impl Iterator<Item = &'f (Bounds, Obstacle)>,
+        b: &Bounds,
+        least: f64,
+        limit: f64,
+    ) -> f64 {
         debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
-        for (bounds, obstacle) in &self.found {
+        for (bounds, obstacle) in found {
+            #[cfg(test)]
+            EXAMINED.set(EXAMINED.get() + 1);
             if !bounds.meets(b) {
                 continue;
             }
@@ -324,6 +332,93 @@ impl Near<'_> {
             }
         }
         cost
+    }
+}
+
+#[cfg(test)]
+thread_local! {
+    /// How many obstacles the searches of this thread have looked at
+    /// (each one whose box is compared with a candidate's).
+    static EXAMINED: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+}
+
+/// The obstacles of one row of the fine grid ([`nooks`]), sorted into
+/// its columns: each column lists, in the order of [`Near::found`], those
+/// whose boxes reach across the x of its candidates' boxes (and perhaps
+/// a few more), so that a candidate looks only at what is beside it
+/// however many obstacles cross the row elsewhere. The candidates' costs
+/// are the sums [`Near::cost_of`] adds, term by term.
+struct Columns<'n, 'a> {
+    near: &'n Near<'a>,
+    /// Where each column's list starts in `entries` (one more than the
+    /// columns: the end of the last).
+    starts: Vec<usize>,
+    /// The lists, column after column: indices into `near.found`.
+    entries: Vec<usize>,
+}
+
+impl<'n, 'a> Columns<'n, 'a> {
+    /// The columns `-n..=n` of a row whose candidate `i` is centred at
+    /// x = `x0` + `i` [`NOOK_STEP`], the boxes `half_width` wide on each
+    /// side (clearance included).
+    fn new(near: &'n Near<'a>, x0: f64, n: i32, half_width: f64) -> Self {
+        let count = (2 * n.max(0) + 1) as usize;
+        // The columns an obstacle may meet, one more on each side than the
+        // arithmetic says (rounding can move an edge by an ulp); an
+        // obstacle that misses the row misses every column.
+        let span = |b: &Bounds| -> Option<(usize, usize)> {
+            let lo = ((b.min.x - half_width - x0) / NOOK_STEP).floor() - 1.0;
+            let hi = ((b.max.x + half_width - x0) / NOOK_STEP).ceil() + 1.0;
+            let (lo, hi) = (lo.max(-f64::from(n)), hi.min(f64::from(n)));
+            // NaN compares false: such an obstacle is kept in no column, and
+            // a box with a NaN edge meets no candidate either.
+            (lo <= hi).then(|| ((lo + f64::from(n)) as usize, (hi + f64::from(n)) as usize))
+        };
+        let spans: Vec<Option<(usize, usize)>> = near.found.iter().map(|(b, _)| span(b)).collect();
+        let mut starts = vec![0usize; count + 1];
+        for &(lo, hi) in spans.iter().flatten() {
+            for c in starts.iter_mut().skip(lo + 1).take(hi - lo + 1) {
+                *c += 1;
+            }
+        }
+        let mut running = 0;
+        for c in &mut starts {
+            running += *c;
+            *c = running;
+        }
+        let mut next = starts.clone();
+        let mut entries = vec![0usize; starts.last().copied().unwrap_or(0)];
+        for (k, &(lo, hi)) in spans.iter().enumerate().filter_map(|(k, s)| Some((k, s.as_ref()?))) {
+            for column in lo..=hi {
+                if let Some(at) = next.get_mut(column) {
+                    if let Some(e) = entries.get_mut(*at) {
+                        *e = k;
+                    }
+                    *at += 1;
+                }
+            }
+        }
+        Self {
+            near,
+            starts,
+            entries,
+        }
+    }
+
+    /// The obstacles listed for column `i` (`-n..=n`), in the order of
+    /// [`Near::found`]; none for a column outside the row.
+    fn at(&self, i: i32, n: i32) -> impl Iterator<Item = &'n (Bounds, Obstacle)> + '_ {
+        let c = usize::try_from(i + n).unwrap_or(usize::MAX);
+        let (from, to) = match (self.starts.get(c), self.starts.get(c.saturating_add(1))) {
+            (Some(&from), Some(&to)) => (from, to),
+            _ => (0, 0),
+        };
+        let found = &self.near.found;
+        self.entries
+            .get(from..to)
+            .unwrap_or_default()
+            .iter()
+            .filter_map(move |&k| found.get(k))
     }
 }
 
@@ -411,7 +506,11 @@ pub(crate) fn place(
     let near = obstacles.near(&within, Some(anchor));
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
-    let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
+    // `cost_of` is [`Near::cost_of`] over what the candidate may meet.
+    let consider = |cost_of: &dyn Fn(&Bounds, f64, f64) -> f64,
+                    best: &mut (f64, f64, Point),
+                    centre: Point,
+                    penalty: f64| {
         // The cost is never negative: a candidate whose penalty alone
         // reaches the best score cannot beat it.
         if penalty >= best.0 {
@@ -420,12 +519,14 @@ pub(crate) fn place(
         let b = Bounds::around(centre, half);
         // A candidate whose cost reaches this cannot beat the best.
         let limit = best.0 - penalty;
-        let mut cost = near.cost_of(&b.inflate(CLEARANCE), 0.0, limit);
+        let mut cost = cost_of(&b.inflate(CLEARANCE), 0.0, limit);
         if cost >= limit {
             return;
         }
-        if cost > 0.0 && near.struck(&b.glyphs()) {
-            // Not only the room about the glyphs is crowded: the glyphs.
+        // Not only the room about the glyphs is crowded: the glyphs meet
+        // a box or a line a letter may not sit on (one of weight [`OPEN`]
+        // or more: not a centre line, which opens for it).
+        if cost > 0.0 && cost_of(&b.glyphs(), OPEN, f64::MIN_POSITIVE) > 0.0 {
             cost += STRUCK;
         }
         if !b.inside(page) {
@@ -436,12 +537,13 @@ pub(crate) fn place(
         }
     };
     let units = directions();
+    let everything = |b: &Bounds, least: f64, limit: f64| near.cost_of(b, least, limit);
     for extra in RINGS {
         for (k, &(dx, dy)) in units.iter().enumerate() {
             let u = Vector::new(dx, dy);
             let reach = gap + extra + dx.abs() * half.x + dy.abs() * half.y;
             consider(
-                &near,
+                &everything,
                 &mut best,
                 anchor + u * reach,
                 1.5 * extra + 0.05 * k as f64,
@@ -453,15 +555,21 @@ pub(crate) fn place(
     }
     // Every ring is crowded: look at every position of a fine grid within
     // `reach`, for a nook the sixteen directions miss; row by row, each
-    // looking only at what crosses its band.
-    for row in nooks(anchor, half, gap, reach.max(gap)) {
-        let Some((_, first)) = row.first() else {
+    // looking only at what crosses its band, and each candidate only at
+    // what lies beside it in that band.
+    let reach = reach.max(gap);
+    let n = nook_columns(half, reach);
+    for row in nooks(anchor, half, gap, reach) {
+        let Some((_, first, _)) = row.first() else {
             continue;
         };
         let y = first.y;
         let band = near.band(y - half.y - CLEARANCE, y + half.y + CLEARANCE);
-        for (penalty, centre) in row {
-            consider(&band, &mut best, centre, penalty);
+        let columns = Columns::new(&band, anchor.x, n, half.x + CLEARANCE);
+        for (penalty, centre, i) in row {
+            let beside =
+                |b: &Bounds, least: f64, limit: f64| band.cost_among(columns.at(i, n), b, least, limit);
+            consider(&beside, &mut best, centre, penalty);
         }
     }
     (best.2, best.1)
@@ -486,18 +594,25 @@ pub(crate) const STRUCK: f64 = 1000.0;
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;
 
+/// How many columns the fine grid of [`nooks`] has on each side of the
+/// anchor.
+fn nook_columns(half: Vector, reach: f64) -> i32 {
+    ((half.x + reach) / NOOK_STEP).ceil() as i32
+}
+
 /// Rows (top to bottom) of the centres of a fine grid around `anchor`
 /// whose box (half-size `half`) keeps at least `gap` / 2 and at most
 /// `reach` from the anchor, each with the penalty its distance beyond
-/// `gap` earns (as in the rings).
+/// `gap` earns (as in the rings) and its column (`i`: the centre is
+/// `i` [`NOOK_STEP`] right of the anchor, `i` within ±[`nook_columns`]).
 fn nooks(
     anchor: Point,
     half: Vector,
     gap: f64,
     reach: f64,
-) -> impl Iterator<Item = Vec<(f64, Point)>> {
+) -> impl Iterator<Item = Vec<(f64, Point, i32)>> {
     let (nx, ny) = (
-        ((half.x + reach) / NOOK_STEP).ceil() as i32,
+        nook_columns(half, reach),
         ((half.y + reach) / NOOK_STEP).ceil() as i32,
     );
     (-ny..=ny).map(move |j| {
@@ -508,7 +623,7 @@ fn nooks(
                 let out = Vector::new((d.x.abs() - half.x).max(0.0), (d.y.abs() - half.y).max(0.0));
                 let dist = out.norm();
                 (dist >= 0.5 * gap && dist <= reach)
-                    .then(|| (1.5 * (dist - gap).max(0.0), anchor + d))
+                    .then(|| (1.5 * (dist - gap).max(0.0), anchor + d, i))
             })
             .collect()
     })
@@ -610,5 +725,95 @@ mod tests {
         let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
         let (_, cost) = place(p, Vector::new(6.0, 8.0), 4.0, 20.0, &o, &page);
         assert!(cost >= STRUCK, "{cost}");
+    }
+
+    /// Horizontal lines every 8 units across a 100-unit page, weight 3:
+    /// no letter 16 units tall fits between two, so every ring is crowded
+    /// and the search goes on to the fine grid.
+    fn ruled() -> Obstacles {
+        let mut o = Obstacles::default();
+        o.set_weight(3.0);
+        for k in 0..=12 {
+            let y = 8.0 * k as f64 + 2.0;
+            o.segment(Point::new(0.0, y), Point::new(100.0, y));
+        }
+        o
+    }
+
+    /// The obstacles looked at while placing one letter at (50, 50) on
+    /// `o`, and where it went.
+    fn examined(mut o: Obstacles) -> (u64, Point, f64) {
+        o.build();
+        let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
+        EXAMINED.set(0);
+        let (at, cost) = place(Point::new(50.0, 50.0), Vector::new(6.0, 8.0), 4.0, 20.0, &o, &page);
+        (EXAMINED.get(), at, cost)
+    }
+
+    #[test]
+    fn a_crowded_search_looks_only_at_what_lies_beside_its_candidates() {
+        // Two dense curves (1 200 short segments) beside the crowd, 45
+        // units either side of the letter's point: inside the search's
+        // square and across every row of its grid, but beside none of its
+        // candidates (the grid reaches 34 units, the rings 34).
+        let (before, at, cost) = examined(ruled());
+        let mut o = ruled();
+        for x in [5.0, 95.0] {
+            let points: Vec<Point> = (0..=600)
+                .map(|k| Point::new(x + 0.01 * (k % 2) as f64, 20.0 + 0.1 * k as f64))
+                .collect();
+            o.polyline(&points);
+        }
+        let (after, at_too, cost_too) = examined(o);
+        assert_eq!((at, cost), (at_too, cost_too), "the curves moved the letter");
+        assert!(cost >= STRUCK, "the grid was not searched: {cost}");
+        // The 80 ring candidates look at every obstacle of the square (for
+        // their cost, and again whether the glyphs are struck): that much
+        // more for 1 200 more, and nothing more for the grid's ~700
+        // candidates, each of which once looked at all that crossed its
+        // row (about 1.1 million more).
+        let added = after - before;
+        assert!(added <= 2 * 80 * 1200, "{added} more obstacles looked at");
+    }
+
+    #[test]
+    fn a_column_lists_every_obstacle_that_meets_its_candidates_in_order() {
+        // Segments and boxes scattered by a fixed recurrence, some huge,
+        // some a point, some far outside the row.
+        let mut o = Obstacles::default();
+        let mut seed = 12345u64;
+        let mut next = || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for k in 0..400 {
+            let (x, y) = (200.0 * next() - 50.0, 200.0 * next() - 50.0);
+            let size = if k % 50 == 0 { 300.0 } else { 12.0 * next() };
+            if k % 3 == 0 {
+                o.boxed(Bounds::around(Point::new(x, y), Vector::new(size, 0.5 * size)));
+            } else {
+                o.segment(Point::new(x, y), Point::new(x + size * next(), y - size * next()));
+            }
+        }
+        o.build();
+        let anchor = Point::new(47.3, 52.1);
+        let (half, reach) = (Vector::new(7.25, 6.5), 18.0);
+        let within = Bounds::around(anchor, Vector::new(80.0, 80.0));
+        let near = o.near(&within, Some(anchor));
+        let n = nook_columns(half, reach);
+        let mut checked = 0;
+        for row in nooks(anchor, half, 4.0, reach) {
+            let y = row[0].1.y;
+            let band = near.band(y - half.y - CLEARANCE, y + half.y + CLEARANCE);
+            let columns = Columns::new(&band, anchor.x, n, half.x + CLEARANCE);
+            for (_, centre, i) in row {
+                let b = Bounds::around(centre, half).inflate(CLEARANCE);
+                let listed: Vec<_> = columns.at(i, n).filter(|(o, _)| o.meets(&b)).collect();
+                let all: Vec<_> = band.found.iter().filter(|(o, _)| o.meets(&b)).collect();
+                assert_eq!(listed, all, "column {i} of the row at {y}");
+                checked += all.len();
+            }
+        }
+        assert!(checked > 1000, "{checked}");
     }
 }
