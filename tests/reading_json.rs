@@ -130,7 +130,15 @@ fn engines() -> Vec<SliderCrank> {
 
 fn angles() -> Vec<f64> {
     let mut angles: Vec<f64> = (0..72).map(|k| 5.0 * k as f64).collect();
-    angles.extend([1e-300, 5e-324, 89.99999999999999, 90.0, 270.0, 359.9999999999999, 1e300]);
+    angles.extend([
+        1e-300,
+        5e-324,
+        89.99999999999999,
+        90.0,
+        270.0,
+        359.9999999999999,
+        1e300,
+    ]);
     angles
 }
 
@@ -158,7 +166,12 @@ fn the_typed_writer_writes_the_old_trees_bytes() {
                 let Ok(r) = Reading::new(&pose, omega, torque, mu) else {
                     continue;
                 };
-                same(&r, m, u, &format!("{m:?} at {degrees}°, ω {omega}, {load:?}"));
+                same(
+                    &r,
+                    m,
+                    u,
+                    &format!("{m:?} at {degrees}°, ω {omega}, {load:?}"),
+                );
                 count += 1;
             }
         }
@@ -175,7 +188,13 @@ fn centres_at_infinity_and_indeterminate_are_written_as_before() {
     assert!(matches!(r.d, Intersection::AtInfinity(_)));
     same(&r, &m, &Units::FOOT_POUND, "D at infinity");
     // A dead centre: no slider force.
-    let dead = Reading::new(&m.pose(Angle::from_degrees(0.0).unwrap()), 1.0, Some(1.0), 0.0).unwrap();
+    let dead = Reading::new(
+        &m.pose(Angle::from_degrees(0.0).unwrap()),
+        1.0,
+        Some(1.0),
+        0.0,
+    )
+    .unwrap();
     assert_eq!(dead.statics.unwrap().force, None);
     same(&dead, &m, &Units::FOOT_POUND, "dead centre");
     // The forms no engine reaches through `Reading::new`, written all the
@@ -196,10 +215,18 @@ fn centres_at_infinity_and_indeterminate_are_written_as_before() {
 #[test]
 fn dynamics_take_their_place_among_the_keys() {
     let m = SliderCrank::new(1.0, 4.0, 0.0).unwrap();
-    let r = Reading::new(&m.pose(Angle::from_degrees(30.0).unwrap()), 2.0, Some(5.0), 0.1).unwrap();
+    let r = Reading::new(
+        &m.pose(Angle::from_degrees(30.0).unwrap()),
+        2.0,
+        Some(5.0),
+        0.1,
+    )
+    .unwrap();
     let dynamics = json!({"torque": -1.5, "rod": null, "unbalanced": {"primary": 2.0}});
     let mut old = old::to_json(&r, &m, &Units::FOOT_POUND);
-    old.as_object_mut().unwrap().insert("dynamics".into(), dynamics.clone());
+    old.as_object_mut()
+        .unwrap()
+        .insert("dynamics".into(), dynamics.clone());
     let new = r.json(&m, &Units::FOOT_POUND).with_dynamics(&dynamics);
     let text = serde_json::to_string_pretty(&new).unwrap();
     assert_eq!(text, serde_json::to_string_pretty(&old).unwrap());
