@@ -328,6 +328,7 @@ impl<'a> Near<'a> {
     /// `least`, or some sum not below `limit` once it reaches it (the
     /// terms are never negative: a caller that only asks whether the cost
     /// stays under `limit` learns it sooner).
+    ///
     /// The obstacles are looked at in the order of `found`, a group and
     /// a run at a time: a group or run whose box misses `b` holds none
     /// that meets it, so the sum is the same, term by term, as one over
