@@ -490,3 +490,45 @@ fn every_point_of_the_second_round_is_tested() {
         );
     }
 }
+
+/// The test functions `tests/robustness.rs`'s tables name are looked for in
+/// every Rust file under src/ and tests/.
+fn sources() -> String {
+    let mut sources = String::new();
+    for dir in ["src", "tests"] {
+        let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)];
+        while let Some(d) = stack.pop() {
+            for entry in std::fs::read_dir(d).unwrap() {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    stack.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs") {
+                    sources.push_str(&std::fs::read_to_string(path).unwrap());
+                }
+            }
+        }
+    }
+    sources
+}
+
+/// Each row of "work in proportion" names tests that count the work
+/// (none times it), and they exist.
+#[test]
+fn every_point_of_work_in_proportion_is_tested() {
+    let rows = five_cell_rows("## Second round: work in proportion", |l| {
+        !l.starts_with("| point")
+    });
+    let points: Vec<&str> = rows.iter().map(|r| r[0].as_str()).collect();
+    assert_eq!(points, ["labels"]);
+    let sources = sources();
+    for row in &rows {
+        let names = spans(&row[4]);
+        assert!(!names.is_empty(), "{}: no test named", row[1]);
+        for name in names {
+            assert!(
+                sources.contains(&format!("fn {name}(")),
+                "no test function {name}"
+            );
+        }
+    }
+}

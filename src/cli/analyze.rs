@@ -3,7 +3,6 @@
 use super::args::{AngleSpec, GuardArgs, LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
-use serde_json::Value;
 use slider_crank::analytic::statics::Friction;
 use slider_crank::construct::Reading;
 use slider_crank::dynamics::{Engine, EnginePose};
@@ -53,7 +52,7 @@ const VALUES_PER_ANGLE: u64 = 43;
 /// What `--torque` adds to [`VALUES_PER_ANGLE`]: the seven statics.
 const STATICS_VALUES: u64 = 7;
 
-/// Everything computed at one angle: the reading ([`Reading::to_json`]
+/// Everything computed at one angle: the reading ([`Reading::json`]
 /// adds the six virtual centres) and, with masses, the engine's forces.
 struct Report<'a> {
     reading: Reading,
@@ -98,13 +97,28 @@ fn analyse<'a>(
     })
 }
 
-fn to_json(m: &SliderCrank, report: &Report, units: &Units) -> Value {
-    let mut v = report.reading.to_json(m, units);
-    if let (Some((engine, at)), Some(fields)) = (&report.dynamics, v.as_object_mut()) {
-        let dynamics = super::dynamics::to_json(engine, at, report.reading.pose.angle(), units);
-        fields.insert("dynamics".into(), dynamics);
+/// A report as the JSON object `analyze --json` prints, serialised
+/// where it is written ([`Reading::json`]; the engine's dynamics, when
+/// asked for, as `dynamics::to_json` builds them).
+struct ReportJson<'a> {
+    mechanism: &'a SliderCrank,
+    report: Report<'a>,
+    units: &'a Units,
+}
+
+impl serde::Serialize for ReportJson<'_> {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        let r = &self.report;
+        let json = r.reading.json(self.mechanism, self.units);
+        match &r.dynamics {
+            Some((engine, at)) => {
+                let angle = r.reading.pose.angle();
+                let dynamics = super::dynamics::to_json(engine, at, angle, self.units);
+                json.with_dynamics(&dynamics).serialize(s)
+            }
+            None => json.serialize(s),
+        }
     }
-    v
 }
 
 fn fmt_point(p: Option<Point>) -> String {
@@ -244,9 +258,12 @@ fn reports<'a>(
 /// Writes `objects` as one pretty JSON array, each serialised straight
 /// to standard output as it is computed (never a string of its own, nor
 /// the array held): the bytes of `to_string_pretty` on the whole array.
-fn stream_array(objects: impl Iterator<Item = Result<Value>>, out: &mut Stdout) -> Result<()> {
+fn stream_array<T: serde::Serialize>(
+    objects: impl Iterator<Item = Result<T>>,
+    out: &mut Stdout,
+) -> Result<()> {
     struct Array<I>(std::cell::RefCell<I>);
-    impl<I: Iterator<Item = Result<Value>>> serde::Serialize for Array<I> {
+    impl<T: serde::Serialize, I: Iterator<Item = Result<T>>> serde::Serialize for Array<I> {
         fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
             use serde::ser::{Error as _, SerializeSeq};
             let mut seq = s.serialize_seq(None)?;
@@ -290,7 +307,7 @@ fn stream_array(objects: impl Iterator<Item = Result<Value>>, out: &mut Stdout) 
     }
 }
 
-fn pretty(value: &Value) -> Result<String> {
+fn pretty(value: &impl serde::Serialize) -> Result<String> {
     serde_json::to_string_pretty(value).map_err(|e| Error::Io {
         message: e.to_string(),
         path: None,
@@ -345,12 +362,23 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     if args.json {
         if !spec.is_list() {
             if let Some(r) = reports(&m, &spec, omega, args, engine).next() {
-                out.text(&pretty(&to_json(&m, &r?, &units))?)?;
+                let json = ReportJson {
+                    mechanism: &m,
+                    report: r?,
+                    units: &units,
+                };
+                out.text(&pretty(&json)?)?;
                 out.text("\n")?;
             }
             return Ok(());
         }
-        let objects = reports(&m, &spec, omega, args, engine).map(|r| Ok(to_json(&m, &r?, &units)));
+        let objects = reports(&m, &spec, omega, args, engine).map(|r| {
+            Ok(ReportJson {
+                mechanism: &m,
+                report: r?,
+                units: &units,
+            })
+        });
         stream_array(objects, out)?;
         return out.text("\n");
     }

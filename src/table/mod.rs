@@ -14,6 +14,7 @@ pub use crate::number::fixed;
 use crate::number::plain;
 use crate::units::Units;
 pub use dynamics::{dynamics_head, dynamics_row, example_table};
+pub use reading_json::ReadingJson;
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).
 pub const TEXTBOOK_RATIOS: [f64; 6] = [4.0, 4.5, 5.0, 5.5, 6.0, f64::INFINITY];

@@ -1,30 +1,249 @@
 //! A [`Reading`] as the JSON object `analyze --json` prints (schema in
 //! `docs/design.md` §4), for the command line and the Python package alike.
+//!
+//! The object is serialised straight from the reading ([`ReadingJson`]),
+//! never built as a tree of `serde_json::Value`s first: a million angles
+//! of `analyze --json` spent most of their time allocating, sorting and
+//! freeing those trees. The keys are written in the order a tree's sorted
+//! maps gave them (byte order), so the text is the one the tree wrote;
+//! `tests/reading_json.rs` holds the two to the same bytes.
 
 use crate::analytic::statics::Friction;
 use crate::chain::ChainCentres;
-use crate::construct::Reading;
+use crate::construct::{Reading, Statics};
 use crate::geom::{Intersection, Point};
 use crate::mechanism::SliderCrank;
 use crate::units::Units;
-use serde_json::{Value, json};
+use serde::ser::{Serialize, SerializeMap, Serializer};
+use serde_json::Value;
 
 /// +0.0 for −0.0, so that no "-0" is written.
 fn num(x: f64) -> f64 {
     x + 0.0
 }
 
-fn point(p: Point) -> Value {
-    json!([num(p.x), num(p.y)])
+/// A point `[x, y]`.
+fn pair(x: f64, y: f64) -> [f64; 2] {
+    [num(x), num(y)]
+}
+
+/// A point as `[x, y]`.
+struct At(Point);
+
+impl Serialize for At {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        pair(self.0.x, self.0.y).serialize(s)
+    }
 }
 
 /// A point `[x, y]`, a point at infinity `{"at_infinity": [dx, dy]}` or
 /// `{"indeterminate": true}`.
-fn centre(c: &Intersection) -> Value {
-    match c {
-        Intersection::Point(p) => point(*p),
-        Intersection::AtInfinity(d) => json!({"at_infinity": [num(d.x), num(d.y)]}),
-        Intersection::Coincident => json!({"indeterminate": true}),
+struct Centre(Intersection);
+
+impl Serialize for Centre {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match &self.0 {
+            Intersection::Point(p) => At(*p).serialize(s),
+            Intersection::AtInfinity(d) => {
+                let mut m = s.serialize_map(Some(1))?;
+                m.serialize_entry("at_infinity", &pair(d.x, d.y))?;
+                m.end()
+            }
+            Intersection::Coincident => {
+                let mut m = s.serialize_map(Some(1))?;
+                m.serialize_entry("indeterminate", &true)?;
+                m.end()
+            }
+        }
+    }
+}
+
+/// Writes `entries` as one JSON object, each value +0.0 for −0.0.
+fn numbers<S: Serializer>(s: S, entries: &[(&str, f64)]) -> Result<S::Ok, S::Error> {
+    let mut m = s.serialize_map(Some(entries.len()))?;
+    for (key, value) in entries {
+        m.serialize_entry(key, &num(*value))?;
+    }
+    m.end()
+}
+
+/// `mechanism`: crank, offset, rod.
+struct Mechanism<'a>(&'a SliderCrank);
+
+impl Serialize for Mechanism<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let m = self.0;
+        let mut map = s.serialize_map(Some(3))?;
+        map.serialize_entry("crank", &m.crank())?;
+        map.serialize_entry("offset", &num(m.offset()))?;
+        map.serialize_entry("rod", &m.rod())?;
+        map.end()
+    }
+}
+
+/// `units`: the seven names of [`Units`]' own serialisation, in byte
+/// order of their keys.
+struct UnitNames<'a>(&'a Units);
+
+impl Serialize for UnitNames<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let u = self.0;
+        let mut m = s.serialize_map(Some(7))?;
+        m.serialize_entry("acceleration", &u.acceleration())?;
+        m.serialize_entry("angular_acceleration", "rad/s²")?;
+        m.serialize_entry("angular_velocity", "rad/s")?;
+        m.serialize_entry("force", u.force().as_str())?;
+        m.serialize_entry("length", u.length().as_str())?;
+        m.serialize_entry("torque", &u.torque())?;
+        m.serialize_entry("velocity", &u.velocity())?;
+        m.end()
+    }
+}
+
+/// `points`: A to H (D a centre, H `null` where there is none).
+struct Points<'a>(&'a Reading);
+
+impl Serialize for Points<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let r = self.0;
+        let mut m = s.serialize_map(Some(8))?;
+        m.serialize_entry("A", &At(r.pose.a()))?;
+        m.serialize_entry("B", &At(r.pose.b()))?;
+        m.serialize_entry("C", &At(r.pose.c()))?;
+        m.serialize_entry("D", &Centre(r.d))?;
+        m.serialize_entry("E", &At(r.e))?;
+        m.serialize_entry("F", &At(r.f))?;
+        m.serialize_entry("G", &At(r.g))?;
+        m.serialize_entry("H", &r.h.map(At))?;
+        m.end()
+    }
+}
+
+/// `analytic`: the exact values.
+struct Analytic<'a>(&'a Reading);
+
+impl Serialize for Analytic<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let k = &self.0.exact;
+        numbers(
+            s,
+            &[
+                ("acceleration", k.acceleration),
+                ("position", k.position),
+                ("rod_angle_deg", k.rod_angle.to_degrees()),
+                ("rod_angular_acceleration", k.rod_angular_acceleration),
+                ("rod_angular_velocity", k.rod_angular_velocity),
+                ("velocity", k.velocity),
+            ],
+        )
+    }
+}
+
+/// `graphical`: the values read off the constructions.
+struct Graphical<'a>(&'a Reading);
+
+impl Serialize for Graphical<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let g = &self.0.graphical;
+        numbers(
+            s,
+            &[
+                ("acceleration", g.acceleration),
+                ("rod_angular_acceleration", g.rod_angular_acceleration),
+                ("rod_angular_velocity", g.rod_angular_velocity),
+                ("velocity", g.velocity),
+            ],
+        )
+    }
+}
+
+/// `virtual_centres`: O_ab to O_cd, as [`ChainCentres::to_json`] writes
+/// them.
+struct Centres(ChainCentres);
+
+impl Serialize for Centres {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        // `named` keeps O_ab … O_cd, which is their byte order.
+        let named = self.0.named();
+        let mut m = s.serialize_map(Some(named.len()))?;
+        for (name, centre) in named {
+            m.serialize_entry(name, &Centre(centre))?;
+        }
+        m.end()
+    }
+}
+
+/// `statics`, with a torque.
+struct StaticsJson<'a>(&'a Statics);
+
+impl Serialize for StaticsJson<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let st = self.0;
+        let (with_friction, locking) = match st.with_friction {
+            Some(Friction::Force(f)) => (Some(num(f)), false),
+            Some(Friction::SelfLocking(_)) => (None, true),
+            None => (None, false),
+        };
+        let mut m = s.serialize_map(Some(7))?;
+        m.serialize_entry("OM", &num(st.om))?;
+        m.serialize_entry("friction", &st.mu)?;
+        m.serialize_entry("self_locking", &locking)?;
+        m.serialize_entry("side_thrust", &st.side_thrust.map(num))?;
+        m.serialize_entry("slider_force", &st.force.map(num))?;
+        m.serialize_entry("slider_force_with_friction", &with_friction)?;
+        m.serialize_entry("transmission_angle_deg", &num(st.transmission_deg))?;
+        m.end()
+    }
+}
+
+/// The object `analyze --json` prints for one reading, serialised
+/// straight to a writer (`serde_json::to_writer_pretty`) from the
+/// reading: made by [`Reading::json`], with the engine's `dynamics`
+/// member added by [`ReadingJson::with_dynamics`]. A value that is not a
+/// finite number is written `null` (none is, in a reading the library
+/// made); no `-0` is written.
+#[derive(Debug, Clone, Copy)]
+pub struct ReadingJson<'a> {
+    reading: &'a Reading,
+    mechanism: &'a SliderCrank,
+    units: &'a Units,
+    dynamics: Option<&'a Value>,
+}
+
+impl<'a> ReadingJson<'a> {
+    /// The same object with the member `dynamics` (the engine's forces,
+    /// as `analyze --mass …` prints them) written in its place.
+    pub fn with_dynamics(self, dynamics: &'a Value) -> Self {
+        Self {
+            dynamics: Some(dynamics),
+            ..self
+        }
+    }
+}
+
+impl Serialize for ReadingJson<'_> {
+    /// The members in byte order of their keys, as a `serde_json::Map`
+    /// keeps them.
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let r = self.reading;
+        let fields = 8 + usize::from(self.dynamics.is_some()) + usize::from(r.statics.is_some());
+        let mut m = s.serialize_map(Some(fields))?;
+        m.serialize_entry("analytic", &Analytic(r))?;
+        m.serialize_entry("angle_deg", &num(r.pose.angle().degrees()))?;
+        if let Some(dynamics) = self.dynamics {
+            m.serialize_entry("dynamics", dynamics)?;
+        }
+        m.serialize_entry("graphical", &Graphical(r))?;
+        m.serialize_entry("mechanism", &Mechanism(self.mechanism))?;
+        m.serialize_entry("omega", &num(r.omega))?;
+        m.serialize_entry("points", &Points(r))?;
+        if let Some(statics) = &r.statics {
+            m.serialize_entry("statics", &StaticsJson(statics))?;
+        }
+        m.serialize_entry("units", &UnitNames(self.units))?;
+        let centres = ChainCentres::of_slider_crank(&r.pose);
+        m.serialize_entry("virtual_centres", &Centres(centres))?;
+        m.end()
     }
 }
 
@@ -34,60 +253,21 @@ impl Reading {
     /// angle and ω, the points C B A D E F G H (D a point at infinity at
     /// θ = 90°, 270° of an in-line engine; H `null` at the very limit of
     /// assembly), the analytic and graphical values, the six virtual
-    /// centres and, with a torque, the statics. No `-0` is written.
-    pub fn to_json(&self, mechanism: &SliderCrank, units: &Units) -> Value {
-        let mut v = json!({
-            "mechanism": {
-                "crank": mechanism.crank(), "rod": mechanism.rod(), "offset": num(mechanism.offset()),
-            },
-            "units": units,
-            "angle_deg": num(self.pose.angle().degrees()),
-            "omega": num(self.omega),
-            "points": {
-                "C": point(self.pose.c()), "B": point(self.pose.b()), "A": point(self.pose.a()),
-                "D": centre(&self.d), "E": point(self.e), "F": point(self.f),
-                "G": point(self.g), "H": self.h.map(point).unwrap_or(Value::Null),
-            },
-            "analytic": self.analytic_json(),
-            "graphical": {
-                "velocity": num(self.graphical.velocity),
-                "acceleration": num(self.graphical.acceleration),
-                "rod_angular_velocity": num(self.graphical.rod_angular_velocity),
-                "rod_angular_acceleration": num(self.graphical.rod_angular_acceleration),
-            },
-            "virtual_centres": ChainCentres::of_slider_crank(&self.pose).to_json(),
-        });
-        if let Some(s) = &self.statics {
-            let (with_friction, locking) = match s.with_friction {
-                Some(Friction::Force(f)) => (json!(num(f)), false),
-                Some(Friction::SelfLocking(_)) => (Value::Null, true),
-                None => (Value::Null, false),
-            };
-            let statics = json!({
-                "OM": num(s.om),
-                "slider_force": s.force.map(num),
-                "side_thrust": s.side_thrust.map(num),
-                "slider_force_with_friction": with_friction,
-                "self_locking": locking,
-                "friction": s.mu,
-                "transmission_angle_deg": num(s.transmission_deg),
-            });
-            if let Some(fields) = v.as_object_mut() {
-                fields.insert("statics".into(), statics);
-            }
+    /// centres and, with a torque, the statics. Serialised where it is
+    /// written, as [`ReadingJson`]; no `-0` is written.
+    pub fn json<'a>(&'a self, mechanism: &'a SliderCrank, units: &'a Units) -> ReadingJson<'a> {
+        ReadingJson {
+            reading: self,
+            mechanism,
+            units,
+            dynamics: None,
         }
-        v
     }
 
-    fn analytic_json(&self) -> Value {
-        let k = &self.exact;
-        json!({
-            "position": num(k.position),
-            "velocity": num(k.velocity),
-            "acceleration": num(k.acceleration),
-            "rod_angle_deg": num(k.rod_angle.to_degrees()),
-            "rod_angular_velocity": num(k.rod_angular_velocity),
-            "rod_angular_acceleration": num(k.rod_angular_acceleration),
-        })
+    /// [`Reading::json`] as a `serde_json::Value` (the Python package
+    /// hands it on as text); `null` in the unreachable case that
+    /// serialisation fails.
+    pub fn to_json(&self, mechanism: &SliderCrank, units: &Units) -> Value {
+        serde_json::to_value(self.json(mechanism, units)).unwrap_or(Value::Null)
     }
 }
