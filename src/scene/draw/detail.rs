@@ -224,6 +224,9 @@ const CROWD: f64 = 30.0;
 /// detail's region, so that its frame on the main view leaves the pins'
 /// letters room.
 const CROWD_ROOM: f64 = 12.0;
+/// The most room (the detail's page units) the frame leaves about the
+/// crowded points.
+const ROOM_IN_DETAIL: f64 = 100.0;
 /// How far apart crowded points are drawn in their detail, page units.
 const APART: f64 = 45.0;
 /// The most a crowding detail magnifies: points closer than
@@ -265,14 +268,18 @@ fn crowded(lettered: &[Point], room: f64, scale: f64, max_width: f64) -> Crowdin
         };
     }
     let (lo, hi) = bounds(&members);
-    let extent = ((hi - lo) * scale).max();
-    // The frame on the main view kept clear of the crowded points, so
-    // that the letters of the pins among them find room inside it.
-    let room = Vector::new(room, room) / scale;
-    let (lo, hi) = (lo - room, hi + room);
     let size = (hi - lo) * scale;
-    let wanted = (APART / closest).min(CROWD_EXTENT / extent.max(1e-9));
-    match magnify(wanted.max(1.0), size.x, max_width) {
+    let wanted = (APART / closest).min(CROWD_EXTENT / size.max().max(1e-9));
+    let Some(first) = magnify(wanted.max(1.0), size.x, max_width) else {
+        return Crowding::Together;
+    };
+    // The frame on the main view kept clear of the crowded points, so
+    // that the letters of the pins among them find room inside it; no
+    // more than [`ROOM_IN_DETAIL`] of the detail's units, so that a large
+    // magnification does not pad the detail with empty paper.
+    let room = room.min(ROOM_IN_DETAIL / first) / scale;
+    let (lo, hi) = (lo - Vector::new(room, room), hi + Vector::new(room, room));
+    match magnify(first, (hi.x - lo.x) * scale, max_width) {
         Some(magnification) => Crowding::Separable(Detail {
             region: Frame::new(lo, hi),
             magnification,
