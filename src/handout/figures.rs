@@ -17,7 +17,11 @@ pub(super) fn mechanism(h: &Handout, name: FigureName, layers: Option<&[Layer]>)
     let scene = name
         .scene()
         .expect("the handout draws mechanism figures by a scene");
+    // The page sets each figure to its column: a figure narrowed to its
+    // drawing would print taller, so each keeps its own width.
+    let page = scene.page().with_width_kept();
     let mut scene = scene
+        .with_page(page)
         .with_mechanism(*h.mechanism())
         .with_angles(vec![h.angle()])
         .with_omega(h.omega())

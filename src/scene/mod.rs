@@ -195,6 +195,15 @@ impl Page {
         self
     }
 
+    /// The same page with its width kept whatever the drawing takes
+    /// (the default for a page made with [`Page::new`]): a page that sets
+    /// its figures to a column's width, where a narrower figure would
+    /// print taller.
+    pub fn with_width_kept(mut self) -> Self {
+        self.fitted = false;
+        self
+    }
+
     /// Whether the width may be narrowed to the drawing
     /// ([`Page::with_width_fitted`]).
     pub fn fits_width(&self) -> bool {
