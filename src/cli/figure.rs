@@ -120,7 +120,9 @@ pub struct FigureFlags {
     /// Page width: page units (px, 96 to the inch) like 800, or a size in
     /// mm, cm, in or pt like 120mm, 12cm or 4.5in, after which the SVG gives its width
     /// and height in that unit (its viewBox stays in page units) for a book
-    /// to place it at that size [default: the figure's own]
+    /// to place it at that size [default: the figure's own, narrowed to a
+    /// mechanism drawing that takes less than 85 % of it, to no less than
+    /// 420]
     #[arg(long, value_name = "LENGTH", allow_hyphen_values = true)]
     pub width: Option<PageLength>,
     /// Page height, as --width; a mechanism figure ends within it (it may
