@@ -585,3 +585,35 @@ fn blocks_keep_their_size_beside_a_small_crank() {
         assert!(across >= least, "{name:?} {id}: {across}");
     }
 }
+
+#[test]
+fn a_line_to_a_centre_at_infinity_runs_on_into_its_arrow() {
+    // Inversion 2's normal at O_bc stopped 27 units before O_cd's arrow
+    // and read as two things (at 120 mm most of all); it now ends within
+    // a few units of the arrow's tail, on the same line.
+    let numbers = |d: &str| -> Vec<f64> {
+        d.split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+            .filter_map(|t| t.parse().ok())
+            .collect()
+    };
+    for width in [None, Some("120mm"), Some("4.5in")] {
+        let mut options = slider_crank::catalogue::FigureOptions::default();
+        options.width = width.map(|w| w.parse().unwrap());
+        let svg = to_svg(
+            &FigureName::Inversion2RotatingBlock
+                .figure(&options)
+                .unwrap(),
+        );
+        let line = numbers(&attr(&svg, "line-A-O-bd", "d").unwrap());
+        let at = svg.find("id=\"infinity-O-cd\"").unwrap();
+        let rest = &svg[at..];
+        let d = &rest[rest.find(" d=\"").unwrap() + 4..];
+        let arrow = numbers(&d[..d.find('"').unwrap()]);
+        let gap = (arrow[0] - line[2]).hypot(arrow[1] - line[3]);
+        assert!(gap < 6.0, "{width:?}: {gap}");
+        // On the same line: the tail lies on the line's direction.
+        let (dx, dy) = (line[2] - line[0], line[3] - line[1]);
+        let off = (dx * (arrow[1] - line[1]) - dy * (arrow[0] - line[0])).abs() / dx.hypot(dy);
+        assert!(off < 0.5, "{width:?}: {off}");
+    }
+}

@@ -30,8 +30,11 @@ fn block_size(m: &SliderCrank) -> (f64, f64) {
     (0.7 * lh, 0.8 * hh)
 }
 
-/// Room left at the panel's edge for an arrow and its letter, page units.
-const EDGE_ROOM: f64 = 64.0;
+/// Room left at the panel's edge for an arrow at the edge, page units:
+/// the sketch's arrow (34 units, 3 from the edge) and a gap of 3, so that
+/// a line stopping there runs on into the arrow (at 64 the two stood 27
+/// units apart and read as two things).
+const EDGE_ROOM: f64 = 40.0;
 
 /// Centres nearer than this on the page (page units) to a lettered point
 /// share its place and are named in the notes.
