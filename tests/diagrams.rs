@@ -6,6 +6,9 @@
 mod common;
 
 use common::{attr, metadata, num, read_text, snapshot_settings, tag};
+#[path = "common/worked_engine.rs"]
+mod worked_engine;
+use worked_engine::{Engine, indicator};
 
 use serde_json::Value;
 use slider_crank::FigureName;
@@ -476,20 +479,6 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
     v
 }
 
-/// The turning-moment and flywheel figures' indicator diagram: the stroke
-/// fraction from the outer dead centre, the expansion and the compression
-/// pressure (lbf/ft²) of each row.
-fn indicator_rows() -> Vec<[f64; 3]> {
-    include_str!("../examples/indicator.csv")
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.starts_with("fraction"))
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|x| x.trim().parse().unwrap()).collect();
-            [v[0], v[1], v[2]]
-        })
-        .collect()
-}
-
 /// Simpson intervals of the test's own quadrature over the turn (even).
 const TURN_STEPS: usize = 72_000;
 
@@ -502,7 +491,7 @@ const TURN_STEPS: usize = 72_000;
 /// along +x is +m a towards the crank). E(θ) =
 /// ∫₀^θ (T − T_mean) dθ by composite Simpson on `steps` intervals.
 struct Turn {
-    rows: Vec<[f64; 3]>,
+    engine: Engine,
     h: f64,
     /// E at the even nodes 0, 2h, 4h, …
     stored: Vec<f64>,
@@ -514,7 +503,13 @@ struct Turn {
 impl Turn {
     fn new(steps: usize) -> Self {
         let mut turn = Turn {
-            rows: indicator_rows(),
+            engine: Engine {
+                r: 0.5,
+                l: 3.0,
+                omega: omega(),
+                m: 10.0,
+                rows: indicator(),
+            },
             h: 2.0 * PI / steps as f64,
             stored: Vec::new(),
             mean: 0.0,
@@ -539,25 +534,8 @@ impl Turn {
         turn
     }
 
-    fn pressure(&self, x: f64, expansion: bool) -> f64 {
-        let column = if expansion { 1 } else { 2 };
-        let w = self.rows.windows(2).find(|w| x <= w[1][0]).unwrap();
-        let t = (x - w[0][0]) / (w[1][0] - w[0][0]);
-        w[0][column] + (w[1][column] - w[0][column]) * t
-    }
-
     fn torque(&self, theta: f64) -> f64 {
-        let (r, l, m, w) = (0.5, 3.0, 10.0, omega());
-        let area = PI * (10.0f64 / 12.0).powi(2) / 4.0;
-        let (s, a) = {
-            let (s, _) = engine(r, l, theta);
-            (s.d(0), w * w * s.d(2))
-        };
-        let fraction = ((r + l - s) / (2.0 * r)).clamp(0.0, 1.0);
-        let gas = area * self.pressure(fraction, theta.sin() > 0.0);
-        let force = gas + m * a;
-        let tan_phi = r * theta.sin() / (l * l - (r * theta.sin()).powi(2)).sqrt();
-        force * (r * theta.sin() + r * theta.cos() * tan_phi)
+        self.engine.torque(theta)
     }
 
     /// E(θ): the stored sum to the even node below θ and Simpson's rule

@@ -303,20 +303,28 @@ fn label_groups(plate: &Plate) -> Vec<Vec<&Label>> {
 
 /// Rule 2a: no two glyph boxes (shrunk by [`GLYPH_SLACK`]) overlap.
 fn labels_overlap(plate: &Plate) -> Vec<Failure> {
+    let pairs: BTreeSet<String> = label_groups(plate)
+        .iter()
+        .flat_map(|group| overlapping(group))
+        .collect();
+    pairs.into_iter().map(|p| fail(RULE_OVERLAP, p)).collect()
+}
+
+/// The pairs of `labels` whose glyph boxes, shrunk by [`GLYPH_SLACK`],
+/// overlap, as `a × b`.
+fn overlapping(labels: &[&Label]) -> BTreeSet<String> {
     let mut pairs = BTreeSet::new();
-    for group in label_groups(plate) {
-        for (i, a) in group.iter().enumerate() {
-            for b in &group[i + 1..] {
-                if a.rect
-                    .shrunk(GLYPH_SLACK)
-                    .overlaps(&b.rect.shrunk(GLYPH_SLACK))
-                {
-                    pairs.insert(format!("{} × {}", a.id, b.id));
-                }
+    for (i, a) in labels.iter().enumerate() {
+        for b in &labels[i + 1..] {
+            if a.rect
+                .shrunk(GLYPH_SLACK)
+                .overlaps(&b.rect.shrunk(GLYPH_SLACK))
+            {
+                pairs.insert(format!("{} × {}", a.id, b.id));
             }
         }
     }
-    pairs.into_iter().map(|p| fail(RULE_OVERLAP, p)).collect()
+    pairs
 }
 
 /// Rule 2b: no line of a link, a construction or the frame (guides and
@@ -425,17 +433,13 @@ fn page_unfilled(plate: &Plate) -> Vec<Failure> {
     let Some(first) = plate.panels.first() else {
         return Vec::new();
     };
-    let drawn = plate
-        .ink
-        .iter()
-        .filter(|(id, _)| !id.starts_with("note") && !id.starts_with("title"))
-        .map(|(_, r)| *r)
-        .reduce(|a, b| Rect {
-            x0: a.x0.min(b.x0),
-            y0: a.y0.min(b.y0),
-            x1: a.x1.max(b.x1),
-            y1: a.y1.max(b.y1),
-        });
+    let drawn = Rect::around(
+        plate
+            .ink
+            .iter()
+            .filter(|(id, _)| !id.starts_with("note") && !id.starts_with("title"))
+            .flat_map(|(_, r)| [(r.x0, r.y0), (r.x1, r.y1)]),
+    );
     match drawn {
         Some(r) if r.x1 - r.x0 < FILL * plate.width => vec![fail(
             RULE_FILL,
@@ -796,24 +800,11 @@ fn dynamics_plates_are_clean() {
     assert!(outcomes.iter().all(|o| o.failures.is_empty()), "{text}");
 }
 
-/// The page sizes an author may fix, besides the figure's own.
-const PAGE_SIZES: [(&str, Option<&str>); 3] =
-    [("120mm", None), ("4.5in", None), ("800", Some("300"))];
-
 /// Rule 6: no two texts of the page (ticks, titles, captions, legends,
 /// letters, notes) overlap, glyph boxes shrunk by [`GLYPH_SLACK`].
 fn texts_overlap(plate: &Plate) -> Vec<Failure> {
-    let mut pairs = BTreeSet::new();
-    for (i, a) in plate.texts.iter().enumerate() {
-        for b in &plate.texts[i + 1..] {
-            if a.rect
-                .shrunk(GLYPH_SLACK)
-                .overlaps(&b.rect.shrunk(GLYPH_SLACK))
-            {
-                pairs.insert(format!("{} × {}", a.id, b.id));
-            }
-        }
-    }
+    let texts: Vec<&Label> = plate.texts.iter().collect();
+    let pairs = overlapping(&texts);
     pairs.into_iter().map(|p| fail(RULE_TEXTS, p)).collect()
 }
 
@@ -829,19 +820,18 @@ fn texts_small(plate: &Plate) -> Vec<Failure> {
 }
 
 /// Every figure at its own defaults on its own page and on each of
-/// [`PAGE_SIZES`]: the plate rules, no two texts overlapping anywhere on
+/// [`common::FIXED_PAGES`]: the plate rules, no two texts overlapping anywhere on
 /// the page (diagrams included) and no text under [`LEAST_TEXT`].
 #[test]
 fn every_figure_is_clean_on_every_page_size() {
     let mut outcomes = Vec::new();
     for name in FigureName::ALL {
-        let sizes = std::iter::once(None).chain(PAGE_SIZES.iter().map(Some));
+        let sizes = std::iter::once(None).chain(common::FIXED_PAGES.iter().map(Some));
         for size in sizes {
-            let mut options = FigureOptions::default();
-            if let Some((width, height)) = size {
-                options.width = Some(width.parse().unwrap());
-                options.height = height.map(|h| h.parse().unwrap());
-            }
+            let options = match size {
+                Some((width, height)) => common::on_page(width, *height),
+                None => FigureOptions::default(),
+            };
             let failures = match name.figure(&options) {
                 Ok(f) => {
                     let plate = Plate::read(&to_svg(&f));
@@ -1428,18 +1418,14 @@ fn fig_62_dimensions_the_stroke_on_the_side_away_from_the_crank() {
     // landed on it; it now stands above the guides, clear of the rod and
     // the crank circle. Without an offset it stays below (Fig. 62).
     let ink = |plate: &Plate, id: &str| {
-        plate
-            .ink
-            .iter()
-            .filter(|(i, _)| i == id)
-            .map(|(_, r)| *r)
-            .reduce(|a, b| Rect {
-                x0: a.x0.min(b.x0),
-                y0: a.y0.min(b.y0),
-                x1: a.x1.max(b.x1),
-                y1: a.y1.max(b.y1),
-            })
-            .unwrap_or_else(|| panic!("{id}"))
+        Rect::around(
+            plate
+                .ink
+                .iter()
+                .filter(|(i, _)| i == id)
+                .flat_map(|(_, r)| [(r.x0, r.y0), (r.x1, r.y1)]),
+        )
+        .unwrap_or_else(|| panic!("{id}"))
     };
     for degrees in [3.0, 90.0, 177.0, 270.0] {
         let mut options = FigureOptions::default();

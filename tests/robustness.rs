@@ -311,20 +311,7 @@ fn every_point_of_the_regression_table_is_tested() {
         "each of the ten points has rows"
     );
     let table: Vec<String> = self::rows().into_iter().map(|r| r.command).collect();
-    let mut sources = String::new();
-    for dir in ["src", "tests"] {
-        let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)];
-        while let Some(d) = stack.pop() {
-            for entry in std::fs::read_dir(d).unwrap() {
-                let path = entry.unwrap().path();
-                if path.is_dir() {
-                    stack.push(path);
-                } else if path.extension().is_some_and(|e| e == "rs") {
-                    sources.push_str(&std::fs::read_to_string(path).unwrap());
-                }
-            }
-        }
-    }
+    let sources = sources();
     let commands = include_str!("regressions/commands.tsv");
     for row in &rows {
         let tests = &row[4];
@@ -459,20 +446,7 @@ fn every_point_of_the_second_round_is_tested() {
     ];
     assert_eq!(points, expected.into_iter().collect());
     let table: Vec<String> = self::rows().into_iter().map(|r| r.command).collect();
-    let mut sources = String::new();
-    for dir in ["src", "tests"] {
-        let mut stack = vec![Path::new(env!("CARGO_MANIFEST_DIR")).join(dir)];
-        while let Some(d) = stack.pop() {
-            for entry in std::fs::read_dir(d).unwrap() {
-                let path = entry.unwrap().path();
-                if path.is_dir() {
-                    stack.push(path);
-                } else if path.extension().is_some_and(|e| e == "rs") {
-                    sources.push_str(&std::fs::read_to_string(path).unwrap());
-                }
-            }
-        }
-    }
+    let sources = sources();
     for row in &rows {
         let input = spans(&row[1]).into_iter().next().unwrap_or_default();
         if row[4].starts_with("table") {

@@ -5,6 +5,10 @@
 //! upright; a prime is set in the style of the letter it marks; no
 //! straight apostrophe is set.
 
+#[allow(dead_code)] // the helpers the other figure tests use
+mod common;
+
+use common::{FIXED_PAGES, on_page};
 use skrifa::MetadataProvider;
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::figure::FontStyle;
@@ -244,11 +248,6 @@ fn every_character_is_in_its_own_text_face() {
     }
 }
 
-/// The page sizes an author fixes (issue 20): a column of 120 mm, a
-/// 4.5-inch column, and a wide short page.
-const FIXED_PAGES: [(&str, Option<&str>); 3] =
-    [("120mm", None), ("4.5in", None), ("800", Some("300"))];
-
 /// The value of a `<text>`'s attribute, as a number.
 fn number(tag: &str, name: &str) -> f64 {
     attr(tag, name).and_then(|v| v.parse().ok()).unwrap()
@@ -280,9 +279,7 @@ fn notes_keep_their_size_on_a_fixed_page() {
     let font = Font::NewComputerModern;
     for (width, height) in FIXED_PAGES {
         for name in FigureName::ALL {
-            let mut options = FigureOptions::default();
-            options.width = Some(width.parse().unwrap());
-            options.height = height.map(|h| h.parse().unwrap());
+            let options = on_page(width, height);
             // A diagram whose plots do not fit a page refuses it by name.
             let figure = match name.figure(&options) {
                 Ok(f) => f,
@@ -327,9 +324,7 @@ fn panel_captions_never_run_together() {
     // captions at one height do not overlap.
     let font = Font::NewComputerModern;
     for (width, height) in FIXED_PAGES {
-        let mut options = FigureOptions::default();
-        options.width = Some(width.parse().unwrap());
-        options.height = height.map(|h| h.parse().unwrap());
+        let options = on_page(width, height);
         let svg = to_svg(&FigureName::Fig60Chains.figure(&options).unwrap());
         let mut spans: Vec<(f64, f64, f64)> = Vec::new();
         for (id, set) in texts(&svg) {
@@ -367,9 +362,7 @@ fn captions_stay_on_a_narrow_page() {
     let mut wide = Vec::new();
     for (width, height) in FIXED_PAGES {
         for name in FigureName::ALL {
-            let mut options = FigureOptions::default();
-            options.width = Some(width.parse().unwrap());
-            options.height = height.map(|h| h.parse().unwrap());
+            let options = on_page(width, height);
             let Ok(figure) = name.figure(&options) else {
                 continue; // refused by name: see the notes' test above
             };

@@ -77,3 +77,19 @@ pub fn read_text(svg: &str) -> String {
     }
     text
 }
+
+/// The page sizes an author fixes (issue 20): a column of 120 mm, a
+/// 4.5-inch column, and a wide short page (width, height).
+#[allow(dead_code)] // the page-size tests' (plates, typography)
+pub const FIXED_PAGES: [(&str, Option<&str>); 3] =
+    [("120mm", None), ("4.5in", None), ("800", Some("300"))];
+
+/// Figure options asking for a page `width` wide and, if given, `height`
+/// tall (as `--width`, `--height` spell them).
+#[allow(dead_code)] // the page-size tests' (plates, typography)
+pub fn on_page(width: &str, height: Option<&str>) -> slider_crank::catalogue::FigureOptions {
+    let mut options = slider_crank::catalogue::FigureOptions::default();
+    options.width = Some(width.parse().unwrap());
+    options.height = height.map(|h| h.parse().unwrap());
+    options
+}
