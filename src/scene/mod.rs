@@ -562,7 +562,7 @@ impl Scene {
             if let Some(first) = frame.angles.first_mut() {
                 *first = *a;
             }
-            draw::build(&frame, Some(&layout)).0
+            draw::build(&frame, &layout).0
         }))
     }
 
@@ -659,8 +659,12 @@ impl Scene {
     /// [1e-6, 10], 1 to 64 poses, 1 to 3960 held poses.
     pub fn build(&self) -> Result<(Figure, Evaluations)> {
         valid::scene(self)?;
+        let layout = match self.held.as_deref() {
+            Some(a) => draw::held(self, a),
+            None => draw::own(self),
+        };
         if self.held.is_none() && self.page.fits_width() {
-            let used = draw::used_width(self).max(LEAST_FITTED_WIDTH);
+            let used = draw::used_width(self, &layout).max(LEAST_FITTED_WIDTH);
             if used < FIT_WIDTH_BELOW * self.page.width() {
                 let mut narrow = self.clone();
                 narrow.page = self.page.with_width(used.ceil())?;
@@ -668,8 +672,7 @@ impl Scene {
                 return narrow.build();
             }
         }
-        let layout = self.held.as_deref().map(|a| draw::held(self, a));
-        let (figure, evaluations) = draw::build(self, layout.as_ref());
+        let (figure, evaluations) = draw::build(self, &layout);
         let page = self.page;
         if page.holds_height() && figure.height() > page.height() + HEIGHT_SLACK {
             return Err(Error::OutOfRange {

@@ -204,29 +204,29 @@ fn band(notes: &[RichText]) -> f64 {
     }
 }
 
-/// The width of the page (page units, margins included) that the scene's
-/// drawing fitted to its own pose takes: its main view's drawing with
-/// the view's insets, or its detail where that is wider.
-pub(crate) fn used_width(scene: &Scene) -> f64 {
-    let m = scene.mechanism();
-    let poses: Vec<Constructions> = scene
-        .angles()
-        .iter()
-        .map(|a| Constructions::new(m.pose(*a)))
-        .collect();
-    let Some(main) = poses.first() else {
-        return scene.page().width();
-    };
+/// The layout fitted to the scene's own (first) pose and its notes.
+// cannot fail: a scene is laid out only once `valid::scene` has passed it,
+// which refuses one without a pose.
+#[allow(clippy::indexing_slicing)]
+pub(crate) fn own(scene: &Scene) -> Layout {
+    let poses = own_poses(scene);
     let ctx = Ctx {
         scene,
-        main,
+        main: &poses[0],
         sizes: Sizes::new(scene),
     };
-    let layout = fit_within(&ctx, band(&notes(&ctx)));
+    fit_within(&ctx, band(&notes(&ctx)))
+}
+
+/// The width of the page (page units, margins included) that the scene's
+/// drawing in `layout` takes: its main view's drawing with the view's
+/// insets, or its detail where that is wider.
+pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
     let scale = layout.transform.scale();
     let mg = scene.page().margin();
-    let world = layout.sizes.fitted.unwrap_or_else(|| fit::frame(&ctx));
-    let drawn = (world.max().x - world.min().x) * scale + 2.0 * INSET;
+    let drawn = layout.sizes.fitted.map_or(layout.main.width, |world| {
+        (world.max().x - world.min().x) * scale + 2.0 * INSET
+    });
     let detail = layout.detail.map_or(0.0, |d| {
         let frame = detail_frame(&d, scale);
         (frame.max().x - frame.min().x) * scale * d.magnification
@@ -398,15 +398,20 @@ fn beside_detail(
     Frame::new(Point::new(left, frame.min().y), frame.max())
 }
 
-/// Builds the figure of `scene`, in `layout` when one is held, else in
-/// the layout fitted to its own pose.
-pub(crate) fn build(scene: &Scene, layout: Option<&Layout>) -> (Figure, Evaluations) {
+/// The constructions of the scene's own poses, the first drawn in full.
+fn own_poses(scene: &Scene) -> Vec<Constructions> {
     let m = scene.mechanism();
-    let poses: Vec<Constructions> = scene
+    scene
         .angles()
         .iter()
         .map(|a| Constructions::new(m.pose(*a)))
-        .collect();
+        .collect()
+}
+
+/// Builds the figure of `scene` in `layout`: the one fitted to its own
+/// pose ([`own`]) or one held over several ([`held`]).
+pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
+    let poses = own_poses(scene);
     // cannot fail: a scene is drawn only once `valid::scene` has passed it,
     // which refuses one without a pose.
     #[allow(clippy::indexing_slicing)]
@@ -419,10 +424,7 @@ pub(crate) fn build(scene: &Scene, layout: Option<&Layout>) -> (Figure, Evaluati
     // Notes first: their number of lines fixes the band below the panels.
     let notes = notes(&ctx);
     let own = band(&notes);
-    let layout = match layout {
-        Some(held) => *held,
-        None => fit_within(&ctx, own),
-    };
+    let layout = *layout;
     ctx.sizes = layout.sizes;
     let page = scene.page();
     // A pose outside a held range may have more notes than it left room
