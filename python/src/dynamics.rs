@@ -8,13 +8,14 @@ use crate::{py_err, units};
 use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use serde_json::{Value, json};
+use serde_json::json;
 use slider_crank::dynamics::{
-    Engine, EnginePose, Flywheel, FlywheelAsk, GasForce, IndicatorDiagram, RodMass, TurningMoment,
+    Engine, EngineParts, EnginePose, Flywheel, FlywheelAsk, IndicatorText, TurningMoment,
     unbalanced_forces,
 };
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
-use slider_crank::{Angle, SliderCrank, Units};
+use slider_crank::table::dynamics_json;
+use slider_crank::{Angle, SliderCrank};
 use std::path::PathBuf;
 
 /// An engine with its masses, gas force and crank speed, validated as
@@ -92,24 +93,25 @@ impl PyEngine {
             bore,
         )?;
         let m = SliderCrank::new(crank, rod, offset).map_err(py_err)?;
-        let build = || -> slider_crank::Result<Engine> {
-            let mut engine = Engine::new(m, mass.unwrap_or(0.0), omega)?;
-            if let (Some(m), Some(cg), Some(k)) = (rod_mass, rod_cg, rod_gyration) {
-                engine = engine.with_rod(RodMass::new(m, cg, k)?)?;
-            }
-            if let Some(f) = gas_force {
-                engine = engine.with_gas(GasForce::Constant(f))?;
-            }
-            if let (Some(path), Some(bore)) = (&indicator, bore) {
-                let text = read_text(path, MAX_DATA_BYTES, "indicator diagram")?;
-                let what = format!("indicator diagram {}", path.display());
-                let diagram = IndicatorDiagram::from_csv(&text, bore, &what)?;
-                engine = engine.with_gas(GasForce::Indicator(diagram))?;
-            }
-            Ok(engine)
+        let text = match &indicator {
+            Some(path) => Some((
+                read_text(path, MAX_DATA_BYTES, "indicator diagram").map_err(py_err)?,
+                format!("indicator diagram {}", path.display()),
+            )),
+            None => None,
+        };
+        let parts = EngineParts {
+            mass,
+            rod: rod_mass.zip(rod_cg).zip(rod_gyration).map(|((m, cg), k)| (m, cg, k)),
+            gas_force,
+            indicator: (text.as_ref().zip(bore)).map(|((text, what), bore)| IndicatorText {
+                text,
+                bore,
+                what,
+            }),
         };
         Ok(Self {
-            engine: build().map_err(py_err)?,
+            engine: parts.build(m, omega).map_err(py_err)?,
         })
     }
 
@@ -119,7 +121,7 @@ impl PyEngine {
         let units = units(unit, force_unit)?;
         let angle = Angle::from_degrees(degrees).map_err(py_err)?;
         let at = self.engine.at(angle).map_err(py_err)?;
-        Ok(to_json(&self.engine, &at, angle, &units).to_string())
+        Ok(dynamics_json(&self.engine, &at, angle, &units).to_string())
     }
 
     /// Fills `out` (SWEEP_ROWS × n, C order) with the forces and torques
@@ -231,57 +233,4 @@ fn fill(engine: &Engine, thetas: &[f64], out: &mut [f64]) -> slider_crank::Resul
         }
     }
     Ok(())
-}
-
-// What follows mirrors `src/cli/dynamics.rs` (`to_json`), the layout of
-// `analyze --json`'s member `dynamics`; python/tests/test_dynamics.py
-// compares the two digit for digit.
-
-/// +0.0 for −0.0.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
-
-/// The unit of mass the forces imply: FORCE·s²/LENGTH.
-fn mass_unit(units: &Units) -> String {
-    format!("{}·s²/{}", units.force(), units.length())
-}
-
-/// The dynamics of `engine` at `angle` as `analyze --json` writes it.
-fn to_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
-    let b = unbalanced_forces(engine, angle);
-    let rod = at.rod.map_or(Value::Null, |r| {
-        json!({
-            "inertia_force": [num(r.force[0]), num(r.force[1])],
-            "inertia_couple": num(r.couple),
-            "torque": num(r.torque),
-            "equivalent": {
-                "mass_at_crosshead": num(r.mass_at_crosshead),
-                "mass_at_crank_pin": num(r.mass_at_crank_pin),
-                "correction_couple": num(r.correction_couple),
-                "correction_torque": num(r.correction_torque),
-                "torque": num(r.equivalent_torque),
-            },
-        })
-    });
-    json!({
-        "units": {"force": units.force(), "torque": units.torque(), "mass": mass_unit(units)},
-        "sign": "forces along the stroke positive towards the crank centre; torques counter-clockwise positive",
-        "reciprocating_mass": engine.reciprocating_mass(),
-        "gas_force": num(at.gas_force),
-        "inertia_force": num(at.inertia_force),
-        "inertia_force_klein": num(at.inertia_force_graphical),
-        "piston_effort": num(at.piston_effort),
-        "rod_force": num(at.rod_force),
-        "guide_thrust": num(at.guide_thrust),
-        "OM": num(at.om),
-        "crank_effort": num(at.crank_effort),
-        "crank_effort_exact": num(at.crank_effort_exact),
-        "torque": num(at.torque),
-        "unbalanced": {
-            "primary": num(b.primary), "secondary": num(b.secondary),
-            "exact": num(b.exact), "remainder": num(b.remainder),
-        },
-        "rod": rod,
-    })
 }

@@ -99,7 +99,7 @@ fn analyse<'a>(
 
 /// A report as the JSON object `analyze --json` prints, serialised
 /// where it is written ([`Reading::json`]; the engine's dynamics, when
-/// asked for, as `dynamics::to_json` builds them).
+/// asked for, as `table::dynamics_json` builds them).
 struct ReportJson<'a> {
     mechanism: &'a SliderCrank,
     report: Report<'a>,
@@ -113,7 +113,7 @@ impl serde::Serialize for ReportJson<'_> {
         match &r.dynamics {
             Some((engine, at)) => {
                 let angle = r.reading.pose.angle();
-                let dynamics = super::dynamics::to_json(engine, at, angle, self.units);
+                let dynamics = slider_crank::table::dynamics_json(engine, at, angle, self.units);
                 json.with_dynamics(&dynamics).serialize(s)
             }
             None => json.serialize(s),

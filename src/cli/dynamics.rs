@@ -2,12 +2,12 @@
 //! cylinders and flywheel; and the dynamics section of `analyze`.
 
 use clap::Args;
-use serde_json::{Value, json};
 use slider_crank::dynamics::{
-    Engine, EnginePose, FlywheelAsk, GasForce, IndicatorDiagram, RodMass, unbalanced_forces,
+    Engine, EngineParts, EnginePose, FlywheelAsk, IndicatorText, unbalanced_forces,
 };
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::plain;
+use slider_crank::table::mass_unit;
 use slider_crank::{Angle, Error, Result, SliderCrank, Units};
 use std::path::PathBuf;
 
@@ -83,21 +83,27 @@ impl EngineArgs {
         if !self.is_set() {
             return Ok(None);
         }
-        let mut engine = Engine::new(mechanism, self.mass.unwrap_or(0.0), omega)?;
-        if let (Some(m), Some(cg), Some(k)) = (self.rod_mass, self.rod_cg, self.rod_gyration) {
-            engine = engine.with_rod(RodMass::new(m, cg, k)?)?;
-        }
-        if let Some(f) = self.gas_force {
-            engine = engine.with_gas(GasForce::Constant(f))?;
-        }
-        if let (Some(path), Some(bore)) = (&self.indicator, self.bore) {
-            let text = read_text(path, MAX_DATA_BYTES, "indicator diagram")?;
-            let what = format!("indicator diagram {}", path.display());
-            engine = engine.with_gas(GasForce::Indicator(IndicatorDiagram::from_csv_cycle(
-                &text, bore, &what,
-            )?))?;
-        }
-        Ok(Some(engine))
+        let text = match &self.indicator {
+            Some(path) => Some((
+                read_text(path, MAX_DATA_BYTES, "indicator diagram")?,
+                format!("indicator diagram {}", path.display()),
+            )),
+            None => None,
+        };
+        let parts = EngineParts {
+            mass: self.mass,
+            rod: self
+                .rod_mass
+                .zip(self.rod_cg)
+                .zip(self.rod_gyration)
+                .map(|((m, cg), k)| (m, cg, k)),
+            gas_force: self.gas_force,
+            indicator: text
+                .as_ref()
+                .zip(self.bore)
+                .map(|((text, what), bore)| IndicatorText { text, bore, what }),
+        };
+        Ok(Some(parts.build(mechanism, omega)?))
     }
 }
 
@@ -141,59 +147,6 @@ impl TurnArgs {
             _ => FlywheelAsk::None,
         }
     }
-}
-
-/// +0.0 for −0.0.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
-
-/// The unit of mass the forces imply: FORCE·s²/LENGTH.
-fn mass_unit(units: &Units) -> String {
-    format!("{}·s²/{}", units.force(), units.length())
-}
-
-/// The dynamics of `engine` at `angle` as `analyze --json` writes it.
-pub fn to_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
-    let b = unbalanced_forces(engine, angle);
-    let mut v = json!({
-        "units": {"force": units.force(), "torque": units.torque(), "mass": mass_unit(units)},
-        "sign": "forces along the stroke positive towards the crank centre; torques counter-clockwise positive",
-        "reciprocating_mass": engine.reciprocating_mass(),
-        "gas_force": num(at.gas_force),
-        "inertia_force": num(at.inertia_force),
-        "inertia_force_klein": num(at.inertia_force_graphical),
-        "piston_effort": num(at.piston_effort),
-        "rod_force": num(at.rod_force),
-        "guide_thrust": num(at.guide_thrust),
-        "OM": num(at.om),
-        "crank_effort": num(at.crank_effort),
-        "crank_effort_exact": num(at.crank_effort_exact),
-        "torque": num(at.torque),
-        "unbalanced": {
-            "primary": num(b.primary), "secondary": num(b.secondary),
-            "exact": num(b.exact), "remainder": num(b.remainder),
-        },
-        "rod": Value::Null,
-    });
-    if let Some(r) = at.rod {
-        let rod = json!({
-            "inertia_force": [num(r.force[0]), num(r.force[1])],
-            "inertia_couple": num(r.couple),
-            "torque": num(r.torque),
-            "equivalent": {
-                "mass_at_crosshead": num(r.mass_at_crosshead),
-                "mass_at_crank_pin": num(r.mass_at_crank_pin),
-                "correction_couple": num(r.correction_couple),
-                "correction_torque": num(r.correction_torque),
-                "torque": num(r.equivalent_torque),
-            },
-        });
-        if let Some(fields) = v.as_object_mut() {
-            fields.insert("rod".into(), rod);
-        }
-    }
-    v
 }
 
 /// The dynamics section of `analyze`'s text.
@@ -254,9 +207,9 @@ pub fn to_text(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) ->
 fn number(x: f64) -> String {
     let a = x.abs();
     if a != 0.0 && !(1e-6..1e12).contains(&a) {
-        format!("{:.10e}", num(x))
+        format!("{:.10e}", x + 0.0)
     } else {
-        format!("{:.10}", num(x))
+        format!("{:.10}", x + 0.0)
     }
 }
 

@@ -1,0 +1,61 @@
+//! The member `dynamics` of `analyze --json`: the engine's forces and
+//! torques at one pose, one copy for the command line and the Python
+//! package.
+
+use crate::angle::Angle;
+use crate::dynamics::{Engine, EnginePose, unbalanced_forces};
+use crate::units::Units;
+use serde_json::{Value, json};
+
+/// +0.0 for −0.0.
+fn num(x: f64) -> f64 {
+    x + 0.0
+}
+
+/// The unit of mass the forces imply: FORCE·s²/LENGTH (`lbf·s²/ft`, a
+/// slug, with the textbook's units).
+pub fn mass_unit(units: &Units) -> String {
+    format!("{}·s²/{}", units.force(), units.length())
+}
+
+/// The dynamics of `engine` at `angle` (its pose `at`) as `analyze
+/// --json` writes them: forces along the stroke, the crank effort by
+/// Ng's OM and exactly, the torque, the unbalanced forces, and the rod's
+/// inertia (`null` for a massless rod).
+pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
+    let b = unbalanced_forces(engine, angle);
+    let rod = at.rod.map_or(Value::Null, |r| {
+        json!({
+            "inertia_force": [num(r.force[0]), num(r.force[1])],
+            "inertia_couple": num(r.couple),
+            "torque": num(r.torque),
+            "equivalent": {
+                "mass_at_crosshead": num(r.mass_at_crosshead),
+                "mass_at_crank_pin": num(r.mass_at_crank_pin),
+                "correction_couple": num(r.correction_couple),
+                "correction_torque": num(r.correction_torque),
+                "torque": num(r.equivalent_torque),
+            },
+        })
+    });
+    json!({
+        "units": {"force": units.force(), "torque": units.torque(), "mass": mass_unit(units)},
+        "sign": "forces along the stroke positive towards the crank centre; torques counter-clockwise positive",
+        "reciprocating_mass": engine.reciprocating_mass(),
+        "gas_force": num(at.gas_force),
+        "inertia_force": num(at.inertia_force),
+        "inertia_force_klein": num(at.inertia_force_graphical),
+        "piston_effort": num(at.piston_effort),
+        "rod_force": num(at.rod_force),
+        "guide_thrust": num(at.guide_thrust),
+        "OM": num(at.om),
+        "crank_effort": num(at.crank_effort),
+        "crank_effort_exact": num(at.crank_effort_exact),
+        "torque": num(at.torque),
+        "unbalanced": {
+            "primary": num(b.primary), "secondary": num(b.secondary),
+            "exact": num(b.exact), "remainder": num(b.remainder),
+        },
+        "rod": rod,
+    })
+}
