@@ -146,7 +146,10 @@ fn chain_check(
     let (title, rows) = match (links, slot) {
         (Some(links), _) => {
             let q = quadric(links)?;
-            (quadric_check_title(&q), py.detach(|| quadric_sweep(&q, samples)))
+            (
+                quadric_check_title(&q),
+                py.detach(|| quadric_sweep(&q, samples)),
+            )
         }
         (None, Some([crank, rod, offset, rho])) => {
             let s = self::slot(crank, rod, offset, rho)?;

@@ -5,8 +5,8 @@
 use crate::py_err;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use slider_crank::construct::{Quantity, sweep};
 use slider_crank::SliderCrank;
+use slider_crank::construct::{Quantity, sweep};
 use slider_crank::table::{DEFAULT_ULPS, check_allowance, engine_check_report};
 
 /// The command line's default `--max-cells`.

@@ -102,7 +102,10 @@ impl PyEngine {
         };
         let parts = EngineParts {
             mass,
-            rod: rod_mass.zip(rod_cg).zip(rod_gyration).map(|((m, cg), k)| (m, cg, k)),
+            rod: rod_mass
+                .zip(rod_cg)
+                .zip(rod_gyration)
+                .map(|((m, cg), k)| (m, cg, k)),
             gas_force,
             indicator: (text.as_ref().zip(bore)).map(|((text, what), bore)| IndicatorText {
                 text,
