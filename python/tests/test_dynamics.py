@@ -298,3 +298,32 @@ def test_a_flywheel_is_asked_one_way() -> None:
         with pytest.raises(ValueError) as caught:
             call()
         assert "fluctuation cannot be used with flywheel" in str(caught.value)
+
+
+# A four-stroke indicator diagram (the columns of tests/dynamics.rs's CSV4):
+# the command reads its exhaust and intake strokes, and so must the package.
+FOUR_STROKE = (
+    "fraction,expansion,exhaust,intake,compression\n"
+    "0,10,0.6,-0.2,1\n0.1,9,0.5,-0.3,1\n0.4,5,0.4,-0.3,1.5\n1,2,0.3,-0.1,3\n"
+)
+
+
+@pytest.mark.parametrize("angle", [30.0, 200.0, 300.0])
+def test_a_four_stroke_indicator_diagram_is_read_as_the_command_reads_it(
+    cli: Cli, tmp_path: Path, angle: float
+) -> None:
+    csv = tmp_path / "four-stroke.csv"
+    csv.write_text(FOUR_STROKE)
+    pose = (0.5, 3.0, 0.0, "ft", "lbf", angle, 26.16)
+    flags = ["--mass=1", f"--indicator={csv}", "--bore=0.2"]
+    want = json.loads(cli.stdout(analyze_flags(pose, flags)))
+    got = engine_of(pose).at(angle, omega=26.16, mass=1, indicator=str(csv), bore=0.2)
+    assert got.to_dict() == want
+    one_turn = tmp_path / "one-turn.csv"
+    one_turn.write_text("\n".join(",".join(row.split(",")[i] for i in (0, 1, 4))
+                                  for row in FOUR_STROKE.splitlines()))
+    if angle > 180:
+        # on the return stroke the exhaust, not the compression, pushes
+        other = engine_of(pose).at(angle, omega=26.16, mass=1, indicator=str(one_turn), bore=0.2)
+        assert other.dynamics is not None and got.dynamics is not None
+        assert other.dynamics.gas_force != got.dynamics.gas_force
