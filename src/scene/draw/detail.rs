@@ -164,16 +164,33 @@ pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
         true => core_extent >= CORE_TARGET,
         false => core_extent >= THRESHOLD,
     };
-    if !readable {
-        return whole(&core, h, core_extent, scale, max_width);
-    }
     let mut lettered = [core.as_slice(), &[ctx.main.pose().a()]].concat();
     lettered.extend(h);
+    lettered.extend(super::fit::d_is_near(ctx));
     // The acceleration constructions' pins (C among A, E, F, G on a short
     // rod) need their letters' room inside the frame; the velocity
     // triangle's frame stays tight, clear of the letters about it.
     let room = if acceleration { CROWD_ROOM } else { 0.0 };
-    match crowded(&lettered, room, scale, max_width) {
+    let crowding = crowded(&lettered, room, scale, max_width);
+    if !readable {
+        let all = whole(&core, h, core_extent, scale, max_width);
+        // The whole construction enlarged may still leave a cluster of
+        // points within [`CROWD`] of each other (a short rod whose
+        // construction spans just under the target: C, A, D, E and F
+        // within a few units); the detail is then drawn about those
+        // points. Two points alone (F beside B) take their letters on
+        // opposite sides.
+        return match (all, crowding) {
+            (Some(w), Crowding::Separable(d))
+                if crowding_points(&lettered, CROWD / (w.magnification * scale)) >= CLUSTER
+                    && d.magnification > w.magnification =>
+            {
+                Some(d)
+            }
+            (all, _) => all,
+        };
+    }
+    match crowding {
         Crowding::Apart => None,
         // Points too close to separate (near a dead centre): the whole
         // construction enlarged, its letters set about it.
@@ -237,6 +254,21 @@ const MOST_CROWDED: f64 = 16.0;
 /// units: the crowded points and their near neighbours, not the
 /// mechanism again.
 const CROWD_EXTENT: f64 = 320.0;
+
+/// The least number of lettered points crowding together (each within
+/// [`CROWD`] of another) that the whole construction's detail leaves to a
+/// detail of their own.
+const CLUSTER: usize = 3;
+
+/// How many of `pts` lie within `within` (world units) of another.
+fn crowding_points(pts: &[Point], within: f64) -> usize {
+    let near = |(i, a): (usize, &Point)| {
+        pts.iter()
+            .enumerate()
+            .any(|(j, b)| j != i && (b - a).norm() < within)
+    };
+    pts.iter().enumerate().filter(|&p| near(p)).count()
+}
 
 /// The detail of the points of `lettered` (world) that crowd in a main
 /// view at `scale`: the box of every point within [`CROWD`] page units
