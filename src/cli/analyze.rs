@@ -255,58 +255,6 @@ fn reports<'a>(
         .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction, engine))
 }
 
-/// Writes `objects` as one pretty JSON array, each serialised straight
-/// to standard output as it is computed (never a string of its own, nor
-/// the array held): the bytes of `to_string_pretty` on the whole array.
-fn stream_array<T: serde::Serialize>(
-    objects: impl Iterator<Item = Result<T>>,
-    out: &mut Stdout,
-) -> Result<()> {
-    struct Array<I>(std::cell::RefCell<I>);
-    impl<T: serde::Serialize, I: Iterator<Item = Result<T>>> serde::Serialize for Array<I> {
-        fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-            use serde::ser::{Error as _, SerializeSeq};
-            let mut seq = s.serialize_seq(None)?;
-            for v in &mut *self.0.borrow_mut() {
-                seq.serialize_element(&v.map_err(S::Error::custom)?)?;
-            }
-            seq.end()
-        }
-    }
-    /// Standard output as a writer, keeping its own error.
-    struct Sink<'a>(&'a mut Stdout, Option<Error>);
-    impl std::io::Write for Sink<'_> {
-        fn write(&mut self, bytes: &[u8]) -> std::io::Result<usize> {
-            match self.0.bytes(bytes) {
-                Ok(()) => Ok(bytes.len()),
-                Err(e) => {
-                    self.1 = Some(e);
-                    Err(std::io::Error::other("standard output"))
-                }
-            }
-        }
-        fn flush(&mut self) -> std::io::Result<()> {
-            Ok(())
-        }
-    }
-    let mut sink = Sink(out, None);
-    // serde_json writes a token at a time: gathered here into large
-    // writes, each checked once.
-    let mut buffered = std::io::BufWriter::with_capacity(1 << 16, &mut sink);
-    let written = serde_json::to_writer_pretty(&mut buffered, &Array(objects.into()))
-        .and_then(|()| std::io::Write::flush(&mut buffered).map_err(serde_json::Error::io));
-    drop(buffered);
-    match (written, sink.1) {
-        (_, Some(e)) => Err(e),
-        (Ok(()), None) => Ok(()),
-        (Err(e), None) => Err(Error::Io {
-            message: e.to_string(),
-            path: None,
-            source: Some(std::sync::Arc::new(e.into())),
-        }),
-    }
-}
-
 fn pretty(value: &impl serde::Serialize) -> Result<String> {
     serde_json::to_string_pretty(value).map_err(|e| Error::Io {
         message: e.to_string(),
@@ -315,9 +263,10 @@ fn pretty(value: &impl serde::Serialize) -> Result<String> {
     })
 }
 
-/// Runs the subcommand. Rows are computed twice, never held: a first
+/// Runs the subcommand. Rows are computed twice, never all held: a first
 /// pass finds any error (so that nothing is printed then), the second
-/// prints each angle as it is computed.
+/// prints the angles a chunk at a time, both on every core
+/// ([`super::stream`]).
 pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     let m = args.mechanism.mechanism()?;
     if args.chain.is_set() && args.load.torque.is_some() {
@@ -356,9 +305,9 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     let spec = AngleSpec::parse(&args.angle)?;
     let engine = args.engine.engine(m, omega)?;
     let engine = engine.as_ref();
-    for r in reports(&m, &spec, omega, args, engine) {
-        r?;
-    }
+    let (torque, mu) = (args.load.torque, args.load.friction);
+    let at = |d: f64| analyse(&m, d, omega, torque, mu, engine);
+    super::stream::check_all(spec.iter(), at)?;
     if args.json {
         if !spec.is_list() {
             if let Some(r) = reports(&m, &spec, omega, args, engine).next() {
@@ -372,14 +321,14 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
             }
             return Ok(());
         }
-        let objects = reports(&m, &spec, omega, args, engine).map(|r| {
+        let object = |d: f64| {
             Ok(ReportJson {
                 mechanism: &m,
-                report: r?,
+                report: at(d)?,
                 units: &units,
             })
-        });
-        stream_array(objects, out)?;
+        };
+        super::stream::json_array(spec.iter(), object, out)?;
         return out.text("\n");
     }
     let u = units.length();

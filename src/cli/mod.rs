@@ -11,4 +11,5 @@ pub mod gallery;
 pub mod handout;
 pub mod output;
 pub mod scene;
+pub mod stream;
 pub mod table;
