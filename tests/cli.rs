@@ -1025,3 +1025,38 @@ fn dynamics_figures_refuse_bad_masses_and_coefficients_in_one_line() {
     );
     assert!(path.exists());
 }
+
+/// A sweep's JSON array, written a chunk of angles at a time on every
+/// core, is the single-angle objects in order, each indented as
+/// `to_string_pretty` indents an array's elements: checked across the
+/// chunks' seams (2 048 angles a chunk) against `analyze --angle θ --json`.
+#[test]
+fn a_long_sweep_is_the_single_angle_objects_in_order() {
+    let flags = [
+        "--crank", "0.5", "--rod", "1.7", "--offset", "0.2", "--torque", "3",
+    ];
+    let out = run(&[&["analyze", "--angle", "-1:4500:1", "--json"], &flags[..]].concat());
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    let body = text
+        .strip_prefix("[\n")
+        .and_then(|t| t.strip_suffix("\n]\n"))
+        .expect("one array");
+    let elements: Vec<&str> = body.split("\n  },\n  {").collect();
+    assert_eq!(elements.len(), 4502);
+    for k in [0, 1, 2047, 2048, 2049, 4095, 4096, 4097, 4501] {
+        let degrees = (k as i64 - 1).to_string();
+        let one = run(&[&["analyze", "--angle", &degrees, "--json"], &flags[..]].concat());
+        let one = String::from_utf8(one.stdout).unwrap();
+        let indented: Vec<String> = one.trim_end().lines().map(|l| format!("  {l}")).collect();
+        let mut want = indented.join("\n");
+        // The split took the closing and opening braces of the seams.
+        if k > 0 {
+            want = want.replacen("  {", "", 1);
+        }
+        if k < 4501 {
+            want = want.strip_suffix("\n  }").unwrap().to_string();
+        }
+        assert_eq!(elements[k], want, "angle {degrees}");
+    }
+}
