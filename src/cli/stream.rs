@@ -9,8 +9,8 @@ use slider_crank::{Error, Result};
 
 /// Angles a thread takes at a time: large enough that starting threads
 /// costs nothing beside the work, small enough that the chunks held at
-/// once (one a thread) stay a few megabytes of text.
-const CHUNK: usize = 2048;
+/// once (one a thread, about two kilobytes of JSON an angle) stay small.
+const CHUNK: usize = 1024;
 
 /// The threads to use: the machine's cores, asked once (at most 8).
 fn threads() -> usize {
@@ -18,27 +18,42 @@ fn threads() -> usize {
     *THREADS.get_or_init(|| std::thread::available_parallelism().map_or(1, |n| n.get().min(8)))
 }
 
-/// `work` applied to each chunk of `angles`, several chunks at once, the
-/// results handed to `take` in the order of the angles; stops at the
+/// `work` applied to each chunk of `angles`, several chunks at once, each
+/// writing into a buffer of its own (cleared before, and kept from chunk
+/// to chunk so that its memory is not asked of the system again), the
+/// buffers handed to `take` in the order of the angles; stops at the
 /// first error of `work` or `take` (the chunks before it taken).
-fn in_chunks<T: Send>(
+fn in_chunks(
     angles: impl Iterator<Item = f64>,
-    work: impl Fn(&[f64]) -> Result<T> + Sync,
-    mut take: impl FnMut(T) -> Result<()>,
+    work: impl Fn(&[f64], &mut Vec<u8>) -> Result<()> + Sync,
+    mut take: impl FnMut(&[u8]) -> Result<()>,
 ) -> Result<()> {
     let mut angles = angles.peekable();
+    let mut buffers: Vec<(Vec<f64>, Vec<u8>)> = (0..threads())
+        .map(|_| (Vec::with_capacity(CHUNK), Vec::new()))
+        .collect();
     while angles.peek().is_some() {
-        let batch: Vec<Vec<f64>> = (0..threads())
-            .map(|_| angles.by_ref().take(CHUNK).collect::<Vec<f64>>())
-            .filter(|c| !c.is_empty())
-            .collect();
+        for (chunk, _) in &mut buffers {
+            chunk.clear();
+            chunk.extend(angles.by_ref().take(CHUNK));
+        }
         let work = &work;
-        let results: Vec<Result<T>> = std::thread::scope(|scope| {
-            let mut chunks = batch.iter();
-            let first = chunks.next();
-            let others: Vec<_> = chunks.map(|c| scope.spawn(move || work(c))).collect();
-            let mut results = Vec::with_capacity(batch.len());
-            results.extend(first.map(|c| work(c)));
+        let results: Vec<Result<()>> = std::thread::scope(|scope| {
+            let mut jobs = buffers.iter_mut().filter(|(c, _)| !c.is_empty());
+            let first = jobs.next();
+            let others: Vec<_> = jobs
+                .map(|(c, out)| {
+                    scope.spawn(move || {
+                        out.clear();
+                        work(c, out)
+                    })
+                })
+                .collect();
+            let mut results = Vec::with_capacity(threads());
+            results.extend(first.map(|(c, out)| {
+                out.clear();
+                work(c, out)
+            }));
             for handle in others {
                 results.push(
                     handle
@@ -48,8 +63,10 @@ fn in_chunks<T: Send>(
             }
             results
         });
-        for r in results {
-            take(r?)?;
+        let filled = buffers.iter().filter(|(c, _)| !c.is_empty());
+        for (r, (_, out)) in results.into_iter().zip(filled) {
+            r?;
+            take(out)?;
         }
     }
     Ok(())
@@ -63,16 +80,16 @@ pub fn check_all<T>(
 ) -> Result<()> {
     in_chunks(
         angles,
-        |chunk| chunk.iter().try_for_each(|&d| compute(d).map(drop)),
-        |()| Ok(()),
+        |chunk, _| chunk.iter().try_for_each(|&d| compute(d).map(drop)),
+        |_| Ok(()),
     )
 }
 
 /// Writes one pretty JSON array of `object(angle)` for every angle of
 /// `angles` to `out`, byte for byte `serde_json::to_string_pretty` of the
-/// whole array: each chunk is serialised as an array of its own and its
-/// elements' lines (indented as in the whole) written between the
-/// brackets. No angle: `[]`.
+/// whole array: each object is serialised as the one element of an array
+/// (so indented as `to_string_pretty` indents an array's elements), the
+/// elements joined by `,\n` between `[\n` and `\n]`. No angle: `[]`.
 pub fn json_array<T: serde::Serialize>(
     angles: impl Iterator<Item = f64>,
     object: impl Fn(f64) -> Result<T> + Sync,
@@ -81,22 +98,24 @@ pub fn json_array<T: serde::Serialize>(
     let mut first = true;
     in_chunks(
         angles,
-        |chunk| {
-            let objects = chunk
-                .iter()
-                .map(|&d| object(d))
-                .collect::<Result<Vec<T>>>()?;
-            let text = serde_json::to_vec_pretty(&objects).map_err(json_error)?;
-            // "[\n" + the elements + "\n]": the elements alone.
-            Ok(text
-                .get(2..text.len().saturating_sub(2))
-                .unwrap_or_default()
-                .to_vec())
+        |chunk, text| {
+            // Each object as the one element of an array, "[\n" + its
+            // lines indented + "\n]", kept without the brackets.
+            let mut one = Vec::new();
+            for (i, &d) in chunk.iter().enumerate() {
+                one.clear();
+                serde_json::to_writer_pretty(&mut one, &[object(d)?]).map_err(json_error)?;
+                if i > 0 {
+                    text.extend_from_slice(b",\n");
+                }
+                text.extend_from_slice(one.get(2..one.len().saturating_sub(2)).unwrap_or_default());
+            }
+            Ok(())
         },
         |elements| {
             out.text(if first { "[\n" } else { ",\n" })?;
             first = false;
-            out.bytes(&elements)
+            out.bytes(elements)
         },
     )?;
     out.text(if first { "[]" } else { "\n]" })
