@@ -13,7 +13,7 @@ use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use slider_crank::animate::{Animation, AnimationFormat};
 use slider_crank::catalogue::FigureOptions;
-use slider_crank::construct::Reading;
+use slider_crank::construct::{Graphical, Reading};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
@@ -201,9 +201,9 @@ fn fill_chunk(
 ) -> slider_crank::Result<()> {
     for (i, &degrees) in thetas.iter().enumerate() {
         let pose = m.pose(Angle::from_degrees(degrees)?);
-        let k = if graphical {
-            let reading = Reading::new(&pose, omega, None, 0.0)?;
-            let g = reading.graphical;
+        let k = Kinematics::new(&pose, omega)?;
+        if graphical {
+            let g = Graphical::new(&pose, omega)?;
             let values = [
                 g.velocity,
                 g.acceleration,
@@ -213,10 +213,7 @@ fn fill_chunk(
             for (row, v) in values.into_iter().enumerate() {
                 rows[ANALYTIC_ROWS + row][i] = v + 0.0;
             }
-            reading.exact
-        } else {
-            Kinematics::new(&pose, omega)?
-        };
+        }
         let values = [
             k.position,
             k.velocity,

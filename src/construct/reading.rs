@@ -26,6 +26,55 @@ pub struct Graphical {
     pub rod_angular_acceleration: f64,
 }
 
+impl Graphical {
+    /// The values read off the constructions at `pose` and crank speed
+    /// `omega` (rad/s): the instantaneous centre D, the velocity line CE
+    /// and Kisch's F and G, nothing else (a sweep's per-pose cost; the
+    /// same values as [`Reading::new`]'s). Errors where a value exceeds
+    /// the largest number (ω in too short a unit of time for the lengths).
+    pub fn new(pose: &Pose, omega: f64) -> Result<Self> {
+        let d = InstantCentre::construct(pose);
+        let e = VelocityLine::construct(pose);
+        let kisch = Kisch::construct(pose, &e);
+        Self::read(pose, omega, &d, &e, &kisch)
+    }
+
+    /// The values the constructions `d`, `e` and `kisch` of `pose` give at
+    /// crank speed `omega`.
+    fn read(
+        pose: &Pose,
+        omega: f64,
+        d: &InstantCentre,
+        e: &VelocityLine,
+        kisch: &Kisch,
+    ) -> Result<Self> {
+        let points = kisch.points();
+        let graphical = Graphical {
+            velocity: omega * e.velocity_ratio(),
+            acceleration: omega * omega * points.acceleration_ratio(),
+            rod_angular_velocity: omega * d.rod_angular_velocity_ratio(),
+            rod_angular_acceleration: omega * omega * points.rod_angular_acceleration_ratio(),
+        };
+        let values = [
+            graphical.velocity,
+            graphical.acceleration,
+            graphical.rod_angular_velocity,
+            graphical.rod_angular_acceleration,
+        ];
+        if let Some(bad) = values.iter().find(|g| !g.is_finite()) {
+            return Err(Error::OutOfRange {
+                name: "omega",
+                value: omega,
+                reason: format!(
+                    "the values read off the construction at θ = {}° ({bad}) exceed the largest number: give ω per a longer unit of time or the lengths in a smaller unit",
+                    pose.angle().degrees()
+                ),
+            });
+        }
+        Ok(graphical)
+    }
+}
+
 /// Ng's statics at a pose for a crank torque (eq. 2, 6–8, 11).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Statics {
@@ -97,32 +146,11 @@ impl Reading {
         let e = VelocityLine::construct(pose);
         let kisch = Kisch::construct(pose, &e);
         let points = kisch.points();
-        let graphical = Graphical {
-            velocity: omega * e.velocity_ratio(),
-            acceleration: omega * omega * points.acceleration_ratio(),
-            rod_angular_velocity: omega * d.rod_angular_velocity_ratio(),
-            rod_angular_acceleration: omega * omega * points.rod_angular_acceleration_ratio(),
-        };
+        let graphical = Graphical::read(pose, omega, &d, &e, &kisch)?;
         let statics = match torque {
             None => None,
             Some(t) => Some(Self::statics(pose, t, mu)?),
         };
-        let values = [
-            graphical.velocity,
-            graphical.acceleration,
-            graphical.rod_angular_velocity,
-            graphical.rod_angular_acceleration,
-        ];
-        if let Some(bad) = values.iter().find(|g| !g.is_finite()) {
-            return Err(Error::OutOfRange {
-                name: "omega",
-                value: omega,
-                reason: format!(
-                    "the values read off the construction at θ = {}° ({bad}) exceed the largest number: give ω per a longer unit of time or the lengths in a smaller unit",
-                    pose.angle().degrees()
-                ),
-            });
-        }
         Ok(Self {
             pose: *pose,
             omega,
