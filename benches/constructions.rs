@@ -4,8 +4,9 @@
 //! docs/benchmarks.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use slider_crank::analytic::kinematics::Kinematics;
 use slider_crank::construct::{
-    InstantCentre, Kisch, Klein, TorqueLine, VelocityLine, VirtualCentres,
+    Graphical, InstantCentre, Kisch, Klein, TorqueLine, VelocityLine, VirtualCentres,
 };
 use slider_crank::{Angle, SliderCrank};
 use std::hint::black_box;
@@ -64,6 +65,38 @@ fn bench(c: &mut Criterion) {
                 let e = VelocityLine::construct(&p);
                 let kisch = Kisch::construct(&p, &e);
                 acc += e.velocity_ratio() + kisch.points().acceleration_ratio();
+            }
+            acc
+        })
+    });
+    group.bench_function("a sweep's pose: degrees, Kinematics, Graphical", |b| {
+        let degrees: Vec<f64> = (0..360).map(|k| k as f64 + 0.5).collect();
+        b.iter(|| {
+            let mut acc = 0.0;
+            for d in &degrees {
+                let Ok(angle) = Angle::from_degrees(*black_box(d)) else {
+                    continue;
+                };
+                let p = m.pose(angle);
+                let (Ok(k), Ok(g)) = (Kinematics::new(&p, 26.0), Graphical::new(&p, 26.0)) else {
+                    continue;
+                };
+                acc += k.position + k.velocity + k.acceleration + g.velocity + g.acceleration;
+            }
+            acc
+        })
+    });
+    group.bench_function("a sweep's pose: degrees, Kinematics", |b| {
+        let degrees: Vec<f64> = (0..360).map(|k| k as f64 + 0.5).collect();
+        b.iter(|| {
+            let mut acc = 0.0;
+            for d in &degrees {
+                let Ok(angle) = Angle::from_degrees(*black_box(d)) else {
+                    continue;
+                };
+                if let Ok(k) = Kinematics::new(&m.pose(angle), 26.0) {
+                    acc += k.position + k.velocity + k.acceleration;
+                }
             }
             acc
         })
