@@ -1,6 +1,8 @@
 //! Collects a panel's primitives while the layers draw: clips lines to the
 //! panel's world frame, keeps ids unique, and shows points that fall off
-//! the page by arrows at its edge.
+//! the page by arrows at its edge. The scene's layers and the catalogue's
+//! linkage sketches draw with it alike (the frame's bearings, hatching and
+//! guides are in [`super::ground`]).
 
 use crate::figure::{Hue, Item, PageFromWorld, RichText, Role, Shape, TextSize};
 use crate::geom::{Direction, Frame, Intersection, Point, Vector};
@@ -23,6 +25,8 @@ pub(crate) enum Marker {
     Dot,
 }
 
+/// A panel's items being drawn in one world frame with one map to the
+/// page.
 pub(crate) struct Canvas {
     transform: PageFromWorld,
     frame: Frame,
@@ -31,6 +35,9 @@ pub(crate) struct Canvas {
     points: Map<String, Value>,
     /// Put before every id (a detail panel's `detail-`).
     prefix: &'static str,
+    /// Put after every id (a sketch's panel, `-a` in panel (a) of
+    /// Fig. 60, so that several sketches share one plot).
+    suffix: &'static str,
     /// Whether points off the frame are shown by arrows at its edge (not
     /// in a detail, which shows only its region).
     edge_arrows: bool,
@@ -53,6 +60,7 @@ impl Canvas {
             ids: BTreeSet::new(),
             points: Map::new(),
             prefix: "",
+            suffix: "",
             edge_arrows: true,
             quiet: None,
             bare: None,
@@ -108,6 +116,13 @@ impl Canvas {
         self
     }
 
+    /// The canvas of one of several sketches in a plot: every id gets
+    /// `suffix`.
+    pub(crate) fn suffixed(mut self, suffix: &'static str) -> Self {
+        self.suffix = suffix;
+        self
+    }
+
     pub(crate) fn transform(&self) -> &PageFromWorld {
         &self.transform
     }
@@ -138,7 +153,7 @@ impl Canvas {
             return false;
         }
         self.ids.insert(id.clone());
-        let mut item = Item::new(format!("{}{id}", self.prefix), role, shape);
+        let mut item = Item::new(format!("{}{id}{}", self.prefix, self.suffix), role, shape);
         if let Some(h) = self.hue
             && !matches!(role, Role::Link | Role::Frame | Role::Label)
         {
@@ -146,6 +161,18 @@ impl Canvas {
         }
         self.items.push(item);
         true
+    }
+
+    /// Adds a ready-made item as [`Canvas::push`] does (its dash and hue
+    /// are the canvas's); a label only when its anchor is on the frame, as
+    /// [`Canvas::label`].
+    pub(crate) fn push_item(&mut self, item: Item) {
+        if let Shape::Label { anchor, .. } = &item.shape
+            && !self.contains(*anchor)
+        {
+            return;
+        }
+        self.push(item.id, item.role, item.shape);
     }
 
     pub(crate) fn contains(&self, p: Point) -> bool {
@@ -218,11 +245,7 @@ impl Canvas {
         let quiet = marker == Marker::Dot && self.quiet.is_some_and(|f| f.contains(p));
         if quiet {
         } else if self.contains(p) {
-            match marker {
-                Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
-                Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
-            };
-            self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+            self.mark(name, p, marker, letter);
         } else if !self.edge_arrows {
         } else if let Some((_, edge)) = self.frame.clip_segment(from, p) {
             let dir = p - from;
@@ -232,6 +255,93 @@ impl Canvas {
                 self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
             }
         }
+    }
+
+    /// A point's marker (`point-{name}`) and its letter (`label-{name}`).
+    fn mark(&mut self, name: &str, p: Point, marker: Marker, letter: RichText) {
+        let key = format!("point-{name}");
+        match marker {
+            Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
+            Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
+        };
+        self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+    }
+
+    /// A point lettered `markup` (a sketch's, which records no metadata):
+    /// its marker and letter when on the frame, else an arrow at the
+    /// frame's edge on the line from `from` (a point on the frame) towards
+    /// it, lettered at its tail, where the arrow fits between `from` and
+    /// the edge (nothing where it does not).
+    pub(crate) fn lettered(
+        &mut self,
+        name: &str,
+        p: Point,
+        markup: &str,
+        marker: Marker,
+        from: Point,
+    ) {
+        if self.contains(p) {
+            self.mark(name, p, marker, RichText::parse(markup));
+        } else if let Some((_, edge)) = self.frame.clip_segment(from, p)
+            && (p - from).norm() > 0.0
+        {
+            let u = (p - from).normalize();
+            if let Some(tail) = self.edge_arrow_after(format!("offpage-{name}"), from, edge, u) {
+                self.label(
+                    format!("label-{name}"),
+                    tail,
+                    RichText::parse(markup),
+                    TextSize::Letter,
+                );
+            }
+        }
+    }
+
+    /// A point at infinity in the direction `u` (a sketch's, which records
+    /// no metadata): an arrow at the frame's edge on the ray from `from`,
+    /// lettered `markup` "at ∞", where it fits between `from` and the edge;
+    /// nothing for a zero `u`.
+    pub(crate) fn lettered_at_infinity(
+        &mut self,
+        name: &str,
+        from: Point,
+        u: Vector,
+        markup: &str,
+    ) {
+        if u.norm() == 0.0 {
+            return;
+        }
+        let u = u.normalize();
+        if let Some((_, edge)) = self.frame.clip_ray(from, u)
+            && let Some(tail) = self.edge_arrow_after(format!("infinity-{name}"), from, edge, u)
+        {
+            let letter = RichText::parse(&format!("{markup} at ∞"));
+            self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
+        }
+    }
+
+    /// The head and tail of an arrow of `length` page units along the unit
+    /// `u` that ends just inside the frame at `edge`.
+    fn edge_ends(&self, edge: Point, u: Vector, length: f64) -> (Point, Point) {
+        let head = edge - u * self.world(EDGE_GAP);
+        (head, head - u * self.world(length))
+    }
+
+    /// An [`EDGE_ARROW`] long arrow along the unit `u` that ends just
+    /// inside the frame at `edge`, if its tail is not behind `from`;
+    /// returns its tail.
+    fn edge_arrow_after(
+        &mut self,
+        id: String,
+        from: Point,
+        edge: Point,
+        u: Vector,
+    ) -> Option<Point> {
+        let (_, tail) = self.edge_ends(edge, u, EDGE_ARROW);
+        if (tail - from).dot(&u) < 0.0 {
+            return None;
+        }
+        Some(self.edge_arrow(id, edge, u, EDGE_ARROW))
     }
 
     /// An arrow of `length` page units along the unit `u` that ends just
@@ -244,8 +354,7 @@ impl Canvas {
         u: Vector,
         length: f64,
     ) -> Point {
-        let head = edge - u * self.world(EDGE_GAP);
-        let tail = head - u * self.world(length);
+        let (head, tail) = self.edge_ends(edge, u, length);
         self.push(
             id,
             Role::Construction,
@@ -274,7 +383,7 @@ impl Canvas {
             return;
         }
         if let Some((_, edge)) = self.frame.clip_ray(through, u) {
-            let head = edge - u * self.world(EDGE_GAP);
+            let (head, _) = self.edge_ends(edge, u, EDGE_ARROW);
             if (head - through).dot(&u) > 0.0 {
                 let tail = self.edge_arrow(id, edge, u, EDGE_ARROW);
                 self.label(

@@ -5,20 +5,13 @@ use crate::figure::{HATCH_DEPTH, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::scene::cache::Constructions;
 use crate::scene::canvas::{Canvas, Marker};
+use crate::scene::linkage::{BEARING_REACH, GUIDE_MIN, HATCH_SLANT, LINK_CLEARANCE};
 use crate::scene::notation::Named;
 
-/// Clear distance, page units, kept between a guide (with its hatching)
-/// and a link passing in front of it: the link's half width, the
-/// guide's, and a little paper.
-const LINK_CLEARANCE: f64 = 5.0;
 /// The bearing's reach about the crank centre, page units: the pedestal
 /// and its hatched foot below (see the SVG writer's bearing), the shaft's
 /// pin above, with a little paper all round. Left, right, below, above.
-const BEARING_BOX: [f64; 4] = [25.0, 20.0, 26.0, 8.0];
-/// Shortest piece of guide drawn, page units.
-const GUIDE_MIN: f64 = 12.0;
-/// How far the hatching leans back along the guide, page units.
-const HATCH_SLANT: f64 = 6.0;
+const BEARING_BOX: [f64; 4] = [BEARING_REACH, 20.0, 26.0, 8.0];
 
 /// A stretch of a guide along x, world units.
 type Span = (f64, f64);

@@ -12,6 +12,8 @@ mod scales;
 mod torque;
 mod velocity;
 
+pub(crate) use torque::torque_arrow;
+
 use super::Layer;
 use super::Scene;
 use super::cache::{Constructions, Evaluations};

@@ -4,7 +4,7 @@
 use super::velocity::basics_e;
 use super::{Ctx, NamedArrow};
 use crate::analytic::statics::NG_TORQUE;
-use crate::figure::{RichText, Role, Shape, TextSize};
+use crate::figure::{Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
 use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
@@ -112,7 +112,10 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
         let block = s.block_half_length.hypot(s.block_half_height);
         let near = ca.norm() - block < canvas.world(TORQUE_RADIUS + ARROW_ROOM);
         let gap = near.then(|| ca.y.atan2(ca.x));
-        torque_arrow(canvas, c, scene.torque(), gap);
+        let radius = canvas.world(TORQUE_RADIUS);
+        for item in torque_arrow(c, scene.torque(), radius, gap) {
+            canvas.push_item(item);
+        }
     }
     for f in forces(ctx, &|page| canvas.world(page)) {
         if !canvas.contains(f.from) {
@@ -152,13 +155,14 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     }
 }
 
-/// The crank torque `t` as an arc arrow about the crank centre `c`,
-/// lettered T. The gap is below the centre (above it for a clockwise
-/// torque) and holds the letter; or it is centred on the world direction
-/// `gap` where one is given (the slider's block, which the arc would
-/// otherwise cross), and the letter goes beside the arc's middle.
-fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
-    let radius = canvas.world(TORQUE_RADIUS);
+/// The torque `t` as an arc arrow of `radius` (world units) about the
+/// crank centre `c` in its sense, lettered T (`torque-T`, `value-T`). The
+/// gap is below the centre (above it for a clockwise torque) and holds
+/// the letter; or it is centred on the world direction `gap` where one is
+/// given (the slider's block, which the arc would otherwise cross), and
+/// the letter goes beside the arc's middle. A zero torque turns
+/// counter-clockwise (a caller that draws no arrow for it leaves it out).
+pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [Item; 2] {
     let turn = if t >= 0.0 { 1.0 } else { -1.0 };
     let sweep = turn * TORQUE_SWEEP;
     // The gap's middle is half a sweep and half a turn past the start.
@@ -166,29 +170,34 @@ fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
         Some(g) => g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI),
         None => -0.9 * turn,
     };
-    canvas.push(
-        "torque-T",
-        Role::Force,
-        Shape::Arc {
-            centre: c,
-            radius,
-            start,
-            sweep,
-            arrow: true,
-        },
-    );
     // T in the gap, or, where the gap holds the block, beside the arc's
     // middle.
     let mid = match gap {
         Some(_) => start + 0.5 * sweep,
         None => start + 0.5 * sweep + std::f64::consts::PI,
     };
-    canvas.label(
-        "value-T",
-        c + Vector::new(mid.cos(), mid.sin()) * radius,
-        RichText::italic("T"),
-        TextSize::Small,
-    );
+    [
+        Item::new(
+            "torque-T",
+            Role::Force,
+            Shape::Arc {
+                centre: c,
+                radius,
+                start,
+                sweep,
+                arrow: true,
+            },
+        ),
+        Item::new(
+            "value-T",
+            Role::Label,
+            Shape::Label {
+                anchor: c + Vector::new(mid.cos(), mid.sin()) * radius,
+                text: RichText::italic("T"),
+                size: TextSize::Small,
+            },
+        ),
+    ]
 }
 
 /// The force arrows, their page lengths turned to world lengths by
