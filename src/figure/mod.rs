@@ -20,7 +20,7 @@ mod transform;
 
 pub use crate::error::is_noncharacter;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
-pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
+pub use model::{Align, Dash, Figure, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use size::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use style::Style;

@@ -4,7 +4,7 @@
 //! linkage sketches draw with it alike (the frame's bearings, hatching and
 //! guides are in [`super::ground`]).
 
-use crate::figure::{Hue, Item, PageFromWorld, RichText, Role, Shape, TextSize};
+use crate::figure::{Hue, Item, PageFromWorld, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Direction, Frame, Intersection, Point, Vector};
 use serde_json::{Map, Value, json};
 use std::collections::BTreeSet;
@@ -49,6 +49,8 @@ pub(crate) struct Canvas {
     bare: Option<Frame>,
     /// What the lines drawn now stand for (set per layer).
     hue: Option<Hue>,
+    /// What the items drawn now are ([`Canvas::with_part`]).
+    part: Part,
 }
 
 impl Canvas {
@@ -65,6 +67,7 @@ impl Canvas {
             quiet: None,
             bare: None,
             hue: None,
+            part: Part::Plain,
         }
     }
 
@@ -86,6 +89,20 @@ impl Canvas {
         let added = self.push(id, role, shape);
         self.hue = old;
         added
+    }
+
+    /// Draws what `draw` adds as `part` (the writer, the handout and the
+    /// catalogue tell such items apart by it, never by their ids).
+    pub(crate) fn with_part(&mut self, part: Part, draw: impl FnOnce(&mut Self)) {
+        let old = std::mem::replace(&mut self.part, part);
+        draw(self);
+        self.part = old;
+    }
+
+    /// A centre line (the line of stroke) from `a` to `b`, clipped as
+    /// [`Canvas::segment`]: auxiliary, written long dash and dot.
+    pub(crate) fn centre_line(&mut self, id: impl Into<String>, a: Point, b: Point) {
+        self.with_part(Part::CentreLine, |c| c.segment(id, Role::Auxiliary, a, b));
     }
 
     /// Leaves the dots and letters of constructed points inside `region`
@@ -153,7 +170,8 @@ impl Canvas {
             return false;
         }
         self.ids.insert(id.clone());
-        let mut item = Item::new(format!("{}{id}{}", self.prefix, self.suffix), role, shape);
+        let mut item = Item::new(format!("{}{id}{}", self.prefix, self.suffix), role, shape)
+            .as_part(self.part);
         if let Some(h) = self.hue
             && !matches!(role, Role::Link | Role::Frame | Role::Label)
         {
@@ -163,9 +181,9 @@ impl Canvas {
         true
     }
 
-    /// Adds a ready-made item as [`Canvas::push`] does (its dash and hue
-    /// are the canvas's); a label only when its anchor is on the frame, as
-    /// [`Canvas::label`].
+    /// Adds a ready-made item as [`Canvas::push`] does (its dash, hue and
+    /// part are the canvas's); a label only when its anchor is on the
+    /// frame, as [`Canvas::label`].
     pub(crate) fn push_item(&mut self, item: Item) {
         if let Shape::Label { anchor, .. } = &item.shape
             && !self.contains(*anchor)

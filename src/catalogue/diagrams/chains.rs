@@ -13,7 +13,7 @@ use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, CylindricChain};
 use crate::diagram::Plot;
 use crate::error::{Error, Result};
-use crate::figure::{Align, Figure, Item, RichText, Role, Shape, TextSize};
+use crate::figure::{Align, Figure, Item, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::number::plain;
 use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Slot};
@@ -159,14 +159,16 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         let mut s = Canvas::new(map, frame).suffixed(suffix);
         let c = Point::origin() + dx;
         // The crank circle and the crank in every panel.
-        s.push(
-            "circle-crank",
-            Role::Curve,
-            Shape::Circle {
-                centre: c,
-                radius: r,
-            },
-        );
+        s.with_part(Part::CrankCircle, |s| {
+            s.push(
+                "circle-crank",
+                Role::Curve,
+                Shape::Circle {
+                    centre: c,
+                    radius: r,
+                },
+            );
+        });
         let (b, a, key) = match k {
             0 => (rotate(qpose.b()) + dx, rotate(qpose.a()) + dx, "a"),
             1 => {

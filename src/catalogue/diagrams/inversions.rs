@@ -261,7 +261,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
                 half_height: hh,
                 block: (pose.engine_pose().a().x, lh),
             };
-            s.segment("line-stroke", Role::Auxiliary, t - u * r, q.f);
+            s.centre_line("line-stroke", t - u * r, q.f);
             s.guides("stroke", &slot, c, (b, a));
             s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
         }

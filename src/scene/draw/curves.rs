@@ -7,7 +7,7 @@ use super::velocity::basics_d;
 use crate::angle::Angle;
 use crate::construct::{Centrode, CentrodeKind};
 use crate::diagram::{self, Curve, Locus, LocusKind, Method, TraceOptions};
-use crate::figure::{Path, RichText, Role, Shape, TextSize};
+use crate::figure::{Part, Path, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, perp};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named;
@@ -88,21 +88,27 @@ pub(crate) fn centrodes(ctx: &Ctx, canvas: &mut Canvas) {
                 builder_paths.push(t);
             }
         }
-        for (k, (path, anchor)) in builder_paths.into_iter().enumerate() {
-            canvas.push(
-                format!("curve-centrode-{name}-{}", k + 1),
-                role,
-                Shape::Path(path),
-            );
-            if k == 0 {
-                canvas.label(
-                    format!("label-centrode-{name}"),
-                    anchor,
-                    RichText::parse(&format!("{name} centrode")),
-                    TextSize::Small,
+        let part = match kind {
+            CentrodeKind::Fixed => Part::FixedCentrode,
+            CentrodeKind::Moving => Part::MovingCentrode,
+        };
+        canvas.with_part(part, |canvas| {
+            for (k, (path, anchor)) in builder_paths.into_iter().enumerate() {
+                canvas.push(
+                    format!("curve-centrode-{name}-{}", k + 1),
+                    role,
+                    Shape::Path(path),
                 );
+                if k == 0 {
+                    canvas.label(
+                        format!("label-centrode-{name}"),
+                        anchor,
+                        RichText::parse(&format!("{name} centrode")),
+                        TextSize::Small,
+                    );
+                }
             }
-        }
+        });
     }
 }
 

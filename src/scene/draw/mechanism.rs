@@ -1,7 +1,7 @@
 //! The mechanism layer: frame, crank circle, links, slider and guides.
 
 use super::Ctx;
-use crate::figure::{HATCH_DEPTH, RichText, Role, Shape, TextSize};
+use crate::figure::{HATCH_DEPTH, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::scene::cache::Constructions;
 use crate::scene::canvas::{Canvas, Marker};
@@ -145,20 +145,21 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let h = s.block_half_height;
 
     // The line of stroke (a centre line) and the crank-pin circle.
-    canvas.segment(
+    canvas.centre_line(
         "line-stroke",
-        Role::Auxiliary,
         Point::new(g0.min(-1.15 * r), e),
         Point::new(g1 + 0.1 * r, e),
     );
-    canvas.push(
-        "circle-crank",
-        Role::Curve,
-        Shape::Circle {
-            centre: c,
-            radius: r,
-        },
-    );
+    canvas.with_part(Part::CrankCircle, |canvas| {
+        canvas.push(
+            "circle-crank",
+            Role::Curve,
+            Shape::Circle {
+                centre: c,
+                radius: r,
+            },
+        );
+    });
     canvas.push(
         format!("bearing-{}", ctx.letter(Named::CrankCentre)),
         Role::Frame,
@@ -170,6 +171,35 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
     guides(ctx, canvas);
 
     // Ghost poses first, so the main pose is drawn over them.
+    draw_ghosts(ctx, ghosts, canvas);
+
+    // The slider block about A.
+    let l = s.block_half_length;
+    canvas.push(
+        "block-slider",
+        Role::Link,
+        Shape::Block {
+            points: vec![
+                Point::new(a.x - l, a.y - h),
+                Point::new(a.x + l, a.y - h),
+                Point::new(a.x + l, a.y + h),
+                Point::new(a.x - l, a.y + h),
+            ],
+        },
+    );
+    canvas.segment("link-crank", Role::Link, c, b);
+    canvas.segment("link-rod", Role::Link, b, a);
+    canvas.with_part(Part::Joint, |canvas| {
+        canvas.point(ctx.letter(Named::CrankCentre), c, Marker::Pin, c);
+        canvas.point(ctx.letter(Named::CrankPin), b, Marker::Pin, c);
+        canvas.point(ctx.letter(Named::Slider), a, Marker::Pin, c);
+    });
+}
+
+/// The ghost poses: their links, and their crank pins and cross-heads
+/// numbered from 1 (`pose-1-links`, `point-B1`, `label-B1`, …).
+fn draw_ghosts(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
+    let c = ctx.main.pose().c();
     for (k, g) in ghosts.iter().enumerate() {
         let p = g.pose();
         let n = k + 1;
@@ -197,24 +227,4 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
             );
         }
     }
-
-    // The slider block about A.
-    let l = s.block_half_length;
-    canvas.push(
-        "block-slider",
-        Role::Link,
-        Shape::Block {
-            points: vec![
-                Point::new(a.x - l, a.y - h),
-                Point::new(a.x + l, a.y - h),
-                Point::new(a.x + l, a.y + h),
-                Point::new(a.x - l, a.y + h),
-            ],
-        },
-    );
-    canvas.segment("link-crank", Role::Link, c, b);
-    canvas.segment("link-rod", Role::Link, b, a);
-    canvas.point(ctx.letter(Named::CrankCentre), c, Marker::Pin, c);
-    canvas.point(ctx.letter(Named::CrankPin), b, Marker::Pin, c);
-    canvas.point(ctx.letter(Named::Slider), a, Marker::Pin, c);
 }

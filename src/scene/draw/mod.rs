@@ -21,7 +21,7 @@ use super::canvas::{Canvas, round};
 use super::notation::Named;
 use crate::angle::Angle;
 use crate::figure::{
-    Align, Figure, Hue, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
+    Align, Figure, Hue, PageFromWorld, PageRect, Panel, Part, RichText, Role, Shape, TextSize,
 };
 use crate::figure::{NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Frame, Point, Vector};
@@ -108,13 +108,16 @@ impl Sizes {
     }
 }
 
-/// An arrow drawn with its name: its id and name, tail and head (world
-/// units).
+/// An arrow drawn with its name: its id and name, tail and head, and
+/// where its name is set (world units).
 pub(crate) struct NamedArrow {
     pub id: &'static str,
     pub name: &'static str,
     pub from: Point,
     pub to: Point,
+    /// Its head, or its tail for an arrow that points at what it acts on
+    /// (F_c at the crank pin).
+    pub name_at: Point,
 }
 
 /// Room for an arrow's name beyond its ends, page units.
@@ -436,15 +439,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let (main, transform) = (layout.main, layout.transform);
     let detail = layout.detail;
     let region = detail.map(|d| detail_frame(&d, transform.scale()));
-    let mut canvas = Canvas::new(transform, transform.world_frame(&main));
-    if let (Some(frame), Some(d)) = (region, detail) {
-        // The letters of the constructed points are the detail's, and
-        // with a crank's detail the marks about the crank too.
-        canvas = canvas.quiet(frame);
-        if d.focus == detail::Focus::Crank {
-            canvas = canvas.bare(frame);
-        }
-    }
+    let mut canvas = main_canvas(&layout, region);
     draw_layers(&ctx, &poses, &mut canvas, true);
 
     let mut bottom = main.y + main.height;
@@ -464,16 +459,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
         panels.push(panel);
     }
     let height = bottom + band + mg;
-    if !notes.is_empty() {
-        canvas.push(
-            "note-scales",
-            Role::Label,
-            Shape::Note {
-                corner: Point::new(mg + 4.0, bottom + 4.0),
-                lines: notes,
-            },
-        );
-    }
+    push_notes(&mut canvas, Point::new(mg + 4.0, bottom + 4.0), notes);
 
     let mut evaluations = Evaluations::default();
     for p in &poses {
@@ -642,10 +628,45 @@ fn detail_panel(
     Panel::new("panel-detail", rect, transform, items).clipped()
 }
 
+/// The scene's notes below its drawing, from `corner` down
+/// (`note-scales`, [`Part::Notes`]); nothing without notes.
+fn push_notes(canvas: &mut Canvas, corner: Point, notes: Vec<RichText>) {
+    if notes.is_empty() {
+        return;
+    }
+    canvas.with_part(Part::Notes, |canvas| {
+        let lines = notes;
+        canvas.push("note-scales", Role::Label, Shape::Note { corner, lines });
+    });
+}
+
+/// The main view's canvas: where the `layout` has a detail of the world
+/// `region`, the letters of the constructed points there are the
+/// detail's, and with a crank's detail the marks about the crank too.
+fn main_canvas(layout: &Layout, region: Option<Frame>) -> Canvas {
+    let transform = layout.transform;
+    let canvas = Canvas::new(transform, transform.world_frame(&layout.main));
+    match (region, layout.detail) {
+        (Some(frame), Some(d)) if d.focus == detail::Focus::Crank => {
+            canvas.quiet(frame).bare(frame)
+        }
+        (Some(frame), Some(_)) => canvas.quiet(frame),
+        _ => canvas,
+    }
+}
+
 /// The frame on the main view matching the detail, with its
 /// magnification beside it; the detail's border and caption (drawn by the
-/// main view, so that the detail's clip leaves them whole).
+/// main view, so that the detail's clip leaves them whole). All are
+/// [`Part::DetailMark`]s.
 fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
+    canvas.with_part(Part::DetailMark, |canvas| {
+        detail_marks(canvas, frame, rect, magnification);
+    });
+}
+
+/// [`mark_detail`]'s items.
+fn detail_marks(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
     let (lo, hi) = (frame.min(), frame.max());
     let x = crate::number::short(magnification);
     canvas.push(

@@ -40,7 +40,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
         );
         canvas.label(
             format!("value-{}", v.id),
-            v.to,
+            v.name_at,
             RichText::parse(v.name),
             TextSize::Small,
         );
@@ -60,11 +60,13 @@ pub(crate) fn velocities(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArro
     let cb = b - pose.c();
     if cb.norm() > 0.0 {
         let u = Vector::new(-cb.y, cb.x) / cb.norm() * turn;
+        let to = b + u * world(VC_ARROW);
         out.push(NamedArrow {
             id: "vc",
             name: "*v*_c",
             from: b,
-            to: b + u * world(VC_ARROW),
+            to,
+            name_at: to,
         });
     }
     let vp = pose.position_rate() / pose.mechanism().crank() * turn;
@@ -74,11 +76,13 @@ pub(crate) fn velocities(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArro
         let side = if b.y >= a.y { -1.0 } else { 1.0 };
         // Beyond the guide's hatching, with room for the arrow's head.
         let from = a + Vector::new(0.0, side * (h + world(VP_CLEAR)));
+        let to = from + Vector::new(vp.signum(), 0.0) * world(len.max(MIN_ARROW));
         out.push(NamedArrow {
             id: "vp",
             name: "*v*_p",
             from,
-            to: from + Vector::new(vp.signum(), 0.0) * world(len.max(MIN_ARROW)),
+            to,
+            name_at: to,
         });
     }
     out

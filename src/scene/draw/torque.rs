@@ -129,10 +129,9 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
                 to: f.to,
             },
         );
-        let at = if f.id == "Fc" { f.from } else { f.to };
         canvas.label(
             format!("value-{}", f.id),
-            at,
+            f.name_at,
             RichText::parse(f.name),
             TextSize::Small,
         );
@@ -222,6 +221,7 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
             name: "*F*_c",
             from: tail,
             to: head,
+            name_at: tail,
         });
     }
     let s = &ctx.sizes;
@@ -252,6 +252,7 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
             name: "*F*_p",
             from,
             to,
+            name_at: to,
         });
         // F_s = F_p tan φ: its sense and its length to F_p's scale need
         // only tan φ.
@@ -260,11 +261,13 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
             let uy = Vector::new(0.0, sign * tan_phi.signum());
             let face = a + uy * s.block_half_height;
             let len = (FORCE_ARROW * tan_phi.abs()).clamp(16.0, FORCE_ARROW);
+            let to = face + uy * world(len);
             out.push(NamedArrow {
                 id: "Fs",
                 name: "*F*_s",
                 from: face,
-                to: face + uy * world(len),
+                to,
+                name_at: to,
             });
         }
     }
