@@ -1,6 +1,6 @@
 //! The mechanism layer: frame, crank circle, links, slider and guides.
 
-use super::Ctx;
+use super::LayerCtx;
 use crate::figure::{HATCH_DEPTH, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::scene::cache::Constructions;
@@ -27,7 +27,7 @@ type Span = (f64, f64);
 /// guide (the rod leaves it through its edge on the guide's line, and a
 /// block standing over the bearing, with rods of little more than a
 /// crank near the inner dead centre, keeps its guide there).
-fn openings(ctx: &Ctx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> Vec<Span> {
+fn openings(ctx: &LayerCtx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> Vec<Span> {
     let pose = ctx.main.pose();
     let (c, b, a) = (pose.c(), pose.b(), pose.a());
     let depth = y + side * canvas.world(HATCH_DEPTH);
@@ -94,7 +94,7 @@ fn pieces(whole: Span, mut openings: Vec<Span>) -> Vec<Span> {
 /// its outer side and broken where [`openings`] says; pieces shorter
 /// than [`GUIDE_MIN`] are left out. Ids `guide-upper`, `guide-upper-2`,
 /// … in order along the stroke, each with its `hatch-` twin.
-fn guides(ctx: &Ctx, canvas: &mut Canvas) {
+fn guides(ctx: &LayerCtx, canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let e = m.offset();
     let whole = ctx.sizes.guides(m.crank());
@@ -135,7 +135,7 @@ fn guides(ctx: &Ctx, canvas: &mut Canvas) {
     }
 }
 
-pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     let pose = ctx.main.pose();
@@ -198,7 +198,7 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
 
 /// The ghost poses: their links, and their crank pins and cross-heads
 /// numbered from 1 (`pose-1-links`, `point-B1`, `label-B1`, …).
-fn draw_ghosts(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
+fn draw_ghosts(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let c = ctx.main.pose().c();
     for (k, g) in ghosts.iter().enumerate() {
         let p = g.pose();

@@ -134,13 +134,13 @@ impl NamedArrow {
 }
 
 /// What every layer gets.
-pub(crate) struct Ctx<'a> {
+pub(crate) struct LayerCtx<'a> {
     pub scene: &'a Scene,
     pub main: &'a Constructions,
     pub sizes: Sizes,
 }
 
-impl Ctx<'_> {
+impl LayerCtx<'_> {
     pub fn letter(&self, n: Named) -> &'static str {
         self.scene.notation().letter(n)
     }
@@ -176,7 +176,7 @@ pub(crate) struct Layout {
 
 /// The notes of the scene at the pose of `ctx`: their number of lines
 /// fixes the band below the panels.
-fn notes(ctx: &Ctx) -> Vec<RichText> {
+fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let scene = ctx.scene;
     let mut notes = if scene.has(Layer::Scales) {
         scales::notes(ctx)
@@ -215,7 +215,7 @@ fn band(notes: &[RichText]) -> f64 {
 #[allow(clippy::indexing_slicing)]
 pub(crate) fn own(scene: &Scene) -> Layout {
     let poses = own_poses(scene);
-    let ctx = Ctx {
+    let ctx = LayerCtx {
         scene,
         main: &poses[0],
         sizes: Sizes::new(scene),
@@ -246,7 +246,7 @@ pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
 /// it ends within it or [`HEIGHT_REFITS`] tries are spent (a detail's
 /// size is its own, not the main view's: such a figure may still not fit,
 /// and is refused by the scene).
-fn fit_within(ctx: &Ctx, band: f64) -> Layout {
+fn fit_within(ctx: &LayerCtx, band: f64) -> Layout {
     let page = ctx.scene.page();
     let mut layout = fit(ctx, band);
     let mut reserve = band;
@@ -281,8 +281,8 @@ impl Layout {
 }
 
 /// The layout fitted to the pose of `ctx` with its notes' `band`.
-fn fit(ctx: &Ctx, band: f64) -> Layout {
-    let mut ctx = Ctx {
+fn fit(ctx: &LayerCtx, band: f64) -> Layout {
+    let mut ctx = LayerCtx {
         sizes: Sizes::new(ctx.scene),
         ..*ctx
     };
@@ -305,7 +305,7 @@ fn fit(ctx: &Ctx, band: f64) -> Layout {
 /// once more where the offset's dimension needs room beside the detail's
 /// frame ([`beside_detail`]).
 fn with_detail(
-    ctx: &Ctx,
+    ctx: &LayerCtx,
     band: f64,
     frame: Frame,
     details: impl Fn(f64) -> Option<detail::Detail>,
@@ -342,9 +342,9 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
         .iter()
         .map(|a| Constructions::new(m.pose(*a)))
         .collect();
-    let mut ctxs: Vec<Ctx> = poses
+    let mut ctxs: Vec<LayerCtx> = poses
         .iter()
-        .map(|main| Ctx {
+        .map(|main| LayerCtx {
             scene,
             main,
             sizes: Sizes::new(scene),
@@ -354,7 +354,7 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
     // cannot fail: one context per pose, and a scene has at least one pose
     // (`valid::angles` refuses an empty list).
     #[allow(clippy::expect_used)]
-    let union = |ctxs: &[Ctx]| {
+    let union = |ctxs: &[LayerCtx]| {
         ctxs.iter()
             .map(fit::frame)
             .reduce(|a, b| Frame::new(a.min().inf(&b.min()), a.max().sup(&b.max())))
@@ -420,7 +420,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     // cannot fail: a scene is drawn only once `valid::scene` has passed it,
     // which refuses one without a pose.
     #[allow(clippy::indexing_slicing)]
-    let mut ctx = Ctx {
+    let mut ctx = LayerCtx {
         scene,
         main: &poses[0],
         sizes: Sizes::new(scene),
@@ -488,7 +488,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
 
 /// Every layer of the scene, in order, on `canvas`; the scale notes only
 /// when `notes` (the main view).
-fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bool) {
+fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, main: bool) {
     for layer in ctx.scene.layers() {
         canvas.set_hue(match layer {
             Layer::Velocity | Layer::Motion => Some(Hue::Velocity),
@@ -525,7 +525,7 @@ fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bo
 /// allows and only as tall as what it draws needs (the scene's page
 /// height, less the notes' `band`, is the most it may take), and its map,
 /// fitted to the `world` rectangle.
-fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
+fn main_view(ctx: &LayerCtx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
     let (panel, transform) = main_view_with(ctx, band, world, 0.0);
     let scene = ctx.scene;
     if !(scene.has(Layer::Dimensions) && dimensions::above(scene.mechanism())) {
@@ -546,7 +546,7 @@ fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
 
 /// [`main_view`] with `room` page units more above the drawing, the
 /// panel as much taller.
-fn main_view_with(ctx: &Ctx, band: f64, world: Frame, room: f64) -> (PageRect, PageFromWorld) {
+fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (PageRect, PageFromWorld) {
     let scene = ctx.scene;
     let page = scene.page();
     let mg = page.margin();
@@ -598,7 +598,7 @@ fn detail_frame(d: &detail::Detail, main_scale: f64) -> Frame {
 /// The detail panel showing `frame` below `top`, centred on a page
 /// `width` wide.
 fn detail_panel(
-    ctx: &Ctx,
+    ctx: &LayerCtx,
     poses: &[Constructions],
     d: &detail::Detail,
     frame: &Frame,

@@ -2,7 +2,7 @@
 //! the side thrust.
 
 use super::velocity::basics_e;
-use super::{Ctx, NamedArrow};
+use super::{LayerCtx, NamedArrow};
 use crate::analytic::statics::NG_TORQUE;
 use crate::figure::{Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
@@ -24,7 +24,7 @@ const ARROW_ROOM: f64 = 8.0;
 
 /// The values the figure names by symbol only, for the notes below it:
 /// OM and T, then the forces (or why there is no finite slider force).
-pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
+pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let scene = ctx.scene;
     let tl = ctx.main.torque();
     let (unit, force) = (scene.units().length(), scene.units().force());
@@ -74,7 +74,7 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
 /// is (a unit is a name, nothing is converted), so the figure says where
 /// it came from and how to give the engine's own. `None` for Ng's rig in
 /// millimetres, or any other torque.
-fn borrowed_torque(ctx: &Ctx, t: f64) -> Option<String> {
+fn borrowed_torque(ctx: &LayerCtx, t: f64) -> Option<String> {
     let m = ctx.main.pose().mechanism();
     let units = ctx.scene.units();
     let ngs_rig = m.crank() == 25.0 && m.rod() == 72.0 && units.length().to_string() == "mm";
@@ -97,7 +97,7 @@ fn amount(x: f64, unit: &(impl std::fmt::Display + ?Sized)) -> String {
     }
 }
 
-pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     basics_e(ctx, canvas);
     let scene = ctx.scene;
     let pose = ctx.main.pose();
@@ -206,7 +206,7 @@ pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [
 /// run into the crank's bearing, pushing on the block's far face), and
 /// the side thrust F_s from its top or bottom (to F_p's scale, within
 /// limits). None at a dead centre, where the slider force is not finite.
-pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
+pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let t = ctx.scene.torque();
