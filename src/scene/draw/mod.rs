@@ -131,6 +131,23 @@ impl NamedArrow {
         let room = d / d.norm() * world(NAME_ROOM);
         [self.from - room, self.to + room]
     }
+
+    /// Draws the arrow (`{kind}-{id}`, a force's stroke in the colour of
+    /// `hue`) and its name (`value-{id}`).
+    pub(crate) fn draw(&self, canvas: &mut Canvas, kind: &str, hue: Hue) {
+        let arrow = Shape::Arrow {
+            from: self.from,
+            to: self.to,
+        };
+        canvas.push_hued(format!("{kind}-{}", self.id), Role::Force, hue, arrow);
+        let name = RichText::parse(self.name);
+        canvas.label(
+            format!("value-{}", self.id),
+            self.name_at,
+            name,
+            TextSize::Small,
+        );
+    }
 }
 
 /// What every layer gets.

@@ -29,21 +29,7 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         if !(canvas.contains(v.from) && canvas.contains(v.to)) {
             continue;
         }
-        canvas.push_hued(
-            format!("velocity-{}", v.id),
-            Role::Force,
-            Hue::Velocity,
-            Shape::Arrow {
-                from: v.from,
-                to: v.to,
-            },
-        );
-        canvas.label(
-            format!("value-{}", v.id),
-            v.name_at,
-            RichText::parse(v.name),
-            TextSize::Small,
-        );
+        v.draw(canvas, "velocity", Hue::Velocity);
     }
 }
 

@@ -4,7 +4,7 @@
 use super::velocity::basics_e;
 use super::{LayerCtx, NamedArrow};
 use crate::analytic::statics::NG_TORQUE;
-use crate::figure::{Item, RichText, Role, Shape, TextSize};
+use crate::figure::{Hue, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
 use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
@@ -121,20 +121,7 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         if !canvas.contains(f.from) {
             continue;
         }
-        canvas.push(
-            format!("force-{}", f.id),
-            Role::Force,
-            Shape::Arrow {
-                from: f.from,
-                to: f.to,
-            },
-        );
-        canvas.label(
-            format!("value-{}", f.id),
-            f.name_at,
-            RichText::parse(f.name),
-            TextSize::Small,
-        );
+        f.draw(canvas, "force", Hue::Force);
     }
 
     // The transmission angle β at the crank pin, between its two links.
