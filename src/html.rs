@@ -4,7 +4,7 @@
 //! templates, so every text is escaped. Every page carries the faces it
 //! is set in ([`fonts`]).
 
-pub(crate) mod fonts;
+pub(crate) mod font_face;
 
 use crate::figure::{Font, RichText};
 use maud::{DOCTYPE, Markup, PreEscaped, html};
@@ -38,7 +38,7 @@ pub(crate) fn document_covering(title: &str, style: &str, body: Markup, also: &s
         .into_iter()
         .filter(|f| *f == Font::default() || body.contains(f.family()) || also.contains(f.family()))
         .collect();
-    let faces = fonts::font_faces(&format!("{title}{body}{also}"), &fonts);
+    let faces = font_face::font_faces(&format!("{title}{body}{also}"), &fonts);
     html! {
         (DOCTYPE)
         html lang="en" {

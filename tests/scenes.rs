@@ -290,3 +290,38 @@ fn a_held_view_needs_one_to_3960_angles() {
     assert!(scene.frames(&[]).is_err());
     assert!(scene.frames(&many).is_err());
 }
+
+#[test]
+fn a_scenes_items_say_what_they_are_by_their_parts() {
+    use slider_crank::figure::{Panel, Part};
+    let figure = FigureName::Fig66Kisch.scene().unwrap().figure().unwrap();
+    let [main, detail] = figure.panels() else {
+        panic!("a main view and a detail: {:?}", figure.panels().len());
+    };
+    let ids = |panel: &Panel, part: Part| -> Vec<String> {
+        let of = panel.items().iter().filter(|i| i.part == part);
+        of.map(|i| i.id.clone()).collect()
+    };
+    assert_eq!(ids(main, Part::CentreLine), ["line-stroke"]);
+    assert_eq!(ids(detail, Part::CentreLine), ["detail-line-stroke"]);
+    assert_eq!(ids(main, Part::CrankCircle), ["circle-crank"]);
+    assert_eq!(
+        ids(main, Part::Joint),
+        [
+            "point-C", "label-C", "point-B", "label-B", "point-A", "label-A"
+        ]
+    );
+    assert_eq!(
+        ids(main, Part::DetailMark),
+        [
+            "detail-frame",
+            "label-detail",
+            "detail-border",
+            "detail-caption"
+        ]
+    );
+    assert!(ids(main, Part::Notes).is_empty());
+    let figure = FigureName::Fig67Example.scene().unwrap().figure().unwrap();
+    let main = figure.panels().first().unwrap();
+    assert_eq!(ids(main, Part::Notes), ["note-scales"]);
+}

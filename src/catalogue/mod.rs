@@ -10,8 +10,8 @@ pub(crate) mod diagrams;
 mod name;
 mod options;
 mod parse;
-mod print;
 mod scene_file;
+mod scene_toml;
 mod source;
 
 pub use name::FigureName;

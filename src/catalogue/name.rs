@@ -2,7 +2,7 @@
 //! drawn by a [`Scene`], and diagrams (plots against θ, time or position,
 //! polar diagrams, centrodes, Ng's graphs).
 
-use super::{FigureOptions, diagrams, print};
+use super::{FigureOptions, diagrams, scene_toml};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
@@ -471,8 +471,8 @@ impl FigureName {
     /// the command line). See docs/scene-format.md.
     pub fn scene_toml(&self) -> String {
         match self.scene() {
-            Some(scene) => print::scene(*self, &scene),
-            None => print::diagram(*self),
+            Some(scene) => scene_toml::scene(*self, &scene),
+            None => scene_toml::diagram(*self),
         }
     }
 

@@ -12,17 +12,17 @@ mod font;
 #[rustfmt::skip]
 mod glyphs;
 mod model;
+mod page_length;
 mod path;
-mod size;
 mod style;
 mod text;
 mod transform;
 
 pub use crate::error::is_noncharacter;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
-pub use model::{Align, Dash, Figure, Hue, Item, Panel, Role, Shape, Symbol, TextSize};
+pub use model::{Align, Dash, Figure, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize};
+pub use page_length::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use path::{Path, PathBuilder, PathSegment};
-pub use size::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use style::Style;
 pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, Pen, RIGHT_ANGLE};
 pub use text::{

@@ -63,6 +63,36 @@ impl Role {
     }
 }
 
+/// What an item is, where code tells it apart beyond the stroke of its
+/// [`Role`]: the SVG writer, the handout and the catalogue read this,
+/// never the item's id, which is a name for the SVG's readers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[non_exhaustive]
+pub enum Part {
+    /// Nothing more than its role says.
+    #[default]
+    Plain,
+    /// A centre line (the line of stroke): written long dash and dot,
+    /// and broken where a letter sits on it (an auxiliary line).
+    CentreLine,
+    /// The circle the crank pin runs on.
+    CrankCircle,
+    /// One of the mechanism's joints (crank centre, crank pin,
+    /// cross-head): its pin or its letter.
+    Joint,
+    /// An enlarged detail's marks on the main view: the frame round the
+    /// region it enlarges, its border and its caption.
+    DetailMark,
+    /// The fixed centrode (the instantaneous centre's path in the frame),
+    /// a branch of it or its name.
+    FixedCentrode,
+    /// The moving centrode (the instantaneous centre's path in the rod),
+    /// a branch of it or its name.
+    MovingCentrode,
+    /// A scene's notes below its drawing (scales, offset).
+    Notes,
+}
+
 /// How large a text is set.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum TextSize {
@@ -302,6 +332,9 @@ pub struct Item {
     pub dash: Option<Dash>,
     /// What the line stands for, if colour should say it.
     pub hue: Option<Hue>,
+    /// What the item is, where code tells it apart ([`Part::Plain`] for
+    /// most).
+    pub part: Part,
 }
 
 impl Item {
@@ -313,7 +346,14 @@ impl Item {
             shape,
             dash: None,
             hue: None,
+            part: Part::Plain,
         }
+    }
+
+    /// The same item marked as `part`.
+    pub fn as_part(mut self, part: Part) -> Self {
+        self.part = part;
+        self
     }
 
     /// The same item marked as standing for `hue`.
@@ -559,7 +599,9 @@ impl Figure {
     /// `<title>`. A second title replaces the first.
     pub fn with_title(mut self, title: Title) -> Self {
         if self.title.is_some() {
-            self.panels.retain(|p| p.id() != "panel-title");
+            // The title's band is the last panel: a figure gains panels
+            // only when made and by its title.
+            self.panels.pop();
             self.height -= TITLE_BAND;
         }
         let text = title.rich();
@@ -599,5 +641,43 @@ impl Figure {
     pub fn with_font(mut self, font: Font) -> Self {
         self.font = font;
         self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_second_title_replaces_the_first_and_keeps_the_drawing() {
+        let rect = PageRect::new(0.0, 0.0, 400.0, 300.0);
+        let dot = Item::new(
+            "point-A",
+            Role::Link,
+            Shape::Pin {
+                centre: Point::origin(),
+            },
+        );
+        let drawing = Panel::new("panel-main", rect, PageFromWorld::identity(), vec![dot]);
+        let plain = Figure::new(
+            "f",
+            400.0,
+            300.0,
+            Style::Textbook,
+            0.1,
+            vec![drawing],
+            Map::new(),
+        );
+        let title = |t: &str| Title::new(t).unwrap();
+        let once = plain.clone().with_title(title("First"));
+        let twice = once.clone().with_title(title("Second"));
+        assert_eq!(twice.height(), once.height());
+        assert_eq!(twice.panels().len(), 2);
+        assert_eq!(twice.panels().first(), plain.panels().first());
+        let written = twice.panels().last().and_then(|p| p.items().first());
+        assert!(
+            matches!(written.map(|i| &i.shape), Some(Shape::Text { text, .. }) if text.plain() == "Second"),
+            "{written:?}"
+        );
     }
 }

@@ -4,7 +4,7 @@
 use super::Handout;
 use crate::catalogue::FigureOptions;
 use crate::error::Result;
-use crate::figure::{Figure, Panel, Role};
+use crate::figure::{Figure, Panel, Part, Role};
 use crate::render::{fmt, to_svg};
 use crate::{catalogue::FigureName, scene::Layer};
 
@@ -57,18 +57,13 @@ pub(super) fn only_the_mechanism(fitted: &Figure) -> Figure {
     let Some(panel) = fitted.panels().first() else {
         return fitted.clone();
     };
-    let keep = |item: &crate::figure::Item| {
-        let id = item.id.as_str();
-        if id.starts_with("detail-") {
-            return false;
-        }
-        match item.role {
-            Role::Frame | Role::Link => true,
-            Role::Curve => id == "circle-crank",
-            Role::Auxiliary => id.starts_with("line-stroke"),
-            Role::Label => ["label-A", "label-B", "label-C"].contains(&id),
-            _ => false,
-        }
+    let keep = |item: &crate::figure::Item| match (item.part, item.role) {
+        (Part::DetailMark, _) => false,
+        (_, Role::Frame | Role::Link) => true,
+        (part, Role::Curve) => part == Part::CrankCircle,
+        (part, Role::Auxiliary) => part == Part::CentreLine,
+        (part, Role::Label) => part == Part::Joint,
+        _ => false,
     };
     let items = panel.items().iter().filter(|i| keep(i)).cloned().collect();
     let rect = *panel.rect();

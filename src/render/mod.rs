@@ -2,28 +2,28 @@
 //! element writer), SVG to PNG (resvg, with the `png` feature) and to vector PDF
 //! (with the `pdf` feature); files are written whole or not at all.
 
+mod atomic;
 mod element;
+mod file_format;
 #[cfg(any(feature = "png", feature = "pdf"))]
-mod fonts;
-mod format;
+mod font_database;
 mod labels;
-mod output;
 #[cfg(feature = "pdf")]
 mod pdf;
 mod pending;
 #[cfg(feature = "png")]
 mod png;
 mod save;
-mod sizes;
 mod svg;
+mod symbol_sizes;
 
 pub use crate::number::plain;
 pub use crate::number::{GRID, fmt};
+pub use atomic::{same_file, write_atomic, write_atomic_with, write_protected};
 pub(crate) use element::{Element, Node, escape_text};
+pub use file_format::FileFormat;
 #[cfg(any(feature = "png", feature = "pdf"))]
-pub use fonts::font_database;
-pub use format::FileFormat;
-pub use output::{same_file, write_atomic, write_atomic_with, write_protected};
+pub use font_database::font_database;
 #[cfg(feature = "pdf")]
 pub use pdf::{POINTS_PER_UNIT, to_pdf};
 pub use pending::{Pending, make_pending, remove_pending, uninterrupted};

@@ -13,7 +13,7 @@
 //! The same SVG gives the same bytes: no date, objects in a fixed order,
 //! subset tags derived from the glyphs used.
 
-use super::fonts::font_database;
+use super::font_database::font_database;
 use crate::error::{Error, Result};
 use pdf_writer::types::{
     CidFontType, FontFlags, LineCapStyle, LineJoinStyle, SystemInfo, UnicodeCmap,

@@ -1,7 +1,7 @@
 //! SVG to PNG through resvg, with the bundled faces only: no system font
 //! is ever loaded, so the same SVG gives the same bytes on every machine.
 
-use super::fonts::font_database;
+use super::font_database::font_database;
 use crate::error::{Error, Result};
 use resvg::tiny_skia;
 use std::sync::Arc;
@@ -134,7 +134,7 @@ mod tests {
     use super::*;
     use crate::catalogue::FigureOptions;
     use crate::figure::{Font, FontStyle};
-    use crate::render::fonts::load_bundled;
+    use crate::render::font_database::load_bundled;
     use crate::render::to_svg;
     use crate::{catalogue::FigureName, figure::Style};
     use usvg::fontdb::Source;

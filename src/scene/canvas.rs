@@ -1,8 +1,10 @@
 //! Collects a panel's primitives while the layers draw: clips lines to the
 //! panel's world frame, keeps ids unique, and shows points that fall off
-//! the page by arrows at its edge.
+//! the page by arrows at its edge. The scene's layers and the catalogue's
+//! linkage sketches draw with it alike (the frame's bearings, hatching and
+//! guides are in [`super::ground`]).
 
-use crate::figure::{Hue, Item, PageFromWorld, RichText, Role, Shape, TextSize};
+use crate::figure::{Hue, Item, PageFromWorld, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Direction, Frame, Intersection, Point, Vector};
 use serde_json::{Map, Value, json};
 use std::collections::BTreeSet;
@@ -23,6 +25,8 @@ pub(crate) enum Marker {
     Dot,
 }
 
+/// A panel's items being drawn in one world frame with one map to the
+/// page.
 pub(crate) struct Canvas {
     transform: PageFromWorld,
     frame: Frame,
@@ -31,6 +35,9 @@ pub(crate) struct Canvas {
     points: Map<String, Value>,
     /// Put before every id (a detail panel's `detail-`).
     prefix: &'static str,
+    /// Put after every id (a sketch's panel, `-a` in panel (a) of
+    /// Fig. 60, so that several sketches share one plot).
+    suffix: &'static str,
     /// Whether points off the frame are shown by arrows at its edge (not
     /// in a detail, which shows only its region).
     edge_arrows: bool,
@@ -42,6 +49,8 @@ pub(crate) struct Canvas {
     bare: Option<Frame>,
     /// What the lines drawn now stand for (set per layer).
     hue: Option<Hue>,
+    /// What the items drawn now are ([`Canvas::with_part`]).
+    part: Part,
 }
 
 impl Canvas {
@@ -53,10 +62,12 @@ impl Canvas {
             ids: BTreeSet::new(),
             points: Map::new(),
             prefix: "",
+            suffix: "",
             edge_arrows: true,
             quiet: None,
             bare: None,
             hue: None,
+            part: Part::Plain,
         }
     }
 
@@ -78,6 +89,20 @@ impl Canvas {
         let added = self.push(id, role, shape);
         self.hue = old;
         added
+    }
+
+    /// Draws what `draw` adds as `part` (the writer, the handout and the
+    /// catalogue tell such items apart by it, never by their ids).
+    pub(crate) fn with_part(&mut self, part: Part, draw: impl FnOnce(&mut Self)) {
+        let old = std::mem::replace(&mut self.part, part);
+        draw(self);
+        self.part = old;
+    }
+
+    /// A centre line (the line of stroke) from `a` to `b`, clipped as
+    /// [`Canvas::segment`]: auxiliary, written long dash and dot.
+    pub(crate) fn centre_line(&mut self, id: impl Into<String>, a: Point, b: Point) {
+        self.with_part(Part::CentreLine, |c| c.segment(id, Role::Auxiliary, a, b));
     }
 
     /// Leaves the dots and letters of constructed points inside `region`
@@ -105,6 +130,13 @@ impl Canvas {
     pub(crate) fn detail(mut self, prefix: &'static str) -> Self {
         self.prefix = prefix;
         self.edge_arrows = false;
+        self
+    }
+
+    /// The canvas of one of several sketches in a plot: every id gets
+    /// `suffix`.
+    pub(crate) fn suffixed(mut self, suffix: &'static str) -> Self {
+        self.suffix = suffix;
         self
     }
 
@@ -138,7 +170,8 @@ impl Canvas {
             return false;
         }
         self.ids.insert(id.clone());
-        let mut item = Item::new(format!("{}{id}", self.prefix), role, shape);
+        let mut item = Item::new(format!("{}{id}{}", self.prefix, self.suffix), role, shape)
+            .as_part(self.part);
         if let Some(h) = self.hue
             && !matches!(role, Role::Link | Role::Frame | Role::Label)
         {
@@ -146,6 +179,18 @@ impl Canvas {
         }
         self.items.push(item);
         true
+    }
+
+    /// Adds a ready-made item as [`Canvas::push`] does (its dash, hue and
+    /// part are the canvas's); a label only when its anchor is on the
+    /// frame, as [`Canvas::label`].
+    pub(crate) fn push_item(&mut self, item: Item) {
+        if let Shape::Label { anchor, .. } = &item.shape
+            && !self.contains(*anchor)
+        {
+            return;
+        }
+        self.push(item.id, item.role, item.shape);
     }
 
     pub(crate) fn contains(&self, p: Point) -> bool {
@@ -218,11 +263,7 @@ impl Canvas {
         let quiet = marker == Marker::Dot && self.quiet.is_some_and(|f| f.contains(p));
         if quiet {
         } else if self.contains(p) {
-            match marker {
-                Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
-                Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
-            };
-            self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+            self.mark(name, p, marker, letter);
         } else if !self.edge_arrows {
         } else if let Some((_, edge)) = self.frame.clip_segment(from, p) {
             let dir = p - from;
@@ -232,6 +273,93 @@ impl Canvas {
                 self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
             }
         }
+    }
+
+    /// A point's marker (`point-{name}`) and its letter (`label-{name}`).
+    fn mark(&mut self, name: &str, p: Point, marker: Marker, letter: RichText) {
+        let key = format!("point-{name}");
+        match marker {
+            Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
+            Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
+        };
+        self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+    }
+
+    /// A point lettered `markup` (a sketch's, which records no metadata):
+    /// its marker and letter when on the frame, else an arrow at the
+    /// frame's edge on the line from `from` (a point on the frame) towards
+    /// it, lettered at its tail, where the arrow fits between `from` and
+    /// the edge (nothing where it does not).
+    pub(crate) fn lettered(
+        &mut self,
+        name: &str,
+        p: Point,
+        markup: &str,
+        marker: Marker,
+        from: Point,
+    ) {
+        if self.contains(p) {
+            self.mark(name, p, marker, RichText::parse(markup));
+        } else if let Some((_, edge)) = self.frame.clip_segment(from, p)
+            && (p - from).norm() > 0.0
+        {
+            let u = (p - from).normalize();
+            if let Some(tail) = self.edge_arrow_after(format!("offpage-{name}"), from, edge, u) {
+                self.label(
+                    format!("label-{name}"),
+                    tail,
+                    RichText::parse(markup),
+                    TextSize::Letter,
+                );
+            }
+        }
+    }
+
+    /// A point at infinity in the direction `u` (a sketch's, which records
+    /// no metadata): an arrow at the frame's edge on the ray from `from`,
+    /// lettered `markup` "at ∞", where it fits between `from` and the edge;
+    /// nothing for a zero `u`.
+    pub(crate) fn lettered_at_infinity(
+        &mut self,
+        name: &str,
+        from: Point,
+        u: Vector,
+        markup: &str,
+    ) {
+        if u.norm() == 0.0 {
+            return;
+        }
+        let u = u.normalize();
+        if let Some((_, edge)) = self.frame.clip_ray(from, u)
+            && let Some(tail) = self.edge_arrow_after(format!("infinity-{name}"), from, edge, u)
+        {
+            let letter = RichText::parse(&format!("{markup} at ∞"));
+            self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
+        }
+    }
+
+    /// The head and tail of an arrow of `length` page units along the unit
+    /// `u` that ends just inside the frame at `edge`.
+    fn edge_ends(&self, edge: Point, u: Vector, length: f64) -> (Point, Point) {
+        let head = edge - u * self.world(EDGE_GAP);
+        (head, head - u * self.world(length))
+    }
+
+    /// An [`EDGE_ARROW`] long arrow along the unit `u` that ends just
+    /// inside the frame at `edge`, if its tail is not behind `from`;
+    /// returns its tail.
+    fn edge_arrow_after(
+        &mut self,
+        id: String,
+        from: Point,
+        edge: Point,
+        u: Vector,
+    ) -> Option<Point> {
+        let (_, tail) = self.edge_ends(edge, u, EDGE_ARROW);
+        if (tail - from).dot(&u) < 0.0 {
+            return None;
+        }
+        Some(self.edge_arrow(id, edge, u, EDGE_ARROW))
     }
 
     /// An arrow of `length` page units along the unit `u` that ends just
@@ -244,8 +372,7 @@ impl Canvas {
         u: Vector,
         length: f64,
     ) -> Point {
-        let head = edge - u * self.world(EDGE_GAP);
-        let tail = head - u * self.world(length);
+        let (head, tail) = self.edge_ends(edge, u, length);
         self.push(
             id,
             Role::Construction,
@@ -274,7 +401,7 @@ impl Canvas {
             return;
         }
         if let Some((_, edge)) = self.frame.clip_ray(through, u) {
-            let head = edge - u * self.world(EDGE_GAP);
+            let (head, _) = self.edge_ends(edge, u, EDGE_ARROW);
             if (head - through).dot(&u) > 0.0 {
                 let tail = self.edge_arrow(id, edge, u, EDGE_ARROW);
                 self.label(

@@ -14,13 +14,15 @@ mod cache;
 mod canvas;
 mod draw;
 mod layer;
+mod linkage;
 mod notation;
 pub(crate) mod valid;
 
 pub use cache::Evaluations;
-pub(crate) use canvas::round;
-pub(crate) use draw::offset_note;
+pub(crate) use canvas::{Canvas, Marker, round};
+pub(crate) use draw::{offset_note, torque_arrow};
 pub use layer::Layer;
+pub(crate) use linkage::{BEARING_REACH, PIN_CLEAR, Seg, Slot};
 pub use notation::Notation;
 
 use crate::construct::CouplerPoint;

@@ -13,7 +13,7 @@ use super::{
 };
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, NOTE_LINE, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, NOTE_LINE, Part, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
 use crate::{angle::Angle, mechanism::Pose};
 
@@ -241,22 +241,28 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64) {
     let b = pose.b();
     let cg = -pose.position_acceleration();
     let u = (b - c) / r;
-    plot.push(Item::new(
-        "circle-crank",
-        Role::Auxiliary,
-        Shape::Circle {
-            centre: c,
-            radius: r,
-        },
-    ));
-    plot.push(Item::new(
-        "line-stroke",
-        Role::Auxiliary,
-        Shape::Polyline {
-            points: vec![Point::new(-1.05 * r, 0.0), Point::new(1.3 * reach, 0.0)],
-            closed: false,
-        },
-    ));
+    plot.push(
+        Item::new(
+            "circle-crank",
+            Role::Auxiliary,
+            Shape::Circle {
+                centre: c,
+                radius: r,
+            },
+        )
+        .as_part(Part::CrankCircle),
+    );
+    plot.push(
+        Item::new(
+            "line-stroke",
+            Role::Auxiliary,
+            Shape::Polyline {
+                points: vec![Point::new(-1.05 * r, 0.0), Point::new(1.3 * reach, 0.0)],
+                closed: false,
+            },
+        )
+        .as_part(Part::CentreLine),
+    );
     plot.push(Item::new(
         "link-crank",
         Role::Link,

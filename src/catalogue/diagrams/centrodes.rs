@@ -16,7 +16,7 @@
 use super::{Ctx, Sheet, short};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, Role};
+use crate::figure::{Dash, Figure, Item, PageRect, Panel, Part, Role};
 use crate::geom::Point;
 use crate::scene::Layer;
 
@@ -45,19 +45,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let panel = scene.figure()?.panels()[0].clone();
     let r = *panel.rect();
     let area = PageRect::new(r.x, r.y, r.width, r.height + band);
-    let items: Vec<Item> = panel
-        .items()
-        .iter()
-        // The offset's caption line joins the sheet's notes.
-        .filter(|i| !i.id.starts_with("label-centrode") && i.id != "note-scales")
-        .map(|i| {
-            if i.id.starts_with("curve-centrode-moving") {
-                Item::new(i.id.clone(), Role::Curve, i.shape.clone()).dashed(Dash::Dotted)
-            } else {
-                i.clone()
-            }
-        })
-        .collect();
+    let items = drawn(&panel);
     let mut plot = Plot::with_map(
         "centrodes",
         area,
@@ -79,7 +67,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Dash::Dotted,
     );
     let legend = plot.finish();
-    let panel = crate::figure::Panel::new(panel.id(), *panel.rect(), *panel.transform(), items)
+    let panel = Panel::new(panel.id(), *panel.rect(), *panel.transform(), items)
         .with_items(legend.items().iter().cloned());
     sheet.panel(panel);
     let top = area.y + area.height + 2.0;
@@ -97,4 +85,27 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     lines.extend(offset);
     sheet.notes(Point::new(20.0, top), &lines);
     Ok(sheet.finish())
+}
+
+/// The scene's items as this figure draws them: the centrodes' names give
+/// way to the legend, the offset's caption line joins the sheet's notes,
+/// and the moving centrode is dotted.
+fn drawn(panel: &Panel) -> Vec<Item> {
+    panel
+        .items()
+        .iter()
+        .filter(|i| {
+            let centrode = matches!(i.part, Part::FixedCentrode | Part::MovingCentrode);
+            !(centrode && i.role == Role::Label) && i.part != Part::Notes
+        })
+        .map(|i| {
+            if i.part == Part::MovingCentrode {
+                Item::new(i.id.clone(), Role::Curve, i.shape.clone())
+                    .dashed(Dash::Dotted)
+                    .as_part(i.part)
+            } else {
+                i.clone()
+            }
+        })
+        .collect()
 }

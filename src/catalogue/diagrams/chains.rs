@@ -9,14 +9,14 @@
 //! the cylindric chain; (c) is today's engine. The slot radius is
 //! [`slot_radius`] of the mechanism.
 
-use super::sketch::{BEARING_REACH, Sketch, Slot};
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, CylindricChain};
 use crate::diagram::Plot;
 use crate::error::{Error, Result};
-use crate::figure::{Align, Figure, RichText, Role, Shape, TextSize};
+use crate::figure::{Align, Figure, Item, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::number::plain;
+use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
 
@@ -156,17 +156,19 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             Point::new(x0 - pad + dx.x, shown.min().y),
             Point::new(x0 + width + pad + dx.x, shown.max().y),
         );
-        let mut s = Sketch::new(map, frame, suffix);
+        let mut s = Canvas::new(map, frame).suffixed(suffix);
         let c = Point::origin() + dx;
         // The crank circle and the crank in every panel.
-        s.push(
-            "circle-crank",
-            Role::Curve,
-            Shape::Circle {
-                centre: c,
-                radius: r,
-            },
-        );
+        s.with_part(Part::CrankCircle, |s| {
+            s.push(
+                "circle-crank",
+                Role::Curve,
+                Shape::Circle {
+                    centre: c,
+                    radius: r,
+                },
+            );
+        });
         let (b, a, key) = match k {
             0 => (rotate(qpose.b()) + dx, rotate(qpose.a()) + dx, "a"),
             1 => {
@@ -194,10 +196,10 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 s.link("lever", vec![o, a]);
                 s.link("frame", vec![c, o]);
                 let avoid = [(c, b), (b, a), (o, a)];
-                let ends = super::sketch::PIN_CLEAR;
+                let ends = PIN_CLEAR;
                 s.hatch_link("frame", c, o, &avoid, ends);
                 s.pin("A", a);
-                s.point("O-cd", o, "*O*_{cd}", true, c);
+                s.lettered("O-cd", o, "*O*_{cd}", Marker::Pin, c);
                 s.letter("link-c", mid(o, a), "*c*", TextSize::Letter);
                 s.letter("link-d", mid(c, o), "*d*", TextSize::Letter);
                 let (sin, cos) = turn.to_radians().sin_cos();
@@ -255,17 +257,23 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                     Intersection::Point(o) => {
                         let o = o + dx;
                         s.segment("line-radius", Role::Auxiliary, o, a);
-                        s.point("O-cd", o, "*O*_{cd}", false, c);
+                        s.lettered("O-cd", o, "*O*_{cd}", Marker::Dot, c);
                     }
-                    _ => s.at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}"),
+                    _ => s.lettered_at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}"),
                 }
                 centres.insert(key.into(), ChainCentres::of_cylindric(&pose).to_json());
             }
         }
+        for item in s.finish().0 {
+            plot.push(item);
+        }
+        // The caption's lines after the sketch (its further lines share
+        // one id, which the canvas would draw once).
         let cx = x0 + 0.5 * width + dx.x;
         for (i, line) in captions.get(k).into_iter().flatten().enumerate() {
-            s.push(
-                if i == 0 { "caption" } else { "caption-more" },
+            let id = if i == 0 { "caption" } else { "caption-more" };
+            plot.push(Item::new(
+                format!("{id}{suffix}"),
                 Role::Label,
                 Shape::Text {
                     at: Point::new(cx, shown.min().y),
@@ -274,10 +282,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                     align: Align::Middle,
                     size: TextSize::Small,
                 },
-            );
-        }
-        for item in s.finish() {
-            plot.push(item);
+            ));
         }
     }
 

@@ -15,7 +15,7 @@
 use super::{Ctx, Sheet, positive_mass, short, sig};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Dash, Figure, Item, PageRect, Part, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Frame, Point, Vector};
 
 /// An arrow shorter than this fraction of its panel's crank is left out
@@ -187,7 +187,8 @@ fn pair_plot(ctx: &Ctx, pair: &Pair, rect: PageRect, caption: &str) -> Result<Pl
             Point::new(-1.3 * f * side, 0.0),
             Point::new(2.25 * f * side, 0.0),
         )
-        .dashed(Dash::DashDot),
+        .dashed(Dash::DashDot)
+        .as_part(Part::CentreLine),
     );
     let (d, r) = (o + pair.direct(), o + pair.reverse());
     let least = SHORTEST * f;
@@ -273,7 +274,8 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: PageRect) -> Result
             Point::new(lo - 0.1 * span, 0.0),
             Point::new(hi + 0.1 * span, 0.0),
         )
-        .dashed(Dash::DashDot),
+        .dashed(Dash::DashDot)
+        .as_part(Part::CentreLine),
     );
     let pt = |x: f64, y: f64| Point::new(x, y);
     let items = arrow("sum-primary", pt(0.0, 0.0), pt(a, 0.0), "primary", least)

@@ -22,7 +22,7 @@ use crate::dynamics::{Engine, EnginePose};
 use crate::error::Result;
 use crate::figure::{Figure, Item, PageRect, Panel, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
-use crate::scene::Layer;
+use crate::scene::{Layer, torque_arrow};
 
 /// Height given to the scene of the mechanism, page units (it ends
 /// shorter when the drawing is flat, and grows by an enlarged detail).
@@ -36,9 +36,6 @@ const NOTES: f64 = 64.0;
 
 /// Radius of the crank effort's arc arrow about C, page units.
 const TORQUE_RADIUS: f64 = 30.0;
-
-/// What the arc arrow of the crank effort turns through, radians.
-const TORQUE_SWEEP: f64 = 4.4;
 
 /// Room kept for an arrow's name and between arrows, page units.
 const ROOM: f64 = 12.0;
@@ -153,7 +150,7 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
         };
         Point::new(x, pose.a().y)
     });
-    items.extend(torque_arrow(pose.c(), block, f.at.crank_effort, scale));
+    items.extend(torque_arc(pose.c(), block, f.at.crank_effort, scale));
     sheet.panel(main.clone().with_items(items));
     for detail in panels {
         sheet.panel(detail.clone());
@@ -244,54 +241,20 @@ fn inertia_arrow(
     ]
 }
 
-/// The crank effort `t` as an arc arrow about the crank centre `c` in its
-/// sense, lettered T in the arc's gap: below C (above it for a clockwise
-/// effort), or where the slider's block comes within the arc's reach
-/// (`block`, its nearest point, a short rod near the inner dead centre)
-/// the gap faces the block and T goes beside the arc's middle. Nothing at
-/// a dead centre, where T = 0.
-fn torque_arrow(c: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
+/// The crank effort `t` as the scene's torque arrow about the crank
+/// centre `c` ([`torque_arrow`]), its gap facing the slider's block where
+/// the block comes within the arc's reach (`block`, its nearest point, a
+/// short rod near the inner dead centre). Nothing at a dead centre, where
+/// T = 0.
+fn torque_arc(c: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
     if t == 0.0 || scale.is_nan() || scale <= 0.0 {
         return Vec::new();
     }
     let radius = TORQUE_RADIUS / scale;
-    let turn = t.signum();
-    let sweep = turn * TORQUE_SWEEP;
     let gap = block
         .filter(|b| (b - c).norm() < radius + ROOM / scale)
         .map(|b| (b.y - c.y).atan2(b.x - c.x));
-    let (start, mid) = match gap {
-        Some(g) => {
-            let start = g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI);
-            (start, start + 0.5 * sweep)
-        }
-        None => (
-            -0.9 * turn,
-            -0.9 * turn + 0.5 * sweep + std::f64::consts::PI,
-        ),
-    };
-    vec![
-        Item::new(
-            "torque-T",
-            Role::Force,
-            Shape::Arc {
-                centre: c,
-                radius,
-                start,
-                sweep,
-                arrow: true,
-            },
-        ),
-        Item::new(
-            "value-T",
-            Role::Label,
-            Shape::Label {
-                anchor: c + Vector::new(mid.cos(), mid.sin()) * radius,
-                text: RichText::italic("T"),
-                size: TextSize::Small,
-            },
-        ),
-    ]
+    torque_arrow(c, t, radius, gap).to_vec()
 }
 
 /// (b) The triangle of forces at the cross-head: F_i = F_Q + F_N, to its

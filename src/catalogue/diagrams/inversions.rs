@@ -12,7 +12,6 @@
 //! shows every place the moving links reach over a turn, so that the scale
 //! does not change with θ.
 
-use super::sketch::{PIN_CLEAR, Seg, Sketch, Slot};
 use super::{Ctx, Sheet, short};
 use crate::chain::{Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
@@ -20,6 +19,7 @@ use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Figure, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
+use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
 
@@ -197,7 +197,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     let map = *plot.map();
     let (lh, hh) = super::chains::block_on_page((lh, hh), map.scale());
     let shown = map.world_frame(&plot.area());
-    let mut s = Sketch::new(map, shown, "");
+    let mut s = Canvas::new(map, shown);
     let q = parts(&m, &pose);
     let (c, b, a) = (q.c, q.b, q.a);
     let mid = |p: Point, q: Point| Point::from((p.coords + q.coords) * 0.5);
@@ -261,7 +261,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
                 half_height: hh,
                 block: (pose.engine_pose().a().x, lh),
             };
-            s.segment("line-stroke", Role::Auxiliary, t - u * r, q.f);
+            s.centre_line("line-stroke", t - u * r, q.f);
             s.guides("stroke", &slot, c, (b, a));
             s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
         }
@@ -349,7 +349,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     // B = O_ab, A = O_bc (the notes give the letters of Figs. 62–67).
     let pins = [(c, "*O*_{ad}"), (b, "*O*_{ab}"), (a, "*O*_{bc}")];
     for ((p, markup), key) in pins.into_iter().zip(["C", "B", "A"]) {
-        s.point(key, p, markup, true, c);
+        s.lettered(key, p, markup, Marker::Pin, c);
     }
     // O_cd lies on the normal at A, as O_bd does: its arrow continues
     // the line A O_bd.
@@ -375,13 +375,13 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
                     Some(&(q, other)) if s.contains(p) => {
                         together.push(where_near(markup, p, other, q, r + l + e.abs()));
                         s.push(
-                            &format!("centre-{key}"),
+                            format!("centre-{key}"),
                             Role::Construction,
                             Shape::Dot { centre: p },
                         );
                     }
                     _ => {
-                        s.point(key, p, markup, false, from);
+                        s.lettered(key, p, markup, Marker::Dot, from);
                         lettered.push((p, markup));
                     }
                 }
@@ -399,12 +399,12 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
                         u = -u;
                     }
                 }
-                s.at_infinity(key, from, u, markup);
+                s.lettered_at_infinity(key, from, u, markup);
             }
             Intersection::Coincident => {}
         }
     }
-    for item in s.finish() {
+    for item in s.finish().0 {
         plot.push(item);
     }
 
@@ -447,7 +447,7 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
 
 /// The line `p q` produced to `x` on it, from whichever of p and q is
 /// nearer; nothing when x lies between them (the link itself shows it).
-fn produced(s: &mut Sketch, id: &str, p: Point, q: Point, x: Point) {
+fn produced(s: &mut Canvas, id: &str, p: Point, q: Point, x: Point) {
     let along = (x - p).dot(&(q - p)) / (q - p).norm_squared();
     if (0.0..=1.0).contains(&along) {
         return;

@@ -17,7 +17,6 @@ mod incline;
 mod inertia;
 mod inversions;
 mod rod;
-mod sketch;
 mod turning;
 mod unbalanced;
 mod velocity;

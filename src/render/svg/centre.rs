@@ -5,7 +5,7 @@
 
 use super::Ink;
 use super::markup::{arc_beziers, bezier_d, path, pt};
-use crate::figure::{Pen, Role};
+use crate::figure::{Part, Pen, Role};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::{Bounds, span};
@@ -26,10 +26,9 @@ const SHORTEST: f64 = 0.5;
 pub(super) const WEIGHT: f64 = 0.25;
 
 /// Whether the item is a centre line that opens for letters: the line of
-/// stroke (`line-stroke…`, auxiliary), in the main view or a detail
-/// (`detail-line-stroke…`).
-pub(super) fn is_centre_line(role: Role, id: &str) -> bool {
-    role == Role::Auxiliary && id.trim_start_matches("detail-").starts_with("line-stroke")
+/// stroke ([`Part::CentreLine`]), in the main view or a detail.
+pub(super) fn is_centre_line(part: Part) -> bool {
+    part == Part::CentreLine
 }
 
 /// The course of a line that opens for letters, in page coordinates.
@@ -213,6 +212,48 @@ mod tests {
         let back = arc_pieces(c, 20.0, (quarter, -quarter), &[letter]);
         assert_eq!(back.len(), 2, "{back:?}");
         assert!((back[0].1 - (1.0 - p[1].0)).abs() < 0.02, "{back:?} {p:?}");
+    }
+
+    /// The `<path …>` tag of the element with `id` in `svg`.
+    fn tag<'s>(svg: &'s str, id: &str) -> &'s str {
+        let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+        let start = svg[..at].rfind('<').unwrap();
+        &svg[start..at + svg[at..].find('>').unwrap()]
+    }
+
+    #[test]
+    fn a_centre_line_is_known_by_its_part_never_by_its_id() {
+        use crate::figure::{Figure, Item, PageFromWorld, PageRect, Panel, Shape, Style};
+        let line = |id: &str, part: Part| {
+            Item::new(
+                id,
+                Role::Auxiliary,
+                Shape::Polyline {
+                    points: vec![Point::new(10.0, 50.0), Point::new(190.0, 50.0)],
+                    closed: false,
+                },
+            )
+            .as_part(part)
+        };
+        let items = vec![
+            line("axis", Part::CentreLine),
+            line("line-stroke", Part::Plain),
+        ];
+        let rect = PageRect::new(0.0, 0.0, 200.0, 100.0);
+        let panel = Panel::new("panel", rect, PageFromWorld::identity(), items);
+        let figure = Figure::new(
+            "t",
+            200.0,
+            100.0,
+            Style::Textbook,
+            0.01,
+            vec![panel],
+            Default::default(),
+        );
+        let svg = crate::render::to_svg(&figure);
+        let dashes = format!("stroke-dasharray=\"{DASH}\"");
+        assert!(tag(&svg, "axis").contains(&dashes), "{svg}");
+        assert!(!tag(&svg, "line-stroke").contains(&dashes), "{svg}");
     }
 
     #[test]

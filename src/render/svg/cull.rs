@@ -3,7 +3,7 @@
 
 use crate::figure::{PageFromWorld, PageRect, Shape};
 use crate::geom::{Point, Vector};
-use crate::render::sizes::ANGLE_RADIUS;
+use crate::render::symbol_sizes::ANGLE_RADIUS;
 
 /// Page room around the points of a symbol drawn to page sizes: pins,
 /// dots and markers; arrows' heads; a right-angle mark.

@@ -1,12 +1,12 @@
 //! A standalone SVG that carries its faces: the figure's SVG with a
 //! `<style>` of `@font-face` rules whose sources are `data:` URLs of the
 //! bundled faces cut to exactly the characters its texts draw (the cut of
-//! the HTML pages, `src/html/fonts.rs`). A browser opening the file sets it in
-//! the face it was measured in, not in a system serif.
+//! the HTML pages, `src/html/font_face.rs`). A browser opening the file
+//! sets it in the face it was measured in, not in a system serif.
 
 use super::to_svg;
 use crate::figure::Figure;
-use crate::html::fonts::faces_of;
+use crate::html::font_face::faces_of;
 use std::collections::BTreeSet;
 
 /// [`to_svg`] with the figure's face embedded: regular and italic (and

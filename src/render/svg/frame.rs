@@ -9,7 +9,7 @@ use crate::figure::TextSize;
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::Bounds;
-use crate::render::sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
+use crate::render::symbol_sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
 use std::fmt::Write as _;
 
 impl PanelWriter<'_> {

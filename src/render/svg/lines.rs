@@ -5,7 +5,7 @@ use super::markup::{
     arc_beziers, arrow_head, bezier_d, finite, path, polyline_d, pt, stroke, unit,
 };
 use super::{Ink, PanelWriter, centre};
-use crate::figure::{Path, PathSegment};
+use crate::figure::{Part, Path, PathSegment};
 use crate::geom::Point;
 use crate::number::fmt;
 use crate::render::Element;
@@ -46,13 +46,15 @@ impl PanelWriter<'_> {
         Some(ink.tag(path(d, ink.pen)))
     }
 
-    /// A polyline, open or closed. The line of stroke (`line-stroke…`,
-    /// auxiliary) is drawn as a centre line, long dash and dot.
+    /// A polyline, open or closed, of the item that is `part`. The line of
+    /// stroke ([`Part::CentreLine`]) is drawn as a centre line, long dash
+    /// and dot.
     pub(super) fn polyline(
         &mut self,
         ink: &Ink,
         points: &[Point],
         closed: bool,
+        part: Part,
     ) -> Option<Element> {
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 2 || !pts.iter().all(finite) {
@@ -64,7 +66,7 @@ impl PanelWriter<'_> {
         }
         if let [from, to] = *pts.as_slice()
             && !closed
-            && centre::is_centre_line(ink.role, ink.id)
+            && centre::is_centre_line(part)
         {
             // Written once the labels are placed (with gaps for them).
             return Some(self.open_line(ink, centre::Course::Centre { from, to }));

@@ -9,7 +9,7 @@ use crate::figure::{Item, PageFromWorld, Pen, RichText, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::Bounds;
-use crate::render::sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
+use crate::render::symbol_sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
 
 /// Step by which a dimension's text slides along its line off a line
 /// drawn through it, page units.
@@ -251,7 +251,7 @@ mod tests {
         Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
     };
     use crate::geom::{Point, Vector};
-    use crate::render::sizes::RIGHT_ANGLE;
+    use crate::render::symbol_sizes::RIGHT_ANGLE;
 
     /// The number after `name="` in the element with `id`.
     fn attribute(svg: &str, id: &str, name: &str) -> f64 {

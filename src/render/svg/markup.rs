@@ -5,7 +5,7 @@ use crate::figure::Pen;
 use crate::geom::{Point, Vector};
 use crate::number::{OnGrid, fmt};
 use crate::render::Element;
-use crate::render::sizes::{ARROW_HALF_WIDTH, ARROW_LENGTH};
+use crate::render::symbol_sizes::{ARROW_HALF_WIDTH, ARROW_LENGTH};
 use std::fmt as stdfmt;
 use std::fmt::Write as _;
 

@@ -124,7 +124,7 @@ impl PanelWriter<'_> {
         };
         self.obstacles.set_weight(match item.role {
             // A letter may sit on a centre line, which opens for it.
-            role if centre::is_centre_line(role, &item.id) => centre::WEIGHT,
+            _ if centre::is_centre_line(item.part) => centre::WEIGHT,
             // An angle mark's arc opens for a letter too.
             _ if matches!(item.shape, Shape::AngleMark { .. }) => centre::WEIGHT,
             // Hatching is as bad to letter over as a link.
@@ -134,7 +134,7 @@ impl PanelWriter<'_> {
         });
         match &item.shape {
             Shape::Path(p) => self.fitted_path(&ink, p),
-            Shape::Polyline { points, closed } => self.polyline(&ink, points, *closed),
+            Shape::Polyline { points, closed } => self.polyline(&ink, points, *closed, item.part),
             Shape::Region { points } => self.region(&ink, points),
             Shape::Circle { centre, radius } => self.circle(&ink, *centre, *radius),
             Shape::Arc {

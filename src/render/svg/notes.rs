@@ -9,7 +9,7 @@ use crate::figure::{Align, RichText, Role, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::Bounds;
-use crate::render::sizes::{LETTER_GAP, NOTE_LINE, NOTE_SIZE};
+use crate::render::symbol_sizes::{LETTER_GAP, NOTE_LINE, NOTE_SIZE};
 
 impl PanelWriter<'_> {
     /// A label near `anchor`: kept to be placed after every line of the

@@ -8,7 +8,7 @@ use crate::geom::{Point, Vector};
 use crate::number::fmt;
 use crate::render::Element;
 use crate::render::labels::Bounds;
-use crate::render::sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
+use crate::render::symbol_sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
 
 impl PanelWriter<'_> {
     /// A disc of page `radius` about a world point (pins and dots), kept

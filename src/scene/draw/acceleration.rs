@@ -1,6 +1,6 @@
 //! Klein's (Fig. 65) and Kisch's (Fig. 66) acceleration constructions.
 
-use super::Ctx;
+use super::LayerCtx;
 use super::velocity::{basics_d, basics_e};
 use crate::construct::{AccelerationPoints, Kisch};
 use crate::figure::{Role, Shape};
@@ -10,7 +10,7 @@ use crate::scene::notation::Named::{self, *};
 
 /// FG perpendicular to AB, CG along the line through C parallel to the
 /// stroke, the right angle at F, the points F and G.
-fn fg(ctx: &Ctx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, from_name: Named) {
+fn fg(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, from_name: Named) {
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let (f, g) = (p.f(), p.g());
@@ -36,7 +36,7 @@ fn fg(ctx: &Ctx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, from_
     canvas.point(ctx.letter(G), g, Marker::Dot, c);
 }
 
-pub(crate) fn klein(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn klein(ctx: &LayerCtx, canvas: &mut Canvas) {
     basics_e(ctx, canvas);
     basics_d(ctx, canvas);
     let pose = ctx.main.pose();
@@ -68,7 +68,7 @@ pub(crate) fn klein(ctx: &Ctx, canvas: &mut Canvas) {
 /// perpendicular to the stroke through E, so CF, parallel to it, is the
 /// perpendicular through C, and meets AB at F = B: the F and G that Kisch
 /// finds without D.
-pub(crate) fn klein_points(ctx: &Ctx) -> AccelerationPoints {
+pub(crate) fn klein_points(ctx: &LayerCtx) -> AccelerationPoints {
     match ctx.main.klein() {
         Some(k) => *k.points(),
         None => *ctx.main.kisch().points(),
@@ -120,7 +120,7 @@ pub(super) fn arc_between(
 /// How far Kisch's arc BE runs on past E and H, radians.
 pub(super) const BE_OVERSHOOT: f64 = 0.12;
 
-pub(crate) fn kisch(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn kisch(ctx: &LayerCtx, canvas: &mut Canvas) {
     basics_e(ctx, canvas);
     let pose = ctx.main.pose();
     let (a, b) = (pose.a(), pose.b());

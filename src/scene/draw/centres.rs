@@ -1,6 +1,6 @@
 //! The six virtual centres of the chain (§34), named O_ab ... O_cd.
 
-use super::Ctx;
+use super::LayerCtx;
 use crate::construct::Link;
 use crate::figure::{RichText, Role, Shape, TextSize};
 use crate::geom::{Intersection, Vector};
@@ -18,7 +18,7 @@ fn link(l: Link) -> char {
     }
 }
 
-pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
     let centres = *ctx.main.virtual_centres().all();
     for (p, q, centre) in centres {

@@ -2,12 +2,12 @@
 //! ovals of its points, fitted with cubic Béziers from exact derivatives to
 //! the scene's tolerance in page units and clipped to the frame.
 
-use super::Ctx;
+use super::LayerCtx;
 use super::velocity::basics_d;
 use crate::angle::Angle;
 use crate::construct::{Centrode, CentrodeKind};
 use crate::diagram::{self, Curve, Locus, LocusKind, Method, TraceOptions};
-use crate::figure::{Path, RichText, Role, Shape, TextSize};
+use crate::figure::{Part, Path, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, perp};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named;
@@ -47,13 +47,13 @@ fn trace(
     Some((traced.to_figure_path(map)?, map.invert(anchor)))
 }
 
-fn pose_at(ctx: &Ctx, t: f64) -> Option<crate::mechanism::Pose> {
+fn pose_at(ctx: &LayerCtx, t: f64) -> Option<crate::mechanism::Pose> {
     Angle::from_radians(t)
         .ok()
         .map(|a| ctx.scene.mechanism().pose(a))
 }
 
-pub(crate) fn centrodes(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn centrodes(ctx: &LayerCtx, canvas: &mut Canvas) {
     basics_d(ctx, canvas);
     let tol = ctx.scene.tolerance();
     let here = ctx.main.pose();
@@ -88,25 +88,31 @@ pub(crate) fn centrodes(ctx: &Ctx, canvas: &mut Canvas) {
                 builder_paths.push(t);
             }
         }
-        for (k, (path, anchor)) in builder_paths.into_iter().enumerate() {
-            canvas.push(
-                format!("curve-centrode-{name}-{}", k + 1),
-                role,
-                Shape::Path(path),
-            );
-            if k == 0 {
-                canvas.label(
-                    format!("label-centrode-{name}"),
-                    anchor,
-                    RichText::parse(&format!("{name} centrode")),
-                    TextSize::Small,
+        let part = match kind {
+            CentrodeKind::Fixed => Part::FixedCentrode,
+            CentrodeKind::Moving => Part::MovingCentrode,
+        };
+        canvas.with_part(part, |canvas| {
+            for (k, (path, anchor)) in builder_paths.into_iter().enumerate() {
+                canvas.push(
+                    format!("curve-centrode-{name}-{}", k + 1),
+                    role,
+                    Shape::Path(path),
                 );
+                if k == 0 {
+                    canvas.label(
+                        format!("label-centrode-{name}"),
+                        anchor,
+                        RichText::parse(&format!("{name} centrode")),
+                        TextSize::Small,
+                    );
+                }
             }
-        }
+        });
     }
 }
 
-pub(crate) fn coupler(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn coupler(ctx: &LayerCtx, canvas: &mut Canvas) {
     let q = ctx.scene.coupler();
     ctx.main.note_coupler();
     let f = |t: f64| -> Option<(Point, Vector)> {
@@ -126,7 +132,7 @@ pub(crate) fn coupler(ctx: &Ctx, canvas: &mut Canvas) {
 /// the return stroke too, as the textbook sets it off), traced from the
 /// outer dead centre to the drawn pose, and E′ lettered there. At the
 /// outer dead centre itself nothing is traced yet (E′ = C).
-pub(crate) fn polar(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn polar(ctx: &LayerCtx, canvas: &mut Canvas) {
     let m = *ctx.scene.mechanism();
     let locus = Locus::new(m, LocusKind::PolarVelocity);
     let (outer, inner) = m.dead_centres();

@@ -39,7 +39,7 @@
 //! radius, where θ's letter sits on the crank and r's on the pin. A smaller
 //! crank gets a detail at least [`ANGLES_TARGET`] units in radius.
 
-use super::Ctx;
+use super::LayerCtx;
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 
@@ -104,7 +104,7 @@ pub(crate) struct Detail {
 /// The points of the constructions about the crank that the scene draws:
 /// B, C, E and the construction's F and G first (the core the plates
 /// measure), then Kisch's H where it exists.
-fn points(ctx: &Ctx) -> (Vec<Point>, Option<Point>) {
+fn points(ctx: &LayerCtx) -> (Vec<Point>, Option<Point>) {
     let scene = ctx.scene;
     let pose = ctx.main.pose();
     let mut pts = vec![pose.b(), pose.c()];
@@ -140,7 +140,7 @@ fn bounds(pts: &[Point]) -> (Point, Point) {
 /// The detail a scene drawn at `scale` page units per world unit needs,
 /// if any, no wider than `max_width` page units. Kisch's H joins the
 /// region only where the core still gets [`CORE_TARGET`] with it.
-pub(crate) fn detail(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
+pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let scene = ctx.scene;
     let acceleration = scene.has(Layer::Klein) || scene.has(Layer::Kisch);
     let velocity = scene.has(Layer::Velocity);
@@ -349,7 +349,7 @@ fn magnify(wanted: f64, width: f64, max_width: f64) -> Option<f64> {
 /// allows. A figure marking the crank's angles without a torque has the
 /// crank circle alone, under [`ANGLES_THRESHOLD`], enlarged to
 /// [`ANGLES_TARGET`]. None for a figure marking neither.
-fn crank(ctx: &Ctx, scale: f64, max_width: f64) -> Option<Detail> {
+fn crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let torque = ctx.scene.has(Layer::Torque);
     let (threshold, target) = if torque {
         (CRANK_THRESHOLD, CRANK_TARGET)

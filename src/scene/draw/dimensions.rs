@@ -1,7 +1,7 @@
 //! The dimensions layer (Fig. 62): crank angle θ, displacement x from
 //! mid-stroke, the stroke, r and l.
 
-use super::Ctx;
+use super::LayerCtx;
 use crate::figure::{RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::mechanism::SliderCrank;
@@ -18,7 +18,7 @@ pub(crate) const DEPTH: f64 = FIRST + STEP + 26.0;
 
 /// θ at C, φ between the rod and a parallel to the stroke through B, and
 /// the links' lengths r and l.
-pub(crate) fn angles(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
     let m = pose.mechanism();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
@@ -83,7 +83,7 @@ pub(crate) fn above(m: &SliderCrank) -> bool {
     m.offset() > m.crank()
 }
 
-pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
     let m = pose.mechanism();
     let e = m.offset();
@@ -129,7 +129,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
 /// whatever the constructions draw on that side (Kisch's semicircle and
 /// its arc reach past the circle at some poses): beyond the frame the main
 /// view was fitted to, so that in a held view it stays put.
-pub(crate) fn offset(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn offset(ctx: &LayerCtx, canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     if canvas.page(e.abs()) < 4.0 {

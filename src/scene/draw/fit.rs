@@ -1,6 +1,6 @@
 //! The world rectangle a figure must show whole.
 
-use super::Ctx;
+use super::LayerCtx;
 use crate::construct::Kisch;
 use crate::figure::Shape;
 use crate::geom::{Frame, Intersection, Point, Vector};
@@ -26,7 +26,7 @@ impl Bounds {
 }
 
 /// Whether D is near enough to be fitted.
-pub(crate) fn d_is_near(ctx: &Ctx) -> Option<Point> {
+pub(crate) fn d_is_near(ctx: &LayerCtx) -> Option<Point> {
     let m = ctx.scene.mechanism();
     match ctx.main.d().d() {
         Intersection::Point(d) if (d.y - m.offset()).abs() <= FAR_POINT * (m.rod() + m.crank()) => {
@@ -36,7 +36,7 @@ pub(crate) fn d_is_near(ctx: &Ctx) -> Option<Point> {
     }
 }
 
-pub(crate) fn frame(ctx: &Ctx) -> Frame {
+pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     let s = &ctx.sizes;

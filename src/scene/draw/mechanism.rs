@@ -1,24 +1,17 @@
 //! The mechanism layer: frame, crank circle, links, slider and guides.
 
-use super::Ctx;
-use crate::figure::{HATCH_DEPTH, RichText, Role, Shape, TextSize};
+use super::LayerCtx;
+use crate::figure::{HATCH_DEPTH, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::scene::cache::Constructions;
 use crate::scene::canvas::{Canvas, Marker};
+use crate::scene::linkage::{BEARING_REACH, GUIDE_MIN, HATCH_SLANT, LINK_CLEARANCE};
 use crate::scene::notation::Named;
 
-/// Clear distance, page units, kept between a guide (with its hatching)
-/// and a link passing in front of it: the link's half width, the
-/// guide's, and a little paper.
-const LINK_CLEARANCE: f64 = 5.0;
 /// The bearing's reach about the crank centre, page units: the pedestal
 /// and its hatched foot below (see the SVG writer's bearing), the shaft's
 /// pin above, with a little paper all round. Left, right, below, above.
-const BEARING_BOX: [f64; 4] = [25.0, 20.0, 26.0, 8.0];
-/// Shortest piece of guide drawn, page units.
-const GUIDE_MIN: f64 = 12.0;
-/// How far the hatching leans back along the guide, page units.
-const HATCH_SLANT: f64 = 6.0;
+const BEARING_BOX: [f64; 4] = [BEARING_REACH, 20.0, 26.0, 8.0];
 
 /// A stretch of a guide along x, world units.
 type Span = (f64, f64);
@@ -34,7 +27,7 @@ type Span = (f64, f64);
 /// guide (the rod leaves it through its edge on the guide's line, and a
 /// block standing over the bearing, with rods of little more than a
 /// crank near the inner dead centre, keeps its guide there).
-fn openings(ctx: &Ctx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> Vec<Span> {
+fn openings(ctx: &LayerCtx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> Vec<Span> {
     let pose = ctx.main.pose();
     let (c, b, a) = (pose.c(), pose.b(), pose.a());
     let depth = y + side * canvas.world(HATCH_DEPTH);
@@ -101,7 +94,7 @@ fn pieces(whole: Span, mut openings: Vec<Span>) -> Vec<Span> {
 /// its outer side and broken where [`openings`] says; pieces shorter
 /// than [`GUIDE_MIN`] are left out. Ids `guide-upper`, `guide-upper-2`,
 /// … in order along the stroke, each with its `hatch-` twin.
-fn guides(ctx: &Ctx, canvas: &mut Canvas) {
+fn guides(ctx: &LayerCtx, canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let e = m.offset();
     let whole = ctx.sizes.guides(m.crank());
@@ -142,7 +135,7 @@ fn guides(ctx: &Ctx, canvas: &mut Canvas) {
     }
 }
 
-pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     let pose = ctx.main.pose();
@@ -152,20 +145,21 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let h = s.block_half_height;
 
     // The line of stroke (a centre line) and the crank-pin circle.
-    canvas.segment(
+    canvas.centre_line(
         "line-stroke",
-        Role::Auxiliary,
         Point::new(g0.min(-1.15 * r), e),
         Point::new(g1 + 0.1 * r, e),
     );
-    canvas.push(
-        "circle-crank",
-        Role::Curve,
-        Shape::Circle {
-            centre: c,
-            radius: r,
-        },
-    );
+    canvas.with_part(Part::CrankCircle, |canvas| {
+        canvas.push(
+            "circle-crank",
+            Role::Curve,
+            Shape::Circle {
+                centre: c,
+                radius: r,
+            },
+        );
+    });
     canvas.push(
         format!("bearing-{}", ctx.letter(Named::CrankCentre)),
         Role::Frame,
@@ -177,6 +171,35 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
     guides(ctx, canvas);
 
     // Ghost poses first, so the main pose is drawn over them.
+    draw_ghosts(ctx, ghosts, canvas);
+
+    // The slider block about A.
+    let l = s.block_half_length;
+    canvas.push(
+        "block-slider",
+        Role::Link,
+        Shape::Block {
+            points: vec![
+                Point::new(a.x - l, a.y - h),
+                Point::new(a.x + l, a.y - h),
+                Point::new(a.x + l, a.y + h),
+                Point::new(a.x - l, a.y + h),
+            ],
+        },
+    );
+    canvas.segment("link-crank", Role::Link, c, b);
+    canvas.segment("link-rod", Role::Link, b, a);
+    canvas.with_part(Part::Joint, |canvas| {
+        canvas.point(ctx.letter(Named::CrankCentre), c, Marker::Pin, c);
+        canvas.point(ctx.letter(Named::CrankPin), b, Marker::Pin, c);
+        canvas.point(ctx.letter(Named::Slider), a, Marker::Pin, c);
+    });
+}
+
+/// The ghost poses: their links, and their crank pins and cross-heads
+/// numbered from 1 (`pose-1-links`, `point-B1`, `label-B1`, …).
+fn draw_ghosts(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas) {
+    let c = ctx.main.pose().c();
     for (k, g) in ghosts.iter().enumerate() {
         let p = g.pose();
         let n = k + 1;
@@ -204,24 +227,4 @@ pub(crate) fn draw(ctx: &Ctx, ghosts: &[Constructions], canvas: &mut Canvas) {
             );
         }
     }
-
-    // The slider block about A.
-    let l = s.block_half_length;
-    canvas.push(
-        "block-slider",
-        Role::Link,
-        Shape::Block {
-            points: vec![
-                Point::new(a.x - l, a.y - h),
-                Point::new(a.x + l, a.y - h),
-                Point::new(a.x + l, a.y + h),
-                Point::new(a.x - l, a.y + h),
-            ],
-        },
-    );
-    canvas.segment("link-crank", Role::Link, c, b);
-    canvas.segment("link-rod", Role::Link, b, a);
-    canvas.point(ctx.letter(Named::CrankCentre), c, Marker::Pin, c);
-    canvas.point(ctx.letter(Named::CrankPin), b, Marker::Pin, c);
-    canvas.point(ctx.letter(Named::Slider), a, Marker::Pin, c);
 }

@@ -12,6 +12,8 @@ mod scales;
 mod torque;
 mod velocity;
 
+pub(crate) use torque::torque_arrow;
+
 use super::Layer;
 use super::Scene;
 use super::cache::{Constructions, Evaluations};
@@ -19,7 +21,7 @@ use super::canvas::{Canvas, round};
 use super::notation::Named;
 use crate::angle::Angle;
 use crate::figure::{
-    Align, Figure, Hue, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
+    Align, Figure, Hue, PageFromWorld, PageRect, Panel, Part, RichText, Role, Shape, TextSize,
 };
 use crate::figure::{NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Frame, Point, Vector};
@@ -106,13 +108,16 @@ impl Sizes {
     }
 }
 
-/// An arrow drawn with its name: its id and name, tail and head (world
-/// units).
+/// An arrow drawn with its name: its id and name, tail and head, and
+/// where its name is set (world units).
 pub(crate) struct NamedArrow {
     pub id: &'static str,
     pub name: &'static str,
     pub from: Point,
     pub to: Point,
+    /// Its head, or its tail for an arrow that points at what it acts on
+    /// (F_c at the crank pin).
+    pub name_at: Point,
 }
 
 /// Room for an arrow's name beyond its ends, page units.
@@ -126,16 +131,33 @@ impl NamedArrow {
         let room = d / d.norm() * world(NAME_ROOM);
         [self.from - room, self.to + room]
     }
+
+    /// Draws the arrow (`{kind}-{id}`, a force's stroke in the colour of
+    /// `hue`) and its name (`value-{id}`).
+    pub(crate) fn draw(&self, canvas: &mut Canvas, kind: &str, hue: Hue) {
+        let arrow = Shape::Arrow {
+            from: self.from,
+            to: self.to,
+        };
+        canvas.push_hued(format!("{kind}-{}", self.id), Role::Force, hue, arrow);
+        let name = RichText::parse(self.name);
+        canvas.label(
+            format!("value-{}", self.id),
+            self.name_at,
+            name,
+            TextSize::Small,
+        );
+    }
 }
 
 /// What every layer gets.
-pub(crate) struct Ctx<'a> {
+pub(crate) struct LayerCtx<'a> {
     pub scene: &'a Scene,
     pub main: &'a Constructions,
     pub sizes: Sizes,
 }
 
-impl Ctx<'_> {
+impl LayerCtx<'_> {
     pub fn letter(&self, n: Named) -> &'static str {
         self.scene.notation().letter(n)
     }
@@ -171,7 +193,7 @@ pub(crate) struct Layout {
 
 /// The notes of the scene at the pose of `ctx`: their number of lines
 /// fixes the band below the panels.
-fn notes(ctx: &Ctx) -> Vec<RichText> {
+fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let scene = ctx.scene;
     let mut notes = if scene.has(Layer::Scales) {
         scales::notes(ctx)
@@ -210,7 +232,7 @@ fn band(notes: &[RichText]) -> f64 {
 #[allow(clippy::indexing_slicing)]
 pub(crate) fn own(scene: &Scene) -> Layout {
     let poses = own_poses(scene);
-    let ctx = Ctx {
+    let ctx = LayerCtx {
         scene,
         main: &poses[0],
         sizes: Sizes::new(scene),
@@ -241,7 +263,7 @@ pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
 /// it ends within it or [`HEIGHT_REFITS`] tries are spent (a detail's
 /// size is its own, not the main view's: such a figure may still not fit,
 /// and is refused by the scene).
-fn fit_within(ctx: &Ctx, band: f64) -> Layout {
+fn fit_within(ctx: &LayerCtx, band: f64) -> Layout {
     let page = ctx.scene.page();
     let mut layout = fit(ctx, band);
     let mut reserve = band;
@@ -276,8 +298,8 @@ impl Layout {
 }
 
 /// The layout fitted to the pose of `ctx` with its notes' `band`.
-fn fit(ctx: &Ctx, band: f64) -> Layout {
-    let mut ctx = Ctx {
+fn fit(ctx: &LayerCtx, band: f64) -> Layout {
+    let mut ctx = LayerCtx {
         sizes: Sizes::new(ctx.scene),
         ..*ctx
     };
@@ -300,7 +322,7 @@ fn fit(ctx: &Ctx, band: f64) -> Layout {
 /// once more where the offset's dimension needs room beside the detail's
 /// frame ([`beside_detail`]).
 fn with_detail(
-    ctx: &Ctx,
+    ctx: &LayerCtx,
     band: f64,
     frame: Frame,
     details: impl Fn(f64) -> Option<detail::Detail>,
@@ -337,9 +359,9 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
         .iter()
         .map(|a| Constructions::new(m.pose(*a)))
         .collect();
-    let mut ctxs: Vec<Ctx> = poses
+    let mut ctxs: Vec<LayerCtx> = poses
         .iter()
-        .map(|main| Ctx {
+        .map(|main| LayerCtx {
             scene,
             main,
             sizes: Sizes::new(scene),
@@ -349,7 +371,7 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
     // cannot fail: one context per pose, and a scene has at least one pose
     // (`valid::angles` refuses an empty list).
     #[allow(clippy::expect_used)]
-    let union = |ctxs: &[Ctx]| {
+    let union = |ctxs: &[LayerCtx]| {
         ctxs.iter()
             .map(fit::frame)
             .reduce(|a, b| Frame::new(a.min().inf(&b.min()), a.max().sup(&b.max())))
@@ -415,7 +437,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     // cannot fail: a scene is drawn only once `valid::scene` has passed it,
     // which refuses one without a pose.
     #[allow(clippy::indexing_slicing)]
-    let mut ctx = Ctx {
+    let mut ctx = LayerCtx {
         scene,
         main: &poses[0],
         sizes: Sizes::new(scene),
@@ -434,15 +456,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let (main, transform) = (layout.main, layout.transform);
     let detail = layout.detail;
     let region = detail.map(|d| detail_frame(&d, transform.scale()));
-    let mut canvas = Canvas::new(transform, transform.world_frame(&main));
-    if let (Some(frame), Some(d)) = (region, detail) {
-        // The letters of the constructed points are the detail's, and
-        // with a crank's detail the marks about the crank too.
-        canvas = canvas.quiet(frame);
-        if d.focus == detail::Focus::Crank {
-            canvas = canvas.bare(frame);
-        }
-    }
+    let mut canvas = main_canvas(&layout, region);
     draw_layers(&ctx, &poses, &mut canvas, true);
 
     let mut bottom = main.y + main.height;
@@ -462,16 +476,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
         panels.push(panel);
     }
     let height = bottom + band + mg;
-    if !notes.is_empty() {
-        canvas.push(
-            "note-scales",
-            Role::Label,
-            Shape::Note {
-                corner: Point::new(mg + 4.0, bottom + 4.0),
-                lines: notes,
-            },
-        );
-    }
+    push_notes(&mut canvas, Point::new(mg + 4.0, bottom + 4.0), notes);
 
     let mut evaluations = Evaluations::default();
     for p in &poses {
@@ -500,7 +505,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
 
 /// Every layer of the scene, in order, on `canvas`; the scale notes only
 /// when `notes` (the main view).
-fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bool) {
+fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, main: bool) {
     for layer in ctx.scene.layers() {
         canvas.set_hue(match layer {
             Layer::Velocity | Layer::Motion => Some(Hue::Velocity),
@@ -537,7 +542,7 @@ fn draw_layers(ctx: &Ctx, poses: &[Constructions], canvas: &mut Canvas, main: bo
 /// allows and only as tall as what it draws needs (the scene's page
 /// height, less the notes' `band`, is the most it may take), and its map,
 /// fitted to the `world` rectangle.
-fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
+fn main_view(ctx: &LayerCtx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
     let (panel, transform) = main_view_with(ctx, band, world, 0.0);
     let scene = ctx.scene;
     if !(scene.has(Layer::Dimensions) && dimensions::above(scene.mechanism())) {
@@ -558,7 +563,7 @@ fn main_view(ctx: &Ctx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
 
 /// [`main_view`] with `room` page units more above the drawing, the
 /// panel as much taller.
-fn main_view_with(ctx: &Ctx, band: f64, world: Frame, room: f64) -> (PageRect, PageFromWorld) {
+fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (PageRect, PageFromWorld) {
     let scene = ctx.scene;
     let page = scene.page();
     let mg = page.margin();
@@ -610,7 +615,7 @@ fn detail_frame(d: &detail::Detail, main_scale: f64) -> Frame {
 /// The detail panel showing `frame` below `top`, centred on a page
 /// `width` wide.
 fn detail_panel(
-    ctx: &Ctx,
+    ctx: &LayerCtx,
     poses: &[Constructions],
     d: &detail::Detail,
     frame: &Frame,
@@ -640,10 +645,45 @@ fn detail_panel(
     Panel::new("panel-detail", rect, transform, items).clipped()
 }
 
+/// The scene's notes below its drawing, from `corner` down
+/// (`note-scales`, [`Part::Notes`]); nothing without notes.
+fn push_notes(canvas: &mut Canvas, corner: Point, notes: Vec<RichText>) {
+    if notes.is_empty() {
+        return;
+    }
+    canvas.with_part(Part::Notes, |canvas| {
+        let lines = notes;
+        canvas.push("note-scales", Role::Label, Shape::Note { corner, lines });
+    });
+}
+
+/// The main view's canvas: where the `layout` has a detail of the world
+/// `region`, the letters of the constructed points there are the
+/// detail's, and with a crank's detail the marks about the crank too.
+fn main_canvas(layout: &Layout, region: Option<Frame>) -> Canvas {
+    let transform = layout.transform;
+    let canvas = Canvas::new(transform, transform.world_frame(&layout.main));
+    match (region, layout.detail) {
+        (Some(frame), Some(d)) if d.focus == detail::Focus::Crank => {
+            canvas.quiet(frame).bare(frame)
+        }
+        (Some(frame), Some(_)) => canvas.quiet(frame),
+        _ => canvas,
+    }
+}
+
 /// The frame on the main view matching the detail, with its
 /// magnification beside it; the detail's border and caption (drawn by the
-/// main view, so that the detail's clip leaves them whole).
+/// main view, so that the detail's clip leaves them whole). All are
+/// [`Part::DetailMark`]s.
 fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
+    canvas.with_part(Part::DetailMark, |canvas| {
+        detail_marks(canvas, frame, rect, magnification);
+    });
+}
+
+/// [`mark_detail`]'s items.
+fn detail_marks(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
     let (lo, hi) = (frame.min(), frame.max());
     let x = crate::number::short(magnification);
     canvas.push(

@@ -2,7 +2,7 @@
 //! turning arrows, the velocity v_c of the crank pin and v_p of the slider
 //! as arrows drawn to one scale.
 
-use super::{Ctx, NamedArrow};
+use super::{LayerCtx, NamedArrow};
 use crate::figure::{Hue, RichText, Role, Shape, TextSize};
 use crate::geom::Vector;
 use crate::scene::canvas::Canvas;
@@ -19,7 +19,7 @@ const OMEGA_RADIUS: f64 = 40.0;
 /// Radius of the Ω arrow about the rod's middle, page units.
 const ROD_RADIUS: f64 = 16.0;
 
-pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     // With the torque layer (Ng Fig. 1) the torque's arrow holds the crank
     // centre: the turning arrows are Fig. A1's.
     if !ctx.scene.has(crate::scene::Layer::Torque) {
@@ -29,21 +29,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
         if !(canvas.contains(v.from) && canvas.contains(v.to)) {
             continue;
         }
-        canvas.push_hued(
-            format!("velocity-{}", v.id),
-            Role::Force,
-            Hue::Velocity,
-            Shape::Arrow {
-                from: v.from,
-                to: v.to,
-            },
-        );
-        canvas.label(
-            format!("value-{}", v.id),
-            v.to,
-            RichText::parse(v.name),
-            TextSize::Small,
-        );
+        v.draw(canvas, "velocity", Hue::Velocity);
     }
 }
 
@@ -52,7 +38,7 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
 /// of ω, [`VC_ARROW`] long; v_p along the stroke to the same scale (at
 /// least [`MIN_ARROW`]), beyond the guide on the side away from the crank
 /// pin. v_p is left out where the slider is at rest.
-pub(crate) fn velocities(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
+pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     let pose = ctx.main.pose();
     let (a, b) = (pose.a(), pose.b());
     let turn = ctx.scene.omega().signum();
@@ -60,11 +46,13 @@ pub(crate) fn velocities(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArro
     let cb = b - pose.c();
     if cb.norm() > 0.0 {
         let u = Vector::new(-cb.y, cb.x) / cb.norm() * turn;
+        let to = b + u * world(VC_ARROW);
         out.push(NamedArrow {
             id: "vc",
             name: "*v*_c",
             from: b,
-            to: b + u * world(VC_ARROW),
+            to,
+            name_at: to,
         });
     }
     let vp = pose.position_rate() / pose.mechanism().crank() * turn;
@@ -74,18 +62,20 @@ pub(crate) fn velocities(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArro
         let side = if b.y >= a.y { -1.0 } else { 1.0 };
         // Beyond the guide's hatching, with room for the arrow's head.
         let from = a + Vector::new(0.0, side * (h + world(VP_CLEAR)));
+        let to = from + Vector::new(vp.signum(), 0.0) * world(len.max(MIN_ARROW));
         out.push(NamedArrow {
             id: "vp",
             name: "*v*_p",
             from,
-            to: from + Vector::new(vp.signum(), 0.0) * world(len.max(MIN_ARROW)),
+            to,
+            name_at: to,
         });
     }
     out
 }
 
 /// ω about the crank centre and Ω about the rod's middle.
-fn turning(ctx: &Ctx, canvas: &mut Canvas) {
+fn turning(ctx: &LayerCtx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let w = ctx.scene.omega();

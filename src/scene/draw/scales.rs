@@ -1,14 +1,14 @@
 //! The scales layer: notes that say what each constructed length represents
 //! (§36: "CB represents V_c", the acceleration scale n²).
 
-use super::Ctx;
+use super::LayerCtx;
 use crate::figure::RichText;
 use crate::geom::Intersection;
 use crate::number::{short, sig};
 use crate::scene::Layer;
 use crate::scene::notation::Named::*;
 
-pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
+pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let scene = ctx.scene;
     let pose = ctx.main.pose();
     let r = pose.mechanism().crank();

@@ -2,9 +2,9 @@
 //! the side thrust.
 
 use super::velocity::basics_e;
-use super::{Ctx, NamedArrow};
+use super::{LayerCtx, NamedArrow};
 use crate::analytic::statics::NG_TORQUE;
-use crate::figure::{RichText, Role, Shape, TextSize};
+use crate::figure::{Hue, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
 use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
@@ -24,7 +24,7 @@ const ARROW_ROOM: f64 = 8.0;
 
 /// The values the figure names by symbol only, for the notes below it:
 /// OM and T, then the forces (or why there is no finite slider force).
-pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
+pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let scene = ctx.scene;
     let tl = ctx.main.torque();
     let (unit, force) = (scene.units().length(), scene.units().force());
@@ -74,7 +74,7 @@ pub(crate) fn notes(ctx: &Ctx) -> Vec<RichText> {
 /// is (a unit is a name, nothing is converted), so the figure says where
 /// it came from and how to give the engine's own. `None` for Ng's rig in
 /// millimetres, or any other torque.
-fn borrowed_torque(ctx: &Ctx, t: f64) -> Option<String> {
+fn borrowed_torque(ctx: &LayerCtx, t: f64) -> Option<String> {
     let m = ctx.main.pose().mechanism();
     let units = ctx.scene.units();
     let ngs_rig = m.crank() == 25.0 && m.rod() == 72.0 && units.length().to_string() == "mm";
@@ -97,7 +97,7 @@ fn amount(x: f64, unit: &(impl std::fmt::Display + ?Sized)) -> String {
     }
 }
 
-pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     basics_e(ctx, canvas);
     let scene = ctx.scene;
     let pose = ctx.main.pose();
@@ -112,27 +112,16 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
         let block = s.block_half_length.hypot(s.block_half_height);
         let near = ca.norm() - block < canvas.world(TORQUE_RADIUS + ARROW_ROOM);
         let gap = near.then(|| ca.y.atan2(ca.x));
-        torque_arrow(canvas, c, scene.torque(), gap);
+        let radius = canvas.world(TORQUE_RADIUS);
+        for item in torque_arrow(c, scene.torque(), radius, gap) {
+            canvas.push_item(item);
+        }
     }
     for f in forces(ctx, &|page| canvas.world(page)) {
         if !canvas.contains(f.from) {
             continue;
         }
-        canvas.push(
-            format!("force-{}", f.id),
-            Role::Force,
-            Shape::Arrow {
-                from: f.from,
-                to: f.to,
-            },
-        );
-        let at = if f.id == "Fc" { f.from } else { f.to };
-        canvas.label(
-            format!("value-{}", f.id),
-            at,
-            RichText::parse(f.name),
-            TextSize::Small,
-        );
+        f.draw(canvas, "force", Hue::Force);
     }
 
     // The transmission angle β at the crank pin, between its two links.
@@ -152,13 +141,14 @@ pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
     }
 }
 
-/// The crank torque `t` as an arc arrow about the crank centre `c`,
-/// lettered T. The gap is below the centre (above it for a clockwise
-/// torque) and holds the letter; or it is centred on the world direction
-/// `gap` where one is given (the slider's block, which the arc would
-/// otherwise cross), and the letter goes beside the arc's middle.
-fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
-    let radius = canvas.world(TORQUE_RADIUS);
+/// The torque `t` as an arc arrow of `radius` (world units) about the
+/// crank centre `c` in its sense, lettered T (`torque-T`, `value-T`). The
+/// gap is below the centre (above it for a clockwise torque) and holds
+/// the letter; or it is centred on the world direction `gap` where one is
+/// given (the slider's block, which the arc would otherwise cross), and
+/// the letter goes beside the arc's middle. A zero torque turns
+/// counter-clockwise (a caller that draws no arrow for it leaves it out).
+pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [Item; 2] {
     let turn = if t >= 0.0 { 1.0 } else { -1.0 };
     let sweep = turn * TORQUE_SWEEP;
     // The gap's middle is half a sweep and half a turn past the start.
@@ -166,29 +156,34 @@ fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
         Some(g) => g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI),
         None => -0.9 * turn,
     };
-    canvas.push(
-        "torque-T",
-        Role::Force,
-        Shape::Arc {
-            centre: c,
-            radius,
-            start,
-            sweep,
-            arrow: true,
-        },
-    );
     // T in the gap, or, where the gap holds the block, beside the arc's
     // middle.
     let mid = match gap {
         Some(_) => start + 0.5 * sweep,
         None => start + 0.5 * sweep + std::f64::consts::PI,
     };
-    canvas.label(
-        "value-T",
-        c + Vector::new(mid.cos(), mid.sin()) * radius,
-        RichText::italic("T"),
-        TextSize::Small,
-    );
+    [
+        Item::new(
+            "torque-T",
+            Role::Force,
+            Shape::Arc {
+                centre: c,
+                radius,
+                start,
+                sweep,
+                arrow: true,
+            },
+        ),
+        Item::new(
+            "value-T",
+            Role::Label,
+            Shape::Label {
+                anchor: c + Vector::new(mid.cos(), mid.sin()) * radius,
+                text: RichText::italic("T"),
+                size: TextSize::Small,
+            },
+        ),
+    ]
 }
 
 /// The force arrows, their page lengths turned to world lengths by
@@ -198,7 +193,7 @@ fn torque_arrow(canvas: &mut Canvas, c: Point, t: f64, gap: Option<f64>) {
 /// run into the crank's bearing, pushing on the block's far face), and
 /// the side thrust F_s from its top or bottom (to F_p's scale, within
 /// limits). None at a dead centre, where the slider force is not finite.
-pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
+pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let t = ctx.scene.torque();
@@ -213,6 +208,7 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
             name: "*F*_c",
             from: tail,
             to: head,
+            name_at: tail,
         });
     }
     let s = &ctx.sizes;
@@ -243,6 +239,7 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
             name: "*F*_p",
             from,
             to,
+            name_at: to,
         });
         // F_s = F_p tan φ: its sense and its length to F_p's scale need
         // only tan φ.
@@ -251,11 +248,13 @@ pub(crate) fn forces(ctx: &Ctx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
             let uy = Vector::new(0.0, sign * tan_phi.signum());
             let face = a + uy * s.block_half_height;
             let len = (FORCE_ARROW * tan_phi.abs()).clamp(16.0, FORCE_ARROW);
+            let to = face + uy * world(len);
             out.push(NamedArrow {
                 id: "Fs",
                 name: "*F*_s",
                 from: face,
-                to: face + uy * world(len),
+                to,
+                name_at: to,
             });
         }
     }

@@ -1,7 +1,7 @@
 //! The velocity layer (Fig. 63; Ng Fig. A1): D, E and the similar
 //! triangles ADB and ECB.
 
-use super::Ctx;
+use super::LayerCtx;
 use crate::figure::{Hue, RIGHT_ANGLE, Role, Shape};
 use crate::geom::{Intersection, Point, Vector, cross};
 use crate::scene::canvas::{Canvas, Marker};
@@ -13,7 +13,7 @@ const PRODUCED: f64 = 6.0;
 
 /// E: the perpendicular to the stroke through C, AB produced to meet it,
 /// the right angle at C.
-pub(crate) fn basics_e(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn basics_e(ctx: &LayerCtx, canvas: &mut Canvas) {
     let hue = canvas.set_hue(Some(Hue::Velocity));
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
@@ -53,7 +53,7 @@ pub(crate) fn basics_e(ctx: &Ctx, canvas: &mut Canvas) {
 
 /// D: CB produced meets the perpendicular to the stroke at A; a point off
 /// the page or at infinity is shown by an arrow at the frame edge.
-pub(crate) fn basics_d(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn basics_d(ctx: &LayerCtx, canvas: &mut Canvas) {
     let hue = canvas.set_hue(Some(Hue::Velocity));
     let pose = ctx.main.pose();
     let (a, b) = (pose.a(), pose.b());
@@ -88,7 +88,7 @@ pub(crate) fn basics_d(ctx: &Ctx, canvas: &mut Canvas) {
     canvas.set_hue(hue);
 }
 
-fn region(ctx: &Ctx, canvas: &mut Canvas, names: [Named; 3], points: [Point; 3]) {
+fn region(ctx: &LayerCtx, canvas: &mut Canvas, names: [Named; 3], points: [Point; 3]) {
     let area = cross(&(points[1] - points[0]), &(points[2] - points[0]));
     if canvas.page(canvas.page(area.abs())) < 4.0 || !points.iter().all(|p| canvas.contains(*p)) {
         return;
@@ -108,7 +108,7 @@ fn region(ctx: &Ctx, canvas: &mut Canvas, names: [Named; 3], points: [Point; 3])
     );
 }
 
-pub(crate) fn draw(ctx: &Ctx, canvas: &mut Canvas) {
+pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     basics_e(ctx, canvas);
     basics_d(ctx, canvas);
     let pose = ctx.main.pose();

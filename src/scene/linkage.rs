@@ -1,0 +1,465 @@
+//! Drawing a linkage on a [`Canvas`]: links, pins, bearings, ground
+//! hatching kept clear of the moving links, and slots with their guides;
+//! the catalogue's chain and inversion sketches draw with it, and its
+//! page sizes are the mechanism layer's too.
+
+use super::canvas::Canvas;
+use crate::figure::{HATCH_DEPTH, HATCH_SPACING};
+use crate::figure::{RichText, Role, Shape, TextSize};
+use crate::geom::{Point, Vector, cross, perp};
+
+/// Clear distance, page units, kept between a guide (with its hatching)
+/// and a link passing in front of it: the link's half width, the
+/// guide's, and a little paper.
+pub(crate) const LINK_CLEARANCE: f64 = 5.0;
+/// Shortest piece of guide drawn, page units.
+pub(crate) const GUIDE_MIN: f64 = 12.0;
+/// How far the hatching leans back along a guide, page units.
+pub(crate) const HATCH_SLANT: f64 = 6.0;
+/// Half width and depth of a bearing below its centre, page units (the
+/// pedestal and its hatched foot, see the SVG writer's bearing).
+pub(crate) const BEARING_REACH: f64 = 25.0;
+/// Room left unhatched at a fixed link's pins, page units.
+pub(crate) const PIN_CLEAR: f64 = 8.0;
+/// Clear distance kept between a hatch stroke and a moving link, page units.
+const HATCH_CLEAR: f64 = 2.5;
+/// Shortest run of hatch strokes drawn.
+const HATCH_RUN: usize = 2;
+/// Length of one chord of a curved guide, page units.
+const CHORD: f64 = 12.0;
+/// Clear distance between a guide and the crank circle or a bearing.
+const CIRCLE_CLEARANCE: f64 = 7.0;
+/// How far beyond the block's ends the rod may come close to its guides,
+/// page units.
+const BLOCK_MARGIN: f64 = 4.0;
+
+/// Runs of hatch strokes: (chord, first stroke, last stroke) in page
+/// units along the chord.
+type Runs = Vec<(usize, f64, f64)>;
+
+/// A piece of a moving link, in world coordinates.
+pub(crate) type Seg = (Point, Point);
+
+/// A slot the block slides in: the path of its middle, `point(σ, δ)` at
+/// arc length σ and normal offset δ, and the arc-length range its guides
+/// cover.
+pub(crate) struct Slot<'a> {
+    /// The point at arc length σ along the slot, offset δ across it
+    /// (δ > 0 on the side of +y at the slot's middle).
+    pub point: &'a dyn Fn(f64, f64) -> Point,
+    /// Whether the slot is straight (one chord per guide).
+    pub straight: bool,
+    /// The arc lengths the guides run between (towards the crank first).
+    pub range: (f64, f64),
+    /// Half the block's height: the guides are this far from the middle.
+    pub half_height: f64,
+    /// The block's arc length and half length: the guides always run under
+    /// it, and alongside it (within [`BLOCK_MARGIN`]) the rod, which starts
+    /// at its middle, may come close to them.
+    pub block: (f64, f64),
+}
+
+/// One guide of a slot being drawn: its offset from the slot's middle,
+/// the steps it is walked in from its far end (whose ends are `far` and
+/// `near` on the page), and the rod it keeps clear of (in the world and
+/// on the page).
+struct Walk<'s, 'a> {
+    slot: &'s Slot<'a>,
+    delta: f64,
+    steps: usize,
+    far: Point,
+    near: Point,
+    rod: Seg,
+    rod_page: Seg,
+}
+
+impl Walk<'_, '_> {
+    /// The arc length of step `k` (0 at the far end).
+    fn at(&self, k: usize) -> f64 {
+        let (s0, s1) = self.slot.range;
+        s1 + (s0 - s1) * k as f64 / self.steps as f64
+    }
+
+    /// The point of the guide at step `k`.
+    fn point(&self, k: usize) -> Point {
+        (self.slot.point)(self.at(k), self.delta)
+    }
+}
+
+impl Canvas {
+    fn page_point(&self, p: Point) -> Point {
+        self.transform().apply(p)
+    }
+
+    /// A moving link through `points` (`link-{name}`).
+    pub(crate) fn link(&mut self, name: &str, points: Vec<Point>) {
+        self.push(
+            format!("link-{name}"),
+            Role::Link,
+            Shape::Polyline {
+                points,
+                closed: false,
+            },
+        );
+    }
+
+    /// A pin joint without a letter (`pin-{name}`), if on the frame.
+    pub(crate) fn pin(&mut self, name: &str, p: Point) {
+        if self.contains(p) {
+            self.push(format!("pin-{name}"), Role::Link, Shape::Pin { centre: p });
+        }
+    }
+
+    /// A fixed bearing under `p` (`bearing-{name}`), if on the frame.
+    pub(crate) fn bearing(&mut self, name: &str, p: Point) {
+        if self.contains(p) {
+            self.push(
+                format!("bearing-{name}"),
+                Role::Frame,
+                Shape::Bearing { centre: p },
+            );
+        }
+    }
+
+    /// A letter or short markup near `anchor` (`label-{name}`), placed clear
+    /// of lines by the renderer; nothing when `anchor` is off the frame.
+    pub(crate) fn letter(&mut self, name: &str, anchor: Point, markup: &str, size: TextSize) {
+        self.label(
+            format!("label-{name}"),
+            anchor,
+            RichText::parse(markup),
+            size,
+        );
+    }
+
+    /// Ground hatching along the fixed edge `p q` on whichever of `sides`
+    /// (world vectors) keeps more strokes clear of the moving links
+    /// `avoid`, leaving out strokes that would touch them and those within
+    /// `ends` page units of either end (`hatch-{name}-k`).
+    pub(crate) fn hatch_edge(
+        &mut self,
+        name: &str,
+        (p, q): Seg,
+        sides: &[Vector],
+        avoid: &[Seg],
+        ends: f64,
+    ) {
+        let mut best: Option<(f64, Vector, Runs)> = None;
+        for &side in sides {
+            let runs = self.clear_runs(&[p, q], &|_| side, avoid, ends);
+            let count = runs.iter().map(|x| x.2 - x.1 + 1.0).sum::<f64>();
+            if best.as_ref().is_none_or(|b| count > b.0) {
+                best = Some((count, side, runs));
+            }
+        }
+        if let Some((_, side, runs)) = best {
+            self.emit_hatch(name, &[p, q], &|_| side, &runs);
+        }
+    }
+
+    /// Ground hatching along the fixed link `p q`, on the clearer side.
+    pub(crate) fn hatch_link(&mut self, name: &str, p: Point, q: Point, avoid: &[Seg], ends: f64) {
+        let n = perp(&(q - p));
+        self.hatch_edge(name, (p, q), &[n, -n], avoid, ends);
+    }
+
+    /// The two guides of a fixed `slot`, hatched on their outer sides,
+    /// open towards the crank where the rod `rod` (from the crank pin to
+    /// the block) crosses them and clear of the bearing at `centre`, but
+    /// never short of the block: they run across the crank circle (a path,
+    /// not a part) and under the whole block (`guide-{name}-upper`,
+    /// `hatch-{name}-upper-k`, …).
+    pub(crate) fn guides(&mut self, name: &str, slot: &Slot, centre: Point, rod: Seg) {
+        let h = slot.half_height;
+        for (id, delta) in [("upper", h), ("lower", -h)] {
+            let (s0, s1) = slot.range;
+            // From the far end back towards the crank, in steps of about
+            // a page unit.
+            let far = self.page_point((slot.point)(s1, delta));
+            let near = self.page_point((slot.point)(s0, delta));
+            let steps = ((far - near).norm() * if slot.straight { 1.0 } else { 1.6 })
+                .ceil()
+                .clamp(2.0, 20000.0) as usize;
+            let rod_page = (self.page_point(rod.0), self.page_point(rod.1));
+            let walk = Walk {
+                slot,
+                delta,
+                steps,
+                far,
+                near,
+                rod,
+                rod_page,
+            };
+            let last = self.guide_end(&walk, centre);
+            let span = self.page_point(walk.point(last)) - far;
+            if last == 0 || span.norm() < GUIDE_MIN {
+                continue;
+            }
+            self.guide(&format!("{name}-{id}"), &walk, last, span.norm());
+        }
+    }
+
+    /// The step a guide runs to from its far end: short of the bearing at
+    /// `centre` and of where the rod crosses or comes near it, but never
+    /// short of the block.
+    fn guide_end(&self, w: &Walk, centre: Point) -> usize {
+        // The crank circle is the path of the pin, not a part: the guide
+        // runs across it, and stops only short of the bearing.
+        let reach = self.world(BEARING_REACH) + self.world(CIRCLE_CLEARANCE);
+        let block = w.slot.block;
+        let (rb, ra) = w.rod_page;
+        let mut last = 0;
+        // The last step still under the block: the guide reaches it.
+        let mut block_end = 0;
+        let mut crossed: Option<(usize, f64)> = None;
+        for k in 1..=w.steps {
+            let (p0, p1) = (w.point(k - 1), w.point(k));
+            // Under the block (and beyond it) the guide always runs:
+            // the block never slides on nothing, and the rod leaves it
+            // through its edge on the guide's line.
+            // A step that starts under the block is drawn whatever
+            // it meets: it reaches the block's near edge, or lies
+            // under the block.
+            let under = w.at(k - 1) >= block.0 - block.1;
+            if under {
+                block_end = k;
+            }
+            if !under && (p1 - centre).norm() < reach {
+                break;
+            }
+            let (q0, q1) = (self.page_point(p0), self.page_point(p1));
+            if let Some(sin) = crossing(q0, q1, rb, ra).filter(|_| !under) {
+                crossed = Some((k, sin));
+                break;
+            }
+            // Beyond the block towards the crank the rod keeps its
+            // distance from the guide (it runs inside a curved slot
+            // before leaving it); on the block's far side there is no
+            // rod.
+            let beside = w.at(k) >= block.0 - block.1 - self.world(BLOCK_MARGIN);
+            if !beside && segment_distance(q1, q1, rb, ra) < LINK_CLEARANCE + HATCH_SLANT {
+                break;
+            }
+            last = k;
+        }
+        if let Some((k, sin)) = crossed {
+            // Back off from the crossing so that the rod clears the
+            // guide's end and its leaning hatch.
+            let back = (LINK_CLEARANCE / sin.max(0.05) + HATCH_SLANT).ceil() as usize;
+            let per_step = (w.far - w.near).norm() / w.steps as f64;
+            let n = (back as f64 / per_step.max(1e-9)).ceil() as usize;
+            last = k.saturating_sub(n + 1).min(last).max(block_end);
+        }
+        last
+    }
+
+    /// A guide from step `last` to its far end, `span` page units long, in
+    /// chords, hatched on its outer side clear of the rod (`guide-{name}`,
+    /// `hatch-{name}-k`).
+    fn guide(&mut self, name: &str, w: &Walk, last: usize, span: f64) {
+        let (slot, s1) = (w.slot, w.slot.range.1);
+        let chords = if slot.straight {
+            1
+        } else {
+            (span / CHORD).ceil().max(1.0) as usize
+        };
+        let at_last = w.at(last);
+        // From the open end to the far end.
+        let points: Vec<Point> = (0..=chords)
+            .map(|j| {
+                let s = at_last + (s1 - at_last) * j as f64 / chords as f64;
+                (slot.point)(s, w.delta)
+            })
+            .collect();
+        self.push(
+            format!("guide-{name}"),
+            Role::Frame,
+            Shape::Polyline {
+                points: points.clone(),
+                closed: false,
+            },
+        );
+        // (No direction, so no hatching, for a segment not in `points`.)
+        let outward = |j: usize| {
+            let (Some(&a), Some(&b)) = (points.get(j), points.get(j + 1)) else {
+                return Vector::zeros();
+            };
+            let n = perp(&(b - a));
+            // Away from the slot's middle.
+            let mid = (slot.point)(
+                at_last + (s1 - at_last) * (j as f64 + 0.5) / chords as f64,
+                0.0,
+            );
+            if n.dot(&(a - mid)) >= 0.0 { n } else { -n }
+        };
+        let runs = self.clear_runs(&points, &outward, &[w.rod], 0.0);
+        self.emit_hatch(name, &points, &outward, &runs);
+    }
+
+    /// The runs of hatch strokes along the polyline `points` on the sides
+    /// `side(chord)` that keep [`HATCH_CLEAR`] from every segment of
+    /// `avoid` and `ends` from the polyline's ends: (chord, from, to) in
+    /// page units along the chord, covering whole strokes as the renderer
+    /// places them.
+    fn clear_runs(
+        &self,
+        points: &[Point],
+        side: &dyn Fn(usize) -> Vector,
+        avoid: &[Seg],
+        ends: f64,
+    ) -> Runs {
+        let avoid: Vec<Seg> = avoid
+            .iter()
+            .map(|(a, b)| (self.page_point(*a), self.page_point(*b)))
+            .collect();
+        let total: f64 = points
+            .iter()
+            .zip(points.iter().skip(1))
+            .map(|(&a, &b)| (self.page_point(b) - self.page_point(a)).norm())
+            .sum();
+        let mut runs = Vec::new();
+        let mut walked = 0.0;
+        for (j, (&a, &b)) in points.iter().zip(points.iter().skip(1)).enumerate() {
+            let (a, b) = (self.page_point(a), self.page_point(b));
+            let len = (b - a).norm();
+            let (Some(t), Some(n)) = (unit(b - a), unit(self.transform().apply_vector(side(j))))
+            else {
+                walked += len;
+                continue;
+            };
+            let mut run: Option<(f64, f64)> = None;
+            let mut s = 0.5 * HATCH_SPACING;
+            let mut strokes = 0;
+            while s < len {
+                let p = a + t * s;
+                let q = p + n * HATCH_DEPTH - t * (0.8 * HATCH_DEPTH);
+                let along = walked + s;
+                let clear = along >= ends
+                    && along <= total - ends
+                    && avoid
+                        .iter()
+                        .all(|(c, d)| segment_distance(p, q, *c, *d) > HATCH_CLEAR);
+                if clear {
+                    run = Some(match run {
+                        Some((first, _)) => (first, s),
+                        None => (s, s),
+                    });
+                    strokes += 1;
+                } else if let Some((first, last)) = run.take() {
+                    if strokes >= HATCH_RUN {
+                        runs.push((j, first, last));
+                    }
+                    strokes = 0;
+                }
+                s += HATCH_SPACING;
+            }
+            if let Some((first, last)) = run
+                && strokes >= HATCH_RUN
+            {
+                runs.push((j, first, last));
+            }
+            walked += len;
+        }
+        runs
+    }
+
+    /// The hatching of `runs` along the polyline `points`, on the sides
+    /// `side(chord)` (`hatch-{name}-k`).
+    fn emit_hatch(
+        &mut self,
+        name: &str,
+        points: &[Point],
+        side: &dyn Fn(usize) -> Vector,
+        runs: &[(usize, f64, f64)],
+    ) {
+        for (k, &(j, first, last)) in runs.iter().enumerate() {
+            let (Some(&a), Some(&b)) = (points.get(j), points.get(j + 1)) else {
+                continue;
+            };
+            let (a, b) = (self.page_point(a), self.page_point(b));
+            let Some(t) = unit(b - a) else { continue };
+            let half = 0.5 * HATCH_SPACING;
+            let from = self.transform().invert(a + t * (first - half));
+            let to = self.transform().invert(a + t * (last + half));
+            self.push(
+                format!("hatch-{name}-{k}"),
+                Role::Frame,
+                Shape::Hatch {
+                    from,
+                    to,
+                    side: side(j),
+                },
+            );
+        }
+    }
+}
+
+fn unit(v: Vector) -> Option<Vector> {
+    let n = v.norm();
+    (n > 0.0 && n.is_finite()).then(|| v / n)
+}
+
+/// Where the segments `a b` and `c d` cross: the sine of the angle between
+/// them; `None` if they do not.
+fn crossing(a: Point, b: Point, c: Point, d: Point) -> Option<f64> {
+    let o = |p: Point, q: Point, r: Point| cross(&(q - p), &(r - p));
+    let (d1, d2) = (o(c, d, a), o(c, d, b));
+    let (d3, d4) = (o(a, b, c), o(a, b, d));
+    if d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != 0.0 || d2 != 0.0) {
+        let (u, v) = (unit(b - a)?, unit(d - c)?);
+        Some(cross(&u, &v).abs())
+    } else {
+        None
+    }
+}
+
+/// The distance between the segments `a b` and `c d` (0 where they
+/// cross; a segment may be a point).
+fn segment_distance(a: Point, b: Point, c: Point, d: Point) -> f64 {
+    if crossing(a, b, c, d).is_some() {
+        return 0.0;
+    }
+    [
+        point_segment(a, c, d),
+        point_segment(b, c, d),
+        point_segment(c, a, b),
+        point_segment(d, a, b),
+    ]
+    .into_iter()
+    .fold(f64::INFINITY, f64::min)
+}
+
+fn point_segment(p: Point, a: Point, b: Point) -> f64 {
+    let ab = b - a;
+    let len2 = ab.norm_squared();
+    if len2 == 0.0 {
+        return (p - a).norm();
+    }
+    let t = ((p - a).dot(&ab) / len2).clamp(0.0, 1.0);
+    (p - (a + ab * t)).norm()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn distances_between_segments() {
+        let p = |x: f64, y: f64| Point::new(x, y);
+        assert_eq!(
+            segment_distance(p(0., 0.), p(2., 0.), p(1., -1.), p(1., 1.)),
+            0.0
+        );
+        assert_eq!(
+            segment_distance(p(0., 0.), p(2., 0.), p(3., 0.), p(4., 1.)),
+            1.0
+        );
+        assert_eq!(
+            segment_distance(p(0., 0.), p(2., 0.), p(1., 2.), p(1., 5.)),
+            2.0
+        );
+        assert!(crossing(p(0., 0.), p(2., 0.), p(1., 1.), p(1., 3.)).is_none());
+        let sin = crossing(p(0., 0.), p(2., 0.), p(0., -1.), p(2., 1.)).unwrap();
+        assert!((sin - 0.5f64.sqrt()).abs() < 1e-15);
+    }
+}
