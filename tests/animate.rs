@@ -111,7 +111,7 @@ fn every_frame_is_the_still_figure_of_the_held_series() {
     let stills = stills(&scene, &animation);
     assert_eq!(animation.frames().len(), 12);
     for (frame, still) in animation.frames().iter().zip(&stills) {
-        assert_eq!(frame.svg(), still, "at {}°", frame.angle().degrees());
+        assert_eq!(&frame.svg(), still, "at {}°", frame.angle().degrees());
     }
     // ... and the self-playing SVG holds them, ids un-prefixed, byte for
     // byte, as does the page.
@@ -452,7 +452,7 @@ fn frames_drawn_alone_are_plates() {
     ] {
         let animation = Animation::new(&scene(name), 8, 4.0).unwrap();
         for frame in animation.frames() {
-            for f in plate_failures(frame.svg()) {
+            for f in plate_failures(&frame.svg()) {
                 report.push(format!("{name} at {}°: {f}", frame.angle().degrees()));
             }
         }

@@ -1,18 +1,18 @@
-//! The frames of an animation: each a still figure's SVG, and the same
-//! SVG with its ids made its own, to sit beside the others in one
+//! The frames of an animation: each a still figure, written as its own
+//! SVG or with its ids made its own, to sit beside the others in one
 //! document.
 
 use crate::error::{Error, Result};
 use crate::figure::{Figure, PageUnit};
-use crate::render::to_svg;
+use crate::render::{SvgOptions, metadata_of, svg_body, to_svg};
 use crate::{angle::Angle, scene::Scene};
+use serde_json::{Map, Value};
 
 /// One frame: the crank angle and the still figure drawn there.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
     angle: Angle,
-    svg: String,
-    height: f64,
+    figure: Figure,
 }
 
 impl Frame {
@@ -24,13 +24,19 @@ impl Frame {
     /// The still figure as its own SVG document: what
     /// [`render::to_svg`](crate::render::to_svg) writes for the figure of
     /// [`Scene::frames`] at this angle, byte for byte.
-    pub fn svg(&self) -> &str {
-        &self.svg
+    pub fn svg(&self) -> String {
+        to_svg(&self.figure)
+    }
+
+    /// The JSON object of the still figure's `<metadata>`
+    /// ([`render::metadata_of`](crate::render::metadata_of)).
+    pub fn metadata(&self) -> Map<String, Value> {
+        metadata_of(&self.figure)
     }
 
     /// The figure's page height in page units.
     pub fn height(&self) -> f64 {
-        self.height
+        self.figure.height()
     }
 
     /// The ids' prefix of frame `index` in an animation: `f000-`, `f001-`,
@@ -40,10 +46,11 @@ impl Frame {
     }
 
     /// What the still figure draws, without its root element, every id and
-    /// reference to one prefixed with `prefix` ([`prefixed`]), to be set
-    /// in a group or an inline `<svg>` beside other frames.
+    /// reference to one prefixed with `prefix`
+    /// ([`SvgOptions::with_id_prefix`]), to be set in a group or an inline
+    /// `<svg>` beside other frames.
     pub fn body(&self, prefix: &str) -> String {
-        prefixed(inner(&self.svg), prefix)
+        svg_body(&self.figure, &SvgOptions::default().with_id_prefix(prefix))
     }
 }
 
@@ -156,8 +163,7 @@ impl Frame {
     fn of(angle: Angle, figure: &Figure) -> Self {
         Frame {
             angle,
-            svg: to_svg(figure),
-            height: figure.height(),
+            figure: figure.clone(),
         }
     }
 }
@@ -213,60 +219,9 @@ pub(super) fn draw(
     Ok((frames, sheet))
 }
 
-/// The content of an SVG document: what lies between its root's start
-/// and end tags (all of it when there is no root).
-fn inner(svg: &str) -> &str {
-    let start = svg
-        .find("<svg")
-        .and_then(|at| svg[at..].find('>').map(|end| at + end + 1))
-        .unwrap_or(0);
-    let end = svg
-        .rfind("</svg>")
-        .filter(|&e| e >= start)
-        .unwrap_or(svg.len());
-    svg[start..end].trim_matches('\n')
-}
-
-/// `svg` (markup as the renderer writes it) with every id and every
-/// reference to one made to start with `prefix`: the `id="…"` attributes,
-/// `url(#…)` and `href="#…"`. Only the tags are rewritten, never text or
-/// metadata between them, so a title or a label that reads `id="x"` is
-/// left alone. Markup without ids comes back unchanged.
-pub fn prefixed(svg: &str, prefix: &str) -> String {
-    let mut out = String::with_capacity(svg.len() + svg.len() / 16);
-    let mut rest = svg;
-    while let Some(open) = rest.find('<') {
-        out.push_str(&rest[..open]);
-        let close = rest[open..].find('>').map_or(rest.len(), |c| open + c + 1);
-        out.push_str(&prefix_tag(&rest[open..close], prefix));
-        rest = &rest[close..];
-    }
-    out.push_str(rest);
-    out
-}
-
-/// One tag with its ids and references prefixed.
-fn prefix_tag(tag: &str, prefix: &str) -> String {
-    tag.replace(" id=\"", &format!(" id=\"{prefix}"))
-        .replace("url(#", &format!("url(#{prefix}"))
-        .replace("href=\"#", &format!("href=\"#{prefix}"))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn ids_and_references_are_prefixed_in_tags_only() {
-        let svg = r##"<svg width="1"><title>id="x" url(#y)</title><g id="a" clip-path="url(#c)"><use href="#a"/></g></svg>"##;
-        let body = prefixed(inner(svg), "f001-");
-        assert_eq!(
-            body,
-            r##"<title>id="x" url(#y)</title><g id="f001-a" clip-path="url(#f001-c)"><use href="#f001-a"/></g>"##
-        );
-        assert_eq!(prefixed("plain", "p-"), "plain");
-        assert_eq!(inner("no root"), "no root");
-    }
 
     #[test]
     fn prefixes_keep_their_order() {

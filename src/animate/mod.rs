@@ -23,7 +23,7 @@ mod page;
 mod svg;
 
 pub use format::AnimationFormat;
-pub use frames::{Frame, MAX_EVALUATIONS, prefixed};
+pub use frames::{Frame, MAX_EVALUATIONS};
 
 use crate::error::{Error, Result};
 use crate::figure::PageUnit;

@@ -18,7 +18,7 @@
 use super::{FRAMES_HERE, Frame, Reel, split};
 use crate::error::Result;
 use crate::render::{Element, Node, fmt, root_size};
-use serde_json::{Map, Value, json};
+use serde_json::{Value, json};
 
 /// The document written to `sink` a frame at a time, as `frames` are
 /// drawn.
@@ -113,7 +113,7 @@ pub(super) fn seconds(period: f64) -> String {
 /// The document's metadata: the first frame's, less what belongs to its
 /// pose, with the animation's own.
 fn metadata(animation: &Reel) -> Element {
-    let mut meta = frame_metadata(animation.first().svg()).unwrap_or_default();
+    let mut meta = animation.first().metadata();
     for key in ["angle_deg", "points", "evaluations"] {
         meta.remove(key);
     }
@@ -130,20 +130,6 @@ fn metadata(animation: &Reel) -> Element {
     );
     let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
     Element::text("metadata", json)
-}
-
-/// The JSON object of a still figure's `<metadata>`.
-fn frame_metadata(svg: &str) -> Option<Map<String, Value>> {
-    let start = svg.find("<metadata>")? + "<metadata>".len();
-    let end = start + svg[start..].find("</metadata>")?;
-    let text = svg[start..end]
-        .replace("&lt;", "<")
-        .replace("&gt;", ">")
-        .replace("&amp;", "&");
-    match serde_json::from_str(&text).ok()? {
-        Value::Object(map) => Some(map),
-        _ => None,
-    }
 }
 
 #[cfg(test)]
@@ -168,13 +154,5 @@ mod tests {
         assert_eq!(key_time(1, 2), "0.5");
         assert_eq!(seconds(0.0001), "0.001");
         assert_eq!(seconds(2.5), "2.5");
-    }
-
-    #[test]
-    fn metadata_is_read_back_unescaped() {
-        let svg = r#"<svg><metadata>{"title":"a &lt;b&gt; &amp; c"}</metadata></svg>"#;
-        let meta = frame_metadata(svg).unwrap();
-        assert_eq!(meta["title"], "a <b> & c");
-        assert!(frame_metadata("<svg/>").is_none());
     }
 }

@@ -12,7 +12,7 @@ use super::{Handout, figures};
 use crate::construct::Reading;
 use crate::error::Result;
 use crate::html::{document, rich};
-use crate::render::to_svg;
+use crate::render::to_svg_with;
 use crate::{catalogue::FigureName, scene::Layer};
 use maud::html;
 
@@ -42,8 +42,11 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
     #[allow(clippy::indexing_slicing)]
     let panel = &figure.panels()[0];
     let step = figures::grid_step(panel, GRID_SQUARE);
-    let svg = figures::under_drawing(&to_svg(&figure), &figures::grid(panel, step));
-    let svg = figures::inline_svg(&svg, "sheet");
+    let grid = figures::grid(panel, step);
+    let svg = to_svg_with(
+        &figure,
+        &figures::inline_options("sheet").with_underlay(grid),
+    );
     let u = h.units().length().as_str().to_string();
     let scale = round_scale(figure.width(), panel.transform().scale(), &u, h.paper());
     let (svg, stated) = match &scale {

@@ -5,7 +5,7 @@ use super::Handout;
 use crate::catalogue::FigureOptions;
 use crate::error::Result;
 use crate::figure::{Figure, Panel, Part, Role};
-use crate::render::{fmt, to_svg};
+use crate::render::{Element, SvgOptions, fmt, to_svg_with};
 use crate::{catalogue::FigureName, scene::Layer};
 
 /// The mechanism figure `name` (one drawn by a scene) for the handout's
@@ -84,19 +84,18 @@ pub(super) fn only_the_mechanism(fitted: &Figure) -> Figure {
 /// The SVG of `figure` to be inlined in a page that holds other figures:
 /// every `id` prefixed with `prefix-`, and every reference to one
 /// (`url(#…)`, `href="#…"`) with it, so that no two elements of the page
-/// share an id and each figure's references stay its own. The SVG
-/// namespace attribute, which HTML does not need, is left out, so that the
-/// page names no address.
+/// share an id and each figure's references stay its own; without the SVG
+/// namespace attribute, which HTML does not need, so that the page names
+/// no address.
 pub(super) fn inline(figure: &Figure, prefix: &str) -> String {
-    inline_svg(&to_svg(figure), prefix)
+    to_svg_with(figure, &inline_options(prefix))
 }
 
-/// [`inline`] on SVG text.
-pub(super) fn inline_svg(svg: &str, prefix: &str) -> String {
-    svg.replace(" xmlns=\"http://www.w3.org/2000/svg\"", "")
-        .replace(" id=\"", &format!(" id=\"{prefix}-"))
-        .replace("url(#", &format!("url(#{prefix}-"))
-        .replace("href=\"#", &format!("href=\"#{prefix}-"))
+/// The options of [`inline`].
+pub(super) fn inline_options(prefix: &str) -> SvgOptions {
+    SvgOptions::default()
+        .with_id_prefix(&format!("{prefix}-"))
+        .inline()
 }
 
 /// The dynamics diagram `name` for the handout's engine, pose, speed,
@@ -119,9 +118,10 @@ pub(super) fn dynamics(h: &Handout, name: FigureName) -> Result<Figure> {
 }
 
 /// A faint grid of squares `step` world units wide over the mechanism's
-/// panel, lines through the crank centre C, as SVG to be set just above
-/// the figure's paper: the page on which a student measures and draws.
-pub(super) fn grid(panel: &Panel, step: f64) -> String {
+/// panel, lines through the crank centre C, a layer to be set just above
+/// the figure's paper ([`SvgOptions::with_underlay`]): the page on which
+/// a student measures and draws.
+pub(super) fn grid(panel: &Panel, step: f64) -> Element {
     let rect = panel.rect();
     let map = panel.transform();
     let corners = [
@@ -154,9 +154,16 @@ pub(super) fn grid(panel: &Panel, step: f64) -> String {
         d.push_str(&format!("M{} {}H{}", fmt(left), fmt(y), fmt(right)));
         k += 1.0;
     }
-    format!(
-        "<g id=\"grid\" class=\"grid\"><path d=\"{d}\" fill=\"none\" stroke=\"#9ab8d6\" stroke-opacity=\"0.55\" stroke-width=\"0.5\"/></g>"
-    )
+    let path = Element::new("path")
+        .set("d", d)
+        .set("fill", "none")
+        .set("stroke", "#9ab8d6")
+        .set("stroke-opacity", "0.55")
+        .set("stroke-width", "0.5");
+    Element::new("g")
+        .set("id", "grid")
+        .set("class", "grid")
+        .add(path)
 }
 
 /// A round grid step (1, 2 or 5 × 10^k world units) that makes squares
@@ -174,21 +181,6 @@ pub(super) fn grid_step(panel: &Panel, target: f64) -> f64 {
                 .total_cmp(&(b.ln() - raw.ln()).abs())
         })
         .unwrap_or(decade)
-}
-
-/// `svg` with `layer` set just above its paper (the white page), below
-/// everything drawn.
-pub(super) fn under_drawing(svg: &str, layer: &str) -> String {
-    match svg.find("id=\"paper\"") {
-        Some(at) => match svg[at..].find("/>") {
-            Some(end) => {
-                let cut = at + end + 2;
-                format!("{}\n{layer}{}", &svg[..cut], &svg[cut..])
-            }
-            None => svg.to_string(),
-        },
-        None => svg.to_string(),
-    }
 }
 
 #[cfg(test)]
@@ -221,7 +213,8 @@ mod tests {
         let panel = &f.panels()[0];
         let step = grid_step(panel, 18.0);
         assert!([1.0, 2.0, 5.0, 10.0, 20.0].contains(&step), "{step}");
-        let svg = under_drawing(&to_svg(&f), &grid(panel, step));
+        let options = SvgOptions::default().with_underlay(grid(panel, step));
+        let svg = to_svg_with(&f, &options);
         let paper = svg.find("id=\"paper\"").unwrap();
         let grid_at = svg.find("id=\"grid\"").unwrap();
         let first_link = svg.find("link-crank").unwrap();

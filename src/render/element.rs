@@ -91,6 +91,50 @@ impl Element {
         self.children.push(child.into());
     }
 
+    /// Every `id` of the element and its descendants made to start with
+    /// `prefix`, and every reference to one (`url(#…)` in a value,
+    /// `href="#…"`); text and markup held as text are left alone.
+    pub(crate) fn prefix_ids(&mut self, prefix: &str) {
+        for (name, value) in &mut self.attributes {
+            let prefixed = match *name {
+                "id" => Some(format!("{prefix}{value}")),
+                "href" | "xlink:href" => value
+                    .strip_prefix('#')
+                    .map(|rest| format!("#{prefix}{rest}")),
+                _ if value.contains("url(#") => {
+                    Some(value.replace("url(#", &format!("url(#{prefix}")))
+                }
+                _ => None,
+            };
+            if let Some(v) = prefixed {
+                *value = Value::Owned(v);
+            }
+        }
+        for child in &mut self.children {
+            if let Node::Element(e) = child {
+                e.prefix_ids(prefix);
+            }
+        }
+    }
+
+    /// The element's children as the document writes them, without the
+    /// element's own tags: one to a line, no line break before the first
+    /// or after the last.
+    pub(crate) fn children_text(&self) -> String {
+        let mut out = String::with_capacity(1 << 16);
+        for (i, child) in self.children.iter().enumerate() {
+            if i > 0 {
+                out.push('\n');
+            }
+            match child {
+                Node::Element(e) => e.write(&mut out, false),
+                Node::Text(t) => escape_into(&mut out, t, false),
+                Node::Raw(r) | Node::Block(r) => out.push_str(r),
+            }
+        }
+        out
+    }
+
     /// The element as a document: every child on its own line, the
     /// whole ended by a line break.
     pub(crate) fn to_document(&self) -> String {
@@ -186,6 +230,24 @@ fn escape_into(out: &mut String, s: &str, quotes: bool) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ids_and_references_are_prefixed_in_attributes_only() {
+        let mut root = Element::new("svg")
+            .add(Element::text("title", "id=\"x\" url(#y)".into()))
+            .add(
+                Element::new("g")
+                    .set("id", "a")
+                    .set("clip-path", "url(#c)")
+                    .add(Element::new("use").set("href", "#a"))
+                    .add(Element::new("use").set("href", "other.svg#a")),
+            );
+        root.prefix_ids("f001-");
+        assert_eq!(
+            root.children_text(),
+            "<title>id=\"x\" url(#y)</title>\n<g clip-path=\"url(#f001-c)\" id=\"f001-a\">\n<use href=\"#f001-a\"/>\n<use href=\"other.svg#a\"/>\n</g>"
+        );
+    }
 
     #[test]
     fn attributes_are_written_in_name_order_and_escaped() {

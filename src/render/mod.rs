@@ -31,9 +31,9 @@ pub use pending::{Pending, make_pending, remove_pending, uninterrupted};
 pub use png::to_png;
 pub use save::save;
 pub(crate) use svg::root_size;
-pub use svg::to_svg;
 #[cfg(feature = "html")]
 pub use svg::to_svg_with_fonts;
+pub use svg::{SvgOptions, metadata_of, svg_body, to_svg, to_svg_with};
 
 /// Renders SVG text to PNG bytes: built without the `png` feature, this
 /// returns [`Error::Unsupported`](crate::error::Error::Unsupported) whatever the

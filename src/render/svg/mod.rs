@@ -19,6 +19,7 @@ mod lines;
 mod marks;
 mod markup;
 mod notes;
+mod options;
 mod points;
 mod text;
 
@@ -32,7 +33,8 @@ use crate::number::{fmt, fmt_coefficient};
 use crate::render::Element;
 #[cfg(feature = "html")]
 pub use embed::to_svg_with_fonts;
-use serde_json::{Value, json};
+pub use options::SvgOptions;
+use serde_json::{Map, Value, json};
 use text::{ink_box, starts_italic, text_node};
 
 /// The farthest a label's glyphs may be put from its anchor, in font
@@ -379,10 +381,18 @@ fn coefficients(t: &PageFromWorld) -> Value {
         .collect()
 }
 
-/// The `<metadata>` element: the figure's own keys and the renderer's
-/// (`figure`, `style`, `tolerance`, page size, the first panel's map and
-/// every panel's map and rectangle), as JSON.
+/// The `<metadata>` element: [`metadata_of`] as JSON.
 fn metadata(figure: &Figure) -> Element {
+    let json =
+        serde_json::to_string(&Value::Object(metadata_of(figure))).unwrap_or_else(|_| "{}".into());
+    Element::text("metadata", json)
+}
+
+/// The JSON object of a figure's `<metadata>` (docs/design.md §4): the
+/// figure's own keys and the renderer's (`figure`, `style`, `tolerance`,
+/// page size, the first panel's map and every panel's map and
+/// rectangle).
+pub fn metadata_of(figure: &Figure) -> Map<String, Value> {
     let mut meta = figure.metadata().clone();
     meta.insert("figure".into(), json!(figure.name()));
     meta.insert("style".into(), json!(figure.style().name()));
@@ -404,8 +414,7 @@ fn metadata(figure: &Figure) -> Element {
         })
     });
     meta.insert("panels".into(), panels.collect());
-    let json = serde_json::to_string(&Value::Object(meta)).unwrap_or_else(|_| "{}".into());
-    Element::text("metadata", json)
+    meta
 }
 
 /// A page length for the root's `width` or `height`: page units as they
@@ -423,6 +432,24 @@ pub(crate) fn root_size(x: f64, unit: PageUnit) -> String {
 /// data-page-from-world>` per panel. The root's `width` and `height` are
 /// in the figure's [`Figure::size_unit`], its `viewBox` in page units.
 pub fn to_svg(figure: &Figure) -> String {
+    document(figure, &SvgOptions::default()).to_document()
+}
+
+/// [`to_svg`] with `options`: ids prefixed, without the namespace, a
+/// layer under the drawing.
+pub fn to_svg_with(figure: &Figure, options: &SvgOptions) -> String {
+    document(figure, options).to_document()
+}
+
+/// What [`to_svg_with`] writes inside its root element, without the root
+/// (the children one to a line): a frame of an animation, set in a group
+/// of a document that holds the others.
+pub fn svg_body(figure: &Figure, options: &SvgOptions) -> String {
+    document(figure, options).children_text()
+}
+
+/// The root element of [`to_svg_with`].
+fn document(figure: &Figure, options: &SvgOptions) -> Element {
     let style = figure.style();
     let (w, h) = (figure.width(), figure.height());
     let unit = figure.size_unit();
@@ -435,7 +462,11 @@ pub fn to_svg(figure: &Figure) -> String {
         .set("width", fmt(w))
         .set("height", fmt(h))
         .set("fill", style.paper());
-    let mut doc = Element::document()
+    let root = match options.inline {
+        true => Element::new("svg"),
+        false => Element::document(),
+    };
+    let mut doc = root
         .set("width", root_size(w, unit))
         .set("height", root_size(h, unit))
         .set("viewBox", format!("0 0 {} {}", fmt(w), fmt(h)))
@@ -444,9 +475,15 @@ pub fn to_svg(figure: &Figure) -> String {
         doc = doc.add(Element::text("title", title.rich().plain()));
     }
     let mut doc = doc.add(metadata(figure)).add(paper);
+    if let Some(layer) = &options.underlay {
+        doc = doc.add(layer.clone());
+    }
     for panel in figure.panels() {
         let room = label_room(panel, &page);
         doc = doc.add(panel_group(panel, style, figure.font(), &room));
     }
-    doc.to_document()
+    if !options.id_prefix.is_empty() {
+        doc.prefix_ids(&options.id_prefix);
+    }
+    doc
 }
