@@ -751,6 +751,8 @@ class SliderCrank:
         torque: Optional[float],
         friction: Optional[float],
         paper: str,
+        mass: Optional[float] = None,
+        fluctuation: Optional[float] = None,
     ) -> str:
         w = _core.crank_speed(rpm, omega)
         if friction is not None and torque is None:
@@ -767,6 +769,8 @@ class SliderCrank:
             paper,
             _option(torque),
             0.0 if friction is None else _real(friction),
+            _option(mass),
+            _option(fluctuation),
         )
 
     def handout(
@@ -778,13 +782,22 @@ class SliderCrank:
         friction: Optional[float] = None,
         paper: str = "a4",
         out: Union[None, str, "os.PathLike[str]"] = None,
+        *,
+        mass: Optional[float] = None,
+        fluctuation: Optional[float] = None,
     ) -> str:
         """The printable teaching page (HTML) that works this engine
         through textbook §35–37 and Ng step by step at ``theta_deg``, as
         ``slider-crank handout`` writes it; ``paper`` is ``a4`` or
-        ``letter``; speed and load as in :meth:`at`. Written to ``out``
-        too when given; the HTML is returned."""
-        html = self._handout("page", theta_deg, rpm, omega, torque, friction, paper)
+        ``letter``; speed and load as in :meth:`at`. With ``mass`` (the
+        reciprocating mass, slug: the page's gas force is the steam
+        indicator diagram in lbf/ft², so the engine's units are ft and
+        lbf) it also works the dynamics (``--mass``): the inertia force,
+        the crank effort, the turning-moment diagram and the flywheel for
+        the coefficient of fluctuation of speed ``fluctuation`` (0.02 when
+        not given, ``--fluctuation``). Written to ``out`` too when given;
+        the HTML is returned."""
+        html = self._handout("page", theta_deg, rpm, omega, torque, friction, paper, mass, fluctuation)
         if out is not None:
             _write(out, html)
         return html

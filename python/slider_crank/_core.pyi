@@ -97,6 +97,8 @@ def handout(
     paper: str = "a4",
     torque: Optional[float] = None,
     friction: float = 0.0,
+    mass: Optional[float] = None,
+    fluctuation: Optional[float] = None,
 ) -> str: ...
 def table(
     name: str,

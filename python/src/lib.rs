@@ -369,9 +369,12 @@ fn save(py: Python<'_>, svg: &str, path: PathBuf) -> PyResult<()> {
 }
 
 /// The teaching page `slider-crank handout` writes (`which` = "page"),
-/// or its exercise sheet ("exercise") or answer key ("key"), as HTML.
+/// or its exercise sheet ("exercise") or answer key ("key"), as HTML;
+/// with `mass` (and the coefficient of fluctuation of speed
+/// `fluctuation`, 0.02 when not given) the page works the engine's
+/// dynamics too, as `--mass` and `--fluctuation` do.
 #[pyfunction]
-#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, which, paper="a4", torque=None, friction=0.0))]
+#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, which, paper="a4", torque=None, friction=0.0, mass=None, fluctuation=None))]
 #[allow(clippy::too_many_arguments)]
 fn handout(
     py: Python<'_>,
@@ -386,7 +389,19 @@ fn handout(
     paper: &str,
     torque: Option<f64>,
     friction: f64,
+    mass: Option<f64>,
+    fluctuation: Option<f64>,
 ) -> PyResult<String> {
+    if fluctuation.is_some() && mass.is_none() {
+        return Err(PyValueError::new_err(
+            "fluctuation sizes the flywheel of the dynamics: give mass= with it",
+        ));
+    }
+    if mass.is_some() && which != "page" {
+        return Err(PyValueError::new_err(
+            "mass works the dynamics on the teaching page, not on an exercise sheet",
+        ));
+    }
     let mut h = Handout::new(
         engine(crank, rod, offset)?,
         Angle::from_degrees(degrees).map_err(py_err)?,
@@ -398,6 +413,11 @@ fn handout(
     if let Some(t) = torque {
         h = h.with_torque(t, friction).map_err(py_err)?;
     }
+    if let Some(m) = mass {
+        h = h
+            .with_dynamics(m, fluctuation.unwrap_or(DEFAULT_FLUCTUATION))
+            .map_err(py_err)?;
+    }
     py.detach(|| match which {
         "exercise" => h.exercise(),
         "key" => h.key(),
@@ -405,6 +425,9 @@ fn handout(
     })
     .map_err(py_err)
 }
+
+/// The command's default `--fluctuation` of the handout's flywheel.
+const DEFAULT_FLUCTUATION: f64 = 0.02;
 
 /// Ng's torque as implied by Table 2's F column, N·mm (the `table forces`
 /// default).

@@ -35,3 +35,25 @@ def test_bad_handout_options(cli: Cli) -> None:
     with pytest.raises(ValueError) as caught:
         sc.SliderCrank(0.5, 3.0).handout(paper="a3")
     assert str(caught.value) in message, (message, str(caught.value))
+
+
+def test_the_dynamics_page_is_the_command_lines(cli: Cli, tmp_path: Path) -> None:
+    theirs = tmp_path / "theirs.html"
+    cli.stdout(["handout", "--angle=60", "--mass=12", "--fluctuation=0.03", f"--out={theirs}"])
+    html = sc.SliderCrank(0.5, 3.0).handout(60, mass=12, fluctuation=0.03)
+    assert html == theirs.read_text(encoding="utf-8")
+    assert "flywheel" in html.lower()
+    plain = sc.SliderCrank(0.5, 3.0).handout(60)
+    assert "flywheel" not in plain.lower() or len(plain) < len(html)
+
+
+def test_dynamics_keywords_that_go_together() -> None:
+    engine = sc.SliderCrank(0.5, 3.0)
+    with pytest.raises(ValueError, match="give mass= with it"):
+        engine.handout(fluctuation=0.03)
+    with pytest.raises(ValueError) as caught:
+        engine.handout(mass=-1)
+    assert "mass" in str(caught.value)
+    metric = sc.SliderCrank(0.15, 0.9, unit="m", force_unit="N")
+    with pytest.raises(ValueError, match="ft and forces in lbf"):
+        metric.handout(mass=10)
