@@ -31,6 +31,8 @@ const CAPTION_LINE: f64 = 16.0;
 const LEGEND_LINE: f64 = 16.0;
 /// Length of a legend's line sample.
 const KEY: f64 = 28.0;
+/// Room between the plot area and a legend set beside it, page units.
+const LEGEND_GAP: f64 = 16.0;
 
 /// Spacing (page units) of the points a straight line leaves for the
 /// legend to keep clear of.
@@ -106,6 +108,9 @@ pub struct Plot {
     /// Blocks try the bottom corners first (the band [`Plot::band`] keeps
     /// free for them).
     below: bool,
+    /// Where the legend's top left corner goes when it is set beside the
+    /// plot area rather than in a corner of it ([`Plot::with_legend_at`]).
+    legend_at: Option<Point>,
 }
 
 /// What a user can change when a curve reaches the curve engine's limits.
@@ -192,6 +197,7 @@ impl Plot {
             caption: Vec::new(),
             world: None,
             below: false,
+            legend_at: None,
         })
     }
 
@@ -250,6 +256,7 @@ impl Plot {
             caption: Vec::new(),
             world: None,
             below: false,
+            legend_at: None,
         }
     }
 
@@ -258,6 +265,52 @@ impl Plot {
     pub(crate) fn blocks_below(mut self) -> Self {
         self.below = true;
         self
+    }
+
+    /// Sets the legend beside the plot area, on its right at its top,
+    /// instead of in a corner of it: the area narrows by the legend's
+    /// `width` ([`Plot::legend_size`]) and a gap, and the map follows. For
+    /// a panel too short to hold the legend in a corner clear of the
+    /// curves. Where that would leave the area under 40 units wide, the
+    /// legend stays in a corner. Call it before drawing.
+    pub fn with_legend_beside(mut self, width: f64) -> Self {
+        let narrower = self.area.width - width - LEGEND_GAP;
+        if narrower >= 40.0 {
+            self.area = PageRect::new(self.area.x, self.area.y, narrower, self.area.height);
+            self.remap();
+            self.legend_at = Some(Point::new(self.area.x + narrower + LEGEND_GAP, self.area.y));
+        }
+        self
+    }
+
+    /// Sets the legend below the plot area, centred under it between the
+    /// abscissa's title and the caption, instead of in a corner of it: the
+    /// area loses the legend's `height` ([`Plot::legend_size`]) and a gap,
+    /// and the map follows. For a panel too narrow to hold the legend in
+    /// a corner clear of the curves. Where that would leave the area
+    /// under 40 units tall, the legend stays in a corner. Call it before
+    /// drawing.
+    pub fn with_legend_below(mut self, (width, height): (f64, f64)) -> Self {
+        let lower = self.area.height - height - LEGEND_GAP;
+        if lower >= 40.0 {
+            self.area = PageRect::new(self.area.x, self.area.y, self.area.width, lower);
+            self.remap();
+            self.legend_at = Some(Point::new(
+                self.area.x + 0.5 * (self.area.width - width),
+                self.area.y + lower + BOTTOM + 0.5 * LEGEND_GAP,
+            ));
+        }
+        self
+    }
+
+    /// The width and height (page units) a legend of `entries` (markup)
+    /// takes, each with its key, in `font`.
+    pub fn legend_size(entries: &[&str], font: Font) -> (f64, f64) {
+        let lines: Vec<(RichText, Option<Key>)> = entries
+            .iter()
+            .map(|e| (RichText::parse(e), Some(Key::Line(Dash::Solid))))
+            .collect();
+        block_size(&lines, font)
     }
 
     /// Draws dotted grid lines at the labelled ticks.
@@ -850,15 +903,21 @@ impl Plot {
     /// Sets a block of lines in the corner of the plot area where it
     /// covers the fewest drawn points (and no other block).
     fn place(&mut self, block: &Block, taken: &mut Vec<(Point, Point)>) -> Vec<Item> {
-        let width = block
-            .lines
-            .iter()
-            .map(|(t, key)| {
-                t.width(self.font, TICK_TEXT) + if key.is_some() { KEY + 8.0 } else { 0.0 }
-            })
-            .fold(0.0, f64::max)
-            + 14.0;
-        let height = LEGEND_LINE * block.lines.len() as f64 + 8.0;
+        let (width, height) = block_size(&block.lines, self.font);
+        let beside = self
+            .legend_at
+            .filter(|_| block.id == format!("{}-legend", self.name));
+        let lo = match beside {
+            Some(lo) => lo,
+            None => self.corner(width, height, taken),
+        };
+        taken.push((lo, lo + Vector::new(width, height)));
+        self.block_items(block, lo, width, height)
+    }
+
+    /// The corner of the plot area where a block `width` × `height`
+    /// covers the fewest drawn points (and no block in `taken`).
+    fn corner(&self, width: f64, height: f64, taken: &[(Point, Point)]) -> Point {
         let a = self.area;
         let inset = 8.0;
         let xs = [
@@ -897,10 +956,12 @@ impl Plot {
                 }
             }
         }
-        let Some((_, lo)) = best else {
-            return Vec::new();
-        };
-        taken.push((lo, lo + Vector::new(width, height)));
+        best.map_or(Point::new(a.x, a.y), |(_, lo)| lo)
+    }
+
+    /// The items of `block` set with its top left corner at `lo` in a box
+    /// `width` × `height`.
+    fn block_items(&self, block: &Block, lo: Point, width: f64, height: f64) -> Vec<Item> {
         let mut items = Vec::new();
         if block.lines.iter().any(|(_, k)| k.is_some()) {
             let hi = lo + Vector::new(width, height);
@@ -992,6 +1053,16 @@ impl Plot {
         }
         Panel::new(self.panel_id(), self.rect, self.map, items)
     }
+}
+
+/// The width and height (page units) of a block of `lines`.
+fn block_size(lines: &[(RichText, Option<Key>)], font: Font) -> (f64, f64) {
+    let width = lines
+        .iter()
+        .map(|(t, key)| t.width(font, TICK_TEXT) + if key.is_some() { KEY + 8.0 } else { 0.0 })
+        .fold(0.0, f64::max)
+        + 14.0;
+    (width, LEGEND_LINE * lines.len() as f64 + 8.0)
 }
 
 #[cfg(test)]
