@@ -1244,51 +1244,76 @@ fn points_of(tag: &str) -> Vec<(f64, f64)> {
     numbers.chunks(2).map(|p| (p[0], p[1])).collect()
 }
 
-/// The slot-convergence figure's legend on its own page and every fixed
-/// page: no series' line or marker, nor the slope or the rounding's line,
-/// passes through its box (at 800 × 300 the series crossed the legend set
-/// in the corner least crossed, the rounding's dotted line under its last
-/// entry; at 120 mm and 4.5 in the legend, most of the plot's width, lay
-/// on the markers).
+/// The legend boxes of every figure on its own page and every fixed page:
+/// no curve, marker or guide passes through one (on narrow pages the
+/// legends of approximation-error, flywheel, rod-motion, Ng's Figs. 7 and 8,
+/// fig-64's time base and slot-convergence lay on their curves; a legend
+/// no corner holds clear now goes below the plot or beside it). Left as
+/// they are, two known cases: curve-benchmark at 800 × 300 (two plots side
+/// by side, neither with room for its legend outside) and fig-64's
+/// mechanism panel at 120 mm and 4.5 in (a legend under the distance base
+/// drawn on the mechanism).
 #[test]
-fn the_slot_convergence_legend_is_clear_of_the_curves_on_every_page() {
+fn legends_are_clear_of_the_curves_on_every_page() {
+    let known = [
+        ("curve-benchmark", "800"),
+        ("fig-64-velocity-diagrams", "120mm"),
+        ("fig-64-velocity-diagrams", "4.5in"),
+    ];
     let mut pages: Vec<Option<(&str, Option<&str>)>> = vec![None];
     pages.extend(common::FIXED_PAGES.iter().map(|(w, h)| Some((*w, *h))));
-    for page in pages {
-        let options = page.map_or_else(FigureOptions::default, |(w, h)| common::on_page(w, h));
-        let svg = to_svg(&FigureName::SlotConvergence.figure(&options).unwrap());
-        let boxed = points_of(tag(&svg, "convergence-legend-box").unwrap());
-        let (x0, x1) = (boxed[0].0.min(boxed[1].0), boxed[0].0.max(boxed[1].0));
-        let (y0, y1) = (boxed[1].1.min(boxed[2].1), boxed[1].1.max(boxed[2].1));
-        let inside = |(x, y): (f64, f64)| x > x0 && x < x1 && y > y0 && y < y1;
-        for element in svg.split('<').filter(|e| {
-            ["id=\"series-", "id=\"point-", "id=\"guide-"]
+    let mut crossed = Vec::new();
+    for name in FigureName::ALL {
+        for page in &pages {
+            if known
                 .iter()
-                .any(|id| e.contains(id))
-        }) {
-            let tag = format!("<{element}");
-            let pts = points_of(&tag);
-            // Every vertex, and along each segment every unit.
-            for w in pts.windows(2) {
-                let (a, b) = (w[0], w[1]);
-                let n = ((b.0 - a.0).hypot(b.1 - a.1)).ceil().max(1.0) as usize;
-                for k in 0..=n {
-                    let t = k as f64 / n as f64;
-                    let p = (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t);
-                    assert!(
-                        !inside(p),
-                        "{page:?}: {} at {p:?} in the legend",
-                        &tag[..60.min(tag.len())]
-                    );
-                }
+                .any(|(n, w)| *n == name.name() && Some(*w) == page.map(|p| p.0))
+            {
+                continue;
             }
-            for p in pts {
-                assert!(
-                    !inside(p),
-                    "{page:?}: {} at {p:?} in the legend",
-                    &tag[..60.min(tag.len())]
+            let options = page.map_or_else(FigureOptions::default, |(w, h)| common::on_page(w, h));
+            let Ok(figure) = name.figure(&options) else {
+                continue;
+            };
+            let svg = to_svg(&figure);
+            for box_tag in svg.split('<').filter(|e| e.contains("-legend-box\"")) {
+                let boxed = points_of(&format!("<{box_tag}"));
+                let xs = boxed.iter().map(|p| p.0);
+                let ys = boxed.iter().map(|p| p.1);
+                let (x0, x1) = (
+                    xs.clone().fold(f64::MAX, f64::min),
+                    xs.fold(f64::MIN, f64::max),
                 );
+                let (y0, y1) = (
+                    ys.clone().fold(f64::MAX, f64::min),
+                    ys.fold(f64::MIN, f64::max),
+                );
+                let inside = |(x, y): (f64, f64)| x > x0 && x < x1 && y > y0 && y < y1;
+                for element in svg.split('<').filter(|e| {
+                    e.contains("class=\"curve\"")
+                        && !e.contains("-key-")
+                        && (e.starts_with("path") || e.starts_with("circle"))
+                }) {
+                    let pts = points_of(&format!("<{element}"));
+                    let along = pts.windows(2).flat_map(|w| {
+                        let (a, b) = (w[0], w[1]);
+                        let n = ((b.0 - a.0).hypot(b.1 - a.1)).ceil().clamp(1.0, 1e5) as usize;
+                        (0..=n).map(move |k| {
+                            let t = k as f64 / n as f64;
+                            (a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t)
+                        })
+                    });
+                    if pts.iter().copied().chain(along).any(inside) {
+                        let id = element
+                            .split("id=\"")
+                            .nth(1)
+                            .and_then(|t| t.split('"').next());
+                        crossed.push(format!("{} on {page:?}: {id:?}", name.name()));
+                        break;
+                    }
+                }
             }
         }
     }
+    assert!(crossed.is_empty(), "{crossed:#?}");
 }

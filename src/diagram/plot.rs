@@ -909,15 +909,16 @@ impl Plot {
             .filter(|_| block.id == format!("{}-legend", self.name));
         let lo = match beside {
             Some(lo) => lo,
-            None => self.corner(width, height, taken),
+            None => self.corner(width, height, taken).0,
         };
         taken.push((lo, lo + Vector::new(width, height)));
         self.block_items(block, lo, width, height)
     }
 
     /// The corner of the plot area where a block `width` × `height`
-    /// covers the fewest drawn points (and no block in `taken`).
-    fn corner(&self, width: f64, height: f64, taken: &[(Point, Point)]) -> Point {
+    /// covers the fewest drawn points (and no block in `taken`), and how
+    /// many it covers there.
+    fn corner(&self, width: f64, height: f64, taken: &[(Point, Point)]) -> (Point, usize) {
         let a = self.area;
         let inset = 8.0;
         let xs = [
@@ -930,7 +931,7 @@ impl Plot {
             a.y + a.height - inset - height,
             a.y + 0.5 * (a.height - height),
         ];
-        let mut best: Option<(f64, Point)> = None;
+        let mut best: Option<(f64, Point, usize)> = None;
         for (j, y) in ys.iter().enumerate() {
             for (i, x) in xs.iter().enumerate() {
                 let lo = Point::new(*x, *y);
@@ -938,7 +939,8 @@ impl Plot {
                 let hit = |p: &Point| {
                     p.x >= lo.x - 3.0 && p.x <= hi.x + 3.0 && p.y >= lo.y - 3.0 && p.y <= hi.y + 3.0
                 };
-                let covered = self.drawn.iter().filter(|p| hit(p)).count() as f64;
+                let count = self.drawn.iter().filter(|p| hit(p)).count();
+                let covered = count as f64;
                 let clash = taken.iter().any(|(l, h)| {
                     l.x < hi.x + 4.0 && h.x > lo.x - 4.0 && l.y < hi.y + 4.0 && h.y > lo.y - 4.0
                 });
@@ -951,12 +953,12 @@ impl Plot {
                 };
                 let order = (i.min(2) + row) as f64 * 0.01;
                 let score = covered + if clash { 1e6 } else { 0.0 } + order;
-                if best.is_none_or(|(s, _)| score < s) {
-                    best = Some((score, lo));
+                if best.is_none_or(|(s, _, _)| score < s) {
+                    best = Some((score, lo, count));
                 }
             }
         }
-        best.map_or(Point::new(a.x, a.y), |(_, lo)| lo)
+        best.map_or((Point::new(a.x, a.y), 0), |(_, lo, count)| (lo, count))
     }
 
     /// The items of `block` set with its top left corner at `lo` in a box
@@ -1019,8 +1021,37 @@ impl Plot {
         items
     }
 
+    /// A plot with axes whose legend no corner holds clear of what is
+    /// drawn (a narrow or short page) with the legend set below the plot
+    /// when it is wider than half the area, else beside it where that
+    /// leaves the plot at least half its width
+    /// ([`Plot::with_legend_below`], [`Plot::with_legend_beside`]); the
+    /// curves, kept in world coordinates, follow the smaller area. A
+    /// legend neither takes stays in its least covered corner.
+    fn legend_clear_of_the_curves(self) -> Self {
+        if self.axes.is_none() || self.legend_at.is_some() || self.legend.is_empty() {
+            return self;
+        }
+        let (width, height) = block_size(&self.legend, self.font);
+        if self.corner(width, height, &[]).1 == 0 {
+            return self;
+        }
+        let wide = 2.0 * width > self.area.width;
+        let plot = match wide {
+            true => self.with_legend_below((width, height)),
+            false => self,
+        };
+        // Below takes a wide legend; beside, a legend that leaves the
+        // plot at least half its width.
+        match plot.legend_at.is_none() && 2.0 * width <= plot.area.width - LEGEND_GAP {
+            true => plot.with_legend_beside(width),
+            false => plot,
+        }
+    }
+
     /// The panel: axes, then what was added, then the legend and notes.
     pub fn finish(mut self) -> Panel {
+        self = self.legend_clear_of_the_curves();
         let mut items = match &self.axes {
             Some((x, y)) => self.axis_items(x, y),
             None => Vec::new(),

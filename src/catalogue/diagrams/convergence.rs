@@ -15,10 +15,6 @@ use crate::geom::Point;
 const SAMPLES: usize = 720;
 /// Radii per decade.
 const PER_DECADE: i32 = 4;
-/// The legend's entry for the slope line.
-const SLOPE: &str = "slope −1: falling as 1/ρ (a decade above)";
-/// The legend's entry for the rounding of the inputs.
-const ROUNDING: &str = "ε (*l* + *r* + |*e*|)/*r*: rounding of the inputs";
 
 pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
@@ -83,23 +79,6 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut plot = Plot::new("convergence", rect, x, y, ctx.tolerance, ctx.font)?
         .with_grid()
         .with_caption("The curved slot against the straight slot");
-    // The series fall across the whole plot from its top left corner to
-    // its bottom right, over the rounding's line along its foot: a legend
-    // wider than half the plot (a narrow page) or taller than a third of
-    // it (a short one) finds no corner clear of them, and goes below the
-    // plot or beside it.
-    let entries: Vec<&str> = series
-        .iter()
-        .map(|s| s.1)
-        .chain([SLOPE, ROUNDING])
-        .collect();
-    let legend = Plot::legend_size(&entries, ctx.font);
-    let area = plot.area();
-    if 2.0 * legend.0 > area.width {
-        plot = plot.with_legend_below(legend);
-    } else if 3.0 * legend.1 > area.height {
-        plot = plot.with_legend_beside(legend.0);
-    }
     // The three series lie within a factor of a few of each other: each
     // sets its markers at every third radius, the three staggered, so
     // that no marker covers another; its line runs through every radius.
@@ -126,7 +105,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         .collect();
     if guide.len() == 2 {
         plot.line("guide-slope", &guide, Dash::Dashed, None);
-        plot.legend_line(SLOPE, Dash::Dashed);
+        plot.legend_line("slope −1: falling as 1/ρ (a decade above)", Dash::Dashed);
     }
     plot.line(
         "guide-rounding",
@@ -134,7 +113,10 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Dash::Dotted,
         None,
     );
-    plot.legend_line(ROUNDING, Dash::Dotted);
+    plot.legend_line(
+        "ε (*l* + *r* + |*e*|)/*r*: rounding of the inputs",
+        Dash::Dotted,
+    );
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
     sheet.meta(
