@@ -282,7 +282,7 @@ impl PanelWriter<'_> {
     /// they had), and the better of the two placings is kept: fewer
     /// struck labels, then less cost.
     fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
-        self.obstacles.build();
+        self.obstacles.build(room);
         let mut pending = std::mem::take(&mut self.pending);
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
