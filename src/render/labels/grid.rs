@@ -4,7 +4,8 @@
 
 use super::Bounds;
 use crate::figure::PageRect;
-use crate::geom::Point;
+use crate::geom::{Point, Vector};
+use std::ops::RangeInclusive;
 
 /// A shape put in the grid: a segment (by its ends) or a box.
 #[derive(Debug, Clone, Copy)]
@@ -14,13 +15,17 @@ pub(super) enum Shape {
 }
 
 /// The shapes given to [`Grid::new`], by their number, in a bucket per
-/// cell. The cells on the edge reach on without end, so that a shape or
-/// box beyond the region falls in them: every shape meeting a box is in a
-/// bucket the box covers, wherever either lies.
+/// cell: each shape in the bucket of every cell that comes within a
+/// reach of it, so that the bucket of the cell holding a box's centre
+/// holds every shape the box meets, if the box reaches no farther than
+/// that from its centre. The cells on the edge reach on without end, so
+/// that a shape or box beyond the region falls in them.
 #[derive(Debug)]
 pub(super) struct Grid {
     origin: Point,
     cell: f64,
+    /// How far from a cell its bucket's shapes may lie, across and down.
+    reach: Vector,
     columns: usize,
     rows: usize,
     /// Where each cell's bucket starts in `items` (one more than the
@@ -28,7 +33,23 @@ pub(super) struct Grid {
     starts: Vec<u32>,
     /// The buckets one after another, each in the order of the shapes.
     items: Vec<u32>,
+    /// Where each cell's boxes start in `chunks` (as `starts`).
+    chunk_starts: Vec<u32>,
+    /// The box of each run of [`CHUNK`] shapes of a bucket (the last run
+    /// perhaps shorter), each shape's box cut to its cell: shapes
+    /// together in the order of the shapes lie together (the R-tree's
+    /// order), so that a box that misses a run's skips it whole, as it
+    /// does a hundred short segments piled at one point.
+    chunks: Vec<Bounds>,
+    /// Where each cell's boxes start in `groups` (as `starts`).
+    group_starts: Vec<u32>,
+    /// The box of each run of [`CHUNK`] boxes of `chunks` of a bucket, a
+    /// group of [`CHUNK`]² shapes.
+    groups: Vec<Bounds>,
 }
+
+/// How many shapes of a bucket one box of [`Grid::chunks`] holds.
+pub(super) const CHUNK: usize = 8;
 
 /// The least side of a cell, page units: about a small letter's box, so
 /// that a long line crosses few buckets.
@@ -43,19 +64,25 @@ impl Default for Grid {
         Grid {
             origin: Point::origin(),
             cell: 1.0,
+            reach: Vector::zeros(),
             columns: 1,
             rows: 1,
             starts: vec![0, 0],
             items: Vec::new(),
+            chunk_starts: vec![0, 0],
+            chunks: Vec::new(),
+            group_starts: vec![0, 0],
+            groups: Vec::new(),
         }
     }
 }
 
 impl Grid {
-    /// The grid over `region` holding `shapes`, about one shape a cell
-    /// (cells no smaller than [`LEAST_CELL`]). A region that is empty or
-    /// not finite makes one cell holding every shape.
-    pub fn new(region: &PageRect, shapes: &[Shape]) -> Self {
+    /// The grid over `region` holding `shapes`, each in the bucket of
+    /// every cell within `reach` of it, about one shape a cell (cells no
+    /// smaller than [`LEAST_CELL`]). A region that is empty or not finite
+    /// makes one cell holding every shape.
+    pub fn new(region: &PageRect, reach: Vector, shapes: &[Shape]) -> Self {
         let (width, height) = (region.width, region.height);
         let sized = [region.x, region.y, width, height]
             .iter()
@@ -79,10 +106,15 @@ impl Grid {
         let mut grid = Grid {
             origin: Point::new(region.x, region.y),
             cell,
+            reach: Vector::new(reach.x.max(0.0), reach.y.max(0.0)),
             columns: count(width),
             rows: count(height),
             starts: Vec::new(),
             items: Vec::new(),
+            chunk_starts: Vec::new(),
+            chunks: Vec::new(),
+            group_starts: Vec::new(),
+            groups: Vec::new(),
         };
         grid.fill(shapes);
         grid
@@ -115,25 +147,103 @@ impl Grid {
         }
         self.starts = starts;
         self.items = items;
+        self.cut(shapes);
+    }
+
+    /// The boxes of the runs of [`CHUNK`] shapes of each bucket, each
+    /// shape's box cut to its cell widened by the reach and by its
+    /// [`Grid::slack`]: what of a shape meets a box whose centre is in the
+    /// cell (or that covers the cell, [`Grid::cover`]) lies in that, so a
+    /// run whose box misses holds nothing the box needs from that cell.
+    fn cut(&mut self, shapes: &[Shape]) {
+        let mut chunk_starts = Vec::with_capacity(self.starts.len());
+        let mut chunks = Vec::new();
+        chunk_starts.push(0);
+        let (mut group_starts, mut groups) = (chunk_starts.clone(), Vec::new());
+        for (cell, w) in self.starts.windows(2).enumerate() {
+            let (x0, x1) = self.span(cell % self.columns, self.columns, self.origin.x);
+            let (y0, y1) = self.span(cell / self.columns, self.rows, self.origin.y);
+            let (x0, x1) = (x0 - self.reach.x, x1 + self.reach.x);
+            let (y0, y1) = (y0 - self.reach.y, y1 + self.reach.y);
+            let bucket = self.items.get(w[0] as usize..w[1] as usize).unwrap_or(&[]);
+            for run in bucket.chunks(CHUNK) {
+                let cut = run
+                    .iter()
+                    .filter_map(|&n| shapes.get(n as usize))
+                    .map(|shape| {
+                        let (b, slack) = self.extent(shape);
+                        Bounds {
+                            min: Point::new(b.min.x.max(x0 - slack), b.min.y.max(y0 - slack)),
+                            max: Point::new(b.max.x.min(x1 + slack), b.max.y.min(y1 + slack)),
+                        }
+                    });
+                chunks.extend(cut.reduce(union));
+            }
+            let first = chunk_starts.last().map_or(0, |&n| n as usize);
+            let runs = chunks.get(first..).unwrap_or(&[]);
+            groups.extend(
+                runs.chunks(CHUNK)
+                    .filter_map(|g| g.iter().copied().reduce(union)),
+            );
+            chunk_starts.push(u32::try_from(chunks.len()).unwrap_or(u32::MAX));
+            group_starts.push(u32::try_from(groups.len()).unwrap_or(u32::MAX));
+        }
+        self.chunk_starts = chunk_starts;
+        self.chunks = chunks;
+        self.group_starts = group_starts;
+        self.groups = groups;
+    }
+
+    /// A shape's box and its [`Grid::slack`].
+    fn extent(&self, shape: &Shape) -> (Bounds, f64) {
+        let (p, q) = match *shape {
+            Shape::Segment(p, q) => (p, q),
+            Shape::Box(b) => (b.min, b.max),
+        };
+        let b = Bounds {
+            min: Point::new(p.x.min(q.x), p.y.min(q.y)),
+            max: Point::new(p.x.max(q.x), p.y.max(q.y)),
+        };
+        (b, self.slack(p, q))
+    }
+
+    /// Where column or row `k` of `count` starts and ends along an axis
+    /// starting at `origin`, the first and last reaching on without end.
+    fn span(&self, k: usize, count: usize, origin: f64) -> (f64, f64) {
+        let start = origin + k as f64 * self.cell;
+        (
+            if k == 0 { f64::NEG_INFINITY } else { start },
+            if k + 1 == count {
+                f64::INFINITY
+            } else {
+                start + self.cell
+            },
+        )
     }
 
     /// The column of `x`, the edge columns reaching on without end.
     fn column(&self, x: f64) -> usize {
-        let c = ((x - self.origin.x) / self.cell).floor();
-        c.clamp(0.0, (self.columns - 1) as f64) as usize
+        Self::index((x - self.origin.x) / self.cell, self.columns)
     }
 
     /// The row of `y`, as [`Grid::column`].
     fn row(&self, y: f64) -> usize {
-        let r = ((y - self.origin.y) / self.cell).floor();
-        r.clamp(0.0, (self.rows - 1) as f64) as usize
+        Self::index((y - self.origin.y) / self.cell, self.rows)
     }
 
-    /// Calls `put` with each cell `shape` passes through: a box's every
-    /// cell; a segment's, row by row, the columns its part in the row's
-    /// band spans, each band and span widened by a little
-    /// ([`Grid::slack`]) so that rounding never leaves out a cell it
-    /// touches.
+    /// The whole part of `at`, within 0 and `count` less one: cut toward
+    /// zero, which below zero gives no more than 0 as `floor` would, with
+    /// no call to it (NaN gives 0).
+    fn index(at: f64, count: usize) -> usize {
+        (at as isize).clamp(0, count as isize - 1) as usize
+    }
+
+    /// Calls `put` with each cell that comes within the reach of `shape`:
+    /// a box's, every cell of the box widened by the reach; a segment's,
+    /// row by row, the columns its part in the row's band (widened by the
+    /// reach down) spans, widened by the reach across; each widened by a
+    /// little more ([`Grid::slack`]) so that rounding never leaves out a
+    /// cell.
     fn cells_of(&self, shape: &Shape, mut put: impl FnMut(u32)) {
         let mut span = |row: usize, x0: f64, x1: f64| {
             for column in self.column(x0)..=self.column(x1) {
@@ -142,23 +252,26 @@ impl Grid {
         };
         match *shape {
             Shape::Box(b) => {
-                for row in self.row(b.min.y)..=self.row(b.max.y) {
-                    span(row, b.min.x, b.max.x);
+                let slack = self.slack(b.min, b.max);
+                let (across, down) = (self.reach.x + slack, self.reach.y + slack);
+                for row in self.row(b.min.y - down)..=self.row(b.max.y + down) {
+                    span(row, b.min.x - across, b.max.x + across);
                 }
             }
             Shape::Segment(p, q) => {
                 let slack = self.slack(p, q);
+                let (across, down) = (self.reach.x + slack, self.reach.y + slack);
                 let (d, top, bottom) = (q - p, p.y.min(q.y), p.y.max(q.y));
-                for row in self.row(top - slack)..=self.row(bottom + slack) {
+                for row in self.row(top - down)..=self.row(bottom + down) {
                     let (t0, t1) = if d.y == 0.0 {
                         (0.0, 1.0)
                     } else {
-                        let (y0, y1) = self.band(row);
-                        let (a, b) = ((y0 - slack - p.y) / d.y, (y1 + slack - p.y) / d.y);
+                        let (y0, y1) = self.span(row, self.rows, self.origin.y);
+                        let (a, b) = ((y0 - down - p.y) / d.y, (y1 + down - p.y) / d.y);
                         (a.min(b).max(0.0), a.max(b).min(1.0))
                     };
                     let (xa, xb) = (p.x + t0 * d.x, p.x + t1 * d.x);
-                    span(row, xa.min(xb) - slack, xa.max(xb) + slack);
+                    span(row, xa.min(xb) - across, xa.max(xb) + across);
                 }
             }
         }
@@ -170,40 +283,50 @@ impl Grid {
         1e-3 * self.cell + 1e-9 * (p.x.abs() + p.y.abs() + q.x.abs() + q.y.abs())
     }
 
-    /// The band of page a row holds, the first and last reaching on
-    /// without end.
-    fn band(&self, row: usize) -> (f64, f64) {
-        let top = self.origin.y + row as f64 * self.cell;
+    /// The rows and the columns of the cells whose buckets hold every
+    /// shape meeting `b`: the cell of its centre, for a box that reaches
+    /// no farther than the grid's reach from it; else the cells of its
+    /// core, the box less the reach on every side, for whose every point
+    /// the box comes within the reach of one (a box whose corners are the
+    /// wrong way round stands for the box between them). A shape meeting
+    /// `b` is in one of their buckets at least, where it meets `b` within
+    /// the reach of that bucket's cell.
+    pub fn cover(&self, b: &Bounds) -> (RangeInclusive<usize>, RangeInclusive<usize>) {
+        let core = |lo: f64, hi: f64, reach: f64| {
+            let (lo, hi) = (lo.min(hi), lo.max(hi));
+            let middle = 0.5 * (lo + hi);
+            (middle.min(lo + reach), middle.max(hi - reach))
+        };
+        let (x0, x1) = core(b.min.x, b.max.x, self.reach.x);
+        let (y0, y1) = core(b.min.y, b.max.y, self.reach.y);
         (
-            if row == 0 { f64::NEG_INFINITY } else { top },
-            if row + 1 == self.rows {
-                f64::INFINITY
-            } else {
-                top + self.cell
-            },
+            self.row(y0)..=self.row(y1),
+            self.column(x0)..=self.column(x1),
         )
     }
 
-    /// The numbers of the shapes in the buckets that `b` covers, each
-    /// once, in the order of the shapes, into `into` (emptied first): a
-    /// superset of those that meet `b` (a box whose corners are the
-    /// wrong way round covers the box between them).
-    pub fn gather(&self, b: &Bounds, into: &mut Vec<u32>) {
-        into.clear();
-        let (x0, x1) = (b.min.x.min(b.max.x), b.min.x.max(b.max.x));
-        let (y0, y1) = (b.min.y.min(b.max.y), b.min.y.max(b.max.y));
-        let (c0, c1) = (self.column(x0), self.column(x1));
-        let (r0, r1) = (self.row(y0), self.row(y1));
-        for row in r0..=r1 {
-            // The cells are in bounds ([`Grid::column`], [`Grid::row`]),
-            // and so are the buckets' starts.
-            let (first, last) = (row * self.columns + c0, row * self.columns + c1);
-            let (from, to) = (self.starts[first], self.starts[last + 1]);
-            into.extend_from_slice(&self.items[from as usize..to as usize]);
-        }
-        if c0 != c1 || r0 != r1 {
-            into.sort_unstable();
-            into.dedup();
-        }
+    /// The bucket of a cell that [`Grid::cover`] gave, each shape once, in
+    /// the order of the shapes, with the boxes of its runs of [`CHUNK`]
+    /// and of its groups of [`CHUNK`] runs.
+    pub fn bucket(&self, row: usize, column: usize) -> (&[u32], &[Bounds], &[Bounds]) {
+        let cell = (row * self.columns + column).min(self.columns * self.rows - 1);
+        // The cell is in bounds, and so are the buckets' and boxes'
+        // starts (one more than the cells).
+        let (from, to) = (self.starts[cell], self.starts[cell + 1]);
+        let (first, last) = (self.chunk_starts[cell], self.chunk_starts[cell + 1]);
+        let (g0, g1) = (self.group_starts[cell], self.group_starts[cell + 1]);
+        (
+            &self.items[from as usize..to as usize],
+            &self.chunks[first as usize..last as usize],
+            &self.groups[g0 as usize..g1 as usize],
+        )
+    }
+}
+
+/// The least box holding both.
+fn union(a: Bounds, b: Bounds) -> Bounds {
+    Bounds {
+        min: Point::new(a.min.x.min(b.min.x), a.min.y.min(b.min.y)),
+        max: Point::new(a.max.x.max(b.max.x), a.max.y.max(b.max.y)),
     }
 }

@@ -27,7 +27,7 @@ use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
 };
 use crate::figure::{Pen, Style};
-use crate::geom::Point;
+use crate::geom::{Point, Vector};
 use crate::number::{fmt, fmt_coefficient};
 use crate::render::Element;
 #[cfg(feature = "html")]
@@ -282,8 +282,11 @@ impl PanelWriter<'_> {
     /// they had), and the better of the two placings is kept: fewer
     /// struck labels, then less cost.
     fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
-        self.obstacles.build(room);
         let mut pending = std::mem::take(&mut self.pending);
+        let halves: Vec<Vector> = (pending.iter())
+            .map(|p| ink_box(&p.text, p.size, self.font).0)
+            .collect();
+        self.obstacles.build(room, largest(&halves));
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
         let first: Vec<&Pending> = pending.iter().collect();
@@ -348,6 +351,12 @@ impl PanelWriter<'_> {
             })
             .collect()
     }
+}
+
+/// The largest half-size of a label's box of `halves`, across and down
+/// (the label room's index is built for it).
+fn largest(halves: &[Vector]) -> Vector {
+    halves.iter().fold(Vector::zeros(), |most, h| most.sup(h))
 }
 
 /// Where a label was placed: the point its text is written at, its box,
