@@ -283,6 +283,11 @@ impl Grid {
         1e-3 * self.cell + 1e-9 * (p.x.abs() + p.y.abs() + q.x.abs() + q.y.abs())
     }
 
+    /// How far from a cell its bucket's shapes may lie, across and down.
+    pub fn reach(&self) -> Vector {
+        self.reach
+    }
+
     /// The rows and the columns of the cells whose buckets hold every
     /// shape meeting `b`: the cell of its centre, for a box that reaches
     /// no farther than the grid's reach from it; else the cells of its

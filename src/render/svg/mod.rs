@@ -286,7 +286,7 @@ impl PanelWriter<'_> {
         let halves: Vec<Vector> = (pending.iter())
             .map(|p| ink_box(&p.text, p.size, self.font).0)
             .collect();
-        self.obstacles.build(room, largest(&halves));
+        self.obstacles.build(room, &halves);
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
         let first: Vec<&Pending> = pending.iter().collect();
@@ -351,12 +351,6 @@ impl PanelWriter<'_> {
             })
             .collect()
     }
-}
-
-/// The largest half-size of a label's box of `halves`, across and down
-/// (the label room's index is built for it).
-fn largest(halves: &[Vector]) -> Vector {
-    halves.iter().fold(Vector::zeros(), |most, h| most.sup(h))
 }
 
 /// Where a label was placed: the point its text is written at, its box,
