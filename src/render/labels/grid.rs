@@ -129,21 +129,29 @@ impl Grid {
             self.cells_of(shape, |cell| pairs.push((cell, n)));
         }
         // Every cell number is below `cells` ([`Grid::column`] and
-        // [`Grid::row`] clamp), so the indexing below stays in bounds.
+        // [`Grid::row`] clamp), and every bucket's place below the pairs'
+        // count: no `get` below fails.
         let cells = self.columns * self.rows;
         let mut starts = vec![0u32; cells + 1];
         for &(cell, _) in &pairs {
-            starts[cell as usize + 1] += 1;
+            if let Some(count) = starts.get_mut(cell as usize + 1) {
+                *count += 1;
+            }
         }
-        for i in 0..cells {
-            starts[i + 1] += starts[i];
+        let mut total = 0;
+        for start in &mut starts {
+            total += *start;
+            *start = total;
         }
         let mut next = starts.clone();
         let mut items = vec![0u32; pairs.len()];
         for (cell, n) in pairs {
-            let at = &mut next[cell as usize];
-            items[*at as usize] = n;
-            *at += 1;
+            if let Some(at) = next.get_mut(cell as usize)
+                && let Some(item) = items.get_mut(*at as usize)
+            {
+                *item = n;
+                *at += 1;
+            }
         }
         self.starts = starts;
         self.items = items;
@@ -165,7 +173,7 @@ impl Grid {
             let (y0, y1) = self.span(cell / self.columns, self.rows, self.origin.y);
             let (x0, x1) = (x0 - self.reach.x, x1 + self.reach.x);
             let (y0, y1) = (y0 - self.reach.y, y1 + self.reach.y);
-            let bucket = self.items.get(w[0] as usize..w[1] as usize).unwrap_or(&[]);
+            let bucket = slice(&self.items, w);
             for run in bucket.chunks(CHUNK) {
                 let cut = run
                     .iter()
@@ -314,16 +322,11 @@ impl Grid {
     /// the order of the shapes, with the boxes of its runs of [`CHUNK`]
     /// and of its groups of [`CHUNK`] runs.
     pub fn bucket(&self, row: usize, column: usize) -> (&[u32], &[Bounds], &[Bounds]) {
-        let cell = (row * self.columns + column).min(self.columns * self.rows - 1);
-        // The cell is in bounds, and so are the buckets' and boxes'
-        // starts (one more than the cells).
-        let (from, to) = (self.starts[cell], self.starts[cell + 1]);
-        let (first, last) = (self.chunk_starts[cell], self.chunk_starts[cell + 1]);
-        let (g0, g1) = (self.group_starts[cell], self.group_starts[cell + 1]);
+        let cell = row * self.columns + column;
         (
-            &self.items[from as usize..to as usize],
-            &self.chunks[first as usize..last as usize],
-            &self.groups[g0 as usize..g1 as usize],
+            slice(&self.items, ends(&self.starts, cell)),
+            slice(&self.chunks, ends(&self.chunk_starts, cell)),
+            slice(&self.groups, ends(&self.group_starts, cell)),
         )
     }
 }
@@ -334,4 +337,19 @@ fn union(a: Bounds, b: Bounds) -> Bounds {
         min: Point::new(a.min.x.min(b.min.x), a.min.y.min(b.min.y)),
         max: Point::new(a.max.x.max(b.max.x), a.max.y.max(b.max.y)),
     }
+}
+
+/// The part of `of` from the first of `bounds` to the second (nothing if
+/// either is missing or they are out of `of`).
+fn slice<'a, T>(of: &'a [T], bounds: &[u32]) -> &'a [T] {
+    match bounds {
+        [from, to, ..] => of.get(*from as usize..*to as usize).unwrap_or(&[]),
+        _ => &[],
+    }
+}
+
+/// Where bucket `cell` starts and ends in `starts` (one more than the
+/// cells).
+fn ends(starts: &[u32], cell: usize) -> &[u32] {
+    starts.get(cell..cell + 2).unwrap_or(&[])
 }
