@@ -358,12 +358,14 @@ impl Near<'_> {
     /// terms are never negative: a caller that only asks whether the cost
     /// stays under `limit` learns it sooner).
     ///
-    /// Only the obstacles in the grid's cells that `b` covers are looked
-    /// at, in the R-tree's order (a query of the tree for any box hands
-    /// out what it finds in that order: it walks the same tree), then
-    /// those added since, in the order added: the sum is the same, term by
-    /// term, as one over every obstacle whose box meets `b`, as a search
-    /// added it before the grid, and so is every placement.
+    /// Only the obstacles in the buckets that hold all that meets `b` are
+    /// looked at (one bucket of the grid that reaches as far as `b`, else
+    /// a few, [`Grid::cover`]), in the R-tree's order (a query of the
+    /// tree for any box hands out what it finds in that order: it walks
+    /// the same tree), then those added since, in the order added: the
+    /// sum is the same, term by term, as one over every obstacle whose box
+    /// meets `b`, as a search added it before the grid, and so is every
+    /// placement.
     fn cost_of(&self, b: &Bounds, least: f64, limit: f64) -> f64 {
         debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
