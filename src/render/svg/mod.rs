@@ -28,7 +28,7 @@ use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
 };
 use crate::figure::{Pen, Style};
-use crate::geom::Point;
+use crate::geom::{Point, Vector};
 use crate::number::{fmt, fmt_coefficient};
 use crate::render::Element;
 #[cfg(feature = "html")]
@@ -284,8 +284,11 @@ impl PanelWriter<'_> {
     /// they had), and the better of the two placings is kept: fewer
     /// struck labels, then less cost.
     fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
-        self.obstacles.build();
         let mut pending = std::mem::take(&mut self.pending);
+        let halves: Vec<Vector> = (pending.iter())
+            .map(|p| ink_box(&p.text, p.size, self.font).0)
+            .collect();
+        self.obstacles.build(room, &halves);
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
         let first: Vec<&Pending> = pending.iter().collect();
