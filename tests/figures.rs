@@ -617,3 +617,51 @@ fn a_line_to_a_centre_at_infinity_runs_on_into_its_arrow() {
         assert!(off < 0.5, "{width:?}: {off}");
     }
 }
+
+/// The direction (page degrees, y down) of `p` from `from`.
+fn bearing(from: (f64, f64), p: (f64, f64)) -> f64 {
+    (p.1 - from.1).atan2(p.0 - from.0).to_degrees()
+}
+
+/// An angle's letter sits inside its angle, beyond its arc, where the
+/// angle is wide enough to hold it: Ng's φ at the crank pin (about 17°,
+/// lettered above its dashed reference before) and θ at the crank centre
+/// of Fig. 1 at its default pose.
+#[test]
+fn an_angles_letter_sits_inside_the_angle() {
+    let svg = to_svg(
+        &FigureName::NgFig1Torque
+            .figure(&Default::default())
+            .unwrap(),
+    );
+    for (arc, label, vertex) in [
+        ("angle-phi", "label-phi", "point-C"),
+        ("angle-theta", "label-theta", "point-O"),
+    ] {
+        let d = attr(&svg, arc, "d").unwrap();
+        let numbers: Vec<f64> = d
+            .split(|c: char| c.is_ascii_alphabetic() || c == ' ')
+            .filter(|t| !t.is_empty())
+            .map(|t| t.parse().unwrap())
+            .collect();
+        let (first, last) = (
+            (numbers[0], numbers[1]),
+            (numbers[numbers.len() - 2], numbers[numbers.len() - 1]),
+        );
+        let c = (num(&svg, vertex, "cx"), num(&svg, vertex, "cy"));
+        // The letter's middle: its baseline less a third of its size.
+        let at = (num(&svg, label, "x"), num(&svg, label, "y") - 5.0);
+        let (a, b) = (bearing(c, first), bearing(c, last));
+        let (lo, hi) = (a.min(b), a.max(b));
+        let t = bearing(c, at);
+        assert!(
+            lo <= t && t <= hi,
+            "{label} at {t:.1}° from {vertex}, its angle {lo:.1}° to {hi:.1}°"
+        );
+        let radius = (first.0 - c.0).hypot(first.1 - c.1);
+        assert!(
+            (at.0 - c.0).hypot(at.1 - c.1) > radius,
+            "{label} inside its arc"
+        );
+    }
+}

@@ -567,11 +567,28 @@ fn directions() -> &'static [(f64, f64); 16] {
 /// Deterministic: ties go to the earlier candidate. Returns the centre
 /// and its cost: 0 where nothing is near, [`STRUCK`] or more where the
 /// glyphs themselves meet something.
+#[cfg(test)]
 pub(crate) fn place(
     anchor: Point,
     half: Vector,
     gap: f64,
     reach: f64,
+    obstacles: &Obstacles,
+    page: &PageRect,
+) -> (Point, f64) {
+    place_toward(anchor, half, gap, reach, None, obstacles, page)
+}
+
+/// [`place`], trying first the unit page direction `toward` (an angle's
+/// bisector: its letter beyond its arc, inside the angle) at each ring
+/// out to the last, before the sixteen directions: a letter that fits
+/// somewhere along it goes there rather than to another side.
+pub(crate) fn place_toward(
+    anchor: Point,
+    half: Vector,
+    gap: f64,
+    reach: f64,
+    toward: Option<Vector>,
     obstacles: &Obstacles,
     page: &PageRect,
 ) -> (Point, f64) {
@@ -608,6 +625,15 @@ pub(crate) fn place(
             *best = (cost + penalty, cost, centre);
         }
     };
+    if let Some(u) = toward {
+        for (k, extra) in RINGS.into_iter().enumerate() {
+            let reach = gap + extra + u.x.abs() * half.x + u.y.abs() * half.y;
+            consider(&mut best, anchor + u * reach, 0.05 * k as f64);
+            if best.1 < 1.0 {
+                return (best.2, best.1);
+            }
+        }
+    }
     let units = directions();
     for extra in RINGS {
         for (k, &(dx, dy)) in units.iter().enumerate() {

@@ -117,6 +117,7 @@ impl PanelWriter<'_> {
                 size: self.style.font_size(TextSize::Small) + 2.0,
                 gap: 2.0,
                 letter: false,
+                toward: Some(dir),
             });
         }
         Some(self.open_line(ink, course))

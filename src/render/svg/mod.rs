@@ -23,7 +23,7 @@ mod options;
 mod points;
 mod text;
 
-use super::labels::{Bounds, Obstacles, ROOM, STRUCK, place};
+use super::labels::{Bounds, Obstacles, ROOM, STRUCK, place_toward};
 use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
 };
@@ -52,6 +52,9 @@ struct Pending {
     /// Whether it is a point's letter, placed before the values and
     /// names, which are freer to move.
     letter: bool,
+    /// The page direction tried first, out to the last ring (an angle's
+    /// bisector), if any.
+    toward: Option<Vector>,
 }
 
 /// What an item's symbol is written with: its id, its role (the class)
@@ -342,7 +345,15 @@ impl PanelWriter<'_> {
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
-                let (centre, cost) = place(p.anchor, half, p.gap, reach, &self.obstacles, room);
+                let (centre, cost) = place_toward(
+                    p.anchor,
+                    half,
+                    p.gap,
+                    reach,
+                    p.toward,
+                    &self.obstacles,
+                    room,
+                );
                 let bounds = Bounds::around(centre, half);
                 self.obstacles.boxed(bounds);
                 Placed {

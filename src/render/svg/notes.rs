@@ -36,6 +36,7 @@ impl PanelWriter<'_> {
                 3.0
             },
             letter: size == TextSize::Letter,
+            toward: None,
         });
         None
     }
