@@ -3,6 +3,7 @@
 //! report `check` prints for the slot and the quadric chain: one copy for
 //! the command line and the Python package.
 
+use super::check_report::{closing, verdict};
 use crate::angle::Angle;
 use crate::chain::{
     Assembly, ChainCentres, ChainCheckRow, CylindricChain, GrashofClass, InvertedChain,
@@ -226,13 +227,9 @@ pub fn chain_check_report(title: &str, rows: &[ChainCheckRow], tolerance: f64) -
             row.condition,
             row.at_degrees,
             row.poses,
-            if pass { "ok" } else { "FAIL" }
+            verdict(pass)
         ));
     }
-    out.push_str(if ok {
-        "\nall within tolerance\n"
-    } else {
-        "\nsome quantities exceed the tolerance\n"
-    });
+    out.push_str(closing(ok));
     (out, ok)
 }

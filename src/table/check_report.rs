@@ -45,6 +45,20 @@ pub fn check_allowance(samples: usize, tolerance: Option<f64>, default: f64) -> 
     Ok(t)
 }
 
+/// A row's verdict in a check's report.
+pub(super) fn verdict(pass: bool) -> &'static str {
+    if pass { "ok" } else { "FAIL" }
+}
+
+/// The last line of a check's report, after a blank one.
+pub(super) fn closing(ok: bool) -> &'static str {
+    if ok {
+        "\nall within tolerance\n"
+    } else {
+        "\nsome quantities exceed the tolerance\n"
+    }
+}
+
 /// An allowance in ulps: one decimal up to a million (`4.0`), exponent
 /// form beyond (`4.504e15` for a tolerance of 1, not 16 digits).
 fn ulps_text(ulps: f64) -> String {
@@ -89,13 +103,9 @@ pub fn engine_check_report(
             ulps,
             kappa,
             at,
-            if pass { "ok" } else { "FAIL" }
+            verdict(pass)
         ));
     }
-    out.push_str(if ok {
-        "\nall within tolerance\n"
-    } else {
-        "\nsome quantities exceed the tolerance\n"
-    });
+    out.push_str(closing(ok));
     (out, ok)
 }
