@@ -31,7 +31,9 @@ impl SvgOptions {
     }
 
     /// `layer` set just above the paper (the white page), below
-    /// everything drawn: a teaching sheet's grid.
+    /// everything drawn: a teaching sheet's grid (the handout's, built
+    /// with the `html` feature).
+    #[cfg_attr(not(feature = "html"), allow(dead_code))]
     pub(crate) fn with_underlay(mut self, layer: Element) -> Self {
         self.underlay = Some(layer);
         self
