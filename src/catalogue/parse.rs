@@ -3,7 +3,7 @@
 //! ([`keys`] lists them from the structs themselves); docs/scene-format.md
 //! is their reference.
 
-use super::{FigureName, FigureOptions, SceneFile, diagrams};
+use super::{FigureName, FigureOptions, SceneFile};
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
 use crate::figure::{Font, PageLength, Style, Title};
@@ -527,7 +527,7 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
     }
     // Each option alone, refused where the diagram does not use it.
     let refuse = |one: FigureOptions, key: &str, span: Range<usize>| -> Result<()> {
-        match diagrams::unused(name, &one) {
+        match name.unused(&one) {
             Some(_) => Err(located(
                 text,
                 span,

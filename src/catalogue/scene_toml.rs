@@ -2,7 +2,8 @@
 //! uses at the figure's own value, each with a comment, as a starting
 //! point. The parser reads it back to the same figure.
 
-use super::{FigureName, diagrams, parse};
+use super::specs::At;
+use super::{FigureName, Setting, parse};
 use crate::figure::{PageLength, PageUnit};
 use crate::scene::{Layer, Scene};
 use std::fmt::Write;
@@ -214,11 +215,9 @@ pub(crate) fn scene(name: FigureName, scene: &Scene) -> String {
 /// The scene file of a diagram: `figure` and the keys it uses, at its own
 /// values.
 pub(crate) fn diagram(name: FigureName) -> String {
-    const MECH: &str = "mechanism (--crank, --rod, --offset)";
-    const SPEED: &str = "crank speed (--rpm, --omega)";
-    let uses = diagrams::uses(name);
+    let takes = |s: Setting| name.spec().takes.contains(&s);
     let mut out = String::new();
-    let data = match (uses.contains(&"--data"), uses.contains(&"--fit")) {
+    let data = match (takes(Setting::Data), takes(Setting::Fit)) {
         (true, true) => {
             " Its measured data (--data) and its fit (--fit) are given on the command line only."
         }
@@ -239,8 +238,8 @@ pub(crate) fn diagram(name: FigureName) -> String {
         "The diagram: its keys below change it.",
         &format!("figure = {}", text(name.name())),
     );
-    if uses.contains(&"--angle") {
-        let what = if name == FigureName::NgFig2Incline {
+    if takes(Setting::Angle) {
+        let what = if matches!(name.spec().at, At::Tilt(_)) {
             "The tilt of the plane, degrees (0 < φ < 90)."
         } else {
             "Crank angle θ of the pose whose construction is drawn, degrees."
@@ -251,7 +250,7 @@ pub(crate) fn diagram(name: FigureName) -> String {
             &format!("angle = {}", number(name.angle_degrees())),
         );
     }
-    if uses.contains(&SPEED) {
+    if takes(Setting::Speed) {
         key(
             &mut out,
             "Crank speed, revolutions per minute (or omega, rad/s), positive.",
@@ -264,21 +263,21 @@ pub(crate) fn diagram(name: FigureName) -> String {
         FONT,
         &format!("font = {}", text(crate::figure::Font::default().name())),
     );
-    if uses.contains(&"--mirror") {
+    if takes(Setting::Mirror) {
         key(
             &mut out,
             "Whether the mechanism is drawn with the cylinder on the left.",
             &format!("mirror = {}", !name.is_ng()),
         );
     }
-    if uses.contains(&"--mass") {
+    if takes(Setting::Mass) {
         key(
             &mut out,
             "Reciprocating mass m of the engine, force·s²/length (slug with lbf and ft), positive.",
             &format!("mass = {}", number(crate::dynamics::EXAMPLE_MASS)),
         );
     }
-    if uses.contains(&"--fluctuation") {
+    if takes(Setting::Fluctuation) {
         key(
             &mut out,
             "Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω, above 0 and below 2.",
@@ -289,7 +288,7 @@ pub(crate) fn diagram(name: FigureName) -> String {
         );
     }
     key(&mut out, TITLE, "# title = \"…\"");
-    if uses.contains(&MECH) {
+    if takes(Setting::Mechanism) {
         mechanism_table(&mut out, &name.mechanism());
     }
     units_table(&mut out, &name.units());

@@ -22,7 +22,7 @@ use crate::{angle::Angle, mechanism::Pose};
 /// small size, and the abscissa's.
 const NARROWEST_COLUMNS: f64 = 700.0;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let (r, omega) = (m.crank(), ctx.omega);

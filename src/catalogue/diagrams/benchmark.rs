@@ -32,7 +32,7 @@ struct Row<'a> {
 /// each with its legend inside.
 const NARROWEST_COLUMNS: f64 = 700.0;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let text = ctx.options.data.as_deref().unwrap_or(TABLE);
     let table = Table::parse(text, "data")?;

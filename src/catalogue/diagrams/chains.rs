@@ -74,7 +74,7 @@ fn travel(chain: &CylindricChain) -> (f64, f64) {
         })
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());

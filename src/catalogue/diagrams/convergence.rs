@@ -16,7 +16,7 @@ const SAMPLES: usize = 720;
 /// Radii per decade.
 const PER_DECADE: i32 = 4;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());

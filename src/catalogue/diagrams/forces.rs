@@ -59,7 +59,7 @@ fn root(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> Option<f64> {
     Some(0.5 * (a + b))
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let mut sheet = Sheet::new(ctx);

@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 use crate::figure::{Figure, Item, PageRect, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let tilt = ctx.angle.degrees();
     if !(tilt > 0.0 && tilt < 90.0) {

@@ -172,7 +172,7 @@ fn caption(ctx: &Ctx, inversion: Inversion, width: f64) -> (String, String) {
     }
 }
 
-pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());

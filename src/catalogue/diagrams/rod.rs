@@ -13,7 +13,7 @@ use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::Point;
 use crate::mechanism::Pose;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let omega = ctx.omega;

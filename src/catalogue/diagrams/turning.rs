@@ -34,7 +34,7 @@ pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
     Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let engine = engine(ctx)?;
     let tm = TurningMoment::new(&engine, &[0.0])?;

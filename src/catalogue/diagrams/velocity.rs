@@ -24,7 +24,7 @@ const TOP: f64 = 400.0;
 /// two-line legend in a corner clear of it.
 const FLAT: f64 = 120.0;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let omega = ctx.omega;
