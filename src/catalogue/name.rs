@@ -173,11 +173,15 @@ impl FigureName {
         }
     }
 
+    /// Whether the figure takes `setting` from its options.
+    pub(crate) fn takes(&self, setting: Setting) -> bool {
+        self.spec().takes.contains(&setting)
+    }
+
     /// The first option given in `options` that the figure does not take
     /// (in the order of [`FigureOptions::given`]).
     pub(crate) fn unused(&self, options: &FigureOptions) -> Option<Setting> {
-        let takes = self.spec().takes;
-        options.given().into_iter().find(|o| !takes.contains(o))
+        options.given().into_iter().find(|&o| !self.takes(o))
     }
 
     /// Refuses an option given in `options` that the figure does not take,

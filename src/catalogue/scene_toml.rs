@@ -226,7 +226,7 @@ fn motion_keys(out: &mut String, scene: &Scene) {
 /// The scene file of a diagram: `figure` and the keys it uses, at its own
 /// values.
 pub(crate) fn diagram(name: FigureName) -> String {
-    let takes = |s: Setting| name.spec().takes.contains(&s);
+    let takes = |s: Setting| name.takes(s);
     let mut out = String::new();
     let data = match (takes(Setting::Data), takes(Setting::Fit)) {
         (true, true) => {
@@ -269,7 +269,7 @@ pub(crate) fn diagram(name: FigureName) -> String {
 /// the angle (or the plane's tilt), speed, style, face, side, mass and
 /// coefficient of fluctuation, and the title.
 fn diagram_keys(out: &mut String, name: FigureName) {
-    let takes = |s: Setting| name.spec().takes.contains(&s);
+    let takes = |s: Setting| name.takes(s);
     if takes(Setting::Angle) {
         let what = if matches!(name.spec().at, At::Tilt(_)) {
             "The tilt of the plane, degrees (0 < φ < 90)."
