@@ -13,9 +13,13 @@ mod parse;
 mod scene_file;
 mod scene_toml;
 mod source;
+mod specs;
 
-pub use name::FigureName;
+pub(crate) use options::Setting;
 pub use options::{FigureOptions, Fit};
 #[cfg(feature = "html")]
 pub(crate) use parse::{located, toml_error};
 pub use scene_file::SceneFile;
+pub use specs::FigureName;
+#[cfg(feature = "html")]
+pub(crate) use specs::Group;

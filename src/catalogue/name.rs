@@ -2,7 +2,10 @@
 //! drawn by a [`Scene`], and diagrams (plots against θ, time or position,
 //! polar diagrams, centrodes, Ng's graphs).
 
-use super::{FigureOptions, diagrams, scene_toml};
+#[cfg(feature = "html")]
+use super::specs::Group;
+use super::specs::{At, Kind, Source};
+use super::{FigureName, FigureOptions, Setting, diagrams, scene_toml};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
@@ -10,191 +13,12 @@ use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
 use crate::analytic::statics::NG_TORQUE;
 
-/// A figure of the seeds.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
-#[non_exhaustive]
-pub enum FigureName {
-    /// Textbook Fig. 62: the crank angle θ and the displacement x of the
-    /// cross-head from mid-stroke.
-    Fig62Displacement,
-    /// Textbook Fig. 63: the velocity construction, D and E, the similar
-    /// triangles ADB and ECB.
-    Fig63Velocity,
-    /// Textbook Fig. 65: Klein's acceleration construction.
-    Fig65Klein,
-    /// Textbook Fig. 66: Kisch's construction (D not needed, here off the
-    /// page).
-    Fig66Kisch,
-    /// Textbook Fig. 67: the 45° engine with its velocity and acceleration
-    /// scales and values.
-    Fig67Example,
-    /// Ng Fig. 1: the OM torque line, slider force and side thrust.
-    NgFig1Torque,
-    /// Ng Fig. A1: the velocity construction in Ng's letters (I, M).
-    NgFigA1Velocity,
-    /// Textbook Fig. 61: the rod's fixed centrode (full) and moving
-    /// centrode (dotted), with the construction of D for one pose.
-    Fig61Centrodes,
-    /// Textbook Fig. 64: the polar diagram of piston velocity (E′ on the
-    /// crank, CE′ = CE), the velocity on a distance base (E″ over A) and on
-    /// a time base against simple harmonic motion.
-    Fig64VelocityDiagrams,
-    /// Piston acceleration on a distance base and a time base against
-    /// simple harmonic motion, and a polar acceleration diagram.
-    AccelerationDiagrams,
-    /// The rod's angular velocity and acceleration against θ (§37), with
-    /// eq. (2a).
-    RodMotion,
-    /// The error of the textbook's approximations (eq. 2, 3, 2a and the
-    /// obliquity term) against θ for n = 4, 5, 6.
-    ApproximationError,
-    /// Ovals traced by points of the rod (§34).
-    CouplerCurves,
-    /// Ng Fig. 2: the block on an inclined plane, μ = tan φ.
-    NgFig2Incline,
-    /// Ng Fig. 7: the calibration points, fitted line(s), equation and R².
-    NgFig7Calibration,
-    /// Ng Fig. 8: F and F′ (theory) against θ with the measured F′, and the
-    /// transmission angle.
-    NgFig8Forces,
-    /// The curve engine's benchmark: segments and time against measured
-    /// error, log–log (docs/curve-benchmarks.csv).
-    CurveBenchmark,
-    /// Textbook Fig. 60: (a) the quadric crank chain, (b) the block in a
-    /// curved slot with its centre O_cd, (c) the straight slot, O_cd at
-    /// infinity; links a, b, c, d, one crank angle.
-    Fig60Chains,
-    /// Inversion 1, the frame d fixed: the direct-acting engine, with its
-    /// six virtual centres.
-    Inversion1Engine,
-    /// Inversion 2, the crank a fixed: the rotating block (Whitworth's
-    /// quick return, the Gnome engine).
-    Inversion2RotatingBlock,
-    /// Inversion 3, the rod b fixed: the oscillating cylinder, the crank
-    /// and slotted lever quick return.
-    Inversion3OscillatingCylinder,
-    /// Inversion 4, the block c fixed: the hand pump.
-    Inversion4HandPump,
-    /// The curved slot's difference from the straight slot against its
-    /// radius ρ from 1 to 1e15, log–log.
-    SlotConvergence,
-    /// The turning-moment diagram of an engine (§37's inertia force and
-    /// Ng's T = F · OM over a turn) with its mean line and the areas
-    /// between them, and the flywheel's energy diagram.
-    TurningMoment,
-    /// The inertia force of the reciprocating parts on the mechanism:
-    /// Klein's CG read as the piston's acceleration and scaled by m ω² to
-    /// the force, drawn at the cross-head against the acceleration,
-    /// resolved along the rod and on the guides, and the crank effort
-    /// T = F · OM through Ng's torque line.
-    InertiaForce,
-    /// The primary and secondary unbalanced forces of the reciprocating
-    /// parts (m r ω² cos θ, m r ω² cos 2θ / n), their sum and the exact
-    /// inertia force against θ, and what the two terms leave out.
-    PrimarySecondary,
-    /// The direct and reverse crank method: the primary force as the
-    /// resultant of cranks at ±θ, the secondary as that of cranks of
-    /// radius r/4n at ±2θ, their components on the line of stroke summing
-    /// to the force.
-    DirectReverseCranks,
-    /// The flywheel: the energy stored above its least over the turn,
-    /// rising by the fluctuation of energy ΔE, and the crank speed with
-    /// the flywheel I = ΔE / (ω² C_s) of a coefficient of fluctuation of
-    /// speed C_s.
-    Flywheel,
-}
-
 crate::error::parse_by_name!(FigureName);
 
 impl FigureName {
-    /// The mechanism figures, drawn by a [`Scene`].
-    pub const SCENES: [FigureName; 7] = [
-        FigureName::Fig62Displacement,
-        FigureName::Fig63Velocity,
-        FigureName::Fig65Klein,
-        FigureName::Fig66Kisch,
-        FigureName::Fig67Example,
-        FigureName::NgFig1Torque,
-        FigureName::NgFigA1Velocity,
-    ];
-
-    /// The diagrams: plots, polar diagrams, centrodes and coupler curves.
-    pub const DIAGRAMS: [FigureName; 21] = [
-        FigureName::Fig61Centrodes,
-        FigureName::Fig64VelocityDiagrams,
-        FigureName::AccelerationDiagrams,
-        FigureName::RodMotion,
-        FigureName::ApproximationError,
-        FigureName::CouplerCurves,
-        FigureName::NgFig2Incline,
-        FigureName::NgFig7Calibration,
-        FigureName::NgFig8Forces,
-        FigureName::CurveBenchmark,
-        FigureName::Fig60Chains,
-        FigureName::Inversion1Engine,
-        FigureName::Inversion2RotatingBlock,
-        FigureName::Inversion3OscillatingCylinder,
-        FigureName::Inversion4HandPump,
-        FigureName::SlotConvergence,
-        FigureName::TurningMoment,
-        FigureName::InertiaForce,
-        FigureName::PrimarySecondary,
-        FigureName::DirectReverseCranks,
-        FigureName::Flywheel,
-    ];
-
-    /// Every named figure: the scenes, then the diagrams.
-    // cannot fail: evaluated when the crate is built, where an index out of
-    // range is a build error.
-    #[allow(clippy::indexing_slicing)]
-    pub const ALL: [FigureName; FigureName::SCENES.len() + FigureName::DIAGRAMS.len()] = {
-        let mut all =
-            [FigureName::Fig62Displacement; FigureName::SCENES.len() + FigureName::DIAGRAMS.len()];
-        let mut i = 0;
-        while i < FigureName::SCENES.len() {
-            all[i] = FigureName::SCENES[i];
-            i += 1;
-        }
-        let mut j = 0;
-        while j < FigureName::DIAGRAMS.len() {
-            all[i + j] = FigureName::DIAGRAMS[j];
-            j += 1;
-        }
-        all
-    };
-
     /// The name (`fig-67-example`).
     pub fn name(&self) -> &'static str {
-        match self {
-            FigureName::Fig62Displacement => "fig-62-displacement",
-            FigureName::Fig63Velocity => "fig-63-velocity",
-            FigureName::Fig65Klein => "fig-65-klein",
-            FigureName::Fig66Kisch => "fig-66-kisch",
-            FigureName::Fig67Example => "fig-67-example",
-            FigureName::NgFig1Torque => "ng-fig-1-torque",
-            FigureName::NgFigA1Velocity => "ng-fig-a1-velocity",
-            FigureName::Fig61Centrodes => "fig-61-centrodes",
-            FigureName::Fig64VelocityDiagrams => "fig-64-velocity-diagrams",
-            FigureName::AccelerationDiagrams => "acceleration-diagrams",
-            FigureName::RodMotion => "rod-motion",
-            FigureName::ApproximationError => "approximation-error",
-            FigureName::CouplerCurves => "coupler-curves",
-            FigureName::NgFig2Incline => "ng-fig-2-incline",
-            FigureName::NgFig7Calibration => "ng-fig-7-calibration",
-            FigureName::NgFig8Forces => "ng-fig-8-forces",
-            FigureName::CurveBenchmark => "curve-benchmark",
-            FigureName::Fig60Chains => "fig-60-chains",
-            FigureName::Inversion1Engine => "inversion-1-engine",
-            FigureName::Inversion2RotatingBlock => "inversion-2-rotating-block",
-            FigureName::Inversion3OscillatingCylinder => "inversion-3-oscillating-cylinder",
-            FigureName::Inversion4HandPump => "inversion-4-hand-pump",
-            FigureName::SlotConvergence => "slot-convergence",
-            FigureName::TurningMoment => "turning-moment",
-            FigureName::InertiaForce => "inertia-force",
-            FigureName::PrimarySecondary => "primary-secondary",
-            FigureName::DirectReverseCranks => "direct-reverse-cranks",
-            FigureName::Flywheel => "flywheel",
-        }
+        self.spec().name
     }
 
     /// The figure of that name; the error suggests the nearest name
@@ -243,41 +67,35 @@ impl FigureName {
     /// l = 72 mm; newtons) rather than the textbook (§35 engine:
     /// r = 0.5 ft, l = 3 ft, 250 rpm).
     pub fn is_ng(&self) -> bool {
-        matches!(
-            self,
-            FigureName::NgFig1Torque
-                | FigureName::NgFigA1Velocity
-                | FigureName::NgFig2Incline
-                | FigureName::NgFig7Calibration
-                | FigureName::NgFig8Forces
-        )
+        matches!(self.spec().source, Source::Ng(_))
     }
 
     /// Whether it is a diagram rather than a mechanism figure drawn by a
     /// [`Scene`] (then [`FigureName::scene`] is `None`).
-    pub fn is_diagram(&self) -> bool {
-        FigureName::DIAGRAMS.contains(self)
+    pub const fn is_diagram(&self) -> bool {
+        matches!(self.spec().kind, Kind::Diagram(..))
+    }
+
+    /// The gallery's group of a diagram; `None` for a mechanism figure.
+    #[cfg(feature = "html")]
+    pub(crate) fn group(&self) -> Option<Group> {
+        match self.spec().kind {
+            Kind::Mechanism(_) => None,
+            Kind::Diagram(group, _) => Some(group),
+        }
     }
 
     /// The mechanism it is drawn for: Ng's rig (r = 25 mm, l = 72 mm), or
     /// the textbook's §35 engine (r = 0.5 ft, l = 3 ft) except for
     /// `fig-61-centrodes`, drawn with a shorter rod (l = 1.25 ft, n = 2.5)
-    /// on which the centrodes are far enough apart to read.
-    // cannot fail: the lengths are constants above whose rods exceed crank + offset; `every_named_figure_builds` builds each.
+    /// on which the centrodes are far enough apart to read, the chain's
+    /// figures (r = 0.5, l = 1.5) and `slot-convergence` (r = 0.2,
+    /// l = 0.6): the one its entry in the table gives.
+    // cannot fail: the lengths are the table's constants, whose rods exceed crank + offset; `every_named_figure_builds` builds each.
     #[allow(clippy::expect_used)]
     pub fn mechanism(&self) -> SliderCrank {
-        let m = match self {
-            _ if self.is_ng() => SliderCrank::in_line(25.0, 72.0),
-            FigureName::Fig61Centrodes => SliderCrank::in_line(0.5, 1.25),
-            FigureName::Fig60Chains
-            | FigureName::Inversion1Engine
-            | FigureName::Inversion2RotatingBlock
-            | FigureName::Inversion3OscillatingCylinder
-            | FigureName::Inversion4HandPump => SliderCrank::in_line(0.5, 1.5),
-            FigureName::SlotConvergence => SliderCrank::in_line(0.2, 0.6),
-            _ => SliderCrank::in_line(0.5, 3.0),
-        };
-        m.expect("the catalogue's mechanisms are valid")
+        let (crank, rod) = self.spec().mechanism;
+        SliderCrank::in_line(crank, rod).expect("the catalogue's mechanisms are valid")
     }
 
     /// The angle for this figure from `degrees` as the user gave them:
@@ -285,7 +103,7 @@ impl FigureName {
     /// `ng-fig-2-incline` the plane's tilt, strictly between 0° and 90°
     /// and refused as given (`1e300` is not the tilt 0° it reduces to).
     pub fn angle(&self, degrees: f64) -> Result<Angle> {
-        if *self == FigureName::NgFig2Incline && !(degrees > 0.0 && degrees < 90.0) {
+        if matches!(self.spec().at, At::Tilt(_)) && !(degrees > 0.0 && degrees < 90.0) {
             return Err(Error::OutOfRange {
                 name: "angle",
                 value: degrees,
@@ -299,48 +117,14 @@ impl FigureName {
     /// diagram shows; the plane's tilt for `ng-fig-2-incline`), in degrees;
     /// 0 for a diagram that draws no pose.
     pub fn angle_degrees(&self) -> f64 {
-        match self {
-            FigureName::Fig62Displacement => 40.0,
-            FigureName::Fig63Velocity | FigureName::Fig65Klein => 30.0,
-            FigureName::Fig66Kisch => 60.0,
-            FigureName::Fig67Example => 45.0,
-            FigureName::NgFig1Torque => 60.0,
-            FigureName::NgFigA1Velocity => 40.0,
-            FigureName::Fig61Centrodes => 35.0,
-            FigureName::Fig64VelocityDiagrams => 50.0,
-            FigureName::AccelerationDiagrams => 45.0,
-            FigureName::RodMotion => 45.0,
-            FigureName::InertiaForce | FigureName::DirectReverseCranks => 30.0,
-            FigureName::CouplerCurves => 40.0,
-            FigureName::NgFig2Incline => 45.0,
-            FigureName::Fig60Chains => 50.0,
-            FigureName::Inversion1Engine
-            | FigureName::Inversion2RotatingBlock
-            | FigureName::Inversion3OscillatingCylinder
-            | FigureName::Inversion4HandPump => 60.0,
-            FigureName::ApproximationError
-            | FigureName::SlotConvergence
-            | FigureName::NgFig7Calibration
-            | FigureName::NgFig8Forces
-            | FigureName::CurveBenchmark
-            | FigureName::TurningMoment
-            | FigureName::PrimarySecondary
-            | FigureName::Flywheel => 0.0,
-        }
+        self.spec().at.degrees()
     }
 
     /// The layers of a mechanism figure; empty for a diagram.
     pub fn layers(&self) -> Vec<Layer> {
-        use Layer::*;
-        match self {
-            FigureName::Fig62Displacement => vec![Mechanism, Angles, Dimensions],
-            FigureName::Fig63Velocity => vec![Mechanism, Velocity],
-            FigureName::Fig65Klein => vec![Mechanism, Klein],
-            FigureName::Fig66Kisch => vec![Mechanism, Kisch],
-            FigureName::Fig67Example => vec![Mechanism, Velocity, Kisch, Scales],
-            FigureName::NgFig1Torque => vec![Mechanism, Angles, Torque, Motion],
-            FigureName::NgFigA1Velocity => vec![Mechanism, Velocity, Motion],
-            _ => Vec::new(),
+        match self.spec().kind {
+            Kind::Mechanism(layers) => layers.to_vec(),
+            Kind::Diagram(..) => Vec::new(),
         }
     }
 
@@ -356,38 +140,10 @@ impl FigureName {
     }
 
     /// The page it is drawn on.
-    // cannot fail: the sizes are constants between 250 and 900 with a margin of 16.
+    // cannot fail: the table's sizes are constants between 250 and 900 with a margin of 16.
     #[allow(clippy::expect_used)]
     pub fn page(&self) -> Page {
-        let (w, h) = match self {
-            FigureName::Fig62Displacement => (760.0, 250.0),
-            FigureName::Fig63Velocity | FigureName::Fig65Klein => (760.0, 480.0),
-            FigureName::Fig66Kisch => (760.0, 420.0),
-            FigureName::Fig67Example => (760.0, 520.0),
-            FigureName::NgFig1Torque => (640.0, 460.0),
-            FigureName::NgFigA1Velocity => (600.0, 480.0),
-            FigureName::Fig61Centrodes => (760.0, 600.0),
-            FigureName::Fig64VelocityDiagrams => (860.0, 860.0),
-            FigureName::AccelerationDiagrams => (900.0, 760.0),
-            FigureName::RodMotion => (760.0, 640.0),
-            FigureName::ApproximationError => (900.0, 680.0),
-            FigureName::CouplerCurves => (760.0, 340.0),
-            FigureName::NgFig2Incline => (620.0, 520.0),
-            FigureName::NgFig7Calibration => (640.0, 460.0),
-            FigureName::NgFig8Forces => (760.0, 700.0),
-            FigureName::CurveBenchmark => (900.0, 540.0),
-            FigureName::Fig60Chains => (900.0, 420.0),
-            FigureName::Inversion1Engine
-            | FigureName::Inversion2RotatingBlock
-            | FigureName::Inversion3OscillatingCylinder
-            | FigureName::Inversion4HandPump => (760.0, 620.0),
-            FigureName::SlotConvergence => (760.0, 560.0),
-            FigureName::TurningMoment => (900.0, 760.0),
-            FigureName::InertiaForce => (760.0, 760.0),
-            FigureName::PrimarySecondary => (900.0, 760.0),
-            FigureName::DirectReverseCranks => (900.0, 660.0),
-            FigureName::Flywheel => (900.0, 760.0),
-        };
+        let (w, h) = self.spec().page;
         Page::new(w, h, 16.0)
             .expect("catalogue pages are valid")
             .with_width_fitted()
@@ -397,9 +153,11 @@ impl FigureName {
     /// for an option the figure does not use, for bad data, and for what
     /// the mechanism cannot draw.
     pub fn figure(&self, options: &FigureOptions) -> Result<Figure> {
-        match self.scene_with(options)? {
-            Some(scene) => scene.figure(),
-            None => diagrams::build(*self, options).map_err(Error::one_line),
+        match self.spec().kind {
+            Kind::Mechanism(layers) => self.asked_scene(layers, options)?.figure(),
+            Kind::Diagram(_, build) => {
+                diagrams::build(*self, build, options).map_err(Error::one_line)
+            }
         }
     }
 
@@ -409,16 +167,40 @@ impl FigureName {
     /// figure does not use (`--data`, `--fit`, `--mass`, `--fluctuation`) or a
     /// bad value.
     pub fn scene_with(&self, options: &FigureOptions) -> Result<Option<Scene>> {
-        let Some(mut scene) = self.scene() else {
-            return Ok(None);
-        };
-        if let Some(bad) = options
-            .given()
-            .into_iter()
-            .find(|o| ["--data", "--fit", "--mass", "--fluctuation"].contains(o))
-        {
-            return Err(Error::Parse(format!("{} does not use {bad}", self.name())));
+        match self.spec().kind {
+            Kind::Mechanism(layers) => self.asked_scene(layers, options).map(Some),
+            Kind::Diagram(..) => Ok(None),
         }
+    }
+
+    /// Whether the figure takes `setting` from its options.
+    pub(crate) fn takes(&self, setting: Setting) -> bool {
+        self.spec().takes.contains(&setting)
+    }
+
+    /// The first option given in `options` that the figure does not take
+    /// (in the order of [`FigureOptions::given`]).
+    pub(crate) fn unused(&self, options: &FigureOptions) -> Option<Setting> {
+        options.given().into_iter().find(|&o| !self.takes(o))
+    }
+
+    /// Refuses an option given in `options` that the figure does not take,
+    /// naming it as on the command line.
+    pub(crate) fn refuse_unused(&self, options: &FigureOptions) -> Result<()> {
+        match self.unused(options) {
+            Some(bad) => Err(Error::Parse(format!(
+                "{} does not use {}",
+                self.name(),
+                bad.flag()
+            ))),
+            None => Ok(()),
+        }
+    }
+
+    /// The mechanism figure's scene of `layers` with `options` applied.
+    fn asked_scene(&self, layers: &[Layer], options: &FigureOptions) -> Result<Scene> {
+        self.refuse_unused(options)?;
+        let mut scene = self.own_scene(layers);
         if let Some(m) = options.mechanism {
             scene = scene.with_mechanism(m);
         }
@@ -459,7 +241,7 @@ impl FigureName {
         if let Some(t) = &options.title {
             scene = scene.with_title(t.clone());
         }
-        Ok(Some(scene))
+        Ok(scene)
     }
 
     /// The scene file of this figure, as a starting point: every key it
@@ -479,26 +261,32 @@ impl FigureName {
     /// The scene of a mechanism figure with the seed's own parameters;
     /// `None` for a diagram (use [`FigureName::figure`]).
     pub fn scene(&self) -> Option<Scene> {
-        if self.is_diagram() {
-            return None;
+        match self.spec().kind {
+            Kind::Mechanism(layers) => Some(self.own_scene(layers)),
+            Kind::Diagram(..) => None,
         }
+    }
+
+    /// The mechanism figure's scene of `layers` with the seed's own
+    /// parameters.
+    fn own_scene(&self, layers: &[Layer]) -> Scene {
         // cannot fail: the figures' angles are finite constants.
         #[allow(clippy::expect_used)]
         let angle = Angle::from_degrees(self.angle_degrees()).expect("finite");
         let scene = Scene::new(self.mechanism(), angle)
             .with_name(self.name())
-            .with_layers(self.layers())
+            .with_layers(layers.iter().copied())
             .with_page(self.page())
             .with_style(Style::Textbook)
             .with_units(self.units());
-        Some(if self.is_ng() {
+        if self.is_ng() {
             scene
                 .with_notation(Notation::Ng)
                 .with_mirror(false)
                 .with_torque(NG_TORQUE)
         } else {
             scene.with_notation(Notation::Textbook).with_mirror(true)
-        })
+        }
     }
 }
 

@@ -125,48 +125,79 @@ pub struct FigureOptions {
     pub title: Option<Title>,
 }
 
+/// One of the things a named figure may take from its options: each
+/// figure's spec lists those it takes, and a figure refuses any other
+/// that is given.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Setting {
+    /// The mechanism (`--crank`, `--rod`, `--offset`).
+    Mechanism,
+    /// The crank speed (`--rpm`, `--omega`).
+    Speed,
+    /// The crank angle of the pose drawn, or the plane's tilt.
+    Angle,
+    /// The drawing style.
+    Style,
+    /// The face of the text.
+    Font,
+    /// The layers of a mechanism figure.
+    Layers,
+    /// Measured data.
+    Data,
+    /// The calibration line.
+    Fit,
+    /// The letters of a mechanism figure.
+    Notation,
+    /// The mechanism drawn mirrored or not.
+    Mirror,
+    /// The reciprocating mass.
+    Mass,
+    /// The coefficient of fluctuation of speed.
+    Fluctuation,
+}
+
+impl Setting {
+    /// How a message names it, as on the command line (`--angle`,
+    /// `mechanism (--crank, --rod, --offset)`).
+    pub(crate) fn flag(self) -> &'static str {
+        match self {
+            Setting::Mechanism => "mechanism (--crank, --rod, --offset)",
+            Setting::Speed => "crank speed (--rpm, --omega)",
+            Setting::Angle => "--angle",
+            Setting::Style => "--style",
+            Setting::Font => "--font",
+            Setting::Layers => "--layers",
+            Setting::Data => "--data",
+            Setting::Fit => "--fit",
+            Setting::Notation => "--notation",
+            Setting::Mirror => "--mirror",
+            Setting::Mass => "--mass",
+            Setting::Fluctuation => "--fluctuation",
+        }
+    }
+}
+
 impl FigureOptions {
-    /// The names of the options that are set, as on the command line
-    /// (`--data`), for refusing those a figure does not use.
-    pub(crate) fn given(&self) -> Vec<&'static str> {
-        let mut v = Vec::new();
-        if self.mechanism.is_some() {
-            v.push("mechanism (--crank, --rod, --offset)");
-        }
-        if self.omega.is_some() {
-            v.push("crank speed (--rpm, --omega)");
-        }
-        if self.angle.is_some() {
-            v.push("--angle");
-        }
-        if self.style.is_some() {
-            v.push("--style");
-        }
-        if self.font.is_some() {
-            v.push("--font");
-        }
-        if self.layers.is_some() {
-            v.push("--layers");
-        }
-        if self.data.is_some() {
-            v.push("--data");
-        }
-        if self.fit.is_some() {
-            v.push("--fit");
-        }
-        if self.notation.is_some() {
-            v.push("--notation");
-        }
-        if self.mirror.is_some() {
-            v.push("--mirror");
-        }
-        if self.mass.is_some() {
-            v.push("--mass");
-        }
-        if self.fluctuation.is_some() {
-            v.push("--fluctuation");
-        }
-        v
+    /// The options that are set, in the order of [`Setting`], for refusing
+    /// those a figure does not take.
+    pub(crate) fn given(&self) -> Vec<Setting> {
+        [
+            (self.mechanism.is_some(), Setting::Mechanism),
+            (self.omega.is_some(), Setting::Speed),
+            (self.angle.is_some(), Setting::Angle),
+            (self.style.is_some(), Setting::Style),
+            (self.font.is_some(), Setting::Font),
+            (self.layers.is_some(), Setting::Layers),
+            (self.data.is_some(), Setting::Data),
+            (self.fit.is_some(), Setting::Fit),
+            (self.notation.is_some(), Setting::Notation),
+            (self.mirror.is_some(), Setting::Mirror),
+            (self.mass.is_some(), Setting::Mass),
+            (self.fluctuation.is_some(), Setting::Fluctuation),
+        ]
+        .into_iter()
+        .filter_map(|(set, s)| set.then_some(s))
+        .collect()
     }
 
     /// `page` with the width and height asked for in place of its own;
@@ -215,7 +246,8 @@ mod tests {
             fit: Some(Fit::Both),
             ..FigureOptions::default()
         };
-        assert_eq!(o.given(), ["--data", "--fit"]);
+        assert_eq!(o.given(), [Setting::Data, Setting::Fit]);
+        assert_eq!(Setting::Data.flag(), "--data");
         assert!(FigureOptions::default().given().is_empty());
     }
 }

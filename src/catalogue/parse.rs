@@ -3,7 +3,7 @@
 //! ([`keys`] lists them from the structs themselves); docs/scene-format.md
 //! is their reference.
 
-use super::{FigureName, FigureOptions, SceneFile, diagrams};
+use super::{FigureName, FigureOptions, SceneFile, Setting};
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Result};
 use crate::figure::{Font, PageLength, Style, Title};
@@ -259,13 +259,18 @@ fn at<T>(text: &str, span: Range<usize>, r: Result<T>) -> Result<T> {
 pub(super) fn parse(text: &str) -> Result<SceneFile> {
     check_version(text)?;
     let file: File = toml::from_str(text).map_err(|e| toml_error(text, &e))?;
-    if let Some(name) = &file.figure {
-        let figure = at(text, name.span(), FigureName::from_name(name.get_ref()))?;
-        if figure.is_diagram() {
-            return diagram(text, file, figure);
+    let start = match &file.figure {
+        Some(name) => {
+            let figure = at(text, name.span(), FigureName::from_name(name.get_ref()))?;
+            match figure.scene() {
+                Some(scene) => scene,
+                None => return diagram(text, file, figure),
+            }
         }
-    }
-    Ok(SceneFile::Mechanism(mechanism_scene(text, file)?))
+        None => Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::from_degrees(45.0)?)
+            .with_layers([Layer::Mechanism]),
+    };
+    Ok(SceneFile::Mechanism(mechanism_scene(text, &file, start)?))
 }
 
 /// The validated mechanism of a `[mechanism]` table, an error located at
@@ -404,17 +409,19 @@ fn no_dynamics(text: &str, file: &File) -> Result<()> {
     }
 }
 
-fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
-    // cannot fail: a diagram's file returned above; a mechanism figure has a scene.
-    #[allow(clippy::expect_used)]
-    let mut scene = match &file.figure {
-        Some(name) => FigureName::from_name(name.get_ref())?
-            .scene()
-            .expect("a mechanism figure has a scene"),
-        None => Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::from_degrees(45.0)?)
-            .with_layers([Layer::Mechanism]),
-    };
-    no_dynamics(text, &file)?;
+/// The mechanism figure's scene `scene` (or the plain scene of a file
+/// that names no figure) with the file's changes, each refused at its
+/// line and column where it is wrong.
+fn mechanism_scene(text: &str, file: &File, scene: Scene) -> Result<Scene> {
+    no_dynamics(text, file)?;
+    let scene = named(text, file, scene)?;
+    let scene = posed(text, file, scene)?;
+    let scene = styled(text, file, scene)?;
+    moving(text, file, scene)
+}
+
+/// The scene with the file's name, title, mechanism and units.
+fn named(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
     if let Some(n) = &file.name {
         at(text, n.span(), check_name(n.get_ref()))?;
         scene = scene.with_name(n.get_ref().clone());
@@ -427,9 +434,14 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
     if let Some(m) = &file.mechanism {
         scene = scene.with_mechanism(mechanism(text, m)?);
     }
-    let (length, force) = units(text, &file)?;
+    let (length, force) = units(text, file)?;
     let units = scene.units().clone().asked(length.as_ref(), force.as_ref());
     scene = scene.with_units(units);
+    Ok(scene)
+}
+
+/// The scene at the file's `angle` or `angles` (not both).
+fn posed(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
     match (&file.angle, &file.angles) {
         (Some(_), Some(b)) => {
             return Err(located(
@@ -454,6 +466,12 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         }
         (None, None) => {}
     }
+    Ok(scene)
+}
+
+/// The scene with the file's layers, style, face, letters, side and
+/// page.
+fn styled(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
     if let Some(layers) = &file.layers {
         // An empty list would draw a blank page: refused as `--layers ''`.
         if layers.get_ref().is_empty() {
@@ -477,7 +495,13 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
         let built = page(text, p, scene.page())?;
         scene = scene.with_page(built);
     }
-    if let Some((omega, span)) = speed(text, &file)? {
+    Ok(scene)
+}
+
+/// The scene with the file's speed, torque, coupler point and
+/// tolerance.
+fn moving(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
+    if let Some((omega, span)) = speed(text, file)? {
         scene = scene.with_omega(at(text, span, valid::omega(omega))?);
     }
     if let Some(t) = &file.torque {
@@ -493,11 +517,9 @@ fn mechanism_scene(text: &str, file: File) -> Result<Scene> {
     Ok(scene)
 }
 
-/// A named diagram with the file's changes: the keys of the mechanism
-/// figures' scenes (`name`, `angles`, `layers`, `torque`, `coupler`,
-/// `tolerance`, `[page] margin`) are refused, and so is any key the
-/// diagram has no use for, each at its line and column.
-fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
+/// Refuses the keys of the mechanism figures' scenes in the file of the
+/// diagram `name`, at the first one's line and column.
+fn refuse_scene_keys(text: &str, file: &File, name: FigureName) -> Result<()> {
     let scene_only = [
         ("name", file.name.as_ref().map(|s| s.span())),
         ("angles", file.angles.as_ref().map(|s| s.span())),
@@ -525,52 +547,41 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
             ));
         }
     }
-    // Each option alone, refused where the diagram does not use it.
-    let refuse = |one: FigureOptions, key: &str, span: Range<usize>| -> Result<()> {
-        match diagrams::unused(name, &one) {
-            Some(_) => Err(located(
+    Ok(())
+}
+
+/// A named diagram with the file's changes: the keys of the mechanism
+/// figures' scenes (`name`, `angles`, `layers`, `torque`, `coupler`,
+/// `tolerance`, `[page] margin`) are refused, and so is any key the
+/// diagram has no use for, each at its line and column.
+fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
+    refuse_scene_keys(text, &file, name)?;
+    // Each option, refused where the diagram does not take it.
+    let refuse = |setting: Setting, key: &str, span: Range<usize>| -> Result<()> {
+        if name.takes(setting) {
+            Ok(())
+        } else {
+            Err(located(
                 text,
                 span,
                 format!("{} does not use `{key}`", name.name()),
-            )),
-            None => Ok(()),
+            ))
         }
     };
     let mut options = FigureOptions::default();
     if let Some(m) = &file.mechanism {
         let built = mechanism(text, m)?;
-        refuse(
-            FigureOptions {
-                mechanism: Some(built),
-                ..FigureOptions::default()
-            },
-            "[mechanism]",
-            m.crank.span(),
-        )?;
+        refuse(Setting::Mechanism, "[mechanism]", m.crank.span())?;
         options.mechanism = Some(built);
     }
     if let Some(a) = &file.angle {
         let angle = at(text, a.span(), name.angle(a.get_ref().0))?;
-        refuse(
-            FigureOptions {
-                angle: Some(angle),
-                ..FigureOptions::default()
-            },
-            "angle",
-            a.span(),
-        )?;
+        refuse(Setting::Angle, "angle", a.span())?;
         options.angle = Some(angle);
     }
     if let Some((omega, span)) = speed(text, &file)? {
         let key = if file.rpm.is_some() { "rpm" } else { "omega" };
-        refuse(
-            FigureOptions {
-                omega: Some(omega),
-                ..FigureOptions::default()
-            },
-            key,
-            span.clone(),
-        )?;
+        refuse(Setting::Speed, key, span.clone())?;
         if !(omega > 0.0 && omega.is_finite()) {
             return Err(located(
                 text,
@@ -581,46 +592,18 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
         options.omega = Some(omega);
     }
     if let Some(n) = &file.notation {
-        refuse(
-            FigureOptions {
-                notation: Some(*n.get_ref()),
-                ..FigureOptions::default()
-            },
-            "notation",
-            n.span(),
-        )?;
+        refuse(Setting::Notation, "notation", n.span())?;
     }
     if let Some(m) = &file.mirror {
-        refuse(
-            FigureOptions {
-                mirror: Some(*m.get_ref()),
-                ..FigureOptions::default()
-            },
-            "mirror",
-            m.span(),
-        )?;
+        refuse(Setting::Mirror, "mirror", m.span())?;
         options.mirror = Some(*m.get_ref());
     }
     if let Some(m) = &file.mass {
-        refuse(
-            FigureOptions {
-                mass: Some(*m.get_ref()),
-                ..FigureOptions::default()
-            },
-            "mass",
-            m.span(),
-        )?;
+        refuse(Setting::Mass, "mass", m.span())?;
         options.mass = Some(*m.get_ref());
     }
     if let Some(c) = &file.fluctuation {
-        refuse(
-            FigureOptions {
-                fluctuation: Some(*c.get_ref()),
-                ..FigureOptions::default()
-            },
-            "fluctuation",
-            c.span(),
-        )?;
+        refuse(Setting::Fluctuation, "fluctuation", c.span())?;
         options.fluctuation = Some(*c.get_ref());
     }
     options.style = file.style;

@@ -2,7 +2,8 @@
 //! uses at the figure's own value, each with a comment, as a starting
 //! point. The parser reads it back to the same figure.
 
-use super::{FigureName, diagrams, parse};
+use super::specs::At;
+use super::{FigureName, Setting, parse};
 use crate::figure::{PageLength, PageUnit};
 use crate::scene::{Layer, Scene};
 use std::fmt::Write;
@@ -125,76 +126,9 @@ pub(crate) fn scene(name: FigureName, scene: &Scene) -> String {
         name,
         "",
     );
-    key(
-        &mut out,
-        "The name written in the figure's metadata.",
-        &format!("name = {}", text(scene.name())),
-    );
-    let degrees: Vec<String> = scene.angles().iter().map(|a| number(a.degrees())).collect();
-    if let [one] = degrees.as_slice() {
-        key(
-            &mut out,
-            "Crank angle θ in degrees, counter-clockwise from the line of stroke (0: outer dead centre).",
-            &format!("angle = {one}"),
-        );
-    } else {
-        key(
-            &mut out,
-            "The poses, degrees: the first carries the constructions, the others are ghosts.",
-            &format!("angles = [{}]", degrees.join(", ")),
-        );
-    }
-    let all: Vec<&str> = Layer::ALL.iter().map(|l| l.name()).collect();
-    let layers: Vec<String> = scene.layers().iter().map(|l| text(l.name())).collect();
-    key(
-        &mut out,
-        &format!("The layers drawn, any of: {}.", all.join(", ")),
-        &format!("layers = [{}]", layers.join(", ")),
-    );
-    key(
-        &mut out,
-        STYLE,
-        &format!("style = {}", text(scene.style().name())),
-    );
-    key(
-        &mut out,
-        FONT,
-        &format!("font = {}", text(scene.font().name())),
-    );
-    key(
-        &mut out,
-        "The letters: textbook (C, B, A, D, E) or ng (O, C, P, I, M).",
-        &format!("notation = {}", text(scene.notation().name())),
-    );
-    key(
-        &mut out,
-        "Whether the cylinder is drawn on the left, as the textbook draws it.",
-        &format!("mirror = {}", scene.is_mirrored()),
-    );
-    key(
-        &mut out,
-        "Crank speed, revolutions per minute (or omega, rad/s; counter-clockwise when positive).",
-        &speed(scene.omega()),
-    );
-    key(
-        &mut out,
-        "Crank torque of the torque layer, force × length.",
-        &format!("torque = {}", number(scene.torque())),
-    );
-    key(
-        &mut out,
-        "The point of the rod whose path the coupler layer draws, from A (0) to B (1).",
-        &format!("coupler = {}", number(scene.coupler().t())),
-    );
-    key(
-        &mut out,
-        "The drawing tolerance of curves, page units.",
-        &format!("tolerance = {}", number(scene.tolerance())),
-    );
-    match scene.title() {
-        Some(t) => key(&mut out, TITLE, &format!("title = {}", text(t.as_str()))),
-        None => key(&mut out, TITLE, "# title = \"…\""),
-    }
+    pose_keys(&mut out, scene);
+    look_keys(&mut out, scene);
+    motion_keys(&mut out, scene);
     mechanism_table(&mut out, scene.mechanism());
     units_table(&mut out, scene.units());
     let page = scene.page();
@@ -211,14 +145,90 @@ pub(crate) fn scene(name: FigureName, scene: &Scene) -> String {
     out
 }
 
+/// A scene's name, its pose or poses, and its layers.
+fn pose_keys(out: &mut String, scene: &Scene) {
+    key(
+        out,
+        "The name written in the figure's metadata.",
+        &format!("name = {}", text(scene.name())),
+    );
+    let degrees: Vec<String> = scene.angles().iter().map(|a| number(a.degrees())).collect();
+    if let [one] = degrees.as_slice() {
+        key(
+            out,
+            "Crank angle θ in degrees, counter-clockwise from the line of stroke (0: outer dead centre).",
+            &format!("angle = {one}"),
+        );
+    } else {
+        key(
+            out,
+            "The poses, degrees: the first carries the constructions, the others are ghosts.",
+            &format!("angles = [{}]", degrees.join(", ")),
+        );
+    }
+    let all: Vec<&str> = Layer::ALL.iter().map(|l| l.name()).collect();
+    let layers: Vec<String> = scene.layers().iter().map(|l| text(l.name())).collect();
+    key(
+        out,
+        &format!("The layers drawn, any of: {}.", all.join(", ")),
+        &format!("layers = [{}]", layers.join(", ")),
+    );
+}
+
+/// A scene's style, face, letters and side.
+fn look_keys(out: &mut String, scene: &Scene) {
+    key(
+        out,
+        STYLE,
+        &format!("style = {}", text(scene.style().name())),
+    );
+    key(out, FONT, &format!("font = {}", text(scene.font().name())));
+    key(
+        out,
+        "The letters: textbook (C, B, A, D, E) or ng (O, C, P, I, M).",
+        &format!("notation = {}", text(scene.notation().name())),
+    );
+    key(
+        out,
+        "Whether the cylinder is drawn on the left, as the textbook draws it.",
+        &format!("mirror = {}", scene.is_mirrored()),
+    );
+}
+
+/// A scene's speed, torque, coupler point, tolerance and title.
+fn motion_keys(out: &mut String, scene: &Scene) {
+    key(
+        out,
+        "Crank speed, revolutions per minute (or omega, rad/s; counter-clockwise when positive).",
+        &speed(scene.omega()),
+    );
+    key(
+        out,
+        "Crank torque of the torque layer, force × length.",
+        &format!("torque = {}", number(scene.torque())),
+    );
+    key(
+        out,
+        "The point of the rod whose path the coupler layer draws, from A (0) to B (1).",
+        &format!("coupler = {}", number(scene.coupler().t())),
+    );
+    key(
+        out,
+        "The drawing tolerance of curves, page units.",
+        &format!("tolerance = {}", number(scene.tolerance())),
+    );
+    match scene.title() {
+        Some(t) => key(out, TITLE, &format!("title = {}", text(t.as_str()))),
+        None => key(out, TITLE, "# title = \"…\""),
+    }
+}
+
 /// The scene file of a diagram: `figure` and the keys it uses, at its own
 /// values.
 pub(crate) fn diagram(name: FigureName) -> String {
-    const MECH: &str = "mechanism (--crank, --rod, --offset)";
-    const SPEED: &str = "crank speed (--rpm, --omega)";
-    let uses = diagrams::uses(name);
+    let takes = |s: Setting| name.takes(s);
     let mut out = String::new();
-    let data = match (uses.contains(&"--data"), uses.contains(&"--fit")) {
+    let data = match (takes(Setting::Data), takes(Setting::Fit)) {
         (true, true) => {
             " Its measured data (--data) and its fit (--fit) are given on the command line only."
         }
@@ -239,57 +249,8 @@ pub(crate) fn diagram(name: FigureName) -> String {
         "The diagram: its keys below change it.",
         &format!("figure = {}", text(name.name())),
     );
-    if uses.contains(&"--angle") {
-        let what = if name == FigureName::NgFig2Incline {
-            "The tilt of the plane, degrees (0 < φ < 90)."
-        } else {
-            "Crank angle θ of the pose whose construction is drawn, degrees."
-        };
-        key(
-            &mut out,
-            what,
-            &format!("angle = {}", number(name.angle_degrees())),
-        );
-    }
-    if uses.contains(&SPEED) {
-        key(
-            &mut out,
-            "Crank speed, revolutions per minute (or omega, rad/s), positive.",
-            &speed(crate::analytic::kinematics::rpm_to_omega(250.0)),
-        );
-    }
-    key(&mut out, STYLE, "style = \"textbook\"");
-    key(
-        &mut out,
-        FONT,
-        &format!("font = {}", text(crate::figure::Font::default().name())),
-    );
-    if uses.contains(&"--mirror") {
-        key(
-            &mut out,
-            "Whether the mechanism is drawn with the cylinder on the left.",
-            &format!("mirror = {}", !name.is_ng()),
-        );
-    }
-    if uses.contains(&"--mass") {
-        key(
-            &mut out,
-            "Reciprocating mass m of the engine, force·s²/length (slug with lbf and ft), positive.",
-            &format!("mass = {}", number(crate::dynamics::EXAMPLE_MASS)),
-        );
-    }
-    if uses.contains(&"--fluctuation") {
-        key(
-            &mut out,
-            "Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω, above 0 and below 2.",
-            &format!(
-                "fluctuation = {}",
-                number(super::diagrams::DEFAULT_COEFFICIENT)
-            ),
-        );
-    }
-    key(&mut out, TITLE, "# title = \"…\"");
-    if uses.contains(&MECH) {
+    diagram_keys(&mut out, name);
+    if takes(Setting::Mechanism) {
         mechanism_table(&mut out, &name.mechanism());
     }
     units_table(&mut out, &name.units());
@@ -302,6 +263,63 @@ pub(crate) fn diagram(name: FigureName) -> String {
     let _ = writeln!(out, "width = {}", number(page.width()));
     let _ = writeln!(out, "height = {}", number(page.height()));
     out
+}
+
+/// The keys a diagram takes beside `figure`, each at its own value:
+/// the angle (or the plane's tilt), speed, style, face, side, mass and
+/// coefficient of fluctuation, and the title.
+fn diagram_keys(out: &mut String, name: FigureName) {
+    let takes = |s: Setting| name.takes(s);
+    if takes(Setting::Angle) {
+        let what = if matches!(name.spec().at, At::Tilt(_)) {
+            "The tilt of the plane, degrees (0 < φ < 90)."
+        } else {
+            "Crank angle θ of the pose whose construction is drawn, degrees."
+        };
+        key(
+            out,
+            what,
+            &format!("angle = {}", number(name.angle_degrees())),
+        );
+    }
+    if takes(Setting::Speed) {
+        key(
+            out,
+            "Crank speed, revolutions per minute (or omega, rad/s), positive.",
+            &speed(crate::analytic::kinematics::rpm_to_omega(250.0)),
+        );
+    }
+    key(out, STYLE, "style = \"textbook\"");
+    key(
+        out,
+        FONT,
+        &format!("font = {}", text(crate::figure::Font::default().name())),
+    );
+    if takes(Setting::Mirror) {
+        key(
+            out,
+            "Whether the mechanism is drawn with the cylinder on the left.",
+            &format!("mirror = {}", !name.is_ng()),
+        );
+    }
+    if takes(Setting::Mass) {
+        key(
+            out,
+            "Reciprocating mass m of the engine, force·s²/length (slug with lbf and ft), positive.",
+            &format!("mass = {}", number(crate::dynamics::EXAMPLE_MASS)),
+        );
+    }
+    if takes(Setting::Fluctuation) {
+        key(
+            out,
+            "Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω, above 0 and below 2.",
+            &format!(
+                "fluctuation = {}",
+                number(super::diagrams::DEFAULT_COEFFICIENT)
+            ),
+        );
+    }
+    key(out, TITLE, "# title = \"…\"");
 }
 
 #[cfg(test)]

@@ -4,7 +4,7 @@
 
 use super::quote::{shell_word, url_path};
 use super::{Gallery, SceneEntry};
-use crate::catalogue::FigureName;
+use crate::catalogue::{FigureName, Group};
 use crate::html::document;
 use crate::render::FileFormat;
 use crate::table::{Table, TableName};
@@ -22,35 +22,21 @@ figcaption { margin-top: .5rem; }
 /// The four groups of figures and their headings: the teaching figures,
 /// then the developers' benchmark on its own.
 fn groups(figures: &[FigureName]) -> [(&'static str, &'static str, Vec<FigureName>); 4] {
-    let developer = |f: &FigureName| *f == FigureName::CurveBenchmark;
-    let chain = |f: &FigureName| {
-        matches!(
-            f,
-            FigureName::Fig60Chains
-                | FigureName::Inversion1Engine
-                | FigureName::Inversion2RotatingBlock
-                | FigureName::Inversion3OscillatingCylinder
-                | FigureName::Inversion4HandPump
-                | FigureName::SlotConvergence
-        )
+    let pick = |group: Option<Group>| {
+        figures
+            .iter()
+            .copied()
+            .filter(|f| f.group() == group)
+            .collect()
     };
-    let pick = |keep: &dyn Fn(&FigureName) -> bool| figures.iter().copied().filter(keep).collect();
     [
-        (
-            "mechanisms",
-            "Mechanism figures",
-            pick(&|f| !f.is_diagram()),
-        ),
-        (
-            "diagrams",
-            "Diagrams",
-            pick(&|f| f.is_diagram() && !chain(f) && !developer(f)),
-        ),
-        ("chain", "The chain of Fig. 60", pick(&chain)),
+        ("mechanisms", "Mechanism figures", pick(None)),
+        ("diagrams", "Diagrams", pick(Some(Group::Diagrams))),
+        ("chain", "The chain of Fig. 60", pick(Some(Group::Chain))),
         (
             "developers",
             "For developers: the accuracy of the drawn curves",
-            pick(&developer),
+            pick(Some(Group::Developers)),
         ),
     ]
 }

@@ -2,7 +2,7 @@
 //! the handout's engine, and their SVG made fit to be inlined in a page.
 
 use super::Handout;
-use crate::catalogue::FigureOptions;
+use crate::catalogue::{FigureOptions, Setting};
 use crate::error::Result;
 use crate::figure::{Figure, Panel, Part, Role};
 use crate::render::{Element, SvgOptions, fmt, to_svg_with};
@@ -100,18 +100,19 @@ pub(super) fn inline_options(prefix: &str) -> SvgOptions {
 
 /// The dynamics diagram `name` for the handout's engine, pose, speed,
 /// units, reciprocating mass and coefficient of fluctuation of speed (the
-/// figures' own gas force, their indicator diagram); the pose only for
-/// the one drawn at a pose, the inertia force's.
+/// figures' own gas force, their indicator diagram); the pose and the
+/// coefficient only for a figure that takes them (the inertia force's
+/// pose, the flywheel's coefficient).
 pub(super) fn dynamics(h: &Handout, name: FigureName) -> Result<Figure> {
     let (mass, fluctuation) = h.dynamics().unzip();
     let options = FigureOptions {
         mechanism: Some(*h.mechanism()),
         omega: Some(h.omega()),
-        angle: Some(h.angle()).filter(|_| name == FigureName::InertiaForce),
+        angle: Some(h.angle()).filter(|_| name.takes(Setting::Angle)),
         length_unit: Some(h.units().length().clone()),
         force_unit: Some(h.units().force().clone()),
         mass,
-        fluctuation: fluctuation.filter(|_| name == FigureName::Flywheel),
+        fluctuation: fluctuation.filter(|_| name.takes(Setting::Fluctuation)),
         ..FigureOptions::default()
     };
     name.figure(&options)

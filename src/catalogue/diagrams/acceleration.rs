@@ -22,56 +22,120 @@ use crate::{angle::Angle, mechanism::Pose};
 /// small size, and the abscissa's.
 const NARROWEST_COLUMNS: f64 = 700.0;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+/// The height of a row of plots, page units.
+const ROW: f64 = 350.0;
+
+/// Where the three panels go: (a) and (b) side by side with (c) below
+/// both, the notes beside (c), where a column holds the axes' titles; on
+/// a narrower page the three stacked at the page's width and the notes
+/// below them.
+struct Layout {
+    columns: bool,
+    /// A panel's width.
+    half: f64,
+    /// (b)'s top left corner.
+    b_at: Point,
+    /// (c)'s top.
+    c_top: f64,
+}
+
+impl Layout {
+    fn new(page_width: f64) -> Self {
+        let columns = page_width >= NARROWEST_COLUMNS;
+        let half = match columns {
+            true => 0.5 * (page_width - 32.0 - 16.0),
+            false => page_width - 32.0,
+        };
+        // Where (b) and (c) go: beside (a) and below both, or each below.
+        let (b_at, c_top) = match columns {
+            true => (Point::new(16.0 + half + 16.0, 16.0), 16.0 + ROW + 12.0),
+            false => (
+                Point::new(16.0, 16.0 + ROW + 12.0),
+                16.0 + 2.0 * (ROW + 12.0),
+            ),
+        };
+        Self {
+            columns,
+            half,
+            b_at,
+            c_top,
+        }
+    }
+}
+
+/// The acceleration's axis: its title, and the range of f over a turn
+/// with simple harmonic motion's ±rω² inside it.
+struct FAxis {
+    title: String,
+    lo: f64,
+    hi: f64,
+}
+
+impl FAxis {
+    fn new(ctx: &Ctx) -> Self {
+        let m = ctx.mechanism;
+        let w2 = ctx.omega * ctx.omega;
+        let rw2 = m.crank() * w2;
+        let (lo, hi) = extent(&m, |p| -w2 * p.position_acceleration());
+        Self {
+            title: format!("*f* = −d²*x*/d*t*² ({}/s²), towards the crank", ctx.unit()),
+            lo: lo.min(-rw2),
+            hi: hi.max(rw2),
+        }
+    }
+}
+
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
-    let m = ctx.mechanism;
-    let (r, omega) = (m.crank(), ctx.omega);
-    let w2 = omega * omega;
-    let unit = ctx.unit();
+    let layout = Layout::new(page.width());
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
-    let (lo, hi) = extent(&m, |p| -w2 * p.position_acceleration());
-    let f_axis = |title: &str| Axis::nice(title, lo.min(-r * w2), hi.max(r * w2));
-    let f_title = format!("*f* = −d²*x*/d*t*² ({unit}/s²), towards the crank");
-    // Two columns where a column holds the axes' titles; on a narrower
-    // page the three panels are stacked at the page's width and the notes
-    // go below them.
-    let columns = page.width() >= NARROWEST_COLUMNS;
-    let half = match columns {
-        true => 0.5 * (page.width() - 32.0 - 16.0),
-        false => page.width() - 32.0,
+    let f = FAxis::new(ctx);
+    sheet.plot(distance_base(ctx, &layout, &f)?);
+    sheet.plot(time_base(ctx, &layout, &f)?);
+    // As tall as beside the notes on the figure's own page.
+    let tall = page.height() - (16.0 + ROW + 12.0) - 16.0;
+    sheet.plot(polar_diagram(ctx, &layout, tall)?);
+    let corner = match layout.columns {
+        true => Point::new(16.0 + layout.half + 28.0, layout.c_top + 30.0),
+        false => {
+            let below = layout.c_top + tall + 12.0;
+            sheet.height(below + 6.0 * NOTE_LINE + 16.0);
+            Point::new(28.0, below)
+        }
     };
-    let row = 350.0;
-    // Where (b) and (c) go: beside (a) and below both, or each below.
-    let (b_at, c_top) = match columns {
-        true => (Point::new(16.0 + half + 16.0, 16.0), 16.0 + row + 12.0),
-        false => (
-            Point::new(16.0, 16.0 + row + 12.0),
-            16.0 + 2.0 * (row + 12.0),
-        ),
-    };
-    let exact = |p: &Pose| (-w2 * p.position_acceleration(), -w2 * p.position_jerk());
-    let (o, i) = dead_centres(&m);
+    sheet.notes(corner, &notes(ctx));
+    Ok(sheet.finish())
+}
 
-    // (a) Distance base.
+/// f = −d²x/dt² of a pose and its rate per radian.
+fn exact(w2: f64) -> impl Fn(&Pose) -> (f64, f64) {
+    move |p: &Pose| (-w2 * p.position_acceleration(), -w2 * p.position_jerk())
+}
+
+/// (a) The acceleration on a distance base: both strokes on one curve in
+/// line, each on its own where the stroke is offset, and simple harmonic
+/// motion.
+fn distance_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let r = m.crank();
+    let w2 = ctx.omega * ctx.omega;
+    let (o, i) = dead_centres(&m);
     let far = ((m.rod() + r - m.offset()) * (m.rod() + r + m.offset())).sqrt();
     let near = ((m.rod() - r - m.offset()) * (m.rod() - r + m.offset())).sqrt();
-    let rect = super::PageRect::new(16.0, 16.0, half, row);
+    let rect = super::PageRect::new(16.0, 16.0, layout.half, ROW);
     let x = Axis::nice(
-        &format!("displacement of *A* from the outer dead centre ({unit})"),
+        &format!(
+            "displacement of *A* from the outer dead centre ({})",
+            ctx.unit()
+        ),
         0.0,
         (far - near).max(2.0 * r),
     )?;
-    let mut distance = Plot::new(
-        "distance-base",
-        rect,
-        x,
-        f_axis(&f_title)?,
-        ctx.tolerance,
-        ctx.font,
-    )?
-    .with_caption("(a) Acceleration on a distance base");
-    let outward = against_travel(m, exact);
+    let y = Axis::nice(&f.title, f.lo, f.hi)?;
+    let mut distance = Plot::new("distance-base", rect, x, y, ctx.tolerance, ctx.font)?
+        .with_caption("(a) Acceleration on a distance base");
+    let outward = against_travel(m, exact(w2));
     let mut pieces: Vec<(&dyn crate::diagram::Curve, std::ops::RangeInclusive<f64>)> =
         vec![(&outward, o..=i)];
     if m.offset() == 0.0 {
@@ -110,24 +174,25 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Dash::Dashed,
         Some("simple harmonic motion"),
     )?;
-    sheet.plot(distance);
+    Ok(distance)
+}
 
-    // (b) Time base.
+/// (b) The acceleration on a time base over a turn, and simple harmonic
+/// motion, with headroom above the curves for the legend.
+fn time_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let (r, omega) = (m.crank(), ctx.omega);
+    let w2 = omega * omega;
     let period = std::f64::consts::TAU / omega;
-    let rect = super::PageRect::new(b_at.x, b_at.y, half, row);
+    let rect = super::PageRect::new(layout.b_at.x, layout.b_at.y, layout.half, ROW);
     let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
-    // Headroom above the curves for the legend.
-    let headroom = Axis::nice(
-        &f_title,
-        lo.min(-r * w2),
-        hi.max(r * w2) + 0.2 * (hi.max(r * w2) - lo.min(-r * w2)),
-    )?;
+    let headroom = Axis::nice(&f.title, f.lo, f.hi + 0.2 * (f.hi - f.lo))?;
     let mut time = Plot::new("time-base", rect, x, headroom, ctx.tolerance, ctx.font)?
         .with_caption(&format!(
             "(b) Acceleration on a time base, {} rpm",
             short(ctx.rpm())
         ));
-    let exact_t = against_time(m, omega, exact);
+    let exact_t = against_time(m, omega, exact(w2));
     time.curve(
         "curve-acceleration-time",
         &[(&exact_t, 0.0..=360.0)],
@@ -143,9 +208,15 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Dash::Dashed,
         Some("simple harmonic motion, *r*ω² cos θ"),
     )?;
-    sheet.plot(time);
+    Ok(time)
+}
 
-    // (c) Polar diagram, in the mechanism's world coordinates.
+/// (c) The polar diagram in the mechanism's world coordinates, `tall`
+/// page units high: CG′ = CG on the crank over a turn, simple harmonic
+/// motion's circle, and the construction at the drawn pose.
+fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let r = m.crank();
     let polar = |deg: f64| {
         let pose = m.pose(Angle::from_degrees(deg).ok()?);
         let (s, c) = (pose.angle().sin(), pose.angle().cos());
@@ -170,10 +241,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(-1.08 * r, -1.08 * reach),
         Point::new(1.08 * reach, 1.08 * reach),
     );
-    let top = c_top;
-    // As tall as beside the notes on the figure's own page.
-    let tall = page.height() - (16.0 + row + 12.0) - 16.0;
-    let rect = super::PageRect::new(16.0, top, half, tall);
+    let rect = super::PageRect::new(16.0, layout.c_top, layout.half, tall);
     let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dashed");
     polar_construction(&mut plot, &ctx.pose(), reach);
@@ -189,48 +257,44 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Dash::Dashed,
         None,
     )?;
-    sheet.plot(plot);
+    Ok(plot)
+}
 
+/// The notes: the engine and its speed, the acceleration scale, CG and f
+/// at the drawn pose, and f at the dead centres.
+fn notes(ctx: &Ctx) -> [String; 6] {
+    let m = ctx.mechanism;
+    let (r, omega) = (m.crank(), ctx.omega);
+    let w2 = omega * omega;
+    let unit = ctx.unit();
     let pose = ctx.pose();
     let cg = -pose.position_acceleration();
-    let corner = match columns {
-        true => Point::new(16.0 + half + 28.0, top + 30.0),
-        false => {
-            let below = top + tall + 12.0;
-            sheet.height(below + 6.0 * NOTE_LINE + 16.0);
-            Point::new(28.0, below)
-        }
-    };
-    sheet.notes(
-        corner,
-        &[
-            format!(
-                "Engine: *r* = {} {unit}, *l* = {} {unit} (*n* = {}), {} rpm,",
-                short(r),
-                short(m.rod()),
-                short(m.ratio()),
-                short(ctx.rpm())
-            ),
-            format!(
-                "ω = {} rad/s, *r*ω² = {} {unit}/s².",
-                sig(omega),
-                sig(r * w2)
-            ),
-            format!(
-                "Acceleration scale: 1 {unit} of *CG* represents ω² = {} {unit}/s².",
-                sig(w2)
-            ),
-            format!(
-                "At θ = {}°: *CG* = {} {unit}, so *f* = {} {unit}/s².",
-                short(pose.angle().degrees()),
-                sig(cg),
-                sig(w2 * cg)
-            ),
-            "Outer dead centre: *f* = *r*ω²(1 + 1/*n*);".to_string(),
-            "inner dead centre: *f* = −*r*ω²(1 − 1/*n*) (in line).".to_string(),
-        ],
-    );
-    Ok(sheet.finish())
+    [
+        format!(
+            "Engine: *r* = {} {unit}, *l* = {} {unit} (*n* = {}), {} rpm,",
+            short(r),
+            short(m.rod()),
+            short(m.ratio()),
+            short(ctx.rpm())
+        ),
+        format!(
+            "ω = {} rad/s, *r*ω² = {} {unit}/s².",
+            sig(omega),
+            sig(r * w2)
+        ),
+        format!(
+            "Acceleration scale: 1 {unit} of *CG* represents ω² = {} {unit}/s².",
+            sig(w2)
+        ),
+        format!(
+            "At θ = {}°: *CG* = {} {unit}, so *f* = {} {unit}/s².",
+            short(pose.angle().degrees()),
+            sig(cg),
+            sig(w2 * cg)
+        ),
+        "Outer dead centre: *f* = *r*ω²(1 + 1/*n*);".to_string(),
+        "inner dead centre: *f* = −*r*ω²(1 − 1/*n*) (in line).".to_string(),
+    ]
 }
 
 /// The crank circle, the line of stroke, the crank at the drawn pose, G

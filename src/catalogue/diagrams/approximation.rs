@@ -66,7 +66,7 @@ fn rod(p: &Pose) -> (f64, f64) {
     )
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);

@@ -32,10 +32,72 @@ struct Row<'a> {
 /// each with its legend inside.
 const NARROWEST_COLUMNS: f64 = 700.0;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+/// One of the two plots: its id, ordinate's title, caption and the value
+/// of a row it draws against the measured error.
+type Panel = (&'static str, &'static str, &'static str, fn(&Row) -> f64);
+
+/// The two plots.
+const PANELS: [Panel; 2] = [
+    (
+        "segments",
+        "segments",
+        "(a) Segments against measured error",
+        |r| r.segments,
+    ),
+    (
+        "time",
+        "time per curve (µs)",
+        "(b) Time against measured error",
+        |r| r.time,
+    ),
+];
+
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let text = ctx.options.data.as_deref().unwrap_or(TABLE);
     let table = Table::parse(text, "data")?;
+    let rows = rows(&table)?;
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
+    // Side by side where each holds its legend (about 330 units wide);
+    // on a narrower page one above the other, each as tall as beside.
+    let columns = page.width() >= NARROWEST_COLUMNS;
+    let width = match columns {
+        true => 0.5 * (page.width() - 48.0),
+        false => page.width() - 32.0,
+    };
+    let height = page.height() - 32.0 - 40.0;
+    let place = |k: usize| match columns {
+        true => Point::new(16.0 + k as f64 * (width + 16.0), 16.0),
+        false => Point::new(16.0, 16.0 + k as f64 * (height + 16.0)),
+    };
+    let notes_top = match columns {
+        true => page.height() - 40.0,
+        false => {
+            let top = 16.0 + 2.0 * (height + 16.0);
+            sheet.height(top + 40.0);
+            top
+        }
+    };
+    for (k, panel) in PANELS.into_iter().enumerate() {
+        let at = place(k);
+        let rect = PageRect::new(at.x, at.y, width, height);
+        sheet.plot(plot(ctx, &rows, panel, rect)?);
+    }
+    sheet.notes(
+        Point::new(20.0, notes_top),
+        &[if ctx.options.data.is_some() {
+            "From the table given (--data).".to_string()
+        } else {
+            "From docs/curve-benchmarks.csv, written by the curve table example (criterion times on the machine that ran it).".to_string()
+        }],
+    );
+    Ok(sheet.finish())
+}
+
+/// The rows of `table` of a method drawn with positive segments, error
+/// and time; refused where there are none.
+fn rows(table: &Table) -> Result<Vec<Row<'_>>> {
     let curves = table.texts(table.column(&["curve"])?);
     let methods = table.texts(table.column(&["method"])?);
     let segments = table.numbers(table.column(&["segments"])?)?;
@@ -63,95 +125,56 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
                 .into(),
         ));
     }
+    Ok(rows)
+}
+
+/// The least and greatest of `f` over `rows`.
+fn range(rows: &[Row], f: &dyn Fn(&Row) -> f64) -> (f64, f64) {
+    rows.iter()
+        .map(f)
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
+            (lo.min(v), hi.max(v))
+        })
+}
+
+/// One plot of `rows` in `rect`, log–log: a line style a curve, a marker
+/// a method, with a decade of room above the data for the legend.
+fn plot(
+    ctx: &Ctx,
+    rows: &[Row],
+    (name, title, caption, value): Panel,
+    rect: PageRect,
+) -> Result<Plot> {
     let mut names: Vec<&str> = Vec::new();
-    for r in &rows {
+    for r in rows {
         if !names.contains(&r.curve) {
             names.push(r.curve);
         }
     }
-    let range = |f: &dyn Fn(&Row) -> f64| {
-        rows.iter()
-            .map(f)
-            .fold((f64::INFINITY, 0.0f64), |(lo, hi), v| {
-                (lo.min(v), hi.max(v))
-            })
-    };
-    let (e0, e1) = range(&|r| r.error);
-    let mut sheet = Sheet::new(ctx);
-    sheet.mechanism(ctx, false, false);
-    // Side by side where each holds its legend (about 330 units wide);
-    // on a narrower page one above the other, each as tall as beside.
-    let columns = page.width() >= NARROWEST_COLUMNS;
-    let width = match columns {
-        true => 0.5 * (page.width() - 48.0),
-        false => page.width() - 32.0,
-    };
-    let height = page.height() - 32.0 - 40.0;
-    let place = |k: usize| match columns {
-        true => Point::new(16.0 + k as f64 * (width + 16.0), 16.0),
-        false => Point::new(16.0, 16.0 + k as f64 * (height + 16.0)),
-    };
-    let notes_top = match columns {
-        true => page.height() - 40.0,
-        false => {
-            let top = 16.0 + 2.0 * (height + 16.0);
-            sheet.height(top + 40.0);
-            top
-        }
-    };
+    let (e0, e1) = range(rows, &|r| r.error);
+    let (lo, hi) = range(rows, &value);
+    let x = Axis::log("measured error (px)", e0, e1)?;
+    let y = Axis::log(title, lo, 10.0 * hi)?;
+    let mut plot = Plot::new(name, rect, x, y, ctx.tolerance, ctx.font)?
+        .with_grid()
+        .with_caption(caption);
     let dashes = [Dash::Solid, Dash::Dashed, Dash::DashDot, Dash::Dotted];
-    for (k, (name, title, caption, value)) in [
-        (
-            "segments",
-            "segments",
-            "(a) Segments against measured error",
-            (|r: &Row| r.segments) as fn(&Row) -> f64,
-        ),
-        (
-            "time",
-            "time per curve (µs)",
-            "(b) Time against measured error",
-            |r: &Row| r.time,
-        ),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        let (lo, hi) = range(&value);
-        let x = Axis::log("measured error (px)", e0, e1)?;
-        // A decade of room above the data for the legend.
-        let y = Axis::log(title, lo, 10.0 * hi)?;
-        let at = place(k);
-        let rect = PageRect::new(at.x, at.y, width, height);
-        let mut plot = Plot::new(name, rect, x, y, ctx.tolerance, ctx.font)?
-            .with_grid()
-            .with_caption(caption);
-        for (curve, &dash) in names.iter().zip(dashes.iter().cycle()) {
-            for (method, symbol, _) in METHODS {
-                let mut points: Vec<(f64, f64)> = rows
-                    .iter()
-                    .filter(|r| r.curve == *curve && r.method == method)
-                    .map(|r| (r.error, value(r)))
-                    .collect();
-                points.sort_by(|a, b| a.0.total_cmp(&b.0));
-                let id = format!("{name}-{curve}-{method}");
-                plot.line(&format!("series-{id}"), &points, dash, None);
-                plot.points(&format!("point-{id}"), &points, symbol, None);
-            }
-            plot.legend_line(&format!("curve: {curve}"), dash);
+    for (curve, &dash) in names.iter().zip(dashes.iter().cycle()) {
+        for (method, symbol, _) in METHODS {
+            let mut points: Vec<(f64, f64)> = rows
+                .iter()
+                .filter(|r| r.curve == *curve && r.method == method)
+                .map(|r| (r.error, value(r)))
+                .collect();
+            points.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let id = format!("{name}-{curve}-{method}");
+            plot.line(&format!("series-{id}"), &points, dash, None);
+            plot.points(&format!("point-{id}"), &points, symbol, None);
         }
-        for (_, symbol, label) in METHODS {
-            plot.legend_marker(label, symbol);
-        }
-        sheet.plot(plot);
+        plot.legend_line(&format!("curve: {curve}"), dash);
     }
-    sheet.notes(
-        Point::new(20.0, notes_top),
-        &[if ctx.options.data.is_some() {
-            "From the table given (--data).".to_string()
-        } else {
-            "From docs/curve-benchmarks.csv, written by the curve table example (criterion times on the machine that ran it).".to_string()
-        }],
-    );
-    Ok(sheet.finish())
+    for (_, symbol, label) in METHODS {
+        plot.legend_marker(label, symbol);
+    }
+    Ok(plot)
 }

@@ -22,7 +22,7 @@ fn equation(fit: &LineFit) -> String {
     }
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);

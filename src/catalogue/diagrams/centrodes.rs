@@ -20,7 +20,7 @@ use crate::figure::{Dash, Figure, Item, PageRect, Panel, Part, Role};
 use crate::geom::Point;
 use crate::scene::Layer;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, true);

@@ -10,7 +10,7 @@
 //! [`slot_radius`] of the mechanism.
 
 use super::{Ctx, Sheet, short};
-use crate::chain::{ChainCentres, CylindricChain};
+use crate::chain::{ChainCentres, CylindricChain, QuadricPose};
 use crate::diagram::Plot;
 use crate::error::{Error, Result};
 use crate::figure::{Align, Figure, Item, Part, RichText, Role, Shape, TextSize};
@@ -74,68 +74,204 @@ fn travel(chain: &CylindricChain) -> (f64, f64) {
         })
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
-    let page = ctx.page();
-    let m = ctx.mechanism;
-    let (r, l, e) = (m.crank(), m.rod(), m.offset());
-    let rho = slot_radius(&m);
-    let curved = CylindricChain::new(m, rho)?;
-    let straight = CylindricChain::straight(m);
-    // The slot's radius is a lever of the quadric chain, whose lengths end
-    // at MAX_LENGTH as the mechanism's do: 0.8 (l + r + |e|) passes it for
-    // a rod and crank near the largest length.
-    let Some((quadric, mode, turn)) = curved.as_quadric() else {
-        return Err(Error::OutOfRange {
-            name: "rod",
-            value: l,
-            reason: format!(
-                "fig-60-chains draws a slot of radius 0.8 (l + r + |e|) = {}, beyond the largest length {}: give l + r + |e| at most {}",
-                plain(rho),
-                plain(crate::mechanism::MAX_LENGTH),
-                plain(crate::mechanism::MAX_LENGTH / 0.8)
-            ),
-        });
-    };
-    let angle = ctx.angle;
-    let qpose = quadric.pose(Angle::from_degrees(angle.degrees() - turn)?, mode)?;
-    let rotate = |p: Point| {
-        let (s, c) = turn.to_radians().sin_cos();
-        Point::new(c * p.x - s * p.y, s * p.x + c * p.y)
-    };
-    let (lh, hh) = block_size(&m);
-    let (lo, hi) = travel(&curved);
-    let (lo_s, hi_s) = travel(&straight);
-    let o_cd = Point::new(0.0, e - rho);
+/// The three chains of Fig. 60 at the figure's pose.
+struct Chains {
+    m: SliderCrank,
+    angle: Angle,
+    /// The slot's radius in (b), the lever's in (a).
+    rho: f64,
+    curved: CylindricChain,
+    straight: CylindricChain,
+    /// (a)'s pose, in the quadric chain's frame (O_cd on +x).
+    quadric: QuadricPose,
+    /// The angle, degrees, that turns the quadric chain's frame into the
+    /// slot's.
+    turn: f64,
+    /// The arc lengths the block's middle reaches over a turn, in the
+    /// curved slot and the straight one.
+    travel: [(f64, f64); 2],
+}
 
-    // One sub-drawing's extent, the same for all three.
-    let reach = 0.15 * r;
-    let x0 = -r - reach;
-    let far = slot_point(e, Some(rho), hi + lh + reach, 0.0)
-        .x
-        .max(hi_s + lh + reach);
-    let y0 = o_cd.y;
-    let y1 = r.max(e + hh);
-    let width = far - x0;
-    let height = y1 - y0;
-    let pad = 0.12 * width.max(height);
-    let gap = 0.5 * pad;
-    let step = width + 2.0 * pad + gap;
-    let notes_height = 44.0;
-    let world = Frame::new(
-        Point::new(x0 - pad, y0 - pad),
-        Point::new(x0 + 3.0 * step - gap - pad, y1 + pad),
-    );
-    let rect = super::fitted_rect(&page, &world, notes_height);
-    let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
+impl Chains {
+    /// The chains of the figure's mechanism, refused where the slot's
+    /// radius, a lever of the quadric chain, passes the largest length.
+    fn new(ctx: &Ctx) -> Result<Self> {
+        let m = ctx.mechanism;
+        let rho = slot_radius(&m);
+        let curved = CylindricChain::new(m, rho)?;
+        let straight = CylindricChain::straight(m);
+        // The slot's radius is a lever of the quadric chain, whose lengths end
+        // at MAX_LENGTH as the mechanism's do: 0.8 (l + r + |e|) passes it for
+        // a rod and crank near the largest length.
+        let Some((quadric, mode, turn)) = curved.as_quadric() else {
+            return Err(Error::OutOfRange {
+                name: "rod",
+                value: m.rod(),
+                reason: format!(
+                    "fig-60-chains draws a slot of radius 0.8 (l + r + |e|) = {}, beyond the largest length {}: give l + r + |e| at most {}",
+                    plain(rho),
+                    plain(crate::mechanism::MAX_LENGTH),
+                    plain(crate::mechanism::MAX_LENGTH / 0.8)
+                ),
+            });
+        };
+        let angle = ctx.angle;
+        let quadric = quadric.pose(Angle::from_degrees(angle.degrees() - turn)?, mode)?;
+        let travel = [travel(&curved), travel(&straight)];
+        Ok(Self {
+            m,
+            angle,
+            rho,
+            curved,
+            straight,
+            quadric,
+            turn,
+            travel,
+        })
+    }
+
+    /// A point of (a) turned from the quadric chain's frame into the
+    /// slot's.
+    fn rotate(&self, p: Point) -> Point {
+        let (s, c) = self.turn.to_radians().sin_cos();
+        Point::new(c * p.x - s * p.y, s * p.x + c * p.y)
+    }
+
+    /// O_cd, the centre of (b)'s slot.
+    fn o_cd(&self) -> Point {
+        Point::new(0.0, self.m.offset() - self.rho)
+    }
+
+    /// The chain of the slotted panel (b) (`curved`) or (c): the chain,
+    /// its slot's radius (`None`: straight) and its block's travel.
+    fn slotted(&self, curved: bool) -> (&CylindricChain, Option<f64>, (f64, f64)) {
+        if curved {
+            (&self.curved, Some(self.rho), self.travel[0])
+        } else {
+            (&self.straight, None, self.travel[1])
+        }
+    }
+}
+
+/// One panel's drawing extent, the same for all three, and the step
+/// from one panel to the next, world units.
+struct Layout {
+    /// The left end of the first panel's drawing.
+    x0: f64,
+    width: f64,
+    pad: f64,
+    gap: f64,
+    step: f64,
+    /// How far the slot runs past the block's travel.
+    reach: f64,
+    /// The three panels.
+    world: Frame,
+}
+
+impl Layout {
+    fn new(chains: &Chains) -> Self {
+        let m = &chains.m;
+        let (r, e) = (m.crank(), m.offset());
+        let (lh, hh) = block_size(m);
+        let [(_, hi), (_, hi_s)] = chains.travel;
+        let reach = 0.15 * r;
+        let x0 = -r - reach;
+        let far = slot_point(e, Some(chains.rho), hi + lh + reach, 0.0)
+            .x
+            .max(hi_s + lh + reach);
+        let y0 = chains.o_cd().y;
+        let y1 = r.max(e + hh);
+        let width = far - x0;
+        let height = y1 - y0;
+        let pad = 0.12 * width.max(height);
+        let gap = 0.5 * pad;
+        let step = width + 2.0 * pad + gap;
+        let world = Frame::new(
+            Point::new(x0 - pad, y0 - pad),
+            Point::new(x0 + 3.0 * step - gap - pad, y1 + pad),
+        );
+        Self {
+            x0,
+            width,
+            pad,
+            gap,
+            step,
+            reach,
+            world,
+        }
+    }
+}
+
+/// One of the three panels: (a) when `k` is 0, (b) at 1, (c) at 2, moved
+/// right by `dx`, with its crank centre C, crank pin B and A, the end of
+/// the rod.
+struct Panel {
+    k: usize,
+    dx: Vector,
+    c: Point,
+    b: Point,
+    a: Point,
+}
+
+/// The height of the notes below the panels, page units.
+const NOTES_HEIGHT: f64 = 44.0;
+
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
+    let chains = Chains::new(ctx)?;
+    let layout = Layout::new(&chains);
+    let rect = super::fitted_rect(&ctx.page(), &layout.world, NOTES_HEIGHT);
+    let mut plot = Plot::world(
+        "mechanism",
+        rect,
+        &layout.world,
+        false,
+        ctx.tolerance,
+        ctx.font,
+    )?;
     let map = *plot.map();
-    let (lh, hh) = block_on_page((lh, hh), map.scale());
+    let block = block_on_page(block_size(&chains.m), map.scale());
     let shown = map.world_frame(&plot.area());
+    let room = (layout.step - layout.gap) * map.scale() - 4.0;
+    let captions = captions(ctx, chains.rho, room);
+    // Below O_cd's bearing, which keeps its page size however small the
+    // panel's pad is drawn.
+    let clear = (BEARING_REACH - layout.pad * map.scale()).max(0.0);
+    let extra =
+        clear + CAPTION_LINE * (captions.iter().map(Vec::len).max().unwrap_or(1) - 1) as f64;
     let mut centres = serde_json::Map::new();
-    // Each panel's caption broken to the panel's width at its own size, so
-    // that a narrow page gives two lines, never captions run together.
+    for (k, suffix) in ["-a", "-b", "-c"].into_iter().enumerate() {
+        let dx = Vector::new(k as f64 * layout.step, 0.0);
+        let frame = Frame::new(
+            Point::new(layout.x0 - layout.pad + dx.x, shown.min().y),
+            Point::new(layout.x0 + layout.width + layout.pad + dx.x, shown.max().y),
+        );
+        let mut s = Canvas::new(map, frame).suffixed(suffix);
+        let (key, panel_centres) = panel(&mut s, &chains, &layout, block, k);
+        centres.insert(key.into(), panel_centres);
+        for item in s.finish().0 {
+            plot.push(item);
+        }
+        let at = Point::new(layout.x0 + 0.5 * layout.width + dx.x, shown.min().y);
+        let lines = captions.get(k).map_or(&[][..], Vec::as_slice);
+        push_caption(&mut plot, lines, at, clear, suffix);
+    }
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, true);
+    sheet.meta("slot_radius", json!(chains.rho));
+    sheet.meta("virtual_centres", serde_json::Value::Object(centres));
+    sheet.plot(plot);
+    let bottom = rect.y + rect.height + 6.0 + extra;
+    sheet.height(bottom + NOTES_HEIGHT);
+    sheet.notes(Point::new(20.0, bottom), &notes(&chains));
+    Ok(sheet.finish())
+}
+
+/// Each panel's caption broken to the panel's width `room` at its own
+/// size, so that a narrow page gives two lines, never captions run
+/// together.
+fn captions(ctx: &Ctx, rho: f64, room: f64) -> Vec<Vec<RichText>> {
     let caption_size = ctx.style.font_size(TextSize::Small);
-    let room = (step - gap) * map.scale() - 4.0;
-    let captions: Vec<Vec<RichText>> = [
+    [
         "(a) quadric crank chain".to_string(),
         // No-break spaces keep each equation on one line.
         format!("(b) block in a curved slot, ρ\u{a0}=\u{a0}{}", short(rho)),
@@ -143,172 +279,184 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     ]
     .iter()
     .map(|c| RichText::parse(c).wrap(ctx.font, caption_size, room))
-    .collect();
-    // Below O_cd's bearing, which keeps its page size however small the
-    // panel's pad is drawn.
-    let clear = (BEARING_REACH - pad * map.scale()).max(0.0);
-    let extra =
-        clear + CAPTION_LINE * (captions.iter().map(Vec::len).max().unwrap_or(1) - 1) as f64;
+    .collect()
+}
 
-    for (k, suffix) in ["-a", "-b", "-c"].into_iter().enumerate() {
-        let dx = Vector::new(k as f64 * step, 0.0);
-        let frame = Frame::new(
-            Point::new(x0 - pad + dx.x, shown.min().y),
-            Point::new(x0 + width + pad + dx.x, shown.max().y),
-        );
-        let mut s = Canvas::new(map, frame).suffixed(suffix);
-        let c = Point::origin() + dx;
-        // The crank circle and the crank in every panel.
-        s.with_part(Part::CrankCircle, |s| {
-            s.push(
-                "circle-crank",
-                Role::Curve,
-                Shape::Circle {
-                    centre: c,
-                    radius: r,
-                },
-            );
-        });
-        let (b, a, key) = match k {
-            0 => (rotate(qpose.b()) + dx, rotate(qpose.a()) + dx, "a"),
-            1 => {
-                let p = curved.pose(angle);
-                (p.b() + dx, p.a() + dx, "b")
-            }
-            _ => {
-                let p = straight.pose(angle);
-                (p.b() + dx, p.a() + dx, "c")
-            }
-        };
-        s.bearing("C", c);
-        s.link("crank", vec![c, b]);
-        s.link("rod", vec![b, a]);
-        s.pin("C", c);
-        s.pin("B", b);
-        let mid = |p: Point, q: Point| Point::from((p.coords + q.coords) * 0.5);
-        s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
-        s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
-        match k {
-            0 => {
-                // The lever c about O_cd; the frame d from C to O_cd, hatched.
-                let o = o_cd + dx;
-                s.bearing("O-cd", o);
-                s.link("lever", vec![o, a]);
-                s.link("frame", vec![c, o]);
-                let avoid = [(c, b), (b, a), (o, a)];
-                let ends = PIN_CLEAR;
-                s.hatch_link("frame", c, o, &avoid, ends);
-                s.pin("A", a);
-                s.lettered("O-cd", o, "*O*_{cd}", Marker::Pin, c);
-                s.letter("link-c", mid(o, a), "*c*", TextSize::Letter);
-                s.letter("link-d", mid(c, o), "*d*", TextSize::Letter);
-                let (sin, cos) = turn.to_radians().sin_cos();
-                // Turned from the quadric chain's frame (O_cd on +x) into
-                // the slot's.
-                let of_quadric =
-                    ChainCentres::of_quadric(&qpose).moved(Point::origin(), Vector::new(cos, sin));
-                centres.insert(key.into(), of_quadric.to_json());
-            }
-            _ => {
-                let rho_k = (k == 1).then_some(rho);
-                let pose = if k == 1 {
-                    curved.pose(angle)
-                } else {
-                    straight.pose(angle)
-                };
-                let (lo, hi) = if k == 1 { (lo, hi) } else { (lo_s, hi_s) };
-                let point = move |sigma: f64, delta: f64| slot_point(e, rho_k, sigma, delta) + dx;
-                let slot = Slot {
-                    point: &point,
-                    straight: rho_k.is_none(),
-                    range: (lo - lh - reach, hi + lh + reach),
-                    half_height: hh,
-                    block: (pose.arc_position(), lh),
-                };
-                // The slot's middle line, then the guides.
-                let mid_line: Vec<Point> = (0..=48)
-                    .map(|j| {
-                        point(
-                            slot.range.0 + (slot.range.1 - slot.range.0) * j as f64 / 48.0,
-                            0.0,
-                        )
-                    })
-                    .collect();
-                s.push(
-                    "line-slot",
-                    Role::Auxiliary,
-                    Shape::Polyline {
-                        points: mid_line,
-                        closed: false,
-                    },
-                );
-                s.guides("slot", &slot, c, (b, a));
-                // The block, following the slot.
-                let sa = pose.arc_position();
-                let mut outline: Vec<Point> = (0..=8)
-                    .map(|j| point(sa - lh + 2.0 * lh * j as f64 / 8.0, -hh))
-                    .collect();
-                outline.extend((0..=8).map(|j| point(sa + lh - 2.0 * lh * j as f64 / 8.0, hh)));
-                s.push("block-slider", Role::Link, Shape::Block { points: outline });
-                s.pin("A", a);
-                s.letter("link-c", point(sa, -hh), "*c*", TextSize::Letter);
-                s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
-                match pose.chain().slot_centre() {
-                    Intersection::Point(o) => {
-                        let o = o + dx;
-                        s.segment("line-radius", Role::Auxiliary, o, a);
-                        s.lettered("O-cd", o, "*O*_{cd}", Marker::Dot, c);
-                    }
-                    _ => s.lettered_at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}"),
-                }
-                centres.insert(key.into(), ChainCentres::of_cylindric(&pose).to_json());
-            }
-        }
-        for item in s.finish().0 {
-            plot.push(item);
-        }
-        // The caption's lines after the sketch (its further lines share
-        // one id, which the canvas would draw once).
-        let cx = x0 + 0.5 * width + dx.x;
-        for (i, line) in captions.get(k).into_iter().flatten().enumerate() {
-            let id = if i == 0 { "caption" } else { "caption-more" };
-            plot.push(Item::new(
-                format!("{id}{suffix}"),
-                Role::Label,
-                Shape::Text {
-                    at: Point::new(cx, shown.min().y),
-                    offset: Vector::new(0.0, 12.0 + clear + CAPTION_LINE * i as f64),
-                    text: line.clone(),
-                    align: Align::Middle,
-                    size: TextSize::Small,
-                },
-            ));
-        }
+/// A panel's caption, its `lines` centred at `at` below the panel and
+/// `clear` more below O_cd's bearing (its further lines share one id,
+/// which the canvas would draw once).
+fn push_caption(plot: &mut Plot, lines: &[RichText], at: Point, clear: f64, suffix: &str) {
+    for (i, line) in lines.iter().enumerate() {
+        let id = if i == 0 { "caption" } else { "caption-more" };
+        plot.push(Item::new(
+            format!("{id}{suffix}"),
+            Role::Label,
+            Shape::Text {
+                at,
+                offset: Vector::new(0.0, 12.0 + clear + CAPTION_LINE * i as f64),
+                text: line.clone(),
+                align: Align::Middle,
+                size: TextSize::Small,
+            },
+        ));
     }
+}
 
-    let mut sheet = Sheet::new(ctx);
-    sheet.mechanism(ctx, false, true);
-    sheet.meta("slot_radius", json!(rho));
-    sheet.meta("virtual_centres", serde_json::Value::Object(centres));
-    sheet.plot(plot);
-    let bottom = rect.y + rect.height + 6.0 + extra;
-    sheet.height(bottom + notes_height);
-    sheet.notes(
-        Point::new(20.0, bottom),
-        &[
-            format!(
-                "Crank *a* = *r* = {}, rod *b* = *l* = {}{}, θ = {}° in all three.",
-                short(r),
-                short(l),
-                if e == 0.0 {
-                    String::new()
-                } else {
-                    format!(", offset *e* = {}", short(e))
-                },
-                short(angle.degrees())
-            ),
-            "(a) lever *c* = ρ about *O*_{cd}, frame *d* = *CO*_{cd}; (b) the block *c* in a slot of radius ρ about *O*_{cd}; (c) ρ → ∞.".to_string(),
-        ],
+/// Panel `k` drawn on `s`: the crank circle, the crank and the rod with
+/// their pins and letters, then (a)'s lever and frame or the slot and
+/// block of (b) and (c). Returns the panel's key and its virtual centres.
+fn panel(
+    s: &mut Canvas,
+    chains: &Chains,
+    layout: &Layout,
+    block: (f64, f64),
+    k: usize,
+) -> (&'static str, serde_json::Value) {
+    let dx = Vector::new(k as f64 * layout.step, 0.0);
+    let c = Point::origin() + dx;
+    let r = chains.m.crank();
+    // The crank circle and the crank in every panel.
+    s.with_part(Part::CrankCircle, |s| {
+        s.push(
+            "circle-crank",
+            Role::Curve,
+            Shape::Circle {
+                centre: c,
+                radius: r,
+            },
+        );
+    });
+    let (b, a, key) = match k {
+        0 => {
+            let q = &chains.quadric;
+            (chains.rotate(q.b()) + dx, chains.rotate(q.a()) + dx, "a")
+        }
+        _ => {
+            let p = chains.slotted(k == 1).0.pose(chains.angle);
+            (p.b() + dx, p.a() + dx, if k == 1 { "b" } else { "c" })
+        }
+    };
+    s.bearing("C", c);
+    s.link("crank", vec![c, b]);
+    s.link("rod", vec![b, a]);
+    s.pin("C", c);
+    s.pin("B", b);
+    s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
+    s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
+    let panel = Panel { k, dx, c, b, a };
+    let centres = if k == 0 {
+        lever_panel(s, chains, &panel)
+    } else {
+        slot_panel(s, chains, layout, block, &panel)
+    };
+    (key, centres)
+}
+
+/// The middle of `p` and `q`.
+fn mid(p: Point, q: Point) -> Point {
+    Point::from((p.coords + q.coords) * 0.5)
+}
+
+/// (a): the lever c about O_cd and the frame d from C to O_cd, hatched.
+/// Returns the quadric chain's virtual centres, in the slot's frame.
+fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value {
+    let (c, b, a) = (p.c, p.b, p.a);
+    let o = chains.o_cd() + p.dx;
+    s.bearing("O-cd", o);
+    s.link("lever", vec![o, a]);
+    s.link("frame", vec![c, o]);
+    let avoid = [(c, b), (b, a), (o, a)];
+    let ends = PIN_CLEAR;
+    s.hatch_link("frame", c, o, &avoid, ends);
+    s.pin("A", a);
+    s.lettered("O-cd", o, "*O*_{cd}", Marker::Pin, c);
+    s.letter("link-c", mid(o, a), "*c*", TextSize::Letter);
+    s.letter("link-d", mid(c, o), "*d*", TextSize::Letter);
+    let (sin, cos) = chains.turn.to_radians().sin_cos();
+    // Turned from the quadric chain's frame (O_cd on +x) into the slot's.
+    ChainCentres::of_quadric(&chains.quadric)
+        .moved(Point::origin(), Vector::new(cos, sin))
+        .to_json()
+}
+
+/// (b) and (c): the slot's middle line and guides, the block following
+/// the slot, and O_cd (at infinity in (c)). Returns the cylindric chain's
+/// virtual centres.
+fn slot_panel(
+    s: &mut Canvas,
+    chains: &Chains,
+    layout: &Layout,
+    (lh, hh): (f64, f64),
+    p: &Panel,
+) -> serde_json::Value {
+    let (c, b, a, dx) = (p.c, p.b, p.a, p.dx);
+    let (chain, rho, (lo, hi)) = chains.slotted(p.k == 1);
+    let pose = chain.pose(chains.angle);
+    let e = chains.m.offset();
+    let point = move |sigma: f64, delta: f64| slot_point(e, rho, sigma, delta) + dx;
+    let slot = Slot {
+        point: &point,
+        straight: rho.is_none(),
+        range: (lo - lh - layout.reach, hi + lh + layout.reach),
+        half_height: hh,
+        block: (pose.arc_position(), lh),
+    };
+    // The slot's middle line, then the guides.
+    let mid_line: Vec<Point> = (0..=48)
+        .map(|j| {
+            point(
+                slot.range.0 + (slot.range.1 - slot.range.0) * j as f64 / 48.0,
+                0.0,
+            )
+        })
+        .collect();
+    s.push(
+        "line-slot",
+        Role::Auxiliary,
+        Shape::Polyline {
+            points: mid_line,
+            closed: false,
+        },
     );
-    Ok(sheet.finish())
+    s.guides("slot", &slot, c, (b, a));
+    // The block, following the slot.
+    let sa = pose.arc_position();
+    let mut outline: Vec<Point> = (0..=8)
+        .map(|j| point(sa - lh + 2.0 * lh * j as f64 / 8.0, -hh))
+        .collect();
+    outline.extend((0..=8).map(|j| point(sa + lh - 2.0 * lh * j as f64 / 8.0, hh)));
+    s.push("block-slider", Role::Link, Shape::Block { points: outline });
+    s.pin("A", a);
+    s.letter("link-c", point(sa, -hh), "*c*", TextSize::Letter);
+    s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
+    match pose.chain().slot_centre() {
+        Intersection::Point(o) => {
+            let o = o + dx;
+            s.segment("line-radius", Role::Auxiliary, o, a);
+            s.lettered("O-cd", o, "*O*_{cd}", Marker::Dot, c);
+        }
+        _ => s.lettered_at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}"),
+    }
+    ChainCentres::of_cylindric(&pose).to_json()
+}
+
+/// The notes: the mechanism and the crank angle, and what each panel's
+/// links are.
+fn notes(chains: &Chains) -> [String; 2] {
+    let m = &chains.m;
+    let e = m.offset();
+    [
+        format!(
+            "Crank *a* = *r* = {}, rod *b* = *l* = {}{}, θ = {}° in all three.",
+            short(m.crank()),
+            short(m.rod()),
+            if e == 0.0 {
+                String::new()
+            } else {
+                format!(", offset *e* = {}", short(e))
+            },
+            short(chains.angle.degrees())
+        ),
+        "(a) lever *c* = ρ about *O*_{cd}, frame *d* = *CO*_{cd}; (b) the block *c* in a slot of radius ρ about *O*_{cd}; (c) ρ → ∞.".to_string(),
+    ]
 }

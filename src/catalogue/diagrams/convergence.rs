@@ -5,20 +5,70 @@
 //! falls as 1/ρ until it meets the rounding of the inputs.
 
 use super::{Ctx, Sheet, short};
-use crate::chain::slot_convergence;
+use crate::chain::{ConvergenceRow, slot_convergence};
 use crate::diagram::{Axis, Plot};
 use crate::error::{Error, Result};
 use crate::figure::{Dash, Figure, PageRect, Symbol};
 use crate::geom::Point;
+use crate::mechanism::SliderCrank;
 
 /// Crank angles per turn at which each radius is compared.
 const SAMPLES: usize = 720;
 /// Radii per decade.
 const PER_DECADE: i32 = 4;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+/// The height of the notes below the plot, page units.
+const NOTES_HEIGHT: f64 = 44.0;
+
+/// One of the plotted differences of a row.
+type Value = fn(&ConvergenceRow) -> f64;
+
+/// The three differences: id, legend, marker and value.
+const SERIES: [(&str, &str, Symbol, Value); 3] = [
+    (
+        "position",
+        "arc position σ against *x*_{A}",
+        Symbol::Disc,
+        |w| w.position,
+    ),
+    (
+        "velocity",
+        "velocity dσ/dθ against d*x*_{A}/dθ",
+        Symbol::Square,
+        |w| w.velocity,
+    ),
+    (
+        "acceleration",
+        "acceleration d²σ/dθ² against d²*x*_{A}/dθ²",
+        Symbol::Triangle,
+        |w| w.acceleration,
+    ),
+];
+
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
+    let radii = radii(&m)?;
+    let rows = slot_convergence(&m, &radii, SAMPLES)?;
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
+    let plot = plot(ctx, &rows, &radii)?;
+    sheet.meta(
+        "rows",
+        serde_json::json!(
+            rows.iter()
+                .map(|w| [w.radius, w.position, w.velocity, w.acceleration])
+                .collect::<Vec<_>>()
+        ),
+    );
+    sheet.plot(plot);
+    sheet.notes(Point::new(20.0, page.height() - NOTES_HEIGHT), &notes(&m));
+    Ok(sheet.finish())
+}
+
+/// The slot radii compared, PER_DECADE a decade from 1 to 1e15, those
+/// the crank turns with; refused where fewer than two are left.
+fn radii(m: &SliderCrank) -> Result<Vec<f64>> {
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
     // The least radius the crank turns with (CylindricChain::new).
     let bound = 0.5 * (l + r + e);
@@ -26,42 +76,33 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         .map(|k| 10f64.powf(k as f64 / PER_DECADE as f64))
         .filter(|rho| *rho > bound * (1.0 + 1e-9))
         .collect();
-    let (Some(&least), 2..) = (radii.first(), radii.len()) else {
+    if radii.len() < 2 {
         return Err(Error::OutOfRange {
             name: "rod",
             value: l,
             reason: "the slot radii from 1 to 1e15 need (rod + crank + offset)/2 well below 1e15"
                 .into(),
         });
-    };
-    let rows = slot_convergence(&m, &radii, SAMPLES)?;
-    type Value = fn(&crate::chain::ConvergenceRow) -> f64;
-    let series: [(&str, &str, Symbol, Value); 3] = [
-        (
-            "position",
-            "arc position σ against *x*_{A}",
-            Symbol::Disc,
-            |w| w.position,
-        ),
-        (
-            "velocity",
-            "velocity dσ/dθ against d*x*_{A}/dθ",
-            Symbol::Square,
-            |w| w.velocity,
-        ),
-        (
-            "acceleration",
-            "acceleration d²σ/dθ² against d²*x*_{A}/dθ²",
-            Symbol::Triangle,
-            |w| w.acceleration,
-        ),
-    ];
-    // The rounding of the inputs: one ulp of the largest length, in r.
-    let floor = f64::EPSILON * (l + r + e.abs()) / r;
+    }
+    Ok(radii)
+}
+
+/// The rounding of the inputs: one ulp of the largest length, in r.
+fn floor(m: &SliderCrank) -> f64 {
+    f64::EPSILON * (m.rod() + m.crank() + m.offset().abs()) / m.crank()
+}
+
+/// The log–log plot of the three differences of `rows` against the
+/// `radii`, with the slope −1 and the rounding of the inputs.
+fn plot(ctx: &Ctx, rows: &[ConvergenceRow], radii: &[f64]) -> Result<Plot> {
+    let page = ctx.page();
+    // `radii` holds two or more ([`radii`]).
+    let least = radii.first().copied().unwrap_or(1.0);
+    let floor = floor(&ctx.mechanism);
     let positive = |v: f64| v.max(floor * 0.25);
     let top = rows
         .iter()
-        .flat_map(|w| series.map(|s| (s.3)(w)))
+        .flat_map(|w| SERIES.map(|s| (s.3)(w)))
         .fold(0.0f64, f64::max);
     let x = Axis::log("slot radius ρ", least, 1e15)?;
     let y = Axis::log(
@@ -69,12 +110,11 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         floor * 0.1,
         top * 100.0,
     )?;
-    let notes_height = 44.0;
     let rect = PageRect::new(
         16.0,
         16.0,
         page.width() - 32.0,
-        page.height() - 32.0 - notes_height,
+        page.height() - 32.0 - NOTES_HEIGHT,
     );
     let mut plot = Plot::new("convergence", rect, x, y, ctx.tolerance, ctx.font)?
         .with_grid()
@@ -82,7 +122,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     // The three series lie within a factor of a few of each other: each
     // sets its markers at every third radius, the three staggered, so
     // that no marker covers another; its line runs through every radius.
-    for (i, (id, legend, symbol, value)) in series.into_iter().enumerate() {
+    for (i, (id, legend, symbol, value)) in SERIES.into_iter().enumerate() {
         let points: Vec<(f64, f64)> = rows
             .iter()
             .map(|w| (w.radius, positive(value(w))))
@@ -92,8 +132,14 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         plot.points(&format!("point-{id}"), &marked, symbol, None);
         plot.legend_marker(legend, symbol);
     }
-    // The slope −1 a decade above the velocity at the middle radius, so
-    // that it runs beside the series instead of under them.
+    guides(&mut plot, rows, least, floor);
+    Ok(plot)
+}
+
+/// The slope −1 a decade above the velocity at the middle radius, so
+/// that it runs beside the series instead of under them, and the
+/// rounding of the inputs `floor`, from the `least` radius on.
+fn guides(plot: &mut Plot, rows: &[ConvergenceRow], least: f64, floor: f64) {
     // (No guide without rows: a NaN passes no filter.)
     let k = rows
         .get(rows.len() / 2)
@@ -117,28 +163,19 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         "ε (*l* + *r* + |*e*|)/*r*: rounding of the inputs",
         Dash::Dotted,
     );
-    let mut sheet = Sheet::new(ctx);
-    sheet.mechanism(ctx, false, false);
-    sheet.meta(
-        "rows",
-        serde_json::json!(
-            rows.iter()
-                .map(|w| [w.radius, w.position, w.velocity, w.acceleration])
-                .collect::<Vec<_>>()
+}
+
+/// The notes: the mechanism and what is compared, and why the
+/// difference falls as 1/ρ to the rounding.
+fn notes(m: &SliderCrank) -> [String; 2] {
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    [
+        format!(
+            "*r* = {}, *l* = {}{}; worst over {SAMPLES} crank angles of the difference between the block on a slot of radius ρ (centre below the stroke) and on the straight slot.",
+            short(r),
+            short(l),
+            if e == 0.0 { String::new() } else { format!(", *e* = {}", short(e)) }
         ),
-    );
-    sheet.plot(plot);
-    sheet.notes(
-        Point::new(20.0, page.height() - notes_height),
-        &[
-            format!(
-                "*r* = {}, *l* = {}{}; worst over {SAMPLES} crank angles of the difference between the block on a slot of radius ρ (centre below the stroke) and on the straight slot.",
-                short(r),
-                short(l),
-                if e == 0.0 { String::new() } else { format!(", *e* = {}", short(e)) }
-            ),
-            "Computed from the curvature 1/ρ: no cancellation, so the difference falls as 1/ρ until the rounding of the inputs (zero differences drawn at a quarter of it).".to_string(),
-        ],
-    );
-    Ok(sheet.finish())
+        "Computed from the curvature 1/ρ: no cancellation, so the difference falls as 1/ρ until the rounding of the inputs (zero differences drawn at a quarter of it).".to_string(),
+    ]
 }

@@ -18,7 +18,7 @@ const POINTS: [(f64, &str, &str, Dash); 3] = [
     (0.75, "75", "¾", Dash::DashDot),
 ];
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let m = ctx.mechanism;
     let mut sheet = Sheet::new(ctx);

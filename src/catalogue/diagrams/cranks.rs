@@ -54,7 +54,7 @@ impl Pair {
     }
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mass = positive_mass(ctx)?;
     let m = ctx.mechanism;

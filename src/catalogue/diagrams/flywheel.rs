@@ -36,7 +36,7 @@ fn coefficient(ctx: &Ctx) -> Result<f64> {
     }
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let engine = engine(ctx)?;
     let tm = TurningMoment::new(&engine, &[0.0])?;

@@ -15,7 +15,7 @@ use crate::diagram::{Axis, Curve, Plot};
 use crate::error::{Error, Result};
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
-use crate::{angle::Angle, mechanism::Pose};
+use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
 
 /// Ng's measured F′ against θ.
 const NG_EXPERIMENT: &str = include_str!("../../../examples/ng-experiment.csv");
@@ -59,13 +59,32 @@ fn root(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> Option<f64> {
     Some(0.5 * (a + b))
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+/// The height of the transmission angle's band, page units.
+const BETA_HEIGHT: f64 = 250.0;
+
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
-    let m = ctx.mechanism;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
     sheet.meta("torque", serde_json::json!(NG_TORQUE));
     sheet.meta("friction", serde_json::json!(MU));
+    let measured = measured(ctx)?;
+    let height = page.height() - 16.0 - BETA_HEIGHT - 54.0 - 8.0;
+    let (forces, least_f) = forces(ctx, &measured, height)?;
+    sheet.plot(forces);
+    let (beta, right) = transmission(ctx, 16.0 + height + 8.0)?;
+    sheet.plot(beta);
+    if let (Some(a), Some(b)) = (least_f, right) {
+        sheet.meta("least_force_deg", serde_json::json!(a));
+        sheet.meta("right_transmission_deg", serde_json::json!(b));
+    }
+    sheet.notes(Point::new(20.0, page.height() - 42.0), &notes(ctx));
+    Ok(sheet.finish())
+}
+
+/// The measured F′ against θ: the data given, else Ng's experiment;
+/// refused where an angle is outside 0° to 180°.
+fn measured(ctx: &Ctx) -> Result<Vec<(f64, f64)>> {
     let text = ctx.options.data.as_deref().unwrap_or(NG_EXPERIMENT);
     let measured = Table::parse(text, "data")?.pairs(&["angle", "theta", "θ"], &["force", "f"])?;
     if let Some((a, _)) = measured.iter().find(|(a, _)| !(0.0..=180.0).contains(a)) {
@@ -73,13 +92,35 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             "data: angle {a}° is outside the figure’s 0° to 180°"
         )));
     }
-    let pose_at = |deg: f64| Angle::from_degrees(deg).ok().map(|a| m.pose(a));
+    Ok(measured)
+}
+
+/// The pose of `m` at `deg` degrees.
+fn pose_at(m: &SliderCrank, deg: f64) -> Option<Pose> {
+    Angle::from_degrees(deg).ok().map(|a| m.pose(a))
+}
+
+/// `g` of the pose of `m` at `deg` degrees; NaN where there is none.
+fn at(m: &SliderCrank, deg: f64, g: fn(&Pose) -> f64) -> f64 {
+    pose_at(m, deg).map_or(f64::NAN, |p| g(&p))
+}
+
+/// The crank angle's axis, 0° to 180°.
+fn theta() -> Result<Axis> {
+    Axis::linear("crank angle θ (°)", 0.0, 180.0)?.with_step(20.0)
+}
+
+/// (a) F and F′ (theory) against θ, `height` page units high, with the
+/// `measured` F′ and the least F; returns the plot and the angle of the
+/// least F, if found.
+fn forces(ctx: &Ctx, measured: &[(f64, f64)], height: f64) -> Result<(Plot, Option<f64>)> {
+    let m = ctx.mechanism;
     let f_curve = |deg: f64| -> Option<(Point, Vector)> {
-        let (f, df) = force(&pose_at(deg)?)?;
+        let (f, df) = force(&pose_at(&m, deg)?)?;
         Some((Point::new(deg, f), Vector::new(1.0, df * PER_DEGREE)))
     };
     let f1_curve = |deg: f64| -> Option<(Point, Vector)> {
-        let p = pose_at(deg)?;
+        let p = pose_at(&m, deg)?;
         let (f, df) = force(&p)?;
         let (k, dk) = tan_phi(&p);
         Some((
@@ -89,9 +130,6 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     };
     let most = measured.iter().map(|p| p.1).fold(50.0, f64::max);
     let least = measured.iter().map(|p| p.1).fold(0.0, f64::min);
-    let theta =
-        || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 180.0)?.with_step(20.0) };
-    let height = page.height() - 16.0 - 250.0 - 54.0 - 8.0;
     let force_unit = ctx.units.force();
     let y = Axis::nice(&format!("force on the slider ({force_unit})"), least, most)?;
     let mut forces = Plot::new(
@@ -119,7 +157,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     )?;
     forces.points(
         "point-measured",
-        &measured,
+        measured,
         Symbol::Disc,
         Some(if ctx.options.data.is_some() {
             "*F*′, measured (--data)"
@@ -128,10 +166,9 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         }),
     );
     // The least F: where OM = −ds/dθ is greatest, d²s/dθ² = 0.
-    let at = |deg: f64, g: fn(&Pose) -> f64| pose_at(deg).map_or(f64::NAN, |p| g(&p));
-    let least_f = root(|d| at(d, Pose::position_acceleration), 1.0, 179.0);
+    let least_f = root(|d| at(&m, d, Pose::position_acceleration), 1.0, 179.0);
     if let Some(d) = least_f
-        && let Some((f, _)) = pose_at(d).as_ref().and_then(force)
+        && let Some((f, _)) = pose_at(&m, d).as_ref().and_then(force)
     {
         forces.points(
             "point-least-force",
@@ -140,14 +177,17 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             Some(&format!("least *F*: θ = {d:.1}°, {} {force_unit}", sig(f))),
         );
     }
-    sheet.plot(forces);
+    Ok((forces, least_f))
+}
 
-    // (b) Transmission angle.
-    let top = 16.0 + height + 8.0;
+/// (b) The transmission angle β against θ from `top` down, with β = 90°
+/// marked where it is reached; returns the plot and that angle.
+fn transmission(ctx: &Ctx, top: f64) -> Result<(Plot, Option<f64>)> {
+    let m = ctx.mechanism;
     let y = Axis::linear("transmission angle β (°)", 0.0, 180.0)?.with_step(30.0)?;
     let mut beta = Plot::new(
         "transmission",
-        ctx.band(top, 250.0),
+        ctx.band(top, BETA_HEIGHT),
         theta()?,
         y,
         ctx.tolerance,
@@ -155,7 +195,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     )?
     .with_caption("(b) Transmission angle, β = 180° − φ − θ (eq. 11)");
     let b_curve = |deg: f64| -> Option<(Point, Vector)> {
-        let p = pose_at(deg)?;
+        let p = pose_at(&m, deg)?;
         Some((
             Point::new(deg, 180.0 - deg - p.obliquity().to_degrees()),
             Vector::new(1.0, -1.0 - p.obliquity_rate()),
@@ -164,7 +204,7 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let pieces: [(&dyn Curve, _); 1] = [(&b_curve, 0.0..=180.0)];
     beta.curve("curve-transmission-angle", &pieces, Dash::Solid, Some("β"))?;
     let right = root(
-        |d| 90.0 - d - at(d, Pose::obliquity).to_degrees(),
+        |d| 90.0 - d - at(&m, d, Pose::obliquity).to_degrees(),
         0.0,
         180.0,
     );
@@ -187,28 +227,25 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
             Some(&format!("β = 90° at θ = {d:.1}°")),
         );
     }
-    sheet.plot(beta);
-    if let (Some(a), Some(b)) = (least_f, right) {
-        sheet.meta("least_force_deg", serde_json::json!(a));
-        sheet.meta("right_transmission_deg", serde_json::json!(b));
-    }
-    sheet.notes(
-        Point::new(20.0, page.height() - 42.0),
-        &[
-            format!(
-                "Ng’s rig: *r* = {} {u}, *l* = {} {u}; *T* = {NG_TORQUE:.2} {}, the torque Ng’s *F* column implies{}.",
-                short(m.crank()),
-                short(m.rod()),
-                ctx.units.torque(),
-                if ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
-                    " (1 kg on the 27 mm crank)"
-                } else {
-                    ""
-                },
-                u = ctx.unit(),
-            ),
-            "*F*′ with each angle’s φ (Ng’s printed *F*′ used φ of 60° throughout). The least *F* is not quite at β = 90°.".into(),
-        ],
-    );
-    Ok(sheet.finish())
+    Ok((beta, right))
+}
+
+/// The notes: Ng's rig and the torque, and how F′ is drawn.
+fn notes(ctx: &Ctx) -> [String; 2] {
+    let m = ctx.mechanism;
+    [
+        format!(
+            "Ng’s rig: *r* = {} {u}, *l* = {} {u}; *T* = {NG_TORQUE:.2} {}, the torque Ng’s *F* column implies{}.",
+            short(m.crank()),
+            short(m.rod()),
+            ctx.units.torque(),
+            if ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
+                " (1 kg on the 27 mm crank)"
+            } else {
+                ""
+            },
+            u = ctx.unit(),
+        ),
+        "*F*′ with each angle’s φ (Ng’s printed *F*′ used φ of 60° throughout). The least *F* is not quite at β = 90°.".into(),
+    ]
 }

@@ -85,7 +85,7 @@ fn acceleration_points(pose: &crate::mechanism::Pose) -> AccelerationPoints {
     }
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let forces = Forces::new(ctx)?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);

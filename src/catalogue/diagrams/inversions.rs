@@ -13,7 +13,7 @@
 //! does not change with θ.
 
 use super::{Ctx, Sheet, short};
-use crate::chain::{Inversion, InversionPose, InvertedChain};
+use crate::chain::{ChainCentres, Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
@@ -172,15 +172,13 @@ fn caption(ctx: &Ctx, inversion: Inversion, width: f64) -> (String, String) {
     }
 }
 
-pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
-    let page = ctx.page();
+/// The height of the notes below the drawing, page units.
+const NOTES_HEIGHT: f64 = 44.0;
+
+pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     let m = ctx.mechanism;
-    let (r, l, e) = (m.crank(), m.rod(), m.offset());
     let chain = InvertedChain::new(m, inversion);
     let pose = chain.pose(ctx.angle);
-    let (lh, hh) = block_size(&m);
-    let (near, far) = ends(&m);
-
     let box_ = extent(&m, &chain);
     let size = box_.max() - box_.min();
     let pad = 0.1 * size.x.max(size.y);
@@ -188,233 +186,347 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
         box_.min() - Vector::new(pad, pad),
         box_.max() + Vector::new(pad, pad),
     );
-    let notes_height = 44.0;
-    let rect = super::fitted_rect(&page, &world, notes_height);
-    let fixed = inversion.fixed();
+    let rect = super::fitted_rect(&ctx.page(), &world, NOTES_HEIGHT);
     let (caption, named) = caption(ctx, inversion, rect.width);
     let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(&caption);
     let map = *plot.map();
-    let (lh, hh) = super::chains::block_on_page((lh, hh), map.scale());
-    let shown = map.world_frame(&plot.area());
-    let mut s = Canvas::new(map, shown);
     let q = parts(&m, &pose);
-    let (c, b, a) = (q.c, q.b, q.a);
-    let mid = |p: Point, q: Point| Point::from((p.coords + q.coords) * 0.5);
-
-    // The path of the driven link's far pin.
-    let path = match inversion {
-        Inversion::Frame => Some((c, r, b)),
-        Inversion::Crank => Some((b, l, a)),
-        Inversion::Rod => Some((b, r, c)),
-        Inversion::Slider => None,
+    let (lh, hh) = super::chains::block_on_page(block_size(&m), map.scale());
+    let mut d = Drawing {
+        s: Canvas::new(map, map.world_frame(&plot.area())),
+        m,
+        fixed: inversion.fixed(),
+        corners: block(&q, lh, hh),
+        block: (lh, hh),
+        q,
     };
-    if let Some((centre, radius, _)) = path {
-        s.push("circle-path", Role::Curve, Shape::Circle { centre, radius });
-    } else {
-        // The handle's swing: B − A = l(−cos φ, sin φ), φ between its
-        // extremes.
-        let top = ((r - e) / l).clamp(-1.0, 1.0).asin();
-        let bottom = ((-r - e) / l).clamp(-1.0, 1.0).asin();
-        s.push(
-            "arc-path",
-            Role::Curve,
-            Shape::Arc {
-                centre: a,
-                radius: l,
-                start: std::f64::consts::PI - top,
-                sweep: top - bottom,
-                arrow: false,
-            },
-        );
-    }
-
-    // The frame d: guides if fixed, else the slotted bar from C.
-    let bar: Vec<Point> = if e == 0.0 {
-        vec![c, q.f]
-    } else {
-        vec![c, q.t, q.f]
-    };
-    let corners = block(&q, lh, hh);
-    let mut moving: Vec<Seg> = Vec::new();
-    if fixed != Link::A {
-        moving.push((c, b));
-    }
-    if fixed != Link::B {
-        moving.push((b, a));
-    }
-    if fixed != Link::D {
-        moving.extend(bar.iter().copied().zip(bar.iter().copied().skip(1)));
-    }
-    if fixed != Link::C {
-        moving.extend(corners.into_iter().zip(corners.into_iter().cycle().skip(1)));
-    }
-    match fixed {
-        Link::D => {
-            s.bearing("C", c);
-            let (u, v, t) = (q.u, q.v, q.t);
-            let point = move |sigma: f64, delta: f64| t + u * sigma + v * delta;
-            let slot = Slot {
-                point: &point,
-                straight: true,
-                range: (near - lh - 0.15 * r, far + lh + 0.15 * r),
-                half_height: hh,
-                block: (pose.engine_pose().a().x, lh),
-            };
-            s.centre_line("line-stroke", t - u * r, q.f);
-            s.guides("stroke", &slot, c, (b, a));
-            s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
-        }
-        _ => {
-            s.link("frame", bar.clone());
-            let at = Point::from(q.f.coords * 0.85 + q.t.coords * 0.15);
-            s.letter("link-d", at, "*d*", TextSize::Letter);
-        }
-    }
-    match fixed {
-        Link::A => {
-            s.bearing("C", c);
-            s.bearing("B", b);
-            s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
-        }
-        Link::B => {
-            // The block's trunnion at A is in the fixed rod; a bearing
-            // there would crowd the block.
-            s.bearing("B", b);
-            s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
-        }
-        Link::C => {
-            // The block is the fixed barrel: hatched on the face away from
-            // the handle.
-            let (lower, upper) = ((corners[0], corners[1]), (corners[3], corners[2]));
-            let away = if q.v.dot(&(b - a)) > 0.0 {
-                (lower, -q.v)
-            } else {
-                (upper, q.v)
-            };
-            s.hatch_edge("block", away.0, &[away.1], &moving, 0.0);
-        }
-        Link::D => {}
-    }
-    s.link("crank", vec![c, b]);
-    s.link("rod", vec![b, a]);
-    s.push(
-        "block-slider",
-        Role::Link,
-        Shape::Block {
-            points: corners.to_vec(),
-        },
-    );
-    s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
-    s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
-    s.letter(
-        "link-c",
-        if fixed == Link::D {
-            // Below the block, between the guides' hatching.
-            mid(corners[0], corners[1]) - q.v * s.world(4.0)
-        } else {
-            // At its far end, clear of the normal at A.
-            mid(corners[1], corners[2]) + q.u * s.world(4.0)
-        },
-        "*c*",
-        TextSize::Letter,
-    );
-
-    // The six centres, and Kennedy's lines that find O_bd and O_ac.
+    d.path(inversion);
+    d.frame(&pose);
+    d.hatch();
+    d.links();
     let centres = *pose.centres();
-    // cannot fail: it is asked only for pairs of distinct links below.
-    #[allow(clippy::expect_used)]
-    let get = |p: Link, q: Link| centres.centre(p, q).expect("distinct links");
-    let o_bd = get(Link::B, Link::D);
-    let o_ac = get(Link::A, Link::C);
-    if let Intersection::Point(d) = o_bd {
-        produced(&mut s, "line-CB-O-bd", c, b, d);
-        // Off the page, the line stops short of the edge, where O_cd's
-        // arrow and letter continue it.
-        let end = match shown.clip_segment(a, d) {
-            Some((_, edge)) if !shown.contains(d) && (edge - a).norm() > 0.0 => {
-                let u = (edge - a).normalize();
-                let back = s.world(EDGE_ROOM).min(0.5 * (edge - a).norm());
-                edge - u * back
-            }
-            _ => d,
-        };
-        s.segment("line-A-O-bd", Role::Auxiliary, a, end);
-    }
-    if let Intersection::Point(x) = o_ac {
-        produced(&mut s, "line-AB-O-ac", a, b, x);
-        s.segment("line-C-O-ac", Role::Auxiliary, c, x);
-    }
-    // The pins are three of the six centres, lettered as such: C = O_ad,
-    // B = O_ab, A = O_bc (the notes give the letters of Figs. 62–67).
-    let pins = [(c, "*O*_{ad}"), (b, "*O*_{ab}"), (a, "*O*_{bc}")];
-    for ((p, markup), key) in pins.into_iter().zip(["C", "B", "A"]) {
-        s.lettered(key, p, markup, Marker::Pin, c);
-    }
-    // O_cd lies on the normal at A, as O_bd does: its arrow continues
-    // the line A O_bd.
-    let towards_d = match o_bd {
-        Intersection::Point(d) => d - a,
-        _ => Vector::zeros(),
-    };
-    // A centre on a pin or on another centre, as drawn, is named in the
-    // notes instead of lettered on top of it.
-    let mut lettered: Vec<(Point, &str)> = pins.to_vec();
-    let mut together: Vec<String> = Vec::new();
-    for (key, markup, centre, from, along) in [
-        ("O-bd", "*O*_{bd}", o_bd, b, b - c),
-        ("O-ac", "*O*_{ac}", o_ac, b, b - a),
-        ("O-cd", "*O*_{cd}", get(Link::C, Link::D), a, towards_d),
-    ] {
-        match centre {
-            Intersection::Point(p) => {
-                let near = lettered
-                    .iter()
-                    .find(|(q, _)| map.apply_vector(p - q).norm() < CROWDED);
-                match near {
-                    Some(&(q, other)) if s.contains(p) => {
-                        together.push(where_near(markup, p, other, q, r + l + e.abs()));
-                        s.push(
-                            format!("centre-{key}"),
-                            Role::Construction,
-                            Shape::Dot { centre: p },
-                        );
-                    }
-                    _ => {
-                        s.lettered(key, p, markup, Marker::Dot, from);
-                        lettered.push((p, markup));
-                    }
-                }
-            }
-            Intersection::AtInfinity(dir) => {
-                let mut u = dir.into_inner();
-                if u.dot(&along) < 0.0 {
-                    u = -u;
-                }
-                if along == Vector::zeros() {
-                    // Either way along the normal at A: the longer run.
-                    let room =
-                        |w: Vector| shown.clip_ray(from, w).map_or(0.0, |(p, q)| (q - p).norm());
-                    if room(-u) > room(u) {
-                        u = -u;
-                    }
-                }
-                s.lettered_at_infinity(key, from, u, markup);
-            }
-            Intersection::Coincident => {}
-        }
-    }
-    for item in s.finish().0 {
+    let together = d.centres(&centres);
+    for item in d.s.finish().0 {
         plot.push(item);
     }
-
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, true);
     sheet.meta("inversion", json!(inversion.number()));
-    sheet.meta("fixed", json!(letter(fixed)));
+    sheet.meta("fixed", json!(letter(inversion.fixed())));
     sheet.meta("driver", json!(letter(inversion.driver())));
     sheet.meta("virtual_centres", centres.to_json());
     sheet.plot(plot);
+    let bottom = rect.y + rect.height + 6.0;
+    sheet.height(bottom + NOTES_HEIGHT);
+    sheet.notes(
+        Point::new(20.0, bottom),
+        &notes(ctx, &chain, &named, &together),
+    );
+    Ok(sheet.finish())
+}
+
+/// One inversion's drawing in progress: the canvas, and what its steps
+/// share.
+struct Drawing {
+    s: Canvas,
+    m: SliderCrank,
+    /// The fixed link, hatched.
+    fixed: Link,
+    q: Parts,
+    /// The block's corners ([`block`]).
+    corners: [Point; 4],
+    /// The block's half length and half height as drawn.
+    block: (f64, f64),
+}
+
+/// The middle of `p` and `q`.
+fn mid(p: Point, q: Point) -> Point {
+    Point::from((p.coords + q.coords) * 0.5)
+}
+
+impl Drawing {
+    /// The path of the driven link's far pin: a circle, or the hand
+    /// pump's handle swinging about A.
+    fn path(&mut self, inversion: Inversion) {
+        let (r, l, e) = (self.m.crank(), self.m.rod(), self.m.offset());
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        let path = match inversion {
+            Inversion::Frame => Some((c, r, b)),
+            Inversion::Crank => Some((b, l, a)),
+            Inversion::Rod => Some((b, r, c)),
+            Inversion::Slider => None,
+        };
+        if let Some((centre, radius, _)) = path {
+            self.s
+                .push("circle-path", Role::Curve, Shape::Circle { centre, radius });
+        } else {
+            // The handle's swing: B − A = l(−cos φ, sin φ), φ between its
+            // extremes.
+            let top = ((r - e) / l).clamp(-1.0, 1.0).asin();
+            let bottom = ((-r - e) / l).clamp(-1.0, 1.0).asin();
+            self.s.push(
+                "arc-path",
+                Role::Curve,
+                Shape::Arc {
+                    centre: a,
+                    radius: l,
+                    start: std::f64::consts::PI - top,
+                    sweep: top - bottom,
+                    arrow: false,
+                },
+            );
+        }
+    }
+
+    /// The frame d's bar from C (through T, the foot of the
+    /// perpendicular, where the stroke is offset).
+    fn bar(&self) -> Vec<Point> {
+        let q = &self.q;
+        if self.m.offset() == 0.0 {
+            vec![q.c, q.f]
+        } else {
+            vec![q.c, q.t, q.f]
+        }
+    }
+
+    /// The frame d: the guides and the line of stroke if it is fixed,
+    /// else the slotted bar from C.
+    fn frame(&mut self, pose: &InversionPose) {
+        let (lh, hh) = self.block;
+        let q = &self.q;
+        if self.fixed != Link::D {
+            self.s.link("frame", self.bar());
+            let at = Point::from(q.f.coords * 0.85 + q.t.coords * 0.15);
+            self.s.letter("link-d", at, "*d*", TextSize::Letter);
+            return;
+        }
+        let (near, far) = ends(&self.m);
+        let r = self.m.crank();
+        self.s.bearing("C", q.c);
+        let (u, v, t) = (q.u, q.v, q.t);
+        let point = move |sigma: f64, delta: f64| t + u * sigma + v * delta;
+        let slot = Slot {
+            point: &point,
+            straight: true,
+            range: (near - lh - 0.15 * r, far + lh + 0.15 * r),
+            half_height: hh,
+            block: (pose.engine_pose().a().x, lh),
+        };
+        self.s.centre_line("line-stroke", t - u * r, q.f);
+        self.s.guides("stroke", &slot, q.c, (q.b, q.a));
+        self.s
+            .letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
+    }
+
+    /// The segments of the links that move, which the fixed link's
+    /// hatching keeps clear of.
+    fn moving(&self) -> Vec<Seg> {
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        let bar = self.bar();
+        let corners = self.corners;
+        let mut moving: Vec<Seg> = Vec::new();
+        if self.fixed != Link::A {
+            moving.push((c, b));
+        }
+        if self.fixed != Link::B {
+            moving.push((b, a));
+        }
+        if self.fixed != Link::D {
+            moving.extend(bar.iter().copied().zip(bar.iter().copied().skip(1)));
+        }
+        if self.fixed != Link::C {
+            moving.extend(corners.into_iter().zip(corners.into_iter().cycle().skip(1)));
+        }
+        moving
+    }
+
+    /// The fixed crank, rod or block hatched, with its bearings (the
+    /// fixed frame's hatching is its guides').
+    fn hatch(&mut self) {
+        let moving = self.moving();
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        match self.fixed {
+            Link::A => {
+                self.s.bearing("C", c);
+                self.s.bearing("B", b);
+                self.s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
+            }
+            Link::B => {
+                // The block's trunnion at A is in the fixed rod; a bearing
+                // there would crowd the block.
+                self.s.bearing("B", b);
+                self.s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
+            }
+            Link::C => {
+                // The block is the fixed barrel: hatched on the face away from
+                // the handle.
+                let corners = self.corners;
+                let (lower, upper) = ((corners[0], corners[1]), (corners[3], corners[2]));
+                let away = if self.q.v.dot(&(b - a)) > 0.0 {
+                    (lower, -self.q.v)
+                } else {
+                    (upper, self.q.v)
+                };
+                self.s.hatch_edge("block", away.0, &[away.1], &moving, 0.0);
+            }
+            Link::D => {}
+        }
+    }
+
+    /// The crank, the rod and the block, lettered a, b and c.
+    fn links(&mut self) {
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        let corners = self.corners;
+        let s = &mut self.s;
+        s.link("crank", vec![c, b]);
+        s.link("rod", vec![b, a]);
+        s.push(
+            "block-slider",
+            Role::Link,
+            Shape::Block {
+                points: corners.to_vec(),
+            },
+        );
+        s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
+        s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
+        let at = if self.fixed == Link::D {
+            // Below the block, between the guides' hatching.
+            mid(corners[0], corners[1]) - self.q.v * s.world(4.0)
+        } else {
+            // At its far end, clear of the normal at A.
+            mid(corners[1], corners[2]) + self.q.u * s.world(4.0)
+        };
+        s.letter("link-c", at, "*c*", TextSize::Letter);
+    }
+
+    /// Kennedy's lines that find O_bd (on CB and the normal at A) and O_ac
+    /// (on AB and the normal at C).
+    fn kennedy(&mut self, o_bd: Intersection, o_ac: Intersection) {
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        let shown = *self.s.frame();
+        if let Intersection::Point(d) = o_bd {
+            produced(&mut self.s, "line-CB-O-bd", c, b, d);
+            // Off the page, the line stops short of the edge, where O_cd's
+            // arrow and letter continue it.
+            let end = match shown.clip_segment(a, d) {
+                Some((_, edge)) if !shown.contains(d) && (edge - a).norm() > 0.0 => {
+                    let u = (edge - a).normalize();
+                    let back = self.s.world(EDGE_ROOM).min(0.5 * (edge - a).norm());
+                    edge - u * back
+                }
+                _ => d,
+            };
+            self.s.segment("line-A-O-bd", Role::Auxiliary, a, end);
+        }
+        if let Intersection::Point(x) = o_ac {
+            produced(&mut self.s, "line-AB-O-ac", a, b, x);
+            self.s.segment("line-C-O-ac", Role::Auxiliary, c, x);
+        }
+    }
+
+    /// The six centres and Kennedy's lines: the pins lettered as the
+    /// centres they are, then O_bd, O_ac and O_cd (an arrow for one at
+    /// infinity). Returns the notes' sentences for a centre drawn on a
+    /// pin or another centre, named there instead of lettered on top.
+    fn centres(&mut self, centres: &ChainCentres) -> Vec<String> {
+        // cannot fail: it is asked only for pairs of distinct links below.
+        #[allow(clippy::expect_used)]
+        let get = |p: Link, q: Link| centres.centre(p, q).expect("distinct links");
+        let o_bd = get(Link::B, Link::D);
+        self.kennedy(o_bd, get(Link::A, Link::C));
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        // The pins are three of the six centres, lettered as such: C = O_ad,
+        // B = O_ab, A = O_bc (the notes give the letters of Figs. 62–67).
+        let pins = [(c, "*O*_{ad}"), (b, "*O*_{ab}"), (a, "*O*_{bc}")];
+        for ((p, markup), key) in pins.into_iter().zip(["C", "B", "A"]) {
+            self.s.lettered(key, p, markup, Marker::Pin, c);
+        }
+        // O_cd lies on the normal at A, as O_bd does: its arrow continues
+        // the line A O_bd.
+        let towards_d = match o_bd {
+            Intersection::Point(d) => d - a,
+            _ => Vector::zeros(),
+        };
+        let mut lettered: Vec<(Point, &str)> = pins.to_vec();
+        let mut together: Vec<String> = Vec::new();
+        for (key, markup, centre, from, along) in [
+            ("O-bd", "*O*_{bd}", o_bd, b, b - c),
+            ("O-ac", "*O*_{ac}", get(Link::A, Link::C), b, b - a),
+            ("O-cd", "*O*_{cd}", get(Link::C, Link::D), a, towards_d),
+        ] {
+            match centre {
+                Intersection::Point(p) => {
+                    self.centre(key, markup, p, from, &mut lettered, &mut together)
+                }
+                Intersection::AtInfinity(dir) => {
+                    let u = self.towards(dir.into_inner(), from, along);
+                    self.s.lettered_at_infinity(key, from, u, markup);
+                }
+                Intersection::Coincident => {}
+            }
+        }
+        together
+    }
+
+    /// The centre `p` lettered `markup` from the side of `from`, or, on
+    /// the page within [`CROWDED`] of a centre `lettered` already, a dot
+    /// named in `together` instead.
+    fn centre<'m>(
+        &mut self,
+        key: &str,
+        markup: &'m str,
+        p: Point,
+        from: Point,
+        lettered: &mut Vec<(Point, &'m str)>,
+        together: &mut Vec<String>,
+    ) {
+        let map = *self.s.transform();
+        let near = lettered
+            .iter()
+            .find(|(q, _)| map.apply_vector(p - q).norm() < CROWDED);
+        match near {
+            Some(&(q, other)) if self.s.contains(p) => {
+                let (r, l, e) = (self.m.crank(), self.m.rod(), self.m.offset());
+                together.push(where_near(markup, p, other, q, r + l + e.abs()));
+                self.s.push(
+                    format!("centre-{key}"),
+                    Role::Construction,
+                    Shape::Dot { centre: p },
+                );
+            }
+            _ => {
+                self.s.lettered(key, p, markup, Marker::Dot, from);
+                lettered.push((p, markup));
+            }
+        }
+    }
+
+    /// The direction `u` of a centre at infinity seen from `from`: along
+    /// `along`, or where `along` is zero (the normal at A with no O_bd to
+    /// follow), the way with the longer run on the page.
+    fn towards(&self, u: Vector, from: Point, along: Vector) -> Vector {
+        let mut u = u;
+        if u.dot(&along) < 0.0 {
+            u = -u;
+        }
+        if along == Vector::zeros() {
+            let shown = *self.s.frame();
+            let room = |w: Vector| shown.clip_ray(from, w).map_or(0.0, |(p, q)| (q - p).norm());
+            if room(-u) > room(u) {
+                u = -u;
+            }
+        }
+        u
+    }
+}
+
+/// The notes: the inversion named, the pose and the mechanism, the quick
+/// return's time ratio where there is one and the centres drawn together,
+/// then the pins' letters and Kennedy's theorem.
+fn notes(ctx: &Ctx, chain: &InvertedChain, named: &str, together: &[String]) -> [String; 2] {
+    let m = &ctx.mechanism;
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
     let mut line = format!(
         "{named}The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. The fixed link is hatched.",
         short(ctx.angle.degrees()),
@@ -435,14 +547,10 @@ pub(super) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     if !together.is_empty() {
         line.push_str(&format!(" Here {}.", together.join(", ")));
     }
-    let lines = [
+    [
         line,
         "The pins *O*_{ad}, *O*_{ab}, *O*_{bc} are *C*, *B*, *A* of Figs. 62–67; by Kennedy’s theorem *O*_{bd} on *O*_{ad}*O*_{ab} and on the normal to the stroke at *O*_{bc}, *O*_{ac} on *O*_{ab}*O*_{bc} and on the normal at *O*_{ad}.".to_string(),
-    ];
-    let bottom = rect.y + rect.height + 6.0;
-    sheet.height(bottom + notes_height);
-    sheet.notes(Point::new(20.0, bottom), &lines);
-    Ok(sheet.finish())
+    ]
 }
 
 /// The line `p q` produced to `x` on it, from whichever of p and q is

@@ -2,27 +2,27 @@
 //! panels ([`crate::diagram::Plot`]) and, where the textbook draws on the
 //! mechanism, a [`crate::scene::Scene`]'s panel with curves added.
 
-mod acceleration;
-mod approximation;
-mod benchmark;
-mod calibration;
-mod centrodes;
-mod chains;
-mod convergence;
-mod coupler;
-mod cranks;
-mod flywheel;
-mod forces;
-mod incline;
-mod inertia;
-mod inversions;
-mod rod;
-mod turning;
-mod unbalanced;
-mod velocity;
+pub(super) mod acceleration;
+pub(super) mod approximation;
+pub(super) mod benchmark;
+pub(super) mod calibration;
+pub(super) mod centrodes;
+pub(super) mod chains;
+pub(super) mod convergence;
+pub(super) mod coupler;
+pub(super) mod cranks;
+pub(super) mod flywheel;
+pub(super) mod forces;
+pub(super) mod incline;
+pub(super) mod inertia;
+pub(super) mod inversions;
+pub(super) mod rod;
+pub(super) mod turning;
+pub(super) mod unbalanced;
+pub(super) mod velocity;
 
+use super::specs::Builder;
 use super::{FigureName, FigureOptions};
-use crate::chain::Inversion;
 use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::Plot;
 use crate::error::{Error, Result};
@@ -161,63 +161,11 @@ pub(super) fn short_arc(centre: Point, radius: f64, start: f64, end: f64) -> Sha
     }
 }
 
-/// The options the diagram `name` uses, named as on the command line
-/// (`--angle`); the others are refused.
-pub(crate) fn uses(name: FigureName) -> &'static [&'static str] {
-    const MECH: &str = "mechanism (--crank, --rod, --offset)";
-    const SPEED: &str = "crank speed (--rpm, --omega)";
-    match name {
-        FigureName::Fig61Centrodes | FigureName::CouplerCurves => {
-            &[MECH, "--angle", "--style", "--font", "--mirror"]
-        }
-        FigureName::Fig60Chains
-        | FigureName::Inversion1Engine
-        | FigureName::Inversion2RotatingBlock
-        | FigureName::Inversion3OscillatingCylinder
-        | FigureName::Inversion4HandPump => &[MECH, "--angle", "--style", "--font"],
-        FigureName::SlotConvergence => &[MECH, "--style", "--font"],
-        FigureName::Fig64VelocityDiagrams => {
-            &[MECH, SPEED, "--angle", "--style", "--font", "--mirror"]
-        }
-        FigureName::AccelerationDiagrams | FigureName::RodMotion => {
-            &[MECH, SPEED, "--angle", "--style", "--font"]
-        }
-        FigureName::ApproximationError => &["--style", "--font"],
-        FigureName::NgFig2Incline => &["--angle", "--style", "--font"],
-        FigureName::NgFig7Calibration => &["--data", "--fit", "--style", "--font"],
-        FigureName::NgFig8Forces => &[MECH, "--data", "--style", "--font"],
-        FigureName::CurveBenchmark => &["--data", "--style", "--font"],
-        FigureName::TurningMoment => &[MECH, SPEED, "--data", "--mass", "--style", "--font"],
-        FigureName::PrimarySecondary => &[MECH, SPEED, "--mass", "--style", "--font"],
-        FigureName::Flywheel => &[
-            MECH,
-            SPEED,
-            "--data",
-            "--mass",
-            "--fluctuation",
-            "--style",
-            "--font",
-        ],
-        FigureName::DirectReverseCranks => &[MECH, SPEED, "--angle", "--mass", "--style", "--font"],
-        FigureName::InertiaForce => &[
-            MECH, SPEED, "--angle", "--mass", "--style", "--font", "--mirror",
-        ],
-        _ => &[],
-    }
-}
-
-/// The first option of `options` that the diagram `name` does not use,
-/// named as on the command line (`--angle`).
-pub(crate) fn unused(name: FigureName, options: &FigureOptions) -> Option<&'static str> {
-    let used = uses(name);
-    options.given().into_iter().find(|o| !used.contains(o))
-}
-
-/// Builds the diagram `name` with `options`.
-pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure> {
-    if let Some(bad) = unused(name, options) {
-        return Err(Error::Parse(format!("{} does not use {bad}", name.name())));
-    }
+/// Builds the diagram `name` with `options` by its builder `build` (its
+/// entry in the table of figures): the options resolved against the
+/// figure's own values first, an option it does not take refused.
+pub(crate) fn build(name: FigureName, build: Builder, options: &FigureOptions) -> Result<Figure> {
+    name.refuse_unused(options)?;
     let omega = options
         .omega
         .unwrap_or_else(|| crate::analytic::kinematics::rpm_to_omega(250.0));
@@ -249,33 +197,7 @@ pub(crate) fn build(name: FigureName, options: &FigureOptions) -> Result<Figure>
         mirror: options.mirror.unwrap_or(!name.is_ng()),
     };
     let page = ctx.page;
-    let built = match name {
-        FigureName::Fig61Centrodes => centrodes::build(&ctx),
-        FigureName::Fig64VelocityDiagrams => velocity::build(&ctx),
-        FigureName::AccelerationDiagrams => acceleration::build(&ctx),
-        FigureName::RodMotion => rod::build(&ctx),
-        FigureName::ApproximationError => approximation::build(&ctx),
-        FigureName::CouplerCurves => coupler::build(&ctx),
-        FigureName::NgFig2Incline => incline::build(&ctx),
-        FigureName::NgFig7Calibration => calibration::build(&ctx),
-        FigureName::NgFig8Forces => forces::build(&ctx),
-        FigureName::CurveBenchmark => benchmark::build(&ctx),
-        FigureName::Fig60Chains => chains::build(&ctx),
-        FigureName::Inversion1Engine => inversions::build(&ctx, Inversion::Frame),
-        FigureName::Inversion2RotatingBlock => inversions::build(&ctx, Inversion::Crank),
-        FigureName::Inversion3OscillatingCylinder => inversions::build(&ctx, Inversion::Rod),
-        FigureName::Inversion4HandPump => inversions::build(&ctx, Inversion::Slider),
-        FigureName::SlotConvergence => convergence::build(&ctx),
-        FigureName::TurningMoment => turning::build(&ctx),
-        FigureName::InertiaForce => inertia::build(&ctx),
-        FigureName::PrimarySecondary => unbalanced::build(&ctx),
-        FigureName::DirectReverseCranks => cranks::build(&ctx),
-        FigureName::Flywheel => flywheel::build(&ctx),
-        _ => Err(Error::Parse(format!(
-            "{} is a mechanism figure, not a diagram",
-            name.name()
-        ))),
-    };
+    let built = build(&ctx);
     // A page asked for that the diagram's bands do not fit: say so in its
     // terms rather than a plot's.
     let asked = options.width.is_some() || options.height.is_some();

@@ -13,21 +13,28 @@ use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::Point;
 use crate::mechanism::Pose;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
-    let m = ctx.mechanism;
-    let omega = ctx.omega;
-    let w2 = omega * omega;
-    let n = m.ratio();
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
-    let theta_axis =
-        || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0) };
     let height = 0.5 * (page.height() - 32.0 - 56.0);
+    sheet.plot(velocity(ctx, height)?);
+    sheet.plot(acceleration(ctx, 16.0 + height + 24.0, height)?);
+    sheet.notes(Point::new(20.0, page.height() - 36.0), &[note(ctx)]);
+    Ok(sheet.finish())
+}
+
+/// The crank angle's axis over a turn.
+fn theta_axis() -> Result<Axis> {
+    Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0)
+}
+
+/// (a) The rod's angular velocity against θ, `height` page units high,
+/// with its value at the drawn pose.
+fn velocity(ctx: &Ctx, height: f64) -> Result<Plot> {
+    let (m, omega) = (ctx.mechanism, ctx.omega);
     let pose = ctx.pose();
     let theta = pose.angle().degrees();
-
-    // (a) Angular velocity.
     let (lo, hi) = extent(&m, |p| omega * p.obliquity_rate());
     let y = Axis::nice("dφ/d*t* (rad/s)", lo, hi)?;
     let mut velocity = Plot::new(
@@ -58,14 +65,22 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Symbol::Circle,
         Some(&format!("θ = {}°: {} rad/s", short(theta), sig(v0))),
     );
-    sheet.plot(velocity);
+    Ok(velocity)
+}
 
-    // (b) Angular acceleration, exact and eq. (2a).
+/// (b) The rod's angular acceleration against θ from `top` down, exact
+/// and by eq. (2a), with its value at the drawn pose.
+fn acceleration(ctx: &Ctx, top: f64, height: f64) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let w2 = ctx.omega * ctx.omega;
+    let n = m.ratio();
+    let pose = ctx.pose();
+    let theta = pose.angle().degrees();
     let (lo, hi) = extent(&m, |p| w2 * p.obliquity_acceleration());
     let y = Axis::nice("d²φ/d*t*² (rad/s²)", lo.min(-w2 / n), hi.max(w2 / n))?;
     let mut acceleration = Plot::new(
         "angular-acceleration",
-        ctx.band(16.0 + height + 24.0, height),
+        ctx.band(top, height),
         theta_axis()?,
         y,
         ctx.tolerance,
@@ -99,18 +114,19 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Symbol::Circle,
         Some(&format!("θ = {}°: {} rad/s²", short(theta), sig(a0))),
     );
-    sheet.plot(acceleration);
-    sheet.notes(
-        Point::new(20.0, page.height() - 36.0),
-        &[format!(
-            "*r* = {} {u}, *l* = {} {u} (*n* = {}), {} rpm (ω = {} rad/s). Signs as in the textbook and Ng’s paper: the rod turns counter-clockwise at −dφ/d*t*.",
-            short(m.crank()),
-            short(m.rod()),
-            short(n),
-            short(ctx.rpm()),
-            sig(omega),
-            u = ctx.unit()
-        )],
-    );
-    Ok(sheet.finish())
+    Ok(acceleration)
+}
+
+/// The note: the engine, its speed, and the seeds' signs.
+fn note(ctx: &Ctx) -> String {
+    let m = ctx.mechanism;
+    format!(
+        "*r* = {} {u}, *l* = {} {u} (*n* = {}), {} rpm (ω = {} rad/s). Signs as in the textbook and Ng’s paper: the rod turns counter-clockwise at −dφ/d*t*.",
+        short(m.crank()),
+        short(m.rod()),
+        short(m.ratio()),
+        short(ctx.rpm()),
+        sig(ctx.omega),
+        u = ctx.unit()
+    )
 }

@@ -34,28 +34,36 @@ pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
     Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
 }
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let engine = engine(ctx)?;
     let tm = TurningMoment::new(&engine, &[0.0])?;
-    let phases = [0.0];
-    let torque = |deg: f64| total_torque(&engine, &phases, deg.to_radians());
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, false);
     sheet.meta("mean_torque", serde_json::json!(tm.mean));
     sheet.meta("fluctuation", serde_json::json!(tm.fluctuation));
-    let kinks = &tm.kinks_deg;
-    let pieces: Vec<(f64, f64)> = kinks
-        .iter()
-        .copied()
-        .zip(kinks.iter().copied().skip(1))
-        .collect();
-    let theta =
-        || -> Result<Axis> { Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0) };
     let height = 0.5 * (page.height() - 32.0 - 24.0 - 56.0);
-    let t_unit = ctx.units.torque();
+    sheet.plot(torque_plot(ctx, &engine, &tm, height)?);
+    sheet.plot(energy_plot(ctx, &engine, &tm, height)?);
+    sheet.notes(Point::new(20.0, page.height() - 40.0), &notes(ctx, &tm));
+    Ok(sheet.finish())
+}
 
-    // (a) T against θ, the mean line and the areas.
+/// The torque on the crank of `engine` (one cylinder) at `deg` degrees.
+fn torque(engine: &Engine, deg: f64) -> f64 {
+    total_torque(engine, &[0.0], deg.to_radians())
+}
+
+/// The crank angle's axis over a turn.
+fn theta() -> Result<Axis> {
+    Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0)
+}
+
+/// (a) T against θ, `height` page units high, in smooth pieces between
+/// its kinks, with the mean line and the areas between them.
+fn torque_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> Result<Plot> {
+    let t_unit = ctx.units.torque();
+    let torque = |deg: f64| torque(engine, deg);
     let (lo, hi) = (0..=720)
         .map(|k| torque(k as f64 * 0.5))
         .fold((tm.mean, tm.mean), |(a, b), t| (a.min(t), b.max(t)));
@@ -70,38 +78,13 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     .with_caption(
         "(a) Turning-moment diagram, *T* = *F*·*OM*, the mean line and the areas between them",
     );
-    for (k, lobe) in tm.lobes.iter().enumerate() {
-        let n = ((lobe.to_deg - lobe.from_deg) * 2.0).ceil().max(2.0) as usize;
-        let mut points: Vec<Point> = (0..=n)
-            .map(|i| {
-                let d = lobe.from_deg + (lobe.to_deg - lobe.from_deg) * i as f64 / n as f64;
-                Point::new(d, torque(d))
-            })
-            .collect();
-        points.push(Point::new(lobe.to_deg, tm.mean));
-        points.push(Point::new(lobe.from_deg, tm.mean));
-        plot.push(Item::new(
-            format!("region-lobe-{}", k + 1),
-            Role::Construction,
-            Shape::Region { points },
-        ));
-        // Each area's value, half-way between the curve and the mean line
-        // at the middle of the lobe, where the lobe is wide enough to carry it.
-        if lobe.to_deg - lobe.from_deg >= 25.0 {
-            let mid = 0.5 * (lobe.from_deg + lobe.to_deg);
-            let anchor = Point::new(mid, 0.5 * (torque(mid) + tm.mean));
-            let sign = if lobe.area > 0.0 { "+" } else { "−" };
-            plot.push(Item::new(
-                format!("label-lobe-{}", k + 1),
-                Role::Label,
-                Shape::Label {
-                    anchor,
-                    text: RichText::parse(&format!("{sign}{}", sig(lobe.area.abs()))),
-                    size: TextSize::Small,
-                },
-            ));
-        }
-    }
+    lobes(&mut plot, engine, tm);
+    let kinks = &tm.kinks_deg;
+    let pieces: Vec<(f64, f64)> = kinks
+        .iter()
+        .copied()
+        .zip(kinks.iter().copied().skip(1))
+        .collect();
     let curves: Vec<Box<dyn Curve>> = pieces.iter().map(|&(a, b)| piece(&torque, a, b)).collect();
     let traced: Vec<(&dyn Curve, _)> = curves
         .iter()
@@ -115,14 +98,54 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Dash::Dashed,
         Some(&format!("mean torque {} {t_unit}", sig(tm.mean))),
     );
-    sheet.plot(plot);
+    Ok(plot)
+}
 
-    // (b) The energy stored, E(θ).
+/// The areas between T and its mean line, each with its value where it
+/// is wide enough to carry it.
+fn lobes(plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
+    for (k, lobe) in tm.lobes.iter().enumerate() {
+        let n = ((lobe.to_deg - lobe.from_deg) * 2.0).ceil().max(2.0) as usize;
+        let mut points: Vec<Point> = (0..=n)
+            .map(|i| {
+                let d = lobe.from_deg + (lobe.to_deg - lobe.from_deg) * i as f64 / n as f64;
+                Point::new(d, torque(engine, d))
+            })
+            .collect();
+        points.push(Point::new(lobe.to_deg, tm.mean));
+        points.push(Point::new(lobe.from_deg, tm.mean));
+        plot.push(Item::new(
+            format!("region-lobe-{}", k + 1),
+            Role::Construction,
+            Shape::Region { points },
+        ));
+        // Each area's value, half-way between the curve and the mean line
+        // at the middle of the lobe, where the lobe is wide enough to carry it.
+        if lobe.to_deg - lobe.from_deg >= 25.0 {
+            let mid = 0.5 * (lobe.from_deg + lobe.to_deg);
+            let anchor = Point::new(mid, 0.5 * (torque(engine, mid) + tm.mean));
+            let sign = if lobe.area > 0.0 { "+" } else { "−" };
+            plot.push(Item::new(
+                format!("label-lobe-{}", k + 1),
+                Role::Label,
+                Shape::Label {
+                    anchor,
+                    text: RichText::parse(&format!("{sign}{}", sig(lobe.area.abs()))),
+                    size: TextSize::Small,
+                },
+            ));
+        }
+    }
+}
+
+/// (b) The energy stored, E(θ), below (a), with its greatest and least
+/// marked by the fluctuation ΔE.
+fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> Result<Plot> {
+    let t_unit = ctx.units.torque();
     let values: Vec<f64> = tm.lobes.iter().map(|l| l.energy).chain([0.0]).collect();
     let (elo, ehi) = values
         .iter()
         .fold((0.0f64, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
-    let energy = |deg: f64| stored(&engine, &tm, deg);
     let mut plot = Plot::new(
         "energy",
         ctx.band(16.0 + height + 24.0, height),
@@ -132,10 +155,10 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         ctx.font,
     )?
     .with_caption("(b) Energy stored in the flywheel, *E*, the area under *T* − *T*_{mean} from θ = 0, and its fluctuation Δ*E*");
-    let e_curve = move |deg: f64| -> Option<(Point, Vector)> {
-        let slope = torque(deg) - tm.mean;
+    let e_curve = |deg: f64| -> Option<(Point, Vector)> {
+        let slope = torque(engine, deg) - tm.mean;
         Some((
-            Point::new(deg, energy(deg)),
+            Point::new(deg, stored(engine, tm, deg)),
             Vector::new(1.0, slope * super::PER_DEGREE),
         ))
     };
@@ -152,27 +175,45 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Symbol::Circle,
         Some(&format!("Δ*E* = {} {t_unit}", sig(tm.fluctuation))),
     );
-    sheet.plot(plot);
+    Ok(plot)
+}
+
+/// The notes: the engine, its speed, mass, bore and gas force, then the
+/// work per turn, the areas and where the energy is greatest and least.
+fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
     let m = ctx.mechanism;
-    sheet.notes(
-        Point::new(20.0, page.height() - 40.0),
-        &[
-            format!(
-                "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {f}·s²/{u}, bore {} {u}; gas force from the indicator diagram{}.",
-                short(m.crank()), short(m.rod()),
-                // An offset engine says so (its stroke, and so its work, differ).
-                if m.offset() == 0.0 { String::new() } else { format!(", *e* = {} {}", short(m.offset()), ctx.unit()) },
-                short(ctx.rpm()), short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)), short(BORE),
-                if ctx.options.data.is_some() { " given (--data)" } else { " of examples/indicator.csv" },
-                u = ctx.unit(), f = ctx.units.force()
-            ),
-            format!(
-                "Work per turn {} {t_unit}; {} areas between the crossings, integrated to {} {t_unit}; most energy at θ = {}°, least at {}°.",
-                sig(tm.work), tm.lobes.len(), crate::number::power_form(tm.tolerance), short(tm.max_energy_deg), short(tm.min_energy_deg)
-            ),
-        ],
-    );
-    Ok(sheet.finish())
+    let t_unit = ctx.units.torque();
+    [
+        format!(
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {f}·s²/{u}, bore {} {u}; gas force from the indicator diagram{}.",
+            short(m.crank()),
+            short(m.rod()),
+            // An offset engine says so (its stroke, and so its work, differ).
+            if m.offset() == 0.0 {
+                String::new()
+            } else {
+                format!(", *e* = {} {}", short(m.offset()), ctx.unit())
+            },
+            short(ctx.rpm()),
+            short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
+            short(BORE),
+            if ctx.options.data.is_some() {
+                " given (--data)"
+            } else {
+                " of examples/indicator.csv"
+            },
+            u = ctx.unit(),
+            f = ctx.units.force()
+        ),
+        format!(
+            "Work per turn {} {t_unit}; {} areas between the crossings, integrated to {} {t_unit}; most energy at θ = {}°, least at {}°.",
+            sig(tm.work),
+            tm.lobes.len(),
+            crate::number::power_form(tm.tolerance),
+            short(tm.max_energy_deg),
+            short(tm.min_energy_deg)
+        ),
+    ]
 }
 
 /// The energy stored in the flywheel at `deg` degrees of the turn of

@@ -51,7 +51,7 @@ const CURVES: [(&str, &str, Dash); 4] = [
     ),
 ];
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mass = positive_mass(ctx)?;
     let m = ctx.mechanism;

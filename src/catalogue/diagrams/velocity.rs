@@ -15,7 +15,7 @@ use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 use crate::scene::Layer;
-use crate::{angle::Angle, mechanism::Pose};
+use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
 
 /// Height of the mechanism panel with its scale notes.
 const TOP: f64 = 400.0;
@@ -24,17 +24,22 @@ const TOP: f64 = 400.0;
 /// two-line legend in a corner clear of it.
 const FLAT: f64 = 120.0;
 
-pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
-    let m = ctx.mechanism;
-    let omega = ctx.omega;
-    let unit = ctx.unit();
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
+    let grown = mechanism(ctx, &mut sheet)?;
+    sheet.plot(time_base(ctx, TOP + grown + 6.0)?);
+    sheet.height(page.height() + grown);
+    sheet.notes(Point::new(20.0, page.height() + grown - 48.0), &notes(ctx));
+    Ok(sheet.finish())
+}
 
-    // (a) The mechanism at the drawn pose with E, and the two diagrams in
-    // its own world coordinates.
-    let scene = ctx.scene(page.width(), TOP)?.with_layers([
+/// (a) The mechanism at the drawn pose with E, and the two diagrams in
+/// its own world coordinates, set on `sheet` with the scene's details;
+/// returns how much taller than [`TOP`] it is drawn.
+fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
+    let scene = ctx.scene(ctx.page().width(), TOP)?.with_layers([
         Layer::Mechanism,
         Layer::Velocity,
         Layer::Scales,
@@ -53,7 +58,6 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     let r = *panel.rect();
     let band = if r.height < FLAT { Plot::band(2) } else { 0.0 };
     let area = PageRect::new(r.x, r.y, r.width, TOP + grown + band - r.y);
-    let grown = grown + band;
     let plot = Plot::with_map(
         "mechanism",
         r,
@@ -70,6 +74,19 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
     for item in panel.items() {
         plot.avoid(item);
     }
+    diagrams(&mut plot, ctx.mechanism)?;
+    construction(&mut plot, &ctx.pose());
+    let drawn = plot.finish();
+    sheet.panel(panel.with_items(drawn.items().iter().cloned()));
+    for detail in base.panels().iter().skip(1) {
+        sheet.panel(detail.clone());
+    }
+    Ok(grown + band)
+}
+
+/// The polar diagram (E′ on the crank, the return stroke's loop below)
+/// and the distance base (E″ over A) of `m`, on the mechanism's plot.
+fn diagrams(plot: &mut Plot, m: SliderCrank) -> Result<()> {
     let polar = Locus::new(m, LocusKind::PolarVelocity);
     let outward = |deg: f64| polar.eval(deg);
     let inward = |deg: f64| {
@@ -96,24 +113,22 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         &[(&distance, 0.0..=360.0)],
         Dash::Dashed,
         Some("distance base: *E*″ over *A*, height *CE*"),
-    )?;
-    construction(&mut plot, &ctx.pose());
-    let drawn = plot.finish();
-    sheet.panel(panel.with_items(drawn.items().iter().cloned()));
-    for detail in base.panels().iter().skip(1) {
-        sheet.panel(detail.clone());
-    }
+    )
+}
 
-    // (b) The velocity on a time base over one revolution, against simple
-    // harmonic motion of the same amplitude V_c.
+/// (b) The velocity on a time base over one revolution from `top` down,
+/// against simple harmonic motion of the same amplitude V_c, with the
+/// pose drawn above marked.
+fn time_base(ctx: &Ctx, top: f64) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let omega = ctx.omega;
     let period = std::f64::consts::TAU / omega;
     let vc = ctx.crank_speed();
     let (lo, hi) = extent(&m, |p| -omega * p.position_rate());
-    let top = TOP + grown + 6.0;
-    let rect = ctx.band(top, page.height() - TOP - 6.0 - 60.0);
+    let rect = ctx.band(top, ctx.page().height() - TOP - 6.0 - 60.0);
     let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
     let y = Axis::nice(
-        &format!("*V*_p ({unit}/s), towards the crank"),
+        &format!("*V*_p ({}/s), towards the crank", ctx.unit()),
         lo.min(-vc),
         hi.max(vc),
     )?;
@@ -151,19 +166,19 @@ pub(super) fn build(ctx: &Ctx) -> Result<Figure> {
         Symbol::Disc,
         Some(&format!("the pose drawn above, θ = {}°", short(theta))),
     );
-    sheet.plot(time);
-    sheet.height(page.height() + grown);
-    sheet.notes(
-        Point::new(20.0, page.height() + grown - 48.0),
-        &[
-            format!(
-                "Scale: *CB* = *r* represents *V*_c = *r*ω = {} {unit}/s; *CE*′ and the height of *E*″ represent *V*_p to the same scale.",
-                sig(vc)
-            ),
-            "*E*′ is set off on the crank itself (*CE*′ = *CE*), so the return stroke’s loop lies below the crank centre.".to_string(),
-        ],
-    );
-    Ok(sheet.finish())
+    Ok(time)
+}
+
+/// The notes: the velocity scale, and where E′ is set off.
+fn notes(ctx: &Ctx) -> [String; 2] {
+    [
+        format!(
+            "Scale: *CB* = *r* represents *V*_c = *r*ω = {} {}/s; *CE*′ and the height of *E*″ represent *V*_p to the same scale.",
+            sig(ctx.crank_speed()),
+            ctx.unit()
+        ),
+        "*E*′ is set off on the crank itself (*CE*′ = *CE*), so the return stroke’s loop lies below the crank centre.".to_string(),
+    ]
 }
 
 /// The construction of E′ and E″ for the drawn pose: the arc about C from
