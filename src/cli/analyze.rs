@@ -4,7 +4,7 @@ use super::args::{AngleSpec, GuardArgs, LoadArgs, MechanismArgs, SpeedArgs, Unit
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::analytic::statics::Friction;
-use slider_crank::construct::Reading;
+use slider_crank::construct::{Reading, Statics};
 use slider_crank::dynamics::{Engine, EnginePose};
 use slider_crank::geom::Point;
 use slider_crank::render::plain;
@@ -128,6 +128,8 @@ fn fmt_point(p: Option<Point>) -> String {
     }
 }
 
+/// The text `analyze` prints for one angle: the points, the values
+/// analytic beside graphical, and the statics and dynamics when asked for.
 fn to_text(report: &Report, units: &Units) -> String {
     let r = &report.reading;
     let length = units.length();
@@ -149,6 +151,19 @@ fn to_text(report: &Report, units: &Units) -> String {
     ] {
         out.push_str(&format!("    {name}  {}\n", fmt_point(p)));
     }
+    values(r, units, &mut out);
+    if let Some(s) = &r.statics {
+        statics_text(s, units, &mut out);
+    }
+    if let Some((engine, at)) = &report.dynamics {
+        out.push_str(&super::dynamics::to_text(engine, at, r.pose.angle(), units));
+    }
+    out
+}
+
+/// The table of values, analytic beside graphical, of `analyze`'s text.
+fn values(r: &Reading, units: &Units, out: &mut String) {
+    let length = units.length();
     out.push_str(&format!(
         "  {:<26}{:>20}{:>20}  unit\n",
         "quantity", "analytic", "graphical"
@@ -201,46 +216,45 @@ fn to_text(report: &Report, units: &Units) -> String {
             column(g)
         ));
     }
-    if let Some(s) = &r.statics {
-        let force = units.force();
-        out.push_str(&format!("  statics (μ = {})\n", plain(num(s.mu))));
-        out.push_str(&format!(
-            "    OM (= CE)                 {} {length}\n",
-            fixed(s.om, 10, 0)
-        ));
-        match s.force {
-            Some(f) => {
-                out.push_str(&format!(
-                    "    slider force F_p          {} {force}\n",
-                    fixed(f, 10, 0)
-                ));
-                out.push_str(&format!(
-                    "    side thrust F_s           {} {force}\n",
-                    fixed(s.side_thrust.unwrap_or(0.0), 10, 0)
-                ));
-            }
-            None => out.push_str("    slider force F_p          unbounded (dead centre: OM = 0)\n"),
-        }
-        match s.with_friction {
-            Some(Friction::Force(f)) => out.push_str(&format!(
-                "    with friction F_p'        {} {force}\n",
+}
+
+/// Ng's statics in `analyze`'s text.
+fn statics_text(s: &Statics, units: &Units, out: &mut String) {
+    let length = units.length();
+    let force = units.force();
+    out.push_str(&format!("  statics (μ = {})\n", plain(num(s.mu))));
+    out.push_str(&format!(
+        "    OM (= CE)                 {} {length}\n",
+        fixed(s.om, 10, 0)
+    ));
+    match s.force {
+        Some(f) => {
+            out.push_str(&format!(
+                "    slider force F_p          {} {force}\n",
                 fixed(f, 10, 0)
-            )),
-            Some(Friction::SelfLocking(k)) => out.push_str(&format!(
-                "    with friction F_p'        self-locking (μ|tan φ| = {} ≥ 1)\n",
-                fixed(k, 6, 0)
-            )),
-            None => {}
+            ));
+            out.push_str(&format!(
+                "    side thrust F_s           {} {force}\n",
+                fixed(s.side_thrust.unwrap_or(0.0), 10, 0)
+            ));
         }
-        out.push_str(&format!(
-            "    transmission angle β (°)  {:.10}\n",
-            num(s.transmission_deg)
-        ));
+        None => out.push_str("    slider force F_p          unbounded (dead centre: OM = 0)\n"),
     }
-    if let Some((engine, at)) = &report.dynamics {
-        out.push_str(&super::dynamics::to_text(engine, at, r.pose.angle(), units));
+    match s.with_friction {
+        Some(Friction::Force(f)) => out.push_str(&format!(
+            "    with friction F_p'        {} {force}\n",
+            fixed(f, 10, 0)
+        )),
+        Some(Friction::SelfLocking(k)) => out.push_str(&format!(
+            "    with friction F_p'        self-locking (μ|tan φ| = {} ≥ 1)\n",
+            fixed(k, 6, 0)
+        )),
+        None => {}
     }
-    out
+    out.push_str(&format!(
+        "    transmission angle β (°)  {:.10}\n",
+        num(s.transmission_deg)
+    ));
 }
 
 /// The reports at every angle of `spec`, computed as they are used.
@@ -263,12 +277,9 @@ fn pretty(value: &impl serde::Serialize) -> Result<String> {
     })
 }
 
-/// Runs the subcommand. Rows are computed twice, never all held: a first
-/// pass finds any error (so that nothing is printed then), the second
-/// prints the angles a chunk at a time, both on every core
-/// ([`super::stream`]).
-pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
-    let m = args.mechanism.mechanism()?;
+/// The flags the chain's flags refuse (a torque, the engine's masses),
+/// and the request's size against `--max-cells`.
+fn refuse_or_guard(args: &AnalyzeArgs) -> Result<()> {
     if args.chain.is_set() && args.load.torque.is_some() {
         return Err(Error::Parse(
             "--torque applies to the engine only, not with --slot-radius, --links or --inversion"
@@ -278,7 +289,6 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     if args.chain.is_set() {
         super::dynamics::refuse_with_chain(&args.engine)?;
     }
-    let units = args.units.units(Units::FOOT_POUND);
     let angles = AngleSpec::parse(&args.angle)?.len();
     let statics = if args.load.torque.is_some() {
         STATICS_VALUES
@@ -289,7 +299,17 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
         "analyze",
         (angles, &format!("{angles} angles")),
         (VALUES_PER_ANGLE + statics, "values each"),
-    )?;
+    )
+}
+
+/// Runs the subcommand. Rows are computed twice, never all held: a first
+/// pass finds any error (so that nothing is printed then), the second
+/// prints the angles a chunk at a time, both on every core
+/// ([`super::stream`]).
+pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
+    let m = args.mechanism.mechanism()?;
+    refuse_or_guard(args)?;
+    let units = args.units.units(Units::FOOT_POUND);
     if super::chain::analyze(
         m,
         &args.chain,
