@@ -150,92 +150,129 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         FormatArg::Csv => Format::Csv,
     };
     match args.name {
-        TableName::Obliquity => {
-            let ratios = ratios.unwrap_or_else(|| vec![4.0, 5.0, 6.0]);
-            let spec = spec.unwrap_or(AngleSpec::parse("90")?);
-            let first = spec.iter().next().unwrap_or(90.0);
-            let head = table::obliquity(&ratios, first)?;
-            let (angles, n) = (spec.len(), ratios.len() as u64);
-            let rows = angles.saturating_mul(n);
-            args.guard.check(
-                "table obliquity",
-                (rows, &format!("{angles} angles × {n} ratios = {rows} rows")),
-                (head.headers.len() as u64, "columns"),
-            )?;
-            let rows = || {
-                spec.iter()
-                    .flat_map(|a| match table::obliquity(&ratios, a) {
-                        Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
-                        Err(e) => vec![Err(e)],
-                    })
-            };
-            write_rows(format, &head, rows, out)
-        }
-        TableName::AccelerationFactor => {
-            let ratios = ratios.unwrap_or_else(|| TEXTBOOK_RATIOS.to_vec());
-            let head = table::acceleration_factor_table(&ratios, &[])?;
-            let angles = spec
-                .as_ref()
-                .map_or(TEXTBOOK_ANGLES.len() as u64, AngleSpec::len);
-            args.guard.check(
-                "table acceleration-factor",
-                (angles, &format!("{angles} angles")),
-                (head.headers.len() as u64, "columns"),
-            )?;
-            let row = |d: f64| {
-                let t = table::acceleration_factor_table(&ratios, &[d])?;
-                Ok(t.rows.into_iter().next().unwrap_or_default())
-            };
-            match &spec {
-                Some(spec) => write_rows(format, &head, || spec.iter().map(row), out),
-                None => write_rows(format, &head, || TEXTBOOK_ANGLES.into_iter().map(row), out),
-            }
-        }
-        TableName::Kinematics => {
-            let m = mechanism(args, 0.5, 3.0)?;
-            let omega = SpeedArgs {
-                rpm: args.rpm,
-                omega: args.omega,
-            }
-            .omega()?;
-            let spec = match &spec {
-                Some(s) => s.clone(),
-                None => AngleSpec::parse("0:360:30")?,
-            };
-            let units = args.units.units(Units::FOOT_POUND);
-            let head = table::kinematics_head(&m, omega, &units);
-            guard_angles(args, "table kinematics", &spec, &head)?;
-            let rows = || {
-                spec.iter()
-                    .map(|d| table::kinematics_row(&m, omega, d, decimals))
-            };
-            write_rows(format, &head, rows, out)
-        }
-        TableName::Forces => {
-            let m = mechanism(args, 25.0, 72.0)?;
-            let torque = args.torque.unwrap_or(NG_TABLE_2_TORQUE);
-            if !torque.is_finite() {
-                return Err(Error::NotFinite {
-                    name: "torque",
-                    value: torque,
-                });
-            }
-            let mu = args.friction.unwrap_or(1.0);
-            let spec = match &spec {
-                Some(s) => s.clone(),
-                None => AngleSpec::parse("10:160:10")?,
-            };
-            let units = args.units.units(Units::MILLIMETRE_NEWTON);
-            let head = table::forces_head(&m, torque, mu, &units);
-            guard_angles(args, "table forces", &spec, &head)?;
-            let rows = || {
-                spec.iter()
-                    .map(|d| table::forces_row(&m, torque, mu, d, decimals))
-            };
-            write_rows(format, &head, rows, out)
-        }
+        TableName::Obliquity => obliquity(args, ratios, spec, format, out),
+        TableName::AccelerationFactor => acceleration_factor(args, ratios, spec, format, out),
+        TableName::Kinematics => kinematics(args, spec, decimals, format, out),
+        TableName::Forces => forces(args, spec, decimals, format, out),
         TableName::Dynamics => dynamics(args, spec, decimals, format, out),
     }
+}
+
+/// `table obliquity`: φ for the ratios `ratios` at the angles `spec`.
+fn obliquity(
+    args: &TableArgs,
+    ratios: Option<Vec<f64>>,
+    spec: Option<AngleSpec>,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let ratios = ratios.unwrap_or_else(|| vec![4.0, 5.0, 6.0]);
+    let spec = spec.unwrap_or(AngleSpec::parse("90")?);
+    let first = spec.iter().next().unwrap_or(90.0);
+    let head = table::obliquity(&ratios, first)?;
+    let (angles, n) = (spec.len(), ratios.len() as u64);
+    let rows = angles.saturating_mul(n);
+    args.guard.check(
+        "table obliquity",
+        (rows, &format!("{angles} angles × {n} ratios = {rows} rows")),
+        (head.headers.len() as u64, "columns"),
+    )?;
+    let rows = || {
+        spec.iter()
+            .flat_map(|a| match table::obliquity(&ratios, a) {
+                Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
+                Err(e) => vec![Err(e)],
+            })
+    };
+    write_rows(format, &head, rows, out)
+}
+
+/// `table acceleration-factor`: the textbook's factor for the ratios
+/// `ratios` at the angles `spec` (the textbook's when not given).
+fn acceleration_factor(
+    args: &TableArgs,
+    ratios: Option<Vec<f64>>,
+    spec: Option<AngleSpec>,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let ratios = ratios.unwrap_or_else(|| TEXTBOOK_RATIOS.to_vec());
+    let head = table::acceleration_factor_table(&ratios, &[])?;
+    let angles = spec
+        .as_ref()
+        .map_or(TEXTBOOK_ANGLES.len() as u64, AngleSpec::len);
+    args.guard.check(
+        "table acceleration-factor",
+        (angles, &format!("{angles} angles")),
+        (head.headers.len() as u64, "columns"),
+    )?;
+    let row = |d: f64| {
+        let t = table::acceleration_factor_table(&ratios, &[d])?;
+        Ok(t.rows.into_iter().next().unwrap_or_default())
+    };
+    match &spec {
+        Some(spec) => write_rows(format, &head, || spec.iter().map(row), out),
+        None => write_rows(format, &head, || TEXTBOOK_ANGLES.into_iter().map(row), out),
+    }
+}
+
+/// `table kinematics`: the exact values at the angles `spec`.
+fn kinematics(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let m = mechanism(args, 0.5, 3.0)?;
+    let omega = SpeedArgs {
+        rpm: args.rpm,
+        omega: args.omega,
+    }
+    .omega()?;
+    let spec = match &spec {
+        Some(s) => s.clone(),
+        None => AngleSpec::parse("0:360:30")?,
+    };
+    let units = args.units.units(Units::FOOT_POUND);
+    let head = table::kinematics_head(&m, omega, &units);
+    guard_angles(args, "table kinematics", &spec, &head)?;
+    let rows = || {
+        spec.iter()
+            .map(|d| table::kinematics_row(&m, omega, d, decimals))
+    };
+    write_rows(format, &head, rows, out)
+}
+
+/// `table forces`: Ng's Table 2 at the angles `spec`.
+fn forces(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let m = mechanism(args, 25.0, 72.0)?;
+    let torque = args.torque.unwrap_or(NG_TABLE_2_TORQUE);
+    if !torque.is_finite() {
+        return Err(Error::NotFinite {
+            name: "torque",
+            value: torque,
+        });
+    }
+    let mu = args.friction.unwrap_or(1.0);
+    let spec = match &spec {
+        Some(s) => s.clone(),
+        None => AngleSpec::parse("10:160:10")?,
+    };
+    let units = args.units.units(Units::MILLIMETRE_NEWTON);
+    let head = table::forces_head(&m, torque, mu, &units);
+    guard_angles(args, "table forces", &spec, &head)?;
+    let rows = || {
+        spec.iter()
+            .map(|d| table::forces_row(&m, torque, mu, d, decimals))
+    };
+    write_rows(format, &head, rows, out)
 }
 
 /// The table's name as typed (`acceleration-factor`).
