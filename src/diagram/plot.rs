@@ -5,8 +5,8 @@
 use super::{Axis, Curve, Method, Scale, TraceOptions, trace};
 use crate::error::{Error, Result};
 use crate::figure::{
-    Align, Dash, Font, Item, PageFromWorld, PageRect, Panel, Path, RichText, Role, Shape, Symbol,
-    TextSize,
+    Align, Dash, Font, Item, PageFromWorld, PageRect, Panel, PathBuilder, RichText, Role, Shape,
+    Symbol, TextSize,
 };
 use crate::geom::{Frame, Point, Vector};
 use serde_json::{Value, json};
@@ -782,13 +782,51 @@ impl Plot {
                 Point::new(left, top),
             ),
         ];
+        let mut marks = Marks::default();
+        self.x_ticks(x, &mut items, &mut marks);
+        self.y_ticks(y, &mut items, &mut marks);
+        if marks.has_ticks
+            && let Some(path) = marks.ticks.build()
+        {
+            items.push(Item::new(
+                format!("{n}-ticks"),
+                Role::Frame,
+                Shape::Path(path),
+            ));
+        }
+        if marks.has_grid
+            && let Some(path) = marks.grid.build()
+        {
+            items.push(
+                Item::new(format!("{n}-grid"), Role::Dimension, Shape::Path(path))
+                    .dashed(Dash::Dotted),
+            );
+        }
+        self.zero_lines(x, y, &mut items);
+        items.push(self.text(
+            format!("{n}-title-x"),
+            Point::new(0.5 * (left + right), bottom + TICK + 27.0),
+            x.title().clone(),
+            Align::Middle,
+            TextSize::Small,
+        ));
+        items.push(self.text(
+            format!("{n}-title-y"),
+            Point::new(self.rect.x + 2.0, top - 19.0),
+            y.title().clone(),
+            Align::Start,
+            TextSize::Small,
+        ));
+        items
+    }
+
+    /// The abscissa's ticks and grid lines into `marks`, its tick labels
+    /// into `items`.
+    fn x_ticks(&self, x: &Axis, items: &mut Vec<Item>, marks: &mut Marks) {
+        let n = &self.name;
+        let a = self.area;
+        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
         let px = |v: f64| x.world(v).map(|w| self.map.apply(Point::new(w, 0.0)).x);
-        let py = |v: f64| y.world(v).map(|w| self.map.apply(Point::new(0.0, w)).y);
-        let inside = |p: f64, lo: f64, hi: f64| p >= lo - 0.01 && p <= hi + 0.01;
-        let mut ticks = Path::new();
-        let mut grid = Path::new();
-        let mut has_ticks = false;
-        let mut has_grid = false;
         let x_ticks = self.thinned(x, &px, left, right, Direction::Across);
         for (k, t) in x_ticks.iter().enumerate() {
             let Some(p) = px(t.value).filter(|p| inside(*p, left, right)) else {
@@ -799,10 +837,10 @@ impl Plot {
             } else {
                 0.6 * TICK
             };
-            ticks = ticks
+            marks.ticks = std::mem::take(&mut marks.ticks)
                 .move_to(self.unmap(Point::new(p, bottom)))
                 .line_to(self.unmap(Point::new(p, bottom + len)));
-            has_ticks = true;
+            marks.has_ticks = true;
             if let Some(label) = &t.label {
                 items.push(self.text(
                     format!("{n}-tick-x-{}", k + 1),
@@ -812,13 +850,22 @@ impl Plot {
                     TextSize::Tick,
                 ));
                 if self.grid && (p - left).abs() > 0.5 && (p - right).abs() > 0.5 {
-                    grid = grid
+                    marks.grid = std::mem::take(&mut marks.grid)
                         .move_to(self.unmap(Point::new(p, bottom)))
                         .line_to(self.unmap(Point::new(p, top)));
-                    has_grid = true;
+                    marks.has_grid = true;
                 }
             }
         }
+    }
+
+    /// The ordinate's ticks and grid lines into `marks`, its tick labels
+    /// into `items`.
+    fn y_ticks(&self, y: &Axis, items: &mut Vec<Item>, marks: &mut Marks) {
+        let n = &self.name;
+        let a = self.area;
+        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
+        let py = |v: f64| y.world(v).map(|w| self.map.apply(Point::new(0.0, w)).y);
         let y_ticks = self.thinned(y, &py, top, bottom, Direction::Up);
         for (k, t) in y_ticks.iter().enumerate() {
             let Some(p) = py(t.value).filter(|p| inside(*p, top, bottom)) else {
@@ -829,10 +876,10 @@ impl Plot {
             } else {
                 0.6 * TICK
             };
-            ticks = ticks
+            marks.ticks = std::mem::take(&mut marks.ticks)
                 .move_to(self.unmap(Point::new(left, p)))
                 .line_to(self.unmap(Point::new(left - len, p)));
-            has_ticks = true;
+            marks.has_ticks = true;
             if let Some(label) = &t.label {
                 items.push(self.text(
                     format!("{n}-tick-y-{}", k + 1),
@@ -842,27 +889,22 @@ impl Plot {
                     TextSize::Tick,
                 ));
                 if self.grid && (p - bottom).abs() > 0.5 && (p - top).abs() > 0.5 {
-                    grid = grid
+                    marks.grid = std::mem::take(&mut marks.grid)
                         .move_to(self.unmap(Point::new(left, p)))
                         .line_to(self.unmap(Point::new(right, p)));
-                    has_grid = true;
+                    marks.has_grid = true;
                 }
             }
         }
-        if has_ticks && let Some(path) = ticks.build() {
-            items.push(Item::new(
-                format!("{n}-ticks"),
-                Role::Frame,
-                Shape::Path(path),
-            ));
-        }
-        if has_grid && let Some(path) = grid.build() {
-            items.push(
-                Item::new(format!("{n}-grid"), Role::Dimension, Shape::Path(path))
-                    .dashed(Dash::Dotted),
-            );
-        }
-        // Zero lines where zero is strictly inside a linear range.
+    }
+
+    /// Zero lines where zero is strictly inside a linear range.
+    fn zero_lines(&self, x: &Axis, y: &Axis, items: &mut Vec<Item>) {
+        let n = &self.name;
+        let a = self.area;
+        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
+        let px = |v: f64| x.world(v).map(|w| self.map.apply(Point::new(w, 0.0)).x);
+        let py = |v: f64| y.world(v).map(|w| self.map.apply(Point::new(0.0, w)).y);
         if let Some(p) = py(0.0).filter(|p| *p > top + 0.5 && *p < bottom - 0.5)
             && y.scale() == Scale::Linear
         {
@@ -883,21 +925,6 @@ impl Plot {
                 Point::new(p, top),
             ));
         }
-        items.push(self.text(
-            format!("{n}-title-x"),
-            Point::new(0.5 * (left + right), bottom + TICK + 27.0),
-            x.title().clone(),
-            Align::Middle,
-            TextSize::Small,
-        ));
-        items.push(self.text(
-            format!("{n}-title-y"),
-            Point::new(self.rect.x + 2.0, top - 19.0),
-            y.title().clone(),
-            Align::Start,
-            TextSize::Small,
-        ));
-        items
     }
 
     /// Sets a block of lines in the corner of the plot area where it
@@ -1084,6 +1111,21 @@ impl Plot {
         }
         Panel::new(self.panel_id(), self.rect, self.map, items)
     }
+}
+
+/// The axes' tick marks and grid lines, gathered into two paths as the
+/// ticks are drawn.
+#[derive(Default)]
+struct Marks {
+    ticks: PathBuilder,
+    grid: PathBuilder,
+    has_ticks: bool,
+    has_grid: bool,
+}
+
+/// Whether the page coordinate `p` lies within `lo..=hi` (to 0.01).
+fn inside(p: f64, lo: f64, hi: f64) -> bool {
+    p >= lo - 0.01 && p <= hi + 0.01
 }
 
 /// The width and height (page units) of a block of `lines`.
