@@ -31,53 +31,15 @@ fn heading(h: &Handout, what: &str) -> String {
 /// The exercise sheet: data, the mechanism to scale on a grid, what to
 /// construct, and a field for each answer. No answer is on it.
 pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
-    let fitted = figures::mechanism(
-        h,
-        FigureName::Fig63Velocity,
-        Some(&[Layer::Mechanism, Layer::Velocity]),
-    )?;
-    let figure = figures::only_the_mechanism(&fitted);
-    // cannot fail: `fitted` is a scene's figure, whose first panel is its
-    // main view (`draw::build`), and `only_the_mechanism` keeps that one.
-    #[allow(clippy::indexing_slicing)]
-    let panel = &figure.panels()[0];
-    let step = figures::grid_step(panel, GRID_SQUARE);
-    let grid = figures::grid(panel, step);
-    let svg = to_svg_with(
-        &figure,
-        &figures::inline_options("sheet").with_underlay(grid),
-    );
-    let u = h.units().length().as_str().to_string();
-    let scale = round_scale(figure.width(), panel.transform().scale(), &u, h.paper());
-    let (svg, stated) = match &scale {
-        Some(s) => (
-            svg.replacen(
-                "<svg",
-                &format!(
-                    "<svg style=\"width: {}mm; height: {}mm; max-width: none; max-height: none\"",
-                    crate::render::fmt(s.width_mm),
-                    crate::render::fmt(s.width_mm * figure.height() / figure.width())
-                ),
-                1,
-            ),
-            format!(
-                " Drawn at {} (print at 100 %, not fitted to the page).",
-                s.ratio
-            ),
-        ),
-        None => (svg, String::new()),
-    };
+    let SheetDrawing {
+        svg,
+        stated,
+        step,
+        unit: u,
+    } = sheet_drawing(h)?;
     let asked: Vec<_> = rows(h, r).into_iter().filter(|row| row.asked).collect();
     let title = heading(h, "exercise");
-    let mut tasks = vec![
-        "Produce *CB* to meet the perpendicular to the stroke through *A* in *D*, and *AB* to meet the perpendicular to the stroke through *C* in *E* (§36, Fig. 63). Measure *CE* and *BD*.".to_string(),
-        "Write down the velocity scale and find the piston velocity from *CE*, signed as d*x*/d*t* (negative towards the crank).".into(),
-        "Find *F* and *G* by Kisch's construction (§36, Fig. 66): the semicircle on *AB*, the circle about *B* through *E*, *HFG* perpendicular to *AB*. Measure *CG* and *FG*; enlarge the construction beside the drawing if it is too small to read.".into(),
-        "Write down the acceleration scale and find the piston acceleration from *CG*, and the rod's angular velocity (*V*_c/*BD*) and angular acceleration (ω² · *FG*/*l*) (§37).".into(),
-    ];
-    if h.torque().is_some() {
-        tasks.push("With the crank torque *T*, find the slider force *F*_p = *T*/*OM* (*OM* = *CE*), the side thrust, the force with friction, and the transmission angle (Ng, eq. 6–11).".into());
-    }
+    let tasks = tasks(h);
     let body = html! {
         header.title {
             h1 { (title) }
@@ -129,6 +91,83 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
         &style(h.paper()),
         body,
     ))
+}
+
+/// The sheet's drawing: the mechanism alone on a grid, and what its
+/// caption says of it.
+struct SheetDrawing {
+    /// The inline SVG, sized in millimetres where it is drawn to a scale.
+    svg: String,
+    /// The sentence that states the scale; empty where there is none
+    /// (the drawing then fits the page).
+    stated: String,
+    /// The side of a grid square, in the handout's length unit.
+    step: f64,
+    /// The handout's length unit.
+    unit: String,
+}
+
+/// Draws the mechanism alone to scale on a faint grid: at a round scale
+/// where one fits the paper (the SVG then sized in millimetres, to be
+/// printed at 100 %), else fitted to the page with no scale stated.
+fn sheet_drawing(h: &Handout) -> Result<SheetDrawing> {
+    let fitted = figures::mechanism(
+        h,
+        FigureName::Fig63Velocity,
+        Some(&[Layer::Mechanism, Layer::Velocity]),
+    )?;
+    let figure = figures::only_the_mechanism(&fitted);
+    // cannot fail: `fitted` is a scene's figure, whose first panel is its
+    // main view (`draw::build`), and `only_the_mechanism` keeps that one.
+    #[allow(clippy::indexing_slicing)]
+    let panel = &figure.panels()[0];
+    let step = figures::grid_step(panel, GRID_SQUARE);
+    let grid = figures::grid(panel, step);
+    let svg = to_svg_with(
+        &figure,
+        &figures::inline_options("sheet").with_underlay(grid),
+    );
+    let unit = h.units().length().as_str().to_string();
+    let scale = round_scale(figure.width(), panel.transform().scale(), &unit, h.paper());
+    let (svg, stated) = match &scale {
+        Some(s) => (
+            svg.replacen(
+                "<svg",
+                &format!(
+                    "<svg style=\"width: {}mm; height: {}mm; max-width: none; max-height: none\"",
+                    crate::render::fmt(s.width_mm),
+                    crate::render::fmt(s.width_mm * figure.height() / figure.width())
+                ),
+                1,
+            ),
+            format!(
+                " Drawn at {} (print at 100 %, not fitted to the page).",
+                s.ratio
+            ),
+        ),
+        None => (svg, String::new()),
+    };
+    Ok(SheetDrawing {
+        svg,
+        stated,
+        step,
+        unit,
+    })
+}
+
+/// What the sheet asks to construct, in order (the forces only with a
+/// torque).
+fn tasks(h: &Handout) -> Vec<String> {
+    let mut tasks = vec![
+        "Produce *CB* to meet the perpendicular to the stroke through *A* in *D*, and *AB* to meet the perpendicular to the stroke through *C* in *E* (§36, Fig. 63). Measure *CE* and *BD*.".to_string(),
+        "Write down the velocity scale and find the piston velocity from *CE*, signed as d*x*/d*t* (negative towards the crank).".into(),
+        "Find *F* and *G* by Kisch's construction (§36, Fig. 66): the semicircle on *AB*, the circle about *B* through *E*, *HFG* perpendicular to *AB*. Measure *CG* and *FG*; enlarge the construction beside the drawing if it is too small to read.".into(),
+        "Write down the acceleration scale and find the piston acceleration from *CG*, and the rod's angular velocity (*V*_c/*BD*) and angular acceleration (ω² · *FG*/*l*) (§37).".into(),
+    ];
+    if h.torque().is_some() {
+        tasks.push("With the crank torque *T*, find the slider force *F*_p = *T*/*OM* (*OM* = *CE*), the side thrust, the force with friction, and the transmission angle (Ng, eq. 6–11).".into());
+    }
+    tasks
 }
 
 /// The answer key: the data, the construction drawn (and Ng's figure with

@@ -21,6 +21,7 @@ use pdf_writer::types::{
 use pdf_writer::writers::WMode;
 use pdf_writer::{Content, Filter, Finish, Name, Pdf, Rect, Ref, Str, TextStr};
 use skrifa::instance::{LocationRef, Size};
+use skrifa::metrics::Metrics;
 use skrifa::string::StringId;
 use skrifa::{FontRef, GlyphId, MetadataProvider, Tag};
 use std::collections::BTreeMap;
@@ -362,11 +363,7 @@ fn write_face(
     data: &[u8],
     index: u32,
 ) -> Result<()> {
-    let bad = || Error::Parse("a bundled face cannot be read".into());
-    let font = FontRef::from_index(data, index).map_err(|_| bad())?;
-    let m = font.metrics(Size::unscaled(), LocationRef::default());
-    let glyphs = font.glyph_metrics(Size::unscaled(), LocationRef::default());
-    let per_mille = |v: f32| v / f32::from(m.units_per_em) * 1000.0;
+    let font = FontRef::from_index(data, index).map_err(|_| bad_face())?;
     let cff = font.table_data(CFF).is_some();
     let postscript = font
         .localized_strings(StringId::POSTSCRIPT_NAME)
@@ -384,7 +381,38 @@ fn write_face(
         .encoding_predefined(Name(IDENTITY_H.as_bytes()))
         .descendant_font(cid_ref)
         .to_unicode(cmap);
+    let m = font.metrics(Size::unscaled(), LocationRef::default());
+    write_cid_font(pdf, face, &font, [cid_ref, descriptor], &base, cff);
+    write_descriptor(pdf, &m, [descriptor, file], &base, cff);
+    write_to_unicode(pdf, face, cmap);
+    write_program(pdf, face, file, data, index, &postscript, cff)
+}
 
+/// The error for a bundled face that cannot be read.
+fn bad_face() -> Error {
+    Error::Parse("a bundled face cannot be read".into())
+}
+
+/// A length in font units as thousandths of the em, PDF's glyph space.
+fn per_mille(v: f32, units_per_em: u16) -> f32 {
+    v / f32::from(units_per_em) * 1000.0
+}
+
+/// Writes the CID font of a face (`refs`: the CID font and its
+/// descriptor): CFF or TrueType outlines, with the advance of each glyph
+/// of the subset (0 where the face has none).
+fn write_cid_font(
+    pdf: &mut Pdf,
+    face: &FaceUse,
+    font: &FontRef,
+    [cid_ref, descriptor]: [Ref; 2],
+    base: &str,
+    cff: bool,
+) {
+    let units_per_em = font
+        .metrics(Size::unscaled(), LocationRef::default())
+        .units_per_em;
+    let glyphs = font.glyph_metrics(Size::unscaled(), LocationRef::default());
     let mut cid = pdf.cid_font(cid_ref);
     cid.subtype(if cff {
         CidFontType::Type0
@@ -405,31 +433,39 @@ fn write_face(
                 .advance_width(GlyphId::new(u32::from(old)))
                 .unwrap_or(0.0);
             let new = new as u16;
-            widths.same(new, new, per_mille(advance));
+            widths.same(new, new, per_mille(advance, units_per_em));
         }
     }
     cid.finish();
+}
 
+/// Writes the font descriptor of a face (`refs`: the descriptor and the
+/// embedded program) from its metrics: flags, box (empty where the face
+/// gives none), angle, ascent, descent and cap height (the ascent where
+/// the face gives none).
+fn write_descriptor(
+    pdf: &mut Pdf,
+    m: &Metrics,
+    [descriptor, file]: [Ref; 2],
+    base: &str,
+    cff: bool,
+) {
+    let pm = |v: f32| per_mille(v, m.units_per_em);
     let mut flags = FontFlags::SYMBOLIC;
     flags.set(FontFlags::SERIF, true);
     flags.set(FontFlags::FIXED_PITCH, m.is_monospace);
     flags.set(FontFlags::ITALIC, m.italic_angle != 0.0);
     let bbox = m.bounds.map_or(Rect::new(0.0, 0.0, 0.0, 0.0), |b| {
-        Rect::new(
-            per_mille(b.x_min),
-            per_mille(b.y_min),
-            per_mille(b.x_max),
-            per_mille(b.y_max),
-        )
+        Rect::new(pm(b.x_min), pm(b.y_min), pm(b.x_max), pm(b.y_max))
     });
     let mut d = pdf.font_descriptor(descriptor);
     d.name(Name(base.as_bytes()))
         .flags(flags)
         .bbox(bbox)
         .italic_angle(m.italic_angle)
-        .ascent(per_mille(m.ascent))
-        .descent(per_mille(m.descent))
-        .cap_height(per_mille(m.cap_height.unwrap_or(m.ascent)))
+        .ascent(pm(m.ascent))
+        .descent(pm(m.descent))
+        .cap_height(pm(m.cap_height.unwrap_or(m.ascent)))
         .stem_v(80.0);
     if cff {
         d.font_file3(file);
@@ -437,7 +473,11 @@ fn write_face(
         d.font_file2(file);
     }
     d.finish();
+}
 
+/// Writes the ToUnicode map of a face: each glyph of the subset to the
+/// text it was shaped from (glyphs shaped from no text are left out).
+fn write_to_unicode(pdf: &mut Pdf, face: &FaceUse, cmap: Ref) {
     let mut map = UnicodeCmap::new(Name(b"Custom"), SYSTEM_INFO);
     for (old, text) in &face.text {
         if let Some(new) = face.remapper.get(*old)
@@ -448,13 +488,28 @@ fn write_face(
     }
     pdf.cmap(cmap, &map.finish())
         .writing_mode(WMode::Horizontal);
+}
 
+/// Writes the subset of a face as a compressed stream: a CFF face as its
+/// bare CFF program, any other as the whole subset font. An error where
+/// the face cannot be subset.
+fn write_program(
+    pdf: &mut Pdf,
+    face: &FaceUse,
+    file: Ref,
+    data: &[u8],
+    index: u32,
+    postscript: &str,
+    cff: bool,
+) -> Result<()> {
     let subset = subsetter::subset(data, index, &face.remapper)
         .map_err(|e| Error::Parse(format!("cannot subset {postscript}: {e}")))?;
-    // A CFF face is embedded as its bare CFF program.
     let program = if cff {
-        let sub = skrifa::raw::FontRef::new(&subset).map_err(|_| bad())?;
-        sub.table_data(CFF).ok_or_else(bad)?.as_bytes().to_vec()
+        let sub = skrifa::raw::FontRef::new(&subset).map_err(|_| bad_face())?;
+        sub.table_data(CFF)
+            .ok_or_else(bad_face)?
+            .as_bytes()
+            .to_vec()
     } else {
         subset
     };

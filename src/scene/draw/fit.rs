@@ -36,6 +36,11 @@ pub(crate) fn d_is_near(ctx: &LayerCtx) -> Option<Point> {
     }
 }
 
+/// The world rectangle the scene's figure shows: the crank circle, the
+/// guides and block, and the points of each layer drawn (E, D while near,
+/// Klein's and Kisch's points, the arrows once the page scale is known,
+/// the polar curve and the coupler curve). Points that are not finite are
+/// left out: at worst the frame is the crank circle's with the guides.
 pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
@@ -47,8 +52,30 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     };
     b.add(Point::new(g0.min(-r), e - s.block_half_height));
     b.add(Point::new(g1, e + s.block_half_height));
+    add_e_and_d(&mut b, ctx);
     let scene = ctx.scene;
-    let pose = ctx.main.pose();
+    if scene.has(Layer::Klein) {
+        let k = super::acceleration::klein_points(ctx);
+        b.add(k.f());
+        b.add(k.g());
+    }
+    if scene.has(Layer::Kisch) {
+        add_kisch(&mut b, ctx);
+    }
+    add_arrows(&mut b, ctx);
+    if scene.has(Layer::Polar) {
+        add_polar(&mut b, ctx);
+    }
+    if scene.has(Layer::Coupler) {
+        add_coupler(&mut b, ctx);
+    }
+    Frame::new(b.min, b.max)
+}
+
+/// Adds E where a layer draws it, and D where a layer draws it and it is
+/// near (see [`d_is_near`]).
+fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx) {
+    let scene = ctx.scene;
     let wants_e = [
         Layer::Velocity,
         Layer::Klein,
@@ -73,76 +100,87 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     {
         b.add(d);
     }
-    if scene.has(Layer::Klein) {
-        let k = super::acceleration::klein_points(ctx);
-        b.add(k.f());
-        b.add(k.g());
+}
+
+/// Adds Kisch's construction: F, G, the half of the circle on AB away
+/// from C, and the arc BE about B from E to H (none where there is no H).
+fn add_kisch(b: &mut Bounds, ctx: &LayerCtx) {
+    let pose = ctx.main.pose();
+    let k = ctx.main.kisch();
+    b.add(k.points().f());
+    b.add(k.points().g());
+    // The half of the circle on AB away from C (where H is).
+    let c = Kisch::semicircle(pose);
+    let ab = pose.b() - pose.a();
+    let n = super::acceleration::kisch_side(pose);
+    let u = ab / ab.norm();
+    for k in 0..=24 {
+        let t = std::f64::consts::PI * k as f64 / 24.0;
+        b.add(c.centre + (u * t.cos() + n * t.sin()) * c.radius);
     }
-    if scene.has(Layer::Kisch) {
-        let k = ctx.main.kisch();
-        b.add(k.points().f());
-        b.add(k.points().g());
-        // The half of the circle on AB away from C (where H is).
-        let c = Kisch::semicircle(pose);
-        let ab = pose.b() - pose.a();
-        let n = super::acceleration::kisch_side(pose);
-        let u = ab / ab.norm();
-        for k in 0..=24 {
-            let t = std::f64::consts::PI * k as f64 / 24.0;
-            b.add(c.centre + (u * t.cos() + n * t.sin()) * c.radius);
-        }
-        // The arc BE about B, from E to H.
-        if let Some(h) = k.h() {
-            let (pin, e) = (pose.b(), ctx.main.e().e());
-            let over = super::acceleration::BE_OVERSHOOT;
-            let arc = super::acceleration::arc_between(pin, k.be(), e - pin, h - pin, over);
-            if let Shape::Arc {
-                centre,
-                radius,
-                start,
-                sweep,
-                ..
-            } = arc
-            {
-                for k in 0..=24 {
-                    let t = start + sweep * k as f64 / 24.0;
-                    b.add(centre + Vector::new(t.cos(), t.sin()) * radius);
-                }
+    // The arc BE about B, from E to H.
+    if let Some(h) = k.h() {
+        let (pin, e) = (pose.b(), ctx.main.e().e());
+        let over = super::acceleration::BE_OVERSHOOT;
+        let arc = super::acceleration::arc_between(pin, k.be(), e - pin, h - pin, over);
+        if let Shape::Arc {
+            centre,
+            radius,
+            start,
+            sweep,
+            ..
+        } = arc
+        {
+            for k in 0..=24 {
+                let t = start + sweep * k as f64 / 24.0;
+                b.add(centre + Vector::new(t.cos(), t.sin()) * radius);
             }
         }
     }
-    // Arrows drawn to page lengths, once the scale is known.
-    if let Some(scale) = s.page_scale {
-        let world = |page: f64| page / scale;
-        let mut arrows = Vec::new();
-        if scene.has(Layer::Torque) {
-            arrows.extend(super::torque::forces(ctx, &world));
-        }
-        if scene.has(Layer::Motion) {
-            arrows.extend(super::motion::velocities(ctx, &world));
-        }
-        for p in arrows.iter().flat_map(|a| a.reach(&world)) {
+}
+
+/// Adds the reach of the force and velocity arrows, drawn to page
+/// lengths: nothing until the page scale is known.
+fn add_arrows(b: &mut Bounds, ctx: &LayerCtx) {
+    let Some(scale) = ctx.sizes.page_scale else {
+        return;
+    };
+    let scene = ctx.scene;
+    let world = |page: f64| page / scale;
+    let mut arrows = Vec::new();
+    if scene.has(Layer::Torque) {
+        arrows.extend(super::torque::forces(ctx, &world));
+    }
+    if scene.has(Layer::Motion) {
+        arrows.extend(super::motion::velocities(ctx, &world));
+    }
+    for p in arrows.iter().flat_map(|a| a.reach(&world)) {
+        b.add(p);
+    }
+}
+
+/// Adds the polar velocity curve every 5° of crank angle, and its mirror
+/// through the centre (the return stroke's loop), where it is defined.
+fn add_polar(b: &mut Bounds, ctx: &LayerCtx) {
+    let m = ctx.scene.mechanism();
+    let polar = crate::diagram::Locus::new(*m, crate::diagram::LocusKind::PolarVelocity);
+    for k in 0..72 {
+        if let Some((p, _)) = crate::diagram::Curve::eval(&polar, 5.0 * k as f64) {
+            // The return stroke's loop is set off on the crank itself.
             b.add(p);
+            b.add(Point::origin() - p.coords);
         }
     }
-    if scene.has(Layer::Polar) {
-        let polar = crate::diagram::Locus::new(*m, crate::diagram::LocusKind::PolarVelocity);
-        for k in 0..72 {
-            if let Some((p, _)) = crate::diagram::Curve::eval(&polar, 5.0 * k as f64) {
-                // The return stroke's loop is set off on the crank itself.
-                b.add(p);
-                b.add(Point::origin() - p.coords);
-            }
-        }
+}
+
+/// Adds the coupler curve every 5° of crank angle.
+fn add_coupler(b: &mut Bounds, ctx: &LayerCtx) {
+    let m = ctx.scene.mechanism();
+    let q = ctx.scene.coupler();
+    for k in 0..72 {
+        // cannot fail: multiples of 5° below 360° are finite.
+        #[allow(clippy::expect_used)]
+        let a = crate::angle::Angle::from_degrees(5.0 * k as f64).expect("finite");
+        b.add(q.point(&m.pose(a)));
     }
-    if scene.has(Layer::Coupler) {
-        let q = ctx.scene.coupler();
-        for k in 0..72 {
-            // cannot fail: multiples of 5° below 360° are finite.
-            #[allow(clippy::expect_used)]
-            let a = crate::angle::Angle::from_degrees(5.0 * k as f64).expect("finite");
-            b.add(q.point(&m.pose(a)));
-        }
-    }
-    Frame::new(b.min, b.max)
 }
