@@ -143,7 +143,7 @@ impl Series {
                     survey = Some(Survey {
                         sheet: Sheet::of(&figure),
                         height: figure.height(),
-                        first: Frame::of(angle, &figure),
+                        first: Frame::of(angle, figure),
                     })
                 }
             }
@@ -155,16 +155,13 @@ impl Series {
     pub fn frames(&self) -> Result<impl Iterator<Item = Frame> + '_> {
         Ok(self
             .figures()?
-            .map(|(angle, figure)| Frame::of(angle, &figure)))
+            .map(|(angle, figure)| Frame::of(angle, figure)))
     }
 }
 
 impl Frame {
-    fn of(angle: Angle, figure: &Figure) -> Self {
-        Frame {
-            angle,
-            figure: figure.clone(),
-        }
+    fn of(angle: Angle, figure: Figure) -> Self {
+        Frame { angle, figure }
     }
 }
 
@@ -212,7 +209,7 @@ pub(super) fn draw(
         let spent = crate::diagram::evaluations_on_this_thread() - start;
         check_evaluations(scene, spent, frames.len() as u64 + 1, angles.len() as u64)?;
         sheet.get_or_insert_with(|| Sheet::of(&figure));
-        frames.push(Frame::of(angle, &figure));
+        frames.push(Frame::of(angle, figure));
         progress(frames.len(), angles.len());
     }
     let sheet = sheet.ok_or_else(|| Error::Parse("an animation has at least one frame".into()))?;

@@ -225,15 +225,8 @@ fn kinematics(
     out: &mut Stdout,
 ) -> Result<()> {
     let m = mechanism(args, 0.5, 3.0)?;
-    let omega = SpeedArgs {
-        rpm: args.rpm,
-        omega: args.omega,
-    }
-    .omega()?;
-    let spec = match &spec {
-        Some(s) => s.clone(),
-        None => AngleSpec::parse("0:360:30")?,
-    };
+    let omega = omega(args)?;
+    let spec = spec.map_or_else(|| AngleSpec::parse("0:360:30"), Ok)?;
     let units = args.units.units(Units::FOOT_POUND);
     let head = table::kinematics_head(&m, omega, &units);
     guard_angles(args, "table kinematics", &spec, &head)?;
@@ -261,10 +254,7 @@ fn forces(
         });
     }
     let mu = args.friction.unwrap_or(1.0);
-    let spec = match &spec {
-        Some(s) => s.clone(),
-        None => AngleSpec::parse("10:160:10")?,
-    };
+    let spec = spec.map_or_else(|| AngleSpec::parse("10:160:10"), Ok)?;
     let units = args.units.units(Units::MILLIMETRE_NEWTON);
     let head = table::forces_head(&m, torque, mu, &units);
     guard_angles(args, "table forces", &spec, &head)?;
@@ -273,6 +263,16 @@ fn forces(
             .map(|d| table::forces_row(&m, torque, mu, d, decimals))
     };
     write_rows(format, &head, rows, out)
+}
+
+/// The crank speed `--rpm` or `--omega` give (the default speed when
+/// neither does).
+fn omega(args: &TableArgs) -> Result<f64> {
+    SpeedArgs {
+        rpm: args.rpm,
+        omega: args.omega,
+    }
+    .omega()
 }
 
 /// The table's name as typed (`acceleration-factor`).
@@ -383,11 +383,7 @@ fn dynamics(
     out: &mut Stdout,
 ) -> Result<()> {
     let m = mechanism(args, 0.5, 3.0)?;
-    let omega = SpeedArgs {
-        rpm: args.rpm,
-        omega: args.omega,
-    }
-    .omega()?;
+    let omega = omega(args)?;
     let engine = match args.engine.engine(m, omega)? {
         Some(e) => e,
         None => {

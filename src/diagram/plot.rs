@@ -108,8 +108,9 @@ pub struct Plot {
     /// Blocks try the bottom corners first (the band [`Plot::band`] keeps
     /// free for them).
     below: bool,
-    /// Where the legend's top left corner goes when it is set beside the
-    /// plot area rather than in a corner of it ([`Plot::with_legend_at`]).
+    /// Where the legend's top left corner goes when it is set below or
+    /// beside the plot area rather than in a corner of it
+    /// ([`Plot::legend_clear_of_the_curves`]).
     legend_at: Option<Point>,
 }
 
@@ -267,13 +268,12 @@ impl Plot {
         self
     }
 
-    /// Sets the legend beside the plot area, on its right at its top,
-    /// instead of in a corner of it: the area narrows by the legend's
-    /// `width` ([`Plot::legend_size`]) and a gap, and the map follows. For
-    /// a panel too short to hold the legend in a corner clear of the
-    /// curves. Where that would leave the area under 40 units wide, the
-    /// legend stays in a corner. Call it before drawing.
-    pub fn with_legend_beside(mut self, width: f64) -> Self {
+    /// The legend beside the plot area, on its right at its top, instead
+    /// of in a corner of it: the area narrows by the legend's `width` and
+    /// a gap, and the map follows (the items, kept in world coordinates,
+    /// with it). Where that would leave the area under 40 units wide, the
+    /// legend stays in a corner.
+    fn with_legend_beside(mut self, width: f64) -> Self {
         let narrower = self.area.width - width - LEGEND_GAP;
         if narrower >= 40.0 {
             self.area = PageRect::new(self.area.x, self.area.y, narrower, self.area.height);
@@ -283,14 +283,12 @@ impl Plot {
         self
     }
 
-    /// Sets the legend below the plot area, centred under it between the
+    /// The legend below the plot area, centred under it between the
     /// abscissa's title and the caption, instead of in a corner of it: the
-    /// area loses the legend's `height` ([`Plot::legend_size`]) and a gap,
-    /// and the map follows. For a panel too narrow to hold the legend in
-    /// a corner clear of the curves. Where that would leave the area
-    /// under 40 units tall, the legend stays in a corner. Call it before
-    /// drawing.
-    pub fn with_legend_below(mut self, (width, height): (f64, f64)) -> Self {
+    /// area loses the legend's `height` and a gap, and the map follows.
+    /// Where that would leave the area under 40 units tall, the legend
+    /// stays in a corner.
+    fn with_legend_below(mut self, (width, height): (f64, f64)) -> Self {
         let lower = self.area.height - height - LEGEND_GAP;
         if lower >= 40.0 {
             self.area = PageRect::new(self.area.x, self.area.y, self.area.width, lower);
@@ -301,16 +299,6 @@ impl Plot {
             ));
         }
         self
-    }
-
-    /// The width and height (page units) a legend of `entries` (markup)
-    /// takes, each with its key, in `font`.
-    pub fn legend_size(entries: &[&str], font: Font) -> (f64, f64) {
-        let lines: Vec<(RichText, Option<Key>)> = entries
-            .iter()
-            .map(|e| (RichText::parse(e), Some(Key::Line(Dash::Solid))))
-            .collect();
-        block_size(&lines, font)
     }
 
     /// Draws dotted grid lines at the labelled ticks.
