@@ -23,9 +23,16 @@ impl Angle {
     ///
     /// Errors with [`crate::error::Error::NotFinite`] for NaN or infinity. Any finite
     /// value is accepted: the crank of a valid mechanism turns fully.
+    #[inline]
     pub fn from_degrees(degrees: f64) -> Result<Self> {
         let degrees = finite("angle", degrees)?;
-        let mut reduced = degrees % 360.0; // fmod is exact
+        // fmod is exact, and the identity on [0°, 360°): a sweep's angles
+        // skip its call.
+        let mut reduced = if (0.0..360.0).contains(&degrees) {
+            degrees
+        } else {
+            degrees % 360.0
+        };
         if reduced < 0.0 {
             reduced += 360.0;
         }
@@ -34,14 +41,14 @@ impl Angle {
         }
         // Quadrant and remainder in [-45°, 45°]; the subtraction is exact by
         // Sterbenz's lemma.
-        let quadrant = (reduced / 90.0).round();
-        let rest = reduced - 90.0 * quadrant;
+        let quadrant = round_half_up(reduced / 90.0);
+        let rest = reduced - 90.0 * quadrant as f64;
         let (s, c) = if rest == 0.0 {
             (0.0, 1.0)
         } else {
             (rest * (PI / 180.0)).sin_cos()
         };
-        let (sin, cos) = match quadrant as i64 {
+        let (sin, cos) = match quadrant {
             0 | 4 => (s, c),
             1 => (c, -s),
             2 => (-s, -c),
@@ -99,29 +106,98 @@ impl Angle {
     }
 
     /// The angle in degrees, reduced to `[0, 360)`.
+    #[inline]
     pub fn degrees(&self) -> f64 {
         self.degrees
     }
 
     /// The angle in radians, reduced to `[0, 2π)`.
+    #[inline]
     pub fn radians(&self) -> f64 {
         self.radians
     }
 
     /// The sine (exact at multiples of 90° when built from degrees).
+    #[inline]
     pub fn sin(&self) -> f64 {
         self.sin
     }
 
     /// The cosine (exact at multiples of 90° when built from degrees).
+    #[inline]
     pub fn cos(&self) -> f64 {
         self.cos
     }
 }
 
+/// `q.round()` for `q` in [0, 4], without the library call that
+/// `round` is on a processor without SSE4.1: the integer part, and one more
+/// where the fraction (exact: `q` and its integer part are within a factor
+/// of two, or the part is 0) is at least a half.
+#[inline]
+fn round_half_up(q: f64) -> i64 {
+    let whole = q as i64;
+    whole + i64::from(q - whole as f64 >= 0.5)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_quadrant_is_rounded_as_round_rounds() {
+        let mut q = 0.0f64;
+        let mut cases = vec![
+            0.49999999999999994,
+            0.5,
+            1.5,
+            2.5,
+            3.5,
+            4.0,
+            3.9999999999999996,
+        ];
+        while q <= 4.0 {
+            cases.push(q);
+            q += 1.0 / 1024.0;
+        }
+        for q in cases {
+            for v in [
+                q,
+                f64::from_bits(q.to_bits() + 1),
+                f64::from_bits(q.to_bits().saturating_sub(1)),
+            ] {
+                if (0.0..=4.0).contains(&v) {
+                    assert_eq!(round_half_up(v), v.round() as i64, "{v}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn angles_within_a_turn_reduce_as_fmod_reduces() {
+        for d in [
+            0.0,
+            -0.0,
+            1e-300,
+            0.5,
+            89.99999999999999,
+            90.0,
+            359.99999999999994,
+            360.0,
+            720.5,
+            -0.5,
+        ] {
+            let a = Angle::from_degrees(d).unwrap();
+            let mut r = d % 360.0;
+            if r < 0.0 {
+                r += 360.0;
+            }
+            if r >= 360.0 {
+                r = 0.0;
+            }
+            assert_eq!(a.degrees().to_bits(), r.to_bits(), "{d}");
+        }
+    }
 
     #[test]
     fn multiples_of_ninety_are_exact() {

@@ -71,16 +71,19 @@ impl SliderCrank {
     }
 
     /// Crank radius r.
+    #[inline]
     pub fn crank(&self) -> f64 {
         self.crank
     }
 
     /// Connecting-rod length l.
+    #[inline]
     pub fn rod(&self) -> f64 {
         self.rod
     }
 
     /// Offset e of the line of stroke from the crank centre.
+    #[inline]
     pub fn offset(&self) -> f64 {
         self.offset
     }
@@ -91,6 +94,7 @@ impl SliderCrank {
     }
 
     /// The mechanism at crank angle `angle`.
+    #[inline]
     pub fn pose(&self, angle: Angle) -> Pose {
         Pose::new(*self, angle)
     }
@@ -165,6 +169,7 @@ pub struct Pose {
 }
 
 impl Pose {
+    #[inline]
     fn new(mechanism: SliderCrank, angle: Angle) -> Self {
         let (r, l, e) = (mechanism.crank, mechanism.rod, mechanism.offset);
         let h = r * angle.sin() - e;
@@ -179,37 +184,44 @@ impl Pose {
     }
 
     /// The mechanism this pose belongs to.
+    #[inline]
     pub fn mechanism(&self) -> &SliderCrank {
         &self.mechanism
     }
 
     /// The crank angle.
+    #[inline]
     pub fn angle(&self) -> Angle {
         self.angle
     }
 
     /// Crank centre C (the origin; Ng's O).
+    #[inline]
     pub fn c(&self) -> Point {
         Point::origin()
     }
 
     /// Crank pin B = r(cos θ, sin θ) (Ng's C).
+    #[inline]
     pub fn b(&self) -> Point {
         let r = self.mechanism.crank;
         Point::new(r * self.angle.cos(), r * self.angle.sin())
     }
 
     /// Cross-head A on the line of stroke (Ng's P).
+    #[inline]
     pub fn a(&self) -> Point {
         Point::new(self.position(), self.mechanism.offset)
     }
 
     /// Height of the crank pin above the line of stroke, r sin θ − e = l sin φ.
+    #[inline]
     pub fn rise(&self) -> f64 {
         self.h
     }
 
     /// Horizontal extent of the rod, l cos φ (always > 0).
+    #[inline]
     pub fn run(&self) -> f64 {
         self.w
     }
@@ -218,6 +230,7 @@ impl Pose {
     /// (sin θ − e/r) / (w/r), where r sin θ − e is below the normal range
     /// of f64 (a tiny crank a hair from the line of stroke): the quotient
     /// of two underflowed lengths would be 0 where tan φ is not.
+    #[inline]
     pub fn tan_obliquity(&self) -> f64 {
         if self.h.abs() >= f64::MIN_POSITIVE {
             self.h / self.w
@@ -228,11 +241,13 @@ impl Pose {
     }
 
     /// Slider position s = x_A = r cos θ + √(l² − (r sin θ − e)²).
+    #[inline]
     pub fn position(&self) -> f64 {
         self.mechanism.crank * self.angle.cos() + self.w
     }
 
     /// ds/dθ = −r sin θ − r cos θ (r sin θ − e)/√(l² − (r sin θ − e)²).
+    #[inline]
     pub fn position_rate(&self) -> f64 {
         let r = self.mechanism.crank;
         let (s, c) = (self.angle.sin(), self.angle.cos());
@@ -240,6 +255,7 @@ impl Pose {
     }
 
     /// d²s/dθ² = −r cos θ − r² cos²θ l² / w³ + r sin θ h / w.
+    #[inline]
     pub fn position_acceleration(&self) -> f64 {
         let (r, l) = (self.mechanism.crank, self.mechanism.rod);
         let (s, c) = (self.angle.sin(), self.angle.cos());
@@ -249,16 +265,19 @@ impl Pose {
     }
 
     /// Obliquity φ of the rod: sin φ = (r sin θ − e)/l, in (−π/2, π/2).
+    #[inline]
     pub fn obliquity(&self) -> f64 {
         self.h.atan2(self.w)
     }
 
     /// dφ/dθ = r cos θ / (l cos φ).
+    #[inline]
     pub fn obliquity_rate(&self) -> f64 {
         self.mechanism.crank * self.angle.cos() / self.w
     }
 
     /// d²φ/dθ² = −r sin θ / w + r² cos²θ h / w³.
+    #[inline]
     pub fn obliquity_acceleration(&self) -> f64 {
         let r = self.mechanism.crank;
         let (s, c) = (self.angle.sin(), self.angle.cos());

@@ -15,6 +15,7 @@ pub const MIN_OMEGA: f64 = 1e-100;
 
 /// Checks a crank speed: finite, and 0 or [`MIN_OMEGA`] ≤ |ω| ≤
 /// [`MAX_OMEGA`].
+#[inline]
 pub fn check_omega(omega: f64) -> Result<f64> {
     let omega = finite("omega", omega)?;
     if omega.abs() > MAX_OMEGA {
@@ -98,6 +99,7 @@ impl Kinematics {
     /// Errors: ω not finite or beyond [`MAX_OMEGA`], or a velocity or
     /// acceleration beyond the largest f64 (a huge crank near the limit of
     /// assembly, l → r + |e|, spun fast): every field returned is finite.
+    #[inline]
     pub fn new(pose: &Pose, omega: f64) -> Result<Self> {
         let omega = check_omega(omega)?;
         let k = Self {

@@ -26,6 +26,7 @@ pub struct AccelerationPoints {
 impl AccelerationPoints {
     /// G from F: the perpendicular to AB at F meets the line through C
     /// parallel to the stroke.
+    #[inline]
     pub(crate) fn from_f(pose: &Pose, f: Point) -> Self {
         let (a, b) = (pose.a(), pose.b());
         let rod_dir = b - a;
@@ -42,11 +43,13 @@ impl AccelerationPoints {
     }
 
     /// F, on the rod AB.
+    #[inline]
     pub fn f(&self) -> Point {
         self.f
     }
 
     /// G, on the line through C parallel to the stroke.
+    #[inline]
     pub fn g(&self) -> Point {
         self.g
     }
@@ -66,6 +69,7 @@ impl AccelerationPoints {
     /// piston acceleration per ω² at constant ω (d²s/dt² = ω² d²s/dθ²), the
     /// construction's counterpart of
     /// [`Pose::position_acceleration`](crate::mechanism::Pose::position_acceleration).
+    #[inline]
     pub fn acceleration_ratio(&self) -> f64 {
         -self.g.x
     }
@@ -74,6 +78,7 @@ impl AccelerationPoints {
     /// G is to the right of the direction from A to B. It equals
     /// l · d²φ/dθ² (φ the rod's obliquity): the rod's angular acceleration
     /// at constant ω is d²φ/dt² = ω² · FG / l.
+    #[inline]
     pub fn fg(&self) -> f64 {
         cross(&(self.g - self.f), &self.rod_dir) / self.rod
     }
@@ -83,6 +88,7 @@ impl AccelerationPoints {
     /// FG / l. The rod's angular acceleration per ω² at constant ω, the
     /// counterpart of
     /// [`Pose::obliquity_acceleration`](crate::mechanism::Pose::obliquity_acceleration).
+    #[inline]
     pub fn rod_angular_acceleration_ratio(&self) -> f64 {
         self.fg() / self.rod
     }

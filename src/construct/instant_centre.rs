@@ -20,6 +20,7 @@ pub struct InstantCentre {
 impl InstantCentre {
     /// Constructs D for `pose` (lines meeting within the default
     /// [`crate::geom::PARALLEL_TOLERANCE`]).
+    #[inline]
     pub fn construct(pose: &Pose) -> Self {
         let (c, b, a) = (pose.c(), pose.b(), pose.a());
         let crank = Line::from_parts(c, b - c);
@@ -45,6 +46,7 @@ impl InstantCentre {
     /// of magnitude ω · CB / BD, textbook §37); 0 when D is at infinity.
     /// The counterpart of
     /// [`Pose::obliquity_rate`](crate::mechanism::Pose::obliquity_rate).
+    #[inline]
     pub fn rod_angular_velocity_ratio(&self) -> f64 {
         // The rod turns about D: ω (B − C) = Ω (B − D) with Ω the rod's
         // counter-clockwise rate, and dφ/dt = −Ω. B − D = (B − C) − (D − C).

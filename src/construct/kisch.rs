@@ -27,6 +27,7 @@ pub struct Kisch {
 
 impl Kisch {
     /// Constructs F and G from E (H and the circle are computed when asked).
+    #[inline]
     pub fn construct(pose: &Pose, e: &VelocityLine) -> Self {
         let (a, b, c) = (pose.a(), pose.b(), pose.c());
         let ba = a - b;
@@ -79,6 +80,7 @@ impl Kisch {
     }
 
     /// F and G and what they give.
+    #[inline]
     pub fn points(&self) -> &AccelerationPoints {
         &self.points
     }

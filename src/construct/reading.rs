@@ -32,6 +32,7 @@ impl Graphical {
     /// and Kisch's F and G, nothing else (a sweep's per-pose cost; the
     /// same values as [`Reading::new`]'s). Errors where a value exceeds
     /// the largest number (ω in too short a unit of time for the lengths).
+    #[inline]
     pub fn new(pose: &Pose, omega: f64) -> Result<Self> {
         let d = InstantCentre::construct(pose);
         let e = VelocityLine::construct(pose);
@@ -41,6 +42,7 @@ impl Graphical {
 
     /// The values the constructions `d`, `e` and `kisch` of `pose` give at
     /// crank speed `omega`.
+    #[inline]
     fn read(
         pose: &Pose,
         omega: f64,

@@ -16,6 +16,7 @@ pub struct VelocityLine {
 
 impl VelocityLine {
     /// Constructs E for `pose`.
+    #[inline]
     pub fn construct(pose: &Pose) -> Self {
         // Anchored at B, near E, so that no digits cancel when the offset is
         // much larger than the crank (E_y = r sin θ + r cos θ h / w).
@@ -32,6 +33,7 @@ impl VelocityLine {
     }
 
     /// The point E (Ng's M), on the y-axis.
+    #[inline]
     pub fn e(&self) -> Point {
         self.e
     }
@@ -48,6 +50,7 @@ impl VelocityLine {
     /// crank angle θ (length per rad), read off the construction: −CE. Not a
     /// ratio of two velocities: the slider velocity per ω (ds/dt = ω ds/dθ),
     /// the counterpart of [`Pose::position_rate`](crate::mechanism::Pose::position_rate).
+    #[inline]
     pub fn velocity_ratio(&self) -> f64 {
         -self.e.y
     }

@@ -33,6 +33,7 @@ pub enum Intersection {
 
 impl Intersection {
     /// The finite point, if there is one.
+    #[inline]
     pub fn point(&self) -> Option<Point> {
         match self {
             Intersection::Point(p) => Some(*p),
@@ -55,6 +56,7 @@ impl Line {
 
     /// A line from parts already known to be finite with a non-zero
     /// direction (the constructions' own lines).
+    #[inline]
     pub(crate) fn from_parts(point: Point, direction: Vector) -> Self {
         debug_assert!(Self::new(point, direction).is_some());
         Self { point, direction }
@@ -66,6 +68,7 @@ impl Line {
     }
 
     /// A point of the line (the one it was built with).
+    #[inline]
     pub fn point(&self) -> Point {
         self.point
     }
@@ -81,6 +84,7 @@ impl Line {
     }
 
     /// The point at parameter `t`: `point + t · direction`.
+    #[inline]
     pub fn at(&self, t: f64) -> Point {
         self.point + self.direction * t
     }
@@ -134,6 +138,7 @@ impl Line {
     }
 
     /// Intersection with [`PARALLEL_TOLERANCE`].
+    #[inline]
     pub fn intersect(&self, other: &Line) -> Intersection {
         self.intersect_eps(other, PARALLEL_TOLERANCE)
     }
@@ -142,6 +147,7 @@ impl Line {
     /// between them is at most `eps` (0 for exactly parallel only). Parallel
     /// lines closer than `eps` times the larger of their points' distances
     /// from the origin (or than `eps` itself) are coincident.
+    #[inline]
     pub fn intersect_eps(&self, other: &Line, eps: f64) -> Intersection {
         let d1 = self.direction;
         let d2 = other.direction;

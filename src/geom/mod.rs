@@ -18,11 +18,13 @@ pub type Vector = nalgebra::Vector2<f64>;
 pub type Direction = nalgebra::Unit<Vector>;
 
 /// The z-component of the cross product of two plane vectors.
+#[inline]
 pub fn cross(a: &Vector, b: &Vector) -> f64 {
     a.x * b.y - a.y * b.x
 }
 
 /// `v` turned a quarter turn counter-clockwise.
+#[inline]
 pub fn perp(v: &Vector) -> Vector {
     Vector::new(-v.y, v.x)
 }
