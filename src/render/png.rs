@@ -55,16 +55,12 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
             ),
         });
     }
-    let mut pixmap =
-        tiny_skia::Pixmap::new(size.width(), size.height()).ok_or_else(|| Error::OutOfRange {
-            name: "scale",
-            value: scale as f64,
-            reason: "the picture would be too large".into(),
-        })?;
     let paper = paper(&tree);
-    if let Some(paper) = paper {
-        pixmap.fill(paper);
-    }
+    let mut pixmap = canvas(size, paper).ok_or_else(|| Error::OutOfRange {
+        name: "scale",
+        value: scale as f64,
+        reason: "the picture would be too large".into(),
+    })?;
     resvg::render(
         &tree,
         tiny_skia::Transform::from_scale(scale, scale),
@@ -79,6 +75,24 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
         path: None,
         source: None,
     })
+}
+
+/// The canvas of `size` pixels, filled with `paper` (in one pass: a blank
+/// canvas then filled would be written twice) or transparent. `None` for a
+/// canvas too large to allocate.
+fn canvas(size: tiny_skia::IntSize, paper: Option<tiny_skia::Color>) -> Option<tiny_skia::Pixmap> {
+    match paper {
+        Some(colour) => {
+            let c = colour.premultiply().to_color_u8();
+            let pixels =
+                usize::try_from(u64::from(size.width()) * u64::from(size.height())).ok()?;
+            tiny_skia::Pixmap::from_vec(
+                [c.red(), c.green(), c.blue(), c.alpha()].repeat(pixels),
+                size,
+            )
+        }
+        None => tiny_skia::Pixmap::new(size.width(), size.height()),
+    }
 }
 
 /// The colour of a figure's paper (its `<rect id="paper">`, opaque), to
@@ -101,32 +115,48 @@ fn paper(tree: &usvg::Tree) -> Option<tiny_skia::Color> {
 
 /// A picture every pixel of which is opaque, as an 8-bit RGB PNG written
 /// straight from the canvas (opaque pixels are the same premultiplied or
-/// not, so there is no demultiplied copy), a row at a time. No filter and
-/// zlib level 6: of the settings measured on the gallery's PNGs
-/// (docs/benchmarks.md) the fastest that is also among the smallest; the
-/// adaptive filter, `png`'s default, made them larger and slower.
+/// not, so there is no demultiplied copy). No filter and zlib level 6: of
+/// the settings measured on the gallery's PNGs (docs/benchmarks.md) the
+/// fastest that is also among the smallest; the adaptive filter, `png`'s
+/// default, made them larger and slower. The pixels are deflated here,
+/// [`ROWS_BYTES`] at a time, into the one IDAT chunk `png` itself would
+/// write: `png` hands the compressor each row in two writes, and each
+/// write cost a clearing of the compressor's 32 KiB output buffer.
 fn encode_opaque(pixmap: &tiny_skia::Pixmap) -> std::result::Result<Vec<u8>, png::EncodingError> {
-    let (w, h) = (pixmap.width(), pixmap.height());
     let mut out = Vec::new();
-    let mut encoder = png::Encoder::new(&mut out, w, h);
+    let mut encoder = png::Encoder::new(&mut out, pixmap.width(), pixmap.height());
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
-    encoder.set_filter(png::Filter::NoFilter);
-    encoder.set_deflate_compression(png::DeflateCompression::Level(6));
     let mut writer = encoder.write_header()?;
-    let mut stream = writer.stream_writer()?;
-    let mut row = vec![0; 3 * w as usize];
-    for pixels in pixmap.data().chunks_exact(4 * w as usize) {
-        for (rgb, rgba) in row.chunks_exact_mut(3).zip(pixels.chunks_exact(4)) {
-            if let Some(colour) = rgba.get(..3) {
-                rgb.copy_from_slice(colour);
-            }
-        }
-        std::io::Write::write_all(&mut stream, &row)?;
-    }
-    stream.finish()?;
+    writer.write_chunk(png::chunk::IDAT, &deflate_rows(pixmap)?)?;
     writer.finish()?;
     Ok(out)
+}
+
+/// Bytes of scanlines handed to the compressor at a time.
+const ROWS_BYTES: usize = 256 * 1024;
+
+/// The zlib stream (level 6) of the canvas's scanlines as a PNG without
+/// filter holds them: each row its filter byte 0 and its pixels' red,
+/// green and blue.
+fn deflate_rows(pixmap: &tiny_skia::Pixmap) -> std::io::Result<Vec<u8>> {
+    use std::io::Write;
+    let width = pixmap.width() as usize;
+    let row_bytes = 1 + 3 * width;
+    let rows_at_a_time = (ROWS_BYTES / row_bytes).max(1);
+    let mut block = Vec::with_capacity(rows_at_a_time * row_bytes);
+    let mut zlib = flate2::write::ZlibEncoder::new(Vec::new(), flate2::Compression::new(6));
+    for rows in pixmap.data().chunks(4 * width * rows_at_a_time) {
+        block.clear();
+        for pixels in rows.chunks_exact(4 * width) {
+            block.push(0);
+            for rgba in pixels.chunks_exact(4) {
+                block.extend_from_slice(rgba.get(..3).unwrap_or_default());
+            }
+        }
+        zlib.write_all(&block)?;
+    }
+    zlib.finish()
 }
 
 #[cfg(test)]
