@@ -1031,6 +1031,65 @@ fn dynamics_figures_refuse_bad_masses_and_coefficients_in_one_line() {
 /// `to_string_pretty` indents an array's elements: checked across the
 /// chunks' seams (2 048 angles a chunk) against `analyze --angle θ --json`.
 #[test]
+fn a_long_table_is_the_single_angle_rows_in_order_padded_to_the_widest() {
+    let flags = ["--crank", "0.5", "--rod", "1.7", "--offset", "0.2"];
+    let csv = run(&[
+        &[
+            "table",
+            "kinematics",
+            "--angles",
+            "-1:4500:1",
+            "--format",
+            "csv",
+        ],
+        &flags[..],
+    ]
+    .concat());
+    assert!(csv.status.success());
+    let csv = String::from_utf8(csv.stdout).unwrap();
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 1 + 4502);
+    for k in [
+        0, 1, 1023, 1024, 1025, 2047, 2048, 2049, 4095, 4096, 4097, 4501,
+    ] {
+        let degrees = (k as i64 - 1).to_string();
+        let one = run(&[
+            &[
+                "table",
+                "kinematics",
+                "--angles",
+                &degrees,
+                "--format",
+                "csv",
+            ],
+            &flags[..],
+        ]
+        .concat());
+        let one = String::from_utf8(one.stdout).unwrap();
+        assert_eq!(lines[k + 1], one.lines().nth(1).unwrap(), "angle {degrees}");
+    }
+    // The text table pads every column to its widest cell over all the
+    // chunks: each row's cells end where the headers' do.
+    let text = run(&[
+        &["table", "kinematics", "--angles", "-1:4500:1"],
+        &flags[..],
+    ]
+    .concat());
+    let text = String::from_utf8(text.stdout).unwrap();
+    let rows: Vec<&str> = text.lines().skip(2).take(4503).collect();
+    let longest = rows.iter().map(|r| r.chars().count()).max().unwrap();
+    assert_eq!(
+        rows[0].chars().count(),
+        longest,
+        "the header line is as long as the longest row"
+    );
+    for row in &rows[1..] {
+        let n = row.chars().count();
+        assert_eq!(n, longest, "{row}");
+    }
+}
+
+#[test]
 fn a_long_sweep_is_the_single_angle_objects_in_order() {
     let flags = [
         "--crank", "0.5", "--rod", "1.7", "--offset", "0.2", "--torque", "3",

@@ -5,6 +5,7 @@
 //! memory stays a few chunks whatever the number of angles.
 
 use super::output::Stdout;
+use slider_crank::table::{self, Format, Head};
 use slider_crank::{Error, Result};
 
 /// Angles a thread takes at a time: large enough that starting threads
@@ -19,18 +20,18 @@ fn threads() -> usize {
 }
 
 /// `work` applied to each chunk of `angles`, several chunks at once, each
-/// writing into a buffer of its own (cleared before, and kept from chunk
-/// to chunk so that its memory is not asked of the system again), the
+/// writing into a buffer of its own (kept from chunk to chunk so that its
+/// memory is not asked of the system again: `work` clears it), the
 /// buffers handed to `take` in the order of the angles; stops at the
 /// first error of `work` or `take` (the chunks before it taken).
-fn in_chunks(
+fn in_chunks<T: Default + Send>(
     angles: impl Iterator<Item = f64>,
-    work: impl Fn(&[f64], &mut Vec<u8>) -> Result<()> + Sync,
-    mut take: impl FnMut(&[u8]) -> Result<()>,
+    work: impl Fn(&[f64], &mut T) -> Result<()> + Sync,
+    mut take: impl FnMut(&T) -> Result<()>,
 ) -> Result<()> {
     let mut angles = angles.peekable();
-    let mut buffers: Vec<(Vec<f64>, Vec<u8>)> = (0..threads())
-        .map(|_| (Vec::with_capacity(CHUNK), Vec::new()))
+    let mut buffers: Vec<(Vec<f64>, T)> = (0..threads())
+        .map(|_| (Vec::with_capacity(CHUNK), T::default()))
         .collect();
     while angles.peek().is_some() {
         for (chunk, _) in &mut buffers {
@@ -42,18 +43,10 @@ fn in_chunks(
             let mut jobs = buffers.iter_mut().filter(|(c, _)| !c.is_empty());
             let first = jobs.next();
             let others: Vec<_> = jobs
-                .map(|(c, out)| {
-                    scope.spawn(move || {
-                        out.clear();
-                        work(c, out)
-                    })
-                })
+                .map(|(c, out)| scope.spawn(move || work(c, out)))
                 .collect();
             let mut results = Vec::with_capacity(threads());
-            results.extend(first.map(|(c, out)| {
-                out.clear();
-                work(c, out)
-            }));
+            results.extend(first.map(|(c, out)| work(c, out)));
             for handle in others {
                 results.push(
                     handle
@@ -80,7 +73,7 @@ pub fn check_all<T>(
 ) -> Result<()> {
     in_chunks(
         angles,
-        |chunk, _| chunk.iter().try_for_each(|&d| compute(d).map(drop)),
+        |chunk, _: &mut ()| chunk.iter().try_for_each(|&d| compute(d).map(drop)),
         |_| Ok(()),
     )
 }
@@ -98,7 +91,8 @@ pub fn json_array<T: serde::Serialize>(
     let mut first = true;
     in_chunks(
         angles,
-        |chunk, text| {
+        |chunk, text: &mut Vec<u8>| {
+            text.clear();
             // Each object as the one element of an array, "[\n" + its
             // lines indented + "\n]", kept without the brackets.
             let mut one = Vec::new();
@@ -119,6 +113,52 @@ pub fn json_array<T: serde::Serialize>(
         },
     )?;
     out.text(if first { "[]" } else { "\n]" })
+}
+
+/// Writes a table of one row, `row(angle)`, for every angle `angles()`
+/// gives, as [`table::render_rows`] writes it (the same bytes): a first
+/// pass over the angles finds the columns' widths and any error (nothing is
+/// written when a row fails), a second writes the rows; each pass on every
+/// core, a chunk of rows a thread.
+pub fn table<A: Iterator<Item = f64>>(
+    format: Format,
+    head: &Head,
+    angles: impl Fn() -> A,
+    row: impl Fn(f64) -> Result<Vec<String>> + Sync,
+    out: &mut Stdout,
+) -> Result<()> {
+    let mut widths = table::header_widths(head);
+    in_chunks(
+        angles(),
+        |chunk, chunk_widths: &mut Vec<usize>| {
+            chunk_widths.clear();
+            chunk_widths.resize(head.headers.len(), 0);
+            for &d in chunk {
+                table::widen(chunk_widths, &row(d)?);
+            }
+            Ok(())
+        },
+        |chunk_widths| {
+            for (w, c) in widths.iter_mut().zip(chunk_widths) {
+                *w = (*w).max(*c);
+            }
+            Ok(())
+        },
+    )?;
+    out.text(&table::head_text(format, head, &widths))?;
+    let widths = &widths;
+    in_chunks(
+        angles(),
+        |chunk, text: &mut String| {
+            text.clear();
+            for &d in chunk {
+                table::push_row(format, &row(d)?, widths, text);
+            }
+            Ok(())
+        },
+        |text| out.text(text),
+    )?;
+    out.text(&table::tail_text(format, head))
 }
 
 fn json_error(e: serde_json::Error) -> Error {

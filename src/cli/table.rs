@@ -2,6 +2,7 @@
 
 use super::args::{AngleSpec, GuardArgs, MechanismArgs, SpeedArgs, UnitArgs, parse_list};
 use super::output::Stdout;
+use super::stream;
 use clap::{Args, ValueEnum};
 use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
 use slider_crank::{Error, Result, SliderCrank, Units};
@@ -211,8 +212,8 @@ fn acceleration_factor(
         Ok(t.rows.into_iter().next().unwrap_or_default())
     };
     match &spec {
-        Some(spec) => write_rows(format, &head, || spec.iter().map(row), out),
-        None => write_rows(format, &head, || TEXTBOOK_ANGLES.into_iter().map(row), out),
+        Some(spec) => write_angle_rows(format, &head, || spec.iter(), row, out),
+        None => write_angle_rows(format, &head, || TEXTBOOK_ANGLES.into_iter(), row, out),
     }
 }
 
@@ -230,11 +231,8 @@ fn kinematics(
     let units = args.units.units(Units::FOOT_POUND);
     let head = table::kinematics_head(&m, omega, &units);
     guard_angles(args, "table kinematics", &spec, &head)?;
-    let rows = || {
-        spec.iter()
-            .map(|d| table::kinematics_row(&m, omega, d, decimals))
-    };
-    write_rows(format, &head, rows, out)
+    let row = |d| table::kinematics_row(&m, omega, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
 }
 
 /// `table forces`: Ng's Table 2 at the angles `spec`.
@@ -258,11 +256,8 @@ fn forces(
     let units = args.units.units(Units::MILLIMETRE_NEWTON);
     let head = table::forces_head(&m, torque, mu, &units);
     guard_angles(args, "table forces", &spec, &head)?;
-    let rows = || {
-        spec.iter()
-            .map(|d| table::forces_row(&m, torque, mu, d, decimals))
-    };
-    write_rows(format, &head, rows, out)
+    let row = |d| table::forces_row(&m, torque, mu, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
 }
 
 /// The crank speed `--rpm` or `--omega` give (the default speed when
@@ -398,11 +393,25 @@ fn dynamics(
     let units = args.units.units(Units::FOOT_POUND);
     let head = slider_crank::table::dynamics_head(&engine, &phases, args.turn.flywheel(), &units)?;
     guard_angles(args, "table dynamics", &spec, &head)?;
-    let rows = || {
-        spec.iter()
-            .map(|d| slider_crank::table::dynamics_row(&engine, &phases, d, decimals))
+    let row = |d| slider_crank::table::dynamics_row(&engine, &phases, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
+}
+
+/// Writes a row `row(angle)` for each of `angles()` under the title and
+/// headers of `head`, on every core (see [`stream::table`]).
+fn write_angle_rows<A: Iterator<Item = f64>>(
+    format: Format,
+    head: &table::Table,
+    angles: impl Fn() -> A,
+    row: impl Fn(f64) -> Result<Vec<String>> + Sync,
+    out: &mut Stdout,
+) -> Result<()> {
+    let head = Head {
+        title: &head.title,
+        headers: &head.headers,
+        notes: &head.notes,
     };
-    write_rows(format, &head, rows, out)
+    stream::table(format, &head, angles, row, out)
 }
 
 /// Writes the rows as they are computed under the title and headers of

@@ -180,49 +180,75 @@ pub fn render_rows<I>(
 where
     I: Iterator<Item = Result<Vec<String>>>,
 {
-    let mut width: Vec<usize> = head.headers.iter().map(|h| h.chars().count()).collect();
+    let mut width = header_widths(head);
     for row in rows() {
-        for (w, c) in width.iter_mut().zip(row?.iter()) {
-            *w = (*w).max(c.chars().count());
-        }
+        widen(&mut width, &row?);
     }
-    match format {
-        Format::Csv => out(&csv_line(head.headers))?,
-        Format::Markdown => {
-            out(&format!("**{}**\n\n", head.title))?;
-            out(&format!("| {} |\n", head.headers.join(" | ")))?;
-            out(&format!("|{}\n", "---|".repeat(head.headers.len())))?;
-        }
-        Format::Text => {
-            out(&format!("{}\n\n", head.title))?;
-            out(&text_line(head.headers, &width))?;
-        }
-    }
+    out(&head_text(format, head, &width))?;
+    let mut line = String::new();
     for row in rows() {
-        let row = row?;
-        match format {
-            Format::Csv => out(&csv_line(&row))?,
-            Format::Markdown => out(&format!("| {} |\n", row.join(" | ")))?,
-            Format::Text => out(&text_line(&row, &width))?,
-        }
+        line.clear();
+        push_row(format, &row?, &width, &mut line);
+        out(&line)?;
     }
+    out(&tail_text(format, head))
+}
+
+/// The width of each column from its header alone, in characters (text
+/// tables pad the cells to the widest of a column).
+pub fn header_widths(head: &Head) -> Vec<usize> {
+    head.headers.iter().map(|h| h.chars().count()).collect()
+}
+
+/// `widths` made wide enough for the cells of `row`; a row with more cells
+/// than there are widths adds none.
+pub fn widen(widths: &mut [usize], row: &[String]) {
+    for (w, c) in widths.iter_mut().zip(row) {
+        *w = (*w).max(c.chars().count());
+    }
+}
+
+/// What a table prints above its rows: the CSV header line; the Markdown
+/// title and header rows; the text title and headers padded to `widths`.
+pub fn head_text(format: Format, head: &Head, widths: &[usize]) -> String {
     match format {
-        Format::Csv => {}
+        Format::Csv => csv_line(head.headers),
+        Format::Markdown => format!(
+            "**{}**\n\n| {} |\n|{}\n",
+            head.title,
+            head.headers.join(" | "),
+            "---|".repeat(head.headers.len())
+        ),
+        Format::Text => format!("{}\n\n{}", head.title, text_line(head.headers, widths)),
+    }
+}
+
+/// The line of `row` in `format` (text padded to `widths`), pushed onto
+/// `text`.
+pub fn push_row(format: Format, row: &[String], widths: &[usize], text: &mut String) {
+    match format {
+        Format::Csv => text.push_str(&csv_line(row)),
         Format::Markdown => {
-            for n in head.notes {
-                out(&format!("\n{n}\n"))?;
-            }
+            text.push_str("| ");
+            text.push_str(&row.join(" | "));
+            text.push_str(" |\n");
         }
+        Format::Text => text.push_str(&text_line(row, widths)),
+    }
+}
+
+/// What a table prints below its rows: its notes (none in CSV).
+pub fn tail_text(format: Format, head: &Head) -> String {
+    match format {
+        Format::Csv => String::new(),
+        Format::Markdown => head.notes.iter().map(|n| format!("\n{n}\n")).collect(),
+        Format::Text if head.notes.is_empty() => String::new(),
         Format::Text => {
-            for n in head.notes {
-                out(&format!("\n{n}"))?;
-            }
-            if !head.notes.is_empty() {
-                out("\n")?;
-            }
+            let mut text: String = head.notes.iter().map(|n| format!("\n{n}")).collect();
+            text.push('\n');
+            text
         }
     }
-    Ok(())
 }
 
 fn check_ratios(ratios: &[f64]) -> Result<()> {
