@@ -618,6 +618,76 @@ fn a_line_to_a_centre_at_infinity_runs_on_into_its_arrow() {
     }
 }
 
+/// Every centre at infinity of an inversion is an arrow at the end of a
+/// dashed line it continues, never an arrow standing alone: Inversion 2 at
+/// r = 1, l = 1.2, θ = 170° drew O_cd's arrow at the top of the page with
+/// nothing leading to it (O_bd, where the normal at A was drawn to, lay
+/// next to A). Over the four inversions, short and long rods, dead
+/// centres and 90°.
+#[test]
+fn an_arrow_to_infinity_ends_a_line() {
+    let numbers = |d: &str| -> Vec<f64> {
+        d.split(|c: char| c == ' ' || c == ',' || c.is_ascii_alphabetic())
+            .filter_map(|t| t.parse().ok())
+            .collect()
+    };
+    // The path of every element whose id starts with `prefix` (a group's:
+    // its first path's).
+    let paths = |svg: &str, prefix: &str| -> Vec<(String, Vec<f64>)> {
+        let elements: Vec<&str> = svg.split('<').collect();
+        let d_of = |e: &str| {
+            let d = &e[e.find(" d=\"")? + 4..];
+            Some(numbers(&d[..d.find('"')?]))
+        };
+        let mut found = Vec::new();
+        for (k, e) in elements.iter().enumerate() {
+            let Some(at) = e.find(&format!(" id=\"{prefix}")) else {
+                continue;
+            };
+            let id = &e[at + 5..];
+            let id = id[..id.find('"').unwrap()].to_string();
+            let d = if e.starts_with("g ") {
+                d_of(elements[k + 1])
+            } else {
+                d_of(e)
+            };
+            found.push((id, d.unwrap()));
+        }
+        found
+    };
+    let mut arrows = 0;
+    for name in [
+        FigureName::Inversion1Engine,
+        FigureName::Inversion2RotatingBlock,
+        FigureName::Inversion3OscillatingCylinder,
+        FigureName::Inversion4HandPump,
+    ] {
+        for (crank, rod) in [(1.0, 1.2), (1.0, 1.5), (1.0, 3.0), (1.0, 8.0)] {
+            for angle in [0.0, 30.0, 90.0, 170.0, 180.0, 270.0, 300.0] {
+                let mut options = slider_crank::catalogue::FigureOptions::default();
+                options.mechanism = Some(SliderCrank::in_line(crank, rod).unwrap());
+                options.angle = Some(Angle::deg(angle));
+                let svg = to_svg(&name.figure(&options).unwrap());
+                let lines = paths(&svg, "line-");
+                for (id, arrow) in paths(&svg, "infinity-") {
+                    arrows += 1;
+                    let (tx, ty) = (arrow[0], arrow[1]);
+                    let ends_here = lines.iter().any(|(_, l)| {
+                        let n = l.len();
+                        n >= 4 && (l[n - 2] - tx).hypot(l[n - 1] - ty) < 6.0
+                    });
+                    assert!(
+                        ends_here,
+                        "{} r = {crank}, l = {rod}, θ = {angle}: {id} stands alone",
+                        name.name()
+                    );
+                }
+            }
+        }
+    }
+    assert!(arrows > 20, "{arrows} arrows met");
+}
+
 /// The direction (page degrees, y down) of `p` from `from`.
 fn bearing(from: (f64, f64), p: (f64, f64)) -> f64 {
     (p.1 - from.1).atan2(p.0 - from.0).to_degrees()

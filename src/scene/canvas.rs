@@ -318,24 +318,24 @@ impl Canvas {
     /// A point at infinity in the direction `u` (a sketch's, which records
     /// no metadata): an arrow at the frame's edge on the ray from `from`,
     /// lettered `markup` "at ∞", where it fits between `from` and the edge;
-    /// nothing for a zero `u`.
+    /// nothing for a zero `u`. Returns the arrow's tail, where a line
+    /// towards it from `from` would end (`None`: no arrow drawn).
     pub(crate) fn lettered_at_infinity(
         &mut self,
         name: &str,
         from: Point,
         u: Vector,
         markup: &str,
-    ) {
+    ) -> Option<Point> {
         if u.norm() == 0.0 {
-            return;
+            return None;
         }
         let u = u.normalize();
-        if let Some((_, edge)) = self.frame.clip_ray(from, u)
-            && let Some(tail) = self.edge_arrow_after(format!("infinity-{name}"), from, edge, u)
-        {
-            let letter = RichText::parse(&format!("{markup} at ∞"));
-            self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
-        }
+        let (_, edge) = self.frame.clip_ray(from, u)?;
+        let tail = self.edge_arrow_after(format!("infinity-{name}"), from, edge, u)?;
+        let letter = RichText::parse(&format!("{markup} at ∞"));
+        self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
+        Some(tail)
     }
 
     /// The head and tail of an arrow of `length` page units along the unit

@@ -435,7 +435,9 @@ fn slot_panel(
             s.segment("line-radius", Role::Auxiliary, o, a);
             s.lettered("O-cd", o, "*O*_{cd}", Marker::Dot, c);
         }
-        _ => s.lettered_at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}"),
+        _ => {
+            s.lettered_at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}");
+        }
     }
     ChainCentres::of_cylindric(&pose).to_json()
 }

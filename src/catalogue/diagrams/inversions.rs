@@ -450,10 +450,22 @@ impl Drawing {
         };
         let mut lettered: Vec<(Point, &str)> = pins.to_vec();
         let mut together: Vec<String> = Vec::new();
-        for (key, markup, centre, from, along) in [
-            ("O-bd", "*O*_{bd}", o_bd, b, b - c),
-            ("O-ac", "*O*_{ac}", get(Link::A, Link::C), b, b - a),
-            ("O-cd", "*O*_{cd}", get(Link::C, Link::D), a, towards_d),
+        // O_cd's line, the normal at A, is drawn as far as O_bd already.
+        let drawn_to = match o_bd {
+            Intersection::Point(d) if self.s.contains(d) => Some(d),
+            _ => None,
+        };
+        for (key, markup, centre, from, along, drawn) in [
+            ("O-bd", "*O*_{bd}", o_bd, b, b - c, None),
+            ("O-ac", "*O*_{ac}", get(Link::A, Link::C), b, b - a, None),
+            (
+                "O-cd",
+                "*O*_{cd}",
+                get(Link::C, Link::D),
+                a,
+                towards_d,
+                drawn_to,
+            ),
         ] {
             match centre {
                 Intersection::Point(p) => {
@@ -461,12 +473,33 @@ impl Drawing {
                 }
                 Intersection::AtInfinity(dir) => {
                     let u = self.towards(dir.into_inner(), from, along);
-                    self.s.lettered_at_infinity(key, from, u, markup);
+                    if let Some(tail) = self.s.lettered_at_infinity(key, from, u, markup) {
+                        self.line_to_infinity(key, from, tail, drawn);
+                    }
                 }
                 Intersection::Coincident => {}
             }
         }
         together
+    }
+
+    /// The line on which a centre at infinity lies, dashed from `from` to
+    /// its arrow's `tail`, so that the arrow never stands alone; where the
+    /// line is `drawn` already from `from` to a point towards the arrow, it
+    /// is continued from there (O_cd's normal at A beyond O_bd).
+    fn line_to_infinity(&mut self, key: &str, from: Point, tail: Point, drawn: Option<Point>) {
+        let start = match drawn {
+            Some(d) if (d - from).dot(&(tail - from)) > 0.0 => d,
+            _ => from,
+        };
+        if (tail - start).dot(&(tail - from)) > 0.0 {
+            self.s.segment(
+                format!("line-{key}-at-infinity"),
+                Role::Auxiliary,
+                start,
+                tail,
+            );
+        }
     }
 
     /// The centre `p` lettered `markup` from the side of `from`, or, on
