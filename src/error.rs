@@ -4,6 +4,10 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use thiserror::Error;
 
+mod field;
+
+pub use field::Field;
+
 /// Everything that can go wrong at the boundary of the crate: bad numbers,
 /// a mechanism that cannot be assembled, a malformed request.
 ///
@@ -18,8 +22,8 @@ pub enum Error {
     /// A parameter is NaN or infinite.
     #[error("{name} must be a finite number, got {}", Num(*.value))]
     NotFinite {
-        /// Which parameter (for example `crank`).
-        name: &'static str,
+        /// Which parameter (for example [`Field::Crank`]).
+        name: Field,
         /// The value given.
         value: f64,
     },
@@ -27,7 +31,7 @@ pub enum Error {
     #[error("{name} must be greater than zero, got {}", Num(*.value))]
     NotPositive {
         /// Which parameter.
-        name: &'static str,
+        name: Field,
         /// The value given.
         value: f64,
     },
@@ -35,7 +39,7 @@ pub enum Error {
     #[error("{name} must not be negative, got {}", Num(*.value))]
     Negative {
         /// Which parameter.
-        name: &'static str,
+        name: Field,
         /// The value given.
         value: f64,
     },
@@ -58,7 +62,7 @@ pub enum Error {
     #[error("{name} = {} is out of range: {reason}", Num(*.value))]
     OutOfRange {
         /// Which parameter.
-        name: &'static str,
+        name: Field,
         /// The value given.
         value: f64,
         /// What the range is.
@@ -265,7 +269,7 @@ impl std::fmt::Display for Num {
 pub type Result<T> = std::result::Result<T, Error>;
 
 /// Checks that `value` is finite, naming it in the error otherwise.
-pub(crate) fn finite(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn finite(name: Field, value: f64) -> Result<f64> {
     if value.is_finite() {
         Ok(value)
     } else {
@@ -274,7 +278,7 @@ pub(crate) fn finite(name: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Checks that `value` is finite and strictly positive.
-pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn positive(name: Field, value: f64) -> Result<f64> {
     let value = finite(name, value)?;
     if value > 0.0 {
         Ok(value)
@@ -284,7 +288,7 @@ pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Checks that `value` is finite and not negative.
-pub(crate) fn non_negative(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn non_negative(name: Field, value: f64) -> Result<f64> {
     let value = finite(name, value)?;
     if value >= 0.0 {
         Ok(value)
@@ -347,17 +351,17 @@ mod tests {
     #[test]
     fn messages_show_extreme_numbers_compactly() {
         let e = Error::NotPositive {
-            name: "crank",
+            name: Field::Crank,
             value: -1e100,
         };
         assert_eq!(e.to_string(), "crank must be greater than zero, got -1e100");
         let e = Error::NotFinite {
-            name: "crank",
+            name: Field::Crank,
             value: f64::NAN,
         };
         assert_eq!(e.to_string(), "crank must be a finite number, got NaN");
         let e = Error::Negative {
-            name: "friction",
+            name: Field::Friction,
             value: -0.5,
         };
         assert_eq!(e.to_string(), "friction must not be negative, got -0.5");

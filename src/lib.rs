@@ -163,7 +163,7 @@ pub use chain::{
     GrashofClass, Inversion, InversionPose, InvertedChain, LinkMotion, LinkRates, QuadricChain,
     QuadricPose, SlotConstruction, slot_convergence,
 };
-pub use error::{Error, Result};
+pub use error::{Error, Field, Result};
 pub use figure::Style;
 pub use figure::{Figure, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};

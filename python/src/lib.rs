@@ -18,7 +18,7 @@ use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
-use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
+use slider_crank::{Angle, Error, Field, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
 use std::path::{Path, PathBuf};
 
 mod chain;
@@ -477,7 +477,7 @@ fn table(
     let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
     if decimals > 17 {
         return Err(py_err(Error::OutOfRange {
-            name: "decimals",
+            name: Field::Decimals,
             value: decimals as f64,
             reason: "at most 17 decimals are meaningful in f64".into(),
         }));
@@ -545,7 +545,7 @@ fn table(
             let torque = torque.unwrap_or(NG_TABLE_2_TORQUE);
             if !torque.is_finite() {
                 return Err(py_err(Error::NotFinite {
-                    name: "torque",
+                    name: Field::Torque,
                     value: torque,
                 }));
             }

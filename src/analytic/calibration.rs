@@ -1,6 +1,6 @@
 //! Least-squares calibration lines (Ng, Table 1 and Fig. 7).
 
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Field, Result, finite};
 use crate::number::plain;
 
 /// Ng's Table 1: force in newtons (weights of 0.25 … 1.5 kg) against strain
@@ -46,8 +46,8 @@ fn check(points: &[(f64, f64)], needed: usize) -> Result<()> {
         )));
     }
     for &(x, y) in points {
-        finite("x", x)?;
-        finite("y", y)?;
+        finite(Field::X, x)?;
+        finite(Field::Y, y)?;
     }
     Ok(())
 }

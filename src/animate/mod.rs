@@ -25,7 +25,7 @@ mod svg;
 pub use format::AnimationFormat;
 pub use frames::{Frame, MAX_EVALUATIONS};
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::PageUnit;
 use crate::{angle::Angle, scene::Scene};
 
@@ -311,13 +311,13 @@ fn split(skeleton: &str) -> (&str, &str) {
 fn check_period(period: f64) -> Result<f64> {
     if !period.is_finite() {
         return Err(Error::NotFinite {
-            name: "period",
+            name: Field::Period,
             value: period,
         });
     }
     if period <= 0.0 || period > MAX_PERIOD {
         return Err(Error::OutOfRange {
-            name: "period",
+            name: Field::Period,
             value: period,
             reason: format!("a revolution takes more than 0 and at most {MAX_PERIOD} seconds"),
         });
@@ -339,7 +339,7 @@ fn first_angle(scene: &Scene) -> Result<Angle> {
 fn angles(start: Angle, count: usize) -> Result<Vec<Angle>> {
     if !(MIN_FRAMES..=MAX_FRAMES).contains(&count) {
         return Err(Error::OutOfRange {
-            name: "frames",
+            name: Field::Frames,
             value: count as f64,
             reason: format!("an animation has {MIN_FRAMES} to {MAX_FRAMES} frames"),
         });

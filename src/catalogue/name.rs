@@ -6,7 +6,7 @@
 use super::specs::Group;
 use super::specs::{At, Kind, Source};
 use super::{FigureName, FigureOptions, Setting, diagrams, scene_toml};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
@@ -105,7 +105,7 @@ impl FigureName {
     pub fn angle(&self, degrees: f64) -> Result<Angle> {
         if matches!(self.spec().at, At::Tilt(_)) && !(degrees > 0.0 && degrees < 90.0) {
             return Err(Error::OutOfRange {
-                name: "angle",
+                name: Field::Angle,
                 value: degrees,
                 reason: "the tilt of the plane is between 0° and 90°".into(),
             });

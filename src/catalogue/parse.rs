@@ -5,7 +5,7 @@
 
 use super::{FigureName, FigureOptions, SceneFile, Setting};
 use crate::construct::CouplerPoint;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::{Font, PageLength, Style, Title};
 use crate::scene::{Layer, Notation, Page, Scene, valid};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Unit};
@@ -279,12 +279,18 @@ fn mechanism(text: &str, m: &MechanismFile) -> Result<SliderCrank> {
     let offset = m.offset.as_ref().map_or(0.0, |o| *o.get_ref());
     let built = SliderCrank::new(*m.crank.get_ref(), *m.rod.get_ref(), offset);
     let span = match &built {
-        Err(Error::NotPositive { name: "crank", .. } | Error::NotFinite { name: "crank", .. }) => {
-            m.crank.span()
-        }
-        Err(Error::NotFinite { name: "offset", .. }) => {
-            m.offset.as_ref().map_or(m.rod.span(), |o| o.span())
-        }
+        Err(
+            Error::NotPositive {
+                name: Field::Crank, ..
+            }
+            | Error::NotFinite {
+                name: Field::Crank, ..
+            },
+        ) => m.crank.span(),
+        Err(Error::NotFinite {
+            name: Field::Offset,
+            ..
+        }) => m.offset.as_ref().map_or(m.rod.span(), |o| o.span()),
         _ => m.rod.span(),
     };
     at(text, span, built)
@@ -343,8 +349,8 @@ fn page(text: &str, p: &PageFile, page: &Page) -> Result<Page> {
             | Error::NotFinite { name, .. }
             | Error::OutOfRange { name, .. },
         ) => match *name {
-            "page width" => p.width.as_ref().map(|s| s.span()),
-            "page height" => p.height.as_ref().map(|s| s.span()),
+            Field::PageWidth => p.width.as_ref().map(|s| s.span()),
+            Field::PageHeight => p.height.as_ref().map(|s| s.span()),
             _ => p.margin.as_ref().map(|s| s.span()),
         },
         _ => None,

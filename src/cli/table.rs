@@ -4,7 +4,7 @@ use super::args::{AngleSpec, GuardArgs, MechanismArgs, SpeedArgs, UnitArgs, pars
 use super::output::Stdout;
 use clap::{Args, ValueEnum};
 use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
-use slider_crank::{Error, Result, SliderCrank, Units};
+use slider_crank::{Error, Field, Result, SliderCrank, Units};
 
 /// Which table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -139,7 +139,7 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
     });
     if decimals > 17 {
         return Err(Error::OutOfRange {
-            name: "decimals",
+            name: Field::Decimals,
             value: decimals as f64,
             reason: "at most 17 decimals are meaningful in f64".into(),
         });
@@ -249,7 +249,7 @@ fn forces(
     let torque = args.torque.unwrap_or(NG_TABLE_2_TORQUE);
     if !torque.is_finite() {
         return Err(Error::NotFinite {
-            name: "torque",
+            name: Field::Torque,
             value: torque,
         });
     }

@@ -2,7 +2,7 @@
 //! of pressure against the fraction of the stroke.
 
 use crate::csv::Table as DataTable;
-use crate::error::{Error, Result, positive};
+use crate::error::{Error, Field, Result, positive};
 use crate::mechanism::Pose;
 
 /// Most rows of an indicator diagram.
@@ -83,7 +83,7 @@ impl IndicatorDiagram {
         compression: Vec<f64>,
         bore: f64,
     ) -> Result<Self> {
-        let bore = positive("bore", bore)?;
+        let bore = positive(Field::Bore, bore)?;
         let n = fractions.len();
         if !(2..=MAX_INDICATOR_ROWS).contains(&n) || expansion.len() != n || compression.len() != n
         {
@@ -101,10 +101,10 @@ impl IndicatorDiagram {
         }
         let area = std::f64::consts::PI * bore * bore / 4.0;
         for &p in expansion.iter().chain(&compression) {
-            let p = crate::error::finite("pressure", p)?;
+            let p = crate::error::finite(Field::Pressure, p)?;
             if !(p * area).is_finite() {
                 return Err(Error::OutOfRange {
-                    name: "pressure",
+                    name: Field::Pressure,
                     value: p,
                     reason: "pressure × bore area exceeds the largest number".into(),
                 });
@@ -135,7 +135,7 @@ impl IndicatorDiagram {
         for &p in checked.expansion.iter().chain(&checked.compression) {
             if !(p * self.area).is_finite() {
                 return Err(Error::OutOfRange {
-                    name: "pressure",
+                    name: Field::Pressure,
                     value: p,
                     reason: "pressure × bore area exceeds the largest number".into(),
                 });

@@ -7,7 +7,7 @@
 //! unit asked (`width="120mm"`), its `viewBox` still in page units, so that
 //! a book places the figure at that size.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use std::fmt;
 use std::str::FromStr;
 
@@ -104,13 +104,13 @@ impl PageLength {
     pub fn new(value: f64, unit: PageUnit) -> Result<Self> {
         if !value.is_finite() {
             return Err(Error::NotFinite {
-                name: "page length",
+                name: Field::PageLength,
                 value,
             });
         }
         if value <= 0.0 {
             return Err(Error::NotPositive {
-                name: "page length",
+                name: Field::PageLength,
                 value,
             });
         }

@@ -45,7 +45,7 @@ pub use random::SplitMix64;
 
 use crate::analytic::kinematics::check_omega;
 use crate::construct::Reading;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
 /// The paper a page is printed on.
@@ -170,10 +170,10 @@ impl Handout {
     /// range; units other than feet and pounds-force, the units of the
     /// indicator diagram (lbf/ft²) and its bore.
     pub fn with_dynamics(mut self, mass: f64, fluctuation: f64) -> Result<Self> {
-        let mass = crate::error::positive("mass", mass)?;
+        let mass = crate::error::positive(Field::Mass, mass)?;
         if !(fluctuation > 0.0 && fluctuation < 2.0) {
             return Err(Error::OutOfRange {
-                name: "fluctuation",
+                name: Field::Fluctuation,
                 value: fluctuation,
                 reason: "the coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω is above 0 and below 2 (where the least speed would be zero)".into(),
             });
