@@ -18,7 +18,7 @@ use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
-use slider_crank::{Angle, Error, Field, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
+use slider_crank::{Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units};
 use std::path::{Path, PathBuf};
 
 mod chain;
@@ -284,7 +284,7 @@ fn figure(
     options.font = font.map(parse).transpose()?;
     options.data = data
         .as_ref()
-        .map(|p| read_text(p, MAX_DATA_BYTES, "data file"))
+        .map(|p| read_text(p, MAX_DATA_BYTES, Input::Data))
         .transpose()
         .map_err(py_err)?;
     options.fit = fit.map(parse).transpose()?;
@@ -301,11 +301,9 @@ fn figure(
     py.detach(|| {
         name.figure(&options)
             .map(|f| to_svg(&f))
-            .map_err(|e| match (&data, e) {
-                (Some(path), Error::Parse(m)) if m.starts_with("data") => {
-                    Error::Parse(format!("{}: {m}", path.display()))
-                }
-                (_, e) => e,
+            .map_err(|e| match &data {
+                Some(path) => e.in_file(Input::Data, path),
+                None => e,
             })
     })
     .map_err(py_err)

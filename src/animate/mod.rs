@@ -25,7 +25,7 @@ mod svg;
 pub use format::AnimationFormat;
 pub use frames::{Frame, MAX_EVALUATIONS};
 
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::figure::PageUnit;
 use crate::{angle::Angle, scene::Scene};
 
@@ -333,7 +333,7 @@ fn first_angle(scene: &Scene) -> Result<Angle> {
         .angles()
         .first()
         .copied()
-        .ok_or_else(|| Error::Parse("a scene needs at least one angle".into()))
+        .ok_or_else(|| Error::invalid(Input::Angles, "a scene needs at least one angle".into()))
 }
 
 fn angles(start: Angle, count: usize) -> Result<Vec<Angle>> {
@@ -428,7 +428,7 @@ mod tests {
         let mut calls = 0;
         let mut failing = |_: &str| {
             calls += 1;
-            Err(Error::Parse("full".into()))
+            Err(Error::invalid(Input::Angles, "full".into()))
         };
         let e = write(
             &engine(),

@@ -1,7 +1,7 @@
 //! The quadric crank chain (four-bar), textbook §34, Fig. 60 (a).
 
 use crate::angle::Angle;
-use crate::error::{Error, Field, Result, positive};
+use crate::error::{Error, Field, Input, Result, positive};
 use crate::geom::{Point, Vector, cross, perp};
 use crate::mechanism::in_range;
 use std::f64::consts::PI;
@@ -53,9 +53,10 @@ impl Assembly {
             .into_iter()
             .find(|a| a.name() == name)
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown assembly '{name}': expected open or crossed"
-                ))
+                Error::invalid(
+                    Input::Assembly,
+                    format!("unknown assembly '{name}': expected open or crossed"),
+                )
             })
     }
 

@@ -4,7 +4,7 @@ use super::args::{AngleSpec, GuardArgs, MechanismArgs, SpeedArgs, UnitArgs, pars
 use super::output::Stdout;
 use clap::{Args, ValueEnum};
 use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
-use slider_crank::{Error, Field, Result, SliderCrank, Units};
+use slider_crank::{Error, Field, Input, Result, SliderCrank, Units};
 
 /// Which table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -122,10 +122,10 @@ fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
 /// `--max-cells` before any is computed.
 pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
     if let Some(bad) = unused(args) {
-        return Err(Error::Parse(format!(
-            "table {} does not use {bad}",
-            table_name(args.name)
-        )));
+        return Err(Error::invalid(
+            Input::Options,
+            format!("table {} does not use {bad}", table_name(args.name)),
+        ));
     }
     let ratios = args
         .n

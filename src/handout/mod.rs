@@ -45,7 +45,7 @@ pub use random::SplitMix64;
 
 use crate::analytic::kinematics::check_omega;
 use crate::construct::Reading;
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
 /// The paper a page is printed on.
@@ -74,9 +74,10 @@ impl Paper {
         match name {
             "a4" => Ok(Paper::A4),
             "letter" => Ok(Paper::Letter),
-            _ => Err(Error::Parse(format!(
-                "unknown paper '{name}': expected a4 or letter"
-            ))),
+            _ => Err(Error::invalid(
+                Input::Paper,
+                format!("unknown paper '{name}': expected a4 or letter"),
+            )),
         }
     }
 
@@ -179,7 +180,7 @@ impl Handout {
             });
         }
         if self.units != Units::FOOT_POUND {
-            return Err(Error::Parse(
+            return Err(Error::invalid(Input::Options,
                 "the handout's dynamics take their gas force from an indicator diagram in lbf/ft² with a 10 in bore: give lengths in ft and forces in lbf with --mass".into(),
             ));
         }

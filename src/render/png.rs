@@ -2,7 +2,7 @@
 //! is ever loaded, so the same SVG gives the same bytes on every machine.
 
 use super::font_database::font_database;
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Field, Input, Result};
 use resvg::tiny_skia;
 use std::sync::Arc;
 use usvg::fontdb::Database;
@@ -32,7 +32,7 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
         ..usvg::Options::default()
     };
     let tree = usvg::Tree::from_str(svg, &options)
-        .map_err(|e| Error::Parse(format!("cannot read the SVG: {e}")))?;
+        .map_err(|e| Error::invalid(Input::Svg, format!("cannot read the SVG: {e}")))?;
     let size = tree
         .size()
         .to_int_size()

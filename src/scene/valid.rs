@@ -4,7 +4,7 @@
 
 use super::Scene;
 use crate::angle::Angle;
-use crate::error::{Error, Field, Result, finite, positive};
+use crate::error::{Error, Field, Input, Result, finite, positive};
 
 /// The most poses one figure draws (the first and its ghosts).
 pub(crate) const MAX_POSES: usize = 64;
@@ -60,7 +60,10 @@ pub(crate) fn tolerance(tolerance: f64) -> Result<f64> {
 /// The poses of one figure: 1 to [`MAX_POSES`].
 pub(crate) fn angles(angles: &[Angle]) -> Result<()> {
     if angles.is_empty() {
-        return Err(Error::Parse("a scene needs at least one angle".into()));
+        return Err(Error::invalid(
+            Input::Angles,
+            "a scene needs at least one angle".into(),
+        ));
     }
     if angles.len() > MAX_POSES {
         return Err(Error::OutOfRange {
@@ -75,7 +78,8 @@ pub(crate) fn angles(angles: &[Angle]) -> Result<()> {
 /// The poses a view is held over: 1 to [`MAX_HELD`].
 pub(crate) fn held_view(angles: &[Angle]) -> Result<()> {
     if angles.is_empty() {
-        return Err(Error::Parse(
+        return Err(Error::invalid(
+            Input::Angles,
             "a view is held over at least one angle".into(),
         ));
     }

@@ -11,7 +11,7 @@ use crate::analytic::approx::acceleration_factor;
 use crate::analytic::kinematics::Kinematics;
 use crate::analytic::statics::{Friction, slider_force, with_friction};
 use crate::angle::Angle;
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::mechanism::SliderCrank;
 pub use crate::number::fixed;
 use crate::number::plain;
@@ -61,9 +61,10 @@ impl Format {
             .into_iter()
             .find(|f| f.name() == name)
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown format '{name}': expected text, markdown or csv"
-                ))
+                Error::invalid(
+                    Input::TableFormat,
+                    format!("unknown format '{name}': expected text, markdown or csv"),
+                )
             })
     }
 }

@@ -25,7 +25,7 @@ use super::specs::Builder;
 use super::{FigureName, FigureOptions};
 use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::Plot;
-use crate::error::{Error, Field, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::figure::Style;
 use crate::figure::{Figure, Font, PageRect, Panel, RichText};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
@@ -205,7 +205,7 @@ pub(crate) fn build(name: FigureName, build: Builder, options: &FigureOptions) -
         Error::OutOfRange {
             name: Field::PanelWidth,
             ..
-        } if asked => Error::Parse(format!(
+        } if asked => Error::invalid(Input::PageLength, format!(
             "a page of {} × {} units leaves no room for the plots of {}: give it a larger width or height",
             format_number(page.width(), 1),
             format_number(page.height(), 1),
