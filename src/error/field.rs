@@ -235,6 +235,34 @@ mod tests {
             "|slot radius| must be a finite number, got NaN"
         );
         assert_eq!(Field::PngSize.to_string(), "PNG size");
+        // The library's own checks, as the command line printed them.
+        let e = crate::mechanism::SliderCrank::new(0.0, 3.0, 0.0).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::NotPositive {
+                    name: Field::Crank,
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
+        assert_eq!(e.to_string(), "crank must be greater than zero, got 0");
+        let e = crate::scene::Page::new(10.0, 600.0, 0.0).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::OutOfRange {
+                    name: Field::PageWidth,
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
+        assert_eq!(
+            e.to_string(),
+            "page width = 10 is out of range: a page is between 50 and 20000 units (px, 96 to the inch: 13.3 mm to 5.29 m)"
+        );
         assert_eq!(
             Field::FluctuationOfSpeed.to_string(),
             "fluctuation of speed"

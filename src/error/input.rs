@@ -101,3 +101,55 @@ impl std::fmt::Display for Input {
         f.write_str(self.name())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::Input;
+    use crate::analytic::calibration::fit_with_intercept;
+    use crate::catalogue::Fit;
+    use crate::dynamics::IndicatorDiagram;
+    use crate::error::Error;
+    use crate::figure::Style;
+
+    /// The message `r`'s error prints and the kind of input it is about.
+    fn refused<T: std::fmt::Debug>(r: crate::error::Result<T>) -> (Input, String) {
+        match r {
+            Err(e @ Error::Invalid { input, .. }) => (input, e.to_string()),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn errors_name_their_input_and_read_as_before() {
+        assert_eq!(
+            refused("bold".parse::<Style>()),
+            (
+                Input::Style,
+                "unknown style 'bold': expected textbook or handout".to_string()
+            )
+        );
+        assert_eq!(
+            refused("linear".parse::<Fit>()),
+            (
+                Input::Fit,
+                "unknown fit 'linear': expected origin, intercept or both".to_string()
+            )
+        );
+        assert_eq!(
+            refused(fit_with_intercept(&[(1.0, 2.0)])),
+            (
+                Input::Calibration,
+                "a line fit needs at least 2 points, got 1".to_string()
+            )
+        );
+        let one_row = IndicatorDiagram::new(vec![0.0], vec![1.0], vec![1.0], 1.0);
+        assert_eq!(
+            refused(one_row),
+            (
+                Input::Indicator,
+                "an indicator diagram has 2 to 10000 rows, each with a fraction and two pressures"
+                    .to_string()
+            )
+        );
+    }
+}
