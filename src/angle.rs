@@ -1,6 +1,6 @@
 //! Crank angles with exact trigonometry at the multiples of 90°.
 
-use crate::error::{Result, finite};
+use crate::error::{Field, Result, finite};
 use std::f64::consts::PI;
 
 /// An angle together with its sine and cosine.
@@ -25,7 +25,7 @@ impl Angle {
     /// value is accepted: the crank of a valid mechanism turns fully.
     #[inline]
     pub fn from_degrees(degrees: f64) -> Result<Self> {
-        let degrees = finite("angle", degrees)?;
+        let degrees = finite(Field::Angle, degrees)?;
         // fmod is exact, and the identity on [0°, 360°): a sweep's angles
         // skip its call.
         let mut reduced = if (0.0..360.0).contains(&degrees) {
@@ -89,7 +89,7 @@ impl Angle {
     /// The reduced angle is in `[0, 2π)` and its degrees in `[0, 360)`
     /// even where rounding would give 2π (a tiny negative angle is 0).
     pub fn from_radians(radians: f64) -> Result<Self> {
-        let radians = finite("angle", radians)?;
+        let radians = finite(Field::Angle, radians)?;
         let mut reduced = radians.rem_euclid(2.0 * PI);
         // rem_euclid(−1e-17) rounds up to 2π itself; and just below 2π the
         // degrees may round up to 360.

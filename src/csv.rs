@@ -3,7 +3,7 @@
 //! blank lines and lines starting with `#` are skipped; there is no
 //! quoting. Errors name the line.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 
 /// Most rows read from one file.
 const MAX_ROWS: usize = 100_000;
@@ -11,6 +11,7 @@ const MAX_ROWS: usize = 100_000;
 /// A table read from CSV text.
 #[derive(Debug, Clone, PartialEq)]
 pub(crate) struct Table {
+    input: Input,
     what: String,
     names: Vec<String>,
     /// Line number (1-based) and fields.
@@ -28,36 +29,48 @@ fn bare(name: &str) -> String {
 }
 
 impl Table {
-    /// Reads `text`; `what` names the data in errors (`--data FILE`).
-    pub(crate) fn parse(text: &str, what: &str) -> Result<Self> {
+    /// Reads `text`, the `input` named `what` in errors (`data`,
+    /// `indicator diagram FILE`); its errors are [`Error::Invalid`] about
+    /// `input`.
+    pub(crate) fn parse(text: &str, input: Input, what: &str) -> Result<Self> {
         let mut lines = text
             .lines()
             .enumerate()
             .map(|(i, l)| (i + 1, l.trim()))
             .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'));
         let Some((_, header)) = lines.next() else {
-            return Err(Error::Parse(format!("{what}: no header line")));
+            return Err(Error::invalid(input, format!("{what}: no header line")));
         };
         let names: Vec<String> = header.split(',').map(bare).collect();
         let mut rows = Vec::new();
         for (n, line) in lines {
             let fields: Vec<String> = line.split(',').map(|f| f.trim().to_string()).collect();
             if fields.len() != names.len() {
-                return Err(Error::Parse(format!(
-                    "{what} line {n}: {} fields where the header has {}",
-                    fields.len(),
-                    names.len()
-                )));
+                return Err(Error::invalid(
+                    input,
+                    format!(
+                        "{what} line {n}: {} fields where the header has {}",
+                        fields.len(),
+                        names.len()
+                    ),
+                ));
             }
             if rows.len() == MAX_ROWS {
-                return Err(Error::Parse(format!("{what}: more than {MAX_ROWS} rows")));
+                return Err(Error::invalid(
+                    input,
+                    format!("{what}: more than {MAX_ROWS} rows"),
+                ));
             }
             rows.push((n, fields));
         }
         if rows.is_empty() {
-            return Err(Error::Parse(format!("{what}: no rows after the header")));
+            return Err(Error::invalid(
+                input,
+                format!("{what}: no rows after the header"),
+            ));
         }
         Ok(Self {
+            input,
             what: what.to_string(),
             names,
             rows,
@@ -71,12 +84,15 @@ impl Table {
             .iter()
             .position(|n| names.contains(&n.as_str()))
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "{}: no column named {} (the header has {})",
-                    self.what,
-                    names.join(" or "),
-                    self.names.join(", ")
-                ))
+                Error::invalid(
+                    self.input,
+                    format!(
+                        "{}: no column named {} (the header has {})",
+                        self.what,
+                        names.join(" or "),
+                        self.names.join(", ")
+                    ),
+                )
             })
     }
 
@@ -92,10 +108,13 @@ impl Table {
                 let f = &fields[column];
                 match f.parse::<f64>() {
                     Ok(v) if v.is_finite() => Ok(v),
-                    _ => Err(Error::Parse(format!(
-                        "{} line {n}: '{f}' in column {} is not a finite number",
-                        self.what, self.names[column]
-                    ))),
+                    _ => Err(Error::invalid(
+                        self.input,
+                        format!(
+                            "{} line {n}: '{f}' in column {} is not a finite number",
+                            self.what, self.names[column]
+                        ),
+                    )),
                 }
             })
             .collect()
@@ -125,6 +144,7 @@ mod tests {
     fn reads_named_columns_with_units_and_comments() {
         let t = Table::parse(
             "# Ng, Table 2\nangle (deg), force_N\n40, 9.22\n\n50,7.65\n",
+            Input::Data,
             "data",
         )
         .unwrap();
@@ -137,19 +157,32 @@ mod tests {
 
     #[test]
     fn errors_name_the_line() {
-        let bad = Table::parse("angle,force\n40,abc\n", "d.csv").unwrap();
+        let bad = Table::parse("angle,force\n40,abc\n", Input::Data, "d.csv").unwrap();
         let e = bad.pairs(&["angle"], &["force"]).unwrap_err().to_string();
         assert!(e.contains("d.csv line 2") && e.contains("abc"), "{e}");
-        let e = Table::parse("angle,force\n40\n", "d.csv").unwrap_err();
-        assert!(e.to_string().contains("line 2: 1 fields"), "{e}");
-        assert!(Table::parse("", "d").is_err());
-        assert!(Table::parse("angle,force\n", "d").is_err());
-        let e = Table::parse("theta,f\n1,2\n", "d")
+        let e = Table::parse("angle,force\n40\n", Input::Indicator, "d.csv").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "d.csv line 2: 1 fields where the header has 2"
+        );
+        assert!(
+            matches!(
+                e,
+                Error::Invalid {
+                    input: Input::Indicator,
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
+        assert!(Table::parse("", Input::Data, "d").is_err());
+        assert!(Table::parse("angle,force\n", Input::Data, "d").is_err());
+        let e = Table::parse("theta,f\n1,2\n", Input::Data, "d")
             .unwrap()
             .column(&["angle"])
             .unwrap_err();
         assert!(e.to_string().contains("theta, f"), "{e}");
-        let nan = Table::parse("angle,force\n40,NaN\n", "d").unwrap();
+        let nan = Table::parse("angle,force\n40,NaN\n", Input::Data, "d").unwrap();
         assert!(nan.pairs(&["angle"], &["force"]).is_err());
     }
 }

@@ -4,6 +4,12 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use thiserror::Error;
 
+mod field;
+mod input;
+
+pub use field::Field;
+pub use input::Input;
+
 /// Everything that can go wrong at the boundary of the crate: bad numbers,
 /// a mechanism that cannot be assembled, a malformed request.
 ///
@@ -18,8 +24,8 @@ pub enum Error {
     /// A parameter is NaN or infinite.
     #[error("{name} must be a finite number, got {}", Num(*.value))]
     NotFinite {
-        /// Which parameter (for example `crank`).
-        name: &'static str,
+        /// Which parameter (for example [`Field::Crank`]).
+        name: Field,
         /// The value given.
         value: f64,
     },
@@ -27,7 +33,7 @@ pub enum Error {
     #[error("{name} must be greater than zero, got {}", Num(*.value))]
     NotPositive {
         /// Which parameter.
-        name: &'static str,
+        name: Field,
         /// The value given.
         value: f64,
     },
@@ -35,7 +41,7 @@ pub enum Error {
     #[error("{name} must not be negative, got {}", Num(*.value))]
     Negative {
         /// Which parameter.
-        name: &'static str,
+        name: Field,
         /// The value given.
         value: f64,
     },
@@ -58,15 +64,22 @@ pub enum Error {
     #[error("{name} = {} is out of range: {reason}", Num(*.value))]
     OutOfRange {
         /// Which parameter.
-        name: &'static str,
+        name: Field,
         /// The value given.
         value: f64,
         /// What the range is.
         reason: String,
     },
-    /// Input text that could not be understood (angle ranges, lists, files).
-    #[error("{0}")]
-    Parse(String),
+    /// Input that could not be understood (an angle range, a unit's name,
+    /// a scene file, the data file, options that do not go together).
+    #[error("{message}")]
+    Invalid {
+        /// What kind of input it was (the data file, a scene file).
+        input: Input,
+        /// What was wrong, as printed (`unknown layer 'x': expected one
+        /// of …`); it names the input where the user needs to be told.
+        message: String,
+    },
     /// Reading or writing failed (a file, standard output, the PNG
     /// encoder). The message is the whole of what is shown: it names the
     /// file and quotes the cause; the cause itself is kept as the error's
@@ -95,6 +108,34 @@ pub enum Error {
 }
 
 impl Error {
+    /// An [`Error::Invalid`] about `input`; `message` is what is printed.
+    pub fn invalid(input: Input, message: String) -> Self {
+        Error::Invalid { input, message }
+    }
+
+    /// The same error said to be about `input` when it is an
+    /// [`Error::Invalid`] (an indicator diagram read as a figure's data
+    /// file is the data file); any other error unchanged.
+    pub(crate) fn about(self, input: Input) -> Self {
+        match self {
+            Error::Invalid { message, .. } => Error::Invalid { input, message },
+            e => e,
+        }
+    }
+
+    /// The same error with `path` before its message when it is an
+    /// [`Error::Invalid`] about `input`, so that a message about the data
+    /// file names the file (`runs.csv: data line 3: …`); any other error
+    /// unchanged (one about the angle, or the line fit through the data).
+    pub fn in_file(self, input: Input, path: &std::path::Path) -> Self {
+        match self {
+            Error::Invalid { input: i, message } if i == input => {
+                Error::invalid(input, format!("{}: {message}", path.display()))
+            }
+            e => e,
+        }
+    }
+
     /// An [`Error::Io`] about `path` with the operating system's `source`;
     /// `message` is what is printed.
     pub fn io_at(message: String, path: &std::path::Path, source: std::io::Error) -> Self {
@@ -153,7 +194,10 @@ impl Error {
                 value,
                 reason: escape_controls(&reason),
             },
-            Error::Parse(m) => Error::Parse(escape_controls(&m)),
+            Error::Invalid { input, message } => Error::Invalid {
+                input,
+                message: escape_controls(&message),
+            },
             Error::Io {
                 message,
                 path,
@@ -202,9 +246,14 @@ impl PartialEq for Error {
                     reason: r,
                 },
             ) => name == n && value == v && reason == r,
-            (Parse(a), Parse(b)) | (Limit(a), Limit(b)) | (Unsupported(a), Unsupported(b)) => {
-                a == b
-            }
+            (
+                Invalid { input, message },
+                Invalid {
+                    input: i,
+                    message: m,
+                },
+            ) => input == i && message == m,
+            (Limit(a), Limit(b)) | (Unsupported(a), Unsupported(b)) => a == b,
             (
                 Io {
                     message,
@@ -265,7 +314,7 @@ impl std::fmt::Display for Num {
 pub type Result<T> = std::result::Result<T, Error>;
 
 /// Checks that `value` is finite, naming it in the error otherwise.
-pub(crate) fn finite(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn finite(name: Field, value: f64) -> Result<f64> {
     if value.is_finite() {
         Ok(value)
     } else {
@@ -274,7 +323,7 @@ pub(crate) fn finite(name: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Checks that `value` is finite and strictly positive.
-pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn positive(name: Field, value: f64) -> Result<f64> {
     let value = finite(name, value)?;
     if value > 0.0 {
         Ok(value)
@@ -284,7 +333,7 @@ pub(crate) fn positive(name: &'static str, value: f64) -> Result<f64> {
 }
 
 /// Checks that `value` is finite and not negative.
-pub(crate) fn non_negative(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn non_negative(name: Field, value: f64) -> Result<f64> {
     let value = finite(name, value)?;
     if value >= 0.0 {
         Ok(value)
@@ -336,37 +385,86 @@ mod tests {
         assert_eq!(Error::show("é ok"), "é ok");
         let long = Error::show(&"t".repeat(100_000));
         assert_eq!(long, format!("{}…", "t".repeat(60)));
-        let e = Error::Parse(format!("unknown figure '{}\u{2066}'", "f".repeat(5000))).one_line();
+        let e = Error::invalid(
+            Input::FigureName,
+            format!("unknown figure '{}\u{2066}'", "f".repeat(5000)),
+        )
+        .one_line();
         let text = e.to_string();
         assert_eq!(text.chars().count(), 1001);
         assert!(text.ends_with("ff…"), "{text}");
-        let e = Error::Parse("a\u{202E}b".into()).one_line();
+        let e = Error::invalid(Input::Title, "a\u{202E}b".into()).one_line();
         assert_eq!(e.to_string(), "a\\u{202e}b");
     }
 
     #[test]
     fn messages_show_extreme_numbers_compactly() {
         let e = Error::NotPositive {
-            name: "crank",
+            name: Field::Crank,
             value: -1e100,
         };
         assert_eq!(e.to_string(), "crank must be greater than zero, got -1e100");
         let e = Error::NotFinite {
-            name: "crank",
+            name: Field::Crank,
             value: f64::NAN,
         };
         assert_eq!(e.to_string(), "crank must be a finite number, got NaN");
         let e = Error::Negative {
-            name: "friction",
+            name: Field::Friction,
             value: -0.5,
         };
         assert_eq!(e.to_string(), "friction must not be negative, got -0.5");
     }
 
     #[test]
+    fn invalid_input_reads_as_its_message() {
+        let e = Error::invalid(Input::Layers, "unknown layer 'gears'".into());
+        assert_eq!(e.to_string(), "unknown layer 'gears'");
+        assert_eq!(Input::Data.to_string(), "data file");
+        assert_eq!(Input::Scene.to_string(), "scene file");
+        assert_eq!(Input::Indicator.to_string(), "indicator diagram");
+        assert_eq!(Input::Unit.to_string(), "unit name");
+    }
+
+    #[test]
+    fn only_errors_of_the_file_s_kind_name_the_file() {
+        let path = std::path::Path::new("runs.csv");
+        let data = Error::invalid(
+            Input::Data,
+            "data line 3: 'x' is not a finite number".into(),
+        );
+        assert_eq!(
+            data.in_file(Input::Data, path).to_string(),
+            "runs.csv: data line 3: 'x' is not a finite number"
+        );
+        // The kind decides, not the text: a message that happens to start
+        // with "data" about another input is left alone.
+        let other = Error::invalid(
+            Input::Calibration,
+            "data points: a line fit needs two".into(),
+        );
+        assert_eq!(
+            other.clone().in_file(Input::Data, path),
+            other,
+            "only the data file's errors"
+        );
+        let field = Error::NotPositive {
+            name: Field::Crank,
+            value: 0.0,
+        };
+        assert_eq!(field.clone().in_file(Input::Data, path), field);
+        // An indicator diagram read as a figure's data is the data file.
+        let indicator = Error::invalid(Input::Indicator, "data: no rows".into()).about(Input::Data);
+        assert_eq!(
+            indicator.in_file(Input::Data, path).to_string(),
+            "runs.csv: data: no rows"
+        );
+    }
+
+    #[test]
     fn quoted_newlines_are_escaped() {
         // Found by fuzzing: a layer name "a\nb" in a scene file.
-        let e = Error::Parse("unknown variant `a\nb\r`".into()).one_line();
+        let e = Error::invalid(Input::Scene, "unknown variant `a\nb\r`".into()).one_line();
         assert_eq!(e.to_string(), "unknown variant `a\\nb\\r`");
     }
 }

@@ -6,7 +6,7 @@
 //! byte past the limit, so `/dev/zero` or a huge file costs at most the
 //! limit in memory, and the message names the file and the limit.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use std::io::Read;
 use std::path::Path;
 use std::sync::Arc;
@@ -18,20 +18,21 @@ pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 /// stops at 100 000 rows).
 pub const MAX_DATA_BYTES: u64 = 4 << 20;
 
-/// Reads the UTF-8 text of `path`, at most `limit` bytes. `what` names the
-/// file in messages (`scene file`, `data file`).
+/// Reads the UTF-8 text of `path`, at most `limit` bytes, a file of kind
+/// `input`, which messages name (`scene file`, `data file`); text that is
+/// not UTF-8 is an [`Error::Invalid`] about `input`.
 ///
 /// Errors: the file cannot be opened or read (a directory, a missing
 /// file), it holds more than `limit` bytes (only `limit + 1` are ever
 /// read), or it is not UTF-8 text.
-pub fn read_text(path: &Path, limit: u64, what: &str) -> Result<String> {
+pub fn read_text(path: &Path, limit: u64, input: Input) -> Result<String> {
     let shown = path.display();
     let file = std::fs::File::open(path).map_err(|e| Error::Io {
-        message: format!("cannot read {what} {shown}: {e}"),
+        message: format!("cannot read {input} {shown}: {e}"),
         path: Some(path.to_path_buf()),
         source: Some(Arc::new(e)),
     })?;
-    read_text_from(file, limit, &format!("{what} {shown}")).map_err(|e| match e {
+    read_text_from(file, limit, input, &format!("{input} {shown}")).map_err(|e| match e {
         Error::Io {
             message, source, ..
         } => Error::Io {
@@ -43,15 +44,18 @@ pub fn read_text(path: &Path, limit: u64, what: &str) -> Result<String> {
     })
 }
 
-/// [`read_text`] for any reader (standard input, a pipe); `what` names the
-/// source in messages.
-pub fn read_text_from(reader: impl Read, limit: u64, what: &str) -> Result<String> {
+/// [`read_text`] for any reader (standard input, a pipe) of kind `input`;
+/// `what` names the source in messages.
+pub fn read_text_from(reader: impl Read, limit: u64, input: Input, what: &str) -> Result<String> {
     let bytes = read_bytes_from(reader, limit, what)?;
     String::from_utf8(bytes).map_err(|e| {
-        Error::Parse(format!(
-            "{what} is not UTF-8 text (byte {})",
-            e.utf8_error().valid_up_to()
-        ))
+        Error::invalid(
+            input,
+            format!(
+                "{what} is not UTF-8 text (byte {})",
+                e.utf8_error().valid_up_to()
+            ),
+        )
     })
 }
 
@@ -98,7 +102,7 @@ mod tests {
     #[test]
     fn a_missing_file_keeps_its_path_and_the_system_error() {
         let path = Path::new("/nonexistent/scene.toml");
-        let e = read_text(path, 10, "scene file").unwrap_err();
+        let e = read_text(path, 10, Input::Scene).unwrap_err();
         assert!(
             e.to_string()
                 .starts_with("cannot read scene file /nonexistent/scene.toml: "),
@@ -122,20 +126,33 @@ mod tests {
     #[test]
     fn stops_one_byte_past_the_limit() {
         let endless = std::io::repeat(0);
-        let err = read_text_from(endless, 1 << 20, "data file z").unwrap_err();
+        let err = read_text_from(endless, 1 << 20, Input::Data, "data file z").unwrap_err();
         assert_eq!(
             err.to_string(),
             "data file z is larger than 1 MiB (the most this program reads)"
         );
-        assert_eq!(read_text_from(&b"abc"[..], 3, "f").unwrap(), "abc");
-        assert!(read_text_from(&b"abcd"[..], 3, "f").is_err());
+        assert_eq!(
+            read_text_from(&b"abc"[..], 3, Input::Data, "f").unwrap(),
+            "abc"
+        );
+        assert!(read_text_from(&b"abcd"[..], 3, Input::Data, "f").is_err());
     }
 
     #[test]
     fn binary_and_missing_files_are_errors() {
-        let err = read_text_from(&[0x61, 0xff][..], 10, "scene file s").unwrap_err();
+        let err = read_text_from(&[0x61, 0xff][..], 10, Input::Scene, "scene file s").unwrap_err();
         assert_eq!(err.to_string(), "scene file s is not UTF-8 text (byte 1)");
-        let err = read_text(Path::new("/nonexistent/x.toml"), 10, "scene file").unwrap_err();
+        assert!(
+            matches!(
+                err,
+                Error::Invalid {
+                    input: Input::Scene,
+                    ..
+                }
+            ),
+            "{err:?}"
+        );
+        let err = read_text(Path::new("/nonexistent/x.toml"), 10, Input::Scene).unwrap_err();
         assert!(
             err.to_string()
                 .starts_with("cannot read scene file /nonexistent/x.toml: ")

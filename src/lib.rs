@@ -81,7 +81,7 @@
 //!   ([`FigureName`], [`Layer`], [`Style`], [`Notation`], [`Font`],
 //!   [`catalogue::Fit`], [`Assembly`], [`table::Format`]) parses with
 //!   `str::parse` and writes its name with `Display`, and the two
-//!   round-trip; a wrong name is an [`Error::Parse`] listing the names.
+//!   round-trip; a wrong name is an [`Error::Invalid`] listing the names.
 //!   A [`Unit`] (any name within its rules) parses and writes the same way.
 //! - The results worth storing ([`Kinematics`],
 //!   [`analytic::approx::Approximation`], [`analytic::calibration::LineFit`],
@@ -163,7 +163,7 @@ pub use chain::{
     GrashofClass, Inversion, InversionPose, InvertedChain, LinkMotion, LinkRates, QuadricChain,
     QuadricPose, SlotConstruction, slot_convergence,
 };
-pub use error::{Error, Result};
+pub use error::{Error, Field, Input, Result};
 pub use figure::Style;
 pub use figure::{Figure, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
@@ -190,7 +190,7 @@ mod tests {
         for x in all {
             assert_eq!(x.to_string().parse::<T>().as_ref(), Ok(x), "{x}");
         }
-        let Err(Error::Parse(message)) = "no-such-name".parse::<T>() else {
+        let Err(Error::Invalid { message, .. }) = "no-such-name".parse::<T>() else {
             panic!("a wrong name is refused");
         };
         // The error names every value it would have taken.

@@ -226,7 +226,7 @@ fn parse_error(e: clap::Error) -> ExitCode {
         first.push_str("; ");
         first.push_str(tip);
     }
-    let first = slider_crank::Error::Parse(first).one_line();
+    let first = slider_crank::Error::invalid(slider_crank::Input::CommandLine, first).one_line();
     cli::output::say(&format!("slider-crank: {first} (see --help)"));
     ExitCode::from(REFUSED)
 }

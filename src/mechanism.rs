@@ -1,7 +1,7 @@
 //! The validated slider-crank mechanism and its pose at a crank angle.
 
 use crate::angle::Angle;
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Field, Result, finite, positive};
 use crate::geom::Point;
 
 /// Smallest crank radius and rod length accepted, in any unit.
@@ -30,7 +30,7 @@ pub struct SliderCrank {
     offset: f64,
 }
 
-pub(crate) fn in_range(name: &'static str, value: f64) -> Result<f64> {
+pub(crate) fn in_range(name: Field, value: f64) -> Result<f64> {
     if (MIN_LENGTH..=MAX_LENGTH).contains(&value) {
         Ok(value)
     } else {
@@ -50,9 +50,9 @@ impl SliderCrank {
     /// and [`MAX_LENGTH`], so that no product of lengths overflows or
     /// underflows).
     pub fn new(crank: f64, rod: f64, offset: f64) -> Result<Self> {
-        let crank = in_range("crank", positive("crank", crank)?)?;
-        let rod = in_range("rod", positive("rod", rod)?)?;
-        let offset = finite("offset", offset)?;
+        let crank = in_range(Field::Crank, positive(Field::Crank, crank)?)?;
+        let rod = in_range(Field::Rod, positive(Field::Rod, rod)?)?;
+        let offset = finite(Field::Offset, offset)?;
         let needed = crank + offset.abs();
         if rod <= needed || !needed.is_finite() {
             return Err(Error::RodTooShort {
@@ -367,11 +367,17 @@ mod tests {
         assert!(SliderCrank::new(f64::MAX, f64::MAX, f64::MAX).is_err());
         assert!(matches!(
             SliderCrank::new(1e300, 3e300, 0.0),
-            Err(Error::OutOfRange { name: "crank", .. })
+            Err(Error::OutOfRange {
+                name: Field::Crank,
+                ..
+            })
         ));
         assert!(matches!(
             SliderCrank::new(1e-300, 3e-300, 0.0),
-            Err(Error::OutOfRange { name: "crank", .. })
+            Err(Error::OutOfRange {
+                name: Field::Crank,
+                ..
+            })
         ));
         assert!(SliderCrank::new(1e-100, 3e-100, 0.0).is_ok());
         assert!(SliderCrank::new(1e99, 1e100, 0.0).is_ok());

@@ -6,7 +6,7 @@
 //! accelerations `<length>/s²`, torques `<force>·<length>`; angular rates
 //! are always rad/s and rad/s².
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use serde::{Deserialize, Deserializer, Serialize, Serializer};
 use std::borrow::Cow;
 use std::fmt;
@@ -47,9 +47,12 @@ impl Unit {
             .flat_map(char::escape_default)
             .collect();
         let bad = |why: &str| {
-            Err(Error::Parse(format!(
-                "invalid unit name '{shown}': {why} (a unit name is 1 to {MAX_UNIT_CHARS} printable characters without spaces or any of < > & \" ' * _ {{ }} \\ `, such as mm, in, N, lbf)"
-            )))
+            Err(Error::invalid(
+                Input::Unit,
+                format!(
+                    "invalid unit name '{shown}': {why} (a unit name is 1 to {MAX_UNIT_CHARS} printable characters without spaces or any of < > & \" ' * _ {{ }} \\ `, such as mm, in, N, lbf)"
+                ),
+            ))
         };
         if name.is_empty() {
             return bad("it is empty");

@@ -191,6 +191,63 @@ fn bad_diagram_input_is_one_line_with_exit_2_and_no_file() {
     assert!(err.contains("bad.csv") && err.contains("'seven'"), "{err}");
 }
 
+#[test]
+fn errors_about_the_data_file_name_it_and_no_others_do() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = |name: &str, text: &str| {
+        let path = dir.path().join(name);
+        std::fs::write(&path, text).unwrap();
+        path.to_str().unwrap().to_string()
+    };
+    let bad = file("bad.csv", "angle,force\n40,9.2\n50,seven\n");
+    let indicator = file(
+        "ind.csv",
+        "fraction,expansion,compression\n0,1,1\n0.5,1,1\n",
+    );
+    let one = file("one.csv", "force,strain\n1,2\n");
+    let good = file("good.csv", "angle,force\n40,9.2\n50,7\n");
+    let cases = [
+        // The data file's own errors, the indicator diagram read as a
+        // figure's data among them: the path first.
+        (
+            vec!["figure", "ng-fig-8-forces", "--data", &bad],
+            format!("{bad}: data line 3: 'seven' in column force is not a finite number"),
+        ),
+        (
+            vec!["figure", "turning-moment", "--data", &indicator],
+            format!(
+                "{indicator}: data: the indicator diagram's stroke fractions rise strictly from 0 to 1"
+            ),
+        ),
+        // The line fit through the data, and an option the figure does
+        // not take, are not errors of the data file: no path.
+        (
+            vec!["figure", "ng-fig-7-calibration", "--data", &one],
+            "a line fit needs at least 2 points, got 1".to_string(),
+        ),
+        (
+            vec![
+                "figure",
+                "ng-fig-8-forces",
+                "--data",
+                &good,
+                "--angle",
+                "30",
+            ],
+            "ng-fig-8-forces does not use --angle".to_string(),
+        ),
+    ];
+    for (args, says) in cases {
+        let out = run(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stderr),
+            format!("slider-crank: error: {says}\n"),
+            "{args:?}"
+        );
+    }
+}
+
 /// Standard output of a successful run, as text.
 fn svg_of(args: &[&str]) -> String {
     let out = run(args);

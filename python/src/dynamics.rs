@@ -15,7 +15,7 @@ use slider_crank::dynamics::{
 };
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::table::dynamics_json;
-use slider_crank::{Angle, SliderCrank};
+use slider_crank::{Angle, Input, SliderCrank};
 use std::path::PathBuf;
 
 /// An engine with its masses, gas force and crank speed, validated as
@@ -95,7 +95,7 @@ impl PyEngine {
         let m = SliderCrank::new(crank, rod, offset).map_err(py_err)?;
         let text = match &indicator {
             Some(path) => Some((
-                read_text(path, MAX_DATA_BYTES, "indicator diagram").map_err(py_err)?,
+                read_text(path, MAX_DATA_BYTES, Input::Indicator).map_err(py_err)?,
                 format!("indicator diagram {}", path.display()),
             )),
             None => None,

@@ -18,7 +18,7 @@ use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
-use slider_crank::{Angle, Error, FigureName, Kinematics, Layer, SliderCrank, Unit, Units};
+use slider_crank::{Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units};
 use std::path::{Path, PathBuf};
 
 mod chain;
@@ -284,7 +284,7 @@ fn figure(
     options.font = font.map(parse).transpose()?;
     options.data = data
         .as_ref()
-        .map(|p| read_text(p, MAX_DATA_BYTES, "data file"))
+        .map(|p| read_text(p, MAX_DATA_BYTES, Input::Data))
         .transpose()
         .map_err(py_err)?;
     options.fit = fit.map(parse).transpose()?;
@@ -301,11 +301,9 @@ fn figure(
     py.detach(|| {
         name.figure(&options)
             .map(|f| to_svg(&f))
-            .map_err(|e| match (&data, e) {
-                (Some(path), Error::Parse(m)) if m.starts_with("data") => {
-                    Error::Parse(format!("{}: {m}", path.display()))
-                }
-                (_, e) => e,
+            .map_err(|e| match &data {
+                Some(path) => e.in_file(Input::Data, path),
+                None => e,
             })
     })
     .map_err(py_err)
@@ -477,7 +475,7 @@ fn table(
     let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
     if decimals > 17 {
         return Err(py_err(Error::OutOfRange {
-            name: "decimals",
+            name: Field::Decimals,
             value: decimals as f64,
             reason: "at most 17 decimals are meaningful in f64".into(),
         }));
@@ -545,7 +543,7 @@ fn table(
             let torque = torque.unwrap_or(NG_TABLE_2_TORQUE);
             if !torque.is_finite() {
                 return Err(py_err(Error::NotFinite {
-                    name: "torque",
+                    name: Field::Torque,
                     value: torque,
                 }));
             }

@@ -1,6 +1,6 @@
 //! Least-squares calibration lines (Ng, Table 1 and Fig. 7).
 
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Field, Input, Result, finite};
 use crate::number::plain;
 
 /// Ng's Table 1: force in newtons (weights of 0.25 … 1.5 kg) against strain
@@ -40,14 +40,17 @@ impl LineFit {
 
 fn check(points: &[(f64, f64)], needed: usize) -> Result<()> {
     if points.len() < needed {
-        return Err(Error::Parse(format!(
-            "a line fit needs at least {needed} points, got {}",
-            points.len()
-        )));
+        return Err(Error::invalid(
+            Input::Calibration,
+            format!(
+                "a line fit needs at least {needed} points, got {}",
+                points.len()
+            ),
+        ));
     }
     for &(x, y) in points {
-        finite("x", x)?;
-        finite("y", y)?;
+        finite(Field::X, x)?;
+        finite(Field::Y, y)?;
     }
     Ok(())
 }
@@ -101,11 +104,14 @@ fn scaled(points: &[(f64, f64)]) -> (Vec<(f64, f64)>, f64, f64) {
 fn unscaled(fit: LineFit, sx: f64, sy: f64) -> Result<LineFit> {
     let slope = fit.slope / sx * sy;
     if !slope.is_finite() {
-        return Err(Error::Parse(format!(
-            "the fitted line's slope exceeds the largest number: y of about {} against x of about {}",
-            plain(sy),
-            plain(sx)
-        )));
+        return Err(Error::invalid(
+            Input::Calibration,
+            format!(
+                "the fitted line's slope exceeds the largest number: y of about {} against x of about {}",
+                plain(sy),
+                plain(sx)
+            ),
+        ));
     }
     Ok(LineFit {
         slope,
@@ -129,7 +135,8 @@ fn fit_with_intercept_scaled(points: &[(f64, f64)]) -> Result<LineFit> {
     let sxx: f64 = points.iter().map(|p| (p.0 - mx) * (p.0 - mx)).sum();
     let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
     if sxx == 0.0 {
-        return Err(Error::Parse(
+        return Err(Error::invalid(
+            Input::Calibration,
             "a line fit needs two distinct x values".into(),
         ));
     }
@@ -156,7 +163,8 @@ fn fit_through_origin_scaled(points: &[(f64, f64)]) -> Result<LineFit> {
     let sxx: f64 = points.iter().map(|p| p.0 * p.0).sum();
     let sxy: f64 = points.iter().map(|p| p.0 * p.1).sum();
     if sxx == 0.0 {
-        return Err(Error::Parse(
+        return Err(Error::invalid(
+            Input::Calibration,
             "a fit through the origin needs some x ≠ 0".into(),
         ));
     }

@@ -1,6 +1,6 @@
 //! Exact kinematics of the slider and the rod at constant crank speed.
 
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Field, Result, finite};
 use crate::mechanism::Pose;
 
 /// Largest crank speed |ω| accepted, in rad/s (any unit of time: choose one
@@ -17,10 +17,10 @@ pub const MIN_OMEGA: f64 = 1e-100;
 /// [`MAX_OMEGA`].
 #[inline]
 pub fn check_omega(omega: f64) -> Result<f64> {
-    let omega = finite("omega", omega)?;
+    let omega = finite(Field::Omega, omega)?;
     if omega.abs() > MAX_OMEGA {
         return Err(Error::OutOfRange {
-            name: "omega",
+            name: Field::Omega,
             value: omega,
             reason: format!(
                 "a crank speed is at most {MAX_OMEGA:e} rad/s (give it per a shorter unit of time)"
@@ -29,7 +29,7 @@ pub fn check_omega(omega: f64) -> Result<f64> {
     }
     if omega != 0.0 && omega.abs() < MIN_OMEGA {
         return Err(Error::OutOfRange {
-            name: "omega",
+            name: Field::Omega,
             value: omega,
             reason: format!(
                 "a crank speed is 0 or at least {MIN_OMEGA:e} rad/s (give it per a longer unit of time)"
@@ -52,10 +52,10 @@ pub const MAX_RPM: f64 = 9e100;
 /// `--rpm` is: finite, |rpm| ≤ [`MAX_RPM`], and the ω it gives within
 /// [`check_omega`]'s range (a tiny non-zero speed is refused).
 pub fn omega_from_rpm(rpm: f64) -> Result<f64> {
-    let rpm = finite("rpm", rpm)?;
+    let rpm = finite(Field::Rpm, rpm)?;
     if rpm.abs() > MAX_RPM {
         return Err(Error::OutOfRange {
-            name: "rpm",
+            name: Field::Rpm,
             value: rpm,
             reason: format!("a crank speed is at most {MAX_RPM:e} rpm"),
         });
@@ -121,7 +121,7 @@ impl Kinematics {
             Ok(k)
         } else {
             Err(Error::OutOfRange {
-                name: "omega",
+                name: Field::Omega,
                 value: omega,
                 reason: format!(
                     "the accelerations at θ = {}° exceed the largest number (about 1.8e308): give ω per a longer unit of time or the lengths in a smaller unit",

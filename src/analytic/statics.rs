@@ -7,7 +7,7 @@
 //! along +x that holds the crank torque T (counter-clockwise positive).
 
 use crate::angle::Angle;
-use crate::error::{Error, Result, finite, non_negative};
+use crate::error::{Error, Field, Result, finite, non_negative};
 use crate::mechanism::Pose;
 use crate::number::plain;
 
@@ -63,7 +63,7 @@ pub(crate) fn om_per_crank(angle: Angle, tan_phi: f64) -> f64 {
 /// or the quotient is beyond the largest f64. The one division behind
 /// [`slider_force`] and [`crate::construct::TorqueLine::slider_force`].
 pub(crate) fn force_over_arm(torque: f64, arm: Arm, angle: Angle) -> Result<Option<f64>> {
-    let torque = finite("torque", torque)?;
+    let torque = finite(Field::Torque, torque)?;
     let f = if arm.om != 0.0 {
         torque / arm.om
     } else if arm.per_crank == 0.0 {
@@ -83,7 +83,7 @@ pub(crate) fn force_over_arm(torque: f64, arm: Arm, angle: Angle) -> Result<Opti
         format!("OM = {:e} r, below the smallest number", arm.per_crank)
     };
     Err(Error::OutOfRange {
-        name: "torque",
+        name: Field::Torque,
         value: torque,
         reason: format!(
             "the slider force T/OM at θ = {}° ({om}) exceeds the largest number (about 1.8e308): {UNIT_ADVICE}",
@@ -116,13 +116,13 @@ pub fn side_thrust(pose: &Pose, slider_force: f64) -> Result<f64> {
 /// finite or the product is beyond the largest f64. The one product
 /// behind [`side_thrust`] and [`crate::construct::TorqueLine::side_thrust`].
 pub(crate) fn thrust(slider_force: f64, tan_phi: f64, angle: Angle) -> Result<f64> {
-    let slider_force = finite("slider force", slider_force)?;
+    let slider_force = finite(Field::SliderForce, slider_force)?;
     let fs = slider_force * tan_phi;
     if fs.is_finite() {
         Ok(fs)
     } else {
         Err(Error::OutOfRange {
-            name: "slider force",
+            name: Field::SliderForce,
             value: slider_force,
             reason: format!(
                 "the side thrust F_p tan φ at θ = {}° (tan φ = {tan_phi:e}) exceeds the largest number (about 1.8e308): {UNIT_ADVICE}",
@@ -150,8 +150,8 @@ pub enum Friction {
 /// the line of stroke (θ in 180°…360°), where friction again opposes the
 /// impending motion.
 pub fn with_friction(pose: &Pose, slider_force: f64, mu: f64) -> Result<Friction> {
-    let mu = non_negative("friction", mu)?;
-    let slider_force = finite("slider force", slider_force)?;
+    let mu = non_negative(Field::Friction, mu)?;
+    let slider_force = finite(Field::SliderForce, slider_force)?;
     let k = mu * pose.tan_obliquity().abs();
     Ok(if k >= 1.0 {
         Friction::SelfLocking(k)
@@ -163,10 +163,10 @@ pub fn with_friction(pose: &Pose, slider_force: f64, mu: f64) -> Result<Friction
 /// Coefficient of friction from the tilt at which a block first slides,
 /// μ = tan(tilt) (Ng eq. 10). The tilt must be in [0°, 90°).
 pub fn mu_from_tilt_degrees(tilt: f64) -> Result<f64> {
-    let tilt = non_negative("tilt", tilt)?;
+    let tilt = non_negative(Field::Tilt, tilt)?;
     if tilt >= 90.0 {
         return Err(Error::OutOfRange {
-            name: "tilt",
+            name: Field::Tilt,
             value: tilt,
             reason: "a block slides before the plane is vertical; give a tilt below 90°".into(),
         });

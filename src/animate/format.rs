@@ -1,7 +1,7 @@
 //! The two files an animation is written as, told by the file's
 //! extension.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use std::path::Path;
 
 /// The format of an animation's file.
@@ -42,7 +42,7 @@ impl AnimationFormat {
         .into_iter()
         .find(|f| ext.eq_ignore_ascii_case(f.extension()))
         .ok_or_else(|| {
-            Error::Parse(format!(
+            Error::invalid(Input::OutputFile, format!(
                 "cannot write {}: .{} is not an animation format: give a file ending in {FORMATS}",
                 path.display(),
                 ext.to_string_lossy()

@@ -2,7 +2,7 @@
 //! SVG or with its ids made its own, to sit beside the others in one
 //! document.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::figure::{Figure, PageUnit};
 use crate::render::{SvgOptions, metadata_of, svg_body, to_svg};
 use crate::{angle::Angle, scene::Scene};
@@ -148,7 +148,9 @@ impl Series {
                 }
             }
         }
-        survey.ok_or_else(|| Error::Parse("an animation has at least one frame".into()))
+        survey.ok_or_else(|| {
+            Error::invalid(Input::Angles, "an animation has at least one frame".into())
+        })
     }
 
     /// The frames in order, each drawn and written when asked for.
@@ -212,7 +214,9 @@ pub(super) fn draw(
         frames.push(Frame::of(angle, figure));
         progress(frames.len(), angles.len());
     }
-    let sheet = sheet.ok_or_else(|| Error::Parse("an animation has at least one frame".into()))?;
+    let sheet = sheet.ok_or_else(|| {
+        Error::invalid(Input::Angles, "an animation has at least one frame".into())
+    })?;
     Ok((frames, sheet))
 }
 

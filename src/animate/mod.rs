@@ -25,7 +25,7 @@ mod svg;
 pub use format::AnimationFormat;
 pub use frames::{Frame, MAX_EVALUATIONS};
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::figure::PageUnit;
 use crate::{angle::Angle, scene::Scene};
 
@@ -311,13 +311,13 @@ fn split(skeleton: &str) -> (&str, &str) {
 fn check_period(period: f64) -> Result<f64> {
     if !period.is_finite() {
         return Err(Error::NotFinite {
-            name: "period",
+            name: Field::Period,
             value: period,
         });
     }
     if period <= 0.0 || period > MAX_PERIOD {
         return Err(Error::OutOfRange {
-            name: "period",
+            name: Field::Period,
             value: period,
             reason: format!("a revolution takes more than 0 and at most {MAX_PERIOD} seconds"),
         });
@@ -333,13 +333,13 @@ fn first_angle(scene: &Scene) -> Result<Angle> {
         .angles()
         .first()
         .copied()
-        .ok_or_else(|| Error::Parse("a scene needs at least one angle".into()))
+        .ok_or_else(|| Error::invalid(Input::Angles, "a scene needs at least one angle".into()))
 }
 
 fn angles(start: Angle, count: usize) -> Result<Vec<Angle>> {
     if !(MIN_FRAMES..=MAX_FRAMES).contains(&count) {
         return Err(Error::OutOfRange {
-            name: "frames",
+            name: Field::Frames,
             value: count as f64,
             reason: format!("an animation has {MIN_FRAMES} to {MAX_FRAMES} frames"),
         });
@@ -428,7 +428,7 @@ mod tests {
         let mut calls = 0;
         let mut failing = |_: &str| {
             calls += 1;
-            Err(Error::Parse("full".into()))
+            Err(Error::invalid(Input::Angles, "full".into()))
         };
         let e = write(
             &engine(),

@@ -6,7 +6,7 @@
 use super::specs::Group;
 use super::specs::{At, Kind, Source};
 use super::{FigureName, FigureOptions, Setting, diagrams, scene_toml};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
@@ -31,10 +31,13 @@ impl FigureName {
                 let hint = Self::nearest(name)
                     .map(|f| format!(": did you mean '{}'?", f.name()))
                     .unwrap_or_default();
-                Error::Parse(format!(
-                    "unknown figure '{name}'{hint} (the figures: {})",
-                    Self::ALL.map(|f| f.name()).join(", ")
-                ))
+                Error::invalid(
+                    Input::FigureName,
+                    format!(
+                        "unknown figure '{name}'{hint} (the figures: {})",
+                        Self::ALL.map(|f| f.name()).join(", ")
+                    ),
+                )
             })
     }
 
@@ -105,7 +108,7 @@ impl FigureName {
     pub fn angle(&self, degrees: f64) -> Result<Angle> {
         if matches!(self.spec().at, At::Tilt(_)) && !(degrees > 0.0 && degrees < 90.0) {
             return Err(Error::OutOfRange {
-                name: "angle",
+                name: Field::Angle,
                 value: degrees,
                 reason: "the tilt of the plane is between 0° and 90°".into(),
             });
@@ -188,11 +191,10 @@ impl FigureName {
     /// naming it as on the command line.
     pub(crate) fn refuse_unused(&self, options: &FigureOptions) -> Result<()> {
         match self.unused(options) {
-            Some(bad) => Err(Error::Parse(format!(
-                "{} does not use {}",
-                self.name(),
-                bad.flag()
-            ))),
+            Some(bad) => Err(Error::invalid(
+                Input::Options,
+                format!("{} does not use {}", self.name(), bad.flag()),
+            )),
             None => Ok(()),
         }
     }
@@ -218,10 +220,10 @@ impl FigureName {
         }
         if let Some(layers) = &options.layers {
             if layers.is_empty() {
-                return Err(Error::Parse(format!(
-                    "{}: the list of layers is empty",
-                    self.name()
-                )));
+                return Err(Error::invalid(
+                    Input::Layers,
+                    format!("{}: the list of layers is empty", self.name()),
+                ));
             }
             scene = scene.with_layers(layers.iter().copied());
         }

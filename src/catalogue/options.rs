@@ -1,6 +1,6 @@
 //! What may be changed in a named figure ([`super::FigureName::figure`]).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::figure::{Font, PageLength, PageUnit, Style, Title};
 use crate::scene::Page;
 use crate::{angle::Angle, mechanism::SliderCrank, scene::Layer, scene::Notation, units::Unit};
@@ -36,9 +36,10 @@ impl Fit {
             .into_iter()
             .find(|f| f.name() == name)
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown fit '{name}': expected origin, intercept or both"
-                ))
+                Error::invalid(
+                    Input::Fit,
+                    format!("unknown fit '{name}': expected origin, intercept or both"),
+                )
             })
     }
 }
@@ -158,7 +159,10 @@ pub(crate) enum Setting {
 
 impl Setting {
     /// How a message names it, as on the command line (`--angle`,
-    /// `mechanism (--crank, --rod, --offset)`).
+    /// `mechanism (--crank, --rod, --offset)`). It stays here rather than
+    /// in the command line's code because the library's own refusal
+    /// ([`super::FigureName::figure`]: `rod-motion does not use --data`)
+    /// is what every caller prints, the Python package among them.
     pub(crate) fn flag(self) -> &'static str {
         match self {
             Setting::Mechanism => "mechanism (--crank, --rod, --offset)",

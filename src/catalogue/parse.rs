@@ -5,7 +5,7 @@
 
 use super::{FigureName, FigureOptions, SceneFile, Setting};
 use crate::construct::CouplerPoint;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::figure::{Font, PageLength, Style, Title};
 use crate::scene::{Layer, Notation, Page, Scene, valid};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Unit};
@@ -217,7 +217,7 @@ fn check_version(text: &str) -> Result<()> {
             )
         }
     };
-    Err(located(text, version.span(), message))
+    Err(located(Input::Scene, text, version.span(), message))
 }
 
 /// 1-based line and column of byte offset `at` in `text`.
@@ -234,31 +234,37 @@ fn line_column(text: &str, at: usize) -> (usize, usize) {
     (line, column)
 }
 
-/// A TOML syntax or key error of `text`, placed at its line and column
-/// when the parser gives a place.
-pub(crate) fn toml_error(text: &str, e: &toml::de::Error) -> Error {
+/// A TOML syntax or key error of `text`, a file of kind `input`, placed
+/// at its line and column when the parser gives a place.
+pub(crate) fn toml_error(input: Input, text: &str, e: &toml::de::Error) -> Error {
     let message = e.message().trim().to_string();
     match e.span() {
-        Some(span) => located(text, span, message),
-        None => Error::Parse(message),
+        Some(span) => located(input, text, span, message),
+        None => Error::invalid(input, message),
     }
 }
 
-/// A parse error whose message starts with the line and column of `span`
-/// in `text` (scene files and gallery manifests alike).
-pub(crate) fn located(text: &str, span: Range<usize>, message: impl std::fmt::Display) -> Error {
+/// An [`Error::Invalid`] about `input` whose message starts with the line
+/// and column of `span` in `text` (scene files and gallery manifests
+/// alike).
+pub(crate) fn located(
+    input: Input,
+    text: &str,
+    span: Range<usize>,
+    message: impl std::fmt::Display,
+) -> Error {
     let (line, column) = line_column(text, span.start);
-    Error::Parse(format!("line {line}, column {column}: {message}"))
+    Error::invalid(input, format!("line {line}, column {column}: {message}"))
 }
 
-/// Runs a validation, locating its error at `span`.
+/// Runs a validation, locating its error at `span` in the scene file.
 fn at<T>(text: &str, span: Range<usize>, r: Result<T>) -> Result<T> {
-    r.map_err(|e| located(text, span, e))
+    r.map_err(|e| located(Input::Scene, text, span, e))
 }
 
 pub(super) fn parse(text: &str) -> Result<SceneFile> {
     check_version(text)?;
-    let file: File = toml::from_str(text).map_err(|e| toml_error(text, &e))?;
+    let file: File = toml::from_str(text).map_err(|e| toml_error(Input::Scene, text, &e))?;
     let start = match &file.figure {
         Some(name) => {
             let figure = at(text, name.span(), FigureName::from_name(name.get_ref()))?;
@@ -279,12 +285,18 @@ fn mechanism(text: &str, m: &MechanismFile) -> Result<SliderCrank> {
     let offset = m.offset.as_ref().map_or(0.0, |o| *o.get_ref());
     let built = SliderCrank::new(*m.crank.get_ref(), *m.rod.get_ref(), offset);
     let span = match &built {
-        Err(Error::NotPositive { name: "crank", .. } | Error::NotFinite { name: "crank", .. }) => {
-            m.crank.span()
-        }
-        Err(Error::NotFinite { name: "offset", .. }) => {
-            m.offset.as_ref().map_or(m.rod.span(), |o| o.span())
-        }
+        Err(
+            Error::NotPositive {
+                name: Field::Crank, ..
+            }
+            | Error::NotFinite {
+                name: Field::Crank, ..
+            },
+        ) => m.crank.span(),
+        Err(Error::NotFinite {
+            name: Field::Offset,
+            ..
+        }) => m.offset.as_ref().map_or(m.rod.span(), |o| o.span()),
         _ => m.rod.span(),
     };
     at(text, span, built)
@@ -300,6 +312,7 @@ fn units(text: &str, file: &File) -> Result<(Option<Unit>, Option<Unit>)> {
             new, old,
         ) {
             (Some(n), Some(_)) => Err(located(
+                Input::Scene,
                 text,
                 n.span(),
                 format!("give the {key} unit once: `[units] {key}` replaces the older `{was}`"),
@@ -343,8 +356,8 @@ fn page(text: &str, p: &PageFile, page: &Page) -> Result<Page> {
             | Error::NotFinite { name, .. }
             | Error::OutOfRange { name, .. },
         ) => match *name {
-            "page width" => p.width.as_ref().map(|s| s.span()),
-            "page height" => p.height.as_ref().map(|s| s.span()),
+            Field::PageWidth => p.width.as_ref().map(|s| s.span()),
+            Field::PageHeight => p.height.as_ref().map(|s| s.span()),
             _ => p.margin.as_ref().map(|s| s.span()),
         },
         _ => None,
@@ -359,6 +372,7 @@ fn page(text: &str, p: &PageFile, page: &Page) -> Result<Page> {
 fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
     match (&file.rpm, &file.omega) {
         (Some(_), Some(w)) => Err(located(
+            Input::Scene,
             text,
             w.span(),
             "give either `rpm` or `omega`, not both",
@@ -380,13 +394,17 @@ fn check_name(name: &str) -> Result<()> {
         .find(|&c| c.is_control() || crate::figure::is_noncharacter(c));
     match bad {
         None => Ok(()),
-        Some(c) if c.is_control() => Err(Error::Parse(
+        Some(c) if c.is_control() => Err(Error::invalid(
+            Input::Scene,
             "invalid name: it holds a control character (a name is one line)".into(),
         )),
-        Some(c) => Err(Error::Parse(format!(
-            "invalid name: it holds the non-character U+{:04X} (not text, and not allowed in SVG)",
-            u32::from(c)
-        ))),
+        Some(c) => Err(Error::invalid(
+            Input::Scene,
+            format!(
+                "invalid name: it holds the non-character U+{:04X} (not text, and not allowed in SVG)",
+                u32::from(c)
+            ),
+        )),
     }
 }
 
@@ -399,6 +417,7 @@ fn no_dynamics(text: &str, file: &File) -> Result<()> {
     ];
     match keys.into_iter().find_map(|(k, s)| s.map(|s| (k, s))) {
         Some((key, span)) => Err(located(
+            Input::Scene,
             text,
             span,
             format!(
@@ -445,6 +464,7 @@ fn posed(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
     match (&file.angle, &file.angles) {
         (Some(_), Some(b)) => {
             return Err(located(
+                Input::Scene,
                 text,
                 b.span(),
                 "give either `angle` or `angles`, not both",
@@ -475,7 +495,12 @@ fn styled(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
     if let Some(layers) = &file.layers {
         // An empty list would draw a blank page: refused as `--layers ''`.
         if layers.get_ref().is_empty() {
-            return Err(located(text, layers.span(), "layers names no layer"));
+            return Err(located(
+                Input::Scene,
+                text,
+                layers.span(),
+                "layers names no layer",
+            ));
         }
         scene = scene.with_layers(layers.get_ref().iter().copied());
     }
@@ -538,6 +563,7 @@ fn refuse_scene_keys(text: &str, file: &File, name: FigureName) -> Result<()> {
     for (key, span) in scene_only {
         if let Some(span) = span {
             return Err(located(
+                Input::Scene,
                 text,
                 span,
                 format!(
@@ -562,6 +588,7 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
             Ok(())
         } else {
             Err(located(
+                Input::Scene,
                 text,
                 span,
                 format!("{} does not use `{key}`", name.name()),
@@ -584,6 +611,7 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
         refuse(Setting::Speed, key, span.clone())?;
         if !(omega > 0.0 && omega.is_finite()) {
             return Err(located(
+                Input::Scene,
                 text,
                 span,
                 "the diagrams are drawn for a crank turning counter-clockwise: give a positive speed",

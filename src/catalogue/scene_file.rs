@@ -1,7 +1,7 @@
 //! What a scene file describes: a mechanism figure or a named diagram.
 
 use super::{FigureName, FigureOptions, parse};
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::figure::Figure;
 use crate::scene::Scene;
 
@@ -45,11 +45,14 @@ impl SceneFile {
     pub fn into_scene(self) -> Result<Scene> {
         match self {
             SceneFile::Mechanism(scene) => Ok(scene),
-            SceneFile::Diagram(name, _) => Err(Error::Parse(format!(
-                "'{}' is a diagram; a scene starts from a mechanism figure ({})",
-                name.name(),
-                FigureName::SCENES.map(|s| s.name()).join(", ")
-            ))),
+            SceneFile::Diagram(name, _) => Err(Error::invalid(
+                Input::FigureName,
+                format!(
+                    "'{}' is a diagram; a scene starts from a mechanism figure ({})",
+                    name.name(),
+                    FigureName::SCENES.map(|s| s.name()).join(", ")
+                ),
+            )),
         }
     }
 

@@ -3,7 +3,7 @@
 
 use super::quadric::{Assembly, QuadricChain};
 use crate::angle::Angle;
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Field, Result, finite};
 use crate::geom::{Direction, Intersection, Point, Vector, cross, perp};
 use crate::mechanism::SliderCrank;
 
@@ -39,17 +39,17 @@ impl CylindricChain {
     /// radius is an error that names the bound (the far end of the slot's
     /// circle would come within reach of the rod).
     pub fn new(mechanism: SliderCrank, slot_radius: f64) -> Result<Self> {
-        let rho = finite("slot radius", slot_radius)?;
+        let rho = finite(Field::SlotRadius, slot_radius)?;
         if rho == 0.0 {
             return Err(Error::NotPositive {
-                name: "|slot radius|",
+                name: Field::SlotRadiusSize,
                 value: rho,
             });
         }
         let bound = Self::bound(&mechanism, rho.signum());
         if rho.abs() <= bound {
             return Err(Error::OutOfRange {
-                name: "slot radius",
+                name: Field::SlotRadius,
                 value: rho,
                 reason: format!(
                     "the crank turns fully only when |slot radius| > (rod + crank {} offset)/2 = {bound}",
@@ -66,7 +66,7 @@ impl CylindricChain {
     /// The slot of curvature `curvature` = 1/ρ (0: the straight slot);
     /// errors as [`CylindricChain::new`].
     pub fn with_curvature(mechanism: SliderCrank, curvature: f64) -> Result<Self> {
-        let kappa = finite("slot curvature", curvature)?;
+        let kappa = finite(Field::SlotCurvature, curvature)?;
         if kappa == 0.0 {
             return Ok(Self::straight(mechanism));
         }

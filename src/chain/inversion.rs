@@ -12,7 +12,7 @@
 use super::centres::ChainCentres;
 use crate::angle::Angle;
 use crate::construct::Link;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::geom::{Point, Vector};
 use crate::mechanism::{Pose, SliderCrank};
 use std::f64::consts::PI;
@@ -56,7 +56,7 @@ impl Inversion {
             3 => Ok(Inversion::Rod),
             4 => Ok(Inversion::Slider),
             _ => Err(Error::OutOfRange {
-                name: "inversion",
+                name: Field::Inversion,
                 value: n as f64,
                 reason: "the inversions are numbered 1 (frame d fixed), 2 (crank a), 3 (rod b), 4 (slider c)".into(),
             }),

@@ -1,7 +1,7 @@
 //! The quadric crank chain (four-bar), textbook §34, Fig. 60 (a).
 
 use crate::angle::Angle;
-use crate::error::{Error, Result, positive};
+use crate::error::{Error, Field, Input, Result, positive};
 use crate::geom::{Point, Vector, cross, perp};
 use crate::mechanism::in_range;
 use std::f64::consts::PI;
@@ -53,9 +53,10 @@ impl Assembly {
             .into_iter()
             .find(|a| a.name() == name)
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown assembly '{name}': expected open or crossed"
-                ))
+                Error::invalid(
+                    Input::Assembly,
+                    format!("unknown assembly '{name}': expected open or crossed"),
+                )
             })
     }
 
@@ -181,13 +182,13 @@ impl QuadricChain {
         frame: f64,
         tolerance: f64,
     ) -> Result<Self> {
-        let a = in_range("crank", positive("crank", crank)?)?;
-        let b = in_range("coupler", positive("coupler", coupler)?)?;
-        let c = in_range("lever", positive("lever", lever)?)?;
-        let d = in_range("frame", positive("frame", frame)?)?;
+        let a = in_range(Field::Crank, positive(Field::Crank, crank)?)?;
+        let b = in_range(Field::Coupler, positive(Field::Coupler, coupler)?)?;
+        let c = in_range(Field::Lever, positive(Field::Lever, lever)?)?;
+        let d = in_range(Field::Frame, positive(Field::Frame, frame)?)?;
         if !(0.0..=1e-3).contains(&tolerance) {
             return Err(Error::OutOfRange {
-                name: "tolerance",
+                name: Field::Tolerance,
                 value: tolerance,
                 reason: "give a relative tolerance between 0 and 1e-3".into(),
             });
@@ -196,7 +197,7 @@ impl QuadricChain {
         let rest = a + b + c + d - longest;
         if longest >= rest {
             return Err(Error::OutOfRange {
-                name: "longest link",
+                name: Field::LongestLink,
                 value: longest,
                 reason: format!(
                     "the longest link must be shorter than the other three together ({rest}), else the chain cannot move"
@@ -366,7 +367,7 @@ impl QuadricPose {
         let tol = chain.tolerance * (b + c) * (b + c);
         if outer < -tol || inner < -tol {
             return Err(Error::OutOfRange {
-                name: "angle",
+                name: Field::Angle,
                 value: angle.degrees(),
                 reason: format!("the crank of this chain reaches only {}", describe(&chain)),
             });

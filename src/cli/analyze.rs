@@ -8,7 +8,7 @@ use slider_crank::construct::{Reading, Statics};
 use slider_crank::dynamics::{Engine, EnginePose};
 use slider_crank::geom::Point;
 use slider_crank::render::plain;
-use slider_crank::{Angle, Error, Result, SliderCrank, Units};
+use slider_crank::{Angle, Error, Input, Result, SliderCrank, Units};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
@@ -281,7 +281,8 @@ fn pretty(value: &impl serde::Serialize) -> Result<String> {
 /// and the request's size against `--max-cells`.
 fn refuse_or_guard(args: &AnalyzeArgs) -> Result<()> {
     if args.chain.is_set() && args.load.torque.is_some() {
-        return Err(Error::Parse(
+        return Err(Error::invalid(
+            Input::Options,
             "--torque applies to the engine only, not with --slot-radius, --links or --inversion"
                 .into(),
         ));

@@ -6,7 +6,7 @@ use super::output::Stdout;
 use clap::Args;
 use slider_crank::animate::{self, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
 use slider_crank::render::write_atomic_with;
-use slider_crank::{Error, FigureName, Result};
+use slider_crank::{Error, FigureName, Input, Result};
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
@@ -61,9 +61,10 @@ pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
         } else {
             "--fit"
         };
-        return Err(Error::Parse(format!(
-            "animate takes no {flag}: the mechanism figures draw no measured data"
-        )));
+        return Err(Error::invalid(
+            Input::Options,
+            format!("animate takes no {flag}: the mechanism figures draw no measured data"),
+        ));
     }
     let scene = options(&args.flags, args.name)
         .and_then(|o| args.name.scene_with(&o))?
@@ -91,11 +92,14 @@ pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
 /// The refusal of a diagram, naming the figures that are animated.
 fn not_animated(name: FigureName) -> Error {
     let names: Vec<&str> = FigureName::SCENES.iter().map(FigureName::name).collect();
-    Error::Parse(format!(
-        "{} is a diagram: animate draws the mechanism figures, {}",
-        name.name(),
-        names.join(", ")
-    ))
+    Error::invalid(
+        Input::FigureName,
+        format!(
+            "{} is a diagram: animate draws the mechanism figures, {}",
+            name.name(),
+            names.join(", ")
+        ),
+    )
 }
 
 /// The progress line on standard error, once drawing has taken more than

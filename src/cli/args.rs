@@ -2,7 +2,7 @@
 
 use clap::Args;
 use slider_crank::analytic::kinematics::{check_omega, omega_from_rpm};
-use slider_crank::{Error, Result, SliderCrank, Unit, Units, rpm_to_omega};
+use slider_crank::{Error, Input, Result, SliderCrank, Unit, Units, rpm_to_omega};
 
 /// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
 /// 3 ft rod: r = 0.5 ft, l = 3 ft, in line).
@@ -163,25 +163,31 @@ impl GuardArgs {
         if cells <= u128::from(self.max_cells) {
             return Ok(());
         }
-        Err(Error::Parse(format!(
-            "{command} asks for {rows_are} × {columns} {columns_are} = {cells} values, more than --max-cells {}: give --max-cells {cells} (or more) to compute them, or fewer angles",
-            self.max_cells
-        )))
+        Err(Error::invalid(
+            Input::Options,
+            format!(
+                "{command} asks for {rows_are} × {columns} {columns_are} = {cells} values, more than --max-cells {}: give --max-cells {cells} (or more) to compute them, or fewer angles",
+                self.max_cells
+            ),
+        ))
     }
 }
 
 fn parse_number(text: &str, what: &str) -> Result<f64> {
     let value: f64 = text.trim().parse().map_err(|_| {
-        Error::Parse(format!(
+        Error::invalid(Input::Angles, format!(
             "invalid {what} '{}': expected degrees like 45, a list 0,30,60 or a range START:STOP:STEP",
             shorten(text)
         ))
     })?;
     if !value.is_finite() {
-        return Err(Error::Parse(format!(
-            "invalid {what} '{}': the angle must be a finite number of degrees",
-            shorten(text)
-        )));
+        return Err(Error::invalid(
+            Input::Angles,
+            format!(
+                "invalid {what} '{}': the angle must be a finite number of degrees",
+                shorten(text)
+            ),
+        ));
     }
     Ok(value)
 }
@@ -212,7 +218,7 @@ impl AngleSpec {
     /// most [`MAX_RANGE`] angles (what a command computes is bounded by
     /// [`GuardArgs`]).
     pub fn parse(spec: &str) -> Result<Self> {
-        no_control(spec, "angles")?;
+        no_control(spec, Input::Angles, "angles")?;
         let mut parts = Vec::new();
         let mut count = 0u64;
         for part in spec.split(',') {
@@ -252,13 +258,16 @@ impl AngleSpec {
 /// character inside (`1,2<newline>,3,4`): spaces around the numbers are
 /// what a user types; a line break is a script's mistake. The text is
 /// echoed escaped, on one line.
-fn no_control(spec: &str, what: &str) -> Result<()> {
+fn no_control(spec: &str, input: Input, what: &str) -> Result<()> {
     if spec.chars().any(char::is_control) {
         let escaped: String = spec.escape_debug().collect();
-        return Err(Error::Parse(format!(
-            "invalid {what} '{}': a list holds no line break, tab or other control character",
-            shorten(&escaped)
-        )));
+        return Err(Error::invalid(
+            input,
+            format!(
+                "invalid {what} '{}': a list holds no line break, tab or other control character",
+                shorten(&escaped)
+            ),
+        ));
     }
     Ok(())
 }
@@ -283,21 +292,27 @@ fn parse_part(part: &str) -> Result<AnglePart> {
                 parse_number(step, "range step")?,
             );
             if step == 0.0 || (stop - start) * step < 0.0 {
-                return Err(Error::Parse(format!(
-                    "invalid range '{}': the step must be non-zero and lead from start to stop",
-                    shorten(part)
-                )));
+                return Err(Error::invalid(
+                    Input::Angles,
+                    format!(
+                        "invalid range '{}': the step must be non-zero and lead from start to stop",
+                        shorten(part)
+                    ),
+                ));
             }
             // A STOP the steps reach up to rounding is included (0:1:0.1
             // has 11 angles); 64 ulps rather than a fixed 1e-12, which
             // would add an angle to a range of 10¹² steps.
             let count = ((stop - start) / step * (1.0 + 64.0 * f64::EPSILON)).floor();
             if count.is_nan() || count >= MAX_RANGE {
-                return Err(Error::Parse(format!(
-                    "invalid range '{}': more than {} angles",
-                    shorten(part),
-                    MAX_RANGE as u64
-                )));
+                return Err(Error::invalid(
+                    Input::Angles,
+                    format!(
+                        "invalid range '{}': more than {} angles",
+                        shorten(part),
+                        MAX_RANGE as u64
+                    ),
+                ));
             }
             Ok(AnglePart::Range {
                 start,
@@ -305,10 +320,13 @@ fn parse_part(part: &str) -> Result<AnglePart> {
                 last: count as u64,
             })
         }
-        _ => Err(Error::Parse(format!(
-            "invalid angle '{}': expected degrees like 45 or a range START:STOP:STEP",
-            shorten(part)
-        ))),
+        _ => Err(Error::invalid(
+            Input::Angles,
+            format!(
+                "invalid angle '{}': expected degrees like 45 or a range START:STOP:STEP",
+                shorten(part)
+            ),
+        )),
     }
 }
 
@@ -321,20 +339,24 @@ fn parse_angles(spec: &str) -> Result<Vec<f64>> {
 
 /// Parses a comma-separated list of numbers (`inf` allowed where `allow_inf`).
 pub fn parse_list(spec: &str, name: &str, allow_inf: bool) -> Result<Vec<f64>> {
-    no_control(spec, &format!("{name}s"))?;
+    no_control(spec, Input::Links, &format!("{name}s"))?;
     spec.split(',')
         .map(|t| {
             let t = t.trim();
             let v: f64 = match t {
                 "inf" | "∞" if allow_inf => f64::INFINITY,
                 _ => t.parse().map_err(|_| {
-                    Error::Parse(format!("invalid {name} '{t}': expected a number"))
+                    Error::invalid(
+                        Input::Links,
+                        format!("invalid {name} '{t}': expected a number"),
+                    )
                 })?,
             };
             if v.is_nan() || (v.is_infinite() && !allow_inf) {
-                return Err(Error::Parse(format!(
-                    "invalid {name} '{t}': expected a finite number"
-                )));
+                return Err(Error::invalid(
+                    Input::Links,
+                    format!("invalid {name} '{t}': expected a finite number"),
+                ));
             }
             Ok(v)
         })

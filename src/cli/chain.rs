@@ -11,7 +11,7 @@ use slider_crank::table::{
     chain_check_report, inversion_json, quadric_check_title, quadric_json, slot_check_title,
     slot_json,
 };
-use slider_crank::{Assembly, Error, Inversion, Result, SliderCrank, Units};
+use slider_crank::{Assembly, Error, Input, Inversion, Result, SliderCrank, Units};
 
 /// The chain flags shared by `analyze` and `check`.
 #[derive(Debug, Clone, Args)]
@@ -68,9 +68,12 @@ impl ChainArgs {
         };
         let v = super::args::parse_list(spec, "link length", false)?;
         let [a, b, c, d] = v[..] else {
-            return Err(Error::Parse(format!(
-                "invalid --links '{spec}': expected four lengths a,b,c,d (crank, coupler, lever, frame)"
-            )));
+            return Err(Error::invalid(
+                Input::Links,
+                format!(
+                    "invalid --links '{spec}': expected four lengths a,b,c,d (crank, coupler, lever, frame)"
+                ),
+            ));
         };
         let mode = match self.assembly {
             AssemblyArg::Open => Assembly::Open,
@@ -178,7 +181,7 @@ pub fn check(
     tolerance: f64,
 ) -> Result<Option<(String, bool)>> {
     if chain.inversion.is_some() {
-        return Err(Error::Parse(
+        return Err(Error::invalid(Input::Options,
             "check takes no --inversion: every inversion has the engine's relative motion, which check without it covers".into(),
         ));
     }

@@ -8,7 +8,7 @@ use slider_crank::dynamics::{
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::plain;
 use slider_crank::table::mass_unit;
-use slider_crank::{Angle, Error, Result, SliderCrank, Units};
+use slider_crank::{Angle, Error, Input, Result, SliderCrank, Units};
 use std::path::PathBuf;
 
 /// The engine's masses and gas force. Any of them adds the dynamics.
@@ -85,7 +85,7 @@ impl EngineArgs {
         }
         let text = match &self.indicator {
             Some(path) => Some((
-                read_text(path, MAX_DATA_BYTES, "indicator diagram")?,
+                read_text(path, MAX_DATA_BYTES, Input::Indicator)?,
                 format!("indicator diagram {}", path.display()),
             )),
             None => None,
@@ -216,7 +216,7 @@ fn number(x: f64) -> String {
 /// Refuses the dynamics flags where they do not apply.
 pub fn refuse_with_chain(args: &EngineArgs) -> Result<()> {
     if args.is_set() {
-        return Err(Error::Parse(
+        return Err(Error::invalid(Input::Options,
             "--mass, --rod-mass, --gas-force and --indicator apply to the engine only, not with --slot-radius, --links or --inversion".into(),
         ));
     }

@@ -7,7 +7,7 @@ use slider_crank::catalogue::{FigureOptions, Fit};
 use slider_crank::figure::{Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, same_file, to_svg, to_svg_with_fonts, write_atomic};
-use slider_crank::{Error, Figure, FigureName, Layer, Notation, Result, SliderCrank, Style};
+use slider_crank::{Error, Figure, FigureName, Input, Layer, Notation, Result, SliderCrank, Style};
 use std::path::{Path, PathBuf};
 
 /// Draw a named figure: a mechanism figure of the seeds or a diagram.
@@ -208,14 +208,17 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
         Some(list) => {
             let layers = Layer::parse_list(list)?;
             if layers.is_empty() {
-                return Err(Error::Parse("--layers names no layer".into()));
+                return Err(Error::invalid(
+                    Input::Layers,
+                    "--layers names no layer".into(),
+                ));
             }
             Some(layers)
         }
         None => None,
     };
     let data = match &args.data {
-        Some(path) => Some(read_text(path, MAX_DATA_BYTES, "data file")?),
+        Some(path) => Some(read_text(path, MAX_DATA_BYTES, Input::Data)?),
         None => None,
     };
     let mut options = FigureOptions::default();
@@ -251,27 +254,26 @@ pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
         && args.embed_fonts
         && format != FileFormat::Svg
     {
-        return Err(Error::Parse(format!(
-            "--embed-fonts is for SVG output: {} is a {} file, which carries its faces already (leave the option out)",
-            path.display(),
-            if format == FileFormat::Png {
-                "PNG"
-            } else {
-                "PDF"
-            }
-        )));
+        return Err(Error::invalid(
+            Input::Options,
+            format!(
+                "--embed-fonts is for SVG output: {} is a {} file, which carries its faces already (leave the option out)",
+                path.display(),
+                if format == FileFormat::Png {
+                    "PNG"
+                } else {
+                    "PDF"
+                }
+            ),
+        ));
     }
     if let Some(data) = &args.flags.data {
         not_an_input(to, data, "the data file")?;
     }
     let options = options(&args.flags, name)?;
-    let figure = name
-        .figure(&options)
-        .map_err(|e| match (&args.flags.data, e) {
-            (Some(path), Error::Parse(m)) if m.starts_with("data") => {
-                Error::Parse(format!("{}: {m}", path.display()))
-            }
-            (_, e) => e,
-        })?;
+    let figure = name.figure(&options).map_err(|e| match &args.flags.data {
+        Some(path) => e.in_file(Input::Data, path),
+        None => e,
+    })?;
     emit(&figure, to, args.embed_fonts, out)
 }

@@ -6,7 +6,7 @@ use clap::Args;
 use slider_crank::gallery::{Gallery, GalleryFile};
 use slider_crank::input::{MAX_SCENE_BYTES, read_bytes_from, read_text};
 use slider_crank::render::{Pending, make_pending, uninterrupted, write_protected};
-use slider_crank::{Error, FigureName, Result};
+use slider_crank::{Error, FigureName, Input, Result};
 use std::io::{ErrorKind, Write};
 use std::path::{Path, PathBuf};
 
@@ -44,10 +44,14 @@ pub struct GalleryArgs {
 pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
     let mut gallery = match &args.manifest {
         Some(path) => {
-            let text = read_text(path, MAX_SCENE_BYTES, "manifest")?;
+            let text = read_text(path, MAX_SCENE_BYTES, Input::Manifest)?;
             let base = path.parent().unwrap_or(Path::new(""));
-            Gallery::from_manifest(&text, base)
-                .map_err(|e| Error::Parse(format!("{}: {}", path.display(), e.one_line())))?
+            Gallery::from_manifest(&text, base).map_err(|e| {
+                Error::invalid(
+                    Input::Manifest,
+                    format!("{}: {}", path.display(), e.one_line()),
+                )
+            })?
         }
         None => Gallery::new(),
     };
@@ -80,9 +84,9 @@ pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
     progress.finish();
     if let Err(e) = result {
         // The file being made or written when the error came (a write
-        // error names it already).
+        // error is about that file and names it already).
         return Err(match names.get(staged.len()) {
-            Some(name) if !e.to_string().contains(name.as_str()) => Error::io_about(
+            Some(name) if !is_about(&e, &dir.join(name)) => Error::io_about(
                 format!("gallery: {name}: {}", e.one_line()),
                 &dir.join(name),
             ),
@@ -132,6 +136,11 @@ fn stage(dir: &Path, file: &GalleryFile) -> Result<Staged> {
         file: tmp.into_temp_path(),
         _pending: pending,
     })
+}
+
+/// Whether `e` is a reading or writing error about the file `path`.
+fn is_about(e: &Error, path: &Path) -> bool {
+    matches!(e, Error::Io { path: Some(p), .. } if p == path)
 }
 
 /// Renames every staged file over its name, with an interruption held off

@@ -8,7 +8,7 @@ use super::output::{Progress, Stdout};
 use clap::Args;
 use slider_crank::handout::{Class, Handout, Paper};
 use slider_crank::render::write_atomic;
-use slider_crank::{Angle, Error, Result, Units};
+use slider_crank::{Angle, Error, Input, Result, Units};
 use std::path::{Path, PathBuf};
 
 /// Write a teaching handout, an exercise sheet with its key, or a class's
@@ -98,10 +98,13 @@ fn stem(path: &Path) -> Result<String> {
         Some("html") => Ok(text[..text.len() - 5].to_string()),
         Some("htm") => Ok(text[..text.len() - 4].to_string()),
         None if !text.is_empty() && !text.ends_with('/') => Ok(text),
-        _ => Err(Error::Parse(format!(
-            "cannot write {}: a handout is an HTML page, give a file ending in .html",
-            path.display()
-        ))),
+        _ => Err(Error::invalid(
+            Input::OutputFile,
+            format!(
+                "cannot write {}: a handout is an HTML page, give a file ending in .html",
+                path.display()
+            ),
+        )),
     }
 }
 

@@ -5,7 +5,7 @@ use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
 use slider_crank::input::{MAX_SCENE_BYTES, read_text};
-use slider_crank::{Error, FigureName, Result, SceneFile, Unit};
+use slider_crank::{Error, FigureName, Input, Result, SceneFile, Unit};
 use std::path::PathBuf;
 
 /// Draw the figure a scene file describes: a mechanism figure, or one of
@@ -63,9 +63,9 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
         .as_ref()
         .expect("clap requires FILE without --print-default");
     not_an_input(to, path, "the scene file")?;
-    let text = read_text(path, MAX_SCENE_BYTES, "scene file")?;
+    let text = read_text(path, MAX_SCENE_BYTES, Input::Scene)?;
     let file = SceneFile::from_toml(&text)
-        .map_err(|e| Error::Parse(format!("{}: {e}", path.display())))?;
+        .map_err(|e| Error::invalid(Input::Scene, format!("{}: {e}", path.display())))?;
     let font = args.font;
     let figure = match file {
         SceneFile::Mechanism(mut scene) => {

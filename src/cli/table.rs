@@ -5,7 +5,7 @@ use super::output::Stdout;
 use super::stream;
 use clap::{Args, ValueEnum};
 use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
-use slider_crank::{Error, Result, SliderCrank, Units};
+use slider_crank::{Error, Field, Input, Result, SliderCrank, Units};
 
 /// Which table.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
@@ -123,10 +123,10 @@ fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
 /// `--max-cells` before any is computed.
 pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
     if let Some(bad) = unused(args) {
-        return Err(Error::Parse(format!(
-            "table {} does not use {bad}",
-            table_name(args.name)
-        )));
+        return Err(Error::invalid(
+            Input::Options,
+            format!("table {} does not use {bad}", table_name(args.name)),
+        ));
     }
     let ratios = args
         .n
@@ -140,7 +140,7 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
     });
     if decimals > 17 {
         return Err(Error::OutOfRange {
-            name: "decimals",
+            name: Field::Decimals,
             value: decimals as f64,
             reason: "at most 17 decimals are meaningful in f64".into(),
         });
@@ -247,7 +247,7 @@ fn forces(
     let torque = args.torque.unwrap_or(NG_TABLE_2_TORQUE);
     if !torque.is_finite() {
         return Err(Error::NotFinite {
-            name: "torque",
+            name: Field::Torque,
             value: torque,
         });
     }

@@ -1,6 +1,6 @@
 //! Coupler points: points of the rod between A and B, which trace ovals.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::geom::{Point, Vector};
 use crate::mechanism::Pose;
 
@@ -20,7 +20,7 @@ impl CouplerPoint {
             Ok(Self { t })
         } else {
             Err(Error::OutOfRange {
-                name: "coupler",
+                name: Field::Coupler,
                 value: t,
                 reason: "the coupler point is a fraction of the rod from A (0) to B (1)".into(),
             })

@@ -5,7 +5,7 @@
 
 use super::{InstantCentre, Kisch, VelocityLine};
 use crate::analytic::statics::{self, Friction};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::geom::{Intersection, Point};
 use crate::{analytic::kinematics::Kinematics, mechanism::Pose};
 
@@ -65,7 +65,7 @@ impl Graphical {
         ];
         if let Some(bad) = values.iter().find(|g| !g.is_finite()) {
             return Err(Error::OutOfRange {
-                name: "omega",
+                name: Field::Omega,
                 value: omega,
                 reason: format!(
                     "the values read off the construction at θ = {}° ({bad}) exceed the largest number: give ω per a longer unit of time or the lengths in a smaller unit",
@@ -209,13 +209,13 @@ impl Reading {
 pub(crate) fn check_load(torque: f64, mu: f64) -> Result<()> {
     if !torque.is_finite() {
         return Err(Error::NotFinite {
-            name: "torque",
+            name: Field::Torque,
             value: torque,
         });
     }
     if !(mu >= 0.0 && mu.is_finite()) {
         return Err(Error::OutOfRange {
-            name: "friction",
+            name: Field::Friction,
             value: mu,
             reason: "the coefficient of friction must be a finite number ≥ 0".into(),
         });

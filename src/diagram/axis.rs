@@ -1,7 +1,7 @@
 //! Plot axes: a range of values, linear or logarithmic, with round ticks
 //! and their labels.
 
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Field, Result, finite};
 use crate::figure::RichText;
 use crate::number::{format_number, power_of_ten};
 
@@ -58,7 +58,7 @@ pub const MIN_LOG_VALUE: f64 = 1e-300;
 pub const MAX_DECADES: f64 = 100.0;
 
 /// Checks that `value` is finite and within ±[`MAX_AXIS_VALUE`].
-fn axis_value(name: &'static str, value: f64) -> Result<f64> {
+fn axis_value(name: Field, value: f64) -> Result<f64> {
     let value = finite(name, value)?;
     if value.abs() > MAX_AXIS_VALUE {
         return Err(Error::OutOfRange {
@@ -117,12 +117,12 @@ impl Axis {
     /// step of about six ticks. The title is [`RichText`] markup
     /// (`V_p (ft/s)`).
     pub fn linear(title: &str, min: f64, max: f64) -> Result<Self> {
-        let min = axis_value("axis minimum", min)?;
-        let max = axis_value("axis maximum", max)?;
+        let min = axis_value(Field::AxisMinimum, min)?;
+        let max = axis_value(Field::AxisMaximum, max)?;
         let span = max - min;
         if !(span > 0.0 && span.is_finite()) {
             return Err(Error::OutOfRange {
-                name: "axis maximum",
+                name: Field::AxisMaximum,
                 value: max,
                 reason: format!("an axis must increase from its minimum {min}"),
             });
@@ -140,11 +140,11 @@ impl Axis {
     /// nearest round ticks. An empty range (lo = hi) is widened by 1 or by
     /// a tenth of |lo| each way. Errors for non-finite or reversed bounds.
     pub fn nice(title: &str, lo: f64, hi: f64) -> Result<Self> {
-        let lo = axis_value("axis minimum", lo)?;
-        let hi = axis_value("axis maximum", hi)?;
+        let lo = axis_value(Field::AxisMinimum, lo)?;
+        let hi = axis_value(Field::AxisMaximum, hi)?;
         if lo > hi {
             return Err(Error::OutOfRange {
-                name: "axis maximum",
+                name: Field::AxisMaximum,
                 value: hi,
                 reason: format!("below the axis minimum {lo}"),
             });
@@ -167,18 +167,18 @@ impl Axis {
     /// A logarithmic axis covering `[lo, hi]` (1e-300 ≤ lo ≤ hi ≤ 1e300),
     /// widened outwards to whole powers of ten; at most 100 decades.
     pub fn log(title: &str, lo: f64, hi: f64) -> Result<Self> {
-        let lo = axis_value("axis minimum", lo)?;
-        let hi = axis_value("axis maximum", hi)?;
+        let lo = axis_value(Field::AxisMinimum, lo)?;
+        let hi = axis_value(Field::AxisMaximum, hi)?;
         if !(lo > 0.0 && hi >= lo) {
             return Err(Error::OutOfRange {
-                name: "axis minimum",
+                name: Field::AxisMinimum,
                 value: lo,
                 reason: format!("a log axis needs 0 < minimum ≤ maximum ({hi})"),
             });
         }
         if lo < MIN_LOG_VALUE {
             return Err(Error::OutOfRange {
-                name: "axis minimum",
+                name: Field::AxisMinimum,
                 value: lo,
                 reason: format!(
                     "a log axis shows values from {MIN_LOG_VALUE:e} (give the data in a smaller unit)"
@@ -187,7 +187,7 @@ impl Axis {
         }
         if hi.log10() - lo.log10() > MAX_DECADES {
             return Err(Error::OutOfRange {
-                name: "axis maximum",
+                name: Field::AxisMaximum,
                 value: hi,
                 reason: format!(
                     "a log axis shows at most {MAX_DECADES} decades (the minimum is {lo:e})"
@@ -212,10 +212,10 @@ impl Axis {
     /// positive, at most 1000 ticks over the range): 30° for crank angles.
     /// Ignored by a log axis.
     pub fn with_step(mut self, step: f64) -> Result<Self> {
-        let step = crate::error::positive("tick step", step)?;
+        let step = crate::error::positive(Field::TickStep, step)?;
         if (self.max - self.min) / step > 1000.0 {
             return Err(Error::OutOfRange {
-                name: "tick step",
+                name: Field::TickStep,
                 value: step,
                 reason: "more than 1000 ticks on one axis".into(),
             });

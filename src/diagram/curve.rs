@@ -2,7 +2,7 @@
 //! the module docs of [`crate::diagram`].
 
 use super::{Segment, Subpath, TracedPath};
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Field, Result, finite, positive};
 use crate::figure::PageFromWorld;
 use crate::geom::{Frame, Point, Vector, cross};
 use std::ops::RangeInclusive;
@@ -153,14 +153,14 @@ pub fn trace<C: Curve + ?Sized>(
     method: Method,
     options: &TraceOptions,
 ) -> Result<TracedPath> {
-    let tolerance = positive("tolerance", options.tolerance)?;
+    let tolerance = positive(Field::Tolerance, options.tolerance)?;
     let (start, end) = range.into_inner();
-    let start = finite("range start", start)?;
-    let end = finite("range end", end)?;
+    let start = finite(Field::RangeStart, start)?;
+    let end = finite(Field::RangeEnd, end)?;
     let span = end - start;
     if !(span > 0.0 && span.is_finite()) {
         return Err(Error::OutOfRange {
-            name: "range end",
+            name: Field::RangeEnd,
             value: end,
             reason: format!("the range must increase from its start {start} by a finite amount"),
         });
@@ -171,7 +171,7 @@ pub fn trace<C: Curve + ?Sized>(
     };
     if pieces == 0 || pieces > options.max_segments {
         return Err(Error::OutOfRange {
-            name: "pieces",
+            name: Field::Pieces,
             value: pieces as f64,
             reason: format!("between 1 and the segment limit {}", options.max_segments),
         });

@@ -3,7 +3,7 @@
 //! legend set where nothing is drawn.
 
 use super::{Axis, Curve, Method, Scale, TraceOptions, trace};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::{
     Align, Dash, Font, Item, PageFromWorld, PageRect, Panel, PathBuilder, RichText, Role, Shape,
     Symbol, TextSize,
@@ -119,7 +119,7 @@ const LIMIT_ADVICE: &str = "a mechanism this close to its limit of assembly (rod
 
 fn too_small(rect: &PageRect) -> Error {
     Error::OutOfRange {
-        name: "panel width",
+        name: Field::PanelWidth,
         value: rect.width,
         reason: format!(
             "a plot panel of {} × {} leaves no room for its plot",
@@ -143,7 +143,7 @@ impl Plot {
         tolerance: f64,
         font: Font,
     ) -> Result<Self> {
-        let tolerance = crate::error::positive("tolerance", tolerance)?;
+        let tolerance = crate::error::positive(Field::Tolerance, tolerance)?;
         let widest = y
             .ticks()
             .iter()
@@ -178,7 +178,7 @@ impl Plot {
             Point::new(area.x, area.y + area.height),
         )
         .ok_or_else(|| Error::OutOfRange {
-            name: "axis range",
+            name: Field::AxisRange,
             value: (x1 - x0).max(y1 - y0),
             reason: "an axis range too large or too small to map onto the page".into(),
         })?;
@@ -215,13 +215,13 @@ impl Plot {
         tolerance: f64,
         font: Font,
     ) -> Result<Self> {
-        let tolerance = crate::error::positive("tolerance", tolerance)?;
+        let tolerance = crate::error::positive(Field::Tolerance, tolerance)?;
         let area = PageRect::new(rect.x, rect.y, rect.width, rect.height - CAPTION);
         if area.width < 40.0 || area.height < 40.0 {
             return Err(too_small(&rect));
         }
         let map = PageFromWorld::fit(world, &area, mirror).ok_or_else(|| Error::OutOfRange {
-            name: "world frame",
+            name: Field::WorldFrame,
             value: (world.max() - world.min()).norm(),
             reason: "a world panel needs a rectangle of positive size".into(),
         })?;

@@ -4,7 +4,7 @@
 use super::gas::GasForce;
 use super::rod::RodMass;
 use crate::analytic::kinematics::check_omega;
-use crate::error::{Error, Result, non_negative};
+use crate::error::{Error, Field, Result, non_negative};
 use crate::mechanism::SliderCrank;
 
 /// A slider-crank engine: the mechanism, the reciprocating mass m (piston
@@ -32,7 +32,7 @@ impl Engine {
     /// range ([`crate::analytic::kinematics::check_omega`]), or m ω² r
     /// beyond the largest number.
     pub fn new(mechanism: SliderCrank, reciprocating: f64, omega: f64) -> Result<Self> {
-        let reciprocating = non_negative("mass", reciprocating)?;
+        let reciprocating = non_negative(Field::Mass, reciprocating)?;
         let omega = check_omega(omega)?;
         let engine = Self {
             mechanism,
@@ -53,7 +53,7 @@ impl Engine {
         let l = self.mechanism.rod();
         if rod.cg() > l {
             return Err(Error::OutOfRange {
-                name: "rod-cg",
+                name: Field::RodCg,
                 value: rod.cg(),
                 reason: format!(
                     "the rod's centre of mass lies on the rod, 0 ≤ BG ≤ l = {}",
@@ -73,7 +73,7 @@ impl Engine {
     /// was checked when it was read).
     pub fn with_gas(mut self, gas: GasForce) -> Result<Self> {
         if let GasForce::Constant(f) = gas {
-            crate::error::finite("gas force", f)?;
+            crate::error::finite(Field::GasForce, f)?;
         }
         self.gas = gas;
         Ok(self)
@@ -92,7 +92,7 @@ impl Engine {
             Ok(())
         } else {
             Err(Error::OutOfRange {
-                name: "mass",
+                name: Field::Mass,
                 value: mass,
                 reason: "the inertia forces m ω² r would exceed the largest number: give the mass, the lengths or ω in larger or smaller units".into(),
             })

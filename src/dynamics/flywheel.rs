@@ -1,7 +1,7 @@
 //! The flywheel: the moment of inertia that holds the speed within a
 //! coefficient of fluctuation, or the coefficient a given flywheel gives.
 
-use crate::error::{Error, Result, positive};
+use crate::error::{Error, Field, Result, positive};
 
 /// A flywheel on the crank shaft and the fluctuation of speed it allows.
 ///
@@ -29,12 +29,12 @@ impl Flywheel {
     /// Errors: ΔE negative or not finite, ω zero, C_s not positive, or I
     /// beyond the largest number.
     pub fn for_coefficient(fluctuation: f64, omega: f64, coefficient: f64) -> Result<Self> {
-        let coefficient = positive("fluctuation of speed", coefficient)?;
+        let coefficient = positive(Field::FluctuationOfSpeed, coefficient)?;
         let w2 = check(fluctuation, omega)?;
         let inertia = fluctuation / w2 / coefficient;
         if !inertia.is_finite() {
             return Err(Error::OutOfRange {
-                name: "fluctuation of speed",
+                name: Field::FluctuationOfSpeed,
                 value: coefficient,
                 reason: "the flywheel's moment of inertia exceeds the largest number".into(),
             });
@@ -52,12 +52,12 @@ impl Flywheel {
     ///
     /// Errors: as [`Flywheel::for_coefficient`], for I.
     pub fn for_inertia(fluctuation: f64, omega: f64, inertia: f64) -> Result<Self> {
-        let inertia = positive("flywheel", inertia)?;
+        let inertia = positive(Field::Flywheel, inertia)?;
         let w2 = check(fluctuation, omega)?;
         let coefficient = fluctuation / w2 / inertia;
         if !coefficient.is_finite() {
             return Err(Error::OutOfRange {
-                name: "flywheel",
+                name: Field::Flywheel,
                 value: inertia,
                 reason: "the coefficient of fluctuation exceeds the largest number".into(),
             });
@@ -73,13 +73,13 @@ impl Flywheel {
 
 /// ω² after checking ΔE ≥ 0 and ω ≠ 0.
 fn check(fluctuation: f64, omega: f64) -> Result<f64> {
-    crate::error::non_negative("fluctuation of energy", fluctuation)?;
+    crate::error::non_negative(Field::FluctuationOfEnergy, fluctuation)?;
     let w2 = omega * omega;
     if w2 > 0.0 {
         Ok(w2)
     } else {
         Err(Error::OutOfRange {
-            name: "omega",
+            name: Field::Omega,
             value: omega,
             reason: "a flywheel is sized for a turning crank, ω ≠ 0".into(),
         })

@@ -2,7 +2,7 @@
 //! of pressure against the fraction of the stroke.
 
 use crate::csv::Table as DataTable;
-use crate::error::{Error, Result, positive};
+use crate::error::{Error, Field, Input, Result, positive};
 use crate::mechanism::Pose;
 
 /// Most rows of an indicator diagram.
@@ -83,28 +83,32 @@ impl IndicatorDiagram {
         compression: Vec<f64>,
         bore: f64,
     ) -> Result<Self> {
-        let bore = positive("bore", bore)?;
+        let bore = positive(Field::Bore, bore)?;
         let n = fractions.len();
         if !(2..=MAX_INDICATOR_ROWS).contains(&n) || expansion.len() != n || compression.len() != n
         {
-            return Err(Error::Parse(format!(
-                "an indicator diagram has 2 to {MAX_INDICATOR_ROWS} rows, each with a fraction and two pressures"
-            )));
+            return Err(Error::invalid(
+                Input::Indicator,
+                format!(
+                    "an indicator diagram has 2 to {MAX_INDICATOR_ROWS} rows, each with a fraction and two pressures"
+                ),
+            ));
         }
         if fractions.first() != Some(&0.0)
             || fractions.last() != Some(&1.0)
             || successive(&fractions).any(|(a, b)| a >= b)
         {
-            return Err(Error::Parse(
+            return Err(Error::invalid(
+                Input::Indicator,
                 "the indicator diagram's stroke fractions rise strictly from 0 to 1".into(),
             ));
         }
         let area = std::f64::consts::PI * bore * bore / 4.0;
         for &p in expansion.iter().chain(&compression) {
-            let p = crate::error::finite("pressure", p)?;
+            let p = crate::error::finite(Field::Pressure, p)?;
             if !(p * area).is_finite() {
                 return Err(Error::OutOfRange {
-                    name: "pressure",
+                    name: Field::Pressure,
                     value: p,
                     reason: "pressure × bore area exceeds the largest number".into(),
                 });
@@ -127,7 +131,8 @@ impl IndicatorDiagram {
     pub fn with_pumping(mut self, exhaust: Vec<f64>, intake: Vec<f64>) -> Result<Self> {
         let n = self.fractions.len();
         if exhaust.len() != n || intake.len() != n {
-            return Err(Error::Parse(
+            return Err(Error::invalid(
+                Input::Indicator,
                 "the exhaust and intake lines have a pressure at each stroke fraction".into(),
             ));
         }
@@ -135,7 +140,7 @@ impl IndicatorDiagram {
         for &p in checked.expansion.iter().chain(&checked.compression) {
             if !(p * self.area).is_finite() {
                 return Err(Error::OutOfRange {
-                    name: "pressure",
+                    name: Field::Pressure,
                     value: p,
                     reason: "pressure × bore area exceeds the largest number".into(),
                 });
@@ -159,19 +164,19 @@ impl IndicatorDiagram {
     /// without the other.
     pub fn from_csv_cycle(text: &str, bore: f64, what: &str) -> Result<Self> {
         let d = Self::from_csv(text, bore, what)?;
-        let table = DataTable::parse(text, what)?;
+        let table = DataTable::parse(text, Input::Indicator, what)?;
         let named = |n: &str| table.column(&[n]).ok();
         match (named("exhaust"), named("intake")) {
             (None, None) => Ok(d),
             (Some(e), Some(i)) => d
                 .with_pumping(table.numbers(e)?, table.numbers(i)?)
-                .map_err(|e| match e {
-                    Error::Parse(m) => Error::Parse(format!("{what}: {m}")),
-                    e => e,
-                }),
-            _ => Err(Error::Parse(format!(
-                "{what}: a four-stroke indicator diagram has both an exhaust and an intake column"
-            ))),
+                .map_err(|e| in_source(e, what)),
+            _ => Err(Error::invalid(
+                Input::Indicator,
+                format!(
+                    "{what}: a four-stroke indicator diagram has both an exhaust and an intake column"
+                ),
+            )),
         }
     }
 
@@ -180,7 +185,7 @@ impl IndicatorDiagram {
     /// the project's data reader does (a header line, `#` comments);
     /// `what` names the source in errors.
     pub fn from_csv(text: &str, bore: f64, what: &str) -> Result<Self> {
-        let table = DataTable::parse(text, what)?;
+        let table = DataTable::parse(text, Input::Indicator, what)?;
         let col = |names: &[&str]| table.column(names).and_then(|c| table.numbers(c));
         Self::new(
             col(&["fraction", "stroke", "x"])?,
@@ -188,10 +193,7 @@ impl IndicatorDiagram {
             col(&["compression", "return"])?,
             bore,
         )
-        .map_err(|e| match e {
-            Error::Parse(m) => Error::Parse(format!("{what}: {m}")),
-            e => e,
-        })
+        .map_err(|e| in_source(e, what))
     }
 
     /// The piston's area π D²/4.
@@ -274,6 +276,15 @@ impl IndicatorDiagram {
             _ => &self.compression,
         };
         self.area * self.interpolate(line, x)
+    }
+}
+
+/// `e` with `what` (the source's name) before its message when it is an
+/// [`Error::Invalid`]; other errors name their value already.
+fn in_source(e: Error, what: &str) -> Error {
+    match e {
+        Error::Invalid { input, message } => Error::invalid(input, format!("{what}: {message}")),
+        e => e,
     }
 }
 

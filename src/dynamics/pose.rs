@@ -4,7 +4,7 @@ use super::engine::Engine;
 use super::rod::RodInertia;
 use crate::angle::Angle;
 use crate::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::mechanism::Pose;
 
 /// Everything the dynamics gives at one pose. Forces along the line of
@@ -106,7 +106,7 @@ impl EnginePose {
             Ok(self)
         } else {
             Err(Error::OutOfRange {
-                name: "angle",
+                name: Field::Angle,
                 value: angle.degrees(),
                 reason: "a force or torque of the engine here exceeds the largest number (about 1.8e308): give the masses or pressures in larger units".into(),
             })

@@ -1,7 +1,7 @@
 //! The connecting rod's inertia: exactly, as a rigid body, and as the
 //! equivalent dynamical system of two masses with the correction couple.
 
-use crate::error::{Result, non_negative};
+use crate::error::{Field, Result, non_negative};
 use crate::mechanism::Pose;
 
 /// A connecting rod with mass: its mass m_r, the distance BG of its centre
@@ -20,9 +20,9 @@ impl RodMass {
     /// Errors: any value negative or not finite.
     pub fn new(mass: f64, cg_from_crank_pin: f64, gyration: f64) -> Result<Self> {
         Ok(Self {
-            mass: non_negative("rod mass", mass)?,
-            cg: non_negative("rod-cg", cg_from_crank_pin)?,
-            gyration: non_negative("rod gyration", gyration)?,
+            mass: non_negative(Field::RodMass, mass)?,
+            cg: non_negative(Field::RodCg, cg_from_crank_pin)?,
+            gyration: non_negative(Field::RodGyration, gyration)?,
         })
     }
 

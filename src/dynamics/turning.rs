@@ -6,7 +6,7 @@ use super::engine::Engine;
 use super::gas::GasForce;
 use super::quadrature::{bisect, integrate};
 use crate::angle::Angle;
-use crate::error::{Error, Result, finite};
+use crate::error::{Error, Field, Result, finite};
 use std::f64::consts::TAU;
 
 /// Samples per turn that bracket the crossings of the mean line.
@@ -144,7 +144,7 @@ impl TurningMoment {
 fn check_phases(phases: &[f64]) -> Result<Vec<f64>> {
     if phases.len() > MAX_CYLINDERS {
         return Err(Error::OutOfRange {
-            name: "cylinders",
+            name: Field::Cylinders,
             value: phases.len() as f64,
             reason: format!("an engine has at most {MAX_CYLINDERS} cylinders"),
         });
@@ -152,7 +152,7 @@ fn check_phases(phases: &[f64]) -> Result<Vec<f64>> {
     if phases.is_empty() {
         return Ok(vec![0.0]);
     }
-    phases.iter().map(|&d| finite("phase", d)).collect()
+    phases.iter().map(|&d| finite(Field::Phase, d)).collect()
 }
 
 /// T(θ) = Σ T_i(θ + δ_i), θ and δ_i in radians; each cylinder in the turn

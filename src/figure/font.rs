@@ -8,7 +8,7 @@
 //! figure match the θ, φ and *AB* of the page around it. Libertinus Serif
 //! is the alternative for books set in Linux Libertine or similar faces.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use serde::Deserialize;
 #[cfg(feature = "fonts")]
 use skrifa::instance::{LocationRef, Size};
@@ -441,10 +441,10 @@ impl FromStr for Font {
             .into_iter()
             .find(|f| f.name() == s)
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown font '{s}': expected one of {}",
-                    Font::names()
-                ))
+                Error::invalid(
+                    Input::Font,
+                    format!("unknown font '{s}': expected one of {}", Font::names()),
+                )
             })
     }
 }

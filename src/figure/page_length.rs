@@ -7,7 +7,7 @@
 //! unit asked (`width="120mm"`), its `viewBox` still in page units, so that
 //! a book places the figure at that size.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use std::fmt;
 use std::str::FromStr;
 
@@ -82,10 +82,13 @@ impl FromStr for PageUnit {
     fn from_str(s: &str) -> Result<Self> {
         match PageUnit::ALL.into_iter().find(|u| u.name() == s) {
             Some(u) => Ok(u),
-            None => Err(Error::Parse(format!(
-                "unknown page unit '{}': expected px, mm, cm, in or pt",
-                s.escape_default()
-            ))),
+            None => Err(Error::invalid(
+                Input::PageLength,
+                format!(
+                    "unknown page unit '{}': expected px, mm, cm, in or pt",
+                    s.escape_default()
+                ),
+            )),
         }
     }
 }
@@ -104,13 +107,13 @@ impl PageLength {
     pub fn new(value: f64, unit: PageUnit) -> Result<Self> {
         if !value.is_finite() {
             return Err(Error::NotFinite {
-                name: "page length",
+                name: Field::PageLength,
                 value,
             });
         }
         if value <= 0.0 {
             return Err(Error::NotPositive {
-                name: "page length",
+                name: Field::PageLength,
                 value,
             });
         }
@@ -139,9 +142,12 @@ impl FromStr for PageLength {
     fn from_str(s: &str) -> Result<Self> {
         let shown: String = s.chars().take(40).flat_map(char::escape_default).collect();
         let bad = |why: &str| {
-            Error::Parse(format!(
-                "invalid page length '{shown}': {why} (a positive number of px, the default, mm, cm, in or pt: 800, 120mm, 12cm, 4.5in, 340pt)"
-            ))
+            Error::invalid(
+                Input::PageLength,
+                format!(
+                    "invalid page length '{shown}': {why} (a positive number of px, the default, mm, cm, in or pt: 800, 120mm, 12cm, 4.5in, 340pt)"
+                ),
+            )
         };
         // NaN, inf and plain numbers are page units; then a known suffix;
         // other letters at the end are an unknown unit.

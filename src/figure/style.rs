@@ -3,7 +3,7 @@
 //! it for the pen of each role and hue, the paper and the sizes of text.
 
 use super::{Dash, Hue, Role, TextSize};
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use serde::Deserialize;
 
 /// How a figure is drawn.
@@ -43,9 +43,10 @@ impl Style {
         match name {
             "textbook" => Ok(Style::Textbook),
             "handout" => Ok(Style::Handout),
-            _ => Err(Error::Parse(format!(
-                "unknown style '{name}': expected textbook or handout"
-            ))),
+            _ => Err(Error::invalid(
+                Input::Style,
+                format!("unknown style '{name}': expected textbook or handout"),
+            )),
         }
     }
 

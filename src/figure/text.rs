@@ -2,7 +2,7 @@
 //! notes.
 
 use super::{Font, FontStyle, TextBox};
-use crate::error::is_noncharacter;
+use crate::error::{Input, is_noncharacter};
 
 /// A subscript's size, as a fraction of its line's.
 pub const SUBSCRIPT_SIZE: f64 = 0.7;
@@ -327,7 +327,12 @@ impl Title {
     /// longer than [`MAX_TITLE_CHARS`], or holds a control character (a
     /// line break) or a non-character ([`is_noncharacter`]: U+FFFE).
     pub fn new(text: &str) -> crate::error::Result<Self> {
-        let bad = |why: &str| Err(crate::error::Error::Parse(format!("invalid title: {why}")));
+        let bad = |why: &str| {
+            Err(crate::error::Error::invalid(
+                Input::Title,
+                format!("invalid title: {why}"),
+            ))
+        };
         if text.trim().is_empty() {
             return bad("it is empty");
         }

@@ -15,7 +15,7 @@
 
 use super::{Gallery, SceneEntry};
 use crate::catalogue::{located, toml_error};
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::figure::Font;
 use crate::input::{MAX_SCENE_BYTES, read_text};
 use crate::render::FileFormat;
@@ -36,7 +36,7 @@ struct ManifestFile {
 
 /// `r`, its error placed at the value of `s`.
 fn at<T, U>(text: &str, s: &Spanned<U>, r: Result<T>) -> Result<T> {
-    r.map_err(|e| located(text, s.span(), e.one_line()))
+    r.map_err(|e| located(Input::Manifest, text, s.span(), e.one_line()))
 }
 
 impl Gallery {
@@ -47,7 +47,8 @@ impl Gallery {
     /// for each scene file that sets none). Unknown keys are errors; every
     /// error names its line and column.
     pub fn from_manifest(text: &str, base: &Path) -> Result<Gallery> {
-        let file: ManifestFile = toml::from_str(text).map_err(|e| toml_error(text, &e))?;
+        let file: ManifestFile =
+            toml::from_str(text).map_err(|e| toml_error(Input::Manifest, text, &e))?;
         let mut gallery = Gallery::new();
         if let Some(figures) = &file.figures {
             let names = figures
@@ -62,7 +63,10 @@ impl Gallery {
                 .map(|f| at(text, f, FileFormat::from_name(f.get_ref())))
                 .collect::<Result<Vec<_>>>()?;
             if formats.is_empty() {
-                return Err(Error::Parse("formats names no format".into()));
+                return Err(Error::invalid(
+                    Input::Manifest,
+                    "formats names no format".into(),
+                ));
             }
             gallery = gallery.with_formats(formats);
         }
@@ -84,14 +88,14 @@ impl Gallery {
 /// font where it sets none.
 fn scene_entry(gallery: &Gallery, base: &Path, path: &str) -> Result<SceneEntry> {
     let full = base.join(path);
-    let text = read_text(&full, MAX_SCENE_BYTES, "scene file")?;
-    let named = |e: Error| Error::Parse(format!("{path}: {}", e.one_line()));
+    let text = read_text(&full, MAX_SCENE_BYTES, Input::Scene)?;
+    let named = |e: Error| Error::invalid(Input::Scene, format!("{path}: {}", e.one_line()));
     let mut scene = SceneFile::from_toml(&text)
         .and_then(SceneFile::into_scene)
         .map_err(named)?;
     let keys = text
         .parse::<toml::Table>()
-        .map_err(|e| named(Error::Parse(e.to_string())))?;
+        .map_err(|e| named(Error::invalid(Input::Scene, e.to_string())))?;
     if let Some(style) = gallery.style
         && !keys.contains_key("style")
     {
@@ -107,9 +111,10 @@ fn scene_entry(gallery: &Gallery, base: &Path, path: &str) -> Result<SceneEntry>
         .and_then(|s| s.to_str())
         .filter(|s| !s.is_empty() && !s.starts_with('.'))
         .ok_or_else(|| {
-            Error::Parse(format!(
-                "{path}: a scene file needs a name to name its files"
-            ))
+            Error::invalid(
+                Input::Scene,
+                format!("{path}: a scene file needs a name to name its files"),
+            )
         })?;
     Ok(SceneEntry {
         name: name.to_string(),

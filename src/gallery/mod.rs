@@ -34,7 +34,7 @@ mod parallel;
 mod quote;
 
 use crate::catalogue::FigureOptions;
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::figure::Font;
 use crate::render::{FileFormat, to_svg};
 use crate::table::{Format, TableName};
@@ -148,9 +148,10 @@ impl Gallery {
             && !name.contains(['/', '\\'])
             && name != INDEX;
         if !plain {
-            return Err(Error::Parse(format!(
-                "'{name}' cannot name a gallery's files"
-            )));
+            return Err(Error::invalid(
+                Input::Manifest,
+                format!("'{name}' cannot name a gallery's files"),
+            ));
         }
         let taken = self.figures.iter().any(|f| f.name() == name)
             || self.scenes.iter().any(|s| &s.name == name)
@@ -158,9 +159,10 @@ impl Gallery {
                 .iter()
                 .any(|t| Self::table_file(*t).strip_suffix(".txt") == Some(name));
         if taken {
-            return Err(Error::Parse(format!(
-                "two entries of the gallery are named {name}: rename the scene file"
-            )));
+            return Err(Error::invalid(
+                Input::Manifest,
+                format!("two entries of the gallery are named {name}: rename the scene file"),
+            ));
         }
         self.scenes.push(entry);
         Ok(())
@@ -210,7 +212,10 @@ impl Gallery {
     /// format, or one that this build leaves out (naming the feature).
     pub fn can_build(&self) -> Result<()> {
         if self.formats.is_empty() {
-            return Err(Error::Parse("a gallery needs at least one format".into()));
+            return Err(Error::invalid(
+                Input::Manifest,
+                "a gallery needs at least one format".into(),
+            ));
         }
         match self.formats.iter().find(|f| !f.is_supported()) {
             Some(f) => Err(Error::Unsupported(format!(

@@ -106,7 +106,10 @@ mod tests {
             2,
             |&j| {
                 if j == 5 || j == 7 {
-                    Err(Error::Parse(format!("job {j}")))
+                    Err(Error::invalid(
+                        crate::error::Input::Options,
+                        format!("job {j}"),
+                    ))
                 } else {
                     Ok(j)
                 }
@@ -124,7 +127,10 @@ mod tests {
             3,
             |&j| Ok(j),
             |r| match r {
-                3 => Err(Error::Parse("taking 3".into())),
+                3 => Err(Error::invalid(
+                    crate::error::Input::Options,
+                    "taking 3".into(),
+                )),
                 _ => Ok(()),
             },
         )

@@ -12,7 +12,7 @@ use super::page::{footer, style, value_cell};
 use super::random::SplitMix64;
 use super::steps::{Row, rows, short, show};
 use super::{Handout, Paper};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::html::{document, rich};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use maud::html;
@@ -66,7 +66,7 @@ impl Class {
     pub fn draw(count: usize, seed: u64, template: &Handout) -> Result<Self> {
         if count == 0 || count > MAX_CLASS {
             return Err(Error::OutOfRange {
-                name: "class",
+                name: Field::Class,
                 value: count as f64,
                 reason: format!("a class has 1 to {MAX_CLASS} students"),
             });

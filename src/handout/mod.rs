@@ -45,7 +45,7 @@ pub use random::SplitMix64;
 
 use crate::analytic::kinematics::check_omega;
 use crate::construct::Reading;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
 /// The paper a page is printed on.
@@ -74,9 +74,10 @@ impl Paper {
         match name {
             "a4" => Ok(Paper::A4),
             "letter" => Ok(Paper::Letter),
-            _ => Err(Error::Parse(format!(
-                "unknown paper '{name}': expected a4 or letter"
-            ))),
+            _ => Err(Error::invalid(
+                Input::Paper,
+                format!("unknown paper '{name}': expected a4 or letter"),
+            )),
         }
     }
 
@@ -170,16 +171,16 @@ impl Handout {
     /// range; units other than feet and pounds-force, the units of the
     /// indicator diagram (lbf/ft²) and its bore.
     pub fn with_dynamics(mut self, mass: f64, fluctuation: f64) -> Result<Self> {
-        let mass = crate::error::positive("mass", mass)?;
+        let mass = crate::error::positive(Field::Mass, mass)?;
         if !(fluctuation > 0.0 && fluctuation < 2.0) {
             return Err(Error::OutOfRange {
-                name: "fluctuation",
+                name: Field::Fluctuation,
                 value: fluctuation,
                 reason: "the coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω is above 0 and below 2 (where the least speed would be zero)".into(),
             });
         }
         if self.units != Units::FOOT_POUND {
-            return Err(Error::Parse(
+            return Err(Error::invalid(Input::Options,
                 "the handout's dynamics take their gas force from an indicator diagram in lbf/ft² with a 10 in bore: give lengths in ft and forces in lbf with --mass".into(),
             ));
         }

@@ -1,6 +1,6 @@
 //! The file formats a figure is written in, told by the file's extension.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use std::path::Path;
 
 /// A file format of figures.
@@ -47,9 +47,10 @@ impl FileFormat {
             .into_iter()
             .find(|f| f.extension().eq_ignore_ascii_case(name))
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown format '{name}': the formats are svg, png and pdf"
-                ))
+                Error::invalid(
+                    Input::FileFormat,
+                    format!("unknown format '{name}': the formats are svg, png and pdf"),
+                )
             })
     }
 
@@ -64,7 +65,7 @@ impl FileFormat {
                 .to_str()
                 .and_then(|e| Self::from_name(e).ok())
                 .ok_or_else(|| {
-                    Error::Parse(format!(
+                    Error::invalid(Input::OutputFile, format!(
                         "cannot write {}: .{} is not an output format: give a file ending in .svg, .png or .pdf",
                         path.display(),
                         ext.to_string_lossy()

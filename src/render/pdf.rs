@@ -14,7 +14,7 @@
 //! subset tags derived from the glyphs used.
 
 use super::font_database::font_database;
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use pdf_writer::types::{
     CidFontType, FontFlags, LineCapStyle, LineJoinStyle, SystemInfo, UnicodeCmap,
 };
@@ -56,7 +56,7 @@ pub fn to_pdf(svg: &str) -> Result<Vec<u8>> {
         ..usvg::Options::default()
     };
     let tree = usvg::Tree::from_str(svg, &options)
-        .map_err(|e| Error::Parse(format!("cannot read the SVG: {e}")))?;
+        .map_err(|e| Error::invalid(Input::Svg, format!("cannot read the SVG: {e}")))?;
     let size = tree.size();
     let (width, height) = (
         size.width() * POINTS_PER_UNIT,
@@ -290,7 +290,7 @@ impl Page {
                 })
             })
             .flatten()
-            .ok_or_else(|| Error::Parse("a face of the SVG cannot be read".into()))?;
+            .ok_or_else(|| Error::invalid(Input::Svg, "a face of the SVG cannot be read".into()))?;
         self.faces.push(FaceUse {
             id,
             units_per_em: f32::from(units_per_em),
@@ -346,7 +346,12 @@ impl Page {
                 .with_face_data(face.id, |data, index| {
                     write_face(&mut pdf, face, type0, refs, data, index)
                 })
-                .unwrap_or_else(|| Err(Error::Parse("a face of the SVG cannot be read".into())))?;
+                .unwrap_or_else(|| {
+                    Err(Error::invalid(
+                        Input::Svg,
+                        "a face of the SVG cannot be read".into(),
+                    ))
+                })?;
         }
         Ok(pdf.finish())
     }
@@ -390,7 +395,7 @@ fn write_face(
 
 /// The error for a bundled face that cannot be read.
 fn bad_face() -> Error {
-    Error::Parse("a bundled face cannot be read".into())
+    Error::invalid(Input::Svg, "a bundled face cannot be read".into())
 }
 
 /// A length in font units as thousandths of the em, PDF's glyph space.
@@ -503,7 +508,7 @@ fn write_program(
     cff: bool,
 ) -> Result<()> {
     let subset = subsetter::subset(data, index, &face.remapper)
-        .map_err(|e| Error::Parse(format!("cannot subset {postscript}: {e}")))?;
+        .map_err(|e| Error::invalid(Input::Svg, format!("cannot subset {postscript}: {e}")))?;
     let program = if cff {
         let sub = skrifa::raw::FontRef::new(&subset).map_err(|_| bad_face())?;
         sub.table_data(CFF)
@@ -665,6 +670,12 @@ mod tests {
             err.starts_with("PDF output does not draw gradients"),
             "{err}"
         );
-        assert!(matches!(to_pdf("<svg"), Err(Error::Parse(_))));
+        assert!(matches!(
+            to_pdf("<svg"),
+            Err(Error::Invalid {
+                input: Input::Svg,
+                ..
+            })
+        ));
     }
 }

@@ -2,7 +2,7 @@
 //! is ever loaded, so the same SVG gives the same bytes on every machine.
 
 use super::font_database::font_database;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use resvg::tiny_skia;
 use std::sync::Arc;
 use usvg::fontdb::Database;
@@ -22,7 +22,7 @@ pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
 fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
     if !(scale.is_finite() && scale > 0.0 && scale <= 16.0) {
         return Err(Error::OutOfRange {
-            name: "scale",
+            name: Field::Scale,
             value: scale as f64,
             reason: "a PNG scale is between 0 and 16".into(),
         });
@@ -32,20 +32,20 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
         ..usvg::Options::default()
     };
     let tree = usvg::Tree::from_str(svg, &options)
-        .map_err(|e| Error::Parse(format!("cannot read the SVG: {e}")))?;
+        .map_err(|e| Error::invalid(Input::Svg, format!("cannot read the SVG: {e}")))?;
     let size = tree
         .size()
         .to_int_size()
         .scale_by(scale)
         .ok_or_else(|| Error::OutOfRange {
-            name: "scale",
+            name: Field::Scale,
             value: scale as f64,
             reason: "the picture would be empty".into(),
         })?;
     let pixels = u64::from(size.width()) * u64::from(size.height());
     if pixels > MAX_PNG_PIXELS {
         return Err(Error::OutOfRange {
-            name: "PNG size",
+            name: Field::PngSize,
             value: pixels as f64,
             reason: format!(
                 "a PNG of {} × {} pixels is more than the {} megapixels this program draws: make the page smaller, or write SVG",
@@ -57,7 +57,7 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
     }
     let paper = paper(&tree);
     let mut pixmap = canvas(size, paper).ok_or_else(|| Error::OutOfRange {
-        name: "scale",
+        name: Field::Scale,
         value: scale as f64,
         reason: "the picture would be too large".into(),
     })?;

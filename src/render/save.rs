@@ -10,7 +10,7 @@ use std::path::Path;
 /// extension), whole or not at all: what `Figure::save` would be, kept
 /// here because the figure model knows nothing of its writers.
 ///
-/// Errors: an unknown extension ([`Error::Parse`](crate::error::Error::Parse),
+/// Errors: an unknown extension ([`Error::Invalid`](crate::error::Error::Invalid),
 /// before anything is written), a format whose feature this build leaves
 /// out ([`Error::Unsupported`](crate::error::Error::Unsupported)), or the write
 /// itself ([`Error::Io`](crate::error::Error::Io), the existing file untouched).

@@ -1,6 +1,6 @@
 //! The layers a scene can draw.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use serde::Deserialize;
 
 /// One layer of a mechanism figure. Each asks for the constructions it needs
@@ -93,11 +93,14 @@ impl Layer {
             .into_iter()
             .find(|l| l.name() == name.trim())
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown layer '{}': expected one of {}",
-                    name.trim(),
-                    Self::ALL.map(|l| l.name()).join(", ")
-                ))
+                Error::invalid(
+                    Input::Layers,
+                    format!(
+                        "unknown layer '{}': expected one of {}",
+                        name.trim(),
+                        Self::ALL.map(|l| l.name()).join(", ")
+                    ),
+                )
             })
     }
 

@@ -26,7 +26,7 @@ pub(crate) use linkage::{BEARING_REACH, PIN_CLEAR, Seg, Slot};
 pub use notation::Notation;
 
 use crate::construct::CouplerPoint;
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Field, Result, finite, positive};
 use crate::figure::Figure;
 use crate::figure::Font;
 use crate::figure::Style;
@@ -81,10 +81,10 @@ impl Page {
     /// between 50 and 20000, the margin ≥ 0 and leaving at least 50 units
     /// of drawing each way.
     pub fn new(width: f64, height: f64, margin: f64) -> Result<Self> {
-        let width = positive("page width", width)?;
-        let height = positive("page height", height)?;
-        let margin = finite("page margin", margin)?;
-        for (name, v) in [("page width", width), ("page height", height)] {
+        let width = positive(Field::PageWidth, width)?;
+        let height = positive(Field::PageHeight, height)?;
+        let margin = finite(Field::PageMargin, margin)?;
+        for (name, v) in [(Field::PageWidth, width), (Field::PageHeight, height)] {
             if !(50.0..=20000.0).contains(&v) {
                 return Err(Error::OutOfRange {
                     name,
@@ -95,14 +95,14 @@ impl Page {
         }
         if margin < 0.0 {
             return Err(Error::OutOfRange {
-                name: "page margin",
+                name: Field::PageMargin,
                 value: margin,
                 reason: "the margin must be ≥ 0 and leave at least 50 units each way".into(),
             });
         }
         // A page too small for the margin names the side given, not the
         // margin (which a figure sets itself: `--width 60` has no margin).
-        for (name, v) in [("page width", width), ("page height", height)] {
+        for (name, v) in [(Field::PageWidth, width), (Field::PageHeight, height)] {
             if v - 2.0 * margin < 50.0 {
                 return Err(Error::OutOfRange {
                     name,
@@ -142,17 +142,21 @@ impl Page {
         let page = page.map_err(|e| {
             let (name, reason) = match e {
                 Error::OutOfRange {
-                    name: name @ ("page width" | "page height"),
+                    name: name @ (Field::PageWidth | Field::PageHeight),
                     reason,
                     ..
                 } => (name, reason),
                 Error::NotFinite {
-                    name: name @ ("page width" | "page height"),
+                    name: name @ (Field::PageWidth | Field::PageHeight),
                     ..
                 } => (name, PAGE_RANGE.to_string()),
                 e => return e,
             };
-            let given = if name == "page width" { width } else { height };
+            let given = if name == Field::PageWidth {
+                width
+            } else {
+                height
+            };
             Error::OutOfRange {
                 name,
                 value: given.value(),
@@ -545,7 +549,7 @@ impl Scene {
         valid::scene(self)?;
         if angles.is_empty() || angles.len() > valid::MAX_HELD {
             return Err(Error::OutOfRange {
-                name: "frames",
+                name: Field::Frames,
                 value: angles.len() as f64,
                 reason: format!("a series has 1 to {} frames", valid::MAX_HELD),
             });
@@ -678,7 +682,7 @@ impl Scene {
         let page = self.page;
         if page.holds_height() && figure.height() > page.height() + HEIGHT_SLACK {
             return Err(Error::OutOfRange {
-                name: "page height",
+                name: Field::PageHeight,
                 value: page.height(),
                 reason: format!(
                     "this figure needs {} page units at this width (its drawing, detail and notes); \

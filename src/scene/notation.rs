@@ -1,5 +1,6 @@
 //! Which letters a figure uses: the textbook's or Ng's.
 
+use crate::error::Input;
 use serde::Deserialize;
 
 /// The letters of a figure (docs/design.md §1): the textbook's C, B, A, D, E or
@@ -48,7 +49,7 @@ impl Notation {
             .into_iter()
             .find(|n| n.name() == name)
             .ok_or_else(|| {
-                crate::error::Error::Parse(format!(
+                crate::error::Error::invalid(Input::Notation, format!(
                     "unknown notation '{}': expected textbook (C, B, A, D, E) or ng (O, C, P, I, M)",
                     name.escape_default()
                 ))

@@ -4,7 +4,7 @@
 
 use super::Scene;
 use crate::angle::Angle;
-use crate::error::{Error, Result, finite, positive};
+use crate::error::{Error, Field, Input, Result, finite, positive};
 
 /// The most poses one figure draws (the first and its ghosts).
 pub(crate) const MAX_POSES: usize = 64;
@@ -32,7 +32,7 @@ pub(crate) fn omega(omega: f64) -> Result<f64> {
     let omega = crate::analytic::kinematics::check_omega(omega)?;
     if omega == 0.0 {
         return Err(Error::NotPositive {
-            name: "omega",
+            name: Field::Omega,
             value: omega,
         });
     }
@@ -41,15 +41,15 @@ pub(crate) fn omega(omega: f64) -> Result<f64> {
 
 /// A crank torque: finite.
 pub(crate) fn torque(torque: f64) -> Result<f64> {
-    finite("torque", torque)
+    finite(Field::Torque, torque)
 }
 
 /// A curve tolerance in page units, in [1e-6, 10].
 pub(crate) fn tolerance(tolerance: f64) -> Result<f64> {
-    let t = positive("tolerance", tolerance)?;
+    let t = positive(Field::Tolerance, tolerance)?;
     if !(1e-6..=10.0).contains(&t) {
         return Err(Error::OutOfRange {
-            name: "tolerance",
+            name: Field::Tolerance,
             value: t,
             reason: "give a page tolerance between 1e-6 and 10".into(),
         });
@@ -60,11 +60,14 @@ pub(crate) fn tolerance(tolerance: f64) -> Result<f64> {
 /// The poses of one figure: 1 to [`MAX_POSES`].
 pub(crate) fn angles(angles: &[Angle]) -> Result<()> {
     if angles.is_empty() {
-        return Err(Error::Parse("a scene needs at least one angle".into()));
+        return Err(Error::invalid(
+            Input::Angles,
+            "a scene needs at least one angle".into(),
+        ));
     }
     if angles.len() > MAX_POSES {
         return Err(Error::OutOfRange {
-            name: "angles",
+            name: Field::Angles,
             value: angles.len() as f64,
             reason: format!("at most {MAX_POSES} poses in one figure"),
         });
@@ -75,13 +78,14 @@ pub(crate) fn angles(angles: &[Angle]) -> Result<()> {
 /// The poses a view is held over: 1 to [`MAX_HELD`].
 pub(crate) fn held_view(angles: &[Angle]) -> Result<()> {
     if angles.is_empty() {
-        return Err(Error::Parse(
+        return Err(Error::invalid(
+            Input::Angles,
             "a view is held over at least one angle".into(),
         ));
     }
     if angles.len() > MAX_HELD {
         return Err(Error::OutOfRange {
-            name: "held angles",
+            name: Field::HeldAngles,
             value: angles.len() as f64,
             reason: format!("a view is held over at most {MAX_HELD} poses"),
         });

@@ -3,7 +3,7 @@
 //! allowance: one copy for the command line and the Python package.
 
 use crate::construct::SweepReport;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::mechanism::SliderCrank;
 use crate::number::plain;
 
@@ -24,20 +24,20 @@ pub fn check_allowance(samples: usize, tolerance: Option<f64>, default: f64) -> 
     let t = tolerance.unwrap_or(default);
     if !(t.is_finite() && t > 0.0) {
         return Err(Error::NotPositive {
-            name: "tolerance",
+            name: Field::Tolerance,
             value: t,
         });
     }
     if t > MAX_TOLERANCE {
         return Err(Error::OutOfRange {
-            name: "tolerance",
+            name: Field::Tolerance,
             value: t,
             reason: "give at most 1: a difference of 1 in scaled units is the size of the quantity itself".into(),
         });
     }
     if samples == 0 {
         return Err(Error::OutOfRange {
-            name: "samples",
+            name: Field::Samples,
             value: 0.0,
             reason: "give at least 1 pose".into(),
         });

@@ -11,7 +11,7 @@ use crate::analytic::approx::acceleration_factor;
 use crate::analytic::kinematics::Kinematics;
 use crate::analytic::statics::{Friction, slider_force, with_friction};
 use crate::angle::Angle;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::mechanism::SliderCrank;
 pub use crate::number::fixed;
 use crate::number::plain;
@@ -61,9 +61,10 @@ impl Format {
             .into_iter()
             .find(|f| f.name() == name)
             .ok_or_else(|| {
-                Error::Parse(format!(
-                    "unknown format '{name}': expected text, markdown or csv"
-                ))
+                Error::invalid(
+                    Input::TableFormat,
+                    format!("unknown format '{name}': expected text, markdown or csv"),
+                )
             })
     }
 }
@@ -255,7 +256,7 @@ fn check_ratios(ratios: &[f64]) -> Result<()> {
     for &n in ratios {
         if n.is_nan() || n <= 1.0 {
             return Err(Error::OutOfRange {
-                name: "n",
+                name: Field::Ratio,
                 value: n,
                 reason: "the rod must be longer than the crank, n = l/r > 1".into(),
             });

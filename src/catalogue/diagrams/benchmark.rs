@@ -5,7 +5,7 @@
 
 use super::{Ctx, PageRect, Sheet, Table};
 use crate::diagram::{Axis, Plot};
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::Point;
 
@@ -55,7 +55,7 @@ const PANELS: [Panel; 2] = [
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let text = ctx.options.data.as_deref().unwrap_or(TABLE);
-    let table = Table::parse(text, "data")?;
+    let table = Table::parse(text, Input::Data, "data")?;
     let rows = rows(&table)?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
@@ -120,7 +120,7 @@ fn rows(table: &Table) -> Result<Vec<Row<'_>>> {
         .filter(|r| r.segments > 0.0 && r.error > 0.0 && r.time > 0.0)
         .collect();
     if rows.is_empty() {
-        return Err(Error::Parse(
+        return Err(Error::invalid(Input::Data,
             "data: no row of method cubic, polyline or uniform with positive segments, error and time"
                 .into(),
         ));

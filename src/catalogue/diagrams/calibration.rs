@@ -7,7 +7,7 @@ use super::{Ctx, PageRect, Sheet, Table};
 use crate::analytic::calibration::{LineFit, NG_TABLE_1, fit_through_origin, fit_with_intercept};
 use crate::catalogue::Fit;
 use crate::diagram::{Axis, Curve, Plot};
-use crate::error::Result;
+use crate::error::{Input, Result};
 use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::{Point, Vector};
 use serde_json::json;
@@ -27,7 +27,9 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
     let points: Vec<(f64, f64)> = match ctx.options.data.as_deref() {
-        Some(text) => Table::parse(text, "data")?.pairs(&["force", "weight"], &["strain"])?,
+        Some(text) => {
+            Table::parse(text, Input::Data, "data")?.pairs(&["force", "weight"], &["strain"])?
+        }
         None => NG_TABLE_1.to_vec(),
     };
     let which = ctx.options.fit.unwrap_or_default();

@@ -12,7 +12,7 @@
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, CylindricChain, QuadricPose};
 use crate::diagram::Plot;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::{Align, Figure, Item, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::number::plain;
@@ -105,7 +105,7 @@ impl Chains {
         // a rod and crank near the largest length.
         let Some((quadric, mode, turn)) = curved.as_quadric() else {
             return Err(Error::OutOfRange {
-                name: "rod",
+                name: Field::Rod,
                 value: m.rod(),
                 reason: format!(
                     "fig-60-chains draws a slot of radius 0.8 (l + r + |e|) = {}, beyond the largest length {}: give l + r + |e| at most {}",

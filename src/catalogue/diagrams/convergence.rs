@@ -7,7 +7,7 @@
 use super::{Ctx, Sheet, short};
 use crate::chain::{ConvergenceRow, slot_convergence};
 use crate::diagram::{Axis, Plot};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::{Dash, Figure, PageRect, Symbol};
 use crate::geom::Point;
 use crate::mechanism::SliderCrank;
@@ -78,7 +78,7 @@ fn radii(m: &SliderCrank) -> Result<Vec<f64>> {
         .collect();
     if radii.len() < 2 {
         return Err(Error::OutOfRange {
-            name: "rod",
+            name: Field::Rod,
             value: l,
             reason: "the slot radii from 1 to 1e15 need (rod + crank + offset)/2 well below 1e15"
                 .into(),

@@ -14,7 +14,7 @@ use super::{Ctx, PER_DEGREE, Sheet, short, sig};
 use crate::diagram::{Axis, Plot};
 use crate::dynamics::turning::total_torque;
 use crate::dynamics::{Flywheel, TurningMoment};
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 
@@ -29,7 +29,7 @@ fn coefficient(ctx: &Ctx) -> Result<f64> {
         Ok(c)
     } else {
         Err(Error::OutOfRange {
-            name: "fluctuation",
+            name: Field::Fluctuation,
             value: c,
             reason: "the coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω is above 0 and below 2 (where the least speed would be zero)".into(),
         })

@@ -12,7 +12,7 @@ use super::{Ctx, PER_DEGREE, Sheet, Table, short, sig};
 use crate::analytic::statics;
 use crate::analytic::statics::NG_TORQUE;
 use crate::diagram::{Axis, Curve, Plot};
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
@@ -86,11 +86,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 /// refused where an angle is outside 0° to 180°.
 fn measured(ctx: &Ctx) -> Result<Vec<(f64, f64)>> {
     let text = ctx.options.data.as_deref().unwrap_or(NG_EXPERIMENT);
-    let measured = Table::parse(text, "data")?.pairs(&["angle", "theta", "θ"], &["force", "f"])?;
+    let measured = Table::parse(text, Input::Data, "data")?
+        .pairs(&["angle", "theta", "θ"], &["force", "f"])?;
     if let Some((a, _)) = measured.iter().find(|(a, _)| !(0.0..=180.0).contains(a)) {
-        return Err(Error::Parse(format!(
-            "data: angle {a}° is outside the figure’s 0° to 180°"
-        )));
+        return Err(Error::invalid(
+            Input::Data,
+            format!("data: angle {a}° is outside the figure’s 0° to 180°"),
+        ));
     }
     Ok(measured)
 }

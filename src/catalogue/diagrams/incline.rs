@@ -7,7 +7,7 @@
 use super::{Ctx, Sheet, short};
 use crate::analytic::statics::mu_from_tilt_degrees;
 use crate::diagram::Plot;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Result};
 use crate::figure::{Figure, Item, PageRect, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 
@@ -22,7 +22,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let tilt = ctx.angle.degrees();
     if !(tilt > 0.0 && tilt < 90.0) {
         return Err(Error::OutOfRange {
-            name: "angle",
+            name: Field::Angle,
             value: tilt,
             reason: "the tilt of the plane is between 0° and 90°".into(),
         });

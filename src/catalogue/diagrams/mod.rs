@@ -25,7 +25,7 @@ use super::specs::Builder;
 use super::{FigureName, FigureOptions};
 use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::Plot;
-use crate::error::{Error, Result};
+use crate::error::{Error, Field, Input, Result};
 use crate::figure::Style;
 use crate::figure::{Figure, Font, PageRect, Panel, RichText};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
@@ -123,7 +123,7 @@ pub(crate) fn positive_mass(ctx: &Ctx) -> Result<f64> {
         Ok(m)
     } else {
         Err(Error::OutOfRange {
-            name: "mass",
+            name: Field::Mass,
             value: m,
             reason: format!(
                 "{} draws the inertia force of the reciprocating parts: give a positive, finite --mass",
@@ -171,7 +171,7 @@ pub(crate) fn build(name: FigureName, build: Builder, options: &FigureOptions) -
         .unwrap_or_else(|| crate::analytic::kinematics::rpm_to_omega(250.0));
     if !(omega > 0.0 && omega.is_finite()) {
         return Err(Error::OutOfRange {
-            name: "omega",
+            name: Field::Omega,
             value: omega,
             reason: "the diagrams are drawn for a crank turning counter-clockwise: give a positive speed"
                 .into(),
@@ -203,9 +203,9 @@ pub(crate) fn build(name: FigureName, build: Builder, options: &FigureOptions) -
     let asked = options.width.is_some() || options.height.is_some();
     built.map_err(|e| match e {
         Error::OutOfRange {
-            name: "panel width" | "panel height",
+            name: Field::PanelWidth,
             ..
-        } if asked => Error::Parse(format!(
+        } if asked => Error::invalid(Input::PageLength, format!(
             "a page of {} × {} units leaves no room for the plots of {}: give it a larger width or height",
             format_number(page.width(), 1),
             format_number(page.height(), 1),

@@ -13,7 +13,7 @@ use crate::diagram::{Axis, Curve, Plot};
 use crate::dynamics::quadrature::integrate;
 use crate::dynamics::turning::total_torque;
 use crate::dynamics::{EXAMPLE_MASS, Engine, GasForce, IndicatorDiagram, TurningMoment};
-use crate::error::Result;
+use crate::error::{Input, Result};
 use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Point, Vector};
 
@@ -29,7 +29,9 @@ const STEP: f64 = 1e-6;
 /// The example engine of the figure.
 pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
     let text = ctx.options.data.as_deref().unwrap_or(INDICATOR);
-    let diagram = IndicatorDiagram::from_csv(text, BORE, "data")?;
+    // The diagram is the figure's data file.
+    let diagram =
+        IndicatorDiagram::from_csv(text, BORE, "data").map_err(|e| e.about(Input::Data))?;
     let mass = ctx.options.mass.unwrap_or(EXAMPLE_MASS);
     Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
 }

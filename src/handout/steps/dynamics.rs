@@ -8,7 +8,7 @@ use super::work::Work;
 use super::{Picture, Row, Step, Value};
 use crate::catalogue::FigureName;
 use crate::dynamics::{Engine, EnginePose, Flywheel, GasForce, IndicatorDiagram, TurningMoment};
-use crate::error::{Error, Result};
+use crate::error::{Error, Input, Result};
 use crate::handout::figures;
 use crate::units::Units;
 
@@ -40,7 +40,7 @@ impl Worked {
             return Ok(None);
         };
         if *w.h.units() != Units::FOOT_POUND {
-            return Err(Error::Parse(
+            return Err(Error::invalid(Input::Options,
                 "the handout's dynamics take their gas force from an indicator diagram in lbf/ft² with a 10 in bore: give lengths in ft and forces in lbf with --mass".into(),
             ));
         }
