@@ -1119,3 +1119,29 @@ fn a_long_sweep_is_the_single_angle_objects_in_order() {
         assert_eq!(elements[k], want, "angle {degrees}");
     }
 }
+
+/// The help of `figure` lists every named figure under its group, and that
+/// of `animate` every mechanism figure and no diagram: both are made from
+/// the catalogue's table, so a figure added there is listed.
+#[test]
+fn the_help_lists_every_named_figure_from_the_catalogue() {
+    // The NAME argument's help, between "Arguments:" and "Options:".
+    let name_help = |command: &str| {
+        let help = String::from_utf8(run(&[command, "--help"]).stdout).unwrap();
+        let start = help.find("Arguments:").unwrap();
+        let end = help.find("Options:").unwrap();
+        help[start..end].to_string()
+    };
+    let (figure, animate) = (name_help("figure"), name_help("animate"));
+    for f in slider_crank::FigureName::ALL {
+        let listed = |help: &str| {
+            help.split(|c: char| c.is_whitespace() || c == ',' || c == '.')
+                .any(|w| w == f.name())
+        };
+        assert!(listed(&figure), "{}", f.name());
+        assert_eq!(listed(&animate), !f.is_diagram(), "{}", f.name());
+    }
+    for heading in ["Mechanism figures:", "Diagrams:", "The chain of Fig. 60:"] {
+        assert!(figure.contains(heading), "{heading}");
+    }
+}

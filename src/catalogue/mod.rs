@@ -20,6 +20,4 @@ pub use options::{FigureOptions, Fit};
 #[cfg(feature = "html")]
 pub(crate) use parse::{located, toml_error};
 pub use scene_file::SceneFile;
-pub use specs::FigureName;
-#[cfg(feature = "html")]
-pub(crate) use specs::Group;
+pub use specs::{FigureName, Group};

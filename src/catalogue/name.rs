@@ -2,7 +2,6 @@
 //! drawn by a [`Scene`], and diagrams (plots against θ, time or position,
 //! polar diagrams, centrodes, Ng's graphs).
 
-#[cfg(feature = "html")]
 use super::specs::Group;
 use super::specs::{At, Kind, Source};
 use super::{FigureName, FigureOptions, Setting, diagrams, scene_toml};
@@ -79,12 +78,12 @@ impl FigureName {
         matches!(self.spec().kind, Kind::Diagram(..))
     }
 
-    /// The gallery's group of a diagram; `None` for a mechanism figure.
-    #[cfg(feature = "html")]
-    pub(crate) fn group(&self) -> Option<Group> {
+    /// The group it is listed in: [`Group::Mechanisms`] for a mechanism
+    /// figure, a diagram's own group otherwise.
+    pub fn group(&self) -> Group {
         match self.spec().kind {
-            Kind::Mechanism(_) => None,
-            Kind::Diagram(group, _) => Some(group),
+            Kind::Mechanism(_) => Group::Mechanisms,
+            Kind::Diagram(group, _) => group,
         }
     }
 

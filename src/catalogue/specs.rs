@@ -77,24 +77,44 @@ pub(crate) enum Kind {
     Mechanism(&'static [Layer]),
     /// A diagram of the gallery's group, built from its options by the
     /// builder.
-    Diagram(
-        #[cfg_attr(not(feature = "html"), allow(dead_code))] Group,
-        Builder,
-    ),
+    Diagram(Group, Builder),
 }
 
 /// A diagram's builder: the figure from the options resolved.
 pub(crate) type Builder = fn(&Ctx) -> Result<Figure>;
 
-/// The gallery's group of a diagram.
+/// The group a named figure is listed in (the gallery's sections, the
+/// command line's list of names): [`FigureName::group`].
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Group {
+pub enum Group {
+    /// The mechanism figures, drawn as scenes with layers.
+    Mechanisms,
     /// The diagrams of the mechanism's motion and forces.
     Diagrams,
     /// The chain of Fig. 60 and its inversions.
     Chain,
     /// For developers: the accuracy of the drawn curves.
     Developers,
+}
+
+impl Group {
+    /// Every group, in the order they are listed.
+    pub const ALL: [Group; 4] = [
+        Group::Mechanisms,
+        Group::Diagrams,
+        Group::Chain,
+        Group::Developers,
+    ];
+
+    /// Its heading (`Mechanism figures`, `The chain of Fig. 60`).
+    pub fn heading(self) -> &'static str {
+        match self {
+            Group::Mechanisms => "Mechanism figures",
+            Group::Diagrams => "Diagrams",
+            Group::Chain => "The chain of Fig. 60",
+            Group::Developers => "For developers, the accuracy of the drawn curves",
+        }
+    }
 }
 
 /// The table's entries make [`FigureName`] (each entry's doc comment is
@@ -555,6 +575,18 @@ mod tests {
         assert_eq!(order, FigureName::ALL);
         assert_eq!(FigureName::SCENES.len(), 7);
         assert_eq!(FigureName::DIAGRAMS.len(), 21);
+    }
+
+    #[test]
+    fn a_diagram_is_in_a_diagrams_group_and_a_scene_in_the_mechanisms() {
+        for f in FigureName::ALL {
+            assert_eq!(
+                f.group() == Group::Mechanisms,
+                !f.is_diagram(),
+                "{}",
+                f.name()
+            );
+        }
     }
 
     #[test]

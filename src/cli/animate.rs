@@ -1,10 +1,11 @@
 //! `slider-crank animate NAME --out FILE`: one revolution of a mechanism
 //! figure, as a self-playing SVG or an HTML page with a slider.
 
-use super::figure::{FigureFlags, options};
+use super::figure::{FigureFlags, names_help, options};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::animate::{self, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
+use slider_crank::catalogue::Group;
 use slider_crank::render::write_atomic_with;
 use slider_crank::{Error, FigureName, Input, Result};
 use std::io::{IsTerminal, Write};
@@ -22,10 +23,11 @@ use std::time::{Duration, Instant};
     mut_arg("fit", |a| a.hide(true))
 )]
 pub struct AnimateArgs {
-    /// The mechanism figure: fig-62-displacement, fig-63-velocity,
-    /// fig-65-klein, fig-66-kisch, fig-67-example, ng-fig-1-torque,
-    /// ng-fig-a1-velocity (the diagrams are not animated)
-    #[arg(value_name = "NAME")]
+    // The help lists the mechanism figures (the diagrams are not animated).
+    #[arg(
+        value_name = "NAME",
+        help = names_help(&[Group::Mechanisms], "The mechanism figure (the diagrams are not animated)")
+    )]
     pub name: FigureName,
     #[command(flatten)]
     pub flags: FigureFlags,

@@ -3,28 +3,34 @@
 use super::args::{SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::catalogue::{FigureOptions, Fit};
+use slider_crank::catalogue::{FigureOptions, Fit, Group};
 use slider_crank::figure::{Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, same_file, to_svg, to_svg_with_fonts, write_atomic};
 use slider_crank::{Error, Figure, FigureName, Input, Layer, Notation, Result, SliderCrank, Style};
 use std::path::{Path, PathBuf};
 
+/// The help of a figure's NAME: `lead`, then the names of the figures of
+/// each of `groups` after its heading, in the catalogue's order.
+pub(super) fn names_help(groups: &[Group], lead: &str) -> String {
+    let mut help = lead.to_string();
+    for &group in groups {
+        let names: Vec<&str> = FigureName::ALL
+            .iter()
+            .filter(|f| f.group() == group)
+            .map(FigureName::name)
+            .collect();
+        let heading = group.heading();
+        help.push_str(&format!(". {heading}: {}", names.join(", ")));
+    }
+    help
+}
+
 /// Draw a named figure: a mechanism figure of the seeds or a diagram.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
-    /// The figure. Mechanism figures: fig-62-displacement,
-    /// fig-63-velocity, fig-65-klein, fig-66-kisch, fig-67-example,
-    /// ng-fig-1-torque, ng-fig-a1-velocity. Diagrams: fig-61-centrodes,
-    /// fig-64-velocity-diagrams, acceleration-diagrams, rod-motion,
-    /// approximation-error, coupler-curves, ng-fig-2-incline,
-    /// ng-fig-7-calibration, ng-fig-8-forces, curve-benchmark. The chain of
-    /// Fig. 60: fig-60-chains, inversion-1-engine,
-    /// inversion-2-rotating-block, inversion-3-oscillating-cylinder,
-    /// inversion-4-hand-pump, slot-convergence. Engine dynamics (--mass):
-    /// turning-moment, inertia-force, primary-secondary,
-    /// direct-reverse-cranks, flywheel (--fluctuation)
-    #[arg(value_name = "NAME")]
+    // The help lists every named figure by its group (`names_help`).
+    #[arg(value_name = "NAME", help = names_help(&Group::ALL, "The figure"))]
     pub name: FigureName,
     #[command(flatten)]
     pub flags: FigureFlags,

@@ -19,26 +19,26 @@ figcaption { margin-top: .5rem; }
 .files a { margin-right: .6rem; }
 ";
 
-/// The four groups of figures and their headings: the teaching figures,
-/// then the developers' benchmark on its own.
-fn groups(figures: &[FigureName]) -> [(&'static str, &'static str, Vec<FigureName>); 4] {
-    let pick = |group: Option<Group>| {
-        figures
-            .iter()
-            .copied()
-            .filter(|f| f.group() == group)
-            .collect()
-    };
-    [
-        ("mechanisms", "Mechanism figures", pick(None)),
-        ("diagrams", "Diagrams", pick(Some(Group::Diagrams))),
-        ("chain", "The chain of Fig. 60", pick(Some(Group::Chain))),
-        (
-            "developers",
-            "For developers: the accuracy of the drawn curves",
-            pick(Some(Group::Developers)),
-        ),
-    ]
+/// The groups of figures, each with its anchor, heading and figures: the
+/// teaching figures, then the developers' benchmark on its own.
+fn groups(figures: &[FigureName]) -> Vec<(&'static str, &'static str, Vec<FigureName>)> {
+    Group::ALL
+        .into_iter()
+        .map(|group| {
+            let anchor = match group {
+                Group::Mechanisms => "mechanisms",
+                Group::Diagrams => "diagrams",
+                Group::Chain => "chain",
+                Group::Developers => "developers",
+            };
+            let members = figures
+                .iter()
+                .copied()
+                .filter(|f| f.group() == group)
+                .collect();
+            (anchor, group.heading(), members)
+        })
+        .collect()
 }
 
 /// The whole page.
@@ -230,7 +230,10 @@ mod tests {
 
     #[test]
     fn the_benchmark_is_kept_apart_from_the_teaching_figures() {
-        let [mechanisms, diagrams, chain, developers] = groups(&FigureName::ALL);
+        let groups = groups(&FigureName::ALL);
+        let [mechanisms, diagrams, chain, developers] = &groups[..] else {
+            panic!("four groups");
+        };
         for (_, _, figures) in [mechanisms, diagrams, chain] {
             assert!(!figures.contains(&FigureName::CurveBenchmark));
         }

@@ -39,19 +39,61 @@ pub(crate) fn power_of_ten(k: i32) -> String {
     s
 }
 
-/// Four significant figures with a true minus sign; below 1e-9 and from
-/// 1e15 a power of ten (`8.786×10⁻¹⁰¹`), never hundreds of digits or a
-/// tiny value written as zero. 0 and non-finite values write `0`.
+/// Where a number is set, which decides only where it turns to a power
+/// of ten and how the times sign is spaced; the rule of four significant
+/// figures is the same.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum SetOn {
+    /// On a figure: a power of ten below 1e-9 and from 1e15, the times
+    /// sign set tight (`8.786×10⁻¹⁰¹`), a letter's room being small.
+    Figure,
+    /// In a page's running text (the handout): a power of ten below 1e-4
+    /// and from 1e9, the times sign spaced (`1.500 × 10¹⁰`).
+    Page,
+}
+
+impl SetOn {
+    /// The magnitudes written in fixed notation.
+    fn fixed(self) -> std::ops::Range<f64> {
+        match self {
+            SetOn::Figure => 1e-9..1e15,
+            SetOn::Page => 1e-4..1e9,
+        }
+    }
+
+    /// The times sign between mantissa and power.
+    fn times(self) -> &'static str {
+        match self {
+            SetOn::Figure => "×",
+            SetOn::Page => " × ",
+        }
+    }
+}
+
+/// Four significant figures with a true minus sign on a figure ([`sig_on`]
+/// [`SetOn::Figure`]): below 1e-9 and from 1e15 a power of ten
+/// (`8.786×10⁻¹⁰¹`), never hundreds of digits or a tiny value written as
+/// zero. 0 and non-finite values write `0`.
 pub(crate) fn sig(x: f64) -> String {
+    sig_on(x, SetOn::Figure)
+}
+
+/// Four significant figures with a true minus sign, set `on` a figure or a
+/// page: outside the fixed range of `on` a mantissa in [1, 10) and a power
+/// of ten (the mantissa and exponent as `{:e}` rounds them: 9.9996e10 is
+/// `1.000 × 10¹¹`, a subnormal is not divided to infinity). 0 and
+/// non-finite values write `0`.
+pub(crate) fn sig_on(x: f64, on: SetOn) -> String {
     if x == 0.0 || !x.is_finite() {
         return "0".into();
     }
-    if !(1e-9..1e15).contains(&x.abs()) {
+    if !on.fixed().contains(&x.abs()) {
         let s = format!("{:.3e}", x.abs());
         let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
         let sign = if x < 0.0 { "\u{2212}" } else { "" };
         return format!(
-            "{sign}{mantissa}×{}",
+            "{sign}{mantissa}{}{}",
+            on.times(),
             power_of_ten(exponent.parse().unwrap_or(0))
         );
     }
@@ -61,7 +103,13 @@ pub(crate) fn sig(x: f64) -> String {
 
 /// [`sig`] without trailing zeros (`50°`, `250 rpm`, `0.5 ft`, `2×10⁻⁸`).
 pub(crate) fn short(x: f64) -> String {
-    let s = sig(x);
+    short_on(x, SetOn::Figure)
+}
+
+/// [`sig_on`] without trailing zeros, in the mantissa too (`250`, `0.5`,
+/// `1.5 × 10¹⁰` on a page).
+pub(crate) fn short_on(x: f64, on: SetOn) -> String {
+    let s = sig_on(x, on);
     let trim = |m: &str| {
         if m.contains('.') {
             m.trim_end_matches('0').trim_end_matches('.').to_string()
@@ -69,8 +117,8 @@ pub(crate) fn short(x: f64) -> String {
             m.to_string()
         }
     };
-    match s.split_once('×') {
-        Some((mantissa, power)) => format!("{}×{power}", trim(mantissa)),
+    match s.split_once(on.times()) {
+        Some((mantissa, power)) => format!("{}{}{power}", trim(mantissa), on.times()),
         None => trim(&s),
     }
 }
@@ -103,6 +151,55 @@ pub(crate) fn given(x: f64) -> String {
     match s.strip_prefix('-') {
         Some(rest) => format!("\u{2212}{rest}"),
         None => s,
+    }
+}
+
+#[cfg(test)]
+mod page_tests {
+    use super::{SetOn, short_on, sig_on};
+
+    fn show(x: f64) -> String {
+        sig_on(x, SetOn::Page)
+    }
+
+    #[test]
+    fn numbers_on_a_page_show_four_figures_and_a_true_minus() {
+        assert_eq!(show(10.3466), "10.35");
+        assert_eq!(show(-0.351), "−0.3510");
+        assert_eq!(show(242.1), "242.1");
+        assert_eq!(show(1.5e10), "1.500 × 10¹⁰");
+        assert_eq!(show(-2e-6), "−2.000 × 10⁻⁶");
+        assert_eq!(show(0.0), "0");
+        assert_eq!(short_on(250.0, SetOn::Page), "250");
+        assert_eq!(short_on(0.5, SetOn::Page), "0.5");
+        assert_eq!(short_on(1.5e10, SetOn::Page), "1.5 × 10¹⁰");
+        // The same number on a figure, tight and later to a power.
+        assert_eq!(sig_on(1.5e10, SetOn::Figure), "15000000000");
+        assert_eq!(short_on(-2e-10, SetOn::Figure), "−2×10⁻¹⁰");
+    }
+
+    /// Every double, subnormals and the largest included, shows as a
+    /// mantissa of four figures in [1, 10) and an exponent (was "inf ×
+    /// 10⁻³²⁴" for 5e-324 and "10.000 × 10¹⁰" for 9.9996e10).
+    #[test]
+    fn every_double_on_a_page_shows_a_mantissa_below_ten() {
+        assert_eq!(show(5e-324), "4.941 × 10⁻³²⁴");
+        assert_eq!(show(-2.2250738585072014e-308), "−2.225 × 10⁻³⁰⁸");
+        assert_eq!(show(f64::MAX), "1.798 × 10³⁰⁸");
+        assert_eq!(show(9.9996e10), "1.000 × 10¹¹");
+        assert_eq!(show(9.99996e-5), "1.000 × 10⁻⁴");
+        let mut x = 5e-324_f64;
+        while x.is_finite() {
+            let s = show(x);
+            assert!(!s.contains("inf") && !s.contains("NaN"), "{x:e}: {s}");
+            if let Some((m, _)) = s.split_once(" × ") {
+                let m: f64 = m.replace('\u{2212}', "-").parse().unwrap();
+                assert!((1.0..10.0).contains(&m.abs()), "{x:e}: {s}");
+            } else {
+                assert!(s.chars().count() <= 16, "{x:e}: {s}");
+            }
+            x *= 3.7;
+        }
     }
 }
 

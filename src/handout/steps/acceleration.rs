@@ -1,7 +1,7 @@
 //! §36, the acceleration: Kisch's construction, and the acceleration scale
 //! that turns *CG* into the piston acceleration.
 
-use super::number::show;
+use super::show;
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
 use crate::analytic::approx;

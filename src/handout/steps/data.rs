@@ -1,7 +1,7 @@
 //! The data of the engine, as the pages state them.
 
-use super::number::{short, show};
 use super::work::Names;
+use super::{short, show};
 use crate::handout::Handout;
 
 /// "above" or "below" the crank centre.

@@ -3,9 +3,9 @@
 //! the turning-moment diagram over the turn and the flywheel
 //! (`docs/dynamics.md`).
 
-use super::number::{short, show};
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
+use super::{short, show};
 use crate::catalogue::FigureName;
 use crate::dynamics::{Engine, EnginePose, Flywheel, GasForce, IndicatorDiagram, TurningMoment};
 use crate::error::{Error, Input, Result};

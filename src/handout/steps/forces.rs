@@ -1,8 +1,8 @@
 //! Ng: the OM line and the forces, when a torque is given.
 
-use super::number::{short, show};
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
+use super::{short, show};
 use crate::analytic::statics::Friction;
 use crate::catalogue::FigureName;
 use crate::construct::Statics;

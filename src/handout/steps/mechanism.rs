@@ -2,9 +2,9 @@
 //! obliquity of the rod.
 
 use super::data::side;
-use super::number::{short, show};
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
+use super::{short, show};
 use crate::catalogue::FigureName;
 use crate::error::Result;
 use crate::handout::figures;

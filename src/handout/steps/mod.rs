@@ -16,14 +16,12 @@ mod diagrams;
 mod dynamics;
 mod forces;
 mod mechanism;
-mod number;
 mod rod;
 mod row;
 mod velocity;
 mod work;
 
 pub(super) use data::data_sentence;
-pub(super) use number::{short, show};
 pub(super) use row::{Row, Value};
 
 use super::Handout;
@@ -106,4 +104,16 @@ pub(super) fn rows(h: &Handout, r: &Reading) -> Vec<Row> {
         forces_rows(&w),
     ]
     .concat()
+}
+
+/// A number as a page shows it: four significant figures, a true minus
+/// sign, powers of ten beyond 10⁹ and below 10⁻⁴ (`1.500 × 10¹⁰`).
+pub(super) fn show(x: f64) -> String {
+    crate::number::sig_on(x, crate::number::SetOn::Page)
+}
+
+/// A given number (a datum, not a result) as a page shows it: [`show`]
+/// without trailing zeros (`250`, `0.5`, `40`).
+pub(super) fn short(x: f64) -> String {
+    crate::number::short_on(x, crate::number::SetOn::Page)
 }

@@ -1,8 +1,8 @@
 //! §37: the rod's angular velocity and acceleration.
 
-use super::number::{short, show};
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
+use super::{short, show};
 use crate::analytic::approx;
 use crate::catalogue::FigureName;
 use crate::error::Result;

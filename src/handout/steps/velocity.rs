@@ -1,9 +1,9 @@
 //! §36, the velocity: D and E, and the velocity scale that turns *CE*
 //! into the piston velocity.
 
-use super::number::{short, show};
 use super::work::Work;
 use super::{Picture, Row, Step, Value};
+use super::{short, show};
 use crate::analytic::approx;
 use crate::catalogue::FigureName;
 use crate::error::Result;
