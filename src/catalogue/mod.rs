@@ -6,7 +6,7 @@
 //! It sits above the scenes and the diagrams it builds from, and below the
 //! gallery and the command line that name its figures.
 
-pub(crate) mod diagrams;
+pub(crate) mod builders;
 mod name;
 mod options;
 mod parse;

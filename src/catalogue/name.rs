@@ -4,7 +4,7 @@
 
 use super::specs::Group;
 use super::specs::{At, Kind, Source};
-use super::{FigureName, FigureOptions, Setting, diagrams, scene_toml};
+use super::{FigureName, FigureOptions, Setting, builders, scene_toml};
 use crate::error::{Error, Field, Input, Result};
 use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
@@ -158,7 +158,7 @@ impl FigureName {
         match self.spec().kind {
             Kind::Mechanism(layers) => self.asked_scene(layers, options)?.figure(),
             Kind::Diagram(_, build) => {
-                diagrams::build(*self, build, options).map_err(Error::one_line)
+                builders::build(*self, build, options).map_err(Error::one_line)
             }
         }
     }

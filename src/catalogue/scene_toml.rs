@@ -315,7 +315,7 @@ fn diagram_keys(out: &mut String, name: FigureName) {
             "Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω, above 0 and below 2.",
             &format!(
                 "fluctuation = {}",
-                number(super::diagrams::DEFAULT_COEFFICIENT)
+                number(super::builders::DEFAULT_COEFFICIENT)
             ),
         );
     }

@@ -2,11 +2,11 @@
 //! comes from in the seeds, its caption, the mechanism, pose and page it is
 //! drawn with, its kind and builder, and the options it takes) in one
 //! entry. Adding a figure is adding an entry here (and, for a diagram, the
-//! file under `diagrams/` that builds it); [`FigureName`] and its lists are
+//! file under `builders/` that builds it); [`FigureName`] and its lists are
 //! made from the table.
 
 use super::Setting;
-use super::diagrams::{self, Ctx};
+use super::builders::{self, Ctx};
 use crate::chain::Inversion;
 use crate::error::Result;
 use crate::figure::Figure;
@@ -264,7 +264,7 @@ figures! {
         mechanism: (0.5, 1.25),
         at: Crank(35.0),
         page: (760.0, 600.0),
-        kind: Diagram(Diagrams, diagrams::centrodes::build),
+        kind: Diagram(Diagrams, builders::centrodes::build),
         takes: &[MECH, Angle, Style, Font, Mirror],
     },
     /// Textbook Fig. 64: the polar diagram of piston velocity (E′ on the
@@ -277,7 +277,7 @@ figures! {
         mechanism: ENGINE,
         at: Crank(50.0),
         page: (860.0, 860.0),
-        kind: Diagram(Diagrams, diagrams::velocity::build),
+        kind: Diagram(Diagrams, builders::velocity::build),
         takes: &[MECH, Speed, Angle, Style, Font, Mirror],
     },
     /// Piston acceleration on a distance base and a time base against
@@ -289,7 +289,7 @@ figures! {
         mechanism: ENGINE,
         at: Crank(45.0),
         page: (900.0, 760.0),
-        kind: Diagram(Diagrams, diagrams::acceleration::build),
+        kind: Diagram(Diagrams, builders::acceleration::build),
         takes: &[MECH, Speed, Angle, Style, Font],
     },
     /// The rod's angular velocity and acceleration against θ (§37), with
@@ -301,7 +301,7 @@ figures! {
         mechanism: ENGINE,
         at: Crank(45.0),
         page: (760.0, 640.0),
-        kind: Diagram(Diagrams, diagrams::rod::build),
+        kind: Diagram(Diagrams, builders::rod::build),
         takes: &[MECH, Speed, Angle, Style, Font],
     },
     /// The error of the textbook's approximations (eq. 2, 3, 2a and the
@@ -313,7 +313,7 @@ figures! {
         mechanism: ENGINE,
         at: NoPose,
         page: (900.0, 680.0),
-        kind: Diagram(Diagrams, diagrams::approximation::build),
+        kind: Diagram(Diagrams, builders::approximation::build),
         takes: &[Style, Font],
     },
     /// Ovals traced by points of the rod (§34).
@@ -324,7 +324,7 @@ figures! {
         mechanism: ENGINE,
         at: Crank(40.0),
         page: (760.0, 340.0),
-        kind: Diagram(Diagrams, diagrams::coupler::build),
+        kind: Diagram(Diagrams, builders::coupler::build),
         takes: &[MECH, Angle, Style, Font, Mirror],
     },
     /// Ng Fig. 2: the block on an inclined plane, μ = tan φ.
@@ -335,7 +335,7 @@ figures! {
         mechanism: NG_RIG,
         at: Tilt(45.0),
         page: (620.0, 520.0),
-        kind: Diagram(Diagrams, diagrams::incline::build),
+        kind: Diagram(Diagrams, builders::incline::build),
         takes: &[Angle, Style, Font],
     },
     /// Ng Fig. 7: the calibration points, fitted line(s), equation and R².
@@ -346,7 +346,7 @@ figures! {
         mechanism: NG_RIG,
         at: NoPose,
         page: (640.0, 460.0),
-        kind: Diagram(Diagrams, diagrams::calibration::build),
+        kind: Diagram(Diagrams, builders::calibration::build),
         takes: &[Data, Fit, Style, Font],
     },
     /// Ng Fig. 8: F and F′ (theory) against θ with the measured F′, and the
@@ -358,7 +358,7 @@ figures! {
         mechanism: NG_RIG,
         at: NoPose,
         page: (760.0, 700.0),
-        kind: Diagram(Diagrams, diagrams::forces::build),
+        kind: Diagram(Diagrams, builders::forces::build),
         takes: &[MECH, Data, Style, Font],
     },
     /// The curve engine's benchmark: segments and time against measured
@@ -370,7 +370,7 @@ figures! {
         mechanism: ENGINE,
         at: NoPose,
         page: (900.0, 540.0),
-        kind: Diagram(Developers, diagrams::benchmark::build),
+        kind: Diagram(Developers, builders::benchmark::build),
         takes: &[Data, Style, Font],
     },
     /// Textbook Fig. 60: (a) the quadric crank chain, (b) the block in a
@@ -383,7 +383,7 @@ figures! {
         mechanism: CHAIN,
         at: Crank(50.0),
         page: (900.0, 420.0),
-        kind: Diagram(Chain, diagrams::chains::build),
+        kind: Diagram(Chain, builders::chains::build),
         takes: &[MECH, Angle, Style, Font],
     },
     /// Inversion 1, the frame d fixed: the direct-acting engine, with its
@@ -395,7 +395,7 @@ figures! {
         mechanism: CHAIN,
         at: Crank(60.0),
         page: (760.0, 620.0),
-        kind: Diagram(Chain, |ctx| diagrams::inversions::build(ctx, Inversion::Frame)),
+        kind: Diagram(Chain, |ctx| builders::inversions::build(ctx, Inversion::Frame)),
         takes: &[MECH, Angle, Style, Font],
     },
     /// Inversion 2, the crank a fixed: the rotating block (Whitworth's
@@ -407,7 +407,7 @@ figures! {
         mechanism: CHAIN,
         at: Crank(60.0),
         page: (760.0, 620.0),
-        kind: Diagram(Chain, |ctx| diagrams::inversions::build(ctx, Inversion::Crank)),
+        kind: Diagram(Chain, |ctx| builders::inversions::build(ctx, Inversion::Crank)),
         takes: &[MECH, Angle, Style, Font],
     },
     /// Inversion 3, the rod b fixed: the oscillating cylinder, the crank
@@ -419,7 +419,7 @@ figures! {
         mechanism: CHAIN,
         at: Crank(60.0),
         page: (760.0, 620.0),
-        kind: Diagram(Chain, |ctx| diagrams::inversions::build(ctx, Inversion::Rod)),
+        kind: Diagram(Chain, |ctx| builders::inversions::build(ctx, Inversion::Rod)),
         takes: &[MECH, Angle, Style, Font],
     },
     /// Inversion 4, the block c fixed: the hand pump.
@@ -430,7 +430,7 @@ figures! {
         mechanism: CHAIN,
         at: Crank(60.0),
         page: (760.0, 620.0),
-        kind: Diagram(Chain, |ctx| diagrams::inversions::build(ctx, Inversion::Slider)),
+        kind: Diagram(Chain, |ctx| builders::inversions::build(ctx, Inversion::Slider)),
         takes: &[MECH, Angle, Style, Font],
     },
     /// The curved slot's difference from the straight slot against its
@@ -442,7 +442,7 @@ figures! {
         mechanism: (0.2, 0.6),
         at: NoPose,
         page: (760.0, 560.0),
-        kind: Diagram(Chain, diagrams::convergence::build),
+        kind: Diagram(Chain, builders::convergence::build),
         takes: &[MECH, Style, Font],
     },
     /// The turning-moment diagram of an engine (§37's inertia force and
@@ -455,7 +455,7 @@ figures! {
         mechanism: ENGINE,
         at: NoPose,
         page: (900.0, 760.0),
-        kind: Diagram(Diagrams, diagrams::turning::build),
+        kind: Diagram(Diagrams, builders::turning::build),
         takes: &[MECH, Speed, Data, Mass, Style, Font],
     },
     /// The inertia force of the reciprocating parts on the mechanism:
@@ -470,7 +470,7 @@ figures! {
         mechanism: ENGINE,
         at: Crank(30.0),
         page: (760.0, 760.0),
-        kind: Diagram(Diagrams, diagrams::inertia::build),
+        kind: Diagram(Diagrams, builders::inertia::build),
         takes: &[MECH, Speed, Angle, Mass, Style, Font, Mirror],
     },
     /// The primary and secondary unbalanced forces of the reciprocating
@@ -483,7 +483,7 @@ figures! {
         mechanism: ENGINE,
         at: NoPose,
         page: (900.0, 760.0),
-        kind: Diagram(Diagrams, diagrams::unbalanced::build),
+        kind: Diagram(Diagrams, builders::unbalanced::build),
         takes: &[MECH, Speed, Mass, Style, Font],
     },
     /// The direct and reverse crank method: the primary force as the
@@ -497,7 +497,7 @@ figures! {
         mechanism: ENGINE,
         at: Crank(30.0),
         page: (900.0, 660.0),
-        kind: Diagram(Diagrams, diagrams::cranks::build),
+        kind: Diagram(Diagrams, builders::cranks::build),
         takes: &[MECH, Speed, Angle, Mass, Style, Font],
     },
     /// The flywheel: the energy stored above its least over the turn,
@@ -511,7 +511,7 @@ figures! {
         mechanism: ENGINE,
         at: NoPose,
         page: (900.0, 760.0),
-        kind: Diagram(Diagrams, diagrams::flywheel::build),
+        kind: Diagram(Diagrams, builders::flywheel::build),
         takes: &[MECH, Speed, Data, Mass, Fluctuation, Style, Font],
     },
 }

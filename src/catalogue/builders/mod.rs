@@ -1,4 +1,4 @@
-//! The diagram figures of the catalogue: each file builds one, from plot
+//! The builders of the catalogue's diagram figures: each file builds one, from plot
 //! panels ([`crate::diagram::Plot`]) and, where the textbook draws on the
 //! mechanism, a [`crate::scene::Scene`]'s panel with curves added.
 
