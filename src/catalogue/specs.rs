@@ -6,10 +6,8 @@
 //! made from the table.
 
 use super::Setting;
-use super::builders::{self, Ctx};
+use super::builders::{self, Builder};
 use crate::chain::Inversion;
-use crate::error::Result;
-use crate::figure::Figure;
 use crate::scene::Layer;
 use At::{Crank, NoPose, Tilt};
 use Group::{Chain, Developers, Diagrams};
@@ -79,9 +77,6 @@ pub(crate) enum Kind {
     /// builder.
     Diagram(Group, Builder),
 }
-
-/// A diagram's builder: the figure from the options resolved.
-pub(crate) type Builder = fn(&Ctx) -> Result<Figure>;
 
 /// The group a named figure is listed in (the gallery's sections, the
 /// command line's list of names): [`FigureName::group`].

@@ -21,7 +21,6 @@ pub(super) mod turning;
 pub(super) mod unbalanced;
 pub(super) mod velocity;
 
-use super::specs::Builder;
 use super::{FigureName, FigureOptions};
 use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::Plot;
@@ -160,6 +159,9 @@ pub(super) fn short_arc(centre: Point, radius: f64, start: f64, end: f64) -> Sha
         arrow: false,
     }
 }
+
+/// A diagram's builder: the figure from the options resolved.
+pub(crate) type Builder = fn(&Ctx) -> Result<Figure>;
 
 /// Builds the diagram `name` with `options` by its builder `build` (its
 /// entry in the table of figures): the options resolved against the
