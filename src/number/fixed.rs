@@ -79,9 +79,36 @@ fn fixed_fast(x: f64, decimals: usize) -> Option<String> {
         .map(str::to_owned)
 }
 
+/// `x` to `figures` significant figures (at least 1) as a table writes
+/// it: [`fixed`] decimals within [1e-4, 1e9), exponent form outside
+/// (`1.23457e10`); 0 is `0`.
+pub fn significant(x: f64, figures: usize) -> String {
+    let figures = figures.max(1);
+    let a = x.abs();
+    if a != 0.0 && !(1e-4..1e9).contains(&a) {
+        format!("{x:.*e}", figures - 1)
+    } else {
+        let decimals = if a == 0.0 {
+            0
+        } else {
+            (figures as i32 - 1 - a.log10().floor() as i32).max(0) as usize
+        };
+        fixed(x, decimals)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn significant_figures_as_a_table_writes_them() {
+        assert_eq!(significant(1234.5678, 6), "1234.57");
+        assert_eq!(significant(-0.012345678, 6), "-0.0123457");
+        assert_eq!(significant(123456789012.0, 6), "1.23457e11");
+        assert_eq!(significant(0.0, 6), "0");
+        assert_eq!(significant(2.5e-7, 3), "2.50e-7");
+    }
 
     /// Every double, subnormals and the largest included: at most 15
     /// digits before the point, exponent form beyond, never "inf".

@@ -14,6 +14,6 @@ mod plain;
 
 pub use figure::format_number;
 pub(crate) use figure::{SetOn, given, power_form, power_of_ten, short, short_on, sig, sig_on};
-pub use fixed::fixed;
+pub use fixed::{fixed, significant};
 pub use grid::{GRID, OnGrid, fmt, fmt_coefficient};
 pub use plain::{MAX_FIXED_WIDTH, plain};

@@ -5,9 +5,14 @@ use super::Table;
 use crate::angle::Angle;
 use crate::dynamics::{EXAMPLE_MASS, Engine, Flywheel, FlywheelAsk, TurningMoment};
 use crate::error::Result;
-use crate::number::fixed;
 use crate::number::plain;
+use crate::number::{fixed, significant};
 use crate::units::Units;
+
+/// A note's value: six significant figures.
+fn sig(x: f64) -> String {
+    significant(x, 6)
+}
 
 /// The title, headers and notes of the dynamics table of `engine` with
 /// cylinders at `phases_deg` (the notes hold the turn's results).
@@ -81,21 +86,6 @@ pub fn dynamics_head(
         rows: vec![],
         notes,
     })
-}
-
-/// Six significant figures, exponent form outside 1e-4…1e9.
-fn sig(x: f64) -> String {
-    let a = x.abs();
-    if a != 0.0 && !(1e-4..1e9).contains(&a) {
-        format!("{x:.5e}")
-    } else {
-        let decimals = if a == 0.0 {
-            0
-        } else {
-            (5 - a.log10().floor() as i32).max(0) as usize
-        };
-        fixed(x, decimals)
-    }
 }
 
 /// One row of the dynamics table at `degrees`; past 360° (to 720°) in
