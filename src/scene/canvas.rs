@@ -105,8 +105,9 @@ impl Canvas {
         self.with_part(Part::CentreLine, |c| c.segment(id, Role::Auxiliary, a, b));
     }
 
-    /// Leaves the dots and letters of constructed points inside `region`
-    /// to a detail (pins and lines are still drawn).
+    /// Leaves the dots and letters of constructed points inside `region`,
+    /// and the right-angle marks there, to a detail (pins and lines are
+    /// still drawn): the detail shows them where they stand apart.
     pub(crate) fn quiet(mut self, region: Frame) -> Self {
         self.quiet = Some(region);
         self
@@ -167,6 +168,11 @@ impl Canvas {
     pub(crate) fn push(&mut self, id: impl Into<String>, role: Role, shape: Shape) -> bool {
         let id = id.into();
         if self.ids.contains(&id) {
+            return false;
+        }
+        if let Shape::RightAngle { vertex, .. } = &shape
+            && self.quiet.is_some_and(|f| f.contains(*vertex))
+        {
             return false;
         }
         self.ids.insert(id.clone());

@@ -1,10 +1,13 @@
 //! Lines broken at letters: as a draughtsman interrupts a centre line or
-//! a dimension line where a letter must sit on it, the line of stroke and
-//! the arcs of angle marks are written after the labels are placed, with a
-//! gap at each label box they cross.
+//! a dimension line where a letter must sit on it, the line of stroke,
+//! the arcs of angle marks and a detail's frame are written after the
+//! labels are placed, with a gap at each label box they cross. (A detail's
+//! frame on the main view is avoided by letters as any line is; only a
+//! pin's letter with no other place, among the crowded points it frames,
+//! breaks it.)
 
 use super::Ink;
-use super::markup::{arc_beziers, bezier_d, path, pt};
+use super::markup::{arc_beziers, bezier_d, path, polyline_d, pt};
 use crate::figure::{Part, Pen, Role};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
@@ -36,6 +39,9 @@ pub(super) fn is_centre_line(part: Part) -> bool {
 pub(super) enum Course {
     /// A centre line from one point to another, written dash-dotted.
     Centre { from: Point, to: Point },
+    /// A detail's frame or border (a closed rectangle, written plain): its
+    /// corners in order.
+    Frame { corners: [Point; 4] },
     /// An angle mark's arc: its centre, radius, and the page angles it
     /// starts at and turns through (radians).
     Arc {
@@ -74,6 +80,7 @@ impl OpenLine {
                 }
                 ink.tag(path(d, self.pen)).set("stroke-dasharray", DASH)
             }
+            Course::Frame { corners } => ink.tag(path(frame_d(&corners, boxes), self.pen)),
             Course::Arc {
                 centre,
                 radius,
@@ -89,6 +96,25 @@ impl OpenLine {
             }
         }
     }
+}
+
+/// The path of a closed frame through `corners`, open at the `boxes` it
+/// crosses: one closed sub-path where it crosses none, else each side's
+/// pieces.
+fn frame_d(corners: &[Point; 4], boxes: &[Bounds]) -> String {
+    let sides: Vec<(Point, Point)> = (0..4)
+        .filter_map(|k| Some((*corners.get(k)?, *corners.get((k + 1) % 4)?)))
+        .collect();
+    let cut: Vec<Vec<(Point, Point)>> = sides.iter().map(|&(a, b)| pieces(a, b, boxes)).collect();
+    if cut.iter().zip(&sides).all(|(p, s)| p.as_slice() == [*s]) {
+        return polyline_d(corners, true);
+    }
+    let mut d = String::new();
+    for (s, t) in cut.into_iter().flatten() {
+        let sep = if d.is_empty() { "" } else { " " };
+        let _ = write!(d, "{sep}M{} L{}", pt(s), pt(t));
+    }
+    d
 }
 
 /// Length of the steps along an arc at which [`arc_pieces`] looks for

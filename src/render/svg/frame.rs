@@ -97,8 +97,13 @@ impl PanelWriter<'_> {
     /// The slider block: its outline, heavier than the guides, unfilled so
     /// that curves and constructions through the slider (Kisch's
     /// semicircle ends at A) stay visible. No letter goes inside it, save
-    /// its pin's where it is enlarged (in a detail) so much that the
-    /// letter no longer reaches past it: then inside, beside the pin.
+    /// its pin's where it is enlarged so much that the letter fits inside
+    /// beside the pin: on both sides of it, or in a detail on one side,
+    /// above or below it or to a side (a block 48 units wide and 90 tall
+    /// in a ×2.5 detail: the letter could not reach past its side and had
+    /// only the outline to sit on). A block on the main view that holds
+    /// no letter each way keeps every letter out (the oscillating
+    /// cylinder's, whose link's name belongs outside).
     pub(super) fn block(&mut self, ink: &Ink, points: &[Point]) -> Option<Element> {
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 3 || !pts.iter().all(finite) {
@@ -109,11 +114,17 @@ impl PanelWriter<'_> {
             .iter()
             .fold((first, first), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
         let b = Bounds { min: lo, max: hi };
-        // Room beside the pin for its letter: the pin, the letter's gap
-        // and the letter.
+        // Room beside the pin for its letter (about 0.8 of its size wide
+        // and its size tall): the pin, the letter's gap and the letter,
+        // each way (`roomy`), or across or up and down with the letter's
+        // own room the other way (`beside`, `over`).
         let letter = self.style.font_size(TextSize::Letter);
         let roomy = PIN_RADIUS + LETTER_GAP + letter;
-        if (hi - lo).min() >= 2.0 * roomy {
+        let (wide, tall) = (0.8 * letter, letter);
+        let size = hi - lo;
+        let beside = size.x >= 2.0 * (PIN_RADIUS + LETTER_GAP + wide) && size.y >= tall;
+        let over = size.y >= 2.0 * (PIN_RADIUS + LETTER_GAP + tall) && size.x >= wide;
+        if size.min() >= 2.0 * roomy || (self.detail && (beside || over)) {
             self.obstacles.hollow(b);
         } else {
             self.obstacles.boxed(b);

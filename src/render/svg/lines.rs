@@ -71,6 +71,14 @@ impl PanelWriter<'_> {
             // Written once the labels are placed (with gaps for them).
             return Some(self.open_line(ink, centre::Course::Centre { from, to }));
         }
+        if let [a, b, c, d] = *pts.as_slice()
+            && closed
+            && part == Part::DetailMark
+        {
+            // A detail's frame or border, likewise.
+            let corners = [a, b, c, d];
+            return Some(self.open_line(ink, centre::Course::Frame { corners }));
+        }
         Some(ink.tag(path(polyline_d(&pts, closed), ink.pen)))
     }
 

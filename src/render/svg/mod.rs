@@ -89,6 +89,9 @@ struct PanelWriter<'a> {
     hatchings: Vec<hatching::Hatching>,
     /// The angle marks' radii: (page vertex, size of the sweep, radius).
     angle_radii: Vec<(Point, f64, f64)>,
+    /// Whether the panel is a detail (clipped to its rectangle), where
+    /// the slider's block is enlarged.
+    detail: bool,
 }
 
 impl PanelWriter<'_> {
@@ -214,6 +217,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
         open_lines: Vec::new(),
         hatchings: Vec::new(),
         angle_radii: Vec::new(),
+        detail: panel.is_clipped(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel

@@ -148,7 +148,7 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
         return None;
     }
     if !(acceleration || velocity) {
-        return crank(ctx, scale, max_width);
+        return crank(ctx, scale, max_width).or_else(|| crowded_crank(ctx, scale, max_width));
     }
     let (core, h) = points(ctx);
     let (cmin, cmax) = bounds(&core);
@@ -170,8 +170,8 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
     // The acceleration constructions' pins (C among A, E, F, G on a short
     // rod) need their letters' room inside the frame; the velocity
     // triangle's frame stays tight, clear of the letters about it.
-    let room = if acceleration { CROWD_ROOM } else { 0.0 };
-    let crowding = crowded(&lettered, room, scale, max_width);
+    let reach = if acceleration { FRAME_REACH } else { 0.0 };
+    let crowding = crowded(&lettered, reach, scale, max_width);
     if !readable {
         let all = whole(&core, h, core_extent, scale, max_width);
         // The whole construction enlarged may still leave a cluster of
@@ -237,10 +237,14 @@ fn whole(
 /// each letter, about 12 × 17 units set 4 units from its point, has no
 /// side clear of the other point's letter and lines.
 const CROWD: f64 = 30.0;
-/// Room (main view's page units) between the crowded points and their
-/// detail's region, so that its frame on the main view leaves the pins'
-/// letters room.
-const CROWD_ROOM: f64 = 12.0;
+/// How far (main view's page units) the frame of a crowding detail of an
+/// acceleration construction stands from the crowded points, its padding
+/// ([`PAD`] of the detail's units) included: a pin's letter among them
+/// (about 12 × 17 units, kept 4 from its point and within 1.5 em of it)
+/// then fits on either side of the frame's line, inside beside its point
+/// or outside within reach, rather than on the line (at ×2 the frame stood
+/// 29 units off, where neither fits).
+const FRAME_REACH: f64 = 20.0;
 /// The most room (the detail's page units) the frame leaves about the
 /// crowded points.
 const ROOM_IN_DETAIL: f64 = 100.0;
@@ -273,52 +277,136 @@ fn crowding_points(pts: &[Point], within: f64) -> usize {
 /// The detail of the points of `lettered` (world) that crowd in a main
 /// view at `scale`: the box of every point within [`CROWD`] page units
 /// of another (those within [`CROWD`] / [`MOST_CROWDED`] are taken as
-/// one, which the detail does not try to separate) grown by `room` page
-/// units each way, magnified until the closest such pair is [`APART`], the box
-/// at most [`CROWD_EXTENT`], and the detail within `max_width`.
-fn crowded(lettered: &[Point], room: f64, scale: f64, max_width: f64) -> Crowding {
-    let mut members: Vec<Point> = Vec::new();
-    let mut closest = f64::INFINITY;
-    let mut together = false;
-    for (i, a) in lettered.iter().enumerate() {
-        for b in lettered.iter().skip(i + 1) {
+/// one, which the detail does not try to separate), or where no detail
+/// about them all fits `max_width` (near a dead centre F and G crowd by
+/// A, E by C, a rod's length away) the box of the largest cluster of them
+/// ([`largest_cluster`]); see [`about`].
+fn crowded(lettered: &[Point], reach: f64, scale: f64, max_width: f64) -> Crowding {
+    let pairs = crowding_pairs(lettered, scale);
+    if pairs.is_empty() {
+        return Crowding::Apart;
+    }
+    let of = clusters(lettered.len(), &pairs);
+    let every = crowd_of(lettered, &pairs, &of, None);
+    let detail = (every.and_then(|(m, closest)| about(&m, closest, reach, scale, max_width)))
+        .or_else(|| {
+            let c = largest_cluster(&pairs, &of)?;
+            let (m, closest) = crowd_of(lettered, &pairs, &of, Some(c))?;
+            about(&m, closest, reach, scale, max_width)
+        });
+    match detail {
+        Some(d) => Crowding::Separable(d),
+        None => Crowding::Together,
+    }
+}
+
+/// The detail about the crowding points `members` whose closest pair a
+/// detail separates stands `closest` page units apart in a main view at
+/// `scale`: their box grown each way so that the frame drawn about it on
+/// the main view stands `reach` page units off (0: the box itself,
+/// padded), magnified until that pair is [`APART`], the box at most
+/// [`CROWD_EXTENT`], and the detail within `max_width` (none if no step
+/// fits).
+fn about(
+    members: &[Point],
+    closest: f64,
+    reach: f64,
+    scale: f64,
+    max_width: f64,
+) -> Option<Detail> {
+    let (lo, hi) = bounds(members);
+    let size = (hi - lo) * scale;
+    let wanted = (APART / closest).min(CROWD_EXTENT / size.max().max(1e-9));
+    let first = magnify(wanted.max(1.0), size.x, max_width)?;
+    // The frame on the main view `reach` from the crowded points, its
+    // padding included, so that the letters of the pins among them find
+    // room on one side of it; no more than [`ROOM_IN_DETAIL`] of the
+    // detail's units, so that a large magnification does not pad the
+    // detail with empty paper.
+    let room = (reach - PAD / first).clamp(0.0, ROOM_IN_DETAIL / first) / scale;
+    let (lo, hi) = (lo - Vector::new(room, room), hi + Vector::new(room, room));
+    let magnification = magnify(first, (hi.x - lo.x) * scale, max_width)?;
+    Some(Detail {
+        region: Frame::new(lo, hi),
+        magnification,
+        focus: Focus::Construction,
+    })
+}
+
+/// The pairs of `pts` (by their places) that crowd in a main view at
+/// `scale`: closer than [`CROWD`] page units and not at one point, each
+/// with its distance on the page.
+fn crowding_pairs(pts: &[Point], scale: f64) -> Vec<(usize, usize, f64)> {
+    let mut pairs = Vec::new();
+    for (i, a) in pts.iter().enumerate() {
+        for (j, b) in pts.iter().enumerate().skip(i + 1) {
             let d = (b - a).norm() * scale;
-            if (CROWD / MOST_CROWDED..CROWD).contains(&d) {
-                members.extend([*a, *b]);
-                closest = closest.min(d);
-            } else if d > 0.0 && d < CROWD / MOST_CROWDED {
-                // Their letters still need the detail's room.
-                members.extend([*a, *b]);
-                together = true;
+            if d > 0.0 && d < CROWD {
+                pairs.push((i, j, d));
             }
         }
     }
-    if !closest.is_finite() {
-        return match together {
-            true => Crowding::Together,
-            false => Crowding::Apart,
-        };
+    pairs
+}
+
+/// The cluster of each of `count` points that `pairs` join (a chain of
+/// pairs joins two points), named by the least place in it.
+fn clusters(count: usize, pairs: &[(usize, usize, f64)]) -> Vec<usize> {
+    let mut of: Vec<usize> = (0..count).collect();
+    // Each pair merges its two clusters whole.
+    for &(i, j, _) in pairs {
+        let (ci, cj) = (cluster(&of, i), cluster(&of, j));
+        let (keep, gone) = (ci.min(cj), ci.max(cj));
+        of.iter_mut()
+            .filter(|k| **k == gone)
+            .for_each(|k| *k = keep);
     }
-    let (lo, hi) = bounds(&members);
-    let size = (hi - lo) * scale;
-    let wanted = (APART / closest).min(CROWD_EXTENT / size.max().max(1e-9));
-    let Some(first) = magnify(wanted.max(1.0), size.x, max_width) else {
-        return Crowding::Together;
-    };
-    // The frame on the main view kept clear of the crowded points, so
-    // that the letters of the pins among them find room inside it; no
-    // more than [`ROOM_IN_DETAIL`] of the detail's units, so that a large
-    // magnification does not pad the detail with empty paper.
-    let room = room.min(ROOM_IN_DETAIL / first) / scale;
-    let (lo, hi) = (lo - Vector::new(room, room), hi + Vector::new(room, room));
-    match magnify(first, (hi.x - lo.x) * scale, max_width) {
-        Some(magnification) => Crowding::Separable(Detail {
-            region: Frame::new(lo, hi),
-            magnification,
-            focus: Focus::Construction,
-        }),
-        None => Crowding::Together,
-    }
+    of
+}
+
+/// The cluster of point `i` in `of` ([`clusters`]).
+fn cluster(of: &[usize], i: usize) -> usize {
+    of.get(i).copied().unwrap_or(i)
+}
+
+/// The points of cluster `c` of `of` (every crowding point for `None`)
+/// and the distance of its closest pair a detail separates (at least
+/// [`CROWD`] / [`MOST_CROWDED`] apart: points closer are taken as one,
+/// but their letters still need the detail's room); none where it has no
+/// such pair.
+fn crowd_of(
+    pts: &[Point],
+    pairs: &[(usize, usize, f64)],
+    of: &[usize],
+    c: Option<usize>,
+) -> Option<(Vec<Point>, f64)> {
+    let mine = |i: usize| c.is_none_or(|c| cluster(of, i) == c);
+    let closest = (pairs.iter())
+        .filter(|&&(i, _, d)| mine(i) && d >= CROWD / MOST_CROWDED)
+        .map(|&(_, _, d)| d)
+        .reduce(f64::min)?;
+    let crowding = |i: usize| pairs.iter().any(|&(a, b, _)| a == i || b == i);
+    let members = (pts.iter().enumerate())
+        .filter(|&(i, _)| mine(i) && crowding(i))
+        .map(|(_, p)| *p)
+        .collect();
+    Some((members, closest))
+}
+
+/// The cluster of `of` with the most points, at least [`CLUSTER`], among
+/// those a detail separates something in, the first on a tie: one
+/// detail about the points that crowd most (A, D, F and G by the block
+/// near a dead centre) rather than none. None where there is none.
+fn largest_cluster(pairs: &[(usize, usize, f64)], of: &[usize]) -> Option<usize> {
+    let size = |c: usize| of.iter().filter(|&&k| k == c).count();
+    (pairs.iter())
+        .filter(|&&(_, _, d)| d >= CROWD / MOST_CROWDED)
+        .map(|&(i, _, _)| cluster(of, i))
+        .filter(|&c| size(c) >= CLUSTER)
+        .fold(None, |best: Option<usize>, c| match best {
+            Some(b) if size(b) >= size(c) => Some(b),
+            _ => Some(c),
+        })
 }
 
 /// How the lettered points of a construction lie in the main view.
@@ -376,6 +464,40 @@ fn crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
         magnification,
         focus: Focus::Crank,
     })
+}
+
+/// How close (page units) the piston pin P comes to the crank centre O
+/// before O's letter has no room between P's pin and the torque arrow
+/// about O: a letter about 12 units wide with its gap of 4 each side of
+/// it and P's pin (4.2). At l = 1.2 r they stand 29 apart at the inner
+/// dead centre, and the letters fit; at 1.1 r, 15.
+const PINS_CROWD: f64 = 24.0;
+
+/// The detail of a torque figure whose crank the main view draws large
+/// enough (a short rod) where its pins crowd: near the inner dead centre
+/// of a rod of 1.1 cranks or less the piston pin P comes within
+/// [`PINS_CROWD`] of the crank centre O, whose torque arrow, the torque line's
+/// foot M and their letters leave O's letter no room. Drawn about them,
+/// it carries the marks about the crank as a crank's detail does (M
+/// lies by O at every dead centre: a longer rod's O and M share the
+/// torque arrow's room without one). None for a figure without a torque,
+/// or where the pins stand apart.
+fn crowded_crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
+    if !ctx.scene.has(Layer::Torque) {
+        return None;
+    }
+    let pose = ctx.main.pose();
+    if (pose.a() - pose.c()).norm() * scale >= PINS_CROWD {
+        return None;
+    }
+    let pins = [pose.a(), pose.b(), pose.c()];
+    match crowded(&pins, FRAME_REACH, scale, max_width) {
+        Crowding::Separable(d) => Some(Detail {
+            focus: Focus::Crank,
+            ..d
+        }),
+        Crowding::Apart | Crowding::Together => None,
+    }
 }
 
 /// One detail for the poses of a held view, whose `details` are those
