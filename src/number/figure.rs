@@ -49,6 +49,7 @@ pub(crate) enum SetOn {
     Figure,
     /// In a page's running text (the handout): a power of ten below 1e-4
     /// and from 1e9, the times sign spaced (`1.500 × 10¹⁰`).
+    #[cfg_attr(not(feature = "html"), allow(dead_code))]
     Page,
 }
 
