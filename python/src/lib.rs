@@ -18,7 +18,9 @@ use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{FileFormat, to_svg, write_atomic};
-use slider_crank::{Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units};
+use slider_crank::{
+    Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units,
+};
 use std::path::{Path, PathBuf};
 
 mod chain;
