@@ -24,6 +24,11 @@ const TOP: f64 = 400.0;
 /// two-line legend in a corner clear of it.
 const FLAT: f64 = 120.0;
 
+/// Nor can one narrower than this: the legend is about 270 units wide, and
+/// on a page of 120 mm or 4.5 in it lay over the block and the crank
+/// circle.
+const NARROW: f64 = 700.0;
+
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let mut sheet = Sheet::new(ctx);
@@ -53,10 +58,15 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     // (`draw::build` puts it there).
     #[allow(clippy::indexing_slicing)]
     let panel = base.panels()[0].clone();
-    // A drawing too flat to hold the legend beside it (a long rod) has it
-    // in a band of its own below the scene's notes.
+    // A drawing too flat (a long rod) or too narrow (a narrow page) to
+    // hold the legend beside it has it in a band of its own below the
+    // scene's notes.
     let r = *panel.rect();
-    let band = if r.height < FLAT { Plot::band(2) } else { 0.0 };
+    let band = if r.height < FLAT || r.width < NARROW {
+        Plot::band(2)
+    } else {
+        0.0
+    };
     let area = PageRect::new(r.x, r.y, r.width, TOP + grown + band - r.y);
     let plot = Plot::with_map(
         "mechanism",
