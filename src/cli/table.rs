@@ -106,6 +106,10 @@ pub struct TableArgs {
     pub turn: super::dynamics::TurnArgs,
 }
 
+/// The angles of `table kinematics` and `table dynamics` when none are
+/// given: the turn every 30°.
+const TURN_ANGLES: &str = "0:360:30";
+
 /// Ng's torque as implied by Table 2's F column, N·mm.
 pub const NG_TABLE_2_TORQUE: f64 = 1.0 * 9.81 * 27.0;
 
@@ -227,7 +231,7 @@ fn kinematics(
 ) -> Result<()> {
     let m = mechanism(args, 0.5, 3.0)?;
     let omega = omega(args)?;
-    let spec = spec.map_or_else(|| AngleSpec::parse("0:360:30"), Ok)?;
+    let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
     let units = args.units.units(Units::FOOT_POUND);
     let head = table::kinematics_head(&m, omega, &units);
     guard_angles(args, "table kinematics", &spec, &head)?;
@@ -386,10 +390,7 @@ fn dynamics(
         }
     };
     let phases = args.turn.phases()?;
-    let spec = match spec {
-        Some(s) => s,
-        None => AngleSpec::parse("0:360:30")?,
-    };
+    let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
     let units = args.units.units(Units::FOOT_POUND);
     let head = slider_crank::table::dynamics_head(&engine, &phases, args.turn.flywheel(), &units)?;
     guard_angles(args, "table dynamics", &spec, &head)?;
