@@ -37,6 +37,8 @@ const LETTER: Paper = Paper {
     pdfinfo: "(letter)",
     printable: ((215.9 - 30.0) * PX_PER_MM, (279.4 - 30.0) * PX_PER_MM),
 };
+/// The height of the window the probe opens pages in, CSS px.
+const WINDOW: u32 = 900;
 /// The tallest screenshot taken, px (Chromium's texture limit is 16384).
 const TALLEST: f64 = 16000.0;
 
@@ -182,7 +184,13 @@ fn probe(browser: &Path, page: &Path, width: u32, print: bool) -> Value {
     ));
     std::fs::write(&probed, format!("{}{PROBE}{}", &html[..at], &html[at..])).unwrap();
     let hash = if print { "#print" } else { "" };
-    let dom = chromium(browser, width, 900, &["--dump-dom"], &(url(&probed) + hash));
+    let dom = chromium(
+        browser,
+        width,
+        WINDOW,
+        &["--dump-dom"],
+        &(url(&probed) + hash),
+    );
     std::fs::remove_file(&probed).unwrap();
     let start = dom.find("<pre id=\"probe\">").expect("the probe ran") + 16;
     let end = start + dom[start..].find("</pre>").unwrap();
@@ -606,6 +614,24 @@ fn an_animation_plays_and_its_frame_is_drawn() {
     // One frame shown at a time, drawn, with no script error.
     let report = check_page(&browser, &page);
     assert_eq!(report["figures"].as_array().unwrap().len(), 1, "{report}");
+    // The page is the window's height, the frame scaled into what the
+    // heading and the controls leave: it plays without scrolling.
+    let window = f64::from(WINDOW);
+    assert!(report["height"].as_f64().unwrap() <= window, "{report}");
+    let frame: Vec<f64> = report["figures"][0]["box"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    assert!(
+        frame[1] + frame[3] <= window,
+        "the frame runs below the window: {frame:?}"
+    );
+    assert!(
+        frame[3] >= 0.5 * window,
+        "the frame is small in its window: {frame:?}"
+    );
     // Printed, the frame shown keeps its faces and its notes whole.
     check_print(&browser, &page, &A4);
     check_print(&browser, &page, &LETTER);

@@ -11,9 +11,20 @@ use crate::render::{fmt, root_size};
 use maud::{Markup, PreEscaped, html};
 
 /// The page's style, after the shared book page ([`crate::html::document`]).
+/// On a screen the page is the window's height: the heading and the
+/// controls take what they need and the frame is scaled into the rest
+/// (never below 16rem), so the whole drawing plays without scrolling.
 const STYLE: &str = "
 body { max-width: 64rem; }
 .stage svg { display: block; max-width: 100%; height: auto; }
+@media screen {
+  body { display: flex; flex-direction: column; box-sizing: border-box; height: 100vh;
+         margin-top: 0; margin-bottom: 0; padding-top: 1rem; padding-bottom: 1rem; }
+  h1 { margin-top: 0; }
+  .stage { flex: 1 1 0; min-height: 16rem; }
+  .animation-frame { height: 100%; }
+  .stage svg { width: 100%; height: 100%; }
+}
 .controls { display: flex; align-items: center; gap: 1rem; padding: .5rem 0; position: sticky;
             top: 0; background: #fff; }
 .controls input { flex: 1; }
@@ -30,6 +41,7 @@ const SCRIPT: &str = "
   const frames = stage.querySelectorAll(':scope > .animation-frame');
   const slider = document.getElementById('angle');
   const value = document.getElementById('angle-value');
+  const degrees = document.getElementById('angle-deg');
   const button = document.getElementById('play');
   const step = Number(stage.dataset.period) * 1000 / frames.length;
   let shown = 0, timer = null, start = 0, from = 0;
@@ -38,7 +50,7 @@ const SCRIPT: &str = "
     frames[k].hidden = false;
     shown = k;
     slider.value = k;
-    value.textContent = '\\u03b8 = ' + frames[k].dataset.angleDeg + '\\u00b0';
+    degrees.textContent = frames[k].dataset.angleDeg;
     slider.setAttribute('aria-valuetext', value.textContent);
   };
   const tick = () => {
@@ -101,7 +113,8 @@ fn skeleton(animation: &Reel, heading: &str) -> String {
         h1 { (heading) }
         p {
             "One revolution of the crank in " (count) " frames, "
-            (seconds(animation.period())) " s a turn; the slider sets the crank angle θ."
+            (seconds(animation.period())) " s a turn; the slider sets the crank angle "
+            i { "θ" } "."
         }
         div .controls {
             button #play type="button" aria-pressed="false" { "Play" }
@@ -109,7 +122,7 @@ fn skeleton(animation: &Reel, heading: &str) -> String {
                 step="1" value="0" aria-label="Crank angle θ"
                 aria-valuetext={ "θ = " (fmt(first.angle().degrees())) "°" };
             output #angle-value for="angle" {
-                "θ = " (fmt(first.angle().degrees())) "°"
+                i { "θ" } " = " span #angle-deg { (fmt(first.angle().degrees())) } "°"
             }
         }
         div #stage .stage data-period=(animation.period()) {
