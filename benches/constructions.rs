@@ -101,6 +101,19 @@ fn bench(c: &mut Criterion) {
             acc
         })
     });
+    // The floor under any exact sweep: the sine and cosine of the angle and
+    // the rod's arctangent, which every pose needs whatever else it reads.
+    group.bench_function("the floor: sine, cosine and the rod's arctangent", |b| {
+        let radians: Vec<f64> = (0..360).map(|k| (k as f64 + 0.5).to_radians()).collect();
+        b.iter(|| {
+            let mut acc = 0.0;
+            for t in &radians {
+                let (s, c) = black_box(*t).sin_cos();
+                acc += c + (0.5 * s - 0.1).atan2(3.0);
+            }
+            acc
+        })
+    });
     group.finish();
 }
 
