@@ -298,16 +298,14 @@ impl Gallery {
                 });
             }
         };
-        let files = self
-            .formats
-            .iter()
-            .map(|&format| {
-                Ok(GalleryFile {
-                    name: format!("{name}.{}", format.extension()),
-                    bytes: format.encode(&svg)?,
-                })
+        let files = FileFormat::encode_all(&svg, &self.formats)?
+            .into_iter()
+            .zip(&self.formats)
+            .map(|(bytes, format)| GalleryFile {
+                name: format!("{name}.{}", format.extension()),
+                bytes,
             })
-            .collect::<Result<_>>()?;
+            .collect();
         Ok(Made { files, table: None })
     }
 }

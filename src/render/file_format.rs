@@ -80,15 +80,75 @@ impl FileFormat {
     pub fn encode(&self, svg: &str) -> Result<Vec<u8>> {
         match self {
             FileFormat::Svg => Ok(svg.as_bytes().to_vec()),
-            FileFormat::Png => super::to_png(svg, 2.0),
+            FileFormat::Png => super::to_png(svg, PNG_SCALE),
             FileFormat::Pdf => super::to_pdf(svg),
         }
     }
+
+    /// The bytes of the figure whose SVG is `svg` in each of `formats`, in
+    /// their order: [`FileFormat::encode`] of each, the SVG read (parsed,
+    /// its letters laid out) once for PNG and PDF together. Errors as the
+    /// first format that fails.
+    pub fn encode_all(svg: &str, formats: &[FileFormat]) -> Result<Vec<Vec<u8>>> {
+        #[cfg(any(feature = "png", feature = "pdf"))]
+        {
+            let mut read = None;
+            formats
+                .iter()
+                .map(|f| f.encode_reading(svg, &mut read))
+                .collect()
+        }
+        #[cfg(not(any(feature = "png", feature = "pdf")))]
+        formats.iter().map(|f| f.encode(svg)).collect()
+    }
+
+    /// [`FileFormat::encode`], from `read` (the SVG's tree) where this
+    /// format draws from one, reading it into `read` first if it is empty.
+    #[cfg(any(feature = "png", feature = "pdf"))]
+    fn encode_reading(&self, svg: &str, read: &mut Option<usvg::Tree>) -> Result<Vec<u8>> {
+        let tree = match (self, read.take()) {
+            (FileFormat::Svg, _) => return self.encode(svg),
+            (_, Some(tree)) => tree,
+            (_, None) => super::svg_tree::read(svg)?,
+        };
+        let bytes = match self {
+            #[cfg(feature = "png")]
+            FileFormat::Png => super::png::tree_to_png(&tree, PNG_SCALE),
+            #[cfg(feature = "pdf")]
+            FileFormat::Pdf => super::pdf::tree_to_pdf(&tree),
+            _ => self.encode(svg),
+        };
+        *read = Some(tree);
+        bytes
+    }
 }
+
+/// Pixels per page unit of a PNG written by [`FileFormat::encode`].
+const PNG_SCALE: f32 = 2.0;
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn formats_encoded_together_are_the_bytes_of_each_alone() {
+        let figure = crate::catalogue::FigureName::Fig63Velocity
+            .figure(&crate::catalogue::FigureOptions::default())
+            .unwrap();
+        let svg = crate::render::to_svg(&figure);
+        for formats in [
+            &FileFormat::ALL[..],
+            &[FileFormat::Pdf, FileFormat::Png][..],
+            &[FileFormat::Png][..],
+        ] {
+            let together = FileFormat::encode_all(&svg, formats).unwrap();
+            assert_eq!(together.len(), formats.len());
+            for (bytes, format) in together.iter().zip(formats) {
+                assert!(*bytes == format.encode(&svg).unwrap(), "{format:?}");
+            }
+        }
+        assert!(FileFormat::encode_all("<svg", &FileFormat::ALL).is_err());
+    }
 
     #[test]
     fn the_extension_tells_the_format() {

@@ -15,6 +15,8 @@ mod pending;
 mod png;
 mod save;
 mod svg;
+#[cfg(any(feature = "png", feature = "pdf"))]
+mod svg_tree;
 mod symbol_sizes;
 
 pub use crate::number::plain;

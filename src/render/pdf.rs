@@ -13,7 +13,7 @@
 //! The same SVG gives the same bytes: no date, objects in a fixed order,
 //! subset tags derived from the glyphs used.
 
-use super::font_database::font_database;
+use super::svg_tree::read;
 use crate::error::{Error, Input, Result};
 use pdf_writer::types::{
     CidFontType, FontFlags, LineCapStyle, LineJoinStyle, SystemInfo, UnicodeCmap,
@@ -51,12 +51,12 @@ const SYSTEM_INFO: SystemInfo = SystemInfo {
 /// ([`Error::Unsupported`]: gradients, patterns, images, masks, filters,
 /// group opacity, stroked text).
 pub fn to_pdf(svg: &str) -> Result<Vec<u8>> {
-    let options = usvg::Options {
-        fontdb: font_database(),
-        ..usvg::Options::default()
-    };
-    let tree = usvg::Tree::from_str(svg, &options)
-        .map_err(|e| Error::invalid(Input::Svg, format!("cannot read the SVG: {e}")))?;
+    tree_to_pdf(&read(svg)?)
+}
+
+/// The PDF of an SVG already read ([`super::svg_tree::read`]): the same
+/// bytes as [`to_pdf`] of its text.
+pub(crate) fn tree_to_pdf(tree: &usvg::Tree) -> Result<Vec<u8>> {
     let size = tree.size();
     let (width, height) = (
         size.width() * POINTS_PER_UNIT,

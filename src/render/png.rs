@@ -2,7 +2,8 @@
 //! is ever loaded, so the same SVG gives the same bytes on every machine.
 
 use super::font_database::font_database;
-use crate::error::{Error, Field, Input, Result};
+use super::svg_tree::read_with;
+use crate::error::{Error, Field, Result};
 use resvg::tiny_skia;
 use std::sync::Arc;
 use usvg::fontdb::Database;
@@ -20,19 +21,31 @@ pub fn to_png(svg: &str, scale: f32) -> Result<Vec<u8>> {
 }
 
 fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
-    if !(scale.is_finite() && scale > 0.0 && scale <= 16.0) {
-        return Err(Error::OutOfRange {
+    check_scale(scale)?;
+    draw(&read_with(svg, fontdb)?, scale)
+}
+
+/// The PNG of an SVG already read ([`super::svg_tree::read`]), at `scale`
+/// pixels per page unit: the same bytes as [`to_png`] of its text.
+pub(crate) fn tree_to_png(tree: &usvg::Tree, scale: f32) -> Result<Vec<u8>> {
+    check_scale(scale)?;
+    draw(tree, scale)
+}
+
+fn check_scale(scale: f32) -> Result<()> {
+    if scale.is_finite() && scale > 0.0 && scale <= 16.0 {
+        Ok(())
+    } else {
+        Err(Error::OutOfRange {
             name: Field::Scale,
             value: scale as f64,
             reason: "a PNG scale is between 0 and 16".into(),
-        });
+        })
     }
-    let options = usvg::Options {
-        fontdb,
-        ..usvg::Options::default()
-    };
-    let tree = usvg::Tree::from_str(svg, &options)
-        .map_err(|e| Error::invalid(Input::Svg, format!("cannot read the SVG: {e}")))?;
+}
+
+/// Rasterises `tree` at `scale` (checked) onto its paper and encodes it.
+fn draw(tree: &usvg::Tree, scale: f32) -> Result<Vec<u8>> {
     let size = tree
         .size()
         .to_int_size()
@@ -55,14 +68,14 @@ fn render(svg: &str, scale: f32, fontdb: Arc<Database>) -> Result<Vec<u8>> {
             ),
         });
     }
-    let paper = paper(&tree);
+    let paper = paper(tree);
     let mut pixmap = canvas(size, paper).ok_or_else(|| Error::OutOfRange {
         name: Field::Scale,
         value: scale as f64,
         reason: "the picture would be too large".into(),
     })?;
     resvg::render(
-        &tree,
+        tree,
         tiny_skia::Transform::from_scale(scale, scale),
         &mut pixmap.as_mut(),
     );
