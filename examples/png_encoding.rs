@@ -122,6 +122,9 @@ fn main() {
             for (cname, compression) in [
                 ("fdeflate", FdeflateUltraFast),
                 ("1", Level(1)),
+                ("3", Level(3)),
+                ("4", Level(4)),
+                ("5", Level(5)),
                 ("6", Level(6)),
                 ("9", Level(9)),
             ] {
