@@ -259,6 +259,16 @@ impl Sheet {
         self.height((bottom + MARGIN).min(self.page.height()));
     }
 
+    /// Narrows the page to `width` where its drawing came out narrower
+    /// (a scene narrowed to what it draws, [`Page::with_width_fitted`]);
+    /// a wider `width` leaves it as it is.
+    pub fn narrow(&mut self, width: f64) -> Result<()> {
+        if width < self.page.width() {
+            self.page = self.page.with_width(width)?;
+        }
+        Ok(())
+    }
+
     /// Sets the page's height (a page fitted to its drawing).
     pub fn height(&mut self, height: f64) {
         self.height = Some(height);
