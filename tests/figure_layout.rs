@@ -120,3 +120,80 @@ fn inversion_2_fits_its_page_to_the_drawing() {
         );
     }
 }
+
+/// Ng's Fig. 2 tilted to 80° (issue 20): the weight and its component
+/// along the plane end close together, and their names stood side by
+/// side on one line, reading as "mg sin φ mg". Each name now keeps its
+/// own side: the two never share a line within an em of each other.
+#[test]
+fn the_inclines_weight_and_its_component_are_named_apart() {
+    for deg in [45.0, 60.0, 70.0, 80.0, 85.0] {
+        let mut options = FigureOptions::default();
+        options.angle = Some(Angle::deg(deg));
+        let text = to_svg(&FigureName::NgFig2Incline.figure(&options).unwrap());
+        let plate = Plate::read(&text);
+        let find = |id: &str| plate.texts.iter().find(|t| t.id == id).unwrap().clone();
+        let (weight, along) = (find("label-force-weight"), find("label-force-along"));
+        let (w, a) = (weight.rect, along.rect);
+        let same_line = w.y0 < a.y1 && a.y0 < w.y1;
+        let gap = (w.x0 - a.x1).max(a.x0 - w.x1);
+        assert!(
+            !same_line || gap > weight.font_size,
+            "{deg}°: mg and mg sin φ side by side, {gap:.1} apart"
+        );
+    }
+}
+
+/// Fig. 64 at a short offset rod on a narrow page (issue 20): the view
+/// was fitted to the mechanism alone, and the distance base, whose height
+/// CE exceeds the crank there, ran off the top of the page and through
+/// the detail's caption "Detail ×8". Both diagrams now lie on the page
+/// and clear of the detail and its caption.
+#[test]
+fn fig_64s_diagrams_stay_on_the_page_and_off_the_detail() {
+    let engine = Some((1.0, 1.1, 0.08, 178.0));
+    let text = svg(FigureName::Fig64VelocityDiagrams, engine, Some("120mm"));
+    let plate = Plate::read(&text);
+    let detail = ink_of(&plate, &["detail-border", "detail-caption"]);
+    for id in ["curve-distance-base", "curve-polar-velocity"] {
+        let curve = ink_of(&plate, &[id]);
+        assert!(
+            curve.y0 >= 0.0 && curve.x0 >= 0.0,
+            "{id} leaves the page: {curve:?}"
+        );
+        assert!(curve.x1 <= plate.width, "{id} leaves the page: {curve:?}");
+        let strokes = plate.panels[0].strokes.iter().filter(|s| s.id == id);
+        for seg in strokes.flat_map(|s| s.segs.iter()) {
+            for (x, y) in [seg.0, seg.1] {
+                let inside = x > detail.x0 && x < detail.x1 && y > detail.y0 && y < detail.y1;
+                assert!(!inside, "{id} runs through the detail at ({x:.0}, {y:.0})");
+            }
+        }
+    }
+}
+
+/// The curve benchmark on an 800 × 300 page (issue 20): each plot kept
+/// its legend in a corner, and on plots that short both legends lay on
+/// the data. Every legend's ink is now clear of every series and marker.
+#[test]
+fn the_curve_benchmarks_legends_keep_off_the_data_on_a_short_page() {
+    for (width, height) in [("800", Some("300")), ("900", None), ("4.5in", None)] {
+        let options = common::on_page(width, height);
+        let text = to_svg(&FigureName::CurveBenchmark.figure(&options).unwrap());
+        let plate = Plate::read(&text);
+        let data: Vec<_> = plate
+            .ink
+            .iter()
+            .filter(|(id, _)| id.starts_with("series-") || id.starts_with("point-"))
+            .collect();
+        let legends = plate.ink.iter().filter(|(id, _)| id.contains("-legend"));
+        let mut seen = 0;
+        for (id, box_) in legends {
+            seen += 1;
+            for (other, r) in &data {
+                assert!(!box_.overlaps(r), "{width}: {id} lies on {other}");
+            }
+        }
+        assert!(seen > 0, "{width}: no legend drawn");
+    }
+}

@@ -142,6 +142,7 @@ pub(super) fn letter(id: &str, anchor: Point, name: &str) -> Item {
             anchor,
             text: RichText::italic(name),
             size: crate::figure::TextSize::Letter,
+            toward: None,
         },
     )
 }

@@ -181,6 +181,7 @@ pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [
                 anchor: c + Vector::new(mid.cos(), mid.sin()) * radius,
                 text: RichText::italic("T"),
                 size: TextSize::Small,
+                toward: None,
             },
         ),
     ]
