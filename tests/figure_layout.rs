@@ -197,3 +197,56 @@ fn the_curve_benchmarks_legends_keep_off_the_data_on_a_short_page() {
         assert!(seen > 0, "{width}: no legend drawn");
     }
 }
+
+/// The numbers of a path's `d`.
+fn path_numbers(d: &str) -> Vec<f64> {
+    d.split(|c: char| c == ' ' || c == ',' || c.is_ascii_alphabetic())
+        .filter_map(|t| t.parse().ok())
+        .collect()
+}
+
+/// Ng's Fig. 1 (issue 20, point 5): F_c, perpendicular to the crank at
+/// the crank pin C, arrived at C along the rod wherever the rod is nearly
+/// perpendicular to the crank (at the default, 60°, and round it), its
+/// shaft drawn over the rod's. Over a turn, at Ng's rig and at a short
+/// rod, the shaft never runs within 3 units of the rod's line at under
+/// 20° to it, and its head ends within 10 units of C.
+#[test]
+fn ngs_crank_force_never_lies_along_the_rod() {
+    for (r, l) in [(25.0, 72.0), (1.0, 1.08), (1.0, 2.0)] {
+        for deg in (0..360).step_by(10).map(f64::from) {
+            let text = svg(FigureName::NgFig1Torque, Some((r, l, 0.0, deg)), None);
+            let Some(at) = text.find("id=\"force-Fc\"") else {
+                continue;
+            };
+            let rest = &text[at..];
+            let d = &rest[rest.find(" d=\"").unwrap() + 4..];
+            let shaft = path_numbers(&d[..d.find('"').unwrap()]);
+            let rod = path_numbers(&common::attr(&text, "link-rod", "d").unwrap());
+            let c = (rod[0], rod[1]);
+            let (rx, ry) = (rod[2] - rod[0], rod[3] - rod[1]);
+            let (sx, sy) = (shaft[2] - shaft[0], shaft[3] - shaft[1]);
+            let (rn, sn) = (rx.hypot(ry), sx.hypot(sy));
+            // The angle between the shaft, read from its head back, and
+            // the rod from C.
+            let cos = -(rx * sx + ry * sy) / (rn * sn);
+            let off = |p: (f64, f64)| ((p.0 - c.0) * ry - (p.1 - c.1) * rx).abs() / rn;
+            let head = (shaft[2], shaft[3]);
+            let along = cos > 20f64.to_radians().cos() && off(head) < 3.0;
+            assert!(
+                !along,
+                "l = {l} r, {deg}°: F_c along the rod ({:.1} off it)",
+                off(head)
+            );
+            // The arrowhead's tip: the first point of the group's second path.
+            let after = &d[d.find('"').unwrap()..];
+            let tip = &after[after.find(" d=\"").unwrap() + 4..];
+            let tip = path_numbers(&tip[..tip.find('"').unwrap()]);
+            let reach = distance((tip[0], tip[1]), c);
+            assert!(
+                reach < 10.0,
+                "l = {l} r, {deg}°: F_c ends {reach:.1} from C"
+            );
+        }
+    }
+}
