@@ -44,10 +44,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 /// its own world coordinates, set on `sheet` with the scene's details;
 /// returns how much taller than [`TOP`] it is drawn.
 fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
+    let reach = reach(ctx.mechanism);
     let scene = ctx
-        .scene(ctx.page().width(), TOP)?
+        .scene(ctx.page().width(), TOP * taller(ctx.mechanism, &reach))?
         .with_layers([Layer::Mechanism, Layer::Velocity, Layer::Scales])
-        .with_view_holding(reach(ctx.mechanism));
+        .with_view_holding(reach);
     let base = scene.figure()?;
     // A velocity triangle too small to letter gets an enlarged detail, set
     // by the scene below its drawing with the scale notes: the rest of the
@@ -121,6 +122,23 @@ fn reach(m: SliderCrank) -> Frame {
     }
     Frame::new(lo, hi)
 }
+
+/// How much taller the diagrams' `reach` makes the drawing than the
+/// mechanism's own height (the crank circle and the line of stroke), at
+/// least 1 and at most [`MOST_TALLER`]: the mechanism's drawing is given
+/// that much more height, so that a short rod, whose diagrams reach 1.4
+/// cranks above and below the line of stroke, is drawn to the scale it
+/// would have without them where the page's width allows (drawn smaller,
+/// its letters about the crank crowded at the dead centres).
+fn taller(m: SliderCrank, reach: &Frame) -> f64 {
+    let (r, e) = (m.crank(), m.offset());
+    let (own_lo, own_hi) = ((-r).min(e), r.max(e));
+    let (lo, hi) = (reach.min().y.min(own_lo), reach.max().y.max(own_hi));
+    ((hi - lo) / (own_hi - own_lo)).clamp(1.0, MOST_TALLER)
+}
+
+/// The most [`taller`] gives.
+const MOST_TALLER: f64 = 1.6;
 
 /// The polar diagram (E′ on the crank, the return stroke's loop below)
 /// and the distance base (E″ over A) of `m`, on the mechanism's plot.
