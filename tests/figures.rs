@@ -604,7 +604,14 @@ fn a_line_to_a_centre_at_infinity_runs_on_into_its_arrow() {
                 .figure(&options)
                 .unwrap(),
         );
-        let line = numbers(&attr(&svg, "line-A-O-bd", "d").unwrap());
+        // The normal at A: to O_bd, and on from there where O_bd lies
+        // short of the arrow.
+        let mut line = numbers(&attr(&svg, "line-A-O-bd", "d").unwrap());
+        if let Some(on) = attr(&svg, "line-O-cd-at-infinity", "d") {
+            let on = numbers(&on);
+            line[2] = on[2];
+            line[3] = on[3];
+        }
         let at = svg.find("id=\"infinity-O-cd\"").unwrap();
         let rest = &svg[at..];
         let d = &rest[rest.find(" d=\"").unwrap() + 4..];

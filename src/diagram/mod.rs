@@ -93,5 +93,5 @@ pub use curve::{Curve, DEFAULT_TOLERANCE, Method, TraceOptions, trace, trace_tol
 pub use locus::{Locus, LocusKind};
 pub use measure::{Deviation, measure};
 pub use path::{Segment, Subpath, TracedPath};
-pub(crate) use plot::CAPTION;
 pub use plot::Plot;
+pub(crate) use plot::{CAPTION, LEGEND_GAP};

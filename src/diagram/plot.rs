@@ -32,7 +32,7 @@ const LEGEND_LINE: f64 = 16.0;
 /// Length of a legend's line sample.
 const KEY: f64 = 28.0;
 /// Room between the plot area and a legend set beside it, page units.
-const LEGEND_GAP: f64 = 16.0;
+pub(crate) const LEGEND_GAP: f64 = 16.0;
 
 /// Spacing (page units) of the points a straight line leaves for the
 /// legend to keep clear of.
@@ -266,6 +266,36 @@ impl Plot {
     pub(crate) fn blocks_below(mut self) -> Self {
         self.below = true;
         self
+    }
+
+    /// The width and height of the legend as it stands, page units (zero
+    /// without entries): the room [`Plot::with_legend_set_beside`] takes.
+    pub(crate) fn legend_size(&self) -> (f64, f64) {
+        match self.legend.is_empty() {
+            true => (0.0, 0.0),
+            false => block_size(&self.legend, self.font),
+        }
+    }
+
+    /// The same plot with no legend (its series drawn, their entries
+    /// dropped): for a plot whose legend another beside it carries.
+    pub(crate) fn without_legend(mut self) -> Self {
+        self.legend.clear();
+        self
+    }
+
+    /// The legend beside the plot area, on its right at its top, whatever
+    /// the corners hold: the area narrows by the legend's width
+    /// ([`Plot::legend_size`]) and [`LEGEND_GAP`] (a plot too short for
+    /// any corner to hold its legend clear of the data, given that much
+    /// more width). Call after the legend's last entry; where the area
+    /// would be left under 40 units wide, the legend stays in a corner.
+    pub(crate) fn with_legend_set_beside(self) -> Self {
+        let (width, _) = self.legend_size();
+        match width > 0.0 {
+            true => self.with_legend_beside(width),
+            false => self,
+        }
     }
 
     /// The legend beside the plot area, on its right at its top, instead

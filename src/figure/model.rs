@@ -284,6 +284,12 @@ pub enum Shape {
         text: RichText,
         /// How large.
         size: TextSize,
+        /// The world direction from the anchor tried first, if any (a
+        /// force's name beyond its arrow's head, a point's letter on the
+        /// side away from what crowds it): a place clear along it is
+        /// taken before any other side; `None` (or a zero vector) leaves
+        /// the side to the placement alone.
+        toward: Option<Vector>,
     },
     /// A text set at a fixed place, not moved clear of lines: `offset`
     /// page units (y down) from the page point of `at`, aligned by `align`

@@ -251,7 +251,16 @@ impl Canvas {
         size: TextSize,
     ) {
         if self.contains(anchor) {
-            self.push(id, Role::Label, Shape::Label { anchor, text, size });
+            self.push(
+                id,
+                Role::Label,
+                Shape::Label {
+                    anchor,
+                    text,
+                    size,
+                    toward: None,
+                },
+            );
         }
     }
 

@@ -315,6 +315,9 @@ pub struct Scene {
     tolerance: f64,
     /// The poses the page map is held over ([`Scene::with_held_view`]).
     held: Option<Vec<Angle>>,
+    /// A world frame the view holds besides what the layers draw
+    /// ([`Scene::with_view_holding`]).
+    holding: Option<crate::geom::Frame>,
 }
 
 /// The poses a series is held over by default: the whole revolution,
@@ -352,6 +355,7 @@ impl Scene {
             coupler: CouplerPoint::new(0.5).expect("0.5 is in [0, 1]"),
             tolerance: DEFAULT_TOLERANCE,
             held: None,
+            holding: None,
         }
     }
 
@@ -503,6 +507,23 @@ impl Scene {
     pub fn with_held_view(mut self, angles: Vec<Angle>) -> Self {
         self.held = Some(angles);
         self
+    }
+
+    /// The same scene with a view fitted to hold the world `frame` too,
+    /// besides what its layers draw: the room for what a diagram draws
+    /// on the mechanism in its own world coordinates (Fig. 64's polar
+    /// diagram and distance base, whose heights CE exceed the crank at
+    /// short rods). A frame that is not finite is left out.
+    pub(crate) fn with_view_holding(mut self, frame: crate::geom::Frame) -> Self {
+        let finite = |p: crate::geom::Point| p.x.is_finite() && p.y.is_finite();
+        self.holding = (finite(frame.min()) && finite(frame.max())).then_some(frame);
+        self
+    }
+
+    /// The world frame the view holds besides what the layers draw
+    /// ([`Scene::with_view_holding`]), if any.
+    pub(crate) fn holding(&self) -> Option<&crate::geom::Frame> {
+        self.holding.as_ref()
     }
 
     /// The poses the page map is held over ([`Scene::with_held_view`]); `None`

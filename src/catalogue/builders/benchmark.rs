@@ -4,7 +4,7 @@
 //! the table given as data.
 
 use super::{Ctx, PageRect, Sheet, Table};
-use crate::diagram::{Axis, Plot};
+use crate::diagram::{Axis, LEGEND_GAP, Plot};
 use crate::error::{Error, Input, Result};
 use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::Point;
@@ -31,6 +31,14 @@ struct Row<'a> {
 /// The narrowest page (page units) that sets the two plots side by side,
 /// each with its legend inside.
 const NARROWEST_COLUMNS: f64 = 700.0;
+
+/// A plot whose legend is taller than this share of its height cannot
+/// hold it in a corner clear of the data (the sweep of the table's rows
+/// fills the plot from corner to corner): on a page this short the two
+/// plots share one legend beside the second. At the figure's own page
+/// the legend takes a fifth of a plot's height; at 800 × 300, two
+/// fifths, where it lay on the data in both.
+const SHORT: f64 = 0.35;
 
 /// One of the two plots: its id, ordinate's title, caption and the value
 /// of a row it draws against the measured error.
@@ -79,10 +87,33 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             top
         }
     };
-    for (k, panel) in PANELS.into_iter().enumerate() {
-        let at = place(k);
-        let rect = PageRect::new(at.x, at.y, width, height);
-        sheet.plot(plot(ctx, &rows, panel, rect)?);
+    // The legend, the same for both plots, measured on a plot of the
+    // first's place.
+    let (legend, tall) = plot(
+        ctx,
+        &rows,
+        PANELS[1],
+        PageRect::new(16.0, 16.0, width, height),
+    )?
+    .legend_size();
+    if columns && tall > SHORT * height {
+        // Too short a page for either plot to hold the legend clear of
+        // its data: one legend for both, beside the second.
+        let room = legend + LEGEND_GAP;
+        let width = 0.5 * (page.width() - 48.0 - room);
+        let rects = [
+            PageRect::new(16.0, 16.0, width, height),
+            PageRect::new(32.0 + width, 16.0, width + room, height),
+        ];
+        let first = plot(ctx, &rows, PANELS[0], rects[0])?.without_legend();
+        sheet.plot(first);
+        sheet.plot(plot(ctx, &rows, PANELS[1], rects[1])?.with_legend_set_beside());
+    } else {
+        for (k, panel) in PANELS.into_iter().enumerate() {
+            let at = place(k);
+            let rect = PageRect::new(at.x, at.y, width, height);
+            sheet.plot(plot(ctx, &rows, panel, rect)?);
+        }
     }
     sheet.notes(
         Point::new(20.0, notes_top),

@@ -7,7 +7,7 @@ use crate::angle::Angle;
 use crate::construct::CouplerPoint;
 use crate::diagram::{Curve, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape};
+use crate::figure::{Dash, Figure, Item, NOTE_LINE, PageRect, Panel, Role, Shape};
 use crate::geom::{Point, Vector};
 use crate::scene::Layer;
 
@@ -27,14 +27,16 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let notes_height = 30.0;
     // The legend's band below the mechanism, where nothing is drawn.
     let band = Plot::band(POINTS.len());
-    let scene = ctx
-        .scene(page.width(), page.height() - notes_height - band)?
-        .with_layers([Layer::Mechanism]);
+    let drawn = drawing(ctx, page.height() - notes_height - band)?;
+    sheet.narrow(drawn.width())?;
     // cannot fail: a scene's figure has its main view as its first panel
     // (`draw::build` puts it there).
     #[allow(clippy::indexing_slicing)]
-    let panel = scene.figure()?.panels()[0].clone();
+    let panel = drawn.panels()[0].clone();
     let r = *panel.rect();
+    // The scene's notes go below the legend's band, which lies on the
+    // drawing's foot: a narrow page has no room beside them for it.
+    let (panel, notes_end) = notes_below(panel, band);
     let area = PageRect::new(r.x, r.y, r.width, r.height + band);
     let mut plot = Plot::with_map(
         "coupler",
@@ -46,7 +48,9 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     )
     .blocks_below();
     for item in panel.items() {
-        plot.avoid(item);
+        if !matches!(item.shape, Shape::Note { .. }) {
+            plot.avoid(item);
+        }
     }
     let pose = ctx.pose();
     for (k, (t, id, frac, dash)) in POINTS.into_iter().enumerate() {
@@ -75,8 +79,12 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     }
     let drawn = plot.finish();
     sheet.panel(panel.with_items(drawn.items().iter().cloned()));
-    let top = area.y + area.height;
-    sheet.fit(top + notes_height);
+    let top = (area.y + area.height).max(notes_end);
+    match page.fits_width() {
+        // The figure's own page: as tall as its drawing, enlarged or not.
+        true => sheet.height(top + notes_height + super::MARGIN),
+        false => sheet.fit(top + notes_height),
+    }
     sheet.notes(
         Point::new(20.0, top),
         &[format!(
@@ -89,4 +97,54 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         )],
     );
     Ok(sheet.finish())
+}
+
+/// `panel` with its notes (the scene's, below its drawing) moved down by
+/// `band`, and where the lowest of them then ends (the panel's foot
+/// where it has none).
+fn notes_below(panel: Panel, band: f64) -> (Panel, f64) {
+    let r = *panel.rect();
+    let mut end = r.y + r.height;
+    let items: Vec<Item> = panel
+        .items()
+        .iter()
+        .cloned()
+        .map(|mut item| {
+            if let Shape::Note { corner, lines } = &mut item.shape {
+                corner.y += band;
+                end = end.max(corner.y + NOTE_LINE * lines.len() as f64);
+            }
+            item
+        })
+        .collect();
+    (Panel::new(panel.id(), r, *panel.transform(), items), end)
+}
+
+/// The most a narrowed drawing is enlarged by ([`drawing`]).
+const MOST_ENLARGED: f64 = 1.6;
+
+/// The mechanism at the pose, `height` units tall. On the figure's own
+/// page it is narrowed to what it draws, as a mechanism figure's is; a
+/// drawing that then takes less than 85 % of the page's width (a short
+/// rod, whose crank circle is as tall as the engine is long) is drawn
+/// again larger, up to [`MOST_ENLARGED`] times, so that the three points
+/// on its rod and their letters stand apart.
+fn drawing(ctx: &Ctx, height: f64) -> Result<Figure> {
+    let page = ctx.page();
+    let scene = |height: f64| -> Result<Figure> {
+        let scene = ctx
+            .scene(page.width(), height)?
+            .with_layers([Layer::Mechanism]);
+        let fitted = scene.page().with_width_fitted();
+        match page.fits_width() {
+            true => scene.with_page(fitted).figure(),
+            false => scene.figure(),
+        }
+    };
+    let drawn = scene(height)?;
+    let larger = (0.85 * page.width() / drawn.width()).min(MOST_ENLARGED);
+    match page.fits_width() && larger > 1.05 {
+        true => scene(height * larger),
+        false => Ok(drawn),
+    }
 }

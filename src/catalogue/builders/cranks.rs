@@ -139,6 +139,7 @@ fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> 
                 anchor: from + (to - from) * 0.5,
                 text: RichText::parse(text),
                 size: TextSize::Small,
+                toward: None,
             },
         ),
     ]

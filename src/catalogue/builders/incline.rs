@@ -233,19 +233,23 @@ impl Incline {
         ]
     }
 
-    /// The forces' names at their arrows' heads.
+    /// The forces' names at their arrows' heads, each tried first beyond
+    /// its head, except the weight's component along the plane, tried
+    /// first on its side away from the weight: at steep tilts the two
+    /// heads come together and their names, set side by side, read as
+    /// one ("mg sin φ mg").
     fn labels(&self) -> Vec<Item> {
         let (g, u, n) = (self.g, self.u, self.n);
         let down = Vector::new(0.0, -1.0);
         [
-            ("weight", g + down * WEIGHT, "*mg*"),
-            ("normal", self.face + n * self.normal, "*N*"),
-            ("friction", self.friction_at + u * self.friction, "μ*N*"),
-            ("along", g - u * (WEIGHT * self.sin), "*mg* sin φ"),
-            ("across", g - n * (WEIGHT * self.cos), "*mg* cos φ"),
+            ("weight", g + down * WEIGHT, "*mg*", down),
+            ("normal", self.face + n * self.normal, "*N*", n),
+            ("friction", self.friction_at + u * self.friction, "μ*N*", u),
+            ("along", g - u * (WEIGHT * self.sin), "*mg* sin φ", n),
+            ("across", g - n * (WEIGHT * self.cos), "*mg* cos φ", -n),
         ]
         .into_iter()
-        .map(|(id, at, text)| {
+        .map(|(id, at, text, toward)| {
             Item::new(
                 format!("label-force-{id}"),
                 Role::Label,
@@ -253,6 +257,7 @@ impl Incline {
                     anchor: at,
                     text: RichText::parse(text),
                     size: TextSize::Small,
+                    toward: Some(toward),
                 },
             )
         })

@@ -236,6 +236,7 @@ fn inertia_arrow(
                 anchor: face + along * 0.5,
                 text: RichText::parse("*F*_i"),
                 size: TextSize::Small,
+                toward: None,
             },
         ),
     ]
@@ -303,6 +304,7 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
                 anchor: at,
                 text: RichText::parse(text),
                 size: TextSize::Small,
+                toward: None,
             },
         )
     };

@@ -8,9 +8,10 @@
 //!
 //! Each drawing is made in the fixed link's frame
 //! ([`InversionPose::place`]): the frame d (1), the crank a (2), the rod
-//! b (3) or the block c (4) lies still on the page whatever θ is; the panel
-//! shows every place the moving links reach over a turn, so that the scale
-//! does not change with θ.
+//! b (3) or the block c (4) lies still on the page whatever θ is; the
+//! scale is that of every place the moving links reach over a turn, so
+//! that it does not change with θ (Inversion 2's panel shows, at that
+//! scale, only what its pose draws).
 
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, Inversion, InversionPose, InvertedChain};
@@ -151,6 +152,84 @@ fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
     Frame::new(lo, hi)
 }
 
+/// The page, the panel's rectangle and the world it shows: the world of
+/// every place the chain reaches over a turn sets the scale (so that it
+/// does not change with θ), and it is what the panel shows, except in
+/// Inversion 2, whose panel shows, at that scale, what is
+/// drawn at this pose (the links, the block, the path and the centres
+/// within the turn's world), on the figure's own page narrowed to it, at
+/// least [`crate::scene::LEAST_FITTED_WIDTH`] wide (Inversion 2's frame
+/// sweeps a disc about C over a turn: drawn at one pose it left the top
+/// 200 and the left 450 units of its page empty).
+fn layout(
+    ctx: &Ctx,
+    chain: &InvertedChain,
+    pose: &InversionPose,
+) -> Result<(crate::scene::Page, crate::figure::PageRect, Frame)> {
+    let m = chain.mechanism();
+    let turn = padded(extent(m, chain), 0.1);
+    let page = ctx.page();
+    let full = super::fitted_rect(&page, &turn, NOTES_HEIGHT);
+    if chain.inversion() != Inversion::Crank {
+        // The other three fill their turn's world at every pose.
+        return Ok((page, full, turn));
+    }
+    let size = turn.max() - turn.min();
+    let tall = full.height - crate::diagram::CAPTION;
+    let scale = (full.width / size.x).min(tall / size.y);
+    let world = drawn(m, pose, &turn, EDGE_ROOM / scale);
+    let seen = world.max() - world.min();
+    let margin = page.margin();
+    let wide = (seen.x * scale + 2.0 * margin).max(crate::scene::LEAST_FITTED_WIDTH);
+    let page = match page.fits_width() && wide < page.width() {
+        true => page.with_width(wide.ceil())?,
+        false => page,
+    };
+    let rect = crate::figure::PageRect::new(
+        margin,
+        margin,
+        page.width() - 2.0 * margin,
+        (seen.y * scale).min(tall) + crate::diagram::CAPTION,
+    );
+    Ok((page, rect, world))
+}
+
+/// `frame` grown on every side by `share` of its larger side.
+fn padded(frame: Frame, share: f64) -> Frame {
+    let size = frame.max() - frame.min();
+    let pad = share * size.x.max(size.y);
+    Frame::new(
+        frame.min() - Vector::new(pad, pad),
+        frame.max() + Vector::new(pad, pad),
+    )
+}
+
+/// The world frame of what Inversion 2 draws at `pose`, grown by `pad`:
+/// the links, the block, the path of A about B, and the centres O_bd and O_ac where they lie within the
+/// turn's world `turn` grown by a quarter of its size each way (a centre
+/// beyond is an arrow at the edge).
+fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64) -> Frame {
+    let (lh, hh) = block_size(m);
+    let l = m.rod();
+    let q = parts(m, pose);
+    let reach = padded(*turn, 0.25);
+    let mut points = vec![q.c, q.b, q.a, q.t, q.f];
+    points.extend(block(&q, lh, hh));
+    // The path of A about B.
+    points.push(q.b + Vector::new(l, l));
+    points.push(q.b - Vector::new(l, l));
+    for (p, q) in [(Link::B, Link::D), (Link::A, Link::C)] {
+        if let Some(Intersection::Point(x)) = pose.centres().centre(p, q)
+            && reach.contains(x)
+        {
+            points.push(x);
+        }
+    }
+    let lo = points.iter().fold(turn.max(), |lo, p| lo.inf(p));
+    let hi = points.iter().fold(turn.min(), |hi, p| hi.sup(p));
+    Frame::new(lo - Vector::new(pad, pad), hi + Vector::new(pad, pad))
+}
+
 /// The panel's caption, `Inversion 2: link a fixed, rotating block: …`,
 /// where it fits the panel `width` on one line; on a narrower page the
 /// caption keeps `Inversion 2: link a fixed` and the notes open with the
@@ -179,14 +258,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let m = ctx.mechanism;
     let chain = InvertedChain::new(m, inversion);
     let pose = chain.pose(ctx.angle);
-    let box_ = extent(&m, &chain);
-    let size = box_.max() - box_.min();
-    let pad = 0.1 * size.x.max(size.y);
-    let world = Frame::new(
-        box_.min() - Vector::new(pad, pad),
-        box_.max() + Vector::new(pad, pad),
-    );
-    let rect = super::fitted_rect(&ctx.page(), &world, NOTES_HEIGHT);
+    let (page, rect, world) = layout(ctx, &chain, &pose)?;
     let (caption, named) = caption(ctx, inversion, rect.width);
     let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(&caption);
@@ -211,6 +283,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
         plot.push(item);
     }
     let mut sheet = Sheet::new(ctx);
+    sheet.narrow(page.width())?;
     sheet.mechanism(ctx, false, true);
     sheet.meta("inversion", json!(inversion.number()));
     sheet.meta("fixed", json!(letter(inversion.fixed())));

@@ -142,6 +142,7 @@ pub(super) fn letter(id: &str, anchor: Point, name: &str) -> Item {
             anchor,
             text: RichText::italic(name),
             size: crate::figure::TextSize::Letter,
+            toward: None,
         },
     )
 }
@@ -257,6 +258,16 @@ impl Sheet {
     /// pose, so that no empty band is left below.
     pub fn fit(&mut self, bottom: f64) {
         self.height((bottom + MARGIN).min(self.page.height()));
+    }
+
+    /// Narrows the page to `width` where its drawing came out narrower
+    /// (a scene narrowed to what it draws, [`Page::with_width_fitted`]);
+    /// a wider `width` leaves it as it is.
+    pub fn narrow(&mut self, width: f64) -> Result<()> {
+        if width < self.page.width() {
+            self.page = self.page.with_width(width)?;
+        }
+        Ok(())
     }
 
     /// Sets the page's height (a page fitted to its drawing).

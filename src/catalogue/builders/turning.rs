@@ -134,6 +134,7 @@ fn lobes(plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
                     anchor,
                     text: RichText::parse(&format!("{sign}{}", sig(lobe.area.abs()))),
                     size: TextSize::Small,
+                    toward: None,
                 },
             ));
         }

@@ -13,7 +13,7 @@ use super::{Ctx, PER_DEGREE, Sheet, against_time, dead_centres, extent, short, s
 use crate::diagram::{Axis, Curve, Locus, LocusKind, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
 
@@ -44,11 +44,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 /// its own world coordinates, set on `sheet` with the scene's details;
 /// returns how much taller than [`TOP`] it is drawn.
 fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
-    let scene = ctx.scene(ctx.page().width(), TOP)?.with_layers([
-        Layer::Mechanism,
-        Layer::Velocity,
-        Layer::Scales,
-    ]);
+    let reach = reach(ctx.mechanism);
+    let scene = ctx
+        .scene(ctx.page().width(), TOP * taller(ctx.mechanism, &reach))?
+        .with_layers([Layer::Mechanism, Layer::Velocity, Layer::Scales])
+        .with_view_holding(reach);
     let base = scene.figure()?;
     // A velocity triangle too small to letter gets an enlarged detail, set
     // by the scene below its drawing with the scale notes: the rest of the
@@ -93,6 +93,52 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     }
     Ok(grown + band)
 }
+
+/// The world frame the two diagrams of `m` reach over a turn (every
+/// half degree): the polar diagram's loops, ±CE along the crank, and the
+/// distance base, E″ at the height CE over A. At short rods CE exceeds
+/// the crank: a view fitted to the mechanism alone sent the curves off
+/// the top of the page and through the detail's frame.
+fn reach(m: SliderCrank) -> Frame {
+    let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
+    let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
+    for k in 0..720 {
+        let Ok(angle) = Angle::from_degrees(0.5 * k as f64) else {
+            continue;
+        };
+        let pose = m.pose(angle);
+        let ce = -pose.position_rate();
+        let e1 = Vector::new(angle.cos(), angle.sin()) * ce;
+        for p in [
+            Point::origin() + e1,
+            Point::origin() - e1,
+            Point::new(pose.position(), ce),
+        ] {
+            if p.x.is_finite() && p.y.is_finite() {
+                lo = lo.inf(&p);
+                hi = hi.sup(&p);
+            }
+        }
+    }
+    Frame::new(lo, hi)
+}
+
+/// How much taller the diagrams' `reach` makes the drawing than the
+/// mechanism's own height (the crank circle and the line of stroke), at
+/// least 1 and at most [`MOST_TALLER`]: the mechanism's drawing is given
+/// that much more height, so that a short rod, whose diagrams reach 1.4
+/// cranks above and below the line of stroke, is drawn to the scale it
+/// would have without them where the page's width allows (drawn smaller,
+/// its letters about the crank crowded at the dead centres).
+fn taller(m: SliderCrank, reach: &Frame) -> f64 {
+    let (r, e) = (m.crank(), m.offset());
+    let (own_lo, own_hi) = ((-r).min(e), r.max(e));
+    let (lo, hi) = (reach.min().y.min(own_lo), reach.max().y.max(own_hi));
+    ((hi - lo) / (own_hi - own_lo)).clamp(1.0, MOST_TALLER)
+}
+
+/// The most [`taller`] gives.
+const MOST_TALLER: f64 = 1.6;
 
 /// The polar diagram (E′ on the crank, the return stroke's loop below)
 /// and the distance base (E″ over A) of `m`, on the mechanism's plot.

@@ -364,6 +364,7 @@ mod tests {
                     anchor: Point::new(110.0, 100.0),
                     text: RichText::italic("v"),
                     size: TextSize::Small,
+                    toward: None,
                 },
             ),
         ];
@@ -401,6 +402,7 @@ mod tests {
                         anchor: vertex,
                         text: text.clone(),
                         size: TextSize::Letter,
+                        toward: None,
                     },
                 ),
             ];

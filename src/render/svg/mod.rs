@@ -173,7 +173,12 @@ impl PanelWriter<'_> {
                 offset,
                 text,
             } => self.dimension(&ink, (*from, *to), *side, *offset, text),
-            Shape::Label { anchor, text, size } => self.label(&ink, *anchor, text, *size),
+            Shape::Label {
+                anchor,
+                text,
+                size,
+                toward,
+            } => self.label(&ink, *anchor, text, *size, *toward),
             Shape::Text {
                 at,
                 offset,

@@ -2,7 +2,7 @@
 //! drawn (once the panel's lines are all known), texts at fixed places
 //! (ticks, axis titles, legends) and the scale notes.
 
-use super::markup::finite;
+use super::markup::{finite, unit};
 use super::text::{BASELINE, starts_italic, text_half, text_node};
 use super::{Ink, PanelWriter, Pending};
 use crate::figure::{Align, RichText, Role, TextSize};
@@ -20,6 +20,7 @@ impl PanelWriter<'_> {
         anchor: Point,
         text: &RichText,
         size: TextSize,
+        toward: Option<Vector>,
     ) -> Option<Element> {
         let a = self.p(anchor);
         if !finite(&a) {
@@ -36,7 +37,7 @@ impl PanelWriter<'_> {
                 3.0
             },
             letter: size == TextSize::Letter,
-            toward: None,
+            toward: toward.and_then(|u| unit(self.t.apply_vector(u))),
         });
         None
     }

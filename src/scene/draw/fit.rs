@@ -39,7 +39,8 @@ pub(crate) fn d_is_near(ctx: &LayerCtx) -> Option<Point> {
 /// The world rectangle the scene's figure shows: the crank circle, the
 /// guides and block, and the points of each layer drawn (E, D while near,
 /// Klein's and Kisch's points, the arrows once the page scale is known,
-/// the polar curve and the coupler curve). Points that are not finite are
+/// the polar curve and the coupler curve), and the frame the scene is
+/// asked to hold ([`crate::scene::Scene::with_view_holding`]). Points that are not finite are
 /// left out: at worst the frame is the crank circle's with the guides.
 pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     let m = ctx.scene.mechanism();
@@ -68,6 +69,10 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     }
     if scene.has(Layer::Coupler) {
         add_coupler(&mut b, ctx);
+    }
+    if let Some(f) = scene.holding() {
+        b.add(f.min());
+        b.add(f.max());
     }
     Frame::new(b.min, b.max)
 }

@@ -181,10 +181,37 @@ pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [
                 anchor: c + Vector::new(mid.cos(), mid.sin()) * radius,
                 text: RichText::italic("T"),
                 size: TextSize::Small,
+                toward: None,
             },
         ),
     ]
 }
+
+/// How far F_c is set off its line, page units, where that line runs
+/// along the rod: clear of the rod's stroke and the pin's circle, near
+/// enough to read as the force on the pin.
+const ALONGSIDE: f64 = 7.0;
+
+/// F_c drawn along its line arrives at the pin from the side the rod
+/// leaves it by where the rod is nearly perpendicular to the crank (the
+/// transmission angle near 90°, Ng's default among them): the arrow lay
+/// on the rod. Within [`ALONG_THE_ROD`] of it, the arrow is set off its
+/// line, parallel to it, on the side away from the rod, as a force on a
+/// pin is drawn beside the member that brings it: the unit vector to
+/// that side, else zero. `u` is the force's direction, `rod` the rod from
+/// the pin.
+fn beside_the_rod(u: Vector, rod: Vector) -> Vector {
+    let n = rod.norm();
+    if n == 0.0 || (-u).dot(&rod) < n * ALONG_THE_ROD.cos() {
+        return Vector::zeros();
+    }
+    let side = Vector::new(-u.y, u.x);
+    if side.dot(&rod) > 0.0 { -side } else { side }
+}
+
+/// The angle (radians) between F_c's arrow and the rod within which the
+/// arrow is set beside the rod ([`beside_the_rod`]): 20°.
+const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
 
 /// The force arrows, their page lengths turned to world lengths by
 /// `world`: F_c = T / r on the crank pin, perpendicular to the crank in
@@ -201,7 +228,11 @@ pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArr
     let cb = b - c;
     if t != 0.0 && cb.norm() > 0.0 {
         let u = Vector::new(-cb.y, cb.x) / cb.norm() * t.signum();
-        let head = b - u * world(7.0);
+        // Short of the pin's circle on its line; beside the rod, level
+        // with the pin.
+        let side = beside_the_rod(u, a - b);
+        let short = if side == Vector::zeros() { 7.0 } else { 2.0 };
+        let head = b - u * world(short) + side * world(ALONGSIDE);
         let tail = head - u * world(0.75 * FORCE_ARROW);
         out.push(NamedArrow {
             id: "Fc",
