@@ -707,8 +707,10 @@ fn every_plate_is_clean() {
 /// crowding point does not fit, a pin's letter may go inside its block
 /// enlarged in a detail, and Ng's Fig. 1 details its crank where the
 /// pins crowd; 15 since a detail's frame opens for a letter with no other
-/// place).
-const SHORT_ROD_CROWDED_PLATES: usize = 15;
+/// place; 7 since the whole construction's detail takes in the pins
+/// beside it and two pairs a letter's room apart near a dead centre share
+/// a detail).
+const SHORT_ROD_CROWDED_PLATES: usize = 7;
 
 /// The one failure the sweep reports but does not yet hold: a line
 /// through a letter on rods of at most 1.1 cranks, where the
@@ -1503,6 +1505,62 @@ fn near_a_dead_centre_the_detail_takes_the_larger_cluster() {
     let holds = |l: &str| detail.is_some_and(|d| d.markers.contains_key(l));
     assert!(holds("C") && holds("F"), "the whole construction's detail");
     assert_eq!(check(&plate, true), [], "inertia force at 359°, l = 1.2");
+}
+
+/// How far `at` lies inside the box `r` (negative outside).
+fn inside_by(r: &Rect, at: (f64, f64)) -> f64 {
+    (at.0 - r.x0)
+        .min(r.x1 - at.0)
+        .min(at.1 - r.y0)
+        .min(r.y1 - at.1)
+}
+
+#[test]
+fn the_whole_construction_s_detail_takes_in_the_pins_beside_it() {
+    // Klein's construction at l = 1.05 r, 230°, and the example's at
+    // l = 1.1 r, e = 0.08 r, 150°: the whole construction's detail ×2
+    // about B, C, E, F, G (and H) had A, 15 units from C, on its frame's
+    // edge and D at its corner: A's letter sat on DE between A and C, D's
+    // on BD. The pins within 30 units of the construction are now in the
+    // region, a letter's room inside the frame.
+    for (figure, rod, offset, degrees, pins) in [
+        ("fig-65-klein", 1.05, 0.0, 230.0, ["A", "D"]),
+        ("fig-67-example", 1.1, 0.08, 150.0, ["A", "D"]),
+    ] {
+        let plate = plate_at(figure, rod, offset, degrees);
+        let (main, detail) = (&plate.panels[0], &plate.panels[1]);
+        assert_eq!(detail.prefix, "detail-", "{figure}");
+        let border = stroke_box(main, "detail-border");
+        for l in pins {
+            let at = detail.markers.get(l).copied();
+            let at = at.unwrap_or_else(|| panic!("{figure}: {l} not in the detail"));
+            let by = inside_by(&border, at);
+            assert!(by >= 20.0, "{figure}: {l} {by:.1} px inside the frame");
+        }
+        assert_eq!(check(&plate, true), [], "{figure} at {degrees}°");
+    }
+}
+
+#[test]
+fn near_a_dead_centre_pairs_a_letter_apart_share_one_detail() {
+    // Klein's construction at l = 1.08 r, 1° and 359°: F on G (0.5 units
+    // apart), D 7 units over A, A 30.5 from F, E 7 over C: pairs, no
+    // cluster of three within 30 units, and no detail. F's and G's letters
+    // had one place between the block and the right angle at F: one of
+    // them sat on it. The two pairs a letter's room apart now share a
+    // detail about A, D, F and G.
+    for degrees in [1.0, 359.0] {
+        let plate = plate_at("fig-65-klein", 1.08, 0.0, degrees);
+        let detail = plate.panels.iter().find(|p| p.prefix == "detail-");
+        let detail = detail.unwrap_or_else(|| panic!("no detail at {degrees}°"));
+        for l in ["A", "D", "F", "G"] {
+            assert!(detail.markers.contains_key(l), "{l} not in the detail");
+        }
+        for l in ["C", "E"] {
+            assert!(!detail.markers.contains_key(l), "{l} in the detail");
+        }
+        assert_eq!(check(&plate, true), [], "fig-65 at {degrees}°");
+    }
 }
 
 #[test]
