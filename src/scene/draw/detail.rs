@@ -168,9 +168,16 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
     lettered.extend(h);
     lettered.extend(super::fit::d_is_near(ctx));
     // The acceleration constructions' pins (C among A, E, F, G on a short
-    // rod) need their letters' room inside the frame; the velocity
-    // triangle's frame stays tight, clear of the letters about it.
-    let reach = if acceleration { FRAME_REACH } else { 0.0 };
+    // rod) need their letters' room inside the frame, as does the crank's
+    // ω arrow (Ng's Fig. A1), drawn 40 units about the crank centre with
+    // its letter outside it; the velocity triangle's frame otherwise
+    // stays tight, clear of the letters about it.
+    let turning = scene.has(Layer::Motion) && !scene.has(Layer::Torque);
+    let reach = if acceleration || turning {
+        FRAME_REACH
+    } else {
+        0.0
+    };
     let crowding = crowded(&lettered, reach, scale, max_width);
     if !readable {
         let near = neighbours(&core, &lettered, scale);
