@@ -122,6 +122,9 @@ pub(crate) struct Obstacles {
     opening: Vec<bool>,
     /// Whether the segments added next open for letters.
     opens: bool,
+    /// Whether a letter's glyphs on a segment that opens are struck in a
+    /// search ([`Obstacles::set_openings_strike`]).
+    openings_strike: bool,
 }
 
 impl Default for Obstacles {
@@ -136,6 +139,7 @@ impl Default for Obstacles {
             weight: 1.0,
             opening: Vec::new(),
             opens: false,
+            openings_strike: true,
         }
     }
 }
@@ -157,6 +161,16 @@ impl Obstacles {
     /// stay struck ([`Obstacles::lasting`]).
     pub fn set_opens(&mut self, opens: bool) {
         self.opens = opens;
+    }
+
+    /// Sets whether the searches from now on take a letter whose glyphs
+    /// meet a line that opens ([`Obstacles::set_opens`]) for struck
+    /// ([`STRUCK`]), as they do at first: a letter keeps off hatching
+    /// where it can. A placing that leaves some letter crossed anyway is
+    /// tried once more without, so that such a letter goes onto the
+    /// hatching rather than a line that stays.
+    pub fn set_openings_strike(&mut self, strike: bool) {
+        self.openings_strike = strike;
     }
 
     /// Whether the glyphs of a label's box `b`, the letter of the point
@@ -286,7 +300,7 @@ impl Obstacles {
             .collect();
         Near {
             obstacles: self,
-            openings: true,
+            openings: self.openings_strike,
             within: *within,
             anchor,
             pending,
@@ -348,8 +362,9 @@ fn envelope(entry: &Entry) -> Bounds {
 /// built that lie near the label.
 struct Near<'a> {
     obstacles: &'a Obstacles,
-    /// Whether the lines that open for letters count as any (a search),
-    /// or not at all in a test of what a letter strikes ([`Obstacles::lasting`]).
+    /// Whether the lines that open for letters strike a letter's glyphs
+    /// as any (a search, at first), or not (a test of what stays under
+    /// it, [`Obstacles::lasting`]); their cost counts either way.
     openings: bool,
     /// The box every candidate of the search lies in.
     within: Bounds,
@@ -517,8 +532,9 @@ impl Near<'_> {
     }
 
     /// What `obstacle`, whose box meets `b`, adds to the cost of `b`: a
-    /// segment weighing at least `least` (not one that opens for letters
-    /// where the search leaves those out), its weight times 4 plus its
+    /// segment weighing at least `least` (where that is [`OPEN`] or more,
+    /// not one that opens for letters if they strike none, [`Near::openings`]),
+    /// its weight times 4 plus its
     /// length inside; a box, 200 plus the area shared. `None` where it
     /// adds nothing.
     fn term(&self, obstacle: Obstacle, b: &Bounds, least: f64) -> Option<f64> {
@@ -526,7 +542,7 @@ impl Near<'_> {
             Obstacle::Segment(i) => {
                 let &(p, q, w) = self.obstacles.segments.get(i)?;
                 let opens = self.obstacles.opening.get(i).copied().unwrap_or(false);
-                if w < least || (opens && !self.openings) {
+                if w < least || (opens && least >= OPEN && !self.openings) {
                     return None;
                 }
                 length_inside(p, q, b).map(|length| w * (4.0 + length))

@@ -324,11 +324,23 @@ impl PanelWriter<'_> {
                 .partition(|(_, p)| p.cost >= STRUCK);
             let again: Vec<&Pending> = lost.into_iter().chain(kept).map(|(p, _)| *p).collect();
             let second = self.placing(&again, room);
-            if struck(&second) < (lasting, n, cost) {
+            let mut best = if struck(&second) < (lasting, n, cost) {
                 (again, second)
             } else {
-                (first, placed)
+                (first.clone(), placed)
+            };
+            if best.1.iter().any(|p| p.lasting) {
+                // Some letter is crossed anyway: once more with hatching
+                // and frames taken for what they are, lines that open.
+                self.obstacles.rollback(start);
+                self.obstacles.set_openings_strike(false);
+                let third = self.placing(&first, room);
+                self.obstacles.set_openings_strike(true);
+                if struck(&third) < struck(&best.1) {
+                    best = (first, third);
+                }
             }
+            best
         };
         let colour = self.style.pen(Role::Label).colour;
         order
