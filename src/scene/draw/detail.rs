@@ -19,7 +19,9 @@
 //! around the points that crowd (any two lettered points within
 //! [`CROWD`] units), magnified until they stand [`APART`]; where nothing
 //! crowds there is none (a detail repeating the whole mechanism at ×2
-//! helps nobody).
+//! helps nobody). A detail of the whole construction takes in the
+//! lettered points within [`CROWD`] of it (A and D by C on a short rod),
+//! so that none stands on its frame.
 //!
 //! The torque layer (Ng's Fig. 1) marks the crank centre and the crank
 //! pin: the torque arrow of radius 36 units about the centre, the θ arc of
@@ -313,7 +315,9 @@ fn crowding_points(pts: &[Point], within: f64) -> usize {
 /// one, which the detail does not try to separate), or where no detail
 /// about them all fits `max_width` (near a dead centre F and G crowd by
 /// A, E by C, a rod's length away) the box of the largest cluster of them
-/// ([`largest_cluster`]); see [`about`].
+/// ([`largest_cluster`]), and where no cluster holds [`CLUSTER`] points
+/// the largest of those whose pairs lie within [`NEIGHBOURS`] of each
+/// other; see [`about`].
 fn crowded(lettered: &[Point], reach: f64, scale: f64, max_width: f64) -> Crowding {
     let pairs = crowding_pairs(lettered, scale);
     if pairs.is_empty() {
