@@ -115,6 +115,16 @@ pub(crate) struct Obstacles {
     pending: Vec<Entry>,
     /// Weight of the segments added next (thick links cost more to cover).
     weight: f64,
+    /// Which segments open for a letter once it is placed (hatching, a
+    /// detail's frame), by their place in `segments`: a search weighs
+    /// them as any, but a letter on them does not stay struck
+    /// ([`Obstacles::lasting`]).
+    opening: Vec<bool>,
+    /// Whether the segments added next open for letters.
+    opens: bool,
+    /// Whether a letter's glyphs on a segment that opens are struck in a
+    /// search ([`Obstacles::set_openings_strike`]).
+    openings_strike: bool,
 }
 
 impl Default for Obstacles {
@@ -127,6 +137,9 @@ impl Default for Obstacles {
             grids: [Grid::default(), Grid::default()],
             pending: Vec::new(),
             weight: 1.0,
+            opening: Vec::new(),
+            opens: false,
+            openings_strike: true,
         }
     }
 }
@@ -141,10 +154,43 @@ impl Obstacles {
         self.weight = weight;
     }
 
+    /// Sets whether the segments added from now on open for a letter
+    /// placed on them (a hatching's strokes, a detail's frame, written
+    /// again with a gap once the labels are placed): a search weighs them
+    /// as any, but a letter whose glyphs meet only such lines does not
+    /// stay struck ([`Obstacles::lasting`]).
+    pub fn set_opens(&mut self, opens: bool) {
+        self.opens = opens;
+    }
+
+    /// Sets whether the searches from now on take a letter whose glyphs
+    /// meet a line that opens ([`Obstacles::set_opens`]) for struck
+    /// ([`STRUCK`]), as they do at first: a letter keeps off hatching
+    /// where it can. A placing that leaves some letter crossed anyway is
+    /// tried once more without, so that such a letter goes onto the
+    /// hatching rather than a line that stays.
+    pub fn set_openings_strike(&mut self, strike: bool) {
+        self.openings_strike = strike;
+    }
+
+    /// Whether the glyphs of a label's box `b`, the letter of the point
+    /// `anchor`, meet what stays where the label is written: a box (a
+    /// part, another label) or a line of weight [`OPEN`] or more that
+    /// does not open for letters ([`Obstacles::set_opens`]). A placing
+    /// whose struck labels sit only on hatching or a detail's frame
+    /// leaves none crossed once written.
+    pub fn lasting(&self, b: &Bounds, anchor: Point) -> bool {
+        let glyphs = b.glyphs();
+        let mut near = self.near(&glyphs, Some(anchor));
+        near.openings = false;
+        near.cost_of(&glyphs, OPEN, f64::MIN_POSITIVE) > 0.0
+    }
+
     pub fn segment(&mut self, a: Point, b: Point) {
         if a.x.is_finite() && a.y.is_finite() && b.x.is_finite() && b.y.is_finite() {
             let i = self.segments.len();
             self.segments.push((a, b, self.weight));
+            self.opening.push(self.opens);
             self.pending
                 .push(GeomWithData::new(rectangle(a, b), Obstacle::Segment(i)));
         }
@@ -203,6 +249,7 @@ impl Obstacles {
     /// built in between.
     pub fn rollback(&mut self, mark: Mark) {
         self.segments.truncate(mark.segments);
+        self.opening.truncate(mark.segments);
         self.boxes.truncate(mark.boxes);
         self.pending.truncate(mark.pending);
     }
@@ -253,6 +300,7 @@ impl Obstacles {
             .collect();
         Near {
             obstacles: self,
+            openings: self.openings_strike,
             within: *within,
             anchor,
             pending,
@@ -314,6 +362,10 @@ fn envelope(entry: &Entry) -> Bounds {
 /// built that lie near the label.
 struct Near<'a> {
     obstacles: &'a Obstacles,
+    /// Whether the lines that open for letters strike a letter's glyphs
+    /// as any (a search, at first), or not (a test of what stays under
+    /// it, [`Obstacles::lasting`]); their cost counts either way.
+    openings: bool,
     /// The box every candidate of the search lies in.
     within: Bounds,
     /// The point of the letter looked for, whose hollow box it may enter.
@@ -480,14 +532,17 @@ impl Near<'_> {
     }
 
     /// What `obstacle`, whose box meets `b`, adds to the cost of `b`: a
-    /// segment weighing at least `least`, its weight times 4 plus its
+    /// segment weighing at least `least` (where that is [`OPEN`] or more,
+    /// not one that opens for letters if they strike none, [`Near::openings`]),
+    /// its weight times 4 plus its
     /// length inside; a box, 200 plus the area shared. `None` where it
     /// adds nothing.
     fn term(&self, obstacle: Obstacle, b: &Bounds, least: f64) -> Option<f64> {
         match obstacle {
             Obstacle::Segment(i) => {
                 let &(p, q, w) = self.obstacles.segments.get(i)?;
-                if w < least {
+                let opens = self.obstacles.opening.get(i).copied().unwrap_or(false);
+                if w < least || (opens && least >= OPEN && !self.openings) {
                     return None;
                 }
                 length_inside(p, q, b).map(|length| w * (4.0 + length))
@@ -792,6 +847,32 @@ mod tests {
         o.build(&page, &[Vector::new(6.0, 8.0)]);
         let (_, cost) = place(p, Vector::new(6.0, 8.0), 4.0, 20.0, &o, &page);
         assert!(cost >= STRUCK, "{cost}");
+    }
+
+    #[test]
+    fn a_letter_on_a_line_that_opens_does_not_stay_struck() {
+        // Hatching (weight 3, opening) across the top, a link across the
+        // bottom: a letter on either is struck while placed, but only the
+        // link stays under it once written.
+        let mut o = Obstacles::default();
+        o.set_weight(3.0);
+        o.set_opens(true);
+        o.segment(Point::new(0.0, 20.0), Point::new(100.0, 20.0));
+        o.set_opens(false);
+        o.segment(Point::new(0.0, 80.0), Point::new(100.0, 80.0));
+        o.build(
+            &PageRect::new(0.0, 0.0, 100.0, 100.0),
+            &[Vector::new(6.0, 8.0)],
+        );
+        let half = Vector::new(6.0, 8.0);
+        let (top, bottom) = (Point::new(50.0, 20.0), Point::new(50.0, 80.0));
+        let near = o.near(&Bounds::around(top, Vector::new(20.0, 20.0)), Some(top));
+        assert!(near.struck(&Bounds::around(top, half).glyphs()));
+        assert!(!o.lasting(&Bounds::around(top, half), top));
+        assert!(o.lasting(&Bounds::around(bottom, half), bottom));
+        // Clear of both, nothing stays.
+        let free = Point::new(50.0, 50.0);
+        assert!(!o.lasting(&Bounds::around(free, half), free));
     }
 
     /// Horizontal lines every 8 units across a 100-unit page, weight 3:

@@ -25,7 +25,7 @@ mod text;
 
 use super::labels::{Bounds, Obstacles, ROOM, STRUCK, place_toward};
 use crate::figure::{
-    Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, RichText, Role, Shape,
+    Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, Part, RichText, Role, Shape,
 };
 use crate::figure::{Pen, Style};
 use crate::geom::{Point, Vector};
@@ -140,6 +140,10 @@ impl PanelWriter<'_> {
             Role::Construction | Role::Result => 1.5,
             _ => 1.0,
         });
+        // Hatching and a detail's frame are written again with a gap
+        // where a letter sits: a letter with no clean place goes there.
+        let opens = matches!(item.shape, Shape::Hatch { .. }) || item.part == Part::DetailMark;
+        self.obstacles.set_opens(opens);
         match &item.shape {
             Shape::Path(p) => self.fitted_path(&ink, p),
             Shape::Polyline { points, closed } => self.polyline(&ink, points, *closed, item.part),
@@ -294,7 +298,9 @@ impl PanelWriter<'_> {
     /// could not keep its glyphs clear, the labels are placed once more
     /// with those first (an earlier label may have taken the one place
     /// they had), and the better of the two placings is kept: fewer
-    /// struck labels, then less cost.
+    /// labels crossed by what stays once written (a letter on hatching or
+    /// on a detail's frame is not: both open for it), then fewer struck
+    /// labels, then less cost.
     fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
         let mut pending = std::mem::take(&mut self.pending);
         let halves: Vec<Vector> = (pending.iter())
@@ -305,11 +311,14 @@ impl PanelWriter<'_> {
         let start = self.obstacles.mark();
         let first: Vec<&Pending> = pending.iter().collect();
         let placed = self.placing(&first, room);
+        // Labels crossed once written (a hatching and a detail's frame
+        // open for theirs), then struck, then the cost.
         let struck = |placed: &[Placed]| {
+            let lasting = placed.iter().filter(|p| p.lasting).count();
             let n = placed.iter().filter(|p| p.cost >= STRUCK).count();
-            (n, placed.iter().map(|p| p.cost).sum::<f64>())
+            (lasting, n, placed.iter().map(|p| p.cost).sum::<f64>())
         };
-        let (n, cost) = struck(&placed);
+        let (lasting, n, cost) = struck(&placed);
         let (order, placed) = if n == 0 {
             (first, placed)
         } else {
@@ -320,11 +329,23 @@ impl PanelWriter<'_> {
                 .partition(|(_, p)| p.cost >= STRUCK);
             let again: Vec<&Pending> = lost.into_iter().chain(kept).map(|(p, _)| *p).collect();
             let second = self.placing(&again, room);
-            if struck(&second) < (n, cost) {
+            let mut best = if struck(&second) < (lasting, n, cost) {
                 (again, second)
             } else {
-                (first, placed)
+                (first.clone(), placed)
+            };
+            if best.1.iter().any(|p| p.lasting) {
+                // Some letter is crossed anyway: once more with hatching
+                // and frames taken for what they are, lines that open.
+                self.obstacles.rollback(start);
+                self.obstacles.set_openings_strike(false);
+                let third = self.placing(&first, room);
+                self.obstacles.set_openings_strike(true);
+                if struck(&third) < struck(&best.1) {
+                    best = (first, third);
+                }
             }
+            best
         };
         let colour = self.style.pen(Role::Label).colour;
         order
@@ -364,11 +385,13 @@ impl PanelWriter<'_> {
                     room,
                 );
                 let bounds = Bounds::around(centre, half);
+                let lasting = cost >= STRUCK && self.obstacles.lasting(&bounds, p.anchor);
                 self.obstacles.boxed(bounds);
                 Placed {
                     at: centre + shift,
                     bounds,
                     cost,
+                    lasting,
                 }
             })
             .collect()
@@ -381,6 +404,9 @@ struct Placed {
     at: Point,
     bounds: Bounds,
     cost: f64,
+    /// Whether its glyphs meet what stays once written
+    /// ([`Obstacles::lasting`]).
+    lasting: bool,
 }
 
 /// Where a panel's labels may go: in the panel, or just outside it (into

@@ -19,7 +19,9 @@
 //! around the points that crowd (any two lettered points within
 //! [`CROWD`] units), magnified until they stand [`APART`]; where nothing
 //! crowds there is none (a detail repeating the whole mechanism at ×2
-//! helps nobody).
+//! helps nobody). A detail of the whole construction takes in the
+//! lettered points within [`CROWD`] of it (A and D by C on a short rod),
+//! so that none stands on its frame.
 //!
 //! The torque layer (Ng's Fig. 1) marks the crank centre and the crank
 //! pin: the torque arrow of radius 36 units about the centre, the θ arc of
@@ -168,12 +170,20 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
     lettered.extend(h);
     lettered.extend(super::fit::d_is_near(ctx));
     // The acceleration constructions' pins (C among A, E, F, G on a short
-    // rod) need their letters' room inside the frame; the velocity
-    // triangle's frame stays tight, clear of the letters about it.
-    let reach = if acceleration { FRAME_REACH } else { 0.0 };
+    // rod) need their letters' room inside the frame, as does the crank's
+    // ω arrow (Ng's Fig. A1), drawn 40 units about the crank centre with
+    // its letter outside it; the velocity triangle's frame otherwise
+    // stays tight, clear of the letters about it.
+    let turning = scene.has(Layer::Motion) && !scene.has(Layer::Torque);
+    let reach = if acceleration || turning {
+        FRAME_REACH
+    } else {
+        0.0
+    };
     let crowding = crowded(&lettered, reach, scale, max_width);
     if !readable {
-        let all = whole(&core, h, core_extent, scale, max_width);
+        let near = neighbours(&core, &lettered, scale);
+        let all = whole(&core, h, &near, core_extent, scale, max_width);
         // The whole construction enlarged may still leave a cluster of
         // points within [`CROWD`] of each other (a short rod whose
         // construction spans just under the target: C, A, D, E and F
@@ -194,25 +204,50 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
         Crowding::Apart => None,
         // Points too close to separate (near a dead centre): the whole
         // construction enlarged, its letters set about it.
-        Crowding::Together if acceleration => whole(&core, h, core_extent, scale, max_width),
+        Crowding::Together if acceleration => {
+            let near = neighbours(&core, &lettered, scale);
+            whole(&core, h, &near, core_extent, scale, max_width)
+        }
         Crowding::Together => None,
         Crowding::Separable(d) => Some(d),
     }
 }
 
+/// The lettered points of `lettered` within [`CROWD`] page units of the
+/// box of `core` in a main view at `scale`, outside it: the pins by a
+/// short rod's construction (A and D by C) that would otherwise stand on
+/// the frame of its detail, their letters cut off or pressed against the
+/// construction's lines.
+fn neighbours(core: &[Point], lettered: &[Point], scale: f64) -> Vec<Point> {
+    let (lo, hi) = bounds(core);
+    let off = |p: &Point| {
+        let out = (lo - p).sup(&(p - hi)).sup(&Vector::zeros());
+        out.norm() * scale
+    };
+    (lettered.iter())
+        .filter(|p| {
+            let d = off(p);
+            d > 0.0 && d < CROWD
+        })
+        .copied()
+        .collect()
+}
+
 /// The detail of the whole construction about the crank (B, C, E, F, G,
-/// with Kisch's H where the core keeps [`CORE_TARGET`] with it), whose
-/// core spans `core_extent` page units in a main view at `scale`.
+/// with Kisch's H where the core keeps [`CORE_TARGET`] with it, and the
+/// lettered points `near` it, [`neighbours`]), whose core spans
+/// `core_extent` page units in a main view at `scale`.
 fn whole(
     core: &[Point],
     h: Option<Point>,
+    near: &[Point],
     core_extent: f64,
     scale: f64,
     max_width: f64,
 ) -> Option<Detail> {
     let with_h = h.map(|h| [core, &[h]].concat());
     let fitted = |pts: &[Point]| {
-        let (min, max) = bounds(pts);
+        let (min, max) = bounds(&[pts, near].concat());
         let size = max - min;
         let extent = size.x.max(size.y) * scale;
         if !(extent > 0.0 && extent.is_finite()) {
@@ -280,7 +315,9 @@ fn crowding_points(pts: &[Point], within: f64) -> usize {
 /// one, which the detail does not try to separate), or where no detail
 /// about them all fits `max_width` (near a dead centre F and G crowd by
 /// A, E by C, a rod's length away) the box of the largest cluster of them
-/// ([`largest_cluster`]); see [`about`].
+/// ([`largest_cluster`]), and where no cluster holds [`CLUSTER`] points
+/// the largest of those whose pairs lie within [`NEIGHBOURS`] of each
+/// other; see [`about`].
 fn crowded(lettered: &[Point], reach: f64, scale: f64, max_width: f64) -> Crowding {
     let pairs = crowding_pairs(lettered, scale);
     if pairs.is_empty() {
@@ -292,6 +329,15 @@ fn crowded(lettered: &[Point], reach: f64, scale: f64, max_width: f64) -> Crowdi
         .or_else(|| {
             let c = largest_cluster(&pairs, &of)?;
             let (m, closest) = crowd_of(lettered, &pairs, &of, Some(c))?;
+            about(&m, closest, reach, scale, max_width)
+        })
+        .or_else(|| {
+            // No cluster is large enough: near a dead centre the pairs
+            // stand apart (A by D, F on G, C by E), but the letters of two
+            // of them within [`NEIGHBOURS`] share one room.
+            let linked = clusters(lettered.len(), &within(lettered, NEIGHBOURS, scale));
+            let c = largest_cluster(&pairs, &linked)?;
+            let (m, closest) = crowd_of(lettered, &pairs, &linked, Some(c))?;
             about(&m, closest, reach, scale, max_width)
         });
     match detail {
@@ -337,11 +383,25 @@ fn about(
 /// `scale`: closer than [`CROWD`] page units and not at one point, each
 /// with its distance on the page.
 fn crowding_pairs(pts: &[Point], scale: f64) -> Vec<(usize, usize, f64)> {
+    within(pts, CROWD, scale)
+}
+
+/// Distance apart (page units) within which two pairs of crowding points
+/// near a dead centre share the room of their letters: a pair taken as
+/// one (F on G) needs two letters' room beside it, about 2 × 16 units
+/// with their gaps, which a pair one letter's room away (A by D, 30 units
+/// off) takes too.
+const NEIGHBOURS: f64 = 1.5 * CROWD;
+
+/// The pairs of `pts` (by their places) closer than `apart` page units
+/// in a main view at `scale` and not at one point, each with its
+/// distance on the page.
+fn within(pts: &[Point], apart: f64, scale: f64) -> Vec<(usize, usize, f64)> {
     let mut pairs = Vec::new();
     for (i, a) in pts.iter().enumerate() {
         for (j, b) in pts.iter().enumerate().skip(i + 1) {
             let d = (b - a).norm() * scale;
-            if d > 0.0 && d < CROWD {
+            if d > 0.0 && d < apart {
                 pairs.push((i, j, d));
             }
         }
