@@ -206,7 +206,8 @@ impl FigureOptions {
 
     /// `page` with the width and height asked for in place of its own;
     /// the SVG's size is then in the unit of the width if that is physical,
-    /// else in that of the height.
+    /// else in that of the height. A height asked for alone leaves the
+    /// width to be narrowed to the drawing where `page`'s would be.
     pub(crate) fn page(&self, page: &Page) -> Result<Page> {
         if self.width.is_none() && self.height.is_none() {
             return Ok(*page);
@@ -217,6 +218,11 @@ impl FigureOptions {
             self.height.map_or_else(|| own(page.height()), Ok)?,
             page.margin(),
         )?;
+        // A width not asked for is narrowed as the figure's own would be.
+        let sized = match self.width {
+            None if page.fits_width() => sized.with_width_fitted(),
+            _ => sized,
+        };
         // A height asked for is the page's: the figure ends within it.
         Ok(match self.height {
             Some(_) => sized.with_height_held(),

@@ -260,9 +260,26 @@ pub(crate) fn diagram(name: FigureName) -> String {
         &mut out,
         &format!("{PAGE} The diagram lays its plots out on it."),
     );
-    let _ = writeln!(out, "width = {}", number(page.width()));
+    if narrowed(name) {
+        comment(
+            &mut out,
+            "The figure's own page is narrowed to what the diagram draws; a width given is kept.",
+        );
+        let _ = writeln!(out, "# width = {}", number(page.width()));
+    } else {
+        let _ = writeln!(out, "width = {}", number(page.width()));
+    }
     let _ = writeln!(out, "height = {}", number(page.height()));
     out
+}
+
+/// Whether the diagram at its defaults comes out narrower than its page
+/// (Inversion 2 and the coupler curves narrow their own page to what they
+/// draw): its scene file then leaves the width out, since a width given
+/// is kept.
+fn narrowed(name: FigureName) -> bool {
+    name.figure(&super::FigureOptions::default())
+        .is_ok_and(|f| f.width() < name.page().width())
 }
 
 /// The keys a diagram takes beside `figure`, each at its own value:
