@@ -27,6 +27,22 @@ impl Bounds {
         }
     }
 
+    /// The least box holding every one of `points` (`None` for none).
+    pub(crate) fn enclosing(points: &[Point]) -> Option<Self> {
+        let (first, rest) = points.split_first()?;
+        let grow = |b: Self, p: &Point| Self {
+            min: b.min.inf(p),
+            max: b.max.sup(p),
+        };
+        Some(rest.iter().fold(
+            Self {
+                min: *first,
+                max: *first,
+            },
+            grow,
+        ))
+    }
+
     /// The box grown by `by` on every side.
     pub(crate) fn inflate(&self, by: f64) -> Self {
         let d = Vector::new(by, by);

@@ -70,6 +70,7 @@ impl OpenLine {
             id: &self.id,
             role: self.role,
             pen: self.pen,
+            part: Part::Plain,
         };
         let mut d = String::new();
         match self.course {

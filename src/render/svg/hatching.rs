@@ -6,7 +6,7 @@
 
 use super::Ink;
 use super::markup::{path, pt};
-use crate::figure::{Pen, Role};
+use crate::figure::{Part, Pen, Role};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::{Bounds, span};
@@ -33,6 +33,7 @@ impl Hatching {
             id: &self.id,
             role: self.role,
             pen: self.pen,
+            part: Part::Plain,
         };
         let d = kept(&self.strokes, boxes).fold(String::new(), |mut d, (p, q)| {
             let sep = if d.is_empty() { "" } else { " " };

@@ -9,6 +9,7 @@ use crate::figure::{Part, Path, PathSegment};
 use crate::geom::Point;
 use crate::number::fmt;
 use crate::render::Element;
+use crate::render::labels::Bounds;
 use std::fmt::Write as _;
 
 impl PanelWriter<'_> {
@@ -77,6 +78,9 @@ impl PanelWriter<'_> {
         {
             // A detail's frame or border, likewise.
             let corners = [a, b, c, d];
+            if let Some(marked) = Bounds::enclosing(&corners) {
+                self.detail_marks.push(marked);
+            }
             return Some(self.open_line(ink, centre::Course::Frame { corners }));
         }
         Some(ink.tag(path(polyline_d(&pts, closed), ink.pen)))

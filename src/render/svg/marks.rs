@@ -118,6 +118,7 @@ impl PanelWriter<'_> {
                 gap: 2.0,
                 letter: false,
                 toward: Some(dir),
+                joint: false,
             });
         }
         Some(self.open_line(ink, course))

@@ -42,6 +42,14 @@ use text::{ink_box, starts_italic, text_node};
 /// italic letter's ink sits inside its advance, less a margin.
 const REACH: f64 = 1.3;
 
+/// How far, in font sizes, a name or a value (not a point's letter) looks
+/// for a clear place when none within [`REACH`] is.
+const WIDE_REACH: f64 = 2.5;
+
+/// The room, in font sizes, kept on either side of a name or a value
+/// placed within [`WIDE_REACH`] (about a word space).
+const WIDE_ROOM: f64 = 0.3;
+
 /// A label waiting to be placed once every line is known.
 struct Pending {
     id: String,
@@ -55,6 +63,9 @@ struct Pending {
     /// The page direction tried first, out to the last ring (an angle's
     /// bisector), if any.
     toward: Option<Vector>,
+    /// Whether it is a joint's letter (a pin of the mechanism), which a
+    /// detail whose frame holds the pin letters too.
+    joint: bool,
 }
 
 /// What an item's symbol is written with: its id, its role (the class)
@@ -63,6 +74,8 @@ struct Ink<'a> {
     id: &'a str,
     role: Role,
     pen: Pen,
+    /// What the item is, where code tells it apart.
+    part: Part,
 }
 
 impl Ink<'_> {
@@ -92,6 +105,9 @@ struct PanelWriter<'a> {
     /// Whether the panel is a detail (clipped to its rectangle), where
     /// the slider's block is enlarged.
     detail: bool,
+    /// The page boxes of the detail marks drawn (a detail's frame on the
+    /// main view, its border).
+    detail_marks: Vec<Bounds>,
 }
 
 impl PanelWriter<'_> {
@@ -129,6 +145,7 @@ impl PanelWriter<'_> {
             id: &item.id,
             role: item.role,
             pen: self.pen(item),
+            part: item.part,
         };
         self.obstacles.set_weight(match item.role {
             // A letter may sit on a centre line, which opens for it.
@@ -227,6 +244,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
         hatchings: Vec::new(),
         angle_radii: Vec::new(),
         detail: panel.is_clipped(),
+        detail_marks: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -351,6 +369,7 @@ impl PanelWriter<'_> {
         order
             .into_iter()
             .zip(placed)
+            .filter(|(p, at)| !self.left_to_detail(p, at))
             .map(|(p, at)| {
                 let text = text_node(
                     &p.id,
@@ -366,6 +385,14 @@ impl PanelWriter<'_> {
             .unzip()
     }
 
+    /// Whether a label is left out here and to the detail: a joint's
+    /// letter crossed by a line that stays, on the main view, where the
+    /// pin lies inside a detail's frame (the detail enlarges everything
+    /// in its frame and letters the pin there, clear).
+    fn left_to_detail(&self, p: &Pending, at: &Placed) -> bool {
+        p.joint && at.lasting && !self.detail && self.detail_marks.iter().any(|m| m.holds(p.anchor))
+    }
+
     /// The labels placed in the `order` given, each box added to the
     /// obstacles as it is placed.
     fn placing(&mut self, order: &[&Pending], room: &PageRect) -> Vec<Placed> {
@@ -375,17 +402,38 @@ impl PanelWriter<'_> {
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
-                let (centre, cost) = place_toward(
-                    p.anchor,
-                    half,
-                    p.gap,
-                    reach,
-                    p.toward,
-                    &self.obstacles,
-                    room,
-                );
+                let place = |reach: f64, half: Vector| {
+                    place_toward(
+                        p.anchor,
+                        half,
+                        p.gap,
+                        reach,
+                        p.toward,
+                        &self.obstacles,
+                        room,
+                    )
+                };
+                let lasting = |(centre, cost): (Point, f64)| {
+                    cost >= STRUCK
+                        && (self.obstacles).lasting(&Bounds::around(centre, half), p.anchor)
+                };
+                let mut best = place(reach, half);
+                if !p.letter && lasting(best) {
+                    // A name or a value crossed within a letter's reach by
+                    // a line that stays (a detail's magnification beside a
+                    // frame among crowding pins) looks further out, no
+                    // point holding it near, with a space's room on each
+                    // side so that it does not read as one word with a
+                    // letter beside it.
+                    let room = Vector::new(WIDE_ROOM * p.size, 0.0);
+                    let wide = place(WIDE_REACH * p.size - ROOM, half + room);
+                    if !lasting(wide) {
+                        best = wide;
+                    }
+                }
+                let (centre, cost) = best;
                 let bounds = Bounds::around(centre, half);
-                let lasting = cost >= STRUCK && self.obstacles.lasting(&bounds, p.anchor);
+                let lasting = lasting(best);
                 self.obstacles.boxed(bounds);
                 Placed {
                     at: centre + shift,

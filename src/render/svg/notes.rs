@@ -5,7 +5,7 @@
 use super::markup::{finite, unit};
 use super::text::{BASELINE, starts_italic, text_half, text_node};
 use super::{Ink, PanelWriter, Pending};
-use crate::figure::{Align, RichText, Role, TextSize};
+use crate::figure::{Align, Part, RichText, Role, TextSize};
 use crate::geom::{Point, Vector};
 use crate::render::Element;
 use crate::render::labels::Bounds;
@@ -38,6 +38,7 @@ impl PanelWriter<'_> {
             },
             letter: size == TextSize::Letter,
             toward: toward.and_then(|u| unit(self.t.apply_vector(u))),
+            joint: ink.part == Part::Joint && size == TextSize::Letter,
         });
         None
     }
