@@ -227,12 +227,7 @@ fn check_page(browser: &Path, page: &Path) -> Value {
             Value::Bool(true),
             "{name}: figure {k} not loaded"
         );
-        let b: Vec<f64> = f["box"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|v| v.as_f64().unwrap())
-            .collect();
+        let b = figure_box(f);
         assert!(
             b[2] > 10.0 && b[3] > 10.0,
             "{name}: figure {k} has no size: {b:?}"
@@ -247,6 +242,16 @@ fn check_page(browser: &Path, page: &Path) -> Value {
         );
     }
     report
+}
+
+/// A figure's box as the probe reports it: `[x, y, w, h]`, CSS px.
+fn figure_box(figure: &Value) -> Vec<f64> {
+    figure["box"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|v| v.as_f64().unwrap())
+        .collect()
 }
 
 /// Pixels darker than light grey inside the box `[x, y, w, h]`.
@@ -618,12 +623,7 @@ fn an_animation_plays_and_its_frame_is_drawn() {
     // heading and the controls leave: it plays without scrolling.
     let window = f64::from(WINDOW);
     assert!(report["height"].as_f64().unwrap() <= window, "{report}");
-    let frame: Vec<f64> = report["figures"][0]["box"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|v| v.as_f64().unwrap())
-        .collect();
+    let frame = figure_box(&report["figures"][0]);
     assert!(
         frame[1] + frame[3] <= window,
         "the frame runs below the window: {frame:?}"
