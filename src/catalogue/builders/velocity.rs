@@ -100,27 +100,16 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
 /// the crank: a view fitted to the mechanism alone sent the curves off
 /// the top of the page and through the detail's frame.
 fn reach(m: SliderCrank) -> Frame {
-    let mut lo = Point::new(f64::INFINITY, f64::INFINITY);
-    let mut hi = Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY);
-    for k in 0..720 {
-        let Ok(angle) = Angle::from_degrees(0.5 * k as f64) else {
-            continue;
-        };
-        let pose = m.pose(angle);
-        let ce = -pose.position_rate();
-        let e1 = Vector::new(angle.cos(), angle.sin()) * ce;
-        for p in [
-            Point::origin() + e1,
-            Point::origin() - e1,
-            Point::new(pose.position(), ce),
-        ] {
-            if p.x.is_finite() && p.y.is_finite() {
-                lo = lo.inf(&p);
-                hi = hi.sup(&p);
-            }
-        }
-    }
-    Frame::new(lo, hi)
+    let ce = |p: &Pose| -p.position_rate();
+    // E′ at ±CE along the crank, E″ at (x_A, CE).
+    let (x0, x1) = extent(&m, |p| ce(p) * p.angle().cos());
+    let (y0, y1) = extent(&m, |p| ce(p) * p.angle().sin());
+    let (s0, s1) = extent(&m, |p| p.position());
+    let (c0, c1) = extent(&m, ce);
+    Frame::new(
+        Point::new(x0.min(-x1).min(s0), y0.min(-y1).min(c0)),
+        Point::new(x1.max(-x0).max(s1), y1.max(-y0).max(c1)),
+    )
 }
 
 /// How much taller the diagrams' `reach` makes the drawing than the
