@@ -250,3 +250,43 @@ fn ngs_crank_force_never_lies_along_the_rod() {
         }
     }
 }
+
+/// Ng's Fig. 1 (issue 20): at a short rod the slider's velocity v_p,
+/// drawn under the slider towards the crank, ran into the torque's arc
+/// about O and its head lay on the arc's (`--rod 1.08 --angle 93`). Over
+/// a turn, at Ng's rig and at short rods, no point of v_p's arrow comes
+/// within the torque arc's radius and its head's room (44 units) of O.
+#[test]
+fn the_sliders_velocity_keeps_off_the_torque_arrow() {
+    for (r, l) in [(25.0, 72.0), (1.0, 1.05), (1.0, 1.08), (1.0, 1.2)] {
+        for deg in (0..360).step_by(5).map(f64::from) {
+            let text = svg(FigureName::NgFig1Torque, Some((r, l, 0.0, deg)), None);
+            let (Some(at), true) = (text.find("id=\"velocity-vp\""), text.contains("torque-T"))
+            else {
+                continue;
+            };
+            let o = (
+                common::num(&text, "point-O", "cx"),
+                common::num(&text, "point-O", "cy"),
+            );
+            let group = &text[at..at + text[at..].find("</g>").unwrap()];
+            for d in group.split(" d=\"").skip(1) {
+                let xy = path_numbers(&d[..d.find('"').unwrap()]);
+                // Every vertex, and ten points along each straight piece.
+                let along = xy.chunks(2).zip(xy.chunks(2).skip(1)).flat_map(|(p, q)| {
+                    (0..=10).map(move |k| {
+                        let t = f64::from(k) / 10.0;
+                        (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]))
+                    })
+                });
+                for p in along {
+                    let near = distance(p, o);
+                    assert!(
+                        near >= 44.0,
+                        "l = {l}, {deg}°: v_p {near:.1} from O, on the torque's arc"
+                    );
+                }
+            }
+        }
+    }
+}

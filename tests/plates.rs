@@ -1574,19 +1574,30 @@ fn a_crowding_detail_holds_the_crank_s_omega_arrow_and_its_letter() {
 }
 
 #[test]
-fn a_letter_on_hatching_is_not_taken_for_one_crossed() {
-    // The inertia force at l = 1.08 r, 150°: A, C, the torque arrow about
-    // C and F_i within 30 units. Placed first, A's letter stood clear and
-    // T's had only the guide's hatching and the detail's frame; placed
-    // again with T's first, A's sat on BD and the crank. The second
-    // placing cost less and was kept, though hatching and frame open for
-    // a letter and the crank does not. The first is kept now.
-    let plate = plate_at("inertia-force", 1.08, 0.0, 150.0);
-    let main = &plate.panels[0];
-    let t = main.labels.iter().find(|l| l.id == "value-T").expect("T");
-    let hatching = stroke_box(main, "hatch-guide-upper");
-    assert!(t.rect.overlaps(&hatching), "{t:?} off the hatching");
-    assert_eq!(check(&plate, false), [], "inertia force at 150°");
+fn the_crank_effort_goes_to_a_detail_that_holds_the_crank_centre() {
+    // The inertia force at l = 1.05 r, 130°, and at l = 1.08 r, 150°: A,
+    // C, the crank effort's arc about C and F_i within 30 units of each
+    // other on the main view, with A's, T's and F_i's letters stacked
+    // about the block (at 150° T's went onto the guide's hatching, A's
+    // onto BD and the crank when placed the other way). A detail of the
+    // construction holds C with room for the arc: T is drawn there, and
+    // the main view keeps F_i and the pins' letters.
+    for (rod, degrees) in [(1.05, 130.0), (1.08, 150.0)] {
+        let plate = plate_at("inertia-force", rod, 0.0, degrees);
+        let (main, detail) = (&plate.panels[0], &plate.panels[1]);
+        assert_eq!(detail.prefix, "detail-", "at {degrees}°");
+        assert!(!draws(main, "torque-T"), "T on the main view at {degrees}°");
+        assert!(!main.labels.iter().any(|l| l.id == "value-T"));
+        assert!(draws(detail, "detail-torque-T"), "no T in the detail");
+        let t = detail.labels.iter().find(|l| l.id == "detail-value-T");
+        assert!(t.is_some(), "T's letter at {degrees}°");
+        assert!(main.labels.iter().any(|l| l.id == "value-inertia"));
+        assert_eq!(check(&plate, false), [], "inertia force at {degrees}°");
+    }
+    // Where the detail does not hold C (the default, no detail), T is on
+    // the main view.
+    let plate = plate_at("inertia-force", 6.0, 0.0, 30.0);
+    assert!(draws(&plate.panels[0], "torque-T"));
 }
 
 #[test]

@@ -141,21 +141,66 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
     };
     let scale = main.transform().scale();
     let pose = ctx.pose();
+    let details: Vec<&Panel> = panels.collect();
+    // The crank effort's arc goes where C has room for it: in a detail
+    // that holds C with the arc's reach about it (a short rod, where the
+    // block, A's letter and F_i crowd about C on the main view), else on
+    // the main view.
+    let home = details.iter().position(|d| holds_the_arc(d, pose.c()));
+    let effort = |panel: &Panel, block: Option<Point>| {
+        torque_arc(
+            pose.c(),
+            block,
+            f.at.crank_effort,
+            panel.transform().scale(),
+        )
+    };
     let mut items = inertia_arrow(main, &pose, f, scale);
-    let block = block_extent(main).map(|(lo, hi)| {
+    if home.is_none() {
+        items.extend(effort(main, nearest_face(main, &pose)));
+    }
+    sheet.panel(main.clone().with_items(items));
+    for (k, detail) in details.into_iter().enumerate() {
+        let own = if home == Some(k) {
+            // Its gap and letter below C, as at any pose: the enlarged
+            // block is drawn about C, and a gap facing its nearer face
+            // would set T between A's and C's letters.
+            let mut own = effort(detail, None);
+            for item in &mut own {
+                item.id.insert_str(0, "detail-");
+            }
+            own
+        } else {
+            Vec::new()
+        };
+        sheet.panel(detail.clone().with_items(own));
+    }
+    Ok(base.height())
+}
+
+/// Whether the detail `panel` shows the crank centre `c` with the crank
+/// effort's arc, its head and its letter inside its frame.
+fn holds_the_arc(panel: &Panel, c: Point) -> bool {
+    let p = panel.transform().apply(c);
+    let r = panel.rect();
+    let reach = TORQUE_RADIUS + 2.0 * ROOM;
+    p.x - r.x >= reach
+        && r.x + r.width - p.x >= reach
+        && p.y - r.y >= reach
+        && r.y + r.height - p.y >= reach
+}
+
+/// The point of the block's face nearer the crank centre, on the line of
+/// stroke (where the torque arc opens towards the block).
+fn nearest_face(panel: &Panel, pose: &crate::mechanism::Pose) -> Option<Point> {
+    block_extent(panel).map(|(lo, hi)| {
         let x = if (pose.c().x - lo).abs() < (pose.c().x - hi).abs() {
             lo
         } else {
             hi
         };
         Point::new(x, pose.a().y)
-    });
-    items.extend(torque_arc(pose.c(), block, f.at.crank_effort, scale));
-    sheet.panel(main.clone().with_items(items));
-    for detail in panels {
-        sheet.panel(detail.clone());
-    }
-    Ok(base.height())
+    })
 }
 
 /// The slider block's extent along x in the panel, world units.

@@ -4,7 +4,7 @@
 
 use super::{LayerCtx, NamedArrow};
 use crate::figure::{Hue, RichText, Role, Shape, TextSize};
-use crate::geom::Vector;
+use crate::geom::{Point, Vector};
 use crate::scene::canvas::Canvas;
 
 /// Length of the arrow v_c, page units; v_p is drawn to the same scale.
@@ -14,6 +14,10 @@ const MIN_ARROW: f64 = 14.0;
 /// Distance of the arrow v_p beyond the guide, page units (past the
 /// hatching).
 const VP_CLEAR: f64 = 18.0;
+/// Radius about the crank centre, page units, that v_p keeps out of: the
+/// torque's turning arrow ([`super::torque`]'s radius and the room for
+/// its head) or ω's, with a few units between.
+const CRANK_KEEP: f64 = 50.0;
 /// Radius of the ω arrow about the crank centre, page units.
 const OMEGA_RADIUS: f64 = 40.0;
 /// Radius of the Ω arrow about the rod's middle, page units.
@@ -61,8 +65,10 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
         let h = ctx.sizes.block_half_height;
         let side = if b.y >= a.y { -1.0 } else { 1.0 };
         // Beyond the guide's hatching, with room for the arrow's head.
-        let from = a + Vector::new(0.0, side * (h + world(VP_CLEAR)));
-        let to = from + Vector::new(vp.signum(), 0.0) * world(len.max(MIN_ARROW));
+        let under = a + Vector::new(0.0, side * (h + world(VP_CLEAR)));
+        let along = vp.signum() * world(len.max(MIN_ARROW));
+        let from = under + Vector::new(clear_of_the_crank(under, along, pose.c(), world), 0.0);
+        let to = from + Vector::new(along, 0.0);
         out.push(NamedArrow {
             id: "vp",
             name: "*v*_p",
@@ -72,6 +78,35 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
         });
     }
     out
+}
+
+/// How far along the stroke v_p's tail moves from `under` (below the
+/// slider) so that the arrow, `along` long (signed, world units), stays
+/// out of [`CRANK_KEEP`] about the crank centre `c`, where the torque's
+/// or ω's turning arrow is drawn: 0 where it is clear (the tail under the
+/// slider); else the head under the slider; else the whole arrow just
+/// beyond the circle on the slider's side (a short rod near the inner
+/// dead centre).
+fn clear_of_the_crank(under: Point, along: f64, c: Point, world: &dyn Fn(f64) -> f64) -> f64 {
+    let keep = world(CRANK_KEEP);
+    let dy = (under.y - c.y).abs();
+    if dy >= keep {
+        return 0.0;
+    }
+    let w = (keep * keep - dy * dy).sqrt();
+    let clear = |shift: f64| {
+        let (x0, x1) = (under.x + shift, under.x + shift + along);
+        x0.min(x1) >= c.x + w || x0.max(x1) <= c.x - w
+    };
+    if clear(0.0) {
+        0.0
+    } else if clear(-along) {
+        -along
+    } else if under.x >= c.x {
+        c.x + w - (under.x + along.min(0.0))
+    } else {
+        c.x - w - (under.x + along.max(0.0))
+    }
 }
 
 /// ω about the crank centre and Ω about the rod's middle.
