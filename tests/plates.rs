@@ -1825,3 +1825,63 @@ fn a_pin_left_unlettered_on_both_views_is_caught() {
     let bare = svg.replace("id=\"detail-label-C\"", "id=\"detail-note-C\"");
     assert_eq!(rules(&bare, true), [RULE_NEAR, RULE_NEAR]);
 }
+
+#[test]
+fn a_pin_s_letter_nearer_another_pin_is_left_to_the_detail() {
+    // The inertia force at l = 1.05 r, 130°: A and C 13 units apart
+    // inside the detail's frame, A's letter set beyond C (19 units from
+    // C, 27 from A), read as C's. A pin's letter on the main view inside
+    // a detail's frame is never nearer another pin than its own by more
+    // than 3 units: where no place is, the detail letters the pin.
+    let plate = plate_at("inertia-force", 1.05, 0.0, 130.0);
+    assert!(!plate.panels[0].labels.iter().any(|l| l.id == "label-A"));
+    assert!(
+        plate.panels[1]
+            .labels
+            .iter()
+            .any(|l| l.id == "detail-label-A")
+    );
+    let pins = ["A", "B", "C", "O", "P"];
+    for figure in [
+        "inertia-force",
+        "fig-65-klein",
+        "fig-67-example",
+        "ng-fig-1-torque",
+    ] {
+        for rod in [1.05, 1.08] {
+            for degrees in (0..360).step_by(20).map(f64::from) {
+                let plate = plate_at(figure, rod, 0.0, degrees);
+                let main = &plate.panels[0];
+                let Some(frame) = main.strokes.iter().find(|s| s.id == "detail-frame") else {
+                    continue;
+                };
+                let frame = Rect::around(frame.segs.iter().flat_map(|g| [g.0, g.1])).unwrap();
+                for letter in pins {
+                    let (Some(&at), Some(label)) = (
+                        main.markers.get(letter),
+                        main.labels
+                            .iter()
+                            .find(|l| l.id == format!("label-{letter}")),
+                    ) else {
+                        continue;
+                    };
+                    if frame.distance_to(at) > 0.0 {
+                        continue;
+                    }
+                    let own = label.rect.distance_to(at);
+                    for other in pins.iter().filter(|&&o| o != letter) {
+                        let Some(&q) = main.markers.get(*other) else {
+                            continue;
+                        };
+                        let d = label.rect.distance_to(q);
+                        assert!(
+                            d + 3.0 >= own,
+                            "{figure} l = {rod} r, {degrees}°: {letter}'s letter {own:.1} \
+                             from {letter}, {d:.1} from {other}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

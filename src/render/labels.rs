@@ -67,6 +67,13 @@ impl Bounds {
             && o.min.y <= self.max.y
     }
 
+    /// The distance from the box to the point `p` (0 inside).
+    pub(crate) fn distance_to(&self, p: Point) -> f64 {
+        let dx = (self.min.x - p.x).max(p.x - self.max.x).max(0.0);
+        let dy = (self.min.y - p.y).max(p.y - self.max.y).max(0.0);
+        dx.hypot(dy)
+    }
+
     /// Whether the point `p` lies in the box, edges included.
     pub(crate) fn holds(&self, p: Point) -> bool {
         self.min.x <= p.x && p.x <= self.max.x && self.min.y <= p.y && p.y <= self.max.y

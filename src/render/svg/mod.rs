@@ -50,6 +50,11 @@ const WIDE_REACH: f64 = 2.5;
 /// placed within [`WIDE_REACH`] (about a word space).
 const WIDE_ROOM: f64 = 0.3;
 
+/// How much nearer (page units) another pin may be to a joint's letter
+/// than its own before the letter, inside a detail's frame, is left to
+/// the detail: a letter between two pins is read with the nearer.
+const NEARER: f64 = 3.0;
+
 /// A label waiting to be placed once every line is known.
 struct Pending {
     id: String,
@@ -366,10 +371,14 @@ impl PanelWriter<'_> {
             best
         };
         let colour = self.style.pen(Role::Label).colour;
+        let joints: Vec<Point> = (order.iter())
+            .filter(|p| p.joint)
+            .map(|p| p.anchor)
+            .collect();
         order
             .into_iter()
             .zip(placed)
-            .filter(|(p, at)| !self.left_to_detail(p, at))
+            .filter(|(p, at)| !self.left_to_detail(p, at, &joints))
             .map(|(p, at)| {
                 let text = text_node(
                     &p.id,
@@ -386,11 +395,19 @@ impl PanelWriter<'_> {
     }
 
     /// Whether a label is left out here and to the detail: a joint's
-    /// letter crossed by a line that stays, on the main view, where the
-    /// pin lies inside a detail's frame (the detail enlarges everything
-    /// in its frame and letters the pin there, clear).
-    fn left_to_detail(&self, p: &Pending, at: &Placed) -> bool {
-        p.joint && at.lasting && !self.detail && self.detail_marks.iter().any(|m| m.holds(p.anchor))
+    /// letter on the main view, where the pin lies inside a detail's
+    /// frame (the detail enlarges everything in its frame and letters the
+    /// pin there, clear), that is crossed by a line that stays or stands
+    /// nearer another of the `joints` than its own by more than
+    /// [`NEARER`] (two pins a few units apart, A's letter beyond C).
+    fn left_to_detail(&self, p: &Pending, at: &Placed, joints: &[Point]) -> bool {
+        let own = at.bounds.distance_to(p.anchor);
+        let nearer =
+            || (joints.iter()).any(|&q| q != p.anchor && at.bounds.distance_to(q) + NEARER < own);
+        p.joint
+            && !self.detail
+            && self.detail_marks.iter().any(|m| m.holds(p.anchor))
+            && (at.lasting || nearer())
     }
 
     /// The labels placed in the `order` given, each box added to the
