@@ -221,11 +221,14 @@ impl Obstacles {
 
     /// Puts what was added so far into the R-tree (in one bulk load when
     /// it is empty, which builds a better tree faster than inserting one
-    /// by one), then all of it, in the tree's order, into a grid over
-    /// `region`, where the labels will go (what lies beyond it falls in
-    /// the grid's edge cells), for labels whose boxes' half-sizes are
-    /// `halves`: each place a label tries looks in one bucket of one of
-    /// two grids (a label larger than [`MOST_REACH`], in a few).
+    /// by one) and lists all of it in the tree's order. Beyond [`FEW`]
+    /// obstacles (an animation's frame with its curves) it puts them, in
+    /// that order, into a grid over `region`, where the labels will go
+    /// (what lies beyond it falls in the grid's edge cells), for labels
+    /// whose boxes' half-sizes are `halves`: each place a label tries
+    /// looks in one bucket of one of two grids (a label larger than
+    /// [`MOST_REACH`], in a few). Up to [`FEW`], each label gathers the
+    /// obstacles near it once ([`Obstacles::near`]).
     pub fn build(&mut self, region: &PageRect, halves: &[Vector]) {
         let pending = std::mem::take(&mut self.pending);
         if self.index.size() == 0 {
@@ -240,23 +243,28 @@ impl Obstacles {
             .iter()
             .map(|entry| (envelope(entry), entry.data))
             .collect();
-        let shapes: Vec<Shape> = (self.ordered.iter())
-            .map(|&(b, o)| match o {
-                Obstacle::Segment(i) => self
-                    .segments
-                    .get(i)
-                    .map_or(Shape::Box(b), |&(p, q, _)| Shape::Segment(p, q)),
-                Obstacle::Box(_) => Shape::Box(b),
-            })
-            .collect();
         let reach = |q: usize| {
             let most = Vector::new(quantile(halves, q, 0), quantile(halves, q, 1));
             (most + Vector::new(CLEARANCE, CLEARANCE)).inf(&MOST_REACH)
         };
-        self.grids = [
-            Grid::new(region, reach(3), &shapes),
-            Grid::new(region, reach(4), &shapes),
-        ];
+        // A few obstacles are looked through without a grid ([`FEW`]).
+        self.grids = if self.ordered.len() <= FEW {
+            [Grid::default(), Grid::default()]
+        } else {
+            let shapes: Vec<Shape> = (self.ordered.iter())
+                .map(|&(b, o)| match o {
+                    Obstacle::Segment(i) => self
+                        .segments
+                        .get(i)
+                        .map_or(Shape::Box(b), |&(p, q, _)| Shape::Segment(p, q)),
+                    Obstacle::Box(_) => Shape::Box(b),
+                })
+                .collect();
+            [
+                Grid::new(region, reach(3), &shapes),
+                Grid::new(region, reach(4), &shapes),
+            ]
+        };
     }
 
     /// How many obstacles there are now, to [`Obstacles::rollback`] to.
@@ -321,11 +329,20 @@ impl Obstacles {
             .map(|entry| (envelope(entry), entry.data))
             .filter(|(b, o)| b.meets(within) && anchor.is_none_or(|a| !self.holds(*o, a)))
             .collect();
+        // Few obstacles: those near the label, gathered once for all its
+        // places, in the grid's order (the same sums, term by term).
+        let found = (self.ordered.len() <= FEW).then(|| {
+            (self.ordered.iter())
+                .filter(|(b, o)| b.meets(within) && anchor.is_none_or(|a| !self.holds(*o, a)))
+                .copied()
+                .collect()
+        });
         Near {
             obstacles: self,
             openings: self.openings_strike,
             within: *within,
             anchor,
+            found,
             pending,
             hits: RefCell::new(Vec::new()),
             marks: RefCell::new(vec![0; self.ordered.len().div_ceil(64)]),
@@ -393,6 +410,11 @@ struct Near<'a> {
     within: Bounds,
     /// The point of the letter looked for, whose hollow box it may enter.
     anchor: Option<Point>,
+    /// Where the index holds no more than [`FEW`] obstacles, those of
+    /// them that meet `within`, less the hollow boxes that hold the
+    /// anchor, in the grid's order: each place tried looks through these
+    /// instead of the grid's buckets.
+    found: Option<Vec<(Bounds, Obstacle)>>,
     /// The obstacles added since the index was built that meet `within`,
     /// in the order they were added.
     pending: Vec<(Bounds, Obstacle)>,
@@ -457,21 +479,15 @@ impl Near<'_> {
             }
             ControlFlow::Continue(())
         };
-        let ordered = &self.obstacles.ordered;
-        let grid = self.obstacles.grid(b);
-        let (rows, columns) = grid.cover(b);
-        let flow = if rows.start() == rows.end() && columns.start() == columns.end() {
-            self.look(grid, rows, columns, b, |n| {
-                ordered
-                    .get(n as usize)
-                    .map_or(ControlFlow::Continue(()), &mut add)
-            })
-        } else {
-            let mut hits = self.hits.borrow_mut();
-            self.marked(grid, rows, columns, b, &mut hits);
-            (hits.iter())
-                .filter_map(|&n| ordered.get(n as usize))
-                .try_for_each(&mut add)
+        let flow = match &self.found {
+            Some(found) => (found.iter())
+                .filter(|(bounds, _)| {
+                    #[cfg(test)]
+                    EXAMINED.set(EXAMINED.get() + 1);
+                    bounds.meets(b)
+                })
+                .try_for_each(&mut add),
+            None => self.in_grid(b, &mut add),
         };
         if flow.is_continue() {
             let pending = self.pending.iter().filter(|(bounds, _)| {
@@ -482,6 +498,32 @@ impl Near<'_> {
             let _ = pending.into_iter().try_for_each(&mut add);
         }
         cost
+    }
+
+    /// Calls `add` with each obstacle of the grid whose box meets `b`, in
+    /// the grid's order, until it breaks off: from the one bucket that
+    /// holds all that meets `b`, else from the few `b` covers.
+    fn in_grid(
+        &self,
+        b: &Bounds,
+        add: &mut impl FnMut(&(Bounds, Obstacle)) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        let ordered = &self.obstacles.ordered;
+        let grid = self.obstacles.grid(b);
+        let (rows, columns) = grid.cover(b);
+        if rows.start() == rows.end() && columns.start() == columns.end() {
+            self.look(grid, rows, columns, b, |n| {
+                ordered
+                    .get(n as usize)
+                    .map_or(ControlFlow::Continue(()), &mut *add)
+            })
+        } else {
+            let mut hits = self.hits.borrow_mut();
+            self.marked(grid, rows, columns, b, &mut hits);
+            (hits.iter())
+                .filter_map(|&n| ordered.get(n as usize))
+                .try_for_each(add)
+        }
     }
 
     /// The obstacles of the grid's buckets in `rows` and `columns` whose
@@ -737,6 +779,12 @@ const MOST_REACH: Vector = Vector::new(64.0, 64.0);
 
 /// Room a label keeps from what it avoids, page units.
 const CLEARANCE: f64 = 1.0;
+
+/// Up to this many obstacles, each label gathers those near it once and
+/// its places look through them ([`Obstacles::near`]); beyond, each place
+/// looks in the grid's buckets. A mechanism figure has 100 to 320, an
+/// animation's frame with its whole-turn curves thousands.
+const FEW: usize = 1024;
 
 /// Room a label's box keeps about its glyphs on every side, page units:
 /// the box less this is the ink.
