@@ -290,3 +290,61 @@ fn the_sliders_velocity_keeps_off_the_torque_arrow() {
         }
     }
 }
+
+/// The coupler curves (issue 20): P₁'s oval turned 2 units inside the
+/// guides' lines at the default engine (its half height r/4 against the
+/// block's), so that near its top and bottom it ran along them. No oval
+/// runs more than 40 units within 4 units of a guide's line or on its
+/// hatching (a crossing, even at 15°, runs less).
+#[test]
+fn the_coupler_ovals_do_not_run_along_the_guides() {
+    let engines = [
+        None,
+        Some((1.0, 1.1, 0.08, 110.0)),
+        Some((1.0, 4.0, 0.5, 200.0)),
+    ];
+    for engine in engines {
+        let plate = Plate::read(&svg(FigureName::CouplerCurves, engine, None));
+        let main = &plate.panels[0];
+        let stroke = |id: &str| main.strokes.iter().find(|s| s.id == id);
+        let ends = |s: &plate::Stroke| Rect::around(s.segs.iter().flat_map(|g| [g.0, g.1]));
+        for oval in ["curve-coupler-25", "curve-coupler-50", "curve-coupler-75"] {
+            let segs = &stroke(oval).unwrap().segs;
+            for (guide, hatch) in [
+                ("guide-upper", "hatch-guide-upper"),
+                ("guide-lower", "hatch-guide-lower"),
+            ] {
+                let (Some(line), Some(hatching)) = (stroke(guide), stroke(hatch)) else {
+                    continue;
+                };
+                let (line, hatching) = (ends(line).unwrap(), ends(hatching).unwrap());
+                let band = (
+                    hatching.y0.min(line.y0 - 4.0),
+                    hatching.y1.max(line.y0 + 4.0),
+                );
+                // The oval's length in the band over the guide's stretch,
+                // each piece cut in ten.
+                let along: f64 = segs
+                    .iter()
+                    .flat_map(|g| {
+                        (0..10).map(move |k| {
+                            let at =
+                                |t: f64| (g.0.0 + t * (g.1.0 - g.0.0), g.0.1 + t * (g.1.1 - g.0.1));
+                            (at(f64::from(k) / 10.0), at(f64::from(k + 1) / 10.0))
+                        })
+                    })
+                    .filter(|(p, q)| {
+                        let mid = ((p.0 + q.0) / 2.0, (p.1 + q.1) / 2.0);
+                        (line.x0..=line.x1).contains(&mid.0) && (band.0..=band.1).contains(&mid.1)
+                    })
+                    .map(|(p, q)| distance(p, q))
+                    .sum();
+                println!("{engine:?} {oval} {guide}: {along:.1}");
+                assert!(
+                    along <= 40.0,
+                    "{engine:?}: {oval} runs {along:.1} units along {guide}"
+                );
+            }
+        }
+    }
+}

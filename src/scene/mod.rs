@@ -318,6 +318,10 @@ pub struct Scene {
     /// A world frame the view holds besides what the layers draw
     /// ([`Scene::with_view_holding`]).
     holding: Option<crate::geom::Frame>,
+    /// Where curves drawn on the mechanism turn (world x, and height
+    /// above the line of stroke, negative below), which the guides keep
+    /// clear of ([`Scene::with_guides_clear_of`]).
+    turns: Vec<(f64, f64)>,
 }
 
 /// The poses a series is held over by default: the whole revolution,
@@ -356,6 +360,7 @@ impl Scene {
             tolerance: DEFAULT_TOLERANCE,
             held: None,
             holding: None,
+            turns: Vec::new(),
         }
     }
 
@@ -518,6 +523,27 @@ impl Scene {
         let finite = |p: crate::geom::Point| p.x.is_finite() && p.y.is_finite();
         self.holding = (finite(frame.min()) && finite(frame.max())).then_some(frame);
         self
+    }
+
+    /// The same scene with its guides set clear of curves drawn on the
+    /// mechanism that turn (reach their highest or lowest) at `turns`,
+    /// world x and height above the line of stroke: the coupler curves'
+    /// ovals, whose tops ran along a guide. The channel between the
+    /// guides keeps its height where the turns over the guides' stretch
+    /// are clear of them (or none is finite), else takes the height
+    /// within bounds that stands farthest from every such turn
+    /// ([`draw`]'s `channel_clear_of`).
+    pub(crate) fn with_guides_clear_of(mut self, turns: Vec<(f64, f64)>) -> Self {
+        self.turns = (turns.into_iter())
+            .filter(|(x, y)| x.is_finite() && y.is_finite())
+            .collect();
+        self
+    }
+
+    /// Where curves drawn on the mechanism turn
+    /// ([`Scene::with_guides_clear_of`]).
+    pub(crate) fn turns(&self) -> &[(f64, f64)] {
+        &self.turns
     }
 
     /// The world frame the view holds besides what the layers draw

@@ -120,6 +120,28 @@ fn notes_below(panel: Panel, band: f64) -> (Panel, f64) {
     (Panel::new(panel.id(), r, *panel.transform(), items), end)
 }
 
+/// Where the ovals turn, world x and height above the line of stroke:
+/// P = A + t (B − A) with A on the line of stroke, so P is highest, t
+/// (r − e) above it, with B at the top of the crank circle, and lowest,
+/// t (r + e) below it, with B at the foot.
+fn turns(ctx: &Ctx) -> Vec<(f64, f64)> {
+    let m = ctx.mechanism;
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    // A's distance from the crank centre's perpendicular with B at
+    // (0, ±r): l² = x² + (e ∓ r)².
+    let top = (l * l - (e - r) * (e - r)).sqrt();
+    let foot = (l * l - (e + r) * (e + r)).sqrt();
+    POINTS
+        .iter()
+        .flat_map(|&(t, ..)| {
+            [
+                ((1.0 - t) * top, t * (r - e)),
+                ((1.0 - t) * foot, -t * (r + e)),
+            ]
+        })
+        .collect()
+}
+
 /// The most a narrowed drawing is enlarged by ([`drawing`]).
 const MOST_ENLARGED: f64 = 1.6;
 
@@ -134,7 +156,8 @@ fn drawing(ctx: &Ctx, height: f64) -> Result<Figure> {
     let scene = |height: f64| -> Result<Figure> {
         let scene = ctx
             .scene(page.width(), height)?
-            .with_layers([Layer::Mechanism]);
+            .with_layers([Layer::Mechanism])
+            .with_guides_clear_of(turns(ctx));
         let fitted = scene.page().with_width_fitted();
         match page.fits_width() {
             true => scene.with_page(fitted).figure(),

@@ -23,7 +23,7 @@ use crate::angle::Angle;
 use crate::figure::{
     Align, Figure, Hue, PageFromWorld, PageRect, Panel, Part, RichText, Role, Shape, TextSize,
 };
-use crate::figure::{NOTE_LINE, NOTE_SIZE};
+use crate::figure::{HATCH_DEPTH, NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Frame, Point, Vector};
 use serde_json::{Map, Value, json};
 
@@ -43,6 +43,8 @@ pub(crate) struct Sizes {
     block_room: f64,
     /// The slider's nearest and farthest positions.
     pub travel: (f64, f64),
+    /// The crank's length r.
+    crank: f64,
     /// Page units per world unit of the main view, once a first fit has
     /// found it: then arrows drawn to page lengths are fitted too.
     pub page_scale: Option<f64>,
@@ -75,6 +77,7 @@ impl Sizes {
             block_half_height: 0.2 * r * k,
             block_room: 0.36 * near.max(0.3 * r),
             travel: (near, far),
+            crank: r,
             page_scale: None,
             fitted: None,
         }
@@ -86,14 +89,29 @@ impl Sizes {
     /// where the rod is short). A small crank on a long rod does not make
     /// the block a thin bar: its length follows the slider's distance from
     /// the crank, not the crank.
-    fn on_page(self, scale: f64) -> Self {
+    /// The channel between the guides is moved clear of the `turns` of
+    /// curves drawn on the mechanism (world x and height above the line
+    /// of stroke) that lie over the guides' stretch or within
+    /// [`TURN_REACH`] cranks of it ([`channel_clear_of`]).
+    fn on_page(self, scale: f64, turns: &[(f64, f64)]) -> Self {
         if !(scale.is_finite() && scale > 0.0) {
             return self;
         }
         let room = self.block_room.max(self.block_half_length);
+        let block_half_length = room.min(BLOCK_HALF_LENGTH_MOST / scale);
+        let (x0, x1) = Self {
+            block_half_length,
+            ..self
+        }
+        .guides(self.crank);
+        let reach = TURN_REACH * self.crank;
+        let turns: Vec<f64> = (turns.iter())
+            .filter(|(x, _)| (x0 - reach..=x1 + reach).contains(x))
+            .map(|(_, y)| y.abs() * scale)
+            .collect();
         Self {
-            block_half_length: room.min(BLOCK_HALF_LENGTH_MOST / scale),
-            block_half_height: BLOCK_HALF_HEIGHT / scale,
+            block_half_length,
+            block_half_height: channel_clear_of(&turns) / scale,
             page_scale: Some(scale),
             ..self
         }
@@ -106,6 +124,51 @@ impl Sizes {
             self.travel.1 + self.block_half_length + 0.15 * r,
         )
     }
+}
+
+/// The least and most half height of the channel between the guides,
+/// page units, where it moves clear of a curve's turns.
+const CHANNEL: (f64, f64) = (12.0, 27.0);
+
+/// How far beyond the guides' stretch (in cranks) a curve's turn still
+/// moves the channel: a flat oval runs along a line on either side of
+/// its turn.
+const TURN_REACH: f64 = 0.5;
+
+/// How far (page units) a curve's turn keeps from a guide's line and its
+/// hatching before the channel moves.
+const CLEAR_OF_TURN: f64 = 8.0;
+
+/// The half height (page units) of the channel between the guides: the
+/// block's [`BLOCK_HALF_HEIGHT`] where every turn of a curve drawn on the
+/// mechanism (`turns`: page distances from the line of stroke) keeps
+/// [`CLEAR_OF_TURN`] from the guide on its side, line and hatching;
+/// else the height within [`CHANNEL`], in half units, that leaves the
+/// nearest turn farthest off (the first of equals). A turn on a guide
+/// or its hatching is a curve running along it, which no reader tells
+/// from the guide.
+fn channel_clear_of(turns: &[f64]) -> f64 {
+    let clearance = |h: f64| {
+        let off = |t: f64| {
+            if t < h {
+                h - t
+            } else {
+                (t - h - HATCH_DEPTH).max(0.0)
+            }
+        };
+        turns.iter().map(|&t| off(t)).fold(f64::INFINITY, f64::min)
+    };
+    if clearance(BLOCK_HALF_HEIGHT) >= CLEAR_OF_TURN {
+        return BLOCK_HALF_HEIGHT;
+    }
+    let steps = (2.0 * (CHANNEL.1 - CHANNEL.0)) as u32;
+    (0..=steps)
+        .map(|k| CHANNEL.0 + 0.5 * f64::from(k))
+        .fold((BLOCK_HALF_HEIGHT, f64::NEG_INFINITY), |best, h| {
+            let c = clearance(h);
+            if c > best.1 { (h, c) } else { best }
+        })
+        .0
 }
 
 /// An arrow drawn with its name: its id and name, tail and head, and
@@ -308,7 +371,7 @@ fn fit(ctx: &LayerCtx, band: f64) -> Layout {
     // of a per cent of the last.
     for _ in 0..FITS - 1 {
         let (_, fit) = main_view(&ctx, band, fit::frame(&ctx));
-        ctx.sizes = ctx.sizes.on_page(fit.scale());
+        ctx.sizes = ctx.sizes.on_page(fit.scale(), ctx.scene.turns());
     }
     let page = ctx.scene.page();
     let width = page.width() - 2.0 * page.margin();
@@ -379,7 +442,7 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
     };
     for _ in 0..FITS - 1 {
         let (_, fit) = main_view(&ctxs[0], band, union(&ctxs));
-        let sizes = ctxs[0].sizes.on_page(fit.scale());
+        let sizes = ctxs[0].sizes.on_page(fit.scale(), scene.turns());
         for c in &mut ctxs {
             c.sizes = sizes;
         }
