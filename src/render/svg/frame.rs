@@ -89,7 +89,7 @@ impl PanelWriter<'_> {
             },
             strokes,
         };
-        let node = hatching.written(&[]);
+        let node = hatching.written(&[], &[]);
         self.hatchings.push(hatching);
         node
     }

@@ -1,8 +1,11 @@
-//! Hatching opened for letters: as a draughtsman interrupts hatching where
-//! an inscription cannot be set outside it, a hatch stroke that a placed
-//! letter's box meets is left out. The label search still treats the
-//! hatching as heavily as a link, so a letter lands on it only where every
-//! place near its point is crowded.
+//! Hatching opened for letters and lines: as a draughtsman interrupts
+//! hatching where an inscription cannot be set outside it, a hatch stroke
+//! that a placed letter's box meets is left out; and so is one that a
+//! construction line crosses or passes within [`ROOM`] of, so that a thin
+//! line run across a guide (Fig. 67's HA, at a slant) reads as a line and
+//! not as one more stroke. The label search still treats the hatching as
+//! heavily as a link, so a letter lands on it only where every place near
+//! its point is crowded.
 
 use super::Ink;
 use super::markup::{path, pt};
@@ -26,22 +29,43 @@ pub(super) struct Hatching {
 }
 
 impl Hatching {
-    /// The strokes that meet none of the `boxes` (each grown by [`ROOM`]),
-    /// as one path; `None` when every stroke is covered.
-    pub fn written(&self, boxes: &[Bounds]) -> Option<Element> {
+    /// The strokes that meet none of the `boxes` (each grown by [`ROOM`])
+    /// and keep [`ROOM`] from every one of the `crossing` lines (page
+    /// segments), as one path; `None` when every stroke is covered.
+    pub fn written(&self, boxes: &[Bounds], crossing: &[(Point, Point)]) -> Option<Element> {
         let ink = Ink {
             id: &self.id,
             role: self.role,
             pen: self.pen,
             part: Part::Plain,
         };
-        let d = kept(&self.strokes, boxes).fold(String::new(), |mut d, (p, q)| {
+        let clear = |s: &&(Point, Point)| crossing.iter().all(|c| apart(**s, *c, ROOM));
+        let d = (kept(&self.strokes, boxes).filter(clear)).fold(String::new(), |mut d, (p, q)| {
             let sep = if d.is_empty() { "" } else { " " };
             let _ = write!(d, "{sep}M{} L{}", pt(*p), pt(*q));
             d
         });
         (!d.is_empty()).then(|| ink.tag(path(d, self.pen)))
     }
+}
+
+/// Whether the segments `s` and `t` keep more than `room` apart: they do
+/// not cross, and no end of one comes within `room` of the other.
+fn apart(s: (Point, Point), t: (Point, Point), room: f64) -> bool {
+    let cross = |a: Vector, b: Vector| a.x * b.y - a.y * b.x;
+    let side = |(p, q): (Point, Point), x: Point| cross(q - p, x - p);
+    let crosses = side(s, t.0) * side(s, t.1) < 0.0 && side(t, s.0) * side(t, s.1) < 0.0;
+    let near = |(p, q): (Point, Point), x: Point| {
+        let d = q - p;
+        let len = d.norm_squared();
+        let k = if len > 0.0 {
+            ((x - p).dot(&d) / len).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        (p + d * k - x).norm() <= room
+    };
+    !crosses && !near(s, t.0) && !near(s, t.1) && !near(t, s.0) && !near(t, s.1)
 }
 
 /// The strokes that meet none of the boxes grown by [`ROOM`].
@@ -64,6 +88,44 @@ fn kept<'a>(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn strokes_a_line_crosses_are_left_out_and_only_those() {
+        let strokes: Vec<(Point, Point)> = (0..10)
+            .map(|k| {
+                let x = 6.0 * f64::from(k);
+                (Point::new(x, 0.0), Point::new(x - 5.2, 6.5))
+            })
+            .collect();
+        let hatching = Hatching {
+            node: 0,
+            id: "hatch".into(),
+            role: Role::Frame,
+            pen: Pen {
+                colour: "#000000",
+                width: 1.0,
+                dash: None,
+            },
+            strokes,
+        };
+        // A slanting line across the band from (10, -2) to (40, 9).
+        let line = (Point::new(10.0, -2.0), Point::new(40.0, 9.0));
+        let all = hatching.written(&[], &[]).map(|e| e.to_string()).unwrap();
+        let some = hatching
+            .written(&[], &[line])
+            .map(|e| e.to_string())
+            .unwrap();
+        assert_eq!(all.matches('M').count(), 10);
+        let kept = some.matches('M').count();
+        assert!((4..10).contains(&kept), "{kept} strokes kept: {some}");
+        // The strokes starting at x = 0 and 54 lie far off the line.
+        assert!(some.contains("M0 0") && some.contains("M54 0"), "{some}");
+        assert!(apart(strokes_at(0.0), line, ROOM) && !apart(strokes_at(24.0), line, ROOM));
+    }
+
+    fn strokes_at(x: f64) -> (Point, Point) {
+        (Point::new(x, 0.0), Point::new(x - 5.2, 6.5))
+    }
 
     #[test]
     fn a_stroke_under_a_letter_is_left_out_and_only_that_one() {

@@ -5,7 +5,7 @@ use super::markup::{
     arc_beziers, arrow_head, bezier_d, finite, path, polyline_d, pt, stroke, unit,
 };
 use super::{Ink, PanelWriter, centre};
-use crate::figure::{Part, Path, PathSegment};
+use crate::figure::{Part, Path, PathSegment, Role};
 use crate::geom::Point;
 use crate::number::fmt;
 use crate::render::Element;
@@ -62,6 +62,13 @@ impl PanelWriter<'_> {
             return None;
         }
         self.obstacles.polyline(&pts);
+        if matches!(
+            ink.role,
+            Role::Construction | Role::Result | Role::Auxiliary
+        ) {
+            self.crossing
+                .extend(pts.iter().zip(pts.iter().skip(1)).map(|(p, q)| (*p, *q)));
+        }
         if closed && let (Some(&last), Some(&first)) = (pts.last(), pts.first()) {
             self.obstacles.segment(last, first);
         }

@@ -113,6 +113,9 @@ struct PanelWriter<'a> {
     /// The page boxes of the detail marks drawn (a detail's frame on the
     /// main view, its border).
     detail_marks: Vec<Bounds>,
+    /// The straight pieces of the construction, result and auxiliary lines drawn
+    /// (page points), which the hatching is broken for.
+    crossing: Vec<(Point, Point)>,
 }
 
 impl PanelWriter<'_> {
@@ -250,6 +253,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
         angle_radii: Vec::new(),
         detail: panel.is_clipped(),
         detail_marks: Vec::new(),
+        crossing: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -283,7 +287,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
     // A hatching every stroke of which lies under letters is left empty.
     for hatching in &w.hatchings {
         if let Some(node) = nodes.get_mut(hatching.node) {
-            *node = match hatching.written(&boxes) {
+            *node = match hatching.written(&boxes, &w.crossing) {
                 Some(p) => p,
                 None => Element::new("g"),
             };
