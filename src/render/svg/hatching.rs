@@ -91,12 +91,7 @@ mod tests {
 
     #[test]
     fn strokes_a_line_crosses_are_left_out_and_only_those() {
-        let strokes: Vec<(Point, Point)> = (0..10)
-            .map(|k| {
-                let x = 6.0 * f64::from(k);
-                (Point::new(x, 0.0), Point::new(x - 5.2, 6.5))
-            })
-            .collect();
+        let strokes = band();
         let hatching = Hatching {
             node: 0,
             id: "hatch".into(),
@@ -123,18 +118,19 @@ mod tests {
         assert!(apart(strokes_at(0.0), line, ROOM) && !apart(strokes_at(24.0), line, ROOM));
     }
 
+    /// A hatch stroke from `x` on the guide's line, at 6 units' spacing.
     fn strokes_at(x: f64) -> (Point, Point) {
         (Point::new(x, 0.0), Point::new(x - 5.2, 6.5))
     }
 
+    /// Ten strokes from x = 0 to 54.
+    fn band() -> Vec<(Point, Point)> {
+        (0..10).map(|k| strokes_at(6.0 * f64::from(k))).collect()
+    }
+
     #[test]
     fn a_stroke_under_a_letter_is_left_out_and_only_that_one() {
-        let strokes: Vec<(Point, Point)> = (0..10)
-            .map(|k| {
-                let x = 6.0 * f64::from(k);
-                (Point::new(x, 0.0), Point::new(x - 5.2, 6.5))
-            })
-            .collect();
+        let strokes = band();
         let letter = Bounds::around(Point::new(24.0, 10.0), Vector::new(4.0, 5.0));
         let boxes = [letter];
         let left: Vec<_> = kept(&strokes, &boxes).collect();
