@@ -46,7 +46,7 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     let s = &ctx.sizes;
-    let (g0, g1) = s.guides(r);
+    let (g0, g1) = s.guides();
     let mut b = Bounds {
         min: Point::new(-r, -r),
         max: Point::new(r, r),

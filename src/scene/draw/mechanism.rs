@@ -97,7 +97,7 @@ fn pieces(whole: Span, mut openings: Vec<Span>) -> Vec<Span> {
 fn guides(ctx: &LayerCtx, canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let e = m.offset();
-    let whole = ctx.sizes.guides(m.crank());
+    let whole = ctx.sizes.guides();
     let h = ctx.sizes.block_half_height;
     for (name, y, side) in [("upper", e + h, 1.0), ("lower", e - h, -1.0)] {
         let drawn: Vec<Span> = pieces(whole, openings(ctx, canvas, y, side, false))
@@ -141,7 +141,7 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
     let pose = ctx.main.pose();
     let (c, b, a) = (pose.c(), pose.b(), pose.a());
     let s = &ctx.sizes;
-    let (g0, g1) = s.guides(r);
+    let (g0, g1) = s.guides();
     let h = s.block_half_height;
 
     // The line of stroke (a centre line) and the crank-pin circle.

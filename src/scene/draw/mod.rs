@@ -103,7 +103,7 @@ impl Sizes {
             block_half_length,
             ..self
         }
-        .guides(self.crank);
+        .guides();
         let reach = TURN_REACH * self.crank;
         let turns: Vec<f64> = (turns.iter())
             .filter(|(x, _)| (x0 - reach..=x1 + reach).contains(x))
@@ -117,8 +117,10 @@ impl Sizes {
         }
     }
 
-    /// Ends of the guides along x.
-    pub fn guides(&self, r: f64) -> (f64, f64) {
+    /// Ends of the guides along x: the block's whole travel and 0.15 r
+    /// beyond.
+    pub fn guides(&self) -> (f64, f64) {
+        let r = self.crank;
         (
             self.travel.0 - self.block_half_length - 0.15 * r,
             self.travel.1 + self.block_half_length + 0.15 * r,

@@ -15,9 +15,9 @@ const MIN_ARROW: f64 = 14.0;
 /// hatching).
 const VP_CLEAR: f64 = 18.0;
 /// Radius about the crank centre, page units, that v_p keeps out of: the
-/// torque's turning arrow ([`super::torque`]'s radius and the room for
-/// its head) or ω's, with a few units between.
-const CRANK_KEEP: f64 = 50.0;
+/// torque's turning arrow with the room for its head (ω's, at
+/// [`OMEGA_RADIUS`], lies within it), and a few units between.
+const CRANK_KEEP: f64 = super::torque::TORQUE_REACH + 6.0;
 /// Radius of the ω arrow about the crank centre, page units.
 const OMEGA_RADIUS: f64 = 40.0;
 /// Radius of the Ω arrow about the rod's middle, page units.

@@ -21,6 +21,9 @@ const TORQUE_SWEEP: f64 = 4.4;
 /// Room kept between the torque arc and the slider's block, page units
 /// (an arrowhead's length).
 const ARROW_ROOM: f64 = 8.0;
+/// How far from the crank centre the torque arrow reaches with the room
+/// for its head, page units: what the slider's arrows keep out of.
+pub(super) const TORQUE_REACH: f64 = TORQUE_RADIUS + ARROW_ROOM;
 
 /// The values the figure names by symbol only, for the notes below it:
 /// OM and T, then the forces (or why there is no finite slider force).
@@ -110,7 +113,7 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         let s = &ctx.sizes;
         let ca = a - c;
         let block = s.block_half_length.hypot(s.block_half_height);
-        let near = ca.norm() - block < canvas.world(TORQUE_RADIUS + ARROW_ROOM);
+        let near = ca.norm() - block < canvas.world(TORQUE_REACH);
         let gap = near.then(|| ca.y.atan2(ca.x));
         let radius = canvas.world(TORQUE_RADIUS);
         for item in torque_arrow(c, scene.torque(), radius, gap) {
@@ -258,7 +261,7 @@ pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArr
         // An arrow from the block towards the crank centre that would
         // reach its bearing and torque arrow (a short rod near the inner
         // dead centre) pushes on the block's far face instead.
-        let reach = s.block_half_length + length + world(TORQUE_RADIUS + ARROW_ROOM);
+        let reach = s.block_half_length + length + world(TORQUE_REACH);
         let (from, to) = if sign * (c.x - a.x) > 0.0 && (c.x - a.x).abs() < reach {
             let back = a - ux * s.block_half_length;
             (back - ux * length, back)
