@@ -1,7 +1,8 @@
 //! The plate check (issue 8): every mechanism figure, over a sweep of poses
 //! and mechanisms, read back from its SVG alone and held to five rules:
 //! links clear of the guides, labels clear of each other and of the lines,
-//! each point's letter near its point, nothing off the page, and the
+//! each point's letter near its point and not nearer another, nothing off
+//! the page, and the
 //! acceleration constructions of Figs. 65–67 large enough to read in some
 //! panel. Below the sweep, hand-written plates prove each rule can fail.
 
@@ -37,6 +38,10 @@ const RULE_ON_GUIDES: &str = "1b block on its guides";
 const RULE_OVERLAP: &str = "2a labels apart";
 const RULE_LINES: &str = "2b lines clear of labels";
 const RULE_NEAR: &str = "3 letter near its point";
+const RULE_NEARER: &str = "3b letter nearest its own point";
+/// How much nearer (px) another point may be to a letter's glyphs than
+/// its own.
+const NEARER: f64 = 3.0;
 const RULE_PAGE: &str = "4 inside the page";
 const RULE_SPREAD: &str = "5 construction readable";
 const RULE_TEXTS: &str = "6 texts apart";
@@ -381,6 +386,45 @@ fn labels_far(plate: &Plate) -> Vec<Failure> {
     out
 }
 
+/// Rule 3b: a point's letter is not nearer another point's marker than
+/// its own by more than [`NEARER`] (a letter is read with the nearer),
+/// save a point within an em of its own (the two read as one place) or
+/// one outside the slider's block that holds the letter with its pin.
+fn labels_nearer_another(plate: &Plate) -> Vec<Failure> {
+    let mut out = Vec::new();
+    for panel in &plate.panels {
+        for (letter, &at) in &panel.markers {
+            let id = format!("{}label-{letter}", panel.prefix);
+            let Some(label) = panel.labels.iter().find(|l| l.id == id) else {
+                continue;
+            };
+            let own = label.rect.distance_to(at);
+            let block = block_holding(panel, &label.rect, at);
+            for (other, &q) in &panel.markers {
+                let d = label.rect.distance_to(q);
+                let apart = (q.0 - at.0).hypot(q.1 - at.1);
+                let walled = block.is_some_and(|b| b.distance_to(q) > 0.0);
+                if other != letter && d + NEARER < own && apart > label.font_size && !walled {
+                    out.push(fail(
+                        RULE_NEARER,
+                        format!("{id} {own:.1} px from its point, {d:.1} from {other}"),
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The slider's block in `panel` where it holds both the letter's box
+/// `rect` and its point `at`: the block walls the letter in with its pin.
+fn block_holding(panel: &Panel, rect: &Rect, at: (f64, f64)) -> Option<Rect> {
+    let id = format!("{}block-slider", panel.prefix);
+    let block = panel.strokes.iter().find(|s| s.id == id)?;
+    let r = Rect::around(block.segs.iter().flat_map(|g| [g.0, g.1]))?;
+    (r.contains(rect) && r.distance_to(at) == 0.0).then_some(r)
+}
+
 /// Whether the point `letter` at `at` on the main view `panel` is left
 /// to the detail: it has no letter there, it lies inside the detail's
 /// frame, and the detail panel draws it with its letter.
@@ -482,6 +526,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
     out.extend(labels_overlap(plate));
     out.extend(lines_through_labels(plate));
     out.extend(labels_far(plate));
+    out.extend(labels_nearer_another(plate));
     out.extend(off_page(plate));
     if spread {
         out.extend(construction_small(plate));
@@ -1037,6 +1082,38 @@ fn hatching_through_a_note_is_caught_and_the_line_of_stroke_is_not() {
 fn a_letter_far_from_its_point_is_caught() {
     let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="230""#);
     assert_eq!(rules(&page(&body, NOTE, WIDE_POINTS), true), [RULE_NEAR]);
+}
+
+/// A dot D at (60, `y`) below A's letter, lettered to its right.
+fn dot_d_below_a_s_letter(y: f64) -> String {
+    let dot = format!(
+        r##"<circle id="point-D" class="construction" cx="60" cy="{y}" r="2" fill="#000"/>
+<text id="label-D" class="label" x="76" y="{}" font-size="17" text-anchor="middle">D</text>"##,
+        y + 6.0
+    );
+    page(
+        &(mechanism_with_guide_to(CLEAN_MECHANISM_END) + &dot),
+        NOTE,
+        WIDE_POINTS,
+    )
+}
+
+#[test]
+fn a_letter_nearer_another_point_than_its_own_is_caught() {
+    // A's letter (glyphs about y 173 to 185) is 22 px from A, 10 from D.
+    assert_eq!(rules(&dot_d_below_a_s_letter(195.0), true), [RULE_NEARER]);
+    // D far below: A's letter is nearer A.
+    assert_eq!(rules(&dot_d_below_a_s_letter(240.0), true), [] as [&str; 0]);
+}
+
+#[test]
+fn a_letter_between_two_points_an_em_apart_reads_with_the_pair() {
+    // D 16 px from A (under an em of 17): the two read as one place.
+    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="176""#);
+    let dot = r##"<circle id="point-D" class="construction" cx="60" cy="166" r="2" fill="#000"/>
+<text id="label-D" class="label" x="40" y="172" font-size="17" text-anchor="middle">D</text>"##;
+    let plate = Plate::read(&page(&(body + dot), NOTE, WIDE_POINTS));
+    assert!(labels_nearer_another(&plate).is_empty());
 }
 
 #[test]

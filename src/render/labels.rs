@@ -696,7 +696,38 @@ pub(crate) fn place(
     obstacles: &Obstacles,
     page: &PageRect,
 ) -> (Point, f64) {
-    place_toward(anchor, half, gap, reach, None, obstacles, page)
+    place_toward(anchor, half, gap, reach, Steer::default(), obstacles, page)
+}
+
+/// What steers a letter's place besides what it keeps clear of.
+#[derive(Debug, Default, Clone, Copy)]
+pub(crate) struct Steer<'a> {
+    /// The unit page direction tried first (an angle's bisector).
+    pub toward: Option<Vector>,
+    /// The other lettered points a place should not stand nearer to than
+    /// to its own ([`AMBIGUOUS`]); empty for a label that names no point
+    /// or where no other point is near.
+    pub others: &'a [Point],
+}
+
+/// How much nearer (page units) another point may be to a letter's box
+/// (its glyphs and the room about them) than its own before the letter
+/// reads as the other's: 2, a unit inside the 3 a reader (and the plate
+/// check, on the glyphs alone) allows, for the room and the corners.
+pub(crate) const NEARER: f64 = 2.0;
+
+/// What a place costs more whose box stands nearer another lettered
+/// point than its own by more than [`NEARER`]: as much as glyphs struck
+/// ([`STRUCK`]), a letter read as another point's being as wrong as one
+/// crossed out; so such a letter is placed again first, as a struck one
+/// is, and any clear place within reach beats it.
+const AMBIGUOUS: f64 = STRUCK;
+
+/// Whether `b` stands nearer one of `others` than `anchor` by more than
+/// [`NEARER`].
+fn nearer_another(b: &Bounds, anchor: Point, others: &[Point]) -> bool {
+    let own = b.distance_to(anchor);
+    others.iter().any(|&q| b.distance_to(q) + NEARER < own)
 }
 
 /// [`place`], trying first the unit page direction `toward` (an angle's
@@ -708,10 +739,11 @@ pub(crate) fn place_toward(
     half: Vector,
     gap: f64,
     reach: f64,
-    toward: Option<Vector>,
+    steer: Steer<'_>,
     obstacles: &Obstacles,
     page: &PageRect,
 ) -> (Point, f64) {
+    let Steer { toward, others } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
     // `reach`): the labels placed so far are sorted out once.
@@ -719,6 +751,10 @@ pub(crate) fn place_toward(
     let out = gap.max(reach) + last_ring + NOOK_STEP + 2.0 * (half.x + half.y);
     let within = Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
     let near = obstacles.near(&within, Some(anchor));
+    let others: Vec<Point> = (others.iter())
+        .filter(|&&q| within.holds(q) && q != anchor)
+        .copied()
+        .collect();
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
@@ -740,6 +776,9 @@ pub(crate) fn place_toward(
         }
         if !b.inside(page) {
             cost += 1e6;
+        }
+        if nearer_another(&b, anchor, &others) {
+            cost += AMBIGUOUS;
         }
         if cost + penalty < best.0 {
             *best = (cost + penalty, cost, centre);
@@ -879,6 +918,27 @@ mod tests {
         // A point outside keeps its letter out of the block.
         let (outside, _) = place(Point::new(265.0, 200.0), half, 4.0, 22.0, &o, &page);
         assert_eq!(block.overlap(&Bounds::around(outside, half)), 0.0);
+    }
+
+    #[test]
+    fn a_letter_keeps_nearer_its_own_point_than_another() {
+        let page = PageRect::new(0.0, 0.0, 200.0, 200.0);
+        let (half, own) = (Vector::new(6.0, 7.0), Point::new(100.0, 100.0));
+        // Another point 18 units above-right, where the first direction
+        // tried (above-right) would put the letter.
+        let other = Point::new(113.0, 87.0);
+        let o = Obstacles::default();
+        let free = place(own, half, 4.0, 22.0, &o, &page).0;
+        assert!(nearer_another(&Bounds::around(free, half), own, &[other]));
+        let steer = Steer {
+            toward: None,
+            others: &[other],
+        };
+        let (at, cost) = place_toward(own, half, 4.0, 22.0, steer, &o, &page);
+        let b = Bounds::around(at, half);
+        assert!(!nearer_another(&b, own, &[other]), "{at:?}");
+        assert_eq!(cost, 0.0);
+        assert!(b.distance_to(own) <= 22.0);
     }
 
     #[test]

@@ -23,7 +23,7 @@ mod options;
 mod points;
 mod text;
 
-use super::labels::{Bounds, Obstacles, ROOM, STRUCK, place_toward};
+use super::labels::{Bounds, NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
 use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, Part, RichText, Role, Shape,
 };
@@ -49,11 +49,6 @@ const WIDE_REACH: f64 = 2.5;
 /// The room, in font sizes, kept on either side of a name or a value
 /// placed within [`WIDE_REACH`] (about a word space).
 const WIDE_ROOM: f64 = 0.3;
-
-/// How much nearer (page units) another pin may be to a joint's letter
-/// than its own before the letter, inside a detail's frame, is left to
-/// the detail: a letter between two pins is read with the nearer.
-const NEARER: f64 = 3.0;
 
 /// A label waiting to be placed once every line is known.
 struct Pending {
@@ -116,6 +111,9 @@ struct PanelWriter<'a> {
     /// The straight pieces of the construction, result and auxiliary lines drawn
     /// (page points), which the hatching is broken for.
     crossing: Vec<(Point, Point)>,
+    /// The page centres of the pins and constructed points drawn, which
+    /// a point's letter keeps nearer its own than.
+    points: Vec<Point>,
 }
 
 impl PanelWriter<'_> {
@@ -254,6 +252,7 @@ fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Elem
         detail: panel.is_clipped(),
         detail_marks: Vec::new(),
         crossing: Vec::new(),
+        points: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -382,7 +381,10 @@ impl PanelWriter<'_> {
         order
             .into_iter()
             .zip(placed)
-            .filter(|(p, at)| !self.left_to_detail(p, at, &joints))
+            .filter(|(p, at)| {
+                let others = self.others(p, &self.points);
+                !self.left_to_detail(p, at, (joints.iter()).chain(&others))
+            })
             .map(|(p, at)| {
                 let text = text_node(
                     &p.id,
@@ -402,12 +404,17 @@ impl PanelWriter<'_> {
     /// letter on the main view, where the pin lies inside a detail's
     /// frame (the detail enlarges everything in its frame and letters the
     /// pin there, clear), that is crossed by a line that stays or stands
-    /// nearer another of the `joints` than its own by more than
-    /// [`NEARER`] (two pins a few units apart, A's letter beyond C).
-    fn left_to_detail(&self, p: &Pending, at: &Placed, joints: &[Point]) -> bool {
+    /// nearer another of the `near` points (the other joints, the points
+    /// drawn over an em away) than its own by more than [`NEARER`] (two
+    /// pins a few units apart, A's letter beyond C).
+    fn left_to_detail<'p>(
+        &self,
+        p: &Pending,
+        at: &Placed,
+        mut near: impl Iterator<Item = &'p Point>,
+    ) -> bool {
         let own = at.bounds.distance_to(p.anchor);
-        let nearer =
-            || (joints.iter()).any(|&q| q != p.anchor && at.bounds.distance_to(q) + NEARER < own);
+        let mut nearer = || near.any(|&q| q != p.anchor && at.bounds.distance_to(q) + NEARER < own);
         p.joint
             && !self.detail
             && self.detail_marks.iter().any(|m| m.holds(p.anchor))
@@ -417,9 +424,11 @@ impl PanelWriter<'_> {
     /// The labels placed in the `order` given, each box added to the
     /// obstacles as it is placed.
     fn placing(&mut self, order: &[&Pending], room: &PageRect) -> Vec<Placed> {
-        order
+        let points = std::mem::take(&mut self.points);
+        let placed = order
             .iter()
             .map(|p| {
+                let others = self.others(p, &points);
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
@@ -429,7 +438,10 @@ impl PanelWriter<'_> {
                         half,
                         p.gap,
                         reach,
-                        p.toward,
+                        Steer {
+                            toward: p.toward,
+                            others: &others,
+                        },
                         &self.obstacles,
                         room,
                     )
@@ -463,6 +475,22 @@ impl PanelWriter<'_> {
                     lasting,
                 }
             })
+            .collect();
+        self.points = points;
+        placed
+    }
+
+    /// The points a label's place keeps farther from than from its own:
+    /// for a point's letter, every other point drawn more than an em
+    /// from it (nearer, the two are read as one place, and their letters
+    /// as a pair); for any other label, none.
+    fn others(&self, p: &Pending, points: &[Point]) -> Vec<Point> {
+        if !p.letter || !points.contains(&p.anchor) {
+            return Vec::new();
+        }
+        (points.iter())
+            .filter(|q| (**q - p.anchor).norm() > p.size)
+            .copied()
             .collect()
     }
 }

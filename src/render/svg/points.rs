@@ -20,6 +20,7 @@ impl PanelWriter<'_> {
         }
         self.obstacles
             .boxed(Bounds::around(c, Vector::new(radius, radius)));
+        self.points.push(c);
         Some(
             ink.tag(Element::new("circle"))
                 .set("cx", fmt(c.x))
