@@ -23,14 +23,24 @@ const TOUCH: f64 = 0.5;
 const GLYPH_SLACK: f64 = 0.5;
 /// A point's letter lies within this many font sizes of its point.
 const REACH_EM: f64 = 1.5;
+/// Or within this many, with a leader to its point.
+const LEADER_EM: f64 = 2.5;
 /// Ink may reach this far (px) past the page edge.
 const PAGE_SLACK: f64 = 0.5;
 /// The least extent (px) of B, C, E, F, G in some panel of Figs. 65–67.
 const SPREAD: f64 = 150.0;
 /// Classes of the lines labels keep clear of (the frame: guides, their
-/// hatching, bearings; not the line of stroke, a centre line that opens
-/// for a letter).
-const LINE_CLASSES: [&str; 4] = ["link", "construction", "auxiliary", "frame"];
+/// hatching, bearings; the curves and results; a letter's leader; not
+/// the line of stroke, a centre line that opens for a letter).
+const LINE_CLASSES: [&str; 7] = [
+    "link",
+    "construction",
+    "auxiliary",
+    "frame",
+    "curve",
+    "result",
+    "leader",
+];
 
 const RULE_BUILD: &str = "0 figure builds";
 const RULE_GUIDES: &str = "1 links clear of guides";
@@ -375,7 +385,7 @@ fn labels_far(plate: &Plate) -> Vec<Failure> {
                 continue;
             };
             let (d, reach) = (label.rect.distance_to(at), REACH_EM * label.font_size);
-            if d > reach {
+            if d > reach && !led(panel, label, letter, at) {
                 out.push(fail(
                     RULE_NEAR,
                     format!("{id} {d:.1} px from its point (≤ {reach:.1})"),
@@ -414,6 +424,24 @@ fn labels_nearer_another(plate: &Plate) -> Vec<Failure> {
         }
     }
     out
+}
+
+/// Whether a leader (`leader-X`) runs from the letter's glyph box (within
+/// 1.5 px) to its point (stopping within 7 px of it) and the letter
+/// stands within [`LEADER_EM`] of the point.
+fn led(panel: &Panel, label: &Label, letter: &str, at: (f64, f64)) -> bool {
+    let id = format!("{}leader-{letter}", panel.prefix);
+    let Some(leader) = panel.strokes.iter().find(|s| s.id == id) else {
+        return false;
+    };
+    let near = |p: (f64, f64), q: (f64, f64), d: f64| (p.0 - q.0).hypot(p.1 - q.1) <= d;
+    let ends = leader.segs.first().zip(leader.segs.last());
+    ends.is_some_and(|(first, last)| {
+        let (a, b) = (first.0, last.1);
+        label.rect.distance_to(a) <= 1.5
+            && near(b, at, 7.0)
+            && label.rect.distance_to(at) <= LEADER_EM * label.font_size
+    })
 }
 
 /// The slider's block in `panel` where it holds both the letter's box
@@ -1961,4 +1989,42 @@ fn a_pin_s_letter_nearer_another_pin_is_left_to_the_detail() {
             }
         }
     }
+}
+
+#[test]
+fn a_letter_crossed_within_reach_goes_farther_out_with_a_leader() {
+    // Coupler curves at l = 1.1 r, e = 0.08 r, 1° past the outer dead
+    // centre: P₃'s dot lies among its own oval, P₂'s, the guide and B;
+    // every place within a letter's reach was crossed by a curve (P₃'s
+    // letter sat on its own oval). It now stands clear, farther out, a
+    // leader from it to the dot.
+    let degrees = 1.0
+        + SliderCrank::new(1.0, 1.1, 0.08)
+            .unwrap()
+            .outer_dead_centre()
+            .degrees();
+    let plate = plate_at("coupler-curves", 1.1, 0.08, degrees);
+    let main = &plate.panels[0];
+    let label = main.labels.iter().find(|l| l.id == "label-P3").unwrap();
+    let at = main.markers["P3"];
+    assert!(label.rect.distance_to(at) > REACH_EM * label.font_size);
+    assert!(draws(main, "leader-P3"));
+    assert!(led(main, label, "P3", at));
+    assert_eq!(check(&plate, false), [], "coupler curves at {degrees}°");
+}
+
+#[test]
+fn a_far_letter_is_taken_only_with_a_leader_that_reaches_its_point() {
+    // A's letter 37 px below A (within 2.5 em): caught alone, taken with
+    // a leader from its glyphs to A, caught again with one stopping 20
+    // px short of A.
+    let far = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="199""#);
+    assert_eq!(rules(&page(&far, NOTE, WIDE_POINTS), true), [RULE_NEAR]);
+    let leader = |end: f64| {
+        format!(r##"<path id="leader-A" class="leader" d="M60 186.5 L60 {end}" stroke="#000"/>"##)
+    };
+    let led = far.clone() + &leader(157.0);
+    assert_eq!(rules(&page(&led, NOTE, WIDE_POINTS), true), [] as [&str; 0]);
+    let short = far + &leader(170.0);
+    assert_eq!(rules(&page(&short, NOTE, WIDE_POINTS), true), [RULE_NEAR]);
 }

@@ -43,8 +43,10 @@ use text::{ink_box, starts_italic, text_node};
 const REACH: f64 = 1.3;
 
 /// How far, in font sizes, a name or a value (not a point's letter) looks
-/// for a clear place when none within [`REACH`] is.
-const WIDE_REACH: f64 = 2.5;
+/// for a clear place when none within [`REACH`] is: first within 2.5 em,
+/// then within 4 (a value names what it gives, "l = 1.05 r", and reads
+/// from farther off than a letter, but not from anywhere).
+const WIDE_REACH: [f64; 2] = [2.5, 4.0];
 
 /// The room, in font sizes, kept on either side of a name or a value
 /// placed within [`WIDE_REACH`] (about a word space).
@@ -66,6 +68,16 @@ struct Pending {
     /// Whether it is a joint's letter (a pin of the mechanism), which a
     /// detail whose frame holds the pin letters too.
     joint: bool,
+}
+
+impl Pending {
+    /// Whether the label says what it marks, and so may stand farther
+    /// from it than a letter ([`WIDE_REACH`]): a name or a value, or a
+    /// letter with words ("D at ∞" at an arrow towards a point off the
+    /// page); not a letter alone, read with what is nearest.
+    fn names_itself(&self) -> bool {
+        !self.letter || self.text.plain().contains(' ')
+    }
 }
 
 /// What an item's symbol is written with: its id, its role (the class)
@@ -385,19 +397,28 @@ impl PanelWriter<'_> {
                 let others = self.others(p, &self.points);
                 !self.left_to_detail(p, at, (joints.iter()).chain(&others))
             })
-            .map(|(p, at)| {
-                let text = text_node(
-                    &p.id,
-                    at.at,
-                    &p.text,
-                    p.size,
-                    colour,
-                    "middle",
-                    starts_italic(&p.text),
-                );
-                (text, at.bounds)
-            })
-            .unzip()
+            .fold(
+                (Vec::new(), Vec::new()),
+                |(mut nodes, mut boxes), (p, at)| {
+                    nodes.push(text_node(
+                        &p.id,
+                        at.at,
+                        &p.text,
+                        p.size,
+                        colour,
+                        "middle",
+                        starts_italic(&p.text),
+                    ));
+                    if let Some((a, b)) = at.leader {
+                        let id = p.id.replacen("label-", "leader-", 1);
+                        let pen = self.style.pen(Role::Label);
+                        let line = markup::path(markup::polyline_d(&[a, b], false), pen);
+                        nodes.push(line.set("id", id).set("class", "leader"));
+                    }
+                    boxes.push(at.bounds);
+                    (nodes, boxes)
+                },
+            )
     }
 
     /// Whether a label is left out here and to the detail: a joint's
@@ -415,10 +436,13 @@ impl PanelWriter<'_> {
     ) -> bool {
         let own = at.bounds.distance_to(p.anchor);
         let mut nearer = || near.any(|&q| q != p.anchor && at.bounds.distance_to(q) + NEARER < own);
-        p.joint
-            && !self.detail
-            && self.detail_marks.iter().any(|m| m.holds(p.anchor))
-            && (at.lasting || nearer())
+        self.in_detail_frame(p) && (at.lasting || nearer())
+    }
+
+    /// Whether a label is a joint's letter on the main view whose pin
+    /// lies inside a detail's frame, the detail lettering it too.
+    fn in_detail_frame(&self, p: &Pending) -> bool {
+        p.joint && !self.detail && self.detail_marks.iter().any(|m| m.holds(p.anchor))
     }
 
     /// The labels placed in the `order` given, each box added to the
@@ -451,7 +475,7 @@ impl PanelWriter<'_> {
                         && (self.obstacles).lasting(&Bounds::around(centre, half), p.anchor)
                 };
                 let mut best = place(reach, half);
-                if !p.letter && lasting(best) {
+                if p.names_itself() && lasting(best) {
                     // A name or a value crossed within a letter's reach by
                     // a line that stays (a detail's magnification beside a
                     // frame among crowding pins) looks further out, no
@@ -459,20 +483,42 @@ impl PanelWriter<'_> {
                     // side so that it does not read as one word with a
                     // letter beside it.
                     let room = Vector::new(WIDE_ROOM * p.size, 0.0);
-                    let wide = place(WIDE_REACH * p.size - ROOM, half + room);
-                    if !lasting(wide) {
-                        best = wide;
+                    for far in WIDE_REACH {
+                        let wide = place(far * p.size - ROOM, half + room);
+                        if !lasting(wide) {
+                            best = wide;
+                            break;
+                        }
+                    }
+                }
+                let mut leader = None;
+                let framed = self.in_detail_frame(p);
+                if !p.names_itself() && points.contains(&p.anchor) && !framed && lasting(best) {
+                    // A point's letter crossed within reach by a line
+                    // that stays goes to a clear place farther out, a
+                    // leader drawn from it to the point, as a draughtsman
+                    // letters a point with no room beside it (a pin in a
+                    // detail's frame is left to the detail instead).
+                    let far = place(LEADER_REACH * p.size - ROOM, half);
+                    if !lasting(far) {
+                        best = far;
+                        leader = leader_line(&Bounds::around(far.0, half), p.anchor, reach);
                     }
                 }
                 let (centre, cost) = best;
                 let bounds = Bounds::around(centre, half);
                 let lasting = lasting(best);
                 self.obstacles.boxed(bounds);
+                if let Some((a, b)) = leader {
+                    self.obstacles.set_weight(1.0);
+                    self.obstacles.segment(a, b);
+                }
                 Placed {
                     at: centre + shift,
                     bounds,
                     cost,
                     lasting,
+                    leader,
                 }
             })
             .collect();
@@ -504,6 +550,29 @@ struct Placed {
     /// Whether its glyphs meet what stays once written
     /// ([`Obstacles::lasting`]).
     lasting: bool,
+    /// The leader from the box towards its point, where a letter stands
+    /// beyond a letter's reach ([`leader_line`]).
+    leader: Option<(Point, Point)>,
+}
+
+/// How far, in font sizes, a point's letter crossed within [`REACH`]
+/// looks for a clear place with a leader to its point.
+const LEADER_REACH: f64 = 2.5;
+
+/// How far (page units) a leader stops short of its point: clear of a
+/// pin's circle (4.2) and a dot.
+const LEADER_SHORT: f64 = 6.0;
+
+/// The leader from the box `b` to `anchor`: from the box's nearest point
+/// to [`LEADER_SHORT`] short of the anchor; none where the box stands
+/// within `reach`, the letter there read with its point without one.
+fn leader_line(b: &Bounds, anchor: Point, reach: f64) -> Option<(Point, Point)> {
+    let from = Point::new(
+        anchor.x.clamp(b.min.x, b.max.x),
+        anchor.y.clamp(b.min.y, b.max.y),
+    );
+    let d = anchor - from;
+    (d.norm() > reach).then(|| (from, anchor - d * (LEADER_SHORT / d.norm())))
 }
 
 /// Where a panel's labels may go: in the panel, or just outside it (into
