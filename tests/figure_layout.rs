@@ -348,3 +348,33 @@ fn the_coupler_ovals_do_not_run_along_the_guides() {
         }
     }
 }
+
+#[test]
+fn a_curve_through_hatching_breaks_it() {
+    // The centrodes cross the guides at Fig. 61's default; P₁'s oval runs
+    // through the lower guide's hatching at `--rod 3 --offset 1.5
+    // --angle 3`, where no channel clears every turn of the ovals. No
+    // hatch stroke is left under a curve (every one was drawn).
+    let cases = [
+        (FigureName::Fig61Centrodes, None),
+        (FigureName::CouplerCurves, Some((1.0, 3.0, 1.5, 3.0))),
+    ];
+    for (name, engine) in cases {
+        let plate = Plate::read(&svg(name, engine, None));
+        let main = &plate.panels[0];
+        let of = |pick: fn(&plate::Stroke) -> bool| {
+            (main.strokes.iter())
+                .filter(move |s| pick(s))
+                .flat_map(|s| s.segs.iter())
+        };
+        let hatching: Vec<_> = of(|s| s.id.starts_with("hatch-")).collect();
+        assert!(!hatching.is_empty(), "{name:?}: no hatching");
+        let crossed = of(|s| s.class == "curve" && s.id.starts_with("curve-"))
+            .flat_map(|c| hatching.iter().filter(move |h| h.meets(c)))
+            .count();
+        assert_eq!(
+            crossed, 0,
+            "{name:?}: {crossed} hatch strokes under a curve"
+        );
+    }
+}

@@ -39,7 +39,13 @@ impl Hatching {
             pen: self.pen,
             part: Part::Plain,
         };
-        let clear = |s: &&(Point, Point)| crossing.iter().all(|c| apart(**s, *c, ROOM));
+        // Only the lines that come near the hatching's strokes at all.
+        let ends: Vec<Point> = self.strokes.iter().flat_map(|(p, q)| [*p, *q]).collect();
+        let reach = Bounds::enclosing(&ends)?.inflate(ROOM);
+        let near: Vec<&(Point, Point)> = (crossing.iter())
+            .filter(|(p, q)| Bounds::enclosing(&[*p, *q]).is_some_and(|b| b.meets(&reach)))
+            .collect();
+        let clear = |s: &&(Point, Point)| near.iter().all(|c| apart(**s, **c, ROOM));
         let d = (kept(&self.strokes, boxes).filter(clear)).fold(String::new(), |mut d, (p, q)| {
             let sep = if d.is_empty() { "" } else { " " };
             let _ = write!(d, "{sep}M{} L{}", pt(*p), pt(*q));

@@ -18,6 +18,7 @@ impl PanelWriter<'_> {
         let mut d = String::new();
         let mut last = Point::origin();
         let mut pieces = Vec::new();
+        let mut straight = Vec::new();
         for seg in p.segments() {
             match *seg {
                 PathSegment::MoveTo(q) => {
@@ -29,6 +30,7 @@ impl PanelWriter<'_> {
                     let q = self.p(q);
                     let _ = write!(d, " L{}", pt(q));
                     self.obstacles.segment(last, q);
+                    straight.push((last, q));
                     last = q;
                 }
                 PathSegment::CubicTo(c1, c2, q) => {
@@ -43,7 +45,12 @@ impl PanelWriter<'_> {
         if !p.points().all(|q| finite(&self.p(q))) {
             return None;
         }
-        self.bezier_obstacles(&pieces);
+        let chords = self.bezier_obstacles(&pieces);
+        if ink.role == Role::Curve {
+            // A point's path through hatching breaks it, as a line does.
+            self.crossing.extend(chords);
+            self.crossing.extend(straight);
+        }
         Some(ink.tag(path(d, ink.pen)))
     }
 
@@ -184,8 +191,9 @@ impl PanelWriter<'_> {
     /// Page Bézier pieces as obstacles, each by enough points along it
     /// that the chords keep within [`FLAT`] of the curve (at least six:
     /// a large arc, in a magnified detail, bows far from a chord of a
-    /// sixth of it).
-    pub(super) fn bezier_obstacles(&mut self, pieces: &[[Point; 4]]) {
+    /// sixth of it); returns the chords.
+    pub(super) fn bezier_obstacles(&mut self, pieces: &[[Point; 4]]) -> Vec<(Point, Point)> {
+        let mut written = Vec::new();
         for b in pieces {
             let n = chords(b);
             let pts: Vec<Point> = (0..=n)
@@ -201,7 +209,9 @@ impl PanelWriter<'_> {
                 })
                 .collect();
             self.obstacles.polyline(&pts);
+            written.extend(pts.iter().zip(pts.iter().skip(1)).map(|(p, q)| (*p, *q)));
         }
+        written
     }
 }
 
