@@ -385,40 +385,40 @@ impl PanelWriter<'_> {
             }
             best
         };
-        let colour = self.style.pen(Role::Label).colour;
         let joints: Vec<Point> = (order.iter())
             .filter(|p| p.joint)
             .map(|p| p.anchor)
             .collect();
-        order
-            .into_iter()
-            .zip(placed)
-            .filter(|(p, at)| {
-                let others = self.others(p, &self.points);
-                !self.left_to_detail(p, at, (joints.iter()).chain(&others))
-            })
-            .fold(
-                (Vec::new(), Vec::new()),
-                |(mut nodes, mut boxes), (p, at)| {
-                    nodes.push(text_node(
-                        &p.id,
-                        at.at,
-                        &p.text,
-                        p.size,
-                        colour,
-                        "middle",
-                        starts_italic(&p.text),
-                    ));
-                    if let Some((a, b)) = at.leader {
-                        let id = p.id.replacen("label-", "leader-", 1);
-                        let pen = self.style.pen(Role::Label);
-                        let line = markup::path(markup::polyline_d(&[a, b], false), pen);
-                        nodes.push(line.set("id", id).set("class", "leader"));
-                    }
-                    boxes.push(at.bounds);
-                    (nodes, boxes)
-                },
-            )
+        let mut nodes = Vec::new();
+        let mut boxes = Vec::new();
+        for (p, at) in order.into_iter().zip(placed) {
+            let others = self.others(p, &self.points);
+            if !self.left_to_detail(p, &at, (joints.iter()).chain(&others)) {
+                nodes.extend(self.label_nodes(p, &at));
+                boxes.push(at.bounds);
+            }
+        }
+        (nodes, boxes)
+    }
+
+    /// A placed label's text, then its leader if it has one.
+    fn label_nodes(&self, p: &Pending, at: &Placed) -> impl Iterator<Item = Element> {
+        let pen = self.style.pen(Role::Label);
+        let text = text_node(
+            &p.id,
+            at.at,
+            &p.text,
+            p.size,
+            pen.colour,
+            "middle",
+            starts_italic(&p.text),
+        );
+        let leader = at.leader.map(|(a, b)| {
+            let id = p.id.replacen("label-", "leader-", 1);
+            let line = markup::path(markup::polyline_d(&[a, b], false), pen);
+            line.set("id", id).set("class", "leader")
+        });
+        std::iter::once(text).chain(leader)
     }
 
     /// Whether a label is left out here and to the detail: a joint's
