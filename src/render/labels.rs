@@ -209,6 +209,16 @@ impl Obstacles {
         near.cost_of(&glyphs, OPEN, f64::MIN_POSITIVE) > 0.0
     }
 
+    /// Whether the segment from `a` to `b` passes through a box (a label
+    /// placed, a part, a point's marker) that does not hold `anchor`.
+    pub fn crosses_a_box(&self, a: Point, b: Point, anchor: Point) -> bool {
+        let at = Bounds {
+            min: anchor,
+            max: anchor,
+        };
+        (self.boxes.iter()).any(|(bx, _)| !bx.contains(&at) && span(a, b - a, bx).is_some())
+    }
+
     pub fn segment(&mut self, a: Point, b: Point) {
         if a.x.is_finite() && a.y.is_finite() && b.x.is_finite() && b.y.is_finite() {
             let i = self.segments.len();
@@ -939,6 +949,21 @@ mod tests {
         assert!(!nearer_another(&b, own, &[other]), "{at:?}");
         assert_eq!(cost, 0.0);
         assert!(b.distance_to(own) <= 22.0);
+    }
+
+    #[test]
+    fn a_segment_crossing_a_box_is_told_from_one_beside_it() {
+        let mut o = Obstacles::default();
+        o.boxed(Bounds::around(
+            Point::new(50.0, 50.0),
+            Vector::new(5.0, 5.0),
+        ));
+        let a = Point::new(0.0, 50.0);
+        let far = Point::new(200.0, 0.0);
+        assert!(o.crosses_a_box(a, Point::new(100.0, 50.0), far));
+        assert!(!o.crosses_a_box(a, Point::new(100.0, 70.0), far));
+        // A box holding the anchor (its own marker) is not in the way.
+        assert!(!o.crosses_a_box(a, Point::new(100.0, 50.0), Point::new(52.0, 50.0)));
     }
 
     #[test]

@@ -498,11 +498,15 @@ impl PanelWriter<'_> {
                     // that stays goes to a clear place farther out, a
                     // leader drawn from it to the point, as a draughtsman
                     // letters a point with no room beside it (a pin in a
-                    // detail's frame is left to the detail instead).
+                    // detail's frame is left to the detail instead), the
+                    // leader through no label, part or marker.
                     let far = place(LEADER_REACH * p.size - ROOM, half);
-                    if !lasting(far) {
+                    let line = leader_line(&Bounds::around(far.0, half), p.anchor, reach);
+                    let clear =
+                        line.is_none_or(|(a, b)| !self.obstacles.crosses_a_box(a, b, p.anchor));
+                    if !lasting(far) && clear {
                         best = far;
-                        leader = leader_line(&Bounds::around(far.0, half), p.anchor, reach);
+                        leader = line;
                     }
                 }
                 let (centre, cost) = best;
