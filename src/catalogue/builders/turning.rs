@@ -10,7 +10,7 @@
 
 use super::{Ctx, Sheet, short, sig};
 use crate::diagram::{Axis, Curve, Plot};
-use crate::dynamics::quadrature::integrate_within;
+use crate::dynamics::quadrature::integrate;
 use crate::dynamics::turning::total_torque;
 use crate::dynamics::{EXAMPLE_MASS, Engine, GasForce, IndicatorDiagram, TurningMoment};
 use crate::error::{Input, Result};
@@ -230,20 +230,8 @@ pub(super) fn stored(engine: &Engine, tm: &TurningMoment, deg: f64) -> f64 {
     let before = lobe.energy - lobe.area;
     let excess = |x: f64| total_torque(engine, &[0.0], x) - tm.mean;
     let from = lobe.from_deg.to_radians();
-    before
-        + integrate_within(
-            &excess,
-            [from, t.max(from)],
-            tm.tolerance,
-            STORED_EVALUATIONS,
-        )
+    before + integrate(&excess, from, t.max(from), tm.tolerance)
 }
-
-/// Most torque evaluations for one point of the energy curve
-/// ([`stored`]): a smooth lobe takes a few hundred; an engine at the limit
-/// of assembly, whose torque spikes near the dead centres, would take the
-/// quadrature's whole budget at each of the curve's many points.
-const STORED_EVALUATIONS: u32 = 1 << 11;
 
 /// T on [a, b] degrees as a curve with its slope by central differences
 /// kept inside the piece.
