@@ -392,7 +392,7 @@ impl PanelWriter<'_> {
         let mut nodes = Vec::new();
         let mut boxes = Vec::new();
         for (p, at) in order.into_iter().zip(placed) {
-            let others = self.others(p, &self.points);
+            let others = others(p, &self.points);
             if !self.left_to_detail(p, &at, (joints.iter()).chain(&others)) {
                 nodes.extend(self.label_nodes(p, &at));
                 boxes.push(at.bounds);
@@ -448,11 +448,10 @@ impl PanelWriter<'_> {
     /// The labels placed in the `order` given, each box added to the
     /// obstacles as it is placed.
     fn placing(&mut self, order: &[&Pending], room: &PageRect) -> Vec<Placed> {
-        let points = std::mem::take(&mut self.points);
-        let placed = order
+        order
             .iter()
             .map(|p| {
-                let others = self.others(p, &points);
+                let others = others(p, &self.points);
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
@@ -493,7 +492,8 @@ impl PanelWriter<'_> {
                 }
                 let mut leader = None;
                 let framed = self.in_detail_frame(p);
-                if !p.names_itself() && points.contains(&p.anchor) && !framed && lasting(best) {
+                if !p.names_itself() && self.points.contains(&p.anchor) && !framed && lasting(best)
+                {
                     // A point's letter crossed within reach by a line
                     // that stays goes to a clear place farther out, a
                     // leader drawn from it to the point, as a draughtsman
@@ -525,24 +525,22 @@ impl PanelWriter<'_> {
                     leader,
                 }
             })
-            .collect();
-        self.points = points;
-        placed
-    }
-
-    /// The points a label's place keeps farther from than from its own:
-    /// for a point's letter, every other point drawn more than an em
-    /// from it (nearer, the two are read as one place, and their letters
-    /// as a pair); for any other label, none.
-    fn others(&self, p: &Pending, points: &[Point]) -> Vec<Point> {
-        if !p.letter || !points.contains(&p.anchor) {
-            return Vec::new();
-        }
-        (points.iter())
-            .filter(|q| (**q - p.anchor).norm() > p.size)
-            .copied()
             .collect()
     }
+}
+
+/// The points a label's place keeps farther from than from its own:
+/// for a point's letter, every other point drawn more than an em
+/// from it (nearer, the two are read as one place, and their letters
+/// as a pair); for any other label, none.
+fn others(p: &Pending, points: &[Point]) -> Vec<Point> {
+    if !p.letter || !points.contains(&p.anchor) {
+        return Vec::new();
+    }
+    (points.iter())
+        .filter(|q| (**q - p.anchor).norm() > p.size)
+        .copied()
+        .collect()
 }
 
 /// Where a label was placed: the point its text is written at, its box,
