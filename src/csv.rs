@@ -28,6 +28,14 @@ fn bare(name: &str) -> String {
         .to_string()
 }
 
+/// A name from the file as an error shows it: quoted, control and
+/// invisible characters escaped, cut after 40 characters.
+fn shown(name: &str) -> String {
+    let cut: String = name.chars().take(40).collect();
+    let more = if cut.len() < name.len() { "…" } else { "" };
+    format!("\"{}\"{more}", cut.escape_debug())
+}
+
 impl Table {
     /// Reads `text`, the `input` named `what` in errors (`data`,
     /// `indicator diagram FILE`); its errors are [`Error::Invalid`] about
@@ -75,6 +83,23 @@ impl Table {
             names,
             rows,
         })
+    }
+
+    /// Refuses a column whose name is none of `known`: a column the
+    /// reader would pass over is named, not ignored.
+    pub(crate) fn only(&self, known: &[&str]) -> Result<()> {
+        match self.names.iter().find(|n| !known.contains(&n.as_str())) {
+            None => Ok(()),
+            Some(n) => Err(Error::invalid(
+                self.input,
+                format!(
+                    "{}: no column is read by the name {} (the columns read are {})",
+                    self.what,
+                    shown(n),
+                    known.join(", ")
+                ),
+            )),
+        }
     }
 
     /// The index of the first column called any of `names` (without

@@ -300,6 +300,39 @@ fn is_bidi_control(c: char) -> bool {
     matches!(c, '\u{061C}' | '\u{200E}' | '\u{200F}' | '\u{202A}'..='\u{202E}' | '\u{2066}'..='\u{2069}')
 }
 
+/// The characters that print nothing and hide where text begins or
+/// breaks: the zero-width space, non-joiner and joiner, the word joiner
+/// and the byte-order mark (a zero-width no-break space inside text).
+fn is_invisible(c: char) -> bool {
+    matches!(c, '\u{200B}'..='\u{200D}' | '\u{2060}' | '\u{FEFF}')
+}
+
+/// What makes `text`, a text a user gives (a unit, a title, a name, a
+/// field of a data file), unfit to be written into a figure, a page or a
+/// table, or `None` when it is fit: a control character (line breaks
+/// included: such a text is one line), a non-character
+/// ([`is_noncharacter`]: not text, and U+FFFE and U+FFFF are not even
+/// allowed in XML), a bidirectional control (U+202E and its kin reorder
+/// what follows them) or an invisible character (U+200B, U+FEFF: a text
+/// that looks like another). The one rule every front end's text passes;
+/// each caller words the error its own way around the reason returned,
+/// such as "it holds the bidirectional control U+202E".
+pub fn text_fault(text: &str) -> Option<String> {
+    let c = text
+        .chars()
+        .find(|&c| c.is_control() || is_noncharacter(c) || is_bidi_control(c) || is_invisible(c))?;
+    let code = u32::from(c);
+    Some(if c.is_control() {
+        "it holds a control character (such a text is one line of printable characters)".into()
+    } else if is_noncharacter(c) {
+        format!("it holds the non-character U+{code:04X} (not text, and not allowed in SVG)")
+    } else if is_bidi_control(c) {
+        format!("it holds the bidirectional control U+{code:04X}, which reorders the text after it")
+    } else {
+        format!("it holds the invisible character U+{code:04X}")
+    })
+}
+
 /// A number as a message shows it: plainly in the usual range, in
 /// exponent form when very large or very small (no 100-digit integers).
 struct Num(f64);

@@ -60,13 +60,14 @@ impl Unit {
         if name.chars().count() > MAX_UNIT_CHARS {
             return bad("it is too long");
         }
+        if let Some(why) = crate::error::text_fault(name) {
+            return bad(&why);
+        }
         if let Some(c) = name
             .chars()
-            .find(|c| c.is_control() || c.is_whitespace() || FORBIDDEN.contains(c))
+            .find(|c| c.is_whitespace() || FORBIDDEN.contains(c))
         {
-            let what = if c.is_control() {
-                "a control character".to_string()
-            } else if c.is_whitespace() {
+            let what = if c.is_whitespace() {
                 "a space".to_string()
             } else {
                 format!("the character {c}")
@@ -252,6 +253,12 @@ mod tests {
             "{m}",
             "\"",
             "abcdefghijklmnopq",
+            "m\u{FFFF}",
+            "m\u{FDD0}",
+            "m\u{202E}",
+            "\u{2066}m",
+            "m\u{200B}",
+            "\u{FEFF}mm",
         ] {
             let e = bad.parse::<Unit>().unwrap_err().to_string();
             assert!(e.starts_with("invalid unit name"), "{bad}: {e}");

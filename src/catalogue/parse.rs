@@ -386,25 +386,12 @@ fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
     }
 }
 
-/// Refuses a scene `name` (written into the figure's metadata) that holds
-/// a control character or a non-character, as a title does.
+/// Refuses a scene `name` (written into the figure's metadata) that
+/// [`crate::error::text_fault`] finds unfit, as a title does.
 fn check_name(name: &str) -> Result<()> {
-    let bad = name
-        .chars()
-        .find(|&c| c.is_control() || crate::figure::is_noncharacter(c));
-    match bad {
+    match crate::error::text_fault(name) {
         None => Ok(()),
-        Some(c) if c.is_control() => Err(Error::invalid(
-            Input::Scene,
-            "invalid name: it holds a control character (a name is one line)".into(),
-        )),
-        Some(c) => Err(Error::invalid(
-            Input::Scene,
-            format!(
-                "invalid name: it holds the non-character U+{:04X} (not text, and not allowed in SVG)",
-                u32::from(c)
-            ),
-        )),
+        Some(why) => Err(Error::invalid(Input::Scene, format!("invalid name: {why}"))),
     }
 }
 
@@ -826,6 +813,14 @@ mod tests {
             (
                 "\ntitle = \"\\uFFFF\"\n",
                 "line 2, column 9: invalid title: it holds the non-character U+FFFF",
+            ),
+            (
+                "name = \"a\\u202Eb\"\n",
+                "line 1, column 8: invalid name: it holds the bidirectional control U+202E",
+            ),
+            (
+                "title = \"\\u200Bx\"\n",
+                "line 1, column 9: invalid title: it holds the invisible character U+200B",
             ),
         ] {
             let e = parse(text).unwrap_err().to_string();

@@ -195,6 +195,18 @@ pub fn to_text(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) ->
         );
         row("correction couple", r.correction_couple, &t);
         row("rod torque (two masses + couple)", r.equivalent_torque, &t);
+        let w = &at.loads;
+        row(
+            "piston effort with m_A (equivalent)",
+            w.piston_effort_equivalent,
+            &f,
+        );
+        row("with the rod: force along the rod", w.rod_force, &f);
+        row("with the rod: thrust on the guides", w.guide_thrust, &f);
+        row("with the rod: crank-pin load x", w.crank_pin[0], &f);
+        row("with the rod: crank-pin load y", w.crank_pin[1], &f);
+        row("with the rod: shaking force x", w.shaking_force[0], &f);
+        row("with the rod: shaking force y", w.shaking_force[1], &f);
     }
     row("torque on the crank T", at.torque, &t);
     row("primary force m r ω² cos θ", b.primary, &f);

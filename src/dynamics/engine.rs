@@ -6,6 +6,7 @@ use super::rod::RodMass;
 use crate::analytic::kinematics::check_omega;
 use crate::error::{Error, Field, Result, non_negative};
 use crate::mechanism::SliderCrank;
+use std::f64::consts::TAU;
 
 /// A slider-crank engine: the mechanism, the reciprocating mass m (piston
 /// and cross-head), the rod's mass if it has one, the gas force on the
@@ -123,6 +124,29 @@ impl Engine {
     pub fn omega(&self) -> f64 {
         self.omega
     }
+
+    /// The turn of the gas force's cycle (0 or 1 for a four-stroke
+    /// diagram; always 0 for a one-turn cycle) that the crank angle
+    /// `degrees` falls in. Turns are counted from the outer dead centre,
+    /// where expansion begins, not from θ = 0: with an offset the outer
+    /// dead centre is at asin(e/(l + r)), and between it and 0° the piston
+    /// is still on the stroke that ends there (the previous turn's).
+    pub fn turn_at_degrees(&self, degrees: f64) -> usize {
+        let odc = self.mechanism.dead_centres().0.to_degrees();
+        turn_from(degrees - odc, 360.0, self.gas.turns())
+    }
+
+    /// [`Engine::turn_at_degrees`] of an angle in radians.
+    pub fn turn_at_radians(&self, radians: f64) -> usize {
+        let odc = self.mechanism.dead_centres().0;
+        turn_from(radians - odc, TAU, self.gas.turns())
+    }
+}
+
+/// The whole turns in `since` (an angle past the outer dead centre, in a
+/// unit of which a turn is `turn`) modulo `turns`.
+fn turn_from(since: f64, turn: f64, turns: usize) -> usize {
+    since.div_euclid(turn).rem_euclid(turns as f64) as usize
 }
 
 /// The reciprocating mass of the example engine, in slug (about 322 lbf

@@ -24,12 +24,13 @@ pub struct Flywheel {
 
 impl Flywheel {
     /// The flywheel I = ΔE / (ω² C_s) that keeps the speed within the
-    /// coefficient `coefficient` (> 0).
+    /// coefficient `coefficient` (0 < C_s < [`MAX_COEFFICIENT`]).
     ///
-    /// Errors: ΔE negative or not finite, ω zero, C_s not positive, or I
-    /// beyond the largest number.
+    /// Errors: ΔE negative or not finite, ω zero, C_s not positive or not
+    /// below 2 (the least speed ω (1 − C_s/2) would be zero or negative),
+    /// or I beyond the largest number.
     pub fn for_coefficient(fluctuation: f64, omega: f64, coefficient: f64) -> Result<Self> {
-        let coefficient = positive(Field::FluctuationOfSpeed, coefficient)?;
+        let coefficient = checked_coefficient(coefficient)?;
         let w2 = check(fluctuation, omega)?;
         let inertia = fluctuation / w2 / coefficient;
         if !inertia.is_finite() {
@@ -50,18 +51,15 @@ impl Flywheel {
     /// The coefficient C_s = ΔE / (I ω²) of the flywheel of moment of
     /// inertia `inertia` (> 0).
     ///
-    /// Errors: as [`Flywheel::for_coefficient`], for I.
+    /// Errors: as [`Flywheel::for_coefficient`], for I; a flywheel too
+    /// light to carry the engine through its turn (C_s ≥ 2: the speed
+    /// would fall to zero before the energy is given back), which the
+    /// formula would otherwise answer with a meaningless C_s.
     pub fn for_inertia(fluctuation: f64, omega: f64, inertia: f64) -> Result<Self> {
         let inertia = positive(Field::Flywheel, inertia)?;
         let w2 = check(fluctuation, omega)?;
         let coefficient = fluctuation / w2 / inertia;
-        if !coefficient.is_finite() {
-            return Err(Error::OutOfRange {
-                name: Field::Flywheel,
-                value: inertia,
-                reason: "the coefficient of fluctuation exceeds the largest number".into(),
-            });
-        }
+        below_limit(inertia, coefficient)?;
         Ok(Self {
             fluctuation,
             omega,
@@ -69,6 +67,43 @@ impl Flywheel {
             coefficient,
         })
     }
+}
+
+/// The coefficient of fluctuation of speed below which the least speed
+/// ω (1 − C_s/2) stays above zero: C_s = (ω_max − ω_min)/ω is below it.
+pub const MAX_COEFFICIENT: f64 = 2.0;
+
+/// A coefficient of fluctuation of speed C_s asked for, checked: above 0
+/// and below [`MAX_COEFFICIENT`], the one rule every figure, table and
+/// handout that sizes a flywheel keeps.
+///
+/// Errors: C_s not in (0, 2), or not a number.
+pub fn checked_coefficient(coefficient: f64) -> Result<f64> {
+    if coefficient > 0.0 && coefficient < MAX_COEFFICIENT {
+        return Ok(coefficient);
+    }
+    Err(Error::OutOfRange {
+        name: Field::Fluctuation,
+        value: coefficient,
+        reason: "the coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω is above 0 and below 2 (where the least speed would be zero)".into(),
+    })
+}
+
+/// Refuses the flywheel of moment of inertia `inertia` that would let the
+/// speed vary by `coefficient` ≥ [`MAX_COEFFICIENT`] (or by no finite
+/// amount).
+fn below_limit(inertia: f64, coefficient: f64) -> Result<()> {
+    if coefficient < MAX_COEFFICIENT {
+        return Ok(());
+    }
+    Err(Error::OutOfRange {
+        name: Field::Flywheel,
+        value: inertia,
+        reason: format!(
+            "this flywheel is too light: the speed would vary by C_s = (ω_max − ω_min)/ω = {}, and from C_s = 2 the least speed is zero",
+            crate::number::significant(coefficient, 4)
+        ),
+    })
 }
 
 /// ω² after checking ΔE ≥ 0 and ω ≠ 0.
@@ -113,5 +148,26 @@ mod tests {
         assert!(Flywheel::for_coefficient(1000.0, 0.0, 0.02).is_err());
         assert!(Flywheel::for_coefficient(1000.0, 20.0, 0.0).is_err());
         assert!(Flywheel::for_inertia(-1.0, 20.0, 1.0).is_err());
+    }
+
+    #[test]
+    fn a_speed_that_would_reach_zero_is_refused() {
+        // C_s = 2 would make ω_min = 0; 1.999 still turns.
+        assert!(Flywheel::for_coefficient(1000.0, 20.0, 2.0).is_err());
+        assert!(Flywheel::for_coefficient(1000.0, 20.0, 5.0).is_err());
+        assert!(Flywheel::for_coefficient(1000.0, 20.0, f64::INFINITY).is_err());
+        assert!(Flywheel::for_coefficient(1000.0, 20.0, 1.999).is_ok());
+        // I = 1e-300: C_s = 1000 / 400 / 1e-300, far past 2.
+        let e = Flywheel::for_inertia(1000.0, 20.0, 1e-300).unwrap_err();
+        assert!(e.to_string().contains("too light"), "{e}");
+        assert!(Flywheel::for_inertia(1000.0, 20.0, 1.25 + 1e-9).is_ok());
+        assert!(Flywheel::for_inertia(1000.0, 20.0, 1.25).is_err());
+        // With no fluctuation at all any flywheel holds the speed.
+        assert_eq!(
+            Flywheel::for_inertia(0.0, 20.0, 1e-300)
+                .unwrap()
+                .coefficient,
+            0.0
+        );
     }
 }

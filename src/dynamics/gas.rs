@@ -5,6 +5,26 @@ use crate::csv::Table as DataTable;
 use crate::error::{Error, Field, Input, Result, positive};
 use crate::mechanism::Pose;
 
+/// The columns a one-turn indicator diagram is read from, with the other
+/// names each may go by.
+const ONE_TURN: &[&str] = &[
+    "fraction",
+    "stroke",
+    "x",
+    "expansion",
+    "outward",
+    "compression",
+    "return",
+];
+
+/// The pumping lines' columns of a four-stroke diagram.
+const PUMPING: &[&str] = &["exhaust", "intake"];
+
+/// A piston whose ds/dθ is within this fraction of the crank is at rest
+/// at a dead centre (within about 1e-12 rad of it), where the stroke that
+/// starts there gives the pressure ([`IndicatorDiagram::force_in_turn`]).
+const AT_REST: f64 = 1e-12;
+
 /// Most rows of an indicator diagram.
 pub const MAX_INDICATOR_ROWS: usize = 10_000;
 
@@ -163,8 +183,9 @@ impl IndicatorDiagram {
     /// Errors: those of `from_csv`; one of the two pumping columns
     /// without the other.
     pub fn from_csv_cycle(text: &str, bore: f64, what: &str) -> Result<Self> {
-        let d = Self::from_csv(text, bore, what)?;
         let table = DataTable::parse(text, Input::Indicator, what)?;
+        table.only(&[ONE_TURN, PUMPING].concat())?;
+        let d = Self::from_table(&table, bore, what)?;
         let named = |n: &str| table.column(&[n]).ok();
         match (named("exhaust"), named("intake")) {
             (None, None) => Ok(d),
@@ -184,8 +205,17 @@ impl IndicatorDiagram {
     /// `expansion` and `compression` (pressures, force per length²), as
     /// the project's data reader does (a header line, `#` comments);
     /// `what` names the source in errors.
+    ///
+    /// Errors: a column missing, or one of another name (it would not be
+    /// read); those of [`IndicatorDiagram::new`].
     pub fn from_csv(text: &str, bore: f64, what: &str) -> Result<Self> {
         let table = DataTable::parse(text, Input::Indicator, what)?;
+        table.only(ONE_TURN)?;
+        Self::from_table(&table, bore, what)
+    }
+
+    /// The one-turn diagram in `table`'s columns.
+    fn from_table(table: &DataTable, bore: f64, what: &str) -> Result<Self> {
         let col = |names: &[&str]| table.column(names).and_then(|c| table.numbers(c));
         Self::new(
             col(&["fraction", "stroke", "x"])?,
@@ -253,8 +283,9 @@ impl IndicatorDiagram {
     }
 
     /// The force at `pose` in the first turn: on the expansion stroke
-    /// while the piston moves towards the crank (ω ds/dθ < 0; at rest,
-    /// while ds/dθ < 0).
+    /// while the piston moves towards the crank (ω ds/dθ < 0) and at the
+    /// outer dead centre, where expansion starts
+    /// ([`IndicatorDiagram::force_in_turn`]).
     pub fn force(&self, pose: &Pose, omega: f64) -> f64 {
         self.force_in_turn(pose, omega, 0)
     }
@@ -263,12 +294,29 @@ impl IndicatorDiagram {
     /// turns): towards the crank the expansion line (turn 0) or the
     /// intake (turn 1); away from it the compression line, or for a
     /// four-stroke cycle the exhaust (turn 0).
+    ///
+    /// At a dead centre (the piston at rest, ds/dθ = 0) the line is that
+    /// of the stroke the piston starts there, in the cycle's own order:
+    /// the end of compression is the start of expansion (the outer dead
+    /// centre of turn 0, firing top dead centre), the end of exhaust the
+    /// start of intake (the outer dead centre of turn 1), the end of
+    /// expansion the start of exhaust, the end of intake the start of
+    /// compression. The piston leaves the outer dead centre towards the
+    /// crank and the inner one away from it, whichever way the crank
+    /// turns.
     pub fn force_in_turn(&self, pose: &Pose, omega: f64, turn: usize) -> f64 {
         let m = pose.mechanism();
         let outer = m.pose(m.outer_dead_centre()).position();
         let x = (outer - pose.position()) / m.stroke();
         let direction = if omega < 0.0 { -1.0 } else { 1.0 };
-        let towards = direction * pose.position_rate() < 0.0;
+        let rate = pose.position_rate();
+        let towards = if rate.abs() <= AT_REST * m.crank() {
+            // At rest: s is greatest at the outer dead centre (s'' < 0),
+            // so the stroke that starts there runs towards the crank.
+            pose.position_acceleration() < 0.0
+        } else {
+            direction * rate < 0.0
+        };
         let line = match (&self.pumping, turn % self.turns(), towards) {
             (_, 0, true) => &self.expansion,
             (Some((exhaust, _)), 0, false) => exhaust,
@@ -326,6 +374,26 @@ mod tests {
         let e =
             IndicatorDiagram::from_csv("fraction,expansion\n0,1\n1,1\n", 1.0, "d.csv").unwrap_err();
         assert!(e.to_string().contains("no column named compression"), "{e}");
+        // A column the reader would pass over is named, not ignored.
+        let six = "fraction,expansion,compression,exhaust,intake,extra\n0,9,1,1,0,5\n1,2,1,1,0,5\n";
+        let e = IndicatorDiagram::from_csv_cycle(six, 1.0, "d.csv").unwrap_err();
+        assert!(e.to_string().contains("\"extra\""), "{e}");
+        let five = six.replace(",extra", "").replace(",5\n", "\n");
+        assert_eq!(
+            IndicatorDiagram::from_csv_cycle(&five, 1.0, "d.csv")
+                .unwrap()
+                .turns(),
+            2
+        );
+        let e = IndicatorDiagram::from_csv(&five, 1.0, "d.csv").unwrap_err();
+        assert!(e.to_string().contains("\"exhaust\""), "{e}");
+        let e = IndicatorDiagram::from_csv(
+            "fraction,expansion,compression,p\u{202e}\n0,1,1,1\n1,1,1,1\n",
+            1.0,
+            "d.csv",
+        )
+        .unwrap_err();
+        assert!(e.to_string().contains("\\u{202e}"), "{e}");
         assert!(
             IndicatorDiagram::new(vec![0.0, 1.0], vec![1.0, 1.0], vec![0.0, 0.0], 0.0).is_err()
         );

@@ -32,6 +32,7 @@ mod balance;
 mod engine;
 mod flywheel;
 mod gas;
+mod loads;
 mod parts;
 mod pose;
 pub(crate) mod quadrature;
@@ -40,8 +41,9 @@ pub(crate) mod turning;
 
 pub use balance::{Balance, unbalanced_forces};
 pub use engine::{EXAMPLE_MASS, Engine};
-pub use flywheel::{Flywheel, FlywheelAsk};
+pub use flywheel::{Flywheel, FlywheelAsk, MAX_COEFFICIENT, checked_coefficient};
 pub use gas::{GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS};
+pub use loads::EngineLoads;
 pub use parts::{EngineParts, IndicatorText};
 pub use pose::EnginePose;
 pub use rod::{RodInertia, RodMass};

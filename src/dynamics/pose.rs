@@ -1,6 +1,7 @@
 //! The forces and the crank effort of an engine at one pose.
 
 use super::engine::Engine;
+use super::loads::EngineLoads;
 use super::rod::RodInertia;
 use crate::angle::Angle;
 use crate::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine};
@@ -23,12 +24,16 @@ pub struct EnginePose {
     /// at infinity, θ = 90° and 270° in line).
     pub inertia_force_graphical: f64,
     /// The piston effort F = gas force + inertia force of the
-    /// reciprocating parts (the rod's inertia is in `rod`).
+    /// reciprocating parts (the rod's inertia is in `rod`, and the
+    /// equivalent system's effort with the rod's mass at the cross-head in
+    /// `loads`).
     pub piston_effort: f64,
-    /// The force along the rod, F / cos φ (compression positive).
+    /// The force along the rod, F / cos φ (compression positive), of the
+    /// reciprocating parts alone (with the rod's inertia: `loads`).
     pub rod_force: f64,
     /// The thrust of the slider on its guides along +y, −F tan φ (Ng's
-    /// F_s = F_p tan φ with F_p = −F).
+    /// F_s = F_p tan φ with F_p = −F), of the reciprocating parts alone
+    /// (with the rod's inertia: `loads`).
     pub guide_thrust: f64,
     /// OM (= CE) read off Ng's torque line.
     pub om: f64,
@@ -42,15 +47,23 @@ pub struct EnginePose {
     /// The whole torque on the crank: the gas and reciprocating parts'
     /// crank effort and the rod's exact inertia torque.
     pub torque: f64,
+    /// The forces of the whole engine with the rod's inertia (pin and
+    /// bearing loads, guide thrust, force along the rod, shaking force):
+    /// those above are of the reciprocating parts alone.
+    pub loads: EngineLoads,
 }
 
 impl Engine {
-    /// The forces and torques at the crank angle `angle`.
+    /// The forces and torques at the crank angle `angle`, in the first
+    /// turn of the gas force's cycle as [`Engine::turn_at_degrees`] counts
+    /// it: for a four-stroke diagram expansion and exhaust, and, where an
+    /// offset puts the outer dead centre past 0°, the end of compression
+    /// before it.
     ///
     /// Errors: a force beyond the largest number (very large masses or
     /// pressures near the limit of assembly).
     pub fn at(&self, angle: Angle) -> Result<EnginePose> {
-        self.at_turn(angle, 0)
+        self.at_turn(angle, self.turn_at_degrees(angle.degrees()))
     }
 
     /// [`Engine::at`] in turn `turn` of the gas force's cycle (1: the
@@ -73,6 +86,12 @@ impl Engine {
         let line = TorqueLine::construct(&pose, &VelocityLine::construct(&pose));
         let om = line.om();
         let crank_effort_exact = piston_effort * exact_arm(&pose);
+        let loads = EngineLoads::new(
+            &pose,
+            (omega, m),
+            piston_effort,
+            self.rod().zip(rod.as_ref()),
+        );
         let at = EnginePose {
             angle_deg: angle.degrees(),
             gas_force: gas,
@@ -86,6 +105,7 @@ impl Engine {
             crank_effort_exact,
             torque: crank_effort_exact + rod.map_or(0.0, |r| r.torque),
             rod,
+            loads,
         };
         at.check(angle)
     }
@@ -102,7 +122,11 @@ impl EnginePose {
             self.crank_effort,
             self.torque,
         ];
-        if values.iter().all(|v| v.is_finite()) {
+        if values
+            .iter()
+            .chain(&self.loads.values())
+            .all(|v| v.is_finite())
+        {
             Ok(self)
         } else {
             Err(Error::OutOfRange {
@@ -136,7 +160,7 @@ impl Engine {
     /// (no construction, no check): what the turning-moment diagram
     /// integrates. Equal to [`EnginePose::torque`].
     pub fn torque(&self, pose: &Pose) -> f64 {
-        self.torque_in_turn(pose, 0)
+        self.torque_in_turn(pose, self.turn_at_degrees(pose.angle().degrees()))
     }
 
     /// [`Engine::torque`] in turn `turn` of the gas force's cycle (the

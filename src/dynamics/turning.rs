@@ -82,11 +82,19 @@ impl TurningMoment {
     /// The diagram of `engine` with cylinders at `phases_deg` (one 0 for a
     /// single cylinder; an empty list is one cylinder).
     ///
-    /// Errors: a phase not finite, more than [`MAX_CYLINDERS`].
+    /// Each phase is reduced exactly modulo the cycle before use (and
+    /// `phases_deg` holds it so): 1e17° is 280° on a one-turn cycle, as it
+    /// is in exact arithmetic.
+    ///
+    /// Errors: a phase not finite, more than [`MAX_CYLINDERS`]; an engine
+    /// whose torque the quadrature cannot integrate to the tolerance
+    /// within its budget ([`Error::Limit`]: near the limit of assembly the
+    /// torque spikes at the dead centres), refused rather than answered
+    /// with a fluctuation of energy that may be far from the truth.
     pub fn new(engine: &Engine, phases_deg: &[f64]) -> Result<Self> {
-        let phases = check_phases(phases_deg)?;
-        let radians: Vec<f64> = phases.iter().map(|d| d.to_radians()).collect();
         let turns = engine.gas().turns();
+        let phases = check_phases(phases_deg, turns)?;
+        let radians: Vec<f64> = phases.iter().map(|d| d.to_radians()).collect();
         let cycle = TAU * turns as f64;
         let torque = |t: f64| total_torque(engine, &radians, t);
         let breaks = breakpoints(engine, &radians);
@@ -95,12 +103,19 @@ impl TurningMoment {
             .map(|i| torque(cycle * i as f64 / samples as f64).abs())
             .fold(0.0, f64::max);
         let tolerance = RELATIVE_TOLERANCE * peak * cycle;
-        let over = |f: &dyn Fn(f64) -> f64, a: f64, b: f64| -> f64 {
+        let over = |f: &dyn Fn(f64) -> f64, a: f64, b: f64| -> Result<f64> {
             pieces(&breaks, a, b)
-                .map(|(x, y)| integrate(f, x, y, tolerance * (y - x) / cycle))
+                .map(|(x, y)| {
+                    let piece = integrate(f, x, y, tolerance * (y - x) / cycle);
+                    if piece.met {
+                        Ok(piece.value)
+                    } else {
+                        Err(out_of_reach(x, y))
+                    }
+                })
                 .sum()
         };
-        let work = over(&torque, 0.0, cycle);
+        let work = over(&torque, 0.0, cycle)?;
         let mean = work / cycle;
         let excess = |t: f64| torque(t) - mean;
         let crossings = crossings(&excess, &breaks, cycle, samples);
@@ -108,7 +123,7 @@ impl TurningMoment {
         let (mut energy, mut start) = (0.0, 0.0);
         let (mut max, mut min) = ((0.0, 0.0), (0.0, 0.0));
         for end in crossings.into_iter().chain([cycle]) {
-            let area = over(&excess, start, end);
+            let area = over(&excess, start, end)?;
             energy += area;
             lobes.push(Lobe {
                 from_deg: start.to_degrees(),
@@ -141,7 +156,20 @@ impl TurningMoment {
     }
 }
 
-fn check_phases(phases: &[f64]) -> Result<Vec<f64>> {
+/// The phases, each finite and reduced exactly into [0, the cycle) (360°
+/// a turn): a phase and the same plus any whole number of cycles give one
+/// engine, however large.
+/// The refusal of an engine whose torque between `a` and `b` (radians)
+/// the quadrature cannot integrate to its tolerance within its budget.
+fn out_of_reach(a: f64, b: f64) -> Error {
+    Error::Limit(format!(
+        "the turning moment of this engine cannot be integrated to its tolerance between θ = {}° and {}°: the torque there spikes too sharply (the rod at the limit of assembly, l close to r + |e|); a longer rod or a smaller offset can be done",
+        crate::number::significant(a.to_degrees(), 6),
+        crate::number::significant(b.to_degrees(), 6)
+    ))
+}
+
+fn check_phases(phases: &[f64], turns: usize) -> Result<Vec<f64>> {
     if phases.len() > MAX_CYLINDERS {
         return Err(Error::OutOfRange {
             name: Field::Cylinders,
@@ -152,20 +180,30 @@ fn check_phases(phases: &[f64]) -> Result<Vec<f64>> {
     if phases.is_empty() {
         return Ok(vec![0.0]);
     }
-    phases.iter().map(|&d| finite(Field::Phase, d)).collect()
+    let cycle = 360.0 * turns as f64;
+    phases
+        .iter()
+        .map(|&d| finite(Field::Phase, d).map(|d| reduce(d, cycle)))
+        .collect()
+}
+
+/// `d` modulo `cycle` in [0, cycle), exactly: the remainder of two floats
+/// is exact, and a negative one is raised by a cycle (where that rounds up
+/// to the cycle itself, the angle is 0).
+fn reduce(d: f64, cycle: f64) -> f64 {
+    let r = d % cycle;
+    let r = if r < 0.0 { r + cycle } else { r };
+    if r >= cycle { 0.0 } else { r + 0.0 }
 }
 
 /// T(θ) = Σ T_i(θ + δ_i), θ and δ_i in radians; each cylinder in the turn
 /// of its cycle that θ + δ_i falls in.
 pub(crate) fn total_torque(engine: &Engine, phases: &[f64], theta: f64) -> f64 {
-    let turns = engine.gas().turns();
     phases
         .iter()
         .map(|d| {
             let at = theta + d;
-            // The turn, 0 ≤ turn < turns (a float's turn count is exact
-            // for any finite angle here: |θ + δ| is far below 2⁵³ turns).
-            let turn = (at.div_euclid(TAU) as i64).rem_euclid(turns as i64) as usize;
+            let turn = engine.turn_at_radians(at);
             match Angle::from_radians(at) {
                 Ok(a) => engine.torque_in_turn(&engine.mechanism().pose(a), turn),
                 Err(_) => 0.0,
@@ -263,15 +301,81 @@ impl Engine {
     ///
     /// Errors: a phase that is not finite.
     pub fn torque_of_cylinders(&self, phases_deg: &[f64], angle: Angle) -> Result<f64> {
-        let phases = check_phases(phases_deg)?;
-        let turns = self.gas().turns() as i64;
+        let phases = check_phases(phases_deg, self.gas().turns())?;
         let mut sum = 0.0;
         for d in phases {
             let at = angle.degrees() + d;
-            let turn = (at.div_euclid(360.0) as i64).rem_euclid(turns) as usize;
+            let turn = self.turn_at_degrees(at);
             let a = Angle::from_degrees(at)?;
             sum += self.torque_in_turn(&self.mechanism().pose(a), turn);
         }
         Ok(sum)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::SliderCrank;
+    use crate::dynamics::IndicatorDiagram;
+
+    fn engine() -> Engine {
+        Engine::new(SliderCrank::new(1.0, 3.0, 0.2).unwrap(), 1.0, 10.0).unwrap()
+    }
+
+    fn four_stroke() -> Engine {
+        let d = IndicatorDiagram::new(
+            vec![0.0, 0.5, 1.0],
+            vec![40.0, 10.0, 3.0],
+            vec![9.0, 4.0, 1.0],
+            1.0,
+        )
+        .unwrap()
+        .with_pumping(vec![1.5, 1.2, 1.1], vec![-0.2, -0.3, -0.1])
+        .unwrap();
+        engine().with_gas(GasForce::Indicator(d)).unwrap()
+    }
+
+    #[test]
+    fn phases_are_reduced_exactly_modulo_the_cycle() {
+        assert_eq!(reduce(1e17, 360.0), 280.0);
+        assert_eq!(reduce(1e17, 720.0), 640.0);
+        assert_eq!(reduce(-90.0, 360.0), 270.0);
+        assert_eq!(reduce(-1e-300, 360.0), 0.0);
+        assert_eq!(reduce(-0.0, 360.0).to_bits(), 0.0f64.to_bits());
+        let e = engine();
+        let far = TurningMoment::new(&e, &[0.0, 1e17]).unwrap();
+        let near = TurningMoment::new(&e, &[0.0, 280.0]).unwrap();
+        assert_eq!(far, near);
+        let e = four_stroke();
+        let far = TurningMoment::new(&e, &[0.0, 1e17, -1e17]).unwrap();
+        let near = TurningMoment::new(&e, &[0.0, 640.0, 80.0]).unwrap();
+        assert_eq!(far, near);
+        let at = Angle::deg(33.0);
+        assert_eq!(
+            e.torque_of_cylinders(&[1e17], at).unwrap(),
+            e.torque_of_cylinders(&[640.0], at).unwrap()
+        );
+    }
+
+    #[test]
+    fn each_dead_centre_takes_the_line_of_the_stroke_that_starts_there() {
+        let e = four_stroke();
+        let m = *e.mechanism();
+        let GasForce::Indicator(d) = e.gas() else {
+            unreachable!()
+        };
+        let (odc, idc) = (m.pose(m.outer_dead_centre()), m.pose(m.inner_dead_centre()));
+        let area = d.area();
+        for omega in [10.0, -10.0] {
+            // Firing top dead centre: compression ends, expansion starts.
+            assert_eq!(d.force_in_turn(&odc, omega, 0), 40.0 * area);
+            // The end of expansion is the start of exhaust.
+            assert_eq!(d.force_in_turn(&idc, omega, 0), 1.1 * area);
+            // The end of exhaust is the start of intake.
+            assert_eq!(d.force_in_turn(&odc, omega, 1), -0.2 * area);
+            // The end of intake is the start of compression.
+            assert_eq!(d.force_in_turn(&idc, omega, 1), 1.0 * area);
+        }
     }
 }

@@ -2,7 +2,7 @@
 //! notes.
 
 use super::{Font, FontStyle, TextBox};
-use crate::error::{Input, is_noncharacter};
+use crate::error::Input;
 
 /// A subscript's size, as a fraction of its line's.
 pub const SUBSCRIPT_SIZE: f64 = 0.7;
@@ -324,8 +324,10 @@ pub struct Title(String);
 
 impl Title {
     /// The title `text`; an error (one line) when it is empty or blank,
-    /// longer than [`MAX_TITLE_CHARS`], or holds a control character (a
-    /// line break) or a non-character ([`is_noncharacter`]: U+FFFE).
+    /// longer than [`MAX_TITLE_CHARS`], or unfit as every user's text is
+    /// ([`crate::error::text_fault`]: a control character such as a line
+    /// break, a non-character such as U+FFFE, a bidirectional control, an
+    /// invisible character).
     pub fn new(text: &str) -> crate::error::Result<Self> {
         let bad = |why: &str| {
             Err(crate::error::Error::invalid(
@@ -339,14 +341,8 @@ impl Title {
         if text.chars().count() > MAX_TITLE_CHARS {
             return bad(&format!("it is longer than {MAX_TITLE_CHARS} characters"));
         }
-        if text.chars().any(char::is_control) {
-            return bad("it holds a control character (a title is one line)");
-        }
-        if let Some(c) = text.chars().find(|&c| is_noncharacter(c)) {
-            return bad(&format!(
-                "it holds the non-character U+{:04X} (not text, and not allowed in SVG)",
-                u32::from(c)
-            ));
+        if let Some(why) = crate::error::text_fault(text) {
+            return bad(&why);
         }
         Ok(Title(text.to_string()))
     }
@@ -413,16 +409,25 @@ mod tests {
             );
         }
         // Their neighbours are text.
-        for good in [
-            "\u{FFFD}",
-            "\u{FDCF}",
-            "\u{FDF0}",
-            "\u{10FFFD}",
-            "\u{202E}x",
-        ] {
+        for good in ["\u{FFFD}", "\u{FDCF}", "\u{FDF0}", "\u{10FFFD}"] {
             assert!(good.parse::<Title>().is_ok(), "{good:?}");
         }
-        assert!(is_noncharacter('\u{FFFE}') && !is_noncharacter('\u{FFFD}'));
+        // Text that reorders or hides what follows it is refused too.
+        for (bad, why) in [
+            ("\u{202E}x", "the bidirectional control U+202E"),
+            ("a\u{2066}b", "the bidirectional control U+2066"),
+            ("a\u{200B}b", "the invisible character U+200B"),
+            ("\u{FEFF}a", "the invisible character U+FEFF"),
+        ] {
+            let e = bad.parse::<Title>().unwrap_err().to_string();
+            assert!(
+                e.starts_with(&format!("invalid title: it holds {why}")),
+                "{e}"
+            );
+        }
+        assert!(
+            crate::error::is_noncharacter('\u{FFFE}') && !crate::error::is_noncharacter('\u{FFFD}')
+        );
     }
 
     #[test]

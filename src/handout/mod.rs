@@ -172,13 +172,7 @@ impl Handout {
     /// indicator diagram (lbf/ft²) and its bore.
     pub fn with_dynamics(mut self, mass: f64, fluctuation: f64) -> Result<Self> {
         let mass = crate::error::positive(Field::Mass, mass)?;
-        if !(fluctuation > 0.0 && fluctuation < 2.0) {
-            return Err(Error::OutOfRange {
-                name: Field::Fluctuation,
-                value: fluctuation,
-                reason: "the coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω is above 0 and below 2 (where the least speed would be zero)".into(),
-            });
-        }
+        let fluctuation = crate::dynamics::checked_coefficient(fluctuation)?;
         if self.units != Units::FOOT_POUND {
             return Err(Error::invalid(Input::Options,
                 "the handout's dynamics take their gas force from an indicator diagram in lbf/ft² with a 10 in bore: give lengths in ft and forces in lbf with --mass".into(),

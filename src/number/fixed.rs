@@ -17,6 +17,19 @@ pub fn fixed(x: f64, decimals: usize) -> String {
     }
 }
 
+/// A table's angle cell: `degrees` with `decimals` decimals where they
+/// write it exactly (30 → `30.0` at 1), else its shortest decimal that
+/// reads back as the same double (0.001 → `0.001`, not `0.0`), so that two
+/// different angles never print the same θ.
+pub fn angle_cell(degrees: f64, decimals: usize) -> String {
+    let s = fixed(degrees, decimals);
+    if s.parse::<f64>().ok() == Some(degrees) {
+        s
+    } else {
+        super::plain(degrees)
+    }
+}
+
 /// Powers of ten exact in f64, up to the 17 decimals a table writes.
 const POW10: [f64; 18] = [
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
@@ -197,5 +210,26 @@ mod tests {
         assert_eq!(fixed_fast(2e12, 1), None);
         assert_eq!(fixed_fast(f64::NAN, 1), None);
         assert_eq!(fixed(-12.345_67, 3), "-12.346");
+    }
+}
+
+#[cfg(test)]
+mod angle_cell_tests {
+    use super::angle_cell;
+
+    #[test]
+    fn an_angle_cell_identifies_its_angle() {
+        assert_eq!(angle_cell(30.0, 1), "30.0");
+        assert_eq!(angle_cell(0.0, 1), "0.0");
+        assert_eq!(angle_cell(-0.0, 1), "0.0");
+        assert_eq!(angle_cell(22.5, 1), "22.5");
+        assert_eq!(angle_cell(0.001, 1), "0.001");
+        assert_eq!(angle_cell(0.1 + 0.2, 1), "0.30000000000000004");
+        assert_eq!(angle_cell(10.0, 0), "10");
+        assert_eq!(angle_cell(10.25, 0), "10.25");
+        assert_eq!(angle_cell(359.99999, 1), "359.99999");
+        for (a, b) in [(0.0, 0.001), (45.0, 45.0000001), (90.0, 90.0 + 1e-13)] {
+            assert_ne!(angle_cell(a, 1), angle_cell(b, 1));
+        }
     }
 }

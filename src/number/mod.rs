@@ -17,6 +17,6 @@ pub(crate) use figure::{given, power_form, power_of_ten, short, sig};
 // A page's numbers: the handout's (feature `html`).
 #[cfg(feature = "html")]
 pub(crate) use figure::{SetOn, short_on, sig_on};
-pub use fixed::{fixed, significant};
+pub use fixed::{angle_cell, fixed, significant};
 pub use grid::{GRID, OnGrid, fmt, fmt_coefficient};
 pub use plain::{MAX_FIXED_WIDTH, plain};

@@ -5,13 +5,19 @@ use super::Table;
 use crate::angle::Angle;
 use crate::dynamics::{EXAMPLE_MASS, Engine, Flywheel, FlywheelAsk, TurningMoment};
 use crate::error::Result;
-use crate::number::plain;
+use crate::number::{angle_cell, plain};
 use crate::number::{fixed, significant};
 use crate::units::Units;
 
 /// A note's value: six significant figures.
 fn sig(x: f64) -> String {
     significant(x, 6)
+}
+
+/// `x`, or 0 where it is within `tolerance` of zero: below the integrals'
+/// own tolerance a value's digits are rounding, not the engine's.
+fn settled(x: f64, tolerance: f64) -> f64 {
+    if x.abs() <= tolerance { 0.0 } else { x }
 }
 
 /// The title, headers and notes of the dynamics table of `engine` with
@@ -45,14 +51,21 @@ pub fn dynamics_head(
     let mut notes = vec![
         "Forces along the stroke are positive towards the crank centre; F = gas + inertia; rod: F / cos φ (compression); guides: the slider's thrust along +y, −F tan φ; T = F·OM + the rod's inertia torque, counter-clockwise positive.".to_string(),
         format!(
-            "Over the {} ({} cylinder{} at {}°): work {} {t}, mean torque {} {t}, fluctuation of energy ΔE = {} {t} (most energy at θ = {}°, least at {}°; {} areas, integrated to {:.1e} {t}).",
+            "Over the {} ({} cylinder{} at {}°): work {} {t}, mean torque {} {t}, fluctuation of energy ΔE = {} {t} (most energy at θ = {}°, least at {}°; {} areas).{}",
             if turn.cycle_deg > 360.0 { "four-stroke cycle of 720°, rows past 360° in its second turn" } else { "turn" },
             turn.phases_deg.len(),
             if turn.phases_deg.len() == 1 { "" } else { "s" },
             turn.phases_deg.iter().map(|d| plain(*d)).collect::<Vec<_>>().join(", "),
-            sig(turn.work), sig(turn.mean), sig(turn.fluctuation),
+            sig(settled(turn.work, turn.tolerance)),
+            sig(settled(turn.mean, turn.tolerance / (turn.cycle_deg.to_radians()))),
+            sig(settled(turn.fluctuation, turn.tolerance)),
             fixed(turn.max_energy_deg, 2), fixed(turn.min_energy_deg, 2),
-            turn.lobes.len(), turn.tolerance,
+            turn.lobes.len(),
+            if turn.work.abs() <= turn.tolerance {
+                " A work within the integrals' tolerance of zero is written 0 (the inertia forces alone do no work over a turn)."
+            } else {
+                ""
+            },
         ),
     ];
     let fw = match flywheel {
@@ -97,11 +110,9 @@ pub fn dynamics_row(
     decimals: usize,
 ) -> Result<Vec<String>> {
     let angle = Angle::from_degrees(degrees)?;
-    let turns = engine.gas().turns() as i64;
-    let turn = (degrees.div_euclid(360.0) as i64).rem_euclid(turns);
-    let at = engine.at_turn(angle, turn as usize)?;
+    let at = engine.at_turn(angle, engine.turn_at_degrees(degrees))?;
     let mut row = vec![
-        fixed(degrees, 1),
+        angle_cell(degrees, 1),
         fixed(at.gas_force, decimals),
         fixed(at.inertia_force, decimals),
         fixed(at.piston_effort, decimals),
@@ -113,8 +124,10 @@ pub fn dynamics_row(
         fixed(at.torque, decimals),
     ];
     if phases_deg.len() > 1 {
-        // The turn carried by the phases: cylinder i at θ + δ_i + 360° turn.
-        let shifted: Vec<f64> = phases_deg.iter().map(|d| d + 360.0 * turn as f64).collect();
+        // The whole turns of the row's angle carried by the phases:
+        // cylinder i at θ + δ_i, θ past 360° on a four-stroke cycle.
+        let turn = degrees.div_euclid(360.0);
+        let shifted: Vec<f64> = phases_deg.iter().map(|d| d + 360.0 * turn).collect();
         row.push(fixed(
             engine.torque_of_cylinders(&shifted, angle)?,
             decimals,

@@ -14,7 +14,7 @@ use crate::angle::Angle;
 use crate::error::{Error, Field, Input, Result};
 use crate::mechanism::SliderCrank;
 pub use crate::number::fixed;
-use crate::number::plain;
+use crate::number::{angle_cell, plain};
 use crate::units::Units;
 pub use chain_json::{
     CHAIN_TOLERANCE, centre_json, chain_check_report, grashof_name, inversion_json,
@@ -130,16 +130,18 @@ pub struct Head<'a> {
     pub title: &'a str,
     /// Column headers.
     pub headers: &'a [String],
-    /// Notes printed under the table (text and Markdown only).
+    /// Notes printed under the table (in CSV as `#` comment lines).
     pub notes: &'a [String],
 }
 
+/// A CSV record (RFC 4180): a cell with a comma, a quote or a line break
+/// is quoted, its quotes doubled.
 fn csv_line(cells: &[String]) -> String {
     let quoted: Vec<String> = cells
         .iter()
         .map(|c| {
-            if c.contains(',') {
-                format!("\"{c}\"")
+            if c.contains([',', '"', '\n', '\r']) {
+                format!("\"{}\"", c.replace('"', "\"\""))
             } else {
                 c.clone()
             }
@@ -238,10 +240,18 @@ pub fn push_row(format: Format, row: &[String], widths: &[usize], text: &mut Str
     }
 }
 
-/// What a table prints below its rows: its notes (none in CSV).
+/// What a table prints below its rows: its notes; in CSV as comment
+/// lines, each `# ` and a note (readers skip them with pandas'
+/// `comment="#"`, numpy's default `comments="#"`, and this crate's own
+/// data reader).
 pub fn tail_text(format: Format, head: &Head) -> String {
     match format {
-        Format::Csv => String::new(),
+        Format::Csv => head
+            .notes
+            .iter()
+            .flat_map(|n| n.lines())
+            .map(|n| format!("# {n}\n"))
+            .collect(),
         Format::Markdown => head.notes.iter().map(|n| format!("\n{n}\n")).collect(),
         Format::Text if head.notes.is_empty() => String::new(),
         Format::Text => {
@@ -369,7 +379,7 @@ pub fn kinematics_row(
     let pose = mechanism.pose(Angle::from_degrees(degrees)?);
     let k = Kinematics::new(&pose, omega)?;
     Ok(vec![
-        fixed(degrees, 1),
+        angle_cell(degrees, 1),
         fixed(k.position, decimals),
         fixed(k.velocity, decimals),
         fixed(k.acceleration, decimals),
@@ -448,7 +458,7 @@ pub fn forces_row(
         }
     };
     Ok(vec![
-        fixed(degrees, 0),
+        angle_cell(degrees, 0),
         f,
         fp,
         fixed(pose.transmission_angle().to_degrees(), 2),
@@ -584,6 +594,20 @@ mod tests {
             notes: vec![],
         };
         assert_eq!(t.render(Format::Csv), "a,b\n\"1,5\",2\n");
+    }
+
+    #[test]
+    fn csv_doubles_quotes_and_keeps_its_notes_as_comments() {
+        let t = Table {
+            title: "t".into(),
+            headers: vec!["a".into(), "b \"x\"".into()],
+            rows: vec![vec!["1".into(), "2".into()]],
+            notes: vec!["ΔE = 3.\nI = 4.".into(), "last".into()],
+        };
+        assert_eq!(
+            t.render(Format::Csv),
+            "a,\"b \"\"x\"\"\"\n1,2\n# ΔE = 3.\n# I = 4.\n# last\n"
+        );
     }
 
     #[test]

@@ -14,26 +14,17 @@ use super::{Ctx, PER_DEGREE, Sheet, short, sig};
 use crate::diagram::{Axis, Plot};
 use crate::dynamics::turning::total_torque;
 use crate::dynamics::{Flywheel, TurningMoment};
-use crate::error::{Error, Field, Result};
+use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 
 /// The coefficient of fluctuation of speed drawn when none is asked for.
 pub(crate) const DEFAULT_COEFFICIENT: f64 = 0.02;
 
-/// The coefficient asked for (`--fluctuation`), else the default; refused
-/// unless 0 < C_s < 2 (at 2 the least speed would be zero).
+/// The coefficient asked for, else the default; refused unless
+/// 0 < C_s < 2 ([`crate::dynamics::checked_coefficient`]).
 fn coefficient(ctx: &Ctx) -> Result<f64> {
-    let c = ctx.options.fluctuation.unwrap_or(DEFAULT_COEFFICIENT);
-    if c > 0.0 && c < 2.0 {
-        Ok(c)
-    } else {
-        Err(Error::OutOfRange {
-            name: Field::Fluctuation,
-            value: c,
-            reason: "the coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω is above 0 and below 2 (where the least speed would be zero)".into(),
-        })
-    }
+    crate::dynamics::checked_coefficient(ctx.options.fluctuation.unwrap_or(DEFAULT_COEFFICIENT))
 }
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {

@@ -230,7 +230,7 @@ pub(super) fn stored(engine: &Engine, tm: &TurningMoment, deg: f64) -> f64 {
     let before = lobe.energy - lobe.area;
     let excess = |x: f64| total_torque(engine, &[0.0], x) - tm.mean;
     let from = lobe.from_deg.to_radians();
-    before + integrate(&excess, from, t.max(from), tm.tolerance)
+    before + integrate(&excess, from, t.max(from), tm.tolerance).value
 }
 
 /// T on [a, b] degrees as a curve with its slope by central differences
