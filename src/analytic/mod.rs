@@ -4,5 +4,6 @@
 
 pub mod approx;
 pub mod calibration;
+pub mod harmonics;
 pub mod kinematics;
 pub mod statics;

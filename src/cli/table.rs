@@ -20,6 +20,10 @@ pub enum TableName {
     Forces,
     /// Engine dynamics against θ: gas and inertia forces, piston effort, rod force, thrust on the guides, crank effort F·OM and the rod's torque; the turn's mean torque, fluctuation of energy and flywheel as notes (engine flags --mass … --flywheel; default the §35 engine with m = 10)
     Dynamics,
+    /// Balance of an in-line engine of several cylinders (--cranks, --planes): the unbalanced primary and secondary forces and couples against θ ÷ m r ω², each polygon's resultant and the verdict as notes (default: four cylinders, flat crank 0,180,180,0, equal pitch; n = l/r from --crank and --rod, §35's 6)
+    Balance,
+    /// The piston's acceleration of an in-line engine as a series cos θ + A₂ cos 2θ + A₄ cos 4θ + … (--order K harmonics, default 3): each exact coefficient and the largest error of the series cut after it (n = l/r from --crank and --rod, §35's 6)
+    Harmonics,
 }
 
 /// Output formats.
@@ -96,6 +100,20 @@ pub struct TableArgs {
     /// kinematics, 2 for forces]
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub decimals: Option<usize>,
+    /// Crank angles of an in-line engine's cylinders for balance, degrees
+    /// ahead of the first, comma-separated [default: 0,180,180,0]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub cranks: Option<String>,
+    /// Distances of the cylinders' lines of stroke from the reference
+    /// plane along the shaft for balance, in the length unit,
+    /// comma-separated (a couple depends on the plane where its force is
+    /// not balanced) [default: a pitch of 1 about the middle, −1.5,−0.5,0.5,1.5
+    /// for four]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub planes: Option<String>,
+    /// Harmonics cos 2θ … cos 2Kθ of the series for harmonics [default: 3]
+    #[arg(long, value_name = "K")]
+    pub order: Option<usize>,
     #[command(flatten)]
     pub units: UnitArgs,
     #[command(flatten)]
@@ -160,7 +178,49 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         TableName::Kinematics => kinematics(args, spec, decimals, format, out),
         TableName::Forces => forces(args, spec, decimals, format, out),
         TableName::Dynamics => dynamics(args, spec, decimals, format, out),
+        TableName::Balance => balance(args, spec, decimals, format, out),
+        TableName::Harmonics => harmonics(args, decimals, format, out),
     }
+}
+
+/// `table harmonics`: the acceleration's series and each cut's error.
+fn harmonics(args: &TableArgs, decimals: usize, format: Format, out: &mut Stdout) -> Result<()> {
+    let m = mechanism(args, 0.5, 3.0)?;
+    let order = args.order.unwrap_or(3);
+    let series = slider_crank::analytic::harmonics::Harmonics::new(m.ratio(), order)?;
+    let t = table::harmonics_table(&series, args.decimals.map_or(8, |_| decimals));
+    write_rows(format, &t, || t.rows.iter().cloned().map(Ok), out)
+}
+
+/// `table balance`: an in-line engine's unbalanced forces and couples.
+fn balance(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let m = mechanism(args, 0.5, 3.0)?;
+    let cranks = match &args.cranks {
+        Some(s) => parse_list(s, "crank angle", false)?,
+        None => vec![0.0, 180.0, 180.0, 0.0],
+    };
+    let planes = match &args.planes {
+        Some(s) => parse_list(s, "plane", false)?,
+        // Equal pitch about the middle of the engine, where the books
+        // take the reference plane.
+        None => {
+            let middle = (cranks.len() as f64 - 1.0) / 2.0;
+            (0..cranks.len()).map(|i| i as f64 - middle).collect()
+        }
+    };
+    let engine = slider_crank::dynamics::InlineEngine::new(&cranks, &planes, m.ratio())?;
+    let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
+    let units = args.units.units(Units::FOOT_POUND);
+    let head = table::balance_head(&engine, &units);
+    guard_angles(args, "table balance", &spec, &head)?;
+    let row = |d| table::balance_row(&engine, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
 }
 
 /// `table obliquity`: φ for the ratios `ratios` at the angles `spec`.
@@ -307,6 +367,9 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
         ("--phases", args.turn.phases.is_some()),
         ("--fluctuation", args.turn.fluctuation.is_some()),
         ("--flywheel", args.turn.flywheel.is_some()),
+        ("--cranks", args.cranks.is_some()),
+        ("--planes", args.planes.is_some()),
+        ("--order", args.order.is_some()),
     ];
     let used: &[&str] = match args.name {
         TableName::Obliquity | TableName::AccelerationFactor => &["--n"],
@@ -349,6 +412,15 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
             "--fluctuation",
             "--flywheel",
         ],
+        TableName::Balance => &[
+            "--crank",
+            "--rod",
+            "--decimals",
+            "--unit",
+            "--cranks",
+            "--planes",
+        ],
+        TableName::Harmonics => &["--crank", "--rod", "--decimals", "--order"],
     };
     given
         .into_iter()

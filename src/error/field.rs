@@ -120,6 +120,9 @@ pub enum Field {
     Cylinders,
     /// The crank phase of a cylinder.
     Phase,
+    /// The distance of a cylinder's line of stroke from the reference
+    /// plane along the crank shaft.
+    Plane,
     /// The flywheel's moment of inertia.
     Flywheel,
     /// The coefficient of fluctuation of speed C_s.
@@ -130,6 +133,8 @@ pub enum Field {
     Fluctuation,
     /// The size of a handout's class.
     Class,
+    /// The order of a series: how many harmonics it runs to.
+    Order,
     /// The decimals of a table's numbers.
     Decimals,
 }
@@ -189,11 +194,13 @@ impl Field {
             Field::RodGyration => "rod gyration",
             Field::Cylinders => "cylinders",
             Field::Phase => "phase",
+            Field::Plane => "plane",
             Field::Flywheel => "flywheel",
             Field::FluctuationOfSpeed => "fluctuation of speed",
             Field::FluctuationOfEnergy => "fluctuation of energy",
             Field::Fluctuation => "fluctuation",
             Field::Class => "class",
+            Field::Order => "order",
             Field::Decimals => "decimals",
         }
     }

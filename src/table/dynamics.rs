@@ -124,10 +124,15 @@ pub fn dynamics_row(
         fixed(at.torque, decimals),
     ];
     if phases_deg.len() > 1 {
-        // The whole turns of the row's angle carried by the phases:
-        // cylinder i at θ + δ_i, θ past 360° on a four-stroke cycle.
-        let turn = degrees.div_euclid(360.0);
-        let shifted: Vec<f64> = phases_deg.iter().map(|d| d + 360.0 * turn).collect();
+        // The turn of the cycle of the row's angle carried by the phases
+        // (cylinder i at θ + δ_i, θ past 360° on a four-stroke cycle),
+        // each phase first reduced exactly modulo the cycle.
+        let turns = engine.gas().turns() as f64;
+        let turn = degrees.div_euclid(360.0).rem_euclid(turns);
+        let shifted: Vec<f64> = phases_deg
+            .iter()
+            .map(|d| d % (360.0 * turns) + 360.0 * turn)
+            .collect();
         row.push(fixed(
             engine.torque_of_cylinders(&shifted, angle)?,
             decimals,

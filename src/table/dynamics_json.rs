@@ -3,7 +3,7 @@
 //! package.
 
 use crate::angle::Angle;
-use crate::dynamics::{Engine, EnginePose, unbalanced_forces};
+use crate::dynamics::{Engine, EngineLoads, EnginePose, unbalanced_forces};
 use crate::units::Units;
 use serde_json::{Value, json};
 
@@ -20,8 +20,9 @@ pub fn mass_unit(units: &Units) -> String {
 
 /// The dynamics of `engine` at `angle` (its pose `at`) as `analyze
 /// --json` writes them: forces along the stroke, the crank effort by
-/// Ng's OM and exactly, the torque, the unbalanced forces, and the rod's
-/// inertia (`null` for a massless rod).
+/// Ng's OM and exactly, the torque, the unbalanced forces, the rod's
+/// inertia (`null` for a massless rod) and the forces of the whole engine
+/// with it (`whole_engine`).
 pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
     let b = unbalanced_forces(engine, angle);
     let rod = at.rod.map_or(Value::Null, |r| {
@@ -57,5 +58,21 @@ pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Uni
             "exact": num(b.exact), "remainder": num(b.remainder),
         },
         "rod": rod,
+        "whole_engine": loads_json(&at.loads),
+    })
+}
+
+/// The forces of the whole engine, the rod's inertia included
+/// ([`EngineLoads`]): with a massless rod the same as the reciprocating
+/// parts' above.
+fn loads_json(l: &EngineLoads) -> Value {
+    let pair = |v: [f64; 2]| [num(v[0]), num(v[1])];
+    json!({
+        "crosshead_pin_load": pair(l.crosshead_pin),
+        "crank_pin_load": pair(l.crank_pin),
+        "rod_force": num(l.rod_force),
+        "guide_thrust": num(l.guide_thrust),
+        "piston_effort_equivalent": num(l.piston_effort_equivalent),
+        "shaking_force": pair(l.shaking_force),
     })
 }

@@ -1,10 +1,12 @@
 //! The printed tables: the textbook's obliquity and acceleration-factor
 //! tables, kinematics sweeps and Ng's Table 2, in text, Markdown or CSV.
 
+mod balance;
 mod chain_json;
 mod check_report;
 mod dynamics;
 mod dynamics_json;
+mod harmonics;
 mod reading_json;
 
 use crate::analytic::approx::acceleration_factor;
@@ -16,6 +18,7 @@ use crate::mechanism::SliderCrank;
 pub use crate::number::fixed;
 use crate::number::{angle_cell, plain};
 use crate::units::Units;
+pub use balance::{balance_head, balance_row};
 pub use chain_json::{
     CHAIN_TOLERANCE, centre_json, chain_check_report, grashof_name, inversion_json,
     quadric_check_title, quadric_json, slot_check_title, slot_json,
@@ -23,6 +26,7 @@ pub use chain_json::{
 pub use check_report::{DEFAULT_ULPS, MAX_TOLERANCE, check_allowance, engine_check_report};
 pub use dynamics::{dynamics_head, dynamics_row, example_table};
 pub use dynamics_json::{dynamics_json, mass_unit};
+pub use harmonics::harmonics_table;
 pub use reading_json::ReadingJson;
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).

@@ -132,9 +132,14 @@ fn remainder_plot(ctx: &Ctx, k: f64, rect: PageRect) -> Result<(Plot, f64)> {
         ctx.tolerance,
         ctx.font,
     )?
-    .with_caption(
-        "(b) What the two terms leave out: the higher harmonics, of the order of *m\u{a0}r*ω²/*n*³",
-    );
+    .with_caption(if ctx.mechanism.offset() == 0.0 {
+        "(b) What the two terms leave out: the higher harmonics, of the order of *m\u{a0}r*ω²/*n*³"
+    } else {
+        // With an offset x_A = r cos θ + l − (r sin θ − e)²/2l − …
+        // carries e r sin θ / l: a primary term in sin θ of the order of
+        // m r ω² e/l that the in-line series leaves out.
+        "(b) What the two terms leave out: with the offset, a term in sin θ of the order of *m\u{a0}r*ω²*e*/*l*, and the higher harmonics"
+    });
     let curve = against_angle(ctx.mechanism, remainder);
     plot.curve(
         "curve-remainder",
