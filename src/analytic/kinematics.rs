@@ -50,7 +50,8 @@ pub const MAX_RPM: f64 = 9e100;
 
 /// A crank speed given in revolutions per minute as ω in rad/s, checked as
 /// `--rpm` is: finite, |rpm| ≤ [`MAX_RPM`], and the ω it gives within
-/// [`check_omega`]'s range (a tiny non-zero speed is refused).
+/// [`check_omega`]'s range (a tiny non-zero speed is refused, also where
+/// its ω would underflow to 0).
 pub fn omega_from_rpm(rpm: f64) -> Result<f64> {
     let rpm = finite(Field::Rpm, rpm)?;
     if rpm.abs() > MAX_RPM {
@@ -60,7 +61,19 @@ pub fn omega_from_rpm(rpm: f64) -> Result<f64> {
             reason: format!("a crank speed is at most {MAX_RPM:e} rpm"),
         });
     }
-    check_omega(rpm_to_omega(rpm))
+    let omega = rpm_to_omega(rpm);
+    if rpm != 0.0 && omega == 0.0 {
+        // A speed so small that ω underflows (5e-324 rpm) is as tiny as
+        // one check_omega refuses, not a crank at rest.
+        return Err(Error::OutOfRange {
+            name: Field::Rpm,
+            value: rpm,
+            reason: format!(
+                "a crank speed is 0 or at least {MIN_OMEGA:e} rad/s (give it per a longer unit of time)"
+            ),
+        });
+    }
+    check_omega(omega)
 }
 
 /// Slider and rod motion at one pose for a constant crank speed ω (rad/s,
@@ -192,6 +205,21 @@ mod tests {
         assert!(check_omega(1e-300).is_err());
         assert_eq!(check_omega(0.0), Ok(0.0));
         assert_eq!(check_omega(-1e-100), Ok(-1e-100));
+    }
+
+    #[test]
+    fn a_speed_whose_omega_underflows_is_refused_as_tiny() {
+        // 5e-324 rpm × 2π/60 rounds to ω = 0: refused as 1e-300 rpm is,
+        // never taken for a crank at rest.
+        for rpm in [5e-324, -5e-324, 1e-300] {
+            let e = omega_from_rpm(rpm).unwrap_err().to_string();
+            assert!(
+                e.contains("is out of range: a crank speed is 0 or at least"),
+                "{e}"
+            );
+        }
+        assert_eq!(omega_from_rpm(0.0).unwrap(), 0.0);
+        assert_eq!(omega_from_rpm(-0.0).unwrap(), 0.0);
     }
 
     #[test]

@@ -47,6 +47,11 @@ pub const DEFAULT_PERIOD: f64 = 4.0;
 /// The longest period, in seconds: an hour per revolution.
 pub const MAX_PERIOD: f64 = 3600.0;
 
+/// The shortest period, in seconds: a millisecond per revolution (below
+/// it no screen shows a frame), so that a period is written as given, in
+/// a few digits.
+pub const MIN_PERIOD: f64 = 1e-3;
+
 /// One revolution of a mechanism figure: the still frames and the time
 /// the revolution takes.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,7 +73,8 @@ impl Animation {
     /// angles when it holds some), so a pose of the animation never
     /// reaches past the page and a different `count` keeps the same view.
     /// Errors when `count` is outside [`MIN_FRAMES`]..=[`MAX_FRAMES`] or
-    /// `period` is not a finite number of seconds in (0, [`MAX_PERIOD`]].
+    /// `period` is not a finite number of seconds in [[`MIN_PERIOD`],
+    /// [`MAX_PERIOD`]].
     pub fn new(scene: &Scene, count: usize, period: f64) -> Result<Self> {
         Self::with_progress(scene, count, period, |_, _| {})
     }
@@ -315,11 +321,11 @@ fn check_period(period: f64) -> Result<f64> {
             value: period,
         });
     }
-    if period <= 0.0 || period > MAX_PERIOD {
+    if !(MIN_PERIOD..=MAX_PERIOD).contains(&period) {
         return Err(Error::OutOfRange {
             name: Field::Period,
             value: period,
-            reason: format!("a revolution takes more than 0 and at most {MAX_PERIOD} seconds"),
+            reason: format!("a revolution takes from {MIN_PERIOD} to {MAX_PERIOD} seconds"),
         });
     }
     Ok(period)
@@ -356,6 +362,19 @@ mod tests {
 
     fn engine() -> Scene {
         Scene::new(SliderCrank::in_line(0.5, 3.0).unwrap(), Angle::deg(30.0))
+    }
+
+    #[test]
+    fn a_period_is_refused_below_a_millisecond_and_kept_as_given_above() {
+        for bad in [1e-5, 5e-324, 0.000_999, 3600.5] {
+            let e = check_period(bad).unwrap_err().to_string();
+            assert!(
+                e.contains("a revolution takes from 0.001 to 3600 seconds"),
+                "{e}"
+            );
+        }
+        assert_eq!(check_period(0.001).unwrap(), 0.001);
+        assert_eq!(check_period(0.0015).unwrap(), 0.0015);
     }
 
     #[test]

@@ -103,11 +103,13 @@ fn key_time(i: usize, count: usize) -> String {
     t.trim_end_matches('0').trim_end_matches('.').to_string()
 }
 
-/// A period in seconds, to the millisecond (at least one).
+/// A period in seconds, as given ([`super::MIN_PERIOD`] to
+/// [`super::MAX_PERIOD`]).
 pub(super) fn seconds(period: f64) -> String {
-    let ms = (period * 1000.0).round().max(1.0);
-    let s = format!("{:.3}", ms / 1000.0);
-    s.trim_end_matches('0').trim_end_matches('.').to_string()
+    // The shortest decimal that reads back as the period: exactly the
+    // duration asked for, in at most a score of digits over the periods
+    // allowed (1 ms to an hour).
+    format!("{period}")
 }
 
 /// The document's metadata: the first frame's, less what belongs to its
@@ -152,7 +154,10 @@ mod tests {
         assert!(keys[71].contains(r#"keyTimes="0;0.98611111""#));
         assert!(keys[5].contains(r#"dur="4s""#));
         assert_eq!(key_time(1, 2), "0.5");
-        assert_eq!(seconds(0.0001), "0.001");
+        // Written as given: 1.5 ms is not rounded to 2 ms.
+        assert_eq!(seconds(0.0015), "0.0015");
+        assert_eq!(seconds(0.001), "0.001");
         assert_eq!(seconds(2.5), "2.5");
+        assert_eq!(seconds(3600.0), "3600");
     }
 }

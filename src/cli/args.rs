@@ -196,11 +196,12 @@ fn parse_number(text: &str, what: &str) -> Result<f64> {
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum AnglePart {
     One(f64),
-    /// start + k · step for k = 0 ..= last.
+    /// start + k · step for k = 0 ..= last, never past `stop`.
     Range {
         start: f64,
         step: f64,
         last: u64,
+        stop: f64,
     },
 }
 
@@ -235,11 +236,22 @@ impl AngleSpec {
     /// The angles in order.
     pub fn iter(&self) -> impl Iterator<Item = f64> + '_ {
         self.parts.iter().flat_map(|p| {
-            let (start, step, last) = match *p {
-                AnglePart::One(a) => (a, 0.0, 0),
-                AnglePart::Range { start, step, last } => (start, step, last),
+            let (start, step, last, stop) = match *p {
+                AnglePart::One(a) => (a, 0.0, 0, a),
+                AnglePart::Range {
+                    start,
+                    step,
+                    last,
+                    stop,
+                } => (start, step, last, stop),
             };
-            (0..=last).map(move |k| start + step * k as f64)
+            (0..=last).map(move |k| {
+                let v = start + step * k as f64;
+                // A step's rounding never carries an angle past the STOP
+                // the range reached (0:0.3:0.1 ends at 0.3, not at
+                // 0.30000000000000004).
+                if (v - stop) * step > 0.0 { stop } else { v }
+            })
         })
     }
 
@@ -318,6 +330,7 @@ fn parse_part(part: &str) -> Result<AnglePart> {
                 start,
                 step,
                 last: count as u64,
+                stop,
             })
         }
         _ => Err(Error::invalid(
@@ -379,6 +392,17 @@ mod tests {
         );
         assert_eq!(parse_angles("90:0:-45").unwrap(), vec![90.0, 45.0, 0.0]);
         assert_eq!(parse_angles("0:1:0.1").unwrap().len(), 11);
+        // A step's rounding never carries the last angle past STOP:
+        // 3 × 0.1 is 0.30000000000000004.
+        assert_eq!(parse_angles("0:0.3:0.1").unwrap(), vec![0.0, 0.1, 0.2, 0.3]);
+        assert_eq!(parse_angles("0.3:0:-0.1").unwrap().last(), Some(&0.0));
+        for spec in ["0:0.7:0.1", "1:2.1:0.1", "-1:-0.3:0.1", "0.9:0.3:-0.2"] {
+            let stop: f64 = spec.split(':').nth(1).unwrap().parse().unwrap();
+            let step: f64 = spec.split(':').nth(2).unwrap().parse().unwrap();
+            for a in parse_angles(spec).unwrap() {
+                assert!((a - stop) * step <= 0.0, "{spec}: {a}");
+            }
+        }
         assert_eq!(parse_angles("10,20").unwrap(), vec![10.0, 20.0]);
         let spec = AngleSpec::parse("0:99999:1").unwrap();
         assert_eq!(spec.len(), 100_000);

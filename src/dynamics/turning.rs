@@ -80,13 +80,13 @@ pub struct TurningMoment {
 
 impl TurningMoment {
     /// The diagram of `engine` with cylinders at `phases_deg` (one 0 for a
-    /// single cylinder; an empty list is one cylinder).
+    /// single cylinder; an empty list is refused, not taken for one).
     ///
     /// Each phase is reduced exactly modulo the cycle before use (and
     /// `phases_deg` holds it so): 1e17° is 280° on a one-turn cycle, as it
     /// is in exact arithmetic.
     ///
-    /// Errors: a phase not finite, more than [`MAX_CYLINDERS`]; an engine
+    /// Errors: no phase, a phase not finite, more than [`MAX_CYLINDERS`]; an engine
     /// whose torque the quadrature cannot integrate to the tolerance
     /// within its budget ([`Error::Limit`]: near the limit of assembly the
     /// torque spikes at the dead centres), refused rather than answered
@@ -178,7 +178,12 @@ fn check_phases(phases: &[f64], turns: usize) -> Result<Vec<f64>> {
         });
     }
     if phases.is_empty() {
-        return Ok(vec![0.0]);
+        return Err(Error::OutOfRange {
+            name: Field::Cylinders,
+            value: 0.0,
+            reason: "an engine has at least one cylinder: give its phase, 0 for one cylinder"
+                .into(),
+        });
     }
     let cycle = 360.0 * turns as f64;
     phases
@@ -338,6 +343,7 @@ mod tests {
 
     #[test]
     fn phases_are_reduced_exactly_modulo_the_cycle() {
+        assert!(TurningMoment::new(&engine(), &[]).is_err());
         assert_eq!(reduce(1e17, 360.0), 280.0);
         assert_eq!(reduce(1e17, 720.0), 640.0);
         assert_eq!(reduce(-90.0, 360.0), 270.0);
