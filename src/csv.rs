@@ -28,6 +28,10 @@ fn bare(name: &str) -> String {
         .to_string()
 }
 
+/// Longest text a field of a data file may hold (a curve's or a
+/// method's name).
+pub(crate) const MAX_TEXT_CHARS: usize = 80;
+
 /// A name from the file as an error shows it: quoted, control and
 /// invisible characters escaped, cut after 40 characters.
 fn shown(name: &str) -> String {
@@ -145,12 +149,37 @@ impl Table {
             .collect()
     }
 
-    /// The column's texts.
+    /// The column's texts, each a name a figure may set: at most
+    /// [`MAX_TEXT_CHARS`] characters and fit as every user's text is
+    /// ([`crate::error::text_fault`]), so that a field costs what a name
+    /// does and writes well-formed output.
     // cannot fail: as for `numbers`, the column is one of `column`'s and
     // every row has a field for each.
     #[allow(clippy::indexing_slicing)]
-    pub(crate) fn texts(&self, column: usize) -> Vec<&str> {
-        self.rows.iter().map(|(_, f)| f[column].as_str()).collect()
+    pub(crate) fn texts(&self, column: usize) -> Result<Vec<&str>> {
+        self.rows
+            .iter()
+            .map(|(n, f)| {
+                let text = f[column].as_str();
+                let why = if text.chars().count() > MAX_TEXT_CHARS {
+                    Some(format!("it is longer than {MAX_TEXT_CHARS} characters"))
+                } else {
+                    crate::error::text_fault(text)
+                };
+                match why {
+                    None => Ok(text),
+                    Some(why) => Err(Error::invalid(
+                        self.input,
+                        format!(
+                            "{} line {n}: the {} {}: {why}",
+                            self.what,
+                            self.names[column],
+                            shown(text)
+                        ),
+                    )),
+                }
+            })
+            .collect()
     }
 
     /// Pairs of two numeric columns found by name.
@@ -166,6 +195,29 @@ mod tests {
     use super::*;
 
     #[test]
+    fn a_name_too_long_or_unfit_is_refused_at_its_line() {
+        let long = "x".repeat(100_000);
+        let t = Table::parse(&format!("curve,n\n{long},1\nok,2\n"), Input::Data, "d.csv").unwrap();
+        let e = t.texts(0).unwrap_err().to_string();
+        assert!(e.starts_with("d.csv line 2: the curve \"xxx"), "{e}");
+        assert!(e.ends_with("it is longer than 80 characters"), "{e}");
+        assert!(e.chars().count() < 200, "{e}");
+        for bad in ["a\u{FFFF}", "\u{202E}b", "c\u{200B}"] {
+            let t = Table::parse(&format!("curve,n\n{bad},1\n"), Input::Data, "d.csv").unwrap();
+            let e = t.texts(0).unwrap_err().to_string();
+            assert!(e.contains("it holds the"), "{e}");
+            assert!(!e.contains(bad), "the text is shown escaped: {e}");
+        }
+        let t = Table::parse(
+            &format!("curve,n\n{},1\n", "y".repeat(80)),
+            Input::Data,
+            "d",
+        )
+        .unwrap();
+        assert_eq!(t.texts(0).unwrap()[0].len(), 80);
+    }
+
+    #[test]
     fn reads_named_columns_with_units_and_comments() {
         let t = Table::parse(
             "# Ng, Table 2\nangle (deg), force_N\n40, 9.22\n\n50,7.65\n",
@@ -177,7 +229,7 @@ mod tests {
             t.pairs(&["angle"], &["force"]).unwrap(),
             [(40.0, 9.22), (50.0, 7.65)]
         );
-        assert_eq!(t.texts(0), ["40", "50"]);
+        assert_eq!(t.texts(0).unwrap(), ["40", "50"]);
     }
 
     #[test]

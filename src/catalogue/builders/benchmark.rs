@@ -129,8 +129,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 /// The rows of `table` of a method drawn with positive segments, error
 /// and time; refused where there are none.
 fn rows(table: &Table) -> Result<Vec<Row<'_>>> {
-    let curves = table.texts(table.column(&["curve"])?);
-    let methods = table.texts(table.column(&["method"])?);
+    let curves = table.texts(table.column(&["curve"])?)?;
+    let methods = table.texts(table.column(&["method"])?)?;
     let segments = table.numbers(table.column(&["segments"])?)?;
     let errors = table.numbers(table.column(&["measured"])?)?;
     let times = table.numbers(table.column(&["time"])?)?;
