@@ -175,13 +175,9 @@ fn obliquity(
     let spec = spec.unwrap_or(AngleSpec::parse("90")?);
     let first = spec.iter().next().unwrap_or(90.0);
     let head = table::obliquity(&ratios, first)?;
-    let (angles, n) = (spec.len(), ratios.len() as u64);
-    let rows = angles.saturating_mul(n);
-    args.guard.check(
-        "table obliquity",
-        (rows, &format!("{angles} angles × {n} ratios = {rows} rows")),
-        (head.headers.len() as u64, "columns"),
-    )?;
+    args.guard
+        .bound()
+        .check_obliquity(spec.len(), ratios.len() as u64, head.headers.len())?;
     let rows = || {
         spec.iter()
             .flat_map(|a| match table::obliquity(&ratios, a) {
@@ -206,11 +202,9 @@ fn acceleration_factor(
     let angles = spec
         .as_ref()
         .map_or(TEXTBOOK_ANGLES.len() as u64, AngleSpec::len);
-    args.guard.check(
-        "table acceleration-factor",
-        (angles, &format!("{angles} angles")),
-        (head.headers.len() as u64, "columns"),
-    )?;
+    args.guard
+        .bound()
+        .check_angles("table acceleration-factor", angles, head.headers.len())?;
     let row = |d: f64| {
         let t = table::acceleration_factor_table(&ratios, &[d])?;
         Ok(t.rows.into_iter().next().unwrap_or_default())
@@ -364,12 +358,9 @@ fn guard_angles(
     spec: &AngleSpec,
     head: &table::Table,
 ) -> Result<()> {
-    let angles = spec.len();
-    args.guard.check(
-        command,
-        (angles, &format!("{angles} angles")),
-        (head.headers.len() as u64, "columns"),
-    )
+    args.guard
+        .bound()
+        .check_angles(command, spec.len(), head.headers.len())
 }
 
 /// `table dynamics`: the engine's forces and torques at each angle; the

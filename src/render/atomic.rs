@@ -172,6 +172,71 @@ pub fn write_atomic_with(
     }
 }
 
+/// Writes every file of `files` (a path and its bytes) whole, or none of
+/// them: a sheet and its answer key, a class's sheets. Each path is
+/// written as [`write_atomic`] writes one (a link kept and its target
+/// replaced, an existing file's permissions kept), and every refusal
+/// [`write_atomic`] makes (a directory, a write-protected file, a missing
+/// folder, a loop of links) comes before any file is touched.
+///
+/// The regular files are first written under unpredictable temporary
+/// names (`.slider-crank-…`, made exclusively in each target's directory,
+/// never following a link planted there), then renamed over their targets
+/// one after another with an interruption held off until the last: a
+/// failure while any is written (a full disk, an unwritable folder)
+/// removes the temporary files and leaves every old file as it was. A
+/// device or FIFO among them is written in place after the others are
+/// staged and before any is renamed (what it received cannot be taken
+/// back). Only a rename failing part way (the folder removed meanwhile)
+/// leaves the files renamed before it.
+///
+/// `each` is told of each file (its number from 1, its path) as it is
+/// written, for a progress line.
+pub fn write_atomic_all<P: AsRef<Path>, B: AsRef<[u8]>>(
+    files: &[(P, B)],
+    mut each: impl FnMut(usize, &Path),
+) -> Result<()> {
+    let fail = |path: &Path| {
+        let path = path.to_path_buf();
+        move |e: std::io::Error| Error::Io {
+            message: format!("cannot write {}: {e}", path.display()),
+            path: Some(path.clone()),
+            source: Some(Arc::new(e)),
+        }
+    };
+    let targets = files
+        .iter()
+        .map(|(p, _)| output_target(p.as_ref()))
+        .collect::<Result<Vec<_>>>()?;
+    let mut staged = Vec::new();
+    let mut direct = Vec::new();
+    for (i, ((path, bytes), target)) in files.iter().zip(targets).enumerate() {
+        let path = path.as_ref();
+        each(i + 1, path);
+        match target {
+            OutputTarget::Replace(p) => {
+                let (mut tmp, pending) = make_pending(|| temporary(&p)).map_err(fail(path))?;
+                tmp.write_all(bytes.as_ref()).map_err(fail(path))?;
+                staged.push((path, p, tmp, pending));
+            }
+            OutputTarget::Direct(p) => direct.push((path, p, bytes.as_ref())),
+        }
+    }
+    for (path, p, bytes) in direct {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open(&p)
+            .and_then(|mut f| f.write_all(bytes))
+            .map_err(fail(path))?;
+    }
+    super::pending::uninterrupted(|| {
+        for (path, p, tmp, _pending) in staged {
+            persist(&p, tmp).map_err(fail(path))?;
+        }
+        Ok(())
+    })
+}
+
 /// Replaces the regular file `path` (or creates it) through a temporary
 /// file in its directory, written by `fill`.
 fn replace(
