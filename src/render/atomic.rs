@@ -344,4 +344,50 @@ mod tests {
         let err = write_atomic(Path::new("/tmp"), b"x").unwrap_err();
         assert_eq!(err.to_string(), "cannot write /tmp: it is a directory");
     }
+
+    #[cfg(unix)]
+    #[test]
+    fn several_files_are_written_all_or_none() {
+        let dir = tempfile::tempdir().unwrap();
+        let sheet = dir.path().join("sheet.html");
+        let key = dir.path().join("sheet-key.html");
+        let names = || {
+            let mut n: Vec<_> = std::fs::read_dir(dir.path())
+                .unwrap()
+                .map(|e| e.unwrap().file_name().into_string().unwrap())
+                .collect();
+            n.sort();
+            n
+        };
+        // The key's name is a folder: refused before the sheet is made.
+        std::fs::create_dir(&key).unwrap();
+        let files = [(&sheet, "sheet"), (&key, "key")];
+        let err = write_atomic_all(&files, |_, _| ()).unwrap_err();
+        assert!(err.to_string().ends_with("it is a directory"), "{err}");
+        assert_eq!(names(), ["sheet-key.html"]);
+        // An old sheet is kept when its key is write-protected.
+        std::fs::remove_dir(&key).unwrap();
+        std::fs::write(&sheet, "old sheet").unwrap();
+        std::fs::write(&key, "old key").unwrap();
+        let protected = std::os::unix::fs::PermissionsExt::from_mode(0o444);
+        std::fs::set_permissions(&key, protected).unwrap();
+        assert!(write_atomic_all(&files, |_, _| ()).is_err());
+        assert_eq!(std::fs::read_to_string(&sheet).unwrap(), "old sheet");
+        assert_eq!(names(), ["sheet-key.html", "sheet.html"]);
+        // Both written, each told in turn; a link at a target is kept.
+        let writable = std::os::unix::fs::PermissionsExt::from_mode(0o644);
+        std::fs::set_permissions(&key, writable).unwrap();
+        std::fs::remove_file(&sheet).unwrap();
+        std::os::unix::fs::symlink("real.html", &sheet).unwrap();
+        let mut told = Vec::new();
+        write_atomic_all(&files, |i, p| told.push((i, p.to_path_buf()))).unwrap();
+        assert_eq!(told, [(1, sheet.clone()), (2, key.clone())]);
+        assert!(sheet.symlink_metadata().unwrap().file_type().is_symlink());
+        assert_eq!(
+            std::fs::read_to_string(dir.path().join("real.html")).unwrap(),
+            "sheet"
+        );
+        assert_eq!(std::fs::read_to_string(&key).unwrap(), "key");
+        assert_eq!(names(), ["real.html", "sheet-key.html", "sheet.html"]);
+    }
 }
