@@ -548,3 +548,23 @@ fn a_sheet_is_drawn_at_the_round_scale_it_states() {
         assert!(width <= 180.0 + 1e-9, "{width} mm");
     }
 }
+
+#[test]
+fn an_exercise_whose_key_cannot_be_written_keeps_the_old_sheet() {
+    // The sheet and its key are written both or neither: a key that
+    // cannot be written leaves the old sheet, not a new sheet without its
+    // key (the sheet was replaced before the key failed).
+    let dir = tempfile::tempdir().unwrap();
+    let sheet = dir.path().join("sheet.html");
+    std::fs::write(&sheet, "old sheet").unwrap();
+    std::fs::create_dir(dir.path().join("sheet-key.html")).unwrap();
+    let result = run(&["handout", "--exercise", "--out", sheet.to_str().unwrap()]);
+    assert_eq!(result.status.code(), Some(2));
+    let stderr = String::from_utf8(result.stderr).unwrap();
+    assert!(
+        stderr.ends_with("sheet-key.html: it is a directory\n"),
+        "{stderr}"
+    );
+    assert_eq!(read(&sheet), "old sheet");
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+}

@@ -506,3 +506,31 @@ fn every_point_of_work_in_proportion_is_tested() {
         }
     }
 }
+
+/// Each row of "The Python package" names tests that exist: pytest
+/// functions under python/tests or Rust tests under src/ and tests/.
+#[test]
+fn every_point_of_the_python_package_is_tested() {
+    let rows = five_cell_rows("## The Python package", |l| !l.starts_with("| point"));
+    let points: std::collections::BTreeSet<&str> = rows.iter().map(|r| r[0].as_str()).collect();
+    assert_eq!(points, ["files", "guard", "links"].into_iter().collect());
+    let mut sources = sources();
+    let python = Path::new(env!("CARGO_MANIFEST_DIR")).join("python/tests");
+    for entry in std::fs::read_dir(python).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "py") {
+            sources.push_str(&std::fs::read_to_string(path).unwrap());
+        }
+    }
+    for row in &rows {
+        let names = spans(&row[4]);
+        assert!(!names.is_empty(), "{}: no test named", row[1]);
+        for name in names {
+            assert!(
+                sources.contains(&format!("fn {name}("))
+                    || sources.contains(&format!("def {name}(")),
+                "no test function {name}"
+            );
+        }
+    }
+}

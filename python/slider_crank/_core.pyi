@@ -19,6 +19,7 @@ __all__ = [
     "handout",
     "table",
     "gallery",
+    "write_files",
     "Engine",
     "check_quadric",
     "check_slot",
@@ -31,11 +32,15 @@ __all__ = [
     "VERSION",
     "EXAMPLE_MASS",
     "DYNAMICS_ROWS",
+    "DEFAULT_MAX_CELLS",
+    "DEFAULT_RPM",
 ]
 
 VERSION: str
 EXAMPLE_MASS: float
 DYNAMICS_ROWS: int
+DEFAULT_MAX_CELLS: int
+DEFAULT_RPM: float
 
 def check_engine(
     crank: float, rod: float, offset: float, unit: str, force_unit: str
@@ -104,7 +109,7 @@ def table(
     name: str,
     format: str = "text",
     n: Optional[list[float]] = None,
-    angles: Optional[list[float]] = None,
+    angles: Optional[npt.NDArray[np.float64]] = None,
     crank: Optional[float] = None,
     rod: Optional[float] = None,
     offset: float = 0.0,
@@ -119,8 +124,10 @@ def table(
     phases: Optional[list[float]] = None,
     fluctuation: Optional[float] = None,
     flywheel: Optional[float] = None,
+    max_cells: int = ...,
 ) -> str: ...
 def gallery(out: str, only: Optional[list[str]] = None) -> list[str]: ...
+def write_files(files: list[tuple[str, str]]) -> None: ...
 
 @final
 class Engine:
@@ -185,6 +192,7 @@ def chain_check(
     slot: Optional[tuple[float, float, float, float]] = None,
     samples: int = 100000,
     tolerance: Optional[float] = None,
+    max_cells: int = ...,
 ) -> tuple[str, bool, list[tuple[str, float, float, float, int, bool]]]: ...
 def engine_check(
     crank: float,
@@ -192,4 +200,5 @@ def engine_check(
     offset: float,
     samples: int = 100000,
     tolerance: Optional[float] = None,
+    max_cells: int = ...,
 ) -> tuple[str, bool, list[tuple[str, float, float, float, int, bool, float]]]: ...

@@ -134,15 +134,17 @@ type CheckRow = (String, f64, f64, f64, usize, bool);
 /// = crank, rod, offset, ρ): the report the command prints, whether every
 /// quantity passed, and the rows.
 #[pyfunction]
-#[pyo3(signature = (links=None, slot=None, samples=100_000, tolerance=None))]
+#[pyo3(signature = (links=None, slot=None, samples=100_000, tolerance=None,
+    max_cells=slider_crank::table::DEFAULT_MAX_CELLS))]
 fn chain_check(
     py: Python<'_>,
     links: Option<[f64; 4]>,
     slot: Option<[f64; 4]>,
     samples: usize,
     tolerance: Option<f64>,
+    max_cells: u64,
 ) -> PyResult<(String, bool, Vec<CheckRow>)> {
-    let tolerance = crate::check::check_arguments(samples, tolerance, CHAIN_TOLERANCE)?;
+    let tolerance = crate::check::check_arguments(samples, tolerance, CHAIN_TOLERANCE, max_cells)?;
     let (title, rows) = match (links, slot) {
         (Some(links), _) => {
             let q = quadric(links)?;

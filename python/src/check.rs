@@ -3,37 +3,37 @@
 //! library's `slider_crank::table::engine_check_report`).
 
 use crate::py_err;
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use slider_crank::SliderCrank;
 use slider_crank::construct::{Quantity, sweep};
-use slider_crank::table::{DEFAULT_ULPS, check_allowance, engine_check_report};
-
-/// The command line's default `--max-cells`.
-const MAX_CELLS: u64 = 50_000_000;
+use slider_crank::table::{
+    DEFAULT_MAX_CELLS, DEFAULT_ULPS, MaxCells, check_allowance, engine_check_report,
+};
 
 /// One row: quantity, worst scaled difference, κ there, where (degrees),
 /// poses compared, passed, and the difference in ulps × κ.
 type Row = (String, f64, f64, f64, usize, bool, f64);
 
-/// Checks `samples` and `tolerance` as `check` does; the tolerance
-/// (4 ulps when not given).
-pub fn check_arguments(samples: usize, tolerance: Option<f64>, default: f64) -> PyResult<f64> {
+/// Checks `samples` and `tolerance` as `check` does, and the poses ×
+/// quantities against `max_cells` (the library's guard, `--max-cells`);
+/// the tolerance (`default` when not given).
+pub fn check_arguments(
+    samples: usize,
+    tolerance: Option<f64>,
+    default: f64,
+    max_cells: u64,
+) -> PyResult<f64> {
     let t = check_allowance(samples, tolerance, default).map_err(py_err)?;
-    let quantities = Quantity::ALL.len();
-    let cells = samples as u128 * quantities as u128;
-    if cells > u128::from(MAX_CELLS) {
-        return Err(PyValueError::new_err(format!(
-            "check asks for {samples} poses × {quantities} quantities = {cells} values, more than {MAX_CELLS}: give fewer samples"
-        )));
-    }
+    MaxCells::keyword(max_cells)
+        .check_poses(samples as u64, Quantity::ALL.len())
+        .map_err(py_err)?;
     Ok(t)
 }
 
 /// `slider-crank check --crank --rod --offset --samples --tolerance`: the
 /// report it prints, whether every quantity passed, and the rows.
 #[pyfunction]
-#[pyo3(signature = (crank, rod, offset, samples=100_000, tolerance=None))]
+#[pyo3(signature = (crank, rod, offset, samples=100_000, tolerance=None, max_cells=DEFAULT_MAX_CELLS))]
 pub fn engine_check(
     py: Python<'_>,
     crank: f64,
@@ -41,9 +41,10 @@ pub fn engine_check(
     offset: f64,
     samples: usize,
     tolerance: Option<f64>,
+    max_cells: u64,
 ) -> PyResult<(String, bool, Vec<Row>)> {
     let m = SliderCrank::new(crank, rod, offset).map_err(py_err)?;
-    let tolerance = check_arguments(samples, tolerance, DEFAULT_ULPS * f64::EPSILON)?;
+    let tolerance = check_arguments(samples, tolerance, DEFAULT_ULPS * f64::EPSILON, max_cells)?;
     let report = py.detach(|| sweep(&m, samples));
     let (out, ok) = engine_check_report(&m, &report, tolerance);
     let allowed = tolerance / f64::EPSILON;

@@ -17,7 +17,8 @@ use slider_crank::construct::{Graphical, Reading};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
-use slider_crank::render::{FileFormat, to_svg, write_atomic};
+use slider_crank::render::{FileFormat, to_svg, write_atomic, write_atomic_all};
+use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
 use slider_crank::{
     Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units,
 };
@@ -61,8 +62,12 @@ fn check_engine(crank: f64, rod: f64, offset: f64, unit: &str, force_unit: &str)
     Ok(())
 }
 
+/// The crank speed the command line takes when neither `--rpm` nor
+/// `--omega` is given, in rpm (the §35 engine's).
+const DEFAULT_RPM: f64 = 250.0;
+
 /// ω in rad/s from `rpm` or `omega` (at most one given), checked as
-/// `--rpm` and `--omega` are; 250 rpm when neither is.
+/// `--rpm` and `--omega` are; [`DEFAULT_RPM`] when neither is.
 #[pyfunction]
 #[pyo3(signature = (rpm=None, omega=None))]
 fn crank_speed(rpm: Option<f64>, omega: Option<f64>) -> PyResult<f64> {
@@ -74,7 +79,7 @@ fn crank_speed(rpm: Option<f64>, omega: Option<f64>) -> PyResult<f64> {
         }
         (_, Some(w)) => slider_crank::analytic::kinematics::check_omega(w),
         (Some(n), None) => slider_crank::omega_from_rpm(n),
-        (None, None) => Ok(slider_crank::rpm_to_omega(250.0)),
+        (None, None) => Ok(slider_crank::rpm_to_omega(DEFAULT_RPM)),
     };
     omega.map_err(py_err)
 }
@@ -444,19 +449,39 @@ fn ratios(given: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
     Ok(ratios)
 }
 
+/// The angles of a table: those given (a float64 array, never copied),
+/// or the table's own.
+enum Angles<'a> {
+    Given(&'a [f64]),
+    Own(Vec<f64>),
+}
+
+impl Angles<'_> {
+    fn slice(&self) -> &[f64] {
+        match self {
+            Angles::Given(a) => a,
+            Angles::Own(a) => a,
+        }
+    }
+}
+
 /// A table as `slider-crank table NAME` prints it, with its flags as
-/// arguments (`None`: the table's default).
+/// arguments (`None`: the table's default). Its size, rows × columns, is
+/// checked against `max_cells` (the library's guard, `--max-cells`)
+/// before any row is computed; the rows are then computed as the command
+/// line computes them, twice (once for the columns' widths, once
+/// written), so that only the text is held.
 #[pyfunction]
 #[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=0.0,
     rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None,
-    engine=None, phases=None, fluctuation=None, flywheel=None))]
+    engine=None, phases=None, fluctuation=None, flywheel=None, max_cells=DEFAULT_MAX_CELLS))]
 #[allow(clippy::too_many_arguments)]
 fn table(
     py: Python<'_>,
     name: &str,
     format: &str,
     n: Option<Vec<f64>>,
-    angles: Option<Vec<f64>>,
+    angles: Option<PyReadonlyArray1<'_, f64>>,
     crank: Option<f64>,
     rod: Option<f64>,
     offset: f64,
@@ -471,9 +496,11 @@ fn table(
     phases: Option<Vec<f64>>,
     fluctuation: Option<f64>,
     flywheel: Option<f64>,
+    max_cells: u64,
 ) -> PyResult<String> {
     use slider_crank::table::{self as t, Format, Head, Table};
     let format: Format = parse(format)?;
+    let bound = MaxCells::keyword(max_cells);
     let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
     if decimals > 17 {
         return Err(py_err(Error::OutOfRange {
@@ -482,7 +509,8 @@ fn table(
             reason: "at most 17 decimals are meaningful in f64".into(),
         }));
     }
-    if let Some(a) = angles.iter().flatten().find(|a| !a.is_finite()) {
+    let given = angles.as_ref().map(|a| a.as_slice()).transpose()?;
+    if let Some(a) = given.into_iter().flatten().find(|a| !a.is_finite()) {
         return Err(PyValueError::new_err(format!(
             "invalid angle '{a}': the angle must be a finite number of degrees"
         )));
@@ -497,48 +525,66 @@ fn table(
         }
         Ok(u)
     };
-    let angles_or = |d: &[f64]| angles.clone().unwrap_or_else(|| d.to_vec());
+    let angles_or = |d: &[f64]| given.map_or_else(|| Angles::Own(d.to_vec()), Angles::Given);
     let range = |a: f64, b: f64, step: f64| -> Vec<f64> {
         (0..=((b - a) / step) as usize)
             .map(|k| a + step * k as f64)
             .collect()
     };
-    let (head, rows): (Table, Vec<slider_crank::Result<Vec<String>>>) = match name {
+    // The table's head and its rows, one call per angle (a row of cells,
+    // or the rows of an angle for obliquity), checked against the bound.
+    type Rows<'r> = Box<dyn Fn(f64) -> slider_crank::Result<Vec<Vec<String>>> + Send + Sync + 'r>;
+    let one = |row: slider_crank::Result<Vec<String>>| row.map(|r| vec![r]);
+    let ratios_given = n;
+    let engine_ref = engine.as_ref().map(|e| e.get().engine());
+    let phases = phases.unwrap_or_else(|| vec![0.0]);
+    let (head, spec, rows): (Table, Angles<'_>, Rows<'_>) = match name {
         "obliquity" => {
-            let ratios = ratios(n, &[4.0, 5.0, 6.0])?;
+            let ratios = ratios(ratios_given, &[4.0, 5.0, 6.0])?;
             let spec = angles_or(&[90.0]);
-            let head =
-                t::obliquity(&ratios, spec.first().copied().unwrap_or(90.0)).map_err(py_err)?;
-            let rows = spec
-                .iter()
-                .flat_map(|&a| match t::obliquity(&ratios, a) {
-                    Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
-                    Err(e) => vec![Err(e)],
-                })
-                .collect();
-            (head, rows)
+            let head = t::obliquity(&ratios, spec.slice().first().copied().unwrap_or(90.0))
+                .map_err(py_err)?;
+            bound
+                .check_obliquity(
+                    spec.slice().len() as u64,
+                    ratios.len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let rows: Rows<'_> = Box::new(move |a| t::obliquity(&ratios, a).map(|t| t.rows));
+            (head, spec, rows)
         }
         "acceleration-factor" => {
-            let ratios = ratios(n, &t::TEXTBOOK_RATIOS)?;
+            let ratios = ratios(ratios_given, &t::TEXTBOOK_RATIOS)?;
             let head = t::acceleration_factor_table(&ratios, &[]).map_err(py_err)?;
-            let rows = angles_or(&t::TEXTBOOK_ANGLES)
-                .into_iter()
-                .map(|d| {
-                    let t = t::acceleration_factor_table(&ratios, &[d])?;
-                    Ok(t.rows.into_iter().next().unwrap_or_default())
-                })
-                .collect();
-            (head, rows)
+            let spec = angles_or(&t::TEXTBOOK_ANGLES);
+            bound
+                .check_angles(
+                    "table acceleration-factor",
+                    spec.slice().len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let rows: Rows<'_> = Box::new(move |d| {
+                let t = t::acceleration_factor_table(&ratios, &[d])?;
+                Ok(vec![t.rows.into_iter().next().unwrap_or_default()])
+            });
+            (head, spec, rows)
         }
         "kinematics" => {
             let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
             let w = crank_speed(rpm, omega)?;
             let head = t::kinematics_head(&m, w, &with_units(Units::FOOT_POUND)?);
-            let rows = angles_or(&range(0.0, 360.0, 30.0))
-                .into_iter()
-                .map(|d| t::kinematics_row(&m, w, d, decimals))
-                .collect();
-            (head, rows)
+            let spec = angles_or(&range(0.0, 360.0, 30.0));
+            bound
+                .check_angles(
+                    "table kinematics",
+                    spec.slice().len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let rows: Rows<'_> = Box::new(move |d| one(t::kinematics_row(&m, w, d, decimals)));
+            (head, spec, rows)
         }
         "forces" => {
             let m = self::engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
@@ -551,27 +597,37 @@ fn table(
             }
             let mu = friction.unwrap_or(1.0);
             let head = t::forces_head(&m, torque, mu, &with_units(Units::MILLIMETRE_NEWTON)?);
-            let rows = angles_or(&range(10.0, 160.0, 10.0))
-                .into_iter()
-                .map(|d| t::forces_row(&m, torque, mu, d, decimals))
-                .collect();
-            (head, rows)
+            let spec = angles_or(&range(10.0, 160.0, 10.0));
+            bound
+                .check_angles(
+                    "table forces",
+                    spec.slice().len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let rows: Rows<'_> = Box::new(move |d| one(t::forces_row(&m, torque, mu, d, decimals)));
+            (head, spec, rows)
         }
         "dynamics" => {
-            let engine =
-                engine.ok_or_else(|| PyValueError::new_err("table dynamics needs an engine"))?;
-            let engine = engine.get().engine();
-            let phases = phases.unwrap_or_else(|| vec![0.0]);
+            let engine = engine_ref
+                .ok_or_else(|| PyValueError::new_err("table dynamics needs an engine"))?;
             let ask = dynamics::flywheel_ask(fluctuation, flywheel)?;
             let units = with_units(Units::FOOT_POUND)?;
             let head = py
-                .detach(|| slider_crank::table::dynamics_head(engine, &phases, ask, &units))
+                .detach(|| t::dynamics_head(engine, &phases, ask, &units))
                 .map_err(py_err)?;
-            let rows = angles_or(&range(0.0, 360.0, 30.0))
-                .into_iter()
-                .map(|d| slider_crank::table::dynamics_row(engine, &phases, d, decimals))
-                .collect();
-            (head, rows)
+            let spec = angles_or(&range(0.0, 360.0, 30.0));
+            bound
+                .check_angles(
+                    "table dynamics",
+                    spec.slice().len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let phases = &phases;
+            let rows: Rows<'_> =
+                Box::new(move |d| one(t::dynamics_row(engine, phases, d, decimals)));
+            (head, spec, rows)
         }
         _ => {
             return Err(PyValueError::new_err(format!(
@@ -584,13 +640,33 @@ fn table(
         headers: &head.headers,
         notes: &head.notes,
     };
+    let angles = spec.slice();
     let mut text = String::new();
-    t::render_rows(format, &head, || rows.iter().cloned(), &mut |s| {
-        text.push_str(s);
-        Ok(())
+    py.detach(|| {
+        let each = || {
+            angles.iter().flat_map(|&a| match rows(a) {
+                Ok(rows) => rows.into_iter().map(Ok).collect::<Vec<_>>(),
+                Err(e) => vec![Err(e)],
+            })
+        };
+        t::render_rows(format, &head, each, &mut |s| {
+            text.push_str(s);
+            Ok(())
+        })
     })
     .map_err(py_err)?;
     Ok(text)
+}
+
+/// Writes each text of `files` to its path whole, or none of them, as the
+/// command line writes its files (the library's `write_atomic_all`): staged
+/// under unpredictable temporary names in each target's directory and
+/// renamed into place, a symbolic link at a target kept and its target
+/// replaced, a failure leaving every old file as it was.
+#[pyfunction]
+fn write_files(py: Python<'_>, files: Vec<(PathBuf, String)>) -> PyResult<()> {
+    py.detach(|| write_atomic_all(&files, |_, _| ()))
+        .map_err(py_err)
 }
 
 /// Writes the gallery `slider-crank gallery --out DIR [--only LIST]`
@@ -635,6 +711,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(handout, m)?)?;
     m.add_function(wrap_pyfunction!(table, m)?)?;
     m.add_function(wrap_pyfunction!(gallery, m)?)?;
+    m.add_function(wrap_pyfunction!(write_files, m)?)?;
+    m.add("DEFAULT_MAX_CELLS", DEFAULT_MAX_CELLS)?;
+    m.add("DEFAULT_RPM", DEFAULT_RPM)?;
     m.add_class::<dynamics::PyEngine>()?;
     m.add("EXAMPLE_MASS", slider_crank::dynamics::EXAMPLE_MASS)?;
     m.add("DYNAMICS_ROWS", dynamics::SWEEP_ROWS)?;

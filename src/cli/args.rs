@@ -2,6 +2,7 @@
 
 use clap::Args;
 use slider_crank::analytic::kinematics::{check_omega, omega_from_rpm};
+use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
 use slider_crank::{Error, Input, Result, SliderCrank, Unit, Units, rpm_to_omega};
 
 /// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
@@ -126,13 +127,8 @@ pub struct LoadArgs {
 /// bounded by [`GuardArgs`], not here.
 pub const MAX_RANGE: f64 = 9_007_199_254_740_992.0;
 
-/// The default of `--max-cells`: fifty million values, about a gigabyte
-/// of text and a minute of work (a million angles of `analyze --json` are
-/// 45 million).
-pub const DEFAULT_MAX_CELLS: u64 = 50_000_000;
-
 /// The one guard on the size of a request: the values a command computes
-/// (rows × columns), checked before any work.
+/// (rows × columns), checked before any work ([`MaxCells`]).
 #[derive(Debug, Clone, Args)]
 pub struct GuardArgs {
     /// Most values a command computes: rows × columns of a table, angles
@@ -150,26 +146,15 @@ pub struct GuardArgs {
 }
 
 impl GuardArgs {
-    /// Checks `rows` × `columns` against `--max-cells`; `rows_are` and
-    /// `columns_are` say what they are for the message (`100000 angles ×
-    /// 200 ratios = 20000000 rows`, `columns`).
-    pub fn check(
-        &self,
-        command: &str,
-        (rows, rows_are): (u64, &str),
-        (columns, columns_are): (u64, &str),
-    ) -> Result<()> {
-        let cells = u128::from(rows) * u128::from(columns);
-        if cells <= u128::from(self.max_cells) {
-            return Ok(());
-        }
-        Err(Error::invalid(
-            Input::Options,
-            format!(
-                "{command} asks for {rows_are} × {columns} {columns_are} = {cells} values, more than --max-cells {}: give --max-cells {cells} (or more) to compute them, or fewer angles",
-                self.max_cells
-            ),
-        ))
+    /// The library's bound, set by `--max-cells` and named as the flag.
+    pub fn bound(&self) -> MaxCells {
+        MaxCells::flag(self.max_cells)
+    }
+
+    /// Checks `rows` × `columns` against `--max-cells` (see
+    /// [`MaxCells::check`]).
+    pub fn check(&self, command: &str, rows: (u64, &str), columns: (u64, &str)) -> Result<()> {
+        self.bound().check(command, rows, columns)
     }
 }
 

@@ -40,12 +40,9 @@ pub struct CheckArgs {
 pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
     let m = args.mechanism.mechanism()?;
     let tolerance = check_allowance(args.samples, args.tolerance, DEFAULT_ULPS * f64::EPSILON)?;
-    let poses = args.samples as u64;
-    args.guard.check(
-        "check",
-        (poses, &format!("{poses} poses")),
-        (Quantity::ALL.len() as u64, "quantities"),
-    )?;
+    args.guard
+        .bound()
+        .check_poses(args.samples as u64, Quantity::ALL.len())?;
     let chain_tolerance = args.tolerance.unwrap_or(CHAIN_TOLERANCE);
     if let Some((text, ok)) = super::chain::check(m, &args.chain, args.samples, chain_tolerance)? {
         stdout.text(&text)?;

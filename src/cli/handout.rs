@@ -7,7 +7,7 @@ use super::args::{LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
 use super::output::{Progress, Stdout};
 use clap::Args;
 use slider_crank::handout::{Class, Handout, Paper};
-use slider_crank::render::write_atomic;
+use slider_crank::render::write_atomic_all;
 use slider_crank::{Angle, Error, Input, Result, Units};
 use std::path::{Path, PathBuf};
 
@@ -108,27 +108,16 @@ fn stem(path: &Path) -> Result<String> {
     }
 }
 
-/// Writes every file, each whole; if one cannot be written, the ones this
-/// run created are removed again, so that a failed run leaves no file.
+/// Writes every file whole, or none of them (the library's
+/// [`write_atomic_all`]): a sheet is never left without its key, nor a
+/// class without its answers.
 fn write_all(files: &[(PathBuf, String)], progress: Option<&mut Progress>) -> Result<()> {
-    let mut created: Vec<&Path> = Vec::new();
     let mut progress = progress;
-    for (i, (path, text)) in files.iter().enumerate() {
+    write_atomic_all(files, |i, path| {
         if let Some(p) = progress.as_deref_mut() {
-            p.show(i + 1, &path.display().to_string());
+            p.show(i, &path.display().to_string());
         }
-        let existed = path.exists();
-        if let Err(e) = write_atomic(path, text.as_bytes()) {
-            for p in created {
-                let _ = std::fs::remove_file(p);
-            }
-            return Err(e);
-        }
-        if !existed {
-            created.push(path);
-        }
-    }
-    Ok(())
+    })
 }
 
 /// Runs the subcommand: the files written; nothing on standard output.

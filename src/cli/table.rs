@@ -241,13 +241,9 @@ fn obliquity(
         head.title = "Error due to obliquity, in crank radii (textbook §35)".into();
         head.headers.insert(0, "θ (°)".into());
     }
-    let (angles, n) = (spec.len(), ratios.len() as u64);
-    let rows = angles.saturating_mul(n);
-    args.guard.check(
-        "table obliquity",
-        (rows, &format!("{angles} angles × {n} ratios = {rows} rows")),
-        (head.headers.len() as u64, "columns"),
-    )?;
+    args.guard
+        .bound()
+        .check_obliquity(spec.len(), ratios.len() as u64, head.headers.len())?;
     let rows = || {
         spec.iter()
             .flat_map(|a| match table::obliquity(&ratios, a) {
@@ -281,11 +277,9 @@ fn acceleration_factor(
     let angles = spec
         .as_ref()
         .map_or(TEXTBOOK_ANGLES.len() as u64, AngleSpec::len);
-    args.guard.check(
-        "table acceleration-factor",
-        (angles, &format!("{angles} angles")),
-        (head.headers.len() as u64, "columns"),
-    )?;
+    args.guard
+        .bound()
+        .check_angles("table acceleration-factor", angles, head.headers.len())?;
     let row = |d: f64| {
         let t = table::acceleration_factor_table(&ratios, &[d])?;
         Ok(t.rows.into_iter().next().unwrap_or_default())
@@ -451,12 +445,9 @@ fn guard_angles(
     spec: &AngleSpec,
     head: &table::Table,
 ) -> Result<()> {
-    let angles = spec.len();
-    args.guard.check(
-        command,
-        (angles, &format!("{angles} angles")),
-        (head.headers.len() as u64, "columns"),
-    )
+    args.guard
+        .bound()
+        .check_angles(command, spec.len(), head.headers.len())
 }
 
 /// `table dynamics`: the engine's forces and torques at each angle; the
@@ -480,7 +471,9 @@ fn dynamics(
     let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
     let units = args.units.units(Units::FOOT_POUND);
     let head = slider_crank::table::dynamics_head(&engine, &phases, args.turn.flywheel(), &units)?;
-    guard_angles(args, "table dynamics", &spec, &head)?;
+    args.guard
+        .bound()
+        .check_cylinders(spec.len(), head.headers.len(), phases.len())?;
     let row = |d| slider_crank::table::dynamics_row(&engine, &phases, d, decimals);
     write_angle_rows(format, &head, || spec.iter(), row, out)
 }

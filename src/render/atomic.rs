@@ -172,6 +172,71 @@ pub fn write_atomic_with(
     }
 }
 
+/// Writes every file of `files` (a path and its bytes) whole, or none of
+/// them: a sheet and its answer key, a class's sheets. Each path is
+/// written as [`write_atomic`] writes one (a link kept and its target
+/// replaced, an existing file's permissions kept), and every refusal
+/// [`write_atomic`] makes (a directory, a write-protected file, a missing
+/// folder, a loop of links) comes before any file is touched.
+///
+/// The regular files are first written under unpredictable temporary
+/// names (`.slider-crank-…`, made exclusively in each target's directory,
+/// never following a link planted there), then renamed over their targets
+/// one after another with an interruption held off until the last: a
+/// failure while any is written (a full disk, an unwritable folder)
+/// removes the temporary files and leaves every old file as it was. A
+/// device or FIFO among them is written in place after the others are
+/// staged and before any is renamed (what it received cannot be taken
+/// back). Only a rename failing part way (the folder removed meanwhile)
+/// leaves the files renamed before it.
+///
+/// `each` is told of each file (its number from 1, its path) as it is
+/// written, for a progress line.
+pub fn write_atomic_all<P: AsRef<Path>, B: AsRef<[u8]>>(
+    files: &[(P, B)],
+    mut each: impl FnMut(usize, &Path),
+) -> Result<()> {
+    let fail = |path: &Path| {
+        let path = path.to_path_buf();
+        move |e: std::io::Error| Error::Io {
+            message: format!("cannot write {}: {e}", path.display()),
+            path: Some(path.clone()),
+            source: Some(Arc::new(e)),
+        }
+    };
+    let targets = files
+        .iter()
+        .map(|(p, _)| output_target(p.as_ref()))
+        .collect::<Result<Vec<_>>>()?;
+    let mut staged = Vec::new();
+    let mut direct = Vec::new();
+    for (i, ((path, bytes), target)) in files.iter().zip(targets).enumerate() {
+        let path = path.as_ref();
+        each(i + 1, path);
+        match target {
+            OutputTarget::Replace(p) => {
+                let (mut tmp, pending) = make_pending(|| temporary(&p)).map_err(fail(path))?;
+                tmp.write_all(bytes.as_ref()).map_err(fail(path))?;
+                staged.push((path, p, tmp, pending));
+            }
+            OutputTarget::Direct(p) => direct.push((path, p, bytes.as_ref())),
+        }
+    }
+    for (path, p, bytes) in direct {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open(&p)
+            .and_then(|mut f| f.write_all(bytes))
+            .map_err(fail(path))?;
+    }
+    super::pending::uninterrupted(|| {
+        for (path, p, tmp, _pending) in staged {
+            persist(&p, tmp).map_err(fail(path))?;
+        }
+        Ok(())
+    })
+}
+
 /// Replaces the regular file `path` (or creates it) through a temporary
 /// file in its directory, written by `fill`.
 fn replace(
@@ -278,5 +343,51 @@ mod tests {
         }
         let err = write_atomic(Path::new("/tmp"), b"x").unwrap_err();
         assert_eq!(err.to_string(), "cannot write /tmp: it is a directory");
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn several_files_are_written_all_or_none() {
+        let dir = tempfile::tempdir().unwrap();
+        let sheet = dir.path().join("sheet.html");
+        let key = dir.path().join("sheet-key.html");
+        let names = || {
+            let mut n: Vec<_> = std::fs::read_dir(dir.path())
+                .unwrap()
+                .map(|e| e.unwrap().file_name().into_string().unwrap())
+                .collect();
+            n.sort();
+            n
+        };
+        // The key's name is a folder: refused before the sheet is made.
+        std::fs::create_dir(&key).unwrap();
+        let files = [(&sheet, "sheet"), (&key, "key")];
+        let err = write_atomic_all(&files, |_, _| ()).unwrap_err();
+        assert!(err.to_string().ends_with("it is a directory"), "{err}");
+        assert_eq!(names(), ["sheet-key.html"]);
+        // An old sheet is kept when its key is write-protected.
+        std::fs::remove_dir(&key).unwrap();
+        std::fs::write(&sheet, "old sheet").unwrap();
+        std::fs::write(&key, "old key").unwrap();
+        let protected = std::os::unix::fs::PermissionsExt::from_mode(0o444);
+        std::fs::set_permissions(&key, protected).unwrap();
+        assert!(write_atomic_all(&files, |_, _| ()).is_err());
+        assert_eq!(std::fs::read_to_string(&sheet).unwrap(), "old sheet");
+        assert_eq!(names(), ["sheet-key.html", "sheet.html"]);
+        // Both written, each told in turn; a link at a target is kept.
+        let writable = std::os::unix::fs::PermissionsExt::from_mode(0o644);
+        std::fs::set_permissions(&key, writable).unwrap();
+        std::fs::remove_file(&sheet).unwrap();
+        std::os::unix::fs::symlink("real.html", &sheet).unwrap();
+        let mut told = Vec::new();
+        write_atomic_all(&files, |i, p| told.push((i, p.to_path_buf()))).unwrap();
+        assert_eq!(told, [(1, sheet.clone()), (2, key.clone())]);
+        assert!(sheet.symlink_metadata().unwrap().file_type().is_symlink());
+        assert_eq!(
+            std::fs::read_to_string(dir.path().join("real.html")).unwrap(),
+            "sheet"
+        );
+        assert_eq!(std::fs::read_to_string(&key).unwrap(), "key");
+        assert_eq!(names(), ["real.html", "sheet-key.html", "sheet.html"]);
     }
 }

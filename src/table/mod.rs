@@ -6,6 +6,7 @@ mod chain_json;
 mod check_report;
 mod dynamics;
 mod dynamics_json;
+mod guard;
 mod harmonics;
 mod reading_json;
 
@@ -26,6 +27,7 @@ pub use chain_json::{
 pub use check_report::{DEFAULT_ULPS, MAX_TOLERANCE, check_allowance, engine_check_report};
 pub use dynamics::{dynamics_head, dynamics_row, example_table};
 pub use dynamics_json::{dynamics_json, mass_unit};
+pub use guard::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
 pub use harmonics::harmonics_table;
 pub use reading_json::ReadingJson;
 
