@@ -234,29 +234,14 @@ fn obliquity(
     let ratios = ratios.unwrap_or_else(|| vec![4.0, 5.0, 6.0]);
     let spec = spec.unwrap_or(AngleSpec::parse("90")?);
     let first = spec.iter().next().unwrap_or(90.0);
-    let mut head = table::obliquity(&ratios, first)?;
-    // Over several angles the title names none and each row its own.
-    let several = spec.len() > 1;
-    if several {
-        head.title = "Error due to obliquity, in crank radii (textbook §35)".into();
-        head.headers.insert(0, "θ (°)".into());
-    }
+    let head = table::obliquity(&ratios, first)?;
     args.guard
         .bound()
         .check_obliquity(spec.len(), ratios.len() as u64, head.headers.len())?;
     let rows = || {
         spec.iter()
             .flat_map(|a| match table::obliquity(&ratios, a) {
-                Ok(t) => t
-                    .rows
-                    .into_iter()
-                    .map(|mut row| {
-                        if several {
-                            row.insert(0, slider_crank::number::angle_cell(a, 1));
-                        }
-                        Ok(row)
-                    })
-                    .collect::<Vec<_>>(),
+                Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
                 Err(e) => vec![Err(e)],
             })
     };
