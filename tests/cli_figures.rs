@@ -114,7 +114,7 @@ fn diagrams_take_data_and_fit_flags() {
     succeeded(&out);
     let svg = String::from_utf8_lossy(&out.stdout);
     assert!(svg.contains("id=\"point-measured-2\"") && !svg.contains("id=\"point-measured-3\""));
-    assert!(svg.contains("measured (--data)"));
+    assert!(svg.contains("measured (the data given)"));
 
     let out = run(&["figure", "ng-fig-7-calibration", "--fit", "intercept"]);
     assert!(out.status.success());

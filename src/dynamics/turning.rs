@@ -159,6 +159,16 @@ impl TurningMoment {
 /// The phases, each finite and reduced exactly into [0, the cycle) (360°
 /// a turn): a phase and the same plus any whole number of cycles give one
 /// engine, however large.
+impl TurningMoment {
+    /// `x`, an amount of work or energy of this diagram, or 0 where it is
+    /// within the integrals' tolerance of zero: below it a value's digits
+    /// are rounding, not the engine's (the inertia forces alone do no work
+    /// over a turn, and print 0, not −1.1e−13).
+    pub fn settled(&self, x: f64) -> f64 {
+        if x.abs() <= self.tolerance { 0.0 } else { x }
+    }
+}
+
 /// The refusal of an engine whose torque between `a` and `b` (radians)
 /// the quadrature cannot integrate to its tolerance within its budget.
 fn out_of_reach(a: f64, b: f64) -> Error {

@@ -124,22 +124,6 @@ pub(crate) fn short_on(x: f64, on: SetOn) -> String {
     }
 }
 
-/// `x` to one significant figure as a power of ten (`2×10⁻⁸`): a bound
-/// or a tolerance, whose size is what a reader needs. 0 and non-finite
-/// values write `0`.
-pub(crate) fn power_form(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() {
-        return "0".into();
-    }
-    let s = format!("{:.0e}", x.abs());
-    let (mantissa, exponent) = s.split_once('e').unwrap_or((&s, "0"));
-    let sign = if x < 0.0 { "\u{2212}" } else { "" };
-    format!(
-        "{sign}{mantissa}×{}",
-        power_of_ten(exponent.parse().unwrap_or(0))
-    )
-}
-
 /// A value given as input, set on a figure as it was given: its shortest
 /// decimal (Ng's torque 264.87 stays 264.87, where [`short`] would round
 /// it to 264.9) with a true minus sign; outside [1e-4, 1e15) as [`sig`].
@@ -222,7 +206,6 @@ mod tests {
         assert_eq!(short(-1.5), "\u{2212}1.5");
         assert_eq!(short(1e20), "1×10²⁰");
         assert_eq!(short(2.5e-10), "2.5×10⁻¹⁰");
-        assert_eq!(power_form(2.2e-8), "2×10⁻⁸");
         assert_eq!(given(264.87), "264.87");
         assert_eq!(given(-2.5), "\u{2212}2.5");
         assert_eq!(given(1e-300), "1.000×10⁻³⁰⁰");

@@ -13,7 +13,7 @@ mod grid;
 mod plain;
 
 pub use figure::format_number;
-pub(crate) use figure::{given, power_form, power_of_ten, short, sig};
+pub(crate) use figure::{given, power_of_ten, short, sig};
 // A page's numbers: the handout's (feature `html`).
 #[cfg(feature = "html")]
 pub(crate) use figure::{SetOn, short_on, sig_on};

@@ -14,12 +14,6 @@ fn sig(x: f64) -> String {
     significant(x, 6)
 }
 
-/// `x`, or 0 where it is within `tolerance` of zero: below the integrals'
-/// own tolerance a value's digits are rounding, not the engine's.
-fn settled(x: f64, tolerance: f64) -> f64 {
-    if x.abs() <= tolerance { 0.0 } else { x }
-}
-
 /// The title, headers and notes of the dynamics table of `engine` with
 /// cylinders at `phases_deg` (the notes hold the turn's results).
 ///
@@ -56,9 +50,9 @@ pub fn dynamics_head(
             turn.phases_deg.len(),
             if turn.phases_deg.len() == 1 { "" } else { "s" },
             turn.phases_deg.iter().map(|d| plain(*d)).collect::<Vec<_>>().join(", "),
-            sig(settled(turn.work, turn.tolerance)),
-            sig(settled(turn.mean, turn.tolerance / (turn.cycle_deg.to_radians()))),
-            sig(settled(turn.fluctuation, turn.tolerance)),
+            sig(turn.settled(turn.work)),
+            sig(turn.settled(turn.mean * turn.cycle_deg.to_radians()) / turn.cycle_deg.to_radians()),
+            sig(turn.settled(turn.fluctuation)),
             fixed(turn.max_energy_deg, 2), fixed(turn.min_energy_deg, 2),
             turn.lobes.len(),
             if turn.work.abs() <= turn.tolerance {

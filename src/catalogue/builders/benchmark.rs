@@ -118,7 +118,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.notes(
         Point::new(20.0, notes_top),
         &[if ctx.options.data.is_some() {
-            "From the table given (--data).".to_string()
+            "From the table given.".to_string()
         } else {
             "From docs/curve-benchmarks.csv, written by the curve table example (criterion times on the machine that ran it).".to_string()
         }],

@@ -56,7 +56,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let rect = PageRect::new(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 20.0);
     let mut plot = Plot::new("calibration", rect, x, y, ctx.tolerance, ctx.font)?.with_caption(
         if ctx.options.data.is_some() {
-            "Calibration of the force transducer (--data)"
+            "Calibration of the force transducer (the data given)"
         } else {
             "Calibration of the force transducer (Ng, Table 1)"
         },

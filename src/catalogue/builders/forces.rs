@@ -162,7 +162,7 @@ fn forces(ctx: &Ctx, measured: &[(f64, f64)], height: f64) -> Result<(Plot, Opti
         measured,
         Symbol::Disc,
         Some(if ctx.options.data.is_some() {
-            "*F*′, measured (--data)"
+            "*F*′, measured (the data given)"
         } else {
             "*F*′, experiment (Ng, Table 2)"
         }),

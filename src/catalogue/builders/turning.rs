@@ -201,18 +201,17 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
             short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
             short(BORE),
             if ctx.options.data.is_some() {
-                " given (--data)"
+                " given"
             } else {
-                " of examples/indicator.csv"
+                " of an illustrative steam engine (admission at 100 psi to 30 % of the stroke)"
             },
             u = ctx.unit(),
             f = ctx.units.force()
         ),
         format!(
-            "Work per turn {} {t_unit}; {} areas between the crossings, integrated to {} {t_unit}; most energy at θ = {}°, least at {}°.",
-            sig(tm.work),
+            "Work per turn {} {t_unit}; {} areas between the crossings; most energy at θ = {}°, least at {}°.",
+            sig(tm.settled(tm.work)),
             tm.lobes.len(),
-            crate::number::power_form(tm.tolerance),
             short(tm.max_energy_deg),
             short(tm.min_energy_deg)
         ),
