@@ -203,6 +203,37 @@ impl Units {
     pub fn torque(&self) -> String {
         format!("{}·{}", self.force, self.length)
     }
+
+    /// The unit of mass the forces imply, FORCE·s²/LENGTH, by its name
+    /// where the pair is a coherent system: `kg` with N and m, `slug` with
+    /// lbf and ft, `t` with N and mm or kN and m; otherwise as derived
+    /// (`lbf·s²/in`). A name only: nothing is converted.
+    pub fn mass(&self) -> String {
+        match self.coherent_mass() {
+            Some(name) => name.to_string(),
+            None => format!("{}·s²/{}", self.force, self.length),
+        }
+    }
+
+    /// The unit of a moment of inertia, FORCE·s²·LENGTH = mass × length²:
+    /// `kg·m²`, `slug·ft²`, `t·mm²` (N and mm), `t·m²` (kN and m), or as
+    /// derived (`lbf·s²·in`).
+    pub fn moment_of_inertia(&self) -> String {
+        match self.coherent_mass() {
+            Some(name) => format!("{name}·{}²", self.length),
+            None => format!("{}·s²·{}", self.force, self.length),
+        }
+    }
+
+    /// The name of FORCE·s²/LENGTH where the pair is a coherent system.
+    fn coherent_mass(&self) -> Option<&'static str> {
+        match (self.force.as_str(), self.length.as_str()) {
+            ("N", "m") => Some("kg"),
+            ("lbf", "ft") => Some("slug"),
+            ("N", "mm") | ("kN", "m") => Some("t"),
+            _ => None,
+        }
+    }
 }
 
 impl Default for Units {
@@ -265,6 +296,20 @@ mod tests {
             assert!(!e.contains('\n'), "{e}");
         }
         assert!("abcdefghijklmnop".parse::<Unit>().is_ok());
+    }
+
+    #[test]
+    fn masses_and_inertias_are_named_in_coherent_systems() {
+        let units = |l: &str, f: &str| Units::new(l.parse().unwrap(), f.parse().unwrap());
+        assert_eq!(units("m", "N").mass(), "kg");
+        assert_eq!(units("m", "N").moment_of_inertia(), "kg·m²");
+        assert_eq!(Units::FOOT_POUND.mass(), "slug");
+        assert_eq!(Units::FOOT_POUND.moment_of_inertia(), "slug·ft²");
+        assert_eq!(Units::MILLIMETRE_NEWTON.mass(), "t");
+        assert_eq!(Units::MILLIMETRE_NEWTON.moment_of_inertia(), "t·mm²");
+        assert_eq!(units("m", "kN").mass(), "t");
+        assert_eq!(units("in", "lbf").mass(), "lbf·s²/in");
+        assert_eq!(units("in", "lbf").moment_of_inertia(), "lbf·s²·in");
     }
 
     #[test]

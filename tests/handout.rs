@@ -484,8 +484,16 @@ fn the_steps_sign_what_the_tables_sign_and_the_command_gives_rpm() {
     let shown = |x: f64| format!("{:.2}", x).replace('-', "−");
     assert!(step.contains(&format!("= {} mm", shown(fg))), "{step}");
     assert!(step.contains("= −"), "{step}");
+    // The footer's command, its options each kept whole on a printed line.
+    let command = html
+        .replace("<span class=\"nobreak\">", "")
+        .replace("</span>", "");
     assert!(
-        html.contains("--rpm 1500 ") && !html.contains("--omega"),
+        html.contains("<span class=\"nobreak\">--rpm 1500</span>"),
+        "footer"
+    );
+    assert!(
+        command.contains("--rpm 1500 ") && !command.contains("--omega"),
         "footer"
     );
     // The caption of the engine says where x is measured from, as the

@@ -201,7 +201,10 @@ fn the_dynamics_are_on_the_page_only_with_a_mass() {
     ] {
         assert!(summary.contains(&format!("data-key=\"{key}\"")), "{key}");
     }
-    assert!(with.contains("--paper a4 --mass 10 --fluctuation 0.02"));
+    let command = with
+        .replace("<span class=\"nobreak\">", "")
+        .replace("</span>", "");
+    assert!(command.contains("--paper a4 --mass 10 --fluctuation 0.02"));
 }
 
 #[test]

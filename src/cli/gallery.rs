@@ -70,6 +70,20 @@ pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
     }
     prepare(dir)?;
     let _lock = lock(dir, true)?;
+    // Under the lock no other gallery writes here: a staged file is one a
+    // killed gallery left behind.
+    for stale in leftovers(dir)? {
+        std::fs::remove_file(&stale).map_err(|e| {
+            Error::io_at(
+                format!(
+                    "cannot remove {}, left by an interrupted gallery: {e}",
+                    stale.display()
+                ),
+                &stale,
+                e,
+            )
+        })?;
+    }
     let names = gallery.file_names();
     for name in &names {
         writable(&dir.join(name))?;
@@ -110,15 +124,42 @@ struct Staged {
     _pending: Pending,
 }
 
-/// Writes `file` under a temporary name in `dir` (a `.slider-crank-`
-/// file, removed if the program stops before [`commit`]).
+/// The prefix of a gallery's staged files: a gallery's own, so that what
+/// a killed gallery leaves is told from another command's file being
+/// written in the same directory.
+const STAGED_PREFIX: &str = ".slider-crank-gallery-";
+
+/// The files a gallery staged in `dir` and never renamed (it was killed,
+/// SIGKILL, before it could remove them), in name order.
+fn leftovers(dir: &Path) -> Result<Vec<std::path::PathBuf>> {
+    let entries = match std::fs::read_dir(dir) {
+        Ok(e) => e,
+        Err(e) if e.kind() == ErrorKind::NotFound => return Ok(Vec::new()),
+        Err(e) => {
+            let message = format!("cannot read the directory {}: {e}", dir.display());
+            return Err(Error::io_at(message, dir, e));
+        }
+    };
+    let mut found: Vec<_> = entries
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().starts_with(STAGED_PREFIX))
+        .filter(|e| e.file_type().is_ok_and(|t| t.is_file()))
+        .map(|e| e.path())
+        .collect();
+    found.sort();
+    Ok(found)
+}
+
+/// Writes `file` under a temporary name in `dir` (a
+/// [`STAGED_PREFIX`] file, removed if the program stops before
+/// [`commit`], and by the next gallery if it is killed).
 fn stage(dir: &Path, file: &GalleryFile) -> Result<Staged> {
     let path = dir.join(&file.name);
     let fail =
         |e: std::io::Error| Error::io_at(format!("cannot write {}: {e}", path.display()), &path, e);
     let (mut tmp, pending) = make_pending(|| {
         tempfile::Builder::new()
-            .prefix(".slider-crank-")
+            .prefix(STAGED_PREFIX)
             .tempfile_in(dir)
     })
     .map_err(fail)?;
@@ -234,6 +275,13 @@ fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
     });
     progress.finish();
     result?;
+    for stale in leftovers(dir)? {
+        differ += 1;
+        out.text(&format!(
+            "{} is left by an interrupted gallery (the next gallery removes it)\n",
+            stale.display()
+        ))?;
+    }
     if differ == 0 {
         say(&format!(
             "gallery: the {} files in {} are up to date",
@@ -242,7 +290,7 @@ fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
         ));
     } else {
         say(&format!(
-            "gallery: {differ} of {} files in {} differ from this build's",
+            "gallery: {differ} of {} files in {} differ from this build's or were left by an interrupted gallery",
             names.len(),
             dir.display()
         ));

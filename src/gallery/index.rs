@@ -12,6 +12,8 @@ use maud::{Markup, html};
 
 /// The page's own style, after the book page of [`crate::html::BOOK_STYLE`].
 const STYLE: &str = "
+h2 { break-after: avoid; page-break-after: avoid; }
+.keep { break-inside: avoid; page-break-inside: avoid; }
 figure { margin: 2.5rem 0; }
 figure img { max-width: 100%; height: auto; border: 1px solid #ddd; }
 figcaption { margin-top: .5rem; }
@@ -71,24 +73,41 @@ pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
         @for (id, heading, figures) in groups(gallery.figures()) {
             @if !figures.is_empty() {
                 section id=(id) {
-                    h2 { (heading) }
-                    @for f in figures {
-                        (figure(f, gallery.formats()))
+                    // A heading is printed on the page of what it heads:
+                    // it and its first figure are not broken apart.
+                    div.keep {
+                        h2 { (heading) }
+                        @if let Some(first) = figures.first() {
+                            (figure(*first, gallery.formats()))
+                        }
+                    }
+                    @for f in figures.iter().skip(1) {
+                        (figure(*f, gallery.formats()))
                     }
                 }
             }
         }
         @if !gallery.scenes.is_empty() {
             section id="scenes" {
-                h2 { "Scene files" }
-                @for entry in &gallery.scenes {
+                div.keep {
+                    h2 { "Scene files" }
+                    @if let Some(first) = gallery.scenes.first() {
+                        (scene(first, gallery.formats()))
+                    }
+                }
+                @for entry in gallery.scenes.iter().skip(1) {
                     (scene(entry, gallery.formats()))
                 }
             }
         }
         section id="tables" {
-            h2 { "Tables" }
-            @for (name, t) in tables {
+            div.keep {
+                h2 { "Tables" }
+                @if let Some((name, t)) = tables.first() {
+                    (table(*name, t))
+                }
+            }
+            @for (name, t) in tables.iter().skip(1) {
                 (table(*name, t))
             }
         }
@@ -238,6 +257,25 @@ mod tests {
             assert!(!figures.contains(&FigureName::CurveBenchmark));
         }
         assert_eq!(developers.2, vec![FigureName::CurveBenchmark]);
+    }
+
+    #[test]
+    fn each_heading_is_kept_with_what_it_heads() {
+        let html = page(&Gallery::new(), &[]);
+        let headings = html.matches("<h2>").count();
+        assert!(headings >= 4, "{headings}");
+        // Each heading opens a block that a printed page does not break,
+        // holding its first figure (the tables' has none here).
+        assert_eq!(html.matches(r#"<div class="keep"><h2>"#).count(), headings);
+        for block in html.split(r#"<div class="keep"><h2>"#).skip(1) {
+            let inside = block.split("</div>").next().unwrap_or("");
+            let heading = inside.split("</h2>").next().unwrap_or("");
+            assert!(
+                inside.contains("<figure") || heading == "Tables",
+                "{heading}"
+            );
+        }
+        assert!(STYLE.contains(".keep { break-inside: avoid;"));
     }
 
     #[test]

@@ -44,6 +44,7 @@ table.data td {{ border-bottom: 1px solid #eee; }}
 table.answers td.answer {{ border-bottom: 1px solid #111; width: 11em; height: 1.9em; }}
 .conventions {{ font-size: .9em; color: #333; }}
 footer {{ margin-top: 2rem; border-top: 1px solid #888; font-size: .85em; color: #444; }}
+footer .nobreak {{ white-space: nowrap; }}
 @media print {{
   body {{ max-width: none; margin: 0; padding: 0; font-size: 10.5pt; line-height: 1.3; }}
   header.title {{ margin-bottom: .6rem; }}
@@ -273,16 +274,61 @@ fn speed_flag(omega: f64) -> String {
         .unwrap_or_else(|| format!("--omega {}", plain(omega)))
 }
 
-/// The page's footer: the program and the command.
+/// The page's footer: the program and the command, which a printed line
+/// breaks only between its options (each flag kept with its value).
 pub(super) fn footer(command: &str) -> Markup {
     html! {
         footer {
             p {
                 "Made by slider-crank " (env!("CARGO_PKG_VERSION")) " with "
-                code { (command) } "."
+                code {
+                    @for (i, part) in unbroken(command).iter().enumerate() {
+                        @if i > 0 { " " }
+                        span.nobreak { (part) }
+                    }
+                }
+                "."
             }
         }
     }
+}
+
+/// The parts of a shell command a line may not break inside: its words
+/// (a quoted word with its spaces kept whole), each `--flag` with the
+/// value after it.
+fn unbroken(command: &str) -> Vec<String> {
+    let mut words: Vec<String> = Vec::new();
+    let (mut word, mut quoted) = (String::new(), false);
+    for c in command.chars() {
+        match c {
+            '\'' => {
+                quoted = !quoted;
+                word.push(c);
+            }
+            ' ' if !quoted => {
+                if !word.is_empty() {
+                    words.push(std::mem::take(&mut word));
+                }
+            }
+            _ => word.push(c),
+        }
+    }
+    if !word.is_empty() {
+        words.push(word);
+    }
+    let mut parts: Vec<String> = Vec::new();
+    let mut words = words.into_iter().peekable();
+    while let Some(w) = words.next() {
+        let value = w.starts_with("--") && !w.contains('=');
+        match words.peek() {
+            Some(next) if value && !next.starts_with("--") => {
+                let next = words.next().unwrap_or_default();
+                parts.push(format!("{w} {next}"));
+            }
+            _ => parts.push(w),
+        }
+    }
+    parts
 }
 
 /// The whole handout page.
@@ -364,6 +410,31 @@ pub(super) fn plain_data(h: &Handout) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_printed_command_breaks_only_between_its_options() {
+        let parts = unbroken(
+            "slider-crank handout --crank 0.3 --unit mm --title 'a b c' --mirror --mass=2 --angle -30",
+        );
+        assert_eq!(
+            parts,
+            [
+                "slider-crank",
+                "handout",
+                "--crank 0.3",
+                "--unit mm",
+                "--title 'a b c'",
+                "--mirror",
+                "--mass=2",
+                "--angle -30",
+            ]
+        );
+        let html = footer("slider-crank handout --unit mm").into_string();
+        assert!(
+            html.contains(r#"<span class="nobreak">--unit mm</span>"#),
+            "{html}"
+        );
+    }
 
     /// The ω a speed flag gives.
     fn given(flag: &str) -> f64 {

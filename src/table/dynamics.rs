@@ -75,18 +75,20 @@ pub fn dynamics_head(
     };
     if let Some(fw) = fw {
         notes.push(format!(
-            "Flywheel: I = ΔE / (ω² C_s) = {} {f}·s²·{u} for C_s = {}.",
+            "Flywheel: I = ΔE / (ω² C_s) = {} {} for C_s = {}.",
             sig(fw.inertia),
+            units.moment_of_inertia(),
             sig(fw.coefficient)
         ));
     }
     Ok(Table {
         title: format!(
-            "Engine dynamics: r = {} {u}, l = {} {u}, e = {} {u}, m = {} {f}·s²/{u}, ω = {} rad/s",
+            "Engine dynamics: r = {} {u}, l = {} {u}, e = {} {u}, m = {} {}, ω = {} rad/s",
             plain(m.crank()),
             plain(m.rod()),
             plain(m.offset()),
             plain(engine.reciprocating_mass()),
+            units.mass(),
             plain(engine.omega())
         ),
         headers,

@@ -12,10 +12,10 @@ fn num(x: f64) -> f64 {
     x + 0.0
 }
 
-/// The unit of mass the forces imply: FORCE·s²/LENGTH (`lbf·s²/ft`, a
-/// slug, with the textbook's units).
+/// The unit of mass the forces imply ([`Units::mass`]: `slug` with the
+/// textbook's units, `kg` with N and m).
 pub fn mass_unit(units: &Units) -> String {
-    format!("{}·s²/{}", units.force(), units.length())
+    units.mass()
 }
 
 /// The dynamics of `engine` at `angle` (its pose `at`) as `analyze

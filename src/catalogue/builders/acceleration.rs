@@ -171,7 +171,7 @@ fn distance_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
     distance.curve(
         "curve-acceleration-distance-shm",
         &[(&shm_travel, 0.0..=180.0)],
-        Dash::Dashed,
+        Dash::Dotted,
         Some("simple harmonic motion"),
     )?;
     Ok(distance)
@@ -205,7 +205,7 @@ fn time_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
     time.curve(
         "curve-acceleration-time-shm",
         &[(&shm_t, 0.0..=360.0)],
-        Dash::Dashed,
+        Dash::Dotted,
         Some("simple harmonic motion, *r*ω² cos θ"),
     )?;
     Ok(time)
@@ -243,7 +243,7 @@ fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<Plot> {
     );
     let rect = super::PageRect::new(16.0, layout.c_top, layout.half, tall);
     let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance, ctx.font)?
-        .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dashed");
+        .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dotted");
     polar_construction(&mut plot, &ctx.pose(), reach);
     plot.curve(
         "curve-polar-acceleration",
@@ -254,7 +254,7 @@ fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<Plot> {
     plot.curve(
         "curve-polar-acceleration-shm",
         &[(&shm_polar, 0.0..=180.0)],
-        Dash::Dashed,
+        Dash::Dotted,
         None,
     )?;
     Ok(plot)

@@ -315,9 +315,10 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: PageRect) -> Result
 fn notes(ctx: &Ctx, mass: f64, k: f64, p: &Pair, s: &Pair, exact: f64) -> Vec<String> {
     let m = ctx.mechanism;
     let (u, f) = (ctx.unit(), ctx.units.force());
+    let mass_u = ctx.units.mass();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u} (*n* = {}), θ = {}°, {} rpm; *m* = {} {f}·s²/{u}, *m\u{a0}r*ω² = {} {f}. Each primary crank carries (*m*/2)*r*ω² = {} {f}, each secondary (*m*/2)(*r*/4*n*)(2ω)² = {} {f}; away from the crank is to the right.",
+            "*r* = {} {u}, *l* = {} {u} (*n* = {}), θ = {}°, {} rpm; *m* = {} {mass_u}, *m\u{a0}r*ω² = {} {f}. Each primary crank carries (*m*/2)*r*ω² = {} {f}, each secondary (*m*/2)(*r*/4*n*)(2ω)² = {} {f}; away from the crank is to the right.",
             short(m.crank()),
             short(m.rod()),
             short(m.ratio()),

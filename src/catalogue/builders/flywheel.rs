@@ -55,14 +55,15 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let extremes = (tm.min_energy_deg, tm.max_energy_deg);
     let band = (16.0 + height + 24.0, height);
     sheet.plot(speed_plot(ctx, &fly, &above, extremes, band)?);
-    let (u, f) = (ctx.unit(), ctx.units.force());
+    let (u, mass_u) = (ctx.unit(), ctx.units.mass());
+    let inertia_u = ctx.units.moment_of_inertia();
     let t = ctx.units.torque();
     let w = ctx.omega;
     sheet.notes(
         Point::new(20.0, page.height() - 40.0),
         &[
             format!(
-                "The turning-moment figure’s engine: *r* = {} {u}, *l* = {} {u}{}, *m* = {} {f}·s²/{u}, {} rpm (ω = {} rad/s). Δ*E* = {} {t}, from θ = {}° (least) to {}° (most).",
+                "The turning-moment figure’s engine: *r* = {} {u}, *l* = {} {u}{}, *m* = {} {mass_u}, {} rpm (ω = {} rad/s). Δ*E* = {} {t}, from θ = {}° (least) to {}° (most).",
                 short(ctx.mechanism.crank()), short(ctx.mechanism.rod()),
                 if ctx.mechanism.offset() == 0.0 { String::new() } else { format!(", *e* = {} {u}", short(ctx.mechanism.offset())) },
                 short(ctx.options.mass.unwrap_or(crate::dynamics::EXAMPLE_MASS)),
@@ -70,7 +71,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
                 sig(fly.fluctuation), short(tm.min_energy_deg), short(tm.max_energy_deg),
             ),
             format!(
-                "For *C*_s = {}: *I* = Δ*E*/(ω²*C*_s) = {} {f}·s²·{u}; the speed runs from ω_{{min}} = {} to ω_{{max}} = {} rad/s.",
+                "For *C*_s = {}: *I* = Δ*E*/(ω²*C*_s) = {} {inertia_u}; the speed runs from ω_{{min}} = {} to ω_{{max}} = {} rad/s.",
                 short(fly.coefficient), sig(fly.inertia),
                 sig(w * (1.0 - 0.5 * fly.coefficient)), sig(w * (1.0 + 0.5 * fly.coefficient)),
             ),

@@ -338,7 +338,7 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
         tall + crate::diagram::CAPTION,
     );
     let mut plot = Plot::world("forces", rect, &world, ctx.mirror, ctx.tolerance, ctx.font)?
-        .with_caption("(b) The inertia force at the cross-head: *F*_i = *F*_Q + *F*_N, along the rod and on the guides");
+        .with_caption("The inertia force at the cross-head: *F*_i = *F*_Q + *F*_N, along the rod and on the guides");
     let arrow =
         |id: &str, from: Point, to: Point| Item::new(id, Role::Force, Shape::Arrow { from, to });
     let label = |id: &str, at: Point, text: &str| {
@@ -370,6 +370,7 @@ fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
     let m = ctx.mechanism;
     let at = &f.at;
     let (u, fu) = (ctx.unit(), ctx.units.force());
+    let mass_u = ctx.units.mass();
     let t = ctx.units.torque();
     let sense = |x: f64, towards: &str, away: &str| {
         if x > 0.0 {
@@ -382,7 +383,7 @@ fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
     };
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, θ = {}°, {} rpm; reciprocating mass *m* = {} {fu}·s²/{u}, no gas force. Scale: *CG* is the acceleration ω²·*CG* and the inertia force *m*ω²·*CG*: 1 {u} = {} {fu}.",
+            "*r* = {} {u}, *l* = {} {u}{}, θ = {}°, {} rpm; reciprocating mass *m* = {} {mass_u}, no gas force. Scale: *CG* is the acceleration ω²·*CG* and the inertia force *m*ω²·*CG*: 1 {u} = {} {fu}.",
             short(m.crank()),
             short(m.rod()),
             if m.offset() == 0.0 {

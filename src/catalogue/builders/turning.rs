@@ -188,7 +188,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
     let t_unit = ctx.units.torque();
     [
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {f}·s²/{u}, bore {} {u}; gas force from the indicator diagram{}.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}, bore {} {u}; gas force from the indicator diagram{}.",
             short(m.crank()),
             short(m.rod()),
             // An offset engine says so (its stroke, and so its work, differ).
@@ -206,7 +206,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
                 " of an illustrative steam engine (admission at 100 psi to 30 % of the stroke)"
             },
             u = ctx.unit(),
-            f = ctx.units.force()
+            mass_u = ctx.units.mass()
         ),
         format!(
             "Work per turn {} {t_unit}; {} areas between the crossings; most energy at θ = {}°, least at {}°.",

@@ -154,6 +154,7 @@ fn remainder_plot(ctx: &Ctx, k: f64, rect: PageRect) -> Result<(Plot, f64)> {
 fn notes(ctx: &Ctx, mass: f64, k: f64, worst: f64) -> Vec<String> {
     let m = ctx.mechanism;
     let (u, f) = (ctx.unit(), ctx.units.force());
+    let mass_u = ctx.units.mass();
     let n = m.ratio();
     let offset = if m.offset() == 0.0 {
         String::new()
@@ -165,7 +166,7 @@ fn notes(ctx: &Ctx, mass: f64, k: f64, worst: f64) -> Vec<String> {
     };
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u} (*n* = {}), {} rpm; reciprocating mass *m* = {} {f}·s²/{u}: *m\u{a0}r*ω² = {} {f}, the primary force’s amplitude; the secondary’s is *m\u{a0}r*ω²/*n* = {} {f}.",
+            "*r* = {} {u}, *l* = {} {u} (*n* = {}), {} rpm; reciprocating mass *m* = {} {mass_u}: *m\u{a0}r*ω² = {} {f}, the primary force’s amplitude; the secondary’s is *m\u{a0}r*ω²/*n* = {} {f}.",
             short(m.crank()),
             short(m.rod()),
             short(n),

@@ -68,9 +68,9 @@ pub(super) fn dynamics(w: &Work) -> Result<Vec<Step>> {
     Ok(vec![inertia(w, &d)?, turning(w, &d)?, flywheel(w, &d)?])
 }
 
-/// The mass unit the forces imply, FORCE·s²/LENGTH.
+/// The mass unit the forces imply ([`crate::units::Units::mass`]).
 fn mass_unit(w: &Work) -> String {
-    format!("{}·s²/{}", w.n.force, w.length())
+    w.h.units().mass()
 }
 
 /// The inertia force from Klein's *CG*, the gas force, the piston effort
@@ -250,7 +250,8 @@ fn flywheel(w: &Work, d: &Worked) -> Result<Step> {
     })
 }
 
-/// The unit of a moment of inertia, FORCE·s²·LENGTH.
+/// The unit of a moment of inertia
+/// ([`crate::units::Units::moment_of_inertia`]).
 fn inertia_unit(w: &Work) -> String {
-    format!("{}·s²·{}", w.n.force, w.length())
+    w.h.units().moment_of_inertia()
 }
