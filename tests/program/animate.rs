@@ -2,13 +2,9 @@
 //! frame the still figure in one held view, written as a self-playing SVG
 //! or an HTML page, and refused in one line when asked for the wrong thing.
 
-#[allow(dead_code)]
-mod command;
-#[allow(dead_code)] // the helpers the other figure tests use
-mod common;
-#[allow(dead_code)]
-#[path = "common/plate.rs"]
-mod plate;
+use crate::command;
+use crate::common;
+use crate::plate;
 
 use command::{run, succeeded};
 use plate::Plate;

@@ -5,7 +5,7 @@
 //! `pdftotext` (`.ci/run` installs them); where they are not installed
 //! those checks are skipped with a note saying so.
 
-mod command;
+use crate::command;
 use command::{run, succeeded};
 use std::path::Path;
 use std::process::Command;

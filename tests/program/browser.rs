@@ -10,7 +10,7 @@
 //! Without it these tests say so and pass, unless
 //! `SLIDER_CRANK_BROWSER=required` (set by `.ci/run`, which installs it).
 
-mod command;
+use crate::command;
 
 use command::{run, succeeded};
 use resvg::tiny_skia::Pixmap;
