@@ -19,6 +19,7 @@ mod curves;
 mod dynamics;
 mod dynamics_figures;
 mod fuzz_twins;
+mod ignored;
 mod layering;
 mod panic_free;
 mod reading_json;
