@@ -1,5 +1,5 @@
 //! Helpers shared by the figure tests (a module of each test crate:
-//! `tests/library`, `tests/figures`, `tests/program`).
+//! `tests/library`, `tests/rendering`, `tests/program`).
 
 #[cfg(feature = "png")]
 use resvg::tiny_skia;
