@@ -125,7 +125,7 @@
 #![deny(missing_docs)]
 // No panic on a path from input: an `unwrap`, `expect`, index or slice
 // outside the tests is allowed only where a comment proves it cannot fail
-// (`tests/panic_free.rs` holds every allowance to one).
+// (`tests/library/panic_free.rs` holds every allowance to one).
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
 
 pub mod analytic;

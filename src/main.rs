@@ -1,6 +1,6 @@
 //! The `slider-crank` command line.
 // As in the library: no `unwrap`, `expect`, index or slice without a
-// proof it cannot fail (`tests/panic_free.rs`).
+// proof it cannot fail (`tests/library/panic_free.rs`).
 #![deny(clippy::unwrap_used, clippy::expect_used, clippy::indexing_slicing)]
 
 mod cli;

@@ -6,7 +6,7 @@
 //! of `analyze --json` spent most of their time allocating, sorting and
 //! freeing those trees. The keys are written in the order a tree's sorted
 //! maps gave them (byte order), so the text is the one the tree wrote;
-//! `tests/reading_json.rs` holds the two to the same bytes.
+//! `tests/library/reading_json.rs` holds the two to the same bytes.
 
 use crate::analytic::statics::Friction;
 use crate::chain::ChainCentres;

@@ -1,5 +1,5 @@
 //! The properties every input must keep, shared by the fuzz targets
-//! (`fuzz/`, libFuzzer) and their bounded proptest twins (`tests/fuzz_twins.rs`):
+//! (`fuzz/`, libFuzzer) and their bounded proptest twins (`tests/library/fuzz_twins.rs`):
 //! no panic; a refusal is one non-empty line; a figure written has no
 //! NaN or infinity in it; the numbers of an analysis are finite.
 

@@ -1,14 +1,18 @@
-//! Helpers shared by the figure tests.
+//! Helpers shared by the figure tests (a module of each test crate:
+//! `tests/library`, `tests/rendering`, `tests/program`).
 
+#[cfg(feature = "png")]
 use resvg::tiny_skia;
-use slider_crank::render::to_png;
 
 /// `svg` rendered through resvg at scale 1.
+#[cfg(feature = "png")]
 pub fn render(svg: &str) -> tiny_skia::Pixmap {
-    tiny_skia::Pixmap::decode_png(&to_png(svg, 1.0).unwrap()).unwrap()
+    let png = slider_crank::render::to_png(svg, 1.0).unwrap();
+    tiny_skia::Pixmap::decode_png(&png).unwrap()
 }
 
 /// The dark pixels of a rendering and all its pixels: (dark, total).
+#[cfg(feature = "png")]
 pub fn inked(pixmap: &tiny_skia::Pixmap) -> (usize, usize) {
     let dark = pixmap
         .pixels()
@@ -18,10 +22,12 @@ pub fn inked(pixmap: &tiny_skia::Pixmap) -> (usize, usize) {
     (dark, (pixmap.width() * pixmap.height()) as usize)
 }
 
-/// Insta settings that keep snapshots in the top-level `snapshots/`.
+/// Insta settings that keep snapshots in the top-level `snapshots/` (the
+/// path is taken from the asserting file, one of `tests/<crate>/*.rs`),
+/// named by the name the test gives, without the module path.
 pub fn snapshot_settings() -> insta::Settings {
     let mut s = insta::Settings::clone_current();
-    s.set_snapshot_path("../snapshots");
+    s.set_snapshot_path("../../snapshots");
     s.set_prepend_module_to_snapshot(false);
     s
 }
@@ -80,13 +86,11 @@ pub fn read_text(svg: &str) -> String {
 
 /// The page sizes an author fixes (issue 20): a column of 120 mm, a
 /// 4.5-inch column, and a wide short page (width, height).
-#[allow(dead_code)] // the page-size tests' (plates, typography)
 pub const FIXED_PAGES: [(&str, Option<&str>); 3] =
     [("120mm", None), ("4.5in", None), ("800", Some("300"))];
 
 /// Figure options asking for a page `width` wide and, if given, `height`
 /// tall (as `--width`, `--height` spell them).
-#[allow(dead_code)] // the page-size tests' (plates, typography)
 pub fn on_page(width: &str, height: Option<&str>) -> slider_crank::catalogue::FigureOptions {
     let mut options = slider_crank::catalogue::FigureOptions::default();
     options.width = Some(width.parse().unwrap());

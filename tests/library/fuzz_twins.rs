@@ -2,8 +2,7 @@
 //! `cargo fuzz`): the same properties (`tests/common/hostile.rs`) over 256
 //! generated inputs each, fast enough for every CI run.
 
-#[path = "common/hostile.rs"]
-mod hostile;
+use crate::hostile;
 
 use proptest::prelude::*;
 
@@ -149,12 +148,12 @@ proptest! {
 #[test]
 fn the_named_scene_seeds_hold() {
     for text in [
-        include_str!("../fuzz/corpus/named_scene/chains-near-the-largest-length.toml"),
-        include_str!("../fuzz/corpus/named_scene/velocity-diagrams.toml"),
-        include_str!("../fuzz/corpus/named_scene/incline-huge-angle.toml"),
-        include_str!("../fuzz/corpus/named_scene/no-layers.toml"),
-        include_str!("../fuzz/corpus/named_scene/coupler-at-the-limit.toml"),
-        include_str!("../fuzz/corpus/named_scene/calibration-narrow-page.toml"),
+        include_str!("../../fuzz/corpus/named_scene/chains-near-the-largest-length.toml"),
+        include_str!("../../fuzz/corpus/named_scene/velocity-diagrams.toml"),
+        include_str!("../../fuzz/corpus/named_scene/incline-huge-angle.toml"),
+        include_str!("../../fuzz/corpus/named_scene/no-layers.toml"),
+        include_str!("../../fuzz/corpus/named_scene/coupler-at-the-limit.toml"),
+        include_str!("../../fuzz/corpus/named_scene/calibration-narrow-page.toml"),
     ] {
         hostile::named_scene(text);
     }
@@ -198,7 +197,7 @@ fn toml_number(x: f64) -> String {
 #[test]
 fn a_name_that_says_inf_is_text_not_a_number() {
     hostile::scene_toml("name = \"a = -inf = NaN\"\nangles = [13, 121]\n");
-    let crash = include_str!("../fuzz/corpus/scene_toml/name-says-inf.toml");
+    let crash = include_str!("../../fuzz/corpus/scene_toml/name-says-inf.toml");
     hostile::scene_toml(crash);
 }
 
@@ -207,6 +206,6 @@ fn a_name_that_says_inf_is_text_not_a_number() {
 #[test]
 fn a_quoted_newline_keeps_the_refusal_on_one_line() {
     hostile::scene_toml("layers = [\"mech\\nanism\"]\n");
-    let crash = include_str!("../fuzz/corpus/scene_toml/layer-name-with-newline.toml");
+    let crash = include_str!("../../fuzz/corpus/scene_toml/layer-name-with-newline.toml");
     hostile::scene_toml(crash);
 }

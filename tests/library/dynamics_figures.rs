@@ -2,8 +2,7 @@
 //! the drawn arrows and the numbers of the notes against formulas written
 //! here, not the library's.
 
-#[allow(dead_code)] // the helpers the other figure tests use
-mod common;
+use crate::common;
 
 use common::{attr, metadata, read_text};
 use slider_crank::catalogue::FigureOptions;

@@ -6,10 +6,8 @@
 //! acceleration constructions of Figs. 65–67 large enough to read in some
 //! panel. Below the sweep, hand-written plates prove each rule can fail.
 
-#[allow(dead_code)] // the helpers the other figure tests use
-mod common;
-#[path = "common/plate.rs"]
-mod plate;
+use crate::common;
+use crate::plate;
 
 use plate::{Label, Panel, Plate, Rect, Seg};
 use slider_crank::catalogue::FigureOptions;

@@ -6,11 +6,14 @@
 //! page (each is `break-inside: avoid`, so one that fits is never cut); the
 //! animation must move.
 //!
-//! Chromium is found as `$CHROMIUM`, `chromium` or `chromium-browser`.
-//! Without it these tests say so and pass, unless
-//! `SLIDER_CRANK_BROWSER=required` (set by `.ci/run`, which installs it).
+//! Chromium is found as `$CHROMIUM`, `chromium` or `chromium-browser`, and
+//! the printed pages are read with poppler's `pdfinfo`, `pdftotext` and
+//! `pdffonts`. These tests are ignored by a plain `cargo test`, which lists
+//! them as ignored (not run) with the reason; `cargo test --test program --
+//! --ignored` runs them, as `.ci/run` does after installing both, and there
+//! a missing program fails the test.
 
-mod command;
+use crate::command;
 
 use command::{run, succeeded};
 use resvg::tiny_skia::Pixmap;
@@ -42,9 +45,8 @@ const WINDOW: u32 = 900;
 /// The tallest screenshot taken, px (Chromium's texture limit is 16384).
 const TALLEST: f64 = 16000.0;
 
-/// The browser, or `None` (with a note) when it is missing and not
-/// required.
-fn browser() -> Option<PathBuf> {
+/// The browser; a test that asked for it fails when it is missing.
+fn browser() -> PathBuf {
     let named = std::env::var_os("CHROMIUM").map(PathBuf::from);
     let found = named
         .into_iter()
@@ -55,14 +57,24 @@ fn browser() -> Option<PathBuf> {
                 .output()
                 .is_ok_and(|o| o.status.success())
         });
-    if found.is_none() {
-        assert!(
-            std::env::var("SLIDER_CRANK_BROWSER").as_deref() != Ok("required"),
-            "Chromium is required (SLIDER_CRANK_BROWSER=required) but was not found"
-        );
-        eprintln!("Chromium not found: the browser tests are skipped");
-    }
-    found
+    found.expect(
+        "Chromium was not found as $CHROMIUM, chromium or chromium-browser: \
+         install it (Debian: chromium) to run the browser tests",
+    )
+}
+
+/// A poppler tool run with `args`, which must succeed; a test that asked
+/// for it fails when it is missing.
+fn poppler(tool: &str, args: &[&str]) -> std::process::Output {
+    let out = Command::new(tool).args(args).output().unwrap_or_else(|e| {
+        panic!("{tool} could not be run ({e}): install poppler-utils to run the browser tests")
+    });
+    assert!(
+        out.status.success(),
+        "{tool} {args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
 }
 
 /// Virtual time a page is given to load and run, ms.
@@ -303,20 +315,14 @@ fn check_print(browser: &Path, page: &Path, paper: &Paper) {
         ],
         &url(page),
     );
-    let Ok(info) = Command::new("pdfinfo").arg(&pdf).output() else {
-        eprintln!("pdfinfo not found: the printed page size is not checked");
-        return;
-    };
+    let info = poppler("pdfinfo", &[pdf.to_str().unwrap()]);
     let info = String::from_utf8_lossy(&info.stdout);
     let html = std::fs::read_to_string(page).unwrap();
     // A page that names its paper prints on it (the animation names none).
     if html.contains("@page") {
         assert!(info.contains(paper.pdfinfo), "{name}: {info}");
     }
-    let text = Command::new("pdftotext")
-        .args(["-raw", pdf.to_str().unwrap(), "-"])
-        .output()
-        .unwrap();
+    let text = poppler("pdftotext", &["-raw", pdf.to_str().unwrap(), "-"]);
     let text = String::from_utf8_lossy(&text.stdout);
     let captions = html.matches("<span class=\"label\">Figure ").count();
     for k in 1..=captions {
@@ -347,10 +353,7 @@ fn check_print(browser: &Path, page: &Path, paper: &Paper) {
 /// system has its name (`DejaVuSerif`). The monospace face of the
 /// commands (`code`) is the reader's own.
 fn assert_fonts_embedded(pdf: &Path) {
-    let Ok(out) = Command::new("pdffonts").arg(pdf).output() else {
-        eprintln!("pdffonts not found: the printed faces are not checked");
-        return;
-    };
+    let out = poppler("pdffonts", &[pdf.to_str().unwrap()]);
     let list = String::from_utf8_lossy(&out.stdout);
     let fonts: Vec<Vec<&str>> = list
         .lines()
@@ -381,8 +384,9 @@ fn assert_fonts_embedded(pdf: &Path) {
 }
 
 #[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn the_gallery_index_shows_every_figure() {
-    let Some(browser) = browser() else { return };
+    let browser = browser();
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("gallery");
     succeeded(&run(&["gallery", "--out", out.to_str().unwrap()]));
@@ -404,8 +408,9 @@ fn the_gallery_index_shows_every_figure() {
 }
 
 #[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn the_checks_fail_on_a_broken_page() {
-    let Some(browser) = browser() else { return };
+    let browser = browser();
     let dir = tempfile::tempdir().unwrap();
     let page = |name: &str, body: &str| {
         let path = dir.path().join(name);
@@ -459,8 +464,9 @@ fn the_checks_fail_on_a_broken_page() {
 }
 
 #[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn a_handout_loads_draws_and_prints_on_a4_and_letter() {
-    let Some(browser) = browser() else { return };
+    let browser = browser();
     let dir = tempfile::tempdir().unwrap();
     // An offset engine in millimetres with its forces.
     let engine = "--crank 60 --rod 240 --offset 10 --unit mm --rpm 900 --angle 40 --torque 2000";
@@ -508,8 +514,9 @@ fn a_handout_loads_draws_and_prints_on_a4_and_letter() {
 }
 
 #[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn a_handout_with_the_engines_dynamics_prints_on_a4_and_letter() {
-    let Some(browser) = browser() else { return };
+    let browser = browser();
     let dir = tempfile::tempdir().unwrap();
     // The §35 engine with a reciprocating mass: three more steps, each a
     // tall figure. Printed, 11 pages on either paper (the page without
@@ -545,10 +552,7 @@ fn a_handout_with_the_engines_dynamics_prints_on_a4_and_letter() {
 /// from the top of the printable page, as a fraction of the printable
 /// height (the handout's margins: 14 mm top, 16 mm bottom).
 fn page_fills(pdf: &Path) -> Vec<f64> {
-    let out = Command::new("pdftotext")
-        .args(["-bbox", pdf.to_str().unwrap(), "-"])
-        .output()
-        .unwrap();
+    let out = poppler("pdftotext", &["-bbox", pdf.to_str().unwrap(), "-"]);
     let html = String::from_utf8_lossy(&out.stdout);
     let number = |tag: &str, name: &str| -> f64 {
         let at = tag.find(&format!("{name}=\"")).unwrap() + name.len() + 2;
@@ -570,8 +574,9 @@ fn page_fills(pdf: &Path) -> Vec<f64> {
 }
 
 #[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn an_exercise_sheet_and_its_key_load_draw_and_print_on_a4_and_letter() {
-    let Some(browser) = browser() else { return };
+    let browser = browser();
     let dir = tempfile::tempdir().unwrap();
     for (paper, size) in [("a4", &A4), ("letter", &LETTER)] {
         let page = dir.path().join(format!("sheet-{paper}.html"));
@@ -602,8 +607,9 @@ fn an_exercise_sheet_and_its_key_load_draw_and_print_on_a4_and_letter() {
 }
 
 #[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn an_animation_plays_and_its_frame_is_drawn() {
-    let Some(browser) = browser() else { return };
+    let browser = browser();
     let dir = tempfile::tempdir().unwrap();
     let page = dir.path().join("kisch.html");
     succeeded(&run(&[
@@ -668,8 +674,9 @@ fn check_svg_faces(browser: &Path, svg: &Path) {
 }
 
 #[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn a_standalone_svg_with_embed_fonts_is_set_in_its_own_face() {
-    let Some(browser) = browser() else { return };
+    let browser = browser();
     let dir = tempfile::tempdir().unwrap();
     // Italic letters, Greek, primes (from the maths face) and digits.
     for name in ["fig-67-example", "ng-fig-8-forces", "rod-motion"] {

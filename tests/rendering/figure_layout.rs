@@ -2,11 +2,8 @@
 //! (issue 20), each read back from its SVG alone: how much of the page the
 //! drawing takes, which letter stands by which point, what crosses what.
 
-#[allow(dead_code)] // the helpers the other figure tests use
-mod common;
-#[allow(dead_code)] // the reader's other helpers
-#[path = "common/plate.rs"]
-mod plate;
+use crate::common;
+use crate::plate;
 
 use plate::{Plate, Rect};
 use slider_crank::catalogue::FigureOptions;

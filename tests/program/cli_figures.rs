@@ -1,8 +1,7 @@
 //! The `figure` and `scene` subcommands.
 
-mod command;
-#[allow(dead_code)] // the helpers the figure tests use
-mod common;
+use crate::command;
+use crate::common;
 use command::{run, succeeded};
 use common::metadata;
 

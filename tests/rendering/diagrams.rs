@@ -3,11 +3,10 @@
 //! curve computed here from the formulas (docs/design.md §1–2, the seeds'
 //! equations), independently of the library.
 
-mod common;
+use crate::common;
 
+use crate::worked_engine;
 use common::{attr, metadata, num, read_text, snapshot_settings, tag};
-#[path = "common/worked_engine.rs"]
-mod worked_engine;
 use worked_engine::{Engine, indicator};
 
 use serde_json::Value;

@@ -1,7 +1,7 @@
 //! `slider-crank gallery`: the whole catalogue in three formats, the
 //! tables, and an index whose every link resolves.
 
-mod command;
+use crate::command;
 use command::{run, succeeded};
 use slider_crank::FigureName;
 use slider_crank::table::TableName;

@@ -1,5 +1,5 @@
 //! Scene files: every error names its line and column (that every
-//! example builds is `tests/scene_format.rs`).
+//! example builds is `tests/library/scene_format.rs`).
 
 use slider_crank::figure::PageUnit;
 use slider_crank::render::to_svg;

@@ -13,9 +13,7 @@
 use std::path::Path;
 use std::process::Command;
 
-#[path = "common/hostile.rs"]
-#[allow(dead_code)]
-mod hostile;
+use crate::hostile;
 
 /// One row of the table.
 struct Row {
@@ -31,7 +29,7 @@ fn code(cell: &str) -> Option<String> {
 }
 
 fn rows() -> Vec<Row> {
-    let doc = include_str!("../docs/robustness.md");
+    let doc = include_str!("../../docs/robustness.md");
     doc.lines()
         .filter(|l| l.starts_with("| `slider-crank"))
         .map(|line| {
@@ -169,7 +167,7 @@ fn run(row: &Row, dir: &Path, bin: &str, timeout: &str) -> std::process::Output 
 fn every_row_of_the_robustness_table_holds() {
     let rows = rows();
     assert!(rows.len() >= 60, "{} rows", rows.len());
-    let readme = include_str!("../README.md");
+    let readme = include_str!("../../README.md");
     assert!(
         readme.contains(&format!("{} bad or extreme inputs", rows.len())),
         "README.md gives another count than the table's {} rows",
@@ -278,7 +276,7 @@ fn regression_rows() -> Vec<Vec<String>> {
 /// The rows of the five-cell table under `heading` (up to the next
 /// heading) that `keep` takes (`| ` already checked), as trimmed cells.
 fn five_cell_rows(heading: &str, keep: fn(&str) -> bool) -> Vec<Vec<String>> {
-    let doc = include_str!("../docs/robustness.md");
+    let doc = include_str!("../../docs/robustness.md");
     let section = doc.split(heading).nth(1).expect("the table's section");
     let section = section.split("\n## ").next().unwrap();
     section
@@ -312,7 +310,7 @@ fn every_point_of_the_regression_table_is_tested() {
     );
     let table: Vec<String> = self::rows().into_iter().map(|r| r.command).collect();
     let sources = sources();
-    let commands = include_str!("regressions/commands.tsv");
+    let commands = include_str!("../regressions/commands.tsv");
     for row in &rows {
         let tests = &row[4];
         let input = spans(&row[1]).into_iter().next().unwrap();
@@ -465,7 +463,7 @@ fn every_point_of_the_second_round_is_tested() {
     }
 }
 
-/// The test functions `tests/robustness.rs`'s tables name are looked for in
+/// The test functions `tests/program/robustness.rs`'s tables name are looked for in
 /// every Rust file under src/ and tests/.
 fn sources() -> String {
     let mut sources = String::new();

@@ -2,7 +2,7 @@
 //!
 //! The documents, sources, tests, benchmarks and examples cite files by
 //! their path from the repository root (`docs/accuracy.md`,
-//! `tests/seeds.rs`, `examples/*.toml`, `snapshots/`), by a bare Markdown
+//! `tests/library/seeds.rs`, `examples/*.toml`, `snapshots/`), by a bare Markdown
 //! file name (`seed-errata.md`, found at the root, beside the citing file or
 //! in `docs/`) and, in Markdown, by relative links (`[…](figures/)`,
 //! resolved from the citing file's directory). A path that does not exist
@@ -209,7 +209,12 @@ fn every_cited_path_exists() {
     let files = scanned_files(&root);
     // The walk found the tree (a wrong root would pass vacuously).
     assert!(files.len() > 50, "{files:?}");
-    for must in ["README.md", "docs/design.md", "src/lib.rs", "tests/cli.rs"] {
+    for must in [
+        "README.md",
+        "docs/design.md",
+        "src/lib.rs",
+        "tests/program/cli.rs",
+    ] {
         assert!(files.contains(&PathBuf::from(must)), "{must} not scanned");
     }
     let mut broken = Vec::new();
@@ -238,7 +243,7 @@ fn a_broken_reference_is_caught() {
     let text = [
         format!("see {missing_doc} §2; the PNGs are docs/figures/NAME.png"),
         format!("the design in `{missing_bare}`"),
-        "the tests in tests/cli.rs and the figures in docs/figures/".to_string(),
+        "the tests in tests/program/cli.rs and the figures in docs/figures/".to_string(),
         format!("scene files: examples/*.toml; none in {missing_glob}"),
         "https://example.org/src/not-here.rs is a URL, not a path".to_string(),
         ["[errata](seed-errata.md) and [gone](", "gone", ".md#top)"].concat(),

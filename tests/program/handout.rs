@@ -3,7 +3,7 @@
 //! class are reproducible from their seed and hold no answer; bad input
 //! leaves no file.
 
-mod command;
+use crate::command;
 use command::{run, succeeded};
 use serde_json::Value;
 use std::collections::BTreeSet;

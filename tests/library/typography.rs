@@ -5,8 +5,7 @@
 //! upright; a prime is set in the style of the letter it marks; no
 //! straight apostrophe is set.
 
-#[allow(dead_code)] // the helpers the other figure tests use
-mod common;
+use crate::common;
 
 use common::{FIXED_PAGES, on_page};
 use skrifa::MetadataProvider;

@@ -1,8 +1,7 @@
 //! The seeds' figures: snapshots, rendering, where labelled points land,
 //! reproducibility, degenerate poses, lazy evaluation.
 
-#[allow(dead_code)] // the helpers the other figure tests use
-mod common;
+use crate::common;
 
 use common::{attr, metadata, num, snapshot_settings};
 

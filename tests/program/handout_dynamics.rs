@@ -4,10 +4,9 @@
 //! formulas worked here, independently of the library; and the section
 //! only where a mass is given.
 
-mod command;
+use crate::command;
+use crate::worked_engine;
 use command::{run, succeeded};
-#[path = "common/worked_engine.rs"]
-mod worked_engine;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use worked_engine::{Engine, indicator};

@@ -3,8 +3,7 @@
 //! the straight slot's first-order perturbation, Kennedy's theorem, and the
 //! inversions' link angles read off their own frames.
 
-#[allow(dead_code)] // the helpers the figure tests use
-mod common;
+use crate::common;
 
 use common::read_text;
 use proptest::prelude::*;
