@@ -56,6 +56,8 @@ CASES: List[Any] = [
     ("obliquity", {"angles": [10, 20, 30], "n": [4, 5]}, ["--angles=10,20,30", "--n=4,5"], 18),
     ("acceleration-factor", {}, [], 49),
     ("dynamics", {"angles": [0, 90]}, ["--angles=0,90"], 2 * 10),
+    ("balance", {"angles": np.arange(10), "cranks": [0, 120, 240]},
+     ["--angles=0:9:1", "--cranks=0,120,240"], 10 * 6),
 ]
 
 
