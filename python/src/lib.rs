@@ -575,8 +575,15 @@ fn table(
         "obliquity" => {
             let ratios = ratios(ratios_given, &[4.0, 5.0, 6.0])?;
             let spec = angles_or(&[90.0]);
-            let head = t::obliquity(&ratios, spec.slice().first().copied().unwrap_or(90.0))
+            let mut head = t::obliquity(&ratios, spec.slice().first().copied().unwrap_or(90.0))
                 .map_err(py_err)?;
+            // Over several angles the title names none and each row its
+            // own, as the command line writes it.
+            let several = spec.slice().len() > 1;
+            if several {
+                head.title = "Error due to obliquity, in crank radii (textbook §35)".into();
+                head.headers.insert(0, "θ (°)".into());
+            }
             bound
                 .check_obliquity(
                     spec.slice().len() as u64,
@@ -584,7 +591,15 @@ fn table(
                     head.headers.len(),
                 )
                 .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |a| t::obliquity(&ratios, a).map(|t| t.rows));
+            let rows: Rows<'_> = Box::new(move |a| {
+                let mut rows = t::obliquity(&ratios, a)?.rows;
+                if several {
+                    for row in &mut rows {
+                        row.insert(0, slider_crank::number::angle_cell(a, 1));
+                    }
+                }
+                Ok(rows)
+            });
             (head, spec, rows)
         }
         "acceleration-factor" => {
@@ -650,12 +665,10 @@ fn table(
                 .detach(|| t::dynamics_head(engine, &phases, ask, &units))
                 .map_err(py_err)?;
             let spec = angles_or(&range(0.0, 360.0, 30.0));
+            // Each cylinder's torque beyond the first is computed for
+            // every row too, as the command line counts it.
             bound
-                .check_angles(
-                    "table dynamics",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
+                .check_cylinders(spec.slice().len() as u64, head.headers.len(), phases.len())
                 .map_err(py_err)?;
             let phases = &phases;
             let rows: Rows<'_> =
