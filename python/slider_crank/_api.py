@@ -1298,7 +1298,7 @@ def balance(
     return InlineBalance._from_json(_core.inline_balance(_reals(cranks), _reals(planes), _real(n)))
 
 
-def harmonics(n: float = 6.0, order: int = 3) -> Harmonics:
+def harmonics(n: float = 6.0, order: int = _core.DEFAULT_ORDER) -> Harmonics:
     """The piston's acceleration of an in-line engine of ratio ``n`` = l/r
     (§35's 6 by default; at least 1.01) as its series of harmonics to
     cos 2kθ, k = ``order`` (3 by default, at most 1000), with the largest
