@@ -449,8 +449,8 @@ class Resultant:
     components (x along the line of stroke) at θ = 0 of the first crank,
     per unit m r ω² (a couple's also in the unit of the planes);
     ``amplitude`` its length, the largest unbalanced force (or couple)
-    over a turn; ``balanced`` whether the polygon closes (the amplitude
-    within 1e-12 of the sum of the sides)."""
+    over a turn; ``balanced`` whether the polygon closes (its closing
+    side at most 1e-12 times the sum of the lengths of its sides)."""
 
     vector: Point
     amplitude: float
