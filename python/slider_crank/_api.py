@@ -134,6 +134,57 @@ class Unbalanced:
 
 
 @dataclass(frozen=True)
+class EngineLoads:
+    """The forces of the whole engine at one pose, the rod's inertia
+    included (Newton–Euler on the slider and on the rod as a rigid body):
+    the member ``whole_engine`` of ``analyze --mass … --json``. Vectors
+    are (x, y) in the frame of the engine (x along the line of stroke
+    away from the crank centre); gravity and friction are left out, and
+    the crank is massless (or balanced about C).
+
+    Where :class:`Dynamics` gives the forces of the reciprocating parts
+    alone (its ``rod_force`` F / cos φ and ``guide_thrust`` −F tan φ, the
+    rod a massless link), these carry the rod's mass and moment of inertia
+    too; for an engine without ``rod_mass`` they are the same forces.
+
+    ``crosshead_pin_load``: the force of the rod on the cross-head pin A.
+    ``crank_pin_load``: the force of the rod on the crank pin B, which is
+    also the load on the main bearing. ``rod_force``: the force along the
+    rod at the cross-head, compression positive (the cross-head pin's
+    force along B → A; a heavy rod's pin force also has a part across
+    it). ``guide_thrust``: the slider's thrust on its guides along +y.
+    ``piston_effort_equivalent``: the piston effort of the equivalent
+    dynamical system, the gas force and the inertia force of the
+    reciprocating parts with the rod's mass at the cross-head
+    (m_A = m_r BG / l) moving with the piston, positive towards the crank.
+    ``shaking_force``: the force on the frame, −m a_A − m_r a_G, the
+    inertia forces of the reciprocating parts and the rod (the gas force
+    acts on the piston and the cylinder head alike and cancels).
+    """
+
+    crosshead_pin_load: Point
+    crank_pin_load: Point
+    rod_force: float
+    guide_thrust: float
+    piston_effort_equivalent: float
+    shaking_force: Point
+
+    @classmethod
+    def _from_json(cls, v: Dict[str, Any]) -> "EngineLoads":
+        def pair(key: str) -> Point:
+            return (v[key][0], v[key][1])
+
+        return cls(
+            crosshead_pin_load=pair("crosshead_pin_load"),
+            crank_pin_load=pair("crank_pin_load"),
+            rod_force=v["rod_force"],
+            guide_thrust=v["guide_thrust"],
+            piston_effort_equivalent=v["piston_effort_equivalent"],
+            shaking_force=pair("shaking_force"),
+        )
+
+
+@dataclass(frozen=True)
 class Dynamics:
     """The engine's forces and torques at one pose, the member
     ``dynamics`` of ``analyze --mass … --json`` (``at(..., mass=...)``).
@@ -148,7 +199,11 @@ class Dynamics:
     the construction; ``crank_effort`` F · OM and ``crank_effort_exact``
     F r sin(θ + φ) / cos φ; ``torque`` the whole torque on the crank (the
     crank effort and the rod's inertia torque); ``rod`` ``None`` for a
-    massless rod.
+    massless rod. These forces are the reciprocating parts' (the rod a
+    massless link); ``whole_engine`` (:class:`EngineLoads`) gives those of
+    the whole engine with the rod's inertia: the pin and main-bearing
+    loads, the force along the rod and the thrust on the guides with a
+    heavy rod, and the shaking force on the frame.
     """
 
     units: Dict[str, str]
@@ -165,6 +220,7 @@ class Dynamics:
     torque: float
     unbalanced: Unbalanced
     rod: Optional[RodDynamics]
+    whole_engine: EngineLoads
 
     @classmethod
     def _from_json(cls, v: Dict[str, Any]) -> "Dynamics":
@@ -172,6 +228,7 @@ class Dynamics:
         return cls(
             units=dict(v["units"]),
             unbalanced=Unbalanced(**v["unbalanced"]),
+            whole_engine=EngineLoads._from_json(v["whole_engine"]),
             rod=None
             if rod is None
             else RodDynamics(
@@ -378,6 +435,115 @@ class TurningMoment:
             kinks_deg=tuple(t["kinks_deg"]),
             flywheel=None if f is None else Flywheel(**f),
         )
+
+
+@dataclass(frozen=True)
+class Resultant:
+    """A part of the unbalance an in-line engine's cylinders leave
+    together: the closing side of its polygon (``table balance``'s notes).
+
+    Each cylinder's primary force is the projection on the line of stroke
+    of a vector m r ω² turning with its crank (the secondary: m r ω²/n at
+    twice the crank's angle); a couple multiplies each by the cylinder's
+    distance from the reference plane. ``vector`` is the resultant's
+    components (x along the line of stroke) at θ = 0 of the first crank,
+    per unit m r ω² (a couple's also in the unit of the planes);
+    ``amplitude`` its length, the largest unbalanced force (or couple)
+    over a turn; ``balanced`` whether the polygon closes (its closing
+    side at most 1e-12 times the sum of the lengths of its sides)."""
+
+    vector: Point
+    amplitude: float
+    balanced: bool
+
+
+@dataclass(frozen=True)
+class InlineBalance:
+    """The balance of the reciprocating masses of an in-line engine, as
+    ``table balance`` works it out (made by :func:`balance`): the
+    cylinders' crank angles ``cranks_deg`` (degrees ahead of the first),
+    their lines of stroke's distances ``planes`` from the reference plane
+    along the shaft, the ratio ``n`` = l/r of every cylinder, the four
+    resultants :class:`Resultant` of the primary and secondary forces and
+    couples (per unit m r ω², m the reciprocating mass of one cylinder, the
+    same for all; the secondary ones carry 1/n), and ``balanced``: all
+    four balanced. :meth:`sweep` gives the table's columns against θ."""
+
+    cranks_deg: Tuple[float, ...]
+    planes: Tuple[float, ...]
+    n: float
+    primary_force: Resultant
+    primary_couple: Resultant
+    secondary_force: Resultant
+    secondary_couple: Resultant
+    balanced: bool
+
+    @classmethod
+    def _from_json(cls, text: str) -> "InlineBalance":
+        v = json.loads(text)
+
+        def part(key: str) -> Resultant:
+            r = v[key]
+            return Resultant((r["vector"][0], r["vector"][1]), r["amplitude"], r["balanced"])
+
+        return cls(
+            cranks_deg=tuple(v["cranks_deg"]),
+            planes=tuple(v["planes"]),
+            n=v["n"],
+            primary_force=part("primary_force"),
+            primary_couple=part("primary_couple"),
+            secondary_force=part("secondary_force"),
+            secondary_couple=part("secondary_couple"),
+            balanced=v["balanced"],
+        )
+
+    def sweep(self, thetas: npt.ArrayLike) -> "BalanceSweep":
+        """The unbalanced forces and couples at every crank angle of
+        ``thetas`` (the first cylinder's, degrees; any array-like, any
+        shape), the columns of ``table balance``, computed by the library
+        with the GIL released; a NaN or infinite angle raises
+        ``ValueError``."""
+        a = _angles(thetas)
+        flat = a.reshape(-1)
+        out = np.empty((_core.BALANCE_ROWS, flat.size), dtype=np.float64)
+        _core.inline_sweep(list(self.cranks_deg), list(self.planes), self.n, flat, out)
+        return BalanceSweep(a, *(row.reshape(a.shape) for row in out))
+
+
+@dataclass(frozen=True)
+class BalanceSweep:
+    """An in-line engine's unbalanced forces and couples over an array of
+    the first crank's angles ``theta_deg`` (numpy arrays of its shape),
+    per unit m r ω² (couples also in the unit of the planes): the columns
+    of ``table balance``. ``primary_force`` and ``secondary_force`` are the
+    resultants' projections on the line of stroke (m r ω² cos θ and
+    m r ω² cos 2θ / n summed over the cylinders), ``primary_couple`` and
+    ``secondary_couple`` their moments about the reference plane, and
+    ``exact_force`` the inertia force −m a of every cylinder summed (its
+    harmonics beyond the second are O(1/n³))."""
+
+    theta_deg: npt.NDArray[np.float64]
+    primary_force: npt.NDArray[np.float64]
+    secondary_force: npt.NDArray[np.float64]
+    primary_couple: npt.NDArray[np.float64]
+    secondary_couple: npt.NDArray[np.float64]
+    exact_force: npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class Harmonics:
+    """The piston's acceleration of an in-line engine as a series of
+    harmonics, as ``table harmonics`` gives it (made by :func:`harmonics`):
+    −d²x/dt² = r ω² (cos θ + A₂ cos 2θ + A₄ cos 4θ + …) for the ratio
+    ``n`` = l/r. ``coefficients`` are the exact A₂, A₄, …, A₂ₖ (A₂ₖ at
+    index k − 1; from the exact acceleration sampled 4096 times a turn,
+    not the textbooks' leading terms in 1/n); ``truncation_error[k]`` is
+    the largest error over a turn, ÷ r ω², of the series cut after
+    cos 2kθ (index 0: after cos θ; index 1: the textbook's eq. (3))."""
+
+    n: float
+    coefficients: Tuple[float, ...]
+    truncation_error: Tuple[float, ...]
 
 
 @dataclass(frozen=True)
@@ -976,6 +1142,8 @@ _TABLE_USES: Dict[str, Tuple[str, ...]] = {
         "mass", "rod_mass", "rod_cg", "rod_gyration", "gas_force", "indicator", "bore",
         "phases", "fluctuation", "flywheel",
     ),
+    "balance": ("crank", "rod", "decimals", "unit", "cranks", "planes"),
+    "harmonics": ("crank", "rod", "decimals", "order"),
 }
 
 
@@ -1005,13 +1173,20 @@ def table(
     phases: Optional[Sequence[float]] = None,
     fluctuation: Optional[float] = None,
     flywheel: Optional[float] = None,
+    cranks: Optional[Sequence[float]] = None,
+    planes: Optional[Sequence[float]] = None,
+    order: Optional[int] = None,
     max_cells: int = _core.DEFAULT_MAX_CELLS,
 ) -> str:
     """A table as ``slider-crank table NAME`` prints it: ``obliquity``,
     ``acceleration-factor`` (the textbook's), ``kinematics`` (a θ sweep),
-    ``forces`` (Ng's Table 2) or ``dynamics`` (an engine's forces and
+    ``forces`` (Ng's Table 2), ``dynamics`` (an engine's forces and
     torques against θ, the turn's mean torque, fluctuation of energy and
-    flywheel in its notes); ``format`` is ``text``, ``markdown`` or
+    flywheel in its notes), ``balance`` (an in-line engine's unbalanced
+    primary and secondary forces and couples against θ, the polygons'
+    resultants and the verdict in its notes; see :func:`balance`) or
+    ``harmonics`` (the piston acceleration's series of harmonics and each
+    cut's error; see :func:`harmonics`); ``format`` is ``text``, ``markdown`` or
     ``csv``. Each keyword is the flag of that name (``None``: the table's
     default): ``n`` the ratios l/r (``math.inf`` for the infinitely long
     rod), ``angles`` the crank angles in degrees (any array-like),
@@ -1021,8 +1196,14 @@ def table(
     printed; ``mass`` … ``bore`` the engine of ``dynamics`` (as in
     :meth:`SliderCrank.at`; without any, the example mass m = 10),
     ``phases`` its cylinders' crank angles, ``fluctuation`` (C_s) or
-    ``flywheel`` (I) its flywheel note. A keyword the table does not use
-    raises ``ValueError``, as the command line refuses the flag.
+    ``flywheel`` (I) its flywheel note; ``cranks`` the crank angles of the
+    cylinders of ``balance`` (degrees ahead of the first; the flat four
+    0, 180, 180, 0 by default) and ``planes`` their distances from the
+    reference plane (a pitch of 1 about the middle by default), ``order``
+    the harmonics cos 2θ … cos 2Kθ of ``harmonics`` (3 by default); for
+    both, n = l/r is ``rod`` / ``crank`` (§35's 6 by default). A keyword
+    the table does not use raises ``ValueError``, as the command line
+    refuses the flag.
 
     ``max_cells`` bounds the values the table computes, rows × columns,
     with the command line's guard and default (``--max-cells``, 50 000 000,
@@ -1066,8 +1247,71 @@ def table(
         phases=None if phases is None else [_real(p) for p in phases],
         fluctuation=_option(fluctuation),
         flywheel=_option(flywheel),
+        cranks=_reals(cranks),
+        planes=_reals(planes),
+        order=None if order is None else _order(order),
         max_cells=_max_cells(max_cells),
     )
+
+
+def _reals(values: Optional[Sequence[float]]) -> Optional["list[float]"]:
+    return None if values is None else [_real(x) for x in values]
+
+
+def _order(order: int) -> int:
+    """``order`` checked as a count of harmonics (the library refuses 0
+    and more than it gives)."""
+    if isinstance(order, bool) or not isinstance(order, numbers.Integral):
+        raise TypeError(f"order must be an integer, got {type(order).__name__} {order!r}")
+    if not 0 <= order < 2**64:
+        raise ValueError(
+            f"order = {order} is out of range: the series runs to cos 2kθ "
+            f"with k from 1 to {_core.MAX_ORDER}"
+        )
+    return int(order)
+
+
+def balance(
+    cranks: Optional[Sequence[float]] = None,
+    planes: Optional[Sequence[float]] = None,
+    n: float = 6.0,
+) -> InlineBalance:
+    """The balance of the reciprocating masses of an in-line engine, as
+    ``table balance --cranks … --planes …`` works it out in its notes
+    (:class:`InlineBalance`): cylinder i's crank at ``cranks[i]`` degrees
+    ahead of the first's (the flat four 0, 180, 180, 0 by default), its
+    line of stroke at ``planes[i]`` from the reference plane along the
+    shaft (a pitch of 1 about the middle of the engine by default, where
+    the textbooks take the plane: a couple depends on the plane where its
+    force is not balanced), and the ratio ``n`` = l/r of every cylinder
+    (§35's 6 by default; the command line's ``--rod`` / ``--crank``).
+    Values are per unit m r ω². Bad input (no cylinder or more than 64,
+    lists of different lengths, a value not finite, n ≤ 1) raises
+    ``ValueError`` with the command line's message.
+
+    >>> four = balance([0, 180, 180, 0], n=4)
+    >>> four.primary_force.balanced, four.primary_couple.balanced, four.secondary_force.amplitude
+    (True, True, 1.0)
+    >>> balance([0, 120, 240, 240, 120, 0]).balanced
+    True
+    """
+    return InlineBalance._from_json(_core.inline_balance(_reals(cranks), _reals(planes), _real(n)))
+
+
+def harmonics(n: float = 6.0, order: int = _core.DEFAULT_ORDER) -> Harmonics:
+    """The piston's acceleration of an in-line engine of ratio ``n`` = l/r
+    (§35's 6 by default; at least 1.01) as its series of harmonics to
+    cos 2kθ, k = ``order`` (3 by default, at most 1000), with the largest
+    error of each truncation, as ``table harmonics --order K`` gives them
+    (:class:`Harmonics`); bad input raises ``ValueError`` with the command
+    line's message.
+
+    >>> h = harmonics(4, order=2)
+    >>> round(h.coefficients[0], 6), len(h.truncation_error)   # A₂ ≈ 1/n + 1/(4n³)
+    (0.254025, 3)
+    """
+    v = json.loads(_core.harmonics(_real(n), _order(order)))
+    return Harmonics(v["n"], tuple(v["coefficients"]), tuple(v["truncation_error"]))
 
 
 def _table_engine(

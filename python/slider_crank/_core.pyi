@@ -29,11 +29,18 @@ __all__ = [
     "inversion_at",
     "chain_check",
     "engine_check",
+    "inline_balance",
+    "inline_sweep",
+    "harmonics",
     "VERSION",
     "EXAMPLE_MASS",
     "DYNAMICS_ROWS",
     "DEFAULT_MAX_CELLS",
     "DEFAULT_RPM",
+    "BALANCE_ROWS",
+    "DEFAULT_CRANKS",
+    "DEFAULT_ORDER",
+    "MAX_ORDER",
 ]
 
 VERSION: str
@@ -41,6 +48,10 @@ EXAMPLE_MASS: float
 DYNAMICS_ROWS: int
 DEFAULT_MAX_CELLS: int
 DEFAULT_RPM: float
+BALANCE_ROWS: int
+DEFAULT_CRANKS: list[float]
+DEFAULT_ORDER: int
+MAX_ORDER: int
 
 def check_engine(
     crank: float, rod: float, offset: float, unit: str, force_unit: str
@@ -124,6 +135,9 @@ def table(
     phases: Optional[list[float]] = None,
     fluctuation: Optional[float] = None,
     flywheel: Optional[float] = None,
+    cranks: Optional[list[float]] = None,
+    planes: Optional[list[float]] = None,
+    order: Optional[int] = None,
     max_cells: int = ...,
 ) -> str: ...
 def gallery(out: str, only: Optional[list[str]] = None) -> list[str]: ...
@@ -202,3 +216,14 @@ def engine_check(
     tolerance: Optional[float] = None,
     max_cells: int = ...,
 ) -> tuple[str, bool, list[tuple[str, float, float, float, int, bool, float]]]: ...
+def inline_balance(
+    cranks: Optional[list[float]], planes: Optional[list[float]], n: float
+) -> str: ...
+def inline_sweep(
+    cranks: list[float],
+    planes: list[float],
+    n: float,
+    thetas: npt.NDArray[np.float64],
+    out: npt.NDArray[np.float64],
+) -> None: ...
+def harmonics(n: float, order: int) -> str: ...

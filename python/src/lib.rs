@@ -24,6 +24,7 @@ use slider_crank::{
 };
 use std::path::{Path, PathBuf};
 
+mod balance;
 mod chain;
 mod check;
 mod dynamics;
@@ -474,7 +475,8 @@ impl Angles<'_> {
 #[pyfunction]
 #[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=0.0,
     rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None,
-    engine=None, phases=None, fluctuation=None, flywheel=None, max_cells=DEFAULT_MAX_CELLS))]
+    engine=None, phases=None, fluctuation=None, flywheel=None, cranks=None, planes=None,
+    order=None, max_cells=DEFAULT_MAX_CELLS))]
 #[allow(clippy::too_many_arguments)]
 fn table(
     py: Python<'_>,
@@ -496,11 +498,15 @@ fn table(
     phases: Option<Vec<f64>>,
     fluctuation: Option<f64>,
     flywheel: Option<f64>,
+    cranks: Option<Vec<f64>>,
+    planes: Option<Vec<f64>>,
+    order: Option<usize>,
     max_cells: u64,
 ) -> PyResult<String> {
     use slider_crank::table::{self as t, Format, Head, Table};
     let format: Format = parse(format)?;
     let bound = MaxCells::keyword(max_cells);
+    let given_decimals = decimals;
     let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
     if decimals > 17 {
         return Err(py_err(Error::OutOfRange {
@@ -526,6 +532,33 @@ fn table(
         Ok(u)
     };
     let angles_or = |d: &[f64]| given.map_or_else(|| Angles::Own(d.to_vec()), Angles::Given);
+    if name == "harmonics" {
+        // The whole series at once, as the command line writes it (no
+        // angles: it has a row per harmonic); 8 decimals by default.
+        let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
+        let order = order.unwrap_or(balance::DEFAULT_ORDER);
+        let series = py
+            .detach(|| slider_crank::analytic::harmonics::Harmonics::new(m.ratio(), order))
+            .map_err(py_err)?;
+        let table = t::harmonics_table(&series, given_decimals.map_or(8, |_| decimals));
+        let head = Head {
+            title: &table.title,
+            headers: &table.headers,
+            notes: &table.notes,
+        };
+        let mut text = String::new();
+        t::render_rows(
+            format,
+            &head,
+            || table.rows.iter().cloned().map(Ok),
+            &mut |s| {
+                text.push_str(s);
+                Ok(())
+            },
+        )
+        .map_err(py_err)?;
+        return Ok(text);
+    }
     let range = |a: f64, b: f64, step: f64| -> Vec<f64> {
         (0..=((b - a) / step) as usize)
             .map(|k| a + step * k as f64)
@@ -542,8 +575,15 @@ fn table(
         "obliquity" => {
             let ratios = ratios(ratios_given, &[4.0, 5.0, 6.0])?;
             let spec = angles_or(&[90.0]);
-            let head = t::obliquity(&ratios, spec.slice().first().copied().unwrap_or(90.0))
+            let mut head = t::obliquity(&ratios, spec.slice().first().copied().unwrap_or(90.0))
                 .map_err(py_err)?;
+            // Over several angles the title names none and each row its
+            // own, as the command line writes it.
+            let several = spec.slice().len() > 1;
+            if several {
+                head.title = "Error due to obliquity, in crank radii (textbook §35)".into();
+                head.headers.insert(0, "θ (°)".into());
+            }
             bound
                 .check_obliquity(
                     spec.slice().len() as u64,
@@ -551,7 +591,15 @@ fn table(
                     head.headers.len(),
                 )
                 .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |a| t::obliquity(&ratios, a).map(|t| t.rows));
+            let rows: Rows<'_> = Box::new(move |a| {
+                let mut rows = t::obliquity(&ratios, a)?.rows;
+                if several {
+                    for row in &mut rows {
+                        row.insert(0, slider_crank::number::angle_cell(a, 1));
+                    }
+                }
+                Ok(rows)
+            });
             (head, spec, rows)
         }
         "acceleration-factor" => {
@@ -617,21 +665,34 @@ fn table(
                 .detach(|| t::dynamics_head(engine, &phases, ask, &units))
                 .map_err(py_err)?;
             let spec = angles_or(&range(0.0, 360.0, 30.0));
+            // Each cylinder's torque beyond the first is computed for
+            // every row too, as the command line counts it.
             bound
-                .check_angles(
-                    "table dynamics",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
+                .check_cylinders(spec.slice().len() as u64, head.headers.len(), phases.len())
                 .map_err(py_err)?;
             let phases = &phases;
             let rows: Rows<'_> =
                 Box::new(move |d| one(t::dynamics_row(engine, phases, d, decimals)));
             (head, spec, rows)
         }
+        "balance" => {
+            let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
+            let inline = balance::inline_engine(cranks, planes, m.ratio())?;
+            let head = t::balance_head(&inline, &with_units(Units::FOOT_POUND)?);
+            let spec = angles_or(&range(0.0, 360.0, 30.0));
+            bound
+                .check_angles(
+                    "table balance",
+                    spec.slice().len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let rows: Rows<'_> = Box::new(move |d| one(t::balance_row(&inline, d, decimals)));
+            (head, spec, rows)
+        }
         _ => {
             return Err(PyValueError::new_err(format!(
-                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics, forces and dynamics"
+                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics, forces, dynamics, balance and harmonics"
             )));
         }
     };
@@ -718,6 +779,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("EXAMPLE_MASS", slider_crank::dynamics::EXAMPLE_MASS)?;
     m.add("DYNAMICS_ROWS", dynamics::SWEEP_ROWS)?;
     chain::register(m)?;
+    balance::register(m)?;
     m.add_function(wrap_pyfunction!(check::engine_check, m)?)?;
     m.add("VERSION", env!("CARGO_PKG_VERSION"))?;
     Ok(())

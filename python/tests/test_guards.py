@@ -53,9 +53,12 @@ def test_a_request_beyond_the_guard_is_refused_as_the_command_line_refuses_it(
 
 CASES: List[Any] = [
     ("kinematics", {"angles": np.arange(100)}, ["--angles=0:99:1"], 700),
-    ("obliquity", {"angles": [10, 20, 30], "n": [4, 5]}, ["--angles=10,20,30", "--n=4,5"], 18),
+    # over several angles each row names its own θ: a column more
+    ("obliquity", {"angles": [10, 20, 30], "n": [4, 5]}, ["--angles=10,20,30", "--n=4,5"], 24),
     ("acceleration-factor", {}, [], 49),
     ("dynamics", {"angles": [0, 90]}, ["--angles=0,90"], 2 * 10),
+    ("balance", {"angles": np.arange(10), "cranks": [0, 120, 240]},
+     ["--angles=0:9:1", "--cranks=0,120,240"], 10 * 6),
 ]
 
 

@@ -1,0 +1,149 @@
+//! The balance of an in-line engine and the piston acceleration's series
+//! of harmonics for Python: the library's `InlineEngine` and `Harmonics`,
+//! built from the values `table balance --cranks … --planes …` and `table
+//! harmonics --order K` take (n = l/r given directly), with the command
+//! line's defaults and refusals.
+
+use crate::py_err;
+use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use serde_json::json;
+use slider_crank::Angle;
+use slider_crank::analytic::harmonics::Harmonics;
+use slider_crank::dynamics::InlineEngine;
+
+/// The cranks of `table balance` when `--cranks` is not given: four
+/// cylinders, the flat crank 0, 180, 180, 0.
+pub const DEFAULT_CRANKS: [f64; 4] = [0.0, 180.0, 180.0, 0.0];
+
+/// The order of `table harmonics` when `--order` is not given.
+pub const DEFAULT_ORDER: usize = 3;
+
+/// The rows `inline_sweep` fills: the primary and secondary forces, the
+/// primary and secondary couples and the exact force (the columns of
+/// `table balance` after θ).
+pub const BALANCE_ROWS: usize = 5;
+
+/// Refuses a value of a list that is not finite with the message the
+/// command line's list parser gives (`invalid crank angle 'NaN': expected
+/// a finite number`), `what` naming the list's values.
+fn finite_list(values: &[f64], what: &str) -> PyResult<()> {
+    match values.iter().find(|x| !x.is_finite()) {
+        Some(x) => Err(PyValueError::new_err(format!(
+            "invalid {what} '{x}': expected a finite number"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// The planes `table balance` takes when `--planes` is not given: a
+/// pitch of 1 about the middle of the engine, where the textbooks take
+/// the reference plane (−1.5, −0.5, 0.5, 1.5 for four cylinders).
+fn middle_pitch(cylinders: usize) -> Vec<f64> {
+    let middle = (cylinders as f64 - 1.0) / 2.0;
+    (0..cylinders).map(|i| i as f64 - middle).collect()
+}
+
+/// The in-line engine of the cylinders at `cranks` (degrees ahead of the
+/// first; the flat crank when `None`) in the planes `planes` (a pitch of
+/// 1 about the middle when `None`) and ratio n, checked as `table balance`
+/// checks them.
+pub fn inline_engine(
+    cranks: Option<Vec<f64>>,
+    planes: Option<Vec<f64>>,
+    ratio: f64,
+) -> PyResult<InlineEngine> {
+    let cranks = cranks.unwrap_or_else(|| DEFAULT_CRANKS.to_vec());
+    finite_list(&cranks, "crank angle")?;
+    let planes = planes.unwrap_or_else(|| middle_pitch(cranks.len()));
+    finite_list(&planes, "plane")?;
+    InlineEngine::new(&cranks, &planes, ratio).map_err(py_err)
+}
+
+/// The balance of the in-line engine as JSON text: its cranks, planes and
+/// n, the four resultants (vector at θ = 0, amplitude, balanced) and
+/// whether all four are balanced.
+#[pyfunction]
+#[pyo3(signature = (cranks, planes, n))]
+pub fn inline_balance(
+    cranks: Option<Vec<f64>>,
+    planes: Option<Vec<f64>>,
+    n: f64,
+) -> PyResult<String> {
+    let engine = inline_engine(cranks, planes, n)?;
+    Ok(json!({
+        "cranks_deg": engine.cranks_deg(),
+        "planes": engine.planes(),
+        "n": n,
+        "primary_force": engine.primary_force,
+        "primary_couple": engine.primary_couple,
+        "secondary_force": engine.secondary_force,
+        "secondary_couple": engine.secondary_couple,
+        "balanced": engine.is_balanced(),
+    })
+    .to_string())
+}
+
+/// Fills `out` (BALANCE_ROWS × n, C order) with the unbalanced forces and
+/// couples of the in-line engine at the first crank's angles `thetas`
+/// (degrees), as `table balance` computes its rows, the GIL released;
+/// errors with the first bad angle's message.
+#[pyfunction]
+pub fn inline_sweep(
+    py: Python<'_>,
+    cranks: Vec<f64>,
+    planes: Vec<f64>,
+    n: f64,
+    thetas: PyReadonlyArray1<'_, f64>,
+    mut out: PyReadwriteArray2<'_, f64>,
+) -> PyResult<()> {
+    let engine = inline_engine(Some(cranks), Some(planes), n)?;
+    let count = thetas.len();
+    if out.shape() != [BALANCE_ROWS, count] {
+        return Err(PyValueError::new_err(format!(
+            "out must be {BALANCE_ROWS} rows of {count} values"
+        )));
+    }
+    let thetas = thetas.as_slice()?;
+    let out = out.as_slice_mut()?;
+    py.detach(|| -> slider_crank::Result<()> {
+        for (i, &degrees) in thetas.iter().enumerate() {
+            let angle = Angle::from_degrees(degrees)?;
+            let (p, s) = engine.forces_at(angle);
+            let (pc, sc) = engine.couples_at(angle);
+            let exact = engine.exact_force(angle)?;
+            for (row, v) in [p, s, pc, sc, exact].into_iter().enumerate() {
+                out[row * count + i] = v + 0.0;
+            }
+        }
+        Ok(())
+    })
+    .map_err(py_err)
+}
+
+/// The series of harmonics of the piston's acceleration for ratio n to
+/// cos 2kθ, k = `order`, as JSON text: n, the coefficients A₂ … A₂ₖ and
+/// the largest error of each truncation (after cos θ, cos 2θ, …).
+#[pyfunction]
+pub fn harmonics(py: Python<'_>, n: f64, order: usize) -> PyResult<String> {
+    let series = py.detach(|| Harmonics::new(n, order)).map_err(py_err)?;
+    Ok(json!({
+        "n": series.ratio,
+        "coefficients": series.even,
+        "truncation_error": series.truncation_error,
+    })
+    .to_string())
+}
+
+/// Registers the functions and constants.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(inline_balance, m)?)?;
+    m.add_function(wrap_pyfunction!(inline_sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(harmonics, m)?)?;
+    m.add("BALANCE_ROWS", BALANCE_ROWS)?;
+    m.add("DEFAULT_CRANKS", DEFAULT_CRANKS.to_vec())?;
+    m.add("DEFAULT_ORDER", DEFAULT_ORDER)?;
+    m.add("MAX_ORDER", slider_crank::analytic::harmonics::MAX_ORDER)?;
+    Ok(())
+}
