@@ -575,15 +575,11 @@ fn table(
         "obliquity" => {
             let ratios = ratios(ratios_given, &[4.0, 5.0, 6.0])?;
             let spec = angles_or(&[90.0]);
-            let mut head = t::obliquity(&ratios, spec.slice().first().copied().unwrap_or(90.0))
-                .map_err(py_err)?;
             // Over several angles the title names none and each row its
-            // own, as the command line writes it.
+            // own (the library's rule, as the command line writes it).
             let several = spec.slice().len() > 1;
-            if several {
-                head.title = "Error due to obliquity, in crank radii (textbook §35)".into();
-                head.headers.insert(0, "θ (°)".into());
-            }
+            let first = spec.slice().first().copied().unwrap_or(90.0);
+            let head = t::obliquity_head(&ratios, first, several).map_err(py_err)?;
             bound
                 .check_obliquity(
                     spec.slice().len() as u64,
@@ -591,15 +587,7 @@ fn table(
                     head.headers.len(),
                 )
                 .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |a| {
-                let mut rows = t::obliquity(&ratios, a)?.rows;
-                if several {
-                    for row in &mut rows {
-                        row.insert(0, slider_crank::number::angle_cell(a, 1));
-                    }
-                }
-                Ok(rows)
-            });
+            let rows: Rows<'_> = Box::new(move |a| t::obliquity_rows(&ratios, a, several));
             (head, spec, rows)
         }
         "acceleration-factor" => {

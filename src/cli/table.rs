@@ -234,14 +234,15 @@ fn obliquity(
     let ratios = ratios.unwrap_or_else(|| vec![4.0, 5.0, 6.0]);
     let spec = spec.unwrap_or(AngleSpec::parse("90")?);
     let first = spec.iter().next().unwrap_or(90.0);
-    let head = table::obliquity(&ratios, first)?;
+    let several = spec.len() > 1;
+    let head = table::obliquity_head(&ratios, first, several)?;
     args.guard
         .bound()
         .check_obliquity(spec.len(), ratios.len() as u64, head.headers.len())?;
     let rows = || {
         spec.iter()
-            .flat_map(|a| match table::obliquity(&ratios, a) {
-                Ok(t) => t.rows.into_iter().map(Ok).collect::<Vec<_>>(),
+            .flat_map(|a| match table::obliquity_rows(&ratios, a, several) {
+                Ok(rows) => rows.into_iter().map(Ok).collect::<Vec<_>>(),
                 Err(e) => vec![Err(e)],
             })
     };

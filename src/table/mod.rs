@@ -322,6 +322,34 @@ pub fn obliquity(ratios: &[f64], theta_degrees: f64) -> Result<Table> {
     })
 }
 
+/// The head of the obliquity table over the angles from `first`: over
+/// `several` angles its title names none and a θ column comes first, each
+/// row naming its own angle ([`obliquity_rows`]); over one, [`obliquity`]'s.
+///
+/// Errors: those of [`obliquity`].
+pub fn obliquity_head(ratios: &[f64], first: f64, several: bool) -> Result<Table> {
+    let mut head = obliquity(ratios, first)?;
+    if several {
+        head.title = "Error due to obliquity, in crank radii (textbook §35)".into();
+        head.headers.insert(0, "θ (°)".into());
+    }
+    Ok(head)
+}
+
+/// The obliquity table's rows at `degrees`, each led by its θ where the
+/// table runs over `several` angles ([`obliquity_head`]).
+///
+/// Errors: those of [`obliquity`].
+pub fn obliquity_rows(ratios: &[f64], degrees: f64, several: bool) -> Result<Vec<Vec<String>>> {
+    let mut rows = obliquity(ratios, degrees)?.rows;
+    if several {
+        for row in &mut rows {
+            row.insert(0, angle_cell(degrees, 1));
+        }
+    }
+    Ok(rows)
+}
+
 /// Values of cos θ + cos 2θ / n (textbook §35, eq. 3), 3 decimals; rows
 /// labelled "θ or 360° − θ" as printed.
 pub fn acceleration_factor_table(ratios: &[f64], angles: &[f64]) -> Result<Table> {
