@@ -330,11 +330,26 @@ fn notes(ctx: &Ctx, mass: f64, k: f64, p: &Pair, s: &Pair, exact: f64) -> Vec<St
             sig(s.force),
         ),
         format!(
-            "Primary *m\u{a0}r*ω² cos θ = {} {f}, secondary *m\u{a0}r*ω² cos 2θ/*n* = {} {f}, their sum {} {f}; the exact inertia force −*m a* = {} {f}.",
+            "Primary *m\u{a0}r*ω² cos θ = {} {f}, secondary *m\u{a0}r*ω² cos 2θ/*n* = {} {f}, their sum {} {f}; the exact inertia force −*m a* = {} {f}.{}",
             sig(p.resultant()),
             sig(s.resultant()),
             sig(p.resultant() + s.resultant()),
             sig(exact),
+            offset_note(ctx),
         ),
     ]
+}
+
+/// With an offset, why the exact force is not the two cranks' sum: the
+/// series of direct and reverse cranks is an in-line engine's.
+fn offset_note(ctx: &Ctx) -> String {
+    let e = ctx.mechanism.offset();
+    if e == 0.0 {
+        return String::new();
+    }
+    format!(
+        " The line of stroke is offset by *e* = {} {}: the cranks are the series of an in-line engine, and the exact force also holds a term in sin θ of the order of *m\u{a0}r*ω²*e*/*l* that they leave out.",
+        short(e),
+        ctx.unit()
+    )
 }
