@@ -144,7 +144,7 @@ macro_rules! figures {
 }
 
 /// Ng's rig: r = 25 mm, l = 72 mm.
-const NG_RIG: (f64, f64) = (25.0, 72.0);
+pub(crate) const NG_RIG: (f64, f64) = (25.0, 72.0);
 
 /// The textbook's §35 engine: r = 0.5 ft, l = 3 ft.
 const ENGINE: (f64, f64) = (0.5, 3.0);

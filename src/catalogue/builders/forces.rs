@@ -82,10 +82,22 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     Ok(sheet.finish())
 }
 
-/// The measured F′ against θ: the data given, else Ng's experiment;
+/// Whether the figure draws Ng's own rig (r = 25, l = 72, in line), whose
+/// experiment it may show.
+fn ngs_rig(ctx: &Ctx) -> bool {
+    let m = ctx.mechanism;
+    (m.crank(), m.rod()) == crate::catalogue::specs::NG_RIG && m.offset() == 0.0
+}
+
+/// The measured F′ against θ: the data given, else Ng's experiment on his
+/// own rig (none for another engine: his points are not its forces);
 /// refused where an angle is outside 0° to 180°.
 fn measured(ctx: &Ctx) -> Result<Vec<(f64, f64)>> {
-    let text = ctx.options.data.as_deref().unwrap_or(NG_EXPERIMENT);
+    let text = match ctx.options.data.as_deref() {
+        Some(text) => text,
+        None if ngs_rig(ctx) => NG_EXPERIMENT,
+        None => return Ok(Vec::new()),
+    };
     let measured = Table::parse(text, Input::Data, "data")?
         .pairs(&["angle", "theta", "θ"], &["force", "f"])?;
     if let Some((a, _)) = measured.iter().find(|(a, _)| !(0.0..=180.0).contains(a)) {
@@ -130,7 +142,20 @@ fn forces(ctx: &Ctx, measured: &[(f64, f64)], height: f64) -> Result<(Plot, Opti
             Vector::new(1.0, (df * (1.0 - MU * k) - f * MU * dk) * PER_DEGREE),
         ))
     };
-    let most = measured.iter().map(|p| p.1).fold(50.0, f64::max);
+    // The least F: where OM = −ds/dθ is greatest, d²s/dθ² = 0.
+    let least_f = root(|d| at(&m, d, Pose::position_acceleration), 1.0, 179.0);
+    let least_force = least_f
+        .and_then(|d| pose_at(&m, d).as_ref().and_then(force))
+        .map(|(f, _)| (least_f.unwrap_or(90.0), f));
+    // The scale holds the measured points and the theory's U to two and a
+    // half times its least F (at every engine: a torque on a small crank
+    // gives forces far above Ng's); 50 N at Ng's rig, as he plotted it.
+    let floor: f64 = if ngs_rig(ctx) { 50.0 } else { 0.0 };
+    let theory = least_force.map_or(0.0, |(_, f)| 2.5 * f);
+    let most = measured
+        .iter()
+        .map(|p| p.1)
+        .fold(floor.max(theory), f64::max);
     let least = measured.iter().map(|p| p.1).fold(0.0, f64::min);
     let force_unit = ctx.units.force();
     let y = Axis::nice(&format!("force on the slider ({force_unit})"), least, most)?;
@@ -157,21 +182,19 @@ fn forces(ctx: &Ctx, measured: &[(f64, f64)], height: f64) -> Result<(Plot, Opti
         Dash::Dashed,
         Some("*F*′, theory: *F*(1 − μ tan φ), μ = 1 (eq. 8)"),
     )?;
-    forces.points(
-        "point-measured",
-        measured,
-        Symbol::Disc,
-        Some(if ctx.options.data.is_some() {
-            "*F*′, measured (the data given)"
-        } else {
-            "*F*′, experiment (Ng, Table 2)"
-        }),
-    );
-    // The least F: where OM = −ds/dθ is greatest, d²s/dθ² = 0.
-    let least_f = root(|d| at(&m, d, Pose::position_acceleration), 1.0, 179.0);
-    if let Some(d) = least_f
-        && let Some((f, _)) = pose_at(&m, d).as_ref().and_then(force)
-    {
+    if !measured.is_empty() {
+        forces.points(
+            "point-measured",
+            measured,
+            Symbol::Disc,
+            Some(if ctx.options.data.is_some() {
+                "*F*′, measured (the data given)"
+            } else {
+                "*F*′, experiment (Ng, Table 2)"
+            }),
+        );
+    }
+    if let Some((d, f)) = least_force {
         forces.points(
             "point-least-force",
             &[(d, f)],
@@ -235,11 +258,21 @@ fn transmission(ctx: &Ctx, top: f64) -> Result<(Plot, Option<f64>)> {
 /// The notes: Ng's rig and the torque, and how F′ is drawn.
 fn notes(ctx: &Ctx) -> [String; 2] {
     let m = ctx.mechanism;
+    let rig = if ngs_rig(ctx) {
+        "Ng’s rig"
+    } else {
+        "The engine (Ng’s experiment, on his rig, is not drawn)"
+    };
     [
         format!(
-            "Ng’s rig: *r* = {} {u}, *l* = {} {u}; *T* = {NG_TORQUE:.2} {}, the torque Ng’s *F* column implies{}.",
+            "{rig}: *r* = {} {u}, *l* = {} {u}{}; *T* = {NG_TORQUE:.2} {}, the torque Ng’s *F* column implies{}.",
             short(m.crank()),
             short(m.rod()),
+            if m.offset() == 0.0 {
+                String::new()
+            } else {
+                format!(", *e* = {} {}", short(m.offset()), ctx.unit())
+            },
             ctx.units.torque(),
             if ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
                 " (1 kg on the 27 mm crank)"
