@@ -11,7 +11,7 @@ use std::f64::consts::TAU;
 const SAMPLES: usize = 4096;
 
 /// The shortest rod the series is given for, n = l/r: nearer the limit
-/// of assembly the harmonics fall too slowly for [`SAMPLES`].
+/// of assembly the harmonics fall too slowly for the samples of a turn (4096).
 pub const MIN_RATIO: f64 = 1.01;
 
 /// Most harmonics asked for.

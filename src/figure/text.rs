@@ -325,7 +325,7 @@ pub struct Title(String);
 impl Title {
     /// The title `text`; an error (one line) when it is empty or blank,
     /// longer than [`MAX_TITLE_CHARS`], or unfit as every user's text is
-    /// ([`crate::error::text_fault`]: a control character such as a line
+    /// (the one check of a user's text: a control character such as a line
     /// break, a non-character such as U+FFFE, a bidirectional control, an
     /// invisible character).
     pub fn new(text: &str) -> crate::error::Result<Self> {
