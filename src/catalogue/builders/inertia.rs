@@ -409,12 +409,24 @@ fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
             ),
         ),
         format!(
-            "Along the rod *F*_Q = *F*_i/cos φ = {} {fu}, on the guides *F*_N = *F*_i tan φ = {} {fu}; *OM* = *CE* = {} {u}, crank effort *T* = *F*_i·*OM* = {} {t} (exact *F*_i *r* sin(θ + φ)/cos φ = {} {t}).",
+            "Along the rod *F*_Q = *F*_i/cos φ = {} {fu}, on the guides *F*_N = *F*_i tan φ = {} {fu}; *CE* (Ng’s *OM*) = {} {u}, crank effort *T* = *F*_i·*CE* = {} {t}{} (exact *F*_i *r* sin(θ + φ)/cos φ = {} {t}).",
             sig(at.rod_force.abs()),
             sig(at.guide_thrust.abs()),
             sig(at.om.abs()),
-            sig(at.crank_effort),
-            sig(at.crank_effort_exact),
+            sig(at.crank_effort.abs()),
+            sense(at.crank_effort, ", counter-clockwise", ", clockwise"),
+            sig(rounded_off(at.crank_effort_exact, at.inertia_force * m.crank()).abs()),
         ),
     ]
+}
+
+/// `x`, a torque of the size of `scale`, or 0 where it is within the
+/// rounding of that size (64 ulps): at a dead centre the exact formula's
+/// sin(θ + φ) is rounding, and 4×10⁻¹⁴ beside *T* = 0 reads as a value.
+fn rounded_off(x: f64, scale: f64) -> f64 {
+    if x.abs() <= 64.0 * f64::EPSILON * scale.abs() {
+        0.0
+    } else {
+        x
+    }
 }
