@@ -87,6 +87,9 @@ pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
     let names = gallery.file_names();
     for name in &names {
         writable(&dir.join(name))?;
+        if let Some(manifest) = &args.manifest {
+            not_the_manifest(&dir.join(name), manifest)?;
+        }
     }
     let mut progress = Progress::new("gallery", names.len());
     let mut staged = Vec::new();
@@ -199,6 +202,23 @@ fn commit(dir: &Path, staged: Vec<Staged>) -> Result<()> {
         }
         Ok(())
     })
+}
+
+/// Refuses a file of the gallery that is its own manifest (through any
+/// link): the gallery would write over the input it was made from.
+fn not_the_manifest(path: &Path, manifest: &Path) -> Result<()> {
+    let is_file = |p: &Path| std::fs::metadata(p).is_ok_and(|m| m.is_file());
+    if is_file(path) && slider_crank::render::same_file(path, manifest) {
+        return Err(Error::io_about(
+            format!(
+                "cannot write {}: it is the gallery's manifest {}, read to make the gallery (give another --out, or keep the manifest elsewhere)",
+                path.display(),
+                manifest.display()
+            ),
+            path,
+        ));
+    }
+    Ok(())
 }
 
 /// Refuses, before anything is made, a name of the gallery that is a
