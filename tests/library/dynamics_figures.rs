@@ -143,7 +143,16 @@ fn the_notes_give_the_crank_effort_f_om_with_units() {
         // Read without spaces: a wrapped note may break a line anywhere.
         let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
         let text = bare(&read_text(&svg));
-        let torque = bare(&format!("T = Fi·OM = {} lbf·ft", four(force * om)));
+        // T = F_i·CE as magnitudes, with its sense (CE is Ng's OM).
+        let t = force * om;
+        let sense = if t > 0.0 {
+            ", counter-clockwise"
+        } else if t < 0.0 {
+            ", clockwise"
+        } else {
+            ""
+        };
+        let torque = bare(&format!("T = Fi·CE = {} lbf·ft{sense}", four(t.abs())));
         assert!(text.contains(&torque), "{deg}°: {torque} in {text}");
         let inertia = bare(&format!("= {} lbf (exact", four(force.abs())));
         assert!(text.contains(&inertia), "{deg}°: {inertia} in {text}");
