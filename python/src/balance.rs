@@ -15,10 +15,10 @@ use slider_crank::dynamics::InlineEngine;
 
 /// The cranks of `table balance` when `--cranks` is not given: four
 /// cylinders, the flat crank 0, 180, 180, 0.
-pub const DEFAULT_CRANKS: [f64; 4] = [0.0, 180.0, 180.0, 0.0];
+pub const DEFAULT_CRANKS: [f64; 4] = slider_crank::dynamics::DEFAULT_CRANKS;
 
 /// The order of `table harmonics` when `--order` is not given.
-pub const DEFAULT_ORDER: usize = 3;
+pub const DEFAULT_ORDER: usize = slider_crank::analytic::harmonics::DEFAULT_ORDER;
 
 /// The rows `inline_sweep` fills: the primary and secondary forces, the
 /// primary and secondary couples and the exact force (the columns of
@@ -37,14 +37,6 @@ fn finite_list(values: &[f64], what: &str) -> PyResult<()> {
     }
 }
 
-/// The planes `table balance` takes when `--planes` is not given: a
-/// pitch of 1 about the middle of the engine, where the textbooks take
-/// the reference plane (−1.5, −0.5, 0.5, 1.5 for four cylinders).
-fn middle_pitch(cylinders: usize) -> Vec<f64> {
-    let middle = (cylinders as f64 - 1.0) / 2.0;
-    (0..cylinders).map(|i| i as f64 - middle).collect()
-}
-
 /// The in-line engine of the cylinders at `cranks` (degrees ahead of the
 /// first; the flat crank when `None`) in the planes `planes` (a pitch of
 /// 1 about the middle when `None`) and ratio n, checked as `table balance`
@@ -56,7 +48,7 @@ pub fn inline_engine(
 ) -> PyResult<InlineEngine> {
     let cranks = cranks.unwrap_or_else(|| DEFAULT_CRANKS.to_vec());
     finite_list(&cranks, "crank angle")?;
-    let planes = planes.unwrap_or_else(|| middle_pitch(cranks.len()));
+    let planes = planes.unwrap_or_else(|| slider_crank::dynamics::default_planes(cranks.len()));
     finite_list(&planes, "plane")?;
     InlineEngine::new(&cranks, &planes, ratio).map_err(py_err)
 }

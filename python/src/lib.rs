@@ -540,7 +540,12 @@ fn table(
         let series = py
             .detach(|| slider_crank::analytic::harmonics::Harmonics::new(m.ratio(), order))
             .map_err(py_err)?;
-        let table = t::harmonics_table(&series, given_decimals.map_or(8, |_| decimals));
+        let table = t::harmonics_table(
+            &series,
+            given_decimals.map_or(slider_crank::analytic::harmonics::DEFAULT_DECIMALS, |_| {
+                decimals
+            }),
+        );
         let head = Head {
             title: &table.title,
             headers: &table.headers,

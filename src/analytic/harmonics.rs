@@ -14,6 +14,13 @@ const SAMPLES: usize = 4096;
 /// of assembly the harmonics fall too slowly for the samples of a turn (4096).
 pub const MIN_RATIO: f64 = 1.01;
 
+/// The harmonics of `table harmonics` when no order is given: cos 2θ,
+/// cos 4θ and cos 6θ, the textbooks' A₂, A₄, A₆.
+pub const DEFAULT_ORDER: usize = 3;
+
+/// The decimals of the coefficients when none are asked for.
+pub const DEFAULT_DECIMALS: usize = 8;
+
 /// Most harmonics asked for.
 pub const MAX_ORDER: usize = 1000;
 

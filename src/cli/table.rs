@@ -186,9 +186,17 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
 /// `table harmonics`: the acceleration's series and each cut's error.
 fn harmonics(args: &TableArgs, decimals: usize, format: Format, out: &mut Stdout) -> Result<()> {
     let m = mechanism(args, 0.5, 3.0)?;
-    let order = args.order.unwrap_or(3);
+    let order = args
+        .order
+        .unwrap_or(slider_crank::analytic::harmonics::DEFAULT_ORDER);
     let series = slider_crank::analytic::harmonics::Harmonics::new(m.ratio(), order)?;
-    let t = table::harmonics_table(&series, args.decimals.map_or(8, |_| decimals));
+    let t = table::harmonics_table(
+        &series,
+        args.decimals
+            .map_or(slider_crank::analytic::harmonics::DEFAULT_DECIMALS, |_| {
+                decimals
+            }),
+    );
     write_rows(format, &t, || t.rows.iter().cloned().map(Ok), out)
 }
 
@@ -203,16 +211,11 @@ fn balance(
     let m = mechanism(args, 0.5, 3.0)?;
     let cranks = match &args.cranks {
         Some(s) => parse_list(s, "crank angle", false)?,
-        None => vec![0.0, 180.0, 180.0, 0.0],
+        None => slider_crank::dynamics::DEFAULT_CRANKS.to_vec(),
     };
     let planes = match &args.planes {
         Some(s) => parse_list(s, "plane", false)?,
-        // Equal pitch about the middle of the engine, where the books
-        // take the reference plane.
-        None => {
-            let middle = (cranks.len() as f64 - 1.0) / 2.0;
-            (0..cranks.len()).map(|i| i as f64 - middle).collect()
-        }
+        None => slider_crank::dynamics::default_planes(cranks.len()),
     };
     let engine = slider_crank::dynamics::InlineEngine::new(&cranks, &planes, m.ratio())?;
     let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;

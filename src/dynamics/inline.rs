@@ -5,6 +5,18 @@
 use crate::angle::Angle;
 use crate::error::{Error, Field, Result, finite, positive};
 
+/// The crank angles of `table balance` and Python's `balance()` when
+/// none are given: the four-cylinder flat crank.
+pub const DEFAULT_CRANKS: [f64; 4] = [0.0, 180.0, 180.0, 0.0];
+
+/// The planes of `cylinders` cylinders when none are given: a pitch of 1
+/// about the middle of the engine, where the textbooks take the reference
+/// plane (a couple depends on the plane where its force is unbalanced).
+pub fn default_planes(cylinders: usize) -> Vec<f64> {
+    let middle = (cylinders as f64 - 1.0) / 2.0;
+    (0..cylinders).map(|i| i as f64 - middle).collect()
+}
+
 /// Most cylinders of one in-line engine.
 pub const MAX_INLINE_CYLINDERS: usize = 64;
 

@@ -44,7 +44,10 @@ pub use balance::{Balance, unbalanced_forces};
 pub use engine::{EXAMPLE_MASS, Engine};
 pub use flywheel::{Flywheel, FlywheelAsk, MAX_COEFFICIENT, checked_coefficient};
 pub use gas::{GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS};
-pub use inline::{BALANCE_TOLERANCE, InlineEngine, MAX_INLINE_CYLINDERS, Resultant};
+pub use inline::{
+    BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Resultant,
+    default_planes,
+};
 pub use loads::EngineLoads;
 pub use parts::{EngineParts, IndicatorText};
 pub use pose::EnginePose;
