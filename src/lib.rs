@@ -147,6 +147,7 @@ pub mod handout;
 #[cfg(feature = "html")]
 mod html;
 pub mod input;
+pub mod layout;
 
 mod mechanism;
 pub mod number;

@@ -7,7 +7,6 @@ mod element;
 mod file_format;
 #[cfg(any(feature = "png", feature = "pdf"))]
 mod font_database;
-mod labels;
 #[cfg(feature = "pdf")]
 mod pdf;
 mod pending;
@@ -17,7 +16,6 @@ mod save;
 mod svg;
 #[cfg(any(feature = "png", feature = "pdf"))]
 mod svg_tree;
-mod symbol_sizes;
 
 pub use crate::number::plain;
 pub use crate::number::{GRID, fmt};

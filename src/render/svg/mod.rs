@@ -1,593 +1,51 @@
-//! The SVG writer: each panel's primitives mapped to the page by the
-//! panel's one transform, numbers on a fixed grid, ids and order stable.
-//!
-//! This file writes the document, its metadata and its panels; each item
-//! is drawn by the function of its symbol, one family to a file: lines
-//! ([`lines`]: paths, polylines, regions, circles, arcs), points
-//! ([`points`]: pins, dots, markers), the frame ([`frame`]: bearing,
-//! hatching, slider block), marks ([`marks`]: arrows, right-angle and
-//! angle marks, dimensions) and text ([`notes`]: labels, fixed texts,
-//! notes). Each symbol also tells the label placement what it covers.
+//! The SVG writer: the placed figure ([`crate::layout::place`]) written as
+//! SVG text, numbers on a fixed grid, ids and order stable. It decides
+//! nothing: each panel is a `<g>` with its map in `data-page-from-world`
+//! (clipped to its rectangle if it is a detail), each mark an element
+//! (`mark.rs`: paths, circles, groups; `text.rs`: texts of rich runs).
 
-mod centre;
-mod cull;
 #[cfg(feature = "html")]
 mod embed;
-mod frame;
-mod hatching;
-mod lines;
-mod marks;
-mod markup;
-mod notes;
+mod mark;
 mod options;
-mod points;
 mod text;
 
-use super::labels::{Bounds, NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
-use crate::figure::{
-    Figure, Font, Item, PageFromWorld, PageRect, PageUnit, Panel, Part, RichText, Role, Shape,
-};
-use crate::figure::{Pen, Style};
-use crate::geom::{Point, Vector};
+use crate::figure::{Figure, PageFromWorld, PageUnit};
+use crate::layout::{PlacedPanel, place};
 use crate::number::{fmt, fmt_coefficient};
 use crate::render::Element;
 #[cfg(feature = "html")]
 pub use embed::to_svg_with_fonts;
 pub use options::SvgOptions;
 use serde_json::{Map, Value, json};
-use text::{ink_box, starts_italic, text_node};
 
-/// The farthest a label's glyphs may be put from its anchor, in font
-/// sizes: 1.5 em, less the side bearing (up to about 0.15 em) by which an
-/// italic letter's ink sits inside its advance, less a margin.
-const REACH: f64 = 1.3;
-
-/// How far, in font sizes, a name or a value (not a point's letter) looks
-/// for a clear place when none within [`REACH`] is: first within 2.5 em,
-/// then within 4 (a value names what it gives, "l = 1.05 r", and reads
-/// from farther off than a letter, but not from anywhere).
-const WIDE_REACH: [f64; 2] = [2.5, 4.0];
-
-/// The room, in font sizes, kept on either side of a name or a value
-/// placed within [`WIDE_REACH`] (about a word space).
-const WIDE_ROOM: f64 = 0.3;
-
-/// A label waiting to be placed once every line is known.
-struct Pending {
-    id: String,
-    anchor: Point,
-    text: RichText,
-    size: f64,
-    gap: f64,
-    /// Whether it is a point's letter, placed before the values and
-    /// names, which are freer to move.
-    letter: bool,
-    /// The page direction tried first, out to the last ring (an angle's
-    /// bisector), if any.
-    toward: Option<Vector>,
-    /// Whether it is a joint's letter (a pin of the mechanism), which a
-    /// detail whose frame holds the pin letters too.
-    joint: bool,
-}
-
-impl Pending {
-    /// Whether the label says what it marks, and so may stand farther
-    /// from it than a letter ([`WIDE_REACH`]): a name or a value, or a
-    /// letter with words ("D at ∞" at an arrow towards a point off the
-    /// page); not a letter alone, read with what is nearest.
-    fn names_itself(&self) -> bool {
-        !self.letter || self.text.plain().contains(' ')
-    }
-}
-
-/// What an item's symbol is written with: its id, its role (the class)
-/// and its pen.
-struct Ink<'a> {
-    id: &'a str,
-    role: Role,
-    pen: Pen,
-    /// What the item is, where code tells it apart.
-    part: Part,
-}
-
-impl Ink<'_> {
-    /// `node` with the item's id and class.
-    fn tag(&self, mut node: Element) -> Element {
-        node.assign("id", self.id.to_owned());
-        node.assign("class", self.role.name());
-        node
-    }
-}
-
-/// The writer of one panel: its map, and what labels must keep clear of.
-struct PanelWriter<'a> {
-    t: &'a PageFromWorld,
-    page_width: f64,
-    style: Style,
-    font: Font,
-    obstacles: Obstacles,
-    pending: Vec<Pending>,
-    /// Lines that open for letters, to write again once the labels are
-    /// placed.
-    open_lines: Vec<centre::OpenLine>,
-    /// Hatchings to write again once the labels are placed.
-    hatchings: Vec<hatching::Hatching>,
-    /// The angle marks' radii: (page vertex, size of the sweep, radius).
-    angle_radii: Vec<(Point, f64, f64)>,
-    /// Whether the panel is a detail (clipped to its rectangle), where
-    /// the slider's block is enlarged.
-    detail: bool,
-    /// The page boxes of the detail marks drawn (a detail's frame on the
-    /// main view, its border).
-    detail_marks: Vec<Bounds>,
-    /// The straight pieces of the construction, result and auxiliary lines drawn
-    /// (page points), which the hatching is broken for.
-    crossing: Vec<(Point, Point)>,
-    /// The page centres of the pins and constructed points drawn, which
-    /// a point's letter keeps nearer its own than.
-    points: Vec<Point>,
-}
-
-impl PanelWriter<'_> {
-    /// The page point of a world point.
-    fn p(&self, w: Point) -> Point {
-        self.t.apply(w)
-    }
-
-    /// 1 where the map keeps the world's sense of turning, −1 where it
-    /// mirrors it.
-    fn orientation(&self) -> f64 {
-        let [a, b, c, d, _, _] = self.t.coefficients();
-        if a * d - b * c < 0.0 { -1.0 } else { 1.0 }
-    }
-
-    /// The pen of an item: its role's, with its own dash and hue.
-    fn pen(&self, item: &Item) -> Pen {
-        let mut pen = self.style.pen(item.role);
-        if let Some(dash) = item.dash {
-            pen.dash = Style::dash(dash);
-            if let Some(colour) = self.style.series(dash) {
-                pen.colour = colour;
-            }
-        }
-        if let Some(colour) = item.hue.and_then(|h| self.style.hue(h)) {
-            pen.colour = colour;
-        }
-        pen
-    }
-
-    /// The item drawn by its symbol's function; `None` where nothing is
-    /// written now (labels, placed later) or the item is off the map.
-    fn item(&mut self, item: &Item) -> Option<Element> {
-        let ink = Ink {
-            id: &item.id,
-            role: item.role,
-            pen: self.pen(item),
-            part: item.part,
-        };
-        self.obstacles.set_weight(match item.role {
-            // A letter may sit on a centre line, which opens for it.
-            _ if centre::is_centre_line(item.part) => centre::WEIGHT,
-            // An angle mark's arc opens for a letter too.
-            _ if matches!(item.shape, Shape::AngleMark { .. }) => centre::WEIGHT,
-            // Hatching is as bad to letter over as a link.
-            Role::Link | Role::Force | Role::Frame => 3.0,
-            Role::Construction | Role::Result => 1.5,
-            _ => 1.0,
-        });
-        // Hatching and a detail's frame are written again with a gap
-        // where a letter sits: a letter with no clean place goes there.
-        let opens = matches!(item.shape, Shape::Hatch { .. }) || item.part == Part::DetailMark;
-        self.obstacles.set_opens(opens);
-        match &item.shape {
-            Shape::Path(p) => self.fitted_path(&ink, p),
-            Shape::Polyline { points, closed } => self.polyline(&ink, points, *closed, item.part),
-            Shape::Region { points } => self.region(&ink, points),
-            Shape::Circle { centre, radius } => self.circle(&ink, *centre, *radius),
-            Shape::Arc {
-                centre,
-                radius,
-                start,
-                sweep,
-                arrow,
-            } => self.arc(&ink, *centre, *radius, (*start, *sweep), *arrow),
-            Shape::Pin { centre } => self.pin(&ink, *centre),
-            Shape::Dot { centre } => self.dot(&ink, *centre),
-            Shape::Marker { centre, symbol } => self.marker(&ink, *centre, *symbol),
-            Shape::Bearing { centre } => self.bearing(&ink, *centre),
-            Shape::Hatch { from, to, side } => self.hatch(&ink, *from, *to, *side),
-            Shape::Block { points } => self.block(&ink, points),
-            Shape::Arrow { from, to } => self.arrow(&ink, *from, *to),
-            Shape::RightAngle { vertex, u, v } => self.right_angle(&ink, *vertex, *u, *v),
-            Shape::AngleMark {
-                vertex,
-                start,
-                sweep,
-                text,
-            } => self.angle_mark(&ink, *vertex, (*start, *sweep), text.as_ref()),
-            Shape::Dimension {
-                from,
-                to,
-                side,
-                offset,
-                text,
-            } => self.dimension(&ink, (*from, *to), *side, *offset, text),
-            Shape::Label {
-                anchor,
-                text,
-                size,
-                toward,
-            } => self.label(&ink, *anchor, text, *size, *toward),
-            Shape::Text {
-                at,
-                offset,
-                text,
-                align,
-                size,
-            } => self.text(&ink, (*at, *offset), text, *align, *size),
-            Shape::Note { corner, lines } => self.note(&ink, *corner, lines),
-        }
-    }
-}
-
-/// Where an item is drawn in its panel: by role (later on top), tinted
-/// regions under the role's lines and pins over them.
-fn draw_order(role: Role, shape: &Shape) -> (usize, usize) {
-    let r = Role::ALL.iter().position(|x| *x == role).unwrap_or(0);
-    let s = match shape {
-        Shape::Region { .. } => 0,
-        Shape::Pin { .. } => 2,
-        _ => 1,
-    };
-    (r, s)
-}
-
-/// A panel as a `<g>` with its map in `data-page-from-world`: its items in
-/// drawing order, clipped to its rectangle if it asks, then its labels
-/// placed in `room` clear of everything drawn.
-fn panel_group(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Element {
-    let t = panel.transform();
-    let coefficients = t.coefficients().map(fmt_coefficient).join(" ");
+/// A panel as a `<g>` with its map in `data-page-from-world`, clipped to
+/// its rectangle if it is a detail, its marks in order.
+fn panel_group(panel: &PlacedPanel) -> Element {
+    let coefficients = (panel.page_from_world().coefficients())
+        .map(fmt_coefficient)
+        .join(" ");
     let mut g = Element::new("g")
         .set("id", panel.id().to_owned())
         .set("data-page-from-world", coefficients);
-    let mut w = PanelWriter {
-        t,
-        page_width: room.x + room.width,
-        style,
-        font,
-        obstacles: Obstacles::default(),
-        pending: Vec::new(),
-        open_lines: Vec::new(),
-        hatchings: Vec::new(),
-        angle_radii: Vec::new(),
-        detail: panel.is_clipped(),
-        detail_marks: Vec::new(),
-        crossing: Vec::new(),
-        points: Vec::new(),
-    };
-    let clip = panel.is_clipped().then(|| *panel.rect());
-    let mut order: Vec<(usize, &Item)> = panel
-        .items()
-        .iter()
-        .enumerate()
-        .filter(|(_, item)| clip.is_none_or(|r| cull::may_show(t, &r, &item.shape)))
-        .collect();
-    order.sort_by_key(|(i, item)| (draw_order(item.role, &item.shape), *i));
-    let shown: Vec<&Item> = order.iter().map(|(_, item)| *item).collect();
-    w.angle_radii = marks::angle_radii(t, &shown);
-    let mut nodes: Vec<Element> = Vec::new();
-    for (_, item) in &order {
-        let (lines, hatchings) = (w.open_lines.len(), w.hatchings.len());
-        if let Some(node) = w.item(item) {
-            if let Some(line) = w.open_lines.get_mut(lines) {
-                line.node = nodes.len();
-            }
-            if let Some(hatching) = w.hatchings.get_mut(hatchings) {
-                hatching.node = nodes.len();
-            }
-            nodes.push(node);
-        }
+    if let Some(r) = panel.clip() {
+        let clip = format!("clip-{}", panel.id());
+        let rect = Element::new("rect")
+            .set("x", fmt(r.x))
+            .set("y", fmt(r.y))
+            .set("width", fmt(r.width))
+            .set("height", fmt(r.height));
+        g = g
+            .add(
+                Element::new("defs")
+                    .add(Element::new("clipPath").set("id", clip.clone()).add(rect)),
+            )
+            .set("clip-path", format!("url(#{clip})"));
     }
-    let (texts, boxes) = w.place_labels(room);
-    for line in &w.open_lines {
-        if let Some(node) = nodes.get_mut(line.node) {
-            *node = line.written(&boxes);
-        }
-    }
-    // A hatching every stroke of which lies under letters is left empty.
-    for hatching in &w.hatchings {
-        if let Some(node) = nodes.get_mut(hatching.node) {
-            *node = match hatching.written(&boxes, &w.crossing) {
-                Some(p) => p,
-                None => Element::new("g"),
-            };
-        }
-    }
-    if panel.is_clipped() {
-        g = clipped(g, panel);
-    }
-    for n in nodes {
-        g = g.add(n);
-    }
-    for t in texts {
-        g = g.add(t);
+    for m in panel.marks() {
+        g = g.add(mark::element(m));
     }
     g
-}
-
-/// `g` clipped to the panel's rectangle (a detail panel).
-fn clipped(g: Element, panel: &Panel) -> Element {
-    let r = panel.rect();
-    let clip = format!("clip-{}", panel.id());
-    let rect = Element::new("rect")
-        .set("x", fmt(r.x))
-        .set("y", fmt(r.y))
-        .set("width", fmt(r.width))
-        .set("height", fmt(r.height));
-    g.add(Element::new("defs").add(Element::new("clipPath").set("id", clip.clone()).add(rect)))
-        .set("clip-path", format!("url(#{clip})"))
-}
-
-impl PanelWriter<'_> {
-    /// The pending labels placed in `room` one by one, the points'
-    /// letters first, each clear of what is drawn and of the labels
-    /// before it: their text elements and their boxes. Where some label
-    /// could not keep its glyphs clear, the labels are placed once more
-    /// with those first (an earlier label may have taken the one place
-    /// they had), and the better of the two placings is kept: fewer
-    /// labels crossed by what stays once written (a letter on hatching or
-    /// on a detail's frame is not: both open for it), then fewer struck
-    /// labels, then less cost.
-    fn place_labels(&mut self, room: &PageRect) -> (Vec<Element>, Vec<Bounds>) {
-        let mut pending = std::mem::take(&mut self.pending);
-        let halves: Vec<Vector> = (pending.iter())
-            .map(|p| ink_box(&p.text, p.size, self.font).0)
-            .collect();
-        self.obstacles.build(room, &halves);
-        pending.sort_by_key(|p| !p.letter);
-        let start = self.obstacles.mark();
-        let first: Vec<&Pending> = pending.iter().collect();
-        let placed = self.placing(&first, room);
-        // Labels crossed once written (a hatching and a detail's frame
-        // open for theirs), then struck, then the cost.
-        let struck = |placed: &[Placed]| {
-            let lasting = placed.iter().filter(|p| p.lasting).count();
-            let n = placed.iter().filter(|p| p.cost >= STRUCK).count();
-            (lasting, n, placed.iter().map(|p| p.cost).sum::<f64>())
-        };
-        let (lasting, n, cost) = struck(&placed);
-        let (order, placed) = if n == 0 {
-            (first, placed)
-        } else {
-            self.obstacles.rollback(start);
-            let (lost, kept): (Vec<_>, Vec<_>) = first
-                .iter()
-                .zip(&placed)
-                .partition(|(_, p)| p.cost >= STRUCK);
-            let again: Vec<&Pending> = lost.into_iter().chain(kept).map(|(p, _)| *p).collect();
-            let second = self.placing(&again, room);
-            let mut best = if struck(&second) < (lasting, n, cost) {
-                (again, second)
-            } else {
-                (first.clone(), placed)
-            };
-            if best.1.iter().any(|p| p.lasting) {
-                // Some letter is crossed anyway: once more with hatching
-                // and frames taken for what they are, lines that open.
-                self.obstacles.rollback(start);
-                self.obstacles.set_openings_strike(false);
-                let third = self.placing(&first, room);
-                self.obstacles.set_openings_strike(true);
-                if struck(&third) < struck(&best.1) {
-                    best = (first, third);
-                }
-            }
-            best
-        };
-        let joints: Vec<Point> = (order.iter())
-            .filter(|p| p.joint)
-            .map(|p| p.anchor)
-            .collect();
-        let mut nodes = Vec::new();
-        let mut boxes = Vec::new();
-        for (p, at) in order.into_iter().zip(placed) {
-            let others = others(p, &self.points);
-            if !self.left_to_detail(p, &at, (joints.iter()).chain(&others)) {
-                nodes.extend(self.label_nodes(p, &at));
-                boxes.push(at.bounds);
-            }
-        }
-        (nodes, boxes)
-    }
-
-    /// A placed label's text, then its leader if it has one.
-    fn label_nodes(&self, p: &Pending, at: &Placed) -> impl Iterator<Item = Element> {
-        let pen = self.style.pen(Role::Label);
-        let text = text_node(
-            &p.id,
-            at.at,
-            &p.text,
-            p.size,
-            pen.colour,
-            "middle",
-            starts_italic(&p.text),
-        );
-        let leader = at.leader.map(|(a, b)| {
-            let id = p.id.replacen("label-", "leader-", 1);
-            let line = markup::path(markup::polyline_d(&[a, b], false), pen);
-            line.set("id", id).set("class", "leader")
-        });
-        std::iter::once(text).chain(leader)
-    }
-
-    /// Whether a label is left out here and to the detail: a joint's
-    /// letter on the main view, where the pin lies inside a detail's
-    /// frame (the detail enlarges everything in its frame and letters the
-    /// pin there, clear), that is crossed by a line that stays or stands
-    /// nearer another of the `near` points (the other joints, the points
-    /// drawn over an em away) than its own by more than [`NEARER`] (two
-    /// pins a few units apart, A's letter beyond C).
-    fn left_to_detail<'p>(
-        &self,
-        p: &Pending,
-        at: &Placed,
-        mut near: impl Iterator<Item = &'p Point>,
-    ) -> bool {
-        let own = at.bounds.distance_to(p.anchor);
-        let mut nearer = || near.any(|&q| q != p.anchor && at.bounds.distance_to(q) + NEARER < own);
-        self.in_detail_frame(p) && (at.lasting || nearer())
-    }
-
-    /// Whether a label is a joint's letter on the main view whose pin
-    /// lies inside a detail's frame, the detail lettering it too.
-    fn in_detail_frame(&self, p: &Pending) -> bool {
-        p.joint && !self.detail && self.detail_marks.iter().any(|m| m.holds(p.anchor))
-    }
-
-    /// The labels placed in the `order` given, each box added to the
-    /// obstacles as it is placed.
-    fn placing(&mut self, order: &[&Pending], room: &PageRect) -> Vec<Placed> {
-        order
-            .iter()
-            .map(|p| {
-                let others = others(p, &self.points);
-                let (half, shift) = ink_box(&p.text, p.size, self.font);
-                // The box keeps [`ROOM`] about the glyphs: its reach is that less.
-                let reach = REACH * p.size - ROOM;
-                let place = |reach: f64, half: Vector| {
-                    place_toward(
-                        p.anchor,
-                        half,
-                        p.gap,
-                        reach,
-                        Steer {
-                            toward: p.toward,
-                            others: &others,
-                        },
-                        &self.obstacles,
-                        room,
-                    )
-                };
-                let lasting = |(centre, cost): (Point, f64)| {
-                    cost >= STRUCK
-                        && (self.obstacles).lasting(&Bounds::around(centre, half), p.anchor)
-                };
-                let mut best = place(reach, half);
-                if p.names_itself() && lasting(best) {
-                    // A name or a value crossed within a letter's reach by
-                    // a line that stays (a detail's magnification beside a
-                    // frame among crowding pins) looks further out, no
-                    // point holding it near, with a space's room on each
-                    // side so that it does not read as one word with a
-                    // letter beside it.
-                    let room = Vector::new(WIDE_ROOM * p.size, 0.0);
-                    for far in WIDE_REACH {
-                        let wide = place(far * p.size - ROOM, half + room);
-                        if !lasting(wide) {
-                            best = wide;
-                            break;
-                        }
-                    }
-                }
-                let mut leader = None;
-                let framed = self.in_detail_frame(p);
-                if !p.names_itself() && self.points.contains(&p.anchor) && !framed && lasting(best)
-                {
-                    // A point's letter crossed within reach by a line
-                    // that stays goes to a clear place farther out, a
-                    // leader drawn from it to the point, as a draughtsman
-                    // letters a point with no room beside it (a pin in a
-                    // detail's frame is left to the detail instead), the
-                    // leader through no label, part or marker.
-                    let far = place(LEADER_REACH * p.size - ROOM, half);
-                    let line = leader_line(&Bounds::around(far.0, half), p.anchor, reach);
-                    let clear =
-                        line.is_none_or(|(a, b)| !self.obstacles.crosses_a_box(a, b, p.anchor));
-                    if !lasting(far) && clear {
-                        best = far;
-                        leader = line;
-                    }
-                }
-                let (centre, cost) = best;
-                let bounds = Bounds::around(centre, half);
-                let lasting = lasting(best);
-                self.obstacles.boxed(bounds);
-                if let Some((a, b)) = leader {
-                    self.obstacles.set_weight(1.0);
-                    self.obstacles.segment(a, b);
-                }
-                Placed {
-                    at: centre + shift,
-                    bounds,
-                    cost,
-                    lasting,
-                    leader,
-                }
-            })
-            .collect()
-    }
-}
-
-/// The points a label's place keeps farther from than from its own:
-/// for a point's letter, every other point drawn more than an em
-/// from it (nearer, the two are read as one place, and their letters
-/// as a pair); for any other label, none.
-fn others(p: &Pending, points: &[Point]) -> Vec<Point> {
-    if !p.letter || !points.contains(&p.anchor) {
-        return Vec::new();
-    }
-    (points.iter())
-        .filter(|q| (**q - p.anchor).norm() > p.size)
-        .copied()
-        .collect()
-}
-
-/// Where a label was placed: the point its text is written at, its box,
-/// and what the place cost.
-struct Placed {
-    at: Point,
-    bounds: Bounds,
-    cost: f64,
-    /// Whether its glyphs meet what stays once written
-    /// ([`Obstacles::lasting`]).
-    lasting: bool,
-    /// The leader from the box towards its point, where a letter stands
-    /// beyond a letter's reach ([`leader_line`]).
-    leader: Option<(Point, Point)>,
-}
-
-/// How far, in font sizes, a point's letter crossed within [`REACH`]
-/// looks for a clear place with a leader to its point.
-const LEADER_REACH: f64 = 2.5;
-
-/// How far (page units) a leader stops short of its point: clear of a
-/// pin's circle (4.2) and a dot.
-const LEADER_SHORT: f64 = 6.0;
-
-/// The leader from the box `b` to `anchor`: from the box's nearest point
-/// to [`LEADER_SHORT`] short of the anchor; none where the box stands
-/// within `reach`, the letter there read with its point without one.
-fn leader_line(b: &Bounds, anchor: Point, reach: f64) -> Option<(Point, Point)> {
-    let from = Point::new(
-        anchor.x.clamp(b.min.x, b.max.x),
-        anchor.y.clamp(b.min.y, b.max.y),
-    );
-    let d = anchor - from;
-    (d.norm() > reach).then(|| (from, anchor - d * (LEADER_SHORT / d.norm())))
-}
-
-/// Where a panel's labels may go: in the panel, or just outside it (into
-/// the margin) for points near its edge, and always on the `page`. A
-/// clipped panel (a detail) keeps its labels inside.
-fn label_room(panel: &Panel, page: &PageRect) -> PageRect {
-    let r = panel.rect();
-    let out = if panel.is_clipped() { -3.0 } else { 8.0 };
-    let x0 = (r.x - out).max(page.x);
-    let y0 = (r.y - out).max(page.y);
-    let x1 = (r.x + r.width + out).min(page.x + page.width);
-    let y1 = (r.y + r.height + out).min(page.y + page.height);
-    PageRect::new(x0, y0, x1 - x0, y1 - y0)
 }
 
 /// A map's coefficients as JSON numbers, as written in the panels' attributes.
@@ -670,8 +128,6 @@ fn document(figure: &Figure, options: &SvgOptions) -> Element {
     let style = figure.style();
     let (w, h) = (figure.width(), figure.height());
     let unit = figure.size_unit();
-    // Labels stay a little inside the page.
-    let page = PageRect::new(2.0, 2.0, w - 4.0, h - 4.0);
     let paper = Element::new("rect")
         .set("id", "paper")
         .set("x", "0")
@@ -695,9 +151,8 @@ fn document(figure: &Figure, options: &SvgOptions) -> Element {
     if let Some(layer) = &options.underlay {
         doc = doc.add(layer.clone());
     }
-    for panel in figure.panels() {
-        let room = label_room(panel, &page);
-        doc = doc.add(panel_group(panel, style, figure.font(), &room));
+    for panel in place(figure).panels() {
+        doc = doc.add(panel_group(panel));
     }
     if !options.id_prefix.is_empty() {
         doc.prefix_ids(&options.id_prefix);

@@ -2,21 +2,21 @@
 //! and the slider block that runs in them.
 
 use super::hatching::Hatching;
-use super::markup::{finite, path, polyline_d, pt, unit};
-use super::{Ink, PanelWriter};
+use super::labels::Bounds;
+use super::mark::Mark;
+use super::mark::{PathCommand, PathData};
+use super::markup::{finite, path, polyline_d, unit};
+use super::symbol_sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
+use super::{Ink, PanelLayout};
 use crate::figure::Pen;
 use crate::figure::TextSize;
 use crate::geom::{Point, Vector};
-use crate::render::Element;
-use crate::render::labels::Bounds;
-use crate::render::symbol_sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
-use std::fmt::Write as _;
 
-impl PanelWriter<'_> {
+impl PanelLayout<'_> {
     /// The crank's bearing: a pedestal (a triangle on the paper) below the
     /// shaft's centre, on a hatched foot. Kept clear by labels: the
     /// triangle's edges and the foot with its hatching.
-    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point) -> Option<Element> {
+    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point) -> Option<Mark> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
@@ -24,11 +24,12 @@ impl PanelWriter<'_> {
         let (h, w, base) = (17.0, 10.0, 17.0);
         let tri = [c, c + Vector::new(-w, h), c + Vector::new(w, h)];
         let foot = [c + Vector::new(-base, h), c + Vector::new(base, h)];
-        let mut hatch = String::new();
+        let mut hatch = PathData::new();
         let mut x = -base + 3.0;
         while x <= base {
             let s = c + Vector::new(x, h);
-            let _ = write!(hatch, "M{} L{} ", pt(s), pt(s + Vector::new(-5.0, 6.0)));
+            hatch.push(PathCommand::Move(s));
+            hatch.push(PathCommand::Line(s + Vector::new(-5.0, 6.0)));
             x += 5.0;
         }
         // The triangle and the foot are lines to keep clear of; the
@@ -41,13 +42,10 @@ impl PanelWriter<'_> {
         });
         let pen = ink.pen;
         Some(
-            ink.tag(Element::new("g"))
-                .add(path(polyline_d(&tri, true), pen).set("fill", self.style.paper()))
-                .add(path(polyline_d(&foot, false), pen))
-                .add(path(
-                    hatch.trim_end().to_string(),
-                    Pen { width: 0.7, ..pen },
-                )),
+            ink.tag(Mark::group())
+                .with(path(polyline_d(&tri, true), pen).fill(self.style.paper()))
+                .with(path(polyline_d(&foot, false), pen))
+                .with(path(hatch, Pen { width: 0.7, ..pen })),
         )
     }
 
@@ -59,7 +57,7 @@ impl PanelWriter<'_> {
         from: Point,
         to: Point,
         side: Vector,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let (a, b) = (self.p(from), self.p(to));
         let t = unit(b - a)?;
         let n = unit(self.t.apply_vector(side))?;
@@ -104,7 +102,7 @@ impl PanelWriter<'_> {
     /// only the outline to sit on). A block on the main view that holds
     /// no letter each way keeps every letter out (the oscillating
     /// cylinder's, whose link's name belongs outside).
-    pub(super) fn block(&mut self, ink: &Ink, points: &[Point]) -> Option<Element> {
+    pub(super) fn block(&mut self, ink: &Ink, points: &[Point]) -> Option<Mark> {
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 3 || !pts.iter().all(finite) {
             return None;
@@ -137,7 +135,7 @@ impl PanelWriter<'_> {
                     ..ink.pen
                 },
             ))
-            .set("fill", "none"),
+            .fill("none"),
         )
     }
 }

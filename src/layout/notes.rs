@@ -2,16 +2,16 @@
 //! drawn (once the panel's lines are all known), texts at fixed places
 //! (ticks, axis titles, legends) and the scale notes.
 
+use super::labels::Bounds;
+use super::mark::{Mark, TextAnchor};
 use super::markup::{finite, unit};
+use super::symbol_sizes::{LETTER_GAP, NOTE_LINE, NOTE_SIZE};
 use super::text::{BASELINE, starts_italic, text_half, text_node};
-use super::{Ink, PanelWriter, Pending};
+use super::{Ink, PanelLayout, Pending};
 use crate::figure::{Align, Part, RichText, Role, TextSize};
 use crate::geom::{Point, Vector};
-use crate::render::Element;
-use crate::render::labels::Bounds;
-use crate::render::symbol_sizes::{LETTER_GAP, NOTE_LINE, NOTE_SIZE};
 
-impl PanelWriter<'_> {
+impl PanelLayout<'_> {
     /// A label near `anchor`: kept to be placed after every line of the
     /// panel is known, so nothing is written now.
     pub(super) fn label(
@@ -21,7 +21,7 @@ impl PanelWriter<'_> {
         text: &RichText,
         size: TextSize,
         toward: Option<Vector>,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let a = self.p(anchor);
         if !finite(&a) {
             return None;
@@ -52,7 +52,7 @@ impl PanelWriter<'_> {
         text: &RichText,
         align: Align,
         size: TextSize,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let c = self.p(at) + offset;
         if !finite(&c) {
             return None;
@@ -60,9 +60,9 @@ impl PanelWriter<'_> {
         let size = self.style.font_size(size);
         let half = text_half(text, size, self.font);
         let (anchor, middle) = match align {
-            Align::Start => ("start", c + Vector::new(half.x, 0.0)),
-            Align::Middle => ("middle", c),
-            Align::End => ("end", c - Vector::new(half.x, 0.0)),
+            Align::Start => (TextAnchor::Start, c + Vector::new(half.x, 0.0)),
+            Align::Middle => (TextAnchor::Middle, c),
+            Align::End => (TextAnchor::End, c - Vector::new(half.x, 0.0)),
         };
         self.obstacles.boxed(Bounds::around(middle, half));
         Some(text_node(
@@ -79,8 +79,8 @@ impl PanelWriter<'_> {
     /// Lines of a note from the page point `corner` (top left), all in one
     /// size, small enough for the longest to fit before the page's right
     /// edge.
-    pub(super) fn note(&mut self, ink: &Ink, corner: Point, lines: &[RichText]) -> Option<Element> {
-        let mut g = ink.tag(Element::new("g"));
+    pub(super) fn note(&mut self, ink: &Ink, corner: Point, lines: &[RichText]) -> Option<Mark> {
+        let mut g = ink.tag(Mark::group());
         let colour = self.style.pen(Role::Label).colour;
         let size = self.note_size(corner, lines);
         for (i, line) in lines.iter().enumerate() {
@@ -90,13 +90,13 @@ impl PanelWriter<'_> {
                 Point::new(corner.x + half.x, y - BASELINE * size),
                 half,
             ));
-            g = g.add(text_node(
+            g = g.with(text_node(
                 &format!("{}-{}", ink.id, i + 1),
                 Point::new(corner.x, y - BASELINE * size),
                 line,
                 size,
                 colour,
-                "start",
+                TextAnchor::Start,
                 false,
             ));
         }

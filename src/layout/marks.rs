@@ -2,14 +2,14 @@
 //! dimensions, in page sizes whatever the scale.
 
 use super::centre::Course;
+use super::labels::Bounds;
+use super::mark::{Mark, TextAnchor};
 use super::markup::{arc_beziers, arrow_head, finite, path, polyline_d, unit};
+use super::symbol_sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
 use super::text::{starts_italic, text_half, text_node};
-use super::{Ink, PanelWriter, Pending};
+use super::{Ink, PanelLayout, Pending};
 use crate::figure::{Item, PageFromWorld, Pen, RichText, Shape, TextSize};
 use crate::geom::{Point, Vector};
-use crate::render::Element;
-use crate::render::labels::Bounds;
-use crate::render::symbol_sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
 
 /// Step by which a dimension's text slides along its line off a line
 /// drawn through it, page units.
@@ -26,10 +26,10 @@ const LEADER: f64 = 6.0;
 /// little more.
 const EXTENSION_FREE: f64 = 20.0;
 
-impl PanelWriter<'_> {
+impl PanelLayout<'_> {
     /// A straight arrow with its head at `to`; labels keep off the shaft
     /// and the head.
-    pub(super) fn arrow(&mut self, ink: &Ink, from: Point, to: Point) -> Option<Element> {
+    pub(super) fn arrow(&mut self, ink: &Ink, from: Point, to: Point) -> Option<Mark> {
         let (a, b) = (self.p(from), self.p(to));
         if !finite(&a) || !finite(&b) {
             return None;
@@ -42,9 +42,9 @@ impl PanelWriter<'_> {
             .boxed(Bounds::around(b - u * half, Vector::new(half, half)));
         let shaft = polyline_d(&[a, b - u * (0.6 * ARROW_LENGTH)], false);
         Some(
-            ink.tag(Element::new("g"))
-                .add(path(shaft, ink.pen))
-                .add(arrow_head(b, u, ink.pen.colour)),
+            ink.tag(Mark::group())
+                .with(path(shaft, ink.pen))
+                .with(arrow_head(b, u, ink.pen.colour)),
         )
     }
 
@@ -56,7 +56,7 @@ impl PanelWriter<'_> {
         vertex: Point,
         u: Vector,
         v: Vector,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let c = self.p(vertex);
         let u = unit(self.t.apply_vector(u))?;
         let v = unit(self.t.apply_vector(v))?;
@@ -93,7 +93,7 @@ impl PanelWriter<'_> {
         vertex: Point,
         (start, sweep): (f64, f64),
         text: Option<&RichText>,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let c = self.p(vertex);
         if !finite(&c) {
             return None;
@@ -136,7 +136,7 @@ impl PanelWriter<'_> {
         side: Vector,
         offset: f64,
         text: &RichText,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let pen = ink.pen;
         let (a, b) = (self.p(from), self.p(to));
         let n = unit(self.t.apply_vector(side))?;
@@ -166,19 +166,19 @@ impl PanelWriter<'_> {
         }
         let thin = Pen { width: 0.5, ..pen };
         Some(
-            ink.tag(Element::new("g"))
-                .add(path(ext(a, a2), thin))
-                .add(path(ext(b, b2), thin))
-                .add(path(polyline_d(&line, false), pen))
-                .add(arrow_head(a2, towards, pen.colour))
-                .add(arrow_head(b2, -towards, pen.colour))
-                .add(text_node(
+            ink.tag(Mark::group())
+                .with(path(ext(a, a2), thin))
+                .with(path(ext(b, b2), thin))
+                .with(path(polyline_d(&line, false), pen))
+                .with(arrow_head(a2, towards, pen.colour))
+                .with(arrow_head(b2, -towards, pen.colour))
+                .with(text_node(
                     &format!("{}-text", ink.id),
                     centre,
                     text,
                     size,
                     pen.colour,
-                    "middle",
+                    TextAnchor::Middle,
                     starts_italic(text),
                 )),
         )
@@ -246,14 +246,14 @@ pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64
 
 #[cfg(test)]
 mod tests {
+    use super::super::symbol_sizes::RIGHT_ANGLE;
     use super::super::text::{BASELINE, text_half};
-    use super::super::to_svg;
     use crate::figure::Style;
     use crate::figure::{
         Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
     };
     use crate::geom::{Point, Vector};
-    use crate::render::symbol_sizes::RIGHT_ANGLE;
+    use crate::render::to_svg;
 
     /// The number after `name="` in the element with `id`.
     fn attribute(svg: &str, id: &str, name: &str) -> f64 {

@@ -1,9 +1,9 @@
 //! Culling a clipped panel (a detail): what lies wholly outside its
 //! rectangle is not written, since the clip would hide it anyway.
 
+use super::symbol_sizes::ANGLE_RADIUS;
 use crate::figure::{PageFromWorld, PageRect, Shape};
 use crate::geom::{Point, Vector};
-use crate::render::symbol_sizes::ANGLE_RADIUS;
 
 /// Page room around the points of a symbol drawn to page sizes: pins,
 /// dots and markers; arrows' heads; a right-angle mark.

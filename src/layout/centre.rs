@@ -7,12 +7,12 @@
 //! breaks it.)
 
 use super::Ink;
-use super::markup::{arc_beziers, bezier_d, path, polyline_d, pt};
+use super::labels::{Bounds, span};
+use super::mark::Mark;
+use super::mark::{PathCommand, PathData};
+use super::markup::{arc_beziers, bezier_d, path, polyline_d};
 use crate::figure::{Part, Pen, Role};
 use crate::geom::{Point, Vector};
-use crate::render::Element;
-use crate::render::labels::{Bounds, span};
-use std::fmt::Write as _;
 
 /// The dash pattern of a centre line: long dash, gap, dot, gap.
 pub(super) const DASH: &str = "14 3 2 3";
@@ -65,21 +65,21 @@ pub(super) struct OpenLine {
 impl OpenLine {
     /// The line as a path, one sub-path per piece left between the
     /// `boxes` it crosses.
-    pub fn written(&self, boxes: &[Bounds]) -> Element {
+    pub fn written(&self, boxes: &[Bounds]) -> Mark {
         let ink = Ink {
             id: &self.id,
             role: self.role,
             pen: self.pen,
             part: Part::Plain,
         };
-        let mut d = String::new();
+        let mut d = PathData::new();
         match self.course {
             Course::Centre { from, to } => {
                 for (s, t) in pieces(from, to, boxes) {
-                    let sep = if d.is_empty() { "" } else { " " };
-                    let _ = write!(d, "{sep}M{} L{}", pt(s), pt(t));
+                    d.push(PathCommand::Move(s));
+                    d.push(PathCommand::Line(t));
                 }
-                ink.tag(path(d, self.pen)).set("stroke-dasharray", DASH)
+                ink.tag(path(d, self.pen)).dashed(DASH)
             }
             Course::Frame { corners } => ink.tag(path(frame_d(&corners, boxes), self.pen)),
             Course::Arc {
@@ -89,9 +89,8 @@ impl OpenLine {
                 sweep,
             } => {
                 for (t0, t1) in arc_pieces(centre, radius, (start, sweep), boxes) {
-                    let sep = if d.is_empty() { "" } else { " " };
                     let piece = arc_beziers(centre, radius, start + t0 * sweep, (t1 - t0) * sweep);
-                    let _ = write!(d, "{sep}{}", bezier_d(&piece));
+                    d.extend(bezier_d(&piece));
                 }
                 ink.tag(path(d, self.pen))
             }
@@ -102,7 +101,7 @@ impl OpenLine {
 /// The path of a closed frame through `corners`, open at the `boxes` it
 /// crosses: one closed sub-path where it crosses none, else each side's
 /// pieces.
-fn frame_d(corners: &[Point; 4], boxes: &[Bounds]) -> String {
+fn frame_d(corners: &[Point; 4], boxes: &[Bounds]) -> PathData {
     let sides: Vec<(Point, Point)> = (0..4)
         .filter_map(|k| Some((*corners.get(k)?, *corners.get((k + 1) % 4)?)))
         .collect();
@@ -110,10 +109,10 @@ fn frame_d(corners: &[Point; 4], boxes: &[Bounds]) -> String {
     if cut.iter().zip(&sides).all(|(p, s)| p.as_slice() == [*s]) {
         return polyline_d(corners, true);
     }
-    let mut d = String::new();
+    let mut d = PathData::new();
     for (s, t) in cut.into_iter().flatten() {
-        let sep = if d.is_empty() { "" } else { " " };
-        let _ = write!(d, "{sep}M{} L{}", pt(s), pt(t));
+        d.push(PathCommand::Move(s));
+        d.push(PathCommand::Line(t));
     }
     d
 }

@@ -8,12 +8,12 @@
 //! its point is crowded.
 
 use super::Ink;
-use super::markup::{path, pt};
+use super::labels::{Bounds, span};
+use super::mark::Mark;
+use super::mark::{PathCommand, PathData};
+use super::markup::path;
 use crate::figure::{Part, Pen, Role};
 use crate::geom::{Point, Vector};
-use crate::render::Element;
-use crate::render::labels::{Bounds, span};
-use std::fmt::Write as _;
 
 /// Room kept between a letter's box and the strokes left, page units.
 const ROOM: f64 = 1.0;
@@ -32,7 +32,7 @@ impl Hatching {
     /// The strokes that meet none of the `boxes` (each grown by [`ROOM`])
     /// and keep [`ROOM`] from every one of the `crossing` lines (page
     /// segments), as one path; `None` when every stroke is covered.
-    pub fn written(&self, boxes: &[Bounds], crossing: &[(Point, Point)]) -> Option<Element> {
+    pub fn written(&self, boxes: &[Bounds], crossing: &[(Point, Point)]) -> Option<Mark> {
         let ink = Ink {
             id: &self.id,
             role: self.role,
@@ -46,11 +46,11 @@ impl Hatching {
             .filter(|(p, q)| Bounds::enclosing(&[*p, *q]).is_some_and(|b| b.meets(&reach)))
             .collect();
         let clear = |s: &&(Point, Point)| near.iter().all(|c| apart(**s, **c, ROOM));
-        let d = (kept(&self.strokes, boxes).filter(clear)).fold(String::new(), |mut d, (p, q)| {
-            let sep = if d.is_empty() { "" } else { " " };
-            let _ = write!(d, "{sep}M{} L{}", pt(*p), pt(*q));
-            d
-        });
+        let mut d = PathData::new();
+        for (p, q) in kept(&self.strokes, boxes).filter(clear) {
+            d.push(PathCommand::Move(*p));
+            d.push(PathCommand::Line(*q));
+        }
         (!d.is_empty()).then(|| ink.tag(path(d, self.pen)))
     }
 }
@@ -111,17 +111,28 @@ mod tests {
         };
         // A slanting line across the band from (10, -2) to (40, 9).
         let line = (Point::new(10.0, -2.0), Point::new(40.0, 9.0));
-        let all = hatching.written(&[], &[]).map(|e| e.to_string()).unwrap();
-        let some = hatching
-            .written(&[], &[line])
-            .map(|e| e.to_string())
-            .unwrap();
-        assert_eq!(all.matches('M').count(), 10);
-        let kept = some.matches('M').count();
-        assert!((4..10).contains(&kept), "{kept} strokes kept: {some}");
+        let all = starts(&hatching.written(&[], &[]).unwrap());
+        let some = starts(&hatching.written(&[], &[line]).unwrap());
+        assert_eq!(all.len(), 10);
+        let kept = some.len();
+        assert!((4..10).contains(&kept), "{kept} strokes kept: {some:?}");
         // The strokes starting at x = 0 and 54 lie far off the line.
-        assert!(some.contains("M0 0") && some.contains("M54 0"), "{some}");
+        let at = |x: f64| some.contains(&Point::new(x, 0.0));
+        assert!(at(0.0) && at(54.0), "{some:?}");
         assert!(apart(strokes_at(0.0), line, ROOM) && !apart(strokes_at(24.0), line, ROOM));
+    }
+
+    /// Where the strokes of a hatching's path start.
+    fn starts(mark: &crate::layout::Mark) -> Vec<Point> {
+        let crate::layout::MarkShape::Path(d, _) = &mark.shape else {
+            panic!("a hatching is a path: {mark:?}");
+        };
+        (d.commands().iter())
+            .filter_map(|c| match c {
+                crate::layout::PathCommand::Move(p) => Some(*p),
+                _ => None,
+            })
+            .collect()
     }
 
     /// A hatch stroke from `x` on the guide's line, at 6 units' spacing.

@@ -1,21 +1,19 @@
 //! Lines: fitted paths, polylines, tinted regions, circles and arcs (an
 //! arrowed arc is a torque). Every line they draw is kept clear by labels.
 
+use super::labels::Bounds;
+use super::mark::{Mark, Paint, PathCommand, PathData, Shape};
 use super::markup::{
-    arc_beziers, arrow_head, bezier_d, finite, path, polyline_d, pt, stroke, unit,
+    arc_beziers, arrow_head, bezier_d, finite, path, polyline_d, stroked_circle, unit,
 };
-use super::{Ink, PanelWriter, centre};
+use super::{Ink, PanelLayout, centre};
 use crate::figure::{Part, Path, PathSegment, Role};
 use crate::geom::Point;
-use crate::number::fmt;
-use crate::render::Element;
-use crate::render::labels::Bounds;
-use std::fmt::Write as _;
 
-impl PanelWriter<'_> {
+impl PanelLayout<'_> {
     /// A fitted path of lines and cubic Béziers.
-    pub(super) fn fitted_path(&mut self, ink: &Ink, p: &Path) -> Option<Element> {
-        let mut d = String::new();
+    pub(super) fn fitted_path(&mut self, ink: &Ink, p: &Path) -> Option<Mark> {
+        let mut d = PathData::new();
         let mut last = Point::origin();
         let mut pieces = Vec::new();
         let mut straight = Vec::new();
@@ -23,23 +21,23 @@ impl PanelWriter<'_> {
             match *seg {
                 PathSegment::MoveTo(q) => {
                     let q = self.p(q);
-                    let _ = write!(d, "{}M{}", if d.is_empty() { "" } else { " " }, pt(q));
+                    d.push(PathCommand::Move(q));
                     last = q;
                 }
                 PathSegment::LineTo(q) => {
                     let q = self.p(q);
-                    let _ = write!(d, " L{}", pt(q));
+                    d.push(PathCommand::Line(q));
                     self.obstacles.segment(last, q);
                     straight.push((last, q));
                     last = q;
                 }
                 PathSegment::CubicTo(c1, c2, q) => {
                     let (c1, c2, q) = (self.p(c1), self.p(c2), self.p(q));
-                    let _ = write!(d, " C{} {} {}", pt(c1), pt(c2), pt(q));
+                    d.push(PathCommand::Cubic(c1, c2, q));
                     pieces.push([last, c1, c2, q]);
                     last = q;
                 }
-                PathSegment::Close => d.push_str(" Z"),
+                PathSegment::Close => d.push(PathCommand::Close),
             }
         }
         if !p.points().all(|q| finite(&self.p(q))) {
@@ -63,7 +61,7 @@ impl PanelWriter<'_> {
         points: &[Point],
         closed: bool,
         part: Part,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 2 || !pts.iter().all(finite) {
             return None;
@@ -102,24 +100,22 @@ impl PanelWriter<'_> {
 
     /// A tinted area without outline, where the style tints (the similar
     /// triangles of the handout); not an obstacle.
-    pub(super) fn region(&mut self, ink: &Ink, points: &[Point]) -> Option<Element> {
+    pub(super) fn region(&mut self, ink: &Ink, points: &[Point]) -> Option<Mark> {
         let (colour, opacity) = self.style.region()?;
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         if pts.len() < 3 || !pts.iter().all(finite) {
             return None;
         }
-        Some(
-            ink.tag(Element::new("path"))
-                .set("d", polyline_d(&pts, true))
-                .set("fill", colour)
-                .set("fill-opacity", fmt(opacity))
-                .set("stroke", "none"),
-        )
+        let paint = Paint {
+            fill_opacity: Some(opacity),
+            ..Paint::filled(colour)
+        };
+        Some(ink.tag(Mark::new(Shape::Path(polyline_d(&pts, true), paint))))
     }
 
     /// A full circle: a `<circle>` where the panel's map is a similarity,
     /// else its Bézier image.
-    pub(super) fn circle(&mut self, ink: &Ink, centre: Point, radius: f64) -> Option<Element> {
+    pub(super) fn circle(&mut self, ink: &Ink, centre: Point, radius: f64) -> Option<Mark> {
         let c = self.p(centre);
         let pieces: Vec<[Point; 4]> = arc_beziers(centre, radius, 0.0, 2.0 * std::f64::consts::PI)
             .into_iter()
@@ -131,12 +127,7 @@ impl PanelWriter<'_> {
         }
         let [a, b, cc, d, _, _] = self.t.coefficients();
         if (a * a + b * b - cc * cc - d * d).abs() <= 1e-9 * (a * a + b * b) {
-            Some(
-                ink.tag(stroke(Element::new("circle"), ink.pen))
-                    .set("cx", fmt(c.x))
-                    .set("cy", fmt(c.y))
-                    .set("r", fmt(radius * self.t.scale())),
-            )
+            Some(ink.tag(stroked_circle(c, radius * self.t.scale(), ink.pen)))
         } else {
             Some(ink.tag(path(bezier_d(&pieces), ink.pen)))
         }
@@ -151,7 +142,7 @@ impl PanelWriter<'_> {
         radius: f64,
         (start, sweep): (f64, f64),
         arrow: bool,
-    ) -> Option<Element> {
+    ) -> Option<Mark> {
         let pieces: Vec<[Point; 4]> = arc_beziers(centre, radius, start, sweep)
             .into_iter()
             .map(|b| b.map(|p| self.p(p)))
@@ -167,15 +158,15 @@ impl PanelWriter<'_> {
         let last = pieces.last()?;
         let u = unit(last[3] - last[2])?;
         Some(
-            ink.tag(Element::new("g"))
-                .add(line)
-                .add(arrow_head(last[3], u, ink.pen.colour)),
+            ink.tag(Mark::group())
+                .with(line)
+                .with(arrow_head(last[3], u, ink.pen.colour)),
         )
     }
 
     /// A line that opens for letters, written whole now and again with
     /// its gaps once the labels are placed.
-    pub(super) fn open_line(&mut self, ink: &Ink, course: centre::Course) -> Element {
+    pub(super) fn open_line(&mut self, ink: &Ink, course: centre::Course) -> Mark {
         let line = centre::OpenLine {
             node: usize::MAX,
             id: ink.id.to_string(),

@@ -1,19 +1,19 @@
 //! Symbols at a point: pins, constructed points and the data markers of
 //! plots, each kept clear by labels as a whole.
 
-use super::markup::{finite, path, polyline_d, stroke};
-use super::{Ink, PanelWriter};
+use super::labels::Bounds;
+use super::mark::{Mark, Paint, PathData, Shape, Stroke};
+use super::markup::{finite, path, polyline_d, stroked_circle};
+use super::symbol_sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
+use super::{Ink, PanelLayout};
 use crate::figure::{Pen, Symbol};
 use crate::geom::{Point, Vector};
-use crate::number::fmt;
-use crate::render::Element;
-use crate::render::labels::Bounds;
-use crate::render::symbol_sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
 
-impl PanelWriter<'_> {
-    /// A disc of page `radius` about a world point (pins and dots), kept
-    /// clear by the labels; `None` if the point does not map to a finite one.
-    fn disc(&mut self, ink: &Ink, centre: Point, radius: f64) -> Option<Element> {
+impl PanelLayout<'_> {
+    /// A disc of page `radius` about a world point (pins and dots) painted
+    /// with `paint`, kept clear by the labels; `None` if the point does
+    /// not map to a finite one.
+    fn disc(&mut self, ink: &Ink, centre: Point, radius: f64, paint: Paint) -> Option<Mark> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
@@ -21,33 +21,34 @@ impl PanelWriter<'_> {
         self.obstacles
             .boxed(Bounds::around(c, Vector::new(radius, radius)));
         self.points.push(c);
-        Some(
-            ink.tag(Element::new("circle"))
-                .set("cx", fmt(c.x))
-                .set("cy", fmt(c.y))
-                .set("r", fmt(radius)),
-        )
+        Some(ink.tag(Mark::new(Shape::Circle {
+            centre: c,
+            radius,
+            paint,
+        })))
     }
 
     /// A pin joint: a small open circle on the paper.
-    pub(super) fn pin(&mut self, ink: &Ink, centre: Point) -> Option<Element> {
-        let paper = self.style.paper();
-        let disc = self.disc(ink, centre, PIN_RADIUS)?;
-        Some(
-            disc.set("fill", paper)
-                .set("stroke", ink.pen.colour)
-                .set("stroke-width", fmt(1.3)),
-        )
+    pub(super) fn pin(&mut self, ink: &Ink, centre: Point) -> Option<Mark> {
+        let paint = Paint {
+            stroke: Some(Stroke {
+                colour: ink.pen.colour,
+                width: 1.3,
+                dash: None,
+                round: false,
+            }),
+            ..Paint::filled(self.style.paper())
+        };
+        self.disc(ink, centre, PIN_RADIUS, paint)
     }
 
     /// A constructed point: a small filled dot.
-    pub(super) fn dot(&mut self, ink: &Ink, centre: Point) -> Option<Element> {
-        let disc = self.disc(ink, centre, DOT_RADIUS)?;
-        Some(disc.set("fill", ink.pen.colour).set("stroke", "none"))
+    pub(super) fn dot(&mut self, ink: &Ink, centre: Point) -> Option<Mark> {
+        self.disc(ink, centre, DOT_RADIUS, Paint::filled(ink.pen.colour))
     }
 
     /// A data point: its symbol at a fixed page size, full lines.
-    pub(super) fn marker(&mut self, ink: &Ink, centre: Point, symbol: Symbol) -> Option<Element> {
+    pub(super) fn marker(&mut self, ink: &Ink, centre: Point, symbol: Symbol) -> Option<Mark> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
@@ -65,26 +66,20 @@ impl PanelWriter<'_> {
             } else {
                 self.style.paper()
             };
-            return Some(
-                ink.tag(stroke(Element::new("circle"), pen))
-                    .set("cx", fmt(c.x))
-                    .set("cy", fmt(c.y))
-                    .set("r", fmt(r))
-                    .set("fill", fill),
-            );
+            return Some(ink.tag(stroked_circle(c, r, pen)).fill(fill));
         };
         let fill = if symbol == Symbol::Cross {
             "none"
         } else {
             self.style.paper()
         };
-        Some(ink.tag(path(d, pen)).set("fill", fill))
+        Some(ink.tag(path(d, pen)).fill(fill))
     }
 }
 
 /// The path data of a marker's symbol about the page point `c`, `r` its
 /// half size; `None` for the circles, written as `<circle>`s.
-fn outline(symbol: Symbol, c: Point, r: f64) -> Option<String> {
+fn outline(symbol: Symbol, c: Point, r: f64) -> Option<PathData> {
     let v = |x: f64, y: f64| c + Vector::new(x, y);
     Some(match symbol {
         Symbol::Disc | Symbol::Circle => return None,
@@ -97,10 +92,10 @@ fn outline(symbol: Symbol, c: Point, r: f64) -> Option<String> {
             let h = 1.3 * r;
             polyline_d(&[v(0.0, -h), v(h, 0.0), v(0.0, h), v(-h, 0.0)], true)
         }
-        Symbol::Cross => format!(
-            "{} {}",
-            polyline_d(&[v(-r, -r), v(r, r)], false),
-            polyline_d(&[v(-r, r), v(r, -r)], false)
-        ),
+        Symbol::Cross => {
+            let mut d = polyline_d(&[v(-r, -r), v(r, r)], false);
+            d.extend(polyline_d(&[v(-r, r), v(r, -r)], false));
+            d
+        }
     })
 }
