@@ -12,7 +12,7 @@
 
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::gallery::Gallery;
-use slider_crank::render::{FileFormat, to_svg};
+use slider_crank::render::{FileFormat, TikzOptions, to_svg, to_tikz};
 use slider_crank::table::TableName;
 use slider_crank::{Angle, FigureName, Layer};
 use std::collections::BTreeMap;
@@ -37,16 +37,20 @@ fn split_round() -> BTreeMap<&'static str, Duration> {
     let gallery = Gallery::new();
     for &figure in gallery.figures() {
         let start = Instant::now();
-        let svg = to_svg(&figure.figure(&FigureOptions::default()).expect("a figure"));
+        let drawn = figure.figure(&FigureOptions::default()).expect("a figure");
+        let svg = to_svg(&drawn);
         *spent.entry("SVG (model and text)").or_default() += start.elapsed();
+        let start = Instant::now();
+        std::hint::black_box(to_tikz(&drawn, &TikzOptions::default()));
+        *spent.entry("TikZ (layout and text)").or_default() += start.elapsed();
         for &format in gallery.formats() {
             let name = match format {
-                FileFormat::Svg => continue,
+                FileFormat::Svg | FileFormat::Tikz => continue,
                 FileFormat::Png => "PNG",
                 FileFormat::Pdf => "PDF",
             };
             let start = Instant::now();
-            std::hint::black_box(format.encode(&svg).expect("encodes"));
+            std::hint::black_box(format.encode(&drawn, &svg).expect("encodes"));
             *spent.entry(name).or_default() += start.elapsed();
         }
     }

@@ -6,7 +6,9 @@ use clap::Args;
 use slider_crank::catalogue::{FigureOptions, Fit, Group};
 use slider_crank::figure::{Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
-use slider_crank::render::{FileFormat, same_file, to_svg, to_svg_with_fonts, write_atomic};
+use slider_crank::render::{
+    FileFormat, TikzOptions, same_file, to_svg, to_svg_with_fonts, to_tikz, write_atomic,
+};
 use slider_crank::{Error, Figure, FigureName, Input, Layer, Notation, Result, SliderCrank, Style};
 use std::path::{Path, PathBuf};
 
@@ -35,9 +37,10 @@ pub struct FigureArgs {
     #[command(flatten)]
     pub flags: FigureFlags,
     /// Write to FILE instead of printing SVG, in the format its extension
-    /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
-    /// embedded); SVG for a name without an extension, any other is
-    /// refused; `-` prints SVG. A device or FIFO is written in place; a
+    /// names: .svg, .png (2 pixels per page unit), .pdf (vector, fonts
+    /// embedded) or .tex (a TikZ picture whose letters LaTeX sets in the
+    /// book's fonts; docs/tikz.md); SVG for a name without an extension,
+    /// any other is refused; `-` prints SVG. A device or FIFO is written in place; a
     /// symbolic link is kept and its target replaced. The folder must
     /// exist (only `gallery` makes its folder)
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
@@ -48,6 +51,12 @@ pub struct FigureArgs {
     /// 60 kB; PNG and PDF always carry their faces)
     #[arg(long)]
     pub embed_fonts: bool,
+    /// With --out FILE.tex: a LaTeX document of its own around the TikZ
+    /// picture (an article whose page is the figure's), which pdflatex or
+    /// lualatex compiles as it is; without it, the tikzpicture alone, for
+    /// \input in a book that loads TikZ
+    #[arg(long)]
+    pub tikz_standalone: bool,
 }
 
 /// The changes to a named figure that `figure` and `animate` take: the
@@ -173,22 +182,71 @@ pub fn not_an_input(to: Option<(&Path, FileFormat)>, input: &Path, what: &str) -
     }
 }
 
+/// How `emit` writes a figure beyond its format: the SVG with its faces
+/// ([`to_svg_with_fonts`]), the TikZ as a document of its own.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Encoding {
+    /// The SVG carries its faces.
+    pub embed_fonts: bool,
+    /// The TikZ is a standalone document.
+    pub tikz_standalone: bool,
+}
+
+impl Encoding {
+    /// Refuses an option that the format of `to` does not take: the
+    /// faces are for SVG, the standalone document for TikZ.
+    pub fn check(&self, to: Option<(&Path, FileFormat)>) -> Result<()> {
+        let format = to.map_or(FileFormat::Svg, |(_, f)| f);
+        let file = || match to {
+            Some((path, f)) => format!("{} is a {} file", path.display(), f.label()),
+            None => "the figure goes to standard output as SVG".into(),
+        };
+        if self.embed_fonts && format != FileFormat::Svg {
+            let why = if format == FileFormat::Tikz {
+                "whose letters LaTeX sets in the book's fonts"
+            } else {
+                "which carries its faces already"
+            };
+            return Err(Error::invalid(
+                Input::Options,
+                format!(
+                    "--embed-fonts is for SVG output: {}, {why} (leave the option out)",
+                    file()
+                ),
+            ));
+        }
+        if self.tikz_standalone && format != FileFormat::Tikz {
+            return Err(Error::invalid(
+                Input::Options,
+                format!(
+                    "--tikz-standalone is for TikZ output: {} (give --out FILE.tex, or leave the option out)",
+                    file()
+                ),
+            ));
+        }
+        Ok(())
+    }
+}
+
 /// Writes the figure to the file in its format (whole or not at all), or
-/// its SVG text to standard output; the SVG carries its faces when
-/// `embed_fonts` is set ([`to_svg_with_fonts`]).
+/// its SVG text to standard output, as `encoding` asks.
 pub fn emit(
     figure: &Figure,
     to: Option<(&Path, FileFormat)>,
-    embed_fonts: bool,
+    encoding: Encoding,
     out: &mut Stdout,
 ) -> Result<()> {
-    let svg = if embed_fonts {
+    if let Some((path, FileFormat::Tikz)) = to {
+        let options = TikzOptions::default().standalone(encoding.tikz_standalone);
+        return write_atomic(path, to_tikz(figure, &options).as_bytes());
+    }
+    let svg = if encoding.embed_fonts {
         to_svg_with_fonts(figure)
     } else {
         to_svg(figure)
     };
     match to {
-        Some((path, format)) => write_atomic(path, &format.encode(&svg)?),
+        Some((path, format)) => write_atomic(path, &format.encode(figure, &svg)?),
         None => out.text(&svg),
     }
 }
@@ -256,23 +314,11 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
 pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
     let name = args.name;
     let to = destination(args.out.as_ref())?;
-    if let Some((path, format)) = to
-        && args.embed_fonts
-        && format != FileFormat::Svg
-    {
-        return Err(Error::invalid(
-            Input::Options,
-            format!(
-                "--embed-fonts is for SVG output: {} is a {} file, which carries its faces already (leave the option out)",
-                path.display(),
-                if format == FileFormat::Png {
-                    "PNG"
-                } else {
-                    "PDF"
-                }
-            ),
-        ));
-    }
+    let encoding = Encoding {
+        embed_fonts: args.embed_fonts,
+        tikz_standalone: args.tikz_standalone,
+    };
+    encoding.check(to)?;
     if let Some(data) = &args.flags.data {
         not_an_input(to, data, "the data file")?;
     }
@@ -281,5 +327,5 @@ pub fn run(args: &FigureArgs, out: &mut Stdout) -> Result<()> {
         Some(path) => e.in_file(Input::Data, path),
         None => e,
     })?;
-    emit(&figure, to, args.embed_fonts, out)
+    emit(&figure, to, encoding, out)
 }

@@ -1,6 +1,6 @@
 //! `slider-crank scene FILE.toml`: a figure described by a scene file.
 
-use super::figure::{destination, emit, not_an_input};
+use super::figure::{Encoding, destination, emit, not_an_input};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
@@ -41,18 +41,28 @@ pub struct SceneArgs {
     #[arg(long = "force-unit", value_name = "FORCE")]
     pub force_unit: Option<Unit>,
     /// Write to FILE instead of printing SVG, in the format its extension
-    /// names: .svg, .png (2 pixels per page unit) or .pdf (vector, fonts
-    /// embedded); SVG for a name without an extension, any other is
-    /// refused; `-` prints SVG. A device or FIFO is written in place; a
+    /// names: .svg, .png (2 pixels per page unit), .pdf (vector, fonts
+    /// embedded) or .tex (a TikZ picture whose letters LaTeX sets in the
+    /// book's fonts; docs/tikz.md); SVG for a name without an extension,
+    /// any other is refused; `-` prints SVG. A device or FIFO is written in place; a
     /// symbolic link is kept and its target replaced. The folder must
     /// exist (only `gallery` makes its folder)
     #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
     pub out: Option<PathBuf>,
+    /// With --out FILE.tex: a LaTeX document of its own around the TikZ
+    /// picture, which pdflatex or lualatex compiles as it is
+    #[arg(long)]
+    pub tikz_standalone: bool,
 }
 
 /// Runs the subcommand.
 pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
     let to = destination(args.out.as_ref())?;
+    let encoding = Encoding {
+        tikz_standalone: args.tikz_standalone,
+        ..Encoding::default()
+    };
+    encoding.check(to)?;
     if let Some(name) = &args.print_default {
         return out.text(&name.scene_toml());
     }
@@ -90,5 +100,5 @@ pub fn run(args: &SceneArgs, out: &mut Stdout) -> Result<()> {
             name.figure(&options)?
         }
     };
-    emit(&figure, to, false, out)
+    emit(&figure, to, encoding, out)
 }

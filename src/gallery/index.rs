@@ -127,10 +127,7 @@ pub(super) fn page(gallery: &Gallery, tables: &[(TableName, Table)]) -> String {
 
 /// "SVG, PNG and PDF".
 fn formats(formats: &[FileFormat]) -> String {
-    let names: Vec<String> = formats
-        .iter()
-        .map(|f| f.extension().to_uppercase())
-        .collect();
+    let names: Vec<String> = formats.iter().map(|f| f.label().to_owned()).collect();
     match names.as_slice() {
         [] => String::new(),
         [one] => one.clone(),
@@ -158,7 +155,7 @@ fn figure(f: FigureName, formats: &[FileFormat]) -> Markup {
                 br;
                 span.files {
                     @for &format in formats {
-                        a href=(file(format)) { (format.extension().to_uppercase()) }
+                        a href=(file(format)) { (format.label()) }
                     }
                 }
                 br;
@@ -187,7 +184,7 @@ fn scene(entry: &SceneEntry, formats: &[FileFormat]) -> Markup {
                 br;
                 span.files {
                     @for &format in formats {
-                        a href=(file(format)) { (format.extension().to_uppercase()) }
+                        a href=(file(format)) { (format.label()) }
                     }
                 }
                 br;
@@ -280,7 +277,8 @@ mod tests {
 
     #[test]
     fn formats_are_listed_as_a_sentence() {
-        assert_eq!(formats(&FileFormat::ALL), "SVG, PNG and PDF");
+        assert_eq!(formats(&FileFormat::PICTURES), "SVG, PNG and PDF");
+        assert_eq!(formats(&FileFormat::ALL), "SVG, PNG, PDF and TikZ");
         assert_eq!(formats(&[FileFormat::Pdf]), "PDF");
     }
 

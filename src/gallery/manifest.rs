@@ -3,7 +3,7 @@
 //! ```toml
 //! figures = ["fig-67-example", "ng-fig-1-torque"]  # named figures [default: every one]
 //! scenes = ["examples/offset-kisch.toml"]          # scene files, from the manifest's directory
-//! formats = ["svg", "pdf"]                         # [default: svg, png, pdf]
+//! formats = ["svg", "pdf"]                         # [default: svg, png, pdf; or tikz]
 //! style = "handout"                                # [default: each figure's own]
 //! font = "libertinus-serif"                        # [default: new-computer-modern]
 //! ```
@@ -43,7 +43,7 @@ impl Gallery {
     /// The gallery a manifest describes: TOML with the keys `figures`
     /// (names; default every one), `scenes` (scene files, read from
     /// `base`, the manifest's directory, and named after their files),
-    /// `formats` (svg, png, pdf), `style` and `font` (for every figure, and
+    /// `formats` (svg, png, pdf, tikz), `style` and `font` (for every figure, and
     /// for each scene file that sets none). Unknown keys are errors; every
     /// error names its line and column.
     pub fn from_manifest(text: &str, base: &Path) -> Result<Gallery> {

@@ -88,7 +88,7 @@ impl Gallery {
         Gallery {
             figures: FigureName::ALL.to_vec(),
             scenes: Vec::new(),
-            formats: FileFormat::ALL.to_vec(),
+            formats: FileFormat::PICTURES.to_vec(),
             style: None,
             font: None,
         }
@@ -271,21 +271,21 @@ impl Gallery {
 
     /// The files of one job (and the table, for the index).
     fn make(&self, job: &Job) -> Result<Made> {
-        let (svg, name) = match *job {
+        let (drawn, name) = match *job {
             Job::Figure(figure) => {
                 let options = FigureOptions {
                     style: self.style,
                     font: self.font,
                     ..FigureOptions::default()
                 };
-                (to_svg(&figure.figure(&options)?), figure.name())
+                (figure.figure(&options)?, figure.name())
             }
             Job::Scene(i) => {
                 // cannot fail: the scene jobs are made from
                 // `0..self.scenes.len()`.
                 #[allow(clippy::indexing_slicing)]
                 let entry = &self.scenes[i];
-                (to_svg(&entry.scene.figure()?), entry.name.as_str())
+                (entry.scene.figure()?, entry.name.as_str())
             }
             Job::Table(table) => {
                 let t = table.table()?;
@@ -298,7 +298,8 @@ impl Gallery {
                 });
             }
         };
-        let files = FileFormat::encode_all(&svg, &self.formats)?
+        let svg = to_svg(&drawn);
+        let files = FileFormat::encode_all(&drawn, &svg, &self.formats)?
             .into_iter()
             .zip(&self.formats)
             .map(|(bytes, format)| GalleryFile {

@@ -1,6 +1,8 @@
-//! The renderer: a [`crate::figure::Figure`] to SVG text (its own small
-//! element writer), SVG to PNG (resvg, with the `png` feature) and to vector PDF
-//! (with the `pdf` feature); files are written whole or not at all.
+//! The renderer: a [`crate::figure::Figure`], placed by
+//! [`crate::layout::place`], to SVG text (its own small element writer) and
+//! to a TikZ picture; SVG to PNG (resvg, with the `png` feature) and to
+//! vector PDF (with the `pdf` feature); files are written whole or not at
+//! all.
 
 mod atomic;
 mod element;
@@ -16,6 +18,7 @@ mod save;
 mod svg;
 #[cfg(any(feature = "png", feature = "pdf"))]
 mod svg_tree;
+mod tikz;
 
 pub use crate::number::plain;
 pub use crate::number::{GRID, fmt};
@@ -34,6 +37,7 @@ pub(crate) use svg::root_size;
 #[cfg(feature = "html")]
 pub use svg::to_svg_with_fonts;
 pub use svg::{SvgOptions, metadata_of, svg_body, to_svg, to_svg_with};
+pub use tikz::{TikzOptions, to_tikz};
 
 /// Renders SVG text to PNG bytes: built without the `png` feature, this
 /// returns [`Error::Unsupported`](crate::error::Error::Unsupported) whatever the

@@ -27,7 +27,7 @@ use std::path::Path;
 pub fn save(figure: &Figure, path: impl AsRef<Path>) -> Result<()> {
     let path = path.as_ref();
     let format = FileFormat::from_path(path)?;
-    write_atomic(path, &format.encode(&to_svg(figure))?)
+    write_atomic(path, &format.encode(figure, &to_svg(figure))?)
 }
 
 #[cfg(test)]
@@ -44,7 +44,10 @@ mod tests {
         assert_eq!(std::fs::read_to_string(&svg).unwrap(), to_svg(&figure));
         let bad = dir.path().join("f.jpg");
         let err = save(&figure, &bad).unwrap_err();
-        assert!(err.to_string().contains(".svg, .png or .pdf"), "{err}");
+        assert!(
+            err.to_string().contains(".svg, .png, .pdf or .tex"),
+            "{err}"
+        );
         assert!(!bad.exists());
         #[cfg(feature = "png")]
         {

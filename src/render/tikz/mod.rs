@@ -1,0 +1,252 @@
+//! The TikZ writer: the placed figure ([`crate::layout::place`]) as a
+//! `tikzpicture` for a LaTeX book. Lines, hatching, arrows and detail
+//! frames are TikZ paths in the figure's page units (`x` and `y` keys of
+//! 0.75 bp, the program's PDF scale, so the picture is the PDF's size; the
+//! `scale` key scales the drawing and leaves lines and letters their
+//! size); every letter, label and note is a `\node` whose text is LaTeX
+//! (`latex.rs`), set in the book's own fonts at the place the layout
+//! chose with the figure's face's metrics. Each mark is preceded by a
+//! comment naming its item, so that a letter can be found and changed.
+//! Only TikZ and xcolor (which TikZ loads) are used, with no library.
+
+mod latex;
+
+use crate::figure::Figure;
+use crate::layout::{
+    Mark, MarkShape, Paint, PathCommand, PathData, PlacedPanel, TextAnchor, place,
+};
+use crate::number::fmt;
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+
+/// Big points per page unit: the program's PDF scale (96 page units to
+/// the inch, 72 bp).
+const BP_PER_UNIT: f64 = 0.75;
+
+/// Options of [`to_tikz`].
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TikzOptions {
+    standalone: bool,
+}
+
+impl TikzOptions {
+    /// The picture wrapped in a LaTeX document of its own (an `article`
+    /// whose page is the figure's, by `geometry`; `fix-cm` so that
+    /// Computer Modern comes at any size), which pdfLaTeX and LuaLaTeX
+    /// compile as it is; without it, the `tikzpicture` alone,
+    /// for `\input` in a book that loads TikZ.
+    pub fn standalone(mut self, standalone: bool) -> Self {
+        self.standalone = standalone;
+        self
+    }
+}
+
+/// The figure as TikZ: a `tikzpicture` (in a document of its own with
+/// [`TikzOptions::standalone`]). A figure without panels is its page
+/// alone.
+pub fn to_tikz(figure: &Figure, options: &TikzOptions) -> String {
+    let picture = picture(figure);
+    if !options.standalone {
+        return picture;
+    }
+    let (w, h) = (figure.width(), figure.height());
+    format!(
+        "\\RequirePackage{{fix-cm}}\n\
+         \\documentclass{{article}}\n\
+         \\usepackage[paperwidth={}bp,paperheight={}bp,margin=0pt,nohead,nofoot]{{geometry}}\n\
+         \\usepackage{{tikz}}\n\
+         \\pagestyle{{empty}}\n\
+         \\setlength{{\\topskip}}{{0pt}}\n\
+         \\setlength{{\\parindent}}{{0pt}}\n\
+         \\begin{{document}}\n{picture}\\end{{document}}\n",
+        bp(w),
+        bp(h)
+    )
+}
+
+/// A page length in big points.
+fn bp(units: f64) -> String {
+    fmt(units * BP_PER_UNIT)
+}
+
+/// The `tikzpicture`: its colours, the page, then each panel.
+fn picture(figure: &Figure) -> String {
+    let placed = place(figure);
+    let (w, h) = (figure.width(), figure.height());
+    let mut colours = BTreeSet::from([colour_name(figure.style().paper())]);
+    let mut body = String::new();
+    for panel in placed.panels() {
+        write_panel(&mut body, panel, &mut colours);
+    }
+    let mut out = format!(
+        "% {}: drawn by slider-crank as a TikZ picture; its letters were\n\
+         % placed for {}'s metrics. Each mark follows a comment naming it.\n",
+        figure.name(),
+        figure.font().name()
+    );
+    out.push_str("\\begin{tikzpicture}[x=0.75bp, y=-0.75bp, scale=1]\n");
+    for c in &colours {
+        if let Some(hex) = c.strip_prefix("sc") {
+            let _ = writeln!(
+                out,
+                "\\definecolor{{{c}}}{{HTML}}{{{}}}",
+                hex.to_uppercase()
+            );
+        }
+    }
+    let paper = colour_name(figure.style().paper());
+    let (w, h) = (fmt(w), fmt(h));
+    let _ = writeln!(out, "\\useasboundingbox (0,0) rectangle ({w},{h});");
+    let _ = writeln!(out, "\\fill[{paper}] (0,0) rectangle ({w},{h});");
+    out.push_str(&body);
+    out.push_str("\\end{tikzpicture}\n");
+    out
+}
+
+/// A CSS colour `#rrggbb` as the name of its `xcolor` colour (`sc`
+/// and the hex digits); black for any other form.
+fn colour_name(css: &str) -> String {
+    match css.strip_prefix('#') {
+        Some(hex) if hex.len() == 6 && hex.chars().all(|c| c.is_ascii_hexdigit()) => {
+            format!("sc{}", hex.to_lowercase())
+        }
+        _ => "sc000000".into(),
+    }
+}
+
+/// A panel: a scope (clipped to a detail's rectangle), its marks.
+fn write_panel(out: &mut String, panel: &PlacedPanel, colours: &mut BTreeSet<String>) {
+    let _ = writeln!(out, "% panel {}", panel.id());
+    out.push_str("\\begin{scope}\n");
+    if let Some(r) = panel.clip() {
+        let _ = writeln!(
+            out,
+            "\\clip ({},{}) rectangle ({},{});",
+            fmt(r.x),
+            fmt(r.y),
+            fmt(r.x + r.width),
+            fmt(r.y + r.height)
+        );
+    }
+    for m in panel.marks() {
+        write_mark(out, m, colours);
+    }
+    out.push_str("\\end{scope}\n");
+}
+
+/// A mark, after a comment with its id.
+fn write_mark(out: &mut String, mark: &Mark, colours: &mut BTreeSet<String>) {
+    if let Some(id) = &mark.id {
+        let _ = writeln!(out, "% {}", id.replace(['\n', '\r'], " "));
+    }
+    match &mark.shape {
+        MarkShape::Path(d, paint) => {
+            if !d.is_empty() {
+                let _ = writeln!(out, "\\path[{}] {};", paint_keys(paint, colours), path(d));
+            }
+        }
+        MarkShape::Circle {
+            centre,
+            radius,
+            paint,
+        } => {
+            let _ = writeln!(
+                out,
+                "\\path[{}] ({},{}) circle[radius={}];",
+                paint_keys(paint, colours),
+                fmt(centre.x),
+                fmt(centre.y),
+                fmt(*radius)
+            );
+        }
+        MarkShape::Text(t) => {
+            let colour = colour_name(t.colour);
+            colours.insert(colour.clone());
+            let anchor = match t.anchor {
+                TextAnchor::Start => "base west",
+                TextAnchor::Middle => "base",
+                TextAnchor::End => "base east",
+            };
+            let _ = writeln!(
+                out,
+                "\\node[anchor={anchor}, inner sep=0pt, outer sep=0pt, text={colour}, \
+                 font=\\fontsize{{{}bp}}{{{}bp}}\\selectfont] at ({},{}) {{{}}};",
+                bp(t.size),
+                bp(1.2 * t.size),
+                fmt(t.at.x),
+                fmt(t.at.y),
+                latex::latex(&t.text)
+            );
+        }
+        MarkShape::Group(children) => {
+            for c in children {
+                write_mark(out, c, colours);
+            }
+        }
+    }
+}
+
+/// The keys of a path's paint: its stroke (colour, width and dash in big
+/// points, round ends) and fill.
+fn paint_keys(paint: &Paint, colours: &mut BTreeSet<String>) -> String {
+    let mut keys = Vec::new();
+    if let Some(s) = paint.stroke {
+        let c = colour_name(s.colour);
+        keys.push(format!("draw={c}"));
+        colours.insert(c);
+        keys.push(format!("line width={}bp", bp(s.width)));
+        if let Some(dash) = s.dash {
+            keys.push(format!("dash pattern={}", dash_pattern(dash)));
+        }
+        if s.round {
+            keys.push("line cap=round, line join=round".into());
+        }
+    }
+    if paint.fill != "none" {
+        let c = colour_name(paint.fill);
+        keys.push(format!("fill={c}"));
+        colours.insert(c);
+        if let Some(o) = paint.fill_opacity {
+            keys.push(format!("fill opacity={}", fmt(o)));
+        }
+    }
+    keys.join(", ")
+}
+
+/// An SVG dash array (page units, dash and gap by turns) as a TikZ dash
+/// pattern in big points.
+fn dash_pattern(dash: &str) -> String {
+    let lengths: Vec<f64> = (dash.split([' ', ',']))
+        .filter_map(|s| s.parse().ok())
+        .collect();
+    let mut out = Vec::new();
+    for (i, l) in lengths.iter().enumerate() {
+        let on = if i % 2 == 0 { "on" } else { "off" };
+        out.push(format!("{on} {}bp", bp(*l)));
+    }
+    if lengths.len() % 2 == 1 {
+        // An odd list repeats, as SVG's does.
+        for (i, l) in lengths.iter().enumerate() {
+            let on = if i % 2 == 0 { "off" } else { "on" };
+            out.push(format!("{on} {}bp", bp(*l)));
+        }
+    }
+    out.join(" ")
+}
+
+/// A page path as TikZ path operations.
+fn path(d: &PathData) -> String {
+    let pt = |p: crate::geom::Point| format!("({},{})", fmt(p.x), fmt(p.y));
+    let mut out = Vec::new();
+    for c in d.commands() {
+        out.push(match *c {
+            PathCommand::Move(p) => pt(p),
+            PathCommand::Line(p) => format!("-- {}", pt(p)),
+            PathCommand::Cubic(a, b, p) => {
+                format!(".. controls {} and {} .. {}", pt(a), pt(b), pt(p))
+            }
+            PathCommand::Close => "-- cycle".into(),
+        });
+    }
+    out.join(" ")
+}
