@@ -38,8 +38,10 @@ fn split_round() -> BTreeMap<&'static str, Duration> {
     for &figure in gallery.figures() {
         let start = Instant::now();
         let drawn = figure.figure(&FigureOptions::default()).expect("a figure");
+        *spent.entry("figure model").or_default() += start.elapsed();
+        let start = Instant::now();
         let svg = to_svg(&drawn);
-        *spent.entry("SVG (model and text)").or_default() += start.elapsed();
+        *spent.entry("SVG (layout and text)").or_default() += start.elapsed();
         let start = Instant::now();
         std::hint::black_box(to_tikz(&drawn, &TikzOptions::default()));
         *spent.entry("TikZ (layout and text)").or_default() += start.elapsed();

@@ -1017,12 +1017,14 @@ def _write(*files: Tuple[Union[str, "os.PathLike[str]"], str]) -> None:
 class Figure:
     """A figure drawn by the library: its SVG text (``svg``), shown inline
     by Jupyter (``_repr_svg_``), and written as SVG, PNG (2 pixels per page
-    unit) or PDF (vector, the bundled faces embedded) by :meth:`save`."""
+    unit), PDF (vector, the bundled faces embedded) or TikZ (a picture for
+    a LaTeX book, :meth:`tikz`) by :meth:`save`."""
 
-    __slots__ = ("_svg",)
+    __slots__ = ("_svg", "_request")
 
-    def __init__(self, svg: str) -> None:
+    def __init__(self, svg: str, request: Optional[Tuple[str, Dict[str, Any]]] = None) -> None:
         self._svg = svg
+        self._request = request
 
     @property
     def svg(self) -> str:
@@ -1040,11 +1042,28 @@ class Figure:
         """The figure as a one-page vector PDF."""
         return _core.encode(self._svg, "pdf")
 
+    def tikz(self, standalone: bool = False) -> str:
+        """The figure as a TikZ picture for a LaTeX book (docs/tikz.md): its
+        lines TikZ paths, its letters nodes that LaTeX sets in the book's
+        fonts, placed as in the SVG; with ``standalone`` a document of its
+        own that pdfLaTeX and LuaLaTeX compile, as ``figure --out FILE.tex
+        --tikz-standalone`` writes it. A figure not drawn by :func:`figure`
+        raises ``ValueError``."""
+        if self._request is None:
+            raise ValueError("this figure was not drawn by figure(): it has no TikZ")
+        name, options = self._request
+        return _core.figure(name, tikz=bool(standalone), **options)
+
     def save(self, path: Union[str, "os.PathLike[str]"]) -> None:
         """Writes the figure to ``path`` in the format its extension names
-        (.svg, .png, .pdf; SVG without one), whole or not at all, as
-        ``figure --out`` does; any other extension raises ``ValueError``."""
-        _core.save(self._svg, os.fspath(path))
+        (.svg, .png, .pdf, .tex for :meth:`tikz`'s picture; SVG without
+        one), whole or not at all, as ``figure --out`` does; any other
+        extension raises ``ValueError``."""
+        target = os.fspath(path)
+        if os.path.splitext(target)[1].lower() == ".tex":
+            _write((target, self.tikz()))
+        else:
+            _core.save(self._svg, target)
 
     def __repr__(self) -> str:
         return f"<Figure: {len(self._svg)} characters of SVG>"
@@ -1093,7 +1112,8 @@ def figure(
     ``width``, ``height``: page units (800) or a size (``"120mm"``,
     ``"4.5in"``); ``title``: set below the figure.
     """
-    return Figure(_core.figure(name, **_figure_options(locals())))
+    options = _figure_options(locals())
+    return Figure(_core.figure(name, **options), (name, options))
 
 
 def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:

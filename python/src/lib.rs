@@ -17,7 +17,9 @@ use slider_crank::construct::{Graphical, Reading};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::Handout;
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
-use slider_crank::render::{FileFormat, to_svg, write_atomic, write_atomic_all};
+use slider_crank::render::{
+    FileFormat, TikzOptions, to_pdf, to_png, to_svg, to_tikz, write_atomic, write_atomic_all,
+};
 use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
 use slider_crank::{
     Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units,
@@ -238,11 +240,13 @@ fn fill_chunk(
 }
 
 /// The SVG of a named figure with the options the `figure` command's
-/// flags give (`None`: the flag not given).
+/// flags give (`None`: the flag not given); with `tikz` its TikZ picture
+/// instead (`tikz = true`: a standalone document, as
+/// `--tikz-standalone`).
 #[pyfunction]
 #[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
-    notation=None, mirror=None, width=None, height=None, title=None, animate=None))]
+    notation=None, mirror=None, width=None, height=None, title=None, animate=None, tikz=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -266,6 +270,7 @@ fn figure(
     height: Option<&str>,
     title: Option<&str>,
     animate: Option<(usize, f64, String)>,
+    tikz: Option<bool>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
     let mut options = FigureOptions::default();
@@ -306,9 +311,13 @@ fn figure(
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);
     }
+    let text = |f: &slider_crank::Figure| match tikz {
+        Some(standalone) => to_tikz(f, &TikzOptions::default().standalone(standalone)),
+        None => to_svg(f),
+    };
     py.detach(|| {
         name.figure(&options)
-            .map(|f| to_svg(&f))
+            .map(|f| text(&f))
             .map_err(|e| match &data {
                 Some(path) => e.in_file(Input::Data, path),
                 None => e,
@@ -352,6 +361,21 @@ fn animation(
         .map_err(py_err)
 }
 
+/// The bytes of the figure whose SVG is `svg` in `format`: SVG, PNG at 2
+/// pixels per page unit, PDF. TikZ is written from the figure, not its
+/// SVG: an error that says so (the package asks for it by `figure(…,
+/// tikz=…)`).
+fn encode_svg(format: FileFormat, svg: &str) -> slider_crank::Result<Vec<u8>> {
+    match format {
+        FileFormat::Svg => Ok(svg.as_bytes().to_vec()),
+        FileFormat::Png => to_png(svg, 2.0),
+        FileFormat::Pdf => to_pdf(svg),
+        FileFormat::Tikz => Err(slider_crank::Error::Unsupported(
+            "TikZ is written from the figure, not its SVG: use Figure.tikz()".into(),
+        )),
+    }
+}
+
 /// The bytes of the figure whose SVG is `svg` in the format `format`
 /// names (`svg`, `png` at 2 pixels per page unit, `pdf`).
 #[pyfunction]
@@ -361,7 +385,7 @@ fn encode<'py>(
     format: &str,
 ) -> PyResult<Bound<'py, pyo3::types::PyBytes>> {
     let format = FileFormat::from_name(format).map_err(py_err)?;
-    let bytes = py.detach(|| format.encode(svg)).map_err(py_err)?;
+    let bytes = py.detach(|| encode_svg(format, svg)).map_err(py_err)?;
     Ok(pyo3::types::PyBytes::new(py, &bytes))
 }
 
@@ -370,7 +394,7 @@ fn encode<'py>(
 #[pyfunction]
 fn save(py: Python<'_>, svg: &str, path: PathBuf) -> PyResult<()> {
     let format = FileFormat::from_path(&path).map_err(py_err)?;
-    py.detach(|| write_atomic(&path, &format.encode(svg)?))
+    py.detach(|| write_atomic(&path, &encode_svg(format, svg)?))
         .map_err(py_err)
 }
 

@@ -44,7 +44,7 @@ def test_engine_figure_draws_that_engine(cli: Cli) -> None:
     assert got._repr_svg_() == want
 
 
-@pytest.mark.parametrize("ext", ["svg", "png", "pdf"])
+@pytest.mark.parametrize("ext", ["svg", "png", "pdf", "tex"])
 def test_saved_files_are_the_command_lines(cli: Cli, tmp_path: Path, ext: str) -> None:
     ours, theirs = tmp_path / f"ours.{ext}", tmp_path / f"theirs.{ext}"
     sc.figure("fig-66-kisch", angle=200).save(ours)
@@ -55,6 +55,22 @@ def test_saved_files_are_the_command_lines(cli: Cli, tmp_path: Path, ext: str) -
         assert f.png() == theirs.read_bytes()
     if ext == "pdf":
         assert f.pdf()[:5] == b"%PDF-"
+
+
+@pytest.mark.parametrize("standalone", [False, True])
+def test_tikz_is_the_command_lines(cli: Cli, tmp_path: Path, standalone: bool) -> None:
+    theirs = tmp_path / "theirs.tex"
+    flags = ["--tikz-standalone"] if standalone else []
+    cli.stdout(["figure", "fig-65-klein", "--angle=130", "--style=handout", f"--out={theirs}", *flags])
+    ours = sc.figure("fig-65-klein", angle=130, style="handout").tikz(standalone=standalone)
+    assert ours == theirs.read_text()
+    assert ("\\documentclass" in ours) == standalone
+    assert "\\begin{tikzpicture}" in ours and "{$G$}" in ours
+
+
+def test_a_figure_not_drawn_by_figure_has_no_tikz() -> None:
+    with pytest.raises(ValueError, match="no TikZ"):
+        sc.Figure("<svg/>").tikz()
 
 
 def test_every_named_figure_draws() -> None:

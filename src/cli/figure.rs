@@ -198,7 +198,10 @@ impl Encoding {
     pub fn check(&self, to: Option<(&Path, FileFormat)>) -> Result<()> {
         let format = to.map_or(FileFormat::Svg, |(_, f)| f);
         let file = || match to {
-            Some((path, f)) => format!("{} is a {} file", path.display(), f.label()),
+            Some((path, f)) => {
+                let a = if f == FileFormat::Svg { "an" } else { "a" };
+                format!("{} is {a} {} file", path.display(), f.label())
+            }
             None => "the figure goes to standard output as SVG".into(),
         };
         if self.embed_fonts && format != FileFormat::Svg {

@@ -318,6 +318,9 @@ pub struct Scene {
     /// A world frame the view holds besides what the layers draw
     /// ([`Scene::with_view_holding`]).
     holding: Option<crate::geom::Frame>,
+    /// A subject drawn on the mechanism that a detail holds where the
+    /// main view draws it small ([`Scene::with_detail_subject`]).
+    subject: Option<crate::geom::Frame>,
     /// Where curves drawn on the mechanism turn (world x, and height
     /// above the line of stroke, negative below), which the guides keep
     /// clear of ([`Scene::with_guides_clear_of`]).
@@ -360,6 +363,7 @@ impl Scene {
             tolerance: DEFAULT_TOLERANCE,
             held: None,
             holding: None,
+            subject: None,
             turns: Vec::new(),
         }
     }
@@ -523,6 +527,24 @@ impl Scene {
         let finite = |p: crate::geom::Point| p.x.is_finite() && p.y.is_finite();
         self.holding = (finite(frame.min()) && finite(frame.max())).then_some(frame);
         self
+    }
+
+    /// The same scene with `frame` (world) named as a subject that a
+    /// diagram draws on the mechanism in its own world coordinates (Fig.
+    /// 64's polar diagram about the crank): where the main view draws it
+    /// smaller than a reader can read (a long rod's crank), the scene's
+    /// detail holds it whole, enlarged, for the diagram to draw there too.
+    /// A frame that is not finite is left out.
+    pub(crate) fn with_detail_subject(mut self, frame: crate::geom::Frame) -> Self {
+        let finite = |p: crate::geom::Point| p.x.is_finite() && p.y.is_finite();
+        self.subject = (finite(frame.min()) && finite(frame.max())).then_some(frame);
+        self
+    }
+
+    /// The subject a diagram draws on the mechanism
+    /// ([`Scene::with_detail_subject`]), if any.
+    pub(crate) fn subject(&self) -> Option<&crate::geom::Frame> {
+        self.subject.as_ref()
     }
 
     /// The same scene with its guides set clear of curves drawn on the

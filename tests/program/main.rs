@@ -44,6 +44,9 @@ mod robustness;
 mod gallery;
 #[cfg(feature = "pdf")]
 mod pdf;
+// TikZ compiled by LaTeX, compared with the PDF
+#[cfg(feature = "pdf")]
+mod tikz;
 // two galleries at once and a gallery interrupted by SIGINT
 #[cfg(all(feature = "png", feature = "pdf"))]
 mod processes;

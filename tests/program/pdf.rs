@@ -140,7 +140,9 @@ fn unknown_extensions_are_refused_by_every_command_with_out() {
             let err = String::from_utf8(out.stderr).unwrap();
             assert_eq!(err.lines().count(), 1, "{err}");
             assert!(
-                err.contains("is not an output format: give a file ending in .svg, .png or .pdf"),
+                err.contains(
+                    "is not an output format: give a file ending in .svg, .png, .pdf or .tex"
+                ),
                 "{err}"
             );
             assert!(err.contains(name), "{err}");

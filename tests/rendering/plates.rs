@@ -55,6 +55,15 @@ const RULE_SPREAD: &str = "5 construction readable";
 const RULE_TEXTS: &str = "6 texts apart";
 const RULE_SIZE: &str = "7 text large enough";
 const RULE_FILL: &str = "8 page filled";
+const RULE_SUBJECT: &str = "9 subject readable";
+/// The subjects of figures that the rule sweep holds to a least size:
+/// the figure, the id its subject's line ends with (in any panel), and
+/// the least span (px) of that line in some panel. Fig. 64's polar
+/// diagram was a scribble of a few pixels by C at a long rod; now a
+/// detail holds it whole where the main view draws it under 90 px (about
+/// 24 mm on its page).
+const SUBJECTS: [(&str, &str, f64); 1] =
+    [("fig-64-velocity-diagrams", "curve-polar-velocity", 90.0)];
 /// The least share of the page's width the drawing's ink spans.
 const FILL: f64 = 0.6;
 /// The least size of any text on a page, px (a printed figure's smallest
@@ -517,6 +526,27 @@ fn construction_small(plate: &Plate) -> Vec<Failure> {
     )]
 }
 
+/// Rule 9: the subject of the figure ([`SUBJECTS`]) spans its least size
+/// in some panel, by the scale of the main view or by a detail.
+fn subject_small(plate: &Plate, figure: &str) -> Vec<Failure> {
+    let mut out = Vec::new();
+    for (_, suffix, least) in SUBJECTS.iter().filter(|(f, _, _)| *f == figure) {
+        let spans: Vec<f64> = (plate.panels.iter())
+            .map(|panel| {
+                let ends = (panel.strokes.iter())
+                    .filter(|s| s.id.ends_with(suffix))
+                    .flat_map(|s| s.segs.iter().flat_map(|g| [g.0, g.1]));
+                Rect::around(ends).map_or(0.0, |r| r.span())
+            })
+            .collect();
+        let most = spans.iter().copied().fold(0.0, f64::max);
+        if most < *least {
+            out.push(fail(RULE_SUBJECT, format!("{suffix} spans {most:.0} px")));
+        }
+    }
+    out
+}
+
 /// Rule 8: the ink of the mechanism panels spans at least [`FILL`] of
 /// the page's width (a short-rod drawing took a third of its page).
 fn page_unfilled(plate: &Plate) -> Vec<Failure> {
@@ -544,7 +574,8 @@ fn page_unfilled(plate: &Plate) -> Vec<Failure> {
     }
 }
 
-/// Every rule on one plate; rule 5 only where `spread` asks for it.
+/// Every rule on one plate; rule 5 only where `spread` asks for it (the
+/// sweep adds rule 9 for the figures of [`SUBJECTS`]).
 fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
     let mut out = guides_crossed(plate);
     out.extend(page_unfilled(plate));
@@ -580,7 +611,8 @@ const FIGURES: [&str; 11] = [
 /// Figures held to rule 5.
 const SPREAD_FIGURES: [&str; 3] = ["fig-65-klein", "fig-66-kisch", "fig-67-example"];
 
-/// Short and long rods, offsets of ±0.8 (l − r), tiny and huge r.
+/// Short and long rods (n = 1.03 to 60), offsets of ±0.8 (l − r) and
+/// 0.45 r at n = 1.5, tiny and huge r.
 fn mechanisms() -> Vec<(String, SliderCrank)> {
     let m = |r: f64, l: f64, e: f64| {
         let name = format!("r={r:e} l={l:e} e={e:e}");
@@ -601,6 +633,10 @@ fn mechanisms() -> Vec<(String, SliderCrank)> {
         m(1.0, 1.1, 0.08),
         m(1.0, 40.0, 31.2),
         m(1.0, 50.0, -39.2),
+        m(1.0, 1.03, 0.0),
+        m(1.0, 30.0, 0.0),
+        m(1.0, 60.0, 0.0),
+        m(1.0, 1.5, 0.45),
     ]
 }
 
@@ -650,7 +686,12 @@ fn inspect(
     options.angle = angle;
     let built = FigureName::from_name(figure).unwrap().figure(&options);
     let failures = match built {
-        Ok(f) => check(&Plate::read(&to_svg(&f)), SPREAD_FIGURES.contains(&figure)),
+        Ok(f) => {
+            let plate = Plate::read(&to_svg(&f));
+            let mut found = check(&plate, SPREAD_FIGURES.contains(&figure));
+            found.extend(subject_small(&plate, figure));
+            found
+        }
         Err(e) => vec![fail(RULE_BUILD, e.to_string())],
     };
     Outcome {

@@ -12,7 +12,7 @@
 use super::{Ctx, PER_DEGREE, Sheet, against_time, dead_centres, extent, short, sig};
 use crate::diagram::{Axis, Curve, Locus, LocusKind, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, PageRect, Panel, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
@@ -48,7 +48,8 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     let scene = ctx
         .scene(ctx.page().width(), TOP * taller(ctx.mechanism, &reach))?
         .with_layers([Layer::Mechanism, Layer::Velocity, Layer::Scales])
-        .with_view_holding(reach);
+        .with_view_holding(reach)
+        .with_detail_subject(loops(ctx.mechanism));
     let base = scene.figure()?;
     // A velocity triangle too small to letter gets an enlarged detail, set
     // by the scene below its drawing with the scale notes: the rest of the
@@ -87,11 +88,61 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     diagrams(&mut plot, ctx.mechanism)?;
     construction(&mut plot, &ctx.pose());
     let drawn = plot.finish();
-    sheet.panel(panel.with_items(drawn.items().iter().cloned()));
-    for detail in base.panels().iter().skip(1) {
-        sheet.panel(detail.clone());
+    // The polar diagram is the subject of the scene's detail where a long
+    // rod draws the crank small: the detail draws it too, with E′ where
+    // its frame holds it (the main view then leaves E′'s letter to it).
+    let copied = |i: &&Item| {
+        i.id.starts_with("curve-polar-velocity")
+            || ["arc-E-E1", "point-E1", "label-E1"].contains(&i.id.as_str())
+    };
+    let in_detail: Vec<Item> = (drawn.items().iter())
+        .filter(copied)
+        .map(|i| Item {
+            id: format!("detail-{}", i.id),
+            ..i.clone()
+        })
+        .collect();
+    // The detail of the loops (the scene's detail of its subject) holds
+    // them whole; a detail of the crowded construction (a short rod) is
+    // left as the scene drew it, E′ lettered on the main view.
+    let frame = loops(ctx.mechanism);
+    let holds = |d: &Panel, p: Point| {
+        let q = d.transform().apply(p);
+        let r = d.rect();
+        let slack = 1.0;
+        q.x >= r.x - slack
+            && q.x <= r.x + r.width + slack
+            && q.y >= r.y - slack
+            && q.y <= r.y + r.height + slack
+    };
+    let of_loops = |d: &Panel| holds(d, frame.min()) && holds(d, frame.max());
+    let details: Vec<Panel> = base.panels().iter().skip(1).cloned().collect();
+    let lettered_there = details.iter().any(of_loops) && e_prime(&ctx.pose()).is_some();
+    let main = (drawn.items().iter())
+        .filter(|i| !(lettered_there && i.id == "label-E1"))
+        .cloned();
+    sheet.panel(panel.with_items(main));
+    for detail in details {
+        let items: Vec<Item> = match of_loops(&detail) {
+            true => in_detail.clone(),
+            false => Vec::new(),
+        };
+        sheet.panel(detail.with_items(items));
     }
     Ok(grown + band)
+}
+
+/// The world frame of the polar diagram's loops of `m` over a turn: E′
+/// at ±CE along the crank, and the crank circle.
+fn loops(m: SliderCrank) -> Frame {
+    let ce = |p: &Pose| -p.position_rate();
+    let (x0, x1) = extent(&m, |p| ce(p) * p.angle().cos());
+    let (y0, y1) = extent(&m, |p| ce(p) * p.angle().sin());
+    let r = m.crank();
+    Frame::new(
+        Point::new(x0.min(-x1).min(-r), y0.min(-y1).min(-r)),
+        Point::new(x1.max(-x0).max(r), y1.max(-y0).max(r)),
+    )
 }
 
 /// The world frame the two diagrams of `m` reach over a turn (every
@@ -228,14 +279,21 @@ fn notes(ctx: &Ctx) -> [String; 2] {
 
 /// The construction of E′ and E″ for the drawn pose: the arc about C from
 /// E to E′, the line from E across to E″ over A.
-fn construction(plot: &mut Plot, pose: &Pose) {
+/// E′ of `pose` (the polar diagram's point on the crank, CE′ = |CE|
+/// from C); none at a dead centre, where CE vanishes.
+fn e_prime(pose: &Pose) -> Option<Point> {
     let ce = -pose.position_rate();
     let r = pose.mechanism().crank();
-    if ce.abs() < 1e-6 * r {
-        return;
-    }
     let u = Vector::new(pose.angle().cos(), pose.angle().sin());
-    let e1 = Point::origin() + u * ce.abs();
+    (ce.abs() >= 1e-6 * r).then(|| Point::origin() + u * ce.abs())
+}
+
+fn construction(plot: &mut Plot, pose: &Pose) {
+    let ce = -pose.position_rate();
+    let Some(e1) = e_prime(pose) else {
+        return;
+    };
+    let u = Vector::new(pose.angle().cos(), pose.angle().sin());
     let e2 = Point::new(pose.position(), ce);
     let start = if ce > 0.0 { 0.5 } else { -0.5 } * std::f64::consts::PI;
     let end = u.y.atan2(u.x);

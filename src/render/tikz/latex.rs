@@ -215,17 +215,12 @@ mod tests {
 
     #[test]
     fn every_markup_character_of_latex_is_escaped_in_text() {
-        let s = of(r"a\b{c}%d$e#f_g^h~i&j");
-        for bad in ["\\b", "{c}", "%d", "$e", "#f"] {
-            assert!(!s.contains(bad), "{bad} in {s}");
-        }
-        assert!(s.contains("\\textbackslash{}"), "{s}");
-        assert!(
-            s.contains("\\%") && s.contains("\\$") && s.contains("\\#"),
-            "{s}"
+        // `_` before a character is the markup of a subscript; at the end
+        // it is a character.
+        assert_eq!(
+            of(r"a\b{c}%d$e#f^h~i&j x_"),
+            r"a\textbackslash{}b\{c\}\%d\$e\#f\textasciicircum{}h\textasciitilde{}i\&j x\_"
         );
-        assert!(s.contains("\\textasciitilde{}") && s.contains("\\&"), "{s}");
-        assert!(s.is_ascii());
     }
 
     #[test]

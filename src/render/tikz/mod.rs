@@ -31,9 +31,10 @@ pub struct TikzOptions {
 
 impl TikzOptions {
     /// The picture wrapped in a LaTeX document of its own (an `article`
-    /// whose page is the figure's, by `geometry`; `fix-cm` so that
-    /// Computer Modern comes at any size), which pdfLaTeX and LuaLaTeX
-    /// compile as it is; without it, the `tikzpicture` alone,
+    /// whose page is the figure's, by `geometry`; with pdfLaTeX Latin
+    /// Modern in T1, so that it comes at any size and `\`, `^`, `~` and
+    /// `_` print as themselves), which pdfLaTeX and LuaLaTeX compile as it
+    /// is; without it, the `tikzpicture` alone,
     /// for `\input` in a book that loads TikZ.
     pub fn standalone(mut self, standalone: bool) -> Self {
         self.standalone = standalone;
@@ -51,8 +52,9 @@ pub fn to_tikz(figure: &Figure, options: &TikzOptions) -> String {
     }
     let (w, h) = (figure.width(), figure.height());
     format!(
-        "\\RequirePackage{{fix-cm}}\n\
+        "\\RequirePackage{{iftex}}\n\
          \\documentclass{{article}}\n\
+         \\ifPDFTeX\\usepackage[T1]{{fontenc}}\\usepackage{{lmodern}}\\fi\n\
          \\usepackage[paperwidth={}bp,paperheight={}bp,margin=0pt,nohead,nofoot]{{geometry}}\n\
          \\usepackage{{tikz}}\n\
          \\pagestyle{{empty}}\n\

@@ -152,6 +152,9 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
     if !(acceleration || velocity) {
         return crank(ctx, scale, max_width).or_else(|| crowded_crank(ctx, scale, max_width));
     }
+    if let Some(d) = subject(ctx, scale, max_width) {
+        return d;
+    }
     let (core, h) = points(ctx);
     let (cmin, cmax) = bounds(&core);
     let core_size = cmax - cmin;
@@ -524,6 +527,35 @@ fn crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
         magnification,
         focus: Focus::Crank,
     })
+}
+
+/// The larger side, page units, under which a subject a diagram draws
+/// on the mechanism ([`crate::scene::Scene::with_detail_subject`]) gets
+/// a detail that holds it whole: Fig. 64's polar diagram, about the crank
+/// circle, whose loops a long rod's main view draws a few units across.
+const SUBJECT_THRESHOLD: f64 = 90.0;
+/// The least larger side of the subject in its detail, page units.
+const SUBJECT_TARGET: f64 = 220.0;
+
+/// The detail of the subject a diagram draws on the mechanism, where the
+/// main view draws it under [`SUBJECT_THRESHOLD`]: its frame whole,
+/// enlarged to [`SUBJECT_TARGET`] or as near as `max_width` allows
+/// (`Some(None)` where no step fits); `None` where the scene names no
+/// subject or draws it large enough, the construction's own detail rule
+/// then applying.
+fn subject(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Option<Detail>> {
+    let frame = ctx.scene.subject()?;
+    let size = frame.max() - frame.min();
+    let side = size.x.max(size.y) * scale;
+    if !(side > 0.0 && side < SUBJECT_THRESHOLD) {
+        return None;
+    }
+    let magnification = magnify(SUBJECT_TARGET / side, size.x * scale, max_width);
+    Some(magnification.map(|magnification| Detail {
+        region: *frame,
+        magnification,
+        focus: Focus::Construction,
+    }))
 }
 
 /// How close (page units) the piston pin P comes to the crank centre O
