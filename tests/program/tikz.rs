@@ -204,7 +204,7 @@ fn labels(svg: &str) -> Vec<(char, (f64, f64))> {
 
 /// The word of `words` starting with `c` whose start is nearest `at`, and
 /// its distance.
-fn nearest<'w>(words: &'w [Word], c: char, at: (f64, f64)) -> Option<(&'w Word, f64)> {
+fn nearest(words: &[Word], c: char, at: (f64, f64)) -> Option<(&Word, f64)> {
     (words.iter())
         .filter(|w| w.text.starts_with(c))
         .map(|w| {
