@@ -306,3 +306,31 @@ fn a_title_of_latex_markup_characters_compiles_and_prints_as_given() {
         );
     }
 }
+
+#[test]
+fn the_gallery_writes_tikz_when_its_manifest_names_it_as_figure_does() {
+    let dir = tempfile::tempdir().unwrap();
+    let manifest = dir.path().join("gallery.toml");
+    std::fs::write(
+        &manifest,
+        "formats = [\"tikz\"]\nfigures = [\"fig-65-klein\", \"ng-fig-1-torque\"]\n",
+    )
+    .unwrap();
+    let out = dir.path().join("g");
+    succeeded(&run(&[
+        "gallery",
+        "--manifest",
+        manifest.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]));
+    for name in ["fig-65-klein", "ng-fig-1-torque"] {
+        let one = dir.path().join(format!("{name}.tex"));
+        succeeded(&run(&["figure", name, "--out", one.to_str().unwrap()]));
+        let written = std::fs::read(out.join(format!("{name}.tex"))).unwrap();
+        assert_eq!(written, std::fs::read(&one).unwrap(), "{name}");
+        assert!(written.starts_with(b"% ") && !written.windows(9).any(|w| w == b"\\document"));
+    }
+    let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+    assert!(index.contains(">TikZ<"), "{index}");
+}
