@@ -9,7 +9,7 @@
 use crate::common;
 use crate::plate;
 
-use plate::{Label, Panel, Plate, Rect, Seg};
+use plate::{Label, Panel, Plate, Pt, Rect, Seg};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
 use std::collections::{BTreeMap, BTreeSet};
@@ -56,6 +56,14 @@ const RULE_TEXTS: &str = "6 texts apart";
 const RULE_SIZE: &str = "7 text large enough";
 const RULE_FILL: &str = "8 page filled";
 const RULE_SUBJECT: &str = "9 subject readable";
+const RULE_ALONG: &str = "10 no arrow along a link";
+/// An arrow's shaft lies along a link when their directions differ by
+/// less than this (degrees)…
+const ALONG_ANGLE: f64 = 10.0;
+/// …and this share of the shaft lies within [`ALONG_NEAR`] px of it.
+const ALONG_SHARE: f64 = 1.0 / 3.0;
+/// How near (px) a shaft's piece lies to a link to be read as on it.
+const ALONG_NEAR: f64 = 4.0;
 /// The subjects of figures that the rule sweep holds to a least size:
 /// the figure, the id its subject's line ends with (in any panel), and
 /// the least span (px) of that line in some panel. Fig. 64's polar
@@ -547,6 +555,79 @@ fn subject_small(plate: &Plate, figure: &str) -> Vec<Failure> {
     out
 }
 
+/// Rule 10: no arrow (a force or a velocity, class `force`; not a
+/// torque's or a speed's turning arc) is drawn along a link: its shaft (its longest straight
+/// piece) parallel to a link's piece within [`ALONG_ANGLE`] and within
+/// [`ALONG_NEAR`] px of it over [`ALONG_SHARE`] of its length reads as the
+/// link, its head as a mark on it.
+fn arrows_along_links(plate: &Plate) -> Vec<Failure> {
+    let mut out = Vec::new();
+    for panel in &plate.panels {
+        let links: Vec<&Seg> = (panel.strokes.iter())
+            .filter(|s| s.class == "link" && bare(panel, &s.id).starts_with("link-"))
+            .flat_map(|s| s.segs.iter())
+            .collect();
+        // An arrow is written as its shaft and its head, two paths of one id.
+        let mut arrows: BTreeMap<&str, Vec<&Seg>> = BTreeMap::new();
+        for stroke in panel.strokes.iter().filter(|s| s.class == "force") {
+            arrows.entry(&stroke.id).or_default().extend(&stroke.segs);
+        }
+        for (id, segs) in arrows {
+            let bare_id = bare(panel, id);
+            if bare_id.starts_with("torque") || bare_id.starts_with("motion") {
+                continue;
+            }
+            let Some(shaft) = segs
+                .into_iter()
+                .max_by(|a, b| length(a).total_cmp(&length(b)))
+            else {
+                continue;
+            };
+            if links.iter().any(|l| along(shaft, l)) {
+                out.push(fail(RULE_ALONG, id.to_string()));
+            }
+        }
+    }
+    out
+}
+
+fn length(s: &Seg) -> f64 {
+    ((s.1.0 - s.0.0).powi(2) + (s.1.1 - s.0.1).powi(2)).sqrt()
+}
+
+/// Whether `shaft` lies along `link` (rule 10).
+fn along(shaft: &Seg, link: &Seg) -> bool {
+    let (ls, ll) = (length(shaft), length(link));
+    if ls < 1.0 || ll < 1e-9 {
+        return false;
+    }
+    let d = |s: &Seg, l: f64| ((s.1.0 - s.0.0) / l, (s.1.1 - s.0.1) / l);
+    let (a, b) = (d(shaft, ls), d(link, ll));
+    let sin = (a.0 * b.1 - a.1 * b.0).abs();
+    if sin > ALONG_ANGLE.to_radians().sin() {
+        return false;
+    }
+    let near = |p: Pt| {
+        let t = (((p.0 - link.0.0) * b.0 + (p.1 - link.0.1) * b.1) / ll).clamp(0.0, 1.0);
+        let q = (
+            link.0.0 + t * (link.1.0 - link.0.0),
+            link.0.1 + t * (link.1.1 - link.0.1),
+        );
+        ((p.0 - q.0).powi(2) + (p.1 - q.1).powi(2)).sqrt() <= ALONG_NEAR
+    };
+    let n = 60;
+    let on = (0..=n)
+        .filter(|&k| {
+            let t = k as f64 / n as f64;
+            near((
+                shaft.0.0 + t * (shaft.1.0 - shaft.0.0),
+                shaft.0.1 + t * (shaft.1.1 - shaft.0.1),
+            ))
+        })
+        .count();
+    on as f64 / (n + 1) as f64 >= ALONG_SHARE
+}
+
 /// Rule 8: the ink of the mechanism panels spans at least [`FILL`] of
 /// the page's width (a short-rod drawing took a third of its page).
 fn page_unfilled(plate: &Plate) -> Vec<Failure> {
@@ -690,6 +771,7 @@ fn inspect(
             let plate = Plate::read(&to_svg(&f));
             let mut found = check(&plate, SPREAD_FIGURES.contains(&figure));
             found.extend(subject_small(&plate, figure));
+            found.extend(arrows_along_links(&plate));
             found
         }
         Err(e) => vec![fail(RULE_BUILD, e.to_string())],
@@ -2066,4 +2148,21 @@ fn a_far_letter_is_taken_only_with_a_leader_that_reaches_its_point() {
     assert_eq!(rules(&page(&led, NOTE, WIDE_POINTS), true), [] as [&str; 0]);
     let short = far + &leader(170.0);
     assert_eq!(rules(&page(&short, NOTE, WIDE_POINTS), true), [RULE_NEAR]);
+}
+
+#[test]
+fn an_arrow_on_a_link_is_along_it_and_one_beside_it_or_across_it_is_not() {
+    let rod = Seg((0.0, 0.0), (200.0, 0.0));
+    // On the rod, and leaving it at 5° (5 px off at its end): along.
+    assert!(along(&Seg((20.0, 0.0), (80.0, 0.0)), &rod));
+    assert!(along(&Seg((20.0, 0.0), (80.0, 60.0 * 5f64.to_radians().tan())), &rod));
+    // Parallel 7 px off (F_c set beside the rod), 12° across, or past the
+    // rod's end: not along.
+    assert!(!along(&Seg((20.0, 7.0), (80.0, 7.0)), &rod));
+    assert!(!along(&Seg((20.0, 0.0), (80.0, 60.0 * 12f64.to_radians().tan())), &rod));
+    assert!(!along(&Seg((230.0, 0.0), (290.0, 0.0)), &rod));
+    // Along for a quarter of its length only (its tail on the rod's end):
+    // not along; for half: along.
+    assert!(!along(&Seg((185.0, 0.0), (245.0, 0.0)), &rod));
+    assert!(along(&Seg((170.0, 0.0), (230.0, 0.0)), &rod));
 }

@@ -9,6 +9,12 @@ use crate::scene::canvas::Canvas;
 
 /// Length of the arrow v_c, page units; v_p is drawn to the same scale.
 const VC_ARROW: f64 = 54.0;
+/// The angle (radians) between v_c and the rod within which v_c, drawn
+/// from the pin, would lie along the rod: 20°.
+const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
+/// How far short of the pin (page units) an arrow that comes to it stops:
+/// clear of its circle.
+const PIN_SHORT: f64 = 7.0;
 /// Shortest velocity arrow drawn, page units.
 const MIN_ARROW: f64 = 14.0;
 /// Distance of the arrow v_p beyond the guide, page units (past the
@@ -50,13 +56,25 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
     let cb = b - pose.c();
     if cb.norm() > 0.0 {
         let u = Vector::new(-cb.y, cb.x) / cb.norm() * turn;
-        let to = b + u * world(VC_ARROW);
+        let rod = a - b;
+        let along = rod.norm() > 0.0 && u.dot(&rod) > rod.norm() * ALONG_THE_ROD.cos();
+        let arrow = if along {
+            // Drawn from the pin it would run along the rod: it comes to
+            // the pin from the other side, its head short of the pin's
+            // circle, named at its tail.
+            let to = b - u * world(PIN_SHORT);
+            let from = to - u * world(VC_ARROW);
+            (from, to, from)
+        } else {
+            let to = b + u * world(VC_ARROW);
+            (b, to, to)
+        };
         out.push(NamedArrow {
             id: "vc",
             name: "*v*_c",
-            from: b,
-            to,
-            name_at: to,
+            from: arrow.0,
+            to: arrow.1,
+            name_at: arrow.2,
         });
     }
     let vp = pose.position_rate() / pose.mechanism().crank() * turn;

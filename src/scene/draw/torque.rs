@@ -219,8 +219,9 @@ const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
 /// The force arrows, their page lengths turned to world lengths by
 /// `world`: F_c = T / r on the crank pin, perpendicular to the crank in
 /// the torque's sense (Ng eq. 2), pointing at the pin; the slider force
-/// F_p from the block's face along the stroke (or, where that arrow would
-/// run into the crank's bearing, pushing on the block's far face), and
+/// F_p along the stroke: from the block's face away from the rod where it
+/// points away from the rod's side, else pushing on that face (an arrow
+/// from the near face ran along the rod), and
 /// the side thrust F_s from its top or bottom (to F_p's scale, within
 /// limits). None at a dead centre, where the slider force is not finite.
 pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArrow> {
@@ -256,16 +257,17 @@ pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArr
     };
     if let Some((sign, nonzero)) = sense {
         let ux = Vector::new(sign, 0.0);
-        let face = a + ux * s.block_half_length;
         let length = world(FORCE_ARROW);
-        // An arrow from the block towards the crank centre that would
-        // reach its bearing and torque arrow (a short rod near the inner
-        // dead centre) pushes on the block's far face instead.
-        let reach = s.block_half_length + length + world(TORQUE_REACH);
-        let (from, to) = if sign * (c.x - a.x) > 0.0 && (c.x - a.x).abs() < reach {
+        // A force towards the crank drawn from the block's near face would
+        // run along the rod, which leaves the block on that side: it
+        // pushes on the block's far face instead, as the gas pushes the
+        // piston. A force away from the crank leaves the near face, where
+        // nothing else is drawn.
+        let (from, to) = if sign * (b.x - a.x) > 0.0 {
             let back = a - ux * s.block_half_length;
             (back - ux * length, back)
         } else {
+            let face = a + ux * s.block_half_length;
             (face, face + ux * length)
         };
         out.push(NamedArrow {
