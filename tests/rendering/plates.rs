@@ -2155,11 +2155,17 @@ fn an_arrow_on_a_link_is_along_it_and_one_beside_it_or_across_it_is_not() {
     let rod = Seg((0.0, 0.0), (200.0, 0.0));
     // On the rod, and leaving it at 5° (5 px off at its end): along.
     assert!(along(&Seg((20.0, 0.0), (80.0, 0.0)), &rod));
-    assert!(along(&Seg((20.0, 0.0), (80.0, 60.0 * 5f64.to_radians().tan())), &rod));
+    assert!(along(
+        &Seg((20.0, 0.0), (80.0, 60.0 * 5f64.to_radians().tan())),
+        &rod
+    ));
     // Parallel 7 px off (F_c set beside the rod), 12° across, or past the
     // rod's end: not along.
     assert!(!along(&Seg((20.0, 7.0), (80.0, 7.0)), &rod));
-    assert!(!along(&Seg((20.0, 0.0), (80.0, 60.0 * 12f64.to_radians().tan())), &rod));
+    assert!(!along(
+        &Seg((20.0, 0.0), (80.0, 60.0 * 12f64.to_radians().tan())),
+        &rod
+    ));
     assert!(!along(&Seg((230.0, 0.0), (290.0, 0.0)), &rod));
     // Along for a quarter of its length only (its tail on the rod's end):
     // not along; for half: along.
