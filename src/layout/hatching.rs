@@ -44,6 +44,7 @@ impl Hatching {
         let reach = Bounds::enclosing(&ends)?.inflate(ROOM);
         let near: Vec<&(Point, Point)> = (crossing.iter())
             .filter(|(p, q)| Bounds::enclosing(&[*p, *q]).is_some_and(|b| b.meets(&reach)))
+            .filter(|line| !self.on_edge(line))
             .collect();
         let clear = |s: &&(Point, Point)| near.iter().all(|c| apart(**s, **c, ROOM));
         let mut d = PathData::new();
@@ -52,6 +53,26 @@ impl Hatching {
             d.push(PathCommand::Line(*q));
         }
         (!d.is_empty()).then(|| ink.tag(path(d, self.pen)))
+    }
+}
+
+impl Hatching {
+    /// Whether the line `(a, b)` runs along the hatched edge (the line of
+    /// the strokes' feet), within [`ROOM`] of it at both ends: a line
+    /// drawn on the fixed link itself (a centre at infinity along it)
+    /// meets every stroke at its foot and crosses none of the band.
+    fn on_edge(&self, &(a, b): &(Point, Point)) -> bool {
+        let (Some(first), Some(last)) = (self.strokes.first(), self.strokes.last()) else {
+            return false;
+        };
+        let (f, l) = (first.0, last.0);
+        let along = l - f;
+        let n = along.norm();
+        if n == 0.0 {
+            return false;
+        }
+        let off = |p: Point| ((p - f).x * along.y - (p - f).y * along.x).abs() / n;
+        off(a) <= ROOM && off(b) <= ROOM
     }
 }
 

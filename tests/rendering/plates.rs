@@ -57,6 +57,7 @@ const RULE_SIZE: &str = "7 text large enough";
 const RULE_FILL: &str = "8 page filled";
 const RULE_SUBJECT: &str = "9 subject readable";
 const RULE_ALONG: &str = "10 no arrow along a link";
+
 /// An arrow's shaft lies along a link when their directions differ by
 /// less than this (degrees)…
 const ALONG_ANGLE: f64 = 10.0;
@@ -947,6 +948,8 @@ fn chain_plates_are_clean() {
         m(1.0, 4.0, 2.4),
         m(1.0, 4.0, -2.4),
         m(1e-6, 4e-6, 0.0),
+        m(1.0, 1.05, 0.0),
+        m(1.0, 30.0, 0.0),
     ];
     let mut jobs = Vec::new();
     for figure in CHAIN_FIGURES {
