@@ -252,3 +252,70 @@ fn path(d: &PathData) -> String {
     }
     out.join(" ")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::catalogue::{FigureName, FigureOptions};
+    use std::collections::BTreeSet;
+
+    /// The ids of the marks the SVG writes (not the document's own: the
+    /// paper, the panels and their clips).
+    fn svg_ids(svg: &str) -> BTreeSet<String> {
+        let own = |id: &str| id == "paper" || id.starts_with("panel-") || id.starts_with("clip-");
+        (svg.split(" id=\"").skip(1))
+            .filter_map(|rest| rest.split('"').next())
+            .filter(|id| !own(id))
+            .map(str::to_owned)
+            .collect()
+    }
+
+    /// The ids TikZ names in its comments before each mark.
+    fn tikz_ids(tikz: &str) -> BTreeSet<String> {
+        (tikz.lines())
+            .filter_map(|l| l.strip_prefix("% "))
+            .filter(|l| !l.starts_with("panel ") && !l.contains(' '))
+            .map(str::to_owned)
+            .collect()
+    }
+
+    #[test]
+    fn every_figure_as_tikz_is_its_placed_marks_item_for_item() {
+        for name in FigureName::ALL {
+            let figure = name.figure(&FigureOptions::default()).unwrap();
+            let (svg, tikz) = (
+                crate::render::to_svg(&figure),
+                to_tikz(&figure, &TikzOptions::default()),
+            );
+            assert_eq!(svg_ids(&svg), tikz_ids(&tikz), "{}", name.name());
+            let nodes = tikz.matches("\\node[").count();
+            assert_eq!(nodes, svg.matches("<text ").count(), "{}", name.name());
+            assert!(tikz.is_ascii(), "{}", name.name());
+        }
+    }
+
+    #[test]
+    fn a_standalone_document_is_the_picture_in_a_page_of_the_figures_size() {
+        let figure = FigureName::Fig63Velocity
+            .figure(&FigureOptions::default())
+            .unwrap();
+        let picture = to_tikz(&figure, &TikzOptions::default());
+        let document = to_tikz(&figure, &TikzOptions::default().standalone(true));
+        assert!(document.contains(&picture) && document.ends_with("\\end{document}\n"));
+        let size = format!(
+            "paperwidth={}bp,paperheight={}bp",
+            bp(figure.width()),
+            bp(figure.height())
+        );
+        assert!(document.contains(&size), "{document}");
+        assert!(!picture.contains("\\document"));
+    }
+
+    #[test]
+    fn dashes_are_tikz_patterns_in_big_points_and_an_odd_list_repeats() {
+        assert_eq!(dash_pattern("4 2"), "on 3bp off 1.5bp");
+        assert_eq!(dash_pattern("4"), "on 3bp off 3bp");
+        assert_eq!(colour_name("#C62828"), "scc62828");
+        assert_eq!(colour_name("red"), "sc000000");
+    }
+}
