@@ -138,6 +138,8 @@ mod csv;
 pub mod diagram;
 pub mod dynamics;
 mod error;
+#[cfg(feature = "explore")]
+pub mod explore;
 pub mod figure;
 #[cfg(feature = "html")]
 pub mod gallery;
