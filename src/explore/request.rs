@@ -221,6 +221,48 @@ mod tests {
         assert_eq!(status(&vec![b'G'; MAX_HEAD_BYTES + 1]), 431);
     }
 
+    /// `text` percent-encoded, every byte but letters and digits.
+    fn encode(text: &str) -> String {
+        text.bytes()
+            .map(|b| {
+                if b.is_ascii_alphanumeric() {
+                    (b as char).to_string()
+                } else {
+                    format!("%{b:02X}")
+                }
+            })
+            .collect()
+    }
+
+    proptest::proptest! {
+        // The bounded twin of the fuzz target `explore_request`: any bytes
+        // are read or refused, never a panic, and a refusal is a client
+        // error with a one-line reason.
+        #[test]
+        fn any_bytes_are_read_or_refused(bytes in proptest::collection::vec(proptest::num::u8::ANY, 0..600)) {
+            if let Err(r) = Request::parse(&bytes, 8080) {
+                proptest::prop_assert!((400..500).contains(&r.status()));
+                proptest::prop_assert!(!r.reason().contains('\n'));
+            }
+        }
+
+        // Any query of printable names and values comes back as it was
+        // sent, once percent-encoded.
+        #[test]
+        fn an_encoded_query_is_decoded_as_sent(
+            fields in proptest::collection::vec(("[a-z-]{1,12}", "[^\\p{Cc}]{0,40}"), 0..MAX_FIELDS)
+        ) {
+            let query: Vec<String> = fields
+                .iter()
+                .map(|(k, v)| format!("{}={}", encode(k), encode(v)))
+                .collect();
+            let bytes = head(&format!("/figure?{}", query.join("&")), "127.0.0.1:8080");
+            let request = Request::parse(&bytes, 8080).unwrap().unwrap();
+            let sent: Vec<(String, String)> = fields.into_iter().collect();
+            proptest::prop_assert_eq!(request.query(), sent.as_slice());
+        }
+    }
+
     #[test]
     fn the_loopback_names_are_the_only_hosts() {
         for ok in ["127.0.0.1:80", "[::1]:80", "localhost:80", "LocalHost:80"] {

@@ -34,6 +34,9 @@ mod browser;
 mod cli;
 #[cfg(feature = "png")]
 mod cli_figures;
+// the explorer's server (and, ignored, its page in Chromium)
+#[cfg(feature = "explore")]
+mod explore;
 #[cfg(feature = "png")]
 mod fonts;
 #[cfg(feature = "png")]
