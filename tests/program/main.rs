@@ -35,6 +35,8 @@ mod cli;
 #[cfg(feature = "png")]
 mod cli_figures;
 // the explorer's server (and, ignored, its page in Chromium)
+#[cfg(all(feature = "explore", feature = "png"))]
+mod devtools;
 #[cfg(feature = "explore")]
 mod explore;
 #[cfg(feature = "png")]
