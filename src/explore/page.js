@@ -130,8 +130,11 @@
   let inflight = null;
   let waiting = false;
   let metadata = null;
+  // Per figure asked for by a drag or a key: ms from the event to the
+  // reply read, to the figure in the page, and to the next frame drawn.
   const timings = [];
-  window.explorer = { timings, state, metadata: () => metadata, ready: false, requests: 0 };
+  const phases = [];
+  window.explorer = { timings, phases, state, metadata: () => metadata, ready: false, requests: 0 };
   const describe = () => {
     const f = figures.get(state.name);
     let text = f.source + ' (' + f.name + ')';
@@ -162,6 +165,7 @@
           return;
         }
         const reply = await r.json();
+        const replied = performance.now();
         stage.innerHTML = reply.svg;
         const svg = stage.querySelector('svg');
         if (svg) {
@@ -175,8 +179,12 @@
         $('description').textContent = describe();
         stage.setAttribute('aria-valuenow', state.angle);
         stage.setAttribute('aria-valuetext', 'θ = ' + state.angle + '°');
+        const shown = performance.now();
         requestAnimationFrame(() => {
-          if (started !== undefined) timings.push(performance.now() - started);
+          if (started === undefined) return;
+          const framed = performance.now();
+          timings.push(framed - started);
+          phases.push([replied - started, shown - started, framed - started]);
         });
       })
       .catch((e) => {

@@ -4,8 +4,8 @@
 //! URLs, its script inline, nothing fetched but the server's own figures.
 
 use crate::catalogue::{FigureName, Setting};
-use crate::figure::Font;
-use crate::{Layer, Notation, Style};
+use crate::figure::{Font, Style};
+use crate::scene::{Layer, Notation};
 use maud::{Markup, PreEscaped, html};
 use serde_json::{Value, json};
 

@@ -574,5 +574,16 @@ mod in_the_browser {
              as the driver sees it median {d_median:.2} ms, p95 {d_p95:.2} ms",
             page.len()
         );
+        let phases = b.eval("window.explorer.phases");
+        for (k, what) in ["reply read", "figure in the page"].iter().enumerate() {
+            let mut t: Vec<f64> = phases
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|p| p[k].as_f64().unwrap())
+                .collect();
+            let (m, p) = quantiles(&mut t);
+            println!("  from the drag to the {what}: median {m:.2} ms, p95 {p:.2} ms");
+        }
     }
 }
