@@ -99,14 +99,14 @@
 
   // The values `analyze` prints, exact beside graphical.
   const ROWS = [
-    ['position x_A', 'position', null, 'length'],
+    ['position of the slider', 'position', null, 'length'],
     ['velocity of the slider', 'velocity', 'velocity', 'velocity'],
     ['acceleration of the slider', 'acceleration', 'acceleration', 'acceleration'],
     ['rod angle φ', 'rod_angle_deg', null, '°'],
     ['rod angular velocity', 'rod_angular_velocity', 'rod_angular_velocity', 'angular_velocity'],
     ['rod angular acceleration', 'rod_angular_acceleration', 'rod_angular_acceleration', 'angular_acceleration'],
   ];
-  const show = (x) => (x === null || x === undefined ? '—' : Number(x).toPrecision(6));
+  const show = (x) => (x === null || x === undefined ? '—' : Number(x).toPrecision(6).replace(/^-/, '\u2212'));
   const showValues = (a) => {
     const body = $('values').tBodies[0];
     body.textContent = '';

@@ -122,6 +122,19 @@ fn body(initial: FigureName, data: &str) -> Markup {
                 p #status .status role="status" aria-live="polite" {}
             }
             section .panel aria-label="Controls and values" {
+                section #values-section aria-label="Values" {
+                    table #values {
+                        caption { "Exact and graphical values" }
+                        thead { tr { th scope="col" { "quantity" } th scope="col" { "exact" } th scope="col" { "graphical" } } }
+                        tbody {}
+                    }
+                }
+                nav .downloads aria-label="Downloads" {
+                    a #download-svg download href="#" { "SVG" }
+                    a #download-png download href="#" { "PNG" }
+                    a #download-pdf download href="#" { "PDF" }
+                    a #download-handout download href="#" { "Handout for this engine" }
+                }
                 form #controls {
                     fieldset {
                         legend { "Figure" }
@@ -157,19 +170,6 @@ fn body(initial: FigureName, data: &str) -> Markup {
                         }
                         label .check { input #large type="checkbox" name="large"; " Large type (projector)" }
                     }
-                }
-                section #values-section aria-label="Values" {
-                    table #values {
-                        caption { "Exact and graphical values" }
-                        thead { tr { th scope="col" { "quantity" } th scope="col" { "exact" } th scope="col" { "graphical" } } }
-                        tbody {}
-                    }
-                }
-                nav .downloads aria-label="Downloads" {
-                    a #download-svg download href="#" { "SVG" }
-                    a #download-png download href="#" { "PNG" }
-                    a #download-pdf download href="#" { "PDF" }
-                    a #download-handout download href="#" { "Handout for this engine" }
                 }
             }
         }

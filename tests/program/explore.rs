@@ -479,7 +479,7 @@ mod in_the_browser {
 
         // Klein's construction added by clicking its box.
         let (x, y) = {
-            let r = b.eval("(() => { const r = document.querySelector('input[value=klein]').getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; })()");
+            let r = b.eval("(() => { const box = document.querySelector('input[value=klein]'); box.scrollIntoView({ block: 'center' }); const r = box.getBoundingClientRect(); return [r.x + r.width / 2, r.y + r.height / 2]; })()");
             (r[0].as_f64().unwrap(), r[1].as_f64().unwrap())
         };
         b.mouse("mousePressed", (x, y), true);
@@ -557,7 +557,7 @@ mod in_the_browser {
         let end = pin_at(&mut b, 30.0 + 340.0);
         b.mouse("mouseReleased", end, false);
         b.wait("window.explorer.timings.length >= 200");
-        let page = b.eval("window.explorer.timings");
+        let page = b.eval("window.explorer.timings.slice(0, 200)");
         let mut page: Vec<f64> = page
             .as_array()
             .unwrap()
@@ -574,7 +574,27 @@ mod in_the_browser {
              as the driver sees it median {d_median:.2} ms, p95 {d_p95:.2} ms",
             page.len()
         );
-        let phases = b.eval("window.explorer.phases");
+        // The same over 50 presses of an arrow key (no pointer).
+        b.eval("document.getElementById('stage').focus()");
+        let before = b.eval("window.explorer.timings.length").as_u64().unwrap();
+        for _ in 0..50 {
+            b.key("ArrowRight", 39, false);
+            b.wait(READY);
+        }
+        b.wait(&format!(
+            "window.explorer.timings.length >= {}",
+            before + 50
+        ));
+        let keys = b.eval(&format!("window.explorer.timings.slice({before})"));
+        let mut keys: Vec<f64> = keys
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| t.as_f64().unwrap())
+            .collect();
+        let (k_median, k_p95) = quantiles(&mut keys);
+        println!("  50 arrow keys: median {k_median:.2} ms, p95 {k_p95:.2} ms");
+        let phases = b.eval("window.explorer.phases.slice(0, 200)");
         for (k, what) in ["reply read", "figure in the page"].iter().enumerate() {
             let mut t: Vec<f64> = phases
                 .as_array()
