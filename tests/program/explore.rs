@@ -423,7 +423,7 @@ mod in_the_browser {
             &expected["graphical"]["acceleration"],
         ] {
             let v = v.as_f64().unwrap();
-            assert!(shown.iter().any(|s| *s == v), "{v} not among {shown:?}");
+            assert!(shown.contains(&v), "{v} not among {shown:?}");
         }
         meta
     }
