@@ -134,7 +134,20 @@
   // reply read, to the figure in the page, and to the next frame drawn.
   const timings = [];
   const phases = [];
-  window.explorer = { timings, phases, state, metadata: () => metadata, ready: false, requests: 0 };
+  window.explorer = { timings, phases, state, metadata: () => metadata, ready: false, requests: 0, drawn: 0 };
+  // A promise of the page settled with at least `n` figures drawn (for a
+  // driver, which then need not poll).
+  const waiters = [];
+  const settle = () => {
+    for (const w of waiters.splice(0)) {
+      if (window.explorer.ready && window.explorer.drawn >= w.n) w.resolve(true);
+      else waiters.push(w);
+    }
+  };
+  window.explorer.settled = (n) => new Promise((resolve) => {
+    waiters.push({ n, resolve });
+    settle();
+  });
   const describe = () => {
     const f = figures.get(state.name);
     let text = f.source + ' (' + f.name + ')';
@@ -176,6 +189,7 @@
         metadata = m ? JSON.parse(m.textContent) : null;
         showValues(reply.analyze);
         $('status').textContent = '';
+        window.explorer.drawn += 1;
         $('description').textContent = describe();
         stage.setAttribute('aria-valuenow', state.angle);
         stage.setAttribute('aria-valuetext', 'θ = ' + state.angle + '°');
@@ -193,7 +207,10 @@
       .finally(() => {
         if (inflight && inflight.ctl === ctl) inflight = null;
         if (waiting) draw(waitingSince);
-        else if (!inflight) window.explorer.ready = true;
+        else if (!inflight) {
+          window.explorer.ready = true;
+          settle();
+        }
       });
   };
   let waitingSince;
