@@ -503,6 +503,31 @@ mod in_the_browser {
                 .contains("klein")
         );
 
+        // A fast drag: twenty moves sent without waiting for the figure.
+        // The page asks for fewer figures than it is sent moves (the newest
+        // state waits while one is drawn, older ones are dropped) and ends
+        // on the last one. (Where the last move puts B depends on the view
+        // each figure was drawn in, which follows the pose.)
+        b.eval("document.getElementById('stage').scrollIntoView()");
+        let requests = b.eval("window.explorer.requests").as_u64().unwrap();
+        let from = b
+            .eval("Number(window.explorer.state.angle)")
+            .as_f64()
+            .unwrap();
+        let path: Vec<(f64, f64)> = (0..=20)
+            .map(|k| pin_at(&mut b, from + 4.0 * k as f64))
+            .collect();
+        b.mouse("mousePressed", path[0], true);
+        for &to in &path[1..] {
+            b.mouse("mouseMoved", to, true);
+        }
+        b.mouse("mouseReleased", path[20], false);
+        b.wait(READY);
+        let asked = b.eval("window.explorer.requests").as_u64().unwrap() - requests;
+        assert!(asked < 20, "{asked} figures asked for 20 moves");
+        // The figure shown is that of the last state (the address's).
+        check_against_analyze(&mut b);
+
         // The address holds the state: opened afresh, it draws the same.
         let address = b.eval("location.href").as_str().unwrap().to_string();
         let before = b.eval("document.querySelector('#stage svg').outerHTML");
