@@ -9,9 +9,10 @@ use super::figure::{FigureFlags, options};
 use super::handout::{HandoutArgs, template};
 use super::output::Stdout;
 use clap::{Args, Parser};
+use slider_crank::catalogue::FigureOptions;
 use slider_crank::explore::{Explorer, Refusal, Reply, Request, page};
 use slider_crank::render::{FileFormat, to_svg, to_svg_with_fonts};
-use slider_crank::{Error, FigureName, Result, SliderCrank, rpm_to_omega};
+use slider_crank::{Angle, Error, Figure, FigureName, Result, SliderCrank, rpm_to_omega};
 use std::sync::Arc;
 
 /// Serve the explorer on the loopback address.
@@ -152,12 +153,26 @@ fn refused(e: Error) -> Refusal {
     Refusal::new(422, &e.one_line().to_string())
 }
 
+/// The figure asked for. A mechanism figure is drawn as `animate` draws
+/// its frames: in one view held over the whole turn (and its own pose),
+/// so that the crank pin stays under the pointer that drags it; a diagram
+/// as `figure` draws it.
+fn draw(asked: &FigureRequest, options: &FigureOptions) -> Result<Figure> {
+    match asked.name.scene_with(options)? {
+        Some(scene) => {
+            let mut held: Vec<Angle> = (0..360).map(|d| Angle::deg(f64::from(d))).collect();
+            held.extend(scene.angles().iter().copied());
+            scene.with_held_view(held).figure()
+        }
+        None => asked.name.figure(options),
+    }
+}
+
 /// The figure and the values `analyze --json` gives for its pose.
 fn figure_reply(request: &Request, initial: FigureName) -> std::result::Result<Reply, Refusal> {
     let asked = figure_request(request, initial)?;
-    let name = asked.name;
-    let options = options(&asked.flags, name).map_err(refused)?;
-    let figure = name.figure(&options).map_err(refused)?;
+    let options = options(&asked.flags, asked.name).map_err(refused)?;
+    let figure = draw(&asked, &options).map_err(refused)?;
     let analyze = values(&asked, &options).map_err(refused)?;
     let reply = serde_json::json!({ "svg": to_svg(&figure), "analyze": analyze });
     Ok(Reply::ok(
@@ -169,10 +184,7 @@ fn figure_reply(request: &Request, initial: FigureName) -> std::result::Result<R
 /// The `analyze --json` object of the pose drawn: the scene's of a
 /// mechanism figure; for a diagram that follows a pose, the engine and
 /// angle asked for (the figure's own where not given); none for others.
-fn values(
-    asked: &FigureRequest,
-    options: &slider_crank::catalogue::FigureOptions,
-) -> Result<Option<serde_json::Value>> {
+fn values(asked: &FigureRequest, options: &FigureOptions) -> Result<Option<serde_json::Value>> {
     let name = asked.name;
     let flags = &asked.flags;
     let units = flags.units.units(name.units());
@@ -200,7 +212,7 @@ fn download_reply(request: &Request, initial: FigureName) -> std::result::Result
     };
     let asked = figure_request(request, initial)?;
     let options = options(&asked.flags, asked.name).map_err(refused)?;
-    let figure = asked.name.figure(&options).map_err(refused)?;
+    let figure = draw(&asked, &options).map_err(refused)?;
     let bytes = if format == FileFormat::Svg {
         to_svg_with_fonts(&figure).into_bytes()
     } else {

@@ -94,29 +94,56 @@ fn program(args: &[&str]) -> String {
     String::from_utf8(out.stdout).unwrap()
 }
 
+/// The JSON of an SVG's `<metadata>`.
+fn metadata(svg: &str) -> Value {
+    let start = svg.find("<metadata>").unwrap() + "<metadata>".len();
+    let end = svg.find("</metadata>").unwrap();
+    serde_json::from_str(&svg[start..end]).unwrap()
+}
+
 #[test]
 fn a_figure_request_is_the_figure_command_and_its_values_are_analyze() {
     let server = Server::start(&[]);
-    let reply: Value = serde_json::from_str(&server.text(
-        "/figure?name=fig-65-klein&crank=0.5&rod=2.5&offset=0.1&angle=30&rpm=300&layers=mechanism,klein,velocity",
-    ))
-    .unwrap();
+    let query = "/figure?name=fig-65-klein&crank=0.5&rod=2.5&offset=0.1&rpm=300&layers=mechanism,klein,velocity";
+    let reply: Value = serde_json::from_str(&server.text(&format!("{query}&angle=30"))).unwrap();
     let flags = [
         "--crank", "0.5", "--rod", "2.5", "--offset", "0.1", "--angle", "30", "--rpm", "300",
     ];
     let mut figure = vec!["figure", "fig-65-klein"];
     figure.extend(flags);
     figure.extend(["--layers", "mechanism,klein,velocity"]);
-    assert_eq!(reply["svg"].as_str().unwrap(), program(&figure));
+    // The same figure as `figure` draws, its points the same, in the view
+    // held over the turn (as `animate` holds it): the same view at 120°.
+    let svg = reply["svg"].as_str().unwrap();
+    let (shown, drawn) = (metadata(svg), metadata(&program(&figure)));
+    for k in [
+        "figure",
+        "mechanism",
+        "angle_deg",
+        "omega",
+        "layers",
+        "points",
+        "notation",
+    ] {
+        assert_eq!(shown[k], drawn[k], "{k}");
+    }
+    let later: Value = serde_json::from_str(&server.text(&format!("{query}&angle=120"))).unwrap();
+    let later = metadata(later["svg"].as_str().unwrap());
+    assert_eq!(later["angle_deg"], 120.0);
+    assert_eq!(later["page_from_world"], shown["page_from_world"]);
     let mut analyze = vec!["analyze", "--json"];
     analyze.extend(flags);
     let expected: Value = serde_json::from_str(&program(&analyze)).unwrap();
     assert_eq!(reply["analyze"], expected);
-    // A diagram that draws no pose has no values.
+    // A diagram is what `figure` draws, byte for byte; one that draws no
+    // pose has no values.
     let reply: Value =
         serde_json::from_str(&server.text("/figure?name=approximation-error")).unwrap();
     assert!(reply["analyze"].is_null());
-    assert!(reply["svg"].as_str().unwrap().starts_with("<svg"));
+    assert_eq!(
+        reply["svg"].as_str().unwrap(),
+        program(&["figure", "approximation-error"])
+    );
 }
 
 #[test]
@@ -506,8 +533,7 @@ mod in_the_browser {
         // A fast drag: twenty moves sent without waiting for the figure.
         // The page asks for fewer figures than it is sent moves (the newest
         // state waits while one is drawn, older ones are dropped) and ends
-        // on the last one. (Where the last move puts B depends on the view
-        // each figure was drawn in, which follows the pose.)
+        // on the last one.
         b.eval("document.getElementById('stage').scrollIntoView()");
         let requests = b.eval("window.explorer.requests").as_u64().unwrap();
         let from = b
@@ -525,8 +551,11 @@ mod in_the_browser {
         b.wait(READY);
         let asked = b.eval("window.explorer.requests").as_u64().unwrap() - requests;
         assert!(asked < 20, "{asked} figures asked for 20 moves");
-        // The figure shown is that of the last state (the address's).
-        check_against_analyze(&mut b);
+        // The figure shown is that of the last state (the address's), and
+        // B where the pointer left it: the view is held over the turn.
+        let last = check_against_analyze(&mut b)["angle_deg"].as_f64().unwrap();
+        let to = (from + 80.0) % 360.0;
+        assert!((last - to).abs() <= 0.2, "{last}° after a drag to {to}°");
 
         // The address holds the state: opened afresh, it draws the same.
         let address = b.eval("location.href").as_str().unwrap().to_string();
