@@ -237,8 +237,18 @@
     $('angle').value = state.angle;
     update(started);
   };
-  const pageToWorld = (p) => {
-    const [a, b, c, d, e, f] = metadata.page_from_world;
+  // The panel (the mechanism, or its enlarged detail) under a page
+  // point: its own page-from-world map; the detail, drawn last, first.
+  const panelAt = (p) => {
+    const panels = (metadata.panels || []).filter((q) => {
+      const [x, y, w, h] = q.rect;
+      return p.x >= x && p.x <= x + w && p.y >= y && p.y <= y + h;
+    });
+    return panels.length ? panels[panels.length - 1] : { id: null, page_from_world: metadata.page_from_world };
+  };
+  const panelNamed = (id) => (metadata.panels || []).find((q) => q.id === id) || { page_from_world: metadata.page_from_world };
+  const pageToWorld = (p, map) => {
+    const [a, b, c, d, e, f] = map;
     const det = a * d - b * c;
     const x = p.x - e, y = p.y - f;
     return { x: (d * x - c * y) / det, y: (a * y - b * x) / det };
@@ -249,32 +259,38 @@
     if (!ctm) return null;
     return new DOMPoint(ev.clientX, ev.clientY).matrixTransform(ctm.inverse());
   };
-  const nearB = (ev) => {
-    if (!metadata || !metadata.points || !metadata.points.B || !metadata.page_from_world) return false;
+  // The panel whose B the pointer is on, if any.
+  const grabbedPanel = (ev) => {
+    if (!metadata || !metadata.points || !metadata.points.B || !metadata.page_from_world) return null;
+    const p = pagePoint(ev);
+    if (!p) return null;
+    const panel = panelAt(p);
     const svg = stage.querySelector('svg');
-    const [a, b, c, d, e, f] = metadata.page_from_world;
+    const [a, b, c, d, e, f] = panel.page_from_world;
     const [x, y] = metadata.points.B;
     const at = new DOMPoint(a * x + c * y + e, b * x + d * y + f).matrixTransform(svg.getScreenCTM());
     const reach = ev.pointerType === 'touch' ? 44 : 24;
-    return Math.hypot(at.x - ev.clientX, at.y - ev.clientY) <= reach;
+    return Math.hypot(at.x - ev.clientX, at.y - ev.clientY) <= reach ? panel : null;
   };
-  let dragging = false;
+  let dragging = null;
   stage.addEventListener('pointerdown', (ev) => {
-    if (!figures.get(state.name).angle || !nearB(ev)) return;
-    dragging = true;
+    if (!figures.get(state.name).angle) return;
+    const panel = grabbedPanel(ev);
+    if (!panel) return;
+    dragging = panel.id || 'page';
     stage.classList.add('dragging');
     stage.setPointerCapture(ev.pointerId);
     ev.preventDefault();
   });
   stage.addEventListener('pointermove', (ev) => {
-    if (!dragging || !metadata) return;
+    if (dragging === null || !metadata) return;
     const p = pagePoint(ev);
     if (!p) return;
-    const w = pageToWorld(p);
+    const w = pageToWorld(p, panelNamed(dragging).page_from_world);
     setAngle((Math.atan2(w.y, w.x) * 180) / Math.PI, performance.now());
   });
   const stop = () => {
-    dragging = false;
+    dragging = null;
     stage.classList.remove('dragging');
   };
   stage.addEventListener('pointerup', stop);

@@ -371,11 +371,16 @@ mod in_the_browser {
     /// Where the crank pin would be at `degrees` on the figure shown, in
     /// CSS px of the window (the figure's own page-from-world map).
     fn pin_at(b: &mut Browser, degrees: f64) -> (f64, f64) {
+        pin_in(b, degrees, "panel-mechanism")
+    }
+
+    /// [`pin_at`] in the panel `id` (`panel-detail`: the enlarged detail).
+    fn pin_in(b: &mut Browser, degrees: f64, id: &str) -> (f64, f64) {
         let at = b.eval(&format!(
             "(() => {{
                const m = window.explorer.metadata();
                const r = m.mechanism.crank, t = {degrees} * Math.PI / 180;
-               const [a, b, c, d, e, f] = m.page_from_world;
+               const [a, b, c, d, e, f] = m.panels.find(p => p.id === '{id}').page_from_world;
                const x = r * Math.cos(t), y = r * Math.sin(t);
                const p = new DOMPoint(a * x + c * y + e, b * x + d * y + f)
                  .matrixTransform(document.querySelector('#stage svg').getScreenCTM());
@@ -485,6 +490,25 @@ mod in_the_browser {
             b.eval("document.getElementById('angle').value"),
             format!("{angle}").as_str()
         );
+
+        // B dragged in the enlarged detail, where the crank is drawn larger.
+        b.eval("document.getElementById('stage').scrollIntoView()");
+        let start = pin_in(&mut b, angle, "panel-detail");
+        b.mouse("mousePressed", start, true);
+        for k in 1..=3 {
+            let to = pin_in(&mut b, angle + 10.0 * k as f64, "panel-detail");
+            b.mouse("mouseMoved", to, true);
+            b.wait(READY);
+        }
+        let end = pin_in(&mut b, angle + 30.0, "panel-detail");
+        b.mouse("mouseReleased", end, false);
+        b.wait(READY);
+        let detail = check_against_analyze(&mut b)["angle_deg"].as_f64().unwrap();
+        assert!(
+            (detail - (angle + 30.0)).abs() <= 0.1,
+            "dragged in the detail to {detail}°"
+        );
+        let angle = detail;
 
         // The arrow keys: 1° a press, 0.1° with Shift.
         b.eval("document.getElementById('stage').focus()");
