@@ -22,7 +22,7 @@ pub struct ExploreArgs {
     #[arg(
         value_name = "NAME",
         default_value = "fig-66-kisch",
-        help = super::figure::names_help(&slider_crank::catalogue::Group::ALL, "The figure the page opens on [default: fig-66-kisch]")
+        help = super::figure::names_help(&slider_crank::catalogue::Group::ALL, "The figure the page opens on")
     )]
     pub name: FigureName,
     /// The port on 127.0.0.1 and ::1 (never another address); 0 takes a

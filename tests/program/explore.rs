@@ -581,6 +581,18 @@ mod in_the_browser {
         let to = (from + 80.0) % 360.0;
         assert!((last - to).abs() <= 0.2, "{last}° after a drag to {to}°");
 
+        // Large type for a projector: the page's type, and the address.
+        b.eval("document.getElementById('large').click()");
+        b.wait(READY);
+        assert_eq!(b.eval("document.body.classList.contains('large')"), true);
+        assert_eq!(b.eval("getComputedStyle(document.body).fontSize"), "24px");
+        assert!(
+            b.eval("location.search")
+                .as_str()
+                .unwrap()
+                .contains("large=1")
+        );
+
         // The address holds the state: opened afresh, it draws the same.
         let address = b.eval("location.href").as_str().unwrap().to_string();
         let before = b.eval("document.querySelector('#stage svg').outerHTML");
