@@ -107,6 +107,9 @@
 //! - `html` (default): the HTML pages and the faces they carry (maud,
 //!   subsetter, base64): [`gallery`], [`handout`], an animation's page
 //!   and an SVG with its faces embedded.
+//! - `explore` (default; needs `cli` and `html`): the explorer's server,
+//!   request reading and page ([`explore`]), served by `slider-crank
+//!   explore` (httparse).
 //! - `fonts` (default; `png`, `pdf` and `html` need it): the bundled
 //!   faces' files ([`Font::data`]); without it text is measured from the
 //!   glyph table alone.
@@ -138,6 +141,8 @@ mod csv;
 pub mod diagram;
 pub mod dynamics;
 mod error;
+#[cfg(feature = "explore")]
+pub mod explore;
 pub mod figure;
 #[cfg(feature = "html")]
 pub mod gallery;

@@ -98,6 +98,16 @@ enum Command {
     /// constructions move. Progress goes to standard error when drawing
     /// takes more than a moment; the file is written whole or not at all.
     Animate(cli::animate::AnimateArgs),
+    /// Serve the explorer on the loopback address: a page where a figure
+    /// follows the crank pin as it is dragged, with the engine, layers and
+    /// look as controls and the exact and graphical values beside it
+    ///
+    /// Listens on 127.0.0.1 and ::1 only, prints the address to open and
+    /// serves until Ctrl-C. Each figure request is read as the flags of
+    /// `figure` and checked as they are; nothing is read from or written
+    /// to the file system (downloads are saved by the browser).
+    #[cfg(feature = "explore")]
+    Explore(cli::explore::ExploreArgs),
 }
 
 /// Exit code of a refused run (bad input, unwritable output).
@@ -129,6 +139,8 @@ fn main() -> ExitCode {
         Command::Gallery(args) => cli::gallery::run(args, &mut out),
         Command::Handout(args) => cli::handout::run(args, &mut out).map(|()| true),
         Command::Animate(args) => cli::animate::run(args, &mut out).map(|()| true),
+        #[cfg(feature = "explore")]
+        Command::Explore(args) => cli::explore::run(args, &mut out).map(|()| true),
     }
     .and_then(|ok| out.finish().map(|()| ok));
     match result {
@@ -192,7 +204,7 @@ fn parse_error(e: clap::Error) -> ExitCode {
     }
     if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
         cli::output::say(
-            "slider-crank: a subcommand is required: gallery, handout, analyze, table, check, figure, scene or animate (see --help)",
+            "slider-crank: a subcommand is required: gallery, handout, analyze, table, check, figure, scene, animate or explore (see --help)",
         );
         return ExitCode::from(REFUSED);
     }

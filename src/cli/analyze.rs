@@ -269,6 +269,28 @@ fn reports<'a>(
         .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction, engine))
 }
 
+/// The object `analyze --json` prints for the mechanism `m` at `degrees`
+/// turning at `omega` (no torque, no engine masses): the values the
+/// explorer sets beside its figure.
+#[cfg(feature = "explore")]
+pub fn json_at(
+    m: &SliderCrank,
+    degrees: f64,
+    omega: f64,
+    units: &Units,
+) -> Result<serde_json::Value> {
+    let json = ReportJson {
+        mechanism: m,
+        report: analyse(m, degrees, omega, None, 0.0, None)?,
+        units,
+    };
+    serde_json::to_value(&json).map_err(|e| Error::Io {
+        message: e.to_string(),
+        path: None,
+        source: Some(std::sync::Arc::new(e.into())),
+    })
+}
+
 fn pretty(value: &impl serde::Serialize) -> Result<String> {
     serde_json::to_string_pretty(value).map_err(|e| Error::Io {
         message: e.to_string(),

@@ -120,9 +120,9 @@ fn write_all(files: &[(PathBuf, String)], progress: Option<&mut Progress>) -> Re
     })
 }
 
-/// Runs the subcommand: the files written; nothing on standard output.
-pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
-    let stem = stem(&args.out)?;
+/// The handout the flags ask for (of one engine; the exercise and the
+/// class are drawn from it).
+pub fn template(args: &HandoutArgs) -> Result<Handout> {
     let units = args.units.units(Units::FOOT_POUND);
     let mut template = Handout::new(
         args.mechanism.mechanism()?,
@@ -137,6 +137,13 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
     if let Some(m) = args.mass {
         template = template.with_dynamics(m, args.fluctuation)?;
     }
+    Ok(template)
+}
+
+/// Runs the subcommand: the files written; nothing on standard output.
+pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
+    let stem = stem(&args.out)?;
+    let template = template(args)?;
     let path = |suffix: &str| PathBuf::from(format!("{stem}{suffix}.html"));
     if let Some(count) = args.class {
         let class = Class::draw(count, args.seed, &template)?;

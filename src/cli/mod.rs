@@ -6,6 +6,8 @@ pub mod args;
 pub mod chain;
 pub mod check;
 pub mod dynamics;
+#[cfg(feature = "explore")]
+pub mod explore;
 pub mod figure;
 pub mod gallery;
 pub mod handout;

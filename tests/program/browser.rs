@@ -46,7 +46,7 @@ const WINDOW: u32 = 900;
 const TALLEST: f64 = 16000.0;
 
 /// The browser; a test that asked for it fails when it is missing.
-fn browser() -> PathBuf {
+pub(crate) fn browser() -> PathBuf {
     let named = std::env::var_os("CHROMIUM").map(PathBuf::from);
     let found = named
         .into_iter()

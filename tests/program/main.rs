@@ -34,6 +34,11 @@ mod browser;
 mod cli;
 #[cfg(feature = "png")]
 mod cli_figures;
+// the explorer's server (and, ignored, its page in Chromium)
+#[cfg(all(feature = "explore", feature = "png"))]
+mod devtools;
+#[cfg(feature = "explore")]
+mod explore;
 #[cfg(feature = "png")]
 mod fonts;
 #[cfg(feature = "png")]
