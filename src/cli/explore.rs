@@ -202,13 +202,15 @@ fn values(asked: &FigureRequest, options: &FigureOptions) -> Result<Option<serde
     super::analyze::json_at(&m, degrees, omega, &units).map(Some)
 }
 
-/// The figure as a file to save: SVG (its faces embedded), PNG or PDF.
+/// The figure as a file to save: SVG (its faces embedded), PNG, PDF or
+/// TikZ (the picture alone, for a LaTeX book).
 fn download_reply(request: &Request, initial: FigureName) -> std::result::Result<Reply, Refusal> {
     let (format, kind, ext) = match request.get("format") {
         Some("svg") => (FileFormat::Svg, "image/svg+xml", "svg"),
         Some("png") => (FileFormat::Png, "image/png", "png"),
         Some("pdf") => (FileFormat::Pdf, "application/pdf", "pdf"),
-        _ => return Err(Refusal::new(400, "format is svg, png or pdf")),
+        Some("tikz") => (FileFormat::Tikz, "application/x-tex", "tex"),
+        _ => return Err(Refusal::new(400, "format is svg, png, pdf or tikz")),
     };
     let asked = figure_request(request, initial)?;
     let options = options(&asked.flags, asked.name).map_err(refused)?;
@@ -216,7 +218,7 @@ fn download_reply(request: &Request, initial: FigureName) -> std::result::Result
     let bytes = if format == FileFormat::Svg {
         to_svg_with_fonts(&figure).into_bytes()
     } else {
-        format.encode(&to_svg(&figure)).map_err(refused)?
+        format.encode(&figure, &to_svg(&figure)).map_err(refused)?
     };
     let file = format!("{}.{ext}", asked.name.name());
     Ok(Reply::download(kind, bytes, &file))

@@ -158,7 +158,7 @@
   };
   const links = () => {
     const q = figureQuery().toString();
-    for (const format of ['svg', 'png', 'pdf']) $('download-' + format).href = '/download?format=' + format + '&' + q;
+    for (const format of ['svg', 'png', 'pdf', 'tikz']) $('download-' + format).href = '/download?format=' + format + '&' + q;
     const f = figures.get(state.name);
     const h = new URLSearchParams();
     if (f.mechanism) for (const k of ['crank', 'rod', 'offset']) h.set(k, state[k]);

@@ -133,6 +133,7 @@ fn body(initial: FigureName, data: &str) -> Markup {
                     a #download-svg download href="#" { "SVG" }
                     a #download-png download href="#" { "PNG" }
                     a #download-pdf download href="#" { "PDF" }
+                    a #download-tikz download href="#" { "TikZ" }
                     a #download-handout download href="#" { "Handout for this engine" }
                 }
                 form #controls {

@@ -170,6 +170,14 @@ fn downloads_are_the_figure_in_each_format_and_the_handout() {
     assert!(pdf.starts_with(b"%PDF-"));
     let svg = server.text(&format!("/download?format=svg&{q}"));
     assert!(svg.contains("@font-face"), "the SVG carries its faces");
+    // The TikZ of the figure shown (drawn in the view held over the
+    // turn, as the SVG is): a picture with a node for each of its texts.
+    let tikz = server.text(&format!("/download?format=tikz&{q}"));
+    assert!(tikz.starts_with("% fig-66-kisch") && tikz.contains("\\begin{tikzpicture}"));
+    assert_eq!(
+        tikz.matches("\\node[").count(),
+        svg.matches("<text ").count()
+    );
     let handout = server.text("/handout?angle=40&rod=2.5&rpm=300");
     let expected = {
         let dir = tempfile::tempdir().unwrap();
