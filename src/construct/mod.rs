@@ -8,6 +8,7 @@
 //! [`Reading`] holds everything read at one pose (what `analyze` prints).
 
 mod acceleration;
+mod acceleration_polygon;
 mod centrode;
 mod check;
 mod coupler;
@@ -17,9 +18,11 @@ mod klein;
 mod reading;
 mod torque;
 mod velocity_line;
+mod velocity_polygon;
 mod virtual_centres;
 
 pub use acceleration::AccelerationPoints;
+pub use acceleration_polygon::AccelerationPolygon;
 pub use centrode::{Centrode, CentrodeKind};
 pub use check::{CheckRow, Quantity, SweepReport, condition, cross_check, sweep};
 pub use coupler::CouplerPoint;
@@ -31,4 +34,5 @@ pub(crate) use reading::check_load;
 pub use reading::{Graphical, Reading, Statics};
 pub use torque::TorqueLine;
 pub use velocity_line::VelocityLine;
+pub use velocity_polygon::VelocityPolygon;
 pub use virtual_centres::{Link, VirtualCentres, kennedy_residual};

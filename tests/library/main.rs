@@ -22,6 +22,7 @@ mod fuzz_twins;
 mod ignored;
 mod layering;
 mod panic_free;
+mod polygons;
 mod reading_json;
 mod references;
 mod scene_format;
