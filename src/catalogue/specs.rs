@@ -250,6 +250,18 @@ figures! {
         kind: Mechanism(&[Layer::Mechanism, Layer::Velocity, Layer::Motion]),
         takes: SCENE,
     },
+    /// The relative-velocity method: the velocity and acceleration
+    /// polygons of the §35 engine, with the images of the rod's mid-point.
+    VelocityAccelerationPolygons => FigureSpec {
+        name: "velocity-acceleration-polygons",
+        source: Outside("Not in the seeds: the relative-velocity method of the course in the kinematics of machines (the velocity and acceleration polygons), drawn for the engine of §35 and checked against §36–37 (docs/polygons.md)"),
+        caption: "The relative-velocity method at 45°: the velocity polygon cba (ab perpendicular to AB) and the acceleration polygon c′b′xa′ (ω²r, the rod’s normal component ab²/AB and its tangential component), with q and q′ the images of the rod’s mid-point Q, to the scales stated.",
+        mechanism: ENGINE,
+        at: Crank(45.0),
+        page: (760.0, 720.0),
+        kind: Mechanism(&[Layer::Mechanism, Layer::Polygons]),
+        takes: SCENE,
+    },
     /// Textbook Fig. 61: the rod's fixed centrode (full) and moving
     /// centrode (dotted), with the construction of D for one pose.
     Fig61Centrodes => FigureSpec {
@@ -568,7 +580,7 @@ mod tests {
             .chain(FigureName::DIAGRAMS)
             .collect();
         assert_eq!(order, FigureName::ALL);
-        assert_eq!(FigureName::SCENES.len(), 7);
+        assert_eq!(FigureName::SCENES.len(), 8);
         assert_eq!(FigureName::DIAGRAMS.len(), 21);
     }
 

@@ -29,16 +29,16 @@ pub enum Quantity {
     /// Rod angular velocity from ab / AB of the velocity polygon, scaled
     /// by ω.
     RodAngularVelocityPolygon,
-    /// The speed of the rod's mid-point from oc, its velocity image,
+    /// The speed of the rod's mid-point from oq, its velocity image,
     /// scaled by rω.
     CouplerVelocityPolygon,
     /// Slider acceleration from o′a′ of the acceleration polygon, scaled
     /// by rω².
     AccelerationPolygon,
-    /// Rod angular acceleration from the tangential component na′ / AB of
+    /// Rod angular acceleration from the tangential component xa′ / AB of
     /// the acceleration polygon, scaled by ω².
     RodAngularAccelerationPolygon,
-    /// The acceleration's magnitude of the rod's mid-point from o′c′, its
+    /// The acceleration's magnitude of the rod's mid-point from o′q′, its
     /// acceleration image, scaled by rω².
     CouplerAccelerationPolygon,
 }
@@ -74,10 +74,10 @@ impl Quantity {
             Quantity::RodAngularAccelerationKlein => "rod angular acceleration (FG, Klein)",
             Quantity::VelocityPolygon => "velocity (oa, polygon)",
             Quantity::RodAngularVelocityPolygon => "rod angular velocity (ab, polygon)",
-            Quantity::CouplerVelocityPolygon => "mid-rod speed (oc, polygon)",
+            Quantity::CouplerVelocityPolygon => "mid-rod speed (oq, polygon)",
             Quantity::AccelerationPolygon => "acceleration (o′a′, polygon)",
-            Quantity::RodAngularAccelerationPolygon => "rod angular acceleration (na′, polygon)",
-            Quantity::CouplerAccelerationPolygon => "mid-rod acceleration (o′c′, polygon)",
+            Quantity::RodAngularAccelerationPolygon => "rod angular acceleration (xa′, polygon)",
+            Quantity::CouplerAccelerationPolygon => "mid-rod acceleration (o′q′, polygon)",
         }
     }
 }
@@ -239,7 +239,7 @@ fn polygon_rows(pose: &Pose, row: &impl Fn(Quantity, f64, f64, f64) -> CheckRow)
         ),
         row(
             Quantity::CouplerVelocityPolygon,
-            norm(v.c()),
+            norm(v.q()),
             exact(CouplerPoint::derivative),
             r,
         ),
@@ -257,7 +257,7 @@ fn polygon_rows(pose: &Pose, row: &impl Fn(Quantity, f64, f64, f64) -> CheckRow)
         ),
         row(
             Quantity::CouplerAccelerationPolygon,
-            norm(acc.c()),
+            norm(acc.q()),
             exact(CouplerPoint::second_derivative),
             r,
         ),

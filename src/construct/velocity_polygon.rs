@@ -1,5 +1,5 @@
 //! The velocity polygon of the relative-velocity method: o, b, a and the
-//! image c of a point of the rod.
+//! image q of a point of the rod.
 
 use super::CouplerPoint;
 use crate::geom::{Vector, cross, perp};
@@ -9,8 +9,8 @@ use crate::mechanism::Pose;
 /// a pole o: ob the crank pin's velocity, perpendicular to CB and turned
 /// from it in the crank's sense; from b a line perpendicular to AB (the
 /// velocity of A relative to B, v_AB ⟂ AB), from o a line parallel to the
-/// stroke (A's velocity is along the guides); they meet at a. The image c
-/// of a point C of the rod divides ab as C divides AB (the velocity image).
+/// stroke (A's velocity is along the guides); they meet at a. The image q
+/// of a point Q of the rod divides ab as Q divides AB (the velocity image).
 ///
 /// The vectors are velocities per unit crank speed, lengths per radian
 /// (ob = CB, so the polygon is drawn to the scale in which CB represents
@@ -23,7 +23,7 @@ use crate::mechanism::Pose;
 pub struct VelocityPolygon {
     b: Vector,
     a: Vector,
-    c: Option<Vector>,
+    q: Option<Vector>,
     /// B − A on the mechanism.
     rod: Vector,
 }
@@ -42,8 +42,8 @@ impl VelocityPolygon {
         let across = perp(&rod);
         let t = -b.y / across.y;
         let a = Vector::new(b.x + t * across.x, 0.0);
-        let c = coupler.map(|p| a + (b - a) * p.t());
-        Self { b, a, c, rod }
+        let q = coupler.map(|p| a + (b - a) * p.t());
+        Self { b, a, q, rod }
     }
 
     /// ob, the crank pin's velocity per ω (perpendicular to CB, |ob| = r).
@@ -56,9 +56,9 @@ impl VelocityPolygon {
         self.a
     }
 
-    /// oc, the velocity per ω of the coupler point, when one was given.
-    pub fn c(&self) -> Option<Vector> {
-        self.c
+    /// oq, the velocity per ω of the coupler point, when one was given.
+    pub fn q(&self) -> Option<Vector> {
+        self.q
     }
 
     /// ab, the velocity per ω of B relative to A (v_BA), perpendicular to

@@ -1,6 +1,9 @@
 //! Lazy constructions of one pose, with a count of what was computed.
 
-use crate::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine, VirtualCentres};
+use crate::construct::{
+    AccelerationPolygon, CouplerPoint, InstantCentre, Kisch, Klein, TorqueLine, VelocityLine,
+    VelocityPolygon, VirtualCentres,
+};
 use crate::mechanism::Pose;
 use std::cell::{Cell, OnceCell};
 
@@ -26,6 +29,15 @@ pub struct Evaluations {
     pub centrodes: usize,
     /// Coupler curves fitted.
     pub coupler_curves: usize,
+    /// The velocity and acceleration polygons (counted once for the
+    /// pair; written only where drawn).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub polygons: usize,
+}
+
+/// Whether a count is zero (left out of the metadata).
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 impl Evaluations {
@@ -39,6 +51,7 @@ impl Evaluations {
             + self.virtual_centres
             + self.centrodes
             + self.coupler_curves
+            + self.polygons
     }
 
     pub(crate) fn add(&mut self, other: &Evaluations) {
@@ -50,6 +63,7 @@ impl Evaluations {
         self.virtual_centres += other.virtual_centres;
         self.centrodes += other.centrodes;
         self.coupler_curves += other.coupler_curves;
+        self.polygons += other.polygons;
     }
 }
 
@@ -62,6 +76,7 @@ pub(crate) struct Constructions {
     kisch: OnceCell<Kisch>,
     torque: OnceCell<TorqueLine>,
     centres: OnceCell<VirtualCentres>,
+    polygons: OnceCell<(VelocityPolygon, AccelerationPolygon)>,
     counts: Cell<Evaluations>,
 }
 
@@ -75,6 +90,7 @@ impl Constructions {
             kisch: OnceCell::new(),
             torque: OnceCell::new(),
             centres: OnceCell::new(),
+            polygons: OnceCell::new(),
             counts: Cell::new(Evaluations::default()),
         }
     }
@@ -134,6 +150,20 @@ impl Constructions {
             let (d, e) = (self.d(), self.e());
             self.count(|c| c.virtual_centres += 1);
             VirtualCentres::construct(&self.pose, d, e)
+        })
+    }
+
+    /// The velocity and acceleration polygons with the images of
+    /// `coupler` (the scene's one coupler point, so kept once).
+    pub(crate) fn polygons(
+        &self,
+        coupler: CouplerPoint,
+    ) -> &(VelocityPolygon, AccelerationPolygon) {
+        self.polygons.get_or_init(|| {
+            self.count(|c| c.polygons += 1);
+            let v = VelocityPolygon::construct(&self.pose, Some(coupler));
+            let a = AccelerationPolygon::construct(&self.pose, &v, Some(coupler));
+            (v, a)
         })
     }
 

@@ -43,6 +43,13 @@ pub enum Layer {
     /// turning arrows, the velocities v_c of the crank pin and v_p of the
     /// slider. Computes no construction.
     Motion,
+    /// The velocity and acceleration polygons of the relative-velocity
+    /// method, drawn below the mechanism to the scales their notes state:
+    /// the lower-case images of the points and the images of the coupler
+    /// point Q (the scene's coupler point), the rod's normal and
+    /// tangential components, and Q marked on the rod. Needs the polygons
+    /// (no D, no E).
+    Polygons,
     /// Scale notes ("*CB* represents V_c = ..."); needs what the drawn
     /// velocity and acceleration layers need.
     Scales,
@@ -52,7 +59,7 @@ crate::error::parse_by_name!(Layer);
 
 impl Layer {
     /// Every layer, in drawing order.
-    pub const ALL: [Layer; 13] = [
+    pub const ALL: [Layer; 14] = [
         Layer::Mechanism,
         Layer::Angles,
         Layer::Dimensions,
@@ -65,6 +72,7 @@ impl Layer {
         Layer::Kisch,
         Layer::Torque,
         Layer::Motion,
+        Layer::Polygons,
         Layer::Scales,
     ];
 
@@ -83,6 +91,7 @@ impl Layer {
             Layer::Kisch => "kisch",
             Layer::Torque => "torque",
             Layer::Motion => "motion",
+            Layer::Polygons => "polygons",
             Layer::Scales => "scales",
         }
     }

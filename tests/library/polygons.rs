@@ -120,7 +120,7 @@ fn at_the_dead_centres_the_slider_rests_and_the_rod_has_no_tangential_component(
         assert_eq!(a.rod_angular_acceleration_ratio(), 0.0, "{deg}");
         // ab = ob: the whole of the pin's velocity is relative to A.
         assert!((v.ab() - v.b()).norm() <= 1e-16, "{deg}");
-        // o′a′ = o′b′ + b′n: −r − r²/l at 0°, r − r²/l at 180°.
+        // o′a′ = o′b′ + b′x: −r − r²/l at 0°, r − r²/l at 180°.
         let want = if deg == 0.0 {
             -0.5 - 0.25 / 3.0
         } else {
@@ -138,7 +138,7 @@ fn at_90_degrees_the_rod_translates_and_the_normal_component_vanishes() {
             let (v, a) = polygons(&m, deg, 0.3);
             assert_eq!(v.ab(), Vector::zeros(), "{deg}");
             assert_eq!(v.rod_angular_velocity_ratio(), 0.0);
-            assert_eq!(a.n(), a.b(), "{deg}");
+            assert_eq!(a.x(), a.b(), "{deg}");
             // o′a′ = r²/√(l² − r²) at both: the tangential component alone.
             let want = r * r / (l * l - r * r).sqrt();
             assert!(
@@ -151,7 +151,7 @@ fn at_90_degrees_the_rod_translates_and_the_normal_component_vanishes() {
 
 #[test]
 fn the_polygons_are_drawn_as_the_method_says() {
-    // ab ⟂ AB, b′n ∥ AB with |b′n| = ab²/AB, na′ ⟂ AB, c and c′ the images
+    // ab ⟂ AB, b′x ∥ AB with |b′x| = ab²/AB, xa′ ⟂ AB, c and c′ the images
     // dividing ab and a′b′ as C divides AB.
     let m = SliderCrank::new(1.0, 3.5, 0.7).unwrap();
     for deg in angles() {
@@ -162,7 +162,7 @@ fn the_polygons_are_drawn_as_the_method_says() {
         assert!(v.ab().dot(&rod).abs() <= 1e-14 * l, "{deg}");
         assert!((v.b().norm() - 1.0).abs() <= 1e-15);
         assert!((a.b().norm() - 1.0).abs() <= 1e-15);
-        let normal = a.n() - a.b();
+        let normal = a.x() - a.b();
         assert!(cross(&normal, &rod).abs() <= 1e-14 * l, "{deg}");
         assert!(normal.dot(&rod) >= 0.0, "from A towards B");
         assert!(
@@ -170,9 +170,9 @@ fn the_polygons_are_drawn_as_the_method_says() {
             "{deg}"
         );
         assert!(a.tangential().dot(&rod).abs() <= 1e-14 * l, "{deg}");
-        let c = v.c().unwrap();
+        let c = v.q().unwrap();
         assert!((c - (v.a() + 0.3 * v.ab())).norm() <= 1e-15, "{deg}");
-        let c2 = a.c().unwrap();
+        let c2 = a.q().unwrap();
         assert!(
             (c2 - (a.a() + 0.3 * (a.b() - a.a()))).norm() <= 1e-14,
             "{deg}"

@@ -8,6 +8,7 @@ mod dimensions;
 mod fit;
 mod mechanism;
 mod motion;
+pub(crate) mod polygons;
 mod scales;
 mod torque;
 mod velocity;
@@ -267,6 +268,9 @@ fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     };
     if scene.has(Layer::Torque) {
         notes.extend(torque::notes(ctx));
+    }
+    if scene.has(Layer::Polygons) {
+        notes.extend(polygons::notes(ctx));
     }
     if scene.mechanism().offset() != 0.0 {
         notes.push(RichText::parse(&offset_note(scene)));
@@ -597,6 +601,9 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
             Layer::Klein => acceleration::klein(ctx, canvas),
             Layer::Kisch => acceleration::kisch(ctx, canvas),
             Layer::Torque => torque::draw(ctx, canvas),
+            // At their own scale: not in an enlarged detail.
+            Layer::Polygons if main => polygons::draw(ctx, canvas),
+            Layer::Polygons => {}
             Layer::Scales => {}
         }
     }
