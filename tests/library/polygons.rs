@@ -229,3 +229,74 @@ fn check_passes_the_polygons_within_four_ulps_times_kappa() {
         }
     }
 }
+
+#[test]
+fn the_acceleration_polygon_is_klein_s_figure_turned_about_c() {
+    // At the scale CB = ω²r the polygon o′b′xa′ is CBFG turned through
+    // 180° about C: b′ = −B, x = −F, a′ = −G (docs/polygons.md).
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 4.0, 1.5),
+        (1.0, 60.0, -20.0),
+    ] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for deg in angles() {
+            let pose = m.pose(Angle::deg(deg));
+            let (_, a) = polygons(&m, deg, 0.5);
+            let e_line = slider_crank::construct::VelocityLine::construct(&pose);
+            let kisch = slider_crank::construct::Kisch::construct(&pose, &e_line);
+            let (f, g) = (kisch.points().f(), kisch.points().g());
+            let tol = 1e-12 * r * (l / (l - r - e.abs())).powi(3);
+            assert!((a.b() + pose.b().coords).norm() <= tol, "{l} {deg}");
+            assert!(
+                (a.x() + f.coords).norm() <= tol,
+                "{l} {deg}: x {:?} F {f:?}",
+                a.x()
+            );
+            assert!((a.a() + g.coords).norm() <= tol, "{l} {deg}");
+        }
+    }
+}
+
+#[test]
+fn analyze_json_carries_the_polygons_readings() {
+    use slider_crank::construct::Reading;
+    let m = SliderCrank::new(1.0, 4.0, 0.5).unwrap();
+    let w = 10.0;
+    for deg in [0.0, 45.0, 90.0, 200.0] {
+        let reading = Reading::new(&m.pose(Angle::deg(deg)), w, None, 0.0).unwrap();
+        let json = reading.to_json(&m, &slider_crank::Units::default());
+        let p = &json["polygons"];
+        let exact = &json["analytic"];
+        let close = |a: &serde_json::Value, b: &serde_json::Value, scale: f64| {
+            (a.as_f64().unwrap() - b.as_f64().unwrap()).abs() <= 1e-12 * scale
+        };
+        assert!(close(&p["slider_velocity"], &exact["velocity"], w), "{deg}");
+        assert!(
+            close(&p["slider_acceleration"], &exact["acceleration"], w * w),
+            "{deg}"
+        );
+        assert!(
+            close(
+                &p["rod_angular_velocity"],
+                &exact["rod_angular_velocity"],
+                w
+            ),
+            "{deg}"
+        );
+        assert!(
+            close(
+                &p["rod_angular_acceleration"],
+                &exact["rod_angular_acceleration"],
+                w * w
+            ),
+            "{deg}"
+        );
+        assert_eq!(p["coupler"].as_f64(), Some(0.5));
+        // ob is the crank pin's velocity rω, o′b′ its acceleration ω²r.
+        let b = &p["velocity"]["b"];
+        let speed = b[0].as_f64().unwrap().hypot(b[1].as_f64().unwrap());
+        assert!((speed - w).abs() <= 1e-12 * w, "{deg}");
+    }
+}

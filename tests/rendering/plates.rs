@@ -563,7 +563,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
-const FIGURES: [&str; 11] = [
+const FIGURES: [&str; 12] = [
     "fig-62-displacement",
     "fig-63-velocity",
     "fig-65-klein",
@@ -571,6 +571,7 @@ const FIGURES: [&str; 11] = [
     "fig-67-example",
     "ng-fig-1-torque",
     "ng-fig-a1-velocity",
+    "velocity-acceleration-polygons",
     "fig-61-centrodes",
     "fig-64-velocity-diagrams",
     "coupler-curves",

@@ -107,12 +107,18 @@ pub(crate) fn place(ctx: &LayerCtx) -> Placed {
         .collect();
     let (v_lo, v_hi) = bounds(&v);
     let (a_lo, a_hi) = bounds(&a);
-    let gap = GAP * k * r;
-    let width = (v_hi.x - v_lo.x) + gap + (a_hi.x - a_lo.x);
+    let (v_width, a_width) = (v_hi.x - v_lo.x, a_hi.x - a_lo.x);
+    // Far enough apart for the captions centred below them, once the
+    // page scale is known.
+    let apart = ctx
+        .sizes
+        .page_scale
+        .map_or(0.0, |s| CAPTIONS_APART / s - 0.5 * (v_width + a_width));
+    let gap = (GAP * k * r).max(apart);
+    let width = v_width + gap + a_width;
     let (_, right) = ctx.sizes.guides();
     let left = 0.5 * (-r + right) - 0.5 * width;
     let top = (-r).min(e - ctx.sizes.block_half_height) - gap;
-    let (v_width, a_width) = (v_hi.x - v_lo.x, a_hi.x - a_lo.x);
     // Mirrored, world x runs right to left on the page.
     let (v_left, a_left) = if scene.is_mirrored() {
         (left + a_width + gap, left)
@@ -169,14 +175,14 @@ impl Placed {
     }
 }
 
-/// The lower-case letter of the image of `n`, primed for the acceleration
-/// polygon.
+/// The lower-case letter of the image of `n` as markup (`*b*`), primed
+/// for the acceleration polygon (`*b*′`).
 fn image(ctx: &LayerCtx, n: Named, prime: bool) -> String {
     let letter = ctx.letter(n).to_lowercase();
     if prime {
-        format!("{letter}′")
+        format!("*{letter}*′")
     } else {
-        letter
+        format!("*{letter}*")
     }
 }
 
@@ -184,6 +190,13 @@ fn image(ctx: &LayerCtx, n: Named, prime: bool) -> String {
 fn id(ctx: &LayerCtx, n: Named, prime: bool) -> String {
     let letter = ctx.letter(n).to_lowercase();
     if prime { format!("{letter}2") } else { letter }
+}
+
+/// The acceleration image of `n` at `at`, lettered `b′` with the id
+/// and metadata name `b2` (a prime is no character of an XML id).
+fn primed(ctx: &LayerCtx, canvas: &mut Canvas, n: Named, at: Point, pole: Point) {
+    let letter = RichText::parse(&image(ctx, n, true));
+    canvas.point_lettered(&id(ctx, n, true), letter, at, Marker::Dot, pole);
 }
 
 /// A vector of a polygon as an arrow (`{kind}-{p}{q}`), where it is long
@@ -212,22 +225,34 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     v_points.extend(v.q);
     let mut a_points = vec![a.o, a.a, a.b, a.x];
     a_points.extend(a.q);
-    caption(
-        canvas,
-        "caption-velocity-polygon",
-        "velocity polygon",
-        &v_points,
-    );
-    caption(
-        canvas,
-        "caption-acceleration-polygon",
-        "acceleration polygon",
-        &a_points,
-    );
+    // Named below each where their names fit side by side (a page held
+    // to a small height may draw them closer: the notes name the poles).
+    let middle = |p: &[Point]| {
+        let xs = p.iter().map(|p| p.x);
+        0.5 * (xs.clone().fold(f64::INFINITY, f64::min) + xs.fold(f64::NEG_INFINITY, f64::max))
+    };
+    if canvas.page((middle(&v_points) - middle(&a_points)).abs()) >= CAPTIONS_APART {
+        caption(
+            canvas,
+            "caption-velocity-polygon",
+            "velocity polygon",
+            &v_points,
+        );
+        caption(
+            canvas,
+            "caption-acceleration-polygon",
+            "acceleration polygon",
+            &a_points,
+        );
+    }
 }
 
 /// Room between a polygon and its caption below it, page units.
 const CAPTION_DROP: f64 = 34.0;
+
+/// The least distance between the middles of the two polygons, page
+/// units: their captions' half widths and room between.
+const CAPTIONS_APART: f64 = 150.0;
 
 /// What the fit keeps below a polygon for its caption, page units.
 pub(crate) const CAPTION_ROOM: f64 = CAPTION_DROP + 12.0;
@@ -282,10 +307,10 @@ fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
     }
     let letters = [(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
     for (n, at) in letters {
-        canvas.point(&image(ctx, n, false), at, Marker::Dot, p.o);
+        canvas.point(&id(ctx, n, false), at, Marker::Dot, p.o);
     }
     if let Some(q) = p.q {
-        canvas.point(&image(ctx, Coupler, false), q, Marker::Dot, p.o);
+        canvas.point(&id(ctx, Coupler, false), q, Marker::Dot, p.o);
     }
 }
 
@@ -349,11 +374,11 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
     }
     let letters = [(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
     for (n, at) in letters {
-        canvas.point(&image(ctx, n, true), at, Marker::Dot, p.o);
+        primed(ctx, canvas, n, at, p.o);
     }
     canvas.point("x", p.x, Marker::Dot, p.o);
     if let Some(q) = p.q {
-        canvas.point(&image(ctx, Coupler, true), q, Marker::Dot, p.o);
+        primed(ctx, canvas, Coupler, q, p.o);
     }
 }
 
@@ -367,18 +392,19 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let u = scene.units().length();
     let r = scene.mechanism().crank();
     let rod = scene.mechanism().rod();
-    let small = |n: Named, prime: bool| image(ctx, n, prime);
+    let plain = |n: Named| ctx.letter(n).to_lowercase();
     let (o, b, a, q) = (
-        small(CrankCentre, false),
-        small(CrankPin, false),
-        small(Slider, false),
-        small(Coupler, false),
+        plain(CrankCentre),
+        plain(CrankPin),
+        plain(Slider),
+        plain(Coupler),
     );
+    let primed = |n: Named| image(ctx, n, true);
     let (o2, b2, a2, q2) = (
-        small(CrankCentre, true),
-        small(CrankPin, true),
-        small(Slider, true),
-        small(Coupler, true),
+        primed(CrankCentre),
+        primed(CrankPin),
+        primed(Slider),
+        primed(Coupler),
     );
     let (cap_a, cap_b) = (ctx.letter(Slider), ctx.letter(CrankPin));
     let v = &placed.velocity;
@@ -407,13 +433,13 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             sig(w * vq)
         )),
         RichText::parse(&format!(
-            "Acceleration polygon, pole *{o2}*: 1 {u} represents {} {u}/s²; *{o2}{b2}* = {} {u} is ω²*r* = {} {u}/s² towards the crank centre.",
+            "Acceleration polygon, pole {o2}: 1 {u} represents {} {u}/s²; {o2}{b2} = {} {u} is ω²*r* = {} {u}/s² towards the crank centre.",
             sig(w * w / k),
             short(k * r),
             sig(w * w * r)
         )),
         RichText::parse(&format!(
-            "*{b2}x* = *{a}{b}*²/*{cap_a}{cap_b}* = {} {u}: the rod’s normal component, {} {u}/s²; *x{a2}* = {} {u}: its tangential component, {} {u}/s², so the rod’s angular acceleration is *x{a2}*/*{cap_a}{cap_b}* = {} rad/s².",
+            "{b2}*x* = {} {u}: the rod’s normal component, (the velocity *{a}{b}*)²/*{cap_a}{cap_b}* = {} {u}/s²; *x{a}*′ = {} {u}: its tangential component, {} {u}/s², so the rod’s angular acceleration is *x{a}*′/*{cap_a}{cap_b}* = {} rad/s².",
             len(normal),
             sig(w * w * normal),
             len(tangential),
@@ -421,7 +447,7 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             sig(w * w * acc.rod_angular_acceleration_ratio().abs())
         )),
         RichText::parse(&format!(
-            "*{o2}{a2}* = {} {u}: the piston’s acceleration {} {u}/s²; *{o2}{q2}* = {} {u}: *{}*’s, {} {u}/s².",
+            "{o2}{a2} = {} {u}: the piston’s acceleration {} {u}/s²; {o2}{q2} = {} {u}: *{}*’s, {} {u}/s².",
             len(acc.slider_acceleration_ratio()),
             sig(w * w * acc.slider_acceleration_ratio().abs()),
             len(aq),
