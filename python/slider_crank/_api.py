@@ -271,6 +271,13 @@ class Analysis:
     constructions) and H (Kisch's; ``None`` only at the very limit of
     assembly) to their positions. ``virtual_centres`` maps ``O_ab`` …
     ``O_cd`` (links a frame, b crank, c rod, d slider) to a :data:`Centre`.
+    ``polygons`` is the velocity and acceleration polygons of the
+    relative-velocity method (docs/polygons.md): the vectors from the pole
+    (``velocity``: ``a``, ``b``, ``q``; ``acceleration``: ``a``, ``b``,
+    ``q``, ``x``; q the image of the rod's middle) and the values read off
+    them (``slider_velocity``, ``rod_angular_velocity``,
+    ``slider_acceleration``, ``rod_angular_acceleration``,
+    ``normal_component``, ``tangential_component``), in the user's units.
     ``statics`` is ``None`` unless a torque was given; ``dynamics`` is
     ``None`` unless a mass or gas force was given (see :class:`Dynamics`).
     ``assumed_rpm`` is the crank speed in rpm that was assumed because none
@@ -290,6 +297,7 @@ class Analysis:
     analytic: Values
     graphical: GraphicalValues
     virtual_centres: Dict[str, Centre]
+    polygons: Dict[str, Any]
     statics: Optional[Statics]
     dynamics: Optional[Dynamics]
     assumed_rpm: Optional[float] = field(compare=False)
@@ -319,6 +327,7 @@ class Analysis:
             analytic=Values(**v["analytic"]),
             graphical=GraphicalValues(**v["graphical"]),
             virtual_centres={k: _centre(c) for k, c in v["virtual_centres"].items()},
+            polygons=json.loads(json.dumps(v["polygons"])),
             statics=None if s is None else Statics(**s),
             dynamics=None if d is None else Dynamics._from_json(d),
             assumed_rpm=assumed_rpm,
@@ -1085,7 +1094,7 @@ def figure(
     ``rpm`` or ``omega``: the crank speed; ``layers``: a list or a
     comma-separated string (mechanism, angles, dimensions, centrodes,
     coupler, polar, virtual-centres, velocity, klein, kisch, torque,
-    motion, scales); ``style``: ``textbook`` or ``handout``; ``font``:
+    motion, polygons, scales); ``style``: ``textbook`` or ``handout``; ``font``:
     ``new-computer-modern`` or ``libertinus-serif``; ``data``: a CSV file
     of measured data; ``fit``: ``origin``, ``intercept`` or ``both``;
     ``unit``, ``force_unit``: unit names; ``notation``: ``textbook`` or

@@ -254,7 +254,7 @@ figures! {
     /// polygons of the §35 engine, with the images of the rod's mid-point.
     VelocityAccelerationPolygons => FigureSpec {
         name: "velocity-acceleration-polygons",
-        source: Outside("Not in the seeds: the relative-velocity method of the course in the kinematics of machines (the velocity and acceleration polygons), drawn for the engine of §35 and checked against §36–37 (docs/polygons.md)"),
+        source: Book("§36–37: the piston’s velocity CE and Klein’s acceleration CG (Figs. 63, 65 and 67) found again by the relative-velocity method, the velocity and acceleration polygons of the course in the kinematics of machines (docs/polygons.md); not drawn in the chapter"),
         caption: "The relative-velocity method at 45°: the velocity polygon cba (ab perpendicular to AB) and the acceleration polygon c′b′xa′ (ω²r, the rod’s normal component ab²/AB and its tangential component), with q and q′ the images of the rod’s mid-point Q, to the scales stated.",
         mechanism: ENGINE,
         at: Crank(45.0),
