@@ -2,7 +2,8 @@
 //! core's, in the scaled units of docs/design.md §6.
 
 use super::{
-    AccelerationPolygon, CouplerPoint, InstantCentre, Kisch, Klein, VelocityLine, VelocityPolygon,
+    AccelerationPolygon, Bennett, CouplerPoint, InstantCentre, Kisch, Klein, Ritterhaus,
+    VelocityLine, VelocityPolygon,
 };
 use crate::angle::Angle;
 use crate::mechanism::{Pose, SliderCrank};
@@ -41,6 +42,12 @@ pub enum Quantity {
     /// The acceleration's magnitude of the rod's mid-point from o′q′, its
     /// acceleration image, scaled by rω².
     CouplerAccelerationPolygon,
+    /// Slider acceleration from CG by Ritterhaus's construction, scaled
+    /// by rω².
+    AccelerationRitterhaus,
+    /// Slider acceleration from CG by Bennett's construction (in-line
+    /// engines only), scaled by rω².
+    AccelerationBennett,
 }
 
 /// The point of the rod whose images the cross-check reads: its middle.
@@ -48,7 +55,7 @@ const CHECKED_COUPLER: f64 = 0.5;
 
 impl Quantity {
     /// Every quantity, in report order.
-    pub const ALL: [Quantity; 12] = [
+    pub const ALL: [Quantity; 14] = [
         Quantity::Velocity,
         Quantity::RodAngularVelocity,
         Quantity::AccelerationKisch,
@@ -61,6 +68,8 @@ impl Quantity {
         Quantity::AccelerationPolygon,
         Quantity::RodAngularAccelerationPolygon,
         Quantity::CouplerAccelerationPolygon,
+        Quantity::AccelerationRitterhaus,
+        Quantity::AccelerationBennett,
     ];
 
     /// A short name for reports.
@@ -78,6 +87,8 @@ impl Quantity {
             Quantity::AccelerationPolygon => "acceleration (o′a′, polygon)",
             Quantity::RodAngularAccelerationPolygon => "rod angular acceleration (xa′, polygon)",
             Quantity::CouplerAccelerationPolygon => "mid-rod acceleration (o′q′, polygon)",
+            Quantity::AccelerationRitterhaus => "acceleration (CG, Ritterhaus)",
+            Quantity::AccelerationBennett => "acceleration (CG, Bennett)",
         }
     }
 }
@@ -141,7 +152,9 @@ pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
         Quantity::RodAngularVelocity | Quantity::RodAngularVelocityPolygon => (rc_w, 2.0),
         Quantity::AccelerationKisch
         | Quantity::AccelerationKlein
-        | Quantity::AccelerationPolygon => (c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0),
+        | Quantity::AccelerationPolygon
+        | Quantity::AccelerationRitterhaus
+        | Quantity::AccelerationBennett => (c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0),
         Quantity::CouplerAccelerationPolygon => {
             (1.0 + c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0)
         }
@@ -154,7 +167,7 @@ pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
 }
 
 /// Every construction of `pose` against the analytic core. Klein's rows are
-/// missing where D is at infinity. The polygons' coupler rows read the
+/// missing where D is at infinity, Bennett's for an offset engine. The polygons' coupler rows read the
 /// images of the rod's mid-point.
 pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
     let r = pose.mechanism().crank();
@@ -195,6 +208,21 @@ pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
         ),
     ];
     rows.extend(polygon_rows(pose, &row));
+    let ritterhaus = Ritterhaus::construct(pose, &e);
+    rows.push(row(
+        Quantity::AccelerationRitterhaus,
+        ritterhaus.points().acceleration_ratio(),
+        pose.position_acceleration(),
+        r,
+    ));
+    if let Some(bennett) = Bennett::construct(pose) {
+        rows.push(row(
+            Quantity::AccelerationBennett,
+            bennett.points().acceleration_ratio(),
+            pose.position_acceleration(),
+            r,
+        ));
+    }
     if let Some(klein) = Klein::construct(pose, &d, &e) {
         rows.push(row(
             Quantity::AccelerationKlein,

@@ -25,6 +25,7 @@ mod panic_free;
 mod polygons;
 mod reading_json;
 mod references;
+mod ritterhaus_bennett;
 mod scene_format;
 mod scenes;
 mod seeds;
