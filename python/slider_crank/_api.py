@@ -1093,8 +1093,8 @@ def figure(
     angle drawn (degrees; the plane's tilt for ``ng-fig-2-incline``);
     ``rpm`` or ``omega``: the crank speed; ``layers``: a list or a
     comma-separated string (mechanism, angles, dimensions, centrodes,
-    coupler, polar, virtual-centres, velocity, klein, kisch, torque,
-    motion, polygons, scales); ``style``: ``textbook`` or ``handout``; ``font``:
+    coupler, polar, virtual-centres, velocity, klein, kisch, ritterhaus,
+    bennett, torque, motion, polygons, scales); ``style``: ``textbook`` or ``handout``; ``font``:
     ``new-computer-modern`` or ``libertinus-serif``; ``data``: a CSV file
     of measured data; ``fit``: ``origin``, ``intercept`` or ``both``;
     ``unit``, ``force_unit``: unit names; ``notation``: ``textbook`` or

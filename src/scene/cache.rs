@@ -1,8 +1,8 @@
 //! Lazy constructions of one pose, with a count of what was computed.
 
 use crate::construct::{
-    AccelerationPolygon, CouplerPoint, InstantCentre, Kisch, Klein, TorqueLine, VelocityLine,
-    VelocityPolygon, VirtualCentres,
+    AccelerationPolygon, Bennett, CouplerPoint, InstantCentre, Kisch, Klein, Ritterhaus, TorqueLine,
+    VelocityLine, VelocityPolygon, VirtualCentres,
 };
 use crate::mechanism::Pose;
 use std::cell::{Cell, OnceCell};
@@ -33,6 +33,13 @@ pub struct Evaluations {
     /// pair; written only where drawn).
     #[serde(skip_serializing_if = "is_zero")]
     pub polygons: usize,
+    /// Ritterhaus's K, F and G (written only where drawn).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub ritterhaus: usize,
+    /// Bennett's L, K, F and G (attempted: also counted for an offset
+    /// engine, which has none; written only where drawn).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub bennett: usize,
 }
 
 /// Whether a count is zero (left out of the metadata).
@@ -52,6 +59,8 @@ impl Evaluations {
             + self.centrodes
             + self.coupler_curves
             + self.polygons
+            + self.ritterhaus
+            + self.bennett
     }
 
     pub(crate) fn add(&mut self, other: &Evaluations) {
@@ -64,6 +73,8 @@ impl Evaluations {
         self.centrodes += other.centrodes;
         self.coupler_curves += other.coupler_curves;
         self.polygons += other.polygons;
+        self.ritterhaus += other.ritterhaus;
+        self.bennett += other.bennett;
     }
 }
 
@@ -77,6 +88,8 @@ pub(crate) struct Constructions {
     torque: OnceCell<TorqueLine>,
     centres: OnceCell<VirtualCentres>,
     polygons: OnceCell<(VelocityPolygon, AccelerationPolygon)>,
+    ritterhaus: OnceCell<Ritterhaus>,
+    bennett: OnceCell<Option<Bennett>>,
     counts: Cell<Evaluations>,
 }
 
@@ -91,6 +104,8 @@ impl Constructions {
             torque: OnceCell::new(),
             centres: OnceCell::new(),
             polygons: OnceCell::new(),
+            ritterhaus: OnceCell::new(),
+            bennett: OnceCell::new(),
             counts: Cell::new(Evaluations::default()),
         }
     }
@@ -165,6 +180,23 @@ impl Constructions {
             let a = AccelerationPolygon::construct(&self.pose, &v, Some(coupler));
             (v, a)
         })
+    }
+
+    pub(crate) fn ritterhaus(&self) -> &Ritterhaus {
+        self.ritterhaus.get_or_init(|| {
+            let e = self.e();
+            self.count(|c| c.ritterhaus += 1);
+            Ritterhaus::construct(&self.pose, e)
+        })
+    }
+
+    pub(crate) fn bennett(&self) -> Option<&Bennett> {
+        self.bennett
+            .get_or_init(|| {
+                self.count(|c| c.bennett += 1);
+                Bennett::construct(&self.pose)
+            })
+            .as_ref()
     }
 
     pub(crate) fn note_centrode(&self) {

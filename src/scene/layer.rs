@@ -36,6 +36,15 @@ pub enum Layer {
     Klein,
     /// Kisch's acceleration construction (Fig. 66); needs E, never D.
     Kisch,
+    /// Ritterhaus's acceleration construction: EK parallel to AC meets CB
+    /// produced at K, KF perpendicular to the stroke, FG perpendicular to
+    /// AB; needs E, never D.
+    Ritterhaus,
+    /// Bennett's acceleration construction (the in-line engine's): L at
+    /// r²/l from B on the rod, LK perpendicular to AB to the stroke, KF
+    /// perpendicular to the stroke, FG perpendicular to AB; needs E for its
+    /// velocity part, never D. Draws only E with an offset.
+    Bennett,
     /// Ng's OM torque line with the slider force, the side thrust and the
     /// force F_c on the crank pin; needs E.
     Torque,
@@ -59,7 +68,7 @@ crate::error::parse_by_name!(Layer);
 
 impl Layer {
     /// Every layer, in drawing order.
-    pub const ALL: [Layer; 14] = [
+    pub const ALL: [Layer; 16] = [
         Layer::Mechanism,
         Layer::Angles,
         Layer::Dimensions,
@@ -70,6 +79,8 @@ impl Layer {
         Layer::Velocity,
         Layer::Klein,
         Layer::Kisch,
+        Layer::Ritterhaus,
+        Layer::Bennett,
         Layer::Torque,
         Layer::Motion,
         Layer::Polygons,
@@ -89,6 +100,8 @@ impl Layer {
             Layer::Velocity => "velocity",
             Layer::Klein => "klein",
             Layer::Kisch => "kisch",
+            Layer::Ritterhaus => "ritterhaus",
+            Layer::Bennett => "bennett",
             Layer::Torque => "torque",
             Layer::Motion => "motion",
             Layer::Polygons => "polygons",

@@ -563,7 +563,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
-const FIGURES: [&str; 12] = [
+const FIGURES: [&str; 14] = [
     "fig-62-displacement",
     "fig-63-velocity",
     "fig-65-klein",
@@ -572,6 +572,8 @@ const FIGURES: [&str; 12] = [
     "ng-fig-1-torque",
     "ng-fig-a1-velocity",
     "velocity-acceleration-polygons",
+    "ritterhaus-construction",
+    "bennett-construction",
     "fig-61-centrodes",
     "fig-64-velocity-diagrams",
     "coupler-curves",
@@ -579,7 +581,13 @@ const FIGURES: [&str; 12] = [
 ];
 
 /// Figures held to rule 5.
-const SPREAD_FIGURES: [&str; 3] = ["fig-65-klein", "fig-66-kisch", "fig-67-example"];
+const SPREAD_FIGURES: [&str; 5] = [
+    "fig-65-klein",
+    "fig-66-kisch",
+    "fig-67-example",
+    "ritterhaus-construction",
+    "bennett-construction",
+];
 
 /// Short and long rods, offsets of ±0.8 (l − r), tiny and huge r.
 fn mechanisms() -> Vec<(String, SliderCrank)> {

@@ -63,6 +63,19 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     if scene.has(Layer::Kisch) {
         add_kisch(&mut b, ctx);
     }
+    if scene.has(Layer::Ritterhaus) {
+        let r = ctx.main.ritterhaus();
+        for p in [r.k(), r.points().f(), r.points().g()] {
+            b.add(p);
+        }
+    }
+    if scene.has(Layer::Bennett)
+        && let Some(bn) = ctx.main.bennett()
+    {
+        for p in [bn.l(), bn.k(), bn.points().f(), bn.points().g()] {
+            b.add(p);
+        }
+    }
     add_arrows(&mut b, ctx);
     if scene.has(Layer::Polar) {
         add_polar(&mut b, ctx);
@@ -96,6 +109,8 @@ fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx) {
         Layer::Velocity,
         Layer::Klein,
         Layer::Kisch,
+        Layer::Ritterhaus,
+        Layer::Bennett,
         Layer::Torque,
         Layer::VirtualCentres,
     ]
