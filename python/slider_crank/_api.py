@@ -278,6 +278,11 @@ class Analysis:
     them (``slider_velocity``, ``rod_angular_velocity``,
     ``slider_acceleration``, ``rod_angular_acceleration``,
     ``normal_component``, ``tangential_component``), in the user's units.
+    ``ritterhaus`` and ``bennett`` are Ritterhaus's and Bennett's
+    constructions (docs/polygons.md): their points (K, F, G; L, K, F, G)
+    and the piston's ``acceleration`` read off them; ``bennett`` is
+    ``None`` for an offset engine (the construction is the in-line
+    engine's).
     ``statics`` is ``None`` unless a torque was given; ``dynamics`` is
     ``None`` unless a mass or gas force was given (see :class:`Dynamics`).
     ``assumed_rpm`` is the crank speed in rpm that was assumed because none
@@ -298,6 +303,8 @@ class Analysis:
     graphical: GraphicalValues
     virtual_centres: Dict[str, Centre]
     polygons: Dict[str, Any]
+    ritterhaus: Dict[str, Any]
+    bennett: Optional[Dict[str, Any]]
     statics: Optional[Statics]
     dynamics: Optional[Dynamics]
     assumed_rpm: Optional[float] = field(compare=False)
@@ -328,6 +335,8 @@ class Analysis:
             graphical=GraphicalValues(**v["graphical"]),
             virtual_centres={k: _centre(c) for k, c in v["virtual_centres"].items()},
             polygons=json.loads(json.dumps(v["polygons"])),
+            ritterhaus=json.loads(json.dumps(v["ritterhaus"])),
+            bennett=None if v["bennett"] is None else json.loads(json.dumps(v["bennett"])),
             statics=None if s is None else Statics(**s),
             dynamics=None if d is None else Dynamics._from_json(d),
             assumed_rpm=assumed_rpm,

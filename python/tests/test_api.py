@@ -80,3 +80,8 @@ def test_the_polygons_read_the_exact_values() -> None:
     )
     assert p["coupler"] == 0.5
     assert pose.to_dict()["polygons"] == p
+    for construction in (pose.ritterhaus, pose.bennett):
+        assert math.isclose(
+            construction["acceleration"], pose.analytic.acceleration, rel_tol=1e-12
+        )
+    assert sc.SliderCrank(1.0, 4.0, 0.5).at(30, rpm=250).bennett is None

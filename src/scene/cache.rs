@@ -1,8 +1,8 @@
 //! Lazy constructions of one pose, with a count of what was computed.
 
 use crate::construct::{
-    AccelerationPolygon, Bennett, CouplerPoint, InstantCentre, Kisch, Klein, Ritterhaus, TorqueLine,
-    VelocityLine, VelocityPolygon, VirtualCentres,
+    AccelerationPolygon, Bennett, CouplerPoint, InstantCentre, Kisch, Klein, Ritterhaus,
+    TorqueLine, VelocityLine, VelocityPolygon, VirtualCentres,
 };
 use crate::mechanism::Pose;
 use std::cell::{Cell, OnceCell};

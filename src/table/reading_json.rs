@@ -10,7 +10,10 @@
 
 use crate::analytic::statics::Friction;
 use crate::chain::ChainCentres;
-use crate::construct::{AccelerationPolygon, CouplerPoint, Reading, Statics, VelocityPolygon};
+use crate::construct::{
+    AccelerationPolygon, Bennett, CouplerPoint, Reading, Ritterhaus, Statics, VelocityLine,
+    VelocityPolygon,
+};
 use crate::geom::{Intersection, Point};
 use crate::mechanism::SliderCrank;
 use crate::units::Units;
@@ -248,6 +251,51 @@ impl Serialize for Polygons<'_> {
     }
 }
 
+/// `ritterhaus` and `bennett`: the points of each construction (K, F, G;
+/// L, K, F, G) and the piston's acceleration ω² · CG read off it.
+struct Classical<'a> {
+    reading: &'a Reading,
+    points: Vec<(&'static str, Point)>,
+    ratio: f64,
+}
+
+impl<'a> Classical<'a> {
+    /// Ritterhaus's construction of the reading's pose.
+    fn ritterhaus(reading: &'a Reading) -> Self {
+        let pose = &reading.pose;
+        let r = Ritterhaus::construct(pose, &VelocityLine::construct(pose));
+        let p = r.points();
+        Self {
+            reading,
+            points: vec![("F", p.f()), ("G", p.g()), ("K", r.k())],
+            ratio: p.acceleration_ratio(),
+        }
+    }
+
+    /// Bennett's, where the engine has one (in line).
+    fn bennett(reading: &'a Reading) -> Option<Self> {
+        let b = Bennett::construct(&reading.pose)?;
+        let p = b.points();
+        Some(Self {
+            reading,
+            points: vec![("F", p.f()), ("G", p.g()), ("K", b.k()), ("L", b.l())],
+            ratio: p.acceleration_ratio(),
+        })
+    }
+}
+
+impl Serialize for Classical<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let w = self.reading.omega;
+        let mut m = s.serialize_map(Some(self.points.len() + 1))?;
+        for (name, p) in &self.points {
+            m.serialize_entry(name, &At(*p))?;
+        }
+        m.serialize_entry("acceleration", &num(w * w * self.ratio))?;
+        m.end()
+    }
+}
+
 /// The object `analyze --json` prints for one reading, serialised
 /// straight to a writer (`serde_json::to_writer_pretty`) from the
 /// reading: made by [`Reading::json`], with the engine's `dynamics`
@@ -278,10 +326,11 @@ impl Serialize for ReadingJson<'_> {
     /// keeps them.
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let r = self.reading;
-        let fields = 9 + usize::from(self.dynamics.is_some()) + usize::from(r.statics.is_some());
+        let fields = 11 + usize::from(self.dynamics.is_some()) + usize::from(r.statics.is_some());
         let mut m = s.serialize_map(Some(fields))?;
         m.serialize_entry("analytic", &Analytic(r))?;
         m.serialize_entry("angle_deg", &num(r.pose.angle().degrees()))?;
+        m.serialize_entry("bennett", &Classical::bennett(r))?;
         if let Some(dynamics) = self.dynamics {
             m.serialize_entry("dynamics", dynamics)?;
         }
@@ -290,6 +339,7 @@ impl Serialize for ReadingJson<'_> {
         m.serialize_entry("omega", &num(r.omega))?;
         m.serialize_entry("points", &Points(r))?;
         m.serialize_entry("polygons", &Polygons(r))?;
+        m.serialize_entry("ritterhaus", &Classical::ritterhaus(r))?;
         if let Some(statics) = &r.statics {
             m.serialize_entry("statics", &StaticsJson(statics))?;
         }
@@ -306,8 +356,10 @@ impl Reading {
     /// angle and ω, the points C B A D E F G H (D a point at infinity at
     /// θ = 90°, 270° of an in-line engine; H `null` at the very limit of
     /// assembly), the analytic and graphical values, the velocity and
-    /// acceleration polygons with the images of the rod's middle, the six
-    /// virtual centres and, with a torque, the statics. Serialised where it is
+    /// acceleration polygons with the images of the rod's middle,
+    /// Ritterhaus's and Bennett's constructions (`bennett` `null` for an
+    /// offset engine), the six virtual centres and, with a torque, the
+    /// statics. Serialised where it is
     /// written, as [`ReadingJson`]; no `-0` is written.
     pub fn json<'a>(&'a self, mechanism: &'a SliderCrank, units: &'a Units) -> ReadingJson<'a> {
         ReadingJson {

@@ -9,7 +9,9 @@
 use serde_json::{Value, json};
 use slider_crank::analytic::statics::Friction;
 use slider_crank::chain::ChainCentres;
-use slider_crank::construct::{AccelerationPolygon, CouplerPoint, Reading, VelocityPolygon};
+use slider_crank::construct::{
+    AccelerationPolygon, Bennett, CouplerPoint, Reading, Ritterhaus, VelocityLine, VelocityPolygon,
+};
 use slider_crank::geom::{Intersection, Point, Vector};
 use slider_crank::{Angle, SliderCrank, Unit, Units};
 
@@ -65,6 +67,30 @@ mod old {
         })
     }
 
+    /// Ritterhaus's construction, added beside the polygons.
+    fn ritterhaus(r: &Reading) -> Value {
+        let c = Ritterhaus::construct(&r.pose, &VelocityLine::construct(&r.pose));
+        let p = c.points();
+        json!({
+            "K": point(c.k()), "F": point(p.f()), "G": point(p.g()),
+            "acceleration": num(r.omega * r.omega * p.acceleration_ratio()),
+        })
+    }
+
+    /// Bennett's, `null` for an offset engine.
+    fn bennett(r: &Reading) -> Value {
+        match Bennett::construct(&r.pose) {
+            Some(c) => {
+                let p = c.points();
+                json!({
+                    "L": point(c.l()), "K": point(c.k()), "F": point(p.f()), "G": point(p.g()),
+                    "acceleration": num(r.omega * r.omega * p.acceleration_ratio()),
+                })
+            }
+            None => Value::Null,
+        }
+    }
+
     pub fn to_json(r: &Reading, mechanism: &SliderCrank, units: &Units) -> Value {
         let k = &r.exact;
         let mut v = json!({
@@ -95,6 +121,8 @@ mod old {
             },
             "virtual_centres": centres(r),
             "polygons": polygons(r),
+            "ritterhaus": ritterhaus(r),
+            "bennett": bennett(r),
         });
         if let Some(s) = &r.statics {
             let (with_friction, locking) = match s.with_friction {

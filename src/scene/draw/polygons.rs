@@ -27,6 +27,10 @@ const SHARE: f64 = 0.25;
 /// polygons, in lengths ob = k r.
 const GAP: f64 = 0.5;
 
+/// Room kept for letters between the mechanism and the polygons, page
+/// units.
+const LETTER_ROOM: f64 = 24.0;
+
 /// Shortest vector drawn as an arrow, page units: shorter, its head would
 /// hide it (a zero vector, at a dead centre or 90°, is not drawn).
 const MIN_ARROW: f64 = 12.0;
@@ -108,17 +112,17 @@ pub(crate) fn place(ctx: &LayerCtx) -> Placed {
     let (v_lo, v_hi) = bounds(&v);
     let (a_lo, a_hi) = bounds(&a);
     let (v_width, a_width) = (v_hi.x - v_lo.x, a_hi.x - a_lo.x);
-    // Far enough apart for the captions centred below them, once the
-    // page scale is known.
-    let apart = ctx
-        .sizes
-        .page_scale
-        .map_or(0.0, |s| CAPTIONS_APART / s - 0.5 * (v_width + a_width));
-    let gap = (GAP * k * r).max(apart);
+    // In world lengths only: a gap that followed the page scale would
+    // move the frame the fit is made for between its passes.
+    let gap = GAP * k * r;
     let width = v_width + gap + a_width;
     let (_, right) = ctx.sizes.guides();
     let left = 0.5 * (-r + right) - 0.5 * width;
-    let top = (-r).min(e - ctx.sizes.block_half_height) - gap;
+    // Below the mechanism by the gap and, once the page scale is known,
+    // room for the letters between (a drawing made small by a page held
+    // to a low height would otherwise set them among the mechanism's).
+    let letters = ctx.sizes.page_scale.map_or(0.0, |s| LETTER_ROOM / s);
+    let top = (-r).min(e - ctx.sizes.block_half_height) - gap - letters;
     // Mirrored, world x runs right to left on the page.
     let (v_left, a_left) = if scene.is_mirrored() {
         (left + a_width + gap, left)

@@ -31,8 +31,8 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         Layer::Bennett,
         Layer::Torque,
     ]
-        .iter()
-        .any(|x| scene.has(*x));
+    .iter()
+    .any(|x| scene.has(*x));
     if uses_e {
         let ce = ctx.main.e().ce();
         let speed = w * ce.abs();
