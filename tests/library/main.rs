@@ -15,6 +15,7 @@ mod hostile;
 mod analytic;
 mod chain;
 mod constructions;
+mod coriolis;
 mod curves;
 mod dynamics;
 mod dynamics_figures;
