@@ -271,6 +271,18 @@ class Analysis:
     constructions) and H (Kisch's; ``None`` only at the very limit of
     assembly) to their positions. ``virtual_centres`` maps ``O_ab`` …
     ``O_cd`` (links a frame, b crank, c rod, d slider) to a :data:`Centre`.
+    ``polygons`` is the velocity and acceleration polygons of the
+    relative-velocity method (docs/polygons.md): the vectors from the pole
+    (``velocity``: ``a``, ``b``, ``q``; ``acceleration``: ``a``, ``b``,
+    ``q``, ``x``; q the image of the rod's middle) and the values read off
+    them (``slider_velocity``, ``rod_angular_velocity``,
+    ``slider_acceleration``, ``rod_angular_acceleration``,
+    ``normal_component``, ``tangential_component``), in the user's units.
+    ``ritterhaus`` and ``bennett`` are Ritterhaus's and Bennett's
+    constructions (docs/polygons.md): their points (K, F, G; L, K, F, G)
+    and the piston's ``acceleration`` read off them; ``bennett`` is
+    ``None`` for an offset engine (the construction is the in-line
+    engine's).
     ``statics`` is ``None`` unless a torque was given; ``dynamics`` is
     ``None`` unless a mass or gas force was given (see :class:`Dynamics`).
     ``assumed_rpm`` is the crank speed in rpm that was assumed because none
@@ -290,6 +302,9 @@ class Analysis:
     analytic: Values
     graphical: GraphicalValues
     virtual_centres: Dict[str, Centre]
+    polygons: Dict[str, Any]
+    ritterhaus: Dict[str, Any]
+    bennett: Optional[Dict[str, Any]]
     statics: Optional[Statics]
     dynamics: Optional[Dynamics]
     assumed_rpm: Optional[float] = field(compare=False)
@@ -319,6 +334,9 @@ class Analysis:
             analytic=Values(**v["analytic"]),
             graphical=GraphicalValues(**v["graphical"]),
             virtual_centres={k: _centre(c) for k, c in v["virtual_centres"].items()},
+            polygons=json.loads(json.dumps(v["polygons"])),
+            ritterhaus=json.loads(json.dumps(v["ritterhaus"])),
+            bennett=None if v["bennett"] is None else json.loads(json.dumps(v["bennett"])),
             statics=None if s is None else Statics(**s),
             dynamics=None if d is None else Dynamics._from_json(d),
             assumed_rpm=assumed_rpm,
@@ -1103,8 +1121,8 @@ def figure(
     angle drawn (degrees; the plane's tilt for ``ng-fig-2-incline``);
     ``rpm`` or ``omega``: the crank speed; ``layers``: a list or a
     comma-separated string (mechanism, angles, dimensions, centrodes,
-    coupler, polar, virtual-centres, velocity, klein, kisch, torque,
-    motion, scales); ``style``: ``textbook`` or ``handout``; ``font``:
+    coupler, polar, virtual-centres, velocity, klein, kisch, ritterhaus,
+    bennett, torque, motion, polygons, scales); ``style``: ``textbook`` or ``handout``; ``font``:
     ``new-computer-modern`` or ``libertinus-serif``; ``data``: a CSV file
     of measured data; ``fit``: ``origin``, ``intercept`` or ``both``;
     ``unit``, ``force_unit``: unit names; ``notation``: ``textbook`` or

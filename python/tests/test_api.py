@@ -68,3 +68,20 @@ def test_a_speed_given_is_not_said_to_be_assumed() -> None:
     assert ENGINE.at(30) == ENGINE.at(30, rpm=250)
     assert ENGINE.at(30).to_dict() == ENGINE.at(30, rpm=250).to_dict()
     assert "assumed_rpm" not in ENGINE.at(30).to_dict()
+
+
+def test_the_polygons_read_the_exact_values() -> None:
+    pose = ENGINE.at(45, rpm=250)
+    p = pose.polygons
+    assert math.isclose(p["slider_velocity"], pose.analytic.velocity, rel_tol=1e-12)
+    assert math.isclose(p["slider_acceleration"], pose.analytic.acceleration, rel_tol=1e-12)
+    assert math.isclose(
+        p["rod_angular_velocity"], pose.analytic.rod_angular_velocity, rel_tol=1e-12
+    )
+    assert p["coupler"] == 0.5
+    assert pose.to_dict()["polygons"] == p
+    for construction in (pose.ritterhaus, pose.bennett):
+        assert math.isclose(
+            construction["acceleration"], pose.analytic.acceleration, rel_tol=1e-12
+        )
+    assert sc.SliderCrank(1.0, 4.0, 0.5).at(30, rpm=250).bennett is None

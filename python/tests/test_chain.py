@@ -190,3 +190,12 @@ def test_bad_types_and_modes() -> None:
         sc.SliderCrank(0.5, 1.5).inversion(2.5)  # type: ignore[arg-type]
     with pytest.raises(TypeError):
         sc.QuadricChain(1, 3, 2.5, 3).check(samples=1.5)  # type: ignore[arg-type]
+
+
+def test_the_coriolis_polygons_read_the_link_motion() -> None:
+    for n in (2, 3):
+        got = sc.SliderCrank(0.5, 1.5).inversion(n).at(30, rpm=250)
+        c = got["coriolis"]
+        assert math.isclose(c["omega_d"], got["links"]["d"]["angular_velocity"], rel_tol=1e-12)
+        assert math.isclose(c["sliding_velocity"], got["sliding"]["velocity"], rel_tol=1e-12)
+    assert sc.SliderCrank(0.5, 1.5).inversion(4).at(30, rpm=250)["coriolis"] is None

@@ -250,6 +250,42 @@ figures! {
         kind: Mechanism(&[Layer::Mechanism, Layer::Velocity, Layer::Motion]),
         takes: SCENE,
     },
+    /// Ritterhaus's construction of the piston's acceleration, with its
+    /// velocity part and scales.
+    RitterhausConstruction => FigureSpec {
+        name: "ritterhaus-construction",
+        source: Book("§36, Figs. 65–67: the piston’s acceleration ω² · CG of Klein’s and Kisch’s constructions found by Ritterhaus’s, taught beside them (docs/polygons.md); not drawn in the chapter"),
+        caption: "Ritterhaus’s construction at 30°: E where the rod produced meets the perpendicular through C (CE the piston’s velocity), EK parallel to AC to the crank produced, KF perpendicular to the stroke, FG perpendicular to AB; CG the piston’s acceleration to the scale ω².",
+        mechanism: ENGINE,
+        at: Crank(30.0),
+        page: (760.0, 560.0),
+        kind: Mechanism(&[Layer::Mechanism, Layer::Ritterhaus, Layer::Scales]),
+        takes: SCENE,
+    },
+    /// Bennett's construction of the piston's acceleration (the in-line
+    /// engine's), with its velocity part and scales.
+    BennettConstruction => FigureSpec {
+        name: "bennett-construction",
+        source: Book("§36, Figs. 65–67: the piston’s acceleration ω² · CG of Klein’s and Kisch’s constructions found by Bennett’s, taught beside them (docs/polygons.md); not drawn in the chapter"),
+        caption: "Bennett’s construction at 30°: L at r²/l from B on the rod, LK perpendicular to AB to the line of stroke, KF perpendicular to the stroke, FG perpendicular to AB; CG the piston’s acceleration to the scale ω², CE its velocity.",
+        mechanism: ENGINE,
+        at: Crank(30.0),
+        page: (760.0, 560.0),
+        kind: Mechanism(&[Layer::Mechanism, Layer::Bennett, Layer::Scales]),
+        takes: SCENE,
+    },
+    /// The relative-velocity method: the velocity and acceleration
+    /// polygons of the §35 engine, with the images of the rod's mid-point.
+    VelocityAccelerationPolygons => FigureSpec {
+        name: "velocity-acceleration-polygons",
+        source: Book("§36–37: the piston’s velocity CE and Klein’s acceleration CG (Figs. 63, 65 and 67) found again by the relative-velocity method, the velocity and acceleration polygons of the course in the kinematics of machines (docs/polygons.md); not drawn in the chapter"),
+        caption: "The relative-velocity method at 45°: the velocity polygon cba (ab perpendicular to AB) and the acceleration polygon c′b′xa′ (ω²r, the rod’s normal component ab²/AB and its tangential component), with q and q′ the images of the rod’s mid-point Q, to the scales stated.",
+        mechanism: ENGINE,
+        at: Crank(45.0),
+        page: (760.0, 720.0),
+        kind: Mechanism(&[Layer::Mechanism, Layer::Polygons]),
+        takes: SCENE,
+    },
     /// Textbook Fig. 61: the rod's fixed centrode (full) and moving
     /// centrode (dotted), with the construction of D for one pose.
     Fig61Centrodes => FigureSpec {
@@ -568,7 +604,7 @@ mod tests {
             .chain(FigureName::DIAGRAMS)
             .collect();
         assert_eq!(order, FigureName::ALL);
-        assert_eq!(FigureName::SCENES.len(), 7);
+        assert_eq!(FigureName::SCENES.len(), 10);
         assert_eq!(FigureName::DIAGRAMS.len(), 21);
     }
 

@@ -12,17 +12,20 @@
 //! [`CylindricChain`] (the curved slot, computed from its curvature so that
 //! κ = 0 is today's [`crate::mechanism::SliderCrank`]), [`ChainCentres`] (the six
 //! virtual centres of any of them, Kennedy's theorem, and the velocity and
-//! acceleration constructions carried over to the curved slot), and
-//! [`InvertedChain`] (the four inversions).
+//! acceleration constructions carried over to the curved slot),
+//! [`InvertedChain`] (the four inversions) and [`CoriolisPolygon`] (the
+//! polygons of inversions 2 and 3 with the Coriolis component).
 
 mod centres;
 mod check;
+mod coriolis;
 mod cylindric;
 mod inversion;
 mod quadric;
 
 pub use centres::{CENTRE_NAMES, ChainCentres, SlotConstruction};
 pub use check::{ChainCheckRow, arc_position_by_iteration, quadric_sweep, slot_sweep};
+pub use coriolis::CoriolisPolygon;
 pub use cylindric::{ConvergenceRow, CylindricChain, CylindricPose, slot_convergence};
 pub use inversion::{Inversion, InversionPose, InvertedChain, LinkMotion};
 pub use quadric::{

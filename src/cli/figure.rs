@@ -83,7 +83,8 @@ pub struct FigureFlags {
     /// Layers of a mechanism figure, comma-separated: mechanism, angles,
     /// dimensions, centrodes, coupler, polar (Fig. 64's polar diagram as
     /// far as the crank has turned), virtual-centres, velocity, klein,
-    /// kisch, torque, motion, scales [default: the figure's]
+    /// kisch, ritterhaus, bennett, torque, motion, polygons (the velocity
+    /// and acceleration polygons), scales [default: the figure's]
     #[arg(long, value_name = "LIST")]
     pub layers: Option<String>,
     /// Drawing style: textbook (black ink) or handout (colour) [default:

@@ -1,7 +1,10 @@
 //! Cross-checks: each value read off a construction beside the analytic
 //! core's, in the scaled units of docs/design.md §6.
 
-use super::{InstantCentre, Kisch, Klein, VelocityLine};
+use super::{
+    AccelerationPolygon, Bennett, CouplerPoint, InstantCentre, Kisch, Klein, Ritterhaus,
+    VelocityLine, VelocityPolygon,
+};
 use crate::angle::Angle;
 use crate::mechanism::{Pose, SliderCrank};
 
@@ -22,17 +25,51 @@ pub enum Quantity {
     RodAngularAccelerationKisch,
     /// Rod angular acceleration from FG by Klein, scaled by ω².
     RodAngularAccelerationKlein,
+    /// Slider velocity from oa of the velocity polygon, scaled by rω.
+    VelocityPolygon,
+    /// Rod angular velocity from ab / AB of the velocity polygon, scaled
+    /// by ω.
+    RodAngularVelocityPolygon,
+    /// The speed of the rod's mid-point from oq, its velocity image,
+    /// scaled by rω.
+    CouplerVelocityPolygon,
+    /// Slider acceleration from o′a′ of the acceleration polygon, scaled
+    /// by rω².
+    AccelerationPolygon,
+    /// Rod angular acceleration from the tangential component xa′ / AB of
+    /// the acceleration polygon, scaled by ω².
+    RodAngularAccelerationPolygon,
+    /// The acceleration's magnitude of the rod's mid-point from o′q′, its
+    /// acceleration image, scaled by rω².
+    CouplerAccelerationPolygon,
+    /// Slider acceleration from CG by Ritterhaus's construction, scaled
+    /// by rω².
+    AccelerationRitterhaus,
+    /// Slider acceleration from CG by Bennett's construction (in-line
+    /// engines only), scaled by rω².
+    AccelerationBennett,
 }
+
+/// The point of the rod whose images the cross-check reads: its middle.
+const CHECKED_COUPLER: f64 = 0.5;
 
 impl Quantity {
     /// Every quantity, in report order.
-    pub const ALL: [Quantity; 6] = [
+    pub const ALL: [Quantity; 14] = [
         Quantity::Velocity,
         Quantity::RodAngularVelocity,
         Quantity::AccelerationKisch,
         Quantity::AccelerationKlein,
         Quantity::RodAngularAccelerationKisch,
         Quantity::RodAngularAccelerationKlein,
+        Quantity::VelocityPolygon,
+        Quantity::RodAngularVelocityPolygon,
+        Quantity::CouplerVelocityPolygon,
+        Quantity::AccelerationPolygon,
+        Quantity::RodAngularAccelerationPolygon,
+        Quantity::CouplerAccelerationPolygon,
+        Quantity::AccelerationRitterhaus,
+        Quantity::AccelerationBennett,
     ];
 
     /// A short name for reports.
@@ -44,6 +81,14 @@ impl Quantity {
             Quantity::AccelerationKlein => "acceleration (CG, Klein)",
             Quantity::RodAngularAccelerationKisch => "rod angular acceleration (FG, Kisch)",
             Quantity::RodAngularAccelerationKlein => "rod angular acceleration (FG, Klein)",
+            Quantity::VelocityPolygon => "velocity (oa, polygon)",
+            Quantity::RodAngularVelocityPolygon => "rod angular velocity (ab, polygon)",
+            Quantity::CouplerVelocityPolygon => "mid-rod speed (oq, polygon)",
+            Quantity::AccelerationPolygon => "acceleration (o′a′, polygon)",
+            Quantity::RodAngularAccelerationPolygon => "rod angular acceleration (xa′, polygon)",
+            Quantity::CouplerAccelerationPolygon => "mid-rod acceleration (o′q′, polygon)",
+            Quantity::AccelerationRitterhaus => "acceleration (CG, Ritterhaus)",
+            Quantity::AccelerationBennett => "acceleration (CG, Bennett)",
         }
     }
 }
@@ -101,21 +146,29 @@ pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
     let (rc_w, h) = (r * c / w, h.abs());
     // Terms over r (slider) or 1 (rod), as in Pose's formulas.
     let (terms, k) = match quantity {
-        Quantity::Velocity => (s + c * h / w, 2.0),
-        Quantity::RodAngularVelocity => (rc_w, 2.0),
-        Quantity::AccelerationKisch | Quantity::AccelerationKlein => {
-            (c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0)
+        Quantity::Velocity | Quantity::VelocityPolygon => (s + c * h / w, 2.0),
+        // The crank pin's velocity, r, is a term of the coupler's.
+        Quantity::CouplerVelocityPolygon => (1.0 + s + c * h / w, 2.0),
+        Quantity::RodAngularVelocity | Quantity::RodAngularVelocityPolygon => (rc_w, 2.0),
+        Quantity::AccelerationKisch
+        | Quantity::AccelerationKlein
+        | Quantity::AccelerationPolygon
+        | Quantity::AccelerationRitterhaus
+        | Quantity::AccelerationBennett => (c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0),
+        Quantity::CouplerAccelerationPolygon => {
+            (1.0 + c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0)
         }
-        Quantity::RodAngularAccelerationKisch | Quantity::RodAngularAccelerationKlein => {
-            (r * s / w + rc_w * rc_w * h / w, 6.0)
-        }
+        Quantity::RodAngularAccelerationKisch
+        | Quantity::RodAngularAccelerationKlein
+        | Quantity::RodAngularAccelerationPolygon => (r * s / w + rc_w * rc_w * h / w, 6.0),
     };
     let lw = l / w;
     1.0 + terms * (1.0 + k * lw * lw)
 }
 
 /// Every construction of `pose` against the analytic core. Klein's rows are
-/// missing where D is at infinity.
+/// missing where D is at infinity, Bennett's for an offset engine. The polygons' coupler rows read the
+/// images of the rod's mid-point.
 pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
     let r = pose.mechanism().crank();
     let d = InstantCentre::construct(pose);
@@ -154,6 +207,22 @@ pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
             1.0,
         ),
     ];
+    rows.extend(polygon_rows(pose, &row));
+    let ritterhaus = Ritterhaus::construct(pose, &e);
+    rows.push(row(
+        Quantity::AccelerationRitterhaus,
+        ritterhaus.points().acceleration_ratio(),
+        pose.position_acceleration(),
+        r,
+    ));
+    if let Some(bennett) = Bennett::construct(pose) {
+        rows.push(row(
+            Quantity::AccelerationBennett,
+            bennett.points().acceleration_ratio(),
+            pose.position_acceleration(),
+            r,
+        ));
+    }
     if let Some(klein) = Klein::construct(pose, &d, &e) {
         rows.push(row(
             Quantity::AccelerationKlein,
@@ -169,6 +238,58 @@ pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
         ));
     }
     rows
+}
+
+/// The rows of the velocity and acceleration polygons of `pose`, made by
+/// `row` (quantity, graphical, analytic, scale).
+fn polygon_rows(pose: &Pose, row: &impl Fn(Quantity, f64, f64, f64) -> CheckRow) -> [CheckRow; 6] {
+    let r = pose.mechanism().crank();
+    // cannot fail: CHECKED_COUPLER is within [0, 1].
+    let coupler = CouplerPoint::new(CHECKED_COUPLER).ok();
+    let v = VelocityPolygon::construct(pose, coupler);
+    let acc = AccelerationPolygon::construct(pose, &v, coupler);
+    let norm = |x: Option<crate::geom::Vector>| x.map_or(f64::NAN, |x| x.norm());
+    let exact = |f: fn(&CouplerPoint, &Pose) -> crate::geom::Vector| {
+        coupler.map_or(f64::NAN, |p| f(&p, pose).norm())
+    };
+    [
+        row(
+            Quantity::VelocityPolygon,
+            v.slider_velocity_ratio(),
+            pose.position_rate(),
+            r,
+        ),
+        row(
+            Quantity::RodAngularVelocityPolygon,
+            v.rod_angular_velocity_ratio(),
+            pose.obliquity_rate(),
+            1.0,
+        ),
+        row(
+            Quantity::CouplerVelocityPolygon,
+            norm(v.q()),
+            exact(CouplerPoint::derivative),
+            r,
+        ),
+        row(
+            Quantity::AccelerationPolygon,
+            acc.slider_acceleration_ratio(),
+            pose.position_acceleration(),
+            r,
+        ),
+        row(
+            Quantity::RodAngularAccelerationPolygon,
+            acc.rod_angular_acceleration_ratio(),
+            pose.obliquity_acceleration(),
+            1.0,
+        ),
+        row(
+            Quantity::CouplerAccelerationPolygon,
+            norm(acc.q()),
+            exact(CouplerPoint::second_derivative),
+            r,
+        ),
+    ]
 }
 
 /// The worst scaled error of each quantity over a sweep.

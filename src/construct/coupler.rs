@@ -45,4 +45,14 @@ impl CouplerPoint {
         let xa = pose.position_rate();
         Vector::new(xa + self.t * (-r * s - xa), self.t * r * c)
     }
+
+    /// Its exact second derivative with respect to θ at `pose` (its
+    /// acceleration per ω² at constant ω): A″ + t (B″ − A″), with
+    /// A″ = (d²s/dθ², 0) from the analytic core and B″ = −r (cos θ, sin θ).
+    pub fn second_derivative(&self, pose: &Pose) -> Vector {
+        let r = pose.mechanism().crank();
+        let (s, c) = (pose.angle().sin(), pose.angle().cos());
+        let xa = pose.position_acceleration();
+        Vector::new(xa + self.t * (-r * c - xa), self.t * -r * s)
+    }
 }

@@ -8,6 +8,8 @@
 //! [`Reading`] holds everything read at one pose (what `analyze` prints).
 
 mod acceleration;
+mod acceleration_polygon;
+mod bennett;
 mod centrode;
 mod check;
 mod coupler;
@@ -15,11 +17,15 @@ mod instant_centre;
 mod kisch;
 mod klein;
 mod reading;
+mod ritterhaus;
 mod torque;
 mod velocity_line;
+mod velocity_polygon;
 mod virtual_centres;
 
 pub use acceleration::AccelerationPoints;
+pub use acceleration_polygon::AccelerationPolygon;
+pub use bennett::Bennett;
 pub use centrode::{Centrode, CentrodeKind};
 pub use check::{CheckRow, Quantity, SweepReport, condition, cross_check, sweep};
 pub use coupler::CouplerPoint;
@@ -29,6 +35,8 @@ pub use klein::Klein;
 #[cfg(feature = "html")]
 pub(crate) use reading::check_load;
 pub use reading::{Graphical, Reading, Statics};
+pub use ritterhaus::Ritterhaus;
 pub use torque::TorqueLine;
 pub use velocity_line::VelocityLine;
+pub use velocity_polygon::VelocityPolygon;
 pub use virtual_centres::{Link, VirtualCentres, kennedy_residual};

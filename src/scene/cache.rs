@@ -1,6 +1,9 @@
 //! Lazy constructions of one pose, with a count of what was computed.
 
-use crate::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine, VirtualCentres};
+use crate::construct::{
+    AccelerationPolygon, Bennett, CouplerPoint, InstantCentre, Kisch, Klein, Ritterhaus,
+    TorqueLine, VelocityLine, VelocityPolygon, VirtualCentres,
+};
 use crate::mechanism::Pose;
 use std::cell::{Cell, OnceCell};
 
@@ -26,6 +29,22 @@ pub struct Evaluations {
     pub centrodes: usize,
     /// Coupler curves fitted.
     pub coupler_curves: usize,
+    /// The velocity and acceleration polygons (counted once for the
+    /// pair; written only where drawn).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub polygons: usize,
+    /// Ritterhaus's K, F and G (written only where drawn).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub ritterhaus: usize,
+    /// Bennett's L, K, F and G (attempted: also counted for an offset
+    /// engine, which has none; written only where drawn).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub bennett: usize,
+}
+
+/// Whether a count is zero (left out of the metadata).
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 impl Evaluations {
@@ -39,6 +58,9 @@ impl Evaluations {
             + self.virtual_centres
             + self.centrodes
             + self.coupler_curves
+            + self.polygons
+            + self.ritterhaus
+            + self.bennett
     }
 
     pub(crate) fn add(&mut self, other: &Evaluations) {
@@ -50,6 +72,9 @@ impl Evaluations {
         self.virtual_centres += other.virtual_centres;
         self.centrodes += other.centrodes;
         self.coupler_curves += other.coupler_curves;
+        self.polygons += other.polygons;
+        self.ritterhaus += other.ritterhaus;
+        self.bennett += other.bennett;
     }
 }
 
@@ -62,6 +87,9 @@ pub(crate) struct Constructions {
     kisch: OnceCell<Kisch>,
     torque: OnceCell<TorqueLine>,
     centres: OnceCell<VirtualCentres>,
+    polygons: OnceCell<(VelocityPolygon, AccelerationPolygon)>,
+    ritterhaus: OnceCell<Ritterhaus>,
+    bennett: OnceCell<Option<Bennett>>,
     counts: Cell<Evaluations>,
 }
 
@@ -75,6 +103,9 @@ impl Constructions {
             kisch: OnceCell::new(),
             torque: OnceCell::new(),
             centres: OnceCell::new(),
+            polygons: OnceCell::new(),
+            ritterhaus: OnceCell::new(),
+            bennett: OnceCell::new(),
             counts: Cell::new(Evaluations::default()),
         }
     }
@@ -135,6 +166,37 @@ impl Constructions {
             self.count(|c| c.virtual_centres += 1);
             VirtualCentres::construct(&self.pose, d, e)
         })
+    }
+
+    /// The velocity and acceleration polygons with the images of
+    /// `coupler` (the scene's one coupler point, so kept once).
+    pub(crate) fn polygons(
+        &self,
+        coupler: CouplerPoint,
+    ) -> &(VelocityPolygon, AccelerationPolygon) {
+        self.polygons.get_or_init(|| {
+            self.count(|c| c.polygons += 1);
+            let v = VelocityPolygon::construct(&self.pose, Some(coupler));
+            let a = AccelerationPolygon::construct(&self.pose, &v, Some(coupler));
+            (v, a)
+        })
+    }
+
+    pub(crate) fn ritterhaus(&self) -> &Ritterhaus {
+        self.ritterhaus.get_or_init(|| {
+            let e = self.e();
+            self.count(|c| c.ritterhaus += 1);
+            Ritterhaus::construct(&self.pose, e)
+        })
+    }
+
+    pub(crate) fn bennett(&self) -> Option<&Bennett> {
+        self.bennett
+            .get_or_init(|| {
+                self.count(|c| c.bennett += 1);
+                Bennett::construct(&self.pose)
+            })
+            .as_ref()
     }
 
     pub(crate) fn note_centrode(&self) {

@@ -268,13 +268,25 @@ impl Canvas {
     /// letter when on the page, an arrow at the frame edge pointing to it
     /// (from `from`, a point on the page) when off it.
     pub(crate) fn point(&mut self, name: &str, p: Point, marker: Marker, from: Point) {
+        self.point_lettered(name, RichText::italic(name), p, marker, from);
+    }
+
+    /// [`Canvas::point`] lettered `letter` where the letter is not the
+    /// name (a primed image, `a′`, whose id and metadata name is `a2`).
+    pub(crate) fn point_lettered(
+        &mut self,
+        name: &str,
+        letter: RichText,
+        p: Point,
+        marker: Marker,
+        from: Point,
+    ) {
         let key = format!("point-{name}");
         if self.has(&key) || self.has(&format!("offpage-{name}")) {
             return;
         }
         self.points
             .insert(name.to_string(), json!([round(p.x), round(p.y)]));
-        let letter = RichText::italic(name);
         let quiet = marker == Marker::Dot && self.quiet.is_some_and(|f| f.contains(p));
         if quiet {
         } else if self.contains(p) {

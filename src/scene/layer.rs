@@ -36,6 +36,15 @@ pub enum Layer {
     Klein,
     /// Kisch's acceleration construction (Fig. 66); needs E, never D.
     Kisch,
+    /// Ritterhaus's acceleration construction: EK parallel to AC meets CB
+    /// produced at K, KF perpendicular to the stroke, FG perpendicular to
+    /// AB; needs E, never D.
+    Ritterhaus,
+    /// Bennett's acceleration construction (the in-line engine's): L at
+    /// r²/l from B on the rod, LK perpendicular to AB to the stroke, KF
+    /// perpendicular to the stroke, FG perpendicular to AB; needs E for its
+    /// velocity part, never D. Draws only E with an offset.
+    Bennett,
     /// Ng's OM torque line with the slider force, the side thrust and the
     /// force F_c on the crank pin; needs E.
     Torque,
@@ -43,6 +52,13 @@ pub enum Layer {
     /// turning arrows, the velocities v_c of the crank pin and v_p of the
     /// slider. Computes no construction.
     Motion,
+    /// The velocity and acceleration polygons of the relative-velocity
+    /// method, drawn below the mechanism to the scales their notes state:
+    /// the lower-case images of the points and the images of the coupler
+    /// point Q (the scene's coupler point), the rod's normal and
+    /// tangential components, and Q marked on the rod. Needs the polygons
+    /// (no D, no E).
+    Polygons,
     /// Scale notes ("*CB* represents V_c = ..."); needs what the drawn
     /// velocity and acceleration layers need.
     Scales,
@@ -52,7 +68,7 @@ crate::error::parse_by_name!(Layer);
 
 impl Layer {
     /// Every layer, in drawing order.
-    pub const ALL: [Layer; 13] = [
+    pub const ALL: [Layer; 16] = [
         Layer::Mechanism,
         Layer::Angles,
         Layer::Dimensions,
@@ -63,8 +79,11 @@ impl Layer {
         Layer::Velocity,
         Layer::Klein,
         Layer::Kisch,
+        Layer::Ritterhaus,
+        Layer::Bennett,
         Layer::Torque,
         Layer::Motion,
+        Layer::Polygons,
         Layer::Scales,
     ];
 
@@ -81,8 +100,11 @@ impl Layer {
             Layer::Velocity => "velocity",
             Layer::Klein => "klein",
             Layer::Kisch => "kisch",
+            Layer::Ritterhaus => "ritterhaus",
+            Layer::Bennett => "bennett",
             Layer::Torque => "torque",
             Layer::Motion => "motion",
+            Layer::Polygons => "polygons",
             Layer::Scales => "scales",
         }
     }

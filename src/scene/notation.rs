@@ -29,6 +29,8 @@ pub(crate) enum Named {
     F,
     G,
     H,
+    K,
+    L,
     MidStroke,
     Coupler,
 }
@@ -74,6 +76,8 @@ impl Notation {
             (_, F) => "F",
             (_, G) => "G",
             (_, H) => "H",
+            (_, K) => "K",
+            (_, L) => "L",
             (_, Coupler) => "Q",
         }
     }

@@ -177,8 +177,34 @@ pub fn inversion_json(chain: &InvertedChain, degrees: f64, omega: f64) -> Result
             "acceleration": opt(motion.map(|x| x.sliding_acceleration)),
         },
         "time_ratio": opt(chain.time_ratio()),
+        "coriolis": coriolis_json(&p, omega),
         "virtual_centres": p.centres().to_json(),
     }))
+}
+
+/// The polygons with the Coriolis component of inversions 2 and 3
+/// (`CoriolisPolygon`): the slot's direction, the vectors from the pole
+/// and the values read off them; `null` for inversions 1 and 4, and where
+/// the chain does not move at this driver speed.
+fn coriolis_json(p: &crate::chain::InversionPose, omega: f64) -> Value {
+    p.motion(omega)
+        .and(crate::chain::CoriolisPolygon::construct(p, omega))
+        .map_or(Value::Null, |c| {
+            let v = |x: crate::geom::Vector| json!([num(x.x), num(x.y)]);
+            json!({
+                "slot": v(c.slot()),
+                "driven_velocity": v(c.driven()),
+                "a_d_velocity": v(c.a_d()),
+                "driven_acceleration": v(c.driven_acceleration()),
+                "normal_end": v(c.n()),
+                "coriolis": v(c.coriolis()),
+                "a_d_acceleration": v(c.a_d_acceleration()),
+                "omega_d": num(c.omega_d()),
+                "alpha_d": num(c.alpha_d()),
+                "sliding_velocity": num(c.sliding_velocity()),
+                "sliding_acceleration": num(c.sliding_acceleration()),
+            })
+        })
 }
 
 /// The first line of `check --slot-radius`'s report for the engine `m`

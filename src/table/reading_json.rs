@@ -10,7 +10,10 @@
 
 use crate::analytic::statics::Friction;
 use crate::chain::ChainCentres;
-use crate::construct::{Reading, Statics};
+use crate::construct::{
+    AccelerationPolygon, Bennett, CouplerPoint, Reading, Ritterhaus, Statics, VelocityLine,
+    VelocityPolygon,
+};
 use crate::geom::{Intersection, Point};
 use crate::mechanism::SliderCrank;
 use crate::units::Units;
@@ -196,6 +199,103 @@ impl Serialize for StaticsJson<'_> {
     }
 }
 
+/// The fraction of the rod, from A, of the point whose images `polygons`
+/// gives: its middle.
+const POLYGON_COUPLER: f64 = 0.5;
+
+/// `polygons`: the velocity and acceleration polygons (docs/polygons.md)
+/// at the reading's ω, their vectors from the pole in the user's units
+/// (velocities ob, oa, oq; accelerations o′b′, o′x, o′a′, o′q′ of the
+/// images of B, A, the rod's middle Q and the end x of the normal
+/// component), and the values read off them.
+struct Polygons<'a>(&'a Reading);
+
+impl Serialize for Polygons<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let r = self.0;
+        let (w, pose) = (r.omega, &r.pose);
+        let coupler = CouplerPoint::new(POLYGON_COUPLER).ok();
+        let v = VelocityPolygon::construct(pose, coupler);
+        let a = AccelerationPolygon::construct(pose, &v, coupler);
+        let vec = |x: Option<crate::geom::Vector>, k: f64| x.map(|x| pair(k * x.x, k * x.y));
+        let w2 = w * w;
+        let mut m = s.serialize_map(Some(9))?;
+        let mut acc = std::collections::BTreeMap::new();
+        acc.insert("a", vec(Some(a.a()), w2));
+        acc.insert("b", vec(Some(a.b()), w2));
+        acc.insert("q", vec(a.q(), w2));
+        acc.insert("x", vec(Some(a.x()), w2));
+        m.serialize_entry("acceleration", &acc)?;
+        m.serialize_entry("coupler", &POLYGON_COUPLER)?;
+        m.serialize_entry("normal_component", &num(w2 * (a.x() - a.b()).norm()))?;
+        m.serialize_entry(
+            "rod_angular_acceleration",
+            &num(w2 * a.rod_angular_acceleration_ratio()),
+        )?;
+        m.serialize_entry(
+            "rod_angular_velocity",
+            &num(w * v.rod_angular_velocity_ratio()),
+        )?;
+        m.serialize_entry(
+            "slider_acceleration",
+            &num(w2 * a.slider_acceleration_ratio()),
+        )?;
+        m.serialize_entry("slider_velocity", &num(w * v.slider_velocity_ratio()))?;
+        m.serialize_entry("tangential_component", &num(w2 * a.tangential().norm()))?;
+        let mut vel = std::collections::BTreeMap::new();
+        vel.insert("a", vec(Some(v.a()), w));
+        vel.insert("b", vec(Some(v.b()), w));
+        vel.insert("q", vec(v.q(), w));
+        m.serialize_entry("velocity", &vel)?;
+        m.end()
+    }
+}
+
+/// `ritterhaus` and `bennett`: the points of each construction (K, F, G;
+/// L, K, F, G) and the piston's acceleration ω² · CG read off it.
+struct Classical<'a> {
+    reading: &'a Reading,
+    points: Vec<(&'static str, Point)>,
+    ratio: f64,
+}
+
+impl<'a> Classical<'a> {
+    /// Ritterhaus's construction of the reading's pose.
+    fn ritterhaus(reading: &'a Reading) -> Self {
+        let pose = &reading.pose;
+        let r = Ritterhaus::construct(pose, &VelocityLine::construct(pose));
+        let p = r.points();
+        Self {
+            reading,
+            points: vec![("F", p.f()), ("G", p.g()), ("K", r.k())],
+            ratio: p.acceleration_ratio(),
+        }
+    }
+
+    /// Bennett's, where the engine has one (in line).
+    fn bennett(reading: &'a Reading) -> Option<Self> {
+        let b = Bennett::construct(&reading.pose)?;
+        let p = b.points();
+        Some(Self {
+            reading,
+            points: vec![("F", p.f()), ("G", p.g()), ("K", b.k()), ("L", b.l())],
+            ratio: p.acceleration_ratio(),
+        })
+    }
+}
+
+impl Serialize for Classical<'_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let w = self.reading.omega;
+        let mut m = s.serialize_map(Some(self.points.len() + 1))?;
+        for (name, p) in &self.points {
+            m.serialize_entry(name, &At(*p))?;
+        }
+        m.serialize_entry("acceleration", &num(w * w * self.ratio))?;
+        m.end()
+    }
+}
+
 /// The object `analyze --json` prints for one reading, serialised
 /// straight to a writer (`serde_json::to_writer_pretty`) from the
 /// reading: made by [`Reading::json`], with the engine's `dynamics`
@@ -226,10 +326,11 @@ impl Serialize for ReadingJson<'_> {
     /// keeps them.
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         let r = self.reading;
-        let fields = 8 + usize::from(self.dynamics.is_some()) + usize::from(r.statics.is_some());
+        let fields = 11 + usize::from(self.dynamics.is_some()) + usize::from(r.statics.is_some());
         let mut m = s.serialize_map(Some(fields))?;
         m.serialize_entry("analytic", &Analytic(r))?;
         m.serialize_entry("angle_deg", &num(r.pose.angle().degrees()))?;
+        m.serialize_entry("bennett", &Classical::bennett(r))?;
         if let Some(dynamics) = self.dynamics {
             m.serialize_entry("dynamics", dynamics)?;
         }
@@ -237,6 +338,8 @@ impl Serialize for ReadingJson<'_> {
         m.serialize_entry("mechanism", &Mechanism(self.mechanism))?;
         m.serialize_entry("omega", &num(r.omega))?;
         m.serialize_entry("points", &Points(r))?;
+        m.serialize_entry("polygons", &Polygons(r))?;
+        m.serialize_entry("ritterhaus", &Classical::ritterhaus(r))?;
         if let Some(statics) = &r.statics {
             m.serialize_entry("statics", &StaticsJson(statics))?;
         }
@@ -252,8 +355,11 @@ impl Reading {
     /// (the engine it was read on) in `units`: the mechanism, units,
     /// angle and ω, the points C B A D E F G H (D a point at infinity at
     /// θ = 90°, 270° of an in-line engine; H `null` at the very limit of
-    /// assembly), the analytic and graphical values, the six virtual
-    /// centres and, with a torque, the statics. Serialised where it is
+    /// assembly), the analytic and graphical values, the velocity and
+    /// acceleration polygons with the images of the rod's middle,
+    /// Ritterhaus's and Bennett's constructions (`bennett` `null` for an
+    /// offset engine), the six virtual centres and, with a torque, the
+    /// statics. Serialised where it is
     /// written, as [`ReadingJson`]; no `-0` is written.
     pub fn json<'a>(&'a self, mechanism: &'a SliderCrank, units: &'a Units) -> ReadingJson<'a> {
         ReadingJson {

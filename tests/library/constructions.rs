@@ -14,7 +14,9 @@ fn assert_sweep(m: &SliderCrank, samples: usize) {
     let report = sweep(m, samples);
     for (q, err, at, n) in &report.worst {
         assert!(*err <= TOL, "{m:?}: {} off by {err:e} at {at}°", q.name());
-        assert!(*n > 0, "{}", q.name());
+        // Bennett's construction is the in-line engine's.
+        let drawn = *q != Quantity::AccelerationBennett || m.offset() == 0.0;
+        assert_eq!(*n > 0, drawn, "{}", q.name());
     }
 }
 

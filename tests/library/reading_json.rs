@@ -9,8 +9,10 @@
 use serde_json::{Value, json};
 use slider_crank::analytic::statics::Friction;
 use slider_crank::chain::ChainCentres;
-use slider_crank::construct::Reading;
-use slider_crank::geom::{Intersection, Point};
+use slider_crank::construct::{
+    AccelerationPolygon, Bennett, CouplerPoint, Reading, Ritterhaus, VelocityLine, VelocityPolygon,
+};
+use slider_crank::geom::{Intersection, Point, Vector};
 use slider_crank::{Angle, SliderCrank, Unit, Units};
 
 /// The object as `Reading::to_json` built it before the typed writer.
@@ -39,6 +41,54 @@ mod old {
             map.insert(name.to_string(), centre(&c));
         }
         Value::Object(map)
+    }
+
+    /// The polygons member, added with the relative-velocity method: the
+    /// images of the rod's middle.
+    fn polygons(r: &Reading) -> Value {
+        let (w, q) = (r.omega, Some(CouplerPoint::new(0.5).unwrap()));
+        let v = VelocityPolygon::construct(&r.pose, q);
+        let a = AccelerationPolygon::construct(&r.pose, &v, q);
+        let at = |x: Vector, k: f64| json!([num(k * x.x), num(k * x.y)]);
+        let w2 = w * w;
+        json!({
+            "coupler": 0.5,
+            "velocity": {"a": at(v.a(), w), "b": at(v.b(), w), "q": at(v.q().unwrap(), w)},
+            "acceleration": {
+                "a": at(a.a(), w2), "b": at(a.b(), w2), "q": at(a.q().unwrap(), w2),
+                "x": at(a.x(), w2),
+            },
+            "slider_velocity": num(w * v.slider_velocity_ratio()),
+            "rod_angular_velocity": num(w * v.rod_angular_velocity_ratio()),
+            "slider_acceleration": num(w2 * a.slider_acceleration_ratio()),
+            "rod_angular_acceleration": num(w2 * a.rod_angular_acceleration_ratio()),
+            "normal_component": num(w2 * (a.x() - a.b()).norm()),
+            "tangential_component": num(w2 * a.tangential().norm()),
+        })
+    }
+
+    /// Ritterhaus's construction, added beside the polygons.
+    fn ritterhaus(r: &Reading) -> Value {
+        let c = Ritterhaus::construct(&r.pose, &VelocityLine::construct(&r.pose));
+        let p = c.points();
+        json!({
+            "K": point(c.k()), "F": point(p.f()), "G": point(p.g()),
+            "acceleration": num(r.omega * r.omega * p.acceleration_ratio()),
+        })
+    }
+
+    /// Bennett's, `null` for an offset engine.
+    fn bennett(r: &Reading) -> Value {
+        match Bennett::construct(&r.pose) {
+            Some(c) => {
+                let p = c.points();
+                json!({
+                    "L": point(c.l()), "K": point(c.k()), "F": point(p.f()), "G": point(p.g()),
+                    "acceleration": num(r.omega * r.omega * p.acceleration_ratio()),
+                })
+            }
+            None => Value::Null,
+        }
     }
 
     pub fn to_json(r: &Reading, mechanism: &SliderCrank, units: &Units) -> Value {
@@ -70,6 +120,9 @@ mod old {
                 "rod_angular_acceleration": num(r.graphical.rod_angular_acceleration),
             },
             "virtual_centres": centres(r),
+            "polygons": polygons(r),
+            "ritterhaus": ritterhaus(r),
+            "bennett": bennett(r),
         });
         if let Some(s) = &r.statics {
             let (with_friction, locking) = match s.with_friction {

@@ -676,7 +676,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
-const FIGURES: [&str; 11] = [
+const FIGURES: [&str; 14] = [
     "fig-62-displacement",
     "fig-63-velocity",
     "fig-65-klein",
@@ -684,6 +684,9 @@ const FIGURES: [&str; 11] = [
     "fig-67-example",
     "ng-fig-1-torque",
     "ng-fig-a1-velocity",
+    "velocity-acceleration-polygons",
+    "ritterhaus-construction",
+    "bennett-construction",
     "fig-61-centrodes",
     "fig-64-velocity-diagrams",
     "coupler-curves",
@@ -691,7 +694,13 @@ const FIGURES: [&str; 11] = [
 ];
 
 /// Figures held to rule 5.
-const SPREAD_FIGURES: [&str; 3] = ["fig-65-klein", "fig-66-kisch", "fig-67-example"];
+const SPREAD_FIGURES: [&str; 5] = [
+    "fig-65-klein",
+    "fig-66-kisch",
+    "fig-67-example",
+    "ritterhaus-construction",
+    "bennett-construction",
+];
 
 /// Short and long rods (n = 1.03 to 60), offsets of ±0.8 (l − r) and
 /// 0.45 r at n = 1.5, tiny and huge r.

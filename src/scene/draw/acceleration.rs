@@ -1,4 +1,5 @@
-//! Klein's (Fig. 65) and Kisch's (Fig. 66) acceleration constructions.
+//! Klein's (Fig. 65), Kisch's (Fig. 66), Ritterhaus's and Bennett's
+//! acceleration constructions.
 
 use super::LayerCtx;
 use super::velocity::{basics_d, basics_e};
@@ -180,4 +181,51 @@ pub(crate) fn kisch(ctx: &LayerCtx, canvas: &mut Canvas) {
     } else {
         fg(ctx, canvas, k.points(), k.points().f(), F);
     }
+}
+
+/// A right angle at `vertex` between `u` and `v` where both legs are
+/// long enough on the page to carry it.
+fn right_angle(canvas: &mut Canvas, id: &str, vertex: Point, u: Vector, v: Vector) {
+    let legs = canvas.page(u.norm()).min(canvas.page(v.norm()));
+    if legs >= 2.0 * crate::figure::RIGHT_ANGLE {
+        canvas.push(id, Role::Construction, Shape::RightAngle { vertex, u, v });
+    }
+}
+
+/// Ritterhaus's construction: E, EK parallel to AC to the crank CB
+/// produced, KF perpendicular to the stroke, then FG as Klein's.
+pub(crate) fn ritterhaus(ctx: &LayerCtx, canvas: &mut Canvas) {
+    basics_e(ctx, canvas);
+    let pose = ctx.main.pose();
+    let (b, c) = (pose.b(), pose.c());
+    let e = ctx.main.e().e();
+    let r = ctx.main.ritterhaus();
+    let (k, f) = (r.k(), r.points().f());
+    // CB produced to K where K lies beyond B (else K is on the crank).
+    if (k - c).norm() > (b - c).norm() {
+        canvas.segment(ctx.line(CrankPin, K), Role::Auxiliary, b, k);
+    }
+    canvas.segment(ctx.line(VelocityPoint, K), Role::Construction, e, k);
+    canvas.segment(ctx.line(K, F), Role::Construction, k, f);
+    canvas.point(ctx.letter(K), k, Marker::Dot, c);
+    fg(ctx, canvas, r.points(), f, F);
+}
+
+/// Bennett's construction: E (the velocity part), L at r²/l from B on the
+/// rod, LK perpendicular to AB to the stroke, KF perpendicular to the
+/// stroke, then FG as Klein's; E alone for an offset engine.
+pub(crate) fn bennett(ctx: &LayerCtx, canvas: &mut Canvas) {
+    basics_e(ctx, canvas);
+    let Some(bn) = ctx.main.bennett() else {
+        return;
+    };
+    let pose = ctx.main.pose();
+    let (a, c) = (pose.a(), pose.c());
+    let (l, k, f) = (bn.l(), bn.k(), bn.points().f());
+    canvas.segment(ctx.line(L, K), Role::Construction, l, k);
+    canvas.segment(ctx.line(K, F), Role::Construction, k, f);
+    right_angle(canvas, "angle-L", l, a - l, k - l);
+    canvas.point(ctx.letter(L), l, Marker::Dot, c);
+    canvas.point(ctx.letter(K), k, Marker::Dot, c);
+    fg(ctx, canvas, bn.points(), f, F);
 }

@@ -119,6 +119,15 @@ fn points(ctx: &LayerCtx) -> (Vec<Point>, Option<Point>) {
     } else if scene.has(Layer::Klein) {
         let k = super::acceleration::klein_points(ctx);
         pts.extend([k.f(), k.g()]);
+    } else if scene.has(Layer::Ritterhaus) {
+        let r = ctx.main.ritterhaus();
+        pts.extend([r.points().f(), r.points().g()]);
+        h = Some(r.k());
+    } else if scene.has(Layer::Bennett)
+        && let Some(bn) = ctx.main.bennett()
+    {
+        pts.extend([bn.points().f(), bn.points().g(), bn.l()]);
+        h = Some(bn.k());
     }
     (pts, h)
 }
@@ -144,7 +153,14 @@ fn bounds(pts: &[Point]) -> (Point, Point) {
 /// region only where the core still gets [`CORE_TARGET`] with it.
 pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let scene = ctx.scene;
-    let acceleration = scene.has(Layer::Klein) || scene.has(Layer::Kisch);
+    let acceleration = [
+        Layer::Klein,
+        Layer::Kisch,
+        Layer::Ritterhaus,
+        Layer::Bennett,
+    ]
+    .iter()
+    .any(|l| scene.has(*l));
     let velocity = scene.has(Layer::Velocity);
     if !scene.has(Layer::Mechanism) {
         return None;

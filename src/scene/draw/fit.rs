@@ -39,7 +39,7 @@ pub(crate) fn d_is_near(ctx: &LayerCtx) -> Option<Point> {
 /// The world rectangle the scene's figure shows: the crank circle, the
 /// guides and block, and the points of each layer drawn (E, D while near,
 /// Klein's and Kisch's points, the arrows once the page scale is known,
-/// the polar curve and the coupler curve), and the frame the scene is
+/// the polar curve and the coupler curve, the polygons), and the frame the scene is
 /// asked to hold ([`crate::scene::Scene::with_view_holding`]). Points that are not finite are
 /// left out: at worst the frame is the crank circle's with the guides.
 pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
@@ -63,12 +63,36 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     if scene.has(Layer::Kisch) {
         add_kisch(&mut b, ctx);
     }
+    if scene.has(Layer::Ritterhaus) {
+        let r = ctx.main.ritterhaus();
+        for p in [r.k(), r.points().f(), r.points().g()] {
+            b.add(p);
+        }
+    }
+    if scene.has(Layer::Bennett)
+        && let Some(bn) = ctx.main.bennett()
+    {
+        for p in [bn.l(), bn.k(), bn.points().f(), bn.points().g()] {
+            b.add(p);
+        }
+    }
     add_arrows(&mut b, ctx);
     if scene.has(Layer::Polar) {
         add_polar(&mut b, ctx);
     }
     if scene.has(Layer::Coupler) {
         add_coupler(&mut b, ctx);
+    }
+    if scene.has(Layer::Polygons) {
+        // Each polygon's caption below it, once the page scale is known.
+        let below = ctx
+            .sizes
+            .page_scale
+            .map_or(0.0, |s| super::polygons::CAPTION_ROOM / s);
+        for p in super::polygons::place(ctx).points() {
+            b.add(p);
+            b.add(p - Vector::new(0.0, below));
+        }
     }
     if let Some(f) = scene.holding() {
         b.add(f.min());
@@ -85,6 +109,8 @@ fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx) {
         Layer::Velocity,
         Layer::Klein,
         Layer::Kisch,
+        Layer::Ritterhaus,
+        Layer::Bennett,
         Layer::Torque,
         Layer::VirtualCentres,
     ]

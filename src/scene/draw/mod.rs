@@ -8,6 +8,7 @@ mod dimensions;
 mod fit;
 mod mechanism;
 mod motion;
+pub(crate) mod polygons;
 mod scales;
 mod torque;
 mod velocity;
@@ -267,6 +268,14 @@ fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     };
     if scene.has(Layer::Torque) {
         notes.extend(torque::notes(ctx));
+    }
+    if scene.has(Layer::Polygons) {
+        notes.extend(polygons::notes(ctx));
+    }
+    if scene.has(Layer::Bennett) && scene.mechanism().offset() != 0.0 {
+        notes.push(RichText::parse(
+            "Bennett’s construction is the in-line engine’s: with an offset its fixed length *r*²/*l* no longer gives the acceleration, and it is not drawn.",
+        ));
     }
     if scene.mechanism().offset() != 0.0 {
         notes.push(RichText::parse(&offset_note(scene)));
@@ -574,7 +583,9 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
     for layer in ctx.scene.layers() {
         canvas.set_hue(match layer {
             Layer::Velocity | Layer::Motion => Some(Hue::Velocity),
-            Layer::Klein | Layer::Kisch => Some(Hue::Acceleration),
+            Layer::Klein | Layer::Kisch | Layer::Ritterhaus | Layer::Bennett => {
+                Some(Hue::Acceleration)
+            }
             Layer::Torque => Some(Hue::Force),
             _ => None,
         });
@@ -596,7 +607,12 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
             Layer::Velocity => velocity::draw(ctx, canvas),
             Layer::Klein => acceleration::klein(ctx, canvas),
             Layer::Kisch => acceleration::kisch(ctx, canvas),
+            Layer::Ritterhaus => acceleration::ritterhaus(ctx, canvas),
+            Layer::Bennett => acceleration::bennett(ctx, canvas),
             Layer::Torque => torque::draw(ctx, canvas),
+            // At their own scale: not in an enlarged detail.
+            Layer::Polygons if main => polygons::draw(ctx, canvas),
+            Layer::Polygons => {}
             Layer::Scales => {}
         }
     }

@@ -23,9 +23,16 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         sig(r * w),
         sig(w)
     ))];
-    let uses_e = [Layer::Velocity, Layer::Klein, Layer::Kisch, Layer::Torque]
-        .iter()
-        .any(|x| scene.has(*x));
+    let uses_e = [
+        Layer::Velocity,
+        Layer::Klein,
+        Layer::Kisch,
+        Layer::Ritterhaus,
+        Layer::Bennett,
+        Layer::Torque,
+    ]
+    .iter()
+    .any(|x| scene.has(*x));
     if uses_e {
         let ce = ctx.main.e().ce();
         let speed = w * ce.abs();
@@ -46,6 +53,10 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         Some(*ctx.main.kisch().points())
     } else if scene.has(Layer::Klein) {
         ctx.main.klein().map(|k| *k.points())
+    } else if scene.has(Layer::Ritterhaus) {
+        Some(*ctx.main.ritterhaus().points())
+    } else if scene.has(Layer::Bennett) {
+        ctx.main.bennett().map(|b| *b.points())
     } else {
         None
     };

@@ -1,0 +1,478 @@
+//! The polygons layer: the velocity and acceleration polygons of the
+//! relative-velocity method (docs/polygons.md), drawn below the mechanism
+//! to the scales their notes state.
+//!
+//! Lettering: each point's image is its own letter in lower case (b the
+//! image of B), the acceleration images primed (b′); the pole is the
+//! image of the crank centre, and of every fixed point; x ends the rod's
+//! normal component b′x, as Rattan and Khurmi letter it.
+
+use super::LayerCtx;
+use crate::construct::{AccelerationPolygon, VelocityPolygon};
+use crate::figure::{Align, Hue, RIGHT_ANGLE, RichText, Role, Shape, TextSize};
+use crate::geom::{Point, Vector};
+use crate::number::{short, sig};
+use crate::scene::canvas::{Canvas, Marker};
+use crate::scene::notation::Named::{self, *};
+
+/// The steps the polygons' magnification k is chosen from (times a power
+/// of ten): round numbers, so that the scale is read at a glance.
+const STEPS: [f64; 9] = [1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
+
+/// The share of the mechanism's length, l + 2r, that ob = k r is made
+/// at most (and never shorter than the crank).
+const SHARE: f64 = 0.25;
+
+/// The room between the mechanism and the polygons, and between the two
+/// polygons, in lengths ob = k r.
+const GAP: f64 = 0.5;
+
+/// Room kept for letters between the mechanism and the polygons, page
+/// units.
+const LETTER_ROOM: f64 = 24.0;
+
+/// Shortest vector drawn as an arrow, page units: shorter, its head would
+/// hide it (a zero vector, at a dead centre or 90°, is not drawn).
+const MIN_ARROW: f64 = 12.0;
+
+/// The two polygons placed on the drawing: the magnification k (a
+/// vector v per ω or per ω² is drawn k v long), the sign of ω (the
+/// velocities turn with it), the poles, and the polygons.
+pub(crate) struct Placed {
+    pub k: f64,
+    sign: f64,
+    pub velocity_pole: Point,
+    pub acceleration_pole: Point,
+    pub velocity: VelocityPolygon,
+    pub acceleration: AccelerationPolygon,
+}
+
+/// The velocity polygon's points: o, b, a, q.
+pub(crate) struct VelocityPoints {
+    pub o: Point,
+    pub b: Point,
+    pub a: Point,
+    pub q: Option<Point>,
+}
+
+/// The acceleration polygon's points: o′, b′, x, a′, q′.
+pub(crate) struct AccelerationPoints {
+    pub o: Point,
+    pub b: Point,
+    pub x: Point,
+    pub a: Point,
+    pub q: Option<Point>,
+}
+
+/// The magnification k for a crank `r` on a rod `l`: the largest round
+/// step that keeps k r within [`SHARE`] of l + 2r, at least 1 (a short
+/// rod's polygons are drawn to the crank's own scale, CB representing
+/// V_B = rω and ω²r).
+pub(crate) fn magnification(r: f64, l: f64) -> f64 {
+    let most = SHARE * (l + 2.0 * r) / r;
+    if !(most.is_finite() && most > 1.0) {
+        return 1.0;
+    }
+    let decade = 10f64.powf(most.log10().floor());
+    STEPS
+        .iter()
+        .map(|s| s * decade)
+        .filter(|k| *k <= most)
+        .fold(1.0, f64::max)
+}
+
+/// The corners of the smallest box round `points`.
+fn bounds(points: &[Vector]) -> (Vector, Vector) {
+    let lo = points.iter().fold(Vector::zeros(), |m, p| m.inf(p));
+    let hi = points.iter().fold(Vector::zeros(), |m, p| m.sup(p));
+    (lo, hi)
+}
+
+/// Places the polygons of the pose of `ctx` below its mechanism, side by
+/// side (the velocity polygon first as the page reads, on the left also
+/// when the figure is mirrored), centred under the crank and the guides.
+pub(crate) fn place(ctx: &LayerCtx) -> Placed {
+    let scene = ctx.scene;
+    let m = scene.mechanism();
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let (velocity, acceleration) = *ctx.main.polygons(scene.coupler());
+    let k = magnification(r, l);
+    let sign = if scene.omega() < 0.0 { -1.0 } else { 1.0 };
+    let v: Vec<Vector> = [Some(velocity.b()), Some(velocity.a()), velocity.q()]
+        .into_iter()
+        .flatten()
+        .map(|p| p * (k * sign))
+        .collect();
+    let acc = acceleration;
+    let a: Vec<Vector> = [Some(acc.b()), Some(acc.x()), Some(acc.a()), acc.q()]
+        .into_iter()
+        .flatten()
+        .map(|p| p * k)
+        .collect();
+    let (v_lo, v_hi) = bounds(&v);
+    let (a_lo, a_hi) = bounds(&a);
+    let (v_width, a_width) = (v_hi.x - v_lo.x, a_hi.x - a_lo.x);
+    // In world lengths only: a gap that followed the page scale would
+    // move the frame the fit is made for between its passes.
+    let gap = GAP * k * r;
+    let width = v_width + gap + a_width;
+    let (_, right) = ctx.sizes.guides();
+    let left = 0.5 * (-r + right) - 0.5 * width;
+    // Below the mechanism by the gap and, once the page scale is known,
+    // room for the letters between (a drawing made small by a page held
+    // to a low height would otherwise set them among the mechanism's).
+    let letters = ctx.sizes.page_scale.map_or(0.0, |s| LETTER_ROOM / s);
+    let top = (-r).min(e - ctx.sizes.block_half_height) - gap - letters;
+    // Mirrored, world x runs right to left on the page.
+    let (v_left, a_left) = if scene.is_mirrored() {
+        (left + a_width + gap, left)
+    } else {
+        (left, left + v_width + gap)
+    };
+    let velocity_pole = Point::new(v_left - v_lo.x, top - v_hi.y);
+    let acceleration_pole = Point::new(a_left - a_lo.x, top - a_hi.y);
+    Placed {
+        k,
+        sign,
+        velocity_pole,
+        acceleration_pole,
+        velocity,
+        acceleration,
+    }
+}
+
+impl Placed {
+    /// The velocity polygon's points on the drawing.
+    pub(crate) fn velocity_points(&self) -> VelocityPoints {
+        let o = self.velocity_pole;
+        let at = |v: Vector| o + v * (self.k * self.sign);
+        VelocityPoints {
+            o,
+            b: at(self.velocity.b()),
+            a: at(self.velocity.a()),
+            q: self.velocity.q().map(at),
+        }
+    }
+
+    /// The acceleration polygon's points on the drawing.
+    pub(crate) fn acceleration_points(&self) -> AccelerationPoints {
+        let o = self.acceleration_pole;
+        let at = |v: Vector| o + v * self.k;
+        let p = &self.acceleration;
+        AccelerationPoints {
+            o,
+            b: at(p.b()),
+            x: at(p.x()),
+            a: at(p.a()),
+            q: p.q().map(at),
+        }
+    }
+
+    /// Every point drawn, for the fit.
+    pub(crate) fn points(&self) -> Vec<Point> {
+        let v = self.velocity_points();
+        let a = self.acceleration_points();
+        let mut out = vec![v.o, v.b, v.a, a.o, a.b, a.x, a.a];
+        out.extend(v.q);
+        out.extend(a.q);
+        out
+    }
+}
+
+/// The lower-case letter of the image of `n` as markup (`*b*`), primed
+/// for the acceleration polygon (`*b*′`).
+fn image(ctx: &LayerCtx, n: Named, prime: bool) -> String {
+    let letter = ctx.letter(n).to_lowercase();
+    if prime {
+        format!("*{letter}*′")
+    } else {
+        format!("*{letter}*")
+    }
+}
+
+/// The id part of an image (`b`, `b2` for b′).
+fn id(ctx: &LayerCtx, n: Named, prime: bool) -> String {
+    let letter = ctx.letter(n).to_lowercase();
+    if prime { format!("{letter}2") } else { letter }
+}
+
+/// The acceleration image of `n` at `at`, lettered `b′` with the id
+/// and metadata name `b2` (a prime is no character of an XML id).
+fn primed(ctx: &LayerCtx, canvas: &mut Canvas, n: Named, at: Point, pole: Point) {
+    let letter = RichText::parse(&image(ctx, n, true));
+    canvas.point_lettered(&id(ctx, n, true), letter, at, Marker::Dot, pole);
+}
+
+/// A vector of a polygon as an arrow (`{kind}-{p}{q}`), where it is long
+/// enough on the page to carry its head.
+fn vector(canvas: &mut Canvas, id: String, role: Role, from: Point, to: Point) {
+    if canvas.page((to - from).norm()) < MIN_ARROW {
+        return;
+    }
+    canvas.push(id, role, Shape::Arrow { from, to });
+}
+
+/// Draws both polygons, each point lettered, and Q on the rod.
+pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
+    let placed = place(ctx);
+    let pose = ctx.main.pose();
+    let coupler = ctx.scene.coupler().point(pose);
+    canvas.point(ctx.letter(Coupler), coupler, Marker::Dot, pose.c());
+    let hue = canvas.set_hue(Some(Hue::Velocity));
+    let v = placed.velocity_points();
+    velocity(ctx, canvas, &v);
+    canvas.set_hue(Some(Hue::Acceleration));
+    let a = placed.acceleration_points();
+    acceleration(ctx, canvas, &a);
+    canvas.set_hue(hue);
+    let mut v_points = vec![v.o, v.a, v.b];
+    v_points.extend(v.q);
+    let mut a_points = vec![a.o, a.a, a.b, a.x];
+    a_points.extend(a.q);
+    // Named below each where their names fit side by side (a page held
+    // to a small height may draw them closer: the notes name the poles).
+    let middle = |p: &[Point]| {
+        let xs = p.iter().map(|p| p.x);
+        0.5 * (xs.clone().fold(f64::INFINITY, f64::min) + xs.fold(f64::NEG_INFINITY, f64::max))
+    };
+    if canvas.page((middle(&v_points) - middle(&a_points)).abs()) >= CAPTIONS_APART {
+        caption(
+            canvas,
+            "caption-velocity-polygon",
+            "velocity polygon",
+            &v_points,
+        );
+        caption(
+            canvas,
+            "caption-acceleration-polygon",
+            "acceleration polygon",
+            &a_points,
+        );
+    }
+}
+
+/// Room between a polygon and its caption below it, page units.
+const CAPTION_DROP: f64 = 34.0;
+
+/// The least distance between the middles of the two polygons, page
+/// units: their captions' half widths and room between.
+const CAPTIONS_APART: f64 = 150.0;
+
+/// What the fit keeps below a polygon for its caption, page units.
+pub(crate) const CAPTION_ROOM: f64 = CAPTION_DROP + 12.0;
+
+/// The polygon's name set below its `points`, under their middle.
+fn caption(canvas: &mut Canvas, id: &str, text: &str, points: &[Point]) {
+    let lo = points
+        .iter()
+        .fold(Point::new(f64::INFINITY, f64::INFINITY), |m, p| m.inf(p));
+    let hi = points
+        .iter()
+        .fold(Point::new(f64::NEG_INFINITY, f64::NEG_INFINITY), |m, p| {
+            m.sup(p)
+        });
+    let at = Point::new(0.5 * (lo.x + hi.x), lo.y);
+    canvas.push(
+        id,
+        Role::Label,
+        Shape::Text {
+            at,
+            offset: Vector::new(0.0, CAPTION_DROP),
+            text: RichText::parse(text),
+            align: Align::Middle,
+            size: TextSize::Small,
+        },
+    );
+}
+
+fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
+    let (o, b, a) = (
+        id(ctx, CrankCentre, false),
+        id(ctx, CrankPin, false),
+        id(ctx, Slider, false),
+    );
+    vector(
+        canvas,
+        format!("velocity-{o}{b}"),
+        Role::Construction,
+        p.o,
+        p.b,
+    );
+    vector(
+        canvas,
+        format!("velocity-{a}{b}"),
+        Role::Construction,
+        p.a,
+        p.b,
+    );
+    vector(canvas, format!("velocity-{o}{a}"), Role::Result, p.o, p.a);
+    if let Some(q) = p.q {
+        vector(canvas, format!("velocity-{o}q"), Role::Auxiliary, p.o, q);
+    }
+    let letters = [(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
+    for (n, at) in letters {
+        canvas.point(&id(ctx, n, false), at, Marker::Dot, p.o);
+    }
+    if let Some(q) = p.q {
+        canvas.point(&id(ctx, Coupler, false), q, Marker::Dot, p.o);
+    }
+}
+
+fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
+    let (o, b, a) = (
+        id(ctx, CrankCentre, true),
+        id(ctx, CrankPin, true),
+        id(ctx, Slider, true),
+    );
+    vector(
+        canvas,
+        format!("acceleration-{o}{b}"),
+        Role::Construction,
+        p.o,
+        p.b,
+    );
+    vector(
+        canvas,
+        format!("acceleration-{b}x"),
+        Role::Construction,
+        p.b,
+        p.x,
+    );
+    vector(
+        canvas,
+        format!("acceleration-x{a}"),
+        Role::Construction,
+        p.x,
+        p.a,
+    );
+    vector(
+        canvas,
+        format!("acceleration-{o}{a}"),
+        Role::Result,
+        p.o,
+        p.a,
+    );
+    canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
+    if let Some(q) = p.q {
+        vector(
+            canvas,
+            format!("acceleration-{o}q2"),
+            Role::Auxiliary,
+            p.o,
+            q,
+        );
+    }
+    let (normal, tangential) = (p.b - p.x, p.a - p.x);
+    if canvas.page(normal.norm()) >= 2.0 * RIGHT_ANGLE
+        && canvas.page(tangential.norm()) >= 2.0 * RIGHT_ANGLE
+    {
+        canvas.push(
+            "angle-x",
+            Role::Construction,
+            Shape::RightAngle {
+                vertex: p.x,
+                u: normal,
+                v: tangential,
+            },
+        );
+    }
+    let letters = [(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
+    for (n, at) in letters {
+        primed(ctx, canvas, n, at, p.o);
+    }
+    canvas.point("x", p.x, Marker::Dot, p.o);
+    if let Some(q) = p.q {
+        primed(ctx, canvas, Coupler, q, p.o);
+    }
+}
+
+/// The notes that state the polygons' scales and read them: the velocity
+/// and acceleration each length represents, the rod's angular velocity
+/// ab/AB and angular acceleration xa′/AB.
+pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
+    let scene = ctx.scene;
+    let placed = place(ctx);
+    let (k, w) = (placed.k, scene.omega().abs());
+    let u = scene.units().length();
+    let r = scene.mechanism().crank();
+    let rod = scene.mechanism().rod();
+    let plain = |n: Named| ctx.letter(n).to_lowercase();
+    let (o, b, a, q) = (
+        plain(CrankCentre),
+        plain(CrankPin),
+        plain(Slider),
+        plain(Coupler),
+    );
+    let primed = |n: Named| image(ctx, n, true);
+    let (o2, b2, a2, q2) = (
+        primed(CrankCentre),
+        primed(CrankPin),
+        primed(Slider),
+        primed(Coupler),
+    );
+    let (cap_a, cap_b) = (ctx.letter(Slider), ctx.letter(CrankPin));
+    let v = &placed.velocity;
+    let acc = &placed.acceleration;
+    let len = |x: f64| sig(k * x.abs());
+    let vq = v.q().map_or(0.0, |x| x.norm());
+    let aq = acc.q().map_or(0.0, |x| x.norm());
+    let ab = v.ab().norm();
+    let normal = ab * ab / rod;
+    let tangential = acc.tangential().norm();
+    vec![
+        RichText::parse(&format!(
+            "Velocity polygon, pole *{o}*: 1 {u} represents {} {u}/s; *{o}{b}* = {} {u} is *{cap_b}*’s velocity *r*ω = {} {u}/s, perpendicular to the crank.",
+            sig(w / k),
+            short(k * r),
+            sig(w * r)
+        )),
+        RichText::parse(&format!(
+            "*{o}{a}* = {} {u}: the piston’s velocity {} {u}/s; *{a}{b}* = {} {u}: *{cap_b}* relative to *{cap_a}*, {} {u}/s, so the rod turns at *{a}{b}*/*{cap_a}{cap_b}* = {} rad/s; *{o}{q}* = {} {u}: {} {u}/s.",
+            len(v.slider_velocity_ratio()),
+            sig(w * v.slider_velocity_ratio().abs()),
+            len(ab),
+            sig(w * ab),
+            sig(w * v.rod_angular_velocity_ratio().abs()),
+            len(vq),
+            sig(w * vq)
+        )),
+        RichText::parse(&format!(
+            "Acceleration polygon, pole {o2}: 1 {u} represents {} {u}/s²; {o2}{b2} = {} {u} is ω²*r* = {} {u}/s² towards the crank centre.",
+            sig(w * w / k),
+            short(k * r),
+            sig(w * w * r)
+        )),
+        RichText::parse(&format!(
+            "{b2}*x* = {} {u}: the rod’s normal component, (the velocity *{a}{b}*)²/*{cap_a}{cap_b}* = {} {u}/s²; *x{a}*′ = {} {u}: its tangential component, {} {u}/s², so the rod’s angular acceleration is *x{a}*′/*{cap_a}{cap_b}* = {} rad/s².",
+            len(normal),
+            sig(w * w * normal),
+            len(tangential),
+            sig(w * w * tangential),
+            sig(w * w * acc.rod_angular_acceleration_ratio().abs())
+        )),
+        RichText::parse(&format!(
+            "{o2}{a2} = {} {u}: the piston’s acceleration {} {u}/s²; {o2}{q2} = {} {u}: *{}*’s, {} {u}/s².",
+            len(acc.slider_acceleration_ratio()),
+            sig(w * w * acc.slider_acceleration_ratio().abs()),
+            len(aq),
+            ctx.letter(Coupler),
+            sig(w * w * aq)
+        )),
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_magnification_is_a_round_step_of_at_least_one() {
+        // (l + 2r)/4 per crank: 1 → 1 for n = 2, 2 → 2 for n = 6,
+        // 15.5 → 15 for n = 60, 0.76 → 1 for n = 1.05.
+        assert_eq!(magnification(0.5, 1.0), 1.0);
+        assert_eq!(magnification(0.5, 3.0), 2.0);
+        assert_eq!(magnification(1.0, 60.0), 15.0);
+        assert_eq!(magnification(1.0, 1.05), 1.0);
+        assert_eq!(magnification(1.0, 1e6), 2.5e5);
+    }
+}

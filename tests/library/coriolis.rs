@@ -1,0 +1,123 @@
+//! The polygons of inversions 2 and 3 with the Coriolis component against
+//! the chain's exact link motion (docs/polygons.md).
+
+use slider_crank::chain::{CoriolisPolygon, Inversion, InvertedChain};
+use slider_crank::geom::{Vector, cross};
+use slider_crank::{Angle, SliderCrank};
+
+/// Every 7.5°, the quarters exactly and a hair off them.
+fn angles() -> Vec<f64> {
+    let mut out: Vec<f64> = (0..48).map(|k| 7.5 * f64::from(k)).collect();
+    for q in [0.0, 90.0, 180.0, 270.0] {
+        out.extend([q + 1e-7, q - 1e-7]);
+    }
+    out
+}
+
+const LINK_D: usize = 3;
+
+#[test]
+fn the_coriolis_polygons_read_the_exact_link_motion() {
+    for (r, l, e) in [
+        (0.5, 1.5, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 4.0, 1.2),
+        (1.0, 60.0, -20.0),
+        (1e-6, 3e-6, 0.0),
+    ] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for inversion in [Inversion::Crank, Inversion::Rod] {
+            let chain = InvertedChain::new(m, inversion);
+            for deg in angles() {
+                let pose = chain.pose(Angle::deg(deg));
+                let w = 3.0;
+                let Some(exact) = pose.motion(w) else {
+                    continue;
+                };
+                let p = CoriolisPolygon::construct(&pose, w).unwrap();
+                // Scales: ω for rates, ω² for accelerations, r for lengths,
+                // and the condition of a short rod near its limit.
+                let k = (l / (l - r - e.abs())).powi(3);
+                let rate = w * k * 1e-12;
+                let what = format!("{inversion:?} {l} {e} {deg}");
+                assert!(
+                    (p.omega_d() - exact.velocity[LINK_D]).abs() <= rate,
+                    "{what}: ω_d"
+                );
+                assert!(
+                    (p.alpha_d() - exact.acceleration[LINK_D]).abs() <= w * rate,
+                    "{what}: α_d {} {}",
+                    p.alpha_d(),
+                    exact.acceleration[LINK_D]
+                );
+                assert!(
+                    (p.sliding_velocity() - exact.sliding_velocity).abs() <= r * rate,
+                    "{what}: v"
+                );
+                assert!(
+                    (p.sliding_acceleration() - exact.sliding_acceleration).abs() <= r * w * rate,
+                    "{what}: sliding acceleration {} {}",
+                    p.sliding_acceleration(),
+                    exact.sliding_acceleration
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_coriolis_component_is_2_omega_v_turned_in_the_sense_of_omega() {
+    let m = SliderCrank::new(1.0, 3.0, 0.4).unwrap();
+    for inversion in [Inversion::Crank, Inversion::Rod] {
+        let chain = InvertedChain::new(m, inversion);
+        for deg in angles() {
+            let pose = chain.pose(Angle::deg(deg));
+            let p = CoriolisPolygon::construct(&pose, 2.0).unwrap();
+            let (u, c) = (p.slot(), p.coriolis());
+            let size = 2.0 * p.omega_d().abs() * p.sliding_velocity().abs();
+            assert!((c.norm() - size).abs() <= 1e-12, "{deg}: |2ωv|");
+            // Perpendicular to the slot, on the side ω turns the sliding
+            // velocity of d's point relative to the block towards.
+            assert!(c.dot(&u).abs() <= 1e-12, "{deg}: ⟂ slot");
+            let v = match inversion {
+                Inversion::Crank => u * p.sliding_velocity(),
+                _ => -u * p.sliding_velocity(),
+            };
+            if size > 1e-9 {
+                assert!(cross(&v, &c) * p.omega_d() > 0.0, "{deg}: sense");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_polygons_close() {
+    // Inversion 3: o → c → a_d closes with a_d along the slot (the block at
+    // rest); inversion 2: o → a_d → a with a − a_d along the slot.
+    let m = SliderCrank::in_line(0.5, 1.5).unwrap();
+    for deg in angles() {
+        let p3 = CoriolisPolygon::construct(
+            &InvertedChain::new(m, Inversion::Rod).pose(Angle::deg(deg)),
+            1.0,
+        )
+        .unwrap();
+        assert!(cross(&p3.slot(), &p3.a_d()).abs() <= 1e-14, "{deg}");
+        let p2 = CoriolisPolygon::construct(
+            &InvertedChain::new(m, Inversion::Crank).pose(Angle::deg(deg)),
+            1.0,
+        )
+        .unwrap();
+        assert!(
+            cross(&p2.slot(), &(p2.driven() - p2.a_d())).abs() <= 1e-14,
+            "{deg}"
+        );
+        // a′_d − n is the tangential component, ⟂ to the normal one.
+        let t: Vector = p2.a_d_acceleration() - p2.n();
+        assert!(
+            t.dot(&p2.n()).abs() <= 1e-12 * (1.0 + p2.n().norm()),
+            "{deg}"
+        );
+    }
+    let frame = InvertedChain::new(m, Inversion::Frame).pose(Angle::deg(30.0));
+    assert!(CoriolisPolygon::construct(&frame, 1.0).is_none());
+}

@@ -1,0 +1,302 @@
+//! The velocity and acceleration polygons (the relative-velocity method)
+//! against closed forms derived by hand (docs/polygons.md) and the numbers
+//! of textbook §36–37.
+
+use slider_crank::analytic::kinematics::rpm_to_omega;
+use slider_crank::construct::{
+    AccelerationPolygon, CouplerPoint, Quantity, VelocityPolygon, sweep,
+};
+use slider_crank::geom::{Vector, cross};
+use slider_crank::{Angle, SliderCrank};
+
+/// The polygons' quantities in the cross-check.
+const POLYGON: [Quantity; 6] = [
+    Quantity::VelocityPolygon,
+    Quantity::RodAngularVelocityPolygon,
+    Quantity::CouplerVelocityPolygon,
+    Quantity::AccelerationPolygon,
+    Quantity::RodAngularAccelerationPolygon,
+    Quantity::CouplerAccelerationPolygon,
+];
+
+fn polygons(m: &SliderCrank, deg: f64, t: f64) -> (VelocityPolygon, AccelerationPolygon) {
+    let pose = m.pose(Angle::deg(deg));
+    let c = Some(CouplerPoint::new(t).unwrap());
+    let v = VelocityPolygon::construct(&pose, c);
+    let a = AccelerationPolygon::construct(&pose, &v, c);
+    (v, a)
+}
+
+/// The angles of a sweep: every 7.5° and the quarters, and a hair off them.
+fn angles() -> Vec<f64> {
+    let mut out: Vec<f64> = (0..48).map(|k| 7.5 * f64::from(k)).collect();
+    for q in [0.0, 90.0, 180.0, 270.0] {
+        out.extend([q + 1e-7, q - 1e-7]);
+    }
+    out
+}
+
+#[test]
+fn in_line_polygons_read_the_closed_forms_for_n_from_1_02_to_60() {
+    // In-line, per ω and ω² (q = √(n² − sin²θ)):
+    // ds/dθ = −r (sin θ + sin 2θ / 2q), dφ/dθ = cos θ / q,
+    // d²s/dθ² = −r (cos θ + (n² cos 2θ + sin⁴θ) / q³),
+    // d²φ/dθ² = −sin θ (n² − 1) / q³.
+    for n in [1.02, 1.05, 1.5, 4.0, 6.0, 30.0, 60.0] {
+        for r in [1e-9, 0.5, 1e9] {
+            let m = SliderCrank::in_line(r, n * r).unwrap();
+            for deg in angles() {
+                let (v, a) = polygons(&m, deg, 0.5);
+                let th = deg.to_radians();
+                let (s, c) = (th.sin(), th.cos());
+                let q = (n * n - s * s).sqrt();
+                let vel = -r * (s + (2.0 * th).sin() / (2.0 * q));
+                let rate = c / q;
+                let acc = -r * (c + (n * n * (2.0 * th).cos() + s.powi(4)) / q.powi(3));
+                let alpha = -s * (n * n - 1.0) / q.powi(3);
+                let tol = 1e-12;
+                assert!(
+                    (v.slider_velocity_ratio() - vel).abs() <= tol * r,
+                    "{n} {deg}"
+                );
+                assert!(
+                    (v.rod_angular_velocity_ratio() - rate).abs() <= tol,
+                    "{n} {deg}"
+                );
+                assert!(
+                    (a.slider_acceleration_ratio() - acc).abs() <= tol * r * n * n,
+                    "{n} {deg}: {} {acc}",
+                    a.slider_acceleration_ratio()
+                );
+                assert!(
+                    (a.rod_angular_acceleration_ratio() - alpha).abs() <= tol * n * n,
+                    "{n} {deg}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn offset_polygons_read_the_hand_formulas() {
+    // h = r sin θ − e, w = √(l² − h²): ds/dθ = −r sin θ − r cos θ h / w,
+    // d²s/dθ² = −r cos θ − r² cos²θ l² / w³ + r sin θ h / w.
+    for (r, l, e) in [
+        (1.0, 3.0, 1.5),
+        (1.0, 3.0, -1.9),
+        (0.5, 1.6, 0.9),
+        (2.0, 120.0, 50.0),
+    ] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for deg in angles() {
+            let (v, a) = polygons(&m, deg, 0.25);
+            let th = deg.to_radians();
+            let (s, c) = (th.sin(), th.cos());
+            let h = r * s - e;
+            let w = (l * l - h * h).sqrt();
+            let vel = -r * s - r * c * h / w;
+            let acc = -r * c - r * r * c * c * l * l / w.powi(3) + r * s * h / w;
+            let tol = 1e-12 * (l / w).powi(3);
+            assert!(
+                (v.slider_velocity_ratio() - vel).abs() <= tol * r,
+                "{e} {deg}"
+            );
+            assert!(
+                (a.slider_acceleration_ratio() - acc).abs() <= tol * r,
+                "{e} {deg}: {} {acc}",
+                a.slider_acceleration_ratio()
+            );
+        }
+    }
+}
+
+#[test]
+fn at_the_dead_centres_the_slider_rests_and_the_rod_has_no_tangential_component() {
+    let m = SliderCrank::in_line(0.5, 3.0).unwrap();
+    for deg in [0.0, 180.0] {
+        let (v, a) = polygons(&m, deg, 0.5);
+        assert_eq!(v.a().x, 0.0, "{deg}");
+        assert_eq!(a.tangential().norm(), 0.0, "{deg}");
+        assert_eq!(a.rod_angular_acceleration_ratio(), 0.0, "{deg}");
+        // ab = ob: the whole of the pin's velocity is relative to A.
+        assert!((v.ab() - v.b()).norm() <= 1e-16, "{deg}");
+        // o′a′ = o′b′ + b′x: −r − r²/l at 0°, r − r²/l at 180°.
+        let want = if deg == 0.0 {
+            -0.5 - 0.25 / 3.0
+        } else {
+            0.5 - 0.25 / 3.0
+        };
+        assert!((a.a().x - want).abs() <= 1e-15, "{deg}: {}", a.a().x);
+    }
+}
+
+#[test]
+fn at_90_degrees_the_rod_translates_and_the_normal_component_vanishes() {
+    for (r, l) in [(0.5, 3.0), (1.0, 1.05), (1.0, 60.0)] {
+        let m = SliderCrank::in_line(r, l).unwrap();
+        for deg in [90.0, 270.0] {
+            let (v, a) = polygons(&m, deg, 0.3);
+            assert_eq!(v.ab(), Vector::zeros(), "{deg}");
+            assert_eq!(v.rod_angular_velocity_ratio(), 0.0);
+            assert_eq!(a.x(), a.b(), "{deg}");
+            // o′a′ = r²/√(l² − r²) at both: the tangential component alone.
+            let want = r * r / (l * l - r * r).sqrt();
+            assert!(
+                (a.a().x - want).abs() <= 1e-14 * r * (l / (l - r)),
+                "{l} {deg}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_polygons_are_drawn_as_the_method_says() {
+    // ab ⟂ AB, b′x ∥ AB with |b′x| = ab²/AB, xa′ ⟂ AB, c and c′ the images
+    // dividing ab and a′b′ as C divides AB.
+    let m = SliderCrank::new(1.0, 3.5, 0.7).unwrap();
+    for deg in angles() {
+        let pose = m.pose(Angle::deg(deg));
+        let (v, a) = polygons(&m, deg, 0.3);
+        let rod = pose.b() - pose.a();
+        let l = rod.norm();
+        assert!(v.ab().dot(&rod).abs() <= 1e-14 * l, "{deg}");
+        assert!((v.b().norm() - 1.0).abs() <= 1e-15);
+        assert!((a.b().norm() - 1.0).abs() <= 1e-15);
+        let normal = a.x() - a.b();
+        assert!(cross(&normal, &rod).abs() <= 1e-14 * l, "{deg}");
+        assert!(normal.dot(&rod) >= 0.0, "from A towards B");
+        assert!(
+            (normal.norm() - v.ab().norm_squared() / l).abs() <= 1e-14,
+            "{deg}"
+        );
+        assert!(a.tangential().dot(&rod).abs() <= 1e-14 * l, "{deg}");
+        let c = v.q().unwrap();
+        assert!((c - (v.a() + 0.3 * v.ab())).norm() <= 1e-15, "{deg}");
+        let c2 = a.q().unwrap();
+        assert!(
+            (c2 - (a.a() + 0.3 * (a.b() - a.a()))).norm() <= 1e-14,
+            "{deg}"
+        );
+        // The images are the coupler point's exact velocity and acceleration.
+        let p = CouplerPoint::new(0.3).unwrap();
+        assert!((c - p.derivative(&pose)).norm() <= 1e-14, "{deg}");
+        assert!((c2 - p.second_derivative(&pose)).norm() <= 1e-13, "{deg}");
+    }
+}
+
+#[test]
+fn the_polygons_give_the_numbers_of_sections_36_and_37() {
+    // The engine of §35 at 45° with the book's ω = 26.16 rad/s (V_c =
+    // 13.08 ft/s): V_p = 10.347 ft/s exact (§36, printed 10.348), the
+    // rod's 3.10 rad/s and −80.07 rad/s² exact (§37, printed 3.11 and
+    // −80.2; docs/seed-errata.md). At 250 rpm exactly, 10.354 ft/s.
+    let m = SliderCrank::in_line(0.5, 3.0).unwrap();
+    let w = 26.16;
+    let (v, a) = polygons(&m, 45.0, 0.5);
+    let vp = -w * v.slider_velocity_ratio();
+    assert!((vp - 10.347).abs() < 5e-4, "{vp}");
+    let rod = w * v.rod_angular_velocity_ratio();
+    assert!((rod - 3.10).abs() < 5e-3, "{rod}");
+    let alpha = w * w * a.rod_angular_acceleration_ratio();
+    assert!((alpha + 80.07).abs() < 5e-3, "{alpha}");
+    let exact = -rpm_to_omega(250.0) * v.slider_velocity_ratio();
+    assert!((exact - 10.354).abs() < 5e-4, "{exact}");
+}
+
+#[test]
+fn check_passes_the_polygons_within_four_ulps_times_kappa() {
+    for n in [1.02, 1.05, 2.0, 6.0, 60.0, 1e6] {
+        for r in [1e-9, 1.0, 1e9] {
+            let l = n * r;
+            for e in [0.0, 0.9 * (l - r), -0.9 * (l - r)] {
+                let m = SliderCrank::new(r, l, e).unwrap();
+                let report = sweep(&m, 720);
+                for (q, ulps, kappa, at) in &report.worst_ulps {
+                    if POLYGON.contains(q) {
+                        assert!(
+                            *ulps <= 4.0,
+                            "{m:?} {}: {ulps} ulps (κ {kappa}) at {at}°",
+                            q.name()
+                        );
+                    }
+                }
+                for (q, _, _, count) in &report.worst {
+                    if POLYGON.contains(q) {
+                        assert_eq!(*count, report.poses, "{}: at every pose", q.name());
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_acceleration_polygon_is_klein_s_figure_turned_about_c() {
+    // At the scale CB = ω²r the polygon o′b′xa′ is CBFG turned through
+    // 180° about C: b′ = −B, x = −F, a′ = −G (docs/polygons.md).
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 4.0, 1.5),
+        (1.0, 60.0, -20.0),
+    ] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for deg in angles() {
+            let pose = m.pose(Angle::deg(deg));
+            let (_, a) = polygons(&m, deg, 0.5);
+            let e_line = slider_crank::construct::VelocityLine::construct(&pose);
+            let kisch = slider_crank::construct::Kisch::construct(&pose, &e_line);
+            let (f, g) = (kisch.points().f(), kisch.points().g());
+            let tol = 1e-12 * r * (l / (l - r - e.abs())).powi(3);
+            assert!((a.b() + pose.b().coords).norm() <= tol, "{l} {deg}");
+            assert!(
+                (a.x() + f.coords).norm() <= tol,
+                "{l} {deg}: x {:?} F {f:?}",
+                a.x()
+            );
+            assert!((a.a() + g.coords).norm() <= tol, "{l} {deg}");
+        }
+    }
+}
+
+#[test]
+fn analyze_json_carries_the_polygons_readings() {
+    use slider_crank::construct::Reading;
+    let m = SliderCrank::new(1.0, 4.0, 0.5).unwrap();
+    let w = 10.0;
+    for deg in [0.0, 45.0, 90.0, 200.0] {
+        let reading = Reading::new(&m.pose(Angle::deg(deg)), w, None, 0.0).unwrap();
+        let json = reading.to_json(&m, &slider_crank::Units::default());
+        let p = &json["polygons"];
+        let exact = &json["analytic"];
+        let close = |a: &serde_json::Value, b: &serde_json::Value, scale: f64| {
+            (a.as_f64().unwrap() - b.as_f64().unwrap()).abs() <= 1e-12 * scale
+        };
+        assert!(close(&p["slider_velocity"], &exact["velocity"], w), "{deg}");
+        assert!(
+            close(&p["slider_acceleration"], &exact["acceleration"], w * w),
+            "{deg}"
+        );
+        assert!(
+            close(
+                &p["rod_angular_velocity"],
+                &exact["rod_angular_velocity"],
+                w
+            ),
+            "{deg}"
+        );
+        assert!(
+            close(
+                &p["rod_angular_acceleration"],
+                &exact["rod_angular_acceleration"],
+                w * w
+            ),
+            "{deg}"
+        );
+        assert_eq!(p["coupler"].as_f64(), Some(0.5));
+        // ob is the crank pin's velocity rω, o′b′ its acceleration ω²r.
+        let b = &p["velocity"]["b"];
+        let speed = b[0].as_f64().unwrap().hypot(b[1].as_f64().unwrap());
+        assert!((speed - w).abs() <= 1e-12 * w, "{deg}");
+    }
+}
