@@ -31,7 +31,9 @@ pub struct TikzOptions {
 
 impl TikzOptions {
     /// The picture wrapped in a LaTeX document of its own (an `article`
-    /// whose page is the figure's, by `geometry`; with pdfLaTeX Latin
+    /// whose page is the figure's, by `geometry`, the picture in a box of
+    /// no height at its top so that TeX's rounding never pushes it onto a
+    /// second page; with pdfLaTeX Latin
     /// Modern in T1, so that it comes at any size and `\`, `^`, `~` and
     /// `_` print as themselves), which pdfLaTeX and LuaLaTeX compile as it
     /// is; without it, the `tikzpicture` alone,
@@ -60,15 +62,24 @@ pub fn to_tikz(figure: &Figure, options: &TikzOptions) -> String {
          \\pagestyle{{empty}}\n\
          \\setlength{{\\topskip}}{{0pt}}\n\
          \\setlength{{\\parindent}}{{0pt}}\n\
-         \\begin{{document}}\n{picture}\\end{{document}}\n",
-        bp(w),
-        bp(h)
+         \\begin{{document}}\n\\vbox to 0pt{{\\hbox{{%\n{}%\n}}\\vss}}\n\\end{{document}}\n",
+        bp_up(w),
+        bp_up(h),
+        picture.trim_end()
     )
 }
 
 /// A page length in big points.
 fn bp(units: f64) -> String {
     fmt(units * BP_PER_UNIT)
+}
+
+/// A page's side in big points, rounded up to a thousandth: the page
+/// holds the picture whole (rounded down, a picture a hair taller than
+/// its page spilled onto a second).
+fn bp_up(units: f64) -> String {
+    let thousandths = (units * BP_PER_UNIT * 1000.0).ceil();
+    crate::number::plain(thousandths / 1000.0)
 }
 
 /// The `tikzpicture`: its colours, the page, then each panel.
@@ -301,7 +312,7 @@ mod tests {
             .unwrap();
         let picture = to_tikz(&figure, &TikzOptions::default());
         let document = to_tikz(&figure, &TikzOptions::default().standalone(true));
-        assert!(document.contains(&picture) && document.ends_with("\\end{document}\n"));
+        assert!(document.contains(picture.trim_end()) && document.ends_with("\\end{document}\n"));
         let size = format!(
             "paperwidth={}bp,paperheight={}bp",
             bp(figure.width()),
@@ -309,6 +320,13 @@ mod tests {
         );
         assert!(document.contains(&size), "{document}");
         assert!(!picture.contains("\\document"));
+    }
+
+    #[test]
+    fn a_page_holds_its_picture_whole() {
+        // 573.21 units are 429.9075 bp: a page of 429.9 bp was too short.
+        assert_eq!(bp_up(573.21), "429.908");
+        assert_eq!(bp_up(760.0), "570");
     }
 
     #[test]
