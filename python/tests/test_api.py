@@ -81,6 +81,7 @@ def test_the_polygons_read_the_exact_values() -> None:
     assert p["coupler"] == 0.5
     assert pose.to_dict()["polygons"] == p
     for construction in (pose.ritterhaus, pose.bennett):
+        assert construction is not None
         assert math.isclose(
             construction["acceleration"], pose.analytic.acceleration, rel_tol=1e-12
         )
