@@ -44,8 +44,9 @@ pub(crate) fn power_of_ten(k: i32) -> String {
 /// figures is the same.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum SetOn {
-    /// On a figure: a power of ten below 1e-9 and from 1e15, the times
-    /// sign set tight (`8.786×10⁻¹⁰¹`), a letter's room being small.
+    /// On a figure: a power of ten below 1e-4 and from 1e9, the times
+    /// sign set tight (`8.786×10⁻¹⁰¹`), a letter's room being small (a
+    /// length of 6.498e-9 was written with eight zeros).
     Figure,
     /// In a page's running text (the handout): a power of ten below 1e-4
     /// and from 1e9, the times sign spaced (`1.500 × 10¹⁰`).
@@ -57,7 +58,7 @@ impl SetOn {
     /// The magnitudes written in fixed notation.
     fn fixed(self) -> std::ops::Range<f64> {
         match self {
-            SetOn::Figure => 1e-9..1e15,
+            SetOn::Figure => 1e-4..1e9,
             SetOn::Page => 1e-4..1e9,
         }
     }
@@ -72,7 +73,7 @@ impl SetOn {
 }
 
 /// Four significant figures with a true minus sign on a figure ([`sig_on`]
-/// [`SetOn::Figure`]): below 1e-9 and from 1e15 a power of ten
+/// [`SetOn::Figure`]): below 1e-4 and from 1e9 a power of ten
 /// (`8.786×10⁻¹⁰¹`), never hundreds of digits or a tiny value written as
 /// zero. 0 and non-finite values write `0`.
 pub(crate) fn sig(x: f64) -> String {
@@ -158,8 +159,8 @@ mod page_tests {
         assert_eq!(short_on(250.0, SetOn::Page), "250");
         assert_eq!(short_on(0.5, SetOn::Page), "0.5");
         assert_eq!(short_on(1.5e10, SetOn::Page), "1.5 × 10¹⁰");
-        // The same number on a figure, tight and later to a power.
-        assert_eq!(sig_on(1.5e10, SetOn::Figure), "15000000000");
+        // The same number on a figure, tight.
+        assert_eq!(sig_on(1.5e10, SetOn::Figure), "1.500×10¹⁰");
         assert_eq!(short_on(-2e-10, SetOn::Figure), "−2×10⁻¹⁰");
     }
 
@@ -216,7 +217,8 @@ mod tests {
         assert_eq!(sig(13.0899), "13.09");
         assert_eq!(sig(242.04), "242.0");
         assert_eq!(sig(0.35301), "0.3530");
-        assert_eq!(sig(-0.00001), "\u{2212}0.00001000");
+        assert_eq!(sig(-0.00001), "\u{2212}1.000×10⁻⁵");
+        assert_eq!(sig(0.0001), "0.0001000");
         assert_eq!(sig(0.0), "0");
         assert_eq!(sig(12345.6), "12346");
         // Issue 9: no 309-digit integers, no tiny value written as 0.
@@ -224,6 +226,8 @@ mod tests {
         assert_eq!(sig(f64::MAX), "1.798×10³⁰⁸");
         assert_eq!(sig(-2.6487e102), "\u{2212}2.649×10¹⁰²");
         assert_eq!(sig(1e15), "1.000×10¹⁵");
-        assert_eq!(sig(1e-9), "0.000000001000");
+        // A length of 6.498e-9 on the polygons' notes had eight zeros.
+        assert_eq!(sig(6.498e-9), "6.498×10⁻⁹");
+        assert_eq!(sig(123456789.0), "123456789");
     }
 }
