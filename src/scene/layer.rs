@@ -87,6 +87,23 @@ impl Layer {
         Layer::Scales,
     ];
 
+    /// Whether it is one of the piston's acceleration constructions
+    /// (Klein's, Kisch's, Ritterhaus's, Bennett's), drawn in the
+    /// acceleration's hue and enlarged in a detail where small.
+    pub(crate) const fn is_acceleration(self) -> bool {
+        matches!(
+            self,
+            Layer::Klein | Layer::Kisch | Layer::Ritterhaus | Layer::Bennett
+        )
+    }
+
+    /// Whether it draws E, the velocity line CE (the velocity triangle,
+    /// the acceleration constructions, Ng's torque line OM = CE), so that
+    /// the scale notes read CE and the view holds E.
+    pub(crate) const fn draws_e(self) -> bool {
+        self.is_acceleration() || matches!(self, Layer::Velocity | Layer::Torque)
+    }
+
     /// The name used on the command line and in scene files.
     pub fn name(&self) -> &'static str {
         match self {

@@ -483,12 +483,7 @@ fn browse(browser: &str, file: &Path, args: &[&str]) -> Vec<u8> {
     let url = format!("file://{}", file.display());
     let dump = file.with_extension("out");
     let mut child = Command::new(browser)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--hide-scrollbars",
-        ])
+        .args(crate::browser::HEADLESS)
         .args(args)
         .arg(url)
         .stdout(std::fs::File::create(&dump).unwrap())

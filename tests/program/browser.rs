@@ -21,6 +21,15 @@ use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+/// The flags every test starts Chromium with: headless, without the
+/// sandbox (CI runs as root), the GPU or scroll bars.
+pub(crate) const HEADLESS: [&str; 4] = [
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--hide-scrollbars",
+];
+
 /// The width of the screen the pages are opened at, CSS px.
 const SCREEN: u32 = 1100;
 /// A paper the handout prints on: how pdfinfo names it, and its printable
@@ -90,11 +99,8 @@ fn chromium_at(
     url: &str,
 ) -> String {
     let out = Command::new(browser)
+        .args(HEADLESS)
         .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--hide-scrollbars",
             "--allow-file-access-from-files",
             &format!("--virtual-time-budget={budget}"),
             &format!("--window-size={width},{height}"),

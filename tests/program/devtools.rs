@@ -27,11 +27,8 @@ impl Browser {
     pub fn start(browser: &std::path::Path, (width, height): (u32, u32)) -> Self {
         let profile = tempfile::tempdir().unwrap();
         let mut child = Command::new(browser)
+            .args(crate::browser::HEADLESS)
             .args([
-                "--headless",
-                "--no-sandbox",
-                "--disable-gpu",
-                "--hide-scrollbars",
                 "--no-first-run",
                 "--remote-debugging-port=0",
                 &format!("--user-data-dir={}", profile.path().display()),

@@ -236,7 +236,10 @@ fn faults(tikz: &Path, program: &Path, labels: &[(char, (f64, f64))]) -> Vec<Str
         ));
     }
     for &(c, at) in labels {
+        // A label not found in the program's PDF is a fault, not a
+        // letter passed unchecked.
         let Some((want, _)) = nearest(&pw, c, at) else {
+            faults.push(format!("label {c:?} at {at:?}: no such word in the PDF"));
             continue;
         };
         match nearest(&tw, c, want.start()) {

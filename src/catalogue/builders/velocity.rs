@@ -106,14 +106,11 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     // them whole; a detail of the crowded construction (a short rod) is
     // left as the scene drew it, E′ lettered on the main view.
     let frame = loops(ctx.mechanism);
+    // Within a unit of the rectangle: the frame's corners round to it.
     let holds = |d: &Panel, p: Point| {
-        let q = d.transform().apply(p);
         let r = d.rect();
-        let slack = 1.0;
-        q.x >= r.x - slack
-            && q.x <= r.x + r.width + slack
-            && q.y >= r.y - slack
-            && q.y <= r.y + r.height + slack
+        let grown = PageRect::new(r.x - 1.0, r.y - 1.0, r.width + 2.0, r.height + 2.0);
+        grown.contains(d.transform().apply(p))
     };
     let of_loops = |d: &Panel| holds(d, frame.min()) && holds(d, frame.max());
     let details: Vec<Panel> = base.panels().iter().skip(1).cloned().collect();
@@ -133,33 +130,39 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
 }
 
 /// The world frame of the polar diagram's loops of `m` over a turn: E′
-/// at ±CE along the crank, and the crank circle.
-fn loops(m: SliderCrank) -> Frame {
+/// at ±CE along the crank (every half degree).
+fn polar_extent(m: &SliderCrank) -> Frame {
     let ce = |p: &Pose| -p.position_rate();
-    let (x0, x1) = extent(&m, |p| ce(p) * p.angle().cos());
-    let (y0, y1) = extent(&m, |p| ce(p) * p.angle().sin());
-    let r = m.crank();
+    let (x0, x1) = extent(m, |p| ce(p) * p.angle().cos());
+    let (y0, y1) = extent(m, |p| ce(p) * p.angle().sin());
     Frame::new(
-        Point::new(x0.min(-x1).min(-r), y0.min(-y1).min(-r)),
-        Point::new(x1.max(-x0).max(r), y1.max(-y0).max(r)),
+        Point::new(x0.min(-x1), y0.min(-y1)),
+        Point::new(x1.max(-x0), y1.max(-y0)),
+    )
+}
+
+/// The polar diagram's loops of `m` and the crank circle: the subject
+/// of the scene's detail where a long rod draws the crank small.
+fn loops(m: SliderCrank) -> Frame {
+    let (p, r) = (polar_extent(&m), m.crank());
+    Frame::new(
+        Point::new(p.min().x.min(-r), p.min().y.min(-r)),
+        Point::new(p.max().x.max(r), p.max().y.max(r)),
     )
 }
 
 /// The world frame the two diagrams of `m` reach over a turn (every
-/// half degree): the polar diagram's loops, ±CE along the crank, and the
-/// distance base, E″ at the height CE over A. At short rods CE exceeds
-/// the crank: a view fitted to the mechanism alone sent the curves off
-/// the top of the page and through the detail's frame.
+/// half degree): the polar diagram's loops, and the distance base, E″ at
+/// the height CE over A. At short rods CE exceeds the crank: a view
+/// fitted to the mechanism alone sent the curves off the top of the page
+/// and through the detail's frame.
 fn reach(m: SliderCrank) -> Frame {
-    let ce = |p: &Pose| -p.position_rate();
-    // E′ at ±CE along the crank, E″ at (x_A, CE).
-    let (x0, x1) = extent(&m, |p| ce(p) * p.angle().cos());
-    let (y0, y1) = extent(&m, |p| ce(p) * p.angle().sin());
+    let p = polar_extent(&m);
     let (s0, s1) = extent(&m, |p| p.position());
-    let (c0, c1) = extent(&m, ce);
+    let (c0, c1) = extent(&m, |p| -p.position_rate());
     Frame::new(
-        Point::new(x0.min(-x1).min(s0), y0.min(-y1).min(c0)),
-        Point::new(x1.max(-x0).max(s1), y1.max(-y0).max(c1)),
+        Point::new(p.min().x.min(s0), p.min().y.min(c0)),
+        Point::new(p.max().x.max(s1), p.max().y.max(c1)),
     )
 }
 

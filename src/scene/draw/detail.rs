@@ -153,14 +153,7 @@ fn bounds(pts: &[Point]) -> (Point, Point) {
 /// region only where the core still gets [`CORE_TARGET`] with it.
 pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let scene = ctx.scene;
-    let acceleration = [
-        Layer::Klein,
-        Layer::Kisch,
-        Layer::Ritterhaus,
-        Layer::Bennett,
-    ]
-    .iter()
-    .any(|l| scene.has(*l));
+    let acceleration = scene.layers().iter().any(|l| l.is_acceleration());
     let velocity = scene.has(Layer::Velocity);
     if !scene.has(Layer::Mechanism) {
         return None;

@@ -105,17 +105,7 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
 /// near (see [`d_is_near`]).
 fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx) {
     let scene = ctx.scene;
-    let wants_e = [
-        Layer::Velocity,
-        Layer::Klein,
-        Layer::Kisch,
-        Layer::Ritterhaus,
-        Layer::Bennett,
-        Layer::Torque,
-        Layer::VirtualCentres,
-    ]
-    .iter()
-    .any(|l| scene.has(*l));
+    let wants_e = (scene.layers().iter()).any(|l| l.draws_e() || *l == Layer::VirtualCentres);
     if wants_e {
         b.add(ctx.main.e().e());
     }

@@ -583,9 +583,7 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
     for layer in ctx.scene.layers() {
         canvas.set_hue(match layer {
             Layer::Velocity | Layer::Motion => Some(Hue::Velocity),
-            Layer::Klein | Layer::Kisch | Layer::Ritterhaus | Layer::Bennett => {
-                Some(Hue::Acceleration)
-            }
+            l if l.is_acceleration() => Some(Hue::Acceleration),
             Layer::Torque => Some(Hue::Force),
             _ => None,
         });

@@ -2,6 +2,7 @@
 //! turning arrows, the velocity v_c of the crank pin and v_p of the slider
 //! as arrows drawn to one scale.
 
+use super::torque::{ALONG_THE_ROD, PIN_SHORT};
 use super::{LayerCtx, NamedArrow};
 use crate::figure::{Hue, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
@@ -9,12 +10,6 @@ use crate::scene::canvas::Canvas;
 
 /// Length of the arrow v_c, page units; v_p is drawn to the same scale.
 const VC_ARROW: f64 = 54.0;
-/// The angle (radians) between v_c and the rod within which v_c, drawn
-/// from the pin, would lie along the rod: 20°.
-const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
-/// How far short of the pin (page units) an arrow that comes to it stops:
-/// clear of its circle.
-const PIN_SHORT: f64 = 7.0;
 /// Shortest velocity arrow drawn, page units.
 const MIN_ARROW: f64 = 14.0;
 /// Distance of the arrow v_p beyond the guide, page units (past the

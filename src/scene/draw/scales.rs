@@ -23,16 +23,7 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         sig(r * w),
         sig(w)
     ))];
-    let uses_e = [
-        Layer::Velocity,
-        Layer::Klein,
-        Layer::Kisch,
-        Layer::Ritterhaus,
-        Layer::Bennett,
-        Layer::Torque,
-    ]
-    .iter()
-    .any(|x| scene.has(*x));
+    let uses_e = scene.layers().iter().any(|l| l.draws_e());
     if uses_e {
         let ce = ctx.main.e().ce();
         let speed = w * ce.abs();

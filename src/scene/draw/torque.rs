@@ -214,7 +214,11 @@ fn beside_the_rod(u: Vector, rod: Vector) -> Vector {
 
 /// The angle (radians) between F_c's arrow and the rod within which the
 /// arrow is set beside the rod ([`beside_the_rod`]): 20°.
-const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
+pub(super) const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
+
+/// How far short of a pin (page units) an arrow that comes to it on its
+/// line stops: clear of its circle.
+pub(super) const PIN_SHORT: f64 = 7.0;
 
 /// The force arrows, their page lengths turned to world lengths by
 /// `world`: F_c = T / r on the crank pin, perpendicular to the crank in
@@ -235,7 +239,11 @@ pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArr
         // Short of the pin's circle on its line; beside the rod, level
         // with the pin.
         let side = beside_the_rod(u, a - b);
-        let short = if side == Vector::zeros() { 7.0 } else { 2.0 };
+        let short = if side == Vector::zeros() {
+            PIN_SHORT
+        } else {
+            2.0
+        };
         let head = b - u * world(short) + side * world(ALONGSIDE);
         let tail = head - u * world(0.75 * FORCE_ARROW);
         out.push(NamedArrow {
