@@ -9,7 +9,7 @@
 use crate::common;
 use crate::plate;
 
-use plate::{Label, Panel, Plate, Pt, Rect, Seg};
+use plate::{Label, Panel, Plate, Pt, Rect, Seg, Stroke};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
 use std::collections::{BTreeMap, BTreeSet};
@@ -57,6 +57,7 @@ const RULE_SIZE: &str = "7 text large enough";
 const RULE_FILL: &str = "8 page filled";
 const RULE_SUBJECT: &str = "9 subject readable";
 const RULE_ALONG: &str = "10 no arrow along a link";
+const RULE_CIRCLE: &str = "11 guides off the crank circle";
 
 /// An arrow's shaft lies along a link when their directions differ by
 /// less than this (degrees)…
@@ -629,6 +630,68 @@ fn along(shaft: &Seg, link: &Seg) -> bool {
     on as f64 / (n + 1) as f64 >= ALONG_SHARE
 }
 
+/// How far (px) past the block's ends a guide may run inside the crank
+/// circle, beyond 0.15 r: the guides' run-out past the block's travel,
+/// and a little for the strokes' ends.
+const GUIDE_RUN_OUT: f64 = 3.0;
+
+/// Rule 11: in the main view, no guide runs inside the crank circle (the
+/// pin's path) between the block and the crank centre, past the block's
+/// short run-out: at a rod of little more than a crank, guides laid over
+/// the whole travel ran across the circle, the crank and its bearing.
+/// The guide beyond the block, away from the crank, carries the block's
+/// travel and stays.
+fn guides_across_circle(plate: &Plate) -> Vec<Failure> {
+    let Some(panel) = plate.panels.iter().find(|p| p.prefix.is_empty()) else {
+        return Vec::new();
+    };
+    let of = |name: &str| panel.strokes.iter().find(|s| s.id == name);
+    let around = |s: &Stroke| Rect::around(s.segs.iter().flat_map(|g| [g.0, g.1]));
+    let (Some(circle), Some(block)) = (
+        of("circle-crank").and_then(around),
+        of("block-slider").and_then(around),
+    ) else {
+        return Vec::new();
+    };
+    let radius = (circle.x1 - circle.x0) / 2.0;
+    let centre = ((circle.x0 + circle.x1) / 2.0, (circle.y0 + circle.y1) / 2.0);
+    let run_out = 0.15 * radius + GUIDE_RUN_OUT;
+    // Beside the block on the crank's side, past the run-out.
+    let towards = match centre.0 > (block.x0 + block.x1) / 2.0 {
+        true => (block.x1 + run_out, f64::INFINITY),
+        false => (f64::NEG_INFINITY, block.x0 - run_out),
+    };
+    let mut out = Vec::new();
+    for guide in (panel.strokes.iter()).filter(|s| s.id.starts_with("guide-")) {
+        let inside: f64 = (guide.segs.iter())
+            .map(|g| within_circle_along(g, centre, radius - 1.0, towards))
+            .sum();
+        if inside > 2.0 {
+            out.push(fail(
+                RULE_CIRCLE,
+                format!("{} runs {inside:.0} px inside the circle", guide.id),
+            ));
+        }
+    }
+    out
+}
+
+/// The length (px) of `g` inside the circle about `centre` of `radius`
+/// and within the stretch `along` x (sampled every half pixel).
+fn within_circle_along(g: &Seg, centre: Pt, radius: f64, along: (f64, f64)) -> f64 {
+    let n = (length(g) * 2.0).ceil().max(1.0) as usize;
+    let step = length(g) / n as f64;
+    (0..n)
+        .map(|k| {
+            let t = (k as f64 + 0.5) / n as f64;
+            (g.0.0 + t * (g.1.0 - g.0.0), g.0.1 + t * (g.1.1 - g.0.1))
+        })
+        .filter(|p| (p.0 - centre.0).hypot(p.1 - centre.1) < radius)
+        .filter(|p| (along.0..=along.1).contains(&p.0))
+        .count() as f64
+        * step
+}
+
 /// Rule 8: the ink of the mechanism panels spans at least [`FILL`] of
 /// the page's width (a short-rod drawing took a third of its page).
 fn page_unfilled(plate: &Plate) -> Vec<Failure> {
@@ -662,6 +725,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
     let mut out = guides_crossed(plate);
     out.extend(page_unfilled(plate));
     out.extend(block_off_guides(plate));
+    out.extend(guides_across_circle(plate));
     out.extend(labels_overlap(plate));
     out.extend(lines_through_labels(plate));
     out.extend(labels_far(plate));
@@ -1170,6 +1234,43 @@ fn a_guide_stopping_at_the_rod_touches_it_without_crossing() {
     // The rod is at y = 140 where x = 108.
     let svg = page(&mechanism_with_guide_to(108.0), NOTE, WIDE_POINTS);
     assert_eq!(rules(&svg, true), Vec::<&str>::new());
+}
+
+/// A crank circle about (300, 150) of radius 60, and a block from `x0`
+/// to `x1` in the channel.
+fn circle_and_block(x0: f64, x1: f64) -> String {
+    format!(
+        r##"<circle id="circle-crank" class="curve" cx="300" cy="150" r="60" fill="none" stroke="#000"/>
+<path id="block-slider" class="link" d="M{x0} 140 L{x1} 140 L{x1} 160 L{x0} 160 Z" stroke="#000" fill="none"/>"##
+    )
+}
+
+#[test]
+fn a_guide_across_the_crank_circle_is_caught_unless_the_block_stands_there() {
+    let with = |end: f64, x0: f64, x1: f64| {
+        let body = mechanism_with_guide_to(end) + &circle_and_block(x0, x1);
+        rules(&page(&body, NOTE, WIDE_POINTS), false).contains(&RULE_CIRCLE)
+    };
+    assert!(
+        !with(CLEAN_MECHANISM_END, 50.0, 70.0),
+        "a guide short of the circle"
+    );
+    assert!(
+        with(330.0, 50.0, 70.0),
+        "a guide across the circle, the block far off"
+    );
+    assert!(
+        with(330.0, 230.0, 250.0),
+        "past the block towards the crank centre"
+    );
+    assert!(
+        !with(330.0, 245.0, 325.0),
+        "the block over the whole stretch inside"
+    );
+    assert!(
+        !with(250.0, 235.0, 241.0),
+        "the block's run-out towards the crank"
+    );
 }
 
 #[test]

@@ -90,14 +90,52 @@ fn pieces(whole: Span, mut openings: Vec<Span>) -> Vec<Span> {
     out
 }
 
-/// The guides under the block over its whole travel, each hatched on
+/// How far (page units) a guide that stops short of the crank circle
+/// keeps from it.
+const CLEAR_OF_CIRCLE: f64 = 6.0;
+
+/// The stretch the guides run over: the block's whole travel
+/// ([`crate::scene::draw::Sizes::guides`]), save that they stop short of
+/// the crank circle unless a block drawn (the pose's, or a ghost's)
+/// stands on them there. A rod of little more than a crank slides its
+/// block into the circle; a guide laid under the whole travel would run
+/// across the circle, the crank and its bearing, where the pin could not
+/// pass it. A view held over a series of poses keeps the whole travel,
+/// so the guides do not change from frame to frame.
+fn guide_stretch(ctx: &LayerCtx, canvas: &Canvas, ghosts: &[Constructions]) -> Span {
+    let whole = ctx.sizes.guides();
+    if ctx.scene.held().is_some() {
+        return whole;
+    }
+    let m = ctx.scene.mechanism();
+    let (r, c) = (m.crank(), ctx.main.pose().c());
+    let h = ctx.sizes.block_half_height;
+    // The nearest the channel between the guides comes to the line of
+    // the crank centre: where the circle reaches farthest along it.
+    let (lo, hi) = (m.offset() - h - c.y, m.offset() + h - c.y);
+    let nearest = if lo <= 0.0 && hi >= 0.0 {
+        0.0
+    } else {
+        lo.abs().min(hi.abs())
+    };
+    if nearest >= r {
+        return whole;
+    }
+    let edge = c.x + (r * r - nearest * nearest).sqrt() + canvas.world(CLEAR_OF_CIRCLE);
+    let margin = 0.15 * r + ctx.sizes.block_half_length;
+    let blocks = std::iter::once(ctx.main).chain(ghosts.iter());
+    let first = blocks.map(|k| k.pose().a().x - margin).fold(edge, f64::min);
+    (whole.0.max(first), whole.1)
+}
+
+/// The guides under the block over [`guide_stretch`], each hatched on
 /// its outer side and broken where [`openings`] says; pieces shorter
 /// than [`GUIDE_MIN`] are left out. Ids `guide-upper`, `guide-upper-2`,
 /// … in order along the stroke, each with its `hatch-` twin.
-fn guides(ctx: &LayerCtx, canvas: &mut Canvas) {
+fn guides(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let e = m.offset();
-    let whole = ctx.sizes.guides();
+    let whole = guide_stretch(ctx, canvas, ghosts);
     let h = ctx.sizes.block_half_height;
     for (name, y, side) in [("upper", e + h, 1.0), ("lower", e - h, -1.0)] {
         let drawn: Vec<Span> = pieces(whole, openings(ctx, canvas, y, side, false))
@@ -167,8 +205,8 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
     );
 
     // Guides with their hatching on the outside, under the block over
-    // its whole travel.
-    guides(ctx, canvas);
+    // its travel outside the crank circle.
+    guides(ctx, ghosts, canvas);
 
     // Ghost poses first, so the main pose is drawn over them.
     draw_ghosts(ctx, ghosts, canvas);
