@@ -43,6 +43,14 @@ use markup::{path, polyline_d};
 pub use placed::{PlacedFigure, PlacedPanel};
 use text::{ink_box, starts_italic, text_node};
 
+/// Two joints nearer than this many ems inside one small detail's frame
+/// (its sides under [`SMALL_FRAME_EMS`]) are lettered in the detail only:
+/// on the main view their letters would pile on each other and on the
+/// frame's magnification (the crank of a long rod, a few units across).
+const CROWDED_EMS: f64 = 2.0;
+/// A detail's frame on the main view with no side this many ems long is
+/// too small to letter two pins beside it.
+const SMALL_FRAME_EMS: f64 = 4.0;
 /// The farthest a label's glyphs may be put from its anchor, in font
 /// sizes: 1.5 em, less the side bearing (up to about 0.15 em) by which an
 /// italic letter's ink sits inside its advance, less a margin.
@@ -388,7 +396,7 @@ impl PanelLayout<'_> {
         let mut boxes = Vec::new();
         for (p, at) in order.into_iter().zip(placed) {
             let others = others(p, &self.points);
-            if !self.left_to_detail(p, &at, (joints.iter()).chain(&others)) {
+            if !self.left_to_detail(p, &at, &joints, (joints.iter()).chain(&others)) {
                 nodes.extend(self.label_nodes(p, &at));
                 boxes.push(at.bounds);
             }
@@ -418,19 +426,36 @@ impl PanelLayout<'_> {
     /// Whether a label is left out here and to the detail: a joint's
     /// letter on the main view, where the pin lies inside a detail's
     /// frame (the detail enlarges everything in its frame and letters the
-    /// pin there, clear), that is crossed by a line that stays or stands
-    /// nearer another of the `near` points (the other joints, the points
-    /// drawn over an em away) than its own by more than [`NEARER`] (two
-    /// pins a few units apart, A's letter beyond C).
+    /// pin there, clear), that is crossed by a line that stays, shares
+    /// a small frame with another of the `joints` within [`CROWDED_EMS`]
+    /// (the crank of a long rod, a few units across: its letters piled on
+    /// the frame's magnification), or stands nearer another of the `near`
+    /// points (the other joints, the points drawn over an em away) than
+    /// its own by more than [`NEARER`] (two pins a few units apart, A's
+    /// letter beyond C).
     fn left_to_detail<'p>(
         &self,
         p: &Pending,
         at: &Placed,
+        joints: &[Point],
         mut near: impl Iterator<Item = &'p Point>,
     ) -> bool {
+        if !self.in_detail_frame(p) {
+            return false;
+        }
         let own = at.bounds.distance_to(p.anchor);
+        let crowded = || {
+            joints.iter().any(|&q| {
+                q != p.anchor
+                    && (q - p.anchor).norm() < CROWDED_EMS * p.size
+                    && (self.detail_marks.iter()).any(|m| {
+                        let side = (m.max - m.min).max();
+                        m.holds(p.anchor) && m.holds(q) && side < SMALL_FRAME_EMS * p.size
+                    })
+            })
+        };
         let mut nearer = || near.any(|&q| q != p.anchor && at.bounds.distance_to(q) + NEARER < own);
-        self.in_detail_frame(p) && (at.lasting || nearer())
+        at.lasting || crowded() || nearer()
     }
 
     /// Whether a label is a joint's letter on the main view whose pin

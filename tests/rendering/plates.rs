@@ -1567,8 +1567,10 @@ fn fig_62_with_a_small_crank_marks_its_angles_in_a_detail() {
 #[test]
 fn a_small_crank_gets_a_detail_that_carries_its_marks() {
     // l = 50 r: the crank is a few units on the page. The detail draws
-    // θ, β, the torque arrow and M's letter; the main view only the links,
-    // pins and forces there.
+    // θ, β, the torque arrow, M's letter and the crank's pins' letters
+    // (on the main view O's and C's would pile on the frame's
+    // magnification); the main view only the links, pins and forces
+    // there.
     let svg = ng_fig_1(1.0, 50.0, 220.0);
     assert_detail_carries(
         &svg,
@@ -1578,14 +1580,10 @@ fn a_small_crank_gets_a_detail_that_carries_its_marks() {
             "torque-T",
             "label-M",
             "value-T",
-        ],
-        &[
-            "point-O",
             "label-O",
-            "point-C",
-            "force-Fp",
-            "detail-point-O",
+            "label-C",
         ],
+        &["point-O", "point-C", "force-Fp", "detail-point-O"],
     );
     // Ng's own rig (its crank about 95 units on the page) needs none.
     let own = ng_fig_1(25.0, 72.0, 60.0);
@@ -1945,9 +1943,10 @@ fn a_letter_crossed_anyway_goes_onto_hatching_instead() {
     // guides, E' on C and E" on A, four letters. Kept off the hatching,
     // two of them had no place clear; placed again, C's sat on the upper
     // guide and A's beside C. Where a placing leaves a letter crossed,
-    // one more takes hatching for what it is, a line that opens: A's,
-    // E''s and E"'s letters go over the upper guide's hatching, C's
-    // beside C.
+    // one more takes hatching for what it is, a line that opens: E''s
+    // and E"'s letters go over the upper guide's hatching. A's and C's,
+    // within 2 em of each other in the small frame of the detail, are
+    // the detail's.
     let plate = plate_at("fig-64-velocity-diagrams", 1.08, 0.0, 170.0);
     let main = &plate.panels[0];
     let letter = |l: &str| {
@@ -1956,13 +1955,19 @@ fn a_letter_crossed_anyway_goes_onto_hatching_instead() {
         label.unwrap_or_else(|| panic!("{id}")).rect
     };
     let at = |l: &str| plate.point(main, l).unwrap_or_else(|| panic!("{l}"));
-    for (own, other) in [("A", "C"), ("C", "A")] {
+    for (own, other) in [("E1", "E2"), ("E2", "E1")] {
         let r = letter(own);
         let (near, far) = (r.distance_to(at(own)), r.distance_to(at(other)));
         assert!(
             near < far,
             "{own}'s letter {near:.1} from {own}, {far:.1} from {other}"
         );
+    }
+    let detail = &plate.panels[1];
+    for l in ["A", "C"] {
+        assert!(!main.labels.iter().any(|x| x.id == format!("label-{l}")));
+        let id = format!("detail-label-{l}");
+        assert!(detail.labels.iter().any(|x| x.id == id), "{id}");
     }
     assert_eq!(check(&plate, false), [], "Fig. 64 at 170°");
 }
@@ -1985,8 +1990,9 @@ fn a_pin_s_letter_goes_inside_its_block_enlarged_in_a_detail() {
 fn ng_fig_1_details_its_crank_where_the_pins_crowd() {
     // l = 1.05 r, 160°: P within 16 units of O, inside the torque arrow,
     // with M and T: O's letter sat on the crank and the rod. The marks
-    // about the crank go to a detail about O and P; O and P keep their
-    // letters on the main view.
+    // about the crank go to a detail about O and P, and so do O's and
+    // P's letters: within 2 em of each other in a small frame, they
+    // would pile on it on the main view.
     let plate = plate_at("ng-fig-1-torque", 1.05, 0.0, 160.0);
     let (main, detail) = (&plate.panels[0], &plate.panels[1]);
     assert!(
@@ -1998,8 +2004,10 @@ fn ng_fig_1_details_its_crank_where_the_pins_crowd() {
         "no torque arrow in the detail"
     );
     for l in ["O", "P"] {
-        assert!(main.labels.iter().any(|x| x.id == format!("label-{l}")));
+        assert!(!main.labels.iter().any(|x| x.id == format!("label-{l}")));
         assert!(detail.markers.contains_key(l), "{l} not in the detail");
+        let id = format!("detail-label-{l}");
+        assert!(detail.labels.iter().any(|x| x.id == id), "{id}");
     }
     assert_eq!(check(&plate, false), [], "Ng's Fig. 1 at 160°");
 }
@@ -2133,7 +2141,8 @@ fn a_pin_s_letter_with_no_clear_place_is_left_to_the_detail() {
     // Figs. 66 and 67 at l = 1.1 r, e = 0.08 r, 210°: A and C inside the
     // detail's frame, HG beside C. Within a letter's reach of C nothing
     // was clear and C's letter sat on HG. The detail, which enlarges C,
-    // letters it; the main view now leaves it there.
+    // letters it; the main view now leaves it there, and A's with it (A
+    // and C within 2 em in a small frame).
     for figure in ["fig-66-kisch", "fig-67-example"] {
         let plate = plate_at(figure, 1.1, 0.08, 210.0);
         let (main, detail) = (&plate.panels[0], &plate.panels[1]);
@@ -2142,8 +2151,12 @@ fn a_pin_s_letter_with_no_clear_place_is_left_to_the_detail() {
             !has(main, "label-C"),
             "{figure}: C lettered on the main view"
         );
-        assert!(has(main, "label-A"), "{figure}: A's letter left too");
+        assert!(
+            !has(main, "label-A"),
+            "{figure}: A's letter on the main view"
+        );
         assert!(has(detail, "detail-label-C"), "{figure}: C unlettered");
+        assert!(has(detail, "detail-label-A"), "{figure}: A unlettered");
         assert_eq!(check(&plate, true), [], "{figure} at 210°");
     }
 }
