@@ -150,6 +150,7 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
     let effort = |panel: &Panel, block: Option<Point>| {
         torque_arc(
             pose.c(),
+            pose.b(),
             block,
             f.at.crank_effort,
             panel.transform().scale(),
@@ -288,11 +289,12 @@ fn inertia_arrow(
 }
 
 /// The crank effort `t` as the scene's torque arrow about the crank
-/// centre `c` ([`torque_arrow`]), its gap facing the slider's block where
+/// centre `c` ([`torque_arrow`]), its letter clear of the crank to the
+/// pin `b`, its gap facing the slider's block where
 /// the block comes within the arc's reach (`block`, its nearest point, a
 /// short rod near the inner dead centre). Nothing at a dead centre, where
 /// T = 0.
-fn torque_arc(c: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
+fn torque_arc(c: Point, b: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
     if t == 0.0 || scale.is_nan() || scale <= 0.0 {
         return Vec::new();
     }
@@ -300,7 +302,9 @@ fn torque_arc(c: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
     let gap = block
         .filter(|b| (b - c).norm() < radius + ROOM / scale)
         .map(|b| (b.y - c.y).atan2(b.x - c.x));
-    torque_arrow(c, t, radius, gap).to_vec()
+    // Its letter clear of the crank.
+    let crank = (b.y - c.y).atan2(b.x - c.x);
+    torque_arrow(c, t, radius, gap, &[crank]).to_vec()
 }
 
 /// (b) The triangle of forces at the cross-head: F_i = F_Q + F_N, to its

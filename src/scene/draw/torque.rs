@@ -116,7 +116,15 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         let near = ca.norm() - block < canvas.world(TORQUE_REACH);
         let gap = near.then(|| ca.y.atan2(ca.x));
         let radius = canvas.world(TORQUE_RADIUS);
-        for item in torque_arrow(c, scene.torque(), radius, gap) {
+        // The crank, θ's letter on its mark's bisector, and the rod where
+        // it passes within the arc's reach (a short rod or an offset).
+        let crank = (b - c).y.atan2((b - c).x);
+        let reach = canvas.world(TORQUE_REACH);
+        let avoid: Vec<f64> = [crank, 0.5 * crank.rem_euclid(std::f64::consts::TAU)]
+            .into_iter()
+            .chain(within(c, reach, b, a))
+            .collect();
+        for item in torque_arrow(c, scene.torque(), radius, gap, &avoid) {
             canvas.push_item(item);
         }
     }
@@ -149,9 +157,19 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
 /// gap is below the centre (above it for a clockwise torque) and holds
 /// the letter; or it is centred on the world direction `gap` where one is
 /// given (the slider's block, which the arc would otherwise cross), and
-/// the letter goes beside the arc's middle. A zero torque turns
+/// the letter goes beside the arc where it runs farthest from the world
+/// directions `avoid` and the gap's (the crank, θ's letter, the rod: at
+/// the inner dead centre the arc's middle lies on the crank). A gap that
+/// one of `avoid` runs through (the crank at 270°, a rod passing below
+/// the centre) gives its letter up in the same way. A zero torque turns
 /// counter-clockwise (a caller that draws no arrow for it leaves it out).
-pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [Item; 2] {
+pub(crate) fn torque_arrow(
+    c: Point,
+    t: f64,
+    radius: f64,
+    gap: Option<f64>,
+    avoid: &[f64],
+) -> [Item; 2] {
     let turn = if t >= 0.0 { 1.0 } else { -1.0 };
     let sweep = turn * TORQUE_SWEEP;
     // The gap's middle is half a sweep and half a turn past the start.
@@ -159,11 +177,19 @@ pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [
         Some(g) => g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI),
         None => -0.9 * turn,
     };
-    // T in the gap, or, where the gap holds the block, beside the arc's
-    // middle.
+    // T in the gap, or, where the gap holds the block or something to
+    // avoid, beside the arc clear of what stands about the centre.
+    let middle = start + 0.5 * sweep + std::f64::consts::PI;
+    let half_gap = 0.5 * (std::f64::consts::TAU - TORQUE_SWEEP);
     let mid = match gap {
-        Some(_) => start + 0.5 * sweep,
-        None => start + 0.5 * sweep + std::f64::consts::PI,
+        Some(g) => {
+            let avoid: Vec<f64> = avoid.iter().copied().chain([g]).collect();
+            start + sweep * clearest_share(start, sweep, &avoid)
+        }
+        None if avoid.iter().any(|&a| apart(a, middle) < half_gap) => {
+            start + sweep * clearest_share(start, sweep, avoid)
+        }
+        None => middle,
     };
     [
         Item::new(
@@ -188,6 +214,39 @@ pub(crate) fn torque_arrow(c: Point, t: f64, radius: f64, gap: Option<f64>) -> [
             },
         ),
     ]
+}
+
+/// The share of the arc from `start` through `sweep` (radians) at which it
+/// runs farthest, in angle, from every direction of `avoid`: the arc's
+/// middle where nothing is to be avoided, or among equals (in steps of a
+/// twentieth, within its middle two fifths, clear of the arrowhead, the
+/// tail and what stands in the gap).
+fn clearest_share(start: f64, sweep: f64, avoid: &[f64]) -> f64 {
+    let clearance = |k: f64| {
+        let at = start + sweep * k;
+        avoid.iter().map(|&a| apart(at, a)).fold(f64::INFINITY, f64::min)
+    };
+    // From the middle outwards, so that the middle wins among equals.
+    let shares = (0..=4).flat_map(|i| [0.5 + 0.05 * f64::from(i), 0.5 - 0.05 * f64::from(i)]);
+    shares.fold(0.5, |best, k| match clearance(k) > clearance(best) + 1e-9 {
+        true => k,
+        false => best,
+    })
+}
+
+/// The angle (radians, 0 to π) between the directions `a` and `b`.
+fn apart(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(std::f64::consts::TAU);
+    d.min(std::f64::consts::TAU - d)
+}
+
+/// The world directions from `c` of the points of the segment `p q`
+/// that come within `radius` of it (every thirty-second of the segment).
+fn within(c: Point, radius: f64, p: Point, q: Point) -> impl Iterator<Item = f64> {
+    (0..=32)
+        .map(move |k| p + (q - p) * (f64::from(k) / 32.0) - c)
+        .filter(move |v| v.norm() < radius && v.norm() > 0.0)
+        .map(|v| v.y.atan2(v.x))
 }
 
 /// How far F_c is set off its line, page units, where that line runs
