@@ -108,6 +108,9 @@ pub struct Plot {
     /// Blocks try the bottom corners first (the band [`Plot::band`] keeps
     /// free for them).
     below: bool,
+    /// Blocks try the left corners before the right (under notes set at
+    /// the left, as theirs).
+    left_first: bool,
     /// Where the legend's top left corner goes when it is set below or
     /// beside the plot area rather than in a corner of it
     /// ([`Plot::legend_clear_of_the_curves`]).
@@ -198,6 +201,7 @@ impl Plot {
             caption: Vec::new(),
             world: None,
             below: false,
+            left_first: false,
             legend_at: None,
         })
     }
@@ -257,6 +261,7 @@ impl Plot {
             caption: Vec::new(),
             world: None,
             below: false,
+            left_first: false,
             legend_at: None,
         }
     }
@@ -265,6 +270,15 @@ impl Plot {
     /// free there (see [`Plot::band`]), before the other corners.
     pub(crate) fn blocks_below(mut self) -> Self {
         self.below = true;
+        self
+    }
+
+    /// As [`Plot::blocks_below`], the bottom left corner first: a legend in
+    /// a band of its own under notes set at the left reads with them, not
+    /// with what is drawn below it.
+    pub(crate) fn blocks_below_at_left(mut self) -> Self {
+        self.below = true;
+        self.left_first = true;
         self
     }
 
@@ -996,7 +1010,12 @@ impl Plot {
                     (true, 1) => 0,
                     _ => j,
                 };
-                let order = (i.min(2) + row) as f64 * 0.01;
+                let column = match (self.left_first, i) {
+                    (true, 0) => 1,
+                    (true, 1) => 0,
+                    _ => i,
+                };
+                let order = (column.min(2) + row) as f64 * 0.01;
                 let score = covered + if clash { 1e6 } else { 0.0 } + order;
                 if best.is_none_or(|(s, _, _)| score < s) {
                     best = Some((score, lo, count));

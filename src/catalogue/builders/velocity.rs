@@ -24,6 +24,10 @@ const TOP: f64 = 400.0;
 /// two-line legend in a corner clear of it.
 const FLAT: f64 = 120.0;
 
+/// Paper added below a legend set in a band of its own under the
+/// mechanism's notes, page units, between it and the time graph.
+const BAND_APART: f64 = 16.0;
+
 /// Nor can one narrower than this: the legend is about 270 units wide, and
 /// on a page of 120 mm or 4.5 in it lay over the block and the crank
 /// circle.
@@ -61,7 +65,8 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     let panel = base.panels()[0].clone();
     // A drawing too flat (a long rod) or too narrow (a narrow page) to
     // hold the legend beside it has it in a band of its own below the
-    // scene's notes.
+    // scene's notes, at the left with them (at the right it read as the
+    // time graph's legend below it).
     let r = *panel.rect();
     let band = if r.height < FLAT || r.width < NARROW {
         Plot::band(2)
@@ -78,7 +83,7 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
         ctx.font,
     );
     let mut plot = if band > 0.0 {
-        plot.blocks_below()
+        plot.blocks_below_at_left()
     } else {
         plot
     };
@@ -126,7 +131,10 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
         };
         sheet.panel(detail.with_items(items));
     }
-    Ok(grown + band)
+    // The band's legend is the mechanism's: more paper below it than
+    // above, so that it does not read with the time graph.
+    let apart = if band > 0.0 { BAND_APART } else { 0.0 };
+    Ok(grown + band + apart)
 }
 
 /// The world frame of the polar diagram's loops of `m` over a turn: E′

@@ -224,7 +224,10 @@ pub(crate) fn torque_arrow(
 fn clearest_share(start: f64, sweep: f64, avoid: &[f64]) -> f64 {
     let clearance = |k: f64| {
         let at = start + sweep * k;
-        avoid.iter().map(|&a| apart(at, a)).fold(f64::INFINITY, f64::min)
+        avoid
+            .iter()
+            .map(|&a| apart(at, a))
+            .fold(f64::INFINITY, f64::min)
     };
     // From the middle outwards, so that the middle wins among equals.
     let shares = (0..=4).flat_map(|i| [0.5 + 0.05 * f64::from(i), 0.5 - 0.05 * f64::from(i)]);
