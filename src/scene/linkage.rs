@@ -25,6 +25,10 @@ pub(crate) const PIN_CLEAR: f64 = 8.0;
 const HATCH_CLEAR: f64 = 2.5;
 /// Shortest run of hatch strokes drawn.
 const HATCH_RUN: usize = 2;
+/// A moving link within this angle (radians, 5°) of a hatched edge…
+const ALONG_EDGE: f64 = 0.087;
+/// …and this near its line at both ends (page units) lies along it.
+const LYING: f64 = 3.0;
 /// Length of one chord of a curved guide, page units.
 const CHORD: f64 = 12.0;
 /// Clear distance between a guide and the crank circle or a bearing.
@@ -327,6 +331,15 @@ impl Canvas {
                 walked += len;
                 continue;
             };
+            // A moving link lying along the edge (the rod on the fixed
+            // crank at a dead centre) touches only the strokes' feet, as
+            // the edge's own line does: they are kept clear of it from
+            // their feet out, not at them.
+            let lying = |(c, d): &Seg| {
+                let off = |x: Point| (x - a).dot(&n).abs();
+                unit(*d - *c).is_some_and(|u| u.dot(&t).abs() > ALONG_EDGE.cos())
+                    && off(*c).max(off(*d)) < LYING
+            };
             let mut run: Option<(f64, f64)> = None;
             let mut s = 0.5 * HATCH_SPACING;
             let mut strokes = 0;
@@ -336,9 +349,14 @@ impl Canvas {
                 let along = walked + s;
                 let clear = along >= ends
                     && along <= total - ends
-                    && avoid
-                        .iter()
-                        .all(|(c, d)| segment_distance(p, q, *c, *d) > HATCH_CLEAR);
+                    && avoid.iter().all(|g| {
+                        let foot = if lying(g) {
+                            p + (q - p) * (LYING / HATCH_DEPTH)
+                        } else {
+                            p
+                        };
+                        segment_distance(foot, q, g.0, g.1) > HATCH_CLEAR
+                    });
                 if clear {
                     run = Some(match run {
                         Some((first, _)) => (first, s),

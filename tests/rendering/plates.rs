@@ -58,6 +58,7 @@ const RULE_FILL: &str = "8 page filled";
 const RULE_SUBJECT: &str = "9 subject readable";
 const RULE_ALONG: &str = "10 no arrow along a link";
 const RULE_CIRCLE: &str = "11 guides off the crank circle";
+const RULE_FIXED: &str = "12 fixed link hatched";
 
 /// An arrow's shaft lies along a link when their directions differ by
 /// less than this (degrees)…
@@ -692,6 +693,51 @@ fn within_circle_along(g: &Seg, centre: Pt, radius: f64, along: (f64, f64)) -> f
         * step
 }
 
+/// The inversions whose fixed link is a bar, and its name in the ids
+/// (`link-crank`, `hatch-crank-0`, …).
+const FIXED_BARS: [(&str, &str); 2] = [
+    ("inversion-2-rotating-block", "crank"),
+    ("inversion-3-oscillating-cylinder", "rod"),
+];
+/// A fixed bar drawn this long (px) on the main view has room for
+/// [`FIXED_STROKES`] strokes of hatching clear of its pins.
+const FIXED_ROOM: f64 = 40.0;
+/// The least strokes of hatching that say a bar is fixed.
+const FIXED_STROKES: usize = 3;
+
+/// Rule 12: the fixed bar of an inversion ([`FIXED_BARS`]) drawn
+/// [`FIXED_ROOM`] long or more carries [`FIXED_STROKES`] strokes of
+/// hatching at least, whatever lies on it: at a dead centre the rod lay
+/// along the fixed crank of inversion 2 and the crank along the fixed
+/// rod of inversion 3, and their hatching, kept off every moving link,
+/// vanished, while the notes said the fixed link is hatched.
+fn fixed_link_unhatched(plate: &Plate, figure: &str) -> Vec<Failure> {
+    let Some((_, name)) = FIXED_BARS.iter().find(|(f, _)| *f == figure) else {
+        return Vec::new();
+    };
+    let Some(panel) = plate.panels.iter().find(|p| p.prefix.is_empty()) else {
+        return Vec::new();
+    };
+    let link = format!("link-{name}");
+    let long: f64 = (panel.strokes.iter())
+        .filter(|s| s.id == link)
+        .flat_map(|s| s.segs.iter())
+        .map(length)
+        .sum();
+    let hatch = format!("hatch-{name}-");
+    let strokes: usize = (panel.strokes.iter())
+        .filter(|s| s.id.starts_with(&hatch))
+        .map(|s| s.segs.len())
+        .sum();
+    match long >= FIXED_ROOM && strokes < FIXED_STROKES {
+        true => vec![fail(
+            RULE_FIXED,
+            format!("{link} {long:.0} px, {strokes} hatch strokes"),
+        )],
+        false => Vec::new(),
+    }
+}
+
 /// Rule 8: the ink of the mechanism panels spans at least [`FILL`] of
 /// the page's width (a short-rod drawing took a third of its page).
 fn page_unfilled(plate: &Plate) -> Vec<Failure> {
@@ -846,6 +892,7 @@ fn inspect(
             let mut found = check(&plate, SPREAD_FIGURES.contains(&figure));
             found.extend(subject_small(&plate, figure));
             found.extend(arrows_along_links(&plate));
+            found.extend(fixed_link_unhatched(&plate, figure));
             found
         }
         Err(e) => vec![fail(RULE_BUILD, e.to_string())],
@@ -1047,7 +1094,21 @@ fn chain_plates_are_clean() {
     assert!(outcomes.len() > 1000, "{}", outcomes.len());
     // Every figure at its own defaults is clean (checked below); of the
     // hard poses a handful still crowd a letter (see the report).
-    let broken = outcomes.iter().filter(|o| !o.failures.is_empty()).count();
+    let only_fixed = |o: &&Outcome| o.failures.iter().all(|f| f.rule == RULE_FIXED);
+    let unhatched = (outcomes.iter())
+        .filter(|o| o.failures.iter().any(|f| f.rule == RULE_FIXED))
+        .count();
+    // Rule 12 is held where it stands, not yet at 0: 144 plates of 1788
+    // lost their fixed bar's hatching before a link lying along it was
+    // let touch the strokes' feet, 86 now, all short bars (40 to 90 px)
+    // whose hatching gives way to the letters crowding them.
+    assert!(
+        unhatched <= 86,
+        "{unhatched} plates with the fixed link unhatched\n{text}"
+    );
+    let broken = (outcomes.iter())
+        .filter(|o| !o.failures.is_empty() && !only_fixed(o))
+        .count();
     assert!(
         broken * 200 <= outcomes.len(),
         "{broken} broken plates\n{text}"
@@ -1055,7 +1116,9 @@ fn chain_plates_are_clean() {
     for figure in CHAIN_FIGURES {
         let f = FigureName::from_name(figure).unwrap();
         let svg = to_svg(&f.figure(&FigureOptions::default()).unwrap());
-        let failures = check(&Plate::read(&svg), false);
+        let plate = Plate::read(&svg);
+        let mut failures = check(&plate, false);
+        failures.extend(fixed_link_unhatched(&plate, figure));
         assert!(failures.is_empty(), "{figure}: {failures:?}");
     }
 }
