@@ -177,7 +177,7 @@ impl InlineEngine {
 
 /// The closing side of the polygon of `sides` (each a unit vector and its
 /// weight), scaled by `scale`.
-fn polygon(sides: impl Iterator<Item = ((f64, f64), f64)>, scale: f64) -> Resultant {
+pub(super) fn polygon(sides: impl Iterator<Item = ((f64, f64), f64)>, scale: f64) -> Resultant {
     let (mut x, mut y, mut length) = (0.0, 0.0, 0.0);
     for ((c, s), w) in sides {
         x += w * c;
