@@ -182,7 +182,11 @@ pub fn hammer_blow(
     let l =
         slider_crank::table::Locomotive::new(mass, crank, wheel, speed, load).map_err(py_err)?;
     let h = HammerBlow::new(&b, l.mass, l.crank, l.wheel).map_err(py_err)?;
-    Ok((h.at_speed(l.speed), l.load.and_then(|p| h.lifting_speed(p))))
+    let lift = match l.load {
+        Some(p) => h.lifting_speed(p).map_err(py_err)?,
+        None => None,
+    };
+    Ok((h.at_speed(l.speed).map_err(py_err)?, lift))
 }
 
 /// Registers the functions and constants.

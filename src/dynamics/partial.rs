@@ -4,7 +4,7 @@
 //! rails when the crank is a locomotive's coupled wheel.
 
 use crate::angle::Angle;
-use crate::error::{Error, Field, Result, non_negative, positive};
+use crate::error::{Error, Field, Result, finite, non_negative, positive};
 
 /// The fractions of `table partial-balance` and Python's
 /// `partial_balance()` when none are given: none balanced, a half (the
@@ -124,15 +124,21 @@ impl HammerBlow {
     /// reciprocating mass `mass` balanced on a crank of radius `crank`.
     ///
     /// Errors: a mass or a crank negative or not finite, a wheel not
-    /// positive. A mass or a fraction of 0 gives no hammer blow.
+    /// positive, a moment c m r beyond the largest f64. A mass or a
+    /// fraction of 0 gives no hammer blow.
     pub fn new(balance: &PartialBalance, mass: f64, crank: f64, wheel: f64) -> Result<Self> {
         let mass = non_negative(Field::Mass, mass)?;
         let crank = non_negative(Field::Crank, crank)?;
         let wheel = positive(Field::Wheel, wheel)?;
-        Ok(Self {
-            moment: balance.fraction() * mass * crank,
-            wheel,
-        })
+        let moment = balance.fraction() * mass * crank;
+        if !moment.is_finite() {
+            return Err(Error::OutOfRange {
+                name: Field::Mass,
+                value: mass,
+                reason: "the counterweight's moment c m r is beyond the largest number".into(),
+            });
+        }
+        Ok(Self { moment, wheel })
     }
 
     /// The wheel's angular speed 2v/D at the speed `speed` along the
@@ -142,17 +148,45 @@ impl HammerBlow {
     }
 
     /// The hammer blow c m r ω² at the speed `speed`, in the force unit.
-    pub fn at_speed(&self, speed: f64) -> f64 {
-        let w = self.omega(speed);
-        self.moment * w * w
+    ///
+    /// Errors: a speed not finite, or so fast that the blow is beyond the
+    /// largest number.
+    pub fn at_speed(&self, speed: f64) -> Result<f64> {
+        let w = self.omega(finite(Field::Speed, speed)?);
+        let blow = self.moment * w * w;
+        if blow.is_finite() {
+            Ok(blow)
+        } else {
+            Err(Error::OutOfRange {
+                name: Field::Speed,
+                value: speed,
+                reason: "the hammer blow c m r ω² is beyond the largest number".into(),
+            })
+        }
     }
 
     /// The speed at which the hammer blow equals the wheel's static load
     /// `load` on the rail, so that the wheel lifts off once a turn:
     /// v = (D/2) √(P / (c m r)); `None` when nothing is balanced (no
     /// hammer blow at any speed).
-    pub fn lifting_speed(&self, load: f64) -> Option<f64> {
-        (self.moment > 0.0).then(|| 0.5 * self.wheel * (load / self.moment).sqrt())
+    ///
+    /// Errors: a load not positive, or one so far above the blow's
+    /// moment that the speed is beyond the largest number.
+    pub fn lifting_speed(&self, load: f64) -> Result<Option<f64>> {
+        let load = positive(Field::Load, load)?;
+        if self.moment == 0.0 {
+            return Ok(None);
+        }
+        let v = 0.5 * self.wheel * (load / self.moment).sqrt();
+        if v.is_finite() {
+            Ok(Some(v))
+        } else {
+            Err(Error::OutOfRange {
+                name: Field::Load,
+                value: load,
+                reason: "the wheel would lift only beyond the largest speed".into(),
+            })
+        }
     }
 }
 
@@ -219,13 +253,13 @@ mod tests {
         // the blow (2/3)(180)(0.3) ω².
         let h = HammerBlow::new(&b, 180.0, 0.3, 1.8).unwrap();
         let w = 50.0 / 1.8;
-        assert!((h.at_speed(25.0) - 36.0 * w * w).abs() < 1e-9);
+        assert!((h.at_speed(25.0).unwrap() - 36.0 * w * w).abs() < 1e-9);
         // The wheel lifts where the blow equals the load.
-        let v = h.lifting_speed(60_000.0).unwrap();
-        assert!((h.at_speed(v) - 60_000.0).abs() < 1e-8);
+        let v = h.lifting_speed(60_000.0).unwrap().unwrap();
+        assert!((h.at_speed(v).unwrap() - 60_000.0).abs() < 1e-8);
         let none = HammerBlow::new(&PartialBalance::new(0.0).unwrap(), 180.0, 0.3, 1.8).unwrap();
-        assert_eq!(none.at_speed(25.0), 0.0);
-        assert_eq!(none.lifting_speed(60_000.0), None);
+        assert_eq!(none.at_speed(25.0).unwrap(), 0.0);
+        assert_eq!(none.lifting_speed(60_000.0).unwrap(), None);
     }
 
     #[test]
@@ -237,5 +271,13 @@ mod tests {
         assert!(HammerBlow::new(&b, 1.0, 1.0, 0.0).is_err());
         assert!(HammerBlow::new(&b, -1.0, 1.0, 1.0).is_err());
         assert!(HammerBlow::new(&b, 1.0, f64::NAN, 1.0).is_err());
+        // Beyond the largest number: refused, never inf.
+        assert!(HammerBlow::new(&b, 1e300, 1e300, 1.0).is_err());
+        let h = HammerBlow::new(&b, 1.0, 1.0, 1.0).unwrap();
+        assert!(h.at_speed(1e200).is_err());
+        assert!(h.at_speed(f64::NAN).is_err());
+        assert!(h.lifting_speed(-1.0).is_err());
+        let tiny = HammerBlow::new(&b, 1e-300, 1e-5, 1.0).unwrap();
+        assert!(tiny.lifting_speed(1e300).is_err());
     }
 }

@@ -1,7 +1,7 @@
 //! Cylinders about one crank: V engines (two banks) and radial engines,
 //! balanced by the direct and reverse crank method.
 
-use super::inline::{Resultant, polygon};
+use super::inline::{Resultant, exact_along, polygon};
 use crate::angle::Angle;
 use crate::error::{Error, Field, Result, finite, positive};
 
@@ -142,14 +142,10 @@ impl RadialEngine {
     ///
     /// Errors: an angle θ − β_i too large to reduce.
     pub fn exact_at(&self, angle: Angle) -> Result<[f64; 2]> {
-        let n = self.ratio;
         let mut sum = [0.0, 0.0];
         for &b in &self.axes_deg {
             let axis = Angle::from_degrees(b)?;
-            let a = Angle::from_degrees(angle.degrees() - b)?;
-            let (s, c) = (a.sin(), a.cos());
-            let w = (n * n - s * s).sqrt();
-            let along = c + (n * n * (c * c - s * s) + s.powi(4)) / w.powi(3);
+            let along = exact_along(Angle::from_degrees(angle.degrees() - b)?, self.ratio);
             sum = add(sum, [along * axis.cos(), along * axis.sin()]);
         }
         Ok(sum)
@@ -309,5 +305,13 @@ mod tests {
         assert!(RadialEngine::new(&[0.0], f64::INFINITY).is_err());
         assert!(RadialEngine::new(&[0.0; 65], 4.0).is_err());
         assert!(RadialEngine::new(&[0.0, 90.0], 1.5).is_ok());
+        // The longest rods: every value finite, the exact force the
+        // primary (the secondary and beyond vanish as 1/n).
+        let e = RadialEngine::new(&[0.0, 120.0, 240.0], f64::MAX).unwrap();
+        for d in [0.0, 30.0, 90.0, 200.0] {
+            let x = e.exact_at(Angle::deg(d)).unwrap();
+            let p = e.primary_at(Angle::deg(d));
+            assert!(close(x, p, 1e-15), "{d}: {x:?} {p:?}");
+        }
     }
 }

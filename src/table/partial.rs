@@ -107,18 +107,21 @@ fn hammer_notes(balances: &[PartialBalance], l: &Locomotive, units: &Units) -> R
     )];
     for b in balances {
         let h = HammerBlow::new(b, l.mass, l.crank, l.wheel)?;
-        let lift = match (l.load, h.lifting_speed(l.load.unwrap_or(0.0))) {
-            (Some(p), Some(v)) => format!(
+        let lifting = match l.load {
+            Some(p) => h.lifting_speed(p)?.map(|v| (p, v)),
+            None => None,
+        };
+        let lift = lifting.map_or_else(String::new, |(p, v)| {
+            format!(
                 "; it equals the wheel's load {} {f} at v = {} {u}/s, where the wheel lifts off the rail",
                 significant(p, 6),
                 significant(v, 6)
-            ),
-            _ => String::new(),
-        };
+            )
+        });
         notes.push(format!(
             "c = {}: hammer blow {} {f}{lift}.",
             written(b.fraction()),
-            significant(h.at_speed(l.speed), 6)
+            significant(h.at_speed(l.speed)?, 6)
         ));
     }
     Ok(notes)
