@@ -179,7 +179,8 @@ pub(super) fn exact_along(a: Angle, ratio: f64) -> f64 {
     let lambda = 1.0 / ratio;
     let l2 = lambda * lambda;
     let cos2 = c * c - s * s;
-    c + lambda * (cos2 + l2 * s.powi(4)) / (1.0 - l2 * s * s).powf(1.5)
+    let w = 1.0 - l2 * s * s;
+    c + lambda * (cos2 + l2 * s.powi(4)) / (w * w.sqrt())
 }
 
 /// The closing side of the polygon of `sides` (each a unit vector and its
