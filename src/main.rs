@@ -49,7 +49,7 @@ enum Command {
     Analyze(cli::analyze::AnalyzeArgs),
     /// Print a table of the seeds or a sweep: obliquity, acceleration-factor,
     /// kinematics, forces
-    Table(cli::table::TableArgs),
+    Table(Box<cli::table::TableArgs>),
     /// Sweep the whole turn and compare every construction with the
     /// analytic core; exits 1 if any difference exceeds the tolerance
     ///

@@ -48,6 +48,7 @@ from ._api import (
     Lobe,
     Point,
     QuadricChain,
+    RadialBalance,
     Resultant,
     RodDynamics,
     SliderCrank,
@@ -60,7 +61,9 @@ from ._api import (
     balance,
     figure,
     gallery,
+    hammer_blow,
     harmonics,
+    radial,
     table,
 )
 
@@ -82,6 +85,7 @@ __all__ = [
     "Resultant",
     "BalanceSweep",
     "Harmonics",
+    "RadialBalance",
     "QuadricChain",
     "CurvedSlot",
     "Inversion",
@@ -101,6 +105,8 @@ __all__ = [
     "animate",
     "balance",
     "harmonics",
+    "radial",
+    "hammer_blow",
     "FIGURES",
 ]
 

@@ -109,7 +109,13 @@ class RodDynamics:
     couple, the torque they deliver to the crank (exact, rigid body), and
     the same rod as the equivalent dynamical system (two masses, at the
     cross-head and the crank pin, and the correction couple) with the
-    torque that system gives: equal to ``torque``."""
+    torque that system gives: equal to ``torque``. The true dynamical
+    system, two masses with the rod's moment of inertia and no couple:
+    ``dynamical_mass_at_crosshead`` at the cross-head and
+    ``mass_at_percussion`` at the centre of percussion, L = l₁ + k²/l₁
+    (``percussion_distance``, l₁ = AG) from the cross-head, and their
+    torque ``dynamical_torque`` (equal to ``torque``); all four ``None``
+    when the centre of mass is at the cross-head (l₁ = 0)."""
 
     inertia_force: Point
     inertia_couple: float
@@ -119,6 +125,10 @@ class RodDynamics:
     correction_couple: float
     correction_torque: float
     equivalent_torque: float
+    percussion_distance: Optional[float] = None
+    dynamical_mass_at_crosshead: Optional[float] = None
+    mass_at_percussion: Optional[float] = None
+    dynamical_torque: Optional[float] = None
 
 
 @dataclass(frozen=True)
@@ -240,9 +250,20 @@ class Dynamics:
                 mass_at_crank_pin=rod["equivalent"]["mass_at_crank_pin"],
                 correction_couple=rod["equivalent"]["correction_couple"],
                 correction_torque=rod["equivalent"]["correction_torque"],
+                percussion_distance=_dynamical(rod, "percussion_distance"),
+                dynamical_mass_at_crosshead=_dynamical(rod, "mass_at_crosshead"),
+                mass_at_percussion=_dynamical(rod, "mass_at_percussion"),
+                dynamical_torque=_dynamical(rod, "torque"),
             ),
             **{k: v[k] for k in _DYNAMICS_VALUES},
         )
+
+
+def _dynamical(rod: Dict[str, Any], key: str) -> Optional[float]:
+    """A value of the true dynamical system from ``analyze --json``'s
+    ``dynamics.rod.dynamical`` (``null``: none, so ``None``)."""
+    d = rod["dynamical"]
+    return None if d is None else float(d[key])
 
 
 _DYNAMICS_VALUES = (
@@ -546,6 +567,43 @@ class BalanceSweep:
     primary_couple: npt.NDArray[np.float64]
     secondary_couple: npt.NDArray[np.float64]
     exact_force: npt.NDArray[np.float64]
+
+
+@dataclass(frozen=True)
+class RadialBalance:
+    """Cylinders on one crank (a V engine, a radial engine), balanced by
+    the direct and reverse crank method as ``table radial`` notes it (made
+    by :func:`radial`): the axes ``axes_deg`` (degrees from the reference
+    line; the crank angle θ is taken from it), the ratio ``n``, and four
+    :class:`Resultant`: the primary direct crank (k/2 along the crank,
+    turning with it: balanced by a counterweight of k m/2 at r), the
+    primary reverse crank (at −θ), the secondary direct (at 2θ) and
+    reverse (at −2θ) cranks, their ``vector`` at θ = 0, per unit m r ω²
+    (the secondary ones carry 1/n)."""
+
+    axes_deg: Tuple[float, ...]
+    n: float
+    primary_direct: Resultant
+    primary_reverse: Resultant
+    secondary_direct: Resultant
+    secondary_reverse: Resultant
+
+    @classmethod
+    def _from_json(cls, text: str) -> "RadialBalance":
+        v = json.loads(text)
+
+        def part(key: str) -> Resultant:
+            r = v[key]
+            return Resultant((r["vector"][0], r["vector"][1]), r["amplitude"], r["balanced"])
+
+        return cls(
+            axes_deg=tuple(v["axes_deg"]),
+            n=v["n"],
+            primary_direct=part("primary_direct"),
+            primary_reverse=part("primary_reverse"),
+            secondary_direct=part("secondary_direct"),
+            secondary_reverse=part("secondary_reverse"),
+        )
 
 
 @dataclass(frozen=True)
@@ -1182,6 +1240,10 @@ _TABLE_USES: Dict[str, Tuple[str, ...]] = {
     ),
     "balance": ("crank", "rod", "decimals", "unit", "cranks", "planes"),
     "harmonics": ("crank", "rod", "decimals", "order"),
+    "partial-balance": (
+        "crank", "decimals", "unit", "force_unit", "mass", "fractions", "wheel", "speed", "load",
+    ),
+    "radial": ("crank", "rod", "decimals", "axes"),
 }
 
 
@@ -1214,6 +1276,11 @@ def table(
     cranks: Optional[Sequence[float]] = None,
     planes: Optional[Sequence[float]] = None,
     order: Optional[int] = None,
+    fractions: Optional[Sequence[float]] = None,
+    wheel: Optional[float] = None,
+    speed: Optional[float] = None,
+    load: Optional[float] = None,
+    axes: Optional[Sequence[float]] = None,
     max_cells: int = _core.DEFAULT_MAX_CELLS,
 ) -> str:
     """A table as ``slider-crank table NAME`` prints it: ``obliquity``,
@@ -1239,9 +1306,15 @@ def table(
     0, 180, 180, 0 by default) and ``planes`` their distances from the
     reference plane (a pitch of 1 about the middle by default), ``order``
     the harmonics cos 2θ … cos 2Kθ of ``harmonics`` (3 by default); for
-    both, n = l/r is ``rod`` / ``crank`` (§35's 6 by default). A keyword
-    the table does not use raises ``ValueError``, as the command line
-    refuses the flag.
+    both, n = l/r is ``rod`` / ``crank`` (§35's 6 by default).
+    ``partial-balance`` (a single cylinder's unbalanced force for each of
+    the ``fractions`` c balanced, 0, ½, ⅔ and 1 by default) takes
+    ``wheel``, ``speed``, ``mass`` and ``crank`` (and ``load``) for a
+    locomotive's hammer blow (see :func:`hammer_blow`); ``radial``
+    (cylinders on one crank, see :func:`radial`) takes their ``axes``
+    (the 90° V-twin, −45 and 45, by default) and n = ``rod`` / ``crank``.
+    A keyword the table does not use raises ``ValueError``, as the command
+    line refuses the flag.
 
     ``max_cells`` bounds the values the table computes, rows × columns,
     with the command line's guard and default (``--max-cells``, 50 000 000,
@@ -1288,6 +1361,12 @@ def table(
         cranks=_reals(cranks),
         planes=_reals(planes),
         order=None if order is None else _order(order),
+        fractions=_reals(fractions),
+        mass=_option(mass) if name == "partial-balance" else None,
+        wheel=_option(wheel),
+        speed=_option(speed),
+        load=_option(load),
+        axes=_reals(axes),
         max_cells=_max_cells(max_cells),
     )
 
@@ -1350,6 +1429,50 @@ def harmonics(n: float = 6.0, order: int = _core.DEFAULT_ORDER) -> Harmonics:
     """
     v = json.loads(_core.harmonics(_real(n), _order(order)))
     return Harmonics(v["n"], tuple(v["coefficients"]), tuple(v["truncation_error"]))
+
+
+def radial(axes: Optional[Sequence[float]] = None, n: float = 6.0) -> RadialBalance:
+    """Cylinders working on one crank, as ``table radial --axes …`` works
+    them out in its notes (:class:`RadialBalance`): their axes at ``axes``
+    degrees from the reference line (the 90° V-twin, −45 and 45, by
+    default; a V of included angle 2α is −α, α, a radial engine of k
+    cylinders 360/k apart) and the ratio ``n`` = l/r of every cylinder
+    (§35's 6 by default). Values are per unit m r ω². Bad input (no
+    cylinder or more than 64, an axis not finite, n ≤ 1) raises
+    ``ValueError`` with the command line's message.
+
+    >>> v = radial()
+    >>> v.primary_direct.amplitude, v.primary_reverse.balanced
+    (1.0, True)
+    >>> radial([0, 120, 240], n=4).secondary_reverse.amplitude
+    0.375
+    """
+    return RadialBalance._from_json(_core.radial(_reals(axes), _real(n)))
+
+
+def hammer_blow(
+    fraction: float,
+    mass: float,
+    crank: float,
+    wheel: float,
+    speed: float,
+    load: Optional[float] = None,
+) -> Tuple[float, Optional[float]]:
+    """The hammer blow c m r ω² of a locomotive's coupled wheel of diameter
+    ``wheel`` rolling at ``speed`` (length unit per second; ω = 2v/D), with
+    the fraction ``fraction`` of the reciprocating mass
+    ``mass`` on the crank of radius ``crank`` balanced, in the force unit,
+    and the speed at which it equals the wheel's static ``load`` on the
+    rail (``None`` without a load, or with nothing balanced), as ``table
+    partial-balance --wheel D --speed V --mass M --crank R --load P`` notes
+    them. Bad values raise ``ValueError`` with the command line's message.
+
+    >>> round(hammer_blow(2 / 3, 180, 0.3, 1.8, 25)[0], 1)
+    27777.8
+    """
+    return _core.hammer_blow(
+        _real(fraction), _real(mass), _real(crank), _real(wheel), _real(speed), _option(load)
+    )
 
 
 def _table_engine(

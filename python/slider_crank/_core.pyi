@@ -32,6 +32,8 @@ __all__ = [
     "inline_balance",
     "inline_sweep",
     "harmonics",
+    "radial",
+    "hammer_blow",
     "VERSION",
     "EXAMPLE_MASS",
     "DYNAMICS_ROWS",
@@ -41,6 +43,8 @@ __all__ = [
     "DEFAULT_CRANKS",
     "DEFAULT_ORDER",
     "MAX_ORDER",
+    "DEFAULT_FRACTIONS",
+    "DEFAULT_AXES",
 ]
 
 VERSION: str
@@ -52,6 +56,8 @@ BALANCE_ROWS: int
 DEFAULT_CRANKS: list[float]
 DEFAULT_ORDER: int
 MAX_ORDER: int
+DEFAULT_FRACTIONS: list[float]
+DEFAULT_AXES: list[float]
 
 def check_engine(
     crank: float, rod: float, offset: float, unit: str, force_unit: str
@@ -139,6 +145,12 @@ def table(
     cranks: Optional[list[float]] = None,
     planes: Optional[list[float]] = None,
     order: Optional[int] = None,
+    fractions: Optional[list[float]] = None,
+    mass: Optional[float] = None,
+    wheel: Optional[float] = None,
+    speed: Optional[float] = None,
+    load: Optional[float] = None,
+    axes: Optional[list[float]] = None,
     max_cells: int = ...,
 ) -> str: ...
 def gallery(out: str, only: Optional[list[str]] = None) -> list[str]: ...
@@ -228,3 +240,12 @@ def inline_sweep(
     out: npt.NDArray[np.float64],
 ) -> None: ...
 def harmonics(n: float, order: int) -> str: ...
+def radial(axes: Optional[list[float]], n: float) -> str: ...
+def hammer_blow(
+    fraction: float,
+    mass: float,
+    crank: float,
+    wheel: float,
+    speed: float,
+    load: Optional[float] = None,
+) -> tuple[float, Optional[float]]: ...

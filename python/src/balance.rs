@@ -11,7 +11,7 @@ use pyo3::prelude::*;
 use serde_json::json;
 use slider_crank::Angle;
 use slider_crank::analytic::harmonics::Harmonics;
-use slider_crank::dynamics::InlineEngine;
+use slider_crank::dynamics::{HammerBlow, InlineEngine, PartialBalance, RadialEngine};
 
 /// The cranks of `table balance` when `--cranks` is not given: four
 /// cylinders, the flat crank 0, 180, 180, 0.
@@ -128,11 +128,82 @@ pub fn harmonics(py: Python<'_>, n: f64, order: usize) -> PyResult<String> {
     .to_string())
 }
 
+/// The fractions of `table partial-balance` (`--fractions`), the
+/// library's default when `None`, each checked.
+pub fn partial_balances(fractions: Option<Vec<f64>>) -> PyResult<Vec<PartialBalance>> {
+    let fractions = fractions.unwrap_or_else(|| slider_crank::dynamics::DEFAULT_FRACTIONS.to_vec());
+    finite_list(&fractions, "fraction")?;
+    fractions
+        .into_iter()
+        .map(|c| PartialBalance::new(c).map_err(py_err))
+        .collect()
+}
+
+/// The engine of cylinders on one crank at `axes` (degrees; the 90°
+/// V-twin when `None`) and ratio n, checked as `table radial` checks it.
+pub fn radial_engine(axes: Option<Vec<f64>>, ratio: f64) -> PyResult<RadialEngine> {
+    let axes = axes.unwrap_or_else(|| slider_crank::dynamics::DEFAULT_AXES.to_vec());
+    finite_list(&axes, "axis")?;
+    RadialEngine::new(&axes, ratio).map_err(py_err)
+}
+
+/// Cylinders on one crank as JSON text: their axes, n and the four
+/// direct and reverse cranks (vector at θ = 0, amplitude, balanced).
+#[pyfunction]
+#[pyo3(signature = (axes, n))]
+pub fn radial(axes: Option<Vec<f64>>, n: f64) -> PyResult<String> {
+    let e = radial_engine(axes, n)?;
+    Ok(json!({
+        "axes_deg": e.axes_deg(),
+        "n": n,
+        "primary_direct": e.primary_direct,
+        "primary_reverse": e.primary_reverse,
+        "secondary_direct": e.secondary_direct,
+        "secondary_reverse": e.secondary_reverse,
+    })
+    .to_string())
+}
+
+/// The hammer blow c m r ω² of a locomotive's wheel of diameter `wheel`
+/// at the speed `speed`, and the speed at which it equals `load` (`None`
+/// without a load or with nothing balanced), checked as `table
+/// partial-balance --wheel` checks them.
+#[pyfunction]
+#[pyo3(signature = (fraction, mass, crank, wheel, speed, load=None))]
+pub fn hammer_blow(
+    fraction: f64,
+    mass: f64,
+    crank: f64,
+    wheel: f64,
+    speed: f64,
+    load: Option<f64>,
+) -> PyResult<(f64, Option<f64>)> {
+    let b = PartialBalance::new(fraction).map_err(py_err)?;
+    let l =
+        slider_crank::table::Locomotive::new(mass, crank, wheel, speed, load).map_err(py_err)?;
+    let h = HammerBlow::new(&b, l.mass, l.crank, l.wheel).map_err(py_err)?;
+    let lift = match l.load {
+        Some(p) => h.lifting_speed(p).map_err(py_err)?,
+        None => None,
+    };
+    Ok((h.at_speed(l.speed).map_err(py_err)?, lift))
+}
+
 /// Registers the functions and constants.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(inline_balance, m)?)?;
     m.add_function(wrap_pyfunction!(inline_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(harmonics, m)?)?;
+    m.add_function(wrap_pyfunction!(radial, m)?)?;
+    m.add_function(wrap_pyfunction!(hammer_blow, m)?)?;
+    m.add(
+        "DEFAULT_FRACTIONS",
+        slider_crank::dynamics::DEFAULT_FRACTIONS.to_vec(),
+    )?;
+    m.add(
+        "DEFAULT_AXES",
+        slider_crank::dynamics::DEFAULT_AXES.to_vec(),
+    )?;
     m.add("BALANCE_ROWS", BALANCE_ROWS)?;
     m.add("DEFAULT_CRANKS", DEFAULT_CRANKS.to_vec())?;
     m.add("DEFAULT_ORDER", DEFAULT_ORDER)?;

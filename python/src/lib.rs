@@ -500,7 +500,8 @@ impl Angles<'_> {
 #[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=0.0,
     rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None,
     engine=None, phases=None, fluctuation=None, flywheel=None, cranks=None, planes=None,
-    order=None, max_cells=DEFAULT_MAX_CELLS))]
+    order=None, fractions=None, mass=None, wheel=None, speed=None, load=None, axes=None,
+    max_cells=DEFAULT_MAX_CELLS))]
 #[allow(clippy::too_many_arguments)]
 fn table(
     py: Python<'_>,
@@ -525,6 +526,12 @@ fn table(
     cranks: Option<Vec<f64>>,
     planes: Option<Vec<f64>>,
     order: Option<usize>,
+    fractions: Option<Vec<f64>>,
+    mass: Option<f64>,
+    wheel: Option<f64>,
+    speed: Option<f64>,
+    load: Option<f64>,
+    axes: Option<Vec<f64>>,
     max_cells: u64,
 ) -> PyResult<String> {
     use slider_crank::table::{self as t, Format, Head, Table};
@@ -707,9 +714,62 @@ fn table(
             let rows: Rows<'_> = Box::new(move |d| one(t::balance_row(&inline, d, decimals)));
             (head, spec, rows)
         }
+        "partial-balance" => {
+            let balances = balance::partial_balances(fractions)?;
+            let locomotive = match wheel {
+                Some(w) => Some(
+                    t::Locomotive::new(
+                        mass.unwrap_or(0.0),
+                        crank.unwrap_or(0.0),
+                        w,
+                        speed.unwrap_or(0.0),
+                        load,
+                    )
+                    .map_err(py_err)?,
+                ),
+                None if mass.is_some() || crank.is_some() => {
+                    return Err(PyValueError::new_err(
+                        "table partial-balance takes mass and crank for the hammer blow only: give wheel and speed with them",
+                    ));
+                }
+                None => None,
+            };
+            let head = t::partial_balance_head(
+                &balances,
+                locomotive.as_ref(),
+                &with_units(Units::FOOT_POUND)?,
+            )
+            .map_err(py_err)?;
+            let spec = angles_or(&range(0.0, 360.0, 30.0));
+            bound
+                .check_angles(
+                    "table partial-balance",
+                    spec.slice().len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let rows: Rows<'_> =
+                Box::new(move |d| one(t::partial_balance_row(&balances, d, decimals)));
+            (head, spec, rows)
+        }
+        "radial" => {
+            let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
+            let engine = balance::radial_engine(axes, m.ratio())?;
+            let head = t::radial_head(&engine);
+            let spec = angles_or(&range(0.0, 360.0, 30.0));
+            bound
+                .check_angles(
+                    "table radial",
+                    spec.slice().len() as u64,
+                    head.headers.len(),
+                )
+                .map_err(py_err)?;
+            let rows: Rows<'_> = Box::new(move |d| one(t::radial_row(&engine, d, decimals)));
+            (head, spec, rows)
+        }
         _ => {
             return Err(PyValueError::new_err(format!(
-                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics, forces, dynamics, balance and harmonics"
+                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics, forces, dynamics, balance, partial-balance, radial and harmonics"
             )));
         }
     };

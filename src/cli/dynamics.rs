@@ -195,6 +195,23 @@ pub fn to_text(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) ->
         );
         row("correction couple", r.correction_couple, &t);
         row("rod torque (two masses + couple)", r.equivalent_torque, &t);
+        let system = engine
+            .rod()
+            .and_then(|rod| rod.dynamical_system(engine.mechanism().rod()));
+        if let (Some(d), Some(torque)) = (system, r.dynamical_torque) {
+            row("centre of percussion L from A", d.distance, &u);
+            row(
+                "dynamical system: mass at A",
+                d.mass_at_crosshead,
+                &mass_unit(units),
+            );
+            row(
+                "dynamical system: mass at L",
+                d.mass_at_percussion,
+                &mass_unit(units),
+            );
+            row("rod torque (dynamical system)", torque, &t);
+        }
         let w = &at.loads;
         row(
             "piston effort with m_A (equivalent)",

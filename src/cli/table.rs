@@ -24,6 +24,10 @@ pub enum TableName {
     Balance,
     /// The piston's acceleration of an in-line engine as a series cos θ + A₂ cos 2θ + A₄ cos 4θ + … (--order K harmonics, default 3): each exact coefficient and the largest error of the series cut after it (n = l/r from --crank and --rod, §35's 6)
     Harmonics,
+    /// Partial balance of a single cylinder: the unbalanced primary force ÷ m r ω² along and across the line of stroke and its size against θ, for each fraction c of the reciprocating mass a counterweight balances (--fractions, default 0,0.5,0.6667,1); with --wheel D --speed V --mass M the hammer blow c m r ω² of a locomotive's coupled wheel (and with --load P the speed at which it lifts the wheel)
+    PartialBalance,
+    /// Cylinders on one crank, a V engine or a radial engine (--axes, default the 90° V-twin -45,45): the primary and secondary forces ÷ m r ω² in size and direction against θ, the exact force, and the direct and reverse cranks as notes (n = l/r from --crank and --rod, §35's 6)
+    Radial,
 }
 
 /// Output formats.
@@ -114,6 +118,27 @@ pub struct TableArgs {
     /// Harmonics cos 2θ … cos 2Kθ of the series for harmonics [default: 3]
     #[arg(long, value_name = "K")]
     pub order: Option<usize>,
+    /// Fractions c of the reciprocating mass balanced, 0 to 1, for
+    /// partial-balance, comma-separated [default: 0,0.5,0.6667,1 (⅔)]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub fractions: Option<String>,
+    /// A locomotive's wheel diameter D for partial-balance's hammer blow,
+    /// in the length unit (give --speed and --mass with it)
+    #[arg(long, value_name = "D", allow_hyphen_values = true, requires_all = ["speed", "mass", "crank"])]
+    pub wheel: Option<f64>,
+    /// The locomotive's speed v along the rails for the hammer blow, in
+    /// the length unit per second (the wheel turns at 2v/D)
+    #[arg(long, value_name = "V", allow_hyphen_values = true, requires = "wheel")]
+    pub speed: Option<f64>,
+    /// The wheel's static load P on the rail, in the force unit: the
+    /// hammer blow's note adds the speed at which the wheel lifts off
+    #[arg(long, value_name = "P", allow_hyphen_values = true, requires = "wheel")]
+    pub load: Option<f64>,
+    /// Axes of the cylinders on one crank for radial, degrees from the
+    /// reference line, comma-separated (a V of included angle 2α: -α,α;
+    /// a radial engine of k cylinders: 360/k apart) [default: -45,45]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub axes: Option<String>,
     #[command(flatten)]
     pub units: UnitArgs,
     #[command(flatten)]
@@ -180,6 +205,8 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         TableName::Dynamics => dynamics(args, spec, decimals, format, out),
         TableName::Balance => balance(args, spec, decimals, format, out),
         TableName::Harmonics => harmonics(args, decimals, format, out),
+        TableName::PartialBalance => partial_balance(args, spec, decimals, format, out),
+        TableName::Radial => radial(args, spec, decimals, format, out),
     }
 }
 
@@ -223,6 +250,75 @@ fn balance(
     let head = table::balance_head(&engine, &units);
     guard_angles(args, "table balance", &spec, &head)?;
     let row = |d| table::balance_row(&engine, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
+}
+
+/// `table partial-balance`: a single cylinder's unbalanced force for
+/// each fraction, and the hammer blow.
+fn partial_balance(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    use slider_crank::dynamics::{DEFAULT_FRACTIONS, PartialBalance};
+    let fractions = match &args.fractions {
+        Some(s) => parse_list(s, "fraction", false)?,
+        None => DEFAULT_FRACTIONS.to_vec(),
+    };
+    let balances = fractions
+        .iter()
+        .map(|&c| PartialBalance::new(c))
+        .collect::<Result<Vec<_>>>()?;
+    let locomotive = match args.wheel {
+        Some(wheel) => Some(locomotive(args, wheel)?),
+        None if args.engine.mass.is_some() || args.crank.is_some() => {
+            return Err(Error::invalid(
+                Input::Options,
+                "table partial-balance takes --mass and --crank for the hammer blow only: give --wheel and --speed with them".into(),
+            ));
+        }
+        None => None,
+    };
+    let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
+    let units = args.units.units(Units::FOOT_POUND);
+    let head = table::partial_balance_head(&balances, locomotive.as_ref(), &units)?;
+    guard_angles(args, "table partial-balance", &spec, &head)?;
+    let row = |d| table::partial_balance_row(&balances, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
+}
+
+/// The locomotive of the hammer blow: `--wheel`, `--speed`, `--mass`,
+/// `--crank` and `--load`, checked by the library.
+fn locomotive(args: &TableArgs, wheel: f64) -> Result<table::Locomotive> {
+    table::Locomotive::new(
+        args.engine.mass.unwrap_or(0.0),
+        args.crank.unwrap_or(0.0),
+        wheel,
+        args.speed.unwrap_or(0.0),
+        args.load,
+    )
+}
+
+/// `table radial`: cylinders on one crank.
+fn radial(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let m = mechanism(args, 0.5, 3.0)?;
+    let axes = match &args.axes {
+        Some(s) => parse_list(s, "axis", false)?,
+        None => slider_crank::dynamics::DEFAULT_AXES.to_vec(),
+    };
+    let engine = slider_crank::dynamics::RadialEngine::new(&axes, m.ratio())?;
+    let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
+    let head = table::radial_head(&engine);
+    guard_angles(args, "table radial", &spec, &head)?;
+    let row = |d| table::radial_row(&engine, d, decimals);
     write_angle_rows(format, &head, || spec.iter(), row, out)
 }
 
@@ -368,6 +464,11 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
         ("--cranks", args.cranks.is_some()),
         ("--planes", args.planes.is_some()),
         ("--order", args.order.is_some()),
+        ("--fractions", args.fractions.is_some()),
+        ("--wheel", args.wheel.is_some()),
+        ("--speed", args.speed.is_some()),
+        ("--load", args.load.is_some()),
+        ("--axes", args.axes.is_some()),
     ];
     let used: &[&str] = match args.name {
         TableName::Obliquity | TableName::AccelerationFactor => &["--n"],
@@ -419,6 +520,18 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
             "--planes",
         ],
         TableName::Harmonics => &["--crank", "--rod", "--decimals", "--order"],
+        TableName::PartialBalance => &[
+            "--crank",
+            "--decimals",
+            "--unit",
+            "--force-unit",
+            "--mass",
+            "--fractions",
+            "--wheel",
+            "--speed",
+            "--load",
+        ],
+        TableName::Radial => &["--crank", "--rod", "--decimals", "--axes"],
     };
     given
         .into_iter()

@@ -161,23 +161,31 @@ impl InlineEngine {
     /// stroke at `angle`, per unit m r ω² (each cylinder's −s″/r, the
     /// harmonics of every order; the offset is 0).
     pub fn exact_force(&self, angle: Angle) -> Result<f64> {
-        let n = self.ratio;
         let mut sum = 0.0;
         for d in &self.cranks_deg {
-            let a = Angle::from_degrees(angle.degrees() + d)?;
-            let (s, c) = (a.sin(), a.cos());
-            let w = (n * n - s * s).sqrt();
-            // s″/r = −cos θ − (n² cos 2θ + sin⁴θ) / w³ for unit r.
-            let cos2 = c * c - s * s;
-            sum += c + (n * n * cos2 + s.powi(4)) / w.powi(3);
+            sum += exact_along(Angle::from_degrees(angle.degrees() + d)?, self.ratio);
         }
         Ok(sum)
     }
 }
 
+/// One in-line cylinder's exact inertia force −s″/r ω² along its line of
+/// stroke at crank angle `a` for n = `ratio` (per unit m r ω², no offset):
+/// cos θ + (n² cos 2θ + sin⁴θ)/(n² − sin²θ)^{3/2}, written with λ = 1/n
+/// as cos θ + λ (cos 2θ + λ² sin⁴θ)/(1 − λ² sin²θ)^{3/2} so that no n
+/// up to the largest f64 overflows.
+pub(super) fn exact_along(a: Angle, ratio: f64) -> f64 {
+    let (s, c) = (a.sin(), a.cos());
+    let lambda = 1.0 / ratio;
+    let l2 = lambda * lambda;
+    let cos2 = c * c - s * s;
+    let w = 1.0 - l2 * s * s;
+    c + lambda * (cos2 + l2 * s.powi(4)) / (w * w.sqrt())
+}
+
 /// The closing side of the polygon of `sides` (each a unit vector and its
 /// weight), scaled by `scale`.
-fn polygon(sides: impl Iterator<Item = ((f64, f64), f64)>, scale: f64) -> Resultant {
+pub(super) fn polygon(sides: impl Iterator<Item = ((f64, f64), f64)>, scale: f64) -> Resultant {
     let (mut x, mut y, mut length) = (0.0, 0.0, 0.0);
     for ((c, s), w) in sides {
         x += w * c;

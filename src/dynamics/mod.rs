@@ -1,7 +1,8 @@
 //! Engine dynamics: the inertia of the reciprocating parts and the rod,
 //! the crank effort through Ng's OM line, the turning-moment diagram over
-//! a turn, the fluctuation of energy and the flywheel, and the primary and
-//! secondary unbalanced forces.
+//! a turn, the fluctuation of energy and the flywheel, the primary and
+//! secondary unbalanced forces, and the balance of in-line, V and radial
+//! engines and of a single cylinder in part.
 //!
 //! The textbook's §37 gives the piston acceleration (Klein's CG) and Ng's
 //! paper the torque line (T = F · OM); what follows from them, the rod as
@@ -34,9 +35,11 @@ mod flywheel;
 mod gas;
 mod inline;
 mod loads;
+mod partial;
 mod parts;
 mod pose;
 pub(crate) mod quadrature;
+mod radial;
 mod rod;
 pub(crate) mod turning;
 
@@ -49,7 +52,9 @@ pub use inline::{
     default_planes,
 };
 pub use loads::EngineLoads;
+pub use partial::{DEFAULT_FRACTIONS, HammerBlow, PartialBalance, Unbalanced};
 pub use parts::{EngineParts, IndicatorText};
 pub use pose::EnginePose;
+pub use radial::{DEFAULT_AXES, MAX_RADIAL_CYLINDERS, RadialEngine};
 pub use rod::{RodInertia, RodMass};
 pub use turning::{Lobe, MAX_CYLINDERS, RELATIVE_TOLERANCE, TurningMoment};

@@ -1,5 +1,7 @@
-//! The connecting rod's inertia: exactly, as a rigid body, and as the
-//! equivalent dynamical system of two masses with the correction couple.
+//! The connecting rod's inertia: exactly, as a rigid body, as two masses
+//! at the cross-head and the crank pin with the correction couple, and as
+//! the true equivalent dynamical system of two masses at the cross-head
+//! and the centre of percussion.
 
 use crate::error::{Field, Result, non_negative};
 use crate::mechanism::Pose;
@@ -40,6 +42,46 @@ impl RodMass {
     pub fn gyration(&self) -> f64 {
         self.gyration
     }
+
+    /// The rod of length `rod_length` as its true equivalent dynamical
+    /// system: two masses with its mass, centre of mass and moment of
+    /// inertia, one at the cross-head A (AG = l₁ from G) and one at the
+    /// centre of percussion P, k²/l₁ beyond G, at
+    /// **L = l₁ + k²/l₁** from A. `None` when G is at A (l₁ = 0: no
+    /// second point at a finite distance).
+    pub fn dynamical_system(&self, rod_length: f64) -> Option<DynamicalSystem> {
+        let l1 = rod_length - self.cg;
+        if l1 <= 0.0 {
+            return None;
+        }
+        let l2 = self.gyration * self.gyration / l1;
+        let distance = l1 + l2;
+        Some(DynamicalSystem {
+            crosshead_to_cg: l1,
+            distance,
+            mass_at_crosshead: self.mass * l2 / distance,
+            mass_at_percussion: self.mass * l1 / distance,
+        })
+    }
+}
+
+/// The rod as two masses that have its mass, its centre of mass and its
+/// moment of inertia about G (no correction couple): m₁ at the cross-head
+/// A and m₂ at the centre of percussion P on AB produced, at L = l₁ +
+/// k²/l₁ from A, with m₁ = m_r l₂/L, m₂ = m_r l₁/L, l₂ = k²/l₁, so that
+/// m₁ l₁ = m₂ l₂ and m₁ l₁² + m₂ l₂² = m_r l₁ l₂ = m_r k². P lies between
+/// G and the crank pin B when L < l, beyond B when L > l; the two-mass
+/// approximation (m_A at A, m_B at B) is exact only when L = l.
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
+pub struct DynamicalSystem {
+    /// l₁ = AG.
+    pub crosshead_to_cg: f64,
+    /// L = l₁ + k²/l₁, the distance AP.
+    pub distance: f64,
+    /// m₁ = m_r k²/(l₁ L), at A.
+    pub mass_at_crosshead: f64,
+    /// m₂ = m_r l₁/L, at P.
+    pub mass_at_percussion: f64,
 }
 
 /// The rod's inertia at one pose, at constant crank speed ω.
@@ -77,6 +119,10 @@ pub struct RodInertia {
     /// The torque of the equivalent system: m_A's inertia force through
     /// OM, m_B's (zero) and the correction couple's.
     pub equivalent_torque: f64,
+    /// The torque of the true dynamical system ([`DynamicalSystem`]):
+    /// m₁'s inertia at A and m₂'s at P, no couple; equal to `torque`.
+    /// `None` when there is no such system (G at A).
+    pub dynamical_torque: Option<f64>,
 }
 
 impl RodInertia {
@@ -104,6 +150,14 @@ impl RodInertia {
         // m_B on the crank pin: −ω² m_B B″ · B′, zero (B″ ⟂ B′ on the circle).
         let (b1, b2) = ([-r * s, r * c], [-r * c, -r * s]);
         let crank_pin = -w2 * mass_at_crank_pin * (b2[0] * b1[0] + b2[1] * b1[1]);
+        // P = A + (L/l)(B − A): its derivatives the same blend.
+        let dynamical_torque = rod.dynamical_system(l).map(|d| {
+            let q = d.distance / l;
+            let p1_ = [(1.0 - q) * s1 + q * b1[0], q * b1[1]];
+            let p2_ = [(1.0 - q) * s2 + q * b2[0], q * b2[1]];
+            -w2 * (d.mass_at_crosshead * s2 * s1
+                + d.mass_at_percussion * (p2_[0] * p1_[0] + p2_[1] * p1_[1]))
+        });
         Self {
             force: [-rod.mass * w2 * g2[0], -rod.mass * w2 * g2[1]],
             couple,
@@ -113,6 +167,70 @@ impl RodInertia {
             correction_couple,
             correction_torque,
             equivalent_torque: -w2 * mass_at_crosshead * s2 * s1 + crank_pin + correction_torque,
+            dynamical_torque,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::angle::Angle;
+    use crate::mechanism::SliderCrank;
+
+    /// The dynamical system has the rod's mass, centre of mass and moment
+    /// of inertia; its torque is the rigid body's; and the correction
+    /// couple of the two-mass approximation is the textbooks'
+    /// −m_r l₁ (L − l) α (α = −ω² φ″), which vanishes when L = l.
+    #[test]
+    fn the_dynamical_system_is_the_rod() {
+        let mut seed = 0x0000_ddb1_a5e5_u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for _ in 0..200 {
+            let (r, n) = (0.2 + next(), 1.05 + 8.0 * next());
+            let l = n * r;
+            let e = (next() - 0.5) * (l - r) * 0.9;
+            let m = SliderCrank::new(r, l, e).unwrap();
+            let (mass, bg, k) = (0.5 + 5.0 * next(), l * 0.95 * next(), l * next());
+            let rod = RodMass::new(mass, bg, k).unwrap();
+            let d = rod.dynamical_system(l).unwrap();
+            let (l1, big_l) = (l - bg, d.distance);
+            assert!((d.mass_at_crosshead + d.mass_at_percussion - mass).abs() < 1e-12 * mass);
+            // The centre of mass at G: m₁ l₁ = m₂ (L − l₁).
+            let moment = d.mass_at_crosshead * l1 - d.mass_at_percussion * (big_l - l1);
+            assert!(moment.abs() < 1e-12 * mass * big_l, "{moment}");
+            let inertia =
+                d.mass_at_crosshead * l1 * l1 + d.mass_at_percussion * (big_l - l1) * (big_l - l1);
+            assert!((inertia - mass * k * k).abs() < 1e-12 * mass * big_l * big_l);
+            let omega = 20.0 * next() - 10.0;
+            let pose = m.pose(Angle::deg(360.0 * next()));
+            let at = RodInertia::new(&pose, &rod, omega);
+            let t = at.dynamical_torque.unwrap();
+            let scale = mass * omega * omega * big_l.max(l) * big_l.max(l) * 10.0;
+            assert!((t - at.torque).abs() < 1e-12 * scale, "{t} {}", at.torque);
+            let alpha = -omega * omega * pose.obliquity_acceleration();
+            let textbook = -mass * l1 * (big_l - l) * alpha;
+            assert!(
+                (at.correction_couple - textbook).abs() < 1e-12 * scale,
+                "{} {textbook}",
+                at.correction_couple
+            );
+        }
+        // G at the cross-head: no second point.
+        assert!(
+            RodMass::new(1.0, 3.0, 0.5)
+                .unwrap()
+                .dynamical_system(3.0)
+                .is_none()
+        );
+        // k² = AG · BG: the centre of percussion is the crank pin.
+        let rod = RodMass::new(2.0, 1.0, 2f64.sqrt()).unwrap();
+        let d = rod.dynamical_system(3.0).unwrap();
+        assert!((d.distance - 3.0).abs() < 1e-15);
     }
 }

@@ -137,6 +137,16 @@ pub enum Field {
     Order,
     /// The decimals of a table's numbers.
     Decimals,
+    /// The fraction of the reciprocating mass a counterweight balances.
+    BalancedFraction,
+    /// The diameter of a locomotive's wheel.
+    Wheel,
+    /// A speed along the rails.
+    Speed,
+    /// A wheel's static load on the rail.
+    Load,
+    /// The angle of a cylinder's axis about the crank shaft.
+    Axis,
 }
 
 impl Field {
@@ -202,6 +212,11 @@ impl Field {
             Field::Class => "class",
             Field::Order => "order",
             Field::Decimals => "decimals",
+            Field::BalancedFraction => "fraction",
+            Field::Wheel => "wheel",
+            Field::Speed => "speed",
+            Field::Load => "load",
+            Field::Axis => "axis",
         }
     }
 }

@@ -25,7 +25,19 @@ pub fn mass_unit(units: &Units) -> String {
 /// with it (`whole_engine`).
 pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
     let b = unbalanced_forces(engine, angle);
+    let system = engine
+        .rod()
+        .and_then(|rod| rod.dynamical_system(engine.mechanism().rod()));
     let rod = at.rod.map_or(Value::Null, |r| {
+        let dynamical = match (system, r.dynamical_torque) {
+            (Some(d), Some(t)) => json!({
+                "percussion_distance": num(d.distance),
+                "mass_at_crosshead": num(d.mass_at_crosshead),
+                "mass_at_percussion": num(d.mass_at_percussion),
+                "torque": num(t),
+            }),
+            _ => Value::Null,
+        };
         json!({
             "inertia_force": [num(r.force[0]), num(r.force[1])],
             "inertia_couple": num(r.couple),
@@ -37,6 +49,7 @@ pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Uni
                 "correction_torque": num(r.correction_torque),
                 "torque": num(r.equivalent_torque),
             },
+            "dynamical": dynamical,
         })
     });
     json!({

@@ -8,6 +8,8 @@ mod dynamics;
 mod dynamics_json;
 mod guard;
 mod harmonics;
+mod partial;
+mod radial;
 mod reading_json;
 
 use crate::analytic::approx::acceleration_factor;
@@ -29,6 +31,8 @@ pub use dynamics::{dynamics_head, dynamics_row, example_table};
 pub use dynamics_json::{dynamics_json, mass_unit};
 pub use guard::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
 pub use harmonics::harmonics_table;
+pub use partial::{Locomotive, partial_balance_head, partial_balance_row};
+pub use radial::{radial_head, radial_row};
 pub use reading_json::ReadingJson;
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).

@@ -446,3 +446,72 @@ fn brute_fluctuation(values: &[f64], h: f64, mean: f64) -> f64 {
     }
     hi - lo
 }
+
+/// Numbers as a careless user or script types them, for the balancing.
+fn hostile() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        4 => -1e3..1e3f64,
+        1 => prop::num::f64::ANY,
+        1 => prop::sample::select(vec![
+            0.0, -0.0, 5e-324, 1e-300, 1e300, f64::MAX, f64::INFINITY, f64::NAN, 1.0000000000000002,
+        ]),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(256))]
+
+    /// Partial balance, the hammer blow, and cylinders on one crank take
+    /// any numbers: each is refused with one line or gives finite values
+    /// (no inf, no NaN), at any angle.
+    #[test]
+    fn the_balancing_takes_any_numbers(
+        c in hostile(), mass in hostile(), crank in hostile(), wheel in hostile(),
+        speed in hostile(), load in hostile(), n in hostile(), degrees in hostile(),
+        axes in prop::collection::vec(hostile(), 0..6),
+    ) {
+        use slider_crank::dynamics::{HammerBlow, PartialBalance, RadialEngine};
+        let one_line = |e: slider_crank::Error| {
+            let s = e.to_string();
+            assert!(!s.is_empty() && !s.contains('\n'), "{s}");
+        };
+        let angle = Angle::from_degrees(degrees).ok();
+        match PartialBalance::new(c) {
+            Ok(b) => {
+                if let Some(a) = angle {
+                    let u = b.at(a);
+                    prop_assert!(u.horizontal.is_finite() && u.vertical.is_finite());
+                    prop_assert!(u.magnitude.is_finite() && u.magnitude <= 1.0);
+                }
+                match HammerBlow::new(&b, mass, crank, wheel) {
+                    Ok(h) => {
+                        match h.at_speed(speed) {
+                            Ok(v) => prop_assert!(v.is_finite() && v >= 0.0),
+                            Err(e) => one_line(e),
+                        }
+                        match h.lifting_speed(load) {
+                            Ok(Some(v)) => prop_assert!(v.is_finite() && v >= 0.0),
+                            Ok(None) => prop_assert_eq!(h.moment, 0.0),
+                            Err(e) => one_line(e),
+                        }
+                    }
+                    Err(e) => one_line(e),
+                }
+            }
+            Err(e) => one_line(e),
+        }
+        match RadialEngine::new(&axes, n) {
+            Ok(e) => {
+                if let Some(a) = angle {
+                    let (p, s) = (e.primary_at(a), e.secondary_at(a));
+                    prop_assert!(p.iter().chain(&s).all(|v| v.is_finite()), "{p:?} {s:?}");
+                    match e.exact_at(a) {
+                        Ok(x) => prop_assert!(x.iter().all(|v| v.is_finite()), "{x:?}"),
+                        Err(err) => one_line(err),
+                    }
+                }
+            }
+            Err(e) => one_line(e),
+        }
+    }
+}
