@@ -111,6 +111,7 @@ impl PyEngine {
                 text,
                 bore,
                 what,
+                units: None,
             }),
         };
         Ok(Self {
