@@ -116,6 +116,9 @@ def handout(
     friction: float = 0.0,
     mass: Optional[float] = None,
     fluctuation: Optional[float] = None,
+    gas_force: Optional[float] = None,
+    indicator: Optional[str] = None,
+    bore: Optional[float] = None,
 ) -> str: ...
 def table(
     name: str,

@@ -3,7 +3,7 @@
 //! with `--class N`, a sheet and a key for each of N engines and a table
 //! of every answer.
 
-use super::args::{LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
+use super::args::{GivenMechanismArgs, LoadArgs, SpeedArgs, UnitArgs};
 use super::output::{Progress, Stdout};
 use clap::Args;
 use slider_crank::handout::{Class, DynamicsAsk, Handout, Paper};
@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 #[derive(Debug, Args)]
 pub struct HandoutArgs {
     #[command(flatten)]
-    pub mechanism: MechanismArgs,
+    pub mechanism: GivenMechanismArgs,
     #[command(flatten)]
     pub speed: SpeedArgs,
     /// Crank angle θ in degrees of the pose worked through,
@@ -89,13 +89,15 @@ pub struct HandoutArgs {
     /// n = l/r from 3.5 to 6, angles clear of the dead centres and the
     /// quarter turns, 100 to 1500 rpm), drawn from --seed: FILE-01.html
     /// and FILE-01-key.html for each, and FILE-answers.html with every
-    /// answer for the teacher. Implies --exercise; the engines are the
-    /// class's own, so --crank, --rod, --offset, --angle and the speed are
+    /// answer for the teacher. Implies --exercise. With --crank, --rod or
+    /// --offset, the engines are variations of that engine instead (r
+    /// ×0.8 to ×1.2, n ×0.9 to ×1.1, e/r kept, each assembling); the
+    /// angles and speeds are the class's own, so --angle and the speed are
     /// not taken
     #[arg(
         long,
         value_name = "N",
-        conflicts_with_all = ["crank", "rod", "offset", "angle", "rpm", "omega", "torque"]
+        conflicts_with_all = ["angle", "rpm", "omega", "torque"]
     )]
     pub class: Option<usize>,
     /// The seed the class's engines are drawn from: the same seed gives
@@ -176,7 +178,11 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
     let template = template(args)?;
     let path = |suffix: &str| PathBuf::from(format!("{stem}{suffix}.html"));
     if let Some(count) = args.class {
-        let class = Class::draw(count, args.seed, &template)?;
+        let class = if args.mechanism.given() {
+            Class::around(count, args.seed, &template)?
+        } else {
+            Class::draw(count, args.seed, &template)?
+        };
         let width = count.to_string().len().max(2);
         let mut files = Vec::with_capacity(2 * count + 1);
         for (i, h) in class.handouts().iter().enumerate() {
