@@ -78,17 +78,18 @@ const SCRIPT: &str = "
 })();
 ";
 
-/// What the page is headed with: the title given, else the figure's
-/// place in its source (`Textbook, Chapter IV “Slider-crank chains”, §36,
-/// Fig. 66 (Kisch’s construction)`), else the scene's name; then the
-/// engine drawn ([`engine`]), which the source alone does not name.
+/// What the page is headed with: the title given, as given; else the
+/// figure's place in its source (`Textbook, Chapter IV “Slider-crank
+/// chains”, §36, Fig. 66 (Kisch’s construction)`), or the scene's name,
+/// followed by the engine drawn ([`engine`]), which the source alone does
+/// not name.
 fn heading(animation: &Reel) -> String {
-    let base = match animation.title() {
-        Some(t) => t.to_string(),
-        None => crate::catalogue::FigureName::from_name(animation.name())
-            .map(|f| f.source())
-            .unwrap_or_else(|_| animation.name().to_string()),
-    };
+    if let Some(t) = animation.title() {
+        return t.to_string();
+    }
+    let base = crate::catalogue::FigureName::from_name(animation.name())
+        .map(|f| f.source())
+        .unwrap_or_else(|_| animation.name().to_string());
     match engine(animation) {
         Some(engine) => format!("{base}: {engine}"),
         None => base,
