@@ -229,15 +229,15 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     Ok(plot)
 }
 
-/// What the notes say of the gas force: the constant, or the bore and
-/// whose indicator diagram.
+/// What the notes say of the gas force after the mass: the constant, or
+/// the bore and whose indicator diagram.
 fn gas_note(ctx: &Ctx) -> String {
     let o = ctx.options;
     if let Some(f) = o.gas_force {
-        return format!("constant gas force {} {}", short(f), ctx.units.force());
+        return format!("; constant gas force {} {}", short(f), ctx.units.force());
     }
     format!(
-        "bore {} {}; gas force from the indicator diagram{}",
+        ", bore {} {}; gas force from the indicator diagram{}",
         short(o.bore.unwrap_or(EXAMPLE_BORE)),
         ctx.unit(),
         if o.data.is_some() {
@@ -255,7 +255,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
     let t_unit = ctx.units.torque();
     [
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; {}.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}{}.",
             short(m.crank()),
             short(m.rod()),
             // An offset engine says so (its stroke, and so its work, differ).
