@@ -777,6 +777,8 @@ class SliderCrank:
             gas_force=_option(gas_force),
             indicator=None if indicator is None else os.fspath(indicator),
             bore=_option(bore),
+            unit=self._unit,
+            force_unit=self._force_unit,
         )
 
     def turning_moment(

@@ -162,6 +162,8 @@ class Engine:
         gas_force: Optional[float] = None,
         indicator: Optional[str] = None,
         bore: Optional[float] = None,
+        unit: Optional[str] = None,
+        force_unit: Optional[str] = None,
     ) -> Engine: ...
     def at(self, degrees: float, unit: str, force_unit: str) -> str: ...
     def sweep(
