@@ -14,6 +14,9 @@ pub(crate) struct Table {
     input: Input,
     what: String,
     names: Vec<String>,
+    /// The unit each column's header declares, `(lbf/ft²)` or `[N/mm²]`
+    /// after its name; `None` where it declares none.
+    units: Vec<Option<String>>,
     /// Line number (1-based) and fields.
     rows: Vec<(usize, Vec<String>)>,
 }
@@ -26,6 +29,21 @@ fn bare(name: &str) -> String {
         .next()
         .unwrap_or("")
         .to_string()
+}
+
+/// The unit a column's header declares after its name, in parentheses or
+/// brackets (`expansion (lbf/ft²)`, `p [MPa]`), trimmed; `None` where it
+/// declares none or leaves the brackets empty.
+fn declared_unit(name: &str) -> Option<String> {
+    let open = name.find(['(', '['])?;
+    let close = if name[open..].starts_with('(') {
+        ')'
+    } else {
+        ']'
+    };
+    let inside = &name[open + 1..];
+    let unit = inside[..inside.find(close).unwrap_or(inside.len())].trim();
+    (!unit.is_empty()).then(|| unit.to_string())
 }
 
 /// Longest text a field of a data file may hold (a curve's or a
@@ -54,6 +72,7 @@ impl Table {
             return Err(Error::invalid(input, format!("{what}: no header line")));
         };
         let names: Vec<String> = header.split(',').map(bare).collect();
+        let units = header.split(',').map(declared_unit).collect();
         let mut rows = Vec::new();
         for (n, line) in lines {
             let fields: Vec<String> = line.split(',').map(|f| f.trim().to_string()).collect();
@@ -85,6 +104,7 @@ impl Table {
             input,
             what: what.to_string(),
             names,
+            units,
             rows,
         })
     }
@@ -123,6 +143,17 @@ impl Table {
                     ),
                 )
             })
+    }
+
+    /// The unit the header declares for the column (`lbf/ft²` of
+    /// `expansion (lbf/ft²)`), `None` where it declares none.
+    pub(crate) fn unit(&self, column: usize) -> Option<&str> {
+        self.units.get(column).and_then(|u| u.as_deref())
+    }
+
+    /// The column's name without its unit.
+    pub(crate) fn name(&self, column: usize) -> &str {
+        self.names.get(column).map_or("", String::as_str)
     }
 
     /// The column's values as finite numbers.
@@ -230,6 +261,14 @@ mod tests {
             [(40.0, 9.22), (50.0, 7.65)]
         );
         assert_eq!(t.texts(0).unwrap(), ["40", "50"]);
+        assert_eq!(t.unit(0), Some("deg"));
+        assert_eq!(t.unit(1), None);
+        let t = Table::parse("p [ MPa ],q (),r (lbf/ft²\n1,2,3\n", Input::Data, "d").unwrap();
+        assert_eq!(
+            (t.unit(0), t.unit(1), t.unit(2)),
+            (Some("MPa"), None, Some("lbf/ft²"))
+        );
+        assert_eq!(t.name(0), "p");
     }
 
     #[test]

@@ -6,9 +6,11 @@ use thiserror::Error;
 
 mod field;
 mod input;
+mod spelling;
 
 pub use field::Field;
 pub use input::Input;
+pub use spelling::Spelling;
 
 /// Everything that can go wrong at the boundary of the crate: bad numbers,
 /// a mechanism that cannot be assembled, a malformed request.

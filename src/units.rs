@@ -204,6 +204,35 @@ impl Units {
         format!("{}·{}", self.force, self.length)
     }
 
+    /// The unit of pressures: force per length squared (`N/mm²`), the
+    /// unit an indicator diagram's pressures are in for these units.
+    pub fn pressure(&self) -> String {
+        format!("{}/{}²", self.force, self.length)
+    }
+
+    /// Whether `name` is the unit of pressures of these units
+    /// ([`Units::pressure`]): written `N/mm²`, `N/mm^2` or `N/mm2`, or by
+    /// a name of its own (`MPa` for N/mm², `Pa` for N/m², `kPa` for kN/m²,
+    /// `GPa` for kN/mm², `psi` for lbf/in², `psf` for lbf/ft²). Names
+    /// only, as everywhere: `psi` with millimetres and newtons, or `bar`
+    /// with anything, is another unit and is false.
+    pub fn is_pressure(&self, name: &str) -> bool {
+        let (f, l) = (self.force.as_str(), self.length.as_str());
+        let spelled = ["²", "^2", "2"]
+            .iter()
+            .any(|sq| name == format!("{f}/{l}{sq}"));
+        let named = matches!(
+            (name, f, l),
+            ("Pa", "N", "m")
+                | ("kPa", "kN", "m")
+                | ("MPa", "N", "mm")
+                | ("GPa", "kN", "mm")
+                | ("psi", "lbf", "in")
+                | ("psf", "lbf", "ft")
+        );
+        spelled || named
+    }
+
     /// The unit of mass the forces imply, FORCE·s²/LENGTH, by its name
     /// where the pair is a coherent system: `kg` with N and m, `slug` with
     /// lbf and ft, `t` with N and mm or kN and m; otherwise as derived
@@ -310,6 +339,25 @@ mod tests {
         assert_eq!(units("m", "kN").mass(), "t");
         assert_eq!(units("in", "lbf").mass(), "lbf·s²/in");
         assert_eq!(units("in", "lbf").moment_of_inertia(), "lbf·s²·in");
+    }
+
+    #[test]
+    fn pressures_are_named_in_the_units_or_by_their_own_names() {
+        let units = |l: &str, f: &str| Units::new(l.parse().unwrap(), f.parse().unwrap());
+        let mm = Units::MILLIMETRE_NEWTON;
+        assert_eq!(mm.pressure(), "N/mm²");
+        for yes in ["N/mm²", "N/mm^2", "N/mm2", "MPa"] {
+            assert!(mm.is_pressure(yes), "{yes}");
+        }
+        for no in ["lbf/ft²", "psi", "Pa", "bar", "N/m²", "N/mm", ""] {
+            assert!(!mm.is_pressure(no), "{no}");
+        }
+        assert!(Units::FOOT_POUND.is_pressure("lbf/ft²"));
+        assert!(Units::FOOT_POUND.is_pressure("psf"));
+        assert!(!Units::FOOT_POUND.is_pressure("psi"));
+        assert!(units("m", "N").is_pressure("Pa"));
+        assert!(units("m", "kN").is_pressure("kPa"));
+        assert!(units("in", "lbf").is_pressure("psi"));
     }
 
     #[test]

@@ -835,6 +835,8 @@ class SliderCrank:
             gas_force=_option(gas_force),
             indicator=None if indicator is None else os.fspath(indicator),
             bore=_option(bore),
+            unit=self._unit,
+            force_unit=self._force_unit,
         )
 
     def turning_moment(
@@ -979,10 +981,10 @@ class SliderCrank:
         torque: Optional[float],
         friction: Optional[float],
         paper: str,
-        mass: Optional[float] = None,
-        fluctuation: Optional[float] = None,
+        dynamics: Optional["_Dynamics"] = None,
     ) -> str:
         w = _core.crank_speed(rpm, omega)
+        d = dynamics or _Dynamics()
         if friction is not None and torque is None:
             raise ValueError("friction applies with a torque: give torque= too")
         return _core.handout(
@@ -997,8 +999,11 @@ class SliderCrank:
             paper,
             _option(torque),
             0.0 if friction is None else _real(friction),
-            _option(mass),
-            _option(fluctuation),
+            _option(d.mass),
+            _option(d.fluctuation),
+            _option(d.gas_force),
+            None if d.indicator is None else os.fspath(d.indicator),
+            _option(d.bore),
         )
 
     def handout(
@@ -1013,19 +1018,27 @@ class SliderCrank:
         *,
         mass: Optional[float] = None,
         fluctuation: Optional[float] = None,
+        gas_force: Optional[float] = None,
+        indicator: Union[None, str, "os.PathLike[str]"] = None,
+        bore: Optional[float] = None,
     ) -> str:
         """The printable teaching page (HTML) that works this engine
         through textbook §35–37 and Ng step by step at ``theta_deg``, as
         ``slider-crank handout`` writes it; ``paper`` is ``a4`` or
         ``letter``; speed and load as in :meth:`at`. With ``mass`` (the
-        reciprocating mass, slug: the page's gas force is the steam
-        indicator diagram in lbf/ft², so the engine's units are ft and
-        lbf) it also works the dynamics (``--mass``): the inertia force,
-        the crank effort, the turning-moment diagram and the flywheel for
-        the coefficient of fluctuation of speed ``fluctuation`` (0.02 when
-        not given, ``--fluctuation``). Written to ``out`` too when given;
-        the HTML is returned."""
-        html = self._handout("page", theta_deg, rpm, omega, torque, friction, paper, mass, fluctuation)
+        reciprocating mass in the unit that makes mass × length/s² the
+        force unit: kg with m and N, slug with ft and lbf) it also works
+        the dynamics (``--mass``): the inertia force, the crank effort, the
+        turning-moment diagram and the flywheel for the coefficient of
+        fluctuation of speed ``fluctuation`` (0.02 when not given). The
+        gas force is ``gas_force`` (a constant, in the force unit), or the
+        indicator diagram read from the CSV file ``indicator`` (pressures
+        in force per length², a unit declared in its header checked
+        against the engine's) on the cylinder's ``bore``, else the
+        example's steam diagram (lbf/ft² on a 10 in bore: in ft and lbf
+        only). Written to ``out`` too when given; the HTML is returned."""
+        dynamics = _Dynamics(mass, fluctuation, gas_force, indicator, bore)
+        html = self._handout("page", theta_deg, rpm, omega, torque, friction, paper, dynamics)
         if out is not None:
             _write((out, html))
         return html
@@ -1039,13 +1052,23 @@ class SliderCrank:
         friction: Optional[float] = None,
         paper: str = "a4",
         out: Union[None, str, "os.PathLike[str]"] = None,
+        *,
+        mass: Optional[float] = None,
+        fluctuation: Optional[float] = None,
+        gas_force: Optional[float] = None,
+        indicator: Union[None, str, "os.PathLike[str]"] = None,
+        bore: Optional[float] = None,
     ) -> Tuple[str, str]:
         """The exercise sheet and its answer key (HTML), as ``slider-crank
-        handout --exercise`` writes them; with ``out`` (``sheet.html``)
-        also written there and beside it (``sheet-key.html``), both or
-        neither: when either cannot be written (``OSError``), no file is
-        changed, so a sheet is never left without its key."""
-        args = (theta_deg, rpm, omega, torque, friction, paper)
+        handout --exercise`` writes them; with ``mass`` and the gas force
+        as in :meth:`handout`, the sheet also asks the inertia force, the
+        piston effort and the crank effort at its pose. With ``out``
+        (``sheet.html``) also written there and beside it
+        (``sheet-key.html``), both or neither: when either cannot be
+        written (``OSError``), no file is changed, so a sheet is never
+        left without its key."""
+        dynamics = _Dynamics(mass, fluctuation, gas_force, indicator, bore)
+        args = (theta_deg, rpm, omega, torque, friction, paper, dynamics)
         sheet = self._handout("exercise", *args)
         key = self._handout("key", *args)
         if out is not None:
@@ -1078,6 +1101,17 @@ class SliderCrank:
             omega=omega,
             **options,
         )
+
+
+@dataclass(frozen=True)
+class _Dynamics:
+    """The dynamics keywords of a handout or exercise, as given."""
+
+    mass: Optional[float] = None
+    fluctuation: Optional[float] = None
+    gas_force: Optional[float] = None
+    indicator: Union[None, str, "os.PathLike[str]"] = None
+    bore: Optional[float] = None
 
 
 def _write(*files: Tuple[Union[str, "os.PathLike[str]"], str]) -> None:

@@ -122,6 +122,9 @@ def handout(
     friction: float = 0.0,
     mass: Optional[float] = None,
     fluctuation: Optional[float] = None,
+    gas_force: Optional[float] = None,
+    indicator: Optional[str] = None,
+    bore: Optional[float] = None,
 ) -> str: ...
 def table(
     name: str,
@@ -171,6 +174,8 @@ class Engine:
         gas_force: Optional[float] = None,
         indicator: Optional[str] = None,
         bore: Optional[float] = None,
+        unit: Optional[str] = None,
+        force_unit: Optional[str] = None,
     ) -> Engine: ...
     def at(self, degrees: float, unit: str, force_unit: str) -> str: ...
     def sweep(

@@ -68,10 +68,12 @@ impl PyEngine {
     /// given), a rod of mass `rod_mass` with its centre of mass `rod_cg`
     /// from the crank pin and radius of gyration `rod_gyration`, and a
     /// constant `gas_force` or the indicator diagram read from the CSV
-    /// file `indicator` with the cylinder's `bore`.
+    /// file `indicator` with the cylinder's `bore`; a unit the diagram's
+    /// header declares for its pressures is checked against `unit` and
+    /// `force_unit` where they are given, as `analyze` checks it.
     #[new]
     #[pyo3(signature = (crank, rod, offset, omega, mass=None, rod_mass=None, rod_cg=None,
-        rod_gyration=None, gas_force=None, indicator=None, bore=None))]
+        rod_gyration=None, gas_force=None, indicator=None, bore=None, unit=None, force_unit=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         crank: f64,
@@ -85,7 +87,13 @@ impl PyEngine {
         gas_force: Option<f64>,
         indicator: Option<PathBuf>,
         bore: Option<f64>,
+        unit: Option<&str>,
+        force_unit: Option<&str>,
     ) -> PyResult<Self> {
+        let units = match unit.zip(force_unit) {
+            Some((u, f)) => Some(units(u, f)?),
+            None => None,
+        };
         check_pairs(
             (rod_mass, rod_cg, rod_gyration),
             gas_force,
@@ -111,6 +119,7 @@ impl PyEngine {
                 text,
                 bore,
                 what,
+                units: units.as_ref(),
             }),
         };
         Ok(Self {

@@ -15,12 +15,12 @@ use slider_crank::animate::{Animation, AnimationFormat};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::construct::{Graphical, Reading};
 use slider_crank::gallery::Gallery;
-use slider_crank::handout::Handout;
+use slider_crank::handout::{DynamicsAsk, Handout};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{
     FileFormat, TikzOptions, to_pdf, to_png, to_svg, to_tikz, write_atomic, write_atomic_all,
 };
-use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
+use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
 use slider_crank::{
     Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units,
 };
@@ -401,10 +401,14 @@ fn save(py: Python<'_>, svg: &str, path: PathBuf) -> PyResult<()> {
 /// The teaching page `slider-crank handout` writes (`which` = "page"),
 /// or its exercise sheet ("exercise") or answer key ("key"), as HTML;
 /// with `mass` (and the coefficient of fluctuation of speed
-/// `fluctuation`, 0.02 when not given) the page works the engine's
-/// dynamics too, as `--mass` and `--fluctuation` do.
+/// `fluctuation`, 0.02 when not given, and the gas force: `gas_force`, or
+/// the indicator diagram read from the CSV file `indicator` on the bore
+/// `bore`, else the example's in ft and lbf) the page works the engine's
+/// dynamics too, as `--mass` … `--bore` do, and an exercise the forces
+/// at its pose. The options are filled into the library's request and
+/// refused in its words, naming these keywords.
 #[pyfunction]
-#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, which, paper="a4", torque=None, friction=0.0, mass=None, fluctuation=None))]
+#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, which, paper="a4", torque=None, friction=0.0, mass=None, fluctuation=None, gas_force=None, indicator=None, bore=None))]
 #[allow(clippy::too_many_arguments)]
 fn handout(
     py: Python<'_>,
@@ -421,17 +425,10 @@ fn handout(
     friction: f64,
     mass: Option<f64>,
     fluctuation: Option<f64>,
+    gas_force: Option<f64>,
+    indicator: Option<PathBuf>,
+    bore: Option<f64>,
 ) -> PyResult<String> {
-    if fluctuation.is_some() && mass.is_none() {
-        return Err(PyValueError::new_err(
-            "fluctuation sizes the flywheel of the dynamics: give mass= with it",
-        ));
-    }
-    if mass.is_some() && which != "page" {
-        return Err(PyValueError::new_err(
-            "mass works the dynamics on the teaching page, not on an exercise sheet",
-        ));
-    }
     let mut h = Handout::new(
         engine(crank, rod, offset)?,
         Angle::from_degrees(degrees).map_err(py_err)?,
@@ -443,11 +440,23 @@ fn handout(
     if let Some(t) = torque {
         h = h.with_torque(t, friction).map_err(py_err)?;
     }
-    if let Some(m) = mass {
-        h = h
-            .with_dynamics(m, fluctuation.unwrap_or(DEFAULT_FLUCTUATION))
-            .map_err(py_err)?;
-    }
+    let indicator = match &indicator {
+        Some(path) => Some((
+            read_text(path, MAX_DATA_BYTES, Input::Indicator).map_err(py_err)?,
+            path.display().to_string(),
+        )),
+        None => None,
+    };
+    let h = h
+        .with_dynamics_asked(&DynamicsAsk {
+            mass,
+            fluctuation,
+            gas_force,
+            indicator,
+            bore,
+            spelling: Spelling::Keyword,
+        })
+        .map_err(py_err)?;
     py.detach(|| match which {
         "exercise" => h.exercise(),
         "key" => h.key(),
@@ -455,9 +464,6 @@ fn handout(
     })
     .map_err(py_err)
 }
-
-/// The command's default `--fluctuation` of the handout's flywheel.
-const DEFAULT_FLUCTUATION: f64 = 0.02;
 
 /// Ng's torque as implied by Table 2's F column, N·mm (the `table forces`
 /// default).

@@ -61,6 +61,14 @@ def engine_of(pose: Any) -> sc.SliderCrank:
 @pytest.mark.parametrize("keywords,flags", ENGINES)
 @pytest.mark.parametrize("pose", POSES)
 def test_at_with_masses_equals_analyze(cli: Cli, pose: Any, keywords: Dict[str, Any], flags: List[str]) -> None:
+    if "indicator" in keywords and pose[3:5] != ("ft", "lbf"):
+        # The example diagram declares lbf/ft²: both refuse it in m and N.
+        message = cli.error(analyze_flags(pose, flags))
+        with pytest.raises(ValueError) as caught:
+            engine_of(pose).at(pose[5], omega=pose[6], **keywords)
+        assert str(caught.value) in message, (message, str(caught.value))
+        assert "its pressures are in lbf/ft², but lengths in m and forces in N" in message
+        return
     text = cli.stdout(analyze_flags(pose, flags))
     got = engine_of(pose).at(pose[5], omega=pose[6], **keywords)
     want = json.loads(text)

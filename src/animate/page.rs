@@ -11,15 +11,17 @@ use crate::render::{fmt, root_size};
 use maud::{Markup, PreEscaped, html};
 
 /// The page's style, after the shared book page ([`crate::html::document`]).
-/// On a screen the page is the window's height: the heading and the
-/// controls take what they need and the frame is scaled into the rest
-/// (never below 16rem), so the whole drawing plays without scrolling.
+/// On a screen the page is the window: the heading and the controls take
+/// what they need and the frame is scaled into the rest, as large as the
+/// window's width and height allow (never below 16rem), so that the whole
+/// drawing plays without scrolling and fills a projector's screen; a
+/// printed page keeps the book's measure.
 const STYLE: &str = "
 body { max-width: 64rem; }
 .stage svg { display: block; max-width: 100%; height: auto; }
 @media screen {
   body { display: flex; flex-direction: column; box-sizing: border-box; height: 100vh;
-         margin-top: 0; margin-bottom: 0; padding-top: 1rem; padding-bottom: 1rem; }
+         max-width: none; margin-top: 0; margin-bottom: 0; padding: 1rem 2rem; }
   h1 { margin-top: 0; }
   .stage { flex: 1 1 0; min-height: 16rem; }
   .animation-frame { height: 100%; }
@@ -76,16 +78,47 @@ const SCRIPT: &str = "
 })();
 ";
 
-/// What the page is headed with: the title given, else the figure's
-/// place in its source (`Textbook, Chapter IV “Slider-crank chains”, §36,
-/// Fig. 66 (Kisch’s construction)`), else the scene's name.
+/// What the page is headed with: the title given, as given; else the
+/// figure's place in its source (`Textbook, Chapter IV “Slider-crank
+/// chains”, §36, Fig. 66 (Kisch’s construction)`), or the scene's name,
+/// followed by the engine drawn ([`engine`]), which the source alone does
+/// not name.
 fn heading(animation: &Reel) -> String {
-    match animation.title() {
-        Some(t) => t.to_string(),
-        None => crate::catalogue::FigureName::from_name(animation.name())
-            .map(|f| f.source())
-            .unwrap_or_else(|_| animation.name().to_string()),
+    if let Some(t) = animation.title() {
+        return t.to_string();
     }
+    let base = crate::catalogue::FigureName::from_name(animation.name())
+        .map(|f| f.source())
+        .unwrap_or_else(|_| animation.name().to_string());
+    match engine(animation) {
+        Some(engine) => format!("{base}: {engine}"),
+        None => base,
+    }
+}
+
+/// The engine the frames draw, from the first frame's metadata: `r = 0.5
+/// ft, l = 3 ft, in line` (or `e = …`); `None` where the metadata has no
+/// mechanism.
+fn engine(animation: &Reel) -> Option<String> {
+    let metadata = animation.first().metadata();
+    let m = metadata.get("mechanism")?;
+    let number = |key: &str| m.get(key).and_then(serde_json::Value::as_f64);
+    let (r, l, e) = (number("crank")?, number("rod")?, number("offset")?);
+    let unit = m
+        .get("unit")
+        .and_then(serde_json::Value::as_str)
+        .unwrap_or("");
+    let show = |x: f64| crate::number::short_on(x, crate::number::SetOn::Page);
+    let line = if e == 0.0 {
+        "in line".to_string()
+    } else {
+        format!("e = {} {unit}", show(e))
+    };
+    Some(format!(
+        "r = {} {unit}, l = {} {unit}, {line}",
+        show(r),
+        show(l)
+    ))
 }
 
 /// The page written to `sink` a frame at a time, as `frames` are drawn.

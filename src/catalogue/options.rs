@@ -108,6 +108,14 @@ pub struct FigureOptions {
     /// The coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω of
     /// the `flywheel` figure, 0 < C_s < 2 (default 0.02).
     pub fluctuation: Option<f64>,
+    /// The cylinder's bore D, in the length unit, on which the indicator
+    /// diagram of `turning-moment` and `flywheel` ([`FigureOptions::data`])
+    /// acts (default the example's 10 in, in feet and pounds-force only).
+    pub bore: Option<f64>,
+    /// A constant gas force on the piston of `turning-moment` and
+    /// `flywheel`, positive towards the crank centre, in the force unit, in
+    /// place of an indicator diagram.
+    pub gas_force: Option<f64>,
     /// Whether the mechanism is drawn mirrored, the cylinder on the left
     /// (default: the seed's, mirrored for the textbook, not for Ng); the
     /// mechanism figures and the diagrams drawn on the mechanism
@@ -155,6 +163,10 @@ pub(crate) enum Setting {
     Mass,
     /// The coefficient of fluctuation of speed.
     Fluctuation,
+    /// The bore of the indicator diagram's cylinder.
+    Bore,
+    /// A constant gas force.
+    GasForce,
 }
 
 impl Setting {
@@ -177,6 +189,8 @@ impl Setting {
             Setting::Mirror => "--mirror",
             Setting::Mass => "--mass",
             Setting::Fluctuation => "--fluctuation",
+            Setting::Bore => "--bore",
+            Setting::GasForce => "--gas-force",
         }
     }
 }
@@ -198,6 +212,8 @@ impl FigureOptions {
             (self.mirror.is_some(), Setting::Mirror),
             (self.mass.is_some(), Setting::Mass),
             (self.fluctuation.is_some(), Setting::Fluctuation),
+            (self.bore.is_some(), Setting::Bore),
+            (self.gas_force.is_some(), Setting::GasForce),
         ]
         .into_iter()
         .filter_map(|(set, s)| set.then_some(s))

@@ -12,7 +12,7 @@ use crate::scene::Layer;
 use At::{Crank, NoPose, Tilt};
 use Group::{Chain, Developers, Diagrams};
 use Kind::{Diagram, Mechanism};
-use Setting::{Angle, Data, Fit, Fluctuation, Font, Mass, Mirror, Speed, Style};
+use Setting::{Angle, Bore, Data, Fit, Fluctuation, Font, GasForce, Mass, Mirror, Speed, Style};
 use Source::{Book, Ng, Outside};
 
 /// What the table says of one named figure.
@@ -487,7 +487,7 @@ figures! {
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::turning::build),
-        takes: &[MECH, Speed, Data, Mass, Style, Font],
+        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Style, Font],
     },
     /// The inertia force of the reciprocating parts on the mechanism:
     /// Klein's CG read as the piston's acceleration and scaled by m ω² to
@@ -543,7 +543,7 @@ figures! {
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::flywheel::build),
-        takes: &[MECH, Speed, Data, Mass, Fluctuation, Style, Font],
+        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Fluctuation, Style, Font],
     },
 }
 

@@ -20,7 +20,9 @@ use std::time::{Duration, Instant};
          counter-clockwise round the turn [default: the figure's]"
     )),
     mut_arg("data", |a| a.hide(true)),
-    mut_arg("fit", |a| a.hide(true))
+    mut_arg("fit", |a| a.hide(true)),
+    mut_arg("bore", |a| a.hide(true)),
+    mut_arg("gas_force", |a| a.hide(true))
 )]
 pub struct AnimateArgs {
     // The help lists the mechanism figures (the diagrams are not animated).
@@ -39,6 +41,13 @@ pub struct AnimateArgs {
     /// Seconds per revolution, more than 0 and at most 3600
     #[arg(long, value_name = "S", allow_hyphen_values = true, default_value_t = DEFAULT_PERIOD)]
     pub period: f64,
+    /// For a projector or a large screen: the frames without the enlarged
+    /// detail of the constructions about the crank (the page, shown the
+    /// screen's size, is itself the enlargement), so that the mechanism
+    /// fills the width of a landscape screen; the page of an .html file
+    /// fills the window on any screen
+    #[arg(long)]
+    pub projector: bool,
     /// The file to write, in the format its extension names: .svg (plays
     /// by itself in a browser) or .html (a page with a slider for the
     /// crank angle and a play/pause button); both self-contained. `-`
@@ -71,6 +80,11 @@ pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
     let scene = options(&args.flags, args.name)
         .and_then(|o| args.name.scene_with(&o))?
         .ok_or_else(|| not_animated(args.name))?;
+    let scene = if args.projector {
+        scene.without_detail()
+    } else {
+        scene
+    };
     let mut progress = Progress::new();
     let request = (args.frames, args.period);
     let mut show = |done, total| progress.show(done, total);

@@ -37,6 +37,42 @@ pub struct MechanismArgs {
     pub offset: f64,
 }
 
+/// The mechanism flags of `handout`, each `None` where not given, so that
+/// a class varies around the teacher's engine only when one is given;
+/// the defaults otherwise those of [`MechanismArgs`].
+#[derive(Debug, Clone, Args)]
+pub struct GivenMechanismArgs {
+    /// Crank radius r, in any length unit, named by --unit (give the rod and
+    /// the offset in the same unit) [default: 0.5]
+    #[arg(long, allow_hyphen_values = true, value_name = "R")]
+    pub crank: Option<f64>,
+    /// Connecting-rod length l; must exceed r + |e| so the crank turns
+    /// fully [default: 3]
+    #[arg(long, allow_hyphen_values = true, value_name = "L")]
+    pub rod: Option<f64>,
+    /// Offset e of the line of stroke from the crank centre: the stroke is
+    /// the line y = e (0: in line; positive: above the crank centre)
+    /// [default: 0]
+    #[arg(long, allow_hyphen_values = true, value_name = "E")]
+    pub offset: Option<f64>,
+}
+
+impl GivenMechanismArgs {
+    /// Whether any of the flags was given.
+    pub fn given(&self) -> bool {
+        self.crank.is_some() || self.rod.is_some() || self.offset.is_some()
+    }
+
+    /// The validated mechanism, the §35 engine's lengths where not given.
+    pub fn mechanism(&self) -> Result<SliderCrank> {
+        SliderCrank::new(
+            self.crank.unwrap_or(0.5),
+            self.rod.unwrap_or(3.0),
+            self.offset.unwrap_or(0.0),
+        )
+    }
+}
+
 impl MechanismArgs {
     /// The validated mechanism.
     pub fn mechanism(&self) -> Result<SliderCrank> {

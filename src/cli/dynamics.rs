@@ -79,7 +79,12 @@ impl EngineArgs {
     }
 
     /// The engine asked for, `None` without a dynamics flag.
-    pub fn engine(&self, mechanism: SliderCrank, omega: f64) -> Result<Option<Engine>> {
+    pub fn engine(
+        &self,
+        mechanism: SliderCrank,
+        omega: f64,
+        units: &Units,
+    ) -> Result<Option<Engine>> {
         if !self.is_set() {
             return Ok(None);
         }
@@ -101,7 +106,12 @@ impl EngineArgs {
             indicator: text
                 .as_ref()
                 .zip(self.bore)
-                .map(|((text, what), bore)| IndicatorText { text, bore, what }),
+                .map(|((text, what), bore)| IndicatorText {
+                    text,
+                    bore,
+                    what,
+                    units: Some(units),
+                }),
         };
         Ok(Some(parts.build(mechanism, omega)?))
     }

@@ -98,6 +98,10 @@ pub struct FigureFlags {
     pub font: Option<Font>,
     /// Measured data, CSV with a header line: ng-fig-8-forces (columns
     /// angle, force; default examples/ng-experiment.csv, Ng's F'),
+    /// turning-moment and flywheel (an indicator diagram: fraction,
+    /// expansion, compression, gauge pressures in force/length², a unit
+    /// declared in a header such as "expansion (N/mm²)" checked against
+    /// the units; give --bore; default examples/indicator.csv, lbf/ft²),
     /// ng-fig-7-calibration (force, strain; default Ng's Table 1),
     /// curve-benchmark (default docs/curve-benchmarks.csv)
     #[arg(long, value_name = "FILE")]
@@ -118,6 +122,16 @@ pub struct FigureFlags {
     /// [default: 0.02]
     #[arg(long, value_name = "CS", allow_hyphen_values = true)]
     pub fluctuation: Option<f64>,
+    /// The bore D of the cylinder of turning-moment and flywheel, on which
+    /// the indicator diagram of --data acts, in the length unit [default:
+    /// the example's 10 in, with ft and lbf only]
+    #[arg(long, value_name = "D", allow_hyphen_values = true)]
+    pub bore: Option<f64>,
+    /// A constant gas force on the piston of turning-moment and flywheel,
+    /// positive towards the crank centre, in the force unit, in place of
+    /// an indicator diagram
+    #[arg(long, value_name = "F", allow_hyphen_values = true)]
+    pub gas_force: Option<f64>,
     #[command(flatten)]
     pub units: UnitArgs,
     /// Letters of a mechanism figure: textbook (C, B, A, D, E) or ng (O,
@@ -303,6 +317,8 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     options.notation = args.notation;
     options.mass = args.mass;
     options.fluctuation = args.fluctuation;
+    options.bore = args.bore;
+    options.gas_force = args.gas_force;
     options.mirror = match (args.mirror, args.no_mirror) {
         (true, _) => Some(true),
         (_, true) => Some(false),

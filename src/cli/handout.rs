@@ -3,11 +3,13 @@
 //! with `--class N`, a sheet and a key for each of N engines and a table
 //! of every answer.
 
-use super::args::{LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
+use super::args::{GivenMechanismArgs, LoadArgs, SpeedArgs, UnitArgs};
 use super::output::{Progress, Stdout};
 use clap::Args;
-use slider_crank::handout::{Class, Handout, Paper};
+use slider_crank::handout::{Class, DynamicsAsk, Handout, Paper};
+use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::write_atomic_all;
+use slider_crank::table::Spelling;
 use slider_crank::{Angle, Error, Input, Result, Units};
 use std::path::{Path, PathBuf};
 
@@ -16,7 +18,7 @@ use std::path::{Path, PathBuf};
 #[derive(Debug, Args)]
 pub struct HandoutArgs {
     #[command(flatten)]
-    pub mechanism: MechanismArgs,
+    pub mechanism: GivenMechanismArgs,
     #[command(flatten)]
     pub speed: SpeedArgs,
     /// Crank angle θ in degrees of the pose worked through,
@@ -33,18 +35,21 @@ pub struct HandoutArgs {
     pub units: UnitArgs,
     #[command(flatten)]
     pub load: LoadArgs,
-    /// Work the engine's dynamics after the diagrams, for a reciprocating
-    /// mass M (piston and cross-head) in slug (lbf·s²/ft): the inertia
-    /// force from Klein's CG, the crank effort T = F·OM with the gas force
-    /// of the steam indicator diagram of the turning-moment figure
-    /// (examples/indicator.csv, 10 in bore), the turning-moment diagram
-    /// with its mean torque and ΔE, and the flywheel; three steps and
-    /// their figures, about three more pages. Needs the units ft and lbf
+    /// Work the engine's dynamics after the diagrams (on an exercise, the
+    /// forces at the pose), for a reciprocating mass M (piston and
+    /// cross-head) in the unit that makes mass × length/s² the force unit
+    /// (slug with ft and lbf, kg with m and N): the inertia force from
+    /// Klein's CG, the crank effort T = F·OM with the gas force of
+    /// --gas-force or --indicator, else the example's steam indicator
+    /// diagram (examples/indicator.csv, lbf/ft² on a 10 in bore: with ft
+    /// and lbf only), the turning-moment diagram with its mean torque and
+    /// ΔE, and the flywheel; three steps and their figures, about three
+    /// more pages
     #[arg(
         long,
         value_name = "M",
         allow_negative_numbers = true,
-        conflicts_with_all = ["exercise", "class"]
+        conflicts_with = "class"
     )]
     pub mass: Option<f64>,
     /// The coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω
@@ -57,6 +62,20 @@ pub struct HandoutArgs {
         requires = "mass"
     )]
     pub fluctuation: f64,
+    /// A constant gas force on the piston for --mass, positive towards
+    /// the crank centre, in the force unit
+    #[arg(long, value_name = "F", allow_negative_numbers = true)]
+    pub gas_force: Option<f64>,
+    /// The engine's own indicator diagram for --mass: CSV with the
+    /// columns fraction (of the stroke from the outer dead centre),
+    /// expansion and compression (gauge pressures in force per length²;
+    /// a unit declared in the header, "expansion (N/mm²)", must be that
+    /// of the units); give --bore with it
+    #[arg(long, value_name = "CSV")]
+    pub indicator: Option<PathBuf>,
+    /// The bore D of the cylinder of --indicator, in the length unit
+    #[arg(long, value_name = "D", allow_negative_numbers = true)]
+    pub bore: Option<f64>,
     /// The paper the page is printed on: a4 or letter (the CSS @page size;
     /// no figure or table is broken across two pages)
     #[arg(long, value_name = "PAPER", default_value = "a4")]
@@ -70,13 +89,15 @@ pub struct HandoutArgs {
     /// n = l/r from 3.5 to 6, angles clear of the dead centres and the
     /// quarter turns, 100 to 1500 rpm), drawn from --seed: FILE-01.html
     /// and FILE-01-key.html for each, and FILE-answers.html with every
-    /// answer for the teacher. Implies --exercise; the engines are the
-    /// class's own, so --crank, --rod, --offset, --angle and the speed are
+    /// answer for the teacher. Implies --exercise. With --crank, --rod or
+    /// --offset, the engines are variations of that engine instead (r
+    /// ×0.8 to ×1.2, n ×0.9 to ×1.1, e/r kept, each assembling); the
+    /// angles and speeds are the class's own, so --angle and the speed are
     /// not taken
     #[arg(
         long,
         value_name = "N",
-        conflicts_with_all = ["crank", "rod", "offset", "angle", "rpm", "omega", "torque"]
+        conflicts_with_all = ["angle", "rpm", "omega", "torque"]
     )]
     pub class: Option<usize>,
     /// The seed the class's engines are drawn from: the same seed gives
@@ -134,10 +155,21 @@ pub fn template(args: &HandoutArgs) -> Result<Handout> {
     if let Some(t) = args.load.torque {
         template = template.with_torque(t, args.load.friction)?;
     }
-    if let Some(m) = args.mass {
-        template = template.with_dynamics(m, args.fluctuation)?;
-    }
-    Ok(template)
+    let indicator = match &args.indicator {
+        Some(path) => Some((
+            read_text(path, MAX_DATA_BYTES, Input::Indicator)?,
+            path.display().to_string(),
+        )),
+        None => None,
+    };
+    template.with_dynamics_asked(&DynamicsAsk {
+        mass: args.mass,
+        fluctuation: args.mass.map(|_| args.fluctuation),
+        gas_force: args.gas_force,
+        indicator,
+        bore: args.bore,
+        spelling: Spelling::Flag,
+    })
 }
 
 /// Runs the subcommand: the files written; nothing on standard output.
@@ -146,7 +178,11 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
     let template = template(args)?;
     let path = |suffix: &str| PathBuf::from(format!("{stem}{suffix}.html"));
     if let Some(count) = args.class {
-        let class = Class::draw(count, args.seed, &template)?;
+        let class = if args.mechanism.given() {
+            Class::around(count, args.seed, &template)?
+        } else {
+            Class::draw(count, args.seed, &template)?
+        };
         let width = count.to_string().len().max(2);
         let mut files = Vec::with_capacity(2 * count + 1);
         for (i, h) in class.handouts().iter().enumerate() {

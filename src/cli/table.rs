@@ -563,7 +563,8 @@ fn dynamics(
 ) -> Result<()> {
     let m = mechanism(args, 0.5, 3.0)?;
     let omega = omega(args)?;
-    let engine = match args.engine.engine(m, omega)? {
+    let units = args.units.units(Units::FOOT_POUND);
+    let engine = match args.engine.engine(m, omega, &units)? {
         Some(e) => e,
         None => {
             slider_crank::dynamics::Engine::new(m, slider_crank::dynamics::EXAMPLE_MASS, omega)?
@@ -571,7 +572,6 @@ fn dynamics(
     };
     let phases = args.turn.phases()?;
     let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
-    let units = args.units.units(Units::FOOT_POUND);
     let head = slider_crank::table::dynamics_head(&engine, &phases, args.turn.flywheel(), &units)?;
     args.guard
         .bound()

@@ -4,6 +4,7 @@
 use crate::csv::Table as DataTable;
 use crate::error::{Error, Field, Input, Result, positive};
 use crate::mechanism::Pose;
+use crate::units::Units;
 
 /// The columns a one-turn indicator diagram is read from, with the other
 /// names each may go by.
@@ -24,6 +25,35 @@ const PUMPING: &[&str] = &["exhaust", "intake"];
 /// at a dead centre (within about 1e-12 rad of it), where the stroke that
 /// starts there gives the pressure ([`IndicatorDiagram::force_in_turn`]).
 const AT_REST: f64 = 1e-12;
+
+/// The example indicator diagram of the turning-moment figure and the
+/// handout (`examples/indicator.csv`): steam at 100 psi gauge cut off at
+/// 30 % of the stroke, its pressures in lbf/ft², as its header declares.
+pub const EXAMPLE_INDICATOR: &str = include_str!("../../examples/indicator.csv");
+
+/// The example engine's bore, 10 in, in feet: the example diagram's
+/// cylinder.
+pub const EXAMPLE_BORE: f64 = 10.0 / 12.0;
+
+/// The example indicator diagram ([`EXAMPLE_INDICATOR`] on
+/// [`EXAMPLE_BORE`]) for an engine in `units`: only in feet and
+/// pounds-force, the diagram's own units. Any others are refused in one
+/// line that says how to give the engine's own gas force instead, `own`
+/// (as the caller spells it: `--indicator CSV with --bore D, or
+/// --gas-force F`).
+pub fn example_indicator(units: &Units, own: &str) -> Result<IndicatorDiagram> {
+    if *units != Units::FOOT_POUND {
+        return Err(Error::invalid(
+            Input::Options,
+            format!(
+                "the example gas force is the bundled steam indicator diagram, in lbf/ft² on a 10 in bore, for lengths in ft and forces in lbf: in {} and {} give the engine's own, {own}, in those units",
+                units.length(),
+                units.force()
+            ),
+        ));
+    }
+    IndicatorDiagram::from_csv(EXAMPLE_INDICATOR, EXAMPLE_BORE, "examples/indicator.csv")
+}
 
 /// Most rows of an indicator diagram.
 pub const MAX_INDICATOR_ROWS: usize = 10_000;
@@ -88,6 +118,8 @@ pub struct IndicatorDiagram {
     /// The exhaust and intake lines of a four-stroke cycle.
     pumping: Option<(Vec<f64>, Vec<f64>)>,
     area: f64,
+    /// The unit the CSV's header declares for the pressures, if it does.
+    unit: Option<String>,
 }
 
 impl IndicatorDiagram {
@@ -140,6 +172,7 @@ impl IndicatorDiagram {
             compression,
             pumping: None,
             area,
+            unit: None,
         })
     }
 
@@ -189,9 +222,14 @@ impl IndicatorDiagram {
         let named = |n: &str| table.column(&[n]).ok();
         match (named("exhaust"), named("intake")) {
             (None, None) => Ok(d),
-            (Some(e), Some(i)) => d
-                .with_pumping(table.numbers(e)?, table.numbers(i)?)
-                .map_err(|e| in_source(e, what)),
+            (Some(e), Some(i)) => {
+                let unit = declared(&table, &pressure_columns(&table, &[e, i]), what)?;
+                let mut d = d
+                    .with_pumping(table.numbers(e)?, table.numbers(i)?)
+                    .map_err(|e| in_source(e, what))?;
+                d.unit = unit;
+                Ok(d)
+            }
             _ => Err(Error::invalid(
                 Input::Indicator,
                 format!(
@@ -217,13 +255,44 @@ impl IndicatorDiagram {
     /// The one-turn diagram in `table`'s columns.
     fn from_table(table: &DataTable, bore: f64, what: &str) -> Result<Self> {
         let col = |names: &[&str]| table.column(names).and_then(|c| table.numbers(c));
-        Self::new(
+        let unit = declared(table, &pressure_columns(table, &[]), what)?;
+        let mut d = Self::new(
             col(&["fraction", "stroke", "x"])?,
             col(&["expansion", "outward"])?,
             col(&["compression", "return"])?,
             bore,
         )
-        .map_err(|e| in_source(e, what))
+        .map_err(|e| in_source(e, what))?;
+        d.unit = unit;
+        Ok(d)
+    }
+
+    /// The unit the CSV's header declares for the pressures (`lbf/ft²` of
+    /// `expansion (lbf/ft²)`); `None` where no pressure column declares
+    /// one, and for a diagram made by [`IndicatorDiagram::new`]: its
+    /// pressures are then taken to be in the units they are used with.
+    pub fn pressure_unit(&self) -> Option<&str> {
+        self.unit.as_deref()
+    }
+
+    /// Refuses a diagram whose header declares its pressures in another
+    /// unit than `units`' force per length² ([`Units::is_pressure`]):
+    /// the crate converts no number, so lbf/ft² on a bore in millimetres
+    /// would be nonsense. `what` names the source. A diagram that
+    /// declares no unit is taken to be in `units`.
+    pub fn check_units(&self, units: &Units, what: &str) -> Result<()> {
+        match self.pressure_unit() {
+            Some(unit) if !units.is_pressure(unit) => Err(Error::invalid(
+                Input::Indicator,
+                format!(
+                    "{what}: its pressures are in {unit}, but lengths in {} and forces in {} need them in {} (units are names: no number is converted)",
+                    units.length(),
+                    units.force(),
+                    units.pressure()
+                ),
+            )),
+            _ => Ok(()),
+        }
     }
 
     /// The piston's area π D²/4.
@@ -327,6 +396,42 @@ impl IndicatorDiagram {
     }
 }
 
+/// The pressure columns of `table` (expansion and compression, and
+/// `extra`, the pumping lines' columns where they are read).
+fn pressure_columns(table: &DataTable, extra: &[usize]) -> Vec<usize> {
+    let mut columns: Vec<usize> = [&["expansion", "outward"][..], &["compression", "return"]]
+        .iter()
+        .filter_map(|names| table.column(names).ok())
+        .collect();
+    columns.extend_from_slice(extra);
+    columns
+}
+
+/// The unit the `columns` of `table` declare: the one unit of those that
+/// declare one, `None` where none does.
+///
+/// Errors: two columns declaring different units.
+fn declared(table: &DataTable, columns: &[usize], what: &str) -> Result<Option<String>> {
+    let mut found: Option<(usize, &str)> = None;
+    for &c in columns {
+        match (found, table.unit(c)) {
+            (None, Some(u)) => found = Some((c, u)),
+            (Some((first, u0)), Some(u)) if u != u0 => {
+                return Err(Error::invalid(
+                    Input::Indicator,
+                    format!(
+                        "{what}: the column {} is in {u0} but {} is in {u}: give every pressure in one unit",
+                        table.name(first),
+                        table.name(c)
+                    ),
+                ));
+            }
+            _ => {}
+        }
+    }
+    Ok(found.map(|(_, u)| u.to_string()))
+}
+
 /// `e` with `what` (the source's name) before its message when it is an
 /// [`Error::Invalid`]; other errors name their value already.
 fn in_source(e: Error, what: &str) -> Error {
@@ -360,6 +465,61 @@ mod tests {
         // ∮ p dx = (7 + 2.5)/2 … by hand: expansion 0.5·(14/2) + 0.5·(5/2)
         // = 4.75, compression 0.5·1.5 + 0.5·0.5 = 1.0.
         assert!((d.work(3.0) - std::f64::consts::PI * 3.0 * 3.75).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_example_is_for_feet_and_pounds_only() {
+        let d = example_indicator(&Units::FOOT_POUND, "x").unwrap();
+        assert!(
+            (d.area() - std::f64::consts::PI * EXAMPLE_BORE * EXAMPLE_BORE / 4.0).abs() < 1e-15
+        );
+        let e = example_indicator(&Units::MILLIMETRE_NEWTON, "--gas-force F")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("in mm and N give the engine's own, --gas-force F"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_declared_unit_is_kept_and_checked() {
+        let bundled = include_str!("../../examples/indicator.csv");
+        let d = IndicatorDiagram::from_csv(bundled, 10.0 / 12.0, "x").unwrap();
+        assert_eq!(d.pressure_unit(), Some("lbf/ft²"));
+        assert!(d.check_units(&Units::FOOT_POUND, "x").is_ok());
+        let e = d
+            .check_units(&Units::MILLIMETRE_NEWTON, "indicator diagram x")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.starts_with("indicator diagram x: its pressures are in lbf/ft², but lengths in mm and forces in N need them in N/mm²"),
+            "{e}"
+        );
+        assert!(!e.contains('\n'));
+        // Undeclared: taken in the units it is used with.
+        let plain = "fraction,expansion,compression\n0,1,0\n1,1,0\n";
+        let d = IndicatorDiagram::from_csv(plain, 1.0, "x").unwrap();
+        assert_eq!(d.pressure_unit(), None);
+        assert!(d.check_units(&Units::MILLIMETRE_NEWTON, "x").is_ok());
+        // One column declared is the diagram's unit; two that differ are refused.
+        let one = "fraction,expansion (MPa),compression\n0,1,0\n1,1,0\n";
+        let d = IndicatorDiagram::from_csv(one, 1.0, "x").unwrap();
+        assert_eq!(d.pressure_unit(), Some("MPa"));
+        assert!(d.check_units(&Units::MILLIMETRE_NEWTON, "x").is_ok());
+        let two = "fraction,expansion (MPa),compression (bar)\n0,1,0\n1,1,0\n";
+        let e = IndicatorDiagram::from_csv(two, 1.0, "x")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("expansion is in MPa but compression is in bar"),
+            "{e}"
+        );
+        let four = "fraction,expansion (MPa),compression (MPa),exhaust (MPa),intake (psi)\n0,1,0,0,0\n1,1,0,0,0\n";
+        let e = IndicatorDiagram::from_csv_cycle(four, 1.0, "x")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("is in psi"), "{e}");
     }
 
     #[test]

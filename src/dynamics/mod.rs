@@ -46,7 +46,10 @@ pub(crate) mod turning;
 pub use balance::{Balance, unbalanced_forces};
 pub use engine::{EXAMPLE_MASS, Engine};
 pub use flywheel::{Flywheel, FlywheelAsk, MAX_COEFFICIENT, checked_coefficient};
-pub use gas::{GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS};
+pub use gas::{
+    EXAMPLE_BORE, EXAMPLE_INDICATOR, GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS,
+    example_indicator,
+};
 pub use inline::{
     BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Resultant,
     default_planes,

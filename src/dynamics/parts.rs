@@ -4,6 +4,7 @@
 use super::{Engine, GasForce, IndicatorDiagram, RodMass};
 use crate::error::Result;
 use crate::mechanism::SliderCrank;
+use crate::units::Units;
 
 /// An indicator diagram as given: the CSV text, the cylinder's bore and
 /// the name of the source for messages.
@@ -16,6 +17,10 @@ pub struct IndicatorText<'a> {
     pub bore: f64,
     /// What errors call the source (`indicator diagram FILE`).
     pub what: &'a str,
+    /// The units the engine is given in, against which a unit the CSV's
+    /// header declares for its pressures is checked
+    /// ([`IndicatorDiagram::check_units`]); `None` not to check.
+    pub units: Option<&'a Units>,
 }
 
 /// The parts of an engine besides its mechanism and speed, each as given
@@ -49,6 +54,9 @@ impl EngineParts<'_> {
         }
         if let Some(d) = self.indicator {
             let diagram = IndicatorDiagram::from_csv_cycle(d.text, d.bore, d.what)?;
+            if let Some(units) = d.units {
+                diagram.check_units(units, d.what)?;
+            }
             engine = engine.with_gas(GasForce::Indicator(diagram))?;
         }
         Ok(engine)

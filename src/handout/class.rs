@@ -51,6 +51,28 @@ fn angles() -> Vec<f64> {
         .collect()
 }
 
+/// Most engines drawn for a class before it is given up.
+const MAX_DRAWS: usize = 200_000;
+
+/// A length as the sheet prints it (four figures: 1148, not 1147.5; 0.95,
+/// not 0.9500000000000001), so that the key works from the data on the
+/// sheet.
+fn printed(x: f64) -> f64 {
+    show(x).parse().unwrap_or(x)
+}
+
+/// Refuses a class of no students or of more than [`MAX_CLASS`].
+fn check_count(count: usize) -> Result<()> {
+    if count == 0 || count > MAX_CLASS {
+        return Err(Error::OutOfRange {
+            name: Field::Class,
+            value: count as f64,
+            reason: format!("a class has 1 to {MAX_CLASS} students"),
+        });
+    }
+    Ok(())
+}
+
 /// A class of exercises.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Class {
@@ -64,38 +86,75 @@ impl Class {
     /// angle and speed, and titled "Exercise k". Errors for a count of 0
     /// or above [`MAX_CLASS`].
     pub fn draw(count: usize, seed: u64, template: &Handout) -> Result<Self> {
-        if count == 0 || count > MAX_CLASS {
-            return Err(Error::OutOfRange {
-                name: Field::Class,
-                value: count as f64,
-                reason: format!("a class has 1 to {MAX_CLASS} students"),
-            });
-        }
-        let mut g = SplitMix64::new(seed);
+        check_count(count)?;
         let radii = radii(template.units().length().as_str());
         let ratios: Vec<f64> = (0..=10).map(|k| 3.5 + 0.25 * f64::from(k)).collect();
+        Self::drawn(count, seed, template, |g| {
+            let (r, n) = (g.pick(&radii), g.pick(&ratios));
+            SliderCrank::in_line(printed(r), printed(r * n)).ok()
+        })
+    }
+
+    /// `count` different variations of `template`'s own engine drawn from
+    /// `seed`, set like it otherwise, as [`Class::draw`]: the crank radius
+    /// ×0.8 to ×1.2 in steps of 0.05, the ratio n = l/r ×0.9 to ×1.1 in
+    /// steps of 0.05 and the offset in proportion to the crank (e/r kept),
+    /// each as the sheet prints it; only variations that assemble
+    /// (l > r + |e|), so that every sheet's engine turns fully; the angle
+    /// and the speed drawn as for [`Class::draw`].
+    ///
+    /// Errors: a count of 0 or above [`MAX_CLASS`]; fewer than `count`
+    /// different engines found (an engine so near its limit of assembly
+    /// that few variations assemble).
+    pub fn around(count: usize, seed: u64, template: &Handout) -> Result<Self> {
+        check_count(count)?;
+        let m = *template.mechanism();
+        let steps = |from: i32, to: i32| -> Vec<f64> {
+            (from..=to).map(|k| 1.0 + 0.05 * f64::from(k)).collect()
+        };
+        let (crank, ratio) = (steps(-4, 4), steps(-2, 2));
+        Self::drawn(count, seed, template, |g| {
+            let (fc, fr) = (g.pick(&crank), g.pick(&ratio));
+            let r = printed(m.crank() * fc);
+            SliderCrank::new(r, printed(r * m.ratio() * fr), printed(m.offset() * fc)).ok()
+        })
+    }
+
+    /// `count` different handouts: each engine from `engine` (`None`: one
+    /// that does not assemble, drawn again) with an angle and a speed
+    /// drawn from `seed`'s generator, until `count` differ or too many
+    /// draws have been made.
+    fn drawn(
+        count: usize,
+        seed: u64,
+        template: &Handout,
+        mut engine: impl FnMut(&mut SplitMix64) -> Option<SliderCrank>,
+    ) -> Result<Self> {
+        let mut g = SplitMix64::new(seed);
         let angles = angles();
         let speeds: Vec<f64> = (4..=60).map(|k| 25.0 * f64::from(k)).collect();
-        let mut drawn: Vec<(f64, f64, f64, f64)> = Vec::with_capacity(count);
+        let mut drawn: Vec<(SliderCrank, f64, f64)> = Vec::with_capacity(count);
         let mut handouts = Vec::with_capacity(count);
+        let mut tries = 0usize;
         while handouts.len() < count {
-            let engine = (
-                g.pick(&radii),
-                g.pick(&ratios),
-                g.pick(&angles),
-                g.pick(&speeds),
-            );
-            if drawn.contains(&engine) {
+            tries += 1;
+            if tries > MAX_DRAWS {
+                return Err(Error::invalid(
+                    crate::error::Input::Options,
+                    format!(
+                        "only {} different engines were found in {MAX_DRAWS} draws for a class of {count}: the engine is too near its limit of assembly (l > r + |e|) for that many variations",
+                        handouts.len()
+                    ),
+                ));
+            }
+            let Some(mechanism) = engine(&mut g) else {
+                continue;
+            };
+            let (angle, rpm) = (g.pick(&angles), g.pick(&speeds));
+            if drawn.contains(&(mechanism, angle, rpm)) {
                 continue;
             }
-            drawn.push(engine);
-            let (r, n, angle, rpm) = engine;
-            // The crank and rod as the sheet prints them (four figures:
-            // 1148, not 1147.5; 0.95, not 0.9500000000000001), so that the
-            // key works from the data on the sheet.
-            let printed = |x: f64| show(x).parse().unwrap_or(x);
-            let (r, rod) = (printed(r), printed(r * n));
-            let mechanism = SliderCrank::in_line(r, rod)?;
+            drawn.push((mechanism, angle, rpm));
             let mut h = template.clone();
             h.mechanism = mechanism;
             h.angle = Angle::from_degrees(angle)?;
@@ -238,6 +297,40 @@ mod tests {
             for bad in [0.0, 90.0, 180.0, 270.0, 360.0] {
                 assert!((d - bad).abs() >= 10.0, "{d}");
             }
+        }
+    }
+
+    #[test]
+    fn a_class_around_an_engine_varies_it_and_every_engine_assembles() {
+        let teacher = SliderCrank::new(60.0, 210.0, 12.0).unwrap();
+        let t = Handout::new(teacher, Angle::deg(30.0));
+        let class = Class::around(200, 3, &t).unwrap();
+        let mut cranks = std::collections::BTreeSet::new();
+        for h in class.handouts() {
+            let m = h.mechanism();
+            // Within the variation's bounds, by the formulas: r ×0.8–1.2,
+            // n ×0.9–1.1 (to the four printed figures), e/r kept.
+            let (fc, fr) = (m.crank() / 60.0, m.ratio() / 3.5);
+            assert!((0.8 - 1e-3..=1.2 + 1e-3).contains(&fc), "{fc}");
+            assert!((0.9 - 1e-3..=1.1 + 1e-3).contains(&fr), "{fr}");
+            assert!(
+                (m.offset() / m.crank() - 0.2).abs() < 1e-3,
+                "{}",
+                m.offset()
+            );
+            assert!(m.rod() > m.crank() + m.offset().abs());
+            assert!(h.reading().is_ok());
+            cranks.insert(m.crank().to_bits());
+        }
+        assert!(cranks.len() >= 5, "the crank varies: {}", cranks.len());
+        // Reproducible from its seed.
+        assert_eq!(Class::around(200, 3, &t).unwrap(), class);
+        // An engine at its limit of assembly: few variations assemble,
+        // but those that do are kept, and too many are refused in a line.
+        let tight = Handout::new(SliderCrank::new(1.0, 1.06, 0.0).unwrap(), Angle::deg(30.0));
+        for h in Class::around(20, 1, &tight).unwrap().handouts() {
+            let m = h.mechanism();
+            assert!(m.rod() > m.crank() + m.offset().abs());
         }
     }
 

@@ -4,10 +4,11 @@
 //! beside the exact value.
 
 use super::page::{
-    command, conventions, data_table, footer, picture, plain_data, style, values_table,
+    command, conventions, data_table, dynamics_flags, footer, picture, plain_data, style,
+    values_table,
 };
 use super::scale::round_scale;
-use super::steps::{Picture, data_sentence, rows};
+use super::steps::{Picture, data_sentence, exercise_rows, rows};
 use super::{Handout, figures};
 use crate::construct::Reading;
 use crate::error::Result;
@@ -37,7 +38,10 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
         step,
         unit: u,
     } = sheet_drawing(h)?;
-    let asked: Vec<_> = rows(h, r).into_iter().filter(|row| row.asked).collect();
+    let dynamics = exercise_rows(h, r)?;
+    let mut all = rows(h, r);
+    all.extend(dynamics.iter().flat_map(|d| d.1.clone()));
+    let asked: Vec<_> = all.into_iter().filter(|row| row.asked).collect();
     let title = heading(h, "exercise");
     let tasks = tasks(h);
     let body = html! {
@@ -46,6 +50,7 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
             p.subtitle { "Name: ______________________   Date: ____________" }
         }
         p { (rich(&data_sentence(h))) }
+        @if let Some((data, _)) = &dynamics { p { (rich(data)) } }
         (data_table(h))
         (conventions(h))
         div.sheet-figure {
@@ -84,7 +89,7 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
                 }
             }
         }
-        (footer(&command(h, " --exercise")))
+        (footer(&command(h, &format!("{} --exercise", dynamics_flags(h)))))
     };
     Ok(document(
         &format!("{title}: {}", plain_data(h)),
@@ -167,6 +172,9 @@ fn tasks(h: &Handout) -> Vec<String> {
     if h.torque().is_some() {
         tasks.push("With the crank torque *T*, find the slider force *F*_p = *T*/*OM* (*OM* = *CE*), the side thrust, the force with friction, and the transmission angle (Ng, eq. 6–11).".into());
     }
+    if h.dynamics().is_some() {
+        tasks.push("With the reciprocating mass *m*, find the inertia force *F*_i = −*m*ω²·*CG* (positive towards the crank), the piston effort *F* = *F*_g + *F*_i with the gas force *F*_g given, and the crank effort *T* = *F*·*OM* (*OM* = *CE*; §36, Ng eq. 2).".into());
+    }
     tasks
 }
 
@@ -187,19 +195,29 @@ pub(super) fn key(h: &Handout, r: &Reading) -> Result<String> {
             caption: "The torque line *OM* and the forces (Ng's letters: *O* crank centre, *C* crank pin, *P* slider).".into(),
         });
     }
-    let all = rows(h, r);
+    let dynamics = exercise_rows(h, r)?;
+    if dynamics.is_some() {
+        let forces = figures::dynamics(h, FigureName::InertiaForce)?;
+        pictures.push(Picture {
+            svg: figures::inline(&forces, "key-inertia"),
+            caption: "The inertia force −*m*ω²·*CG* from Klein's construction, drawn at the cross-head and resolved along the rod and on the guides, and its crank effort through *OM*.".into(),
+        });
+    }
+    let mut all = rows(h, r);
+    all.extend(dynamics.iter().flat_map(|d| d.1.clone()));
     let body = html! {
         header.title {
             h1 { (title) }
             p.subtitle { "For the teacher: the answers to the exercise sheet of the same engine." }
         }
         p { (rich(&data_sentence(h))) }
+        @if let Some((data, _)) = &dynamics { p { (rich(data)) } }
         (data_table(h))
         (values_table(&all, Some("The answers")))
         @for (i, p) in pictures.iter().enumerate() {
             (picture(p, &format!("Figure {}.", i + 1)))
         }
-        (footer(&command(h, " --exercise")))
+        (footer(&command(h, &format!("{} --exercise", dynamics_flags(h)))))
     };
     Ok(document(
         &format!("{title}: {}", plain_data(h)),

@@ -1,7 +1,7 @@
 //! The figures of a handout: the named figures of the catalogue drawn for
 //! the handout's engine, and their SVG made fit to be inlined in a page.
 
-use super::Handout;
+use super::{Gas, Handout};
 use crate::catalogue::{FigureOptions, Setting};
 use crate::error::Result;
 use crate::figure::{Figure, Panel, Part, Role};
@@ -99,13 +99,21 @@ pub(super) fn inline_options(prefix: &str) -> SvgOptions {
 }
 
 /// The dynamics diagram `name` for the handout's engine, pose, speed,
-/// units, reciprocating mass and coefficient of fluctuation of speed (the
-/// figures' own gas force, their indicator diagram); the pose and the
-/// coefficient only for a figure that takes them (the inertia force's
-/// pose, the flywheel's coefficient).
+/// units, reciprocating mass, coefficient of fluctuation of speed and gas
+/// force (the example's is the figures' own); the pose, the coefficient
+/// and the gas force only for a figure that takes them (the inertia
+/// force's pose, the flywheel's coefficient, the turning moment's gas).
 pub(super) fn dynamics(h: &Handout, name: FigureName) -> Result<Figure> {
     let (mass, fluctuation) = h.dynamics().unzip();
+    let (data, bore, gas_force) = match h.gas().filter(|_| name.takes(Setting::Data)) {
+        Some(Gas::Indicator { text, bore, .. }) => (Some(text.clone()), Some(*bore), None),
+        Some(Gas::Constant(f)) => (None, None, Some(*f)),
+        _ => (None, None, None),
+    };
     let options = FigureOptions {
+        data,
+        bore,
+        gas_force,
         mechanism: Some(*h.mechanism()),
         omega: Some(h.omega()),
         angle: Some(h.angle()).filter(|_| name.takes(Setting::Angle)),

@@ -33,6 +33,7 @@
 //! ```
 
 mod class;
+mod dynamics;
 mod exercise;
 mod figures;
 mod page;
@@ -41,11 +42,12 @@ mod scale;
 mod steps;
 
 pub use class::{Class, MAX_CLASS};
+pub use dynamics::{DynamicsAsk, Gas};
 pub use random::SplitMix64;
 
 use crate::analytic::kinematics::check_omega;
 use crate::construct::Reading;
-use crate::error::{Error, Field, Input, Result};
+use crate::error::{Error, Input, Result};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
 /// The paper a page is printed on.
@@ -90,12 +92,16 @@ impl Paper {
     }
 }
 
-/// The dynamics a handout works: the reciprocating mass and the
-/// coefficient of fluctuation of speed the flywheel is sized for.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// The dynamics a handout works: the reciprocating mass, the coefficient
+/// of fluctuation of speed the flywheel is sized for, the gas force, and
+/// how the user names the options (for the refusals made when the page
+/// is).
+#[derive(Debug, Clone, PartialEq)]
 struct Dynamics {
     mass: f64,
     fluctuation: f64,
+    gas: Gas,
+    spelling: crate::error::Spelling,
 }
 
 /// One engine at one crank angle, to be worked through on a handout or set
@@ -139,8 +145,10 @@ impl Handout {
     }
 
     /// With lengths and forces in `units` (names only: no number is
-    /// converted). With the dynamics ([`Handout::with_dynamics`]) any but
-    /// feet and pounds-force make [`Handout::page`] an error.
+    /// converted). With the dynamics ([`Handout::with_dynamics_asked`])
+    /// units that do not match the gas force's (the example's feet and
+    /// pounds-force, a diagram's declared pressure unit) make
+    /// [`Handout::page`] an error.
     pub fn with_units(mut self, units: Units) -> Self {
         self.units = units;
         self
@@ -160,25 +168,43 @@ impl Handout {
 
     /// With the engine's dynamics worked after the diagrams: the
     /// reciprocating mass `mass` (> 0, in the unit that makes mass ×
-    /// length/s² the force unit: slug with ft and lbf) and the gas force
-    /// of the turning-moment figure's steam indicator diagram
-    /// (`examples/indicator.csv`, 10 in bore), through the inertia force,
-    /// the crank effort *F*·*OM*, the turning-moment diagram and the
-    /// flywheel for the coefficient of fluctuation of speed `fluctuation`
-    /// (0 < C_s < 2; 0.02 is usual).
+    /// length/s² the force unit: slug with ft and lbf, kg with m and N)
+    /// and the example's gas force ([`Gas::Example`]: the turning-moment
+    /// figure's steam indicator diagram, lbf/ft² on a 10 in bore), through
+    /// the inertia force, the crank effort *F*·*OM*, the turning-moment
+    /// diagram and the flywheel for the coefficient of fluctuation of
+    /// speed `fluctuation` (0 < C_s < 2; 0.02 is usual). For the engine's
+    /// own gas force, [`Handout::with_dynamics_asked`].
     ///
     /// Errors: a mass not positive or not finite; a coefficient out of
-    /// range; units other than feet and pounds-force, the units of the
-    /// indicator diagram (lbf/ft²) and its bore.
-    pub fn with_dynamics(mut self, mass: f64, fluctuation: f64) -> Result<Self> {
-        let mass = crate::error::positive(Field::Mass, mass)?;
-        let fluctuation = crate::dynamics::checked_coefficient(fluctuation)?;
-        if self.units != Units::FOOT_POUND {
-            return Err(Error::invalid(Input::Options,
-                "the handout's dynamics take their gas force from an indicator diagram in lbf/ft² with a 10 in bore: give lengths in ft and forces in lbf with --mass".into(),
-            ));
+    /// range; units other than feet and pounds-force, the example's.
+    pub fn with_dynamics(self, mass: f64, fluctuation: f64) -> Result<Self> {
+        self.with_dynamics_asked(&DynamicsAsk {
+            mass: Some(mass),
+            fluctuation: Some(fluctuation),
+            ..DynamicsAsk::default()
+        })
+    }
+
+    /// With the dynamics `ask` gives (the command line's `--mass`,
+    /// `--fluctuation`, `--gas-force`, `--indicator`, `--bore`, or the
+    /// Python package's keywords), validated once here and refused in
+    /// one line that names the options as the user spells them
+    /// ([`DynamicsAsk::spelling`]). Nothing asked: the handout unchanged.
+    ///
+    /// Errors: a gas force, diagram, bore or coefficient without a mass; a
+    /// constant gas force with a diagram; a diagram without its bore or a
+    /// bore without its diagram; a mass not positive or not finite; a
+    /// coefficient out of range; a gas force not finite; a diagram that
+    /// cannot be read, or whose header declares its pressures in another
+    /// unit than the handout's force per length²; the example's diagram
+    /// (no gas force given) with units other than feet and pounds-force.
+    /// Units changed later are checked again when the page is made.
+    pub fn with_dynamics_asked(mut self, ask: &DynamicsAsk) -> Result<Self> {
+        if let Some(d) = ask.dynamics()? {
+            d.gas.diagram(&self.units, d.spelling)?;
+            self.dynamics = Some(d);
         }
-        self.dynamics = Some(Dynamics { mass, fluctuation });
         Ok(self)
     }
 
@@ -232,7 +258,12 @@ impl Handout {
     /// The reciprocating mass and the coefficient of fluctuation of speed
     /// of the dynamics, if they are worked.
     pub fn dynamics(&self) -> Option<(f64, f64)> {
-        self.dynamics.map(|d| (d.mass, d.fluctuation))
+        self.dynamics.as_ref().map(|d| (d.mass, d.fluctuation))
+    }
+
+    /// The gas force of the dynamics, if they are worked.
+    pub fn gas(&self) -> Option<&Gas> {
+        self.dynamics.as_ref().map(|d| &d.gas)
     }
 
     /// The paper.
@@ -317,5 +348,70 @@ mod tests {
             .page()
             .unwrap_err();
         assert!(e.to_string().contains("lbf/ft²"), "{e}");
+    }
+
+    #[test]
+    fn an_si_engine_works_its_own_gas_force() {
+        let h = Handout::new(SliderCrank::in_line(60.0, 240.0).unwrap(), Angle::deg(40.0))
+            .with_units(Units::MILLIMETRE_NEWTON);
+        let ask = |gas_force: Option<f64>, diagram: Option<&str>, bore: Option<f64>| DynamicsAsk {
+            mass: Some(0.002),
+            gas_force,
+            indicator: diagram.map(|t| (t.to_string(), "p.csv".to_string())),
+            bore,
+            ..DynamicsAsk::default()
+        };
+        let own = "fraction,expansion (MPa),compression (MPa)\n0,2,0.1\n1,0.2,0.1\n";
+        assert!(
+            h.clone()
+                .with_dynamics_asked(&ask(None, Some(own), Some(100.0)))
+                .is_ok()
+        );
+        assert!(
+            h.clone()
+                .with_dynamics_asked(&ask(Some(5000.0), None, None))
+                .is_ok()
+        );
+        let psf = "fraction,expansion (lbf/ft²),compression\n0,2,0.1\n1,0.2,0.1\n";
+        let e = h
+            .clone()
+            .with_dynamics_asked(&ask(None, Some(psf), Some(100.0)))
+            .unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("p.csv: its pressures are in lbf/ft²"),
+            "{e}"
+        );
+        let e = h
+            .clone()
+            .with_dynamics_asked(&ask(None, None, None))
+            .unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("--indicator CSV with --bore D, or --gas-force F"),
+            "{e}"
+        );
+        let python = DynamicsAsk {
+            spelling: crate::error::Spelling::Keyword,
+            ..ask(None, None, None)
+        };
+        let e = h
+            .clone()
+            .with_dynamics_asked(&python)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("indicator=CSV with bore=D, or gas_force=F") && !e.contains("--"),
+            "{e}"
+        );
+        let e = h
+            .clone()
+            .with_dynamics_asked(&ask(None, Some(own), None))
+            .unwrap_err();
+        assert!(e.to_string().contains("--bore"), "{e}");
+        let e = h
+            .with_dynamics_asked(&ask(Some(1.0), Some(own), Some(1.0)))
+            .unwrap_err();
+        assert!(e.to_string().contains("not both"), "{e}");
     }
 }

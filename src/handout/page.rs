@@ -250,16 +250,24 @@ pub(super) fn command(h: &Handout, extra: &str) -> String {
     c
 }
 
-/// The flags of the dynamics the handout works (only a handout does:
-/// an exercise asks none of them), or none.
-fn dynamics_flags(h: &Handout) -> String {
-    h.dynamics().map_or(String::new(), |(mass, fluctuation)| {
-        format!(
-            " --mass {} --fluctuation {}",
-            plain(mass),
-            plain(fluctuation)
-        )
-    })
+/// The flags of the dynamics the handout or exercise works, with its gas
+/// force (none for the example's), or none.
+pub(super) fn dynamics_flags(h: &Handout) -> String {
+    let Some((mass, fluctuation)) = h.dynamics() else {
+        return String::new();
+    };
+    let gas = match h.gas() {
+        Some(super::Gas::Constant(f)) => format!(" --gas-force {}", plain(*f)),
+        Some(super::Gas::Indicator { bore, source, .. }) => {
+            format!(" --indicator {source} --bore {}", plain(*bore))
+        }
+        _ => String::new(),
+    };
+    format!(
+        " --mass {} --fluctuation {}{gas}",
+        plain(mass),
+        plain(fluctuation)
+    )
 }
 
 /// The crank speed as the command line would be given it: `--rpm N` with

@@ -325,6 +325,9 @@ pub struct Scene {
     /// above the line of stroke, negative below), which the guides keep
     /// clear of ([`Scene::with_guides_clear_of`]).
     turns: Vec<(f64, f64)>,
+    /// Whether the figure is drawn without an enlarged detail
+    /// ([`Scene::without_detail`]).
+    no_detail: bool,
 }
 
 /// The poses a series is held over by default: the whole revolution,
@@ -365,6 +368,7 @@ impl Scene {
             holding: None,
             subject: None,
             turns: Vec::new(),
+            no_detail: false,
         }
     }
 
@@ -494,9 +498,11 @@ impl Scene {
     ///   the line of stroke at one of the poses; farther, and at infinity
     ///   (θ = 90° and 270°, CB perpendicular to the stroke), it is shown by
     ///   an arrow at the frame's edge, as in a single figure. Near those
-    ///   angles D climbs far from the stroke, so a view held over the whole
-    ///   turn with a layer that draws D (velocity, Klein, the virtual
-    ///   centres, the centrodes) is drawn smaller than one pose alone.
+    ///   angles D climbs far from the stroke: the held view is fitted to
+    ///   what the poses draw without D, and D is drawn where it falls on
+    ///   the page, else shown by its arrow at the frame's edge, so that a
+    ///   view held over the whole turn draws the mechanism as large as
+    ///   its other constructions allow.
     /// - The detail (the acceleration constructions of Figs. 65–67, and a
     ///   velocity triangle too small to letter) is held too: when any pose
     ///   needs one, every figure has one, showing the union of the regions
@@ -516,6 +522,22 @@ impl Scene {
     pub fn with_held_view(mut self, angles: Vec<Angle>) -> Self {
         self.held = Some(angles);
         self
+    }
+
+    /// The same scene drawn without the enlarged detail of its
+    /// constructions about the crank: for a page shown large (a
+    /// projector's screen, where the whole page is the enlargement), not
+    /// for print, where a construction the main view draws small is
+    /// lettered only in its detail. The main view is unchanged.
+    pub fn without_detail(mut self) -> Self {
+        self.no_detail = true;
+        self
+    }
+
+    /// Whether the figure is drawn without its detail
+    /// ([`Scene::without_detail`]).
+    pub(crate) fn has_no_detail(&self) -> bool {
+        self.no_detail
     }
 
     /// The same scene with a view fitted to hold the world `frame` too,

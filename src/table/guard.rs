@@ -4,31 +4,11 @@
 //! package's `max_cells=N` are this bound, with the same default and the
 //! same message (each naming the bound as its user spells it).
 
-use crate::error::{Error, Input, Result};
+use crate::error::{Error, Input, Result, Spelling};
 
 /// The default bound: fifty million values, about a gigabyte of text and
 /// a minute of work (a million angles of `analyze --json` are 45 million).
 pub const DEFAULT_MAX_CELLS: u64 = 50_000_000;
-
-/// How the user names the bound, for the message that refuses a request.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[non_exhaustive]
-pub enum Spelling {
-    /// The command line's flag: `--max-cells 50000000`.
-    Flag,
-    /// The Python package's keyword: `max_cells=50000000`.
-    Keyword,
-}
-
-impl Spelling {
-    /// The bound set to `n`, as the user would write it.
-    fn spell(self, n: impl std::fmt::Display) -> String {
-        match self {
-            Spelling::Flag => format!("--max-cells {n}"),
-            Spelling::Keyword => format!("max_cells={n}"),
-        }
-    }
-}
 
 /// The most values one request may compute: rows × columns of a table,
 /// angles × the values of each for `analyze`, poses × the quantities
@@ -80,8 +60,8 @@ impl MaxCells {
             Input::Options,
             format!(
                 "{command} asks for {rows_are} × {columns} {columns_are} = {cells} values, more than {}: give {} (or more) to compute them, or fewer angles",
-                self.spelling.spell(self.limit),
-                self.spelling.spell(cells),
+                self.spelling.set("max-cells", self.limit),
+                self.spelling.set("max-cells", cells),
             ),
         ))
     }

@@ -16,6 +16,7 @@ use crate::analytic::approx::acceleration_factor;
 use crate::analytic::kinematics::Kinematics;
 use crate::analytic::statics::{Friction, slider_force, with_friction};
 use crate::angle::Angle;
+pub use crate::error::Spelling;
 use crate::error::{Error, Field, Input, Result};
 use crate::mechanism::SliderCrank;
 pub use crate::number::fixed;
@@ -29,7 +30,7 @@ pub use chain_json::{
 pub use check_report::{DEFAULT_ULPS, MAX_TOLERANCE, check_allowance, engine_check_report};
 pub use dynamics::{dynamics_head, dynamics_row, example_table};
 pub use dynamics_json::{dynamics_json, mass_unit};
-pub use guard::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
+pub use guard::{DEFAULT_MAX_CELLS, MaxCells};
 pub use harmonics::harmonics_table;
 pub use partial::{Locomotive, partial_balance_head, partial_balance_row};
 pub use radial::{radial_head, radial_row};

@@ -1,7 +1,8 @@
 //! One in-line engine worked from the formulas, for the tests that check
 //! the dynamics figures and the handout's dynamics against something the
 //! code under test did not compute: crank r, rod l, speed ω, reciprocating
-//! mass m and the gas force of examples/indicator.csv on a 10 in bore.
+//! mass m and the gas force of an indicator diagram (examples/indicator.csv
+//! on a 10 in bore, or the rows and bore given).
 #![allow(dead_code)] // each test uses what it needs
 
 use std::f64::consts::PI;
@@ -27,11 +28,13 @@ pub struct Engine {
     pub omega: f64,
     pub m: f64,
     pub rows: Vec<[f64; 3]>,
+    /// The bore, in the length unit (10/12 ft for examples/indicator.csv).
+    pub bore: f64,
 }
 
 impl Engine {
     pub fn area(&self) -> f64 {
-        PI * (10.0f64 / 12.0).powi(2) / 4.0
+        PI * self.bore.powi(2) / 4.0
     }
 
     /// x = r cos θ + √(l² − r² sin² θ) and its second derivative in θ.

@@ -551,6 +551,29 @@ fn the_page_is_headed_by_the_figure_and_its_slider_speaks_the_angle() {
         h1.contains("Fig. 66") && !h1.contains("fig-66-kisch"),
         "{h1}"
     );
+    // And the engine drawn, not only the textbook's figure.
+    assert!(h1.ends_with(": r = 0.5 ft, l = 3 ft, in line"), "{h1}");
+    let offset = animate(
+        "a11y-offset",
+        "k.html",
+        &[
+            "fig-66-kisch",
+            "--frames",
+            "4",
+            "--crank",
+            "60",
+            "--rod",
+            "250",
+            "--offset",
+            "-12",
+            "--unit",
+            "mm",
+        ],
+    );
+    assert!(
+        offset.contains(": r = 60 mm, l = 250 mm, e = −12 mm</h1>"),
+        "the offset engine"
+    );
     let slider = &html[html.find("<input").unwrap()..];
     let slider = &slider[..slider.find('>').unwrap()];
     assert!(slider.contains("aria-valuetext=\"θ = 60°\""), "{slider}");

@@ -709,3 +709,71 @@ fn a_standalone_svg_with_embed_fonts_is_set_in_its_own_face() {
     ]));
     check_svg_faces(&browser, &svg);
 }
+
+/// Writes, once the page has loaded, the box (CSS px) round the
+/// mechanism of the frame shown (its guides, block, rod, crank and crank
+/// circle) and the window's size into the page as `<pre id="mechanism">`.
+const MECHANISM_PROBE: &str = r#"<script>
+window.addEventListener('load', () => {
+  const frame = document.querySelector('.animation-frame:not([hidden])');
+  const parts = ['guide-upper', 'guide-lower', 'block-slider', 'link-rod', 'link-crank', 'circle-crank'];
+  const boxes = [...frame.querySelectorAll('[id]')]
+    .filter(e => parts.some(p => e.id.endsWith('-' + p)))
+    .map(e => e.getBoundingClientRect());
+  const left = Math.min(...boxes.map(b => b.left)), right = Math.max(...boxes.map(b => b.right));
+  const top = Math.min(...boxes.map(b => b.top)), bottom = Math.max(...boxes.map(b => b.bottom));
+  const out = document.createElement('pre');
+  out.id = 'mechanism';
+  out.textContent = JSON.stringify({ parts: boxes.length, left, right, top, bottom,
+    width: innerWidth, height: innerHeight, title: document.title });
+  document.body.appendChild(out);
+});
+</script>"#;
+
+#[test]
+#[ignore = "needs Chromium and poppler-utils: run with `-- --ignored` (.ci/run does)"]
+fn a_projected_animation_fills_a_1920_by_1080_screen() {
+    let browser = browser();
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("klein.html");
+    succeeded(&run(&[
+        "animate",
+        "fig-65-klein",
+        "--projector",
+        "--frames",
+        "12",
+        "--out",
+        page.to_str().unwrap(),
+    ]));
+    let html = std::fs::read_to_string(&page).unwrap();
+    // The heading names the engine drawn, not only the textbook's figure.
+    assert!(html.contains("Fig. 65 (Klein’s construction): r = 0.5 ft, l = 3 ft, in line"));
+    let at = html.find("<head>").unwrap() + "<head>".len();
+    let probed = dir.path().join("probed.html");
+    std::fs::write(
+        &probed,
+        format!("{}{MECHANISM_PROBE}{}", &html[..at], &html[at..]),
+    )
+    .unwrap();
+    let dom = chromium_at(
+        &browser,
+        (1920, 1080),
+        SETTLE_MS,
+        &["--dump-dom"],
+        &url(&probed),
+    );
+    let start = dom.find("<pre id=\"mechanism\">").expect("the probe ran") + 20;
+    let end = start + dom[start..].find("</pre>").unwrap();
+    let m: Value = serde_json::from_str(&dom[start..end].replace("&quot;", "\"")).unwrap();
+    let number = |k: &str| m[k].as_f64().unwrap();
+    assert_eq!(number("width"), 1920.0, "{m}");
+    assert!(m["parts"].as_u64().unwrap() >= 6, "every part found: {m}");
+    // The mechanism at least half the window's width, whole within it.
+    let wide = number("right") - number("left");
+    assert!(wide >= 960.0, "the mechanism is {wide} px wide: {m}");
+    assert!(number("left") >= 0.0 && number("right") <= 1920.0, "{m}");
+    assert!(
+        number("top") >= 0.0 && number("bottom") <= number("height"),
+        "{m}"
+    );
+}

@@ -364,7 +364,9 @@ fn bad_input_is_one_line_a_failure_and_no_file() {
         &["handout", "--crank", "1", "--rod", "0.5", "--out", out],
         &["handout", "--out", missing],
         &["handout", "--exercise", "--out", missing],
-        &["handout", "--class", "3", "--crank", "2", "--out", out],
+        &[
+            "handout", "--class", "3", "--crank", "2", "--rod", "1", "--out", out,
+        ],
         &["handout", "--out", &out.replace(".html", ".pdf")],
     ];
     for args in cases {
@@ -575,4 +577,61 @@ fn an_exercise_whose_key_cannot_be_written_keeps_the_old_sheet() {
     );
     assert_eq!(read(&sheet), "old sheet");
     assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+}
+
+#[test]
+fn a_class_varies_the_teachers_own_engine() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("c.html");
+    let args = [
+        "handout",
+        "--class",
+        "12",
+        "--seed",
+        "5",
+        "--crank",
+        "60",
+        "--rod",
+        "240",
+        "--offset",
+        "-15",
+        "--unit",
+        "mm",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    succeeded(&run(&args));
+    let mut cranks = BTreeSet::new();
+    for i in 1..=12 {
+        let key = read(&dir.path().join(format!("c-{i:02}-key.html")));
+        let v: std::collections::BTreeMap<String, f64> = values(&key).into_iter().collect();
+        let (r, l, e) = (
+            v["mechanism.crank"],
+            v["mechanism.rod"],
+            v["mechanism.offset"],
+        );
+        // A variation of r = 60, n = 4, e/r = −0.25 within the stated
+        // bounds, to the four figures a sheet prints; and it assembles.
+        assert!(
+            (0.8 * 60.0 - 0.05..=1.2 * 60.0 + 0.05).contains(&r),
+            "{i}: r = {r}"
+        );
+        assert!(
+            (0.9 * 4.0 - 1e-3..=1.1 * 4.0 + 1e-3).contains(&(l / r)),
+            "{i}: n = {}",
+            l / r
+        );
+        assert!((e / r + 0.25).abs() < 1e-3, "{i}: e = {e}");
+        assert!(l > r + e.abs(), "{i}: assembles");
+        // The sheet works the very engine its key does.
+        let sheet = read(&dir.path().join(format!("c-{i:02}.html")))
+            .replace("<span class=\"nobreak\">", "")
+            .replace("</span>", "");
+        assert!(
+            sheet.contains(&format!("--crank {r} --rod {l} --offset {e}")),
+            "{i}"
+        );
+        cranks.insert(r.to_bits());
+    }
+    assert!(cranks.len() >= 3, "the crank varies");
 }

@@ -93,6 +93,7 @@ fn the_dynamics_on_the_page_are_the_formulas() {
             omega,
             m,
             rows: indicator(),
+            bore: 10.0 / 12.0,
         };
         let t = deg.to_radians();
         let (inertia, gas) = (e.inertia(t), e.gas(t));
@@ -211,14 +212,75 @@ fn bad_dynamics_are_one_line_and_no_file() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("h.html");
     let out = out.to_str().unwrap();
-    let cases: [(&[&str], &str); 7] = [
+    let cases: [(&[&str], &str); 15] = [
         (&["--mass", "0"], "mass"),
         (&["--mass", "-1"], "mass"),
         (&["--mass", "nan"], "mass"),
         (&["--mass", "10", "--fluctuation", "2"], "fluctuation"),
         (&["--fluctuation", "0.1"], "--mass"),
-        (&["--mass", "10", "--unit", "mm"], "lbf"),
-        (&["--mass", "10", "--exercise"], "--exercise"),
+        (
+            &["--mass", "10", "--unit", "mm"],
+            "--indicator CSV with --bore D",
+        ),
+        (&["--mass", "10", "--class", "3"], "--class"),
+        (
+            &[
+                "--mass",
+                "1",
+                "--unit",
+                "mm",
+                "--indicator",
+                "examples/indicator.csv",
+                "--bore",
+                "100",
+            ],
+            "its pressures are in lbf/ft², but lengths in mm and forces in N need them in N/mm²",
+        ),
+        (
+            &[
+                "--mass",
+                "1",
+                "--unit",
+                "mm",
+                "--indicator",
+                "examples/indicator.csv",
+            ],
+            "give --bore D",
+        ),
+        (
+            &["--mass", "1", "--gas-force", "5", "--bore", "1"],
+            "--bore is the bore",
+        ),
+        (
+            &[
+                "--mass",
+                "1",
+                "--gas-force",
+                "5",
+                "--indicator",
+                "examples/indicator.csv",
+                "--bore",
+                "1",
+            ],
+            "not both",
+        ),
+        (&["--gas-force", "5"], "give --mass M with it"),
+        (&["--mass", "1", "--gas-force", "inf"], "gas force"),
+        (
+            &[
+                "--mass",
+                "1",
+                "--indicator",
+                "examples/indicator.csv",
+                "--bore",
+                "-1",
+            ],
+            "bore",
+        ),
+        (
+            &["--mass", "1", "--indicator", "no-such.csv", "--bore", "1"],
+            "no-such.csv",
+        ),
     ];
     for (args, says) in cases {
         let mut all = vec!["handout", "--out", out];
@@ -232,4 +294,154 @@ fn bad_dynamics_are_one_line_and_no_file() {
         let left: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
         assert!(left.is_empty(), "{args:?} left {left:?}");
     }
+}
+
+/// An indicator diagram in N/mm², declared in its header, for an engine in
+/// millimetres: its rows (fraction, expansion, compression) and its text.
+fn si_diagram() -> (Vec<[f64; 3]>, String) {
+    let rows = vec![
+        [0.0, 3.0, 0.1],
+        [0.1, 3.0, 0.1],
+        [0.5, 0.8, 0.2],
+        [1.0, 0.3, 0.6],
+    ];
+    let mut text = "# a test diagram\nfraction,expansion (N/mm²),compression (N/mm²)\n".to_string();
+    for r in &rows {
+        text.push_str(&format!("{},{},{}\n", r[0], r[1], r[2]));
+    }
+    (rows, text)
+}
+
+#[test]
+fn an_si_handout_works_the_engines_own_diagram_and_bore() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("diesel.csv");
+    let (rows, text) = si_diagram();
+    std::fs::write(&csv, text).unwrap();
+    let csv = csv.to_str().unwrap();
+    // r = 60 mm, l = 240 mm, 100 mm bore, 2 kg = 0.002 t (N·s²/mm) at
+    // 1500 rpm, on the expansion stroke at 40° and the return at 300°.
+    for deg in [40.0f64, 300.0] {
+        let angle = format!("{deg}");
+        let html = page(&[
+            "--crank",
+            "60",
+            "--rod",
+            "240",
+            "--angle",
+            &angle,
+            "--rpm",
+            "1500",
+            "--unit",
+            "mm",
+            "--mass",
+            "0.002",
+            "--indicator",
+            csv,
+            "--bore",
+            "100",
+        ]);
+        let v = values(&html);
+        let omega = 1500.0 * 2.0 * PI / 60.0;
+        let e = Engine {
+            r: 60.0,
+            l: 240.0,
+            omega,
+            m: 0.002,
+            rows: rows.clone(),
+            bore: 100.0,
+        };
+        let t = deg.to_radians();
+        let (inertia, gas) = (e.inertia(t), e.gas(t));
+        check(&v, "dynamics.inertia_force", inertia, 1e-12);
+        check(&v, "dynamics.gas_force", gas, 1e-12);
+        check(&v, "dynamics.crank_effort_exact", e.torque(t), 1e-12);
+        check(&v, "turn.work", e.indicated(), 1e-9);
+        let (_, fluctuation) = e.turn(200_000);
+        check(&v, "turn.fluctuation", fluctuation, 1e-6);
+        check(
+            &v,
+            "flywheel.inertia",
+            fluctuation / (omega * omega * 0.02),
+            1e-6,
+        );
+        assert!(
+            gas.abs() > 1000.0 && inertia.abs() > 1000.0,
+            "{gas} {inertia}"
+        );
+        // Named in the page's units, the example's nowhere.
+        assert!(html.contains("N/mm<sup>2</sup>") && html.contains("t·mm<sup>2</sup>"));
+        assert!(
+            !html.contains("lbf") && !html.contains("10 in bore"),
+            "the example's units"
+        );
+        assert!(html.contains("acts on a bore <i>D</i> = 100 mm"));
+        assert!(html.contains("bore 100 mm"), "the figure's note");
+        let command = html
+            .replace("<span class=\"nobreak\">", "")
+            .replace("</span>", "");
+        assert!(
+            command.contains(&format!("--indicator {csv} --bore 100")),
+            "the command"
+        );
+    }
+}
+
+#[test]
+fn an_si_exercise_asks_the_forces_at_its_pose() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("s.html");
+    let args = [
+        "handout",
+        "--exercise",
+        "--out",
+        out.to_str().unwrap(),
+        "--crank",
+        "0.06",
+        "--rod",
+        "0.24",
+        "--angle",
+        "40",
+        "--rpm",
+        "1500",
+        "--unit",
+        "m",
+        "--mass",
+        "2",
+        "--gas-force",
+        "5000",
+    ];
+    succeeded(&run(&args));
+    let sheet = std::fs::read_to_string(&out).unwrap();
+    let key = std::fs::read_to_string(dir.path().join("s-key.html")).unwrap();
+    let e = Engine {
+        r: 0.06,
+        l: 0.24,
+        omega: 1500.0 * 2.0 * PI / 60.0,
+        m: 2.0,
+        rows: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]],
+        bore: 1.0,
+    };
+    let t = 40f64.to_radians();
+    let (inertia, gas) = (e.inertia(t), 5000.0);
+    let phi = (0.06 * t.sin() / 0.24f64).asin();
+    let torque = (gas + inertia) * 0.06 * (t.sin() + t.cos() * phi.tan());
+    // The sheet gives the mass and the gas force and asks the rest, with
+    // no answer on it.
+    assert!(sheet.contains("= 2 kg"), "mass in kg");
+    assert!(sheet.contains(&four(gas)), "the gas force given");
+    assert!(
+        !sheet.contains("data-key=\"dynamics."),
+        "no answer on the sheet"
+    );
+    assert!(sheet.contains("inertia force") && sheet.contains("crank effort"));
+    // The key has the answers, the formulas' values.
+    let v = values(&key);
+    check(&v, "dynamics.inertia_force", inertia, 1e-12);
+    check(&v, "dynamics.piston_effort", gas + inertia, 1e-12);
+    check(&v, "dynamics.crank_effort_exact", torque, 1e-12);
+    let command = key
+        .replace("<span class=\"nobreak\">", "")
+        .replace("</span>", "");
+    assert!(command.contains("--mass 2 --fluctuation 0.02 --gas-force 5000 --exercise"));
 }

@@ -508,6 +508,7 @@ impl Turn {
                 omega: omega(),
                 m: 10.0,
                 rows: indicator(),
+                bore: 10.0 / 12.0,
             },
             h: 2.0 * PI / steps as f64,
             stored: Vec::new(),

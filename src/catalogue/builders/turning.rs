@@ -3,8 +3,10 @@
 //! flywheel, E(θ) = ∫ (T − T_mean) dθ, with its fluctuation ΔE.
 //!
 //! The engine is the catalogue's (§35's by default) with the example
-//! reciprocating mass and a 10 in bore, its gas force from an indicator
-//! diagram (examples/indicator.csv unless `--data` gives another).
+//! reciprocating mass unless `--mass` gives another, its gas force a
+//! constant (`--gas-force`) or from an indicator diagram: the example's
+//! (examples/indicator.csv, lbf/ft² on a 10 in bore, in feet and
+//! pounds-force only) unless `--data` and `--bore` give the engine's own.
 //! Tangents are central differences within each smooth piece (T has kinks
 //! at the dead centres and the diagram's rows); the values are exact.
 
@@ -12,28 +14,74 @@ use super::{Ctx, Sheet, short, sig};
 use crate::diagram::{Axis, Curve, Plot};
 use crate::dynamics::quadrature::integrate;
 use crate::dynamics::turning::total_torque;
-use crate::dynamics::{EXAMPLE_MASS, Engine, GasForce, IndicatorDiagram, TurningMoment};
-use crate::error::{Input, Result};
+use crate::dynamics::{
+    EXAMPLE_BORE, EXAMPLE_INDICATOR, EXAMPLE_MASS, Engine, GasForce, IndicatorDiagram,
+    TurningMoment, example_indicator,
+};
+use crate::error::{Error, Input, Result};
 use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Point, Vector};
-
-/// The example engine's indicator diagram.
-const INDICATOR: &str = include_str!("../../../examples/indicator.csv");
-
-/// The example engine's bore, 10 in in feet.
-const BORE: f64 = 10.0 / 12.0;
+use crate::units::Units;
 
 /// Step of the tangents' differences, radians.
 const STEP: f64 = 1e-6;
 
-/// The example engine of the figure.
+/// The figure's engine: the mechanism with the reciprocating mass
+/// (`--mass`, the example's by default) and the gas force [`gas`] gives.
 pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
-    let text = ctx.options.data.as_deref().unwrap_or(INDICATOR);
-    // The diagram is the figure's data file.
-    let diagram =
-        IndicatorDiagram::from_csv(text, BORE, "data").map_err(|e| e.about(Input::Data))?;
     let mass = ctx.options.mass.unwrap_or(EXAMPLE_MASS);
-    Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(GasForce::Indicator(diagram))
+    Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(gas(ctx)?)
+}
+
+/// The gas force on the piston: `--gas-force`, else the indicator diagram
+/// of `--data` on the bore `--bore`, else the example's
+/// ([`example_indicator`]). The example's diagram and bore are in feet
+/// and pounds-force: in other units the figure is given the engine's own
+/// diagram and bore (a diagram's declared unit checked against the
+/// figure's, [`IndicatorDiagram::check_units`]), or a constant force.
+fn gas(ctx: &Ctx) -> Result<GasForce> {
+    let o = ctx.options;
+    let refuse = |why: String| {
+        Err(Error::invalid(
+            Input::Options,
+            format!("{}: {why}", ctx.name.name()),
+        ))
+    };
+    if let Some(f) = o.gas_force {
+        if o.data.is_some() || o.bore.is_some() {
+            return refuse("give the gas force as a constant (--gas-force) or by an indicator diagram (--data, --bore), not both".into());
+        }
+        return Ok(GasForce::Constant(f));
+    }
+    let own = "--data CSV with --bore D, or --gas-force F";
+    let example = || example_indicator(&ctx.units, own);
+    let diagram = match (o.data.as_deref(), o.bore) {
+        (None, None) => example()?,
+        (Some(text), bore) => {
+            let bore = match bore {
+                Some(b) => b,
+                None if ctx.units == Units::FOOT_POUND => EXAMPLE_BORE,
+                None => {
+                    return refuse(format!(
+                        "give the bore of the indicator diagram's cylinder with --bore D, in {}",
+                        ctx.units.length()
+                    ));
+                }
+            };
+            // The diagram is the figure's data file.
+            let d =
+                IndicatorDiagram::from_csv(text, bore, "data").map_err(|e| e.about(Input::Data))?;
+            d.check_units(&ctx.units, "data")
+                .map_err(|e| e.about(Input::Data))?;
+            d
+        }
+        (None, Some(bore)) => {
+            // The example's diagram on another bore, in its own units.
+            example()?;
+            IndicatorDiagram::from_csv(EXAMPLE_INDICATOR, bore, "examples/indicator.csv")?
+        }
+    };
+    Ok(GasForce::Indicator(diagram))
 }
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
@@ -181,6 +229,25 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     Ok(plot)
 }
 
+/// What the notes say of the gas force after the mass: the constant, or
+/// the bore and whose indicator diagram.
+fn gas_note(ctx: &Ctx) -> String {
+    let o = ctx.options;
+    if let Some(f) = o.gas_force {
+        return format!("; constant gas force {} {}", short(f), ctx.units.force());
+    }
+    format!(
+        ", bore {} {}; gas force from the indicator diagram{}",
+        short(o.bore.unwrap_or(EXAMPLE_BORE)),
+        ctx.unit(),
+        if o.data.is_some() {
+            " given"
+        } else {
+            " of an illustrative steam engine (admission at 100 psi to 30 % of the stroke)"
+        }
+    )
+}
+
 /// The notes: the engine, its speed, mass, bore and gas force, then the
 /// work per turn, the areas and where the energy is greatest and least.
 fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
@@ -188,7 +255,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
     let t_unit = ctx.units.torque();
     [
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}, bore {} {u}; gas force from the indicator diagram{}.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}{}.",
             short(m.crank()),
             short(m.rod()),
             // An offset engine says so (its stroke, and so its work, differ).
@@ -199,12 +266,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
             },
             short(ctx.rpm()),
             short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
-            short(BORE),
-            if ctx.options.data.is_some() {
-                " given"
-            } else {
-                " of an illustrative steam engine (admission at 100 psi to 30 % of the stroke)"
-            },
+            gas_note(ctx),
             u = ctx.unit(),
             mass_u = ctx.units.mass()
         ),

@@ -8,23 +8,16 @@ use super::{Picture, Row, Step, Value};
 use super::{short, show};
 use crate::catalogue::FigureName;
 use crate::dynamics::{Engine, EnginePose, Flywheel, GasForce, IndicatorDiagram, TurningMoment};
-use crate::error::{Error, Input, Result};
-use crate::handout::figures;
-use crate::units::Units;
-
-/// The turning-moment figure's indicator diagram (steam at 100 psi gauge
-/// cut off at 30 % of the stroke), in lbf/ft², so that the page's numbers
-/// are those of its figures.
-const INDICATOR: &str = include_str!("../../../examples/indicator.csv");
-
-/// The turning-moment figure's bore, 10 in in feet.
-const BORE: f64 = 10.0 / 12.0;
+use crate::error::Result;
+use crate::handout::{Gas, figures};
 
 /// What the dynamics steps share: the engine with its mass and gas
 /// force, its forces at the pose, the turn and the flywheel.
 struct Worked {
     engine: Engine,
-    diagram: IndicatorDiagram,
+    /// The gas force's indicator diagram; `None` for a constant force.
+    diagram: Option<IndicatorDiagram>,
+    gas: Gas,
     at: EnginePose,
     turn: TurningMoment,
     flywheel: Flywheel,
@@ -33,26 +26,27 @@ struct Worked {
 impl Worked {
     /// The dynamics of the handout's engine; `None` without a mass.
     ///
-    /// Errors: units other than feet and pounds-force (the indicator
-    /// diagram's), and those of the engine's forces.
+    /// Errors: a gas force whose units are not the handout's (the
+    /// example's feet and pounds-force, a diagram's declared unit), and
+    /// those of the engine's forces.
     fn of(w: &Work) -> Result<Option<Self>> {
-        let Some((mass, fluctuation)) = w.h.dynamics() else {
+        let Some(d) = &w.h.dynamics else {
             return Ok(None);
         };
-        if *w.h.units() != Units::FOOT_POUND {
-            return Err(Error::invalid(Input::Options,
-                "the handout's dynamics take their gas force from an indicator diagram in lbf/ft² with a 10 in bore: give lengths in ft and forces in lbf with --mass".into(),
-            ));
-        }
-        let diagram = IndicatorDiagram::from_csv(INDICATOR, BORE, "examples/indicator.csv")?;
-        let engine = Engine::new(*w.mechanism(), mass, w.omega())?
-            .with_gas(GasForce::Indicator(diagram.clone()))?;
+        let units = w.h.units();
+        let force = d.gas.force(units, d.spelling)?;
+        let diagram = match &force {
+            GasForce::Indicator(diagram) => Some(diagram.clone()),
+            _ => None,
+        };
+        let engine = Engine::new(*w.mechanism(), d.mass, w.omega())?.with_gas(force)?;
         let at = engine.at(w.h.angle())?;
         let turn = TurningMoment::new(&engine, &[0.0])?;
-        let flywheel = Flywheel::for_coefficient(turn.fluctuation, w.omega(), fluctuation)?;
+        let flywheel = Flywheel::for_coefficient(turn.fluctuation, w.omega(), d.fluctuation)?;
         Ok(Some(Self {
             engine,
             diagram,
+            gas: d.gas.clone(),
             at,
             turn,
             flywheel,
@@ -66,6 +60,34 @@ pub(super) fn dynamics(w: &Work) -> Result<Vec<Step>> {
         return Ok(Vec::new());
     };
     Ok(vec![inertia(w, &d)?, turning(w, &d)?, flywheel(w, &d)?])
+}
+
+/// The dynamics of an exercise: the data it gives (the reciprocating
+/// mass, the gas force at the pose) as a sentence, and the rows of the
+/// inertia step, the gas force given rather than asked; `None` without a
+/// mass.
+pub(in crate::handout) fn exercise_dynamics(w: &Work) -> Result<Option<(String, Vec<Row>)>> {
+    let Some(d) = Worked::of(w)? else {
+        return Ok(None);
+    };
+    let data = format!(
+        "Reciprocating mass *m* = {} {}; the gas force at this pose *F*_g = {} {} (positive towards the crank).",
+        short(d.engine.reciprocating_mass()),
+        mass_unit(w),
+        show(d.at.gas_force),
+        w.n.force
+    );
+    let rows = inertia_rows(w, &d)
+        .into_iter()
+        .map(|row| {
+            if row.quantity.starts_with("gas force") {
+                row.not_asked()
+            } else {
+                row
+            }
+        })
+        .collect();
+    Ok(Some((data, rows)))
 }
 
 /// The mass unit the forces imply ([`crate::units::Units::mass`]).
@@ -84,7 +106,6 @@ fn inertia(w: &Work, d: &Worked) -> Result<Step> {
     let outer = mech.pose(mech.outer_dead_centre()).position();
     let fraction = (outer - pose.position()) / mech.stroke();
     let expansion = w.omega() * pose.position_rate() < 0.0;
-    let area = d.diagram.area();
     Ok(Step {
         id: "inertia",
         title: "The inertia force and the crank effort".into(),
@@ -98,14 +119,7 @@ fn inertia(w: &Work, d: &Worked) -> Result<Step> {
                 show(at.inertia_force_graphical),
                 show(at.inertia_force)
             ),
-            format!(
-                "The steam of the indicator diagram (gauge pressure against the stroke, 100 psi cut off at 30 %) acts on a 10 in bore, *A* = π*D*²/4 = {} {u}². Here the piston is {} % of the stroke from the outer dead centre on the {} stroke: *p* = {} {f}/{u}², *F*_g = *pA* = {} {f}.",
-                show(area),
-                show(100.0 * fraction),
-                if expansion { "expansion" } else { "return" },
-                show(at.gas_force / area),
-                show(at.gas_force)
-            ),
+            gas_sentence(w, d, fraction, expansion),
             format!(
                 "The piston effort *F* = *F*_g + *F*_i = {} {f} turns the crank through Ng's line: *T* = *F*·*OM* = {} × {} = {} {}, and by the exact formula *F* *r* sin(θ + φ)/cos φ = {}. The figure draws the inertia force alone.",
                 show(at.piston_effort),
@@ -125,6 +139,34 @@ fn inertia(w: &Work, d: &Worked) -> Result<Step> {
     })
 }
 
+/// What the inertia step says of the gas force at the pose: the
+/// diagram's pressure there times the piston's area, or the constant.
+fn gas_sentence(w: &Work, d: &Worked, fraction: f64, expansion: bool) -> String {
+    let (f, u) = (&w.n.force, w.length());
+    let Some(diagram) = &d.diagram else {
+        return format!(
+            "The gas force is taken constant, *F*_g = {} {f} towards the crank.",
+            show(d.at.gas_force)
+        );
+    };
+    let area = diagram.area();
+    let whose = match &d.gas {
+        Gas::Indicator { bore, source, .. } => format!(
+            "The gas of the indicator diagram {source} (gauge pressure against the stroke) acts on a bore *D* = {} {u}",
+            short(*bore)
+        ),
+        _ => "The steam of the indicator diagram (gauge pressure against the stroke, 100 psi cut off at 30 %) acts on a 10 in bore".into(),
+    };
+    format!(
+        "{whose}, *A* = π*D*²/4 = {} {u}². Here the piston is {} % of the stroke from the outer dead centre on the {} stroke: *p* = {} {f}/{u}², *F*_g = *pA* = {} {f}.",
+        show(area),
+        show(100.0 * fraction),
+        if expansion { "expansion" } else { "return" },
+        show(d.at.gas_force / area),
+        show(d.at.gas_force)
+    )
+}
+
 /// The forces at the pose and the crank effort.
 fn inertia_rows(w: &Work, d: &Worked) -> Vec<Row> {
     let at = &d.at;
@@ -140,7 +182,11 @@ fn inertia_rows(w: &Work, d: &Worked) -> Vec<Row> {
             force,
         ),
         Row::new(
-            "gas force *F*_g = *pA*",
+            if d.diagram.is_some() {
+                "gas force *F*_g = *pA*"
+            } else {
+                "gas force *F*_g"
+            },
             None,
             Some(Value::of("dynamics.gas_force", at.gas_force)),
             force,
@@ -168,16 +214,21 @@ fn inertia_rows(w: &Work, d: &Worked) -> Vec<Row> {
 fn turning(w: &Work, d: &Worked) -> Result<Step> {
     let figure = figures::dynamics(w.h, FigureName::TurningMoment)?;
     let (tm, t) = (&d.turn, &w.n.torque);
-    let indicated = d.diagram.work(w.mechanism().stroke());
+    let done = match &d.diagram {
+        Some(diagram) => format!(
+            "the indicator diagram's work, *A* × stroke × ∮*p* d*x* = {} {t}, as the inertia forces do no work over a turn",
+            show(diagram.work(w.mechanism().stroke()))
+        ),
+        None => "nothing, as a constant gas force takes back on the return stroke what it gave on the outward one and the inertia forces do no work over a turn".into(),
+    };
     Ok(Step {
         id: "turning-moment",
         title: "The turning-moment diagram".into(),
         source: "Ng, eq. 2, round the turn",
         text: vec![
             format!(
-                "Repeating *T* = *F*·*OM* round the turn gives the turning-moment diagram. Its area is the work of one turn, *W* = ∫*T* dθ = {} {t}: the indicator diagram's work, *A* × stroke × ∮*p* d*x* = {} {t}, as the inertia forces do no work over a turn. The mean torque is *T*_{{mean}} = *W*/2π = {} {t}.",
+                "Repeating *T* = *F*·*OM* round the turn gives the turning-moment diagram. Its area is the work of one turn, *W* = ∫*T* dθ = {} {t}: {done}. The mean torque is *T*_{{mean}} = *W*/2π = {} {t}.",
                 show(tm.work),
-                show(indicated),
                 show(tm.mean)
             ),
             format!(

@@ -31,7 +31,7 @@ use crate::error::Result;
 use crate::figure::Figure;
 use acceleration::{acceleration_scale, acceleration_scale_rows, kisch, kisch_rows};
 use diagrams::diagrams;
-use dynamics::dynamics;
+use dynamics::{dynamics, exercise_dynamics};
 use forces::{forces, forces_rows};
 use mechanism::{mechanism, mechanism_rows};
 use rod::{rod, rod_rows};
@@ -69,7 +69,8 @@ pub(super) struct Step {
 }
 
 /// The ids of the steps of the engine's dynamics, whose rows the page's
-/// summary adds to [`rows`] (an exercise asks none of them).
+/// summary adds to [`rows`] (an exercise asks those of the first,
+/// [`exercise_rows`]).
 pub(super) const DYNAMICS: [&str; 3] = ["inertia", "turning-moment", "flywheel"];
 
 /// Every step of the handout, in order; the OM line and the forces only
@@ -104,6 +105,13 @@ pub(super) fn rows(h: &Handout, r: &Reading) -> Vec<Row> {
         forces_rows(&w),
     ]
     .concat()
+}
+
+/// The dynamics an exercise sets, with a mass: the data sentence (the
+/// mass, the gas force at the pose) and the rows of the forces at the
+/// pose (the gas force given, the rest asked); `None` without a mass.
+pub(super) fn exercise_rows(h: &Handout, r: &Reading) -> Result<Option<(String, Vec<Row>)>> {
+    exercise_dynamics(&Work::new(h, r))
 }
 
 /// A number as a page shows it: four significant figures, a true minus

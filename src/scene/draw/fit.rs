@@ -43,6 +43,20 @@ pub(crate) fn d_is_near(ctx: &LayerCtx) -> Option<Point> {
 /// asked to hold ([`crate::scene::Scene::with_view_holding`]). Points that are not finite are
 /// left out: at worst the frame is the crank circle's with the guides.
 pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
+    frame_with(ctx, true)
+}
+
+/// [`frame`] without D: the rectangle a view held over many poses fits
+/// each pose to ([`super::held`]). Over a turn D climbs towards infinity
+/// at the quarter turns, and a view that kept room for it at every pose
+/// would draw the mechanism a fraction of the page wide; D off the page
+/// is shown by its arrow at the frame's edge, as at infinity.
+pub(crate) fn frame_without_d(ctx: &LayerCtx) -> Frame {
+    frame_with(ctx, false)
+}
+
+/// [`frame`], with D where it is near only if `with_d`.
+fn frame_with(ctx: &LayerCtx, with_d: bool) -> Frame {
     let m = ctx.scene.mechanism();
     let (r, e) = (m.crank(), m.offset());
     let s = &ctx.sizes;
@@ -53,7 +67,7 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     };
     b.add(Point::new(g0.min(-r), e - s.block_half_height));
     b.add(Point::new(g1, e + s.block_half_height));
-    add_e_and_d(&mut b, ctx);
+    add_e_and_d(&mut b, ctx, with_d);
     let scene = ctx.scene;
     if scene.has(Layer::Klein) {
         let k = super::acceleration::klein_points(ctx);
@@ -101,22 +115,23 @@ pub(crate) fn frame(ctx: &LayerCtx) -> Frame {
     Frame::new(b.min, b.max)
 }
 
-/// Adds E where a layer draws it, and D where a layer draws it and it is
-/// near (see [`d_is_near`]).
-fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx) {
+/// Adds E where a layer draws it, and, if `with_d`, D where a layer draws
+/// it and it is near (see [`d_is_near`]).
+fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx, with_d: bool) {
     let scene = ctx.scene;
     let wants_e = (scene.layers().iter()).any(|l| l.draws_e() || *l == Layer::VirtualCentres);
     if wants_e {
         b.add(ctx.main.e().e());
     }
-    if [
-        Layer::Velocity,
-        Layer::Klein,
-        Layer::VirtualCentres,
-        Layer::Centrodes,
-    ]
-    .iter()
-    .any(|l| scene.has(*l))
+    if with_d
+        && [
+            Layer::Velocity,
+            Layer::Klein,
+            Layer::VirtualCentres,
+            Layer::Centrodes,
+        ]
+        .iter()
+        .any(|l| scene.has(*l))
         && let Some(d) = d_is_near(ctx)
     {
         b.add(d);

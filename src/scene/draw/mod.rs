@@ -401,6 +401,13 @@ fn with_detail(
     frame: Frame,
     details: impl Fn(f64) -> Option<detail::Detail>,
 ) -> Layout {
+    let details = |scale: f64| {
+        if ctx.scene.has_no_detail() {
+            None
+        } else {
+            details(scale)
+        }
+    };
     let (mut main, mut transform) = main_view(ctx, band, frame);
     let mut detail = details(transform.scale());
     let grown = beside_detail(ctx.scene, frame, detail.as_ref(), transform.scale());
@@ -421,7 +428,9 @@ fn with_detail(
 }
 
 /// The layout held over the poses at `angles`: one fit to what the scene
-/// draws at all of them (the union of their frames, the most notes of any),
+/// draws at all of them but D (the union of their frames without it,
+/// [`fit::frame_without_d`]; D off the page is drawn as an arrow at its
+/// edge), the most notes of any,
 /// and one detail showing the union of their details' regions at the least
 /// of their magnifications, narrowed to the page if need be.
 // cannot fail: one context per pose, and the held poses are at least one
@@ -447,7 +456,7 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
     #[allow(clippy::expect_used)]
     let union = |ctxs: &[LayerCtx]| {
         ctxs.iter()
-            .map(fit::frame)
+            .map(fit::frame_without_d)
             .reduce(|a, b| Frame::new(a.min().inf(&b.min()), a.max().sup(&b.max())))
             .expect("at least one pose")
     };
