@@ -614,7 +614,7 @@ impl Plot {
             Shape::Marker { centre, .. }
             | Shape::Dot { centre }
             | Shape::Pin { centre }
-            | Shape::Bearing { centre } => vec![*centre],
+            | Shape::Bearing { centre, .. } => vec![*centre],
             Shape::Arrow { from, to } | Shape::Hatch { from, to, .. } => vec![*from, *to],
             Shape::Label { anchor, .. } => vec![*anchor],
             Shape::Circle { centre, radius } | Shape::Arc { centre, radius, .. } => (0..=48)

@@ -213,10 +213,14 @@ pub enum Shape {
         centre: Point,
     },
     /// The fixed bearing of the crank: a pedestal with hatched base below
-    /// the centre (in page terms).
+    /// the centre (in page terms), or above it where `hanging`.
     Bearing {
         /// Centre of the shaft.
         centre: Point,
+        /// Drawn hanging from above, pedestal and base over the centre:
+        /// a crank pointing down the page would run through a pedestal
+        /// below it.
+        hanging: bool,
     },
     /// A filled body with a link outline (the slider block).
     Block {

@@ -37,7 +37,7 @@ pub(super) fn may_show(t: &PageFromWorld, rect: &PageRect, shape: &Shape) -> boo
         Shape::Pin { centre } | Shape::Dot { centre } | Shape::Marker { centre, .. } => {
             (vec![*centre], MARK)
         }
-        Shape::Bearing { centre } => (vec![*centre], BEARING),
+        Shape::Bearing { centre, .. } => (vec![*centre], BEARING),
         Shape::Arrow { from, to } | Shape::Hatch { from, to, .. } => (vec![*from, *to], MARK),
         Shape::RightAngle { vertex, .. } => (vec![*vertex], MARK),
         Shape::AngleMark { vertex, .. } => (vec![*vertex], ANGLE_RADIUS + LETTER),

@@ -14,14 +14,17 @@ use crate::geom::{Point, Vector};
 
 impl PanelLayout<'_> {
     /// The crank's bearing: a pedestal (a triangle on the paper) below the
-    /// shaft's centre, on a hatched foot. Kept clear by labels: the
-    /// triangle's edges and the foot with its hatching.
-    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point) -> Option<Mark> {
+    /// shaft's centre, on a hatched foot (above it, `hanging`, the foot
+    /// hatched on its upper side). Kept clear by labels: the triangle's
+    /// edges and the foot with its hatching.
+    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point, hanging: bool) -> Option<Mark> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
         }
-        let (h, w, base) = (17.0, 10.0, 17.0);
+        // Down the page, or up it for a bearing hanging from above.
+        let down = if hanging { -1.0 } else { 1.0 };
+        let (h, w, base) = (17.0 * down, 10.0, 17.0);
         let tri = [c, c + Vector::new(-w, h), c + Vector::new(w, h)];
         let foot = [c + Vector::new(-base, h), c + Vector::new(base, h)];
         let mut hatch = PathData::new();
@@ -29,16 +32,17 @@ impl PanelLayout<'_> {
         while x <= base {
             let s = c + Vector::new(x, h);
             hatch.push(PathCommand::Move(s));
-            hatch.push(PathCommand::Line(s + Vector::new(-5.0, 6.0)));
+            hatch.push(PathCommand::Line(s + Vector::new(-5.0, 6.0 * down)));
             x += 5.0;
         }
         // The triangle and the foot are lines to keep clear of; the
-        // hatching under the foot is a strip no letter enters.
+        // hatching beyond the foot is a strip no letter enters.
         self.obstacles.polyline(&[tri[0], tri[1], tri[2], tri[0]]);
         self.obstacles.segment(foot[0], foot[1]);
+        let (y0, y1) = (h.min(h + 6.0 * down), h.max(h + 6.0 * down));
         self.obstacles.boxed(Bounds {
-            min: c + Vector::new(-base - 5.0, h),
-            max: c + Vector::new(base, h + 6.0),
+            min: c + Vector::new(-base - 5.0, y0),
+            max: c + Vector::new(base, y1),
         });
         let pen = ink.pen;
         Some(

@@ -120,7 +120,10 @@ impl Canvas {
             self.push(
                 format!("bearing-{name}"),
                 Role::Frame,
-                Shape::Bearing { centre: p },
+                Shape::Bearing {
+                    centre: p,
+                    hanging: false,
+                },
             );
         }
     }

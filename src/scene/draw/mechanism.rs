@@ -16,6 +16,22 @@ const BEARING_BOX: [f64; 4] = [BEARING_REACH, 20.0, 26.0, 8.0];
 /// A stretch of a guide along x, world units.
 type Span = (f64, f64);
 
+/// The crank within this angle (radians, 40°) of straight down the page
+/// runs through a bearing's pedestal below its centre.
+const THROUGH_PEDESTAL: f64 = 0.7;
+
+/// Whether the crank's bearing is drawn hanging from above: where the
+/// crank points down the page within [`THROUGH_PEDESTAL`] (about 270°), a
+/// pedestal below the centre had the crank drawn through it. A view held
+/// over a series of poses keeps it standing, so that it does not turn
+/// over from frame to frame.
+fn hanging(ctx: &LayerCtx, canvas: &Canvas) -> bool {
+    let pose = ctx.main.pose();
+    let v = canvas.transform().apply_vector(pose.b() - pose.c());
+    let n = v.norm();
+    ctx.scene.held().is_none() && n > 0.0 && v.y / n > THROUGH_PEDESTAL.cos()
+}
+
 /// The stretches of the guide at height `y`, hatched towards `side`
 /// (±1), that stay open (of its `hatch`ing, or of its line): where the
 /// crank or the rod passes in front of it (a link is a part in front of
@@ -39,7 +55,10 @@ fn openings(ctx: &LayerCtx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> 
         .filter_map(|(p, q)| x_within(p, q, lo - d, hi + d))
         .map(|(x0, x1)| (x0 - d, x1 + d + slant))
         .collect();
-    let [left, right, below, above] = BEARING_BOX.map(|v| canvas.world(v));
+    let [left, right, mut below, mut above] = BEARING_BOX.map(|v| canvas.world(v));
+    if hanging(ctx, canvas) {
+        std::mem::swap(&mut below, &mut above);
+    }
     if hi > c.y - below && lo < c.y + above {
         open.push((c.x - left, c.x + right + slant));
     }
@@ -201,7 +220,10 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
     canvas.push(
         format!("bearing-{}", ctx.letter(Named::CrankCentre)),
         Role::Frame,
-        Shape::Bearing { centre: c },
+        Shape::Bearing {
+            centre: c,
+            hanging: hanging(ctx, canvas),
+        },
     );
 
     // Guides with their hatching on the outside, under the block over
