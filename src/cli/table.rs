@@ -24,6 +24,8 @@ pub enum TableName {
     Balance,
     /// The piston's acceleration of an in-line engine as a series cos θ + A₂ cos 2θ + A₄ cos 4θ + … (--order K harmonics, default 3): each exact coefficient and the largest error of the series cut after it (n = l/r from --crank and --rod, §35's 6)
     Harmonics,
+    /// The quick return of inversion 3 (the crank and slotted lever) or 2 (--inversion 2, Whitworth's): the tool's position, velocity and acceleration against θ over the cutting and return strokes, the time ratio and the stroke in the title (--lever L, the arm of the slotted link driving the tool, default l + r; default the chain r = 0.5, l = 1.5 ft at 250 rpm of the driver, θ every 15°)
+    QuickReturn,
 }
 
 /// Output formats.
@@ -114,6 +116,14 @@ pub struct TableArgs {
     /// Harmonics cos 2θ … cos 2Kθ of the series for harmonics [default: 3]
     #[arg(long, value_name = "K")]
     pub order: Option<usize>,
+    /// The inversion of quick-return: 3, the crank and slotted lever, or
+    /// 2, Whitworth's [default: 3]
+    #[arg(long, value_name = "N")]
+    pub inversion: Option<u32>,
+    /// The arm L of the slotted link that drives the tool for
+    /// quick-return, in the length unit [default: l + r]
+    #[arg(long, allow_hyphen_values = true, value_name = "L")]
+    pub lever: Option<f64>,
     #[command(flatten)]
     pub units: UnitArgs,
     #[command(flatten)]
@@ -180,7 +190,35 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         TableName::Dynamics => dynamics(args, spec, decimals, format, out),
         TableName::Balance => balance(args, spec, decimals, format, out),
         TableName::Harmonics => harmonics(args, decimals, format, out),
+        TableName::QuickReturn => quick_return(args, spec, decimals, format, out),
     }
+}
+
+/// The angles of `table quick-return` when none are given: every 15°,
+/// the strokes' ends at 90° and 270° among them.
+const QUICK_RETURN_ANGLES: &str = "0:360:15";
+
+/// `table quick-return`: the tool's motion over the two strokes.
+fn quick_return(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let m = mechanism(args, 0.5, 1.5)?;
+    let omega = omega(args)?;
+    let inversion = slider_crank::Inversion::from_number(args.inversion.unwrap_or(3))?;
+    let lever = args
+        .lever
+        .unwrap_or_else(|| slider_crank::chain::QuickReturn::default_lever(&m));
+    let q = slider_crank::chain::QuickReturn::new(m, inversion, lever)?;
+    let spec = spec.map_or_else(|| AngleSpec::parse(QUICK_RETURN_ANGLES), Ok)?;
+    let units = args.units.units(Units::FOOT_POUND);
+    let head = table::quick_return_head(&q, omega, &units);
+    guard_angles(args, "table quick-return", &spec, &head)?;
+    let row = |d| table::quick_return_row(&q, omega, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
 }
 
 /// `table harmonics`: the acceleration's series and each cut's error.
@@ -368,6 +406,8 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
         ("--cranks", args.cranks.is_some()),
         ("--planes", args.planes.is_some()),
         ("--order", args.order.is_some()),
+        ("--inversion", args.inversion.is_some()),
+        ("--lever", args.lever.is_some()),
     ];
     let used: &[&str] = match args.name {
         TableName::Obliquity | TableName::AccelerationFactor => &["--n"],
@@ -419,6 +459,17 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
             "--planes",
         ],
         TableName::Harmonics => &["--crank", "--rod", "--decimals", "--order"],
+        TableName::QuickReturn => &[
+            "--crank",
+            "--rod",
+            "--offset",
+            "--rpm",
+            "--omega",
+            "--decimals",
+            "--unit",
+            "--inversion",
+            "--lever",
+        ],
     };
     given
         .into_iter()

@@ -8,6 +8,7 @@ mod dynamics;
 mod dynamics_json;
 mod guard;
 mod harmonics;
+mod quick_return;
 mod reading_json;
 
 use crate::analytic::approx::acceleration_factor;
@@ -29,6 +30,7 @@ pub use dynamics::{dynamics_head, dynamics_row, example_table};
 pub use dynamics_json::{dynamics_json, mass_unit};
 pub use guard::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
 pub use harmonics::harmonics_table;
+pub use quick_return::{quick_return_head, quick_return_row};
 pub use reading_json::ReadingJson;
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).
