@@ -27,7 +27,9 @@ mod quadric;
 mod quick_return;
 
 pub use centres::{CENTRE_NAMES, ChainCentres, SlotConstruction};
-pub use check::{ChainCheckRow, arc_position_by_iteration, quadric_sweep, slot_sweep};
+pub use check::{
+    ChainCheckRow, arc_position_by_iteration, coriolis_sweep, quadric_sweep, slot_sweep,
+};
 pub use coriolis::CoriolisPolygon;
 pub use cylindric::{ConvergenceRow, CylindricChain, CylindricPose, slot_convergence};
 pub use inversion::{Inversion, InversionPose, InvertedChain, LinkMotion};

@@ -248,6 +248,16 @@ pub fn slot_check_title(m: &SliderCrank, rho: f64) -> String {
     )
 }
 
+/// The first line of `check --inversion 2|3`'s report for the engine `m`.
+pub fn coriolis_check_title(m: &SliderCrank, inversion: u32) -> String {
+    format!(
+        "check: the polygons with the Coriolis component of inversion {inversion}, r = {}, l = {}, e = {}, against the chain's exact link motion (the driver at 1 rad/s)",
+        plain(m.crank()),
+        plain(m.rod()),
+        plain(m.offset())
+    )
+}
+
 /// The first line of `check --links`'s report.
 pub fn quadric_check_title(q: &QuadricChain) -> String {
     format!(

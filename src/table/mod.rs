@@ -22,8 +22,8 @@ use crate::number::{angle_cell, plain};
 use crate::units::Units;
 pub use balance::{balance_head, balance_row};
 pub use chain_json::{
-    CHAIN_TOLERANCE, centre_json, chain_check_report, grashof_name, inversion_json,
-    quadric_check_title, quadric_json, slot_check_title, slot_json,
+    CHAIN_TOLERANCE, centre_json, chain_check_report, coriolis_check_title, grashof_name,
+    inversion_json, quadric_check_title, quadric_json, slot_check_title, slot_json,
 };
 pub use check_report::{DEFAULT_ULPS, MAX_TOLERANCE, check_allowance, engine_check_report};
 pub use dynamics::{dynamics_head, dynamics_row, example_table};

@@ -271,7 +271,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let mechanism = mechanism_plot(ctx, &pose)?;
     let top = mechanism.rect().y + mechanism.rect().height + GAP;
     let [v_rect, a_rect, rule_rect] = row(page.width(), top, POLYGON_HEIGHT);
-    let (velocity, v_bar) = polygon_plot(
+    let (velocity, v_bar, v_points) = polygon_plot(
         ctx,
         "velocity-polygon",
         v_rect,
@@ -282,7 +282,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
         "/s",
         |_, _| {},
     )?;
-    let (acceleration, a_bar) = polygon_plot(
+    let (acceleration, a_bar, a_points) = polygon_plot(
         ctx,
         "acceleration-polygon",
         a_rect,
@@ -298,6 +298,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.mechanism(ctx, true, true);
     sheet.meta("inversion", json!(inversion.number()));
     sheet.meta("coriolis", coriolis_json(&polygons, v_bar, a_bar));
+    sheet.meta("velocity_polygon", v_points);
+    sheet.meta("acceleration_polygon", a_points);
     sheet.plot(mechanism);
     sheet.plot(velocity);
     sheet.plot(acceleration);
@@ -394,7 +396,8 @@ fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
 
 /// A polygon's panel: its vectors as arrows (those long enough to carry
 /// a head), its points lettered, a scale bar of a round length below,
-/// and what `more` adds; returns the plot and the bar's length.
+/// and what `more` adds; returns the plot, the bar's length and the
+/// points' places (from the pole, in velocity or acceleration units).
 #[allow(clippy::too_many_arguments)]
 fn polygon_plot(
     ctx: &Ctx,
@@ -406,7 +409,7 @@ fn polygon_plot(
     hue: Hue,
     per: &str,
     more: impl FnOnce(&mut Canvas, &[Lettered]),
-) -> Result<(Plot, f64)> {
+) -> Result<(Plot, f64, Value)> {
     let (world, extent) = polygon_frame(points);
     let mut plot =
         Plot::world(name, rect, &world, false, ctx.tolerance, ctx.font)?.with_caption(caption);
@@ -452,10 +455,11 @@ fn polygon_plot(
             text: RichText::parse(&format!("{} {unit}", short(bar))),
         },
     );
-    for item in s.finish().0 {
+    let (items, points) = s.finish();
+    for item in items {
         plot.push(item);
     }
-    Ok((plot, bar))
+    Ok((plot, bar, Value::Object(points)))
 }
 
 /// The right angles of the acceleration polygon: d's tangential component
