@@ -60,6 +60,8 @@ const ROUNDING: f64 = 1e-10;
 struct Polygons {
     inversion: Inversion,
     p: CoriolisPolygon,
+    /// The length CA, from the crank centre to the block's pin.
+    ca: f64,
 }
 
 /// A point of a polygon: its id (ASCII), its letter as markup, where.
@@ -266,7 +268,9 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let pose = chain.pose(ctx.angle);
     let p = CoriolisPolygon::construct(&pose, ctx.omega)
         .ok_or_else(|| Error::Unsupported("no block slides on a turning link".into()))?;
-    let polygons = Polygons { inversion, p };
+    let engine = pose.engine_pose();
+    let ca = (engine.a() - engine.c()).norm();
+    let polygons = Polygons { inversion, p, ca };
     let page = ctx.page();
     let mechanism = mechanism_plot(ctx, &pose)?;
     let top = mechanism.rect().y + mechanism.rect().height + GAP;
@@ -501,6 +505,7 @@ fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Result<Plot> {
     let p = &polygons.p;
     let v = polygons.v();
     let moving = polygons.clean(v.norm(), 1.0, false) > 0.0;
+    let turning = polygons.clean(p.omega_d(), polygons.ca, false) != 0.0;
     let u = if moving { v.normalize() } else { p.slot() };
     let sense = if p.omega_d() < 0.0 { -1.0 } else { 1.0 };
     let turned = perp(&u) * sense;
@@ -513,10 +518,10 @@ fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Result<Plot> {
         ctx.tolerance,
         ctx.font,
     )?
-    .with_caption(if moving {
-        "the Coriolis direction"
-    } else {
-        "the Coriolis direction (here *v* = 0)"
+    .with_caption(match (moving, turning) {
+        (true, true) => "the Coriolis direction",
+        (false, _) => "the Coriolis direction (here *v* = 0)",
+        (true, false) => "the Coriolis direction (here ω_{d} = 0)",
     });
     let map = *plot.map();
     let mut s = Canvas::new(map, map.world_frame(&plot.area()));
@@ -618,11 +623,7 @@ fn notes(ctx: &Ctx, chain: &InvertedChain, polygons: &Polygons, bars: (f64, f64)
         Inversion::Rod => ("the crank *a* (*BC*)", "*c*", "*B*"),
         _ => ("the rod *b* (*BA*)", "*a*", "*B*"),
     };
-    let ca = {
-        let pose = chain.pose(ctx.angle);
-        let engine = pose.engine_pose();
-        (engine.a() - engine.c()).norm()
-    };
+    let ca = polygons.ca;
     let v = polygons.clean(p.sliding_velocity().abs(), 1.0, false);
     let omega_d = polygons.clean(p.omega_d(), ca, false);
     let alpha_d = polygons.clean(p.alpha_d(), ca, true);
@@ -640,19 +641,19 @@ fn notes(ctx: &Ctx, chain: &InvertedChain, polygons: &Polygons, bars: (f64, f64)
         short(r),
         short(l),
         sig(w),
-        sig(ctx.rpm()),
+        short(ctx.rpm()),
         sig(ca),
     );
     let velocity = match inversion {
         Inversion::Rod => format!(
-            "Velocity polygon (the bar {} {u}/s): *oc* = ω·*BC* = {} {u}/s ⟂ *BC*; *ca*_{{d}} ⟂ *CA*; *oa*_{{d}} along the slot, *v* = {} {u}/s; ω_{{d}} = *ca*_{{d}}/*CA* = {} rad/s.",
+            "Velocity polygon (the bar {} {u}/s): *oc* = ω·*BC* = {} {u}/s, perpendicular to *BC*; *ca*_{{d}} perpendicular to *CA*; *oa*_{{d}} along the slot, *v* = {} {u}/s; ω_{{d}} = *ca*_{{d}}/*CA* = {} rad/s.",
             short(bars.0),
             sig(p.driven().norm()),
             sig(v),
             sig(omega_d),
         ),
         _ => format!(
-            "Velocity polygon (the bar {} {u}/s): *oa* = ω·*BA* = {} {u}/s ⟂ *BA*; *oa*_{{d}} ⟂ *CA*; *a*_{{d}}*a* along the slot, *v* = {} {u}/s; ω_{{d}} = *oa*_{{d}}/*CA* = {} rad/s.",
+            "Velocity polygon (the bar {} {u}/s): *oa* = ω·*BA* = {} {u}/s, perpendicular to *BA*; *oa*_{{d}} perpendicular to *CA*; *a*_{{d}}*a* along the slot, *v* = {} {u}/s; ω_{{d}} = *oa*_{{d}}/*CA* = {} rad/s.",
             short(bars.0),
             sig(p.driven().norm()),
             sig(v),
@@ -661,7 +662,7 @@ fn notes(ctx: &Ctx, chain: &InvertedChain, polygons: &Polygons, bars: (f64, f64)
     };
     let normal = omega_d * omega_d * ca;
     let acceleration = format!(
-        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential ⟂ *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s².",
+        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s².",
         short(bars.1),
         match inversion {
             Inversion::Rod => "C",
@@ -685,6 +686,8 @@ fn notes(ctx: &Ctx, chain: &InvertedChain, polygons: &Polygons, bars: (f64, f64)
         },
         if v == 0.0 {
             "; here *v* = 0 and it vanishes"
+        } else if omega_d == 0.0 {
+            "; here ω_{d} = 0 and it vanishes"
         } else {
             ""
         },
