@@ -59,7 +59,9 @@ enum Command {
     /// 2: bad input.
     #[command(
         mut_arg("assembly", |a| a.hide(true)),
-        mut_arg("inversion", |a| a.hide(true))
+        mut_arg("inversion", |a| a.help(
+            "Check the polygons with the Coriolis component of inversion 2 (the rotating block, Whitworth's quick return) or 3 (the crank and slotted lever) against the chain's exact link motion, instead of the engine's constructions"
+        ))
     )]
     Check(cli::check::CheckArgs),
     /// Draw a named figure or diagram as SVG (or PNG or PDF with --out

@@ -203,3 +203,14 @@ def test_the_coriolis_polygons_read_the_link_motion() -> None:
         assert math.isclose(c["omega_d"], got["links"]["d"]["angular_velocity"], rel_tol=1e-12)
         assert math.isclose(c["sliding_velocity"], got["sliding"]["velocity"], rel_tol=1e-12)
     assert sc.SliderCrank(0.5, 1.5).inversion(4).at(30, rpm=250)["coriolis"] is None
+
+
+def test_the_quick_return_carries_the_time_ratio_and_the_tool() -> None:
+    # r/l = 1/3: beta = 2 asin(1/3), the ratio (180 + beta)/(180 - beta).
+    beta = 2 * math.degrees(math.asin(0.5 / 1.5))
+    for n in (2, 3):
+        q = sc.SliderCrank(0.5, 1.5).inversion(n).at(30, rpm=250)["quick_return"]
+        assert math.isclose(q["time_ratio"], (180 + beta) / (180 - beta), rel_tol=1e-12)
+        assert q["stroke"] == "cutting"
+        assert q["tool"]["velocity"] > 0
+    assert sc.SliderCrank(0.5, 1.5).inversion(1).at(30, rpm=250)["quick_return"] is None

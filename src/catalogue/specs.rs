@@ -464,6 +464,56 @@ figures! {
         kind: Diagram(Chain, |ctx| builders::inversions::build(ctx, Inversion::Slider)),
         takes: &[MECH, Angle, Style, Font],
     },
+    /// Inversion 2 by the relative-velocity method: the rotating block
+    /// (Whitworth's quick return) beside its velocity polygon and its
+    /// acceleration polygon closed by the Coriolis component.
+    CoriolisInversion2 => FigureSpec {
+        name: "coriolis-inversion-2",
+        source: Book("§34, the second inversion of the chain of Fig. 60 (Whitworth’s quick return), its velocity and acceleration found by the relative-velocity method with the Coriolis component of a course in the kinematics of machines (docs/polygons.md); not drawn in the chapter"),
+        caption: "Whitworth’s quick return (the crank a fixed) at 60°: the velocity polygon o a a_d and the acceleration polygon o′ a′ n a′_d k, closed by the Coriolis component 2ω_d v, the block’s sliding velocity turned 90° in the sense of ω_d, to the scales of their bars.",
+        mechanism: CHAIN,
+        at: Crank(60.0),
+        page: (760.0, 760.0),
+        kind: Diagram(Chain, |ctx| builders::coriolis::build(ctx, Inversion::Crank)),
+        takes: &[MECH, Speed, Angle, Style, Font],
+    },
+    /// Inversion 3 by the relative-velocity method: the crank and slotted
+    /// lever (the oscillating cylinder) beside its velocity polygon and
+    /// its acceleration polygon closed by the Coriolis component.
+    CoriolisInversion3 => FigureSpec {
+        name: "coriolis-inversion-3",
+        source: Book("§34, the third inversion of the chain of Fig. 60 (the crank and slotted lever, the oscillating cylinder), its velocity and acceleration found by the relative-velocity method with the Coriolis component of a course in the kinematics of machines (docs/polygons.md); not drawn in the chapter"),
+        caption: "The crank and slotted lever (the rod b fixed) at 60°: the velocity polygon o c a_d and the acceleration polygon o′ c′ n a′_d k, closed by the Coriolis component 2ω_d v, the lever’s sliding velocity turned 90° in the sense of ω_d, to the scales of their bars.",
+        mechanism: CHAIN,
+        at: Crank(60.0),
+        page: (760.0, 760.0),
+        kind: Diagram(Chain, |ctx| builders::coriolis::build(ctx, Inversion::Rod)),
+        takes: &[MECH, Speed, Angle, Style, Font],
+    },
+    /// The crank and slotted lever's tool: its velocity and acceleration
+    /// against θ over the cutting and return strokes, the time ratio.
+    QuickReturnSlottedLever => FigureSpec {
+        name: "quick-return-slotted-lever",
+        source: Book("§34, the third inversion of the chain of Fig. 60 (the crank and slotted lever quick return): the tool’s motion over its strokes, as a course in the kinematics of machines works it (docs/quick-return.md); not drawn in the chapter"),
+        caption: "The crank and slotted lever (r = 0.5, l = 1.5, the arm L = l + r) at 250 rpm: the tool’s velocity and acceleration against θ over the cutting stroke (full) and the quicker return (dashed), the strokes ending at θ = 90° and 270°; time ratio 1.552.",
+        mechanism: CHAIN,
+        at: Crank(60.0),
+        page: (760.0, 700.0),
+        kind: Diagram(Chain, |ctx| builders::quick_return::build(ctx, Inversion::Rod)),
+        takes: &[MECH, Speed, Angle, Style, Font],
+    },
+    /// Whitworth's quick return's tool: its velocity and acceleration
+    /// against θ over the cutting and return strokes, the time ratio.
+    QuickReturnWhitworth => FigureSpec {
+        name: "quick-return-whitworth",
+        source: Book("§34, the second inversion of the chain of Fig. 60 (Whitworth’s quick return): the tool’s motion over its strokes, as a course in the kinematics of machines works it (docs/quick-return.md); not drawn in the chapter"),
+        caption: "Whitworth’s quick return (r = 0.5, l = 1.5, the arm L = l + r) at 250 rpm of the rod: the tool’s velocity and acceleration against θ over the cutting stroke (full) and the quicker return (dashed), the strokes ending at θ = 90° and 270°; time ratio 1.552.",
+        mechanism: CHAIN,
+        at: Crank(60.0),
+        page: (760.0, 700.0),
+        kind: Diagram(Chain, |ctx| builders::quick_return::build(ctx, Inversion::Crank)),
+        takes: &[MECH, Speed, Angle, Style, Font],
+    },
     /// The curved slot's difference from the straight slot against its
     /// radius ρ from 1 to 1e15, log–log.
     SlotConvergence => FigureSpec {
@@ -605,7 +655,7 @@ mod tests {
             .collect();
         assert_eq!(order, FigureName::ALL);
         assert_eq!(FigureName::SCENES.len(), 10);
-        assert_eq!(FigureName::DIAGRAMS.len(), 21);
+        assert_eq!(FigureName::DIAGRAMS.len(), 25);
     }
 
     #[test]

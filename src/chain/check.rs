@@ -249,6 +249,62 @@ fn lever_rate(centres: &ChainCentres, d: f64) -> Option<f64> {
     }
 }
 
+/// The polygons of inversion 2 or 3 with the Coriolis component
+/// ([`super::CoriolisPolygon`], what the figures `coriolis-inversion-2`
+/// and `-3` draw and read) over `samples` angles (and 0°, 90°, 180°,
+/// 270°), the driver at 1 rad/s, against the chain's exact link motion
+/// ([`super::InversionPose::motion`], the engine's derivatives of φ and
+/// x_A): d's angular velocity and acceleration, the block's sliding
+/// velocity and acceleration along d (scaled by r), and the size of the
+/// Coriolis component against 2 |ω_d v| of the exact values. κ divides by
+/// s = x_A / (l + r + |e|), the share of the chain's size the meets of
+/// the polygons divide by (CA · u = x_A); empty for inversions 1 and 4.
+pub fn coriolis_sweep(chain: &super::InvertedChain, samples: usize) -> Vec<ChainCheckRow> {
+    let m = chain.mechanism();
+    let (r, size) = (m.crank(), m.crank() + m.rod() + m.offset().abs());
+    let mut worst = Worst::new(&[
+        "ω_d (velocity polygon)",
+        "α_d (acceleration polygon)",
+        "sliding velocity (/r)",
+        "sliding acceleration (Coriolis; /r)",
+        "Coriolis 2ω_d v (/r)",
+    ]);
+    for angle in angles(samples) {
+        let p = chain.pose(angle);
+        let (Some(exact), Some(c)) = (p.motion(1.0), super::CoriolisPolygon::construct(&p, 1.0))
+        else {
+            continue;
+        };
+        let deg = angle.degrees();
+        let sine = p.engine_pose().position() / size;
+        let (first, second) = (kappa(sine, 2.0), kappa(sine, 6.0));
+        let diff = |x: f64, y: f64, scale: f64| Some((x - y).abs() / scale);
+        let w = exact.velocity[3];
+        worst.add(0, deg, diff(c.omega_d(), w, 1.0), first);
+        worst.add(
+            1,
+            deg,
+            diff(c.alpha_d(), exact.acceleration[3], 1.0),
+            second,
+        );
+        worst.add(
+            2,
+            deg,
+            diff(c.sliding_velocity(), exact.sliding_velocity, r),
+            first,
+        );
+        worst.add(
+            3,
+            deg,
+            diff(c.sliding_acceleration(), exact.sliding_acceleration, r),
+            second,
+        );
+        let coriolis = 2.0 * (w * exact.sliding_velocity).abs();
+        worst.add(4, deg, diff(c.coriolis().norm(), coriolis, r), second);
+    }
+    worst.0
+}
+
 fn angles(samples: usize) -> Vec<Angle> {
     let n = samples.max(1);
     let mut out: Vec<Angle> = (0..n)

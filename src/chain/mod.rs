@@ -13,8 +13,10 @@
 //! κ = 0 is today's [`crate::mechanism::SliderCrank`]), [`ChainCentres`] (the six
 //! virtual centres of any of them, Kennedy's theorem, and the velocity and
 //! acceleration constructions carried over to the curved slot),
-//! [`InvertedChain`] (the four inversions) and [`CoriolisPolygon`] (the
-//! polygons of inversions 2 and 3 with the Coriolis component).
+//! [`InvertedChain`] (the four inversions), [`CoriolisPolygon`] (the
+//! polygons of inversions 2 and 3 with the Coriolis component) and
+//! [`QuickReturn`] (their quick returns: the time ratio and the tool's
+//! motion over the strokes).
 
 mod centres;
 mod check;
@@ -22,12 +24,16 @@ mod coriolis;
 mod cylindric;
 mod inversion;
 mod quadric;
+mod quick_return;
 
 pub use centres::{CENTRE_NAMES, ChainCentres, SlotConstruction};
-pub use check::{ChainCheckRow, arc_position_by_iteration, quadric_sweep, slot_sweep};
+pub use check::{
+    ChainCheckRow, arc_position_by_iteration, coriolis_sweep, quadric_sweep, slot_sweep,
+};
 pub use coriolis::CoriolisPolygon;
 pub use cylindric::{ConvergenceRow, CylindricChain, CylindricPose, slot_convergence};
 pub use inversion::{Inversion, InversionPose, InvertedChain, LinkMotion};
 pub use quadric::{
     Assembly, CLOSURE_TOLERANCE, CrankReach, GrashofClass, LinkRates, QuadricChain, QuadricPose,
 };
+pub use quick_return::{QuickReturn, Stroke, ToolMotion};

@@ -6,10 +6,12 @@ use super::args::{AngleSpec, SpeedArgs};
 use super::output::Stdout;
 use clap::{Args, ValueEnum};
 use serde_json::{Value, json};
-use slider_crank::chain::{CylindricChain, InvertedChain, QuadricChain, quadric_sweep, slot_sweep};
+use slider_crank::chain::{
+    CylindricChain, InvertedChain, QuadricChain, coriolis_sweep, quadric_sweep, slot_sweep,
+};
 use slider_crank::table::{
-    chain_check_report, inversion_json, quadric_check_title, quadric_json, slot_check_title,
-    slot_json,
+    chain_check_report, coriolis_check_title, inversion_json, quadric_check_title, quadric_json,
+    slot_check_title, slot_json,
 };
 use slider_crank::{Assembly, Error, Input, Inversion, Result, SliderCrank, Units};
 
@@ -180,12 +182,19 @@ pub fn check(
     samples: usize,
     tolerance: f64,
 ) -> Result<Option<(String, bool)>> {
-    if chain.inversion.is_some() {
-        return Err(Error::invalid(Input::Options,
-            "check takes no --inversion: every inversion has the engine's relative motion, which check without it covers".into(),
-        ));
-    }
-    let (title, rows) = if let Some(rho) = chain.slot_radius {
+    let (title, rows) = if let Some(n) = chain.inversion {
+        let inversion = Inversion::from_number(n)?;
+        if !matches!(inversion, Inversion::Crank | Inversion::Rod) {
+            return Err(Error::invalid(
+                Input::Options,
+                format!(
+                    "check --inversion {n}: only inversions 2 and 3 have polygons of their own (the Coriolis component); every inversion has the engine's relative motion, which check without --inversion covers"
+                ),
+            ));
+        }
+        let chain = InvertedChain::new(m, inversion);
+        (coriolis_check_title(&m, n), coriolis_sweep(&chain, samples))
+    } else if let Some(rho) = chain.slot_radius {
         let slot = CylindricChain::new(m, rho)?;
         (slot_check_title(&m, rho), slot_sweep(&slot, samples))
     } else if let Some((q, _)) = chain.quadric()? {

@@ -28,6 +28,8 @@ pub enum TableName {
     PartialBalance,
     /// Cylinders on one crank, a V engine or a radial engine (--axes, default the 90° V-twin -45,45): the primary and secondary forces ÷ m r ω² in size and direction against θ, the exact force, and the direct and reverse cranks as notes (n = l/r from --crank and --rod, §35's 6)
     Radial,
+    /// The quick return of inversion 3 (the crank and slotted lever) or 2 (--inversion 2, Whitworth's): the tool's position, velocity and acceleration against θ over the cutting and return strokes, the time ratio and the stroke in the title (--lever L, the arm of the slotted link driving the tool, default l + r; default the chain r = 0.5, l = 1.5 ft at 250 rpm of the driver, θ every 15°)
+    QuickReturn,
 }
 
 /// Output formats.
@@ -139,6 +141,14 @@ pub struct TableArgs {
     /// a radial engine of k cylinders: 360/k apart) [default: -45,45]
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub axes: Option<String>,
+    /// The inversion of quick-return: 3, the crank and slotted lever, or
+    /// 2, Whitworth's [default: 3]
+    #[arg(long, value_name = "N")]
+    pub inversion: Option<u32>,
+    /// The arm L of the slotted link that drives the tool for
+    /// quick-return, in the length unit [default: l + r]
+    #[arg(long, allow_hyphen_values = true, value_name = "L")]
+    pub lever: Option<f64>,
     #[command(flatten)]
     pub units: UnitArgs,
     #[command(flatten)]
@@ -207,7 +217,35 @@ pub fn run(args: &TableArgs, out: &mut Stdout) -> Result<()> {
         TableName::Harmonics => harmonics(args, decimals, format, out),
         TableName::PartialBalance => partial_balance(args, spec, decimals, format, out),
         TableName::Radial => radial(args, spec, decimals, format, out),
+        TableName::QuickReturn => quick_return(args, spec, decimals, format, out),
     }
+}
+
+/// The angles of `table quick-return` when none are given: every 15°,
+/// the strokes' ends at 90° and 270° among them.
+const QUICK_RETURN_ANGLES: &str = "0:360:15";
+
+/// `table quick-return`: the tool's motion over the two strokes.
+fn quick_return(
+    args: &TableArgs,
+    spec: Option<AngleSpec>,
+    decimals: usize,
+    format: Format,
+    out: &mut Stdout,
+) -> Result<()> {
+    let m = mechanism(args, 0.5, 1.5)?;
+    let omega = omega(args)?;
+    let inversion = slider_crank::Inversion::from_number(args.inversion.unwrap_or(3))?;
+    let lever = args
+        .lever
+        .unwrap_or_else(|| slider_crank::chain::QuickReturn::default_lever(&m));
+    let q = slider_crank::chain::QuickReturn::new(m, inversion, lever)?;
+    let spec = spec.map_or_else(|| AngleSpec::parse(QUICK_RETURN_ANGLES), Ok)?;
+    let units = args.units.units(Units::FOOT_POUND);
+    let head = table::quick_return_head(&q, omega, &units);
+    guard_angles(args, "table quick-return", &spec, &head)?;
+    let row = |d| table::quick_return_row(&q, omega, d, decimals);
+    write_angle_rows(format, &head, || spec.iter(), row, out)
 }
 
 /// `table harmonics`: the acceleration's series and each cut's error.
@@ -469,6 +507,8 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
         ("--speed", args.speed.is_some()),
         ("--load", args.load.is_some()),
         ("--axes", args.axes.is_some()),
+        ("--inversion", args.inversion.is_some()),
+        ("--lever", args.lever.is_some()),
     ];
     let used: &[&str] = match args.name {
         TableName::Obliquity | TableName::AccelerationFactor => &["--n"],
@@ -532,6 +572,17 @@ fn unused(args: &TableArgs) -> Option<&'static str> {
             "--load",
         ],
         TableName::Radial => &["--crank", "--rod", "--decimals", "--axes"],
+        TableName::QuickReturn => &[
+            "--crank",
+            "--rod",
+            "--offset",
+            "--rpm",
+            "--omega",
+            "--decimals",
+            "--unit",
+            "--inversion",
+            "--lever",
+        ],
     };
     given
         .into_iter()

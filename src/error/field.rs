@@ -27,7 +27,8 @@ pub enum Field {
     /// The coupler b of a quadric chain, or the place of a coupler point
     /// along the rod.
     Coupler,
-    /// The lever c of a quadric chain.
+    /// The lever c of a quadric chain, or the arm of a quick return's
+    /// slotted link that drives the tool.
     Lever,
     /// The fixed link d of a quadric chain.
     Frame,

@@ -178,6 +178,7 @@ pub fn inversion_json(chain: &InvertedChain, degrees: f64, omega: f64) -> Result
         },
         "time_ratio": opt(chain.time_ratio()),
         "coriolis": coriolis_json(&p, omega),
+        "quick_return": quick_return_json(chain, p.engine_pose().angle(), omega),
         "virtual_centres": p.centres().to_json(),
     }))
 }
@@ -207,6 +208,33 @@ fn coriolis_json(p: &crate::chain::InversionPose, omega: f64) -> Value {
         })
 }
 
+/// The quick return of inversions 2 and 3 (`QuickReturn`) with the arm of
+/// its default length, l + r: the time ratio, the driver's turn over each
+/// stroke, the tool's stroke, and the tool's motion at this angle; `null`
+/// for inversions 1 and 4.
+fn quick_return_json(chain: &InvertedChain, angle: Angle, omega: f64) -> Value {
+    let m = *chain.mechanism();
+    let lever = crate::chain::QuickReturn::default_lever(&m);
+    crate::chain::QuickReturn::new(m, chain.inversion(), lever).map_or(Value::Null, |q| {
+        let (cutting, back) = q.stroke_angles();
+        let t = q.at(angle, omega);
+        json!({
+            "lever": num(lever),
+            "time_ratio": num(q.time_ratio()),
+            "cutting_angle_deg": num(cutting.to_degrees()),
+            "return_angle_deg": num(back.to_degrees()),
+            "stroke_length": num(q.stroke_length()),
+            "stroke": t.stroke.name(),
+            "driver_angle_deg": num(t.driver_angle.to_degrees()),
+            "tool": {
+                "position": num(t.position),
+                "velocity": num(t.velocity),
+                "acceleration": num(t.acceleration),
+            },
+        })
+    })
+}
+
 /// The first line of `check --slot-radius`'s report for the engine `m`
 /// with its block in a slot of radius `rho` as given (the chain keeps the
 /// curvature 1/ρ, which need not give back ρ's last digit).
@@ -214,6 +242,16 @@ pub fn slot_check_title(m: &SliderCrank, rho: f64) -> String {
     format!(
         "check: curved slot ρ = {}, r = {}, l = {}, e = {}",
         plain(rho),
+        plain(m.crank()),
+        plain(m.rod()),
+        plain(m.offset())
+    )
+}
+
+/// The first line of `check --inversion 2|3`'s report for the engine `m`.
+pub fn coriolis_check_title(m: &SliderCrank, inversion: u32) -> String {
+    format!(
+        "check: the polygons with the Coriolis component of inversion {inversion}, r = {}, l = {}, e = {}, against the chain's exact link motion (the driver at 1 rad/s)",
         plain(m.crank()),
         plain(m.rod()),
         plain(m.offset())

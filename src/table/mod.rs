@@ -9,6 +9,7 @@ mod dynamics_json;
 mod guard;
 mod harmonics;
 mod partial;
+mod quick_return;
 mod radial;
 mod reading_json;
 
@@ -24,8 +25,8 @@ use crate::number::{angle_cell, plain};
 use crate::units::Units;
 pub use balance::{balance_head, balance_row};
 pub use chain_json::{
-    CHAIN_TOLERANCE, centre_json, chain_check_report, grashof_name, inversion_json,
-    quadric_check_title, quadric_json, slot_check_title, slot_json,
+    CHAIN_TOLERANCE, centre_json, chain_check_report, coriolis_check_title, grashof_name,
+    inversion_json, quadric_check_title, quadric_json, slot_check_title, slot_json,
 };
 pub use check_report::{DEFAULT_ULPS, MAX_TOLERANCE, check_allowance, engine_check_report};
 pub use dynamics::{dynamics_head, dynamics_row, example_table};
@@ -33,6 +34,7 @@ pub use dynamics_json::{dynamics_json, mass_unit};
 pub use guard::{DEFAULT_MAX_CELLS, MaxCells};
 pub use harmonics::harmonics_table;
 pub use partial::{Locomotive, partial_balance_head, partial_balance_row};
+pub use quick_return::{quick_return_head, quick_return_row};
 pub use radial::{radial_head, radial_row};
 pub use reading_json::ReadingJson;
 

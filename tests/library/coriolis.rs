@@ -121,3 +121,74 @@ fn the_polygons_close() {
     let frame = InvertedChain::new(m, Inversion::Frame).pose(Angle::deg(30.0));
     assert!(CoriolisPolygon::construct(&frame, 1.0).is_none());
 }
+
+/// The point `name` of the figure's polygon `polygon` in its metadata.
+fn read(meta: &serde_json::Value, polygon: &str, name: &str) -> Vector {
+    let p = &meta[polygon][name];
+    Vector::new(p[0].as_f64().unwrap(), p[1].as_f64().unwrap())
+}
+
+#[test]
+fn the_coriolis_figures_read_the_exact_link_motion_off_their_polygons() {
+    use slider_crank::FigureName;
+    use slider_crank::catalogue::FigureOptions;
+    for (r, l, e) in [(0.5, 1.5, 0.0), (1.0, 1.05, 0.0), (1.0, 4.0, 1.2)] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for (name, inversion) in [
+            (FigureName::CoriolisInversion2, Inversion::Crank),
+            (FigureName::CoriolisInversion3, Inversion::Rod),
+        ] {
+            for deg in [0.0, 37.5, 90.0, 180.0, 250.0] {
+                let mut options = FigureOptions::default();
+                options.mechanism = Some(m);
+                options.angle = Some(Angle::deg(deg));
+                let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+                let meta = crate::common::metadata(&svg);
+                let w = meta["omega"].as_f64().unwrap();
+                let pose = InvertedChain::new(m, inversion).pose(Angle::deg(deg));
+                let exact = pose.motion(w).unwrap();
+                let engine = pose.engine_pose();
+                let ca = (engine.a() - engine.c()).norm();
+                let (v, a) = ("velocity_polygon", "acceleration_polygon");
+                // The driven point's image, and the sliding vectors: o a_d
+                // (d on the block at rest) in inversion 3, a_d a (the
+                // block on d) in inversion 2.
+                let (driven, driven2) = match inversion {
+                    Inversion::Rod => ("c", "c2"),
+                    _ => ("a", "a2"),
+                };
+                let ad = read(&meta, v, "ad");
+                let (omega_d, sliding) = match inversion {
+                    Inversion::Rod => ((ad - read(&meta, v, driven)).norm() / ca, ad.norm()),
+                    _ => (ad.norm() / ca, (read(&meta, v, driven) - ad).norm()),
+                };
+                let coriolis = match inversion {
+                    Inversion::Rod => read(&meta, a, "k") - read(&meta, a, "o2"),
+                    _ => read(&meta, a, driven2) - read(&meta, a, "k"),
+                };
+                let slide = (read(&meta, a, "ad2") - read(&meta, a, "k")).norm();
+                // The metadata's 12 significant digits, at the polygons'
+                // sizes (ω_d up to 40 ω at l = 1.05 r).
+                let vs = w * (l + r) * 50.0;
+                let what = format!("{name:?} {l} {e} {deg}");
+                let w_d = exact.velocity[LINK_D];
+                assert!(
+                    (omega_d - w_d.abs()).abs() <= 1e-10 * vs,
+                    "{what}: ω_d {omega_d} {w_d}"
+                );
+                let v_exact = exact.sliding_velocity.abs();
+                assert!((sliding - v_exact).abs() <= 1e-10 * vs, "{what}: v");
+                let c = 2.0 * (w_d * exact.sliding_velocity).abs();
+                assert!(
+                    (coriolis.norm() - c).abs() <= 1e-10 * vs * vs,
+                    "{what}: 2ωv"
+                );
+                let s = exact.sliding_acceleration.abs();
+                assert!(
+                    (slide - s).abs() <= 1e-10 * vs * vs,
+                    "{what}: sliding acceleration"
+                );
+            }
+        }
+    }
+}

@@ -24,6 +24,7 @@ mod ignored;
 mod layering;
 mod panic_free;
 mod polygons;
+mod quick_return;
 mod reading_json;
 mod references;
 mod ritterhaus_bennett;

@@ -466,15 +466,18 @@ fn check_help_gives_the_tolerances_in_exponent_form() {
     assert!(text.contains("1e-12"), "{text}");
     assert!(!text.contains("0.000000000001"), "{text}");
     assert!(text.contains("8.9e-16"), "{text}");
-    // Flags check does not take are not offered.
-    assert!(
-        !text.contains("--inversion") && !text.contains("--assembly"),
-        "{text}"
-    );
-    // but still explained when given.
-    let out = run(&["check", "--inversion", "2"]);
+    // Flags check does not take are not offered; --inversion 2 and 3
+    // check the Coriolis polygons.
+    assert!(!text.contains("--assembly"), "{text}");
+    assert!(text.contains("--inversion"), "{text}");
+    let out = run(&["check", "--inversion", "3", "--samples", "100"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("Coriolis"));
+    // but the inversions without a sliding pair on a turning link are
+    // refused with the reason.
+    let out = run(&["check", "--inversion", "1"]);
     assert_eq!(out.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&out.stderr).contains("check takes no --inversion"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("only inversions 2 and 3"));
 }
 
 #[test]

@@ -462,6 +462,43 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
                 exact(move |x| (x / DEG, turn.speed(x)), &[TURN]),
             );
         }
+        FigureName::QuickReturnSlottedLever | FigureName::QuickReturnWhitworth => {
+            // The chain r = 0.5, l = 1.5, the arm L = l + r, the driver at
+            // ω: the tool at s = L r sin θ / l (inversion 3, the driver
+            // at χ = θ + φ) or −L sin θ (inversion 2, χ = −θ − φ), so
+            // ds/dt = ω s′/χ′ and d²s/dt² = ω² (s″χ′ − s′χ″)/χ′³ (′ = d/dθ).
+            let (r, l) = (0.5, 1.5);
+            let arm = l + r;
+            let slotted = name == FigureName::QuickReturnSlottedLever;
+            let tool = move |t: f64| {
+                let phi = engine(r, l, t).1;
+                let (s1, s2, c1, c2) = if slotted {
+                    let k = arm * r / l;
+                    (k * t.cos(), -k * t.sin(), 1.0 + phi.d(1), phi.d(2))
+                } else {
+                    (-arm * t.cos(), arm * t.sin(), -1.0 - phi.d(1), -phi.d(2))
+                };
+                (w * s1 / c1, w * w * (s2 * c1 - s1 * c2) / c1.powi(3))
+            };
+            let cutting = [(0.0, 0.5 * PI), (1.5 * PI, 2.0 * PI)];
+            let back = [(0.5 * PI, 1.5 * PI)];
+            add(
+                "curve-tool-velocity-cutting",
+                exact(move |t| (t / DEG, tool(t).0), &cutting),
+            );
+            add(
+                "curve-tool-velocity-return",
+                exact(move |t| (t / DEG, tool(t).0), &back),
+            );
+            add(
+                "curve-tool-acceleration-cutting",
+                exact(move |t| (t / DEG, tool(t).1), &cutting),
+            );
+            add(
+                "curve-tool-acceleration-return",
+                exact(move |t| (t / DEG, tool(t).1), &back),
+            );
+        }
         FigureName::NgFig7Calibration => {
             let (origin, (a, b)) = ng_fits();
             add(

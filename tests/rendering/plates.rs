@@ -786,7 +786,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
-const FIGURES: [&str; 14] = [
+const FIGURES: [&str; 16] = [
     "fig-62-displacement",
     "fig-63-velocity",
     "fig-65-klein",
@@ -801,6 +801,8 @@ const FIGURES: [&str; 14] = [
     "fig-64-velocity-diagrams",
     "coupler-curves",
     "inertia-force",
+    "coriolis-inversion-2",
+    "coriolis-inversion-3",
 ];
 
 /// Figures held to rule 5.

@@ -299,6 +299,49 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     Ok(sheet.finish())
 }
 
+/// The chain at `pose` drawn on `canvas`: the driven pin's path, the
+/// frame d (guides or the slotted bar), the fixed link hatched, the links
+/// and the block lettered a, b, c, d; for a figure that draws more on it
+/// (the Coriolis polygons' mechanism). The block is drawn no smaller on
+/// the page than Fig. 60's.
+pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -> Canvas {
+    let q = parts(&m, pose);
+    let (lh, hh) = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
+    let mut d = Drawing {
+        s: canvas,
+        m,
+        fixed: pose.inversion().fixed(),
+        corners: block(&q, lh, hh),
+        block: (lh, hh),
+        q,
+    };
+    d.path(pose.inversion());
+    d.frame(pose);
+    d.hatch();
+    d.links();
+    d.s
+}
+
+/// The world frame of what [`draw_links`] draws at `pose`: the pins, the
+/// frame's bar to its far end, the block and the driven pin's path.
+pub(super) fn links_frame(m: &SliderCrank, pose: &InversionPose) -> Frame {
+    let (lh, hh) = block_size(m);
+    let q = parts(m, pose);
+    let mut points = vec![q.c, q.b, q.a, q.t, q.f];
+    points.extend(block(&q, lh, hh));
+    let (centre, radius) = match pose.inversion() {
+        Inversion::Frame => (q.c, m.crank()),
+        Inversion::Crank => (q.b, m.rod()),
+        Inversion::Rod => (q.b, m.crank()),
+        Inversion::Slider => (q.a, m.rod()),
+    };
+    points.push(centre + Vector::new(radius, radius));
+    points.push(centre - Vector::new(radius, radius));
+    let lo = points.iter().fold(q.c, |lo, p| lo.inf(p));
+    let hi = points.iter().fold(q.c, |hi, p| hi.sup(p));
+    Frame::new(lo, hi)
+}
+
 /// One inversion's drawing in progress: the canvas, and what its steps
 /// share.
 struct Drawing {
