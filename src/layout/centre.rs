@@ -64,37 +64,47 @@ pub(super) struct OpenLine {
 
 impl OpenLine {
     /// The line as a path, one sub-path per piece left between the
-    /// `boxes` it crosses.
-    pub fn written(&self, boxes: &[Bounds]) -> Mark {
+    /// `boxes` it crosses; `None` where the boxes leave nothing of it (an
+    /// angle's mark a degree wide under its letter).
+    pub fn written(&self, boxes: &[Bounds]) -> Option<Mark> {
         let ink = Ink {
             id: &self.id,
             role: self.role,
             pen: self.pen,
             part: Part::Plain,
         };
-        let mut d = PathData::new();
-        match self.course {
+        let d = match self.course {
             Course::Centre { from, to } => {
+                let mut d = PathData::new();
                 for (s, t) in pieces(from, to, boxes) {
                     d.push(PathCommand::Move(s));
                     d.push(PathCommand::Line(t));
                 }
-                ink.tag(path(d, self.pen)).dashed(DASH)
+                d
             }
-            Course::Frame { corners } => ink.tag(path(frame_d(&corners, boxes), self.pen)),
+            Course::Frame { corners } => frame_d(&corners, boxes),
             Course::Arc {
                 centre,
                 radius,
                 start,
                 sweep,
             } => {
+                let mut d = PathData::new();
                 for (t0, t1) in arc_pieces(centre, radius, (start, sweep), boxes) {
                     let piece = arc_beziers(centre, radius, start + t0 * sweep, (t1 - t0) * sweep);
                     d.extend(bezier_d(&piece));
                 }
-                ink.tag(path(d, self.pen))
+                d
             }
+        };
+        if d.is_empty() {
+            return None;
         }
+        let mark = ink.tag(path(d, self.pen));
+        Some(match self.course {
+            Course::Centre { .. } => mark.dashed(DASH),
+            _ => mark,
+        })
     }
 }
 

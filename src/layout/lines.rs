@@ -174,7 +174,7 @@ impl PanelLayout<'_> {
             pen: ink.pen,
             course,
         };
-        let node = line.written(&[]);
+        let node = line.written(&[]).unwrap_or_else(Mark::group);
         self.open_lines.push(line);
         node
     }

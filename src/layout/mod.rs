@@ -301,7 +301,8 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Plac
     let (texts, boxes) = w.place_labels(room);
     for line in &w.open_lines {
         if let Some(mark) = marks.get_mut(line.node) {
-            *mark = line.written(&boxes);
+            // A line the letters leave nothing of is left empty.
+            *mark = line.written(&boxes).unwrap_or_else(Mark::group);
         }
     }
     // A hatching every stroke of which lies under letters is left empty.

@@ -27,8 +27,16 @@ const HATCH_CLEAR: f64 = 2.5;
 const HATCH_RUN: usize = 2;
 /// A moving link within this angle (radians, 5°) of a hatched edge…
 const ALONG_EDGE: f64 = 0.087;
-/// …and this near its line at both ends (page units) lies along it.
+/// …and within this of its line at both ends (page units) behind it,
+/// away from the strokes…
 const LYING: f64 = 3.0;
+/// …and no farther than this in front (the quarter pixel a stroke's foot
+/// may touch a link) lies along it.
+const LYING_IN_FRONT: f64 = 0.25;
+/// How far out from its foot (page units, across the edge) a stroke is
+/// first kept clear of a link lying along the edge: the link's half
+/// width and a little.
+const FOOT: f64 = 2.0;
 /// Length of one chord of a curved guide, page units.
 const CHORD: f64 = 12.0;
 /// Clear distance between a guide and the crank circle or a bearing.
@@ -334,14 +342,16 @@ impl Canvas {
                 walked += len;
                 continue;
             };
-            // A moving link lying along the edge (the rod on the fixed
-            // crank at a dead centre) touches only the strokes' feet, as
-            // the edge's own line does: they are kept clear of it from
-            // their feet out, not at them.
+            // A moving link lying along the edge on it or just behind it
+            // (the rod on the fixed crank at a dead centre) touches only
+            // the strokes' feet, as the edge's own line does: they are
+            // kept clear of it from their feet out, not at them.
             let lying = |(c, d): &Seg| {
-                let off = |x: Point| (x - a).dot(&n).abs();
+                let off = |x: Point| (x - a).dot(&n);
+                let (near, far) = (off(*c).min(off(*d)), off(*c).max(off(*d)));
                 unit(*d - *c).is_some_and(|u| u.dot(&t).abs() > ALONG_EDGE.cos())
-                    && off(*c).max(off(*d)) < LYING
+                    && near > -LYING
+                    && far < LYING_IN_FRONT
             };
             let mut run: Option<(f64, f64)> = None;
             let mut s = 0.5 * HATCH_SPACING;
@@ -354,7 +364,7 @@ impl Canvas {
                     && along <= total - ends
                     && avoid.iter().all(|g| {
                         let foot = if lying(g) {
-                            p + (q - p) * (LYING / HATCH_DEPTH)
+                            p + (q - p) * (FOOT / HATCH_DEPTH)
                         } else {
                             p
                         };
