@@ -4,8 +4,8 @@
 
 use super::quote::{shell_word, url_path};
 use super::{Gallery, SceneEntry};
-use crate::Error;
 use crate::catalogue::{FigureName, Group};
+use crate::error::Error;
 use crate::html::document;
 use crate::render::FileFormat;
 use crate::table::{Table, TableName};

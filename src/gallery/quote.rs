@@ -5,7 +5,7 @@
 /// `word` as one word of a POSIX shell command: as it is when it holds
 /// only letters, digits and `_ - . / , : = @ +`, else in single quotes
 /// (each `'` inside written `'\''`). The empty word is `''`. A word with
-/// a character [`crate::Error::printable`] escapes (a control character,
+/// a character `Error::printable` escapes (a control character,
 /// a bidirectional override) is written in dollar-single quotes, that
 /// character's UTF-8 bytes as `\xHH`, so that the page shows no escape
 /// sequence and the command still names the file (POSIX.1-2024, bash,
@@ -14,7 +14,7 @@ pub(super) fn shell_word(word: &str) -> String {
     let plain = |c: char| c.is_ascii_alphanumeric() || "_-./,:=@+".contains(c);
     if !word.is_empty() && word.chars().all(plain) {
         word.to_string()
-    } else if crate::Error::printable(word) != word {
+    } else if crate::error::Error::printable(word) != word {
         let mut out = String::from("$'");
         for c in word.chars() {
             let mut buf = [0; 4];
@@ -22,7 +22,7 @@ pub(super) fn shell_word(word: &str) -> String {
             if c == '\\' || c == '\'' {
                 out.push('\\');
                 out.push(c);
-            } else if crate::Error::printable(one) != *one {
+            } else if crate::error::Error::printable(one) != *one {
                 for b in one.bytes() {
                     out.push_str(&format!("\\x{b:02X}"));
                 }
