@@ -179,6 +179,26 @@ impl Error {
         shown
     }
 
+    /// `text` (a path, a file's or a scene's name) as the program prints it
+    /// on a terminal or writes it into a page: every control character
+    /// (an escape sequence's ESC, a carriage return), bidirectional
+    /// control, non-character and invisible character written as a Rust
+    /// escape (`\u{1b}`, `\r`, `\u{202e}`), the rest as it is; a text
+    /// of printable characters (the empty text among them) is unchanged.
+    /// The one function through which every path and name a user gave
+    /// reaches standard error, standard output or the gallery's page.
+    pub fn printable(text: &str) -> String {
+        let mut out = String::with_capacity(text.len());
+        for c in text.chars() {
+            if is_unprintable(c) {
+                out.extend(c.escape_default());
+            } else {
+                out.push(c);
+            }
+        }
+        out
+    }
+
     /// The same error with every control character of its texts (a
     /// newline or carriage return quoted from a user's file), and every
     /// bidirectional control and non-character, written as an escape
@@ -280,19 +300,15 @@ impl PartialEq for Error {
 /// `text` with control characters (`\n`, `\r`, `\u{1b}`), bidirectional
 /// controls and non-characters escaped, cut to [`Error::MAX_MESSAGE_CHARS`].
 fn escape_controls(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for (i, c) in text.chars().enumerate() {
-        if i == Error::MAX_MESSAGE_CHARS {
-            out.push('…');
-            break;
-        }
-        if c.is_control() || is_bidi_control(c) || is_noncharacter(c) {
-            out.extend(c.escape_default());
-        } else {
-            out.push(c);
-        }
+    match text.char_indices().nth(Error::MAX_MESSAGE_CHARS) {
+        Some((cut, _)) => Error::printable(text.get(..cut).unwrap_or(text)) + "…",
+        None => Error::printable(text),
     }
-    out
+}
+
+/// Whether `c` is printed as an escape by [`Error::printable`].
+fn is_unprintable(c: char) -> bool {
+    c.is_control() || is_bidi_control(c) || is_noncharacter(c) || is_invisible(c)
 }
 
 /// The characters that reorder the text after them on a terminal: the
@@ -320,9 +336,7 @@ fn is_invisible(c: char) -> bool {
 /// each caller words the error its own way around the reason returned,
 /// such as "it holds the bidirectional control U+202E".
 pub fn text_fault(text: &str) -> Option<String> {
-    let c = text
-        .chars()
-        .find(|&c| c.is_control() || is_noncharacter(c) || is_bidi_control(c) || is_invisible(c))?;
+    let c = text.chars().find(|&c| is_unprintable(c))?;
     let code = u32::from(c);
     Some(if c.is_control() {
         "it holds a control character (such a text is one line of printable characters)".into()
@@ -430,6 +444,22 @@ mod tests {
         assert!(text.ends_with("ff…"), "{text}");
         let e = Error::invalid(Input::Title, "a\u{202E}b".into()).one_line();
         assert_eq!(e.to_string(), "a\\u{202e}b");
+    }
+
+    #[test]
+    fn paths_and_names_are_printable_whole() {
+        // ESC of a colour sequence, an OSC title sequence's BEL, a carriage
+        // return, a bidi isolate, a zero-width space, a C1 CSI: escaped;
+        // printable text (accents, spaces, a backslash) kept, and not cut.
+        assert_eq!(Error::printable("g\u{1b}[31m/x.svg"), r"g\u{1b}[31m/x.svg");
+        assert_eq!(Error::printable("a\u{7}b\rc"), r"a\u{7}b\rc");
+        assert_eq!(
+            Error::printable("\u{2066}\u{200B}\u{9b}"),
+            r"\u{2066}\u{200b}\u{9b}"
+        );
+        assert_eq!(Error::printable(r"é d\x"), r"é d\x");
+        assert_eq!(Error::printable(&"p".repeat(5000)), "p".repeat(5000));
+        assert_eq!(Error::printable(""), "");
     }
 
     #[test]

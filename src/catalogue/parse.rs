@@ -377,10 +377,16 @@ fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
             w.span(),
             "give either `rpm` or `omega`, not both",
         )),
-        (Some(n), None) => Ok(Some((
-            crate::analytic::kinematics::rpm_to_omega(*n.get_ref()),
-            n.span(),
-        ))),
+        // Checked as `--rpm` is, at its line: a speed whose ω underflows
+        // is named as the rpm given, not as an ω of 0.
+        (Some(n), None) => {
+            let omega = at(
+                text,
+                n.span(),
+                crate::analytic::kinematics::omega_from_rpm(*n.get_ref()),
+            )?;
+            Ok(Some((omega, n.span())))
+        }
         (None, Some(w)) => Ok(Some((*w.get_ref(), w.span()))),
         (None, None) => Ok(None),
     }

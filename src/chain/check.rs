@@ -7,6 +7,7 @@ use super::quadric::{Assembly, QuadricChain};
 use crate::angle::Angle;
 use crate::construct::Link;
 use crate::geom::{Circle, CircleIntersection, Intersection, Point, cross};
+use std::f64::consts::{FRAC_PI_2, PI};
 
 /// The worst scaled difference of one quantity over a sweep, measured
 /// against the quantity's condition number κ at each pose (as the engine's
@@ -87,27 +88,70 @@ impl Worst {
 
 /// The block's arc position found by Newton's method on the slot's arc
 /// parameter, A(σ) = (sin κσ / κ, e + (1 − cos κσ)/κ) written with sinc so
-/// that κ = 0 is the line, starting from the straight slot's x_A: a
-/// closure independent of the quadratic the core solves.
+/// that κ = 0 is the line: a closure independent of the quadratic the core
+/// solves. The root is bracketed (g(σ) = |A − B|² − l² rises from its
+/// least, at the foot of B on the slot, to the point of the slot half a
+/// turn on or (π/2)(l + |B − foot|) along, whichever is nearer), and a
+/// Newton step that leaves the bracket is a bisection: near the limit of
+/// assembly, where the rod meets the slot almost square, plain Newton
+/// jumped turns of the slot away. The result is reduced to the core's
+/// range, |σ| ≤ π/|κ|.
 pub fn arc_position_by_iteration(chain: &CylindricChain, angle: Angle) -> f64 {
     let m = chain.mechanism();
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
     let k = -chain.curvature();
     let b = Point::new(r * angle.cos(), r * angle.sin());
     let sinc = |t: f64| if t == 0.0 { 1.0 } else { t.sin() / t };
-    let mut s = m.pose(angle).position();
-    for _ in 0..60 {
+    let at = |s: f64| {
         let t = k * s;
         let a = Point::new(s * sinc(t), e + 0.5 * k * s * s * sinc(0.5 * t).powi(2));
-        let tangent = crate::geom::Vector::new(t.cos(), t.sin());
-        let g = (a - b).norm_squared() - l * l;
-        let step = g / (2.0 * (a - b).dot(&tangent));
-        s -= step;
-        if step.abs() <= 1e-17 * (s.abs() + r) {
+        (a, crate::geom::Vector::new(t.cos(), t.sin()))
+    };
+    // The foot of B: on the line, its x; on the circle about (0, e + 1/k),
+    // the arc parameter of the direction from the centre to B.
+    let foot = if k == 0.0 {
+        b.x
+    } else {
+        let (vx, vy) = (b.x, b.y - (e + 1.0 / k));
+        (k * vx).atan2(-k * vy) / k
+    };
+    let half_turn = if k == 0.0 {
+        f64::INFINITY
+    } else {
+        PI / k.abs()
+    };
+    let g = |s: f64| (at(s).0 - b).norm_squared() - l * l;
+    let (mut lo, mut hi) = (
+        foot,
+        foot + half_turn.min(FRAC_PI_2 * (l + (at(foot).0 - b).norm())),
+    );
+    let mut s = m.pose(angle).position().clamp(lo, hi);
+    for _ in 0..200 {
+        let (a, tangent) = at(s);
+        let value = g(s);
+        if value < 0.0 {
+            lo = s;
+        } else {
+            hi = s;
+        }
+        let newton = s - value / (2.0 * (a - b).dot(&tangent));
+        let next = if newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        let done = (next - s).abs() <= 1e-17 * (s.abs() + r) || next == lo || next == hi;
+        s = next;
+        if done {
             break;
         }
     }
-    s
+    if k == 0.0 {
+        s
+    } else {
+        let turn = 2.0 * half_turn;
+        s - (s / turn).round() * turn
+    }
 }
 
 /// The curved slot over `samples` crank angles (and 0°, 90°, 180°, 270°):
@@ -327,6 +371,30 @@ mod tests {
                 assert!(row.passes(1e-12), "{rho}: {row:?}");
                 assert!(row.poses > 0);
             }
+        }
+        // At the limit of assembly (l = r + 1 ulp) the rod meets the slot
+        // almost square near θ = 280.73°, where plain Newton jumped turns
+        // of the slot away (a difference of 4.6e3 × (l + r)).
+        let m = SliderCrank::new(1.0, 1.0000000000000002, 0.0).unwrap();
+        let chain = CylindricChain::new(m, 2.0).unwrap();
+        for row in slot_sweep(&chain, 3600) {
+            assert!(row.passes(1e-12), "limit: {row:?}");
+        }
+        for deg in [280.7316, 90.0, 270.0, 179.5] {
+            let angle = Angle::from_degrees(deg).unwrap();
+            let s = arc_position_by_iteration(&chain, angle);
+            // The circle of radius 2 about (0, −2), tangent to y = 0 at the
+            // origin: A at arc σ is (2 sin(σ/2), 2 cos(σ/2) − 2).
+            let (a, b) = (
+                Point::new(2.0 * (s / 2.0).sin(), 2.0 * (s / 2.0).cos() - 2.0),
+                Point::new(angle.cos(), angle.sin()),
+            );
+            assert!(s.abs() <= 2.0 * std::f64::consts::PI, "{deg}: σ = {s}");
+            assert!(
+                ((a - b).norm() - m.rod()).abs() < 1e-12,
+                "{deg}: |A − B| = {}",
+                (a - b).norm()
+            );
         }
         for links in [
             [1.0, 3.0, 2.5, 3.2],

@@ -362,8 +362,11 @@ impl QuadricPose {
         // (b + c)² − |f|² and |f|² − (b − c)², each from exact differences
         // of the lengths: the two factors of the height that vanish at the
         // toggles.
-        let outer = (b + c - a - d) * (a + b + c + d) + 2.0 * a * d * plus;
-        let inner = (a - d - b + c) * (a - d + b - c) + 2.0 * a * d * minus;
+        let (grashof, across) = (
+            exact_difference(b + c, a + d, b, c, a, d) * (a + b + c + d),
+            exact_difference(a + c, b + d, a, c, b, d) * exact_difference(a + b, c + d, a, b, c, d),
+        );
+        let (outer, inner) = (grashof + 2.0 * a * d * plus, across + 2.0 * a * d * minus);
         let tol = chain.tolerance * (b + c) * (b + c);
         if outer < -tol || inner < -tol {
             return Err(Error::OutOfRange {
@@ -374,9 +377,21 @@ impl QuadricPose {
         }
         // Within rounding of a toggle (or beyond it within the tolerance),
         // the toggle itself. The factors are squares of lengths: the
-        // tolerance on them would be its square root on the height.
-        let rounding = 8.0 * f64::EPSILON * (a + b + c + d) * (a + b + c + d);
-        let [outer, inner] = [outer, inner].map(|x| if x <= rounding { 0.0 } else { x });
+        // tolerance on them would be its square root on the height. Each is
+        // the sum of two terms, each computed to a few ulps (the length
+        // differences exactly): its rounding is a few ulps of the terms,
+        // not of the lengths' square, so that a change point approached
+        // (s + l = p + q, where the first term is 0) is not taken for it
+        // 10⁻⁵° away.
+        let rounding = |x: f64, term: f64, angular: f64| {
+            if x <= 8.0 * f64::EPSILON * (term.abs() + angular) {
+                0.0
+            } else {
+                x
+            }
+        };
+        let outer = rounding(outer, grashof, 2.0 * a * d * plus);
+        let inner = rounding(inner, across, 2.0 * a * d * minus);
         // Distances along the diagonal from B and from O_cd to the foot of
         // the perpendicular from A, and its height.
         let (along, back, height) = if fl == 0.0 {
@@ -486,7 +501,9 @@ impl QuadricPose {
     /// b_x(c_x − b_x) λ′² − 2 a_x b_x λ′ + a_x(c_x − a_x) = 0 (the second
     /// order of the loop equation), and zero angular accelerations (its
     /// third order). The branch is picked by the side of the diagonal just
-    /// counter-clockwise of the node.
+    /// counter-clockwise of the node (at the node itself, or within the
+    /// tolerance counter-clockwise of it), or the mode's branch clockwise of
+    /// it for a pose within the tolerance clockwise of it.
     fn change_point_rates(&self) -> Option<LinkRates> {
         let tol = self.chain.tolerance;
         let flat = self.b.y.abs() <= tol * self.chain.a
@@ -511,7 +528,15 @@ impl QuadricPose {
             }
             r
         };
-        let want = self.mode.sign();
+        // Within the tolerance but just clockwise of the node (sin θ cos θ
+        // < 0), the pose lies on the branch whose mode is the other one
+        // counter-clockwise of it: the side of the diagonal changes there.
+        let before = self.b.y * self.b.x < 0.0;
+        let want = if before {
+            -self.mode.sign()
+        } else {
+            self.mode.sign()
+        };
         let wb = roots
             .into_iter()
             .find(|&w| (bx * (fx * w + ax)) * want > 0.0 && w.is_finite())?;
@@ -522,6 +547,18 @@ impl QuadricPose {
             lever_acceleration: 0.0,
         })
     }
+}
+
+/// (p + q) − (r + s), given `sum` = p + q and `other` = r + s as rounded,
+/// to within an ulp of the result: the roundings of both sums (Knuth's
+/// two-sum) added back after the difference, which is exact where it
+/// cancels (Sterbenz). Zero exactly when p + q = r + s exactly.
+fn exact_difference(sum: f64, other: f64, p: f64, q: f64, r: f64, s: f64) -> f64 {
+    let lost = |total: f64, x: f64, y: f64| {
+        let y_part = total - x;
+        (x - (total - y_part)) + (y - y_part)
+    };
+    (sum - other) + (lost(sum, p, q) - lost(other, r, s))
 }
 
 /// The power of two nearest below `longest` (a positive, finite length):
@@ -554,6 +591,38 @@ mod tests {
         assert!(QuadricChain::new(0.0, 2.0, 3.0, 4.0).is_err());
         assert!(QuadricChain::new(f64::NAN, 2.0, 3.0, 4.0).is_err());
         assert!(QuadricChain::with_tolerance(1.0, 2.0, 3.0, 4.0, -1.0).is_err());
+    }
+
+    #[test]
+    fn a_change_point_approached_has_the_rates_of_its_branch() {
+        // a, b, c, d = 1, 2, 3, 4: a + d = b + c, all four links in line at
+        // θ = 180°. There the loop's second order, with a_x = −1, b_x = 2,
+        // c_x = −3, is −10 λ′² + 4 λ′ + 2 = 0: λ′ = (1 ± √6)/5, the lever's
+        // (a_x + b_x λ′)/c_x. Clockwise of the node the open chain is on the
+        // root (1 − √6)/5 (its rates at 179.9° are within 10⁻³ of it).
+        let m = QuadricChain::new(1.0, 2.0, 3.0, 4.0).unwrap();
+        let six = 6f64.sqrt();
+        let (low, high) = ((1.0 - six) / 5.0, (1.0 + six) / 5.0);
+        let lever = |w: f64| (-1.0 + 2.0 * w) / -3.0;
+        let rates = |deg: f64, mode| {
+            let p = m.pose(Angle::from_degrees(deg).unwrap(), mode).unwrap();
+            p.rates().map(|r| (r.coupler_velocity, r.lever_velocity))
+        };
+        for deg in [179.9, 179.99999, 180.0 - 1e-9, 180.0 - 1e-12] {
+            let (wb, wc) = rates(deg, Assembly::Open).expect("finite rates");
+            assert!(
+                (wb - low).abs() < 1e-3 && (wc - lever(low)).abs() < 1e-3,
+                "{deg}: {wb} {wc}"
+            );
+            let (wb, _) = rates(deg, Assembly::Crossed).expect("finite rates");
+            assert!((wb - high).abs() < 1e-3, "{deg} crossed: {wb}");
+        }
+        // At the node and counter-clockwise of it, the branch rule of
+        // `Assembly`: the open chain continues the crossed one.
+        for deg in [180.0, 180.0 + 1e-12, 180.001] {
+            let (wb, _) = rates(deg, Assembly::Open).unwrap();
+            assert!((wb - high).abs() < 1e-3, "{deg}: {wb}");
+        }
     }
 
     #[test]

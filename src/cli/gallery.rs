@@ -287,11 +287,8 @@ fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
             return Ok(());
         };
         differ += 1;
-        out.text(&format!(
-            "{} {verdict}
-",
-            path.display()
-        ))
+        let shown = Error::printable(&path.display().to_string());
+        out.text(&format!("{shown} {verdict}\n"))
     });
     progress.finish();
     result?;
@@ -299,7 +296,7 @@ fn check(gallery: &Gallery, dir: &Path, out: &mut Stdout) -> Result<bool> {
         differ += 1;
         out.text(&format!(
             "{} is left by an interrupted gallery (the next gallery removes it)\n",
-            stale.display()
+            Error::printable(&stale.display().to_string())
         ))?;
     }
     if differ == 0 {

@@ -141,6 +141,26 @@ fn write_all(files: &[(PathBuf, String)], progress: Option<&mut Progress>) -> Re
     })
 }
 
+/// Refuses a symbolic link at the name of a file derived from `--out`
+/// (an exercise's key, a class's sheets, keys and answers): `--out` is
+/// written through a link as the user named it, but a link planted at a
+/// name the user did not give would have its target, anywhere, replaced.
+/// Checked for every file before any is written.
+fn no_link_at_derived(files: &[PathBuf]) -> Result<()> {
+    for path in files {
+        if std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
+            return Err(Error::invalid(
+                Input::OutputFile,
+                format!(
+                    "cannot write {}: it is a symbolic link, and a file named after --out is never written through one (remove it or give another --out)",
+                    path.display()
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 /// The handout the flags ask for (of one engine; the exercise and the
 /// class are drawn from it).
 pub fn template(args: &HandoutArgs) -> Result<Handout> {
@@ -191,6 +211,8 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
             files.push((path(&format!("{no}-key")), h.key()?));
         }
         files.push((path("-answers"), class.answers()?));
+        let derived: Vec<PathBuf> = files.iter().map(|(p, _)| p.clone()).collect();
+        no_link_at_derived(&derived)?;
         let mut progress = Progress::new("handout", files.len());
         let result = write_all(&files, Some(&mut progress));
         progress.finish();
@@ -202,6 +224,7 @@ pub fn run(args: &HandoutArgs, _out: &mut Stdout) -> Result<()> {
         return Ok(());
     }
     if args.exercise {
+        no_link_at_derived(&[path("-key")])?;
         let files = [
             (args.out.clone(), template.exercise()?),
             (path("-key"), template.key()?),

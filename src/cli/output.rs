@@ -92,11 +92,13 @@ fn raw() -> std::io::Result<Box<dyn Write>> {
     Ok(Box::new(std::io::stdout()))
 }
 
-/// Writes `line` and a line break to standard error. A standard error
+/// Writes `line` and a line break to standard error, the paths and names
+/// in it as [`Error::printable`] shows them (an escape sequence in a
+/// directory's name is not played on the terminal). A standard error
 /// that cannot be written (full, closed) is ignored: the exit code still
 /// tells the outcome, and a message is no reason to panic.
 pub fn say(line: &str) {
-    let _ = writeln!(std::io::stderr(), "{line}");
+    let _ = writeln!(std::io::stderr(), "{}", Error::printable(line));
 }
 
 /// The progress line on standard error: rewritten in place on a terminal,
@@ -117,8 +119,10 @@ impl Progress {
         }
     }
 
-    /// Shows step `done` of the total, on `name`.
+    /// Shows step `done` of the total, on `name` (as [`Error::printable`]
+    /// shows it).
     pub fn show(&mut self, done: usize, name: &str) {
+        let name = Error::printable(name);
         let mut err = std::io::stderr().lock();
         // Progress is a courtesy: a standard error that cannot be written
         // does not stop the work.

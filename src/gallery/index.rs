@@ -5,6 +5,7 @@
 use super::quote::{shell_word, url_path};
 use super::{Gallery, SceneEntry};
 use crate::catalogue::{FigureName, Group};
+use crate::error::Error;
 use crate::html::document;
 use crate::render::FileFormat;
 use crate::table::{Table, TableName};
@@ -172,15 +173,18 @@ fn scene(entry: &SceneEntry, formats: &[FileFormat]) -> Markup {
         .into_iter()
         .find(|p| formats.contains(p))
         .map(file);
+    // An escape sequence or a bidirectional override in a directory's name
+    // is not written into the page (its name, the scene's, is checked).
+    let file_shown = Error::printable(&entry.file);
     html! {
         figure id={ "scene-" (entry.name) } {
             @if let (Some(src), Some(&first)) = (&picture, formats.first()) {
                 a href=(file(first)) {
-                    img src=(src) alt={ "The scene of " (entry.file) } loading="lazy";
+                    img src=(src) alt={ "The scene of " (file_shown) } loading="lazy";
                 }
             }
             figcaption {
-                span.source { "Scene file " code { (entry.file) } } ". "
+                span.source { "Scene file " code { (file_shown) } } ". "
                 br;
                 span.files {
                     @for &format in formats {

@@ -116,6 +116,17 @@ fn scene_entry(gallery: &Gallery, base: &Path, path: &str) -> Result<SceneEntry>
                 format!("{path}: a scene file needs a name to name its files"),
             )
         })?;
+    // The name names the gallery's files and their anchor in its page: an
+    // escape sequence in it would be a file name no terminal lists as it is.
+    if let Some(why) = crate::error::text_fault(name) {
+        return Err(Error::invalid(
+            Input::Scene,
+            format!(
+                "{}: a scene file's name names its files in the gallery, and {why}",
+                Error::printable(path)
+            ),
+        ));
+    }
     Ok(SceneEntry {
         name: name.to_string(),
         file: path.to_string(),

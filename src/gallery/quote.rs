@@ -4,11 +4,34 @@
 
 /// `word` as one word of a POSIX shell command: as it is when it holds
 /// only letters, digits and `_ - . / , : = @ +`, else in single quotes
-/// (each `'` inside written `'\''`). The empty word is `''`.
+/// (each `'` inside written `'\''`). The empty word is `''`. A word with
+/// a character `Error::printable` escapes (a control character,
+/// a bidirectional override) is written in dollar-single quotes, that
+/// character's UTF-8 bytes as `\xHH`, so that the page shows no escape
+/// sequence and the command still names the file (POSIX.1-2024, bash,
+/// zsh and ksh read `$'…'`).
 pub(super) fn shell_word(word: &str) -> String {
     let plain = |c: char| c.is_ascii_alphanumeric() || "_-./,:=@+".contains(c);
     if !word.is_empty() && word.chars().all(plain) {
         word.to_string()
+    } else if crate::error::Error::printable(word) != word {
+        let mut out = String::from("$'");
+        for c in word.chars() {
+            let mut buf = [0; 4];
+            let one = c.encode_utf8(&mut buf);
+            if c == '\\' || c == '\'' {
+                out.push('\\');
+                out.push(c);
+            } else if crate::error::Error::printable(one) != *one {
+                for b in one.bytes() {
+                    out.push_str(&format!("\\x{b:02X}"));
+                }
+            } else {
+                out.push(c);
+            }
+        }
+        out.push('\'');
+        out
     } else {
         format!("'{}'", word.replace('\'', r"'\''"))
     }
@@ -46,6 +69,10 @@ mod tests {
         assert_eq!(shell_word(""), "''");
         assert_eq!(shell_word("a`b`"), "'a`b`'");
         assert_eq!(shell_word("é.toml"), "'é.toml'");
+        // An escape sequence and a right-to-left override: as bytes in
+        // `$'…'`, which bash reads back as the same name.
+        assert_eq!(shell_word("k\u{1b}[1m's\\.toml"), r"$'k\x1B[1m\'s\\.toml'");
+        assert_eq!(shell_word("a\u{202e}b"), r"$'a\xE2\x80\xAEb'");
     }
 
     #[test]

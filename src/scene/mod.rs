@@ -79,7 +79,8 @@ pub struct Page {
 impl Page {
     /// A page of `width` × `height` with `margin`; each finite, the size
     /// between 50 and 20000, the margin ≥ 0 and leaving at least 50 units
-    /// of drawing each way.
+    /// of drawing each way (a margin above 9975, which leaves none on any
+    /// page, is refused as the margin).
     pub fn new(width: f64, height: f64, margin: f64) -> Result<Self> {
         let width = positive(Field::PageWidth, width)?;
         let height = positive(Field::PageHeight, height)?;
@@ -93,11 +94,13 @@ impl Page {
                 });
             }
         }
-        if margin < 0.0 {
+        // A margin that no page could hold (none is wider than 20000) is
+        // the margin's fault, whatever the page.
+        if margin < 0.0 || 2.0 * margin + 50.0 > 20000.0 {
             return Err(Error::OutOfRange {
                 name: Field::PageMargin,
                 value: margin,
-                reason: "the margin must be ≥ 0 and leave at least 50 units each way".into(),
+                reason: "the margin must be ≥ 0 and leave at least 50 units each way on a page of at most 20000: at most 9975".into(),
             });
         }
         // A page too small for the margin names the side given, not the

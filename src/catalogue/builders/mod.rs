@@ -117,22 +117,44 @@ impl Ctx<'_> {
 /// the reciprocating parts: the one asked for (`--mass`), else the
 /// example engine's ([`crate::dynamics::EXAMPLE_MASS`]). Errors for a
 /// mass that is not positive and finite: with none there is no force to
-/// draw, and its scale m ω² would be zero.
+/// draw, and its scale m ω² would be zero; and for one whose force scale
+/// m r ω² lies outside [`MIN_DRAWN_FORCE`] to [`MAX_DRAWN_FORCE`].
 pub(crate) fn positive_mass(ctx: &Ctx) -> Result<f64> {
     let m = ctx.options.mass.unwrap_or(crate::dynamics::EXAMPLE_MASS);
-    if m > 0.0 && m.is_finite() {
-        Ok(m)
-    } else {
-        Err(Error::OutOfRange {
-            name: Field::Mass,
-            value: m,
-            reason: format!(
-                "{} draws the inertia force of the reciprocating parts: give a positive, finite --mass",
-                ctx.name.name()
-            ),
-        })
+    let refuse = |reason: String| Error::OutOfRange {
+        name: Field::Mass,
+        value: m,
+        reason,
+    };
+    if !(m > 0.0 && m.is_finite()) {
+        return Err(refuse(format!(
+            "{} draws the inertia force of the reciprocating parts: give a positive, finite --mass",
+            ctx.name.name()
+        )));
     }
+    // The forces are drawn at a scale of their own (arrows, a polar
+    // diagram, an axis): m r ω² within 1e-280 to 1e140, so that the
+    // panel's size, its square and its steps are numbers; named here, as
+    // the mass the user gave, not as the panel it would break.
+    let force = m * ctx.mechanism.crank() * ctx.omega * ctx.omega;
+    if !(MIN_DRAWN_FORCE..=MAX_DRAWN_FORCE).contains(&force) {
+        let f = ctx.units.force();
+        return Err(refuse(format!(
+            "{} draws the inertia force m r ω² = {} {f}, which must lie between {} and {} {f} to be drawn: give the mass, lengths or speed in other units",
+            ctx.name.name(),
+            crate::number::plain(force),
+            crate::number::plain(MIN_DRAWN_FORCE),
+            crate::number::plain(MAX_DRAWN_FORCE),
+        )));
+    }
+    Ok(m)
 }
+
+/// The smallest inertia force scale m r ω² a dynamics figure draws.
+pub(crate) const MIN_DRAWN_FORCE: f64 = 1e-280;
+
+/// The largest inertia force scale m r ω² a dynamics figure draws.
+pub(crate) const MAX_DRAWN_FORCE: f64 = 1e140;
 
 /// The italic letter `name` labelling the point `anchor`, id `label-{id}`
 /// (placed clear of lines by the renderer).
