@@ -59,5 +59,5 @@ pub use partial::{DEFAULT_FRACTIONS, HammerBlow, PartialBalance, Unbalanced};
 pub use parts::{EngineParts, IndicatorText};
 pub use pose::EnginePose;
 pub use radial::{DEFAULT_AXES, MAX_RADIAL_CYLINDERS, RadialEngine};
-pub use rod::{RodInertia, RodMass};
+pub use rod::{DynamicalSystem, RodInertia, RodMass};
 pub use turning::{Lobe, MAX_CYLINDERS, RELATIVE_TOLERANCE, TurningMoment};
