@@ -80,14 +80,7 @@ impl InlineEngine {
     /// different lengths, a value not finite, n not above 1.
     pub fn new(cranks_deg: &[f64], planes: &[f64], ratio: f64) -> Result<Self> {
         check(cranks_deg, planes)?;
-        let ratio = positive(Field::Ratio, ratio)?;
-        if ratio <= 1.0 {
-            return Err(Error::OutOfRange {
-                name: Field::Ratio,
-                value: ratio,
-                reason: "the rod is longer than the crank, n = l/r > 1".into(),
-            });
-        }
+        let ratio = rod_ratio(ratio)?;
         let angles: Vec<Angle> = cranks_deg
             .iter()
             .map(|&d| Angle::from_degrees(d))
@@ -239,6 +232,21 @@ fn check(cranks: &[f64], planes: &[f64]) -> Result<()> {
         finite(Field::Plane, a)?;
     }
     Ok(())
+}
+
+/// The ratio n = l/r of an engine's rod to its crank, checked: positive,
+/// finite and above 1 (a rod no longer than its crank does not assemble
+/// over a turn). Shared by the in-line and the radial engines.
+pub(super) fn rod_ratio(ratio: f64) -> Result<f64> {
+    let ratio = positive(Field::Ratio, ratio)?;
+    if ratio <= 1.0 {
+        return Err(Error::OutOfRange {
+            name: Field::Ratio,
+            value: ratio,
+            reason: "the rod is longer than the crank, n = l/r > 1".into(),
+        });
+    }
+    Ok(ratio)
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 
 use super::inline::{Resultant, exact_along, polygon};
 use crate::angle::Angle;
-use crate::error::{Error, Field, Result, finite, positive};
+use crate::error::{Error, Field, Result, finite};
 
 /// The cylinder axes of `table radial` and Python's `radial()` when none
 /// are given: the 90° V-twin, its banks at ±45° from the V's middle line.
@@ -64,14 +64,7 @@ impl RadialEngine {
                 reason: format!("one crank drives 1 to {MAX_RADIAL_CYLINDERS} cylinders"),
             });
         }
-        let ratio = positive(Field::Ratio, ratio)?;
-        if ratio <= 1.0 {
-            return Err(Error::OutOfRange {
-                name: Field::Ratio,
-                value: ratio,
-                reason: "the rod is longer than the crank, n = l/r > 1".into(),
-            });
-        }
+        let ratio = super::inline::rod_ratio(ratio)?;
         let mut angles = Vec::with_capacity(axes_deg.len());
         for &b in axes_deg {
             finite(Field::Axis, b)?;
