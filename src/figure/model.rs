@@ -294,6 +294,12 @@ pub enum Shape {
         /// taken before any other side; `None` (or a zero vector) leaves
         /// the side to the placement alone.
         toward: Option<Vector>,
+        /// The line the text names, if any (a link's length, "l = 1.05 r",
+        /// set by the link's middle): a place nearer another link than
+        /// this line would name the other, and is taken only where no
+        /// place is clear. `None` for a text that names a point, or a
+        /// line of zero length (then the anchor alone counts).
+        line: Option<[Point; 2]>,
     },
     /// A text set at a fixed place, not moved clear of lines: `offset`
     /// page units (y down) from the page point of `at`, aligned by `align`

@@ -5,10 +5,12 @@
 mod circle;
 mod clip;
 mod line;
+mod segment;
 
 pub use circle::{Circle, CircleIntersection};
 pub use clip::Frame;
 pub use line::{Intersection, Line, PARALLEL_TOLERANCE};
+pub(crate) use segment::{crossing, point_segment_distance, segment_distance, unit};
 
 /// A point of the world (or page) plane.
 pub type Point = nalgebra::Point2<f64>;

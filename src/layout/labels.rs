@@ -2,7 +2,7 @@
 //! positions around the anchor, scored against nearby segments and boxes.
 
 use crate::figure::PageRect;
-use crate::geom::{Point, Vector};
+use crate::geom::{Point, Vector, segment_distance};
 use rstar::primitives::{GeomWithData, Rectangle};
 use rstar::{RTree, RTreeObject};
 use std::cell::RefCell;
@@ -709,6 +709,9 @@ pub(crate) fn place(
     place_toward(anchor, half, gap, reach, Steer::default(), obstacles, page)
 }
 
+/// A straight piece of a line on the page, from one end to the other.
+pub(crate) type Segment = (Point, Point);
+
 /// What steers a letter's place besides what it keeps clear of.
 #[derive(Debug, Default, Clone, Copy)]
 pub(crate) struct Steer<'a> {
@@ -718,6 +721,9 @@ pub(crate) struct Steer<'a> {
     /// to its own ([`AMBIGUOUS`]); empty for a label that names no point
     /// or where no other point is near.
     pub others: &'a [Point],
+    /// The page line a text names and the other links, which a place
+    /// should not stand nearer to than to the line ([`AMBIGUOUS`]).
+    pub line: Option<(Segment, &'a [Segment])>,
 }
 
 /// How much nearer (page units) another point may be to a letter's box
@@ -740,6 +746,41 @@ fn nearer_another(b: &Bounds, anchor: Point, others: &[Point]) -> bool {
     others.iter().any(|&q| b.distance_to(q) + NEARER < own)
 }
 
+/// Whether `b` stands less than [`LINE_NEARER`] nearer the line `own`
+/// than one of the `rivals` (links), or not beside `own` at all: its centre
+/// beyond the line's middle [`BESIDE`] share, by an end that other lines
+/// meet at (a text there is read with the joint).
+fn nearer_another_line(b: &Bounds, own: Segment, rivals: &[Segment]) -> bool {
+    let (p, q) = own;
+    let centre = nalgebra::center(&b.min, &b.max);
+    let t = (centre - p).dot(&(q - p)) / (q - p).norm_squared();
+    if !(BESIDE.0..=BESIDE.1).contains(&t) {
+        return true;
+    }
+    let distance = |(p, q): (Point, Point)| {
+        if b.holds(p) || b.holds(q) {
+            return 0.0;
+        }
+        let (c0, c1) = (b.min, b.max);
+        let (c2, c3) = (Point::new(b.max.x, b.min.y), Point::new(b.min.x, b.max.y));
+        [(c0, c2), (c2, c1), (c1, c3), (c3, c0)]
+            .into_iter()
+            .map(|(u, v)| segment_distance(u, v, p, q))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let mine = distance(own);
+    rivals.iter().any(|&r| distance(r) < mine + LINE_NEARER)
+}
+
+/// How much nearer (page units) a text naming a line stands to it than
+/// to any other link: a unit, the box's room, so that the glyphs alone
+/// are never nearer another link.
+const LINE_NEARER: f64 = 1.0;
+
+/// The share of its line (from its first end) beside which a text
+/// naming the line stands.
+const BESIDE: (f64, f64) = (0.1, 0.9);
+
 /// [`place`], trying first the unit page direction `toward` (an angle's
 /// bisector: its letter beyond its arc, inside the angle) at each ring
 /// out to the last, before the sixteen directions: a letter that fits
@@ -753,7 +794,11 @@ pub(crate) fn place_toward(
     obstacles: &Obstacles,
     page: &PageRect,
 ) -> (Point, f64) {
-    let Steer { toward, others } = steer;
+    let Steer {
+        toward,
+        others,
+        line,
+    } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
     // `reach`): the labels placed so far are sorted out once.
@@ -787,7 +832,9 @@ pub(crate) fn place_toward(
         if !b.inside(page) {
             cost += 1e6;
         }
-        if nearer_another(&b, anchor, &others) {
+        if nearer_another(&b, anchor, &others)
+            || line.is_some_and(|(own, rivals)| nearer_another_line(&b, own, rivals))
+        {
             cost += AMBIGUOUS;
         }
         if cost + penalty < best.0 {
@@ -943,12 +990,46 @@ mod tests {
         let steer = Steer {
             toward: None,
             others: &[other],
+            line: None,
         };
         let (at, cost) = place_toward(own, half, 4.0, 22.0, steer, &o, &page);
         let b = Bounds::around(at, half);
         assert!(!nearer_another(&b, own, &[other]), "{at:?}");
         assert_eq!(cost, 0.0);
         assert!(b.distance_to(own) <= 22.0);
+    }
+
+    #[test]
+    fn a_text_naming_a_line_stands_beside_it_and_nearer_it_than_another_link() {
+        // The rod from (0, 0) to (100, 0), the crank from there to
+        // (100, 30).
+        let rod = (Point::new(0.0, 0.0), Point::new(100.0, 0.0));
+        let crank = [(Point::new(100.0, 0.0), Point::new(100.0, 30.0))];
+        let half = Vector::new(10.0, 5.0);
+        let at = |x: f64, y: f64| Bounds::around(Point::new(x, y), half);
+        assert!(!nearer_another_line(&at(50.0, 10.0), rod, &crank));
+        assert!(
+            nearer_another_line(&at(85.0, 15.0), rod, &crank),
+            "nearer the crank"
+        );
+        assert!(
+            nearer_another_line(&at(104.0, -10.0), rod, &crank),
+            "beyond the rod's end, by the joint"
+        );
+        // Steered by it, a place by the joint goes beside the rod.
+        let o = Obstacles::default();
+        let page = PageRect::new(0.0, 0.0, 300.0, 200.0);
+        let steer = Steer {
+            line: Some((rod, &crank)),
+            ..Steer::default()
+        };
+        let (centre, cost) = place_toward(Point::new(96.0, 0.0), half, 3.0, 20.0, steer, &o, &page);
+        assert!(cost < 1.0, "{centre:?} {cost}");
+        assert!(!nearer_another_line(
+            &Bounds::around(centre, half),
+            rod,
+            &crank
+        ));
     }
 
     #[test]

@@ -74,6 +74,10 @@ impl PanelLayout<'_> {
             self.crossing
                 .extend(pts.iter().zip(pts.iter().skip(1)).map(|(p, q)| (*p, *q)));
         }
+        if ink.role == Role::Link && !closed {
+            self.links
+                .extend(pts.iter().zip(pts.iter().skip(1)).map(|(p, q)| (*p, *q)));
+        }
         if closed && let (Some(&last), Some(&first)) = (pts.last(), pts.first()) {
             self.obstacles.segment(last, first);
         }

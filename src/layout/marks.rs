@@ -119,6 +119,7 @@ impl PanelLayout<'_> {
                 letter: false,
                 toward: Some(dir),
                 joint: false,
+                line: None,
             });
         }
         Some(self.open_line(ink, course))
@@ -366,6 +367,7 @@ mod tests {
                     text: RichText::italic("v"),
                     size: TextSize::Small,
                     toward: None,
+                    line: None,
                 },
             ),
         ];
@@ -404,6 +406,7 @@ mod tests {
                         text: text.clone(),
                         size: TextSize::Letter,
                         toward: None,
+                        line: None,
                     },
                 ),
             ];

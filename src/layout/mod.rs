@@ -62,6 +62,17 @@ const REACH: f64 = 1.3;
 /// from farther off than a letter, but not from anywhere).
 const WIDE_REACH: [f64; 2] = [2.5, 4.0];
 
+/// How far, in font sizes, a text naming a line looks last for a place
+/// beside that line and nearer it than any other link (a short rod's
+/// "l = 1.05 r" by a crank and the letters about it): it names the line
+/// it stands beside, so it may stand farther off than a value by a point.
+const LINE_REACH: f64 = 6.0;
+
+/// Where along its line (from its first end) a text naming a line is
+/// tried, in turn: its middle, then towards either end, until a place is
+/// clear.
+const ALONG_LINE: [f64; 5] = [0.5, 0.35, 0.65, 0.2, 0.8];
+
 /// The room, in font sizes, kept on either side of a name or a value
 /// placed within [`WIDE_REACH`] (about a word space).
 const WIDE_ROOM: f64 = 0.3;
@@ -82,6 +93,8 @@ struct Pending {
     /// Whether it is a joint's letter (a pin of the mechanism), which a
     /// detail whose frame holds the pin letters too.
     joint: bool,
+    /// The page line the text names, if any (a link's length).
+    line: Option<(Point, Point)>,
 }
 
 impl Pending {
@@ -138,6 +151,9 @@ struct PanelLayout<'a> {
     /// The page centres of the pins and constructed points drawn, which
     /// a point's letter keeps nearer its own than.
     points: Vec<Point>,
+    /// The links drawn (page segments), which a text naming a line
+    /// keeps nearer its own than.
+    links: Vec<(Point, Point)>,
 }
 
 impl PanelLayout<'_> {
@@ -229,7 +245,8 @@ impl PanelLayout<'_> {
                 text,
                 size,
                 toward,
-            } => self.label(&ink, *anchor, text, *size, *toward),
+                line,
+            } => self.label(&ink, *anchor, text, *size, (*toward, *line)),
             Shape::Text {
                 at,
                 offset,
@@ -274,6 +291,7 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Plac
         detail_marks: Vec::new(),
         crossing: Vec::new(),
         points: Vec::new(),
+        links: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -472,29 +490,52 @@ impl PanelLayout<'_> {
             .iter()
             .map(|p| {
                 let others = others(p, &self.points);
+                let rivals = rivals(p, &self.links);
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
-                let place = |reach: f64, half: Vector| {
+                let place_at = |anchor: Point, reach: f64, half: Vector| {
                     place_toward(
-                        p.anchor,
+                        anchor,
                         half,
                         p.gap,
                         reach,
                         Steer {
                             toward: p.toward,
                             others: &others,
+                            line: p.line.map(|own| (own, rivals.as_slice())),
                         },
                         &self.obstacles,
                         room,
                     )
+                };
+                // A text naming a line is set by its middle where a place
+                // there is clear, else by another point along it.
+                let place = |reach: f64, half: Vector| {
+                    let Some((a, b)) = p.line else {
+                        return place_at(p.anchor, reach, half);
+                    };
+                    let mut best = (p.anchor, f64::INFINITY);
+                    for t in ALONG_LINE {
+                        let at = place_at(a + (b - a) * t, reach, half);
+                        if at.1 < best.1 {
+                            best = at;
+                        }
+                        if best.1 < 1.0 {
+                            break;
+                        }
+                    }
+                    best
                 };
                 let lasting = |(centre, cost): (Point, f64)| {
                     cost >= STRUCK
                         && (self.obstacles).lasting(&Bounds::around(centre, half), p.anchor)
                 };
                 let mut best = place(reach, half);
-                if p.names_itself() && lasting(best) {
+                // A text naming a line whose nearest place names another
+                // link looks further out too.
+                let misnames = |(_, cost): (Point, f64)| p.line.is_some() && cost >= STRUCK;
+                if p.names_itself() && (lasting(best) || misnames(best)) {
                     // A name or a value crossed within a letter's reach by
                     // a line that stays (a detail's magnification beside a
                     // frame among crowding pins) looks further out, no
@@ -502,9 +543,10 @@ impl PanelLayout<'_> {
                     // side so that it does not read as one word with a
                     // letter beside it.
                     let room = Vector::new(WIDE_ROOM * p.size, 0.0);
-                    for far in WIDE_REACH {
+                    let farther = p.line.map(|_| LINE_REACH);
+                    for far in WIDE_REACH.into_iter().chain(farther) {
                         let wide = place(far * p.size - ROOM, half + room);
-                        if !lasting(wide) {
+                        if !lasting(wide) && !misnames(wide) {
                             best = wide;
                             break;
                         }
@@ -559,6 +601,20 @@ fn others(p: &Pending, points: &[Point]) -> Vec<Point> {
     }
     (points.iter())
         .filter(|q| (**q - p.anchor).norm() > p.size)
+        .copied()
+        .collect()
+}
+
+/// The links a text naming a line keeps nearer its own line than: every
+/// link drawn but the pieces of its own; none for a text that names no
+/// line.
+fn rivals(p: &Pending, links: &[(Point, Point)]) -> Vec<(Point, Point)> {
+    let Some((a, b)) = p.line else {
+        return Vec::new();
+    };
+    let on_own = |q: Point| crate::geom::point_segment_distance(q, a, b) < 0.5;
+    (links.iter())
+        .filter(|(p, q)| !(on_own(*p) && on_own(*q)))
         .copied()
         .collect()
 }

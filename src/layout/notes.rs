@@ -20,7 +20,7 @@ impl PanelLayout<'_> {
         anchor: Point,
         text: &RichText,
         size: TextSize,
-        toward: Option<Vector>,
+        (toward, line): (Option<Vector>, Option<[Point; 2]>),
     ) -> Option<Mark> {
         let a = self.p(anchor);
         if !finite(&a) {
@@ -39,6 +39,9 @@ impl PanelLayout<'_> {
             letter: size == TextSize::Letter,
             toward: toward.and_then(|u| unit(self.t.apply_vector(u))),
             joint: ink.part == Part::Joint && size == TextSize::Letter,
+            line: line
+                .map(|[p, q]| (self.p(p), self.p(q)))
+                .filter(|(p, q)| finite(p) && finite(q) && p != q),
         });
         None
     }

@@ -259,6 +259,33 @@ impl Canvas {
                     text,
                     size,
                     toward: None,
+                    line: None,
+                },
+            );
+        }
+    }
+
+    /// A text naming the line from `a` to `b` (a link's length), set by
+    /// its middle and kept nearer it than any other link (placed by the
+    /// renderer); nothing where the middle is off the page.
+    pub(crate) fn line_label(
+        &mut self,
+        id: impl Into<String>,
+        (a, b): (Point, Point),
+        text: RichText,
+        size: TextSize,
+    ) {
+        let anchor = nalgebra::center(&a, &b);
+        if self.contains(anchor) {
+            self.push(
+                id,
+                Role::Label,
+                Shape::Label {
+                    anchor,
+                    text,
+                    size,
+                    toward: None,
+                    line: Some([a, b]),
                 },
             );
         }

@@ -153,6 +153,24 @@ impl Rect {
         dx.hypot(dy)
     }
 
+    /// The distance from the box to the segment `s` (0 where it enters
+    /// the box).
+    pub fn distance_to_seg(&self, s: &Seg) -> f64 {
+        if self.clip(s).is_some() {
+            return 0.0;
+        }
+        let corners = [
+            (self.x0, self.y0),
+            (self.x1, self.y0),
+            (self.x1, self.y1),
+            (self.x0, self.y1),
+        ];
+        let ends = [self.distance_to(s.0), self.distance_to(s.1)];
+        (corners.iter().map(|&c| s.distance_to(c)))
+            .chain(ends)
+            .fold(f64::INFINITY, f64::min)
+    }
+
     /// The larger side.
     pub fn span(&self) -> f64 {
         (self.x1 - self.x0).max(self.y1 - self.y0)
@@ -189,6 +207,18 @@ impl Rect {
 impl Seg {
     fn length(&self) -> f64 {
         (self.1.0 - self.0.0).hypot(self.1.1 - self.0.1)
+    }
+
+    /// The distance from `p` to the segment.
+    pub fn distance_to(&self, p: Pt) -> f64 {
+        let (dx, dy) = (self.1.0 - self.0.0, self.1.1 - self.0.1);
+        let len2 = dx * dx + dy * dy;
+        let t = if len2 == 0.0 {
+            0.0
+        } else {
+            (((p.0 - self.0.0) * dx + (p.1 - self.0.1) * dy) / len2).clamp(0.0, 1.0)
+        };
+        (p.0 - self.0.0 - t * dx).hypot(p.1 - self.0.1 - t * dy)
     }
 
     /// The segment with `d` taken off each end (a point if shorter than 2d).

@@ -59,6 +59,9 @@ const RULE_SUBJECT: &str = "9 subject readable";
 const RULE_ALONG: &str = "10 no arrow along a link";
 const RULE_CIRCLE: &str = "11 guides off the crank circle";
 const RULE_FIXED: &str = "12 fixed link hatched";
+const RULE_VALUE: &str = "13 a link's value nearest its link";
+/// The values that name a link's length, each with the link it names.
+const LINK_VALUES: [(&str, &str); 2] = [("value-r", "link-crank"), ("value-l", "link-rod")];
 
 /// An arrow's shaft lies along a link when their directions differ by
 /// less than this (degrees)…
@@ -444,6 +447,45 @@ fn labels_nearer_another(plate: &Plate) -> Vec<Failure> {
     out
 }
 
+/// Rule 13: a link's value ("r", "l = 1.05 r") is not nearer another
+/// link than its own by more than [`NEARER`]: it names the nearer (the
+/// rod's length set by the crank of a short rod).
+fn values_nearer_another_link(plate: &Plate) -> Vec<Failure> {
+    let mut out = Vec::new();
+    for panel in &plate.panels {
+        let link = |id: &str| {
+            let id = format!("{}{id}", panel.prefix);
+            panel.strokes.iter().find(|s| s.id == id)
+        };
+        for (value, own) in LINK_VALUES {
+            let id = format!("{}{value}", panel.prefix);
+            let (Some(label), Some(own)) = (panel.labels.iter().find(|l| l.id == id), link(own))
+            else {
+                continue;
+            };
+            let distance = |s: &Stroke| {
+                (s.segs.iter())
+                    .map(|g| label.rect.distance_to_seg(g))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let mine = distance(own);
+            for other in LINK_VALUES.iter().filter_map(|(_, l)| link(l)) {
+                let d = distance(other);
+                if other.id != own.id && d + NEARER < mine {
+                    out.push(fail(
+                        RULE_VALUE,
+                        format!(
+                            "{id} {mine:.1} px from {}, {d:.1} from {}",
+                            own.id, other.id
+                        ),
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
 /// Whether a leader (`leader-X`) runs from the letter's glyph box (within
 /// 1.5 px) to its point (stopping within 7 px of it) and the letter
 /// stands within [`LEADER_EM`] of the point.
@@ -776,6 +818,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
     out.extend(lines_through_labels(plate));
     out.extend(labels_far(plate));
     out.extend(labels_nearer_another(plate));
+    out.extend(values_nearer_another_link(plate));
     out.extend(off_page(plate));
     if spread {
         out.extend(construction_small(plate));
@@ -1292,6 +1335,26 @@ fn label_boxes_are_the_glyphs_not_the_em_box() {
     assert!(
         (a.rect.x0 + a.rect.x1) / 2.0 - 60.0 < 1.0,
         "centred on x = 60"
+    );
+}
+
+#[test]
+fn a_link_s_value_by_another_link_is_caught() {
+    // The rod runs from (60, 150) to (300, 100), the crank from there to
+    // (340, 150).
+    let value = |x: f64, y: f64| {
+        format!(
+            r##"<text id="value-l" class="label" x="{x}" y="{y}" font-size="12">l = 1.05r</text>"##
+        )
+    };
+    assert_eq!(
+        rules(&clean_with(&value(150.0, 115.0)), false),
+        Vec::<&str>::new()
+    );
+    assert_eq!(
+        rules(&clean_with(&value(345.0, 118.0)), false),
+        [RULE_VALUE],
+        "set beside the crank, it names the crank"
     );
 }
 

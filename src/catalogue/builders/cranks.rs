@@ -140,6 +140,7 @@ fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> 
                 text: RichText::parse(text),
                 size: TextSize::Small,
                 toward: None,
+                line: None,
             },
         ),
     ]

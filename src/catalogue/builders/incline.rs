@@ -258,6 +258,7 @@ impl Incline {
                     text: RichText::parse(text),
                     size: TextSize::Small,
                     toward: Some(toward),
+                    line: None,
                 },
             )
         })

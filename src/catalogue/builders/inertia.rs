@@ -283,6 +283,7 @@ fn inertia_arrow(
                 text: RichText::parse("*F*_i"),
                 size: TextSize::Small,
                 toward: None,
+                line: None,
             },
         ),
     ]
@@ -354,6 +355,7 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
                 text: RichText::parse(text),
                 size: TextSize::Small,
                 toward: None,
+                line: None,
             },
         )
     };

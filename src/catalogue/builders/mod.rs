@@ -167,6 +167,7 @@ pub(super) fn letter(id: &str, anchor: Point, name: &str) -> Item {
             text: RichText::italic(name),
             size: crate::figure::TextSize::Letter,
             toward: None,
+            line: None,
         },
     )
 }

@@ -183,6 +183,7 @@ fn lobes(plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
                     text: RichText::parse(&format!("{sign}{}", sig(lobe.area.abs()))),
                     size: TextSize::Small,
                     toward: None,
+                    line: None,
                 },
             ));
         }

@@ -58,16 +58,15 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
             },
         );
     }
-    let mid = nalgebra::center(&c, &b);
-    if !canvas.is_bare(mid) {
-        canvas.label("value-r", mid, RichText::italic("r"), TextSize::Small);
+    if !canvas.is_bare(nalgebra::center(&c, &b)) {
+        canvas.line_label("value-r", (c, b), RichText::italic("r"), TextSize::Small);
     }
     let l = if ctx.scene.notation() == crate::scene::Notation::Ng {
         RichText::italic("l")
     } else {
         RichText::parse(&format!("*l* = {}*r*", crate::number::short(m.ratio())))
     };
-    canvas.label("value-l", nalgebra::center(&b, &a), l, TextSize::Small);
+    canvas.line_label("value-l", (b, a), l, TextSize::Small);
 }
 
 /// Length of the parallel to the stroke through B that φ is measured

@@ -211,6 +211,7 @@ pub(crate) fn torque_arrow(
                 text: RichText::italic("T"),
                 size: TextSize::Small,
                 toward: None,
+                line: None,
             },
         ),
     ]
