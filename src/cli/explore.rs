@@ -10,7 +10,7 @@ use super::handout::{HandoutArgs, template};
 use super::output::Stdout;
 use clap::{Args, Parser};
 use slider_crank::catalogue::FigureOptions;
-use slider_crank::explore::{Explorer, Refusal, Reply, Request, page};
+use slider_crank::explore::{Explorer, Refusal, Reply, Request, WORKER, page};
 use slider_crank::render::{FileFormat, to_svg, to_svg_with_fonts};
 use slider_crank::{Angle, Error, Figure, FigureName, Result, SliderCrank, rpm_to_omega};
 use std::sync::Arc;
@@ -168,17 +168,37 @@ fn draw(asked: &FigureRequest, options: &FigureOptions) -> Result<Figure> {
     }
 }
 
-/// The figure and the values `analyze --json` gives for its pose.
+/// The figure and the values `analyze --json` gives for its pose, as
+/// `{"svg", "analyze"}`; values the figure refuses (a refusal of status
+/// 422: a rod too short, a layer it does not draw), as `{"refused":
+/// reason}` with the status 200. The page asks for a figure at every
+/// change of a control, and a value typed halfway is no failure of the
+/// page: a 4xx reply would be logged as a failed load in its console. A
+/// request that is not a figure request keeps its 4xx status.
 fn figure_reply(request: &Request, initial: FigureName) -> std::result::Result<Reply, Refusal> {
-    let asked = figure_request(request, initial)?;
-    let options = options(&asked.flags, asked.name).map_err(refused)?;
-    let figure = draw(&asked, &options).map_err(refused)?;
-    let analyze = values(&asked, &options).map_err(refused)?;
-    let reply = serde_json::json!({ "svg": to_svg(&figure), "analyze": analyze });
+    let reply = match figure_json(request, initial) {
+        Ok(json) => json,
+        Err(refusal) if refusal.status() == 422 => {
+            serde_json::json!({ "refused": refusal.reason() })
+        }
+        Err(refusal) => return Err(refusal),
+    };
     Ok(Reply::ok(
         "application/json",
         reply.to_string().into_bytes(),
     ))
+}
+
+/// The figure request's reply: the figure's SVG and its values.
+fn figure_json(
+    request: &Request,
+    initial: FigureName,
+) -> std::result::Result<serde_json::Value, Refusal> {
+    let asked = figure_request(request, initial)?;
+    let options = options(&asked.flags, asked.name).map_err(refused)?;
+    let figure = draw(&asked, &options).map_err(refused)?;
+    let analyze = values(&asked, &options).map_err(refused)?;
+    Ok(serde_json::json!({ "svg": to_svg(&figure), "analyze": analyze }))
 }
 
 /// The `analyze --json` object of the pose drawn: the scene's of a
@@ -244,6 +264,10 @@ fn route(request: &Request, page: &str, initial: FigureName) -> Reply {
         "/" => Ok(Reply::ok(
             "text/html; charset=utf-8",
             page.as_bytes().to_vec(),
+        )),
+        "/worker.js" => Ok(Reply::ok(
+            "text/javascript; charset=utf-8",
+            WORKER.as_bytes().to_vec(),
         )),
         "/figure" => figure_reply(request, initial),
         "/download" => download_reply(request, initial),
