@@ -310,3 +310,74 @@ pub fn run(args: &ExploreArgs, out: &mut Stdout) -> Result<()> {
         source: Some(Arc::new(e)),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A value a hand or a hostile client might give a flag: a number of
+    /// any size or none, a name, empty, or any text.
+    fn any_value() -> impl Strategy<Value = String> {
+        prop_oneof![
+            (-1e3f64..1e3).prop_map(|x| x.to_string()),
+            prop::num::f64::ANY.prop_map(|x| x.to_string()),
+            Just(String::new()),
+            "[a-z,-]{1,20}",
+            "\\PC{0,12}",
+        ]
+    }
+
+    /// A query of the names a page sends (and two it never does).
+    fn any_query() -> impl Strategy<Value = Vec<(String, String)>> {
+        let names = prop::sample::select(vec![
+            "name", "crank", "rod", "offset", "angle", "rpm", "omega", "layers", "style", "font",
+            "notation", "unit", "mirror", "fit", "mass", "bogus", "data",
+        ]);
+        prop::collection::vec((names.prop_map(String::from), any_value()), 0..5)
+    }
+
+    /// `query` percent-encoded into a request for `/figure`.
+    fn request(query: &[(String, String)]) -> Option<Request> {
+        let encode = |t: &str| -> String { t.bytes().map(|b| format!("%{b:02X}")).collect() };
+        let q: Vec<String> = query
+            .iter()
+            .map(|(k, v)| format!("{}={}", encode(k), encode(v)))
+            .collect();
+        let head = format!(
+            "GET /figure?{} HTTP/1.1\r\nHost: 127.0.0.1:8744\r\n\r\n",
+            q.join("&")
+        );
+        Request::parse(head.as_bytes(), 8744).ok().flatten()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(512))]
+
+        // Any query of the page's names, with any values, is answered:
+        // 200 with a figure and its values or the reason it is refused,
+        // or a 400 of one line for what is not a figure request; never a
+        // panic, a 5xx, or NaN in the figure.
+        #[test]
+        fn any_figure_query_is_drawn_or_refused(query in any_query()) {
+            let Some(request) = request(&query) else { return Ok(()) };
+            let reply = route(&request, "", FigureName::Fig66Kisch);
+            let body = String::from_utf8(reply.body().to_vec()).unwrap();
+            match reply.status() {
+                200 => {
+                    let json: serde_json::Value = serde_json::from_str(&body).unwrap();
+                    match (json.get("svg"), json.get("refused")) {
+                        (Some(svg), None) => {
+                            let svg = svg.as_str().unwrap();
+                            prop_assert!(!svg.contains("NaN"), "{query:?}");
+                        }
+                        (None, Some(r)) => prop_assert!(!r.as_str().unwrap().contains('\n')),
+                        _ => prop_assert!(false, "{body}"),
+                    }
+                }
+                400 => prop_assert_eq!(body.lines().count(), 1),
+                other => prop_assert!(false, "{other}: {body}"),
+            }
+        }
+    }
+}
