@@ -1066,7 +1066,9 @@ class SliderCrank:
         (``sheet.html``) also written there and beside it
         (``sheet-key.html``), both or neither: when either cannot be
         written (``OSError``), no file is changed, so a sheet is never
-        left without its key."""
+        left without its key. A symbolic link at the key's name (named
+        after ``out``, not by the caller) is refused (``ValueError``)
+        before either is written, as ``handout --exercise`` refuses it."""
         dynamics = _Dynamics(mass, fluctuation, gas_force, indicator, bore)
         args = (theta_deg, rpm, omega, torque, friction, paper, dynamics)
         sheet = self._handout("exercise", *args)
@@ -1074,7 +1076,7 @@ class SliderCrank:
         if out is not None:
             path = os.fspath(out)
             stem = path[: -len(".html")] if path.endswith(".html") else path
-            _write((path, sheet), (stem + "-key.html", key))
+            _write((path, sheet), (stem + "-key.html", key), derived=[stem + "-key.html"])
         return sheet, key
 
     def figure(
@@ -1114,14 +1116,19 @@ class _Dynamics:
     bore: Optional[float] = None
 
 
-def _write(*files: Tuple[Union[str, "os.PathLike[str]"], str]) -> None:
+def _write(
+    *files: Tuple[Union[str, "os.PathLike[str]"], str], derived: Sequence[str] = ()
+) -> None:
     """Writes each ``(path, text)`` of ``files`` whole, or none of them,
     as the command line writes its files (the library's writer): each
     staged under an unpredictable temporary name in its target's
     directory and renamed into place once all are written; a symbolic
     link at a target is kept and the file it points to replaced; a
-    failure (``OSError``) leaves every old file as it was."""
-    _core.write_files([(os.fspath(path), text) for path, text in files])
+    failure (``OSError``) leaves every old file as it was. A path of
+    ``derived`` (named after the one the caller gave: an exercise's key)
+    that is a symbolic link is refused (``ValueError``) before anything
+    is written, as the command line refuses it."""
+    _core.write_files([(os.fspath(path), text) for path, text in files], list(derived))
 
 
 class Figure:
@@ -1528,10 +1535,14 @@ def gallery(
     ``slider-crank gallery --out DIR`` does: every named figure as SVG,
     PNG and PDF, the textbook's tables and an ``index.html`` captioning
     each figure with the section it reproduces; ``only`` limits it to
-    some figures (a list or a comma-separated string). Each file is
-    written whole or not at all. Returns the names of the files."""
+    some figures (a list or a comma-separated string). The files are
+    written all or none, by the command's own writer: each staged under
+    a ``.slider-crank-gallery-`` name in ``out`` and renamed into place
+    only when every one is made (a symbolic link of a gallery's name
+    replaced, not followed; a name that is a directory or write-protected
+    refused first, with ``OSError``), so a failure leaves the old gallery
+    whole. Returns the names of the files."""
     path = os.fspath(out)
-    os.makedirs(path, exist_ok=True)
     if isinstance(only, str):
         only = only.split(",")
     return _core.gallery(path, None if only is None else list(only))

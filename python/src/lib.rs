@@ -18,7 +18,8 @@ use slider_crank::gallery::Gallery;
 use slider_crank::handout::{DynamicsAsk, Handout};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{
-    FileFormat, TikzOptions, to_pdf, to_png, to_svg, to_tikz, write_atomic, write_atomic_all,
+    FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
+    write_atomic_all,
 };
 use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
 use slider_crank::{
@@ -806,17 +807,31 @@ fn table(
 /// command line writes its files (the library's `write_atomic_all`): staged
 /// under unpredictable temporary names in each target's directory and
 /// renamed into place, a symbolic link at a target kept and its target
-/// replaced, a failure leaving every old file as it was.
+/// replaced, a failure leaving every old file as it was. A path of
+/// `derived` (a file named after the one the caller gave, an exercise's
+/// key) that is a symbolic link is refused before anything is written, as
+/// the command line refuses it (`render::no_link_at_derived`).
 #[pyfunction]
-fn write_files(py: Python<'_>, files: Vec<(PathBuf, String)>) -> PyResult<()> {
-    py.detach(|| write_atomic_all(&files, |_, _| ()))
-        .map_err(py_err)
+#[pyo3(signature = (files, derived=Vec::new()))]
+fn write_files(
+    py: Python<'_>,
+    files: Vec<(PathBuf, String)>,
+    derived: Vec<PathBuf>,
+) -> PyResult<()> {
+    py.detach(|| {
+        no_link_at_derived(&derived)?;
+        write_atomic_all(&files, |_, _| ())
+    })
+    .map_err(py_err)
 }
 
 /// Writes the gallery `slider-crank gallery --out DIR [--only LIST]`
-/// writes into the directory `out` (which exists): every named figure (or
-/// those of `only`) as SVG, PNG and PDF, the tables and `index.html`, each
-/// file whole or not at all. Returns the names of the files.
+/// writes into the directory `out` (made if missing), as the command
+/// writes it (the library's `Gallery::write_into`): every named figure (or
+/// those of `only`) as SVG, PNG and PDF, the tables and `index.html`, all
+/// staged before any is renamed into place, a link of a gallery's name
+/// replaced rather than followed, the directory locked; a failure leaves
+/// every old file and no staged one. Returns the names of the files.
 #[pyfunction]
 #[pyo3(signature = (out, only=None))]
 fn gallery(py: Python<'_>, out: PathBuf, only: Option<Vec<String>>) -> PyResult<Vec<String>> {
@@ -829,8 +844,7 @@ fn gallery(py: Python<'_>, out: PathBuf, only: Option<Vec<String>>) -> PyResult<
             .map_err(py_err)?;
         gallery = gallery.with_figures(figures);
     }
-    gallery.can_build().map_err(py_err)?;
-    py.detach(|| gallery.build(|file| write_atomic(&out.join(&file.name), &file.bytes)))
+    py.detach(|| gallery.write_into(&out, None, |_, _| ()))
         .map_err(py_err)?;
     Ok(gallery.file_names())
 }

@@ -110,3 +110,66 @@ def test_an_exercise_writes_the_sheet_and_its_key(tmp_path: Path) -> None:
     assert (tmp_path / "sheet.html").read_text() == sheet
     assert (tmp_path / "sheet-key.html").read_text() == key
     assert sorted(os.listdir(tmp_path)) == ["sheet-key.html", "sheet.html"]
+
+
+def test_an_exercise_refuses_a_link_planted_at_its_key(tmp_path: Path) -> None:
+    # The key's name is derived from `out`: a link planted there would have
+    # its target, anywhere, replaced by the key (as `handout --exercise`
+    # refuses it).
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep me")
+    (tmp_path / "sheet-key.html").symlink_to(victim)
+    sheet = tmp_path / "sheet.html"
+    with pytest.raises(ValueError, match="cannot write .*sheet-key.html: it is a symbolic link"):
+        ENGINE.exercise(45, rpm=250, out=sheet)
+    assert victim.read_text() == "keep me"
+    assert not sheet.exists()
+    assert left_behind(tmp_path, ["victim.txt", "sheet-key.html"]) == []
+
+
+GALLERY = ["fig-63-velocity"]
+
+
+def gallery_names(tmp_path: Path) -> List[str]:
+    return sc.gallery(tmp_path / "first", only=GALLERY)
+
+
+def test_a_gallery_that_cannot_be_written_whole_leaves_the_old_one(tmp_path: Path) -> None:
+    # The last file of the gallery (index.html) cannot be written: the
+    # package once wrote every figure and table before failing on it, a
+    # gallery half new; now nothing is made and the old files stay.
+    names = gallery_names(tmp_path)
+    out = tmp_path / "g"
+    out.mkdir()
+    for name in names[:-1]:
+        (out / name).write_text("old")
+    (out / names[-1]).mkdir()
+    with pytest.raises(OSError, match=f"{names[-1]}: it is a directory"):
+        sc.gallery(out, only=GALLERY)
+    for name in names[:-1]:
+        assert (out / name).read_text() == "old", name
+    assert left_behind(out, names) == []
+
+
+def test_a_gallery_replaces_a_link_at_its_names_and_keeps_its_target(tmp_path: Path) -> None:
+    # As `slider-crank gallery` writes: a link of a gallery's name is
+    # replaced by the file, never followed to write elsewhere.
+    names = gallery_names(tmp_path)
+    victim = tmp_path / "victim.svg"
+    victim.write_text("keep me")
+    out = tmp_path / "g"
+    out.mkdir()
+    (out / names[0]).symlink_to(victim)
+    sc.gallery(out, only=GALLERY)
+    assert victim.read_text() == "keep me"
+    assert not (out / names[0]).is_symlink()
+    assert (out / names[0]).read_bytes() == (tmp_path / "first" / names[0]).read_bytes()
+    assert sorted(os.listdir(out)) == sorted(names)
+
+
+def test_a_gallery_removes_what_a_killed_gallery_left(tmp_path: Path) -> None:
+    out = tmp_path / "g"
+    out.mkdir()
+    (out / ".slider-crank-gallery-x").write_text("staged by a killed gallery")
+    names = sc.gallery(out, only=GALLERY)
+    assert sorted(os.listdir(out)) == sorted(names)

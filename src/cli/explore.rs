@@ -10,7 +10,7 @@ use super::handout::{HandoutArgs, template};
 use super::output::Stdout;
 use clap::{Args, Parser};
 use slider_crank::catalogue::FigureOptions;
-use slider_crank::explore::{Explorer, Refusal, Reply, Request, page};
+use slider_crank::explore::{Explorer, Refusal, Reply, Request, WORKER, page};
 use slider_crank::render::{FileFormat, to_svg, to_svg_with_fonts};
 use slider_crank::{Angle, Error, Figure, FigureName, Result, SliderCrank, rpm_to_omega};
 use std::sync::Arc;
@@ -168,17 +168,37 @@ fn draw(asked: &FigureRequest, options: &FigureOptions) -> Result<Figure> {
     }
 }
 
-/// The figure and the values `analyze --json` gives for its pose.
+/// The figure and the values `analyze --json` gives for its pose, as
+/// `{"svg", "analyze"}`; values the figure refuses (a refusal of status
+/// 422: a rod too short, a layer it does not draw), as `{"refused":
+/// reason}` with the status 200. The page asks for a figure at every
+/// change of a control, and a value typed halfway is no failure of the
+/// page: a 4xx reply would be logged as a failed load in its console. A
+/// request that is not a figure request keeps its 4xx status.
 fn figure_reply(request: &Request, initial: FigureName) -> std::result::Result<Reply, Refusal> {
-    let asked = figure_request(request, initial)?;
-    let options = options(&asked.flags, asked.name).map_err(refused)?;
-    let figure = draw(&asked, &options).map_err(refused)?;
-    let analyze = values(&asked, &options).map_err(refused)?;
-    let reply = serde_json::json!({ "svg": to_svg(&figure), "analyze": analyze });
+    let reply = match figure_json(request, initial) {
+        Ok(json) => json,
+        Err(refusal) if refusal.status() == 422 => {
+            serde_json::json!({ "refused": refusal.reason() })
+        }
+        Err(refusal) => return Err(refusal),
+    };
     Ok(Reply::ok(
         "application/json",
         reply.to_string().into_bytes(),
     ))
+}
+
+/// The figure request's reply: the figure's SVG and its values.
+fn figure_json(
+    request: &Request,
+    initial: FigureName,
+) -> std::result::Result<serde_json::Value, Refusal> {
+    let asked = figure_request(request, initial)?;
+    let options = options(&asked.flags, asked.name).map_err(refused)?;
+    let figure = draw(&asked, &options).map_err(refused)?;
+    let analyze = values(&asked, &options).map_err(refused)?;
+    Ok(serde_json::json!({ "svg": to_svg(&figure), "analyze": analyze }))
 }
 
 /// The `analyze --json` object of the pose drawn: the scene's of a
@@ -245,6 +265,10 @@ fn route(request: &Request, page: &str, initial: FigureName) -> Reply {
             "text/html; charset=utf-8",
             page.as_bytes().to_vec(),
         )),
+        "/worker.js" => Ok(Reply::ok(
+            "text/javascript; charset=utf-8",
+            WORKER.as_bytes().to_vec(),
+        )),
         "/figure" => figure_reply(request, initial),
         "/download" => download_reply(request, initial),
         "/handout" => handout_reply(request),
@@ -285,4 +309,75 @@ pub fn run(args: &ExploreArgs, out: &mut Stdout) -> Result<()> {
         path: None,
         source: Some(Arc::new(e)),
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A value a hand or a hostile client might give a flag: a number of
+    /// any size or none, a name, empty, or any text.
+    fn any_value() -> impl Strategy<Value = String> {
+        prop_oneof![
+            (-1e3f64..1e3).prop_map(|x| x.to_string()),
+            prop::num::f64::ANY.prop_map(|x| x.to_string()),
+            Just(String::new()),
+            "[a-z,-]{1,20}",
+            "\\PC{0,12}",
+        ]
+    }
+
+    /// A query of the names a page sends (and two it never does).
+    fn any_query() -> impl Strategy<Value = Vec<(String, String)>> {
+        let names = prop::sample::select(vec![
+            "name", "crank", "rod", "offset", "angle", "rpm", "omega", "layers", "style", "font",
+            "notation", "unit", "mirror", "fit", "mass", "bogus", "data",
+        ]);
+        prop::collection::vec((names.prop_map(String::from), any_value()), 0..5)
+    }
+
+    /// `query` percent-encoded into a request for `/figure`.
+    fn request(query: &[(String, String)]) -> Option<Request> {
+        let encode = |t: &str| -> String { t.bytes().map(|b| format!("%{b:02X}")).collect() };
+        let q: Vec<String> = query
+            .iter()
+            .map(|(k, v)| format!("{}={}", encode(k), encode(v)))
+            .collect();
+        let head = format!(
+            "GET /figure?{} HTTP/1.1\r\nHost: 127.0.0.1:8744\r\n\r\n",
+            q.join("&")
+        );
+        Request::parse(head.as_bytes(), 8744).ok().flatten()
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(512))]
+
+        // Any query of the page's names, with any values, is answered:
+        // 200 with a figure and its values or the reason it is refused,
+        // or a 400 of one line for what is not a figure request; never a
+        // panic, a 5xx, or NaN in the figure.
+        #[test]
+        fn any_figure_query_is_drawn_or_refused(query in any_query()) {
+            let Some(request) = request(&query) else { return Ok(()) };
+            let reply = route(&request, "", FigureName::Fig66Kisch);
+            let body = String::from_utf8(reply.body().to_vec()).unwrap();
+            match reply.status() {
+                200 => {
+                    let json: serde_json::Value = serde_json::from_str(&body).unwrap();
+                    match (json.get("svg"), json.get("refused")) {
+                        (Some(svg), None) => {
+                            let svg = svg.as_str().unwrap();
+                            prop_assert!(!svg.contains("NaN"), "{query:?}");
+                        }
+                        (None, Some(r)) => prop_assert!(!r.as_str().unwrap().contains('\n')),
+                        _ => prop_assert!(false, "{body}"),
+                    }
+                }
+                400 => prop_assert_eq!(body.lines().count(), 1),
+                other => prop_assert!(false, "{other}: {body}"),
+            }
+        }
+    }
 }

@@ -8,7 +8,7 @@ use super::output::{Progress, Stdout};
 use clap::Args;
 use slider_crank::handout::{Class, DynamicsAsk, Handout, Paper};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
-use slider_crank::render::write_atomic_all;
+use slider_crank::render::{no_link_at_derived, write_atomic_all};
 use slider_crank::table::Spelling;
 use slider_crank::{Angle, Error, Input, Result, Units};
 use std::path::{Path, PathBuf};
@@ -139,26 +139,6 @@ fn write_all(files: &[(PathBuf, String)], progress: Option<&mut Progress>) -> Re
             p.show(i, &path.display().to_string());
         }
     })
-}
-
-/// Refuses a symbolic link at the name of a file derived from `--out`
-/// (an exercise's key, a class's sheets, keys and answers): `--out` is
-/// written through a link as the user named it, but a link planted at a
-/// name the user did not give would have its target, anywhere, replaced.
-/// Checked for every file before any is written.
-fn no_link_at_derived(files: &[PathBuf]) -> Result<()> {
-    for path in files {
-        if std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
-            return Err(Error::invalid(
-                Input::OutputFile,
-                format!(
-                    "cannot write {}: it is a symbolic link, and a file named after --out is never written through one (remove it or give another --out)",
-                    path.display()
-                ),
-            ));
-        }
-    }
-    Ok(())
 }
 
 /// The handout the flags ask for (of one engine; the exercise and the

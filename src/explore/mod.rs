@@ -15,7 +15,7 @@ mod page;
 mod request;
 mod server;
 
-pub use page::page;
+pub use page::{WORKER, page};
 pub use request::{
     MAX_FIELDS, MAX_HEAD_BYTES, MAX_HEADERS, MAX_VALUE_CHARS, Request, is_loopback_host,
 };
@@ -119,7 +119,7 @@ impl Reply {
             "HTTP/1.1 {} {}\r\nContent-Type: {}\r\nContent-Length: {}\r\nConnection: close\r\n\
              Cache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\n\
              Content-Security-Policy: default-src 'none'; connect-src 'self'; img-src 'self' data: blob:; \
-             style-src 'unsafe-inline'; font-src data:; script-src 'unsafe-inline'\r\n",
+             style-src 'unsafe-inline'; font-src data:; script-src 'unsafe-inline'; worker-src 'self'\r\n",
             self.status,
             reason_phrase(self.status),
             self.content_type,

@@ -134,7 +134,7 @@
   // reply read, to the figure in the page, and to the next frame drawn.
   const timings = [];
   const phases = [];
-  window.explorer = { timings, phases, state, metadata: () => metadata, ready: false, requests: 0, drawn: 0 };
+  window.explorer = { timings, phases, state, metadata: () => metadata, ready: false, requests: 0, drawn: 0, abandoned: 0 };
   // A promise of the page settled with at least `n` figures drawn (for a
   // driver, which then need not poll).
   const waiters = [];
@@ -166,27 +166,54 @@
     if (f.speed && state.speed !== '') h.set(state.speedUnit, state.speed);
     $('download-handout').href = '/handout?' + h.toString();
   };
+  // The figure requests are made by a worker (/worker.js), off this
+  // thread: `ask` sends one and gives a promise of the worker's answer
+  // and a way to give it up.
+  const worker = new Worker('/worker.js');
+  const answers = new Map();
+  let asked = 0;
+  worker.onmessage = (ev) => {
+    const answer = answers.get(ev.data.id);
+    answers.delete(ev.data.id);
+    if (answer) answer(ev.data);
+  };
+  const ask = (url) => {
+    const id = ++asked;
+    const answer = new Promise((resolve) => answers.set(id, resolve));
+    worker.postMessage({ id, url });
+    return { answer, abort: () => worker.postMessage({ id, abort: true }) };
+  };
   const draw = (started) => {
-    const ctl = new AbortController();
-    inflight = { ctl, started: performance.now() };
+    const request = ask(new URL('/figure?' + figureQuery().toString(), location.href).href);
+    inflight = { request, started: performance.now() };
     waiting = false;
     window.explorer.requests += 1;
-    fetch('/figure?' + figureQuery().toString(), { signal: ctl.signal })
-      .then(async (r) => {
-        if (!r.ok) {
-          $('status').textContent = (await r.text()).replace(/^slider-crank explore: /, '');
+    request.answer
+      .then((m) => {
+        if (m.error !== undefined) {
+          if (m.error !== 'abort') $('status').textContent = 'the explorer cannot be reached: ' + m.error;
           return;
         }
-        const reply = await r.json();
+        if (m.failed !== undefined) {
+          $('status').textContent = m.failed.replace(/^slider-crank explore: /, '');
+          return;
+        }
+        const reply = m.reply;
         const replied = performance.now();
+        // Values the figure refuses (a rod too short): the reason shown,
+        // the last figure kept.
+        if (reply.refused !== undefined) {
+          $('status').textContent = reply.refused;
+          return;
+        }
         stage.innerHTML = reply.svg;
         const svg = stage.querySelector('svg');
         if (svg) {
           svg.setAttribute('role', 'img');
           svg.setAttribute('aria-label', describe());
         }
-        const m = stage.querySelector('metadata');
-        metadata = m ? JSON.parse(m.textContent) : null;
+        const m2 = stage.querySelector('metadata');
+        metadata = m2 ? JSON.parse(m2.textContent) : null;
         showValues(reply.analyze);
         $('status').textContent = '';
         window.explorer.drawn += 1;
@@ -198,29 +225,42 @@
           if (started === undefined) return;
           const framed = performance.now();
           timings.push(framed - started);
-          phases.push([replied - started, shown - started, framed - started]);
+          // The network's part, from the worker's resource timing: fetch
+          // called, the request sent, the reply's first and last bytes.
+          const net = (m.net || [NaN, NaN, NaN, NaN]).map((t) => t - performance.timeOrigin - started);
+          phases.push([replied - started, shown - started, framed - started, ...net]);
         });
       })
-      .catch((e) => {
-        if (e.name !== 'AbortError') $('status').textContent = 'the explorer cannot be reached: ' + e.message;
-      })
       .finally(() => {
-        if (inflight && inflight.ctl === ctl) inflight = null;
+        if (inflight && inflight.request === request) inflight = null;
         if (waiting) draw(waitingSince);
         else if (!inflight) {
+          if (addressTimer !== null) writeAddress();
           window.explorer.ready = true;
           settle();
         }
       });
   };
-  let waitingSince;
-  const update = (started) => {
+  // The address and the download links follow the state: written at
+  // most every ADDRESS_MS while it changes, and at once when the page
+  // settles, after the figure's request has left. Chromium ignores a
+  // page's history updates beyond 200 in 10 s (a drag at 60 Hz makes 600
+  // requests in that time).
+  const ADDRESS_MS = 100;
+  let addressTimer = null;
+  const writeAddress = () => {
+    clearTimeout(addressTimer);
+    addressTimer = null;
     history.replaceState(null, '', '?' + pageQuery().toString());
     links();
+  };
+  let waitingSince;
+  const update = (started) => {
     window.explorer.ready = false;
     if (inflight && performance.now() - inflight.started > SLOW_MS) {
-      inflight.ctl.abort();
+      inflight.request.abort();
       inflight = null;
+      window.explorer.abandoned += 1;
     }
     if (inflight) {
       waiting = true;
@@ -228,6 +268,7 @@
     } else {
       draw(started);
     }
+    if (addressTimer === null) addressTimer = setTimeout(writeAddress, ADDRESS_MS);
   };
 
   // Turning the crank: B dragged (mouse, pen, touch) or the arrow keys.

@@ -13,10 +13,16 @@ use serde_json::{Value, json};
 const STYLE: &str = include_str!("page.css");
 
 /// The page's script: the state in the URL, a figure asked for at most
-/// once at a time (the newest state waits, older ones are dropped; a slow
-/// request is abandoned for a newer one), the crank pin dragged by
-/// pointer or turned by the arrow keys.
+/// once at a time through the [`WORKER`] (the newest state waits, older
+/// ones are dropped; a slow request is abandoned for a newer one), the
+/// crank pin dragged by pointer or turned by the arrow keys.
 const SCRIPT: &str = include_str!("page.js");
+
+/// The page's worker (`/worker.js`): the figure requests, made and their
+/// replies parsed off the page's thread, so that a request made during a
+/// drag leaves at once rather than after the frame the pointer event
+/// begins.
+pub const WORKER: &str = include_str!("worker.js");
 
 /// The characters a figure may set beyond the page's own text: its faces
 /// are cut to these and the page's (the figures are drawn into the page

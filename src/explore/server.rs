@@ -129,6 +129,9 @@ fn work(waiting: &Mutex<Receiver<TcpStream>>, handler: &Handler, port: u16) {
 /// client has gone meanwhile (a page drops a request a newer drag has
 /// superseded).
 fn answer(mut stream: TcpStream, handler: &Handler, port: u16) {
+    // The reply is written at once, in one piece (`respond`): nothing is
+    // gained by Nagle's algorithm holding back its last segment.
+    let _ = stream.set_nodelay(true);
     let _ = stream.set_read_timeout(Some(TIMEOUT));
     let _ = stream.set_write_timeout(Some(TIMEOUT));
     let request = match read_request(&mut stream, port) {
@@ -181,12 +184,12 @@ fn gone(stream: &TcpStream) -> bool {
     closed
 }
 
-/// Writes `reply` and closes the connection.
+/// Writes `reply`, head and body in one write, and closes the connection.
 fn respond(mut stream: TcpStream, reply: &Reply) {
     let _ = stream.set_write_timeout(Some(TIMEOUT));
-    let written = stream
-        .write_all(reply.head().as_bytes())
-        .and_then(|()| stream.write_all(reply.body()));
+    let mut bytes = reply.head().into_bytes();
+    bytes.extend_from_slice(reply.body());
+    let written = stream.write_all(&bytes);
     if written.is_ok() {
         let _ = stream.flush();
     }

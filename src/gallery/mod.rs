@@ -7,7 +7,8 @@
 //!
 //! [`Gallery::build`] makes the files on every core and hands each to the
 //! caller in the order of [`Gallery::file_names`] (the caller writes it,
-//! or compares it with a file on disk); nothing is written here.
+//! or compares it with a file on disk); [`Gallery::write_into`] writes
+//! them into a directory, all or none.
 //!
 //! ```
 //! use slider_crank::gallery::Gallery;
@@ -32,6 +33,7 @@ mod index;
 mod manifest;
 mod parallel;
 mod quote;
+mod write;
 
 use crate::catalogue::FigureOptions;
 use crate::error::{Error, Input, Result};
@@ -39,6 +41,8 @@ use crate::figure::Font;
 use crate::render::{FileFormat, to_svg};
 use crate::table::{Format, TableName};
 use crate::{catalogue::FigureName, figure::Style, scene::Scene};
+
+pub use write::{STAGED_PREFIX, leftovers, lock_directory};
 
 /// The name of the gallery's index page.
 pub const INDEX: &str = "index.html";

@@ -22,7 +22,10 @@ mod tikz;
 
 pub use crate::number::plain;
 pub use crate::number::{GRID, fmt};
-pub use atomic::{same_file, write_atomic, write_atomic_all, write_atomic_with, write_protected};
+pub use atomic::{
+    no_link_at_derived, same_file, write_atomic, write_atomic_all, write_atomic_with,
+    write_protected,
+};
 pub(crate) use element::{Element, Node, escape_text};
 pub use file_format::FileFormat;
 #[cfg(any(feature = "png", feature = "pdf"))]

@@ -574,3 +574,61 @@ fn the_loop_closes_at_every_scale() {
     }
     assert!(closed > 50_000, "{closed} poses");
 }
+
+#[test]
+fn at_a_node_each_mode_has_the_rates_of_the_branch_so_named_after_it() {
+    // At exactly 180° of the parallelogram 1, 3, 1, 3 and of the change-point
+    // chain 1, 2, 3, 4 (a + d = b + c, flat at 180°), a mode's rates are
+    // the limits as θ decreases to 180° (forward differences of the poses
+    // at 180° + h, 180° + 2h), and they differ from the limits from below
+    // (backward differences), which are the other mode's at 180°: the two
+    // branches through the node change sides of the diagonal there.
+    let h = 1e-6;
+    let t = PI;
+    for l in [[1.0, 3.0, 1.0, 3.0], [1.0, 2.0, 3.0, 4.0]] {
+        let q = QuadricChain::new(l[0], l[1], l[2], l[3]).unwrap();
+        for (mode, other) in [
+            (Assembly::Open, Assembly::Crossed),
+            (Assembly::Crossed, Assembly::Open),
+        ] {
+            let p = q.pose(Angle::deg(180.0), mode).unwrap();
+            assert!(p.is_toggle(), "{l:?} {mode:?}: flat at 180°");
+            let rates = p.rates().expect("finite rates at a node");
+            let base = (p.coupler_angle(), p.lever_angle());
+            let (b1, c1) = link_angles(&q, t + h, mode, base);
+            let (b2, c2) = link_angles(&q, t + 2.0 * h, mode, base);
+            let after = ((b2 - b1) / h, (c2 - c1) / h);
+            let (b1, c1) = link_angles(&q, t - h, mode, base);
+            let (b2, c2) = link_angles(&q, t - 2.0 * h, mode, base);
+            let before = ((b1 - b2) / h, (c1 - c2) / h);
+            let close = |x: f64, y: f64| (x - y).abs() < 1e-5 * (1.0 + x.abs());
+            assert!(
+                close(rates.coupler_velocity, after.0) && close(rates.lever_velocity, after.1),
+                "{l:?} {mode:?}: {rates:?} against the limit from above {after:?}"
+            );
+            assert!(
+                (rates.coupler_velocity - before.0).abs() > 0.1,
+                "{l:?} {mode:?}: the limits from both sides differ ({rates:?}, {before:?})"
+            );
+            let across = q.pose(Angle::deg(180.0), other).unwrap().rates().unwrap();
+            assert!(
+                close(across.coupler_velocity, before.0) && close(across.lever_velocity, before.1),
+                "{l:?} {mode:?}: the limit from below {before:?} is the {other:?} mode's {across:?}"
+            );
+        }
+    }
+    // The limits in closed form for 1, 2, 3, 4: the node equation
+    // −10 λ′² + 4 λ′ + 2 = 0 (src/chain/quadric.rs); the open chain at
+    // 180° is on (1 + √6)/5, the root it had been on below 180° in the
+    // crossed mode.
+    let q = QuadricChain::new(1.0, 2.0, 3.0, 4.0).unwrap();
+    let open = q
+        .pose(Angle::deg(180.0), Assembly::Open)
+        .unwrap()
+        .rates()
+        .unwrap();
+    assert!(
+        (open.coupler_velocity - (1.0 + 6f64.sqrt()) / 5.0).abs() < 1e-14,
+        "{open:?}"
+    );
+}

@@ -145,6 +145,20 @@ impl Browser {
         );
     }
 
+    /// A touch event (`touchStart`, `touchMove`, `touchEnd`) of one finger
+    /// at (`x`, `y`) CSS px (`touchEnd` lifts every finger).
+    pub fn touch(&mut self, kind: &str, (x, y): (f64, f64)) {
+        let points = if kind == "touchEnd" {
+            json!([])
+        } else {
+            json!([{ "x": x, "y": y, "id": 1, "radiusX": 4, "radiusY": 4, "force": 1 }])
+        };
+        self.call(
+            "Input.dispatchTouchEvent",
+            json!({ "type": kind, "touchPoints": points }),
+        );
+    }
+
     /// A key pressed and released (`ArrowRight`, ...), with Shift held
     /// when `shift`.
     pub fn key(&mut self, key: &str, code: u32, shift: bool) {
