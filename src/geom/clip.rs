@@ -84,17 +84,20 @@ impl Frame {
         }
         let (mut t0, mut t1) = (-f64::MAX, f64::MAX);
         let (mut entered, mut left) = (false, false);
-        for i in 0..2 {
-            let (o, d) = (origin[i], direction[i]);
+        let (lo, hi) = (self.min, self.max);
+        for (o, d, lo, hi) in [
+            (origin.x, direction.x, lo.x, hi.x),
+            (origin.y, direction.y, lo.y, hi.y),
+        ] {
             if d == 0.0 {
-                if o < self.min[i] || o > self.max[i] {
+                if o < lo || o > hi {
                     return None;
                 }
                 continue;
             }
             let inverse = 1.0 / d;
-            let a = (self.min[i] - o) * inverse;
-            let b = (self.max[i] - o) * inverse;
+            let a = (lo - o) * inverse;
+            let b = (hi - o) * inverse;
             let (near, far) = if a > b { (b, a) } else { (a, b) };
             if near > t0 {
                 t0 = near;
