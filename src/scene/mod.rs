@@ -361,7 +361,7 @@ impl Scene {
             notation: Notation::Textbook,
             mirror: false,
             page: Page::default(),
-            omega: crate::analytic::kinematics::rpm_to_omega(250.0),
+            omega: crate::analytic::kinematics::rpm_to_omega(crate::sources::RPM),
             units: Units::FOOT_POUND,
             title: None,
             torque: 1.0,
