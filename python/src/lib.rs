@@ -465,10 +465,6 @@ fn handout(
     .map_err(py_err)
 }
 
-/// Ng's torque as implied by Table 2's F column, N·mm (the `table forces`
-/// default).
-const NG_TABLE_2_TORQUE: f64 = slider_crank::sources::NG_TORQUE;
-
 /// The ratios n of a table, refused as `--n` refuses them.
 fn ratios(given: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
     let ratios = given.unwrap_or_else(|| default.to_vec());
@@ -666,7 +662,7 @@ fn table(
         }
         "forces" => {
             let m = self::engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
-            let torque = torque.unwrap_or(NG_TABLE_2_TORQUE);
+            let torque = torque.unwrap_or(slider_crank::sources::NG_TORQUE);
             if !torque.is_finite() {
                 return Err(py_err(Error::NotFinite {
                     name: Field::Torque,
