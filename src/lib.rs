@@ -158,6 +158,7 @@ mod mechanism;
 pub mod number;
 pub mod render;
 pub mod scene;
+pub mod sources;
 pub mod table;
 mod units;
 

@@ -68,7 +68,7 @@ fn check_engine(crank: f64, rod: f64, offset: f64, unit: &str, force_unit: &str)
 
 /// The crank speed the command line takes when neither `--rpm` nor
 /// `--omega` is given, in rpm (the §35 engine's).
-const DEFAULT_RPM: f64 = 250.0;
+const DEFAULT_RPM: f64 = slider_crank::sources::RPM;
 
 /// ω in rad/s from `rpm` or `omega` (at most one given), checked as
 /// `--rpm` and `--omega` are; [`DEFAULT_RPM`] when neither is.
@@ -466,10 +466,6 @@ fn handout(
     .map_err(py_err)
 }
 
-/// Ng's torque as implied by Table 2's F column, N·mm (the `table forces`
-/// default).
-const NG_TABLE_2_TORQUE: f64 = 1.0 * 9.81 * 27.0;
-
 /// The ratios n of a table, refused as `--n` refuses them.
 fn ratios(given: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
     let ratios = given.unwrap_or_else(|| default.to_vec());
@@ -667,7 +663,7 @@ fn table(
         }
         "forces" => {
             let m = self::engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
-            let torque = torque.unwrap_or(NG_TABLE_2_TORQUE);
+            let torque = torque.unwrap_or(slider_crank::sources::NG_TORQUE);
             if !torque.is_finite() {
                 return Err(py_err(Error::NotFinite {
                     name: Field::Torque,

@@ -3,16 +3,7 @@
 use crate::error::{Error, Field, Input, Result, finite};
 use crate::number::plain;
 
-/// Ng's Table 1: force in newtons (weights of 0.25 … 1.5 kg) against strain
-/// reading (×10⁻⁶).
-pub const NG_TABLE_1: [(f64, f64); 6] = [
-    (2.45, 50.0),
-    (4.91, 95.0),
-    (7.36, 148.0),
-    (9.81, 190.0),
-    (12.27, 238.0),
-    (14.72, 290.0),
-];
+pub use crate::sources::NG_TABLE_1;
 
 /// A straight line y = slope · x + intercept fitted by least squares.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]

@@ -11,10 +11,6 @@ use crate::error::{Error, Field, Result, finite, non_negative};
 use crate::mechanism::Pose;
 use crate::number::plain;
 
-/// Ng's crank torque implied by his Table 2 (1 kg × 9.81 m/s² × 27 mm), in
-/// N·mm.
-pub(crate) const NG_TORQUE: f64 = 9.81 * 27.0;
-
 /// The signed length OM (= CE = E_y = −ds/dθ): the moment arm that turns a
 /// crank torque into a slider force (Ng eq. 2, 5). Zero at the dead centres.
 pub fn om(pose: &Pose) -> f64 {

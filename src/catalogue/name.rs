@@ -10,7 +10,7 @@ use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
 
-use crate::analytic::statics::NG_TORQUE;
+use crate::sources::NG_TORQUE;
 
 crate::error::parse_by_name!(FigureName);
 

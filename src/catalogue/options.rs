@@ -127,7 +127,7 @@ pub struct FigureOptions {
     /// The page's height (default the figure's own, which a mechanism
     /// figure's enlarged detail grows): given, a mechanism figure ends
     /// within it or is refused naming the height it needs
-    /// ([`crate::scene::Page::with_height_held`]); a diagram lays its bands out
+    /// ([`crate::scene::Page::with_fixed_height`]); a diagram lays its bands out
     /// on it.
     pub height: Option<PageLength>,
     /// A title, set below the figure and written as the SVG's `<title>`.
@@ -241,8 +241,8 @@ impl FigureOptions {
         };
         // A height asked for is the page's: the figure ends within it.
         Ok(match self.height {
-            Some(_) => sized.with_height_held(),
-            None if page.holds_height() => sized.with_height_held(),
+            Some(_) => sized.with_fixed_height(),
+            None if page.has_fixed_height() => sized.with_fixed_height(),
             None => sized,
         })
     }

@@ -273,8 +273,11 @@ pub(super) fn parse(text: &str) -> Result<SceneFile> {
                 None => return diagram(text, file, figure),
             }
         }
-        None => Scene::new(SliderCrank::in_line(0.5, 3.0)?, Angle::from_degrees(45.0)?)
-            .with_layers([Layer::Mechanism]),
+        None => Scene::new(
+            SliderCrank::in_line(crate::sources::ENGINE_35.0, crate::sources::ENGINE_35.1)?,
+            Angle::from_degrees(45.0)?,
+        )
+        .with_layers([Layer::Mechanism]),
     };
     Ok(SceneFile::Mechanism(mechanism_scene(text, &file, start)?))
 }

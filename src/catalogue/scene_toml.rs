@@ -303,7 +303,9 @@ fn diagram_keys(out: &mut String, name: FigureName) {
         key(
             out,
             "Crank speed, revolutions per minute (or omega, rad/s), positive.",
-            &speed(crate::analytic::kinematics::rpm_to_omega(250.0)),
+            &speed(crate::analytic::kinematics::rpm_to_omega(
+                crate::sources::RPM,
+            )),
         );
     }
     key(out, STYLE, "style = \"textbook\"");
@@ -332,7 +334,7 @@ fn diagram_keys(out: &mut String, name: FigureName) {
             "Coefficient of fluctuation of speed C_s = (ω_max − ω_min)/ω, above 0 and below 2.",
             &format!(
                 "fluctuation = {}",
-                number(super::builders::DEFAULT_COEFFICIENT)
+                number(crate::dynamics::DEFAULT_FLUCTUATION)
             ),
         );
     }

@@ -143,11 +143,7 @@ macro_rules! figures {
     };
 }
 
-/// Ng's rig: r = 25 mm, l = 72 mm.
-pub(crate) const NG_RIG: (f64, f64) = (25.0, 72.0);
-
-/// The textbook's §35 engine: r = 0.5 ft, l = 3 ft.
-const ENGINE: (f64, f64) = (0.5, 3.0);
+use crate::sources::{ENGINE_35 as ENGINE, NG_RIG};
 
 /// The chain of Fig. 60, with a rod short enough for its inversions to
 /// read: r = 0.5, l = 1.5.

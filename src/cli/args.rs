@@ -131,7 +131,7 @@ impl SpeedArgs {
         match (self.rpm, self.omega) {
             (_, Some(w)) => check_omega(w),
             (Some(n), None) => omega_from_rpm(n),
-            (None, None) => Ok(rpm_to_omega(250.0)),
+            (None, None) => Ok(rpm_to_omega(slider_crank::sources::RPM)),
         }
     }
 }

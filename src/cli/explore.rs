@@ -218,7 +218,9 @@ fn values(asked: &FigureRequest, options: &FigureOptions) -> Result<Option<serde
     }
     let m: SliderCrank = options.mechanism.unwrap_or_else(|| name.mechanism());
     let degrees = flags.angle.unwrap_or(name.angle_degrees());
-    let omega = options.omega.unwrap_or_else(|| rpm_to_omega(250.0));
+    let omega = options
+        .omega
+        .unwrap_or_else(|| rpm_to_omega(slider_crank::sources::RPM));
     super::analyze::json_at(&m, degrees, omega, &units).map(Some)
 }
 

@@ -57,7 +57,7 @@ pub struct HandoutArgs {
     #[arg(
         long,
         value_name = "CS",
-        default_value_t = 0.02,
+        default_value_t = slider_crank::dynamics::DEFAULT_FLUCTUATION,
         allow_negative_numbers = true,
         requires = "mass"
     )]

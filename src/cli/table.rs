@@ -4,6 +4,7 @@ use super::args::{AngleSpec, GuardArgs, MechanismArgs, SpeedArgs, UnitArgs, pars
 use super::output::Stdout;
 use super::stream;
 use clap::{Args, ValueEnum};
+use slider_crank::sources::{ENGINE_35, NG_RIG, NG_TORQUE};
 use slider_crank::table::{self, Format, Head, TEXTBOOK_ANGLES, TEXTBOOK_RATIOS};
 use slider_crank::{Error, Field, Input, Result, SliderCrank, Units};
 
@@ -163,10 +164,7 @@ pub struct TableArgs {
 /// given: the turn every 30°.
 const TURN_ANGLES: &str = "0:360:30";
 
-/// Ng's torque as implied by Table 2's F column, N·mm.
-pub const NG_TABLE_2_TORQUE: f64 = 1.0 * 9.81 * 27.0;
-
-fn mechanism(args: &TableArgs, crank: f64, rod: f64) -> Result<SliderCrank> {
+fn mechanism(args: &TableArgs, (crank, rod): (f64, f64)) -> Result<SliderCrank> {
     MechanismArgs {
         crank: args.crank.unwrap_or(crank),
         rod: args.rod.unwrap_or(rod),
@@ -233,7 +231,7 @@ fn quick_return(
     format: Format,
     out: &mut Stdout,
 ) -> Result<()> {
-    let m = mechanism(args, 0.5, 1.5)?;
+    let m = mechanism(args, (0.5, 1.5))?;
     let omega = omega(args)?;
     let inversion = slider_crank::Inversion::from_number(args.inversion.unwrap_or(3))?;
     let lever = args
@@ -250,7 +248,7 @@ fn quick_return(
 
 /// `table harmonics`: the acceleration's series and each cut's error.
 fn harmonics(args: &TableArgs, decimals: usize, format: Format, out: &mut Stdout) -> Result<()> {
-    let m = mechanism(args, 0.5, 3.0)?;
+    let m = mechanism(args, ENGINE_35)?;
     let order = args
         .order
         .unwrap_or(slider_crank::analytic::harmonics::DEFAULT_ORDER);
@@ -273,7 +271,7 @@ fn balance(
     format: Format,
     out: &mut Stdout,
 ) -> Result<()> {
-    let m = mechanism(args, 0.5, 3.0)?;
+    let m = mechanism(args, ENGINE_35)?;
     let cranks = match &args.cranks {
         Some(s) => parse_list(s, "crank angle", false)?,
         None => slider_crank::dynamics::DEFAULT_CRANKS.to_vec(),
@@ -347,7 +345,7 @@ fn radial(
     format: Format,
     out: &mut Stdout,
 ) -> Result<()> {
-    let m = mechanism(args, 0.5, 3.0)?;
+    let m = mechanism(args, ENGINE_35)?;
     let axes = match &args.axes {
         Some(s) => parse_list(s, "axis", false)?,
         None => slider_crank::dynamics::DEFAULT_AXES.to_vec(),
@@ -421,7 +419,7 @@ fn kinematics(
     format: Format,
     out: &mut Stdout,
 ) -> Result<()> {
-    let m = mechanism(args, 0.5, 3.0)?;
+    let m = mechanism(args, ENGINE_35)?;
     let omega = omega(args)?;
     let spec = spec.map_or_else(|| AngleSpec::parse(TURN_ANGLES), Ok)?;
     let units = args.units.units(Units::FOOT_POUND);
@@ -439,8 +437,8 @@ fn forces(
     format: Format,
     out: &mut Stdout,
 ) -> Result<()> {
-    let m = mechanism(args, 25.0, 72.0)?;
-    let torque = args.torque.unwrap_or(NG_TABLE_2_TORQUE);
+    let m = mechanism(args, NG_RIG)?;
+    let torque = args.torque.unwrap_or(NG_TORQUE);
     if !torque.is_finite() {
         return Err(Error::NotFinite {
             name: Field::Torque,
@@ -612,7 +610,7 @@ fn dynamics(
     format: Format,
     out: &mut Stdout,
 ) -> Result<()> {
-    let m = mechanism(args, 0.5, 3.0)?;
+    let m = mechanism(args, ENGINE_35)?;
     let omega = omega(args)?;
     let units = args.units.units(Units::FOOT_POUND);
     let engine = match args.engine.engine(m, omega, &units)? {

@@ -73,6 +73,11 @@ impl Flywheel {
 /// ω (1 − C_s/2) stays above zero: C_s = (ω_max − ω_min)/ω is below it.
 pub const MAX_COEFFICIENT: f64 = 2.0;
 
+/// The coefficient of fluctuation of speed a flywheel is sized for when
+/// none is given (the figure, the handout, the command line and Python):
+/// an illustration, the sources give none.
+pub const DEFAULT_FLUCTUATION: f64 = 0.02;
+
 /// A coefficient of fluctuation of speed C_s asked for, checked: above 0
 /// and below [`MAX_COEFFICIENT`], the one rule every figure, table and
 /// handout that sizes a flywheel keeps.

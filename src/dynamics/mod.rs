@@ -45,7 +45,9 @@ pub(crate) mod turning;
 
 pub use balance::{Balance, unbalanced_forces};
 pub use engine::{EXAMPLE_MASS, Engine};
-pub use flywheel::{Flywheel, FlywheelAsk, MAX_COEFFICIENT, checked_coefficient};
+pub use flywheel::{
+    DEFAULT_FLUCTUATION, Flywheel, FlywheelAsk, MAX_COEFFICIENT, checked_coefficient,
+};
 pub use gas::{
     EXAMPLE_BORE, EXAMPLE_INDICATOR, GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS,
     example_indicator,

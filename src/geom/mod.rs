@@ -1,6 +1,6 @@
 //! Plane geometry in f64 on nalgebra: infinite lines whose intersection may
 //! be a point, a point at infinity or the whole line; circles; clipping to an
-//! axis-aligned frame (parry2d-f64).
+//! axis-aligned frame.
 
 mod circle;
 mod clip;

@@ -9,9 +9,6 @@ use crate::dynamics::{GasForce, IndicatorDiagram, checked_coefficient, example_i
 use crate::error::{Error, Field, Input, Result, Spelling, finite, positive};
 use crate::units::Units;
 
-/// The coefficient of fluctuation of speed when none is given.
-const DEFAULT_FLUCTUATION: f64 = 0.02;
-
 /// The gas force on the piston of a handout's dynamics.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
@@ -156,7 +153,10 @@ impl DynamicsAsk {
         };
         Ok(Some(Dynamics {
             mass: positive(Field::Mass, mass)?,
-            fluctuation: checked_coefficient(self.fluctuation.unwrap_or(DEFAULT_FLUCTUATION))?,
+            fluctuation: checked_coefficient(
+                self.fluctuation
+                    .unwrap_or(crate::dynamics::DEFAULT_FLUCTUATION),
+            )?,
             gas,
             spelling: sp,
         }))

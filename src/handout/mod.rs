@@ -127,7 +127,7 @@ impl Handout {
         Self {
             mechanism,
             angle,
-            omega: crate::analytic::kinematics::rpm_to_omega(250.0),
+            omega: crate::analytic::kinematics::rpm_to_omega(crate::sources::RPM),
             units: Units::FOOT_POUND,
             torque: None,
             friction: 0.0,

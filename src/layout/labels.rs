@@ -3,8 +3,6 @@
 
 use crate::figure::PageRect;
 use crate::geom::{Point, Vector, segment_distance};
-use rstar::primitives::{GeomWithData, Rectangle};
-use rstar::{RTree, RTreeObject};
 use std::cell::RefCell;
 use std::ops::{ControlFlow, RangeInclusive};
 
@@ -58,8 +56,7 @@ impl Bounds {
         w * h
     }
 
-    /// Whether the two boxes meet, touching included (as the index's
-    /// envelope query counts them).
+    /// Whether the two boxes meet, touching included.
     pub(crate) fn meets(&self, o: &Bounds) -> bool {
         self.min.x <= o.max.x
             && o.min.x <= self.max.x
@@ -108,9 +105,8 @@ pub(crate) struct Mark {
     pending: usize,
 }
 
-/// One obstacle in the spatial index: a segment or a box, by its index.
-type Entry = GeomWithData<Rectangle<[f64; 2]>, Obstacle>;
-
+/// One obstacle: a segment or a box, by its place in
+/// [`Obstacles::segments`] or [`Obstacles::boxes`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Obstacle {
     Segment(usize),
@@ -124,18 +120,18 @@ pub(crate) struct Obstacles {
     segments: Vec<(Point, Point, f64)>,
     /// Each box, and whether it is hollow ([`Obstacles::hollow`]).
     boxes: Vec<(Bounds, bool)>,
-    /// The obstacles built, in an R-tree: its order of search is the
-    /// order in which a place's costs are added ([`Near::cost_of`]).
-    index: RTree<Entry>,
-    /// The obstacles of `index` in its order, each with its box.
+    /// The obstacles built, each with its box, in the order they were
+    /// added: the order in which a place's costs are added
+    /// ([`Near::cost_of`]), so that a figure's placing depends on what
+    /// it draws and in which order, not on how an index was loaded.
     ordered: Vec<(Bounds, Obstacle)>,
     /// The obstacles of `ordered`, by their place in it, in the buckets of
     /// the cells they come within reach of: two grids, one reaching as far
     /// as three labels in four do, one as far as the largest.
     grids: [Grid; 2],
-    /// Obstacles added since the index was last built, looked at one by
+    /// Obstacles added since the grid was last built, looked at one by
     /// one.
-    pending: Vec<Entry>,
+    pending: Vec<(Bounds, Obstacle)>,
     /// Weight of the segments added next (thick links cost more to cover).
     weight: f64,
     /// Which segments open for a letter once it is placed (hatching, a
@@ -155,7 +151,6 @@ impl Default for Obstacles {
         Self {
             segments: Vec::new(),
             boxes: Vec::new(),
-            index: RTree::new(),
             ordered: Vec::new(),
             grids: [Grid::default(), Grid::default()],
             pending: Vec::new(),
@@ -167,8 +162,12 @@ impl Default for Obstacles {
     }
 }
 
-fn rectangle(a: Point, b: Point) -> Rectangle<[f64; 2]> {
-    Rectangle::from_corners([a.x, a.y], [b.x, b.y])
+/// The box of the segment `a b` (or of a box's corners).
+fn rectangle(a: Point, b: Point) -> Bounds {
+    Bounds {
+        min: a.inf(&b),
+        max: a.sup(&b),
+    }
 }
 
 impl Obstacles {
@@ -224,14 +223,12 @@ impl Obstacles {
             let i = self.segments.len();
             self.segments.push((a, b, self.weight));
             self.opening.push(self.opens);
-            self.pending
-                .push(GeomWithData::new(rectangle(a, b), Obstacle::Segment(i)));
+            self.pending.push((rectangle(a, b), Obstacle::Segment(i)));
         }
     }
 
-    /// Puts what was added so far into the R-tree (in one bulk load when
-    /// it is empty, which builds a better tree faster than inserting one
-    /// by one) and lists all of it in the tree's order. Beyond [`FEW`]
+    /// Lists what was added so far after what was built before, in the
+    /// order added. Beyond [`FEW`]
     /// obstacles (an animation's frame with its curves) it puts them, in
     /// that order, into a grid over `region`, where the labels will go
     /// (what lies beyond it falls in the grid's edge cells), for labels
@@ -240,19 +237,7 @@ impl Obstacles {
     /// [`MOST_REACH`], in a few). Up to [`FEW`], each label gathers the
     /// obstacles near it once ([`Obstacles::near`]).
     pub fn build(&mut self, region: &PageRect, halves: &[Vector]) {
-        let pending = std::mem::take(&mut self.pending);
-        if self.index.size() == 0 {
-            self.index = RTree::bulk_load(pending);
-        } else {
-            for entry in pending {
-                self.index.insert(entry);
-            }
-        }
-        self.ordered = self
-            .index
-            .iter()
-            .map(|entry| (envelope(entry), entry.data))
-            .collect();
+        self.ordered.append(&mut self.pending);
         let reach = |q: usize| {
             let most = Vector::new(quantile(halves, q, 0), quantile(halves, q, 1));
             (most + Vector::new(CLEARANCE, CLEARANCE)).inf(&MOST_REACH)
@@ -286,7 +271,7 @@ impl Obstacles {
         }
     }
 
-    /// Forgets what was added since `mark` was taken, if the index was not
+    /// Forgets what was added since `mark` was taken, if the grid was not
     /// built in between.
     pub fn rollback(&mut self, mark: Mark) {
         self.segments.truncate(mark.segments);
@@ -323,7 +308,7 @@ impl Obstacles {
             let i = self.boxes.len();
             self.boxes.push((b, hollow));
             self.pending
-                .push(GeomWithData::new(rectangle(b.min, b.max), Obstacle::Box(i)));
+                .push((rectangle(b.min, b.max), Obstacle::Box(i)));
         }
     }
 
@@ -333,10 +318,8 @@ impl Obstacles {
     /// hollow boxes that hold `anchor`, the point of the letter looked
     /// for.
     fn near(&self, within: &Bounds, anchor: Option<Point>) -> Near<'_> {
-        let pending = self
-            .pending
-            .iter()
-            .map(|entry| (envelope(entry), entry.data))
+        let pending = (self.pending.iter())
+            .copied()
             .filter(|(b, o)| b.meets(within) && anchor.is_none_or(|a| !self.holds(*o, a)))
             .collect();
         // Few obstacles: those near the label, gathered once for all its
@@ -398,16 +381,6 @@ fn quantile(halves: &[Vector], q: usize, axis: usize) -> f64 {
     v.get(at).copied().unwrap_or(0.0)
 }
 
-/// The box of an entry of the index.
-fn envelope(entry: &Entry) -> Bounds {
-    let e = entry.geom().envelope();
-    let (lo, hi) = (e.lower(), e.upper());
-    Bounds {
-        min: Point::new(lo[0], lo[1]),
-        max: Point::new(hi[0], hi[1]),
-    }
-}
-
 /// One label's search: the grid, and the few obstacles added since it was
 /// built that lie near the label.
 struct Near<'a> {
@@ -420,12 +393,12 @@ struct Near<'a> {
     within: Bounds,
     /// The point of the letter looked for, whose hollow box it may enter.
     anchor: Option<Point>,
-    /// Where the index holds no more than [`FEW`] obstacles, those of
+    /// Where the grid holds no more than [`FEW`] obstacles, those of
     /// them that meet `within`, less the hollow boxes that hold the
     /// anchor, in the grid's order: each place tried looks through these
     /// instead of the grid's buckets.
     found: Option<Vec<(Bounds, Obstacle)>>,
-    /// The obstacles added since the index was built that meet `within`,
+    /// The obstacles added since the grid was built that meet `within`,
     /// in the order they were added.
     pending: Vec<(Bounds, Obstacle)>,
     /// The obstacles of the grid that meet one candidate, by their place
@@ -467,12 +440,9 @@ impl Near<'_> {
     ///
     /// Only the obstacles in the buckets that hold all that meets `b` are
     /// looked at (one bucket of the grid that reaches as far as `b`, else
-    /// a few, [`Grid::cover`]), in the R-tree's order (a query of the
-    /// tree for any box hands out what it finds in that order: it walks
-    /// the same tree), then those added since, in the order added: the
-    /// sum is the same, term by term, as one over every obstacle whose box
-    /// meets `b`, as a search added it before the grid, and so is every
-    /// placement.
+    /// a few, [`Grid::cover`]), in the order added, then those added
+    /// since, in the order added: the sum is the same, term by term, as
+    /// one over every obstacle whose box meets `b` in the order added.
     fn cost_of(&self, b: &Bounds, least: f64, limit: f64) -> f64 {
         debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
@@ -1197,9 +1167,9 @@ mod tests {
     }
 
     #[test]
-    fn every_cost_is_the_sum_over_every_obstacle_near_in_the_index_order() {
+    fn every_cost_is_the_sum_over_every_obstacle_near_in_the_order_added() {
         // Segments and boxes scattered by a fixed recurrence, some huge,
-        // some a point, some hollow; the last fifty added after the index
+        // some a point, some hollow; the last fifty added after the grid
         // was built (as labels are).
         let mut o = Obstacles::default();
         let mut seed = 12345u64;
@@ -1237,14 +1207,11 @@ mod tests {
         let anchor = Point::new(47.3, 52.1);
         let within = Bounds::around(anchor, Vector::new(80.0, 80.0));
         let near = o.near(&within, Some(anchor));
-        // What a search looked at before: every obstacle meeting its
-        // bounds, the index's in the index's order, then those added
-        // since; not the hollow boxes holding its point.
-        let env =
-            rstar::AABB::from_corners([within.min.x, within.min.y], [within.max.x, within.max.y]);
-        let all: Vec<(Bounds, Obstacle)> = (o.index.locate_in_envelope_intersecting(env))
-            .chain(o.pending.iter())
-            .map(|entry| (envelope(entry), entry.data))
+        // What a search looked at before the grid: every obstacle
+        // meeting its bounds, in the order added; not the hollow boxes
+        // holding its point.
+        let all: Vec<(Bounds, Obstacle)> = (o.ordered.iter().chain(o.pending.iter()))
+            .copied()
             .filter(|(b, ob)| b.meets(&within) && !o.holds(*ob, anchor))
             .collect();
         assert!(all.len() < o.segments.len() + o.boxes.len(), "none held");

@@ -37,7 +37,7 @@ use crate::{angle::Angle, mechanism::SliderCrank, units::Unit, units::Units};
 use crate::diagram::DEFAULT_TOLERANCE;
 
 /// The bounds of a page's size, as a refusal gives them.
-/// How far, page units, a figure may end past a held page height (the
+/// How far, page units, a figure may end past a fixed page height (the
 /// rounding of its parts' sizes) before it is refused.
 const HEIGHT_SLACK: f64 = 0.5;
 /// The narrowest page a figure's own page is narrowed to
@@ -72,7 +72,8 @@ pub struct Page {
     height: f64,
     margin: f64,
     unit: PageUnit,
-    held: bool,
+    /// Whether the height is fixed ([`Page::with_fixed_height`]).
+    fixed_height: bool,
     fitted: bool,
 }
 
@@ -123,7 +124,7 @@ impl Page {
             height,
             margin,
             unit: PageUnit::Px,
-            held: false,
+            fixed_height: false,
             fitted: false,
         })
     }
@@ -183,13 +184,13 @@ impl Page {
         self
     }
 
-    /// The same page with its height held (the height an author asks
+    /// The same page with its height fixed (the height an author asks
     /// for): a mechanism figure fits its drawing within it, and one whose
     /// detail or notes would grow the page past it is refused by
     /// [`Scene::build`], naming the height it needs, instead of coming out
     /// taller than asked.
-    pub fn with_height_held(mut self) -> Self {
-        self.held = true;
+    pub fn with_fixed_height(mut self) -> Self {
+        self.fixed_height = true;
         self
     }
 
@@ -225,7 +226,7 @@ impl Page {
         let page = Self::new(width, self.height, self.margin)?;
         Ok(Self {
             unit: self.unit,
-            held: self.held,
+            fixed_height: self.fixed_height,
             fitted: self.fitted,
             ..page
         })
@@ -234,15 +235,16 @@ impl Page {
     /// The same page with its height the most the main drawing takes
     /// (the default): the page grows for a detail and for notes.
     pub(crate) fn with_height_free(mut self) -> Self {
-        self.held = false;
+        self.fixed_height = false;
         self
     }
 
-    /// Whether the height is held ([`Page::with_height_held`]); otherwise
-    /// it is the most the main drawing takes, and the page grows for a
-    /// detail and for notes.
-    pub fn holds_height(&self) -> bool {
-        self.held
+    /// Whether the height is fixed ([`Page::with_fixed_height`]);
+    /// otherwise it is the most the main drawing takes, and the page grows
+    /// for a detail and for notes. (A view is *held* over several poses,
+    /// [`Scene::with_held_view`]; a page's height is *fixed*.)
+    pub fn has_fixed_height(&self) -> bool {
+        self.fixed_height
     }
 
     /// The unit the SVG gives the page's size in (page units unless a
@@ -275,7 +277,7 @@ impl Default for Page {
             height: 460.0,
             margin: 16.0,
             unit: PageUnit::Px,
-            held: false,
+            fixed_height: false,
             fitted: false,
         }
     }
@@ -361,7 +363,7 @@ impl Scene {
             notation: Notation::Textbook,
             mirror: false,
             page: Page::default(),
-            omega: crate::analytic::kinematics::rpm_to_omega(250.0),
+            omega: crate::analytic::kinematics::rpm_to_omega(crate::sources::RPM),
             units: Units::FOOT_POUND,
             title: None,
             torque: 1.0,
@@ -774,7 +776,7 @@ impl Scene {
         }
         let (figure, evaluations) = draw::build(self, &layout);
         let page = self.page;
-        if page.holds_height() && figure.height() > page.height() + HEIGHT_SLACK {
+        if page.has_fixed_height() && figure.height() > page.height() + HEIGHT_SLACK {
             return Err(Error::OutOfRange {
                 name: Field::PageHeight,
                 value: page.height(),

@@ -141,11 +141,12 @@ pub fn dynamics_row(
 /// 250 rpm) with [`EXAMPLE_MASS`], no gas force, one cylinder, 4 decimals,
 /// at `angles` (degrees).
 pub fn example_table(angles: &[f64]) -> Result<Table> {
-    let m = crate::mechanism::SliderCrank::in_line(0.5, 3.0)?;
+    let (r, l) = crate::sources::ENGINE_35;
+    let m = crate::mechanism::SliderCrank::in_line(r, l)?;
     let engine = Engine::new(
         m,
         EXAMPLE_MASS,
-        crate::analytic::kinematics::rpm_to_omega(250.0),
+        crate::analytic::kinematics::rpm_to_omega(crate::sources::RPM),
     )?;
     let head = dynamics_head(&engine, &[0.0], FlywheelAsk::None, &Units::FOOT_POUND)?;
     let rows = angles

@@ -22,6 +22,7 @@ use crate::error::{Error, Field, Input, Result};
 use crate::mechanism::SliderCrank;
 pub use crate::number::fixed;
 use crate::number::{angle_cell, plain};
+use crate::sources::{ENGINE_35, NG_RIG, RPM};
 use crate::units::Units;
 pub use balance::{balance_head, balance_row};
 pub use chain_json::{
@@ -603,15 +604,15 @@ impl TableName {
                 acceleration_factor_table(&TEXTBOOK_RATIOS, &TEXTBOOK_ANGLES)
             }
             TableName::Kinematics => kinematics(
-                &SliderCrank::in_line(0.5, 3.0)?,
-                crate::analytic::kinematics::rpm_to_omega(250.0),
+                &SliderCrank::in_line(ENGINE_35.0, ENGINE_35.1)?,
+                crate::analytic::kinematics::rpm_to_omega(RPM),
                 &every(0, 360, 30),
                 4,
                 &Units::FOOT_POUND,
             ),
             TableName::Forces => forces(
-                &SliderCrank::in_line(25.0, 72.0)?,
-                crate::analytic::statics::NG_TORQUE,
+                &SliderCrank::in_line(NG_RIG.0, NG_RIG.1)?,
+                crate::sources::NG_TORQUE,
                 1.0,
                 &every(10, 160, 10),
                 2,

@@ -18,13 +18,14 @@ use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
 
-/// The coefficient of fluctuation of speed drawn when none is asked for.
-pub(crate) const DEFAULT_COEFFICIENT: f64 = 0.02;
-
 /// The coefficient asked for, else the default; refused unless
 /// 0 < C_s < 2 ([`crate::dynamics::checked_coefficient`]).
 fn coefficient(ctx: &Ctx) -> Result<f64> {
-    crate::dynamics::checked_coefficient(ctx.options.fluctuation.unwrap_or(DEFAULT_COEFFICIENT))
+    crate::dynamics::checked_coefficient(
+        ctx.options
+            .fluctuation
+            .unwrap_or(crate::dynamics::DEFAULT_FLUCTUATION),
+    )
 }
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {

@@ -10,11 +10,11 @@
 
 use super::{Ctx, PER_DEGREE, Sheet, Table, short, sig};
 use crate::analytic::statics;
-use crate::analytic::statics::NG_TORQUE;
 use crate::diagram::{Axis, Curve, Plot};
 use crate::error::{Error, Input, Result};
 use crate::figure::{Dash, Figure, Item, Role, Shape, Symbol};
 use crate::geom::{Point, Vector};
+use crate::sources::NG_TORQUE;
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
 
 /// Ng's measured F′ against θ.
@@ -86,7 +86,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 /// experiment it may show.
 fn ngs_rig(ctx: &Ctx) -> bool {
     let m = ctx.mechanism;
-    (m.crank(), m.rod()) == crate::catalogue::specs::NG_RIG && m.offset() == 0.0
+    (m.crank(), m.rod()) == crate::sources::NG_RIG && m.offset() == 0.0
 }
 
 /// The measured F′ against θ: the data given, else Ng's experiment on his

@@ -39,7 +39,6 @@ use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank, units::Unit, 
 use serde_json::{Map, Value, json};
 
 pub(crate) use crate::csv::Table;
-pub(crate) use flywheel::DEFAULT_COEFFICIENT;
 
 /// Radians per degree: the curves' parameter is θ in degrees.
 pub(crate) const PER_DEGREE: f64 = std::f64::consts::PI / 180.0;
@@ -196,7 +195,7 @@ pub(crate) fn build(name: FigureName, build: Builder, options: &FigureOptions) -
     name.refuse_unused(options)?;
     let omega = options
         .omega
-        .unwrap_or_else(|| crate::analytic::kinematics::rpm_to_omega(250.0));
+        .unwrap_or_else(|| crate::analytic::kinematics::rpm_to_omega(crate::sources::RPM));
     if !(omega > 0.0 && omega.is_finite()) {
         return Err(Error::OutOfRange {
             name: Field::Omega,

@@ -37,8 +37,8 @@ pub(super) struct Grid {
     chunk_starts: Vec<u32>,
     /// The box of each run of [`CHUNK`] shapes of a bucket (the last run
     /// perhaps shorter), each shape's box cut to its cell: shapes
-    /// together in the order of the shapes lie together (the R-tree's
-    /// order), so that a box that misses a run's skips it whole, as it
+    /// together in the order of the shapes lie together (the order they
+    /// were drawn in: a curve's segments one after another), so that a box that misses a run's skips it whole, as it
     /// does a hundred short segments piled at one point.
     chunks: Vec<Bounds>,
     /// Where each cell's boxes start in `groups` (as `starts`).

@@ -331,7 +331,7 @@ pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
 }
 
 /// The layout fitted to the pose of `ctx` with its notes' `band`; on a
-/// page whose height is held ([`crate::scene::Page::holds_height`]),
+/// page whose height is fixed ([`crate::scene::Page::has_fixed_height`]),
 /// fitted again with the main view shrunk by what the figure took past
 /// the height (the dimensions stacked below the guides, a detail), until
 /// it ends within it or [`HEIGHT_REFITS`] tries are spent (a detail's
@@ -343,7 +343,7 @@ fn fit_within(ctx: &LayerCtx, band: f64) -> Layout {
     let mut reserve = band;
     for _ in 0..HEIGHT_REFITS {
         let over = layout.height(band, page.margin()) - page.height();
-        if !page.holds_height() || over <= 0.0 {
+        if !page.has_fixed_height() || over <= 0.0 {
             break;
         }
         reserve += over;
@@ -353,7 +353,7 @@ fn fit_within(ctx: &LayerCtx, band: f64) -> Layout {
     layout
 }
 
-/// The most refits [`fit_within`] makes to end within a held height.
+/// The most refits [`fit_within`] makes to end within a fixed height.
 const HEIGHT_REFITS: usize = 4;
 
 impl Layout {

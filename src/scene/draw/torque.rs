@@ -3,12 +3,12 @@
 
 use super::velocity::basics_e;
 use super::{LayerCtx, NamedArrow};
-use crate::analytic::statics::NG_TORQUE;
 use crate::figure::{Hue, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
 use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
 use crate::scene::notation::Named::*;
+use crate::sources::NG_TORQUE;
 
 /// Length of the slider-force arrow, page units.
 const FORCE_ARROW: f64 = 64.0;
