@@ -235,6 +235,11 @@ ERRORS: List[Any] = [
 ]
 
 
+def test_an_engine_of_no_cylinder_is_refused() -> None:
+    with pytest.raises(ValueError, match="at least one cylinder"):
+        ENGINE.turning_moment(mass=1, phases=[])
+
+
 @pytest.mark.parametrize("call,flags", ERRORS)
 def test_bad_dynamics_carry_the_command_lines_message(
     cli: Cli, call: Callable[[], Any], flags: List[str]

@@ -42,6 +42,8 @@ mod explore;
 #[cfg(feature = "png")]
 mod fonts;
 #[cfg(feature = "png")]
+mod odd_text;
+#[cfg(feature = "png")]
 mod robustness;
 
 // PDF output
