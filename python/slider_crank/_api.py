@@ -298,7 +298,10 @@ class Analysis:
     ``q``, ``x``; q the image of the rod's middle) and the values read off
     them (``slider_velocity``, ``rod_angular_velocity``,
     ``slider_acceleration``, ``rod_angular_acceleration``,
-    ``normal_component``, ``tangential_component``), in the user's units.
+    ``normal_component``, ``tangential_component``), in the user's units,
+    and ``off_rod``, the images of a point of the rod's plane off its line
+    (``along`` 0.5 and ``across`` 0.25 rod lengths, left of A to B; its
+    ``velocity`` and ``acceleration``, by similar triangles).
     ``ritterhaus`` and ``bennett`` are Ritterhaus's and Bennett's
     constructions (docs/polygons.md): their points (K, F, G; L, K, F, G)
     and the piston's ``acceleration`` read off them; ``bennett`` is

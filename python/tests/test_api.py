@@ -86,3 +86,26 @@ def test_the_polygons_read_the_exact_values() -> None:
             construction["acceleration"], pose.analytic.acceleration, rel_tol=1e-12
         )
     assert sc.SliderCrank(1.0, 4.0, 0.5).at(30, rpm=250).bennett is None
+
+
+def test_the_polygons_carry_the_images_of_a_point_off_the_rod() -> None:
+    # Q = A + t (B - A) + h J(B - A), J a quarter turn counter-clockwise:
+    # its velocity is omega dQ/dtheta, here by central differences.
+    r, l, e, w = 1.0, 4.0, 0.5, 10.0
+
+    def point(th: float, t: float, h: float) -> tuple[float, float]:
+        wx = math.sqrt(l * l - (r * math.sin(th) - e) ** 2)
+        ax, ay = r * math.cos(th) + wx, e
+        bx, by = r * math.cos(th), r * math.sin(th)
+        dx, dy = bx - ax, by - ay
+        return ax + t * dx - h * dy, ay + t * dy + h * dx
+
+    for deg in (0.0, 45.0, 90.0, 200.0):
+        off = sc.SliderCrank(r, l, e).at(deg, omega=w).polygons["off_rod"]
+        t, h = off["along"], off["across"]
+        assert (t, h) == (0.5, 0.25)
+        th, d = math.radians(deg), 1e-5
+        ahead, behind = point(th + d, t, h), point(th - d, t, h)
+        for k in (0, 1):
+            rate = w * (ahead[k] - behind[k]) / (2 * d)
+            assert abs(off["velocity"][k] - rate) <= 1e-6 * w

@@ -142,15 +142,18 @@ impl InvertedChain {
         InversionPose::new(self.inversion, self.mechanism.pose(angle))
     }
 
-    /// The crank and slotted lever's time ratio (inversion 3): the crank a
-    /// turns at constant speed relative to the fixed rod b; the lever c
-    /// reaches its extremes where the crank is perpendicular to the stroke
-    /// (θ = 90°, 270°), and the crank turns π + φ(270°) − φ(90°) between
+    /// The quick return's time ratio of inversions 3 (the crank and
+    /// slotted lever) and 2 (Whitworth's): the driver (the crank a about
+    /// B in 3, the rod b about B in 2) turns at constant speed relative to
+    /// the fixed link; d reaches the ends of its swing (3) or of the tool's
+    /// stroke it drives (2) where the crank is perpendicular to the stroke
+    /// (θ = 90°, 270°), and the driver turns π + φ(270°) − φ(90°) between
     /// them one way and the rest of the turn the other: the ratio of the
-    /// longer to the shorter, (π + 2 asin(r/l)) / (π − 2 asin(r/l)) in line.
-    /// `None` for the other inversions.
+    /// longer to the shorter, (π + 2 asin(r/l)) / (π − 2 asin(r/l)) in
+    /// line for both (in Whitworth's, cos(α/2) = CB/BA = r/l for the
+    /// return's angle α). `None` for inversions 1 and 4.
     pub fn time_ratio(&self) -> Option<f64> {
-        if self.inversion != Inversion::Rod {
+        if !matches!(self.inversion, Inversion::Rod | Inversion::Crank) {
             return None;
         }
         let phi = |d: f64| {
@@ -334,6 +337,33 @@ mod tests {
         assert!((ratio - 2.0).abs() < 1e-15, "{ratio}");
         assert!(
             InvertedChain::new(m, Inversion::Frame)
+                .time_ratio()
+                .is_none()
+        );
+    }
+
+    #[test]
+    fn whitworth_time_ratio_in_line_and_with_an_offset() {
+        // In line, cos(α/2) = r/l for the return's angle α: r/l = 1/2
+        // gives α = 120° and (360 − 120)/120 = 2.
+        let m = SliderCrank::in_line(1.0, 2.0).unwrap();
+        let ratio = InvertedChain::new(m, Inversion::Crank)
+            .time_ratio()
+            .unwrap();
+        assert!((ratio - 2.0).abs() < 1e-15, "{ratio}");
+        // With an offset e the stroke's ends stand at φ = asin((r − e)/l)
+        // and asin((−r − e)/l): the return takes π − asin((r − e)/l) −
+        // asin((r + e)/l).
+        let (r, l, e) = (1.0_f64, 3.0_f64, 0.4_f64);
+        let m = SliderCrank::new(r, l, e).unwrap();
+        let swing = ((r - e) / l).asin() + ((r + e) / l).asin();
+        let expected = (PI + swing) / (PI - swing);
+        let ratio = InvertedChain::new(m, Inversion::Crank)
+            .time_ratio()
+            .unwrap();
+        assert!((ratio - expected).abs() < 1e-14, "{ratio} {expected}");
+        assert!(
+            InvertedChain::new(m, Inversion::Slider)
                 .time_ratio()
                 .is_none()
         );

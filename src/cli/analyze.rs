@@ -46,10 +46,10 @@ pub struct AnalyzeArgs {
 
 /// The numbers written for one angle, the columns of `--max-cells`: the
 /// mechanism (3), angle and ω (2), eight points (16), the analytic (6) and
-/// graphical (4) values, the polygons (21: seven vectors and seven
-/// numbers), Ritterhaus's (7: three points and CG) and Bennett's (9: four
+/// graphical (4) values, the polygons (27: seven vectors and seven
+/// numbers, and a point off the rod: along, across and its two images), Ritterhaus's (7: three points and CG) and Bennett's (9: four
 /// points and CG) constructions and six virtual centres (12).
-const VALUES_PER_ANGLE: u64 = 80;
+const VALUES_PER_ANGLE: u64 = 86;
 
 /// What `--torque` adds to [`VALUES_PER_ANGLE`]: the seven statics.
 const STATICS_VALUES: u64 = 7;

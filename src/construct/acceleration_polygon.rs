@@ -50,7 +50,7 @@ impl AccelerationPolygon {
         let across = perp(&rod);
         let t = -x.y / across.y;
         let a = Vector::new(x.x + t * across.x, 0.0);
-        let q = coupler.map(|p| a + (b - a) * p.t());
+        let q = coupler.map(|p| p.image(a, b));
         Self { b, x, a, q, rod }
     }
 

@@ -42,7 +42,7 @@ impl VelocityPolygon {
         let across = perp(&rod);
         let t = -b.y / across.y;
         let a = Vector::new(b.x + t * across.x, 0.0);
-        let q = coupler.map(|p| a + (b - a) * p.t());
+        let q = coupler.map(|p| p.image(a, b));
         Self { b, a, q, rod }
     }
 

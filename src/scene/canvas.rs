@@ -329,6 +329,50 @@ impl Canvas {
         }
     }
 
+    /// Records a named point in the metadata without drawing it: a point
+    /// that another's joint letter names where the two coincide on the
+    /// page (a folded polygon's b′ and x at θ = 90°).
+    pub(crate) fn record(&mut self, name: &str, p: Point) {
+        self.points
+            .insert(name.to_string(), json!([round(p.x), round(p.y)]));
+    }
+
+    /// Letters a polygon's points (name, markup, place; the pole `pole`)
+    /// with dots: those on the frame and outside `held` (a region a detail
+    /// letters) that stand within `crowd` page units of each other, as a
+    /// book letters coinciding images, by one letter at the first naming
+    /// them all ("*b*′, *x*"), the others recorded undrawn
+    /// ([`Canvas::record`]); every other point by its own letter.
+    pub(crate) fn letter_crowded(
+        &mut self,
+        points: &[(&str, &str, Point)],
+        crowd: f64,
+        pole: Point,
+        held: Option<Frame>,
+    ) {
+        let shown = |c: &Self, p: Point| c.contains(p) && !held.is_some_and(|f| f.contains(p));
+        let mut left: Vec<&(&str, &str, Point)> = points.iter().collect();
+        while !left.is_empty() {
+            let first = left.remove(0);
+            let mut group = vec![first];
+            while shown(self, first.2) {
+                let near = left.iter().position(|p| {
+                    shown(self, p.2) && group.iter().any(|g| self.page((g.2 - p.2).norm()) < crowd)
+                });
+                match near {
+                    Some(j) => group.push(left.remove(j)),
+                    None => break,
+                }
+            }
+            let joint: Vec<&str> = group.iter().map(|g| g.1).collect();
+            let text = RichText::parse(&joint.join(", "));
+            self.point_lettered(first.0, text, first.2, Marker::Dot, pole);
+            for g in group.iter().skip(1) {
+                self.record(g.0, g.2);
+            }
+        }
+    }
+
     /// A point's marker (`point-{name}`) and its letter (`label-{name}`).
     fn mark(&mut self, name: &str, p: Point, marker: Marker, letter: RichText) {
         let key = format!("point-{name}");

@@ -203,6 +203,11 @@ impl Serialize for StaticsJson<'_> {
 /// gives: its middle.
 const POLYGON_COUPLER: f64 = 0.5;
 
+/// The point off the rod's line whose images `polygons` gives as
+/// `off_rod`: halfway along AB and a quarter of AB to its left (a point
+/// of the rod as a plate, a bearing lug or a link's pin).
+const POLYGON_OFF_ROD: (f64, f64) = (0.5, 0.25);
+
 /// `polygons`: the velocity and acceleration polygons (docs/polygons.md)
 /// at the reading's ω, their vectors from the pole in the user's units
 /// (velocities ob, oa, oq; accelerations o′b′, o′x, o′a′, o′q′ of the
@@ -219,7 +224,7 @@ impl Serialize for Polygons<'_> {
         let a = AccelerationPolygon::construct(pose, &v, coupler);
         let vec = |x: Option<crate::geom::Vector>, k: f64| x.map(|x| pair(k * x.x, k * x.y));
         let w2 = w * w;
-        let mut m = s.serialize_map(Some(9))?;
+        let mut m = s.serialize_map(Some(10))?;
         let mut acc = std::collections::BTreeMap::new();
         acc.insert("a", vec(Some(a.a()), w2));
         acc.insert("b", vec(Some(a.b()), w2));
@@ -228,6 +233,18 @@ impl Serialize for Polygons<'_> {
         m.serialize_entry("acceleration", &acc)?;
         m.serialize_entry("coupler", &POLYGON_COUPLER)?;
         m.serialize_entry("normal_component", &num(w2 * (a.x() - a.b()).norm()))?;
+        let (along, across) = POLYGON_OFF_ROD;
+        let off = CouplerPoint::off_rod(along, across).ok();
+        let (off_v, off_a) = (
+            off.map(|p| p.image(v.a(), v.b())),
+            off.map(|p| p.image(a.a(), a.b())),
+        );
+        let mut off_rod = std::collections::BTreeMap::new();
+        off_rod.insert("along", Some(serde_json::json!(along)));
+        off_rod.insert("across", Some(serde_json::json!(across)));
+        off_rod.insert("velocity", vec(off_v, w).map(|p| serde_json::json!(p)));
+        off_rod.insert("acceleration", vec(off_a, w2).map(|p| serde_json::json!(p)));
+        m.serialize_entry("off_rod", &off_rod)?;
         m.serialize_entry(
             "rod_angular_acceleration",
             &num(w2 * a.rod_angular_acceleration_ratio()),

@@ -74,6 +74,10 @@ pub struct Plate {
     pub ink: Vec<(String, Rect)>,
     /// The metadata `points`, in world coordinates.
     pub world_points: HashMap<String, Pt>,
+    /// The diagram panels that draw a polygon (an id holding `polygon`):
+    /// their point markers by letter (after any prefix, `detail-point-k`
+    /// as `k`) and their letters.
+    pub polygons: Vec<Panel>,
 }
 
 /// The fonts labels are laid out with: the one place to change when the
@@ -285,6 +289,8 @@ enum Place {
     Mechanism(usize),
     /// Outside every panel, or in the notes panel.
     Page,
+    /// Inside the polygon panel of this index in [`Plate::polygons`].
+    Polygon(usize),
     /// Inside a diagram panel (plots): only its ink counts.
     Diagram,
 }
@@ -369,6 +375,14 @@ impl Plate {
         if id == "panel-notes" {
             return Place::Page;
         }
+        if id.contains("polygon") {
+            self.polygons.push(Panel {
+                id: id.to_string(),
+                page_from_world,
+                ..Panel::default()
+            });
+            return Place::Polygon(self.polygons.len() - 1);
+        }
         if id != "panel-mechanism" && !id.starts_with("panel-detail") {
             return Place::Diagram;
         }
@@ -399,6 +413,14 @@ impl Plate {
 
     fn add_path(&mut self, svg: &str, path: &usvg::Path, ctx: &Context) {
         self.add_ink(ctx, Rect::from_usvg(path.abs_stroke_bounding_box()));
+        if let Place::Polygon(i) = ctx.place
+            && let Some((_, letter)) = ctx.owner.split_once("point-")
+        {
+            let b = Rect::from_usvg(path.abs_bounding_box());
+            let centre = ((b.x0 + b.x1) / 2.0, (b.y0 + b.y1) / 2.0);
+            let markers = &mut self.polygons[i].markers;
+            markers.entry(letter.to_string()).or_insert(centre);
+        }
         let Place::Mechanism(i) = ctx.place else {
             return;
         };
@@ -455,6 +477,7 @@ impl Plate {
         match ctx.place {
             Place::Mechanism(i) => self.panels[i].labels.push(label),
             Place::Page => self.page_labels.push(label),
+            Place::Polygon(i) => self.polygons[i].labels.push(label),
             Place::Diagram => {}
         }
     }

@@ -300,3 +300,141 @@ fn analyze_json_carries_the_polygons_readings() {
         assert!((speed - w).abs() <= 1e-12 * w, "{deg}");
     }
 }
+
+/// The position of the point `t` along AB and `h` across it (in lengths
+/// AB, to the left of A → B) at θ, by hand: A = (r cos θ + w, e),
+/// B = r (cos θ, sin θ), w = √(l² − (r sin θ − e)²).
+fn off_rod_point(m: &SliderCrank, th: f64, t: f64, h: f64) -> Vector {
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let w = (l * l - (r * th.sin() - e).powi(2)).sqrt();
+    let a = Vector::new(r * th.cos() + w, e);
+    let b = Vector::new(r * th.cos(), r * th.sin());
+    let ab = b - a;
+    a + ab * t + Vector::new(-ab.y, ab.x) * h
+}
+
+#[test]
+fn a_point_off_the_rod_has_the_images_of_the_similar_triangles() {
+    // Q = A + t (B − A) + h J(B − A): its velocity per ω is
+    // A′ + t (B′ − A′) + h J(B′ − A′) with B′ = r (−sin θ, cos θ) and
+    // A′ = (−r sin θ − r cos θ (r sin θ − e)/w, 0), and its acceleration
+    // the same with B″ = −r (cos θ, sin θ) and A″ = (d²s/dθ², 0),
+    // d²s/dθ² = −r cos θ − r² cos²θ l²/w³ + r sin θ (r sin θ − e)/w.
+    // Each is also checked against central differences of the position.
+    for (r, l, e) in [
+        (1.0, 4.0, 0.0),
+        (1.0, 3.0, 1.5),
+        (0.5, 1.6, -0.9),
+        (1.0, 60.0, 0.0),
+    ] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for (t, h) in [(0.5, 0.25), (0.0, -0.4), (1.0, 1.0), (0.3, -2.0)] {
+            let q = CouplerPoint::off_rod(t, h).unwrap();
+            for deg in angles() {
+                let pose = m.pose(Angle::deg(deg));
+                let v = VelocityPolygon::construct(&pose, Some(q));
+                let acc = AccelerationPolygon::construct(&pose, &v, Some(q));
+                let th = deg.to_radians();
+                let (s, c) = (th.sin(), th.cos());
+                let y = r * s - e;
+                let w = (l * l - y * y).sqrt();
+                let a1 = Vector::new(-r * s - r * c * y / w, 0.0);
+                let b1 = Vector::new(-r * s, r * c);
+                let a2 = Vector::new(
+                    -r * c - r * r * c * c * l * l / w.powi(3) + r * s * y / w,
+                    0.0,
+                );
+                let b2 = Vector::new(-r * c, -r * s);
+                let turn = |x: Vector| Vector::new(-x.y, x.x);
+                let vel = a1 + (b1 - a1) * t + turn(b1 - a1) * h;
+                let accel = a2 + (b2 - a2) * t + turn(b2 - a2) * h;
+                let size = r * (1.0 + h.abs()) * (l / w).powi(3);
+                let got_v = v.q().unwrap();
+                let got_a = acc.q().unwrap();
+                assert!(
+                    (got_v - vel).norm() <= 1e-12 * size,
+                    "{r} {l} {e} {t} {h} {deg}"
+                );
+                assert!(
+                    (got_a - accel).norm() <= 1e-12 * size,
+                    "{r} {l} {e} {t} {h} {deg}"
+                );
+                // The point itself and the exact derivatives agree.
+                let at = q.point(&pose);
+                let hand = off_rod_point(&m, th, t, h);
+                assert!((at.coords - hand).norm() <= 1e-12 * l * (1.0 + h.abs()));
+                assert!((q.derivative(&pose) - vel).norm() <= 1e-12 * size);
+                assert!((q.second_derivative(&pose) - accel).norm() <= 1e-12 * size);
+                // Central differences of the hand-written position.
+                let d = 1e-4;
+                let (p0, pp, pm) = (
+                    hand,
+                    off_rod_point(&m, th + d, t, h),
+                    off_rod_point(&m, th - d, t, h),
+                );
+                let fd_v = (pp - pm) / (2.0 * d);
+                let fd_a = (pp - p0 * 2.0 + pm) / (d * d);
+                assert!((fd_v - vel).norm() <= 1e-6 * size, "{deg}");
+                assert!(
+                    (fd_a - accel).norm() <= 1e-4 * size,
+                    "{deg}: {fd_a} {accel}"
+                );
+                // Similar triangles: abq is ABQ turned and scaled alike,
+                // |bq| / |ba| = |BQ| / |BA| and the same for a′b′q′.
+                let ratio = ((1.0 - t).powi(2) + h * h).sqrt();
+                let ab = v.b() - v.a();
+                if ab.norm() > 1e-9 * r {
+                    let bq = got_v - v.b();
+                    assert!((bq.norm() - ratio * ab.norm()).abs() <= 1e-10 * size);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_point_off_the_rod_is_refused_beyond_a_hundred_rods() {
+    assert!(CouplerPoint::off_rod(0.5, 100.0).is_ok());
+    assert!(CouplerPoint::off_rod(0.5, 100.5).is_err());
+    assert!(CouplerPoint::off_rod(0.5, f64::NAN).is_err());
+    assert!(CouplerPoint::off_rod(1.5, 0.0).is_err());
+    assert_eq!(
+        CouplerPoint::off_rod(0.5, 0.0).unwrap(),
+        CouplerPoint::new(0.5).unwrap()
+    );
+}
+
+#[test]
+fn analyze_json_carries_the_images_of_a_point_off_the_rod() {
+    use slider_crank::construct::Reading;
+    let m = SliderCrank::new(1.0, 4.0, 0.5).unwrap();
+    let w = 10.0;
+    for deg in [0.0, 45.0, 90.0, 200.0] {
+        let pose = m.pose(Angle::deg(deg));
+        let reading = Reading::new(&pose, w, None, 0.0).unwrap();
+        let json = reading.to_json(&m, &slider_crank::Units::default());
+        let off = &json["polygons"]["off_rod"];
+        let (t, h) = (
+            off["along"].as_f64().unwrap(),
+            off["across"].as_f64().unwrap(),
+        );
+        assert_eq!((t, h), (0.5, 0.25));
+        // Its velocity is the time rate of the hand-written position,
+        // ω dQ/dθ, by central differences.
+        let th = deg.to_radians();
+        let d = 1e-5;
+        let rate = (off_rod_point(&m, th + d, t, h) - off_rod_point(&m, th - d, t, h)) / (2.0 * d);
+        let got = &off["velocity"];
+        let got = Vector::new(got[0].as_f64().unwrap(), got[1].as_f64().unwrap());
+        assert!(
+            (got - rate * w).norm() <= 1e-6 * w,
+            "{deg}: {got} {}",
+            rate * w
+        );
+        let q = CouplerPoint::off_rod(t, h).unwrap();
+        let acc = &off["acceleration"];
+        let acc = Vector::new(acc[0].as_f64().unwrap(), acc[1].as_f64().unwrap());
+        let exact = q.second_derivative(&pose) * (w * w);
+        assert!((acc - exact).norm() <= 1e-12 * w * w * 4.0, "{deg}");
+    }
+}

@@ -64,7 +64,19 @@ mod old {
             "rod_angular_acceleration": num(w2 * a.rod_angular_acceleration_ratio()),
             "normal_component": num(w2 * (a.x() - a.b()).norm()),
             "tangential_component": num(w2 * a.tangential().norm()),
+            "off_rod": {
+                "along": 0.5, "across": 0.25,
+                "velocity": at(off(v.a(), v.b()), w),
+                "acceleration": at(off(a.a(), a.b()), w2),
+            },
         })
+    }
+
+    /// The image of the point halfway along AB and AB/4 to its left, by
+    /// the similar triangles: a + (b − a)/2 + J(b − a)/4.
+    fn off(a: Vector, b: Vector) -> Vector {
+        let ab = b - a;
+        a + ab * 0.5 + Vector::new(-ab.y, ab.x) * 0.25
     }
 
     /// Ritterhaus's construction, added beside the polygons.

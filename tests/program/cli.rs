@@ -371,6 +371,22 @@ fn analyze_quadric_chain_and_inversions() {
     ]);
     assert!((v["time_ratio"].as_f64().unwrap() - 2.0).abs() < 1e-14);
     assert_eq!(v["fixed"], "b");
+    // Whitworth's (inversion 2) at r/l = 1/2: cos(α/2) = 1/2 for the
+    // return's angle α = 120°, time ratio (360 − 120)/120 = 2, and the
+    // chain's ratio is the quick return's.
+    let w = json(&[
+        "analyze",
+        "--crank",
+        "1",
+        "--rod",
+        "2",
+        "--inversion",
+        "2",
+        "--json",
+    ]);
+    let ratio = w["time_ratio"].as_f64().unwrap();
+    assert!((ratio - 2.0).abs() < 1e-14, "{ratio}");
+    assert_eq!(w["time_ratio"], w["quick_return"]["time_ratio"]);
     assert_eq!(v["links"]["b"]["angular_velocity"], 0.0);
     // The hand pump's handle at the end of its swing: no motion, no NaN.
     let v = json(&["analyze", "--inversion", "4", "--angle", "90", "--json"]);

@@ -59,7 +59,12 @@ const RULE_SUBJECT: &str = "9 subject readable";
 const RULE_ALONG: &str = "10 no arrow along a link";
 const RULE_CIRCLE: &str = "11 guides off the crank circle";
 const RULE_FIXED: &str = "12 fixed link hatched";
-const RULE_VALUE: &str = "13 a link's value nearest its link";
+const RULE_PILE: &str = "13 polygon letters apart";
+/// Two images of a polygon, each with its own letter, pile when their
+/// dots stand closer than this many font sizes (a polygon folded onto a
+/// line set b′, x, a′ and q′ within a few px, each lettered).
+const PILE_EM: f64 = 1.0;
+const RULE_VALUE: &str = "14 a link's value nearest its link";
 /// The values that name a link's length, each with the link it names.
 const LINK_VALUES: [(&str, &str); 2] = [("value-r", "link-crank"), ("value-l", "link-rod")];
 
@@ -826,6 +831,37 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
     out
 }
 
+/// Rule 13: the images of a polygon (lower-case letters, in the
+/// polygon panels and on the mechanism panel) whose dots stand within
+/// [`PILE_EM`] of each other are not lettered each by its own letter, and
+/// no two of their letters overlap: coinciding images share one letter.
+fn polygon_letters_pile(plate: &Plate) -> Vec<Failure> {
+    let lower = |l: &str| l.chars().next().is_some_and(char::is_lowercase);
+    let mut out = Vec::new();
+    for panel in plate.polygons.iter().chain(&plate.panels) {
+        let lettered: Vec<(&String, Pt, &Label)> = (panel.markers.iter())
+            .filter(|(l, _)| lower(l))
+            .filter_map(|(l, &at)| {
+                let own = |x: &&Label| x.id.rsplit_once("label-").is_some_and(|(_, k)| k == l);
+                Some((l, at, panel.labels.iter().find(own)?))
+            })
+            .collect();
+        for (i, (p, at, a)) in lettered.iter().enumerate() {
+            for (q, bt, b) in &lettered[i + 1..] {
+                let d = (at.0 - bt.0).hypot(at.1 - bt.1);
+                let overlap = (a.rect.shrunk(GLYPH_SLACK)).overlaps(&b.rect.shrunk(GLYPH_SLACK));
+                if d < PILE_EM * a.font_size.max(b.font_size) || overlap {
+                    out.push(fail(
+                        RULE_PILE,
+                        format!("{}: {p} and {q} {d:.1} px apart, each lettered", panel.id),
+                    ));
+                }
+            }
+        }
+    }
+    out
+}
+
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
@@ -938,6 +974,7 @@ fn inspect(
             found.extend(subject_small(&plate, figure));
             found.extend(arrows_along_links(&plate));
             found.extend(fixed_link_unhatched(&plate, figure));
+            found.extend(polygon_letters_pile(&plate));
             found
         }
         Err(e) => vec![fail(RULE_BUILD, e.to_string())],
@@ -1440,6 +1477,55 @@ fn a_rod_through_hatching_is_caught() {
     let hatch =
         r##"<path id="hatch-guide-extra" class="frame" d="M105 134 L110 146" stroke="#000"/>"##;
     assert_eq!(rules(&clean_with(hatch), true), [RULE_GUIDES]);
+}
+
+/// A polygon panel of the Coriolis figures with `body` in it, on the
+/// clean plate.
+fn with_polygon(body: &str) -> String {
+    let panel = format!(
+        r##"<g id="panel-acceleration-polygon" data-page-from-world="1 0 0 1 0 0">{body}</g>"##
+    );
+    clean_with(&panel)
+}
+
+/// Dots of `a2` at (200, 60) and `n` `apart` px to its right, lettered
+/// each by its own letter (`joint` false) or both by a2's.
+fn piled(apart: f64, joint: bool) -> String {
+    let dot = |id: &str, x: f64| {
+        format!(r##"<circle id="point-{id}" class="construction" cx="{x}" cy="60" r="2"/>"##)
+    };
+    let mut body = dot("a2", 200.0);
+    if joint {
+        body += r##"<text id="label-a2" class="label" x="204" y="52" font-size="17">a′, n</text>"##;
+    } else {
+        body += &dot("n", 200.0 + apart);
+        body += r##"<text id="label-a2" class="label" x="190" y="52" font-size="17">a′</text>"##;
+        body += &format!(
+            r##"<text id="label-n" class="label" x="{}" y="52" font-size="17">n</text>"##,
+            206.0 + apart
+        );
+    }
+    with_polygon(&body)
+}
+
+#[test]
+fn a_folded_polygon_whose_letters_pile_is_caught() {
+    let pile = |svg: &str| {
+        let found = polygon_letters_pile(&Plate::read(svg));
+        found.iter().filter(|f| f.rule == RULE_PILE).count()
+    };
+    // a′ and n 6 px apart, each lettered: the knot of a folded polygon.
+    assert_eq!(pile(&piled(6.0, false)), 1);
+    // 40 px apart they read apart; one letter naming both reads too.
+    assert_eq!(pile(&piled(40.0, false)), 0);
+    assert_eq!(pile(&piled(6.0, true)), 0);
+    // The same knot on a mechanism panel (the polygons layer) is caught
+    // there, its images being lower-case.
+    let knot = r##"<circle id="point-b2" class="construction" cx="200" cy="60" r="2"/>
+<circle id="point-x" class="construction" cx="203" cy="62" r="2"/>
+<text id="label-b2" class="label" x="186" y="52" font-size="17">b′</text>
+<text id="label-x" class="label" x="208" y="52" font-size="17">x</text>"##;
+    assert_eq!(pile(&clean_with(knot)), 1);
 }
 
 #[test]

@@ -48,6 +48,30 @@ const PAD: f64 = 0.16;
 /// hide it (a zero vector, at the dead centres, is not drawn).
 const MIN_ARROW: f64 = 12.0;
 
+/// The page length under which a polygon's subject (the sliding velocity,
+/// the Coriolis component) in its panel gets an enlarged detail: at a
+/// long rod the driven point's velocity and acceleration make the polygon
+/// a needle and the subject a few units at its tip.
+const SUBJECT_LEAST: f64 = 40.0;
+
+/// The most the subject is drawn in its detail, page units.
+const SUBJECT_MOST: f64 = 200.0;
+
+/// Room kept in a detail between its frame and the points it enlarges,
+/// page units (their letters).
+const DETAIL_PAD: f64 = 40.0;
+
+/// The detail panels' height, page units.
+const DETAIL_HEIGHT: f64 = 240.0;
+
+/// Page distance under which two points of a polygon crowd: one letter
+/// names them both ("*k*, *a*′_{d}"), as a book letters coinciding images.
+const CROWD: f64 = 24.0;
+
+/// The least side of the box marking a detail's region on the polygon,
+/// page units.
+const BOX_LEAST: f64 = 16.0;
+
 /// The steps a scale bar's length is chosen from (times a power of ten).
 const STEPS: [f64; 4] = [1.0, 2.0, 2.5, 5.0];
 
@@ -69,6 +93,28 @@ type Lettered = (&'static str, &'static str, Vector);
 
 /// A vector of a polygon: its id, its role, from, to.
 type Arrow = (&'static str, Role, Vector, Vector);
+
+/// The side of a polygon the figure is about: from, to.
+type Subject = (Vector, Vector);
+
+/// A polygon as its panels draw it.
+struct Drawn<'a> {
+    name: &'a str,
+    caption: &'a str,
+    points: Vec<Lettered>,
+    arrows: Vec<Arrow>,
+    hue: Hue,
+    per: &'a str,
+    subject: Option<Subject>,
+}
+
+/// The region of a polygon its detail enlarges (world, from the pole)
+/// and the magnification over the polygon's panel.
+#[derive(Debug, Clone, Copy)]
+struct Window {
+    frame: Frame,
+    magnification: f64,
+}
 
 impl Polygons {
     /// The velocity polygon's points: o, the driven point's image, a_d.
@@ -213,6 +259,28 @@ impl Polygons {
         }
     }
 
+    /// The velocity polygon's subject, the sliding velocity: o a_d in
+    /// inversion 3, a_d a in inversion 2; `None` where it is nil.
+    fn velocity_subject(&self) -> Option<Subject> {
+        let p = &self.p;
+        let side = match self.inversion {
+            Inversion::Rod => (Vector::zeros(), p.a_d()),
+            _ => (p.a_d(), p.driven()),
+        };
+        (self.clean((side.1 - side.0).norm(), 1.0, false) > 0.0).then_some(side)
+    }
+
+    /// The acceleration polygon's subject, the Coriolis component: o′k in
+    /// inversion 3, ka′ in inversion 2; `None` where it is nil.
+    fn acceleration_subject(&self) -> Option<Subject> {
+        let p = &self.p;
+        let side = match self.inversion {
+            Inversion::Rod => (Vector::zeros(), self.k()),
+            _ => (self.k(), p.driven_acceleration()),
+        };
+        (self.clean(p.coriolis().norm(), 1.0, true) > 0.0).then_some(side)
+    }
+
     /// The sliding velocity v whose turn gives the Coriolis component: d's
     /// point relative to the block in inversion 3, the block relative to
     /// d in inversion 2, as a vector along the slot.
@@ -275,28 +343,39 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let mechanism = mechanism_plot(ctx, &pose)?;
     let top = mechanism.rect().y + mechanism.rect().height + GAP;
     let [v_rect, a_rect, rule_rect] = row(page.width(), top, POLYGON_HEIGHT);
-    let (velocity, v_bar, v_points) = polygon_plot(
-        ctx,
-        "velocity-polygon",
-        v_rect,
-        "velocity polygon",
-        &polygons.velocity_points(),
-        &polygons.velocity_arrows(),
-        Hue::Velocity,
-        "/s",
-        |_, _| {},
-    )?;
-    let (acceleration, a_bar, a_points) = polygon_plot(
-        ctx,
-        "acceleration-polygon",
-        a_rect,
-        "acceleration polygon",
-        &polygons.acceleration_points(),
-        &polygons.acceleration_arrows(),
-        Hue::Acceleration,
-        "/s²",
-        |s, points| right_angles(s, &polygons, points),
-    )?;
+    let [v_below, a_below, _] = row(page.width(), top + POLYGON_HEIGHT + GAP, DETAIL_HEIGHT);
+    let area = |r: PageRect| (r.width, r.height - crate::diagram::CAPTION);
+    let velocity_drawn = Drawn {
+        name: "velocity-polygon",
+        caption: "velocity polygon",
+        points: polygons.velocity_points(),
+        arrows: polygons.velocity_arrows(),
+        hue: Hue::Velocity,
+        per: "/s",
+        subject: polygons.velocity_subject(),
+    };
+    let acceleration_drawn = Drawn {
+        name: "acceleration-polygon",
+        caption: "acceleration polygon",
+        points: polygons.acceleration_points(),
+        arrows: polygons.acceleration_arrows(),
+        hue: Hue::Acceleration,
+        per: "/s²",
+        subject: polygons.acceleration_subject(),
+    };
+    let nothing = |_: &mut Canvas| {};
+    let angles = |s: &mut Canvas| right_angles(s, &polygons);
+    let (velocity, v_bar, v_points, v_window) =
+        polygon_plot(ctx, v_rect, &velocity_drawn, area(v_below), &nothing)?;
+    let (acceleration, a_bar, a_points, a_window) =
+        polygon_plot(ctx, a_rect, &acceleration_drawn, area(a_below), &angles)?;
+    let mut details = Vec::new();
+    if let Some(w) = v_window {
+        details.push(detail_plot(ctx, v_below, &velocity_drawn, &w, &nothing)?);
+    }
+    if let Some(w) = a_window {
+        details.push(detail_plot(ctx, a_below, &acceleration_drawn, &w, &angles)?);
+    }
     let rule = rule_plot(ctx, rule_rect, &polygons)?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
@@ -308,7 +387,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.plot(velocity);
     sheet.plot(acceleration);
     sheet.plot(rule);
-    let bottom = top + POLYGON_HEIGHT + 6.0;
+    let mut bottom = top + POLYGON_HEIGHT + 6.0;
+    if !details.is_empty() {
+        bottom += GAP + DETAIL_HEIGHT;
+    }
+    for d in details {
+        sheet.plot(d);
+    }
     sheet.height(bottom + NOTES_LINES * super::NOTE_LINE + MARGIN);
     sheet.notes(
         Point::new(20.0, bottom),
@@ -399,57 +484,56 @@ fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
 }
 
 /// A polygon's panel: its vectors as arrows (those long enough to carry
-/// a head), its points lettered, a scale bar of a round length below,
-/// and what `more` adds; returns the plot, the bar's length and the
-/// points' places (from the pole, in velocity or acceleration units).
-#[allow(clippy::too_many_arguments)]
+/// a head), its points lettered (those that crowd by one letter), a
+/// scale bar of a round length below, and what `more` adds; where its
+/// subject is drawn shorter than [`SUBJECT_LEAST`], the region about it
+/// is boxed and left to a detail of `detail` page units (its points are
+/// lettered there). Returns the plot, the bar's length, the points'
+/// places (from the pole, in velocity or acceleration units) and the
+/// detail's window.
 fn polygon_plot(
     ctx: &Ctx,
-    name: &str,
     rect: PageRect,
-    caption: &str,
-    points: &[Lettered],
-    arrows: &[Arrow],
-    hue: Hue,
-    per: &str,
-    more: impl FnOnce(&mut Canvas, &[Lettered]),
-) -> Result<(Plot, f64, Value)> {
-    let (world, extent) = polygon_frame(points);
-    let mut plot =
-        Plot::world(name, rect, &world, false, ctx.tolerance, ctx.font)?.with_caption(caption);
+    drawn: &Drawn,
+    detail: (f64, f64),
+    more: &impl Fn(&mut Canvas),
+) -> Result<(Plot, f64, Value, Option<Window>)> {
+    let (world, extent) = polygon_frame(&drawn.points);
+    let mut plot = Plot::world(drawn.name, rect, &world, false, ctx.tolerance, ctx.font)?
+        .with_caption(drawn.caption);
     let map = *plot.map();
+    let window = drawn
+        .subject
+        .and_then(|side| window(&drawn.points, side, map.scale(), detail));
     let mut s = Canvas::new(map, map.world_frame(&plot.area()));
-    let old = s.set_hue(Some(hue));
-    let at = |v: Vector| Point::from(v);
-    for (id, role, from, to) in arrows {
+    if let Some(w) = window {
+        s = s.quiet(w.frame);
+    }
+    let old = s.set_hue(Some(drawn.hue));
+    for (id, role, from, to) in &drawn.arrows {
         if s.page((to - from).norm()) >= MIN_ARROW {
             s.push(
                 *id,
                 *role,
                 Shape::Arrow {
-                    from: at(*from),
-                    to: at(*to),
+                    from: Point::from(*from),
+                    to: Point::from(*to),
                 },
             );
         }
     }
-    more(&mut s, points);
+    more(&mut s);
     s.set_hue(old);
-    for (id, markup, p) in points {
-        s.point_lettered(
-            id,
-            RichText::parse(markup),
-            at(*p),
-            Marker::Dot,
-            Point::origin(),
-        );
+    if let Some(w) = window {
+        mark_window(&mut s, drawn.name, &w.frame);
     }
+    letter(&mut s, &drawn.points, window.map(|w| w.frame));
     let bar = round_below(0.45 * extent);
     let y = world.min().y + 0.08 * extent;
     let x = world.min().x + PAD * extent * 0.5;
-    let unit = format!("{}{per}", ctx.unit());
+    let unit = format!("{}{}", ctx.unit(), drawn.per);
     s.push(
-        format!("{name}-bar"),
+        format!("{}-bar", drawn.name),
         Role::Dimension,
         Shape::Dimension {
             from: Point::new(x, y),
@@ -463,13 +547,137 @@ fn polygon_plot(
     for item in items {
         plot.push(item);
     }
-    Ok((plot, bar, Value::Object(points)))
+    Ok((plot, bar, Value::Object(points), window))
+}
+
+/// The region a polygon's detail enlarges, where its subject `side` is
+/// drawn shorter than [`SUBJECT_LEAST`] at `scale` (page units per unit):
+/// the points crowding about the subject (within [`CROWD`] of it or of
+/// each other) whole where they fit the detail's `area` with the subject
+/// at most [`SUBJECT_MOST`], else the subject at twice [`SUBJECT_LEAST`]
+/// about its middle (the long sides run off the detail's edge); the
+/// magnification a round step. `None` where the subject reads in the
+/// polygon itself.
+fn window(points: &[Lettered], side: Subject, scale: f64, area: (f64, f64)) -> Option<Window> {
+    let length = (side.1 - side.0).norm();
+    if length <= 0.0 || !length.is_finite() || length * scale >= SUBJECT_LEAST {
+        return None;
+    }
+    let mut crowd = vec![side.0, side.1];
+    loop {
+        let near = points
+            .iter()
+            .map(|p| p.2)
+            .find(|p| !crowd.contains(p) && crowd.iter().any(|c| (c - p).norm() * scale < CROWD));
+        match near {
+            Some(p) => crowd.push(p),
+            None => break,
+        }
+    }
+    let lo = crowd.iter().fold(side.0, |m, p| m.inf(p));
+    let hi = crowd.iter().fold(side.0, |m, p| m.sup(p));
+    let size = hi - lo;
+    let room = (area.0 - 2.0 * DETAIL_PAD, area.1 - 2.0 * DETAIL_PAD);
+    let fit = (room.0 / size.x).min(room.1 / size.y);
+    let wanted = fit
+        .min(SUBJECT_MOST / length)
+        .max(2.0 * SUBJECT_LEAST / length);
+    let magnification = round_below(wanted / scale).max(1.0);
+    let detail = magnification * scale;
+    let centre = if detail <= fit * (1.0 + 1e-9) {
+        (lo + hi) * 0.5
+    } else {
+        (side.0 + side.1) * 0.5
+    };
+    let half = Vector::new(area.0, area.1) * (0.5 / detail);
+    let frame = Frame::new(Point::from(centre - half), Point::from(centre + half));
+    Some(Window {
+        frame,
+        magnification,
+    })
+}
+
+/// The box on a polygon marking the region its detail enlarges (at
+/// least [`BOX_LEAST`] a side).
+fn mark_window(s: &mut Canvas, name: &str, frame: &Frame) {
+    let least = s.world(BOX_LEAST);
+    let size = frame.max() - frame.min();
+    let grow = Vector::new((least - size.x).max(0.0), (least - size.y).max(0.0)) * 0.5;
+    let seen = *s.frame();
+    let lo = (frame.min() - grow).sup(&seen.min());
+    let hi = (frame.max() + grow).inf(&seen.max());
+    s.push(
+        format!("{name}-detail-box"),
+        Role::Auxiliary,
+        Shape::Polyline {
+            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
+            closed: true,
+        },
+    );
+}
+
+/// Letters the polygon's `points`, those crowding within [`CROWD`] by
+/// one letter, those in the region left to a detail (`quiet`) not here.
+fn letter(s: &mut Canvas, points: &[Lettered], quiet: Option<Frame>) {
+    let points: Vec<(&str, &str, Point)> = (points.iter())
+        .map(|(id, markup, at)| (*id, *markup, Point::from(*at)))
+        .collect();
+    s.letter_crowded(&points, CROWD, Point::origin(), quiet);
+}
+
+/// The detail of a polygon: the region of `window` enlarged in `rect`,
+/// its sides clipped at the edge (an arrowhead where the side ends
+/// inside), its points there lettered, captioned with the
+/// magnification.
+fn detail_plot(
+    ctx: &Ctx,
+    rect: PageRect,
+    drawn: &Drawn,
+    window: &Window,
+    more: &impl Fn(&mut Canvas),
+) -> Result<Plot> {
+    let name = format!("{}-detail", drawn.name);
+    let caption = format!(
+        "{}: the boxed region enlarged ×{}",
+        drawn.caption,
+        short(window.magnification)
+    );
+    let mut plot = Plot::world(&name, rect, &window.frame, false, ctx.tolerance, ctx.font)?
+        .with_caption(&caption);
+    let map = *plot.map();
+    let mut s = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
+    let old = s.set_hue(Some(drawn.hue));
+    for (id, role, from, to) in &drawn.arrows {
+        let (from, to) = (Point::from(*from), Point::from(*to));
+        // The piece inside the frame; a side that misses it has none (the
+        // clip of its line lies beyond its ends).
+        let inside = s.frame().clip_segment(from, to).filter(|(p, q)| {
+            let middle = Point::from((p.coords + q.coords) * 0.5);
+            s.contains(middle) && s.page((q - p).norm()) >= 0.5
+        });
+        let Some((tail, head)) = inside else {
+            continue;
+        };
+        let role = *role;
+        if s.contains(to) && s.page((to - tail).norm()) >= MIN_ARROW {
+            s.push(*id, role, Shape::Arrow { from: tail, to });
+        } else {
+            s.segment(*id, role, tail, head);
+        }
+    }
+    more(&mut s);
+    s.set_hue(old);
+    letter(&mut s, &drawn.points, None);
+    for item in s.finish().0 {
+        plot.push(item);
+    }
+    Ok(plot)
 }
 
 /// The right angles of the acceleration polygon: d's tangential component
 /// against its normal one at n, the Coriolis component against the slot
 /// at k, each where both arms are long enough on the page to hold it.
-fn right_angles(s: &mut Canvas, polygons: &Polygons, _points: &[Lettered]) {
+fn right_angles(s: &mut Canvas, polygons: &Polygons) {
     let p = &polygons.p;
     let n = p.n();
     let k = polygons.k();
@@ -484,7 +692,8 @@ fn right_angles(s: &mut Canvas, polygons: &Polygons, _points: &[Lettered]) {
         ("angle-n", n, normal, tangential),
         ("angle-k", k, coriolis, sliding),
     ] {
-        if s.page(u.norm()) >= 2.0 * RIGHT_ANGLE && s.page(v.norm()) >= 2.0 * RIGHT_ANGLE {
+        let seen = s.contains(Point::from(vertex));
+        if seen && s.page(u.norm()) >= 2.0 * RIGHT_ANGLE && s.page(v.norm()) >= 2.0 * RIGHT_ANGLE {
             s.push(
                 id,
                 Role::Construction,

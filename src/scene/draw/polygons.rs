@@ -196,13 +196,6 @@ fn id(ctx: &LayerCtx, n: Named, prime: bool) -> String {
     if prime { format!("{letter}2") } else { letter }
 }
 
-/// The acceleration image of `n` at `at`, lettered `b′` with the id
-/// and metadata name `b2` (a prime is no character of an XML id).
-fn primed(ctx: &LayerCtx, canvas: &mut Canvas, n: Named, at: Point, pole: Point) {
-    let letter = RichText::parse(&image(ctx, n, true));
-    canvas.point_lettered(&id(ctx, n, true), letter, at, Marker::Dot, pole);
-}
-
 /// A vector of a polygon as an arrow (`{kind}-{p}{q}`), where it is long
 /// enough on the page to carry its head.
 fn vector(canvas: &mut Canvas, id: String, role: Role, from: Point, to: Point) {
@@ -229,12 +222,13 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     v_points.extend(v.q);
     let mut a_points = vec![a.o, a.a, a.b, a.x];
     a_points.extend(a.q);
-    // Named below each where their names fit side by side (a page held
-    // to a small height may draw them closer: the notes name the poles).
     let middle = |p: &[Point]| {
         let xs = p.iter().map(|p| p.x);
         0.5 * (xs.clone().fold(f64::INFINITY, f64::min) + xs.fold(f64::NEG_INFINITY, f64::max))
     };
+    // Named below each where their names fit side by side, else both
+    // in one line below the pair (a folded polygon near 90° is a needle
+    // a few units wide, and the two stand closer than their names).
     if canvas.page((middle(&v_points) - middle(&a_points)).abs()) >= CAPTIONS_APART {
         caption(
             canvas,
@@ -247,6 +241,13 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
             "caption-acceleration-polygon",
             "acceleration polygon",
             &a_points,
+        );
+    } else {
+        caption(
+            canvas,
+            "caption-polygons",
+            "velocity polygon (left), acceleration polygon (right)",
+            &[v_points, a_points].concat(),
         );
     }
 }
@@ -309,13 +310,27 @@ fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
     if let Some(q) = p.q {
         vector(canvas, format!("velocity-{o}q"), Role::Auxiliary, p.o, q);
     }
-    let letters = [(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
-    for (n, at) in letters {
-        canvas.point(&id(ctx, n, false), at, Marker::Dot, p.o);
-    }
-    if let Some(q) = p.q {
-        canvas.point(&id(ctx, Coupler, false), q, Marker::Dot, p.o);
-    }
+    let mut letters = vec![(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
+    letters.extend(p.q.map(|q| (Coupler, q)));
+    let letters = letters
+        .into_iter()
+        .map(|(n, at)| (id(ctx, n, false), image(ctx, n, false), at))
+        .collect::<Vec<_>>();
+    letter(canvas, &letters, p.o);
+}
+
+/// Page distance under which two points of a polygon crowd: one letter
+/// names them all (b and a at θ = 90°, where the rod translates), as a
+/// book letters coinciding images.
+const CROWD: f64 = 24.0;
+
+/// Letters a polygon's points (id, markup, place) from the pole `pole`,
+/// those crowding within [`CROWD`] by one letter.
+fn letter(canvas: &mut Canvas, points: &[(String, String, Point)], pole: Point) {
+    let points: Vec<(&str, &str, Point)> = (points.iter())
+        .map(|(id, markup, at)| (id.as_str(), markup.as_str(), *at))
+        .collect();
+    canvas.letter_crowded(&points, CROWD, pole, None);
 }
 
 fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
@@ -376,14 +391,20 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
             },
         );
     }
-    let letters = [(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
-    for (n, at) in letters {
-        primed(ctx, canvas, n, at, p.o);
-    }
-    canvas.point("x", p.x, Marker::Dot, p.o);
+    let mut letters = vec![
+        (
+            id(ctx, CrankCentre, true),
+            image(ctx, CrankCentre, true),
+            p.o,
+        ),
+        (id(ctx, CrankPin, true), image(ctx, CrankPin, true), p.b),
+        ("x".to_string(), "*x*".to_string(), p.x),
+        (id(ctx, Slider, true), image(ctx, Slider, true), p.a),
+    ];
     if let Some(q) = p.q {
-        primed(ctx, canvas, Coupler, q, p.o);
+        letters.push((id(ctx, Coupler, true), image(ctx, Coupler, true), q));
     }
+    letter(canvas, &letters, p.o);
 }
 
 /// The notes that state the polygons' scales and read them: the velocity
