@@ -51,7 +51,7 @@ pub use gas::{
     example_indicator,
 };
 pub use inline::{
-    BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Resultant,
+    BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Polygon, Resultant,
     default_planes,
 };
 pub use loads::EngineLoads;

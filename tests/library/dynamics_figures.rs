@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{attr, metadata, read_text};
+use common::{attr, metadata, num, read_text};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
 
@@ -363,5 +363,126 @@ fn the_flywheel_holds_the_speed_within_its_coefficient() {
         let mut o = FigureOptions::default();
         o.fluctuation = Some(bad);
         assert!(FigureName::Flywheel.figure(&o).is_err(), "{bad}");
+    }
+}
+
+/// The sum of the world vectors of the arrows `ids` in `panel` (those
+/// the figure draws).
+fn arrow_sum(svg: &str, panel: &str, ids: &[String]) -> (f64, f64) {
+    ids.iter()
+        .filter(|id| svg.contains(&format!("id=\"{id}\"")))
+        .map(|id| world_arrow(svg, panel, id))
+        .fold((0.0, 0.0), |a, v| (a.0 + v.0, a.1 + v.1))
+}
+
+#[test]
+fn the_balance_polygons_close_or_leave_the_couples_of_three_cranks_at_120_degrees() {
+    for l in [3.0, 0.6, 15.0] {
+        let r = 0.5;
+        let n = l / r;
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::in_line(r, l).unwrap());
+        let svg = to_svg(&FigureName::InlineBalance.figure(&o).unwrap());
+        // Cranks at 0°, 120°, 240°, planes −1, 0, 1: each side
+        // a (cos α, sin α), a = 1 for a force, the plane for a couple, at
+        // 2α and ÷ n for the secondary.
+        let planes = [-1.0, 0.0, 1.0];
+        for (name, twice, couple) in [
+            ("primary-force", 1.0, false),
+            ("primary-couple", 1.0, true),
+            ("secondary-force", 2.0, false),
+            ("secondary-couple", 2.0, true),
+        ] {
+            let panel = format!("panel-{name}");
+            let scale = if twice > 1.0 { 1.0 / n } else { 1.0 };
+            let mut want = (0.0, 0.0);
+            let mut ids = Vec::new();
+            for (i, a) in planes.iter().enumerate() {
+                let t = (twice * 120.0 * i as f64).to_radians();
+                let w = scale * if couple { *a } else { 1.0 };
+                want = (want.0 + w * t.cos(), want.1 + w * t.sin());
+                let id = format!("force-{name}-{}", i + 1);
+                if w == 0.0 {
+                    assert!(!svg.contains(&format!("id=\"{id}\"")), "{id}");
+                    continue;
+                }
+                let side = world_arrow(&svg, &panel, &id);
+                let tol = 2e-3 * scale;
+                assert!(
+                    (side.0 - w * t.cos()).abs() < tol && (side.1 - w * t.sin()).abs() < tol,
+                    "{id}: {side:?}"
+                );
+                ids.push(id);
+            }
+            // The sides end where the resultant does: at the origin for
+            // the forces (closed, no closing side drawn), at √3 (÷ n) for
+            // the couples, the dashed closing side from the origin.
+            let end = arrow_sum(&svg, &panel, &ids);
+            let closing = format!("resultant-{name}");
+            if couple {
+                assert!((want.0.hypot(want.1) - 3f64.sqrt() * scale).abs() < 1e-12);
+                let drawn = world_arrow(&svg, &panel, &closing);
+                for v in [drawn, end] {
+                    assert!(
+                        (v.0 - want.0).abs() < 4e-3 * scale && (v.1 - want.1).abs() < 4e-3 * scale,
+                        "{name} at n = {n}: {v:?} for {want:?}"
+                    );
+                }
+            } else {
+                assert!(want.0.hypot(want.1) < 1e-12);
+                assert!(end.0.hypot(end.1) < 4e-3 * scale, "{name}: {end:?}");
+                assert!(!svg.contains(&format!("id=\"{closing}\"")), "{name}");
+            }
+        }
+        let text = read_text(&svg);
+        assert!(
+            text.contains(&format!("primary couple {}", four(3f64.sqrt()))),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn the_crank_pin_load_of_a_massless_rod_at_90_degrees_is_the_force_along_the_rod() {
+    // A constant gas force G, in line, at θ = 90°: B = (0, r), the rod
+    // runs from B to A = (w, 0), w = √(l² − r²); the slider's
+    // acceleration is ω² r²/w (d²x/dθ² = −r cos θ − r² cos 2θ/w − … by
+    // hand), so the piston effort towards the crank is F = G + m ω² r²/w,
+    // and a massless rod, a two-force member, puts F/cos φ along A → B on
+    // the crank pin: (−F, F r/w). Relative to the crank (along it, across
+    // it) that is (F r/w, F).
+    for (r, l, gas, mass) in [
+        (0.5, 3.0, 2000.0, 10.0),
+        (1.0, 1.3, -500.0, 2.0),
+        (0.2, 4.0, 0.0, 7.0),
+    ] {
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::in_line(r, l).unwrap());
+        o.gas_force = Some(gas);
+        o.mass = Some(mass);
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+        let w = (l * l - r * r).sqrt();
+        let f = gas + mass * omega() * omega() * r * r / w;
+        let meta = metadata(&svg);
+        let largest = meta["crank_pin_loads"]["largest_without_rod"]
+            .as_f64()
+            .unwrap();
+        for (panel, want) in [("fixed", (-f, f * r / w)), ("relative", (f * r / w, f))] {
+            // The marks are every 30° from 0°: 90° is the fourth.
+            let id = format!("point-{panel}-without-rod-4");
+            let map = panel_map(&svg, &format!("panel-{panel}"));
+            let got = to_world(&map, (num(&svg, &id, "cx"), num(&svg, &id, "cy")));
+            assert!(
+                (got.0 - want.0).abs() < 2e-3 * largest && (got.1 - want.1).abs() < 2e-3 * largest,
+                "{panel} r {r} l {l}: {got:?} for {want:?}"
+            );
+        }
+        // The rod's own inertia changes the load: a rod of 0.6 m, its
+        // centre l/3 from B, k = 0.3 l, written in the notes.
+        let text = read_text(&svg);
+        assert!(
+            text.contains(&format!("the rod {}", four(0.6 * mass))),
+            "{text}"
+        );
     }
 }

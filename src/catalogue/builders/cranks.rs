@@ -122,7 +122,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 
 /// A force arrow and its label at its middle, or nothing for an arrow
 /// shorter than `least`.
-fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> {
+pub(super) fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> {
     if (to - from).norm() <= least {
         return Vec::new();
     }
@@ -146,7 +146,7 @@ fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> 
 }
 
 /// A thin line between two points.
-fn line(id: &str, role: Role, from: Point, to: Point) -> Item {
+pub(super) fn line(id: &str, role: Role, from: Point, to: Point) -> Item {
     Item::new(
         id,
         role,

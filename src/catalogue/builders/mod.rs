@@ -4,6 +4,7 @@
 
 pub(super) mod acceleration;
 pub(super) mod approximation;
+pub(super) mod balance;
 pub(super) mod benchmark;
 pub(super) mod calibration;
 pub(super) mod centrodes;
@@ -17,6 +18,7 @@ pub(super) mod forces;
 pub(super) mod incline;
 pub(super) mod inertia;
 pub(super) mod inversions;
+pub(super) mod loads;
 pub(super) mod quick_return;
 pub(super) mod rod;
 pub(super) mod turning;
