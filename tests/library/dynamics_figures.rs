@@ -486,3 +486,105 @@ fn the_crank_pin_load_of_a_massless_rod_at_90_degrees_is_the_force_along_the_rod
         );
     }
 }
+
+/// The two ends (world) of the dimension `id` in `panel`: the tips of its
+/// two heads, the filled paths of its group.
+fn dimension_ends(svg: &str, panel: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let map = panel_map(svg, panel);
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let group = &svg[at..at + svg[at..].find("</g>").unwrap()];
+    let tips: Vec<(f64, f64)> = group
+        .split("<path d=\"M")
+        .skip(1)
+        .filter(|p| p.contains("Z\""))
+        .map(|p| {
+            let mut xy = p.split([' ', 'L']).filter(|s| !s.is_empty());
+            let x = xy.next().unwrap().parse().unwrap();
+            let y = xy.next().unwrap().parse().unwrap();
+            to_world(&map, (x, y))
+        })
+        .collect();
+    assert_eq!(tips.len(), 2, "{id}: {group}");
+    (tips[0], tips[1])
+}
+
+#[test]
+fn the_direct_and_reverse_cranks_panels_each_say_their_scale_by_a_true_bar() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        for (panel, id) in [
+            ("panel-primary", "bar-primary"),
+            ("panel-secondary", "bar-secondary"),
+            ("panel-sum", "bar-sum"),
+        ] {
+            let (a, b) = dimension_ends(&svg, panel, id);
+            let at = svg.find(&format!("id=\"{id}-text\"")).unwrap();
+            let start = at + svg[at..].find('>').unwrap() + 1;
+            let text = &svg[start..start + svg[start..].find('<').unwrap()];
+            let said: f64 = text
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap_or_else(|_| panic!("{id}: {text}"));
+            let drawn = (b.0 - a.0).hypot(b.1 - a.1);
+            assert!(
+                (drawn - said).abs() < 3e-3 * said,
+                "{id} at {deg}°: {drawn} drawn, {said} said"
+            );
+            assert!(text.contains("lbf"), "{text}");
+        }
+    }
+}
+
+#[test]
+fn the_turning_moment_letters_every_area_and_draws_delta_e_as_a_dimension() {
+    let svg = to_svg(
+        &FigureName::TurningMoment
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    let text = read_text(&svg);
+    // The notes' areas a_1 … a_k, read back: each lettered on the plot,
+    // summing to 0 over the turn (the mean line's definition), and ΔE the
+    // greatest less the least of their running sums from 0.
+    let notes = &text[text.find("Areas between").unwrap()..];
+    let areas: Vec<f64> = notes
+        .split(" = ")
+        .skip(1)
+        .map(|s| {
+            let v: String = s
+                .chars()
+                .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | '+' | '−'))
+                .collect();
+            v.replace('−', "-").replace('+', "").parse().unwrap()
+        })
+        .collect();
+    assert_eq!(areas.len(), 5, "{notes}");
+    for k in 1..=areas.len() {
+        assert!(svg.contains(&format!("id=\"label-lobe-{k}\"")), "a_{k}");
+    }
+    let largest = areas.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    assert!(
+        areas.iter().sum::<f64>().abs() < 1e-3 * largest,
+        "{areas:?}"
+    );
+    let (mut run, mut hi, mut lo) = (0.0, 0.0f64, 0.0f64);
+    for a in &areas {
+        run += a;
+        hi = hi.max(run);
+        lo = lo.min(run);
+    }
+    let (a, b) = dimension_ends(&svg, "panel-energy", "dimension-fluctuation");
+    assert!(a.0 == b.0, "a vertical dimension: {a:?} {b:?}");
+    let drawn = (b.1 - a.1).abs();
+    assert!(
+        (drawn - (hi - lo)).abs() < 2e-3 * (hi - lo),
+        "{drawn} for {}",
+        hi - lo
+    );
+    let delta = metadata(&svg)["fluctuation"].as_f64().unwrap();
+    assert!((delta - (hi - lo)).abs() < 1e-3 * delta, "{delta}");
+}

@@ -99,7 +99,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let world = Frame::new(centre - reach, centre + reach + Vector::new(0.0, room));
         let mut plot = polar_plot(ctx, engines, &kinks, cycle, relative, rect, &world)?;
         if !relative {
-            bar = round_below(0.4 * size.x.max(size.y));
+            bar = super::round_below(0.4 * size.x.max(size.y));
             plot.push(scale_bar(ctx, &world, bar, pad));
         }
         sheet.plot(plot);
@@ -185,32 +185,11 @@ fn bounds(samples: &[[Vector; 2]]) -> (Point, Point) {
     (lo, hi)
 }
 
-/// The largest of 1, 2, 2.5 and 5 times a power of ten not above `x`
-/// (positive and finite): a scale bar's length.
-fn round_below(x: f64) -> f64 {
-    let decade = 10f64.powf(x.log10().floor());
-    [1.0, 2.0, 2.5, 5.0]
-        .iter()
-        .map(|s| s * decade)
-        .filter(|s| *s <= x * (1.0 + 1e-12))
-        .fold(decade, f64::max)
-}
-
 /// The force scale's bar, `bar` long, at the lower left of `world`.
 fn scale_bar(ctx: &Ctx, world: &Frame, bar: f64, pad: f64) -> Item {
-    let (x, y) = (world.min().x + 0.5 * pad, world.min().y + 0.25 * pad);
-    Item::new(
-        "fixed-bar",
-        Role::Dimension,
-        Shape::Dimension {
-            from: Point::new(x, y),
-            to: Point::new(x + bar, y),
-            // Its text above it, clear of the caption below the panel.
-            side: Vector::new(0.0, 1.0),
-            offset: 0.0,
-            text: RichText::parse(&format!("{} {}", short(bar), ctx.units.force())),
-        },
-    )
+    let from = Point::new(world.min().x + 0.5 * pad, world.min().y + 0.25 * pad);
+    let text = format!("{} {}", short(bar), ctx.units.force());
+    super::scale_bar("fixed-bar", from, bar, &text)
 }
 
 /// The polar curve of the load between the kinks `a` and `b` (degrees),

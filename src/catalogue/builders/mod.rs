@@ -187,6 +187,33 @@ pub(super) fn short_arc(centre: Point, radius: f64, start: f64, end: f64) -> Sha
     }
 }
 
+/// The largest of 1, 2, 2.5 and 5 times a power of ten not above `x`
+/// (positive and finite): a scale bar's length.
+pub(super) fn round_below(x: f64) -> f64 {
+    let decade = 10f64.powf(x.log10().floor());
+    [1.0, 2.0, 2.5, 5.0]
+        .iter()
+        .map(|s| s * decade)
+        .filter(|s| *s <= x * (1.0 + 1e-12))
+        .fold(decade, f64::max)
+}
+
+/// A scale bar `id`, `length` long to the right of `from` (world), its
+/// text `text` above it.
+pub(super) fn scale_bar(id: &str, from: Point, length: f64, text: &str) -> Item {
+    Item::new(
+        id,
+        Role::Dimension,
+        Shape::Dimension {
+            from,
+            to: Point::new(from.x + length, from.y),
+            side: Vector::new(0.0, 1.0),
+            offset: 0.0,
+            text: RichText::parse(text),
+        },
+    )
+}
+
 /// A diagram's builder: the figure from the options resolved.
 pub(crate) type Builder = fn(&Ctx) -> Result<Figure>;
 
