@@ -94,8 +94,12 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let rect = PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, tall);
         let centre = Point::new(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
         let reach = 0.5 * size + Vector::new(pad, pad);
-        // Room above for the legend, at the panel's scale.
-        let room = (size.x + 2.0 * pad) * legend / half;
+        // Room above for the legend, at the panel's scale: the scale the
+        // fit will take, the width's or, on a low page, the height's
+        // with the legend's band taken off.
+        let (wide, high) = (size.x + 2.0 * pad, size.y + 2.0 * pad);
+        let scale = (half / wide).min((tall - crate::diagram::CAPTION - legend).max(1.0) / high);
+        let room = legend / scale;
         let world = Frame::new(centre - reach, centre + reach + Vector::new(0.0, room));
         let mut plot = polar_plot(ctx, engines, &kinks, cycle, relative, rect, &world)?;
         if !relative {
@@ -250,7 +254,9 @@ fn polar_plot(
             .iter()
             .map(|(c, r)| (c as &dyn Curve, r.clone()))
             .collect();
-        plot.curve(&format!("curve-{name}-{id}"), &traced, dash, Some(legend))?;
+        // Named load-*, not curve-*: no exact reference of its own is
+        // measured against it yet (the loads are tested at the marks).
+        plot.curve(&format!("load-{name}-{id}"), &traced, dash, Some(legend))?;
         let marks: Vec<(f64, f64)> = (0..(cycle / MARK) as usize)
             .filter_map(|k| load(engine, k as f64 * MARK, relative))
             .map(|v| (v.x, v.y))
