@@ -417,7 +417,7 @@ fn no_dynamics(text: &str, file: &File) -> Result<()> {
             text,
             span,
             format!(
-                "`{key}` is a key of the engine dynamics diagrams (turning-moment, inertia-force, primary-secondary, direct-reverse-cranks, flywheel), not of a mechanism figure"
+                "`{key}` is a key of the engine dynamics diagrams (turning-moment, inertia-force, primary-secondary, direct-reverse-cranks, flywheel, crank-pin-loads), not of a mechanism figure"
             ),
         )),
         None => Ok(()),

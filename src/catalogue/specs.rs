@@ -577,6 +577,31 @@ figures! {
         kind: Diagram(Diagrams, builders::cranks::build),
         takes: &[MECH, Speed, Angle, Mass, Style, Font],
     },
+    /// The force and couple polygons of an in-line engine's balance: the
+    /// primary and secondary forces and couples of three cylinders at
+    /// 120°, each polygon's closing side its resultant.
+    InlineBalance => FigureSpec {
+        name: "inline-balance",
+        source: Book("§35, eq. (3): its two terms summed over the cylinders of an in-line engine, the balancing of the reciprocating masses as a course in the dynamics of machines draws it (docs/dynamics.md §6); no figure in either seed"),
+        caption: "Three cylinders in line with cranks at 120°, a pitch of 1 and the reference plane through the middle one, n = 6: the primary and secondary force polygons close (the forces balance), the couple polygons do not, their closing sides √3 and √3/n the unbalanced couples.",
+        mechanism: ENGINE,
+        at: NoPose,
+        page: (900.0, 760.0),
+        kind: Diagram(Diagrams, builders::balance::build),
+        takes: &[MECH, Style, Font],
+    },
+    /// The polar load diagram of the crank pin over a turn, with and
+    /// without the rod's inertia, in fixed axes and relative to the crank.
+    CrankPinLoads => FigureSpec {
+        name: "crank-pin-loads",
+        source: Book("§35–37 (the piston’s acceleration) with Ng’s forces through the rod, carried to the bearing loads of the whole engine by Newton–Euler on the slider and the rod (docs/dynamics.md §3); no figure in either seed"),
+        caption: "The turning-moment figure’s engine with an illustrative rod (mass 0.6 of the reciprocating mass, its centre of mass l/3 from the crank pin, radius of gyration 0.3 l): the load of the rod on the crank pin over a turn, with the rod’s inertia and without it, (a) in fixed axes (the main bearing’s load) and (b) relative to the crank.",
+        mechanism: ENGINE,
+        at: NoPose,
+        page: (900.0, 760.0),
+        kind: Diagram(Diagrams, builders::loads::build),
+        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Style, Font],
+    },
     /// The flywheel: the energy stored above its least over the turn,
     /// rising by the fluctuation of energy ΔE, and the crank speed with
     /// the flywheel I = ΔE / (ω² C_s) of a coefficient of fluctuation of
@@ -651,7 +676,7 @@ mod tests {
             .collect();
         assert_eq!(order, FigureName::ALL);
         assert_eq!(FigureName::SCENES.len(), 10);
-        assert_eq!(FigureName::DIAGRAMS.len(), 25);
+        assert_eq!(FigureName::DIAGRAMS.len(), 27);
     }
 
     #[test]

@@ -98,7 +98,7 @@ pub struct FigureFlags {
     pub font: Option<Font>,
     /// Measured data, CSV with a header line: ng-fig-8-forces (columns
     /// angle, force; default examples/ng-experiment.csv, Ng's F'),
-    /// turning-moment and flywheel (an indicator diagram: fraction,
+    /// turning-moment, flywheel and crank-pin-loads (an indicator diagram: fraction,
     /// expansion, compression, gauge pressures in force/length², a unit
     /// declared in a header such as "expansion (N/mm²)" checked against
     /// the units; give --bore; default examples/indicator.csv, lbf/ft²),
@@ -113,7 +113,7 @@ pub struct FigureFlags {
     pub fit: Option<Fit>,
     /// Reciprocating mass m of the engine dynamics figures
     /// (turning-moment, inertia-force, primary-secondary,
-    /// direct-reverse-cranks), in the unit that makes mass × length/s² the
+    /// direct-reverse-cranks, flywheel, crank-pin-loads), in the unit that makes mass × length/s² the
     /// force unit (slug with ft and lbf, kg with m and N) [default: 10]
     #[arg(long, value_name = "M", allow_hyphen_values = true)]
     pub mass: Option<f64>,
@@ -122,12 +122,12 @@ pub struct FigureFlags {
     /// [default: 0.02]
     #[arg(long, value_name = "CS", allow_hyphen_values = true)]
     pub fluctuation: Option<f64>,
-    /// The bore D of the cylinder of turning-moment and flywheel, on which
+    /// The bore D of the cylinder of turning-moment, flywheel and crank-pin-loads, on which
     /// the indicator diagram of --data acts, in the length unit [default:
     /// the example's 10 in, with ft and lbf only]
     #[arg(long, value_name = "D", allow_hyphen_values = true)]
     pub bore: Option<f64>,
-    /// A constant gas force on the piston of turning-moment and flywheel,
+    /// A constant gas force on the piston of turning-moment, flywheel and crank-pin-loads,
     /// positive towards the crank centre, in the force unit, in place of
     /// an indicator diagram
     #[arg(long, value_name = "F", allow_hyphen_values = true)]

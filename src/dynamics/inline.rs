@@ -43,6 +43,29 @@ pub struct Resultant {
     pub balanced: bool,
 }
 
+/// One of the four polygons of an in-line engine's balance.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Polygon {
+    /// The primary forces: unit sides along the cranks.
+    PrimaryForce,
+    /// The primary couples about the reference plane.
+    PrimaryCouple,
+    /// The secondary forces: sides 1/n at twice the cranks' angles.
+    SecondaryForce,
+    /// The secondary couples.
+    SecondaryCouple,
+}
+
+impl Polygon {
+    /// The four, primary then secondary, force then couple.
+    pub const ALL: [Polygon; 4] = [
+        Polygon::PrimaryForce,
+        Polygon::PrimaryCouple,
+        Polygon::SecondaryForce,
+        Polygon::SecondaryCouple,
+    ];
+}
+
 /// The balance of an in-line engine: its cylinders' crank angles and
 /// distances from the reference plane, checked, and the four resultants.
 ///
@@ -128,6 +151,52 @@ impl InlineEngine {
         ]
         .iter()
         .all(|r| r.balanced)
+    }
+
+    /// The polygon `part`'s sides, cylinder by cylinder, per unit m r ω²
+    /// as [`Resultant::vector`] is: cylinder i's unit vector along its
+    /// crank at α_i (at 2α_i for the secondary), times a_i for a couple,
+    /// ÷ n for the secondary. Drawn head to tail from the origin they end
+    /// at the resultant; a cylinder in the reference plane has a couple's
+    /// side of length 0.
+    pub fn sides(&self, part: Polygon) -> Vec<[f64; 2]> {
+        let (twice, couple) = match part {
+            Polygon::PrimaryForce => (false, false),
+            Polygon::PrimaryCouple => (false, true),
+            Polygon::SecondaryForce => (true, false),
+            Polygon::SecondaryCouple => (true, true),
+        };
+        let scale = if twice { 1.0 / self.ratio } else { 1.0 };
+        self.cranks_deg
+            .iter()
+            .zip(&self.planes)
+            .map(|(&d, &a)| {
+                // The cranks were checked finite in `new`.
+                let (c, s) = Angle::from_degrees(d).map_or((1.0, 0.0), |a| (a.cos(), a.sin()));
+                let (c, s) = if twice {
+                    (c * c - s * s, 2.0 * s * c)
+                } else {
+                    (c, s)
+                };
+                let w = scale * if couple { a } else { 1.0 };
+                [w * c, w * s]
+            })
+            .collect()
+    }
+
+    /// The resultant of the polygon `part`: one of the four fields.
+    pub fn resultant(&self, part: Polygon) -> Resultant {
+        match part {
+            Polygon::PrimaryForce => self.primary_force,
+            Polygon::PrimaryCouple => self.primary_couple,
+            Polygon::SecondaryForce => self.secondary_force,
+            Polygon::SecondaryCouple => self.secondary_couple,
+        }
+    }
+
+    /// The ratio n = l/r of every cylinder.
+    pub fn ratio(&self) -> f64 {
+        self.ratio
     }
 
     /// The unbalanced (primary, secondary) force along the line of stroke
@@ -330,6 +399,29 @@ mod tests {
             let scale = 10.0 * count as f64;
             for (got, want) in [(p, fp), (s, fs), (pc, cp), (sc, cs)] {
                 assert!((got - want).abs() <= 1e-12 * scale, "{got} vs {want}");
+            }
+            // Each polygon's sides, head to tail, end at its resultant;
+            // side i is cylinder i's term at θ = 0 (the brute sum's).
+            for part in Polygon::ALL {
+                let sides = e.sides(part);
+                let end = sides
+                    .iter()
+                    .fold([0.0, 0.0], |a, s| [a[0] + s[0], a[1] + s[1]]);
+                let r = e.resultant(part).vector;
+                assert!((end[0] - r[0]).abs() <= 1e-12 * scale, "{part:?}");
+                assert!((end[1] - r[1]).abs() <= 1e-12 * scale, "{part:?}");
+                let (twice, weighted) = match part {
+                    Polygon::PrimaryForce => (1.0, false),
+                    Polygon::PrimaryCouple => (1.0, true),
+                    Polygon::SecondaryForce => (2.0, false),
+                    Polygon::SecondaryCouple => (2.0, true),
+                };
+                for ((side, d), a) in sides.iter().zip(&cranks).zip(&planes) {
+                    let t = (twice * d).to_radians();
+                    let w = if weighted { *a } else { 1.0 } / if twice > 1.0 { n } else { 1.0 };
+                    assert!((side[0] - w * t.cos()).abs() <= 1e-13 * scale);
+                    assert!((side[1] - w * t.sin()).abs() <= 1e-13 * scale);
+                }
             }
             // The exact force's harmonics beyond the second are within
             // ½ (n² − 1)^(−3/2) for each cylinder (→ 1/(2n³) for a long

@@ -37,6 +37,7 @@ mod inline;
 mod loads;
 mod partial;
 mod parts;
+mod planes;
 mod pose;
 pub(crate) mod quadrature;
 mod radial;
@@ -53,12 +54,13 @@ pub use gas::{
     example_indicator,
 };
 pub use inline::{
-    BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Resultant,
+    BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Polygon, Resultant,
     default_planes,
 };
 pub use loads::EngineLoads;
 pub use partial::{DEFAULT_FRACTIONS, HammerBlow, PartialBalance, Unbalanced};
 pub use parts::{EngineParts, IndicatorText};
+pub use planes::{Revolving, two_plane_balance};
 pub use pose::EnginePose;
 pub use radial::{DEFAULT_AXES, MAX_RADIAL_CYLINDERS, RadialEngine};
 pub use rod::{DynamicalSystem, RodInertia, RodMass};

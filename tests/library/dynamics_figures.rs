@@ -4,7 +4,7 @@
 
 use crate::common;
 
-use common::{attr, metadata, read_text};
+use common::{attr, metadata, num, read_text};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
 
@@ -364,4 +364,227 @@ fn the_flywheel_holds_the_speed_within_its_coefficient() {
         o.fluctuation = Some(bad);
         assert!(FigureName::Flywheel.figure(&o).is_err(), "{bad}");
     }
+}
+
+/// The sum of the world vectors of the arrows `ids` in `panel` (those
+/// the figure draws).
+fn arrow_sum(svg: &str, panel: &str, ids: &[String]) -> (f64, f64) {
+    ids.iter()
+        .filter(|id| svg.contains(&format!("id=\"{id}\"")))
+        .map(|id| world_arrow(svg, panel, id))
+        .fold((0.0, 0.0), |a, v| (a.0 + v.0, a.1 + v.1))
+}
+
+#[test]
+fn the_balance_polygons_close_or_leave_the_couples_of_three_cranks_at_120_degrees() {
+    for l in [3.0, 0.6, 15.0] {
+        let r = 0.5;
+        let n = l / r;
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::in_line(r, l).unwrap());
+        let svg = to_svg(&FigureName::InlineBalance.figure(&o).unwrap());
+        // Cranks at 0°, 120°, 240°, planes −1, 0, 1: each side
+        // a (cos α, sin α), a = 1 for a force, the plane for a couple, at
+        // 2α and ÷ n for the secondary.
+        let planes = [-1.0, 0.0, 1.0];
+        for (name, twice, couple) in [
+            ("primary-force", 1.0, false),
+            ("primary-couple", 1.0, true),
+            ("secondary-force", 2.0, false),
+            ("secondary-couple", 2.0, true),
+        ] {
+            let panel = format!("panel-{name}");
+            let scale = if twice > 1.0 { 1.0 / n } else { 1.0 };
+            let mut want = (0.0, 0.0);
+            let mut ids = Vec::new();
+            for (i, a) in planes.iter().enumerate() {
+                let t = (twice * 120.0 * i as f64).to_radians();
+                let w = scale * if couple { *a } else { 1.0 };
+                want = (want.0 + w * t.cos(), want.1 + w * t.sin());
+                let id = format!("force-{name}-{}", i + 1);
+                if w == 0.0 {
+                    assert!(!svg.contains(&format!("id=\"{id}\"")), "{id}");
+                    continue;
+                }
+                let side = world_arrow(&svg, &panel, &id);
+                let tol = 2e-3 * scale;
+                assert!(
+                    (side.0 - w * t.cos()).abs() < tol && (side.1 - w * t.sin()).abs() < tol,
+                    "{id}: {side:?}"
+                );
+                ids.push(id);
+            }
+            // The sides end where the resultant does: at the origin for
+            // the forces (closed, no closing side drawn), at √3 (÷ n) for
+            // the couples, the dashed closing side from the origin.
+            let end = arrow_sum(&svg, &panel, &ids);
+            let closing = format!("resultant-{name}");
+            if couple {
+                assert!((want.0.hypot(want.1) - 3f64.sqrt() * scale).abs() < 1e-12);
+                let drawn = world_arrow(&svg, &panel, &closing);
+                for v in [drawn, end] {
+                    assert!(
+                        (v.0 - want.0).abs() < 4e-3 * scale && (v.1 - want.1).abs() < 4e-3 * scale,
+                        "{name} at n = {n}: {v:?} for {want:?}"
+                    );
+                }
+            } else {
+                assert!(want.0.hypot(want.1) < 1e-12);
+                assert!(end.0.hypot(end.1) < 4e-3 * scale, "{name}: {end:?}");
+                assert!(!svg.contains(&format!("id=\"{closing}\"")), "{name}");
+            }
+        }
+        let text = read_text(&svg);
+        assert!(
+            text.contains(&format!("primary couple {}", four(3f64.sqrt()))),
+            "{text}"
+        );
+    }
+}
+
+#[test]
+fn the_crank_pin_load_of_a_massless_rod_at_90_degrees_is_the_force_along_the_rod() {
+    // A constant gas force G, in line, at θ = 90°: B = (0, r), the rod
+    // runs from B to A = (w, 0), w = √(l² − r²); the slider's
+    // acceleration is ω² r²/w (d²x/dθ² = −r cos θ − r² cos 2θ/w − … by
+    // hand), so the piston effort towards the crank is F = G + m ω² r²/w,
+    // and a massless rod, a two-force member, puts F/cos φ along A → B on
+    // the crank pin: (−F, F r/w). Relative to the crank (along it, across
+    // it) that is (F r/w, F).
+    for (r, l, gas, mass) in [
+        (0.5, 3.0, 2000.0, 10.0),
+        (1.0, 1.3, -500.0, 2.0),
+        (0.2, 4.0, 0.0, 7.0),
+    ] {
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::in_line(r, l).unwrap());
+        o.gas_force = Some(gas);
+        o.mass = Some(mass);
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+        let w = (l * l - r * r).sqrt();
+        let f = gas + mass * omega() * omega() * r * r / w;
+        let meta = metadata(&svg);
+        let largest = meta["crank_pin_loads"]["largest_without_rod"]
+            .as_f64()
+            .unwrap();
+        for (panel, want) in [("fixed", (-f, f * r / w)), ("relative", (f * r / w, f))] {
+            // The marks are every 30° from 0°: 90° is the fourth.
+            let id = format!("point-{panel}-without-rod-4");
+            let map = panel_map(&svg, &format!("panel-{panel}"));
+            let got = to_world(&map, (num(&svg, &id, "cx"), num(&svg, &id, "cy")));
+            assert!(
+                (got.0 - want.0).abs() < 2e-3 * largest && (got.1 - want.1).abs() < 2e-3 * largest,
+                "{panel} r {r} l {l}: {got:?} for {want:?}"
+            );
+        }
+        // The rod's own inertia changes the load: a rod of 0.6 m, its
+        // centre l/3 from B, k = 0.3 l, written in the notes.
+        let text = read_text(&svg);
+        assert!(
+            text.contains(&format!("the rod {}", four(0.6 * mass))),
+            "{text}"
+        );
+    }
+}
+
+/// The two ends (world) of the dimension `id` in `panel`: the tips of its
+/// two heads, the filled paths of its group.
+fn dimension_ends(svg: &str, panel: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let map = panel_map(svg, panel);
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let group = &svg[at..at + svg[at..].find("</g>").unwrap()];
+    let tips: Vec<(f64, f64)> = group
+        .split("<path d=\"M")
+        .skip(1)
+        .filter(|p| p.contains("Z\""))
+        .map(|p| {
+            let mut xy = p.split([' ', 'L']).filter(|s| !s.is_empty());
+            let x = xy.next().unwrap().parse().unwrap();
+            let y = xy.next().unwrap().parse().unwrap();
+            to_world(&map, (x, y))
+        })
+        .collect();
+    assert_eq!(tips.len(), 2, "{id}: {group}");
+    (tips[0], tips[1])
+}
+
+#[test]
+fn the_direct_and_reverse_cranks_panels_each_say_their_scale_by_a_true_bar() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        for (panel, id) in [
+            ("panel-primary", "bar-primary"),
+            ("panel-secondary", "bar-secondary"),
+            ("panel-sum", "bar-sum"),
+        ] {
+            let (a, b) = dimension_ends(&svg, panel, id);
+            let at = svg.find(&format!("id=\"{id}-text\"")).unwrap();
+            let start = at + svg[at..].find('>').unwrap() + 1;
+            let text = &svg[start..start + svg[start..].find('<').unwrap()];
+            let said: f64 = text
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap_or_else(|_| panic!("{id}: {text}"));
+            let drawn = (b.0 - a.0).hypot(b.1 - a.1);
+            assert!(
+                (drawn - said).abs() < 3e-3 * said,
+                "{id} at {deg}°: {drawn} drawn, {said} said"
+            );
+            assert!(text.contains("lbf"), "{text}");
+        }
+    }
+}
+
+#[test]
+fn the_turning_moment_letters_every_area_and_draws_delta_e_as_a_dimension() {
+    let svg = to_svg(
+        &FigureName::TurningMoment
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    let text = read_text(&svg);
+    // The notes' areas a_1 … a_k, read back: each lettered on the plot,
+    // summing to 0 over the turn (the mean line's definition), and ΔE the
+    // greatest less the least of their running sums from 0.
+    let notes = &text[text.find("Areas between").unwrap()..];
+    let areas: Vec<f64> = notes
+        .split(" = ")
+        .skip(1)
+        .map(|s| {
+            let v: String = s
+                .chars()
+                .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | '+' | '−'))
+                .collect();
+            v.replace('−', "-").replace('+', "").parse().unwrap()
+        })
+        .collect();
+    assert_eq!(areas.len(), 5, "{notes}");
+    for k in 1..=areas.len() {
+        assert!(svg.contains(&format!("id=\"label-lobe-{k}\"")), "a_{k}");
+    }
+    let largest = areas.iter().fold(0.0f64, |a, x| a.max(x.abs()));
+    assert!(
+        areas.iter().sum::<f64>().abs() < 1e-3 * largest,
+        "{areas:?}"
+    );
+    let (mut run, mut hi, mut lo) = (0.0, 0.0f64, 0.0f64);
+    for a in &areas {
+        run += a;
+        hi = hi.max(run);
+        lo = lo.min(run);
+    }
+    let (a, b) = dimension_ends(&svg, "panel-energy", "dimension-fluctuation");
+    assert!(a.0 == b.0, "a vertical dimension: {a:?} {b:?}");
+    let drawn = (b.1 - a.1).abs();
+    assert!(
+        (drawn - (hi - lo)).abs() < 2e-3 * (hi - lo),
+        "{drawn} for {}",
+        hi - lo
+    );
+    let delta = metadata(&svg)["fluctuation"].as_f64().unwrap();
+    assert!((delta - (hi - lo)).abs() < 1e-3 * delta, "{delta}");
 }

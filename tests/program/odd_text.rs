@@ -76,8 +76,14 @@ fn a_hostile_text_is_refused_in_one_line_and_nothing_is_written() {
             let stderr = String::from_utf8_lossy(&run.stderr);
             assert_eq!(run.status.code(), Some(2), "{args:?}: {stderr}");
             assert_eq!(stderr.trim_end().lines().count(), 1, "{args:?}: {stderr}");
-            assert!(!stderr.contains('\u{1b}'), "{args:?}: an escape reached the terminal");
-            assert!(!out_path.exists() && !page.exists(), "{args:?} wrote a file");
+            assert!(
+                !stderr.contains('\u{1b}'),
+                "{args:?}: an escape reached the terminal"
+            );
+            assert!(
+                !out_path.exists() && !page.exists(),
+                "{args:?} wrote a file"
+            );
         }
     }
 }

@@ -1207,10 +1207,16 @@ fn chain_plates_are_clean() {
 }
 
 /// The engine dynamics figures that are not drawn on the mechanism:
-/// `primary-secondary` and `flywheel` once per mechanism of
-/// [`mechanisms`], `direct-reverse-cranks` at each of its poses of
-/// [`poses`].
-const DYNAMICS_FIGURES: [&str; 3] = ["primary-secondary", "flywheel", "direct-reverse-cranks"];
+/// `primary-secondary`, `flywheel`, `inline-balance` and
+/// `crank-pin-loads` once per mechanism of [`mechanisms`],
+/// `direct-reverse-cranks` at each of its poses of [`poses`].
+const DYNAMICS_FIGURES: [&str; 5] = [
+    "primary-secondary",
+    "flywheel",
+    "inline-balance",
+    "crank-pin-loads",
+    "direct-reverse-cranks",
+];
 
 #[test]
 fn dynamics_plates_are_clean() {

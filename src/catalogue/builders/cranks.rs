@@ -91,7 +91,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     );
     let half = 0.5 * (page.width() - 48.0);
     // The panels' world is 3.65 × 2.6 cranks (see `pair_plot`).
-    let most = (page.height() - 16.0 - 24.0 - 140.0 - 64.0).max(120.0);
+    let most = (page.height() - 16.0 - 24.0 - 170.0 - 64.0).max(120.0);
     let tall = (half * 2.6 / 3.65 + crate::diagram::CAPTION).min(most);
     let (pa, sa) = (
         PageRect::new(16.0, 16.0, half, tall),
@@ -109,7 +109,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         sa,
         "(b) Secondary: *m*/2 at *r*/4*n* on cranks at ±2θ, turning at ±2ω",
     )?);
-    let band = ctx.band(16.0 + tall + 16.0, 140.0);
+    let band = ctx.band(16.0 + tall + 16.0, 170.0);
     sheet.plot(sum_plot(ctx, &primary, &secondary, exact, band)?);
     let top = band.y + band.height + 8.0;
     sheet.height(top + 64.0 + 16.0);
@@ -122,7 +122,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 
 /// A force arrow and its label at its middle, or nothing for an arrow
 /// shorter than `least`.
-fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> {
+pub(super) fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> {
     if (to - from).norm() <= least {
         return Vec::new();
     }
@@ -147,7 +147,7 @@ fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> 
 }
 
 /// A thin line between two points.
-fn line(id: &str, role: Role, from: Point, to: Point) -> Item {
+pub(super) fn line(id: &str, role: Role, from: Point, to: Point) -> Item {
     Item::new(
         id,
         role,
@@ -224,6 +224,11 @@ fn pair_plot(ctx: &Ctx, pair: &Pair, rect: PageRect, caption: &str) -> Result<Pl
         Symbol::Disc,
         None,
     );
+    // The panel's own force scale, below the circle at the left.
+    let bar = super::round_below(0.8 * f);
+    let from = Point::new(world.min().x + 0.05 * f, -1.22 * f);
+    let text = format!("{} {}", short(bar), ctx.units.force());
+    plot.push(super::scale_bar(&format!("bar-{name}"), from, bar, &text));
     Ok(plot)
 }
 
@@ -261,8 +266,9 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: PageRect) -> Result
     let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let span = (hi - lo).max(2.0 * p.force);
     let row = 0.045 * span;
+    // Below the arrows a row for the panel's scale bar.
     let world = Frame::new(
-        Point::new(lo - 0.12 * span, -2.0 * row),
+        Point::new(lo - 0.12 * span, -4.0 * row),
         Point::new(hi + 0.12 * span, 2.0 * row),
     );
     let mut plot = Plot::world("sum", rect, &world, false, ctx.tolerance, ctx.font)?.with_caption(
@@ -308,6 +314,10 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: PageRect) -> Result
         Symbol::Disc,
         None,
     );
+    let bar = super::round_below(0.25 * span);
+    let from = Point::new(lo - 0.1 * span, -3.7 * row);
+    let text = format!("{} {}", short(bar), ctx.units.force());
+    plot.push(super::scale_bar("bar-sum", from, bar, &text));
     Ok(plot)
 }
 
@@ -319,7 +329,7 @@ fn notes(ctx: &Ctx, mass: f64, k: f64, p: &Pair, s: &Pair, exact: f64) -> Vec<St
     let mass_u = ctx.units.mass();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u} (*n* = {}), θ = {}°, {} rpm; *m* = {} {mass_u}, *m\u{a0}r*ω² = {} {f}. Each primary crank carries (*m*/2)*r*ω² = {} {f}, each secondary (*m*/2)(*r*/4*n*)(2ω)² = {} {f}; away from the crank is to the right.",
+            "*r* = {} {u}, *l* = {} {u} (*n* = {}), θ = {}°, {} rpm; *m* = {} {mass_u}, *m\u{a0}r*ω² = {} {f}. Each primary crank carries (*m*/2)*r*ω² = {} {f}, each secondary (*m*/2)(*r*/4*n*)(2ω)² = {} {f}; away from the crank is to the right; each panel is drawn to its own force scale, given by its bar.",
             short(m.crank()),
             short(m.rod()),
             short(m.ratio()),

@@ -4,6 +4,7 @@
 
 pub(super) mod acceleration;
 pub(super) mod approximation;
+pub(super) mod balance;
 pub(super) mod benchmark;
 pub(super) mod calibration;
 pub(super) mod centrodes;
@@ -17,6 +18,7 @@ pub(super) mod forces;
 pub(super) mod incline;
 pub(super) mod inertia;
 pub(super) mod inversions;
+pub(super) mod loads;
 pub(super) mod quick_return;
 pub(super) mod rod;
 pub(super) mod turning;
@@ -183,6 +185,33 @@ pub(super) fn short_arc(centre: Point, radius: f64, start: f64, end: f64) -> Sha
         sweep,
         arrow: false,
     }
+}
+
+/// The largest of 1, 2, 2.5 and 5 times a power of ten not above `x`
+/// (positive and finite): a scale bar's length.
+pub(super) fn round_below(x: f64) -> f64 {
+    let decade = 10f64.powf(x.log10().floor());
+    [1.0, 2.0, 2.5, 5.0]
+        .iter()
+        .map(|s| s * decade)
+        .filter(|s| *s <= x * (1.0 + 1e-12))
+        .fold(decade, f64::max)
+}
+
+/// A scale bar `id`, `length` long to the right of `from` (world), its
+/// text `text` above it.
+pub(super) fn scale_bar(id: &str, from: Point, length: f64, text: &str) -> Item {
+    Item::new(
+        id,
+        Role::Dimension,
+        Shape::Dimension {
+            from,
+            to: Point::new(from.x + length, from.y),
+            side: Vector::new(0.0, 1.0),
+            offset: 0.0,
+            text: RichText::parse(text),
+        },
+    )
 }
 
 /// A diagram's builder: the figure from the options resolved.

@@ -92,10 +92,10 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.mechanism(ctx, true, false);
     sheet.meta("mean_torque", serde_json::json!(tm.mean));
     sheet.meta("fluctuation", serde_json::json!(tm.fluctuation));
-    let height = 0.5 * (page.height() - 32.0 - 24.0 - 56.0);
+    let height = 0.5 * (page.height() - 32.0 - 24.0 - 72.0);
     sheet.plot(torque_plot(ctx, &engine, &tm, height)?);
     sheet.plot(energy_plot(ctx, &engine, &tm, height)?);
-    sheet.notes(Point::new(20.0, page.height() - 40.0), &notes(ctx, &tm));
+    sheet.notes(Point::new(20.0, page.height() - 56.0), &notes(ctx, &tm));
     Ok(sheet.finish())
 }
 
@@ -169,25 +169,39 @@ fn lobes(plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
             Role::Construction,
             Shape::Region { points },
         ));
-        // Each area's value, half-way between the curve and the mean line
-        // at the middle of the lobe, where the lobe is wide enough to carry it.
-        if lobe.to_deg - lobe.from_deg >= 25.0 {
-            let mid = 0.5 * (lobe.from_deg + lobe.to_deg);
-            let anchor = Point::new(mid, 0.5 * (torque(engine, mid) + tm.mean));
-            let sign = if lobe.area > 0.0 { "+" } else { "−" };
-            plot.push(Item::new(
-                format!("label-lobe-{}", k + 1),
-                Role::Label,
-                Shape::Label {
-                    anchor,
-                    text: RichText::parse(&format!("{sign}{}", sig(lobe.area.abs()))),
-                    size: TextSize::Small,
-                    toward: None,
-                    line: None,
-                },
-            ));
-        }
+        // Each area lettered a_k half-way between the curve and the mean
+        // line at the middle of the lobe, with its value where the lobe
+        // is wide enough to carry it (the notes give every value).
+        let mid = 0.5 * (lobe.from_deg + lobe.to_deg);
+        let anchor = Point::new(mid, 0.5 * (torque(engine, mid) + tm.mean));
+        let letter = format!("*a*_{{{}}}", k + 1);
+        let text = if lobe.to_deg - lobe.from_deg >= 25.0 {
+            format!("{letter} = {}", signed(tm.settled(lobe.area)))
+        } else {
+            letter
+        };
+        plot.push(Item::new(
+            format!("label-lobe-{}", k + 1),
+            Role::Label,
+            Shape::Label {
+                anchor,
+                text: RichText::parse(&text),
+                size: TextSize::Small,
+                toward: None,
+                line: None,
+            },
+        ));
     }
+}
+
+/// An area's value with its sign, + or −; 0 (an area within the
+/// quadrature's tolerance, [`TurningMoment::settled`]) as 0.
+fn signed(area: f64) -> String {
+    if area == 0.0 {
+        return "0".into();
+    }
+    let sign = if area > 0.0 { "+" } else { "−" };
+    format!("{sign}{}", sig(area.abs()))
 }
 
 /// (b) The energy stored, E(θ), below (a), with its greatest and least
@@ -225,8 +239,39 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
         "point-energy",
         &extremes,
         Symbol::Circle,
-        Some(&format!("Δ*E* = {} {t_unit}", sig(tm.fluctuation))),
+        Some("greatest and least *E*"),
     );
+    // ΔE as a dimension at the angle of the most energy, from the least
+    // (carried across by a dotted line) up to the curve.
+    plot.line(
+        "line-energy-least",
+        &[(tm.min_energy_deg, elo), (tm.max_energy_deg, elo)],
+        Dash::Dotted,
+        None,
+    );
+    plot.push(Item::new(
+        "dimension-fluctuation",
+        Role::Dimension,
+        Shape::Dimension {
+            from: Point::new(tm.max_energy_deg, elo),
+            to: Point::new(tm.max_energy_deg, ehi),
+            side: Vector::new(1.0, 0.0),
+            offset: 0.0,
+            text: RichText::parse(""),
+        },
+    ));
+    // Its value beside the dimension line, placed clear of it.
+    plot.push(Item::new(
+        "label-fluctuation",
+        Role::Label,
+        Shape::Label {
+            anchor: Point::new(tm.max_energy_deg, 0.5 * (elo + ehi)),
+            text: RichText::parse(&format!("Δ*E* = {} {t_unit}", sig(tm.fluctuation))),
+            size: TextSize::Small,
+            toward: None,
+            line: None,
+        },
+    ));
     Ok(plot)
 }
 
@@ -251,7 +296,7 @@ fn gas_note(ctx: &Ctx) -> String {
 
 /// The notes: the engine, its speed, mass, bore and gas force, then the
 /// work per turn, the areas and where the energy is greatest and least.
-fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
+fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 3] {
     let m = ctx.mechanism;
     let t_unit = ctx.units.torque();
     [
@@ -277,6 +322,13 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 2] {
             tm.lobes.len(),
             short(tm.max_energy_deg),
             short(tm.min_energy_deg)
+        ),
+        format!(
+            "Areas between *T* and the mean line ({t_unit}): {}; Δ*E* is the greatest less the least of their running sums.",
+            (tm.lobes.iter().enumerate())
+                .map(|(k, l)| format!("*a*_{{{}}} = {}", k + 1, signed(tm.settled(l.area))))
+                .collect::<Vec<_>>()
+                .join(", ")
         ),
     ]
 }

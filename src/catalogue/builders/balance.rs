@@ -1,0 +1,219 @@
+//! The force and couple polygons of an in-line engine (`docs/dynamics.md`
+//! §6): (a) the primary forces, a side m r ω² along each cylinder's crank
+//! at α_i; (b) the primary couples about the reference plane, each side
+//! times the cylinder's distance a_i from it (reversed for a negative
+//! a_i); (c) and (d) the secondary forces and couples, sides 1/n at 2α_i.
+//! Each polygon is drawn head to tail from the origin at θ = 0; where it
+//! does not close, its closing side from the origin to the last side's
+//! end is the resultant, the largest unbalanced force or couple over a
+//! turn. Every side and resultant is [`InlineEngine`]'s.
+//!
+//! The engine is the textbooks' three cylinders with cranks at 120°, a
+//! pitch of 1 and the reference plane through the middle cylinder
+//! (`table balance --cranks 0,120,240`): the forces balance, the couples
+//! do not. Its ratio n is the figure's mechanism's.
+
+use super::cranks::{arrow, line};
+use super::{Ctx, Sheet, short, sig};
+use crate::diagram::Plot;
+use crate::dynamics::{InlineEngine, Polygon, default_planes};
+use crate::error::Result;
+use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
+use crate::geom::{Frame, Point};
+
+/// The cranks of the engine drawn, degrees ahead of the first's.
+pub(crate) const CRANKS: [f64; 3] = [0.0, 120.0, 240.0];
+
+/// A side or resultant shorter than this fraction of the panel's longest
+/// side is not drawn (a cylinder in the reference plane, a closed
+/// polygon's rounding).
+const SHORTEST: f64 = 1e-9;
+
+/// Height of the notes' band.
+const NOTES: f64 = 88.0;
+
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let planes = default_planes(CRANKS.len());
+    let engine = InlineEngine::new(&CRANKS, &planes, ctx.mechanism.ratio())?;
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, false, false);
+    let half = 0.5 * (page.width() - 48.0);
+    let tall = (0.5 * (page.height() - 16.0 - 16.0 - 16.0 - NOTES)).max(120.0);
+    let mut meta = serde_json::Map::new();
+    for (k, part) in Polygon::ALL.into_iter().enumerate() {
+        let (row, col) = ((k / 2) as f64, (k % 2) as f64);
+        let rect = PageRect::new(
+            16.0 + col * (half + 16.0),
+            16.0 + row * (tall + 16.0),
+            half,
+            tall,
+        );
+        sheet.plot(polygon_plot(ctx, &engine, part, rect)?);
+        let r = engine.resultant(part);
+        meta.insert(
+            id(part).into(),
+            serde_json::json!({"resultant": r.vector, "amplitude": r.amplitude, "balanced": r.balanced}),
+        );
+    }
+    meta.insert("cranks_deg".into(), serde_json::json!(CRANKS));
+    meta.insert("planes".into(), serde_json::json!(planes));
+    sheet.meta("balance", serde_json::Value::Object(meta));
+    let top = 16.0 + 2.0 * (tall + 16.0);
+    sheet.height(top + NOTES + 16.0);
+    sheet.notes(Point::new(20.0, top), &notes(&engine));
+    Ok(sheet.finish())
+}
+
+/// The polygon's name in ids (`primary-force`).
+fn id(part: Polygon) -> &'static str {
+    match part {
+        Polygon::PrimaryForce => "primary-force",
+        Polygon::PrimaryCouple => "primary-couple",
+        Polygon::SecondaryForce => "secondary-force",
+        Polygon::SecondaryCouple => "secondary-couple",
+    }
+}
+
+/// The caption of the polygon's panel.
+fn caption(part: Polygon, closed: bool) -> String {
+    let (letter, what) = match part {
+        Polygon::PrimaryForce => ("(a)", "Primary forces: sides *m\u{a0}r*ω² at α_{i}"),
+        Polygon::PrimaryCouple => (
+            "(b)",
+            "Primary couples: sides *m\u{a0}r*ω² *a*_{i} at α_{i}",
+        ),
+        Polygon::SecondaryForce => ("(c)", "Secondary forces: sides *m\u{a0}r*ω²/*n* at 2α_{i}"),
+        Polygon::SecondaryCouple => (
+            "(d)",
+            "Secondary couples: sides *m\u{a0}r*ω² *a*_{i}/*n* at 2α_{i}",
+        ),
+    };
+    let verdict = if closed {
+        "closes: balanced"
+    } else {
+        "the dashed closing side is the resultant"
+    };
+    format!("{letter} {what}; {verdict}")
+}
+
+/// One polygon: its sides head to tail from the origin, each numbered by
+/// its cylinder, and where it does not close the resultant from the
+/// origin to the last side's end, dashed.
+fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect) -> Result<Plot> {
+    let sides = engine.sides(part);
+    let resultant = engine.resultant(part);
+    let mut corners = vec![Point::origin()];
+    let mut end = Point::origin();
+    for s in &sides {
+        end = Point::new(end.x + s[0], end.y + s[1]);
+        corners.push(end);
+    }
+    let longest = sides.iter().map(|s| s[0].hypot(s[1])).fold(0.0, f64::max);
+    let unit = if longest > 0.0 { longest } else { 1.0 };
+    let (lo, hi) = corners
+        .iter()
+        .fold((Point::origin(), Point::origin()), |(lo, hi), p| {
+            (
+                Point::new(lo.x.min(p.x), lo.y.min(p.y)),
+                Point::new(hi.x.max(p.x), hi.y.max(p.y)),
+            )
+        });
+    let pad = 0.25 * unit;
+    let world = Frame::new(
+        Point::new(lo.x - pad, lo.y - pad),
+        Point::new(hi.x + pad, hi.y + pad),
+    );
+    let name = id(part);
+    let mut plot = Plot::world(name, rect, &world, false, ctx.tolerance, ctx.font)?
+        .with_caption(&caption(part, resultant.balanced));
+    let least = SHORTEST * unit;
+    for (i, (from, to)) in corners.iter().zip(corners.iter().skip(1)).enumerate() {
+        for item in arrow(
+            &format!("{name}-{}", i + 1),
+            *from,
+            *to,
+            &format!("{}", i + 1),
+            least,
+        ) {
+            plot.push(item);
+        }
+    }
+    if !resultant.balanced && (end - Point::origin()).norm() > least {
+        plot.push(
+            Item::new(
+                format!("resultant-{name}"),
+                Role::Construction,
+                Shape::Arrow {
+                    from: Point::origin(),
+                    to: end,
+                },
+            )
+            .dashed(Dash::Dashed),
+        );
+    }
+    plot.push(
+        line(
+            &format!("axis-{name}"),
+            Role::Auxiliary,
+            Point::new(lo.x - 0.2 * unit, 0.0),
+            Point::new(hi.x + 0.2 * unit, 0.0),
+        )
+        .dashed(Dash::DashDot),
+    );
+    plot.points(
+        &format!("point-{name}-origin"),
+        &[(0.0, 0.0)],
+        Symbol::Disc,
+        None,
+    );
+    Ok(plot)
+}
+
+/// Which cylinders lie in the reference plane (a couple's side of
+/// length 0, not drawn), as the notes say it; empty for none.
+fn in_plane(engine: &InlineEngine) -> String {
+    let on: Vec<String> = (engine.planes().iter().enumerate())
+        .filter(|(_, a)| **a == 0.0)
+        .map(|(i, _)| format!("{}", i + 1))
+        .collect();
+    match on.as_slice() {
+        [] => String::new(),
+        [one] => {
+            format!("; cylinder {one}, in the plane, has no couple and no side in (b) and (d)")
+        }
+        _ => format!(
+            "; cylinders {}, in the plane, have no couple and no side in (b) and (d)",
+            on.join(", ")
+        ),
+    }
+}
+
+/// The notes: the engine, the scales, and each polygon's resultant.
+fn notes(engine: &InlineEngine) -> Vec<String> {
+    let list = |v: &[f64]| v.iter().map(|x| short(*x)).collect::<Vec<_>>().join(", ");
+    let value = |part: Polygon| {
+        let r = engine.resultant(part);
+        if r.balanced {
+            "0 (closed)".to_string()
+        } else {
+            sig(r.amplitude)
+        }
+    };
+    vec![
+        format!(
+            "Three cylinders in line, cranks at α = {}° ahead of the first, at *a* = {} pitches from the reference plane (the middle cylinder’s){}, *n* = {}; the polygons are drawn at θ = 0, the line of stroke dash-dotted, each to its own scale, sides in units of *m\u{a0}r*ω² (a couple’s times the pitch).",
+            list(engine.cranks_deg()),
+            list(engine.planes()),
+            in_plane(engine),
+            short(engine.ratio()),
+        ),
+        format!(
+            "Resultants ÷ *m\u{a0}r*ω²: primary force {}, primary couple {}, secondary force {}, secondary couple {}: each the largest unbalanced value over a turn, reached when it lies on the line of stroke.",
+            value(Polygon::PrimaryForce),
+            value(Polygon::PrimaryCouple),
+            value(Polygon::SecondaryForce),
+            value(Polygon::SecondaryCouple),
+        ),
+    ]
+}

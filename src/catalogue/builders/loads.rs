@@ -1,0 +1,318 @@
+//! The polar load diagram of the crank pin (`docs/dynamics.md` §3): the
+//! force of the rod on the crank pin over the gas force's cycle, the
+//! vector's end traced from a pole, with the rod's inertia (full line)
+//! and without it (dashed): (a) in fixed axes, which with the crank
+//! massless is also the load on the main bearing; (b) relative to the
+//! crank, along it (outwards) and across it (in the sense of rotation),
+//! the load the crank pin carries where it turns with the crank.
+//!
+//! The engine is the turning-moment figure's ([`super::turning::engine`]:
+//! its mass, gas force or indicator diagram) with an illustrative rod of
+//! mass 0.6 m, its centre of mass l/3 from the crank pin and its radius of
+//! gyration 0.3 l. Every value is
+//! [`crate::dynamics::EngineLoads::crank_pin`] of
+//! [`crate::dynamics::Engine::at_turn`]. Away from the crank is to the
+//! right; the points every 30° are marked, 0°, 90°, 180° and 270° lettered.
+
+use super::{Ctx, Sheet, short, sig};
+use crate::angle::Angle;
+use crate::diagram::{Curve, Plot};
+use crate::dynamics::{EXAMPLE_MASS, Engine, RodMass, TurningMoment};
+use crate::error::{Error, Input, Result};
+use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
+use crate::geom::{Frame, Point, Vector};
+
+/// The illustrative rod's mass per unit reciprocating mass.
+pub(crate) const ROD_MASS: f64 = 0.6;
+/// Its centre of mass from the crank pin per unit rod length.
+pub(crate) const ROD_CG: f64 = 1.0 / 3.0;
+/// Its radius of gyration about the centre of mass per unit rod length.
+pub(crate) const ROD_GYRATION: f64 = 0.3;
+
+/// The angle between marked points, degrees.
+const MARK: f64 = 30.0;
+
+/// How far inside a piece its ends are evaluated, degrees: the gas force
+/// jumps at the dead centres and each end takes its own side.
+const INSIDE: f64 = 1e-7;
+
+/// Height of the notes' band.
+const NOTES: f64 = 72.0;
+
+/// The two engines: with the illustrative rod, and with a massless one.
+fn engines(ctx: &Ctx) -> Result<(Engine, Engine)> {
+    let bare = super::turning::engine(ctx)?;
+    let l = ctx.mechanism.rod();
+    let mass = bare.reciprocating_mass();
+    let rod = RodMass::new(ROD_MASS * mass, ROD_CG * l, ROD_GYRATION * l)?;
+    Ok((bare.clone().with_rod(rod)?, bare))
+}
+
+/// The crank-pin load of `engine` at `deg` degrees of its cycle, in fixed
+/// axes, or relative to the crank when `relative`.
+fn load(engine: &Engine, deg: f64, relative: bool) -> Option<Vector> {
+    let angle = Angle::from_degrees(deg).ok()?;
+    let at = engine.at_turn(angle, engine.turn_at_degrees(deg)).ok()?;
+    let [x, y] = at.loads.crank_pin;
+    if !relative {
+        return Some(Vector::new(x, y));
+    }
+    let (s, c) = (angle.sin(), angle.cos());
+    Some(Vector::new(x * c + y * s, -x * s + y * c))
+}
+
+pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
+    let page = ctx.page();
+    let (rod, bare) = engines(ctx)?;
+    let tm = TurningMoment::new(&rod, &[0.0])?;
+    let cycle = tm.cycle_deg;
+    let mut kinks: Vec<f64> = tm.kinks_deg.clone();
+    kinks.retain(|k| (0.0..=cycle).contains(k));
+    kinks.extend([0.0, cycle]);
+    kinks.sort_by(f64::total_cmp);
+    kinks.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    let engines = [&rod, &bare];
+    let samples = [false, true].map(|relative| sampled(engines, cycle, relative));
+    // Both panels to one scale: worlds of one size, each about its own
+    // curves (and the pole).
+    drawable(ctx, &samples)?;
+    let boxes = samples.each_ref().map(|s| bounds(s));
+    let size = boxes.iter().fold(Vector::zeros(), |a, (lo, hi)| {
+        Vector::new(a.x.max(hi.x - lo.x), a.y.max(hi.y - lo.y))
+    });
+    let pad = 0.1 * size.x.max(size.y).max(f64::MIN_POSITIVE);
+    let half = 0.5 * (page.width() - 48.0);
+    let most = page.height() - 16.0 - 16.0 - 16.0 - NOTES;
+    let legend = 48.0;
+    let tall =
+        (half * (size.y + 2.0 * pad) / (size.x + 2.0 * pad) + crate::diagram::CAPTION + legend)
+            .clamp(160.0, most.max(160.0));
+    let mut sheet = Sheet::new(ctx);
+    sheet.mechanism(ctx, true, false);
+    let mut bar = 0.0;
+    for (k, (relative, (lo, hi))) in [false, true].into_iter().zip(boxes).enumerate() {
+        let rect = PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, tall);
+        let centre = Point::new(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
+        let reach = 0.5 * size + Vector::new(pad, pad);
+        // Room above for the legend, at the panel's scale: the scale the
+        // fit will take, the width's or, on a low page, the height's
+        // with the legend's band taken off.
+        let (wide, high) = (size.x + 2.0 * pad, size.y + 2.0 * pad);
+        let scale = (half / wide).min((tall - crate::diagram::CAPTION - legend).max(1.0) / high);
+        let room = legend / scale;
+        let world = Frame::new(centre - reach, centre + reach + Vector::new(0.0, room));
+        let mut plot = polar_plot(ctx, engines, &kinks, cycle, relative, rect, &world)?;
+        if !relative {
+            bar = super::round_below(0.4 * size.x.max(size.y));
+            plot.push(scale_bar(ctx, &world, bar, pad));
+        }
+        sheet.plot(plot);
+    }
+    let [fixed, _] = &samples;
+    let largest = [0, 1].map(|i| {
+        fixed
+            .iter()
+            .filter_map(|p| p.get(i))
+            .map(|v| v.norm())
+            .fold(0.0, f64::max)
+    });
+    sheet.meta(
+        "crank_pin_loads",
+        serde_json::json!({
+            "rod_mass": rod.rod().map(RodMass::mass),
+            "rod_cg": rod.rod().map(RodMass::cg),
+            "rod_gyration": rod.rod().map(RodMass::gyration),
+            "largest_with_rod": largest[0],
+            "largest_without_rod": largest[1],
+            "cycle_deg": cycle,
+            "bar": bar,
+        }),
+    );
+    let top = 16.0 + tall + 8.0;
+    sheet.height(top + NOTES + 16.0);
+    sheet.notes(Point::new(20.0, top), &notes(ctx, &rod, largest, bar));
+    Ok(sheet.finish())
+}
+
+/// The loads of the two engines at 2 samples a degree over the cycle.
+fn sampled(engines: [&Engine; 2], cycle: f64, relative: bool) -> Vec<[Vector; 2]> {
+    let samples = (2.0 * cycle) as usize;
+    (0..=samples)
+        .filter_map(|i| {
+            let d = (cycle * i as f64 / samples as f64).clamp(INSIDE, cycle - INSIDE);
+            Some([
+                load(engines[0], d, relative)?,
+                load(engines[1], d, relative)?,
+            ])
+        })
+        .collect()
+}
+
+/// Refuses loads too small or too large to draw (none at all, with no
+/// mass and no gas force), naming the largest and what sets it: the
+/// force scale of [`super::MIN_DRAWN_FORCE`] to [`super::MAX_DRAWN_FORCE`]
+/// that every dynamics figure draws within.
+fn drawable(ctx: &Ctx, samples: &[Vec<[Vector; 2]>; 2]) -> Result<()> {
+    let largest = samples
+        .iter()
+        .flatten()
+        .flatten()
+        .map(|v| v.norm())
+        .fold(0.0, f64::max);
+    if (super::MIN_DRAWN_FORCE..=super::MAX_DRAWN_FORCE).contains(&largest) {
+        return Ok(());
+    }
+    let f = ctx.units.force();
+    Err(Error::invalid(
+        Input::Options,
+        format!(
+            "{} draws the crank pin's load, {} over the cycle here, which must lie between {} and {} {f} to be drawn: give the mass (--mass), the gas force (--gas-force, --data, --bore), the lengths or the speed in other units",
+            ctx.name.name(),
+            if largest.is_finite() {
+                format!("at most {} {f}", crate::number::plain(largest))
+            } else {
+                "beyond the largest number".to_string()
+            },
+            crate::number::plain(super::MIN_DRAWN_FORCE),
+            crate::number::plain(super::MAX_DRAWN_FORCE),
+        ),
+    ))
+}
+
+/// The smallest box holding the pole and every sampled load.
+fn bounds(samples: &[[Vector; 2]]) -> (Point, Point) {
+    let (mut lo, mut hi) = (Point::origin(), Point::origin());
+    for v in samples.iter().flatten() {
+        lo = Point::new(lo.x.min(v.x), lo.y.min(v.y));
+        hi = Point::new(hi.x.max(v.x), hi.y.max(v.y));
+    }
+    (lo, hi)
+}
+
+/// The force scale's bar, `bar` long, at the lower left of `world`.
+fn scale_bar(ctx: &Ctx, world: &Frame, bar: f64, pad: f64) -> Item {
+    let from = Point::new(world.min().x + 0.5 * pad, world.min().y + 0.25 * pad);
+    let text = format!("{} {}", short(bar), ctx.units.force());
+    super::scale_bar("fixed-bar", from, bar, &text)
+}
+
+/// The polar curve of the load between the kinks `a` and `b` (degrees),
+/// its ends a little inside, its tangent by central differences kept
+/// inside the piece.
+fn piece<'a>(engine: &'a Engine, relative: bool, a: f64, b: f64) -> impl Curve + 'a {
+    move |deg: f64| -> Option<(Point, Vector)> {
+        let d = deg.clamp(a + INSIDE, b - INSIDE);
+        let h = 1e-4f64.min(0.25 * (b - a));
+        let (lo, hi) = ((d - h).max(a + INSIDE), (d + h).min(b - INSIDE));
+        let v = load(engine, d, relative)?;
+        let slope = (load(engine, hi, relative)? - load(engine, lo, relative)?) / (hi - lo);
+        Some((Point::origin() + v, slope))
+    }
+}
+
+/// One panel showing `world`: the two polar curves, the pole, the marks
+/// every 30° on each curve, the curve with the rod lettered at the
+/// quarters.
+fn polar_plot(
+    ctx: &Ctx,
+    engines: [&Engine; 2],
+    kinks: &[f64],
+    cycle: f64,
+    relative: bool,
+    rect: PageRect,
+    world: &Frame,
+) -> Result<Plot> {
+    let name = if relative { "relative" } else { "fixed" };
+    let caption = if relative {
+        "(b) Relative to the crank: along it outwards (→) and across it in the sense of rotation (↑)"
+    } else {
+        "(a) In fixed axes, away from the crank to the right: the crank pin’s and the main bearing’s load"
+    };
+    let mut plot =
+        Plot::world(name, rect, world, false, ctx.tolerance, ctx.font)?.with_caption(caption);
+    for (engine, id, dash, legend) in [
+        (
+            engines[0],
+            "with-rod",
+            Dash::Solid,
+            "with the rod’s inertia",
+        ),
+        (
+            engines[1],
+            "without-rod",
+            Dash::Dashed,
+            "without it (a massless rod)",
+        ),
+    ] {
+        let pieces: Vec<_> = kinks
+            .iter()
+            .zip(kinks.iter().skip(1))
+            .filter(|(a, b)| *b - *a > 4.0 * INSIDE)
+            .map(|(&a, &b)| (piece(engine, relative, a, b), a..=b))
+            .collect();
+        let traced: Vec<(&dyn Curve, _)> = pieces
+            .iter()
+            .map(|(c, r)| (c as &dyn Curve, r.clone()))
+            .collect();
+        // Named load-*, not curve-*: no exact reference of its own is
+        // measured against it yet (the loads are tested at the marks).
+        plot.curve(&format!("load-{name}-{id}"), &traced, dash, Some(legend))?;
+        let marks: Vec<(f64, f64)> = (0..(cycle / MARK) as usize)
+            .filter_map(|k| load(engine, k as f64 * MARK, relative))
+            .map(|v| (v.x, v.y))
+            .collect();
+        plot.points(&format!("point-{name}-{id}"), &marks, Symbol::Disc, None);
+    }
+    for deg in [0.0, 90.0, 180.0, 270.0] {
+        if let Some(v) = load(engines[0], deg, relative) {
+            plot.push(Item::new(
+                format!("label-{name}-{deg}"),
+                Role::Label,
+                Shape::Label {
+                    anchor: Point::origin() + v,
+                    text: RichText::parse(&format!("{deg}°")),
+                    size: TextSize::Small,
+                    toward: None,
+                    line: None,
+                },
+            ));
+        }
+    }
+    plot.points(
+        &format!("point-{name}-pole"),
+        &[(0.0, 0.0)],
+        Symbol::Cross,
+        None,
+    );
+    Ok(plot)
+}
+
+/// The notes: the engine and its rod, the largest loads.
+fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
+    let m = ctx.mechanism;
+    let (u, f, mass_u) = (ctx.unit(), ctx.units.force(), ctx.units.mass());
+    let r = rod.rod();
+    vec![
+        format!(
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 *m*, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The pole is marked ×, the load every 30° by a dot; both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
+            short(m.crank()),
+            short(m.rod()),
+            if m.offset() == 0.0 {
+                String::new()
+            } else {
+                format!(", *e* = {} {u}", short(m.offset()))
+            },
+            short(ctx.rpm()),
+            short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
+            sig(r.map_or(0.0, RodMass::mass)),
+            sig(r.map_or(0.0, RodMass::cg)),
+            sig(r.map_or(0.0, RodMass::gyration)),
+            short(bar),
+        ),
+        format!(
+            "Largest load on the crank pin over the cycle: {} {f} with the rod’s inertia, {} {f} without it (Newton–Euler on the slider and on the rod as a rigid body).",
+            sig(largest[0]),
+            sig(largest[1]),
+        ),
+    ]
+}
