@@ -26,10 +26,10 @@ const HOSTILE: [&str; 7] = [
 ];
 
 /// The figures that need a gas force in other units than the bundled
-/// steam diagram's.
+/// steam diagram's (those drawn over a turn of the example engine).
 fn gas(f: FigureName) -> &'static [&'static str] {
     match f.name() {
-        "flywheel" | "turning-moment" => &["--gas-force", "100"],
+        "flywheel" | "turning-moment" | "crank-pin-loads" => &["--gas-force", "100"],
         _ => &[],
     }
 }
