@@ -8,7 +8,7 @@ use super::markup::{arc_beziers, arrow_head, finite, path, polyline_d, unit};
 use super::symbol_sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
 use super::text::{starts_italic, text_half, text_node};
 use super::{Ink, PanelLayout, Pending};
-use crate::figure::{Item, PageFromWorld, Pen, RichText, Shape, TextSize};
+use crate::figure::{Item, PageFromWorld, Pen, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 
 /// Step by which a dimension's text slides along its line off a line
@@ -36,6 +36,10 @@ impl PanelLayout<'_> {
         }
         let u = unit(b - a)?;
         self.obstacles.segment(a, b);
+        if ink.role == Role::Force {
+            // A text naming a line keeps nearer its own than a force.
+            self.links.push((a, b));
+        }
         // The head is wider than the shaft: keep labels off it too.
         let half = 0.5 * ARROW_LENGTH;
         self.obstacles

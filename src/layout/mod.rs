@@ -151,8 +151,8 @@ struct PanelLayout<'a> {
     /// The page centres of the pins and constructed points drawn, which
     /// a point's letter keeps nearer its own than.
     points: Vec<Point>,
-    /// The links drawn (page segments), which a text naming a line
-    /// keeps nearer its own than.
+    /// The links and forces drawn (page segments), which a text naming
+    /// a line keeps nearer its own than.
     links: Vec<(Point, Point)>,
 }
 

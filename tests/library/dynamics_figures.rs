@@ -588,3 +588,55 @@ fn the_turning_moment_letters_every_area_and_draws_delta_e_as_a_dimension() {
     let delta = metadata(&svg)["fluctuation"].as_f64().unwrap();
     assert!((delta - (hi - lo)).abs() < 1e-3 * delta, "{delta}");
 }
+
+/// The world point of the text `id` (where it is written) in `panel`.
+fn world_text(svg: &str, panel: &str, id: &str) -> (f64, f64) {
+    let map = panel_map(svg, panel);
+    let x: f64 = attr(svg, id, "x").unwrap().parse().unwrap();
+    let y: f64 = attr(svg, id, "y").unwrap().parse().unwrap();
+    to_world(&map, (x, y))
+}
+
+/// The distance from `p` to the segment from the origin to `v`.
+fn to_arrow(p: (f64, f64), v: (f64, f64)) -> f64 {
+    let t = ((p.0 * v.0 + p.1 * v.1) / (v.0 * v.0 + v.1 * v.1)).clamp(0.0, 1.0);
+    (p.0 - t * v.0).hypot(p.1 - t * v.1)
+}
+
+#[test]
+fn past_a_half_turn_each_crank_keeps_its_name_and_its_angle_runs_the_way_it_turns() {
+    // θ and 2θ just past 180° or 360°: the direct and reverse cranks lie
+    // nearly along one line, the direct one below it.
+    for ((r, l, e), deg) in [
+        ((1.0, 2.76, -1.03), 90.82),
+        ((1.0, 1.08, 0.0), 270.72),
+        ((1.0, 1.1, 0.0), 269.26),
+    ] {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        for (name, angle) in [("primary", deg), ("secondary", 2.0 * deg)] {
+            let panel = format!("panel-{name}");
+            let d = world_arrow(&svg, &panel, &format!("force-{name}-direct"));
+            let v = world_arrow(&svg, &panel, &format!("force-{name}-reverse"));
+            let text = world_text(&svg, &panel, &format!("value-{name}-direct"));
+            assert!(
+                to_arrow(text, d) < to_arrow(text, v),
+                "{name} at {deg}°: \"direct\" nearer the reverse crank"
+            );
+            // The direct crank's angle is swept from the stroke the way
+            // the crank turns: its letter stands by the middle of that
+            // sweep, the reverse's by the middle of the other.
+            let sweep = angle.rem_euclid(360.0);
+            if !(5.0..=355.0).contains(&sweep) {
+                continue;
+            }
+            for (id, middle) in [("direct", 0.5 * sweep), ("reverse", -0.5 * sweep)] {
+                let (x, y) = world_text(&svg, &panel, &format!("label-{name}-{id}"));
+                let off = (y.atan2(x).to_degrees() - middle + 540.0).rem_euclid(360.0) - 180.0;
+                assert!(
+                    off.abs() < 35.0,
+                    "{name} {id} at {deg}°: letter {off:.0}° off"
+                );
+            }
+        }
+    }
+}

@@ -120,8 +120,9 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     Ok(sheet.finish())
 }
 
-/// A force arrow and its label at its middle, or nothing for an arrow
-/// shorter than `least`.
+/// A force arrow and its label by its middle (nearer it than any other
+/// arrow or link: two arrows nearly along one line keep their names
+/// apart), or nothing for an arrow shorter than `least`.
 pub(super) fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) -> Vec<Item> {
     if (to - from).norm() <= least {
         return Vec::new();
@@ -140,7 +141,7 @@ pub(super) fn arrow(id: &str, from: Point, to: Point, text: &str, least: f64) ->
                 text: RichText::parse(text),
                 size: TextSize::Small,
                 toward: None,
-                line: None,
+                line: Some([from, to]),
             },
         ),
     ]
@@ -238,9 +239,12 @@ fn angle_marks(plot: &mut Plot, pair: &Pair) {
     if pair.angle.abs() < 5f64.to_radians() || pair.force <= 0.0 {
         return;
     }
+    // The direct crank's angle swept the way it turns, from the line of
+    // stroke (past 180° for θ or 2θ there), the reverse's the other way.
+    let sweep = pair.angle.rem_euclid(std::f64::consts::TAU);
     for (id, sweep, text) in [
-        ("direct", pair.angle, pair.written.to_string()),
-        ("reverse", -pair.angle, format!("−{}", pair.written)),
+        ("direct", sweep, pair.written.to_string()),
+        ("reverse", -sweep, format!("−{}", pair.written)),
     ] {
         plot.push(Item::new(
             format!("angle-{}-{id}", pair.name),
