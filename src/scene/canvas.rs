@@ -250,19 +250,7 @@ impl Canvas {
         text: RichText,
         size: TextSize,
     ) {
-        if self.contains(anchor) {
-            self.push(
-                id,
-                Role::Label,
-                Shape::Label {
-                    anchor,
-                    text,
-                    size,
-                    toward: None,
-                    line: None,
-                },
-            );
-        }
+        self.label_naming(id, anchor, None, text, size);
     }
 
     /// A text naming the line from `a` to `b` (a link's length), set by
@@ -275,19 +263,29 @@ impl Canvas {
         text: RichText,
         size: TextSize,
     ) {
-        let anchor = nalgebra::center(&a, &b);
+        self.label_naming(id, nalgebra::center(&a, &b), Some([a, b]), text, size);
+    }
+
+    /// A label at `anchor` naming `line` if any; nothing where the anchor
+    /// is off the page.
+    fn label_naming(
+        &mut self,
+        id: impl Into<String>,
+        anchor: Point,
+        line: Option<[Point; 2]>,
+        text: RichText,
+        size: TextSize,
+    ) {
         if self.contains(anchor) {
-            self.push(
-                id,
-                Role::Label,
-                Shape::Label {
-                    anchor,
-                    text,
-                    size,
-                    toward: None,
-                    line: Some([a, b]),
-                },
-            );
+            let toward = None;
+            let shape = Shape::Label {
+                anchor,
+                text,
+                size,
+                toward,
+                line,
+            };
+            self.push(id, Role::Label, shape);
         }
     }
 
