@@ -66,7 +66,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             format!(
                 "The turning-moment figure’s engine: *r* = {} {u}, *l* = {} {u}{}, *m* = {} {mass_u}, {} rpm (ω = {} rad/s). Δ*E* = {} {t}, from θ = {}° (least) to {}° (most).",
                 short(ctx.mechanism.crank()), short(ctx.mechanism.rod()),
-                if ctx.mechanism.offset() == 0.0 { String::new() } else { format!(", *e* = {} {u}", short(ctx.mechanism.offset())) },
+                ctx.offset_clause(),
                 short(ctx.options.mass.unwrap_or(crate::dynamics::EXAMPLE_MASS)),
                 short(ctx.rpm()), sig(w),
                 sig(fly.fluctuation), short(tm.min_energy_deg), short(tm.max_energy_deg),

@@ -268,11 +268,7 @@ fn notes(ctx: &Ctx) -> [String; 2] {
             "{rig}: *r* = {} {u}, *l* = {} {u}{}; *T* = {NG_TORQUE:.2} {}, the torque Ng’s *F* column implies{}.",
             short(m.crank()),
             short(m.rod()),
-            if m.offset() == 0.0 {
-                String::new()
-            } else {
-                format!(", *e* = {} {}", short(m.offset()), ctx.unit())
-            },
+            ctx.offset_clause(),
             ctx.units.torque(),
             if ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
                 " (1 kg on the 27 mm crank)"

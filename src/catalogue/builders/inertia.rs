@@ -392,11 +392,7 @@ fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
             "*r* = {} {u}, *l* = {} {u}{}, θ = {}°, {} rpm; reciprocating mass *m* = {} {mass_u}, no gas force. Scale: *CG* is the acceleration ω²·*CG* and the inertia force *m*ω²·*CG*: 1 {u} = {} {fu}.",
             short(m.crank()),
             short(m.rod()),
-            if m.offset() == 0.0 {
-                String::new()
-            } else {
-                format!(", *e* = {} {u}", short(m.offset()))
-            },
+            ctx.offset_clause(),
             short(ctx.angle.degrees()),
             short(ctx.rpm()),
             short(f.mass),

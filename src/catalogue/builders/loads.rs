@@ -297,11 +297,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 *m*, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The pole is marked ×, the load every 30° by a dot; both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
             short(m.crank()),
             short(m.rod()),
-            if m.offset() == 0.0 {
-                String::new()
-            } else {
-                format!(", *e* = {} {u}", short(m.offset()))
-            },
+            ctx.offset_clause(),
             short(ctx.rpm()),
             short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
             sig(r.map_or(0.0, RodMass::mass)),

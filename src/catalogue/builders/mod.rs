@@ -73,6 +73,15 @@ impl Ctx<'_> {
         self.units.length()
     }
 
+    /// The offset as a note's engine line gives it after r and l,
+    /// ", *e* = 0.25 ft"; empty for an in-line engine.
+    pub fn offset_clause(&self) -> String {
+        match self.mechanism.offset() {
+            0.0 => String::new(),
+            e => format!(", *e* = {} {}", crate::number::short(e), self.unit()),
+        }
+    }
+
     /// The page.
     pub fn page(&self) -> Page {
         self.page

@@ -160,11 +160,7 @@ fn notes(ctx: &Ctx, q: &QuickReturn) -> Vec<String> {
             "the rod *b* turns about *B* (θ falling: the strokes run from right to left)",
         ),
     };
-    let offset = if m.offset() == 0.0 {
-        String::new()
-    } else {
-        format!(", *e* = {} {u}", short(m.offset()))
-    };
+    let offset = ctx.offset_clause();
     vec![
         format!(
             "{name}: *r* = {} {u}, *l* = {} {u}{offset}; {driver} at ω = {} rad/s ({} rpm); the tool is driven by the arm *L* = {} {u} of the slotted link *d* through a pin in a slot of the ram, its stroke square to the fixed link’s line of centres.",

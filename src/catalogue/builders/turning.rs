@@ -305,11 +305,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 3] {
             short(m.crank()),
             short(m.rod()),
             // An offset engine says so (its stroke, and so its work, differ).
-            if m.offset() == 0.0 {
-                String::new()
-            } else {
-                format!(", *e* = {} {}", short(m.offset()), ctx.unit())
-            },
+            ctx.offset_clause(),
             short(ctx.rpm()),
             short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
             gas_note(ctx),
