@@ -377,8 +377,9 @@
   const angleText = (deg) => String(Math.round((((deg % 360) + 360) % 360) * 10) / 10);
   // The last turn's step, degrees (0: none to go on).
   let motion = 0;
-  // The angle of the figure kept nearest `deg` if within `within`
-  // degrees, its state otherwise the current one; null if none is.
+  // The angle of the kept figure nearest `deg` among those within
+  // `within` degrees of it whose query is the current state's but for
+  // the angle (and not refused); null if there is none.
   const keptNear = (deg, within) => {
     let best = null;
     let gap = within;
@@ -443,7 +444,6 @@
     const panel = grabbedPanel(ev);
     if (!panel) return;
     dragging = panel.id || 'page';
-    motion = 0;
     stage.classList.add('dragging');
     stage.setPointerCapture(ev.pointerId);
     ev.preventDefault();
