@@ -15,7 +15,10 @@ const STYLE: &str = include_str!("page.css");
 /// The page's script: the state in the URL, a figure asked for at most
 /// once at a time through the [`WORKER`] (the newest state waits, older
 /// ones are dropped; a slow request is abandoned for a newer one), the
-/// crank pin dragged by pointer or turned by the arrow keys.
+/// crank pin dragged by pointer or turned by the arrow keys; a drag or a
+/// key asks ahead for the next poses at its step (three at most
+/// outstanding) and draws a figure it has kept in the handler of its
+/// event (docs/benchmarks.md, the explorer).
 const SCRIPT: &str = include_str!("page.js");
 
 /// The page's worker (`/worker.js`): the figure requests, made and their

@@ -498,14 +498,21 @@ mod in_the_browser {
         b.open(&url, READY);
         assert_eq!(check_against_analyze(&mut b)["angle_deg"], 30.0);
 
-        // B dragged from 30° to 120° in steps, the figure followed at each.
+        // B dragged from 30° to 120° in steps, the figure followed at each:
+        // after the first steps, drawn from those the page asked for ahead
+        // at the drag's step, each equal to `analyze` for its state.
         let start = pin_at(&mut b, 30.0);
         b.mouse("mousePressed", start, true);
         for k in 1..=9 {
             let to = pin_at(&mut b, 30.0 + 10.0 * k as f64);
             b.mouse("mouseMoved", to, true);
             b.wait(READY);
+            let angle = check_against_analyze(&mut b)["angle_deg"].as_f64().unwrap();
+            assert!((angle - (30.0 + 10.0 * k as f64)).abs() <= 0.1, "{angle}");
+            b.wait("window.explorer.outstanding() === 0");
         }
+        // The first move asked; the second on, each found its figure kept.
+        assert_eq!(count(&mut b, "window.explorer.kept"), 8);
         let end = pin_at(&mut b, 120.0);
         b.mouse("mouseReleased", end, false);
         b.wait(READY);
@@ -725,11 +732,105 @@ mod in_the_browser {
         (at(0.5), at(0.95))
     }
 
+    /// The numbers the page holds at `expression` (an array).
+    fn numbers(b: &mut Browser, expression: &str) -> Vec<f64> {
+        b.eval(expression)
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|t| t.as_f64().unwrap_or(f64::NAN))
+            .collect()
+    }
+
+    /// What a drag measured: per move, the page's ms from the event's
+    /// handler to the frame after its figure and from the event's own time
+    /// stamp to that frame, the driver's ms from sending it to the figure
+    /// drawn, and where each figure came from (0 asked, 1 asked ahead, 2
+    /// kept); the angles drawn; the figures asked of the server.
+    struct Drag {
+        page: Vec<f64>,
+        stamped: Vec<f64>,
+        driver: Vec<f64>,
+        sources: Vec<f64>,
+        angles: std::collections::BTreeSet<String>,
+        asked: u64,
+    }
+
+    /// Presses B at `path[0]`, moves it through the rest and lets it go at
+    /// the last, each move sent once the page has drawn the last (awaited
+    /// in the page, not polled: a driver's polls would take the page's
+    /// thread from the figure it is waiting for) and, when `paced`, no
+    /// sooner than a 60 Hz frame after the move before.
+    fn drag(b: &mut Browser, path: &[(f64, f64)], paced: bool) -> Drag {
+        let before = count(b, "window.explorer.timings.length");
+        let asked = count(b, "window.explorer.requests + window.explorer.ahead");
+        b.mouse("mousePressed", path[0], true);
+        let mut driver = Vec::new();
+        let mut angles = std::collections::BTreeSet::new();
+        let mut last = std::time::Instant::now();
+        for &to in &path[1..] {
+            let frame = std::time::Duration::from_micros(16_667);
+            if paced && last.elapsed() < frame {
+                std::thread::sleep(frame - last.elapsed());
+            }
+            let drawn = count(b, "window.explorer.drawn");
+            last = std::time::Instant::now();
+            b.mouse("mouseMoved", to, true);
+            b.eval(&format!("window.explorer.settled({})", drawn + 1));
+            driver.push(last.elapsed().as_secs_f64() * 1e3);
+            let angle = b.eval("window.explorer.state.angle");
+            angles.insert(angle.as_str().unwrap().to_string());
+        }
+        b.mouse("mouseReleased", path[path.len() - 1], false);
+        b.wait(READY);
+        let moves = path.len() as u64 - 1;
+        let end = before + moves;
+        b.wait(&format!("window.explorer.timings.length >= {end}"));
+        let column = |b: &mut Browser, k: usize| {
+            numbers(
+                b,
+                &format!("window.explorer.phases.slice({before}, {end}).map(p => p[{k}])"),
+            )
+        };
+        Drag {
+            page: numbers(
+                b,
+                &format!("window.explorer.timings.slice({before}, {end})"),
+            ),
+            stamped: column(b, 7),
+            sources: column(b, 8),
+            driver,
+            angles,
+            asked: count(b, "window.explorer.requests + window.explorer.ahead") - asked,
+        }
+    }
+
+    /// The drag's numbers, printed.
+    fn report(what: &str, d: &mut Drag) {
+        let (median, p95) = quantiles(&mut d.page);
+        let (s_median, s_p95) = quantiles(&mut d.stamped);
+        let (d_median, d_p95) = quantiles(&mut d.driver);
+        let of = |s: f64| d.sources.iter().filter(|&&x| x == s).count();
+        println!(
+            "{what}, {} moves: in the page median {median:.2} ms, p95 {p95:.2} ms; \
+             from the event's time stamp median {s_median:.2} ms, p95 {s_p95:.2} ms; \
+             as the driver sees it median {d_median:.2} ms, p95 {d_p95:.2} ms; \
+             figures kept {}, asked ahead {}, asked {}; {} figures asked of the server",
+            d.page.len(),
+            of(2.0),
+            of(1.0),
+            of(0.0),
+            d.asked
+        );
+    }
+
     /// Latency from a drag to the new figure on screen, over 200 drags of
     /// B (docs/benchmarks.md): measured and printed, not held to a bound.
     /// In the page, from the pointer event to the first animation frame
     /// after the figure is in the page; and as this driver sees it, from
-    /// sending the event to reading the page ready.
+    /// sending the event to reading the page drawn. A steady drag (1.7° a
+    /// move, the driver's pace), then a drag as a hand makes it: whole
+    /// pixels, its speed changing, 60 moves a second at most.
     #[test]
     #[ignore = "needs Chromium: run with `-- --ignored` (.ci/run does)"]
     fn latency_of_200_drags() {
@@ -740,46 +841,28 @@ mod in_the_browser {
             server.port
         );
         b.open(&url, READY);
-        let start = pin_at(&mut b, 30.0);
-        b.mouse("mousePressed", start, true);
-        let mut driver = Vec::new();
-        let mut angles = std::collections::BTreeSet::new();
-        for k in 1..=200 {
-            let to = pin_at(&mut b, 30.0 + 1.7 * k as f64);
-            let drawn = b.eval("window.explorer.drawn").as_u64().unwrap();
-            let sent = std::time::Instant::now();
-            b.mouse("mouseMoved", to, true);
-            // Awaited in the page, not polled: a driver's polls would take
-            // the page's thread from the figure it is waiting for.
-            b.eval(&format!("window.explorer.settled({})", drawn + 1));
-            driver.push(sent.elapsed().as_secs_f64() * 1e3);
-            angles.insert(
-                b.eval("window.explorer.state.angle")
-                    .as_str()
-                    .unwrap()
-                    .to_string(),
-            );
-        }
-        let end = pin_at(&mut b, 30.0 + 340.0);
-        b.mouse("mouseReleased", end, false);
-        b.wait("window.explorer.timings.length >= 200");
-        let page = b.eval("window.explorer.timings.slice(0, 200)");
-        let mut page: Vec<f64> = page
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|t| t.as_f64().unwrap())
+        // The view is held over the turn: the points are those of the
+        // figure first drawn.
+        let path: Vec<(f64, f64)> = (0..=200)
+            .map(|k| pin_at(&mut b, 30.0 + 1.7 * k as f64))
             .collect();
+        let mut steady = drag(&mut b, &path, false);
         // Every drag drew a figure of its own pose.
-        assert_eq!(angles.len(), 200);
+        assert_eq!(steady.angles.len(), 200);
         assert!(b.errors.is_empty(), "{:?}", b.errors);
-        let (median, p95) = quantiles(&mut page);
-        let (d_median, d_p95) = quantiles(&mut driver);
-        println!(
-            "explorer latency over {} drags: in the page median {median:.2} ms, p95 {p95:.2} ms; \
-             as the driver sees it median {d_median:.2} ms, p95 {d_p95:.2} ms",
-            page.len()
-        );
+        let phases = b.eval("window.explorer.phases.slice(0, 200)");
+        report("explorer latency, a steady drag", &mut steady);
+        let mut turned = 30.0 + 340.0;
+        let hand: Vec<(f64, f64)> = (0..=200)
+            .map(|k| {
+                turned += 1.9 + 1.6 * (f64::from(k) / 9.0).sin();
+                let (x, y) = pin_at(&mut b, turned);
+                (x.round(), y.round())
+            })
+            .collect();
+        let mut by_hand = drag(&mut b, &hand, true);
+        assert!(b.errors.is_empty(), "{:?}", b.errors);
+        report("  a drag by hand", &mut by_hand);
         // The same over 50 presses of an arrow key (no pointer).
         b.eval("document.getElementById('stage').focus()");
         let before = b.eval("window.explorer.timings.length").as_u64().unwrap();
@@ -792,18 +875,13 @@ mod in_the_browser {
             "window.explorer.timings.length >= {}",
             before + 50
         ));
-        let keys = b.eval(&format!("window.explorer.timings.slice({before})"));
-        let mut keys: Vec<f64> = keys
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|t| t.as_f64().unwrap())
-            .collect();
+        let mut keys = numbers(&mut b, &format!("window.explorer.timings.slice({before})"));
         let (k_median, k_p95) = quantiles(&mut keys);
         println!("  50 arrow keys: median {k_median:.2} ms, p95 {k_p95:.2} ms");
         // The figure's round trip from a script, with no event or frame
         // in it: the part of the latency the fetch takes.
-        let fetched = b.eval(
+        let mut fetched = numbers(
+            &mut b,
             "(async () => {
                const q = new URLSearchParams(location.search).toString();
                const t = [];
@@ -815,21 +893,15 @@ mod in_the_browser {
                return t;
              })()",
         );
-        let mut fetched: Vec<f64> = fetched
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|t| t.as_f64().unwrap())
-            .collect();
         let (f_median, f_p95) = quantiles(&mut fetched);
         println!(
             "  50 fetches of the figure from a script: median {f_median:.2} ms, p95 {f_p95:.2} ms"
         );
-        let phases = b.eval("window.explorer.phases.slice(0, 200)");
-        // The phases the page records: its own clock at the reply read and
-        // the figure set, and the browser's resource timing of the request
-        // (fetch called, the request sent once connected, the reply's first
-        // and last bytes).
+        // The phases the page records of the steady drag: its own clock at
+        // the reply read and the figure set, and the browser's resource
+        // timing of the request (fetch called, the request sent once
+        // connected, the reply's first and last bytes), for the figures
+        // not kept.
         for (k, what) in [
             (0, "reply read"),
             (1, "figure in the page"),
@@ -848,7 +920,10 @@ mod in_the_browser {
                 continue;
             }
             let (m, p) = quantiles(&mut t);
-            println!("  from the drag to the {what}: median {m:.2} ms, p95 {p:.2} ms");
+            println!(
+                "  from the drag to the {what}: median {m:.2} ms, p95 {p:.2} ms ({} figures)",
+                t.len()
+            );
         }
     }
 }
