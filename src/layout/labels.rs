@@ -691,9 +691,17 @@ pub(crate) struct Steer<'a> {
     /// to its own ([`AMBIGUOUS`]); empty for a label that names no point
     /// or where no other point is near.
     pub others: &'a [Point],
+    /// The distance (page units, the letter's em) within which another
+    /// point is read with the anchor as a pair: the nearer it is, the
+    /// more nearer it a letter may stand ([`nearer_another`]); 0 for
+    /// none.
+    pub pair: f64,
     /// The page line a text names and the other links, which a place
     /// should not stand nearer to than to the line ([`AMBIGUOUS`]).
     pub line: Option<(Segment, &'a [Segment])>,
+    /// The dimension lines a text naming a line keeps nearer its own
+    /// line than, at a lesser cost ([`MISREAD`]) than another link's.
+    pub dimensions: &'a [Segment],
 }
 
 /// How much nearer (page units) another point may be to a letter's box
@@ -709,11 +717,25 @@ pub(crate) const NEARER: f64 = 2.0;
 /// is, and any clear place within reach beats it.
 const AMBIGUOUS: f64 = STRUCK;
 
+/// What a place costs more whose box, naming a line, stands nearer a
+/// dimension line than its own line: half a struck letter's, so that any
+/// place nearer another link costs more (that one names the wrong link;
+/// this one reads as the dimension's value beside its own).
+const MISREAD: f64 = 0.5 * STRUCK;
+
 /// Whether `b` stands nearer one of `others` than `anchor` by more than
-/// [`NEARER`].
-fn nearer_another(b: &Bounds, anchor: Point, others: &[Point]) -> bool {
+/// [`NEARER`], and by more than that and the share of `pair` the two
+/// points are closer than it: two points an em apart or more are told
+/// apart by the letters' [`NEARER`] alone, two a few units apart read as
+/// a pair whose letters may stand on either side, but not with the other
+/// point between a letter and its own (A's letter beyond the O dot
+/// beside it); two that coincide take their letters anywhere about them.
+fn nearer_another(b: &Bounds, anchor: Point, others: &[Point], pair: f64) -> bool {
     let own = b.distance_to(anchor);
-    others.iter().any(|&q| b.distance_to(q) + NEARER < own)
+    others.iter().any(|&q| {
+        let slack = NEARER + (pair - (q - anchor).norm()).max(0.0);
+        b.distance_to(q) + slack < own
+    })
 }
 
 /// Whether `b` stands less than [`LINE_NEARER`] nearer the line `own`
@@ -767,7 +789,9 @@ pub(crate) fn place_toward(
     let Steer {
         toward,
         others,
+        pair,
         line,
+        dimensions,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
@@ -802,10 +826,12 @@ pub(crate) fn place_toward(
         if !b.inside(page) {
             cost += 1e6;
         }
-        if nearer_another(&b, anchor, &others)
+        if nearer_another(&b, anchor, &others, pair)
             || line.is_some_and(|(own, rivals)| nearer_another_line(&b, own, rivals))
         {
             cost += AMBIGUOUS;
+        } else if line.is_some_and(|(own, _)| nearer_another_line(&b, own, dimensions)) {
+            cost += MISREAD;
         }
         if cost + penalty < best.0 {
             *best = (cost + penalty, cost, centre);
@@ -956,17 +982,68 @@ mod tests {
         let other = Point::new(113.0, 87.0);
         let o = Obstacles::default();
         let free = place(own, half, 4.0, 22.0, &o, &page).0;
-        assert!(nearer_another(&Bounds::around(free, half), own, &[other]));
+        assert!(nearer_another(
+            &Bounds::around(free, half),
+            own,
+            &[other],
+            0.0
+        ));
         let steer = Steer {
-            toward: None,
             others: &[other],
-            line: None,
+            ..Steer::default()
         };
         let (at, cost) = place_toward(own, half, 4.0, 22.0, steer, &o, &page);
         let b = Bounds::around(at, half);
-        assert!(!nearer_another(&b, own, &[other]), "{at:?}");
+        assert!(!nearer_another(&b, own, &[other], 0.0), "{at:?}");
         assert_eq!(cost, 0.0);
         assert!(b.distance_to(own) <= 22.0);
+    }
+
+    #[test]
+    fn a_letter_of_a_pair_never_has_the_other_point_between_it_and_its_own() {
+        let (half, own) = (Vector::new(6.0, 7.0), Point::new(100.0, 100.0));
+        let em = 17.0;
+        // O's dot 13 units left of A's pin: read with it as a pair.
+        let other = Point::new(87.0, 100.0);
+        let box_at = |x: f64, y: f64| Bounds::around(Point::new(x, y), half);
+        // Beyond O from A: the reader takes O's dot for A.
+        assert!(nearer_another(&box_at(73.0, 100.0), own, &[other], em));
+        // Above the pair, or on A's side: the pair's letters.
+        assert!(!nearer_another(&box_at(93.0, 84.0), own, &[other], em));
+        assert!(!nearer_another(&box_at(114.0, 100.0), own, &[other], em));
+        // Two points that coincide take their letters anywhere about them.
+        let at_own = Point::new(100.5, 100.0);
+        assert!(!nearer_another(&box_at(80.0, 100.0), own, &[at_own], em));
+        // Above the pair nearer O: a pair's letter, not a lone point's.
+        assert!(!nearer_another(&box_at(85.0, 84.0), own, &[other], em));
+        assert!(nearer_another(&box_at(85.0, 84.0), own, &[other], 0.0));
+    }
+
+    #[test]
+    fn a_text_naming_a_line_keeps_nearer_it_than_a_dimension_line() {
+        // The rod along y = 0 and, a letter's height from it, x's
+        // dimension line: "l = 1.63 r" set between them is x's value.
+        let rod = (Point::new(0.0, 0.0), Point::new(100.0, 0.0));
+        let dimension = (Point::new(0.0, -16.0), Point::new(100.0, -16.0));
+        let half = Vector::new(10.0, 5.0);
+        let (o, page) = (
+            Obstacles::default(),
+            PageRect::new(-100.0, -100.0, 300.0, 200.0),
+        );
+        let at = |dimensions: &[Segment]| {
+            let steer = Steer {
+                line: Some((rod, &[])),
+                dimensions,
+                ..Steer::default()
+            };
+            let (centre, _) =
+                place_toward(Point::new(50.0, 0.0), half, 3.0, 20.0, steer, &o, &page);
+            Bounds::around(centre, half)
+        };
+        // Blind to the dimension, the first place tried is by it.
+        assert!(nearer_another_line(&at(&[]), rod, &[dimension]));
+        let b = at(&[dimension]);
+        assert!(!nearer_another_line(&b, rod, &[dimension]), "{b:?}");
     }
 
     #[test]

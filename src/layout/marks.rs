@@ -162,6 +162,9 @@ impl PanelLayout<'_> {
             ([a2 + u * 2.0, b2 - u * 2.0], -u)
         };
         self.obstacles.segment(line[0], line[1]);
+        // A text naming a line keeps nearer its own than a dimension
+        // line (l set between x's heads reads as x's value).
+        self.dimensions.push((line[0], line[1]));
         // Letters keep off the extension lines but for their first
         // stretch, where the dimensioned point's own letter may stand.
         for (p, q) in [(a, a2), (b, b2)] {

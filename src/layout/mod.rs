@@ -151,9 +151,12 @@ struct PanelLayout<'a> {
     /// The page centres of the pins and constructed points drawn, which
     /// a point's letter keeps nearer its own than.
     points: Vec<Point>,
-    /// The links and forces drawn (page segments), which a text naming
-    /// a line keeps nearer its own than.
+    /// The links and forces drawn (page segments), which a text naming a
+    /// line keeps nearer its own than.
     links: Vec<(Point, Point)>,
+    /// The dimension lines drawn (page segments), which a text naming a
+    /// line keeps nearer its own than where it can.
+    dimensions: Vec<(Point, Point)>,
 }
 
 impl PanelLayout<'_> {
@@ -292,6 +295,7 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Plac
         crossing: Vec::new(),
         points: Vec::new(),
         links: Vec::new(),
+        dimensions: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -414,7 +418,7 @@ impl PanelLayout<'_> {
         let mut nodes = Vec::new();
         let mut boxes = Vec::new();
         for (p, at) in order.into_iter().zip(placed) {
-            let others = others(p, &self.points);
+            let others = others(p, &self.points, p.size);
             if !self.left_to_detail(p, &at, &joints, (joints.iter()).chain(&others)) {
                 nodes.extend(self.label_nodes(p, &at));
                 boxes.push(at.bounds);
@@ -489,7 +493,7 @@ impl PanelLayout<'_> {
         order
             .iter()
             .map(|p| {
-                let others = others(p, &self.points);
+                let others = others(p, &self.points, 0.0);
                 let rivals = rivals(p, &self.links);
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
@@ -503,7 +507,9 @@ impl PanelLayout<'_> {
                         Steer {
                             toward: p.toward,
                             others: &others,
+                            pair: p.size,
                             line: p.line.map(|own| (own, rivals.as_slice())),
+                            dimensions: &self.dimensions,
                         },
                         &self.obstacles,
                         room,
@@ -592,15 +598,15 @@ impl PanelLayout<'_> {
 }
 
 /// The points a label's place keeps farther from than from its own:
-/// for a point's letter, every other point drawn more than an em
-/// from it (nearer, the two are read as one place, and their letters
-/// as a pair); for any other label, none.
-fn others(p: &Pending, points: &[Point]) -> Vec<Point> {
+/// for a point's letter, every other point drawn more than `beyond`
+/// from it (a pair nearer than an em is read as one place, their letters
+/// as a pair, [`Steer::pair`]); for any other label, none.
+fn others(p: &Pending, points: &[Point], beyond: f64) -> Vec<Point> {
     if !p.letter || !points.contains(&p.anchor) {
         return Vec::new();
     }
     (points.iter())
-        .filter(|q| (**q - p.anchor).norm() > p.size)
+        .filter(|q| (**q - p.anchor).norm() > beyond)
         .copied()
         .collect()
 }

@@ -424,8 +424,11 @@ fn labels_far(plate: &Plate) -> Vec<Failure> {
 
 /// Rule 3b: a point's letter is not nearer another point's marker than
 /// its own by more than [`NEARER`] (a letter is read with the nearer),
-/// save a point within an em of its own (the two read as one place) or
-/// one outside the slider's block that holds the letter with its pin.
+/// save a point outside the slider's block that holds the letter with its
+/// pin; for a point within an em of its own (the two read as a pair) the
+/// allowance grows by what the two are nearer than an em, so that a
+/// pair's letters may stand on either side but never with the other
+/// point between a letter and its own.
 fn labels_nearer_another(plate: &Plate) -> Vec<Failure> {
     let mut out = Vec::new();
     for panel in &plate.panels {
@@ -440,7 +443,8 @@ fn labels_nearer_another(plate: &Plate) -> Vec<Failure> {
                 let d = label.rect.distance_to(q);
                 let apart = (q.0 - at.0).hypot(q.1 - at.1);
                 let walled = block.is_some_and(|b| b.distance_to(q) > 0.0);
-                if other != letter && d + NEARER < own && apart > label.font_size && !walled {
+                let slack = NEARER + (label.font_size - apart).max(0.0);
+                if other != letter && d + slack < own && !walled {
                     out.push(fail(
                         RULE_NEARER,
                         format!("{id} {own:.1} px from its point, {d:.1} from {other}"),
@@ -1173,6 +1177,9 @@ fn chain_plates_are_clean() {
         outcomes.len(),
         start.elapsed()
     );
+    if let Ok(path) = std::env::var("PLATES_LOG") {
+        std::fs::write(&path, every_failure(&outcomes)).unwrap();
+    }
     assert!(outcomes.len() > 1000, "{}", outcomes.len());
     // Every figure at its own defaults is clean (checked below); of the
     // hard poses a handful still crowd a letter (see the report).
@@ -1182,11 +1189,14 @@ fn chain_plates_are_clean() {
         .count();
     // Rule 12 is held where it stands, not yet at 0: 144 plates of 1788
     // lost their fixed bar's hatching before a link lying on it or just
-    // behind it was let touch the strokes' feet, 122 now: short bars (40
-    // to 90 px) whose hatching gives way to the letters crowding them, and
-    // links lying along the bar in front of it.
+    // behind it was let touch the strokes' feet, 122 then, 123 now: short
+    // bars (40 to 90 px) whose hatching gives way to the letters crowding
+    // them, and links lying along the bar in front of it. The one more
+    // (inversion 2 at l = 1.05 r, 230°) is O_ad's letter set by its own
+    // pin rather than by O_bc's, a pair's letters no longer crossed, on
+    // the fixed crank's hatching (2 strokes left of 3).
     assert!(
-        unhatched <= 122,
+        unhatched <= 123,
         "{unhatched} plates with the fixed link unhatched\n{text}"
     );
     let broken = (outcomes.iter())
@@ -1590,13 +1600,22 @@ fn a_letter_nearer_another_point_than_its_own_is_caught() {
 }
 
 #[test]
-fn a_letter_between_two_points_an_em_apart_reads_with_the_pair() {
-    // D 16 px from A (under an em of 17): the two read as one place.
-    let body = mechanism_with_guide_to(CLEAN_MECHANISM_END).replace(r#"y="185""#, r#"y="176""#);
+fn a_pair_s_letters_stand_either_side_but_not_past_the_other_point() {
+    // D 16 px below A (under an em of 17): the two read as a pair, D's
+    // letter to its left.
     let dot = r##"<circle id="point-D" class="construction" cx="60" cy="166" r="2" fill="#000"/>
 <text id="label-D" class="label" x="40" y="172" font-size="17" text-anchor="middle">D</text>"##;
-    let plate = Plate::read(&page(&(body + dot), NOTE, WIDE_POINTS));
-    assert!(labels_nearer_another(&plate).is_empty());
+    let with_a_at = |y: &str| {
+        let body = mechanism_with_guide_to(CLEAN_MECHANISM_END)
+            .replace(r#"y="185""#, &format!(r#"y="{y}""#));
+        Plate::read(&page(&(body + dot), NOTE, WIDE_POINTS))
+    };
+    // A's letter above A, away from D: the pair's letters.
+    assert!(labels_nearer_another(&with_a_at("140")).is_empty());
+    // A's letter below D, D between it and A: read as D's.
+    let past = labels_nearer_another(&with_a_at("180"));
+    assert_eq!(past.len(), 1, "{past:?}");
+    assert!(past[0].ids.starts_with("label-A"), "{past:?}");
 }
 
 #[test]
@@ -2402,12 +2421,17 @@ fn a_pin_left_unlettered_on_both_views_is_caught() {
 #[test]
 fn a_pin_s_letter_nearer_another_pin_is_left_to_the_detail() {
     // The inertia force at l = 1.05 r, 130°: A and C 13 units apart
-    // inside the detail's frame, A's letter set beyond C (19 units from
-    // C, 27 from A), read as C's. A pin's letter on the main view inside
-    // a detail's frame is never nearer another pin than its own by more
-    // than 3 units: where no place is, the detail letters the pin.
+    // inside the detail's frame. A's letter was set beyond C (19 units
+    // from C, 27 from A), read as C's, and so left to the detail; the two
+    // read as a pair, it now stands on A's side, nearer A than C. A pin's
+    // letter on the main view inside a detail's frame is never nearer
+    // another pin than its own by more than 3 units: where no place is,
+    // the detail letters the pin.
     let plate = plate_at("inertia-force", 1.05, 0.0, 130.0);
-    assert!(!plate.panels[0].labels.iter().any(|l| l.id == "label-A"));
+    let main = &plate.panels[0];
+    let a = main.labels.iter().find(|l| l.id == "label-A").unwrap();
+    let (at_a, at_c) = (main.markers["A"], main.markers["C"]);
+    assert!(a.rect.distance_to(at_a) < a.rect.distance_to(at_c));
     assert!(
         plate.panels[1]
             .labels
