@@ -21,7 +21,7 @@ use crate::diagram::Plot;
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Hue, PageRect, RIGHT_ANGLE, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector, perp};
-use crate::scene::{Canvas, Marker};
+use crate::scene::{COINCIDE, Canvas, Marker};
 use serde_json::{Value, json};
 
 /// Page margin, as the other builders'.
@@ -64,8 +64,8 @@ const DETAIL_PAD: f64 = 40.0;
 /// The detail panels' height, page units.
 const DETAIL_HEIGHT: f64 = 240.0;
 
-/// Page distance under which two points of a polygon crowd: one letter
-/// names them both ("*k*, *a*′_{d}"), as a book letters coinciding images.
+/// Page distance within which a point of a polygon crowds the subject of
+/// its detail (or another point so crowding): the detail takes it in.
 const CROWD: f64 = 24.0;
 
 /// The least side of the box marking a detail's region on the polygon,
@@ -616,13 +616,14 @@ fn mark_window(s: &mut Canvas, name: &str, frame: &Frame) {
     );
 }
 
-/// Letters the polygon's `points`, those crowding within [`CROWD`] by
-/// one letter, those in the region left to a detail (`quiet`) not here.
+/// Letters the polygon's `points`, those that coincide on the page
+/// (within [`COINCIDE`]) by one letter, those in the region left to a
+/// detail (`quiet`) not here.
 fn letter(s: &mut Canvas, points: &[Lettered], quiet: Option<Frame>) {
     let points: Vec<(&str, &str, Point)> = (points.iter())
         .map(|(id, markup, at)| (*id, *markup, Point::from(*at)))
         .collect();
-    s.letter_crowded(&points, CROWD, Point::origin(), quiet);
+    s.letter_crowded(&points, COINCIDE, Point::origin(), quiet);
 }
 
 /// The detail of a polygon: the region of `window` enlarged in `rect`,
