@@ -75,6 +75,11 @@ const BOX_LEAST: f64 = 16.0;
 /// The steps a scale bar's length is chosen from (times a power of ten).
 const STEPS: [f64; 4] = [1.0, 2.0, 2.5, 5.0];
 
+/// The steps the crank detail's magnification is chosen from (times a
+/// power of ten): finer, so that the crank keeps most of the room the
+/// detail gives it.
+const FINE_STEPS: [f64; 9] = [1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
+
 /// The share of a polygon's size below which a value read off it is its
 /// rounding and is written 0.
 const ROUNDING: f64 = 1e-10;
@@ -292,11 +297,11 @@ impl Polygons {
     }
 }
 
-/// The largest round step of [`STEPS`] times a power of ten not above
-/// `x` (positive and finite).
-fn round_below(x: f64) -> f64 {
+/// The largest of the round `steps` times a power of ten not above `x`
+/// (positive and finite).
+fn round_below(x: f64, steps: &[f64]) -> f64 {
     let decade = 10f64.powf(x.log10().floor());
-    STEPS
+    steps
         .iter()
         .map(|s| s * decade)
         .filter(|s| *s <= x * (1.0 + 1e-12))
@@ -340,7 +345,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let ca = (engine.a() - engine.c()).norm();
     let polygons = Polygons { inversion, p, ca };
     let page = ctx.page();
-    let mechanism = mechanism_plot(ctx, &pose)?;
+    let (mechanism, crank_detail) = mechanism_plot(ctx, &pose)?;
     let top = mechanism.rect().y + mechanism.rect().height + GAP;
     let [v_rect, a_rect, rule_rect] = row(page.width(), top, POLYGON_HEIGHT);
     let [v_below, a_below, _] = row(page.width(), top + POLYGON_HEIGHT + GAP, DETAIL_HEIGHT);
@@ -384,6 +389,9 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.meta("velocity_polygon", v_points);
     sheet.meta("acceleration_polygon", a_points);
     sheet.plot(mechanism);
+    if let Some(d) = crank_detail {
+        sheet.detail(d);
+    }
     sheet.plot(velocity);
     sheet.plot(acceleration);
     sheet.plot(rule);
@@ -405,9 +413,22 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
 /// The notes' lines before wrapping.
 const NOTES_LINES: f64 = 5.0;
 
+/// The page length under which the crank CB in the mechanism panel gets
+/// an enlarged detail: at a long rod (inversion 3 on a rod of fifty
+/// cranks) its pins touch, the crank hides in B's bearing and the
+/// driver's ω finds no room.
+const CRANK_LEAST: f64 = 40.0;
+
+/// The crank detail's reach about B, in cranks: the crank's circle and
+/// room for its letters (a panel 170 units tall draws the crank at least
+/// 170 / 3 / (4/3), about 42 units, the finest steps being 4/3 apart).
+const CRANK_REACH: f64 = 1.5;
+
 /// The mechanism panel: the chain at the pose in the fixed link's frame,
-/// its pins lettered C, B, A and the driver's sense of turning.
-fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<Plot> {
+/// its pins lettered C, B, A and the driver's sense of turning; where the
+/// crank is drawn shorter than [`CRANK_LEAST`], a detail of the region
+/// about it beside the panel (boxed there), which carries ω.
+fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, Option<Plot>)> {
     let m = ctx.mechanism;
     let frame = super::inversions::links_frame(&m, pose);
     let size = frame.max() - frame.min();
@@ -420,19 +441,59 @@ fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<Plot> {
     let seen = world.max() - world.min();
     let tall = (width * seen.y / seen.x).clamp(MECHANISM_HEIGHT.0, MECHANISM_HEIGHT.1);
     let rect = PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
+    let whole = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
+    let scale = whole.map().scale();
+    if m.crank() * scale >= CRANK_LEAST {
+        return Ok((links_plot(ctx, pose, whole, None)?, None));
+    }
+    let side = tall;
+    let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
+    let plot = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
+    let scale = plot.map().scale();
+    let b = pose.place(pose.engine_pose().b());
+    let wanted = side / (2.0 * CRANK_REACH * m.crank()) / scale;
+    let magnification = round_below(wanted, &FINE_STEPS).max(1.0);
+    let half = Vector::new(side, tall) * (0.5 / (magnification * scale));
+    let region = Frame::new(b - half, b + half);
+    let detail_rect = PageRect::new(MARGIN + width - side, MARGIN, side, rect.height);
+    let caption = format!("the boxed region enlarged ×{}", short(magnification));
+    let detail = Plot::world(
+        "mechanism-detail",
+        detail_rect,
+        &region,
+        false,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption(&caption);
+    let detail = links_plot(ctx, pose, detail, Some(region))?;
+    Ok((links_plot(ctx, pose, plot, Some(region))?, Some(detail)))
+}
+
+/// The chain drawn on `plot`: its links, pins C, B, A lettered where on
+/// the panel, the driver's ω; on the whole mechanism (named `mechanism`)
+/// the caption and, where a detail enlarges `region`, its box.
+fn links_plot(ctx: &Ctx, pose: &InversionPose, plot: Plot, region: Option<Frame>) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let whole = plot.panel_id() == "panel-mechanism";
     let inversion = pose.inversion();
-    let caption = format!(
-        "Inversion {}, {}: the relative-velocity method with the Coriolis component",
-        inversion.number(),
-        match inversion {
-            Inversion::Rod => "the crank and slotted lever",
-            _ => "Whitworth’s quick return",
-        }
-    );
-    let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?
-        .with_caption(&caption);
+    let mut plot = if whole {
+        plot.with_caption(&format!(
+            "Inversion {}, {}: the relative-velocity method with the Coriolis component",
+            inversion.number(),
+            match inversion {
+                Inversion::Rod => "the crank and slotted lever",
+                _ => "Whitworth’s quick return",
+            }
+        ))
+    } else {
+        plot
+    };
     let map = *plot.map();
-    let canvas = Canvas::new(map, map.world_frame(&plot.area()));
+    let mut canvas = Canvas::new(map, map.world_frame(&plot.area()));
+    if !whole {
+        canvas = canvas.detail("detail-");
+    }
     let mut s = super::inversions::draw_links(m, pose, canvas);
     let engine = pose.engine_pose();
     let (c, b, a) = (
@@ -441,9 +502,14 @@ fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<Plot> {
         pose.place(engine.a()),
     );
     for (key, at) in [("C", c), ("B", b), ("A", a)] {
-        s.lettered(key, at, &format!("*{key}*"), Marker::Pin, c);
+        if whole || s.contains(at) {
+            s.lettered(key, at, &format!("*{key}*"), Marker::Pin, c);
+        }
     }
     driver_turn(&mut s, pose, ctx.omega);
+    if let (true, Some(region)) = (whole, region) {
+        mark_window(&mut s, "mechanism", &region);
+    }
     for item in s.finish().0 {
         plot.push(item);
     }
@@ -528,7 +594,7 @@ fn polygon_plot(
         mark_window(&mut s, drawn.name, &w.frame);
     }
     letter(&mut s, &drawn.points, window.map(|w| w.frame));
-    let bar = round_below(0.45 * extent);
+    let bar = round_below(0.45 * extent, &STEPS);
     let y = world.min().y + 0.08 * extent;
     let x = world.min().x + PAD * extent * 0.5;
     let unit = format!("{}{}", ctx.unit(), drawn.per);
@@ -582,7 +648,7 @@ fn window(points: &[Lettered], side: Subject, scale: f64, area: (f64, f64)) -> O
     let wanted = fit
         .min(SUBJECT_MOST / length)
         .max(2.0 * SUBJECT_LEAST / length);
-    let magnification = round_below(wanted / scale).max(1.0);
+    let magnification = round_below(wanted / scale, &STEPS).max(1.0);
     let detail = magnification * scale;
     let centre = if detail <= fit * (1.0 + 1e-9) {
         (lo + hi) * 0.5
