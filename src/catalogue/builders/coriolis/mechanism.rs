@@ -13,10 +13,10 @@ use crate::figure::{PageRect, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Vector};
 use crate::scene::{Canvas, Marker};
 
-/// The page length under which the crank CB in the mechanism panel gets
-/// an enlarged detail: at a long rod (inversion 3 on a rod of fifty
-/// cranks) its pins touch, the crank hides in B's bearing and the
-/// driver's ω finds no room.
+/// The page length under which inversion 3's crank CB, the driver, gets
+/// an enlarged detail beside the mechanism panel: at a long rod (a rod of
+/// fifty cranks) its pins touch, the crank hides in B's bearing and its ω
+/// finds no room.
 pub(super) const CRANK_LEAST: f64 = 40.0;
 
 /// The crank detail's reach about B, in cranks: the crank's circle and
@@ -25,9 +25,9 @@ pub(super) const CRANK_LEAST: f64 = 40.0;
 pub(super) const CRANK_REACH: f64 = 1.5;
 
 /// The mechanism panel: the chain at the pose in the fixed link's frame,
-/// its pins lettered C, B, A and the driver's sense of turning; where the
-/// crank is drawn shorter than [`CRANK_LEAST`], a detail of the region
-/// about it beside the panel (boxed there), which carries ω.
+/// its pins lettered C, B, A and the driver's sense of turning; where
+/// inversion 3's crank is drawn shorter than [`CRANK_LEAST`], a detail of
+/// the region about it beside the panel (boxed there), which carries ω.
 pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, Option<Plot>)> {
     let m = ctx.mechanism;
     let frame = super::super::inversions::links_frame(&m, pose);
@@ -43,7 +43,8 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let rect = PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
     let whole = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
     let scale = whole.map().scale();
-    if m.crank() * scale >= CRANK_LEAST {
+    // Inversion 2's crank is the fixed link, drawn whole by its bearings.
+    if m.crank() * scale >= CRANK_LEAST || pose.inversion() != Inversion::Rod {
         return Ok((links_plot(ctx, pose, whole, None)?, None));
     }
     let side = tall;
