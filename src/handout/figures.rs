@@ -4,7 +4,7 @@
 use super::{Gas, Handout};
 use crate::catalogue::{FigureOptions, Setting};
 use crate::error::Result;
-use crate::figure::{Figure, Panel, Part, Role};
+use crate::figure::{Figure, PageLength, PageUnit, Panel, Part, Role};
 use crate::render::{Element, SvgOptions, fmt, to_svg_with};
 use crate::{catalogue::FigureName, scene::Layer};
 
@@ -37,15 +37,36 @@ pub(super) fn mechanism(h: &Handout, name: FigureName, layers: Option<&[Layer]>)
 
 /// The diagram `name` for the handout's engine, pose, speed and units.
 pub(super) fn diagram(h: &Handout, name: FigureName) -> Result<Figure> {
+    name.figure(&options(h))
+}
+
+/// The figure `name` of the handout's engine on a page `width` by
+/// `height` units (px): a figure laid out wide and low, so that printed
+/// it takes less of a page's height.
+pub(super) fn diagram_on_page(
+    h: &Handout,
+    name: FigureName,
+    (width, height): (f64, f64),
+) -> Result<Figure> {
     let options = FigureOptions {
+        width: Some(PageLength::new(width, PageUnit::Px)?),
+        height: Some(PageLength::new(height, PageUnit::Px)?),
+        ..options(h)
+    };
+    name.figure(&options)
+}
+
+/// The options of a figure of the handout's engine: its mechanism, ω,
+/// angle and units.
+fn options(h: &Handout) -> FigureOptions {
+    FigureOptions {
         mechanism: Some(*h.mechanism()),
         omega: Some(h.omega()),
         angle: Some(h.angle()),
         length_unit: Some(h.units().length().clone()),
         force_unit: Some(h.units().force().clone()),
         ..FigureOptions::default()
-    };
-    name.figure(&options)
+    }
 }
 
 /// The mechanism alone, on the page `fitted` was fitted to: the frame, the

@@ -20,7 +20,7 @@ pub(crate) mod valid;
 
 pub use cache::Evaluations;
 pub(crate) use canvas::{Canvas, Marker, round};
-pub(crate) use draw::{offset_note, torque_arrow};
+pub(crate) use draw::{COINCIDE, offset_note, torque_arrow};
 pub use layer::Layer;
 pub(crate) use linkage::{BEARING_REACH, PIN_CLEAR, Seg, Slot};
 pub use notation::Notation;

@@ -192,3 +192,44 @@ fn the_coriolis_figures_read_the_exact_link_motion_off_their_polygons() {
         }
     }
 }
+
+/// The page length of the link `id` (its path's first and last points).
+fn drawn_length(svg: &str, id: &str) -> Option<f64> {
+    let d = crate::common::attr(svg, id, "d")?;
+    let numbers: Vec<f64> = d
+        .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    let (a, b) = (&numbers[..2], &numbers[numbers.len() - 2..]);
+    Some((b[0] - a[0]).hypot(b[1] - a[1]))
+}
+
+#[test]
+fn inversion_3_s_crank_is_seen_with_its_omega_at_every_rod() {
+    use slider_crank::FigureName;
+    use slider_crank::catalogue::FigureOptions;
+    // At l = 50 r the crank was drawn 9 px long between touching pins,
+    // inside B's bearing, and the driver's ω was left out for want of
+    // room: some panel (the mechanism's, else its detail) draws the crank
+    // at least 40 px long (two pins and a letter between) with ω.
+    for rod in [1.06, 4.0, 28.5, 50.0, 50.1] {
+        for deg in [0.0, 91.0, 180.0, 269.38] {
+            let mut options = FigureOptions::default();
+            options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+            options.angle = Some(Angle::deg(deg));
+            let figure = FigureName::CoriolisInversion3.figure(&options).unwrap();
+            let svg = slider_crank::render::to_svg(&figure);
+            let seen = ["", "detail-"].iter().any(|prefix| {
+                let long =
+                    drawn_length(&svg, &format!("{prefix}link-crank")).is_some_and(|l| l >= 40.0);
+                let omega = svg.contains(&format!("id=\"{prefix}arc-omega\""))
+                    && svg.contains(&format!("id=\"{prefix}label-omega\""));
+                long && omega
+            });
+            assert!(
+                seen,
+                "l = {rod}, θ = {deg}°: no panel shows the crank with ω"
+            );
+        }
+    }
+}

@@ -23,6 +23,7 @@ mod fuzz_twins;
 mod ignored;
 mod layering;
 mod panic_free;
+mod polygon_letters;
 mod polygons;
 mod quick_return;
 mod reading_json;

@@ -635,3 +635,65 @@ fn a_class_varies_the_teachers_own_engine() {
     }
     assert!(cranks.len() >= 3, "the crank varies");
 }
+
+#[test]
+fn the_handout_works_the_polygons_against_the_hand_formulas() {
+    // An offset engine past the inner dead centre: r = 2, l = 7,
+    // e = −0.5 at θ = 300°, 1200 rpm. With h = r sin θ − e and
+    // w = √(l² − h²): the piston's velocity ω(−r sin θ − r cos θ h/w),
+    // its acceleration ω²(−r cos θ − r² cos²θ l²/w³ + r sin θ h/w), the
+    // rod's sin φ = h/l so dφ/dt = ω r cos θ/w and
+    // d²φ/dt² = ω² (−r sin θ/w + r² cos²θ h/w³).
+    let dir = tempfile::tempdir().unwrap();
+    let page = dir.path().join("h.html");
+    let out = run(&[
+        "handout",
+        "--out",
+        page.to_str().unwrap(),
+        "--crank",
+        "2",
+        "--rod",
+        "7",
+        "--offset",
+        "-0.5",
+        "--angle",
+        "300",
+        "--rpm",
+        "1200",
+    ]);
+    succeeded(&out);
+    let html = read(&page);
+    assert!(html.contains("id=\"step-polygons\""));
+    let (r, l, e) = (2.0_f64, 7.0_f64, -0.5_f64);
+    let om = 1200.0 * std::f64::consts::TAU / 60.0;
+    let th = 300.0_f64.to_radians();
+    let (s, c) = (th.sin(), th.cos());
+    let h = r * s - e;
+    let w = (l * l - h * h).sqrt();
+    let expected = [
+        ("polygons.slider_velocity", om * (-r * s - r * c * h / w)),
+        (
+            "polygons.slider_acceleration",
+            om * om * (-r * c - r * r * c * c * l * l / w.powi(3) + r * s * h / w),
+        ),
+        ("polygons.rod_angular_velocity", om * r * c / w),
+        (
+            "polygons.rod_angular_acceleration",
+            om * om * (-r * s / w + r * r * c * c * h / w.powi(3)),
+        ),
+    ];
+    let found = values(&html);
+    for (key, want) in expected {
+        let got: Vec<f64> = (found.iter())
+            .filter(|(k, _)| k == key)
+            .map(|(_, v)| *v)
+            .collect();
+        assert!(!got.is_empty(), "{key} not on the page");
+        for v in got {
+            assert!(
+                (v - want).abs() <= 1e-9 * want.abs().max(1.0),
+                "{key}: {v} against {want}"
+            );
+        }
+    }
+}

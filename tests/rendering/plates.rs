@@ -61,9 +61,10 @@ const RULE_CIRCLE: &str = "11 guides off the crank circle";
 const RULE_FIXED: &str = "12 fixed link hatched";
 const RULE_PILE: &str = "13 polygon letters apart";
 /// Two images of a polygon, each with its own letter, pile when their
-/// dots stand closer than this many font sizes (a polygon folded onto a
-/// line set b′, x, a′ and q′ within a few px, each lettered).
-const PILE_EM: f64 = 1.0;
+/// dots (2.1 px in radius) stand closer than this, px: they run into one
+/// place (a polygon folded onto a line set b′, x, a′ and q′ within a few
+/// px, each lettered). Farther apart, each keeps its own letter.
+const PILE: f64 = 6.0;
 const RULE_VALUE: &str = "14 a link's value nearest its link";
 /// The values that name a link's length, each with the link it names.
 const LINK_VALUES: [(&str, &str); 2] = [("value-r", "link-crank"), ("value-l", "link-rod")];
@@ -837,7 +838,7 @@ fn check(plate: &Plate, spread: bool) -> Vec<Failure> {
 
 /// Rule 13: the images of a polygon (lower-case letters, in the
 /// polygon panels and on the mechanism panel) whose dots stand within
-/// [`PILE_EM`] of each other are not lettered each by its own letter, and
+/// [`PILE`] of each other are not lettered each by its own letter, and
 /// no two of their letters overlap: coinciding images share one letter.
 fn polygon_letters_pile(plate: &Plate) -> Vec<Failure> {
     let lower = |l: &str| l.chars().next().is_some_and(char::is_lowercase);
@@ -854,7 +855,7 @@ fn polygon_letters_pile(plate: &Plate) -> Vec<Failure> {
             for (q, bt, b) in &lettered[i + 1..] {
                 let d = (at.0 - bt.0).hypot(at.1 - bt.1);
                 let overlap = (a.rect.shrunk(GLYPH_SLACK)).overlaps(&b.rect.shrunk(GLYPH_SLACK));
-                if d < PILE_EM * a.font_size.max(b.font_size) || overlap {
+                if d < PILE || overlap {
                     out.push(fail(
                         RULE_PILE,
                         format!("{}: {p} and {q} {d:.1} px apart, each lettered", panel.id),
@@ -1530,11 +1531,11 @@ fn a_folded_polygon_whose_letters_pile_is_caught() {
         let found = polygon_letters_pile(&Plate::read(svg));
         found.iter().filter(|f| f.rule == RULE_PILE).count()
     };
-    // a′ and n 6 px apart, each lettered: the knot of a folded polygon.
-    assert_eq!(pile(&piled(6.0, false)), 1);
+    // a′ and n 4 px apart, each lettered: the knot of a folded polygon.
+    assert_eq!(pile(&piled(4.0, false)), 1);
     // 40 px apart they read apart; one letter naming both reads too.
     assert_eq!(pile(&piled(40.0, false)), 0);
-    assert_eq!(pile(&piled(6.0, true)), 0);
+    assert_eq!(pile(&piled(4.0, true)), 0);
     // The same knot on a mechanism panel (the polygons layer) is caught
     // there, its images being lower-case.
     let knot = r##"<circle id="point-b2" class="construction" cx="200" cy="60" r="2"/>

@@ -37,6 +37,10 @@ fn block_size(m: &SliderCrank) -> (f64, f64) {
 /// units apart and read as two things).
 const EDGE_ROOM: f64 = 40.0;
 
+/// Room kept between a link's letter and the block's end, page units
+/// (a letter's height): nearer, the letter reads as the block's.
+const LETTER_CLEAR: f64 = 17.0;
+
 /// Centres nearer than this on the page (page units) to a lettered point
 /// share its place and are named in the notes.
 const CROWDED: f64 = 18.0;
@@ -413,7 +417,7 @@ impl Drawing {
         let q = &self.q;
         if self.fixed != Link::D {
             self.s.link("frame", self.bar());
-            let at = Point::from(q.f.coords * 0.85 + q.t.coords * 0.15);
+            let at = self.bar_letter();
             self.s.letter("link-d", at, "*d*", TextSize::Letter);
             return;
         }
@@ -433,6 +437,31 @@ impl Drawing {
         self.s.guides("stroke", &slot, q.c, (q.b, q.a));
         self.s
             .letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
+    }
+
+    /// Where the turning bar d is lettered: 0.85 of the way from T to its
+    /// far end, or, where the block stands there (at the outer dead
+    /// centre the block rides at the bar's end, and a letter there names
+    /// the block), the middle of the longer run of bar clear of the block
+    /// on either side of it.
+    fn bar_letter(&self) -> Point {
+        let q = &self.q;
+        let (lh, _) = self.block;
+        let along = |p: Point| (p - q.t).dot(&q.u);
+        let (end, block) = (along(q.f), along(q.a));
+        let clear = lh + self.s.world(LETTER_CLEAR);
+        let usual = 0.85 * end;
+        if (usual - block).abs() >= clear {
+            return q.t + q.u * usual;
+        }
+        let before = (0.0, (block - clear).max(0.0));
+        let after = ((block + clear).min(end), end);
+        let run = if before.1 - before.0 >= after.1 - after.0 {
+            before
+        } else {
+            after
+        };
+        q.t + q.u * (0.5 * (run.0 + run.1))
     }
 
     /// The segments of the links that move, which the fixed link's

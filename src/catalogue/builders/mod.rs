@@ -364,6 +364,13 @@ impl Sheet {
         self.panels.push(plot.finish());
     }
 
+    /// Adds a plot as a detail: nothing drawn outside its rectangle (its
+    /// links and circles run on beyond the region it enlarges).
+    pub fn detail(&mut self, plot: Plot) {
+        self.plots.push(plot.metadata());
+        self.panels.push(plot.finish().clipped());
+    }
+
     /// Adds a panel as it is.
     pub fn panel(&mut self, panel: Panel) {
         self.panels.push(panel);

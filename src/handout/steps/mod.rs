@@ -4,7 +4,8 @@
 //!
 //! One file per group of steps: the mechanism to scale (§35), the velocity
 //! (D and E, the velocity scale), the acceleration (Kisch's construction,
-//! the acceleration scale), the rod's rates (§37), the OM line and the
+//! the acceleration scale), the rod's rates (§37), the velocity and
+//! acceleration polygons (the relative-velocity method), the OM line and the
 //! forces (Ng), the diagrams and, given a mass, the engine's dynamics.
 //! Each step is a function of the [`Work`]
 //! they share, and its rows a function of their own, so that an exercise
@@ -16,6 +17,7 @@ mod diagrams;
 mod dynamics;
 mod forces;
 mod mechanism;
+mod polygons;
 mod rod;
 mod row;
 mod velocity;
@@ -34,6 +36,7 @@ use diagrams::diagrams;
 use dynamics::{dynamics, exercise_dynamics};
 use forces::{forces, forces_rows};
 use mechanism::{mechanism, mechanism_rows};
+use polygons::polygons;
 use rod::{rod, rod_rows};
 use velocity::{d_and_e, d_and_e_rows, velocity_scale, velocity_scale_rows};
 use work::Work;
@@ -84,6 +87,7 @@ pub(super) fn steps(h: &Handout, r: &Reading) -> Result<Vec<Step>> {
         kisch(&w)?,
         acceleration_scale(&w)?,
         rod(&w)?,
+        polygons(&w)?,
     ];
     steps.extend(forces(&w)?);
     steps.push(diagrams(&w)?);

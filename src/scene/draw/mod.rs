@@ -13,6 +13,7 @@ mod scales;
 mod torque;
 mod velocity;
 
+pub(crate) use polygons::COINCIDE;
 pub(crate) use torque::torque_arrow;
 
 use super::Layer;

@@ -319,18 +319,21 @@ fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
     letter(canvas, &letters, p.o);
 }
 
-/// Page distance under which two points of a polygon crowd: one letter
+/// Page distance under which two images of a polygon coincide for the
+/// eye: their dots (2.1 units in radius) run into one, and one letter
 /// names them all (b and a at θ = 90°, where the rod translates), as a
-/// book letters coinciding images.
-const CROWD: f64 = 24.0;
+/// book letters coinciding images. Images farther apart, however near,
+/// each keep their own letter at their own vertex: a joint letter would
+/// name a vertex it does not stand by.
+pub(crate) const COINCIDE: f64 = 6.0;
 
 /// Letters a polygon's points (id, markup, place) from the pole `pole`,
-/// those crowding within [`CROWD`] by one letter.
+/// those within [`COINCIDE`] of each other by one letter.
 fn letter(canvas: &mut Canvas, points: &[(String, String, Point)], pole: Point) {
     let points: Vec<(&str, &str, Point)> = (points.iter())
         .map(|(id, markup, at)| (id.as_str(), markup.as_str(), *at))
         .collect();
-    canvas.letter_crowded(&points, CROWD, pole, None);
+    canvas.letter_crowded(&points, COINCIDE, pole, None);
 }
 
 fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {

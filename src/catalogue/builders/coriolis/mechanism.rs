@@ -1,0 +1,156 @@
+//! The mechanism panel of a Coriolis figure: the chain in the fixed
+//! link's frame, its pins lettered and the driver's ω, with an enlarged
+//! detail of the crank where it is drawn too short to read.
+
+use super::super::{Ctx, short};
+use super::panel::mark_window;
+use super::{FINE_STEPS, GAP, MARGIN, MECHANISM_HEIGHT, round_below};
+
+use crate::chain::{Inversion, InversionPose};
+use crate::diagram::Plot;
+use crate::error::Result;
+use crate::figure::{PageRect, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Vector};
+use crate::scene::{Canvas, Marker};
+
+/// The page length under which inversion 3's crank CB, the driver, gets
+/// an enlarged detail beside the mechanism panel: at a long rod (a rod of
+/// fifty cranks) its pins touch, the crank hides in B's bearing and its ω
+/// finds no room.
+pub(super) const CRANK_LEAST: f64 = 40.0;
+
+/// The crank detail's reach about B, in cranks: the crank's circle and
+/// room for its letters (a panel 170 units tall draws the crank at least
+/// 170 / 3 / (4/3), about 42 units, the finest steps being 4/3 apart).
+pub(super) const CRANK_REACH: f64 = 1.5;
+
+/// The mechanism panel: the chain at the pose in the fixed link's frame,
+/// its pins lettered C, B, A and the driver's sense of turning; where
+/// inversion 3's crank is drawn shorter than [`CRANK_LEAST`], a detail of
+/// the region about it beside the panel (boxed there), which carries ω.
+pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, Option<Plot>)> {
+    let m = ctx.mechanism;
+    let frame = super::super::inversions::links_frame(&m, pose);
+    let size = frame.max() - frame.min();
+    let pad = 0.06 * size.x.max(size.y);
+    let world = Frame::new(
+        frame.min() - Vector::new(pad, pad),
+        frame.max() + Vector::new(pad, pad),
+    );
+    let width = ctx.page().width() - 2.0 * MARGIN;
+    let seen = world.max() - world.min();
+    let tall = (width * seen.y / seen.x).clamp(MECHANISM_HEIGHT.0, MECHANISM_HEIGHT.1);
+    let rect = PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
+    let whole = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
+    let scale = whole.map().scale();
+    // Inversion 2's crank is the fixed link, drawn whole by its bearings.
+    if m.crank() * scale >= CRANK_LEAST || pose.inversion() != Inversion::Rod {
+        return Ok((links_plot(ctx, pose, whole, None)?, None));
+    }
+    let side = tall;
+    let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
+    let plot = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
+    let scale = plot.map().scale();
+    let b = pose.place(pose.engine_pose().b());
+    let wanted = side / (2.0 * CRANK_REACH * m.crank()) / scale;
+    let magnification = round_below(wanted, &FINE_STEPS).max(1.0);
+    let half = Vector::new(side, tall) * (0.5 / (magnification * scale));
+    let region = Frame::new(b - half, b + half);
+    let detail_rect = PageRect::new(MARGIN + width - side, MARGIN, side, rect.height);
+    let caption = format!("the boxed region enlarged ×{}", short(magnification));
+    let detail = Plot::world(
+        "mechanism-detail",
+        detail_rect,
+        &region,
+        false,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption(&caption);
+    let detail = links_plot(ctx, pose, detail, Some(region))?;
+    Ok((links_plot(ctx, pose, plot, Some(region))?, Some(detail)))
+}
+
+/// The chain drawn on `plot`: its links, pins C, B, A lettered where on
+/// the panel, the driver's ω; on the whole mechanism (named `mechanism`)
+/// the caption and, where a detail enlarges `region`, its box.
+pub(super) fn links_plot(
+    ctx: &Ctx,
+    pose: &InversionPose,
+    plot: Plot,
+    region: Option<Frame>,
+) -> Result<Plot> {
+    let m = ctx.mechanism;
+    let whole = plot.panel_id() == "panel-mechanism";
+    let inversion = pose.inversion();
+    let mut plot = if whole {
+        plot.with_caption(&format!(
+            "Inversion {}, {}: the relative-velocity method with the Coriolis component",
+            inversion.number(),
+            match inversion {
+                Inversion::Rod => "the crank and slotted lever",
+                _ => "Whitworth’s quick return",
+            }
+        ))
+    } else {
+        plot
+    };
+    let map = *plot.map();
+    let mut canvas = Canvas::new(map, map.world_frame(&plot.area()));
+    if !whole {
+        canvas = canvas.detail("detail-");
+    }
+    let mut s = super::super::inversions::draw_links(m, pose, canvas);
+    let engine = pose.engine_pose();
+    let (c, b, a) = (
+        pose.place(engine.c()),
+        pose.place(engine.b()),
+        pose.place(engine.a()),
+    );
+    for (key, at) in [("C", c), ("B", b), ("A", a)] {
+        if whole || s.contains(at) {
+            s.lettered(key, at, &format!("*{key}*"), Marker::Pin, c);
+        }
+    }
+    driver_turn(&mut s, pose, ctx.omega);
+    if let (true, Some(region)) = (whole, region) {
+        mark_window(&mut s, "mechanism", &region);
+    }
+    for item in s.finish().0 {
+        plot.push(item);
+    }
+    Ok(plot)
+}
+
+/// The driver's sense of turning: an arrowed arc about its fixed pin
+/// (the crank about B in inversion 3, the rod about B in inversion 2),
+/// lettered ω.
+pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
+    let engine = pose.engine_pose();
+    let b = pose.place(engine.b());
+    let tip = match pose.inversion() {
+        Inversion::Rod => pose.place(engine.c()),
+        _ => pose.place(engine.a()),
+    };
+    let arm = tip - b;
+    let radius = s.world(26.0).min(0.45 * arm.norm());
+    if s.page(radius) < 10.0 {
+        return;
+    }
+    let start = arm.y.atan2(arm.x) + 0.35;
+    let sweep = 1.1 * omega.signum();
+    s.push(
+        "arc-omega",
+        Role::Force,
+        Shape::Arc {
+            centre: b,
+            radius,
+            start,
+            sweep,
+            arrow: true,
+        },
+    );
+    let mid = start + 0.5 * sweep;
+    let at = b + Vector::new(mid.cos(), mid.sin()) * radius;
+    s.label("label-omega", at, RichText::parse("ω"), TextSize::Letter);
+}

@@ -1,0 +1,130 @@
+//! What a Coriolis figure says in words and metadata: the notes reading
+//! each polygon to its bar, and the values in the SVG's metadata.
+
+use super::super::{Ctx, short, sig};
+use super::polygons::Polygons;
+
+use crate::chain::{Inversion, InvertedChain};
+use crate::geom::Vector;
+use serde_json::{Value, json};
+
+/// The figure's metadata: the polygons' vectors from their poles, the
+/// values read off them and the bars' lengths.
+pub(super) fn coriolis_json(polygons: &Polygons, v_bar: f64, a_bar: f64) -> Value {
+    let p = &polygons.p;
+    let v = |x: Vector| json!([x.x, x.y]);
+    json!({
+        "slot": v(p.slot()),
+        "driven_velocity": v(p.driven()),
+        "a_d_velocity": v(p.a_d()),
+        "driven_acceleration": v(p.driven_acceleration()),
+        "normal_end": v(p.n()),
+        "coriolis": v(p.coriolis()),
+        "k": v(polygons.k()),
+        "a_d_acceleration": v(p.a_d_acceleration()),
+        "omega_d": p.omega_d(),
+        "alpha_d": p.alpha_d(),
+        "sliding_velocity": p.sliding_velocity(),
+        "sliding_acceleration": p.sliding_acceleration(),
+        "velocity_bar": v_bar,
+        "acceleration_bar": a_bar,
+    })
+}
+
+/// The notes: the pose and the driver, then each polygon read to its bar,
+/// then the Coriolis component and its rule.
+pub(super) fn notes(
+    ctx: &Ctx,
+    chain: &InvertedChain,
+    polygons: &Polygons,
+    bars: (f64, f64),
+) -> Vec<String> {
+    let m = &ctx.mechanism;
+    let u = ctx.unit();
+    let p = &polygons.p;
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let w = ctx.omega;
+    let inversion = polygons.inversion;
+    let offset = if e == 0.0 {
+        String::new()
+    } else {
+        format!(", *e* = {}", short(e))
+    };
+    let ratio = chain.time_ratio().map_or(String::new(), |t| {
+        format!(" Time ratio of the quick return {}.", short(t))
+    });
+    let (driver, pin, about) = match inversion {
+        Inversion::Rod => ("the crank *a* (*BC*)", "*c*", "*B*"),
+        _ => ("the rod *b* (*BA*)", "*a*", "*B*"),
+    };
+    let ca = polygons.ca;
+    let v = polygons.clean(p.sliding_velocity().abs(), 1.0, false);
+    let omega_d = polygons.clean(p.omega_d(), ca, false);
+    let alpha_d = polygons.clean(p.alpha_d(), ca, true);
+    let sliding = polygons.clean(p.sliding_acceleration(), 1.0, true);
+    let coriolis_size = polygons.clean(p.coriolis().norm(), 1.0, true);
+    let first = format!(
+        "Inversion {}, link *{}* fixed ({}) at θ = {}°; *r* = {}, *l* = {}{offset}; {driver} turns about {about} at ω = {} rad/s ({} rpm), *CA* = {} {u}.{ratio}",
+        inversion.number(),
+        match inversion {
+            Inversion::Rod => "b",
+            _ => "a",
+        },
+        inversion.name(),
+        short(ctx.angle.degrees()),
+        short(r),
+        short(l),
+        sig(w),
+        short(ctx.rpm()),
+        sig(ca),
+    );
+    let velocity = match inversion {
+        Inversion::Rod => format!(
+            "Velocity polygon (the bar {} {u}/s): *oc* = ω·*BC* = {} {u}/s, perpendicular to *BC*; *ca*_{{d}} perpendicular to *CA*; *oa*_{{d}} along the slot, *v* = {} {u}/s; ω_{{d}} = *ca*_{{d}}/*CA* = {} rad/s.",
+            short(bars.0),
+            sig(p.driven().norm()),
+            sig(v),
+            sig(omega_d),
+        ),
+        _ => format!(
+            "Velocity polygon (the bar {} {u}/s): *oa* = ω·*BA* = {} {u}/s, perpendicular to *BA*; *oa*_{{d}} perpendicular to *CA*; *a*_{{d}}*a* along the slot, *v* = {} {u}/s; ω_{{d}} = *oa*_{{d}}/*CA* = {} rad/s.",
+            short(bars.0),
+            sig(p.driven().norm()),
+            sig(v),
+            sig(omega_d),
+        ),
+    };
+    let normal = omega_d * omega_d * ca;
+    let acceleration = format!(
+        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s².",
+        short(bars.1),
+        match inversion {
+            Inversion::Rod => "C",
+            _ => "A",
+        },
+        sig(p.driven_acceleration().norm()),
+        sig(normal),
+        sig(alpha_d),
+        sig(sliding),
+    );
+    let coriolis = format!(
+        "The Coriolis component {} = 2ω_{{d}}*v* = {} {u}/s²: the sliding velocity *v* ({}) turned 90° in the sense of ω_{{d}}{}.",
+        match inversion {
+            Inversion::Rod => "*o*′*k*",
+            _ => "*ka*′",
+        },
+        sig(coriolis_size),
+        match inversion {
+            Inversion::Rod => "of *d* on the block",
+            _ => "of the block on *d*",
+        },
+        if v == 0.0 {
+            "; here *v* = 0 and it vanishes"
+        } else if omega_d == 0.0 {
+            "; here ω_{d} = 0 and it vanishes"
+        } else {
+            ""
+        },
+    );
+    vec![first, velocity, acceleration, coriolis]
+}

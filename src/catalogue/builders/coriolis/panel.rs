@@ -1,0 +1,305 @@
+//! A polygon's panel and its enlarged detail: the vectors as arrows, the
+//! points lettered (those that coincide by one letter), the scale bar,
+//! the right angles, and the box round the region a detail enlarges.
+
+use super::super::{Ctx, short};
+use super::polygons::{Arrow, Lettered, Polygons, Subject};
+use super::{MIN_ARROW, STEPS, round_below};
+
+use crate::chain::Inversion;
+use crate::diagram::Plot;
+use crate::error::Result;
+use crate::figure::{Hue, PageRect, RIGHT_ANGLE, RichText, Role, Shape};
+use crate::geom::{Frame, Point, Vector};
+use crate::scene::{COINCIDE, Canvas};
+use serde_json::Value;
+
+/// Room kept about a polygon for its letters and its bar, in shares of
+/// its largest extent.
+pub(super) const PAD: f64 = 0.16;
+
+/// The page length under which a polygon's subject (the sliding velocity,
+/// the Coriolis component) in its panel gets an enlarged detail: at a
+/// long rod the driven point's velocity and acceleration make the polygon
+/// a needle and the subject a few units at its tip.
+pub(super) const SUBJECT_LEAST: f64 = 40.0;
+
+/// The most the subject is drawn in its detail, page units.
+pub(super) const SUBJECT_MOST: f64 = 200.0;
+
+/// Room kept in a detail between its frame and the points it enlarges,
+/// page units (their letters).
+pub(super) const DETAIL_PAD: f64 = 40.0;
+
+/// Page distance within which a point of a polygon crowds the subject of
+/// its detail (or another point so crowding): the detail takes it in.
+pub(super) const CROWD: f64 = 24.0;
+
+/// The least side of the box marking a detail's region on the polygon,
+/// page units.
+pub(super) const BOX_LEAST: f64 = 16.0;
+
+/// A polygon as its panels draw it.
+pub(super) struct Drawn<'a> {
+    pub(super) name: &'a str,
+    pub(super) caption: &'a str,
+    pub(super) points: Vec<Lettered>,
+    pub(super) arrows: Vec<Arrow>,
+    pub(super) hue: Hue,
+    pub(super) per: &'a str,
+    pub(super) subject: Option<Subject>,
+}
+
+/// The region of a polygon its detail enlarges (world, from the pole)
+/// and the magnification over the polygon's panel.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Window {
+    pub(super) frame: Frame,
+    pub(super) magnification: f64,
+}
+
+/// The world frame of `points` (from the pole), grown by [`PAD`] of its
+/// largest extent each way and below by room for the bar; a frame
+/// thinner than half its width is made that tall, so that a polygon
+/// folded onto a line keeps room for its letters.
+pub(super) fn polygon_frame(points: &[Lettered]) -> (Frame, f64) {
+    let lo = points.iter().fold(Vector::zeros(), |m, p| m.inf(&p.2));
+    let hi = points.iter().fold(Vector::zeros(), |m, p| m.sup(&p.2));
+    let size = hi - lo;
+    let extent = size.x.max(size.y);
+    let pad = PAD * extent;
+    let grow = (0.5 * extent - size.y).max(0.0) * 0.5;
+    let min = Point::from(lo) - Vector::new(pad, pad + grow + 0.18 * extent);
+    let max = Point::from(hi) + Vector::new(pad, pad + grow);
+    (Frame::new(min, max), extent)
+}
+
+/// A polygon's panel: its vectors as arrows (those long enough to carry
+/// a head), its points lettered (those that crowd by one letter), a
+/// scale bar of a round length below, and what `more` adds; where its
+/// subject is drawn shorter than [`SUBJECT_LEAST`], the region about it
+/// is boxed and left to a detail of `detail` page units (its points are
+/// lettered there). Returns the plot, the bar's length, the points'
+/// places (from the pole, in velocity or acceleration units) and the
+/// detail's window.
+pub(super) fn polygon_plot(
+    ctx: &Ctx,
+    rect: PageRect,
+    drawn: &Drawn,
+    detail: (f64, f64),
+    more: &impl Fn(&mut Canvas),
+) -> Result<(Plot, f64, Value, Option<Window>)> {
+    let (world, extent) = polygon_frame(&drawn.points);
+    let mut plot = Plot::world(drawn.name, rect, &world, false, ctx.tolerance, ctx.font)?
+        .with_caption(drawn.caption);
+    let map = *plot.map();
+    let window = drawn
+        .subject
+        .and_then(|side| window(&drawn.points, side, map.scale(), detail));
+    let mut s = Canvas::new(map, map.world_frame(&plot.area()));
+    if let Some(w) = window {
+        s = s.quiet(w.frame);
+    }
+    let old = s.set_hue(Some(drawn.hue));
+    for (id, role, from, to) in &drawn.arrows {
+        if s.page((to - from).norm()) >= MIN_ARROW {
+            s.push(
+                *id,
+                *role,
+                Shape::Arrow {
+                    from: Point::from(*from),
+                    to: Point::from(*to),
+                },
+            );
+        }
+    }
+    more(&mut s);
+    s.set_hue(old);
+    if let Some(w) = window {
+        mark_window(&mut s, drawn.name, &w.frame);
+    }
+    letter(&mut s, &drawn.points, window.map(|w| w.frame));
+    let bar = round_below(0.45 * extent, &STEPS);
+    let y = world.min().y + 0.08 * extent;
+    let x = world.min().x + PAD * extent * 0.5;
+    let unit = format!("{}{}", ctx.unit(), drawn.per);
+    s.push(
+        format!("{}-bar", drawn.name),
+        Role::Dimension,
+        Shape::Dimension {
+            from: Point::new(x, y),
+            to: Point::new(x + bar, y),
+            side: Vector::new(0.0, -1.0),
+            offset: 0.0,
+            text: RichText::parse(&format!("{} {unit}", short(bar))),
+        },
+    );
+    let (items, points) = s.finish();
+    for item in items {
+        plot.push(item);
+    }
+    Ok((plot, bar, Value::Object(points), window))
+}
+
+/// The region a polygon's detail enlarges, where its subject `side` is
+/// drawn shorter than [`SUBJECT_LEAST`] at `scale` (page units per unit):
+/// the points crowding about the subject (within [`CROWD`] of it or of
+/// each other) whole where they fit the detail's `area` with the subject
+/// at most [`SUBJECT_MOST`], else the subject at twice [`SUBJECT_LEAST`]
+/// about its middle (the long sides run off the detail's edge); the
+/// magnification a round step. `None` where the subject reads in the
+/// polygon itself.
+pub(super) fn window(
+    points: &[Lettered],
+    side: Subject,
+    scale: f64,
+    area: (f64, f64),
+) -> Option<Window> {
+    let length = (side.1 - side.0).norm();
+    if length <= 0.0 || !length.is_finite() || length * scale >= SUBJECT_LEAST {
+        return None;
+    }
+    let mut crowd = vec![side.0, side.1];
+    loop {
+        let near = points
+            .iter()
+            .map(|p| p.2)
+            .find(|p| !crowd.contains(p) && crowd.iter().any(|c| (c - p).norm() * scale < CROWD));
+        match near {
+            Some(p) => crowd.push(p),
+            None => break,
+        }
+    }
+    let lo = crowd.iter().fold(side.0, |m, p| m.inf(p));
+    let hi = crowd.iter().fold(side.0, |m, p| m.sup(p));
+    let size = hi - lo;
+    let room = (area.0 - 2.0 * DETAIL_PAD, area.1 - 2.0 * DETAIL_PAD);
+    let fit = (room.0 / size.x).min(room.1 / size.y);
+    let wanted = fit
+        .min(SUBJECT_MOST / length)
+        .max(2.0 * SUBJECT_LEAST / length);
+    let magnification = round_below(wanted / scale, &STEPS).max(1.0);
+    let detail = magnification * scale;
+    let centre = if detail <= fit * (1.0 + 1e-9) {
+        (lo + hi) * 0.5
+    } else {
+        (side.0 + side.1) * 0.5
+    };
+    let half = Vector::new(area.0, area.1) * (0.5 / detail);
+    let frame = Frame::new(Point::from(centre - half), Point::from(centre + half));
+    Some(Window {
+        frame,
+        magnification,
+    })
+}
+
+/// The box on a polygon marking the region its detail enlarges (at
+/// least [`BOX_LEAST`] a side).
+pub(super) fn mark_window(s: &mut Canvas, name: &str, frame: &Frame) {
+    let least = s.world(BOX_LEAST);
+    let size = frame.max() - frame.min();
+    let grow = Vector::new((least - size.x).max(0.0), (least - size.y).max(0.0)) * 0.5;
+    let seen = *s.frame();
+    let lo = (frame.min() - grow).sup(&seen.min());
+    let hi = (frame.max() + grow).inf(&seen.max());
+    s.push(
+        format!("{name}-detail-box"),
+        Role::Auxiliary,
+        Shape::Polyline {
+            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
+            closed: true,
+        },
+    );
+}
+
+/// Letters the polygon's `points`, those that coincide on the page
+/// (within [`COINCIDE`]) by one letter, those in the region left to a
+/// detail (`quiet`) not here.
+pub(super) fn letter(s: &mut Canvas, points: &[Lettered], quiet: Option<Frame>) {
+    let points: Vec<(&str, &str, Point)> = (points.iter())
+        .map(|(id, markup, at)| (*id, *markup, Point::from(*at)))
+        .collect();
+    s.letter_crowded(&points, COINCIDE, Point::origin(), quiet);
+}
+
+/// The detail of a polygon: the region of `window` enlarged in `rect`,
+/// its sides clipped at the edge (an arrowhead where the side ends
+/// inside), its points there lettered, captioned with the
+/// magnification.
+pub(super) fn detail_plot(
+    ctx: &Ctx,
+    rect: PageRect,
+    drawn: &Drawn,
+    window: &Window,
+    more: &impl Fn(&mut Canvas),
+) -> Result<Plot> {
+    let name = format!("{}-detail", drawn.name);
+    let caption = format!(
+        "{}: the boxed region enlarged ×{}",
+        drawn.caption,
+        short(window.magnification)
+    );
+    let mut plot = Plot::world(&name, rect, &window.frame, false, ctx.tolerance, ctx.font)?
+        .with_caption(&caption);
+    let map = *plot.map();
+    let mut s = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
+    let old = s.set_hue(Some(drawn.hue));
+    for (id, role, from, to) in &drawn.arrows {
+        let (from, to) = (Point::from(*from), Point::from(*to));
+        // The piece inside the frame; a side that misses it has none (the
+        // clip of its line lies beyond its ends).
+        let inside = s.frame().clip_segment(from, to).filter(|(p, q)| {
+            let middle = Point::from((p.coords + q.coords) * 0.5);
+            s.contains(middle) && s.page((q - p).norm()) >= 0.5
+        });
+        let Some((tail, head)) = inside else {
+            continue;
+        };
+        let role = *role;
+        if s.contains(to) && s.page((to - tail).norm()) >= MIN_ARROW {
+            s.push(*id, role, Shape::Arrow { from: tail, to });
+        } else {
+            s.segment(*id, role, tail, head);
+        }
+    }
+    more(&mut s);
+    s.set_hue(old);
+    letter(&mut s, &drawn.points, None);
+    for item in s.finish().0 {
+        plot.push(item);
+    }
+    Ok(plot)
+}
+
+/// The right angles of the acceleration polygon: d's tangential component
+/// against its normal one at n, the Coriolis component against the slot
+/// at k, each where both arms are long enough on the page to hold it.
+pub(super) fn right_angles(s: &mut Canvas, polygons: &Polygons) {
+    let p = &polygons.p;
+    let n = p.n();
+    let k = polygons.k();
+    let normal = polygons.normal_from() - n;
+    let tangential = p.a_d_acceleration() - n;
+    let coriolis = match polygons.inversion {
+        Inversion::Rod => -p.coriolis(),
+        _ => p.coriolis(),
+    };
+    let sliding = p.a_d_acceleration() - k;
+    for (id, vertex, u, v) in [
+        ("angle-n", n, normal, tangential),
+        ("angle-k", k, coriolis, sliding),
+    ] {
+        let seen = s.contains(Point::from(vertex));
+        if seen && s.page(u.norm()) >= 2.0 * RIGHT_ANGLE && s.page(v.norm()) >= 2.0 * RIGHT_ANGLE {
+            s.push(
+                id,
+                Role::Construction,
+                Shape::RightAngle {
+                    vertex: Point::from(vertex),
+                    u,
+                    v,
+                },
+            );
+        }
+    }
+}

@@ -1,0 +1,93 @@
+//! The Coriolis component's direction rule drawn at the pose's own
+//! directions: v along the slot, the quarter turn in the sense of ω_d,
+//! and 2 ω_d v.
+
+use super::super::Ctx;
+use super::polygons::Polygons;
+
+use crate::diagram::Plot;
+use crate::error::Result;
+use crate::figure::{Hue, PageRect, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Point, Vector, perp};
+use crate::scene::Canvas;
+
+/// The direction rule at the pose's own directions: the sliding velocity
+/// v along the slot, the quarter turn in the sense of ω_d, and 2 ω_d v;
+/// where v is zero, the slot and the sense of ω_d alone.
+pub(super) fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Result<Plot> {
+    let p = &polygons.p;
+    let v = polygons.v();
+    let moving = polygons.clean(v.norm(), 1.0, false) > 0.0;
+    let turning = polygons.clean(p.omega_d(), polygons.ca, false) != 0.0;
+    let u = if moving { v.normalize() } else { p.slot() };
+    let sense = if p.omega_d() < 0.0 { -1.0 } else { 1.0 };
+    let turned = perp(&u) * sense;
+    let world = Frame::new(Point::new(-1.5, -1.5), Point::new(1.5, 1.5));
+    let mut plot = Plot::world(
+        "coriolis-rule",
+        rect,
+        &world,
+        false,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption(match (moving, turning) {
+        (true, true) => "the Coriolis direction",
+        (false, _) => "the Coriolis direction (here *v* = 0)",
+        (true, false) => "the Coriolis direction (here ω_{d} = 0)",
+    });
+    let map = *plot.map();
+    let mut s = Canvas::new(map, map.world_frame(&plot.area()));
+    let o = Point::origin();
+    s.set_hue(Some(Hue::Velocity));
+    s.push(
+        "rule-v",
+        Role::Construction,
+        Shape::Arrow { from: o, to: o + u },
+    );
+    s.label(
+        "label-rule-v",
+        o + u,
+        RichText::parse("*v*"),
+        TextSize::Letter,
+    );
+    s.set_hue(Some(Hue::Acceleration));
+    s.push(
+        "rule-coriolis",
+        Role::Result,
+        Shape::Arrow {
+            from: o,
+            to: o + turned,
+        },
+    );
+    s.label(
+        "label-rule-coriolis",
+        o + turned,
+        RichText::parse("2ω_{d}*v*"),
+        TextSize::Letter,
+    );
+    s.set_hue(None);
+    let start = u.y.atan2(u.x);
+    s.push(
+        "rule-turn",
+        Role::Force,
+        Shape::Arc {
+            centre: o,
+            radius: 0.55,
+            start,
+            sweep: sense * 0.5 * std::f64::consts::PI,
+            arrow: true,
+        },
+    );
+    let mid = start + sense * 0.25 * std::f64::consts::PI;
+    s.label(
+        "label-rule-omega",
+        o + Vector::new(mid.cos(), mid.sin()) * 0.55,
+        RichText::parse("ω_{d}"),
+        TextSize::Letter,
+    );
+    for item in s.finish().0 {
+        plot.push(item);
+    }
+    Ok(plot)
+}
