@@ -6,7 +6,8 @@
 //! with the library and hand back text, bytes or filled numpy arrays. A
 //! library error becomes `ValueError` (`OSError` for a file that cannot be
 //! read or written), its message the line the command line prints after
-//! `slider-crank: `.
+//! `slider-crank: ` with the fields it names written as keywords
+//! (`gas_force=` where the command line writes its flag).
 
 use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
@@ -21,9 +22,10 @@ use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
     write_atomic_all,
 };
-use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
+use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
 use slider_crank::{
-    Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units,
+    Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Spelling, Unit, Units,
+    Wording,
 };
 use std::path::{Path, PathBuf};
 
@@ -32,10 +34,25 @@ mod chain;
 mod check;
 mod dynamics;
 
+/// How the package writes the fields a library message names: as its
+/// keywords, `gas_force=` and `bore=D`.
+struct Keywords;
+
+impl Spelling for Keywords {
+    fn option(&self, field: Field) -> String {
+        format!("{}=", field.key())
+    }
+
+    fn set(&self, field: Field, value: &str) -> String {
+        format!("{}{value}", self.option(field))
+    }
+}
+
 /// The Python exception for a library error, with the command line's message
-/// (the one line the command line prints, control characters escaped).
+/// (the one line the command line prints, control characters escaped), its
+/// fields written as keywords.
 fn py_err(e: Error) -> PyErr {
-    let e = e.one_line();
+    let e = e.spelled(&Keywords).one_line();
     match e {
         Error::Io { .. } => PyOSError::new_err(e.to_string()),
         e => PyValueError::new_err(e.to_string()),
@@ -289,7 +306,12 @@ fn figure(
     if let Some(list) = layers {
         let layers = Layer::parse_list(list).map_err(py_err)?;
         if layers.is_empty() {
-            return Err(PyValueError::new_err("--layers names no layer"));
+            return Err(py_err(Error::refused(
+                Input::Layers,
+                Wording::default()
+                    .option(Field::Layers)
+                    .then(" names no layer"),
+            )));
         }
         options.layers = Some(layers);
     }
@@ -339,15 +361,18 @@ fn animation(
     path: &str,
 ) -> PyResult<String> {
     let format = AnimationFormat::from_path(Path::new(path)).map_err(py_err)?;
-    if let Some(flag) = [
-        (options.data.is_some(), "--data"),
-        (options.fit.is_some(), "--fit"),
+    if let Some(field) = [
+        (options.data.is_some(), Field::Data),
+        (options.fit.is_some(), Field::Fit),
     ]
     .iter()
-    .find_map(|&(given, flag)| given.then_some(flag))
+    .find_map(|&(given, field)| given.then_some(field))
     {
-        return Err(PyValueError::new_err(format!(
-            "animate takes no {flag}: the mechanism figures draw no measured data"
+        return Err(py_err(Error::refused(
+            Input::Options,
+            Wording::from("animate takes no ")
+                .option(field)
+                .then(": the mechanism figures draw no measured data"),
         )));
     }
     let scene = name.scene_with(options).map_err(py_err)?.ok_or_else(|| {
@@ -455,7 +480,6 @@ fn handout(
             gas_force,
             indicator,
             bore,
-            spelling: Spelling::Keyword,
         })
         .map_err(py_err)?;
     py.detach(|| match which {
@@ -539,7 +563,7 @@ fn table(
 ) -> PyResult<String> {
     use slider_crank::table::{self as t, Format, Head, Table};
     let format: Format = parse(format)?;
-    let bound = MaxCells::keyword(max_cells);
+    let bound = MaxCells::new(max_cells);
     let given_decimals = decimals;
     let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
     if decimals > 17 {
