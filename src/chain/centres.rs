@@ -32,7 +32,7 @@
 //!   homothety again. So the curved slot has E, D and Klein, not Kisch.
 //!
 //! Each is cross-checked against the exact core in the tests and by
-//! `slider-crank check --slot-radius`.
+//! the command line's check of the slot.
 
 use super::cylindric::CylindricPose;
 use super::quadric::QuadricPose;
@@ -159,7 +159,7 @@ impl ChainCentres {
     /// The six as a JSON object keyed `O_ab` … `O_cd`: each `[x, y]`, or
     /// `{"at_infinity": [dx, dy]}`, or `{"indeterminate": true}` where two
     /// coincident lines leave it anywhere on a line (the same form in
-    /// `analyze --json` and in the figures' metadata).
+    /// the analysis's JSON and in the figures' metadata).
     pub fn to_json(&self) -> serde_json::Value {
         let num = |x: f64| x + 0.0;
         let mut map = serde_json::Map::new();

@@ -33,6 +33,7 @@
 //! ```
 
 mod class;
+mod command;
 mod dynamics;
 mod exercise;
 mod figures;
