@@ -13,7 +13,7 @@ use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use slider_crank::animate::{Animation, AnimationFormat};
-use slider_crank::catalogue::FigureOptions;
+use slider_crank::catalogue::{FigureOptions, FigureRequest};
 use slider_crank::construct::{Graphical, Reading};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::{DynamicsAsk, Handout};
@@ -258,13 +258,15 @@ fn fill_chunk(
 }
 
 /// The SVG of a named figure with the options the `figure` command's
-/// flags give (`None`: the flag not given); with `tikz` its TikZ picture
-/// instead (`tikz = true`: a standalone document, as
+/// flags give (`None`: the flag not given), filled into the library's
+/// request ([`FigureRequest`]) and validated there; with `tikz` its TikZ
+/// picture instead (`tikz = true`: a standalone document, as
 /// `--tikz-standalone`).
 #[pyfunction]
 #[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
-    notation=None, mirror=None, width=None, height=None, title=None, animate=None, tikz=None))]
+    notation=None, mass=None, fluctuation=None, bore=None, gas_force=None, mirror=None,
+    width=None, height=None, title=None, animate=None, tikz=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -283,6 +285,10 @@ fn figure(
     unit: Option<&str>,
     force_unit: Option<&str>,
     notation: Option<&str>,
+    mass: Option<f64>,
+    fluctuation: Option<f64>,
+    bore: Option<f64>,
+    gas_force: Option<f64>,
     mirror: Option<bool>,
     width: Option<&str>,
     height: Option<&str>,
@@ -291,46 +297,34 @@ fn figure(
     tikz: Option<bool>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
-    let mut options = FigureOptions::default();
-    if crank.is_some() || rod.is_some() || offset.is_some() {
-        let m = name.mechanism();
-        options.mechanism = Some(engine(
-            crank.unwrap_or(m.crank()),
-            rod.unwrap_or(m.rod()),
-            offset.unwrap_or(m.offset()),
-        )?);
-    }
-    if rpm.is_some() || omega.is_some() {
-        options.omega = Some(crank_speed(rpm, omega)?);
-    }
-    if let Some(list) = layers {
-        let layers = Layer::parse_list(list).map_err(py_err)?;
-        if layers.is_empty() {
-            return Err(py_err(Error::refused(
-                Input::Layers,
-                Wording::default()
-                    .option(Field::Layers)
-                    .then(" names no layer"),
-            )));
-        }
-        options.layers = Some(layers);
-    }
-    options.angle = angle.map(Angle::from_degrees).transpose().map_err(py_err)?;
-    options.style = style.map(parse).transpose()?;
-    options.font = font.map(parse).transpose()?;
-    options.data = data
+    let mut request = FigureRequest::default();
+    request.crank = crank;
+    request.rod = rod;
+    request.offset = offset;
+    request.angle = angle;
+    request.rpm = rpm;
+    request.omega = omega;
+    request.layers = layers.map(Layer::parse_list).transpose().map_err(py_err)?;
+    request.style = style.map(parse).transpose()?;
+    request.font = font.map(parse).transpose()?;
+    request.data = data
         .as_ref()
         .map(|p| read_text(p, MAX_DATA_BYTES, Input::Data))
         .transpose()
         .map_err(py_err)?;
-    options.fit = fit.map(parse).transpose()?;
-    options.length_unit = unit.map(parse).transpose()?;
-    options.force_unit = force_unit.map(parse).transpose()?;
-    options.notation = notation.map(parse).transpose()?;
-    options.mirror = mirror;
-    options.width = width.map(parse).transpose()?;
-    options.height = height.map(parse).transpose()?;
-    options.title = title.map(parse).transpose()?;
+    request.fit = fit.map(parse).transpose()?;
+    request.unit = unit.map(parse).transpose()?;
+    request.force_unit = force_unit.map(parse).transpose()?;
+    request.notation = notation.map(parse).transpose()?;
+    request.mass = mass;
+    request.fluctuation = fluctuation;
+    request.bore = bore;
+    request.gas_force = gas_force;
+    request.mirror = mirror;
+    request.width = width.map(parse).transpose()?;
+    request.height = height.map(parse).transpose()?;
+    request.title = title.map(parse).transpose()?;
+    let options = request.options(name).map_err(py_err)?;
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);
     }
