@@ -37,7 +37,7 @@
 use super::cylindric::CylindricPose;
 use super::quadric::QuadricPose;
 use crate::construct::{Link, kennedy_residual};
-use crate::geom::{Intersection, Line, Point, Vector, perp};
+use crate::geom::{Intersection, Line, MeetJson, Point, Vector, perp};
 use crate::mechanism::Pose;
 
 /// The names of the six centres, in the order [`ChainCentres::all`] keeps.
@@ -161,16 +161,9 @@ impl ChainCentres {
     /// coincident lines leave it anywhere on a line (the same form in
     /// the analysis's JSON and in the figures' metadata).
     pub fn to_json(&self) -> serde_json::Value {
-        let num = |x: f64| x + 0.0;
         let mut map = serde_json::Map::new();
         for (name, centre) in self.named() {
-            let value = match centre {
-                Intersection::Point(p) => serde_json::json!([num(p.x), num(p.y)]),
-                Intersection::AtInfinity(d) => {
-                    serde_json::json!({"at_infinity": [num(d.x), num(d.y)]})
-                }
-                Intersection::Coincident => serde_json::json!({"indeterminate": true}),
-            };
+            let value = MeetJson(&centre, crate::number::unsigned_zero).value();
             map.insert(name.to_string(), value);
         }
         serde_json::Value::Object(map)

@@ -63,7 +63,7 @@ footer .nobreak {{ white-space: nowrap; }}
 /// The full-precision text of a number in `data-value`: the shortest that
 /// reads back as the same number (what the analysis's JSON writes).
 fn exact_text(x: f64) -> String {
-    format!("{}", x + 0.0)
+    format!("{}", crate::number::unsigned_zero(x))
 }
 
 /// One value cell: the number shown to four figures, the full number in

@@ -11,7 +11,7 @@ use crate::chain::{
 };
 use crate::construct::Link;
 use crate::error::Result;
-use crate::geom::{Intersection, Point};
+use crate::geom::{Intersection, MeetJson, Point, PointJson};
 use crate::mechanism::SliderCrank;
 use crate::number::plain;
 use serde_json::{Value, json};
@@ -21,23 +21,16 @@ use serde_json::{Value, json};
 /// formulations.
 pub const CHAIN_TOLERANCE: f64 = 1e-12;
 
-/// +0.0 for −0.0, so that no "-0" is printed.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
+use crate::number::unsigned_zero as num;
 
 fn point_json(p: Point) -> Value {
-    json!([num(p.x), num(p.y)])
+    json!(PointJson(p, num))
 }
 
 /// A point, or `{"at_infinity": [dx, dy]}`, or `{"indeterminate": true}`
-/// where two coincident lines leave it anywhere on a line.
+/// where two coincident lines leave it anywhere on a line ([`MeetJson`]).
 pub fn centre_json(c: &Intersection) -> Value {
-    match c {
-        Intersection::Point(p) => point_json(*p),
-        Intersection::AtInfinity(d) => json!({"at_infinity": [num(d.x), num(d.y)]}),
-        Intersection::Coincident => json!({"indeterminate": true}),
-    }
+    MeetJson(c, num).value()
 }
 
 fn opt(x: Option<f64>) -> Value {

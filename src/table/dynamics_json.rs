@@ -7,10 +7,7 @@ use crate::dynamics::{Engine, EngineLoads, EnginePose, unbalanced_forces};
 use crate::units::Units;
 use serde_json::{Value, json};
 
-/// +0.0 for −0.0.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
+use crate::number::unsigned_zero as num;
 
 /// The unit of mass the forces imply ([`Units::mass`]: `slug` with the
 /// textbook's units, `kg` with N and m).

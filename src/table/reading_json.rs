@@ -14,16 +14,13 @@ use crate::construct::{
     AccelerationPolygon, Bennett, CouplerPoint, Reading, Ritterhaus, Statics, VelocityLine,
     VelocityPolygon,
 };
-use crate::geom::{Intersection, Point};
+use crate::geom::{Intersection, MeetJson, Point};
 use crate::mechanism::SliderCrank;
 use crate::units::Units;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::Value;
 
-/// +0.0 for −0.0, so that no "-0" is written.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
+use crate::number::unsigned_zero as num;
 
 /// A point `[x, y]`.
 fn pair(x: f64, y: f64) -> [f64; 2] {
@@ -40,24 +37,12 @@ impl Serialize for At {
 }
 
 /// A point `[x, y]`, a point at infinity `{"at_infinity": [dx, dy]}` or
-/// `{"indeterminate": true}`.
+/// `{"indeterminate": true}` ([`MeetJson`]).
 struct Centre(Intersection);
 
 impl Serialize for Centre {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match &self.0 {
-            Intersection::Point(p) => At(*p).serialize(s),
-            Intersection::AtInfinity(d) => {
-                let mut m = s.serialize_map(Some(1))?;
-                m.serialize_entry("at_infinity", &pair(d.x, d.y))?;
-                m.end()
-            }
-            Intersection::Coincident => {
-                let mut m = s.serialize_map(Some(1))?;
-                m.serialize_entry("indeterminate", &true)?;
-                m.end()
-            }
-        }
+        MeetJson(&self.0, num).serialize(s)
     }
 }
 
