@@ -6,11 +6,11 @@ use thiserror::Error;
 
 mod field;
 mod input;
-mod spelling;
+mod wording;
 
 pub use field::Field;
 pub use input::Input;
-pub use spelling::Spelling;
+pub use wording::{Keys, Spelling, Wording};
 
 /// Everything that can go wrong at the boundary of the crate: bad numbers,
 /// a mechanism that cannot be assembled, a malformed request.
@@ -79,8 +79,10 @@ pub enum Error {
         /// What kind of input it was (the data file, a scene file).
         input: Input,
         /// What was wrong, as printed (`unknown layer 'x': expected one
-        /// of …`); it names the input where the user needs to be told.
-        message: String,
+        /// of …`); it names the input where the user needs to be told,
+        /// and the request's fields as [`Field`]s, which each front end
+        /// writes its own way ([`Error::spelled`]).
+        message: Wording,
     },
     /// Reading or writing failed (a file, standard output, the PNG
     /// encoder). The message is the whole of what is shown: it names the
@@ -112,7 +114,25 @@ pub enum Error {
 impl Error {
     /// An [`Error::Invalid`] about `input`; `message` is what is printed.
     pub fn invalid(input: Input, message: String) -> Self {
+        Error::refused(input, Wording::from(message))
+    }
+
+    /// An [`Error::Invalid`] about `input` whose `message` names the
+    /// request's fields, each front end writing them its own way.
+    pub fn refused(input: Input, message: Wording) -> Self {
         Error::Invalid { input, message }
+    }
+
+    /// The same error with the fields its message names written by
+    /// `spelling` (the command line's flags, the Python package's
+    /// keywords), so that it prints as its user typed them; an error
+    /// that names no field is unchanged. Its `Display` without this is
+    /// the library's own spelling, [`Keys`].
+    pub fn spelled(self, spelling: &dyn Spelling) -> Self {
+        match self {
+            Error::Invalid { input, message } => Error::invalid(input, message.spelled(spelling)),
+            e => e,
+        }
     }
 
     /// The same error said to be about `input` when it is an
@@ -131,9 +151,10 @@ impl Error {
     /// unchanged (one about the angle, or the line fit through the data).
     pub fn in_file(self, input: Input, path: &std::path::Path) -> Self {
         match self {
-            Error::Invalid { input: i, message } if i == input => {
-                Error::invalid(input, format!("{}: {message}", path.display()))
-            }
+            Error::Invalid { input: i, message } if i == input => Error::refused(
+                input,
+                Wording::from(format!("{}: ", path.display())).and(message),
+            ),
             e => e,
         }
     }
@@ -204,7 +225,8 @@ impl Error {
     /// bidirectional control and non-character, written as an escape
     /// (`\n`, `\u{202e}`), so that the message is one line and reads as
     /// printed; a text longer than [`Error::MAX_MESSAGE_CHARS`] characters is
-    /// cut there, with `…`.
+    /// cut there, with `…` (a message that names fields, each of its
+    /// texts: spell it first, [`Error::spelled`], to cut the whole).
     pub fn one_line(self) -> Self {
         match self {
             Error::OutOfRange {
@@ -218,7 +240,7 @@ impl Error {
             },
             Error::Invalid { input, message } => Error::Invalid {
                 input,
-                message: escape_controls(&message),
+                message: message.map_text(escape_controls),
             },
             Error::Io {
                 message,

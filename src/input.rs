@@ -1,7 +1,7 @@
 //! Reading input files with a bound on their size.
 //!
-//! Every file the program reads (scene files, manifests, `--data` CSV)
-//! goes through [`read_text`], and the files `gallery --check` compares
+//! Every file the program reads (scene files, manifests, a figure's data
+//! CSV) goes through [`read_text`], and the files a gallery's check compares
 //! through [`read_bytes_from`]: they read as the file streams and stop one
 //! byte past the limit, so `/dev/zero` or a huge file costs at most the
 //! limit in memory, and the message names the file and the limit.
@@ -14,7 +14,7 @@ use std::sync::Arc;
 /// Largest scene file read, in bytes (1 MiB: a scene is a few hundred).
 pub const MAX_SCENE_BYTES: u64 = 1 << 20;
 
-/// Largest `--data` CSV file read, in bytes (4 MiB; the data reader also
+/// Largest data CSV file read (a figure's data, an indicator diagram), in bytes (4 MiB; the data reader also
 /// stops at 100 000 rows).
 pub const MAX_DATA_BYTES: u64 = 4 << 20;
 

@@ -170,7 +170,7 @@ pub use chain::{
     GrashofClass, Inversion, InversionPose, InvertedChain, LinkMotion, LinkRates, QuadricChain,
     QuadricPose, SlotConstruction, slot_convergence,
 };
-pub use error::{Error, Field, Input, Result};
+pub use error::{Error, Field, Input, Keys, Result, Spelling, Wording};
 pub use figure::Style;
 pub use figure::{Figure, Font};
 pub use mechanism::{MAX_LENGTH, MIN_LENGTH, Pose, SliderCrank};
@@ -202,6 +202,7 @@ mod tests {
         };
         // The error names every value it would have taken.
         for x in all {
+            let message = message.to_string();
             assert!(message.contains(&x.to_string()), "{message} lacks {x}");
         }
     }

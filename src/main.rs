@@ -151,7 +151,7 @@ fn main() -> ExitCode {
         // The reader went away (`| head`): nothing to say, but not a success.
         Err(_) if out.broken_pipe() => ExitCode::from(REFUSED),
         Err(e) => {
-            cli::output::say(&format!("slider-crank: error: {}", e.one_line()));
+            cli::output::say(&format!("slider-crank: error: {}", cli::flags::said(e)));
             ExitCode::from(REFUSED)
         }
     }

@@ -1210,6 +1210,10 @@ def figure(
     unit: Optional[str] = None,
     force_unit: Optional[str] = None,
     notation: Optional[str] = None,
+    mass: Optional[float] = None,
+    fluctuation: Optional[float] = None,
+    bore: Optional[float] = None,
+    gas_force: Optional[float] = None,
     mirror: Optional[bool] = None,
     width: Union[None, float, str] = None,
     height: Union[None, float, str] = None,
@@ -1228,7 +1232,12 @@ def figure(
     ``new-computer-modern`` or ``libertinus-serif``; ``data``: a CSV file
     of measured data; ``fit``: ``origin``, ``intercept`` or ``both``;
     ``unit``, ``force_unit``: unit names; ``notation``: ``textbook`` or
-    ``ng``; ``mirror``: the cylinder on the left (True) or right (False);
+    ``ng``; ``mass``: the reciprocating mass of the engine dynamics
+    figures (default 10); ``fluctuation``: the flywheel's coefficient of
+    fluctuation of speed (default 0.02); ``bore``: the cylinder's bore on
+    which the indicator diagram ``data`` acts; ``gas_force``: a constant
+    gas force in place of a diagram; ``mirror``: the cylinder on the left
+    (True) or right (False);
     ``width``, ``height``: page units (800) or a size (``"120mm"``,
     ``"4.5in"``); ``title``: set below the figure.
     """
@@ -1246,6 +1255,7 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
     style, font, fit, unit = (given[k] for k in ("style", "font", "fit", "unit"))
     force_unit, notation, mirror = (given[k] for k in ("force_unit", "notation", "mirror"))
     height, title = given["height"], given["title"]
+    dynamics = {k: _option(given.get(k)) for k in ("mass", "fluctuation", "bore", "gas_force")}
     return dict(
         crank=_option(crank),
         rod=_option(rod),
@@ -1261,6 +1271,7 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
         unit=unit,
         force_unit=force_unit,
         notation=notation,
+        **dynamics,
         mirror=mirror,
         width=_length(width),
         height=_length(height),

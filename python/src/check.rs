@@ -24,7 +24,7 @@ pub fn check_arguments(
     max_cells: u64,
 ) -> PyResult<f64> {
     let t = check_allowance(samples, tolerance, default).map_err(py_err)?;
-    MaxCells::keyword(max_cells)
+    MaxCells::new(max_cells)
         .check_poses(samples as u64, Quantity::ALL.len())
         .map_err(py_err)?;
     Ok(t)

@@ -6,13 +6,14 @@
 //! with the library and hand back text, bytes or filled numpy arrays. A
 //! library error becomes `ValueError` (`OSError` for a file that cannot be
 //! read or written), its message the line the command line prints after
-//! `slider-crank: `.
+//! `slider-crank: ` with the fields it names written as keywords
+//! (`gas_force=` where the command line writes its flag).
 
 use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use slider_crank::animate::{Animation, AnimationFormat};
-use slider_crank::catalogue::FigureOptions;
+use slider_crank::catalogue::{FigureOptions, FigureRequest};
 use slider_crank::construct::{Graphical, Reading};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::{DynamicsAsk, Handout};
@@ -21,9 +22,10 @@ use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
     write_atomic_all,
 };
-use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells, Spelling};
+use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
 use slider_crank::{
-    Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Unit, Units,
+    Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Spelling, Unit, Units,
+    Wording,
 };
 use std::path::{Path, PathBuf};
 
@@ -32,10 +34,25 @@ mod chain;
 mod check;
 mod dynamics;
 
+/// How the package writes the fields a library message names: as its
+/// keywords, `gas_force=` and `bore=D`.
+struct Keywords;
+
+impl Spelling for Keywords {
+    fn option(&self, field: Field) -> String {
+        format!("{}=", field.key())
+    }
+
+    fn set(&self, field: Field, value: &str) -> String {
+        format!("{}{value}", self.option(field))
+    }
+}
+
 /// The Python exception for a library error, with the command line's message
-/// (the one line the command line prints, control characters escaped).
+/// (the one line the command line prints, control characters escaped), its
+/// fields written as keywords.
 fn py_err(e: Error) -> PyErr {
-    let e = e.one_line();
+    let e = e.spelled(&Keywords).one_line();
     match e {
         Error::Io { .. } => PyOSError::new_err(e.to_string()),
         e => PyValueError::new_err(e.to_string()),
@@ -241,13 +258,15 @@ fn fill_chunk(
 }
 
 /// The SVG of a named figure with the options the `figure` command's
-/// flags give (`None`: the flag not given); with `tikz` its TikZ picture
-/// instead (`tikz = true`: a standalone document, as
+/// flags give (`None`: the flag not given), filled into the library's
+/// request ([`FigureRequest`]) and validated there; with `tikz` its TikZ
+/// picture instead (`tikz = true`: a standalone document, as
 /// `--tikz-standalone`).
 #[pyfunction]
 #[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
-    notation=None, mirror=None, width=None, height=None, title=None, animate=None, tikz=None))]
+    notation=None, mass=None, fluctuation=None, bore=None, gas_force=None, mirror=None,
+    width=None, height=None, title=None, animate=None, tikz=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -266,6 +285,10 @@ fn figure(
     unit: Option<&str>,
     force_unit: Option<&str>,
     notation: Option<&str>,
+    mass: Option<f64>,
+    fluctuation: Option<f64>,
+    bore: Option<f64>,
+    gas_force: Option<f64>,
     mirror: Option<bool>,
     width: Option<&str>,
     height: Option<&str>,
@@ -274,41 +297,34 @@ fn figure(
     tikz: Option<bool>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
-    let mut options = FigureOptions::default();
-    if crank.is_some() || rod.is_some() || offset.is_some() {
-        let m = name.mechanism();
-        options.mechanism = Some(engine(
-            crank.unwrap_or(m.crank()),
-            rod.unwrap_or(m.rod()),
-            offset.unwrap_or(m.offset()),
-        )?);
-    }
-    if rpm.is_some() || omega.is_some() {
-        options.omega = Some(crank_speed(rpm, omega)?);
-    }
-    if let Some(list) = layers {
-        let layers = Layer::parse_list(list).map_err(py_err)?;
-        if layers.is_empty() {
-            return Err(PyValueError::new_err("--layers names no layer"));
-        }
-        options.layers = Some(layers);
-    }
-    options.angle = angle.map(Angle::from_degrees).transpose().map_err(py_err)?;
-    options.style = style.map(parse).transpose()?;
-    options.font = font.map(parse).transpose()?;
-    options.data = data
+    let mut request = FigureRequest::default();
+    request.crank = crank;
+    request.rod = rod;
+    request.offset = offset;
+    request.angle = angle;
+    request.rpm = rpm;
+    request.omega = omega;
+    request.layers = layers.map(Layer::parse_list).transpose().map_err(py_err)?;
+    request.style = style.map(parse).transpose()?;
+    request.font = font.map(parse).transpose()?;
+    request.data = data
         .as_ref()
         .map(|p| read_text(p, MAX_DATA_BYTES, Input::Data))
         .transpose()
         .map_err(py_err)?;
-    options.fit = fit.map(parse).transpose()?;
-    options.length_unit = unit.map(parse).transpose()?;
-    options.force_unit = force_unit.map(parse).transpose()?;
-    options.notation = notation.map(parse).transpose()?;
-    options.mirror = mirror;
-    options.width = width.map(parse).transpose()?;
-    options.height = height.map(parse).transpose()?;
-    options.title = title.map(parse).transpose()?;
+    request.fit = fit.map(parse).transpose()?;
+    request.unit = unit.map(parse).transpose()?;
+    request.force_unit = force_unit.map(parse).transpose()?;
+    request.notation = notation.map(parse).transpose()?;
+    request.mass = mass;
+    request.fluctuation = fluctuation;
+    request.bore = bore;
+    request.gas_force = gas_force;
+    request.mirror = mirror;
+    request.width = width.map(parse).transpose()?;
+    request.height = height.map(parse).transpose()?;
+    request.title = title.map(parse).transpose()?;
+    let options = request.options(name).map_err(py_err)?;
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);
     }
@@ -339,15 +355,18 @@ fn animation(
     path: &str,
 ) -> PyResult<String> {
     let format = AnimationFormat::from_path(Path::new(path)).map_err(py_err)?;
-    if let Some(flag) = [
-        (options.data.is_some(), "--data"),
-        (options.fit.is_some(), "--fit"),
+    if let Some(field) = [
+        (options.data.is_some(), Field::Data),
+        (options.fit.is_some(), Field::Fit),
     ]
     .iter()
-    .find_map(|&(given, flag)| given.then_some(flag))
+    .find_map(|&(given, field)| given.then_some(field))
     {
-        return Err(PyValueError::new_err(format!(
-            "animate takes no {flag}: the mechanism figures draw no measured data"
+        return Err(py_err(Error::refused(
+            Input::Options,
+            Wording::from("animate takes no ")
+                .option(field)
+                .then(": the mechanism figures draw no measured data"),
         )));
     }
     let scene = name.scene_with(options).map_err(py_err)?.ok_or_else(|| {
@@ -455,7 +474,6 @@ fn handout(
             gas_force,
             indicator,
             bore,
-            spelling: Spelling::Keyword,
         })
         .map_err(py_err)?;
     py.detach(|| match which {
@@ -539,7 +557,7 @@ fn table(
 ) -> PyResult<String> {
     use slider_crank::table::{self as t, Format, Head, Table};
     let format: Format = parse(format)?;
-    let bound = MaxCells::keyword(max_cells);
+    let bound = MaxCells::new(max_cells);
     let given_decimals = decimals;
     let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
     if decimals > 17 {

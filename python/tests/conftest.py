@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 from pathlib import Path
 from typing import Any, List, Sequence
@@ -33,6 +34,17 @@ def _program() -> Path:
             "or set SLIDER_CRANK_BIN"
         )
     return max(built, key=lambda p: p.stat().st_mtime)
+
+
+def keywords(message: str) -> str:
+    """The command line's message with each flag it names spelt as the
+    package's keyword: ``--gas-force`` as ``gas_force=``, ``--bore D`` as
+    ``bore=D`` (a flag's value is a capital or a number after it)."""
+    return re.sub(
+        r"--([a-z][a-z-]*)(?: (?=[A-Z0-9]))?",
+        lambda m: m.group(1).replace("-", "_") + "=",
+        message,
+    )
 
 
 class Cli:

@@ -12,7 +12,7 @@ from typing import Any, Callable, List
 import pytest
 
 import slider_crank as sc
-from conftest import Cli
+from conftest import Cli, keywords
 
 
 def same(got: Any, text: str) -> None:
@@ -134,7 +134,8 @@ REFUSED: List[Any] = [
 
 @pytest.mark.parametrize("name,options,flags", REFUSED)
 def test_chain_figures_refuse_what_they_do_not_draw(cli: Cli, name: str, options: Any, flags: List[str]) -> None:
-    message = cli.error(["figure", name, *flags])
+    # the command line names its flags (--rpm), Python its keywords (rpm=)
+    message = keywords(cli.error(["figure", name, *flags]))
     with pytest.raises(ValueError) as caught:
         sc.figure(name, **options)
     assert str(caught.value) == message

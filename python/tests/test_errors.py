@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import slider_crank as sc
-from conftest import Cli
+from conftest import Cli, keywords
 
 ENGINE = sc.SliderCrank(0.5, 3.0)
 
@@ -68,7 +68,7 @@ FIGURE_CASES: List[Any] = [
 def test_figure_errors_carry_the_command_line_message(
     cli: Cli, options: Dict[str, Any], flags: List[str]
 ) -> None:
-    message = cli.error(["figure", "fig-66-kisch", *flags])
+    message = keywords(cli.error(["figure", "fig-66-kisch", *flags]))
     with pytest.raises(ValueError) as caught:
         sc.figure("fig-66-kisch", **options)
     assert str(caught.value) in message, (message, str(caught.value))

@@ -12,11 +12,7 @@ import pytest
 
 import slider_crank as sc
 from conftest import Cli
-
-
-def in_python(message: str) -> str:
-    """The command line's message with its flag spelt as the keyword."""
-    return message.replace("--max-cells ", "max_cells=")
+from conftest import keywords as in_python
 
 
 # (the call, the command line given the same request): each refused at

@@ -49,7 +49,7 @@ pub fn rpm_to_omega(rpm: f64) -> f64 {
 pub const MAX_RPM: f64 = 9e100;
 
 /// A crank speed given in revolutions per minute as ω in rad/s, checked as
-/// `--rpm` is: finite, |rpm| ≤ [`MAX_RPM`], and the ω it gives within
+/// every front end's rpm is: finite, |rpm| ≤ [`MAX_RPM`], and the ω it gives within
 /// [`check_omega`]'s range (a tiny non-zero speed is refused, also where
 /// its ω would underflow to 0).
 pub fn omega_from_rpm(rpm: f64) -> Result<f64> {
@@ -85,8 +85,8 @@ pub fn omega_from_rpm(rpm: f64) -> Result<f64> {
 /// centres the slider velocity is exactly zero for an in-line mechanism.
 ///
 /// It serialises (serde) as a map of its field names to numbers, in the
-/// user's units and radians: the values as computed, which `analyze --json`
-/// writes in its own schema (the rod angle there in degrees).
+/// user's units and radians: the values as computed, which the analysis's
+/// JSON ([`crate::table::ReadingJson`]) writes in its own schema (the rod angle there in degrees).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct Kinematics {
     /// Crank speed ω in rad/s.

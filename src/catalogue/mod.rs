@@ -10,6 +10,7 @@ pub(crate) mod builders;
 mod name;
 mod options;
 mod parse;
+mod request;
 mod scene_file;
 mod scene_toml;
 mod source;
@@ -19,5 +20,6 @@ pub(crate) use options::Setting;
 pub use options::{FigureOptions, Fit};
 #[cfg(feature = "html")]
 pub(crate) use parse::{located, toml_error};
+pub use request::{FigureRequest, crank_speed};
 pub use scene_file::SceneFile;
 pub use specs::{FigureName, Group};

@@ -5,7 +5,7 @@
 use super::specs::Group;
 use super::specs::{At, Kind, Source};
 use super::{FigureName, FigureOptions, Setting, builders, scene_toml};
-use crate::error::{Error, Field, Input, Result};
+use crate::error::{Error, Field, Input, Result, Wording};
 use crate::figure::{Figure, Style};
 use crate::scene::{Layer, Notation, Page, Scene};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Units};
@@ -166,8 +166,8 @@ impl FigureName {
     /// The scene of a mechanism figure with `options` applied, the scene
     /// [`FigureName::figure`] draws; `None` for a diagram, which has no
     /// scene. Errors as [`FigureName::figure`] for an option a mechanism
-    /// figure does not use (`--data`, `--fit`, `--mass`, `--fluctuation`) or a
-    /// bad value.
+    /// figure does not use (the data, the fit, the mass, the coefficient
+    /// of fluctuation) or a bad value.
     pub fn scene_with(&self, options: &FigureOptions) -> Result<Option<Scene>> {
         match self.spec().kind {
             Kind::Mechanism(layers) => self.asked_scene(layers, options).map(Some),
@@ -187,12 +187,12 @@ impl FigureName {
     }
 
     /// Refuses an option given in `options` that the figure does not take,
-    /// naming it as on the command line.
+    /// naming its fields.
     pub(crate) fn refuse_unused(&self, options: &FigureOptions) -> Result<()> {
         match self.unused(options) {
-            Some(bad) => Err(Error::invalid(
+            Some(bad) => Err(Error::refused(
                 Input::Options,
-                format!("{} does not use {}", self.name(), bad.flag()),
+                Wording::from(format!("{} does not use ", self.name())).and(bad.wording()),
             )),
             None => Ok(()),
         }
@@ -247,7 +247,7 @@ impl FigureName {
 
     /// The scene file of this figure, as a starting point: every key it
     /// uses at the figure's own value, each with a comment (what
-    /// `slider-crank scene --print-default NAME` prints). A mechanism
+    /// the command line prints as a figure's default scene). A mechanism
     /// figure's file gives every key of its scene and reads back to the
     /// same scene; a diagram's starts from `figure = "NAME"` and gives the
     /// keys that diagram takes (its data, where it has any, is given on

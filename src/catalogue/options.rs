@@ -1,6 +1,6 @@
 //! What may be changed in a named figure ([`super::FigureName::figure`]).
 
-use crate::error::{Error, Input, Result};
+use crate::error::{Error, Field, Input, Result, Wording};
 use crate::figure::{Font, PageLength, PageUnit, Style, Title};
 use crate::scene::Page;
 use crate::{angle::Angle, mechanism::SliderCrank, scene::Layer, scene::Notation, units::Unit};
@@ -139,9 +139,9 @@ pub struct FigureOptions {
 /// that is given.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Setting {
-    /// The mechanism (`--crank`, `--rod`, `--offset`).
+    /// The mechanism (its crank, rod and offset).
     Mechanism,
-    /// The crank speed (`--rpm`, `--omega`).
+    /// The crank speed (in rpm or as ω).
     Speed,
     /// The crank angle of the pose drawn, or the plane's tilt.
     Angle,
@@ -170,28 +170,42 @@ pub(crate) enum Setting {
 }
 
 impl Setting {
-    /// How a message names it, as on the command line (`--angle`,
-    /// `mechanism (--crank, --rod, --offset)`). It stays here rather than
-    /// in the command line's code because the library's own refusal
-    /// ([`super::FigureName::figure`]: `rod-motion does not use --data`)
-    /// is what every caller prints, the Python package among them.
-    pub(crate) fn flag(self) -> &'static str {
-        match self {
-            Setting::Mechanism => "mechanism (--crank, --rod, --offset)",
-            Setting::Speed => "crank speed (--rpm, --omega)",
-            Setting::Angle => "--angle",
-            Setting::Style => "--style",
-            Setting::Font => "--font",
-            Setting::Layers => "--layers",
-            Setting::Data => "--data",
-            Setting::Fit => "--fit",
-            Setting::Notation => "--notation",
-            Setting::Mirror => "--mirror",
-            Setting::Mass => "--mass",
-            Setting::Fluctuation => "--fluctuation",
-            Setting::Bore => "--bore",
-            Setting::GasForce => "--gas-force",
-        }
+    /// How a message names it, by its fields (`angle`, `mechanism
+    /// (crank, rod, offset)`), which each front end spells its way: the
+    /// library's refusal ([`super::FigureName::figure`]: `rod-motion does
+    /// not use data`) is what every caller prints.
+    pub(crate) fn wording(self) -> Wording {
+        let field = match self {
+            Setting::Mechanism => {
+                return Wording::from("mechanism (")
+                    .option(Field::Crank)
+                    .then(", ")
+                    .option(Field::Rod)
+                    .then(", ")
+                    .option(Field::Offset)
+                    .then(")");
+            }
+            Setting::Speed => {
+                return Wording::from("crank speed (")
+                    .option(Field::Rpm)
+                    .then(", ")
+                    .option(Field::Omega)
+                    .then(")");
+            }
+            Setting::Angle => Field::Angle,
+            Setting::Style => Field::Style,
+            Setting::Font => Field::Font,
+            Setting::Layers => Field::Layers,
+            Setting::Data => Field::Data,
+            Setting::Fit => Field::Fit,
+            Setting::Notation => Field::Notation,
+            Setting::Mirror => Field::Mirror,
+            Setting::Mass => Field::Mass,
+            Setting::Fluctuation => Field::Fluctuation,
+            Setting::Bore => Field::Bore,
+            Setting::GasForce => Field::GasForce,
+        };
+        Wording::default().option(field)
     }
 }
 
@@ -273,7 +287,14 @@ mod tests {
             ..FigureOptions::default()
         };
         assert_eq!(o.given(), [Setting::Data, Setting::Fit]);
-        assert_eq!(Setting::Data.flag(), "--data");
+        assert_eq!(
+            Setting::Data.wording().fields().collect::<Vec<_>>(),
+            [Field::Data]
+        );
+        assert_eq!(
+            Setting::Mechanism.wording().to_string(),
+            "mechanism (`crank`, `rod`, `offset`)"
+        );
         assert!(FigureOptions::default().given().is_empty());
     }
 }

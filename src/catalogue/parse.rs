@@ -348,7 +348,7 @@ fn page(text: &str, p: &PageFile, page: &Page) -> Result<Page> {
     let margin = p.margin.as_ref().map_or(page.margin(), |m| *m.get_ref());
     let base = Page::new(page.width(), page.height(), margin).map(|b| b.with_unit(page.unit()));
     // A scene file's height is the most the drawing takes (a file
-    // written by `scene --print-default` carries the figure's own, which
+    // printed as a figure's default scene carries the figure's own, which
     // grows for a detail): only a height asked for with the figure is held.
     let built = base
         .and_then(|b| options.page(&b))
@@ -380,7 +380,7 @@ fn speed(text: &str, file: &File) -> Result<Option<(f64, Range<usize>)>> {
             w.span(),
             "give either `rpm` or `omega`, not both",
         )),
-        // Checked as `--rpm` is, at its line: a speed whose ω underflows
+        // Checked as every front end's rpm is, at its line: a speed whose ω underflows
         // is named as the rpm given, not as an ω of 0.
         (Some(n), None) => {
             let omega = at(
@@ -489,7 +489,8 @@ fn posed(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
 /// page.
 fn styled(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
     if let Some(layers) = &file.layers {
-        // An empty list would draw a blank page: refused as `--layers ''`.
+        // An empty list would draw a blank page: refused as an empty list
+        // of layers is everywhere.
         if layers.get_ref().is_empty() {
             return Err(located(
                 Input::Scene,

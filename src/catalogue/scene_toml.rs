@@ -229,10 +229,8 @@ pub(crate) fn diagram(name: FigureName) -> String {
     let takes = |s: Setting| name.takes(s);
     let mut out = String::new();
     let data = match (takes(Setting::Data), takes(Setting::Fit)) {
-        (true, true) => {
-            " Its measured data (--data) and its fit (--fit) are given on the command line only."
-        }
-        (true, false) => " Its measured data (--data) is given on the command line only.",
+        (true, true) => " Its measured data and its fit are not keys of a scene file.",
+        (true, false) => " Its measured data is not a key of a scene file.",
         _ => "",
     };
     header(

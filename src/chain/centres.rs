@@ -32,12 +32,12 @@
 //!   homothety again. So the curved slot has E, D and Klein, not Kisch.
 //!
 //! Each is cross-checked against the exact core in the tests and by
-//! `slider-crank check --slot-radius`.
+//! the command line's check of the slot.
 
 use super::cylindric::CylindricPose;
 use super::quadric::QuadricPose;
 use crate::construct::{Link, kennedy_residual};
-use crate::geom::{Intersection, Line, Point, Vector, perp};
+use crate::geom::{Intersection, Line, MeetJson, Point, Vector, perp};
 use crate::mechanism::Pose;
 
 /// The names of the six centres, in the order [`ChainCentres::all`] keeps.
@@ -159,18 +159,11 @@ impl ChainCentres {
     /// The six as a JSON object keyed `O_ab` … `O_cd`: each `[x, y]`, or
     /// `{"at_infinity": [dx, dy]}`, or `{"indeterminate": true}` where two
     /// coincident lines leave it anywhere on a line (the same form in
-    /// `analyze --json` and in the figures' metadata).
+    /// the analysis's JSON and in the figures' metadata).
     pub fn to_json(&self) -> serde_json::Value {
-        let num = |x: f64| x + 0.0;
         let mut map = serde_json::Map::new();
         for (name, centre) in self.named() {
-            let value = match centre {
-                Intersection::Point(p) => serde_json::json!([num(p.x), num(p.y)]),
-                Intersection::AtInfinity(d) => {
-                    serde_json::json!({"at_infinity": [num(d.x), num(d.y)]})
-                }
-                Intersection::Coincident => serde_json::json!({"indeterminate": true}),
-            };
+            let value = MeetJson(&centre, crate::number::unsigned_zero).value();
             map.insert(name.to_string(), value);
         }
         serde_json::Value::Object(map)

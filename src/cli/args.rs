@@ -182,9 +182,9 @@ pub struct GuardArgs {
 }
 
 impl GuardArgs {
-    /// The library's bound, set by `--max-cells` and named as the flag.
+    /// The library's bound, set by `--max-cells`.
     pub fn bound(&self) -> MaxCells {
-        MaxCells::flag(self.max_cells)
+        MaxCells::new(self.max_cells)
     }
 
     /// Checks `rows` × `columns` against `--max-cells` (see

@@ -150,7 +150,7 @@ fn figure_request(
 /// The library's refusal of a request that parsed (a rod too short, a
 /// layer the figure does not draw), as the command line words it.
 fn refused(e: Error) -> Refusal {
-    Refusal::new(422, &e.one_line().to_string())
+    Refusal::new(422, &crate::cli::flags::said(e).to_string())
 }
 
 /// The figure asked for. A mechanism figure is drawn as `animate` draws

@@ -3,13 +3,13 @@
 use super::args::{SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::catalogue::{FigureOptions, Fit, Group};
+use slider_crank::catalogue::{FigureOptions, FigureRequest, Fit, Group};
 use slider_crank::figure::{Font, PageLength, Title};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{
     FileFormat, TikzOptions, same_file, to_svg, to_svg_with_fonts, to_tikz, write_atomic,
 };
-use slider_crank::{Error, Figure, FigureName, Input, Layer, Notation, Result, SliderCrank, Style};
+use slider_crank::{Error, Figure, FigureName, Input, Layer, Notation, Result, Style};
 use std::path::{Path, PathBuf};
 
 /// The help of a figure's NAME: `lead`, then the names of the figures of
@@ -269,65 +269,42 @@ pub fn emit(
     }
 }
 
-/// The options the flags ask for, validated.
+/// The options the flags ask for: the library's request filled from
+/// them (the data file read), validated there.
 pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
-    let mechanism = if args.crank.is_some() || args.rod.is_some() || args.offset.is_some() {
-        let m = name.mechanism();
-        Some(SliderCrank::new(
-            args.crank.unwrap_or(m.crank()),
-            args.rod.unwrap_or(m.rod()),
-            args.offset.unwrap_or(m.offset()),
-        )?)
-    } else {
-        None
-    };
-    let omega = if args.speed.rpm.is_some() || args.speed.omega.is_some() {
-        Some(args.speed.omega()?)
-    } else {
-        None
-    };
-    let layers = match &args.layers {
-        Some(list) => {
-            let layers = Layer::parse_list(list)?;
-            if layers.is_empty() {
-                return Err(Error::invalid(
-                    Input::Layers,
-                    "--layers names no layer".into(),
-                ));
-            }
-            Some(layers)
-        }
-        None => None,
-    };
+    let layers = args.layers.as_deref().map(Layer::parse_list).transpose()?;
     let data = match &args.data {
         Some(path) => Some(read_text(path, MAX_DATA_BYTES, Input::Data)?),
         None => None,
     };
-    let mut options = FigureOptions::default();
-    options.mechanism = mechanism;
-    options.omega = omega;
-    options.angle = args.angle.map(|d| name.angle(d)).transpose()?;
-    options.style = args.style;
-    options.font = args.font;
-    options.layers = layers;
-    options.data = data;
-    options.fit = args.fit;
-    options.length_unit = args.units.length.clone();
-    options.force_unit = args.units.force.clone();
-    options.notation = args.notation;
-    options.mass = args.mass;
-    options.fluctuation = args.fluctuation;
-    options.bore = args.bore;
-    options.gas_force = args.gas_force;
-    options.mirror = match (args.mirror, args.no_mirror) {
+    let mut request = FigureRequest::default();
+    request.crank = args.crank;
+    request.rod = args.rod;
+    request.offset = args.offset;
+    request.angle = args.angle;
+    request.rpm = args.speed.rpm;
+    request.omega = args.speed.omega;
+    request.layers = layers;
+    request.style = args.style;
+    request.font = args.font;
+    request.data = data;
+    request.fit = args.fit;
+    request.unit = args.units.length.clone();
+    request.force_unit = args.units.force.clone();
+    request.notation = args.notation;
+    request.mass = args.mass;
+    request.fluctuation = args.fluctuation;
+    request.bore = args.bore;
+    request.gas_force = args.gas_force;
+    request.mirror = match (args.mirror, args.no_mirror) {
         (true, _) => Some(true),
         (_, true) => Some(false),
         _ => None,
     };
-    options.width = args.width;
-    options.height = args.height;
-    options.title = args.title.clone();
-    Ok(options)
+    request.width = args.width;
+    request.height = args.height;
+    request.title = args.title.clone();
+    request.options(name)
 }
 
 /// Runs the subcommand: SVG on standard output, or the file written.

@@ -9,7 +9,6 @@ use clap::Args;
 use slider_crank::handout::{Class, DynamicsAsk, Handout, Paper};
 use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{no_link_at_derived, write_atomic_all};
-use slider_crank::table::Spelling;
 use slider_crank::{Angle, Error, Input, Result, Units};
 use std::path::{Path, PathBuf};
 
@@ -168,7 +167,6 @@ pub fn template(args: &HandoutArgs) -> Result<Handout> {
         gas_force: args.gas_force,
         indicator,
         bore: args.bore,
-        spelling: Spelling::Flag,
     })
 }
 

@@ -9,6 +9,7 @@ pub mod dynamics;
 #[cfg(feature = "explore")]
 pub mod explore;
 pub mod figure;
+pub mod flags;
 pub mod gallery;
 pub mod handout;
 pub mod output;

@@ -2,7 +2,7 @@
 //! of pressure against the fraction of the stroke.
 
 use crate::csv::Table as DataTable;
-use crate::error::{Error, Field, Input, Result, positive};
+use crate::error::{Error, Field, Input, Result, Wording, positive};
 use crate::mechanism::Pose;
 use crate::units::Units;
 
@@ -39,17 +39,19 @@ pub const EXAMPLE_BORE: f64 = 10.0 / 12.0;
 /// [`EXAMPLE_BORE`]) for an engine in `units`: only in feet and
 /// pounds-force, the diagram's own units. Any others are refused in one
 /// line that says how to give the engine's own gas force instead, `own`
-/// (as the caller spells it: `--indicator CSV with --bore D, or
-/// --gas-force F`).
-pub fn example_indicator(units: &Units, own: &str) -> Result<IndicatorDiagram> {
+/// (naming the caller's fields: the diagram with its bore, or a constant
+/// force).
+pub fn example_indicator(units: &Units, own: Wording) -> Result<IndicatorDiagram> {
     if *units != Units::FOOT_POUND {
-        return Err(Error::invalid(
+        return Err(Error::refused(
             Input::Options,
-            format!(
-                "the example gas force is the bundled steam indicator diagram, in lbf/ft² on a 10 in bore, for lengths in ft and forces in lbf: in {} and {} give the engine's own, {own}, in those units",
+            Wording::from(format!(
+                "the example gas force is the bundled steam indicator diagram, in lbf/ft² on a 10 in bore, for lengths in ft and forces in lbf: in {} and {} give the engine's own, ",
                 units.length(),
                 units.force()
-            ),
+            ))
+            .and(own)
+            .then(", in those units"),
         ));
     }
     IndicatorDiagram::from_csv(EXAMPLE_INDICATOR, EXAMPLE_BORE, "examples/indicator.csv")
@@ -436,7 +438,9 @@ fn declared(table: &DataTable, columns: &[usize], what: &str) -> Result<Option<S
 /// [`Error::Invalid`]; other errors name their value already.
 fn in_source(e: Error, what: &str) -> Error {
     match e {
-        Error::Invalid { input, message } => Error::invalid(input, format!("{what}: {message}")),
+        Error::Invalid { input, message } => {
+            Error::refused(input, Wording::from(format!("{what}: ")).and(message))
+        }
         e => e,
     }
 }
@@ -469,15 +473,16 @@ mod tests {
 
     #[test]
     fn the_example_is_for_feet_and_pounds_only() {
-        let d = example_indicator(&Units::FOOT_POUND, "x").unwrap();
+        let d = example_indicator(&Units::FOOT_POUND, Wording::default()).unwrap();
         assert!(
             (d.area() - std::f64::consts::PI * EXAMPLE_BORE * EXAMPLE_BORE / 4.0).abs() < 1e-15
         );
-        let e = example_indicator(&Units::MILLIMETRE_NEWTON, "--gas-force F")
+        let own = Wording::default().set(crate::error::Field::GasForce, "F");
+        let e = example_indicator(&Units::MILLIMETRE_NEWTON, own)
             .unwrap_err()
             .to_string();
         assert!(
-            e.contains("in mm and N give the engine's own, --gas-force F"),
+            e.contains("in mm and N give the engine's own, `gas_force = F`, in those units"),
             "{e}"
         );
     }

@@ -1,5 +1,5 @@
-//! An engine assembled from the parts a user gives: `analyze --mass …`'s
-//! flags and the Python package's keywords build it the same way.
+//! An engine assembled from the parts a user gives: the command line's
+//! options and the Python package's keywords build it the same way.
 
 use super::{Engine, GasForce, IndicatorDiagram, RodMass};
 use crate::error::Result;

@@ -1,4 +1,5 @@
-//! The parameters an error about a number names.
+//! The parameters an error about a number names, and the fields of a
+//! request a message names.
 
 /// Which parameter an [`Error::NotFinite`](super::Error::NotFinite),
 /// [`Error::NotPositive`](super::Error::NotPositive),
@@ -6,7 +7,9 @@
 /// [`Error::OutOfRange`](super::Error::OutOfRange) is about, so that a
 /// caller tells them apart by kind rather than by text (the command line
 /// and the catalogue say "a page too small for its plots" when the field
-/// is [`Field::PanelWidth`]).
+/// is [`Field::PanelWidth`]), and the field of a request a
+/// [`Wording`](super::Wording) names, which each front end writes its
+/// own way ([`Field::key`]).
 ///
 /// Its `Display` is the parameter's name as the message writes it
 /// (`crank`, `panel width`, `rod-cg`), the name in the library's own
@@ -148,6 +151,28 @@ pub enum Field {
     Load,
     /// The angle of a cylinder's axis about the crank shaft.
     Axis,
+    /// The measured data (CSV) a figure draws, or the indicator diagram
+    /// of its engine.
+    Data,
+    /// Which calibration line a figure draws.
+    Fit,
+    /// The layers of a mechanism figure.
+    Layers,
+    /// The drawing style.
+    Style,
+    /// The face of the text.
+    Font,
+    /// The letters of a mechanism figure.
+    Notation,
+    /// Whether the mechanism is drawn mirrored.
+    Mirror,
+    /// The most values one request may compute.
+    MaxCells,
+    /// An engine's own indicator diagram (a handout's).
+    Indicator,
+    /// The file a figure, a handout or a gallery is written to, which
+    /// the names of the files made beside it come from.
+    Out,
 }
 
 impl Field {
@@ -218,6 +243,33 @@ impl Field {
             Field::Speed => "speed",
             Field::Load => "load",
             Field::Axis => "axis",
+            Field::Data => "data",
+            Field::Fit => "fit",
+            Field::Layers => "layers",
+            Field::Style => "style",
+            Field::Font => "font",
+            Field::Notation => "notation",
+            Field::Mirror => "mirror",
+            Field::MaxCells => "max cells",
+            Field::Indicator => "indicator",
+            Field::Out => "out",
+        }
+    }
+
+    /// The field's key in a request: the Python package's keyword and a
+    /// scene file's key (`gas_force`, `max_cells`); the command line's
+    /// flag is the key with hyphens for its underscores. A field whose
+    /// name is one word is keyed by its name (`crank`, `data`); the
+    /// parameters no request gives (a panel's width) are keyed by their
+    /// name too, as [`Field::name`] writes it.
+    pub fn key(self) -> &'static str {
+        match self {
+            Field::GasForce => "gas_force",
+            Field::MaxCells => "max_cells",
+            Field::RodCg => "rod_cg",
+            Field::FluctuationOfSpeed | Field::Fluctuation => "fluctuation",
+            Field::Ratio => "n",
+            other => other.name(),
         }
     }
 }

@@ -50,7 +50,7 @@ pub enum Input {
     Scene,
     /// A gallery's manifest and the entries it names.
     Manifest,
-    /// The measured data (CSV) a figure draws (`--data`).
+    /// The measured data (CSV) a figure draws ([`crate::Field::Data`]).
     Data,
     /// An indicator diagram (CSV) of the engine's gas pressures.
     Indicator,
@@ -58,7 +58,7 @@ pub enum Input {
     Calibration,
     /// An SVG read back to be written as PNG or PDF, or a face it holds.
     Svg,
-    /// The four link lengths of a quadric chain (`--links a,b,c,d`).
+    /// The four link lengths of a quadric chain (`a,b,c,d`).
     Links,
     /// The command line as a whole, as its parser reports it.
     CommandLine,

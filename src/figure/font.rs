@@ -23,7 +23,8 @@ use std::fmt;
 use std::str::FromStr;
 use std::sync::{Mutex, OnceLock};
 
-/// A bundled face, chosen with `--font` or a scene file's `font` key.
+/// A bundled face, chosen by the field [`crate::Field::Font`] (a scene
+/// file's `font` key).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default, Deserialize)]
 #[serde(rename_all = "kebab-case")]
 #[non_exhaustive]

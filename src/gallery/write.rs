@@ -163,7 +163,7 @@ fn not_the_manifest(path: &Path, manifest: &Path) -> Result<()> {
     if is_file(path) && same_file(path, manifest) {
         return Err(Error::io_about(
             format!(
-                "cannot write {}: it is the gallery's manifest {}, read to make the gallery (give another --out, or keep the manifest elsewhere)",
+                "cannot write {}: it is the gallery's manifest {}, read to make the gallery (write the gallery to another directory, or keep the manifest elsewhere)",
                 path.display(),
                 manifest.display()
             ),

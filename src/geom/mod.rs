@@ -5,11 +5,13 @@
 mod circle;
 mod clip;
 mod line;
+mod meet_json;
 mod segment;
 
 pub use circle::{Circle, CircleIntersection};
 pub use clip::Frame;
 pub use line::{Intersection, Line, PARALLEL_TOLERANCE};
+pub use meet_json::{MeetJson, PointJson};
 pub(crate) use segment::{crossing, point_segment_distance, segment_distance, unit};
 
 /// A point of the world (or page) plane.

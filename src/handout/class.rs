@@ -8,6 +8,7 @@
 //! 100 to 1500 rpm in steps of 25. The same seed gives the same engines on
 //! every machine and with every build ([`SplitMix64`]).
 
+use super::command::class_command;
 use super::page::{footer, style, value_cell};
 use super::random::SplitMix64;
 use super::steps::{Row, rows, short, show};
@@ -231,7 +232,7 @@ impl Class {
                     }
                 }
             }
-            (footer(&format!("slider-crank handout --exercise --class {} --seed {}", self.handouts.len(), self.seed)))
+            (footer(&class_command(self.handouts.len(), self.seed)))
         };
         let style = format!(
             "{}\n@page {{ size: {} landscape; }}\nbody {{ max-width: none; }}\ntable.answers-summary {{ font-size: .8em; }}\ntable.answers-summary th {{ text-align: right; }}\n",

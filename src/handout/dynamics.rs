@@ -6,7 +6,7 @@
 
 use super::Dynamics;
 use crate::dynamics::{GasForce, IndicatorDiagram, checked_coefficient, example_indicator};
-use crate::error::{Error, Field, Input, Result, Spelling, finite, positive};
+use crate::error::{Error, Field, Input, Result, Wording, finite, positive};
 use crate::units::Units;
 
 /// The gas force on the piston of a handout's dynamics.
@@ -38,22 +38,17 @@ impl Gas {
     /// The indicator diagram of this gas force in `units` (`None` for a
     /// constant force), refused where its units are not `units`: the
     /// example's are feet and pounds-force, a diagram's those its header
-    /// declares ([`IndicatorDiagram::check_units`]). `spelling` names the
-    /// options in the example's refusal.
-    pub(super) fn diagram(
-        &self,
-        units: &Units,
-        spelling: Spelling,
-    ) -> Result<Option<IndicatorDiagram>> {
+    /// declares ([`IndicatorDiagram::check_units`]).
+    pub(super) fn diagram(&self, units: &Units) -> Result<Option<IndicatorDiagram>> {
         match self {
             Gas::Example => {
-                let own = format!(
-                    "{} with {}, or {}",
-                    spelling.set("indicator", "CSV"),
-                    spelling.set("bore", "D"),
-                    spelling.set("gas-force", "F")
-                );
-                example_indicator(units, &own).map(Some)
+                let own = Wording::default()
+                    .set(Field::Indicator, "CSV")
+                    .then(" with ")
+                    .set(Field::Bore, "D")
+                    .then(", or ")
+                    .set(Field::GasForce, "F");
+                example_indicator(units, own).map(Some)
             }
             Gas::Constant(_) => Ok(None),
             Gas::Indicator { text, bore, source } => {
@@ -66,8 +61,8 @@ impl Gas {
     }
 
     /// The engine's gas force in `units`, as [`Gas::diagram`] refuses.
-    pub(super) fn force(&self, units: &Units, spelling: Spelling) -> Result<GasForce> {
-        Ok(match (self, self.diagram(units, spelling)?) {
+    pub(super) fn force(&self, units: &Units) -> Result<GasForce> {
+        Ok(match (self, self.diagram(units)?) {
             (Gas::Constant(f), _) => GasForce::Constant(*f),
             (_, Some(d)) => GasForce::Indicator(d),
             (_, None) => GasForce::None,
@@ -76,73 +71,80 @@ impl Gas {
 }
 
 /// The dynamics a handout is asked for, each as given (`None`: not
-/// given), filled alike by the command line's flags and the Python
-/// package's keywords and validated once by
-/// [`super::Handout::with_dynamics_asked`].
+/// given), filled alike by the command line and the Python package and
+/// validated once by [`super::Handout::with_dynamics_asked`], whose
+/// refusals name the fields ([`Field::Mass`] …), each front end
+/// spelling them its way.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct DynamicsAsk {
-    /// The reciprocating mass m (`--mass`); without it nothing else is
-    /// taken.
+    /// The reciprocating mass m ([`Field::Mass`]); without it nothing
+    /// else is taken.
     pub mass: Option<f64>,
-    /// The coefficient of fluctuation of speed (`--fluctuation`; 0.02 when
-    /// not given).
+    /// The coefficient of fluctuation of speed ([`Field::Fluctuation`];
+    /// 0.02 when not given).
     pub fluctuation: Option<f64>,
-    /// A constant gas force (`--gas-force`).
+    /// A constant gas force ([`Field::GasForce`]).
     pub gas_force: Option<f64>,
-    /// An indicator diagram (`--indicator`): its CSV text and the file it
-    /// was read from, as the user gave it.
+    /// An indicator diagram ([`Field::Indicator`]): its CSV text and the
+    /// file it was read from, as the user gave it.
     pub indicator: Option<(String, String)>,
-    /// The bore of the diagram's cylinder (`--bore`), in the length unit.
+    /// The bore of the diagram's cylinder ([`Field::Bore`]), in the
+    /// length unit.
     pub bore: Option<f64>,
-    /// How the messages name the options: `--bore` or `bore=`.
-    pub spelling: Spelling,
 }
 
 impl DynamicsAsk {
     /// The dynamics asked for, `None` without a mass; the gas force not
     /// yet checked against the units.
     pub(super) fn dynamics(&self) -> Result<Option<Dynamics>> {
-        let sp = self.spelling;
-        let refuse = |why: String| Err(Error::invalid(Input::Options, why));
+        let refuse = |why: Wording| Err(Error::refused(Input::Options, why));
         let Some(mass) = self.mass else {
             let given = [
-                ("fluctuation", self.fluctuation.is_some()),
-                ("gas-force", self.gas_force.is_some()),
-                ("indicator", self.indicator.is_some()),
-                ("bore", self.bore.is_some()),
+                (Field::Fluctuation, self.fluctuation.is_some()),
+                (Field::GasForce, self.gas_force.is_some()),
+                (Field::Indicator, self.indicator.is_some()),
+                (Field::Bore, self.bore.is_some()),
             ];
             return match given.iter().find(|(_, g)| *g) {
-                Some((name, _)) => refuse(format!(
-                    "{} is for the dynamics, which need the reciprocating mass: give {} with it",
-                    sp.option(name),
-                    sp.set("mass", "M")
-                )),
+                Some((field, _)) => refuse(
+                    Wording::default()
+                        .option(*field)
+                        .then(" is for the dynamics, which need the reciprocating mass: give ")
+                        .set(Field::Mass, "M")
+                        .then(" with it"),
+                ),
                 None => Ok(None),
             };
         };
         let gas = match (self.gas_force, &self.indicator, self.bore) {
             (Some(_), Some(_), _) => {
-                return refuse(format!(
-                    "give the gas force as a constant ({}) or by an indicator diagram ({} and {}), not both",
-                    sp.option("gas-force"),
-                    sp.option("indicator"),
-                    sp.option("bore")
-                ));
+                return refuse(
+                    Wording::from("give the gas force as a constant (")
+                        .option(Field::GasForce)
+                        .then(") or by an indicator diagram (")
+                        .option(Field::Indicator)
+                        .then(" and ")
+                        .option(Field::Bore)
+                        .then("), not both"),
+                );
             }
             (Some(f), None, None) => Gas::Constant(finite(Field::GasForce, f)?),
             (None, Some(_), None) => {
-                return refuse(format!(
-                    "an indicator diagram acts on the cylinder's bore: give {} with {}",
-                    sp.set("bore", "D"),
-                    sp.option("indicator")
-                ));
+                return refuse(
+                    Wording::from("an indicator diagram acts on the cylinder's bore: give ")
+                        .set(Field::Bore, "D")
+                        .then(" with ")
+                        .option(Field::Indicator),
+                );
             }
             (_, None, Some(_)) => {
-                return refuse(format!(
-                    "{} is the bore of the indicator diagram's cylinder: give {} with it",
-                    sp.option("bore"),
-                    sp.set("indicator", "CSV")
-                ));
+                return refuse(
+                    Wording::default()
+                        .option(Field::Bore)
+                        .then(" is the bore of the indicator diagram's cylinder: give ")
+                        .set(Field::Indicator, "CSV")
+                        .then(" with it"),
+                );
             }
             (None, Some((text, source)), Some(bore)) => Gas::Indicator {
                 text: text.clone(),
@@ -158,7 +160,6 @@ impl DynamicsAsk {
                     .unwrap_or(crate::dynamics::DEFAULT_FLUCTUATION),
             )?,
             gas,
-            spelling: sp,
         }))
     }
 }

@@ -3,10 +3,8 @@
 //! key draws the whole construction and gives every answer read off it
 //! beside the exact value.
 
-use super::page::{
-    command, conventions, data_table, dynamics_flags, footer, picture, plain_data, style,
-    values_table,
-};
+use super::command::exercise_command;
+use super::page::{conventions, data_table, footer, picture, plain_data, style, values_table};
 use super::scale::round_scale;
 use super::steps::{Picture, data_sentence, exercise_rows, rows};
 use super::{Handout, figures};
@@ -89,7 +87,7 @@ pub(super) fn sheet(h: &Handout, r: &Reading) -> Result<String> {
                 }
             }
         }
-        (footer(&command(h, &format!("{} --exercise", dynamics_flags(h)))))
+        (footer(&exercise_command(h)))
     };
     Ok(document(
         &format!("{title}: {}", plain_data(h)),
@@ -217,7 +215,7 @@ pub(super) fn key(h: &Handout, r: &Reading) -> Result<String> {
         @for (i, p) in pictures.iter().enumerate() {
             (picture(p, &format!("Figure {}.", i + 1)))
         }
-        (footer(&command(h, &format!("{} --exercise", dynamics_flags(h)))))
+        (footer(&exercise_command(h)))
     };
     Ok(document(
         &format!("{title}: {}", plain_data(h)),

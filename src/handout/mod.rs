@@ -16,7 +16,7 @@
 //! page, nothing fetched from anywhere. Print rules for A4 or Letter
 //! ([`Paper`]) keep each figure and table on one page. Each value is
 //! written with its full precision in a `data-value` attribute beside a
-//! `data-key` that names it as `analyze --json` does
+//! `data-key` that names it as the analysis's JSON does
 //! (`graphical.velocity`, `statics.OM`), so that a program can read the
 //! page.
 //!
@@ -33,6 +33,7 @@
 //! ```
 
 mod class;
+mod command;
 mod dynamics;
 mod exercise;
 mod figures;
@@ -93,15 +94,12 @@ impl Paper {
 }
 
 /// The dynamics a handout works: the reciprocating mass, the coefficient
-/// of fluctuation of speed the flywheel is sized for, the gas force, and
-/// how the user names the options (for the refusals made when the page
-/// is).
+/// of fluctuation of speed the flywheel is sized for and the gas force.
 #[derive(Debug, Clone, PartialEq)]
 struct Dynamics {
     mass: f64,
     fluctuation: f64,
     gas: Gas,
-    spelling: crate::error::Spelling,
 }
 
 /// One engine at one crank angle, to be worked through on a handout or set
@@ -186,11 +184,12 @@ impl Handout {
         })
     }
 
-    /// With the dynamics `ask` gives (the command line's `--mass`,
-    /// `--fluctuation`, `--gas-force`, `--indicator`, `--bore`, or the
-    /// Python package's keywords), validated once here and refused in
-    /// one line that names the options as the user spells them
-    /// ([`DynamicsAsk::spelling`]). Nothing asked: the handout unchanged.
+    /// With the dynamics `ask` gives (the mass, the coefficient of
+    /// fluctuation, the gas force, the indicator diagram and its bore, as
+    /// the command line and the Python package fill it), validated once
+    /// here and refused in one line that names the fields, which each
+    /// front end spells its way ([`crate::Error::spelled`]). Nothing
+    /// asked: the handout unchanged.
     ///
     /// Errors: a gas force, diagram, bore or coefficient without a mass; a
     /// constant gas force with a diagram; a diagram without its bore or a
@@ -202,7 +201,7 @@ impl Handout {
     /// Units changed later are checked again when the page is made.
     pub fn with_dynamics_asked(mut self, ask: &DynamicsAsk) -> Result<Self> {
         if let Some(d) = ask.dynamics()? {
-            d.gas.diagram(&self.units, d.spelling)?;
+            d.gas.diagram(&self.units)?;
             self.dynamics = Some(d);
         }
         Ok(self)
@@ -309,6 +308,7 @@ impl Handout {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::error::Field;
 
     #[test]
     fn paper_names_round_trip() {
@@ -388,27 +388,24 @@ mod tests {
             .unwrap_err();
         assert!(
             e.to_string()
-                .contains("--indicator CSV with --bore D, or --gas-force F"),
+                .contains("`indicator = CSV` with `bore = D`, or `gas_force = F`"),
             "{e}"
         );
-        let python = DynamicsAsk {
-            spelling: crate::error::Spelling::Keyword,
-            ..ask(None, None, None)
+        let Error::Invalid { message, .. } = &e else {
+            panic!("{e:?}")
         };
-        let e = h
-            .clone()
-            .with_dynamics_asked(&python)
-            .unwrap_err()
-            .to_string();
-        assert!(
-            e.contains("indicator=CSV with bore=D, or gas_force=F") && !e.contains("--"),
-            "{e}"
+        assert_eq!(
+            message.fields().collect::<Vec<_>>(),
+            [Field::Indicator, Field::Bore, Field::GasForce]
         );
         let e = h
             .clone()
             .with_dynamics_asked(&ask(None, Some(own), None))
             .unwrap_err();
-        assert!(e.to_string().contains("--bore"), "{e}");
+        assert!(
+            e.to_string().contains("give `bore = D` with `indicator`"),
+            "{e}"
+        );
         let e = h
             .with_dynamics_asked(&ask(Some(1.0), Some(own), Some(1.0)))
             .unwrap_err();

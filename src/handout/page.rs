@@ -2,11 +2,11 @@
 //! steps with their figures and tables, the summary of every value. The
 //! pieces are shared with the exercise sheets and keys.
 
+use super::command::page_command;
 use super::steps::{Picture, Row, Step, Value, data_sentence, short, show};
 use super::{Handout, Paper};
 use crate::figure::RichText;
 use crate::html::{document, rich};
-use crate::number::plain;
 use maud::{Markup, PreEscaped, html};
 
 /// The style of every handout page after the book page's, with the print
@@ -61,9 +61,9 @@ footer .nobreak {{ white-space: nowrap; }}
 }
 
 /// The full-precision text of a number in `data-value`: the shortest that
-/// reads back as the same number (what `analyze --json` writes).
+/// reads back as the same number (what the analysis's JSON writes).
 fn exact_text(x: f64) -> String {
-    format!("{}", x + 0.0)
+    format!("{}", crate::number::unsigned_zero(x))
 }
 
 /// One value cell: the number shown to four figures, the full number in
@@ -119,7 +119,7 @@ pub(super) fn values_table(rows: &[Row], caption: Option<&str>) -> Markup {
 }
 
 /// The engine's data as a table; every number with its `data-key` as in
-/// `analyze --json` (`mechanism.crank`, `angle_deg`, `omega`).
+/// the analysis's JSON (`mechanism.crank`, `angle_deg`, `omega`).
 pub(super) fn data_table(h: &Handout) -> Markup {
     let m = h.mechanism();
     let u = h.units();
@@ -225,63 +225,6 @@ pub(super) fn conventions(h: &Handout) -> Markup {
     }
 }
 
-/// The command that makes this page again.
-pub(super) fn command(h: &Handout, extra: &str) -> String {
-    let m = h.mechanism();
-    let mut c = format!(
-        "slider-crank handout --crank {} --rod {} --offset {} {} --angle {} --unit {} --force-unit {}",
-        plain(m.crank()),
-        plain(m.rod()),
-        plain(m.offset()),
-        speed_flag(h.omega()),
-        plain(h.angle().degrees()),
-        h.units().length().as_str(),
-        h.units().force().as_str()
-    );
-    if let Some(t) = h.torque() {
-        c.push_str(&format!(
-            " --torque {} --friction {}",
-            plain(t),
-            plain(h.friction())
-        ));
-    }
-    c.push_str(&format!(" --paper {}", h.paper().name()));
-    c.push_str(extra);
-    c
-}
-
-/// The flags of the dynamics the handout or exercise works, with its gas
-/// force (none for the example's), or none.
-pub(super) fn dynamics_flags(h: &Handout) -> String {
-    let Some((mass, fluctuation)) = h.dynamics() else {
-        return String::new();
-    };
-    let gas = match h.gas() {
-        Some(super::Gas::Constant(f)) => format!(" --gas-force {}", plain(*f)),
-        Some(super::Gas::Indicator { bore, source, .. }) => {
-            format!(" --indicator {source} --bore {}", plain(*bore))
-        }
-        _ => String::new(),
-    };
-    format!(
-        " --mass {} --fluctuation {}{gas}",
-        plain(mass),
-        plain(fluctuation)
-    )
-}
-
-/// The crank speed as the command line would be given it: `--rpm N` with
-/// the shortest N (at most 12 decimals) that gives this very ω back
-/// (`--rpm 1500`, not the digits of 50π), else `--omega ω`.
-fn speed_flag(omega: f64) -> String {
-    let rpm = omega * 60.0 / std::f64::consts::TAU;
-    (0..=12)
-        .map(|digits| format!("{rpm:.digits$}"))
-        .find(|text| text.parse().map(crate::analytic::kinematics::rpm_to_omega) == Ok(omega))
-        .map(|text| format!("--rpm {}", plain(text.parse().unwrap_or(rpm))))
-        .unwrap_or_else(|| format!("--omega {}", plain(omega)))
-}
-
 /// The page's footer: the program and the command, which a printed line
 /// breaks only between its options (each flag kept with its value).
 pub(super) fn footer(command: &str) -> Markup {
@@ -302,7 +245,7 @@ pub(super) fn footer(command: &str) -> Markup {
 }
 
 /// The parts of a shell command a line may not break inside: its words
-/// (a quoted word with its spaces kept whole), each `--flag` with the
+/// (a quoted word with its spaces kept whole), each option with the
 /// value after it.
 fn unbroken(command: &str) -> Vec<String> {
     let mut words: Vec<String> = Vec::new();
@@ -393,7 +336,7 @@ pub(super) fn handout(h: &Handout, steps: &[Step], all: &[Row]) -> String {
             }
             (values_table(all, None))
         }
-        (footer(&command(h, &dynamics_flags(h))))
+        (footer(&page_command(h)))
     };
     document(
         &format!("{}: {}", title, plain_data(h)),
@@ -442,30 +385,5 @@ mod tests {
             html.contains(r#"<span class="nobreak">--unit mm</span>"#),
             "{html}"
         );
-    }
-
-    /// The ω a speed flag gives.
-    fn given(flag: &str) -> f64 {
-        let (name, value) = flag.split_once(' ').unwrap();
-        let value: f64 = value.parse().unwrap();
-        match name {
-            "--rpm" => crate::analytic::kinematics::rpm_to_omega(value),
-            _ => value,
-        }
-    }
-
-    #[test]
-    fn the_command_gives_the_speed_as_it_was_given() {
-        assert_eq!(
-            speed_flag(crate::analytic::kinematics::rpm_to_omega(1500.0)),
-            "--rpm 1500"
-        );
-        assert_eq!(
-            speed_flag(crate::analytic::kinematics::rpm_to_omega(33.25)),
-            "--rpm 33.25"
-        );
-        for omega in [10.0, 157.07963267948966, 1e-3, 0.1 + 0.2] {
-            assert_eq!(given(&speed_flag(omega)), omega, "{omega}");
-        }
     }
 }

@@ -1,6 +1,6 @@
 //! The random numbers that choose a class's engines: SplitMix64.
 //!
-//! A class made with `--seed S` must be the same class on every machine and
+//! A class made from a seed S must be the same class on every machine and
 //! with every future build of the program, so that a teacher can make the
 //! sheets again from the seed alone. A random-number crate promises no
 //! such thing across its versions (`rand`'s `StdRng` says its stream may

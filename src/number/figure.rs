@@ -133,7 +133,7 @@ pub(crate) fn given(x: f64) -> String {
     if !x.is_finite() || (a != 0.0 && !(1e-4..1e15).contains(&a)) {
         return sig(x);
     }
-    let s = format!("{}", x + 0.0);
+    let s = format!("{}", super::unsigned_zero(x));
     match s.strip_prefix('-') {
         Some(rest) => format!("\u{2212}{rest}"),
         None => s,

@@ -19,4 +19,4 @@ pub(crate) use figure::{given, power_of_ten, short, sig};
 pub(crate) use figure::{SetOn, short_on, sig_on};
 pub use fixed::{angle_cell, fixed, significant};
 pub use grid::{GRID, OnGrid, fmt, fmt_coefficient};
-pub use plain::{MAX_FIXED_WIDTH, plain};
+pub use plain::{MAX_FIXED_WIDTH, plain, unsigned_zero};

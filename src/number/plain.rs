@@ -20,6 +20,13 @@ pub fn plain(x: f64) -> String {
     }
 }
 
+/// `x` with −0.0 as +0.0 (`x + 0.0`), so that no `-0` is written (in
+/// JSON, a page's data, a number in text); every other number, NaN and
+/// the infinities among them, unchanged.
+pub fn unsigned_zero(x: f64) -> f64 {
+    x + 0.0
+}
+
 #[cfg(test)]
 mod plain_tests {
     use super::plain;

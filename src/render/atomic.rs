@@ -1,6 +1,6 @@
 //! Writing a file whole or not at all.
 
-use crate::error::{Error, Input, Result};
+use crate::error::{Error, Field, Input, Result, Wording};
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -89,21 +89,26 @@ pub fn write_protected(meta: &std::fs::Metadata) -> bool {
     meta.permissions().readonly()
 }
 
-/// Refuses a symbolic link at the name of a file derived from `--out`
-/// (an exercise's key, a class's sheets, keys and answers): `--out` is
-/// written through a link as the user named it, but a link planted at a
+/// Refuses a symbolic link at the name of a file derived from the one
+/// written ([`Field::Out`]: an exercise's key, a class's sheets, keys and
+/// answers): that one is written through a link as the user named it,
+/// but a link planted at a
 /// name the user did not give would have its target, anywhere, replaced.
 /// Checked for every file before any is written; the command line's
 /// handout and the Python package's `exercise` call it.
 pub fn no_link_at_derived<P: AsRef<Path>>(files: &[P]) -> Result<()> {
     for path in files.iter().map(AsRef::as_ref) {
         if std::fs::symlink_metadata(path).is_ok_and(|m| m.file_type().is_symlink()) {
-            return Err(Error::invalid(
+            return Err(Error::refused(
                 Input::OutputFile,
-                format!(
-                    "cannot write {}: it is a symbolic link, and a file named after --out is never written through one (remove it or give another --out)",
+                Wording::from(format!(
+                    "cannot write {}: it is a symbolic link, and a file named after ",
                     path.display()
-                ),
+                ))
+                .option(Field::Out)
+                .then(" is never written through one (remove it or give another ")
+                .option(Field::Out)
+                .then(")"),
             ));
         }
     }

@@ -5,7 +5,7 @@
 //! guides are in [`super::ground`]).
 
 use crate::figure::{Hue, Item, PageFromWorld, Part, RichText, Role, Shape, TextSize};
-use crate::geom::{Direction, Frame, Intersection, Point, Vector};
+use crate::geom::{Direction, Frame, Intersection, MeetJson, Point, Vector};
 use serde_json::{Map, Value, json};
 use std::collections::BTreeSet;
 
@@ -490,7 +490,7 @@ impl Canvas {
         }
         self.points.insert(
             name.to_string(),
-            json!({"at_infinity": [round(direction.x), round(direction.y)]}),
+            MeetJson(&Intersection::AtInfinity(direction), round).value(),
         );
         let u = direction.into_inner();
         if !self.edge_arrows {

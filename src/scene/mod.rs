@@ -105,7 +105,8 @@ impl Page {
             });
         }
         // A page too small for the margin names the side given, not the
-        // margin (which a figure sets itself: `--width 60` has no margin).
+        // margin (which a figure sets itself: a width of 60 asked for has no
+        // margin).
         for (name, v) in [(Field::PageWidth, width), (Field::PageHeight, height)] {
             if v - 2.0 * margin < 50.0 {
                 return Err(Error::OutOfRange {

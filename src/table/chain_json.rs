@@ -1,4 +1,4 @@
-//! The chain of Fig. 60 as `analyze --json` writes it (the block in a
+//! The chain of Fig. 60 as the analysis's JSON writes it (the block in a
 //! curved slot, the quadric crank chain, the four inversions) and the
 //! report `check` prints for the slot and the quadric chain: one copy for
 //! the command line and the Python package.
@@ -11,33 +11,26 @@ use crate::chain::{
 };
 use crate::construct::Link;
 use crate::error::Result;
-use crate::geom::{Intersection, Point};
+use crate::geom::{Intersection, MeetJson, Point, PointJson};
 use crate::mechanism::SliderCrank;
 use crate::number::plain;
 use serde_json::{Value, json};
 
-/// Default allowance of `check --slot-radius` and `check --links`: the
+/// Default allowance of the checks of the slot and of the quadric chain: the
 /// largest scaled difference (docs/design.md §6) between the chain's two
 /// formulations.
 pub const CHAIN_TOLERANCE: f64 = 1e-12;
 
-/// +0.0 for −0.0, so that no "-0" is printed.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
+use crate::number::unsigned_zero as num;
 
 fn point_json(p: Point) -> Value {
-    json!([num(p.x), num(p.y)])
+    json!(PointJson(p, num))
 }
 
 /// A point, or `{"at_infinity": [dx, dy]}`, or `{"indeterminate": true}`
-/// where two coincident lines leave it anywhere on a line.
+/// where two coincident lines leave it anywhere on a line ([`MeetJson`]).
 pub fn centre_json(c: &Intersection) -> Value {
-    match c {
-        Intersection::Point(p) => point_json(*p),
-        Intersection::AtInfinity(d) => json!({"at_infinity": [num(d.x), num(d.y)]}),
-        Intersection::Coincident => json!({"indeterminate": true}),
-    }
+    MeetJson(c, num).value()
 }
 
 fn opt(x: Option<f64>) -> Value {
@@ -235,7 +228,7 @@ fn quick_return_json(chain: &InvertedChain, angle: Angle, omega: f64) -> Value {
     })
 }
 
-/// The first line of `check --slot-radius`'s report for the engine `m`
+/// The first line of the slot's check report for the engine `m`
 /// with its block in a slot of radius `rho` as given (the chain keeps the
 /// curvature 1/ρ, which need not give back ρ's last digit).
 pub fn slot_check_title(m: &SliderCrank, rho: f64) -> String {
@@ -248,7 +241,8 @@ pub fn slot_check_title(m: &SliderCrank, rho: f64) -> String {
     )
 }
 
-/// The first line of `check --inversion 2|3`'s report for the engine `m`.
+/// The first line of the report of inversion 2's or 3's check for the
+/// engine `m`.
 pub fn coriolis_check_title(m: &SliderCrank, inversion: u32) -> String {
     format!(
         "check: the polygons with the Coriolis component of inversion {inversion}, r = {}, l = {}, e = {}, against the chain's exact link motion (the driver at 1 rad/s)",
@@ -258,7 +252,7 @@ pub fn coriolis_check_title(m: &SliderCrank, inversion: u32) -> String {
     )
 }
 
-/// The first line of `check --links`'s report.
+/// The first line of the quadric chain's check report.
 pub fn quadric_check_title(q: &QuadricChain) -> String {
     format!(
         "check: quadric chain a = {}, b = {}, c = {}, d = {} ({}), both assembly modes",

@@ -1,4 +1,4 @@
-//! The member `dynamics` of `analyze --json`: the engine's forces and
+//! The member `dynamics` of the analysis's JSON: the engine's forces and
 //! torques at one pose, one copy for the command line and the Python
 //! package.
 
@@ -7,10 +7,7 @@ use crate::dynamics::{Engine, EngineLoads, EnginePose, unbalanced_forces};
 use crate::units::Units;
 use serde_json::{Value, json};
 
-/// +0.0 for −0.0.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
+use crate::number::unsigned_zero as num;
 
 /// The unit of mass the forces imply ([`Units::mass`]: `slug` with the
 /// textbook's units, `kg` with N and m).
@@ -18,8 +15,8 @@ pub fn mass_unit(units: &Units) -> String {
     units.mass()
 }
 
-/// The dynamics of `engine` at `angle` (its pose `at`) as `analyze
-/// --json` writes them: forces along the stroke, the crank effort by
+/// The dynamics of `engine` at `angle` (its pose `at`) as the analysis's
+/// JSON writes them: forces along the stroke, the crank effort by
 /// Ng's OM and exactly, the torque, the unbalanced forces, the rod's
 /// inertia (`null` for a massless rod) and the forces of the whole engine
 /// with it (`whole_engine`).

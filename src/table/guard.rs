@@ -1,13 +1,14 @@
 //! The one bound on the size of a request: the values a table, a sweep of
 //! `analyze` or a check computes (rows × columns), checked before any of
-//! them is computed. The command line's `--max-cells N` and the Python
-//! package's `max_cells=N` are this bound, with the same default and the
-//! same message (each naming the bound as its user spells it).
+//! them is computed. The command line's option and the Python package's
+//! keyword are this bound, with the same default and the same message
+//! (naming the field [`Field::MaxCells`], which each spells its way).
 
-use crate::error::{Error, Input, Result, Spelling};
+use crate::error::{Error, Field, Input, Result, Wording};
 
 /// The default bound: fifty million values, about a gigabyte of text and
-/// a minute of work (a million angles of `analyze --json` are 45 million).
+/// a minute of work (a million angles of the analysis's JSON are 45
+/// million).
 pub const DEFAULT_MAX_CELLS: u64 = 50_000_000;
 
 /// The most values one request may compute: rows × columns of a table,
@@ -15,27 +16,15 @@ pub const DEFAULT_MAX_CELLS: u64 = 50_000_000;
 /// compared for `check`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct MaxCells {
-    /// The most values allowed.
+    /// The most values allowed (0: none, so that any request of a
+    /// value is refused).
     pub limit: u64,
-    /// How the message names the bound.
-    pub spelling: Spelling,
 }
 
 impl MaxCells {
-    /// The bound `limit` given as the command line's `--max-cells`.
-    pub const fn flag(limit: u64) -> Self {
-        MaxCells {
-            limit,
-            spelling: Spelling::Flag,
-        }
-    }
-
-    /// The bound `limit` given as the Python package's `max_cells=`.
-    pub const fn keyword(limit: u64) -> Self {
-        MaxCells {
-            limit,
-            spelling: Spelling::Keyword,
-        }
+    /// The bound `limit`.
+    pub const fn new(limit: u64) -> Self {
+        MaxCells { limit }
     }
 
     /// Checks `rows` × `columns` against the bound; `rows_are` and
@@ -45,7 +34,8 @@ impl MaxCells {
     /// overflows.
     ///
     /// Errors: [`Error::Invalid`] (about the options) naming the product
-    /// and the bound that would allow it.
+    /// and the bound that would allow it, as the field
+    /// [`Field::MaxCells`].
     pub fn check(
         &self,
         command: &str,
@@ -56,13 +46,15 @@ impl MaxCells {
         if cells <= u128::from(self.limit) {
             return Ok(());
         }
-        Err(Error::invalid(
+        Err(Error::refused(
             Input::Options,
-            format!(
-                "{command} asks for {rows_are} × {columns} {columns_are} = {cells} values, more than {}: give {} (or more) to compute them, or fewer angles",
-                self.spelling.set("max-cells", self.limit),
-                self.spelling.set("max-cells", cells),
-            ),
+            Wording::from(format!(
+                "{command} asks for {rows_are} × {columns} {columns_are} = {cells} values, more than "
+            ))
+            .set(Field::MaxCells, self.limit)
+            .then(": give ")
+            .set(Field::MaxCells, cells)
+            .then(" (or more) to compute them, or fewer angles"),
         ))
     }
 
@@ -118,9 +110,9 @@ impl MaxCells {
 }
 
 impl Default for MaxCells {
-    /// [`DEFAULT_MAX_CELLS`] as the command line's flag.
+    /// [`DEFAULT_MAX_CELLS`].
     fn default() -> Self {
-        MaxCells::flag(DEFAULT_MAX_CELLS)
+        MaxCells::new(DEFAULT_MAX_CELLS)
     }
 }
 
@@ -129,27 +121,36 @@ mod tests {
     use super::*;
 
     #[test]
-    fn the_bound_allows_exactly_the_limit_and_names_itself_as_spelled() {
-        let flag = MaxCells::flag(600);
-        assert!(flag.check_angles("table kinematics", 100, 6).is_ok());
-        let e = flag.check_angles("table kinematics", 100, 7).unwrap_err();
+    fn the_bound_allows_exactly_the_limit_and_names_itself_as_a_field() {
+        let bound = MaxCells::new(600);
+        assert!(bound.check_angles("table kinematics", 100, 6).is_ok());
+        let e = bound.check_angles("table kinematics", 100, 7).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "table kinematics asks for 100 angles × 7 columns = 700 values, more than --max-cells 600: give --max-cells 700 (or more) to compute them, or fewer angles"
+            "table kinematics asks for 100 angles × 7 columns = 700 values, more than `max_cells = 600`: give `max_cells = 700` (or more) to compute them, or fewer angles"
         );
-        let e = MaxCells::keyword(DEFAULT_MAX_CELLS)
+        let e = MaxCells::default()
             .check_obliquity(100_000, 10_000, 3)
             .unwrap_err();
+        let Error::Invalid { message, .. } = &e else {
+            panic!("{e:?}")
+        };
         assert_eq!(
-            e.to_string(),
-            "table obliquity asks for 100000 angles × 10000 ratios = 1000000000 rows × 3 columns = 3000000000 values, more than max_cells=50000000: give max_cells=3000000000 (or more) to compute them, or fewer angles"
+            message.fields().collect::<Vec<_>>(),
+            [Field::MaxCells, Field::MaxCells]
+        );
+        assert!(
+            e.to_string().contains(
+                "1000000000 rows × 3 columns = 3000000000 values, more than `max_cells = 50000000`: give `max_cells = 3000000000` (or more)"
+            ),
+            "{e}"
         );
     }
 
     #[test]
     fn each_cylinder_s_torque_counts() {
         // 64 cylinders cost 63 more torques a row than one.
-        let flag = MaxCells::flag(1100);
+        let flag = MaxCells::new(1100);
         assert!(flag.check_cylinders(100, 11, 1).is_ok());
         let e = flag.check_cylinders(100, 11, 64).unwrap_err().to_string();
         assert!(
@@ -169,7 +170,7 @@ mod tests {
             "= {} values",
             u128::from(u64::MAX) * u128::from(u64::MAX)
         )));
-        assert!(MaxCells::flag(0).check_poses(0, 6).is_ok());
-        assert!(MaxCells::flag(0).check_poses(1, 6).is_err());
+        assert!(MaxCells::new(0).check_poses(0, 6).is_ok());
+        assert!(MaxCells::new(0).check_poses(1, 6).is_err());
     }
 }

@@ -17,7 +17,6 @@ use crate::analytic::approx::acceleration_factor;
 use crate::analytic::kinematics::Kinematics;
 use crate::analytic::statics::{Friction, slider_force, with_friction};
 use crate::angle::Angle;
-pub use crate::error::Spelling;
 use crate::error::{Error, Field, Input, Result};
 use crate::mechanism::SliderCrank;
 pub use crate::number::fixed;
@@ -549,7 +548,7 @@ pub enum TableName {
 }
 
 impl TableName {
-    /// Every table, in the order `slider-crank table --help` lists them.
+    /// Every table, in the order the command line's help lists them.
     pub const ALL: [TableName; 5] = [
         TableName::Obliquity,
         TableName::AccelerationFactor,

@@ -1,9 +1,9 @@
-//! A [`Reading`] as the JSON object `analyze --json` prints (schema in
+//! A [`Reading`] as the analysis's JSON object (schema in
 //! `docs/design.md` §4), for the command line and the Python package alike.
 //!
 //! The object is serialised straight from the reading ([`ReadingJson`]),
 //! never built as a tree of `serde_json::Value`s first: a million angles
-//! of `analyze --json` spent most of their time allocating, sorting and
+//! of the analysis's JSON spent most of their time allocating, sorting and
 //! freeing those trees. The keys are written in the order a tree's sorted
 //! maps gave them (byte order), so the text is the one the tree wrote;
 //! `tests/library/reading_json.rs` holds the two to the same bytes.
@@ -14,16 +14,13 @@ use crate::construct::{
     AccelerationPolygon, Bennett, CouplerPoint, Reading, Ritterhaus, Statics, VelocityLine,
     VelocityPolygon,
 };
-use crate::geom::{Intersection, Point};
+use crate::geom::{Intersection, MeetJson, Point};
 use crate::mechanism::SliderCrank;
 use crate::units::Units;
 use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::Value;
 
-/// +0.0 for −0.0, so that no "-0" is written.
-fn num(x: f64) -> f64 {
-    x + 0.0
-}
+use crate::number::unsigned_zero as num;
 
 /// A point `[x, y]`.
 fn pair(x: f64, y: f64) -> [f64; 2] {
@@ -40,24 +37,12 @@ impl Serialize for At {
 }
 
 /// A point `[x, y]`, a point at infinity `{"at_infinity": [dx, dy]}` or
-/// `{"indeterminate": true}`.
+/// `{"indeterminate": true}` ([`MeetJson`]).
 struct Centre(Intersection);
 
 impl Serialize for Centre {
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        match &self.0 {
-            Intersection::Point(p) => At(*p).serialize(s),
-            Intersection::AtInfinity(d) => {
-                let mut m = s.serialize_map(Some(1))?;
-                m.serialize_entry("at_infinity", &pair(d.x, d.y))?;
-                m.end()
-            }
-            Intersection::Coincident => {
-                let mut m = s.serialize_map(Some(1))?;
-                m.serialize_entry("indeterminate", &true)?;
-                m.end()
-            }
-        }
+        MeetJson(&self.0, num).serialize(s)
     }
 }
 
@@ -313,7 +298,7 @@ impl Serialize for Classical<'_> {
     }
 }
 
-/// The object `analyze --json` prints for one reading, serialised
+/// The analysis's JSON object for one reading, serialised
 /// straight to a writer (`serde_json::to_writer_pretty`) from the
 /// reading: made by [`Reading::json`], with the engine's `dynamics`
 /// member added by [`ReadingJson::with_dynamics`]. A value that is not a
@@ -329,7 +314,8 @@ pub struct ReadingJson<'a> {
 
 impl<'a> ReadingJson<'a> {
     /// The same object with the member `dynamics` (the engine's forces,
-    /// as `analyze --mass …` prints them) written in its place.
+    /// as the analysis of an engine with a mass prints them) written in
+    /// its place.
     pub fn with_dynamics(self, dynamics: &'a Value) -> Self {
         Self {
             dynamics: Some(dynamics),
@@ -368,7 +354,7 @@ impl Serialize for ReadingJson<'_> {
 }
 
 impl Reading {
-    /// The object `analyze --json` prints for this reading of `mechanism`
+    /// The analysis's JSON object for this reading of `mechanism`
     /// (the engine it was read on) in `units`: the mechanism, units,
     /// angle and ω, the points C B A D E F G H (D a point at infinity at
     /// θ = 90°, 270° of an in-line engine; H `null` at the very limit of

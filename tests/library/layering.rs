@@ -61,7 +61,7 @@ fn root_names() -> BTreeMap<String, String> {
 }
 
 /// The source files of `dir`, recursively.
-fn files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
+pub(super) fn files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
     for entry in std::fs::read_dir(dir).unwrap() {
         let path = entry.unwrap().path();
         if path.is_dir() {
@@ -77,7 +77,7 @@ fn files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
 /// result is the same line of the file): what is left is code. Handles
 /// nested block comments, raw strings (`r#"…"#`), escapes, and tells a
 /// character literal (`'{'`, `'\''`) from a lifetime or label (`'a`).
-fn blank_comments_and_literals(text: &str) -> String {
+pub(super) fn blank_comments_and_literals(text: &str) -> String {
     let chars: Vec<char> = text.chars().collect();
     let mut out = String::with_capacity(text.len());
     let blank = |out: &mut String, c: char| out.push(if c == '\n' { '\n' } else { ' ' });
@@ -185,14 +185,30 @@ fn blank_comments_and_literals(text: &str) -> String {
 /// name { … }` blanked whole, newlines kept; other attributes may stand
 /// between the two. Any other `#[cfg(test)]` item is kept and read.
 fn without_test_modules(code: &str) -> String {
-    const MARK: &str = "#[cfg(test)]";
     let mut out = String::with_capacity(code.len());
-    let mut rest = code;
-    while let Some(at) = rest.find(MARK) {
-        let after = &rest[at + MARK.len()..];
+    let mut kept = 0;
+    for span in test_module_spans(code) {
+        out.push_str(&code[kept..span.start]);
+        let skipped = &code[span.clone()];
+        out.extend(skipped.chars().map(|c| if c == '\n' { '\n' } else { ' ' }));
+        kept = span.end;
+    }
+    out.push_str(&code[kept..]);
+    out
+}
+
+/// Where each `#[cfg(test)] mod name { … }` of `code` (comments and
+/// literals blanked) stands, from its attribute to its closing brace, as
+/// byte ranges in order.
+pub(super) fn test_module_spans(code: &str) -> Vec<std::ops::Range<usize>> {
+    const MARK: &str = "#[cfg(test)]";
+    let mut spans = Vec::new();
+    let mut from = 0;
+    while let Some(found) = code[from..].find(MARK) {
+        let at = from + found;
+        let after = &code[at + MARK.len()..];
         let Some(open) = test_module_body(after) else {
-            out.push_str(&rest[..at + MARK.len()]);
-            rest = after;
+            from = at + MARK.len();
             continue;
         };
         // The matching brace: literals and comments are blanked already.
@@ -211,13 +227,10 @@ fn without_test_modules(code: &str) -> String {
                 _ => {}
             }
         }
-        out.push_str(&rest[..at]);
-        let skipped = &rest[at..at + MARK.len() + close];
-        out.extend(skipped.chars().map(|c| if c == '\n' { '\n' } else { ' ' }));
-        rest = &after[close..];
+        spans.push(at..at + MARK.len() + close);
+        from = at + MARK.len() + close;
     }
-    out.push_str(rest);
-    out
+    spans
 }
 
 /// Where the body (`{`) of the module opens in `after`, the text after a

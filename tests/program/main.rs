@@ -24,6 +24,7 @@ mod worked_engine;
 
 mod handout;
 mod handout_dynamics;
+mod options_table;
 
 // PNG output (`--out x.png`, the gallery's PNGs) or resvg in the test
 #[cfg(feature = "png")]

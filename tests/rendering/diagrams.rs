@@ -1122,13 +1122,25 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
 fn options_a_diagram_does_not_use_are_refused() {
     let mut data = FigureOptions::default();
     data.data = Some("angle,force\n40,9\n".into());
-    let e = FigureName::RodMotion.figure(&data).unwrap_err().to_string();
-    assert!(e.contains("rod-motion does not use --data"), "{e}");
+    // The library names the field; each front end spells it (`--data`,
+    // `data=`), the library's own words in backquotes.
+    let e = FigureName::RodMotion.figure(&data).unwrap_err();
+    let slider_crank::Error::Invalid { message, .. } = &e else {
+        panic!("{e:?}")
+    };
+    assert_eq!(
+        message.fields().collect::<Vec<_>>(),
+        [slider_crank::Field::Data]
+    );
+    assert!(
+        e.to_string().contains("rod-motion does not use `data`"),
+        "{e}"
+    );
     let e = FigureName::Fig67Example
         .figure(&data)
         .unwrap_err()
         .to_string();
-    assert!(e.contains("--data"), "{e}");
+    assert!(e.contains("`data`"), "{e}");
     let mut backwards = FigureOptions::default();
     backwards.omega = Some(-1.0);
     assert!(

@@ -10,7 +10,7 @@
 //!
 //! The engine is the textbooks' three cylinders with cranks at 120°, a
 //! pitch of 1 and the reference plane through the middle cylinder
-//! (`table balance --cranks 0,120,240`): the forces balance, the couples
+//! (the balance table of cranks 0°, 120°, 240°): the forces balance, the couples
 //! do not. Its ratio n is the figure's mechanism's.
 
 use super::cranks::{arrow, line};

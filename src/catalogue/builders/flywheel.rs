@@ -6,7 +6,7 @@
 //! so that the speed runs between ω_min and ω_max = ω (1 + C_s/2).
 //!
 //! The engine is the turning-moment figure's (its indicator diagram,
-//! `--data`, and `--mass`); the crank speed is taken as constant in T, as
+//! the data, and the mass); the crank speed is taken as constant in T, as
 //! there, which is the flywheel's usual approximation.
 
 use super::turning::{engine, stored};

@@ -18,7 +18,7 @@ use super::{Ctx, Sheet, short, sig};
 use crate::angle::Angle;
 use crate::diagram::{Curve, Plot};
 use crate::dynamics::{EXAMPLE_MASS, Engine, RodMass, TurningMoment};
-use crate::error::{Error, Input, Result};
+use crate::error::{Error, Field, Input, Result, Wording};
 use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Frame, Point, Vector};
 
@@ -163,10 +163,10 @@ fn drawable(ctx: &Ctx, samples: &[Vec<[Vector; 2]>; 2]) -> Result<()> {
         return Ok(());
     }
     let f = ctx.units.force();
-    Err(Error::invalid(
+    Err(Error::refused(
         Input::Options,
-        format!(
-            "{} draws the crank pin's load, {} over the cycle here, which must lie between {} and {} {f} to be drawn: give the mass (--mass), the gas force (--gas-force, --data, --bore), the lengths or the speed in other units",
+        Wording::from(format!(
+            "{} draws the crank pin's load, {} over the cycle here, which must lie between {} and {} {f} to be drawn: give the mass (",
             ctx.name.name(),
             if largest.is_finite() {
                 format!("at most {} {f}", crate::number::plain(largest))
@@ -175,7 +175,15 @@ fn drawable(ctx: &Ctx, samples: &[Vec<[Vector; 2]>; 2]) -> Result<()> {
             },
             crate::number::plain(super::MIN_DRAWN_FORCE),
             crate::number::plain(super::MAX_DRAWN_FORCE),
-        ),
+        ))
+        .option(Field::Mass)
+        .then("), the gas force (")
+        .option(Field::GasForce)
+        .then(", ")
+        .option(Field::Data)
+        .then(", ")
+        .option(Field::Bore)
+        .then("), the lengths or the speed in other units"),
     ))
 }
 

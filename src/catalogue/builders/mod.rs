@@ -124,7 +124,7 @@ impl Ctx<'_> {
 }
 
 /// The reciprocating mass of a figure that draws the inertia force of
-/// the reciprocating parts: the one asked for (`--mass`), else the
+/// the reciprocating parts: the one asked for ([`FigureOptions::mass`]), else the
 /// example engine's ([`crate::dynamics::EXAMPLE_MASS`]). Errors for a
 /// mass that is not positive and finite: with none there is no force to
 /// draw, and its scale m ω² would be zero; and for one whose force scale
@@ -138,7 +138,7 @@ pub(crate) fn positive_mass(ctx: &Ctx) -> Result<f64> {
     };
     if !(m > 0.0 && m.is_finite()) {
         return Err(refuse(format!(
-            "{} draws the inertia force of the reciprocating parts: give a positive, finite --mass",
+            "{} draws the inertia force of the reciprocating parts: give a positive, finite mass",
             ctx.name.name()
         )));
     }

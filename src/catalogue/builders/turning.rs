@@ -3,10 +3,10 @@
 //! flywheel, E(θ) = ∫ (T − T_mean) dθ, with its fluctuation ΔE.
 //!
 //! The engine is the catalogue's (§35's by default) with the example
-//! reciprocating mass unless `--mass` gives another, its gas force a
-//! constant (`--gas-force`) or from an indicator diagram: the example's
+//! reciprocating mass unless the mass is given, its gas force a constant
+//! (the gas force given) or from an indicator diagram: the example's
 //! (examples/indicator.csv, lbf/ft² on a 10 in bore, in feet and
-//! pounds-force only) unless `--data` and `--bore` give the engine's own.
+//! pounds-force only) unless the data and the bore give the engine's own.
 //! Tangents are central differences within each smooth piece (T has kinks
 //! at the dead centres and the diagram's rows); the values are exact.
 
@@ -18,7 +18,7 @@ use crate::dynamics::{
     EXAMPLE_BORE, EXAMPLE_INDICATOR, EXAMPLE_MASS, Engine, GasForce, IndicatorDiagram,
     TurningMoment, example_indicator,
 };
-use crate::error::{Error, Input, Result};
+use crate::error::{Error, Field, Input, Result, Wording};
 use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Point, Vector};
 use crate::units::Units;
@@ -27,34 +27,50 @@ use crate::units::Units;
 const STEP: f64 = 1e-6;
 
 /// The figure's engine: the mechanism with the reciprocating mass
-/// (`--mass`, the example's by default) and the gas force [`gas`] gives.
+/// (the one asked for, the example's by default) and the gas force
+/// [`gas`] gives.
 pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
     let mass = ctx.options.mass.unwrap_or(EXAMPLE_MASS);
     Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(gas(ctx)?)
 }
 
-/// The gas force on the piston: `--gas-force`, else the indicator diagram
-/// of `--data` on the bore `--bore`, else the example's
+/// The gas force on the piston: the constant asked for, else the
+/// indicator diagram of the data on the bore asked for, else the example's
 /// ([`example_indicator`]). The example's diagram and bore are in feet
 /// and pounds-force: in other units the figure is given the engine's own
 /// diagram and bore (a diagram's declared unit checked against the
 /// figure's, [`IndicatorDiagram::check_units`]), or a constant force.
 fn gas(ctx: &Ctx) -> Result<GasForce> {
     let o = ctx.options;
-    let refuse = |why: String| {
-        Err(Error::invalid(
+    let refuse = |why: Wording| {
+        Err(Error::refused(
             Input::Options,
-            format!("{}: {why}", ctx.name.name()),
+            Wording::from(format!("{}: ", ctx.name.name())).and(why),
         ))
     };
     if let Some(f) = o.gas_force {
         if o.data.is_some() || o.bore.is_some() {
-            return refuse("give the gas force as a constant (--gas-force) or by an indicator diagram (--data, --bore), not both".into());
+            return refuse(
+                Wording::from("give the gas force as a constant (")
+                    .option(Field::GasForce)
+                    .then(") or by an indicator diagram (")
+                    .option(Field::Data)
+                    .then(", ")
+                    .option(Field::Bore)
+                    .then("), not both"),
+            );
         }
         return Ok(GasForce::Constant(f));
     }
-    let own = "--data CSV with --bore D, or --gas-force F";
-    let example = || example_indicator(&ctx.units, own);
+    let own = || {
+        Wording::default()
+            .set(Field::Data, "CSV")
+            .then(" with ")
+            .set(Field::Bore, "D")
+            .then(", or ")
+            .set(Field::GasForce, "F")
+    };
+    let example = || example_indicator(&ctx.units, own());
     let diagram = match (o.data.as_deref(), o.bore) {
         (None, None) => example()?,
         (Some(text), bore) => {
@@ -62,10 +78,11 @@ fn gas(ctx: &Ctx) -> Result<GasForce> {
                 Some(b) => b,
                 None if ctx.units == Units::FOOT_POUND => EXAMPLE_BORE,
                 None => {
-                    return refuse(format!(
-                        "give the bore of the indicator diagram's cylinder with --bore D, in {}",
-                        ctx.units.length()
-                    ));
+                    return refuse(
+                        Wording::from("give the bore of the indicator diagram's cylinder with ")
+                            .set(Field::Bore, "D")
+                            .then(format!(", in {}", ctx.units.length())),
+                    );
                 }
             };
             // The diagram is the figure's data file.

@@ -34,7 +34,7 @@ impl Worked {
             return Ok(None);
         };
         let units = w.h.units();
-        let force = d.gas.force(units, d.spelling)?;
+        let force = d.gas.force(units)?;
         let diagram = match &force {
             GasForce::Indicator(diagram) => Some(diagram.clone()),
             _ => None,

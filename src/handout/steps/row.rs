@@ -1,6 +1,6 @@
 //! The rows of a step's table and the values in them.
 
-/// A value shown on a page: its name as `analyze --json` gives it
+/// A value shown on a page: its name as the analysis's JSON gives it
 /// (`graphical.velocity`; `construction.CE` for the lengths of the
 /// constructions) and the number, `None` where there is none (D at
 /// infinity, a dead centre's force).

@@ -1,0 +1,66 @@
+"""The options of ``figure``, one table for every front end
+(``tests/options/figure.csv``, which the command line's tests read too):
+each keyword of :func:`slider_crank.figure` does what the flag of its
+name does with the same value: the figure's own bytes at its default, the
+command line's figure, or the command line's refusal in the package's
+words (its flags spelt as keywords)."""
+
+from __future__ import annotations
+
+import csv
+import inspect
+from typing import Any, Dict, List
+
+import pytest
+
+import slider_crank as sc
+from conftest import REPO, Cli, keywords
+
+with open(REPO / "tests/options/figure.csv", newline="", encoding="utf-8") as _f:
+    CASES: List[Dict[str, str]] = list(csv.DictReader(_f))
+
+#: The keywords whose values are numbers.
+NUMBERS = {"crank", "rod", "offset", "angle", "rpm", "omega", "mass", "fluctuation", "bore",
+           "gas_force"}
+
+
+def value(case: Dict[str, str]) -> Any:
+    """The case's value as the keyword takes it."""
+    keyword, text = case["keyword"], case["value"]
+    if keyword in NUMBERS:
+        return float(text)
+    if keyword == "mirror":
+        return text == "true"
+    if keyword == "data":
+        return REPO / text
+    return text
+
+
+def flag(case: Dict[str, str]) -> str:
+    """The case's value as the command line takes it."""
+    if case["flag"] == "--mirror":
+        return "--mirror" if case["value"] == "true" else "--no-mirror"
+    return f"{case['flag']}={case['value']}"
+
+
+def test_every_keyword_of_figure_is_in_the_table() -> None:
+    named = set(inspect.signature(sc.figure).parameters) - {"name"}
+    assert named == {c["keyword"] for c in CASES}
+    for case in CASES:
+        assert case["keyword"] == case["flag"][2:].replace("-", "_"), case
+
+
+@pytest.mark.parametrize("case", CASES, ids=lambda c: f"{c['figure']} {flag(c)}")
+def test_a_keyword_does_as_its_flag(cli: Cli, case: Dict[str, str]) -> None:
+    name = case["figure"]
+    args = ["figure", name, flag(case)]
+    if case["outcome"] == "refused":
+        message = keywords(cli.error(args))
+        with pytest.raises(ValueError) as caught:
+            sc.figure(name, **{case["keyword"]: value(case)})
+        assert str(caught.value) in message, (str(caught.value), message)
+        return
+    svg = sc.figure(name, **{case["keyword"]: value(case)}).svg
+    assert svg == cli.stdout(args)
+    if case["outcome"] == "default":
+        assert svg == sc.figure(name).svg

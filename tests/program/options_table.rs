@@ -1,0 +1,153 @@
+//! The options of `figure`, one table for every front end
+//! (`tests/options/figure.csv`, which the Python package's tests read
+//! too): each case is a figure, an option (its flag, its Python keyword,
+//! its scene-file key where a scene file has one) and a value, and what
+//! becomes of it: drawn as the figure's own (`default`: the same bytes as
+//! the figure without the option), drawn (`ok`) or refused. Here the
+//! command line and the scene file are held to it; the table holds every
+//! option `figure --help` lists.
+
+use crate::command::run;
+use std::collections::BTreeSet;
+
+/// One case of the table.
+struct Case {
+    figure: String,
+    flag: String,
+    scene: String,
+    value: String,
+    outcome: String,
+}
+
+/// The fields of a CSV line: commas split them, a field in double quotes
+/// may hold commas and `""` for a quote.
+fn fields(line: &str) -> Vec<String> {
+    let (mut out, mut field, mut quoted) = (Vec::new(), String::new(), false);
+    let mut chars = line.chars().peekable();
+    while let Some(c) = chars.next() {
+        match (c, quoted) {
+            ('"', true) if chars.peek() == Some(&'"') => {
+                field.push('"');
+                chars.next();
+            }
+            ('"', _) => quoted = !quoted,
+            (',', false) => out.push(std::mem::take(&mut field)),
+            _ => field.push(c),
+        }
+    }
+    out.push(field);
+    out
+}
+
+/// The table's cases.
+fn cases() -> Vec<Case> {
+    let text = std::fs::read_to_string("tests/options/figure.csv").unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("figure,flag,keyword,scene,value,outcome")
+    );
+    lines
+        .map(|line| {
+            let f = fields(line);
+            assert_eq!(f.len(), 6, "{line}");
+            Case {
+                figure: f[0].clone(),
+                flag: f[1].clone(),
+                scene: f[3].clone(),
+                value: f[4].clone(),
+                outcome: f[5].clone(),
+            }
+        })
+        .collect()
+}
+
+/// The command-line argument of a case: `--flag=value`, a switch as
+/// itself (`--mirror`, or `--no-mirror` for false).
+fn argument(case: &Case) -> String {
+    match (case.flag.as_str(), case.value.as_str()) {
+        ("--mirror", "true") => "--mirror".into(),
+        ("--mirror", _) => "--no-mirror".into(),
+        (flag, value) => format!("{flag}={value}"),
+    }
+}
+
+/// Asserts that `out` is what `case` says: the figure's own bytes
+/// (`own`), a figure, or a refusal (exit 2, one line).
+fn holds(case: &Case, out: &std::process::Output, own: &[u8], how: &str) {
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    match case.outcome.as_str() {
+        "refused" => {
+            assert_eq!(out.status.code(), Some(2), "{how}: not refused");
+            assert_eq!(stderr.lines().count(), 1, "{how}: {stderr}");
+            assert!(out.stdout.is_empty(), "{how}");
+        }
+        outcome => {
+            assert!(out.status.success(), "{how}: {stderr}");
+            if outcome == "default" {
+                assert!(out.stdout == own, "{how}: not the figure's own");
+            }
+        }
+    }
+}
+
+#[test]
+fn every_option_of_figure_is_in_the_table() {
+    let help = String::from_utf8(run(&["figure", "--help"]).stdout).unwrap();
+    let listed: BTreeSet<String> = help
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+        .filter(|w| w.starts_with("--") && w.len() > 2)
+        .map(String::from)
+        .collect();
+    // What writes the figure, not what it draws; `--no-mirror` is
+    // `--mirror`'s false.
+    let output = [
+        "--out",
+        "--embed-fonts",
+        "--tikz-standalone",
+        "--help",
+        "--no-mirror",
+    ];
+    let cases = cases();
+    for flag in listed.iter().filter(|f| !output.contains(&f.as_str())) {
+        for outcome in [["default", "ok"].as_slice(), &["refused"]] {
+            assert!(
+                cases
+                    .iter()
+                    .any(|c| &c.flag == flag && outcome.contains(&c.outcome.as_str())),
+                "{flag} has no case {outcome:?} in tests/options/figure.csv"
+            );
+        }
+    }
+    assert!(
+        listed.contains("--gas-force") && listed.len() > 20,
+        "{listed:?}"
+    );
+}
+
+#[test]
+fn the_command_line_and_scene_files_do_as_the_table_says() {
+    let dir = std::env::temp_dir().join(format!("sc-options-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for (i, case) in cases().iter().enumerate() {
+        let own = run(&["figure", &case.figure]).stdout;
+        let arg = argument(case);
+        let out = run(&["figure", &case.figure, &arg]);
+        holds(case, &out, &own, &format!("figure {} {arg}", case.figure));
+        if case.scene.is_empty() {
+            continue;
+        }
+        let head = format!("figure = \"{}\"\n", case.figure);
+        let key = case.scene.replace('|', "\n").replace("{}", &case.value);
+        let (file, plain) = (
+            dir.join(format!("{i}.toml")),
+            dir.join(format!("{i}-own.toml")),
+        );
+        std::fs::write(&file, format!("{head}{key}\n")).unwrap();
+        std::fs::write(&plain, &head).unwrap();
+        let own = run(&["scene", plain.to_str().unwrap()]).stdout;
+        let out = run(&["scene", file.to_str().unwrap()]);
+        holds(case, &out, &own, &format!("scene file {key:?}"));
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
