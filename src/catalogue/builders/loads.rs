@@ -275,9 +275,9 @@ fn polar_plot(
             .iter()
             .map(|(c, r)| (c as &dyn Curve, r.clone()))
             .collect();
-        // Named load-*, not curve-*: no exact reference of its own is
-        // measured against it yet (the loads are tested at the marks).
-        plot.curve(&format!("load-{name}-{id}"), &traced, dash, Some(legend))?;
+        // Measured against a Newton–Euler model of its own in the
+        // curve-tolerance test, as every curve-* is.
+        plot.curve(&format!("curve-{name}-{id}"), &traced, dash, Some(legend))?;
     }
     let apart = APART / plot.map().scale();
     for item in marks(engines, cycle, relative, name, apart) {
