@@ -308,9 +308,9 @@ fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f
         .collect();
     let quarter = |d: f64| d.rem_euclid(90.0) == 0.0;
     // Each mark: its curve, its angle, its point and the angles it letters.
-    let mut taken: Vec<(usize, f64, Point, Vec<f64>)> = Vec::new();
+    let mut taken: Vec<(&str, f64, Point, Vec<f64>)> = Vec::new();
     for lettered in [true, false] {
-        for (c, engine) in engines.iter().enumerate() {
+        for (c, engine) in CURVES.into_iter().zip(engines) {
             for &d in every.iter().filter(|d| quarter(**d) == lettered) {
                 let Some(v) = load(engine, d, relative) else {
                     continue;
@@ -318,7 +318,7 @@ fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f
                 let p = Point::origin() + v;
                 // An unlettered dot keeps twice as far from a
                 // lettered one, whose letter stands beside it.
-                let room = |t: &(usize, f64, Point, Vec<f64>)| {
+                let room = |t: &(&str, f64, Point, Vec<f64>)| {
                     if lettered || t.3.is_empty() {
                         apart
                     } else {
@@ -330,11 +330,7 @@ fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f
                     .min_by(|a, b| (p - a.2).norm().total_cmp(&(p - b.2).norm()));
                 match near {
                     // A quarter on a lettered mark: that mark letters it too.
-                    Some(t) if lettered => {
-                        if !t.3.contains(&d) {
-                            t.3.push(d);
-                        }
-                    }
+                    Some(t) if lettered && !t.3.contains(&d) => t.3.push(d),
                     Some(_) => {}
                     None if lettered || (p - Point::origin()).norm() >= apart => {
                         let letters = if lettered { vec![d] } else { Vec::new() };
@@ -349,7 +345,7 @@ fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f
         .iter()
         .map(|(c, d, p, _)| {
             Item::new(
-                format!("point-{name}-{}-{d}", CURVES[*c]),
+                format!("point-{name}-{c}-{d}"),
                 Role::Curve,
                 // A point of the curve, which letters keep clear of and
                 // are placed nearer to than to any other.
@@ -369,7 +365,7 @@ fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f
             .collect::<Vec<_>>()
             .join(", ");
         items.push(Item::new(
-            format!("label-{name}-{}-{d}", CURVES[*c]),
+            format!("label-{name}-{c}-{d}"),
             Role::Label,
             Shape::Label {
                 anchor: *p,
