@@ -55,7 +55,7 @@ pub use gas::{
 };
 pub use inline::{
     BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Polygon, Resultant,
-    default_planes,
+    default_planes, offset_harmonic,
 };
 pub use loads::EngineLoads;
 pub use partial::{DEFAULT_FRACTIONS, HammerBlow, PartialBalance, Unbalanced};

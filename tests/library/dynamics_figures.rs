@@ -468,8 +468,8 @@ fn the_crank_pin_load_of_a_massless_rod_at_90_degrees_is_the_force_along_the_rod
             .as_f64()
             .unwrap();
         for (panel, want) in [("fixed", (-f, f * r / w)), ("relative", (f * r / w, f))] {
-            // The marks are every 30° from 0°: 90° is the fourth.
-            let id = format!("point-{panel}-without-rod-4");
+            // The marks are named by their angle.
+            let id = format!("point-{panel}-without-rod-90");
             let map = panel_map(&svg, &format!("panel-{panel}"));
             let got = to_world(&map, (num(&svg, &id, "cx"), num(&svg, &id, "cy")));
             assert!(
@@ -637,6 +637,214 @@ fn past_a_half_turn_each_crank_keeps_its_name_and_its_angle_runs_the_way_it_turn
                     "{name} {id} at {deg}°: letter {off:.0}° off"
                 );
             }
+        }
+    }
+}
+
+/// The page centres of the marks of `panel` ("fixed", "relative") of the
+/// crank-pin-load figure, by id.
+fn load_marks(svg: &str, panel: &str) -> Vec<(String, (f64, f64))> {
+    let key = format!("id=\"point-{panel}-with");
+    svg.match_indices(&key)
+        .map(|(i, _)| {
+            let s = &svg[i + 4..];
+            let id = s[..s.find('"').unwrap()].to_string();
+            let at = (num(svg, &id, "cx"), num(svg, &id, "cy"));
+            (id, at)
+        })
+        .collect()
+}
+
+/// The engines the fourth review drew the crank-pin loads at, with the
+/// page widths it found them worst on, and the default.
+fn reviewed_load_figures() -> Vec<String> {
+    let mut out = Vec::new();
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 1.06, 0.0),
+        (1.0, 51.8, 0.0),
+        (1.0, 1.36, -0.313),
+        (1.0, 1.08, 0.0),
+    ] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+            out.push(to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap()));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
+    // Two and a half dots' diameters between centres, less the 0.01 px
+    // grid.
+    let apart = 18.0 - 0.02;
+    for svg in reviewed_load_figures() {
+        let text = read_text(&svg)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        for panel in ["fixed", "relative"] {
+            let marks = load_marks(&svg, panel);
+            assert!(marks.len() >= 2, "{panel}: {marks:?}");
+            let map = panel_map(&svg, &format!("panel-{panel}"));
+            let pole = (map[4], map[5]);
+            for (k, (a, p)) in marks.iter().enumerate() {
+                for (b, q) in &marks[k + 1..] {
+                    let d = (p.0 - q.0).hypot(p.1 - q.1);
+                    assert!(d >= apart, "{a} and {b} {d:.1} px apart");
+                }
+                let lettered = svg.contains(&format!("id=\"{}\"", a.replace("point-", "label-")));
+                let d = (p.0 - pole.0).hypot(p.1 - pole.1);
+                assert!(lettered || d >= apart, "{a} {d:.1} px from the pole");
+            }
+            // Each curve's quarters lettered (one letter naming the
+            // quarters whose marks meet), each letter nearer its own dot
+            // than any other.
+            for curve in ["with-rod", "without-rod"] {
+                for deg in [0, 90, 180, 270] {
+                    let id = format!("label-{panel}-{curve}-{deg}");
+                    if !svg.contains(&format!("id=\"{id}\"")) {
+                        assert!(
+                            !svg.contains(&format!("id=\"point-{panel}-{curve}-{deg}\"")),
+                            "{id}: a quarter's dot without its letter"
+                        );
+                        continue;
+                    }
+                    // The letter's box, its width taken as half an em a
+                    // character (about the serif digits'), middle-anchored.
+                    let (x, y) = (num(&svg, &id, "x"), num(&svg, &id, "y"));
+                    let em = num(&svg, &id, "font-size");
+                    let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+                    let start = at + svg[at..].find('>').unwrap() + 1;
+                    let said =
+                        read_text(&svg[start..start + svg[start..].find("</text>").unwrap()]);
+                    let half = 0.25 * em * said.chars().count() as f64;
+                    let to_box = |p: (f64, f64)| {
+                        let dx = (x - half - p.0).max(p.0 - x - half).max(0.0);
+                        let dy = (y - 0.75 * em - p.1).max(p.1 - y - 1.0).max(0.0);
+                        dx.hypot(dy)
+                    };
+                    let own_id = id.replace("label-", "point-");
+                    let own = marks.iter().find(|m| m.0 == own_id).unwrap().1;
+                    let angles: Vec<String> = said
+                        .split(", ")
+                        .map(|a| a.trim_end_matches('°').to_string())
+                        .collect();
+                    assert!(angles.contains(&deg.to_string()), "{id}: {said}");
+                    if angles.len() > 1 {
+                        // A letter naming several quarters at one place.
+                        assert!(to_box(own) < 1.5 * em + 8.0, "{id} far from its dot");
+                        continue;
+                    }
+                    // Another angle's dot, farther than an em from this
+                    // one (nearer, the two are one place), stands no
+                    // nearer the letter than its own by more than 5 (the
+                    // layout's 2, and the width taken here for the glyphs'
+                    // own; at r = 1, l = 51.8 on 4.5 in a letter that finds
+                    // no place clear stands 4.8 nearer another).
+                    for (other, q) in &marks {
+                        let far = (q.0 - own.0).hypot(q.1 - own.1) > em;
+                        let angle = other.rsplit('-').next().unwrap().to_string();
+                        if far && !angles.contains(&angle) {
+                            assert!(
+                                to_box(*q) + 5.0 >= to_box(own),
+                                "{id} stands by {other}: {} vs {}",
+                                to_box(*q),
+                                to_box(own)
+                            );
+                        }
+                    }
+                }
+            }
+            // Every quarter of the dashed curve is lettered, by its own
+            // mark or by one its point meets.
+            for deg in [0, 90, 180, 270] {
+                let own = format!("id=\"label-{panel}-without-rod-{deg}\"");
+                let named = svg
+                    .match_indices(&format!("id=\"label-{panel}-"))
+                    .any(|(i, _)| {
+                        let start = i + svg[i..].find('>').unwrap() + 1;
+                        let end = start + svg[start..].find("</text>").unwrap();
+                        read_text(&svg[start..end])
+                            .split(", ")
+                            .any(|a| a == format!("{deg}°"))
+                            && svg[i..].starts_with(&format!("id=\"label-{panel}-with"))
+                    });
+                assert!(
+                    svg.contains(&own) || named,
+                    "{panel}: the dashed curve's {deg}°"
+                );
+            }
+        }
+        // The scale bar below every dot, and long enough for its text.
+        let (a, b) = dimension_ends(&svg, "panel-fixed", "fixed-bar");
+        let map = panel_map(&svg, "panel-fixed");
+        let bar_y = map[1] * a.0 + map[3] * a.1 + map[5];
+        for (id, p) in load_marks(&svg, "fixed") {
+            assert!(p.1 + 3.6 < bar_y - 13.0, "{id} on the scale bar");
+        }
+        assert!(
+            (b.0 - a.0).abs() * map[0].hypot(map[1]) >= 80.0,
+            "a bar shorter than its text"
+        );
+        // The rod's mass is said as a share of the reciprocating mass,
+        // not "0.6 m", which reads as metres.
+        assert!(!text.contains("0.6 m,"), "{text}");
+        assert!(text.contains("0.6 times the reciprocating mass"), "{text}");
+    }
+}
+
+#[test]
+fn the_balance_polygons_say_that_an_offset_is_left_out_and_by_how_much() {
+    for (r, l, e) in [(1.0, 2.59, 1.29), (1.0, 2.16, 0.608), (1.0, 38.9, 0.0)] {
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+        let text = read_text(&to_svg(&FigureName::InlineBalance.figure(&o).unwrap()));
+        // The notes' lines joined.
+        let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+        let said = text.find("is not in the polygons");
+        if e == 0.0 {
+            assert!(said.is_none(), "{text}");
+            continue;
+        }
+        said.expect("the offset left out, said");
+        let note = &text[text.find("The offset").unwrap()..];
+        // The first and second harmonics of −x_A″/r by a sum of 2000
+        // samples of a turn, against the notes' factors (four figures):
+        // the primary's |c₁|, the secondary's n |c₂| (its sides are 1/n).
+        let harmonic = |k: f64| {
+            let (mut re, mut im) = (0.0, 0.0);
+            for j in 0..2000 {
+                let t = std::f64::consts::TAU * j as f64 / 2000.0;
+                let f = -x2(r, l, e, t) / r / 1000.0;
+                re += f * (k * t).cos();
+                im -= f * (k * t).sin();
+            }
+            (re.hypot(im), im.atan2(re).to_degrees())
+        };
+        let numbers = |from: &str| -> Vec<f64> {
+            let at = note.find(from).unwrap_or_else(|| panic!("{from}: {note}"));
+            note[at + from.len()..]
+                .split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '−'))
+                .filter(|s| s.chars().any(|c| c.is_ascii_digit()))
+                .map(|s| s.trim_end_matches('.').replace('−', "-").parse().unwrap())
+                .collect()
+        };
+        let (c1, p1) = harmonic(1.0);
+        let (c2, p2) = harmonic(2.0);
+        assert!((numbers("e = ")[0] - e).abs() < 1e-9, "{note}");
+        let factors = numbers("here the primary");
+        assert!(factors.len() >= 4, "{note}");
+        for (k, (got, want)) in factors.iter().zip([c1, p1, c2 * l / r, p2]).enumerate() {
+            assert!(
+                (got - want).abs() <= 6e-4 * want.abs().max(1e-3),
+                "value {k}: {got} for {want} in {note}"
+            );
         }
     }
 }

@@ -11,12 +11,13 @@
 //! The engine is the textbooks' three cylinders with cranks at 120°, a
 //! pitch of 1 and the reference plane through the middle cylinder
 //! (the balance table of cranks 0°, 120°, 240°): the forces balance, the couples
-//! do not. Its ratio n is the figure's mechanism's.
+//! do not. Its ratio n is the figure's mechanism's; its offset is not
+//! drawn, and the notes say so and by how much it changes the sides.
 
 use super::cranks::{arrow, line};
 use super::{Ctx, Sheet, short, sig};
 use crate::diagram::Plot;
-use crate::dynamics::{InlineEngine, Polygon, default_planes};
+use crate::dynamics::{InlineEngine, Polygon, default_planes, offset_harmonic};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
 use crate::geom::{Frame, Point};
@@ -61,7 +62,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.meta("balance", serde_json::Value::Object(meta));
     let top = 16.0 + 2.0 * (tall + 16.0);
     sheet.height(top + NOTES + 16.0);
-    sheet.notes(Point::new(20.0, top), &notes(&engine));
+    sheet.notes(Point::new(20.0, top), &notes(ctx, &engine));
     Ok(sheet.finish())
 }
 
@@ -189,8 +190,46 @@ fn in_plane(engine: &InlineEngine) -> String {
     }
 }
 
-/// The notes: the engine, the scales, and each polygon's resultant.
-fn notes(engine: &InlineEngine) -> Vec<String> {
+/// What the notes say of an offset: nothing for e = 0; else that the
+/// polygons are the in-line engine's, why which of them close holds
+/// still, and by how much the offset changes their sides
+/// ([`offset_harmonic`]).
+fn offset_note(ctx: &Ctx) -> Option<String> {
+    let m = ctx.mechanism;
+    if m.offset() == 0.0 {
+        return None;
+    }
+    let head = format!(
+        "The offset *e* = {} {} (*e*/*l* = {}) is not in the polygons: they are drawn for the engine in line, each cylinder’s force cos θ + cos 2θ/*n*. An offset, the same in every cylinder, multiplies every side of a polygon by one factor and turns it by one angle, so which polygons close is unchanged",
+        short(m.offset()),
+        ctx.unit(),
+        sig(m.offset() / m.rod()),
+    );
+    let factor = |k: usize, drawn: f64| {
+        offset_harmonic(&m, k).map(|c| {
+            // A turn within the sum's rounding is none.
+            let turn = c[1].atan2(c[0]).to_degrees();
+            (
+                c[0].hypot(c[1]) / drawn,
+                if turn.abs() < 1e-9 { 0.0 } else { turn },
+            )
+        })
+    };
+    Some(match (factor(1, 1.0), factor(2, 1.0 / m.ratio())) {
+        (Some((a1, p1)), Some((a2, p2))) => format!(
+            "{head}; here the primary sides and resultants are {} times as long, turned {}°, the secondary {} times, turned {}° (the first and second harmonics of the offset cylinder’s exact force).",
+            sig(a1),
+            sig(p1),
+            sig(a2),
+            sig(p2),
+        ),
+        _ => format!("{head}; their sizes are not."),
+    })
+}
+
+/// The notes: the engine, the scales, and each polygon's resultant; an
+/// offset's ([`offset_note`]).
+fn notes(ctx: &Ctx, engine: &InlineEngine) -> Vec<String> {
     let list = |v: &[f64]| v.iter().map(|x| short(*x)).collect::<Vec<_>>().join(", ");
     let value = |part: Polygon| {
         let r = engine.resultant(part);
@@ -216,4 +255,7 @@ fn notes(engine: &InlineEngine) -> Vec<String> {
             value(Polygon::SecondaryCouple),
         ),
     ]
+    .into_iter()
+    .chain(offset_note(ctx))
+    .collect()
 }

@@ -11,8 +11,12 @@
 //! mass 0.6 m, its centre of mass l/3 from the crank pin and its radius of
 //! gyration 0.3 l. Every value is
 //! [`crate::dynamics::EngineLoads::crank_pin`] of
-//! [`crate::dynamics::Engine::at_turn`]. Away from the crank is to the
-//! right; the points every 30° are marked, 0°, 90°, 180° and 270° lettered.
+//! [`crate::dynamics::Engine::at_turn`]. x runs from the crank centre
+//! towards the slider. Each curve's points at 0°, 90°, 180° and 270° are
+//! marked and lettered (one dot and letter where the two curves' meet),
+//! the other points every 30° marked where they stand clear of every
+//! mark and of the pole: where a curve lingers, as about the pole at long
+//! and short rods, its dots would pile into a blob.
 
 use super::{Ctx, Sheet, short, sig};
 use crate::angle::Angle;
@@ -38,6 +42,18 @@ const INSIDE: f64 = 1e-7;
 
 /// Height of the notes' band.
 const NOTES: f64 = 72.0;
+
+/// The least distance, page units, between two marks' centres, and from
+/// an unlettered mark to the pole: two and a half dots' diameters, and
+/// more than a letter's em, so that the layout keeps each letter nearer
+/// its own mark than any other.
+pub(crate) const APART: f64 = 18.0;
+
+/// The shortest scale bar, page units: as long as its text.
+const BAR_TEXT: f64 = 84.0;
+
+/// Room below the curves for the scale bar and its text, page units.
+const BAR_ROOM: f64 = 30.0;
 
 /// The two engines: with the illustrative rod, and with a massless one.
 fn engines(ctx: &Ctx) -> Result<(Engine, Engine)> {
@@ -98,13 +114,22 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         // fit will take, the width's or, on a low page, the height's
         // with the legend's band taken off.
         let (wide, high) = (size.x + 2.0 * pad, size.y + 2.0 * pad);
-        let scale = (half / wide).min((tall - crate::diagram::CAPTION - legend).max(1.0) / high);
-        let room = legend / scale;
-        let world = Frame::new(centre - reach, centre + reach + Vector::new(0.0, room));
+        let scale =
+            (half / wide).min((tall - crate::diagram::CAPTION - legend - BAR_ROOM).max(1.0) / high);
+        let (room, below) = (legend / scale, BAR_ROOM / scale);
+        // The bar below the curves, clear of every dot.
+        let world = Frame::new(
+            centre - reach - Vector::new(0.0, below),
+            centre + reach + Vector::new(0.0, room),
+        );
         let mut plot = polar_plot(ctx, engines, &kinks, cycle, relative, rect, &world)?;
         if !relative {
+            // At least as long as its text, which is set above it.
             bar = super::round_below(0.4 * size.x.max(size.y));
-            plot.push(scale_bar(ctx, &world, bar, pad));
+            while bar * plot.map().scale() < BAR_TEXT {
+                bar *= 2.0;
+            }
+            plot.push(scale_bar(ctx, &world, bar, pad, below));
         }
         sheet.plot(plot);
     }
@@ -197,9 +222,10 @@ fn bounds(samples: &[[Vector; 2]]) -> (Point, Point) {
     (lo, hi)
 }
 
-/// The force scale's bar, `bar` long, at the lower left of `world`.
-fn scale_bar(ctx: &Ctx, world: &Frame, bar: f64, pad: f64) -> Item {
-    let from = Point::new(world.min().x + 0.5 * pad, world.min().y + 0.25 * pad);
+/// The force scale's bar, `bar` long, at the lower left of `world`, in
+/// the room `below` the curves.
+fn scale_bar(ctx: &Ctx, world: &Frame, bar: f64, pad: f64, below: f64) -> Item {
+    let from = Point::new(world.min().x + 0.5 * pad, world.min().y + 0.25 * below);
     let text = format!("{} {}", short(bar), ctx.units.force());
     super::scale_bar("fixed-bar", from, bar, &text)
 }
@@ -218,9 +244,9 @@ fn piece<'a>(engine: &'a Engine, relative: bool, a: f64, b: f64) -> impl Curve +
     }
 }
 
-/// One panel showing `world`: the two polar curves, the pole, the marks
-/// every 30° on each curve, the curve with the rod lettered at the
-/// quarters.
+/// One panel showing `world`: the two polar curves, the pole, and the
+/// marks ([`marks`]): 0°, 90°, 180°, 270° (and on, over a cycle of two
+/// turns) lettered.
 fn polar_plot(
     ctx: &Ctx,
     engines: [&Engine; 2],
@@ -234,20 +260,15 @@ fn polar_plot(
     let caption = if relative {
         "(b) Relative to the crank: along it outwards (→) and across it in the sense of rotation (↑)"
     } else {
-        "(a) In fixed axes, away from the crank to the right: the crank pin’s and the main bearing’s load"
+        "(a) In fixed axes, *x* from the crank centre towards the slider: the load on the crank pin, which a massless crank passes to the main bearing"
     };
     let mut plot =
         Plot::world(name, rect, world, false, ctx.tolerance, ctx.font)?.with_caption(caption);
     for (engine, id, dash, legend) in [
-        (
-            engines[0],
-            "with-rod",
-            Dash::Solid,
-            "with the rod’s inertia",
-        ),
+        (engines[0], CURVES[0], Dash::Solid, "with the rod’s inertia"),
         (
             engines[1],
-            "without-rod",
+            CURVES[1],
             Dash::Dashed,
             "without it (a massless rod)",
         ),
@@ -262,29 +283,13 @@ fn polar_plot(
             .iter()
             .map(|(c, r)| (c as &dyn Curve, r.clone()))
             .collect();
-        // Named load-*, not curve-*: no exact reference of its own is
-        // measured against it yet (the loads are tested at the marks).
-        plot.curve(&format!("load-{name}-{id}"), &traced, dash, Some(legend))?;
-        let marks: Vec<(f64, f64)> = (0..(cycle / MARK) as usize)
-            .filter_map(|k| load(engine, k as f64 * MARK, relative))
-            .map(|v| (v.x, v.y))
-            .collect();
-        plot.points(&format!("point-{name}-{id}"), &marks, Symbol::Disc, None);
+        // Measured against a Newton–Euler model of its own in the
+        // curve-tolerance test, as every curve-* is.
+        plot.curve(&format!("curve-{name}-{id}"), &traced, dash, Some(legend))?;
     }
-    for deg in [0.0, 90.0, 180.0, 270.0] {
-        if let Some(v) = load(engines[0], deg, relative) {
-            plot.push(Item::new(
-                format!("label-{name}-{deg}"),
-                Role::Label,
-                Shape::Label {
-                    anchor: Point::origin() + v,
-                    text: RichText::parse(&format!("{deg}°")),
-                    size: TextSize::Small,
-                    toward: None,
-                    line: None,
-                },
-            ));
-        }
+    let apart = APART / plot.map().scale();
+    for item in marks(engines, cycle, relative, name, apart) {
+        plot.push(item);
     }
     plot.points(
         &format!("point-{name}-pole"),
@@ -295,6 +300,94 @@ fn polar_plot(
     Ok(plot)
 }
 
+/// The two curves' names in ids: with the rod's inertia, without it.
+const CURVES: [&str; 2] = ["with-rod", "without-rod"];
+
+/// The marks of one panel, ids `point-{name}-{curve}-{deg}`: each curve's
+/// quarters first, a quarter within `apart` (world units) of a mark
+/// already set lettered by that mark ("0°, 180°") and not marked again,
+/// then the other points every 30° where they stand `apart` from every
+/// mark and from the pole and twice that from a lettered mark; then each lettered mark's letter
+/// `label-{name}-{curve}-{deg}`, set first on the side away from the
+/// nearest other mark.
+fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f64) -> Vec<Item> {
+    let every: Vec<f64> = (0..(cycle / MARK) as usize)
+        .map(|k| k as f64 * MARK)
+        .collect();
+    let quarter = |d: f64| d.rem_euclid(90.0) == 0.0;
+    // Each mark: its curve, its angle, its point and the angles it letters.
+    let mut taken: Vec<(&str, f64, Point, Vec<f64>)> = Vec::new();
+    for lettered in [true, false] {
+        for (c, engine) in CURVES.into_iter().zip(engines) {
+            for &d in every.iter().filter(|d| quarter(**d) == lettered) {
+                let Some(v) = load(engine, d, relative) else {
+                    continue;
+                };
+                let p = Point::origin() + v;
+                // An unlettered dot keeps twice as far from a
+                // lettered one, whose letter stands beside it.
+                let room = |t: &(&str, f64, Point, Vec<f64>)| {
+                    if lettered || t.3.is_empty() {
+                        apart
+                    } else {
+                        2.0 * apart
+                    }
+                };
+                let near = (taken.iter_mut())
+                    .filter(|t| (p - t.2).norm() < room(t))
+                    .min_by(|a, b| (p - a.2).norm().total_cmp(&(p - b.2).norm()));
+                match near {
+                    // A quarter on a lettered mark: that mark letters it too.
+                    Some(t) if lettered && !t.3.contains(&d) => t.3.push(d),
+                    Some(_) => {}
+                    None if lettered || (p - Point::origin()).norm() >= apart => {
+                        let letters = if lettered { vec![d] } else { Vec::new() };
+                        taken.push((c, d, p, letters));
+                    }
+                    None => {}
+                }
+            }
+        }
+    }
+    let mut items: Vec<Item> = taken
+        .iter()
+        .map(|(c, d, p, _)| {
+            Item::new(
+                format!("point-{name}-{c}-{d}"),
+                Role::Curve,
+                // A point of the curve, which letters keep clear of and
+                // are placed nearer to than to any other.
+                Shape::Dot { centre: *p },
+            )
+        })
+        .collect();
+    for (c, d, p, letters) in taken.iter().filter(|t| !t.3.is_empty()) {
+        let nearest = (taken.iter().map(|t| t.2))
+            .filter(|q| q != p)
+            .chain([Point::origin()])
+            .min_by(|a, b| (p - a).norm().total_cmp(&(p - b).norm()));
+        let away = nearest.map(|q| p - q).filter(|v| v.norm() > 0.0);
+        let mut letters = letters.clone();
+        letters.sort_by(f64::total_cmp);
+        let text = (letters.iter().map(|a| format!("{a}°")))
+            .collect::<Vec<_>>()
+            .join(", ");
+        items.push(Item::new(
+            format!("label-{name}-{c}-{d}"),
+            Role::Label,
+            Shape::Label {
+                anchor: *p,
+                text: RichText::parse(&text),
+                // A point's letter: placed nearer its mark than any other.
+                size: TextSize::Letter,
+                toward: away,
+                line: None,
+            },
+        ));
+    }
+    items
+}
+
 /// The notes: the engine and its rod, the largest loads.
 fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let m = ctx.mechanism;
@@ -302,7 +395,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let r = rod.rod();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 *m*, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The pole is marked ×, the load every 30° by a dot; both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 times the reciprocating mass, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The pole is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters that meet by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
             short(m.crank()),
             short(m.rod()),
             ctx.offset_clause(),

@@ -19,7 +19,7 @@ use crate::dynamics::{
     TurningMoment, example_indicator,
 };
 use crate::error::{Error, Field, Input, Result, Wording};
-use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Align, Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Point, Vector};
 use crate::units::Units;
 
@@ -145,7 +145,7 @@ fn torque_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     .with_caption(
         "(a) Turning-moment diagram, *T* = *F*·*OM*, the mean line and the areas between them",
     );
-    lobes(&mut plot, engine, tm);
+    lobes(ctx, &mut plot, engine, tm);
     let kinks = &tm.kinks_deg;
     let pieces: Vec<(f64, f64)> = kinks
         .iter()
@@ -168,9 +168,9 @@ fn torque_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     Ok(plot)
 }
 
-/// The areas between T and its mean line, each with its value where it
-/// is wide enough to carry it.
-fn lobes(plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
+/// The areas between T and its mean line, each lettered inside it
+/// ([`area_letter`]), with its value where the lobe is wide enough.
+fn lobes(ctx: &Ctx, plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
     for (k, lobe) in tm.lobes.iter().enumerate() {
         let n = ((lobe.to_deg - lobe.from_deg) * 2.0).ceil().max(2.0) as usize;
         let mut points: Vec<Point> = (0..=n)
@@ -179,6 +179,7 @@ fn lobes(plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
                 Point::new(d, torque(engine, d))
             })
             .collect();
+        let column = points.clone();
         points.push(Point::new(lobe.to_deg, tm.mean));
         points.push(Point::new(lobe.from_deg, tm.mean));
         plot.push(Item::new(
@@ -186,29 +187,125 @@ fn lobes(plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
             Role::Construction,
             Shape::Region { points },
         ));
-        // Each area lettered a_k half-way between the curve and the mean
-        // line at the middle of the lobe, with its value where the lobe
-        // is wide enough to carry it (the notes give every value).
-        let mid = 0.5 * (lobe.from_deg + lobe.to_deg);
-        let anchor = Point::new(mid, 0.5 * (torque(engine, mid) + tm.mean));
         let letter = format!("*a*_{{{}}}", k + 1);
-        let text = if lobe.to_deg - lobe.from_deg >= 25.0 {
-            format!("{letter} = {}", signed(tm.settled(lobe.area)))
+        let valued = format!("{letter} = {}", signed(tm.settled(lobe.area)));
+        let texts = if lobe.to_deg - lobe.from_deg >= 25.0 {
+            vec![valued, letter]
         } else {
-            letter
+            vec![letter]
         };
-        plot.push(Item::new(
-            format!("label-lobe-{}", k + 1),
-            Role::Label,
-            Shape::Label {
-                anchor,
-                text: RichText::parse(&text),
-                size: TextSize::Small,
-                toward: None,
-                line: None,
-            },
-        ));
+        plot.push(area_letter(ctx, plot, &column, tm.mean, &texts, k + 1));
     }
+}
+
+/// Room, page units, between an area's letter and the curve, the mean
+/// line or the line T = 0 about it.
+const AREA_ROOM: f64 = 2.0;
+
+/// The letter `label-lobe-{k}` of the area between the mean line at
+/// `mean` and the torque sampled at `column` (θ, T): the first of `texts`
+/// whose box, with [`AREA_ROOM`] about it (the bare letter at last
+/// without), fits wholly between the two somewhere and off the line
+/// T = 0, set where it has the most room (a text at a fixed place). Where none fits (a sliver), the last text
+/// beside the area's tallest point, on its side of the mean line, moved
+/// clear of the lines there.
+fn area_letter(
+    ctx: &Ctx,
+    plot: &Plot,
+    column: &[Point],
+    mean: f64,
+    texts: &[String],
+    k: usize,
+) -> Item {
+    let map = plot.map();
+    let size = ctx.style.font_size(TextSize::Small);
+    let y_of = |t: f64| map.apply(Point::new(0.0, t)).y;
+    // Each column's page x and the page interval between the mean line
+    // and the curve, top to bottom.
+    let page: Vec<(f64, f64, f64)> = column
+        .iter()
+        .map(|p| {
+            let (a, b) = (map.apply(*p).y, y_of(mean));
+            (map.apply(*p).x, a.min(b), a.max(b))
+        })
+        .collect();
+    let zero = y_of(0.0);
+    let id = format!("label-lobe-{k}");
+    let side = column
+        .iter()
+        .map(|p| p.y - mean)
+        .fold(0.0, |a: f64, v| if v.abs() > a.abs() { v } else { a })
+        .signum();
+    // Each text with room about it, then the last (the bare letter)
+    // without.
+    let tries = (texts.iter().map(|t| (t, AREA_ROOM))).chain(texts.last().map(|t| (t, 0.0)));
+    for (text, room) in tries {
+        let rich = RichText::parse(text);
+        let half = (0.5 * rich.width(ctx.font, size) + room, 0.5 * size + room);
+        if let Some(at) = roomiest(&page, half, zero) {
+            let world = map.invert(at);
+            return Item::new(
+                id,
+                Role::Label,
+                Shape::Text {
+                    at: world,
+                    offset: Vector::zeros(),
+                    text: rich,
+                    align: Align::Middle,
+                    size: TextSize::Small,
+                },
+            );
+        }
+    }
+    let tallest = (column.iter())
+        .copied()
+        .fold(Point::new(0.0, mean), |a, p| {
+            if (p.y - mean).abs() > (a.y - mean).abs() {
+                p
+            } else {
+                a
+            }
+        });
+    Item::new(
+        id,
+        Role::Label,
+        Shape::Label {
+            anchor: Point::new(tallest.x, 0.5 * (tallest.y + mean)),
+            text: RichText::parse(texts.last().map_or("", String::as_str)),
+            size: TextSize::Small,
+            toward: Some(Vector::new(0.0, side)),
+            line: None,
+        },
+    )
+}
+
+/// The page centre of a box of half sizes `half` inside the area whose
+/// columns are `page` (x, top, bottom), off the line y = `zero`, with the
+/// most room about it; `None` where no place holds it.
+fn roomiest(page: &[(f64, f64, f64)], half: (f64, f64), zero: f64) -> Option<Point> {
+    let (first, last) = (page.first()?.0, page.last()?.0);
+    let mut best: Option<(f64, Point)> = None;
+    for &(x, top, bottom) in page {
+        if x - half.0 < first.min(last) || x + half.0 > first.max(last) {
+            continue;
+        }
+        let under: Vec<(f64, f64)> = (page.iter())
+            .filter(|(u, _, _)| (u - x).abs() <= half.0)
+            .map(|(_, t, b)| (*t, *b))
+            .collect();
+        let mut y = top + half.1;
+        while y <= bottom - half.1 {
+            let room = (under.iter())
+                .map(|(t, b)| (y - half.1 - t).min(b - y - half.1))
+                .fold(f64::INFINITY, f64::min)
+                .min((zero - y).abs() - half.1);
+            if room >= 0.0 && best.is_none_or(|(r, _)| room > r) {
+                best = Some((room, Point::new(x, y)));
+            }
+            y += 2.0;
+        }
+    }
+    best.map(|(_, p)| p)
 }
 
 /// An area's value with its sign, + or −; 0 (an area within the
@@ -229,15 +326,22 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     let (elo, ehi) = values
         .iter()
         .fold((0.0f64, 0.0f64), |(a, b), &e| (a.min(e), b.max(e)));
+    // Room above the greatest and below the least, so that neither
+    // mark nor the dimension's heads sit on the frame.
+    let margin = 0.08 * (ehi - elo);
     let mut plot = Plot::new(
         "energy",
         ctx.band(16.0 + height + 24.0, height),
         theta()?,
-        Axis::nice(&format!("energy stored *E* ({t_unit})"), elo, ehi)?,
+        Axis::nice(
+            &format!("energy stored *E* ({t_unit})"),
+            elo - margin,
+            ehi + margin,
+        )?,
         ctx.tolerance,
         ctx.font,
     )?
-    .with_caption("(b) Energy stored in the flywheel, *E*, the area under *T* − *T*_{mean} from θ = 0, and its fluctuation Δ*E*");
+    .with_caption("(b) Energy stored in the flywheel, *E*, the area under *T* − *T*_{mean} from θ = 0, its greatest and least (○) and its fluctuation Δ*E*");
     let e_curve = |deg: f64| -> Option<(Point, Vector)> {
         let slope = torque(engine, deg) - tm.mean;
         Some((
@@ -245,19 +349,17 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
             Vector::new(1.0, slope * super::PER_DEGREE),
         ))
     };
+    // No legend (the axis names the curve, the caption the marks): one
+    // set beside the plot on a narrow page would narrow (b) out of line
+    // with (a).
     plot.curve(
         "curve-energy",
         &[(&e_curve, 0.0..=360.0)],
         Dash::Solid,
-        Some("*E*(θ)"),
+        None,
     )?;
     let extremes = [(tm.max_energy_deg, ehi), (tm.min_energy_deg, elo)];
-    plot.points(
-        "point-energy",
-        &extremes,
-        Symbol::Circle,
-        Some("greatest and least *E*"),
-    );
+    plot.points("point-energy", &extremes, Symbol::Circle, None);
     // ΔE as a dimension at the angle of the most energy, from the least
     // (carried across by a dotted line) up to the curve.
     plot.line(
@@ -277,15 +379,23 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
             text: RichText::parse(""),
         },
     ));
-    // Its value beside the dimension line, placed clear of it.
+    // Its value beside the dimension line, placed clear of it, by the
+    // middle of its longer part off the line E = 0 (which the dimension
+    // crosses), on the side of the wider half of the turn.
+    let middle = if ehi >= -elo { 0.5 * ehi } else { 0.5 * elo };
+    let away = if tm.max_energy_deg <= 180.0 {
+        1.0
+    } else {
+        -1.0
+    };
     plot.push(Item::new(
         "label-fluctuation",
         Role::Label,
         Shape::Label {
-            anchor: Point::new(tm.max_energy_deg, 0.5 * (elo + ehi)),
+            anchor: Point::new(tm.max_energy_deg, middle),
             text: RichText::parse(&format!("Δ*E* = {} {t_unit}", sig(tm.fluctuation))),
             size: TextSize::Small,
-            toward: None,
+            toward: Some(Vector::new(away, 0.0)),
             line: None,
         },
     ));
