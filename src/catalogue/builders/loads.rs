@@ -99,10 +99,10 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let pad = 0.1 * size.x.max(size.y).max(f64::MIN_POSITIVE);
     let half = 0.5 * (page.width() - 48.0);
     let most = page.height() - 16.0 - 16.0 - 16.0 - NOTES;
-    let legend = 48.0;
-    let tall =
-        (half * (size.y + 2.0 * pad) / (size.x + 2.0 * pad) + crate::diagram::CAPTION + legend)
-            .clamp(160.0, most.max(160.0));
+    // No legend: on a narrow page one set in a panel's free corner fell
+    // on the curve and the scale bar; the notes say which curve is which.
+    let tall = (half * (size.y + 2.0 * pad) / (size.x + 2.0 * pad) + crate::diagram::CAPTION)
+        .clamp(160.0, most.max(160.0));
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, false);
     let mut bar = 0.0;
@@ -110,18 +110,14 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let rect = PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, tall);
         let centre = Point::new(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
         let reach = 0.5 * size + Vector::new(pad, pad);
-        // Room above for the legend, at the panel's scale: the scale the
-        // fit will take, the width's or, on a low page, the height's
-        // with the legend's band taken off.
+        // Room below for the bar, at the panel's scale: the scale the fit
+        // will take, the width's or, on a low page, the height's with the
+        // bar's band taken off.
         let (wide, high) = (size.x + 2.0 * pad, size.y + 2.0 * pad);
-        let scale =
-            (half / wide).min((tall - crate::diagram::CAPTION - legend - BAR_ROOM).max(1.0) / high);
-        let (room, below) = (legend / scale, BAR_ROOM / scale);
+        let scale = (half / wide).min((tall - crate::diagram::CAPTION - BAR_ROOM).max(1.0) / high);
+        let below = BAR_ROOM / scale;
         // The bar below the curves, clear of every dot.
-        let world = Frame::new(
-            centre - reach - Vector::new(0.0, below),
-            centre + reach + Vector::new(0.0, room),
-        );
+        let world = Frame::new(centre - reach - Vector::new(0.0, below), centre + reach);
         let mut plot = polar_plot(ctx, engines, &kinks, cycle, relative, rect, &world)?;
         if !relative {
             // At least as long as its text, which is set above it.
@@ -264,14 +260,9 @@ fn polar_plot(
     };
     let mut plot =
         Plot::world(name, rect, world, false, ctx.tolerance, ctx.font)?.with_caption(caption);
-    for (engine, id, dash, legend) in [
-        (engines[0], CURVES[0], Dash::Solid, "with the rod’s inertia"),
-        (
-            engines[1],
-            CURVES[1],
-            Dash::Dashed,
-            "without it (a massless rod)",
-        ),
+    for (engine, id, dash) in [
+        (engines[0], CURVES[0], Dash::Solid),
+        (engines[1], CURVES[1], Dash::Dashed),
     ] {
         let pieces: Vec<_> = kinks
             .iter()
@@ -285,7 +276,7 @@ fn polar_plot(
             .collect();
         // Measured against a Newton–Euler model of its own in the
         // curve-tolerance test, as every curve-* is.
-        plot.curve(&format!("curve-{name}-{id}"), &traced, dash, Some(legend))?;
+        plot.curve(&format!("curve-{name}-{id}"), &traced, dash, None)?;
     }
     let apart = APART / plot.map().scale();
     for item in marks(engines, cycle, relative, name, apart) {
@@ -395,7 +386,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let r = rod.rod();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 times the reciprocating mass, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The pole is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters that meet by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 times the reciprocating mass, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters that meet by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
             short(m.crank()),
             short(m.rod()),
             ctx.offset_clause(),
