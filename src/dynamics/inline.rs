@@ -407,13 +407,7 @@ mod tests {
     /// primary and secondary forces and couples, at random arrangements.
     #[test]
     fn the_resultants_are_the_sum_of_the_cylinders() {
-        let mut seed = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::dynamics::uniform_draws(0x2545_f491_4f6c_dd1du64);
         for _ in 0..200 {
             let count = 1 + (next() * 8.0) as usize;
             let cranks: Vec<f64> = (0..count).map(|_| 360.0 * next()).collect();

@@ -65,3 +65,16 @@ pub use pose::EnginePose;
 pub use radial::{DEFAULT_AXES, MAX_RADIAL_CYLINDERS, RadialEngine};
 pub use rod::{DynamicalSystem, RodInertia, RodMass};
 pub use turning::{Lobe, MAX_CYLINDERS, RELATIVE_TOLERANCE, TurningMoment};
+
+/// Uniform draws in [0, 1) from a xorshift generator started at `seed`
+/// (not zero), for the unit tests' random engines: the same draws on
+/// every run.
+#[cfg(test)]
+fn uniform_draws(mut seed: u64) -> impl FnMut() -> f64 {
+    move || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    }
+}

@@ -129,13 +129,7 @@ mod tests {
     /// equations, written here as the sums).
     #[test]
     fn the_balance_masses_close_the_force_and_couple_polygons() {
-        let mut seed = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::dynamics::uniform_draws(0x9e37_79b9_7f4a_7c15u64);
         for _ in 0..200 {
             let count = 1 + (next() * 6.0) as usize;
             let masses: Vec<Revolving> = (0..count)

@@ -184,13 +184,7 @@ mod tests {
     /// −m_r l₁ (L − l) α (α = −ω² φ″), which vanishes when L = l.
     #[test]
     fn the_dynamical_system_is_the_rod() {
-        let mut seed = 0x0000_ddb1_a5e5_u64;
-        let mut next = || {
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = crate::dynamics::uniform_draws(0x0000_ddb1_a5e5_u64);
         for _ in 0..200 {
             let (r, n) = (0.2 + next(), 1.05 + 8.0 * next());
             let l = n * r;
