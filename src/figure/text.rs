@@ -120,6 +120,13 @@ impl RichText {
         t
     }
 
+    /// This text followed by `other` (words and a letter, "to *D*");
+    /// an empty `other` adds nothing.
+    pub fn then(mut self, other: RichText) -> Self {
+        self.runs.extend(other.runs);
+        self
+    }
+
     /// The runs.
     pub fn runs(&self) -> &[Run] {
         &self.runs

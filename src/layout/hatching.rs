@@ -17,6 +17,9 @@ use crate::geom::{Point, Vector};
 
 /// Room kept between a letter's box and the strokes left, page units.
 const ROOM: f64 = 1.0;
+/// A line within this angle of the hatched edge (radians, 5°) runs along
+/// it and leaves its strokes standing.
+const ALONG: f64 = 0.087;
 
 /// A hatching waiting for the labels: where its node sits in the panel's
 /// drawing order, what it is written with, and its strokes (page points).
@@ -58,9 +61,14 @@ impl Hatching {
 
 impl Hatching {
     /// Whether the line `(a, b)` runs along the hatched edge (the line of
-    /// the strokes' feet), within [`ROOM`] of it at both ends: a line
-    /// drawn on the fixed link itself (a centre at infinity along it)
-    /// meets every stroke at its foot and crosses none of the band.
+    /// the strokes' feet): within [`ROOM`] of it at both ends (a line
+    /// drawn on the fixed link itself, a centre at infinity along it,
+    /// meets every stroke at its foot and crosses none of the band), or
+    /// within [`ALONG`] of its direction (a line of Kennedy's theorem
+    /// through the fixed rod's pins at a pose near a dead centre runs
+    /// through the band at a slant of a degree or two: it crosses the
+    /// strokes as a line crosses hatching, and leaving out every stroke
+    /// it meets left the fixed link with none).
     fn on_edge(&self, &(a, b): &(Point, Point)) -> bool {
         let (Some(first), Some(last)) = (self.strokes.first(), self.strokes.last()) else {
             return false;
@@ -72,7 +80,9 @@ impl Hatching {
             return false;
         }
         let off = |p: Point| ((p - f).x * along.y - (p - f).y * along.x).abs() / n;
-        off(a) <= ROOM && off(b) <= ROOM
+        let line = b - a;
+        let parallel = line.norm() > 0.0 && line.dot(&along).abs() > ALONG.cos() * line.norm() * n;
+        parallel || (off(a) <= ROOM && off(b) <= ROOM)
     }
 }
 

@@ -11,6 +11,11 @@ use std::collections::BTreeSet;
 
 /// Shortest line drawn, in page units: shorter ones are degenerate.
 const MIN_PAGE_LENGTH: f64 = 0.5;
+/// The word before the letter of an arrow towards a point off the page
+/// that is not at infinity (which is lettered "at ∞"), so that a reader
+/// tells the two apart: "to *D*", as Kennedy's diagrams point to a
+/// centre beyond the drawing.
+const OFF_PAGE: &str = "to ";
 /// Length of an arrow that points at something off the page.
 const EDGE_ARROW: f64 = 34.0;
 /// How far inside the frame such an arrow ends.
@@ -250,7 +255,7 @@ impl Canvas {
         text: RichText,
         size: TextSize,
     ) {
-        self.label_naming(id, anchor, None, text, size);
+        self.label_naming(id, anchor, (None, None), text, size);
     }
 
     /// A text naming the line from `a` to `b` (a link's length), set by
@@ -263,21 +268,21 @@ impl Canvas {
         text: RichText,
         size: TextSize,
     ) {
-        self.label_naming(id, nalgebra::center(&a, &b), Some([a, b]), text, size);
+        let anchor = nalgebra::center(&a, &b);
+        self.label_naming(id, anchor, (None, Some([a, b])), text, size);
     }
 
-    /// A label at `anchor` naming `line` if any; nothing where the anchor
-    /// is off the page.
+    /// A label at `anchor`, tried first `toward` and naming `line` if
+    /// any; nothing where the anchor is off the page.
     fn label_naming(
         &mut self,
         id: impl Into<String>,
         anchor: Point,
-        line: Option<[Point; 2]>,
+        (toward, line): (Option<Vector>, Option<[Point; 2]>),
         text: RichText,
         size: TextSize,
     ) {
         if self.contains(anchor) {
-            let toward = None;
             let shape = Shape::Label {
                 anchor,
                 text,
@@ -291,7 +296,8 @@ impl Canvas {
 
     /// Records a named point in the metadata and draws it: its marker and
     /// letter when on the page, an arrow at the frame edge pointing to it
-    /// (from `from`, a point on the page) when off it.
+    /// (from `from`, a point on the page) when off it, lettered "to" and
+    /// its letter ([`OFF_PAGE`]).
     pub(crate) fn point(&mut self, name: &str, p: Point, marker: Marker, from: Point) {
         self.point_lettered(name, RichText::italic(name), p, marker, from);
     }
@@ -322,6 +328,7 @@ impl Canvas {
             if dir.norm() > 0.0 {
                 let tail =
                     self.edge_arrow(format!("offpage-{name}"), edge, dir.normalize(), EDGE_ARROW);
+                let letter = RichText::parse(OFF_PAGE).then(letter);
                 self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
             }
         }
@@ -384,8 +391,9 @@ impl Canvas {
     /// A point lettered `markup` (a sketch's, which records no metadata):
     /// its marker and letter when on the frame, else an arrow at the
     /// frame's edge on the line from `from` (a point on the frame) towards
-    /// it, lettered at its tail, where the arrow fits between `from` and
-    /// the edge (nothing where it does not).
+    /// it, lettered "to" and `markup` at its tail ([`OFF_PAGE`]), where
+    /// the arrow fits between `from` and the edge (nothing where it does
+    /// not).
     pub(crate) fn lettered(
         &mut self,
         name: &str,
@@ -404,7 +412,7 @@ impl Canvas {
                 self.label(
                     format!("label-{name}"),
                     tail,
-                    RichText::parse(markup),
+                    RichText::parse(OFF_PAGE).then(RichText::parse(markup)),
                     TextSize::Letter,
                 );
             }

@@ -27,16 +27,12 @@ const HATCH_CLEAR: f64 = 2.5;
 const HATCH_RUN: usize = 2;
 /// A moving link within this angle (radians, 5°) of a hatched edge…
 const ALONG_EDGE: f64 = 0.087;
-/// …and within this of its line at both ends (page units) behind it,
-/// away from the strokes…
+/// …and within this of its line (page units) behind it, away from the
+/// strokes, beside a stroke…
 const LYING: f64 = 3.0;
 /// …and no farther than this in front (the quarter pixel a stroke's foot
 /// may touch a link) lies along it.
 const LYING_IN_FRONT: f64 = 0.25;
-/// How far out from its foot (page units, across the edge) a stroke is
-/// first kept clear of a link lying along the edge: the link's half
-/// width and a little.
-const FOOT: f64 = 2.0;
 /// Length of one chord of a curved guide, page units.
 const CHORD: f64 = 12.0;
 /// Clear distance between a guide and the crank circle or a bearing.
@@ -343,15 +339,29 @@ impl Canvas {
                 continue;
             };
             // A moving link lying along the edge on it or just behind it
-            // (the rod on the fixed crank at a dead centre) touches only
-            // the strokes' feet, as the edge's own line does: they are
-            // kept clear of it from their feet out, not at them.
-            let lying = |(c, d): &Seg| {
-                let off = |x: Point| (x - a).dot(&n);
-                let (near, far) = (off(*c).min(off(*d)), off(*c).max(off(*d)));
-                unit(*d - *c).is_some_and(|u| u.dot(&t).abs() > ALONG_EDGE.cos())
-                    && near > -LYING
-                    && far < LYING_IN_FRONT
+            // about a stroke (the rod on the fixed crank at a dead centre,
+            // a bar crossing the edge at a small angle near the crossing)
+            // touches only the stroke's foot, as the edge's own line does,
+            // and the stroke leans away from it: it does not stop it.
+            // Judged over the stretch of the link beside the stroke (from
+            // a stroke's depth behind its foot to a depth ahead), so that
+            // a bar in front of the edge farther along stops the strokes
+            // there and not these.
+            let lying = |(c, d): &Seg, s: f64| {
+                let Some(u) = unit(*d - *c) else {
+                    return false;
+                };
+                let (ca, da) = ((*c - a).dot(&t), (*d - a).dot(&t));
+                if u.dot(&t).abs() <= ALONG_EDGE.cos() || (da - ca).abs() < f64::EPSILON {
+                    return false;
+                }
+                let (lo, hi) = (s - 2.0 * HATCH_DEPTH, s + HATCH_DEPTH);
+                let at = |w: f64| {
+                    let k = ((w - ca) / (da - ca)).clamp(0.0, 1.0);
+                    (*c + (*d - *c) * k - a).dot(&n)
+                };
+                let (x0, x1) = (at(lo), at(hi));
+                x0.min(x1) > -LYING && x0.max(x1) < LYING_IN_FRONT
             };
             let mut run: Option<(f64, f64)> = None;
             let mut s = 0.5 * HATCH_SPACING;
@@ -362,14 +372,9 @@ impl Canvas {
                 let along = walked + s;
                 let clear = along >= ends
                     && along <= total - ends
-                    && avoid.iter().all(|g| {
-                        let foot = if lying(g) {
-                            p + (q - p) * (FOOT / HATCH_DEPTH)
-                        } else {
-                            p
-                        };
-                        segment_distance(foot, q, g.0, g.1) > HATCH_CLEAR
-                    });
+                    && (avoid.iter())
+                        .filter(|g| !lying(g, s))
+                        .all(|g| segment_distance(p, q, g.0, g.1) > HATCH_CLEAR);
                 if clear {
                     run = Some(match run {
                         Some((first, _)) => (first, s),

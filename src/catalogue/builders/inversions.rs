@@ -58,9 +58,12 @@ const COINCIDENT: f64 = 1e-9;
 fn where_near(markup: &str, p: Point, other: &str, q: Point, size: f64) -> String {
     let apart = (p - q).norm();
     if apart <= COINCIDENT * size {
-        format!("{markup} at {other}")
+        format!("{markup} is at {other}")
     } else {
-        format!("{markup} {} from {other}", short(apart))
+        format!(
+            "{markup} lies {} from {other}, too near it to letter apart",
+            short(apart)
+        )
     }
 }
 
@@ -723,7 +726,7 @@ fn notes(ctx: &Ctx, chain: &InvertedChain, named: &str, together: &[String]) -> 
         ));
     }
     if !together.is_empty() {
-        line.push_str(&format!(" Here {}.", together.join(", ")));
+        line.push_str(&format!(" Here {}.", together.join("; ")));
     }
     [
         line,

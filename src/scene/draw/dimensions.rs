@@ -97,7 +97,12 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     };
     let guide = canvas.page(ctx.sizes.block_half_height);
     canvas.point(ctx.letter(Named::MidStroke), o, Marker::Dot, c);
-    if canvas.page((a - o).norm()) > 2.0 {
+    // However short x is on the page, it is dimensioned (the heads point
+    // in from outside its extension lines, as a draughtsman dimensions a
+    // length shorter than its arrows, onto one line where x is under a
+    // pixel): near 90° on a long rod x is a few thousandths of the
+    // stroke, and left out it read as missing. Only x = 0 is not.
+    if (a - o).norm() > 0.0 {
         canvas.push(
             "dimension-x",
             Role::Dimension,

@@ -47,6 +47,8 @@ pub(crate) struct Sizes {
     pub travel: (f64, f64),
     /// The crank's length r.
     crank: f64,
+    /// The offset e of the line of stroke.
+    offset: f64,
     /// Page units per world unit of the main view, once a first fit has
     /// found it: then arrows drawn to page lengths are fitted too.
     pub page_scale: Option<f64>,
@@ -80,6 +82,7 @@ impl Sizes {
             block_room: 0.36 * near.max(0.3 * r),
             travel: (near, far),
             crank: r,
+            offset: e,
             page_scale: None,
             fitted: None,
         }
@@ -117,6 +120,15 @@ impl Sizes {
             page_scale: Some(scale),
             ..self
         }
+    }
+
+    /// Heights of the guides (world y): the line of stroke and the
+    /// block's half height either side.
+    fn guide_heights(&self) -> [f64; 2] {
+        [
+            self.offset - self.block_half_height,
+            self.offset + self.block_half_height,
+        ]
     }
 
     /// Ends of the guides along x: the block's whole travel and 0.15 r
@@ -325,7 +337,7 @@ pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
         (world.max().x - world.min().x) * scale + 2.0 * INSET
     });
     let detail = layout.detail.map_or(0.0, |d| {
-        let frame = detail_frame(&d, scale);
+        let frame = detail_frame(&d, scale, layout.sizes.guide_heights());
         (frame.max().x - frame.min().x) * scale * d.magnification
     });
     drawn.max(detail) + 2.0 * mg
@@ -364,7 +376,7 @@ impl Layout {
         let mut bottom = self.main.y + self.main.height;
         if let Some(d) = &self.detail {
             let scale = self.transform.scale();
-            let frame = detail_frame(d, scale);
+            let frame = detail_frame(d, scale, self.sizes.guide_heights());
             let tall = (frame.max().y - frame.min().y) * scale * d.magnification;
             bottom += DETAIL_GAP + CAPTION + tall + NOTE_GAP;
         }
@@ -411,7 +423,13 @@ fn with_detail(
     };
     let (mut main, mut transform) = main_view(ctx, band, frame);
     let mut detail = details(transform.scale());
-    let grown = beside_detail(ctx.scene, frame, detail.as_ref(), transform.scale());
+    let grown = beside_detail(
+        ctx.scene,
+        &ctx.sizes,
+        frame,
+        detail.as_ref(),
+        transform.scale(),
+    );
     if grown != frame {
         (main, transform) = main_view(ctx, band, grown);
         detail = details(transform.scale());
@@ -487,6 +505,7 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
 /// detail, or where the detail's frame stays inside it.
 fn beside_detail(
     scene: &Scene,
+    sizes: &Sizes,
     frame: Frame,
     detail: Option<&detail::Detail>,
     scale: f64,
@@ -497,7 +516,7 @@ fn beside_detail(
     if scene.mechanism().offset() == 0.0 || !scene.has(Layer::Mechanism) {
         return frame;
     }
-    let left = detail_frame(d, scale).min().x;
+    let left = detail_frame(d, scale, sizes.guide_heights()).min().x;
     if left >= frame.min().x {
         return frame;
     }
@@ -539,7 +558,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let mg = page.margin();
     let (main, transform) = (layout.main, layout.transform);
     let detail = layout.detail;
-    let region = detail.map(|d| detail_frame(&d, transform.scale()));
+    let region = detail.map(|d| detail_frame(&d, transform.scale(), layout.sizes.guide_heights()));
     let mut canvas = main_canvas(&layout, region);
     draw_layers(&ctx, &poses, &mut canvas, true);
 
@@ -690,16 +709,47 @@ fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (PageRe
 
 /// The world frame a detail shows: its region with room for letters, at
 /// least [`detail::MIN_HEIGHT`] page units tall.
-fn detail_frame(d: &detail::Detail, main_scale: f64) -> Frame {
+/// An edge that would run within [`GUIDE_CLEAR`] of a guide (the world
+/// heights `guides`) moves that far to whichever side of it is nearer,
+/// but never nearer the detailed points than [`detail::PAD`] / 2, so
+/// that the frame never reads as one more guide, cuts its hatching or
+/// closes the channel with the block (a short rod's inner dead centre,
+/// where the detail about C was just the guides' height), and what lay
+/// outside the frame beyond a guide stays outside.
+fn detail_frame(d: &detail::Detail, main_scale: f64, guides: [f64; 2]) -> Frame {
     let scale = main_scale * d.magnification;
     let pad = detail::PAD / scale;
     let (lo, hi) = (d.region.min(), d.region.max());
     let grow = (0.5 * detail::MIN_HEIGHT / scale - 0.5 * (hi.y - lo.y) - pad).max(0.0);
-    Frame::new(
-        lo - Vector::new(pad, pad + grow),
-        hi + Vector::new(pad, pad + grow),
-    )
+    let (mut bottom, mut top) = (lo.y - pad - grow, hi.y + pad + grow);
+    let clear = GUIDE_CLEAR / scale;
+    // Twice: an edge moved off one guide may come near the other.
+    for y in [guides, guides].concat() {
+        if (top - y).abs() < clear {
+            let inward = y - clear;
+            let keeps = inward >= hi.y + 0.5 * pad;
+            top = if keeps && top - inward < y + clear - top {
+                inward
+            } else {
+                y + clear
+            };
+        }
+        if (bottom - y).abs() < clear {
+            let inward = y + clear;
+            let keeps = inward <= lo.y - 0.5 * pad;
+            bottom = if keeps && inward - bottom < bottom - (y - clear) {
+                inward
+            } else {
+                y - clear
+            };
+        }
+    }
+    Frame::new(Point::new(lo.x - pad, bottom), Point::new(hi.x + pad, top))
 }
+
+/// The least distance between a detail's frame and a guide along it,
+/// page units: the guide's hatching (6.5 deep) and a clear gap.
+const GUIDE_CLEAR: f64 = 14.0;
 
 /// The detail panel showing `frame` below `top`, centred on a page
 /// `width` wide.
