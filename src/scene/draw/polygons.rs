@@ -31,6 +31,14 @@ const GAP: f64 = 0.5;
 /// units.
 const LETTER_ROOM: f64 = 24.0;
 
+/// The least room between the two polygons, page units: a letter group
+/// of three images ("*b*, *a*, *q*", about 57 units) set beside the
+/// velocity polygon's right vertex, one beside the acceleration polygon's
+/// left vertex, and two ems between (near 90° the polygons are needles
+/// whose letters stand on one line: 0.5 k r apart, "*b*, *a*, *q*  *c*′,
+/// *a*′" read as one string).
+const LETTERS_APART: f64 = 150.0;
+
 /// Shortest vector drawn as an arrow, page units: shorter, its head would
 /// hide it (a zero vector, at a dead centre or 90°, is not drawn).
 const MIN_ARROW: f64 = 12.0;
@@ -115,7 +123,9 @@ pub(crate) fn place(ctx: &LayerCtx) -> Placed {
     // In world lengths only: a gap that followed the page scale would
     // move the frame the fit is made for between its passes.
     let gap = GAP * k * r;
-    let width = v_width + gap + a_width;
+    let apart = ctx.sizes.page_scale.map_or(0.0, |s| LETTERS_APART / s);
+    let between = gap.max(apart);
+    let width = v_width + between + a_width;
     let (_, right) = ctx.sizes.guides();
     let left = 0.5 * (-r + right) - 0.5 * width;
     // Below the mechanism by the gap and, once the page scale is known,
@@ -125,9 +135,9 @@ pub(crate) fn place(ctx: &LayerCtx) -> Placed {
     let top = (-r).min(e - ctx.sizes.block_half_height) - gap - letters;
     // Mirrored, world x runs right to left on the page.
     let (v_left, a_left) = if scene.is_mirrored() {
-        (left + a_width + gap, left)
+        (left + a_width + between, left)
     } else {
-        (left, left + v_width + gap)
+        (left, left + v_width + between)
     };
     let velocity_pole = Point::new(v_left - v_lo.x, top - v_hi.y);
     let acceleration_pole = Point::new(a_left - a_lo.x, top - a_hi.y);
