@@ -10,13 +10,15 @@ use slider_crank::geom::{Vector, cross};
 use slider_crank::{Angle, SliderCrank};
 
 /// The polygons' quantities in the cross-check.
-const POLYGON: [Quantity; 6] = [
+const POLYGON: [Quantity; 8] = [
     Quantity::VelocityPolygon,
     Quantity::RodAngularVelocityPolygon,
     Quantity::CouplerVelocityPolygon,
     Quantity::AccelerationPolygon,
     Quantity::RodAngularAccelerationPolygon,
     Quantity::CouplerAccelerationPolygon,
+    Quantity::OffRodVelocityPolygon,
+    Quantity::OffRodAccelerationPolygon,
 ];
 
 fn polygons(m: &SliderCrank, deg: f64, t: f64) -> (VelocityPolygon, AccelerationPolygon) {
@@ -436,5 +438,46 @@ fn analyze_json_carries_the_images_of_a_point_off_the_rod() {
         let acc = Vector::new(acc[0].as_f64().unwrap(), acc[1].as_f64().unwrap());
         let exact = q.second_derivative(&pose) * (w * w);
         assert!((acc - exact).norm() <= 1e-12 * w * w * 4.0, "{deg}");
+    }
+}
+
+#[test]
+fn an_off_rod_point_s_images_are_its_motion_by_finite_differences() {
+    // The images q and q′ of a point of the rod's plane off its line
+    // against central differences of its place over θ (step 1e-4 rad:
+    // truncation of order 1e-9 of r, rounding of 1e-8 in the second), at offsets and short rods.
+    let h = 1e-4;
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 4.0, 1.5),
+        (1.0, 2.5, -1.2),
+    ] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for (t, across) in [(0.5, 0.25), (0.0, -1.0), (1.0, 3.0)] {
+            let p = CouplerPoint::off_rod(t, across).unwrap();
+            for k in 0..24 {
+                let deg = 15.0 * f64::from(k) + 0.5;
+                let at = |d: f64| {
+                    let angle = Angle::from_radians(deg.to_radians() + d).unwrap();
+                    p.point(&m.pose(angle)).coords
+                };
+                let rate = (at(h) - at(-h)) / (2.0 * h);
+                let second = (at(h) - 2.0 * at(0.0) + at(-h)) / (h * h);
+                let pose = m.pose(Angle::deg(deg));
+                let v = VelocityPolygon::construct(&pose, Some(p));
+                let a = AccelerationPolygon::construct(&pose, &v, Some(p));
+                let scale = r * (1.0 + across.abs()) * (l / (l - r - e.abs())).powi(3);
+                assert!(
+                    (v.q().unwrap() - rate).norm() <= 1e-6 * scale,
+                    "{l} {e} {deg}"
+                );
+                assert!(
+                    (a.q().unwrap() - second).norm() <= 1e-5 * scale,
+                    "{l} {e} {deg}: {:?} {second:?}",
+                    a.q()
+                );
+            }
+        }
     }
 }
