@@ -481,3 +481,57 @@ fn an_off_rod_point_s_images_are_its_motion_by_finite_differences() {
         }
     }
 }
+
+#[test]
+fn a_scene_file_gives_a_point_off_the_rod_and_writes_it_back() {
+    use slider_crank::SceneFile;
+    let text = "figure = \"velocity-acceleration-polygons\"\ncoupler = [0.3, -0.4]\n";
+    let scene = SceneFile::from_toml(text).unwrap().into_scene().unwrap();
+    assert_eq!(scene.coupler(), CouplerPoint::off_rod(0.3, -0.4).unwrap());
+    // The scene written back reads to the same point; on the rod, a number.
+    let written = slider_crank::FigureName::VelocityAccelerationPolygons.scene_toml();
+    assert!(written.contains("\ncoupler = 0.5\n"), "{written}");
+    let back = written.replace("\ncoupler = 0.5\n", "\ncoupler = [0.3, -0.4]\n");
+    let again = SceneFile::from_toml(&back).unwrap().into_scene().unwrap();
+    assert_eq!(again.coupler(), scene.coupler());
+    for bad in ["[0.3, 0.1, 0.2]", "[]", "[1.5, 0]", "[0.5, 101]"] {
+        let text = format!("figure = \"velocity-acceleration-polygons\"\ncoupler = {bad}\n");
+        let e = SceneFile::from_toml(&text)
+            .and_then(|f| f.into_scene())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("line 2") && !e.contains('\n'), "{bad}: {e}");
+    }
+}
+
+#[test]
+fn the_figure_draws_a_point_off_the_rod_as_the_plate_abq_with_its_image_triangles() {
+    use slider_crank::catalogue::FigureRequest;
+    let mut request = FigureRequest::default();
+    request.coupler = Some((0.5, 0.25));
+    let name = slider_crank::FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&request.options(name).unwrap()).unwrap());
+    for id in [
+        "link-rod-plate",
+        "velocity-aq",
+        "velocity-bq",
+        "acceleration-a2q2",
+        "acceleration-b2q2",
+    ] {
+        assert!(svg.contains(&format!("id=\"{id}\"")), "{id}");
+    }
+    // Q stands where the point's formula puts it: on the page, the plate's
+    // middle vertex is the marker of Q.
+    let plate = crate::common::attr(&svg, "link-rod-plate", "d").unwrap();
+    let q = (
+        crate::common::num(&svg, "point-Q", "cx"),
+        crate::common::num(&svg, "point-Q", "cy"),
+    );
+    assert!(
+        plate.contains(&format!("L{} {}", q.0, q.1)),
+        "{plate} {q:?}"
+    );
+    // On the rod (the default) none of them is drawn.
+    let own = slider_crank::render::to_svg(&name.figure(&Default::default()).unwrap());
+    assert!(!own.contains("rod-plate") && !own.contains("velocity-aq"));
+}

@@ -132,7 +132,9 @@ pub(crate) fn place(ctx: &LayerCtx) -> Placed {
     // room for the letters between (a drawing made small by a page held
     // to a low height would otherwise set them among the mechanism's).
     let letters = ctx.sizes.page_scale.map_or(0.0, |s| LETTER_ROOM / s);
-    let top = (-r).min(e - ctx.sizes.block_half_height) - gap - letters;
+    // Q off the rod's line may stand below the crank circle.
+    let q = scene.coupler().point(ctx.main.pose()).y;
+    let top = (-r).min(e - ctx.sizes.block_half_height).min(q) - gap - letters;
     // Mirrored, world x runs right to left on the page.
     let (v_left, a_left) = if scene.is_mirrored() {
         (left + a_width + between, left)
@@ -215,11 +217,16 @@ fn vector(canvas: &mut Canvas, id: String, role: Role, from: Point, to: Point) {
     canvas.push(id, role, Shape::Arrow { from, to });
 }
 
-/// Draws both polygons, each point lettered, and Q on the rod.
+/// Draws both polygons, each point lettered, and Q on the rod; a Q off
+/// the rod's line on the rod drawn as the plate ABQ, and its images with
+/// the triangles abq and a′b′q′ similar to it.
 pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     let placed = place(ctx);
     let pose = ctx.main.pose();
     let coupler = ctx.scene.coupler().point(pose);
+    if off_rod(ctx) {
+        canvas.link("rod-plate", vec![pose.a(), coupler, pose.b()]);
+    }
     canvas.point(ctx.letter(Coupler), coupler, Marker::Dot, pose.c());
     let hue = canvas.set_hue(Some(Hue::Velocity));
     let v = placed.velocity_points();
@@ -260,6 +267,19 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
             &[v_points, a_points].concat(),
         );
     }
+}
+
+/// Whether the scene's coupler point stands off the rod's line.
+fn off_rod(ctx: &LayerCtx) -> bool {
+    ctx.scene.coupler().across() != 0.0
+}
+
+/// The sides aq and bq of the image triangle of an off-rod Q (ids
+/// `{kind}-{a}{q}`, `{kind}-{b}{q}`), dashed.
+fn image_triangle(canvas: &mut Canvas, kind: &str, ids: [&str; 3], [a, b, q]: [Point; 3]) {
+    let [ia, ib, iq] = ids;
+    canvas.segment(format!("{kind}-{ia}{iq}"), Role::Auxiliary, a, q);
+    canvas.segment(format!("{kind}-{ib}{iq}"), Role::Auxiliary, b, q);
 }
 
 /// Room between a polygon and its caption below it, page units.
@@ -319,6 +339,9 @@ fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
     vector(canvas, format!("velocity-{o}{a}"), Role::Result, p.o, p.a);
     if let Some(q) = p.q {
         vector(canvas, format!("velocity-{o}q"), Role::Auxiliary, p.o, q);
+        if off_rod(ctx) {
+            image_triangle(canvas, "velocity", [&a, &b, "q"], [p.a, p.b, q]);
+        }
     }
     let mut letters = vec![(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
     letters.extend(p.q.map(|q| (Coupler, q)));
@@ -389,6 +412,9 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
             p.o,
             q,
         );
+        if off_rod(ctx) {
+            image_triangle(canvas, "acceleration", [&a, &b, "q2"], [p.a, p.b, q]);
+        }
     }
     let (normal, tangential) = (p.b - p.x, p.a - p.x);
     if canvas.page(normal.norm()) >= 2.0 * RIGHT_ANGLE
@@ -453,7 +479,7 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let ab = v.ab().norm();
     let normal = ab * ab / rod;
     let tangential = acc.tangential().norm();
-    vec![
+    let mut notes = vec![
         RichText::parse(&format!(
             "Velocity polygon, pole *{o}*: 1 {u} represents {} {u}/s; *{o}{b}* = {} {u} is *{cap_b}*’s velocity *r*ω = {} {u}/s, perpendicular to the crank.",
             sig(w / k),
@@ -492,7 +518,17 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             ctx.letter(Coupler),
             sig(w * w * aq)
         )),
-    ]
+    ];
+    let point = scene.coupler();
+    if off_rod(ctx) {
+        notes.push(RichText::parse(&format!(
+            "*{q_cap}* is a point of the rod’s plane, {} of *{cap_a}{cap_b}* from *{cap_a}* along it and {} of *{cap_a}{cap_b}* off it: the triangles *{a}{b}{q}* and {a2}{b2}{q2} are similar to *{cap_a}{cap_b}{q_cap}*.",
+            short(point.t()),
+            short(point.across().abs()),
+            q_cap = ctx.letter(Coupler),
+        )));
+    }
+    notes
 }
 
 #[cfg(test)]
