@@ -1218,6 +1218,7 @@ def figure(
     width: Union[None, float, str] = None,
     height: Union[None, float, str] = None,
     title: Optional[str] = None,
+    coupler: Union[None, float, Tuple[float, float]] = None,
 ) -> Figure:
     """The named figure (one of :data:`FIGURES`), as ``slider-crank figure
     NAME`` draws it; each option is the flag of that name (``None``: the
@@ -1239,7 +1240,10 @@ def figure(
     gas force in place of a diagram; ``mirror``: the cylinder on the left
     (True) or right (False);
     ``width``, ``height``: page units (800) or a size (``"120mm"``,
-    ``"4.5in"``); ``title``: set below the figure.
+    ``"4.5in"``); ``title``: set below the figure; ``coupler``: the
+    point Q of a mechanism figure's rod, ``t`` along it from A (0) to B
+    (1) or ``(t, h)`` with ``h`` rod lengths off its line, to the left of
+    A to B (default 0.5, the rod's middle).
     """
     options = _figure_options(locals())
     return Figure(_core.figure(name, **options), (name, options))
@@ -1276,7 +1280,18 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
         width=_length(width),
         height=_length(height),
         title=title,
+        coupler=_coupler(given.get("coupler")),
     )
+
+
+def _coupler(given: Union[None, float, Tuple[float, float]]) -> Optional[Tuple[float, float]]:
+    """``coupler`` as the native call takes it: ``(t, h)``."""
+    if given is None:
+        return None
+    if isinstance(given, tuple):
+        t, h = given
+        return (_real(t), _real(h))
+    return (_real(given), 0.0)
 
 
 
@@ -1585,6 +1600,7 @@ def animate(
     width: Union[None, float, str] = None,
     height: Union[None, float, str] = None,
     title: Optional[str] = None,
+    coupler: Union[None, float, Tuple[float, float]] = None,
 ) -> str:
     """One revolution of a mechanism figure in ``frames`` poses played in
     ``period`` seconds, as ``slider-crank animate NAME --out FILE`` makes

@@ -78,10 +78,10 @@ def test_max_cells_bounds_every_check() -> None:
     engine = sc.SliderCrank(0.5, 3.0)
     for check in (engine.check, engine.curved_slot(2.0).check,
                   sc.QuadricChain(1, 3, 2.5, 3).check):
-        with pytest.raises(ValueError, match=r"check asks for 1000 poses × 14 quantities = 14000 "
-                                             r"values, more than max_cells=13999"):
-            check(samples=1000, max_cells=13999)
-        assert check(samples=1000, max_cells=14000).rows
+        with pytest.raises(ValueError, match=r"check asks for 1000 poses × 16 quantities = 16000 "
+                                             r"values, more than max_cells=15999"):
+            check(samples=1000, max_cells=15999)
+        assert check(samples=1000, max_cells=16000).rows
 
 
 def test_max_cells_is_a_count() -> None:

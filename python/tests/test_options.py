@@ -33,6 +33,9 @@ def value(case: Dict[str, str]) -> Any:
         return text == "true"
     if keyword == "data":
         return REPO / text
+    if keyword == "coupler":
+        t, _, h = text.partition(",")
+        return (float(t), float(h)) if h else float(t)
     return text
 
 

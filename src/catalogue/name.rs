@@ -242,6 +242,9 @@ impl FigureName {
         if let Some(t) = &options.title {
             scene = scene.with_title(t.clone());
         }
+        if let Some(p) = options.coupler {
+            scene = scene.with_coupler(p);
+        }
         Ok(scene)
     }
 

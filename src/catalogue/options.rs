@@ -132,6 +132,12 @@ pub struct FigureOptions {
     pub height: Option<PageLength>,
     /// A title, set below the figure and written as the SVG's `<title>`.
     pub title: Option<Title>,
+    /// The point of the rod's plane a mechanism figure marks Q, whose
+    /// path the coupler layer draws and whose images the polygons layer
+    /// draws (default the rod's middle); off the rod's line, the rod is
+    /// drawn as the plate ABQ and the polygons with their triangles abq
+    /// and a′b′q′.
+    pub coupler: Option<crate::construct::CouplerPoint>,
 }
 
 /// One of the things a named figure may take from its options: each
@@ -167,6 +173,8 @@ pub(crate) enum Setting {
     Bore,
     /// A constant gas force.
     GasForce,
+    /// The coupler point Q.
+    Coupler,
 }
 
 impl Setting {
@@ -204,6 +212,7 @@ impl Setting {
             Setting::Fluctuation => Field::Fluctuation,
             Setting::Bore => Field::Bore,
             Setting::GasForce => Field::GasForce,
+            Setting::Coupler => Field::Coupler,
         };
         Wording::default().option(field)
     }
@@ -228,6 +237,7 @@ impl FigureOptions {
             (self.fluctuation.is_some(), Setting::Fluctuation),
             (self.bore.is_some(), Setting::Bore),
             (self.gas_force.is_some(), Setting::GasForce),
+            (self.coupler.is_some(), Setting::Coupler),
         ]
         .into_iter()
         .filter_map(|(set, s)| set.then_some(s))

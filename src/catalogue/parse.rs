@@ -41,12 +41,39 @@ struct File {
     torque: Option<Spanned<f64>>,
     /// The older spelling of `[units] force`.
     force_unit: Option<Spanned<Unit>>,
-    coupler: Option<Spanned<f64>>,
+    coupler: Option<Spanned<CouplerFile>>,
     tolerance: Option<Spanned<f64>>,
     /// The reciprocating mass of the engine dynamics diagrams.
     mass: Option<Spanned<f64>>,
     /// The coefficient of fluctuation of speed of `flywheel`.
     fluctuation: Option<Spanned<f64>>,
+}
+
+/// The coupler point in a scene file: `coupler = 0.3` (on the rod, from
+/// A), or `coupler = [0.5, 0.25]`, along the rod and off its line in rod
+/// lengths ([`CouplerPoint::off_rod`]).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(untagged)]
+enum CouplerFile {
+    Along(f64),
+    Point(Vec<f64>),
+}
+
+impl CouplerFile {
+    /// The point, or why not.
+    fn point(&self) -> Result<CouplerPoint> {
+        match self {
+            CouplerFile::Along(t) => CouplerPoint::new(*t),
+            CouplerFile::Point(p) => match p.as_slice() {
+                [t] => CouplerPoint::new(*t),
+                [t, h] => CouplerPoint::off_rod(*t, *h),
+                _ => Err(crate::error::Error::invalid(
+                    Input::Scene,
+                    "coupler is a number t or a list [t, h] of two".to_string(),
+                )),
+            },
+        }
+    }
 }
 
 /// A crank angle in a scene file: a number of degrees. A text such as
@@ -530,7 +557,7 @@ fn moving(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
         scene = scene.with_torque(at(text, t.span(), valid::torque(*t.get_ref()))?);
     }
     if let Some(q) = &file.coupler {
-        let point = CouplerPoint::new(*q.get_ref());
+        let point = q.get_ref().point();
         scene = scene.with_coupler(at(text, q.span(), point)?);
     }
     if let Some(t) = &file.tolerance {

@@ -5,6 +5,7 @@
 
 use super::{FigureName, FigureOptions, Fit};
 use crate::analytic::kinematics::{check_omega, omega_from_rpm};
+use crate::construct::CouplerPoint;
 use crate::error::{Error, Field, Input, Result, Wording};
 use crate::figure::{Font, PageLength, Style, Title};
 use crate::{mechanism::SliderCrank, scene::Layer, scene::Notation, units::Unit};
@@ -68,6 +69,11 @@ pub struct FigureRequest {
     pub height: Option<PageLength>,
     /// A title set below the figure.
     pub title: Option<Title>,
+    /// The coupler point Q of a mechanism figure as (t, h): t along the
+    /// rod from A (0) to B (1), h rod lengths off its line, to the left
+    /// of A → B where positive ([`CouplerPoint::off_rod`]: 0 ≤ t ≤ 1,
+    /// |h| ≤ 100, else refused).
+    pub coupler: Option<(f64, f64)>,
 }
 
 impl FigureRequest {
@@ -118,6 +124,10 @@ impl FigureRequest {
         options.width = self.width;
         options.height = self.height;
         options.title = self.title.clone();
+        options.coupler = self
+            .coupler
+            .map(|(t, h)| CouplerPoint::off_rod(t, h))
+            .transpose()?;
         Ok(options)
     }
 }

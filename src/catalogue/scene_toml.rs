@@ -195,6 +195,15 @@ fn look_keys(out: &mut String, scene: &Scene) {
     );
 }
 
+/// `coupler = t`, or `coupler = [t, h]` for a point off the rod's line.
+fn coupler(scene: &Scene) -> String {
+    let q = scene.coupler();
+    match q.across() {
+        0.0 => format!("coupler = {}", number(q.t())),
+        h => format!("coupler = [{}, {}]", number(q.t()), number(h)),
+    }
+}
+
 /// A scene's speed, torque, coupler point, tolerance and title.
 fn motion_keys(out: &mut String, scene: &Scene) {
     key(
@@ -210,7 +219,7 @@ fn motion_keys(out: &mut String, scene: &Scene) {
     key(
         out,
         "The point of the rod whose path the coupler layer draws, from A (0) to B (1).",
-        &format!("coupler = {}", number(scene.coupler().t())),
+        &coupler(scene),
     );
     key(
         out,

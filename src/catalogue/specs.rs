@@ -159,6 +159,7 @@ const SCENE: &[Setting] = &[
     Setting::Layers,
     Setting::Notation,
     Setting::Mirror,
+    Setting::Coupler,
 ];
 
 /// The mechanism setting, short for the table.

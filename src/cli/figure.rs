@@ -166,6 +166,34 @@ pub struct FigureFlags {
     /// subscript
     #[arg(long, value_name = "TEXT", allow_hyphen_values = true)]
     pub title: Option<Title>,
+    /// The point Q of a mechanism figure's rod, T along it from A (0) to
+    /// B (1) and, after a comma, H rod lengths off its line (to the left
+    /// of A to B where positive, |H| at most 100): its path in the
+    /// coupler layer, its images in the polygons layer; off the line the
+    /// rod is drawn as the plate ABQ [default: 0.5, the rod's middle]
+    #[arg(long, value_name = "T[,H]", allow_hyphen_values = true)]
+    pub coupler: Option<CouplerArg>,
+}
+
+/// `--coupler T[,H]`: a point along the rod and off its line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CouplerArg(pub f64, pub f64);
+
+impl std::str::FromStr for CouplerArg {
+    type Err = String;
+
+    /// `T` (H = 0) or `T,H`, each a number.
+    fn from_str(text: &str) -> std::result::Result<Self, String> {
+        let number = |s: &str| {
+            s.trim()
+                .parse::<f64>()
+                .map_err(|_| format!("'{text}' is not T or T,H (two numbers)"))
+        };
+        match text.split_once(',') {
+            Some((t, h)) => Ok(CouplerArg(number(t)?, number(h)?)),
+            None => Ok(CouplerArg(number(text)?, 0.0)),
+        }
+    }
 }
 
 /// Where `--out` sends a figure: a file and the format its extension
@@ -304,6 +332,7 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     request.width = args.width;
     request.height = args.height;
     request.title = args.title.clone();
+    request.coupler = args.coupler.map(|c| (c.0, c.1));
     request.options(name)
 }
 

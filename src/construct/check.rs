@@ -48,14 +48,25 @@ pub enum Quantity {
     /// Slider acceleration from CG by Bennett's construction (in-line
     /// engines only), scaled by rω².
     AccelerationBennett,
+    /// The speed of a point of the rod's plane off its line from oq, its
+    /// velocity image (the triangle abq similar to ABQ), scaled by rω.
+    OffRodVelocityPolygon,
+    /// The acceleration's magnitude of a point of the rod's plane off
+    /// its line from o′q′, its acceleration image, scaled by rω².
+    OffRodAccelerationPolygon,
 }
 
 /// The point of the rod whose images the cross-check reads: its middle.
 const CHECKED_COUPLER: f64 = 0.5;
 
+/// The point of the rod's plane off its line whose images the
+/// cross-check reads: over the rod's middle, a quarter of the rod's
+/// length to the left of A → B (t, across of [`CouplerPoint::off_rod`]).
+const CHECKED_OFF_ROD: (f64, f64) = (0.5, 0.25);
+
 impl Quantity {
     /// Every quantity, in report order.
-    pub const ALL: [Quantity; 14] = [
+    pub const ALL: [Quantity; 16] = [
         Quantity::Velocity,
         Quantity::RodAngularVelocity,
         Quantity::AccelerationKisch,
@@ -70,6 +81,8 @@ impl Quantity {
         Quantity::CouplerAccelerationPolygon,
         Quantity::AccelerationRitterhaus,
         Quantity::AccelerationBennett,
+        Quantity::OffRodVelocityPolygon,
+        Quantity::OffRodAccelerationPolygon,
     ];
 
     /// A short name for reports.
@@ -89,6 +102,8 @@ impl Quantity {
             Quantity::CouplerAccelerationPolygon => "mid-rod acceleration (o′q′, polygon)",
             Quantity::AccelerationRitterhaus => "acceleration (CG, Ritterhaus)",
             Quantity::AccelerationBennett => "acceleration (CG, Bennett)",
+            Quantity::OffRodVelocityPolygon => "off-rod point's speed (oq, polygon)",
+            Quantity::OffRodAccelerationPolygon => "off-rod point's acceleration (o′q′, polygon)",
         }
     }
 }
@@ -128,6 +143,9 @@ impl CheckRow {
 /// docs/design.md §6: κ = 1 + T (1 + k (l/w)²), where T is the sum of the
 /// magnitudes of the terms of its formula (scaled), w = l cos φ, and k = 2
 /// for the rates (one w in a denominator), 6 for the accelerations (w³).
+/// A point of the rod's plane `across` rod lengths off its line adds
+/// `across` times the images' difference b − a to its image, so its terms
+/// are the rod point's times 1 + |across|.
 ///
 /// Every quantity is a sum of terms that divide by powers of
 /// w = √(l² − h²), h = r sin θ − e. A relative change δ of the inputs
@@ -144,6 +162,7 @@ pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
     let (s, c) = (pose.angle().sin().abs(), pose.angle().cos().abs());
     let r = m.crank();
     let (rc_w, h) = (r * c / w, h.abs());
+    let off = 1.0 + CHECKED_OFF_ROD.1.abs();
     // Terms over r (slider) or 1 (rod), as in Pose's formulas.
     let (terms, k) = match quantity {
         Quantity::Velocity | Quantity::VelocityPolygon => (s + c * h / w, 2.0),
@@ -158,6 +177,11 @@ pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
         Quantity::CouplerAccelerationPolygon => {
             (1.0 + c + c * rc_w * (l / w) * (l / w) + s * h / w, 6.0)
         }
+        Quantity::OffRodVelocityPolygon => (off * (1.0 + s + c * h / w), 2.0),
+        Quantity::OffRodAccelerationPolygon => (
+            off * (1.0 + c + c * rc_w * (l / w) * (l / w) + s * h / w),
+            6.0,
+        ),
         Quantity::RodAngularAccelerationKisch
         | Quantity::RodAngularAccelerationKlein
         | Quantity::RodAngularAccelerationPolygon => (r * s / w + rc_w * rc_w * h / w, 6.0),
@@ -167,8 +191,9 @@ pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
 }
 
 /// Every construction of `pose` against the analytic core. Klein's rows are
-/// missing where D is at infinity, Bennett's for an offset engine. The polygons' coupler rows read the
-/// images of the rod's mid-point.
+/// missing where D is at infinity, Bennett's for an offset engine. The
+/// polygons' coupler rows read the images of the rod's mid-point, their
+/// off-rod rows those of [`CHECKED_OFF_ROD`].
 pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
     let r = pose.mechanism().crank();
     let d = InstantCentre::construct(pose);
@@ -242,15 +267,19 @@ pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
 
 /// The rows of the velocity and acceleration polygons of `pose`, made by
 /// `row` (quantity, graphical, analytic, scale).
-fn polygon_rows(pose: &Pose, row: &impl Fn(Quantity, f64, f64, f64) -> CheckRow) -> [CheckRow; 6] {
+fn polygon_rows(pose: &Pose, row: &impl Fn(Quantity, f64, f64, f64) -> CheckRow) -> [CheckRow; 8] {
     let r = pose.mechanism().crank();
-    // cannot fail: CHECKED_COUPLER is within [0, 1].
+    // cannot fail: CHECKED_COUPLER and CHECKED_OFF_ROD are within range.
     let coupler = CouplerPoint::new(CHECKED_COUPLER).ok();
+    let off_rod = CouplerPoint::off_rod(CHECKED_OFF_ROD.0, CHECKED_OFF_ROD.1).ok();
     let v = VelocityPolygon::construct(pose, coupler);
     let acc = AccelerationPolygon::construct(pose, &v, coupler);
+    let v_off = VelocityPolygon::construct(pose, off_rod);
+    let acc_off = AccelerationPolygon::construct(pose, &v_off, off_rod);
     let norm = |x: Option<crate::geom::Vector>| x.map_or(f64::NAN, |x| x.norm());
-    let exact = |f: fn(&CouplerPoint, &Pose) -> crate::geom::Vector| {
-        coupler.map_or(f64::NAN, |p| f(&p, pose).norm())
+    let exact = |point: Option<CouplerPoint>,
+                 f: fn(&CouplerPoint, &Pose) -> crate::geom::Vector| {
+        point.map_or(f64::NAN, |p| f(&p, pose).norm())
     };
     [
         row(
@@ -268,7 +297,7 @@ fn polygon_rows(pose: &Pose, row: &impl Fn(Quantity, f64, f64, f64) -> CheckRow)
         row(
             Quantity::CouplerVelocityPolygon,
             norm(v.q()),
-            exact(CouplerPoint::derivative),
+            exact(coupler, CouplerPoint::derivative),
             r,
         ),
         row(
@@ -286,7 +315,19 @@ fn polygon_rows(pose: &Pose, row: &impl Fn(Quantity, f64, f64, f64) -> CheckRow)
         row(
             Quantity::CouplerAccelerationPolygon,
             norm(acc.q()),
-            exact(CouplerPoint::second_derivative),
+            exact(coupler, CouplerPoint::second_derivative),
+            r,
+        ),
+        row(
+            Quantity::OffRodVelocityPolygon,
+            norm(v_off.q()),
+            exact(off_rod, CouplerPoint::derivative),
+            r,
+        ),
+        row(
+            Quantity::OffRodAccelerationPolygon,
+            norm(acc_off.q()),
+            exact(off_rod, CouplerPoint::second_derivative),
             r,
         ),
     ]

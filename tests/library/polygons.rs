@@ -10,13 +10,15 @@ use slider_crank::geom::{Vector, cross};
 use slider_crank::{Angle, SliderCrank};
 
 /// The polygons' quantities in the cross-check.
-const POLYGON: [Quantity; 6] = [
+const POLYGON: [Quantity; 8] = [
     Quantity::VelocityPolygon,
     Quantity::RodAngularVelocityPolygon,
     Quantity::CouplerVelocityPolygon,
     Quantity::AccelerationPolygon,
     Quantity::RodAngularAccelerationPolygon,
     Quantity::CouplerAccelerationPolygon,
+    Quantity::OffRodVelocityPolygon,
+    Quantity::OffRodAccelerationPolygon,
 ];
 
 fn polygons(m: &SliderCrank, deg: f64, t: f64) -> (VelocityPolygon, AccelerationPolygon) {
@@ -437,4 +439,99 @@ fn analyze_json_carries_the_images_of_a_point_off_the_rod() {
         let exact = q.second_derivative(&pose) * (w * w);
         assert!((acc - exact).norm() <= 1e-12 * w * w * 4.0, "{deg}");
     }
+}
+
+#[test]
+fn an_off_rod_point_s_images_are_its_motion_by_finite_differences() {
+    // The images q and q′ of a point of the rod's plane off its line
+    // against central differences of its place over θ (step 1e-4 rad:
+    // truncation of order 1e-9 of r, rounding of 1e-8 in the second), at offsets and short rods.
+    let h = 1e-4;
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 4.0, 1.5),
+        (1.0, 2.5, -1.2),
+    ] {
+        let m = SliderCrank::new(r, l, e).unwrap();
+        for (t, across) in [(0.5, 0.25), (0.0, -1.0), (1.0, 3.0)] {
+            let p = CouplerPoint::off_rod(t, across).unwrap();
+            for k in 0..24 {
+                let deg = 15.0 * f64::from(k) + 0.5;
+                let at = |d: f64| {
+                    let angle = Angle::from_radians(deg.to_radians() + d).unwrap();
+                    p.point(&m.pose(angle)).coords
+                };
+                let rate = (at(h) - at(-h)) / (2.0 * h);
+                let second = (at(h) - 2.0 * at(0.0) + at(-h)) / (h * h);
+                let pose = m.pose(Angle::deg(deg));
+                let v = VelocityPolygon::construct(&pose, Some(p));
+                let a = AccelerationPolygon::construct(&pose, &v, Some(p));
+                let scale = r * (1.0 + across.abs()) * (l / (l - r - e.abs())).powi(3);
+                assert!(
+                    (v.q().unwrap() - rate).norm() <= 1e-6 * scale,
+                    "{l} {e} {deg}"
+                );
+                assert!(
+                    (a.q().unwrap() - second).norm() <= 1e-5 * scale,
+                    "{l} {e} {deg}: {:?} {second:?}",
+                    a.q()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_scene_file_gives_a_point_off_the_rod_and_writes_it_back() {
+    use slider_crank::SceneFile;
+    let text = "figure = \"velocity-acceleration-polygons\"\ncoupler = [0.3, -0.4]\n";
+    let scene = SceneFile::from_toml(text).unwrap().into_scene().unwrap();
+    assert_eq!(scene.coupler(), CouplerPoint::off_rod(0.3, -0.4).unwrap());
+    // The scene written back reads to the same point; on the rod, a number.
+    let written = slider_crank::FigureName::VelocityAccelerationPolygons.scene_toml();
+    assert!(written.contains("\ncoupler = 0.5\n"), "{written}");
+    let back = written.replace("\ncoupler = 0.5\n", "\ncoupler = [0.3, -0.4]\n");
+    let again = SceneFile::from_toml(&back).unwrap().into_scene().unwrap();
+    assert_eq!(again.coupler(), scene.coupler());
+    for bad in ["[0.3, 0.1, 0.2]", "[]", "[1.5, 0]", "[0.5, 101]"] {
+        let text = format!("figure = \"velocity-acceleration-polygons\"\ncoupler = {bad}\n");
+        let e = SceneFile::from_toml(&text)
+            .and_then(|f| f.into_scene())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("line 2") && !e.contains('\n'), "{bad}: {e}");
+    }
+}
+
+#[test]
+fn the_figure_draws_a_point_off_the_rod_as_the_plate_abq_with_its_image_triangles() {
+    use slider_crank::catalogue::FigureRequest;
+    let mut request = FigureRequest::default();
+    request.coupler = Some((0.5, 0.25));
+    let name = slider_crank::FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&request.options(name).unwrap()).unwrap());
+    for id in [
+        "link-rod-plate",
+        "velocity-aq",
+        "velocity-bq",
+        "acceleration-a2q2",
+        "acceleration-b2q2",
+    ] {
+        assert!(svg.contains(&format!("id=\"{id}\"")), "{id}");
+    }
+    // Q stands where the point's formula puts it: on the page, the plate's
+    // middle vertex is the marker of Q.
+    let plate = crate::common::attr(&svg, "link-rod-plate", "d").unwrap();
+    let q = (
+        crate::common::num(&svg, "point-Q", "cx"),
+        crate::common::num(&svg, "point-Q", "cy"),
+    );
+    assert!(
+        plate.contains(&format!("L{} {}", q.0, q.1)),
+        "{plate} {q:?}"
+    );
+    // On the rod (the default) none of them is drawn.
+    let own = slider_crank::render::to_svg(&name.figure(&Default::default()).unwrap());
+    assert!(!own.contains("rod-plate") && !own.contains("velocity-aq"));
 }

@@ -18,3 +18,4 @@ mod diagrams;
 mod figure_layout;
 mod figures;
 mod plates;
+mod polygon_figures;

@@ -107,6 +107,8 @@ fn frame_with(ctx: &LayerCtx, with_d: bool) -> Frame {
             b.add(p);
             b.add(p - Vector::new(0.0, below));
         }
+        // Q, which may stand off the rod's line.
+        b.add(scene.coupler().point(ctx.main.pose()));
     }
     if let Some(f) = scene.holding() {
         b.add(f.min());

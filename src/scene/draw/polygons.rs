@@ -31,6 +31,14 @@ const GAP: f64 = 0.5;
 /// units.
 const LETTER_ROOM: f64 = 24.0;
 
+/// The least room between the two polygons, page units: a letter group
+/// of three images ("*b*, *a*, *q*", about 57 units) set beside the
+/// velocity polygon's right vertex, one beside the acceleration polygon's
+/// left vertex, and two ems between (near 90° the polygons are needles
+/// whose letters stand on one line: 0.5 k r apart, "*b*, *a*, *q*  *c*′,
+/// *a*′" read as one string).
+const LETTERS_APART: f64 = 150.0;
+
 /// Shortest vector drawn as an arrow, page units: shorter, its head would
 /// hide it (a zero vector, at a dead centre or 90°, is not drawn).
 const MIN_ARROW: f64 = 12.0;
@@ -115,19 +123,23 @@ pub(crate) fn place(ctx: &LayerCtx) -> Placed {
     // In world lengths only: a gap that followed the page scale would
     // move the frame the fit is made for between its passes.
     let gap = GAP * k * r;
-    let width = v_width + gap + a_width;
+    let apart = ctx.sizes.page_scale.map_or(0.0, |s| LETTERS_APART / s);
+    let between = gap.max(apart);
+    let width = v_width + between + a_width;
     let (_, right) = ctx.sizes.guides();
     let left = 0.5 * (-r + right) - 0.5 * width;
     // Below the mechanism by the gap and, once the page scale is known,
     // room for the letters between (a drawing made small by a page held
     // to a low height would otherwise set them among the mechanism's).
     let letters = ctx.sizes.page_scale.map_or(0.0, |s| LETTER_ROOM / s);
-    let top = (-r).min(e - ctx.sizes.block_half_height) - gap - letters;
+    // Q off the rod's line may stand below the crank circle.
+    let q = scene.coupler().point(ctx.main.pose()).y;
+    let top = (-r).min(e - ctx.sizes.block_half_height).min(q) - gap - letters;
     // Mirrored, world x runs right to left on the page.
     let (v_left, a_left) = if scene.is_mirrored() {
-        (left + a_width + gap, left)
+        (left + a_width + between, left)
     } else {
-        (left, left + v_width + gap)
+        (left, left + v_width + between)
     };
     let velocity_pole = Point::new(v_left - v_lo.x, top - v_hi.y);
     let acceleration_pole = Point::new(a_left - a_lo.x, top - a_hi.y);
@@ -205,11 +217,16 @@ fn vector(canvas: &mut Canvas, id: String, role: Role, from: Point, to: Point) {
     canvas.push(id, role, Shape::Arrow { from, to });
 }
 
-/// Draws both polygons, each point lettered, and Q on the rod.
+/// Draws both polygons, each point lettered, and Q on the rod; a Q off
+/// the rod's line on the rod drawn as the plate ABQ, and its images with
+/// the triangles abq and a′b′q′ similar to it.
 pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     let placed = place(ctx);
     let pose = ctx.main.pose();
     let coupler = ctx.scene.coupler().point(pose);
+    if off_rod(ctx) {
+        canvas.link("rod-plate", vec![pose.a(), coupler, pose.b()]);
+    }
     canvas.point(ctx.letter(Coupler), coupler, Marker::Dot, pose.c());
     let hue = canvas.set_hue(Some(Hue::Velocity));
     let v = placed.velocity_points();
@@ -250,6 +267,19 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
             &[v_points, a_points].concat(),
         );
     }
+}
+
+/// Whether the scene's coupler point stands off the rod's line.
+fn off_rod(ctx: &LayerCtx) -> bool {
+    ctx.scene.coupler().across() != 0.0
+}
+
+/// The sides aq and bq of the image triangle of an off-rod Q (ids
+/// `{kind}-{a}{q}`, `{kind}-{b}{q}`), dashed.
+fn image_triangle(canvas: &mut Canvas, kind: &str, ids: [&str; 3], [a, b, q]: [Point; 3]) {
+    let [ia, ib, iq] = ids;
+    canvas.segment(format!("{kind}-{ia}{iq}"), Role::Auxiliary, a, q);
+    canvas.segment(format!("{kind}-{ib}{iq}"), Role::Auxiliary, b, q);
 }
 
 /// Room between a polygon and its caption below it, page units.
@@ -309,6 +339,9 @@ fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
     vector(canvas, format!("velocity-{o}{a}"), Role::Result, p.o, p.a);
     if let Some(q) = p.q {
         vector(canvas, format!("velocity-{o}q"), Role::Auxiliary, p.o, q);
+        if off_rod(ctx) {
+            image_triangle(canvas, "velocity", [&a, &b, "q"], [p.a, p.b, q]);
+        }
     }
     let mut letters = vec![(CrankCentre, p.o), (CrankPin, p.b), (Slider, p.a)];
     letters.extend(p.q.map(|q| (Coupler, q)));
@@ -379,6 +412,9 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
             p.o,
             q,
         );
+        if off_rod(ctx) {
+            image_triangle(canvas, "acceleration", [&a, &b, "q2"], [p.a, p.b, q]);
+        }
     }
     let (normal, tangential) = (p.b - p.x, p.a - p.x);
     if canvas.page(normal.norm()) >= 2.0 * RIGHT_ANGLE
@@ -443,7 +479,7 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let ab = v.ab().norm();
     let normal = ab * ab / rod;
     let tangential = acc.tangential().norm();
-    vec![
+    let mut notes = vec![
         RichText::parse(&format!(
             "Velocity polygon, pole *{o}*: 1 {u} represents {} {u}/s; *{o}{b}* = {} {u} is *{cap_b}*’s velocity *r*ω = {} {u}/s, perpendicular to the crank.",
             sig(w / k),
@@ -482,7 +518,17 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             ctx.letter(Coupler),
             sig(w * w * aq)
         )),
-    ]
+    ];
+    let point = scene.coupler();
+    if off_rod(ctx) {
+        notes.push(RichText::parse(&format!(
+            "*{q_cap}* is a point of the rod’s plane, {} of *{cap_a}{cap_b}* from *{cap_a}* along it and {} of *{cap_a}{cap_b}* off it: the triangles *{a}{b}{q}* and {a2}{b2}{q2} are similar to *{cap_a}{cap_b}{q_cap}*.",
+            short(point.t()),
+            short(point.across().abs()),
+            q_cap = ctx.letter(Coupler),
+        )));
+    }
+    notes
 }
 
 #[cfg(test)]

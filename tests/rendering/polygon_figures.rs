@@ -1,0 +1,141 @@
+//! The polygon figures (velocity-acceleration-polygons, the Coriolis
+//! figures of inversions 2 and 3 and the inversion figures they draw
+//! their mechanism with) read back from their SVG at the engines of the
+//! fifth review (docs/figures/review-2026-11e.md) where a reader misread
+//! them.
+
+use crate::common::attr;
+use crate::plate::{Label, Plate};
+use slider_crank::catalogue::FigureOptions;
+use slider_crank::{Angle, FigureName, SliderCrank};
+
+/// The figure `name` of the engine r = 1, `rod`, `offset` at `deg`, as
+/// written.
+fn svg(name: FigureName, rod: f64, offset: f64, deg: f64) -> String {
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+    options.angle = Some(Angle::deg(deg));
+    slider_crank::render::to_svg(&name.figure(&options).unwrap())
+}
+
+/// The letters of the images of one polygon: `label-` and a lower-case
+/// image id, primed (`c2`) in the acceleration polygon, not in the
+/// velocity polygon.
+fn images(plate: &Plate, primed: bool) -> Vec<&Label> {
+    (plate.texts.iter())
+        .filter(|t| {
+            t.id.strip_prefix("label-").is_some_and(|rest| {
+                rest.chars().all(|c| c.is_ascii_lowercase() || c == '2')
+                    && rest.starts_with(|c: char| c.is_ascii_lowercase())
+                    && rest.ends_with('2') == primed
+            })
+        })
+        .collect()
+}
+
+#[test]
+fn the_two_polygons_letter_groups_stand_apart() {
+    // At l = 2.46 r, e = 1.05 r, 90.7° both polygons are needles whose
+    // letters stand on one line: "b, a, q" and "c′, a′" 11 units apart
+    // read as one string. Letters of the two polygons at one height keep
+    // two ems (34 units at 17) between them.
+    const APART: f64 = 34.0;
+    for (rod, offset, deg) in [
+        (2.46, 1.05, 90.7),
+        (28.8, 0.0, 90.35),
+        (1.1, 0.0, 90.15),
+        (1.04, 0.0, 90.95),
+        (2.46, 1.05, 270.41),
+        (4.0, 0.0, 45.0),
+    ] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        let (velocity, acceleration) = (images(&plate, false), images(&plate, true));
+        assert!(!velocity.is_empty() && !acceleration.is_empty());
+        for v in &velocity {
+            for a in &acceleration {
+                let level = v.rect.y0.max(a.rect.y0) < v.rect.y1.min(a.rect.y1);
+                let gap = (a.rect.x0 - v.rect.x1).max(v.rect.x0 - a.rect.x1);
+                assert!(
+                    !level || gap >= APART,
+                    "l = {rod}, e = {offset}, {deg}°: {} and {} {gap:.1} apart",
+                    v.id,
+                    a.id
+                );
+            }
+        }
+    }
+}
+
+/// The points of the path `id`, in page units.
+fn path(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
+    let numbers: Vec<f64> = d
+        .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
+/// The angle in degrees between the directions `p` → `q` and `p` → `s`.
+fn angle_at(p: (f64, f64), q: (f64, f64), s: (f64, f64)) -> f64 {
+    let (u, v) = ((q.0 - p.0, q.1 - p.1), (s.0 - p.0, s.1 - p.1));
+    let cross = u.0 * v.1 - u.1 * v.0;
+    let dot = u.0 * v.0 + u.1 * v.1;
+    cross.abs().atan2(dot).to_degrees()
+}
+
+#[test]
+fn the_frame_d_s_leg_stands_off_the_crank() {
+    // With an offset near r, near 90° or 270° the leg of the frame d from
+    // C to its slot lay on the crank CB (inversion 3 at l = 2.94 r, e =
+    // 1.07 r, 89.2°, and inversion 2 at l = 2.5 r, e = −0.866 r, 270.44°,
+    // where the crank is the fixed link a): d read as a pin on a, its
+    // slot as the rod. The leg leaves C at least 20° (less a drawing's
+    // rounding) from the crank at every such pose.
+    let mut bent = 0;
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion2, 2.5, -0.866, 270.44),
+        (FigureName::CoriolisInversion2, 2.5, -0.866, 89.61),
+        (FigureName::CoriolisInversion2, 1.9, 0.85, 90.0),
+        (FigureName::CoriolisInversion3, 2.94, 1.07, 89.2),
+        (FigureName::CoriolisInversion3, 2.24, 0.672, 89.5),
+        (FigureName::CoriolisInversion3, 2.08, -0.54, 270.86),
+        (FigureName::CoriolisInversion3, 1.95, 0.9, 95.0),
+        (FigureName::CoriolisInversion3, 1.95, 0.9, 85.0),
+        (FigureName::Inversion2RotatingBlock, 2.5, -0.866, 270.44),
+        (
+            FigureName::Inversion3OscillatingCylinder,
+            2.46,
+            0.901,
+            89.62,
+        ),
+        (
+            FigureName::Inversion3OscillatingCylinder,
+            2.46,
+            0.901,
+            269.12,
+        ),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let (frame, crank) = (path(&svg, "link-frame"), path(&svg, "link-crank"));
+        // Both leave C, the crank's first point.
+        let c = crank[0];
+        assert!((frame[0].0 - c.0).hypot(frame[0].1 - c.1) < 0.02);
+        let apart = angle_at(c, frame[1], crank[1]);
+        assert!(
+            apart >= 19.9,
+            "{name:?} l = {rod}, e = {offset}, {deg}°: d's leg {apart:.2}° from the crank"
+        );
+        // The leg is not the perpendicular C → T where that would lie on
+        // the crank: count the bent legs.
+        let slot = (frame[2].0 - frame[1].0, frame[2].1 - frame[1].1);
+        let leg = (frame[1].0 - c.0, frame[1].1 - c.1);
+        let square =
+            (slot.0 * leg.0 + slot.1 * leg.1).abs() / (slot.0.hypot(slot.1) * leg.0.hypot(leg.1));
+        if square > 1e-3 {
+            bent += 1;
+        }
+    }
+    assert!(bent >= 8, "{bent} bent legs");
+}
