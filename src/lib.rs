@@ -153,6 +153,7 @@ pub mod handout;
 mod html;
 pub mod input;
 pub mod layout;
+pub mod lists;
 
 mod mechanism;
 pub mod number;
