@@ -25,8 +25,8 @@ use std::path::PathBuf;
 /// and μ = 1 for forces, the textbook's rows and columns for the ratio
 /// tables: [`crate::sources`]). Each field is the option of its name on
 /// every front end ([`Field::key`]): the field `force_unit` is the
-/// command line's `--force-unit` and the Python package's keyword
-/// `force_unit`. [`TableRequest::plan`] checks it; a field the table
+/// command line's option of that name, hyphenated, and the Python
+/// package's keyword. [`TableRequest::plan`] checks it; a field the table
 /// does not use is refused there, as a field given with another it
 /// cannot go with.
 ///
