@@ -3,7 +3,7 @@
 
 use clap::Args;
 use slider_crank::dynamics::{Engine, EngineParts, EnginePose, IndicatorText, unbalanced_forces};
-use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::plain;
 use slider_crank::table::mass_unit;
 use slider_crank::{Angle, Error, Input, Result, SliderCrank, Units};

@@ -13,7 +13,7 @@ use crate::dynamics::{
     FlywheelAsk, IndicatorText, InlineEngine, PartialBalance, RadialEngine, default_planes,
 };
 use crate::error::{Error, Field, Input, Result, Wording};
-use crate::input::{MAX_DATA_BYTES, read_text};
+use crate::files::{MAX_DATA_BYTES, read_text};
 use crate::lists::{AngleSpec, Angles};
 use crate::mechanism::SliderCrank;
 use crate::sources::{CHAIN_60, ENGINE_35, NG_FRICTION, NG_RIG, NG_TORQUE, RPM};
