@@ -15,9 +15,9 @@ use pyo3::prelude::*;
 use slider_crank::animate::{Animation, AnimationFormat};
 use slider_crank::catalogue::{FigureOptions, FigureRequest};
 use slider_crank::construct::{Graphical, Reading};
+use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::{DynamicsAsk, Handout};
-use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::lists::Angles;
 use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
