@@ -834,3 +834,51 @@ impl<'a> TablePlan<'a> {
         Ok(table)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_request_of_no_option_is_the_gallery_s_table() {
+        // The gallery's tables are made by the functions of each table
+        // with its defaults written out (TableName::table), apart from
+        // the request.
+        for name in TableName::GALLERY {
+            let planned = TableRequest::new(name).plan().unwrap().text().unwrap();
+            let own = name.table().unwrap().render(Format::Text);
+            assert_eq!(planned, own, "{}", name.name());
+        }
+    }
+
+    #[test]
+    fn fields_are_refused_by_their_keys() {
+        let mut r = TableRequest::new(TableName::Kinematics);
+        r.force_unit = Some("N".parse().unwrap());
+        let e = r.plan().unwrap_err().to_string();
+        assert_eq!(e, "table kinematics does not use `force_unit`");
+        let mut r = TableRequest::new(TableName::Dynamics);
+        r.rod_mass = Some(1.0);
+        let e = r.plan().unwrap_err().to_string();
+        assert_eq!(
+            e,
+            "the rod's mass is given by `rod_mass`, `rod_cg` and `rod_gyration` together: `rod_cg` and `rod_gyration` not given"
+        );
+        let angles = [0.0, f64::NAN];
+        let mut r = TableRequest::new(TableName::Kinematics);
+        r.angles = Some(Angles::List(&angles));
+        let e = r.plan().unwrap_err().to_string();
+        assert!(e.starts_with("invalid angle 'NaN'"), "{e}");
+    }
+
+    #[test]
+    fn the_bound_allows_exactly_the_values_asked() {
+        // Kinematics: 13 angles (0° to 360° by 30°) × 7 columns = 91.
+        let mut r = TableRequest::new(TableName::Kinematics);
+        r.max_cells = 91;
+        assert!(r.plan().is_ok());
+        r.max_cells = 90;
+        let e = r.plan().unwrap_err().to_string();
+        assert!(e.contains("= 91 values, more than `max_cells = 90`"), "{e}");
+    }
+}
