@@ -144,6 +144,7 @@ mod error;
 #[cfg(feature = "explore")]
 pub mod explore;
 pub mod figure;
+pub mod files;
 #[cfg(feature = "html")]
 pub mod gallery;
 pub mod geom;
@@ -151,8 +152,8 @@ pub mod geom;
 pub mod handout;
 #[cfg(feature = "html")]
 mod html;
-pub mod input;
 pub mod layout;
+pub mod lists;
 
 mod mechanism;
 pub mod number;

@@ -19,6 +19,15 @@ pub const NG_RIG: (f64, f64) = (25.0, 72.0);
 /// 9.81 m/s² × 27 mm, in N·mm (264.87).
 pub const NG_TORQUE: f64 = 9.81 * 27.0;
 
+/// Ng's coefficient of friction of the slider in its guides: his block
+/// first slid on a plane tilted at 45°, μ = tan 45° = 1.
+pub const NG_FRICTION: f64 = 1.0;
+
+/// The chain of the textbook's Fig. 60, with a rod short enough for its
+/// inversions to read: crank r = 0.5, rod l = 1.5 (the quick return's
+/// default).
+pub const CHAIN_60: (f64, f64) = (0.5, 1.5);
+
 /// Ng's Table 1: force in newtons (weights of 0.25 … 1.5 kg) against
 /// strain reading (×10⁻⁶), the points his calibration line is fitted
 /// through.

@@ -1295,28 +1295,6 @@ def _coupler(given: Union[None, float, Tuple[float, float]]) -> Optional[Tuple[f
 
 
 
-#: The keywords each table takes beyond ``format``, ``angles`` (the
-#: command line refuses a flag its table does not use, as :func:`table`
-#: refuses the keyword).
-_TABLE_USES: Dict[str, Tuple[str, ...]] = {
-    "obliquity": ("n",),
-    "acceleration-factor": ("n",),
-    "kinematics": ("crank", "rod", "offset", "rpm", "omega", "decimals", "unit"),
-    "forces": ("crank", "rod", "offset", "torque", "friction", "decimals", "unit", "force_unit"),
-    "dynamics": (
-        "crank", "rod", "offset", "rpm", "omega", "decimals", "unit", "force_unit",
-        "mass", "rod_mass", "rod_cg", "rod_gyration", "gas_force", "indicator", "bore",
-        "phases", "fluctuation", "flywheel",
-    ),
-    "balance": ("crank", "rod", "decimals", "unit", "cranks", "planes"),
-    "harmonics": ("crank", "rod", "decimals", "order"),
-    "partial-balance": (
-        "crank", "decimals", "unit", "force_unit", "mass", "fractions", "wheel", "speed", "load",
-    ),
-    "radial": ("crank", "rod", "decimals", "axes"),
-}
-
-
 def table(
     name: str,
     format: str = "text",
@@ -1351,6 +1329,8 @@ def table(
     speed: Optional[float] = None,
     load: Optional[float] = None,
     axes: Optional[Sequence[float]] = None,
+    inversion: Optional[int] = None,
+    lever: Optional[float] = None,
     max_cells: int = _core.DEFAULT_MAX_CELLS,
 ) -> str:
     """A table as ``slider-crank table NAME`` prints it: ``obliquity``,
@@ -1382,9 +1362,15 @@ def table(
     ``wheel``, ``speed``, ``mass`` and ``crank`` (and ``load``) for a
     locomotive's hammer blow (see :func:`hammer_blow`); ``radial``
     (cylinders on one crank, see :func:`radial`) takes their ``axes``
-    (the 90° V-twin, −45 and 45, by default) and n = ``rod`` / ``crank``.
-    A keyword the table does not use raises ``ValueError``, as the command
-    line refuses the flag.
+    (the 90° V-twin, −45 and 45, by default) and n = ``rod`` / ``crank``;
+    ``quick-return`` (the tool's motion of inversion 3, or 2 with
+    ``inversion=2``) takes ``lever``, the arm of the slotted link that
+    drives the tool (l + r by default), and the mechanism (Fig. 60's chain
+    r = 0.5, l = 1.5 by default) and speed. The keywords fill the
+    library's request of the table, the one the command line's flags
+    fill, and it checks them: a keyword the table does not use raises
+    ``ValueError``, as the command line refuses the flag, and so does
+    every value the command line refuses, in its words.
 
     ``max_cells`` bounds the values the table computes, rows × columns,
     with the command line's guard and default (``--max-cells``, 50 000 000,
@@ -1393,30 +1379,14 @@ def table(
     computed (``angles`` are read in place, not copied). The text is built
     in memory, about 15 to 20 bytes a value.
     """
-    given = {
-        k: v for k, v in locals().items() if k not in ("name", "format", "angles", "max_cells")
-    }
-    uses = _TABLE_USES.get(name)
-    if uses is not None:
-        unused = [k for k, v in given.items() if v is not None and k not in uses]
-        if unused:
-            raise ValueError(f"table {name} does not use {unused[0]}")
-    engine = None
-    if name == "dynamics":
-        m = _table_engine(crank, rod, offset)
-        w = _core.crank_speed(rpm, omega)
-        engine = m._engine(
-            w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore,
-            default_mass=_core.EXAMPLE_MASS,
-        )
     return _core.table(
         name,
         format,
-        n=None if n is None else [_real(x) for x in n],
+        n=_reals(n),
         angles=None if angles is None else _angles(angles).reshape(-1),
         crank=_option(crank),
         rod=_option(rod),
-        offset=0.0 if offset is None else _real(offset),
+        offset=_option(offset),
         rpm=_option(rpm),
         omega=_option(omega),
         torque=_option(torque),
@@ -1424,19 +1394,26 @@ def table(
         decimals=decimals,
         unit=unit,
         force_unit=force_unit,
-        engine=engine,
-        phases=None if phases is None else [_real(p) for p in phases],
+        mass=_option(mass),
+        rod_mass=_option(rod_mass),
+        rod_cg=_option(rod_cg),
+        rod_gyration=_option(rod_gyration),
+        gas_force=_option(gas_force),
+        indicator=None if indicator is None else os.fspath(indicator),
+        bore=_option(bore),
+        phases=_reals(phases),
         fluctuation=_option(fluctuation),
         flywheel=_option(flywheel),
         cranks=_reals(cranks),
         planes=_reals(planes),
         order=None if order is None else _order(order),
         fractions=_reals(fractions),
-        mass=_option(mass) if name == "partial-balance" else None,
         wheel=_option(wheel),
         speed=_option(speed),
         load=_option(load),
         axes=_reals(axes),
+        inversion=inversion,
+        lever=_option(lever),
         max_cells=_max_cells(max_cells),
     )
 
@@ -1542,17 +1519,6 @@ def hammer_blow(
     """
     return _core.hammer_blow(
         _real(fraction), _real(mass), _real(crank), _real(wheel), _real(speed), _option(load)
-    )
-
-
-def _table_engine(
-    crank: Optional[float], rod: Optional[float], offset: Optional[float]
-) -> SliderCrank:
-    """The mechanism of ``table dynamics``: §35's engine by default."""
-    return SliderCrank(
-        0.5 if crank is None else crank,
-        3.0 if rod is None else rod,
-        0.0 if offset is None else offset,
     )
 
 

@@ -128,17 +128,6 @@ pub fn harmonics(py: Python<'_>, n: f64, order: usize) -> PyResult<String> {
     .to_string())
 }
 
-/// The fractions of `table partial-balance` (`--fractions`), the
-/// library's default when `None`, each checked.
-pub fn partial_balances(fractions: Option<Vec<f64>>) -> PyResult<Vec<PartialBalance>> {
-    let fractions = fractions.unwrap_or_else(|| slider_crank::dynamics::DEFAULT_FRACTIONS.to_vec());
-    finite_list(&fractions, "fraction")?;
-    fractions
-        .into_iter()
-        .map(|c| PartialBalance::new(c).map_err(py_err))
-        .collect()
-}
-
 /// The engine of cylinders on one crank at `axes` (degrees; the 90°
 /// V-twin when `None`) and ratio n, checked as `table radial` checks it.
 pub fn radial_engine(axes: Option<Vec<f64>>, ratio: f64) -> PyResult<RadialEngine> {

@@ -13,7 +13,7 @@ use slider_crank::dynamics::{
     Engine, EngineParts, EnginePose, Flywheel, FlywheelAsk, IndicatorText, TurningMoment,
     unbalanced_forces,
 };
-use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::table::dynamics_json;
 use slider_crank::{Angle, Input, SliderCrank};
 use std::path::PathBuf;

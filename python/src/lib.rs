@@ -15,14 +15,15 @@ use pyo3::prelude::*;
 use slider_crank::animate::{Animation, AnimationFormat};
 use slider_crank::catalogue::{FigureOptions, FigureRequest};
 use slider_crank::construct::{Graphical, Reading};
+use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::{DynamicsAsk, Handout};
-use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::lists::Angles;
 use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
     write_atomic_all,
 };
-use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
+use slider_crank::table::{DEFAULT_MAX_CELLS, TableName, TableRequest};
 use slider_crank::{
     Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Spelling, Unit, Units,
     Wording,
@@ -486,45 +487,23 @@ fn handout(
     .map_err(py_err)
 }
 
-/// The ratios n of a table, refused as `--n` refuses them.
-fn ratios(given: Option<Vec<f64>>, default: &[f64]) -> PyResult<Vec<f64>> {
-    let ratios = given.unwrap_or_else(|| default.to_vec());
-    if let Some(x) = ratios.iter().find(|x| x.is_nan()) {
-        return Err(PyValueError::new_err(format!(
-            "invalid n '{x}': expected a finite number"
-        )));
-    }
-    Ok(ratios)
-}
-
-/// The angles of a table: those given (a float64 array, never copied),
-/// or the table's own.
-enum Angles<'a> {
-    Given(&'a [f64]),
-    Own(Vec<f64>),
-}
-
-impl Angles<'_> {
-    fn slice(&self) -> &[f64] {
-        match self {
-            Angles::Given(a) => a,
-            Angles::Own(a) => a,
-        }
-    }
-}
-
-/// A table as `slider-crank table NAME` prints it, with its flags as
-/// arguments (`None`: the table's default). Its size, rows × columns, is
-/// checked against `max_cells` (the library's guard, `--max-cells`)
-/// before any row is computed; the rows are then computed as the command
-/// line computes them, twice (once for the columns' widths, once
-/// written), so that only the text is held.
+/// A table as `slider-crank table NAME` prints it, each keyword the
+/// field of the library's request of that name (`None`: the table's
+/// default), checked and planned by the library as the command line's
+/// flags are ([`TableRequest::plan`]): a keyword the table does not use,
+/// a bad value and a size past `max_cells` (`--max-cells`, checked
+/// before any row is computed) are refused in the command line's words,
+/// the fields spelt as keywords. The angles are read in place, never
+/// copied; the rows are computed as the command line computes them,
+/// twice (once for the columns' widths, once written), so that only the
+/// text is held.
 #[pyfunction]
-#[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=0.0,
+#[pyo3(signature = (name, format="text", n=None, angles=None, crank=None, rod=None, offset=None,
     rpm=None, omega=None, torque=None, friction=None, decimals=None, unit=None, force_unit=None,
-    engine=None, phases=None, fluctuation=None, flywheel=None, cranks=None, planes=None,
-    order=None, fractions=None, mass=None, wheel=None, speed=None, load=None, axes=None,
-    max_cells=DEFAULT_MAX_CELLS))]
+    mass=None, rod_mass=None, rod_cg=None, rod_gyration=None, gas_force=None, indicator=None,
+    bore=None, phases=None, fluctuation=None, flywheel=None, cranks=None, planes=None,
+    order=None, fractions=None, wheel=None, speed=None, load=None, axes=None, inversion=None,
+    lever=None, max_cells=DEFAULT_MAX_CELLS))]
 #[allow(clippy::too_many_arguments)]
 fn table(
     py: Python<'_>,
@@ -534,7 +513,7 @@ fn table(
     angles: Option<PyReadonlyArray1<'_, f64>>,
     crank: Option<f64>,
     rod: Option<f64>,
-    offset: f64,
+    offset: Option<f64>,
     rpm: Option<f64>,
     omega: Option<f64>,
     torque: Option<f64>,
@@ -542,7 +521,13 @@ fn table(
     decimals: Option<usize>,
     unit: Option<&str>,
     force_unit: Option<&str>,
-    engine: Option<Bound<'_, dynamics::PyEngine>>,
+    mass: Option<f64>,
+    rod_mass: Option<f64>,
+    rod_cg: Option<f64>,
+    rod_gyration: Option<f64>,
+    gas_force: Option<f64>,
+    indicator: Option<PathBuf>,
+    bore: Option<f64>,
     phases: Option<Vec<f64>>,
     fluctuation: Option<f64>,
     flywheel: Option<f64>,
@@ -550,273 +535,31 @@ fn table(
     planes: Option<Vec<f64>>,
     order: Option<usize>,
     fractions: Option<Vec<f64>>,
-    mass: Option<f64>,
     wheel: Option<f64>,
     speed: Option<f64>,
     load: Option<f64>,
     axes: Option<Vec<f64>>,
+    inversion: Option<u32>,
+    lever: Option<f64>,
     max_cells: u64,
 ) -> PyResult<String> {
-    use slider_crank::table::{self as t, Format, Head, Table};
-    let format: Format = parse(format)?;
-    let bound = MaxCells::new(max_cells);
-    let given_decimals = decimals;
-    let decimals = decimals.unwrap_or(if name == "forces" { 2 } else { 4 });
-    if decimals > 17 {
-        return Err(py_err(Error::OutOfRange {
-            name: Field::Decimals,
-            value: decimals as f64,
-            reason: "at most 17 decimals are meaningful in f64".into(),
-        }));
-    }
     let given = angles.as_ref().map(|a| a.as_slice()).transpose()?;
-    if let Some(a) = given.into_iter().flatten().find(|a| !a.is_finite()) {
-        return Err(PyValueError::new_err(format!(
-            "invalid angle '{a}': the angle must be a finite number of degrees"
-        )));
-    }
-    let with_units = |own: Units| -> PyResult<Units> {
-        let mut u = own;
-        if let Some(l) = unit {
-            u = u.with_length(parse(l)?);
-        }
-        if let Some(f) = force_unit {
-            u = u.with_force(parse(f)?);
-        }
-        Ok(u)
-    };
-    let angles_or = |d: &[f64]| given.map_or_else(|| Angles::Own(d.to_vec()), Angles::Given);
-    if name == "harmonics" {
-        // The whole series at once, as the command line writes it (no
-        // angles: it has a row per harmonic); 8 decimals by default.
-        let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
-        let order = order.unwrap_or(balance::DEFAULT_ORDER);
-        let series = py
-            .detach(|| slider_crank::analytic::harmonics::Harmonics::new(m.ratio(), order))
-            .map_err(py_err)?;
-        let table = t::harmonics_table(
-            &series,
-            given_decimals.map_or(slider_crank::analytic::harmonics::DEFAULT_DECIMALS, |_| {
-                decimals
-            }),
-        );
-        let head = Head {
-            title: &table.title,
-            headers: &table.headers,
-            notes: &table.notes,
-        };
-        let mut text = String::new();
-        t::render_rows(
-            format,
-            &head,
-            || table.rows.iter().cloned().map(Ok),
-            &mut |s| {
-                text.push_str(s);
-                Ok(())
-            },
-        )
-        .map_err(py_err)?;
-        return Ok(text);
-    }
-    let range = |a: f64, b: f64, step: f64| -> Vec<f64> {
-        (0..=((b - a) / step) as usize)
-            .map(|k| a + step * k as f64)
-            .collect()
-    };
-    // The table's head and its rows, one call per angle (a row of cells,
-    // or the rows of an angle for obliquity), checked against the bound.
-    type Rows<'r> = Box<dyn Fn(f64) -> slider_crank::Result<Vec<Vec<String>>> + Send + Sync + 'r>;
-    let one = |row: slider_crank::Result<Vec<String>>| row.map(|r| vec![r]);
-    let ratios_given = n;
-    let engine_ref = engine.as_ref().map(|e| e.get().engine());
-    let phases = phases.unwrap_or_else(|| vec![0.0]);
-    let (head, spec, rows): (Table, Angles<'_>, Rows<'_>) = match name {
-        "obliquity" => {
-            let ratios = ratios(ratios_given, &[4.0, 5.0, 6.0])?;
-            let spec = angles_or(&[90.0]);
-            // Over several angles the title names none and each row its
-            // own (the library's rule, as the command line writes it).
-            let several = spec.slice().len() > 1;
-            let first = spec.slice().first().copied().unwrap_or(90.0);
-            let head = t::obliquity_head(&ratios, first, several).map_err(py_err)?;
-            bound
-                .check_obliquity(
-                    spec.slice().len() as u64,
-                    ratios.len() as u64,
-                    head.headers.len(),
-                )
-                .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |a| t::obliquity_rows(&ratios, a, several));
-            (head, spec, rows)
-        }
-        "acceleration-factor" => {
-            let ratios = ratios(ratios_given, &t::TEXTBOOK_RATIOS)?;
-            let head = t::acceleration_factor_table(&ratios, &[]).map_err(py_err)?;
-            let spec = angles_or(&t::TEXTBOOK_ANGLES);
-            bound
-                .check_angles(
-                    "table acceleration-factor",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
-                .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |d| {
-                let t = t::acceleration_factor_table(&ratios, &[d])?;
-                Ok(vec![t.rows.into_iter().next().unwrap_or_default()])
-            });
-            (head, spec, rows)
-        }
-        "kinematics" => {
-            let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
-            let w = crank_speed(rpm, omega)?;
-            let head = t::kinematics_head(&m, w, &with_units(Units::FOOT_POUND)?);
-            let spec = angles_or(&range(0.0, 360.0, 30.0));
-            bound
-                .check_angles(
-                    "table kinematics",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
-                .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |d| one(t::kinematics_row(&m, w, d, decimals)));
-            (head, spec, rows)
-        }
-        "forces" => {
-            let m = self::engine(crank.unwrap_or(25.0), rod.unwrap_or(72.0), offset)?;
-            let torque = torque.unwrap_or(slider_crank::sources::NG_TORQUE);
-            if !torque.is_finite() {
-                return Err(py_err(Error::NotFinite {
-                    name: Field::Torque,
-                    value: torque,
-                }));
-            }
-            let mu = friction.unwrap_or(1.0);
-            let head = t::forces_head(&m, torque, mu, &with_units(Units::MILLIMETRE_NEWTON)?);
-            let spec = angles_or(&range(10.0, 160.0, 10.0));
-            bound
-                .check_angles(
-                    "table forces",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
-                .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |d| one(t::forces_row(&m, torque, mu, d, decimals)));
-            (head, spec, rows)
-        }
-        "dynamics" => {
-            let engine = engine_ref
-                .ok_or_else(|| PyValueError::new_err("table dynamics needs an engine"))?;
-            let ask = dynamics::flywheel_ask(fluctuation, flywheel)?;
-            let units = with_units(Units::FOOT_POUND)?;
-            let head = py
-                .detach(|| t::dynamics_head(engine, &phases, ask, &units))
-                .map_err(py_err)?;
-            let spec = angles_or(&range(0.0, 360.0, 30.0));
-            // Each cylinder's torque beyond the first is computed for
-            // every row too, as the command line counts it.
-            bound
-                .check_cylinders(spec.slice().len() as u64, head.headers.len(), phases.len())
-                .map_err(py_err)?;
-            let phases = &phases;
-            let rows: Rows<'_> =
-                Box::new(move |d| one(t::dynamics_row(engine, phases, d, decimals)));
-            (head, spec, rows)
-        }
-        "balance" => {
-            let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
-            let inline = balance::inline_engine(cranks, planes, m.ratio())?;
-            let head = t::balance_head(&inline, &with_units(Units::FOOT_POUND)?);
-            let spec = angles_or(&range(0.0, 360.0, 30.0));
-            bound
-                .check_angles(
-                    "table balance",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
-                .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |d| one(t::balance_row(&inline, d, decimals)));
-            (head, spec, rows)
-        }
-        "partial-balance" => {
-            let balances = balance::partial_balances(fractions)?;
-            let locomotive = match wheel {
-                Some(w) => Some(
-                    t::Locomotive::new(
-                        mass.unwrap_or(0.0),
-                        crank.unwrap_or(0.0),
-                        w,
-                        speed.unwrap_or(0.0),
-                        load,
-                    )
-                    .map_err(py_err)?,
-                ),
-                None if mass.is_some() || crank.is_some() => {
-                    return Err(PyValueError::new_err(
-                        "table partial-balance takes mass and crank for the hammer blow only: give wheel and speed with them",
-                    ));
-                }
-                None => None,
-            };
-            let head = t::partial_balance_head(
-                &balances,
-                locomotive.as_ref(),
-                &with_units(Units::FOOT_POUND)?,
-            )
-            .map_err(py_err)?;
-            let spec = angles_or(&range(0.0, 360.0, 30.0));
-            bound
-                .check_angles(
-                    "table partial-balance",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
-                .map_err(py_err)?;
-            let rows: Rows<'_> =
-                Box::new(move |d| one(t::partial_balance_row(&balances, d, decimals)));
-            (head, spec, rows)
-        }
-        "radial" => {
-            let m = self::engine(crank.unwrap_or(0.5), rod.unwrap_or(3.0), offset)?;
-            let engine = balance::radial_engine(axes, m.ratio())?;
-            let head = t::radial_head(&engine);
-            let spec = angles_or(&range(0.0, 360.0, 30.0));
-            bound
-                .check_angles(
-                    "table radial",
-                    spec.slice().len() as u64,
-                    head.headers.len(),
-                )
-                .map_err(py_err)?;
-            let rows: Rows<'_> = Box::new(move |d| one(t::radial_row(&engine, d, decimals)));
-            (head, spec, rows)
-        }
-        _ => {
-            return Err(PyValueError::new_err(format!(
-                "unknown table '{name}': the tables are obliquity, acceleration-factor, kinematics, forces, dynamics, balance, partial-balance, radial and harmonics"
-            )));
-        }
-    };
-    let head = Head {
-        title: &head.title,
-        headers: &head.headers,
-        notes: &head.notes,
-    };
-    let angles = spec.slice();
-    let mut text = String::new();
-    py.detach(|| {
-        let each = || {
-            angles.iter().flat_map(|&a| match rows(a) {
-                Ok(rows) => rows.into_iter().map(Ok).collect::<Vec<_>>(),
-                Err(e) => vec![Err(e)],
-            })
-        };
-        t::render_rows(format, &head, each, &mut |s| {
-            text.push_str(s);
-            Ok(())
-        })
-    })
-    .map_err(py_err)?;
-    Ok(text)
+    let mut r = TableRequest::new(parse::<TableName>(name)?);
+    r.format = parse(format)?;
+    r.n = n;
+    r.angles = given.map(Angles::List);
+    (r.crank, r.rod, r.offset) = (crank, rod, offset);
+    (r.rpm, r.omega, r.torque, r.friction) = (rpm, omega, torque, friction);
+    r.decimals = decimals;
+    r.unit = unit.map(parse::<Unit>).transpose()?;
+    r.force_unit = force_unit.map(parse::<Unit>).transpose()?;
+    (r.mass, r.rod_mass, r.rod_cg, r.rod_gyration) = (mass, rod_mass, rod_cg, rod_gyration);
+    (r.gas_force, r.indicator, r.bore) = (gas_force, indicator, bore);
+    (r.phases, r.fluctuation, r.flywheel) = (phases, fluctuation, flywheel);
+    (r.cranks, r.planes, r.order, r.fractions) = (cranks, planes, order, fractions);
+    (r.wheel, r.speed, r.load, r.axes) = (wheel, speed, load, axes);
+    (r.inversion, r.lever, r.max_cells) = (inversion, lever, max_cells);
+    py.detach(|| r.plan()?.text()).map_err(py_err)
 }
 
 /// Writes each text of `files` to its path whole, or none of them, as the

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import slider_crank as sc
-from conftest import REPO, Cli
+from conftest import REPO, Cli, keywords
 
 INDICATOR = REPO / "examples/indicator.csv"
 
@@ -248,8 +248,10 @@ def test_bad_dynamics_carry_the_command_lines_message(
     with pytest.raises((ValueError, OSError)) as caught:
         call()
     # the command line names its flags (--mass), Python its keywords (mass)
-    assert str(caught.value) == message or str(caught.value) == message.replace("--", "").replace(
-        "-", "_"
+    assert str(caught.value) in (
+        message,
+        message.replace("--", "").replace("-", "_"),
+        keywords(message),
     ), (str(caught.value), message)
 
 
@@ -317,7 +319,7 @@ def test_a_flywheel_is_asked_one_way() -> None:
     ):
         with pytest.raises(ValueError) as caught:
             call()
-        assert "fluctuation cannot be used with flywheel" in str(caught.value)
+        assert re.search("fluctuation=? cannot be used with flywheel=?", str(caught.value))
 
 
 # A four-stroke indicator diagram (the columns of tests/dynamics.rs's CSV4):

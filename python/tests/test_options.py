@@ -67,3 +67,72 @@ def test_a_keyword_does_as_its_flag(cli: Cli, case: Dict[str, str]) -> None:
     assert svg == cli.stdout(args)
     if case["outcome"] == "default":
         assert svg == sc.figure(name).svg
+
+
+with open(REPO / "tests/options/table.csv", newline="", encoding="utf-8") as _f:
+    TABLE_CASES: List[Dict[str, str]] = list(csv.DictReader(_f))
+
+#: The keywords of :func:`slider_crank.table` whose values are lists of
+#: numbers, whole numbers, and text (the rest are numbers).
+LISTS = {"n", "angles", "cranks", "planes", "fractions", "axes", "phases"}
+COUNTS = {"decimals", "order", "inversion", "max_cells"}
+TEXTS = {"format", "unit", "force_unit", "indicator"}
+
+
+def table_value(keyword: str, text: str) -> Any:
+    """A table option's value as the keyword takes it."""
+    if keyword in LISTS:
+        return [float(x) for x in text.split(",")]
+    if keyword in COUNTS:
+        return int(text)
+    if keyword in TEXTS:
+        return text
+    return float(text)
+
+
+def table_keywords(flags: List[str]) -> Dict[str, Any]:
+    """The keywords of the flags ``--flag=value``."""
+    out = {}
+    for f in flags:
+        flag, text = f.split("=", 1)
+        keyword = flag[2:].replace("-", "_")
+        out[keyword] = table_value(keyword, text)
+    return out
+
+
+def test_every_keyword_of_table_is_in_the_table() -> None:
+    named = set(inspect.signature(sc.table).parameters) - {"name"}
+    assert named == {c["keyword"] for c in TABLE_CASES}
+    for case in TABLE_CASES:
+        assert case["keyword"] == case["flag"][2:].replace("-", "_"), case
+
+
+@pytest.mark.parametrize(
+    "case", TABLE_CASES,
+    ids=lambda c: f"{c['table']} {c['with']} {c['flag']}={c['value'][:20]}",
+)
+def test_a_table_keyword_does_as_its_flag(
+    cli: Cli, case: Dict[str, str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # The paths of the table are the repository's, as the command line's.
+    monkeypatch.chdir(REPO)
+    name, given = case["table"], case["with"].split()
+    flags = [*given, f"{case['flag']}={case['value']}"]
+    options = table_keywords(flags)
+    args = ["table", name, *flags]
+    if case["outcome"] == "refused":
+        message = keywords(cli.error(args))
+        with pytest.raises((ValueError, OSError)) as caught:
+            sc.table(name, **options)
+        said = str(caught.value)
+        if "invalid value '" in message:
+            # The command line's parser refused it: the package names the
+            # value in the library's words.
+            assert case["value"] in said, (said, message)
+        else:
+            assert said in message, (said, message)
+        return
+    text = sc.table(name, **options)
+    assert text == cli.stdout(args)
+    if case["outcome"] == "default":
+        assert text == sc.table(name, **table_keywords(given))

@@ -1,6 +1,6 @@
 //! Exact kinematics of the slider and the rod at constant crank speed.
 
-use crate::error::{Error, Field, Result, finite};
+use crate::error::{Error, Field, Input, Result, Wording, finite};
 use crate::mechanism::Pose;
 
 /// Largest crank speed |ω| accepted, in rad/s (any unit of time: choose one
@@ -145,6 +145,25 @@ impl Kinematics {
     }
 }
 
+/// ω in rad/s from a speed given in rpm or as ω (`None`: neither given,
+/// the figure's own), each checked as everywhere ([`omega_from_rpm`],
+/// [`check_omega`]); both given are refused.
+pub fn crank_speed(rpm: Option<f64>, omega: Option<f64>) -> Result<Option<f64>> {
+    match (rpm, omega) {
+        (Some(_), Some(_)) => Err(Error::refused(
+            Input::Options,
+            Wording::from("give the crank speed as ")
+                .option(Field::Rpm)
+                .then(" or as ")
+                .option(Field::Omega)
+                .then(", not both"),
+        )),
+        (_, Some(w)) => check_omega(w).map(Some),
+        (Some(n), None) => omega_from_rpm(n).map(Some),
+        (None, None) => Ok(None),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     #[test]
@@ -162,6 +181,23 @@ mod tests {
 
     use super::*;
     use crate::{angle::Angle, mechanism::SliderCrank};
+
+    #[test]
+    fn a_speed_is_given_one_way_and_checked() {
+        // 60 rpm is one turn a second, 2π rad/s.
+        assert_eq!(
+            crank_speed(Some(60.0), None).unwrap(),
+            Some(std::f64::consts::TAU)
+        );
+        assert_eq!(crank_speed(None, Some(3.0)).unwrap(), Some(3.0));
+        assert_eq!(crank_speed(None, None).unwrap(), None);
+        let e = crank_speed(Some(1.0), Some(1.0)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "give the crank speed as `rpm` or as `omega`, not both"
+        );
+        assert!(crank_speed(Some(f64::NAN), None).is_err());
+    }
 
     #[test]
     fn rpm_conversion() {

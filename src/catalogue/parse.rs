@@ -5,7 +5,8 @@
 
 use super::{FigureName, FigureOptions, SceneFile, Setting};
 use crate::construct::CouplerPoint;
-use crate::error::{Error, Field, Input, Result};
+use crate::dynamics::checked_coefficient;
+use crate::error::{Error, Field, Input, Result, non_negative};
 use crate::figure::{Font, PageLength, Style, Title};
 use crate::scene::{Layer, Notation, Page, Scene, valid};
 use crate::{angle::Angle, mechanism::SliderCrank, units::Unit};
@@ -126,8 +127,8 @@ impl<'de> Deserialize<'de> for Degrees {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct MechanismFile {
-    crank: Spanned<f64>,
-    rod: Spanned<f64>,
+    crank: Option<Spanned<f64>>,
+    rod: Option<Spanned<f64>>,
     offset: Option<Spanned<f64>>,
     /// The older spelling of `[units] length`.
     unit: Option<Spanned<Unit>>,
@@ -309,26 +310,44 @@ pub(super) fn parse(text: &str) -> Result<SceneFile> {
     Ok(SceneFile::Mechanism(mechanism_scene(text, &file, start)?))
 }
 
-/// The validated mechanism of a `[mechanism]` table, an error located at
-/// the value that is wrong: the crank, the rod, or the offset.
-fn mechanism(text: &str, m: &MechanismFile) -> Result<SliderCrank> {
-    let offset = m.offset.as_ref().map_or(0.0, |o| *o.get_ref());
-    let built = SliderCrank::new(*m.crank.get_ref(), *m.rod.get_ref(), offset);
-    let span = match &built {
-        Err(
-            Error::NotPositive {
-                name: Field::Crank, ..
-            }
-            | Error::NotFinite {
-                name: Field::Crank, ..
-            },
-        ) => m.crank.span(),
+/// The validated mechanism of a `[mechanism]` table, the lengths it does
+/// not give `own`'s (as a flag changes one length of the figure's own),
+/// an error located at the value that is wrong: the crank, the rod, or
+/// the offset.
+fn mechanism(text: &str, m: &MechanismFile, own: &SliderCrank) -> Result<SliderCrank> {
+    let value = |v: &Option<Spanned<f64>>, own: f64| v.as_ref().map_or(own, |v| *v.get_ref());
+    let built = SliderCrank::new(
+        value(&m.crank, own.crank()),
+        value(&m.rod, own.rod()),
+        value(&m.offset, own.offset()),
+    );
+    let crank = matches!(
+        &built,
+        Err(Error::NotPositive {
+            name: Field::Crank,
+            ..
+        } | Error::NotFinite {
+            name: Field::Crank,
+            ..
+        })
+    );
+    let offset = matches!(
+        &built,
         Err(Error::NotFinite {
             name: Field::Offset,
             ..
-        }) => m.offset.as_ref().map_or(m.rod.span(), |o| o.span()),
-        _ => m.rod.span(),
+        })
+    );
+    // The value at fault, or else the first length the table gives.
+    let order = match (crank, offset) {
+        (true, _) => [&m.crank, &m.rod, &m.offset],
+        (_, true) => [&m.offset, &m.rod, &m.crank],
+        _ => [&m.rod, &m.crank, &m.offset],
     };
+    let span = order
+        .into_iter()
+        .find_map(|v| v.as_ref().map(Spanned::span))
+        .unwrap_or_default();
     at(text, span, built)
 }
 
@@ -474,7 +493,8 @@ fn named(text: &str, file: &File, mut scene: Scene) -> Result<Scene> {
         scene = scene.with_title(t.clone());
     }
     if let Some(m) = &file.mechanism {
-        scene = scene.with_mechanism(mechanism(text, m)?);
+        let built = mechanism(text, m, scene.mechanism())?;
+        scene = scene.with_mechanism(built);
     }
     let (length, force) = units(text, file)?;
     let units = scene.units().clone().asked(length.as_ref(), force.as_ref());
@@ -621,9 +641,14 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
     };
     let mut options = FigureOptions::default();
     if let Some(m) = &file.mechanism {
-        let built = mechanism(text, m)?;
-        refuse(Setting::Mechanism, "[mechanism]", m.crank.span())?;
-        options.mechanism = Some(built);
+        let first = [&m.crank, &m.rod, &m.offset]
+            .into_iter()
+            .find_map(|v| v.as_ref().map(Spanned::span));
+        if let Some(span) = first {
+            let built = mechanism(text, m, &name.mechanism())?;
+            refuse(Setting::Mechanism, "[mechanism]", span)?;
+            options.mechanism = Some(built);
+        }
     }
     if let Some(a) = &file.angle {
         let angle = at(text, a.span(), name.angle(a.get_ref().0))?;
@@ -652,11 +677,13 @@ fn diagram(text: &str, file: File, name: FigureName) -> Result<SceneFile> {
     }
     if let Some(m) = &file.mass {
         refuse(Setting::Mass, "mass", m.span())?;
-        options.mass = Some(*m.get_ref());
+        let mass = non_negative(Field::Mass, *m.get_ref());
+        options.mass = Some(at(text, m.span(), mass)?);
     }
     if let Some(c) = &file.fluctuation {
         refuse(Setting::Fluctuation, "fluctuation", c.span())?;
-        options.fluctuation = Some(*c.get_ref());
+        let coefficient = checked_coefficient(*c.get_ref());
+        options.fluctuation = Some(at(text, c.span(), coefficient)?);
     }
     options.style = file.style;
     options.font = file.font;

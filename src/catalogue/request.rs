@@ -4,7 +4,7 @@
 //! and resolved against the figure into its [`FigureOptions`].
 
 use super::{FigureName, FigureOptions, Fit};
-use crate::analytic::kinematics::{check_omega, omega_from_rpm};
+pub use crate::analytic::kinematics::crank_speed;
 use crate::construct::CouplerPoint;
 use crate::error::{Error, Field, Input, Result, Wording};
 use crate::figure::{Font, PageLength, Style, Title};
@@ -132,25 +132,6 @@ impl FigureRequest {
     }
 }
 
-/// ω in rad/s from a speed given in rpm or as ω (`None`: neither given,
-/// the figure's own), each checked as everywhere ([`omega_from_rpm`],
-/// [`check_omega`]); both given are refused.
-pub fn crank_speed(rpm: Option<f64>, omega: Option<f64>) -> Result<Option<f64>> {
-    match (rpm, omega) {
-        (Some(_), Some(_)) => Err(Error::refused(
-            Input::Options,
-            Wording::from("give the crank speed as ")
-                .option(Field::Rpm)
-                .then(" or as ")
-                .option(Field::Omega)
-                .then(", not both"),
-        )),
-        (_, Some(w)) => check_omega(w).map(Some),
-        (Some(n), None) => omega_from_rpm(n).map(Some),
-        (None, None) => Ok(None),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -171,23 +152,6 @@ mod tests {
                 .unwrap(),
             FigureOptions::default()
         );
-    }
-
-    #[test]
-    fn a_speed_is_given_one_way_and_checked() {
-        // 60 rpm is one turn a second, 2π rad/s.
-        assert_eq!(
-            crank_speed(Some(60.0), None).unwrap(),
-            Some(std::f64::consts::TAU)
-        );
-        assert_eq!(crank_speed(None, Some(3.0)).unwrap(), Some(3.0));
-        assert_eq!(crank_speed(None, None).unwrap(), None);
-        let e = crank_speed(Some(1.0), Some(1.0)).unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "give the crank speed as `rpm` or as `omega`, not both"
-        );
-        assert!(crank_speed(Some(f64::NAN), None).is_err());
     }
 
     #[test]

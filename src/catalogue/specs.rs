@@ -143,11 +143,7 @@ macro_rules! figures {
     };
 }
 
-use crate::sources::{ENGINE_35 as ENGINE, NG_RIG};
-
-/// The chain of Fig. 60, with a rod short enough for its inversions to
-/// read: r = 0.5, l = 1.5.
-const CHAIN: (f64, f64) = (0.5, 1.5);
+use crate::sources::{CHAIN_60 as CHAIN, ENGINE_35 as ENGINE, NG_RIG};
 
 /// What a mechanism figure takes.
 const SCENE: &[Setting] = &[

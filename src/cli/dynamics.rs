@@ -2,10 +2,8 @@
 //! cylinders and flywheel; and the dynamics section of `analyze`.
 
 use clap::Args;
-use slider_crank::dynamics::{
-    Engine, EngineParts, EnginePose, FlywheelAsk, IndicatorText, unbalanced_forces,
-};
-use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::dynamics::{Engine, EngineParts, EnginePose, IndicatorText, unbalanced_forces};
+use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::plain;
 use slider_crank::table::mass_unit;
 use slider_crank::{Angle, Error, Input, Result, SliderCrank, Units};
@@ -138,25 +136,6 @@ pub struct TurnArgs {
     /// coefficient of fluctuation of speed to the notes
     #[arg(long, allow_negative_numbers = true, value_name = "I")]
     pub flywheel: Option<f64>,
-}
-
-impl TurnArgs {
-    /// The phases in degrees.
-    pub fn phases(&self) -> Result<Vec<f64>> {
-        match &self.phases {
-            Some(s) => super::args::parse_list(s, "phase", false),
-            None => Ok(vec![0.0]),
-        }
-    }
-
-    /// What the flywheel note asks.
-    pub fn flywheel(&self) -> FlywheelAsk {
-        match (self.fluctuation, self.flywheel) {
-            (Some(c), _) => FlywheelAsk::Coefficient(c),
-            (_, Some(i)) => FlywheelAsk::Inertia(i),
-            _ => FlywheelAsk::None,
-        }
-    }
 }
 
 /// The dynamics section of `analyze`'s text.

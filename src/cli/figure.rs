@@ -5,7 +5,7 @@ use super::output::Stdout;
 use clap::Args;
 use slider_crank::catalogue::{FigureOptions, FigureRequest, Fit, Group};
 use slider_crank::figure::{Font, PageLength, Title};
-use slider_crank::input::{MAX_DATA_BYTES, read_text};
+use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{
     FileFormat, TikzOptions, same_file, to_svg, to_svg_with_fonts, to_tikz, write_atomic,
 };

@@ -3,8 +3,8 @@
 
 use super::output::{Progress, Stdout, say};
 use clap::Args;
+use slider_crank::files::{MAX_SCENE_BYTES, read_bytes_from, read_text};
 use slider_crank::gallery::{Gallery, leftovers, lock_directory};
-use slider_crank::input::{MAX_SCENE_BYTES, read_bytes_from, read_text};
 use slider_crank::{Error, FigureName, Input, Result};
 use std::io::ErrorKind;
 use std::path::{Path, PathBuf};

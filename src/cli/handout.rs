@@ -6,8 +6,8 @@
 use super::args::{GivenMechanismArgs, LoadArgs, SpeedArgs, UnitArgs};
 use super::output::{Progress, Stdout};
 use clap::Args;
+use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::handout::{Class, DynamicsAsk, Handout, Paper};
-use slider_crank::input::{MAX_DATA_BYTES, read_text};
 use slider_crank::render::{no_link_at_derived, write_atomic_all};
 use slider_crank::{Angle, Error, Input, Result, Units};
 use std::path::{Path, PathBuf};

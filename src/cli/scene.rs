@@ -4,7 +4,7 @@ use super::figure::{Encoding, destination, emit, not_an_input};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::figure::Font;
-use slider_crank::input::{MAX_SCENE_BYTES, read_text};
+use slider_crank::files::{MAX_SCENE_BYTES, read_text};
 use slider_crank::{Error, FigureName, Input, Result, SceneFile, Unit};
 use std::path::PathBuf;
 

@@ -168,6 +168,12 @@ pub enum Field {
     Mirror,
     /// The most values one request may compute.
     MaxCells,
+    /// The name of the length unit.
+    Unit,
+    /// The name of the force unit.
+    ForceUnit,
+    /// The crank angles of an in-line engine's cylinders.
+    Cranks,
     /// An engine's own indicator diagram (a handout's).
     Indicator,
     /// The file a figure, a handout or a gallery is written to, which
@@ -251,6 +257,9 @@ impl Field {
             Field::Notation => "notation",
             Field::Mirror => "mirror",
             Field::MaxCells => "max cells",
+            Field::Unit => "unit",
+            Field::ForceUnit => "force unit",
+            Field::Cranks => "crank angles",
             Field::Indicator => "indicator",
             Field::Out => "out",
         }
@@ -261,12 +270,22 @@ impl Field {
     /// flag is the key with hyphens for its underscores. A field whose
     /// name is one word is keyed by its name (`crank`, `data`); the
     /// parameters no request gives (a panel's width) are keyed by their
-    /// name too, as [`Field::name`] writes it.
+    /// name too, as [`Field::name`] writes it. A field a request gives as
+    /// a list is keyed by the list (`planes`, `axes`), its name the one
+    /// value a message is about (`plane`).
     pub fn key(self) -> &'static str {
         match self {
             Field::GasForce => "gas_force",
             Field::MaxCells => "max_cells",
             Field::RodCg => "rod_cg",
+            Field::RodMass => "rod_mass",
+            Field::RodGyration => "rod_gyration",
+            Field::ForceUnit => "force_unit",
+            Field::Cranks => "cranks",
+            Field::Phase => "phases",
+            Field::Plane => "planes",
+            Field::BalancedFraction => "fractions",
+            Field::Axis => "axes",
             Field::FluctuationOfSpeed | Field::Fluctuation => "fluctuation",
             Field::Ratio => "n",
             other => other.name(),

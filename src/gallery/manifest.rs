@@ -17,7 +17,7 @@ use super::{Gallery, SceneEntry};
 use crate::catalogue::{located, toml_error};
 use crate::error::{Error, Input, Result};
 use crate::figure::Font;
-use crate::input::{MAX_SCENE_BYTES, read_text};
+use crate::files::{MAX_SCENE_BYTES, read_text};
 use crate::render::FileFormat;
 use crate::{catalogue::FigureName, catalogue::SceneFile, figure::Style};
 use serde::Deserialize;

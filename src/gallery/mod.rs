@@ -159,7 +159,7 @@ impl Gallery {
         }
         let taken = self.figures.iter().any(|f| f.name() == name)
             || self.scenes.iter().any(|s| &s.name == name)
-            || TableName::ALL
+            || TableName::GALLERY
                 .iter()
                 .any(|t| Self::table_file(*t).strip_suffix(".txt") == Some(name));
         if taken {
@@ -207,7 +207,7 @@ impl Gallery {
         });
         figures
             .chain(scenes)
-            .chain(TableName::ALL.into_iter().map(Self::table_file))
+            .chain(TableName::GALLERY.into_iter().map(Self::table_file))
             .chain([INDEX.to_string()])
             .collect()
     }
@@ -269,7 +269,7 @@ impl Gallery {
     fn jobs(&self) -> Vec<Job> {
         let figures = self.figures.iter().map(|&f| Job::Figure(f));
         let scenes = (0..self.scenes.len()).map(Job::Scene);
-        let tables = TableName::ALL.into_iter().map(Job::Table);
+        let tables = TableName::GALLERY.into_iter().map(Job::Table);
         figures.chain(scenes).chain(tables).collect()
     }
 
@@ -340,7 +340,7 @@ mod tests {
         let names = Gallery::new().file_names();
         assert_eq!(
             names.len(),
-            FigureName::ALL.len() * 3 + TableName::ALL.len() + 1
+            FigureName::ALL.len() * 3 + TableName::GALLERY.len() + 1
         );
         for f in FigureName::ALL {
             for ext in ["svg", "png", "pdf"] {

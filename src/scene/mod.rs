@@ -327,10 +327,11 @@ pub struct Scene {
     /// A subject drawn on the mechanism that a detail holds where the
     /// main view draws it small ([`Scene::with_detail_subject`]).
     subject: Option<crate::geom::Frame>,
-    /// Where curves drawn on the mechanism turn (world x, and height
-    /// above the line of stroke, negative below), which the guides keep
-    /// clear of ([`Scene::with_guides_clear_of`]).
-    turns: Vec<(f64, f64)>,
+    /// Where curves drawn on the mechanism turn, reaching their highest
+    /// or lowest (world x, and height above the line of stroke, negative
+    /// below), which the guides keep clear of
+    /// ([`Scene::with_guides_clear_of`]).
+    extremes: Vec<(f64, f64)>,
     /// Whether the figure is drawn without an enlarged detail
     /// ([`Scene::without_detail`]).
     no_detail: bool,
@@ -373,7 +374,7 @@ impl Scene {
             held: None,
             holding: None,
             subject: None,
-            turns: Vec::new(),
+            extremes: Vec::new(),
             no_detail: false,
         }
     }
@@ -576,24 +577,24 @@ impl Scene {
     }
 
     /// The same scene with its guides set clear of curves drawn on the
-    /// mechanism that turn (reach their highest or lowest) at `turns`,
+    /// mechanism that turn (reach their highest or lowest) at `extremes`,
     /// world x and height above the line of stroke: the coupler curves'
     /// ovals, whose tops ran along a guide. The channel between the
     /// guides keeps its height where the turns over the guides' stretch
     /// are clear of them (or none is finite), else takes the height
     /// within bounds that stands farthest from every such turn
     /// ([`draw`]'s `channel_clear_of`).
-    pub(crate) fn with_guides_clear_of(mut self, turns: Vec<(f64, f64)>) -> Self {
-        self.turns = (turns.into_iter())
+    pub(crate) fn with_guides_clear_of(mut self, extremes: Vec<(f64, f64)>) -> Self {
+        self.extremes = (extremes.into_iter())
             .filter(|(x, y)| x.is_finite() && y.is_finite())
             .collect();
         self
     }
 
-    /// Where curves drawn on the mechanism turn
-    /// ([`Scene::with_guides_clear_of`]).
-    pub(crate) fn turns(&self) -> &[(f64, f64)] {
-        &self.turns
+    /// Where curves drawn on the mechanism turn, their highest and lowest
+    /// points ([`Scene::with_guides_clear_of`]).
+    pub(crate) fn extremes(&self) -> &[(f64, f64)] {
+        &self.extremes
     }
 
     /// The world frame the view holds besides what the layers draw

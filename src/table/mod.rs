@@ -12,6 +12,7 @@ mod partial;
 mod quick_return;
 mod radial;
 mod reading_json;
+mod request;
 
 use crate::analytic::approx::acceleration_factor;
 use crate::analytic::kinematics::Kinematics;
@@ -37,6 +38,7 @@ pub use partial::{Locomotive, partial_balance_head, partial_balance_row};
 pub use quick_return::{quick_return_head, quick_return_row};
 pub use radial::{radial_head, radial_row};
 pub use reading_json::ReadingJson;
+pub use request::{TablePlan, TableRequest};
 
 /// The textbook's n columns of the acceleration-factor table (∞ last).
 pub const TEXTBOOK_RATIOS: [f64; 6] = [4.0, 4.5, 5.0, 5.5, 6.0, f64::INFINITY];
@@ -56,7 +58,7 @@ pub enum Format {
     Csv,
 }
 
-crate::error::parse_by_name!(Format);
+crate::error::parse_by_name!(Format, TableName);
 
 impl Format {
     /// The name on the command line: `text`, `markdown`, `csv`.
@@ -530,9 +532,10 @@ pub fn forces_head(mechanism: &SliderCrank, torque: f64, mu: f64, units: &Units)
     }
 }
 
-/// The tables `slider-crank table NAME` prints, each with that command's
-/// defaults.
+/// The tables `slider-crank table NAME` prints; those of the gallery
+/// ([`TableName::GALLERY`]) each with a seed it reproduces.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum TableName {
     /// The error due to obliquity at θ = 90° for n = 4, 5, 6 (textbook §35).
     Obliquity,
@@ -545,11 +548,41 @@ pub enum TableName {
     /// The engine of §35 with a reciprocating mass of 10 slug at 250 rpm:
     /// inertia force, piston effort and crank effort, θ = 0° … 360° by 30°.
     Dynamics,
+    /// The unbalanced forces and couples of an in-line engine of several
+    /// cylinders against θ (the flat four by default).
+    Balance,
+    /// The piston's acceleration as a series of harmonics and the error of
+    /// each cut.
+    Harmonics,
+    /// A single cylinder's unbalanced force for each fraction of its
+    /// reciprocating mass balanced, and a locomotive's hammer blow.
+    PartialBalance,
+    /// The primary and secondary forces of cylinders on one crank (the
+    /// 90° V-twin by default).
+    Radial,
+    /// The tool's motion of a quick return (inversion 3 or 2) over its
+    /// cutting and return strokes.
+    QuickReturn,
 }
 
 impl TableName {
     /// Every table, in the order the command line's help lists them.
-    pub const ALL: [TableName; 5] = [
+    pub const ALL: [TableName; 10] = [
+        TableName::Obliquity,
+        TableName::AccelerationFactor,
+        TableName::Kinematics,
+        TableName::Forces,
+        TableName::Dynamics,
+        TableName::Balance,
+        TableName::Harmonics,
+        TableName::PartialBalance,
+        TableName::Radial,
+        TableName::QuickReturn,
+    ];
+
+    /// The tables the gallery writes, each with the seed it reproduces
+    /// ([`TableName::source`]).
+    pub const GALLERY: [TableName; 5] = [
         TableName::Obliquity,
         TableName::AccelerationFactor,
         TableName::Kinematics,
@@ -565,7 +598,29 @@ impl TableName {
             TableName::Kinematics => "kinematics",
             TableName::Forces => "forces",
             TableName::Dynamics => "dynamics",
+            TableName::Balance => "balance",
+            TableName::Harmonics => "harmonics",
+            TableName::PartialBalance => "partial-balance",
+            TableName::Radial => "radial",
+            TableName::QuickReturn => "quick-return",
         }
+    }
+
+    /// The table of that name; the error lists the names.
+    pub fn from_name(name: &str) -> Result<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|t| t.name() == name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Self::ALL.iter().map(TableName::name).collect();
+                Error::invalid(
+                    Input::Options,
+                    format!(
+                        "unknown table '{name}': the tables are {}",
+                        names.join(", ")
+                    ),
+                )
+            })
     }
 
     /// The seed and section it reproduces.
@@ -586,13 +641,22 @@ impl TableName {
             TableName::Dynamics => {
                 "Textbook §37 (Klein's CG) and Ng (T = F · OM), carried on by standard engine dynamics: the turning moment and the fluctuation of energy (no table in either seed)"
             }
+            TableName::Balance
+            | TableName::Harmonics
+            | TableName::PartialBalance
+            | TableName::Radial => {
+                "Textbook §35–37 (the acceleration of eq. (3)), carried on by the standard balance of reciprocating masses (no table in either seed)"
+            }
+            TableName::QuickReturn => {
+                "Textbook, Chapter IV “Slider-crank chains”: the quick return of inversions 2 and 3 (no table in the chapter)"
+            }
         }
     }
 
     /// The table with the defaults of `slider-crank table NAME`: n = 4, 5, 6
     /// at 90°; the textbook's rows and columns; r = 0.5 ft, l = 3 ft,
     /// 250 rpm, 4 decimals; r = 25 mm, l = 72 mm, T = 264.87 N·mm, μ = 1,
-    /// 2 decimals.
+    /// 2 decimals; the other tables as [`TableRequest::new`] asks them.
     pub fn table(&self) -> Result<Table> {
         let every = |from: u32, to: u32, step: u32| -> Vec<f64> {
             (from..=to).step_by(step as usize).map(f64::from).collect()
@@ -618,6 +682,7 @@ impl TableName {
                 &Units::MILLIMETRE_NEWTON,
             ),
             TableName::Dynamics => dynamics::example_table(&every(0, 360, 30)),
+            other => TableRequest::new(*other).plan()?.table(),
         }
     }
 }

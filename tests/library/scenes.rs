@@ -325,3 +325,63 @@ fn a_scenes_items_say_what_they_are_by_their_parts() {
     let main = figure.panels().first().unwrap();
     assert_eq!(ids(main, Part::Notes), ["note-scales"]);
 }
+
+/// The figure of a scene file, as SVG text.
+fn scene_svg(text: &str) -> String {
+    to_svg(&SceneFile::from_toml(text).unwrap().figure().unwrap())
+}
+
+/// The figure `name` as the request `request` asks it, as SVG text.
+fn request_svg(name: FigureName, request: slider_crank::catalogue::FigureRequest) -> String {
+    to_svg(&name.figure(&request.options(name).unwrap()).unwrap())
+}
+
+#[test]
+fn a_mechanism_table_may_give_one_length_as_a_flag_does() {
+    use slider_crank::catalogue::FigureRequest;
+    // A mechanism figure, a diagram and a plain scene: the lengths the
+    // table does not give are the figure's own (the §35 engine's r = 0.5,
+    // l = 3, in line), as `--rod 2.5` alone changes only the rod.
+    let mut rod = FigureRequest::default();
+    rod.rod = Some(2.5);
+    let mut crank = FigureRequest::default();
+    crank.crank = Some(0.4);
+    assert_eq!(
+        scene_svg("figure = \"fig-63-velocity\"\n[mechanism]\nrod = 2.5\n"),
+        request_svg(FigureName::Fig63Velocity, rod)
+    );
+    assert_eq!(
+        scene_svg("figure = \"turning-moment\"\n[mechanism]\ncrank = 0.4\n"),
+        request_svg(FigureName::TurningMoment, crank)
+    );
+    let plain = read_scene("[mechanism]\nrod = 2.5\n").unwrap();
+    let m = plain.mechanism();
+    assert_eq!((m.crank(), m.rod(), m.offset()), (0.5, 2.5, 0.0));
+    // A length that cannot be is still refused at its place.
+    let e = error("[mechanism]\n\nrod = 0.4\n");
+    assert!(
+        e.starts_with("line 3, column 7:") && e.contains("rod"),
+        "{e}"
+    );
+    let e = error("[mechanism]\noffset = 5\n");
+    assert!(e.starts_with("line 2, column 10:"), "{e}");
+}
+
+#[test]
+fn a_bad_mass_or_fluctuation_is_refused_at_its_line() {
+    let e = |text: &str| SceneFile::from_toml(text).unwrap_err().to_string();
+    let err = e("figure = \"turning-moment\"\n\nmass = -1\n");
+    assert_eq!(err, "line 3, column 8: mass must not be negative, got -1");
+    let err = e("figure = \"turning-moment\"\nmass = nan\n");
+    assert!(
+        err.starts_with("line 2, column 8: mass must be a finite"),
+        "{err}"
+    );
+    let err = e("figure = \"flywheel\"\nfluctuation = 3\n");
+    assert!(
+        err.starts_with("line 2, column 15: fluctuation = 3 is out of range"),
+        "{err}"
+    );
+    let err = e("figure = \"flywheel\"\nfluctuation = 0\n");
+    assert!(err.starts_with("line 2, column 15:"), "{err}");
+}

@@ -5,7 +5,8 @@
 //! becomes of it: drawn as the figure's own (`default`: the same bytes as
 //! the figure without the option), drawn (`ok`) or refused. Here the
 //! command line and the scene file are held to it; the table holds every
-//! option `figure --help` lists.
+//! option `figure --help` lists. The options of `table` have a table of
+//! their own, `tests/options/table.csv`, held the same way.
 
 use crate::command::run;
 use std::collections::BTreeSet;
@@ -150,4 +151,94 @@ fn the_command_line_and_scene_files_do_as_the_table_says() {
         holds(case, &out, &own, &format!("scene file {key:?}"));
     }
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// One case of `tests/options/table.csv`: a table, an option (its flag,
+/// its Python keyword) given with the options `with` (flags, each
+/// `--flag=value`, apart by spaces) and a value, and what becomes of it:
+/// the table's own text (`default`: the same bytes as without the
+/// option), a table (`ok`) or a refusal.
+struct TableCase {
+    table: String,
+    flag: String,
+    with: Vec<String>,
+    value: String,
+    outcome: String,
+}
+
+/// The cases of `tests/options/table.csv`.
+fn table_cases() -> Vec<TableCase> {
+    let text = std::fs::read_to_string("tests/options/table.csv").unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("table,flag,keyword,with,value,outcome"));
+    lines
+        .map(|line| {
+            let f = fields(line);
+            assert_eq!(f.len(), 6, "{line}");
+            TableCase {
+                table: f[0].clone(),
+                flag: f[1].clone(),
+                with: f[3].split_whitespace().map(String::from).collect(),
+                value: f[4].clone(),
+                outcome: f[5].clone(),
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn every_option_of_table_is_in_its_table() {
+    let help = String::from_utf8(run(&["table", "--help"]).stdout).unwrap();
+    let listed: BTreeSet<String> = help
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+        .filter(|w| w.starts_with("--") && w.len() > 2)
+        .map(String::from)
+        .collect();
+    // `--angle` is `--angles`' other spelling.
+    let not_options = ["--help", "--angle"];
+    let cases = table_cases();
+    for flag in listed.iter().filter(|f| !not_options.contains(&f.as_str())) {
+        for outcome in [["default", "ok"].as_slice(), &["refused"]] {
+            assert!(
+                cases
+                    .iter()
+                    .any(|c| &c.flag == flag && outcome.contains(&c.outcome.as_str())),
+                "{flag} has no case {outcome:?} in tests/options/table.csv"
+            );
+        }
+    }
+    assert!(
+        listed.contains("--max-cells") && listed.len() > 30,
+        "{listed:?}"
+    );
+}
+
+#[test]
+fn the_command_line_does_as_the_table_of_table_says() {
+    for case in table_cases() {
+        let mut args = vec!["table".to_string(), case.table.clone()];
+        args.extend(case.with.iter().cloned());
+        let plain: Vec<&str> = args.iter().map(String::as_str).collect();
+        let own = run(&plain).stdout;
+        let arg = format!("{}={}", case.flag, case.value);
+        args.push(arg.clone());
+        let given: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = run(&given);
+        let how = format!("table {} {} {arg}", case.table, case.with.join(" "));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        match case.outcome.as_str() {
+            "refused" => {
+                assert_eq!(out.status.code(), Some(2), "{how}: not refused");
+                assert_eq!(stderr.lines().count(), 1, "{how}: {stderr}");
+                assert!(out.stdout.is_empty(), "{how}");
+            }
+            outcome => {
+                assert!(out.status.success(), "{how}: {stderr}");
+                assert!(!out.stdout.is_empty(), "{how}");
+                if outcome == "default" {
+                    assert!(out.stdout == own, "{how}: not the table's own");
+                }
+            }
+        }
+    }
 }

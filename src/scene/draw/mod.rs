@@ -395,7 +395,7 @@ fn fit(ctx: &LayerCtx, band: f64) -> Layout {
     // of a per cent of the last.
     for _ in 0..FITS - 1 {
         let (_, fit) = main_view(&ctx, band, fit::frame(&ctx));
-        ctx.sizes = ctx.sizes.on_page(fit.scale(), ctx.scene.turns());
+        ctx.sizes = ctx.sizes.on_page(fit.scale(), ctx.scene.extremes());
     }
     let page = ctx.scene.page();
     let width = page.width() - 2.0 * page.margin();
@@ -481,7 +481,7 @@ pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
     };
     for _ in 0..FITS - 1 {
         let (_, fit) = main_view(&ctxs[0], band, union(&ctxs));
-        let sizes = ctxs[0].sizes.on_page(fit.scale(), scene.turns());
+        let sizes = ctxs[0].sizes.on_page(fit.scale(), scene.extremes());
         for c in &mut ctxs {
             c.sizes = sizes;
         }
