@@ -1500,6 +1500,70 @@ fn the_turning_moments_area_letters_stand_in_their_areas_and_the_panels_align() 
     }
 }
 
+/// The text of the element `id` as a reader sees it.
+fn text_of(svg: &str, id: &str) -> String {
+    let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+    let start = at + svg[at..].find('>').unwrap() + 1;
+    read_text(&svg[start..start + svg[start..].find("</text>").unwrap()])
+}
+
+#[test]
+fn the_turning_moments_area_letters_clear_the_mean_line_and_keep_within_the_axis() {
+    // The fifth review's engines, at its page widths: the values "a₂ =
+    // +10268" and "a₄ = +6685" at l = 1.05 r struck by the dashed mean
+    // line, a₅ past the axis's end at 360°.
+    for (l, e) in [(1.05, 0.0), (1.06, 0.0), (2.79, 0.903), (39.5, 0.0)] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            let case = format!("l {l} e {e} {width:?}");
+            // The mean line, level from the axis's start to its end.
+            let d = attr(&svg, "line-mean-torque", "d").unwrap();
+            let v: Vec<f64> = d
+                .split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+                .filter(|t| !t.is_empty())
+                .map(|t| t.parse().unwrap())
+                .collect();
+            let (start, end, mean) = (v[0], v[2], v[1]);
+            assert!((v[3] - mean).abs() < 1e-9, "{case}: {d}");
+            for k in 1.. {
+                let id = format!("label-lobe-{k}");
+                if !svg.contains(&format!("id=\"{id}\"")) {
+                    assert!(k > 2, "{case}: {k} letters");
+                    break;
+                }
+                let (x, y, em) = (
+                    num(&svg, &id, "x"),
+                    num(&svg, &id, "y"),
+                    num(&svg, &id, "font-size"),
+                );
+                // Its ink: a value's digits up to 0.7 em above the
+                // baseline, a bare letter's italic a 0.45 em; the
+                // subscript 0.3 em below it; the line's stroke half a
+                // unit about it, and a unit clear.
+                let said = text_of(&svg, &id);
+                let high = if said.contains('=') { 0.7 } else { 0.45 };
+                let (top, bottom) = (y - high * em, y + 0.3 * em);
+                assert!(
+                    mean < top - 1.5 || mean > bottom + 1.5,
+                    "{case}: {id} ({said}) {top:.2}..{bottom:.2} on the mean line at {mean:.2}"
+                );
+                // Within the axis: at least 0.2 em a character either
+                // side of its middle.
+                let half = 0.2 * em * said.chars().count() as f64;
+                assert!(
+                    x - half >= start - 0.01 && x + half <= end + 0.01,
+                    "{case}: {id} at {x:.2} past the axis {start:.2}..{end:.2}"
+                );
+            }
+        }
+    }
+}
+
 /// The crank-pin load of the in-line engine `engine` with a rod of mass
 /// `rod_mass`, its centre of mass `beta` l from the crank pin, radius of
 /// gyration `k`, at θ (radians), by Newton–Euler of the slider and of
@@ -1539,6 +1603,96 @@ fn pin_load(engine: &Engine, rod_mass: f64, beta: f64, k: f64, theta: f64, relat
     }
     let (sn, cs) = theta.sin_cos();
     (load.0 * cs + load.1 * sn, -load.0 * sn + load.1 * cs)
+}
+
+#[test]
+fn the_crank_pin_loads_letter_each_quarter_at_its_own_point_and_the_pole() {
+    // The fifth review: "0°, 180°" lettered on one dot where the two
+    // points stand apart (read as one load at both angles); the dashed
+    // curve's quarters unlettered on narrow pages (taken into the full
+    // curve's letters up to 18 units away); the pole lost among a short
+    // rod's loops. Every letter names only points on its dot (within a
+    // dot's diameter, 4 units), each curve's every quarter is lettered
+    // there, and the pole is lettered O.
+    for (r, l) in [(0.5, 3.0), (1.0, 1.04), (1.0, 46.7), (1.0, 1.09)] {
+        let engine = Engine {
+            r,
+            l,
+            omega: omega(),
+            m: 10.0,
+            rows: indicator(),
+            bore: 10.0 / 12.0,
+        };
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(slider_crank::SliderCrank::in_line(r, l).unwrap());
+            let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+            for (panel, relative) in [("fixed", false), ("relative", true)] {
+                let case = format!("r {r} l {l} {width:?} {panel}");
+                let (_, map) = panel_map(&svg, &format!("point-{panel}-pole-1"));
+                // Each curve's quarter on the page: 0° on the expansion
+                // line, 180° on the compression line, as the figure takes
+                // the dead centres.
+                let at = |share: f64, deg: f64| {
+                    let t = if deg % 180.0 == 0.0 {
+                        deg.to_radians() + 1e-9
+                    } else {
+                        deg.to_radians()
+                    };
+                    map.apply(pin_load(
+                        &engine,
+                        share * engine.m,
+                        1.0 / 3.0,
+                        0.3 * l,
+                        t,
+                        relative,
+                    ))
+                };
+                let curves = [("with-rod", 0.6), ("without-rod", 0.0)];
+                // The letters of the quarters: (their dot, the angles said).
+                let mut letters = Vec::new();
+                for (curve, _) in curves {
+                    for deg in [0, 90, 180, 270] {
+                        let id = format!("label-{panel}-{curve}-{deg}");
+                        if !svg.contains(&format!("id=\"{id}\"")) {
+                            continue;
+                        }
+                        let dot = format!("point-{panel}-{curve}-{deg}");
+                        let c = (num(&svg, &dot, "cx"), num(&svg, &dot, "cy"));
+                        let said: Vec<f64> = text_of(&svg, &id)
+                            .split(", ")
+                            .map(|a| a.trim_end_matches('°').parse().unwrap())
+                            .collect();
+                        letters.push((id, c, said));
+                    }
+                }
+                let near = |p: P, q: P| (p.0 - q.0).hypot(p.1 - q.1) <= 4.0 + 0.05;
+                for (id, c, said) in &letters {
+                    for a in said {
+                        assert!(
+                            curves.iter().any(|(_, share)| near(at(*share, *a), *c)),
+                            "{case}: {id} says {a}°, whose points stand apart from its dot"
+                        );
+                    }
+                }
+                for (curve, share) in curves {
+                    for deg in [0.0, 90.0, 180.0, 270.0] {
+                        let p = at(share, deg);
+                        assert!(
+                            letters
+                                .iter()
+                                .any(|(_, c, said)| said.contains(&deg) && near(p, *c)),
+                            "{case}: the {curve} curve's {deg}° at {p:?} unlettered"
+                        );
+                    }
+                }
+                assert_eq!(text_of(&svg, &format!("label-{panel}-pole")), "O", "{case}");
+            }
+        }
+    }
 }
 
 /// The four load curves of crank-pin-loads for the in-line engine (r, l)
