@@ -688,21 +688,40 @@ fn sample(e: &Exact, map: &Map, per_piece: usize) -> Sampled {
     s
 }
 
-/// The distance (page units) from `q` to the exact curve: the nearest
-/// sample, then a golden-section search between its neighbours.
+/// The distance (page units) from `q` to the exact curve: about each
+/// local minimum of the samples' distance within a unit of the nearest
+/// sample's, a golden-section search between its neighbours, the least
+/// of them. About the nearest sample alone, a written point was measured
+/// against another part of the curve passing near where the samples of
+/// its own part lay farther: the massless rod's crank-pin loads, whose
+/// curves pass near themselves (and through the pole, where the piston
+/// effort changes sign), measured 0.050 units off where they are 0.0066.
 fn distance_to_curve(q: P, e: &Exact, s: &Sampled, map: &Map) -> f64 {
-    let (best, _) = s
-        .page
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (i, dist(*p, q)))
-        .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-    let (lo_i, hi_i) = s
-        .pieces
-        .iter()
-        .find(|(a, b)| best >= *a && best < *b)
-        .copied()
-        .unwrap();
+    let d: Vec<f64> = s.page.iter().map(|p| dist(*p, q)).collect();
+    let nearest = d.iter().copied().fold(f64::INFINITY, f64::min);
+    let mut best = nearest;
+    for &(lo_i, hi_i) in &s.pieces {
+        for i in lo_i..hi_i {
+            let left = i == lo_i || d[i - 1] >= d[i];
+            let right = i + 1 == hi_i || d[i + 1] >= d[i];
+            if left && right && d[i] <= nearest + 1.0 {
+                best = best.min(refine(q, e, s, map, i, (lo_i, hi_i)));
+            }
+        }
+    }
+    best
+}
+
+/// The least distance from `q` to the exact curve between the neighbours
+/// of sample `best` in its piece `(lo_i, hi_i)`, by golden section.
+fn refine(
+    q: P,
+    e: &Exact,
+    s: &Sampled,
+    map: &Map,
+    best: usize,
+    (lo_i, hi_i): (usize, usize),
+) -> f64 {
     let mut lo = s.params[best.saturating_sub(1).max(lo_i)];
     let mut hi = s.params[(best + 1).min(hi_i - 1)];
     let d = |t: f64| dist(map.apply((e.f)(t)), q);
@@ -765,21 +784,15 @@ fn inside(f: &[f64; 4], p: P, margin: f64) -> bool {
 /// curve inside the frame against the written path. Returns the largest
 /// deviation of the path from the curve, in page units.
 fn measure_figure(name: FigureName, svg: &str) -> f64 {
-    measure_curves(name.name(), svg, &curves(name), &[])
+    measure_curves(name.name(), svg, &curves(name))
 }
 
 /// Measures the `curve-*` paths of the figure `svg` (named `name` in
 /// messages) against `expected`, as [`measure_figure`] does, each within
-/// the figure's tolerance or the one `allowed` gives its id (a known
-/// excess, written in the docs).
-fn measure_curves(
-    name: &str,
-    svg: &str,
-    expected: &[(String, Exact)],
-    allowed: &[(&str, f64)],
-) -> f64 {
+/// the figure's tolerance.
+fn measure_curves(name: &str, svg: &str, expected: &[(String, Exact)]) -> f64 {
     let meta = metadata(svg);
-    let figure_tolerance = meta["tolerance"].as_f64().unwrap();
+    let tolerance = meta["tolerance"].as_f64().unwrap();
     let mut worst: f64 = 0.0;
     let drawn: Vec<&str> = svg
         .match_indices("id=\"curve-")
@@ -791,9 +804,6 @@ fn measure_curves(
     let ids: Vec<&str> = expected.iter().map(|(id, _)| id.as_str()).collect();
     assert_eq!(drawn, ids, "{name}: the curves drawn");
     for (id, e) in expected {
-        let tolerance = (allowed.iter())
-            .find(|(a, _)| a == id)
-            .map_or(figure_tolerance, |(_, t)| *t);
         let before = worst;
         worst = 0.0;
         let (panel, map) = panel_map(svg, id);
@@ -1722,14 +1732,6 @@ fn load_curves(r: f64, l: f64) -> Vec<(String, Exact)> {
     v
 }
 
-/// What the massless rod's crank-pin load curves are held to away from
-/// the default engine, page units: above the largest excess measured
-/// (0.0501 relative to the crank at l = 1.06 r, 0.048 before the panels
-/// lost their legends and the curves grew about 4 %; 0.016 in fixed axes
-/// at l = 51.8 r), six times the figures' 0.01, whose cause is not yet
-/// found (docs/dynamics.md). The rod's own curves keep the 0.01.
-const EXCESS: f64 = 0.06;
-
 #[test]
 fn the_crank_pin_load_curves_are_the_newton_euler_loads_within_the_tolerance() {
     // The default engine, the review's short rod and a long one, in feet.
@@ -1737,19 +1739,15 @@ fn the_crank_pin_load_curves_are_the_newton_euler_loads_within_the_tolerance() {
         let mut o = FigureOptions::default();
         o.mechanism = Some(slider_crank::SliderCrank::in_line(r, l).unwrap());
         let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
-        let allowed: &[(&str, f64)] = if l == 3.0 {
-            &[]
-        } else {
-            &[
-                ("curve-fixed-without-rod", EXCESS),
-                ("curve-relative-without-rod", EXCESS),
-            ]
-        };
+        // Every curve to the figure's 0.01 (largest 0.0066). The massless
+        // rod's were held at 0.06 until the measure searched about every
+        // near part of the curve, not the nearest sample's alone
+        // ([`distance_to_curve`]): their excess (0.050, 0.016) was the
+        // distance to another part passing near.
         let worst = measure_curves(
             &format!("crank-pin-loads r {r} l {l}"),
             &svg,
             &load_curves(r, l),
-            allowed,
         );
         assert!(worst > 1e-4, "measured, not vacuous: {worst}");
     }
