@@ -1218,6 +1218,9 @@ def figure(
     width: Union[None, float, str] = None,
     height: Union[None, float, str] = None,
     title: Optional[str] = None,
+    rod_mass: Optional[float] = None,
+    rod_cg: Optional[float] = None,
+    rod_gyration: Optional[float] = None,
 ) -> Figure:
     """The named figure (one of :data:`FIGURES`), as ``slider-crank figure
     NAME`` draws it; each option is the flag of that name (``None``: the
@@ -1239,7 +1242,10 @@ def figure(
     gas force in place of a diagram; ``mirror``: the cylinder on the left
     (True) or right (False);
     ``width``, ``height``: page units (800) or a size (``"120mm"``,
-    ``"4.5in"``); ``title``: set below the figure.
+    ``"4.5in"``); ``title``: set below the figure; ``rod_mass``,
+    ``rod_cg``, ``rod_gyration``: the connecting rod of
+    ``crank-pin-loads`` (default 0.6 of ``mass``, ``l/3`` from the crank
+    pin, ``0.3 l``).
     """
     options = _figure_options(locals())
     return Figure(_core.figure(name, **options), (name, options))
@@ -1255,7 +1261,10 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
     style, font, fit, unit = (given[k] for k in ("style", "font", "fit", "unit"))
     force_unit, notation, mirror = (given[k] for k in ("force_unit", "notation", "mirror"))
     height, title = given["height"], given["title"]
-    dynamics = {k: _option(given.get(k)) for k in ("mass", "fluctuation", "bore", "gas_force")}
+    dynamics = {
+        k: _option(given.get(k))
+        for k in ("mass", "fluctuation", "bore", "gas_force", "rod_mass", "rod_cg", "rod_gyration")
+    }
     return dict(
         crank=_option(crank),
         rod=_option(rod),

@@ -108,6 +108,9 @@ def figure(
     title: Optional[str] = None,
     animate: Optional[tuple[int, float, str]] = None,
     tikz: Optional[bool] = None,
+    rod_mass: Optional[float] = None,
+    rod_cg: Optional[float] = None,
+    rod_gyration: Optional[float] = None,
 ) -> str: ...
 def encode(svg: str, format: str) -> bytes: ...
 def save(svg: str, path: str) -> None: ...

@@ -266,7 +266,8 @@ fn fill_chunk(
 #[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
     notation=None, mass=None, fluctuation=None, bore=None, gas_force=None, mirror=None,
-    width=None, height=None, title=None, animate=None, tikz=None))]
+    width=None, height=None, title=None, animate=None, tikz=None, rod_mass=None, rod_cg=None,
+    rod_gyration=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -295,6 +296,9 @@ fn figure(
     title: Option<&str>,
     animate: Option<(usize, f64, String)>,
     tikz: Option<bool>,
+    rod_mass: Option<f64>,
+    rod_cg: Option<f64>,
+    rod_gyration: Option<f64>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
     let mut request = FigureRequest::default();
@@ -324,6 +328,9 @@ fn figure(
     request.width = width.map(parse).transpose()?;
     request.height = height.map(parse).transpose()?;
     request.title = title.map(parse).transpose()?;
+    request.rod_mass = rod_mass;
+    request.rod_cg = rod_cg;
+    request.rod_gyration = rod_gyration;
     let options = request.options(name).map_err(py_err)?;
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);

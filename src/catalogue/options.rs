@@ -132,6 +132,16 @@ pub struct FigureOptions {
     pub height: Option<PageLength>,
     /// A title, set below the figure and written as the SVG's `<title>`.
     pub title: Option<Title>,
+    /// The connecting rod's mass m_r of `crank-pin-loads`, in the mass
+    /// unit (default 0.6 times the reciprocating mass); 0 is a massless
+    /// rod, whose curve is then the dashed one's.
+    pub rod_mass: Option<f64>,
+    /// The distance BG of the rod's centre of mass from the crank pin of
+    /// `crank-pin-loads`, in the length unit, 0 ≤ BG ≤ l (default l/3).
+    pub rod_cg: Option<f64>,
+    /// The rod's radius of gyration k about its centre of mass, of
+    /// `crank-pin-loads`, in the length unit (default 0.3 l).
+    pub rod_gyration: Option<f64>,
 }
 
 /// One of the things a named figure may take from its options: each
@@ -167,6 +177,8 @@ pub(crate) enum Setting {
     Bore,
     /// A constant gas force.
     GasForce,
+    /// The connecting rod's mass, centre of mass and radius of gyration.
+    Rod,
 }
 
 impl Setting {
@@ -204,6 +216,15 @@ impl Setting {
             Setting::Fluctuation => Field::Fluctuation,
             Setting::Bore => Field::Bore,
             Setting::GasForce => Field::GasForce,
+            Setting::Rod => {
+                return Wording::from("rod (")
+                    .option(Field::RodMass)
+                    .then(", ")
+                    .option(Field::RodCg)
+                    .then(", ")
+                    .option(Field::RodGyration)
+                    .then(")");
+            }
         };
         Wording::default().option(field)
     }
@@ -228,6 +249,10 @@ impl FigureOptions {
             (self.fluctuation.is_some(), Setting::Fluctuation),
             (self.bore.is_some(), Setting::Bore),
             (self.gas_force.is_some(), Setting::GasForce),
+            (
+                self.rod_mass.is_some() || self.rod_cg.is_some() || self.rod_gyration.is_some(),
+                Setting::Rod,
+            ),
         ]
         .into_iter()
         .filter_map(|(set, s)| set.then_some(s))

@@ -68,6 +68,12 @@ pub struct FigureRequest {
     pub height: Option<PageLength>,
     /// A title set below the figure.
     pub title: Option<Title>,
+    /// The connecting rod's mass of `crank-pin-loads`.
+    pub rod_mass: Option<f64>,
+    /// The distance of the rod's centre of mass from the crank pin.
+    pub rod_cg: Option<f64>,
+    /// The rod's radius of gyration about its centre of mass.
+    pub rod_gyration: Option<f64>,
 }
 
 impl FigureRequest {
@@ -118,6 +124,9 @@ impl FigureRequest {
         options.width = self.width;
         options.height = self.height;
         options.title = self.title.clone();
+        options.rod_mass = self.rod_mass;
+        options.rod_cg = self.rod_cg;
+        options.rod_gyration = self.rod_gyration;
         Ok(options)
     }
 }

@@ -12,7 +12,9 @@ use crate::scene::Layer;
 use At::{Crank, NoPose, Tilt};
 use Group::{Chain, Developers, Diagrams};
 use Kind::{Diagram, Mechanism};
-use Setting::{Angle, Bore, Data, Fit, Fluctuation, Font, GasForce, Mass, Mirror, Speed, Style};
+use Setting::{
+    Angle, Bore, Data, Fit, Fluctuation, Font, GasForce, Mass, Mirror, Rod, Speed, Style,
+};
 use Source::{Book, Ng, Outside};
 
 /// What the table says of one named figure.
@@ -600,7 +602,7 @@ figures! {
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::loads::build),
-        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Style, Font],
+        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Rod, Style, Font],
     },
     /// The flywheel: the energy stored above its least over the turn,
     /// rising by the fluctuation of energy ΔE, and the crank speed with

@@ -166,6 +166,18 @@ pub struct FigureFlags {
     /// subscript
     #[arg(long, value_name = "TEXT", allow_hyphen_values = true)]
     pub title: Option<Title>,
+    /// The connecting rod's mass of crank-pin-loads, in the mass unit; 0
+    /// for a massless rod [default: 0.6 times the reciprocating mass]
+    #[arg(long, value_name = "MR", allow_hyphen_values = true)]
+    pub rod_mass: Option<f64>,
+    /// The distance of the rod's centre of mass from the crank pin, of
+    /// crank-pin-loads, 0 to the rod's length [default: l/3]
+    #[arg(long, value_name = "BG", allow_hyphen_values = true)]
+    pub rod_cg: Option<f64>,
+    /// The rod's radius of gyration about its centre of mass, of
+    /// crank-pin-loads [default: 0.3 l]
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    pub rod_gyration: Option<f64>,
 }
 
 /// Where `--out` sends a figure: a file and the format its extension
@@ -296,6 +308,9 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     request.fluctuation = args.fluctuation;
     request.bore = args.bore;
     request.gas_force = args.gas_force;
+    request.rod_mass = args.rod_mass;
+    request.rod_cg = args.rod_cg;
+    request.rod_gyration = args.rod_gyration;
     request.mirror = match (args.mirror, args.no_mirror) {
         (true, _) => Some(true),
         (_, true) => Some(false),

@@ -267,6 +267,8 @@ impl Field {
             Field::GasForce => "gas_force",
             Field::MaxCells => "max_cells",
             Field::RodCg => "rod_cg",
+            Field::RodMass => "rod_mass",
+            Field::RodGyration => "rod_gyration",
             Field::FluctuationOfSpeed | Field::Fluctuation => "fluctuation",
             Field::Ratio => "n",
             other => other.name(),

@@ -1711,11 +1711,17 @@ fn the_crank_pin_loads_letter_each_quarter_at_its_own_point_and_the_pole() {
 /// pin, k = 0.3 l) and a massless one; each in two pieces, as the gas
 /// force jumps at the dead centres.
 fn load_curves(r: f64, l: f64) -> Vec<(String, Exact)> {
+    rod_load_curves(r, l, (6.0, 1.0 / 3.0, 0.3 * l))
+}
+
+/// The four load curves as [`load_curves`], the full ones with the rod
+/// `(mass, BG / l, k)`.
+fn rod_load_curves(r: f64, l: f64, (mass, beta, k): (f64, f64, f64)) -> Vec<(String, Exact)> {
     let mut v = Vec::new();
     let inside = 1e-9;
     let pieces = [(inside, PI - inside), (PI + inside, 2.0 * PI - inside)];
     for (panel, relative) in [("fixed", false), ("relative", true)] {
-        for (curve, share) in [("with-rod", 0.6), ("without-rod", 0.0)] {
+        for (curve, rod_mass) in [("with-rod", mass), ("without-rod", 0.0)] {
             let engine = Engine {
                 r,
                 l,
@@ -1724,12 +1730,46 @@ fn load_curves(r: f64, l: f64) -> Vec<(String, Exact)> {
                 rows: indicator(),
                 bore: 10.0 / 12.0,
             };
-            let f =
-                move |t: f64| pin_load(&engine, share * engine.m, 1.0 / 3.0, 0.3 * l, t, relative);
+            let f = move |t: f64| pin_load(&engine, rod_mass, beta, k, t, relative);
             v.push((format!("curve-{panel}-{curve}"), exact(f, &pieces)));
         }
     }
     v
+}
+
+#[test]
+fn the_crank_pin_loads_of_a_rod_given_are_its_newton_euler_loads() {
+    // --rod-mass 20 --rod-cg 1.5 --rod-gyration 1 on the default engine
+    // (m = 10, l = 3): the full curves are the loads of that rod.
+    let mut o = FigureOptions::default();
+    o.rod_mass = Some(20.0);
+    o.rod_cg = Some(1.5);
+    o.rod_gyration = Some(1.0);
+    let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+    measure_curves(
+        "crank-pin-loads with a rod given",
+        &svg,
+        &rod_load_curves(0.5, 3.0, (20.0, 0.5, 1.0)),
+    );
+    let text = read_text(&svg)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        text.contains("the rod 20.00 slug, its centre of mass 1.500 ft from the crank pin, radius of gyration 1.000 ft; the gas force"),
+        "{text}"
+    );
+    // A massless rod given is the dashed curve's.
+    let mut o = FigureOptions::default();
+    o.rod_mass = Some(0.0);
+    let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+    for panel in ["fixed", "relative"] {
+        assert_eq!(
+            attr(&svg, &format!("curve-{panel}-with-rod"), "d"),
+            attr(&svg, &format!("curve-{panel}-without-rod"), "d"),
+            "{panel}"
+        );
+    }
 }
 
 #[test]

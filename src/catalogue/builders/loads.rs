@@ -62,13 +62,42 @@ const BAR_TEXT: f64 = 84.0;
 /// Room below the curves for the scale bar and its text, page units.
 const BAR_ROOM: f64 = 30.0;
 
-/// The two engines: with the illustrative rod, and with a massless one.
+/// The two engines: with the rod asked for (each of its values not given
+/// the illustrative rod's), and with a massless one.
 fn engines(ctx: &Ctx) -> Result<(Engine, Engine)> {
     let bare = super::turning::engine(ctx)?;
     let l = ctx.mechanism.rod();
     let mass = bare.reciprocating_mass();
-    let rod = RodMass::new(ROD_MASS * mass, ROD_CG * l, ROD_GYRATION * l)?;
+    let o = ctx.options;
+    let rod = RodMass::new(
+        o.rod_mass.unwrap_or(ROD_MASS * mass),
+        o.rod_cg.unwrap_or(ROD_CG * l),
+        o.rod_gyration.unwrap_or(ROD_GYRATION * l),
+    )?;
     Ok((bare.clone().with_rod(rod)?, bare))
+}
+
+/// What the notes say of the rod's values in brackets after them: the
+/// illustrative rod's ratios (" (0.6 times the reciprocating mass, l/3,
+/// 0.3 l)"), those of the values not given where some are, nothing where
+/// all are.
+fn rod_said(ctx: &Ctx) -> String {
+    let o = ctx.options;
+    let own = [
+        (o.rod_mass, "the mass 0.6 times the reciprocating mass"),
+        (o.rod_cg, "the centre of mass *l*/3"),
+        (o.rod_gyration, "the radius of gyration 0.3 *l*"),
+    ];
+    let left: Vec<&str> = own
+        .iter()
+        .filter(|(given, _)| given.is_none())
+        .map(|(_, said)| *said)
+        .collect();
+    match left.len() {
+        3 => " (0.6 times the reciprocating mass, *l*/3, 0.3 *l*)".into(),
+        0 => String::new(),
+        _ => format!(" ({}, the illustrative rod’s)", left.join(", ")),
+    }
 }
 
 /// The crank-pin load of `engine` at `deg` degrees of its cycle, in fixed
@@ -423,7 +452,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let r = rod.rod();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 times the reciprocating mass, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u}{}; the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
             short(m.crank()),
             short(m.rod()),
             ctx.offset_clause(),
@@ -432,6 +461,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             sig(r.map_or(0.0, RodMass::mass)),
             sig(r.map_or(0.0, RodMass::cg)),
             sig(r.map_or(0.0, RodMass::gyration)),
+            rod_said(ctx),
             short(bar),
         ),
         format!(
