@@ -1221,6 +1221,8 @@ def figure(
     rod_mass: Optional[float] = None,
     rod_cg: Optional[float] = None,
     rod_gyration: Optional[float] = None,
+    cranks: Union[None, str, Sequence[float]] = None,
+    planes: Union[None, str, Sequence[float]] = None,
 ) -> Figure:
     """The named figure (one of :data:`FIGURES`), as ``slider-crank figure
     NAME`` draws it; each option is the flag of that name (``None``: the
@@ -1245,7 +1247,9 @@ def figure(
     ``"4.5in"``); ``title``: set below the figure; ``rod_mass``,
     ``rod_cg``, ``rod_gyration``: the connecting rod of
     ``crank-pin-loads`` (default 0.6 of ``mass``, ``l/3`` from the crank
-    pin, ``0.3 l``).
+    pin, ``0.3 l``); ``cranks``, ``planes``: the cylinders of
+    ``inline-balance``, a list or a comma-separated string (default cranks
+    0, 120, 240 and a pitch of 1 about the middle of the engine).
     """
     options = _figure_options(locals())
     return Figure(_core.figure(name, **options), (name, options))
@@ -1265,6 +1269,7 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
         k: _option(given.get(k))
         for k in ("mass", "fluctuation", "bore", "gas_force", "rod_mass", "rod_cg", "rod_gyration")
     }
+    lists = {k: _numbers(given.get(k)) for k in ("cranks", "planes")}
     return dict(
         crank=_option(crank),
         rod=_option(rod),
@@ -1285,7 +1290,15 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
         width=_length(width),
         height=_length(height),
         title=title,
+        **lists,
     )
+
+
+def _numbers(given: Union[None, str, Sequence[float]]) -> Optional["list[float]"]:
+    """A list of numbers given as a list or a comma-separated string."""
+    if isinstance(given, str):
+        return [float(t) for t in given.split(",")]
+    return _reals(given)
 
 
 

@@ -267,7 +267,7 @@ fn fill_chunk(
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
     notation=None, mass=None, fluctuation=None, bore=None, gas_force=None, mirror=None,
     width=None, height=None, title=None, animate=None, tikz=None, rod_mass=None, rod_cg=None,
-    rod_gyration=None))]
+    rod_gyration=None, cranks=None, planes=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -299,6 +299,8 @@ fn figure(
     rod_mass: Option<f64>,
     rod_cg: Option<f64>,
     rod_gyration: Option<f64>,
+    cranks: Option<Vec<f64>>,
+    planes: Option<Vec<f64>>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
     let mut request = FigureRequest::default();
@@ -331,6 +333,8 @@ fn figure(
     request.rod_mass = rod_mass;
     request.rod_cg = rod_cg;
     request.rod_gyration = rod_gyration;
+    request.cranks = cranks;
+    request.planes = planes;
     let options = request.options(name).map_err(py_err)?;
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);

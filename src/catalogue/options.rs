@@ -142,6 +142,13 @@ pub struct FigureOptions {
     /// The rod's radius of gyration k about its centre of mass, of
     /// `crank-pin-loads`, in the length unit (default 0.3 l).
     pub rod_gyration: Option<f64>,
+    /// The cranks of `inline-balance`, each cylinder's in degrees ahead
+    /// of the first's (default 0, 120, 240: three cylinders at 120°).
+    pub cranks: Option<Vec<f64>>,
+    /// The planes of `inline-balance`'s cylinders, each line of stroke's
+    /// distance from the reference plane along the shaft, in pitches, one
+    /// for each crank (default a pitch of 1 about the middle cylinder).
+    pub planes: Option<Vec<f64>>,
 }
 
 /// One of the things a named figure may take from its options: each
@@ -179,6 +186,8 @@ pub(crate) enum Setting {
     GasForce,
     /// The connecting rod's mass, centre of mass and radius of gyration.
     Rod,
+    /// The cylinders of an in-line engine: their cranks and planes.
+    Cylinders,
 }
 
 impl Setting {
@@ -225,6 +234,13 @@ impl Setting {
                     .option(Field::RodGyration)
                     .then(")");
             }
+            Setting::Cylinders => {
+                return Wording::from("cylinders (")
+                    .option(Field::Cranks)
+                    .then(", ")
+                    .option(Field::Planes)
+                    .then(")");
+            }
         };
         Wording::default().option(field)
     }
@@ -252,6 +268,10 @@ impl FigureOptions {
             (
                 self.rod_mass.is_some() || self.rod_cg.is_some() || self.rod_gyration.is_some(),
                 Setting::Rod,
+            ),
+            (
+                self.cranks.is_some() || self.planes.is_some(),
+                Setting::Cylinders,
             ),
         ]
         .into_iter()

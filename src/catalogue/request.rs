@@ -74,6 +74,10 @@ pub struct FigureRequest {
     pub rod_cg: Option<f64>,
     /// The rod's radius of gyration about its centre of mass.
     pub rod_gyration: Option<f64>,
+    /// The cranks of `inline-balance`, degrees ahead of the first's.
+    pub cranks: Option<Vec<f64>>,
+    /// The planes of `inline-balance`'s cylinders, in pitches.
+    pub planes: Option<Vec<f64>>,
 }
 
 impl FigureRequest {
@@ -127,6 +131,8 @@ impl FigureRequest {
         options.rod_mass = self.rod_mass;
         options.rod_cg = self.rod_cg;
         options.rod_gyration = self.rod_gyration;
+        options.cranks = self.cranks.clone();
+        options.planes = self.planes.clone();
         Ok(options)
     }
 }

@@ -178,6 +178,15 @@ pub struct FigureFlags {
     /// crank-pin-loads [default: 0.3 l]
     #[arg(long, value_name = "K", allow_hyphen_values = true)]
     pub rod_gyration: Option<f64>,
+    /// The cranks of inline-balance, each cylinder's in degrees ahead of
+    /// the first's, comma-separated [default: 0,120,240]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub cranks: Option<String>,
+    /// The planes of inline-balance's cylinders, each line of stroke's
+    /// distance from the reference plane in pitches, one for each crank,
+    /// comma-separated [default: a pitch of 1 about the engine's middle]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub planes: Option<String>,
 }
 
 /// Where `--out` sends a figure: a file and the format its extension
@@ -311,6 +320,12 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     request.rod_mass = args.rod_mass;
     request.rod_cg = args.rod_cg;
     request.rod_gyration = args.rod_gyration;
+    request.cranks = (args.cranks.as_deref())
+        .map(|s| super::args::parse_list(s, "crank angle", false))
+        .transpose()?;
+    request.planes = (args.planes.as_deref())
+        .map(|s| super::args::parse_list(s, "plane", false))
+        .transpose()?;
     request.mirror = match (args.mirror, args.no_mirror) {
         (true, _) => Some(true),
         (_, true) => Some(false),

@@ -173,6 +173,10 @@ pub enum Field {
     /// The file a figure, a handout or a gallery is written to, which
     /// the names of the files made beside it come from.
     Out,
+    /// The cranks of an in-line engine, degrees ahead of the first's.
+    Cranks,
+    /// The planes of an in-line engine's cylinders.
+    Planes,
 }
 
 impl Field {
@@ -253,6 +257,8 @@ impl Field {
             Field::MaxCells => "max cells",
             Field::Indicator => "indicator",
             Field::Out => "out",
+            Field::Cranks => "cranks",
+            Field::Planes => "planes",
         }
     }
 

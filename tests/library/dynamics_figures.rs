@@ -823,6 +823,84 @@ fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
 }
 
 #[test]
+fn the_balance_polygons_are_drawn_for_the_cranks_and_planes_given() {
+    // The textbooks' four-cylinder flat crank (0°, 180°, 180°, 0°) at a
+    // pitch of 1 about the middle of the engine, and a 2-cylinder engine
+    // on its own planes: every side a_i (cos δ_i, sin δ_i) (a_i = 1 for a
+    // force; at 2δ_i and ÷ n for the secondary), the resultant their sum.
+    let n = 6.0;
+    for (cranks, planes, given) in [
+        (
+            vec![0.0, 180.0, 180.0, 0.0],
+            vec![-1.5, -0.5, 0.5, 1.5],
+            false,
+        ),
+        (vec![0.0, 90.0], vec![0.0, 2.0], true),
+    ] {
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::in_line(0.5, 0.5 * n).unwrap());
+        o.cranks = Some(cranks.clone());
+        o.planes = given.then(|| planes.clone());
+        let svg = to_svg(&FigureName::InlineBalance.figure(&o).unwrap());
+        for (name, twice, couple) in [
+            ("primary-force", 1.0, false),
+            ("primary-couple", 1.0, true),
+            ("secondary-force", 2.0, false),
+            ("secondary-couple", 2.0, true),
+        ] {
+            let panel = format!("panel-{name}");
+            let scale = if twice > 1.0 { 1.0 / n } else { 1.0 };
+            let mut want = (0.0, 0.0);
+            for (i, (d, a)) in cranks.iter().zip(&planes).enumerate() {
+                let t = (twice * d).to_radians();
+                let w = scale * if couple { *a } else { 1.0 };
+                want = (want.0 + w * t.cos(), want.1 + w * t.sin());
+                let id = format!("force-{name}-{}", i + 1);
+                if w == 0.0 {
+                    assert!(!svg.contains(&format!("id=\"{id}\"")), "{id}");
+                    continue;
+                }
+                let side = world_arrow(&svg, &panel, &id);
+                let tol = 2e-3 * scale;
+                assert!(
+                    (side.0 - w * t.cos()).abs() < tol && (side.1 - w * t.sin()).abs() < tol,
+                    "{name} side {}: {side:?}",
+                    i + 1
+                );
+            }
+            let closing = format!("resultant-{name}");
+            if want.0.hypot(want.1) < 1e-9 {
+                assert!(!svg.contains(&format!("id=\"{closing}\"")), "{name}");
+            } else {
+                let drawn = world_arrow(&svg, &panel, &closing);
+                assert!(
+                    (drawn.0 - want.0).abs() < 4e-3 * scale
+                        && (drawn.1 - want.1).abs() < 4e-3 * scale,
+                    "{name}: {drawn:?} for {want:?}"
+                );
+            }
+        }
+        let text = read_text(&svg)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        let count = if given {
+            "Two cylinders"
+        } else {
+            "Four cylinders"
+        };
+        assert!(text.contains(count), "{text}");
+        if !given {
+            // The flat crank: only the secondary forces unbalanced, 4/n.
+            assert!(
+                text.contains(&format!("secondary force {}", four(4.0 / n))),
+                "{text}"
+            );
+        }
+    }
+}
+
+#[test]
 fn the_balance_polygons_name_the_crank_angle_apart_from_the_pitch_and_letter_the_resultants() {
     for l in [3.0, 1.08, 52.0] {
         let mut o = FigureOptions::default();

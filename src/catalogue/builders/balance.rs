@@ -37,8 +37,9 @@ const NOTES: f64 = 88.0;
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
-    let planes = default_planes(CRANKS.len());
-    let engine = InlineEngine::new(&CRANKS, &planes, ctx.mechanism.ratio())?;
+    let cranks = ctx.options.cranks.clone().unwrap_or(CRANKS.to_vec());
+    let planes = (ctx.options.planes.clone()).unwrap_or_else(|| default_planes(cranks.len()));
+    let engine = InlineEngine::new(&cranks, &planes, ctx.mechanism.ratio())?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
     let half = 0.5 * (page.width() - 48.0);
@@ -59,7 +60,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             serde_json::json!({"resultant": r.vector, "amplitude": r.amplitude, "balanced": r.balanced}),
         );
     }
-    meta.insert("cranks_deg".into(), serde_json::json!(CRANKS));
+    meta.insert("cranks_deg".into(), serde_json::json!(cranks));
     meta.insert("planes".into(), serde_json::json!(planes));
     sheet.meta("balance", serde_json::Value::Object(meta));
     let top = 16.0 + 2.0 * (tall + 16.0);
@@ -184,6 +185,19 @@ fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect)
     Ok(plot)
 }
 
+/// "Three cylinders", "One cylinder": the count in words to twelve.
+fn cylinders(count: usize) -> String {
+    const WORDS: [&str; 12] = [
+        "One", "Two", "Three", "Four", "Five", "Six", "Seven", "Eight", "Nine", "Ten", "Eleven",
+        "Twelve",
+    ];
+    match (count, WORDS.get(count.wrapping_sub(1))) {
+        (1, Some(word)) => format!("{word} cylinder"),
+        (_, Some(word)) => format!("{word} cylinders"),
+        _ => format!("{count} cylinders"),
+    }
+}
+
 /// Which cylinders lie in the reference plane (a couple's side of
 /// length 0, not drawn), as the notes say it; empty for none.
 fn in_plane(engine: &InlineEngine) -> String {
@@ -254,9 +268,15 @@ fn notes(ctx: &Ctx, engine: &InlineEngine) -> Vec<String> {
     };
     vec![
         format!(
-            "Three cylinders in line, their cranks at the angles δ_{{i}} = {}° ahead of the first, their planes at the distances *a*_{{i}} = {} pitches from the reference plane (the middle cylinder’s){}, *n* = {}; the polygons are drawn at θ = 0, the line of stroke dash-dotted, each to its own scale, sides in units of *m\u{a0}r*ω² (a couple’s times the pitch).",
+            "{} in line, their cranks at the angles δ_{{i}} = {}° ahead of the first, their planes at the distances *a*_{{i}} = {} pitches from the reference plane{}{}, *n* = {}; the polygons are drawn at θ = 0, the line of stroke dash-dotted, each to its own scale, sides in units of *m\u{a0}r*ω² (a couple’s times the pitch).",
+            cylinders(engine.cranks_deg().len()),
             list(engine.cranks_deg()),
             list(engine.planes()),
+            match (ctx.options.planes.is_none(), engine.cranks_deg().len() % 2) {
+                (true, 1) => " (the middle cylinder’s)",
+                (true, _) => " (midway along the engine)",
+                _ => "",
+            },
             in_plane(engine),
             short(engine.ratio()),
         ),
