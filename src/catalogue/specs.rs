@@ -585,7 +585,7 @@ figures! {
     InlineBalance => FigureSpec {
         name: "inline-balance",
         source: Book("§35, eq. (3): its two terms summed over the cylinders of an in-line engine, the balancing of the reciprocating masses as a course in the dynamics of machines draws it (docs/dynamics.md §6); no figure in either seed"),
-        caption: "Three cylinders in line with cranks at 120°, a pitch of 1 and the reference plane through the middle one, n = 6: the primary and secondary force polygons close (the forces balance), the couple polygons do not, their closing sides √3 and √3/n the unbalanced couples (by default; --cranks and --planes give other engines).",
+        caption: "Three cylinders in line with cranks at 120°, a pitch of 1 and the reference plane through the middle one, n = 6: the primary and secondary force polygons close (the forces balance), the couple polygons do not, their closing sides √3 and √3/n the unbalanced couples (by default; other cranks and planes may be given).",
         mechanism: ENGINE,
         at: NoPose,
         page: (900.0, 760.0),
