@@ -1552,6 +1552,25 @@ def hammer_blow(
     )
 
 
+def two_plane_balance(
+    masses: Sequence[Tuple[float, float, float]], planes: Tuple[float, float]
+) -> "list[Tuple[float, float, float]]":
+    """The two balance masses, in the planes ``planes`` (the wheels' of a
+    locomotive, the ends of a crank shaft), that balance the revolving
+    ``masses``, each ``(m r, angle, plane)``: the mass times its radius,
+    its angle in degrees from the first crank in the sense of rotation and
+    its plane's distance along the shaft. Each balance is returned the
+    same way, its angle in [0, 360). Bad values (no mass, one not finite,
+    the two planes the same) raise ``ValueError`` with the library's
+    message (docs/dynamics.md §6).
+
+    >>> [tuple(round(v, 6) for v in b) for b in two_plane_balance([(1, 0, 0)], (-1, 1))]
+    [(0.5, 180.0, -1.0), (0.5, 180.0, 1.0)]
+    """
+    given = [(_real(m), _real(a), _real(x)) for m, a, x in masses]
+    return _core.two_plane_balance(given, (_real(planes[0]), _real(planes[1])))
+
+
 def _table_engine(
     crank: Optional[float], rod: Optional[float], offset: Optional[float]
 ) -> SliderCrank:

@@ -34,6 +34,7 @@ __all__ = [
     "harmonics",
     "radial",
     "hammer_blow",
+    "two_plane_balance",
     "VERSION",
     "EXAMPLE_MASS",
     "DYNAMICS_ROWS",
@@ -263,3 +264,6 @@ def hammer_blow(
     speed: float,
     load: Optional[float] = None,
 ) -> tuple[float, Optional[float]]: ...
+def two_plane_balance(
+    masses: list[tuple[float, float, float]], planes: tuple[float, float]
+) -> list[tuple[float, float, float]]: ...
