@@ -65,6 +65,7 @@ from ._api import (
     harmonics,
     radial,
     table,
+    two_plane_balance,
 )
 
 __all__ = [
@@ -107,6 +108,7 @@ __all__ = [
     "harmonics",
     "radial",
     "hammer_blow",
+    "two_plane_balance",
     "FIGURES",
 ]
 

@@ -1219,6 +1219,11 @@ def figure(
     height: Union[None, float, str] = None,
     title: Optional[str] = None,
     coupler: Union[None, float, Tuple[float, float]] = None,
+    rod_mass: Optional[float] = None,
+    rod_cg: Optional[float] = None,
+    rod_gyration: Optional[float] = None,
+    cranks: Union[None, str, Sequence[float]] = None,
+    planes: Union[None, str, Sequence[float]] = None,
 ) -> Figure:
     """The named figure (one of :data:`FIGURES`), as ``slider-crank figure
     NAME`` draws it; each option is the flag of that name (``None``: the
@@ -1243,7 +1248,12 @@ def figure(
     ``"4.5in"``); ``title``: set below the figure; ``coupler``: the
     point Q of a mechanism figure's rod, ``t`` along it from A (0) to B
     (1) or ``(t, h)`` with ``h`` rod lengths off its line, to the left of
-    A to B (default 0.5, the rod's middle).
+    A to B (default 0.5, the rod's middle); ``rod_mass``,
+    ``rod_cg``, ``rod_gyration``: the connecting rod of
+    ``crank-pin-loads`` (default 0.6 of ``mass``, ``l/3`` from the crank
+    pin, ``0.3 l``); ``cranks``, ``planes``: the cylinders of
+    ``inline-balance``, a list or a comma-separated string (default cranks
+    0, 120, 240 and a pitch of 1 about the middle of the engine).
     """
     options = _figure_options(locals())
     return Figure(_core.figure(name, **options), (name, options))
@@ -1259,7 +1269,11 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
     style, font, fit, unit = (given[k] for k in ("style", "font", "fit", "unit"))
     force_unit, notation, mirror = (given[k] for k in ("force_unit", "notation", "mirror"))
     height, title = given["height"], given["title"]
-    dynamics = {k: _option(given.get(k)) for k in ("mass", "fluctuation", "bore", "gas_force")}
+    dynamics = {
+        k: _option(given.get(k))
+        for k in ("mass", "fluctuation", "bore", "gas_force", "rod_mass", "rod_cg", "rod_gyration")
+    }
+    lists = {k: _numbers(given.get(k)) for k in ("cranks", "planes")}
     return dict(
         crank=_option(crank),
         rod=_option(rod),
@@ -1281,6 +1295,7 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
         height=_length(height),
         title=title,
         coupler=_coupler(given.get("coupler")),
+        **lists,
     )
 
 
@@ -1292,6 +1307,13 @@ def _coupler(given: Union[None, float, Tuple[float, float]]) -> Optional[Tuple[f
         t, h = given
         return (_real(t), _real(h))
     return (_real(given), 0.0)
+
+
+def _numbers(given: Union[None, str, Sequence[float]]) -> Optional["list[float]"]:
+    """A list of numbers given as a list or a comma-separated string."""
+    if isinstance(given, str):
+        return [float(t) for t in given.split(",")]
+    return _reals(given)
 
 
 
@@ -1520,6 +1542,25 @@ def hammer_blow(
     return _core.hammer_blow(
         _real(fraction), _real(mass), _real(crank), _real(wheel), _real(speed), _option(load)
     )
+
+
+def two_plane_balance(
+    masses: Sequence[Tuple[float, float, float]], planes: Tuple[float, float]
+) -> "list[Tuple[float, float, float]]":
+    """The two balance masses, in the planes ``planes`` (the wheels' of a
+    locomotive, the ends of a crank shaft), that balance the revolving
+    ``masses``, each ``(m r, angle, plane)``: the mass times its radius,
+    its angle in degrees from the first crank in the sense of rotation and
+    its plane's distance along the shaft. Each balance is returned the
+    same way, its angle in [0, 360). Bad values (no mass, one not finite,
+    the two planes the same) raise ``ValueError`` with the library's
+    message (docs/dynamics.md §6).
+
+    >>> [tuple(round(v, 6) for v in b) for b in two_plane_balance([(1, 0, 0)], (-1, 1))]
+    [(0.5, 180.0, -1.0), (0.5, 180.0, 1.0)]
+    """
+    given = [(_real(m), _real(a), _real(x)) for m, a, x in masses]
+    return _core.two_plane_balance(given, (_real(planes[0]), _real(planes[1])))
 
 
 def gallery(

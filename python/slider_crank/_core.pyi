@@ -34,6 +34,7 @@ __all__ = [
     "harmonics",
     "radial",
     "hammer_blow",
+    "two_plane_balance",
     "VERSION",
     "EXAMPLE_MASS",
     "DYNAMICS_ROWS",
@@ -109,6 +110,11 @@ def figure(
     animate: Optional[tuple[int, float, str]] = None,
     tikz: Optional[bool] = None,
     coupler: Optional[tuple[float, float]] = None,
+    rod_mass: Optional[float] = None,
+    rod_cg: Optional[float] = None,
+    rod_gyration: Optional[float] = None,
+    cranks: Optional[list[float]] = None,
+    planes: Optional[list[float]] = None,
 ) -> str: ...
 def encode(svg: str, format: str) -> bytes: ...
 def save(svg: str, path: str) -> None: ...
@@ -266,3 +272,6 @@ def hammer_blow(
     speed: float,
     load: Optional[float] = None,
 ) -> tuple[float, Optional[float]]: ...
+def two_plane_balance(
+    masses: list[tuple[float, float, float]], planes: tuple[float, float]
+) -> list[tuple[float, float, float]]: ...

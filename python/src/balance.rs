@@ -11,7 +11,7 @@ use pyo3::prelude::*;
 use serde_json::json;
 use slider_crank::Angle;
 use slider_crank::analytic::harmonics::Harmonics;
-use slider_crank::dynamics::{HammerBlow, InlineEngine, PartialBalance, RadialEngine};
+use slider_crank::dynamics::{HammerBlow, InlineEngine, PartialBalance, RadialEngine, Revolving};
 
 /// The cranks of `table balance` when `--cranks` is not given: four
 /// cylinders, the flat crank 0, 180, 180, 0.
@@ -178,6 +178,33 @@ pub fn hammer_blow(
     Ok((h.at_speed(l.speed).map_err(py_err)?, lift))
 }
 
+/// The two balance masses in the planes `planes` (the wheels') of the
+/// revolving `masses`, each (m r, its angle in degrees from the first
+/// crank, its plane along the shaft), as the library's
+/// `dynamics::two_plane_balance` finds them: each balance (m r, angle in
+/// [0°, 360°), plane). Refused as the library refuses: no mass, a value
+/// not finite, the two planes the same.
+#[pyfunction]
+#[pyo3(signature = (masses, planes))]
+pub fn two_plane_balance(
+    masses: Vec<(f64, f64, f64)>,
+    planes: (f64, f64),
+) -> PyResult<Vec<(f64, f64, f64)>> {
+    let masses: Vec<Revolving> = masses
+        .into_iter()
+        .map(|(moment, angle_deg, plane)| Revolving {
+            moment,
+            angle_deg,
+            plane,
+        })
+        .collect();
+    let balances = slider_crank::dynamics::two_plane_balance(&masses, planes).map_err(py_err)?;
+    Ok(balances
+        .iter()
+        .map(|b| (b.moment, b.angle_deg, b.plane))
+        .collect())
+}
+
 /// Registers the functions and constants.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(inline_balance, m)?)?;
@@ -185,6 +212,7 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(harmonics, m)?)?;
     m.add_function(wrap_pyfunction!(radial, m)?)?;
     m.add_function(wrap_pyfunction!(hammer_blow, m)?)?;
+    m.add_function(wrap_pyfunction!(two_plane_balance, m)?)?;
     m.add(
         "DEFAULT_FRACTIONS",
         slider_crank::dynamics::DEFAULT_FRACTIONS.to_vec(),

@@ -267,7 +267,8 @@ fn fill_chunk(
 #[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
     notation=None, mass=None, fluctuation=None, bore=None, gas_force=None, mirror=None,
-    width=None, height=None, title=None, animate=None, tikz=None, coupler=None))]
+    width=None, height=None, title=None, animate=None, tikz=None, coupler=None, rod_mass=None,
+    rod_cg=None, rod_gyration=None, cranks=None, planes=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -297,6 +298,11 @@ fn figure(
     animate: Option<(usize, f64, String)>,
     tikz: Option<bool>,
     coupler: Option<(f64, f64)>,
+    rod_mass: Option<f64>,
+    rod_cg: Option<f64>,
+    rod_gyration: Option<f64>,
+    cranks: Option<Vec<f64>>,
+    planes: Option<Vec<f64>>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
     let mut request = FigureRequest::default();
@@ -327,6 +333,11 @@ fn figure(
     request.height = height.map(parse).transpose()?;
     request.title = title.map(parse).transpose()?;
     request.coupler = coupler;
+    request.rod_mass = rod_mass;
+    request.rod_cg = rod_cg;
+    request.rod_gyration = rod_gyration;
+    request.cranks = cranks;
+    request.planes = planes;
     let options = request.options(name).map_err(py_err)?;
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);

@@ -21,7 +21,7 @@ with open(REPO / "tests/options/figure.csv", newline="", encoding="utf-8") as _f
 
 #: The keywords whose values are numbers.
 NUMBERS = {"crank", "rod", "offset", "angle", "rpm", "omega", "mass", "fluctuation", "bore",
-           "gas_force"}
+           "gas_force", "rod_mass", "rod_cg", "rod_gyration"}
 
 
 def value(case: Dict[str, str]) -> Any:

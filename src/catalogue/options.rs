@@ -138,6 +138,23 @@ pub struct FigureOptions {
     /// drawn as the plate ABQ and the polygons with their triangles abq
     /// and a′b′q′.
     pub coupler: Option<crate::construct::CouplerPoint>,
+    /// The connecting rod's mass m_r of `crank-pin-loads`, in the mass
+    /// unit (default 0.6 times the reciprocating mass); 0 is a massless
+    /// rod, whose curve is then the dashed one's.
+    pub rod_mass: Option<f64>,
+    /// The distance BG of the rod's centre of mass from the crank pin of
+    /// `crank-pin-loads`, in the length unit, 0 ≤ BG ≤ l (default l/3).
+    pub rod_cg: Option<f64>,
+    /// The rod's radius of gyration k about its centre of mass, of
+    /// `crank-pin-loads`, in the length unit (default 0.3 l).
+    pub rod_gyration: Option<f64>,
+    /// The cranks of `inline-balance`, each cylinder's in degrees ahead
+    /// of the first's (default 0, 120, 240: three cylinders at 120°).
+    pub cranks: Option<Vec<f64>>,
+    /// The planes of `inline-balance`'s cylinders, each line of stroke's
+    /// distance from the reference plane along the shaft, in pitches, one
+    /// for each crank (default a pitch of 1 about the middle cylinder).
+    pub planes: Option<Vec<f64>>,
 }
 
 /// One of the things a named figure may take from its options: each
@@ -175,6 +192,10 @@ pub(crate) enum Setting {
     GasForce,
     /// The coupler point Q.
     Coupler,
+    /// The connecting rod's mass, centre of mass and radius of gyration.
+    Rod,
+    /// The cylinders of an in-line engine: their cranks and planes.
+    Cylinders,
 }
 
 impl Setting {
@@ -213,6 +234,22 @@ impl Setting {
             Setting::Bore => Field::Bore,
             Setting::GasForce => Field::GasForce,
             Setting::Coupler => Field::Coupler,
+            Setting::Rod => {
+                return Wording::from("rod (")
+                    .option(Field::RodMass)
+                    .then(", ")
+                    .option(Field::RodCg)
+                    .then(", ")
+                    .option(Field::RodGyration)
+                    .then(")");
+            }
+            Setting::Cylinders => {
+                return Wording::from("cylinders (")
+                    .option(Field::Cranks)
+                    .then(", ")
+                    .option(Field::Plane)
+                    .then(")");
+            }
         };
         Wording::default().option(field)
     }
@@ -238,6 +275,14 @@ impl FigureOptions {
             (self.bore.is_some(), Setting::Bore),
             (self.gas_force.is_some(), Setting::GasForce),
             (self.coupler.is_some(), Setting::Coupler),
+            (
+                self.rod_mass.is_some() || self.rod_cg.is_some() || self.rod_gyration.is_some(),
+                Setting::Rod,
+            ),
+            (
+                self.cranks.is_some() || self.planes.is_some(),
+                Setting::Cylinders,
+            ),
         ]
         .into_iter()
         .filter_map(|(set, s)| set.then_some(s))

@@ -74,6 +74,16 @@ pub struct FigureRequest {
     /// of A → B where positive ([`CouplerPoint::off_rod`]: 0 ≤ t ≤ 1,
     /// |h| ≤ 100, else refused).
     pub coupler: Option<(f64, f64)>,
+    /// The connecting rod's mass of `crank-pin-loads`.
+    pub rod_mass: Option<f64>,
+    /// The distance of the rod's centre of mass from the crank pin.
+    pub rod_cg: Option<f64>,
+    /// The rod's radius of gyration about its centre of mass.
+    pub rod_gyration: Option<f64>,
+    /// The cranks of `inline-balance`, degrees ahead of the first's.
+    pub cranks: Option<Vec<f64>>,
+    /// The planes of `inline-balance`'s cylinders, in pitches.
+    pub planes: Option<Vec<f64>>,
 }
 
 impl FigureRequest {
@@ -128,6 +138,11 @@ impl FigureRequest {
             .coupler
             .map(|(t, h)| CouplerPoint::off_rod(t, h))
             .transpose()?;
+        options.rod_mass = self.rod_mass;
+        options.rod_cg = self.rod_cg;
+        options.rod_gyration = self.rod_gyration;
+        options.cranks = self.cranks.clone();
+        options.planes = self.planes.clone();
         Ok(options)
     }
 }

@@ -12,7 +12,9 @@ use crate::scene::Layer;
 use At::{Crank, NoPose, Tilt};
 use Group::{Chain, Developers, Diagrams};
 use Kind::{Diagram, Mechanism};
-use Setting::{Angle, Bore, Data, Fit, Fluctuation, Font, GasForce, Mass, Mirror, Speed, Style};
+use Setting::{
+    Angle, Bore, Cylinders, Data, Fit, Fluctuation, Font, GasForce, Mass, Mirror, Rod, Speed, Style,
+};
 use Source::{Book, Ng, Outside};
 
 /// What the table says of one named figure.
@@ -580,12 +582,12 @@ figures! {
     InlineBalance => FigureSpec {
         name: "inline-balance",
         source: Book("§35, eq. (3): its two terms summed over the cylinders of an in-line engine, the balancing of the reciprocating masses as a course in the dynamics of machines draws it (docs/dynamics.md §6); no figure in either seed"),
-        caption: "Three cylinders in line with cranks at 120°, a pitch of 1 and the reference plane through the middle one, n = 6: the primary and secondary force polygons close (the forces balance), the couple polygons do not, their closing sides √3 and √3/n the unbalanced couples.",
+        caption: "Three cylinders in line with cranks at 120°, a pitch of 1 and the reference plane through the middle one, n = 6: the primary and secondary force polygons close (the forces balance), the couple polygons do not, their closing sides √3 and √3/n the unbalanced couples (by default; other cranks and planes may be given).",
         mechanism: ENGINE,
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::balance::build),
-        takes: &[MECH, Style, Font],
+        takes: &[MECH, Style, Font, Cylinders],
     },
     /// The polar load diagram of the crank pin over a turn, with and
     /// without the rod's inertia, in fixed axes and relative to the crank.
@@ -597,7 +599,7 @@ figures! {
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::loads::build),
-        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Style, Font],
+        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Rod, Style, Font],
     },
     /// The flywheel: the energy stored above its least over the turn,
     /// rising by the fluctuation of energy ΔE, and the crank speed with

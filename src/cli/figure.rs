@@ -173,6 +173,27 @@ pub struct FigureFlags {
     /// rod is drawn as the plate ABQ [default: 0.5, the rod's middle]
     #[arg(long, value_name = "T[,H]", allow_hyphen_values = true)]
     pub coupler: Option<CouplerArg>,
+    /// The connecting rod's mass of crank-pin-loads, in the mass unit; 0
+    /// for a massless rod [default: 0.6 times the reciprocating mass]
+    #[arg(long, value_name = "MR", allow_hyphen_values = true)]
+    pub rod_mass: Option<f64>,
+    /// The distance of the rod's centre of mass from the crank pin, of
+    /// crank-pin-loads, 0 to the rod's length [default: l/3]
+    #[arg(long, value_name = "BG", allow_hyphen_values = true)]
+    pub rod_cg: Option<f64>,
+    /// The rod's radius of gyration about its centre of mass, of
+    /// crank-pin-loads [default: 0.3 l]
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    pub rod_gyration: Option<f64>,
+    /// The cranks of inline-balance, each cylinder's in degrees ahead of
+    /// the first's, comma-separated [default: 0,120,240]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub cranks: Option<String>,
+    /// The planes of inline-balance's cylinders, each line of stroke's
+    /// distance from the reference plane in pitches, one for each crank,
+    /// comma-separated [default: a pitch of 1 about the engine's middle]
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub planes: Option<String>,
 }
 
 /// `--coupler T[,H]`: a point along the rod and off its line.
@@ -324,6 +345,15 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     request.fluctuation = args.fluctuation;
     request.bore = args.bore;
     request.gas_force = args.gas_force;
+    request.rod_mass = args.rod_mass;
+    request.rod_cg = args.rod_cg;
+    request.rod_gyration = args.rod_gyration;
+    request.cranks = (args.cranks.as_deref())
+        .map(|s| super::args::parse_list(s, "crank angle", false))
+        .transpose()?;
+    request.planes = (args.planes.as_deref())
+        .map(|s| super::args::parse_list(s, "plane", false))
+        .transpose()?;
     request.mirror = match (args.mirror, args.no_mirror) {
         (true, _) => Some(true),
         (_, true) => Some(false),

@@ -688,21 +688,40 @@ fn sample(e: &Exact, map: &Map, per_piece: usize) -> Sampled {
     s
 }
 
-/// The distance (page units) from `q` to the exact curve: the nearest
-/// sample, then a golden-section search between its neighbours.
+/// The distance (page units) from `q` to the exact curve: about each
+/// local minimum of the samples' distance within a unit of the nearest
+/// sample's, a golden-section search between its neighbours, the least
+/// of them. About the nearest sample alone, a written point was measured
+/// against another part of the curve passing near where the samples of
+/// its own part lay farther: the massless rod's crank-pin loads, whose
+/// curves pass near themselves (and through the pole, where the piston
+/// effort changes sign), measured 0.050 units off where they are 0.0066.
 fn distance_to_curve(q: P, e: &Exact, s: &Sampled, map: &Map) -> f64 {
-    let (best, _) = s
-        .page
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (i, dist(*p, q)))
-        .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
-    let (lo_i, hi_i) = s
-        .pieces
-        .iter()
-        .find(|(a, b)| best >= *a && best < *b)
-        .copied()
-        .unwrap();
+    let d: Vec<f64> = s.page.iter().map(|p| dist(*p, q)).collect();
+    let nearest = d.iter().copied().fold(f64::INFINITY, f64::min);
+    let mut best = nearest;
+    for &(lo_i, hi_i) in &s.pieces {
+        for i in lo_i..hi_i {
+            let left = i == lo_i || d[i - 1] >= d[i];
+            let right = i + 1 == hi_i || d[i + 1] >= d[i];
+            if left && right && d[i] <= nearest + 1.0 {
+                best = best.min(refine(q, e, s, map, i, (lo_i, hi_i)));
+            }
+        }
+    }
+    best
+}
+
+/// The least distance from `q` to the exact curve between the neighbours
+/// of sample `best` in its piece `(lo_i, hi_i)`, by golden section.
+fn refine(
+    q: P,
+    e: &Exact,
+    s: &Sampled,
+    map: &Map,
+    best: usize,
+    (lo_i, hi_i): (usize, usize),
+) -> f64 {
     let mut lo = s.params[best.saturating_sub(1).max(lo_i)];
     let mut hi = s.params[(best + 1).min(hi_i - 1)];
     let d = |t: f64| dist(map.apply((e.f)(t)), q);
@@ -765,21 +784,15 @@ fn inside(f: &[f64; 4], p: P, margin: f64) -> bool {
 /// curve inside the frame against the written path. Returns the largest
 /// deviation of the path from the curve, in page units.
 fn measure_figure(name: FigureName, svg: &str) -> f64 {
-    measure_curves(name.name(), svg, &curves(name), &[])
+    measure_curves(name.name(), svg, &curves(name))
 }
 
 /// Measures the `curve-*` paths of the figure `svg` (named `name` in
 /// messages) against `expected`, as [`measure_figure`] does, each within
-/// the figure's tolerance or the one `allowed` gives its id (a known
-/// excess, written in the docs).
-fn measure_curves(
-    name: &str,
-    svg: &str,
-    expected: &[(String, Exact)],
-    allowed: &[(&str, f64)],
-) -> f64 {
+/// the figure's tolerance.
+fn measure_curves(name: &str, svg: &str, expected: &[(String, Exact)]) -> f64 {
     let meta = metadata(svg);
-    let figure_tolerance = meta["tolerance"].as_f64().unwrap();
+    let tolerance = meta["tolerance"].as_f64().unwrap();
     let mut worst: f64 = 0.0;
     let drawn: Vec<&str> = svg
         .match_indices("id=\"curve-")
@@ -791,9 +804,6 @@ fn measure_curves(
     let ids: Vec<&str> = expected.iter().map(|(id, _)| id.as_str()).collect();
     assert_eq!(drawn, ids, "{name}: the curves drawn");
     for (id, e) in expected {
-        let tolerance = (allowed.iter())
-            .find(|(a, _)| a == id)
-            .map_or(figure_tolerance, |(_, t)| *t);
         let before = worst;
         worst = 0.0;
         let (panel, map) = panel_map(svg, id);
@@ -1500,6 +1510,70 @@ fn the_turning_moments_area_letters_stand_in_their_areas_and_the_panels_align() 
     }
 }
 
+/// The text of the element `id` as a reader sees it.
+fn text_of(svg: &str, id: &str) -> String {
+    let at = svg.find(&format!("id=\"{id}\"")).unwrap();
+    let start = at + svg[at..].find('>').unwrap() + 1;
+    read_text(&svg[start..start + svg[start..].find("</text>").unwrap()])
+}
+
+#[test]
+fn the_turning_moments_area_letters_clear_the_mean_line_and_keep_within_the_axis() {
+    // The fifth review's engines, at its page widths: the values "a₂ =
+    // +10268" and "a₄ = +6685" at l = 1.05 r struck by the dashed mean
+    // line, a₅ past the axis's end at 360°.
+    for (l, e) in [(1.05, 0.0), (1.06, 0.0), (2.79, 0.903), (39.5, 0.0)] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            let case = format!("l {l} e {e} {width:?}");
+            // The mean line, level from the axis's start to its end.
+            let d = attr(&svg, "line-mean-torque", "d").unwrap();
+            let v: Vec<f64> = d
+                .split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+                .filter(|t| !t.is_empty())
+                .map(|t| t.parse().unwrap())
+                .collect();
+            let (start, end, mean) = (v[0], v[2], v[1]);
+            assert!((v[3] - mean).abs() < 1e-9, "{case}: {d}");
+            for k in 1.. {
+                let id = format!("label-lobe-{k}");
+                if !svg.contains(&format!("id=\"{id}\"")) {
+                    assert!(k > 2, "{case}: {k} letters");
+                    break;
+                }
+                let (x, y, em) = (
+                    num(&svg, &id, "x"),
+                    num(&svg, &id, "y"),
+                    num(&svg, &id, "font-size"),
+                );
+                // Its ink: a value's digits up to 0.7 em above the
+                // baseline, a bare letter's italic a 0.45 em; the
+                // subscript 0.3 em below it; the line's stroke half a
+                // unit about it, and a unit clear.
+                let said = text_of(&svg, &id);
+                let high = if said.contains('=') { 0.7 } else { 0.45 };
+                let (top, bottom) = (y - high * em, y + 0.3 * em);
+                assert!(
+                    mean < top - 1.5 || mean > bottom + 1.5,
+                    "{case}: {id} ({said}) {top:.2}..{bottom:.2} on the mean line at {mean:.2}"
+                );
+                // Within the axis: at least 0.2 em a character either
+                // side of its middle.
+                let half = 0.2 * em * said.chars().count() as f64;
+                assert!(
+                    x - half >= start - 0.01 && x + half <= end + 0.01,
+                    "{case}: {id} at {x:.2} past the axis {start:.2}..{end:.2}"
+                );
+            }
+        }
+    }
+}
+
 /// The crank-pin load of the in-line engine `engine` with a rod of mass
 /// `rod_mass`, its centre of mass `beta` l from the crank pin, radius of
 /// gyration `k`, at θ (radians), by Newton–Euler of the slider and of
@@ -1541,17 +1615,113 @@ fn pin_load(engine: &Engine, rod_mass: f64, beta: f64, k: f64, theta: f64, relat
     (load.0 * cs + load.1 * sn, -load.0 * sn + load.1 * cs)
 }
 
+#[test]
+fn the_crank_pin_loads_letter_each_quarter_at_its_own_point_and_the_pole() {
+    // The fifth review: "0°, 180°" lettered on one dot where the two
+    // points stand apart (read as one load at both angles); the dashed
+    // curve's quarters unlettered on narrow pages (taken into the full
+    // curve's letters up to 18 units away); the pole lost among a short
+    // rod's loops. Every letter names only points on its dot (within a
+    // dot's diameter, 4 units), each curve's every quarter is lettered
+    // there, and the pole is lettered O.
+    for (r, l) in [(0.5, 3.0), (1.0, 1.04), (1.0, 46.7), (1.0, 1.09)] {
+        let engine = Engine {
+            r,
+            l,
+            omega: omega(),
+            m: 10.0,
+            rows: indicator(),
+            bore: 10.0 / 12.0,
+        };
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(slider_crank::SliderCrank::in_line(r, l).unwrap());
+            let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+            for (panel, relative) in [("fixed", false), ("relative", true)] {
+                let case = format!("r {r} l {l} {width:?} {panel}");
+                let (_, map) = panel_map(&svg, &format!("point-{panel}-pole-1"));
+                // Each curve's quarter on the page: 0° on the expansion
+                // line, 180° on the compression line, as the figure takes
+                // the dead centres.
+                let at = |share: f64, deg: f64| {
+                    let t = if deg % 180.0 == 0.0 {
+                        deg.to_radians() + 1e-9
+                    } else {
+                        deg.to_radians()
+                    };
+                    map.apply(pin_load(
+                        &engine,
+                        share * engine.m,
+                        1.0 / 3.0,
+                        0.3 * l,
+                        t,
+                        relative,
+                    ))
+                };
+                let curves = [("with-rod", 0.6), ("without-rod", 0.0)];
+                // The letters of the quarters: (their dot, the angles said).
+                let mut letters = Vec::new();
+                for (curve, _) in curves {
+                    for deg in [0, 90, 180, 270] {
+                        let id = format!("label-{panel}-{curve}-{deg}");
+                        if !svg.contains(&format!("id=\"{id}\"")) {
+                            continue;
+                        }
+                        let dot = format!("point-{panel}-{curve}-{deg}");
+                        let c = (num(&svg, &dot, "cx"), num(&svg, &dot, "cy"));
+                        let said: Vec<f64> = text_of(&svg, &id)
+                            .split(", ")
+                            .map(|a| a.trim_end_matches('°').parse().unwrap())
+                            .collect();
+                        letters.push((id, c, said));
+                    }
+                }
+                let near = |p: P, q: P| (p.0 - q.0).hypot(p.1 - q.1) <= 4.0 + 0.05;
+                for (id, c, said) in &letters {
+                    for a in said {
+                        assert!(
+                            curves.iter().any(|(_, share)| near(at(*share, *a), *c)),
+                            "{case}: {id} says {a}°, whose points stand apart from its dot"
+                        );
+                    }
+                }
+                for (curve, share) in curves {
+                    for deg in [0.0, 90.0, 180.0, 270.0] {
+                        let p = at(share, deg);
+                        assert!(
+                            letters
+                                .iter()
+                                .any(|(_, c, said)| said.contains(&deg) && near(p, *c)),
+                            "{case}: the {curve} curve's {deg}° at {p:?} unlettered"
+                        );
+                    }
+                }
+                assert_eq!(text_of(&svg, &format!("label-{panel}-pole")), "O", "{case}");
+            }
+        }
+    }
+}
+
 /// The four load curves of crank-pin-loads for the in-line engine (r, l)
 /// at the figure's defaults: m = 10, 250 rpm, the example's indicator
 /// diagram on a 10 in bore, the illustrative rod (0.6 m, l/3 from the
 /// pin, k = 0.3 l) and a massless one; each in two pieces, as the gas
 /// force jumps at the dead centres.
 fn load_curves(r: f64, l: f64) -> Vec<(String, Exact)> {
+    rod_load_curves(r, l, (6.0, 1.0 / 3.0, 0.3 * l))
+}
+
+/// The four load curves as [`load_curves`], the full ones with the rod
+/// `(mass, BG / l, k)`.
+fn rod_load_curves(r: f64, l: f64, (mass, beta, k): (f64, f64, f64)) -> Vec<(String, Exact)> {
     let mut v = Vec::new();
     let inside = 1e-9;
     let pieces = [(inside, PI - inside), (PI + inside, 2.0 * PI - inside)];
     for (panel, relative) in [("fixed", false), ("relative", true)] {
-        for (curve, share) in [("with-rod", 0.6), ("without-rod", 0.0)] {
+        for (curve, rod_mass) in [("with-rod", mass), ("without-rod", 0.0)] {
             let engine = Engine {
                 r,
                 l,
@@ -1560,21 +1730,47 @@ fn load_curves(r: f64, l: f64) -> Vec<(String, Exact)> {
                 rows: indicator(),
                 bore: 10.0 / 12.0,
             };
-            let f =
-                move |t: f64| pin_load(&engine, share * engine.m, 1.0 / 3.0, 0.3 * l, t, relative);
+            let f = move |t: f64| pin_load(&engine, rod_mass, beta, k, t, relative);
             v.push((format!("curve-{panel}-{curve}"), exact(f, &pieces)));
         }
     }
     v
 }
 
-/// What the massless rod's crank-pin load curves are held to away from
-/// the default engine, page units: above the largest excess measured
-/// (0.0501 relative to the crank at l = 1.06 r, 0.048 before the panels
-/// lost their legends and the curves grew about 4 %; 0.016 in fixed axes
-/// at l = 51.8 r), six times the figures' 0.01, whose cause is not yet
-/// found (docs/dynamics.md). The rod's own curves keep the 0.01.
-const EXCESS: f64 = 0.06;
+#[test]
+fn the_crank_pin_loads_of_a_rod_given_are_its_newton_euler_loads() {
+    // --rod-mass 20 --rod-cg 1.5 --rod-gyration 1 on the default engine
+    // (m = 10, l = 3): the full curves are the loads of that rod.
+    let mut o = FigureOptions::default();
+    o.rod_mass = Some(20.0);
+    o.rod_cg = Some(1.5);
+    o.rod_gyration = Some(1.0);
+    let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+    measure_curves(
+        "crank-pin-loads with a rod given",
+        &svg,
+        &rod_load_curves(0.5, 3.0, (20.0, 0.5, 1.0)),
+    );
+    let text = read_text(&svg)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        text.contains("the rod 20.00 slug, its centre of mass 1.500 ft from the crank pin, radius of gyration 1.000 ft; the gas force"),
+        "{text}"
+    );
+    // A massless rod given is the dashed curve's.
+    let mut o = FigureOptions::default();
+    o.rod_mass = Some(0.0);
+    let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+    for panel in ["fixed", "relative"] {
+        assert_eq!(
+            attr(&svg, &format!("curve-{panel}-with-rod"), "d"),
+            attr(&svg, &format!("curve-{panel}-without-rod"), "d"),
+            "{panel}"
+        );
+    }
+}
 
 #[test]
 fn the_crank_pin_load_curves_are_the_newton_euler_loads_within_the_tolerance() {
@@ -1583,19 +1779,15 @@ fn the_crank_pin_load_curves_are_the_newton_euler_loads_within_the_tolerance() {
         let mut o = FigureOptions::default();
         o.mechanism = Some(slider_crank::SliderCrank::in_line(r, l).unwrap());
         let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
-        let allowed: &[(&str, f64)] = if l == 3.0 {
-            &[]
-        } else {
-            &[
-                ("curve-fixed-without-rod", EXCESS),
-                ("curve-relative-without-rod", EXCESS),
-            ]
-        };
+        // Every curve to the figure's 0.01 (largest 0.0066). The massless
+        // rod's were held at 0.06 until the measure searched about every
+        // near part of the curve, not the nearest sample's alone
+        // ([`distance_to_curve`]): their excess (0.050, 0.016) was the
+        // distance to another part passing near.
         let worst = measure_curves(
             &format!("crank-pin-loads r {r} l {l}"),
             &svg,
             &load_curves(r, l),
-            allowed,
         );
         assert!(worst > 1e-4, "measured, not vacuous: {worst}");
     }

@@ -1,12 +1,14 @@
 //! The force and couple polygons of an in-line engine (`docs/dynamics.md`
 //! §6): (a) the primary forces, a side m r ω² along each cylinder's crank
-//! at α_i; (b) the primary couples about the reference plane, each side
+//! at δ_i; (b) the primary couples about the reference plane, each side
 //! times the cylinder's distance a_i from it (reversed for a negative
-//! a_i); (c) and (d) the secondary forces and couples, sides 1/n at 2α_i.
+//! a_i); (c) and (d) the secondary forces and couples, sides 1/n at 2δ_i.
+//! The crank angle is δ here, not the α of `InlineEngine`: set in
+//! italics, α reads as the pitch's a.
 //! Each polygon is drawn head to tail from the origin at θ = 0; where it
 //! does not close, its closing side from the origin to the last side's
-//! end is the resultant, the largest unbalanced force or couple over a
-//! turn. Every side and resultant is [`InlineEngine`]'s.
+//! end is the resultant R, lettered with its size, the largest unbalanced
+//! force or couple over a turn. Every side and resultant is [`InlineEngine`]'s.
 //!
 //! The engine is the textbooks' three cylinders with cranks at 120°, a
 //! pitch of 1 and the reference plane through the middle cylinder
@@ -19,7 +21,7 @@ use super::{Ctx, Sheet, short, sig};
 use crate::diagram::Plot;
 use crate::dynamics::{InlineEngine, Polygon, default_planes, offset_harmonic};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Frame, Point};
 
 /// The cranks of the engine drawn, degrees ahead of the first's.
@@ -35,8 +37,9 @@ const NOTES: f64 = 88.0;
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
-    let planes = default_planes(CRANKS.len());
-    let engine = InlineEngine::new(&CRANKS, &planes, ctx.mechanism.ratio())?;
+    let cranks = ctx.options.cranks.clone().unwrap_or(CRANKS.to_vec());
+    let planes = (ctx.options.planes.clone()).unwrap_or_else(|| default_planes(cranks.len()));
+    let engine = InlineEngine::new(&cranks, &planes, ctx.mechanism.ratio())?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
     let half = 0.5 * (page.width() - 48.0);
@@ -57,7 +60,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             serde_json::json!({"resultant": r.vector, "amplitude": r.amplitude, "balanced": r.balanced}),
         );
     }
-    meta.insert("cranks_deg".into(), serde_json::json!(CRANKS));
+    meta.insert("cranks_deg".into(), serde_json::json!(cranks));
     meta.insert("planes".into(), serde_json::json!(planes));
     sheet.meta("balance", serde_json::Value::Object(meta));
     let top = 16.0 + 2.0 * (tall + 16.0);
@@ -79,21 +82,21 @@ fn id(part: Polygon) -> &'static str {
 /// The caption of the polygon's panel.
 fn caption(part: Polygon, closed: bool) -> String {
     let (letter, what) = match part {
-        Polygon::PrimaryForce => ("(a)", "Primary forces: sides *m\u{a0}r*ω² at α_{i}"),
+        Polygon::PrimaryForce => ("(a)", "Primary forces: sides *m\u{a0}r*ω² at δ_{i}"),
         Polygon::PrimaryCouple => (
             "(b)",
-            "Primary couples: sides *m\u{a0}r*ω² *a*_{i} at α_{i}",
+            "Primary couples: sides *m\u{a0}r*ω² *a*_{i} at δ_{i}",
         ),
-        Polygon::SecondaryForce => ("(c)", "Secondary forces: sides *m\u{a0}r*ω²/*n* at 2α_{i}"),
+        Polygon::SecondaryForce => ("(c)", "Secondary forces: sides *m\u{a0}r*ω²/*n* at 2δ_{i}"),
         Polygon::SecondaryCouple => (
             "(d)",
-            "Secondary couples: sides *m\u{a0}r*ω² *a*_{i}/*n* at 2α_{i}",
+            "Secondary couples: sides *m\u{a0}r*ω² *a*_{i}/*n* at 2δ_{i}",
         ),
     };
     let verdict = if closed {
         "closes: balanced"
     } else {
-        "the dashed closing side is the resultant"
+        "the dashed closing side *R* is the resultant"
     };
     format!("{letter} {what}; {verdict}")
 }
@@ -152,6 +155,17 @@ fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect)
             )
             .dashed(Dash::Dashed),
         );
+        plot.push(Item::new(
+            format!("value-resultant-{name}"),
+            Role::Label,
+            Shape::Label {
+                anchor: Point::origin() + (end - Point::origin()) * 0.5,
+                text: RichText::parse(&format!("*R* = {}", sig(resultant.amplitude))),
+                size: TextSize::Small,
+                toward: None,
+                line: Some([Point::origin(), end]),
+            },
+        ));
     }
     plot.push(
         line(
@@ -169,6 +183,19 @@ fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect)
         None,
     );
     Ok(plot)
+}
+
+/// "Three cylinders", "One cylinder": the count in words to twelve.
+fn cylinders(count: usize) -> String {
+    const WORDS: [&str; 12] = [
+        "One", "Two", "Three", "Four", "Five", "Six", "Seven", "Eight", "Nine", "Ten", "Eleven",
+        "Twelve",
+    ];
+    match (count, WORDS.get(count.wrapping_sub(1))) {
+        (1, Some(word)) => format!("{word} cylinder"),
+        (_, Some(word)) => format!("{word} cylinders"),
+        _ => format!("{count} cylinders"),
+    }
 }
 
 /// Which cylinders lie in the reference plane (a couple's side of
@@ -241,14 +268,20 @@ fn notes(ctx: &Ctx, engine: &InlineEngine) -> Vec<String> {
     };
     vec![
         format!(
-            "Three cylinders in line, cranks at α = {}° ahead of the first, at *a* = {} pitches from the reference plane (the middle cylinder’s){}, *n* = {}; the polygons are drawn at θ = 0, the line of stroke dash-dotted, each to its own scale, sides in units of *m\u{a0}r*ω² (a couple’s times the pitch).",
+            "{} in line, their cranks at the angles δ_{{i}} = {}° ahead of the first, their planes at the distances *a*_{{i}} = {} pitches from the reference plane{}{}, *n* = {}; the polygons are drawn at θ = 0, the line of stroke dash-dotted, each to its own scale, sides in units of *m\u{a0}r*ω² (a couple’s times the pitch).",
+            cylinders(engine.cranks_deg().len()),
             list(engine.cranks_deg()),
             list(engine.planes()),
+            match (ctx.options.planes.is_none(), engine.cranks_deg().len() % 2) {
+                (true, 1) => " (the middle cylinder’s)",
+                (true, _) => " (midway along the engine)",
+                _ => "",
+            },
             in_plane(engine),
             short(engine.ratio()),
         ),
         format!(
-            "Resultants ÷ *m\u{a0}r*ω²: primary force {}, primary couple {}, secondary force {}, secondary couple {}: each the largest unbalanced value over a turn, reached when it lies on the line of stroke.",
+            "Resultants *R* ÷ *m\u{a0}r*ω²: primary force {}, primary couple {}, secondary force {}, secondary couple {}: each the largest unbalanced value over a turn, reached when it lies on the line of stroke.",
             value(Polygon::PrimaryForce),
             value(Polygon::PrimaryCouple),
             value(Polygon::SecondaryForce),

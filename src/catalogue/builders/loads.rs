@@ -49,19 +49,55 @@ const NOTES: f64 = 72.0;
 /// its own mark than any other.
 pub(crate) const APART: f64 = 18.0;
 
+/// Quarters whose points are nearer than this, page units, are one
+/// place, marked by one dot lettered with both ("0°, 180°"): a dot's
+/// diameter, so that the two dots would overlap. Farther apart, each has
+/// its own dot and letter, however near: one letter for two points
+/// apart reads as one load at both angles.
+pub(crate) const MEET: f64 = 4.0;
+
 /// The shortest scale bar, page units: as long as its text.
 const BAR_TEXT: f64 = 84.0;
 
 /// Room below the curves for the scale bar and its text, page units.
 const BAR_ROOM: f64 = 30.0;
 
-/// The two engines: with the illustrative rod, and with a massless one.
+/// The two engines: with the rod asked for (each of its values not given
+/// the illustrative rod's), and with a massless one.
 fn engines(ctx: &Ctx) -> Result<(Engine, Engine)> {
     let bare = super::turning::engine(ctx)?;
     let l = ctx.mechanism.rod();
     let mass = bare.reciprocating_mass();
-    let rod = RodMass::new(ROD_MASS * mass, ROD_CG * l, ROD_GYRATION * l)?;
+    let o = ctx.options;
+    let rod = RodMass::new(
+        o.rod_mass.unwrap_or(ROD_MASS * mass),
+        o.rod_cg.unwrap_or(ROD_CG * l),
+        o.rod_gyration.unwrap_or(ROD_GYRATION * l),
+    )?;
     Ok((bare.clone().with_rod(rod)?, bare))
+}
+
+/// What the notes say of the rod's values in brackets after them: the
+/// illustrative rod's ratios (" (0.6 times the reciprocating mass, l/3,
+/// 0.3 l)"), those of the values not given where some are, nothing where
+/// all are.
+fn rod_said(ctx: &Ctx) -> String {
+    let o = ctx.options;
+    let own = [
+        (o.rod_mass, "the mass 0.6 times the reciprocating mass"),
+        (o.rod_cg, "the centre of mass *l*/3"),
+        (o.rod_gyration, "the radius of gyration 0.3 *l*"),
+    ];
+    let left: Vec<&str> = own
+        .iter()
+        .filter(|(given, _)| given.is_none())
+        .map(|(_, said)| *said)
+        .collect();
+    match left.len() {
+        3 => " (0.6 times the reciprocating mass, *l*/3, 0.3 *l*)".into(),
+        0 => String::new(),
+        _ => format!(" ({}, the illustrative rod’s)", left.join(", ")),
+    }
 }
 
 /// The crank-pin load of `engine` at `deg` degrees of its cycle, in fixed
@@ -278,8 +314,14 @@ fn polar_plot(
         // curve-tolerance test, as every curve-* is.
         plot.curve(&format!("curve-{name}-{id}"), &traced, dash, None)?;
     }
-    let apart = APART / plot.map().scale();
-    for item in marks(engines, cycle, relative, name, apart) {
+    let scale = plot.map().scale();
+    for item in marks(
+        engines,
+        cycle,
+        relative,
+        name,
+        (APART / scale, MEET / scale),
+    ) {
         plot.push(item);
     }
     plot.points(
@@ -288,6 +330,18 @@ fn polar_plot(
         Symbol::Cross,
         None,
     );
+    // Lettered, so that it is found among a short rod's loops about it.
+    plot.push(Item::new(
+        format!("label-{name}-pole"),
+        Role::Label,
+        Shape::Label {
+            anchor: Point::origin(),
+            text: RichText::parse("*O*"),
+            size: TextSize::Letter,
+            toward: None,
+            line: None,
+        },
+    ));
     Ok(plot)
 }
 
@@ -295,13 +349,20 @@ fn polar_plot(
 const CURVES: [&str; 2] = ["with-rod", "without-rod"];
 
 /// The marks of one panel, ids `point-{name}-{curve}-{deg}`: each curve's
-/// quarters first, a quarter within `apart` (world units) of a mark
-/// already set lettered by that mark ("0°, 180°") and not marked again,
+/// quarters first, a quarter within `meet` (world units, [`MEET`]) of a
+/// mark already set lettered by that mark ("0°, 180°") and not marked
+/// again,
 /// then the other points every 30° where they stand `apart` from every
 /// mark and from the pole and twice that from a lettered mark; then each lettered mark's letter
 /// `label-{name}-{curve}-{deg}`, set first on the side away from the
 /// nearest other mark.
-fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f64) -> Vec<Item> {
+fn marks(
+    engines: [&Engine; 2],
+    cycle: f64,
+    relative: bool,
+    name: &str,
+    (apart, meet): (f64, f64),
+) -> Vec<Item> {
     let every: Vec<f64> = (0..(cycle / MARK) as usize)
         .map(|k| k as f64 * MARK)
         .collect();
@@ -324,8 +385,13 @@ fn marks(engines: [&Engine; 2], cycle: f64, relative: bool, name: &str, apart: f
                         2.0 * apart
                     }
                 };
+                // A quarter meets a lettered mark only on it (the two dots
+                // one place); nearer, but apart, it has a dot of its own.
+                let reach = |t: &(&str, f64, Point, Vec<f64>)| {
+                    if lettered { meet } else { room(t) }
+                };
                 let near = (taken.iter_mut())
-                    .filter(|t| (p - t.2).norm() < room(t))
+                    .filter(|t| (p - t.2).norm() < reach(t))
                     .min_by(|a, b| (p - a.2).norm().total_cmp(&(p - b.2).norm()));
                 match near {
                     // A quarter on a lettered mark: that mark letters it too.
@@ -386,7 +452,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let r = rod.rod();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u} (0.6 times the reciprocating mass, *l*/3, 0.3 *l*); the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters that meet by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u}{}; the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
             short(m.crank()),
             short(m.rod()),
             ctx.offset_clause(),
@@ -395,6 +461,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             sig(r.map_or(0.0, RodMass::mass)),
             sig(r.map_or(0.0, RodMass::cg)),
             sig(r.map_or(0.0, RodMass::gyration)),
+            rod_said(ctx),
             short(bar),
         ),
         format!(

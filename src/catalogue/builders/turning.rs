@@ -202,6 +202,10 @@ fn lobes(ctx: &Ctx, plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
 /// line or the line T = 0 about it.
 const AREA_ROOM: f64 = 2.0;
 
+/// Where a text set at a fixed place has its place: the middle of its
+/// letters, this many ems above its baseline ([`Shape::Text`]).
+const MIDDLE: f64 = 0.35;
+
 /// The letter `label-lobe-{k}` of the area between the mean line at
 /// `mean` and the torque sampled at `column` (θ, T): the first of `texts`
 /// whose box, with [`AREA_ROOM`] about it (the bare letter at last
@@ -241,9 +245,13 @@ fn area_letter(
     let tries = (texts.iter().map(|t| (t, AREA_ROOM))).chain(texts.last().map(|t| (t, 0.0)));
     for (text, room) in tries {
         let rich = RichText::parse(text);
-        let half = (0.5 * rich.width(ctx.font, size) + room, 0.5 * size + room);
-        if let Some(at) = roomiest(&page, half, zero) {
-            let world = map.invert(at);
+        let ink = rich.measure(ctx.font, size);
+        // The ink above and below the place a text is set at (the middle
+        // of its letters), a subscript's drop included.
+        let (above, below) = (ink.above - MIDDLE * size, ink.below + MIDDLE * size);
+        let half = (0.5 * ink.width + room, 0.5 * (above + below) + room);
+        if let Some(centre) = roomiest(&page, half, zero) {
+            let world = map.invert(centre - Vector::new(0.0, 0.5 * (below - above)));
             return Item::new(
                 id,
                 Role::Label,
@@ -266,14 +274,26 @@ fn area_letter(
                 a
             }
         });
+    let text = RichText::parse(texts.last().map_or("", String::as_str));
+    // A sliver within a letter's width of an end of the axis is lettered
+    // on the side towards the middle, not past the axis's end.
+    let reach =
+        (text.width(ctx.font, size) + 2.0 * AREA_ROOM) / map.apply_vector(Vector::x()).norm();
+    let inward = if tallest.x + reach > 360.0 {
+        -1.0
+    } else if tallest.x - reach < 0.0 {
+        1.0
+    } else {
+        0.0
+    };
     Item::new(
         id,
         Role::Label,
         Shape::Label {
             anchor: Point::new(tallest.x, 0.5 * (tallest.y + mean)),
-            text: RichText::parse(texts.last().map_or("", String::as_str)),
+            text,
             size: TextSize::Small,
-            toward: Some(Vector::new(0.0, side)),
+            toward: Some(map.inverse().apply_vector(Vector::new(inward, -side))),
             line: None,
         },
     )
