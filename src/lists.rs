@@ -7,7 +7,7 @@ use crate::error::{Error, Input, Result};
 
 /// Most angles one range may describe: 2⁵³, past which the angles of a
 /// range are no longer distinct numbers. What a command may compute is
-/// bounded by [`GuardArgs`], not here.
+/// bounded by the command's guard on its cost, not here.
 pub const MAX_RANGE: f64 = 9_007_199_254_740_992.0;
 
 fn parse_number(text: &str, what: &str) -> Result<f64> {

@@ -193,7 +193,8 @@ pub fn condition(pose: &Pose, quantity: Quantity) -> f64 {
 /// Every construction of `pose` against the analytic core. Klein's rows are
 /// missing where D is at infinity, Bennett's for an offset engine. The
 /// polygons' coupler rows read the images of the rod's mid-point, their
-/// off-rod rows those of [`CHECKED_OFF_ROD`].
+/// off-rod rows those of the point halfway along AB and a quarter of AB
+/// to its left (`CouplerPoint::off_rod(0.5, 0.25)`).
 pub fn cross_check(pose: &Pose) -> Vec<CheckRow> {
     let r = pose.mechanism().crank();
     let d = InstantCentre::construct(pose);
