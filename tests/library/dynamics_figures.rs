@@ -987,3 +987,49 @@ fn the_balance_polygons_say_that_an_offset_is_left_out_and_by_how_much() {
         }
     }
 }
+
+/// The page extent (x and y ranges) of the path `id`, from its data.
+fn page_extent(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let d = attr(svg, id, "d").unwrap();
+    let v: Vec<f64> = d
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
+        .filter_map(|x| x.parse().ok())
+        .collect();
+    let range = |k: usize| {
+        (v.iter().skip(k).step_by(2))
+            .fold((f64::MAX, f64::MIN), |(lo, hi), x| (lo.min(*x), hi.max(*x)))
+    };
+    (range(0), range(1))
+}
+
+#[test]
+fn the_crank_pin_loads_panels_stand_one_above_the_other_on_a_narrow_page() {
+    // Side by side on a page of 120 mm or 4.5 in, each panel was under
+    // 200 units wide: the curves a few ems across under full-size
+    // letters, the force bar three times the largest load (scored 1.5).
+    // There (a) stands above (b), each the page's width; on a wide page
+    // they stand side by side.
+    let mut options = common::on_page("120mm", None);
+    options.mechanism = Some(SliderCrank::new(1.0, 39.6, 0.0).unwrap());
+    for (width, stacked) in [
+        ("120mm", true),
+        ("4.5in", true),
+        ("500", true),
+        ("900", false),
+    ] {
+        options.width = Some(width.parse().unwrap());
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&options).unwrap());
+        let page = num(&svg, "paper", "width");
+        let ((ax0, ax1), (_, ay1)) = page_extent(&svg, "curve-fixed-with-rod");
+        let ((bx0, _), (by0, _)) = page_extent(&svg, "curve-relative-with-rod");
+        assert_eq!(by0 > ay1, stacked, "{width}: (b) below (a)");
+        assert_eq!(bx0 > ax1, !stacked, "{width}: (b) right of (a)");
+        if stacked {
+            assert!(
+                ax1 - ax0 > 0.5 * page,
+                "{width}: panel (a)'s curve {} of a page {page} wide",
+                ax1 - ax0
+            );
+        }
+    }
+}

@@ -74,9 +74,6 @@ struct Parts {
     a: Point,
     /// The foot of the perpendicular from C on the line of stroke.
     t: Point,
-    /// The knee of the frame d's bar, where its leg from C meets the
-    /// line of stroke ([`knee`]).
-    k: Point,
     /// The far end of the frame's guide or slotted bar.
     f: Point,
     /// The line of stroke's direction (+x in the engine) and its normal.
@@ -92,32 +89,6 @@ fn ends(m: &SliderCrank) -> (f64, f64) {
     (near, far)
 }
 
-/// The least angle between the frame d's leg C → knee and the crank
-/// C → B, where both leave C.
-const KNEE_APART: f64 = 20.0;
-
-/// The knee of the frame d's bar in the engine's frame: the foot T = (0,
-/// e) of the perpendicular from C on the line of stroke, or, where the leg
-/// C → T would lie within [`KNEE_APART`] of the crank C → B `b` (near 90°
-/// or 270° with an offset near r, d's leg drawn on the crank read as a
-/// pin on it, and its slot as the rod), the point of the line of stroke
-/// behind T (away from the block) whose leg stands [`KNEE_APART`] from
-/// the crank. d is rigid: any leg from C to its slot draws it, and the
-/// offset is still the slot's distance from C. T itself at e = 0 (no leg).
-fn knee(e: f64, b: Point) -> Point {
-    let foot = Point::new(0.0, e);
-    if e == 0.0 || b.y * e <= 0.0 {
-        return foot;
-    }
-    // The crank's angle from C → T, positive behind (towards −x).
-    let beta = (-b.x).atan2(b.y * e.signum());
-    let apart = KNEE_APART.to_radians();
-    if beta.abs() >= apart {
-        return foot;
-    }
-    Point::new(-e.abs() * (beta + apart).tan(), e)
-}
-
 fn parts(m: &SliderCrank, p: &InversionPose) -> Parts {
     let (lh, _) = block_size(m);
     let e = m.offset();
@@ -128,7 +99,6 @@ fn parts(m: &SliderCrank, p: &InversionPose) -> Parts {
         b: p.place(pose.b()),
         a: p.place(pose.a()),
         t: p.place(Point::new(0.0, e)),
-        k: p.place(knee(e, pose.b() - pose.c().coords)),
         f: p.place(Point::new(far + lh + 0.15 * m.crank(), e)),
         u: p.turn(Vector::new(1.0, 0.0)),
         v: p.turn(Vector::new(0.0, 1.0)),
@@ -171,7 +141,7 @@ fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
         #[allow(clippy::expect_used)]
         let p = chain.pose(Angle::from_degrees(1.5 * k as f64).expect("finite"));
         let q = parts(m, &p);
-        for x in [q.c, q.b, q.a, q.t, q.k, q.f] {
+        for x in [q.c, q.b, q.a, q.t, q.f] {
             add(x);
         }
         for x in block(&q, lh, hh) {
@@ -250,7 +220,7 @@ fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64) -> Frame
     let l = m.rod();
     let q = parts(m, pose);
     let reach = padded(*turn, 0.25);
-    let mut points = vec![q.c, q.b, q.a, q.t, q.k, q.f];
+    let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
     // The path of A about B.
     points.push(q.b + Vector::new(l, l));
@@ -364,7 +334,7 @@ pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -
 pub(super) fn links_frame(m: &SliderCrank, pose: &InversionPose) -> Frame {
     let (lh, hh) = block_size(m);
     let q = parts(m, pose);
-    let mut points = vec![q.c, q.b, q.a, q.t, q.k, q.f];
+    let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
     let (centre, radius) = match pose.inversion() {
         Inversion::Frame => (q.c, m.crank()),
@@ -432,14 +402,19 @@ impl Drawing {
         }
     }
 
-    /// The frame d's bar from C (through its knee on the line of
-    /// stroke, where the stroke is offset).
+    /// The frame d's bar from C (through the foot T of its leg
+    /// perpendicular to the line of stroke, where the stroke is offset):
+    /// one shape at every pose, as a rigid link is drawn. A leg bent off
+    /// the crank where the two would lie together (near 90° with an
+    /// offset near r) was read as d changing its shape from pose to pose
+    /// and put O_ab's letter at the bend; the leg on the crank is the
+    /// pose's truth.
     fn bar(&self) -> Vec<Point> {
         let q = &self.q;
         if self.m.offset() == 0.0 {
             vec![q.c, q.f]
         } else {
-            vec![q.c, q.k, q.f]
+            vec![q.c, q.t, q.f]
         }
     }
 
@@ -693,9 +668,13 @@ impl Drawing {
         together: &mut Vec<String>,
     ) {
         let map = *self.s.transform();
-        let near = lettered
-            .iter()
-            .find(|(q, _)| map.apply_vector(p - q).norm() < CROWDED);
+        // The nearest of those within CROWDED on the page (a long rod's
+        // crank is a few units: O_ac at O_ab was said to lie "0.9995 from
+        // O_ad", the first found).
+        let apart = |q: &Point| map.apply_vector(p - q).norm();
+        let near = (lettered.iter())
+            .filter(|(q, _)| apart(q) < CROWDED)
+            .min_by(|(q, _), (s, _)| apart(q).total_cmp(&apart(s)));
         match near {
             Some(&(q, other)) if self.s.contains(p) => {
                 let (r, l, e) = (self.m.crank(), self.m.rod(), self.m.offset());

@@ -58,6 +58,11 @@ pub(crate) const MEET: f64 = 4.0;
 
 /// The shortest scale bar, page units: as long as its text.
 const BAR_TEXT: f64 = 84.0;
+/// The least width of a panel set beside the other, page units: on a
+/// narrower page (120 mm, 4.5 in) side by side the curves shrank to a
+/// few ems under full-size letters and a bar three times the largest
+/// load; there the panels stand one above the other.
+const STACK_BELOW: f64 = 300.0;
 
 /// Room below the curves for the scale bar and its text, page units.
 const BAR_ROOM: f64 = 30.0;
@@ -133,8 +138,16 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         Vector::new(a.x.max(hi.x - lo.x), a.y.max(hi.y - lo.y))
     });
     let pad = 0.1 * size.x.max(size.y).max(f64::MIN_POSITIVE);
+    // Side by side where each panel keeps [`STACK_BELOW`] units, else
+    // (a) above (b), each the page's width.
     let half = 0.5 * (page.width() - 48.0);
-    let most = page.height() - 16.0 - 16.0 - 16.0 - NOTES;
+    let stacked = half < STACK_BELOW;
+    let (half, rows) = if stacked {
+        (page.width() - 32.0, 2.0)
+    } else {
+        (half, 1.0)
+    };
+    let most = (page.height() - 16.0 - 16.0 - 16.0 - NOTES) / rows;
     // No legend: on a narrow page one set in a panel's free corner fell
     // on the curve and the scale bar; the notes say which curve is which.
     let tall = (half * (size.y + 2.0 * pad) / (size.x + 2.0 * pad) + crate::diagram::CAPTION)
@@ -143,7 +156,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.mechanism(ctx, true, false);
     let mut bar = 0.0;
     for (k, (relative, (lo, hi))) in [false, true].into_iter().zip(boxes).enumerate() {
-        let rect = PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, tall);
+        let rect = if stacked {
+            PageRect::new(16.0, 16.0 + k as f64 * (tall + 16.0), half, tall)
+        } else {
+            PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, tall)
+        };
         let centre = Point::new(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
         let reach = 0.5 * size + Vector::new(pad, pad);
         // Room below for the bar, at the panel's scale: the scale the fit
@@ -185,7 +202,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             "bar": bar,
         }),
     );
-    let top = 16.0 + tall + 8.0;
+    let top = 16.0 + rows * tall + (rows - 1.0) * 16.0 + 8.0;
     sheet.height(top + NOTES + 16.0);
     sheet.notes(Point::new(20.0, top), &notes(ctx, &rod, largest, bar));
     Ok(sheet.finish())
