@@ -2,10 +2,9 @@
 //! cylinders and flywheel; and the dynamics section of `analyze`.
 
 use clap::Args;
-use slider_crank::dynamics::{Engine, EngineParts, EnginePose, IndicatorText, unbalanced_forces};
-use slider_crank::files::{MAX_DATA_BYTES, read_text};
+use slider_crank::dynamics::{Engine, EnginePose, unbalanced_forces};
 use slider_crank::render::plain;
-use slider_crank::table::mass_unit;
+use slider_crank::table::{GivenEngine, mass_unit};
 use slider_crank::{Angle, Error, Input, Result, SliderCrank, Units};
 use std::path::PathBuf;
 
@@ -68,12 +67,22 @@ pub struct EngineArgs {
 }
 
 impl EngineArgs {
+    /// The fields of the one engine every request builds.
+    fn given(&self) -> GivenEngine<'_> {
+        GivenEngine {
+            mass: self.mass,
+            rod_mass: self.rod_mass,
+            rod_cg: self.rod_cg,
+            rod_gyration: self.rod_gyration,
+            gas_force: self.gas_force,
+            indicator: self.indicator.as_deref(),
+            bore: self.bore,
+        }
+    }
+
     /// Whether any dynamics flag was given.
     pub fn is_set(&self) -> bool {
-        self.mass.is_some()
-            || self.rod_mass.is_some()
-            || self.gas_force.is_some()
-            || self.indicator.is_some()
+        self.given().is_given()
     }
 
     /// The engine asked for, `None` without a dynamics flag.
@@ -83,35 +92,7 @@ impl EngineArgs {
         omega: f64,
         units: &Units,
     ) -> Result<Option<Engine>> {
-        if !self.is_set() {
-            return Ok(None);
-        }
-        let text = match &self.indicator {
-            Some(path) => Some((
-                read_text(path, MAX_DATA_BYTES, Input::Indicator)?,
-                format!("indicator diagram {}", path.display()),
-            )),
-            None => None,
-        };
-        let parts = EngineParts {
-            mass: self.mass,
-            rod: self
-                .rod_mass
-                .zip(self.rod_cg)
-                .zip(self.rod_gyration)
-                .map(|((m, cg), k)| (m, cg, k)),
-            gas_force: self.gas_force,
-            indicator: text
-                .as_ref()
-                .zip(self.bore)
-                .map(|((text, what), bore)| IndicatorText {
-                    text,
-                    bore,
-                    what,
-                    units: Some(units),
-                }),
-        };
-        Ok(Some(parts.build(mechanism, omega)?))
+        self.given().engine(mechanism, omega, units)
     }
 }
 

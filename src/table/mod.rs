@@ -6,6 +6,7 @@ mod chain_json;
 mod check_report;
 mod dynamics;
 mod dynamics_json;
+mod engine;
 mod guard;
 mod harmonics;
 mod partial;
@@ -32,6 +33,7 @@ pub use chain_json::{
 pub use check_report::{DEFAULT_ULPS, MAX_TOLERANCE, check_allowance, engine_check_report};
 pub use dynamics::{dynamics_head, dynamics_row, example_table};
 pub use dynamics_json::{dynamics_json, mass_unit};
+pub use engine::GivenEngine;
 pub use guard::{DEFAULT_MAX_CELLS, MaxCells};
 pub use harmonics::harmonics_table;
 pub use partial::{Locomotive, partial_balance_head, partial_balance_row};

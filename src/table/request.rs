@@ -3,17 +3,16 @@
 //! flags) and the Python package (its keywords), checked once here and
 //! planned into the table's head and a row per angle ([`TablePlan`]).
 
-use super::{Format, Head, Locomotive, MaxCells, Table, TableName};
+use super::{Format, GivenEngine, Head, Locomotive, MaxCells, Table, TableName};
 use crate::analytic::harmonics::{DEFAULT_DECIMALS, DEFAULT_ORDER, Harmonics};
 use crate::analytic::kinematics::{crank_speed, rpm_to_omega};
 use crate::chain::Inversion;
 use crate::chain::QuickReturn;
 use crate::dynamics::{
-    DEFAULT_AXES, DEFAULT_CRANKS, DEFAULT_FRACTIONS, EXAMPLE_MASS, Engine, EngineParts,
-    FlywheelAsk, IndicatorText, InlineEngine, PartialBalance, RadialEngine, default_planes,
+    DEFAULT_AXES, DEFAULT_CRANKS, DEFAULT_FRACTIONS, EXAMPLE_MASS, Engine, FlywheelAsk,
+    InlineEngine, PartialBalance, RadialEngine, default_planes,
 };
 use crate::error::{Error, Field, Input, Result, Wording};
-use crate::files::{MAX_DATA_BYTES, read_text};
 use crate::lists::{AngleSpec, Angles};
 use crate::mechanism::SliderCrank;
 use crate::sources::{CHAIN_60, ENGINE_35, NG_FRICTION, NG_RIG, NG_TORQUE, RPM};
@@ -516,39 +515,19 @@ impl<'a> TableRequest<'a> {
     /// The engine of `dynamics`: the masses and gas force given, or the
     /// example mass.
     fn engine(&self, m: SliderCrank, omega: f64, units: &Units) -> Result<Engine> {
-        let given = self.mass.is_some()
-            || self.rod_mass.is_some()
-            || self.gas_force.is_some()
-            || self.indicator.is_some();
-        if !given {
-            return Engine::new(m, EXAMPLE_MASS, omega);
-        }
-        let text = match &self.indicator {
-            Some(path) => Some((
-                read_text(path, MAX_DATA_BYTES, Input::Indicator)?,
-                format!("indicator diagram {}", path.display()),
-            )),
-            None => None,
-        };
-        EngineParts {
+        let given = GivenEngine {
             mass: self.mass,
-            rod: self
-                .rod_mass
-                .zip(self.rod_cg)
-                .zip(self.rod_gyration)
-                .map(|((m, cg), k)| (m, cg, k)),
+            rod_mass: self.rod_mass,
+            rod_cg: self.rod_cg,
+            rod_gyration: self.rod_gyration,
             gas_force: self.gas_force,
-            indicator: text
-                .as_ref()
-                .zip(self.bore)
-                .map(|((text, what), bore)| IndicatorText {
-                    text,
-                    bore,
-                    what,
-                    units: Some(units),
-                }),
+            indicator: self.indicator.as_deref(),
+            bore: self.bore,
+        };
+        match given.engine(m, omega, units)? {
+            Some(engine) => Ok(engine),
+            None => Engine::new(m, EXAMPLE_MASS, omega),
         }
-        .build(m, omega)
     }
 
     /// `dynamics`: the engine's forces and torques, the turn's results in
