@@ -1113,6 +1113,23 @@ impl Plot {
         }
     }
 
+    /// The panel of a detail: [`Plot::finish`]'s, clipped to the plot
+    /// area, and its caption lines in a panel of their own, not clipped
+    /// (`None` without a caption), so that the links and circles running
+    /// on beyond the region it enlarges end at the area's edge instead of
+    /// crossing the caption below it.
+    pub fn finish_detail(self) -> (Panel, Option<Panel>) {
+        let (id, area, rect) = (self.panel_id(), self.area, self.rect);
+        let caption = format!("{}-caption", self.name);
+        let panel = self.finish();
+        let transform = *panel.transform();
+        let (captions, drawn): (Vec<Item>, Vec<Item>) =
+            (panel.items().iter().cloned()).partition(|item| item.id.starts_with(&caption));
+        let captions = (!captions.is_empty())
+            .then(|| Panel::new(format!("{id}-caption"), rect, transform, captions));
+        (Panel::new(id, area, transform, drawn).clipped(), captions)
+    }
+
     /// The panel: axes, then what was added, then the legend and notes.
     pub fn finish(mut self) -> Panel {
         self = self.legend_clear_of_the_curves();

@@ -2232,9 +2232,10 @@ fn a_pin_s_letter_goes_inside_its_block_enlarged_in_a_detail() {
 fn ng_fig_1_details_its_crank_where_the_pins_crowd() {
     // l = 1.05 r, 160°: P within 16 units of O, inside the torque arrow,
     // with M and T: O's letter sat on the crank and the rod. The marks
-    // about the crank go to a detail about O and P, and so do O's and
-    // P's letters: within 2 em of each other in a small frame, they
-    // would pile on it on the main view.
+    // about the crank go to a detail about O, P and the block (its frame
+    // round the block, not inside it), and O's and P's letters with
+    // them; the main view letters them too only where each stands by its
+    // own pin (the check below).
     let plate = plate_at("ng-fig-1-torque", 1.05, 0.0, 160.0);
     let (main, detail) = (&plate.panels[0], &plate.panels[1]);
     assert!(
@@ -2246,7 +2247,6 @@ fn ng_fig_1_details_its_crank_where_the_pins_crowd() {
         "no torque arrow in the detail"
     );
     for l in ["O", "P"] {
-        assert!(!main.labels.iter().any(|x| x.id == format!("label-{l}")));
         assert!(detail.markers.contains_key(l), "{l} not in the detail");
         let id = format!("detail-label-{l}");
         assert!(detail.labels.iter().any(|x| x.id == id), "{id}");
@@ -2620,6 +2620,100 @@ fn a_displacement_shorter_than_its_arrows_is_still_dimensioned() {
         assert!(
             draws(&plate.panels[0], "dimension-x"),
             "no x at l = {rod} r, {degrees}°"
+        );
+    }
+}
+
+#[test]
+fn a_crank_s_detail_at_a_short_rod_s_inner_dead_centre_holds_the_whole_block() {
+    // Fig. 62 at l = 1.08 r, 180°: A's pin 7 units from C's, A's letter
+    // set beside C's pin, and no detail (the figure marks the crank's
+    // angles, whose detail came only with a small crank). Ng's Fig. 1
+    // at l = 1.05 r had one, its frame a few units inside the block. Both
+    // now draw the crank's detail with the whole block in it, its frame
+    // round the block on the main view.
+    for (figure, rod) in [
+        ("fig-62-displacement", 1.05),
+        ("fig-62-displacement", 1.08),
+        ("ng-fig-1-torque", 1.05),
+    ] {
+        let plate = plate_at(figure, rod, 0.0, 180.0);
+        let main = &plate.panels[0];
+        let detail =
+            (plate.panels.get(1)).unwrap_or_else(|| panic!("{figure} at {rod}: no detail"));
+        let frame = stroke_box(main, "detail-frame");
+        let block = stroke_box(main, "block-slider");
+        assert!(
+            frame.x0 < block.x0 - 10.0
+                && frame.y0 < block.y0 - 10.0
+                && frame.x1 > block.x1 + 10.0
+                && frame.y1 > block.y1 + 10.0,
+            "{figure} at {rod}: frame {frame:?} does not hold the block {block:?}"
+        );
+        let inner = stroke_box(detail, "detail-block-slider");
+        let border = stroke_box(main, "detail-border");
+        assert!(
+            inner.x0 > border.x0
+                && inner.x1 < border.x1
+                && inner.y0 > border.y0
+                && inner.y1 < border.y1,
+            "{figure} at {rod}: the detail cuts the block {inner:?} (border {border:?})"
+        );
+    }
+}
+
+/// The length on the page of the first straight piece of the path `id`
+/// in `svg` (`M x y L x y`).
+fn first_piece(svg: &str, id: &str) -> f64 {
+    let d = common::attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
+    let n: Vec<f64> = (d.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+        .filter_map(|t| t.parse().ok())
+        .collect();
+    (n[2] - n[0]).hypot(n[3] - n[1])
+}
+
+#[test]
+fn a_long_rod_s_crank_in_the_inversions_is_enlarged_in_a_detail() {
+    // On a rod of 40 cranks the crank a of each inversion was drawn 13
+    // units long: inversion 2's fixed crank a speck between its bearings,
+    // unhatched, the others' hidden in their pins' circles. A detail below
+    // the mechanism enlarges it (its region boxed on the mechanism), the
+    // fixed crank hatched there; a crank long enough has none.
+    for figure in [
+        "inversion-1-engine",
+        "inversion-2-rotating-block",
+        "inversion-3-oscillating-cylinder",
+        "inversion-4-hand-pump",
+    ] {
+        let f = |rod: f64| {
+            let mut options = FigureOptions::default();
+            options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+            options.angle = Some(Angle::deg(90.0));
+            to_svg(
+                &FigureName::from_name(figure)
+                    .unwrap()
+                    .figure(&options)
+                    .unwrap(),
+            )
+        };
+        let long = f(40.0);
+        assert!(first_piece(&long, "link-crank") < 40.0, "{figure}");
+        assert!(long.contains(r#"id="mechanism-detail-box""#), "{figure}");
+        let enlarged = first_piece(&long, "detail-link-crank");
+        assert!(
+            enlarged >= 50.0,
+            "{figure}: the crank {enlarged} long in the detail"
+        );
+        if figure == "inversion-2-rotating-block" {
+            assert!(
+                long.contains(r#"id="detail-hatch-crank-0""#),
+                "{figure}: not hatched"
+            );
+        }
+        let short = f(3.0);
+        assert!(
+            !short.contains("panel-mechanism-detail"),
+            "{figure} at l = 3 r"
         );
     }
 }

@@ -270,22 +270,15 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(&caption);
     let map = *plot.map();
-    let q = parts(&m, &pose);
-    let (lh, hh) = super::chains::block_on_page(block_size(&m), map.scale());
-    let mut d = Drawing {
-        s: Canvas::new(map, map.world_frame(&plot.area())),
-        m,
-        fixed: inversion.fixed(),
-        corners: block(&q, lh, hh),
-        block: (lh, hh),
-        q,
-    };
-    d.path(inversion);
-    d.frame(&pose);
-    d.hatch();
-    d.links();
+    let block = super::chains::block_on_page(block_size(&m), map.scale());
     let centres = *pose.centres();
-    let together = d.centres(&centres);
+    let detail = crank_detail(ctx, &pose, &rect, map.scale())?;
+    let canvas = Canvas::new(map, map.world_frame(&plot.area()));
+    let mut d = Drawing::new(m, &pose, canvas, block);
+    let together = d.draw(&pose, &centres);
+    if let Some((region, _)) = &detail {
+        super::coriolis::mark_window(&mut d.s, "mechanism", region);
+    }
     for item in d.s.finish().0 {
         plot.push(item);
     }
@@ -297,7 +290,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.meta("driver", json!(letter(inversion.driver())));
     sheet.meta("virtual_centres", centres.to_json());
     sheet.plot(plot);
-    let bottom = rect.y + rect.height + 6.0;
+    let mut bottom = rect.y + rect.height + 6.0;
+    if let Some((_, detail)) = detail {
+        bottom = detail.rect().y + detail.rect().height + 6.0;
+        sheet.detail(detail);
+    }
     sheet.height(bottom + NOTES_HEIGHT);
     sheet.notes(
         Point::new(20.0, bottom),
@@ -306,22 +303,84 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     Ok(sheet.finish())
 }
 
+/// The page length under which the crank a gets an enlarged detail below
+/// the mechanism: at a long rod (forty cranks) the fixed crank of
+/// inversion 2 is a speck between its bearings, unhatched, and the
+/// crank of the others hides in its pins' circles.
+const CRANK_LEAST: f64 = 40.0;
+
+/// The crank detail's reach about the crank's middle, in cranks: its two
+/// pins, the path about them and room for their letters.
+const CRANK_REACH: f64 = 1.5;
+
+/// The crank detail's size on the page, page units (its caption
+/// included in the height).
+const CRANK_DETAIL: (f64, f64) = (300.0, 200.0);
+
+/// Room between the mechanism and the crank detail below it, page units.
+const DETAIL_GAP: f64 = 12.0;
+
+/// Where the crank a is drawn shorter than [`CRANK_LEAST`] in the panel
+/// `rect` at `scale` page units per world unit, the world region about it
+/// and the detail below the panel that enlarges it (the chain drawn again
+/// there, its fixed link hatched and its centres lettered), captioned
+/// with the magnification; none for a crank long enough to read.
+fn crank_detail(
+    ctx: &Ctx,
+    pose: &InversionPose,
+    rect: &crate::figure::PageRect,
+    scale: f64,
+) -> Result<Option<(Frame, Plot)>> {
+    let m = ctx.mechanism;
+    if m.crank() * scale >= CRANK_LEAST {
+        return Ok(None);
+    }
+    let (w, h) = (
+        CRANK_DETAIL.0.min(rect.width),
+        CRANK_DETAIL.1 - crate::diagram::CAPTION,
+    );
+    let wanted = w.min(h) / (2.0 * CRANK_REACH * m.crank()) / scale;
+    let steps = super::coriolis::FINE_STEPS;
+    let magnification = super::coriolis::round_below(wanted, &steps).max(1.0);
+    let q = parts(&m, pose);
+    let half = Vector::new(w, h) * (0.5 / (magnification * scale));
+    let middle = mid(q.c, q.b);
+    let region = Frame::new(middle - half, middle + half);
+    let detail_rect = crate::figure::PageRect::new(
+        rect.x + 0.5 * (rect.width - w),
+        rect.y + rect.height + DETAIL_GAP,
+        w,
+        CRANK_DETAIL.1,
+    );
+    let caption = format!("the boxed region enlarged ×{}", short(magnification));
+    let mut plot = Plot::world(
+        "mechanism-detail",
+        detail_rect,
+        &region,
+        false,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption(&caption);
+    let map = *plot.map();
+    let block = super::chains::block_on_page(block_size(&m), map.scale());
+    let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
+    let mut d = Drawing::new(m, pose, canvas, block);
+    d.draw(pose, pose.centres());
+    for item in d.s.finish().0 {
+        plot.push(item);
+    }
+    Ok(Some((region, plot)))
+}
+
 /// The chain at `pose` drawn on `canvas`: the driven pin's path, the
 /// frame d (guides or the slotted bar), the fixed link hatched, the links
 /// and the block lettered a, b, c, d; for a figure that draws more on it
 /// (the Coriolis polygons' mechanism). The block is drawn no smaller on
 /// the page than Fig. 60's.
 pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -> Canvas {
-    let q = parts(&m, pose);
-    let (lh, hh) = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
-    let mut d = Drawing {
-        s: canvas,
-        m,
-        fixed: pose.inversion().fixed(),
-        corners: block(&q, lh, hh),
-        block: (lh, hh),
-        q,
-    };
+    let block = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
+    let mut d = Drawing::new(m, pose, canvas, block);
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
@@ -369,6 +428,31 @@ fn mid(p: Point, q: Point) -> Point {
 }
 
 impl Drawing {
+    /// The drawing of the chain `m` at `pose` on `canvas`, its block
+    /// `block` (half length, half height) as drawn.
+    fn new(m: SliderCrank, pose: &InversionPose, canvas: Canvas, block: (f64, f64)) -> Self {
+        let q = parts(&m, pose);
+        Drawing {
+            s: canvas,
+            m,
+            fixed: pose.inversion().fixed(),
+            corners: self::block(&q, block.0, block.1),
+            block,
+            q,
+        }
+    }
+
+    /// The whole figure's drawing: the path, the frame, the fixed link
+    /// hatched, the links and the centres; the centres' names that share
+    /// a lettered point's place ([`Drawing::centres`]).
+    fn draw(&mut self, pose: &InversionPose, centres: &ChainCentres) -> Vec<String> {
+        self.path(pose.inversion());
+        self.frame(pose);
+        self.hatch();
+        self.links();
+        self.centres(centres)
+    }
+
     /// The path of the driven link's far pin: a circle, or the hand
     /// pump's handle swinging about A.
     fn path(&mut self, inversion: Inversion) {

@@ -364,11 +364,14 @@ impl Sheet {
         self.panels.push(plot.finish());
     }
 
-    /// Adds a plot as a detail: nothing drawn outside its rectangle (its
-    /// links and circles run on beyond the region it enlarges).
+    /// Adds a plot as a detail: nothing drawn outside its plot area (its
+    /// links and circles run on beyond the region it enlarges), its
+    /// caption below it ([`Plot::finish_detail`]).
     pub fn detail(&mut self, plot: Plot) {
         self.plots.push(plot.metadata());
-        self.panels.push(plot.finish().clipped());
+        let (drawn, caption) = plot.finish_detail();
+        self.panels.push(drawn);
+        self.panels.extend(caption);
     }
 
     /// Adds a panel as it is.

@@ -152,6 +152,59 @@ fn bounds(pts: &[Point]) -> (Point, Point) {
 /// if any, no wider than `max_width` page units. Kisch's H joins the
 /// region only where the core still gets [`CORE_TARGET`] with it.
 pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
+    let d = chosen(ctx, scale, max_width)?;
+    Some(match d.focus {
+        Focus::Crank => clear_of_block(ctx, d, scale, max_width),
+        Focus::Construction => d,
+    })
+}
+
+/// Room (page units) a detail's region keeps about the slider block it
+/// would otherwise lie inside ([`clear_of_block`]): the frame's least
+/// distance from a guide, so that its edges stand clear of the guides'
+/// hatching without being moved off them (which would pad the detail
+/// with empty paper).
+const ABOUT_BLOCK: f64 = 14.0;
+
+/// `d`, a crank's detail, or, where its region's middle lies inside the
+/// slider block on the main view at `scale` and the region does not hold
+/// the whole block (a short rod's inner dead centre: A and C within the
+/// block's outline), the region grown to the block's outline and
+/// [`ABOUT_BLOCK`] about it, magnified no more than holds it within
+/// [`CROWD_EXTENT`]. Its frame was a few units inside the block, hidden
+/// by the pins, the block's outline read as the frame; now the frame
+/// stands round the block and the detail draws the block whole. `d` as
+/// it is where no step fits `max_width`. A construction's detail keeps
+/// its region: grown to the block, its magnification would fall to a
+/// few times, where E, D and F crowd A and C again.
+fn clear_of_block(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail {
+    let a = ctx.main.pose().a();
+    let half = Vector::new(ctx.sizes.block_half_length, ctx.sizes.block_half_height);
+    let (blo, bhi) = (a - half, a + half);
+    let (lo, hi) = (d.region.min(), d.region.max());
+    let mid = nalgebra::center(&lo, &hi);
+    let inside = (blo.x..=bhi.x).contains(&mid.x) && (blo.y..=bhi.y).contains(&mid.y);
+    let holds = lo.x <= blo.x && lo.y <= blo.y && hi.x >= bhi.x && hi.y >= bhi.y;
+    if !inside || holds || !(scale > 0.0 && scale.is_finite()) {
+        return d;
+    }
+    let room = Vector::new(ABOUT_BLOCK, ABOUT_BLOCK) / scale;
+    let (lo, hi) = (lo.inf(&blo) - room, hi.sup(&bhi) + room);
+    let size = (hi - lo) * scale;
+    let wanted = d.magnification.min(CROWD_EXTENT / size.max());
+    match magnify(wanted, size.x, max_width) {
+        Some(magnification) => Detail {
+            region: Frame::new(lo, hi),
+            magnification,
+            ..d
+        },
+        None => d,
+    }
+}
+
+/// The detail a scene drawn at `scale` needs before it is kept clear of
+/// the block ([`detail`]).
+fn chosen(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let scene = ctx.scene;
     let acceleration = scene.layers().iter().any(|l| l.is_acceleration());
     let velocity = scene.has(Layer::Velocity);
@@ -574,6 +627,13 @@ fn subject(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Option<Detail>>
 /// dead centre, and the letters fit; at 1.1 r, 15.
 const PINS_CROWD: f64 = 24.0;
 
+/// How close (page units) the piston pin A comes to the crank centre C
+/// in a figure marking the crank's angles without a torque (Fig. 62)
+/// before their letters, 17 units tall, cannot be told apart: two ems.
+/// Near the inner dead centre of a rod of 1.1 cranks or less they stand
+/// a few units apart, A's letter beside C's pin.
+const PINS_TWO_EMS: f64 = 34.0;
+
 /// The detail of a torque figure whose crank the main view draws large
 /// enough (a short rod) where its pins crowd: near the inner dead centre
 /// of a rod of 1.1 cranks or less the piston pin P comes within
@@ -584,11 +644,15 @@ const PINS_CROWD: f64 = 24.0;
 /// torque arrow's room without one). None for a figure without a torque,
 /// or where the pins stand apart.
 fn crowded_crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
-    if !ctx.scene.has(Layer::Torque) {
+    let crowd = if ctx.scene.has(Layer::Torque) {
+        PINS_CROWD
+    } else if ctx.scene.has(Layer::Angles) {
+        PINS_TWO_EMS
+    } else {
         return None;
-    }
+    };
     let pose = ctx.main.pose();
-    if (pose.a() - pose.c()).norm() * scale >= PINS_CROWD {
+    if (pose.a() - pose.c()).norm() * scale >= crowd {
         return None;
     }
     let pins = [pose.a(), pose.b(), pose.c()];

@@ -31,6 +31,7 @@ use serde_json::json;
 
 use mechanism::mechanism_plot;
 use notes::{coriolis_json, notes};
+pub(super) use panel::mark_window;
 use panel::{Drawn, detail_plot, polygon_plot, right_angles};
 use polygons::Polygons;
 use rule::rule_plot;

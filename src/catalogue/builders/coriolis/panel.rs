@@ -195,7 +195,7 @@ pub(super) fn window(
 
 /// The box on a polygon marking the region its detail enlarges (at
 /// least [`BOX_LEAST`] a side).
-pub(super) fn mark_window(s: &mut Canvas, name: &str, frame: &Frame) {
+pub(in crate::catalogue::builders) fn mark_window(s: &mut Canvas, name: &str, frame: &Frame) {
     let least = s.world(BOX_LEAST);
     let size = frame.max() - frame.min();
     let grow = Vector::new((least - size.x).max(0.0), (least - size.y).max(0.0)) * 0.5;
