@@ -383,14 +383,12 @@ impl Plate {
             });
             return Place::Polygon(self.polygons.len() - 1);
         }
-        if id != "panel-mechanism" && !id.starts_with("panel-detail") {
+        // A chain figure's detail of its crank is `panel-mechanism-detail`.
+        let detail = id.starts_with("panel-detail") || id == "panel-mechanism-detail";
+        if id != "panel-mechanism" && !detail {
             return Place::Diagram;
         }
-        let prefix = if id.starts_with("panel-detail") {
-            "detail-"
-        } else {
-            ""
-        };
+        let prefix = if detail { "detail-" } else { "" };
         self.panels.push(Panel {
             id: id.to_string(),
             prefix: prefix.to_string(),

@@ -528,7 +528,9 @@ fn block_holding(panel: &Panel, rect: &Rect, at: (f64, f64)) -> Option<Rect> {
 /// frame, and the detail panel draws it with its letter.
 fn lettered_in_detail(plate: &Plate, panel: &Panel, letter: &str, at: (f64, f64)) -> bool {
     let own = format!("{}label-{letter}", panel.prefix);
-    let frame = panel.strokes.iter().find(|s| s.id == "detail-frame");
+    // A chain figure boxes its crank's region as `mechanism-detail-box`.
+    let frame =
+        (panel.strokes.iter()).find(|s| s.id == "detail-frame" || s.id == "mechanism-detail-box");
     let ends = frame
         .iter()
         .flat_map(|s| s.segs.iter().flat_map(|g| [g.0, g.1]));

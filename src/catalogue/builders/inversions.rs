@@ -274,7 +274,12 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let centres = *pose.centres();
     let detail = crank_detail(ctx, &pose, &rect, map.scale())?;
     let canvas = Canvas::new(map, map.world_frame(&plot.area()));
-    let mut d = Drawing::new(m, &pose, canvas, block);
+    let region = detail.as_ref().map(|(region, _)| *region);
+    let canvas = match region {
+        Some(r) => canvas.quiet(r),
+        None => canvas,
+    };
+    let mut d = Drawing::new(m, &pose, canvas, block).holding(region);
     let together = d.draw(&pose, &centres);
     if let Some((region, _)) = &detail {
         super::coriolis::mark_window(&mut d.s, "mechanism", region);
@@ -420,6 +425,10 @@ struct Drawing {
     corners: [Point; 4],
     /// The block's half length and half height as drawn.
     block: (f64, f64),
+    /// The region a detail enlarges, whose pins and crank the detail
+    /// letters: a few units apart here, their letters would stand by the
+    /// wrong pin.
+    held: Option<Frame>,
 }
 
 /// The middle of `p` and `q`.
@@ -439,7 +448,20 @@ impl Drawing {
             corners: self::block(&q, block.0, block.1),
             block,
             q,
+            held: None,
         }
+    }
+
+    /// The same drawing leaving the pins, the crank's letter and the
+    /// centres inside `region` to the detail that enlarges it.
+    fn holding(mut self, region: Option<Frame>) -> Self {
+        self.held = region;
+        self
+    }
+
+    /// Whether `p` lies in the region a detail letters instead.
+    fn held(&self, p: Point) -> bool {
+        self.held.is_some_and(|r| r.contains(p))
     }
 
     /// The whole figure's drawing: the path, the frame, the fixed link
@@ -625,7 +647,10 @@ impl Drawing {
                 points: corners.to_vec(),
             },
         );
-        s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
+        if !self.held(mid(c, b)) {
+            self.s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
+        }
+        let s = &mut self.s;
         s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
         let at = if self.fixed == Link::D {
             // Below the block, between the guides' hatching.
@@ -677,7 +702,13 @@ impl Drawing {
         // B = O_ab, A = O_bc (the notes give the letters of Figs. 62–67).
         let pins = [(c, "*O*_{ad}"), (b, "*O*_{ab}"), (a, "*O*_{bc}")];
         for ((p, markup), key) in pins.into_iter().zip(["C", "B", "A"]) {
-            self.s.lettered(key, p, markup, Marker::Pin, c);
+            if self.held(p) {
+                self.s.record(key, p);
+                self.s
+                    .push(format!("point-{key}"), Role::Link, Shape::Pin { centre: p });
+            } else {
+                self.s.lettered(key, p, markup, Marker::Pin, c);
+            }
         }
         // O_cd lies on the normal at A, as O_bd does: its arrow continues
         // the line A O_bd.
