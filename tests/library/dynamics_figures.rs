@@ -1242,3 +1242,96 @@ fn the_crank_pin_loads_pole_is_lettered_by_its_cross() {
         }
     }
 }
+
+/// The turning-moment figures of the sixth review: its engines on its
+/// four page widths, (what, SVG).
+fn sixth_review_turning_figures() -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for (l, e) in [(52.3, 0.0), (1.09, 0.0), (3.75, 1.85), (49.4, 0.0)] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(SliderCrank::new(1.0, l, e).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            out.push((format!("l {l} e {e} on {width:?}"), svg));
+        }
+    }
+    out
+}
+
+/// The page points of the path `id`, ends and control points in order.
+fn path_numbers(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let d = attr(svg, id, "d").unwrap();
+    let v: Vec<f64> = d
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
+        .filter_map(|x| x.parse().ok())
+        .collect();
+    v.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
+#[test]
+fn the_turning_moments_values_stand_clear_of_the_mean_line_and_the_axis() {
+    // The sixth review: at 120 mm with an offset "a₄ = −9702" was wedged
+    // in the band between the mean line and T = 0, a unit and a half
+    // from each. A letter with its value keeps 3 units from both (its
+    // ink: 0.7 em above the baseline, a subscript 0.3 em below).
+    for (case, svg) in sixth_review_turning_figures() {
+        let mean = path_numbers(&svg, "line-mean-torque")[0].1;
+        let zero = panel_map(&svg, "panel-turning-moment")[5];
+        for k in 1.. {
+            let id = format!("label-lobe-{k}");
+            if !svg.contains(&format!("id=\"{id}\"")) {
+                break;
+            }
+            let said = text_content(&svg, &id);
+            if !said.contains('=') {
+                continue;
+            }
+            let (y, em) = (num(&svg, &id, "y"), num(&svg, &id, "font-size"));
+            let (top, bottom) = (y - 0.7 * em, y + 0.3 * em);
+            for (line, what) in [(mean, "the mean line"), (zero, "T = 0")] {
+                let gap = (top - line).max(line - bottom);
+                assert!(gap >= 3.0, "{case}: {said} {gap:.2} from {what}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_fluctuations_value_stands_by_its_dimension_with_no_curve_between() {
+    // The sixth review: on a narrow page "ΔE = 6254 lbf·ft" stood on the
+    // far side of the rising curve from its dimension line ("the curve
+    // runs between the label and its arrow"). No part of the energy
+    // curve crosses the band of the text's height between the line and
+    // the text's middle.
+    for (case, svg) in sixth_review_turning_figures() {
+        // The dimension line's x: where its first path (an extension
+        // line from the least energy) starts.
+        let line = {
+            let at = svg.find("id=\"dimension-fluctuation\"").unwrap();
+            let d = &svg[at..];
+            let d = &d[d.find("d=\"M").unwrap() + 4..];
+            d[..d.find(' ').unwrap()].parse::<f64>().unwrap()
+        };
+        let id = "label-fluctuation";
+        let (x, y, em) = (
+            num(&svg, id, "x"),
+            num(&svg, id, "y"),
+            num(&svg, id, "font-size"),
+        );
+        let (top, bottom) = (y - 0.7 * em, y + 0.25 * em);
+        let (x0, x1) = (line.min(x), line.max(x));
+        let curve = path_numbers(&svg, "curve-energy");
+        for w in curve.windows(2) {
+            let (p, q) = (w[0], w[1]);
+            let across_x = p.0.max(q.0) >= x0 && p.0.min(q.0) <= x1;
+            let across_y = p.1.max(q.1) >= top && p.1.min(q.1) <= bottom;
+            assert!(
+                !(across_x && across_y),
+                "{case}: the curve at {p:?}..{q:?} between ΔE's value at ({x}, {y}) and its line at x = {line}"
+            );
+        }
+    }
+}
