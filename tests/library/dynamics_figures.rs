@@ -1335,3 +1335,35 @@ fn the_fluctuations_value_stands_by_its_dimension_with_no_curve_between() {
         }
     }
 }
+
+#[test]
+fn the_balance_notes_keep_each_list_on_one_line() {
+    // The sixth review: at 4.5 in the notes broke "a_i = −1, 0, / 1
+    // pitches", and the "1" that began the line read as a stray number.
+    // No line of the notes ends in a list's comma with the next line
+    // beginning with its next number.
+    for l in [1.09, 28.4, 1.04] {
+        for width in ["120mm", "4.5in", "500"] {
+            let mut o = common::on_page(width, None);
+            o.mechanism = Some(SliderCrank::in_line(1.0, l).unwrap());
+            let svg = to_svg(&FigureName::InlineBalance.figure(&o).unwrap());
+            let lines: Vec<String> = svg
+                .match_indices("id=\"note-")
+                .map(|(i, _)| {
+                    let s = &svg[i + 4..];
+                    text_content(&svg, &s[..s.find('"').unwrap()])
+                })
+                .collect();
+            for pair in lines.windows(2) {
+                let next = pair[1].trim_start();
+                let number = next.starts_with(|c: char| c.is_ascii_digit() || c == '−');
+                assert!(
+                    !(pair[0].trim_end().ends_with(',') && number),
+                    "l {l} on {width}: '{}' / '{}'",
+                    pair[0],
+                    pair[1]
+                );
+            }
+        }
+    }
+}
