@@ -1674,7 +1674,12 @@ fn the_crank_pin_loads_letter_each_quarter_at_its_own_point_and_the_pole() {
                         let c = (num(&svg, &dot, "cx"), num(&svg, &dot, "cy"));
                         let said: Vec<f64> = text_of(&svg, &id)
                             .split(", ")
-                            .map(|a| a.trim_end_matches('°').parse().unwrap())
+                            .map(|a| {
+                                a.trim_end_matches(['′', 'ʹ'])
+                                    .trim_end_matches('°')
+                                    .parse()
+                                    .unwrap()
+                            })
                             .collect();
                         letters.push((id, c, said));
                     }

@@ -257,7 +257,14 @@ fn offset_note(ctx: &Ctx) -> Option<String> {
 /// The notes: the engine, the scales, and each polygon's resultant; an
 /// offset's ([`offset_note`]).
 fn notes(ctx: &Ctx, engine: &InlineEngine) -> Vec<String> {
-    let list = |v: &[f64]| v.iter().map(|x| short(*x)).collect::<Vec<_>>().join(", ");
+    // Each list unbroken, its unit with it: broken across lines, a line
+    // began with a stray "1 pitches" (the list "−1, 0, / 1").
+    let list = |v: &[f64]| {
+        v.iter()
+            .map(|x| short(*x))
+            .collect::<Vec<_>>()
+            .join(",\u{a0}")
+    };
     let value = |part: Polygon| {
         let r = engine.resultant(part);
         if r.balanced {
@@ -268,7 +275,7 @@ fn notes(ctx: &Ctx, engine: &InlineEngine) -> Vec<String> {
     };
     vec![
         format!(
-            "{} in line, their cranks at the angles δ_{{i}} = {}° ahead of the first, their planes at the distances *a*_{{i}} = {} pitches from the reference plane{}{}, *n* = {}; the polygons are drawn at θ = 0, the line of stroke dash-dotted, each to its own scale, sides in units of *m\u{a0}r*ω² (a couple’s times the pitch).",
+            "{} in line, their cranks at the angles δ_{{i}} = {}° ahead of the first, their planes at the distances *a*_{{i}} = {}\u{a0}pitches from the reference plane{}{}, *n* = {}; the polygons are drawn at θ = 0, the line of stroke dash-dotted, each to its own scale, sides in units of *m\u{a0}r*ω² (a couple’s times the pitch).",
             cylinders(engine.cranks_deg().len()),
             list(engine.cranks_deg()),
             list(engine.planes()),

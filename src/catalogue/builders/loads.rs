@@ -155,7 +155,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, false);
     let mut bar = 0.0;
-    for (k, (relative, (lo, hi))) in [false, true].into_iter().zip(boxes).enumerate() {
+    let panels = [false, true].into_iter().zip(boxes).zip(&samples);
+    for (k, ((relative, (lo, hi)), sampled)) in panels.enumerate() {
         let rect = if stacked {
             PageRect::new(16.0, 16.0 + k as f64 * (tall + 16.0), half, tall)
         } else {
@@ -171,14 +172,18 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let below = BAR_ROOM / scale;
         // The bar below the curves, clear of every dot.
         let world = Frame::new(centre - reach - Vector::new(0.0, below), centre + reach);
-        let mut plot = polar_plot(ctx, engines, &kinks, cycle, relative, rect, &world)?;
+        let mut plot = polar_plot(
+            ctx,
+            (engines, sampled),
+            &kinks,
+            cycle,
+            relative,
+            rect,
+            &world,
+        )?;
         if !relative {
-            // At least as long as its text, which is set above it.
-            bar = super::round_below(0.4 * size.x.max(size.y));
-            while bar * plot.map().scale() < BAR_TEXT {
-                bar *= 2.0;
-            }
-            plot.push(scale_bar(ctx, &world, bar, pad, below));
+            bar = bar_length(largest_load(&samples), plot.map().scale());
+            plot.push(scale_bar(ctx, &world, bar, pad, below, plot.map().scale()));
         }
         sheet.plot(plot);
     }
@@ -271,10 +276,51 @@ fn bounds(samples: &[[Vector; 2]]) -> (Point, Point) {
     (lo, hi)
 }
 
+/// The largest load of either curve in either panel (the size of the
+/// vector, the same in both).
+fn largest_load(samples: &[Vec<[Vector; 2]>; 2]) -> f64 {
+    (samples.iter().flatten().flatten())
+        .map(|v| v.norm())
+        .fold(0.0, f64::max)
+}
+
+/// The force scale's bar for loads up to `largest` drawn at `scale` page
+/// units to the force: the shortest round force ([`super::round_below`]'s
+/// 1, 2, 2.5, 5 × 10ᵏ) as long as the bar's text, [`BAR_TEXT`], but
+/// never longer than the largest load (the round force at or below it):
+/// a bar three times the largest load dwarfed the curves it measures.
+/// Where the loads are so small on the page that the largest is shorter
+/// than the text, the bar is the largest round force and its text is
+/// wider than it.
+fn bar_length(largest: f64, scale: f64) -> f64 {
+    let most = super::round_below(largest);
+    let mut bar = super::round_below(BAR_TEXT / scale);
+    while bar * scale < BAR_TEXT * (1.0 - 1e-9) && bar < most {
+        bar = round_above(bar);
+    }
+    bar.min(most)
+}
+
+/// The next round force above the round force `bar` (1, 2, 2.5, 5 × 10ᵏ).
+fn round_above(bar: f64) -> f64 {
+    let decade = 10f64.powf(bar.log10().floor());
+    [2.0, 2.5, 5.0, 10.0]
+        .iter()
+        .map(|s| s * decade)
+        .find(|s| *s > bar * (1.0 + 1e-9))
+        .unwrap_or(10.0 * decade)
+}
+
 /// The force scale's bar, `bar` long, at the lower left of `world`, in
-/// the room `below` the curves.
-fn scale_bar(ctx: &Ctx, world: &Frame, bar: f64, pad: f64, below: f64) -> Item {
-    let from = Point::new(world.min().x + 0.5 * pad, world.min().y + 0.25 * below);
+/// the room `below` the curves: its middle at least half its text's
+/// width in from the panel's edge, so that a bar shorter than its text
+/// keeps the text in the panel.
+fn scale_bar(ctx: &Ctx, world: &Frame, bar: f64, pad: f64, below: f64, scale: f64) -> Item {
+    let left = (0.5 * BAR_TEXT / scale - 0.5 * bar).max(0.0);
+    let from = Point::new(
+        world.min().x + 0.5 * pad + left,
+        world.min().y + 0.25 * below,
+    );
     let text = format!("{} {}", short(bar), ctx.units.force());
     super::scale_bar("fixed-bar", from, bar, &text)
 }
@@ -298,7 +344,7 @@ fn piece<'a>(engine: &'a Engine, relative: bool, a: f64, b: f64) -> impl Curve +
 /// turns) lettered.
 fn polar_plot(
     ctx: &Ctx,
-    engines: [&Engine; 2],
+    (engines, sampled): ([&Engine; 2], &[[Vector; 2]]),
     kinks: &[f64],
     cycle: f64,
     relative: bool,
@@ -330,6 +376,14 @@ fn polar_plot(
         // Measured against a Newton–Euler model of its own in the
         // curve-tolerance test, as every curve-* is.
         plot.curve(&format!("curve-{name}-{id}"), &traced, dash, None)?;
+        for (deg, from, to) in jumps(engine, relative, kinks, cycle) {
+            plot.line(
+                &format!("jump-{name}-{id}-{deg}"),
+                &[(from.x, from.y), (to.x, to.y)],
+                Dash::Dotted,
+                None,
+            );
+        }
     }
     let scale = plot.map().scale();
     for item in marks(
@@ -355,15 +409,91 @@ fn polar_plot(
             anchor: Point::origin(),
             text: RichText::parse("*O*"),
             size: TextSize::Letter,
-            toward: None,
+            toward: Some(clearest(
+                Point::origin(),
+                APART / scale,
+                &crowd(sampled, &[]),
+            )),
             line: None,
         },
     ));
     Ok(plot)
 }
 
+/// The points a letter keeps clear of: every sampled load of both
+/// curves and the points `also` (the marks, the pole).
+fn crowd(sampled: &[[Vector; 2]], also: &[Point]) -> Vec<Point> {
+    (sampled.iter().flatten())
+        .map(|v| Point::origin() + v)
+        .chain(also.iter().copied())
+        .collect()
+}
+
+/// The direction from `from`, of eight, in which a letter `reach` (world
+/// units) out stands farthest from every point of `crowd`: a letter set
+/// there stands by its point and clear of the curves, not inside a loop
+/// or across them (the pole's "O" by its ×, a quarter's angle by its
+/// dot).
+fn clearest(from: Point, reach: f64, crowd: &[Point]) -> Vector {
+    let room = |d: Vector| {
+        let at = from + d * reach;
+        (crowd.iter())
+            .filter(|p| **p != from)
+            .map(|p| (p - at).norm())
+            .fold(f64::MAX, f64::min)
+    };
+    (0..8)
+        .map(|k| {
+            let a = std::f64::consts::FRAC_PI_4 * k as f64;
+            Vector::new(a.cos(), a.sin())
+        })
+        .max_by(|a, b| room(*a).total_cmp(&room(*b)))
+        .unwrap_or(Vector::new(1.0, 1.0))
+}
+
+/// The jumps of `engine`'s load at the kinks (degrees) where the gas
+/// force jumps (at the dead centres, the cycle's end joined to its
+/// start): each its angle and the load just before and just after, where
+/// the two differ by more than a millionth of the larger. The figure
+/// draws each as a dotted line, so that a curve's end there leads to
+/// the other side of the jump and is not read as a free end or an
+/// arrowhead.
+fn jumps(engine: &Engine, relative: bool, kinks: &[f64], cycle: f64) -> Vec<(f64, Point, Point)> {
+    kinks
+        .iter()
+        .filter(|k| **k < cycle)
+        .filter_map(|&k| {
+            let before = if k == 0.0 { cycle } else { k } - INSIDE;
+            let (a, b) = (
+                load(engine, before, relative)?,
+                load(engine, k + INSIDE, relative)?,
+            );
+            ((a - b).norm() > 1e-6 * a.norm().max(b.norm()))
+                .then(|| (k, Point::origin() + a, Point::origin() + b))
+        })
+        .collect()
+}
+
 /// The two curves' names in ids: with the rod's inertia, without it.
 const CURVES: [&str; 2] = ["with-rod", "without-rod"];
+
+/// A mark of a panel: its curve, its angle (degrees), its point and the
+/// angles it letters, each with whether it is the dashed curve's.
+type Mark<'a> = (&'a str, f64, Point, Vec<(f64, bool)>);
+
+/// The letter of the angle `deg` on a curve: "90°" on the full curve
+/// (with the rod's inertia), "90°′" primed on the dashed one (without
+/// it), as a book letters a second curve's points 1′, 2′, …: two "90°"
+/// side by side could not say which curve each named. (Brackets,
+/// "(90°)", two characters wider, crowded a flat panel's letters off
+/// their dots on a narrow page.)
+pub(crate) fn angle_letter(deg: f64, dashed: bool) -> String {
+    if dashed {
+        format!("{deg}°′")
+    } else {
+        format!("{deg}°")
+    }
+}
 
 /// The marks of one panel, ids `point-{name}-{curve}-{deg}`: each curve's
 /// quarters first, a quarter within `meet` (world units, [`MEET`]) of a
@@ -384,10 +514,12 @@ fn marks(
         .map(|k| k as f64 * MARK)
         .collect();
     let quarter = |d: f64| d.rem_euclid(90.0) == 0.0;
-    // Each mark: its curve, its angle, its point and the angles it letters.
-    let mut taken: Vec<(&str, f64, Point, Vec<f64>)> = Vec::new();
+    // Each mark: its curve, its angle, its point and the angles it
+    // letters, each with whether it is the dashed curve's.
+    let mut taken: Vec<Mark> = Vec::new();
     for lettered in [true, false] {
         for (c, engine) in CURVES.into_iter().zip(engines) {
+            let dashed = c == CURVES[1];
             for &d in every.iter().filter(|d| quarter(**d) == lettered) {
                 let Some(v) = load(engine, d, relative) else {
                     continue;
@@ -395,7 +527,7 @@ fn marks(
                 let p = Point::origin() + v;
                 // An unlettered dot keeps twice as far from a
                 // lettered one, whose letter stands beside it.
-                let room = |t: &(&str, f64, Point, Vec<f64>)| {
+                let room = |t: &Mark| {
                     if lettered || t.3.is_empty() {
                         apart
                     } else {
@@ -404,7 +536,7 @@ fn marks(
                 };
                 // A quarter meets a lettered mark only on it (the two dots
                 // one place); nearer, but apart, it has a dot of its own.
-                let reach = |t: &(&str, f64, Point, Vec<f64>)| {
+                let reach = |t: &Mark| {
                     if lettered { meet } else { room(t) }
                 };
                 let near = (taken.iter_mut())
@@ -412,10 +544,14 @@ fn marks(
                     .min_by(|a, b| (p - a.2).norm().total_cmp(&(p - b.2).norm()));
                 match near {
                     // A quarter on a lettered mark: that mark letters it too.
-                    Some(t) if lettered && !t.3.contains(&d) => t.3.push(d),
+                    Some(t) if lettered && !t.3.contains(&(d, dashed)) => t.3.push((d, dashed)),
                     Some(_) => {}
                     None if lettered || (p - Point::origin()).norm() >= apart => {
-                        let letters = if lettered { vec![d] } else { Vec::new() };
+                        let letters = if lettered {
+                            vec![(d, dashed)]
+                        } else {
+                            Vec::new()
+                        };
                         taken.push((c, d, p, letters));
                     }
                     None => {}
@@ -442,8 +578,8 @@ fn marks(
             .min_by(|a, b| (p - a).norm().total_cmp(&(p - b).norm()));
         let away = nearest.map(|q| p - q).filter(|v| v.norm() > 0.0);
         let mut letters = letters.clone();
-        letters.sort_by(f64::total_cmp);
-        let text = (letters.iter().map(|a| format!("{a}°")))
+        letters.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let text = (letters.iter().map(|&(a, dashed)| angle_letter(a, dashed)))
             .collect::<Vec<_>>()
             .join(", ");
         items.push(Item::new(
@@ -469,7 +605,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let r = rod.rod();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u}{}; the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the curves break.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u}{}; the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, the dashed curve’s angles primed (90°′), quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the load jumps, a dotted line.",
             short(m.crank()),
             short(m.rod()),
             ctx.offset_clause(),

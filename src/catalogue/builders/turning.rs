@@ -202,6 +202,13 @@ fn lobes(ctx: &Ctx, plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
 /// line or the line T = 0 about it.
 const AREA_ROOM: f64 = 2.0;
 
+/// Room, page units, about an area's letter with its value ("a₄ =
+/// −9702"): a third of its size. With [`AREA_ROOM`] the value was set in
+/// the thin band between the mean line and T = 0, a unit and a half from
+/// each (at 120 mm with an offset); where it has not this room the bare
+/// letter is set in the area's wider part and the value is in the notes.
+const VALUE_ROOM: f64 = 4.0;
+
 /// Where a text set at a fixed place has its place: the middle of its
 /// letters, this many ems above its baseline ([`Shape::Text`]).
 const MIDDLE: f64 = 0.35;
@@ -240,9 +247,16 @@ fn area_letter(
         .map(|p| p.y - mean)
         .fold(0.0, |a: f64, v| if v.abs() > a.abs() { v } else { a })
         .signum();
-    // Each text with room about it, then the last (the bare letter)
-    // without.
-    let tries = (texts.iter().map(|t| (t, AREA_ROOM))).chain(texts.last().map(|t| (t, 0.0)));
+    // Each text with room about it (a value more), then the last (the
+    // bare letter) without.
+    let room_of = |t: &String| {
+        if t.contains('=') {
+            VALUE_ROOM
+        } else {
+            AREA_ROOM
+        }
+    };
+    let tries = (texts.iter().map(|t| (t, room_of(t)))).chain(texts.last().map(|t| (t, 0.0)));
     for (text, room) in tries {
         let rich = RichText::parse(text);
         let ink = rich.measure(ctx.font, size);
@@ -408,18 +422,111 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     } else {
         -1.0
     };
-    plot.push(Item::new(
-        "label-fluctuation",
-        Role::Label,
-        Shape::Label {
-            anchor: Point::new(tm.max_energy_deg, middle),
-            text: RichText::parse(&format!("Δ*E* = {} {t_unit}", sig(tm.fluctuation))),
-            size: TextSize::Small,
-            toward: Some(Vector::new(away, 0.0)),
-            line: None,
-        },
-    ));
+    let value = sig(tm.fluctuation);
+    let text = RichText::parse(&format!("Δ*E* = {value} {t_unit}"));
+    // Shorter where the whole does not fit beside the line: without the
+    // unit (the axis's), then the bare name (its value in the notes).
+    let texts = [
+        text.clone(),
+        RichText::parse(&format!("Δ*E* = {value}")),
+        RichText::parse("Δ*E*"),
+    ];
+    let energy = |deg: f64| stored(engine, tm, deg);
+    let at = (tm.max_energy_deg, elo, ehi);
+    let item = (texts.iter())
+        .find_map(|text| beside_dimension(ctx, &plot, &energy, at, away, text))
+        .unwrap_or_else(|| {
+            Item::new(
+                "label-fluctuation",
+                Role::Label,
+                Shape::Label {
+                    anchor: Point::new(tm.max_energy_deg, middle),
+                    text: text.clone(),
+                    size: TextSize::Small,
+                    toward: Some(Vector::new(away, 0.0)),
+                    line: None,
+                },
+            )
+        });
+    plot.push(item);
     Ok(plot)
+}
+
+/// Room, page units, between ΔE's value and the dimension line, the
+/// curve and the lines E = 0 and E = E_min about it.
+const DIMENSION_ROOM: f64 = 4.0;
+
+/// ΔE's value `text` set beside its dimension line at `at` = (θ, E_min,
+/// E_max), on the side `away` (+1 right) first (the figure tries the
+/// whole text, then shorter ones): at the height nearest
+/// the middle of the line where the text, [`DIMENSION_ROOM`] from the
+/// line, has no part of the curve `energy` between it and the line nor
+/// within the room about it, and stands off E = 0, E_min and E_max. Where
+/// the label was only placed clear, on a narrow page it stood on the far
+/// side of the curve from its line (the curve between the two). `None`
+/// where no place beside the line is clear.
+fn beside_dimension(
+    ctx: &Ctx,
+    plot: &Plot,
+    energy: &dyn Fn(f64) -> f64,
+    (deg, elo, ehi): (f64, f64, f64),
+    away: f64,
+    text: &RichText,
+) -> Option<Item> {
+    let map = plot.map();
+    let size = ctx.style.font_size(TextSize::Small);
+    let ink = text.measure(ctx.font, size);
+    let (above, below) = (ink.above - MIDDLE * size, ink.below + MIDDLE * size);
+    let half_high = 0.5 * (above + below) + DIMENSION_ROOM;
+    let page = |t: f64, e: f64| map.apply(Point::new(t, e));
+    let curve: Vec<Point> = (0..=720)
+        .map(|k| 0.5 * k as f64)
+        .map(|t| page(t, energy(t)))
+        .collect();
+    let line = page(deg, 0.0).x;
+    let (left, right) = (page(0.0, 0.0).x, page(360.0, 0.0).x);
+    let levels = [0.0, elo, ehi].map(|e| page(deg, e).y);
+    let (top, bottom) = (levels[2] + half_high, levels[1] - half_high);
+    let mid = 0.5 * (top + bottom);
+    // Heights from the middle outwards, every 2 units.
+    let mut heights: Vec<f64> = (0..)
+        .map(|k| top + 2.0 * k as f64)
+        .take_while(|y| *y <= bottom)
+        .collect();
+    heights.sort_by(|a, b| (a - mid).abs().total_cmp(&(b - mid).abs()));
+    for side in [away, -away] {
+        let (near, far) = (
+            line + side * DIMENSION_ROOM,
+            line + side * (DIMENSION_ROOM + ink.width),
+        );
+        let (x0, x1) = (near.min(far), near.max(far));
+        if x0 < left || x1 > right {
+            continue;
+        }
+        let clear = |y: f64| {
+            levels.iter().all(|l| (l - y).abs() >= half_high)
+                && curve
+                    .iter()
+                    .filter(|p| p.x >= x0 - DIMENSION_ROOM && p.x <= x1 + DIMENSION_ROOM)
+                    .all(|p| (p.y - y).abs() >= half_high)
+        };
+        if let Some(&y) = heights.iter().find(|y| clear(**y)) {
+            let centre = Point::new(0.5 * (x0 + x1), y);
+            let at = map.invert(centre - Vector::new(0.0, 0.5 * (below - above)));
+            return Some(Item::new(
+                "label-fluctuation",
+                Role::Label,
+                Shape::Text {
+                    at,
+                    offset: Vector::zeros(),
+                    text: text.clone(),
+                    align: Align::Middle,
+                    size: TextSize::Small,
+                },
+            ));
+        }
+    }
+    None
 }
 
 /// What the notes say of the gas force after the mass: the constant, or
@@ -460,8 +567,9 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 3] {
             mass_u = ctx.units.mass()
         ),
         format!(
-            "Work per turn {} {t_unit}; {} areas between the crossings; most energy at θ = {}°, least at {}°.",
+            "Work per turn {} {t_unit}; fluctuation of energy Δ*E* = {} {t_unit}; {} areas between the crossings; most energy at θ = {}°, least at {}°.",
             sig(tm.settled(tm.work)),
+            sig(tm.fluctuation),
             tm.lobes.len(),
             short(tm.max_energy_deg),
             short(tm.min_energy_deg)
