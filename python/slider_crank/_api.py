@@ -1252,8 +1252,9 @@ def figure(
     ``rod_cg``, ``rod_gyration``: the connecting rod of
     ``crank-pin-loads`` (default 0.6 of ``mass``, ``l/3`` from the crank
     pin, ``0.3 l``); ``cranks``, ``planes``: the cylinders of
-    ``inline-balance``, a list or a comma-separated string (default cranks
-    0, 120, 240 and a pitch of 1 about the middle of the engine).
+    ``inline-balance``, a list or a comma-separated string, read by the
+    library as the flag's value is (default cranks 0, 120, 240 and a pitch
+    of 1 about the middle of the engine).
     """
     options = _figure_options(locals())
     return Figure(_core.figure(name, **options), (name, options))
@@ -1309,10 +1310,11 @@ def _coupler(given: Union[None, float, Tuple[float, float]]) -> Optional[Tuple[f
     return (_real(given), 0.0)
 
 
-def _numbers(given: Union[None, str, Sequence[float]]) -> Optional["list[float]"]:
-    """A list of numbers given as a list or a comma-separated string."""
+def _numbers(given: Union[None, str, Sequence[float]]) -> Union[None, str, "list[float]"]:
+    """A list of numbers given as a list, or a comma-separated string,
+    which the library reads as the command line reads the flag's value."""
     if isinstance(given, str):
-        return [float(t) for t in given.split(",")]
+        return given
     return _reals(given)
 
 

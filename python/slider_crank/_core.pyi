@@ -2,7 +2,7 @@
 JSON text, SVG text, bytes or filled numpy arrays out. Use the classes of
 ``slider_crank``; these functions are their implementation."""
 
-from typing import Optional, final
+from typing import Optional, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -113,8 +113,8 @@ def figure(
     rod_mass: Optional[float] = None,
     rod_cg: Optional[float] = None,
     rod_gyration: Optional[float] = None,
-    cranks: Optional[list[float]] = None,
-    planes: Optional[list[float]] = None,
+    cranks: Union[None, str, list[float]] = None,
+    planes: Union[None, str, list[float]] = None,
 ) -> str: ...
 def encode(svg: str, format: str) -> bytes: ...
 def save(svg: str, path: str) -> None: ...

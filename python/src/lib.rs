@@ -18,7 +18,7 @@ use slider_crank::construct::{Graphical, Reading};
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::{DynamicsAsk, Handout};
-use slider_crank::lists::Angles;
+use slider_crank::lists::{Angles, parse_list};
 use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
     write_atomic_all,
@@ -62,6 +62,27 @@ fn py_err(e: Error) -> PyErr {
 
 fn parse<T: std::str::FromStr<Err = Error>>(text: &str) -> PyResult<T> {
     text.parse().map_err(py_err)
+}
+
+/// A list of numbers as a keyword takes it: a sequence, or one
+/// comma-separated string read as the command line reads its flag's value
+/// (`lists::parse_list`: the same refusals, a word, NaN or an infinity
+/// named with its place in the list). An empty string is one empty item,
+/// refused as the flag's `--cranks=` is.
+#[derive(FromPyObject)]
+enum Numbers {
+    Text(String),
+    Values(Vec<f64>),
+}
+
+impl Numbers {
+    /// The numbers, a string read as a list of `name`s.
+    fn values(self, name: &str) -> PyResult<Vec<f64>> {
+        match self {
+            Numbers::Text(text) => parse_list(&text, name, false).map_err(py_err),
+            Numbers::Values(values) => Ok(values),
+        }
+    }
 }
 
 /// The engine, validated as `--crank --rod --offset` are.
@@ -301,8 +322,8 @@ fn figure(
     rod_mass: Option<f64>,
     rod_cg: Option<f64>,
     rod_gyration: Option<f64>,
-    cranks: Option<Vec<f64>>,
-    planes: Option<Vec<f64>>,
+    cranks: Option<Numbers>,
+    planes: Option<Numbers>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
     let mut request = FigureRequest::default();
@@ -336,8 +357,8 @@ fn figure(
     request.rod_mass = rod_mass;
     request.rod_cg = rod_cg;
     request.rod_gyration = rod_gyration;
-    request.cranks = cranks;
-    request.planes = planes;
+    request.cranks = cranks.map(|c| c.values("crank angle")).transpose()?;
+    request.planes = planes.map(|p| p.values("plane")).transpose()?;
     let options = request.options(name).map_err(py_err)?;
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);

@@ -97,3 +97,27 @@ pub fn on_page(width: &str, height: Option<&str>) -> slider_crank::catalogue::Fi
     options.height = height.map(|h| h.parse().unwrap());
     options
 }
+
+/// Threads a suite's long loop runs on (CI has two cores).
+pub const THREADS: usize = 2;
+
+/// `f` of every item, in the items' order, the items dealt round-robin
+/// over [`THREADS`] threads (none: an empty list). A panic in `f` is
+/// raised again in the caller, its message kept.
+pub fn in_threads<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> Vec<R> {
+    let f = &f;
+    let mut done: Vec<(usize, R)> = std::thread::scope(|s| {
+        let handles: Vec<_> = (0..THREADS)
+            .map(|t| {
+                let mine = items.iter().enumerate().skip(t).step_by(THREADS);
+                s.spawn(move || mine.map(|(i, x)| (i, f(x))).collect::<Vec<_>>())
+            })
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    });
+    done.sort_by_key(|(i, _)| *i);
+    done.into_iter().map(|(_, r)| r).collect()
+}

@@ -2,11 +2,11 @@
 //! scratch directory under `ulimit -v 4000000` and a timeout, its exit code,
 //! a text its standard error contains, and no `inf` or `NaN` printed.
 //!
-//! `ROBUSTNESS_BIN` runs another binary (the release build) and
-//! `ROBUSTNESS_TIMEOUT` sets the timeout in seconds (default 180: the
-//! unoptimised build takes about 13 s for the 100 000 rows of one row
-//! here, more on a loaded machine; CI holds the release binary to the
-//! table's 10 s separately).
+//! `ROBUSTNESS_BIN` runs another binary (the release build, say) and
+//! `ROBUSTNESS_TIMEOUT` sets the timeout in seconds (default 180, for a
+//! slower build or machine; `.ci/run` holds the test build's optimised
+//! binary to the table's 10 s: its slowest row, 100 000 angles, takes
+//! about 4 s on a loaded 2-core machine).
 
 #![cfg(unix)]
 

@@ -253,29 +253,36 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
         SliderCrank::in_line(1e9, 4e9).unwrap(),
         SliderCrank::in_line(1.0, 1e6).unwrap(),
     ];
+    // Some 170 figures of every layer: built on two threads (the suite's
+    // longest test, which the others finished beside on one core).
+    let mut poses = Vec::new();
     for m in mechanisms {
         for deg in [0.0, 90.0, 180.0, 270.0, 89.9, 45.0] {
             for style in [Style::Textbook, Style::Handout] {
                 for mirror in [false, true] {
-                    let scene = Scene::new(m, Angle::deg(deg))
-                        .with_layers(Layer::ALL)
-                        .with_style(style)
-                        .with_mirror(mirror);
-                    let svg = to_svg(&scene.figure().unwrap());
-                    assert_clean(&svg, &format!("{m:?} at {deg}° {style:?} mirror {mirror}"));
+                    poses.push((m, deg, style, mirror));
                 }
             }
         }
     }
-    for name in FigureName::SCENES {
-        for deg in [0.0, 90.0, 180.0, 270.0] {
-            let scene = name.scene().unwrap().with_angles(vec![Angle::deg(deg)]);
-            assert_clean(
-                &to_svg(&scene.figure().unwrap()),
-                &format!("{} at {deg}°", name.name()),
-            );
-        }
-    }
+    common::in_threads(&poses, |&(m, deg, style, mirror)| {
+        let scene = Scene::new(m, Angle::deg(deg))
+            .with_layers(Layer::ALL)
+            .with_style(style)
+            .with_mirror(mirror);
+        let svg = to_svg(&scene.figure().unwrap());
+        assert_clean(&svg, &format!("{m:?} at {deg}° {style:?} mirror {mirror}"));
+    });
+    let scenes: Vec<_> = (FigureName::SCENES.iter())
+        .flat_map(|name| [0.0, 90.0, 180.0, 270.0].map(|deg| (name, deg)))
+        .collect();
+    common::in_threads(&scenes, |&(name, deg)| {
+        let scene = name.scene().unwrap().with_angles(vec![Angle::deg(deg)]);
+        assert_clean(
+            &to_svg(&scene.figure().unwrap()),
+            &format!("{} at {deg}°", name.name()),
+        );
+    });
 }
 
 #[test]

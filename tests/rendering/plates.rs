@@ -1014,29 +1014,10 @@ fn jobs() -> Vec<Job> {
     out
 }
 
-/// Threads the sweep runs on (CI has two cores).
-const THREADS: usize = 2;
-
 /// The sweep's outcomes in the order of [`jobs`], the work dealt
-/// round-robin over [`THREADS`].
+/// round-robin over [`common::THREADS`].
 fn sweep(jobs: &[Job]) -> Vec<Outcome> {
-    let mut done: Vec<(usize, Outcome)> = std::thread::scope(|s| {
-        let handles: Vec<_> = (0..THREADS)
-            .map(|t| {
-                let mine = jobs.iter().enumerate().skip(t).step_by(THREADS);
-                s.spawn(move || {
-                    mine.map(|(i, (f, m, a))| (i, inspect(f, m, *a)))
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().unwrap())
-            .collect()
-    });
-    done.sort_by_key(|(i, _)| *i);
-    done.into_iter().map(|(_, o)| o).collect()
+    common::in_threads(jobs, |(f, m, a)| inspect(f, m, *a))
 }
 
 /// Per figure: clean plates, all plates, and plates breaking each rule.
