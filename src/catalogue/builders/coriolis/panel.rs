@@ -11,7 +11,7 @@ use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Hue, PageRect, RIGHT_ANGLE, RichText, Role, Shape};
 use crate::geom::{Frame, Point, Vector};
-use crate::scene::{COINCIDE, Canvas};
+use crate::scene::{COINCIDE, Canvas, Marker};
 use serde_json::Value;
 
 /// Room kept about a polygon for its letters and its bar, in shares of
@@ -214,12 +214,20 @@ pub(super) fn mark_window(s: &mut Canvas, name: &str, frame: &Frame) {
 
 /// Letters the polygon's `points`, those that coincide on the page
 /// (within [`COINCIDE`]) by one letter, those in the region left to a
-/// detail (`quiet`) not here.
+/// detail (`quiet`) not here but the pole (the first point): the polygon
+/// is read from it, and a box with no letter at its start leaves the
+/// reader to guess where the polygon begins (inversion 3 near 90° at a
+/// long rod, where o′ and k lie within a few units of each other).
 pub(super) fn letter(s: &mut Canvas, points: &[Lettered], quiet: Option<Frame>) {
     let points: Vec<(&str, &str, Point)> = (points.iter())
         .map(|(id, markup, at)| (*id, *markup, Point::from(*at)))
         .collect();
     s.letter_crowded(&points, COINCIDE, Point::origin(), quiet);
+    if let (Some(held), Some((id, markup, pole))) = (quiet, points.first())
+        && held.contains(*pole)
+    {
+        s.lettered(id, *pole, markup, Marker::Dot, *pole);
+    }
 }
 
 /// The detail of a polygon: the region of `window` enlarged in `rect`,
