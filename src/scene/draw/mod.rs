@@ -5,6 +5,7 @@ mod centres;
 mod curves;
 mod detail;
 mod dimensions;
+mod enlargement;
 mod fit;
 mod mechanism;
 mod motion;
