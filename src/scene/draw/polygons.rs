@@ -477,8 +477,8 @@ pub(crate) fn enlargement(ctx: &LayerCtx, placed: &Placed) -> Option<Enlargement
 
 /// The enlargement's box, page units (on a page of fixed width the fit
 /// settles a little short of its scale, and the box is drawn up to a
-/// third smaller: 118 units wide at `--crank 1 --rod 50 --angle 90.5
-/// --width 120mm`).
+/// third smaller: 118 units wide for a rod of 50 cranks at 90.5° on a
+/// page 120 mm wide).
 const ENLARGEMENT: (f64, f64) = (170.0, 130.0);
 
 /// Half the width of the caption naming both polygons, page units (its

@@ -21,11 +21,13 @@ pub(super) const CRANK_LEAST: f64 = 40.0;
 
 /// The page length under which inversion 2's crank CB, the fixed link,
 /// gets the same detail: drawn whole by its bearings it reads down to
-/// here (the default engine, a rod of three cranks, draws it 39 units),
-/// but at a rod of thirty cranks it is four units long, C's and B's pins
-/// touch, link a is not to be seen and B's letter may stand on the wrong
-/// side of C's.
-pub(super) const FIXED_CRANK_LEAST: f64 = 25.0;
+/// here (its pins, 4.2 units in radius, a few units of link between;
+/// the default engine, a rod of three cranks, draws it 39 units), but at
+/// a rod of thirty cranks it is four units long, C's and B's pins touch,
+/// link a is not to be seen and B's letter may stand on the wrong side
+/// of C's. A detail beside a mechanism it need not enlarge takes the
+/// room of it (a rod of six cranks on a page 120 mm wide).
+pub(super) const FIXED_CRANK_LEAST: f64 = 15.0;
 
 /// The crank detail's reach about B, in cranks: the crank's circle and
 /// room for its letters (a panel 170 units tall draws the crank at least
