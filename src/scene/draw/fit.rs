@@ -103,23 +103,9 @@ fn frame_with(ctx: &LayerCtx, with_d: bool) -> Frame {
             .sizes
             .page_scale
             .map_or(0.0, |s| super::polygons::CAPTION_ROOM / s);
-        let placed = super::polygons::place(ctx);
-        for p in placed.points() {
+        for p in super::polygons::place(ctx).points() {
             b.add(p);
             b.add(p - Vector::new(0.0, below));
-        }
-        // The enlargement of the acceleration polygon's crowded end, its
-        // caption below it, and the room it keeps for the polygons'.
-        if let (Some(e), Some(s)) = (
-            super::polygons::enlargement(ctx, &placed),
-            ctx.sizes.page_scale,
-        ) {
-            b.add(e.frame.max());
-            // The caption naming both polygons, which may reach beyond
-            // them.
-            b.add(e.beside.min());
-            b.add(e.beside.max());
-            b.add(e.frame.min() - Vector::new(0.0, super::enlargement::CAPTION_ROOM / s));
         }
         // Q, which may stand off the rod's line.
         b.add(scene.coupler().point(ctx.main.pose()));

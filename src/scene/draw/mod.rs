@@ -5,7 +5,6 @@ mod centres;
 mod curves;
 mod detail;
 mod dimensions;
-mod enlargement;
 mod fit;
 mod mechanism;
 mod motion;

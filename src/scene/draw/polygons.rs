@@ -8,10 +8,9 @@
 //! normal component b′x, as Rattan and Khurmi letter it.
 
 use super::LayerCtx;
-use super::enlargement::{self, Enlargement};
 use crate::construct::{AccelerationPolygon, VelocityPolygon};
 use crate::figure::{Align, Hue, RIGHT_ANGLE, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Point, Vector};
+use crate::geom::{Point, Vector};
 use crate::number::{short, sig};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
@@ -234,12 +233,16 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     velocity(ctx, canvas, &v);
     canvas.set_hue(Some(Hue::Acceleration));
     let a = placed.acceleration_points();
-    acceleration(ctx, canvas, &a, &placed);
+    acceleration(ctx, canvas, &a);
     canvas.set_hue(hue);
     let mut v_points = vec![v.o, v.a, v.b];
     v_points.extend(v.q);
     let mut a_points = vec![a.o, a.a, a.b, a.x];
     a_points.extend(a.q);
+    let middle = |p: &[Point]| {
+        let xs = p.iter().map(|p| p.x);
+        0.5 * (xs.clone().fold(f64::INFINITY, f64::min) + xs.fold(f64::NEG_INFINITY, f64::max))
+    };
     // Named below each where their names fit side by side, else both
     // in one line below the pair (a folded polygon near 90° is a needle
     // a few units wide, and the two stand closer than their names).
@@ -366,146 +369,52 @@ fn letter(canvas: &mut Canvas, points: &[(String, String, Point)], pole: Point) 
     canvas.letter_crowded(&points, COINCIDE, pole, None);
 }
 
-/// The acceleration polygon's vectors as drawn: id, role, from, to and
-/// whether an arrow (the side a′b′ of the rod's image is a plain line).
-fn acceleration_vectors(ctx: &LayerCtx, p: &AccelerationPoints) -> Vec<Vector4> {
+fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
     let (o, b, a) = (
         id(ctx, CrankCentre, true),
         id(ctx, CrankPin, true),
         id(ctx, Slider, true),
     );
-    let c = Role::Construction;
-    let mut out = vec![
-        (format!("acceleration-{o}{b}"), c, p.o, p.b, true),
-        (format!("acceleration-{b}x"), c, p.b, p.x, true),
-        (format!("acceleration-x{a}"), c, p.x, p.a, true),
-        (format!("acceleration-{o}{a}"), Role::Result, p.o, p.a, true),
-        (
-            format!("acceleration-{a}{b}"),
+    vector(
+        canvas,
+        format!("acceleration-{o}{b}"),
+        Role::Construction,
+        p.o,
+        p.b,
+    );
+    vector(
+        canvas,
+        format!("acceleration-{b}x"),
+        Role::Construction,
+        p.b,
+        p.x,
+    );
+    vector(
+        canvas,
+        format!("acceleration-x{a}"),
+        Role::Construction,
+        p.x,
+        p.a,
+    );
+    vector(
+        canvas,
+        format!("acceleration-{o}{a}"),
+        Role::Result,
+        p.o,
+        p.a,
+    );
+    canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
+    if let Some(q) = p.q {
+        vector(
+            canvas,
+            format!("acceleration-{o}q2"),
             Role::Auxiliary,
-            p.a,
-            p.b,
-            false,
-        ),
-    ];
-    if let Some(q) = p.q {
-        out.push((format!("acceleration-{o}q2"), Role::Auxiliary, p.o, q, true));
-    }
-    out
-}
-
-/// The acceleration polygon's letters: id, markup, point, the pole first.
-fn acceleration_letters(ctx: &LayerCtx, p: &AccelerationPoints) -> Vec<(String, String, Point)> {
-    let mut letters = vec![
-        (
-            id(ctx, CrankCentre, true),
-            image(ctx, CrankCentre, true),
             p.o,
-        ),
-        (id(ctx, CrankPin, true), image(ctx, CrankPin, true), p.b),
-        ("x".to_string(), "*x*".to_string(), p.x),
-        (id(ctx, Slider, true), image(ctx, Slider, true), p.a),
-    ];
-    if let Some(q) = p.q {
-        letters.push((id(ctx, Coupler, true), image(ctx, Coupler, true), q));
-    }
-    letters
-}
-
-/// A side of a polygon as drawn: id, role, from, to, whether an arrow.
-type Vector4 = (String, Role, Point, Point, bool);
-
-/// The angle, radians, within which the tangential component xa′ and
-/// ω²r (c′b′) lie along one line: the polygon is folded and its long
-/// sides are drawn over each other (near 90° at a long rod they are 0.2°
-/// apart at l = 37 r, 4° at l = 3 r with an offset, 45° at the §35
-/// engine's 45°).
-const FOLDED: f64 = 0.15;
-
-/// Whether the acceleration polygon is folded (xa′ along c′b′, each
-/// longer than a crowd on the page) or two of its points stand apart but
-/// closer than [`COINCIDE`], lettered by one letter: then its crowded end
-/// is enlarged. A polygon whose points crowd but are lettered each at
-/// its own vertex, its sides apart, reads as it is (the §35 engine's b′x,
-/// 11 units at 45°).
-fn crowded(canvas_scale: f64, a: &AccelerationPoints, points: &[Point]) -> bool {
-    let (u, v) = (a.a - a.x, a.b - a.o);
-    let long = |w: Vector| w.norm() * canvas_scale >= enlargement::CROWD;
-    let folded = long(u) && long(v) && {
-        let cross = (u.x * v.y - u.y * v.x).abs();
-        cross.atan2(u.dot(&v).abs()) < FOLDED
-    };
-    let joint = points.iter().any(|p| {
-        points.iter().any(|q| {
-            let d = (p - q).norm() * canvas_scale;
-            (enlargement::DISTINCT..COINCIDE).contains(&d)
-        })
-    });
-    folded || joint
-}
-
-/// The enlargement of the acceleration polygon's crowded end, where it
-/// is folded or its points are lettered jointly ([`crowded`]) and the
-/// page scale is known ([`enlargement`]).
-pub(crate) fn enlargement(ctx: &LayerCtx, placed: &Placed) -> Option<Enlargement> {
-    let scale = ctx.sizes.page_scale?;
-    let a = placed.acceleration_points();
-    let mut points = vec![a.o, a.b, a.x, a.a];
-    points.extend(a.q);
-    if !crowded(scale, &a, &points) {
-        return None;
-    }
-    let all = placed.points();
-    let lo = all.iter().fold(a.o, |m, p| m.inf(p));
-    let hi = all.iter().fold(a.o, |m, p| m.sup(p));
-    // The one caption naming both polygons, centred under them, may
-    // reach beyond them: the enlargement stands clear of it, whether or
-    // not it is drawn (the fit, up to a third off the drawing's scale on
-    // a page of fixed width, cannot tell).
-    let reach = JOINT_HALF / scale;
-    let centre = 0.5 * (lo.x + hi.x);
-    let lo = Point::new(lo.x.min(centre - reach), lo.y);
-    let hi = Point::new(hi.x.max(centre + reach), hi.y);
-    enlargement::enlargement(
-        &points,
-        scale,
-        Frame::new(lo, hi),
-        ctx.scene.is_mirrored(),
-        Vector::new(ENLARGEMENT.0, ENLARGEMENT.1) / scale,
-    )
-}
-
-/// The enlargement's box, page units (on a page of fixed width the fit
-/// settles a little short of its scale, and the box is drawn up to a
-/// third smaller: 118 units wide for a rod of 50 cranks at 90.5° on a
-/// page 120 mm wide).
-const ENLARGEMENT: (f64, f64) = (170.0, 130.0);
-
-/// Half the width of the caption naming both polygons, page units (its
-/// 52 characters at the small size, 340 units, and room).
-const JOINT_HALF: f64 = 190.0;
-
-/// The middle of `points` across the page (world x).
-fn middle(points: &[Point]) -> f64 {
-    let xs = points.iter().map(|p| p.x);
-    0.5 * (xs.clone().fold(f64::INFINITY, f64::min) + xs.fold(f64::NEG_INFINITY, f64::max))
-}
-
-fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints, placed: &Placed) {
-    let vectors = acceleration_vectors(ctx, p);
-    for (id, role, from, to, arrow) in &vectors {
-        if *arrow {
-            vector(canvas, id.clone(), *role, *from, *to);
-        } else {
-            canvas.segment(id.clone(), *role, *from, *to);
+            q,
+        );
+        if off_rod(ctx) {
+            image_triangle(canvas, "acceleration", [&a, &b, "q2"], [p.a, p.b, q]);
         }
-    }
-    if let Some(q) = p.q
-        && off_rod(ctx)
-    {
-        let a = id(ctx, Slider, true);
-        let b = id(ctx, CrankPin, true);
-        image_triangle(canvas, "acceleration", [&a, &b, "q2"], [p.a, p.b, q]);
     }
     let (normal, tangential) = (p.b - p.x, p.a - p.x);
     if canvas.page(normal.norm()) >= 2.0 * RIGHT_ANGLE
@@ -521,11 +430,20 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints, pla
             },
         );
     }
-    let letters = acceleration_letters(ctx, p);
-    letter(canvas, &letters, p.o);
-    if let Some(e) = enlargement(ctx, placed) {
-        enlargement::draw(canvas, &e, &vectors, &letters);
+    let mut letters = vec![
+        (
+            id(ctx, CrankCentre, true),
+            image(ctx, CrankCentre, true),
+            p.o,
+        ),
+        (id(ctx, CrankPin, true), image(ctx, CrankPin, true), p.b),
+        ("x".to_string(), "*x*".to_string(), p.x),
+        (id(ctx, Slider, true), image(ctx, Slider, true), p.a),
+    ];
+    if let Some(q) = p.q {
+        letters.push((id(ctx, Coupler, true), image(ctx, Coupler, true), q));
     }
+    letter(canvas, &letters, p.o);
 }
 
 /// The notes that state the polygons' scales and read them: the velocity

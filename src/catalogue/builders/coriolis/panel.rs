@@ -222,11 +222,27 @@ pub(super) fn letter(s: &mut Canvas, points: &[Lettered], quiet: Option<Frame>) 
     let points: Vec<(&str, &str, Point)> = (points.iter())
         .map(|(id, markup, at)| (*id, *markup, Point::from(*at)))
         .collect();
-    s.letter_crowded(&points, COINCIDE, Point::origin(), quiet);
-    if let (Some(held), Some((id, markup, pole))) = (quiet, points.first())
-        && held.contains(*pole)
-    {
-        s.lettered(id, *pole, markup, Marker::Dot, *pole);
+    let Some((first, rest)) = points.split_first() else {
+        return;
+    };
+    let held = |p: Point| quiet.is_some_and(|f| f.contains(p));
+    if !held(first.2) {
+        s.letter_crowded(&points, COINCIDE, Point::origin(), quiet);
+        return;
+    }
+    // The pole held: lettered with the points outside the region, last,
+    // so that one of them within reach names it too ("a′_d, o′"), else
+    // by its own letter; the others held recorded for the detail.
+    let mut shown: Vec<(&str, &str, Point)> = rest.iter().copied().filter(|p| !held(p.2)).collect();
+    shown.push(*first);
+    for p in rest.iter().filter(|p| held(p.2)) {
+        s.record(p.0, p.2);
+    }
+    let joined = (rest.iter())
+        .any(|p| !held(p.2) && s.contains(p.2) && s.page((p.2 - first.2).norm()) < COINCIDE);
+    s.letter_crowded(&shown, COINCIDE, Point::origin(), None);
+    if !joined {
+        s.lettered(first.0, first.2, first.1, Marker::Dot, first.2);
     }
 }
 
