@@ -56,7 +56,8 @@ pub struct Run {
 /// One typographic convention holds in every text, drawing and note
 /// alike (ISO 80000-2, as a book sets it; docs/design.md): a quantity's
 /// symbol is italic, Latin or Greek (a small Greek letter is italic
-/// wherever it is written, but π, a number); subscripts, which here are
+/// wherever it is written, but π, a number, and α, whose italic in the
+/// text faces is drawn as an italic a); subscripts, which here are
 /// descriptive (links, points, `c` for crank, digits), and exponents are
 /// upright; a prime (′, ″) is set in the style of the letter it marks.
 /// Numbers, units and words are upright.
@@ -291,9 +292,13 @@ impl RichText {
 }
 
 /// Whether `c` is a small Greek letter, set italic as a quantity's
-/// symbol wherever it is written (θ, φ, ω, μ, …); not π, a number.
+/// symbol wherever it is written (θ, φ, ω, μ, …); not π, a number, nor
+/// α: New Computer Modern's italic α is the text face's, an italic a
+/// with a flick, which a reader takes for the point *a* (the angular
+/// acceleration α_d read as the image a_d); upright it is the α of the
+/// maths face, not to be mistaken.
 fn is_quantity_greek(c: char) -> bool {
-    matches!(c, 'α'..='ω' | 'ϑ' | 'ϕ' | 'ϵ') && c != 'π' && c != 'ς'
+    matches!(c, 'β'..='ω' | 'ϑ' | 'ϕ' | 'ϵ') && c != 'π' && c != 'ς'
 }
 
 /// The prime `c` as the text faces set it: ′ and ″ as the modifier
@@ -519,10 +524,10 @@ mod tests {
                 (", Eʹ", false),
             ]
         );
-        for c in ['α', 'β', 'θ', 'φ', 'ϕ', 'ω', 'μ'] {
+        for c in ['β', 'θ', 'φ', 'ϕ', 'ω', 'μ'] {
             assert!(is_quantity_greek(c), "{c}");
         }
-        for c in ['π', 'Δ', 'Ω', 'a', '′'] {
+        for c in ['π', 'α', 'Δ', 'Ω', 'a', '′'] {
             assert!(!is_quantity_greek(c), "{c}");
         }
     }

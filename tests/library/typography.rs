@@ -89,9 +89,13 @@ fn texts(svg: &str) -> Vec<(String, Vec<Set>)> {
 /// What breaks the convention in one text, if anything.
 fn fault(text: &[Set]) -> Option<String> {
     for (i, s) in text.iter().enumerate() {
-        let greek = matches!(s.c, 'α'..='ω' | 'ϑ' | 'ϕ' | 'ϵ') && s.c != 'π';
+        let greek = matches!(s.c, 'β'..='ω' | 'ϑ' | 'ϕ' | 'ϵ') && s.c != 'π';
         if greek && !s.italic {
             return Some(format!("{} upright", s.c));
+        }
+        // New Computer Modern's italic α is an italic a: α_d read a_d.
+        if s.c == 'α' && s.italic {
+            return Some("α italic, read as a".into());
         }
         if s.c.is_ascii_digit() && s.italic {
             return Some(format!("digit {} italic", s.c));
@@ -178,6 +182,11 @@ fn the_checker_sees_each_fault() {
         Some("a straight apostrophe".into())
     );
     assert_eq!(fault_of("2π rad, Ng’s paper"), None);
+    assert_eq!(
+        fault_of("<tspan font-style=\"italic\">α</tspan> = 3 rad/s²"),
+        Some("α italic, read as a".into())
+    );
+    assert_eq!(fault_of("α = 3 rad/s²"), None);
 }
 
 /// Whether a text sets the velocity letter `v` (italic) with the

@@ -117,3 +117,99 @@ fn the_frame_d_keeps_its_shape_at_every_pose() {
         );
     }
 }
+
+/// The centre of the box of the text `id` as drawn, if drawn.
+fn text_centre(plate: &Plate, id: &str) -> Option<(f64, f64)> {
+    (plate.texts.iter())
+        .find(|t| t.id == id)
+        .map(|t| (0.5 * (t.rect.x0 + t.rect.x1), 0.5 * (t.rect.y0 + t.rect.y1)))
+}
+
+#[test]
+fn each_pin_letter_stands_by_its_own_pin_and_link_a_is_seen() {
+    // The sixth review: inversion 2 at l = 35 r, 180° set B's letter left
+    // of the hub, by C's pin (2.5); at l = 35 to 52 r link a (CB) was four
+    // units long, C and B one knot. Every pin letter, in the mechanism
+    // and in any detail, is nearer its own pin than any other pin, and a
+    // detail draws CB at least 40 units long where the mechanism does not.
+    const SEEN: f64 = 40.0;
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion2, 35.0, 0.0, 180.0),
+        (FigureName::CoriolisInversion2, 35.0, 0.0, 0.0),
+        (FigureName::CoriolisInversion2, 38.5, 0.0, 180.0),
+        (FigureName::CoriolisInversion2, 52.2, 0.0, 89.02),
+        (FigureName::CoriolisInversion2, 1.76, 0.423, 180.0),
+        (FigureName::CoriolisInversion3, 51.3, 0.0, 180.0),
+        (FigureName::CoriolisInversion3, 1.05, 0.0, 0.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        let mut crank_seen = false;
+        for prefix in ["", "detail-"] {
+            let pins: Vec<(&str, (f64, f64))> = ["C", "B", "A"]
+                .into_iter()
+                .filter_map(|k| {
+                    let id = format!("{prefix}point-{k}");
+                    let cx = attr(&svg, &id, "cx")?.parse().ok()?;
+                    let cy = attr(&svg, &id, "cy")?.parse().ok()?;
+                    Some((k, (cx, cy)))
+                })
+                .collect();
+            let at = |k: &str| pins.iter().find(|p| p.0 == k).map(|p| p.1);
+            if let (Some(c), Some(b)) = (at("C"), at("B")) {
+                crank_seen |= (c.0 - b.0).hypot(c.1 - b.1) >= SEEN;
+            }
+            for (key, _) in &pins {
+                let Some(letter) = text_centre(&plate, &format!("{prefix}label-{key}")) else {
+                    continue;
+                };
+                let nearest = (pins.iter())
+                    .min_by(|p, q| {
+                        let d = |x: (f64, f64)| (x.0 - letter.0).hypot(x.1 - letter.1);
+                        d(p.1).total_cmp(&d(q.1))
+                    })
+                    .unwrap();
+                assert_eq!(
+                    nearest.0, *key,
+                    "{name:?} l = {rod}, e = {offset}, {deg}°: {prefix}{key}'s letter by {}'s pin",
+                    nearest.0
+                );
+            }
+        }
+        assert!(
+            crank_seen,
+            "{name:?} l = {rod}, e = {offset}, {deg}°: CB nowhere {SEEN} units long"
+        );
+    }
+}
+
+#[test]
+fn the_acceleration_polygon_letters_its_pole() {
+    // The sixth review: inversion 3 near 90° at a long rod left o′ to the
+    // detail of the Coriolis component, so the main polygon began at an
+    // unlettered box (3.5). The polygon is read from its pole: each
+    // polygon panel letters it.
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion3, 51.3, 0.0, 90.83),
+        (FigureName::CoriolisInversion3, 51.3, 0.0, 269.76),
+        (FigureName::CoriolisInversion3, 3.96, -2.39, 90.75),
+        (FigureName::CoriolisInversion3, 1.05, 0.0, 269.2),
+        (FigureName::CoriolisInversion3, 3.36, 1.78, 90.06),
+        (FigureName::CoriolisInversion2, 38.5, 0.0, 90.6),
+        (FigureName::CoriolisInversion2, 1.5, 0.0, 60.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        // The acceleration polygon's panel, up to the next panel: its
+        // letters, o′ written "oʹ" alone or with a point it coincides with.
+        let start = svg
+            .find("id=\"panel-acceleration-polygon\"")
+            .unwrap_or_else(|| panic!("no acceleration polygon"));
+        let rest = &svg[start + 10..];
+        let end = rest.find("id=\"panel-").unwrap_or(rest.len());
+        let panel = &rest[..end];
+        assert!(
+            panel.contains(">oʹ<") || panel.contains(">oʹ,") || panel.contains(", oʹ<"),
+            "{name:?} l = {rod}, e = {offset}, {deg}°: the acceleration polygon without o′"
+        );
+    }
+}

@@ -19,6 +19,16 @@ use crate::scene::{Canvas, Marker};
 /// finds no room.
 pub(super) const CRANK_LEAST: f64 = 40.0;
 
+/// The page length under which inversion 2's crank CB, the fixed link,
+/// gets the same detail: drawn whole by its bearings it reads down to
+/// here (its pins, 4.2 units in radius, a few units of link between;
+/// the default engine, a rod of three cranks, draws it 39 units), but at
+/// a rod of thirty cranks it is four units long, C's and B's pins touch,
+/// link a is not to be seen and B's letter may stand on the wrong side
+/// of C's. A detail beside a mechanism it need not enlarge takes the
+/// room of it (a rod of six cranks on a page 120 mm wide).
+pub(super) const FIXED_CRANK_LEAST: f64 = 15.0;
+
 /// The crank detail's reach about B, in cranks: the crank's circle and
 /// room for its letters (a panel 170 units tall draws the crank at least
 /// 170 / 3 / (4/3), about 42 units, the finest steps being 4/3 apart).
@@ -26,8 +36,10 @@ pub(super) const CRANK_REACH: f64 = 1.5;
 
 /// The mechanism panel: the chain at the pose in the fixed link's frame,
 /// its pins lettered C, B, A and the driver's sense of turning; where
-/// inversion 3's crank is drawn shorter than [`CRANK_LEAST`], a detail of
-/// the region about it beside the panel (boxed there), which carries ω.
+/// inversion 3's crank is drawn shorter than [`CRANK_LEAST`] (inversion
+/// 2's than [`FIXED_CRANK_LEAST`]), a detail of the region about it
+/// beside the panel (boxed there), which carries ω and letters the pins
+/// inside the box.
 pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, Option<Plot>)> {
     let m = ctx.mechanism;
     let frame = super::super::inversions::links_frame(&m, pose);
@@ -43,8 +55,11 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let rect = PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
     let whole = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
     let scale = whole.map().scale();
-    // Inversion 2's crank is the fixed link, drawn whole by its bearings.
-    if m.crank() * scale >= CRANK_LEAST || pose.inversion() != Inversion::Rod {
+    let least = match pose.inversion() {
+        Inversion::Rod => CRANK_LEAST,
+        _ => FIXED_CRANK_LEAST,
+    };
+    if m.crank() * scale >= least {
         return Ok((links_plot(ctx, pose, whole, None)?, None));
     }
     let side = tall;
@@ -107,8 +122,12 @@ pub(super) fn links_plot(
         pose.place(engine.b()),
         pose.place(engine.a()),
     );
+    // The whole mechanism leaves the pins inside the region a detail
+    // enlarges to it: their letters, among pins a few units apart, would
+    // stand by the wrong pin (B's left of C's at l = 35 r, 180°).
+    let held = |at| whole && region.is_some_and(|r: Frame| r.contains(at));
     for (key, at) in [("C", c), ("B", b), ("A", a)] {
-        if whole || s.contains(at) {
+        if (whole || s.contains(at)) && !held(at) {
             s.lettered(key, at, &format!("*{key}*"), Marker::Pin, c);
         }
     }

@@ -11,7 +11,7 @@ use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Hue, PageRect, RIGHT_ANGLE, RichText, Role, Shape};
 use crate::geom::{Frame, Point, Vector};
-use crate::scene::{COINCIDE, Canvas};
+use crate::scene::{COINCIDE, Canvas, Marker};
 use serde_json::Value;
 
 /// Room kept about a polygon for its letters and its bar, in shares of
@@ -214,12 +214,36 @@ pub(in crate::catalogue::builders) fn mark_window(s: &mut Canvas, name: &str, fr
 
 /// Letters the polygon's `points`, those that coincide on the page
 /// (within [`COINCIDE`]) by one letter, those in the region left to a
-/// detail (`quiet`) not here.
+/// detail (`quiet`) not here but the pole (the first point): the polygon
+/// is read from it, and a box with no letter at its start leaves the
+/// reader to guess where the polygon begins (inversion 3 near 90° at a
+/// long rod, where o′ and k lie within a few units of each other).
 pub(super) fn letter(s: &mut Canvas, points: &[Lettered], quiet: Option<Frame>) {
     let points: Vec<(&str, &str, Point)> = (points.iter())
         .map(|(id, markup, at)| (*id, *markup, Point::from(*at)))
         .collect();
-    s.letter_crowded(&points, COINCIDE, Point::origin(), quiet);
+    let Some((first, rest)) = points.split_first() else {
+        return;
+    };
+    let held = |p: Point| quiet.is_some_and(|f| f.contains(p));
+    if !held(first.2) {
+        s.letter_crowded(&points, COINCIDE, Point::origin(), quiet);
+        return;
+    }
+    // The pole held: lettered with the points outside the region, last,
+    // so that one of them within reach names it too ("a′_d, o′"), else
+    // by its own letter; the others held recorded for the detail.
+    let mut shown: Vec<(&str, &str, Point)> = rest.iter().copied().filter(|p| !held(p.2)).collect();
+    shown.push(*first);
+    for p in rest.iter().filter(|p| held(p.2)) {
+        s.record(p.0, p.2);
+    }
+    let joined = (rest.iter())
+        .any(|p| !held(p.2) && s.contains(p.2) && s.page((p.2 - first.2).norm()) < COINCIDE);
+    s.letter_crowded(&shown, COINCIDE, Point::origin(), None);
+    if !joined {
+        s.lettered(first.0, first.2, first.1, Marker::Dot, first.2);
+    }
 }
 
 /// The detail of a polygon: the region of `window` enlarged in `rect`,
