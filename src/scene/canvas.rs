@@ -404,6 +404,9 @@ impl Canvas {
     ) {
         if self.contains(p) {
             self.mark(name, p, marker, RichText::parse(markup));
+        } else if !self.edge_arrows {
+            // A detail's edge is not the drawing's: its links run on
+            // beyond it, and an arrow there would lie on one.
         } else if let Some((_, edge)) = self.frame.clip_segment(from, p)
             && (p - from).norm() > 0.0
         {

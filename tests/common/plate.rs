@@ -383,8 +383,7 @@ impl Plate {
             });
             return Place::Polygon(self.polygons.len() - 1);
         }
-        // A chain figure's detail of its crank is `panel-mechanism-detail`.
-        let detail = id.starts_with("panel-detail") || id == "panel-mechanism-detail";
+        let detail = id.starts_with("panel-detail");
         if id != "panel-mechanism" && !detail {
             return Place::Diagram;
         }

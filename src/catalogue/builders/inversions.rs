@@ -18,7 +18,7 @@ use crate::chain::{ChainCentres, Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Figure, RichText, Role, Shape, TextSize};
+use crate::figure::{Figure, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
@@ -314,9 +314,54 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
 /// crank of the others hides in its pins' circles.
 const CRANK_LEAST: f64 = 40.0;
 
-/// The crank detail's reach about the crank's middle, in cranks: its two
+/// A crank detail's reach about its centre, in cranks: the crank's two
 /// pins, the path about them and room for their letters.
 const CRANK_REACH: f64 = 1.5;
+
+/// A crank's enlarged detail in the panel `rect` (its caption included),
+/// for a main view at `scale` page units per world unit: the world region
+/// about `centre` it shows, [`CRANK_REACH`] cranks each way across its
+/// shorter side at a round magnification (at least 1), and its plot,
+/// captioned with the magnification; its panel `panel-{name}`.
+pub(super) fn crank_window(
+    ctx: &Ctx,
+    name: &str,
+    centre: Point,
+    rect: crate::figure::PageRect,
+    scale: f64,
+) -> Result<(Frame, Plot)> {
+    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
+    let wanted = w.min(h) / (2.0 * CRANK_REACH * ctx.mechanism.crank()) / scale;
+    let steps = super::coriolis::FINE_STEPS;
+    let magnification = super::coriolis::round_below(wanted, &steps).max(1.0);
+    let half = Vector::new(w, h) * (0.5 / (magnification * scale));
+    let region = Frame::new(centre - half, centre + half);
+    let caption = format!("the boxed region enlarged ×{}", short(magnification));
+    let mut plot =
+        Plot::world(name, rect, &region, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
+    // Its border, half a unit inside the area the detail is clipped to,
+    // so that the links cut there end on a line, not in the air.
+    let map = *plot.map();
+    let inside = BORDER_INSET / map.scale();
+    let seen = map.world_frame(&plot.area());
+    let (lo, hi) = (
+        seen.min() + Vector::new(inside, inside),
+        seen.max() - Vector::new(inside, inside),
+    );
+    plot.push(Item::new(
+        format!("{name}-border"),
+        Role::Frame,
+        Shape::Polyline {
+            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
+            closed: true,
+        },
+    ));
+    Ok((region, plot))
+}
+
+/// How far inside its clipped area a crank detail's border is drawn,
+/// page units: half its line's width, so that it is drawn whole.
+const BORDER_INSET: f64 = 0.5;
 
 /// The crank detail's size on the page, page units (its caption
 /// included in the height).
@@ -340,33 +385,15 @@ fn crank_detail(
     if m.crank() * scale >= CRANK_LEAST {
         return Ok(None);
     }
-    let (w, h) = (
-        CRANK_DETAIL.0.min(rect.width),
-        CRANK_DETAIL.1 - crate::diagram::CAPTION,
-    );
-    let wanted = w.min(h) / (2.0 * CRANK_REACH * m.crank()) / scale;
-    let steps = super::coriolis::FINE_STEPS;
-    let magnification = super::coriolis::round_below(wanted, &steps).max(1.0);
-    let q = parts(&m, pose);
-    let half = Vector::new(w, h) * (0.5 / (magnification * scale));
-    let middle = mid(q.c, q.b);
-    let region = Frame::new(middle - half, middle + half);
+    let w = CRANK_DETAIL.0.min(rect.width);
     let detail_rect = crate::figure::PageRect::new(
         rect.x + 0.5 * (rect.width - w),
         rect.y + rect.height + DETAIL_GAP,
         w,
         CRANK_DETAIL.1,
     );
-    let caption = format!("the boxed region enlarged ×{}", short(magnification));
-    let mut plot = Plot::world(
-        "mechanism-detail",
-        detail_rect,
-        &region,
-        false,
-        ctx.tolerance,
-        ctx.font,
-    )?
-    .with_caption(&caption);
+    let q = parts(&m, pose);
+    let (region, mut plot) = crank_window(ctx, "detail", mid(q.c, q.b), detail_rect, scale)?;
     let map = *plot.map();
     let block = super::chains::block_on_page(block_size(&m), map.scale());
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");

@@ -2,9 +2,10 @@
 //! link's frame, its pins lettered and the driver's ω, with an enlarged
 //! detail of the crank where it is drawn too short to read.
 
-use super::super::{Ctx, short};
+use super::super::Ctx;
+use super::super::inversions::crank_window;
 use super::panel::mark_window;
-use super::{FINE_STEPS, GAP, MARGIN, MECHANISM_HEIGHT, round_below};
+use super::{GAP, MARGIN, MECHANISM_HEIGHT};
 
 use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
@@ -28,11 +29,6 @@ pub(super) const CRANK_LEAST: f64 = 40.0;
 /// of C's. A detail beside a mechanism it need not enlarge takes the
 /// room of it (a rod of six cranks on a page 120 mm wide).
 pub(super) const FIXED_CRANK_LEAST: f64 = 15.0;
-
-/// The crank detail's reach about B, in cranks: the crank's circle and
-/// room for its letters (a panel 170 units tall draws the crank at least
-/// 170 / 3 / (4/3), about 42 units, the finest steps being 4/3 apart).
-pub(super) const CRANK_REACH: f64 = 1.5;
 
 /// The mechanism panel: the chain at the pose in the fixed link's frame,
 /// its pins lettered C, B, A and the driver's sense of turning; where
@@ -67,21 +63,8 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let plot = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
     let scale = plot.map().scale();
     let b = pose.place(pose.engine_pose().b());
-    let wanted = side / (2.0 * CRANK_REACH * m.crank()) / scale;
-    let magnification = round_below(wanted, &FINE_STEPS).max(1.0);
-    let half = Vector::new(side, tall) * (0.5 / (magnification * scale));
-    let region = Frame::new(b - half, b + half);
     let detail_rect = PageRect::new(MARGIN + width - side, MARGIN, side, rect.height);
-    let caption = format!("the boxed region enlarged ×{}", short(magnification));
-    let detail = Plot::world(
-        "mechanism-detail",
-        detail_rect,
-        &region,
-        false,
-        ctx.tolerance,
-        ctx.font,
-    )?
-    .with_caption(&caption);
+    let (region, detail) = crank_window(ctx, "mechanism-detail", b, detail_rect, scale)?;
     let detail = links_plot(ctx, pose, detail, Some(region))?;
     Ok((links_plot(ctx, pose, plot, Some(region))?, Some(detail)))
 }
@@ -156,8 +139,26 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
     if s.page(radius) < 10.0 {
         return;
     }
-    let start = arm.y.atan2(arm.x) + 0.35;
-    let sweep = 1.1 * omega.signum();
+    // The other link at B (the fixed rod BA of inversion 3, the fixed
+    // crank BC of inversion 2): the arc stands ahead of the driver in
+    // ω's sense, or behind it where ahead it would come within
+    // [`OMEGA_CLEAR`] of that link and behind it keeps farther off, so
+    // that its head never runs along the link (inversion 3 at 20° on a
+    // long rod).
+    let other = match pose.inversion() {
+        Inversion::Rod => pose.place(engine.a()),
+        _ => pose.place(engine.c()),
+    } - b;
+    let (heading, away) = (arm.y.atan2(arm.x), other.y.atan2(other.x));
+    let sweep = OMEGA_SWEEP * omega.signum();
+    let ahead = heading + OMEGA_GAP * omega.signum();
+    let behind = heading - OMEGA_GAP * omega.signum() - sweep;
+    let near = clearance(ahead, sweep, away);
+    let start = if near < OMEGA_CLEAR && clearance(behind, sweep, away) > near {
+        behind
+    } else {
+        ahead
+    };
     s.push(
         "arc-omega",
         Role::Force,
@@ -172,4 +173,32 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
     let mid = start + 0.5 * sweep;
     let at = b + Vector::new(mid.cos(), mid.sin()) * radius;
     s.label("label-omega", at, RichText::parse("ω"), TextSize::Letter);
+}
+
+/// The angle (radians) between the driver and the end of ω's arc nearer
+/// it.
+const OMEGA_GAP: f64 = 0.35;
+
+/// The least angle (radians) between ω's arc and the other link at its
+/// centre before the arc goes behind the driver instead.
+const OMEGA_CLEAR: f64 = 0.25;
+
+/// The angle (radians) ω's arc sweeps.
+const OMEGA_SWEEP: f64 = 1.1;
+
+/// How far (radians) the direction `dir` stands from the arc that
+/// sweeps `sweep` from `start`: 0 where the arc crosses it.
+fn clearance(start: f64, sweep: f64, dir: f64) -> f64 {
+    use std::f64::consts::TAU;
+    let (lo, width) = if sweep >= 0.0 {
+        (start, sweep)
+    } else {
+        (start + sweep, -sweep)
+    };
+    let past = (dir - lo).rem_euclid(TAU);
+    if past <= width {
+        0.0
+    } else {
+        (past - width).min(TAU - past)
+    }
 }
