@@ -38,7 +38,10 @@ pub(super) fn latex(text: &RichText) -> String {
         match p {
             Piece::Math(m) => {
                 out.push('$');
-                out.push_str(&m);
+                // A prime after a degree sign ("90°′", an angle of the
+                // second curve) would be a second superscript on one
+                // base, which LaTeX refuses: it primes an empty group.
+                out.push_str(&m.replace("^{\\circ}'", "^{\\circ}{}'"));
                 out.push('$');
             }
             Piece::Text(t) => out.push_str(&t),
@@ -203,6 +206,13 @@ mod tests {
 
     fn of(markup: &str) -> String {
         latex(&RichText::parse(markup))
+    }
+
+    #[test]
+    fn a_prime_after_a_degree_sign_primes_an_empty_group() {
+        // "90°′" as "90^{\circ}'" is a double superscript in LaTeX.
+        assert_eq!(of("90°′"), "90$^{\\circ}{}'$");
+        assert_eq!(of("*a*′"), "$a'$");
     }
 
     #[test]
