@@ -348,7 +348,7 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
     }
     let omega = args.speed.omega()?;
     let spec = AngleSpec::parse(&args.angle)?;
-    let engine = args.engine.engine(m, omega, &units)?;
+    let engine = args.engine.given().engine(m, omega, &units)?;
     let engine = engine.as_ref();
     let (torque, mu) = (args.load.torque, args.load.friction);
     let at = |d: f64| analyse(&m, d, omega, torque, mu, engine);

@@ -5,7 +5,7 @@ use clap::Args;
 use slider_crank::dynamics::{Engine, EnginePose, unbalanced_forces};
 use slider_crank::render::plain;
 use slider_crank::table::{GivenEngine, mass_unit};
-use slider_crank::{Angle, Error, Input, Result, SliderCrank, Units};
+use slider_crank::{Angle, Error, Input, Result, Units};
 use std::path::PathBuf;
 
 /// The engine's masses and gas force. Any of them adds the dynamics.
@@ -67,8 +67,10 @@ pub struct EngineArgs {
 }
 
 impl EngineArgs {
-    /// The fields of the one engine every request builds.
-    fn given(&self) -> GivenEngine<'_> {
+    /// The fields of the one engine every request builds; its
+    /// [`GivenEngine::engine`] is the engine asked for, `None` without a
+    /// dynamics flag.
+    pub fn given(&self) -> GivenEngine<'_> {
         GivenEngine {
             mass: self.mass,
             rod_mass: self.rod_mass,
@@ -83,16 +85,6 @@ impl EngineArgs {
     /// Whether any dynamics flag was given.
     pub fn is_set(&self) -> bool {
         self.given().is_given()
-    }
-
-    /// The engine asked for, `None` without a dynamics flag.
-    pub fn engine(
-        &self,
-        mechanism: SliderCrank,
-        omega: f64,
-        units: &Units,
-    ) -> Result<Option<Engine>> {
-        self.given().engine(mechanism, omega, units)
     }
 }
 
