@@ -275,10 +275,6 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let detail = crank_detail(ctx, &pose, &rect, map.scale())?;
     let canvas = Canvas::new(map, map.world_frame(&plot.area()));
     let region = detail.as_ref().map(|(region, _)| *region);
-    let canvas = match region {
-        Some(r) => canvas.quiet(r),
-        None => canvas,
-    };
     let mut d = Drawing::new(m, &pose, canvas, block).holding(region);
     let together = d.draw(&pose, &centres);
     if let Some((region, _)) = &detail {
@@ -482,6 +478,9 @@ impl Drawing {
     /// The same drawing leaving the pins, the crank's letter and the
     /// centres inside `region` to the detail that enlarges it.
     fn holding(mut self, region: Option<Frame>) -> Self {
+        if let Some(r) = region {
+            self.s = self.s.quiet(r);
+        }
         self.held = region;
         self
     }
