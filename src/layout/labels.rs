@@ -1,8 +1,9 @@
 //! Placing letters clear of lines and of each other: a search over
 //! positions around the anchor, scored against nearby segments and boxes.
 
+use super::line_leader::leader_to_line;
 use crate::figure::PageRect;
-use crate::geom::{Point, Vector, segment_distance};
+use crate::geom::{Point, Vector, crossing, segment_distance};
 use std::cell::RefCell;
 use std::ops::{ControlFlow, RangeInclusive};
 
@@ -702,6 +703,12 @@ pub(crate) struct Steer<'a> {
     /// The dimension lines a text naming a line keeps nearer its own
     /// line than, at a lesser cost ([`MISREAD`]) than another link's.
     pub dimensions: &'a [Segment],
+    /// The line a leader from the place runs to, the other links and the
+    /// dimension lines: a place nearer another link than its line, whose
+    /// leader ([`leader_to_line`]) would cross a link, a dimension line or
+    /// a box, or that stands too near the line to have one, costs
+    /// [`STRUCK`] more; `None` where no leader is drawn.
+    pub led: Option<(Segment, &'a [Segment], &'a [Segment])>,
 }
 
 /// How much nearer (page units) another point may be to a letter's box
@@ -721,7 +728,7 @@ const AMBIGUOUS: f64 = STRUCK;
 /// dimension line than its own line: half a struck letter's, so that any
 /// place nearer another link costs more (that one names the wrong link;
 /// this one reads as the dimension's value beside its own).
-const MISREAD: f64 = 0.5 * STRUCK;
+pub(crate) const MISREAD: f64 = 0.5 * STRUCK;
 
 /// Whether `b` stands nearer one of `others` than `anchor` by more than
 /// [`NEARER`], and by more than that and the share of `pair` the two
@@ -749,6 +756,12 @@ fn nearer_another_line(b: &Bounds, own: Segment, rivals: &[Segment]) -> bool {
     if !(BESIDE.0..=BESIDE.1).contains(&t) {
         return true;
     }
+    nearer_a_rival(b, own, rivals)
+}
+
+/// Whether `b` stands less than [`LINE_NEARER`] nearer the line `own`
+/// than one of the `rivals`, wherever along it.
+pub(crate) fn nearer_a_rival(b: &Bounds, own: Segment, rivals: &[Segment]) -> bool {
     let distance = |(p, q): (Point, Point)| {
         if b.holds(p) || b.holds(q) {
             return 0.0;
@@ -792,6 +805,7 @@ pub(crate) fn place_toward(
         pair,
         line,
         dimensions,
+        led,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
@@ -832,6 +846,18 @@ pub(crate) fn place_toward(
             cost += AMBIGUOUS;
         } else if line.is_some_and(|(own, _)| nearer_another_line(&b, own, dimensions)) {
             cost += MISREAD;
+        }
+        if let Some((own, links, dimensions)) = led {
+            // Led, it still stands nearer its own line than another link.
+            let crosses = |(from, to): (Point, Point)| {
+                (links.iter().chain(dimensions)).any(|&(p, q)| crossing(from, to, p, q).is_some())
+                    || obstacles.crosses_a_box(from, to, to)
+            };
+            let clear = !nearer_a_rival(&b, own, links)
+                && leader_to_line(&b, own).is_some_and(|l| !crosses(l));
+            if !clear {
+                cost += STRUCK;
+            }
         }
         if cost + penalty < best.0 {
             *best = (cost + penalty, cost, centre);

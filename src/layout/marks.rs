@@ -230,8 +230,11 @@ impl PanelLayout<'_> {
 /// vertex shared by several, the largest angle innermost at
 /// [`ANGLE_RADIUS`] and each smaller one [`ANGLE_STEP`] further out, so
 /// that two adjacent angles (Ng's β and φ at the crank pin) read as two,
-/// and the smaller, whose letter needs the room, gets the longer arc. As
-/// (page vertex, size of the sweep, radius).
+/// and the smaller, whose letter needs the room, gets the longer arc. An
+/// arc arrow about the same vertex (the crank torque T about O) has the
+/// marks beyond it, from [`ANGLE_STEP`] outside it: θ's arc inside T's,
+/// its letter outside both, could not be told from T's. As (page vertex,
+/// size of the sweep, radius).
 pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64, f64)> {
     let marks: Vec<(Point, f64)> = items
         .iter()
@@ -240,14 +243,28 @@ pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64
             _ => None,
         })
         .collect();
+    let arrows: Vec<(Point, f64)> = items
+        .iter()
+        .filter_map(|item| match &item.shape {
+            Shape::Arc {
+                centre,
+                radius,
+                arrow: true,
+                ..
+            } => Some((t.apply(*centre), radius * t.scale())),
+            _ => None,
+        })
+        .collect();
     marks
         .iter()
         .map(|&(c, sweep)| {
-            let larger = marks
-                .iter()
-                .filter(|(v, s)| (*v - c).norm() < 1.0 && *s > sweep)
-                .count();
-            (c, sweep, ANGLE_RADIUS + ANGLE_STEP * larger as f64)
+            let at = |v: &Point| (*v - c).norm() < 1.0;
+            let larger = marks.iter().filter(|(v, s)| at(v) && *s > sweep).count();
+            let least = (arrows.iter())
+                .filter(|(v, _)| at(v))
+                .map(|(_, r)| r + ANGLE_STEP)
+                .fold(ANGLE_RADIUS, f64::max);
+            (c, sweep, least + ANGLE_STEP * larger as f64)
         })
         .collect()
 }

@@ -20,6 +20,7 @@ mod cull;
 mod frame;
 mod hatching;
 mod labels;
+mod line_leader;
 mod lines;
 mod mark;
 mod marks;
@@ -440,7 +441,10 @@ impl PanelLayout<'_> {
             starts_italic(&p.text),
         );
         let leader = at.leader.map(|(a, b)| {
-            let id = p.id.replacen("label-", "leader-", 1);
+            let id = match p.id.strip_prefix("label-") {
+                Some(rest) => format!("leader-{rest}"),
+                None => format!("leader-{}", p.id),
+            };
             path(polyline_d(&[a, b], false), pen).tagged(id, "leader")
         });
         std::iter::once(text).chain(leader)
@@ -510,6 +514,7 @@ impl PanelLayout<'_> {
                             pair: p.size,
                             line: p.line.map(|own| (own, rivals.as_slice())),
                             dimensions: &self.dimensions,
+                            led: None,
                         },
                         &self.obstacles,
                         room,
@@ -559,6 +564,10 @@ impl PanelLayout<'_> {
                     }
                 }
                 let mut leader = None;
+                if let Some((led, line)) = self.line_leader(p, half, best.1, room) {
+                    best = led;
+                    leader = Some(line);
+                }
                 let framed = self.in_detail_frame(p);
                 if !p.names_itself() && self.points.contains(&p.anchor) && !framed && lasting(best)
                 {

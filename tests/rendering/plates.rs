@@ -1946,11 +1946,16 @@ fn closest(plate: &Plate, panel: &Panel, letters: &[&str]) -> f64 {
 /// The plate of `figure` for a crank of 1, `rod` and `offset`, at
 /// `degrees`.
 fn plate_at(figure: &str, rod: f64, offset: f64, degrees: f64) -> Plate {
+    Plate::read(&svg_at(figure, rod, offset, degrees))
+}
+
+/// The SVG of `figure` at a crank of 1, `rod`, `offset` and `degrees`.
+fn svg_at(figure: &str, rod: f64, offset: f64, degrees: f64) -> String {
     let mut options = FigureOptions::default();
     options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
     options.angle = Some(Angle::deg(degrees));
     let f = FigureName::from_name(figure).unwrap().figure(&options);
-    Plate::read(&to_svg(&f.unwrap()))
+    to_svg(&f.unwrap())
 }
 
 /// Whether `panel` draws a stroke with the id `id`.
@@ -2614,7 +2619,10 @@ fn a_crank_s_detail_at_a_short_rod_s_inner_dead_centre_holds_the_whole_block() {
     // angles, whose detail came only with a small crank). Ng's Fig. 1
     // at l = 1.05 r had one, its frame a few units inside the block. Both
     // now draw the crank's detail with the whole block in it, its frame
-    // round the block on the main view.
+    // round the block on the main view. Held 14 units clear there, the
+    // detail was larger than the main view and mostly empty paper: the
+    // frame now stands 6 units clear of the block on the main view and
+    // the detail's longer side is at most 330 units (it was 356 to 380).
     for (figure, rod) in [
         ("fig-62-displacement", 1.05),
         ("fig-62-displacement", 1.08),
@@ -2627,14 +2635,16 @@ fn a_crank_s_detail_at_a_short_rod_s_inner_dead_centre_holds_the_whole_block() {
         let frame = stroke_box(main, "detail-frame");
         let block = stroke_box(main, "block-slider");
         assert!(
-            frame.x0 < block.x0 - 10.0
-                && frame.y0 < block.y0 - 10.0
-                && frame.x1 > block.x1 + 10.0
-                && frame.y1 > block.y1 + 10.0,
+            frame.x0 < block.x0 - 5.0
+                && frame.y0 < block.y0 - 5.0
+                && frame.x1 > block.x1 + 5.0
+                && frame.y1 > block.y1 + 5.0,
             "{figure} at {rod}: frame {frame:?} does not hold the block {block:?}"
         );
         let inner = stroke_box(detail, "detail-block-slider");
         let border = stroke_box(main, "detail-border");
+        let side = (border.x1 - border.x0).max(border.y1 - border.y0);
+        assert!(side <= 330.0, "{figure} at {rod}: the detail {side} units");
         assert!(
             inner.x0 > border.x0
                 && inner.x1 < border.x1
@@ -2705,5 +2715,89 @@ fn a_long_rod_s_crank_in_the_inversions_is_enlarged_in_a_detail() {
         }
         let short = f(3.0);
         assert!(!short.contains("panel-detail"), "{figure} at l = 3 r");
+    }
+}
+
+#[test]
+fn a_rod_s_value_with_no_room_beside_it_is_led_to_the_rod_not_set_on_a_dimension() {
+    // Fig. 62 at l = 1.03 r, 269.67°: the rod near upright between the
+    // crank and x's extension line, every place beside it nearer the
+    // crank or x's dimension line. "l = 1.03r" stood on x's dimension
+    // line between its arrowheads, read as x's value. It now stands clear
+    // with a leader to the rod, as a draughtsman names a part with no
+    // room beside it.
+    let plate = plate_at("fig-62-displacement", 1.03, 0.0, 269.67);
+    let main = &plate.panels[0];
+    let label = (main.labels.iter().find(|l| l.id == "value-l")).expect("no value-l");
+    let stroke =
+        |id: &str| (main.strokes.iter().find(|s| s.id == id)).unwrap_or_else(|| panic!("no {id}"));
+    let near = |s: &Stroke, p: Pt| {
+        (s.segs.iter())
+            .map(|g| g.distance_to(p))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let distance = |s: &Stroke| {
+        (s.segs.iter())
+            .map(|g| label.rect.distance_to_seg(g))
+            .fold(f64::INFINITY, f64::min)
+    };
+    let (rod, x) = (stroke("link-rod"), stroke("dimension-x"));
+    let led = main.strokes.iter().find(|s| s.id == "leader-value-l");
+    let by_rod = distance(rod) + 1.0 < distance(x);
+    let led_to_rod = led.is_some_and(|l| {
+        let (first, last) = (l.segs[0].0, l.segs[l.segs.len() - 1].1);
+        label.rect.distance_to(first) <= 1.5 && near(rod, last) <= 1.0
+    });
+    assert!(
+        by_rod || led_to_rod,
+        "value-l {:.1} from the rod, {:.1} from x's dimension line, no leader to the rod",
+        distance(rod),
+        distance(x)
+    );
+}
+
+/// The first point of the first path drawn at or after the element `id`
+/// in `svg` (its `d`'s `M x y`).
+fn first_point_after(svg: &str, id: &str) -> (f64, f64) {
+    let at = svg
+        .find(&format!(r#"id="{id}""#))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let rest = &svg[svg[..at].rfind('<').unwrap_or(at)..];
+    let d = rest
+        .find(" d=\"M")
+        .unwrap_or_else(|| panic!("no path at {id}"))
+        + 5;
+    let n: Vec<f64> = rest[d..]
+        .split([' ', 'C', 'L'])
+        .filter_map(|t| t.parse().ok())
+        .take(2)
+        .collect();
+    (n[0], n[1])
+}
+
+#[test]
+fn an_angle_at_the_crank_centre_is_marked_outside_the_torque_s_arc() {
+    // Ng's Fig. 1 on long rods at 180°: θ's arc about O lay inside T's
+    // arc arrow, its letter outside both, and which arc was θ could not
+    // be told. The angle's arc now runs outside the torque's.
+    for rod in [42.6, 58.4] {
+        let svg = svg_at("ng-fig-1-torque", rod, 0.0, 180.0);
+        let o = (
+            common::attr(&svg, "detail-point-O", "cx")
+                .unwrap()
+                .parse::<f64>()
+                .unwrap(),
+            common::attr(&svg, "detail-point-O", "cy")
+                .unwrap()
+                .parse::<f64>()
+                .unwrap(),
+        );
+        let from_o = |p: (f64, f64)| (p.0 - o.0).hypot(p.1 - o.1);
+        let theta = from_o(first_point_after(&svg, "detail-angle-theta"));
+        let torque = from_o(first_point_after(&svg, "detail-torque-T"));
+        assert!(
+            theta >= torque + 8.0,
+            "l = {rod} r: θ's arc {theta:.1} from O, T's {torque:.1}"
+        );
     }
 }

@@ -159,19 +159,30 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
     })
 }
 
-/// Room (page units) a detail's region keeps about the slider block it
-/// would otherwise lie inside ([`clear_of_block`]): the frame's least
-/// distance from a guide, so that its edges stand clear of the guides'
-/// hatching without being moved off them (which would pad the detail
-/// with empty paper).
+/// Room (page units in the detail) a detail's region keeps about the
+/// slider block it would otherwise lie inside ([`clear_of_block`]): the
+/// frame's least distance from a guide, so that its edges stand clear of
+/// the guides' hatching without being moved off them (which would pad
+/// the detail with empty paper).
 const ABOUT_BLOCK: f64 = 14.0;
+
+/// The least room (page units on the main view) about the block that a
+/// crank's detail grown to it keeps: its frame there is told from the
+/// block's outline.
+const ABOUT_BLOCK_MAIN: f64 = 6.0;
+
+/// The larger side, page units, a crank's detail grown to the block
+/// keeps within (the magnification step at or below it): held within
+/// the 320 of a crowd, a short rod's block at its inner dead centre
+/// filled a frame larger than the main view, mostly empty paper.
+const BLOCK_EXTENT: f64 = 200.0;
 
 /// `d`, a crank's detail, or, where its region's middle lies inside the
 /// slider block on the main view at `scale` and the region does not hold
 /// the whole block (a short rod's inner dead centre: A and C within the
 /// block's outline), the region grown to the block's outline and
 /// [`ABOUT_BLOCK`] about it, magnified no more than holds it within
-/// [`CROWD_EXTENT`]. Its frame was a few units inside the block, hidden
+/// [`BLOCK_EXTENT`]. Its frame was a few units inside the block, hidden
 /// by the pins, the block's outline read as the frame; now the frame
 /// stands round the block and the detail draws the block whole. `d` as
 /// it is where no step fits `max_width`. A construction's detail keeps
@@ -188,16 +199,23 @@ fn clear_of_block(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Deta
     if !inside || holds || !(scale > 0.0 && scale.is_finite()) {
         return d;
     }
-    let room = Vector::new(ABOUT_BLOCK, ABOUT_BLOCK) / scale;
-    let (lo, hi) = (lo.inf(&blo) - room, hi.sup(&bhi) + room);
+    let (lo, hi) = (lo.inf(&blo), hi.sup(&bhi));
     let size = (hi - lo) * scale;
-    let wanted = d.magnification.min(CROWD_EXTENT / size.max());
-    match magnify(wanted, size.x, max_width) {
-        Some(magnification) => Detail {
-            region: Frame::new(lo, hi),
-            magnification,
-            ..d
-        },
+    let most = d.magnification.min(BLOCK_EXTENT / size.max());
+    // The step at or below the most (the block's detail is large).
+    let wanted = steps().rev().find(|m| *m <= most).unwrap_or(most);
+    // The room about the block is the detail's, the frame standing
+    // ABOUT_BLOCK from the guides in the detail whatever it enlarges.
+    match magnify(wanted, size.x + 2.0 * ABOUT_BLOCK / wanted, max_width) {
+        Some(magnification) => {
+            let room = (ABOUT_BLOCK / magnification).max(ABOUT_BLOCK_MAIN) / scale;
+            let room = Vector::new(room, room);
+            Detail {
+                region: Frame::new(lo - room, hi + room),
+                magnification,
+                ..d
+            }
+        }
         None => d,
     }
 }
