@@ -1367,3 +1367,93 @@ fn the_balance_notes_keep_each_list_on_one_line() {
         }
     }
 }
+
+/// The crank-pin-load figures of the seventh review's engines that it
+/// found letters by the wrong dot at (the default, r = 1, l = 3.83,
+/// e = −1.63), on its four page widths: (what, SVG).
+fn seventh_review_load_figures() -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for (r, l, e) in [(0.5, 3.0, 0.0), (1.0, 3.83, -1.63)] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+            let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+            out.push((format!("r {r} l {l} e {e} on {width:?}"), svg));
+        }
+    }
+    out
+}
+
+/// The distance from the page point `p` to the box of the letter `id`:
+/// its width taken as half an em a character (about the serif digits'),
+/// middle-anchored, from its baseline up three quarters of an em.
+fn to_letter(svg: &str, id: &str, p: (f64, f64)) -> f64 {
+    let (x, y) = (num(svg, id, "x"), num(svg, id, "y"));
+    let em = num(svg, id, "font-size");
+    let half = 0.25 * em * text_content(svg, id).chars().count() as f64;
+    let dx = (x - half - p.0).max(p.0 - x - half).max(0.0);
+    let dy = (y - 0.75 * em - p.1).max(p.1 - y).max(0.0);
+    dx.hypot(dy)
+}
+
+#[test]
+fn the_crank_pin_loads_letters_stand_nearer_their_own_dot_than_any_other_and_the_pole() {
+    // The seventh review: at r = 1, l = 3.83, e = −1.63 "O" stood beside
+    // the dashed curve's 270° dot 13 px above the ×, and "270°′" against
+    // the ×: the reader took that dot for the pole (2.5); at the default,
+    // 0°′, 180°′ and 0° strung along the axis each had its letter between
+    // two dots. "O" stands nearer the × than any dot, and at the default
+    // each letter nearer its own dot than any other dot or the ×, by a
+    // unit (the ink's room); among the loops of the offset engine, where
+    // dots stand within an em of each other and of the ×, a letter may
+    // stand nearer another by the layout's 2 units and the share of an
+    // em the two are closer than it (the two read as a pair, lettered on
+    // either side), by no more.
+    let mut wrong = Vec::new();
+    for (case, svg) in seventh_review_load_figures() {
+        for panel in ["fixed", "relative"] {
+            let ((x0, x1), (y0, y1)) = page_extent(&svg, &format!("point-{panel}-pole-1"));
+            let pole = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            let marks = load_marks(&svg, panel);
+            let mut points: Vec<(String, (f64, f64))> = marks.clone();
+            points.push((format!("point-{panel}-pole"), pole));
+            let key = format!("id=\"label-{panel}-");
+            let letters: Vec<String> = svg
+                .match_indices(&key)
+                .map(|(i, _)| {
+                    let s = &svg[i + 4..];
+                    s[..s.find('"').unwrap()].to_string()
+                })
+                .collect();
+            assert!(letters.len() >= 5, "{case}: {letters:?}");
+            for id in letters {
+                let own_id = id.replacen("label-", "point-", 1);
+                let own = points.iter().find(|m| m.0 == own_id).unwrap().1;
+                let mine = to_letter(&svg, &id, own);
+                for (other, q) in &points {
+                    if *other == own_id || (q.0 - own.0).hypot(q.1 - own.1) < 4.0 {
+                        continue;
+                    }
+                    let theirs = to_letter(&svg, &id, *q);
+                    let em = num(&svg, &id, "font-size");
+                    let pair = (em - (q.0 - own.0).hypot(q.1 - own.1)).max(0.0);
+                    let slack = if case.starts_with("r 0.5") || id.ends_with("-pole") {
+                        1.0
+                    } else {
+                        2.0 + pair
+                    };
+                    if theirs < mine - slack {
+                        wrong.push(format!(
+                            "{case}: {id} ({}) stands {theirs:.1} from {other}, {mine:.1} from its own",
+                            text_content(&svg, &id)
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
