@@ -1457,3 +1457,89 @@ fn the_crank_pin_loads_letters_stand_nearer_their_own_dot_than_any_other_and_the
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+/// The turning-moment figures of the seventh review's engines (r = 1,
+/// l = 1.05, 1.06, 1.07, 1.09) and the default, on its four page widths:
+/// (what, SVG).
+fn seventh_review_turning_figures() -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for (r, l) in [
+        (0.5, 3.0),
+        (1.0, 1.05),
+        (1.0, 1.06),
+        (1.0, 1.07),
+        (1.0, 1.09),
+    ] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            out.push((format!("r {r} l {l} on {width:?}"), svg));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_turning_moment_stays_off_its_frame_and_letters_every_area_alike() {
+    // The seventh review: at l = 1.07 r the trough at 274° lay on the
+    // axis's end at −20000, as if cut off (3.5); "a₂" went without its
+    // value beside "a₄ = +9517", and the bare "a₁" stood on the curve's
+    // dip at 25°. The torque keeps 3 units inside its axis's ends; every
+    // area is lettered alike, by its letter (its value in the notes),
+    // and no letter's ink meets the curve.
+    for (case, svg) in seventh_review_turning_figures() {
+        let axis = path_numbers(&svg, "turning-moment-axis-y");
+        let (top, bottom) = axis
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        let curve = path_numbers(&svg, "curve-torque");
+        let (high, low) = curve
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        assert!(
+            high >= top + 3.0 && low <= bottom - 3.0,
+            "{case}: the torque from {high:.1} to {low:.1}, its axis {top:.1} to {bottom:.1}"
+        );
+        let notes = read_text(&svg);
+        for k in 1.. {
+            let id = format!("label-lobe-{k}");
+            if !svg.contains(&format!("id=\"{id}\"")) {
+                assert!(k > 2, "{case}: {k} letters");
+                break;
+            }
+            let said = text_content(&svg, &id);
+            assert!(!said.contains('='), "{case}: {id} reads {said}");
+            assert!(
+                notes.contains(&format!("{said} = ")),
+                "{case}: no value of {said} in the notes"
+            );
+            // The ink of a bare letter: its italic 0.45 em above the
+            // baseline, the subscript 0.3 em below, a width of 0.8 em.
+            let (x, y, em) = (
+                num(&svg, &id, "x"),
+                num(&svg, &id, "y"),
+                num(&svg, &id, "font-size"),
+            );
+            let (x0, x1, y0, y1) = (x - 0.4 * em, x + 0.4 * em, y - 0.45 * em, y + 0.3 * em);
+            for w in curve.windows(2) {
+                // Each piece of the path (ends and control points) as a
+                // straight step, checked at ten points along it.
+                for i in 0..=10 {
+                    let t = i as f64 / 10.0;
+                    let p = (
+                        w[0].0 + t * (w[1].0 - w[0].0),
+                        w[0].1 + t * (w[1].1 - w[0].1),
+                    );
+                    assert!(
+                        !(p.0 > x0 && p.0 < x1 && p.1 > y0 && p.1 < y1),
+                        "{case}: {id} ({said}) on the curve at {p:?}"
+                    );
+                }
+            }
+        }
+    }
+}
