@@ -948,19 +948,33 @@ fn the_balance_polygons_name_the_crank_angle_apart_from_the_pitch_and_letter_the
 }
 
 #[test]
-fn the_balance_polygons_say_that_an_offset_is_left_out_and_by_how_much() {
-    for (r, l, e) in [(1.0, 2.59, 1.29), (1.0, 2.16, 0.608), (1.0, 38.9, 0.0)] {
+fn the_balance_polygons_are_drawn_for_the_offset_and_say_by_how_much() {
+    // The seventh review: at r = 1, l = 2.7, e = 1.03 "the offset engine
+    // is drawn as if it were in line" (4), the offset only in the notes.
+    // Each side is drawn the in-line one's times |c_k| (n |c₂| for the
+    // secondary), turned by arg c_k, and the notes give both.
+    for (r, l, e) in [
+        (1.0, 2.59, 1.29),
+        (1.0, 2.16, 0.608),
+        (1.0, 2.7, 1.03),
+        (1.0, 38.9, 0.0),
+    ] {
         let mut o = FigureOptions::default();
         o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
-        let text = read_text(&to_svg(&FigureName::InlineBalance.figure(&o).unwrap()));
+        let svg = to_svg(&FigureName::InlineBalance.figure(&o).unwrap());
+        let text = read_text(&svg);
         // The notes' lines joined.
         let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
-        let said = text.find("is not in the polygons");
+        // The resultants in units of m r ω², not "R ÷ m r ω²" (the
+        // review: "odd").
+        assert!(text.contains("Resultants R in units of m rω2"), "{text}");
+        assert!(!text.contains('÷'), "{text}");
+        let said = text.find("the polygons are drawn for it");
         if e == 0.0 {
             assert!(said.is_none(), "{text}");
             continue;
         }
-        said.expect("the offset left out, said");
+        said.expect("the offset drawn, said");
         let note = &text[text.find("The offset").unwrap()..];
         // The first and second harmonics of −x_A″/r by a sum of 2000
         // samples of a turn, against the notes' factors (four figures):
@@ -986,12 +1000,38 @@ fn the_balance_polygons_say_that_an_offset_is_left_out_and_by_how_much() {
         let (c1, p1) = harmonic(1.0);
         let (c2, p2) = harmonic(2.0);
         assert!((numbers("e = ")[0] - e).abs() < 1e-9, "{note}");
-        let factors = numbers("here the primary");
+        let factors = numbers("the primary sides");
         assert!(factors.len() >= 4, "{note}");
         for (k, (got, want)) in factors.iter().zip([c1, p1, c2 * l / r, p2]).enumerate() {
             assert!(
                 (got - want).abs() <= 6e-4 * want.abs().max(1e-3),
                 "value {k}: {got} for {want} in {note}"
+            );
+        }
+        // The primary couple of cranks at 120° (√3 in line) times |c₁|.
+        let couple = first_number(&text[text.find("primary couple ").unwrap()..]);
+        assert!(
+            (couple - 3f64.sqrt() * c1).abs() < 6e-4 * couple,
+            "{couple} for {}",
+            3f64.sqrt() * c1
+        );
+        // The first cylinder's sides (its crank at 0°, its plane −1):
+        // the primary force c₁ (cos 0, sin 0) turned, the secondary
+        // c₂ likewise, world units of m r ω² (a couple's times −1).
+        for (name, c, p, plane) in [
+            ("primary-force", c1, p1, 1.0),
+            ("primary-couple", c1, p1, -1.0),
+            ("secondary-force", c2, p2, 1.0),
+            ("secondary-couple", c2, p2, -1.0),
+        ] {
+            let side = world_arrow(&svg, &format!("panel-{name}"), &format!("force-{name}-1"));
+            let want = (
+                plane * c * p.to_radians().cos(),
+                plane * c * p.to_radians().sin(),
+            );
+            assert!(
+                (side.0 - want.0).abs() < 3e-3 * c && (side.1 - want.1).abs() < 3e-3 * c,
+                "{name} at l {l}, e {e}: {side:?} for {want:?}"
             );
         }
     }
@@ -1540,6 +1580,51 @@ fn the_turning_moment_stays_off_its_frame_and_letters_every_area_alike() {
                     );
                 }
             }
+        }
+    }
+}
+
+#[test]
+fn the_balance_captions_stand_level_and_close_under_their_polygons() {
+    // The seventh review: "large empty gaps between the drawings and
+    // their captions, and the captions of (c) and (d) do not line up".
+    // At the default, the two captions of a row are one line each at one
+    // height, and each stands within two ems and a half (the caption's
+    // band) below the lowest point of its polygon.
+    let svg = to_svg(
+        &FigureName::InlineBalance
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    let caption_y = |name: &str| {
+        assert!(
+            !svg.contains(&format!("id=\"{name}-caption-2\"")),
+            "{name}: a caption of two lines"
+        );
+        num(&svg, &format!("{name}-caption"), "y")
+    };
+    for (left, right) in [
+        ("primary-force", "primary-couple"),
+        ("secondary-force", "secondary-couple"),
+    ] {
+        let (a, b) = (caption_y(left), caption_y(right));
+        assert!((a - b).abs() < 0.01, "{left} at {a}, {right} at {b}");
+        for name in [left, right] {
+            let em = num(&svg, &format!("{name}-caption"), "font-size");
+            let lowest = (1..=3)
+                .map(|k| format!("force-{name}-{k}"))
+                .chain([format!("resultant-{name}")])
+                .filter(|id| svg.contains(&format!("id=\"{id}\"")))
+                .map(|id| {
+                    let (tail, tip) = arrow(&svg, &id);
+                    tail.1.max(tip.1)
+                })
+                .fold(f64::MIN, f64::max);
+            let gap = caption_y(name) - em - lowest;
+            assert!(
+                gap <= 2.5 * em,
+                "{name}: {gap:.1} between the polygon and its caption"
+            );
         }
     }
 }
