@@ -55,6 +55,9 @@ impl PanelLayout<'_> {
         }
         let r = MARKER_RADIUS;
         self.obstacles.boxed(Bounds::around(c, Vector::new(r, r)));
+        // A point a letter may name (a polar diagram's pole, lettered O):
+        // another point's letter does not stand nearer it than its own.
+        self.points.push(c);
         let pen = Pen {
             width: 1.1,
             dash: None,

@@ -948,19 +948,33 @@ fn the_balance_polygons_name_the_crank_angle_apart_from_the_pitch_and_letter_the
 }
 
 #[test]
-fn the_balance_polygons_say_that_an_offset_is_left_out_and_by_how_much() {
-    for (r, l, e) in [(1.0, 2.59, 1.29), (1.0, 2.16, 0.608), (1.0, 38.9, 0.0)] {
+fn the_balance_polygons_are_drawn_for_the_offset_and_say_by_how_much() {
+    // The seventh review: at r = 1, l = 2.7, e = 1.03 "the offset engine
+    // is drawn as if it were in line" (4), the offset only in the notes.
+    // Each side is drawn the in-line one's times |c_k| (n |c₂| for the
+    // secondary), turned by arg c_k, and the notes give both.
+    for (r, l, e) in [
+        (1.0, 2.59, 1.29),
+        (1.0, 2.16, 0.608),
+        (1.0, 2.7, 1.03),
+        (1.0, 38.9, 0.0),
+    ] {
         let mut o = FigureOptions::default();
         o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
-        let text = read_text(&to_svg(&FigureName::InlineBalance.figure(&o).unwrap()));
+        let svg = to_svg(&FigureName::InlineBalance.figure(&o).unwrap());
+        let text = read_text(&svg);
         // The notes' lines joined.
         let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
-        let said = text.find("is not in the polygons");
+        // The resultants in units of m r ω², not "R ÷ m r ω²" (the
+        // review: "odd").
+        assert!(text.contains("Resultants R in units of m rω2"), "{text}");
+        assert!(!text.contains('÷'), "{text}");
+        let said = text.find("the polygons are drawn for it");
         if e == 0.0 {
             assert!(said.is_none(), "{text}");
             continue;
         }
-        said.expect("the offset left out, said");
+        said.expect("the offset drawn, said");
         let note = &text[text.find("The offset").unwrap()..];
         // The first and second harmonics of −x_A″/r by a sum of 2000
         // samples of a turn, against the notes' factors (four figures):
@@ -986,12 +1000,38 @@ fn the_balance_polygons_say_that_an_offset_is_left_out_and_by_how_much() {
         let (c1, p1) = harmonic(1.0);
         let (c2, p2) = harmonic(2.0);
         assert!((numbers("e = ")[0] - e).abs() < 1e-9, "{note}");
-        let factors = numbers("here the primary");
+        let factors = numbers("the primary sides");
         assert!(factors.len() >= 4, "{note}");
         for (k, (got, want)) in factors.iter().zip([c1, p1, c2 * l / r, p2]).enumerate() {
             assert!(
                 (got - want).abs() <= 6e-4 * want.abs().max(1e-3),
                 "value {k}: {got} for {want} in {note}"
+            );
+        }
+        // The primary couple of cranks at 120° (√3 in line) times |c₁|.
+        let couple = first_number(&text[text.find("primary couple ").unwrap()..]);
+        assert!(
+            (couple - 3f64.sqrt() * c1).abs() < 6e-4 * couple,
+            "{couple} for {}",
+            3f64.sqrt() * c1
+        );
+        // The first cylinder's sides (its crank at 0°, its plane −1):
+        // the primary force c₁ (cos 0, sin 0) turned, the secondary
+        // c₂ likewise, world units of m r ω² (a couple's times −1).
+        for (name, c, p, plane) in [
+            ("primary-force", c1, p1, 1.0),
+            ("primary-couple", c1, p1, -1.0),
+            ("secondary-force", c2, p2, 1.0),
+            ("secondary-couple", c2, p2, -1.0),
+        ] {
+            let side = world_arrow(&svg, &format!("panel-{name}"), &format!("force-{name}-1"));
+            let want = (
+                plane * c * p.to_radians().cos(),
+                plane * c * p.to_radians().sin(),
+            );
+            assert!(
+                (side.0 - want.0).abs() < 3e-3 * c && (side.1 - want.1).abs() < 3e-3 * c,
+                "{name} at l {l}, e {e}: {side:?} for {want:?}"
             );
         }
     }
@@ -1364,6 +1404,227 @@ fn the_balance_notes_keep_each_list_on_one_line() {
                     pair[1]
                 );
             }
+        }
+    }
+}
+
+/// The crank-pin-load figures of the seventh review's engines that it
+/// found letters by the wrong dot at (the default, r = 1, l = 3.83,
+/// e = −1.63), on its four page widths: (what, SVG).
+fn seventh_review_load_figures() -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for (r, l, e) in [(0.5, 3.0, 0.0), (1.0, 3.83, -1.63)] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+            let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+            out.push((format!("r {r} l {l} e {e} on {width:?}"), svg));
+        }
+    }
+    out
+}
+
+/// The distance from the page point `p` to the box of the letter `id`:
+/// its width taken as half an em a character (about the serif digits'),
+/// middle-anchored, from its baseline up three quarters of an em.
+fn to_letter(svg: &str, id: &str, p: (f64, f64)) -> f64 {
+    let (x, y) = (num(svg, id, "x"), num(svg, id, "y"));
+    let em = num(svg, id, "font-size");
+    let half = 0.25 * em * text_content(svg, id).chars().count() as f64;
+    let dx = (x - half - p.0).max(p.0 - x - half).max(0.0);
+    let dy = (y - 0.75 * em - p.1).max(p.1 - y).max(0.0);
+    dx.hypot(dy)
+}
+
+#[test]
+fn the_crank_pin_loads_letters_stand_nearer_their_own_dot_than_any_other_and_the_pole() {
+    // The seventh review: at r = 1, l = 3.83, e = −1.63 "O" stood beside
+    // the dashed curve's 270° dot 13 px above the ×, and "270°′" against
+    // the ×: the reader took that dot for the pole (2.5); at the default,
+    // 0°′, 180°′ and 0° strung along the axis each had its letter between
+    // two dots. "O" stands nearer the × than any dot, and at the default
+    // each letter nearer its own dot than any other dot or the ×, by a
+    // unit (the ink's room); among the loops of the offset engine, where
+    // dots stand within an em of each other and of the ×, a letter may
+    // stand nearer another by the layout's 2 units and the share of an
+    // em the two are closer than it (the two read as a pair, lettered on
+    // either side), by no more.
+    let mut wrong = Vec::new();
+    for (case, svg) in seventh_review_load_figures() {
+        for panel in ["fixed", "relative"] {
+            let ((x0, x1), (y0, y1)) = page_extent(&svg, &format!("point-{panel}-pole-1"));
+            let pole = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            let marks = load_marks(&svg, panel);
+            let mut points: Vec<(String, (f64, f64))> = marks.clone();
+            points.push((format!("point-{panel}-pole"), pole));
+            let key = format!("id=\"label-{panel}-");
+            let letters: Vec<String> = svg
+                .match_indices(&key)
+                .map(|(i, _)| {
+                    let s = &svg[i + 4..];
+                    s[..s.find('"').unwrap()].to_string()
+                })
+                .collect();
+            assert!(letters.len() >= 5, "{case}: {letters:?}");
+            for id in letters {
+                let own_id = id.replacen("label-", "point-", 1);
+                let own = points.iter().find(|m| m.0 == own_id).unwrap().1;
+                let mine = to_letter(&svg, &id, own);
+                for (other, q) in &points {
+                    if *other == own_id || (q.0 - own.0).hypot(q.1 - own.1) < 4.0 {
+                        continue;
+                    }
+                    let theirs = to_letter(&svg, &id, *q);
+                    let em = num(&svg, &id, "font-size");
+                    let pair = (em - (q.0 - own.0).hypot(q.1 - own.1)).max(0.0);
+                    let slack = if case.starts_with("r 0.5") || id.ends_with("-pole") {
+                        1.0
+                    } else {
+                        2.0 + pair
+                    };
+                    if theirs < mine - slack {
+                        wrong.push(format!(
+                            "{case}: {id} ({}) stands {theirs:.1} from {other}, {mine:.1} from its own",
+                            text_content(&svg, &id)
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+/// The turning-moment figures of the seventh review's engines (r = 1,
+/// l = 1.05, 1.06, 1.07, 1.09) and the default, on its four page widths:
+/// (what, SVG).
+fn seventh_review_turning_figures() -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for (r, l) in [
+        (0.5, 3.0),
+        (1.0, 1.05),
+        (1.0, 1.06),
+        (1.0, 1.07),
+        (1.0, 1.09),
+    ] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            out.push((format!("r {r} l {l} on {width:?}"), svg));
+        }
+    }
+    out
+}
+
+#[test]
+fn the_turning_moment_stays_off_its_frame_and_letters_every_area_alike() {
+    // The seventh review: at l = 1.07 r the trough at 274° lay on the
+    // axis's end at −20000, as if cut off (3.5); "a₂" went without its
+    // value beside "a₄ = +9517", and the bare "a₁" stood on the curve's
+    // dip at 25°. The torque keeps 3 units inside its axis's ends; every
+    // area is lettered alike, by its letter (its value in the notes),
+    // and no letter's ink meets the curve.
+    for (case, svg) in seventh_review_turning_figures() {
+        let axis = path_numbers(&svg, "turning-moment-axis-y");
+        let (top, bottom) = axis
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        let curve = path_numbers(&svg, "curve-torque");
+        let (high, low) = curve
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), p| (a.min(p.1), b.max(p.1)));
+        assert!(
+            high >= top + 3.0 && low <= bottom - 3.0,
+            "{case}: the torque from {high:.1} to {low:.1}, its axis {top:.1} to {bottom:.1}"
+        );
+        let notes = read_text(&svg);
+        for k in 1.. {
+            let id = format!("label-lobe-{k}");
+            if !svg.contains(&format!("id=\"{id}\"")) {
+                assert!(k > 2, "{case}: {k} letters");
+                break;
+            }
+            let said = text_content(&svg, &id);
+            assert!(!said.contains('='), "{case}: {id} reads {said}");
+            assert!(
+                notes.contains(&format!("{said} = ")),
+                "{case}: no value of {said} in the notes"
+            );
+            // The ink of a bare letter: its italic 0.45 em above the
+            // baseline, the subscript 0.3 em below, a width of 0.8 em.
+            let (x, y, em) = (
+                num(&svg, &id, "x"),
+                num(&svg, &id, "y"),
+                num(&svg, &id, "font-size"),
+            );
+            let (x0, x1, y0, y1) = (x - 0.4 * em, x + 0.4 * em, y - 0.45 * em, y + 0.3 * em);
+            for w in curve.windows(2) {
+                // Each piece of the path (ends and control points) as a
+                // straight step, checked at ten points along it.
+                for i in 0..=10 {
+                    let t = i as f64 / 10.0;
+                    let p = (
+                        w[0].0 + t * (w[1].0 - w[0].0),
+                        w[0].1 + t * (w[1].1 - w[0].1),
+                    );
+                    assert!(
+                        !(p.0 > x0 && p.0 < x1 && p.1 > y0 && p.1 < y1),
+                        "{case}: {id} ({said}) on the curve at {p:?}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_balance_captions_stand_level_and_close_under_their_polygons() {
+    // The seventh review: "large empty gaps between the drawings and
+    // their captions, and the captions of (c) and (d) do not line up".
+    // At the default, the two captions of a row are one line each at one
+    // height, and each stands within two ems and a half (the caption's
+    // band) below the lowest point of its polygon.
+    let svg = to_svg(
+        &FigureName::InlineBalance
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    let caption_y = |name: &str| {
+        assert!(
+            !svg.contains(&format!("id=\"{name}-caption-2\"")),
+            "{name}: a caption of two lines"
+        );
+        num(&svg, &format!("{name}-caption"), "y")
+    };
+    for (left, right) in [
+        ("primary-force", "primary-couple"),
+        ("secondary-force", "secondary-couple"),
+    ] {
+        let (a, b) = (caption_y(left), caption_y(right));
+        assert!((a - b).abs() < 0.01, "{left} at {a}, {right} at {b}");
+        for name in [left, right] {
+            let em = num(&svg, &format!("{name}-caption"), "font-size");
+            let lowest = (1..=3)
+                .map(|k| format!("force-{name}-{k}"))
+                .chain([format!("resultant-{name}")])
+                .filter(|id| svg.contains(&format!("id=\"{id}\"")))
+                .map(|id| {
+                    let (tail, tip) = arrow(&svg, &id);
+                    tail.1.max(tip.1)
+                })
+                .fold(f64::MIN, f64::max);
+            let gap = caption_y(name) - em - lowest;
+            assert!(
+                gap <= 2.5 * em,
+                "{name}: {gap:.1} between the polygon and its caption"
+            );
         }
     }
 }

@@ -13,8 +13,10 @@
 //! The engine is the textbooks' three cylinders with cranks at 120°, a
 //! pitch of 1 and the reference plane through the middle cylinder
 //! (the balance table of cranks 0°, 120°, 240°): the forces balance, the couples
-//! do not. Its ratio n is the figure's mechanism's; its offset is not
-//! drawn, and the notes say so and by how much it changes the sides.
+//! do not. Its ratio n is the figure's mechanism's, and so is its
+//! offset: every side of a polygon of harmonic k is the in-line one's
+//! times |c_k| and turned by arg c_k (`offset_harmonic`), and the notes
+//! say by how much.
 
 use super::cranks::{arrow, line};
 use super::{Ctx, Sheet, short, sig};
@@ -35,6 +37,9 @@ const SHORTEST: f64 = 1e-9;
 /// Height of the notes' band.
 const NOTES: f64 = 88.0;
 
+/// A caption's second line, page units.
+const CAPTION_LINE: f64 = 16.0;
+
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
     let cranks = ctx.options.cranks.clone().unwrap_or(CRANKS.to_vec());
@@ -43,7 +48,17 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, false, false);
     let half = 0.5 * (page.width() - 48.0);
-    let tall = (0.5 * (page.height() - 16.0 - 16.0 - 16.0 - NOTES)).max(120.0);
+    // Each row as tall as its polygons need at the width's scale and a
+    // caption of two lines, no taller than half the page: taller, the
+    // flat polygons stood in bands of white above their captions.
+    let most = (0.5 * (page.height() - 16.0 - 16.0 - 16.0 - NOTES)).max(120.0);
+    let need = (Polygon::ALL.into_iter())
+        .map(|part| {
+            let w = drawn(ctx, &engine, part).world;
+            half * (w.max().y - w.min().y) / (w.max().x - w.min().x)
+        })
+        .fold(0.0, f64::max);
+    let tall = (need + crate::diagram::CAPTION + CAPTION_LINE).clamp(120.0, most);
     let mut meta = serde_json::Map::new();
     for (k, part) in Polygon::ALL.into_iter().enumerate() {
         let (row, col) = ((k / 2) as f64, (k % 2) as f64);
@@ -55,9 +70,15 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         );
         sheet.plot(polygon_plot(ctx, &engine, part, rect)?);
         let r = engine.resultant(part);
+        let (times, turn) = offset_factor(ctx, part).unwrap_or((1.0, 0.0));
+        let (s, c) = turn.to_radians().sin_cos();
+        let v = [
+            times * (c * r.vector[0] - s * r.vector[1]),
+            times * (s * r.vector[0] + c * r.vector[1]),
+        ];
         meta.insert(
             id(part).into(),
-            serde_json::json!({"resultant": r.vector, "amplitude": r.amplitude, "balanced": r.balanced}),
+            serde_json::json!({"resultant": v, "amplitude": times * r.amplitude, "balanced": r.balanced}),
         );
     }
     meta.insert("cranks_deg".into(), serde_json::json!(cranks));
@@ -79,34 +100,53 @@ fn id(part: Polygon) -> &'static str {
     }
 }
 
-/// The caption of the polygon's panel.
+/// The caption of the polygon's panel: short, so that at a page's
+/// usual width each is one line and the captions of a row stand level
+/// (with its verdict after a semicolon, (b)'s and (d)'s broke in two and
+/// stood higher than (a)'s and (c)'s).
 fn caption(part: Polygon, closed: bool) -> String {
     let (letter, what) = match part {
-        Polygon::PrimaryForce => ("(a)", "Primary forces: sides *m\u{a0}r*ω² at δ_{i}"),
+        Polygon::PrimaryForce => ("(a)", "Primary forces, sides *m\u{a0}r*ω² at δ_{i}"),
         Polygon::PrimaryCouple => (
             "(b)",
-            "Primary couples: sides *m\u{a0}r*ω² *a*_{i} at δ_{i}",
+            "Primary couples, sides *m\u{a0}r*ω² *a*_{i} at δ_{i}",
         ),
-        Polygon::SecondaryForce => ("(c)", "Secondary forces: sides *m\u{a0}r*ω²/*n* at 2δ_{i}"),
+        Polygon::SecondaryForce => ("(c)", "Secondary forces, sides *m\u{a0}r*ω²/*n* at 2δ_{i}"),
         Polygon::SecondaryCouple => (
             "(d)",
-            "Secondary couples: sides *m\u{a0}r*ω² *a*_{i}/*n* at 2δ_{i}",
+            "Secondary couples, sides *m\u{a0}r*ω² *a*_{i}/*n* at 2δ_{i}",
         ),
     };
     let verdict = if closed {
-        "closes: balanced"
+        "closed, balanced"
     } else {
-        "the dashed closing side *R* is the resultant"
+        "resultant *R* dashed"
     };
-    format!("{letter} {what}; {verdict}")
+    format!("{letter} {what}: {verdict}")
 }
 
-/// One polygon: its sides head to tail from the origin, each numbered by
-/// its cylinder, and where it does not close the resultant from the
-/// origin to the last side's end, dashed.
-fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect) -> Result<Plot> {
-    let sides = engine.sides(part);
-    let resultant = engine.resultant(part);
+/// A polygon as drawn: the corners of its sides (the offset's included)
+/// from the origin, the last side's end, the longest side, the corners'
+/// box and the world shown about it, and the offset's factor.
+struct Drawn {
+    corners: Vec<Point>,
+    end: Point,
+    unit: f64,
+    lo: Point,
+    hi: Point,
+    world: Frame,
+    times: f64,
+}
+
+/// The polygon `part` of `engine` as drawn ([`Drawn`]).
+fn drawn(ctx: &Ctx, engine: &InlineEngine, part: Polygon) -> Drawn {
+    // The offset engine's sides: the in-line ones times its factor,
+    // turned by its angle ([`offset_factor`]).
+    let (times, turn) = offset_factor(ctx, part).unwrap_or((1.0, 0.0));
+    let (s, c) = turn.to_radians().sin_cos();
+    let sides: Vec<[f64; 2]> = (engine.sides(part).iter())
+        .map(|v| [times * (c * v[0] - s * v[1]), times * (s * v[0] + c * v[1])])
+        .collect();
     let mut corners = vec![Point::origin()];
     let mut end = Point::origin();
     for s in &sides {
@@ -123,12 +163,51 @@ fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect)
                 Point::new(hi.x.max(p.x), hi.y.max(p.y)),
             )
         });
-    let pad = 0.25 * unit;
+    // Room beside the polygon for the line of stroke's ends (0.2 of the
+    // longest side beyond it); above and below, for a side's number.
+    let (pad, rise) = (0.25 * unit, 0.1 * unit);
     let world = Frame::new(
-        Point::new(lo.x - pad, lo.y - pad),
-        Point::new(hi.x + pad, hi.y + pad),
+        Point::new(lo.x - pad, lo.y - rise),
+        Point::new(hi.x + pad, hi.y + rise),
     );
+    Drawn {
+        corners,
+        end,
+        unit,
+        lo,
+        hi,
+        world,
+        times,
+    }
+}
+
+/// One polygon: its sides head to tail from the origin, each numbered by
+/// its cylinder, and where it does not close the resultant from the
+/// origin to the last side's end, dashed.
+fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect) -> Result<Plot> {
+    let Drawn {
+        corners,
+        end,
+        unit,
+        lo,
+        hi,
+        world,
+        times,
+    } = drawn(ctx, engine, part);
+    let resultant = engine.resultant(part);
     let name = id(part);
+    // A polygon flatter than its area stands at the area's foot, by its
+    // caption, the room above it (centred, it stood 55 units above the
+    // caption of (b) and (d)).
+    let room = (rect.height - crate::diagram::CAPTION) / rect.width;
+    let (wide, high) = (world.max().x - world.min().x, world.max().y - world.min().y);
+    let world = match wide * room > high {
+        true => Frame::new(
+            world.min(),
+            Point::new(world.max().x, world.min().y + wide * room),
+        ),
+        false => world,
+    };
     let mut plot = Plot::world(name, rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(&caption(part, resultant.balanced));
     let least = SHORTEST * unit;
@@ -160,7 +239,7 @@ fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect)
             Role::Label,
             Shape::Label {
                 anchor: Point::origin() + (end - Point::origin()) * 0.5,
-                text: RichText::parse(&format!("*R* = {}", sig(resultant.amplitude))),
+                text: RichText::parse(&format!("*R* = {}", sig(times * resultant.amplitude))),
                 size: TextSize::Small,
                 toward: None,
                 line: Some([Point::origin(), end]),
@@ -217,41 +296,62 @@ fn in_plane(engine: &InlineEngine) -> String {
     }
 }
 
+/// How an offset changes the polygon `part`'s sides from the in-line
+/// engine's: (times as long, turned by degrees), from the harmonic of its
+/// order of the offset cylinder's exact force ([`offset_harmonic`]);
+/// `None` in line, or where the harmonic is not found (an engine at its
+/// limit of assembly: the in-line sides are drawn and the notes say so).
+fn offset_factor(ctx: &Ctx, part: Polygon) -> Option<(f64, f64)> {
+    let m = ctx.mechanism;
+    if m.offset() == 0.0 {
+        return None;
+    }
+    let (k, drawn) = match part {
+        Polygon::PrimaryForce | Polygon::PrimaryCouple => (1, 1.0),
+        Polygon::SecondaryForce | Polygon::SecondaryCouple => (2, 1.0 / m.ratio()),
+    };
+    offset_harmonic(&m, k).map(|c| {
+        // A turn within the sum's rounding is none.
+        let turn = c[1].atan2(c[0]).to_degrees();
+        (
+            c[0].hypot(c[1]) / drawn,
+            if turn.abs() < 1e-9 { 0.0 } else { turn },
+        )
+    })
+}
+
 /// What the notes say of an offset: nothing for e = 0; else that the
-/// polygons are the in-line engine's, why which of them close holds
-/// still, and by how much the offset changes their sides
-/// ([`offset_harmonic`]).
+/// polygons are drawn for it, each side the in-line one's times one
+/// factor and turned by one angle, which and why which of them close
+/// holds still ([`offset_factor`]).
 fn offset_note(ctx: &Ctx) -> Option<String> {
     let m = ctx.mechanism;
     if m.offset() == 0.0 {
         return None;
     }
     let head = format!(
-        "The offset *e* = {} {} (*e*/*l* = {}) is not in the polygons: they are drawn for the engine in line, each cylinder’s force cos θ + cos 2θ/*n*. An offset, the same in every cylinder, multiplies every side of a polygon by one factor and turns it by one angle, so which polygons close is unchanged",
+        "The offset *e* = {} {} (*e*/*l* = {}), the same in every cylinder, multiplies every side of a polygon by one factor and turns it by one angle, so which polygons close is unchanged",
         short(m.offset()),
         ctx.unit(),
         sig(m.offset() / m.rod()),
     );
-    let factor = |k: usize, drawn: f64| {
-        offset_harmonic(&m, k).map(|c| {
-            // A turn within the sum's rounding is none.
-            let turn = c[1].atan2(c[0]).to_degrees();
-            (
-                c[0].hypot(c[1]) / drawn,
-                if turn.abs() < 1e-9 { 0.0 } else { turn },
-            )
-        })
-    };
-    Some(match (factor(1, 1.0), factor(2, 1.0 / m.ratio())) {
-        (Some((a1, p1)), Some((a2, p2))) => format!(
-            "{head}; here the primary sides and resultants are {} times as long, turned {}°, the secondary {} times, turned {}° (the first and second harmonics of the offset cylinder’s exact force).",
-            sig(a1),
-            sig(p1),
-            sig(a2),
-            sig(p2),
-        ),
-        _ => format!("{head}; their sizes are not."),
-    })
+    Some(
+        match (
+            offset_factor(ctx, Polygon::PrimaryForce),
+            offset_factor(ctx, Polygon::SecondaryForce),
+        ) {
+            (Some((a1, p1)), Some((a2, p2))) => format!(
+                "{head}: the polygons are drawn for it, the primary sides and resultants {} times as long as in line, turned {}°, the secondary {} times, turned {}° (the first and second harmonics of the offset cylinder’s exact force).",
+                sig(a1),
+                sig(p1),
+                sig(a2),
+                sig(p2),
+            ),
+            _ => format!(
+                "{head}; its harmonics are not found here (an engine at its limit of assembly): the polygons are drawn for the engine in line, each cylinder’s force cos θ + cos 2θ/*n*."
+            ),
+        },
+    )
 }
 
 /// The notes: the engine, the scales, and each polygon's resultant; an
@@ -267,10 +367,11 @@ fn notes(ctx: &Ctx, engine: &InlineEngine) -> Vec<String> {
     };
     let value = |part: Polygon| {
         let r = engine.resultant(part);
+        let times = offset_factor(ctx, part).map_or(1.0, |f| f.0);
         if r.balanced {
             "0 (closed)".to_string()
         } else {
-            sig(r.amplitude)
+            sig(times * r.amplitude)
         }
     };
     vec![
@@ -288,7 +389,7 @@ fn notes(ctx: &Ctx, engine: &InlineEngine) -> Vec<String> {
             short(engine.ratio()),
         ),
         format!(
-            "Resultants *R* ÷ *m\u{a0}r*ω²: primary force {}, primary couple {}, secondary force {}, secondary couple {}: each the largest unbalanced value over a turn, reached when it lies on the line of stroke.",
+            "Resultants *R* in units of *m\u{a0}r*ω² (a couple’s times the pitch): primary force {}, primary couple {}, secondary force {}, secondary couple {}: each the largest unbalanced value over a turn, reached when it lies on the line of stroke.",
             value(Polygon::PrimaryForce),
             value(Polygon::PrimaryCouple),
             value(Polygon::SecondaryForce),

@@ -386,22 +386,30 @@ fn polar_plot(
         }
     }
     let scale = plot.map().scale();
-    for item in marks(
-        engines,
+    let marks = marks(
+        (engines, sampled),
         cycle,
         relative,
         name,
         (APART / scale, MEET / scale),
-    ) {
-        plot.push(item);
-    }
+    );
+    let dots: Vec<Point> = (marks.iter())
+        .filter_map(|item| match item.shape {
+            Shape::Dot { centre } => Some(centre),
+            _ => None,
+        })
+        .collect();
     plot.points(
         &format!("point-{name}-pole"),
         &[(0.0, 0.0)],
         Symbol::Cross,
         None,
     );
-    // Lettered, so that it is found among a short rod's loops about it.
+    // Lettered, so that it is found among a short rod's loops about it;
+    // before the quarters' letters, so that it takes the place beside its
+    // × and a quarter's dot a few units off (the dashed 270° at r = 1,
+    // l = 3.83 r, e = −1.63 r) is lettered on its own side, not over the
+    // × with "O" by the dot; set away from the dots as well as the curves.
     plot.push(Item::new(
         format!("label-{name}-pole"),
         Role::Label,
@@ -412,41 +420,54 @@ fn polar_plot(
             toward: Some(clearest(
                 Point::origin(),
                 APART / scale,
-                &crowd(sampled, &[]),
+                &crowd(sampled),
+                &dots,
             )),
             line: None,
         },
     ));
+    for item in marks {
+        plot.push(item);
+    }
     Ok(plot)
 }
 
 /// The points a letter keeps clear of: every sampled load of both
-/// curves and the points `also` (the marks, the pole).
-fn crowd(sampled: &[[Vector; 2]], also: &[Point]) -> Vec<Point> {
+/// curves.
+fn crowd(sampled: &[[Vector; 2]]) -> Vec<Point> {
     (sampled.iter().flatten())
         .map(|v| Point::origin() + v)
-        .chain(also.iter().copied())
         .collect()
 }
 
-/// The direction from `from`, of eight, in which a letter `reach` (world
-/// units) out stands farthest from every point of `crowd`: a letter set
+/// The direction from `from`, of eight, on the side away from the
+/// nearest of the `dots` (the other marks, the pole), in which a letter
+/// `reach` (world units) out stands farthest from every point of `crowd`
+/// and nearer its own point than any of the `dots` by most: a letter set
 /// there stands by its point and clear of the curves, not inside a loop
-/// or across them (the pole's "O" by its ×, a quarter's angle by its
-/// dot).
-fn clearest(from: Point, reach: f64, crowd: &[Point]) -> Vector {
+/// or across them, nor beside another dot (the pole's "O" by its ×, a
+/// quarter's angle by its dot).
+fn clearest(from: Point, reach: f64, crowd: &[Point], dots: &[Point]) -> Vector {
+    let away = (dots.iter())
+        .filter(|p| **p != from)
+        .min_by(|a, b| (*a - from).norm().total_cmp(&(*b - from).norm()))
+        .map_or(Vector::zeros(), |q| from - q);
     let room = |d: Vector| {
         let at = from + d * reach;
-        (crowd.iter())
+        let curves = (crowd.iter())
             .filter(|p| **p != from)
-            .map(|p| (p - at).norm())
-            .fold(f64::MAX, f64::min)
+            .map(|p| (p - at).norm());
+        let others = (dots.iter())
+            .filter(|p| **p != from)
+            .map(|p| (p - at).norm() - reach);
+        curves.chain(others).fold(f64::MAX, f64::min)
     };
     (0..8)
         .map(|k| {
             let a = std::f64::consts::FRAC_PI_4 * k as f64;
             Vector::new(a.cos(), a.sin())
         })
+        .filter(|d| d.dot(&away) >= 0.0)
         .max_by(|a, b| room(*a).total_cmp(&room(*b)))
         .unwrap_or(Vector::new(1.0, 1.0))
 }
@@ -504,7 +525,7 @@ pub(crate) fn angle_letter(deg: f64, dashed: bool) -> String {
 /// `label-{name}-{curve}-{deg}`, set first on the side away from the
 /// nearest other mark.
 fn marks(
-    engines: [&Engine; 2],
+    (engines, sampled): ([&Engine; 2], &[[Vector; 2]]),
     cycle: f64,
     relative: bool,
     name: &str,
@@ -572,11 +593,16 @@ fn marks(
         })
         .collect();
     for (c, d, p, letters) in taken.iter().filter(|t| !t.3.is_empty()) {
-        let nearest = (taken.iter().map(|t| t.2))
+        // Set on the side where it stands farthest from the curves and
+        // the other dots: beside the nearest other dot only (as before)
+        // the letters of dots strung along a flat curve stood between
+        // two dots, each as near the other's (the default engine's 0°′,
+        // 180°′ and 0° along the axis in fixed axes).
+        let others: Vec<Point> = (taken.iter().map(|t| t.2))
             .filter(|q| q != p)
             .chain([Point::origin()])
-            .min_by(|a, b| (p - a).norm().total_cmp(&(p - b).norm()));
-        let away = nearest.map(|q| p - q).filter(|v| v.norm() > 0.0);
+            .collect();
+        let away = Some(clearest(*p, apart, &crowd(sampled), &others));
         let mut letters = letters.clone();
         letters.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         let text = (letters.iter().map(|&(a, dashed)| angle_letter(a, dashed)))

@@ -126,6 +126,10 @@ fn theta() -> Result<Axis> {
     Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0)
 }
 
+/// The least room between the torque's extremes and the ends of its
+/// axis, a share of its range: 3 %, some 4 units on a plot 150 high.
+const AXIS_MARGIN: f64 = 0.03;
+
 /// (a) T against θ, `height` page units high, in smooth pieces between
 /// its kinks, with the mean line and the areas between them.
 fn torque_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> Result<Plot> {
@@ -134,11 +138,20 @@ fn torque_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     let (lo, hi) = (0..=720)
         .map(|k| torque(k as f64 * 0.5))
         .fold((tm.mean, tm.mean), |(a, b), t| (a.min(t), b.max(t)));
+    // The axis a share of the range beyond the curve's extremes
+    // ([`AXIS_MARGIN`]): at r = 1, l = 1.07 r the trough at 274° reached
+    // −19 990 and the round axis ended at −20 000, the curve on the
+    // frame as if cut off.
+    let margin = AXIS_MARGIN * (hi - lo);
     let mut plot = Plot::new(
         "turning-moment",
         ctx.band(16.0, height),
         theta()?,
-        Axis::nice(&format!("torque on the crank *T* ({t_unit})"), lo, hi)?,
+        Axis::nice(
+            &format!("torque on the crank *T* ({t_unit})"),
+            lo - margin,
+            hi + margin,
+        )?,
         ctx.tolerance,
         ctx.font,
     )?
@@ -169,7 +182,7 @@ fn torque_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
 }
 
 /// The areas between T and its mean line, each lettered inside it
-/// ([`area_letter`]), with its value where the lobe is wide enough.
+/// ([`area_letter`]), their values in the notes.
 fn lobes(ctx: &Ctx, plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
     for (k, lobe) in tm.lobes.iter().enumerate() {
         let n = ((lobe.to_deg - lobe.from_deg) * 2.0).ceil().max(2.0) as usize;
@@ -187,13 +200,10 @@ fn lobes(ctx: &Ctx, plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
             Role::Construction,
             Shape::Region { points },
         ));
-        let letter = format!("*a*_{{{}}}", k + 1);
-        let valued = format!("{letter} = {}", signed(tm.settled(lobe.area)));
-        let texts = if lobe.to_deg - lobe.from_deg >= 25.0 {
-            vec![valued, letter]
-        } else {
-            vec![letter]
-        };
+        // Every area by its letter alone, the values in the notes: with
+        // the value where it fitted, a large area went without and a
+        // small one with ("a₂" beside "a₄ = +9517").
+        let texts = [format!("*a*_{{{}}}", k + 1)];
         plot.push(area_letter(ctx, plot, &column, tm.mean, &texts, k + 1));
     }
 }
@@ -215,9 +225,9 @@ const MIDDLE: f64 = 0.35;
 
 /// The letter `label-lobe-{k}` of the area between the mean line at
 /// `mean` and the torque sampled at `column` (θ, T): the first of `texts`
-/// whose box, with [`AREA_ROOM`] about it (the bare letter at last
-/// without), fits wholly between the two somewhere and off the line
-/// T = 0, set where it has the most room (a text at a fixed place). Where none fits (a sliver), the last text
+/// whose box, with [`AREA_ROOM`] about it, fits wholly between the two
+/// somewhere and off the line T = 0, set where it has the most room (a
+/// text at a fixed place). Where none fits (a sliver), the last text
 /// beside the area's tallest point, on its side of the mean line, moved
 /// clear of the lines there.
 fn area_letter(
@@ -256,7 +266,10 @@ fn area_letter(
             AREA_ROOM
         }
     };
-    let tries = (texts.iter().map(|t| (t, room_of(t)))).chain(texts.last().map(|t| (t, 0.0)));
+    // Not the bare letter with no room (it stood on the curve's dip at
+    // 25° at l = 1.05 r): where it has not its room, it is set beside the
+    // area, clear of the lines.
+    let tries = texts.iter().map(|t| (t, room_of(t)));
     for (text, room) in tries {
         let rich = RichText::parse(text);
         let ink = rich.measure(ctx.font, size);
