@@ -23,7 +23,7 @@ use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
     write_atomic_all,
 };
-use slider_crank::table::{DEFAULT_MAX_CELLS, TableName, TableRequest};
+use slider_crank::table::{DEFAULT_MAX_CELLS, GivenEngine, TableName, TableRequest};
 use slider_crank::{
     Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Spelling, Unit, Units,
     Wording,
@@ -585,13 +585,38 @@ fn table(
     r.decimals = decimals;
     r.unit = unit.map(parse::<Unit>).transpose()?;
     r.force_unit = force_unit.map(parse::<Unit>).transpose()?;
-    (r.mass, r.rod_mass, r.rod_cg, r.rod_gyration) = (mass, rod_mass, rod_cg, rod_gyration);
-    (r.gas_force, r.indicator, r.bore) = (gas_force, indicator, bore);
+    r.engine = given_engine(
+        mass,
+        (rod_mass, rod_cg, rod_gyration),
+        gas_force,
+        indicator,
+        bore,
+    );
     (r.phases, r.fluctuation, r.flywheel) = (phases, fluctuation, flywheel);
     (r.cranks, r.planes, r.order, r.fractions) = (cranks, planes, order, fractions);
     (r.wheel, r.speed, r.load, r.axes) = (wheel, speed, load, axes);
     (r.inversion, r.lever, r.max_cells) = (inversion, lever, max_cells);
     py.detach(|| r.plan()?.text()).map_err(py_err)
+}
+
+/// The engine of a request the keywords give, the one place the package
+/// fills it.
+fn given_engine(
+    mass: Option<f64>,
+    (rod_mass, rod_cg, rod_gyration): (Option<f64>, Option<f64>, Option<f64>),
+    gas_force: Option<f64>,
+    indicator: Option<PathBuf>,
+    bore: Option<f64>,
+) -> GivenEngine {
+    GivenEngine {
+        mass,
+        rod_mass,
+        rod_cg,
+        rod_gyration,
+        gas_force,
+        indicator,
+        bore,
+    }
 }
 
 /// Writes each text of `files` to its path whole, or none of them, as the

@@ -67,17 +67,18 @@ pub struct EngineArgs {
 }
 
 impl EngineArgs {
-    /// The fields of the one engine every request builds; its
+    /// The request's engine these flags give, the one place the command
+    /// line fills it (`table` and `analyze` alike); its
     /// [`GivenEngine::engine`] is the engine asked for, `None` without a
     /// dynamics flag.
-    pub fn given(&self) -> GivenEngine<'_> {
+    pub fn given(&self) -> GivenEngine {
         GivenEngine {
             mass: self.mass,
             rod_mass: self.rod_mass,
             rod_cg: self.rod_cg,
             rod_gyration: self.rod_gyration,
             gas_force: self.gas_force,
-            indicator: self.indicator.as_deref(),
+            indicator: self.indicator.clone(),
             bore: self.bore,
         }
     }
