@@ -181,12 +181,6 @@ impl GuardArgs {
     pub fn bound(&self) -> MaxCells {
         MaxCells::new(self.max_cells)
     }
-
-    /// Checks `rows` × `columns` against `--max-cells` (see
-    /// [`MaxCells::check`]).
-    pub fn check(&self, command: &str, rows: (u64, &str), columns: (u64, &str)) -> Result<()> {
-        self.bound().check(command, rows, columns)
-    }
 }
 
 pub use slider_crank::lists::{AngleSpec, parse_list};

@@ -10,8 +10,8 @@ use crate::units::Units;
 use std::path::PathBuf;
 
 /// The dynamics fields as a request holds them ([`super::TableRequest`]'s
-/// `engine`), each `None` where not given; a front end fills them in one
-/// place for every request. The rod
+/// and [`super::AnalyzeRequest`]'s `engine`), each `None` where not
+/// given; a front end fills them in one place for every request. The rod
 /// counts only with all three of its values (a request refuses one
 /// without the others); the bore only with an indicator.
 #[derive(Debug, Clone, Default, PartialEq)]
