@@ -1011,27 +1011,25 @@ class SliderCrank:
         paper: str,
         dynamics: Optional["_Dynamics"] = None,
     ) -> str:
-        w = _core.crank_speed(rpm, omega)
         d = dynamics or _Dynamics()
-        if friction is not None and torque is None:
-            raise ValueError("friction applies with a torque: give torque= too")
         return _core.handout(
-            self._crank,
-            self._rod,
-            self._offset,
-            self._unit,
-            self._force_unit,
-            _real(theta_deg),
-            w,
             which,
-            paper,
-            _option(torque),
-            0.0 if friction is None else _real(friction),
-            _option(d.mass),
-            _option(d.fluctuation),
-            _option(d.gas_force),
-            None if d.indicator is None else os.fspath(d.indicator),
-            _option(d.bore),
+            crank=self._crank,
+            rod=self._rod,
+            offset=self._offset,
+            angle=_real(theta_deg),
+            rpm=_option(rpm),
+            omega=_option(omega),
+            unit=self._unit,
+            force_unit=self._force_unit,
+            torque=_option(torque),
+            friction=_option(friction),
+            mass=_option(d.mass),
+            fluctuation=_option(d.fluctuation),
+            gas_force=_option(d.gas_force),
+            indicator=None if d.indicator is None else os.fspath(d.indicator),
+            bore=_option(d.bore),
+            paper=paper,
         )
 
     def handout(

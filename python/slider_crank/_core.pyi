@@ -130,22 +130,23 @@ def encode(svg: str, format: str) -> bytes: ...
 def save(svg: str, path: str) -> None: ...
 def figure_names() -> list[str]: ...
 def handout(
-    crank: float,
-    rod: float,
-    offset: float,
-    unit: str,
-    force_unit: str,
-    degrees: float,
-    omega: float,
     which: str,
-    paper: str = "a4",
+    crank: Optional[float] = None,
+    rod: Optional[float] = None,
+    offset: Optional[float] = None,
+    angle: Optional[float] = None,
+    rpm: Optional[float] = None,
+    omega: Optional[float] = None,
+    unit: Optional[str] = None,
+    force_unit: Optional[str] = None,
     torque: Optional[float] = None,
-    friction: float = 0.0,
+    friction: Optional[float] = None,
     mass: Optional[float] = None,
     fluctuation: Optional[float] = None,
     gas_force: Optional[float] = None,
     indicator: Optional[str] = None,
     bore: Optional[float] = None,
+    paper: Optional[str] = None,
 ) -> str: ...
 def table(
     name: str,

@@ -17,7 +17,7 @@ use slider_crank::catalogue::{FigureOptions, FigureRequest};
 use slider_crank::construct::Graphical;
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::gallery::Gallery;
-use slider_crank::handout::{DynamicsAsk, Handout};
+use slider_crank::handout::HandoutRequest;
 use slider_crank::lists::{Angles, parse_list};
 use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
@@ -517,63 +517,47 @@ fn save(py: Python<'_>, svg: &str, path: PathBuf) -> PyResult<()> {
 }
 
 /// The teaching page `slider-crank handout` writes (`which` = "page"),
-/// or its exercise sheet ("exercise") or answer key ("key"), as HTML;
-/// with `mass` (and the coefficient of fluctuation of speed
-/// `fluctuation`, 0.02 when not given, and the gas force: `gas_force`, or
-/// the indicator diagram read from the CSV file `indicator` on the bore
-/// `bore`, else the example's in ft and lbf) the page works the engine's
-/// dynamics too, as `--mass` … `--bore` do, and an exercise the forces
-/// at its pose. The options are filled into the library's request and
-/// refused in its words, naming these keywords.
+/// or its exercise sheet ("exercise") or answer key ("key"), as HTML:
+/// each keyword the field of the library's request of that name
+/// (`None`: the handout's own), made into the handout by the library as
+/// the command line's flags are ([`HandoutRequest::handout`]) and
+/// refused in its words, naming these keywords. With `mass` the page
+/// works the engine's dynamics too, as `--mass` … `--bore` do, and an
+/// exercise the forces at its pose.
 #[pyfunction]
-#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, which, paper="a4", torque=None, friction=0.0, mass=None, fluctuation=None, gas_force=None, indicator=None, bore=None))]
+#[pyo3(signature = (which, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
+    unit=None, force_unit=None, torque=None, friction=None, mass=None, fluctuation=None,
+    gas_force=None, indicator=None, bore=None, paper=None))]
 #[allow(clippy::too_many_arguments)]
 fn handout(
     py: Python<'_>,
-    crank: f64,
-    rod: f64,
-    offset: f64,
-    unit: &str,
-    force_unit: &str,
-    degrees: f64,
-    omega: f64,
     which: &str,
-    paper: &str,
+    crank: Option<f64>,
+    rod: Option<f64>,
+    offset: Option<f64>,
+    angle: Option<f64>,
+    rpm: Option<f64>,
+    omega: Option<f64>,
+    unit: Option<&str>,
+    force_unit: Option<&str>,
     torque: Option<f64>,
-    friction: f64,
+    friction: Option<f64>,
     mass: Option<f64>,
     fluctuation: Option<f64>,
     gas_force: Option<f64>,
     indicator: Option<PathBuf>,
     bore: Option<f64>,
+    paper: Option<&str>,
 ) -> PyResult<String> {
-    let mut h = Handout::new(
-        engine(crank, rod, offset)?,
-        Angle::from_degrees(degrees).map_err(py_err)?,
-    )
-    .with_omega(omega)
-    .map_err(py_err)?
-    .with_units(units(unit, force_unit)?)
-    .with_paper(parse(paper)?);
-    if let Some(t) = torque {
-        h = h.with_torque(t, friction).map_err(py_err)?;
-    }
-    let indicator = match &indicator {
-        Some(path) => Some((
-            read_text(path, MAX_DATA_BYTES, Input::Indicator).map_err(py_err)?,
-            path.display().to_string(),
-        )),
-        None => None,
-    };
-    let h = h
-        .with_dynamics_asked(&DynamicsAsk {
-            mass,
-            fluctuation,
-            gas_force,
-            indicator,
-            bore,
-        })
-        .map_err(py_err)?;
+    let mut r = HandoutRequest::default();
+    (r.crank, r.rod, r.offset, r.angle) = (crank, rod, offset, angle);
+    (r.rpm, r.omega, r.torque, r.friction) = (rpm, omega, torque, friction);
+    r.unit = unit.map(parse::<Unit>).transpose()?;
+    r.force_unit = force_unit.map(parse::<Unit>).transpose()?;
+    (r.mass, r.fluctuation, r.gas_force) = (mass, fluctuation, gas_force);
+    (r.indicator, r.bore) = (indicator, bore);
+    r.paper = paper.map(parse).transpose()?;
+    let h = r.handout().map_err(py_err)?;
     py.detach(|| match which {
         "exercise" => h.exercise(),
         "key" => h.key(),
