@@ -786,26 +786,51 @@ class SliderCrank:
         >>> round(engine.at(90, rpm=250, mass=10).dynamics.torque, 2)   # lbf·ft
         289.63
         """
-        w = _core.crank_speed(rpm, omega)
-        if friction is not None and torque is None:
-            raise ValueError("friction applies with a torque: give torque= too")
-        engine = self._engine(w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore)
         text = _core.analyze(
-            self._crank,
-            self._rod,
-            self._offset,
-            self._unit,
-            self._force_unit,
-            _real(theta_deg),
-            w,
-            _option(torque),
-            0.0 if friction is None else _real(friction),
+            crank=self._crank,
+            rod=self._rod,
+            offset=self._offset,
+            angle=_real(theta_deg),
+            rpm=_option(rpm),
+            omega=_option(omega),
+            torque=_option(torque),
+            friction=_option(friction),
+            unit=self._unit,
+            force_unit=self._force_unit,
+            mass=_option(mass),
+            rod_mass=_option(rod_mass),
+            rod_cg=_option(rod_cg),
+            rod_gyration=_option(rod_gyration),
+            gas_force=_option(gas_force),
+            indicator=None if indicator is None else os.fspath(indicator),
+            bore=_option(bore),
         )
-        degrees = _real(theta_deg)
-        dynamics = None
-        if engine is not None:
-            dynamics = engine.at(degrees, self._unit, self._force_unit)
-        return Analysis._from_json(text, dynamics, _assumed_rpm(rpm, omega))
+        return Analysis._from_json(text, None, _assumed_rpm(rpm, omega))
+
+    def _chain_at(
+        self,
+        theta_deg: float,
+        rpm: Optional[float],
+        omega: Optional[float],
+        *,
+        slot_radius: Optional[float] = None,
+        inversion: Optional[int] = None,
+    ) -> "ChainAnalysis":
+        """This engine's chain with its block in a curved slot or another
+        link fixed, analysed at ``theta_deg`` as ``analyze --json`` does."""
+        text = _core.analyze(
+            crank=self._crank,
+            rod=self._rod,
+            offset=self._offset,
+            angle=_real(theta_deg),
+            rpm=_option(rpm),
+            omega=_option(omega),
+            unit=self._unit,
+            force_unit=self._force_unit,
+            slot_radius=slot_radius,
+            inversion=inversion,
+        )
+        return ChainAnalysis(text, _assumed_rpm(rpm, omega))
 
     def _engine(
         self,
@@ -986,27 +1011,25 @@ class SliderCrank:
         paper: str,
         dynamics: Optional["_Dynamics"] = None,
     ) -> str:
-        w = _core.crank_speed(rpm, omega)
         d = dynamics or _Dynamics()
-        if friction is not None and torque is None:
-            raise ValueError("friction applies with a torque: give torque= too")
         return _core.handout(
-            self._crank,
-            self._rod,
-            self._offset,
-            self._unit,
-            self._force_unit,
-            _real(theta_deg),
-            w,
             which,
-            paper,
-            _option(torque),
-            0.0 if friction is None else _real(friction),
-            _option(d.mass),
-            _option(d.fluctuation),
-            _option(d.gas_force),
-            None if d.indicator is None else os.fspath(d.indicator),
-            _option(d.bore),
+            crank=self._crank,
+            rod=self._rod,
+            offset=self._offset,
+            angle=_real(theta_deg),
+            rpm=_option(rpm),
+            omega=_option(omega),
+            unit=self._unit,
+            force_unit=self._force_unit,
+            torque=_option(torque),
+            friction=_option(friction),
+            mass=_option(d.mass),
+            fluctuation=_option(d.fluctuation),
+            gas_force=_option(d.gas_force),
+            indicator=None if d.indicator is None else os.fspath(d.indicator),
+            bore=_option(d.bore),
+            paper=paper,
         )
 
     def handout(
@@ -1794,9 +1817,14 @@ class QuadricChain:
         rates (``None`` at a toggle), the Grashof class, the crank's reach
         and the six virtual centres. A crank angle the crank cannot reach
         (a rocker) raises ``ValueError``. Speed as in :meth:`SliderCrank.at`."""
-        w = _core.crank_speed(rpm, omega)
-        text = _core.quadric_at(
-            self._links, self._assembly, _real(theta_deg), w, self._unit, self._force_unit
+        text = _core.analyze(
+            links=self._links,
+            assembly=self._assembly,
+            angle=_real(theta_deg),
+            rpm=_option(rpm),
+            omega=_option(omega),
+            unit=self._unit,
+            force_unit=self._force_unit,
         )
         return ChainAnalysis(text, _assumed_rpm(rpm, omega))
 
@@ -1851,12 +1879,9 @@ class CurvedSlot:
         rates, exact and read off the construction (``None`` where the
         construction leaves them undefined), the rod's and lever's angles
         and rates, and the six virtual centres."""
-        e = self._engine
-        w = _core.crank_speed(rpm, omega)
-        text = _core.slot_at(
-            e.crank, e.rod, e.offset, self._radius, _real(theta_deg), w, e.unit, e.force_unit
+        return self._engine._chain_at(
+            theta_deg, rpm, omega, slot_radius=self._radius
         )
-        return ChainAnalysis(text, _assumed_rpm(rpm, omega))
 
     def check(
         self,
@@ -1922,12 +1947,7 @@ class Inversion:
         velocity and acceleration (``None`` where the driver stands at a
         dead point), the quick-return time ratio and the six virtual
         centres."""
-        e = self._engine
-        w = _core.crank_speed(rpm, omega)
-        text = _core.inversion_at(
-            e.crank, e.rod, e.offset, self._number, _real(theta_deg), w, e.unit, e.force_unit
-        )
-        return ChainAnalysis(text, _assumed_rpm(rpm, omega))
+        return self._engine._chain_at(theta_deg, rpm, omega, inversion=self._number)
 
     def figure(self, **options: Any) -> Figure:
         """This inversion's figure drawn for the engine (see

@@ -2,7 +2,7 @@
 JSON text, SVG text, bytes or filled numpy arrays out. Use the classes of
 ``slider_crank``; these functions are their implementation."""
 
-from typing import Optional, Union, final
+from typing import Optional, Tuple, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -24,9 +24,6 @@ __all__ = [
     "check_quadric",
     "check_slot",
     "check_inversion",
-    "quadric_at",
-    "slot_at",
-    "inversion_at",
     "chain_check",
     "engine_check",
     "inline_balance",
@@ -65,15 +62,28 @@ def check_engine(
 ) -> None: ...
 def crank_speed(rpm: Optional[float] = None, omega: Optional[float] = None) -> float: ...
 def analyze(
-    crank: float,
-    rod: float,
-    offset: float,
-    unit: str,
-    force_unit: str,
-    degrees: float,
-    omega: float,
+    crank: Optional[float] = None,
+    rod: Optional[float] = None,
+    offset: Optional[float] = None,
+    angle: Optional[float] = None,
+    rpm: Optional[float] = None,
+    omega: Optional[float] = None,
     torque: Optional[float] = None,
-    friction: float = 0.0,
+    friction: Optional[float] = None,
+    unit: Optional[str] = None,
+    force_unit: Optional[str] = None,
+    mass: Optional[float] = None,
+    rod_mass: Optional[float] = None,
+    rod_cg: Optional[float] = None,
+    rod_gyration: Optional[float] = None,
+    gas_force: Optional[float] = None,
+    indicator: Optional[str] = None,
+    bore: Optional[float] = None,
+    slot_radius: Optional[float] = None,
+    links: Optional[Tuple[float, float, float, float]] = None,
+    assembly: Optional[str] = None,
+    inversion: Optional[int] = None,
+    max_cells: int = ...,
 ) -> str: ...
 def sweep(
     crank: float,
@@ -120,22 +130,23 @@ def encode(svg: str, format: str) -> bytes: ...
 def save(svg: str, path: str) -> None: ...
 def figure_names() -> list[str]: ...
 def handout(
-    crank: float,
-    rod: float,
-    offset: float,
-    unit: str,
-    force_unit: str,
-    degrees: float,
-    omega: float,
     which: str,
-    paper: str = "a4",
+    crank: Optional[float] = None,
+    rod: Optional[float] = None,
+    offset: Optional[float] = None,
+    angle: Optional[float] = None,
+    rpm: Optional[float] = None,
+    omega: Optional[float] = None,
+    unit: Optional[str] = None,
+    force_unit: Optional[str] = None,
     torque: Optional[float] = None,
-    friction: float = 0.0,
+    friction: Optional[float] = None,
     mass: Optional[float] = None,
     fluctuation: Optional[float] = None,
     gas_force: Optional[float] = None,
     indicator: Optional[str] = None,
     bore: Optional[float] = None,
+    paper: Optional[str] = None,
 ) -> str: ...
 def table(
     name: str,
@@ -209,34 +220,6 @@ class Engine:
 def check_quadric(links: tuple[float, float, float, float], mode: str) -> None: ...
 def check_slot(crank: float, rod: float, offset: float, rho: float) -> None: ...
 def check_inversion(crank: float, rod: float, offset: float, n: int) -> None: ...
-def quadric_at(
-    links: tuple[float, float, float, float],
-    mode: str,
-    degrees: float,
-    omega: float,
-    unit: str,
-    force_unit: str,
-) -> str: ...
-def slot_at(
-    crank: float,
-    rod: float,
-    offset: float,
-    rho: float,
-    degrees: float,
-    omega: float,
-    unit: str,
-    force_unit: str,
-) -> str: ...
-def inversion_at(
-    crank: float,
-    rod: float,
-    offset: float,
-    n: int,
-    degrees: float,
-    omega: float,
-    unit: str,
-    force_unit: str,
-) -> str: ...
 def chain_check(
     links: Optional[tuple[float, float, float, float]] = None,
     slot: Optional[tuple[float, float, float, float]] = None,

@@ -1,18 +1,17 @@
-//! The chain of Fig. 60 for Python: the quadric crank chain (`analyze
-//! --links`), the block in a curved slot (`--slot-radius`), the four
-//! inversions (`--inversion`) and `check` of the first two.
+//! The chain of Fig. 60 for Python: the checks of the quadric crank chain
+//! (`analyze --links`), the block in a curved slot (`--slot-radius`) and
+//! the four inversions (`--inversion`), and `check` of the first two;
+//! each is analysed at an angle by `analyze`, the library's request.
 //!
-//! The JSON layouts and the check reports are the library's
-//! (`slider_crank::table`), the ones the command line prints.
+//! The check reports are the library's (`slider_crank::table`), the ones
+//! the command line prints.
 
-use crate::{py_err, units};
+use crate::py_err;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use serde_json::{Value, json};
 use slider_crank::chain::{CylindricChain, InvertedChain, QuadricChain, quadric_sweep, slot_sweep};
 use slider_crank::table::{
-    CHAIN_TOLERANCE, chain_check_report, inversion_json, quadric_check_title, quadric_json,
-    slot_check_title, slot_json,
+    CHAIN_TOLERANCE, chain_check_report, quadric_check_title, slot_check_title,
 };
 use slider_crank::{Assembly, Inversion, SliderCrank};
 
@@ -47,16 +46,6 @@ fn inverted(crank: f64, rod: f64, offset: f64, n: u32) -> PyResult<InvertedChain
     ))
 }
 
-/// `value` with the units inserted, as JSON text.
-fn with_units(value: slider_crank::Result<Value>, unit: &str, force: &str) -> PyResult<String> {
-    let units = units(unit, force)?;
-    let mut v = value.map_err(py_err)?;
-    if let Some(fields) = v.as_object_mut() {
-        fields.insert("units".into(), json!(units));
-    }
-    Ok(v.to_string())
-}
-
 /// Checks a quadric chain's links and assembly mode.
 #[pyfunction]
 fn check_quadric(links: [f64; 4], mode: &str) -> PyResult<()> {
@@ -75,55 +64,6 @@ fn check_slot(crank: f64, rod: f64, offset: f64, rho: f64) -> PyResult<()> {
 #[pyfunction]
 fn check_inversion(crank: f64, rod: f64, offset: f64, n: u32) -> PyResult<()> {
     inverted(crank, rod, offset, n).map(|_| ())
-}
-
-/// `analyze --links A,B,C,D --assembly MODE --json` at one angle.
-#[pyfunction]
-fn quadric_at(
-    links: [f64; 4],
-    mode: &str,
-    degrees: f64,
-    omega: f64,
-    unit: &str,
-    force_unit: &str,
-) -> PyResult<String> {
-    let q = quadric(links)?;
-    let v = quadric_json(&q, assembly(mode)?, degrees, omega);
-    with_units(v, unit, force_unit)
-}
-
-/// `analyze --slot-radius RHO --json` at one angle.
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-fn slot_at(
-    crank: f64,
-    rod: f64,
-    offset: f64,
-    rho: f64,
-    degrees: f64,
-    omega: f64,
-    unit: &str,
-    force_unit: &str,
-) -> PyResult<String> {
-    let chain = slot(crank, rod, offset, rho)?;
-    with_units(slot_json(&chain, degrees, omega), unit, force_unit)
-}
-
-/// `analyze --inversion N --json` at one angle.
-#[pyfunction]
-#[allow(clippy::too_many_arguments)]
-fn inversion_at(
-    crank: f64,
-    rod: f64,
-    offset: f64,
-    n: u32,
-    degrees: f64,
-    omega: f64,
-    unit: &str,
-    force_unit: &str,
-) -> PyResult<String> {
-    let chain = inverted(crank, rod, offset, n)?;
-    with_units(inversion_json(&chain, degrees, omega), unit, force_unit)
 }
 
 /// One row of a chain's check: name, worst scaled difference, κ there,
@@ -183,9 +123,6 @@ pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(check_quadric, m)?)?;
     m.add_function(wrap_pyfunction!(check_slot, m)?)?;
     m.add_function(wrap_pyfunction!(check_inversion, m)?)?;
-    m.add_function(wrap_pyfunction!(quadric_at, m)?)?;
-    m.add_function(wrap_pyfunction!(slot_at, m)?)?;
-    m.add_function(wrap_pyfunction!(inversion_at, m)?)?;
     m.add_function(wrap_pyfunction!(chain_check, m)?)?;
     Ok(())
 }

@@ -14,16 +14,18 @@ use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use slider_crank::animate::{Animation, AnimationFormat};
 use slider_crank::catalogue::{FigureOptions, FigureRequest};
-use slider_crank::construct::{Graphical, Reading};
+use slider_crank::construct::Graphical;
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::gallery::Gallery;
-use slider_crank::handout::{DynamicsAsk, Handout};
+use slider_crank::handout::HandoutRequest;
 use slider_crank::lists::{Angles, parse_list};
 use slider_crank::render::{
     FileFormat, TikzOptions, no_link_at_derived, to_pdf, to_png, to_svg, to_tikz, write_atomic,
     write_atomic_all,
 };
-use slider_crank::table::{DEFAULT_MAX_CELLS, TableName, TableRequest};
+use slider_crank::table::{
+    AnalyzeRequest, DEFAULT_MAX_CELLS, GivenEngine, TableName, TableRequest,
+};
 use slider_crank::{
     Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Spelling, Unit, Units,
     Wording,
@@ -127,26 +129,83 @@ fn crank_speed(rpm: Option<f64>, omega: Option<f64>) -> PyResult<f64> {
     omega.map_err(py_err)
 }
 
-/// The object `analyze --json` prints at one angle, as JSON text.
+/// The object `analyze --json` prints at one angle (`angle`, 45° when
+/// not given), as JSON text: each keyword the field of the library's
+/// request of that name (`None`: the command's default), checked and
+/// planned by the library as the command line's flags are
+/// ([`AnalyzeRequest::plan`]), refused in the command line's words with
+/// the fields spelt as keywords.
 #[pyfunction]
-#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, torque=None, friction=0.0))]
+#[pyo3(signature = (crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
+    torque=None, friction=None, unit=None, force_unit=None, mass=None, rod_mass=None,
+    rod_cg=None, rod_gyration=None, gas_force=None, indicator=None, bore=None,
+    slot_radius=None, links=None, assembly=None, inversion=None, max_cells=DEFAULT_MAX_CELLS))]
 #[allow(clippy::too_many_arguments)]
 fn analyze(
-    crank: f64,
-    rod: f64,
-    offset: f64,
-    unit: &str,
-    force_unit: &str,
-    degrees: f64,
-    omega: f64,
+    crank: Option<f64>,
+    rod: Option<f64>,
+    offset: Option<f64>,
+    angle: Option<f64>,
+    rpm: Option<f64>,
+    omega: Option<f64>,
     torque: Option<f64>,
-    friction: f64,
+    friction: Option<f64>,
+    unit: Option<&str>,
+    force_unit: Option<&str>,
+    mass: Option<f64>,
+    rod_mass: Option<f64>,
+    rod_cg: Option<f64>,
+    rod_gyration: Option<f64>,
+    gas_force: Option<f64>,
+    indicator: Option<PathBuf>,
+    bore: Option<f64>,
+    slot_radius: Option<f64>,
+    links: Option<[f64; 4]>,
+    assembly: Option<&str>,
+    inversion: Option<u32>,
+    max_cells: u64,
 ) -> PyResult<String> {
-    let m = engine(crank, rod, offset)?;
-    let units = units(unit, force_unit)?;
-    let pose = m.pose(Angle::from_degrees(degrees).map_err(py_err)?);
-    let reading = Reading::new(&pose, omega, torque, friction).map_err(py_err)?;
-    Ok(reading.to_json(&m, &units).to_string())
+    let angle = angle.map(|a| [a]);
+    let mut r = AnalyzeRequest::default();
+    (r.crank, r.rod, r.offset) = (crank, rod, offset);
+    r.angles = angle.as_ref().map(|a| Angles::List(a));
+    (r.rpm, r.omega, r.torque, r.friction) = (rpm, omega, torque, friction);
+    r.unit = unit.map(parse::<Unit>).transpose()?;
+    r.force_unit = force_unit.map(parse::<Unit>).transpose()?;
+    r.engine = given_engine(
+        mass,
+        (rod_mass, rod_cg, rod_gyration),
+        gas_force,
+        indicator,
+        bore,
+    );
+    (r.slot_radius, r.links, r.inversion) = (slot_radius, links, inversion);
+    r.assembly = assembly.map(parse).transpose()?;
+    r.max_cells = max_cells;
+    let plan = r.plan().map_err(py_err)?;
+    let degrees = plan.angles().iter().next().unwrap_or(0.0);
+    let json = plan.json_at(degrees).map_err(py_err)?;
+    serde_json::to_string(&json).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
+/// The engine of a request the keywords give, the one place the package
+/// fills it (`analyze` and `table` alike).
+fn given_engine(
+    mass: Option<f64>,
+    (rod_mass, rod_cg, rod_gyration): (Option<f64>, Option<f64>, Option<f64>),
+    gas_force: Option<f64>,
+    indicator: Option<PathBuf>,
+    bore: Option<f64>,
+) -> GivenEngine {
+    GivenEngine {
+        mass,
+        rod_mass,
+        rod_cg,
+        rod_gyration,
+        gas_force,
+        indicator,
+        bore,
+    }
 }
 
 /// The rows `sweep` fills: the six analytic values, then the four
@@ -158,8 +217,9 @@ const GRAPHICAL_ROWS: usize = 4;
 /// position, velocity, acceleration, rod angle (degrees), rod angular
 /// velocity and acceleration, and with 10 rows also the velocity,
 /// acceleration and rod rates read off the constructions. The GIL is
-/// released while it computes. Errors with the first bad angle's message
-/// (nothing is promised of `out` then).
+/// released while it computes. Errors with the first angle that is not
+/// finite, in the words of `analyze --angle` (nothing is written to `out`
+/// then).
 #[pyfunction]
 fn sweep(
     py: Python<'_>,
@@ -182,6 +242,9 @@ fn sweep(
         return Err(PyValueError::new_err("out and thetas differ in length"));
     }
     let thetas = thetas.as_slice()?;
+    // The first angle that is not finite, refused as `at` and the command
+    // line's `--angle` refuse it.
+    Angles::List(thetas).check().map_err(py_err)?;
     let out = out.as_slice_mut()?;
     py.detach(|| fill(&m, omega, thetas, out, graphical))
         .map_err(py_err)
@@ -454,63 +517,47 @@ fn save(py: Python<'_>, svg: &str, path: PathBuf) -> PyResult<()> {
 }
 
 /// The teaching page `slider-crank handout` writes (`which` = "page"),
-/// or its exercise sheet ("exercise") or answer key ("key"), as HTML;
-/// with `mass` (and the coefficient of fluctuation of speed
-/// `fluctuation`, 0.02 when not given, and the gas force: `gas_force`, or
-/// the indicator diagram read from the CSV file `indicator` on the bore
-/// `bore`, else the example's in ft and lbf) the page works the engine's
-/// dynamics too, as `--mass` … `--bore` do, and an exercise the forces
-/// at its pose. The options are filled into the library's request and
-/// refused in its words, naming these keywords.
+/// or its exercise sheet ("exercise") or answer key ("key"), as HTML:
+/// each keyword the field of the library's request of that name
+/// (`None`: the handout's own), made into the handout by the library as
+/// the command line's flags are ([`HandoutRequest::handout`]) and
+/// refused in its words, naming these keywords. With `mass` the page
+/// works the engine's dynamics too, as `--mass` … `--bore` do, and an
+/// exercise the forces at its pose.
 #[pyfunction]
-#[pyo3(signature = (crank, rod, offset, unit, force_unit, degrees, omega, which, paper="a4", torque=None, friction=0.0, mass=None, fluctuation=None, gas_force=None, indicator=None, bore=None))]
+#[pyo3(signature = (which, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
+    unit=None, force_unit=None, torque=None, friction=None, mass=None, fluctuation=None,
+    gas_force=None, indicator=None, bore=None, paper=None))]
 #[allow(clippy::too_many_arguments)]
 fn handout(
     py: Python<'_>,
-    crank: f64,
-    rod: f64,
-    offset: f64,
-    unit: &str,
-    force_unit: &str,
-    degrees: f64,
-    omega: f64,
     which: &str,
-    paper: &str,
+    crank: Option<f64>,
+    rod: Option<f64>,
+    offset: Option<f64>,
+    angle: Option<f64>,
+    rpm: Option<f64>,
+    omega: Option<f64>,
+    unit: Option<&str>,
+    force_unit: Option<&str>,
     torque: Option<f64>,
-    friction: f64,
+    friction: Option<f64>,
     mass: Option<f64>,
     fluctuation: Option<f64>,
     gas_force: Option<f64>,
     indicator: Option<PathBuf>,
     bore: Option<f64>,
+    paper: Option<&str>,
 ) -> PyResult<String> {
-    let mut h = Handout::new(
-        engine(crank, rod, offset)?,
-        Angle::from_degrees(degrees).map_err(py_err)?,
-    )
-    .with_omega(omega)
-    .map_err(py_err)?
-    .with_units(units(unit, force_unit)?)
-    .with_paper(parse(paper)?);
-    if let Some(t) = torque {
-        h = h.with_torque(t, friction).map_err(py_err)?;
-    }
-    let indicator = match &indicator {
-        Some(path) => Some((
-            read_text(path, MAX_DATA_BYTES, Input::Indicator).map_err(py_err)?,
-            path.display().to_string(),
-        )),
-        None => None,
-    };
-    let h = h
-        .with_dynamics_asked(&DynamicsAsk {
-            mass,
-            fluctuation,
-            gas_force,
-            indicator,
-            bore,
-        })
-        .map_err(py_err)?;
+    let mut r = HandoutRequest::default();
+    (r.crank, r.rod, r.offset, r.angle) = (crank, rod, offset, angle);
+    (r.rpm, r.omega, r.torque, r.friction) = (rpm, omega, torque, friction);
+    r.unit = unit.map(parse::<Unit>).transpose()?;
+    r.force_unit = force_unit.map(parse::<Unit>).transpose()?;
+    (r.mass, r.fluctuation, r.gas_force) = (mass, fluctuation, gas_force);
+    (r.indicator, r.bore) = (indicator, bore);
+    r.paper = paper.map(parse).transpose()?;
+    let h = r.handout().map_err(py_err)?;
     py.detach(|| match which {
         "exercise" => h.exercise(),
         "key" => h.key(),
@@ -585,8 +632,13 @@ fn table(
     r.decimals = decimals;
     r.unit = unit.map(parse::<Unit>).transpose()?;
     r.force_unit = force_unit.map(parse::<Unit>).transpose()?;
-    (r.mass, r.rod_mass, r.rod_cg, r.rod_gyration) = (mass, rod_mass, rod_cg, rod_gyration);
-    (r.gas_force, r.indicator, r.bore) = (gas_force, indicator, bore);
+    r.engine = given_engine(
+        mass,
+        (rod_mass, rod_cg, rod_gyration),
+        gas_force,
+        indicator,
+        bore,
+    );
     (r.phases, r.fluctuation, r.flywheel) = (phases, fluctuation, flywheel);
     (r.cranks, r.planes, r.order, r.fractions) = (cranks, planes, order, fractions);
     (r.wheel, r.speed, r.load, r.axes) = (wheel, speed, load, axes);

@@ -178,13 +178,14 @@ def test_bad_chains_carry_the_command_lines_message(cli: Cli, call: Callable[[],
 
 
 def test_numbers_that_are_not_finite() -> None:
-    """The command line refuses them as text; here the library's check
-    names the value."""
+    """The library's check names the value; an angle is refused by the
+    request of ``analyze`` in the command line's words (``analyze
+    --angle inf``)."""
     with pytest.raises(ValueError, match="crank must be a finite number, got NaN"):
         sc.QuadricChain(math.nan, 3, 2.5, 3)
-    with pytest.raises(ValueError, match="angle must be a finite number, got inf"):
+    with pytest.raises(ValueError, match="invalid angle 'inf': the angle must be a finite"):
         sc.QuadricChain(1, 3, 2.5, 3).at(math.inf)
-    with pytest.raises(ValueError, match="angle must be a finite number, got NaN"):
+    with pytest.raises(ValueError, match="invalid angle 'NaN': the angle must be a finite"):
         sc.SliderCrank(0.5, 1.5).inversion(3).at(math.nan)
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import inspect
+import json
 from typing import Any, Dict, List
 
 import pytest
@@ -136,3 +137,72 @@ def test_a_table_keyword_does_as_its_flag(
     assert text == cli.stdout(args)
     if case["outcome"] == "default":
         assert text == sc.table(name, **table_keywords(given))
+
+
+with open(REPO / "tests/options/analyze.csv", newline="", encoding="utf-8") as _f:
+    ANALYZE_CASES: List[Dict[str, str]] = list(csv.DictReader(_f))
+
+#: The keywords of the request of ``analyze`` whose values are whole
+#: numbers, text, and the four links (the rest are numbers).
+ANALYZE_COUNTS = {"inversion", "max_cells"}
+ANALYZE_TEXTS = {"unit", "force_unit", "indicator", "assembly"}
+
+
+def analyze_value(keyword: str, text: str) -> Any:
+    """An option of ``analyze`` as the keyword takes it."""
+    if keyword == "links":
+        return tuple(float(x) for x in text.split(","))
+    if keyword in ANALYZE_COUNTS:
+        return int(text)
+    if keyword in ANALYZE_TEXTS:
+        return text
+    return float(text)
+
+
+def analyze_keywords(flags: List[str]) -> Dict[str, Any]:
+    """The keywords of the flags ``--flag=value``."""
+    out = {}
+    for f in flags:
+        flag, text = f.split("=", 1)
+        keyword = flag[2:].replace("-", "_")
+        out[keyword] = analyze_value(keyword, text)
+    return out
+
+
+def test_every_keyword_of_analyze_is_in_the_table() -> None:
+    # The package's classes fill the request of ``analyze`` through the
+    # native ``analyze`` (SliderCrank.at, its curved_slot and inversion,
+    # QuadricChain.at): every keyword of it is an option of the table.
+    named = set(inspect.signature(sc._core.analyze).parameters)
+    assert named == {c["keyword"] for c in ANALYZE_CASES}
+    for case in ANALYZE_CASES:
+        assert case["keyword"] == case["flag"][2:].replace("-", "_"), case
+
+
+@pytest.mark.parametrize(
+    "case", ANALYZE_CASES, ids=lambda c: f"{c['with']} {c['flag']}={c['value']}"
+)
+def test_an_analyze_keyword_does_as_its_flag(
+    cli: Cli, case: Dict[str, str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(REPO)
+    given = case["with"].split()
+    flags = [*given, f"{case['flag']}={case['value']}"]
+    options = analyze_keywords(flags)
+    args = ["analyze", "--json", *flags]
+    if case["outcome"] == "refused":
+        message = keywords(cli.error(args))
+        with pytest.raises((ValueError, OSError)) as caught:
+            sc._core.analyze(**options)
+        said = str(caught.value)
+        if "invalid value '" in message:
+            # The command line's parser refused it: the package names the
+            # value in the library's words.
+            assert case["value"] in said, (said, message)
+        else:
+            assert said in message, (said, message)
+        return
+    got = json.loads(sc._core.analyze(**options))
+    assert got == json.loads(cli.stdout(args))
+    if case["outcome"] == "default":
+        assert got == json.loads(sc._core.analyze(**analyze_keywords(given)))

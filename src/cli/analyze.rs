@@ -1,20 +1,21 @@
 //! `slider-crank analyze`: exact and graphical values at one or more angles.
 
-use super::args::{AngleSpec, GuardArgs, LoadArgs, MechanismArgs, SpeedArgs, UnitArgs};
+use super::args::{AngleSpec, GivenMechanismArgs, GuardArgs, LoadArgs, SpeedArgs, UnitArgs};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::analytic::statics::Friction;
 use slider_crank::construct::{Reading, Statics};
-use slider_crank::dynamics::{Engine, EnginePose};
 use slider_crank::geom::Point;
+use slider_crank::lists::Angles;
 use slider_crank::render::plain;
-use slider_crank::{Angle, Error, Input, Result, SliderCrank, Units};
+use slider_crank::table::{Analysis, AnalyzePlan, AnalyzeRequest};
+use slider_crank::{Angle, Error, Result, SliderCrank, Units};
 
 /// Analyse the mechanism at one angle or a sweep of angles.
 #[derive(Debug, Args)]
 pub struct AnalyzeArgs {
     #[command(flatten)]
-    pub mechanism: MechanismArgs,
+    pub mechanism: GivenMechanismArgs,
     /// Crank angle θ in degrees, counter-clockwise from +x, the direction
     /// from the crank centre towards the slider (0: outer dead centre): one
     /// angle, a list 0,30,60 or a range START:STOP:STEP (STOP included)
@@ -44,23 +45,6 @@ pub struct AnalyzeArgs {
     pub engine: super::dynamics::EngineArgs,
 }
 
-/// The numbers written for one angle, the columns of `--max-cells`: the
-/// mechanism (3), angle and ω (2), eight points (16), the analytic (6) and
-/// graphical (4) values, the polygons (27: seven vectors and seven
-/// numbers, and a point off the rod: along, across and its two images), Ritterhaus's (7: three points and CG) and Bennett's (9: four
-/// points and CG) constructions and six virtual centres (12).
-const VALUES_PER_ANGLE: u64 = 86;
-
-/// What `--torque` adds to [`VALUES_PER_ANGLE`]: the seven statics.
-const STATICS_VALUES: u64 = 7;
-
-/// Everything computed at one angle: the reading ([`Reading::json`]
-/// adds the six virtual centres) and, with masses, the engine's forces.
-struct Report<'a> {
-    reading: Reading,
-    dynamics: Option<(&'a Engine, EnginePose)>,
-}
-
 /// +0.0 for −0.0, so that no "-0" is printed.
 fn num(x: f64) -> f64 {
     x + 0.0
@@ -83,46 +67,6 @@ fn column(x: f64) -> String {
     format!("{:>20}", format!(" {}", fixed(x, 10, 0)))
 }
 
-fn analyse<'a>(
-    m: &SliderCrank,
-    degrees: f64,
-    omega: f64,
-    torque: Option<f64>,
-    mu: f64,
-    engine: Option<&'a Engine>,
-) -> Result<Report<'a>> {
-    let angle = Angle::from_degrees(degrees)?;
-    let pose = m.pose(angle);
-    Ok(Report {
-        reading: Reading::new(&pose, omega, torque, mu)?,
-        dynamics: engine.map(|e| Ok((e, e.at(angle)?))).transpose()?,
-    })
-}
-
-/// A report as the JSON object `analyze --json` prints, serialised
-/// where it is written ([`Reading::json`]; the engine's dynamics, when
-/// asked for, as `table::dynamics_json` builds them).
-struct ReportJson<'a> {
-    mechanism: &'a SliderCrank,
-    report: Report<'a>,
-    units: &'a Units,
-}
-
-impl serde::Serialize for ReportJson<'_> {
-    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
-        let r = &self.report;
-        let json = r.reading.json(self.mechanism, self.units);
-        match &r.dynamics {
-            Some((engine, at)) => {
-                let angle = r.reading.pose.angle();
-                let dynamics = slider_crank::table::dynamics_json(engine, at, angle, self.units);
-                json.with_dynamics(&dynamics).serialize(s)
-            }
-            None => json.serialize(s),
-        }
-    }
-}
-
 fn fmt_point(p: Option<Point>) -> String {
     match p {
         Some(p) => format!("({}, {})", fixed(p.x, 6, 0), fixed(p.y, 6, 0)),
@@ -130,10 +74,19 @@ fn fmt_point(p: Option<Point>) -> String {
     }
 }
 
-/// The text `analyze` prints for one angle: the points, the values
-/// analytic beside graphical, and the statics and dynamics when asked for.
-fn to_text(report: &Report, units: &Units) -> String {
-    let r = &report.reading;
+/// The text `analyze` prints for the engine at one angle: the points,
+/// the values analytic beside graphical, and the statics and dynamics
+/// when asked for; for a chain, one `key.sub = value` line per number.
+fn to_text(analysis: &Analysis, units: &Units) -> String {
+    let (r, dynamics) = match analysis {
+        Analysis::Engine(e) => (&e.reading, &e.dynamics),
+        Analysis::Chain(values) => {
+            let mut text = String::new();
+            super::chain::flatten("", values, &mut text);
+            text.push('\n');
+            return text;
+        }
+    };
     let length = units.length();
     let mut out = format!("θ = {}°\n", plain(r.pose.angle().degrees()));
     out.push_str(&format!(
@@ -157,7 +110,7 @@ fn to_text(report: &Report, units: &Units) -> String {
     if let Some(s) = &r.statics {
         statics_text(s, units, &mut out);
     }
-    if let Some((engine, at)) = &report.dynamics {
+    if let Some((engine, at)) = dynamics {
         out.push_str(&super::dynamics::to_text(engine, at, r.pose.angle(), units));
     }
     out
@@ -259,18 +212,6 @@ fn statics_text(s: &Statics, units: &Units, out: &mut String) {
     ));
 }
 
-/// The reports at every angle of `spec`, computed as they are used.
-fn reports<'a>(
-    m: &'a SliderCrank,
-    spec: &'a AngleSpec,
-    omega: f64,
-    args: &'a AnalyzeArgs,
-    engine: Option<&'a Engine>,
-) -> impl Iterator<Item = Result<Report<'a>>> + 'a {
-    spec.iter()
-        .map(move |d| analyse(m, d, omega, args.load.torque, args.load.friction, engine))
-}
-
 /// The object `analyze --json` prints for the mechanism `m` at `degrees`
 /// turning at `omega` (no torque, no engine masses): the values the
 /// explorer sets beside its figure.
@@ -281,16 +222,8 @@ pub fn json_at(
     omega: f64,
     units: &Units,
 ) -> Result<serde_json::Value> {
-    let json = ReportJson {
-        mechanism: m,
-        report: analyse(m, degrees, omega, None, 0.0, None)?,
-        units,
-    };
-    serde_json::to_value(&json).map_err(|e| Error::Io {
-        message: e.to_string(),
-        path: None,
-        source: Some(std::sync::Arc::new(e.into())),
-    })
+    let pose = m.pose(Angle::from_degrees(degrees)?);
+    Ok(Reading::new(&pose, omega, None, 0.0)?.to_json(m, units))
 }
 
 fn pretty(value: &impl serde::Serialize) -> Result<String> {
@@ -301,30 +234,27 @@ fn pretty(value: &impl serde::Serialize) -> Result<String> {
     })
 }
 
-/// The flags the chain's flags refuse (a torque, the engine's masses),
-/// and the request's size against `--max-cells`.
-fn refuse_or_guard(args: &AnalyzeArgs) -> Result<()> {
-    if args.chain.is_set() && args.load.torque.is_some() {
-        return Err(Error::invalid(
-            Input::Options,
-            "--torque applies to the engine only, not with --slot-radius, --links or --inversion"
-                .into(),
-        ));
-    }
-    if args.chain.is_set() {
-        super::dynamics::refuse_with_chain(&args.engine)?;
-    }
-    let angles = AngleSpec::parse(&args.angle)?.len();
-    let statics = if args.load.torque.is_some() {
-        STATICS_VALUES
-    } else {
-        0
-    };
-    args.guard.check(
-        "analyze",
-        (angles, &format!("{angles} angles")),
-        (VALUES_PER_ANGLE + statics, "values each"),
-    )
+/// The request the flags make ([`AnalyzeRequest`]): the angles and the
+/// links parsed, the rest as given.
+fn request(args: &AnalyzeArgs) -> Result<AnalyzeRequest<'static>> {
+    let mut r = AnalyzeRequest::default();
+    let m = &args.mechanism;
+    (r.crank, r.rod, r.offset) = (m.crank, m.rod, m.offset);
+    r.angles = Some(Angles::Spec(AngleSpec::parse(&args.angle)?));
+    (r.rpm, r.omega) = (args.speed.rpm, args.speed.omega);
+    // `--friction` is refused without `--torque`, its default 0 the
+    // request's own.
+    r.torque = args.load.torque;
+    r.friction = r.torque.and(Some(args.load.friction));
+    (r.unit, r.force_unit) = (args.units.length.clone(), args.units.force.clone());
+    r.engine = args.engine.given();
+    let chain = &args.chain;
+    r.slot_radius = chain.slot_radius;
+    r.links = chain.links()?;
+    r.assembly = chain.links.as_ref().map(|_| chain.assembly());
+    r.inversion = chain.inversion;
+    r.max_cells = args.guard.max_cells;
+    Ok(r)
 }
 
 /// Runs the subcommand. Rows are computed twice, never all held: a first
@@ -332,52 +262,36 @@ fn refuse_or_guard(args: &AnalyzeArgs) -> Result<()> {
 /// prints the angles a chunk at a time, both on every core
 /// ([`super::stream`]).
 pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
-    let m = args.mechanism.mechanism()?;
-    refuse_or_guard(args)?;
-    let units = args.units.units(Units::FOOT_POUND);
-    if super::chain::analyze(
-        m,
-        &args.chain,
-        &args.speed,
-        &args.angle,
-        args.json,
-        &units,
-        out,
-    )? {
-        return Ok(());
-    }
-    let omega = args.speed.omega()?;
-    let spec = AngleSpec::parse(&args.angle)?;
-    let engine = args.engine.given().engine(m, omega, &units)?;
-    let engine = engine.as_ref();
-    let (torque, mu) = (args.load.torque, args.load.friction);
-    let at = |d: f64| analyse(&m, d, omega, torque, mu, engine);
-    super::stream::check_all(spec.iter(), at)?;
+    let plan = request(args)?.plan()?;
+    super::stream::check_all(plan.angles().iter(), |d| plan.at(d))?;
     if args.json {
-        if !spec.is_list() {
-            if let Some(r) = reports(&m, &spec, omega, args, engine).next() {
-                let json = ReportJson {
-                    mechanism: &m,
-                    report: r?,
-                    units: &units,
-                };
-                out.text(&pretty(&json)?)?;
+        if !plan.is_list() {
+            for d in plan.angles().iter() {
+                out.text(&pretty(&plan.json_at(d)?)?)?;
                 out.text("\n")?;
             }
             return Ok(());
         }
-        let object = |d: f64| {
-            Ok(ReportJson {
-                mechanism: &m,
-                report: at(d)?,
-                units: &units,
-            })
-        };
-        super::stream::json_array(spec.iter(), object, out)?;
+        super::stream::json_array(plan.angles().iter(), |d| plan.json_at(d), out)?;
         return out.text("\n");
     }
+    if !plan.is_chain() {
+        out.text(&head(&plan))?;
+    }
+    for d in plan.angles().iter() {
+        if !plan.is_chain() {
+            out.text("\n")?;
+        }
+        out.text(&to_text(&plan.at(d)?, plan.units()))?;
+    }
+    Ok(())
+}
+
+/// The line `analyze` prints of the engine before its angles.
+fn head(plan: &AnalyzePlan) -> String {
+    let (m, omega, units) = (plan.mechanism(), plan.omega(), plan.units());
     let u = units.length();
-    out.text(&format!(
+    format!(
         "slider-crank: r = {} {u}, l = {} {u}, e = {} {u} (n = {}), ω = {} rad/s, V_c = rω = {} {}\n",
         plain(m.crank()),
         plain(m.rod()),
@@ -386,10 +300,5 @@ pub fn run(args: &AnalyzeArgs, out: &mut Stdout) -> Result<()> {
         fixed(omega, 6, 0),
         fixed(m.crank() * omega, 6, 0),
         units.velocity()
-    ))?;
-    for r in reports(&m, &spec, omega, args, engine) {
-        out.text("\n")?;
-        out.text(&to_text(&r?, &units))?;
-    }
-    Ok(())
+    )
 }

@@ -1,9 +1,8 @@
 //! Flags shared by the subcommands and the parsing of angle specifications.
 
 use clap::Args;
-use slider_crank::analytic::kinematics::{check_omega, omega_from_rpm};
 use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
-use slider_crank::{Result, SliderCrank, Unit, Units, rpm_to_omega};
+use slider_crank::{Result, SliderCrank, Unit, Units};
 
 /// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
 /// 3 ft rod: r = 0.5 ft, l = 3 ft, in line).
@@ -62,15 +61,6 @@ impl GivenMechanismArgs {
     pub fn given(&self) -> bool {
         self.crank.is_some() || self.rod.is_some() || self.offset.is_some()
     }
-
-    /// The validated mechanism, the §35 engine's lengths where not given.
-    pub fn mechanism(&self) -> Result<SliderCrank> {
-        SliderCrank::new(
-            self.crank.unwrap_or(0.5),
-            self.rod.unwrap_or(3.0),
-            self.offset.unwrap_or(0.0),
-        )
-    }
 }
 
 impl MechanismArgs {
@@ -125,17 +115,6 @@ pub struct SpeedArgs {
     pub omega: Option<f64>,
 }
 
-impl SpeedArgs {
-    /// ω in rad/s.
-    pub fn omega(&self) -> Result<f64> {
-        match (self.rpm, self.omega) {
-            (_, Some(w)) => check_omega(w),
-            (Some(n), None) => omega_from_rpm(n),
-            (None, None) => Ok(rpm_to_omega(slider_crank::sources::RPM)),
-        }
-    }
-}
-
 /// The load on the crank: `--torque` and, with it, `--friction`. The
 /// values are checked where the statics are computed.
 #[derive(Debug, Clone, Args)]
@@ -180,12 +159,6 @@ impl GuardArgs {
     /// The library's bound, set by `--max-cells`.
     pub fn bound(&self) -> MaxCells {
         MaxCells::new(self.max_cells)
-    }
-
-    /// Checks `rows` × `columns` against `--max-cells` (see
-    /// [`MaxCells::check`]).
-    pub fn check(&self, command: &str, rows: (u64, &str), columns: (u64, &str)) -> Result<()> {
-        self.bound().check(command, rows, columns)
     }
 }
 

@@ -1,19 +1,16 @@
-//! The chain of Fig. 60 on the command line: `analyze --slot-radius`,
-//! `--links`, `--inversion`, and `check` for the curved slot and the quadric
-//! chain.
+//! The chain of Fig. 60 on the command line: the flags `--slot-radius`,
+//! `--links`, `--inversion` of `analyze` (analysed by the library's
+//! request) and `check` for the curved slot and the quadric chain.
 
-use super::args::{AngleSpec, SpeedArgs};
-use super::output::Stdout;
 use clap::{Args, ValueEnum};
-use serde_json::{Value, json};
+use serde_json::Value;
 use slider_crank::chain::{
     CylindricChain, InvertedChain, QuadricChain, coriolis_sweep, quadric_sweep, slot_sweep,
 };
 use slider_crank::table::{
-    chain_check_report, coriolis_check_title, inversion_json, quadric_check_title, quadric_json,
-    slot_check_title, slot_json,
+    chain_check_report, coriolis_check_title, quadric_check_title, slot_check_title,
 };
-use slider_crank::{Assembly, Error, Input, Inversion, Result, SliderCrank, Units};
+use slider_crank::{Assembly, Error, Input, Inversion, Result, SliderCrank};
 
 /// The chain flags shared by `analyze` and `check`.
 #[derive(Debug, Clone, Args)]
@@ -59,106 +56,41 @@ pub enum AssemblyArg {
 }
 
 impl ChainArgs {
-    /// Whether any chain flag asks for something other than the engine.
-    pub fn is_set(&self) -> bool {
-        self.slot_radius.is_some() || self.links.is_some() || self.inversion.is_some()
-    }
-
-    fn quadric(&self) -> Result<Option<(QuadricChain, Assembly)>> {
+    /// The four lengths `--links` gives, `None` without it.
+    pub fn links(&self) -> Result<Option<[f64; 4]>> {
         let Some(spec) = &self.links else {
             return Ok(None);
         };
         let v = super::args::parse_list(spec, "link length", false)?;
-        let [a, b, c, d] = v[..] else {
-            return Err(Error::invalid(
+        match v[..] {
+            [a, b, c, d] => Ok(Some([a, b, c, d])),
+            _ => Err(Error::invalid(
                 Input::Links,
                 format!(
                     "invalid --links '{spec}': expected four lengths a,b,c,d (crank, coupler, lever, frame)"
                 ),
-            ));
-        };
-        let mode = match self.assembly {
+            )),
+        }
+    }
+
+    /// The assembly mode `--assembly` names.
+    pub fn assembly(&self) -> Assembly {
+        match self.assembly {
             AssemblyArg::Open => Assembly::Open,
             AssemblyArg::Crossed => Assembly::Crossed,
-        };
-        Ok(Some((QuadricChain::new(a, b, c, d)?, mode)))
+        }
     }
-}
 
-/// `analyze` for the chain flags: `Ok(false)` when none is given. As for
-/// the engine, rows are computed twice, never held: a first pass finds any
-/// error (so that nothing is printed then), the second prints each angle.
-pub fn analyze(
-    m: SliderCrank,
-    chain: &ChainArgs,
-    speed: &SpeedArgs,
-    angle_spec: &str,
-    as_json: bool,
-    units: &Units,
-    out: &mut Stdout,
-) -> Result<bool> {
-    if !chain.is_set() {
-        return Ok(false);
-    }
-    let omega = speed.omega()?;
-    let spec = AngleSpec::parse(angle_spec)?;
-    let values: Box<dyn Fn(f64) -> Result<Value>> = if let Some(rho) = chain.slot_radius {
-        let slot = CylindricChain::new(m, rho)?;
-        Box::new(move |d| slot_json(&slot, d, omega))
-    } else if let Some((q, mode)) = chain.quadric()? {
-        Box::new(move |d| quadric_json(&q, mode, d, omega))
-    } else {
-        // `is_set` with neither of the others: the inversion is given.
-        let n = chain.inversion.unwrap_or(1);
-        let inv = InvertedChain::new(m, Inversion::from_number(n)?);
-        Box::new(move |d| inversion_json(&inv, d, omega))
-    };
-    let one = |d: f64| -> Result<Value> {
-        let mut v = values(d)?;
-        if let Some(fields) = v.as_object_mut() {
-            fields.insert("units".into(), json!(units));
+    fn quadric(&self) -> Result<Option<(QuadricChain, Assembly)>> {
+        match self.links()? {
+            Some([a, b, c, d]) => Ok(Some((QuadricChain::new(a, b, c, d)?, self.assembly()))),
+            None => Ok(None),
         }
-        Ok(v)
-    };
-    for d in spec.iter() {
-        one(d)?;
     }
-    let pretty = |v: &Value| {
-        serde_json::to_string_pretty(v).map_err(|e| Error::Io {
-            message: e.to_string(),
-            path: None,
-            source: Some(std::sync::Arc::new(e.into())),
-        })
-    };
-    if as_json {
-        if !spec.is_list() {
-            for d in spec.iter() {
-                out.text(&pretty(&one(d)?)?)?;
-                out.text("\n")?;
-            }
-            return Ok(true);
-        }
-        out.text("[")?;
-        for (i, d) in spec.iter().enumerate() {
-            out.text(if i == 0 { "\n" } else { ",\n" })?;
-            let text = pretty(&one(d)?)?;
-            let lines: Vec<String> = text.lines().map(|l| format!("  {l}")).collect();
-            out.text(&lines.join("\n"))?;
-        }
-        out.text("\n]\n")?;
-        return Ok(true);
-    }
-    for d in spec.iter() {
-        let mut text = String::new();
-        flatten("", &one(d)?, &mut text);
-        text.push('\n');
-        out.text(&text)?;
-    }
-    Ok(true)
 }
 
 /// One `key.sub = value` line per number, for the text output.
-fn flatten(prefix: &str, v: &Value, out: &mut String) {
+pub fn flatten(prefix: &str, v: &Value, out: &mut String) {
     match v {
         Value::Object(map) => {
             for (k, x) in map {

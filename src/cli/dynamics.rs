@@ -5,7 +5,7 @@ use clap::Args;
 use slider_crank::dynamics::{Engine, EnginePose, unbalanced_forces};
 use slider_crank::render::plain;
 use slider_crank::table::{GivenEngine, mass_unit};
-use slider_crank::{Angle, Error, Input, Result, Units};
+use slider_crank::{Angle, Units};
 use std::path::PathBuf;
 
 /// The engine's masses and gas force. Any of them adds the dynamics.
@@ -67,24 +67,20 @@ pub struct EngineArgs {
 }
 
 impl EngineArgs {
-    /// The fields of the one engine every request builds; its
+    /// The request's engine these flags give, the one place the command
+    /// line fills it (`table` and `analyze` alike); its
     /// [`GivenEngine::engine`] is the engine asked for, `None` without a
     /// dynamics flag.
-    pub fn given(&self) -> GivenEngine<'_> {
+    pub fn given(&self) -> GivenEngine {
         GivenEngine {
             mass: self.mass,
             rod_mass: self.rod_mass,
             rod_cg: self.rod_cg,
             rod_gyration: self.rod_gyration,
             gas_force: self.gas_force,
-            indicator: self.indicator.as_deref(),
+            indicator: self.indicator.clone(),
             bore: self.bore,
         }
-    }
-
-    /// Whether any dynamics flag was given.
-    pub fn is_set(&self) -> bool {
-        self.given().is_given()
     }
 }
 
@@ -202,14 +198,4 @@ fn number(x: f64) -> String {
     } else {
         format!("{:.10}", x + 0.0)
     }
-}
-
-/// Refuses the dynamics flags where they do not apply.
-pub fn refuse_with_chain(args: &EngineArgs) -> Result<()> {
-    if args.is_set() {
-        return Err(Error::invalid(Input::Options,
-            "--mass, --rod-mass, --gas-force and --indicator apply to the engine only, not with --slot-radius, --links or --inversion".into(),
-        ));
-    }
-    Ok(())
 }

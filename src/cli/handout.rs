@@ -6,10 +6,9 @@
 use super::args::{GivenMechanismArgs, LoadArgs, SpeedArgs, UnitArgs};
 use super::output::{Progress, Stdout};
 use clap::Args;
-use slider_crank::files::{MAX_DATA_BYTES, read_text};
-use slider_crank::handout::{Class, DynamicsAsk, Handout, Paper};
+use slider_crank::handout::{Class, Handout, HandoutRequest, Paper};
 use slider_crank::render::{no_link_at_derived, write_atomic_all};
-use slider_crank::{Angle, Error, Input, Result, Units};
+use slider_crank::{Error, Input, Result};
 use std::path::{Path, PathBuf};
 
 /// Write a teaching handout, an exercise sheet with its key, or a class's
@@ -140,34 +139,29 @@ fn write_all(files: &[(PathBuf, String)], progress: Option<&mut Progress>) -> Re
     })
 }
 
+/// The request the flags make ([`HandoutRequest`]): each as given,
+/// `--fluctuation` only with `--mass` and `--friction` only with
+/// `--torque` (their defaults the request's own).
+fn request(args: &HandoutArgs) -> HandoutRequest {
+    let m = &args.mechanism;
+    let mut r = HandoutRequest::default();
+    (r.crank, r.rod, r.offset) = (m.crank, m.rod, m.offset);
+    r.angle = Some(args.angle);
+    (r.rpm, r.omega) = (args.speed.rpm, args.speed.omega);
+    (r.unit, r.force_unit) = (args.units.length.clone(), args.units.force.clone());
+    r.torque = args.load.torque;
+    r.friction = r.torque.and(Some(args.load.friction));
+    r.mass = args.mass;
+    r.fluctuation = args.mass.and(Some(args.fluctuation));
+    (r.gas_force, r.indicator, r.bore) = (args.gas_force, args.indicator.clone(), args.bore);
+    r.paper = Some(args.paper);
+    r
+}
+
 /// The handout the flags ask for (of one engine; the exercise and the
 /// class are drawn from it).
 pub fn template(args: &HandoutArgs) -> Result<Handout> {
-    let units = args.units.units(Units::FOOT_POUND);
-    let mut template = Handout::new(
-        args.mechanism.mechanism()?,
-        Angle::from_degrees(args.angle)?,
-    )
-    .with_omega(args.speed.omega()?)?
-    .with_units(units)
-    .with_paper(args.paper);
-    if let Some(t) = args.load.torque {
-        template = template.with_torque(t, args.load.friction)?;
-    }
-    let indicator = match &args.indicator {
-        Some(path) => Some((
-            read_text(path, MAX_DATA_BYTES, Input::Indicator)?,
-            path.display().to_string(),
-        )),
-        None => None,
-    };
-    template.with_dynamics_asked(&DynamicsAsk {
-        mass: args.mass,
-        fluctuation: args.mass.map(|_| args.fluctuation),
-        gas_force: args.gas_force,
-        indicator,
-        bore: args.bore,
-    })
+    request(args).handout()
 }
 
 /// Runs the subcommand: the files written; nothing on standard output.

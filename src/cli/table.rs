@@ -229,10 +229,7 @@ fn request(args: &TableArgs) -> Result<TableRequest<'static>> {
     (r.rpm, r.omega) = (args.rpm, args.omega);
     (r.torque, r.friction, r.decimals) = (args.torque, args.friction, args.decimals);
     (r.unit, r.force_unit) = (args.units.length.clone(), args.units.force.clone());
-    let e = &args.engine;
-    (r.mass, r.rod_mass, r.rod_cg) = (e.mass, e.rod_mass, e.rod_cg);
-    (r.rod_gyration, r.gas_force) = (e.rod_gyration, e.gas_force);
-    (r.indicator, r.bore) = (e.indicator.clone(), e.bore);
+    r.engine = args.engine.given();
     r.phases = list(&args.turn.phases, "phase")?;
     (r.fluctuation, r.flywheel) = (args.turn.fluctuation, args.turn.flywheel);
     r.cranks = list(&args.cranks, "crank angle")?;

@@ -46,6 +46,10 @@ pub enum Field {
     SlotCurvature,
     /// The number of an inversion of the chain (1 to 4).
     Inversion,
+    /// The four links of a quadric crank chain, given together.
+    Links,
+    /// The assembly mode of a quadric crank chain.
+    Assembly,
     /// The crank speed ω in rad/s.
     Omega,
     /// The crank speed in revolutions per minute.
@@ -197,6 +201,8 @@ impl Field {
             Field::SlotRadiusSize => "|slot radius|",
             Field::SlotCurvature => "slot curvature",
             Field::Inversion => "inversion",
+            Field::Links => "links",
+            Field::Assembly => "assembly",
             Field::Omega => "omega",
             Field::Rpm => "rpm",
             Field::Angle => "angle",
@@ -278,6 +284,7 @@ impl Field {
             Field::GasForce => "gas_force",
             Field::MaxCells => "max_cells",
             Field::RodCg => "rod_cg",
+            Field::SlotRadius => "slot_radius",
             Field::RodMass => "rod_mass",
             Field::RodGyration => "rod_gyration",
             Field::ForceUnit => "force_unit",

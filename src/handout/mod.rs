@@ -39,12 +39,14 @@ mod exercise;
 mod figures;
 mod page;
 mod random;
+mod request;
 mod scale;
 mod steps;
 
 pub use class::{Class, MAX_CLASS};
 pub use dynamics::{DynamicsAsk, Gas};
 pub use random::SplitMix64;
+pub use request::{DEFAULT_HANDOUT_ANGLE, HandoutRequest};
 
 use crate::analytic::kinematics::check_omega;
 use crate::construct::Reading;

@@ -3,17 +3,19 @@
 //! an indicator diagram read from a file, built once for both.
 
 use crate::dynamics::{Engine, EngineParts, IndicatorText};
-use crate::error::{Input, Result};
+use crate::error::{Error, Field, Input, Result, Wording};
 use crate::files::{MAX_DATA_BYTES, read_text};
 use crate::mechanism::SliderCrank;
 use crate::units::Units;
-use std::path::Path;
+use std::path::PathBuf;
 
-/// The dynamics fields as a request holds them, each `None` where not
-/// given. The rod counts only with all three of its values (a front end
-/// refuses one without the others); the bore only with an indicator.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct GivenEngine<'p> {
+/// The dynamics fields as a request holds them ([`super::TableRequest`]'s
+/// and [`super::AnalyzeRequest`]'s `engine`), each `None` where not
+/// given; a front end fills them in one place for every request. The rod
+/// counts only with all three of its values (a request refuses one
+/// without the others); the bore only with an indicator.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct GivenEngine {
     /// The reciprocating mass m.
     pub mass: Option<f64>,
     /// The rod's mass.
@@ -25,12 +27,12 @@ pub struct GivenEngine<'p> {
     /// A constant gas force on the piston.
     pub gas_force: Option<f64>,
     /// The file of an indicator diagram.
-    pub indicator: Option<&'p Path>,
+    pub indicator: Option<PathBuf>,
     /// The cylinder's bore, the indicator diagram's.
     pub bore: Option<f64>,
 }
 
-impl GivenEngine<'_> {
+impl GivenEngine {
     /// Whether any of the fields that make an engine (mass, rod, gas
     /// force, indicator) is given.
     pub fn is_given(&self) -> bool {
@@ -38,6 +40,58 @@ impl GivenEngine<'_> {
             || self.rod_mass.is_some()
             || self.gas_force.is_some()
             || self.indicator.is_some()
+    }
+
+    /// Refuses fields given that do not go together: a constant gas
+    /// force and an indicator diagram, a part of the rod's mass without
+    /// the rest, an indicator diagram without its bore or a bore without
+    /// one; each named by its [`Field`].
+    pub fn refuse_pairs(&self) -> Result<()> {
+        refuse_both(
+            self.gas_force.is_some(),
+            self.indicator.is_some(),
+            (Field::GasForce, Field::Indicator),
+            "a constant gas force or an indicator diagram",
+        )?;
+        let rod = [
+            (Field::RodMass, self.rod_mass.is_some()),
+            (Field::RodCg, self.rod_cg.is_some()),
+            (Field::RodGyration, self.rod_gyration.is_some()),
+        ];
+        if rod.iter().any(|r| r.1) && !rod.iter().all(|r| r.1) {
+            let mut missing = Wording::default();
+            for (i, (field, _)) in rod.iter().filter(|r| !r.1).enumerate() {
+                missing = if i == 0 {
+                    missing
+                } else {
+                    missing.then(" and ")
+                }
+                .option(*field);
+            }
+            return Err(Error::refused(
+                Input::Options,
+                Wording::from("the rod's mass is given by ")
+                    .option(Field::RodMass)
+                    .then(", ")
+                    .option(Field::RodCg)
+                    .then(" and ")
+                    .option(Field::RodGyration)
+                    .then(" together: ")
+                    .and(missing)
+                    .then(" not given"),
+            ));
+        }
+        if self.indicator.is_some() != self.bore.is_some() {
+            return Err(Error::refused(
+                Input::Options,
+                Wording::from("an indicator diagram needs the cylinder's bore: give ")
+                    .option(Field::Indicator)
+                    .then(" and ")
+                    .option(Field::Bore)
+                    .then(" together"),
+            ));
+        }
+        Ok(())
     }
 
     /// The engine of `mechanism` at `omega` (rad/s) these fields ask for,
@@ -55,7 +109,7 @@ impl GivenEngine<'_> {
         if !self.is_given() {
             return Ok(None);
         }
-        let text = match self.indicator {
+        let text = match &self.indicator {
             Some(path) => Some((
                 read_text(path, MAX_DATA_BYTES, Input::Indicator)?,
                 format!("indicator diagram {}", path.display()),
@@ -81,5 +135,22 @@ impl GivenEngine<'_> {
                 }),
         };
         Ok(Some(parts.build(mechanism, omega)?))
+    }
+}
+
+/// Refuses the fields `x` and `y` given together (`a` and `b` whether
+/// each is given): give `what`, not both.
+pub(super) fn refuse_both(a: bool, b: bool, (x, y): (Field, Field), what: &str) -> Result<()> {
+    if a && b {
+        Err(Error::refused(
+            Input::Options,
+            Wording::default()
+                .option(x)
+                .then(" cannot be used with ")
+                .option(y)
+                .then(format!(": give {what}, not both")),
+        ))
+    } else {
+        Ok(())
     }
 }

@@ -1,6 +1,7 @@
 //! The printed tables: the textbook's obliquity and acceleration-factor
 //! tables, kinematics sweeps and Ng's Table 2, in text, Markdown or CSV.
 
+mod analyze;
 mod balance;
 mod chain_json;
 mod check_report;
@@ -25,6 +26,10 @@ pub use crate::number::fixed;
 use crate::number::{angle_cell, plain};
 use crate::sources::{ENGINE_35, NG_RIG, RPM};
 use crate::units::Units;
+pub use analyze::{
+    Analysis, AnalysisJson, AnalyzePlan, AnalyzeRequest, DEFAULT_ANGLE, EngineAnalysis,
+    STATICS_VALUES, VALUES_PER_ANGLE,
+};
 pub use balance::{balance_head, balance_row};
 pub use chain_json::{
     CHAIN_TOLERANCE, centre_json, chain_check_report, coriolis_check_title, grashof_name,

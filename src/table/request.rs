@@ -17,7 +17,6 @@ use crate::lists::{AngleSpec, Angles};
 use crate::mechanism::SliderCrank;
 use crate::sources::{CHAIN_60, ENGINE_35, NG_FRICTION, NG_RIG, NG_TORQUE, RPM};
 use crate::units::{Unit, Units};
-use std::path::PathBuf;
 
 /// What a user asks of a table; `None` leaves the table's own value (the
 /// §35 engine at 250 rpm for kinematics and dynamics, Ng's rig, torque
@@ -64,21 +63,11 @@ pub struct TableRequest<'a> {
     /// The name of the force unit (following `unit` when only that is
     /// given, [`Units::asked`]).
     pub force_unit: Option<Unit>,
-    /// The reciprocating mass m (of `dynamics`, or the locomotive's of
-    /// `partial-balance`).
-    pub mass: Option<f64>,
-    /// The connecting rod's mass (with `rod_cg` and `rod_gyration`).
-    pub rod_mass: Option<f64>,
-    /// The distance of the rod's centre of mass from the crank pin.
-    pub rod_cg: Option<f64>,
-    /// The rod's radius of gyration about its centre of mass.
-    pub rod_gyration: Option<f64>,
-    /// A constant gas force on the piston (not with `indicator`).
-    pub gas_force: Option<f64>,
-    /// The path of an indicator diagram, CSV (with `bore`).
-    pub indicator: Option<PathBuf>,
-    /// The cylinder's bore D (with `indicator`).
-    pub bore: Option<f64>,
+    /// The engine of `dynamics`: the reciprocating mass m (also the
+    /// locomotive's of `partial-balance`), the rod's mass with its centre
+    /// and gyration, a constant gas force or an indicator diagram with its
+    /// bore, each the field of its name (`mass`, `rod_mass`, …).
+    pub engine: GivenEngine,
     /// The crank phases of `dynamics`' cylinders, degrees (one cylinder at
     /// 0 by default).
     pub phases: Option<Vec<f64>>,
@@ -167,13 +156,7 @@ impl<'a> TableRequest<'a> {
             decimals: None,
             unit: None,
             force_unit: None,
-            mass: None,
-            rod_mass: None,
-            rod_cg: None,
-            rod_gyration: None,
-            gas_force: None,
-            indicator: None,
-            bore: None,
+            engine: GivenEngine::default(),
             phases: None,
             fluctuation: None,
             flywheel: None,
@@ -254,13 +237,13 @@ impl<'a> TableRequest<'a> {
             (Field::Decimals, self.decimals.is_some()),
             (Field::Unit, self.unit.is_some()),
             (Field::ForceUnit, self.force_unit.is_some()),
-            (Field::Mass, self.mass.is_some()),
-            (Field::RodMass, self.rod_mass.is_some()),
-            (Field::RodCg, self.rod_cg.is_some()),
-            (Field::RodGyration, self.rod_gyration.is_some()),
-            (Field::GasForce, self.gas_force.is_some()),
-            (Field::Indicator, self.indicator.is_some()),
-            (Field::Bore, self.bore.is_some()),
+            (Field::Mass, self.engine.mass.is_some()),
+            (Field::RodMass, self.engine.rod_mass.is_some()),
+            (Field::RodCg, self.engine.rod_cg.is_some()),
+            (Field::RodGyration, self.engine.rod_gyration.is_some()),
+            (Field::GasForce, self.engine.gas_force.is_some()),
+            (Field::Indicator, self.engine.indicator.is_some()),
+            (Field::Bore, self.engine.bore.is_some()),
             (Field::Phase, self.phases.is_some()),
             (Field::Fluctuation, self.fluctuation.is_some()),
             (Field::Flywheel, self.flywheel.is_some()),
@@ -323,71 +306,14 @@ impl<'a> TableRequest<'a> {
     /// Refuses fields given together that do not go together, or one
     /// given without another it needs.
     fn refuse_pairs(&self) -> Result<()> {
-        let both = |a: bool, b: bool, (x, y): (Field, Field), what: &str| {
-            if a && b {
-                Err(Error::refused(
-                    Input::Options,
-                    Wording::default()
-                        .option(x)
-                        .then(" cannot be used with ")
-                        .option(y)
-                        .then(format!(": give {what}, not both")),
-                ))
-            } else {
-                Ok(())
-            }
-        };
         crank_speed(self.rpm, self.omega)?;
-        both(
-            self.gas_force.is_some(),
-            self.indicator.is_some(),
-            (Field::GasForce, Field::Indicator),
-            "a constant gas force or an indicator diagram",
-        )?;
-        both(
+        self.engine.refuse_pairs()?;
+        super::engine::refuse_both(
             self.fluctuation.is_some(),
             self.flywheel.is_some(),
             (Field::Fluctuation, Field::Flywheel),
             "the coefficient of fluctuation of speed or the flywheel",
         )?;
-        let rod = [
-            (Field::RodMass, self.rod_mass.is_some()),
-            (Field::RodCg, self.rod_cg.is_some()),
-            (Field::RodGyration, self.rod_gyration.is_some()),
-        ];
-        if rod.iter().any(|r| r.1) && !rod.iter().all(|r| r.1) {
-            let mut missing = Wording::default();
-            for (i, (field, _)) in rod.iter().filter(|r| !r.1).enumerate() {
-                missing = if i == 0 {
-                    missing
-                } else {
-                    missing.then(" and ")
-                }
-                .option(*field);
-            }
-            return Err(Error::refused(
-                Input::Options,
-                Wording::from("the rod's mass is given by ")
-                    .option(Field::RodMass)
-                    .then(", ")
-                    .option(Field::RodCg)
-                    .then(" and ")
-                    .option(Field::RodGyration)
-                    .then(" together: ")
-                    .and(missing)
-                    .then(" not given"),
-            ));
-        }
-        if self.indicator.is_some() != self.bore.is_some() {
-            return Err(Error::refused(
-                Input::Options,
-                Wording::from("an indicator diagram needs the cylinder's bore: give ")
-                    .option(Field::Indicator)
-                    .then(" and ")
-                    .option(Field::Bore)
-                    .then(" together"),
-            ));
-        }
         if self.wheel.is_none() && (self.speed.is_some() || self.load.is_some()) {
             return Err(Error::refused(
                 Input::Options,
@@ -515,16 +441,7 @@ impl<'a> TableRequest<'a> {
     /// The engine of `dynamics`: the masses and gas force given, or the
     /// example mass.
     fn engine(&self, m: SliderCrank, omega: f64, units: &Units) -> Result<Engine> {
-        let given = GivenEngine {
-            mass: self.mass,
-            rod_mass: self.rod_mass,
-            rod_cg: self.rod_cg,
-            rod_gyration: self.rod_gyration,
-            gas_force: self.gas_force,
-            indicator: self.indicator.as_deref(),
-            bore: self.bore,
-        };
-        match given.engine(m, omega, units)? {
+        match self.engine.engine(m, omega, units)? {
             Some(engine) => Ok(engine),
             None => Engine::new(m, EXAMPLE_MASS, omega),
         }
@@ -593,13 +510,13 @@ impl<'a> TableRequest<'a> {
             .collect::<Result<Vec<_>>>()?;
         let locomotive = match self.wheel {
             Some(wheel) => Some(Locomotive::new(
-                self.mass.unwrap_or(0.0),
+                self.engine.mass.unwrap_or(0.0),
                 self.crank.unwrap_or(0.0),
                 wheel,
                 self.speed.unwrap_or(0.0),
                 self.load,
             )?),
-            None if self.mass.is_some() || self.crank.is_some() => {
+            None if self.engine.mass.is_some() || self.crank.is_some() => {
                 return Err(Error::refused(
                     Input::Options,
                     Wording::from("table partial-balance takes ")
@@ -837,7 +754,7 @@ mod tests {
         let e = r.plan().unwrap_err().to_string();
         assert_eq!(e, "table kinematics does not use `force_unit`");
         let mut r = TableRequest::new(TableName::Dynamics);
-        r.rod_mass = Some(1.0);
+        r.engine.rod_mass = Some(1.0);
         let e = r.plan().unwrap_err().to_string();
         assert_eq!(
             e,

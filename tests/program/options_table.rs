@@ -5,8 +5,9 @@
 //! becomes of it: drawn as the figure's own (`default`: the same bytes as
 //! the figure without the option), drawn (`ok`) or refused. Here the
 //! command line and the scene file are held to it; the table holds every
-//! option `figure --help` lists. The options of `table` have a table of
-//! their own, `tests/options/table.csv`, held the same way.
+//! option `figure --help` lists. The options of `table` and of `analyze`
+//! have tables of their own, `tests/options/table.csv` and
+//! `tests/options/analyze.csv`, held the same way.
 
 use crate::command::run;
 use std::collections::BTreeSet;
@@ -237,6 +238,94 @@ fn the_command_line_does_as_the_table_of_table_says() {
                 assert!(!out.stdout.is_empty(), "{how}");
                 if outcome == "default" {
                     assert!(out.stdout == own, "{how}: not the table's own");
+                }
+            }
+        }
+    }
+}
+
+/// One case of `tests/options/analyze.csv`: an option (its flag, its
+/// Python keyword) given with the options `with` and a value, and what
+/// becomes of it: the command's own JSON (`default`), an analysis (`ok`)
+/// or a refusal.
+struct AnalyzeCase {
+    flag: String,
+    with: Vec<String>,
+    value: String,
+    outcome: String,
+}
+
+/// The cases of `tests/options/analyze.csv`.
+fn analyze_cases() -> Vec<AnalyzeCase> {
+    let text = std::fs::read_to_string("tests/options/analyze.csv").unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("flag,keyword,with,value,outcome"));
+    lines
+        .map(|line| {
+            let f = fields(line);
+            assert_eq!(f.len(), 5, "{line}");
+            AnalyzeCase {
+                flag: f[0].clone(),
+                with: f[2].split_whitespace().map(String::from).collect(),
+                value: f[3].clone(),
+                outcome: f[4].clone(),
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn every_option_of_analyze_is_in_its_table() {
+    let help = String::from_utf8(run(&["analyze", "--help"]).stdout).unwrap();
+    let listed: BTreeSet<String> = help
+        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+        .filter(|w| w.starts_with("--") && w.len() > 2)
+        .map(String::from)
+        .collect();
+    // `--angles` is `--angle`'s other spelling; `--json` how the analysis
+    // is written (the Python package's is always the JSON object).
+    let not_options = ["--help", "--angles", "--json"];
+    let cases = analyze_cases();
+    for flag in listed.iter().filter(|f| !not_options.contains(&f.as_str())) {
+        for outcome in [["default", "ok"].as_slice(), &["refused"]] {
+            assert!(
+                cases
+                    .iter()
+                    .any(|c| &c.flag == flag && outcome.contains(&c.outcome.as_str())),
+                "{flag} has no case {outcome:?} in tests/options/analyze.csv"
+            );
+        }
+    }
+    assert!(
+        listed.contains("--slot-radius") && listed.len() > 20,
+        "{listed:?}"
+    );
+}
+
+#[test]
+fn the_command_line_does_as_the_table_of_analyze_says() {
+    for case in analyze_cases() {
+        let mut args = vec!["analyze".to_string(), "--json".to_string()];
+        args.extend(case.with.iter().cloned());
+        let plain: Vec<&str> = args.iter().map(String::as_str).collect();
+        let own = run(&plain).stdout;
+        let arg = format!("{}={}", case.flag, case.value);
+        args.push(arg.clone());
+        let given: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = run(&given);
+        let how = format!("analyze {} {arg}", case.with.join(" "));
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        match case.outcome.as_str() {
+            "refused" => {
+                assert_eq!(out.status.code(), Some(2), "{how}: not refused");
+                assert_eq!(stderr.lines().count(), 1, "{how}: {stderr}");
+                assert!(out.stdout.is_empty(), "{how}");
+            }
+            outcome => {
+                assert!(out.status.success(), "{how}: {stderr}");
+                assert!(out.stdout.starts_with(b"{"), "{how}");
+                if outcome == "default" {
+                    assert!(out.stdout == own, "{how}: not the command's own");
                 }
             }
         }
