@@ -213,3 +213,146 @@ fn the_acceleration_polygon_letters_its_pole() {
         );
     }
 }
+
+/// The element `id` of `svg` as written: its opening tag.
+fn element<'a>(svg: &'a str, id: &str) -> Option<&'a str> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let start = svg[..at].rfind('<')?;
+    let end = at + svg[at..].find('>')?;
+    Some(&svg[start..=end])
+}
+
+/// The page length of the plain side `id` (a `<path>` of one line
+/// `M x y L x y`).
+fn side_length(svg: &str, id: &str) -> Option<f64> {
+    let tag = element(svg, id)?;
+    let d = tag.split(" d=\"").nth(1)?.split('"').next()?;
+    let n: Vec<f64> = (d.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+        .filter_map(|t| t.parse().ok())
+        .collect();
+    (n.len() == 4).then(|| (n[2] - n[0]).hypot(n[3] - n[1]))
+}
+
+#[test]
+fn the_polygons_crank_is_seen_and_turns() {
+    // The seventh review: at l = 54.5 r the crank was a few units long,
+    // B's pin on C's, their letters jammed, with no enlarged view (3), and
+    // the default had no arrow for the sense of rotation. A crank's
+    // detail now draws the crank at least 80 units long (the angles'
+    // least radius in a detail) with ω; the main view draws ω where the
+    // crank is its own.
+    for deg in [0.0, 180.0, 90.44, 269.66] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, 54.5, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let panel = |id: &str| plate.panels.iter().find(|p| p.id == id);
+        let crank = |id: &str| {
+            let p = panel(id).unwrap_or_else(|| panic!("{deg}°: no {id}"));
+            let (b, c) = (plate.point(p, "B").unwrap(), plate.point(p, "C").unwrap());
+            (b.0 - c.0).hypot(b.1 - c.1)
+        };
+        assert!(crank("panel-mechanism") < 20.0, "{deg}°");
+        let enlarged = crank("panel-detail");
+        assert!(enlarged >= 80.0, "{deg}°: the crank {enlarged:.1} long");
+        assert!(svg.contains(r#"id="detail-polygons-omega""#), "{deg}°");
+        assert!(!svg.contains(r#"id="polygons-omega""#), "{deg}°");
+    }
+    let name = FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    assert!(!svg.contains("panel-detail"));
+    // ω's arc and head within the crank circle about C.
+    let plate = Plate::read(&svg);
+    let main = &plate.panels[0];
+    let (b, c) = (
+        plate.point(main, "B").unwrap(),
+        plate.point(main, "C").unwrap(),
+    );
+    let r = (b.0 - c.0).hypot(b.1 - c.1);
+    let arcs: Vec<_> = plate
+        .ink
+        .iter()
+        .filter(|(id, _)| id == "polygons-omega")
+        .collect();
+    assert!(!arcs.is_empty(), "no ω at the default");
+    for (_, ink) in arcs {
+        for corner in [
+            (ink.x0, ink.y0),
+            (ink.x1, ink.y0),
+            (ink.x0, ink.y1),
+            (ink.x1, ink.y1),
+        ] {
+            let d = (corner.0 - c.0).hypot(corner.1 - c.1);
+            assert!(d < r, "ω's ink {d:.1} from C, the crank {r:.1}");
+        }
+    }
+}
+
+#[test]
+fn a_short_component_is_drawn_without_a_head() {
+    // The seventh review: at the default the rod's normal component b′x,
+    // 0.0845 ft to the polygons' ×2 (14 units), was mostly head, its head
+    // against c′b′'s at b′ (4); in inversion 3's default the normal
+    // component c′n was a stub on c′'s dot (4). Shorter than two and a
+    // half heads (25 units), a side is a plain line; the sides before
+    // them keep their heads.
+    let name = FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let normal = side_length(&svg, "acceleration-b2x").expect("b′x a plain side");
+    assert!((12.0..25.0).contains(&normal), "b′x {normal:.1} long");
+    assert!(element(&svg, "acceleration-c2b2").is_some_and(|t| t.starts_with("<g")));
+    let name = FigureName::CoriolisInversion3;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let normal = side_length(&svg, "acceleration-cn").expect("c′n a plain side");
+    assert!((12.0..25.0).contains(&normal), "c′n {normal:.1} long");
+    assert!(element(&svg, "acceleration-oc").is_some_and(|t| t.starts_with("<g")));
+}
+
+#[test]
+fn a_coriolis_polygon_s_bar_stands_by_it() {
+    // The seventh review: the 250 ft/s² bar of inversion 2's default sat
+    // far below the polygon, by the panel's caption (4.5): it stood a
+    // quarter of the polygon's extent below its lowest point, and more
+    // under a flat polygon. Each polygon's bar now stands within a fifth
+    // of its extent below its lowest point.
+    for name in [
+        FigureName::CoriolisInversion2,
+        FigureName::CoriolisInversion3,
+    ] {
+        let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+        let plate = Plate::read(&svg);
+        for (panel, bar) in [
+            ("panel-velocity-polygon", "velocity-polygon-bar"),
+            ("panel-acceleration-polygon", "acceleration-polygon-bar"),
+        ] {
+            let p = (plate.polygons.iter()).find(|p| p.id == panel).unwrap();
+            let ys = p.markers.values().map(|m| m.1);
+            let xs = p.markers.values().map(|m| m.0);
+            let span = |v: Vec<f64>| {
+                v.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                    - v.iter().copied().fold(f64::INFINITY, f64::min)
+            };
+            let extent = span(xs.collect()).max(span(ys.clone().collect()));
+            let lowest = ys.fold(f64::NEG_INFINITY, f64::max);
+            let ink = (plate.ink.iter()).find(|(id, _)| id == bar).unwrap().1;
+            let drop = 0.5 * (ink.y0 + ink.y1) - lowest;
+            assert!(
+                drop > 0.0 && drop <= 0.2 * extent,
+                "{name:?} {bar}: {drop:.1} below a polygon {extent:.1} across"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_coriolis_component_s_letters_stand_apart_in_the_notes() {
+    // The seventh review: in inversion 3's notes "o′k" was set with the
+    // prime, italic with its o, leaning onto k's ascender (4). A narrow
+    // space stands between them.
+    let name = FigureName::CoriolisInversion3;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let note = svg.find("The Coriolis component").expect("the note");
+    let rest = &svg[note..note + 200];
+    assert!(
+        rest.contains("oʹ</tspan>\u{202f}<tspan font-style=\"italic\">k<"),
+        "{rest}"
+    );
+}
