@@ -356,3 +356,32 @@ fn the_coriolis_component_s_letters_stand_apart_in_the_notes() {
         "{rest}"
     );
 }
+
+#[test]
+fn omega_s_letter_stands_clear_of_c_s_in_the_crank_detail() {
+    // At l = 58 r, 270.8°, on a page 4.5 in wide, ω's arc 40 units about
+    // C in a crank's detail some 200 units in radius set its letter
+    // beside C's, "ω C" read as one group. The arc takes 0.45 of the
+    // crank's radius now (at most 60 units): the letters keep half an em
+    // (8.5 units at 17) between their boxes.
+    use slider_crank::figure::{PageLength, PageUnit};
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, 58.0, 0.0).unwrap());
+    options.angle = Some(Angle::deg(270.8));
+    options.width = Some(PageLength::new(4.5, PageUnit::In).unwrap());
+    let name = FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+    let plate = Plate::read(&svg);
+    let text = |id: &str| {
+        (plate.texts.iter())
+            .find(|t| t.id == id)
+            .unwrap_or_else(|| panic!("no {id}"))
+            .rect
+    };
+    let (omega, c) = (text("detail-value-omega"), text("detail-label-C"));
+    let gap = (omega.x0 - c.x1)
+        .max(c.x0 - omega.x1)
+        .max(omega.y0 - c.y1)
+        .max(c.y0 - omega.y1);
+    assert!(gap >= 8.5, "ω's letter {gap:.1} from C's");
+}

@@ -283,14 +283,14 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     }
 }
 
-/// The radius of the crank's ω about its centre, page units, at most:
-/// the motion layer's.
-const OMEGA_RADIUS: f64 = 40.0;
+/// The radius of the crank's ω about its centre, page units, at most.
+const OMEGA_RADIUS: f64 = 60.0;
 
-/// The share of the crank's radius on the page that ω's arc takes at
-/// most, so that it turns inside the crank circle, clear of the pin's
-/// path, on a crank drawn little larger than [`OMEGA_RADIUS`].
-const OMEGA_SHARE: f64 = 0.6;
+/// The share of the crank's radius on the page that ω's arc takes: inside
+/// the crank circle, clear of the pin's path, and far enough from C that
+/// its letter stands clear of C's (at 40 units in a crank's detail 200
+/// units in radius, "ω C" read as one group).
+const OMEGA_SHARE: f64 = 0.45;
 
 /// The crank's sense of turning, ω's arrow about C ahead of the crank
 /// (`polygons-omega`): the polygons are drawn from the crank's velocity
