@@ -310,9 +310,12 @@ fn a_short_component_is_drawn_without_a_head() {
 fn a_coriolis_polygon_s_bar_stands_by_it() {
     // The seventh review: the 250 ft/s² bar of inversion 2's default sat
     // far below the polygon, by the panel's caption (4.5): it stood a
-    // quarter of the polygon's extent below its lowest point, and more
-    // under a flat polygon. Each polygon's bar now stands within a fifth
-    // of its extent below its lowest point.
+    // quarter of the polygon's extent below its lowest point (56 units
+    // under the velocity polygon, 192 across), and more under a flat
+    // polygon. Each polygon's bar now stands below its lowest point
+    // within a fifth of its extent, or, where that is less, within the
+    // room of a letter below the point and the bar's heads (34 units)
+    // and a third more.
     for name in [
         FigureName::CoriolisInversion2,
         FigureName::CoriolisInversion3,
@@ -335,7 +338,7 @@ fn a_coriolis_polygon_s_bar_stands_by_it() {
             let ink = (plate.ink.iter()).find(|(id, _)| id == bar).unwrap().1;
             let drop = 0.5 * (ink.y0 + ink.y1) - lowest;
             assert!(
-                drop > 0.0 && drop <= 0.2 * extent,
+                drop > 0.0 && drop <= (0.2 * extent).max(34.0 * 4.0 / 3.0),
                 "{name:?} {bar}: {drop:.1} below a polygon {extent:.1} across"
             );
         }
@@ -384,4 +387,98 @@ fn omega_s_letter_stands_clear_of_c_s_in_the_crank_detail() {
         .max(omega.y0 - c.y1)
         .max(c.y0 - omega.y1);
     assert!(gap >= 8.5, "ω's letter {gap:.1} from C's");
+}
+
+#[test]
+fn a_coriolis_polygon_s_bar_stands_clear_of_its_letters() {
+    // With the bar brought up by its polygon, on a page 4.5 in wide at
+    // l = 57 r, 90.9° inversion 3's acceleration bar ran under "a′_d, o′"
+    // (a fifth of a needle's extent is less than a letter there: its box
+    // 4.9 units from the bar's heads). The bar keeps half an em (8.5
+    // units at 17) from every letter of its polygon's panel.
+    const CLEAR: f64 = 8.5;
+    use slider_crank::figure::{PageLength, PageUnit};
+    for (name, rod, deg, inches) in [
+        (FigureName::CoriolisInversion3, 57.0, 90.9, Some(4.5)),
+        (FigureName::CoriolisInversion2, 26.0, 269.0, Some(4.5)),
+        (FigureName::CoriolisInversion3, 1.5, 60.0, None),
+        (FigureName::CoriolisInversion2, 1.5, 60.0, None),
+        (FigureName::CoriolisInversion3, 1.06, 180.0, None),
+    ] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+        options.angle = Some(Angle::deg(deg));
+        options.width = inches.map(|w| PageLength::new(w, PageUnit::In).unwrap());
+        let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+        let plate = Plate::read(&svg);
+        for (panel, bar) in [
+            ("panel-velocity-polygon", "velocity-polygon-bar"),
+            ("panel-acceleration-polygon", "acceleration-polygon-bar"),
+        ] {
+            let p = (plate.polygons.iter()).find(|p| p.id == panel).unwrap();
+            let ink = (plate.ink.iter()).find(|(id, _)| id == bar).unwrap().1;
+            let own = |l: &&Label| !l.id.starts_with(bar) && !l.id.ends_with("caption");
+            for label in p.labels.iter().filter(own) {
+                let r = label.rect;
+                let gap = (r.x0 - ink.x1)
+                    .max(ink.x0 - r.x1)
+                    .max(r.y0 - ink.y1)
+                    .max(ink.y0 - r.y1);
+                assert!(
+                    gap >= CLEAR,
+                    "{name:?} l = {rod} r, {deg}°: {bar} {gap:.1} from {}",
+                    label.id
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_driver_s_omega_keeps_off_b_s_bearing() {
+    // The seventh review: ω's arc about B and its head lay on B's
+    // bearing and its hatching at short rods near 180° and 90° and with
+    // offsets at the dead centres (3 to 4). The arc counts the bearing
+    // below B as a link it keeps clear of, with its head, and where
+    // neither ahead of the driver nor behind it is clear stands above B:
+    // no point of the arc or its head comes within 2 units of the
+    // bearing's strokes.
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion2, 1.05, 0.0, 180.0),
+        (FigureName::CoriolisInversion2, 1.03, 0.0, 180.0),
+        (FigureName::CoriolisInversion2, 1.05, 0.0, 90.73),
+        (FigureName::CoriolisInversion2, 1.03, 0.0, 89.5),
+        (FigureName::CoriolisInversion3, 1.74, -0.409, 0.0),
+        (FigureName::CoriolisInversion3, 1.69, -0.483, 0.0),
+        (FigureName::CoriolisInversion3, 1.1, 0.0, 0.0),
+        (FigureName::CoriolisInversion3, 1.1, 0.0, 90.86),
+        (FigureName::CoriolisInversion3, 1.07, 0.0, 89.3),
+        (FigureName::CoriolisInversion3, 1.74, -0.409, 90.92),
+        // The defaults' engine (l = 3 r, 60°): inversion 3's crank points
+        // into the bearing's side, where an arc ahead or behind it ran
+        // its head onto the hatching.
+        (FigureName::CoriolisInversion3, 3.0, 0.0, 60.0),
+        (FigureName::CoriolisInversion2, 3.0, 0.0, 60.0),
+        (FigureName::CoriolisInversion3, 30.0, 0.0, 20.0),
+        (FigureName::CoriolisInversion3, 50.0, 0.0, 30.0),
+    ] {
+        let plate = Plate::read(&svg(name, rod, offset, deg));
+        for panel in &plate.panels {
+            let stroke = |id: &str| {
+                let id = format!("{}{id}", panel.prefix);
+                panel.strokes.iter().filter(move |s| s.id == id)
+            };
+            let bearing: Vec<_> = stroke("bearing-B").flat_map(|s| s.segs.iter()).collect();
+            let arc = stroke("arc-omega").flat_map(|s| s.segs.iter());
+            let ends = arc.flat_map(|s| [s.0, s.1, ((s.0.0 + s.1.0) / 2.0, (s.0.1 + s.1.1) / 2.0)]);
+            let near = ends
+                .flat_map(|p| bearing.iter().map(move |b| b.distance_to(p)))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                near >= 2.0,
+                "{name:?} l = {rod}, e = {offset}, {deg}° ({}): ω {near:.1} from B's bearing",
+                panel.id
+            );
+        }
+    }
 }

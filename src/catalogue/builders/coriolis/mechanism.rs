@@ -156,21 +156,40 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
     let e = pose.engine_pose().mechanism().offset();
     let slot = (pose.place(Point::new(0.0, e)), pose.place(engine.a()));
     links.extend(crossings(slot, b, radius + s.world(OMEGA_MARGIN)));
+    // B's bearing, drawn below it: its triangle and hatching span about
+    // 0.65 rad either side of straight down at the arc's radius (the
+    // arc and its head lay on the hatching at l = 1.05 r, 180° in
+    // inversion 2, where both links at B run to the left).
+    let down = -std::f64::consts::FRAC_PI_2;
+    links.extend([down - BEARING_SPREAD, down, down + BEARING_SPREAD]);
     let heading = arm.y.atan2(arm.x);
+    links.push(heading);
     let sweep = OMEGA_SWEEP * omega.signum();
-    let ahead = heading + OMEGA_GAP * omega.signum();
-    let behind = heading - OMEGA_GAP * omega.signum() - sweep;
+    // The arc with its head, which runs on past its end along the
+    // tangent about a head's length.
+    let reach = sweep + omega.signum() * s.world(HEAD) / radius;
     let nearest = |start: f64| {
         (links.iter())
-            .map(|d| clearance(start, sweep, *d))
+            .map(|d| clearance(start, reach, *d))
             .fold(f64::INFINITY, f64::min)
     };
-    let near = nearest(ahead);
-    let start = if near < OMEGA_CLEAR && nearest(behind) > near {
-        behind
-    } else {
-        ahead
-    };
+    // Ahead of the driver, behind it, else about B where the links and
+    // the bearing leave room (the default of inversion 3, whose crank
+    // points into the bearing's side): the first clear by
+    // [`OMEGA_CLEAR`], else the one farthest from them.
+    let ahead = heading + OMEGA_GAP * omega.signum();
+    let behind = heading - OMEGA_GAP * omega.signum() - sweep;
+    let about = OMEGA_ABOUT.map(|middle: f64| middle.to_radians() - 0.5 * sweep);
+    let candidates = [[ahead, behind].as_slice(), &about].concat();
+    let start = candidates
+        .iter()
+        .copied()
+        .find(|c| nearest(*c) >= OMEGA_CLEAR)
+        .unwrap_or_else(|| {
+            (candidates.iter().copied())
+                .max_by(|p, q| nearest(*p).total_cmp(&nearest(*q)))
+                .unwrap_or(ahead)
+        });
     s.push(
         "arc-omega",
         Role::Force,
@@ -223,6 +242,19 @@ fn crossings(slot: (Point, Point), centre: Point, radius: f64) -> Vec<f64> {
 /// stroke (at l = 30 r, 30°, d passed 2.5 units below the arc and the
 /// head lay on d).
 const OMEGA_MARGIN: f64 = 8.0;
+
+/// A head's length along ω's arc, page units: the arrowhead's.
+const HEAD: f64 = 10.0;
+
+/// The middles (degrees, from the frame's +x) of the arcs about B tried
+/// where neither ahead of the driver nor behind it is clear: above B
+/// first, away from its bearing.
+const OMEGA_ABOUT: [f64; 5] = [90.0, 45.0, 135.0, 0.0, 180.0];
+
+/// The angles (radians) either side of straight down below B that its
+/// bearing's edges are counted at, as links ω's arc keeps
+/// [`OMEGA_CLEAR`] from: with it, 0.65 rad each side.
+const BEARING_SPREAD: f64 = 0.4;
 
 /// The angle (radians) between the driver and the end of ω's arc nearer
 /// it.

@@ -67,20 +67,28 @@ pub(super) const BAR_DROP: f64 = 0.16;
 /// largest extent.
 const BAR_ROOM: f64 = 0.1;
 
+/// The least drop of the bar's line below the lowest point, page units:
+/// a letter set below the point (4 units off, 17 tall, a subscript
+/// below) and the bar's heads (3.2 units either side of its line). On a
+/// narrow page [`BAR_DROP`] of the polygon's extent is less: at 4.5 in,
+/// l = 57 r, 90.9° inversion 3's bar ran under "a′_d, o′".
+const BAR_LETTERS: f64 = 34.0;
+
 /// The world frame of `points` (from the pole), grown by [`PAD`] of its
 /// largest extent each way but below, where it holds the bar
 /// ([`BAR_DROP`] below the lowest point) and its length; a frame
 /// thinner than half its width is made that tall above, so that a
 /// polygon folded onto a line keeps room for its letters and the bar
-/// stays by it. Returns the frame, the extent and the bar's height.
-pub(super) fn polygon_frame(points: &[Lettered]) -> (Frame, f64, f64) {
+/// stays by it; the bar at least `least` (world) below the lowest point.
+/// Returns the frame, the extent and the bar's height.
+pub(super) fn polygon_frame(points: &[Lettered], least: f64) -> (Frame, f64, f64) {
     let lo = points.iter().fold(Vector::zeros(), |m, p| m.inf(&p.2));
     let hi = points.iter().fold(Vector::zeros(), |m, p| m.sup(&p.2));
     let size = hi - lo;
     let extent = size.x.max(size.y);
     let pad = PAD * extent;
     let grow = (0.5 * extent - size.y).max(0.0);
-    let bar = lo.y - BAR_DROP * extent;
+    let bar = lo.y - (BAR_DROP * extent).max(least);
     let min = Point::new(lo.x - pad, bar - BAR_ROOM * extent);
     let max = Point::from(hi) + Vector::new(pad, pad + grow);
     (Frame::new(min, max), extent, bar)
@@ -101,9 +109,18 @@ pub(super) fn polygon_plot(
     detail: (f64, f64),
     more: &impl Fn(&mut Canvas),
 ) -> Result<(Plot, f64, Value, Option<Window>)> {
-    let (world, extent, y) = polygon_frame(&drawn.points);
+    let (mut world, extent, mut y) = polygon_frame(&drawn.points, 0.0);
     let mut plot = Plot::world(drawn.name, rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(drawn.caption);
+    // Framed again where the bar would stand among the lowest point's
+    // letters, with room for them (a tenth more, for the taller frame's
+    // smaller scale).
+    let least = 1.1 * BAR_LETTERS / plot.map().scale();
+    if least > BAR_DROP * extent {
+        (world, _, y) = polygon_frame(&drawn.points, least);
+        plot = Plot::world(drawn.name, rect, &world, false, ctx.tolerance, ctx.font)?
+            .with_caption(drawn.caption);
+    }
     let map = *plot.map();
     let window = drawn
         .subject
