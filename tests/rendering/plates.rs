@@ -2801,3 +2801,37 @@ fn an_angle_at_the_crank_centre_is_marked_outside_the_torque_s_arc() {
         );
     }
 }
+
+#[test]
+fn the_coriolis_figures_crank_detail_is_a_plate() {
+    // The Coriolis figures' crank detail (at a long rod) was named
+    // `panel-mechanism-detail`, and the plate check, which reads a
+    // mechanism's detail as `panel-detail…`, passed it by: there ω's arc
+    // about B ended on the slotted link d, which passes a fraction of
+    // the crank from B at 20° and 30° on rods of 30 and 50 cranks. The
+    // detail is read now, and is a plate at those engines.
+    for figure in ["coriolis-inversion-2", "coriolis-inversion-3"] {
+        for rod in [30.0, 50.0] {
+            for deg in [20.0, 30.0] {
+                let m = (
+                    format!("l = {rod}"),
+                    SliderCrank::new(1.0, rod, 0.0).unwrap(),
+                );
+                let mut options = FigureOptions::default();
+                options.mechanism = Some(m.1);
+                options.angle = Some(Angle::deg(deg));
+                let f = FigureName::from_name(figure).unwrap().figure(&options);
+                let plate = Plate::read(&to_svg(&f.unwrap()));
+                assert!(
+                    (plate.panels.iter()).any(|p| p.prefix == "detail-" && !p.strokes.is_empty()),
+                    "{figure} l = {rod} r, {deg}°: no crank detail read"
+                );
+                let outcome = inspect(figure, &m, Some(Angle::deg(deg)));
+                let said: Vec<String> = (outcome.failures.iter())
+                    .map(|f| format!("[{}] {}", f.rule, f.ids))
+                    .collect();
+                assert!(said.is_empty(), "{figure} l = {rod} r, {deg}°: {said:?}");
+            }
+        }
+    }
+}

@@ -216,3 +216,272 @@ fn the_acceleration_polygon_letters_its_pole() {
         );
     }
 }
+
+/// The element `id` of `svg` as written: its opening tag.
+fn element<'a>(svg: &'a str, id: &str) -> Option<&'a str> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let start = svg[..at].rfind('<')?;
+    let end = at + svg[at..].find('>')?;
+    Some(&svg[start..=end])
+}
+
+/// The page length of the plain side `id` (a `<path>` of one line
+/// `M x y L x y`).
+fn side_length(svg: &str, id: &str) -> Option<f64> {
+    let tag = element(svg, id)?;
+    let d = tag.split(" d=\"").nth(1)?.split('"').next()?;
+    let n: Vec<f64> = (d.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+        .filter_map(|t| t.parse().ok())
+        .collect();
+    (n.len() == 4).then(|| (n[2] - n[0]).hypot(n[3] - n[1]))
+}
+
+#[test]
+fn the_polygons_crank_is_seen_and_turns() {
+    // The seventh review: at l = 54.5 r the crank was a few units long,
+    // B's pin on C's, their letters jammed, with no enlarged view (3), and
+    // the default had no arrow for the sense of rotation. A crank's
+    // detail now draws the crank at least 80 units long (the angles'
+    // least radius in a detail) with ω; the main view draws ω where the
+    // crank is its own.
+    for deg in [0.0, 180.0, 90.44, 269.66] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, 54.5, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let panel = |id: &str| plate.panels.iter().find(|p| p.id == id);
+        let crank = |id: &str| {
+            let p = panel(id).unwrap_or_else(|| panic!("{deg}°: no {id}"));
+            let (b, c) = (plate.point(p, "B").unwrap(), plate.point(p, "C").unwrap());
+            (b.0 - c.0).hypot(b.1 - c.1)
+        };
+        assert!(crank("panel-mechanism") < 20.0, "{deg}°");
+        let enlarged = crank("panel-detail");
+        assert!(enlarged >= 80.0, "{deg}°: the crank {enlarged:.1} long");
+        assert!(svg.contains(r#"id="detail-polygons-omega""#), "{deg}°");
+        assert!(!svg.contains(r#"id="polygons-omega""#), "{deg}°");
+    }
+    let name = FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    assert!(!svg.contains("panel-detail"));
+    // ω's arc and head within the crank circle about C.
+    let plate = Plate::read(&svg);
+    let main = &plate.panels[0];
+    let (b, c) = (
+        plate.point(main, "B").unwrap(),
+        plate.point(main, "C").unwrap(),
+    );
+    let r = (b.0 - c.0).hypot(b.1 - c.1);
+    let arcs: Vec<_> = plate
+        .ink
+        .iter()
+        .filter(|(id, _)| id == "polygons-omega")
+        .collect();
+    assert!(!arcs.is_empty(), "no ω at the default");
+    for (_, ink) in arcs {
+        for corner in [
+            (ink.x0, ink.y0),
+            (ink.x1, ink.y0),
+            (ink.x0, ink.y1),
+            (ink.x1, ink.y1),
+        ] {
+            let d = (corner.0 - c.0).hypot(corner.1 - c.1);
+            assert!(d < r, "ω's ink {d:.1} from C, the crank {r:.1}");
+        }
+    }
+}
+
+#[test]
+fn a_short_component_is_drawn_without_a_head() {
+    // The seventh review: at the default the rod's normal component b′x,
+    // 0.0845 ft to the polygons' ×2 (14 units), was mostly head, its head
+    // against c′b′'s at b′ (4); in inversion 3's default the normal
+    // component c′n was a stub on c′'s dot (4). Shorter than two and a
+    // half heads (25 units), a side is a plain line; the sides before
+    // them keep their heads.
+    let name = FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let normal = side_length(&svg, "acceleration-b2x").expect("b′x a plain side");
+    assert!((12.0..25.0).contains(&normal), "b′x {normal:.1} long");
+    assert!(element(&svg, "acceleration-c2b2").is_some_and(|t| t.starts_with("<g")));
+    let name = FigureName::CoriolisInversion3;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let normal = side_length(&svg, "acceleration-cn").expect("c′n a plain side");
+    assert!((12.0..25.0).contains(&normal), "c′n {normal:.1} long");
+    assert!(element(&svg, "acceleration-oc").is_some_and(|t| t.starts_with("<g")));
+}
+
+#[test]
+fn a_coriolis_polygon_s_bar_stands_by_it() {
+    // The seventh review: the 250 ft/s² bar of inversion 2's default sat
+    // far below the polygon, by the panel's caption (4.5): it stood a
+    // quarter of the polygon's extent below its lowest point (56 units
+    // under the velocity polygon, 192 across), and more under a flat
+    // polygon. Each polygon's bar now stands below its lowest point
+    // within a fifth of its extent, or, where that is less, within the
+    // room of a letter below the point and the bar's heads (34 units)
+    // and a third more.
+    for name in [
+        FigureName::CoriolisInversion2,
+        FigureName::CoriolisInversion3,
+    ] {
+        let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+        let plate = Plate::read(&svg);
+        for (panel, bar) in [
+            ("panel-velocity-polygon", "velocity-polygon-bar"),
+            ("panel-acceleration-polygon", "acceleration-polygon-bar"),
+        ] {
+            let p = (plate.polygons.iter()).find(|p| p.id == panel).unwrap();
+            let ys = p.markers.values().map(|m| m.1);
+            let xs = p.markers.values().map(|m| m.0);
+            let span = |v: Vec<f64>| {
+                v.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                    - v.iter().copied().fold(f64::INFINITY, f64::min)
+            };
+            let extent = span(xs.collect()).max(span(ys.clone().collect()));
+            let lowest = ys.fold(f64::NEG_INFINITY, f64::max);
+            let ink = (plate.ink.iter()).find(|(id, _)| id == bar).unwrap().1;
+            let drop = 0.5 * (ink.y0 + ink.y1) - lowest;
+            assert!(
+                drop > 0.0 && drop <= (0.2 * extent).max(34.0 * 4.0 / 3.0),
+                "{name:?} {bar}: {drop:.1} below a polygon {extent:.1} across"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_coriolis_component_s_letters_stand_apart_in_the_notes() {
+    // The seventh review: in inversion 3's notes "o′k" was set with the
+    // prime, italic with its o, leaning onto k's ascender (4). A narrow
+    // space stands between them.
+    let name = FigureName::CoriolisInversion3;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let note = svg.find("The Coriolis component").expect("the note");
+    let rest = &svg[note..note + 200];
+    assert!(
+        rest.contains("oʹ</tspan>\u{202f}<tspan font-style=\"italic\">k<"),
+        "{rest}"
+    );
+}
+
+#[test]
+fn omega_s_letter_stands_clear_of_c_s_in_the_crank_detail() {
+    // At l = 58 r, 270.8°, on a page 4.5 in wide, ω's arc 40 units about
+    // C in a crank's detail some 200 units in radius set its letter
+    // beside C's, "ω C" read as one group. The arc takes 0.45 of the
+    // crank's radius now (at most 60 units): the letters keep half an em
+    // (8.5 units at 17) between their boxes.
+    use slider_crank::figure::{PageLength, PageUnit};
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, 58.0, 0.0).unwrap());
+    options.angle = Some(Angle::deg(270.8));
+    options.width = Some(PageLength::new(4.5, PageUnit::In).unwrap());
+    let name = FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+    let plate = Plate::read(&svg);
+    let text = |id: &str| {
+        (plate.texts.iter())
+            .find(|t| t.id == id)
+            .unwrap_or_else(|| panic!("no {id}"))
+            .rect
+    };
+    let (omega, c) = (text("detail-value-omega"), text("detail-label-C"));
+    let gap = (omega.x0 - c.x1)
+        .max(c.x0 - omega.x1)
+        .max(omega.y0 - c.y1)
+        .max(c.y0 - omega.y1);
+    assert!(gap >= 8.5, "ω's letter {gap:.1} from C's");
+}
+
+#[test]
+fn a_coriolis_polygon_s_bar_stands_clear_of_its_letters() {
+    // With the bar brought up by its polygon, on a page 4.5 in wide at
+    // l = 57 r, 90.9° inversion 3's acceleration bar ran under "a′_d, o′"
+    // (a fifth of a needle's extent is less than a letter there: its box
+    // 4.9 units from the bar's heads). The bar keeps half an em (8.5
+    // units at 17) from every letter of its polygon's panel.
+    const CLEAR: f64 = 8.5;
+    use slider_crank::figure::{PageLength, PageUnit};
+    for (name, rod, deg, inches) in [
+        (FigureName::CoriolisInversion3, 57.0, 90.9, Some(4.5)),
+        (FigureName::CoriolisInversion2, 26.0, 269.0, Some(4.5)),
+        (FigureName::CoriolisInversion3, 1.5, 60.0, None),
+        (FigureName::CoriolisInversion2, 1.5, 60.0, None),
+        (FigureName::CoriolisInversion3, 1.06, 180.0, None),
+    ] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+        options.angle = Some(Angle::deg(deg));
+        options.width = inches.map(|w| PageLength::new(w, PageUnit::In).unwrap());
+        let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+        let plate = Plate::read(&svg);
+        for (panel, bar) in [
+            ("panel-velocity-polygon", "velocity-polygon-bar"),
+            ("panel-acceleration-polygon", "acceleration-polygon-bar"),
+        ] {
+            let p = (plate.polygons.iter()).find(|p| p.id == panel).unwrap();
+            let ink = (plate.ink.iter()).find(|(id, _)| id == bar).unwrap().1;
+            let own = |l: &&Label| !l.id.starts_with(bar) && !l.id.ends_with("caption");
+            for label in p.labels.iter().filter(own) {
+                let r = label.rect;
+                let gap = (r.x0 - ink.x1)
+                    .max(ink.x0 - r.x1)
+                    .max(r.y0 - ink.y1)
+                    .max(ink.y0 - r.y1);
+                assert!(
+                    gap >= CLEAR,
+                    "{name:?} l = {rod} r, {deg}°: {bar} {gap:.1} from {}",
+                    label.id
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_driver_s_omega_keeps_off_b_s_bearing() {
+    // The seventh review: ω's arc about B and its head lay on B's
+    // bearing and its hatching at short rods near 180° and 90° and with
+    // offsets at the dead centres (3 to 4). The arc counts the bearing
+    // below B as a link it keeps clear of, with its head, and where
+    // neither ahead of the driver nor behind it is clear stands above B:
+    // no point of the arc or its head comes within 2 units of the
+    // bearing's strokes.
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion2, 1.05, 0.0, 180.0),
+        (FigureName::CoriolisInversion2, 1.03, 0.0, 180.0),
+        (FigureName::CoriolisInversion2, 1.05, 0.0, 90.73),
+        (FigureName::CoriolisInversion2, 1.03, 0.0, 89.5),
+        (FigureName::CoriolisInversion3, 1.74, -0.409, 0.0),
+        (FigureName::CoriolisInversion3, 1.69, -0.483, 0.0),
+        (FigureName::CoriolisInversion3, 1.1, 0.0, 0.0),
+        (FigureName::CoriolisInversion3, 1.1, 0.0, 90.86),
+        (FigureName::CoriolisInversion3, 1.07, 0.0, 89.3),
+        (FigureName::CoriolisInversion3, 1.74, -0.409, 90.92),
+        // The defaults' engine (l = 3 r, 60°): inversion 3's crank points
+        // into the bearing's side, where an arc ahead or behind it ran
+        // its head onto the hatching.
+        (FigureName::CoriolisInversion3, 3.0, 0.0, 60.0),
+        (FigureName::CoriolisInversion2, 3.0, 0.0, 60.0),
+        (FigureName::CoriolisInversion3, 30.0, 0.0, 20.0),
+        (FigureName::CoriolisInversion3, 50.0, 0.0, 30.0),
+    ] {
+        let plate = Plate::read(&svg(name, rod, offset, deg));
+        for panel in &plate.panels {
+            let stroke = |id: &str| {
+                let id = format!("{}{id}", panel.prefix);
+                panel.strokes.iter().filter(move |s| s.id == id)
+            };
+            let bearing: Vec<_> = stroke("bearing-B").flat_map(|s| s.segs.iter()).collect();
+            let arc = stroke("arc-omega").flat_map(|s| s.segs.iter());
+            let ends = arc.flat_map(|s| [s.0, s.1, ((s.0.0 + s.1.0) / 2.0, (s.0.1 + s.1.1) / 2.0)]);
+            let near = ends
+                .flat_map(|p| bearing.iter().map(move |b| b.distance_to(p)))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                near >= 2.0,
+                "{name:?} l = {rod}, e = {offset}, {deg}° ({}): ω {near:.1} from B's bearing",
+                panel.id
+            );
+        }
+    }
+}

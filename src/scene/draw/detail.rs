@@ -40,6 +40,12 @@
 //! on Fig. 62's page a rod of 20 cranks draws the circle 30 units in
 //! radius, where θ's letter sits on the crank and r's on the pin. A smaller
 //! crank gets a detail at least [`ANGLES_TARGET`] units in radius.
+//!
+//! The polygons' figure marks the crank with its ω alone, and is held to
+//! the angles' threshold and target: on a rod of fifty cranks its crank
+//! was a few units long, B's pin on C's, their letters jammed, and the
+//! polygons, drawn from the crank's velocity and acceleration, read from
+//! a crank not to be seen.
 
 use super::LayerCtx;
 use crate::geom::{Frame, Point, Vector};
@@ -584,7 +590,7 @@ fn crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let torque = ctx.scene.has(Layer::Torque);
     let (threshold, target) = if torque {
         (CRANK_THRESHOLD, CRANK_TARGET)
-    } else if ctx.scene.has(Layer::Angles) {
+    } else if ctx.scene.has(Layer::Angles) || ctx.scene.has(Layer::Polygons) {
         (ANGLES_THRESHOLD, ANGLES_TARGET)
     } else {
         return None;

@@ -639,7 +639,8 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
             Layer::Torque => torque::draw(ctx, canvas),
             // At their own scale: not in an enlarged detail.
             Layer::Polygons if main => polygons::draw(ctx, canvas),
-            Layer::Polygons => {}
+            // The crank's ω in a crank's detail.
+            Layer::Polygons => polygons::omega(ctx, canvas),
             Layer::Scales => {}
         }
     }

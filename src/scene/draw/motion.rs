@@ -122,22 +122,21 @@ fn clear_of_the_crank(under: Point, along: f64, c: Point, world: &dyn Fn(f64) ->
     }
 }
 
-/// ω about the crank centre and Ω about the rod's middle.
-fn turning(ctx: &LayerCtx, canvas: &mut Canvas) {
+/// ω, a turning arrow about the crank centre in the crank's sense, from
+/// half a radian ahead of the crank through 1.4 radians, `radius` page
+/// units (the arc `id`, its letter `value-omega` at its middle).
+pub(crate) fn omega(ctx: &LayerCtx, canvas: &mut Canvas, id: &str, radius: f64) {
     let pose = ctx.main.pose();
-    let (a, b, c) = (pose.a(), pose.b(), pose.c());
-    let w = ctx.scene.omega();
-    let turn = w.signum();
-
-    // ω: a turning arrow about C, in the crank's sense.
+    let c = pose.c();
+    let turn = ctx.scene.omega().signum();
     let start = pose.angle().radians() + 0.5 * turn;
     canvas.push_hued(
-        "motion-omega",
+        id,
         Role::Force,
         Hue::Velocity,
         Shape::Arc {
             centre: c,
-            radius: canvas.world(OMEGA_RADIUS),
+            radius: canvas.world(radius),
             start,
             sweep: turn * 1.4,
             arrow: true,
@@ -146,10 +145,18 @@ fn turning(ctx: &LayerCtx, canvas: &mut Canvas) {
     let mid = start + turn * 0.7;
     canvas.label(
         "value-omega",
-        c + Vector::new(mid.cos(), mid.sin()) * canvas.world(OMEGA_RADIUS),
+        c + Vector::new(mid.cos(), mid.sin()) * canvas.world(radius),
         RichText::parse("ω"),
         TextSize::Letter,
     );
+}
+
+/// ω about the crank centre and Ω about the rod's middle.
+fn turning(ctx: &LayerCtx, canvas: &mut Canvas) {
+    let pose = ctx.main.pose();
+    let (a, b) = (pose.a(), pose.b());
+    let w = ctx.scene.omega();
+    omega(ctx, canvas, "motion-omega", OMEGA_RADIUS);
 
     // Ω: the rod's counter-clockwise angular velocity is −dφ/dt.
     let rod_rate = -w * pose.obliquity_rate();

@@ -209,18 +209,32 @@ fn id(ctx: &LayerCtx, n: Named, prime: bool) -> String {
 }
 
 /// A vector of a polygon as an arrow (`{kind}-{p}{q}`), where it is long
-/// enough on the page to carry its head.
+/// enough on the page to carry its head; shorter than [`HEADLESS`], as a
+/// plain side.
 fn vector(canvas: &mut Canvas, id: String, role: Role, from: Point, to: Point) {
-    if canvas.page((to - from).norm()) < MIN_ARROW {
+    let length = canvas.page((to - from).norm());
+    if length < MIN_ARROW {
+        return;
+    }
+    if length < HEADLESS {
+        canvas.segment(id, role, from, to);
         return;
     }
     canvas.push(id, role, Shape::Arrow { from, to });
 }
 
+/// Shortest vector drawn with its head, page units: two and a half
+/// heads. Shorter, the head is most of it and stands on the head of the
+/// side before it (the rod's normal component b′x, 14 units at the §35
+/// default, its head against c′b′'s at b′); its sense is the polygon's
+/// order, read from the letters at its ends.
+const HEADLESS: f64 = 25.0;
+
 /// Draws both polygons, each point lettered, and Q on the rod; a Q off
 /// the rod's line on the rod drawn as the plate ABQ, and its images with
 /// the triangles abq and a′b′q′ similar to it.
 pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
+    omega(ctx, canvas);
     let placed = place(ctx);
     let pose = ctx.main.pose();
     let coupler = ctx.scene.coupler().point(pose);
@@ -268,6 +282,37 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         );
     }
 }
+
+/// The radius of the crank's ω about its centre, page units, at most.
+const OMEGA_RADIUS: f64 = 60.0;
+
+/// The share of the crank's radius on the page that ω's arc takes: inside
+/// the crank circle, clear of the pin's path, and far enough from C that
+/// its letter stands clear of C's (at 40 units in a crank's detail 200
+/// units in radius, "ω C" read as one group).
+const OMEGA_SHARE: f64 = 0.45;
+
+/// The crank's sense of turning, ω's arrow about C ahead of the crank
+/// (`polygons-omega`): the polygons are drawn from the crank's velocity
+/// rω and acceleration ω²r, and a reader needs ω's sense to read cb's
+/// direction. Not drawn where the main view leaves the crank to a
+/// detail ([`Canvas::is_bare`]), nor on a crank shorter on the page than
+/// a letter (no detail could be given it).
+pub(crate) fn omega(ctx: &LayerCtx, canvas: &mut Canvas) {
+    let pose = ctx.main.pose();
+    if canvas.is_bare(pose.c()) {
+        return;
+    }
+    let radius = OMEGA_RADIUS.min(OMEGA_SHARE * canvas.page(pose.mechanism().crank()));
+    if radius < OMEGA_LEAST {
+        return;
+    }
+    super::motion::omega(ctx, canvas, "polygons-omega", radius);
+}
+
+/// The least radius of ω's arc, page units: its head's length and the
+/// pin's circle.
+const OMEGA_LEAST: f64 = 14.0;
 
 /// Whether the scene's coupler point stands off the rod's line.
 fn off_rod(ctx: &LayerCtx) -> bool {

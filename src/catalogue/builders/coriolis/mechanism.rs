@@ -11,7 +11,7 @@ use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{PageRect, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Vector};
+use crate::geom::{Frame, Point, Vector};
 use crate::scene::{Canvas, Marker};
 
 /// The page length under which inversion 3's crank CB, the driver, gets
@@ -64,7 +64,9 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let scale = plot.map().scale();
     let b = pose.place(pose.engine_pose().b());
     let detail_rect = PageRect::new(MARGIN + width - side, MARGIN, side, rect.height);
-    let (region, detail) = crank_window(ctx, "mechanism-detail", b, detail_rect, scale)?;
+    // `panel-detail-mechanism`: a crank's detail, read as the plate check
+    // reads every mechanism's detail (`panel-detail…`, its ids `detail-…`).
+    let (region, detail) = crank_window(ctx, "detail-mechanism", b, detail_rect, scale)?;
     let detail = links_plot(ctx, pose, detail, Some(region))?;
     Ok((links_plot(ctx, pose, plot, Some(region))?, Some(detail)))
 }
@@ -140,25 +142,54 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
         return;
     }
     // The other link at B (the fixed rod BA of inversion 3, the fixed
-    // crank BC of inversion 2): the arc stands ahead of the driver in
-    // ω's sense, or behind it where ahead it would come within
-    // [`OMEGA_CLEAR`] of that link and behind it keeps farther off, so
-    // that its head never runs along the link (inversion 3 at 20° on a
-    // long rod).
+    // crank BC of inversion 2) and the slotted link d where it crosses
+    // the arc's circle: the arc stands ahead of the driver in ω's sense,
+    // or behind it where ahead it would come within [`OMEGA_CLEAR`] of
+    // one of them and behind it keeps farther off, so that its head
+    // never runs along a link (inversion 3 at 20° on a long rod, where
+    // d passes a fraction of the crank below B).
     let other = match pose.inversion() {
         Inversion::Rod => pose.place(engine.a()),
         _ => pose.place(engine.c()),
     } - b;
-    let (heading, away) = (arm.y.atan2(arm.x), other.y.atan2(other.x));
+    let mut links = vec![other.y.atan2(other.x)];
+    let e = pose.engine_pose().mechanism().offset();
+    let slot = (pose.place(Point::new(0.0, e)), pose.place(engine.a()));
+    links.extend(crossings(slot, b, radius + s.world(OMEGA_MARGIN)));
+    // B's bearing, drawn below it: its triangle and hatching span about
+    // 0.65 rad either side of straight down at the arc's radius (the
+    // arc and its head lay on the hatching at l = 1.05 r, 180° in
+    // inversion 2, where both links at B run to the left).
+    let down = -std::f64::consts::FRAC_PI_2;
+    links.extend([down - BEARING_SPREAD, down, down + BEARING_SPREAD]);
+    let heading = arm.y.atan2(arm.x);
+    links.push(heading);
     let sweep = OMEGA_SWEEP * omega.signum();
+    // The arc with its head, which runs on past its end along the
+    // tangent about a head's length.
+    let reach = sweep + omega.signum() * s.world(HEAD) / radius;
+    let nearest = |start: f64| {
+        (links.iter())
+            .map(|d| clearance(start, reach, *d))
+            .fold(f64::INFINITY, f64::min)
+    };
+    // Ahead of the driver, behind it, else about B where the links and
+    // the bearing leave room (the default of inversion 3, whose crank
+    // points into the bearing's side): the first clear by
+    // [`OMEGA_CLEAR`], else the one farthest from them.
     let ahead = heading + OMEGA_GAP * omega.signum();
     let behind = heading - OMEGA_GAP * omega.signum() - sweep;
-    let near = clearance(ahead, sweep, away);
-    let start = if near < OMEGA_CLEAR && clearance(behind, sweep, away) > near {
-        behind
-    } else {
-        ahead
-    };
+    let about = OMEGA_ABOUT.map(|middle: f64| middle.to_radians() - 0.5 * sweep);
+    let candidates = [[ahead, behind].as_slice(), &about].concat();
+    let start = candidates
+        .iter()
+        .copied()
+        .find(|c| nearest(*c) >= OMEGA_CLEAR)
+        .unwrap_or_else(|| {
+            (candidates.iter().copied())
+                .max_by(|p, q| nearest(*p).total_cmp(&nearest(*q)))
+                .unwrap_or(ahead)
+        });
     s.push(
         "arc-omega",
         Role::Force,
@@ -174,6 +205,56 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
     let at = b + Vector::new(mid.cos(), mid.sin()) * radius;
     s.label("label-omega", at, RichText::parse("ω"), TextSize::Letter);
 }
+
+/// The directions from `centre` of the points where the slotted link d,
+/// the ray from `slot.0` through `slot.1` (its bar runs on beyond the
+/// block), crosses the circle of `radius` about `centre`; none where it
+/// passes outside it.
+fn crossings(slot: (Point, Point), centre: Point, radius: f64) -> Vec<f64> {
+    let (p, q) = slot;
+    let u = q - p;
+    let len = u.norm();
+    if !(len > 0.0 && len.is_finite()) {
+        return Vec::new();
+    }
+    let u = u / len;
+    let w = p - centre;
+    // |w + t u| = radius: t² + 2 (w·u) t + |w|² − radius² = 0.
+    let half = w.dot(&u);
+    let disc = half * half - (w.norm_squared() - radius * radius);
+    if disc < 0.0 {
+        return Vec::new();
+    }
+    let root = disc.sqrt();
+    [-half - root, -half + root]
+        .into_iter()
+        .filter(|t| *t >= 0.0)
+        .map(|t| {
+            let at = w + u * t;
+            at.y.atan2(at.x)
+        })
+        .collect()
+}
+
+/// Room about ω's arc within which the slotted link d counts as
+/// crossing it, page units: the head (its half width across the arc,
+/// its tip off the circle along the tangent) and the link's half
+/// stroke (at l = 30 r, 30°, d passed 2.5 units below the arc and the
+/// head lay on d).
+const OMEGA_MARGIN: f64 = 8.0;
+
+/// A head's length along ω's arc, page units: the arrowhead's.
+const HEAD: f64 = 10.0;
+
+/// The middles (degrees, from the frame's +x) of the arcs about B tried
+/// where neither ahead of the driver nor behind it is clear: above B
+/// first, away from its bearing.
+const OMEGA_ABOUT: [f64; 5] = [90.0, 45.0, 135.0, 0.0, 180.0];
+
+/// The angles (radians) either side of straight down below B that its
+/// bearing's edges are counted at, as links ω's arc keeps
+/// [`OMEGA_CLEAR`] from: with it, 0.65 rad each side.
+const BEARING_SPREAD: f64 = 0.4;
 
 /// The angle (radians) between the driver and the end of ω's arc nearer
 /// it.

@@ -56,6 +56,13 @@ pub(super) const SHARES: [f64; 3] = [0.36, 0.42, 0.22];
 /// hide it (a zero vector, at the dead centres, is not drawn).
 pub(super) const MIN_ARROW: f64 = 12.0;
 
+/// Shortest vector drawn with its head, page units: two and a half
+/// heads. A shorter one is drawn as a plain side (its head would be most
+/// of it, a stub on the point it starts from: inversion 3's normal
+/// component c′n at the default, 14 units, its head on c′'s dot); its
+/// sense is read from the letters at its ends.
+pub(super) const HEADLESS: f64 = 25.0;
+
 /// The detail panels' height, page units.
 pub(super) const DETAIL_HEIGHT: f64 = 240.0;
 

@@ -110,7 +110,9 @@ pub(super) fn notes(
     let coriolis = format!(
         "The Coriolis component {} = 2ω_{{d}}*v* = {} {u}/s²: the sliding velocity *v* ({}) turned 90° in the sense of ω_{{d}}{}.",
         match inversion {
-            Inversion::Rod => "*o*′*k*",
+            // A narrow space after the prime: set in italic with its o,
+            // it leant onto k's ascender ("o′k" read as one glyph).
+            Inversion::Rod => "*o*′\u{202f}*k*",
             _ => "*ka*′",
         },
         sig(coriolis_size),

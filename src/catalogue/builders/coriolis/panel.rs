@@ -4,7 +4,7 @@
 
 use super::super::{Ctx, short};
 use super::polygons::{Arrow, Lettered, Polygons, Subject};
-use super::{MIN_ARROW, STEPS, round_below};
+use super::{HEADLESS, MIN_ARROW, STEPS, round_below};
 
 use crate::chain::Inversion;
 use crate::diagram::Plot;
@@ -58,20 +58,40 @@ pub(super) struct Window {
     pub(super) magnification: f64,
 }
 
+/// The scale bar's line below a polygon's lowest point, in shares of
+/// its largest extent: clear of the lowest point's letter (the pole's,
+/// set beside or below it), the bar's length written below the line.
+pub(super) const BAR_DROP: f64 = 0.16;
+
+/// Room below the bar's line for its length, in shares of the polygon's
+/// largest extent.
+const BAR_ROOM: f64 = 0.1;
+
+/// The least drop of the bar's line below the lowest point, page units:
+/// a letter set below the point (4 units off, 17 tall, a subscript
+/// below) and the bar's heads (3.2 units either side of its line). On a
+/// narrow page [`BAR_DROP`] of the polygon's extent is less: at 4.5 in,
+/// l = 57 r, 90.9° inversion 3's bar ran under "a′_d, o′".
+const BAR_LETTERS: f64 = 34.0;
+
 /// The world frame of `points` (from the pole), grown by [`PAD`] of its
-/// largest extent each way and below by room for the bar; a frame
-/// thinner than half its width is made that tall, so that a polygon
-/// folded onto a line keeps room for its letters.
-pub(super) fn polygon_frame(points: &[Lettered]) -> (Frame, f64) {
+/// largest extent each way but below, where it holds the bar
+/// ([`BAR_DROP`] below the lowest point) and its length; a frame
+/// thinner than half its width is made that tall above, so that a
+/// polygon folded onto a line keeps room for its letters and the bar
+/// stays by it; the bar at least `least` (world) below the lowest point.
+/// Returns the frame, the extent and the bar's height.
+pub(super) fn polygon_frame(points: &[Lettered], least: f64) -> (Frame, f64, f64) {
     let lo = points.iter().fold(Vector::zeros(), |m, p| m.inf(&p.2));
     let hi = points.iter().fold(Vector::zeros(), |m, p| m.sup(&p.2));
     let size = hi - lo;
     let extent = size.x.max(size.y);
     let pad = PAD * extent;
-    let grow = (0.5 * extent - size.y).max(0.0) * 0.5;
-    let min = Point::from(lo) - Vector::new(pad, pad + grow + 0.18 * extent);
+    let grow = (0.5 * extent - size.y).max(0.0);
+    let bar = lo.y - (BAR_DROP * extent).max(least);
+    let min = Point::new(lo.x - pad, bar - BAR_ROOM * extent);
     let max = Point::from(hi) + Vector::new(pad, pad + grow);
-    (Frame::new(min, max), extent)
+    (Frame::new(min, max), extent, bar)
 }
 
 /// A polygon's panel: its vectors as arrows (those long enough to carry
@@ -89,9 +109,18 @@ pub(super) fn polygon_plot(
     detail: (f64, f64),
     more: &impl Fn(&mut Canvas),
 ) -> Result<(Plot, f64, Value, Option<Window>)> {
-    let (world, extent) = polygon_frame(&drawn.points);
+    let (mut world, extent, mut y) = polygon_frame(&drawn.points, 0.0);
     let mut plot = Plot::world(drawn.name, rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(drawn.caption);
+    // Framed again where the bar would stand among the lowest point's
+    // letters, with room for them (a tenth more, for the taller frame's
+    // smaller scale).
+    let least = 1.1 * BAR_LETTERS / plot.map().scale();
+    if least > BAR_DROP * extent {
+        (world, _, y) = polygon_frame(&drawn.points, least);
+        plot = Plot::world(drawn.name, rect, &world, false, ctx.tolerance, ctx.font)?
+            .with_caption(drawn.caption);
+    }
     let map = *plot.map();
     let window = drawn
         .subject
@@ -102,15 +131,12 @@ pub(super) fn polygon_plot(
     }
     let old = s.set_hue(Some(drawn.hue));
     for (id, role, from, to) in &drawn.arrows {
-        if s.page((to - from).norm()) >= MIN_ARROW {
-            s.push(
-                *id,
-                *role,
-                Shape::Arrow {
-                    from: Point::from(*from),
-                    to: Point::from(*to),
-                },
-            );
+        let (from, to) = (Point::from(*from), Point::from(*to));
+        let length = s.page((to - from).norm());
+        if length >= HEADLESS {
+            s.push(*id, *role, Shape::Arrow { from, to });
+        } else if length >= MIN_ARROW {
+            s.segment(*id, *role, from, to);
         }
     }
     more(&mut s);
@@ -120,7 +146,6 @@ pub(super) fn polygon_plot(
     }
     letter(&mut s, &drawn.points, window.map(|w| w.frame));
     let bar = round_below(0.45 * extent, &STEPS);
-    let y = world.min().y + 0.08 * extent;
     let x = world.min().x + PAD * extent * 0.5;
     let unit = format!("{}{}", ctx.unit(), drawn.per);
     s.push(
@@ -280,7 +305,7 @@ pub(super) fn detail_plot(
             continue;
         };
         let role = *role;
-        if s.contains(to) && s.page((to - tail).norm()) >= MIN_ARROW {
+        if s.contains(to) && s.page((to - tail).norm()) >= HEADLESS {
             s.push(*id, role, Shape::Arrow { from: tail, to });
         } else {
             s.segment(*id, role, tail, head);
