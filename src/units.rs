@@ -37,9 +37,9 @@ impl Unit {
     pub const NEWTON: Unit = Unit(Cow::Borrowed("N"));
 
     /// The unit of that name; an error (one line) says what a name may
-    /// hold when it is empty, longer than [`MAX_UNIT_CHARS`], or holds a
-    /// space, a control character or markup (`< > & " ' * _ { } \` and the
-    /// backquote).
+    /// hold when it is empty, longer than [`MAX_UNIT_CHARS`], a number
+    /// (`NaN`, `inf`, `2`), or holds a space, a control character or
+    /// markup (`< > & " ' * _ { } \` and the backquote).
     pub fn new(name: &str) -> Result<Self> {
         let shown: String = name
             .chars()
@@ -62,6 +62,10 @@ impl Unit {
         }
         if let Some(why) = crate::error::text_fault(name) {
             return bad(&why);
+        }
+        if name.parse::<f64>().is_ok() {
+            // "NaN" or "inf" written as a unit read as a broken number.
+            return bad("it is a number");
         }
         if let Some(c) = name
             .chars()
@@ -319,6 +323,10 @@ mod tests {
             "\u{2066}m",
             "m\u{200B}",
             "\u{FEFF}mm",
+            "NaN",
+            "inf",
+            "-inf",
+            "2",
         ] {
             let e = bad.parse::<Unit>().unwrap_err().to_string();
             assert!(e.starts_with("invalid unit name"), "{bad}: {e}");
