@@ -13,22 +13,16 @@
 //! that it does not change with θ (Inversion 2's panel shows, at that
 //! scale, only what its pose draws).
 
-use super::hop::{Over, hopped};
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Figure, Item, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Intersection, Line, Point, Vector};
+use crate::geom::{Frame, Intersection, Point, Vector};
 use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
-
-/// The radius of the half circle by which d's offset leg hops over a
-/// pin or a crossing it is not joined at, page units: three pins' radii,
-/// so that the hop reads as a bridge, not as a ring about the pin.
-const HOP: f64 = 13.0;
 
 /// The block's half length and half height: smaller than in Fig. 60, so
 /// that the letter of its pin finds room beside it when the block turns.
@@ -547,44 +541,13 @@ impl Drawing {
     /// offset near r) was read as d changing its shape from pose to pose
     /// and put O_ab's letter at the bend; the leg on the crank is the
     /// pose's truth.
-    /// The leg hops over the crank's pin O_ab and over O_ac where the
-    /// rod crosses it ([`hopped`]): drawn through them, d read as pivoted
-    /// at O_ab (the leg along the fixed crank past its pin) or pinned to
-    /// the rod at O_ac.
     fn bar(&self) -> Vec<Point> {
         let q = &self.q;
         if self.m.offset() == 0.0 {
-            return vec![q.c, q.f];
+            vec![q.c, q.f]
+        } else {
+            vec![q.c, q.t, q.f]
         }
-        let radius = self.s.world(HOP);
-        let mut bar = hopped(&[q.c, q.t], &self.over_leg(), radius);
-        bar.push(q.f);
-        bar
-    }
-
-    /// What the offset leg of d passes without a joint: the crank's pin
-    /// B (its links and, where it is fixed, its bearing below it), and
-    /// where the rod crosses the leg's line, on the rod (O_ac).
-    fn over_leg(&self) -> Vec<Over> {
-        let (c, b, a, t) = (self.q.c, self.q.b, self.q.a, self.q.t);
-        let mut at_b = vec![c - b, a - b];
-        if matches!(self.fixed, Link::A | Link::B) {
-            at_b.push(Vector::new(0.0, -1.0));
-        }
-        let mut over = vec![Over {
-            at: b,
-            away_from: at_b,
-        }];
-        let lines = Line::through(b, a).zip(Line::through(c, t));
-        if let Some(Intersection::Point(x)) = lines.map(|(rod, leg)| rod.intersect(&leg))
-            && (x - b).dot(&(a - x)) > 0.0
-        {
-            over.push(Over {
-                at: x,
-                away_from: vec![a - x, b - x],
-            });
-        }
-        over
     }
 
     /// The frame d: the guides and the line of stroke if it is fixed,

@@ -15,7 +15,6 @@ pub(super) mod coupler;
 pub(super) mod cranks;
 pub(super) mod flywheel;
 pub(super) mod forces;
-mod hop;
 pub(super) mod incline;
 pub(super) mod inertia;
 pub(super) mod inversions;
