@@ -482,3 +482,50 @@ fn the_driver_s_omega_keeps_off_b_s_bearing() {
         }
     }
 }
+
+/// Every point of the first path drawn at or after the element `id` in
+/// `svg` (its `d`'s ends and control points).
+fn points_after(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let at = svg
+        .find(&format!(r#"id="{id}""#))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let rest = &svg[at..];
+    let d = rest
+        .find(" d=\"")
+        .unwrap_or_else(|| panic!("no path at {id}"))
+        + 4;
+    let end = d + rest[d..].find('"').unwrap();
+    let numbers: Vec<f64> = rest[d..end]
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
+/// The distance from `p` to the segment `a b`.
+fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let t = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
+#[test]
+fn omega_s_arc_keeps_off_the_rod_and_the_block() {
+    // At l = 1.07 r, 270.92°, ω's arc half a radian after the crank ran
+    // across the rod into the slider's block (the eighth review, 2.5: read
+    // as the rod's or the slider's motion). It now starts where it keeps
+    // clear of them.
+    let svg = svg(FigureName::VelocityAccelerationPolygons, 1.07, 0.0, 270.92);
+    let arc = points_after(&svg, "polygons-omega");
+    let rod = path(&svg, "link-rod");
+    let block = path(&svg, "block-slider");
+    let mut parts: Vec<((f64, f64), (f64, f64))> = vec![(rod[0], rod[1])];
+    parts.extend((0..block.len()).map(|k| (block[k], block[(k + 1) % block.len()])));
+    let nearest = (arc.iter())
+        .flat_map(|&p| parts.iter().map(move |&(a, b)| to_segment(p, a, b)))
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        nearest >= 4.0,
+        "ω's arc {nearest:.1} units from the rod or block"
+    );
+}

@@ -5,7 +5,7 @@
 use super::torque::{ALONG_THE_ROD, PIN_SHORT};
 use super::{LayerCtx, NamedArrow};
 use crate::figure::{Hue, RichText, Role, Shape, TextSize};
-use crate::geom::{Point, Vector};
+use crate::geom::{Point, Vector, point_segment_distance};
 use crate::scene::canvas::Canvas;
 
 /// Length of the arrow v_c, page units; v_p is drawn to the same scale.
@@ -129,7 +129,7 @@ pub(crate) fn omega(ctx: &LayerCtx, canvas: &mut Canvas, id: &str, radius: f64) 
     let pose = ctx.main.pose();
     let c = pose.c();
     let turn = ctx.scene.omega().signum();
-    let start = pose.angle().radians() + 0.5 * turn;
+    let start = omega_start(ctx, canvas.world(radius), canvas.world(OMEGA_CLEAR));
     canvas.push_hued(
         id,
         Role::Force,
@@ -149,6 +149,69 @@ pub(crate) fn omega(ctx: &LayerCtx, canvas: &mut Canvas, id: &str, radius: f64) 
         RichText::parse("ω"),
         TextSize::Letter,
     );
+}
+
+/// Room (page units) ω's arc keeps from the rod, the block, the guides
+/// and the crank where a start clear of them is found.
+const OMEGA_CLEAR: f64 = 6.0;
+
+/// Where ω's arc of world `radius` about the crank centre starts: half
+/// a radian after the crank in the sense of rotation, or, where the arc
+/// there (its sweep of 1.4 rad) would come within `clear` of the rod, the
+/// block, a guide or the crank, the first of seven further starts an
+/// eighth of a turn apart that keeps clear; the clearest if none does.
+/// At a short rod near 270° the arc after the crank ran across the rod
+/// into the block, and read as the rod's or the slider's motion.
+fn omega_start(ctx: &LayerCtx, radius: f64, clear: f64) -> f64 {
+    let pose = ctx.main.pose();
+    let (a, b, c) = (pose.a(), pose.b(), pose.c());
+    let turn = ctx.scene.omega().signum();
+    let s = &ctx.sizes;
+    let (hl, hh) = (s.block_half_length, s.block_half_height);
+    let e = pose.mechanism().offset();
+    let r = pose.mechanism().crank();
+    let (near, far) = s.travel;
+    let corner = |dx: f64, dy: f64| Point::new(a.x + dx, a.y + dy);
+    let guide = |y: f64| {
+        (
+            Point::new(near - hl - 0.15 * r, y),
+            Point::new(far + hl + 0.15 * r, y),
+        )
+    };
+    let parts = [
+        (c, b),
+        (b, a),
+        (corner(-hl, -hh), corner(hl, -hh)),
+        (corner(hl, -hh), corner(hl, hh)),
+        (corner(hl, hh), corner(-hl, hh)),
+        (corner(-hl, hh), corner(-hl, -hh)),
+        guide(e + hh),
+        guide(e - hh),
+    ];
+    let room = |start: f64| {
+        (0..=24)
+            .map(|k| start + turn * 1.4 * k as f64 / 24.0)
+            .map(|t| c + Vector::new(t.cos(), t.sin()) * radius)
+            .flat_map(|p| {
+                parts
+                    .iter()
+                    .map(move |&(u, v)| point_segment_distance(p, u, v))
+            })
+            .fold(f64::INFINITY, f64::min)
+    };
+    let first = pose.angle().radians() + 0.5 * turn;
+    let starts = (0..8).map(|k| first + turn * std::f64::consts::FRAC_PI_4 * k as f64);
+    let mut best = (f64::NEG_INFINITY, first);
+    for start in starts {
+        let got = room(start);
+        if got >= clear {
+            return start;
+        }
+        if got > best.0 {
+            best = (got, start);
+        }
+    }
+    best.1
 }
 
 /// ω about the crank centre and Ω about the rod's middle.
