@@ -42,18 +42,26 @@ pub(super) fn diagram(h: &Handout, name: FigureName) -> Result<Figure> {
 
 /// The figure `name` of the handout's engine on a page `width` by
 /// `height` units (px): a figure laid out wide and low, so that printed
-/// it takes less of a page's height.
+/// it takes less of a page's height; or, where the engine's drawing needs
+/// more than `height` at that width (a long rod's crank gets a detail on
+/// the lower page), on a page of `width` and the figure's own height.
 pub(super) fn diagram_on_page(
     h: &Handout,
     name: FigureName,
     (width, height): (f64, f64),
 ) -> Result<Figure> {
-    let options = FigureOptions {
-        width: Some(PageLength::new(width, PageUnit::Px)?),
+    let width = Some(PageLength::new(width, PageUnit::Px)?);
+    let low = FigureOptions {
+        width,
         height: Some(PageLength::new(height, PageUnit::Px)?),
         ..options(h)
     };
-    name.figure(&options)
+    name.figure(&low).or_else(|_| {
+        name.figure(&FigureOptions {
+            width,
+            ..options(h)
+        })
+    })
 }
 
 /// The options of a figure of the handout's engine: its mechanism, ω,
