@@ -76,9 +76,9 @@ fn argument(case: &Case) -> String {
 
 /// Asserts that `out` is what `case` says: the figure's own bytes
 /// (`own`), a figure, or a refusal (exit 2, one line).
-fn holds(case: &Case, out: &std::process::Output, own: &[u8], how: &str) {
+fn holds(outcome: &str, out: &std::process::Output, own: &[u8], how: &str) {
     let stderr = String::from_utf8_lossy(&out.stderr);
-    match case.outcome.as_str() {
+    match outcome {
         "refused" => {
             assert_eq!(out.status.code(), Some(2), "{how}: not refused");
             assert_eq!(stderr.lines().count(), 1, "{how}: {stderr}");
@@ -87,20 +87,43 @@ fn holds(case: &Case, out: &std::process::Output, own: &[u8], how: &str) {
         outcome => {
             assert!(out.status.success(), "{how}: {stderr}");
             if outcome == "default" {
-                assert!(out.stdout == own, "{how}: not the figure's own");
+                assert!(out.stdout == own, "{how}: not the command's own");
             }
+        }
+    }
+}
+
+/// The long options `command --help` lists.
+fn help_flags(command: &str) -> BTreeSet<String> {
+    let help = String::from_utf8(run(&[command, "--help"]).stdout).unwrap();
+    help.split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
+        .filter(|w| w.starts_with("--") && w.len() > 2)
+        .map(String::from)
+        .collect()
+}
+
+/// Every flag `listed` but those in `skip` has a case (flag, outcome)
+/// that takes it (`default` or `ok`) and one that refuses it, in the
+/// table `tests/options/{csv}`.
+fn every_flag_has_cases(
+    listed: &BTreeSet<String>,
+    skip: &[&str],
+    cases: &[(&str, &str)],
+    csv: &str,
+) {
+    for flag in listed.iter().filter(|f| !skip.contains(&f.as_str())) {
+        for outcome in [["default", "ok"].as_slice(), &["refused"]] {
+            assert!(
+                (cases.iter()).any(|(f, o)| f == flag && outcome.contains(o)),
+                "{flag} has no case {outcome:?} in tests/options/{csv}"
+            );
         }
     }
 }
 
 #[test]
 fn every_option_of_figure_is_in_the_table() {
-    let help = String::from_utf8(run(&["figure", "--help"]).stdout).unwrap();
-    let listed: BTreeSet<String> = help
-        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
-        .filter(|w| w.starts_with("--") && w.len() > 2)
-        .map(String::from)
-        .collect();
+    let listed = help_flags("figure");
     // What writes the figure, not what it draws; `--no-mirror` is
     // `--mirror`'s false.
     let output = [
@@ -110,17 +133,11 @@ fn every_option_of_figure_is_in_the_table() {
         "--help",
         "--no-mirror",
     ];
-    let cases = cases();
-    for flag in listed.iter().filter(|f| !output.contains(&f.as_str())) {
-        for outcome in [["default", "ok"].as_slice(), &["refused"]] {
-            assert!(
-                cases
-                    .iter()
-                    .any(|c| &c.flag == flag && outcome.contains(&c.outcome.as_str())),
-                "{flag} has no case {outcome:?} in tests/options/figure.csv"
-            );
-        }
-    }
+    let all = cases();
+    let cases: Vec<(&str, &str)> = (all.iter())
+        .map(|c| (c.flag.as_str(), c.outcome.as_str()))
+        .collect();
+    every_flag_has_cases(&listed, &output, &cases, "figure.csv");
     assert!(
         listed.contains("--gas-force") && listed.len() > 20,
         "{listed:?}"
@@ -135,7 +152,12 @@ fn the_command_line_and_scene_files_do_as_the_table_says() {
         let own = run(&["figure", &case.figure]).stdout;
         let arg = argument(case);
         let out = run(&["figure", &case.figure, &arg]);
-        holds(case, &out, &own, &format!("figure {} {arg}", case.figure));
+        holds(
+            &case.outcome,
+            &out,
+            &own,
+            &format!("figure {} {arg}", case.figure),
+        );
         if case.scene.is_empty() {
             continue;
         }
@@ -149,7 +171,7 @@ fn the_command_line_and_scene_files_do_as_the_table_says() {
         std::fs::write(&plain, &head).unwrap();
         let own = run(&["scene", plain.to_str().unwrap()]).stdout;
         let out = run(&["scene", file.to_str().unwrap()]);
-        holds(case, &out, &own, &format!("scene file {key:?}"));
+        holds(&case.outcome, &out, &own, &format!("scene file {key:?}"));
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -189,25 +211,14 @@ fn table_cases() -> Vec<TableCase> {
 
 #[test]
 fn every_option_of_table_is_in_its_table() {
-    let help = String::from_utf8(run(&["table", "--help"]).stdout).unwrap();
-    let listed: BTreeSet<String> = help
-        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
-        .filter(|w| w.starts_with("--") && w.len() > 2)
-        .map(String::from)
-        .collect();
+    let listed = help_flags("table");
     // `--angle` is `--angles`' other spelling.
     let not_options = ["--help", "--angle"];
-    let cases = table_cases();
-    for flag in listed.iter().filter(|f| !not_options.contains(&f.as_str())) {
-        for outcome in [["default", "ok"].as_slice(), &["refused"]] {
-            assert!(
-                cases
-                    .iter()
-                    .any(|c| &c.flag == flag && outcome.contains(&c.outcome.as_str())),
-                "{flag} has no case {outcome:?} in tests/options/table.csv"
-            );
-        }
-    }
+    let all = table_cases();
+    let cases: Vec<(&str, &str)> = (all.iter())
+        .map(|c| (c.flag.as_str(), c.outcome.as_str()))
+        .collect();
+    every_flag_has_cases(&listed, &not_options, &cases, "table.csv");
     assert!(
         listed.contains("--max-cells") && listed.len() > 30,
         "{listed:?}"
@@ -226,21 +237,8 @@ fn the_command_line_does_as_the_table_of_table_says() {
         let given: Vec<&str> = args.iter().map(String::as_str).collect();
         let out = run(&given);
         let how = format!("table {} {} {arg}", case.table, case.with.join(" "));
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        match case.outcome.as_str() {
-            "refused" => {
-                assert_eq!(out.status.code(), Some(2), "{how}: not refused");
-                assert_eq!(stderr.lines().count(), 1, "{how}: {stderr}");
-                assert!(out.stdout.is_empty(), "{how}");
-            }
-            outcome => {
-                assert!(out.status.success(), "{how}: {stderr}");
-                assert!(!out.stdout.is_empty(), "{how}");
-                if outcome == "default" {
-                    assert!(out.stdout == own, "{how}: not the table's own");
-                }
-            }
-        }
+        holds(&case.outcome, &out, &own, &how);
+        assert!(case.outcome == "refused" || !out.stdout.is_empty(), "{how}");
     }
 }
 
@@ -276,26 +274,15 @@ fn analyze_cases() -> Vec<AnalyzeCase> {
 
 #[test]
 fn every_option_of_analyze_is_in_its_table() {
-    let help = String::from_utf8(run(&["analyze", "--help"]).stdout).unwrap();
-    let listed: BTreeSet<String> = help
-        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '-'))
-        .filter(|w| w.starts_with("--") && w.len() > 2)
-        .map(String::from)
-        .collect();
+    let listed = help_flags("analyze");
     // `--angles` is `--angle`'s other spelling; `--json` how the analysis
     // is written (the Python package's is always the JSON object).
     let not_options = ["--help", "--angles", "--json"];
-    let cases = analyze_cases();
-    for flag in listed.iter().filter(|f| !not_options.contains(&f.as_str())) {
-        for outcome in [["default", "ok"].as_slice(), &["refused"]] {
-            assert!(
-                cases
-                    .iter()
-                    .any(|c| &c.flag == flag && outcome.contains(&c.outcome.as_str())),
-                "{flag} has no case {outcome:?} in tests/options/analyze.csv"
-            );
-        }
-    }
+    let all = analyze_cases();
+    let cases: Vec<(&str, &str)> = (all.iter())
+        .map(|c| (c.flag.as_str(), c.outcome.as_str()))
+        .collect();
+    every_flag_has_cases(&listed, &not_options, &cases, "analyze.csv");
     assert!(
         listed.contains("--slot-radius") && listed.len() > 20,
         "{listed:?}"
@@ -314,20 +301,10 @@ fn the_command_line_does_as_the_table_of_analyze_says() {
         let given: Vec<&str> = args.iter().map(String::as_str).collect();
         let out = run(&given);
         let how = format!("analyze {} {arg}", case.with.join(" "));
-        let stderr = String::from_utf8_lossy(&out.stderr);
-        match case.outcome.as_str() {
-            "refused" => {
-                assert_eq!(out.status.code(), Some(2), "{how}: not refused");
-                assert_eq!(stderr.lines().count(), 1, "{how}: {stderr}");
-                assert!(out.stdout.is_empty(), "{how}");
-            }
-            outcome => {
-                assert!(out.status.success(), "{how}: {stderr}");
-                assert!(out.stdout.starts_with(b"{"), "{how}");
-                if outcome == "default" {
-                    assert!(out.stdout == own, "{how}: not the command's own");
-                }
-            }
-        }
+        holds(&case.outcome, &out, &own, &how);
+        assert!(
+            case.outcome == "refused" || out.stdout.starts_with(b"{"),
+            "{how}"
+        );
     }
 }
