@@ -6,7 +6,7 @@
 use super::canvas::Canvas;
 use crate::figure::{HATCH_DEPTH, HATCH_SPACING};
 use crate::figure::{RichText, Role, Shape, TextSize};
-use crate::geom::{Point, Vector, crossing, perp, segment_distance, unit};
+use crate::geom::{Frame, Point, Vector, crossing, perp, segment_distance, unit};
 
 /// Clear distance, page units, kept between a guide (with its hatching)
 /// and a link passing in front of it: the link's half width, the
@@ -21,6 +21,9 @@ pub(crate) const HATCH_SLANT: f64 = 6.0;
 pub(crate) const BEARING_REACH: f64 = 25.0;
 /// Room left unhatched at a fixed link's pins, page units.
 pub(crate) const PIN_CLEAR: f64 = 8.0;
+/// How far past the canvas's edges (page units, beyond a link end's
+/// room) a fixed link is hatched ([`Canvas::hatch_edge`]).
+const HATCH_MARGIN: f64 = 20.0;
 /// Clear distance kept between a hatch stroke and a moving link, page units.
 const HATCH_CLEAR: f64 = 2.5;
 /// Shortest run of hatch strokes drawn.
@@ -155,6 +158,16 @@ impl Canvas {
         avoid: &[Seg],
         ends: f64,
     ) {
+        // Only the part on the canvas (and a margin past its edges, where
+        // the room left at a cut end falls) is hatched: a long rod's fixed
+        // link in an enlarged detail ran to millions of page units, its
+        // strokes counted one by one (a rod of 1e8 cranks took minutes).
+        let m = self.world(ends + HATCH_MARGIN);
+        let f = *self.frame();
+        let grown = Frame::new(f.min() - Vector::new(m, m), f.max() + Vector::new(m, m));
+        let Some((p, q)) = grown.clip_segment(p, q) else {
+            return;
+        };
         let mut best: Option<(f64, Vector, Runs)> = None;
         for &side in sides {
             let runs = self.clear_runs(&[p, q], &|_| side, avoid, ends);
