@@ -86,6 +86,11 @@ const CRANK_TARGET: f64 = 110.0;
 /// angles without a torque gets a detail of the crank (see the module
 /// docs).
 const ANGLES_THRESHOLD: f64 = 40.0;
+/// The crank radius, page units, under which the polygons' figure (its
+/// crank marked by ω alone) gets a crank's detail: a crank of 30 units
+/// reads, and a handout's low page (760 by 480) draws its engine's crank
+/// at about that without a detail's room.
+const POLYGONS_THRESHOLD: f64 = 25.0;
 /// The least crank radius in the detail of such a figure, page units.
 const ANGLES_TARGET: f64 = 80.0;
 
@@ -590,8 +595,10 @@ fn crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let torque = ctx.scene.has(Layer::Torque);
     let (threshold, target) = if torque {
         (CRANK_THRESHOLD, CRANK_TARGET)
-    } else if ctx.scene.has(Layer::Angles) || ctx.scene.has(Layer::Polygons) {
+    } else if ctx.scene.has(Layer::Angles) {
         (ANGLES_THRESHOLD, ANGLES_TARGET)
+    } else if ctx.scene.has(Layer::Polygons) {
+        (POLYGONS_THRESHOLD, ANGLES_TARGET)
     } else {
         return None;
     };
