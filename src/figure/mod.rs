@@ -20,11 +20,13 @@ mod transform;
 
 pub use crate::error::is_noncharacter;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
-pub use model::{Align, Dash, Figure, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize};
+pub use model::{Align, Dash, Figure, Foot, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize};
 pub use page_length::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use style::Style;
-pub(crate) use style::{HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, Pen, RIGHT_ANGLE};
+pub(crate) use style::{
+    ANGLE_RADIUS, HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, Pen, RIGHT_ANGLE,
+};
 pub use text::{
     MAX_TITLE_CHARS, RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Title,
 };

@@ -163,6 +163,34 @@ pub enum Symbol {
 
 /// A primitive. Positions are in the panel's world coordinates; sizes of
 /// symbols (pins, arrowheads, hatch strokes, marks, text) are in page units,
+/// The side of its centre a bearing's pedestal and hatched base stand on,
+/// in page terms.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Foot {
+    /// Below the centre: the usual pedestal.
+    Below,
+    /// Above it, hanging from the frame.
+    Above,
+    /// To its left, standing out of a wall.
+    Left,
+    /// To its right.
+    Right,
+}
+
+impl Foot {
+    /// The page directions (y down) towards the base and along it.
+    pub fn axes(self) -> (Vector, Vector) {
+        let across = Vector::new(1.0, 0.0);
+        let up_the_base = Vector::new(0.0, 1.0);
+        match self {
+            Foot::Below => (Vector::new(0.0, 1.0), across),
+            Foot::Above => (Vector::new(0.0, -1.0), across),
+            Foot::Left => (Vector::new(-1.0, 0.0), up_the_base),
+            Foot::Right => (Vector::new(1.0, 0.0), up_the_base),
+        }
+    }
+}
+
 /// so they look the same at every scale.
 #[derive(Debug, Clone, PartialEq)]
 #[non_exhaustive]
@@ -212,15 +240,15 @@ pub enum Shape {
         /// The point.
         centre: Point,
     },
-    /// The fixed bearing of the crank: a pedestal with hatched base below
-    /// the centre (in page terms), or above it where `hanging`.
+    /// The fixed bearing of the crank: a pedestal with a hatched base on
+    /// the side `foot` of the centre (in page terms).
     Bearing {
         /// Centre of the shaft.
         centre: Point,
-        /// Drawn hanging from above, pedestal and base over the centre:
-        /// a crank pointing down the page would run through a pedestal
-        /// below it.
-        hanging: bool,
+        /// The side the pedestal stands on: below the centre, or, where a
+        /// crank pointing down the page would run through it, above or to
+        /// a side.
+        foot: Foot,
     },
     /// A filled body with a link outline (the slider block).
     Block {

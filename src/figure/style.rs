@@ -161,3 +161,6 @@ pub(crate) const NOTE_LINE: f64 = 17.0;
 /// Length of each side of a right-angle mark, page units (the scene
 /// draws one only on a leg longer than two of them).
 pub(crate) const RIGHT_ANGLE: f64 = 10.0;
+/// Radius of an angle mark's arc, page units: the layout draws it, and
+/// the scene leaves out an angle too small to open at it.
+pub(crate) const ANGLE_RADIUS: f64 = 28.0;

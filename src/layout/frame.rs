@@ -8,47 +8,54 @@ use super::mark::{PathCommand, PathData};
 use super::markup::{finite, path, polyline_d, unit};
 use super::symbol_sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
 use super::{Ink, PanelLayout};
-use crate::figure::Pen;
-use crate::figure::TextSize;
+use crate::figure::{Foot, Pen, TextSize};
 use crate::geom::{Point, Vector};
 
 impl PanelLayout<'_> {
-    /// The crank's bearing: a pedestal (a triangle on the paper) below the
-    /// shaft's centre, on a hatched foot (above it, `hanging`, the foot
-    /// hatched on its upper side). Kept clear by labels: the triangle's
+    /// The crank's bearing: a pedestal (a triangle on the paper) on a
+    /// hatched foot on the side `foot` of the shaft's centre, the foot
+    /// hatched on its far side. Kept clear by labels: the triangle's
     /// edges and the foot with its hatching.
-    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point, hanging: bool) -> Option<Mark> {
+    pub(super) fn bearing(&mut self, ink: &Ink, centre: Point, foot: Foot) -> Option<Mark> {
         let c = self.p(centre);
         if !finite(&c) {
             return None;
         }
-        // Down the page, or up it for a bearing hanging from above.
-        let down = if hanging { -1.0 } else { 1.0 };
-        let (h, w, base) = (17.0 * down, 10.0, 17.0);
-        let tri = [c, c + Vector::new(-w, h), c + Vector::new(w, h)];
-        let foot = [c + Vector::new(-base, h), c + Vector::new(base, h)];
+        // `d` towards the foot, `s` along it.
+        let (d, s) = foot.axes();
+        let at = |along: f64, out: f64| c + s * along + d * out;
+        let (h, w, base) = (17.0, 10.0, 17.0);
+        let tri = [c, at(-w, h), at(w, h)];
+        let feet = [at(-base, h), at(base, h)];
         let mut hatch = PathData::new();
         let mut x = -base + 3.0;
         while x <= base {
-            let s = c + Vector::new(x, h);
-            hatch.push(PathCommand::Move(s));
-            hatch.push(PathCommand::Line(s + Vector::new(-5.0, 6.0 * down)));
+            let p = at(x, h);
+            hatch.push(PathCommand::Move(p));
+            hatch.push(PathCommand::Line(p - s * 5.0 + d * 6.0));
             x += 5.0;
         }
         // The triangle and the foot are lines to keep clear of; the
         // hatching beyond the foot is a strip no letter enters.
         self.obstacles.polyline(&[tri[0], tri[1], tri[2], tri[0]]);
-        self.obstacles.segment(foot[0], foot[1]);
-        let (y0, y1) = (h.min(h + 6.0 * down), h.max(h + 6.0 * down));
-        self.obstacles.boxed(Bounds {
-            min: c + Vector::new(-base - 5.0, y0),
-            max: c + Vector::new(base, y1),
-        });
+        self.obstacles.segment(feet[0], feet[1]);
+        let corners = [
+            at(-base - 5.0, h),
+            at(base, h),
+            at(-base - 5.0, h + 6.0),
+            at(base, h + 6.0),
+        ];
+        let (lo, hi) = corners[1..]
+            .iter()
+            .fold((corners[0], corners[0]), |(lo, hi), p| {
+                (lo.inf(p), hi.sup(p))
+            });
+        self.obstacles.boxed(Bounds { min: lo, max: hi });
         let pen = ink.pen;
         Some(
             ink.tag(Mark::group())
                 .with(path(polyline_d(&tri, true), pen).fill(self.style.paper()))
-                .with(path(polyline_d(&foot, false), pen))
+                .with(path(polyline_d(&feet, false), pen))
                 .with(path(hatch, Pen { width: 0.7, ..pen })),
         )
     }

@@ -16,8 +16,9 @@ use crate::geom::{Point, Vector};
 const SLIDE: f64 = 4.0;
 /// The least clear length between a dimension's two heads drawn inside
 /// its extension lines, page units; a shorter dimension has its heads
-/// outside, pointing in.
-const HEADS_GAP: f64 = 4.0;
+/// outside, pointing in. At 4 units the stroke of a long rod's engine
+/// (27 units) had its two heads inside, merged into one black shape.
+const HEADS_GAP: f64 = 12.0;
 /// How far a dimension line runs on past an outside head, page units.
 const LEADER: f64 = 6.0;
 /// The first stretch of an extension line, from its point, on which a
@@ -236,10 +237,15 @@ impl PanelLayout<'_> {
 /// its letter outside both, could not be told from T's. As (page vertex,
 /// size of the sweep, radius).
 pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64, f64)> {
-    let marks: Vec<(Point, f64)> = items
+    let marks: Vec<(Point, f64, f64)> = items
         .iter()
         .filter_map(|item| match &item.shape {
-            Shape::AngleMark { vertex, sweep, .. } => Some((t.apply(*vertex), sweep.abs())),
+            Shape::AngleMark {
+                vertex,
+                start,
+                sweep,
+                ..
+            } => Some((t.apply(*vertex), *start, *sweep)),
             _ => None,
         })
         .collect();
@@ -255,18 +261,49 @@ pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64
             _ => None,
         })
         .collect();
+    let feet: Vec<(Point, Vector)> = items
+        .iter()
+        .filter_map(|item| match &item.shape {
+            Shape::Bearing { centre, foot } => Some((t.apply(*centre), foot.axes().0)),
+            _ => None,
+        })
+        .collect();
     marks
         .iter()
-        .map(|&(c, sweep)| {
+        .map(|&(c, start, sweep)| {
             let at = |v: &Point| (*v - c).norm() < 1.0;
-            let larger = marks.iter().filter(|(v, s)| at(v) && *s > sweep).count();
+            let larger = (marks.iter())
+                .filter(|(v, _, s)| at(v) && s.abs() > sweep.abs())
+                .count();
             let least = (arrows.iter())
                 .filter(|(v, _)| at(v))
                 .map(|(_, r)| r + ANGLE_STEP)
                 .fold(ANGLE_RADIUS, f64::max);
-            (c, sweep, least + ANGLE_STEP * larger as f64)
+            let on_foot = (feet.iter()).any(|(v, out)| at(v) && crosses(t, (start, sweep), *out));
+            let least = if on_foot {
+                least.max(CLEAR_OF_BEARING)
+            } else {
+                least
+            };
+            (c, sweep.abs(), least + ANGLE_STEP * larger as f64)
         })
         .collect()
+}
+
+/// The least radius (page units) of an angle's arc that passes over a
+/// bearing at its vertex: past the corners of its hatched foot (17 out,
+/// hatched to 23, 22 along: 32 from the centre) by a gap. θ's arc at 28
+/// ran through a hanging bearing's hatching (Fig. 62 at 270°, long rods).
+const CLEAR_OF_BEARING: f64 = 36.0;
+
+/// Whether the arc from the world angle `start` turning `sweep` passes
+/// within 50° of the page direction `out` (a bearing's foot).
+fn crosses(t: &PageFromWorld, (start, sweep): (f64, f64), out: Vector) -> bool {
+    (0..=24).any(|k| {
+        let w = start + sweep * f64::from(k) / 24.0;
+        let d = t.apply_vector(Vector::new(w.cos(), w.sin()));
+        d.norm() > 0.0 && d.normalize().dot(&out) > 50f64.to_radians().cos()
+    })
 }
 
 #[cfg(test)]

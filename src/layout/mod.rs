@@ -226,7 +226,7 @@ impl PanelLayout<'_> {
             Shape::Pin { centre } => self.pin(&ink, *centre),
             Shape::Dot { centre } => self.dot(&ink, *centre),
             Shape::Marker { centre, symbol } => self.marker(&ink, *centre, *symbol),
-            Shape::Bearing { centre, hanging } => self.bearing(&ink, *centre, *hanging),
+            Shape::Bearing { centre, foot } => self.bearing(&ink, *centre, *foot),
             Shape::Hatch { from, to, side } => self.hatch(&ink, *from, *to, *side),
             Shape::Block { points } => self.block(&ink, points),
             Shape::Arrow { from, to } => self.arrow(&ink, *from, *to),

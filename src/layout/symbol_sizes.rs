@@ -11,9 +11,9 @@ pub(crate) const DOT_RADIUS: f64 = 2.1;
 pub(crate) const ARROW_LENGTH: f64 = 10.0;
 /// Half the width of an arrowhead at its back.
 pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
-pub(crate) use crate::figure::{HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, RIGHT_ANGLE};
-/// Radius of an angle mark's arc.
-pub(crate) const ANGLE_RADIUS: f64 = 28.0;
+pub(crate) use crate::figure::{
+    ANGLE_RADIUS, HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, RIGHT_ANGLE,
+};
 /// How much larger each further angle mark at the same vertex is drawn,
 /// so that two adjacent angles (Ng's φ and β at the crank pin) read as
 /// two arcs, not one.

@@ -385,7 +385,12 @@ impl Canvas {
             Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
             Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
         };
-        self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+        // A pin inside a crank's detail is lettered there: on the main
+        // view its letter stood against its neighbour's (A and C touching
+        // at a short rod's inner dead centre, the block in the circle).
+        if !(marker == Marker::Pin && self.is_bare(p)) {
+            self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+        }
     }
 
     /// A point lettered `markup` (a sketch's, which records no metadata):
@@ -425,23 +430,37 @@ impl Canvas {
     /// A point at infinity in the direction `u` (a sketch's, which records
     /// no metadata): an arrow at the frame's edge on the ray from `from`,
     /// lettered `markup` "at ∞", where it fits between `from` and the edge;
-    /// nothing for a zero `u`. Returns the arrow's tail, where a line
-    /// towards it from `from` would end (`None`: no arrow drawn).
+    /// nothing for a zero `u` or in a detail. The letter stands by the arrow's tail, or,
+    /// `beside` it, by its middle as a line's name (where a point lettered
+    /// already stands at the tail: inversion 2's O_bd, whose letter and
+    /// O_cd's were stacked over one dot). Returns the arrow's tail, where
+    /// a line towards it from `from` would end (`None`: no arrow drawn).
     pub(crate) fn lettered_at_infinity(
         &mut self,
         name: &str,
-        from: Point,
-        u: Vector,
+        (from, u): (Point, Vector),
         markup: &str,
+        beside: bool,
     ) -> Option<Point> {
-        if u.norm() == 0.0 {
+        // A detail shows its region only: the arrow is the main view's.
+        if u.norm() == 0.0 || !self.edge_arrows {
             return None;
         }
         let u = u.normalize();
         let (_, edge) = self.frame.clip_ray(from, u)?;
         let tail = self.edge_arrow_after(format!("infinity-{name}"), from, edge, u)?;
         let letter = RichText::parse(&format!("{markup} at ∞"));
-        self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
+        if beside {
+            let head = edge - u * self.world(EDGE_GAP);
+            self.line_label(
+                format!("label-{name}"),
+                (tail, head),
+                letter,
+                TextSize::Letter,
+            );
+        } else {
+            self.label(format!("label-{name}"), tail, letter, TextSize::Letter);
+        }
         Some(tail)
     }
 

@@ -129,7 +129,7 @@ impl Canvas {
                 Role::Frame,
                 Shape::Bearing {
                     centre: p,
-                    hanging: false,
+                    foot: crate::figure::Foot::Below,
                 },
             );
         }

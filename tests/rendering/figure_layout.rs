@@ -375,3 +375,90 @@ fn a_curve_through_hatching_breaks_it() {
         );
     }
 }
+
+/// The segments of the strokes `id` (after the panel's prefix) in `panel`.
+fn pieces(panel: &plate::Panel, id: &str) -> Vec<plate::Seg> {
+    let id = format!("{}{id}", panel.prefix);
+    panel
+        .strokes
+        .iter()
+        .filter(|s| s.id == id)
+        .flat_map(|s| s.segs.iter().copied())
+        .collect()
+}
+
+/// The least distance from points along `a`'s pieces (21 to a piece) to
+/// `b`'s pieces; infinite where either is not drawn.
+fn nearest(a: &[plate::Seg], b: &[plate::Seg]) -> f64 {
+    a.iter()
+        .flat_map(|s| {
+            (0..=20).map(move |k| {
+                let t = f64::from(k) / 20.0;
+                (s.0.0 + t * (s.1.0 - s.0.0), s.0.1 + t * (s.1.1 - s.0.1))
+            })
+        })
+        .flat_map(|p| b.iter().map(move |s| s.distance_to(p)))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Ng's Fig. 1 (eighth review): at long rods near 270° v_c, which would
+/// lie along the rod, came to the crank pin from the other side, on F_c's
+/// line in F_c's sense, and the two were one arrow named "v_c F_c"; and
+/// v_p's tail stood on F_s's shaft above the block, a branch of F_s, at
+/// short and long rods. Over the turn at short, middling and long rods,
+/// in the main view and the crank's detail: v_c's arrow keeps 3 units
+/// from F_c's, and v_p's 4 units from F_s's.
+#[test]
+fn ngs_velocities_keep_off_the_forces_arrows() {
+    let angles = (0..360)
+        .step_by(15)
+        .map(f64::from)
+        .chain([269.52, 270.82, 90.32, 269.27]);
+    let angles: Vec<f64> = angles.collect();
+    for l in [1.04, 1.07, 1.1, 3.0, 26.0, 39.7, 50.0] {
+        for &deg in &angles {
+            let text = svg(FigureName::NgFig1Torque, Some((1.0, l, 0.0, deg)), None);
+            let plate = Plate::read(&text);
+            for panel in &plate.panels {
+                let vc = nearest(&pieces(panel, "velocity-vc"), &pieces(panel, "force-Fc"));
+                assert!(
+                    vc >= 3.0,
+                    "l = {l} r, {deg}°, {}: v_c {vc:.1} from F_c",
+                    panel.id
+                );
+                let vp = nearest(&pieces(panel, "velocity-vp"), &pieces(panel, "force-Fs"));
+                assert!(
+                    vp >= 4.0,
+                    "l = {l} r, {deg}°, {}: v_p {vp:.1} from F_s",
+                    panel.id
+                );
+            }
+        }
+    }
+}
+
+/// Inversion 2 at its default (eighth review): O_cd at infinity on the
+/// line A O_bd had its arrow begin at O_bd's dot by the page's edge, and
+/// "O_cd at ∞" stood stacked on O_bd's letter over the one dot. The page
+/// now reaches past O_bd for O_cd's line and arrow, its letter by the
+/// arrow: the two letters' boxes keep 20 units apart.
+#[test]
+fn o_cd_at_infinity_is_lettered_apart_from_o_bd() {
+    let text = svg(FigureName::Inversion2RotatingBlock, None, None);
+    let plate = Plate::read(&text);
+    let label = |id: &str| {
+        plate
+            .panels
+            .iter()
+            .flat_map(|p| p.labels.iter())
+            .find(|l| l.id == id)
+            .map(|l| l.rect)
+            .unwrap_or_else(|| panic!("{id} not lettered"))
+    };
+    let (cd, bd) = (label("label-O-cd"), label("label-O-bd"));
+    let gap = (cd.x0 - bd.x1)
+        .max(bd.x0 - cd.x1)
+        .max(cd.y0 - bd.y1)
+        .max(bd.y0 - cd.y1);
+    assert!(gap >= 20.0, "O_cd's and O_bd's letters {gap:.1} apart");
+}

@@ -2835,3 +2835,107 @@ fn the_coriolis_figures_crank_detail_is_a_plate() {
         }
     }
 }
+
+/// Fig. 62 at l = 1.39 r, e = 0.269 r, 180° (eighth review): the block in
+/// the crank circle, A's and C's letters touching on the main view beside
+/// the crank's detail that letters them apart. A pin inside a crank's
+/// detail is lettered there only; so is the rod's value where the rod's
+/// middle lies in it.
+#[test]
+fn pins_inside_a_crank_s_detail_are_lettered_only_there() {
+    let plate = Plate::read(&svg_at("fig-62-displacement", 1.39, 0.269, 180.0));
+    let ids: Vec<&str> = plate
+        .panels
+        .iter()
+        .flat_map(|p| p.labels.iter().map(|l| l.id.as_str()))
+        .collect();
+    for letter in ["A", "C"] {
+        assert!(
+            ids.contains(&format!("detail-label-{letter}").as_str()),
+            "{letter} not lettered in the detail: {ids:?}"
+        );
+        assert!(
+            !ids.contains(&format!("label-{letter}").as_str()),
+            "{letter} lettered on the main view too: {ids:?}"
+        );
+    }
+}
+
+/// Fig. 62 near 270° with an offset (eighth review, l = 1.39 r,
+/// e = 0.269 r, 270.63°): the crank bearing, hung from above because the
+/// crank points down, had its foot level with the guides and its
+/// hatching in line with theirs, read as a piece of the guide. No
+/// bearing's foot (its longest stroke) lies along the stroke within the
+/// guides' heights, hatching included, over short rods with offsets near
+/// 270°.
+#[test]
+fn a_bearing_s_foot_never_lies_along_the_guides() {
+    for (rod, offset) in [(1.39, 0.269), (1.2, 0.15), (1.5, -0.3), (2.0, 0.6)] {
+        for deg in [260.0, 265.0, 270.0, 270.63, 275.0, 280.0] {
+            let plate = Plate::read(&svg_at("fig-62-displacement", rod, offset, deg));
+            let main = &plate.panels[0];
+            let foot = main
+                .strokes
+                .iter()
+                .filter(|s| s.id.starts_with("bearing-"))
+                .flat_map(|s| s.segs.iter().copied())
+                .max_by(|a, b| {
+                    let len = |s: &Seg| (s.1.0 - s.0.0).hypot(s.1.1 - s.0.1);
+                    len(a).total_cmp(&len(b))
+                })
+                .expect("a bearing");
+            let ys: Vec<f64> = main
+                .strokes
+                .iter()
+                .filter(|s| s.id.starts_with("guide-"))
+                .flat_map(|s| s.segs.iter().flat_map(|g| [g.0.1, g.1.1]))
+                .collect();
+            let (lo, hi) = ys
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &y| {
+                    (lo.min(y), hi.max(y))
+                });
+            let level = (foot.0.1 - foot.1.1).abs() < 1.0;
+            let y = foot.0.1;
+            let within = y > lo - 8.0 && y < hi + 8.0;
+            assert!(
+                !(level && within),
+                "l = {rod} r, e = {offset} r, {deg}°: the bearing's foot at {y:.1} lies along the guides ({lo:.1} to {hi:.1})"
+            );
+        }
+    }
+}
+
+/// Fig. 62 at long rods (eighth review, l = 47.9 r, 89.32°): φ was
+/// lettered beside an arc that does not open (1.2° at 28 units: half a
+/// unit). An obliquity that opens its arc by less than 2 units is not
+/// marked, and the notes give its value; the default's φ is marked.
+#[test]
+fn an_obliquity_too_small_to_open_its_arc_is_given_in_the_notes() {
+    let text = svg_at("fig-62-displacement", 47.9, 0.0, 89.32);
+    let plate = Plate::read(&text);
+    assert!(
+        plate
+            .panels
+            .iter()
+            .all(|p| !draws(p, &format!("{}angle-phi", p.prefix))),
+        "φ marked at 1.2°"
+    );
+    assert!(
+        common::read_text(&text).contains("too small for its arc"),
+        "no note for φ"
+    );
+    let default = to_svg(
+        &FigureName::from_name("fig-62-displacement")
+            .unwrap()
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    assert!(
+        Plate::read(&default)
+            .panels
+            .iter()
+            .any(|p| draws(p, "angle-phi"))
+    );
+    assert!(!common::read_text(&default).contains("too small for its arc"));
+}

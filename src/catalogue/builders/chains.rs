@@ -436,7 +436,7 @@ fn slot_panel(
             s.lettered("O-cd", o, "*O*_{cd}", Marker::Dot, c);
         }
         _ => {
-            s.lettered_at_infinity("O-cd", a, Vector::new(0.0, -1.0), "*O*_{cd}");
+            s.lettered_at_infinity("O-cd", (a, Vector::new(0.0, -1.0)), "*O*_{cd}", false);
         }
     }
     ChainCentres::of_cylindric(&pose).to_json()

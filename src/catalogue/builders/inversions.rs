@@ -184,7 +184,9 @@ fn layout(
     let size = turn.max() - turn.min();
     let tall = full.height - crate::diagram::CAPTION;
     let scale = (full.width / size.x).min(tall / size.y);
-    let world = drawn(m, pose, &turn, EDGE_ROOM / scale);
+    // On a page of a fixed width, room past O_bd would cost the drawing
+    // its scale: only a page that fits its width to the drawing has it.
+    let world = drawn(m, pose, &turn, EDGE_ROOM / scale, page.fits_width());
     let seen = world.max() - world.min();
     let margin = page.margin();
     let wide = (seen.x * scale + 2.0 * margin).max(crate::scene::LEAST_FITTED_WIDTH);
@@ -212,10 +214,11 @@ fn padded(frame: Frame, share: f64) -> Frame {
 }
 
 /// The world frame of what Inversion 2 draws at `pose`, grown by `pad`:
-/// the links, the block, the path of A about B, and the centres O_bd and O_ac where they lie within the
+/// the links, the block, the path of A about B, room past O_bd for O_cd
+/// at infinity (`beyond`), and the centres O_bd and O_ac where they lie within the
 /// turn's world `turn` grown by a quarter of its size each way (a centre
 /// beyond is an arrow at the edge).
-fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64) -> Frame {
+fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64, beyond: bool) -> Frame {
     let (lh, hh) = block_size(m);
     let l = m.rod();
     let q = parts(m, pose);
@@ -232,10 +235,28 @@ fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64) -> Frame
             points.push(x);
         }
     }
+    // O_cd at infinity continues the line A O_bd past O_bd: room there
+    // for its dashed line, its arrow and its letter, apart from O_bd's.
+    let (bd, cd) = (
+        pose.centres().centre(Link::B, Link::D),
+        pose.centres().centre(Link::C, Link::D),
+    );
+    if let (Some(Intersection::Point(x)), Some(Intersection::AtInfinity(_))) = (bd, cd)
+        && beyond
+        && reach.contains(x)
+        && x != q.a
+    {
+        points.push(x + (x - q.a).normalize() * (BEYOND_O_BD * pad));
+    }
     let lo = points.iter().fold(turn.max(), |lo, p| lo.inf(p));
     let hi = points.iter().fold(turn.min(), |hi, p| hi.sup(p));
     Frame::new(lo - Vector::new(pad, pad), hi + Vector::new(pad, pad))
 }
+
+/// How far past O_bd the page reaches where O_cd lies at infinity on the
+/// line A O_bd, in [`EDGE_ROOM`]s: O_cd's arrow began at O_bd's dot and its
+/// "at ∞" stood stacked on O_bd's letter (the default engine).
+const BEYOND_O_BD: f64 = 2.0;
 
 /// The panel's caption, `Inversion 2: link a fixed, rotating block: …`,
 /// where it fits the panel `width` on one line; on a narrower page the
@@ -311,7 +332,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
 const CRANK_LEAST: f64 = 40.0;
 
 /// A crank detail's reach about its centre, in cranks: the crank's two
-/// pins, the path about them and room for their letters.
+/// pins, the path about them and room for their letters ([`crank_window`]).
 const CRANK_REACH: f64 = 1.5;
 
 /// A crank's enlarged detail in the panel `rect` (its caption included),
@@ -326,8 +347,24 @@ pub(super) fn crank_window(
     rect: crate::figure::PageRect,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
+    let reach = CRANK_REACH * ctx.mechanism.crank();
+    window(ctx, name, (centre, reach), rect, scale)
+}
+
+/// An enlarged detail in the panel `rect` (its caption included) for a
+/// main view at `scale` page units per world unit: the world region about
+/// `centre` it shows, `reach` world units each way across its shorter
+/// side at a round magnification (at least 1), and its plot, captioned
+/// with the magnification; its panel `panel-{name}`.
+fn window(
+    ctx: &Ctx,
+    name: &str,
+    (centre, reach): (Point, f64),
+    rect: crate::figure::PageRect,
+    scale: f64,
+) -> Result<(Frame, Plot)> {
     let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
-    let wanted = w.min(h) / (2.0 * CRANK_REACH * ctx.mechanism.crank()) / scale;
+    let wanted = w.min(h) / (2.0 * reach) / scale;
     let steps = super::coriolis::FINE_STEPS;
     let magnification = super::coriolis::round_below(wanted, &steps).max(1.0);
     let half = Vector::new(w, h) * (0.5 / (magnification * scale));
@@ -381,6 +418,8 @@ fn crank_detail(
     if m.crank() * scale >= CRANK_LEAST {
         return Ok(None);
     }
+    let q = parts(&m, pose);
+    let (centre, reach) = (mid(q.c, q.b), CRANK_REACH * m.crank());
     let w = CRANK_DETAIL.0.min(rect.width);
     let detail_rect = crate::figure::PageRect::new(
         rect.x + 0.5 * (rect.width - w),
@@ -388,8 +427,7 @@ fn crank_detail(
         w,
         CRANK_DETAIL.1,
     );
-    let q = parts(&m, pose);
-    let (region, mut plot) = crank_window(ctx, "detail", mid(q.c, q.b), detail_rect, scale)?;
+    let (region, mut plot) = window(ctx, "detail", (centre, reach), detail_rect, scale)?;
     let map = *plot.map();
     let block = super::chains::block_on_page(block_size(&m), map.scale());
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
@@ -767,7 +805,9 @@ impl Drawing {
                 }
                 Intersection::AtInfinity(dir) => {
                     let u = self.towards(dir.into_inner(), from, along);
-                    if let Some(tail) = self.s.lettered_at_infinity(key, from, u, markup) {
+                    let beside = drawn.is_some();
+                    if let Some(tail) = self.s.lettered_at_infinity(key, (from, u), markup, beside)
+                    {
                         self.line_to_infinity(key, from, tail, drawn);
                     }
                 }

@@ -2,7 +2,7 @@
 //! mid-stroke, the stroke, r and l.
 
 use super::LayerCtx;
-use crate::figure::{RichText, Role, Shape, TextSize};
+use crate::figure::{ANGLE_RADIUS, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::mechanism::SliderCrank;
 use crate::scene::canvas::{Canvas, Marker};
@@ -39,7 +39,7 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
     // arc from it to the rod.
     let ba = a - b;
     let phi = ba.y.atan2(ba.x);
-    if canvas.page(ba.norm()) * phi.abs() > 6.0 && !canvas.is_bare(b) {
+    if canvas.page(ba.norm()) * phi.abs() > 6.0 && opens(phi) && !canvas.is_bare(b) {
         let reach = canvas.world(PARALLEL).min(0.6 * ba.x);
         canvas.segment(
             "line-parallel-B",
@@ -66,7 +66,33 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
     } else {
         RichText::parse(&format!("*l* = {}*r*", crate::number::short(m.ratio())))
     };
-    canvas.line_label("value-l", (b, a), l, TextSize::Small);
+    if !canvas.is_bare(nalgebra::center(&b, &a)) {
+        canvas.line_label("value-l", (b, a), l, TextSize::Small);
+    }
+}
+
+/// The least opening (page units) of an angle's arc at
+/// [`ANGLE_RADIUS`] for it to be drawn: a smaller one is a single line
+/// with a letter beside it (φ at long rods, at most 1.2° at 48 cranks).
+const LEAST_OPENING: f64 = 2.0;
+
+/// Whether the obliquity `phi` (radians) opens its arc by
+/// [`LEAST_OPENING`]; where not, it is left unmarked and the notes give
+/// its value ([`phi_note`]).
+fn opens(phi: f64) -> bool {
+    ANGLE_RADIUS * phi.abs() >= LEAST_OPENING
+}
+
+/// The note for an obliquity too small to mark at `phi` (radians): its
+/// value in degrees; none where it is marked or zero (a dead centre of
+/// an engine without offset, where there is nothing to mark).
+pub(crate) fn phi_note(phi: f64, letter: &str) -> Option<RichText> {
+    (phi != 0.0 && !opens(phi)).then(|| {
+        RichText::parse(&format!(
+            "*{letter}* = {}° is too small for its arc to be drawn.",
+            crate::number::sig(phi.abs().to_degrees())
+        ))
+    })
 }
 
 /// Length of the parallel to the stroke through B that φ is measured

@@ -1,7 +1,7 @@
 //! The mechanism layer: frame, crank circle, links, slider and guides.
 
 use super::LayerCtx;
-use crate::figure::{HATCH_DEPTH, Part, RichText, Role, Shape, TextSize};
+use crate::figure::{Foot, HATCH_DEPTH, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 use crate::scene::cache::Constructions;
 use crate::scene::canvas::{Canvas, Marker};
@@ -20,16 +20,93 @@ type Span = (f64, f64);
 /// runs through a bearing's pedestal below its centre.
 const THROUGH_PEDESTAL: f64 = 0.7;
 
-/// Whether the crank's bearing is drawn hanging from above: where the
-/// crank points down the page within [`THROUGH_PEDESTAL`] (about 270°), a
-/// pedestal below the centre had the crank drawn through it. A view held
-/// over a series of poses keeps it standing, so that it does not turn
-/// over from frame to frame.
-fn hanging(ctx: &LayerCtx, canvas: &Canvas) -> bool {
+/// The side of the crank centre its bearing stands on: below, save where
+/// the crank points down the page within [`THROUGH_PEDESTAL`] (about
+/// 270°) and a pedestal below had the crank drawn through it. Then it
+/// hangs from above, unless the guides run there (an offset engine with
+/// the block by the crank centre: the hanging foot and its hatching read
+/// as a piece of the guide), when it stands out to the side the rod
+/// leaves clear. A view held over a series of poses keeps it standing, so
+/// that it does not turn over from frame to frame.
+fn foot(ctx: &LayerCtx, canvas: &Canvas) -> Foot {
     let pose = ctx.main.pose();
     let v = canvas.transform().apply_vector(pose.b() - pose.c());
     let n = v.norm();
-    ctx.scene.held().is_none() && n > 0.0 && v.y / n > THROUGH_PEDESTAL.cos()
+    if ctx.scene.held().is_some() || n == 0.0 || v.y / n <= THROUGH_PEDESTAL.cos() {
+        return Foot::Below;
+    }
+    [Foot::Above, Foot::Left, Foot::Right]
+        .into_iter()
+        .find(|&f| clear_for(ctx, canvas, f))
+        .unwrap_or(Foot::Above)
+}
+
+/// Whether a bearing standing on `foot` keeps clear: hanging, of the
+/// guides (their lines and hatching and the channel between, over the
+/// block's travel); standing to a side, of the crank, the rod and the
+/// block. Its box is [`bearing_box`].
+fn clear_for(ctx: &LayerCtx, canvas: &Canvas, foot: Foot) -> bool {
+    let pose = ctx.main.pose();
+    let (c, b, a) = (pose.c(), pose.b(), pose.a());
+    let s = &ctx.sizes;
+    if foot == Foot::Above {
+        let [left, right, below, above] = bearing_box(foot).map(|v| canvas.world(v));
+        let (x0, x1, y0, y1) = (c.x - left, c.x + right, c.y - below, c.y + above);
+        let (h, e) = (s.block_half_height, ctx.scene.mechanism().offset());
+        let depth = canvas.world(HATCH_DEPTH + FRAME_GAP);
+        let (g0, g1) = s.guides();
+        let across = g0.min(g1) < x1 && g0.max(g1) > x0;
+        return !(across && e - h - depth < y1 && e + h + depth > y0);
+    }
+    // To a side: the pedestal and its hatched base, on the page, from
+    // the shaft's pin out to the hatching's far edge, across the base
+    // and its slant.
+    let t = canvas.transform();
+    let (out, along) = foot.axes();
+    let cp = t.apply(c);
+    let within = |p: Point| {
+        let v = t.apply(p) - cp;
+        let (o, w) = (v.dot(&out), v.dot(&along).abs());
+        o > PIN_CLEAR_OF_BEARING && o < SIDE_REACH.0 && w < SIDE_REACH.1
+    };
+    let (bl, bh) = (s.block_half_length, s.block_half_height);
+    let corner = |x: f64, y: f64| a + Vector::new(x, y);
+    let block = [
+        (corner(-bl, -bh), corner(bl, -bh)),
+        (corner(bl, -bh), corner(bl, bh)),
+        (corner(bl, bh), corner(-bl, bh)),
+        (corner(-bl, bh), corner(-bl, -bh)),
+    ];
+    ![(c, b), (b, a)]
+        .into_iter()
+        .chain(block)
+        .any(|(p, q)| (0..=32).any(|k| within(p + (q - p) * (f64::from(k) / 32.0))))
+}
+
+/// A bearing standing to a side reaches this far out from its centre and
+/// this far across, page units: the foot at 17, its hatching to 23 and
+/// the letter's gap; the base 17 each way and its slant.
+const SIDE_REACH: (f64, f64) = (30.0, 24.0);
+
+/// Room (page units) about the crank centre inside which the crank and
+/// the rod are not counted against a bearing to the side: the shaft's
+/// pin, which the links leave from.
+const PIN_CLEAR_OF_BEARING: f64 = 6.0;
+
+/// Room (page units) a hanging bearing keeps beyond the guides' hatching.
+const FRAME_GAP: f64 = 4.0;
+
+/// The bearing's reach about the crank centre standing on `foot`, page
+/// units: left, right, below, above ([`BEARING_BOX`] for one standing
+/// below, turned with it; one to a side on the page's left or right).
+fn bearing_box(foot: Foot) -> [f64; 4] {
+    let [left, right, below, above] = BEARING_BOX;
+    match foot {
+        Foot::Below => [left, right, below, above],
+        Foot::Above => [left, right, above, below],
+        Foot::Left => [below, above, left, right],
+        Foot::Right => [above, below, left, right],
+    }
 }
 
 /// The stretches of the guide at height `y`, hatched towards `side`
@@ -55,10 +132,15 @@ fn openings(ctx: &LayerCtx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> 
         .filter_map(|(p, q)| x_within(p, q, lo - d, hi + d))
         .map(|(x0, x1)| (x0 - d, x1 + d + slant))
         .collect();
-    let [left, right, mut below, mut above] = BEARING_BOX.map(|v| canvas.world(v));
-    if hanging(ctx, canvas) {
-        std::mem::swap(&mut below, &mut above);
+    let stand = foot(ctx, canvas);
+    let mut reach = bearing_box(stand);
+    // A bearing to a side is boxed on the page; the world runs the other
+    // way on a mirrored page.
+    let mirrored = canvas.transform().apply_vector(Vector::new(1.0, 0.0)).x < 0.0;
+    if mirrored && matches!(stand, Foot::Left | Foot::Right) {
+        reach.swap(0, 1);
     }
+    let [left, right, below, above] = reach.map(|v| canvas.world(v));
     if hi > c.y - below && lo < c.y + above {
         open.push((c.x - left, c.x + right + slant));
     }
@@ -222,7 +304,7 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
         Role::Frame,
         Shape::Bearing {
             centre: c,
-            hanging: hanging(ctx, canvas),
+            foot: foot(ctx, canvas),
         },
     );
 

@@ -293,6 +293,11 @@ fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     if scene.mechanism().offset() != 0.0 {
         notes.push(RichText::parse(&offset_note(scene)));
     }
+    if scene.has(Layer::Angles) {
+        let pose = ctx.main.pose();
+        let ba = pose.a() - pose.b();
+        notes.extend(dimensions::phi_note(ba.y.atan2(ba.x), "φ"));
+    }
     // Each note broken into lines that fit the page at the notes' size
     // (set from `mg + 4` with 8 units to spare, as the writer sets them),
     // so that a narrow page adds lines instead of shrinking the type.

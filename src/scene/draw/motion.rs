@@ -53,7 +53,18 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
         let u = Vector::new(-cb.y, cb.x) / cb.norm() * turn;
         let rod = a - b;
         let along = rod.norm() > 0.0 && u.dot(&rod) > rod.norm() * ALONG_THE_ROD.cos();
-        let arrow = if along {
+        let t = ctx.scene.torque();
+        let shares_fc =
+            ctx.scene.has(crate::scene::Layer::Torque) && t != 0.0 && t.signum() == turn;
+        let arrow = if along && shares_fc {
+            // From the other side it would lie on F_c, which comes to the
+            // pin there in the same sense (Ng's Fig. 1 at long rods near
+            // 270°: one arrow named "v_c F_c"): it leaves the pin beside
+            // the rod instead, set off its line away from the rod.
+            let side = away_from(rod, cb) * world(super::torque::ALONGSIDE);
+            let from = b + u * world(PIN_SHORT) + side;
+            (from, from + u * world(VC_ARROW), from + u * world(VC_ARROW))
+        } else if along {
             // Drawn from the pin it would run along the rod: it comes to
             // the pin from the other side, its head short of the pin's
             // circle, named at its tail.
@@ -80,7 +91,11 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
         // Beyond the guide's hatching, with room for the arrow's head.
         let under = a + Vector::new(0.0, side * (h + world(VP_CLEAR)));
         let along = vp.signum() * world(len.max(MIN_ARROW));
-        let from = under + Vector::new(clear_of_the_crank(under, along, pose.c(), world), 0.0);
+        let mut shift = clear_of_the_crank(under, along, pose.c(), world);
+        if let Some(fs) = side_thrust(ctx, world) {
+            shift = clear_of_the_thrust(under, along, shift, &fs, world(VP_FROM_THRUST));
+        }
+        let from = under + Vector::new(shift, 0.0);
         let to = from + Vector::new(along, 0.0);
         out.push(NamedArrow {
             id: "vp",
@@ -91,6 +106,51 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
         });
     }
     out
+}
+
+/// Room (page units) v_p keeps along the stroke from the side thrust
+/// F_s's shaft where that crosses v_p's line.
+const VP_FROM_THRUST: f64 = 8.0;
+
+/// F_s's arrow where the torque layer draws it (Ng's Fig. 1).
+fn side_thrust(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Option<NamedArrow> {
+    if !ctx.scene.has(crate::scene::Layer::Torque) {
+        return None;
+    }
+    super::torque::forces(ctx, world)
+        .into_iter()
+        .find(|f| f.id == "Fs")
+}
+
+/// v_p's `shift` along the stroke (from [`clear_of_the_crank`]) moved so
+/// that the arrow, `along` long from `under`, keeps `gap` (world units)
+/// from F_s's shaft where that reaches v_p's line: v_p had its tail on
+/// the shaft, above the block, and read as a branch of F_s (Ng's Fig. 1,
+/// short and long rods). The arrow goes wholly ahead of the shaft, or
+/// where it ended under the slider, wholly behind it.
+fn clear_of_the_thrust(under: Point, along: f64, shift: f64, fs: &NamedArrow, gap: f64) -> f64 {
+    let (y0, y1) = (fs.from.y.min(fs.to.y), fs.from.y.max(fs.to.y));
+    let x = fs.from.x;
+    let (x0, x1) = (under.x + shift, under.x + shift + along);
+    let crosses = under.y >= y0 - gap && under.y <= y1 + gap;
+    if !crosses || x0.min(x1) > x + gap || x0.max(x1) < x - gap {
+        return shift;
+    }
+    let s = along.signum();
+    let ahead = x + s * gap - under.x;
+    let behind = x - s * gap - along - under.x;
+    if (shift - behind).abs() < (shift - ahead).abs() && shift != 0.0 {
+        behind
+    } else {
+        ahead
+    }
+}
+
+/// The unit vector along `normal` or against it (`normal` is the crank,
+/// across the velocity's line), whichever points away from `rod`.
+fn away_from(rod: Vector, normal: Vector) -> Vector {
+    let n = normal / normal.norm();
+    if n.dot(&rod) > 0.0 { -n } else { n }
 }
 
 /// How far along the stroke v_p's tail moves from `under` (below the

@@ -256,7 +256,7 @@ fn within(c: Point, radius: f64, p: Point, q: Point) -> impl Iterator<Item = f64
 /// How far F_c is set off its line, page units, where that line runs
 /// along the rod: clear of the rod's stroke and the pin's circle, near
 /// enough to read as the force on the pin.
-const ALONGSIDE: f64 = 7.0;
+pub(super) const ALONGSIDE: f64 = 7.0;
 
 /// F_c drawn along its line arrives at the pin from the side the rod
 /// leaves it by where the rod is nearly perpendicular to the crank (the
