@@ -20,6 +20,8 @@ pub enum Gravity {
     AwayFromCrank,
 }
 
+crate::error::parse_by_name!(Gravity);
+
 impl Gravity {
     /// The value's name as the options write it.
     pub fn name(self) -> &'static str {
@@ -38,8 +40,9 @@ impl Gravity {
             "away-from-crank" => Ok(Gravity::AwayFromCrank),
             other => Err(Error::refused(
                 Input::Options,
-                Wording::default().option(Field::Gravity).then(format!(
-                    " is towards-crank (the cylinder above the crank) or away-from-crank (below it), not '{other}'"
+                Wording::from(format!(
+                    "unknown gravity '{}': expected towards-crank (the cylinder above the crank) or away-from-crank (below it)",
+                    Error::show(other)
                 )),
             )),
         }
@@ -100,6 +103,6 @@ mod tests {
         assert!(down.in_unit(&Unit::new("furlong").unwrap()).is_err());
         assert_eq!(Gravity::from_name("towards-crank").unwrap(), down);
         let e = Gravity::from_name("down").unwrap_err().to_string();
-        assert!(e.contains("not 'down'"), "{e}");
+        assert!(e.contains("unknown gravity 'down'"), "{e}");
     }
 }
