@@ -474,7 +474,18 @@ mod tests {
         };
         assert_eq!(
             refused(r),
-            "`friction` applies with a torque: give `torque` too"
+            "`friction` applies with a torque (the statics) or the engine's dynamics: give `torque` or `mass` too"
+        );
+        let r = AnalyzeRequest {
+            engine: GivenEngine {
+                gravity: Some(crate::dynamics::Gravity::TowardsCrank),
+                ..Default::default()
+            },
+            ..Default::default()
+        };
+        assert_eq!(
+            refused(r),
+            "`gravity` weighs the engine's masses: give `mass` or `rod_mass` with it"
         );
         let r = AnalyzeRequest {
             torque: Some(1.0),
