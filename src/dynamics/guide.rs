@@ -89,7 +89,7 @@ mod tests {
     /// sign does (the two cases of |N| written out).
     #[test]
     fn the_slider_balance_has_its_one_solution() {
-        let mut next = crate::dynamics::uniform_draws(0x5eed_0f_f1c7);
+        let mut next = crate::dynamics::uniform_draws(0x005e_ed0f_f1c7);
         for _ in 0..2000 {
             let (f0, p) = (200.0 * next() - 100.0, 200.0 * next() - 100.0);
             let t = 4.0 * next() - 2.0;

@@ -76,12 +76,12 @@ pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Uni
     // writes what it always did.
     if let Some(w) = at.weight {
         let g = engine.gravity();
-        out["gravity"] = json!([num(g[0]), num(g[1])]);
-        out["weight"] = json!(num(w));
+        put(&mut out, "gravity", json!([num(g[0]), num(g[1])]));
+        put(&mut out, "weight", json!(num(w)));
     }
     if let Some(f) = at.friction {
-        out["friction_coefficient"] = json!(engine.friction());
-        out["friction"] = json!(num(f));
+        put(&mut out, "friction_coefficient", json!(engine.friction()));
+        put(&mut out, "friction", json!(num(f)));
     }
     out
 }
@@ -100,7 +100,15 @@ fn loads_json(l: &EngineLoads) -> Value {
         "shaking_force": pair(l.shaking_force),
     });
     if let Some(f) = l.friction {
-        out["friction"] = json!(num(f));
+        put(&mut out, "friction", json!(num(f)));
     }
     out
+}
+
+/// Sets `key` of the object `out` to `value` (nothing where `out` is not
+/// an object, which the callers' `json!` never makes).
+fn put(out: &mut Value, key: &str, value: Value) {
+    if let Value::Object(map) = out {
+        map.insert(key.to_string(), value);
+    }
 }
