@@ -212,6 +212,10 @@ mod tests {
     fn value_enums_round_trip_through_their_names() {
         round_trips(&[Style::Textbook, Style::Handout]);
         round_trips(&[Fit::Origin, Fit::Intercept, Fit::Both]);
+        round_trips(&[
+            crate::dynamics::Gravity::TowardsCrank,
+            crate::dynamics::Gravity::AwayFromCrank,
+        ]);
         round_trips(&FigureName::ALL);
         round_trips(&Layer::ALL);
         round_trips(&[Notation::Textbook, Notation::Ng]);

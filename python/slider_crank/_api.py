@@ -149,8 +149,10 @@ class EngineLoads:
     included (Newton–Euler on the slider and on the rod as a rigid body):
     the member ``whole_engine`` of ``analyze --mass … --json``. Vectors
     are (x, y) in the frame of the engine (x along the line of stroke
-    away from the crank centre); gravity and friction are left out, and
-    the crank is massless (or balanced about C).
+    away from the crank centre); the crank is massless (or balanced about
+    C). With ``gravity`` the rod's weight at G is in the pin loads; with
+    ``friction`` the guides' friction, from their reaction with the rod's
+    inertia, is ``friction`` (towards the crank; ``None`` without).
 
     Where :class:`Dynamics` gives the forces of the reciprocating parts
     alone (its ``rod_force`` F / cos φ and ``guide_thrust`` −F tan φ, the
@@ -178,6 +180,7 @@ class EngineLoads:
     guide_thrust: float
     piston_effort_equivalent: float
     shaking_force: Point
+    friction: Optional[float] = None
 
     @classmethod
     def _from_json(cls, v: Dict[str, Any]) -> "EngineLoads":
@@ -191,6 +194,7 @@ class EngineLoads:
             guide_thrust=v["guide_thrust"],
             piston_effort_equivalent=v["piston_effort_equivalent"],
             shaking_force=pair("shaking_force"),
+            friction=v.get("friction"),
         )
 
 
@@ -213,7 +217,12 @@ class Dynamics:
     massless link); ``whole_engine`` (:class:`EngineLoads`) gives those of
     the whole engine with the rod's inertia: the pin and main-bearing
     loads, the force along the rod and the thrust on the guides with a
-    heavy rod, and the shaking force on the frame.
+    heavy rod, and the shaking force on the frame. With ``gravity``
+    (a vertical engine) ``weight`` is the reciprocating parts' weight
+    along the stroke towards the crank, in ``piston_effort``; with
+    ``friction`` the guides' friction on them, μ |N| against the motion
+    (0 at a dead centre), is ``friction``, in ``piston_effort`` too; each
+    ``None`` where not given.
     """
 
     units: Dict[str, str]
@@ -231,6 +240,8 @@ class Dynamics:
     unbalanced: Unbalanced
     rod: Optional[RodDynamics]
     whole_engine: EngineLoads
+    weight: Optional[float] = None
+    friction: Optional[float] = None
 
     @classmethod
     def _from_json(cls, v: Dict[str, Any]) -> "Dynamics":
@@ -255,6 +266,8 @@ class Dynamics:
                 mass_at_percussion=_dynamical(rod, "mass_at_percussion"),
                 dynamical_torque=_dynamical(rod, "torque"),
             ),
+            weight=v.get("weight"),
+            friction=v.get("friction"),
             **{k: v[k] for k in _DYNAMICS_VALUES},
         )
 
@@ -750,6 +763,7 @@ class SliderCrank:
         gas_force: Optional[float] = None,
         indicator: Union[None, str, "os.PathLike[str]"] = None,
         bore: Optional[float] = None,
+        gravity: Optional[str] = None,
     ) -> Analysis:
         """Analyses the engine at crank angle ``theta_deg`` (degrees), as
         ``slider-crank analyze --angle θ --json`` does.
@@ -768,7 +782,9 @@ class SliderCrank:
         None``). :meth:`sweep` and the chains' ``at`` do the same. With a crank
         ``torque`` T (counter-clockwise positive, force × length) the
         result carries Ng's statics, with the slider's coefficient of
-        friction ``friction`` μ ≥ 0 (0 by default; only with a torque).
+        friction ``friction`` μ ≥ 0 (0 by default; with a torque or the
+        engine's masses, whose dynamics then take the guides' friction
+        μ |N| against the slider's motion).
 
         The engine's masses and gas force, the flags of ``analyze --mass
         …``, add its dynamics (:class:`Dynamics`, the JSON's member
@@ -780,7 +796,10 @@ class SliderCrank:
         gyration k) the rod's mass; ``gas_force`` a constant force on the
         piston, positive towards the crank centre, or ``indicator`` a CSV
         file (columns fraction of the stroke from the outer dead centre,
-        expansion and compression pressures) with the cylinder's ``bore``.
+        expansion and compression pressures) with the cylinder's ``bore``;
+        ``gravity`` a vertical engine, ``"towards-crank"`` (the cylinder
+        above the crank) or ``"away-from-crank"``, standard gravity in the
+        length unit weighing m and the rod.
 
         >>> engine = SliderCrank(0.5, 3.0)
         >>> round(engine.at(90, rpm=250, mass=10).dynamics.torque, 2)   # lbf·ft
@@ -804,6 +823,7 @@ class SliderCrank:
             gas_force=_option(gas_force),
             indicator=None if indicator is None else os.fspath(indicator),
             bore=_option(bore),
+            gravity=gravity,
         )
         return Analysis._from_json(text, None, _assumed_rpm(rpm, omega))
 
@@ -843,12 +863,19 @@ class SliderCrank:
         indicator: Union[None, str, "os.PathLike[str]"],
         bore: Optional[float],
         default_mass: Optional[float] = None,
+        gravity: Optional[str] = None,
+        friction: Optional[float] = None,
     ) -> Optional[_core.Engine]:
         """The native engine of these keywords; ``None`` when none is
-        given (or, with ``default_mass``, an engine of that mass)."""
+        given (or, with ``default_mass``, an engine of that mass), with
+        ``gravity`` and ``friction`` where given."""
         given = (mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore)
         if all(x is None for x in given):
             if default_mass is None:
+                if gravity is not None or friction is not None:
+                    raise ValueError(
+                        "gravity and friction apply to the engine's dynamics: give mass or rod_mass too"
+                    )
                 return None
             mass = default_mass
         return _core.Engine(
@@ -865,6 +892,8 @@ class SliderCrank:
             bore=_option(bore),
             unit=self._unit,
             force_unit=self._force_unit,
+            gravity=gravity,
+            friction=_option(friction),
         )
 
     def turning_moment(
@@ -882,6 +911,8 @@ class SliderCrank:
         phases: Sequence[float] = (0.0,),
         fluctuation: Optional[float] = None,
         flywheel: Optional[float] = None,
+        gravity: Optional[str] = None,
+        friction: Optional[float] = None,
     ) -> TurningMoment:
         """The turning-moment diagram over one turn, as ``table dynamics``
         works it out in its notes: the mean torque, the fluctuation of
@@ -891,7 +922,9 @@ class SliderCrank:
         first, in degrees (``(0, 180)``: two opposite cranks). Speed as in
         :meth:`at`, masses and gas force as there; with none of them, the
         example engine's reciprocating mass m = 10 as ``table dynamics``
-        takes it.
+        takes it; ``gravity`` and ``friction`` as ``table dynamics`` takes
+        them (gravity does no work over a turn; the guides' friction
+        lowers the mean torque by its work per turn over 2π).
 
         >>> turn = SliderCrank(0.5, 3.0).turning_moment(mass=10, fluctuation=0.02)
         >>> abs(turn.mean) < 1e-9 * turn.peak    # inertia forces do no net work
@@ -900,7 +933,7 @@ class SliderCrank:
         w = _core.crank_speed(rpm, omega)
         engine = self._engine(
             w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore,
-            default_mass=_core.EXAMPLE_MASS,
+            default_mass=_core.EXAMPLE_MASS, gravity=gravity, friction=friction,
         )
         assert engine is not None
         text = engine.turning_moment(
@@ -959,6 +992,8 @@ class SliderCrank:
         gas_force: Optional[float] = None,
         indicator: Union[None, str, "os.PathLike[str]"] = None,
         bore: Optional[float] = None,
+        gravity: Optional[str] = None,
+        friction: Optional[float] = None,
     ) -> Sweep:
         """The exact values at every crank angle of ``thetas`` (degrees;
         any array-like of real numbers, any shape), as numpy float64
@@ -970,12 +1005,15 @@ class SliderCrank:
         value equals the one :meth:`at` gives at that angle. A NaN or
         infinite angle raises ``ValueError`` (the first one met).
 
-        The masses and gas force of :meth:`at` add the engine's forces and
-        torques at every angle (:class:`DynamicsSweep`), each equal to the
+        The masses and gas force of :meth:`at` (with its ``gravity`` and
+        ``friction``) add the engine's forces and torques at every angle (:class:`DynamicsSweep`), each equal to the
         value of :attr:`Analysis.dynamics` there.
         """
         w = _core.crank_speed(rpm, omega)
-        engine = self._engine(w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore)
+        engine = self._engine(
+            w, mass, rod_mass, rod_cg, rod_gyration, gas_force, indicator, bore,
+            gravity=gravity, friction=friction,
+        )
         a = _angles(thetas)
         flat = a.reshape(-1)
         rows = 10 if graphical else 6
@@ -1247,6 +1285,8 @@ def figure(
     rod_gyration: Optional[float] = None,
     cranks: Union[None, str, Sequence[float]] = None,
     planes: Union[None, str, Sequence[float]] = None,
+    gravity: Optional[str] = None,
+    friction: Optional[float] = None,
 ) -> Figure:
     """The named figure (one of :data:`FIGURES`), as ``slider-crank figure
     NAME`` draws it; each option is the flag of that name (``None``: the
@@ -1277,7 +1317,11 @@ def figure(
     pin, ``0.3 l``); ``cranks``, ``planes``: the cylinders of
     ``inline-balance``, a list or a comma-separated string, read by the
     library as the flag's value is (default cranks 0, 120, 240 and a pitch
-    of 1 about the middle of the engine).
+    of 1 about the middle of the engine); ``gravity``
+    (``"towards-crank"``, the cylinder above the crank, or
+    ``"away-from-crank"``) and ``friction`` (the slider's coefficient of
+    friction in its guides) of ``turning-moment``, ``flywheel`` and
+    ``crank-pin-loads``.
     """
     options = _figure_options(locals())
     return Figure(_core.figure(name, **options), (name, options))
@@ -1295,7 +1339,10 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
     height, title = given["height"], given["title"]
     dynamics = {
         k: _option(given.get(k))
-        for k in ("mass", "fluctuation", "bore", "gas_force", "rod_mass", "rod_cg", "rod_gyration")
+        for k in (
+            "mass", "fluctuation", "bore", "gas_force", "rod_mass", "rod_cg", "rod_gyration",
+            "friction",
+        )
     }
     lists = {k: _numbers(given.get(k)) for k in ("cranks", "planes")}
     return dict(
@@ -1320,6 +1367,7 @@ def _figure_options(given: Dict[str, Any]) -> Dict[str, Any]:
         title=title,
         coupler=_coupler(given.get("coupler")),
         **lists,
+        gravity=given.get("gravity"),
     )
 
 
@@ -1379,6 +1427,7 @@ def table(
     inversion: Optional[int] = None,
     lever: Optional[float] = None,
     max_cells: int = _core.DEFAULT_MAX_CELLS,
+    gravity: Optional[str] = None,
 ) -> str:
     """A table as ``slider-crank table NAME`` prints it: ``obliquity``,
     ``acceleration-factor`` (the textbook's), ``kinematics`` (a θ sweep),
@@ -1396,7 +1445,8 @@ def table(
     ``forces`` and ``dynamics``, ``rpm`` or ``omega`` the speed, ``torque``
     and ``friction`` the load of ``forces``, ``decimals`` the digits
     printed; ``mass`` … ``bore`` the engine of ``dynamics`` (as in
-    :meth:`SliderCrank.at`; without any, the example mass m = 10),
+    :meth:`SliderCrank.at`; without any, the example mass m = 10), with
+    ``gravity`` and ``friction`` (the guides' friction, 0 by default),
     ``phases`` its cylinders' crank angles, ``fluctuation`` (C_s) or
     ``flywheel`` (I) its flywheel note; ``cranks`` the crank angles of the
     cylinders of ``balance`` (degrees ahead of the first; the flat four
@@ -1462,6 +1512,7 @@ def table(
         inversion=inversion,
         lever=_option(lever),
         max_cells=_max_cells(max_cells),
+        gravity=gravity,
     )
 
 

@@ -84,6 +84,7 @@ def analyze(
     assembly: Optional[str] = None,
     inversion: Optional[int] = None,
     max_cells: int = ...,
+    gravity: Optional[str] = None,
 ) -> str: ...
 def sweep(
     crank: float,
@@ -125,6 +126,8 @@ def figure(
     rod_gyration: Optional[float] = None,
     cranks: Union[None, str, list[float]] = None,
     planes: Union[None, str, list[float]] = None,
+    gravity: Optional[str] = None,
+    friction: Optional[float] = None,
 ) -> str: ...
 def encode(svg: str, format: str) -> bytes: ...
 def save(svg: str, path: str) -> None: ...
@@ -184,6 +187,7 @@ def table(
     inversion: Optional[int] = None,
     lever: Optional[float] = None,
     max_cells: int = ...,
+    gravity: Optional[str] = None,
 ) -> str: ...
 def gallery(out: str, only: Optional[list[str]] = None) -> list[str]: ...
 def write_files(files: list[tuple[str, str]], derived: list[str] = ...) -> None: ...
@@ -205,6 +209,8 @@ class Engine:
         bore: Optional[float] = None,
         unit: Optional[str] = None,
         force_unit: Optional[str] = None,
+        gravity: Optional[str] = None,
+        friction: Optional[float] = None,
     ) -> Engine: ...
     def at(self, degrees: float, unit: str, force_unit: str) -> str: ...
     def sweep(

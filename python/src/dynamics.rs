@@ -10,12 +10,12 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use serde_json::json;
 use slider_crank::dynamics::{
-    Engine, EngineParts, EnginePose, Flywheel, FlywheelAsk, IndicatorText, TurningMoment,
+    Engine, EngineParts, EnginePose, Flywheel, FlywheelAsk, Gravity, IndicatorText, TurningMoment,
     unbalanced_forces,
 };
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::table::dynamics_json;
-use slider_crank::{Angle, Input, SliderCrank};
+use slider_crank::{Angle, Input, SliderCrank, Unit};
 use std::path::PathBuf;
 
 /// An engine with its masses, gas force and crank speed, validated as
@@ -70,10 +70,14 @@ impl PyEngine {
     /// constant `gas_force` or the indicator diagram read from the CSV
     /// file `indicator` with the cylinder's `bore`; a unit the diagram's
     /// header declares for its pressures is checked against `unit` and
-    /// `force_unit` where they are given, as `analyze` checks it.
+    /// `force_unit` where they are given, as `analyze` checks it;
+    /// `gravity` (`towards-crank`, `away-from-crank`) a vertical engine's
+    /// standard gravity in `unit` (feet when not given) and `friction` the
+    /// slider's coefficient of friction in its guides.
     #[new]
     #[pyo3(signature = (crank, rod, offset, omega, mass=None, rod_mass=None, rod_cg=None,
-        rod_gyration=None, gas_force=None, indicator=None, bore=None, unit=None, force_unit=None))]
+        rod_gyration=None, gas_force=None, indicator=None, bore=None, unit=None, force_unit=None,
+        gravity=None, friction=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         crank: f64,
@@ -89,6 +93,8 @@ impl PyEngine {
         bore: Option<f64>,
         unit: Option<&str>,
         force_unit: Option<&str>,
+        gravity: Option<&str>,
+        friction: Option<f64>,
     ) -> PyResult<Self> {
         let units = match unit.zip(force_unit) {
             Some((u, f)) => Some(units(u, f)?),
@@ -121,6 +127,15 @@ impl PyEngine {
                 what,
                 units: units.as_ref(),
             }),
+            gravity: match gravity {
+                Some(g) => {
+                    let length = Unit::new(unit.unwrap_or("ft")).map_err(py_err)?;
+                    let g: Gravity = g.parse().map_err(py_err)?;
+                    Some(g.in_unit(&length).map_err(py_err)?)
+                }
+                None => None,
+            },
+            friction,
         };
         Ok(Self {
             engine: parts.build(m, omega).map_err(py_err)?,

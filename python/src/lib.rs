@@ -15,6 +15,7 @@ use pyo3::prelude::*;
 use slider_crank::animate::{Animation, AnimationFormat};
 use slider_crank::catalogue::{FigureOptions, FigureRequest};
 use slider_crank::construct::Graphical;
+use slider_crank::dynamics::Gravity;
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
 use slider_crank::gallery::Gallery;
 use slider_crank::handout::HandoutRequest;
@@ -139,7 +140,8 @@ fn crank_speed(rpm: Option<f64>, omega: Option<f64>) -> PyResult<f64> {
 #[pyo3(signature = (crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     torque=None, friction=None, unit=None, force_unit=None, mass=None, rod_mass=None,
     rod_cg=None, rod_gyration=None, gas_force=None, indicator=None, bore=None,
-    slot_radius=None, links=None, assembly=None, inversion=None, max_cells=DEFAULT_MAX_CELLS))]
+    slot_radius=None, links=None, assembly=None, inversion=None, max_cells=DEFAULT_MAX_CELLS,
+    gravity=None))]
 #[allow(clippy::too_many_arguments)]
 fn analyze(
     crank: Option<f64>,
@@ -164,6 +166,7 @@ fn analyze(
     assembly: Option<&str>,
     inversion: Option<u32>,
     max_cells: u64,
+    gravity: Option<&str>,
 ) -> PyResult<String> {
     let angle = angle.map(|a| [a]);
     let mut r = AnalyzeRequest::default();
@@ -175,9 +178,8 @@ fn analyze(
     r.engine = given_engine(
         mass,
         (rod_mass, rod_cg, rod_gyration),
-        gas_force,
-        indicator,
-        bore,
+        (gas_force, indicator, bore),
+        gravity.map(parse).transpose()?,
     );
     (r.slot_radius, r.links, r.inversion) = (slot_radius, links, inversion);
     r.assembly = assembly.map(parse).transpose()?;
@@ -193,9 +195,8 @@ fn analyze(
 fn given_engine(
     mass: Option<f64>,
     (rod_mass, rod_cg, rod_gyration): (Option<f64>, Option<f64>, Option<f64>),
-    gas_force: Option<f64>,
-    indicator: Option<PathBuf>,
-    bore: Option<f64>,
+    (gas_force, indicator, bore): (Option<f64>, Option<PathBuf>, Option<f64>),
+    gravity: Option<Gravity>,
 ) -> GivenEngine {
     GivenEngine {
         mass,
@@ -205,6 +206,7 @@ fn given_engine(
         gas_force,
         indicator,
         bore,
+        gravity,
     }
 }
 
@@ -352,7 +354,7 @@ fn fill_chunk(
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
     notation=None, mass=None, fluctuation=None, bore=None, gas_force=None, mirror=None,
     width=None, height=None, title=None, animate=None, tikz=None, coupler=None, rod_mass=None,
-    rod_cg=None, rod_gyration=None, cranks=None, planes=None))]
+    rod_cg=None, rod_gyration=None, cranks=None, planes=None, gravity=None, friction=None))]
 #[allow(clippy::too_many_arguments)]
 fn figure(
     py: Python<'_>,
@@ -387,6 +389,8 @@ fn figure(
     rod_gyration: Option<f64>,
     cranks: Option<Numbers>,
     planes: Option<Numbers>,
+    gravity: Option<&str>,
+    friction: Option<f64>,
 ) -> PyResult<String> {
     let name: FigureName = parse(name)?;
     let mut request = FigureRequest::default();
@@ -422,6 +426,8 @@ fn figure(
     request.rod_gyration = rod_gyration;
     request.cranks = cranks.map(|c| c.values("crank angle")).transpose()?;
     request.planes = planes.map(|p| p.values("plane")).transpose()?;
+    request.gravity = gravity.map(parse).transpose()?;
+    request.friction = friction;
     let options = request.options(name).map_err(py_err)?;
     if let Some((frames, period, path)) = animate {
         return animation(py, name, &options, frames, period, &path);
@@ -582,7 +588,7 @@ fn handout(
     mass=None, rod_mass=None, rod_cg=None, rod_gyration=None, gas_force=None, indicator=None,
     bore=None, phases=None, fluctuation=None, flywheel=None, cranks=None, planes=None,
     order=None, fractions=None, wheel=None, speed=None, load=None, axes=None, inversion=None,
-    lever=None, max_cells=DEFAULT_MAX_CELLS))]
+    lever=None, max_cells=DEFAULT_MAX_CELLS, gravity=None))]
 #[allow(clippy::too_many_arguments)]
 fn table(
     py: Python<'_>,
@@ -621,6 +627,7 @@ fn table(
     inversion: Option<u32>,
     lever: Option<f64>,
     max_cells: u64,
+    gravity: Option<&str>,
 ) -> PyResult<String> {
     let given = angles.as_ref().map(|a| a.as_slice()).transpose()?;
     let mut r = TableRequest::new(parse::<TableName>(name)?);
@@ -635,9 +642,8 @@ fn table(
     r.engine = given_engine(
         mass,
         (rod_mass, rod_cg, rod_gyration),
-        gas_force,
-        indicator,
-        bore,
+        (gas_force, indicator, bore),
+        gravity.map(parse).transpose()?,
     );
     (r.phases, r.fluctuation, r.flywheel) = (phases, fluctuation, flywheel);
     (r.cranks, r.planes, r.order, r.fractions) = (cranks, planes, order, fractions);

@@ -349,3 +349,32 @@ def test_a_four_stroke_indicator_diagram_is_read_as_the_command_reads_it(
         other = engine_of(pose).at(angle, omega=26.16, mass=1, indicator=str(one_turn), bore=0.2)
         assert other.dynamics is not None and got.dynamics is not None
         assert other.dynamics.gas_force != got.dynamics.gas_force
+
+
+def test_gravity_and_friction_enter_the_dynamics() -> None:
+    # The §35 engine at 90°, moving towards the crank (ω > 0): the weight
+    # of m towards the crank (the cylinder above it) is m g, 32.174 ft/s²,
+    # and adds to the piston effort; the guides' friction μ |N| acts
+    # against the motion, away from the crank (negative), N of a massless
+    # rod the guide thrust's size.
+    engine = sc.SliderCrank(0.5, 3.0)
+    plain = engine.at(90, rpm=250, mass=10).dynamics
+    assert plain.weight is None and plain.friction is None
+    up = engine.at(90, rpm=250, mass=10, gravity="towards-crank").dynamics
+    assert up.weight == pytest.approx(10 * 9.80665 / 0.3048, rel=1e-12)
+    assert up.piston_effort == pytest.approx(plain.piston_effort + up.weight, rel=1e-12)
+    rub = engine.at(90, rpm=250, mass=10, friction=0.1).dynamics
+    assert rub.friction is not None and rub.friction < 0
+    assert abs(rub.friction) == pytest.approx(0.1 * abs(rub.guide_thrust), rel=1e-12)
+    assert rub.whole_engine.friction == pytest.approx(rub.friction, rel=1e-12)
+    # Over a turn gravity does no work; the friction takes its work from
+    # the mean torque.
+    turn = engine.turning_moment(mass=10)
+    weighed = engine.turning_moment(mass=10, gravity="towards-crank")
+    assert abs(weighed.work - turn.work) <= 2 * (weighed.tolerance + turn.tolerance)
+    rubbed = engine.turning_moment(mass=10, friction=0.1)
+    assert rubbed.mean < turn.mean - 1e3 * turn.tolerance
+    with pytest.raises(ValueError, match="self-locks"):
+        engine.at(90, rpm=250, mass=10, friction=6)
+    with pytest.raises(ValueError, match="unknown gravity 'up'"):
+        engine.at(90, rpm=250, mass=10, gravity="up")

@@ -22,7 +22,7 @@ with open(REPO / "tests/options/figure.csv", newline="", encoding="utf-8") as _f
 
 #: The keywords whose values are numbers.
 NUMBERS = {"crank", "rod", "offset", "angle", "rpm", "omega", "mass", "fluctuation", "bore",
-           "gas_force", "rod_mass", "rod_cg", "rod_gyration"}
+           "gas_force", "rod_mass", "rod_cg", "rod_gyration", "friction"}
 
 
 def value(case: Dict[str, str]) -> Any:
@@ -77,7 +77,7 @@ with open(REPO / "tests/options/table.csv", newline="", encoding="utf-8") as _f:
 #: numbers, whole numbers, and text (the rest are numbers).
 LISTS = {"n", "angles", "cranks", "planes", "fractions", "axes", "phases"}
 COUNTS = {"decimals", "order", "inversion", "max_cells"}
-TEXTS = {"format", "unit", "force_unit", "indicator"}
+TEXTS = {"format", "unit", "force_unit", "indicator", "gravity"}
 
 
 def table_value(keyword: str, text: str) -> Any:
@@ -145,7 +145,7 @@ with open(REPO / "tests/options/analyze.csv", newline="", encoding="utf-8") as _
 #: The keywords of the request of ``analyze`` whose values are whole
 #: numbers, text, and the four links (the rest are numbers).
 ANALYZE_COUNTS = {"inversion", "max_cells"}
-ANALYZE_TEXTS = {"unit", "force_unit", "indicator", "assembly"}
+ANALYZE_TEXTS = {"unit", "force_unit", "indicator", "assembly", "gravity"}
 
 
 def analyze_value(keyword: str, text: str) -> Any:

@@ -155,6 +155,13 @@ pub struct FigureOptions {
     /// distance from the reference plane along the shaft, in pitches, one
     /// for each crank (default a pitch of 1 about the middle cylinder).
     pub planes: Option<Vec<f64>>,
+    /// A vertical engine's gravity along the line of stroke, of
+    /// `turning-moment`, `flywheel` and `crank-pin-loads` (standard
+    /// gravity in the length unit; default none).
+    pub gravity: Option<crate::dynamics::Gravity>,
+    /// The slider's coefficient of friction in its guides, of
+    /// `turning-moment`, `flywheel` and `crank-pin-loads` (default 0).
+    pub friction: Option<f64>,
 }
 
 /// One of the things a named figure may take from its options: each
@@ -196,6 +203,10 @@ pub(crate) enum Setting {
     Rod,
     /// The cylinders of an in-line engine: their cranks and planes.
     Cylinders,
+    /// Gravity along a vertical engine's line of stroke.
+    Gravity,
+    /// The slider's friction in its guides.
+    Friction,
 }
 
 impl Setting {
@@ -234,6 +245,8 @@ impl Setting {
             Setting::Bore => Field::Bore,
             Setting::GasForce => Field::GasForce,
             Setting::Coupler => Field::Coupler,
+            Setting::Gravity => Field::Gravity,
+            Setting::Friction => Field::Friction,
             Setting::Rod => {
                 return Wording::from("rod (")
                     .option(Field::RodMass)
@@ -283,6 +296,8 @@ impl FigureOptions {
                 self.cranks.is_some() || self.planes.is_some(),
                 Setting::Cylinders,
             ),
+            (self.gravity.is_some(), Setting::Gravity),
+            (self.friction.is_some(), Setting::Friction),
         ]
         .into_iter()
         .filter_map(|(set, s)| set.then_some(s))

@@ -84,6 +84,10 @@ pub struct FigureRequest {
     pub cranks: Option<Vec<f64>>,
     /// The planes of `inline-balance`'s cylinders, in pitches.
     pub planes: Option<Vec<f64>>,
+    /// A vertical engine's gravity along the line of stroke.
+    pub gravity: Option<crate::dynamics::Gravity>,
+    /// The slider's coefficient of friction in its guides.
+    pub friction: Option<f64>,
 }
 
 impl FigureRequest {
@@ -143,6 +147,8 @@ impl FigureRequest {
         options.rod_gyration = self.rod_gyration;
         options.cranks = self.cranks.clone();
         options.planes = self.planes.clone();
+        options.gravity = self.gravity;
+        options.friction = self.friction;
         Ok(options)
     }
 }

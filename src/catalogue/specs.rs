@@ -13,7 +13,8 @@ use At::{Crank, NoPose, Tilt};
 use Group::{Chain, Developers, Diagrams};
 use Kind::{Diagram, Mechanism};
 use Setting::{
-    Angle, Bore, Cylinders, Data, Fit, Fluctuation, Font, GasForce, Mass, Mirror, Rod, Speed, Style,
+    Angle, Bore, Cylinders, Data, Fit, Fluctuation, Font, Friction, GasForce, Gravity, Mass,
+    Mirror, Rod, Speed, Style,
 };
 use Source::{Book, Ng, Outside};
 
@@ -532,7 +533,7 @@ figures! {
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::turning::build),
-        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Style, Font],
+        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Gravity, Friction, Style, Font],
     },
     /// The inertia force of the reciprocating parts on the mechanism:
     /// Klein's CG read as the piston's acceleration and scaled by m ω² to
@@ -599,7 +600,7 @@ figures! {
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::loads::build),
-        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Rod, Style, Font],
+        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Rod, Gravity, Friction, Style, Font],
     },
     /// The flywheel: the energy stored above its least over the turn,
     /// rising by the fluctuation of energy ΔE, and the crank speed with
@@ -613,7 +614,19 @@ figures! {
         at: NoPose,
         page: (900.0, 760.0),
         kind: Diagram(Diagrams, builders::flywheel::build),
-        takes: &[MECH, Speed, Data, Bore, GasForce, Mass, Fluctuation, Style, Font],
+        takes: &[
+            MECH,
+            Speed,
+            Data,
+            Bore,
+            GasForce,
+            Mass,
+            Fluctuation,
+            Gravity,
+            Friction,
+            Style,
+            Font,
+        ],
     },
 }
 

@@ -242,10 +242,10 @@ fn request(args: &AnalyzeArgs) -> Result<AnalyzeRequest<'static>> {
     (r.crank, r.rod, r.offset) = (m.crank, m.rod, m.offset);
     r.angles = Some(Angles::Spec(AngleSpec::parse(&args.angle)?));
     (r.rpm, r.omega) = (args.speed.rpm, args.speed.omega);
-    // `--friction` is refused without `--torque`, its default 0 the
-    // request's own.
+    // `--friction` without `--torque` or the engine is refused by the
+    // request; with a torque its default is 0.
     r.torque = args.load.torque;
-    r.friction = r.torque.and(Some(args.load.friction));
+    r.friction = (r.torque.and(Some(args.load.friction.unwrap_or(0.0)))).or(args.load.friction);
     (r.unit, r.force_unit) = (args.units.length.clone(), args.units.force.clone());
     r.engine = args.engine.given();
     let chain = &args.chain;

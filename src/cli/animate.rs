@@ -22,7 +22,9 @@ use std::time::{Duration, Instant};
     mut_arg("data", |a| a.hide(true)),
     mut_arg("fit", |a| a.hide(true)),
     mut_arg("bore", |a| a.hide(true)),
-    mut_arg("gas_force", |a| a.hide(true))
+    mut_arg("gas_force", |a| a.hide(true)),
+    mut_arg("gravity", |a| a.hide(true)),
+    mut_arg("friction", |a| a.hide(true))
 )]
 pub struct AnimateArgs {
     // The help lists the mechanism figures (the diagrams are not animated).

@@ -125,16 +125,13 @@ pub struct LoadArgs {
     /// transmission angle), the forces in the force unit
     #[arg(long, allow_hyphen_values = true, value_name = "T")]
     pub torque: Option<f64>,
-    /// Coefficient of friction μ ≥ 0 of the slider in its guides (with
-    /// --torque)
-    #[arg(
-        long,
-        allow_hyphen_values = true,
-        value_name = "MU",
-        default_value_t = 0.0,
-        requires = "torque"
-    )]
-    pub friction: f64,
+    /// Coefficient of friction μ ≥ 0 of the slider in its guides: with
+    /// --torque, Ng's statics; analyze with the engine's masses, the
+    /// running engine's friction μ|N| against the slider's motion too
+    /// (refused where the slider would self-lock, μ |tan φ| ≥ 1)
+    /// [default: 0]
+    #[arg(long, allow_hyphen_values = true, value_name = "MU")]
+    pub friction: Option<f64>,
 }
 
 /// The one guard on the size of a request: the values a command computes

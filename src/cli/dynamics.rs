@@ -64,6 +64,15 @@ pub struct EngineArgs {
         requires = "indicator"
     )]
     pub bore: Option<f64>,
+    /// A vertical engine: gravity along the line of stroke towards-crank
+    /// (the cylinder above the crank) or away-from-crank (below it),
+    /// standard gravity 9.80665 m/s² in the length unit; the weights of
+    /// the reciprocating mass and the rod (at its centre of mass) enter
+    /// the piston effort, the rod force, the guide thrust, the pin and
+    /// bearing loads and the torque [default: none, a horizontal engine's
+    /// weights left out]
+    #[arg(long, value_name = "DIRECTION")]
+    pub gravity: Option<slider_crank::dynamics::Gravity>,
 }
 
 impl EngineArgs {
@@ -80,6 +89,7 @@ impl EngineArgs {
             gas_force: self.gas_force,
             indicator: self.indicator.clone(),
             bore: self.bore,
+            gravity: self.gravity,
         }
     }
 }
@@ -130,6 +140,16 @@ pub fn to_text(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) ->
         at.inertia_force_graphical,
         &f,
     );
+    if let Some(w) = at.weight {
+        row("weight −m g_x", w, &f);
+    }
+    if let Some(fr) = at.friction {
+        row(
+            &format!("friction μ|N| (μ = {})", plain(engine.friction())),
+            fr,
+            &f,
+        );
+    }
     row("piston effort F", at.piston_effort, &f);
     row("force along the rod F/cos φ", at.rod_force, &f);
     row("thrust on the guides −F tan φ", at.guide_thrust, &f);
@@ -178,6 +198,9 @@ pub fn to_text(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) ->
         );
         row("with the rod: force along the rod", w.rod_force, &f);
         row("with the rod: thrust on the guides", w.guide_thrust, &f);
+        if let Some(fr) = w.friction {
+            row("with the rod: friction μ|N|", fr, &f);
+        }
         row("with the rod: crank-pin load x", w.crank_pin[0], &f);
         row("with the rod: crank-pin load y", w.crank_pin[1], &f);
         row("with the rod: shaking force x", w.shaking_force[0], &f);

@@ -194,6 +194,18 @@ pub struct FigureFlags {
     /// comma-separated [default: a pitch of 1 about the engine's middle]
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub planes: Option<String>,
+    /// A vertical engine of turning-moment, flywheel and crank-pin-loads:
+    /// gravity along the line of stroke towards-crank (the cylinder above
+    /// the crank) or away-from-crank (below it), standard gravity in the
+    /// length unit [default: none]
+    #[arg(long, value_name = "DIRECTION")]
+    pub gravity: Option<slider_crank::dynamics::Gravity>,
+    /// The slider's coefficient of friction μ in its guides, of
+    /// turning-moment, flywheel and crank-pin-loads: μ|N| against the
+    /// slider's motion (refused where it would self-lock, μ |tan φ| ≥ 1)
+    /// [default: 0]
+    #[arg(long, value_name = "MU", allow_hyphen_values = true)]
+    pub friction: Option<f64>,
 }
 
 /// `--coupler T[,H]`: a point along the rod and off its line.
@@ -348,6 +360,8 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     request.rod_mass = args.rod_mass;
     request.rod_cg = args.rod_cg;
     request.rod_gyration = args.rod_gyration;
+    request.gravity = args.gravity;
+    request.friction = args.friction;
     request.cranks = (args.cranks.as_deref())
         .map(|s| super::args::parse_list(s, "crank angle", false))
         .transpose()?;

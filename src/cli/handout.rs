@@ -150,7 +150,7 @@ fn request(args: &HandoutArgs) -> HandoutRequest {
     (r.rpm, r.omega) = (args.speed.rpm, args.speed.omega);
     (r.unit, r.force_unit) = (args.units.length.clone(), args.units.force.clone());
     r.torque = args.load.torque;
-    r.friction = r.torque.and(Some(args.load.friction));
+    r.friction = (r.torque.and(Some(args.load.friction.unwrap_or(0.0)))).or(args.load.friction);
     r.mass = args.mass;
     r.fluctuation = args.mass.and(Some(args.fluctuation));
     (r.gas_force, r.indicator, r.bore) = (args.gas_force, args.indicator.clone(), args.bore);

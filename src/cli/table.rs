@@ -139,8 +139,10 @@ pub struct TableArgs {
     /// implies]
     #[arg(long, allow_hyphen_values = true, value_name = "T")]
     pub torque: Option<f64>,
-    /// Coefficient of friction μ ≥ 0 of the slider for forces [default: 1,
-    /// Ng's 45° tilt]
+    /// Coefficient of friction μ ≥ 0 of the slider: for forces Ng's
+    /// statics [default: 1, Ng's 45° tilt]; for dynamics the guides'
+    /// friction μ|N| against the slider's motion, 0 when not given
+    /// (refused where the slider would self-lock, μ |tan φ| ≥ 1)
     #[arg(long, allow_hyphen_values = true, value_name = "MU")]
     pub friction: Option<f64>,
     /// Decimals printed by kinematics and forces [default: 4 for

@@ -22,6 +22,8 @@ pub struct Engine {
     rod: Option<RodMass>,
     gas: GasForce,
     omega: f64,
+    gravity: [f64; 2],
+    friction: f64,
 }
 
 impl Engine {
@@ -41,6 +43,8 @@ impl Engine {
             rod: None,
             gas: GasForce::None,
             omega,
+            gravity: [0.0, 0.0],
+            friction: 0.0,
         };
         engine.check_scale(reciprocating)?;
         Ok(engine)
@@ -77,6 +81,34 @@ impl Engine {
             crate::error::finite(Field::GasForce, f)?;
         }
         self.gas = gas;
+        Ok(self)
+    }
+
+    /// The same engine with gravity's acceleration `g` (x along the line
+    /// of stroke from the crank centre, y across it; length units per s²,
+    /// [`super::Gravity::in_unit`] for a vertical engine): the weights
+    /// m g of the reciprocating parts at the cross-head and m_r g of the
+    /// rod at G enter every force and the torque. [0, 0] (the default)
+    /// leaves gravity out.
+    ///
+    /// Errors: a component not finite.
+    pub fn with_gravity(mut self, g: [f64; 2]) -> Result<Self> {
+        for c in g {
+            crate::error::finite(Field::Gravity, c)?;
+        }
+        self.gravity = g;
+        Ok(self)
+    }
+
+    /// The same engine with the coefficient of friction μ of the slider
+    /// in its guides: a force μ |N| against the slider's motion, N the
+    /// guides' reaction (0 at a dead centre, [`super::AT_REST`]). 0 (the
+    /// default) is frictionless.
+    ///
+    /// Errors: μ negative or not finite, or so large that the slider
+    /// self-locks somewhere in the turn ([`super::check_friction`]).
+    pub fn with_friction(mut self, mu: f64) -> Result<Self> {
+        self.friction = super::guide::check_friction(&self.mechanism, mu)?;
         Ok(self)
     }
 
@@ -123,6 +155,17 @@ impl Engine {
     /// The crank speed ω in rad/s.
     pub fn omega(&self) -> f64 {
         self.omega
+    }
+
+    /// Gravity's acceleration (x along the line of stroke, y across it),
+    /// [0, 0] without gravity.
+    pub fn gravity(&self) -> [f64; 2] {
+        self.gravity
+    }
+
+    /// The slider's coefficient of friction in its guides, 0 without.
+    pub fn friction(&self) -> f64 {
+        self.friction
     }
 
     /// The turn of the gas force's cycle (0 or 1 for a four-stroke

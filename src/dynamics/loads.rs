@@ -1,8 +1,10 @@
 //! The forces of the whole engine, the rod's inertia included: the loads
 //! on the cross-head and crank pins, the thrust on the guides, the force
 //! along the rod and the shaking force, from Newton–Euler on the slider
-//! and on the rod as a rigid body.
+//! and on the rod as a rigid body, with the weights and the guides'
+//! friction where the engine has them.
 
+use super::guide::slide;
 use super::rod::{RodInertia, RodMass};
 use crate::mechanism::Pose;
 
@@ -11,15 +13,18 @@ use crate::mechanism::Pose;
 /// has none, and then each force equals its value for the reciprocating
 /// parts alone in [`super::EnginePose`]). Vectors are x and y in the world
 /// frame; the crank is massless (or balanced about C), so the load on its
-/// pin is also the load on the main bearing; gravity and friction are left
-/// out, as everywhere in the dynamics.
+/// pin is also the load on the main bearing.
 ///
-/// Newton–Euler, at constant ω: the slider along x gives the pin force
-/// F_A of the slider on the rod, F_A,x = −F (F the piston effort towards
-/// the crank); the rod's moments about B, (A − B) × F_A = I_G α +
-/// (G − B) × m_r a_G, give F_A,y; the rod's forces give the crank's pin
-/// force F_B = m_r a_G − F_A. The torque on the crank, B × (−F_B), is
-/// then the crank effort with the rod's inertia torque
+/// Newton–Euler, at constant ω, with gravity g and the guides' friction
+/// f (along x, μ |N| against the motion): the slider along x gives the
+/// pin force F_A of the slider on the rod, F_A,x = −F (F the piston
+/// effort towards the crank, gas + m a − m g_x − f); the rod's moments
+/// about B, (A − B) × F_A + (G − B) × m_r g = I_G α + (G − B) × m_r a_G,
+/// give F_A,y; the slider across x gives the guides' reaction
+/// N = F_A,y − m g_y, on which f depends (solved exactly,
+/// [`super::check_friction`]); the rod's forces give the crank's pin force
+/// F_B = m_r (a_G − g) − F_A. The torque on the crank, B × (−F_B), is then
+/// the crank effort with the rod's inertia and weight torques
 /// ([`super::EnginePose::torque`]), which the tests check.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize)]
 pub struct EngineLoads {
@@ -36,48 +41,110 @@ pub struct EngineLoads {
     pub guide_thrust: f64,
     /// The piston effort of the equivalent dynamical system: F with the
     /// rod's mass at the cross-head m_A = m_r BG / l moving with the piston,
-    /// gas force + (m + m_A) a towards the crank.
+    /// gas force + (m + m_A) a towards the crank (and, with gravity, the
+    /// weight of m + m_A along the stroke; with friction, the guides'
+    /// friction of the reciprocating parts alone).
     pub piston_effort_equivalent: f64,
     /// The shaking force on the frame, −m a_A − m_r a_G: the inertia
     /// forces of the reciprocating parts and the rod (the gas force acts
-    /// on the piston and the cylinder head alike and cancels).
+    /// on the piston and the cylinder head alike and cancels; the weights
+    /// are a steady load, not shaking).
     pub shaking_force: [f64; 2],
+    /// The guides' friction on the slider towards the crank, with the
+    /// rod's inertia in the guides' reaction; `None` for a frictionless
+    /// engine.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<f64>,
+}
+
+/// The slider's part in the balances at one pose.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Slider {
+    /// The crank speed ω.
+    pub omega: f64,
+    /// The reciprocating mass m.
+    pub mass: f64,
+    /// F₀, the piston effort without friction, towards the crank: gas
+    /// force + m a − m g_x.
+    pub effort: f64,
+    /// Gravity's acceleration.
+    pub gravity: [f64; 2],
+    /// The coefficient of friction μ.
+    pub friction: f64,
+    /// The direction of the slider's motion along +x (0 at rest).
+    pub motion: f64,
+    /// The extra piston effort towards the crank of the equivalent
+    /// system's mass at the cross-head, m_A (a − g_x), a = ω² s″.
+    pub equivalent: f64,
+}
+
+impl Slider {
+    /// The piston effort F and the guides' reaction N of the
+    /// reciprocating parts with a massless rod: N = F tan φ − m g_y.
+    pub fn alone(&self, pose: &Pose) -> (f64, f64) {
+        let (t, weight) = (pose.tan_obliquity(), self.mass * self.gravity[1]);
+        slide(
+            self.effort,
+            |f| f * t - weight,
+            t,
+            self.friction,
+            self.motion,
+        )
+    }
 }
 
 impl EngineLoads {
-    /// The loads at `pose`, the crank turning at `omega`, for the piston
-    /// effort `effort` (towards the crank) of reciprocating parts of mass
-    /// `mass`, with the rod `rod` and its inertia there (`None`: a
-    /// massless rod).
-    pub fn new(
+    /// The loads at `pose` for the slider `slider`, with the rod `rod` and
+    /// its inertia there (`None`: a massless rod), and the whole engine's
+    /// piston effort F (with the friction its guides' reaction gives).
+    pub(crate) fn new(
         pose: &Pose,
-        (omega, mass): (f64, f64),
-        effort: f64,
+        slider: &Slider,
         rod: Option<(&RodMass, &RodInertia)>,
-    ) -> Self {
+    ) -> (Self, f64) {
         let l = pose.mechanism().rod();
         // A − B = (w, −h), h = l sin φ, w = l cos φ > 0.
         let (w, h) = (pose.run(), pose.rise());
         let beta = rod.map_or(0.0, |(m, _)| m.cg() / l);
-        // −m_r a_G and −I_G α, both zero for a massless rod.
-        let (f, couple) = rod.map_or(([0.0, 0.0], 0.0), |(_, i)| (i.force, i.couple));
-        // Moments about B: w F_A,y + h F_A,x = −couple + β (A − B) × (−f).
+        let g = slider.gravity;
+        // The rod's inertia force with its weight, m_r (g − a_G), and
+        // −I_G α; both zero for a massless rod.
+        let (f, couple) = rod.map_or(([0.0, 0.0], 0.0), |(m, i)| {
+            let weight = [m.mass() * g[0], m.mass() * g[1]];
+            ([i.force[0] + weight[0], i.force[1] + weight[1]], i.couple)
+        });
+        // Moments about B: w F_A,y + h F_A,x = −couple + β (A − B) × (−f),
+        // and F_A,x = −F, so F_A,y = (moment + h F)/w, and the guides'
+        // reaction N = F_A,y − m g_y = P + tan φ F.
         let moment = -couple - beta * (w * f[1] + h * f[0]);
+        let weight = slider.mass * g[1];
+        let (effort, reaction) = slide(
+            slider.effort,
+            |f| (moment + h * f) / w - weight,
+            pose.tan_obliquity(),
+            slider.friction,
+            slider.motion,
+        );
         let pin_a = [-effort, (moment + h * effort) / w];
-        let a = omega * omega * pose.position_acceleration();
-        let mass_at_crosshead = rod.map_or(0.0, |(_, i)| i.mass_at_crosshead);
-        Self {
+        let a = slider.omega * slider.omega * pose.position_acceleration();
+        let (alone, _) = slider.alone(pose);
+        let loads = Self {
             crosshead_pin: [-pin_a[0], -pin_a[1]],
             crank_pin: [f[0] + pin_a[0], f[1] + pin_a[1]],
             rod_force: (-pin_a[0] * w + pin_a[1] * h) / l,
-            guide_thrust: -pin_a[1],
-            piston_effort_equivalent: effort + mass_at_crosshead * a,
-            shaking_force: [-mass * a + f[0], f[1]],
-        }
+            guide_thrust: -reaction,
+            piston_effort_equivalent: alone + slider.equivalent,
+            shaking_force: [
+                -slider.mass * a + rod.map_or(0.0, |(_, i)| i.force[0]),
+                rod.map_or(0.0, |(_, i)| i.force[1]),
+            ],
+            friction: (slider.friction > 0.0).then_some(effort - slider.effort),
+        };
+        (loads, effort)
     }
 
     /// Every value, for the finite check.
-    pub(crate) fn values(&self) -> [f64; 9] {
+    pub(crate) fn values(&self) -> [f64; 10] {
         [
             self.crosshead_pin[0],
             self.crosshead_pin[1],
@@ -88,6 +155,7 @@ impl EngineLoads {
             self.piston_effort_equivalent,
             self.shaking_force[0],
             self.shaking_force[1],
+            self.friction.unwrap_or(0.0),
         ]
     }
 }

@@ -15,8 +15,9 @@
 //! gas pushes in a cylinder beyond the slider; F = −F_p of Ng's statics.
 //! The crank effort T is the torque the piston and rod forces deliver to
 //! the crank, counter-clockwise positive, so that T ω = −F v (v = dx_A/dt)
-//! and T = F · OM. The crank turns at a constant speed ω; gravity and
-//! friction are left out.
+//! and T = F · OM. The crank turns at a constant speed ω. Gravity (a
+//! vertical engine, [`Gravity`]) and the friction of the slider in its
+//! guides ([`Engine::with_friction`]) are out unless given.
 //!
 //! ```
 //! use slider_crank::{Angle, SliderCrank};
@@ -33,6 +34,8 @@ mod balance;
 mod engine;
 mod flywheel;
 mod gas;
+mod gravity;
+mod guide;
 mod inline;
 mod loads;
 mod partial;
@@ -53,6 +56,8 @@ pub use gas::{
     EXAMPLE_BORE, EXAMPLE_INDICATOR, GasForce, IndicatorDiagram, MAX_INDICATOR_ROWS,
     example_indicator,
 };
+pub use gravity::{Gravity, STANDARD_GRAVITY};
+pub use guide::{AT_REST, check_friction, largest_tan_obliquity};
 pub use inline::{
     BALANCE_TOLERANCE, DEFAULT_CRANKS, InlineEngine, MAX_INLINE_CYLINDERS, Polygon, Resultant,
     default_planes, offset_harmonic,

@@ -36,11 +36,15 @@ pub struct EngineParts<'a> {
     pub gas_force: Option<f64>,
     /// An indicator diagram (one turn, or a four-stroke cycle of two).
     pub indicator: Option<IndicatorText<'a>>,
+    /// Gravity's acceleration ([`Engine::with_gravity`]).
+    pub gravity: Option<[f64; 2]>,
+    /// The slider's coefficient of friction ([`Engine::with_friction`]).
+    pub friction: Option<f64>,
 }
 
 impl EngineParts<'_> {
     /// The engine of `mechanism` at crank speed `omega` (rad/s) with these
-    /// parts, validated by [`Engine`], [`RodMass`] and
+    /// parts, validated by [`Engine`] (its gravity and friction too), [`RodMass`] and
     /// [`IndicatorDiagram::from_csv_cycle`]. A constant gas force and an
     /// indicator diagram together: the diagram is the engine's gas force
     /// (callers refuse the pair before, naming their own flags).
@@ -58,6 +62,12 @@ impl EngineParts<'_> {
                 diagram.check_units(units, d.what)?;
             }
             engine = engine.with_gas(GasForce::Indicator(diagram))?;
+        }
+        if let Some(g) = self.gravity {
+            engine = engine.with_gravity(g)?;
+        }
+        if let Some(mu) = self.friction {
+            engine = engine.with_friction(mu)?;
         }
         Ok(engine)
     }

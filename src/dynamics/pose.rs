@@ -1,8 +1,9 @@
 //! The forces and the crank effort of an engine at one pose.
 
 use super::engine::Engine;
-use super::loads::EngineLoads;
-use super::rod::RodInertia;
+use super::guide::motion;
+use super::loads::{EngineLoads, Slider};
+use super::rod::{RodInertia, cg_rate};
 use crate::angle::Angle;
 use crate::construct::{InstantCentre, Kisch, Klein, TorqueLine, VelocityLine};
 use crate::error::{Error, Field, Result};
@@ -23,17 +24,29 @@ pub struct EnginePose {
     /// The same from Klein's construction, a = −ω² CG (Kisch's where D is
     /// at infinity, θ = 90° and 270° in line).
     pub inertia_force_graphical: f64,
+    /// The weight of the reciprocating parts along the line of stroke,
+    /// towards the crank, −m g_x (m g in a vertical engine with its
+    /// cylinder above the crank); `None` without gravity.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub weight: Option<f64>,
+    /// The guides' friction on the reciprocating parts towards the crank,
+    /// μ |N| against the slider's motion with N the guides' reaction of a
+    /// massless rod (with the rod's inertia: `loads`); 0 at a dead
+    /// centre; `None` for a frictionless engine.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub friction: Option<f64>,
     /// The piston effort F = gas force + inertia force of the
-    /// reciprocating parts (the rod's inertia is in `rod`, and the
-    /// equivalent system's effort with the rod's mass at the cross-head in
-    /// `loads`).
+    /// reciprocating parts (+ their weight + the guides' friction, where
+    /// given; the rod's inertia is in `rod`, and the equivalent system's
+    /// effort with the rod's mass at the cross-head in `loads`).
     pub piston_effort: f64,
     /// The force along the rod, F / cos φ (compression positive), of the
     /// reciprocating parts alone (with the rod's inertia: `loads`).
     pub rod_force: f64,
     /// The thrust of the slider on its guides along +y, −F tan φ (Ng's
-    /// F_s = F_p tan φ with F_p = −F), of the reciprocating parts alone
-    /// (with the rod's inertia: `loads`).
+    /// F_s = F_p tan φ with F_p = −F; + m g_y with gravity across the
+    /// stroke), of the reciprocating parts alone (with the rod's inertia:
+    /// `loads`).
     pub guide_thrust: f64,
     /// OM (= CE) read off Ng's torque line.
     pub om: f64,
@@ -45,7 +58,9 @@ pub struct EnginePose {
     /// The rod's inertia, `None` for a massless rod.
     pub rod: Option<RodInertia>,
     /// The whole torque on the crank: the gas and reciprocating parts'
-    /// crank effort and the rod's exact inertia torque.
+    /// crank effort (their weight and the guides' friction with the rod's
+    /// inertia in the guides' reaction, where given), the rod's exact
+    /// inertia torque and its weight's torque m_r g · G′.
     pub torque: f64,
     /// The forces of the whole engine with the rod's inertia (pin and
     /// bearing loads, guide thrust, force along the rod, shaking force):
@@ -80,34 +95,65 @@ impl Engine {
         let inertia_force = m * w2 * pose.position_acceleration();
         let inertia_force_graphical = -m * w2 * graphical_cg(&pose);
         let rod = self.rod().map(|r| RodInertia::new(&pose, r, omega));
-        let piston_effort = gas + inertia_force;
-        let tan_phi = pose.tan_obliquity();
+        let weight = -m * self.gravity()[0];
+        let slider = self.slider(&pose, gas + inertia_force + weight);
+        let (piston_effort, reaction) = slider.alone(&pose);
         let cos_phi = pose.run() / pose.mechanism().rod();
         let line = TorqueLine::construct(&pose, &VelocityLine::construct(&pose));
         let om = line.om();
-        let crank_effort_exact = piston_effort * exact_arm(&pose);
-        let loads = EngineLoads::new(
-            &pose,
-            (omega, m),
-            piston_effort,
-            self.rod().zip(rod.as_ref()),
-        );
+        let arm = exact_arm(&pose);
+        let crank_effort_exact = piston_effort * arm;
+        let (loads, whole) = EngineLoads::new(&pose, &slider, self.rod().zip(rod.as_ref()));
+        let rod_torque = rod.map_or(0.0, |r| r.torque) + self.rod_weight_torque(&pose);
         let at = EnginePose {
             angle_deg: angle.degrees(),
             gas_force: gas,
             inertia_force,
             inertia_force_graphical,
+            weight: (self.gravity() != [0.0, 0.0]).then_some(weight),
+            friction: (self.friction() > 0.0).then_some(piston_effort - slider.effort),
             piston_effort,
             rod_force: piston_effort / cos_phi,
-            guide_thrust: -piston_effort * tan_phi,
+            guide_thrust: -reaction,
             om,
             crank_effort: piston_effort * om,
             crank_effort_exact,
-            torque: crank_effort_exact + rod.map_or(0.0, |r| r.torque),
+            torque: whole * arm + rod_torque,
             rod,
             loads,
         };
         at.check(angle)
+    }
+
+    /// The slider's part in the balances at `pose` for the piston effort
+    /// without friction `effort` (gas, inertia and weight).
+    fn slider(&self, pose: &Pose, effort: f64) -> Slider {
+        let omega = self.omega();
+        let g = self.gravity();
+        let mass_at_crosshead = self
+            .rod()
+            .map_or(0.0, |r| r.mass() * r.cg() / pose.mechanism().rod());
+        let a = omega * omega * pose.position_acceleration();
+        Slider {
+            omega,
+            mass: self.reciprocating_mass(),
+            effort,
+            gravity: g,
+            friction: self.friction(),
+            motion: motion(pose, omega),
+            equivalent: mass_at_crosshead * (a - g[0]),
+        }
+    }
+
+    /// The torque of the rod's weight on the crank, m_r g · G′ (virtual
+    /// work: the weight's power m_r g · v_G over ω); 0 without gravity or
+    /// a rod.
+    fn rod_weight_torque(&self, pose: &Pose) -> f64 {
+        let g = self.gravity();
+        self.rod().map_or(0.0, |r| {
+            let rate = cg_rate(pose, r.cg() / pose.mechanism().rod());
+            r.mass() * (g[0] * rate[0] + g[1] * rate[1])
+        })
     }
 }
 
@@ -117,6 +163,8 @@ impl EnginePose {
             self.inertia_force,
             self.inertia_force_graphical,
             self.piston_effort,
+            self.weight.unwrap_or(0.0),
+            self.friction.unwrap_or(0.0),
             self.rod_force,
             self.guide_thrust,
             self.crank_effort,
@@ -167,11 +215,17 @@ impl Engine {
     /// second turn of a four-stroke cycle: intake and compression).
     pub fn torque_in_turn(&self, pose: &Pose, turn: usize) -> f64 {
         let omega = self.omega();
+        let m = self.reciprocating_mass();
         let effort = self.gas().at_turn(pose, omega, turn)
-            + self.reciprocating_mass() * omega * omega * pose.position_acceleration();
-        let rod = self
-            .rod()
-            .map_or(0.0, |r| RodInertia::new(pose, r, omega).torque);
-        effort * exact_arm(pose) + rod
+            + m * omega * omega * pose.position_acceleration()
+            - m * self.gravity()[0];
+        let rod = self.rod().map(|r| RodInertia::new(pose, r, omega));
+        let effort = if self.friction() > 0.0 {
+            let slider = self.slider(pose, effort);
+            EngineLoads::new(pose, &slider, self.rod().zip(rod.as_ref())).1
+        } else {
+            effort
+        };
+        effort * exact_arm(pose) + rod.map_or(0.0, |r| r.torque) + self.rod_weight_torque(pose)
     }
 }

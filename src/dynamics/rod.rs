@@ -135,7 +135,7 @@ impl RodInertia {
         let (s1, s2) = (pose.position_rate(), pose.position_acceleration());
         let (p1, p2) = (pose.obliquity_rate(), pose.obliquity_acceleration());
         // G = B + β (A − B): its derivatives are the same blend of B's and A's.
-        let g1 = [(1.0 - beta) * -r * s + beta * s1, (1.0 - beta) * r * c];
+        let g1 = cg_rate(pose, beta);
         let g2 = [(1.0 - beta) * -r * c + beta * s2, (1.0 - beta) * -r * s];
         let w2 = omega * omega;
         let inertia = rod.mass * rod.gyration * rod.gyration;
@@ -170,6 +170,17 @@ impl RodInertia {
             dynamical_torque,
         }
     }
+}
+
+/// G′ = dG/dθ of the point G = B + β (A − B) of the rod at `pose`:
+/// (1 − β) B′ + β A′, B′ = r (−sin θ, cos θ), A′ = (s′, 0).
+pub(crate) fn cg_rate(pose: &Pose, beta: f64) -> [f64; 2] {
+    let r = pose.mechanism().crank();
+    let (s, c) = (pose.angle().sin(), pose.angle().cos());
+    [
+        (1.0 - beta) * -r * s + beta * pose.position_rate(),
+        (1.0 - beta) * r * c,
+    ]
 }
 
 #[cfg(test)]

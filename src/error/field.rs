@@ -66,6 +66,8 @@ pub enum Field {
     SliderForce,
     /// A coefficient of friction.
     Friction,
+    /// The direction of gravity along a vertical engine's line of stroke.
+    Gravity,
     /// The tilt of a plane.
     Tilt,
     /// A tolerance (of a curve, a plot or the cross-check).
@@ -211,6 +213,7 @@ impl Field {
             Field::Torque => "torque",
             Field::SliderForce => "slider force",
             Field::Friction => "friction",
+            Field::Gravity => "gravity",
             Field::Tilt => "tilt",
             Field::Tolerance => "tolerance",
             Field::Samples => "samples",

@@ -57,8 +57,9 @@ pub struct AnalyzeRequest<'a> {
     pub omega: Option<f64>,
     /// A crank torque: adds Ng's statics (the engine only).
     pub torque: Option<f64>,
-    /// The slider's coefficient of friction (with `torque`; 0 when not
-    /// given).
+    /// The slider's coefficient of friction in its guides: of the statics
+    /// (with `torque`) and of the engine's dynamics (with its masses); 0
+    /// when not given.
     pub friction: Option<f64>,
     /// The name of the length unit.
     pub unit: Option<Unit>,
@@ -168,7 +169,8 @@ impl<'a> AnalyzeRequest<'a> {
     /// no angle computed yet.
     ///
     /// Errors: a mechanism the library refuses; two fields that do not go
-    /// together (`rpm` and `omega`, `friction` without `torque`, the
+    /// together (`rpm` and `omega`, `friction` without `torque` or an
+    /// engine, `gravity` without a mass, the
     /// engine's as [`GivenEngine::refuse_pairs`] says, `slot_radius`,
     /// `links` and `inversion` with one another, `links` with a length of
     /// the engine, `assembly` without `links`, `torque` or the engine's
@@ -205,17 +207,20 @@ impl<'a> AnalyzeRequest<'a> {
     /// given without another it needs.
     fn refuse_pairs(&self) -> Result<()> {
         crank_speed(self.rpm, self.omega)?;
-        if self.friction.is_some() && self.torque.is_none() {
+        if self.friction.is_some() && self.torque.is_none() && !self.engine.is_given() {
             return Err(Error::refused(
                 Input::Options,
                 Wording::default()
                     .option(Field::Friction)
-                    .then(" applies with a torque: give ")
+                    .then(" applies with a torque (the statics) or the engine's dynamics: give ")
                     .option(Field::Torque)
+                    .then(" or ")
+                    .option(Field::Mass)
                     .then(" too"),
             ));
         }
         self.engine.refuse_pairs()?;
+        self.engine.refuse_gravity_alone()?;
         let chain = [
             (Field::SlotRadius, self.slot_radius.is_some()),
             (Field::Links, self.links.is_some()),
@@ -324,7 +329,9 @@ impl<'a> AnalyzeRequest<'a> {
         Ok(Subject::Engine {
             torque: self.torque,
             friction: self.friction.unwrap_or(0.0),
-            engine: self.engine.engine(m, omega, units)?.map(Box::new),
+            engine: (self.engine)
+                .engine(m, omega, units, self.friction)?
+                .map(Box::new),
         })
     }
 }
@@ -467,7 +474,18 @@ mod tests {
         };
         assert_eq!(
             refused(r),
-            "`friction` applies with a torque: give `torque` too"
+            "`friction` applies with a torque (the statics) or the engine's dynamics: give `torque` or `mass` too"
+        );
+        let r = AnalyzeRequest {
+            engine: GivenEngine {
+                gravity: Some(crate::dynamics::Gravity::TowardsCrank),
+                ..Default::default()
+            },
+            ..Default::default()
+        };
+        assert_eq!(
+            refused(r),
+            "`gravity` weighs the engine's masses: give `mass` or `rod_mass` with it"
         );
         let r = AnalyzeRequest {
             torque: Some(1.0),

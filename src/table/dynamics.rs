@@ -31,6 +31,15 @@ pub fn dynamics_head(
         "θ (°)".to_string(),
         format!("gas ({f})"),
         format!("inertia ({f})"),
+    ];
+    let (weighed, rubbing) = guides(engine);
+    if weighed {
+        headers.push(format!("weight ({f})"));
+    }
+    if rubbing {
+        headers.push(format!("friction ({f})"));
+    }
+    headers.extend([
         format!("F ({f})"),
         format!("rod ({f})"),
         format!("guides ({f})"),
@@ -38,7 +47,7 @@ pub fn dynamics_head(
         format!("F·OM ({t})"),
         format!("T rod ({t})"),
         format!("T ({t})"),
-    ];
+    ]);
     if turn.phases_deg.len() > 1 {
         headers.push(format!("T all ({t})"));
     }
@@ -62,6 +71,9 @@ pub fn dynamics_head(
             },
         ),
     ];
+    if let Some(note) = guides_note(engine, units) {
+        notes.insert(1, note);
+    }
     let fw = match flywheel {
         FlywheelAsk::None => None,
         FlywheelAsk::Coefficient(c) => Some(Flywheel::for_coefficient(
@@ -97,6 +109,47 @@ pub fn dynamics_head(
     })
 }
 
+/// Whether `engine` has gravity, and friction in its guides: each adds
+/// its column.
+fn guides(engine: &Engine) -> (bool, bool) {
+    (engine.gravity() != [0.0, 0.0], engine.friction() > 0.0)
+}
+
+/// The note of gravity and the guides' friction, `None` without either.
+fn guides_note(engine: &Engine, units: &Units) -> Option<String> {
+    let (weighed, rubbing) = guides(engine);
+    if !weighed && !rubbing {
+        return None;
+    }
+    let mut parts = vec![];
+    if weighed {
+        let g = engine.gravity();
+        parts.push(format!(
+            "gravity g = ({}, {}) {}/s² along and across the line of stroke: weight, that of the reciprocating parts towards the crank, is in F, and the rod's weight at G in the pin loads and in T (m_r g·G′)",
+            sig(g[0]),
+            sig(g[1]),
+            units.length()
+        ));
+    }
+    if rubbing {
+        parts.push(format!(
+            "the guides' friction μ = {} against the slider's motion, μ |N| with N the guides' reaction of the reciprocating parts (in F; 0 at a dead centre), and in T with the rod's inertia in N",
+            plain(engine.friction())
+        ));
+    }
+    let mut note = parts.join("; ");
+    note.insert_str(0, "With ");
+    note.push_str(": F = gas + inertia");
+    if weighed {
+        note.push_str(" + weight");
+    }
+    if rubbing {
+        note.push_str(" + friction");
+    }
+    note.push('.');
+    Some(note)
+}
+
 /// One row of the dynamics table at `degrees`; past 360° (to 720°) in
 /// the second turn of a four-stroke cycle.
 pub fn dynamics_row(
@@ -111,6 +164,14 @@ pub fn dynamics_row(
         angle_cell(degrees, 1),
         fixed(at.gas_force, decimals),
         fixed(at.inertia_force, decimals),
+    ];
+    if let Some(w) = at.weight {
+        row.push(fixed(w, decimals));
+    }
+    if let Some(f) = at.friction {
+        row.push(fixed(f, decimals));
+    }
+    row.extend([
         fixed(at.piston_effort, decimals),
         fixed(at.rod_force, decimals),
         fixed(at.guide_thrust, decimals),
@@ -118,7 +179,7 @@ pub fn dynamics_row(
         fixed(at.crank_effort, decimals),
         fixed(at.rod.map_or(0.0, |r| r.torque), decimals),
         fixed(at.torque, decimals),
-    ];
+    ]);
     if phases_deg.len() > 1 {
         // The turn of the cycle of the row's angle carried by the phases
         // (cylinder i at θ + δ_i, θ past 360° on a four-stroke cycle),

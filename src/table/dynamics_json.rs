@@ -19,7 +19,9 @@ pub fn mass_unit(units: &Units) -> String {
 /// JSON writes them: forces along the stroke, the crank effort by
 /// Ng's OM and exactly, the torque, the unbalanced forces, the rod's
 /// inertia (`null` for a massless rod) and the forces of the whole engine
-/// with it (`whole_engine`).
+/// with it (`whole_engine`); with gravity `gravity` (g, x and y) and the
+/// reciprocating parts' `weight`, with friction `friction_coefficient`
+/// and the guides' `friction` (and `whole_engine.friction`).
 pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Units) -> Value {
     let b = unbalanced_forces(engine, angle);
     let system = engine
@@ -49,7 +51,7 @@ pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Uni
             "dynamical": dynamical,
         })
     });
-    json!({
+    let mut out = json!({
         "units": {"force": units.force(), "torque": units.torque(), "mass": mass_unit(units)},
         "sign": "forces along the stroke positive towards the crank centre; torques counter-clockwise positive",
         "reciprocating_mass": engine.reciprocating_mass(),
@@ -69,7 +71,19 @@ pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Uni
         },
         "rod": rod,
         "whole_engine": loads_json(&at.loads),
-    })
+    });
+    // Gravity and friction only where given: an engine without either
+    // writes what it always did.
+    if let Some(w) = at.weight {
+        let g = engine.gravity();
+        put(&mut out, "gravity", json!([num(g[0]), num(g[1])]));
+        put(&mut out, "weight", json!(num(w)));
+    }
+    if let Some(f) = at.friction {
+        put(&mut out, "friction_coefficient", json!(engine.friction()));
+        put(&mut out, "friction", json!(num(f)));
+    }
+    out
 }
 
 /// The forces of the whole engine, the rod's inertia included
@@ -77,12 +91,24 @@ pub fn dynamics_json(engine: &Engine, at: &EnginePose, angle: Angle, units: &Uni
 /// parts' above.
 fn loads_json(l: &EngineLoads) -> Value {
     let pair = |v: [f64; 2]| [num(v[0]), num(v[1])];
-    json!({
+    let mut out = json!({
         "crosshead_pin_load": pair(l.crosshead_pin),
         "crank_pin_load": pair(l.crank_pin),
         "rod_force": num(l.rod_force),
         "guide_thrust": num(l.guide_thrust),
         "piston_effort_equivalent": num(l.piston_effort_equivalent),
         "shaking_force": pair(l.shaking_force),
-    })
+    });
+    if let Some(f) = l.friction {
+        put(&mut out, "friction", json!(num(f)));
+    }
+    out
+}
+
+/// Sets `key` of the object `out` to `value` (nothing where `out` is not
+/// an object, which the callers' `json!` never makes).
+fn put(out: &mut Value, key: &str, value: Value) {
+    if let Value::Object(map) = out {
+        map.insert(key.to_string(), value);
+    }
 }

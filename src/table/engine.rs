@@ -2,7 +2,7 @@
 //! `analyze`): the reciprocating mass, the rod, a constant gas force or
 //! an indicator diagram read from a file, built once for both.
 
-use crate::dynamics::{Engine, EngineParts, IndicatorText};
+use crate::dynamics::{Engine, EngineParts, Gravity, IndicatorText};
 use crate::error::{Error, Field, Input, Result, Wording};
 use crate::files::{MAX_DATA_BYTES, read_text};
 use crate::mechanism::SliderCrank;
@@ -30,6 +30,11 @@ pub struct GivenEngine {
     pub indicator: Option<PathBuf>,
     /// The cylinder's bore, the indicator diagram's.
     pub bore: Option<f64>,
+    /// The direction of gravity along a vertical engine's line of stroke
+    /// (standard gravity in the length unit); `None`: no gravity. Not an
+    /// engine by itself ([`GivenEngine::is_given`]): it weighs the masses
+    /// given.
+    pub gravity: Option<Gravity>,
 }
 
 impl GivenEngine {
@@ -95,16 +100,20 @@ impl GivenEngine {
     }
 
     /// The engine of `mechanism` at `omega` (rad/s) these fields ask for,
-    /// the indicator's pressures read in `units`; `None` where none is
+    /// the indicator's pressures read in `units`, with the slider's
+    /// coefficient of friction `friction` in its guides (the request's
+    /// `friction`, which its statics take too); `None` where none is
     /// given ([`GivenEngine::is_given`]).
     ///
     /// Errors: the indicator file unreadable or larger than
-    /// [`MAX_DATA_BYTES`], and what [`EngineParts::build`] refuses.
+    /// [`MAX_DATA_BYTES`], gravity in a length unit g cannot be given in,
+    /// and what [`EngineParts::build`] refuses (a self-locking μ).
     pub fn engine(
         &self,
         mechanism: SliderCrank,
         omega: f64,
         units: &Units,
+        friction: Option<f64>,
     ) -> Result<Option<Engine>> {
         if !self.is_given() {
             return Ok(None);
@@ -133,8 +142,36 @@ impl GivenEngine {
                     what,
                     units: Some(units),
                 }),
+            gravity: self.gravity(units)?,
+            friction,
         };
         Ok(Some(parts.build(mechanism, omega)?))
+    }
+
+    /// Refuses gravity given without a mass to weigh (`analyze`, whose
+    /// engine is only the one given; `table dynamics` weighs its example
+    /// mass).
+    pub fn refuse_gravity_alone(&self) -> Result<()> {
+        if self.gravity.is_some() && self.mass.is_none() && self.rod_mass.is_none() {
+            return Err(Error::refused(
+                Input::Options,
+                Wording::default()
+                    .option(Field::Gravity)
+                    .then(" weighs the engine's masses: give ")
+                    .option(Field::Mass)
+                    .then(" or ")
+                    .option(Field::RodMass)
+                    .then(" with it"),
+            ));
+        }
+        Ok(())
+    }
+
+    /// Gravity's acceleration in `units`' length unit, `None` without.
+    ///
+    /// Errors: a length unit g cannot be given in ([`Gravity::in_unit`]).
+    pub fn gravity(&self, units: &Units) -> Result<Option<[f64; 2]>> {
+        self.gravity.map(|g| g.in_unit(units.length())).transpose()
     }
 }
 

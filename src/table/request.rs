@@ -54,7 +54,8 @@ pub struct TableRequest<'a> {
     pub omega: Option<f64>,
     /// The crank torque of `forces`.
     pub torque: Option<f64>,
-    /// The slider's coefficient of friction of `forces`.
+    /// The slider's coefficient of friction of `forces` (Ng's by default)
+    /// and of `dynamics` (0 by default).
     pub friction: Option<f64>,
     /// The decimals printed (at most 17).
     pub decimals: Option<usize>,
@@ -224,7 +225,7 @@ impl<'a> TableRequest<'a> {
 
     /// The fields given, each with whether it is given, in the order the
     /// command line's help lists them.
-    fn given(&self) -> [(Field, bool); 31] {
+    fn given(&self) -> [(Field, bool); 32] {
         [
             (Field::Ratio, self.n.is_some()),
             (Field::Crank, self.crank.is_some()),
@@ -244,6 +245,7 @@ impl<'a> TableRequest<'a> {
             (Field::GasForce, self.engine.gas_force.is_some()),
             (Field::Indicator, self.engine.indicator.is_some()),
             (Field::Bore, self.engine.bore.is_some()),
+            (Field::Gravity, self.engine.gravity.is_some()),
             (Field::Phase, self.phases.is_some()),
             (Field::Fluctuation, self.fluctuation.is_some()),
             (Field::Flywheel, self.flywheel.is_some()),
@@ -439,11 +441,18 @@ impl<'a> TableRequest<'a> {
     }
 
     /// The engine of `dynamics`: the masses and gas force given, or the
-    /// example mass.
+    /// example mass; weighed by the gravity given, with the friction given.
     fn engine(&self, m: SliderCrank, omega: f64, units: &Units) -> Result<Engine> {
-        match self.engine.engine(m, omega, units)? {
-            Some(engine) => Ok(engine),
-            None => Engine::new(m, EXAMPLE_MASS, omega),
+        if let Some(engine) = self.engine.engine(m, omega, units, self.friction)? {
+            return Ok(engine);
+        }
+        let mut engine = Engine::new(m, EXAMPLE_MASS, omega)?;
+        if let Some(g) = self.engine.gravity(units)? {
+            engine = engine.with_gravity(g)?;
+        }
+        match self.friction {
+            Some(mu) => engine.with_friction(mu),
+            None => Ok(engine),
         }
     }
 
@@ -612,6 +621,8 @@ fn uses(name: TableName) -> &'static [Field] {
             F::GasForce,
             F::Indicator,
             F::Bore,
+            F::Gravity,
+            F::Friction,
             F::Phase,
             F::Fluctuation,
             F::Flywheel,

@@ -19,6 +19,7 @@ mod coriolis;
 mod curves;
 mod dynamics;
 mod dynamics_figures;
+mod dynamics_guide;
 mod flag_free;
 mod fuzz_twins;
 mod ignored;

@@ -213,7 +213,7 @@ fn bad_input_exits_non_zero_with_one_clear_line() {
         // Friction acts only with a load on the crank.
         (
             &["analyze", "--friction", "0.2"],
-            "required arguments were not provided: --torque",
+            "--friction applies with a torque (the statics) or the engine's dynamics",
         ),
         (&["table", "obliquity", "--n", "0.5"], "n = l/r > 1"),
         (&["check", "--samples", "0"], "samples"),

@@ -64,11 +64,12 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(20.0, page.height() - 40.0),
         &[
             format!(
-                "The turning-moment figure’s engine: *r* = {} {u}, *l* = {} {u}{}, *m* = {} {mass_u}, {} rpm (ω = {} rad/s). Δ*E* = {} {t}, from θ = {}° (least) to {}° (most).",
+                "The turning-moment figure’s engine: *r* = {} {u}, *l* = {} {u}{}, *m* = {} {mass_u}, {} rpm (ω = {} rad/s){}. Δ*E* = {} {t}, from θ = {}° (least) to {}° (most).",
                 short(ctx.mechanism.crank()), short(ctx.mechanism.rod()),
                 ctx.offset_clause(),
                 short(ctx.options.mass.unwrap_or(crate::dynamics::EXAMPLE_MASS)),
                 short(ctx.rpm()), sig(w),
+                super::turning::guides_note(ctx),
                 sig(fly.fluctuation), short(tm.min_energy_deg), short(tm.max_energy_deg),
             ),
             format!(

@@ -631,7 +631,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let r = rod.rod();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u}{}; the gas force as the turning-moment figure’s. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, the dashed curve’s angles primed (90°′), quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the load jumps, a dotted line.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u}{}; the gas force as the turning-moment figure’s{}. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, the dashed curve’s angles primed (90°′), quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the load jumps, a dotted line.",
             short(m.crank()),
             short(m.rod()),
             ctx.offset_clause(),
@@ -641,6 +641,7 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             sig(r.map_or(0.0, RodMass::cg)),
             sig(r.map_or(0.0, RodMass::gyration)),
             rod_said(ctx),
+            super::turning::guides_note(ctx),
             short(bar),
         ),
         format!(

@@ -30,8 +30,40 @@ const STEP: f64 = 1e-6;
 /// (the one asked for, the example's by default) and the gas force
 /// [`gas`] gives.
 pub(crate) fn engine(ctx: &Ctx) -> Result<Engine> {
-    let mass = ctx.options.mass.unwrap_or(EXAMPLE_MASS);
-    Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(gas(ctx)?)
+    let o = ctx.options;
+    let mass = o.mass.unwrap_or(EXAMPLE_MASS);
+    let mut engine = Engine::new(ctx.mechanism, mass, ctx.omega)?.with_gas(gas(ctx)?)?;
+    if let Some(g) = o.gravity {
+        engine = engine.with_gravity(g.in_unit(ctx.unit())?)?;
+    }
+    match o.friction {
+        Some(mu) => engine.with_friction(mu),
+        None => Ok(engine),
+    }
+}
+
+/// What the notes add for gravity and the guides' friction, given:
+/// "; a vertical engine, the cylinder above the crank (g = 32.174
+/// ft/s²); the guides' friction μ = 0.1"; empty without either.
+pub(super) fn guides_note(ctx: &Ctx) -> String {
+    let o = ctx.options;
+    let mut note = String::new();
+    if let Some(g) = o.gravity {
+        let size = g.in_unit(ctx.unit()).map_or(0.0, |v| v[0].abs());
+        note.push_str(&format!(
+            "; a vertical engine, the cylinder {} the crank (*g* = {} {}/s²)",
+            match g {
+                crate::dynamics::Gravity::TowardsCrank => "above",
+                crate::dynamics::Gravity::AwayFromCrank => "below",
+            },
+            sig(size),
+            ctx.unit()
+        ));
+    }
+    if let Some(mu) = o.friction.filter(|mu| *mu > 0.0) {
+        note.push_str(&format!("; the guides’ friction μ = {}", short(mu)));
+    }
+    note
 }
 
 /// The gas force on the piston: the constant asked for, else the
@@ -568,7 +600,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 3] {
     let t_unit = ctx.units.torque();
     [
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}{}.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}{}{}.",
             short(m.crank()),
             short(m.rod()),
             // An offset engine says so (its stroke, and so its work, differ).
@@ -576,6 +608,7 @@ fn notes(ctx: &Ctx, tm: &TurningMoment) -> [String; 3] {
             short(ctx.rpm()),
             short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
             gas_note(ctx),
+            guides_note(ctx),
             u = ctx.unit(),
             mass_u = ctx.units.mass()
         ),
