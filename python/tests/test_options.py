@@ -206,3 +206,69 @@ def test_an_analyze_keyword_does_as_its_flag(
     assert got == json.loads(cli.stdout(args))
     if case["outcome"] == "default":
         assert got == json.loads(sc._core.analyze(**analyze_keywords(given)))
+
+
+with open(REPO / "tests/options/animate.csv", newline="", encoding="utf-8") as _f:
+    ANIMATE_CASES: List[Dict[str, str]] = list(csv.DictReader(_f))
+
+#: The keywords of :func:`slider_crank.animate` that are not options of
+#: the table: the figure, and where and in which format the animation
+#: goes (``--out``).
+ANIMATE_PLACES = {"name", "out", "html"}
+
+
+def animate_keywords(flags: List[str]) -> Dict[str, Any]:
+    """The keywords of the flags ``--flag=value`` (and the switches)."""
+    out: Dict[str, Any] = {}
+    for f in flags:
+        flag, _, text = f.partition("=")
+        case = {"flag": flag, "keyword": flag[2:].replace("-", "_"), "value": text}
+        if flag == "--frames":
+            out["frames"] = int(text)
+        elif flag == "--period":
+            out["period"] = float(text)
+        elif flag == "--projector":
+            out["projector"] = True
+        elif flag in ("--mirror", "--no-mirror"):
+            out["mirror"] = flag == "--mirror"
+        else:
+            out[case["keyword"]] = value(case)
+    return out
+
+
+def test_every_keyword_of_animate_is_in_the_table() -> None:
+    named = set(inspect.signature(sc.animate).parameters) - ANIMATE_PLACES
+    assert named == {c["keyword"] for c in ANIMATE_CASES}
+    for case in ANIMATE_CASES:
+        assert case["keyword"] == case["flag"][2:].replace("-", "_"), case
+
+
+def test_animate_s_defaults_are_the_command_line_s() -> None:
+    # The package's defaults are the library's (the command line's help
+    # states them): 72 frames, 4 s, no projector.
+    given = inspect.signature(sc.animate).parameters
+    assert given["frames"].default == sc._core.DEFAULT_FRAMES == 72
+    assert given["period"].default == sc._core.DEFAULT_PERIOD == 4.0
+    assert given["projector"].default is False
+
+
+@pytest.mark.parametrize(
+    "case", ANIMATE_CASES,
+    ids=lambda c: f"{c['figure']} {c['with'][:20]} {flag(c)}",
+)
+def test_an_animate_keyword_does_as_its_flag(cli: Cli, case: Dict[str, str]) -> None:
+    name, given = case["figure"], case["with"].split()
+    arg = "--projector" if case["flag"] == "--projector" else flag(case)
+    flags = [*given, arg]
+    options = animate_keywords(flags)
+    args = ["animate", name, "--out=-", *flags]
+    if case["outcome"] == "refused":
+        message = keywords(cli.error(args))
+        with pytest.raises(ValueError) as caught:
+            sc.animate(name, **options)
+        assert str(caught.value) in message, (str(caught.value), message)
+        return
+    text = sc.animate(name, **options)
+    assert text == cli.stdout(args)
+    if case["outcome"] == "default":
+        assert text == sc.animate(name, **animate_keywords(given))

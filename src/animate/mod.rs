@@ -14,16 +14,19 @@
 //! shown in turn by SMIL, as Chromium and Firefox play it) or as an HTML
 //! page with a slider for the crank angle and a play button
 //! ([`Animation::to_html`]); both are self-contained, and
-//! [`AnimationFormat`] tells them by a file's extension.
+//! [`AnimationFormat`] tells them by a file's extension. Every front end
+//! asks for one by an [`AnimateRequest`], checked there.
 
 mod format;
 mod frames;
 #[cfg(feature = "html")]
 mod page;
+mod request;
 mod svg;
 
 pub use format::AnimationFormat;
 pub use frames::{Frame, MAX_EVALUATIONS};
+pub use request::AnimateRequest;
 
 use crate::error::{Error, Field, Input, Result};
 use crate::figure::PageUnit;
