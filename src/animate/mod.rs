@@ -79,7 +79,7 @@ impl Animation {
     /// seconds.
     ///
     /// The view is held over every degree of the turn and the frames' own
-    /// angles (over the scene's [`Scene::held`] poses and the frames'
+    /// angles (over the scene's [`Scene::held_view`] poses and the frames'
     /// angles when it holds some), so a pose of the animation never
     /// reaches past the page and a different `count` keeps the same view.
     /// Errors when `count` is outside [`MIN_FRAMES`]..=[`MAX_FRAMES`],

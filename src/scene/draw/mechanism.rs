@@ -29,7 +29,7 @@ fn hanging(ctx: &LayerCtx, canvas: &Canvas) -> bool {
     let pose = ctx.main.pose();
     let v = canvas.transform().apply_vector(pose.b() - pose.c());
     let n = v.norm();
-    ctx.scene.held().is_none() && n > 0.0 && v.y / n > THROUGH_PEDESTAL.cos()
+    ctx.scene.held_view().is_none() && n > 0.0 && v.y / n > THROUGH_PEDESTAL.cos()
 }
 
 /// The stretches of the guide at height `y`, hatched towards `side`
@@ -123,7 +123,7 @@ const CLEAR_OF_CIRCLE: f64 = 6.0;
 /// so the guides do not change from frame to frame.
 fn guide_stretch(ctx: &LayerCtx, canvas: &Canvas, ghosts: &[Constructions]) -> Span {
     let whole = ctx.sizes.guides();
-    if ctx.scene.held().is_some() {
+    if ctx.scene.held_view().is_some() {
         return whole;
     }
     let m = ctx.scene.mechanism();
