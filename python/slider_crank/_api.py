@@ -1664,8 +1664,9 @@ def animate(
     name: str = "fig-66-kisch",
     out: Union[None, str, "os.PathLike[str]"] = None,
     *,
-    frames: int = 72,
-    period: float = 4.0,
+    frames: int = _core.DEFAULT_FRAMES,
+    period: float = _core.DEFAULT_PERIOD,
+    projector: bool = False,
     html: bool = False,
     crank: Optional[float] = None,
     rod: Optional[float] = None,
@@ -1689,11 +1690,13 @@ def animate(
     ``period`` seconds, as ``slider-crank animate NAME --out FILE`` makes
     it: a self-playing SVG, or an HTML page with a slider when ``out``
     ends in ``.html`` (or, without ``out``, ``html=True``). The options
-    are :func:`figure`'s (``angle``: the first frame's). Returns the text;
-    writes it to ``out`` too when given."""
+    are :func:`figure`'s (``angle``: the first frame's); ``projector``
+    leaves out the enlarged detail about the crank, for a page shown
+    large. Returns the text; writes it to ``out`` too when given."""
     options = _figure_options({**locals(), "data": None, "fit": None})
     path = os.fspath(out) if out is not None else ("animation.html" if html else "animation.svg")
-    text = _core.figure(name, animate=(int(frames), _real(period), path), **options)
+    asked = (int(frames), _real(period), bool(projector), path)
+    text = _core.figure(name, animate=asked, **options)
     if out is not None:
         _write((out, text))
     return text

@@ -37,6 +37,8 @@ __all__ = [
     "DYNAMICS_ROWS",
     "DEFAULT_MAX_CELLS",
     "DEFAULT_RPM",
+    "DEFAULT_FRAMES",
+    "DEFAULT_PERIOD",
     "BALANCE_ROWS",
     "DEFAULT_CRANKS",
     "DEFAULT_ORDER",
@@ -50,6 +52,8 @@ EXAMPLE_MASS: float
 DYNAMICS_ROWS: int
 DEFAULT_MAX_CELLS: int
 DEFAULT_RPM: float
+DEFAULT_FRAMES: int
+DEFAULT_PERIOD: float
 BALANCE_ROWS: int
 DEFAULT_CRANKS: list[float]
 DEFAULT_ORDER: int
@@ -118,7 +122,7 @@ def figure(
     width: Optional[str] = None,
     height: Optional[str] = None,
     title: Optional[str] = None,
-    animate: Optional[tuple[int, float, str]] = None,
+    animate: Optional[tuple[int, float, bool, str]] = None,
     tikz: Optional[bool] = None,
     coupler: Optional[tuple[float, float]] = None,
     rod_mass: Optional[float] = None,

@@ -14,7 +14,7 @@ use slider_crank::dynamics::{
     unbalanced_forces,
 };
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
-use slider_crank::table::dynamics_json;
+use slider_crank::table::{GivenEngine, dynamics_json};
 use slider_crank::{Angle, Input, SliderCrank, Unit};
 use std::path::PathBuf;
 
@@ -24,41 +24,6 @@ use std::path::PathBuf;
 #[pyclass(module = "slider_crank._core", name = "Engine", frozen)]
 pub struct PyEngine {
     engine: Engine,
-}
-
-/// The pairings clap enforces on the command line, in the keywords'
-/// names: the rod's three values together, an indicator diagram with its
-/// bore, and a constant gas force or an indicator diagram, not both.
-fn check_pairs(
-    rod: (Option<f64>, Option<f64>, Option<f64>),
-    gas_force: Option<f64>,
-    indicator: Option<&PathBuf>,
-    bore: Option<f64>,
-) -> PyResult<()> {
-    let missing: Vec<&str> = match rod {
-        (None, None, None) | (Some(_), Some(_), Some(_)) => vec![],
-        (m, cg, k) => [(m, "rod_mass"), (cg, "rod_cg"), (k, "rod_gyration")]
-            .iter()
-            .filter(|(v, _)| v.is_none())
-            .map(|&(_, name)| name)
-            .collect(),
-    };
-    let problem = if !missing.is_empty() {
-        Some(format!(
-            "the rod's mass is given by rod_mass, rod_cg and rod_gyration together: {} not given",
-            missing.join(" and ")
-        ))
-    } else if gas_force.is_some() && indicator.is_some() {
-        Some("gas_force cannot be used with indicator: give a constant gas force or an indicator diagram".into())
-    } else if indicator.is_some() != bore.is_some() {
-        Some(
-            "an indicator diagram needs the cylinder's bore: give indicator and bore together"
-                .into(),
-        )
-    } else {
-        None
-    };
-    problem.map_or(Ok(()), |p| Err(PyValueError::new_err(p)))
 }
 
 #[pymethods]
@@ -100,12 +65,18 @@ impl PyEngine {
             Some((u, f)) => Some(units(u, f)?),
             None => None,
         };
-        check_pairs(
-            (rod_mass, rod_cg, rod_gyration),
+        // The fields that go together, refused by the library's request
+        // (`table dynamics`' and `analyze`'s) in the keywords' names.
+        let given = GivenEngine {
+            mass,
+            rod_mass,
+            rod_cg,
+            rod_gyration,
             gas_force,
-            indicator.as_ref(),
+            indicator: indicator.clone(),
             bore,
-        )?;
+        };
+        given.refuse_pairs().map_err(py_err)?;
         let m = SliderCrank::new(crank, rod, offset).map_err(py_err)?;
         let text = match &indicator {
             Some(path) => Some((

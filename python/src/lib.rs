@@ -12,8 +12,8 @@
 use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
-use slider_crank::animate::{Animation, AnimationFormat};
-use slider_crank::catalogue::{FigureOptions, FigureRequest};
+use slider_crank::animate::{AnimateRequest, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
+use slider_crank::catalogue::FigureRequest;
 use slider_crank::construct::Graphical;
 use slider_crank::dynamics::Gravity;
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
@@ -29,7 +29,6 @@ use slider_crank::table::{
 };
 use slider_crank::{
     Angle, Error, Field, FigureName, Input, Kinematics, Layer, SliderCrank, Spelling, Unit, Units,
-    Wording,
 };
 use std::path::{Path, PathBuf};
 
@@ -348,7 +347,8 @@ fn fill_chunk(
 /// flags give (`None`: the flag not given), filled into the library's
 /// request ([`FigureRequest`]) and validated there; with `tikz` its TikZ
 /// picture instead (`tikz = true`: a standalone document, as
-/// `--tikz-standalone`).
+/// `--tikz-standalone`); with `animate = (frames, period, projector,
+/// path)` the animation `slider-crank animate` writes ([`animation`]).
 #[pyfunction]
 #[pyo3(signature = (name, crank=None, rod=None, offset=None, angle=None, rpm=None, omega=None,
     layers=None, style=None, font=None, data=None, fit=None, unit=None, force_unit=None,
@@ -381,7 +381,7 @@ fn figure(
     width: Option<&str>,
     height: Option<&str>,
     title: Option<&str>,
-    animate: Option<(usize, f64, String)>,
+    animate: Option<(usize, f64, bool, String)>,
     tikz: Option<bool>,
     coupler: Option<(f64, f64)>,
     rod_mass: Option<f64>,
@@ -428,10 +428,10 @@ fn figure(
     request.planes = planes.map(|p| p.values("plane")).transpose()?;
     request.gravity = gravity.map(parse).transpose()?;
     request.friction = friction;
-    let options = request.options(name).map_err(py_err)?;
-    if let Some((frames, period, path)) = animate {
-        return animation(py, name, &options, frames, period, &path);
+    if let Some(animate) = animate {
+        return animation(py, name, request, animate);
     }
+    let options = request.options(name).map_err(py_err)?;
     let text = |f: &slider_crank::Figure| match tikz {
         Some(standalone) => to_tikz(f, &TikzOptions::default().standalone(standalone)),
         None => to_svg(f),
@@ -447,41 +447,22 @@ fn figure(
     .map_err(py_err)
 }
 
-/// One revolution of the mechanism figure `name` drawn with `options`, as
+/// One revolution of the mechanism figure `name` the library's request
+/// ([`AnimateRequest`]) asks for, its figure's options `figure`, as
 /// `slider-crank animate --out PATH` writes it: a self-playing SVG or an
 /// HTML page with a slider, as `path`'s extension (.svg, .html) says.
 fn animation(
     py: Python<'_>,
     name: FigureName,
-    options: &FigureOptions,
-    frames: usize,
-    period: f64,
-    path: &str,
+    figure: FigureRequest,
+    (frames, period, projector, path): (usize, f64, bool, String),
 ) -> PyResult<String> {
-    let format = AnimationFormat::from_path(Path::new(path)).map_err(py_err)?;
-    if let Some(field) = [
-        (options.data.is_some(), Field::Data),
-        (options.fit.is_some(), Field::Fit),
-    ]
-    .iter()
-    .find_map(|&(given, field)| given.then_some(field))
-    {
-        return Err(py_err(Error::refused(
-            Input::Options,
-            Wording::from("animate takes no ")
-                .option(field)
-                .then(": the mechanism figures draw no measured data"),
-        )));
-    }
-    let scene = name.scene_with(options).map_err(py_err)?.ok_or_else(|| {
-        let names: Vec<&str> = FigureName::SCENES.iter().map(FigureName::name).collect();
-        PyValueError::new_err(format!(
-            "{} is a diagram: animate draws the mechanism figures, {}",
-            name.name(),
-            names.join(", ")
-        ))
-    })?;
-    py.detach(|| Animation::new(&scene, frames, period).map(|a| a.encode(format)))
+    let format = AnimationFormat::from_path(Path::new(&path)).map_err(py_err)?;
+    let mut request = AnimateRequest::default();
+    request.figure = figure;
+    (request.frames, request.period) = (Some(frames), Some(period));
+    request.projector = Some(projector);
+    py.detach(|| request.animation(name).map(|a| a.encode(format)))
         .map_err(py_err)
 }
 
@@ -721,6 +702,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(write_files, m)?)?;
     m.add("DEFAULT_MAX_CELLS", DEFAULT_MAX_CELLS)?;
     m.add("DEFAULT_RPM", DEFAULT_RPM)?;
+    m.add("DEFAULT_FRAMES", DEFAULT_FRAMES)?;
+    m.add("DEFAULT_PERIOD", DEFAULT_PERIOD)?;
     m.add_class::<dynamics::PyEngine>()?;
     m.add("EXAMPLE_MASS", slider_crank::dynamics::EXAMPLE_MASS)?;
     m.add("DYNAMICS_ROWS", dynamics::SWEEP_ROWS)?;

@@ -10,7 +10,8 @@ from __future__ import annotations
 import csv
 import inspect
 import json
-from typing import Any, Dict, List
+import re
+from typing import Any, Callable, Dict, List, Set
 
 import pytest
 
@@ -44,14 +45,13 @@ def flag(case: Dict[str, str]) -> str:
     """The case's value as the command line takes it."""
     if case["flag"] == "--mirror":
         return "--mirror" if case["value"] == "true" else "--no-mirror"
+    if case["flag"] == "--projector":
+        return "--projector"
     return f"{case['flag']}={case['value']}"
 
 
 def test_every_keyword_of_figure_is_in_the_table() -> None:
-    named = set(inspect.signature(sc.figure).parameters) - {"name"}
-    assert named == {c["keyword"] for c in CASES}
-    for case in CASES:
-        assert case["keyword"] == case["flag"][2:].replace("-", "_"), case
+    assert_keywords_are_the_tables(sc.figure, {"name"}, CASES)
 
 
 @pytest.mark.parametrize("case", CASES, ids=lambda c: f"{c['figure']} {flag(c)}")
@@ -91,21 +91,52 @@ def table_value(keyword: str, text: str) -> Any:
     return float(text)
 
 
-def table_keywords(flags: List[str]) -> Dict[str, Any]:
-    """The keywords of the flags ``--flag=value``."""
+def keywords_of(flags: List[str], value_of: Callable[[str, str], Any]) -> Dict[str, Any]:
+    """The keywords of the flags ``--flag=value`` (a switch ``--flag``
+    alone is its keyword's True, ``--no-flag`` its False), each value
+    ``value_of(keyword, text)``."""
     out = {}
     for f in flags:
-        flag, text = f.split("=", 1)
+        flag, given, text = f.partition("=")
         keyword = flag[2:].replace("-", "_")
-        out[keyword] = table_value(keyword, text)
+        if not given:
+            negated = keyword.startswith("no_")
+            out[keyword[3:] if negated else keyword] = not negated
+            continue
+        out[keyword] = value_of(keyword, text)
     return out
 
 
-def test_every_keyword_of_table_is_in_the_table() -> None:
-    named = set(inspect.signature(sc.table).parameters) - {"name"}
-    assert named == {c["keyword"] for c in TABLE_CASES}
-    for case in TABLE_CASES:
+def table_keywords(flags: List[str]) -> Dict[str, Any]:
+    """The keywords of ``table``'s flags."""
+    return keywords_of(flags, table_value)
+
+
+def assert_keywords_are_the_tables(function: Callable[..., Any], places: Set[str],
+                                   cases: List[Dict[str, str]]) -> None:
+    """Every keyword of ``function`` but ``places`` is an option of the
+    table ``cases``, and every option of the table a keyword of it, named
+    after its flag."""
+    named = set(inspect.signature(function).parameters) - places
+    assert named == {c["keyword"] for c in cases}
+    for case in cases:
         assert case["keyword"] == case["flag"][2:].replace("-", "_"), case
+
+
+def assert_refused_alike(message: str, caught: BaseException, value: str) -> None:
+    """The package's refusal is the command line's ``message`` in its
+    words; where the command line's parser refused the value (clap's
+    ``invalid value '…'``), the package names the value in the library's
+    words (or in the parser's own, which name the library's)."""
+    said = str(caught)
+    if "invalid value '" in message:
+        assert value in said or said in message, (said, message)
+    else:
+        assert said in message, (said, message)
+
+
+def test_every_keyword_of_table_is_in_the_table() -> None:
+    assert_keywords_are_the_tables(sc.table, {"name"}, TABLE_CASES)
 
 
 @pytest.mark.parametrize(
@@ -125,13 +156,7 @@ def test_a_table_keyword_does_as_its_flag(
         message = keywords(cli.error(args))
         with pytest.raises((ValueError, OSError)) as caught:
             sc.table(name, **options)
-        said = str(caught.value)
-        if "invalid value '" in message:
-            # The command line's parser refused it: the package names the
-            # value in the library's words.
-            assert case["value"] in said, (said, message)
-        else:
-            assert said in message, (said, message)
+        assert_refused_alike(message, caught.value, case["value"])
         return
     text = sc.table(name, **options)
     assert text == cli.stdout(args)
@@ -160,23 +185,15 @@ def analyze_value(keyword: str, text: str) -> Any:
 
 
 def analyze_keywords(flags: List[str]) -> Dict[str, Any]:
-    """The keywords of the flags ``--flag=value``."""
-    out = {}
-    for f in flags:
-        flag, text = f.split("=", 1)
-        keyword = flag[2:].replace("-", "_")
-        out[keyword] = analyze_value(keyword, text)
-    return out
+    """The keywords of ``analyze``'s flags."""
+    return keywords_of(flags, analyze_value)
 
 
 def test_every_keyword_of_analyze_is_in_the_table() -> None:
     # The package's classes fill the request of ``analyze`` through the
     # native ``analyze`` (SliderCrank.at, its curved_slot and inversion,
     # QuadricChain.at): every keyword of it is an option of the table.
-    named = set(inspect.signature(sc._core.analyze).parameters)
-    assert named == {c["keyword"] for c in ANALYZE_CASES}
-    for case in ANALYZE_CASES:
-        assert case["keyword"] == case["flag"][2:].replace("-", "_"), case
+    assert_keywords_are_the_tables(sc._core.analyze, set(), ANALYZE_CASES)
 
 
 @pytest.mark.parametrize(
@@ -194,15 +211,72 @@ def test_an_analyze_keyword_does_as_its_flag(
         message = keywords(cli.error(args))
         with pytest.raises((ValueError, OSError)) as caught:
             sc._core.analyze(**options)
-        said = str(caught.value)
-        if "invalid value '" in message:
-            # The command line's parser refused it: the package names the
-            # value in the library's words.
-            assert case["value"] in said, (said, message)
-        else:
-            assert said in message, (said, message)
+        assert_refused_alike(message, caught.value, case["value"])
         return
     got = json.loads(sc._core.analyze(**options))
     assert got == json.loads(cli.stdout(args))
     if case["outcome"] == "default":
         assert got == json.loads(sc._core.analyze(**analyze_keywords(given)))
+
+
+with open(REPO / "tests/options/animate.csv", newline="", encoding="utf-8") as _f:
+    ANIMATE_CASES: List[Dict[str, str]] = list(csv.DictReader(_f))
+
+#: The keywords of :func:`slider_crank.animate` that are not options of
+#: the table: the figure, and where and in which format the animation
+#: goes (``--out``).
+ANIMATE_PLACES = {"name", "out", "html"}
+
+
+def animate_value(keyword: str, text: str) -> Any:
+    """An option of ``animate`` as the keyword takes it: a figure's as
+    :func:`figure` takes it (:func:`value`)."""
+    if keyword == "frames":
+        return int(text)
+    if keyword == "period":
+        return float(text)
+    return value({"keyword": keyword, "value": text})
+
+
+def animate_keywords(flags: List[str]) -> Dict[str, Any]:
+    """The keywords of ``animate``'s flags."""
+    return keywords_of(flags, animate_value)
+
+
+def test_every_keyword_of_animate_is_in_the_table() -> None:
+    assert_keywords_are_the_tables(sc.animate, ANIMATE_PLACES, ANIMATE_CASES)
+
+
+def test_animate_s_defaults_are_the_command_line_s(cli: Cli) -> None:
+    # The defaults `animate --help` states are the package's keywords'.
+    help = cli.stdout(["animate", "--help"])
+    given = inspect.signature(sc.animate).parameters
+    for keyword, value_of in (("frames", int), ("period", float)):
+        stated = re.search(rf"--{keyword} <\w+>.*?\[default: ([^\]]+)\]", help, re.S)
+        assert stated is not None, keyword
+        assert given[keyword].default == value_of(stated.group(1)), keyword
+    assert given["frames"].default == sc._core.DEFAULT_FRAMES
+    assert given["period"].default == sc._core.DEFAULT_PERIOD
+    # A switch is off unless given.
+    assert given["projector"].default is False and "--no-projector" not in help
+
+
+@pytest.mark.parametrize(
+    "case", ANIMATE_CASES,
+    ids=lambda c: f"{c['figure']} {c['with'][:20]} {flag(c)}",
+)
+def test_an_animate_keyword_does_as_its_flag(cli: Cli, case: Dict[str, str]) -> None:
+    name, given = case["figure"], case["with"].split()
+    flags = [*given, flag(case)]
+    options = animate_keywords(flags)
+    args = ["animate", name, "--out=-", *flags]
+    if case["outcome"] == "refused":
+        message = keywords(cli.error(args))
+        with pytest.raises(ValueError) as caught:
+            sc.animate(name, **options)
+        assert_refused_alike(message, caught.value, case["value"])
+        return
+    text = sc.animate(name, **options)
+    assert text == cli.stdout(args)
+    if case["outcome"] == "default":
+        assert text == sc.animate(name, **animate_keywords(given))

@@ -101,7 +101,7 @@ pub(super) struct Survey {
 impl Series {
     /// The frames of `scene` at `angles` (at least one).
     pub fn new(scene: &Scene, angles: Vec<Angle>) -> Self {
-        let mut held: Vec<Angle> = match scene.held() {
+        let mut held: Vec<Angle> = match scene.held_view() {
             Some(poses) => poses.to_vec(),
             None => (0..360).map(|d| Angle::deg(f64::from(d))).collect(),
         };

@@ -14,16 +14,19 @@
 //! shown in turn by SMIL, as Chromium and Firefox play it) or as an HTML
 //! page with a slider for the crank angle and a play button
 //! ([`Animation::to_html`]); both are self-contained, and
-//! [`AnimationFormat`] tells them by a file's extension.
+//! [`AnimationFormat`] tells them by a file's extension. Every front end
+//! asks for one by an [`AnimateRequest`], checked there.
 
 mod format;
 mod frames;
 #[cfg(feature = "html")]
 mod page;
+mod request;
 mod svg;
 
 pub use format::AnimationFormat;
 pub use frames::{Frame, MAX_EVALUATIONS};
+pub use request::AnimateRequest;
 
 use crate::error::{Error, Field, Input, Result};
 use crate::figure::PageUnit;
@@ -76,7 +79,7 @@ impl Animation {
     /// seconds.
     ///
     /// The view is held over every degree of the turn and the frames' own
-    /// angles (over the scene's [`Scene::held`] poses and the frames'
+    /// angles (over the scene's [`Scene::held_view`] poses and the frames'
     /// angles when it holds some), so a pose of the animation never
     /// reaches past the page and a different `count` keeps the same view.
     /// Errors when `count` is outside [`MIN_FRAMES`]..=[`MAX_FRAMES`],

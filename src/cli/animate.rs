@@ -1,13 +1,13 @@
 //! `slider-crank animate NAME --out FILE`: one revolution of a mechanism
 //! figure, as a self-playing SVG or an HTML page with a slider.
 
-use super::figure::{FigureFlags, names_help, options};
+use super::figure::{FigureFlags, names_help, unread};
 use super::output::Stdout;
 use clap::Args;
-use slider_crank::animate::{self, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
+use slider_crank::animate::{AnimateRequest, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
 use slider_crank::catalogue::Group;
 use slider_crank::render::write_atomic_with;
-use slider_crank::{Error, FigureName, Input, Result};
+use slider_crank::{FigureName, Result};
 use std::io::{IsTerminal, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
@@ -19,10 +19,19 @@ use std::time::{Duration, Instant};
         "Crank angle in degrees of the first frame; the others follow at equal steps \
          counter-clockwise round the turn [default: the figure's]"
     )),
+    // The options of the diagrams, which are not animated: taken and
+    // refused (the mechanism figures use none of them), not listed.
     mut_arg("data", |a| a.hide(true)),
     mut_arg("fit", |a| a.hide(true)),
     mut_arg("bore", |a| a.hide(true)),
     mut_arg("gas_force", |a| a.hide(true)),
+    mut_arg("mass", |a| a.hide(true)),
+    mut_arg("fluctuation", |a| a.hide(true)),
+    mut_arg("rod_mass", |a| a.hide(true)),
+    mut_arg("rod_cg", |a| a.hide(true)),
+    mut_arg("rod_gyration", |a| a.hide(true)),
+    mut_arg("cranks", |a| a.hide(true)),
+    mut_arg("planes", |a| a.hide(true)),
     mut_arg("gravity", |a| a.hide(true)),
     mut_arg("friction", |a| a.hide(true))
 )]
@@ -59,6 +68,18 @@ pub struct AnimateArgs {
     pub out: PathBuf,
 }
 
+/// The request the flags make ([`AnimateRequest`]): the figure's as
+/// `figure` makes it, the frames, the period and the projector's view.
+fn request(args: &AnimateArgs) -> Result<AnimateRequest> {
+    let mut r = AnimateRequest::default();
+    r.figure = unread(&args.flags)?;
+    // The request refuses data whatever the file holds: it is not read.
+    r.figure.data = args.flags.data.as_ref().map(|_| String::new());
+    (r.frames, r.period) = (Some(args.frames), Some(args.period));
+    r.projector = Some(args.projector);
+    Ok(r)
+}
+
 /// Runs the subcommand: the file written, progress on standard error when
 /// the frames take more than a moment.
 pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
@@ -68,56 +89,19 @@ pub fn run(args: &AnimateArgs, out: &mut Stdout) -> Result<()> {
     } else {
         AnimationFormat::from_path(&args.out)?
     };
-    if args.flags.data.is_some() || args.flags.fit.is_some() {
-        let flag = if args.flags.data.is_some() {
-            "--data"
-        } else {
-            "--fit"
-        };
-        return Err(Error::invalid(
-            Input::Options,
-            format!("animate takes no {flag}: the mechanism figures draw no measured data"),
-        ));
-    }
-    let scene = options(&args.flags, args.name)
-        .and_then(|o| args.name.scene_with(&o))?
-        .ok_or_else(|| not_animated(args.name))?;
-    let scene = if args.projector {
-        scene.without_detail()
-    } else {
-        scene
-    };
+    let request = request(args)?;
+    let name = args.name;
     let mut progress = Progress::new();
-    let request = (args.frames, args.period);
     let mut show = |done, total| progress.show(done, total);
     let written = if to_stdout {
-        animate::write(&scene, request, format, &mut |s| out.text(s), &mut show)
+        request.write(name, format, &mut |s| out.text(s), &mut show)
     } else {
         write_atomic_with(&args.out, |sink| {
-            animate::write(
-                &scene,
-                request,
-                format,
-                &mut |s| sink(s.as_bytes()),
-                &mut show,
-            )
+            request.write(name, format, &mut |s| sink(s.as_bytes()), &mut show)
         })
     };
     progress.finish();
     written
-}
-
-/// The refusal of a diagram, naming the figures that are animated.
-fn not_animated(name: FigureName) -> Error {
-    let names: Vec<&str> = FigureName::SCENES.iter().map(FigureName::name).collect();
-    Error::invalid(
-        Input::FigureName,
-        format!(
-            "{} is a diagram: animate draws the mechanism figures, {}",
-            name.name(),
-            names.join(", ")
-        ),
-    )
 }
 
 /// The progress line on standard error, once drawing has taken more than

@@ -331,13 +331,25 @@ pub fn emit(
 }
 
 /// The options the flags ask for: the library's request filled from
-/// them (the data file read), validated there.
+/// them ([`request_of`]), validated there.
 pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
-    let layers = args.layers.as_deref().map(Layer::parse_list).transpose()?;
-    let data = match &args.data {
+    request_of(args)?.options(name)
+}
+
+/// The library's request the flags fill (the data file read, the lists
+/// and the layers parsed).
+pub fn request_of(args: &FigureFlags) -> Result<FigureRequest> {
+    let mut request = unread(args)?;
+    request.data = match &args.data {
         Some(path) => Some(read_text(path, MAX_DATA_BYTES, Input::Data)?),
         None => None,
     };
+    Ok(request)
+}
+
+/// [`request_of`] without the data file: `data` not given.
+pub fn unread(args: &FigureFlags) -> Result<FigureRequest> {
+    let layers = args.layers.as_deref().map(Layer::parse_list).transpose()?;
     let mut request = FigureRequest::default();
     request.crank = args.crank;
     request.rod = args.rod;
@@ -348,7 +360,6 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     request.layers = layers;
     request.style = args.style;
     request.font = args.font;
-    request.data = data;
     request.fit = args.fit;
     request.unit = args.units.length.clone();
     request.force_unit = args.units.force.clone();
@@ -377,7 +388,7 @@ pub fn options(args: &FigureFlags, name: FigureName) -> Result<FigureOptions> {
     request.height = args.height;
     request.title = args.title.clone();
     request.coupler = args.coupler.map(|c| (c.0, c.1));
-    request.options(name)
+    Ok(request)
 }
 
 /// Runs the subcommand: SVG on standard output, or the file written.

@@ -39,6 +39,15 @@ impl Frame {
         self.max
     }
 
+    /// Grows the frame to hold `p`; a point with a coordinate that is not
+    /// finite is left out (the frame unchanged).
+    pub fn include(&mut self, p: Point) {
+        if p.x.is_finite() && p.y.is_finite() {
+            self.min = self.min.inf(&p);
+            self.max = self.max.sup(&p);
+        }
+    }
+
     /// Whether `p` lies in the frame (boundary included).
     pub fn contains(&self, p: Point) -> bool {
         p.x >= self.min.x && p.x <= self.max.x && p.y >= self.min.y && p.y <= self.max.y
@@ -133,6 +142,17 @@ mod tests {
     }
 
     use super::*;
+
+    #[test]
+    fn a_frame_grows_to_hold_finite_points_only() {
+        let mut f = Frame::new(Point::new(-1.0, -1.0), Point::new(1.0, 1.0));
+        f.include(Point::new(3.0, -2.0));
+        f.include(Point::new(f64::NAN, 50.0));
+        f.include(Point::new(-f64::INFINITY, 0.0));
+        f.include(Point::new(0.0, 0.5));
+        assert_eq!(f.min(), Point::new(-1.0, -2.0));
+        assert_eq!(f.max(), Point::new(3.0, 1.0));
+    }
 
     #[test]
     fn line_is_clipped_to_frame_edges() {

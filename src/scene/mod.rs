@@ -320,7 +320,7 @@ pub struct Scene {
     coupler: CouplerPoint,
     tolerance: f64,
     /// The poses the page map is held over ([`Scene::with_held_view`]).
-    held: Option<Vec<Angle>>,
+    held_view: Option<Vec<Angle>>,
     /// A world frame the view holds besides what the layers draw
     /// ([`Scene::with_view_holding`]).
     holding: Option<crate::geom::Frame>,
@@ -371,7 +371,7 @@ impl Scene {
             torque: 1.0,
             coupler: CouplerPoint::new(0.5).expect("0.5 is in [0, 1]"),
             tolerance: DEFAULT_TOLERANCE,
-            held: None,
+            held_view: None,
             holding: None,
             subject: None,
             extremes: Vec::new(),
@@ -527,7 +527,7 @@ impl Scene {
     /// figure's [`Evaluations`], which count what it draws. Building the
     /// figure fails when `angles` is empty or holds more than 3960 angles.
     pub fn with_held_view(mut self, angles: Vec<Angle>) -> Self {
-        self.held = Some(angles);
+        self.held_view = Some(angles);
         self
     }
 
@@ -605,14 +605,14 @@ impl Scene {
 
     /// The poses the page map is held over ([`Scene::with_held_view`]); `None`
     /// when the figure is fitted to its own pose.
-    pub fn held(&self) -> Option<&[Angle]> {
-        self.held.as_deref()
+    pub fn held_view(&self) -> Option<&[Angle]> {
+        self.held_view.as_deref()
     }
 
     /// The figures of the scene at each of `angles`, in order: its first
     /// pose moved to each angle (the ghosts of an overlay stay where they
     /// are), all laid out once in a view held over the scene's
-    /// [`Scene::held`] poses, or over the whole revolution (every degree)
+    /// [`Scene::held_view`] poses, or over the whole revolution (every degree)
     /// when it holds none. Every frame then has the same page-from-world
     /// map in each panel and the same page size (see
     /// [`Scene::with_held_view`] for D at infinity, the detail and poses
@@ -652,13 +652,13 @@ impl Scene {
                 reason: format!("a series has 1 to {} frames", valid::MAX_HELD),
             });
         }
-        let range = match &self.held {
+        let range = match &self.held_view {
             Some(held) => held.clone(),
             None => revolution(),
         };
         let held = self.clone().with_held_view(range);
         valid::scene(&held)?;
-        let layout = draw::held(&held, held.held().unwrap_or_default());
+        let layout = draw::held_view(&held, held.held_view().unwrap_or_default());
         Ok(angles.iter().map(move |a| {
             let mut frame = held.clone();
             // The first pose moved; the number of poses is unchanged, so
@@ -757,17 +757,17 @@ impl Scene {
     }
 
     /// Builds the figure and says what was computed for it: fitted to
-    /// its own pose, or in the view held over [`Scene::held`]. The one
+    /// its own pose, or in the view held over [`Scene::held_view`]. The one
     /// check of the settings: the speed non-zero and within
     /// [`crate::analytic::kinematics::MAX_OMEGA`], the torque finite, the tolerance in
     /// [1e-6, 10], 1 to 64 poses, 1 to 3960 held poses.
     pub fn build(&self) -> Result<(Figure, Evaluations)> {
         valid::scene(self)?;
-        let layout = match self.held.as_deref() {
-            Some(a) => draw::held(self, a),
+        let layout = match self.held_view.as_deref() {
+            Some(a) => draw::held_view(self, a),
             None => draw::own(self),
         };
-        if self.held.is_none() && self.page.fits_width() {
+        if self.held_view.is_none() && self.page.fits_width() {
             let used = draw::used_width(self, &layout).max(LEAST_FITTED_WIDTH);
             if used < FIT_WIDTH_BELOW * self.page.width() {
                 let mut narrow = self.clone();

@@ -20,7 +20,7 @@ pub(crate) fn scene(scene: &Scene) -> Result<()> {
     torque(scene.torque)?;
     tolerance(scene.tolerance)?;
     angles(&scene.angles)?;
-    if let Some(held) = &scene.held {
+    if let Some(held) = &scene.held_view {
         held_view(held)?;
     }
     Ok(())

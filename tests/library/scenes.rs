@@ -244,11 +244,11 @@ fn a_series_is_the_scene_held_over_its_range_at_each_angle() {
     use slider_crank::Angle;
     let degrees = |d: &[f64]| -> Vec<Angle> { d.iter().map(|d| Angle::deg(*d)).collect() };
     let scene = FigureName::Fig65Klein.scene().unwrap();
-    assert_eq!(scene.held(), None);
+    assert_eq!(scene.held_view(), None);
     // Held over a quarter turn: each frame is that scene at its angle.
     let range = degrees(&[0.0, 30.0, 60.0, 90.0]);
     let held = scene.clone().with_held_view(range.clone());
-    assert_eq!(held.held(), Some(range.as_slice()));
+    assert_eq!(held.held_view(), Some(range.as_slice()));
     let angles = degrees(&[15.0, 90.0]);
     let frames = held.frames(&angles).unwrap();
     for (a, frame) in angles.iter().zip(&frames) {

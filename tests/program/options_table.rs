@@ -7,18 +7,29 @@
 //! command line and the scene file are held to it; the table holds every
 //! option `figure --help` lists. The options of `table` and of `analyze`
 //! have tables of their own, `tests/options/table.csv` and
-//! `tests/options/analyze.csv`, held the same way.
+//! `tests/options/analyze.csv`, and of `animate`,
+//! `tests/options/animate.csv`, held the same way.
 
 use crate::command::run;
-use std::collections::BTreeSet;
+use std::collections::{BTreeMap, BTreeSet};
 
-/// One case of the table.
-struct Case {
-    figure: String,
-    flag: String,
-    scene: String,
-    value: String,
-    outcome: String,
+/// One case of a table: each field by its column's name.
+struct Case(BTreeMap<String, String>);
+
+impl Case {
+    /// The field of the column `name`.
+    fn get(&self, name: &str) -> &str {
+        self.0.get(name).map_or("", String::as_str)
+    }
+
+    /// The options of the column `with`: flags, each `--flag=value`,
+    /// apart by spaces.
+    fn with(&self) -> Vec<String> {
+        self.get("with")
+            .split_whitespace()
+            .map(String::from)
+            .collect()
+    }
 }
 
 /// The fields of a CSV line: commas split them, a field in double quotes
@@ -41,35 +52,40 @@ fn fields(line: &str) -> Vec<String> {
     out
 }
 
-/// The table's cases.
-fn cases() -> Vec<Case> {
-    let text = std::fs::read_to_string("tests/options/figure.csv").unwrap();
+/// The cases of `tests/options/{csv}`, whose header is `header`.
+fn cases_of(csv: &str, header: &str) -> Vec<Case> {
+    let text = std::fs::read_to_string(format!("tests/options/{csv}")).unwrap();
     let mut lines = text.lines();
-    assert_eq!(
-        lines.next(),
-        Some("figure,flag,keyword,scene,value,outcome")
-    );
+    assert_eq!(lines.next(), Some(header), "{csv}");
+    let columns: Vec<&str> = header.split(',').collect();
     lines
         .map(|line| {
             let f = fields(line);
-            assert_eq!(f.len(), 6, "{line}");
-            Case {
-                figure: f[0].clone(),
-                flag: f[1].clone(),
-                scene: f[3].clone(),
-                value: f[4].clone(),
-                outcome: f[5].clone(),
-            }
+            assert_eq!(f.len(), columns.len(), "{csv}: {line}");
+            Case(columns.iter().map(|c| c.to_string()).zip(f).collect())
         })
+        .collect()
+}
+
+/// The cases of `figure`'s table.
+fn cases() -> Vec<Case> {
+    cases_of("figure.csv", "figure,flag,keyword,scene,value,outcome")
+}
+
+/// Each case's flag and outcome.
+fn flags_and_outcomes(cases: &[Case]) -> Vec<(&str, &str)> {
+    (cases.iter())
+        .map(|c| (c.get("flag"), c.get("outcome")))
         .collect()
 }
 
 /// The command-line argument of a case: `--flag=value`, a switch as
 /// itself (`--mirror`, or `--no-mirror` for false).
 fn argument(case: &Case) -> String {
-    match (case.flag.as_str(), case.value.as_str()) {
+    match (case.get("flag"), case.get("value")) {
         ("--mirror", "true") => "--mirror".into(),
         ("--mirror", _) => "--no-mirror".into(),
+        ("--projector", _) => "--projector".into(),
         (flag, value) => format!("{flag}={value}"),
     }
 }
@@ -134,10 +150,7 @@ fn every_option_of_figure_is_in_the_table() {
         "--no-mirror",
     ];
     let all = cases();
-    let cases: Vec<(&str, &str)> = (all.iter())
-        .map(|c| (c.flag.as_str(), c.outcome.as_str()))
-        .collect();
-    every_flag_has_cases(&listed, &output, &cases, "figure.csv");
+    every_flag_has_cases(&listed, &output, &flags_and_outcomes(&all), "figure.csv");
     assert!(
         listed.contains("--gas-force") && listed.len() > 20,
         "{listed:?}"
@@ -149,20 +162,17 @@ fn the_command_line_and_scene_files_do_as_the_table_says() {
     let dir = std::env::temp_dir().join(format!("sc-options-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     for (i, case) in cases().iter().enumerate() {
-        let own = run(&["figure", &case.figure]).stdout;
+        let figure = case.get("figure");
+        let own = run(&["figure", figure]).stdout;
         let arg = argument(case);
-        let out = run(&["figure", &case.figure, &arg]);
-        holds(
-            &case.outcome,
-            &out,
-            &own,
-            &format!("figure {} {arg}", case.figure),
-        );
-        if case.scene.is_empty() {
+        let out = run(&["figure", figure, &arg]);
+        let outcome = case.get("outcome");
+        holds(outcome, &out, &own, &format!("figure {figure} {arg}"));
+        if case.get("scene").is_empty() {
             continue;
         }
-        let head = format!("figure = \"{}\"\n", case.figure);
-        let key = case.scene.replace('|', "\n").replace("{}", &case.value);
+        let head = format!("figure = \"{figure}\"\n");
+        let key = (case.get("scene").replace('|', "\n")).replace("{}", case.get("value"));
         let (file, plain) = (
             dir.join(format!("{i}.toml")),
             dir.join(format!("{i}-own.toml")),
@@ -171,42 +181,47 @@ fn the_command_line_and_scene_files_do_as_the_table_says() {
         std::fs::write(&plain, &head).unwrap();
         let own = run(&["scene", plain.to_str().unwrap()]).stdout;
         let out = run(&["scene", file.to_str().unwrap()]);
-        holds(&case.outcome, &out, &own, &format!("scene file {key:?}"));
+        holds(outcome, &out, &own, &format!("scene file {key:?}"));
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
-/// One case of `tests/options/table.csv`: a table, an option (its flag,
-/// its Python keyword) given with the options `with` (flags, each
-/// `--flag=value`, apart by spaces) and a value, and what becomes of it:
-/// the table's own text (`default`: the same bytes as without the
-/// option), a table (`ok`) or a refusal.
-struct TableCase {
-    table: String,
-    flag: String,
-    with: Vec<String>,
-    value: String,
-    outcome: String,
+/// Runs each case of a table of options given `with` others
+/// (`tests/options/table.csv`, `analyze.csv`, `animate.csv`): the
+/// command `head` (the case's `figure` or `table` after it, if the
+/// table has the column) with the case's `with`, then with its option
+/// too, held to the case's outcome; what a case's command prints
+/// (unless refused) must satisfy `printed`.
+fn the_command_line_does_as(cases: &[Case], head: &[&str], printed: fn(&[u8]) -> bool) {
+    for case in cases {
+        let mut args: Vec<String> = head.iter().map(|s| s.to_string()).collect();
+        for column in ["figure", "table"] {
+            if !case.get(column).is_empty() {
+                args.insert(1, case.get(column).to_string());
+            }
+        }
+        args.extend(case.with());
+        let plain: Vec<&str> = args.iter().map(String::as_str).collect();
+        let own = run(&plain).stdout;
+        let arg = argument(case);
+        args.push(arg.clone());
+        let given: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = run(&given);
+        let how = format!("{} {arg}", args[..args.len() - 1].join(" "));
+        holds(case.get("outcome"), &out, &own, &how);
+        assert!(
+            case.get("outcome") == "refused" || printed(&out.stdout),
+            "{how}"
+        );
+    }
 }
 
-/// The cases of `tests/options/table.csv`.
-fn table_cases() -> Vec<TableCase> {
-    let text = std::fs::read_to_string("tests/options/table.csv").unwrap();
-    let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("table,flag,keyword,with,value,outcome"));
-    lines
-        .map(|line| {
-            let f = fields(line);
-            assert_eq!(f.len(), 6, "{line}");
-            TableCase {
-                table: f[0].clone(),
-                flag: f[1].clone(),
-                with: f[3].split_whitespace().map(String::from).collect(),
-                value: f[4].clone(),
-                outcome: f[5].clone(),
-            }
-        })
-        .collect()
+/// The cases of `tests/options/table.csv`: a table, an option (its flag,
+/// its Python keyword) given with the options `with` and a value, and
+/// what becomes of it: the table's own text (`default`: the same bytes as
+/// without the option), a table (`ok`) or a refusal.
+fn table_cases() -> Vec<Case> {
+    cases_of("table.csv", "table,flag,keyword,with,value,outcome")
 }
 
 #[test]
@@ -215,10 +230,12 @@ fn every_option_of_table_is_in_its_table() {
     // `--angle` is `--angles`' other spelling.
     let not_options = ["--help", "--angle"];
     let all = table_cases();
-    let cases: Vec<(&str, &str)> = (all.iter())
-        .map(|c| (c.flag.as_str(), c.outcome.as_str()))
-        .collect();
-    every_flag_has_cases(&listed, &not_options, &cases, "table.csv");
+    every_flag_has_cases(
+        &listed,
+        &not_options,
+        &flags_and_outcomes(&all),
+        "table.csv",
+    );
     assert!(
         listed.contains("--max-cells") && listed.len() > 30,
         "{listed:?}"
@@ -227,49 +244,15 @@ fn every_option_of_table_is_in_its_table() {
 
 #[test]
 fn the_command_line_does_as_the_table_of_table_says() {
-    for case in table_cases() {
-        let mut args = vec!["table".to_string(), case.table.clone()];
-        args.extend(case.with.iter().cloned());
-        let plain: Vec<&str> = args.iter().map(String::as_str).collect();
-        let own = run(&plain).stdout;
-        let arg = format!("{}={}", case.flag, case.value);
-        args.push(arg.clone());
-        let given: Vec<&str> = args.iter().map(String::as_str).collect();
-        let out = run(&given);
-        let how = format!("table {} {} {arg}", case.table, case.with.join(" "));
-        holds(&case.outcome, &out, &own, &how);
-        assert!(case.outcome == "refused" || !out.stdout.is_empty(), "{how}");
-    }
+    the_command_line_does_as(&table_cases(), &["table"], |out| !out.is_empty());
 }
 
-/// One case of `tests/options/analyze.csv`: an option (its flag, its
+/// The cases of `tests/options/analyze.csv`: an option (its flag, its
 /// Python keyword) given with the options `with` and a value, and what
 /// becomes of it: the command's own JSON (`default`), an analysis (`ok`)
 /// or a refusal.
-struct AnalyzeCase {
-    flag: String,
-    with: Vec<String>,
-    value: String,
-    outcome: String,
-}
-
-/// The cases of `tests/options/analyze.csv`.
-fn analyze_cases() -> Vec<AnalyzeCase> {
-    let text = std::fs::read_to_string("tests/options/analyze.csv").unwrap();
-    let mut lines = text.lines();
-    assert_eq!(lines.next(), Some("flag,keyword,with,value,outcome"));
-    lines
-        .map(|line| {
-            let f = fields(line);
-            assert_eq!(f.len(), 5, "{line}");
-            AnalyzeCase {
-                flag: f[0].clone(),
-                with: f[2].split_whitespace().map(String::from).collect(),
-                value: f[3].clone(),
-                outcome: f[4].clone(),
-            }
-        })
-        .collect()
+fn analyze_cases() -> Vec<Case> {
+    cases_of("analyze.csv", "flag,keyword,with,value,outcome")
 }
 
 #[test]
@@ -279,10 +262,12 @@ fn every_option_of_analyze_is_in_its_table() {
     // is written (the Python package's is always the JSON object).
     let not_options = ["--help", "--angles", "--json"];
     let all = analyze_cases();
-    let cases: Vec<(&str, &str)> = (all.iter())
-        .map(|c| (c.flag.as_str(), c.outcome.as_str()))
-        .collect();
-    every_flag_has_cases(&listed, &not_options, &cases, "analyze.csv");
+    every_flag_has_cases(
+        &listed,
+        &not_options,
+        &flags_and_outcomes(&all),
+        "analyze.csv",
+    );
     assert!(
         listed.contains("--slot-radius") && listed.len() > 20,
         "{listed:?}"
@@ -291,20 +276,40 @@ fn every_option_of_analyze_is_in_its_table() {
 
 #[test]
 fn the_command_line_does_as_the_table_of_analyze_says() {
-    for case in analyze_cases() {
-        let mut args = vec!["analyze".to_string(), "--json".to_string()];
-        args.extend(case.with.iter().cloned());
-        let plain: Vec<&str> = args.iter().map(String::as_str).collect();
-        let own = run(&plain).stdout;
-        let arg = format!("{}={}", case.flag, case.value);
-        args.push(arg.clone());
-        let given: Vec<&str> = args.iter().map(String::as_str).collect();
-        let out = run(&given);
-        let how = format!("analyze {} {arg}", case.with.join(" "));
-        holds(&case.outcome, &out, &own, &how);
-        assert!(
-            case.outcome == "refused" || out.stdout.starts_with(b"{"),
-            "{how}"
-        );
-    }
+    the_command_line_does_as(&analyze_cases(), &["analyze", "--json"], |out| {
+        out.starts_with(b"{")
+    });
+}
+
+/// The cases of `tests/options/animate.csv`: a mechanism figure, an
+/// option (its flag, its Python keyword) given with the options `with`
+/// and a value, and what becomes of it: the animation's own SVG
+/// (`default`), an animation (`ok`) or a refusal.
+fn animate_cases() -> Vec<Case> {
+    cases_of("animate.csv", "figure,flag,keyword,with,value,outcome")
+}
+
+#[test]
+fn every_option_of_animate_is_in_its_table() {
+    let listed = help_flags("animate");
+    // `--out` where the animation goes; `--no-mirror` is `--mirror`'s
+    // false; the switches `--mirror` and `--projector` take every figure
+    // the command draws, so no value of theirs is refused.
+    let not_refused = ["--mirror", "--projector"];
+    let all = animate_cases();
+    let mut cases = flags_and_outcomes(&all);
+    cases.extend(not_refused.iter().map(|&f| (f, "refused")));
+    let not_options = ["--help", "--out", "--no-mirror"];
+    every_flag_has_cases(&listed, &not_options, &cases, "animate.csv");
+    assert!(
+        listed.contains("--frames") && listed.contains("--coupler") && listed.len() > 15,
+        "{listed:?}"
+    );
+}
+
+#[test]
+fn the_command_line_does_as_the_table_of_animate_says() {
+    the_command_line_does_as(&animate_cases(), &["animate", "--out=-"], |out| {
+        out.starts_with(b"<svg")
+    });
 }

@@ -11,20 +11,6 @@ use crate::scene::Layer;
 /// at the frame edge.
 pub(crate) const FAR_POINT: f64 = 0.8;
 
-struct Bounds {
-    min: Point,
-    max: Point,
-}
-
-impl Bounds {
-    fn add(&mut self, p: Point) {
-        if p.x.is_finite() && p.y.is_finite() {
-            self.min = self.min.inf(&p);
-            self.max = self.max.sup(&p);
-        }
-    }
-}
-
 /// Whether D is near enough to be fitted.
 pub(crate) fn d_is_near(ctx: &LayerCtx) -> Option<Point> {
     let m = ctx.scene.mechanism();
@@ -61,18 +47,15 @@ fn frame_with(ctx: &LayerCtx, with_d: bool) -> Frame {
     let (r, e) = (m.crank(), m.offset());
     let s = &ctx.sizes;
     let (g0, g1) = s.guides();
-    let mut b = Bounds {
-        min: Point::new(-r, -r),
-        max: Point::new(r, r),
-    };
-    b.add(Point::new(g0.min(-r), e - s.block_half_height));
-    b.add(Point::new(g1, e + s.block_half_height));
+    let mut b = Frame::new(Point::new(-r, -r), Point::new(r, r));
+    b.include(Point::new(g0.min(-r), e - s.block_half_height));
+    b.include(Point::new(g1, e + s.block_half_height));
     add_e_and_d(&mut b, ctx, with_d);
     let scene = ctx.scene;
     if scene.has(Layer::Klein) {
         let k = super::acceleration::klein_points(ctx);
-        b.add(k.f());
-        b.add(k.g());
+        b.include(k.f());
+        b.include(k.g());
     }
     if scene.has(Layer::Kisch) {
         add_kisch(&mut b, ctx);
@@ -80,14 +63,14 @@ fn frame_with(ctx: &LayerCtx, with_d: bool) -> Frame {
     if scene.has(Layer::Ritterhaus) {
         let r = ctx.main.ritterhaus();
         for p in [r.k(), r.points().f(), r.points().g()] {
-            b.add(p);
+            b.include(p);
         }
     }
     if scene.has(Layer::Bennett)
         && let Some(bn) = ctx.main.bennett()
     {
         for p in [bn.l(), bn.k(), bn.points().f(), bn.points().g()] {
-            b.add(p);
+            b.include(p);
         }
     }
     add_arrows(&mut b, ctx);
@@ -104,26 +87,26 @@ fn frame_with(ctx: &LayerCtx, with_d: bool) -> Frame {
             .page_scale
             .map_or(0.0, |s| super::polygons::CAPTION_ROOM / s);
         for p in super::polygons::place(ctx).points() {
-            b.add(p);
-            b.add(p - Vector::new(0.0, below));
+            b.include(p);
+            b.include(p - Vector::new(0.0, below));
         }
         // Q, which may stand off the rod's line.
-        b.add(scene.coupler().point(ctx.main.pose()));
+        b.include(scene.coupler().point(ctx.main.pose()));
     }
     if let Some(f) = scene.holding() {
-        b.add(f.min());
-        b.add(f.max());
+        b.include(f.min());
+        b.include(f.max());
     }
-    Frame::new(b.min, b.max)
+    b
 }
 
 /// Adds E where a layer draws it, and, if `with_d`, D where a layer draws
 /// it and it is near (see [`d_is_near`]).
-fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx, with_d: bool) {
+fn add_e_and_d(b: &mut Frame, ctx: &LayerCtx, with_d: bool) {
     let scene = ctx.scene;
     let wants_e = (scene.layers().iter()).any(|l| l.draws_e() || *l == Layer::VirtualCentres);
     if wants_e {
-        b.add(ctx.main.e().e());
+        b.include(ctx.main.e().e());
     }
     if with_d
         && [
@@ -136,17 +119,17 @@ fn add_e_and_d(b: &mut Bounds, ctx: &LayerCtx, with_d: bool) {
         .any(|l| scene.has(*l))
         && let Some(d) = d_is_near(ctx)
     {
-        b.add(d);
+        b.include(d);
     }
 }
 
 /// Adds Kisch's construction: F, G, the half of the circle on AB away
 /// from C, and the arc BE about B from E to H (none where there is no H).
-fn add_kisch(b: &mut Bounds, ctx: &LayerCtx) {
+fn add_kisch(b: &mut Frame, ctx: &LayerCtx) {
     let pose = ctx.main.pose();
     let k = ctx.main.kisch();
-    b.add(k.points().f());
-    b.add(k.points().g());
+    b.include(k.points().f());
+    b.include(k.points().g());
     // The half of the circle on AB away from C (where H is).
     let c = Kisch::semicircle(pose);
     let ab = pose.b() - pose.a();
@@ -154,7 +137,7 @@ fn add_kisch(b: &mut Bounds, ctx: &LayerCtx) {
     let u = ab / ab.norm();
     for k in 0..=24 {
         let t = std::f64::consts::PI * k as f64 / 24.0;
-        b.add(c.centre + (u * t.cos() + n * t.sin()) * c.radius);
+        b.include(c.centre + (u * t.cos() + n * t.sin()) * c.radius);
     }
     // The arc BE about B, from E to H.
     if let Some(h) = k.h() {
@@ -171,7 +154,7 @@ fn add_kisch(b: &mut Bounds, ctx: &LayerCtx) {
         {
             for k in 0..=24 {
                 let t = start + sweep * k as f64 / 24.0;
-                b.add(centre + Vector::new(t.cos(), t.sin()) * radius);
+                b.include(centre + Vector::new(t.cos(), t.sin()) * radius);
             }
         }
     }
@@ -179,7 +162,7 @@ fn add_kisch(b: &mut Bounds, ctx: &LayerCtx) {
 
 /// Adds the reach of the force and velocity arrows, drawn to page
 /// lengths: nothing until the page scale is known.
-fn add_arrows(b: &mut Bounds, ctx: &LayerCtx) {
+fn add_arrows(b: &mut Frame, ctx: &LayerCtx) {
     let Some(scale) = ctx.sizes.page_scale else {
         return;
     };
@@ -193,32 +176,32 @@ fn add_arrows(b: &mut Bounds, ctx: &LayerCtx) {
         arrows.extend(super::motion::velocities(ctx, &world));
     }
     for p in arrows.iter().flat_map(|a| a.reach(&world)) {
-        b.add(p);
+        b.include(p);
     }
 }
 
 /// Adds the polar velocity curve every 5° of crank angle, and its mirror
 /// through the centre (the return stroke's loop), where it is defined.
-fn add_polar(b: &mut Bounds, ctx: &LayerCtx) {
+fn add_polar(b: &mut Frame, ctx: &LayerCtx) {
     let m = ctx.scene.mechanism();
     let polar = crate::diagram::Locus::new(*m, crate::diagram::LocusKind::PolarVelocity);
     for k in 0..72 {
         if let Some((p, _)) = crate::diagram::Curve::eval(&polar, 5.0 * k as f64) {
             // The return stroke's loop is set off on the crank itself.
-            b.add(p);
-            b.add(Point::origin() - p.coords);
+            b.include(p);
+            b.include(Point::origin() - p.coords);
         }
     }
 }
 
 /// Adds the coupler curve every 5° of crank angle.
-fn add_coupler(b: &mut Bounds, ctx: &LayerCtx) {
+fn add_coupler(b: &mut Frame, ctx: &LayerCtx) {
     let m = ctx.scene.mechanism();
     let q = ctx.scene.coupler();
     for k in 0..72 {
         // cannot fail: multiples of 5° below 360° are finite.
         #[allow(clippy::expect_used)]
         let a = crate::angle::Angle::from_degrees(5.0 * k as f64).expect("finite");
-        b.add(q.point(&m.pose(a)));
+        b.include(q.point(&m.pose(a)));
     }
 }

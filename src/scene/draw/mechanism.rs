@@ -32,7 +32,7 @@ fn foot(ctx: &LayerCtx, canvas: &Canvas) -> Foot {
     let pose = ctx.main.pose();
     let v = canvas.transform().apply_vector(pose.b() - pose.c());
     let n = v.norm();
-    if ctx.scene.held().is_some() || n == 0.0 || v.y / n <= THROUGH_PEDESTAL.cos() {
+    if ctx.scene.held_view().is_some() || n == 0.0 || v.y / n <= THROUGH_PEDESTAL.cos() {
         return Foot::Below;
     }
     [Foot::Above, Foot::Left, Foot::Right]
@@ -205,7 +205,7 @@ const CLEAR_OF_CIRCLE: f64 = 6.0;
 /// so the guides do not change from frame to frame.
 fn guide_stretch(ctx: &LayerCtx, canvas: &Canvas, ghosts: &[Constructions]) -> Span {
     let whole = ctx.sizes.guides();
-    if ctx.scene.held().is_some() {
+    if ctx.scene.held_view().is_some() {
         return whole;
     }
     let m = ctx.scene.mechanism();

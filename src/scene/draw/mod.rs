@@ -259,7 +259,7 @@ const NOTE_GAP: f64 = 8.0;
 
 /// Where a figure's drawing goes on the page: the block's sizes, the room
 /// kept for the notes, the main view's panel and map, and the detail.
-/// Fitted to one pose ([`fit`]) or held over several ([`held`]).
+/// Fitted to one pose ([`fit`]) or held over several ([`held_view`]).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub(crate) struct Layout {
     sizes: Sizes,
@@ -460,7 +460,7 @@ fn with_detail(
 // cannot fail: one context per pose, and the held poses are at least one
 // (`valid::held_view` refuses an empty list).
 #[allow(clippy::indexing_slicing)]
-pub(crate) fn held(scene: &Scene, angles: &[Angle]) -> Layout {
+pub(crate) fn held_view(scene: &Scene, angles: &[Angle]) -> Layout {
     let m = scene.mechanism();
     let poses: Vec<Constructions> = angles
         .iter()
@@ -539,7 +539,7 @@ fn own_poses(scene: &Scene) -> Vec<Constructions> {
 }
 
 /// Builds the figure of `scene` in `layout`: the one fitted to its own
-/// pose ([`own`]) or one held over several ([`held`]).
+/// pose ([`own`]) or one held over several ([`held_view`]).
 pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let poses = own_poses(scene);
     // cannot fail: a scene is drawn only once `valid::scene` has passed it,
