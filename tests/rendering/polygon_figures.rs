@@ -529,3 +529,49 @@ fn omega_s_arc_keeps_off_the_rod_and_the_block() {
         "ω's arc {nearest:.1} units from the rod or block"
     );
 }
+
+/// The gap between the glyph boxes of the texts `a` and `b` (0 where
+/// they meet or overlap).
+fn letters_gap(plate: &Plate, a: &str, b: &str) -> f64 {
+    let rect = |id: &str| {
+        (plate.texts.iter())
+            .find(|t| t.id == id)
+            .unwrap_or_else(|| panic!("no {id}"))
+            .rect
+    };
+    let (p, q) = (rect(a), rect(b));
+    let dx = (q.x0 - p.x1).max(p.x0 - q.x1).max(0.0);
+    let dy = (q.y0 - p.y1).max(p.y0 - q.y1).max(0.0);
+    dx.hypot(dy)
+}
+
+#[test]
+fn the_letters_of_two_near_images_stand_apart() {
+    // The eighth review: inversion 3's default set n and c′, 14 units
+    // apart, each above its dot, their letters 2 units apart, read as
+    // one word "n c′". Each is now set on the side away from the other:
+    // at least half an em (8.5 units at 17) between their glyphs.
+    let name = FigureName::CoriolisInversion3;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let plate = Plate::read(&svg);
+    let gap = letters_gap(&plate, "label-n", "label-c2");
+    assert!(gap >= 8.5, "n and c′ {gap:.1} apart");
+}
+
+#[test]
+fn a_coriolis_detail_holds_the_point_its_polygon_closes_at() {
+    // The eighth review: inversion 3 at l = 26 r near 90° drew the
+    // Coriolis component o′k 80 units long in a ×250 to ×2500 detail,
+    // and a′_d, folded onto o′ in the polygon ("a′_d, o′"), stood off the
+    // detail's edge: the polygon did not close anywhere a reader could
+    // see. The detail now holds a′_d, lettered, with o′ and k.
+    for deg in [85.0, 89.0, 89.9, 90.3, 91.0, 95.0] {
+        let svg = svg(FigureName::CoriolisInversion3, 26.0, 0.0, deg);
+        for id in ["detail-label-o2", "detail-label-k", "detail-label-ad2"] {
+            assert!(
+                svg.contains(&format!("id=\"{id}\"")),
+                "l = 26 r, {deg}°: no {id} in the detail"
+            );
+        }
+    }
+}

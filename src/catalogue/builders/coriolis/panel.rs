@@ -27,6 +27,16 @@ pub(super) const SUBJECT_LEAST: f64 = 40.0;
 /// The most the subject is drawn in its detail, page units.
 pub(super) const SUBJECT_MOST: f64 = 200.0;
 
+/// The least the subject is drawn in a detail that holds its crowd whole,
+/// page units: a plain side (longer than [`MIN_ARROW`]) with a letter at
+/// either end. Where the crowd is whole only with the subject shorter,
+/// the detail draws the subject at twice [`SUBJECT_LEAST`] and the far
+/// points run off its edge; where it fits at this or more, the crowd is
+/// whole (inversion 3 at l = 26 r, 89.9°: a′_d, 13 times the Coriolis
+/// component from k and folded onto o′ in the polygon, stood off a ×2500
+/// detail that drew o′k 80 units; whole, o′k is 16 units).
+pub(super) const SUBJECT_WHOLE: f64 = 16.0;
+
 /// Room kept in a detail between its frame and the points it enlarges,
 /// page units (their letters).
 pub(super) const DETAIL_PAD: f64 = 40.0;
@@ -170,8 +180,8 @@ pub(super) fn polygon_plot(
 /// drawn shorter than [`SUBJECT_LEAST`] at `scale` (page units per unit):
 /// the points crowding about the subject (within [`CROWD`] of it or of
 /// each other) whole where they fit the detail's `area` with the subject
-/// at most [`SUBJECT_MOST`], else the subject at twice [`SUBJECT_LEAST`]
-/// about its middle (the long sides run off the detail's edge); the
+/// at most [`SUBJECT_MOST`] and at least [`SUBJECT_WHOLE`], else the
+/// subject at twice [`SUBJECT_LEAST`] about its middle (the long sides run off the detail's edge); the
 /// magnification a round step. `None` where the subject reads in the
 /// polygon itself.
 pub(super) fn window(
@@ -200,9 +210,12 @@ pub(super) fn window(
     let size = hi - lo;
     let room = (area.0 - 2.0 * DETAIL_PAD, area.1 - 2.0 * DETAIL_PAD);
     let fit = (room.0 / size.x).min(room.1 / size.y);
-    let wanted = fit
-        .min(SUBJECT_MOST / length)
-        .max(2.0 * SUBJECT_LEAST / length);
+    let whole = fit.min(SUBJECT_MOST / length);
+    let wanted = if whole * length >= SUBJECT_WHOLE {
+        whole
+    } else {
+        2.0 * SUBJECT_LEAST / length
+    };
     let magnification = round_below(wanted / scale, &STEPS).max(1.0);
     let detail = magnification * scale;
     let centre = if detail <= fit * (1.0 + 1e-9) {
