@@ -420,7 +420,14 @@ impl Canvas {
     }
 
     /// A point's marker (`point-{name}`) and its letter (`label-{name}`).
-    fn mark(&mut self, name: &str, p: Point, marker: Marker, letter: RichText, toward: Option<Vector>) {
+    fn mark(
+        &mut self,
+        name: &str,
+        p: Point,
+        marker: Marker,
+        letter: RichText,
+        toward: Option<Vector>,
+    ) {
         let key = format!("point-{name}");
         match marker {
             Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),

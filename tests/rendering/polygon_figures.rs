@@ -575,3 +575,112 @@ fn a_coriolis_detail_holds_the_point_its_polygon_closes_at() {
         }
     }
 }
+
+/// The sides of a figure's polygons as drawn: each `velocity-…` and
+/// `acceleration-…` element's line (its first path's two ends, page
+/// units), by id; the detail's (`detail-…`) with them where `detail`.
+fn sides(svg: &str, detail: bool) -> Vec<(String, (f64, f64), (f64, f64))> {
+    let mut out = Vec::new();
+    for (at, _) in svg.match_indices(" id=\"") {
+        let rest = &svg[at + 5..];
+        let id = &rest[..rest.find('"').unwrap()];
+        let bare = id.strip_prefix("detail-").filter(|_| detail).unwrap_or(id);
+        let Some(tail) =
+            (bare.strip_prefix("velocity-")).or_else(|| bare.strip_prefix("acceleration-"))
+        else {
+            continue;
+        };
+        // The sides, not the polygon's bar or the image line a′b′ (the
+        // acceleration image, drawn over the sides by design).
+        if tail.contains("polygon") || tail.contains('-') || tail == "a2b2" {
+            continue;
+        }
+        // A plain side is a `<path>` whose d comes before its id; an
+        // arrow a `<g>` whose first path is its line.
+        let start = svg[..at].rfind('<').unwrap();
+        let tag = &svg[start..at + 5 + rest.find('>').unwrap()];
+        let own = if tag.starts_with("<g") { rest } else { tag };
+        let Some(d) = own.find(" d=\"").map(|i| &own[i + 4..]) else {
+            continue;
+        };
+        let n: Vec<f64> = d[..d.find('"').unwrap()]
+            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        if n.len() >= 4 {
+            out.push((
+                id.to_string(),
+                (n[0], n[1]),
+                (n[n.len() - 2], n[n.len() - 1]),
+            ));
+        }
+    }
+    out
+}
+
+/// The page length of the side `a` that runs within 3 units of the side
+/// `b` (at less than 6° to it): where two sides read as one line.
+fn run_over(a: ((f64, f64), (f64, f64)), b: ((f64, f64), (f64, f64))) -> f64 {
+    let (u, v) = (
+        (b.1.0 - b.0.0, b.1.1 - b.0.1),
+        (a.1.0 - a.0.0, a.1.1 - a.0.1),
+    );
+    let (lu, lv) = (u.0.hypot(u.1), v.0.hypot(v.1));
+    if lu == 0.0 || lv == 0.0 || (u.0 * v.1 - u.1 * v.0).abs() > 0.1 * lu * lv {
+        return 0.0;
+    }
+    let near = (0..100)
+        .map(|i| (i as f64 + 0.5) / 100.0)
+        .filter(|t| {
+            let p = (a.0.0 + v.0 * t, a.0.1 + v.1 * t);
+            to_segment(p, b.0, b.1) < 3.0
+        })
+        .count();
+    near as f64 / 100.0 * lv
+}
+
+#[test]
+fn sides_on_one_line_are_drawn_side_by_side() {
+    // The eighth review: inversion 2 at l = 1.06 r, 180° drew o′n, a′_d k
+    // and o′a′_d on one line, read as one line with a head at either end;
+    // near 90° at a long rod the engine's acceleration polygon folded,
+    // xa′ back over c′b′ (l = 46.9 r, 89.99°). No side of a polygon now
+    // runs within 3 units of another over more than 10 units.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion2, 1.06, 180.0),
+        (FigureName::CoriolisInversion3, 1.06, 180.0),
+        (FigureName::CoriolisInversion2, 40.0, 89.0),
+        (FigureName::CoriolisInversion3, 26.0, 89.9),
+        (FigureName::VelocityAccelerationPolygons, 46.9, 89.99),
+        (FigureName::VelocityAccelerationPolygons, 25.0, 270.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let all = sides(&svg, true);
+        assert!(all.len() >= 5, "{name:?}: {} sides read", all.len());
+        for (i, a) in all.iter().enumerate() {
+            for b in all.iter().skip(i + 1) {
+                let over = run_over((a.1, a.2), (b.1, b.2));
+                assert!(
+                    over <= 10.0,
+                    "{name:?} l = {rod} r, {deg}°: {} runs {over:.0} units over {}",
+                    a.0,
+                    b.0
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_sliding_acceleration_too_short_to_draw_is_said_so() {
+    // The eighth review: at a long rod the sliding acceleration was
+    // invisible (inversion 2 at l = 40 r, 89°: 12 ft/s² against a
+    // Coriolis component of 1370, under two units in the ×20 detail), k
+    // on a′_d with no word of it. The notes say how long it is drawn.
+    let svg = svg(FigureName::CoriolisInversion2, 40.0, 0.0, 89.0);
+    let text = svg.replace(|c: char| c == '\n', " ");
+    assert!(text.contains("too short to be seen"), "no word of it");
+    let name = FigureName::CoriolisInversion2;
+    let default = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    assert!(!default.contains("too short to be seen"));
+}

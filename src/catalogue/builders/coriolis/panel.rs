@@ -10,7 +10,7 @@ use crate::chain::Inversion;
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Hue, PageRect, RIGHT_ANGLE, RichText, Role, Shape};
-use crate::geom::{Frame, Point, Vector};
+use crate::geom::{Frame, Point, Vector, side_by_side};
 use crate::scene::{COINCIDE, Canvas, Marker};
 use serde_json::Value;
 
@@ -140,8 +140,9 @@ pub(super) fn polygon_plot(
         s = s.quiet(w.frame);
     }
     let old = s.set_hue(Some(drawn.hue));
-    for (id, role, from, to) in &drawn.arrows {
-        let (from, to) = (Point::from(*from), Point::from(*to));
+    let offsets = apart(&s, &drawn.arrows);
+    for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
+        let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         let length = s.page((to - from).norm());
         if length >= HEADLESS {
             s.push(*id, *role, Shape::Arrow { from, to });
@@ -306,8 +307,9 @@ pub(super) fn detail_plot(
     let map = *plot.map();
     let mut s = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
     let old = s.set_hue(Some(drawn.hue));
-    for (id, role, from, to) in &drawn.arrows {
-        let (from, to) = (Point::from(*from), Point::from(*to));
+    let offsets = apart(&s, &drawn.arrows);
+    for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
+        let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         // The piece inside the frame; a side that misses it has none (the
         // clip of its line lies beyond its ends).
         let inside = s.frame().clip_segment(from, to).filter(|(p, q)| {
@@ -331,6 +333,41 @@ pub(super) fn detail_plot(
         plot.push(item);
     }
     Ok(plot)
+}
+
+/// Page distance between two sides of a polygon that lie on one line,
+/// drawn side by side: more than a head's width (6.4 units), so that
+/// each arrow and its head are seen on their own.
+pub(super) const SIDE_APART: f64 = 7.0;
+
+/// The offsets (world) that set each of a polygon's `arrows` drawn on
+/// `s` clear of those it would run over ([`side_by_side`]): the result
+/// (the heavier side) keeps its place, the others are set beside it in
+/// their order (inversion 2 at l = 1.06 r, 180°: o′n, a′_d k and o′a′_d
+/// on one line read as one line with a head at either end).
+fn apart(s: &Canvas, arrows: &[Arrow]) -> Vec<Vector> {
+    let order: Vec<usize> = (0..arrows.len())
+        .filter(|i| arrows[*i].1 == Role::Result)
+        .chain((0..arrows.len()).filter(|i| arrows[*i].1 != Role::Result))
+        .collect();
+    let sides: Vec<(Point, Point)> = (order.iter())
+        .map(|i| {
+            let (_, _, from, to) = arrows[*i];
+            let drawn = s.page((to - from).norm()) >= MIN_ARROW;
+            (
+                Point::from(from),
+                Point::from(if drawn { to } else { from }),
+            )
+        })
+        .collect();
+    let mut offsets = vec![Vector::zeros(); arrows.len()];
+    for (i, o) in order
+        .into_iter()
+        .zip(side_by_side(&sides, s.world(SIDE_APART)))
+    {
+        offsets[i] = o;
+    }
+    offsets
 }
 
 /// The right angles of the acceleration polygon: d's tangential component
