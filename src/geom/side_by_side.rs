@@ -11,13 +11,13 @@ use super::{Point, Vector, cross, point_segment_distance};
 const PARALLEL: f64 = 0.1;
 
 /// The offset of each of `sides` (from, to; in the order drawn) that
-/// sets it clear of the sides before it which it would run over: a side
-/// near an earlier one, nearly parallel to it and sharing with it
-/// more than a few `apart` of its run ([`runs_over`]), is moved `apart`
-/// across (to its left,
-/// else its right, else twice that), zero for the others and for sides
-/// shorter than `apart` (they are not drawn long enough to run over
-/// anything). Degenerate: zero-length sides get no offset, and an empty
+/// sets it clear of the sides before it which it would run over, or
+/// which would run over it (a short side under a long one): a side
+/// near an earlier one, nearly parallel to it and sharing with it more
+/// than a few `apart` of its run ([`runs_over`]), is moved `apart` across
+/// (to its left, else its right, else twice that), zero for the others
+/// and for sides shorter than `apart` (they are not drawn long enough to
+/// run over anything). Degenerate: zero-length sides get no offset, and an empty
 /// list gives an empty one.
 pub(crate) fn side_by_side(sides: &[(Point, Point)], apart: f64) -> Vec<Vector> {
     let mut drawn: Vec<(Point, Point)> = Vec::new();
@@ -33,7 +33,10 @@ pub(crate) fn side_by_side(sides: &[(Point, Point)], apart: f64) -> Vec<Vector> 
         let offset = [0.0, 1.0, -1.0, 2.0, -2.0]
             .map(|k| across * (k * apart))
             .into_iter()
-            .find(|o| !(drawn.iter()).any(|s| runs_over((from + o, to + o), *s, apart)))
+            .find(|o| {
+                let moved = (from + o, to + o);
+                !(drawn.iter()).any(|s| runs_over(moved, *s, apart) || runs_over(*s, moved, apart))
+            })
             .unwrap_or_else(Vector::zeros);
         drawn.push((from + offset, to + offset));
         offsets.push(offset);
@@ -43,9 +46,9 @@ pub(crate) fn side_by_side(sides: &[(Point, Point)], apart: f64) -> Vec<Vector> 
 
 /// Whether the side `a` runs over the side `b`: at less than [`PARALLEL`]
 /// to it and within `apart` of it over more than [`SHARED`] times `apart`
-/// of its run (measured at [`SAMPLES`] points along it): two sides at a
-/// narrow angle read as one line where they run that close, as much as
-/// two on one line (near 90° at a long rod xa′ runs back over c′b′ at
+/// of its run, or over more than [`HIDDEN`] of it (measured at
+/// [`SAMPLES`] points along it): two sides at a narrow angle read as one
+/// line where they run that close, as much as two on one line (near 90° at a long rod xa′ runs back over c′b′ at
 /// 1.2°, its end 4 units off c′).
 fn runs_over(a: (Point, Point), b: (Point, Point), apart: f64) -> bool {
     let (u, v) = (b.1 - b.0, a.1 - a.0);
@@ -56,8 +59,14 @@ fn runs_over(a: (Point, Point), b: (Point, Point), apart: f64) -> bool {
         .map(|i| a.0 + v * ((i as f64 + 0.5) / SAMPLES as f64))
         .filter(|p| point_segment_distance(*p, b.0, b.1) < 0.999 * apart)
         .count();
-    near as f64 / SAMPLES as f64 * v.norm() > SHARED * apart
+    let shared = near as f64 / SAMPLES as f64 * v.norm();
+    shared > (SHARED * apart).min(HIDDEN * v.norm())
 }
+
+/// The share of a side that, run over, hides it however short the run:
+/// inversion 2's o′a′ at l = 1.06 r, 180°, 14 units along the heavier
+/// o′a′_d, was not to be seen.
+const HIDDEN: f64 = 0.5;
 
 /// The points along a side at which its distance to another is taken.
 const SAMPLES: usize = 32;

@@ -393,11 +393,13 @@ impl Canvas {
             groups.push(group);
         }
         let lettered: Vec<Point> = (groups.iter())
-            .map(|g| g[0].2)
+            .filter_map(|g| g.first().map(|p| p.2))
             .filter(|p| shown(self, *p))
             .collect();
         for group in &groups {
-            let first = group[0];
+            let Some(&first) = group.first() else {
+                continue;
+            };
             let joint: Vec<&str> = group.iter().map(|g| g.1).collect();
             let text = RichText::parse(&joint.join(", "));
             let toward = self.away(first.2, &lettered);

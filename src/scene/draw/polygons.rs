@@ -378,7 +378,7 @@ fn apart<const N: usize>(canvas: &Canvas, sides: [(Point, Point); N]) -> [Vector
         (p, if seen { q } else { p })
     });
     let offsets = side_by_side(&drawn, canvas.world(SIDE_APART));
-    std::array::from_fn(|i| offsets[i])
+    std::array::from_fn(|i| offsets.get(i).copied().unwrap_or_else(Vector::zeros))
 }
 
 fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {

@@ -346,26 +346,28 @@ pub(super) const SIDE_APART: f64 = 7.0;
 /// their order (inversion 2 at l = 1.06 r, 180°: o′n, a′_d k and o′a′_d
 /// on one line read as one line with a head at either end).
 fn apart(s: &Canvas, arrows: &[Arrow]) -> Vec<Vector> {
-    let order: Vec<usize> = (0..arrows.len())
-        .filter(|i| arrows[*i].1 == Role::Result)
-        .chain((0..arrows.len()).filter(|i| arrows[*i].1 != Role::Result))
+    let result = |a: &&(usize, &Arrow)| a.1.1 == Role::Result;
+    let all: Vec<(usize, &Arrow)> = arrows.iter().enumerate().collect();
+    let order: Vec<&(usize, &Arrow)> = (all.iter().filter(result))
+        .chain(all.iter().filter(|a| !result(a)))
         .collect();
     let sides: Vec<(Point, Point)> = (order.iter())
-        .map(|i| {
-            let (_, _, from, to) = arrows[*i];
+        .map(|(_, (_, _, from, to))| {
             let drawn = s.page((to - from).norm()) >= MIN_ARROW;
             (
-                Point::from(from),
-                Point::from(if drawn { to } else { from }),
+                Point::from(*from),
+                Point::from(if drawn { *to } else { *from }),
             )
         })
         .collect();
     let mut offsets = vec![Vector::zeros(); arrows.len()];
-    for (i, o) in order
+    for ((i, _), o) in order
         .into_iter()
         .zip(side_by_side(&sides, s.world(SIDE_APART)))
     {
-        offsets[i] = o;
+        if let Some(slot) = offsets.get_mut(*i) {
+            *slot = o;
+        }
     }
     offsets
 }
