@@ -52,7 +52,7 @@ pub(crate) fn side_by_side(sides: &[(Point, Point)], apart: f64) -> Vec<Vector> 
 /// 1.2°, its end 4 units off c′).
 fn runs_over(a: (Point, Point), b: (Point, Point), apart: f64) -> bool {
     let (u, v) = (b.1 - b.0, a.1 - a.0);
-    if !(u.norm() > 0.0) || cross(&u, &v).abs() > PARALLEL * u.norm() * v.norm() {
+    if u.norm() <= 0.0 || cross(&u, &v).abs() > PARALLEL * u.norm() * v.norm() {
         return false;
     }
     let near = (0..SAMPLES)

@@ -576,10 +576,13 @@ fn a_coriolis_detail_holds_the_point_its_polygon_closes_at() {
     }
 }
 
+/// A side as drawn: its id and its ends (page units).
+type Side = (String, (f64, f64), (f64, f64));
+
 /// The sides of a figure's polygons as drawn: each `velocity-…` and
 /// `acceleration-…` element's line (its first path's two ends, page
 /// units), by id; the detail's (`detail-…`) with them where `detail`.
-fn sides(svg: &str, detail: bool) -> Vec<(String, (f64, f64), (f64, f64))> {
+fn sides(svg: &str, detail: bool) -> Vec<Side> {
     let mut out = Vec::new();
     for (at, _) in svg.match_indices(" id=\"") {
         let rest = &svg[at + 5..];
@@ -678,7 +681,7 @@ fn a_sliding_acceleration_too_short_to_draw_is_said_so() {
     // Coriolis component of 1370, under two units in the ×20 detail), k
     // on a′_d with no word of it. The notes say how long it is drawn.
     let svg = svg(FigureName::CoriolisInversion2, 40.0, 0.0, 89.0);
-    let text = svg.replace(|c: char| c == '\n', " ");
+    let text = svg.replace('\n', " ");
     assert!(text.contains("too short to be seen"), "no word of it");
     let name = FigureName::CoriolisInversion2;
     let default = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());

@@ -34,7 +34,8 @@ pub(super) const SUBJECT_MOST: f64 = 200.0;
 /// points run off its edge; where it fits at this or more, the crowd is
 /// whole (inversion 3 at l = 26 r, 89.9°: a′_d, 13 times the Coriolis
 /// component from k and folded onto o′ in the polygon, stood off a ×2500
-/// detail that drew o′k 80 units; whole, o′k is 16 units).
+/// detail that drew o′k 80 units; whole at ×500, o′k is 11 units, the
+/// magnification rounded down to a round step).
 pub(super) const SUBJECT_WHOLE: f64 = 16.0;
 
 /// Room kept in a detail between its frame and the points it enlarges,
@@ -44,6 +45,9 @@ pub(super) const DETAIL_PAD: f64 = 40.0;
 /// Page distance within which a point of a polygon crowds the subject of
 /// its detail (or another point so crowding): the detail takes it in.
 pub(super) const CROWD: f64 = 24.0;
+
+/// The shortest piece of a side a detail draws, page units.
+const DETAIL_LEAST: f64 = 0.5;
 
 /// The least side of the box marking a detail's region on the polygon,
 /// page units.
@@ -140,7 +144,7 @@ pub(super) fn polygon_plot(
         s = s.quiet(w.frame);
     }
     let old = s.set_hue(Some(drawn.hue));
-    let offsets = apart(&s, &drawn.arrows);
+    let offsets = apart(&s, &drawn.arrows, MIN_ARROW);
     for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
         let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         let length = s.page((to - from).norm());
@@ -307,14 +311,14 @@ pub(super) fn detail_plot(
     let map = *plot.map();
     let mut s = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
     let old = s.set_hue(Some(drawn.hue));
-    let offsets = apart(&s, &drawn.arrows);
+    let offsets = apart(&s, &drawn.arrows, DETAIL_LEAST);
     for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
         let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         // The piece inside the frame; a side that misses it has none (the
         // clip of its line lies beyond its ends).
         let inside = s.frame().clip_segment(from, to).filter(|(p, q)| {
             let middle = Point::from((p.coords + q.coords) * 0.5);
-            s.contains(middle) && s.page((q - p).norm()) >= 0.5
+            s.contains(middle) && s.page((q - p).norm()) >= DETAIL_LEAST
         });
         let Some((tail, head)) = inside else {
             continue;
@@ -341,11 +345,15 @@ pub(super) fn detail_plot(
 pub(super) const SIDE_APART: f64 = 7.0;
 
 /// The offsets (world) that set each of a polygon's `arrows` drawn on
-/// `s` clear of those it would run over ([`side_by_side`]): the result
+/// `s` clear of those it would run over ([`side_by_side`]), those drawn
+/// shorter than `least` page units counted as points (a panel draws none
+/// shorter than [`MIN_ARROW`], a detail down to [`DETAIL_LEAST`]: at
+/// l = 26 r, 89.9° inversion 3's o′k, 11.4 units at ×500, lay along
+/// o′c′): the result
 /// (the heavier side) keeps its place, the others are set beside it in
 /// their order (inversion 2 at l = 1.06 r, 180°: o′n, a′_d k and o′a′_d
 /// on one line read as one line with a head at either end).
-fn apart(s: &Canvas, arrows: &[Arrow]) -> Vec<Vector> {
+fn apart(s: &Canvas, arrows: &[Arrow], least: f64) -> Vec<Vector> {
     let result = |a: &&(usize, &Arrow)| a.1.1 == Role::Result;
     let all: Vec<(usize, &Arrow)> = arrows.iter().enumerate().collect();
     let order: Vec<&(usize, &Arrow)> = (all.iter().filter(result))
@@ -353,7 +361,7 @@ fn apart(s: &Canvas, arrows: &[Arrow]) -> Vec<Vector> {
         .collect();
     let sides: Vec<(Point, Point)> = (order.iter())
         .map(|(_, (_, _, from, to))| {
-            let drawn = s.page((to - from).norm()) >= MIN_ARROW;
+            let drawn = s.page((to - from).norm()) >= least;
             (
                 Point::from(*from),
                 Point::from(if drawn { *to } else { *from }),
