@@ -21,6 +21,12 @@ const EDGE_ARROW: f64 = 34.0;
 /// How far inside the frame such an arrow ends.
 const EDGE_GAP: f64 = 3.0;
 
+/// Page distance within which two lettered images of a polygon stand
+/// close enough for their letters to meet side by side ("*n* *c*′" read
+/// as one word in inversion 3's default, the points 14 units apart): each
+/// letter is tried first on the side away from the other point.
+const PAIRED: f64 = 24.0;
+
 /// How a named point is marked.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Marker {
@@ -312,6 +318,20 @@ impl Canvas {
         marker: Marker,
         from: Point,
     ) {
+        self.point_lettered_toward(name, letter, p, marker, from, None);
+    }
+
+    /// [`Canvas::point_lettered`], its letter tried first `toward` (a
+    /// world direction): away from a point that stands near it.
+    fn point_lettered_toward(
+        &mut self,
+        name: &str,
+        letter: RichText,
+        p: Point,
+        marker: Marker,
+        from: Point,
+        toward: Option<Vector>,
+    ) {
         let key = format!("point-{name}");
         if self.has(&key) || self.has(&format!("offpage-{name}")) {
             return;
@@ -321,7 +341,7 @@ impl Canvas {
         let quiet = marker == Marker::Dot && self.quiet.is_some_and(|f| f.contains(p));
         if quiet {
         } else if self.contains(p) {
-            self.mark(name, p, marker, letter);
+            self.mark(name, p, marker, letter, toward);
         } else if !self.edge_arrows {
         } else if let Some((_, edge)) = self.frame.clip_segment(from, p) {
             let dir = p - from;
@@ -357,6 +377,7 @@ impl Canvas {
     ) {
         let shown = |c: &Self, p: Point| c.contains(p) && !held.is_some_and(|f| f.contains(p));
         let mut left: Vec<&(&str, &str, Point)> = points.iter().collect();
+        let mut groups = Vec::new();
         while !left.is_empty() {
             let first = left.remove(0);
             let mut group = vec![first];
@@ -369,17 +390,46 @@ impl Canvas {
                     None => break,
                 }
             }
+            groups.push(group);
+        }
+        let lettered: Vec<Point> = (groups.iter())
+            .filter_map(|g| g.first().map(|p| p.2))
+            .filter(|p| shown(self, *p))
+            .collect();
+        for group in &groups {
+            let Some(&first) = group.first() else {
+                continue;
+            };
             let joint: Vec<&str> = group.iter().map(|g| g.1).collect();
             let text = RichText::parse(&joint.join(", "));
-            self.point_lettered(first.0, text, first.2, Marker::Dot, pole);
+            let toward = self.away(first.2, &lettered);
+            self.point_lettered_toward(first.0, text, first.2, Marker::Dot, pole, toward);
             for g in group.iter().skip(1) {
                 self.record(g.0, g.2);
             }
         }
     }
 
+    /// The world direction from the nearest of `others` (other than `p`)
+    /// within [`PAIRED`] page units to `p`, if any: where a letter of `p`
+    /// stands apart from the nearest one's.
+    fn away(&self, p: Point, others: &[Point]) -> Option<Vector> {
+        let nearest = (others.iter())
+            .map(|q| p - q)
+            .filter(|d| d.norm() > 0.0 && self.page(d.norm()) < PAIRED)
+            .min_by(|a, b| a.norm().total_cmp(&b.norm()))?;
+        Some(nearest.normalize())
+    }
+
     /// A point's marker (`point-{name}`) and its letter (`label-{name}`).
-    fn mark(&mut self, name: &str, p: Point, marker: Marker, letter: RichText) {
+    fn mark(
+        &mut self,
+        name: &str,
+        p: Point,
+        marker: Marker,
+        letter: RichText,
+        toward: Option<Vector>,
+    ) {
         let key = format!("point-{name}");
         match marker {
             Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
@@ -389,7 +439,8 @@ impl Canvas {
         // view its letter stood against its neighbour's (A and C touching
         // at a short rod's inner dead centre, the block in the circle).
         if !(marker == Marker::Pin && self.is_bare(p)) {
-            self.label(format!("label-{name}"), p, letter, TextSize::Letter);
+            let id = format!("label-{name}");
+            self.label_naming(id, p, (toward, None), letter, TextSize::Letter);
         }
     }
 
@@ -408,7 +459,7 @@ impl Canvas {
         from: Point,
     ) {
         if self.contains(p) {
-            self.mark(name, p, marker, RichText::parse(markup));
+            self.mark(name, p, marker, RichText::parse(markup), None);
         } else if !self.edge_arrows {
             // A detail's edge is not the drawing's: its links run on
             // beyond it, and an arrow there would lie on one.

@@ -529,3 +529,161 @@ fn omega_s_arc_keeps_off_the_rod_and_the_block() {
         "ω's arc {nearest:.1} units from the rod or block"
     );
 }
+
+/// The gap between the glyph boxes of the texts `a` and `b` (0 where
+/// they meet or overlap).
+fn letters_gap(plate: &Plate, a: &str, b: &str) -> f64 {
+    let rect = |id: &str| {
+        (plate.texts.iter())
+            .find(|t| t.id == id)
+            .unwrap_or_else(|| panic!("no {id}"))
+            .rect
+    };
+    let (p, q) = (rect(a), rect(b));
+    let dx = (q.x0 - p.x1).max(p.x0 - q.x1).max(0.0);
+    let dy = (q.y0 - p.y1).max(p.y0 - q.y1).max(0.0);
+    dx.hypot(dy)
+}
+
+#[test]
+fn the_letters_of_two_near_images_stand_apart() {
+    // The eighth review: inversion 3's default set n and c′, 14 units
+    // apart, each above its dot, their letters 2 units apart, read as
+    // one word "n c′". Each is now set on the side away from the other:
+    // at least half an em (8.5 units at 17) between their glyphs.
+    let name = FigureName::CoriolisInversion3;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let plate = Plate::read(&svg);
+    let gap = letters_gap(&plate, "label-n", "label-c2");
+    assert!(gap >= 8.5, "n and c′ {gap:.1} apart");
+}
+
+#[test]
+fn a_coriolis_detail_holds_the_point_its_polygon_closes_at() {
+    // The eighth review: inversion 3 at l = 26 r near 90° drew the
+    // Coriolis component o′k 80 units long in a ×250 to ×2500 detail,
+    // and a′_d, folded onto o′ in the polygon ("a′_d, o′"), stood off the
+    // detail's edge: the polygon did not close anywhere a reader could
+    // see. The detail now holds a′_d, lettered, with o′ and k.
+    for deg in [85.0, 89.0, 89.9, 90.3, 91.0, 95.0] {
+        let svg = svg(FigureName::CoriolisInversion3, 26.0, 0.0, deg);
+        for id in ["detail-label-o2", "detail-label-k", "detail-label-ad2"] {
+            assert!(
+                svg.contains(&format!("id=\"{id}\"")),
+                "l = 26 r, {deg}°: no {id} in the detail"
+            );
+        }
+    }
+}
+
+/// A side as drawn: its id and its ends (page units).
+type Side = (String, (f64, f64), (f64, f64));
+
+/// The sides of a figure's polygons as drawn: each `velocity-…` and
+/// `acceleration-…` element's line (its first path's two ends, page
+/// units), by id; the detail's (`detail-…`) with them where `detail`.
+fn sides(svg: &str, detail: bool) -> Vec<Side> {
+    let mut out = Vec::new();
+    for (at, _) in svg.match_indices(" id=\"") {
+        let rest = &svg[at + 5..];
+        let id = &rest[..rest.find('"').unwrap()];
+        let bare = id.strip_prefix("detail-").filter(|_| detail).unwrap_or(id);
+        let Some(tail) =
+            (bare.strip_prefix("velocity-")).or_else(|| bare.strip_prefix("acceleration-"))
+        else {
+            continue;
+        };
+        // The sides, not the polygon's bar or the image line a′b′ (the
+        // acceleration image, drawn over the sides by design).
+        if tail.contains("polygon") || tail.contains('-') || tail == "a2b2" {
+            continue;
+        }
+        // A plain side is a `<path>` whose d comes before its id; an
+        // arrow a `<g>` whose first path is its line.
+        let start = svg[..at].rfind('<').unwrap();
+        let tag = &svg[start..at + 5 + rest.find('>').unwrap()];
+        let own = if tag.starts_with("<g") { rest } else { tag };
+        let Some(d) = own.find(" d=\"").map(|i| &own[i + 4..]) else {
+            continue;
+        };
+        let n: Vec<f64> = d[..d.find('"').unwrap()]
+            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        if n.len() >= 4 {
+            out.push((
+                id.to_string(),
+                (n[0], n[1]),
+                (n[n.len() - 2], n[n.len() - 1]),
+            ));
+        }
+    }
+    out
+}
+
+/// The page length of the side `a` that runs within 3 units of the side
+/// `b` (at less than 6° to it): where two sides read as one line.
+fn run_over(a: ((f64, f64), (f64, f64)), b: ((f64, f64), (f64, f64))) -> f64 {
+    let (u, v) = (
+        (b.1.0 - b.0.0, b.1.1 - b.0.1),
+        (a.1.0 - a.0.0, a.1.1 - a.0.1),
+    );
+    let (lu, lv) = (u.0.hypot(u.1), v.0.hypot(v.1));
+    if lu == 0.0 || lv == 0.0 || (u.0 * v.1 - u.1 * v.0).abs() > 0.1 * lu * lv {
+        return 0.0;
+    }
+    let near = (0..100)
+        .map(|i| (i as f64 + 0.5) / 100.0)
+        .filter(|t| {
+            let p = (a.0.0 + v.0 * t, a.0.1 + v.1 * t);
+            to_segment(p, b.0, b.1) < 3.0
+        })
+        .count();
+    near as f64 / 100.0 * lv
+}
+
+#[test]
+fn sides_on_one_line_are_drawn_side_by_side() {
+    // The eighth review: inversion 2 at l = 1.06 r, 180° drew o′n, a′_d k
+    // and o′a′_d on one line, read as one line with a head at either end;
+    // near 90° at a long rod the engine's acceleration polygon folded,
+    // xa′ back over c′b′ (l = 46.9 r, 89.99°). No side of a polygon now
+    // runs within 3 units of another over more than 10 units.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion2, 1.06, 180.0),
+        (FigureName::CoriolisInversion3, 1.06, 180.0),
+        (FigureName::CoriolisInversion2, 40.0, 89.0),
+        (FigureName::CoriolisInversion3, 26.0, 89.9),
+        (FigureName::VelocityAccelerationPolygons, 46.9, 89.99),
+        (FigureName::VelocityAccelerationPolygons, 25.0, 270.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let all = sides(&svg, true);
+        assert!(all.len() >= 5, "{name:?}: {} sides read", all.len());
+        for (i, a) in all.iter().enumerate() {
+            for b in all.iter().skip(i + 1) {
+                let over = run_over((a.1, a.2), (b.1, b.2));
+                assert!(
+                    over <= 10.0,
+                    "{name:?} l = {rod} r, {deg}°: {} runs {over:.0} units over {}",
+                    a.0,
+                    b.0
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_sliding_acceleration_too_short_to_draw_is_said_so() {
+    // The eighth review: at a long rod the sliding acceleration was
+    // invisible (inversion 2 at l = 40 r, 89°: 12 ft/s² against a
+    // Coriolis component of 1370, under two units in the ×20 detail), k
+    // on a′_d with no word of it. The notes say how long it is drawn.
+    let svg = svg(FigureName::CoriolisInversion2, 40.0, 0.0, 89.0);
+    let text = svg.replace('\n', " ");
+    assert!(text.contains("too short to be seen"), "no word of it");
+    let name = FigureName::CoriolisInversion2;
+    let default = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    assert!(!default.contains("too short to be seen"));
+}

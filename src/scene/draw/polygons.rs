@@ -10,7 +10,7 @@
 use super::LayerCtx;
 use crate::construct::{AccelerationPolygon, VelocityPolygon};
 use crate::figure::{Align, Hue, RIGHT_ANGLE, RichText, Role, Shape, TextSize};
-use crate::geom::{Point, Vector};
+use crate::geom::{Point, Vector, side_by_side};
 use crate::number::{short, sig};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
@@ -361,29 +361,63 @@ fn caption(canvas: &mut Canvas, id: &str, text: &str, points: &[Point]) {
     );
 }
 
+/// Page distance between two sides of a polygon that lie on one line,
+/// drawn side by side: more than a head's width (6.4 units), so that
+/// each arrow and its head are seen on their own.
+const SIDE_APART: f64 = 7.0;
+
+/// The offsets that set each of `sides` (the result first, then the
+/// others in the order drawn) clear of those before it that it would
+/// run over ([`side_by_side`]): near 90° at a long rod the acceleration
+/// polygon folds, xa′ running back over c′b′, and the two read as one
+/// line; the velocity polygon's cb and ca are one arrow where a = b.
+/// Sides too short to be drawn count as points.
+fn apart<const N: usize>(canvas: &Canvas, sides: [(Point, Point); N]) -> [Vector; N] {
+    let drawn = sides.map(|(p, q)| {
+        let seen = canvas.page((q - p).norm()) >= MIN_ARROW;
+        (p, if seen { q } else { p })
+    });
+    let offsets = side_by_side(&drawn, canvas.world(SIDE_APART));
+    std::array::from_fn(|i| offsets.get(i).copied().unwrap_or_else(Vector::zeros))
+}
+
 fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
     let (o, b, a) = (
         id(ctx, CrankCentre, false),
         id(ctx, CrankPin, false),
         id(ctx, Slider, false),
     );
+    let q = p.q.unwrap_or(p.o);
+    let [oa, ob, ab, oq] = apart(canvas, [(p.o, p.a), (p.o, p.b), (p.a, p.b), (p.o, q)]);
     vector(
         canvas,
         format!("velocity-{o}{b}"),
         Role::Construction,
-        p.o,
-        p.b,
+        p.o + ob,
+        p.b + ob,
     );
     vector(
         canvas,
         format!("velocity-{a}{b}"),
         Role::Construction,
-        p.a,
-        p.b,
+        p.a + ab,
+        p.b + ab,
     );
-    vector(canvas, format!("velocity-{o}{a}"), Role::Result, p.o, p.a);
+    vector(
+        canvas,
+        format!("velocity-{o}{a}"),
+        Role::Result,
+        p.o + oa,
+        p.a + oa,
+    );
     if let Some(q) = p.q {
-        vector(canvas, format!("velocity-{o}q"), Role::Auxiliary, p.o, q);
+        vector(
+            canvas,
+            format!("velocity-{o}q"),
+            Role::Auxiliary,
+            p.o + oq,
+            q + oq,
+        );
         if off_rod(ctx) {
             image_triangle(canvas, "velocity", [&a, &b, "q"], [p.a, p.b, q]);
         }
@@ -420,33 +454,38 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         id(ctx, CrankPin, true),
         id(ctx, Slider, true),
     );
+    let q = p.q.unwrap_or(p.o);
+    let [oa, ob, bx, xa, oq] = apart(
+        canvas,
+        [(p.o, p.a), (p.o, p.b), (p.b, p.x), (p.x, p.a), (p.o, q)],
+    );
     vector(
         canvas,
         format!("acceleration-{o}{b}"),
         Role::Construction,
-        p.o,
-        p.b,
+        p.o + ob,
+        p.b + ob,
     );
     vector(
         canvas,
         format!("acceleration-{b}x"),
         Role::Construction,
-        p.b,
-        p.x,
+        p.b + bx,
+        p.x + bx,
     );
     vector(
         canvas,
         format!("acceleration-x{a}"),
         Role::Construction,
-        p.x,
-        p.a,
+        p.x + xa,
+        p.a + xa,
     );
     vector(
         canvas,
         format!("acceleration-{o}{a}"),
         Role::Result,
-        p.o,
-        p.a,
+        p.o + oa,
+        p.a + oa,
     );
     canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
     if let Some(q) = p.q {
@@ -454,8 +493,8 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
             canvas,
             format!("acceleration-{o}q2"),
             Role::Auxiliary,
-            p.o,
-            q,
+            p.o + oq,
+            q + oq,
         );
         if off_rod(ctx) {
             image_triangle(canvas, "acceleration", [&a, &b, "q2"], [p.a, p.b, q]);

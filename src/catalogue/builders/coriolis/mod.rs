@@ -32,7 +32,7 @@ use serde_json::json;
 use mechanism::mechanism_plot;
 use notes::{coriolis_json, notes};
 pub(super) use panel::mark_window;
-use panel::{Drawn, detail_plot, polygon_plot, right_angles};
+use panel::{Drawn, Window, detail_plot, polygon_plot, right_angles};
 use polygons::Polygons;
 use rule::rule_plot;
 
@@ -142,6 +142,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     if let Some(w) = a_window {
         details.push(detail_plot(ctx, a_below, &acceleration_drawn, &w, &angles)?);
     }
+    let sliding_seen = sliding_drawn(&polygons, acceleration.map().scale(), a_window);
     let rule = rule_plot(ctx, rule_rect, &polygons)?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
@@ -166,9 +167,21 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.height(bottom + NOTES_LINES * super::NOTE_LINE + MARGIN);
     sheet.notes(
         Point::new(20.0, bottom),
-        &notes(ctx, &chain, &polygons, (v_bar, a_bar)),
+        &notes(ctx, &chain, &polygons, (v_bar, a_bar), sliding_seen),
     );
     Ok(sheet.finish())
+}
+
+/// The page length of the sliding acceleration (k a′_d) where it is drawn
+/// largest: in the acceleration polygon's detail where it has one, else
+/// in the polygon at `scale` page units per unit; with the detail's
+/// magnification (`None` without one).
+fn sliding_drawn(polygons: &Polygons, scale: f64, window: Option<Window>) -> (f64, Option<f64>) {
+    let length = (polygons.p.a_d_acceleration() - polygons.k()).norm() * scale;
+    match window {
+        Some(w) => (length * w.magnification, Some(w.magnification)),
+        None => (length, None),
+    }
 }
 
 /// The notes' lines before wrapping.

@@ -38,6 +38,7 @@ pub(super) fn notes(
     chain: &InvertedChain,
     polygons: &Polygons,
     bars: (f64, f64),
+    (sliding_seen, magnified): (f64, Option<f64>),
 ) -> Vec<String> {
     let m = &ctx.mechanism;
     let u = ctx.unit();
@@ -95,8 +96,20 @@ pub(super) fn notes(
         ),
     };
     let normal = omega_d * omega_d * ca;
+    // A sliding acceleration too short to draw even where the polygon is
+    // enlarged (inversion 2 at l = 40 r, 89°: 12 ft/s² against a Coriolis
+    // component of 1370, under a unit at ×20) is said so: k stands on a′_d.
+    let unseen = if sliding != 0.0 && sliding_seen < super::MIN_ARROW {
+        format!(
+            " (drawn {:.1} units long{}, too short to be seen: *k* stands on *a*′_{{d}})",
+            sliding_seen,
+            magnified.map_or(String::new(), |m| format!(" at ×{}", short(m))),
+        )
+    } else {
+        String::new()
+    };
     let acceleration = format!(
-        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s².",
+        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{unseen}.",
         short(bars.1),
         match inversion {
             Inversion::Rod => "C",

@@ -10,7 +10,7 @@ use crate::chain::Inversion;
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Hue, PageRect, RIGHT_ANGLE, RichText, Role, Shape};
-use crate::geom::{Frame, Point, Vector};
+use crate::geom::{Frame, Point, Vector, side_by_side};
 use crate::scene::{COINCIDE, Canvas, Marker};
 use serde_json::Value;
 
@@ -27,6 +27,17 @@ pub(super) const SUBJECT_LEAST: f64 = 40.0;
 /// The most the subject is drawn in its detail, page units.
 pub(super) const SUBJECT_MOST: f64 = 200.0;
 
+/// The least the subject is drawn in a detail that holds its crowd whole,
+/// page units: a plain side (longer than [`MIN_ARROW`]) with a letter at
+/// either end. Where the crowd is whole only with the subject shorter,
+/// the detail draws the subject at twice [`SUBJECT_LEAST`] and the far
+/// points run off its edge; where it fits at this or more, the crowd is
+/// whole (inversion 3 at l = 26 r, 89.9°: a′_d, 13 times the Coriolis
+/// component from k and folded onto o′ in the polygon, stood off a ×2500
+/// detail that drew o′k 80 units; whole at ×500, o′k is 11 units, the
+/// magnification rounded down to a round step).
+pub(super) const SUBJECT_WHOLE: f64 = 16.0;
+
 /// Room kept in a detail between its frame and the points it enlarges,
 /// page units (their letters).
 pub(super) const DETAIL_PAD: f64 = 40.0;
@@ -34,6 +45,9 @@ pub(super) const DETAIL_PAD: f64 = 40.0;
 /// Page distance within which a point of a polygon crowds the subject of
 /// its detail (or another point so crowding): the detail takes it in.
 pub(super) const CROWD: f64 = 24.0;
+
+/// The shortest piece of a side a detail draws, page units.
+const DETAIL_LEAST: f64 = 0.5;
 
 /// The least side of the box marking a detail's region on the polygon,
 /// page units.
@@ -130,8 +144,9 @@ pub(super) fn polygon_plot(
         s = s.quiet(w.frame);
     }
     let old = s.set_hue(Some(drawn.hue));
-    for (id, role, from, to) in &drawn.arrows {
-        let (from, to) = (Point::from(*from), Point::from(*to));
+    let offsets = apart(&s, &drawn.arrows, MIN_ARROW);
+    for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
+        let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         let length = s.page((to - from).norm());
         if length >= HEADLESS {
             s.push(*id, *role, Shape::Arrow { from, to });
@@ -170,8 +185,8 @@ pub(super) fn polygon_plot(
 /// drawn shorter than [`SUBJECT_LEAST`] at `scale` (page units per unit):
 /// the points crowding about the subject (within [`CROWD`] of it or of
 /// each other) whole where they fit the detail's `area` with the subject
-/// at most [`SUBJECT_MOST`], else the subject at twice [`SUBJECT_LEAST`]
-/// about its middle (the long sides run off the detail's edge); the
+/// at most [`SUBJECT_MOST`] and at least [`SUBJECT_WHOLE`], else the
+/// subject at twice [`SUBJECT_LEAST`] about its middle (the long sides run off the detail's edge); the
 /// magnification a round step. `None` where the subject reads in the
 /// polygon itself.
 pub(super) fn window(
@@ -200,9 +215,12 @@ pub(super) fn window(
     let size = hi - lo;
     let room = (area.0 - 2.0 * DETAIL_PAD, area.1 - 2.0 * DETAIL_PAD);
     let fit = (room.0 / size.x).min(room.1 / size.y);
-    let wanted = fit
-        .min(SUBJECT_MOST / length)
-        .max(2.0 * SUBJECT_LEAST / length);
+    let whole = fit.min(SUBJECT_MOST / length);
+    let wanted = if whole * length >= SUBJECT_WHOLE {
+        whole
+    } else {
+        2.0 * SUBJECT_LEAST / length
+    };
     let magnification = round_below(wanted / scale, &STEPS).max(1.0);
     let detail = magnification * scale;
     let centre = if detail <= fit * (1.0 + 1e-9) {
@@ -293,13 +311,14 @@ pub(super) fn detail_plot(
     let map = *plot.map();
     let mut s = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
     let old = s.set_hue(Some(drawn.hue));
-    for (id, role, from, to) in &drawn.arrows {
-        let (from, to) = (Point::from(*from), Point::from(*to));
+    let offsets = apart(&s, &drawn.arrows, DETAIL_LEAST);
+    for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
+        let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         // The piece inside the frame; a side that misses it has none (the
         // clip of its line lies beyond its ends).
         let inside = s.frame().clip_segment(from, to).filter(|(p, q)| {
             let middle = Point::from((p.coords + q.coords) * 0.5);
-            s.contains(middle) && s.page((q - p).norm()) >= 0.5
+            s.contains(middle) && s.page((q - p).norm()) >= DETAIL_LEAST
         });
         let Some((tail, head)) = inside else {
             continue;
@@ -318,6 +337,47 @@ pub(super) fn detail_plot(
         plot.push(item);
     }
     Ok(plot)
+}
+
+/// Page distance between two sides of a polygon that lie on one line,
+/// drawn side by side: more than a head's width (6.4 units), so that
+/// each arrow and its head are seen on their own.
+pub(super) const SIDE_APART: f64 = 7.0;
+
+/// The offsets (world) that set each of a polygon's `arrows` drawn on
+/// `s` clear of those it would run over ([`side_by_side`]), those drawn
+/// shorter than `least` page units counted as points (a panel draws none
+/// shorter than [`MIN_ARROW`], a detail down to [`DETAIL_LEAST`]: at
+/// l = 26 r, 89.9° inversion 3's o′k, 11.4 units at ×500, lay along
+/// o′c′): the result
+/// (the heavier side) keeps its place, the others are set beside it in
+/// their order (inversion 2 at l = 1.06 r, 180°: o′n, a′_d k and o′a′_d
+/// on one line read as one line with a head at either end).
+fn apart(s: &Canvas, arrows: &[Arrow], least: f64) -> Vec<Vector> {
+    let result = |a: &&(usize, &Arrow)| a.1.1 == Role::Result;
+    let all: Vec<(usize, &Arrow)> = arrows.iter().enumerate().collect();
+    let order: Vec<&(usize, &Arrow)> = (all.iter().filter(result))
+        .chain(all.iter().filter(|a| !result(a)))
+        .collect();
+    let sides: Vec<(Point, Point)> = (order.iter())
+        .map(|(_, (_, _, from, to))| {
+            let drawn = s.page((to - from).norm()) >= least;
+            (
+                Point::from(*from),
+                Point::from(if drawn { *to } else { *from }),
+            )
+        })
+        .collect();
+    let mut offsets = vec![Vector::zeros(); arrows.len()];
+    for ((i, _), o) in order
+        .into_iter()
+        .zip(side_by_side(&sides, s.world(SIDE_APART)))
+    {
+        if let Some(slot) = offsets.get_mut(*i) {
+            *slot = o;
+        }
+    }
+    offsets
 }
 
 /// The right angles of the acceleration polygon: d's tangential component
