@@ -426,7 +426,12 @@ fn plate_failures(svg: &str) -> Vec<String> {
                 continue;
             }
             let id = format!("{}label-{letter}", panel.prefix);
+            // A pin inside a crank's detail is lettered in the detail only.
+            let in_detail = |p: &&plate::Panel| {
+                p.prefix == "detail-" && p.labels.iter().any(|l| l.id == format!("detail-{id}"))
+            };
             match panel.labels.iter().find(|l| l.id == id) {
+                None if panel.prefix.is_empty() && plate.panels.iter().any(|p| in_detail(&p)) => {}
                 None => out.push(format!("{id} missing")),
                 Some(l) if l.rect.distance_to(at) > REACH_EM * l.font_size => {
                     out.push(format!("{id} far from its point"))

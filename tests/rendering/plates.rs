@@ -2922,7 +2922,7 @@ fn an_obliquity_too_small_to_open_its_arc_is_given_in_the_notes() {
         "φ marked at 1.2°"
     );
     assert!(
-        common::read_text(&text).contains("too small for its arc"),
+        common::read_text(&text).contains("too small to show"),
         "no note for φ"
     );
     let default = to_svg(
@@ -2937,5 +2937,5 @@ fn an_obliquity_too_small_to_open_its_arc_is_given_in_the_notes() {
             .iter()
             .any(|p| draws(p, "angle-phi"))
     );
-    assert!(!common::read_text(&default).contains("too small for its arc"));
+    assert!(!common::read_text(&default).contains("too small to show"));
 }

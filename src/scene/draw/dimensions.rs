@@ -89,7 +89,7 @@ fn opens(phi: f64) -> bool {
 pub(crate) fn phi_note(phi: f64, letter: &str) -> Option<RichText> {
     (phi != 0.0 && !opens(phi)).then(|| {
         RichText::parse(&format!(
-            "*{letter}* = {}° is too small for its arc to be drawn.",
+            "The angle *{letter}* ({}°) is too small to show at this scale.",
             crate::number::sig(phi.abs().to_degrees())
         ))
     })
