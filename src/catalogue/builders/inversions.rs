@@ -274,7 +274,13 @@ fn caption(ctx: &Ctx, inversion: Inversion, width: f64) -> (String, String) {
     if RichText::parse(&full).width(ctx.font, size) <= width - 8.0 {
         (full, String::new())
     } else {
-        let named = format!("Inversion {}: {}. ", inversion.number(), inversion.name());
+        // The caption names the inversion: the notes open with its name
+        // alone ("Inversion 2:" twice read as a title printed twice).
+        let name = inversion.name();
+        let mut first = name.chars();
+        let named = first.next().map_or(String::new(), |c| {
+            format!("{}{}. ", c.to_uppercase(), first.as_str())
+        });
         (head, named)
     }
 }

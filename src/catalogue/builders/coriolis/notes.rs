@@ -100,9 +100,13 @@ pub(super) fn notes(
     // enlarged (inversion 2 at l = 40 r, 89°: 12 ft/s² against a Coriolis
     // component of 1370, under a unit at ×20) is said so: k stands on a′_d.
     let unseen = if sliding != 0.0 && sliding_seen < super::MIN_ARROW {
+        // Under a tenth of a unit it is not written "0.0 units".
+        let drawn = match sliding_seen < 0.1 {
+            true => "under 0.1".to_string(),
+            false => format!("{sliding_seen:.1}"),
+        };
         format!(
-            " (drawn {:.1} units long{}, too short to be seen: *k* stands on *a*′_{{d}})",
-            sliding_seen,
+            " (drawn {drawn} units long{}, too short to be seen: *k* stands on *a*′_{{d}})",
             magnified.map_or(String::new(), |m| format!(" at ×{}", short(m))),
         )
     } else {
