@@ -75,6 +75,8 @@ impl PyEngine {
             gas_force,
             indicator: indicator.clone(),
             bore,
+            // Gravity pairs with no other field; it is read below.
+            gravity: None,
         };
         given.refuse_pairs().map_err(py_err)?;
         let m = SliderCrank::new(crank, rod, offset).map_err(py_err)?;
