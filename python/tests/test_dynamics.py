@@ -359,11 +359,14 @@ def test_gravity_and_friction_enter_the_dynamics() -> None:
     # rod the guide thrust's size.
     engine = sc.SliderCrank(0.5, 3.0)
     plain = engine.at(90, rpm=250, mass=10).dynamics
+    assert plain is not None
     assert plain.weight is None and plain.friction is None
     up = engine.at(90, rpm=250, mass=10, gravity="towards-crank").dynamics
+    assert up is not None and up.weight is not None
     assert up.weight == pytest.approx(10 * 9.80665 / 0.3048, rel=1e-12)
     assert up.piston_effort == pytest.approx(plain.piston_effort + up.weight, rel=1e-12)
     rub = engine.at(90, rpm=250, mass=10, friction=0.1).dynamics
+    assert rub is not None
     assert rub.friction is not None and rub.friction < 0
     assert abs(rub.friction) == pytest.approx(0.1 * abs(rub.guide_thrust), rel=1e-12)
     assert rub.whole_engine.friction == pytest.approx(rub.friction, rel=1e-12)
