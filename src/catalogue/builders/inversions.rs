@@ -338,7 +338,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
 const CRANK_LEAST: f64 = 40.0;
 
 /// A crank detail's reach about its centre, in cranks: the crank's two
-/// pins, the path about them and room for their letters ([`crank_window`]).
+/// pins, the path about them and room for their letters.
 const CRANK_REACH: f64 = 1.5;
 
 /// A crank's enlarged detail in the panel `rect` (its caption included),
@@ -353,24 +353,8 @@ pub(super) fn crank_window(
     rect: crate::figure::PageRect,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
-    let reach = CRANK_REACH * ctx.mechanism.crank();
-    window(ctx, name, (centre, reach), rect, scale)
-}
-
-/// An enlarged detail in the panel `rect` (its caption included) for a
-/// main view at `scale` page units per world unit: the world region about
-/// `centre` it shows, `reach` world units each way across its shorter
-/// side at a round magnification (at least 1), and its plot, captioned
-/// with the magnification; its panel `panel-{name}`.
-fn window(
-    ctx: &Ctx,
-    name: &str,
-    (centre, reach): (Point, f64),
-    rect: crate::figure::PageRect,
-    scale: f64,
-) -> Result<(Frame, Plot)> {
     let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
-    let wanted = w.min(h) / (2.0 * reach) / scale;
+    let wanted = w.min(h) / (2.0 * CRANK_REACH * ctx.mechanism.crank()) / scale;
     let steps = super::coriolis::FINE_STEPS;
     let magnification = super::coriolis::round_below(wanted, &steps).max(1.0);
     let half = Vector::new(w, h) * (0.5 / (magnification * scale));
@@ -424,8 +408,6 @@ fn crank_detail(
     if m.crank() * scale >= CRANK_LEAST {
         return Ok(None);
     }
-    let q = parts(&m, pose);
-    let (centre, reach) = (mid(q.c, q.b), CRANK_REACH * m.crank());
     let w = CRANK_DETAIL.0.min(rect.width);
     let detail_rect = crate::figure::PageRect::new(
         rect.x + 0.5 * (rect.width - w),
@@ -433,7 +415,8 @@ fn crank_detail(
         w,
         CRANK_DETAIL.1,
     );
-    let (region, mut plot) = window(ctx, "detail", (centre, reach), detail_rect, scale)?;
+    let q = parts(&m, pose);
+    let (region, mut plot) = crank_window(ctx, "detail", mid(q.c, q.b), detail_rect, scale)?;
     let map = *plot.map();
     let block = super::chains::block_on_page(block_size(&m), map.scale());
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
