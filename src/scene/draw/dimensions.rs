@@ -38,7 +38,7 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
     // φ at B: a short parallel to the stroke towards the slider, and the
     // arc from it to the rod.
     let ba = a - b;
-    let phi = ba.y.atan2(ba.x);
+    let phi = obliquity(ctx);
     if canvas.page(ba.norm()) * phi.abs() > 6.0 && opens(phi) && !canvas.is_bare(b) {
         let reach = canvas.world(PARALLEL).min(0.6 * ba.x);
         canvas.segment(
@@ -83,10 +83,19 @@ fn opens(phi: f64) -> bool {
     ANGLE_RADIUS * phi.abs() >= LEAST_OPENING
 }
 
-/// The note for an obliquity too small to mark at `phi` (radians): its
-/// value in degrees; none where it is marked or zero (a dead centre of
-/// an engine without offset, where there is nothing to mark).
-pub(crate) fn phi_note(phi: f64, letter: &str) -> Option<RichText> {
+/// The angle φ at B from the parallel to the stroke to the rod, as
+/// [`angles`] marks it (radians).
+fn obliquity(ctx: &LayerCtx) -> f64 {
+    let pose = ctx.main.pose();
+    let ba = pose.a() - pose.b();
+    ba.y.atan2(ba.x)
+}
+
+/// The note for an obliquity too small to mark ([`opens`]): its value in
+/// degrees; none where it is marked or zero (a dead centre of an engine
+/// without offset, where there is nothing to mark).
+pub(crate) fn phi_note(ctx: &LayerCtx, letter: &str) -> Option<RichText> {
+    let phi = obliquity(ctx);
     (phi != 0.0 && !opens(phi)).then(|| {
         RichText::parse(&format!(
             "The angle *{letter}* ({}°) is too small to show at this scale.",

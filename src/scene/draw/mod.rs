@@ -294,9 +294,7 @@ fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         notes.push(RichText::parse(&offset_note(scene)));
     }
     if scene.has(Layer::Angles) {
-        let pose = ctx.main.pose();
-        let ba = pose.a() - pose.b();
-        notes.extend(dimensions::phi_note(ba.y.atan2(ba.x), "φ"));
+        notes.extend(dimensions::phi_note(ctx, "φ"));
     }
     // Each note broken into lines that fit the page at the notes' size
     // (set from `mg + 4` with 8 units to spare, as the writer sets them),
