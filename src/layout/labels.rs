@@ -745,6 +745,21 @@ fn nearer_another(b: &Bounds, anchor: Point, others: &[Point], pair: f64) -> boo
     })
 }
 
+/// What a place costs more whose centre stands nearer another point of
+/// a pair than its own (allowed by [`nearer_another`]): less than a unit,
+/// so that a clear place on its own side of the same ring is taken first
+/// and a crowded pair still keeps its letters. Ng's O between O and P at
+/// a short rod's inner dead centre read as P's letter.
+const OTHER_SIDE: f64 = 0.5;
+
+/// Whether the centre of `b` is nearer one of `others` (not coinciding
+/// with `anchor`) than `anchor`.
+fn over_the_other(b: &Bounds, anchor: Point, others: &[Point]) -> bool {
+    let centre = nalgebra::center(&b.min, &b.max);
+    let own = (centre - anchor).norm();
+    (others.iter()).any(|&q| (q - anchor).norm() > 1.0 && (centre - q).norm() < own)
+}
+
 /// Whether `b` stands less than [`LINE_NEARER`] nearer the line `own`
 /// than one of the `rivals` (links), or not beside `own` at all: its centre
 /// beyond the line's middle [`BESIDE`] share, by an end that other lines
@@ -846,6 +861,8 @@ pub(crate) fn place_toward(
             cost += AMBIGUOUS;
         } else if line.is_some_and(|(own, _)| nearer_another_line(&b, own, dimensions)) {
             cost += MISREAD;
+        } else if over_the_other(&b, anchor, &others) {
+            cost += OTHER_SIDE;
         }
         if let Some((own, links, dimensions)) = led {
             // Led, it still stands nearer its own line than another link.

@@ -7,7 +7,7 @@ use super::mark::{Mark, TextAnchor};
 use super::markup::{arc_beziers, arrow_head, finite, path, polyline_d, unit};
 use super::symbol_sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
 use super::text::{starts_italic, text_half, text_node};
-use super::{Ink, PanelLayout, Pending};
+use super::{AngleArc, Ink, PanelLayout, Pending};
 use crate::figure::{Item, PageFromWorld, Pen, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 
@@ -125,6 +125,12 @@ impl PanelLayout<'_> {
                 toward: Some(dir),
                 joint: false,
                 line: None,
+                arc: Some(AngleArc {
+                    centre: c,
+                    radius,
+                    start: page_start,
+                    sweep: page_sweep,
+                }),
             });
         }
         Some(self.open_line(ink, course))

@@ -74,6 +74,12 @@ const LINE_REACH: f64 = 6.0;
 /// clear.
 const ALONG_LINE: [f64; 5] = [0.5, 0.35, 0.65, 0.2, 0.8];
 
+/// Where along its arc (from its start) an angle's letter is tried, in
+/// turn: beyond its middle, then towards either arm, until a place is
+/// clear. θ at 180° with the rod across the top of its half-circle stood
+/// 50 units above the circle, its arc's middle crowded (Fig. 62, offset).
+const ALONG_ARC: [f64; 5] = [0.5, 0.35, 0.65, 0.22, 0.78];
+
 /// The room, in font sizes, kept on either side of a name or a value
 /// placed within [`WIDE_REACH`] (about a word space).
 const WIDE_ROOM: f64 = 0.3;
@@ -96,6 +102,30 @@ struct Pending {
     joint: bool,
     /// The page line the text names, if any (a link's length).
     line: Option<(Point, Point)>,
+    /// The arc an angle's letter names, if any: the letter stands beyond
+    /// its middle where that is clear, else beyond another point of it
+    /// ([`ALONG_ARC`]), before it looks farther off.
+    arc: Option<AngleArc>,
+}
+
+/// An angle mark's arc in page terms: its centre, radius, and the page
+/// angles it starts at and turns through (radians).
+#[derive(Clone, Copy)]
+struct AngleArc {
+    centre: Point,
+    radius: f64,
+    start: f64,
+    sweep: f64,
+}
+
+impl AngleArc {
+    /// The point a share `t` along the arc and the unit direction to it
+    /// from the centre.
+    fn at(&self, t: f64) -> (Point, Vector) {
+        let w = self.start + self.sweep * t;
+        let u = Vector::new(w.cos(), w.sin());
+        (self.centre + u * self.radius, u)
+    }
 }
 
 impl Pending {
@@ -502,33 +532,45 @@ impl PanelLayout<'_> {
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
+                let place_from =
+                    |anchor: Point, toward: Option<Vector>, reach: f64, half: Vector| {
+                        place_toward(
+                            anchor,
+                            half,
+                            p.gap,
+                            reach,
+                            Steer {
+                                toward,
+                                others: &others,
+                                pair: p.size,
+                                line: p.line.map(|own| (own, rivals.as_slice())),
+                                dimensions: &self.dimensions,
+                                led: None,
+                            },
+                            &self.obstacles,
+                            room,
+                        )
+                    };
                 let place_at = |anchor: Point, reach: f64, half: Vector| {
-                    place_toward(
-                        anchor,
-                        half,
-                        p.gap,
-                        reach,
-                        Steer {
-                            toward: p.toward,
-                            others: &others,
-                            pair: p.size,
-                            line: p.line.map(|own| (own, rivals.as_slice())),
-                            dimensions: &self.dimensions,
-                            led: None,
-                        },
-                        &self.obstacles,
-                        room,
-                    )
+                    place_from(anchor, p.toward, reach, half)
                 };
                 // A text naming a line is set by its middle where a place
-                // there is clear, else by another point along it.
+                // there is clear, else by another point along it; an
+                // angle's letter likewise along its arc.
                 let place = |reach: f64, half: Vector| {
-                    let Some((a, b)) = p.line else {
-                        return place_at(p.anchor, reach, half);
+                    let tries: Vec<(Point, Option<Vector>)> = match (p.line, p.arc) {
+                        (Some((a, b)), _) => (ALONG_LINE.iter())
+                            .map(|t| (a + (b - a) * *t, p.toward))
+                            .collect(),
+                        (None, Some(arc)) => (ALONG_ARC.iter())
+                            .map(|t| arc.at(*t))
+                            .map(|(at, u)| (at, Some(u)))
+                            .collect(),
+                        (None, None) => return place_at(p.anchor, reach, half),
                     };
                     let mut best = (p.anchor, f64::INFINITY);
-                    for t in ALONG_LINE {
-                        let at = place_at(a + (b - a) * t, reach, half);
+                    for (anchor, toward) in tries {
+                        let at = place_from(anchor, toward, reach, half);
                         if at.1 < best.1 {
                             best = at;
                         }

@@ -370,14 +370,14 @@ fn fig_67_notes_follow_the_unit() {
     let t = texts(&ng).join("\n");
     // No length in millimetres but where the notes say whose torque it is
     // (Ng's number, N·mm on his rig, kept as a number in metres).
-    let own = |l: &&str| !l.contains("Ng’s number");
+    let own = |l: &&str| !l.contains("Ng’s rig");
     assert!(
         t.contains("kN·m.")
             && t.contains(" kN,")
             && !t.lines().filter(own).any(|l| l.contains("mm")),
         "{t}"
     );
-    assert!(t.contains("Ng’s number for his rig"), "{t}");
+    assert!(t.contains("that of Ng’s rig"), "{t}");
     // Inches bring pounds-force to Ng's figure, millimetres newtons to the
     // textbook's.
     let inch = svg_of(&["figure", "ng-fig-1-torque", "--unit", "in"]);

@@ -520,7 +520,7 @@ fn the_polar_layer_traces_fig_64_as_far_as_the_crank_has_turned() {
 fn ngs_torque_on_another_engine_is_said_to_be_ngs() {
     let says = |options: &slider_crank::catalogue::FigureOptions| {
         let svg = to_svg(&FigureName::NgFig1Torque.figure(options).unwrap());
-        svg.contains("Ng’s number for his rig")
+        svg.contains("that of Ng’s rig")
     };
     let mut other = slider_crank::catalogue::FigureOptions::default();
     other.mechanism = Some(SliderCrank::new(0.002, 0.006, 0.0).unwrap());

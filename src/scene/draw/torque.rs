@@ -83,7 +83,7 @@ fn borrowed_torque(ctx: &LayerCtx, t: f64) -> Option<String> {
     let ngs_rig = m.crank() == 25.0 && m.rod() == 72.0 && units.length().to_string() == "mm";
     (t == NG_TORQUE && !ngs_rig).then(|| {
         format!(
-            "*T* is Ng’s number for his rig (1 kg on a 27 mm arm, {} N·mm), kept as it is, not this engine’s.",
+            "The torque *T* is that of Ng’s rig: 1 kg on a 27 mm arm, {} N·mm.",
             given(NG_TORQUE)
         )
     })
