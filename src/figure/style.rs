@@ -164,3 +164,23 @@ pub(crate) const RIGHT_ANGLE: f64 = 10.0;
 /// Radius of an angle mark's arc, page units: the layout draws it, and
 /// the scene leaves out an angle too small to open at it.
 pub(crate) const ANGLE_RADIUS: f64 = 28.0;
+/// The largest radius of an angle mark's arc, page units: a small angle's
+/// arc is drawn farther out, up to this, so that it opens
+/// ([`angle_radius`]).
+pub(crate) const ANGLE_RADIUS_MOST: f64 = 60.0;
+/// The arc length (page units) an angle mark is given where its radius
+/// allows: φ = 6.8° at [`ANGLE_RADIUS`] drew an arc of 3 units, under
+/// its letter (Fig. 62 at its default).
+const ANGLE_ARC: f64 = 10.0;
+
+/// The radius (page units) of the arc of an angle of `sweep` radians: the
+/// one giving [`ANGLE_ARC`] of arc, within [`ANGLE_RADIUS`] (a large
+/// angle) and [`ANGLE_RADIUS_MOST`] (a small one; a zero or non-finite
+/// sweep takes the most).
+pub(crate) fn angle_radius(sweep: f64) -> f64 {
+    let wanted = ANGLE_ARC / sweep.abs();
+    if wanted.is_nan() {
+        return ANGLE_RADIUS_MOST;
+    }
+    wanted.clamp(ANGLE_RADIUS, ANGLE_RADIUS_MOST)
+}

@@ -5,9 +5,10 @@ use super::centre::Course;
 use super::labels::Bounds;
 use super::mark::{Mark, TextAnchor};
 use super::markup::{arc_beziers, arrow_head, finite, path, polyline_d, unit};
-use super::symbol_sizes::{ANGLE_RADIUS, ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
+use super::symbol_sizes::{ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
 use super::text::{starts_italic, text_half, text_node};
-use super::{AngleArc, Ink, PanelLayout, Pending};
+use super::{ALONG_ARC, Ink, PanelLayout, Pending};
+use crate::figure::angle_radius;
 use crate::figure::{Item, PageFromWorld, Pen, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector};
 
@@ -80,13 +81,13 @@ impl PanelLayout<'_> {
     }
 
     /// The radius of the angle mark of `sweep` (its size) at the page
-    /// point `c`: [`ANGLE_RADIUS`], and [`ANGLE_STEP`] more for each larger
+    /// point `c`: [`angle_radius`] (larger for a small angle), and [`ANGLE_STEP`] more for each larger
     /// angle at the same vertex ([`angle_radii`]).
     fn angle_radius(&self, c: Point, sweep: f64) -> f64 {
         self.angle_radii
             .iter()
             .find(|(v, s, _)| (*v - c).norm() < 1.0 && *s == sweep)
-            .map_or(ANGLE_RADIUS, |(_, _, r)| *r)
+            .map_or(angle_radius(sweep), |(_, _, r)| *r)
     }
 
     /// An angle mark: an arc of page radius [`ANGLE_RADIUS`] about
@@ -113,8 +114,15 @@ impl PanelLayout<'_> {
             sweep: page_sweep,
         };
         if let Some(text) = text {
-            let mid = start + 0.5 * sweep;
-            let dir = unit(self.t.apply_vector(Vector::new(mid.cos(), mid.sin())))?;
+            // The arc's point a share `k` along it and the page direction
+            // out to it from the vertex.
+            let at = |k: f64| {
+                let w = start + k * sweep;
+                let u = unit(self.t.apply_vector(Vector::new(w.cos(), w.sin())))?;
+                Some((c + u * radius, u))
+            };
+            let dir = at(0.5)?.1;
+            let along = ALONG_ARC.iter().filter_map(|k| at(*k)).collect();
             self.pending.push(Pending {
                 id: format!("label-{}", ink.id.trim_start_matches("angle-")),
                 anchor: c + dir * radius,
@@ -125,12 +133,7 @@ impl PanelLayout<'_> {
                 toward: Some(dir),
                 joint: false,
                 line: None,
-                arc: Some(AngleArc {
-                    centre: c,
-                    radius,
-                    start: page_start,
-                    sweep: page_sweep,
-                }),
+                along,
             });
         }
         Some(self.open_line(ink, course))
@@ -234,8 +237,8 @@ impl PanelLayout<'_> {
 }
 
 /// The radii of the angle marks among `items` drawn by the map `t`: at a
-/// vertex shared by several, the largest angle innermost at
-/// [`ANGLE_RADIUS`] and each smaller one [`ANGLE_STEP`] further out, so
+/// vertex shared by several, the largest angle innermost at its
+/// [`angle_radius`] and each smaller one [`ANGLE_STEP`] further out, so
 /// that two adjacent angles (Ng's β and φ at the crank pin) read as two,
 /// and the smaller, whose letter needs the room, gets the longer arc. An
 /// arc arrow about the same vertex (the crank torque T about O) has the
@@ -284,7 +287,7 @@ pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64
             let least = (arrows.iter())
                 .filter(|(v, _)| at(v))
                 .map(|(_, r)| r + ANGLE_STEP)
-                .fold(ANGLE_RADIUS, f64::max);
+                .fold(angle_radius(sweep), f64::max);
             let on_foot = (feet.iter()).any(|(v, out)| at(v) && crosses(t, (start, sweep), *out));
             let least = if on_foot {
                 least.max(CLEAR_OF_BEARING)

@@ -74,11 +74,21 @@ const LINE_REACH: f64 = 6.0;
 /// clear.
 const ALONG_LINE: [f64; 5] = [0.5, 0.35, 0.65, 0.2, 0.8];
 
+/// What each page unit an angle's letter stands out from the point of
+/// its arc it was tried at costs ([`ALONG_ARC`]): 20 units out cost 2,
+/// more than a clear place beside another point of the arc, less than
+/// a crowded one.
+const ARC_STRAY: f64 = 0.1;
+
+/// How far (page units, past its gap) an angle's letter may stand out
+/// from the point of its arc it was tried at and still end the search.
+const ARC_CLOSE: f64 = 4.0;
+
 /// Where along its arc (from its start) an angle's letter is tried, in
 /// turn: beyond its middle, then towards either arm, until a place is
 /// clear. θ at 180° with the rod across the top of its half-circle stood
 /// 50 units above the circle, its arc's middle crowded (Fig. 62, offset).
-const ALONG_ARC: [f64; 5] = [0.5, 0.35, 0.65, 0.22, 0.78];
+pub(super) const ALONG_ARC: [f64; 5] = [0.5, 0.35, 0.65, 0.22, 0.78];
 
 /// The room, in font sizes, kept on either side of a name or a value
 /// placed within [`WIDE_REACH`] (about a word space).
@@ -102,30 +112,12 @@ struct Pending {
     joint: bool,
     /// The page line the text names, if any (a link's length).
     line: Option<(Point, Point)>,
-    /// The arc an angle's letter names, if any: the letter stands beyond
-    /// its middle where that is clear, else beyond another point of it
-    /// ([`ALONG_ARC`]), before it looks farther off.
-    arc: Option<AngleArc>,
-}
-
-/// An angle mark's arc in page terms: its centre, radius, and the page
-/// angles it starts at and turns through (radians).
-#[derive(Clone, Copy)]
-struct AngleArc {
-    centre: Point,
-    radius: f64,
-    start: f64,
-    sweep: f64,
-}
-
-impl AngleArc {
-    /// The point a share `t` along the arc and the unit direction to it
-    /// from the centre.
-    fn at(&self, t: f64) -> (Point, Vector) {
-        let w = self.start + self.sweep * t;
-        let u = Vector::new(w.cos(), w.sin());
-        (self.centre + u * self.radius, u)
-    }
+    /// The places an angle's letter is tried at in turn, each a point of
+    /// its arc and the page direction out from the arc's centre there
+    /// ([`ALONG_ARC`]): beyond its middle where that is clear, else beyond
+    /// another point of it, before it looks farther off. Empty for any
+    /// other label.
+    along: Vec<(Point, Vector)>,
 }
 
 impl Pending {
@@ -558,23 +550,32 @@ impl PanelLayout<'_> {
                 // there is clear, else by another point along it; an
                 // angle's letter likewise along its arc.
                 let place = |reach: f64, half: Vector| {
-                    let tries: Vec<(Point, Option<Vector>)> = match (p.line, p.arc) {
-                        (Some((a, b)), _) => (ALONG_LINE.iter())
+                    let tries: Vec<(Point, Option<Vector>)> = match p.line {
+                        Some((a, b)) => (ALONG_LINE.iter())
                             .map(|t| (a + (b - a) * *t, p.toward))
                             .collect(),
-                        (None, Some(arc)) => (ALONG_ARC.iter())
-                            .map(|t| arc.at(*t))
-                            .map(|(at, u)| (at, Some(u)))
-                            .collect(),
-                        (None, None) => return place_at(p.anchor, reach, half),
+                        None if !p.along.is_empty() => {
+                            p.along.iter().map(|&(at, u)| (at, Some(u))).collect()
+                        }
+                        None => return place_at(p.anchor, reach, half),
                     };
-                    let mut best = (p.anchor, f64::INFINITY);
+                    let arc = p.line.is_none();
+                    let (mut best, mut score) = ((p.anchor, f64::INFINITY), f64::INFINITY);
                     for (anchor, toward) in tries {
                         let at = place_from(anchor, toward, reach, half);
-                        if at.1 < best.1 {
-                            best = at;
+                        // An angle's letter clear but far out from this
+                        // point of its arc scores less than one clear
+                        // beside another point of it.
+                        let stray = match arc {
+                            true => {
+                                (Bounds::around(at.0, half).distance_to(anchor) - p.gap).max(0.0)
+                            }
+                            false => 0.0,
+                        };
+                        if at.1 + ARC_STRAY * stray < score {
+                            (best, score) = (at, at.1 + ARC_STRAY * stray);
                         }
-                        if best.1 < 1.0 {
+                        if best.1 < 1.0 && stray <= ARC_CLOSE {
                             break;
                         }
                     }

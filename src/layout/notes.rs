@@ -42,7 +42,7 @@ impl PanelLayout<'_> {
             line: line
                 .map(|[p, q]| (self.p(p), self.p(q)))
                 .filter(|(p, q)| finite(p) && finite(q) && p != q),
-            arc: None,
+            along: Vec::new(),
         });
         None
     }

@@ -135,6 +135,19 @@ impl Canvas {
         }
     }
 
+    /// A link's letter (`label-{name}`) naming the line `p q`: set beside
+    /// it and nearer it than any other link (a long rod's fixed b beside
+    /// the turning bar d a unit above it, whose letter over b's middle
+    /// named d); nothing when the line's middle is off the frame.
+    pub(crate) fn link_letter(&mut self, name: &str, (p, q): Seg, markup: &str) {
+        self.line_label(
+            format!("label-{name}"),
+            (p, q),
+            RichText::parse(markup),
+            TextSize::Letter,
+        );
+    }
+
     /// A letter or short markup near `anchor` (`label-{name}`), placed clear
     /// of lines by the renderer; nothing when `anchor` is off the frame.
     pub(crate) fn letter(&mut self, name: &str, anchor: Point, markup: &str, size: TextSize) {

@@ -2939,3 +2939,120 @@ fn an_obliquity_too_small_to_open_its_arc_is_given_in_the_notes() {
     );
     assert!(!common::read_text(&default).contains("too small to show"));
 }
+
+/// An angle's letter stands by its arc: beyond its middle where that is
+/// clear, else beyond another point of it, within an em and a half of
+/// it. θ at 180° with an offset
+/// (l = 2.62 r, e = 1.37 r) stood 50 units above the crank circle, the
+/// rod across its arc's middle; at 270.35° (l = 1.84 r, e = 0.632 r) at
+/// the top of the circle, far from where its arc starts (ninth review).
+#[test]
+fn an_angle_s_letter_stands_by_its_arc() {
+    let engines = [
+        (2.62, 1.37, 180.0),
+        (2.62, 1.37, 270.42),
+        (1.84, 0.632, 180.0),
+        (1.84, 0.632, 270.35),
+        (3.16, -1.74, 90.95),
+        (6.0, 0.0, 45.0),
+        (1.02, 0.0, 89.3),
+        (1.08, 0.0, 89.66),
+    ];
+    for figure in ["fig-62-displacement", "ng-fig-1-torque"] {
+        for (rod, offset, degrees) in engines {
+            let plate = Plate::read(&svg_at(figure, rod, offset, degrees));
+            for panel in &plate.panels {
+                for name in ["theta", "phi", "beta"] {
+                    let id = |what: &str| format!("{}{what}-{name}", panel.prefix);
+                    let arc = panel.strokes.iter().find(|s| s.id == id("angle"));
+                    let letter = panel.labels.iter().find(|l| l.id == id("label"));
+                    let (Some(arc), Some(letter)) = (arc, letter) else {
+                        continue;
+                    };
+                    let d = (arc.segs.iter())
+                        .map(|s| letter.rect.distance_to_seg(s))
+                        .fold(f64::INFINITY, f64::min);
+                    // Within an em and a half: beside its arc, or just
+                    // past a line crossing it (the rod across θ's arc).
+                    assert!(
+                        d <= 1.5 * letter.font_size,
+                        "{figure} l = {rod}, e = {offset}, {degrees}°: {} {d:.1} units from its arc",
+                        id("label")
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Two pins less than an em apart are read as a pair whose letters may
+/// stand either side, but a letter stands over its own pin where that is
+/// clear, not over the other's; at a dead centre Ng's M (at O, OM = 0) is
+/// not lettered a second time at O's pin. At a short rod's inner dead
+/// centre the detail read "M O P", O over P's pin (ninth review, 2).
+#[test]
+fn a_pair_s_letter_stands_nearer_its_own_pin() {
+    for width in [None, Some("120mm")] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, 1.02, 0.0).unwrap());
+        options.angle = Some(Angle::deg(180.0));
+        if let Some(w) = width {
+            options.width = Some(w.parse().unwrap());
+        }
+        let f = FigureName::NgFig1Torque.figure(&options).unwrap();
+        let plate = Plate::read(&to_svg(&f));
+        let detail = (plate.panels.iter())
+            .find(|p| {
+                p.labels
+                    .iter()
+                    .any(|l| l.id == format!("{}label-O", p.prefix))
+            })
+            .expect("O lettered");
+        let label = |k: &str| {
+            let id = format!("{}label-{k}", detail.prefix);
+            detail.labels.iter().find(|l| l.id == id).map(|l| l.rect)
+        };
+        assert!(label("M").is_none(), "M lettered at O's pin ({width:?})");
+        let (o, p) = (detail.markers["O"], detail.markers["P"]);
+        let at = label("O").unwrap();
+        let centre = ((at.x0 + at.x1) / 2.0, (at.y0 + at.y1) / 2.0);
+        let dist = |q: (f64, f64)| ((centre.0 - q.0).powi(2) + (centre.1 - q.1).powi(2)).sqrt();
+        assert!(
+            dist(o) < dist(p),
+            "O's letter at {centre:?} nearer P {p:?} than O {o:?} ({width:?})"
+        );
+    }
+}
+
+/// A link's letter stands nearer its own link than any other: the fixed
+/// rod b of a long rod's oscillating cylinder, the turning bar d a unit
+/// above it, had its letter over its middle, above d (ninth review, 2).
+#[test]
+fn a_link_s_letter_stands_nearer_its_own_link() {
+    for (figure, rod, offset, degrees) in [
+        ("inversion-3-oscillating-cylinder", 54.2, 0.0, 270.41),
+        ("inversion-3-oscillating-cylinder", 2.58, -1.15, 269.34),
+        ("inversion-2-rotating-block", 1.76, 0.422, 180.0),
+        ("inversion-3-oscillating-cylinder", 1.5, 0.0, 60.0),
+    ] {
+        let plate = Plate::read(&svg_at(figure, rod, offset, degrees));
+        let main = &plate.panels[0];
+        let letter = (main.labels.iter())
+            .find(|l| l.id == "label-link-b")
+            .expect("b lettered");
+        let distance = |id: &str| {
+            let stroke = main.strokes.iter().find(|s| s.id == id).unwrap();
+            (stroke.segs.iter())
+                .map(|s| letter.rect.distance_to_seg(s))
+                .fold(f64::INFINITY, f64::min)
+        };
+        let own = distance("link-rod");
+        for other in ["link-frame", "link-crank"] {
+            assert!(
+                own + 1.0 <= distance(other),
+                "{figure} l = {rod}, e = {offset}, {degrees}°: b {own:.1} from b, {:.1} from {other}",
+                distance(other)
+            );
+        }
+    }
+}

@@ -704,7 +704,7 @@ impl Drawing {
             self.s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
         }
         let s = &mut self.s;
-        s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
+        s.link_letter("link-b", (b, a), "*b*");
         let at = if self.fixed == Link::D {
             // Below the block, between the guides' hatching.
             mid(corners[0], corners[1]) - self.q.v * s.world(4.0)

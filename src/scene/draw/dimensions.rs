@@ -2,7 +2,7 @@
 //! mid-stroke, the stroke, r and l.
 
 use super::LayerCtx;
-use crate::figure::{ANGLE_RADIUS, RichText, Role, Shape, TextSize};
+use crate::figure::{RichText, Role, Shape, TextSize, angle_radius};
 use crate::geom::{Point, Vector};
 use crate::mechanism::SliderCrank;
 use crate::scene::canvas::{Canvas, Marker};
@@ -39,8 +39,9 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
     // arc from it to the rod.
     let ba = a - b;
     let phi = obliquity(ctx);
-    if canvas.page(ba.norm()) * phi.abs() > 6.0 && opens(phi) && !canvas.is_bare(b) {
-        let reach = canvas.world(PARALLEL).min(0.6 * ba.x);
+    let reach = canvas.world(PARALLEL).min(0.6 * ba.x);
+    let past_arc = canvas.page(reach) >= angle_radius(phi) + 4.0;
+    if canvas.page(ba.norm()) * phi.abs() > 6.0 && opens(phi) && past_arc && !canvas.is_bare(b) {
         canvas.segment(
             "line-parallel-B",
             Role::Auxiliary,
@@ -71,16 +72,16 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
     }
 }
 
-/// The least opening (page units) of an angle's arc at
-/// [`ANGLE_RADIUS`] for it to be drawn: a smaller one is a single line
+/// The least opening (page units) of an angle's arc at its
+/// [`angle_radius`] for it to be drawn: a smaller one is a single line
 /// with a letter beside it (φ at long rods, at most 1.2° at 48 cranks).
-const LEAST_OPENING: f64 = 2.0;
+const LEAST_OPENING: f64 = 3.0;
 
 /// Whether the obliquity `phi` (radians) opens its arc by
 /// [`LEAST_OPENING`]; where not, it is left unmarked and the notes give
 /// its value ([`phi_note`]).
 fn opens(phi: f64) -> bool {
-    ANGLE_RADIUS * phi.abs() >= LEAST_OPENING
+    angle_radius(phi) * phi.abs() >= LEAST_OPENING
 }
 
 /// The angle φ at B from the parallel to the stroke to the rod, as
@@ -105,8 +106,9 @@ pub(crate) fn phi_note(ctx: &LayerCtx, letter: &str) -> Option<RichText> {
 }
 
 /// Length of the parallel to the stroke through B that φ is measured
-/// from, page units.
-const PARALLEL: f64 = 62.0;
+/// from, page units: past the largest arc of an angle
+/// ([`crate::figure::ANGLE_RADIUS_MOST`]) by a margin.
+const PARALLEL: f64 = crate::figure::ANGLE_RADIUS_MOST + 12.0;
 
 /// Whether the displacement and the stroke are dimensioned above the
 /// guides: where the line of stroke runs above the whole crank circle
