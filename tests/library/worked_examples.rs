@@ -119,9 +119,7 @@ fn khurmi_example_16_5_flywheel_rim() {
 #[test]
 fn sarkar_illustration_12_1_residual_unbalanced_force() {
     let omega = rad_per_s(250.0);
-    let left = PartialBalance::new(2.0 / 3.0)
-        .unwrap()
-        .at(Angle::deg(30.0));
+    let left = PartialBalance::new(2.0 / 3.0).unwrap().at(Angle::deg(30.0));
     let force = 120.0 * omega * omega * 0.09 * left.magnitude;
     // The exact value is 3264.065 N; the worked solution turns degrees
     // into radians with 57.3 (not 180/π = 57.2958), which moves cos 30°
