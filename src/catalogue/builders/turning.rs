@@ -494,14 +494,24 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     let value = sig(tm.fluctuation);
     let text = RichText::parse(&format!("Δ*E* = {value} {t_unit}"));
     // On one line where it fits beside the dimension line, else its unit
-    // under its value: the unit is never dropped (at 120 mm and 4.5 in
-    // the value stood alone, "ΔE = 6281", where one line did not fit).
+    // under its value, else "ΔE =", the value and the unit on three
+    // lines: at 120 mm and 4.5 in the value stood alone, "ΔE = 6281"
+    // (the ninth review). Only where none of these fits beside the line
+    // is the unit left to the axis, the value still beside the line (set
+    // clear by the layout, it stood with the curve between it and its
+    // line, the sixth review).
     let tries = [
         vec![text.clone()],
         vec![
             RichText::parse(&format!("Δ*E* = {value}")),
             RichText::parse(&t_unit),
         ],
+        vec![
+            RichText::parse("Δ*E* ="),
+            RichText::parse(&value),
+            RichText::parse(&t_unit),
+        ],
+        vec![RichText::parse(&format!("Δ*E* = {value}"))],
     ];
     let energy = |deg: f64| stored(engine, tm, deg);
     let at = (tm.max_energy_deg, elo, ehi);
@@ -534,7 +544,7 @@ const DIMENSION_ROOM: f64 = 4.0;
 /// over the text's size.
 const LINE_SPACING: f64 = 1.25;
 
-/// ΔE's value `lines` (one, or the value over its unit) set beside its
+/// ΔE's value `lines` (one, or two or three with its unit last) set beside its
 /// dimension line at `at` = (θ, E_min, E_max), on the side `away` (+1
 /// right) first: at the height nearest the middle of the line where the
 /// lines' box, [`DIMENSION_ROOM`] from the line, has no part of the curve
@@ -542,8 +552,9 @@ const LINE_SPACING: f64 = 1.25;
 /// stands off E = 0, E_min and E_max. Where the label was only placed
 /// clear, on a narrow page it stood on the far side of the curve from its
 /// line (the curve between the two). The first line is
-/// `label-fluctuation`, a second `label-fluctuation-unit`, each centred
-/// on the box. `None` where no place beside the line is clear.
+/// `label-fluctuation`, the last of two or three
+/// `label-fluctuation-unit`, a middle one `label-fluctuation-value`, each
+/// centred on the box. `None` where no place beside the line is clear.
 fn beside_dimension(
     ctx: &Ctx,
     plot: &Plot,
@@ -599,9 +610,17 @@ fn beside_dimension(
         if let Some(&y) = heights.iter().find(|y| clear(**y)) {
             let x = 0.5 * (x0 + x1);
             let first_middle = y - 0.5 * height + above;
-            let ids = ["label-fluctuation", "label-fluctuation-unit"];
+            let ids: &[&str] = match lines.len() {
+                1 => &["label-fluctuation"],
+                2 => &["label-fluctuation", "label-fluctuation-unit"],
+                _ => &[
+                    "label-fluctuation",
+                    "label-fluctuation-value",
+                    "label-fluctuation-unit",
+                ],
+            };
             return Some(
-                (lines.iter().zip(ids).enumerate())
+                (lines.iter().zip(ids.iter().copied()).enumerate())
                     .map(|(i, (text, id))| {
                         let at = Point::new(x, first_middle + spacing * i as f64);
                         fixed_text(id.to_string(), map.invert(at), text.clone())
