@@ -35,6 +35,7 @@ mod scene_format;
 mod scenes;
 mod seeds;
 mod table_snapshots;
+mod worked_examples;
 // reads the bundled faces' glyphs (skrifa)
 #[cfg(feature = "fonts")]
 mod typography;

@@ -1797,3 +1797,130 @@ fn the_crank_pin_load_curves_are_the_newton_euler_loads_within_the_tolerance() {
         assert!(worst > 1e-4, "measured, not vacuous: {worst}");
     }
 }
+
+/// The points of the path `id` as written, in page units: each cubic
+/// sampled at 16 steps, in order.
+fn path_points(svg: &str, id: &str) -> Vec<P> {
+    let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
+    let mut out = Vec::new();
+    for (start, segs) in subpaths(&d) {
+        let mut at = start;
+        out.push(at);
+        for seg in &segs {
+            out.extend((1..=16).map(|i| eval(at, seg, i as f64 / 16.0)));
+            at = end(seg);
+        }
+    }
+    out
+}
+
+/// The page y of the drawn curve `points` (a function of x, in order of
+/// x) at the page x `x`, by the chord through its neighbours.
+fn curve_y(points: &[P], x: f64) -> f64 {
+    let w = points
+        .windows(2)
+        .find(|w| (w[0].0..=w[1].0).contains(&x))
+        .unwrap_or_else(|| panic!("x {x} off the curve"));
+    let s = if w[1].0 > w[0].0 {
+        (x - w[0].0) / (w[1].0 - w[0].0)
+    } else {
+        0.0
+    };
+    w[0].1 + (w[1].1 - w[0].1) * s
+}
+
+#[test]
+fn a_thin_area_of_the_turning_moment_is_lettered_inside_it_or_by_a_leader_into_it() {
+    // The ninth review: with an offset (r = 1, l = 2.09, e = 0.93) the
+    // thin areas a₁ and a₂ had their letters set beyond the curve, a₁
+    // above it and a₂ below it, as if naming the areas there. Read from
+    // the written curve and mean line alone.
+    for (l, e) in [(2.09, 0.93), (1.05, 0.0), (3.0, 0.0)] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            let case = format!("l {l} e {e} {width:?}");
+            let curve = path_points(&svg, "curve-torque");
+            let mean = path_points(&svg, "line-mean-torque")[0].1;
+            // The areas' ends: the curve's ends and its crossings of the
+            // mean line, in page x.
+            let mut bounds = vec![curve[0].0];
+            bounds.extend(curve.windows(2).filter_map(|w| {
+                let (a, b) = (w[0].1 - mean, w[1].1 - mean);
+                (a * b < 0.0).then(|| w[0].0 + (w[1].0 - w[0].0) * a / (a - b))
+            }));
+            bounds.push(curve.last().unwrap().0);
+            // Inside the area `k` (from 1): within its span, between the
+            // mean line and the curve.
+            let inside = |k: usize, p: P| {
+                let c = curve_y(&curve, p.0) - mean;
+                (bounds[k - 1]..=bounds[k]).contains(&p.0)
+                    && (p.1 - mean) * c > 0.0
+                    && (p.1 - mean).abs() < c.abs()
+            };
+            for k in 1..bounds.len() {
+                let id = format!("label-lobe-{k}");
+                let at = text_centre(&svg, &id);
+                if inside(k, at) {
+                    continue;
+                }
+                let leader = format!("leader-lobe-{k}");
+                let ends = path_points(&svg, &leader);
+                let em = num(&svg, &id, "font-size");
+                assert!(
+                    inside(k, ends[0]),
+                    "{case}: {id} at {at:?} outside its area, its leader from {:?}",
+                    ends[0]
+                );
+                assert!(
+                    dist(*ends.last().unwrap(), at) < em,
+                    "{case}: {leader} ends at {:?}, the letter at {at:?}",
+                    ends.last()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_turning_moments_fluctuation_keeps_its_unit_and_the_caption_its_formula() {
+    // The ninth review: "ΔE = 6281" without its unit at 120 mm, 4.5 in
+    // and 500 units wide (r = 1, l = 29.9, 54.4 and 36.2), and the
+    // caption of (b) broken between "T −" and "T_mean" at 4.5 in.
+    for l in [29.9, 54.4, 36.2, 52.3, 2.09] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(slider_crank::SliderCrank::in_line(1.0, l).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            let case = format!("l {l} {width:?}");
+            let mut said = text_of(&svg, "label-fluctuation");
+            for more in ["label-fluctuation-value", "label-fluctuation-unit"] {
+                if svg.contains(&format!("id=\"{more}\"")) {
+                    said = format!("{said} {}", text_of(&svg, more));
+                }
+            }
+            let plain: String = said.chars().filter(|c| !c.is_whitespace()).collect();
+            assert!(
+                plain.starts_with("ΔE=") && plain.ends_with("lbf·ft"),
+                "{case}: ΔE's label reads {said:?}"
+            );
+            for line in ["energy-caption", "energy-caption-2", "energy-caption-3"] {
+                if !svg.contains(&format!("id=\"{line}\"")) {
+                    break;
+                }
+                let text = text_of(&svg, line);
+                assert!(
+                    !text.contains('−') || text.contains("mean"),
+                    "{case}: {line} reads {text:?}, T − T_mean broken"
+                );
+            }
+        }
+    }
+}

@@ -236,7 +236,9 @@ fn lobes(ctx: &Ctx, plot: &mut Plot, engine: &Engine, tm: &TurningMoment) {
         // the value where it fitted, a large area went without and a
         // small one with ("a₂" beside "a₄ = +9517").
         let texts = [format!("*a*_{{{}}}", k + 1)];
-        plot.push(area_letter(ctx, plot, &column, tm.mean, &texts, k + 1));
+        for item in area_letter(ctx, plot, &column, tm.mean, &texts, k + 1) {
+            plot.push(item);
+        }
     }
 }
 
@@ -251,6 +253,16 @@ const AREA_ROOM: f64 = 2.0;
 /// letter is set in the area's wider part and the value is in the notes.
 const VALUE_ROOM: f64 = 4.0;
 
+/// Room, page units, about a bare letter set inside a thin area when it
+/// has not [`AREA_ROOM`]: a sliver 12 units deep at an offset (a₂ at
+/// r = 1, l = 2.09, e = 0.93) holds its letter this close to its lines
+/// rather than outside it: half a unit clear of a line's stroke.
+const SLIVER_ROOM: f64 = 1.0;
+
+/// How far, page units, the letter of an area too thin to hold it stands
+/// beyond the curve, a leader from it ending inside the area.
+const LEADER_REACH: f64 = 7.0;
+
 /// Where a text set at a fixed place has its place: the middle of its
 /// letters, this many ems above its baseline ([`Shape::Text`]).
 const MIDDLE: f64 = 0.35;
@@ -259,9 +271,11 @@ const MIDDLE: f64 = 0.35;
 /// `mean` and the torque sampled at `column` (θ, T): the first of `texts`
 /// whose box, with [`AREA_ROOM`] about it, fits wholly between the two
 /// somewhere and off the line T = 0, set where it has the most room (a
-/// text at a fixed place). Where none fits (a sliver), the last text
-/// beside the area's tallest point, on its side of the mean line, moved
-/// clear of the lines there.
+/// text at a fixed place); else the last with [`SLIVER_ROOM`]. Where none
+/// fits (a sliver), the last text beyond the curve by the area's tallest
+/// point with a leader `leader-lobe-{k}` into the area: set beside the
+/// area without one, a₁ and a₂ of an offset engine read as the letters
+/// of the areas beyond the curve.
 fn area_letter(
     ctx: &Ctx,
     plot: &Plot,
@@ -269,7 +283,7 @@ fn area_letter(
     mean: f64,
     texts: &[String],
     k: usize,
-) -> Item {
+) -> Vec<Item> {
     let map = plot.map();
     let size = ctx.style.font_size(TextSize::Small);
     let y_of = |t: f64| map.apply(Point::new(0.0, t)).y;
@@ -284,13 +298,8 @@ fn area_letter(
         .collect();
     let zero = y_of(0.0);
     let id = format!("label-lobe-{k}");
-    let side = column
-        .iter()
-        .map(|p| p.y - mean)
-        .fold(0.0, |a: f64, v| if v.abs() > a.abs() { v } else { a })
-        .signum();
     // Each text with room about it (a value more), then the last (the
-    // bare letter) without.
+    // bare letter) with less.
     let room_of = |t: &String| {
         if t.contains('=') {
             VALUE_ROOM
@@ -299,9 +308,11 @@ fn area_letter(
         }
     };
     // Not the bare letter with no room (it stood on the curve's dip at
-    // 25° at l = 1.05 r): where it has not its room, it is set beside the
-    // area, clear of the lines.
-    let tries = texts.iter().map(|t| (t, room_of(t)));
+    // 25° at l = 1.05 r): with [`SLIVER_ROOM`] its ink stays off the
+    // lines' strokes; where it has not that, it is set beyond the curve
+    // with a leader.
+    let bare = texts.last().into_iter().map(|t| (t, SLIVER_ROOM));
+    let tries = texts.iter().map(|t| (t, room_of(t))).chain(bare);
     for (text, room) in tries {
         let rich = RichText::parse(text);
         let ink = rich.measure(ctx.font, size);
@@ -311,49 +322,62 @@ fn area_letter(
         let half = (0.5 * ink.width + room, 0.5 * (above + below) + room);
         if let Some(centre) = roomiest(&page, half, zero) {
             let world = map.invert(centre - Vector::new(0.0, 0.5 * (below - above)));
-            return Item::new(
-                id,
-                Role::Label,
-                Shape::Text {
-                    at: world,
-                    offset: Vector::zeros(),
-                    text: rich,
-                    align: Align::Middle,
-                    size: TextSize::Small,
-                },
-            );
+            return vec![fixed_text(id, world, rich)];
         }
     }
+    // The column the leader runs into: the tallest, weighed by its
+    // distance from the area's ends (a tent, 1 at the middle), so that a
+    // sliver tallest at θ = 0 has its leader off the axis there.
+    let (first, last) = (
+        column.first().map_or(0.0, |p| p.x),
+        column.last().map_or(0.0, |p| p.x),
+    );
+    let weight = |p: &Point| {
+        let span = (last - first).abs().max(f64::MIN_POSITIVE);
+        (p.y - mean).abs() * (1.0 - (2.0 * p.x - first - last).abs() / span).max(0.0)
+    };
     let tallest = (column.iter())
         .copied()
-        .fold(Point::new(0.0, mean), |a, p| {
-            if (p.y - mean).abs() > (a.y - mean).abs() {
-                p
-            } else {
-                a
-            }
+        .fold(Point::new(0.5 * (first + last), mean), |a, p| {
+            if weight(&p) > weight(&a) { p } else { a }
         });
     let text = RichText::parse(texts.last().map_or("", String::as_str));
-    // A sliver within a letter's width of an end of the axis is lettered
-    // on the side towards the middle, not past the axis's end.
-    let reach =
-        (text.width(ctx.font, size) + 2.0 * AREA_ROOM) / map.apply_vector(Vector::x()).norm();
-    let inward = if tallest.x + reach > 360.0 {
-        -1.0
-    } else if tallest.x - reach < 0.0 {
-        1.0
-    } else {
-        0.0
-    };
+    let ink = text.measure(ctx.font, size);
+    let (above, below) = (ink.above - MIDDLE * size, ink.below + MIDDLE * size);
+    // The leader runs from the middle of that column out
+    // across the curve to the letter's nearest corner, which stands
+    // [`LEADER_REACH`] beyond the curve, towards the middle of the turn
+    // (so not past the axis's ends).
+    let inside = map.apply(Point::new(tallest.x, 0.5 * (tallest.y + mean)));
+    let curve = map.apply(tallest);
+    let out = if curve.y > inside.y { 1.0 } else { -1.0 };
+    let across = if tallest.x > 180.0 { -1.0 } else { 1.0 };
+    let corner = Point::new(curve.x + across * AREA_ROOM, curve.y + out * LEADER_REACH);
+    let centre = corner + Vector::new(across * 0.5 * ink.width, out * 0.5 * (above + below));
+    let at = map.invert(centre - Vector::new(0.0, 0.5 * (below - above)));
+    let leader = Item::new(
+        format!("leader-lobe-{k}"),
+        // A thin full line, as a dimension's (Auxiliary is dashed).
+        Role::Dimension,
+        Shape::Polyline {
+            points: vec![map.invert(inside), map.invert(corner)],
+            closed: false,
+        },
+    );
+    vec![fixed_text(id, at, text), leader]
+}
+
+/// A small text set at the world point `at`, its letters' middle there.
+fn fixed_text(id: String, at: Point, text: RichText) -> Item {
     Item::new(
         id,
         Role::Label,
-        Shape::Label {
-            anchor: Point::new(tallest.x, 0.5 * (tallest.y + mean)),
+        Shape::Text {
+            at,
+            offset: Vector::zeros(),
             text,
+            align: Align::Middle,
             size: TextSize::Small,
-            toward: Some(map.inverse().apply_vector(Vector::new(inward, -side))),
-            line: None,
         },
     )
 }
@@ -420,7 +444,7 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
         ctx.tolerance,
         ctx.font,
     )?
-    .with_caption("(b) Energy stored in the flywheel, *E*, the area under *T* − *T*_{mean} from θ = 0, its greatest and least (○) and its fluctuation Δ*E*");
+    .with_caption("(b) Energy stored in the flywheel, *E*, the area under *T*\u{a0}−\u{a0}*T*_{mean} from θ\u{a0}=\u{a0}0, its greatest and least (○) and its fluctuation Δ*E*");
     let e_curve = |deg: f64| -> Option<(Point, Vector)> {
         let slope = torque(engine, deg) - tm.mean;
         Some((
@@ -469,19 +493,32 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     };
     let value = sig(tm.fluctuation);
     let text = RichText::parse(&format!("Δ*E* = {value} {t_unit}"));
-    // Shorter where the whole does not fit beside the line: without the
-    // unit (the axis's), then the bare name (its value in the notes).
-    let texts = [
-        text.clone(),
-        RichText::parse(&format!("Δ*E* = {value}")),
-        RichText::parse("Δ*E*"),
+    // On one line where it fits beside the dimension line, else its unit
+    // under its value, else "ΔE =", the value and the unit on three
+    // lines: at 120 mm and 4.5 in the value stood alone, "ΔE = 6281"
+    // (the ninth review). Only where none of these fits beside the line
+    // is the unit left to the axis, the value still beside the line (set
+    // clear by the layout, it stood with the curve between it and its
+    // line, the sixth review).
+    let tries = [
+        vec![text.clone()],
+        vec![
+            RichText::parse(&format!("Δ*E* = {value}")),
+            RichText::parse(&t_unit),
+        ],
+        vec![
+            RichText::parse("Δ*E* ="),
+            RichText::parse(&value),
+            RichText::parse(&t_unit),
+        ],
+        vec![RichText::parse(&format!("Δ*E* = {value}"))],
     ];
     let energy = |deg: f64| stored(engine, tm, deg);
     let at = (tm.max_energy_deg, elo, ehi);
-    let item = (texts.iter())
-        .find_map(|text| beside_dimension(ctx, &plot, &energy, at, away, text))
+    let items = (tries.iter())
+        .find_map(|lines| beside_dimension(ctx, &plot, &energy, at, away, lines))
         .unwrap_or_else(|| {
-            Item::new(
+            vec![Item::new(
                 "label-fluctuation",
                 Role::Label,
                 Shape::Label {
@@ -491,9 +528,11 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
                     toward: Some(Vector::new(away, 0.0)),
                     line: None,
                 },
-            )
+            )]
         });
-    plot.push(item);
+    for item in items {
+        plot.push(item);
+    }
     Ok(plot)
 }
 
@@ -501,28 +540,41 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
 /// curve and the lines E = 0 and E = E_min about it.
 const DIMENSION_ROOM: f64 = 4.0;
 
-/// ΔE's value `text` set beside its dimension line at `at` = (θ, E_min,
-/// E_max), on the side `away` (+1 right) first (the figure tries the
-/// whole text, then shorter ones): at the height nearest
-/// the middle of the line where the text, [`DIMENSION_ROOM`] from the
-/// line, has no part of the curve `energy` between it and the line nor
-/// within the room about it, and stands off E = 0, E_min and E_max. Where
-/// the label was only placed clear, on a narrow page it stood on the far
-/// side of the curve from its line (the curve between the two). `None`
-/// where no place beside the line is clear.
+/// Between the lines of ΔE's value set in two, its middles' distance
+/// over the text's size.
+const LINE_SPACING: f64 = 1.25;
+
+/// ΔE's value `lines` (one, or two or three with its unit last) set beside its
+/// dimension line at `at` = (θ, E_min, E_max), on the side `away` (+1
+/// right) first: at the height nearest the middle of the line where the
+/// lines' box, [`DIMENSION_ROOM`] from the line, has no part of the curve
+/// `energy` between it and the line nor within the room about it, and
+/// stands off E = 0, E_min and E_max. Where the label was only placed
+/// clear, on a narrow page it stood on the far side of the curve from its
+/// line (the curve between the two). The first line is
+/// `label-fluctuation`, the last of two or three
+/// `label-fluctuation-unit`, a middle one `label-fluctuation-value`, each
+/// centred on the box. `None` where no place beside the line is clear.
 fn beside_dimension(
     ctx: &Ctx,
     plot: &Plot,
     energy: &dyn Fn(f64) -> f64,
     (deg, elo, ehi): (f64, f64, f64),
     away: f64,
-    text: &RichText,
-) -> Option<Item> {
+    lines: &[RichText],
+) -> Option<Vec<Item>> {
     let map = plot.map();
     let size = ctx.style.font_size(TextSize::Small);
-    let ink = text.measure(ctx.font, size);
-    let (above, below) = (ink.above - MIDDLE * size, ink.below + MIDDLE * size);
-    let half_high = 0.5 * (above + below) + DIMENSION_ROOM;
+    let inks: Vec<_> = lines.iter().map(|t| t.measure(ctx.font, size)).collect();
+    let (first, last) = (inks.first()?, inks.last()?);
+    // The ink above the first line's middle and below the last's, the
+    // lines' middles LINE_SPACING apart.
+    let above = first.above - MIDDLE * size;
+    let below = last.below + MIDDLE * size;
+    let spacing = LINE_SPACING * size;
+    let height = above + below + spacing * (lines.len() - 1) as f64;
+    let width = inks.iter().map(|i| i.width).fold(0.0, f64::max);
+    let half_high = 0.5 * height + DIMENSION_ROOM;
     let page = |t: f64, e: f64| map.apply(Point::new(t, e));
     let curve: Vec<Point> = (0..=720)
         .map(|k| 0.5 * k as f64)
@@ -542,7 +594,7 @@ fn beside_dimension(
     for side in [away, -away] {
         let (near, far) = (
             line + side * DIMENSION_ROOM,
-            line + side * (DIMENSION_ROOM + ink.width),
+            line + side * (DIMENSION_ROOM + width),
         );
         let (x0, x1) = (near.min(far), near.max(far));
         if x0 < left || x1 > right {
@@ -556,19 +608,25 @@ fn beside_dimension(
                     .all(|p| (p.y - y).abs() >= half_high)
         };
         if let Some(&y) = heights.iter().find(|y| clear(**y)) {
-            let centre = Point::new(0.5 * (x0 + x1), y);
-            let at = map.invert(centre - Vector::new(0.0, 0.5 * (below - above)));
-            return Some(Item::new(
-                "label-fluctuation",
-                Role::Label,
-                Shape::Text {
-                    at,
-                    offset: Vector::zeros(),
-                    text: text.clone(),
-                    align: Align::Middle,
-                    size: TextSize::Small,
-                },
-            ));
+            let x = 0.5 * (x0 + x1);
+            let first_middle = y - 0.5 * height + above;
+            let ids: &[&str] = match lines.len() {
+                1 => &["label-fluctuation"],
+                2 => &["label-fluctuation", "label-fluctuation-unit"],
+                _ => &[
+                    "label-fluctuation",
+                    "label-fluctuation-value",
+                    "label-fluctuation-unit",
+                ],
+            };
+            return Some(
+                (lines.iter().zip(ids.iter().copied()).enumerate())
+                    .map(|(i, (text, id))| {
+                        let at = Point::new(x, first_middle + spacing * i as f64);
+                        fixed_text(id.to_string(), map.invert(at), text.clone())
+                    })
+                    .collect(),
+            );
         }
     }
     None
