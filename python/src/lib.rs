@@ -10,9 +10,11 @@
 //! (`gas_force=` where the command line writes its flag).
 
 use numpy::{PyReadonlyArray1, PyReadwriteArray2, PyUntypedArrayMethods};
-use pyo3::exceptions::{PyOSError, PyValueError};
+use pyo3::exceptions::{PyOSError, PyOverflowError, PyValueError};
 use pyo3::prelude::*;
-use slider_crank::animate::{AnimateRequest, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD};
+use slider_crank::animate::{
+    AnimateRequest, AnimationFormat, DEFAULT_FRAMES, DEFAULT_PERIOD, frames_refused,
+};
 use slider_crank::catalogue::FigureRequest;
 use slider_crank::construct::Graphical;
 use slider_crank::dynamics::Gravity;
@@ -356,8 +358,8 @@ fn fill_chunk(
     width=None, height=None, title=None, animate=None, tikz=None, coupler=None, rod_mass=None,
     rod_cg=None, rod_gyration=None, cranks=None, planes=None, gravity=None, friction=None))]
 #[allow(clippy::too_many_arguments)]
-fn figure(
-    py: Python<'_>,
+fn figure<'py>(
+    py: Python<'py>,
     name: &str,
     crank: Option<f64>,
     rod: Option<f64>,
@@ -381,7 +383,7 @@ fn figure(
     width: Option<&str>,
     height: Option<&str>,
     title: Option<&str>,
-    animate: Option<(usize, f64, bool, String)>,
+    animate: Option<(Bound<'py, PyAny>, f64, bool, String)>,
     tikz: Option<bool>,
     coupler: Option<(f64, f64)>,
     rod_mass: Option<f64>,
@@ -455,15 +457,34 @@ fn animation(
     py: Python<'_>,
     name: FigureName,
     figure: FigureRequest,
-    (frames, period, projector, path): (usize, f64, bool, String),
+    (frames, period, projector, path): (Bound<'_, PyAny>, f64, bool, String),
 ) -> PyResult<String> {
     let format = AnimationFormat::from_path(Path::new(&path)).map_err(py_err)?;
     let mut request = AnimateRequest::default();
     request.figure = figure;
-    (request.frames, request.period) = (Some(frames), Some(period));
+    (request.frames, request.period) = (Some(frame_count(&frames)?), Some(period));
     request.projector = Some(projector);
     py.detach(|| request.animation(name).map(|a| a.encode(format)))
         .map_err(py_err)
+}
+
+/// A count of frames as the keyword gives it: an integer no `usize` holds
+/// (a negative one, or one from 2⁶⁴ up) is refused by the library's line
+/// for a count out of range ([`frames_refused`], a `ValueError` naming
+/// `frames=`), not by Python's `OverflowError`; one past the largest float
+/// is named as an infinity of its sign.
+fn frame_count(frames: &Bound<'_, PyAny>) -> PyResult<usize> {
+    frames.extract::<usize>().or_else(|e| {
+        if !e.is_instance_of::<PyOverflowError>(frames.py()) {
+            return Err(e);
+        }
+        let value = match frames.extract::<f64>() {
+            Ok(value) => value,
+            Err(_) if frames.lt(0)? => f64::NEG_INFINITY,
+            Err(_) => f64::INFINITY,
+        };
+        Err(py_err(frames_refused(value)))
+    })
 }
 
 /// The bytes of the figure whose SVG is `svg` in `format`: SVG, PNG at 2

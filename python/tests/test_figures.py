@@ -119,3 +119,25 @@ def test_animation_errors(cli: Cli, tmp_path: Path) -> None:
             call()
         assert str(caught.value) == message
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_count_of_frames_no_machine_integer_holds_is_refused_as_one_out_of_range(
+        cli: Cli, tmp_path: Path) -> None:
+    # The command line cannot be given -1 frames (its parser refuses the
+    # text); the package can, and refuses it with the library's line for a
+    # count out of range, as it refuses 1 frame: a ValueError, not Python's
+    # OverflowError from the conversion.
+    one = cli.error(["animate", "fig-66-kisch", "--frames=1", f"--out={tmp_path / 'a.svg'}"])
+    assert one.startswith("frames = 1 is out of range: ")
+    for n in (-1, -1000):
+        with pytest.raises(ValueError) as caught:
+            sc.animate("fig-66-kisch", tmp_path / "a.svg", frames=n)
+        assert str(caught.value) == one.replace("frames = 1 ", f"frames = {n} ")
+    # From 2⁶⁴ up (and below −2⁶³), the same refusal of the number given.
+    reason = one.split(" is out of range: ")[1]
+    for n in (2**64, 2**200, -(2**200), 10**400):
+        with pytest.raises(ValueError) as caught:
+            sc.animate("fig-66-kisch", tmp_path / "a.svg", frames=n)
+        assert str(caught.value).startswith("frames = "), n
+        assert str(caught.value).endswith(f" is out of range: {reason}"), n
+    assert list(tmp_path.iterdir()) == []

@@ -375,13 +375,23 @@ fn check_cost(count: usize, layers: usize) -> Result<()> {
     })
 }
 
+/// The refusal of `count` frames, a count outside
+/// [`MIN_FRAMES`]..=[`MAX_FRAMES`]: the one line every front end gives for
+/// it. `count` is the number as given, so that a front end whose integers
+/// no `usize` holds (a negative count from Python) refuses it with the same
+/// line rather than one of its own; nothing checks that `count` is in fact
+/// out of range.
+pub fn frames_refused(count: f64) -> Error {
+    Error::OutOfRange {
+        name: Field::Frames,
+        value: count,
+        reason: format!("an animation has {MIN_FRAMES} to {MAX_FRAMES} frames"),
+    }
+}
+
 fn angles(start: Angle, count: usize) -> Result<Vec<Angle>> {
     if !(MIN_FRAMES..=MAX_FRAMES).contains(&count) {
-        return Err(Error::OutOfRange {
-            name: Field::Frames,
-            value: count as f64,
-            reason: format!("an animation has {MIN_FRAMES} to {MAX_FRAMES} frames"),
-        });
+        return Err(frames_refused(count as f64));
     }
     (0..count)
         .map(|k| Angle::from_degrees(start.degrees() + 360.0 * k as f64 / count as f64))
@@ -418,6 +428,14 @@ mod tests {
         // 90° and 270° land exactly: D is at infinity there.
         let a = angles(Angle::deg(0.0), 4).unwrap();
         assert_eq!(a[1].cos(), 0.0);
+    }
+
+    #[test]
+    fn a_count_no_usize_holds_is_refused_by_the_same_line() {
+        assert_eq!(
+            frames_refused(-1.0).to_string(),
+            "frames = -1 is out of range: an animation has 2 to 3600 frames"
+        );
     }
 
     #[test]
