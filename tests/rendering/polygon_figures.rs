@@ -696,7 +696,7 @@ fn arrow_tip(svg: &str, id: &str) -> (f64, f64) {
     let head = &svg[at..];
     let second = head.match_indices(" d=\"M").nth(1).expect("a head").0 + 5;
     let n: Vec<f64> = head[second..]
-        .split(|c: char| c == ' ' || c == 'L')
+        .split([' ', 'L'])
         .take(2)
         .map(|t| t.parse().unwrap())
         .collect();
