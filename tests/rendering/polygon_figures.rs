@@ -4,7 +4,7 @@
 //! fifth review (docs/figures/review-2026-11e.md) where a reader misread
 //! them.
 
-use crate::common::attr;
+use crate::common::{attr, num};
 use crate::plate::{Label, Plate};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank};
@@ -686,4 +686,125 @@ fn a_sliding_acceleration_too_short_to_draw_is_said_so() {
     let name = FigureName::CoriolisInversion2;
     let default = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
     assert!(!default.contains("too short to be seen"));
+}
+
+/// The tip of the arrow `id` (its head's first point), page units.
+fn arrow_tip(svg: &str, id: &str) -> (f64, f64) {
+    let at = svg
+        .find(&format!(r#"id="{id}""#))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let head = &svg[at..];
+    let second = head.match_indices(" d=\"M").nth(1).expect("a head").0 + 5;
+    let n: Vec<f64> = head[second..]
+        .split([' ', 'L'])
+        .take(2)
+        .map(|t| t.parse().unwrap())
+        .collect();
+    (n[0], n[1])
+}
+
+/// The centre of the circle `id`, page units.
+fn dot(svg: &str, id: &str) -> (f64, f64) {
+    (num(svg, id, "cx"), num(svg, id, "cy"))
+}
+
+#[test]
+fn the_arrows_into_a_prime_end_on_it_in_the_detail() {
+    // The ninth review: inversion 2 at a long rod near 90° set o′a′ and
+    // the Coriolis component k a′ beside a′ in the ×25 detail (o′a′ 7
+    // units off it): o′a′ and o′n, one line far below the detail, were
+    // set apart there, and the Coriolis component moved off n a′_d. The
+    // polygon read as not closing. Both heads now end on a′'s dot.
+    for (rod, deg) in [(49.8, 90.89), (49.8, 269.21), (42.5, 90.44), (41.9, 89.41)] {
+        let svg = svg(FigureName::CoriolisInversion2, rod, 0.0, deg);
+        let a = dot(&svg, "detail-point-a2");
+        for id in ["detail-acceleration-oa", "detail-acceleration-coriolis"] {
+            let tip = arrow_tip(&svg, id);
+            let off = (tip.0 - a.0).hypot(tip.1 - a.1);
+            assert!(
+                off < 1.5,
+                "l = {rod} r, {deg}°: {id} ends {off:.1} units from a′"
+            );
+        }
+    }
+}
+
+/// The figure's text as read: its tags taken out (a space after each
+/// text element), its white space one space.
+fn words(svg: &str) -> String {
+    let mut out = String::new();
+    for (i, piece) in svg.split('<').enumerate() {
+        let text = match i {
+            0 => piece,
+            _ => piece.split_once('>').map_or("", |(tag, rest)| {
+                if tag.starts_with("/text") {
+                    out.push(' ');
+                }
+                rest
+            }),
+        };
+        out.push_str(text);
+    }
+    out.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+#[test]
+fn the_sliding_acceleration_s_sense_is_said() {
+    // The ninth review: inversion 3's notes gave the sliding acceleration
+    // as −145.9 ft/s², as inversion 2's, but drew k a′_d away from C
+    // where inversion 2 drew it towards C: the sign was not said. The
+    // notes now say which way the block's runs, and in inversion 3 that
+    // k a′_d (d's past the block) is drawn the other way.
+    let cases = [
+        (
+            FigureName::CoriolisInversion3,
+            "the block’s along d: towards C; ka′d, d’s past the block, is drawn away from C",
+        ),
+        (
+            FigureName::CoriolisInversion2,
+            "the block’s along d: towards C)",
+        ),
+    ];
+    for (name, said) in cases {
+        let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+        let text = words(&svg).replace('ʹ', "′");
+        assert!(text.contains(said), "{name:?}: no “{said}” in {text}");
+    }
+}
+
+#[test]
+fn a_coriolis_detail_at_a_long_rod_holds_a_prime_d() {
+    // The ninth review: inversion 3 at l = 45.6 r near 90° enlarged o′k
+    // (0.2 ft/s²) ×1000, and a′_d (4.5 ft/s² from o′) stood far off the
+    // detail: the polygon closed nowhere a reader could see. The detail
+    // now holds a′_d, lettered.
+    for (rod, deg) in [(45.6, 89.62), (45.6, 269.74), (40.0, 90.5), (60.0, 89.5)] {
+        let svg = svg(FigureName::CoriolisInversion3, rod, 0.0, deg);
+        assert!(
+            svg.contains("id=\"detail-label-ad2\""),
+            "l = {rod} r, {deg}°: no a′_d in the detail"
+        );
+    }
+}
+
+#[test]
+fn the_polygons_notes_set_each_prime_clear_of_what_follows() {
+    // The ninth review: the italic prime leant over the next glyph in the
+    // notes ("c′:" with the prime over the colon, "c′b′" with it on the
+    // b), and "(the velocity ab)²/AB" put its bracket round a word. A
+    // prime is now followed by a space or a narrow space, or ends a
+    // word, and the rod's normal component reads ab²/AB.
+    let name = FigureName::VelocityAccelerationPolygons;
+    let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    let text = words(&svg);
+    let chars: Vec<char> = text.chars().collect();
+    for w in chars.windows(2) {
+        assert!(
+            !(w[0] == 'ʹ' && (w[1].is_alphanumeric() || w[1] == ':')),
+            "“{}{}” in {text}",
+            w[0],
+            w[1]
+        );
+    }
+    assert!(!text.contains("(the velocity"), "{text}");
 }

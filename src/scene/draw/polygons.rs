@@ -554,6 +554,11 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         primed(Slider),
         primed(Coupler),
     );
+    // A primed image set before a letter or a colon is followed by a
+    // narrow space: the italic prime leans over the next glyph ("c′:" read
+    // with the prime over the colon, "c′b′" with it on the b).
+    let spaced = |s: &String| format!("{s}\u{202f}");
+    let (o2s, a2s, b2s) = (spaced(&o2), spaced(&a2), spaced(&b2));
     let (cap_a, cap_b) = (ctx.letter(Slider), ctx.letter(CrankPin));
     let v = &placed.velocity;
     let acc = &placed.acceleration;
@@ -581,13 +586,13 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             sig(w * vq)
         )),
         RichText::parse(&format!(
-            "Acceleration polygon, pole {o2}: 1 {u} represents {} {u}/s²; {o2}{b2} = {} {u} is ω²*r* = {} {u}/s² towards the crank centre.",
+            "Acceleration polygon, pole {o2s}: 1 {u} represents {} {u}/s²; {o2s}{b2} = {} {u} is ω²*r* = {} {u}/s² towards the crank centre.",
             sig(w * w / k),
             short(k * r),
             sig(w * w * r)
         )),
         RichText::parse(&format!(
-            "{b2}*x* = {} {u}: the rod’s normal component, (the velocity *{a}{b}*)²/*{cap_a}{cap_b}* = {} {u}/s²; *x{a}*′ = {} {u}: its tangential component, {} {u}/s², so the rod’s angular acceleration is *x{a}*′/*{cap_a}{cap_b}* = {} rad/s².",
+            "{b2s}*x* = {} {u}: the rod’s normal component, *{a}{b}*²/*{cap_a}{cap_b}* = {} {u}/s²; *x{a}*′ = {} {u}: its tangential component, {} {u}/s², so the rod’s angular acceleration is *x{a}*′/*{cap_a}{cap_b}* = {} rad/s².",
             len(normal),
             sig(w * w * normal),
             len(tangential),
@@ -595,7 +600,7 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             sig(w * w * acc.rod_angular_acceleration_ratio().abs())
         )),
         RichText::parse(&format!(
-            "{o2}{a2} = {} {u}: the piston’s acceleration {} {u}/s²; {o2}{q2} = {} {u}: *{}*’s, {} {u}/s².",
+            "{o2s}{a2} = {} {u}: the piston’s acceleration {} {u}/s²; {o2s}{q2} = {} {u}: *{}*’s, {} {u}/s².",
             len(acc.slider_acceleration_ratio()),
             sig(w * w * acc.slider_acceleration_ratio().abs()),
             len(aq),
@@ -606,7 +611,7 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
     let point = scene.coupler();
     if off_rod(ctx) {
         notes.push(RichText::parse(&format!(
-            "*{q_cap}* is a point of the rod’s plane, {} of *{cap_a}{cap_b}* from *{cap_a}* along it and {} of *{cap_a}{cap_b}* off it: the triangles *{a}{b}{q}* and {a2}{b2}{q2} are similar to *{cap_a}{cap_b}{q_cap}*.",
+            "*{q_cap}* is a point of the rod’s plane, {} of *{cap_a}{cap_b}* from *{cap_a}* along it and {} of *{cap_a}{cap_b}* off it: the triangles *{a}{b}{q}* and {a2s}{b2s}{q2} are similar to *{cap_a}{cap_b}{q_cap}*.",
             short(point.t()),
             short(point.across().abs()),
             q_cap = ctx.letter(Coupler),

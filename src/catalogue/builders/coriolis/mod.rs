@@ -25,7 +25,7 @@ use super::{Ctx, Sheet};
 use crate::chain::{CoriolisPolygon, Inversion, InvertedChain};
 use crate::error::{Error, Result};
 use crate::figure::{Figure, Hue, PageRect};
-use crate::geom::Point;
+use crate::geom::{Point, Vector};
 use crate::scene::Canvas;
 use serde_json::json;
 
@@ -142,7 +142,12 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     if let Some(w) = a_window {
         details.push(detail_plot(ctx, a_below, &acceleration_drawn, &w, &angles)?);
     }
-    let sliding_seen = sliding_drawn(&polygons, acceleration.map().scale(), a_window);
+    let a_scale = acceleration.map().scale();
+    let sliding = polygons.p.a_d_acceleration() - polygons.k();
+    let seen = (
+        drawn_length(sliding, a_scale, a_window),
+        drawn_length(polygons.p.coriolis(), a_scale, a_window),
+    );
     let rule = rule_plot(ctx, rule_rect, &polygons)?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
@@ -167,17 +172,18 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.height(bottom + NOTES_LINES * super::NOTE_LINE + MARGIN);
     sheet.notes(
         Point::new(20.0, bottom),
-        &notes(ctx, &chain, &polygons, (v_bar, a_bar), sliding_seen),
+        &notes(ctx, &chain, &polygons, (v_bar, a_bar), seen),
     );
     Ok(sheet.finish())
 }
 
-/// The page length of the sliding acceleration (k a′_d) where it is drawn
+/// The page length of a side of the acceleration polygon (the sliding
+/// acceleration k a′_d, the Coriolis component) where it is drawn
 /// largest: in the acceleration polygon's detail where it has one, else
 /// in the polygon at `scale` page units per unit; with the detail's
 /// magnification (`None` without one).
-fn sliding_drawn(polygons: &Polygons, scale: f64, window: Option<Window>) -> (f64, Option<f64>) {
-    let length = (polygons.p.a_d_acceleration() - polygons.k()).norm() * scale;
+fn drawn_length(side: Vector, scale: f64, window: Option<Window>) -> (f64, Option<f64>) {
+    let length = side.norm() * scale;
     match window {
         Some(w) => (length * w.magnification, Some(w.magnification)),
         None => (length, None),

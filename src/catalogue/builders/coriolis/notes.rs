@@ -38,7 +38,7 @@ pub(super) fn notes(
     chain: &InvertedChain,
     polygons: &Polygons,
     bars: (f64, f64),
-    (sliding_seen, magnified): (f64, Option<f64>),
+    seen: ((f64, Option<f64>), (f64, Option<f64>)),
 ) -> Vec<String> {
     let m = &ctx.mechanism;
     let u = ctx.unit();
@@ -99,21 +99,16 @@ pub(super) fn notes(
     // A sliding acceleration too short to draw even where the polygon is
     // enlarged (inversion 2 at l = 40 r, 89°: 12 ft/s² against a Coriolis
     // component of 1370, under a unit at ×20) is said so: k stands on a′_d.
-    let unseen = if sliding != 0.0 && sliding_seen < super::MIN_ARROW {
-        // Under a tenth of a unit it is not written "0.0 units".
-        let drawn = match sliding_seen < 0.1 {
-            true => "under 0.1".to_string(),
-            false => format!("{sliding_seen:.1}"),
-        };
-        format!(
-            " (drawn {drawn} units long{}, too short to be seen: *k* stands on *a*′_{{d}})",
-            magnified.map_or(String::new(), |m| format!(" at ×{}", short(m))),
-        )
-    } else {
-        String::new()
-    };
+    let sliding_said = said(&[
+        sliding_sense(inversion, sliding),
+        unseen(sliding, seen.0, "*k* stands on *a*′_{d}"),
+    ]);
+    let coriolis_unseen = said(&[match inversion {
+        Inversion::Rod => unseen(coriolis_size, seen.1, "*k* stands on *o*′"),
+        _ => unseen(coriolis_size, seen.1, "*k* stands on *a*′"),
+    }]);
     let acceleration = format!(
-        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{unseen}.",
+        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{sliding_said}.",
         short(bars.1),
         match inversion {
             Inversion::Rod => "C",
@@ -125,7 +120,7 @@ pub(super) fn notes(
         sig(sliding),
     );
     let coriolis = format!(
-        "The Coriolis component {} = 2ω_{{d}}*v* = {} {u}/s²: the sliding velocity *v* ({}) turned 90° in the sense of ω_{{d}}{}.",
+        "The Coriolis component {} = 2ω_{{d}}*v* = {} {u}/s²{coriolis_unseen}: the sliding velocity *v* ({}) turned 90° in the sense of ω_{{d}}{}.",
         match inversion {
             // A narrow space after the prime: set in italic with its o,
             // it leant onto k's ascender ("o′k" read as one glyph).
@@ -146,4 +141,58 @@ pub(super) fn notes(
         },
     );
     vec![first, velocity, acceleration, coriolis]
+}
+
+/// The remarks `parts` after a value, in one bracket ("; " between them),
+/// those empty left out; nothing where all are.
+fn said(parts: &[String]) -> String {
+    let kept: Vec<&str> = (parts.iter())
+        .map(String::as_str)
+        .filter(|p| !p.is_empty())
+        .collect();
+    match kept.is_empty() {
+        true => String::new(),
+        false => format!(" ({})", kept.join("; ")),
+    }
+}
+
+/// What the notes say of a side of value `value` drawn `seen` page units
+/// long at its largest (at the detail's magnification, if any) where
+/// that is too short to be seen (under [`super::MIN_ARROW`]): how long,
+/// and `stands` (which point its end stands on); nothing for a nil side
+/// or one seen.
+fn unseen(value: f64, (seen, magnified): (f64, Option<f64>), stands: &str) -> String {
+    if value == 0.0 || seen >= super::MIN_ARROW {
+        return String::new();
+    }
+    // Under a tenth of a unit it is not written "0.0 units".
+    let drawn = match seen < 0.1 {
+        true => "under 0.1".to_string(),
+        false => format!("{seen:.1}"),
+    };
+    format!(
+        "drawn {drawn} units long{}, too short to be seen: {stands}",
+        magnified.map_or(String::new(), |m| format!(" at ×{}", short(m))),
+    )
+}
+
+/// The sense of the sliding acceleration `s` (the block's along d, the
+/// engine's d²x_A/dt²: positive as CA grows) in words: towards or away
+/// from C; in inversion 3, where the polygon draws d's past the block
+/// (k a′_d), that it is drawn the other way (the ninth review read
+/// −145.9 ft/s² drawn away from C as a sign left unsaid). Nil: nothing.
+fn sliding_sense(inversion: Inversion, s: f64) -> String {
+    if s == 0.0 {
+        return String::new();
+    }
+    let (block, drawn) = match s < 0.0 {
+        true => ("towards", "away from"),
+        false => ("away from", "towards"),
+    };
+    match inversion {
+        Inversion::Rod => format!(
+            "the block’s along *d*: {block} *C*; *ka*′_{{d}}, *d*’s past the block, is drawn {drawn} *C*"
+        ),
+        _ => format!("the block’s along *d*: {block} *C*"),
+    }
 }

@@ -138,13 +138,13 @@ pub(super) fn polygon_plot(
     let map = *plot.map();
     let window = drawn
         .subject
-        .and_then(|side| window(&drawn.points, side, map.scale(), detail));
+        .and_then(|side| window(&drawn.points, side, closing(drawn), map.scale(), detail));
     let mut s = Canvas::new(map, map.world_frame(&plot.area()));
     if let Some(w) = window {
         s = s.quiet(w.frame);
     }
     let old = s.set_hue(Some(drawn.hue));
-    let offsets = apart(&s, &drawn.arrows, MIN_ARROW);
+    let offsets = apart(&s, drawn, MIN_ARROW);
     for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
         let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         let length = s.page((to - from).norm());
@@ -181,17 +181,30 @@ pub(super) fn polygon_plot(
     Ok((plot, bar, Value::Object(points), window))
 }
 
+/// Where a polygon closes: the end of its result (a′_d), if it has one.
+fn closing(drawn: &Drawn) -> Option<Vector> {
+    (drawn.arrows.iter())
+        .find(|a| a.1 == Role::Result)
+        .map(|a| a.3)
+}
+
 /// The region a polygon's detail enlarges, where its subject `side` is
 /// drawn shorter than [`SUBJECT_LEAST`] at `scale` (page units per unit):
 /// the points crowding about the subject (within [`CROWD`] of it or of
 /// each other) whole where they fit the detail's `area` with the subject
 /// at most [`SUBJECT_MOST`] and at least [`SUBJECT_WHOLE`], else the
-/// subject at twice [`SUBJECT_LEAST`] about its middle (the long sides run off the detail's edge); the
-/// magnification a round step. `None` where the subject reads in the
-/// polygon itself.
+/// subject at twice [`SUBJECT_LEAST`] about its middle (the long sides
+/// run off the detail's edge), but where the crowd holds the point the
+/// polygon closes at (`closing`): that is never left off the detail,
+/// the subject drawn as short as it then is (inversion 3 at l = 45.6 r,
+/// 89.62°: o′k, 0.2 ft/s² against a sliding acceleration of 4.5, drawn
+/// 80 units at ×1000 with a′_d far off the detail's edge; now whole at
+/// ×50); the magnification a round step. `None` where the subject reads
+/// in the polygon itself.
 pub(super) fn window(
     points: &[Lettered],
     side: Subject,
+    closing: Option<Vector>,
     scale: f64,
     area: (f64, f64),
 ) -> Option<Window> {
@@ -216,7 +229,8 @@ pub(super) fn window(
     let room = (area.0 - 2.0 * DETAIL_PAD, area.1 - 2.0 * DETAIL_PAD);
     let fit = (room.0 / size.x).min(room.1 / size.y);
     let whole = fit.min(SUBJECT_MOST / length);
-    let wanted = if whole * length >= SUBJECT_WHOLE {
+    let closes = closing.is_some_and(|c| crowd.contains(&c));
+    let wanted = if closes || whole * length >= SUBJECT_WHOLE {
         whole
     } else {
         2.0 * SUBJECT_LEAST / length
@@ -311,7 +325,7 @@ pub(super) fn detail_plot(
     let map = *plot.map();
     let mut s = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
     let old = s.set_hue(Some(drawn.hue));
-    let offsets = apart(&s, &drawn.arrows, DETAIL_LEAST);
+    let offsets = apart(&s, drawn, DETAIL_LEAST);
     for ((id, role, from, to), off) in drawn.arrows.iter().zip(offsets) {
         let (from, to) = (Point::from(*from) + off, Point::from(*to) + off);
         // The piece inside the frame; a side that misses it has none (the
@@ -344,36 +358,47 @@ pub(super) fn detail_plot(
 /// each arrow and its head are seen on their own.
 pub(super) const SIDE_APART: f64 = 7.0;
 
-/// The offsets (world) that set each of a polygon's `arrows` drawn on
-/// `s` clear of those it would run over ([`side_by_side`]), those drawn
+/// The offsets (world) that set each of a polygon's arrows drawn on `s`
+/// clear of those it would run over ([`side_by_side`]), each side taken
+/// as the piece of it `s` shows (a detail's sides clipped at its frame:
+/// at l = 49.8 r, 90.89° inversion 2's o′a′ and o′n, one line far below
+/// the ×25 detail, were set apart there though a′ and n stand 85 units
+/// apart in it, o′a′'s head stopping 7 units beside a′), those drawn
 /// shorter than `least` page units counted as points (a panel draws none
 /// shorter than [`MIN_ARROW`], a detail down to [`DETAIL_LEAST`]: at
 /// l = 26 r, 89.9° inversion 3's o′k, 11.4 units at ×500, lay along
-/// o′c′): the result
-/// (the heavier side) keeps its place, the others are set beside it in
-/// their order (inversion 2 at l = 1.06 r, 180°: o′n, a′_d k and o′a′_d
-/// on one line read as one line with a head at either end).
-fn apart(s: &Canvas, arrows: &[Arrow], least: f64) -> Vec<Vector> {
-    let result = |a: &&(usize, &Arrow)| a.1.1 == Role::Result;
-    let all: Vec<(usize, &Arrow)> = arrows.iter().enumerate().collect();
-    let order: Vec<&(usize, &Arrow)> = (all.iter().filter(result))
-        .chain(all.iter().filter(|a| !result(a)))
-        .collect();
+/// o′c′): the result (the heavier side) keeps its place, then the
+/// subject (the Coriolis component, its head on its point), the others
+/// set beside them in their order (inversion 2 at l = 1.06 r, 180°: o′n,
+/// a′_d k and o′a′_d on one line read as one line with a head at either
+/// end). A side the frame misses counts as a point.
+fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
+    let rank = |a: &Arrow| {
+        if a.1 == Role::Result {
+            0
+        } else if drawn.subject == Some((a.2, a.3)) {
+            1
+        } else {
+            2
+        }
+    };
+    let mut order: Vec<(usize, &Arrow)> = drawn.arrows.iter().enumerate().collect();
+    order.sort_by_key(|(_, a)| rank(a));
     let sides: Vec<(Point, Point)> = (order.iter())
         .map(|(_, (_, _, from, to))| {
-            let drawn = s.page((to - from).norm()) >= least;
-            (
-                Point::from(*from),
-                Point::from(if drawn { *to } else { *from }),
-            )
+            let (from, to) = (Point::from(*from), Point::from(*to));
+            match s.frame().clip_segment(from, to) {
+                Some((p, q)) if s.page((q - p).norm()) >= least => (p, q),
+                _ => (from, from),
+            }
         })
         .collect();
-    let mut offsets = vec![Vector::zeros(); arrows.len()];
+    let mut offsets = vec![Vector::zeros(); drawn.arrows.len()];
     for ((i, _), o) in order
         .into_iter()
         .zip(side_by_side(&sides, s.world(SIDE_APART)))
     {
-        if let Some(slot) = offsets.get_mut(*i) {
+        if let Some(slot) = offsets.get_mut(i) {
             *slot = o;
         }
     }
