@@ -1396,11 +1396,16 @@ fn legends_are_clear_of_the_curves_on_every_page() {
 /// The turning-moment figure of the in-line engine (r, l) in feet on a
 /// page `width` wide (the default page for `None`).
 fn turning_moment(r: f64, l: f64, width: Option<&str>) -> String {
+    turning_moment_offset((r, l, 0.0), width)
+}
+
+/// [`turning_moment`] of the engine (r, l, e), offset e.
+fn turning_moment_offset((r, l, e): (f64, f64, f64), width: Option<&str>) -> String {
     let mut o = match width {
         Some(w) => common::on_page(w, None),
         None => FigureOptions::default(),
     };
-    o.mechanism = Some(slider_crank::SliderCrank::in_line(r, l).unwrap());
+    o.mechanism = Some(slider_crank::SliderCrank::new(r, l, e).unwrap());
     to_svg(&FigureName::TurningMoment.figure(&o).unwrap())
 }
 
@@ -1524,12 +1529,7 @@ fn the_turning_moments_area_letters_clear_the_mean_line_and_keep_within_the_axis
     // line, a₅ past the axis's end at 360°.
     for (l, e) in [(1.05, 0.0), (1.06, 0.0), (2.79, 0.903), (39.5, 0.0)] {
         for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
-            let mut o = match width {
-                Some(w) => common::on_page(w, None),
-                None => FigureOptions::default(),
-            };
-            o.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
-            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            let svg = turning_moment_offset((1.0, l, e), width);
             let case = format!("l {l} e {e} {width:?}");
             // The mean line, level from the axis's start to its end.
             let d = attr(&svg, "line-mean-torque", "d").unwrap();
@@ -1837,12 +1837,7 @@ fn a_thin_area_of_the_turning_moment_is_lettered_inside_it_or_by_a_leader_into_i
     // the written curve and mean line alone.
     for (l, e) in [(2.09, 0.93), (1.05, 0.0), (3.0, 0.0)] {
         for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
-            let mut o = match width {
-                Some(w) => common::on_page(w, None),
-                None => FigureOptions::default(),
-            };
-            o.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
-            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            let svg = turning_moment_offset((1.0, l, e), width);
             let case = format!("l {l} e {e} {width:?}");
             let curve = path_points(&svg, "curve-torque");
             let mean = path_points(&svg, "line-mean-torque")[0].1;
