@@ -83,11 +83,12 @@ impl PanelLayout<'_> {
     /// The radius of the angle mark of `sweep` (its size) at the page
     /// point `c`: [`angle_radius`] (larger for a small angle), and [`ANGLE_STEP`] more for each larger
     /// angle at the same vertex ([`angle_radii`]).
-    fn angle_radius(&self, c: Point, sweep: f64) -> f64 {
-        self.angle_radii
-            .iter()
-            .find(|(v, s, _)| (*v - c).norm() < 1.0 && *s == sweep)
-            .map_or(angle_radius(sweep), |(_, _, r)| *r)
+    fn angle_radius(&mut self, c: Point, sweep: f64) -> f64 {
+        // Each entry serves one mark, in drawing order: two equal angles
+        // at one vertex take their two radii in turn.
+        let found =
+            (self.angle_radii.iter()).position(|(v, s, _)| (*v - c).norm() < 1.0 && *s == sweep);
+        found.map_or(angle_radius(sweep), |k| self.angle_radii.remove(k).2)
     }
 
     /// An angle mark: an arc of page radius [`ANGLE_RADIUS`] about
@@ -279,10 +280,18 @@ pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64
         .collect();
     marks
         .iter()
-        .map(|&(c, start, sweep)| {
+        .enumerate()
+        .map(|(k, &(c, start, sweep))| {
             let at = |v: &Point| (*v - c).norm() < 1.0;
-            let larger = (marks.iter())
-                .filter(|(v, _, s)| at(v) && s.abs() > sweep.abs())
+            // Two equal angles at one vertex (Ng's φ and β at 180°, on
+            // the same arms) take two radii too, the first drawn inside:
+            // on one arc the two letters read as one angle's.
+            let larger = (marks.iter().enumerate())
+                .filter(|(j, (v, b, s))| {
+                    let equal =
+                        s.abs() == sweep.abs() && *j < k && within((*b, *s), start + 0.5 * sweep);
+                    at(v) && (s.abs() > sweep.abs() || equal)
+                })
                 .count();
             let least = (arrows.iter())
                 .filter(|(v, _)| at(v))
@@ -297,6 +306,19 @@ pub(super) fn angle_radii(t: &PageFromWorld, items: &[&Item]) -> Vec<(Point, f64
             (c, sweep.abs(), least + ANGLE_STEP * larger as f64)
         })
         .collect()
+}
+
+/// Whether the world direction `w` lies within the arc from the world
+/// angle `start` turning `sweep`: an equal angle's middle there draws on
+/// the same arc.
+fn within((start, sweep): (f64, f64), w: f64) -> bool {
+    let turned = (w - start).rem_euclid(std::f64::consts::TAU);
+    let turned = if sweep < 0.0 {
+        std::f64::consts::TAU - turned
+    } else {
+        turned
+    };
+    turned < sweep.abs()
 }
 
 /// The least radius (page units) of an angle's arc that passes over a

@@ -3056,3 +3056,29 @@ fn a_link_s_letter_stands_nearer_its_own_link() {
         }
     }
 }
+
+/// Two equal angles at one vertex are drawn as two arcs: at 180° Ng's φ
+/// (from the parallel to the stroke) and β (from the crank) share their
+/// arms, and on one arc their two letters read as one angle's (tenth
+/// review, 2.5).
+#[test]
+fn two_equal_angles_at_a_vertex_take_two_arcs() {
+    for (rod, offset) in [(1.38, -0.286), (2.0, 0.4), (1.5, -0.2)] {
+        let plate = Plate::read(&svg_at("ng-fig-1-torque", rod, offset, 180.0));
+        let main = &plate.panels[0];
+        let c = main.markers["C"];
+        let radius = |id: &str| {
+            let arc = main.strokes.iter().find(|s| s.id == id);
+            let arc = arc.unwrap_or_else(|| panic!("l = {rod}, e = {offset}: no {id}"));
+            let far = |p: Pt| ((p.0 - c.0).powi(2) + (p.1 - c.1).powi(2)).sqrt();
+            (arc.segs.iter())
+                .map(|s| far(s.0).max(far(s.1)))
+                .fold(0.0, f64::max)
+        };
+        let (phi, beta) = (radius("angle-phi"), radius("angle-beta"));
+        assert!(
+            (phi - beta).abs() >= 6.0,
+            "l = {rod}, e = {offset}: φ's arc at {phi:.1}, β's at {beta:.1}"
+        );
+    }
+}
