@@ -437,6 +437,39 @@ fn ngs_velocities_keep_off_the_forces_arrows() {
     }
 }
 
+/// Ng's Fig. 1 (tenth review): F_c, coming to the crank pin in the
+/// torque's sense, and v_c, leaving it in ω's, lay on one line through
+/// the pin, read as one line with two heads (at the dead centres, and at
+/// the default). v_c now stands off F_c's line: the farthest of F_c's
+/// points from v_c's line is 4 units off it or more.
+#[test]
+fn ngs_crank_pin_velocity_is_not_on_the_forces_line() {
+    for l in [1.02, 1.38, 2.88, 30.0] {
+        for deg in [0.0, 60.0, 120.0, 180.0, 240.0, 300.0] {
+            let text = svg(FigureName::NgFig1Torque, Some((1.0, l, 0.0, deg)), None);
+            let plate = Plate::read(&text);
+            for panel in &plate.panels {
+                let (vc, fc) = (pieces(panel, "velocity-vc"), pieces(panel, "force-Fc"));
+                let Some(line) = vc.first() else {
+                    continue;
+                };
+                let (d, n) = ((line.1.0 - line.0.0, line.1.1 - line.0.1), 0.0);
+                let len = (d.0 * d.0 + d.1 * d.1).sqrt();
+                let off =
+                    |p: plate::Pt| ((p.0 - line.0.0) * d.1 - (p.1 - line.0.1) * d.0).abs() / len;
+                let farthest = (fc.iter())
+                    .flat_map(|s| [off(s.0), off(s.1)])
+                    .fold(n, f64::max);
+                assert!(
+                    fc.is_empty() || farthest >= 4.0,
+                    "l = {l} r, {deg}°, {}: F_c within {farthest:.1} of v_c's line",
+                    panel.id
+                );
+            }
+        }
+    }
+}
+
 /// Inversion 2 at its default (eighth review): O_cd at infinity on the
 /// line A O_bd had its arrow begin at O_bd's dot by the page's edge, and
 /// "O_cd at ∞" stood stacked on O_bd's letter over the one dot. The page

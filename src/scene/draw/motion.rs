@@ -71,6 +71,17 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
             let to = b - u * world(PIN_SHORT);
             let from = to - u * world(VC_ARROW);
             (from, to, from)
+        } else if shares_fc {
+            // From the pin it would continue F_c's line, F_c's head at the
+            // pin: one line through the pin with two heads (Ng's Fig. 1 at
+            // a dead centre, tenth review). It leaves the pin beside that
+            // line, set off it away from the rod or the rod produced,
+            // whichever runs on its side of the pin (the produced rod to M).
+            let ahead = if rod.dot(&u) > 0.0 { rod } else { -rod };
+            let side = away_from(ahead, cb) * world(super::torque::ALONGSIDE);
+            let from = b + u * world(PIN_SHORT) + side;
+            let to = from + u * world(VC_ARROW);
+            (from, to, to)
         } else {
             let to = b + u * world(VC_ARROW);
             (b, to, to)
