@@ -135,6 +135,7 @@ impl PanelLayout<'_> {
                 joint: false,
                 line: None,
                 along,
+                wedge: Some((c, dir, 0.5 * sweep.abs())),
             });
         }
         Some(self.open_line(ink, course))

@@ -40,7 +40,7 @@ use labels::{Bounds, NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
 pub use mark::{
     Mark, Paint, PathCommand, PathData, Shape as MarkShape, Stroke, TextAnchor, TextMark,
 };
-use markup::{path, polyline_d};
+use markup::{path, polyline_d, unit};
 pub use placed::{PlacedFigure, PlacedPanel};
 use text::{ink_box, starts_italic, text_node};
 
@@ -80,6 +80,11 @@ const ALONG_LINE: [f64; 5] = [0.5, 0.35, 0.65, 0.2, 0.8];
 /// a crowded one.
 const ARC_STRAY: f64 = 0.1;
 
+/// What a place outside its angle costs an angle's letter more: more
+/// than a clear place 10 units out from its arc (Ng's φ above its dashed
+/// reference read as the angle above it).
+const OUTSIDE_ANGLE: f64 = 1.0;
+
 /// How far (page units, past its gap) an angle's letter may stand out
 /// from the point of its arc it was tried at and still end the search.
 const ARC_CLOSE: f64 = 4.0;
@@ -118,6 +123,10 @@ struct Pending {
     /// another point of it, before it looks farther off. Empty for any
     /// other label.
     along: Vec<(Point, Vector)>,
+    /// An angle's vertex, the page direction of its middle and half its
+    /// size (radians): a place for its letter outside the angle costs
+    /// [`OUTSIDE_ANGLE`] more. None for any other label.
+    wedge: Option<(Point, Vector, f64)>,
 }
 
 impl Pending {
@@ -572,8 +581,13 @@ impl PanelLayout<'_> {
                             }
                             false => 0.0,
                         };
-                        if at.1 + ARC_STRAY * stray < score {
-                            (best, score) = (at, at.1 + ARC_STRAY * stray);
+                        let outside = p.wedge.is_some_and(|(c, mid, half)| {
+                            unit(at.0 - c).is_some_and(|u| u.dot(&mid) < half.cos())
+                        });
+                        let here =
+                            at.1 + ARC_STRAY * stray + f64::from(u8::from(outside)) * OUTSIDE_ANGLE;
+                        if here < score {
+                            (best, score) = (at, here);
                         }
                         if best.1 < 1.0 && stray <= ARC_CLOSE {
                             break;

@@ -43,6 +43,7 @@ impl PanelLayout<'_> {
                 .map(|[p, q]| (self.p(p), self.p(q)))
                 .filter(|(p, q)| finite(p) && finite(q) && p != q),
             along: Vec::new(),
+            wedge: None,
         });
         None
     }
