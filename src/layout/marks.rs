@@ -118,7 +118,10 @@ impl PanelLayout<'_> {
             // The arc's point a share `k` along it and the page direction
             // out to it from the vertex.
             let at = |k: f64| {
-                let w = start + k * sweep;
+                // Within [`OFF_MIDDLE`] of the middle: a wide angle's
+                // letter by its middle shows which way it runs.
+                let off = ((k - 0.5) * sweep.abs()).clamp(-OFF_MIDDLE, OFF_MIDDLE);
+                let w = start + 0.5 * sweep + off * sweep.signum();
                 let u = unit(self.t.apply_vector(Vector::new(w.cos(), w.sin())))?;
                 Some((c + u * radius, u))
             };
@@ -237,6 +240,11 @@ impl PanelLayout<'_> {
         (dir.y.atan2(dir.x), sweep * self.orientation())
     }
 }
+
+/// The most (radians) an angle's letter is tried away from its arc's
+/// middle along the arc: 30°. A direct crank's θ of 269° had its letter
+/// 78° round from its middle, read as the reverse crank's.
+const OFF_MIDDLE: f64 = std::f64::consts::PI / 6.0;
 
 /// The radii of the angle marks among `items` drawn by the map `t`: at a
 /// vertex shared by several, the largest angle innermost at its
