@@ -56,14 +56,19 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
         let t = ctx.scene.torque();
         let shares_fc =
             ctx.scene.has(crate::scene::Layer::Torque) && t != 0.0 && t.signum() == turn;
-        let arrow = if along && shares_fc {
-            // From the other side it would lie on F_c, which comes to the
-            // pin there in the same sense (Ng's Fig. 1 at long rods near
-            // 270°: one arrow named "v_c F_c"): it leaves the pin beside
-            // the rod instead, set off its line away from the rod.
-            let side = away_from(rod, cb) * world(super::torque::ALONGSIDE);
+        let arrow = if shares_fc {
+            // From the pin it would continue F_c's line, F_c's head at the
+            // pin (one line with two heads at a dead centre, tenth
+            // review); from the other side, along the rod, it would lie on
+            // F_c (long rods near 270°: one arrow named "v_c F_c"). It
+            // leaves the pin beside F_c's line, set off it away from the
+            // rod or the rod produced, whichever runs on its side of the
+            // pin (the produced rod to M).
+            let ahead = if rod.dot(&u) > 0.0 { rod } else { -rod };
+            let side = away_from(ahead, cb) * world(super::torque::ALONGSIDE);
             let from = b + u * world(PIN_SHORT) + side;
-            (from, from + u * world(VC_ARROW), from + u * world(VC_ARROW))
+            let to = from + u * world(VC_ARROW);
+            (from, to, to)
         } else if along {
             // Drawn from the pin it would run along the rod: it comes to
             // the pin from the other side, its head short of the pin's
@@ -71,17 +76,6 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
             let to = b - u * world(PIN_SHORT);
             let from = to - u * world(VC_ARROW);
             (from, to, from)
-        } else if shares_fc {
-            // From the pin it would continue F_c's line, F_c's head at the
-            // pin: one line through the pin with two heads (Ng's Fig. 1 at
-            // a dead centre, tenth review). It leaves the pin beside that
-            // line, set off it away from the rod or the rod produced,
-            // whichever runs on its side of the pin (the produced rod to M).
-            let ahead = if rod.dot(&u) > 0.0 { rod } else { -rod };
-            let side = away_from(ahead, cb) * world(super::torque::ALONGSIDE);
-            let from = b + u * world(PIN_SHORT) + side;
-            let to = from + u * world(VC_ARROW);
-            (from, to, to)
         } else {
             let to = b + u * world(VC_ARROW);
             (b, to, to)
