@@ -118,7 +118,38 @@ impl PanelLayout<'_> {
         if pts.len() < 3 || !pts.iter().all(finite) {
             return None;
         }
-        let &first = pts.first()?;
+        if is_bar(&pts) {
+            // A slotted bar: its sides are lines to keep clear of and
+            // links a link's letter must not stand nearer than its own.
+            let closed: Vec<Point> = pts.iter().chain(pts.first()).copied().collect();
+            self.obstacles.polyline(&closed);
+            self.links.extend(
+                closed
+                    .iter()
+                    .zip(closed.iter().skip(1))
+                    .map(|(p, q)| (*p, *q)),
+            );
+        } else {
+            self.block_room(&pts);
+        }
+        Some(
+            ink.tag(path(
+                polyline_d(&pts, true),
+                Pen {
+                    width: 1.6,
+                    ..ink.pen
+                },
+            ))
+            .fill("none"),
+        )
+    }
+
+    /// A block's room kept from letters: its box, hollow where a letter
+    /// fits inside beside its pin.
+    fn block_room(&mut self, pts: &[Point]) {
+        let Some(&first) = pts.first() else {
+            return;
+        };
         let (lo, hi) = pts
             .iter()
             .fold((first, first), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
@@ -138,15 +169,25 @@ impl PanelLayout<'_> {
         } else {
             self.obstacles.boxed(b);
         }
-        Some(
-            ink.tag(path(
-                polyline_d(&pts, true),
-                Pen {
-                    width: 1.6,
-                    ..ink.pen
-                },
-            ))
-            .fill("none"),
-        )
     }
 }
+
+/// Whether a body's outline `pts` (page units) is a bar rather than a
+/// block: bent (more than four corners), or with a side longer than
+/// [`BAR_LENGTHS`] times its shortest (a slider block is about twice as
+/// long as it is tall; a slotted bar runs the stroke's length). A bar's
+/// box would cover the page beside a slanting bar.
+fn is_bar(pts: &[Point]) -> bool {
+    let sides = pts
+        .iter()
+        .zip(pts.iter().cycle().skip(1))
+        .map(|(p, q)| (q - p).norm());
+    let (least, most) = sides.fold((f64::INFINITY, 0.0_f64), |(lo, hi), d| {
+        (lo.min(d), hi.max(d))
+    });
+    pts.len() > 4 || most > BAR_LENGTHS * least
+}
+
+/// How many times its shortest side a four-cornered body's longest side
+/// may be and the body still be a block ([`is_bar`]).
+const BAR_LENGTHS: f64 = 4.0;

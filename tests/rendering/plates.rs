@@ -1180,8 +1180,13 @@ fn chain_plates_are_clean() {
     // its strokes standing (inversion 3 near its dead centres), 57 now:
     // inversion 2's fixed crank, 40 to 90 px long between its two
     // bearings, whose hatching gives way to the letters crowding it.
+    // Since the slotted link d is drawn as a bar as wide as the block, not
+    // a line, 103: the strokes keep off its outline, and a fixed link
+    // lying inside the bar (inversion 2's crank where d passes over it
+    // near its pivot, inversion 3's rod along d's arm near the dead
+    // centres) keeps none; its bearings still mark it fixed.
     assert!(
-        unhatched <= 57,
+        unhatched <= 103,
         "{unhatched} plates with the fixed link unhatched\n{text}"
     );
     let broken = (outcomes.iter())

@@ -108,12 +108,69 @@ fn the_frame_d_keeps_its_shape_at_every_pose() {
     ] {
         let svg = svg(name, rod, offset, deg);
         let frame = path(&svg, "link-frame");
-        assert_eq!(frame.len(), 3, "{name:?}: d's bar C, T, its far end");
-        // The angle at T between the leg back to C and the slot on.
-        let square = angle_at(frame[1], frame[0], frame[2]);
+        assert_eq!(
+            frame.len(),
+            6,
+            "{name:?}: d's slotted bar, bent square: six corners"
+        );
+        // Every corner of the outline square: the leg from C meets the
+        // slot at a right angle, and the bar's ends are cut square.
+        for k in 0..6 {
+            let (p, q, s) = (frame[k], frame[(k + 5) % 6], frame[(k + 1) % 6]);
+            let square = angle_at(p, q, s);
+            assert!(
+                (square - 90.0).abs() < 0.1,
+                "{name:?} l = {rod}, e = {offset}, {deg}°: d's corner {k} at {square:.2}°"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_link_along_d_s_leg_is_seen_inside_it() {
+    // The tenth review (2 to 2.5): with an offset near r, at 90° or 270°
+    // d's leg from C lay on the crank or the fixed link and through pin
+    // B, one thick line for two links, d read as pinned at B or welded
+    // to the frame. d is drawn as a slotted bar as wide as the block: a
+    // link along its leg runs inside the outline, apart from its sides by
+    // a visible gap on each side.
+    const GAP: f64 = 3.0;
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion3, 3.08, -1.26, 270.31),
+        (FigureName::CoriolisInversion3, 3.5, -2.23, 269.78),
+        (FigureName::CoriolisInversion2, 2.86, 1.55, 89.06),
+        (
+            FigureName::Inversion3OscillatingCylinder,
+            2.09,
+            -0.966,
+            270.15,
+        ),
+        (FigureName::Inversion2RotatingBlock, 1.36, -0.211, 270.85),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let frame = path(&svg, "link-frame");
+        let crank = path(&svg, "link-crank");
+        let sides: Vec<_> = (0..frame.len())
+            .map(|k| (frame[k], frame[(k + 1) % frame.len()]))
+            .collect();
+        // The crank may cross d's outline but not run along it: of 41
+        // points along it, at most 4 lie within GAP of a side. (The rod
+        // crosses the slot's side at a small angle on its way to the
+        // block, over a quarter of its length at 3.08 r: not tested.)
+        let (a, b) = (crank[0], crank[crank.len() - 1]);
+        let on = (0..=40)
+            .map(|i| {
+                let t = f64::from(i) / 40.0;
+                let p = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
+                (sides.iter())
+                    .map(|(q, s)| to_segment(p, *q, *s))
+                    .fold(f64::INFINITY, f64::min)
+            })
+            .filter(|d| *d < GAP)
+            .count();
         assert!(
-            (square - 90.0).abs() < 0.1,
-            "{name:?} l = {rod}, e = {offset}, {deg}°: d's leg at {square:.2}° to its slot"
+            on <= 4,
+            "{name:?} l = {rod}, e = {offset}, {deg}°: {on} of 41 points of the crank on d's outline"
         );
     }
 }
