@@ -1,17 +1,17 @@
-//! The side each letter of the polar load diagram is set on
-//! ([`super::loads`]): the nearest ring about its point, of sixteen
-//! directions, where the letter's box stands clear of both curves, of
-//! every other dot and the pole, and of the letters set before it, and
-//! nearer its own point than any other. The layout tries the side given
-//! first, ring by ring out to a letter and a half; a side chosen for its
-//! room at one distance (two and a half dots' diameters) stood clear only
-//! on the last ring, where a letter reads as another curve's point (the
-//! dashed 270°′ at r = 1, l = 47.6 r on 4.5 in, lettered on the full
-//! curve some 25 units above its dot: the tenth review), and beside a
-//! short rod's pole the letters piled on each other. Where no near ring
-//! has a clear side, the letter is set by the figure at the nearest clear
-//! place within three ems, a leader from it to its dot, as a draughtsman
-//! letters a point with no room beside it.
+//! The letters of the polar load diagram ([`super::loads`]), set by the
+//! figure, not the layout: each (the pole's *O* first, then the
+//! quarters') on the nearest of three rings about its point, of sixteen
+//! directions, where its box stands clear of both curves, of every other
+//! dot and the pole, and of the letters set before it, and nearer its own
+//! point than any other. Where no near ring has a clear side, it is set
+//! at the nearest clear place within three ems with a leader to its dot,
+//! as a draughtsman letters a point with no room beside it. A side chosen
+//! for its room at one distance (two and a half dots' diameters) and
+//! left to the layout stood clear only on the layout's last ring, where
+//! a letter reads as another curve's point (the dashed 270°′ at r = 1,
+//! l = 47.6 r on 4.5 in, lettered on the full curve some 25 units above
+//! its dot: the tenth review), and beside a short rod's pole the letters
+//! piled on each other.
 
 use super::Ctx;
 use crate::figure::{Align, Font, Item, PageFromWorld, RichText, Role, Shape, TextSize};
@@ -58,7 +58,7 @@ const POLE_ROOM: f64 = 5.5;
 /// may stand on either side of the pair.
 const ONE_PLACE: f64 = 4.0;
 
-/// The sides chosen so far in a panel: what each later letter keeps
+/// The letters set so far in a panel and what each later letter keeps
 /// clear of.
 pub(super) struct Letters {
     /// Both curves as world segments (their jumps' dotted lines too).
@@ -69,10 +69,12 @@ pub(super) struct Letters {
     scale: f64,
     /// The panel's map, world to page.
     map: PageFromWorld,
-    /// The world box every letter stays inside (the panel's, above the
-    /// scale bar's room).
+    /// The world box every letter stays inside (the plot's area, in (a)
+    /// above the scale bar's room).
     inside: Frame,
+    /// The face the letters are measured in.
     font: Font,
+    /// The letters' size, page units.
     size: f64,
 }
 
@@ -89,12 +91,12 @@ impl Letters {
         map: PageFromWorld,
         inside: Frame,
     ) -> Self {
-        let curves = (0..2)
-            .flat_map(|c| {
-                sampled
-                    .windows(2)
-                    .map(move |w| (Point::origin() + w[0][c], Point::origin() + w[1][c]))
-            })
+        let trace = |pick: fn(&[Vector; 2]) -> Vector| -> Vec<Point> {
+            sampled.iter().map(|s| Point::origin() + pick(s)).collect()
+        };
+        let curves = [trace(|s| s[0]), trace(|s| s[1])]
+            .iter()
+            .flat_map(|t| t.iter().copied().zip(t.iter().copied().skip(1)))
             .collect();
         Self {
             curves,
@@ -121,11 +123,12 @@ impl Letters {
         id: String,
     ) -> Option<Item> {
         let half = self.half(&text);
-        let curves = self.curves_near(from, half, RINGS[RINGS.len() - 1]);
+        let curves = self.curves_near(from, half, *RINGS.last().unwrap_or(&0.0));
         let b = RINGS.iter().find_map(|&ring| {
             (directions().filter_map(|u| {
                 let b = (self.centre(from, u, half, ring), half);
-                self.room(b, from, &curves, dots).map(|room| (b, room))
+                self.room(b, from, (&curves, dots), false)
+                    .map(|room| (b, room))
             }))
             .max_by(|a, b| a.1.total_cmp(&b.1))
         })?;
@@ -166,11 +169,11 @@ impl Letters {
         (id, leader_id): (String, String),
     ) -> Option<[Item; 2]> {
         let half = self.half(&text);
-        let curves = self.curves_near(from, half, FAR_RINGS[FAR_RINGS.len() - 1]);
+        let curves = self.curves_near(from, half, *FAR_RINGS.last().unwrap_or(&0.0));
         let (b, _, _) = FAR_RINGS.iter().find_map(|&ring| {
             (directions().filter_map(|u| {
                 let b = (self.centre(from, u, half, ring), half);
-                let room = self.room_far(b, from, &curves, dots)?;
+                let room = self.room(b, from, (&curves, dots), true)?;
                 let (a, _) = self.leader(b, from);
                 let crossed = (curves.iter())
                     .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
@@ -241,50 +244,33 @@ impl Letters {
             .collect()
     }
 
-    /// [`Letters::room`] for a place with a leader: the other dots kept
-    /// clear of, but no nearer its own than they (the leader names it).
-    fn room_far(
-        &self,
-        b: Boxed,
-        from: Point,
-        curves: &[(Point, Point)],
-        dots: &[Point],
-    ) -> Option<f64> {
-        let far: Vec<Point> = (dots.iter())
-            .filter(|q| to_box(b, **q) * self.scale >= DOT_ROOM)
-            .copied()
-            .collect();
-        if far.len() < dots.len() {
-            return None;
-        }
-        self.clear(b, curves)
-            .map(|room| {
-                (far.iter().map(|q| to_box(b, *q) * self.scale - DOT_ROOM)).fold(room, f64::min)
-            })
-            .filter(|_| to_box(b, from) * self.scale >= DOT_ROOM)
-    }
-
     /// The least room, page units, about the box `b` of the letter of
     /// `from` (to the curves, the dots, the letters set), capped at a
     /// letter's em; `None` where the box meets one of them, stands within
-    /// [`DOT_ROOM`] of a dot, or nearer another dot than its own.
+    /// [`DOT_ROOM`] of a dot ([`POLE_ROOM`] of the pole, `dots`' first),
+    /// or nearer another dot than its own. A box `led` (with a leader,
+    /// which names its dot) may stand nearer another dot, but keeps its
+    /// room from every dot, its own and those at its place included.
     fn room(
         &self,
         b: Boxed,
         from: Point,
-        curves: &[(Point, Point)],
-        dots: &[Point],
+        (curves, dots): (&[(Point, Point)], &[Point]),
+        led: bool,
     ) -> Option<f64> {
         let s = self.scale;
         let own = to_box(b, from);
+        if led && own * s < DOT_ROOM {
+            return None;
+        }
         let mut least = self.size;
         for (k, q) in dots.iter().enumerate() {
-            if (*q - from).norm() * s < ONE_PLACE {
+            if !led && (*q - from).norm() * s < ONE_PLACE {
                 continue;
             }
             let d = to_box(b, *q);
             let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
-            if d * s < keep || d < own {
+            if d * s < keep || (!led && d < own) {
                 return None;
             }
             least = least.min(d * s - keep);
@@ -348,8 +334,8 @@ fn segment_to_box(b: Boxed, p: Point, q: Point) -> f64 {
         Point::new(c.x + h.x, c.y + h.y),
         Point::new(c.x - h.x, c.y + h.y),
     ];
-    (0..4)
-        .map(|k| segment_distance(corners[k], corners[(k + 1) % 4], p, q))
+    (corners.iter().zip(corners.iter().cycle().skip(1)))
+        .map(|(a, b)| segment_distance(*a, *b, p, q))
         .fold(f64::INFINITY, f64::min)
 }
 
