@@ -774,10 +774,15 @@ fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
                     } else {
                         5.0
                     };
+                    // A letter set farther out has a leader to its dot,
+                    // which names it (read in
+                    // the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves).
+                    let led =
+                        svg.contains(&format!("id=\"{}\"", id.replacen("label-", "leader-", 1)));
                     for (other, q) in &marks {
                         let far = (q.0 - own.0).hypot(q.1 - own.1) > em;
                         let angle = other.rsplit('-').next().unwrap().to_string();
-                        if far && !angles.contains(&angle) {
+                        if far && !led && !angles.contains(&angle) {
                             assert!(
                                 to_box(*q) + slack >= to_box(own),
                                 "{id} stands by {other} in case {case}: {} vs {}",
@@ -1470,6 +1475,11 @@ fn the_crank_pin_loads_letters_stand_nearer_their_own_dot_than_any_other_and_the
                 .collect();
             assert!(letters.len() >= 5, "{case}: {letters:?}");
             for id in letters {
+                // A letter with a leader is named by it (read in
+                // the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves).
+                if svg.contains(&format!("id=\"{}\"", id.replacen("label-", "leader-", 1))) {
+                    continue;
+                }
                 let own_id = id.replacen("label-", "point-", 1);
                 let own = points.iter().find(|m| m.0 == own_id).unwrap().1;
                 let mine = to_letter(&svg, &id, own);
@@ -1625,6 +1635,239 @@ fn the_balance_captions_stand_level_and_close_under_their_polygons() {
                 gap <= 2.5 * em,
                 "{name}: {gap:.1} between the polygon and its caption"
             );
+        }
+    }
+}
+
+/// The crank-pin-load figures of the tenth review's engines (the default,
+/// r = 1 with l = 47.6, 48.2, 1.05 and 1.04), on its four page widths:
+/// (what, SVG).
+fn tenth_review_load_figures() -> Vec<(String, String)> {
+    let mut cases = Vec::new();
+    for (r, l) in [
+        (0.5, 3.0),
+        (1.0, 47.6),
+        (1.0, 48.2),
+        (1.0, 1.05),
+        (1.0, 1.04),
+    ] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            cases.push((r, l, width));
+        }
+    }
+    common::in_threads(&cases, |&(r, l, width)| {
+        let mut o = match width {
+            Some(w) => common::on_page(w, None),
+            None => FigureOptions::default(),
+        };
+        o.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+        (format!("r {r} l {l} on {width:?}"), svg)
+    })
+}
+
+/// The ink box of the letter `id`: (left, right, top, bottom), page
+/// units, middle-anchored, from its baseline up three quarters of an em;
+/// its width half an em a digit (the serif digits' advance), a third of
+/// an em a space and three tenths any other character (°, ′, the comma:
+/// half an em each took "180°, 180°′" 13 units wider than its ink).
+fn letter_box(svg: &str, id: &str) -> (f64, f64, f64, f64) {
+    let (x, y) = (num(svg, id, "x"), num(svg, id, "y"));
+    let em = num(svg, id, "font-size");
+    let wide: f64 = (text_content(svg, id).chars())
+        .map(|c| match c {
+            '0'..='9' => 0.5,
+            ' ' => 0.33,
+            _ => 0.3,
+        })
+        .sum();
+    let half = 0.5 * wide * em;
+    (x - half, x + half, y - 0.75 * em, y)
+}
+
+/// The distance from the page point `p` to [`letter_box`] of `id`.
+fn to_box_of(svg: &str, id: &str, p: (f64, f64)) -> f64 {
+    let (x0, x1, y0, y1) = letter_box(svg, id);
+    let dx = (x0 - p.0).max(p.0 - x1).max(0.0);
+    let dy = (y0 - p.1).max(p.1 - y1).max(0.0);
+    dx.hypot(dy)
+}
+
+#[test]
+fn the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves() {
+    // The tenth review: at r = 1, l = 47.6 on 4.5 in the dashed curve's
+    // "270°′" stood on the full curve some 60 px (at twice the size) from
+    // its dot beside O (2.5); at l = 1.04 and 1.05 r the letters about the
+    // pole piled into a knot no reader could match to its dots (2.5).
+    // Every quarter's letter stands within an em of its own dot, nearer
+    // it than any other dot farther than 4 units from it (a pair nearer
+    // is one place) by the layout's 2 units, or, set farther out, has a
+    // leader from its ink to within 5 units of its dot; its ink is clear
+    // of every other letter's, and no part of either curve crosses it.
+    let mut wrong = Vec::new();
+    for (case, svg) in tenth_review_load_figures() {
+        for panel in ["fixed", "relative"] {
+            let marks = load_marks(&svg, panel);
+            let key = format!("id=\"label-{panel}-with");
+            let letters: Vec<String> = svg
+                .match_indices(&key)
+                .map(|(i, _)| {
+                    let s = &svg[i + 4..];
+                    s[..s.find('"').unwrap()].to_string()
+                })
+                .collect();
+            assert!(letters.len() >= 4, "{case}: {letters:?}");
+            let curves: Vec<Vec<(f64, f64)>> = ["with-rod", "without-rod"]
+                .map(|c| path_numbers(&svg, &format!("curve-{panel}-{c}")))
+                .into();
+            for (k, id) in letters.iter().enumerate() {
+                let said = text_content(&svg, id);
+                let own_id = id.replacen("label-", "point-", 1);
+                let own = marks.iter().find(|m| m.0 == own_id).unwrap().1;
+                let em = num(&svg, id, "font-size");
+                let mine = to_box_of(&svg, id, own);
+                let leader = id.replacen("label-", "leader-", 1);
+                if svg.contains(&format!("id=\"{leader}\"")) {
+                    let ends = path_numbers(&svg, &leader);
+                    let (start, end) = (ends[0], ends[ends.len() - 1]);
+                    let to_dot = (end.0 - own.0).hypot(end.1 - own.1);
+                    let to_ink = to_box_of(&svg, id, start);
+                    // From the ink's edge (a comma's descent and the box's
+                    // room below the baseline: 5).
+                    if to_dot > 5.0 || to_ink > 5.0 {
+                        wrong.push(format!(
+                            "{case}: {id} ({said}) led from {to_ink:.1} off its ink to {to_dot:.1} off its dot"
+                        ));
+                    }
+                } else if mine > em + 0.5 {
+                    wrong.push(format!("{case}: {id} ({said}) {mine:.1} from its dot"));
+                }
+                let led = svg.contains(&format!("id=\"{leader}\""));
+                for (other, q) in &marks {
+                    if led || *other == own_id || (q.0 - own.0).hypot(q.1 - own.1) < 4.0 {
+                        continue;
+                    }
+                    let theirs = to_box_of(&svg, id, *q);
+                    if theirs + 2.0 < mine {
+                        wrong.push(format!(
+                            "{case}: {id} ({said}) {theirs:.1} from {other}, {mine:.1} from its own"
+                        ));
+                    }
+                }
+                let (x0, x1, y0, y1) = letter_box(&svg, id);
+                for other in &letters[k + 1..] {
+                    let (u0, u1, v0, v1) = letter_box(&svg, other);
+                    if x0 < u1 && u0 < x1 && y0 < v1 && v0 < y1 {
+                        wrong.push(format!("{case}: {id} ({said}) on {other}"));
+                    }
+                }
+                for curve in &curves {
+                    let on = curve.windows(2).any(|w| {
+                        (0..=10).any(|i| {
+                            let t = i as f64 / 10.0;
+                            let p = (
+                                w[0].0 + t * (w[1].0 - w[0].0),
+                                w[0].1 + t * (w[1].1 - w[0].1),
+                            );
+                            p.0 > x0 && p.0 < x1 && p.1 > y0 && p.1 < y1
+                        })
+                    });
+                    if on {
+                        wrong.push(format!("{case}: {id} ({said}) on a curve"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_fluctuation_stands_on_one_or_two_lines_by_its_dimension() {
+    // The tenth review: at r = 1, l = 29.9 on 4.5 in ΔE's value broke
+    // over three lines, "ΔE =", "6281", "lbf·ft", the equation split after
+    // "=" (3.5). On every page width of the ninth and tenth reviews'
+    // engines it is set on one line or two (the value, then its unit),
+    // beside its dimension line: its nearer edge within 2 ems of the
+    // line, its middle no farther beyond the line's ends (the marks of
+    // the greatest and least energy) than its own height.
+    for l in [29.9, 54.4, 36.2, 52.3, 2.09, 1.03, 1.06] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            let mut o = match width {
+                Some(w) => common::on_page(w, None),
+                None => FigureOptions::default(),
+            };
+            o.mechanism = Some(SliderCrank::in_line(1.0, l).unwrap());
+            let svg = to_svg(&FigureName::TurningMoment.figure(&o).unwrap());
+            let case = format!("l {l} on {width:?}");
+            assert!(
+                !svg.contains("id=\"label-fluctuation-value\""),
+                "{case}: ΔE on three lines"
+            );
+            let first: String = text_content(&svg, "label-fluctuation")
+                .chars()
+                .filter(|c| !c.is_whitespace())
+                .collect();
+            assert!(first.starts_with("ΔE="), "{case}: {first}");
+            let two = svg.contains("id=\"label-fluctuation-unit\"");
+            assert!(two || first.ends_with("lbf·ft"), "{case}: {first}");
+            let line = {
+                let at = svg.find("id=\"dimension-fluctuation\"").unwrap();
+                let d = &svg[at..];
+                let d = &d[d.find("d=\"M").unwrap() + 4..];
+                d[..d.find(' ').unwrap()].parse::<f64>().unwrap()
+            };
+            let ends = ["point-energy-1", "point-energy-2"].map(|id| num(&svg, id, "cy"));
+            let (hi, lo) = (ends[0].min(ends[1]), ends[0].max(ends[1]));
+            let ids: &[&str] = if two {
+                &["label-fluctuation", "label-fluctuation-unit"]
+            } else {
+                &["label-fluctuation"]
+            };
+            let em = num(&svg, ids[0], "font-size");
+            let (x0, x1, top, bottom) = ids.iter().fold(
+                (f64::MAX, f64::MIN, f64::MAX, f64::MIN),
+                |(a, b, c, d), id| {
+                    let (u0, u1, v0, v1) = letter_box(&svg, id);
+                    (a.min(u0), b.max(u1), c.min(v0), d.max(v1))
+                },
+            );
+            // The box taken a little wide (half an em a character): the
+            // line outside its middle three fifths.
+            let near = (x0 - line).abs().min((x1 - line).abs());
+            let off = (0.5 * (x0 + x1) - line).abs();
+            assert!(
+                near <= 2.0 * em && off >= 0.3 * (x1 - x0),
+                "{case}: ΔE's value from {x0:.1} to {x1:.1}, its line at {line:.1}"
+            );
+            let middle = 0.5 * (top + bottom);
+            let tall = bottom - top;
+            assert!(
+                middle >= hi - tall && middle <= lo + tall,
+                "{case}: ΔE's middle at {middle:.1}, its line from {hi:.1} to {lo:.1}"
+            );
+        }
+    }
+}
+
+#[test]
+fn an_offset_is_said_signed_with_its_side_in_the_dynamics_notes() {
+    // The tenth review: "e = −0.388 ft" had no direction (the other
+    // figures say "below"). The notes of the turning-moment and
+    // crank-pin-load figures give e signed, and say on which side of the
+    // crank centre the line of stroke runs.
+    for (e, side) in [(-0.388, "below"), (0.25, "above")] {
+        for name in [FigureName::TurningMoment, FigureName::CrankPinLoads] {
+            let mut o = FigureOptions::default();
+            o.mechanism = Some(SliderCrank::new(1.0, 1.51, e).unwrap());
+            let svg = to_svg(&name.figure(&o).unwrap());
+            let text = read_text(&svg)
+                .split_whitespace()
+                .collect::<Vec<_>>()
+                .join(" ");
+            let said = if e < 0.0 { "−0.388" } else { "0.25" };
+            let want = format!("e = {said} ft (the line of stroke {side} the crank centre)");
+            assert!(text.contains(&want), "{name:?} at e = {e}: {text}");
         }
     }
 }

@@ -982,10 +982,14 @@ fn the_turning_moment_notes_state_the_offset() {
         );
         String::from_utf8(out.stdout).unwrap()
     };
-    // The notes set "= " after a letter with a no-break space.
+    // The notes set "= " after a letter with a no-break space, and say
+    // on which side the line of stroke runs (the tenth review: a bare
+    // signed e had no direction).
     let offset = svg(&["--offset", "0.1"]);
     assert!(
-        offset.contains("</tspan>\u{a0}= 0.1 ft, 250 rpm"),
+        offset.contains(
+            "</tspan>\u{a0}= 0.1 ft (the line of stroke above the crank centre), 250 rpm"
+        ),
         "offset not stated"
     );
     let in_line = svg(&[]);

@@ -18,6 +18,7 @@
 //! mark and of the pole: where a curve lingers, as about the pole at long
 //! and short rods, its dots would pile into a blob.
 
+use super::load_letters::Letters;
 use super::{Ctx, Sheet, short, sig};
 use crate::angle::Angle;
 use crate::diagram::{Curve, Plot};
@@ -179,7 +180,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             cycle,
             relative,
             rect,
-            &world,
+            (&world, below),
         )?;
         if !relative {
             bar = bar_length(largest_load(&samples), plot.map().scale());
@@ -341,7 +342,8 @@ fn piece<'a>(engine: &'a Engine, relative: bool, a: f64, b: f64) -> impl Curve +
 
 /// One panel showing `world`: the two polar curves, the pole, and the
 /// marks ([`marks`]): 0°, 90°, 180°, 270° (and on, over a cycle of two
-/// turns) lettered.
+/// turns) lettered, in (a) above the room `below` its curves that the
+/// scale bar takes.
 fn polar_plot(
     ctx: &Ctx,
     (engines, sampled): ([&Engine; 2], &[[Vector; 2]]),
@@ -349,7 +351,7 @@ fn polar_plot(
     cycle: f64,
     relative: bool,
     rect: PageRect,
-    world: &Frame,
+    (world, below): (&Frame, f64),
 ) -> Result<Plot> {
     let name = if relative { "relative" } else { "fixed" };
     let caption = if relative {
@@ -386,19 +388,7 @@ fn polar_plot(
         }
     }
     let scale = plot.map().scale();
-    let marks = marks(
-        (engines, sampled),
-        cycle,
-        relative,
-        name,
-        (APART / scale, MEET / scale),
-    );
-    let dots: Vec<Point> = (marks.iter())
-        .filter_map(|item| match item.shape {
-            Shape::Dot { centre } => Some(centre),
-            _ => None,
-        })
-        .collect();
+    let taken = marks(engines, cycle, relative, (APART / scale, MEET / scale));
     plot.points(
         &format!("point-{name}-pole"),
         &[(0.0, 0.0)],
@@ -410,66 +400,42 @@ fn polar_plot(
     // × and a quarter's dot a few units off (the dashed 270° at r = 1,
     // l = 3.83 r, e = −1.63 r) is lettered on its own side, not over the
     // × with "O" by the dot; set away from the dots as well as the curves.
-    plot.push(Item::new(
-        format!("label-{name}-pole"),
-        Role::Label,
-        Shape::Label {
-            anchor: Point::origin(),
-            text: RichText::parse("*O*"),
-            size: TextSize::Letter,
-            toward: Some(clearest(
-                Point::origin(),
-                APART / scale,
-                &crowd(sampled),
-                &dots,
-            )),
-            line: None,
-        },
-    ));
-    for item in marks {
+    // Letters inside the plot's area, in (a) above the scale bar's room.
+    let area = plot.area();
+    let corners = [
+        Point::new(area.x, area.y),
+        Point::new(area.x + area.width, area.y + area.height),
+    ]
+    .map(|c| plot.map().invert(c));
+    let (lo, hi) = (corners[0].inf(&corners[1]), corners[0].sup(&corners[1]));
+    let floor = if relative {
+        lo.y
+    } else {
+        lo.y.max(world.min().y + below)
+    };
+    let inside = Frame::new(Point::new(lo.x, floor), hi);
+    let mut letters = Letters::new(ctx, sampled, *plot.map(), inside);
+    let pole = RichText::parse("*O*");
+    let dots: Vec<Point> = taken.iter().map(|t| t.2).collect();
+    let id = format!("label-{name}-pole");
+    let beside = letters.beside(Point::origin(), pole.clone(), &dots, id.clone());
+    plot.push(beside.unwrap_or_else(|| {
+        Item::new(
+            id,
+            Role::Label,
+            Shape::Label {
+                anchor: Point::origin(),
+                text: pole,
+                size: TextSize::Letter,
+                toward: None,
+                line: None,
+            },
+        )
+    }));
+    for item in mark_items(name, &taken, &mut letters) {
         plot.push(item);
     }
     Ok(plot)
-}
-
-/// The points a letter keeps clear of: every sampled load of both
-/// curves.
-fn crowd(sampled: &[[Vector; 2]]) -> Vec<Point> {
-    (sampled.iter().flatten())
-        .map(|v| Point::origin() + v)
-        .collect()
-}
-
-/// The direction from `from`, of eight, on the side away from the
-/// nearest of the `dots` (the other marks, the pole), in which a letter
-/// `reach` (world units) out stands farthest from every point of `crowd`
-/// and nearer its own point than any of the `dots` by most: a letter set
-/// there stands by its point and clear of the curves, not inside a loop
-/// or across them, nor beside another dot (the pole's "O" by its ×, a
-/// quarter's angle by its dot).
-fn clearest(from: Point, reach: f64, crowd: &[Point], dots: &[Point]) -> Vector {
-    let away = (dots.iter())
-        .filter(|p| **p != from)
-        .min_by(|a, b| (*a - from).norm().total_cmp(&(*b - from).norm()))
-        .map_or(Vector::zeros(), |q| from - q);
-    let room = |d: Vector| {
-        let at = from + d * reach;
-        let curves = (crowd.iter())
-            .filter(|p| **p != from)
-            .map(|p| (p - at).norm());
-        let others = (dots.iter())
-            .filter(|p| **p != from)
-            .map(|p| (p - at).norm() - reach);
-        curves.chain(others).fold(f64::MAX, f64::min)
-    };
-    (0..8)
-        .map(|k| {
-            let a = std::f64::consts::FRAC_PI_4 * k as f64;
-            Vector::new(a.cos(), a.sin())
-        })
-        .filter(|d| d.dot(&away) >= 0.0)
-        .max_by(|a, b| room(*a).total_cmp(&room(*b)))
-        .unwrap_or(Vector::new(1.0, 1.0))
 }
 
 /// The jumps of `engine`'s load at the kinks (degrees) where the gas
@@ -516,21 +482,17 @@ pub(crate) fn angle_letter(deg: f64, dashed: bool) -> String {
     }
 }
 
-/// The marks of one panel, ids `point-{name}-{curve}-{deg}`: each curve's
+/// The marks of one panel ([`mark_items`] draws them): each curve's
 /// quarters first, a quarter within `meet` (world units, [`MEET`]) of a
 /// mark already set lettered by that mark ("0°, 180°") and not marked
-/// again,
-/// then the other points every 30° where they stand `apart` from every
-/// mark and from the pole and twice that from a lettered mark; then each lettered mark's letter
-/// `label-{name}-{curve}-{deg}`, set first on the side away from the
-/// nearest other mark.
+/// again, then the other points every 30° where they stand `apart` from
+/// every mark and from the pole and twice that from a lettered mark.
 fn marks(
-    (engines, sampled): ([&Engine; 2], &[[Vector; 2]]),
+    engines: [&Engine; 2],
     cycle: f64,
     relative: bool,
-    name: &str,
     (apart, meet): (f64, f64),
-) -> Vec<Item> {
+) -> Vec<Mark<'static>> {
     let every: Vec<f64> = (0..(cycle / MARK) as usize)
         .map(|k| k as f64 * MARK)
         .collect();
@@ -580,6 +542,16 @@ fn marks(
             }
         }
     }
+    taken
+}
+
+/// The items of the marks `taken` of the panel `name`: each mark's dot
+/// `point-{name}-{curve}-{deg}`, then each lettered mark's letter
+/// `label-{name}-{curve}-{deg}`, on the side [`Letters::side`] finds
+/// clear nearest its dot, or, where none is, set farther out by
+/// [`Letters::led`] with its leader `leader-{name}-{curve}-{deg}`, in the
+/// order of the marks.
+fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
     let mut items: Vec<Item> = taken
         .iter()
         .map(|(c, d, p, _)| {
@@ -592,31 +564,39 @@ fn marks(
             )
         })
         .collect();
-    for (c, d, p, letters) in taken.iter().filter(|t| !t.3.is_empty()) {
-        // Set on the side where it stands farthest from the curves and
-        // the other dots: beside the nearest other dot only (as before)
-        // the letters of dots strung along a flat curve stood between
-        // two dots, each as near the other's (the default engine's 0°′,
-        // 180°′ and 0° along the axis in fixed axes).
-        let others: Vec<Point> = (taken.iter().map(|t| t.2))
-            .filter(|q| q != p)
-            .chain([Point::origin()])
+    for (c, d, p, letters_of) in taken.iter().filter(|t| !t.3.is_empty()) {
+        // The pole first, then every other dot.
+        let others: Vec<Point> = [Point::origin()]
+            .into_iter()
+            .chain(taken.iter().map(|t| t.2).filter(|q| q != p))
             .collect();
-        let away = Some(clearest(*p, apart, &crowd(sampled), &others));
-        let mut letters = letters.clone();
-        letters.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let text = (letters.iter().map(|&(a, dashed)| angle_letter(a, dashed)))
+        let mut said = letters_of.clone();
+        said.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+        let text = (said.iter().map(|&(a, dashed)| angle_letter(a, dashed)))
             .collect::<Vec<_>>()
             .join(", ");
+        let text = RichText::parse(&text);
+        let id = format!("label-{name}-{c}-{d}");
+        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone()) {
+            items.push(beside);
+            continue;
+        }
+        // No side clear within a letter's reach: set farther out with a
+        // leader to the dot.
+        let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
+        if let Some(led) = letters.led(*p, text.clone(), &others, ids) {
+            items.extend(led);
+            continue;
+        }
         items.push(Item::new(
-            format!("label-{name}-{c}-{d}"),
+            id,
             Role::Label,
             Shape::Label {
                 anchor: *p,
-                text: RichText::parse(&text),
+                text,
                 // A point's letter: placed nearer its mark than any other.
                 size: TextSize::Letter,
-                toward: away,
+                toward: None,
                 line: None,
             },
         ));
@@ -649,5 +629,16 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             sig(largest[0]),
             sig(largest[1]),
         ),
+        SHAPES.to_string(),
     ]
 }
+
+/// The notes' word on the curves' shapes that read as faults and are
+/// the load's own: the curves' small loops by 90° at the default (the
+/// full curve's *x* component turning back from −5664 lbf at 62°, by the
+/// cut-off, to −4809 lbf at 82° and out to −5412 lbf at 110°: `analyze
+/// --angle 62 --mass 10 --indicator examples/indicator.csv --bore
+/// 0.8333333333333334 --rod-mass 6 --rod-cg 1 --rod-gyration 0.9 --json`) and the dashed curve
+/// flat on the axis at long rods (a massless rod's force lies along the
+/// rod, within φ of the line of stroke).
+const SHAPES: &str = "A curve’s sharp turns and small loops (both curves’ by 90° at the default engine, after the cut-off) are the load itself turning back and out again, not faults of the drawing; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke.";

@@ -18,6 +18,7 @@ pub(super) mod forces;
 pub(super) mod incline;
 pub(super) mod inertia;
 pub(super) mod inversions;
+pub(super) mod load_letters;
 pub(super) mod loads;
 pub(super) mod quick_return;
 pub(super) mod rod;
@@ -73,12 +74,19 @@ impl Ctx<'_> {
         self.units.length()
     }
 
-    /// The offset as a note's engine line gives it after r and l,
-    /// ", *e* = 0.25 ft"; empty for an in-line engine.
+    /// The offset as a note's engine line gives it after r and l, signed
+    /// and its side said, ", *e* = −0.25 ft (the line of stroke below the
+    /// crank centre)": a bare "−0.25 ft" left the reader to know which
+    /// way the sign points; empty for an in-line engine.
     pub fn offset_clause(&self) -> String {
         match self.mechanism.offset() {
             0.0 => String::new(),
-            e => format!(", *e* = {} {}", crate::number::short(e), self.unit()),
+            e => format!(
+                ", *e* = {} {} (the line of stroke {} the crank centre)",
+                crate::number::short(e),
+                self.unit(),
+                if e > 0.0 { "above" } else { "below" }
+            ),
         }
     }
 

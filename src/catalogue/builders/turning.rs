@@ -19,7 +19,7 @@ use crate::dynamics::{
     TurningMoment, example_indicator,
 };
 use crate::error::{Error, Field, Input, Result, Wording};
-use crate::figure::{Align, Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Align, Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Point, Vector};
 use crate::units::Units;
 
@@ -500,23 +500,39 @@ fn energy_plot(ctx: &Ctx, engine: &Engine, tm: &TurningMoment, height: f64) -> R
     // is the unit left to the axis, the value still beside the line (set
     // clear by the layout, it stood with the curve between it and its
     // line, the sixth review).
+    //
+    // Where neither one line nor two fit between the line's ends, one
+    // line beside an end, just beyond its arrowhead, comes before three
+    // (at l = 29.9 r on 4.5 in the curve's arch about the greatest energy
+    // left room beside the line for "ΔE =", "6281", "lbf·ft" one under
+    // the other, the equation split after "=": the tenth review).
+    let one = vec![text.clone()];
+    let two = vec![
+        RichText::parse(&format!("Δ*E* = {value}")),
+        RichText::parse(&t_unit),
+    ];
     let tries = [
-        vec![text.clone()],
-        vec![
-            RichText::parse(&format!("Δ*E* = {value}")),
-            RichText::parse(&t_unit),
-        ],
-        vec![
-            RichText::parse("Δ*E* ="),
-            RichText::parse(&value),
-            RichText::parse(&t_unit),
-        ],
-        vec![RichText::parse(&format!("Δ*E* = {value}"))],
+        (one.clone(), Along::Between),
+        (two.clone(), Along::Between),
+        (one, Along::Beyond),
+        (two, Along::Beyond),
+        (
+            vec![
+                RichText::parse("Δ*E* ="),
+                RichText::parse(&value),
+                RichText::parse(&t_unit),
+            ],
+            Along::Between,
+        ),
+        (
+            vec![RichText::parse(&format!("Δ*E* = {value}"))],
+            Along::Between,
+        ),
     ];
     let energy = |deg: f64| stored(engine, tm, deg);
     let at = (tm.max_energy_deg, elo, ehi);
     let items = (tries.iter())
-        .find_map(|lines| beside_dimension(ctx, &plot, &energy, at, away, lines))
+        .find_map(|(lines, along)| beside_dimension(ctx, &plot, &energy, (at, *along), away, lines))
         .unwrap_or_else(|| {
             vec![Item::new(
                 "label-fluctuation",
@@ -544,12 +560,24 @@ const DIMENSION_ROOM: f64 = 4.0;
 /// over the text's size.
 const LINE_SPACING: f64 = 1.25;
 
+/// Where along the dimension line ΔE's value stands.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Along {
+    /// Beside the line between its ends, nearest its middle.
+    Between,
+    /// Beside an end, beyond its arrowhead, at most a box's height out
+    /// (read with the line still; a value farther out reads as naming
+    /// the mark at E_max or E_min).
+    Beyond,
+}
+
 /// ΔE's value `lines` (one, or two or three with its unit last) set beside its
-/// dimension line at `at` = (θ, E_min, E_max), on the side `away` (+1
-/// right) first: at the height nearest the middle of the line where the
+/// dimension line at `at` = ((θ, E_min, E_max), `along`), on the side `away` (+1
+/// right) first: at the height nearest the middle of the line (or, beyond
+/// it, nearest an end) where the
 /// lines' box, [`DIMENSION_ROOM`] from the line, has no part of the curve
 /// `energy` between it and the line nor within the room about it, and
-/// stands off E = 0, E_min and E_max. Where the label was only placed
+/// stands off E = 0, E_min and E_max, inside the plot. Where the label was only placed
 /// clear, on a narrow page it stood on the far side of the curve from its
 /// line (the curve between the two). The first line is
 /// `label-fluctuation`, the last of two or three
@@ -559,7 +587,7 @@ fn beside_dimension(
     ctx: &Ctx,
     plot: &Plot,
     energy: &dyn Fn(f64) -> f64,
-    (deg, elo, ehi): (f64, f64, f64),
+    ((deg, elo, ehi), along): ((f64, f64, f64), Along),
     away: f64,
     lines: &[RichText],
 ) -> Option<Vec<Item>> {
@@ -583,14 +611,7 @@ fn beside_dimension(
     let line = page(deg, 0.0).x;
     let (left, right) = (page(0.0, 0.0).x, page(360.0, 0.0).x);
     let levels = [0.0, elo, ehi].map(|e| page(deg, e).y);
-    let (top, bottom) = (levels[2] + half_high, levels[1] - half_high);
-    let mid = 0.5 * (top + bottom);
-    // Heights from the middle outwards, every 2 units.
-    let mut heights: Vec<f64> = (0..)
-        .map(|k| top + 2.0 * k as f64)
-        .take_while(|y| *y <= bottom)
-        .collect();
-    heights.sort_by(|a, b| (a - mid).abs().total_cmp(&(b - mid).abs()));
+    let heights = heights(along, (levels[2], levels[1]), half_high, plot.area());
     for side in [away, -away] {
         let (near, far) = (
             line + side * DIMENSION_ROOM,
@@ -630,6 +651,40 @@ fn beside_dimension(
         }
     }
     None
+}
+
+/// The heights (page y) tried for the middle of ΔE's box, `half_high`
+/// its half height with the room: between the ends `top` (E_max) and
+/// `bottom` (E_min), every 2 units from the middle outwards; or beyond
+/// them, every 2 units from each end out to a box's height more, above
+/// E_max first, inside the plot's `area`. Empty where none is.
+fn heights(along: Along, (top, bottom): (f64, f64), half_high: f64, area: PageRect) -> Vec<f64> {
+    let every = |from: f64, step: f64, n: usize| (0..n).map(move |k| from + step * k as f64);
+    match along {
+        Along::Between => {
+            let (top, bottom) = (top + half_high, bottom - half_high);
+            let mid = 0.5 * (top + bottom);
+            let n = if bottom >= top {
+                ((bottom - top) / 2.0) as usize + 1
+            } else {
+                0
+            };
+            let mut h: Vec<f64> = every(top, 2.0, n).collect();
+            h.sort_by(|a, b| (a - mid).abs().total_cmp(&(b - mid).abs()));
+            h
+        }
+        Along::Beyond => {
+            // Half a unit more than the room off each end, clear of it
+            // whatever the rounding.
+            let (n, off) = ((half_high as usize) + 1, half_high + 0.5);
+            let above = every(top - off, -2.0, n);
+            let below = every(bottom + off, 2.0, n);
+            above
+                .chain(below)
+                .filter(|y| y - half_high >= area.y && y + half_high <= area.y + area.height)
+                .collect()
+        }
+    }
 }
 
 /// What the notes say of the gas force after the mass: the constant, or

@@ -1,0 +1,347 @@
+//! The letters of the polar load diagram ([`super::loads`]), set by the
+//! figure, not the layout: each (the pole's *O* first, then the
+//! quarters') on the nearest of three rings about its point, of sixteen
+//! directions, where its box stands clear of both curves, of every other
+//! dot and the pole, and of the letters set before it, and nearer its own
+//! point than any other. Where no near ring has a clear side, it is set
+//! at the nearest clear place within three ems with a leader to its dot,
+//! as a draughtsman letters a point with no room beside it. A side chosen
+//! for its room at one distance (two and a half dots' diameters) and
+//! left to the layout stood clear only on the layout's last ring, where
+//! a letter reads as another curve's point (the dashed 270°′ at r = 1,
+//! l = 47.6 r on 4.5 in, lettered on the full curve some 25 units above
+//! its dot: the tenth review), and beside a short rod's pole the letters
+//! piled on each other.
+
+use super::Ctx;
+use crate::figure::{Align, Font, Item, PageFromWorld, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Point, Vector, crossing, point_segment_distance, segment_distance};
+
+/// Room between a point and its letter's box, page units: the layout's
+/// gap for a letter.
+const GAP: f64 = 4.0;
+
+/// How much farther than touching each ring of sides tried sits, page
+/// units: the layout's first three (its fourth and fifth, 12 and 17, put
+/// the ink an em or more from its point).
+const RINGS: [f64; 3] = [0.0, 4.0, 8.0];
+
+/// The rings of the places farther out, page units beyond the gap, each
+/// with a leader: out to three ems (a letter farther off is not read
+/// with its dot, leader or not).
+const FAR_RINGS: [f64; 8] = [12.0, 17.0, 22.0, 28.0, 34.0, 40.0, 46.0, 51.0];
+
+/// A direction's component below this is along an axis.
+const ALONG: f64 = 1e-9;
+
+/// How far short of its dot a leader stops, page units: clear of the
+/// dot (2.1) by a unit and a half.
+const LEADER_SHORT: f64 = 3.6;
+
+/// Where a text set at a fixed place has its place: the middle of its
+/// letters, this many ems above its baseline ([`Shape::Text`]).
+const MIDDLE: f64 = 0.35;
+
+/// Room a letter's box keeps about its glyphs, and from a curve, page
+/// units: the layout's room and clearance.
+const ROOM: f64 = 1.0;
+
+/// Room a letter's box keeps from another dot's centre, page units: the
+/// dot's radius (2.1) and a unit and a half.
+const DOT_ROOM: f64 = 3.6;
+
+/// Room a letter's box keeps from the pole's centre, page units: the
+/// ×'s half-width and a unit and a half.
+const POLE_ROOM: f64 = 5.5;
+
+/// Dots nearer each other than this, page units, are one place: a letter
+/// may stand on either side of the pair.
+const ONE_PLACE: f64 = 4.0;
+
+/// The letters set so far in a panel and what each later letter keeps
+/// clear of.
+pub(super) struct Letters {
+    /// Both curves as world segments (their jumps' dotted lines too).
+    curves: Vec<(Point, Point)>,
+    /// The boxes of the letters set so far: world centre and half-size.
+    boxes: Vec<(Point, Vector)>,
+    /// Page units to the world unit.
+    scale: f64,
+    /// The panel's map, world to page.
+    map: PageFromWorld,
+    /// The world box every letter stays inside (the plot's area, in (a)
+    /// above the scale bar's room).
+    inside: Frame,
+    /// The face the letters are measured in.
+    font: Font,
+    /// The letters' size, page units.
+    size: f64,
+}
+
+/// A box: its centre and half-size.
+type Boxed = (Point, Vector);
+
+impl Letters {
+    /// The letters of a panel drawn by `map` (uniform, world to page)
+    /// whose curves are the loads `sampled` in order (each sample both
+    /// curves' loads), each letter inside the world box `inside`.
+    pub(super) fn new(
+        ctx: &Ctx,
+        sampled: &[[Vector; 2]],
+        map: PageFromWorld,
+        inside: Frame,
+    ) -> Self {
+        let trace = |pick: fn(&[Vector; 2]) -> Vector| -> Vec<Point> {
+            sampled.iter().map(|s| Point::origin() + pick(s)).collect()
+        };
+        let curves = [trace(|s| s[0]), trace(|s| s[1])]
+            .iter()
+            .flat_map(|t| t.iter().copied().zip(t.iter().copied().skip(1)))
+            .collect();
+        Self {
+            curves,
+            boxes: Vec::new(),
+            scale: map.scale(),
+            map,
+            inside,
+            font: ctx.font,
+            size: ctx.style.font_size(TextSize::Letter),
+        }
+    }
+
+    /// The letter `text` of the dot `from`, `id`, set by the figure where
+    /// it stands clear nearest its point: on the first ring with a clear
+    /// side, the side with the most room; the box recorded for the
+    /// letters after it. `None` where no ring within [`RINGS`] has one
+    /// ([`Letters::led`] then sets it farther out). `dots` are the other
+    /// points drawn (the pole first).
+    pub(super) fn beside(
+        &mut self,
+        from: Point,
+        text: RichText,
+        dots: &[Point],
+        id: String,
+    ) -> Option<Item> {
+        let half = self.half(&text);
+        let curves = self.curves_near(from, half, *RINGS.last().unwrap_or(&0.0));
+        let b = RINGS.iter().find_map(|&ring| {
+            (directions().filter_map(|u| {
+                let b = (self.centre(from, u, half, ring), half);
+                self.room(b, from, (&curves, dots), false)
+                    .map(|room| (b, room))
+            }))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+        })?;
+        self.boxes.push(b.0);
+        Some(self.text(b.0, text, id))
+    }
+
+    /// The letter `text`, `id`, its ink's box `b` (world).
+    fn text(&self, b: Boxed, text: RichText, id: String) -> Item {
+        let ink = text.measure(self.font, self.size);
+        let centre = self.map.apply(b.0);
+        let middle = centre - Vector::new(0.0, 0.5 * (ink.below - ink.above) + MIDDLE * self.size);
+        Item::new(
+            id,
+            Role::Label,
+            Shape::Text {
+                at: self.map.invert(middle),
+                offset: Vector::zeros(),
+                text,
+                align: Align::Middle,
+                size: TextSize::Letter,
+            },
+        )
+    }
+
+    /// The letter `text` of the dot `from` set by the figure where no
+    /// near side is clear ([`Letters::side`]): on the nearest of
+    /// [`FAR_RINGS`] with a clear place, the place whose leader crosses
+    /// the fewest lines of the curves, then with the most room, and a
+    /// leader from its box to [`LEADER_SHORT`] short of the dot: the
+    /// text `id` and the leader `leader_id`; `None` where no place within
+    /// three ems is clear. The box is recorded for the letters after it.
+    pub(super) fn led(
+        &mut self,
+        from: Point,
+        text: RichText,
+        dots: &[Point],
+        (id, leader_id): (String, String),
+    ) -> Option<[Item; 2]> {
+        let half = self.half(&text);
+        let curves = self.curves_near(from, half, *FAR_RINGS.last().unwrap_or(&0.0));
+        let (b, _, _) = FAR_RINGS.iter().find_map(|&ring| {
+            (directions().filter_map(|u| {
+                let b = (self.centre(from, u, half, ring), half);
+                let room = self.room(b, from, (&curves, dots), true)?;
+                let (a, _) = self.leader(b, from);
+                let crossed = (curves.iter())
+                    .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
+                    .count();
+                Some((b, crossed, room))
+            }))
+            .min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2)))
+        })?;
+        self.boxes.push(b);
+        let (a, end) = self.leader(b, from);
+        Some([
+            self.text(b, text, id),
+            Item::new(
+                leader_id,
+                // A thin full line, as a dimension's.
+                Role::Dimension,
+                Shape::Polyline {
+                    points: vec![a, end],
+                    closed: false,
+                },
+            ),
+        ])
+    }
+
+    /// A leader from the box `b` to `from` (world): from the box's point
+    /// nearest `from` to [`LEADER_SHORT`] short of it.
+    fn leader(&self, (c, h): Boxed, from: Point) -> (Point, Point) {
+        let a = Point::new(
+            from.x.clamp(c.x - h.x, c.x + h.x),
+            from.y.clamp(c.y - h.y, c.y + h.y),
+        );
+        let d = from - a;
+        let short = LEADER_SHORT / self.scale;
+        let end = if d.norm() > short {
+            from - d * (short / d.norm())
+        } else {
+            a
+        };
+        (a, end)
+    }
+
+    /// The half-size (world) of the box of the letter `text`: its ink and
+    /// the room about it.
+    fn half(&self, text: &RichText) -> Vector {
+        let ink = text.measure(self.font, self.size);
+        Vector::new(0.5 * ink.width + ROOM, 0.5 * (ink.above + ink.below) + ROOM) / self.scale
+    }
+
+    /// The middle (world) of a box of half-size `half` whose point
+    /// nearest `from` lies `ring` page units beyond the gap from it in
+    /// the direction `u`: touching there by a corner, or by a side where
+    /// `u` runs along an axis (a wide letter set by a diagonal's reach
+    /// from its middle stood two ems off).
+    fn centre(&self, from: Point, u: Vector, half: Vector, ring: f64) -> Point {
+        let side = |c: f64, h: f64| {
+            if c.abs() < ALONG { 0.0 } else { c.signum() * h }
+        };
+        from + u * ((GAP + ring) / self.scale) + Vector::new(side(u.x, half.x), side(u.y, half.y))
+    }
+
+    /// The curves' segments that a box of half-size `half` on a ring
+    /// out to `ring` about `from` may meet.
+    fn curves_near(&self, from: Point, half: Vector, ring: f64) -> Vec<(Point, Point)> {
+        let out = (GAP + ring + 8.0) / self.scale + 2.0 * (half.x + half.y);
+        (self.curves.iter())
+            .filter(|(a, b)| point_segment_distance(from, *a, *b) < out)
+            .copied()
+            .collect()
+    }
+
+    /// The least room, page units, about the box `b` of the letter of
+    /// `from` (to the curves, the dots, the letters set), capped at a
+    /// letter's em; `None` where the box meets one of them, stands within
+    /// [`DOT_ROOM`] of a dot ([`POLE_ROOM`] of the pole, `dots`' first),
+    /// or nearer another dot than its own. A box `led` (with a leader,
+    /// which names its dot) may stand nearer another dot, but keeps its
+    /// room from every dot, its own and those at its place included.
+    fn room(
+        &self,
+        b: Boxed,
+        from: Point,
+        (curves, dots): (&[(Point, Point)], &[Point]),
+        led: bool,
+    ) -> Option<f64> {
+        let s = self.scale;
+        let own = to_box(b, from);
+        if led && own * s < DOT_ROOM {
+            return None;
+        }
+        let mut least = self.size;
+        for (k, q) in dots.iter().enumerate() {
+            if !led && (*q - from).norm() * s < ONE_PLACE {
+                continue;
+            }
+            let d = to_box(b, *q);
+            let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
+            if d * s < keep || (!led && d < own) {
+                return None;
+            }
+            least = least.min(d * s - keep);
+        }
+        self.clear(b, curves).map(|room| room.min(least))
+    }
+
+    /// The least room, page units, between the box `b` and the curves and
+    /// the letters set, capped at an em; `None` where it meets one.
+    fn clear(&self, b: Boxed, curves: &[(Point, Point)]) -> Option<f64> {
+        let s = self.scale;
+        let (c, h) = b;
+        let (lo, hi) = (self.inside.min(), self.inside.max());
+        if c.x - h.x < lo.x || c.x + h.x > hi.x || c.y - h.y < lo.y || c.y + h.y > hi.y {
+            return None;
+        }
+        let mut least = self.size;
+        for (p, q) in curves {
+            let d = segment_to_box(b, *p, *q) * s;
+            if d < ROOM {
+                return None;
+            }
+            least = least.min(d - ROOM);
+        }
+        for o in &self.boxes {
+            let gap = boxes_apart(b, *o) * s;
+            if gap < ROOM {
+                return None;
+            }
+            least = least.min(gap - ROOM);
+        }
+        Some(least)
+    }
+}
+
+/// The sixteen directions tried, every 22.5° from +x.
+fn directions() -> impl Iterator<Item = Vector> {
+    (0..16).map(|k| {
+        let (s, c) = (std::f64::consts::PI / 8.0 * k as f64).sin_cos();
+        Vector::new(c, s)
+    })
+}
+
+/// The distance from the point `p` to the box `b` (0 inside).
+fn to_box((c, h): Boxed, p: Point) -> f64 {
+    let dx = ((p.x - c.x).abs() - h.x).max(0.0);
+    let dy = ((p.y - c.y).abs() - h.y).max(0.0);
+    dx.hypot(dy)
+}
+
+/// The distance from the segment `p`–`q` to the box `b` (0 where it
+/// meets it).
+fn segment_to_box(b: Boxed, p: Point, q: Point) -> f64 {
+    let (c, h) = b;
+    if to_box(b, p) == 0.0 || to_box(b, q) == 0.0 {
+        return 0.0;
+    }
+    let corners = [
+        Point::new(c.x - h.x, c.y - h.y),
+        Point::new(c.x + h.x, c.y - h.y),
+        Point::new(c.x + h.x, c.y + h.y),
+        Point::new(c.x - h.x, c.y + h.y),
+    ];
+    (corners.iter().zip(corners.iter().cycle().skip(1)))
+        .map(|(a, b)| segment_distance(*a, *b, p, q))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The gap between two boxes (0 where they meet).
+fn boxes_apart((a, ha): Boxed, (b, hb): Boxed) -> f64 {
+    let dx = ((a.x - b.x).abs() - ha.x - hb.x).max(0.0);
+    let dy = ((a.y - b.y).abs() - ha.y - hb.y).max(0.0);
+    dx.hypot(dy)
+}
