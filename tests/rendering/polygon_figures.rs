@@ -808,3 +808,72 @@ fn the_polygons_notes_set_each_prime_clear_of_what_follows() {
     }
     assert!(!text.contains("(the velocity"), "{text}");
 }
+
+/// The letters of each lettered image group of the polygons (the texts
+/// `label-…` and `detail-label-…` of the polygon panels and their
+/// details), as read: "aʹ, k" gives ["aʹ", "k"].
+fn letter_groups(svg: &str) -> Vec<Vec<String>> {
+    let mut groups = Vec::new();
+    for panel in ["velocity", "acceleration"].map(|p| format!("{p}-polygon")) {
+        let detail = format!("{panel}-detail");
+        for panel in [panel, detail] {
+            groups.extend(panel_letters(svg, &panel));
+        }
+    }
+    groups
+}
+
+/// The letter groups of the panel `panel` ([`letter_groups`]).
+fn panel_letters(svg: &str, panel: &str) -> Vec<Vec<String>> {
+    let Some(at) = svg.find(&format!(r#"id="panel-{panel}""#)) else {
+        return Vec::new();
+    };
+    let rest = &svg[at..];
+    let end = rest[1..].find("id=\"panel-").map_or(rest.len(), |e| e + 1);
+    (rest[..end].split("<text").skip(1))
+        .filter(|t| t.contains("id=\"label-") || t.contains("id=\"detail-label-"))
+        .map(|text| {
+            let body = text.split_once('>').map_or("", |(_, b)| b);
+            let body = body.split("</text>").next().unwrap_or("");
+            let read = words(&format!("<x>{body}</x>")).replace(' ', "");
+            read.split(',').map(str::to_string).collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_point_said_to_stand_on_another_is_lettered_with_it() {
+    // The tenth review: inversion 2 at l = 30.3 r, 0° said of the sliding
+    // acceleration "too short to be seen: k stands on a′_d", while the
+    // drawing set k's dot 7.2 units from a′_d's, lettered "a′, k" and "n,
+    // a′_d". Where the notes say one point stands on another, one letter
+    // names both; where the two are lettered apart, the notes say so.
+    let mut said = 0;
+    for name in [FigureName::CoriolisInversion2, FigureName::CoriolisInversion3] {
+        for (rod, deg) in [
+            (30.3, 0.0),
+            (30.3, 180.0),
+            (30.3, 89.07),
+            (30.3, 270.06),
+            (40.0, 89.0),
+            (48.3, 0.0),
+            (48.3, 89.24),
+            (45.6, 89.62),
+            (1.08, 180.0),
+        ] {
+            let svg = svg(name, rod, 0.0, deg);
+            let text = words(&svg);
+            let groups = letter_groups(&svg);
+            for (at, _) in text.match_indices(" stands on ") {
+                said += 1;
+                let from = text[..at].rsplit(' ').next().unwrap();
+                let to = text[at + 11..].split([')', ';', ' ']).next().unwrap();
+                assert!(
+                    (groups.iter()).any(|g| g.iter().any(|l| l == from) && g.iter().any(|l| l == to)),
+                    "{name:?} l = {rod} r, {deg}°: “{from} stands on {to}” but the letters {groups:?}"
+                );
+            }
+        }
+    }
+    assert!(said > 0, "no point said to stand on another");
+}
