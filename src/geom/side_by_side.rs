@@ -27,8 +27,8 @@ pub(crate) fn side_by_side(sides: &[(Point, Point)], apart: f64) -> Vec<Vector> 
 }
 
 /// As [`side_by_side`], the offsets of each side's tail and head: a side
-/// moved across keeps its head on its point, its tail alone moved
-/// `apart` to either side, where so turned it runs over none
+/// moved `apart` across keeps its head on its point, its tail alone moved
+/// to the side it would be moved to, where so turned it runs over none
 /// of the sides before it (its head, on a point off the other side's
 /// line, stands clear of it); else the whole side is moved. The engine's acceleration polygon with an offset (e =
 /// 0.5, 176°) set c′q′ beside c′a′, which it leaves at a narrow angle,
@@ -57,14 +57,22 @@ fn set_beside(sides: &[(Point, Point)], apart: f64, turn: bool) -> Vec<(Vector, 
             let moved = (from + t, to + h);
             !(drawn.iter()).any(|s| runs_over(moved, *s, apart) || runs_over(*s, moved, apart))
         };
-        // In place, then (with `turn`) turned about its head to either
-        // side (twice as far, the tail stood off the pole in the air),
-        // then moved whole once or twice as far.
-        let steps = [1.0, -1.0, 2.0, -2.0].map(|k| across * (k * apart));
-        let turned = steps[..2].iter().filter(|_| turn).map(|o| (*o, zero));
+        // In place, else moved whole to the first side clear, once or
+        // twice as far; with `turn`, moved once, turned about its head
+        // instead where that is clear too (it takes the place it would
+        // take moved whole, and leaves the others theirs), or turned to
+        // either side where it cannot be moved once.
+        let once = [1.0, -1.0].map(|k| across * (k * apart));
+        let twice = [2.0, -2.0].map(|k| across * (k * apart));
+        let slot = once.iter().find(|o| clear((**o, **o)));
+        let turned: Vec<(Vector, Vector)> = match (turn, slot) {
+            (false, _) => Vec::new(),
+            (true, Some(o)) => vec![(*o, zero)],
+            (true, None) => once.iter().map(|o| (*o, zero)).collect(),
+        };
         let offset = std::iter::once((zero, zero))
             .chain(turned)
-            .chain(steps.iter().map(|o| (*o, *o)))
+            .chain(once.iter().chain(&twice).map(|o| (*o, *o)))
             .find(|o| clear(*o))
             .unwrap_or((zero, zero));
         drawn.push((from + offset.0, to + offset.1));

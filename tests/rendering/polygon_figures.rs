@@ -849,7 +849,10 @@ fn a_point_said_to_stand_on_another_is_lettered_with_it() {
     // a′_d". Where the notes say one point stands on another, one letter
     // names both; where the two are lettered apart, the notes say so.
     let mut said = 0;
-    for name in [FigureName::CoriolisInversion2, FigureName::CoriolisInversion3] {
+    for name in [
+        FigureName::CoriolisInversion2,
+        FigureName::CoriolisInversion3,
+    ] {
         for (rod, deg) in [
             (30.3, 0.0),
             (30.3, 180.0),
@@ -869,7 +872,8 @@ fn a_point_said_to_stand_on_another_is_lettered_with_it() {
                 let from = text[..at].rsplit(' ').next().unwrap();
                 let to = text[at + 11..].split([')', ';', ' ']).next().unwrap();
                 assert!(
-                    (groups.iter()).any(|g| g.iter().any(|l| l == from) && g.iter().any(|l| l == to)),
+                    (groups.iter())
+                        .any(|g| g.iter().any(|l| l == from) && g.iter().any(|l| l == to)),
                     "{name:?} l = {rod} r, {deg}°: “{from} stands on {to}” but the letters {groups:?}"
                 );
             }
@@ -915,6 +919,31 @@ fn a_short_rod_s_pins_at_the_inner_dead_centre_stand_apart() {
                 _ => false,
             }
         });
-        assert!(apart, "{name:?} l = {rod} r, {deg}°: A's and C's pins not drawn apart");
+        assert!(
+            apart,
+            "{name:?} l = {rod} r, {deg}°: A's and C's pins not drawn apart"
+        );
+    }
+}
+
+#[test]
+fn a_side_set_beside_another_ends_on_its_point_where_it_can() {
+    // The §35 engine with an offset (r = 0.5, l = 3) near 180°: c′q′
+    // leaves c′a′ at a narrow angle and was set beside it whole, its head
+    // 7 units off q′ by a′'s letter. Turned about its head, it runs over
+    // nothing and ends on q′.
+    for (offset, deg) in [(0.9, 172.0), (0.7, 172.0)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(0.5, 3.0, offset).unwrap());
+        options.angle = Some(Angle::deg(deg));
+        let name = FigureName::VelocityAccelerationPolygons;
+        let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+        let tip = arrow_tip(&svg, "acceleration-c2q2");
+        let q = dot(&svg, "point-q2");
+        let off = (tip.0 - q.0).hypot(tip.1 - q.1);
+        assert!(
+            off < 1.5,
+            "e = {offset}, {deg}°: c′q′ ends {off:.1} units from q′"
+        );
     }
 }

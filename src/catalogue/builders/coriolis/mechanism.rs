@@ -11,8 +11,8 @@ use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Item, PageRect, RichText, Role, Shape, TextSize};
-use crate::number::short;
 use crate::geom::{Frame, Point, Vector};
+use crate::number::short;
 use crate::scene::{Canvas, Marker};
 
 /// The page length under which inversion 3's crank CB, the driver, gets
@@ -119,8 +119,8 @@ fn pins_window(
     let region = Frame::new(middle - half, middle + half);
     let caption = format!("the boxed region enlarged ×{}", short(magnification));
     let name = "detail-mechanism";
-    let mut plot = Plot::world(name, rect, &region, false, ctx.tolerance, ctx.font)?
-        .with_caption(&caption);
+    let mut plot =
+        Plot::world(name, rect, &region, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
     let map = *plot.map();
     let inside = 0.5 / map.scale();
     let seen = map.world_frame(&plot.area());
