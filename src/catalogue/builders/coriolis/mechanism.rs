@@ -3,14 +3,14 @@
 //! detail of the crank where it is drawn too short to read.
 
 use super::super::Ctx;
-use super::super::inversions::crank_window;
+use super::super::inversions::{border, crank_window};
 use super::panel::mark_window;
 use super::{GAP, MARGIN, MECHANISM_HEIGHT};
 
 use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Item, PageRect, RichText, Role, Shape, TextSize};
+use crate::figure::{PageRect, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 use crate::number::short;
 use crate::scene::{Canvas, Marker};
@@ -121,21 +121,7 @@ fn pins_window(
     let name = "detail-mechanism";
     let mut plot =
         Plot::world(name, rect, &region, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
-    let map = *plot.map();
-    let inside = 0.5 / map.scale();
-    let seen = map.world_frame(&plot.area());
-    let (lo, hi) = (
-        seen.min() + Vector::new(inside, inside),
-        seen.max() - Vector::new(inside, inside),
-    );
-    plot.push(Item::new(
-        format!("{name}-border"),
-        Role::Frame,
-        Shape::Polyline {
-            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
-            closed: true,
-        },
-    ));
+    border(&mut plot, name);
     Ok((region, plot))
 }
 
