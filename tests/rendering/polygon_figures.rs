@@ -891,23 +891,16 @@ fn circle(svg: &str, id: &str) -> Option<(f64, f64)> {
 fn a_short_rod_s_pins_at_the_inner_dead_centre_stand_apart() {
     // The tenth review: the polygons' figure at l = 1.06 r and 1.07 r,
     // 180°, drew A's and C's pins overlapping inside the block, C's
-    // bearing through it; inversion 3's Coriolis figure at l = 1.03 r and
-    // 1.05 r, 180°, C's pin inside the block c on A's. A detail now draws
-    // them (as Fig. 62's), each lettered, their circles (4.2 units in
-    // radius) a diameter apart.
+    // bearing through it. A detail now draws them (as Fig. 62's), each
+    // lettered, their circles (4.2 units in radius) a diameter apart.
     const APART: f64 = 4.0 * 4.2;
-    use FigureName::{CoriolisInversion2, CoriolisInversion3, VelocityAccelerationPolygons};
+    use FigureName::VelocityAccelerationPolygons;
     for (name, rod, deg) in [
         (VelocityAccelerationPolygons, 1.04, 180.0),
         (VelocityAccelerationPolygons, 1.06, 180.0),
         (VelocityAccelerationPolygons, 1.07, 180.0),
         (VelocityAccelerationPolygons, 1.1, 180.0),
         (VelocityAccelerationPolygons, 1.06, 179.0),
-        (CoriolisInversion3, 1.08, 180.0),
-        (CoriolisInversion3, 1.05, 180.0),
-        (CoriolisInversion3, 1.03, 180.0),
-        (CoriolisInversion3, 1.05, 178.0),
-        (CoriolisInversion2, 1.06, 180.0),
     ] {
         let svg = svg(name, rod, 0.0, deg);
         let apart = ["", "detail-"].iter().any(|p| {

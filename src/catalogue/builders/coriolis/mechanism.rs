@@ -3,7 +3,7 @@
 //! detail of the crank where it is drawn too short to read.
 
 use super::super::Ctx;
-use super::super::inversions::{border, crank_window};
+use super::super::inversions::crank_window;
 use super::panel::mark_window;
 use super::{GAP, MARGIN, MECHANISM_HEIGHT};
 
@@ -12,7 +12,6 @@ use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{PageRect, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
-use crate::number::short;
 use crate::scene::{Canvas, Marker};
 
 /// The page length under which inversion 3's crank CB, the driver, gets
@@ -56,73 +55,20 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
         Inversion::Rod => CRANK_LEAST,
         _ => FIXED_CRANK_LEAST,
     };
-    let engine = pose.engine_pose();
-    let (a, c) = (pose.place(engine.a()), pose.place(engine.c()));
-    let crowded = (a - c).norm() * scale < PINS_APART;
-    if m.crank() * scale >= least && !crowded {
+    if m.crank() * scale >= least {
         return Ok((links_plot(ctx, pose, whole, None)?, None));
     }
     let side = tall;
     let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
     let plot = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
     let scale = plot.map().scale();
-    let b = pose.place(engine.b());
+    let b = pose.place(pose.engine_pose().b());
     let detail_rect = PageRect::new(MARGIN + width - side, MARGIN, side, rect.height);
     // `panel-detail-mechanism`: a crank's detail, read as the plate check
     // reads every mechanism's detail (`panel-detail…`, its ids `detail-…`).
-    let (region, detail) = match m.crank() * scale >= least {
-        true => pins_window(ctx, (a, c), detail_rect, scale)?,
-        false => crank_window(ctx, "detail-mechanism", b, detail_rect, scale)?,
-    };
+    let (region, detail) = crank_window(ctx, "detail-mechanism", b, detail_rect, scale)?;
     let detail = links_plot(ctx, pose, detail, Some(region))?;
     Ok((links_plot(ctx, pose, plot, Some(region))?, Some(detail)))
-}
-
-/// The page distance under which the block's pin A and the crank pin C
-/// get a detail beside the mechanism panel: two ems, room for their
-/// letters between them. A short rod's pins near 180° come within a few
-/// units (inversion 3 at l = 1.08 r, 180°: C's pin on A's inside the
-/// block c, 13 units apart).
-const PINS_APART: f64 = 34.0;
-
-/// How far apart A's and C's pins are drawn in their detail, page units
-/// (at least: the magnification a round step at or above it).
-const PINS_DRAWN: f64 = 60.0;
-
-/// The most the pins' detail magnifies: the block c about them, drawn
-/// about 30 units long on the main view, still fits the detail (at ×20
-/// it ran off it at l = 1.03 r, 180°).
-const PINS_MOST: f64 = 10.0;
-
-/// The detail about the pins `(a, c)` that crowd in a mechanism panel at
-/// `scale`: the region about their middle that `rect` shows, magnified
-/// (a round step, at most [`PINS_MOST`]) until they stand
-/// [`PINS_DRAWN`] apart, boxed by a
-/// border, captioned with the magnification.
-fn pins_window(
-    ctx: &Ctx,
-    (a, c): (Point, Point),
-    rect: PageRect,
-    scale: f64,
-) -> Result<(Frame, Plot)> {
-    let apart = ((a - c).norm() * scale).max(1.0);
-    let wanted = PINS_DRAWN / apart;
-    let magnification = super::FINE_STEPS
-        .iter()
-        .map(|s| s * 10f64.powf(wanted.log10().floor()))
-        .find(|m| *m >= wanted)
-        .unwrap_or(10f64.powf(wanted.log10().ceil()))
-        .clamp(1.0, PINS_MOST);
-    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
-    let half = Vector::new(w, h) * (0.5 / (magnification * scale));
-    let middle = nalgebra::center(&a, &c);
-    let region = Frame::new(middle - half, middle + half);
-    let caption = format!("the boxed region enlarged ×{}", short(magnification));
-    let name = "detail-mechanism";
-    let mut plot =
-        Plot::world(name, rect, &region, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
-    border(&mut plot, name);
-    Ok((region, plot))
 }
 
 /// The chain drawn on `plot`: its links, pins C, B, A lettered where on
@@ -207,9 +153,17 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
         _ => pose.place(engine.c()),
     } - b;
     let mut links = vec![other.y.atan2(other.x)];
-    let e = pose.engine_pose().mechanism().offset();
+    let mechanism = pose.engine_pose().mechanism();
+    let e = mechanism.offset();
     let slot = (pose.place(Point::new(0.0, e)), pose.place(engine.a()));
-    links.extend(crossings(slot, b, radius + s.world(OMEGA_MARGIN)));
+    // d is a bar as wide as the block: its middle line and both sides.
+    let half = super::super::inversions::slot_half_width(mechanism, s.transform().scale());
+    let across = pose.turn(Vector::new(0.0, half));
+    for side in [-1.0, 0.0, 1.0] {
+        let shift = across * side;
+        let edge = (slot.0 + shift, slot.1 + shift);
+        links.extend(crossings(edge, b, radius + s.world(OMEGA_MARGIN)));
+    }
     // B's bearing, drawn below it: its triangle and hatching span about
     // 0.65 rad either side of straight down at the arc's radius (the
     // arc and its head lay on the hatching at l = 1.05 r, 180° in
