@@ -42,10 +42,8 @@ const EDGE_ROOM: f64 = 40.0;
 const LETTER_CLEAR: f64 = 17.0;
 
 /// Centres nearer than this on the page (page units) to a lettered point
-/// share its place and are named in the notes: a pin's width, within
-/// which the two read as one spot. At 18, dots 13 to 17 units from a pin
-/// were drawn unlettered while the notes called them too near to letter.
-const CROWDED: f64 = 8.0;
+/// share its place and are named in the notes.
+const CROWDED: f64 = 18.0;
 
 /// Two centres closer than this fraction of the chain's size (r + l +
 /// |e|) are one point (the construction's rounding, some ulps, is far
@@ -445,13 +443,6 @@ pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -
     d.s
 }
 
-/// The half width (world units) of the slotted bar d that [`draw_links`]
-/// draws on a page at `scale` page units per world unit: the block's
-/// half height as drawn ([`band`]).
-pub(super) fn slot_half_width(m: &SliderCrank, scale: f64) -> f64 {
-    super::chains::block_on_page(block_size(m), scale).1
-}
-
 /// The world frame of what [`draw_links`] draws at `pose`: the pins, the
 /// frame's bar to its far end, the block and the driven pin's path.
 pub(super) fn links_frame(m: &SliderCrank, pose: &InversionPose) -> Frame {
@@ -459,9 +450,6 @@ pub(super) fn links_frame(m: &SliderCrank, pose: &InversionPose) -> Frame {
     let q = parts(m, pose);
     let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
-    if matches!(pose.inversion(), Inversion::Crank | Inversion::Rod) {
-        points.extend(band(&q, hh));
-    }
     let (centre, radius) = match pose.inversion() {
         Inversion::Frame => (q.c, m.crank()),
         Inversion::Crank => (q.b, m.rod()),
@@ -491,35 +479,6 @@ struct Drawing {
     /// letters: a few units apart here, their letters would stand by the
     /// wrong pin.
     held: Option<Frame>,
-}
-
-/// The outline of the turning frame d with a slot for the block: a bar
-/// `w` wide each side of its middle line (the block's half height, so
-/// that the block fills the slot), from `w` behind its pivot C to its
-/// far end, bent square at the foot T of C's leg where the stroke is
-/// offset. A body, not a line: a link lying along its leg or its arm
-/// (the crank along the leg near 90° with an offset near r, the fixed
-/// rod along the arm at 270°) shows inside it instead of hiding it, and
-/// a pin it passes reads as passed, not joined. With no offset, a
-/// rectangle; as the offset goes to 0 the leg shortens to nothing and
-/// the outline to the same rectangle.
-fn band(q: &Parts, w: f64) -> Vec<Point> {
-    let (c, t, f, u) = (q.c, q.t, q.f, q.u);
-    let leg = t - c;
-    if leg.norm() == 0.0 {
-        let (s, v) = (c - u * w, q.v);
-        return vec![s - v * w, f - v * w, f + v * w, s + v * w];
-    }
-    let g = leg / leg.norm();
-    let s = c - g * w;
-    vec![
-        s - u * w,
-        t + g * w - u * w,
-        f + g * w,
-        f - g * w,
-        t - g * w + u * w,
-        s + u * w,
-    ]
 }
 
 /// The middle of `p` and `q`.
@@ -618,26 +577,11 @@ impl Drawing {
         }
     }
 
-    /// Whether d is drawn as a slotted body ([`band`]): where the block
-    /// slides in it as it turns (inversions 2 and 3). In inversion 4 d is
-    /// the plunger that slides through the fixed barrel, a rod.
-    fn slotted(&self) -> bool {
-        matches!(self.fixed, Link::A | Link::B)
-    }
-
     /// The frame d: the guides and the line of stroke if it is fixed,
     /// else the slotted bar from C.
     fn frame(&mut self, pose: &InversionPose) {
         let (lh, hh) = self.block;
         let q = &self.q;
-        if self.slotted() {
-            let points = band(q, self.block.1);
-            self.s
-                .push("link-frame", Role::Link, Shape::Block { points });
-            let at = self.bar_letter();
-            self.s.letter("link-d", at, "*d*", TextSize::Letter);
-            return;
-        }
         if self.fixed != Link::D {
             self.s.link("frame", self.bar());
             let at = self.bar_letter();
@@ -700,11 +644,7 @@ impl Drawing {
         if self.fixed != Link::B {
             moving.push((b, a));
         }
-        if self.slotted() {
-            let outline = band(&self.q, self.block.1);
-            let sides = outline.iter().zip(outline.iter().cycle().skip(1));
-            moving.extend(sides.map(|(p, q)| (*p, *q)));
-        } else if self.fixed != Link::D {
+        if self.fixed != Link::D {
             moving.extend(bar.iter().copied().zip(bar.iter().copied().skip(1)));
         }
         if self.fixed != Link::C {
@@ -761,7 +701,7 @@ impl Drawing {
             },
         );
         if !self.held(mid(c, b)) {
-            self.s.link_letter("link-a", (c, b), "*a*");
+            self.s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
         }
         let s = &mut self.s;
         s.link_letter("link-b", (b, a), "*b*");

@@ -153,17 +153,9 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
         _ => pose.place(engine.c()),
     } - b;
     let mut links = vec![other.y.atan2(other.x)];
-    let mechanism = pose.engine_pose().mechanism();
-    let e = mechanism.offset();
+    let e = pose.engine_pose().mechanism().offset();
     let slot = (pose.place(Point::new(0.0, e)), pose.place(engine.a()));
-    // d is a bar as wide as the block: its middle line and both sides.
-    let half = super::super::inversions::slot_half_width(mechanism, s.transform().scale());
-    let across = pose.turn(Vector::new(0.0, half));
-    for side in [-1.0, 0.0, 1.0] {
-        let shift = across * side;
-        let edge = (slot.0 + shift, slot.1 + shift);
-        links.extend(crossings(edge, b, radius + s.world(OMEGA_MARGIN)));
-    }
+    links.extend(crossings(slot, b, radius + s.world(OMEGA_MARGIN)));
     // B's bearing, drawn below it: its triangle and hatching span about
     // 0.65 rad either side of straight down at the arc's radius (the
     // arc and its head lay on the hatching at l = 1.05 r, 180° in
