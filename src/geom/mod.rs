@@ -14,7 +14,7 @@ pub use clip::Frame;
 pub use line::{Intersection, Line, PARALLEL_TOLERANCE};
 pub use meet_json::{MeetJson, PointJson};
 pub(crate) use segment::{crossing, point_segment_distance, segment_distance, unit};
-pub(crate) use side_by_side::side_by_side;
+pub(crate) use side_by_side::{side_by_side, side_by_side_ends};
 
 /// A point of the world (or page) plane.
 pub type Point = nalgebra::Point2<f64>;

@@ -20,25 +20,62 @@ const PARALLEL: f64 = 0.1;
 /// run over anything). Degenerate: zero-length sides get no offset, and an empty
 /// list gives an empty one.
 pub(crate) fn side_by_side(sides: &[(Point, Point)], apart: f64) -> Vec<Vector> {
+    set_beside(sides, apart, false)
+        .into_iter()
+        .map(|(tail, _)| tail)
+        .collect()
+}
+
+/// As [`side_by_side`], the offsets of each side's tail and head: a side
+/// moved `apart` across keeps its head on its point, its tail alone moved
+/// to the side it would be moved to, where so turned it runs over none
+/// of the sides before it (its head, on a point off the other side's
+/// line, stands clear of it); else the whole side is moved. The engine's acceleration polygon with an offset (e =
+/// 0.5, 176°) set c′q′ beside c′a′, which it leaves at a narrow angle,
+/// and its head ended 7 units off q′, over a′'s letter. Degenerate as
+/// [`side_by_side`].
+pub(crate) fn side_by_side_ends(sides: &[(Point, Point)], apart: f64) -> Vec<(Vector, Vector)> {
+    set_beside(sides, apart, true)
+}
+
+/// The offsets of the tail and head of each of `sides` ([`side_by_side`],
+/// [`side_by_side_ends`]): with `turn`, a side moved keeps its head where
+/// that runs over none before it.
+fn set_beside(sides: &[(Point, Point)], apart: f64, turn: bool) -> Vec<(Vector, Vector)> {
     let mut drawn: Vec<(Point, Point)> = Vec::new();
     let mut offsets = Vec::new();
+    let zero = Vector::zeros();
     for &(from, to) in sides {
         let d = to - from;
         let length = d.norm();
         if !(length > apart && apart > 0.0) {
-            offsets.push(Vector::zeros());
+            offsets.push((zero, zero));
             continue;
         }
         let across = Vector::new(-d.y, d.x) / length;
-        let offset = [0.0, 1.0, -1.0, 2.0, -2.0]
-            .map(|k| across * (k * apart))
-            .into_iter()
-            .find(|o| {
-                let moved = (from + o, to + o);
-                !(drawn.iter()).any(|s| runs_over(moved, *s, apart) || runs_over(*s, moved, apart))
-            })
-            .unwrap_or_else(Vector::zeros);
-        drawn.push((from + offset, to + offset));
+        let clear = |(t, h): (Vector, Vector)| {
+            let moved = (from + t, to + h);
+            !(drawn.iter()).any(|s| runs_over(moved, *s, apart) || runs_over(*s, moved, apart))
+        };
+        // In place, else moved whole to the first side clear, once or
+        // twice as far; with `turn`, moved once, turned about its head
+        // instead where that is clear too (it takes the place it would
+        // take moved whole, and leaves the others theirs), or turned to
+        // either side where it cannot be moved once.
+        let once = [1.0, -1.0].map(|k| across * (k * apart));
+        let twice = [2.0, -2.0].map(|k| across * (k * apart));
+        let slot = once.iter().find(|o| clear((**o, **o)));
+        let turned: Vec<(Vector, Vector)> = match (turn, slot) {
+            (false, _) => Vec::new(),
+            (true, Some(o)) => vec![(*o, zero)],
+            (true, None) => once.iter().map(|o| (*o, zero)).collect(),
+        };
+        let offset = std::iter::once((zero, zero))
+            .chain(turned)
+            .chain(once.iter().chain(&twice).map(|o| (*o, *o)))
+            .find(|o| clear(*o))
+            .unwrap_or((zero, zero));
+        drawn.push((from + offset.0, to + offset.1));
         offsets.push(offset);
     }
     offsets
@@ -101,5 +138,23 @@ mod tests {
         let o = side_by_side(&three, 0.5);
         assert!((o[2].norm() - 0.5).abs() < 1e-12 && o[2] != o[1]);
         assert!(side_by_side(&[], 1.0).is_empty());
+    }
+
+    #[test]
+    fn a_side_leaving_another_keeps_its_head_on_its_point() {
+        let p = |x, y| Point::new(x, y);
+        // The second leaves the first's line at its tail at 2°: set
+        // beside it, its tail alone moves and its head stays.
+        let sides = [(p(0.0, 0.0), p(10.0, 0.0)), (p(0.0, 0.0), p(14.0, 0.5))];
+        let o = side_by_side_ends(&sides, 0.5);
+        assert_eq!(o[0], (Vector::zeros(), Vector::zeros()));
+        assert!((o[1].0.norm() - 0.5).abs() < 1e-12);
+        assert_eq!(o[1].1, Vector::zeros());
+        // On one line, the head kept would run over the first: the whole
+        // side moves.
+        let folded = [sides[0], (p(0.0, 0.0), p(14.0, 0.0))];
+        let o = side_by_side_ends(&folded, 0.5);
+        assert_eq!(o[1].0, o[1].1);
+        assert!((o[1].1.norm() - 0.5).abs() < 1e-12);
     }
 }

@@ -865,3 +865,135 @@ fn the_polygons_notes_set_each_prime_clear_of_what_follows() {
     }
     assert!(!text.contains("(the velocity"), "{text}");
 }
+
+/// The letters of each lettered image group of the polygons (the texts
+/// `label-…` and `detail-label-…` of the polygon panels and their
+/// details), as read: "aʹ, k" gives ["aʹ", "k"].
+fn letter_groups(svg: &str) -> Vec<Vec<String>> {
+    let mut groups = Vec::new();
+    for panel in ["velocity", "acceleration"].map(|p| format!("{p}-polygon")) {
+        let detail = format!("{panel}-detail");
+        for panel in [panel, detail] {
+            groups.extend(panel_letters(svg, &panel));
+        }
+    }
+    groups
+}
+
+/// The letter groups of the panel `panel` ([`letter_groups`]).
+fn panel_letters(svg: &str, panel: &str) -> Vec<Vec<String>> {
+    let Some(at) = svg.find(&format!(r#"id="panel-{panel}""#)) else {
+        return Vec::new();
+    };
+    let rest = &svg[at..];
+    let end = rest[1..].find("id=\"panel-").map_or(rest.len(), |e| e + 1);
+    (rest[..end].split("<text").skip(1))
+        .filter(|t| t.contains("id=\"label-") || t.contains("id=\"detail-label-"))
+        .map(|text| {
+            let body = text.split_once('>').map_or("", |(_, b)| b);
+            let body = body.split("</text>").next().unwrap_or("");
+            let read = words(&format!("<x>{body}</x>")).replace(' ', "");
+            read.split(',').map(str::to_string).collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_point_said_to_stand_on_another_is_lettered_with_it() {
+    // The tenth review: inversion 2 at l = 30.3 r, 0° said of the sliding
+    // acceleration "too short to be seen: k stands on a′_d", while the
+    // drawing set k's dot 7.2 units from a′_d's, lettered "a′, k" and "n,
+    // a′_d". Where the notes say one point stands on another, one letter
+    // names both; where the two are lettered apart, the notes say so.
+    let mut said = 0;
+    for name in [
+        FigureName::CoriolisInversion2,
+        FigureName::CoriolisInversion3,
+    ] {
+        for (rod, deg) in [
+            (30.3, 0.0),
+            (30.3, 180.0),
+            (30.3, 89.07),
+            (30.3, 270.06),
+            (40.0, 89.0),
+            (48.3, 0.0),
+            (48.3, 89.24),
+            (45.6, 89.62),
+            (1.08, 180.0),
+        ] {
+            let svg = svg(name, rod, 0.0, deg);
+            let text = words(&svg);
+            let groups = letter_groups(&svg);
+            for (at, _) in text.match_indices(" stands on ") {
+                said += 1;
+                let from = text[..at].rsplit(' ').next().unwrap();
+                let to = text[at + 11..].split([')', ';', ' ']).next().unwrap();
+                assert!(
+                    (groups.iter())
+                        .any(|g| g.iter().any(|l| l == from) && g.iter().any(|l| l == to)),
+                    "{name:?} l = {rod} r, {deg}°: “{from} stands on {to}” but the letters {groups:?}"
+                );
+            }
+        }
+    }
+    assert!(said > 0, "no point said to stand on another");
+}
+
+/// The centre of the circle `id`, if drawn.
+fn circle(svg: &str, id: &str) -> Option<(f64, f64)> {
+    element(svg, id).map(|_| dot(svg, id))
+}
+
+#[test]
+fn a_short_rod_s_pins_at_the_inner_dead_centre_stand_apart() {
+    // The tenth review: the polygons' figure at l = 1.06 r and 1.07 r,
+    // 180°, drew A's and C's pins overlapping inside the block, C's
+    // bearing through it. A detail now draws them (as Fig. 62's), each
+    // lettered, their circles (4.2 units in radius) a diameter apart.
+    const APART: f64 = 4.0 * 4.2;
+    use FigureName::VelocityAccelerationPolygons;
+    for (name, rod, deg) in [
+        (VelocityAccelerationPolygons, 1.04, 180.0),
+        (VelocityAccelerationPolygons, 1.06, 180.0),
+        (VelocityAccelerationPolygons, 1.07, 180.0),
+        (VelocityAccelerationPolygons, 1.1, 180.0),
+        (VelocityAccelerationPolygons, 1.06, 179.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let apart = ["", "detail-"].iter().any(|p| {
+            let (a, c) = (format!("{p}point-A"), format!("{p}point-C"));
+            let lettered = element(&svg, &format!("{p}label-A")).is_some()
+                && element(&svg, &format!("{p}label-C")).is_some();
+            match (circle(&svg, &a), circle(&svg, &c)) {
+                (Some(a), Some(c)) => lettered && (a.0 - c.0).hypot(a.1 - c.1) >= APART,
+                _ => false,
+            }
+        });
+        assert!(
+            apart,
+            "{name:?} l = {rod} r, {deg}°: A's and C's pins not drawn apart"
+        );
+    }
+}
+
+#[test]
+fn a_side_set_beside_another_ends_on_its_point_where_it_can() {
+    // The §35 engine with an offset (r = 0.5, l = 3) near 180°: c′q′
+    // leaves c′a′ at a narrow angle and was set beside it whole, its head
+    // 7 units off q′ by a′'s letter. Turned about its head, it runs over
+    // nothing and ends on q′.
+    for (offset, deg) in [(0.9, 172.0), (0.7, 172.0)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(0.5, 3.0, offset).unwrap());
+        options.angle = Some(Angle::deg(deg));
+        let name = FigureName::VelocityAccelerationPolygons;
+        let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+        let tip = arrow_tip(&svg, "acceleration-c2q2");
+        let q = dot(&svg, "point-q2");
+        let off = (tip.0 - q.0).hypot(tip.1 - q.1);
+        assert!(
+            off < 1.5,
+            "e = {offset}, {deg}°: c′q′ ends {off:.1} units from q′"
+        );
+    }
+}

@@ -659,10 +659,12 @@ fn subject(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Option<Detail>>
 const PINS_CROWD: f64 = 24.0;
 
 /// How close (page units) the piston pin A comes to the crank centre C
-/// in a figure marking the crank's angles without a torque (Fig. 62)
-/// before their letters, 17 units tall, cannot be told apart: two ems.
-/// Near the inner dead centre of a rod of 1.1 cranks or less they stand
-/// a few units apart, A's letter beside C's pin.
+/// in a figure marking the crank's angles without a torque (Fig. 62), or
+/// its ω alone (the polygons' figure), before their letters, 17 units
+/// tall, cannot be told apart: two ems. Near the inner dead centre of a
+/// rod of 1.1 cranks or less they stand a few units apart, A's letter
+/// beside C's pin (the polygons' figure at l = 1.06 r, 180°: the two pins
+/// overlapping inside the block, C's bearing drawn through it).
 const PINS_TWO_EMS: f64 = 34.0;
 
 /// The detail of a torque figure whose crank the main view draws large
@@ -672,12 +674,14 @@ const PINS_TWO_EMS: f64 = 34.0;
 /// foot M and their letters leave O's letter no room. Drawn about them,
 /// it carries the marks about the crank as a crank's detail does (M
 /// lies by O at every dead centre: a longer rod's O and M share the
-/// torque arrow's room without one). None for a figure without a torque,
-/// or where the pins stand apart.
+/// torque arrow's room without one). A figure marking the crank's angles
+/// or the polygons' ω gets one where A comes within [`PINS_TWO_EMS`] of C.
+/// None for a figure marking none of these, or where the pins stand
+/// apart.
 fn crowded_crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     let crowd = if ctx.scene.has(Layer::Torque) {
         PINS_CROWD
-    } else if ctx.scene.has(Layer::Angles) {
+    } else if ctx.scene.has(Layer::Angles) || ctx.scene.has(Layer::Polygons) {
         PINS_TWO_EMS
     } else {
         return None;

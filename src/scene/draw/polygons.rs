@@ -10,7 +10,7 @@
 use super::LayerCtx;
 use crate::construct::{AccelerationPolygon, VelocityPolygon};
 use crate::figure::{Align, Hue, RIGHT_ANGLE, RichText, Role, Shape, TextSize};
-use crate::geom::{Point, Vector, side_by_side};
+use crate::geom::{Point, Vector, side_by_side_ends};
 use crate::number::{short, sig};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
@@ -368,17 +368,20 @@ const SIDE_APART: f64 = 7.0;
 
 /// The offsets that set each of `sides` (the result first, then the
 /// others in the order drawn) clear of those before it that it would
-/// run over ([`side_by_side`]): near 90° at a long rod the acceleration
-/// polygon folds, xa′ running back over c′b′, and the two read as one
-/// line; the velocity polygon's cb and ca are one arrow where a = b.
-/// Sides too short to be drawn count as points.
-fn apart<const N: usize>(canvas: &Canvas, sides: [(Point, Point); N]) -> [Vector; N] {
+/// run over ([`side_by_side_ends`]), each as the offsets of its tail and
+/// its head: near 90° at a long rod the acceleration polygon folds, xa′
+/// running back over c′b′, and the two read as one line; the velocity
+/// polygon's cb and ca are one arrow where a = b. A side set beside one
+/// it leaves at a narrow angle keeps its head on its point. Sides too
+/// short to be drawn count as points.
+fn apart<const N: usize>(canvas: &Canvas, sides: [(Point, Point); N]) -> [(Vector, Vector); N] {
     let drawn = sides.map(|(p, q)| {
         let seen = canvas.page((q - p).norm()) >= MIN_ARROW;
         (p, if seen { q } else { p })
     });
-    let offsets = side_by_side(&drawn, canvas.world(SIDE_APART));
-    std::array::from_fn(|i| offsets.get(i).copied().unwrap_or_else(Vector::zeros))
+    let offsets = side_by_side_ends(&drawn, canvas.world(SIDE_APART));
+    let zero = (Vector::zeros(), Vector::zeros());
+    std::array::from_fn(|i| offsets.get(i).copied().unwrap_or(zero))
 }
 
 fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
@@ -393,30 +396,30 @@ fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
         canvas,
         format!("velocity-{o}{b}"),
         Role::Construction,
-        p.o + ob,
-        p.b + ob,
+        p.o + ob.0,
+        p.b + ob.1,
     );
     vector(
         canvas,
         format!("velocity-{a}{b}"),
         Role::Construction,
-        p.a + ab,
-        p.b + ab,
+        p.a + ab.0,
+        p.b + ab.1,
     );
     vector(
         canvas,
         format!("velocity-{o}{a}"),
         Role::Result,
-        p.o + oa,
-        p.a + oa,
+        p.o + oa.0,
+        p.a + oa.1,
     );
     if let Some(q) = p.q {
         vector(
             canvas,
             format!("velocity-{o}q"),
             Role::Auxiliary,
-            p.o + oq,
-            q + oq,
+            p.o + oq.0,
+            q + oq.1,
         );
         if off_rod(ctx) {
             image_triangle(canvas, "velocity", [&a, &b, "q"], [p.a, p.b, q]);
@@ -463,29 +466,29 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         canvas,
         format!("acceleration-{o}{b}"),
         Role::Construction,
-        p.o + ob,
-        p.b + ob,
+        p.o + ob.0,
+        p.b + ob.1,
     );
     vector(
         canvas,
         format!("acceleration-{b}x"),
         Role::Construction,
-        p.b + bx,
-        p.x + bx,
+        p.b + bx.0,
+        p.x + bx.1,
     );
     vector(
         canvas,
         format!("acceleration-x{a}"),
         Role::Construction,
-        p.x + xa,
-        p.a + xa,
+        p.x + xa.0,
+        p.a + xa.1,
     );
     vector(
         canvas,
         format!("acceleration-{o}{a}"),
         Role::Result,
-        p.o + oa,
-        p.a + oa,
+        p.o + oa.0,
+        p.a + oa.1,
     );
     canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
     if let Some(q) = p.q {
@@ -493,8 +496,8 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
             canvas,
             format!("acceleration-{o}q2"),
             Role::Auxiliary,
-            p.o + oq,
-            q + oq,
+            p.o + oq.0,
+            q + oq.1,
         );
         if off_rod(ctx) {
             image_triangle(canvas, "acceleration", [&a, &b, "q2"], [p.a, p.b, q]);

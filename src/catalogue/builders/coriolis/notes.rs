@@ -6,6 +6,7 @@ use super::polygons::Polygons;
 
 use crate::chain::{Inversion, InvertedChain};
 use crate::geom::Vector;
+use crate::scene::COINCIDE;
 use serde_json::{Value, json};
 
 /// The figure's metadata: the polygons' vectors from their poles, the
@@ -101,11 +102,11 @@ pub(super) fn notes(
     // component of 1370, under a unit at ×20) is said so: k stands on a′_d.
     let sliding_said = said(&[
         sliding_sense(inversion, sliding),
-        unseen(sliding, seen.0, "*k* stands on *a*′_{d}"),
+        unseen(sliding, seen.0, ("*k*", "*a*′_{d}")),
     ]);
     let coriolis_unseen = said(&[match inversion {
-        Inversion::Rod => unseen(coriolis_size, seen.1, "*k* stands on *o*′"),
-        _ => unseen(coriolis_size, seen.1, "*k* stands on *a*′"),
+        Inversion::Rod => unseen(coriolis_size, seen.1, ("*k*", "*o*′")),
+        _ => unseen(coriolis_size, seen.1, ("*k*", "*a*′")),
     }]);
     let acceleration = format!(
         "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{sliding_said}.",
@@ -159,9 +160,13 @@ fn said(parts: &[String]) -> String {
 /// What the notes say of a side of value `value` drawn `seen` page units
 /// long at its largest (at the detail's magnification, if any) where
 /// that is too short to be seen (under [`super::MIN_ARROW`]): how long,
-/// and `stands` (which point its end stands on); nothing for a nil side
-/// or one seen.
-fn unseen(value: f64, (seen, magnified): (f64, Option<f64>), stands: &str) -> String {
+/// and what the drawing shows of its ends `(from, to)`: under
+/// [`COINCIDE`] one dot lettered for both, `from` standing on `to`;
+/// longer, two dots each lettered (inversion 2 at l = 30.3 r, 0°: the
+/// sliding acceleration 7.2 units, k lettered with a′ and a′_d with n,
+/// where the notes had k standing on a′_d). Nothing for a nil side or
+/// one seen.
+fn unseen(value: f64, (seen, magnified): (f64, Option<f64>), (from, to): (&str, &str)) -> String {
     if value == 0.0 || seen >= super::MIN_ARROW {
         return String::new();
     }
@@ -170,8 +175,12 @@ fn unseen(value: f64, (seen, magnified): (f64, Option<f64>), stands: &str) -> St
         true => "under 0.1".to_string(),
         false => format!("{seen:.1}"),
     };
+    let ends = match seen < COINCIDE {
+        true => format!("too short to be seen: {from} stands on {to}"),
+        false => format!("too short for an arrow: {from} and {to} are the two dots at its ends"),
+    };
     format!(
-        "drawn {drawn} units long{}, too short to be seen: {stands}",
+        "drawn {drawn} units long{}, {ends}",
         magnified.map_or(String::new(), |m| format!(" at ×{}", short(m))),
     )
 }
