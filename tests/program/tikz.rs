@@ -12,7 +12,7 @@
 //! poppler-utils; a plain `cargo test` lists them as ignored, `.ci/run`
 //! installs both and runs them.
 
-use crate::command;
+use crate::{command, common};
 use command::{run, succeeded};
 use slider_crank::FigureName;
 use std::collections::HashSet;
@@ -259,28 +259,37 @@ fn faults(tikz: &Path, program: &Path, labels: &[(char, (f64, f64))]) -> Vec<Str
 #[ignore = "needs TeX Live and poppler-utils: run with `-- --ignored` (.ci/run does)"]
 fn every_figure_as_tikz_compiles_with_both_engines_and_matches_its_pdf() {
     let dir = tempfile::tempdir().unwrap();
-    let mut failures = Vec::new();
-    for name in FigureName::ALL.map(|f| f.name()) {
-        let tex = dir.path().join(format!("{name}.tex"));
-        let pdf = dir.path().join(format!("{name}-program.pdf"));
-        for out in [&tex, &pdf] {
-            let mut args = vec!["figure", name, "--out", out.to_str().unwrap()];
-            if out == &tex {
-                args.push("--tikz-standalone");
-            }
-            succeeded(&run(&args));
+    // The figures on the test threads (each its own files; LaTeX runs
+    // on one core, so one figure at a time left the other idle).
+    let names = FigureName::ALL.map(|f| f.name());
+    let failures: Vec<String> =
+        common::in_threads(&names, |name| tikz_faults(dir.path(), name)).concat();
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The faults of figure `name` written in `dir` as standalone TikZ,
+/// compiled by both engines, against its PDF from the program.
+fn tikz_faults(dir: &Path, name: &str) -> Vec<String> {
+    let tex = dir.join(format!("{name}.tex"));
+    let pdf = dir.join(format!("{name}-program.pdf"));
+    for out in [&tex, &pdf] {
+        let mut args = vec!["figure", name, "--out", out.to_str().unwrap()];
+        if out == &tex {
+            args.push("--tikz-standalone");
         }
-        let svg = run(&["figure", name]);
-        succeeded(&svg);
-        let labels = labels(&String::from_utf8(svg.stdout).unwrap());
-        for engine in ["pdflatex", "lualatex"] {
-            let compiled = compile(engine, &tex, &format!("{name}-{engine}"));
-            for f in faults(&compiled, &pdf, &labels) {
-                failures.push(format!("{name} ({engine}): {f}"));
-            }
+        succeeded(&run(&args));
+    }
+    let svg = run(&["figure", name]);
+    succeeded(&svg);
+    let labels = labels(&String::from_utf8(svg.stdout).unwrap());
+    let mut failures = Vec::new();
+    for engine in ["pdflatex", "lualatex"] {
+        let compiled = compile(engine, &tex, &format!("{name}-{engine}"));
+        for f in faults(&compiled, &pdf, &labels) {
+            failures.push(format!("{name} ({engine}): {f}"));
         }
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    failures
 }
 
 #[test]
