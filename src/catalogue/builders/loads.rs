@@ -633,12 +633,11 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     ]
 }
 
-/// The notes' word on the curves' shapes that read as faults and are
-/// the load's own: the curves' small loops by 90° at the default (the
-/// full curve's *x* component turning back from −5664 lbf at 62°, by the
-/// cut-off, to −4809 lbf at 82° and out to −5412 lbf at 110°: `analyze
-/// --angle 62 --mass 10 --indicator examples/indicator.csv --bore
-/// 0.8333333333333334 --rod-mass 6 --rod-cg 1 --rod-gyration 0.9 --json`) and the dashed curve
-/// flat on the axis at long rods (a massless rod's force lies along the
-/// rod, within φ of the line of stroke).
-const SHAPES: &str = "A curve’s sharp turns and small loops (both curves’ by 90° at the default engine, after the cut-off) are the load itself turning back and out again, not faults of the drawing; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke.";
+/// The notes' word on the curves' shapes that a reader might take for
+/// faults: the small loops by 90° at the default (the full curve's *x*
+/// component turns back from −5664 lbf at 62°, by the cut-off, to −4809
+/// lbf at 82° and out to −5412 lbf at 110°, as the analysis of the
+/// default engine at those angles prints) and the dashed curve flat on
+/// the axis at long rods (a massless rod's force lies along the rod,
+/// within φ of the line of stroke).
+const SHAPES: &str = "The small loops of both curves by 90° at the default engine, after the cut-off, are the load itself turning back and out again; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke.";
