@@ -1439,8 +1439,14 @@ fn to_letter(svg: &str, id: &str, p: (f64, f64)) -> f64 {
     let (x, y) = (num(svg, id, "x"), num(svg, id, "y"));
     let em = num(svg, id, "font-size");
     let half = 0.25 * em * text_content(svg, id).chars().count() as f64;
-    let dx = (x - half - p.0).max(p.0 - x - half).max(0.0);
-    let dy = (y - 0.75 * em - p.1).max(p.1 - y).max(0.0);
+    box_to((x - half, x + half, y - 0.75 * em, y), p)
+}
+
+/// The distance from the page point `p` to the box `(x0, x1, y0, y1)`:
+/// 0 inside it.
+fn box_to((x0, x1, y0, y1): (f64, f64, f64, f64), p: (f64, f64)) -> f64 {
+    let dx = (x0 - p.0).max(p.0 - x1).max(0.0);
+    let dy = (y0 - p.1).max(p.1 - y1).max(0.0);
     dx.hypot(dy)
 }
 
@@ -1687,10 +1693,7 @@ fn letter_box(svg: &str, id: &str) -> (f64, f64, f64, f64) {
 
 /// The distance from the page point `p` to [`letter_box`] of `id`.
 fn to_box_of(svg: &str, id: &str, p: (f64, f64)) -> f64 {
-    let (x0, x1, y0, y1) = letter_box(svg, id);
-    let dx = (x0 - p.0).max(p.0 - x1).max(0.0);
-    let dy = (y0 - p.1).max(p.1 - y1).max(0.0);
-    dx.hypot(dy)
+    box_to(letter_box(svg, id), p)
 }
 
 #[test]

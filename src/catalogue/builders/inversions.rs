@@ -630,16 +630,14 @@ impl Drawing {
     fn frame(&mut self, pose: &InversionPose) {
         let (lh, hh) = self.block;
         let q = &self.q;
-        if self.slotted() {
-            let points = band(q, self.block.1);
-            self.s
-                .push("link-frame", Role::Link, Shape::Block { points });
-            let at = self.bar_letter();
-            self.s.letter("link-d", at, "*d*", TextSize::Letter);
-            return;
-        }
         if self.fixed != Link::D {
-            self.s.link("frame", self.bar());
+            if self.slotted() {
+                let points = band(q, self.block.1);
+                self.s
+                    .push("link-frame", Role::Link, Shape::Block { points });
+            } else {
+                self.s.link("frame", self.bar());
+            }
             let at = self.bar_letter();
             self.s.letter("link-d", at, "*d*", TextSize::Letter);
             return;
