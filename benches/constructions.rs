@@ -1,6 +1,6 @@
 //! All constructions of one pose against the analytic core alone.
 //!
-//! `cargo bench --bench constructions`; the ratio is recorded in
+//! `cargo bench --features bench --bench constructions`; the ratio is recorded in
 //! docs/benchmarks.md.
 
 use criterion::{Criterion, criterion_group, criterion_main};

@@ -6,7 +6,7 @@
 //! (c) adaptive cubic Béziers. The step counts are found (by measurement)
 //! before timing; only the tracing is timed.
 //!
-//! `cargo bench --bench curves`, then `cargo run --release --example
+//! `cargo bench --features bench --bench curves`, then `cargo run --release --example
 //! curve_table` for the table with segments and measured errors
 //! (docs/benchmarks.md).
 

@@ -4,7 +4,7 @@
 //! radius of gyration a third of its length); and the balance of a
 //! six-cylinder in-line engine, 0-120-240-240-120-0, at 3600 angles.
 //!
-//! `cargo bench --bench dynamics`; the times are recorded in
+//! `cargo bench --features bench --bench dynamics`; the times are recorded in
 //! docs/benchmarks.md with the whole-process time of `table dynamics`.
 
 use criterion::{Criterion, criterion_group, criterion_main};

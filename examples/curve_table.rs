@@ -4,7 +4,7 @@
 //! within the cubic path's measured error), an adaptive polyline and
 //! adaptive cubic Béziers.
 //!
-//! Times are criterion's mean estimates from `cargo bench --bench curves`
+//! Times are criterion's mean estimates from `cargo bench --features bench --bench curves`
 //! (read from target/criterion); where a benchmark has not been run the
 //! example times the trace itself (median of 15 batches) and says so.
 //!
