@@ -32,6 +32,11 @@ pub(super) fn coriolis_json(polygons: &Polygons, v_bar: f64, a_bar: f64) -> Valu
     })
 }
 
+/// How long the sliding acceleration and the Coriolis component are drawn
+/// at their largest, page units, each with the detail's magnification
+/// where a detail draws it (`None` without one).
+pub(super) type Seen = ((f64, Option<f64>), (f64, Option<f64>));
+
 /// The notes: the pose and the driver, then each polygon read to its bar,
 /// then the Coriolis component and its rule.
 pub(super) fn notes(
@@ -39,7 +44,7 @@ pub(super) fn notes(
     chain: &InvertedChain,
     polygons: &Polygons,
     bars: (f64, f64),
-    (seen, plain): (((f64, Option<f64>), (f64, Option<f64>)), &[String]),
+    (seen, plain): (Seen, &[String]),
 ) -> Vec<String> {
     let m = &ctx.mechanism;
     let u = ctx.unit();
