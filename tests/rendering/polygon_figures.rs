@@ -4,7 +4,7 @@
 //! fifth review (docs/figures/review-2026-11e.md) where a reader misread
 //! them.
 
-use crate::common::{attr, num};
+use crate::common::{attr, bounds_of, num};
 use crate::plate::{Label, Plate};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank};
@@ -1052,17 +1052,7 @@ fn the_polygons_omega_is_drawn_whole_where_a_detail_takes_the_pins() {
             .collect();
         assert!(!arc.is_empty(), "l = {rod}, {deg}°: no ω on the main view");
         if svg.contains(r#"id="detail-frame""#) {
-            let frame = path(&svg, "detail-frame");
-            let xs = frame.iter().map(|p| p.0);
-            let ys = frame.iter().map(|p| p.1);
-            let (x0, x1) = (
-                xs.clone().fold(f64::MAX, f64::min),
-                xs.fold(f64::MIN, f64::max),
-            );
-            let (y0, y1) = (
-                ys.clone().fold(f64::MAX, f64::min),
-                ys.fold(f64::MIN, f64::max),
-            );
+            let (x0, x1, y0, y1) = bounds_of(&path(&svg, "detail-frame"));
             for s in &arc {
                 for p in [s.0, s.1] {
                     let inside = p.0 > x0 && p.0 < x1 && p.1 > y0 && p.1 < y1;
