@@ -709,6 +709,15 @@ pub(crate) struct Steer<'a> {
     /// a box, or that stands too near the line to have one, costs
     /// [`STRUCK`] more; `None` where no leader is drawn.
     pub led: Option<(Segment, &'a [Segment], &'a [Segment])>,
+    /// Whether `toward` is a preference only (a point's letter set away
+    /// from a point near it), not a side to keep to (an angle's
+    /// bisector): beyond its first ring a place along it competes with
+    /// the places of the same ring in every direction, and a nearer place
+    /// on another side wins. At l = 1.54 r, e = −0.464 r, 0° inversion 3's
+    /// n, 17 units below a′_d, was lettered 20 units farther down along
+    /// the way from a′_d, across the side o′c′, while a place beside it
+    /// to its left was clear.
+    pub near_first: bool,
 }
 
 /// How much nearer (page units) another point may be to a letter's box
@@ -821,6 +830,7 @@ pub(crate) fn place_toward(
         line,
         dimensions,
         led,
+        near_first,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
@@ -883,20 +893,27 @@ pub(crate) fn place_toward(
     if let Some(u) = toward {
         for (k, extra) in RINGS.into_iter().enumerate() {
             let reach = gap + extra + u.x.abs() * half.x + u.y.abs() * half.y;
-            consider(&mut best, anchor + u * reach, 0.05 * k as f64);
-            if best.1 < 1.0 {
+            let penalty = match near_first {
+                true => 1.5 * extra + 0.05 * k as f64,
+                false => 0.05 * k as f64,
+            };
+            consider(&mut best, anchor + u * reach, penalty);
+            if best.1 < 1.0 && (!near_first || k == 0) {
                 return (best.2, best.1);
             }
         }
     }
     let units = directions();
-    for extra in RINGS {
+    for (ring, extra) in RINGS.into_iter().enumerate() {
         for (k, &(dx, dy)) in units.iter().enumerate() {
             let u = Vector::new(dx, dy);
             let reach = gap + extra + dx.abs() * half.x + dy.abs() * half.y;
             consider(&mut best, anchor + u * reach, 1.5 * extra + 0.05 * k as f64);
         }
-        if best.1 < 1.0 {
+        // A preferred place farther out (near_first) waits for the rings
+        // whose places could still beat it.
+        let next = RINGS.get(ring + 1).map_or(f64::INFINITY, |e| 1.5 * e);
+        if best.1 < 1.0 && (!near_first || best.0 < next) {
             return (best.2, best.1);
         }
     }

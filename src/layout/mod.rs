@@ -547,6 +547,7 @@ impl PanelLayout<'_> {
                                 line: p.line.map(|own| (own, rivals.as_slice())),
                                 dimensions: &self.dimensions,
                                 led: None,
+                                near_first: p.letter && p.along.is_empty() && p.line.is_none(),
                             },
                             &self.obstacles,
                             room,

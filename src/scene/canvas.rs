@@ -132,6 +132,12 @@ impl Canvas {
         self
     }
 
+    /// The region whose marks about the crank are left to a detail
+    /// ([`Canvas::bare`]), if any.
+    pub(crate) fn bare_region(&self) -> Option<&Frame> {
+        self.bare.as_ref()
+    }
+
     /// Whether marks about `p` are left to a detail ([`Canvas::bare`]).
     pub(crate) fn is_bare(&self, p: Point) -> bool {
         self.bare.is_some_and(|f| f.contains(p))

@@ -59,6 +59,19 @@ pub fn attr(svg: &str, id: &str, name: &str) -> Option<String> {
     Some(t[v..v + t[v..].find('"')?].to_string())
 }
 
+/// The box of `points` as (x0, x1, y0, y1); infinite and reversed for
+/// none.
+pub fn bounds_of(points: &[(f64, f64)]) -> (f64, f64, f64, f64) {
+    let xs = points.iter().map(|p| p.0);
+    let ys = points.iter().map(|p| p.1);
+    (
+        xs.clone().fold(f64::MAX, f64::min),
+        xs.fold(f64::MIN, f64::max),
+        ys.clone().fold(f64::MAX, f64::min),
+        ys.fold(f64::MIN, f64::max),
+    )
+}
+
 /// A numeric attribute of the element with `id`; panics if missing.
 pub fn num(svg: &str, id: &str, name: &str) -> f64 {
     attr(svg, id, name)

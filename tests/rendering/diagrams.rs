@@ -1353,16 +1353,7 @@ fn legends_are_clear_of_the_curves_on_every_page() {
             let svg = to_svg(&figure);
             for box_tag in svg.split('<').filter(|e| e.contains("-legend-box\"")) {
                 let boxed = points_of(&format!("<{box_tag}"));
-                let xs = boxed.iter().map(|p| p.0);
-                let ys = boxed.iter().map(|p| p.1);
-                let (x0, x1) = (
-                    xs.clone().fold(f64::MAX, f64::min),
-                    xs.fold(f64::MIN, f64::max),
-                );
-                let (y0, y1) = (
-                    ys.clone().fold(f64::MAX, f64::min),
-                    ys.fold(f64::MIN, f64::max),
-                );
+                let (x0, x1, y0, y1) = common::bounds_of(&boxed);
                 let inside = |(x, y): (f64, f64)| x > x0 && x < x1 && y > y0 && y < y1;
                 for element in svg.split('<').filter(|e| {
                     e.contains("class=\"curve\"")

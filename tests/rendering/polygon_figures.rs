@@ -4,7 +4,7 @@
 //! fifth review (docs/figures/review-2026-11e.md) where a reader misread
 //! them.
 
-use crate::common::{attr, num};
+use crate::common::{attr, bounds_of, num};
 use crate::plate::{Label, Plate};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank};
@@ -996,4 +996,124 @@ fn a_side_set_beside_another_ends_on_its_point_where_it_can() {
             "e = {offset}, {deg}°: c′q′ ends {off:.1} units from q′"
         );
     }
+}
+
+#[test]
+fn a_short_side_s_length_is_said_in_the_figure_s_quantities() {
+    // The eleventh review: the notes gave a side too short to draw as
+    // "drawn 1.5 units long", a length in the drawing's units no reader
+    // can use. It is now a share of the polygon's bar, whose length is
+    // stated: at l = 40 r, 89° inversion 2's sliding acceleration,
+    // 12 ft/s² at ×20 against a bar of 10000 ft/s², is 0.024 of it (the
+    // superscript ² read as a 2).
+    let svg = svg(FigureName::CoriolisInversion2, 40.0, 0.0, 89.0);
+    let text = words(&svg);
+    assert!(!text.contains("units long"), "{text}");
+    let at = text.find("too short to be seen").expect("the word of it");
+    let said = &text[at.saturating_sub(120)..at];
+    assert!(
+        said.contains("at ×20 drawn 0.024 as long as the 10000 ft/s2 bar"),
+        "{said}"
+    );
+}
+
+#[test]
+fn a_side_drawn_without_a_head_is_said_so() {
+    // The eleventh review: at l = 1.54 r, e = −0.464 r, 0° inversion 3's
+    // side n a′_d, under two and a half heads long, was drawn as a plain
+    // line with no word why (2). The notes name it; the default
+    // of inversion 2, whose sides all carry heads, says nothing of it.
+    let svg = svg(FigureName::CoriolisInversion3, 1.54, -0.464, 0.0);
+    let text = words(&svg);
+    let at = text.find("is drawn without a head").expect("no word of it");
+    let named = &text[at.saturating_sub(12)..at];
+    assert!(named.contains("naʹd"), "{named}");
+    let name = FigureName::CoriolisInversion2;
+    let default = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    assert!(!words(&default).contains("without a head"));
+}
+
+#[test]
+fn the_polygons_omega_is_drawn_whole_where_a_detail_takes_the_pins() {
+    // The eleventh review (2.5): at l = 1.03 r, 269.12° the main view had
+    // no ω, the pins left to a ×2 detail, and the detail showed only a
+    // fragment of ω's arc with no head in its corner: the sense of
+    // rotation, which the polygons turn with, was shown nowhere. The
+    // main view now draws ω round the detail's frame (none of it inside
+    // the frame), and a detail draws ω only whole: its arc as long as
+    // its 1.4 radians.
+    for (rod, deg) in [(1.03, 269.12), (1.03, 180.0), (1.06, 180.0), (1.03, 90.07)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let main = &plate.panels[0];
+        let arc: Vec<_> = (main.strokes.iter())
+            .filter(|s| s.id == "polygons-omega")
+            .flat_map(|s| s.segs.iter())
+            .collect();
+        assert!(!arc.is_empty(), "l = {rod}, {deg}°: no ω on the main view");
+        if svg.contains(r#"id="detail-frame""#) {
+            let (x0, x1, y0, y1) = bounds_of(&path(&svg, "detail-frame"));
+            for s in &arc {
+                for p in [s.0, s.1] {
+                    let inside = p.0 > x0 && p.0 < x1 && p.1 > y0 && p.1 < y1;
+                    assert!(
+                        !inside,
+                        "l = {rod}, {deg}°: ω's arc inside the detail's frame"
+                    );
+                }
+            }
+        }
+        for panel in plate.panels.iter().skip(1) {
+            let Some(c) = plate.point(panel, "C") else {
+                continue;
+            };
+            let arc: Vec<_> = (panel.strokes.iter())
+                .filter(|s| s.id == "detail-polygons-omega")
+                .flat_map(|s| s.segs.iter())
+                .collect();
+            let Some(first) = arc.first() else {
+                continue;
+            };
+            let radius = (first.0.0 - c.0).hypot(first.0.1 - c.1);
+            let length: f64 = arc
+                .iter()
+                .map(|s| (s.1.0 - s.0.0).hypot(s.1.1 - s.0.1))
+                .sum();
+            assert!(
+                length >= 0.95 * 1.4 * radius,
+                "l = {rod}, {deg}°: ω's arc in the detail {length:.1} long, radius {radius:.1}"
+            );
+        }
+    }
+}
+
+/// The gap (page units) between the point `(x, y)` and the glyph box of
+/// the text `id`.
+fn gap_to_text(plate: &Plate, id: &str, (x, y): (f64, f64)) -> f64 {
+    let t = (plate.texts.iter())
+        .find(|t| t.id == id)
+        .unwrap_or_else(|| panic!("no {id}"));
+    let dx = (t.rect.x0 - x).max(x - t.rect.x1).max(0.0);
+    let dy = (t.rect.y0 - y).max(y - t.rect.y1).max(0.0);
+    dx.hypot(dy)
+}
+
+#[test]
+fn a_letter_set_away_from_a_near_point_stays_by_its_own() {
+    // The eleventh review (2): at l = 1.54 r, e = −0.464 r, 0° inversion
+    // 3's n, 17 units below a′_d, was lettered 19 units below its dot,
+    // across the side o′c′, where it named a point of that side: tried
+    // first away from a′_d at every distance, its letter went there
+    // before a place beside the dot on another side. It now stands
+    // within a ring or two of its dot (its gap of 4 and 6 more), nearer
+    // n than a′_d.
+    let svg = svg(FigureName::CoriolisInversion3, 1.54, -0.464, 0.0);
+    let plate = Plate::read(&svg);
+    let (n, ad) = (dot(&svg, "point-n"), dot(&svg, "point-ad2"));
+    let own = gap_to_text(&plate, "label-n", n);
+    assert!(own <= 10.0, "n's letter {own:.1} from its dot");
+    assert!(
+        own < gap_to_text(&plate, "label-n", ad),
+        "n's letter nearer a′_d"
+    );
 }

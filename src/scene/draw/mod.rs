@@ -643,7 +643,7 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
             // At their own scale: not in an enlarged detail.
             Layer::Polygons if main => polygons::draw(ctx, canvas),
             // The crank's ω in a crank's detail.
-            Layer::Polygons => polygons::omega(ctx, canvas),
+            Layer::Polygons => polygons::omega(ctx, canvas, true),
             Layer::Scales => {}
         }
     }

@@ -10,7 +10,7 @@
 use super::LayerCtx;
 use crate::construct::{AccelerationPolygon, VelocityPolygon};
 use crate::figure::{Align, Hue, RIGHT_ANGLE, RichText, Role, Shape, TextSize};
-use crate::geom::{Point, Vector, side_by_side_ends};
+use crate::geom::{Frame, Point, Vector, side_by_side_ends};
 use crate::number::{short, sig};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
@@ -234,7 +234,7 @@ const HEADLESS: f64 = 25.0;
 /// the rod's line on the rod drawn as the plate ABQ, and its images with
 /// the triangles abq and a′b′q′ similar to it.
 pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
-    omega(ctx, canvas);
+    omega(ctx, canvas, false);
     let placed = place(ctx);
     let pose = ctx.main.pose();
     let coupler = ctx.scene.coupler().point(pose);
@@ -295,20 +295,76 @@ const OMEGA_SHARE: f64 = 0.45;
 /// The crank's sense of turning, ω's arrow about C ahead of the crank
 /// (`polygons-omega`): the polygons are drawn from the crank's velocity
 /// rω and acceleration ω²r, and a reader needs ω's sense to read cb's
-/// direction. Not drawn where the main view leaves the crank to a
-/// detail ([`Canvas::is_bare`]), nor on a crank shorter on the page than
-/// a letter (no detail could be given it).
-pub(crate) fn omega(ctx: &LayerCtx, canvas: &mut Canvas) {
-    let pose = ctx.main.pose();
-    if canvas.is_bare(pose.c()) {
-        return;
+/// direction. Drawn once, where its arc and letter fit whole
+/// ([`omega_radius`]): on the main view, round the frame of a detail
+/// the crank is left to ([`Canvas::is_bare`]) where the crank circle
+/// holds it there, else in the detail (`detail`: `canvas` is a detail's)
+/// where its frame holds it. At l = 1.03 r, 269.12° the ×2 detail of the
+/// crowding pins showed only a fragment of the arc in its corner and the
+/// main view none. Not drawn on a crank shorter on the page than a
+/// letter (no detail could be given it).
+pub(crate) fn omega(ctx: &LayerCtx, canvas: &mut Canvas, detail: bool) {
+    if detail {
+        // The main view at its scale draws it round this detail's frame.
+        let main = (ctx.sizes.page_scale)
+            .and_then(|scale| round_frame(ctx, canvas.frame(), &|w| w * scale));
+        if main.is_some() {
+            return;
+        }
     }
-    let radius = OMEGA_RADIUS.min(OMEGA_SHARE * canvas.page(pose.mechanism().crank()));
-    if radius < OMEGA_LEAST {
-        return;
+    if let Some(radius) = omega_radius(ctx, canvas) {
+        super::motion::omega(ctx, canvas, "polygons-omega", radius);
     }
-    super::motion::omega(ctx, canvas, "polygons-omega", radius);
 }
+
+/// The room (page units) ω's letter takes beyond its arc: a letter about
+/// 12 units wide set 4 units off.
+const OMEGA_LETTER_ROOM: f64 = 18.0;
+
+/// The share of the crank's radius on the page within which ω's arc is
+/// drawn round a detail's frame on the main view: inside the crank
+/// circle, clear of the pin's path.
+const OMEGA_ROUND_SHARE: f64 = 0.85;
+
+/// The radius (page units) of ω's arc on `canvas`, or none where it is not
+/// drawn there: in the crank's room ([`OMEGA_SHARE`] of the crank, at most
+/// [`OMEGA_RADIUS`]) where C is the canvas's own, round the frame of the
+/// detail C is left to where it is not ([`round_frame`]); either at least
+/// [`OMEGA_LEAST`], with its letter ([`OMEGA_LETTER_ROOM`]) inside the
+/// canvas's frame.
+fn omega_radius(ctx: &LayerCtx, canvas: &Canvas) -> Option<f64> {
+    let c = ctx.main.pose().c();
+    let crank = canvas.page(ctx.main.pose().mechanism().crank());
+    let frame = canvas.frame();
+    let (lo, hi) = (frame.min(), frame.max());
+    let room = canvas.page((c.x - lo.x).min(hi.x - c.x).min(c.y - lo.y).min(hi.y - c.y))
+        - OMEGA_LETTER_ROOM;
+    let radius = match canvas.bare_region() {
+        Some(bare) if bare.contains(c) => round_frame(ctx, bare, &|w| canvas.page(w))?,
+        _ => OMEGA_RADIUS.min(OMEGA_SHARE * crank).min(room),
+    };
+    (radius >= OMEGA_LEAST && radius <= room).then_some(radius)
+}
+
+/// The radius (page units, by `page` from world lengths) of ω's arc
+/// drawn round the detail's `region` about C: [`OMEGA_CLEAR_OF_FRAME`]
+/// beyond its farthest corner from C, where that is within
+/// [`OMEGA_ROUND_SHARE`] of the crank; none where it is not.
+fn round_frame(ctx: &LayerCtx, region: &Frame, page: &dyn Fn(f64) -> f64) -> Option<f64> {
+    let pose = ctx.main.pose();
+    let c = pose.c();
+    let (lo, hi) = (region.min(), region.max());
+    let far = [lo, hi, Point::new(lo.x, hi.y), Point::new(hi.x, lo.y)]
+        .iter()
+        .map(|q| page((q - c).norm()))
+        .fold(0.0, f64::max);
+    let radius = far + OMEGA_CLEAR_OF_FRAME;
+    (radius <= OMEGA_ROUND_SHARE * page(pose.mechanism().crank())).then_some(radius)
+}
+
+/// How far (page units) ω's arc drawn round a detail's frame on the main
+/// view stands beyond the frame's farthest corner from C.
+const OMEGA_CLEAR_OF_FRAME: f64 = 8.0;
 
 /// The least radius of ω's arc, page units: its head's length and the
 /// pin's circle.

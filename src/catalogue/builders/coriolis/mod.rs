@@ -32,7 +32,7 @@ use serde_json::json;
 use mechanism::mechanism_plot;
 use notes::{coriolis_json, notes};
 pub(super) use panel::mark_window;
-use panel::{Drawn, Window, detail_plot, polygon_plot, right_angles};
+use panel::{Drawn, Window, detail_plot, headless, polygon_plot, right_angles};
 use polygons::Polygons;
 use rule::rule_plot;
 
@@ -148,6 +148,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
         drawn_length(sliding, a_scale, a_window),
         drawn_length(polygons.p.coriolis(), a_scale, a_window),
     );
+    let plain = [
+        headless(&velocity_drawn, velocity.map().scale(), v_window),
+        headless(&acceleration_drawn, a_scale, a_window),
+    ]
+    .concat();
     let rule = rule_plot(ctx, rule_rect, &polygons)?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
@@ -172,7 +177,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.height(bottom + NOTES_LINES * super::NOTE_LINE + MARGIN);
     sheet.notes(
         Point::new(20.0, bottom),
-        &notes(ctx, &chain, &polygons, (v_bar, a_bar), seen),
+        &notes(ctx, &chain, &polygons, (v_bar, a_bar), (seen, &plain)),
     );
     Ok(sheet.finish())
 }

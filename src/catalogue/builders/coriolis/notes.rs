@@ -32,6 +32,11 @@ pub(super) fn coriolis_json(polygons: &Polygons, v_bar: f64, a_bar: f64) -> Valu
     })
 }
 
+/// How long the sliding acceleration and the Coriolis component are drawn
+/// at their largest, page units, each with the detail's magnification
+/// where a detail draws it (`None` without one).
+pub(super) type Seen = ((f64, Option<f64>), (f64, Option<f64>));
+
 /// The notes: the pose and the driver, then each polygon read to its bar,
 /// then the Coriolis component and its rule.
 pub(super) fn notes(
@@ -39,7 +44,7 @@ pub(super) fn notes(
     chain: &InvertedChain,
     polygons: &Polygons,
     bars: (f64, f64),
-    seen: ((f64, Option<f64>), (f64, Option<f64>)),
+    (seen, plain): (Seen, &[String]),
 ) -> Vec<String> {
     let m = &ctx.mechanism;
     let u = ctx.unit();
@@ -97,16 +102,18 @@ pub(super) fn notes(
         ),
     };
     let normal = omega_d * omega_d * ca;
+    let acceleration_unit = format!("{u}/s²");
+    let per_s2 = (bars.1, acceleration_unit.as_str());
     // A sliding acceleration too short to draw even where the polygon is
     // enlarged (inversion 2 at l = 40 r, 89°: 12 ft/s² against a Coriolis
     // component of 1370, under a unit at ×20) is said so: k stands on a′_d.
     let sliding_said = said(&[
         sliding_sense(inversion, sliding),
-        unseen(sliding, seen.0, ("*k*", "*a*′_{d}")),
+        unseen(sliding, seen.0, per_s2, ("*k*", "*a*′_{d}")),
     ]);
     let coriolis_unseen = said(&[match inversion {
-        Inversion::Rod => unseen(coriolis_size, seen.1, ("*k*", "*o*′")),
-        _ => unseen(coriolis_size, seen.1, ("*k*", "*a*′")),
+        Inversion::Rod => unseen(coriolis_size, seen.1, per_s2, ("*k*", "*o*′")),
+        _ => unseen(coriolis_size, seen.1, per_s2, ("*k*", "*a*′")),
     }]);
     let acceleration = format!(
         "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{sliding_said}.",
@@ -141,7 +148,28 @@ pub(super) fn notes(
             ""
         },
     );
-    vec![first, velocity, acceleration, coriolis]
+    vec![
+        first,
+        velocity,
+        acceleration,
+        coriolis + &headless_said(plain),
+    ]
+}
+
+/// The notes' word on the sides `plain` drawn without a head
+/// ([`super::panel::headless`]): too short for one, their sense read
+/// from the letters at their ends. Nothing where there are none.
+fn headless_said(plain: &[String]) -> String {
+    match plain {
+        [] => String::new(),
+        [one] => format!(
+            " {one} is drawn without a head, too short for one: its sense is from the letters at its ends."
+        ),
+        [rest @ .., last] => format!(
+            " {} and {last} are drawn without heads, too short for them: their sense is from the letters at their ends.",
+            rest.join(", ")
+        ),
+    }
 }
 
 /// The remarks `parts` after a value, in one bracket ("; " between them),
@@ -160,29 +188,49 @@ fn said(parts: &[String]) -> String {
 /// What the notes say of a side of value `value` drawn `seen` page units
 /// long at its largest (at the detail's magnification, if any) where
 /// that is too short to be seen (under [`super::MIN_ARROW`]): how long,
+/// as a share of the polygon's bar `bar` (the length `unit`, in the
+/// value's unit: page units are no length a reader can use, and the
+/// tenth review read "drawn 1.5 units long" as the drawing's internals),
 /// and what the drawing shows of its ends `(from, to)`: under
 /// [`COINCIDE`] one dot lettered for both, `from` standing on `to`;
 /// longer, two dots each lettered (inversion 2 at l = 30.3 r, 0°: the
 /// sliding acceleration 7.2 units, k lettered with a′ and a′_d with n,
-/// where the notes had k standing on a′_d). Nothing for a nil side or
-/// one seen.
-fn unseen(value: f64, (seen, magnified): (f64, Option<f64>), (from, to): (&str, &str)) -> String {
-    if value == 0.0 || seen >= super::MIN_ARROW {
+/// where the notes had k standing on a′_d). Nothing for a nil side, one
+/// seen, or a bar that is not positive and finite.
+fn unseen(
+    value: f64,
+    (seen, magnified): (f64, Option<f64>),
+    (bar, unit): (f64, &str),
+    (from, to): (&str, &str),
+) -> String {
+    if value == 0.0 || seen >= super::MIN_ARROW || !(bar > 0.0 && bar.is_finite()) {
         return String::new();
     }
-    // Under a tenth of a unit it is not written "0.0 units".
-    let drawn = match seen < 0.1 {
-        true => "under 0.1".to_string(),
-        false => format!("{seen:.1}"),
-    };
+    let share = value.abs() * magnified.unwrap_or(1.0) / bar;
     let ends = match seen < COINCIDE {
         true => format!("too short to be seen: {from} stands on {to}"),
         false => format!("too short for an arrow: {from} and {to} are the two dots at its ends"),
     };
     format!(
-        "drawn {drawn} units long{}, {ends}",
-        magnified.map_or(String::new(), |m| format!(" at ×{}", short(m))),
+        "{}drawn {} as long as the {} {unit} bar, {ends}",
+        magnified.map_or(String::new(), |m| format!("at ×{} ", short(m))),
+        share_words(share),
+        short(bar),
     )
+}
+
+/// The least share of a bar written as a number: smaller is "under a
+/// thousandth".
+const LEAST_SHARE: f64 = 1e-3;
+
+/// `share` (positive) of a length in words: two significant figures
+/// ("0.096"), "under a thousandth" below [`LEAST_SHARE`].
+fn share_words(share: f64) -> String {
+    if share < LEAST_SHARE {
+        return "under a thousandth".to_string();
+    }
+    let digits = (1.0 - share.log10().floor()).max(0.0) as usize;
+    format!("{share:.digits$}")
 }
 
 /// The sense of the sliding acceleration `s` (the block's along d, the

@@ -437,3 +437,30 @@ pub(super) fn right_angles(s: &mut Canvas, polygons: &Polygons) {
         }
     }
 }
+
+/// The sides of a polygon drawn without a head (shorter on its panel at
+/// `scale` page units per unit than [`HEADLESS`], at least [`MIN_ARROW`])
+/// and not drawn with one in its detail (`window`), each named by the
+/// letters of its ends ("*c*′*n*"): the notes say they are too short for
+/// one, their sense read from the letters at their ends (inversion 3 at
+/// l = 1.54 r, e = −0.464 r, 0°: c′n and n a′_d, 15 units each, were
+/// drawn as plain lines with no word why).
+pub(super) fn headless(drawn: &Drawn, scale: f64, window: Option<Window>) -> Vec<String> {
+    let letter = |at: Vector| {
+        (drawn.points.iter())
+            .find(|p| p.2 == at)
+            .map_or("", |p| p.1)
+    };
+    (drawn.arrows.iter())
+        .filter(|(_, _, from, to)| {
+            let length = (to - from).norm() * scale;
+            let in_detail = window.is_some_and(|w| {
+                w.frame.contains(Point::from(*from))
+                    && w.frame.contains(Point::from(*to))
+                    && length * w.magnification >= HEADLESS
+            });
+            (MIN_ARROW..HEADLESS).contains(&length) && !in_detail
+        })
+        .map(|(_, _, from, to)| format!("{}{}", letter(*from), letter(*to)))
+        .collect()
+}
