@@ -428,12 +428,18 @@ const PINS_SPREAD: f64 = 64.0;
 /// at `scale` page units per world unit: about the crank a where it is
 /// drawn shorter than [`CRANK_LEAST`] (`None` for the crank window's
 /// own), about O_ad and O_bc where they stand nearer than
-/// [`PINS_APART`] (spread [`PINS_SPREAD`] apart); none where both read.
-fn detail_about(m: &SliderCrank, q: &Parts, scale: f64) -> Option<(Point, Option<f64>)> {
+/// [`PINS_APART`] in d's slotted bar (inversions 2 and 3; `slotted`),
+/// spread [`PINS_SPREAD`] apart; none where both read.
+fn detail_about(
+    m: &SliderCrank,
+    q: &Parts,
+    scale: f64,
+    slotted: bool,
+) -> Option<(Point, Option<f64>)> {
     let pins = (q.a - q.c).norm() * scale;
     if m.crank() * scale < CRANK_LEAST {
         Some((mid(q.c, q.b), None))
-    } else if pins < PINS_APART {
+    } else if slotted && pins < PINS_APART {
         // l > r keeps C and A apart: `pins` is not zero.
         Some((mid(q.c, q.a), Some(PINS_SPREAD / pins)))
     } else {
@@ -456,7 +462,8 @@ fn crank_detail(
 ) -> Result<Option<(Frame, Plot, usize)>> {
     let m = ctx.mechanism;
     let q = parts(&m, pose);
-    let Some((centre, wanted)) = detail_about(&m, &q, scale) else {
+    let slotted = matches!(pose.inversion(), Inversion::Crank | Inversion::Rod);
+    let Some((centre, wanted)) = detail_about(&m, &q, scale, slotted) else {
         return Ok(None);
     };
     let w = CRANK_DETAIL.0.min(rect.width);
