@@ -172,9 +172,12 @@ fn the_block_s_letter_stands_out_of_the_bar_by_the_block() {
     }
 }
 
+/// The points of a path, in page units.
+type Points = Vec<(f64, f64)>;
+
 /// The pedestal (a triangle) and the base line of the bearing `id`, in
 /// page units: the first two paths of its group.
-fn bearing(svg: &str, id: &str) -> Option<(Vec<(f64, f64)>, Vec<(f64, f64)>)> {
+fn bearing(svg: &str, id: &str) -> Option<(Points, Points)> {
     let at = svg.find(&format!("id=\"{id}\""))?;
     let mut paths = svg[at..].split(" d=\"").skip(1).map(|rest| {
         let d = rest.split('"').next().unwrap_or("");

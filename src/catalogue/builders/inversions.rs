@@ -598,14 +598,14 @@ const FOOT_REACH: (f64, f64) = (20.0, 17.0);
 /// (even-odd rule); false for an outline of fewer than three points.
 fn within(outline: &[Point], p: Point) -> bool {
     let mut inside = false;
-    let n = outline.len();
-    for (i, a) in outline.iter().enumerate() {
-        let b = outline[(i + n - 1) % n];
+    // Each side from its corner to the one before (the last's before the first).
+    let before = outline.iter().cycle().skip(outline.len().saturating_sub(1));
+    for (a, b) in outline.iter().zip(before) {
         if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y) {
             inside = !inside;
         }
     }
-    inside && n >= 3
+    inside && outline.len() >= 3
 }
 
 /// The outline of the turning frame d with a slot for the block: a bar
