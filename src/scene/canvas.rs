@@ -270,6 +270,20 @@ impl Canvas {
         self.label_naming(id, anchor, (None, None), text, size);
     }
 
+    /// A label near `anchor`, tried first `toward` (a world direction:
+    /// a block's letter set off its side, out of the slotted bar it rides
+    /// in); nothing where the anchor is off the page.
+    pub(crate) fn label_toward(
+        &mut self,
+        id: impl Into<String>,
+        anchor: Point,
+        toward: Vector,
+        text: RichText,
+        size: TextSize,
+    ) {
+        self.label_naming(id, anchor, (Some(toward), None), text, size);
+    }
+
     /// A text naming the line from `a` to `b` (a link's length), set by
     /// its middle and kept nearer it than any other link (placed by the
     /// renderer); nothing where the middle is off the page.

@@ -4,8 +4,8 @@
 //! page sizes are the mechanism layer's too.
 
 use super::canvas::Canvas;
+use crate::figure::{Foot, RichText, Role, Shape, TextSize};
 use crate::figure::{HATCH_DEPTH, HATCH_SPACING};
-use crate::figure::{RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector, crossing, perp, segment_distance, unit};
 
 /// Clear distance, page units, kept between a guide (with its hatching)
@@ -123,14 +123,17 @@ impl Canvas {
 
     /// A fixed bearing under `p` (`bearing-{name}`), if on the frame.
     pub(crate) fn bearing(&mut self, name: &str, p: Point) {
+        self.bearing_on(name, p, Foot::Below);
+    }
+
+    /// A fixed bearing at `p` standing on `foot` (`bearing-{name}`), if on
+    /// the frame.
+    pub(crate) fn bearing_on(&mut self, name: &str, p: Point, foot: Foot) {
         if self.contains(p) {
             self.push(
                 format!("bearing-{name}"),
                 Role::Frame,
-                Shape::Bearing {
-                    centre: p,
-                    foot: crate::figure::Foot::Below,
-                },
+                Shape::Bearing { centre: p, foot },
             );
         }
     }
@@ -162,7 +165,10 @@ impl Canvas {
     /// Ground hatching along the fixed edge `p q` on whichever of `sides`
     /// (world vectors) keeps more strokes clear of the moving links
     /// `avoid`, leaving out strokes that would touch them and those within
-    /// `ends` page units of either end (`hatch-{name}-k`).
+    /// `ends` page units of either end (`hatch-{name}-k`). Returns the
+    /// strokes drawn: none where every stroke would touch a moving link
+    /// (a fixed link lying inside a slotted bar) or the edge is off the
+    /// canvas.
     pub(crate) fn hatch_edge(
         &mut self,
         name: &str,
@@ -170,7 +176,7 @@ impl Canvas {
         sides: &[Vector],
         avoid: &[Seg],
         ends: f64,
-    ) {
+    ) -> usize {
         // Only the part on the canvas (and a margin past its edges, where
         // the room left at a cut end falls) is hatched: a long rod's fixed
         // link in an enlarged detail ran to millions of page units, its
@@ -179,7 +185,7 @@ impl Canvas {
         let f = *self.frame();
         let grown = Frame::new(f.min() - Vector::new(m, m), f.max() + Vector::new(m, m));
         let Some((p, q)) = grown.clip_segment(p, q) else {
-            return;
+            return 0;
         };
         let mut best: Option<(f64, Vector, Runs)> = None;
         for &side in sides {
@@ -189,15 +195,28 @@ impl Canvas {
                 best = Some((count, side, runs));
             }
         }
-        if let Some((_, side, runs)) = best {
-            self.emit_hatch(name, &[p, q], &|_| side, &runs);
-        }
+        let Some((_, side, runs)) = best else {
+            return 0;
+        };
+        self.emit_hatch(name, &[p, q], &|_| side, &runs);
+        // Each run's strokes stand a spacing apart from its first to its last.
+        (runs.iter())
+            .map(|&(_, first, last)| ((last - first) / HATCH_SPACING).round() as usize + 1)
+            .sum()
     }
 
-    /// Ground hatching along the fixed link `p q`, on the clearer side.
-    pub(crate) fn hatch_link(&mut self, name: &str, p: Point, q: Point, avoid: &[Seg], ends: f64) {
+    /// Ground hatching along the fixed link `p q`, on the clearer side;
+    /// the strokes drawn ([`Canvas::hatch_edge`]).
+    pub(crate) fn hatch_link(
+        &mut self,
+        name: &str,
+        p: Point,
+        q: Point,
+        avoid: &[Seg],
+        ends: f64,
+    ) -> usize {
         let n = perp(&(q - p));
-        self.hatch_edge(name, (p, q), &[n, -n], avoid, ends);
+        self.hatch_edge(name, (p, q), &[n, -n], avoid, ends)
     }
 
     /// The two guides of a fixed `slot`, hatched on their outer sides,

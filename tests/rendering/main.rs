@@ -17,5 +17,6 @@ mod worked_engine;
 mod diagrams;
 mod figure_layout;
 mod figures;
+mod inversion_figures;
 mod plates;
 mod polygon_figures;

@@ -11,7 +11,7 @@ use slider_crank::{Angle, FigureName, SliderCrank};
 
 /// The figure `name` of the engine r = 1, `rod`, `offset` at `deg`, as
 /// written.
-fn svg(name: FigureName, rod: f64, offset: f64, deg: f64) -> String {
+pub(super) fn svg(name: FigureName, rod: f64, offset: f64, deg: f64) -> String {
     let mut options = FigureOptions::default();
     options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
     options.angle = Some(Angle::deg(deg));
@@ -68,7 +68,7 @@ fn the_two_polygons_letter_groups_stand_apart() {
 }
 
 /// The points of the path `id`, in page units.
-fn path(svg: &str, id: &str) -> Vec<(f64, f64)> {
+pub(super) fn path(svg: &str, id: &str) -> Vec<(f64, f64)> {
     let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
     let numbers: Vec<f64> = d
         .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
@@ -176,7 +176,7 @@ fn a_link_along_d_s_leg_is_seen_inside_it() {
 }
 
 /// The centre of the box of the text `id` as drawn, if drawn.
-fn text_centre(plate: &Plate, id: &str) -> Option<(f64, f64)> {
+pub(super) fn text_centre(plate: &Plate, id: &str) -> Option<(f64, f64)> {
     (plate.texts.iter())
         .find(|t| t.id == id)
         .map(|t| (0.5 * (t.rect.x0 + t.rect.x1), 0.5 * (t.rect.y0 + t.rect.y1)))

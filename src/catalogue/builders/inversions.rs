@@ -18,8 +18,8 @@ use crate::chain::{ChainCentres, Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Figure, Item, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Intersection, Point, Vector};
+use crate::figure::{Figure, Foot, Item, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Intersection, Point, Vector, unit};
 use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -303,10 +303,14 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let centres = *pose.centres();
     let detail = crank_detail(ctx, &pose, &rect, map.scale())?;
     let canvas = Canvas::new(map, map.world_frame(&plot.area()));
-    let region = detail.as_ref().map(|(region, _)| *region);
+    let region = detail.as_ref().map(|(region, _, _)| *region);
     let mut d = Drawing::new(m, &pose, canvas, block).holding(region);
     let together = d.draw(&pose, &centres);
-    if let Some((region, _)) = &detail {
+    // The fixed bar is read where its crank is seen: in the detail, if any.
+    let hatched = detail
+        .as_ref()
+        .map_or(d.hatched, |(_, _, strokes)| *strokes);
+    if let Some((region, _, _)) = &detail {
         super::coriolis::mark_window(&mut d.s, "mechanism", region);
     }
     for item in d.s.finish().0 {
@@ -321,14 +325,14 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.meta("virtual_centres", centres.to_json());
     sheet.plot(plot);
     let mut bottom = rect.y + rect.height + 6.0;
-    if let Some((_, detail)) = detail {
+    if let Some((_, detail, _)) = detail {
         bottom = detail.rect().y + detail.rect().height + 6.0;
         sheet.detail(detail);
     }
     sheet.height(bottom + NOTES_HEIGHT);
     sheet.notes(
         Point::new(20.0, bottom),
-        &notes(ctx, &chain, &named, &together),
+        &notes(ctx, &chain, &named, &together, hatched),
     );
     Ok(sheet.finish())
 }
@@ -357,6 +361,21 @@ pub(super) fn crank_window(
 ) -> Result<(Frame, Plot)> {
     let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
     let wanted = w.min(h) / (2.0 * CRANK_REACH * ctx.mechanism.crank()) / scale;
+    window(ctx, name, (centre, wanted), rect, scale)
+}
+
+/// An enlarged detail in the panel `rect` (its caption included) of a
+/// main view at `scale` page units per world unit, about `centre` at
+/// the round magnification below `wanted` (at least 1): the world region
+/// it shows and its plot, captioned with the magnification and framed.
+fn window(
+    ctx: &Ctx,
+    name: &str,
+    (centre, wanted): (Point, f64),
+    rect: crate::figure::PageRect,
+    scale: f64,
+) -> Result<(Frame, Plot)> {
+    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
     let steps = super::coriolis::FINE_STEPS;
     let magnification = super::coriolis::round_below(wanted, &steps).max(1.0);
     let half = Vector::new(w, h) * (0.5 / (magnification * scale));
@@ -395,21 +414,58 @@ const CRANK_DETAIL: (f64, f64) = (300.0, 200.0);
 /// Room between the mechanism and the crank detail below it, page units.
 const DETAIL_GAP: f64 = 12.0;
 
+/// Pins O_ad and O_bc (C and A) nearer than this on the page, page
+/// units (two em of a letter), are crowded: at a short rod's inner dead
+/// centre (l = 1.06 r at 180°) their circles overlapped as a figure 8
+/// inside the block, their letters anyone's.
+const PINS_APART: f64 = 34.0;
+
+/// How far apart crowded pins are drawn in their detail, page units, at
+/// most (the magnification is rounded down).
+const PINS_SPREAD: f64 = 64.0;
+
+/// The centre and the wanted magnification of the inversion's detail
+/// at `scale` page units per world unit: about the crank a where it is
+/// drawn shorter than [`CRANK_LEAST`] (`None` for the crank window's
+/// own), about O_ad and O_bc where they stand nearer than
+/// [`PINS_APART`] in d's slotted bar (inversions 2 and 3; `slotted`),
+/// spread [`PINS_SPREAD`] apart; none where both read.
+fn detail_about(
+    m: &SliderCrank,
+    q: &Parts,
+    scale: f64,
+    slotted: bool,
+) -> Option<(Point, Option<f64>)> {
+    let pins = (q.a - q.c).norm() * scale;
+    if m.crank() * scale < CRANK_LEAST {
+        Some((mid(q.c, q.b), None))
+    } else if slotted && pins < PINS_APART {
+        // l > r keeps C and A apart: `pins` is not zero.
+        Some((mid(q.c, q.a), Some(PINS_SPREAD / pins)))
+    } else {
+        None
+    }
+}
+
 /// Where the crank a is drawn shorter than [`CRANK_LEAST`] in the panel
-/// `rect` at `scale` page units per world unit, the world region about it
-/// and the detail below the panel that enlarges it (the chain drawn again
-/// there, its fixed link hatched and its centres lettered), captioned
-/// with the magnification; none for a crank long enough to read.
+/// `rect` at `scale` page units per world unit, or the pins O_ad and O_bc
+/// crowd ([`PINS_APART`]), the world region about them and the detail
+/// below the panel that enlarges it (the chain drawn again there, its
+/// fixed link hatched and its centres lettered), captioned with the
+/// magnification, and the strokes of the fixed bar's hatching there;
+/// none where the crank and the pins read.
 fn crank_detail(
     ctx: &Ctx,
     pose: &InversionPose,
     rect: &crate::figure::PageRect,
     scale: f64,
-) -> Result<Option<(Frame, Plot)>> {
+) -> Result<Option<(Frame, Plot, usize)>> {
     let m = ctx.mechanism;
-    if m.crank() * scale >= CRANK_LEAST {
+    let q = parts(&m, pose);
+    let slotted = matches!(pose.inversion(), Inversion::Crank | Inversion::Rod);
+    let Some((centre, wanted)) = detail_about(&m, &q, scale, slotted) else {
         return Ok(None);
-    }
+    };
     let w = CRANK_DETAIL.0.min(rect.width);
     let detail_rect = crate::figure::PageRect::new(
         rect.x + 0.5 * (rect.width - w),
@@ -417,17 +473,20 @@ fn crank_detail(
         w,
         CRANK_DETAIL.1,
     );
-    let q = parts(&m, pose);
-    let (region, mut plot) = crank_window(ctx, "detail", mid(q.c, q.b), detail_rect, scale)?;
+    let (region, mut plot) = match wanted {
+        None => crank_window(ctx, "detail", centre, detail_rect, scale)?,
+        Some(wanted) => window(ctx, "detail", (centre, wanted), detail_rect, scale)?,
+    };
     let map = *plot.map();
     let block = super::chains::block_on_page(block_size(&m), map.scale());
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
     let mut d = Drawing::new(m, pose, canvas, block);
     d.draw(pose, pose.centres());
+    let hatched = d.hatched;
     for item in d.s.finish().0 {
         plot.push(item);
     }
-    Ok(Some((region, plot)))
+    Ok(Some((region, plot, hatched)))
 }
 
 /// The chain at `pose` drawn on `canvas`: the driven pin's path, the
@@ -441,7 +500,7 @@ pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
-    d.links();
+    d.links(Vector::zeros());
     d.s
 }
 
@@ -491,6 +550,62 @@ struct Drawing {
     /// letters: a few units apart here, their letters would stand by the
     /// wrong pin.
     held: Option<Frame>,
+    /// Whether this is the inversion's own figure ([`Drawing::draw`]),
+    /// whose fixed pins' ground marks stand away from the links meeting
+    /// there and whose block is lettered beside it outside the bar; the
+    /// Coriolis figures' mechanism ([`draw_links`]) keeps its bearings
+    /// below and its block's letter at the block's end.
+    drafted: bool,
+    /// The strokes of hatching drawn on the fixed bar (inversions 2 and
+    /// 3): fewer than [`FIXED_STROKES`] and its pins carry bearings and the
+    /// notes say so.
+    hatched: usize,
+    /// The foot of the bearing drawn at A, if any (inversion 3's rod
+    /// unhatched): the block's letter stands on the other side.
+    trunnion: Option<Foot>,
+    /// The way O_bc's letter is tried first, where the block's letter
+    /// stands beside the block: the other side of the bar, towards C (on
+    /// the same side the two read as one label, "O_bc c").
+    pin_a_way: Option<Vector>,
+}
+
+/// Where the block's letter stands beside it, in half lengths of the
+/// block from its middle towards its far end: by its far corner, away
+/// from the normal at A and O_bc's letter at its middle.
+const BLOCK_LETTER_ALONG: f64 = 0.75;
+
+/// The block riding within this of the bar's end (page units) is
+/// lettered beyond its end, outside the bar; else beside it.
+const AT_BAR_END: f64 = 4.0;
+
+/// The least strokes of hatching that show a fixed bar fixed; with fewer
+/// (the bar lying inside d's slot, every stroke on d's outline), the
+/// notes name the bearings at its pins instead.
+const FIXED_STROKES: usize = 3;
+
+/// A bearing's foot within this angle (radians, 60°) of a link meeting
+/// at its pin is set on another side: the pedestal spans 30° each side
+/// of its axis, and a link nearer ran through it (inversion 3's crank
+/// through O_ab's pedestal near 90° with an offset).
+const FOOT_CLEAR: f64 = std::f64::consts::FRAC_PI_3;
+
+/// The bearing's foot drawn by the writer, page units: its depth from
+/// the pin to the hatched base line with its strokes, and half the base's
+/// length (the SVG writer's bearing).
+const FOOT_REACH: (f64, f64) = (20.0, 17.0);
+
+/// Whether the page point `p` lies inside the closed outline `outline`
+/// (even-odd rule); false for an outline of fewer than three points.
+fn within(outline: &[Point], p: Point) -> bool {
+    let mut inside = false;
+    // Each side from its corner to the one before (the last's before the first).
+    let before = outline.iter().cycle().skip(outline.len().saturating_sub(1));
+    for (a, b) in outline.iter().zip(before) {
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y) {
+            inside = !inside;
+        }
+    }
+    inside && outline.len() >= 3
 }
 
 /// The outline of the turning frame d with a slot for the block: a bar
@@ -540,6 +655,10 @@ impl Drawing {
             block,
             q,
             held: None,
+            drafted: false,
+            hatched: 0,
+            trunnion: None,
+            pin_a_way: None,
         }
     }
 
@@ -562,11 +681,80 @@ impl Drawing {
     /// hatched, the links and the centres; the centres' names that share
     /// a lettered point's place ([`Drawing::centres`]).
     fn draw(&mut self, pose: &InversionPose, centres: &ChainCentres) -> Vec<String> {
+        self.drafted = true;
         self.path(pose.inversion());
         self.frame(pose);
         self.hatch();
-        self.links();
+        self.links(self.normal_way(centres));
         self.centres(centres)
+    }
+
+    /// The way the normal to the stroke at A is drawn from A: towards
+    /// O_bd, or, where O_bd is at A or at infinity, towards O_cd's arrow
+    /// ([`Drawing::centres`]); zero where neither is drawn.
+    fn normal_way(&self, centres: &ChainCentres) -> Vector {
+        let a = self.q.a;
+        let along = match centres.centre(Link::B, Link::D) {
+            Some(Intersection::Point(d)) => d - a,
+            _ => Vector::zeros(),
+        };
+        if along != Vector::zeros() {
+            return along;
+        }
+        match centres.centre(Link::C, Link::D) {
+            Some(Intersection::AtInfinity(dir)) => self.towards(dir.into_inner(), a, along),
+            _ => Vector::zeros(),
+        }
+    }
+
+    /// The foot a fixed pin `p`'s bearing stands on: below, unless a link
+    /// meeting there (towards `meeting`) runs within [`FOOT_CLEAR`] of it
+    /// or its base lies inside d's slotted bar; then the first side clear
+    /// of both, else the side farthest from the links with its base out of
+    /// the bar, else the side farthest from the links. The Coriolis
+    /// figures' mechanism keeps it below.
+    fn foot(&self, p: Point, meeting: &[Point]) -> Foot {
+        if !self.drafted {
+            return Foot::Below;
+        }
+        let map = *self.s.transform();
+        let at = map.apply(p);
+        let outline: Vec<Point> = match self.slotted() {
+            true => band(&self.q, self.block.1)
+                .iter()
+                .map(|x| map.apply(*x))
+                .collect(),
+            false => Vec::new(),
+        };
+        let ways: Vec<Vector> = (meeting.iter())
+            .filter_map(|q| unit(map.apply(*q) - at))
+            .collect();
+        let (depth, half) = FOOT_REACH;
+        let spread = |f: Foot| {
+            let down = f.axes().0;
+            (ways.iter())
+                .map(|w| w.dot(&down).clamp(-1.0, 1.0).acos())
+                .fold(std::f64::consts::PI, f64::min)
+        };
+        let out = |f: Foot| {
+            let (down, along) = f.axes();
+            let base = at + down * depth;
+            [base, base + along * half, base - along * half]
+                .iter()
+                .all(|x| !within(&outline, *x))
+        };
+        let feet = [Foot::Below, Foot::Above, Foot::Left, Foot::Right];
+        let score = |f: Foot| (out(f), spread(f));
+        // Of sides equally good, the first (below) is kept.
+        (feet.into_iter())
+            .find(|&f| out(f) && spread(f) >= FOOT_CLEAR)
+            .or_else(|| {
+                (feet.into_iter().rev()).max_by(|&f, &g| {
+                    let (a, b) = (score(f), score(g));
+                    a.0.cmp(&b.0).then(a.1.total_cmp(&b.1))
+                })
+            })
+            .unwrap_or(Foot::Below)
     }
 
     /// The path of the driven link's far pin: a circle, or the hand
@@ -718,15 +906,32 @@ impl Drawing {
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         match self.fixed {
             Link::A => {
-                self.s.bearing("C", c);
-                self.s.bearing("B", b);
-                self.s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
+                // d turns about C: its bar leaves C along the leg (or the
+                // arm, with no offset).
+                let leg = if self.m.offset() == 0.0 {
+                    self.q.f
+                } else {
+                    self.q.t
+                };
+                let foot = self.foot(c, &[b, leg]);
+                self.s.bearing_on("C", c, foot);
+                let foot = self.foot(b, &[c, a]);
+                self.s.bearing_on("B", b, foot);
+                self.hatched = self.s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
             }
             Link::B => {
+                let foot = self.foot(b, &[c, a]);
+                self.s.bearing_on("B", b, foot);
+                self.hatched = self.s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
                 // The block's trunnion at A is in the fixed rod; a bearing
-                // there would crowd the block.
-                self.s.bearing("B", b);
-                self.s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
+                // there would crowd the block, save where the rod lies in
+                // d's slot unhatched and the bearings alone show it fixed.
+                if self.drafted && self.hatched < FIXED_STROKES {
+                    let (u, lh) = (self.q.u, self.block.0);
+                    let foot = self.foot(a, &[b, a + u * lh, a - u * lh]);
+                    self.s.bearing_on("A", a, foot);
+                    self.trunnion = Some(foot);
+                }
             }
             Link::C => {
                 // The block is the fixed barrel: hatched on the face away from
@@ -744,8 +949,12 @@ impl Drawing {
         }
     }
 
-    /// The crank, the rod and the block, lettered a, b and c.
-    fn links(&mut self) {
+    /// The crank, the rod and the block, lettered a, b and c; where d is
+    /// a slotted bar in the inversion's own figure, c out of the bar by
+    /// the block ([`Drawing::block_letter`], `normal` the way the normal
+    /// at A is drawn): in the bar's empty end beyond the block it named
+    /// the bar.
+    fn links(&mut self, normal: Vector) {
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         let corners = self.corners;
         let s = &mut self.s;
@@ -761,16 +970,50 @@ impl Drawing {
         if !self.held(mid(c, b)) {
             self.s.link_letter("link-a", (c, b), "*a*");
         }
+        self.s.link_letter("link-b", (b, a), "*b*");
+        let v = self.q.v;
+        if self.drafted && self.slotted() {
+            let (at, out) = self.block_letter(normal);
+            if out != self.q.u {
+                self.pin_a_way = Some(-out - self.q.u);
+            }
+            let c = RichText::parse("*c*");
+            self.s
+                .label_toward("label-link-c", at, out, c, TextSize::Letter);
+            return;
+        }
         let s = &mut self.s;
-        s.link_letter("link-b", (b, a), "*b*");
         let at = if self.fixed == Link::D {
             // Below the block, between the guides' hatching.
-            mid(corners[0], corners[1]) - self.q.v * s.world(4.0)
+            mid(corners[0], corners[1]) - v * s.world(4.0)
         } else {
             // At its far end, clear of the normal at A.
             mid(corners[1], corners[2]) + self.q.u * s.world(4.0)
         };
         s.letter("link-c", at, "*c*", TextSize::Letter);
+    }
+
+    /// Where the block c riding in d's slot is lettered, and the way
+    /// tried first: beyond its far end where it rides at the bar's end
+    /// ([`AT_BAR_END`]); else beside its far end, out of the bar, on the
+    /// side away from the bearing at A if any, else on the side of
+    /// `normal` (the way the normal at A is drawn: a thin line at the
+    /// block's middle, clear of a letter by its far end), so that O_bc's
+    /// letter, tried first on the other side towards C, stands apart
+    /// (on one side the two read as one label, "O_bc c").
+    fn block_letter(&self, normal: Vector) -> (Point, Vector) {
+        let (q, (lh, hh)) = (&self.q, self.block);
+        let beyond = (q.f - q.a).dot(&q.u) - lh;
+        if self.s.page(beyond) < AT_BAR_END {
+            return (q.a + q.u * lh, q.u);
+        }
+        let map = *self.s.transform();
+        let away = match self.trunnion {
+            Some(foot) => -foot.axes().0.dot(&map.apply_vector(q.v)),
+            None => normal.dot(&q.v),
+        };
+        let out = if away >= 0.0 { q.v } else { -q.v };
+        (q.a + q.u * (BLOCK_LETTER_ALONG * lh) + out * hh, out)
     }
 
     /// Kennedy's lines that find O_bd (on CB and the normal at A) and O_ac
@@ -813,10 +1056,17 @@ impl Drawing {
         // B = O_ab, A = O_bc (the notes give the letters of Figs. 62–67).
         let pins = [(c, "*O*_{ad}"), (b, "*O*_{ab}"), (a, "*O*_{bc}")];
         for ((p, markup), key) in pins.into_iter().zip(["C", "B", "A"]) {
+            let way = self.pin_a_way.filter(|_| key == "A" && self.s.contains(p));
             if self.held(p) {
                 self.s.record(key, p);
                 self.s
                     .push(format!("point-{key}"), Role::Link, Shape::Pin { centre: p });
+            } else if let Some(way) = way {
+                self.s
+                    .push(format!("point-{key}"), Role::Link, Shape::Pin { centre: p });
+                let text = RichText::parse(markup);
+                self.s
+                    .label_toward(format!("label-{key}"), p, way, text, TextSize::Letter);
             } else {
                 self.s.lettered(key, p, markup, Marker::Pin, c);
             }
@@ -942,11 +1192,17 @@ impl Drawing {
 /// The notes: the inversion named, the pose and the mechanism, the quick
 /// return's time ratio where there is one and the centres drawn together,
 /// then the pins' letters and Kennedy's theorem.
-fn notes(ctx: &Ctx, chain: &InvertedChain, named: &str, together: &[String]) -> [String; 2] {
+fn notes(
+    ctx: &Ctx,
+    chain: &InvertedChain,
+    named: &str,
+    together: &[String],
+    hatched: usize,
+) -> [String; 2] {
     let m = &ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
     let mut line = format!(
-        "{named}The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. The fixed link is hatched.",
+        "{named}The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. {}",
         short(ctx.angle.degrees()),
         short(r),
         short(l),
@@ -955,6 +1211,7 @@ fn notes(ctx: &Ctx, chain: &InvertedChain, named: &str, together: &[String]) -> 
         } else {
             format!(", *e* = {}", short(e))
         },
+        fixed_shown(chain.inversion(), hatched),
     );
     if let Some(ratio) = chain.time_ratio() {
         line.push_str(&format!(
@@ -969,6 +1226,24 @@ fn notes(ctx: &Ctx, chain: &InvertedChain, named: &str, together: &[String]) -> 
         line,
         "The pins *O*_{ad}, *O*_{ab}, *O*_{bc} are *C*, *B*, *A* of Figs. 62–67; by Kennedy’s theorem *O*_{bd} on *O*_{ad}*O*_{ab} and on the normal to the stroke at *O*_{bc}, *O*_{ac} on *O*_{ab}*O*_{bc} and on the normal at *O*_{ad}.".to_string(),
     ]
+}
+
+/// How the notes say the fixed link is shown: hatched, or, for a fixed
+/// bar with fewer than [`FIXED_STROKES`] strokes of hatching (`hatched`,
+/// the bar lying in d's slot), by the bearings at its two pins.
+fn fixed_shown(inversion: Inversion, hatched: usize) -> String {
+    let pins = match inversion {
+        Inversion::Crank => "*O*_{ad} and *O*_{ab}",
+        Inversion::Rod => "*O*_{ab} and *O*_{bc}",
+        Inversion::Frame | Inversion::Slider => return "The fixed link is hatched.".to_string(),
+    };
+    if hatched >= FIXED_STROKES {
+        return "The fixed link is hatched.".to_string();
+    }
+    format!(
+        "The fixed link *{}*, too near the moving links here to hatch, is shown fixed by the bearings at its pins {pins}.",
+        letter(inversion.fixed())
+    )
 }
 
 /// The line `p q` produced to `x` on it, from whichever of p and q is
