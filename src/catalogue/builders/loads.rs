@@ -200,8 +200,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         kinks: &kinks,
         cycle,
     });
-    let panels = [false, true].into_iter().zip(boxes);
-    for (k, (relative, (lo, hi))) in panels.enumerate() {
+    let panels = [false, true].into_iter().zip(boxes).zip(&curves);
+    for (k, ((relative, (lo, hi)), drawn)) in panels.enumerate() {
         let rect = if stacked {
             PageRect::new(16.0, 16.0 + k as f64 * (tall + 16.0), half, tall)
         } else {
@@ -220,8 +220,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let view = View::Whole {
             detail: detail_size,
         };
-        let (mut plot, window) =
-            polar_plot(ctx, &curves[k], relative, rect, (&world, below), view)?;
+        let (mut plot, window) = polar_plot(ctx, drawn, relative, rect, (&world, below), view)?;
         if !relative {
             bar = bar_length(largest_load(&samples), plot.map().scale());
             plot.push(scale_bar(ctx, &world, bar, pad, below, plot.map().scale()));
@@ -448,7 +447,7 @@ fn window(taken: &[Mark], scale: f64, size: (f64, f64)) -> Option<Window> {
     let middle = held.min() + 0.5 * (held.max() - held.min());
     let area = Vector::new(size.0, size.1 - crate::diagram::CAPTION);
     let wanted = (area.x / (reach.x * scale)).min(area.y / (reach.y * scale));
-    if !(wanted >= LEAST_MAGNIFICATION) {
+    if wanted.is_nan() || wanted < LEAST_MAGNIFICATION {
         return None;
     }
     let magnification = super::coriolis::round_below(wanted, &super::coriolis::FINE_STEPS);
@@ -477,6 +476,9 @@ fn details(
 ) -> Result<Option<f64>> {
     let top = panels_end + DETAIL_GAP;
     for &(k, relative, w) in windows {
+        let Some(&panel) = curves.get(k) else {
+            continue;
+        };
         let (slot, x) = if stacked {
             let slot = 0.5 * (half - 16.0);
             (slot, 16.0 + k as f64 * (slot + 16.0))
@@ -487,15 +489,10 @@ fn details(
         // Sampled as finely on the page as the panel's curves, which
         // the letters keep clear of: at 2 a degree, ×6 (l = 47.6 r),
         // a letter cleared the chords and stood on the curve.
-        let fine = sampled(
-            curves[k].engines,
-            curves[k].cycle,
-            relative,
-            2.0 * w.magnification,
-        );
+        let fine = sampled(panel.engines, panel.cycle, relative, 2.0 * w.magnification);
         let curves = Curves {
             sampled: &fine,
-            ..curves[k]
+            ..panel
         };
         let view = View::Detail(w);
         let (plot, _) = polar_plot(ctx, &curves, relative, rect, (&w.region, 0.0), view)?;
