@@ -655,6 +655,23 @@ fn load_marks(svg: &str, panel: &str) -> Vec<(String, (f64, f64))> {
         .collect()
 }
 
+/// The panels drawn of a crank-pin-load figure: "fixed", "relative" and
+/// the details of either, "detail-fixed", "detail-relative", where drawn.
+fn drawn_load_panels(svg: &str) -> Vec<&'static str> {
+    ["fixed", "relative", "detail-fixed", "detail-relative"]
+        .into_iter()
+        .filter(|p| svg.contains(&format!("id=\"point-{p}-pole-1\"")))
+        .collect()
+}
+
+/// The detail of a crank-pin-load panel, or the panel of a detail.
+fn counterpart(panel: &str) -> String {
+    match panel.strip_prefix("detail-") {
+        Some(p) => p.to_string(),
+        None => format!("detail-{panel}"),
+    }
+}
+
 /// The page width of the `case`th of [`reviewed_load_figures`].
 fn width_of(case: usize) -> Option<&'static str> {
     [None, Some("120mm"), Some("4.5in"), Some("500")][case % 4]
@@ -695,17 +712,25 @@ fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
             .split_whitespace()
             .collect::<Vec<_>>()
             .join(" ");
-        for panel in ["fixed", "relative"] {
+        for panel in drawn_load_panels(&svg) {
             let marks = load_marks(&svg, panel);
             assert!(marks.len() >= 2, "{panel}: {marks:?}");
             let map = panel_map(&svg, &format!("panel-{panel}"));
             let pole = (map[4], map[5]);
+            // A quarter is lettered in its panel or, about a crowded
+            // pole, in the panel's detail (or, beyond the detail's
+            // middle, in the panel).
+            let other = counterpart(panel);
+            let lettered_at = |point: &str| {
+                let label = point.replacen("point-", "label-", 1);
+                svg.contains(&format!("id=\"{label}\""))
+                    || svg.contains(&format!("id=\"{}\"", label.replacen(panel, &other, 1)))
+            };
             for (k, (a, p)) in marks.iter().enumerate() {
-                let lettered = svg.contains(&format!("id=\"{}\"", a.replace("point-", "label-")));
+                let lettered = lettered_at(a);
                 for (b, q) in &marks[k + 1..] {
                     let d = (p.0 - q.0).hypot(p.1 - q.1);
-                    let both = lettered
-                        && svg.contains(&format!("id=\"{}\"", b.replace("point-", "label-")));
+                    let both = lettered && lettered_at(b);
                     let least = if both { meet } else { apart };
                     assert!(d >= least, "{a} and {b} {d:.1} px apart");
                 }
@@ -719,8 +744,9 @@ fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
                 for deg in [0, 90, 180, 270] {
                     let id = format!("label-{panel}-{curve}-{deg}");
                     if !svg.contains(&format!("id=\"{id}\"")) {
+                        let dot = format!("point-{panel}-{curve}-{deg}");
                         assert!(
-                            !svg.contains(&format!("id=\"point-{panel}-{curve}-{deg}\"")),
+                            !svg.contains(&format!("id=\"{dot}\"")) || lettered_at(&dot),
                             "{id}: a quarter's dot without its letter"
                         );
                         continue;
@@ -797,18 +823,20 @@ fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
             // mark or by one its point meets.
             for deg in [0, 90, 180, 270] {
                 let own = format!("id=\"label-{panel}-without-rod-{deg}\"");
-                let named = svg
-                    .match_indices(&format!("id=\"label-{panel}-"))
-                    .any(|(i, _)| {
-                        let start = i + svg[i..].find('>').unwrap() + 1;
-                        let end = start + svg[start..].find("</text>").unwrap();
-                        read_text(&svg[start..end]).split(", ").any(|a| {
-                            a.trim_end_matches(['′', 'ʹ']) == format!("{deg}°")
-                                && a != format!("{deg}°")
-                        }) && svg[i..].starts_with(&format!("id=\"label-{panel}-with"))
-                    });
+                let elsewhere = own.replacen(panel, &other, 1);
+                let named = [panel, other.as_str()].iter().any(|panel| {
+                    svg.match_indices(&format!("id=\"label-{panel}-"))
+                        .any(|(i, _)| {
+                            let start = i + svg[i..].find('>').unwrap() + 1;
+                            let end = start + svg[start..].find("</text>").unwrap();
+                            read_text(&svg[start..end]).split(", ").any(|a| {
+                                a.trim_end_matches(['′', 'ʹ']) == format!("{deg}°")
+                                    && a != format!("{deg}°")
+                            }) && svg[i..].starts_with(&format!("id=\"label-{panel}-with"))
+                        })
+                });
                 assert!(
-                    svg.contains(&own) || named,
+                    svg.contains(&own) || svg.contains(&elsewhere) || named,
                     "{panel}: the dashed curve's {deg}°"
                 );
             }
@@ -1277,6 +1305,12 @@ fn the_crank_pin_loads_pole_is_lettered_by_its_cross() {
     // clear place is outside it; under 1.1 elsewhere).
     for (case, svg) in sixth_review_load_figures(false) {
         for panel in ["fixed", "relative"] {
+            // Lettered in the panel, or in its detail about a crowded pole.
+            let detail = format!("detail-{panel}");
+            let panel = match svg.contains(&format!("id=\"label-{panel}-pole\"")) {
+                true => panel,
+                false => detail.as_str(),
+            };
             let ((x0, x1), (y0, y1)) = page_extent(&svg, &format!("point-{panel}-pole-1"));
             let pole = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
             let id = format!("label-{panel}-pole");
@@ -1304,6 +1338,20 @@ fn sixth_review_turning_figures() -> Vec<(String, String)> {
         }
     }
     out
+}
+
+/// The pieces of the path `id` (each from a move), each its page points,
+/// ends and control points in order.
+fn path_pieces(svg: &str, id: &str) -> Vec<Vec<(f64, f64)>> {
+    let d = attr(svg, id, "d").unwrap();
+    (d.split('M').filter(|p| !p.trim().is_empty()))
+        .map(|p| {
+            let v: Vec<f64> = (p.split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace()))
+                .filter_map(|x| x.parse().ok())
+                .collect();
+            v.chunks(2).map(|q| (q[0], q[1])).collect()
+        })
+        .collect()
 }
 
 /// The page points of the path `id`, ends and control points in order.
@@ -1465,7 +1513,7 @@ fn the_crank_pin_loads_letters_stand_nearer_their_own_dot_than_any_other_and_the
     // either side), by no more.
     let mut wrong = Vec::new();
     for (case, svg) in seventh_review_load_figures() {
-        for panel in ["fixed", "relative"] {
+        for panel in drawn_load_panels(&svg) {
             let ((x0, x1), (y0, y1)) = page_extent(&svg, &format!("point-{panel}-pole-1"));
             let pole = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
             let marks = load_marks(&svg, panel);
@@ -1479,7 +1527,11 @@ fn the_crank_pin_loads_letters_stand_nearer_their_own_dot_than_any_other_and_the
                     s[..s.find('"').unwrap()].to_string()
                 })
                 .collect();
-            assert!(letters.len() >= 5, "{case}: {letters:?}");
+            // Fewer where a detail letters the pole's region.
+            assert!(
+                letters.len() >= 5 || svg.contains("id=\"panel-detail-"),
+                "{case}: {letters:?}"
+            );
             for id in letters {
                 // A letter with a leader is named by it (read in
                 // the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves).
@@ -1709,7 +1761,7 @@ fn the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves() 
     // of every other letter's, and no part of either curve crosses it.
     let mut wrong = Vec::new();
     for (case, svg) in tenth_review_load_figures() {
-        for panel in ["fixed", "relative"] {
+        for panel in drawn_load_panels(&svg) {
             let marks = load_marks(&svg, panel);
             let key = format!("id=\"label-{panel}-with");
             let letters: Vec<String> = svg
@@ -1719,10 +1771,18 @@ fn the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves() 
                     s[..s.find('"').unwrap()].to_string()
                 })
                 .collect();
-            assert!(letters.len() >= 4, "{case}: {letters:?}");
+            assert!(
+                letters.len() >= 4 || panel.starts_with("detail-") || svg.contains("detail-"),
+                "{case}: {letters:?}"
+            );
+            // Each curve drawn (a detail may show one only), each piece
+            // of its path (a detail's curves leave and enter its area).
             let curves: Vec<Vec<(f64, f64)>> = ["with-rod", "without-rod"]
-                .map(|c| path_numbers(&svg, &format!("curve-{panel}-{c}")))
-                .into();
+                .iter()
+                .map(|c| format!("curve-{panel}-{c}"))
+                .filter(|id| attr(&svg, id, "d").is_some())
+                .flat_map(|id| path_pieces(&svg, &id))
+                .collect();
             for (k, id) in letters.iter().enumerate() {
                 let said = text_content(&svg, id);
                 let own_id = id.replacen("label-", "point-", 1);
@@ -1873,4 +1933,182 @@ fn an_offset_is_said_signed_with_its_side_in_the_dynamics_notes() {
             assert!(text.contains(&want), "{name:?} at e = {e}: {text}");
         }
     }
+}
+
+/// The crank-pin-load figures of the eleventh review's short rods (r = 1,
+/// l = 1.06 and 1.1) on its four page widths: (what, SVG).
+fn eleventh_review_short_rods() -> Vec<(String, String)> {
+    let mut cases = Vec::new();
+    for l in [1.06, 1.1] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            cases.push((l, width));
+        }
+    }
+    common::in_threads(&cases, |&(l, width)| {
+        let mut o = match width {
+            Some(w) => common::on_page(w, None),
+            None => FigureOptions::default(),
+        };
+        o.mechanism = Some(SliderCrank::in_line(1.0, l).unwrap());
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+        (format!("l {l} on {width:?}"), svg)
+    })
+}
+
+/// The ids of the quarters' letters of the panel `panel` of a
+/// crank-pin-load figure.
+fn quarter_letters(svg: &str, panel: &str) -> Vec<String> {
+    let key = format!("id=\"label-{panel}-with");
+    svg.match_indices(&key)
+        .map(|(i, _)| {
+            let s = &svg[i + 4..];
+            s[..s.find('"').unwrap()].to_string()
+        })
+        .collect()
+}
+
+/// The gap between two boxes (left, right, top, bottom): 0 where they
+/// meet.
+fn boxes_apart(a: (f64, f64, f64, f64), b: (f64, f64, f64, f64)) -> f64 {
+    let dx = (a.0 - b.1).max(b.0 - a.1).max(0.0);
+    let dy = (a.2 - b.3).max(b.2 - a.3).max(0.0);
+    dx.hypot(dy)
+}
+
+/// Whether the segment `p`–`q` passes through the box `b` (left, right,
+/// top, bottom), tried at a hundred points.
+fn through(b: (f64, f64, f64, f64), p: (f64, f64), q: (f64, f64)) -> bool {
+    (0..=100).any(|i| {
+        let t = i as f64 / 100.0;
+        box_to(b, (p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1))) == 0.0
+    })
+}
+
+#[test]
+fn the_crank_pin_loads_pole_of_a_short_rod_is_read_in_an_enlarged_detail() {
+    // The eleventh review: at r = 1, l = 1.06 on 120 mm, 4.5 in and 500
+    // units 0°, 180°, their primes, the × and O piled into a knot a few
+    // millimetres wide, a leader across O and the × hidden under dots
+    // (2 of 5); at l = 1.1 the same. Each panel whose pole is crowded
+    // has an enlarged detail (×2 at least, said in its caption and the
+    // metadata); each curve's every quarter is lettered once, in its
+    // panel or its detail, and O once; where O stands, no leader crosses
+    // it, every quarter's letter keeps an em from it (its estimated box,
+    // 0.8 em) and no letter covers the ×.
+    let mut wrong = Vec::new();
+    for (case, svg) in eleventh_review_short_rods() {
+        let details = metadata(&svg)["crank_pin_loads"]["details"]
+            .as_array()
+            .unwrap()
+            .clone();
+        assert!(!details.is_empty(), "{case}: no detail");
+        for d in &details {
+            let panel = d["panel"].as_str().unwrap();
+            let times = d["magnification"].as_f64().unwrap();
+            assert!(times >= 2.0, "{case}: {panel} ×{times}");
+            let caption = ["", "-2", "-3"]
+                .iter()
+                .map(|k| format!("detail-{panel}-caption{k}"))
+                .filter(|id| svg.contains(&format!("id=\"{id}\"")))
+                .map(|id| text_content(&svg, &id))
+                .collect::<String>();
+            assert!(caption.contains('×'), "{case}: {caption}");
+        }
+        for panel in ["fixed", "relative"] {
+            let places = [panel.to_string(), format!("detail-{panel}")];
+            let mut said: Vec<String> = Vec::new();
+            for p in &places {
+                for id in quarter_letters(&svg, p) {
+                    let text = text_content(&svg, &id).replace('ʹ', "′");
+                    said.extend(text.split(", ").map(String::from));
+                }
+            }
+            said.sort();
+            let mut all: Vec<String> = [0, 90, 180, 270]
+                .iter()
+                .flat_map(|d| [format!("{d}°"), format!("{d}°′")])
+                .collect();
+            all.sort();
+            assert_eq!(said, all, "{case}: {panel}'s quarters");
+            let poles: Vec<&String> = (places.iter())
+                .filter(|p| svg.contains(&format!("id=\"label-{p}-pole\"")))
+                .collect();
+            assert_eq!(poles.len(), 1, "{case}: {panel}'s O in {poles:?}");
+            let p = poles[0];
+            let o = letter_box(&svg, &format!("label-{p}-pole"));
+            let em = num(&svg, &format!("label-{p}-pole"), "font-size");
+            let ((x0, x1), (y0, y1)) = page_extent(&svg, &format!("point-{p}-pole-1"));
+            let cross = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+            for id in quarter_letters(&svg, p) {
+                let text = text_content(&svg, &id);
+                let gap = boxes_apart(letter_box(&svg, &id), o);
+                if gap < 0.8 * em {
+                    wrong.push(format!("{case}: {id} ({text}) {gap:.1} from O"));
+                }
+                if to_box_of(&svg, &id, cross) < 2.0 {
+                    wrong.push(format!("{case}: {id} ({text}) over the ×"));
+                }
+                let leader = id.replacen("label-", "leader-", 1);
+                if svg.contains(&format!("id=\"{leader}\"")) {
+                    let ends = path_numbers(&svg, &leader);
+                    if through(o, ends[0], ends[ends.len() - 1]) {
+                        wrong.push(format!("{case}: {leader} across O"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_crank_pin_loads_quarters_letters_stand_an_em_from_o_and_their_leaders_off_the_curves() {
+    // The eleventh review: at the default "0°" stood a word space from
+    // "O" in both panels and read with it as one label, "0° O"; at
+    // r = 1, l = 3.83, e = −1.63 the leaders of 270°′, 180°′ and 0°′
+    // crossed the curves. Every quarter's letter keeps an em from O (its
+    // estimated box, 0.8 em), and no leader crosses either curve (their
+    // paths' points joined, the leader short of its dot by more than the
+    // curves' own dot).
+    let mut wrong = Vec::new();
+    for (r, l, e) in [(0.5, 3.0, 0.0), (1.0, 3.83, -1.63)] {
+        let mut o = FigureOptions::default();
+        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+        let case = format!("r {r} l {l} e {e}");
+        for panel in ["fixed", "relative", "detail-fixed", "detail-relative"] {
+            let pole = format!("label-{panel}-pole");
+            if !svg.contains(&format!("id=\"{pole}\"")) {
+                continue;
+            }
+            let em = num(&svg, &pole, "font-size");
+            let curves: Vec<Vec<(f64, f64)>> = ["with-rod", "without-rod"]
+                .map(|c| path_numbers(&svg, &format!("curve-{panel}-{c}")))
+                .into();
+            for id in quarter_letters(&svg, panel) {
+                let text = text_content(&svg, &id);
+                let gap = boxes_apart(letter_box(&svg, &id), letter_box(&svg, &pole));
+                if gap < 0.8 * em {
+                    wrong.push(format!("{case}: {id} ({text}) {gap:.1} from O"));
+                }
+                let leader = id.replacen("label-", "leader-", 1);
+                if !svg.contains(&format!("id=\"{leader}\"")) {
+                    continue;
+                }
+                let ends = path_numbers(&svg, &leader);
+                let (a, b) = (ends[0], ends[ends.len() - 1]);
+                let crossed = curves.iter().flat_map(|c| c.windows(2)).any(|w| {
+                    let side = |p: (f64, f64), q: (f64, f64), s: (f64, f64)| {
+                        (q.0 - p.0) * (s.1 - p.1) - (q.1 - p.1) * (s.0 - p.0)
+                    };
+                    side(a, b, w[0]) * side(a, b, w[1]) < 0.0
+                        && side(w[0], w[1], a) * side(w[0], w[1], b) < 0.0
+                });
+                if crossed {
+                    wrong.push(format!("{case}: {leader} ({text}) crosses a curve"));
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }

@@ -58,13 +58,25 @@ const POLE_ROOM: f64 = 5.5;
 /// may stand on either side of the pair.
 const ONE_PLACE: f64 = 4.0;
 
+/// Room a quarter's letter keeps from the pole's letter *O*, in ems of
+/// the letters: more than an em, so that the two read as two labels
+/// ("0°" two word spaces from "O" read as one, "0° O", at the default
+/// engine: the eleventh review).
+const POLE_LETTER_ROOM: f64 = 1.2;
+
 /// The letters set so far in a panel and what each later letter keeps
 /// clear of.
 pub(super) struct Letters {
-    /// Both curves as world segments (their jumps' dotted lines too).
+    /// Both curves as world segments (their jumps' dotted lines within
+    /// the cycle too).
     curves: Vec<(Point, Point)>,
+    /// The dotted lines of the jumps at the cycle's start and end: kept
+    /// clear of by letters, crossed by leaders as a curve is not.
+    jumps: Vec<(Point, Point)>,
     /// The boxes of the letters set so far: world centre and half-size.
     boxes: Vec<(Point, Vector)>,
+    /// The pole's letter's box, where it is set (the first letter set).
+    pole: Option<Boxed>,
     /// Page units to the world unit.
     scale: f64,
     /// The panel's map, world to page.
@@ -94,13 +106,21 @@ impl Letters {
         let trace = |pick: fn(&[Vector; 2]) -> Vector| -> Vec<Point> {
             sampled.iter().map(|s| Point::origin() + pick(s)).collect()
         };
-        let curves = [trace(|s| s[0]), trace(|s| s[1])]
-            .iter()
+        let traces = [trace(|s| s[0]), trace(|s| s[1])];
+        let curves = (traces.iter())
             .flat_map(|t| t.iter().copied().zip(t.iter().copied().skip(1)))
+            .collect();
+        // Each trace's end joined to its start: the jump at the cycle's
+        // start and end, drawn dotted, which a letter set over read as
+        // struck through ("0°" on the dotted line at the default engine).
+        let jumps = (traces.iter())
+            .filter_map(|t| Some((*t.last()?, *t.first()?)))
             .collect();
         Self {
             curves,
+            jumps,
             boxes: Vec::new(),
+            pole: None,
             scale: map.scale(),
             map,
             inside,
@@ -134,6 +154,29 @@ impl Letters {
         })?;
         self.boxes.push(b.0);
         Some(self.text(b.0, text, id))
+    }
+
+    /// The pole's letter `text` beside the pole (the world origin), `id`,
+    /// as [`Letters::beside`] sets a dot's, or where no near ring has a
+    /// clear side, farther out with its leader `leader_id`
+    /// ([`Letters::led`]); the quarters' letters set after it keep
+    /// [`POLE_LETTER_ROOM`] from it. Empty where no place within three
+    /// ems is clear.
+    pub(super) fn pole(
+        &mut self,
+        text: RichText,
+        dots: &[Point],
+        (id, leader_id): (String, String),
+    ) -> Vec<Item> {
+        let o = Point::origin();
+        let items = match self.beside(o, text.clone(), dots, id.clone()) {
+            Some(item) => vec![item],
+            None => (self.led(o, text, dots, (id, leader_id))).map_or_else(Vec::new, Vec::from),
+        };
+        if !items.is_empty() {
+            self.pole = self.boxes.last().copied();
+        }
+        items
     }
 
     /// The letter `text`, `id`, its ink's box `b` (world).
@@ -170,18 +213,25 @@ impl Letters {
     ) -> Option<[Item; 2]> {
         let half = self.half(&text);
         let curves = self.curves_near(from, half, *FAR_RINGS.last().unwrap_or(&0.0));
-        let (b, _, _) = FAR_RINGS.iter().find_map(|&ring| {
-            (directions().filter_map(|u| {
-                let b = (self.centre(from, u, half, ring), half);
-                let room = self.room(b, from, (&curves, dots), true)?;
-                let (a, _) = self.leader(b, from);
-                let crossed = (curves.iter())
-                    .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
-                    .count();
-                Some((b, crossed, room))
-            }))
-            .min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2)))
-        })?;
+        // Fewest crossings first over every ring, then the nearest ring,
+        // then the most room: the nearest ring's least crossed place
+        // crossed a curve where a ring farther out had a place crossing
+        // none (the offset engine r = 1, l = 3.83, e = −1.63: the
+        // eleventh review).
+        let (b, _, _, _) = (FAR_RINGS.iter().enumerate())
+            .flat_map(|(k, &ring)| {
+                let (this, curves) = (&*self, &curves);
+                directions().filter_map(move |u| {
+                    let b = (this.centre(from, u, half, ring), half);
+                    let room = this.room(b, from, (curves, dots), true)?;
+                    let (a, _) = this.leader(b, from);
+                    let crossed = (curves.iter())
+                        .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
+                        .count();
+                    Some((b, crossed, k, room))
+                })
+            })
+            .min_by(|a, b| (a.1, a.2).cmp(&(b.1, b.2)).then(b.3.total_cmp(&a.3)))?;
         self.boxes.push(b);
         let (a, end) = self.leader(b, from);
         Some([
@@ -288,7 +338,7 @@ impl Letters {
             return None;
         }
         let mut least = self.size;
-        for (p, q) in curves {
+        for (p, q) in curves.iter().chain(&self.jumps) {
             let d = segment_to_box(b, *p, *q) * s;
             if d < ROOM {
                 return None;
@@ -296,11 +346,16 @@ impl Letters {
             least = least.min(d - ROOM);
         }
         for o in &self.boxes {
+            let keep = if Some(*o) == self.pole {
+                POLE_LETTER_ROOM * self.size
+            } else {
+                ROOM
+            };
             let gap = boxes_apart(b, *o) * s;
-            if gap < ROOM {
+            if gap < keep {
                 return None;
             }
-            least = least.min(gap - ROOM);
+            least = least.min(gap - keep);
         }
         Some(least)
     }

@@ -68,6 +68,35 @@ const STACK_BELOW: f64 = 300.0;
 /// Room below the curves for the scale bar and its text, page units.
 const BAR_ROOM: f64 = 30.0;
 
+/// How near the pole, page units, lettered marks crowd it: within two
+/// ems, where a short rod's (l = 1.06 r) 0°, 180° and their primes, the
+/// pole's × and *O* piled into a knot a few millimetres wide, a leader
+/// across *O* (the eleventh review).
+const CROWD: f64 = 30.0;
+
+/// How many lettered marks within [`CROWD`] of the pole crowd it (with
+/// the pole's own letter, three letters in two ems).
+const CROWDED: usize = 2;
+
+/// Room about the crowded marks in the region a detail enlarges, page
+/// units of the panel: room for their letters.
+const WINDOW_MARGIN: f64 = 10.0;
+
+/// The least magnification worth a detail: less, and the knot stays one.
+const LEAST_MAGNIFICATION: f64 = 2.0;
+
+/// How far inside a detail's edge a mark is lettered there, page units
+/// of the detail: nearer the edge its letter would leave the detail, and
+/// the panel letters it (its dot outside the box as drawn there).
+const EDGE: f64 = 16.0;
+
+/// The largest size on the page of a detail, page units (its caption
+/// included in the height).
+const DETAIL: (f64, f64) = (300.0, 190.0);
+
+/// Room above a detail, page units, between it and the panels.
+const DETAIL_GAP: f64 = 16.0;
+
 /// The two engines: with the rod asked for (each of its values not given
 /// the illustrative rod's), and with a massless one.
 fn engines(ctx: &Ctx) -> Result<(Engine, Engine)> {
@@ -130,7 +159,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     kinks.sort_by(f64::total_cmp);
     kinks.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
     let engines = [&rod, &bare];
-    let samples = [false, true].map(|relative| sampled(engines, cycle, relative));
+    let samples = [false, true].map(|relative| sampled(engines, cycle, relative, 2.0));
     // Both panels to one scale: worlds of one size, each about its own
     // curves (and the pole).
     drawable(ctx, &samples)?;
@@ -156,8 +185,23 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, false);
     let mut bar = 0.0;
-    let panels = [false, true].into_iter().zip(boxes).zip(&samples);
-    for (k, ((relative, (lo, hi)), sampled)) in panels.enumerate() {
+    // A detail's size: under its panel, or side by side under the
+    // stacked panels.
+    let detail_size = (
+        DETAIL
+            .0
+            .min(if stacked { 0.5 * (half - 16.0) } else { half }),
+        DETAIL.1,
+    );
+    let mut windows = Vec::new();
+    let curves = samples.each_ref().map(|sampled| Curves {
+        engines,
+        sampled,
+        kinks: &kinks,
+        cycle,
+    });
+    let panels = [false, true].into_iter().zip(boxes).zip(&curves);
+    for (k, ((relative, (lo, hi)), drawn)) in panels.enumerate() {
         let rect = if stacked {
             PageRect::new(16.0, 16.0 + k as f64 * (tall + 16.0), half, tall)
         } else {
@@ -173,21 +217,22 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let below = BAR_ROOM / scale;
         // The bar below the curves, clear of every dot.
         let world = Frame::new(centre - reach - Vector::new(0.0, below), centre + reach);
-        let mut plot = polar_plot(
-            ctx,
-            (engines, sampled),
-            &kinks,
-            cycle,
-            relative,
-            rect,
-            (&world, below),
-        )?;
+        let view = View::Whole {
+            detail: detail_size,
+        };
+        let (mut plot, window) = polar_plot(ctx, drawn, relative, rect, (&world, below), view)?;
         if !relative {
             bar = bar_length(largest_load(&samples), plot.map().scale());
             plot.push(scale_bar(ctx, &world, bar, pad, below, plot.map().scale()));
         }
+        if let Some(w) = window {
+            windows.push((k, relative, w));
+        }
         sheet.plot(plot);
     }
+    let panels_end = 16.0 + rows * tall + (rows - 1.0) * 16.0;
+    let layout = (stacked, half, panels_end);
+    let details_end = details(ctx, &mut sheet, &curves, &windows, layout, detail_size)?;
     let [fixed, _] = &samples;
     let largest = [0, 1].map(|i| {
         fixed
@@ -206,17 +251,22 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             "largest_without_rod": largest[1],
             "cycle_deg": cycle,
             "bar": bar,
+            "details": windows.iter().map(|(_, relative, w)| serde_json::json!({
+                "panel": if *relative { "relative" } else { "fixed" },
+                "magnification": w.magnification,
+            })).collect::<Vec<_>>(),
         }),
     );
-    let top = 16.0 + rows * tall + (rows - 1.0) * 16.0 + 8.0;
+    let top = details_end.unwrap_or(panels_end) + 8.0;
     sheet.height(top + NOTES + 16.0);
     sheet.notes(Point::new(20.0, top), &notes(ctx, &rod, largest, bar));
     Ok(sheet.finish())
 }
 
-/// The loads of the two engines at 2 samples a degree over the cycle.
-fn sampled(engines: [&Engine; 2], cycle: f64, relative: bool) -> Vec<[Vector; 2]> {
-    let samples = (2.0 * cycle) as usize;
+/// The loads of the two engines at `per_degree` samples a degree over
+/// the cycle.
+fn sampled(engines: [&Engine; 2], cycle: f64, relative: bool, per_degree: f64) -> Vec<[Vector; 2]> {
+    let samples = (per_degree * cycle) as usize;
     (0..=samples)
         .filter_map(|i| {
             let d = (cycle * i as f64 / samples as f64).clamp(INSIDE, cycle - INSIDE);
@@ -340,27 +390,153 @@ fn piece<'a>(engine: &'a Engine, relative: bool, a: f64, b: f64) -> impl Curve +
     }
 }
 
+/// The curves a panel draws: the two engines (with the rod's inertia and
+/// without it), their loads sampled, the cycle's kinks and its length
+/// (degrees).
+#[derive(Clone, Copy)]
+struct Curves<'a> {
+    engines: [&'a Engine; 2],
+    sampled: &'a [[Vector; 2]],
+    kinks: &'a [f64],
+    cycle: f64,
+}
+
+/// What a panel shows.
+#[derive(Clone, Copy)]
+enum View {
+    /// The whole of both curves; where the lettered marks crowd about the
+    /// pole, the region about it left to a detail of `detail` (width,
+    /// height with its caption, page units): its marks drawn, lettered
+    /// there, and the region boxed.
+    Whole { detail: (f64, f64) },
+    /// The detail of a panel's region about the pole ([`Window`]).
+    Detail(Window),
+}
+
+/// The region about the pole a panel leaves to a detail: the region
+/// (world), the part of it whose marks the detail letters, and its
+/// magnification over the panel.
+#[derive(Clone, Copy)]
+struct Window {
+    region: Frame,
+    core: Frame,
+    magnification: f64,
+}
+
+/// The window about the pole of a panel at `scale` page units to the
+/// force whose marks are `taken`, for a detail of `size` (page units,
+/// its caption included): where [`CROWDED`] lettered marks or more lie
+/// within [`CROWD`] of the pole, the box holding them and the pole and
+/// [`WINDOW_MARGIN`] more, enlarged to fill the detail at a round
+/// magnification (at least [`LEAST_MAGNIFICATION`]) about its middle;
+/// none where the pole is not crowded or the detail would enlarge it
+/// less.
+fn window(taken: &[Mark], scale: f64, size: (f64, f64)) -> Option<Window> {
+    let crowd: Vec<Point> = (taken.iter())
+        .filter(|t| !t.3.is_empty())
+        .map(|t| t.2)
+        .filter(|p| (*p - Point::origin()).norm() * scale < CROWD)
+        .collect();
+    if crowd.len() < CROWDED {
+        return None;
+    }
+    let mut held = Frame::new(Point::origin(), Point::origin());
+    crowd.iter().for_each(|p| held.include(*p));
+    let margin = Vector::new(WINDOW_MARGIN, WINDOW_MARGIN) / scale;
+    let reach = (held.max() - held.min()) + 2.0 * margin;
+    let middle = held.min() + 0.5 * (held.max() - held.min());
+    let area = Vector::new(size.0, size.1 - crate::diagram::CAPTION);
+    let wanted = (area.x / (reach.x * scale)).min(area.y / (reach.y * scale));
+    if wanted.is_nan() || wanted < LEAST_MAGNIFICATION {
+        return None;
+    }
+    let magnification = super::coriolis::round_below(wanted, &super::coriolis::FINE_STEPS);
+    let half = area * (0.5 / (magnification * scale));
+    let edge = EDGE / (magnification * scale);
+    let inner = half - Vector::new(edge, edge);
+    Some(Window {
+        region: Frame::new(middle - half, middle + half),
+        core: Frame::new(middle - inner, middle + inner),
+        magnification,
+    })
+}
+
+/// The details of the panels' `windows` (each its panel's number, whether
+/// relative, and its window), drawn below the panels
+/// ending at `panels_end`: each under its panel, side by side under
+/// stacked ones, `size` on the page; where the last ends (page units),
+/// `None` with none.
+fn details(
+    ctx: &Ctx,
+    sheet: &mut Sheet,
+    curves: &[Curves; 2],
+    windows: &[(usize, bool, Window)],
+    (stacked, half, panels_end): (bool, f64, f64),
+    size: (f64, f64),
+) -> Result<Option<f64>> {
+    let top = panels_end + DETAIL_GAP;
+    for &(k, relative, w) in windows {
+        let Some(&panel) = curves.get(k) else {
+            continue;
+        };
+        let (slot, x) = if stacked {
+            let slot = 0.5 * (half - 16.0);
+            (slot, 16.0 + k as f64 * (slot + 16.0))
+        } else {
+            (half, 16.0 + k as f64 * (half + 16.0))
+        };
+        let rect = PageRect::new(x + 0.5 * (slot - size.0), top, size.0, size.1);
+        // Sampled as finely on the page as the panel's curves, which
+        // the letters keep clear of: at 2 a degree, ×6 (l = 47.6 r),
+        // a letter cleared the chords and stood on the curve.
+        let fine = sampled(panel.engines, panel.cycle, relative, 2.0 * w.magnification);
+        let curves = Curves {
+            sampled: &fine,
+            ..panel
+        };
+        let view = View::Detail(w);
+        let (plot, _) = polar_plot(ctx, &curves, relative, rect, (&w.region, 0.0), view)?;
+        sheet.detail(plot);
+    }
+    Ok((!windows.is_empty()).then_some(top + size.1))
+}
+
 /// One panel showing `world`: the two polar curves, the pole, and the
 /// marks ([`marks`]): 0°, 90°, 180°, 270° (and on, over a cycle of two
 /// turns) lettered, in (a) above the room `below` its curves that the
-/// scale bar takes.
+/// scale bar takes; as `view` says, the whole or a detail about the pole,
+/// and the window a whole panel leaves to its detail.
 fn polar_plot(
     ctx: &Ctx,
-    (engines, sampled): ([&Engine; 2], &[[Vector; 2]]),
-    kinks: &[f64],
-    cycle: f64,
+    curves: &Curves,
     relative: bool,
     rect: PageRect,
     (world, below): (&Frame, f64),
-) -> Result<Plot> {
-    let name = if relative { "relative" } else { "fixed" };
-    let caption = if relative {
-        "(b) Relative to the crank: along it outwards (→) and across it in the sense of rotation (↑)"
-    } else {
-        "(a) In fixed axes, *x* from the crank centre towards the slider: the load on the crank pin, which a massless crank passes to the main bearing"
+    view: View,
+) -> Result<(Plot, Option<Window>)> {
+    let Curves {
+        engines,
+        sampled,
+        kinks,
+        cycle,
+    } = *curves;
+    let base = if relative { "relative" } else { "fixed" };
+    let name = match view {
+        View::Whole { .. } => base.to_string(),
+        View::Detail(_) => format!("detail-{base}"),
+    };
+    let caption = match view {
+        View::Detail(w) => format!(
+            "({}′) The boxed region of ({}) about the pole enlarged ×{}",
+            if relative { "b" } else { "a" },
+            if relative { "b" } else { "a" },
+            short(w.magnification)
+        ),
+        View::Whole { .. } if relative => "(b) Relative to the crank: along it outwards (→) and across it in the sense of rotation (↑)".to_string(),
+        View::Whole { .. } => "(a) In fixed axes, *x* from the crank centre towards the slider: the load on the crank pin, which a massless crank passes to the main bearing".to_string(),
     };
     let mut plot =
-        Plot::world(name, rect, world, false, ctx.tolerance, ctx.font)?.with_caption(caption);
+        Plot::world(&name, rect, world, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
     for (engine, id, dash) in [
         (engines[0], CURVES[0], Dash::Solid),
         (engines[1], CURVES[1], Dash::Dashed),
@@ -388,26 +564,46 @@ fn polar_plot(
         }
     }
     let scale = plot.map().scale();
-    let taken = marks(engines, cycle, relative, (APART / scale, MEET / scale));
-    plot.points(
-        &format!("point-{name}-pole"),
-        &[(0.0, 0.0)],
-        Symbol::Cross,
-        None,
-    );
+    let mut taken = marks(engines, cycle, relative, (APART / scale, MEET / scale));
+    let seen = plot.map().world_frame(&plot.area());
+    // A whole panel letters the marks outside its window, its detail
+    // those inside the window's core and draws only those it shows.
+    let window = match view {
+        View::Whole { detail } => window(&taken, scale, detail),
+        View::Detail(_) => None,
+    };
+    let here = |p: Point| match (view, window) {
+        (View::Detail(w), _) => w.core.contains(p),
+        (_, Some(w)) => !w.core.contains(p),
+        _ => true,
+    };
+    if let View::Detail(_) = view {
+        taken.retain(|t| seen.contains(t.2));
+    }
+    for t in taken.iter_mut().filter(|t| !here(t.2)) {
+        t.3.clear();
+    }
+    if let Some(w) = window {
+        plot.push(window_box(
+            &format!("{name}-detail-box"),
+            &w.region,
+            &seen,
+            0.0,
+        ));
+    }
+    if let View::Detail(_) = view {
+        // Its border, half a unit inside the area it is clipped to, so
+        // that the curves cut there end on a line, not in the air.
+        let inset = BORDER_INSET / scale;
+        plot.push(window_box(&format!("{name}-border"), &seen, &seen, inset));
+    }
     // Lettered, so that it is found among a short rod's loops about it;
     // before the quarters' letters, so that it takes the place beside its
     // × and a quarter's dot a few units off (the dashed 270° at r = 1,
     // l = 3.83 r, e = −1.63 r) is lettered on its own side, not over the
     // × with "O" by the dot; set away from the dots as well as the curves.
     // Letters inside the plot's area, in (a) above the scale bar's room.
-    let area = plot.area();
-    let corners = [
-        Point::new(area.x, area.y),
-        Point::new(area.x + area.width, area.y + area.height),
-    ]
-    .map(|c| plot.map().invert(c));
-    let (lo, hi) = (corners[0].inf(&corners[1]), corners[0].sup(&corners[1]));
+    let (lo, hi) = (seen.min(), seen.max());
     let floor = if relative {
         lo.y
     } else {
@@ -415,28 +611,69 @@ fn polar_plot(
     };
     let inside = Frame::new(Point::new(lo.x, floor), hi);
     let mut letters = Letters::new(ctx, sampled, *plot.map(), inside);
-    let pole = RichText::parse("*O*");
-    let dots: Vec<Point> = taken.iter().map(|t| t.2).collect();
-    let id = format!("label-{name}-pole");
-    let beside = letters.beside(Point::origin(), pole.clone(), &dots, id.clone());
-    plot.push(beside.unwrap_or_else(|| {
-        Item::new(
-            id,
-            Role::Label,
-            Shape::Label {
-                anchor: Point::origin(),
-                text: pole,
-                size: TextSize::Letter,
-                toward: None,
-                line: None,
-            },
-        )
-    }));
-    for item in mark_items(name, &taken, &mut letters) {
+    if here(Point::origin()) {
+        let pole = RichText::parse("*O*");
+        let dots: Vec<Point> = taken.iter().map(|t| t.2).collect();
+        let id = format!("label-{name}-pole");
+        let ids = (id.clone(), format!("leader-{name}-pole"));
+        let mut set = letters.pole(pole.clone(), &dots, ids);
+        if set.is_empty() {
+            set.push(Item::new(
+                id,
+                Role::Label,
+                Shape::Label {
+                    anchor: Point::origin(),
+                    text: pole,
+                    size: TextSize::Letter,
+                    toward: None,
+                    line: None,
+                },
+            ));
+        }
+        for item in set {
+            plot.push(item);
+        }
+    }
+    for item in mark_items(&name, &taken, &mut letters) {
         plot.push(item);
     }
-    Ok(plot)
+    // The pole's × over the dots, so that a quarter's dot on the pole
+    // (180° at l = 1.06 r, its load a twentieth of the largest) leaves
+    // its arms seen.
+    plot.points(
+        &format!("point-{name}-pole"),
+        &[(0.0, 0.0)],
+        Symbol::Cross,
+        None,
+    );
+    Ok((plot, window))
 }
+
+/// The box `id` about `region` (world) kept inside `seen`, the world a
+/// panel shows, and `inset` (world) inside it: a panel's box about the
+/// region its detail enlarges, a detail's border.
+fn window_box(id: &str, region: &Frame, seen: &Frame, inset: f64) -> Item {
+    let inset = Vector::new(inset, inset);
+    let lo = region.min().sup(&(seen.min() + inset));
+    let hi = region.max().inf(&(seen.max() - inset));
+    let role = if inset.x > 0.0 {
+        Role::Frame
+    } else {
+        Role::Auxiliary
+    };
+    Item::new(
+        id.to_string(),
+        role,
+        Shape::Polyline {
+            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
+            closed: true,
+        },
+    )
+}
+
+/// How far inside its clipped area a detail's border is drawn, page
+/// units: half its line's width, so that it is drawn whole.
+const BORDER_INSET: f64 = 0.5;
 
 /// The jumps of `engine`'s load at the kinks (degrees) where the gas
 /// force jumps (at the dead centres, the cycle's end joined to its

@@ -656,8 +656,8 @@ fn beside_dimension(
 /// The heights (page y) tried for the middle of ΔE's box, `half_high`
 /// its half height with the room: between the ends `top` (E_max) and
 /// `bottom` (E_min), every 2 units from the middle outwards; or beyond
-/// them, every 2 units from each end out to a box's height more, above
-/// E_max first, inside the plot's `area`. Empty where none is.
+/// them, every 2 units from each end out to a box's height more, below
+/// E_min first, inside the plot's `area`. Empty where none is.
 fn heights(along: Along, (top, bottom): (f64, f64), half_high: f64, area: PageRect) -> Vec<f64> {
     let every = |from: f64, step: f64, n: usize| (0..n).map(move |k| from + step * k as f64);
     match along {
@@ -679,8 +679,11 @@ fn heights(along: Along, (top, bottom): (f64, f64), half_high: f64, area: PageRe
             let (n, off) = ((half_high as usize) + 1, half_high + 0.5);
             let above = every(top - off, -2.0, n);
             let below = every(bottom + off, 2.0, n);
-            above
-                .chain(below)
+            // Below E_min's end first: above E_max's, beside the circle
+            // at the greatest energy, the value read as that point's
+            // (l = 57.9 r on 4.5 in: the eleventh review).
+            below
+                .chain(above)
                 .filter(|y| y - half_high >= area.y && y + half_high <= area.y + area.height)
                 .collect()
         }
