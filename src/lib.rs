@@ -113,8 +113,8 @@
 //! - `fonts` (default; `png`, `pdf` and `html` need it): the bundled
 //!   faces' files ([`Font::data`]); without it text is measured from the
 //!   glyph table alone.
-//! - `bench` (not default): criterion, for the benchmarks
-//!   (`cargo bench --features bench`); the library does not use it.
+//! - `bench` (not default): criterion, which the benchmarks in `benches/`
+//!   need; the library does not use it.
 //!
 //! [`gallery`] makes every named figure in each format, the tables and an
 //! `index.html` captioning each figure with the seed section it
