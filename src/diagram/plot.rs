@@ -118,6 +118,15 @@ pub struct Plot {
 }
 
 /// What a user can change when a curve reaches the curve engine's limits.
+/// How near (page units) a piece of a curve must start to where the one
+/// before it ended for a dashed curve to run on through it in one subpath:
+/// a dash pattern starts again at each subpath, so pieces shorter than a
+/// dash, one after another (a load curve's 10° pieces where it moves
+/// slowly), would each draw a whole dash and read as a solid line. A
+/// thousandth of a unit, below what the SVG writes (two decimals): pieces
+/// that meet at a kink end and start a little inside it.
+const PIECES_MEET: f64 = 1e-3;
+
 const LIMIT_ADVICE: &str = "a mechanism this close to its limit of assembly (rod = crank + |offset|) changes too fast to draw: give a longer rod or a smaller offset, or data that vary less";
 
 fn too_small(rect: &PageRect) -> Error {
@@ -500,7 +509,14 @@ impl Plot {
                 }
                 e => e,
             })?;
-            subpaths.extend(traced.subpaths().iter().cloned());
+            for sub in traced.subpaths() {
+                match subpaths.last_mut() {
+                    Some(last) if dash != Dash::Solid && runs_on(last, sub) => {
+                        sub.segments().iter().for_each(|s| last.push(*s));
+                    }
+                    _ => subpaths.push(sub.clone()),
+                }
+            }
         }
         let page = super::TracedPath::new(subpaths);
         for sub in page.subpaths() {
@@ -1190,6 +1206,12 @@ fn block_size(lines: &[(RichText, Option<Key>)], font: Font) -> (f64, f64) {
         .fold(0.0, f64::max)
         + 14.0;
     (width, LEGEND_LINE * lines.len() as f64 + 8.0)
+}
+
+/// Whether `next` starts where `last` ends (within [`PIECES_MEET`]), so
+/// that a dashed curve runs on from one into the other.
+fn runs_on(last: &super::Subpath, next: &super::Subpath) -> bool {
+    (next.start() - last.end()).norm() <= PIECES_MEET
 }
 
 #[cfg(test)]

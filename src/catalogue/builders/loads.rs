@@ -871,10 +871,12 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
 }
 
 /// The notes' word on the curves' shapes that a reader might take for
-/// faults: the small loops by 90° at the default (the full curve's *x*
-/// component turns back from −5664 lbf at 62°, by the cut-off, to −4809
-/// lbf at 82° and out to −5412 lbf at 110°, as the analysis of the
-/// default engine at those angles prints) and the dashed curve flat on
-/// the axis at long rods (a massless rod's force lies along the rod,
-/// within φ of the line of stroke).
-const SHAPES: &str = "The small loops of both curves by 90° at the default engine, after the cut-off, are the load itself turning back and out again; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke.";
+/// faults, said of any engine (a figure of another engine does not speak
+/// of the default's): a small loop where the load turns back and out
+/// again (at the default, the full curve's *x* component turns back from
+/// −5664 lbf at 62°, by the cut-off, to −4809 lbf at 82° and out to
+/// −5412 lbf at 110°, as the analysis of the default engine at those
+/// angles prints), and the dashed curve flat on the axis at long rods (a
+/// massless rod's force lies along the rod, within φ of the line of
+/// stroke).
+const SHAPES: &str = "Where the load turns back and out again (after the cut-off) a curve makes a small loop, the load’s own; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke.";
