@@ -6,6 +6,7 @@ mod circle;
 mod clip;
 mod line;
 mod meet_json;
+mod outline;
 mod segment;
 mod side_by_side;
 
@@ -13,6 +14,7 @@ pub use circle::{Circle, CircleIntersection};
 pub use clip::Frame;
 pub use line::{Intersection, Line, PARALLEL_TOLERANCE};
 pub use meet_json::{MeetJson, PointJson};
+pub(crate) use outline::inside_outline;
 pub(crate) use segment::{crossing, point_segment_distance, segment_distance, unit};
 pub(crate) use side_by_side::{side_by_side, side_by_side_ends};
 

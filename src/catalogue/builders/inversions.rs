@@ -19,7 +19,7 @@ use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Figure, Foot, Item, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Intersection, Point, Vector, unit};
+use crate::geom::{Frame, Intersection, Point, Vector, inside_outline, unit};
 use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -594,20 +594,6 @@ const FOOT_CLEAR: f64 = std::f64::consts::FRAC_PI_3;
 /// length (the SVG writer's bearing).
 const FOOT_REACH: (f64, f64) = (20.0, 17.0);
 
-/// Whether the page point `p` lies inside the closed outline `outline`
-/// (even-odd rule); false for an outline of fewer than three points.
-fn within(outline: &[Point], p: Point) -> bool {
-    let mut inside = false;
-    // Each side from its corner to the one before (the last's before the first).
-    let before = outline.iter().cycle().skip(outline.len().saturating_sub(1));
-    for (a, b) in outline.iter().zip(before) {
-        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (b.x - a.x) * (p.y - a.y) / (b.y - a.y) {
-            inside = !inside;
-        }
-    }
-    inside && outline.len() >= 3
-}
-
 /// The outline of the turning frame d with a slot for the block: a bar
 /// `w` wide each side of its middle line (the block's half height, so
 /// that the block fills the slot), from `w` behind its pivot C to its
@@ -741,7 +727,7 @@ impl Drawing {
             let base = at + down * depth;
             [base, base + along * half, base - along * half]
                 .iter()
-                .all(|x| !within(&outline, *x))
+                .all(|x| !inside_outline(&outline, *x))
         };
         let feet = [Foot::Below, Foot::Above, Foot::Left, Foot::Right];
         let score = |f: Foot| (out(f), spread(f));
