@@ -20,7 +20,9 @@ mod transform;
 
 pub use crate::error::is_noncharacter;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
-pub use model::{Align, Dash, Figure, Foot, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize};
+pub use model::{
+    Align, BEARING_FOOT, Dash, Figure, Foot, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize,
+};
 pub use page_length::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use style::Style;

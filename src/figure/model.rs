@@ -161,6 +161,12 @@ pub enum Symbol {
     Cross,
 }
 
+/// A bearing's foot as drawn, page units: the pedestal's depth from the
+/// pin to its foot, and half the foot's length (the hatching stands 6
+/// units beyond the foot). The layout draws it; a builder that keeps
+/// other marks off it reads its reach here.
+pub const BEARING_FOOT: (f64, f64) = (17.0, 17.0);
+
 /// A primitive. Positions are in the panel's world coordinates; sizes of
 /// symbols (pins, arrowheads, hatch strokes, marks, text) are in page units,
 /// The side of its centre a bearing's pedestal and hatched base stand on,

@@ -8,7 +8,7 @@ use super::mark::{PathCommand, PathData};
 use super::markup::{finite, path, polyline_d, unit};
 use super::symbol_sizes::{HATCH_DEPTH, HATCH_SPACING, LETTER_GAP, PIN_RADIUS};
 use super::{Ink, PanelLayout};
-use crate::figure::{Foot, Pen, TextSize};
+use crate::figure::{BEARING_FOOT, Foot, Pen, TextSize};
 use crate::geom::{Point, Vector};
 
 impl PanelLayout<'_> {
@@ -24,7 +24,7 @@ impl PanelLayout<'_> {
         // `d` towards the foot, `s` along it.
         let (d, s) = foot.axes();
         let at = |along: f64, out: f64| c + s * along + d * out;
-        let (h, w, base) = (17.0, 10.0, 17.0);
+        let ((h, base), w) = (BEARING_FOOT, 10.0);
         let tri = [c, at(-w, h), at(w, h)];
         let feet = [at(-base, h), at(base, h)];
         let mut hatch = PathData::new();

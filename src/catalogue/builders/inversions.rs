@@ -18,7 +18,7 @@ use crate::chain::{ChainCentres, Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Figure, Foot, Item, RichText, Role, Shape, TextSize};
+use crate::figure::{BEARING_FOOT, Figure, Foot, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, inside_outline, unit};
 use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
@@ -589,10 +589,10 @@ const FIXED_STROKES: usize = 3;
 /// through O_ab's pedestal near 90° with an offset).
 const FOOT_CLEAR: f64 = std::f64::consts::FRAC_PI_3;
 
-/// The bearing's foot drawn by the writer, page units: its depth from
-/// the pin to the hatched base line with its strokes, and half the base's
-/// length (the SVG writer's bearing).
-const FOOT_REACH: (f64, f64) = (20.0, 17.0);
+/// How far a bearing reaches from its pin, page units: the foot
+/// ([`BEARING_FOOT`], as the layout draws it) and the first 3 units of
+/// its hatching, and half the foot's length.
+const FOOT_REACH: (f64, f64) = (BEARING_FOOT.0 + 3.0, BEARING_FOOT.1);
 
 /// The outline of the turning frame d with a slot for the block: a bar
 /// `w` wide each side of its middle line (the block's half height, so
