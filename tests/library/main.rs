@@ -27,6 +27,7 @@ mod layering;
 mod panic_free;
 mod polygon_letters;
 mod polygons;
+mod python_build;
 mod quick_return;
 mod reading_json;
 mod references;
