@@ -9,10 +9,8 @@
 use crate::py_err;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use slider_crank::chain::{CylindricChain, InvertedChain, QuadricChain, quadric_sweep, slot_sweep};
-use slider_crank::table::{
-    CHAIN_TOLERANCE, chain_check_report, quadric_check_title, slot_check_title,
-};
+use slider_crank::chain::{CylindricChain, InvertedChain, QuadricChain};
+use slider_crank::table::{CheckRequest, CheckRows, DEFAULT_SAMPLES};
 use slider_crank::{Assembly, Inversion, SliderCrank};
 
 fn mechanism(crank: f64, rod: f64, offset: f64) -> PyResult<SliderCrank> {
@@ -72,9 +70,10 @@ type CheckRow = (String, f64, f64, f64, usize, bool);
 
 /// `check --links …` (`links` given) or `check --slot-radius …` (`slot`
 /// = crank, rod, offset, ρ): the report the command prints, whether every
-/// quantity passed, and the rows.
+/// quantity passed, and the rows (the library's request of `check`, as
+/// the command line fills it).
 #[pyfunction]
-#[pyo3(signature = (links=None, slot=None, samples=100_000, tolerance=None,
+#[pyo3(signature = (links=None, slot=None, samples=DEFAULT_SAMPLES, tolerance=None,
     max_cells=slider_crank::table::DEFAULT_MAX_CELLS))]
 fn chain_check(
     py: Python<'_>,
@@ -84,38 +83,30 @@ fn chain_check(
     tolerance: Option<f64>,
     max_cells: u64,
 ) -> PyResult<(String, bool, Vec<CheckRow>)> {
-    let tolerance = crate::check::check_arguments(samples, tolerance, CHAIN_TOLERANCE, max_cells)?;
-    let (title, rows) = match (links, slot) {
-        (Some(links), _) => {
-            let q = quadric(links)?;
-            (
-                quadric_check_title(&q),
-                py.detach(|| quadric_sweep(&q, samples)),
-            )
-        }
+    let mut request = CheckRequest::default();
+    match (links, slot) {
+        (Some(links), _) => request.links = Some(links),
         (None, Some([crank, rod, offset, rho])) => {
-            let s = self::slot(crank, rod, offset, rho)?;
-            let title = slot_check_title(s.mechanism(), rho);
-            (title, py.detach(|| slot_sweep(&s, samples)))
+            (request.crank, request.rod, request.offset) = (Some(crank), Some(rod), Some(offset));
+            request.slot_radius = Some(rho);
         }
         (None, None) => return Err(PyValueError::new_err("chain_check needs links or slot")),
+    }
+    (request.samples, request.tolerance, request.max_cells) = (samples, tolerance, max_cells);
+    let plan = request.plan().map_err(py_err)?;
+    let outcome = py.detach(|| plan.run());
+    let CheckRows::Chain(rows) = &outcome.rows else {
+        unreachable!("a chain's check has a chain's rows")
     };
-    let (text, ok) = chain_check_report(&title, &rows, tolerance);
     let rows = rows
         .iter()
         .map(|r| {
-            let pass = r.passes(tolerance);
-            (
-                r.name.to_string(),
-                r.worst,
-                r.condition,
-                r.at_degrees,
-                r.poses,
-                pass,
-            )
+            let pass = r.passes(outcome.tolerance);
+            let name = r.name.to_string();
+            (name, r.worst, r.condition, r.at_degrees, r.poses, pass)
         })
         .collect();
-    Ok((text, ok, rows))
+    Ok((outcome.text, outcome.passed, rows))
 }
 
 /// Registers the chain's functions.

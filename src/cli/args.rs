@@ -1,8 +1,8 @@
 //! Flags shared by the subcommands and the parsing of angle specifications.
 
 use clap::Args;
-use slider_crank::table::{DEFAULT_MAX_CELLS, MaxCells};
-use slider_crank::{Result, SliderCrank, Unit, Units};
+use slider_crank::table::DEFAULT_MAX_CELLS;
+use slider_crank::{Unit, Units};
 
 /// The mechanism flags. Defaults: the engine of textbook §35 (12 in stroke,
 /// 3 ft rod: r = 0.5 ft, l = 3 ft, in line).
@@ -60,13 +60,6 @@ impl GivenMechanismArgs {
     /// Whether any of the flags was given.
     pub fn given(&self) -> bool {
         self.crank.is_some() || self.rod.is_some() || self.offset.is_some()
-    }
-}
-
-impl MechanismArgs {
-    /// The validated mechanism.
-    pub fn mechanism(&self) -> Result<SliderCrank> {
-        SliderCrank::new(self.crank, self.rod, self.offset)
     }
 }
 
@@ -150,13 +143,6 @@ pub struct GuardArgs {
         allow_hyphen_values = true
     )]
     pub max_cells: u64,
-}
-
-impl GuardArgs {
-    /// The library's bound, set by `--max-cells`.
-    pub fn bound(&self) -> MaxCells {
-        MaxCells::new(self.max_cells)
-    }
 }
 
 pub use slider_crank::lists::{AngleSpec, parse_list};

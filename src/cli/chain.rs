@@ -1,16 +1,10 @@
 //! The chain of Fig. 60 on the command line: the flags `--slot-radius`,
-//! `--links`, `--inversion` of `analyze` (analysed by the library's
-//! request) and `check` for the curved slot and the quadric chain.
+//! `--links`, `--inversion` of `analyze` and `check` (each checked and
+//! run by the library's request of its command).
 
 use clap::{Args, ValueEnum};
 use serde_json::Value;
-use slider_crank::chain::{
-    CylindricChain, InvertedChain, QuadricChain, coriolis_sweep, quadric_sweep, slot_sweep,
-};
-use slider_crank::table::{
-    chain_check_report, coriolis_check_title, quadric_check_title, slot_check_title,
-};
-use slider_crank::{Assembly, Error, Input, Inversion, Result, SliderCrank};
+use slider_crank::{Assembly, Error, Input, Result};
 
 /// The chain flags shared by `analyze` and `check`.
 #[derive(Debug, Clone, Args)]
@@ -80,13 +74,6 @@ impl ChainArgs {
             AssemblyArg::Crossed => Assembly::Crossed,
         }
     }
-
-    fn quadric(&self) -> Result<Option<(QuadricChain, Assembly)>> {
-        match self.links()? {
-            Some([a, b, c, d]) => Ok(Some((QuadricChain::new(a, b, c, d)?, self.assembly()))),
-            None => Ok(None),
-        }
-    }
 }
 
 /// One `key.sub = value` line per number, for the text output.
@@ -104,35 +91,4 @@ pub fn flatten(prefix: &str, v: &Value, out: &mut String) {
         }
         other => out.push_str(&format!("{prefix:<44} {other}\n")),
     }
-}
-
-/// `check` for the chain flags: the report and whether all passed;
-/// `Ok(None)` when no chain flag is given.
-pub fn check(
-    m: SliderCrank,
-    chain: &ChainArgs,
-    samples: usize,
-    tolerance: f64,
-) -> Result<Option<(String, bool)>> {
-    let (title, rows) = if let Some(n) = chain.inversion {
-        let inversion = Inversion::from_number(n)?;
-        if !matches!(inversion, Inversion::Crank | Inversion::Rod) {
-            return Err(Error::invalid(
-                Input::Options,
-                format!(
-                    "check --inversion {n}: only inversions 2 and 3 have polygons of their own (the Coriolis component); every inversion has the engine's relative motion, which check without --inversion covers"
-                ),
-            ));
-        }
-        let chain = InvertedChain::new(m, inversion);
-        (coriolis_check_title(&m, n), coriolis_sweep(&chain, samples))
-    } else if let Some(rho) = chain.slot_radius {
-        let slot = CylindricChain::new(m, rho)?;
-        (slot_check_title(&m, rho), slot_sweep(&slot, samples))
-    } else if let Some((q, _)) = chain.quadric()? {
-        (quadric_check_title(&q), quadric_sweep(&q, samples))
-    } else {
-        return Ok(None);
-    };
-    Ok(Some(chain_check_report(&title, &rows, tolerance)))
 }

@@ -1,24 +1,23 @@
 //! `slider-crank check`: every construction against the analytic core over
 //! the whole turn.
 
-use super::args::{GuardArgs, MechanismArgs};
+use super::args::{GivenMechanismArgs, GuardArgs};
 use super::output::Stdout;
 use clap::Args;
 use slider_crank::Result;
-use slider_crank::construct::{Quantity, sweep};
-use slider_crank::table::{CHAIN_TOLERANCE, DEFAULT_ULPS, check_allowance, engine_check_report};
+use slider_crank::table::{CheckRequest, DEFAULT_SAMPLES};
 
 /// Sweep the whole turn and compare each construction with the analytic core.
 #[derive(Debug, Args)]
 pub struct CheckArgs {
     #[command(flatten)]
-    pub mechanism: MechanismArgs,
+    pub mechanism: GivenMechanismArgs,
     /// Equally spaced poses over the turn, at least 1 (the dead centres
     /// and 0°, 90°, 180° and 270° are always added); poses × the quantities
     /// compared are bounded by --max-cells
     #[arg(
         long,
-        default_value_t = 100_000,
+        default_value_t = DEFAULT_SAMPLES,
         value_name = "N",
         allow_hyphen_values = true
     )]
@@ -38,17 +37,23 @@ pub struct CheckArgs {
 
 /// Runs the check: the report, and whether every quantity passed.
 pub fn run(args: &CheckArgs, stdout: &mut Stdout) -> Result<bool> {
-    let m = args.mechanism.mechanism()?;
-    let tolerance = check_allowance(args.samples, args.tolerance, DEFAULT_ULPS * f64::EPSILON)?;
-    args.guard
-        .bound()
-        .check_poses(args.samples as u64, Quantity::ALL.len())?;
-    let chain_tolerance = args.tolerance.unwrap_or(CHAIN_TOLERANCE);
-    if let Some((text, ok)) = super::chain::check(m, &args.chain, args.samples, chain_tolerance)? {
-        stdout.text(&text)?;
-        return Ok(ok);
-    }
-    let (out, ok) = engine_check_report(&m, &sweep(&m, args.samples), tolerance);
-    stdout.text(&out)?;
-    Ok(ok)
+    let outcome = request(args)?.plan()?.run();
+    stdout.text(&outcome.text)?;
+    Ok(outcome.passed)
+}
+
+/// The request the flags make ([`CheckRequest`]): the links parsed, the
+/// rest as given.
+fn request(args: &CheckArgs) -> Result<CheckRequest> {
+    let mut r = CheckRequest::default();
+    let m = &args.mechanism;
+    (r.crank, r.rod, r.offset) = (m.crank, m.rod, m.offset);
+    (r.samples, r.tolerance) = (args.samples, args.tolerance);
+    let chain = &args.chain;
+    r.slot_radius = chain.slot_radius;
+    r.links = chain.links()?;
+    r.assembly = chain.links.as_ref().map(|_| chain.assembly());
+    r.inversion = chain.inversion;
+    r.max_cells = args.guard.max_cells;
+    Ok(r)
 }

@@ -221,46 +221,18 @@ impl<'a> AnalyzeRequest<'a> {
         }
         self.engine.refuse_pairs()?;
         self.engine.refuse_gravity_alone()?;
-        let chain = [
-            (Field::SlotRadius, self.slot_radius.is_some()),
-            (Field::Links, self.links.is_some()),
-            (Field::Inversion, self.inversion.is_some()),
-        ];
         let lengths = [
             (Field::Crank, self.crank.is_some()),
             (Field::Rod, self.rod.is_some()),
             (Field::Offset, self.offset.is_some()),
         ];
-        let none: &[(Field, bool)] = &[];
-        for (i, &(x, a)) in chain.iter().enumerate() {
-            let with_lengths = if x == Field::Links {
-                &lengths[..]
-            } else {
-                none
-            };
-            for &(y, b) in chain.iter().skip(i + 1).chain(with_lengths) {
-                if a && b {
-                    return Err(Error::refused(
-                        Input::Options,
-                        Wording::default()
-                            .option(x)
-                            .then(" cannot be used with ")
-                            .option(y),
-                    ));
-                }
-            }
-        }
-        if self.assembly.is_some() && self.links.is_none() {
-            return Err(Error::refused(
-                Input::Options,
-                Wording::default()
-                    .option(Field::Assembly)
-                    .then(" is the quadric chain's: give ")
-                    .option(Field::Links)
-                    .then(" with it"),
-            ));
-        }
-        Ok(())
+        refuse_chain_pairs(
+            self.slot_radius.is_some(),
+            self.links.is_some(),
+            self.inversion.is_some(),
+            self.assembly.is_some(),
+            &lengths,
+        )
     }
 
     /// Refuses a torque or the engine's masses with a chain: they apply
@@ -334,6 +306,50 @@ impl<'a> AnalyzeRequest<'a> {
                 .map(Box::new),
         })
     }
+}
+
+/// Refuses the chain fields given together (`slot_radius`, `links`,
+/// `inversion`: one at a time), `links` with one of the engine's
+/// `lengths` given (a quadric chain has its own), and `assembly` without
+/// `links`: the same refusals for `analyze` and `check`.
+pub(super) fn refuse_chain_pairs(
+    slot_radius: bool,
+    links: bool,
+    inversion: bool,
+    assembly: bool,
+    lengths: &[(Field, bool)],
+) -> Result<()> {
+    let chain = [
+        (Field::SlotRadius, slot_radius),
+        (Field::Links, links),
+        (Field::Inversion, inversion),
+    ];
+    let none: &[(Field, bool)] = &[];
+    for (i, &(x, a)) in chain.iter().enumerate() {
+        let with_lengths = if x == Field::Links { lengths } else { none };
+        for &(y, b) in chain.iter().skip(i + 1).chain(with_lengths) {
+            if a && b {
+                return Err(Error::refused(
+                    Input::Options,
+                    Wording::default()
+                        .option(x)
+                        .then(" cannot be used with ")
+                        .option(y),
+                ));
+            }
+        }
+    }
+    if assembly && !links {
+        return Err(Error::refused(
+            Input::Options,
+            Wording::default()
+                .option(Field::Assembly)
+                .then(" is the quadric chain's: give ")
+                .option(Field::Links)
+                .then(" with it"),
+        ));
+    }
+    Ok(())
 }
 
 impl<'a> AnalyzePlan<'a> {

@@ -5,6 +5,7 @@ mod analyze;
 mod balance;
 mod chain_json;
 mod check_report;
+mod check_request;
 mod dynamics;
 mod dynamics_json;
 mod engine;
@@ -36,6 +37,7 @@ pub use chain_json::{
     inversion_json, quadric_check_title, quadric_json, slot_check_title, slot_json,
 };
 pub use check_report::{DEFAULT_ULPS, MAX_TOLERANCE, check_allowance, engine_check_report};
+pub use check_request::{CheckOutcome, CheckPlan, CheckRequest, CheckRows, DEFAULT_SAMPLES};
 pub use dynamics::{dynamics_head, dynamics_row, example_table};
 pub use dynamics_json::{dynamics_json, mass_unit};
 pub use engine::GivenEngine;
