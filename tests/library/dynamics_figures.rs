@@ -2112,3 +2112,166 @@ fn the_crank_pin_loads_quarters_letters_stand_an_em_from_o_and_their_leaders_off
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
 }
+
+/// The crank-pin-load figures of the twelfth review's engines (the
+/// default, r = 1 with l = 2.97, e = −1.2; l = 3.18, e = −1.79; l = 3.83,
+/// e = −1.63; l = 40), on its four page widths: (what, SVG).
+fn twelfth_review_load_figures() -> Vec<(String, String)> {
+    let mut cases = Vec::new();
+    for (r, l, e) in [
+        (0.5, 3.0, 0.0),
+        (1.0, 2.97, -1.2),
+        (1.0, 3.18, -1.79),
+        (1.0, 3.83, -1.63),
+        (1.0, 40.0, 0.0),
+    ] {
+        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
+            cases.push((r, l, e, width));
+        }
+    }
+    common::in_threads(&cases, |&(r, l, e, width)| {
+        let mut o = match width {
+            Some(w) => common::on_page(w, None),
+            None => FigureOptions::default(),
+        };
+        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+        (format!("r {r} l {l} e {e} on {width:?}"), svg)
+    })
+}
+
+/// Whether the segments `a`–`b` and `c`–`d` cross.
+fn segments_cross(a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)) -> bool {
+    let side = |p: (f64, f64), q: (f64, f64), s: (f64, f64)| {
+        (q.0 - p.0) * (s.1 - p.1) - (q.1 - p.1) * (s.0 - p.0)
+    };
+    side(a, b, c) * side(a, b, d) < 0.0 && side(c, d, a) * side(c, d, b) < 0.0
+}
+
+#[test]
+fn the_crank_pin_loads_letters_read_apart_and_a_pairs_each_beyond_its_own_dot() {
+    // The twelfth review: at r = 1, l = 2.97, e = −1.2 on 120 mm, 4.5 in
+    // and 500 units "180°" and "0°" touched, read as "180°0°", their
+    // leaders crossing in an X; at l = 3.18, e = −1.79 "0°′" and "180°′"
+    // named two dots almost on each other and no reader could say which
+    // was which (2 of 5). In every panel and detail: two letters on one line (their boxes
+    // level) stand at least half an em apart; no two leaders cross, and none
+    // runs through another letter; where two lettered dots stand within
+    // three quarters of an em (and apart, farther than a dot's diameter),
+    // each letter (or
+    // its leader's start) lies beyond its own dot, away from the other.
+    let mut wrong = Vec::new();
+    for (case, svg) in twelfth_review_load_figures() {
+        for panel in drawn_load_panels(&svg) {
+            let marks = load_marks(&svg, panel);
+            let mut letters = quarter_letters(&svg, panel);
+            let pole = format!("label-{panel}-pole");
+            if svg.contains(&format!("id=\"{pole}\"")) {
+                letters.push(pole);
+            }
+            let leader_of = |id: &str| {
+                let leader = id.replacen("label-", "leader-", 1);
+                svg.contains(&format!("id=\"{leader}\""))
+                    .then(|| path_numbers(&svg, &leader))
+                    .map(|p| (p[0], p[p.len() - 1]))
+            };
+            for (k, id) in letters.iter().enumerate() {
+                let em = num(&svg, id, "font-size");
+                let b = letter_box(&svg, id);
+                let said = text_content(&svg, id);
+                for other in &letters[k + 1..] {
+                    let o = letter_box(&svg, other);
+                    let level = b.2 < o.3 && o.2 < b.3;
+                    let gap = (b.0 - o.1).max(o.0 - b.1);
+                    if level && gap < 0.5 * em {
+                        let theirs = text_content(&svg, other);
+                        wrong.push(format!(
+                            "{case}: {id} ({said}) {gap:.1} from {other} ({theirs}) on its line"
+                        ));
+                    }
+                }
+                if let Some((a, z)) = leader_of(id) {
+                    for other in letters.iter().filter(|o| *o != id) {
+                        if through(letter_box(&svg, other), a, z) {
+                            wrong.push(format!("{case}: {id}'s leader through {other}"));
+                        }
+                        if let Some((c, d)) = leader_of(other)
+                            && segments_cross(a, z, c, d)
+                        {
+                            wrong.push(format!("{case}: {id}'s leader crosses {other}'s"));
+                        }
+                    }
+                }
+                let Some(own) = marks
+                    .iter()
+                    .find(|m| m.0 == id.replacen("label-", "point-", 1))
+                    .map(|m| m.1)
+                else {
+                    continue;
+                };
+                let led = leader_of(id);
+                for (other, q) in &marks {
+                    let apart = (q.0 - own.0).hypot(q.1 - own.1);
+                    if apart <= 4.0 || id.replacen("label-", "point-", 1) == *other {
+                        continue;
+                    }
+                    let lettered = letters
+                        .iter()
+                        .any(|l| l.replacen("label-", "point-", 1) == *other);
+                    if lettered && apart < 0.75 * em {
+                        // Beyond its own dot, away from the other.
+                        let u = ((own.0 - q.0) / apart, (own.1 - q.1) / apart);
+                        let beyond = match led {
+                            Some((a, _)) => (a.0 - own.0) * u.0 + (a.1 - own.1) * u.1 > 0.0,
+                            None => [(b.0, b.2), (b.1, b.2), (b.0, b.3), (b.1, b.3)]
+                                .iter()
+                                .all(|c| (c.0 - own.0) * u.0 + (c.1 - own.1) * u.1 > -1.0),
+                        };
+                        if !beyond {
+                            wrong.push(format!(
+                                "{case}: {id} ({said}) not beyond its dot from {other}, {apart:.1} away"
+                            ));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_crank_pin_loads_two_curves_jumps_never_run_on_one_line() {
+    // The twelfth review: at long rods (l = 40 r) both curves jump along
+    // the x axis at the dead centres, one dotted line after the other
+    // through 0°′, 180°′ and 0°, and a reader could not tell which jump
+    // joins which dots. Where the full curve's jump and the dashed
+    // curve's would lie on one line (each end of the dashed one within 2
+    // units of the full one's line), the dashed one is not straight.
+    let mut wrong = Vec::new();
+    for (case, svg) in twelfth_review_load_figures() {
+        for panel in drawn_load_panels(&svg) {
+            for deg in [0, 180, 360, 540] {
+                let (full, dashed) = (
+                    format!("jump-{panel}-with-rod-{deg}"),
+                    format!("jump-{panel}-without-rod-{deg}"),
+                );
+                if attr(&svg, &full, "d").is_none() || attr(&svg, &dashed, "d").is_none() {
+                    continue;
+                }
+                let f = path_numbers(&svg, &full);
+                let d = path_numbers(&svg, &dashed);
+                let (a, b) = (f[0], f[f.len() - 1]);
+                let len = (b.0 - a.0).hypot(b.1 - a.1);
+                let off = |p: (f64, f64)| {
+                    ((b.0 - a.0) * (p.1 - a.1) - (b.1 - a.1) * (p.0 - a.0)).abs() / len
+                };
+                let straight = d.len() == 2;
+                if len > 0.0 && straight && off(d[0]) < 2.0 && off(d[1]) < 2.0 {
+                    wrong.push(format!("{case}: {dashed} on the line of {full}"));
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}

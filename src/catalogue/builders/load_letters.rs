@@ -64,17 +64,67 @@ const ONE_PLACE: f64 = 4.0;
 /// engine: the eleventh review).
 const POLE_LETTER_ROOM: f64 = 1.2;
 
+/// Room between two letters on one line (their boxes level), in ems: a
+/// word space and more, so that two letters side by side read as two
+/// ("180°" and "0°" a unit apart read as "180°0°" at r = 1, l = 2.97 r,
+/// e = −1.2 r on 4.5 in: the twelfth review).
+const LINE_ROOM: f64 = 0.6;
+
+/// Dots nearer each other than this, in ems, but not one place, are a
+/// pair: each one's letter stands beyond its own dot, away from the
+/// other, so that no reader takes it for the other's ("0°′" and "180°′"
+/// on dots 5 units apart, stacked on one side, at r = 1, l = 3.18 r,
+/// e = −1.79 r: the twelfth review).
+const PAIR: f64 = 0.75;
+
+/// The twelfth review's rules a place keeps, beyond the room every
+/// letter keeps.
+#[derive(Clone, Copy)]
+struct Rules {
+    /// A pair's letters each beyond its own dot ([`PAIR`]).
+    pairs: bool,
+    /// [`LINE_ROOM`] from a letter on its line, and clear of the leaders.
+    lines: bool,
+}
+
+impl Rules {
+    /// Only the room every letter keeps.
+    const NONE: Self = Self {
+        pairs: false,
+        lines: false,
+    };
+    /// A pair's letters beyond their dots.
+    const PAIRS: Self = Self {
+        pairs: true,
+        lines: false,
+    };
+    /// Letters on a line apart and clear of the leaders.
+    const LINES: Self = Self {
+        pairs: false,
+        lines: true,
+    };
+    /// Both.
+    const ALL: Self = Self {
+        pairs: true,
+        lines: true,
+    };
+}
+
 /// The letters set so far in a panel and what each later letter keeps
 /// clear of.
 pub(super) struct Letters {
     /// Both curves as world segments (their jumps' dotted lines within
     /// the cycle too).
     curves: Vec<(Point, Point)>,
-    /// The dotted lines of the jumps at the cycle's start and end: kept
-    /// clear of by letters, crossed by leaders as a curve is not.
+    /// The dotted lines of the jumps at the cycle's start and end, and
+    /// the sides of a detail's box ([`Letters::keep_off`]): kept clear of
+    /// by letters, crossed by leaders as a curve is not.
     jumps: Vec<(Point, Point)>,
     /// The boxes of the letters set so far: world centre and half-size.
     boxes: Vec<(Point, Vector)>,
+    /// The leaders set so far (world): kept clear of by letters, and
+    /// crossed by no later leader.
+    leaders: Vec<(Point, Point)>,
     /// The pole's letter's box, where it is set (the first letter set).
     pole: Option<Boxed>,
     /// Page units to the world unit.
@@ -120,6 +170,7 @@ impl Letters {
             curves,
             jumps,
             boxes: Vec::new(),
+            leaders: Vec::new(),
             pole: None,
             scale: map.scale(),
             map,
@@ -129,25 +180,39 @@ impl Letters {
         }
     }
 
+    /// Keeps every letter set after this clear of the `lines` (world) as
+    /// of the dotted jumps, which leaders may cross: the sides of the box
+    /// about the region a detail enlarges.
+    pub(super) fn keep_off(&mut self, lines: &[(Point, Point)]) {
+        self.jumps.extend_from_slice(lines);
+    }
+
     /// The letter `text` of the dot `from`, `id`, set by the figure where
     /// it stands clear nearest its point: on the first ring with a clear
     /// side, the side with the most room; the box recorded for the
     /// letters after it. `None` where no ring within [`RINGS`] has one
     /// ([`Letters::led`] then sets it farther out). `dots` are the other
-    /// points drawn (the pole first).
+    /// points drawn (the pole first). `strict`, it keeps the twelfth
+    /// review's rules too: beyond its dot, away from the other, where two
+    /// dots are a pair ([`PAIR`]); [`LINE_ROOM`] from a letter on its
+    /// line; clear of the leaders set. A letter with no such side is led
+    /// ([`Letters::led`], which prefers places keeping them), and only
+    /// where no place is clear set beside its dot without them.
     pub(super) fn beside(
         &mut self,
         from: Point,
         text: RichText,
         dots: &[Point],
         id: String,
+        strict: bool,
     ) -> Option<Item> {
         let half = self.half(&text);
         let curves = self.curves_near(from, half, *RINGS.last().unwrap_or(&0.0));
         let b = RINGS.iter().find_map(|&ring| {
             (directions().filter_map(|u| {
                 let b = (self.centre(from, u, half, ring), half);
-                self.room(b, from, (&curves, dots), false)
+                let rules = if strict { Rules::ALL } else { Rules::NONE };
+                self.room(b, from, (&curves, dots), false, rules)
                     .map(|room| (b, room))
             }))
             .max_by(|a, b| a.1.total_cmp(&b.1))
@@ -169,9 +234,12 @@ impl Letters {
         (id, leader_id): (String, String),
     ) -> Vec<Item> {
         let o = Point::origin();
-        let items = match self.beside(o, text.clone(), dots, id.clone()) {
+        let items = match self.beside(o, text.clone(), dots, id.clone(), true) {
             Some(item) => vec![item],
-            None => (self.led(o, text, dots, (id, leader_id))).map_or_else(Vec::new, Vec::from),
+            None => match self.led(o, text.clone(), dots, (id.clone(), leader_id)) {
+                Some(led) => Vec::from(led),
+                None => self.beside(o, text, dots, id, false).into_iter().collect(),
+            },
         };
         if !items.is_empty() {
             self.pole = self.boxes.last().copied();
@@ -199,8 +267,12 @@ impl Letters {
 
     /// The letter `text` of the dot `from` set by the figure where no
     /// near side is clear ([`Letters::side`]): on the nearest of
-    /// [`FAR_RINGS`] with a clear place, the place whose leader crosses
-    /// the fewest lines of the curves, then with the most room, and a
+    /// [`FAR_RINGS`] with a clear place, the place first that keeps a
+    /// pair's letters beyond their dots ([`PAIR`]) with a leader crossing
+    /// no leader set and running through no letter (either misleads:
+    /// which dot is named), then whose leader crosses the fewest lines of
+    /// the curves, then keeping [`LINE_ROOM`] and clear of the leaders,
+    /// then on the nearest ring, then with the most room, and a
     /// leader from its box to [`LEADER_SHORT`] short of the dot: the
     /// text `id` and the leader `leader_id`; `None` where no place within
     /// three ems is clear. The box is recorded for the letters after it.
@@ -218,22 +290,26 @@ impl Letters {
         // crossed a curve where a ring farther out had a place crossing
         // none (the offset engine r = 1, l = 3.83, e = −1.63: the
         // eleventh review).
-        let (b, _, _, _) = (FAR_RINGS.iter().enumerate())
+        let (b, _, _) = (FAR_RINGS.iter().enumerate())
             .flat_map(|(k, &ring)| {
                 let (this, curves) = (&*self, &curves);
                 directions().filter_map(move |u| {
                     let b = (this.centre(from, u, half, ring), half);
-                    let room = this.room(b, from, (curves, dots), true)?;
-                    let (a, _) = this.leader(b, from);
+                    let (a, end) = this.leader(b, from);
+                    let room = this.room(b, from, (curves, dots), true, Rules::NONE)?;
+                    let keeps = |rules| this.room(b, from, (curves, dots), true, rules).is_some();
+                    let misleads = !keeps(Rules::PAIRS) || this.leader_blocked(a, end);
+                    let crowds = !keeps(Rules::LINES);
                     let crossed = (curves.iter())
                         .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
                         .count();
-                    Some((b, crossed, k, room))
+                    Some((b, (misleads, crossed, crowds, k), room))
                 })
             })
-            .min_by(|a, b| (a.1, a.2).cmp(&(b.1, b.2)).then(b.3.total_cmp(&a.3)))?;
+            .min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2)))?;
         self.boxes.push(b);
         let (a, end) = self.leader(b, from);
+        self.leaders.push((a, end));
         Some([
             self.text(b, text, id),
             Item::new(
@@ -307,6 +383,7 @@ impl Letters {
         from: Point,
         (curves, dots): (&[(Point, Point)], &[Point]),
         led: bool,
+        rules: Rules,
     ) -> Option<f64> {
         let s = self.scale;
         let own = to_box(b, from);
@@ -315,6 +392,9 @@ impl Letters {
         }
         let mut least = self.size;
         for (k, q) in dots.iter().enumerate() {
+            if rules.pairs && k > 0 && !self.beyond(b, from, *q, led) {
+                return None;
+            }
             if !led && (*q - from).norm() * s < ONE_PLACE {
                 continue;
             }
@@ -325,12 +405,40 @@ impl Letters {
             }
             least = least.min(d * s - keep);
         }
-        self.clear(b, curves).map(|room| room.min(least))
+        self.clear(b, curves, rules.lines)
+            .map(|room| room.min(least))
+    }
+
+    /// Whether the box `b` of the letter of `from` (or, `led`, its
+    /// leader's start) stands beyond `from` away from the dot `q` where
+    /// the two are a pair ([`PAIR`]); true where they are not.
+    fn beyond(&self, b: Boxed, from: Point, q: Point, led: bool) -> bool {
+        let apart = (from - q).norm() * self.scale;
+        if !(ONE_PLACE..PAIR * self.size).contains(&apart) {
+            return true;
+        }
+        let u = (from - q).normalize();
+        if led {
+            let (a, _) = self.leader(b, from);
+            return (a - from).dot(&u) > 0.0;
+        }
+        let (c, h) = b;
+        let nearest = (c - from).dot(&u) - h.x * u.x.abs() - h.y * u.y.abs();
+        nearest >= 0.0
+    }
+
+    /// Whether a leader from `a` to `end` (world) would cross a leader set
+    /// before it or run through a letter set before it (two leaders
+    /// crossed in an X at r = 1, l = 2.97 r, e = −1.2 r: the twelfth
+    /// review).
+    fn leader_blocked(&self, a: Point, end: Point) -> bool {
+        (self.leaders.iter()).any(|(p, q)| crossing(a, end, *p, *q).is_some())
+            || (self.boxes.iter()).any(|o| segment_to_box(*o, a, end) == 0.0)
     }
 
     /// The least room, page units, between the box `b` and the curves and
     /// the letters set, capped at an em; `None` where it meets one.
-    fn clear(&self, b: Boxed, curves: &[(Point, Point)]) -> Option<f64> {
+    fn clear(&self, b: Boxed, curves: &[(Point, Point)], lines: bool) -> Option<f64> {
         let s = self.scale;
         let (c, h) = b;
         let (lo, hi) = (self.inside.min(), self.inside.max());
@@ -345,9 +453,18 @@ impl Letters {
             }
             least = least.min(d - ROOM);
         }
+        for (p, q) in self.leaders.iter().filter(|_| lines) {
+            let d = segment_to_box(b, *p, *q) * s;
+            if d < ROOM {
+                return None;
+            }
+            least = least.min(d - ROOM);
+        }
         for o in &self.boxes {
             let keep = if Some(*o) == self.pole {
                 POLE_LETTER_ROOM * self.size
+            } else if lines && level(b, *o) {
+                LINE_ROOM * self.size
             } else {
                 ROOM
             };
@@ -392,6 +509,11 @@ fn segment_to_box(b: Boxed, p: Point, q: Point) -> f64 {
     (corners.iter().zip(corners.iter().cycle().skip(1)))
         .map(|(a, b)| segment_distance(*a, *b, p, q))
         .fold(f64::INFINITY, f64::min)
+}
+
+/// Whether two boxes are level: on one line, their heights overlapping.
+fn level((a, ha): Boxed, (b, hb): Boxed) -> bool {
+    (a.y - b.y).abs() < ha.y + hb.y
 }
 
 /// The gap between two boxes (0 where they meet).

@@ -25,7 +25,7 @@ use crate::diagram::{Curve, Plot};
 use crate::dynamics::{EXAMPLE_MASS, Engine, RodMass, TurningMoment};
 use crate::error::{Error, Field, Input, Result, Wording};
 use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
-use crate::geom::{Frame, Point, Vector};
+use crate::geom::{Frame, Point, Vector, cross, perp, unit};
 
 /// The illustrative rod's mass per unit reciprocating mass.
 pub(crate) const ROD_MASS: f64 = 0.6;
@@ -77,6 +77,19 @@ const CROWD: f64 = 30.0;
 /// How many lettered marks within [`CROWD`] of the pole crowd it (with
 /// the pole's own letter, three letters in two ems).
 const CROWDED: usize = 2;
+
+/// A lettered mark this near the pole, page units, stands on its ×
+/// (a dot's diameter): the pole is crowded by it and by the lettered
+/// marks within [`ON_POLE_CROWD`] times [`CROWD`]. At r = 1, l = 2.97 r,
+/// e = −1.2 r the dashed 270° lay on the × and 0°′ and 270° 32 units off
+/// on the default page, just beyond [`CROWD`]: their letters led across
+/// the curves in a tangle, while narrower pages, where the three stood
+/// within it, enlarged them in a detail (the twelfth review).
+const ON_POLE: f64 = 4.2;
+
+/// How much farther than [`CROWD`] the marks crowd a pole a mark stands
+/// on ([`ON_POLE`]).
+const ON_POLE_CROWD: f64 = 1.5;
 
 /// Room about the crowded marks in the region a detail enlarges, page
 /// units of the panel: room for their letters.
@@ -426,17 +439,25 @@ struct Window {
 /// The window about the pole of a panel at `scale` page units to the
 /// force whose marks are `taken`, for a detail of `size` (page units,
 /// its caption included): where [`CROWDED`] lettered marks or more lie
-/// within [`CROWD`] of the pole, the box holding them and the pole and
+/// within [`CROWD`] of the pole (or, one on the pole, [`ON_POLE`], within
+/// [`ON_POLE_CROWD`] times that), the box holding them and the pole and
 /// [`WINDOW_MARGIN`] more, enlarged to fill the detail at a round
 /// magnification (at least [`LEAST_MAGNIFICATION`]) about its middle;
 /// none where the pole is not crowded or the detail would enlarge it
 /// less.
 fn window(taken: &[Mark], scale: f64, size: (f64, f64)) -> Option<Window> {
-    let crowd: Vec<Point> = (taken.iter())
-        .filter(|t| !t.3.is_empty())
-        .map(|t| t.2)
-        .filter(|p| (*p - Point::origin()).norm() * scale < CROWD)
-        .collect();
+    let within = |reach: f64| -> Vec<Point> {
+        (taken.iter())
+            .filter(|t| !t.3.is_empty())
+            .map(|t| t.2)
+            .filter(|p| (*p - Point::origin()).norm() * scale < reach)
+            .collect()
+    };
+    let crowd = match within(CROWD) {
+        near if near.len() >= CROWDED => near,
+        _ if !within(ON_POLE).is_empty() => within(ON_POLE_CROWD * CROWD),
+        _ => return None,
+    };
     if crowd.len() < CROWDED {
         return None;
     }
@@ -537,6 +558,11 @@ fn polar_plot(
     };
     let mut plot =
         Plot::world(&name, rect, world, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
+    // The full curve's jumps, which the dashed curve's keep off.
+    let full_jumps: Vec<(Point, Point)> = (jumps(engines[0], relative, kinks, cycle).into_iter())
+        .map(|(_, a, b)| (a, b))
+        .collect();
+    let mut bowed = Vec::new();
     for (engine, id, dash) in [
         (engines[0], CURVES[0], Dash::Solid),
         (engines[1], CURVES[1], Dash::Dashed),
@@ -555,12 +581,15 @@ fn polar_plot(
         // curve-tolerance test, as every curve-* is.
         plot.curve(&format!("curve-{name}-{id}"), &traced, dash, None)?;
         for (deg, from, to) in jumps(engine, relative, kinks, cycle) {
+            let path = jump_path((from, to), &full_jumps, plot.map().scale(), dash);
+            let values: Vec<(f64, f64)> = path.iter().map(|p| (p.x, p.y)).collect();
             plot.line(
                 &format!("jump-{name}-{id}-{deg}"),
-                &[(from.x, from.y), (to.x, to.y)],
+                &values,
                 Dash::Dotted,
                 None,
             );
+            bowed.extend(path.iter().zip(path.iter().skip(1)).map(|(a, b)| (*a, *b)));
         }
     }
     let scale = plot.map().scale();
@@ -611,6 +640,13 @@ fn polar_plot(
     };
     let inside = Frame::new(Point::new(lo.x, floor), hi);
     let mut letters = Letters::new(ctx, sampled, *plot.map(), inside);
+    if let Some(w) = window {
+        // Its box's sides kept clear of, as the dotted jumps are: "180°"
+        // on the box's lower side at r = 1, l = 3.18 r, e = −1.79 r on
+        // 120 mm (the twelfth review).
+        letters.keep_off(&box_sides(&w.region, &seen));
+    }
+    letters.keep_off(&bowed);
     if here(Point::origin()) {
         let pole = RichText::parse("*O*");
         let dots: Vec<Point> = taken.iter().map(|t| t.2).collect();
@@ -671,6 +707,15 @@ fn window_box(id: &str, region: &Frame, seen: &Frame, inset: f64) -> Item {
     )
 }
 
+/// The four sides (world) of the box about `region` kept inside `seen`,
+/// as [`window_box`] draws it.
+fn box_sides(region: &Frame, seen: &Frame) -> [(Point, Point); 4] {
+    let lo = region.min().sup(&seen.min());
+    let hi = region.max().inf(&seen.max());
+    let [a, b, c, d] = [lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)];
+    [(a, b), (b, c), (c, d), (d, a)]
+}
+
 /// How far inside its clipped area a detail's border is drawn, page
 /// units: half its line's width, so that it is drawn whole.
 const BORDER_INSET: f64 = 0.5;
@@ -694,6 +739,50 @@ fn jumps(engine: &Engine, relative: bool, kinks: &[f64], cycle: f64) -> Vec<(f64
             );
             ((a - b).norm() > 1e-6 * a.norm().max(b.norm()))
                 .then(|| (k, Point::origin() + a, Point::origin() + b))
+        })
+        .collect()
+}
+
+/// How far the dashed curve's jump bows off the full curve's where the
+/// two would run on each other, page units: at long rods both jump along
+/// the *x* axis at the dead centres, one after the other, and one dotted
+/// line through four dots could not say which jump joins which (the
+/// twelfth review).
+const JUMP_BOW: f64 = 7.0;
+
+/// Jumps whose ends lie nearer each other's line than this, page units,
+/// run on each other: on one line, overlapping or one after the other,
+/// they read as one dotted line through all their dots.
+const JUMPS_MEET: f64 = 2.0;
+
+/// The points (world) of the jump `from`–`to` of the curve drawn `dash`:
+/// the straight line, or for the dashed curve where it runs on one of
+/// the line of one of `full`'s jumps ([`JUMPS_MEET`] at `scale` page
+/// units to the world unit), an arc through its ends bowed [`JUMP_BOW`] to the left of its
+/// way (a jump is no path of the load, only where its curve goes on).
+fn jump_path(
+    (from, to): (Point, Point),
+    full: &[(Point, Point)],
+    scale: f64,
+    dash: Dash,
+) -> Vec<Point> {
+    let along = to - from;
+    let runs_on = |&(a, b): &(Point, Point)| {
+        let Some(u) = unit(b - a) else {
+            return false;
+        };
+        let off = |p: Point| cross(&(p - a), &u).abs() * scale;
+        off(from) < JUMPS_MEET && off(to) < JUMPS_MEET
+    };
+    if dash == Dash::Solid || along.norm() == 0.0 || !full.iter().any(runs_on) {
+        return vec![from, to];
+    }
+    let normal = perp(&along) / along.norm();
+    let bow = JUMP_BOW / scale;
+    (0..=16)
+        .map(|k| {
+            let t = f64::from(k) / 16.0;
+            from + along * t + normal * (4.0 * bow * t * (1.0 - t))
         })
         .collect()
 }
@@ -814,7 +903,7 @@ fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
             .join(", ");
         let text = RichText::parse(&text);
         let id = format!("label-{name}-{c}-{d}");
-        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone()) {
+        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), true) {
             items.push(beside);
             continue;
         }
@@ -823,6 +912,12 @@ fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
         let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
         if let Some(led) = letters.led(*p, text.clone(), &others, ids) {
             items.extend(led);
+            continue;
+        }
+        // No place within three ems keeps the room a leader needs: beside
+        // its dot after all, without the pairs' and lines' rules.
+        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), false) {
+            items.push(beside);
             continue;
         }
         items.push(Item::new(
@@ -878,5 +973,10 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
 /// −5412 lbf at 110°, as the analysis of the default engine at those
 /// angles prints), and the dashed curve flat on the axis at long rods (a
 /// massless rod's force lies along the rod, within φ of the line of
-/// stroke).
-const SHAPES: &str = "Where the load turns back and out again (after the cut-off) a curve makes a small loop, the load’s own; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke.";
+/// stroke); and the corners of the curves where the gas force is an
+/// indicator diagram's: its pressures are joined by straight lines
+/// between its rows (every 5 % of the stroke in the example), so the
+/// load turns a corner at each (the twelfth review took the small
+/// loops' corners for chords of too coarse a tracing; with a constant
+/// gas force the same loops are smooth).
+const SHAPES: &str = "Where the load turns back and out again (after the cut-off) a curve makes a small loop, the load’s own; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke. Where the gas force is an indicator diagram’s, its pressure runs straight between the diagram’s rows and the curves turn a corner at each, the data’s, not the drawing’s.";
