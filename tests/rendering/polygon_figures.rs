@@ -1210,6 +1210,9 @@ fn a_side_on_another_s_line_is_set_beside_it_parallel() {
         let drawn = (to.1 - from.1).atan2(to.0 - from.0);
         let true_ = (q.1 - c.1).atan2(q.0 - c.0);
         let off = (drawn - true_).sin().abs().asin().to_degrees();
-        assert!(off < 0.5, "l = {rod} r, {deg}°: cq drawn {off:.1}° off c → q");
+        assert!(
+            off < 0.5,
+            "l = {rod} r, {deg}°: cq drawn {off:.1}° off c → q"
+        );
     }
 }
