@@ -1138,6 +1138,13 @@ fn segments_apart(a: ((f64, f64), (f64, f64)), b: ((f64, f64), (f64, f64))) -> f
     .fold(f64::INFINITY, f64::min)
 }
 
+/// The page distance between the sides `ids` of the figure `name` of the
+/// engine r = 1, l = `rod` at `deg` (its details' sides read too).
+fn sides_apart(name: FigureName, (rod, deg): (f64, f64), ids: (&str, &str)) -> f64 {
+    let all = sides(&svg(name, rod, 0.0, deg), true);
+    segments_apart(drawn_side(&all, ids.0), drawn_side(&all, ids.1))
+}
+
 /// The side `id` of `sides` as drawn.
 fn drawn_side(sides: &[Side], id: &str) -> ((f64, f64), (f64, f64)) {
     let s = (sides.iter())
@@ -1161,13 +1168,11 @@ fn a_side_set_beside_another_starts_clear_of_the_side_before_it() {
         (1.07, 89.54),
         (1.04, 270.22),
     ] {
-        let svg = svg(FigureName::CoriolisInversion2, rod, 0.0, deg);
-        let all = sides(&svg, false);
-        let (tangential, normal) = (
-            drawn_side(&all, "acceleration-nad"),
-            drawn_side(&all, "acceleration-on"),
+        let apart = sides_apart(
+            FigureName::CoriolisInversion2,
+            (rod, deg),
+            ("acceleration-nad", "acceleration-on"),
         );
-        let apart = segments_apart(tangential, normal);
         assert!(
             apart >= 3.0,
             "l = {rod} r, {deg}°: n a′_d {apart:.1} units from o′n"
@@ -1182,13 +1187,11 @@ fn a_side_set_beside_the_coriolis_component_keeps_off_the_sliding_one() {
     // polygon's detail on the side of a′_d, so it ran between k and a′_d
     // across the sliding acceleration and its right-angle mark.
     for (rod, deg) in [(1.08, 270.65), (1.06, 89.55), (1.06, 270.39)] {
-        let svg = svg(FigureName::CoriolisInversion3, rod, 0.0, deg);
-        let all = sides(&svg, true);
-        let (crank, sliding) = (
-            drawn_side(&all, "detail-acceleration-oc"),
-            drawn_side(&all, "detail-acceleration-kad"),
+        let apart = sides_apart(
+            FigureName::CoriolisInversion3,
+            (rod, deg),
+            ("detail-acceleration-oc", "detail-acceleration-kad"),
         );
-        let apart = segments_apart(crank, sliding);
         assert!(
             apart >= 3.0,
             "l = {rod} r, {deg}°: o′c′ {apart:.1} units from k a′_d"
