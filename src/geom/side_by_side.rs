@@ -4,7 +4,7 @@
 //! head at either end), and a book draws each beside the other, a few
 //! units apart, so that each arrow is its own.
 
-use super::{Point, Vector, cross, point_segment_distance};
+use super::{Point, Vector, cross, point_segment_distance, segment_distance};
 
 /// The sine of the angle under which two sides may run over each other
 /// (about 6°).
@@ -45,7 +45,7 @@ fn set_beside(sides: &[(Point, Point)], apart: f64, turn: bool) -> Vec<(Vector, 
     let mut drawn: Vec<(Point, Point)> = Vec::new();
     let mut offsets = Vec::new();
     let zero = Vector::zeros();
-    for &(from, to) in sides {
+    for (i, &(from, to)) in sides.iter().enumerate() {
         let d = to - from;
         let length = d.norm();
         if !(length > apart && apart > 0.0) {
@@ -57,28 +57,86 @@ fn set_beside(sides: &[(Point, Point)], apart: f64, turn: bool) -> Vec<(Vector, 
             let moved = (from + t, to + h);
             !(drawn.iter()).any(|s| runs_over(moved, *s, apart) || runs_over(*s, moved, apart))
         };
-        // In place, else moved whole to the first side clear, once or
-        // twice as far; with `turn`, moved once, turned about its head
-        // instead where that is clear too (it takes the place it would
-        // take moved whole, and leaves the others theirs), or turned to
-        // either side where it cannot be moved once.
-        let once = [1.0, -1.0].map(|k| across * (k * apart));
-        let twice = [2.0, -2.0].map(|k| across * (k * apart));
+        // The sides a moved one may touch: those drawn where drawn, the
+        // rest where they stand.
+        let others: Vec<(Point, Point)> = (drawn.iter().copied())
+            .chain(sides.iter().skip(i + 1).copied())
+            .collect();
+        let touched = |(t, h): &(Vector, Vector)| touches((from + t, to + h), &others, apart);
+        // In place, else moved whole to the first place clear, once, one
+        // and a half times or twice as far to either side, those that
+        // touch fewer of the others first (else left before right, nearer
+        // before farther: a side not quite on the other's line, moved
+        // once away from it, may still run within `apart` of it); with
+        // `turn`, moved once, turned about its head instead where that is
+        // clear too (it takes the place it would take moved whole, and
+        // leaves the others theirs) and the side leaves the one it runs
+        // over at an angle (on one line, turned, it would be drawn
+        // slanted across it), or turned to either side where it cannot
+        // be moved once.
+        let mut places: Vec<Vector> = [1.0, 1.5, 2.0]
+            .iter()
+            .flat_map(|m| [across * (m * apart), across * (-m * apart)])
+            .collect();
+        places.sort_by_key(|o| touched(&(*o, *o)));
+        let once: Vec<Vector> = (places.iter().copied())
+            .filter(|o| (o.norm() - apart).abs() <= 1e-9 * apart)
+            .collect();
         let slot = once.iter().find(|o| clear((**o, **o)));
-        let turned: Vec<(Vector, Vector)> = match (turn, slot) {
+        let turnable = turn && !on_a_line((from, to), &drawn, apart);
+        let turned: Vec<(Vector, Vector)> = match (turnable, slot) {
             (false, _) => Vec::new(),
             (true, Some(o)) => vec![(*o, zero)],
             (true, None) => once.iter().map(|o| (*o, zero)).collect(),
         };
         let offset = std::iter::once((zero, zero))
             .chain(turned)
-            .chain(once.iter().chain(&twice).map(|o| (*o, *o)))
+            .chain(places.iter().map(|o| (*o, *o)))
             .find(|o| clear(*o))
             .unwrap_or((zero, zero));
         drawn.push((from + offset.0, to + offset.1));
         offsets.push(offset);
     }
     offsets
+}
+
+/// How many of `others` the side `moved` (set beside its place) touches:
+/// comes within [`TOUCH`] of `apart` of without running over it (a side
+/// it runs over is one it is set beside). Moved towards the side that
+/// meets it at its tail, a side starts on that side, not at its point
+/// (inversion 2 at l = 1.02 r, 90°: n a′_d, on the Coriolis component's
+/// line, moved towards o′ started 7 units down o′n, under the right-angle
+/// mark at n); moved across a short side, it cuts it (inversion 3 at
+/// l = 1.08 r, 270.65°: o′c′, beside the Coriolis component o′k, ran
+/// between k and a′_d in the ×10 detail).
+fn touches(moved: (Point, Point), others: &[(Point, Point)], apart: f64) -> usize {
+    (others.iter())
+        .filter(|s| s.0 != s.1)
+        .filter(|s| !(runs_over(moved, **s, apart) || runs_over(**s, moved, apart)))
+        .filter(|s| segment_distance(moved.0, moved.1, s.0, s.1) < TOUCH * apart)
+        .count()
+}
+
+/// The share of `apart` within which a side set beside its place touches
+/// another ([`touches`]).
+const TOUCH: f64 = 0.5;
+
+/// Whether `side` runs over one of `drawn` whose line holds its head
+/// (within [`TOUCH`] of `apart`): the two lie on one line (the engine's
+/// velocity polygon at l = 1.09 r, 0°: cq along cb, q its middle), and
+/// turned about its head it would be drawn slanted across the other, a
+/// direction it does not have.
+fn on_a_line(side: (Point, Point), drawn: &[(Point, Point)], apart: f64) -> bool {
+    (drawn.iter()).any(|s| {
+        let along = s.1 - s.0;
+        let n = along.norm();
+        let off = if n > 0.0 {
+            cross(&along, &(side.1 - s.0)).abs() / n
+        } else {
+            f64::INFINITY
+        };
+        (runs_over(side, *s, apart) || runs_over(*s, side, apart)) && off < TOUCH * apart
+    })
 }
 
 /// Whether the side `a` runs over the side `b`: at less than [`PARALLEL`]
@@ -156,5 +214,33 @@ mod tests {
         let o = side_by_side_ends(&folded, 0.5);
         assert_eq!(o[1].0, o[1].1);
         assert!((o[1].1.norm() - 0.5).abs() < 1e-12);
+    }
+    #[test]
+    fn a_side_is_set_beside_another_away_from_the_side_at_its_tail() {
+        let p = |x, y| Point::new(x, y);
+        // The second runs back over the first from its middle, where the
+        // third arrives from below: set beside it below, it would start on
+        // the third; it goes above.
+        let sides = [
+            (p(0.0, 0.0), p(10.0, 0.0)),
+            (p(5.0, -3.0), p(5.0, 0.0)),
+            (p(5.0, 0.0), p(0.0, 0.0)),
+        ];
+        let o = side_by_side(&sides, 0.5);
+        assert!(o[2].y > 0.0 && o[2].x.abs() < 1e-12, "{:?}", o[2]);
+        // Its left is below: with no side at its tail it goes there.
+        let free = [sides[0], sides[2]];
+        assert!(side_by_side(&free, 0.5)[1].y < 0.0);
+    }
+
+    #[test]
+    fn a_side_on_another_s_line_is_moved_whole_not_turned() {
+        let p = |x, y| Point::new(x, y);
+        // The second lies along the first to its middle: turned about its
+        // head it would be drawn slanted; it is moved whole.
+        let sides = [(p(0.0, 0.0), p(0.0, 10.0)), (p(0.0, 0.0), p(0.0, 5.0))];
+        let o = side_by_side_ends(&sides, 0.5);
+        assert_eq!(o[1].0, o[1].1);
+        assert!((o[1].0.norm() - 0.5).abs() < 1e-12);
     }
 }

@@ -1117,3 +1117,105 @@ fn a_letter_set_away_from_a_near_point_stays_by_its_own() {
         "n's letter nearer a′_d"
     );
 }
+
+/// The distance between the segments `a` and `b` (0 where they cross).
+fn segments_apart(a: ((f64, f64), (f64, f64)), b: ((f64, f64), (f64, f64))) -> f64 {
+    let side = |p: (f64, f64), q: (f64, f64), r: (f64, f64)| {
+        (q.0 - p.0) * (r.1 - p.1) - (q.1 - p.1) * (r.0 - p.0)
+    };
+    let crosses = side(b.0, b.1, a.0) * side(b.0, b.1, a.1) < 0.0
+        && side(a.0, a.1, b.0) * side(a.0, a.1, b.1) < 0.0;
+    if crosses {
+        return 0.0;
+    }
+    [
+        to_segment(a.0, b.0, b.1),
+        to_segment(a.1, b.0, b.1),
+        to_segment(b.0, a.0, a.1),
+        to_segment(b.1, a.0, a.1),
+    ]
+    .into_iter()
+    .fold(f64::INFINITY, f64::min)
+}
+
+/// The page distance between the sides `ids` of the figure `name` of the
+/// engine r = 1, l = `rod` at `deg` (its details' sides read too).
+fn sides_apart(name: FigureName, (rod, deg): (f64, f64), ids: (&str, &str)) -> f64 {
+    let all = sides(&svg(name, rod, 0.0, deg), true);
+    segments_apart(drawn_side(&all, ids.0), drawn_side(&all, ids.1))
+}
+
+/// The side `id` of `sides` as drawn.
+fn drawn_side(sides: &[Side], id: &str) -> ((f64, f64), (f64, f64)) {
+    let s = (sides.iter())
+        .find(|s| s.0 == id)
+        .unwrap_or_else(|| panic!("no {id}"));
+    (s.1, s.2)
+}
+
+#[test]
+fn a_side_set_beside_another_starts_clear_of_the_side_before_it() {
+    // The twelfth review: inversion 2 near 90° and 270° on a short rod set
+    // the tangential component n a′_d beside the Coriolis component's line
+    // towards o′, so it started partway down o′n, under the right-angle
+    // mark at n, and its head lay on o′a′_d's. It stands now on the side
+    // away from o′n.
+    for (rod, deg) in [
+        (1.02, 90.0),
+        (1.07, 90.0),
+        (1.04, 270.0),
+        (1.02, 89.71),
+        (1.07, 89.54),
+        (1.04, 270.22),
+    ] {
+        let apart = sides_apart(
+            FigureName::CoriolisInversion2,
+            (rod, deg),
+            ("acceleration-nad", "acceleration-on"),
+        );
+        assert!(
+            apart >= 3.0,
+            "l = {rod} r, {deg}°: n a′_d {apart:.1} units from o′n"
+        );
+    }
+}
+
+#[test]
+fn a_side_set_beside_the_coriolis_component_keeps_off_the_sliding_one() {
+    // The twelfth review: inversion 3 on a short rod near 90° and 270°
+    // set o′c′ beside the Coriolis component o′k in the acceleration
+    // polygon's detail on the side of a′_d, so it ran between k and a′_d
+    // across the sliding acceleration and its right-angle mark.
+    for (rod, deg) in [(1.08, 270.65), (1.06, 89.55), (1.06, 270.39)] {
+        let apart = sides_apart(
+            FigureName::CoriolisInversion3,
+            (rod, deg),
+            ("detail-acceleration-oc", "detail-acceleration-kad"),
+        );
+        assert!(
+            apart >= 3.0,
+            "l = {rod} r, {deg}°: o′c′ {apart:.1} units from k a′_d"
+        );
+    }
+}
+
+#[test]
+fn a_side_on_another_s_line_is_set_beside_it_parallel() {
+    // The twelfth review: the dashed cq, on cb's line (q the middle of
+    // ab, a on c at the dead centres), was turned about q to stand
+    // beside cb and drawn slanted, a direction cq does not have. It is
+    // drawn parallel to c → q.
+    for (rod, deg) in [(1.09, 0.0), (1.09, 180.0), (36.1, 0.0), (36.1, 180.0)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let all = sides(&svg, false);
+        let (from, to) = drawn_side(&all, "velocity-cq");
+        let (c, q) = (dot(&svg, "point-c"), dot(&svg, "point-q"));
+        let drawn = (to.1 - from.1).atan2(to.0 - from.0);
+        let true_ = (q.1 - c.1).atan2(q.0 - c.0);
+        let off = (drawn - true_).sin().abs().asin().to_degrees();
+        assert!(
+            off < 0.5,
+            "l = {rod} r, {deg}°: cq drawn {off:.1}° off c → q"
+        );
+    }
+}

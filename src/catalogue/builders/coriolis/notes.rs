@@ -46,11 +46,49 @@ pub(super) fn notes(
     bars: (f64, f64),
     (seen, plain): (Seen, &[String]),
 ) -> Vec<String> {
+    let read = Read::new(polygons);
+    vec![
+        pose_note(ctx, chain, polygons),
+        velocity_note(ctx, polygons, &read, bars.0),
+        acceleration_note(ctx, polygons, &read, bars.1, seen.0),
+        coriolis_note(ctx, polygons, &read, bars.1, seen.1) + &headless_said(plain),
+    ]
+}
+
+/// The values the notes read off the polygons, each 0 where it is the
+/// construction's rounding ([`Polygons::clean`]).
+struct Read {
+    /// The sliding velocity's size.
+    v: f64,
+    /// d's angular velocity.
+    omega_d: f64,
+    /// d's angular acceleration.
+    alpha_d: f64,
+    /// The sliding acceleration (signed, as the engine's d²x_A/dt²).
+    sliding: f64,
+    /// The Coriolis component's size.
+    coriolis: f64,
+}
+
+impl Read {
+    fn new(polygons: &Polygons) -> Self {
+        let p = &polygons.p;
+        let ca = polygons.ca;
+        Read {
+            v: polygons.clean(p.sliding_velocity().abs(), 1.0, false),
+            omega_d: polygons.clean(p.omega_d(), ca, false),
+            alpha_d: polygons.clean(p.alpha_d(), ca, true),
+            sliding: polygons.clean(p.sliding_acceleration(), 1.0, true),
+            coriolis: polygons.clean(p.coriolis().norm(), 1.0, true),
+        }
+    }
+}
+
+/// The first note: the inversion, the engine and the pose, the driver
+/// and its speed, CA, and the quick return's time ratio where it has one.
+fn pose_note(ctx: &Ctx, chain: &InvertedChain, polygons: &Polygons) -> String {
     let m = &ctx.mechanism;
-    let u = ctx.unit();
-    let p = &polygons.p;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
-    let w = ctx.omega;
     let inversion = polygons.inversion;
     let offset = if e == 0.0 {
         String::new()
@@ -60,100 +98,109 @@ pub(super) fn notes(
     let ratio = chain.time_ratio().map_or(String::new(), |t| {
         format!(" Time ratio of the quick return {}.", short(t))
     });
-    let (driver, pin, about) = match inversion {
-        Inversion::Rod => ("the crank *a* (*BC*)", "*c*", "*B*"),
-        _ => ("the rod *b* (*BA*)", "*a*", "*B*"),
+    let (fixed, driver) = match inversion {
+        Inversion::Rod => ("b", "the crank *a* (*BC*)"),
+        _ => ("a", "the rod *b* (*BA*)"),
     };
-    let ca = polygons.ca;
-    let v = polygons.clean(p.sliding_velocity().abs(), 1.0, false);
-    let omega_d = polygons.clean(p.omega_d(), ca, false);
-    let alpha_d = polygons.clean(p.alpha_d(), ca, true);
-    let sliding = polygons.clean(p.sliding_acceleration(), 1.0, true);
-    let coriolis_size = polygons.clean(p.coriolis().norm(), 1.0, true);
-    let first = format!(
-        "Inversion {}, link *{}* fixed ({}) at θ = {}°; *r* = {}, *l* = {}{offset}; {driver} turns about {about} at ω = {} rad/s ({} rpm), *CA* = {} {u}.{ratio}",
+    format!(
+        "Inversion {}, link *{fixed}* fixed ({}) at θ = {}°; *r* = {}, *l* = {}{offset}; {driver} turns about *B* at ω = {} rad/s ({} rpm), *CA* = {} {}.{ratio}",
         inversion.number(),
-        match inversion {
-            Inversion::Rod => "b",
-            _ => "a",
-        },
         inversion.name(),
         short(ctx.angle.degrees()),
         short(r),
         short(l),
-        sig(w),
+        sig(ctx.omega),
         short(ctx.rpm()),
-        sig(ca),
-    );
-    let velocity = match inversion {
-        Inversion::Rod => format!(
-            "Velocity polygon (the bar {} {u}/s): *oc* = ω·*BC* = {} {u}/s, perpendicular to *BC*; *ca*_{{d}} perpendicular to *CA*; *oa*_{{d}} along the slot, *v* = {} {u}/s; ω_{{d}} = *ca*_{{d}}/*CA* = {} rad/s.",
-            short(bars.0),
-            sig(p.driven().norm()),
-            sig(v),
-            sig(omega_d),
-        ),
-        _ => format!(
-            "Velocity polygon (the bar {} {u}/s): *oa* = ω·*BA* = {} {u}/s, perpendicular to *BA*; *oa*_{{d}} perpendicular to *CA*; *a*_{{d}}*a* along the slot, *v* = {} {u}/s; ω_{{d}} = *oa*_{{d}}/*CA* = {} rad/s.",
-            short(bars.0),
-            sig(p.driven().norm()),
-            sig(v),
-            sig(omega_d),
-        ),
+        sig(polygons.ca),
+        ctx.unit(),
+    )
+}
+
+/// The velocity polygon read to its bar of `bar`: the driven point's
+/// velocity, the two directions that meet at a_d, the sliding velocity
+/// and ω_d.
+fn velocity_note(ctx: &Ctx, polygons: &Polygons, read: &Read, bar: f64) -> String {
+    let u = ctx.unit();
+    // The driven point's image, its link, the side ⟂ CA, the slot's.
+    let (driven, link, across, along) = match polygons.inversion {
+        Inversion::Rod => ("*oc*", "*BC*", "*ca*_{d}", "*oa*_{d}"),
+        _ => ("*oa*", "*BA*", "*oa*_{d}", "*a*_{d}*a*"),
     };
-    let normal = omega_d * omega_d * ca;
-    let acceleration_unit = format!("{u}/s²");
-    let per_s2 = (bars.1, acceleration_unit.as_str());
+    format!(
+        "Velocity polygon (the bar {} {u}/s): {driven} = ω·{link} = {} {u}/s, perpendicular to {link}; {across} perpendicular to *CA*; {along} along the slot, *v* = {} {u}/s; ω_{{d}} = {across}/*CA* = {} rad/s.",
+        short(bar),
+        sig(polygons.p.driven().norm()),
+        sig(read.v),
+        sig(read.omega_d),
+    )
+}
+
+/// The acceleration polygon read to its bar of `bar`: the driven point's
+/// centripetal acceleration, d's normal and tangential components, the
+/// sliding acceleration with its sense, and, where it is drawn too short
+/// to be seen at its largest (`seen`), how long it is drawn.
+fn acceleration_note(
+    ctx: &Ctx,
+    polygons: &Polygons,
+    read: &Read,
+    bar: f64,
+    seen: (f64, Option<f64>),
+) -> String {
+    let u = ctx.unit();
+    let p = &polygons.p;
+    let per_s2 = format!("{u}/s²");
     // A sliding acceleration too short to draw even where the polygon is
     // enlarged (inversion 2 at l = 40 r, 89°: 12 ft/s² against a Coriolis
     // component of 1370, under a unit at ×20) is said so: k stands on a′_d.
     let sliding_said = said(&[
-        sliding_sense(inversion, sliding),
-        unseen(sliding, seen.0, per_s2, ("*k*", "*a*′_{d}")),
+        sliding_sense(polygons.inversion, read.sliding),
+        unseen(read.sliding, seen, (bar, &per_s2), ("*k*", "*a*′_{d}")),
     ]);
-    let coriolis_unseen = said(&[match inversion {
-        Inversion::Rod => unseen(coriolis_size, seen.1, per_s2, ("*k*", "*o*′")),
-        _ => unseen(coriolis_size, seen.1, per_s2, ("*k*", "*a*′")),
-    }]);
-    let acceleration = format!(
-        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{sliding_said}.",
-        short(bars.1),
-        match inversion {
-            Inversion::Rod => "C",
-            _ => "A",
-        },
+    let (pin, link) = match polygons.inversion {
+        Inversion::Rod => ("*c*", "C"),
+        _ => ("*a*", "A"),
+    };
+    let normal = read.omega_d * read.omega_d * polygons.ca;
+    format!(
+        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{link}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{sliding_said}.",
+        short(bar),
         sig(p.driven_acceleration().norm()),
         sig(normal),
-        sig(alpha_d),
-        sig(sliding),
-    );
-    let coriolis = format!(
-        "The Coriolis component {} = 2ω_{{d}}*v* = {} {u}/s²{coriolis_unseen}: the sliding velocity *v* ({}) turned 90° in the sense of ω_{{d}}{}.",
-        match inversion {
-            // A narrow space after the prime: set in italic with its o,
-            // it leant onto k's ascender ("o′k" read as one glyph).
-            Inversion::Rod => "*o*′\u{202f}*k*",
-            _ => "*ka*′",
-        },
-        sig(coriolis_size),
-        match inversion {
-            Inversion::Rod => "of *d* on the block",
-            _ => "of the block on *d*",
-        },
-        if v == 0.0 {
-            "; here *v* = 0 and it vanishes"
-        } else if omega_d == 0.0 {
-            "; here ω_{d} = 0 and it vanishes"
-        } else {
-            ""
-        },
-    );
-    vec![
-        first,
-        velocity,
-        acceleration,
-        coriolis + &headless_said(plain),
-    ]
+        sig(read.alpha_d),
+        sig(read.sliding),
+    )
+}
+
+/// The Coriolis component and its rule: its size, where it is drawn too
+/// short to be seen at its largest (`seen`) how long, the sliding
+/// velocity it turns, and why it vanishes where it does.
+fn coriolis_note(
+    ctx: &Ctx,
+    polygons: &Polygons,
+    read: &Read,
+    bar: f64,
+    seen: (f64, Option<f64>),
+) -> String {
+    let u = ctx.unit();
+    let per_s2 = format!("{u}/s²");
+    // A narrow space after the prime: set in italic with its o, it leant
+    // onto k's ascender ("o′k" read as one glyph).
+    let (side, from, to, sliding) = match polygons.inversion {
+        Inversion::Rod => ("*o*′\u{202f}*k*", "*k*", "*o*′", "of *d* on the block"),
+        _ => ("*ka*′", "*k*", "*a*′", "of the block on *d*"),
+    };
+    let unseen_said = said(&[unseen(read.coriolis, seen, (bar, &per_s2), (from, to))]);
+    let vanishes = if read.v == 0.0 {
+        "; here *v* = 0 and it vanishes"
+    } else if read.omega_d == 0.0 {
+        "; here ω_{d} = 0 and it vanishes"
+    } else {
+        ""
+    };
+    format!(
+        "The Coriolis component {side} = 2ω_{{d}}*v* = {} {u}/s²{unseen_said}: the sliding velocity *v* ({sliding}) turned 90° in the sense of ω_{{d}}{vanishes}.",
+        sig(read.coriolis),
+    )
 }
 
 /// The notes' word on the sides `plain` drawn without a head
