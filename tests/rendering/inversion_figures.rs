@@ -236,3 +236,73 @@ fn a_fixed_pin_s_ground_mark_stands_clear_of_its_links_and_out_of_the_bar() {
         }
     }
 }
+
+/// The box (x0, x1, y0, y1) of every path of the bearing group `id`: its
+/// pedestal, base and hatching.
+fn bearing_box(svg: &str, id: &str) -> Option<(f64, f64, f64, f64)> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let group = &svg[at..at + svg[at..].find("</g>")?];
+    let points: Vec<(f64, f64)> = (group.split(" d=\"").skip(1))
+        .flat_map(|rest| {
+            let d = rest.split('"').next().unwrap_or("");
+            let n: Vec<f64> = (d.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+                .filter_map(|t| t.parse().ok())
+                .collect();
+            n.chunks(2).map(|p| (p[0], p[1])).collect::<Vec<_>>()
+        })
+        .collect();
+    Some(crate::common::bounds_of(&points))
+}
+
+#[test]
+fn the_fixed_pins_carry_bearings_clear_of_the_centres_dots() {
+    // The twelfth review: inversion 2's O_ac dot fell on the hatching of
+    // O_ab's bearing (the default, and l = 3.56 r, e = −1.74 r at 0°),
+    // read as part of the bearing; inversion 3's trunnion O_bc had no
+    // bearing where its rod b was hatched while O_ab had one. Both pins
+    // of the fixed bar carry a bearing, and no centre's dot stands within
+    // 3 units of a bearing's pedestal, base or hatching.
+    const CLEAR: f64 = 3.0;
+    for (name, rod, offset, deg) in [
+        (I2, 3.0, 0.0, 60.0),
+        (I2, 3.56, -1.74, 0.0),
+        (I2, 3.56, -1.74, 180.0),
+        (I3, 3.0, 0.0, 60.0),
+        (I3, 34.9, 0.0, 180.0),
+        (I3, 1.06, 0.0, 180.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
+        let (_, pins) = fixed_bar(name);
+        for pin in pins {
+            let drawn = [format!("bearing-{pin}"), format!("detail-bearing-{pin}")]
+                .iter()
+                .any(|id| tag(&svg, id).is_some());
+            assert!(drawn, "{at}: no bearing at {pin}");
+        }
+        for prefix in ["", "detail-"] {
+            for pin in ["C", "B", "A"] {
+                let Some(b) = bearing_box(&svg, &format!("{prefix}bearing-{pin}")) else {
+                    continue;
+                };
+                for key in ["O-bd", "O-ac"] {
+                    for kind in ["point", "centre"] {
+                        let id = format!("{prefix}{kind}-{key}");
+                        let (Some(x), Some(y)) = (
+                            crate::common::attr(&svg, &id, "cx"),
+                            crate::common::attr(&svg, &id, "cy"),
+                        ) else {
+                            continue;
+                        };
+                        let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
+                        let on = x > b.0 - CLEAR
+                            && x < b.1 + CLEAR
+                            && y > b.2 - CLEAR
+                            && y < b.3 + CLEAR;
+                        assert!(!on, "{at}: {id} on {prefix}bearing-{pin}");
+                    }
+                }
+            }
+        }
+    }
+}

@@ -478,7 +478,18 @@ fn crank_detail(
         Some(wanted) => window(ctx, "detail", (centre, wanted), detail_rect, scale)?,
     };
     let map = *plot.map();
-    let block = super::chains::block_on_page(block_size(&m), map.scale());
+    let block = match wanted {
+        None => super::chains::block_on_page(block_size(&m), map.scale()),
+        // The crowded pins' detail enlarges where they stand, not the
+        // block and d's slot about them: drawn at their size in the main
+        // view, they show in it (at l = 1.02 r, 180° the block ×30 was
+        // wider than the detail, which showed neither block nor bar).
+        Some(_) => {
+            let main = super::chains::block_on_page(block_size(&m), scale);
+            let k = scale / map.scale();
+            (main.0 * k, main.1 * k)
+        }
+    };
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
     let mut d = Drawing::new(m, pose, canvas, block);
     d.draw(pose, pose.centres());
@@ -491,17 +502,34 @@ fn crank_detail(
 
 /// The chain at `pose` drawn on `canvas`: the driven pin's path, the
 /// frame d (guides or the slotted bar), the fixed link hatched, the links
-/// and the block lettered a, b, c, d; for a figure that draws more on it
-/// (the Coriolis polygons' mechanism). The block is drawn no smaller on
-/// the page than Fig. 60's.
-pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -> Canvas {
+/// and the block lettered a, b, c, d, by the rules of the inversions'
+/// own figures (the fixed pins' bearings, the block's letter out of the
+/// bar); for a figure that draws more on it (the Coriolis polygons'
+/// mechanism). The block is drawn no smaller on the page than Fig. 60's.
+pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -> LinksDrawn {
     let block = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
     let mut d = Drawing::new(m, pose, canvas, block);
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
     d.links(Vector::zeros());
-    d.s
+    LinksDrawn {
+        b_foot: d.b_foot,
+        a_way: d.pin_a_way,
+        canvas: d.s,
+    }
+}
+
+/// The chain as [`draw_links`] drew it: the canvas, and what the figure
+/// drawing more on it keeps clear of.
+pub(super) struct LinksDrawn {
+    /// The canvas drawn on.
+    pub canvas: Canvas,
+    /// The side B's bearing stands on (ω's arc about B keeps off it).
+    pub b_foot: Foot,
+    /// The way A's letter is tried first (the other side of the bar from
+    /// the block's letter), if the block's letter stands beside it.
+    pub a_way: Option<Vector>,
 }
 
 /// The half width (world units) of the slotted bar d that [`draw_links`]
@@ -550,12 +578,8 @@ struct Drawing {
     /// letters: a few units apart here, their letters would stand by the
     /// wrong pin.
     held: Option<Frame>,
-    /// Whether this is the inversion's own figure ([`Drawing::draw`]),
-    /// whose fixed pins' ground marks stand away from the links meeting
-    /// there and whose block is lettered beside it outside the bar; the
-    /// Coriolis figures' mechanism ([`draw_links`]) keeps its bearings
-    /// below and its block's letter at the block's end.
-    drafted: bool,
+    /// The foot of the bearing drawn at B ([`Drawing::foot`]).
+    b_foot: Foot,
     /// The strokes of hatching drawn on the fixed bar (inversions 2 and
     /// 3): fewer than [`FIXED_STROKES`] and its pins carry bearings and the
     /// notes say so.
@@ -567,6 +591,9 @@ struct Drawing {
     /// stands beside the block: the other side of the bar, towards C (on
     /// the same side the two read as one label, "O_bc c").
     pin_a_way: Option<Vector>,
+    /// The centres drawn as dots where they are finite (O_bd, O_ac),
+    /// which a bearing's pedestal and hatching keep clear of.
+    dots: Vec<Point>,
 }
 
 /// Where the block's letter stands beside it, in half lengths of the
@@ -593,6 +620,10 @@ const FOOT_CLEAR: f64 = std::f64::consts::FRAC_PI_3;
 /// ([`BEARING_FOOT`], as the layout draws it) and the first 3 units of
 /// its hatching, and half the foot's length.
 const FOOT_REACH: (f64, f64) = (BEARING_FOOT.0 + 3.0, BEARING_FOOT.1);
+
+/// How far a bearing's hatching reaches beyond [`FOOT_REACH`]'s depth,
+/// page units (the strokes stand 6 units beyond the foot).
+const HATCH_DEPTH: f64 = 3.0;
 
 /// The outline of the turning frame d with a slot for the block: a bar
 /// `w` wide each side of its middle line (the block's half height, so
@@ -623,6 +654,49 @@ fn band(q: &Parts, w: f64) -> Vec<Point> {
     ]
 }
 
+/// The centres drawn as dots where they are finite: O_bd and O_ac.
+fn dots(centres: &ChainCentres) -> Vec<Point> {
+    [(Link::B, Link::D), (Link::A, Link::C)]
+        .into_iter()
+        .filter_map(|(p, q)| match centres.centre(p, q) {
+            Some(Intersection::Point(x)) => Some(x),
+            _ => None,
+        })
+        .collect()
+}
+
+/// How far a dot is kept from a bearing's pedestal and hatching, page
+/// units: a dot's radius and a stroke's width, so that it reads apart.
+const DOT_CLEAR: f64 = 5.0;
+
+/// Lines filling the slotted bar of [`band`] (`w` its half width): its
+/// middle line and the lines halfway to its sides, along its leg and its
+/// arm. A stroke of hatching that starts inside the bar meets one of
+/// them (they stand half a half width apart, less than a stroke's
+/// length), so that a fixed link lying in the bar keeps no stroke there:
+/// at l = 54.1 r, 90° inversion 3's rod b, running inside d's bar, was
+/// hatched inside it and the moving bar read as fixed.
+fn band_fill(q: &Parts, w: f64) -> Vec<Seg> {
+    let (c, t, f, u) = (q.c, q.t, q.f, q.u);
+    let leg = t - c;
+    let shares = [-0.5, 0.0, 0.5];
+    if leg.norm() == 0.0 {
+        let (s, v) = (c - u * w, q.v);
+        return shares.map(|k| (s + v * (k * w), f + v * (k * w))).to_vec();
+    }
+    let g = leg / leg.norm();
+    let s = c - g * w;
+    (shares.iter())
+        .flat_map(|k| {
+            let (across_leg, across_arm) = (u * (k * w), g * (k * w));
+            [
+                (s + across_leg, t + across_leg + g * w),
+                (t - u * w + across_arm, f + across_arm),
+            ]
+        })
+        .collect()
+}
+
 /// The middle of `p` and `q`.
 fn mid(p: Point, q: Point) -> Point {
     Point::from((p.coords + q.coords) * 0.5)
@@ -641,10 +715,11 @@ impl Drawing {
             block,
             q,
             held: None,
-            drafted: false,
+            b_foot: Foot::Below,
             hatched: 0,
             trunnion: None,
             pin_a_way: None,
+            dots: dots(pose.centres()),
         }
     }
 
@@ -667,7 +742,6 @@ impl Drawing {
     /// hatched, the links and the centres; the centres' names that share
     /// a lettered point's place ([`Drawing::centres`]).
     fn draw(&mut self, pose: &InversionPose, centres: &ChainCentres) -> Vec<String> {
-        self.drafted = true;
         self.path(pose.inversion());
         self.frame(pose);
         self.hatch();
@@ -694,15 +768,16 @@ impl Drawing {
     }
 
     /// The foot a fixed pin `p`'s bearing stands on: below, unless a link
-    /// meeting there (towards `meeting`) runs within [`FOOT_CLEAR`] of it
-    /// or its base lies inside d's slotted bar; then the first side clear
-    /// of both, else the side farthest from the links with its base out of
-    /// the bar, else the side farthest from the links. The Coriolis
-    /// figures' mechanism keeps it below.
+    /// meeting there (towards `meeting`) runs within [`FOOT_CLEAR`] of it,
+    /// its base lies inside d's slotted bar or a centre's dot (O_bd, O_ac)
+    /// stands on its pedestal or hatching ([`DOT_CLEAR`]); then the first
+    /// side clear of all three, else the best side, its base out of the
+    /// bar first, then clear of the dots, then farthest from the links
+    /// (the default of inversion 2 hung O_ab's bearing from above, O_ac's
+    /// dot on its hatching, read as part of the bearing). The inversions'
+    /// figures and the Coriolis figures' mechanism draw by this one rule
+    /// (the latter kept every bearing below, B's in d's slot).
     fn foot(&self, p: Point, meeting: &[Point]) -> Foot {
-        if !self.drafted {
-            return Foot::Below;
-        }
         let map = *self.s.transform();
         let at = map.apply(p);
         let outline: Vec<Point> = match self.slotted() {
@@ -729,15 +804,27 @@ impl Drawing {
                 .iter()
                 .all(|x| !inside_outline(&outline, *x))
         };
+        // The centres' dots off the pin (one on it is named with it).
+        let dots: Vec<Point> = (self.dots.iter())
+            .map(|x| map.apply(*x))
+            .filter(|x| (x - at).norm() > CROWDED)
+            .collect();
+        let clear = |f: Foot| {
+            let (down, along) = f.axes();
+            dots.iter().all(|x| {
+                let (d, s) = ((x - at).dot(&down), (x - at).dot(&along));
+                d < -DOT_CLEAR || d > depth + HATCH_DEPTH + DOT_CLEAR || s.abs() > half + DOT_CLEAR
+            })
+        };
         let feet = [Foot::Below, Foot::Above, Foot::Left, Foot::Right];
-        let score = |f: Foot| (out(f), spread(f));
+        let score = |f: Foot| (out(f), clear(f), spread(f));
         // Of sides equally good, the first (below) is kept.
         (feet.into_iter())
-            .find(|&f| out(f) && spread(f) >= FOOT_CLEAR)
+            .find(|&f| out(f) && clear(f) && spread(f) >= FOOT_CLEAR)
             .or_else(|| {
                 (feet.into_iter().rev()).max_by(|&f, &g| {
                     let (a, b) = (score(f), score(g));
-                    a.0.cmp(&b.0).then(a.1.total_cmp(&b.1))
+                    (a.0, a.1).cmp(&(b.0, b.1)).then(a.2.total_cmp(&b.2))
                 })
             })
             .unwrap_or(Foot::Below)
@@ -835,27 +922,49 @@ impl Drawing {
     }
 
     /// Where the turning bar d is lettered: 0.85 of the way from T to its
-    /// far end, or, where the block stands there (at the outer dead
-    /// centre the block rides at the bar's end, and a letter there names
-    /// the block), the middle of the longer run of bar clear of the block
-    /// on either side of it.
+    /// far end, or, where something stands on the bar there, the middle
+    /// of the longest run of bar clear of it: the block (at the outer dead
+    /// centre it rides at the bar's end, and a letter there names the
+    /// block), the pins B and C where they lie on the bar's line (at
+    /// the dead centres B lies in the bar, and the letter over it read
+    /// "d O_ab" as one label) and, two letters' room each way, the
+    /// middles of the links lying along it, where their letters stand
+    /// (beside a's, d read "a d").
     fn bar_letter(&self) -> Point {
         let q = &self.q;
-        let (lh, _) = self.block;
+        let (lh, hh) = self.block;
         let along = |p: Point| (p - q.t).dot(&q.u);
-        let (end, block) = (along(q.f), along(q.a));
-        let clear = lh + self.s.world(LETTER_CLEAR);
+        let clear = self.s.world(LETTER_CLEAR);
+        let mut taken = vec![(along(q.a) - lh - clear, along(q.a) + lh + clear)];
+        let on_bar = |p: Point| (p - q.t).dot(&q.v).abs() <= hh + clear;
+        for p in [q.b, q.c] {
+            if on_bar(p) {
+                taken.push((along(p) - clear, along(p) + clear));
+            }
+        }
+        // The letters of links lying along the bar, at their middles.
+        for (p, r) in [(q.c, q.b), (q.b, q.a)] {
+            if on_bar(p) && on_bar(r) {
+                let x = along(mid(p, r));
+                taken.push((x - 2.0 * clear, x + 2.0 * clear));
+            }
+        }
+        let end = along(q.f);
+        let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
         let usual = 0.85 * end;
-        if (usual - block).abs() >= clear {
+        if free(usual) {
             return q.t + q.u * usual;
         }
-        let before = (0.0, (block - clear).max(0.0));
-        let after = ((block + clear).min(end), end);
-        let run = if before.1 - before.0 >= after.1 - after.0 {
-            before
-        } else {
-            after
-        };
+        // The runs between what is taken, the longest kept.
+        let mut cuts: Vec<f64> = vec![0.0, end];
+        cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
+        let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(0.0, end)).collect();
+        cuts.sort_by(f64::total_cmp);
+        let run = (cuts.windows(2))
+            .map(|w| (w[0], w[1]))
+            .filter(|(lo, hi)| free(0.5 * (lo + hi)))
+            .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
+            .unwrap_or((0.0, end));
         q.t + q.u * (0.5 * (run.0 + run.1))
     }
 
@@ -876,6 +985,7 @@ impl Drawing {
             let outline = band(&self.q, self.block.1);
             let sides = outline.iter().zip(outline.iter().cycle().skip(1));
             moving.extend(sides.map(|(p, q)| (*p, *q)));
+            moving.extend(band_fill(&self.q, self.block.1));
         } else if self.fixed != Link::D {
             moving.extend(bar.iter().copied().zip(bar.iter().copied().skip(1)));
         }
@@ -903,21 +1013,21 @@ impl Drawing {
                 self.s.bearing_on("C", c, foot);
                 let foot = self.foot(b, &[c, a]);
                 self.s.bearing_on("B", b, foot);
+                self.b_foot = foot;
                 self.hatched = self.s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
             }
             Link::B => {
                 let foot = self.foot(b, &[c, a]);
                 self.s.bearing_on("B", b, foot);
+                self.b_foot = foot;
                 self.hatched = self.s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
-                // The block's trunnion at A is in the fixed rod; a bearing
-                // there would crowd the block, save where the rod lies in
-                // d's slot unhatched and the bearings alone show it fixed.
-                if self.drafted && self.hatched < FIXED_STROKES {
-                    let (u, lh) = (self.q.u, self.block.0);
-                    let foot = self.foot(a, &[b, a + u * lh, a - u * lh]);
-                    self.s.bearing_on("A", a, foot);
-                    self.trunnion = Some(foot);
-                }
+                // The block's trunnion at A is a fixed pin as B is: both
+                // carry a bearing, hatched rod or not (O_bc alone without
+                // one read as a pin of the moving bar).
+                let (u, lh) = (self.q.u, self.block.0);
+                let foot = self.foot(a, &[b, a + u * lh, a - u * lh]);
+                self.s.bearing_on("A", a, foot);
+                self.trunnion = Some(foot);
             }
             Link::C => {
                 // The block is the fixed barrel: hatched on the face away from
@@ -939,7 +1049,7 @@ impl Drawing {
     /// a slotted bar in the inversion's own figure, c out of the bar by
     /// the block ([`Drawing::block_letter`], `normal` the way the normal
     /// at A is drawn): in the bar's empty end beyond the block it named
-    /// the bar.
+    /// the bar; left to the detail where it holds A.
     fn links(&mut self, normal: Vector) {
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         let corners = self.corners;
@@ -958,7 +1068,13 @@ impl Drawing {
         }
         self.s.link_letter("link-b", (b, a), "*b*");
         let v = self.q.v;
-        if self.drafted && self.slotted() {
+        if self.held(self.q.a) {
+            // The detail letters the block where it enlarges it: here, by
+            // pins a few units apart, c stood in d's bar beside the block
+            // (l = 1.02 r, 180°).
+            return;
+        }
+        if self.slotted() {
             let (at, out) = self.block_letter(normal);
             if out != self.q.u {
                 self.pin_a_way = Some(-out - self.q.u);
