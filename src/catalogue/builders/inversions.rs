@@ -625,6 +625,10 @@ struct Drawing {
     /// counted them, and the notes called hatched a link that showed
     /// fewer than [`FIXED_STROKES`].
     kennedy: Vec<Seg>,
+    /// The way the normal at A is drawn ([`Drawing::normal_way`]; zero
+    /// where none is): the block's letter stands on its side of the bar,
+    /// which A's bearing leaves clear.
+    normal: Vector,
 }
 
 /// Where the block's letter stands beside it, in half lengths of the
@@ -756,6 +760,7 @@ impl Drawing {
             pin_a_way: None,
             dots: dots(pose.centres()),
             kennedy: Vec::new(),
+            normal: Vector::zeros(),
         }
     }
 
@@ -779,11 +784,12 @@ impl Drawing {
     /// a lettered point's place ([`Drawing::centres`]).
     fn draw(&mut self, pose: &InversionPose, centres: &ChainCentres) -> Vec<String> {
         self.kennedy = kennedy_lines(&self.q, centres);
+        self.normal = self.normal_way(centres);
         self.path(pose.inversion());
         self.frame(pose);
         self.hatch();
         self.letter_bar();
-        self.links(self.normal_way(centres));
+        self.links(self.normal);
         self.centres(centres)
     }
 
@@ -1006,8 +1012,8 @@ impl Drawing {
         cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
         let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(0.0, end)).collect();
         cuts.sort_by(f64::total_cmp);
-        (cuts.windows(2))
-            .map(|w| (w[0], w[1]))
+        (cuts.iter().copied())
+            .zip(cuts.iter().copied().skip(1))
             .filter(|(lo, hi)| free(0.5 * (lo + hi)))
             .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
             .map(|run| q.t + q.u * (0.5 * (run.0 + run.1)))
@@ -1094,15 +1100,21 @@ impl Drawing {
                 // The block's trunnion at A is a fixed pin as B is: the two
                 // carry a bearing each or neither (O_ab's alone read as
                 // the only fixed pin). Both where the rod is too little
-                // hatched to show it fixed, or where A's bearing stands
-                // with its base out of d's bar; else the hatching alone
-                // (at most poses the bar about the block takes every side
-                // of A, and a base inside it read as a pin on d).
+                // hatched to show it fixed; else the hatching alone (at
+                // most poses the bar about the block takes every side of
+                // A, a base inside it read as a pin on d, and a bearing
+                // beside it took the place of the block's letter, which
+                // went into the bar: l = 1.05 r, 89.17°).
                 let (u, lh) = (self.q.u, self.block.0);
-                let (at_b, _) = self.foot_clear(b, &[c, a]);
-                let (at_a, out) = self.foot_clear(a, &[b, a + u * lh, a - u * lh]);
+                let at_b = self.foot(b, &[c, a]);
+                // The side of the bar the block's letter is tried on first
+                // ([`Drawing::block_letter`]) is kept clear too.
+                let v = self.q.v;
+                let side = if self.normal.dot(&v) >= 0.0 { v } else { -v };
+                let by = a + side * self.block.1;
+                let at_a = self.foot(a, &[b, a + u * lh, a - u * lh, by]);
                 self.b_foot = at_b;
-                if out || self.hatched < FIXED_STROKES {
+                if self.hatched < FIXED_STROKES {
                     self.s.bearing_on("B", b, at_b);
                     self.s.bearing_on("A", a, at_a);
                     self.trunnion = Some(at_a);
