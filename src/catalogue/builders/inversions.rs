@@ -539,7 +539,7 @@ pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -
     d.letter_bar();
     d.links(Vector::zeros());
     LinksDrawn {
-        b_foot: d.b_foot,
+        b_foot: d.b_bearing.then_some(d.b_foot),
         a_way: d.pin_a_way,
         canvas: d.s,
     }
@@ -550,8 +550,9 @@ pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -
 pub(super) struct LinksDrawn {
     /// The canvas drawn on.
     pub canvas: Canvas,
-    /// The side B's bearing stands on (ω's arc about B keeps off it).
-    pub b_foot: Foot,
+    /// The side B's bearing stands on, if one is drawn (ω's arc about B
+    /// keeps off it).
+    pub b_foot: Option<Foot>,
     /// The way A's letter is tried first (the other side of the bar from
     /// the block's letter), if the block's letter stands beside it.
     pub a_way: Option<Vector>,
@@ -603,8 +604,12 @@ struct Drawing {
     /// letters: a few units apart here, their letters would stand by the
     /// wrong pin.
     held: Option<Frame>,
-    /// The foot of the bearing drawn at B ([`Drawing::foot`]).
+    /// The foot of the bearing at B ([`Drawing::foot`]), the side it
+    /// stands or would stand on.
     b_foot: Foot,
+    /// Whether a bearing is drawn at B (inversion 3 draws none where its
+    /// rod is hatched).
+    b_bearing: bool,
     /// The strokes of hatching drawn on the fixed bar (inversions 2 and
     /// 3): fewer than [`FIXED_STROKES`] and its pins carry bearings and the
     /// notes say so.
@@ -755,6 +760,7 @@ impl Drawing {
             q,
             held: None,
             b_foot: Foot::Below,
+            b_bearing: false,
             hatched: 0,
             trunnion: None,
             pin_a_way: None,
@@ -986,7 +992,10 @@ impl Drawing {
         let (lh, hh) = self.block;
         let along = |p: Point| (p - q.t).dot(&q.u);
         let clear = self.s.world(LETTER_CLEAR);
-        let mut taken = vec![(along(q.a) - lh - clear, along(q.a) + lh + clear)];
+        // Two em beyond the block, as about a pin (one left d's letter
+        // 27 units from A's pin at l = 2.65 r, e = 1.44 r, 89.28°, where
+        // it read as the block's).
+        let mut taken = vec![(along(q.a) - lh - 2.0 * clear, along(q.a) + lh + 2.0 * clear)];
         let on_bar = |p: Point| (p - q.t).dot(&q.v).abs() <= hh + clear;
         // Two em about a pin: its letter stands beside it.
         for p in [q.b, q.c] {
@@ -1092,7 +1101,7 @@ impl Drawing {
                 self.s.bearing_on("C", c, foot);
                 let foot = self.foot(b, &[c, a]);
                 self.s.bearing_on("B", b, foot);
-                self.b_foot = foot;
+                (self.b_foot, self.b_bearing) = (foot, true);
                 self.hatched = self.s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
             }
             Link::B => {
@@ -1116,6 +1125,7 @@ impl Drawing {
                 self.b_foot = at_b;
                 if self.hatched < FIXED_STROKES {
                     self.s.bearing_on("B", b, at_b);
+                    self.b_bearing = true;
                     self.s.bearing_on("A", a, at_a);
                     self.trunnion = Some(at_a);
                 }

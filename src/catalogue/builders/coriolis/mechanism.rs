@@ -143,7 +143,7 @@ pub(super) fn links_plot(
 /// The driver's sense of turning: an arrowed arc about its fixed pin
 /// (the crank about B in inversion 3, the rod about B in inversion 2),
 /// lettered ω.
-pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_foot: Foot) {
+pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_foot: Option<Foot>) {
     let engine = pose.engine_pose();
     let b = pose.place(engine.b());
     let tip = match pose.inversion() {
@@ -178,14 +178,19 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_fo
         let edge = (slot.0 + shift, slot.1 + shift);
         links.extend(crossings(edge, b, radius + s.world(OMEGA_MARGIN)));
     }
-    // B's bearing, on the side `b_foot`: its triangle and hatching span
-    // about 0.65 rad either side of its axis at the arc's radius (the
-    // arc and its head lay on the hatching at l = 1.05 r, 180° in
-    // inversion 2, where both links at B run to the left). The page's y
-    // runs down, the world's up.
-    let axis = b_foot.axes().0;
-    let down = (-axis.y).atan2(axis.x);
-    links.extend([down - BEARING_SPREAD, down, down + BEARING_SPREAD]);
+    // B's bearing, where one is drawn, on the side `b_foot`: its triangle
+    // and hatching span about 0.65 rad either side of its axis at the
+    // arc's radius (the arc and its head lay on the hatching at
+    // l = 1.05 r, 180° in inversion 2, where both links at B run to the
+    // left). The page's y runs down, the world's up. Where none is (a
+    // hatched rod in inversion 3), the side it would take is no obstacle:
+    // kept, it left no clear place at l = 50 r, e = -39.2 r, 260°, where
+    // the arc ran along the hatched rod.
+    if let Some(foot) = b_foot {
+        let axis = foot.axes().0;
+        let down = (-axis.y).atan2(axis.x);
+        links.extend([down - BEARING_SPREAD, down, down + BEARING_SPREAD]);
+    }
     let heading = arm.y.atan2(arm.x);
     links.push(heading);
     let sweep = OMEGA_SWEEP * omega.signum();
