@@ -161,10 +161,17 @@ fn the_block_s_letter_stands_out_of_the_bar_by_the_block() {
         let svg = svg(name, rod, offset, deg);
         let plate = Plate::read(&svg);
         let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
-        let c = text_centre(&plate, "label-link-c").unwrap_or_else(|| panic!("{at}: no c"));
-        let bar = path(&svg, "link-frame");
+        // Where a detail holds the block, c is lettered there.
+        let (c, view) = match text_centre(&plate, "label-link-c") {
+            Some(c) => (c, ""),
+            None => (text_centre(&plate, "detail-label-link-c"), "detail-")
+                .0
+                .map(|c| (c, "detail-"))
+                .unwrap_or_else(|| panic!("{at}: no c")),
+        };
+        let bar = path(&svg, &format!("{view}link-frame"));
         assert!(!within(&bar, c), "{at}: c inside d's bar at {c:?}");
-        let block = path(&svg, "block-slider");
+        let block = path(&svg, &format!("{view}block-slider"));
         let near = (0..block.len())
             .map(|i| to_segment(c, block[i], block[(i + 1) % block.len()]))
             .fold(f64::INFINITY, f64::min);
@@ -232,6 +239,223 @@ fn a_fixed_pin_s_ground_mark_stands_clear_of_its_links_and_out_of_the_bar() {
             let mid = (0.5 * (base[0].0 + base[1].0), 0.5 * (base[0].1 + base[1].1));
             for p in [base[0], base[1], mid] {
                 assert!(!within(&bar, p), "{at}: {pin}'s base inside d's bar");
+            }
+        }
+    }
+}
+
+/// The box (x0, x1, y0, y1) of every path of the bearing group `id`: its
+/// pedestal, base and hatching.
+fn bearing_box(svg: &str, id: &str) -> Option<(f64, f64, f64, f64)> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let group = &svg[at..at + svg[at..].find("</g>")?];
+    let points: Vec<(f64, f64)> = (group.split(" d=\"").skip(1))
+        .flat_map(|rest| {
+            let d = rest.split('"').next().unwrap_or("");
+            let n: Vec<f64> = (d.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+                .filter_map(|t| t.parse().ok())
+                .collect();
+            n.chunks(2).map(|p| (p[0], p[1])).collect::<Vec<_>>()
+        })
+        .collect();
+    Some(crate::common::bounds_of(&points))
+}
+
+#[test]
+fn the_fixed_pins_carry_bearings_clear_of_the_centres_dots() {
+    // The twelfth review: inversion 2's O_ac dot fell on the hatching of
+    // O_ab's bearing (the default, and l = 3.56 r, e = −1.74 r at 0°),
+    // read as part of the bearing; inversion 3's trunnion O_bc had no
+    // bearing where its rod b was hatched while O_ab had one. The pins of
+    // the fixed bar carry a bearing each or neither (both where the notes
+    // name them), and no centre's dot off the pin stands within 3 units
+    // of a bearing's pedestal, base or hatching.
+    const CLEAR: f64 = 3.0;
+    const AT_PIN: f64 = 8.0;
+    for (name, rod, offset, deg) in [
+        (I2, 3.0, 0.0, 60.0),
+        (I2, 3.56, -1.74, 0.0),
+        (I2, 3.56, -1.74, 180.0),
+        (I3, 3.0, 0.0, 60.0),
+        (I3, 34.9, 0.0, 180.0),
+        (I3, 1.06, 0.0, 180.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
+        let (_, pins) = fixed_bar(name);
+        let text: String = read_text(&svg).split_whitespace().collect();
+        let named = text.contains("isshownfixedbythebearingsatitspins");
+        for prefix in ["", "detail-"] {
+            let drawn = pins.map(|pin| tag(&svg, &format!("{prefix}bearing-{pin}")).is_some());
+            if prefix.is_empty() && named {
+                assert!(drawn[0] && drawn[1], "{at}: notes name bearings, {drawn:?}");
+            }
+            if svg.contains(&format!("id=\"{prefix}link-frame\"")) && (drawn[0] || drawn[1]) {
+                let seen = |pin: &str| pin_at(&svg, &format!("{prefix}point-{pin}")).is_some();
+                if seen(pins[0]) && seen(pins[1]) {
+                    assert!(drawn[0] == drawn[1], "{at}: {prefix} bearings {drawn:?}");
+                }
+            }
+        }
+        for prefix in ["", "detail-"] {
+            for pin in ["C", "B", "A"] {
+                let Some(b) = bearing_box(&svg, &format!("{prefix}bearing-{pin}")) else {
+                    continue;
+                };
+                let centre = pin_at(&svg, &format!("{prefix}point-{pin}"));
+                for key in ["O-bd", "O-ac"] {
+                    for kind in ["point", "centre"] {
+                        let id = format!("{prefix}{kind}-{key}");
+                        let (Some(x), Some(y)) = (
+                            crate::common::attr(&svg, &id, "cx"),
+                            crate::common::attr(&svg, &id, "cy"),
+                        ) else {
+                            continue;
+                        };
+                        let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
+                        if centre.is_some_and(|p| (p.0 - x).hypot(p.1 - y) <= AT_PIN) {
+                            continue;
+                        }
+                        let on = x > b.0 - CLEAR
+                            && x < b.1 + CLEAR
+                            && y > b.2 - CLEAR
+                            && y < b.3 + CLEAR;
+                        assert!(!on, "{at}: {id} on {prefix}bearing-{pin}");
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// The centre of the pin `id` (a circle) on the page.
+fn pin_at(svg: &str, id: &str) -> Option<(f64, f64)> {
+    let cx = crate::common::attr(svg, id, "cx")?.parse().ok()?;
+    let cy = crate::common::attr(svg, id, "cy")?.parse().ok()?;
+    Some((cx, cy))
+}
+
+#[test]
+fn the_crowded_pins_detail_shows_the_block_and_the_bar_and_letters_c() {
+    // The twelfth review (2.5): at l = 1.02 r, 180° inversion 2's ×30
+    // detail showed neither the block c nor the bar d (the block, drawn
+    // at its world size, was wider than the detail) and the main view
+    // set c inside d's bar beside the block. The detail draws the whole
+    // block inside its frame and the bar, and letters c there, out of the
+    // bar; the main view sets no c inside the bar.
+    for (name, rod) in [(I2, 1.02), (I2, 1.07), (I3, 1.03), (I3, 1.08)] {
+        let svg = svg(name, rod, 0.0, 180.0);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} l = {rod}, 180°");
+        let border = path(&svg, "detail-border");
+        let block = path(&svg, "detail-block-slider");
+        for p in &block {
+            assert!(
+                within(&border, *p),
+                "{at}: the block runs out of the detail"
+            );
+        }
+        assert!(
+            tag(&svg, "detail-link-frame").is_some(),
+            "{at}: no bar in the detail"
+        );
+        let c = text_centre(&plate, "detail-label-link-c")
+            .unwrap_or_else(|| panic!("{at}: no c in the detail"));
+        assert!(
+            !within(&path(&svg, "detail-link-frame"), c),
+            "{at}: c in d's bar"
+        );
+        if let Some(c) = text_centre(&plate, "label-link-c") {
+            assert!(!within(&path(&svg, "link-frame"), c), "{at}: c in d's bar");
+        }
+    }
+}
+
+#[test]
+fn d_s_letter_stands_clear_of_a_pin_on_its_bar() {
+    // The twelfth review: at 0° (l = 1.07 r, 1.02 r in inversion 2,
+    // 1.06 r and 1.08 r in inversion 3, and the Coriolis figures) d's
+    // letter stood over the middle pin B, "d O_ab" (or "d B") read as one
+    // label. It stands two em (34 units) at least from B's centre.
+    const APART: f64 = 34.0;
+    for (name, rod) in [
+        (I2, 1.07),
+        (I2, 1.02),
+        (I3, 1.06),
+        (I3, 1.08),
+        (FigureName::CoriolisInversion2, 1.02),
+        (FigureName::CoriolisInversion3, 1.08),
+    ] {
+        let svg = svg(name, rod, 0.0, 0.0);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} l = {rod}, 0°");
+        let d = text_centre(&plate, "label-link-d").unwrap_or_else(|| panic!("{at}: no d"));
+        let b = pin_at(&svg, "point-B").unwrap_or_else(|| panic!("{at}: no B"));
+        let gap = (d.0 - b.0).hypot(d.1 - b.1);
+        assert!(gap >= APART, "{at}: d {gap:.1} from B");
+    }
+}
+
+#[test]
+fn the_coriolis_mechanism_letters_c_by_its_block_and_shows_a_fixed() {
+    // The twelfth review (2.5): the Coriolis figures' mechanism at 0°
+    // set c in the bar's tail beyond the block, and inversion 3's fixed
+    // rod, inside the slot unhatched, had no mark at A showing it fixed.
+    // c stands out of d's bar within a letter's height of the block, and
+    // inversion 3's rod shows three strokes of hatching or both its pins
+    // B and A carry a bearing.
+    const BY: f64 = 17.0;
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion2, 1.02, 0.0),
+        (FigureName::CoriolisInversion2, 1.05, 90.28),
+        (FigureName::CoriolisInversion3, 1.08, 0.0),
+        (FigureName::CoriolisInversion3, 1.03, 0.0),
+        (FigureName::CoriolisInversion3, 3.0, 60.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} l = {rod}, {deg}°");
+        let c = text_centre(&plate, "label-link-c").unwrap_or_else(|| panic!("{at}: no c"));
+        assert!(!within(&path(&svg, "link-frame"), c), "{at}: c in d's bar");
+        let block = path(&svg, "block-slider");
+        let near = (0..block.len())
+            .map(|i| to_segment(c, block[i], block[(i + 1) % block.len()]))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near <= BY, "{at}: c {near:.1} from the block");
+        if name == FigureName::CoriolisInversion3 && strokes(&svg, "hatch-rod-") < 3 {
+            for pin in ["B", "A"] {
+                let id = format!("bearing-{pin}");
+                assert!(tag(&svg, &id).is_some(), "{at}: no bearing at {pin}");
+            }
+        }
+    }
+}
+
+#[test]
+fn no_stroke_of_the_fixed_rod_s_hatching_stands_inside_d_s_bar() {
+    // The twelfth review (2.5): at l = 54.1 r, 90.04° the Coriolis
+    // figure of inversion 3 hatched b inside the moving bar d, which read
+    // as fixed. No stroke of the fixed bar's hatching has its middle
+    // inside d's bar.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion3, 54.1, 90.04),
+        (FigureName::CoriolisInversion3, 54.1, 269.12),
+        (I3, 54.1, 90.04),
+        (I3, 3.0, 60.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let at = format!("{name:?} l = {rod}, {deg}°");
+        let bar = path(&svg, "link-frame");
+        for k in 0.. {
+            let Some(d) = crate::common::attr(&svg, &format!("hatch-rod-{k}"), "d") else {
+                break;
+            };
+            let n: Vec<f64> = (d.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+                .filter_map(|t| t.parse().ok())
+                .collect();
+            for s in n.chunks(4).filter(|s| s.len() == 4) {
+                let middle = (0.5 * (s[0] + s[2]), 0.5 * (s[1] + s[3]));
+                assert!(!within(&bar, middle), "{at}: a stroke inside d's bar");
             }
         }
     }

@@ -164,12 +164,13 @@ fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
 /// The page, the panel's rectangle and the world it shows: the world of
 /// every place the chain reaches over a turn sets the scale (so that it
 /// does not change with θ), and it is what the panel shows, except in
-/// Inversion 2, whose panel shows, at that scale, what is
+/// Inversions 2 and 3, whose panel shows, at that scale, what is
 /// drawn at this pose (the links, the block, the path and the centres
 /// within the turn's world), on the figure's own page narrowed to it, at
-/// least [`crate::scene::LEAST_FITTED_WIDTH`] wide (Inversion 2's frame
-/// sweeps a disc about C over a turn: drawn at one pose it left the top
-/// 200 and the left 450 units of its page empty).
+/// least [`crate::scene::LEAST_FITTED_WIDTH`] wide (their bar d sweeps a
+/// disc about C or B over a turn: drawn at one pose inversion 2 left the
+/// top 200 and the left 450 units of its page empty, inversion 3 at
+/// l = 1.65 r, e = 0.582 r the right 40 % of its 1520).
 fn layout(
     ctx: &Ctx,
     chain: &InvertedChain,
@@ -179,8 +180,8 @@ fn layout(
     let turn = padded(extent(m, chain), 0.1);
     let page = ctx.page();
     let full = super::fitted_rect(&page, &turn, NOTES_HEIGHT);
-    if chain.inversion() != Inversion::Crank {
-        // The other three fill their turn's world at every pose.
+    if !matches!(chain.inversion(), Inversion::Crank | Inversion::Rod) {
+        // The other two fill their turn's world at every pose.
         return Ok((page, full, turn));
     }
     let size = turn.max() - turn.min();
@@ -215,19 +216,23 @@ fn padded(frame: Frame, share: f64) -> Frame {
     )
 }
 
-/// The world frame of what Inversion 2 draws at `pose`, grown by `pad`:
-/// the links, the block, the path of A about B, room past O_bd for O_cd
+/// The world frame of what Inversion 2 or 3 draws at `pose`, grown by
+/// `pad`: the links, the block, the driven pin's path about B (A's in
+/// inversion 2, C's in inversion 3), room past O_bd for O_cd
 /// at infinity (`beyond`), and the centres O_bd and O_ac where they lie within the
 /// turn's world `turn` grown by a quarter of its size each way (a centre
 /// beyond is an arrow at the edge).
 fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64, beyond: bool) -> Frame {
     let (lh, hh) = block_size(m);
-    let l = m.rod();
     let q = parts(m, pose);
     let reach = padded(*turn, 0.25);
     let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
-    // The path of A about B.
+    // The driven pin's path about B: A's (inversion 2), C's (inversion 3).
+    let l = match pose.inversion() {
+        Inversion::Rod => m.crank(),
+        _ => m.rod(),
+    };
     points.push(q.b + Vector::new(l, l));
     points.push(q.b - Vector::new(l, l));
     for (p, q) in [(Link::B, Link::D), (Link::A, Link::C)] {
@@ -287,6 +292,18 @@ fn caption(ctx: &Ctx, inversion: Inversion, width: f64) -> (String, String) {
     }
 }
 
+/// The inversion's whole title as the notes' opening sentence, where a
+/// detail stands below the main view: `Inversion 2: link a fixed,
+/// rotating block: … . `
+fn titled(inversion: Inversion) -> String {
+    format!(
+        "Inversion {}: link *{}* fixed, {}. ",
+        inversion.number(),
+        letter(inversion.fixed()),
+        inversion.name()
+    )
+}
+
 /// The height of the notes below the drawing, page units.
 const NOTES_HEIGHT: f64 = 44.0;
 
@@ -296,20 +313,27 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let pose = chain.pose(ctx.angle);
     let (page, rect, world) = layout(ctx, &chain, &pose)?;
     let (caption, named) = caption(ctx, inversion, rect.width);
-    let mut plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?
-        .with_caption(&caption);
+    let plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
     let map = *plot.map();
     let block = super::chains::block_on_page(block_size(&m), map.scale());
     let centres = *pose.centres();
     let detail = crank_detail(ctx, &pose, &rect, map.scale())?;
+    // Under a detail, the title opens the notes below it: set between the
+    // main view and the detail it split the figure in two.
+    let (mut plot, named) = match detail {
+        None => (plot.with_caption(&caption), named),
+        Some(_) => (plot, titled(inversion)),
+    };
     let canvas = Canvas::new(map, map.world_frame(&plot.area()));
     let region = detail.as_ref().map(|(region, _, _)| *region);
     let mut d = Drawing::new(m, &pose, canvas, block).holding(region);
     let together = d.draw(&pose, &centres);
-    // The fixed bar is read where its crank is seen: in the detail, if any.
+    // The notes call the fixed bar hatched where both views hatch it: in
+    // a long rod's main view the rod lay in d's bar unhatched while its
+    // crank's detail hatched it, and the notes said hatched (l = 50 r).
     let hatched = detail
         .as_ref()
-        .map_or(d.hatched, |(_, _, strokes)| *strokes);
+        .map_or(d.hatched, |(_, _, strokes)| d.hatched.min(*strokes));
     if let Some((region, _, _)) = &detail {
         super::coriolis::mark_window(&mut d.s, "mechanism", region);
     }
@@ -478,7 +502,18 @@ fn crank_detail(
         Some(wanted) => window(ctx, "detail", (centre, wanted), detail_rect, scale)?,
     };
     let map = *plot.map();
-    let block = super::chains::block_on_page(block_size(&m), map.scale());
+    let block = match wanted {
+        None => super::chains::block_on_page(block_size(&m), map.scale()),
+        // The crowded pins' detail enlarges where they stand, not the
+        // block and d's slot about them: drawn at their size in the main
+        // view, they show in it (at l = 1.02 r, 180° the block ×30 was
+        // wider than the detail, which showed neither block nor bar).
+        Some(_) => {
+            let main = super::chains::block_on_page(block_size(&m), scale);
+            let k = scale / map.scale();
+            (main.0 * k, main.1 * k)
+        }
+    };
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
     let mut d = Drawing::new(m, pose, canvas, block);
     d.draw(pose, pose.centres());
@@ -491,17 +526,36 @@ fn crank_detail(
 
 /// The chain at `pose` drawn on `canvas`: the driven pin's path, the
 /// frame d (guides or the slotted bar), the fixed link hatched, the links
-/// and the block lettered a, b, c, d; for a figure that draws more on it
-/// (the Coriolis polygons' mechanism). The block is drawn no smaller on
-/// the page than Fig. 60's.
-pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -> Canvas {
+/// and the block lettered a, b, c, d, by the rules of the inversions'
+/// own figures (the fixed pins' bearings, the block's letter out of the
+/// bar); for a figure that draws more on it (the Coriolis polygons'
+/// mechanism). The block is drawn no smaller on the page than Fig. 60's.
+pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -> LinksDrawn {
     let block = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
     let mut d = Drawing::new(m, pose, canvas, block);
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
+    d.letter_bar();
     d.links(Vector::zeros());
-    d.s
+    LinksDrawn {
+        b_foot: d.b_bearing.then_some(d.b_foot),
+        a_way: d.pin_a_way,
+        canvas: d.s,
+    }
+}
+
+/// The chain as [`draw_links`] drew it: the canvas, and what the figure
+/// drawing more on it keeps clear of.
+pub(super) struct LinksDrawn {
+    /// The canvas drawn on.
+    pub canvas: Canvas,
+    /// The side B's bearing stands on, if one is drawn (ω's arc about B
+    /// keeps off it).
+    pub b_foot: Option<Foot>,
+    /// The way A's letter is tried first (the other side of the bar from
+    /// the block's letter), if the block's letter stands beside it.
+    pub a_way: Option<Vector>,
 }
 
 /// The half width (world units) of the slotted bar d that [`draw_links`]
@@ -550,12 +604,12 @@ struct Drawing {
     /// letters: a few units apart here, their letters would stand by the
     /// wrong pin.
     held: Option<Frame>,
-    /// Whether this is the inversion's own figure ([`Drawing::draw`]),
-    /// whose fixed pins' ground marks stand away from the links meeting
-    /// there and whose block is lettered beside it outside the bar; the
-    /// Coriolis figures' mechanism ([`draw_links`]) keeps its bearings
-    /// below and its block's letter at the block's end.
-    drafted: bool,
+    /// The foot of the bearing at B ([`Drawing::foot`]), the side it
+    /// stands or would stand on.
+    b_foot: Foot,
+    /// Whether a bearing is drawn at B (inversion 3 draws none where its
+    /// rod is hatched).
+    b_bearing: bool,
     /// The strokes of hatching drawn on the fixed bar (inversions 2 and
     /// 3): fewer than [`FIXED_STROKES`] and its pins carry bearings and the
     /// notes say so.
@@ -567,6 +621,19 @@ struct Drawing {
     /// stands beside the block: the other side of the bar, towards C (on
     /// the same side the two read as one label, "O_bc c").
     pin_a_way: Option<Vector>,
+    /// The centres drawn as dots where they are finite (O_bd, O_ac),
+    /// which a bearing's pedestal and hatching keep clear of.
+    dots: Vec<Point>,
+    /// Kennedy's lines where the figure draws them ([`Drawing::draw`]),
+    /// which the fixed link's hatching keeps clear of as of a moving link:
+    /// the layout opened the strokes they crossed after the scene had
+    /// counted them, and the notes called hatched a link that showed
+    /// fewer than [`FIXED_STROKES`].
+    kennedy: Vec<Seg>,
+    /// The way the normal at A is drawn ([`Drawing::normal_way`]; zero
+    /// where none is): the block's letter stands on its side of the bar,
+    /// which A's bearing leaves clear.
+    normal: Vector,
 }
 
 /// Where the block's letter stands beside it, in half lengths of the
@@ -578,10 +645,14 @@ const BLOCK_LETTER_ALONG: f64 = 0.75;
 /// lettered beyond its end, outside the bar; else beside it.
 const AT_BAR_END: f64 = 4.0;
 
-/// The least strokes of hatching that show a fixed bar fixed; with fewer
-/// (the bar lying inside d's slot, every stroke on d's outline), the
-/// notes name the bearings at its pins instead.
-const FIXED_STROKES: usize = 3;
+/// The least strokes of hatching the scene draws for the notes to call a
+/// fixed bar hatched; with fewer (the bar lying inside d's slot, every
+/// stroke on d's outline, or a short bar), the notes name the bearings at
+/// its pins instead. Twice the three the plate check asks to see: the
+/// layout opens strokes under the letters crowding a short bar after the
+/// scene has counted them (inversion 2's default crank, 49 units between
+/// its bearings, counted 4 and showed 2 under O_ab's letter).
+const FIXED_STROKES: usize = 6;
 
 /// A bearing's foot within this angle (radians, 60°) of a link meeting
 /// at its pin is set on another side: the pedestal spans 30° each side
@@ -593,6 +664,10 @@ const FOOT_CLEAR: f64 = std::f64::consts::FRAC_PI_3;
 /// ([`BEARING_FOOT`], as the layout draws it) and the first 3 units of
 /// its hatching, and half the foot's length.
 const FOOT_REACH: (f64, f64) = (BEARING_FOOT.0 + 3.0, BEARING_FOOT.1);
+
+/// How far a bearing's hatching reaches beyond [`FOOT_REACH`]'s depth,
+/// page units (the strokes stand 6 units beyond the foot).
+const HATCH_DEPTH: f64 = 3.0;
 
 /// The outline of the turning frame d with a slot for the block: a bar
 /// `w` wide each side of its middle line (the block's half height, so
@@ -623,6 +698,49 @@ fn band(q: &Parts, w: f64) -> Vec<Point> {
     ]
 }
 
+/// The centres drawn as dots where they are finite: O_bd and O_ac.
+fn dots(centres: &ChainCentres) -> Vec<Point> {
+    [(Link::B, Link::D), (Link::A, Link::C)]
+        .into_iter()
+        .filter_map(|(p, q)| match centres.centre(p, q) {
+            Some(Intersection::Point(x)) => Some(x),
+            _ => None,
+        })
+        .collect()
+}
+
+/// How far a dot is kept from a bearing's pedestal and hatching, page
+/// units: a dot's radius and a stroke's width, so that it reads apart.
+const DOT_CLEAR: f64 = 5.0;
+
+/// Lines filling the slotted bar of [`band`] (`w` its half width): its
+/// middle line and the lines halfway to its sides, along its leg and its
+/// arm. A stroke of hatching that starts inside the bar meets one of
+/// them (they stand half a half width apart, less than a stroke's
+/// length), so that a fixed link lying in the bar keeps no stroke there:
+/// at l = 54.1 r, 90° inversion 3's rod b, running inside d's bar, was
+/// hatched inside it and the moving bar read as fixed.
+fn band_fill(q: &Parts, w: f64) -> Vec<Seg> {
+    let (c, t, f, u) = (q.c, q.t, q.f, q.u);
+    let leg = t - c;
+    let shares = [-0.5, 0.0, 0.5];
+    if leg.norm() == 0.0 {
+        let (s, v) = (c - u * w, q.v);
+        return shares.map(|k| (s + v * (k * w), f + v * (k * w))).to_vec();
+    }
+    let g = leg / leg.norm();
+    let s = c - g * w;
+    (shares.iter())
+        .flat_map(|k| {
+            let (across_leg, across_arm) = (u * (k * w), g * (k * w));
+            [
+                (s + across_leg, t + across_leg + g * w),
+                (t - u * w + across_arm, f + across_arm),
+            ]
+        })
+        .collect()
+}
+
 /// The middle of `p` and `q`.
 fn mid(p: Point, q: Point) -> Point {
     Point::from((p.coords + q.coords) * 0.5)
@@ -641,10 +759,14 @@ impl Drawing {
             block,
             q,
             held: None,
-            drafted: false,
+            b_foot: Foot::Below,
+            b_bearing: false,
             hatched: 0,
             trunnion: None,
             pin_a_way: None,
+            dots: dots(pose.centres()),
+            kennedy: Vec::new(),
+            normal: Vector::zeros(),
         }
     }
 
@@ -667,11 +789,13 @@ impl Drawing {
     /// hatched, the links and the centres; the centres' names that share
     /// a lettered point's place ([`Drawing::centres`]).
     fn draw(&mut self, pose: &InversionPose, centres: &ChainCentres) -> Vec<String> {
-        self.drafted = true;
+        self.kennedy = kennedy_lines(&self.q, centres);
+        self.normal = self.normal_way(centres);
         self.path(pose.inversion());
         self.frame(pose);
         self.hatch();
-        self.links(self.normal_way(centres));
+        self.letter_bar();
+        self.links(self.normal);
         self.centres(centres)
     }
 
@@ -694,15 +818,21 @@ impl Drawing {
     }
 
     /// The foot a fixed pin `p`'s bearing stands on: below, unless a link
-    /// meeting there (towards `meeting`) runs within [`FOOT_CLEAR`] of it
-    /// or its base lies inside d's slotted bar; then the first side clear
-    /// of both, else the side farthest from the links with its base out of
-    /// the bar, else the side farthest from the links. The Coriolis
-    /// figures' mechanism keeps it below.
+    /// meeting there (towards `meeting`) runs within [`FOOT_CLEAR`] of it,
+    /// its base lies inside d's slotted bar or a centre's dot (O_bd, O_ac)
+    /// stands on its pedestal or hatching ([`DOT_CLEAR`]); then the first
+    /// side clear of all three, else the best side, its base out of the
+    /// bar first, then clear of the dots, then farthest from the links
+    /// (the default of inversion 2 hung O_ab's bearing from above, O_ac's
+    /// dot on its hatching, read as part of the bearing). The inversions'
+    /// figures and the Coriolis figures' mechanism draw by this one rule
+    /// (the latter kept every bearing below, B's in d's slot).
     fn foot(&self, p: Point, meeting: &[Point]) -> Foot {
-        if !self.drafted {
-            return Foot::Below;
-        }
+        self.foot_clear(p, meeting).0
+    }
+
+    /// [`Drawing::foot`], and whether its base stands out of d's bar.
+    fn foot_clear(&self, p: Point, meeting: &[Point]) -> (Foot, bool) {
         let map = *self.s.transform();
         let at = map.apply(p);
         let outline: Vec<Point> = match self.slotted() {
@@ -722,25 +852,41 @@ impl Drawing {
                 .map(|w| w.dot(&down).clamp(-1.0, 1.0).acos())
                 .fold(std::f64::consts::PI, f64::min)
         };
+        // The base as drawn and the first units of its hatching.
         let out = |f: Foot| {
             let (down, along) = f.axes();
-            let base = at + down * depth;
-            [base, base + along * half, base - along * half]
-                .iter()
-                .all(|x| !inside_outline(&outline, *x))
+            [BEARING_FOOT.0, depth].iter().all(|&deep| {
+                let base = at + down * deep;
+                [base, base + along * half, base - along * half]
+                    .iter()
+                    .all(|x| !inside_outline(&outline, *x))
+            })
+        };
+        // The centres' dots off the pin (one on it is named with it).
+        let dots: Vec<Point> = (self.dots.iter())
+            .map(|x| map.apply(*x))
+            .filter(|x| (x - at).norm() > CROWDED)
+            .collect();
+        let clear = |f: Foot| {
+            let (down, along) = f.axes();
+            dots.iter().all(|x| {
+                let (d, s) = ((x - at).dot(&down), (x - at).dot(&along));
+                d < -DOT_CLEAR || d > depth + HATCH_DEPTH + DOT_CLEAR || s.abs() > half + DOT_CLEAR
+            })
         };
         let feet = [Foot::Below, Foot::Above, Foot::Left, Foot::Right];
-        let score = |f: Foot| (out(f), spread(f));
+        let score = |f: Foot| (out(f), clear(f), spread(f));
         // Of sides equally good, the first (below) is kept.
-        (feet.into_iter())
-            .find(|&f| out(f) && spread(f) >= FOOT_CLEAR)
+        let foot = (feet.into_iter())
+            .find(|&f| out(f) && clear(f) && spread(f) >= FOOT_CLEAR)
             .or_else(|| {
                 (feet.into_iter().rev()).max_by(|&f, &g| {
                     let (a, b) = (score(f), score(g));
-                    a.0.cmp(&b.0).then(a.1.total_cmp(&b.1))
+                    (a.0, a.1).cmp(&(b.0, b.1)).then(a.2.total_cmp(&b.2))
                 })
             })
-            .unwrap_or(Foot::Below)
+            .unwrap_or(Foot::Below);
+        (foot, out(foot))
     }
 
     /// The path of the driven link's far pin: a circle, or the hand
@@ -812,8 +958,6 @@ impl Drawing {
             } else {
                 self.s.link("frame", self.bar());
             }
-            let at = self.bar_letter();
-            self.s.letter("link-d", at, "*d*", TextSize::Letter);
             return;
         }
         let (near, far) = ends(&self.m);
@@ -835,28 +979,80 @@ impl Drawing {
     }
 
     /// Where the turning bar d is lettered: 0.85 of the way from T to its
-    /// far end, or, where the block stands there (at the outer dead
-    /// centre the block rides at the bar's end, and a letter there names
-    /// the block), the middle of the longer run of bar clear of the block
-    /// on either side of it.
-    fn bar_letter(&self) -> Point {
+    /// far end, or, where something stands on the bar there, the middle
+    /// of the longest run of bar clear of it: the block (at the outer dead
+    /// centre it rides at the bar's end, and a letter there names the
+    /// block), the pins B and C where they lie on the bar's line (at
+    /// the dead centres B lies in the bar, and the letter over it read
+    /// "d O_ab" as one label), two em each way, and, an em and a half
+    /// each way, the middles of the links lying along it, where their
+    /// letters stand (beside a's, d read "a d"); none where no run is clear.
+    fn bar_letter(&self) -> Option<Point> {
         let q = &self.q;
-        let (lh, _) = self.block;
+        let (lh, hh) = self.block;
         let along = |p: Point| (p - q.t).dot(&q.u);
-        let (end, block) = (along(q.f), along(q.a));
-        let clear = lh + self.s.world(LETTER_CLEAR);
-        let usual = 0.85 * end;
-        if (usual - block).abs() >= clear {
-            return q.t + q.u * usual;
+        let clear = self.s.world(LETTER_CLEAR);
+        // Two em beyond the block, as about a pin (one left d's letter
+        // 27 units from A's pin at l = 2.65 r, e = 1.44 r, 89.28°, where
+        // it read as the block's).
+        let mut taken = vec![(along(q.a) - lh - 2.0 * clear, along(q.a) + lh + 2.0 * clear)];
+        let on_bar = |p: Point| (p - q.t).dot(&q.v).abs() <= hh + clear;
+        // Two em about a pin: its letter stands beside it.
+        for p in [q.b, q.c] {
+            if on_bar(p) {
+                taken.push((along(p) - 2.0 * clear, along(p) + 2.0 * clear));
+            }
         }
-        let before = (0.0, (block - clear).max(0.0));
-        let after = ((block + clear).min(end), end);
-        let run = if before.1 - before.0 >= after.1 - after.0 {
-            before
-        } else {
-            after
+        // The letters of links lying along the bar, at their middles.
+        for (p, r) in [(q.c, q.b), (q.b, q.a)] {
+            if on_bar(p) && on_bar(r) {
+                let x = along(mid(p, r));
+                taken.push((x - 1.5 * clear, x + 1.5 * clear));
+            }
+        }
+        let end = along(q.f);
+        let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
+        let usual = 0.85 * end;
+        if free(usual) {
+            return Some(q.t + q.u * usual);
+        }
+        // The runs between what is taken, the longest kept.
+        let mut cuts: Vec<f64> = vec![0.0, end];
+        cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
+        let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(0.0, end)).collect();
+        cuts.sort_by(f64::total_cmp);
+        (cuts.iter().copied())
+            .zip(cuts.iter().copied().skip(1))
+            .filter(|(lo, hi)| free(0.5 * (lo + hi)))
+            .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
+            .map(|run| q.t + q.u * (0.5 * (run.0 + run.1)))
+    }
+
+    /// The turning bar d lettered ([`Drawing::bar_letter`]); where no run
+    /// of it is clear (the links along it at a dead centre on a small
+    /// page), by the fixed bar's middle on the side of B's bearing,
+    /// between the two bearings, the other side holding the links'
+    /// letters and the pins' (at l = 1.07 r, 0° on a page of 420 every
+    /// place along the bar stood within an em of one).
+    fn letter_bar(&mut self) {
+        if self.fixed == Link::D {
+            return;
+        }
+        if let Some(at) = self.bar_letter() {
+            self.s.letter("link-d", at, "*d*", TextSize::Letter);
+            return;
+        }
+        let q = &self.q;
+        let at = match self.fixed {
+            Link::A => mid(q.c, q.b),
+            _ => mid(q.b, q.a),
         };
-        q.t + q.u * (0.5 * (run.0 + run.1))
+        let (down, _) = self.b_foot.axes();
+        // The page's y runs down, the world's up.
+        let way = Vector::new(down.x, -down.y);
+        let d = RichText::parse("*d*");
+        self.s
+            .label_toward("label-link-d", at, way, d, TextSize::Letter);
     }
 
     /// The segments of the links that move, which the fixed link's
@@ -876,6 +1072,8 @@ impl Drawing {
             let outline = band(&self.q, self.block.1);
             let sides = outline.iter().zip(outline.iter().cycle().skip(1));
             moving.extend(sides.map(|(p, q)| (*p, *q)));
+            moving.extend(band_fill(&self.q, self.block.1));
+            moving.extend(self.kennedy.iter().copied());
         } else if self.fixed != Link::D {
             moving.extend(bar.iter().copied().zip(bar.iter().copied().skip(1)));
         }
@@ -903,20 +1101,33 @@ impl Drawing {
                 self.s.bearing_on("C", c, foot);
                 let foot = self.foot(b, &[c, a]);
                 self.s.bearing_on("B", b, foot);
+                (self.b_foot, self.b_bearing) = (foot, true);
                 self.hatched = self.s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
             }
             Link::B => {
-                let foot = self.foot(b, &[c, a]);
-                self.s.bearing_on("B", b, foot);
                 self.hatched = self.s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
-                // The block's trunnion at A is in the fixed rod; a bearing
-                // there would crowd the block, save where the rod lies in
-                // d's slot unhatched and the bearings alone show it fixed.
-                if self.drafted && self.hatched < FIXED_STROKES {
-                    let (u, lh) = (self.q.u, self.block.0);
-                    let foot = self.foot(a, &[b, a + u * lh, a - u * lh]);
-                    self.s.bearing_on("A", a, foot);
-                    self.trunnion = Some(foot);
+                // The block's trunnion at A is a fixed pin as B is: the two
+                // carry a bearing each or neither (O_ab's alone read as
+                // the only fixed pin). Both where the rod is too little
+                // hatched to show it fixed; else the hatching alone (at
+                // most poses the bar about the block takes every side of
+                // A, a base inside it read as a pin on d, and a bearing
+                // beside it took the place of the block's letter, which
+                // went into the bar: l = 1.05 r, 89.17°).
+                let (u, lh) = (self.q.u, self.block.0);
+                let at_b = self.foot(b, &[c, a]);
+                // The side of the bar the block's letter is tried on first
+                // ([`Drawing::block_letter`]) is kept clear too.
+                let v = self.q.v;
+                let side = if self.normal.dot(&v) >= 0.0 { v } else { -v };
+                let by = a + side * self.block.1;
+                let at_a = self.foot(a, &[b, a + u * lh, a - u * lh, by]);
+                self.b_foot = at_b;
+                if self.hatched < FIXED_STROKES {
+                    self.s.bearing_on("B", b, at_b);
+                    self.b_bearing = true;
+                    self.s.bearing_on("A", a, at_a);
+                    self.trunnion = Some(at_a);
                 }
             }
             Link::C => {
@@ -939,7 +1150,7 @@ impl Drawing {
     /// a slotted bar in the inversion's own figure, c out of the bar by
     /// the block ([`Drawing::block_letter`], `normal` the way the normal
     /// at A is drawn): in the bar's empty end beyond the block it named
-    /// the bar.
+    /// the bar; left to the detail where it holds A.
     fn links(&mut self, normal: Vector) {
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         let corners = self.corners;
@@ -958,7 +1169,13 @@ impl Drawing {
         }
         self.s.link_letter("link-b", (b, a), "*b*");
         let v = self.q.v;
-        if self.drafted && self.slotted() {
+        if self.held(self.q.a) {
+            // The detail letters the block where it enlarges it: here, by
+            // pins a few units apart, c stood in d's bar beside the block
+            // (l = 1.02 r, 180°).
+            return;
+        }
+        if self.slotted() {
             let (at, out) = self.block_letter(normal);
             if out != self.q.u {
                 self.pin_a_way = Some(-out - self.q.u);
@@ -1006,24 +1223,34 @@ impl Drawing {
     /// (on AB and the normal at C).
     fn kennedy(&mut self, o_bd: Intersection, o_ac: Intersection) {
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
-        let shown = *self.s.frame();
         if let Intersection::Point(d) = o_bd {
-            produced(&mut self.s, "line-CB-O-bd", c, b, d);
-            // Off the page, the line stops short of the edge, where O_cd's
-            // arrow and letter continue it.
-            let end = match shown.clip_segment(a, d) {
-                Some((_, edge)) if !shown.contains(d) && (edge - a).norm() > 0.0 => {
-                    let u = (edge - a).normalize();
-                    let back = self.s.world(EDGE_ROOM).min(0.5 * (edge - a).norm());
-                    edge - u * back
-                }
-                _ => d,
-            };
+            // Off the page, both lines stop short of the edge, where
+            // O_bd's arrow ("to O_bd", on CB produced) and O_cd's continue
+            // them: CB produced ran on to the edge past the arrow's head.
+            let from = if (d - b).dot(&(b - c)) >= 0.0 { b } else { c };
+            let end = self.short_of_edge(from, d);
+            produced(&mut self.s, "line-CB-O-bd", c, b, end);
+            let end = self.short_of_edge(a, d);
             self.s.segment("line-A-O-bd", Role::Auxiliary, a, end);
         }
         if let Intersection::Point(x) = o_ac {
             produced(&mut self.s, "line-AB-O-ac", a, b, x);
             self.s.segment("line-C-O-ac", Role::Auxiliary, c, x);
+        }
+    }
+
+    /// The end of a line from `from` towards `to`: `to` on the page, else
+    /// [`EDGE_ROOM`] short of the page's edge (at most halfway back),
+    /// where an arrow at the edge continues it.
+    fn short_of_edge(&self, from: Point, to: Point) -> Point {
+        let shown = *self.s.frame();
+        match shown.clip_segment(from, to) {
+            Some((_, edge)) if !shown.contains(to) && (edge - from).norm() > 0.0 => {
+                let u = (edge - from).normalize();
+                let back = self.s.world(EDGE_ROOM).min(0.5 * (edge - from).norm());
+                edge - u * back
+            }
+            _ => to,
         }
     }
 
@@ -1216,7 +1443,7 @@ fn notes(
 
 /// How the notes say the fixed link is shown: hatched, or, for a fixed
 /// bar with fewer than [`FIXED_STROKES`] strokes of hatching (`hatched`,
-/// the bar lying in d's slot), by the bearings at its two pins.
+/// the bar lying in d's slot or short), by the bearings at its two pins.
 fn fixed_shown(inversion: Inversion, hatched: usize) -> String {
     let pins = match inversion {
         Inversion::Crank => "*O*_{ad} and *O*_{ab}",
@@ -1227,7 +1454,7 @@ fn fixed_shown(inversion: Inversion, hatched: usize) -> String {
         return "The fixed link is hatched.".to_string();
     }
     format!(
-        "The fixed link *{}*, too near the moving links here to hatch, is shown fixed by the bearings at its pins {pins}.",
+        "The fixed link *{}*, too short or too near the moving links here to hatch, is shown fixed by the bearings at its pins {pins}.",
         letter(inversion.fixed())
     )
 }
@@ -1235,10 +1462,34 @@ fn fixed_shown(inversion: Inversion, hatched: usize) -> String {
 /// The line `p q` produced to `x` on it, from whichever of p and q is
 /// nearer; nothing when x lies between them (the link itself shows it).
 fn produced(s: &mut Canvas, id: &str, p: Point, q: Point, x: Point) {
+    if let Some((from, x)) = produced_seg(p, q, x) {
+        s.segment(id, Role::Auxiliary, from, x);
+    }
+}
+
+/// The segment of the line `p q` produced to `x` ([`produced`]): from
+/// the nearer of p and q to x; none when x lies between them.
+fn produced_seg(p: Point, q: Point, x: Point) -> Option<Seg> {
     let along = (x - p).dot(&(q - p)) / (q - p).norm_squared();
     if (0.0..=1.0).contains(&along) {
-        return;
+        return None;
     }
-    let from = if along > 1.0 { q } else { p };
-    s.segment(id, Role::Auxiliary, from, x);
+    Some((if along > 1.0 { q } else { p }, x))
+}
+
+/// Kennedy's lines as [`Drawing::kennedy`] draws them (up to the
+/// centres, not short of the page's edge): CB produced and the normal at
+/// A to O_bd, AB produced and the normal at C to O_ac.
+fn kennedy_lines(q: &Parts, centres: &ChainCentres) -> Vec<Seg> {
+    let (c, b, a) = (q.c, q.b, q.a);
+    let mut lines = Vec::new();
+    if let Some(Intersection::Point(d)) = centres.centre(Link::B, Link::D) {
+        lines.extend(produced_seg(c, b, d));
+        lines.push((a, d));
+    }
+    if let Some(Intersection::Point(x)) = centres.centre(Link::A, Link::C) {
+        lines.extend(produced_seg(a, b, x));
+        lines.push((c, x));
+    }
+    lines
 }

@@ -10,7 +10,7 @@ use super::{GAP, MARGIN, MECHANISM_HEIGHT};
 use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{PageRect, RichText, Role, Shape, TextSize};
+use crate::figure::{Foot, PageRect, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::{Canvas, Marker};
 
@@ -100,7 +100,8 @@ pub(super) fn links_plot(
     if !whole {
         canvas = canvas.detail("detail-");
     }
-    let mut s = super::super::inversions::draw_links(m, pose, canvas);
+    let drawn = super::super::inversions::draw_links(m, pose, canvas);
+    let mut s = drawn.canvas;
     let engine = pose.engine_pose();
     let (c, b, a) = (
         pose.place(engine.c()),
@@ -113,10 +114,23 @@ pub(super) fn links_plot(
     let held = |at| whole && region.is_some_and(|r: Frame| r.contains(at));
     for (key, at) in [("C", c), ("B", b), ("A", a)] {
         if (whole || s.contains(at)) && !held(at) {
-            s.lettered(key, at, &format!("*{key}*"), Marker::Pin, c);
+            match drawn.a_way.filter(|_| key == "A") {
+                // Across the bar from the block's letter ("A c" read as
+                // one label).
+                Some(way) => {
+                    s.push(
+                        format!("point-{key}"),
+                        Role::Link,
+                        Shape::Pin { centre: at },
+                    );
+                    let text = RichText::parse(&format!("*{key}*"));
+                    s.label_toward(format!("label-{key}"), at, way, text, TextSize::Letter);
+                }
+                None => s.lettered(key, at, &format!("*{key}*"), Marker::Pin, c),
+            }
         }
     }
-    driver_turn(&mut s, pose, ctx.omega);
+    driver_turn(&mut s, pose, ctx.omega, drawn.b_foot);
     if let (true, Some(region)) = (whole, region) {
         mark_window(&mut s, "mechanism", &region);
     }
@@ -129,7 +143,7 @@ pub(super) fn links_plot(
 /// The driver's sense of turning: an arrowed arc about its fixed pin
 /// (the crank about B in inversion 3, the rod about B in inversion 2),
 /// lettered ω.
-pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
+pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_foot: Option<Foot>) {
     let engine = pose.engine_pose();
     let b = pose.place(engine.b());
     let tip = match pose.inversion() {
@@ -164,12 +178,19 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64) {
         let edge = (slot.0 + shift, slot.1 + shift);
         links.extend(crossings(edge, b, radius + s.world(OMEGA_MARGIN)));
     }
-    // B's bearing, drawn below it: its triangle and hatching span about
-    // 0.65 rad either side of straight down at the arc's radius (the
-    // arc and its head lay on the hatching at l = 1.05 r, 180° in
-    // inversion 2, where both links at B run to the left).
-    let down = -std::f64::consts::FRAC_PI_2;
-    links.extend([down - BEARING_SPREAD, down, down + BEARING_SPREAD]);
+    // B's bearing, where one is drawn, on the side `b_foot`: its triangle
+    // and hatching span about 0.65 rad either side of its axis at the
+    // arc's radius (the arc and its head lay on the hatching at
+    // l = 1.05 r, 180° in inversion 2, where both links at B run to the
+    // left). The page's y runs down, the world's up. Where none is (a
+    // hatched rod in inversion 3), the side it would take is no obstacle:
+    // kept, it left no clear place at l = 50 r, e = -39.2 r, 260°, where
+    // the arc ran along the hatched rod.
+    if let Some(foot) = b_foot {
+        let axis = foot.axes().0;
+        let down = (-axis.y).atan2(axis.x);
+        links.extend([down - BEARING_SPREAD, down, down + BEARING_SPREAD]);
+    }
     let heading = arm.y.atan2(arm.x);
     links.push(heading);
     let sweep = OMEGA_SWEEP * omega.signum();
