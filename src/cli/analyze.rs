@@ -248,11 +248,7 @@ fn request(args: &AnalyzeArgs) -> Result<AnalyzeRequest<'static>> {
     r.friction = (r.torque.and(Some(args.load.friction.unwrap_or(0.0)))).or(args.load.friction);
     (r.unit, r.force_unit) = (args.units.length.clone(), args.units.force.clone());
     r.engine = args.engine.given();
-    let chain = &args.chain;
-    r.slot_radius = chain.slot_radius;
-    r.links = chain.links()?;
-    r.assembly = chain.links.as_ref().map(|_| chain.assembly());
-    r.inversion = chain.inversion;
+    (r.slot_radius, r.links, r.assembly, r.inversion) = args.chain.fields()?;
     r.max_cells = args.guard.max_cells;
     Ok(r)
 }

@@ -40,6 +40,9 @@ pub struct ChainArgs {
     pub inversion: Option<u32>,
 }
 
+/// A request's chain fields: slot radius, links, assembly, inversion.
+pub type ChainFields = (Option<f64>, Option<[f64; 4]>, Option<Assembly>, Option<u32>);
+
 /// The assembly mode flag.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum AssemblyArg {
@@ -51,7 +54,7 @@ pub enum AssemblyArg {
 
 impl ChainArgs {
     /// The four lengths `--links` gives, `None` without it.
-    pub fn links(&self) -> Result<Option<[f64; 4]>> {
+    fn links(&self) -> Result<Option<[f64; 4]>> {
         let Some(spec) = &self.links else {
             return Ok(None);
         };
@@ -67,8 +70,16 @@ impl ChainArgs {
         }
     }
 
+    /// The chain fields of a request (`analyze`'s, `check`'s): the slot
+    /// radius, the four links, their assembly (with `--links` only) and
+    /// the inversion, each `None` where not given.
+    pub fn fields(&self) -> Result<ChainFields> {
+        let assembly = self.links.as_ref().map(|_| self.assembly());
+        Ok((self.slot_radius, self.links()?, assembly, self.inversion))
+    }
+
     /// The assembly mode `--assembly` names.
-    pub fn assembly(&self) -> Assembly {
+    fn assembly(&self) -> Assembly {
         match self.assembly {
             AssemblyArg::Open => Assembly::Open,
             AssemblyArg::Crossed => Assembly::Crossed,

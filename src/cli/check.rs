@@ -49,11 +49,7 @@ fn request(args: &CheckArgs) -> Result<CheckRequest> {
     let m = &args.mechanism;
     (r.crank, r.rod, r.offset) = (m.crank, m.rod, m.offset);
     (r.samples, r.tolerance) = (args.samples, args.tolerance);
-    let chain = &args.chain;
-    r.slot_radius = chain.slot_radius;
-    r.links = chain.links()?;
-    r.assembly = chain.links.as_ref().map(|_| chain.assembly());
-    r.inversion = chain.inversion;
+    (r.slot_radius, r.links, r.assembly, r.inversion) = args.chain.fields()?;
     r.max_cells = args.guard.max_cells;
     Ok(r)
 }
