@@ -10,7 +10,7 @@ use crate::py_err;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use slider_crank::chain::{CylindricChain, InvertedChain, QuadricChain};
-use slider_crank::table::{CheckRequest, CheckRows, DEFAULT_SAMPLES};
+use slider_crank::table::{CheckRequest, CheckRows};
 use slider_crank::{Assembly, Inversion, SliderCrank};
 
 fn mechanism(crank: f64, rod: f64, offset: f64) -> PyResult<SliderCrank> {
@@ -73,7 +73,7 @@ type CheckRow = (String, f64, f64, f64, usize, bool);
 /// quantity passed, and the rows (the library's request of `check`, as
 /// the command line fills it).
 #[pyfunction]
-#[pyo3(signature = (links=None, slot=None, samples=DEFAULT_SAMPLES, tolerance=None,
+#[pyo3(signature = (links=None, slot=None, samples=100_000, tolerance=None,
     max_cells=slider_crank::table::DEFAULT_MAX_CELLS))]
 fn chain_check(
     py: Python<'_>,

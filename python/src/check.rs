@@ -6,6 +6,11 @@ use crate::py_err;
 use pyo3::prelude::*;
 use slider_crank::table::{CheckRequest, CheckRows, DEFAULT_MAX_CELLS, DEFAULT_SAMPLES};
 
+// The signatures give `samples`' default as a number, which the stub
+// (and stubtest, against the module's text signature) reads; a constant
+// there shows as `...`. It is the library's own default:
+const _: () = assert!(DEFAULT_SAMPLES == 100_000);
+
 /// One row: quantity, worst scaled difference, κ there, where (degrees),
 /// poses compared, passed, and the difference in ulps × κ.
 type Row = (String, f64, f64, f64, usize, bool, f64);
@@ -14,7 +19,7 @@ type Row = (String, f64, f64, f64, usize, bool, f64);
 /// report it prints, whether every quantity passed, and the rows (the
 /// library's request of `check`, as the command line fills it).
 #[pyfunction]
-#[pyo3(signature = (crank, rod, offset, samples=DEFAULT_SAMPLES, tolerance=None, max_cells=DEFAULT_MAX_CELLS))]
+#[pyo3(signature = (crank, rod, offset, samples=100_000, tolerance=None, max_cells=DEFAULT_MAX_CELLS))]
 pub fn engine_check(
     py: Python<'_>,
     crank: f64,
