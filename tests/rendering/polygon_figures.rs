@@ -1219,3 +1219,63 @@ fn a_side_on_another_s_line_is_set_beside_it_parallel() {
         );
     }
 }
+
+/// The paths of the group `id` (a dimension: its two ends, its line,
+/// its heads), each as its points.
+fn group_paths(svg: &str, id: &str) -> Vec<Vec<(f64, f64)>> {
+    let start = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let group = &svg[start..start + svg[start..].find("</g>").expect("a closed group")];
+    group
+        .split("<path d=\"")
+        .skip(1)
+        .map(|rest| {
+            let d = &rest[..rest.find('"').expect("a closed d")];
+            let numbers: Vec<f64> = d
+                .split(|c: char| c == 'M' || c == 'L' || c == 'Z' || c.is_whitespace())
+                .filter_map(|w| w.parse().ok())
+                .collect();
+            numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_scale_bar_s_ends_are_ticks_across_it_clear_of_its_text() {
+    // The thirteenth review: the scale bars' end ticks printed as specks
+    // above the heads (a unit long, 3 units off the line on the text's
+    // side), and the one at the end of "250 ft/s²" ran into the "²". An
+    // end of a bar is a tick across it, 3 units each side, and its text
+    // stands 2 units beyond the ticks (read to the SVG's hundredths).
+    let figures = [
+        (FigureName::CoriolisInversion2, "velocity-polygon-bar"),
+        (FigureName::CoriolisInversion2, "acceleration-polygon-bar"),
+        (FigureName::CoriolisInversion3, "acceleration-polygon-bar"),
+        (FigureName::CrankPinLoads, "fixed-bar"),
+        (FigureName::DirectReverseCranks, "bar-sum"),
+    ];
+    for (name, id) in figures {
+        let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+        let paths = group_paths(&svg, id);
+        let line_y = paths[2][0].1;
+        let text = (Plate::read(&svg).texts.into_iter())
+            .find(|t| t.id == format!("{id}-text"))
+            .unwrap_or_else(|| panic!("no text of {id}"));
+        for tick in &paths[..2] {
+            let (top, bottom) = (tick[0].1.min(tick[1].1), tick[0].1.max(tick[1].1));
+            assert!(
+                line_y - top >= 2.9 && bottom - line_y >= 2.9,
+                "{name:?} {id}: an end from {top:.1} to {bottom:.1}, the bar at {line_y:.1}"
+            );
+            let x = tick[0].0;
+            let dx = (text.rect.x0 - x).max(x - text.rect.x1).max(0.0);
+            let dy = (text.rect.y0 - bottom).max(top - text.rect.y1).max(0.0);
+            assert!(
+                dx.hypot(dy) >= 1.5,
+                "{name:?} {id}: an end {:.1} from the text",
+                dx.hypot(dy)
+            );
+        }
+    }
+}
