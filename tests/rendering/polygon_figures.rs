@@ -977,24 +977,54 @@ fn a_short_rod_s_pins_at_the_inner_dead_centre_stand_apart() {
 }
 
 #[test]
-fn a_side_set_beside_another_ends_on_its_point_where_it_can() {
-    // The §35 engine with an offset (r = 0.5, l = 3) near 180°: c′q′
-    // leaves c′a′ at a narrow angle and was set beside it whole, its head
-    // 7 units off q′ by a′'s letter. Turned about its head, it runs over
-    // nothing and ends on q′.
-    for (offset, deg) in [(0.9, 172.0), (0.7, 172.0)] {
+fn c_prime_q_prime_along_c_prime_a_prime_is_left_out() {
+    // The thirteenth review: where q′ lies on c′a′'s line (the rod's
+    // middle, the images b′, q′, a′ on one line near the dead centres),
+    // c′q′ was set beside c′a′ as a third line over c′a′ and c′b′'s,
+    // between the points and their letters: at l = 2.6 r, e = 1.06 r, 0°
+    // b′'s letter stood on it, its head under b′ and q′ (3.5); at 180°
+    // a′ and q′ were lettered below, a′ by x, q′ under b′x (2.5); on the
+    // §35 engine with e = 0.5 at 176° its head stood by a′'s letter.
+    // Left out there (q′'s dot on the line and the notes' c′q′ read it),
+    // and no letter of the acceleration polygon stands on one of its
+    // sides. At e = 0.9 and 0.7, 172°, it had been turned about its head
+    // to end on q′.
+    let engines = [
+        (1.0, 2.6, 1.06, 0.0),
+        (1.0, 2.6, 1.06, 180.0),
+        (0.5, 3.0, 0.5, 176.0),
+        (0.5, 3.0, 0.9, 172.0),
+        (0.5, 3.0, 0.7, 172.0),
+    ];
+    for (r, l, e, deg) in engines {
         let mut options = FigureOptions::default();
-        options.mechanism = Some(SliderCrank::new(0.5, 3.0, offset).unwrap());
+        options.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
         options.angle = Some(Angle::deg(deg));
         let name = FigureName::VelocityAccelerationPolygons;
         let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
-        let tip = arrow_tip(&svg, "acceleration-c2q2");
-        let q = dot(&svg, "point-q2");
-        let off = (tip.0 - q.0).hypot(tip.1 - q.1);
+        let at = format!("l = {l}, e = {e}, {deg}°");
         assert!(
-            off < 1.5,
-            "e = {offset}, {deg}°: c′q′ ends {off:.1} units from q′"
+            element(&svg, "acceleration-c2q2").is_none(),
+            "{at}: c′q′ drawn"
         );
+        let plate = Plate::read(&svg);
+        let all = sides(&svg, false);
+        for letter in images(&plate, true) {
+            for (id, from, to) in all.iter().filter(|s| s.0.starts_with("acceleration-")) {
+                let r = &letter.rect;
+                let inside = |(x, y): (f64, f64)| r.x0 < x && x < r.x1 && r.y0 < y && y < r.y1;
+                let edges = [
+                    ((r.x0, r.y0), (r.x1, r.y0)),
+                    ((r.x1, r.y0), (r.x1, r.y1)),
+                    ((r.x1, r.y1), (r.x0, r.y1)),
+                    ((r.x0, r.y1), (r.x0, r.y0)),
+                ];
+                let met = inside(*from)
+                    || inside(*to)
+                    || edges.iter().any(|&e| segments_apart(e, (*from, *to)) == 0.0);
+                assert!(!met, "{at}: {} on {id}", letter.id);
+            }
+        }
     }
 }
 
