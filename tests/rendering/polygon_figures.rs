@@ -1021,7 +1021,9 @@ fn c_prime_q_prime_along_c_prime_a_prime_is_left_out() {
                 ];
                 let met = inside(*from)
                     || inside(*to)
-                    || edges.iter().any(|&e| segments_apart(e, (*from, *to)) == 0.0);
+                    || edges
+                        .iter()
+                        .any(|&e| segments_apart(e, (*from, *to)) == 0.0);
                 assert!(!met, "{at}: {} on {id}", letter.id);
             }
         }
