@@ -144,6 +144,24 @@ impl PanelLayout<'_> {
         )
     }
 
+    /// A link's body ([`crate::figure::Shape::Body`]): its outline as a
+    /// slotted bar's ([`PanelLayout::block`]), filled in [`BODY_TONE`] at
+    /// [`BODY_OPACITY`], so that a crank or a rod lying over it, a heavier
+    /// black line on the tone, reads as another link, not as d's slot; what
+    /// runs under it (the path, Kennedy's lines, the centres' dots) stays
+    /// seen through the tone.
+    /// Its inside is kept from letters as lines are ([`body_fill`]): a
+    /// link's letter inside d's outline named d (coriolis 2 at
+    /// l = 40.8 r, 90.38°: "b" inside d by its edge).
+    pub(super) fn body(&mut self, ink: &Ink, points: &[Point]) -> Option<Mark> {
+        let mark = self.block(ink, points)?;
+        let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+        for (a, b) in body_fill(&pts) {
+            self.obstacles.segment(a, b);
+        }
+        Some(mark.fill(BODY_TONE).fill_opacity(BODY_OPACITY))
+    }
+
     /// A block's room kept from letters: its box, hollow where a letter
     /// fits inside beside its pin.
     fn block_room(&mut self, pts: &[Point]) {
@@ -191,3 +209,38 @@ fn is_bar(pts: &[Point]) -> bool {
 /// How many times its shortest side a four-cornered body's longest side
 /// may be and the body still be a block ([`is_bar`]).
 const BAR_LENGTHS: f64 = 4.0;
+
+/// Lines across the inside of the outline `pts` (page units), one every
+/// [`BODY_FILL_STEP`] down the page: each run between the outline's
+/// crossings of a level, the outside left out (even–odd).
+fn body_fill(pts: &[Point]) -> Vec<(Point, Point)> {
+    let (lo, hi) = (pts.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+        (lo.min(p.y), hi.max(p.y))
+    });
+    let sides: Vec<(Point, Point)> = (pts.iter().copied())
+        .zip(pts.iter().copied().cycle().skip(1))
+        .collect();
+    let mut runs = Vec::new();
+    let mut y = lo + 0.5 * BODY_FILL_STEP;
+    while y < hi {
+        let mut xs: Vec<f64> = (sides.iter())
+            .filter(|(p, q)| (p.y <= y) != (q.y <= y))
+            .map(|(p, q)| p.x + (q.x - p.x) * (y - p.y) / (q.y - p.y))
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        runs.extend((xs.chunks_exact(2)).map(|x| (Point::new(x[0], y), Point::new(x[1], y))));
+        y += BODY_FILL_STEP;
+    }
+    runs
+}
+
+/// The step between [`body_fill`]'s lines, page units: less than a
+/// letter's height, so that none stands between two.
+const BODY_FILL_STEP: f64 = 4.0;
+
+/// The tone a link's body is filled in ([`PanelLayout::body`]).
+const BODY_TONE: &str = "#000";
+
+/// The opacity of a body's tone: a light grey (0.12 of black) under which
+/// a thin line stays plain and over which a link's line stands out.
+const BODY_OPACITY: f64 = 0.12;

@@ -954,7 +954,7 @@ impl Drawing {
             if self.slotted() {
                 let points = band(q, self.block.1);
                 self.s
-                    .push("link-frame", Role::Link, Shape::Block { points });
+                    .push("link-frame", Role::Link, Shape::Body { points });
             } else {
                 self.s.link("frame", self.bar());
             }
@@ -1102,10 +1102,22 @@ impl Drawing {
                 let foot = self.foot(b, &[c, a]);
                 self.s.bearing_on("B", b, foot);
                 (self.b_foot, self.b_bearing) = (foot, true);
-                self.hatched = (self.s).hatch_link_of_at_least("crank", (c, b), &moving, PIN_CLEAR, FIXED_STROKES);
+                self.hatched = (self.s).hatch_link_of_at_least(
+                    "crank",
+                    (c, b),
+                    &moving,
+                    PIN_CLEAR,
+                    FIXED_STROKES,
+                );
             }
             Link::B => {
-                self.hatched = (self.s).hatch_link_of_at_least("rod", (b, a), &moving, PIN_CLEAR, FIXED_STROKES);
+                self.hatched = (self.s).hatch_link_of_at_least(
+                    "rod",
+                    (b, a),
+                    &moving,
+                    PIN_CLEAR,
+                    FIXED_STROKES,
+                );
                 // The block's trunnion at A is a fixed pin as B is: the two
                 // carry a bearing each or neither (O_ab's alone read as
                 // the only fixed pin). Both where the rod is too little
