@@ -16,7 +16,7 @@ const I3: FigureName = FigureName::Inversion3OscillatingCylinder;
 
 /// Whether the page point `p` lies inside the closed outline `outline`
 /// (even-odd rule).
-fn within(outline: &[(f64, f64)], p: (f64, f64)) -> bool {
+pub(super) fn within(outline: &[(f64, f64)], p: (f64, f64)) -> bool {
     let n = outline.len();
     let mut inside = false;
     for i in 0..n {

@@ -1180,6 +1180,11 @@ impl Drawing {
             return;
         }
         if let Some(at) = self.bar_letter() {
+            if !self.slotted() {
+                // The hand pump's plunger, a line: its letter by it.
+                self.s.letter("link-d", at, "*d*", TextSize::Letter);
+                return;
+            }
             let (way, hh) = (self.bar_letter_side(at), self.block.1);
             let d = RichText::parse("*d*");
             self.s
