@@ -256,7 +256,10 @@ fn body_fill(pts: &[Point]) -> Vec<(Point, Point)> {
             .map(|(p, q)| p + (q - p) * ((t - across(p)) / (across(q) - across(p))))
             .collect();
         xs.sort_by(|a, b| a.coords.dot(&u).total_cmp(&b.coords.dot(&u)));
-        runs.extend(xs.chunks_exact(2).map(|x| (x[0], x[1])));
+        runs.extend((xs.chunks_exact(2)).filter_map(|x| match x {
+            [p, q] => Some((*p, *q)),
+            _ => None,
+        }));
     }
     runs
 }

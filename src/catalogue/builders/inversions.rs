@@ -901,7 +901,7 @@ impl Drawing {
         let shown = self.shown?;
         let foot = match shown.region {
             Some(region) if !region.contains(p) => None,
-            _ => shown.feet[k],
+            _ => shown.feet.get(k).copied().flatten(),
         }?;
         self.base_out(p, foot).then_some(foot)
     }
