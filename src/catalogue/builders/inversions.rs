@@ -1599,8 +1599,13 @@ fn notes(
     let m = &ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
     let mut line = format!(
-        "{named}The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. {}",
+        "{named}The crank *a* at θ = {}° to {}; *r* = {}, *l* = {}{}. {}",
         short(ctx.angle.degrees()),
+        // d is the engine's frame, fixed only in the first inversion.
+        match chain.inversion() {
+            Inversion::Frame => "the frame *d*",
+            _ => "*d* (the engine’s frame, here moving)",
+        },
         short(r),
         short(l),
         if e == 0.0 {
