@@ -1639,25 +1639,55 @@ def two_plane_balance(
     return _core.two_plane_balance(given, (_real(planes[0]), _real(planes[1])))
 
 
+def _gallery_asked(
+    only: Union[None, str, "list[str]", Tuple[str, ...]],
+    manifest: Union[None, str, "os.PathLike[str]"],
+) -> "Tuple[Optional[list[str]], Optional[str]]":
+    """The keywords ``only`` and ``manifest`` as the library takes them."""
+    if isinstance(only, str):
+        only = only.split(",")
+    return (
+        None if only is None else list(only),
+        None if manifest is None else os.fspath(manifest),
+    )
+
+
 def gallery(
     out: Union[str, "os.PathLike[str]"] = "gallery",
     only: Union[None, str, "list[str]", Tuple[str, ...]] = None,
+    manifest: Union[None, str, "os.PathLike[str]"] = None,
 ) -> "list[str]":
     """Writes the gallery into the directory ``out`` (made if missing), as
     ``slider-crank gallery --out DIR`` does: every named figure as SVG,
     PNG and PDF, the textbook's tables and an ``index.html`` captioning
     each figure with the section it reproduces; ``only`` limits it to
-    some figures (a list or a comma-separated string). The files are
+    some figures (a list or a comma-separated string), or ``manifest``,
+    a TOML file, says what it holds (figures, scene files, formats, style
+    and face, as `gallery --manifest` reads it), not both. The files are
     written all or none, by the command's own writer: each staged under
     a ``.slider-crank-gallery-`` name in ``out`` and renamed into place
     only when every one is made (a symbolic link of a gallery's name
     replaced, not followed; a name that is a directory or write-protected
     refused first, with ``OSError``), so a failure leaves the old gallery
-    whole. Returns the names of the files."""
-    path = os.fspath(out)
-    if isinstance(only, str):
-        only = only.split(",")
-    return _core.gallery(path, None if only is None else list(only))
+    whole. Returns the names of the files. :func:`gallery_differences`
+    compares a directory with the gallery instead."""
+    asked = _gallery_asked(only, manifest)
+    return _core.gallery(os.fspath(out), *asked)
+
+
+def gallery_differences(
+    out: Union[str, "os.PathLike[str]"] = "gallery",
+    only: Union[None, str, "list[str]", Tuple[str, ...]] = None,
+    manifest: Union[None, str, "os.PathLike[str]"] = None,
+) -> "list[tuple[str, str]]":
+    """Compares the gallery :func:`gallery` would write into ``out`` with
+    the files there, writing nothing, as ``slider-crank gallery --check``
+    does: each file that differs, is missing, is not a regular file or
+    was left by an interrupted gallery, as its path and those words
+    (``"differs"``, ``"is missing"``). An empty list: ``out`` holds the
+    gallery this build makes."""
+    asked = _gallery_asked(only, manifest)
+    return [(os.fspath(p), w) for p, w in _core.gallery_differences(os.fspath(out), *asked)]
 
 
 def animate(

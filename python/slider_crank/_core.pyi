@@ -19,6 +19,7 @@ __all__ = [
     "handout",
     "table",
     "gallery",
+    "gallery_differences",
     "write_files",
     "Engine",
     "check_quadric",
@@ -193,7 +194,12 @@ def table(
     max_cells: int = ...,
     gravity: Optional[str] = None,
 ) -> str: ...
-def gallery(out: str, only: Optional[list[str]] = None) -> list[str]: ...
+def gallery(
+    out: str, only: Optional[list[str]] = None, manifest: Optional[str] = None
+) -> list[str]: ...
+def gallery_differences(
+    out: str, only: Optional[list[str]] = None, manifest: Optional[str] = None
+) -> list[tuple[str, str]]: ...
 def write_files(files: list[tuple[str, str]], derived: list[str] = ...) -> None: ...
 
 @final

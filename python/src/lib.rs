@@ -19,7 +19,7 @@ use slider_crank::catalogue::FigureRequest;
 use slider_crank::construct::Graphical;
 use slider_crank::dynamics::Gravity;
 use slider_crank::files::{MAX_DATA_BYTES, read_text};
-use slider_crank::gallery::Gallery;
+use slider_crank::gallery::{Gallery, GalleryRequest};
 use slider_crank::handout::HandoutRequest;
 use slider_crank::lists::{Angles, parse_list};
 use slider_crank::render::{
@@ -676,28 +676,65 @@ fn write_files(
     .map_err(py_err)
 }
 
-/// Writes the gallery `slider-crank gallery --out DIR [--only LIST]`
-/// writes into the directory `out` (made if missing), as the command
-/// writes it (the library's `Gallery::write_into`): every named figure (or
-/// those of `only`) as SVG, PNG and PDF, the tables and `index.html`, all
-/// staged before any is renamed into place, a link of a gallery's name
-/// replaced rather than followed, the directory locked; a failure leaves
-/// every old file and no staged one. Returns the names of the files.
+/// Writes the gallery `slider-crank gallery --out DIR [--only LIST |
+/// --manifest FILE]` writes into the directory `out` (made if missing), as
+/// the command writes it (the library's `GalleryRequest` and
+/// `Gallery::write_into`): every named figure (or those of `only`, or what
+/// the manifest holds) as SVG, PNG and PDF, the tables and `index.html`,
+/// all staged before any is renamed into place, a link of a gallery's
+/// name replaced rather than followed, the directory locked; a failure
+/// leaves every old file and no staged one. Returns the names of the
+/// files.
 #[pyfunction]
-#[pyo3(signature = (out, only=None))]
-fn gallery(py: Python<'_>, out: PathBuf, only: Option<Vec<String>>) -> PyResult<Vec<String>> {
-    let mut gallery = Gallery::new();
-    if let Some(list) = only {
-        let figures = list
-            .iter()
-            .map(|n| FigureName::from_name(n.trim()))
-            .collect::<slider_crank::Result<Vec<_>>>()
-            .map_err(py_err)?;
-        gallery = gallery.with_figures(figures);
-    }
-    py.detach(|| gallery.write_into(&out, None, |_, _| ()))
+#[pyo3(signature = (out, only=None, manifest=None))]
+fn gallery(
+    py: Python<'_>,
+    out: PathBuf,
+    only: Option<Vec<String>>,
+    manifest: Option<PathBuf>,
+) -> PyResult<Vec<String>> {
+    let gallery = gallery_request(only, manifest.clone())?;
+    py.detach(|| gallery.write_into(&out, manifest.as_deref(), |_, _| ()))
         .map_err(py_err)?;
     Ok(gallery.file_names())
+}
+
+/// Compares the gallery `gallery(out, only, manifest)` would write with
+/// the files in `out`, writing nothing, as `slider-crank gallery --check`
+/// does (the library's `Gallery::compare_with`): the path of each file
+/// that differs, is missing, is not a regular file or was left by an
+/// interrupted gallery, with those words; none when `out` holds the
+/// gallery.
+#[pyfunction]
+#[pyo3(signature = (out, only=None, manifest=None))]
+fn gallery_differences(
+    py: Python<'_>,
+    out: PathBuf,
+    only: Option<Vec<String>>,
+    manifest: Option<PathBuf>,
+) -> PyResult<Vec<(PathBuf, &'static str)>> {
+    let gallery = gallery_request(only, manifest)?;
+    let mut found = Vec::new();
+    py.detach(|| {
+        gallery.compare_with(
+            &out,
+            |_, _| (),
+            |path, difference| {
+                found.push((path.to_path_buf(), difference.words()));
+                Ok(())
+            },
+        )
+    })
+    .map_err(py_err)?;
+    Ok(found)
+}
+
+/// The gallery of the keywords `only` and `manifest`, as the command
+/// line's `--only` and `--manifest` ask for it.
+fn gallery_request(only: Option<Vec<String>>, manifest: Option<PathBuf>) -> PyResult<Gallery> {
+    let mut request = GalleryRequest::default();
+    (request.only, request.manifest) = (only, manifest);
+    request.gallery().map_err(py_err)
 }
 
 /// The names of the figures, in the order `--help` lists them.
@@ -720,6 +757,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(handout, m)?)?;
     m.add_function(wrap_pyfunction!(table, m)?)?;
     m.add_function(wrap_pyfunction!(gallery, m)?)?;
+    m.add_function(wrap_pyfunction!(gallery_differences, m)?)?;
     m.add_function(wrap_pyfunction!(write_files, m)?)?;
     m.add("DEFAULT_MAX_CELLS", DEFAULT_MAX_CELLS)?;
     m.add("DEFAULT_RPM", DEFAULT_RPM)?;

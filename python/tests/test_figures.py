@@ -91,6 +91,35 @@ def test_gallery_is_the_command_lines(cli: Cli, tmp_path: Path) -> None:
         sc.gallery(tmp_path / "x", only="fig-99")
 
 
+def test_a_manifest_and_the_check_are_the_command_lines(cli: Cli, tmp_path: Path) -> None:
+    manifest = tmp_path / "book.toml"
+    manifest.write_text('figures = ["fig-66-kisch"]\nformats = ["svg"]\n', encoding="utf-8")
+    names = sc.gallery(tmp_path / "py", manifest=manifest)
+    cli.stdout(["gallery", f"--manifest={manifest}", f"--out={tmp_path / 'cli'}"])
+    assert names == ["fig-66-kisch.svg"] + names[1:] and "fig-66-kisch.png" not in names
+    assert sorted(names) == sorted(p.name for p in (tmp_path / "cli").iterdir())
+    for name in names:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    # The gallery just written holds what the manifest asks for; a file
+    # changed, one removed and one left staged are found, as --check finds them.
+    assert sc.gallery_differences(tmp_path / "py", manifest=manifest) == []
+    (tmp_path / "py" / "fig-66-kisch.svg").write_text("<svg/>", encoding="utf-8")
+    (tmp_path / "py" / "index.html").unlink()
+    (tmp_path / "py" / ".slider-crank-gallery-x").write_text("", encoding="utf-8")
+    found = sc.gallery_differences(tmp_path / "py", manifest=manifest)
+    said = cli.run(["gallery", f"--manifest={manifest}", f"--out={tmp_path / 'py'}", "--check"])
+    assert said.returncode == 1
+    assert [f"{p} {w}" for p, w in found] == said.stdout.decode().splitlines()
+    assert [(Path(p).name, w.split(" (")[0]) for p, w in found] == [
+        ("fig-66-kisch.svg", "differs"),
+        ("index.html", "is missing"),
+        (".slider-crank-gallery-x", "is left by an interrupted gallery"),
+    ]
+    with pytest.raises(ValueError, match="only= .*manifest= or only=, not both"):
+        sc.gallery(tmp_path / "x", only="fig-66-kisch", manifest=manifest)
+    assert not (tmp_path / "x").exists()
+
+
 @pytest.mark.parametrize("ext", ["svg", "html"])
 def test_animation_is_the_command_lines(cli: Cli, tmp_path: Path, ext: str) -> None:
     theirs = tmp_path / f"cli.{ext}"

@@ -185,6 +185,10 @@ pub enum Field {
     /// The file a figure, a handout or a gallery is written to, which
     /// the names of the files made beside it come from.
     Out,
+    /// A gallery's manifest file.
+    Manifest,
+    /// The figures a gallery is limited to.
+    Only,
 }
 
 impl Field {
@@ -271,6 +275,8 @@ impl Field {
             Field::Cranks => "crank angles",
             Field::Indicator => "indicator",
             Field::Out => "out",
+            Field::Manifest => "manifest",
+            Field::Only => "only",
         }
     }
 

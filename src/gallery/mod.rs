@@ -29,10 +29,12 @@
 //! # Ok::<(), slider_crank::Error>(())
 //! ```
 
+mod compare;
 mod index;
 mod manifest;
 mod parallel;
 mod quote;
+mod request;
 mod write;
 
 use crate::catalogue::FigureOptions;
@@ -42,6 +44,8 @@ use crate::render::{FileFormat, to_svg};
 use crate::table::{Format, TableName};
 use crate::{catalogue::FigureName, figure::Style, scene::Scene};
 
+pub use compare::Difference;
+pub use request::GalleryRequest;
 pub use write::{STAGED_PREFIX, leftovers, lock_directory};
 
 /// The name of the gallery's index page.
