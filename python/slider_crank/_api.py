@@ -2033,6 +2033,30 @@ class Inversion:
         centres."""
         return self._engine._chain_at(theta_deg, rpm, omega, inversion=self._number)
 
+    def check(
+        self,
+        samples: int = 100_000,
+        tolerance: Optional[float] = None,
+        *,
+        max_cells: int = _core.DEFAULT_MAX_CELLS,
+    ) -> CheckReport:
+        """``slider-crank check --inversion N``: the velocity and
+        acceleration polygons of inversion 2 or 3, the Coriolis component
+        among them, against the exact values over ``samples`` crank angles
+        and the dead centres; a difference passes when at most
+        ``tolerance`` (1e-12 by default) × κ; ``max_cells`` as in
+        :meth:`SliderCrank.check`. Inversions 1 and 4 have no polygons of
+        their own (the engine's check covers their relative motion) and
+        raise ``ValueError``, as the command refuses them."""
+        e = self._engine
+        result = _core.chain_check(
+            inversion=(e.crank, e.rod, e.offset, self._number),
+            samples=_samples(samples),
+            tolerance=_option(tolerance),
+            max_cells=_max_cells(max_cells),
+        )
+        return CheckReport._from(result)
+
     def figure(self, **options: Any) -> Figure:
         """This inversion's figure drawn for the engine (see
         :meth:`SliderCrank.figure`)."""

@@ -239,6 +239,7 @@ def check_inversion(crank: float, rod: float, offset: float, n: int) -> None: ..
 def chain_check(
     links: Optional[tuple[float, float, float, float]] = None,
     slot: Optional[tuple[float, float, float, float]] = None,
+    inversion: Optional[tuple[float, float, float, int]] = None,
     samples: int = 100000,
     tolerance: Optional[float] = None,
     max_cells: int = ...,

@@ -68,29 +68,40 @@ fn check_inversion(crank: f64, rod: f64, offset: f64, n: u32) -> PyResult<()> {
 /// where (degrees), poses compared, passed.
 type CheckRow = (String, f64, f64, f64, usize, bool);
 
-/// `check --links …` (`links` given) or `check --slot-radius …` (`slot`
-/// = crank, rod, offset, ρ): the report the command prints, whether every
-/// quantity passed, and the rows (the library's request of `check`, as
-/// the command line fills it).
+/// `check --links …` (`links` given), `check --slot-radius …` (`slot`
+/// = crank, rod, offset, ρ) or `check --inversion …` (`inversion` =
+/// crank, rod, offset, number): the report the command prints, whether
+/// every quantity passed, and the rows (the library's request of `check`,
+/// as the command line fills it).
 #[pyfunction]
-#[pyo3(signature = (links=None, slot=None, samples=100_000, tolerance=None,
+#[pyo3(signature = (links=None, slot=None, inversion=None, samples=100_000, tolerance=None,
     max_cells=slider_crank::table::DEFAULT_MAX_CELLS))]
+#[allow(clippy::too_many_arguments)]
 fn chain_check(
     py: Python<'_>,
     links: Option<[f64; 4]>,
     slot: Option<[f64; 4]>,
+    inversion: Option<(f64, f64, f64, u32)>,
     samples: usize,
     tolerance: Option<f64>,
     max_cells: u64,
 ) -> PyResult<(String, bool, Vec<CheckRow>)> {
     let mut request = CheckRequest::default();
-    match (links, slot) {
-        (Some(links), _) => request.links = Some(links),
-        (None, Some([crank, rod, offset, rho])) => {
+    match (links, slot, inversion) {
+        (Some(links), None, None) => request.links = Some(links),
+        (None, Some([crank, rod, offset, rho]), None) => {
             (request.crank, request.rod, request.offset) = (Some(crank), Some(rod), Some(offset));
             request.slot_radius = Some(rho);
         }
-        (None, None) => return Err(PyValueError::new_err("chain_check needs links or slot")),
+        (None, None, Some((crank, rod, offset, n))) => {
+            (request.crank, request.rod, request.offset) = (Some(crank), Some(rod), Some(offset));
+            request.inversion = Some(n);
+        }
+        _ => {
+            return Err(PyValueError::new_err(
+                "chain_check needs one of links, slot and inversion",
+            ));
+        }
     }
     (request.samples, request.tolerance, request.max_cells) = (samples, tolerance, max_cells);
     let plan = request.plan().map_err(py_err)?;

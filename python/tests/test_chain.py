@@ -86,7 +86,22 @@ CHECKS: List[Any] = [
     (lambda: sc.SliderCrank(0.5, 3.0, 0.1).check(samples=2000), ["--offset=0.1", "--samples=2000"]),
     (lambda: sc.SliderCrank(1.0, 1.0001).check(samples=1000, tolerance=1e-16),
      ["--crank=1", "--rod=1.0001", "--samples=1000", "--tolerance=1e-16"]),
+    (lambda: sc.SliderCrank(0.5, 1.5, 0.1).inversion(2).check(samples=400),
+     ["--crank=0.5", "--rod=1.5", "--offset=0.1", "--inversion=2", "--samples=400"]),
+    (lambda: sc.SliderCrank(1.0, 1.02, -0.01).inversion(3).check(samples=200, tolerance=1e-15),
+     ["--crank=1", "--rod=1.02", "--offset=-0.01", "--inversion=3", "--samples=200",
+      "--tolerance=1e-15"]),
 ]
+
+
+@pytest.mark.parametrize("n", [1, 4])
+def test_an_inversion_without_polygons_of_its_own_is_refused_as_the_command_refuses_it(
+        cli: Cli, n: int) -> None:
+    message = cli.error(["check", "--crank=0.5", "--rod=1.5", f"--inversion={n}"])
+    assert "only inversions 2 and 3" in message
+    with pytest.raises(ValueError) as caught:
+        sc.SliderCrank(0.5, 1.5).inversion(n).check(samples=10)
+    assert str(caught.value) == message.replace("--inversion", "inversion=")
 
 
 @pytest.mark.parametrize("call,flags", CHECKS)
