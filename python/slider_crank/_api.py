@@ -222,7 +222,9 @@ class Dynamics:
     along the stroke towards the crank, in ``piston_effort``; with
     ``friction`` the guides' friction on them, μ |N| against the motion
     (0 at a dead centre), is ``friction``, in ``piston_effort`` too; each
-    ``None`` where not given.
+    ``None`` where not given (``gravity`` is the acceleration of gravity
+    (x, y) in the engine's frame, ``friction_coefficient`` that μ). ``sign``
+    states the signs in words, as the JSON does.
     """
 
     units: Dict[str, str]
@@ -242,6 +244,9 @@ class Dynamics:
     whole_engine: EngineLoads
     weight: Optional[float] = None
     friction: Optional[float] = None
+    friction_coefficient: Optional[float] = None
+    gravity: Optional[Point] = None
+    sign: str = ""
 
     @classmethod
     def _from_json(cls, v: Dict[str, Any]) -> "Dynamics":
@@ -268,6 +273,9 @@ class Dynamics:
             ),
             weight=v.get("weight"),
             friction=v.get("friction"),
+            friction_coefficient=v.get("friction_coefficient"),
+            gravity=None if "gravity" not in v else (v["gravity"][0], v["gravity"][1]),
+            sign=v["sign"],
             **{k: v[k] for k in _DYNAMICS_VALUES},
         )
 
@@ -457,6 +465,8 @@ class TurningMoment:
     (``fluctuation``) with the crank angles of the most and least energy
     stored, the angles where T has a kink, and the ``flywheel`` asked for
     (``None`` unless ``fluctuation=`` or ``flywheel=`` was given).
+    ``cycle_deg`` is the cycle's length in crank degrees the integrals
+    and angles are over: 360, or 720 for a four-stroke indicator diagram.
 
     The integrals are adaptive Simpson quadrature split at every kink and
     at the exact crossings of the mean line, each within ``tolerance``."""
@@ -472,6 +482,7 @@ class TurningMoment:
     min_energy_deg: float
     kinks_deg: Tuple[float, ...]
     flywheel: Optional[Flywheel]
+    cycle_deg: float = 360.0
 
     @classmethod
     def _from_json(cls, text: str) -> "TurningMoment":
@@ -489,6 +500,7 @@ class TurningMoment:
             min_energy_deg=t["min_energy_deg"],
             kinks_deg=tuple(t["kinks_deg"]),
             flywheel=None if f is None else Flywheel(**f),
+            cycle_deg=t["cycle_deg"],
         )
 
 
