@@ -157,6 +157,7 @@ impl PanelLayout<'_> {
         let (tone, opacity) = self.style.body();
         let toned = (self.block(ink, points)?).fill(tone).fill_opacity(opacity);
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+        self.bodies.push(pts.clone());
         // Not in a detail: there d's bar, enlarged, takes much of the
         // frame with its pins inside it, and their letters' search for a
         // place out of it made the layout ten times slower (inversion 2 at

@@ -1028,7 +1028,6 @@ impl Drawing {
         let ways: Vec<Vector> = (meeting.iter())
             .filter_map(|q| unit(map.apply(*q) - at))
             .collect();
-        let (depth, half) = FOOT_REACH;
         let out = |f: Foot| self.base_out(p, f);
         let spread = |f: Foot| {
             let down = f.axes().0;
@@ -1041,6 +1040,7 @@ impl Drawing {
             .map(|x| map.apply(*x))
             .filter(|x| (x - at).norm() > CROWDED)
             .collect();
+        let (depth, half) = FOOT_REACH;
         let clear = |f: Foot| {
             let (down, along) = f.axes();
             dots.iter().all(|x| {
