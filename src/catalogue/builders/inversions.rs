@@ -1798,3 +1798,20 @@ fn kennedy_lines(q: &Parts, centres: &ChainCentres) -> Vec<Seg> {
     }
     lines
 }
+
+#[cfg(test)]
+mod tests {
+    use super::printed;
+
+    #[test]
+    fn computed_values_print_to_three_figures() {
+        assert_eq!(printed(0.000_178_3), "1.78×10⁻⁴");
+        assert_eq!(printed(0.005_592), "5.59×10⁻³");
+        assert_eq!(printed(0.031_11), "0.0311");
+        assert_eq!(printed(7.111), "7.11");
+        assert_eq!(printed(1.502), "1.5");
+        assert_eq!(printed(9.996), "10");
+        assert_eq!(printed(0.0), "0");
+        assert_eq!(printed(f64::NAN), "0");
+    }
+}
