@@ -138,6 +138,16 @@ impl Style {
         }
     }
 
+    /// The tone a link's body is filled in (a turning slotted bar, the
+    /// inversions' d) and its opacity: a light grey (0.12 of black) in
+    /// both styles, under which a thin line stays plain and over which a
+    /// link's heavier line stands out as another link.
+    pub(crate) fn body(&self) -> (&'static str, f64) {
+        match self {
+            Style::Textbook | Style::Handout => ("#000", 0.12),
+        }
+    }
+
     /// Font size of a text.
     pub(crate) fn font_size(&self, size: TextSize) -> f64 {
         match size {

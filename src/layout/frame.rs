@@ -145,8 +145,8 @@ impl PanelLayout<'_> {
     }
 
     /// A link's body ([`crate::figure::Shape::Body`]): its outline as a
-    /// slotted bar's ([`PanelLayout::block`]), filled in [`BODY_TONE`] at
-    /// [`BODY_OPACITY`], so that a crank or a rod lying over it, a heavier
+    /// slotted bar's ([`PanelLayout::block`]), filled in the style's body
+    /// tone ([`crate::figure::Style::body`]), so that a crank or a rod lying over it, a heavier
     /// black line on the tone, reads as another link, not as d's slot; what
     /// runs under it (the path, Kennedy's lines, the centres' dots) stays
     /// seen through the tone.
@@ -154,10 +154,10 @@ impl PanelLayout<'_> {
     /// link's letter inside d's outline named d (coriolis 2 at
     /// l = 40.8 r, 90.38°: "b" inside d by its edge).
     pub(super) fn body(&mut self, ink: &Ink, points: &[Point]) -> Option<Mark> {
-        let toned = (self.block(ink, points)?)
-            .fill(BODY_TONE)
-            .fill_opacity(BODY_OPACITY);
+        let (tone, opacity) = self.style.body();
+        let toned = (self.block(ink, points)?).fill(tone).fill_opacity(opacity);
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
+        self.bodies.push(pts.clone());
         // Not in a detail: there d's bar, enlarged, takes much of the
         // frame with its pins inside it, and their letters' search for a
         // place out of it made the layout ten times slower (inversion 2 at
@@ -276,10 +276,3 @@ const BODY_FILL_MOST: usize = 64;
 /// The step between [`body_fill`]'s lines, page units: less than a
 /// letter's height, so that none stands between two.
 const BODY_FILL_STEP: f64 = 6.0;
-
-/// The tone a link's body is filled in ([`PanelLayout::body`]).
-const BODY_TONE: &str = "#000";
-
-/// The opacity of a body's tone: a light grey (0.12 of black) under which
-/// a thin line stays plain and over which a link's line stands out.
-const BODY_OPACITY: f64 = 0.12;

@@ -189,6 +189,9 @@ struct PanelLayout<'a> {
     /// The dimension lines drawn (page segments), which a text naming a
     /// line keeps nearer its own than where it can.
     dimensions: Vec<(Point, Point)>,
+    /// The outlines of the bodies drawn (page points), over which a link
+    /// is drawn with a rim of paper.
+    bodies: Vec<Vec<Point>>,
 }
 
 impl PanelLayout<'_> {
@@ -329,6 +332,7 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Plac
         points: Vec::new(),
         links: Vec::new(),
         dimensions: Vec::new(),
+        bodies: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel

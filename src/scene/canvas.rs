@@ -298,6 +298,21 @@ impl Canvas {
         self.label_naming(id, anchor, (None, Some([a, b])), text, size);
     }
 
+    /// [`Canvas::line_label`], tried first `toward` (a world direction:
+    /// one side of a link lying along another, whose letter takes the
+    /// other side).
+    pub(crate) fn line_label_toward(
+        &mut self,
+        id: impl Into<String>,
+        (a, b): (Point, Point),
+        toward: Vector,
+        text: RichText,
+        size: TextSize,
+    ) {
+        let anchor = nalgebra::center(&a, &b);
+        self.label_naming(id, anchor, (Some(toward), Some([a, b])), text, size);
+    }
+
     /// A label at `anchor`, tried first `toward` and naming `line` if
     /// any; nothing where the anchor is off the page.
     fn label_naming(

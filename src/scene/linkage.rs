@@ -22,7 +22,7 @@ pub(crate) const BEARING_REACH: f64 = 25.0;
 /// Room left unhatched at a fixed link's pins, page units.
 pub(crate) const PIN_CLEAR: f64 = 8.0;
 /// How far past the canvas's edges (page units, beyond a link end's
-/// room) a fixed link is hatched ([`Canvas::hatch_edge`]).
+/// room) a fixed link is hatched ([`Canvas::hatch_edge_of_at_least`]).
 const HATCH_MARGIN: f64 = 20.0;
 /// Clear distance kept between a hatch stroke and a moving link, page units.
 const HATCH_CLEAR: f64 = 2.5;
@@ -151,6 +151,28 @@ impl Canvas {
         );
     }
 
+    /// [`Canvas::link_letter`], tried first on the side `toward` (a world
+    /// direction) where given: a link lying along another at a dead
+    /// centre, the two letters on its two sides ("b a" read as one word).
+    pub(crate) fn link_letter_toward(
+        &mut self,
+        name: &str,
+        (p, q): Seg,
+        markup: &str,
+        toward: Option<Vector>,
+    ) {
+        match toward {
+            Some(u) => self.line_label_toward(
+                format!("label-{name}"),
+                (p, q),
+                u,
+                RichText::parse(markup),
+                TextSize::Letter,
+            ),
+            None => self.link_letter(name, (p, q), markup),
+        }
+    }
+
     /// A letter or short markup near `anchor` (`label-{name}`), placed clear
     /// of lines by the renderer; nothing when `anchor` is off the frame.
     pub(crate) fn letter(&mut self, name: &str, anchor: Point, markup: &str, size: TextSize) {
@@ -165,25 +187,13 @@ impl Canvas {
     /// Ground hatching along the fixed edge `p q` on whichever of `sides`
     /// (world vectors) keeps more strokes clear of the moving links
     /// `avoid`, leaving out strokes that would touch them and those within
-    /// `ends` page units of either end (`hatch-{name}-k`). Returns the
-    /// strokes drawn: none where every stroke would touch a moving link
-    /// (a fixed link lying inside a slotted bar) or the edge is off the
-    /// canvas.
-    pub(crate) fn hatch_edge(
-        &mut self,
-        name: &str,
-        (p, q): Seg,
-        sides: &[Vector],
-        avoid: &[Seg],
-        ends: f64,
-    ) -> usize {
-        self.hatch_edge_of_at_least(name, (p, q), sides, avoid, ends, 1)
-    }
-
-    /// [`Canvas::hatch_edge`], drawn only where at least `least` strokes
-    /// would be (a fixed link shown otherwise where fewer show: its notes
-    /// then name its bearings, and a few strokes would say it is
-    /// hatched). Returns the strokes that would be drawn, drawn or not.
+    /// `ends` page units of either end (`hatch-{name}-k`), drawn only
+    /// where at least `least` strokes would be (every fixed link by one
+    /// rule: shown otherwise where fewer show, its notes saying so, as a
+    /// few strokes would say it is hatched). Returns the strokes that
+    /// would be drawn, drawn or not: none where every stroke would touch
+    /// a moving link (a fixed link lying inside a slotted bar) or the
+    /// edge is off the canvas.
     pub(crate) fn hatch_edge_of_at_least(
         &mut self,
         name: &str,
@@ -225,7 +235,7 @@ impl Canvas {
     }
 
     /// Ground hatching along the fixed link `p q`, on the clearer side;
-    /// the strokes drawn ([`Canvas::hatch_edge`]).
+    /// the strokes drawn ([`Canvas::hatch_edge_of_at_least`]).
     pub(crate) fn hatch_link(
         &mut self,
         name: &str,

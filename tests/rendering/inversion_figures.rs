@@ -549,3 +549,217 @@ fn the_main_view_and_its_detail_show_the_fixed_link_by_one_rule() {
         }
     }
 }
+
+const I4: FigureName = FigureName::Inversion4HandPump;
+
+/// The SVG of `name` at l = `rod` r, offset `offset` r, `deg`, on a page
+/// `width` wide where given (`120mm`).
+fn svg_at(name: FigureName, (rod, offset, deg): (f64, f64, f64), width: Option<&str>) -> String {
+    let mut options = slider_crank::catalogue::FigureOptions::default();
+    options.mechanism = Some(slider_crank::SliderCrank::new(1.0, rod, offset).unwrap());
+    options.angle = Some(slider_crank::Angle::deg(deg));
+    if let Some(w) = width {
+        options.width = Some(w.parse().unwrap());
+    }
+    slider_crank::render::to_svg(&name.figure(&options).unwrap())
+}
+
+#[test]
+fn the_title_opens_the_notes_by_one_rule_at_every_width() {
+    // The fourteenth review: the title was laid out three ways by the
+    // width: a centred caption, run into the notes' paragraph, or split
+    // ("Inversion 2: link a fixed" over "Rotating block: …"). At every
+    // width, with or without a detail, the whole title is set once, and
+    // the notes open with it.
+    let titles = [
+        (I2, "Inversion2:linkafixed,rotatingblock:"),
+        (I3, "Inversion3:linkbfixed,oscillatingcylinder"),
+        (I4, "Inversion4:linkcfixed,handpump."),
+    ];
+    for (name, title) in titles {
+        for (engine, width) in [
+            ((1.5, 0.0, 60.0), None),
+            ((1.5, 0.0, 60.0), Some("120mm")),
+            ((1.08, 0.0, 0.0), None),
+            ((1.05, 0.0, 180.0), Some("120mm")),
+            ((42.6, 0.0, 0.0), None),
+        ] {
+            let svg = svg_at(name, engine, width);
+            let at = format!("{name:?} {engine:?} {width:?}");
+            let text: String = read_text(&svg).split_whitespace().collect();
+            let head = title.split(',').next().unwrap_or(title);
+            assert_eq!(text.matches(head).count(), 1, "{at}: {head} set twice");
+            assert!(text.contains(title), "{at}: the whole title is not set");
+            let notes = tag(&svg, "note-diagram").map(|_| ()).is_some();
+            let opens = svg
+                .split("id=\"note-diagram\"")
+                .nth(1)
+                .map(|rest| read_text(rest).split_whitespace().collect::<String>())
+                .is_some_and(|t| t.starts_with(head));
+            assert!(notes && opens, "{at}: the notes do not open with the title");
+        }
+    }
+}
+
+/// The significant digits of a number as printed (`0.0311` has 3,
+/// `1.78×10⁻⁴` 3, `7.11` 3).
+fn significant_digits(number: &str) -> usize {
+    let mantissa = number.split('×').next().unwrap_or(number);
+    let digits: String = mantissa.chars().filter(char::is_ascii_digit).collect();
+    digits.trim_start_matches('0').len()
+}
+
+/// The number printed in `text` right after `after`, if any.
+fn number_after<'t>(text: &'t str, after: &str) -> Option<&'t str> {
+    let rest = &text[text.find(after)? + after.len()..];
+    let end = rest
+        .find(|c: char| !(c.is_ascii_digit() || ".×⁰¹²³⁴⁵⁶⁷⁸⁹⁻".contains(c)) || c == ' ')
+        .unwrap_or(rest.len());
+    let number = rest[..end].trim_end_matches('.');
+    (!number.is_empty()).then_some(number)
+}
+
+#[test]
+fn the_notes_print_computed_values_to_three_figures() {
+    // The fourteenth review: "O_ac lies 0.0001783 from O_ab" (inversion 3
+    // at l = 3.72 r, e = 1.76 r, 89.99°), "0.005411" (inversion 2 at
+    // l = 58.2 r, 90.31°), a time ratio of 7.111: too many digits for a
+    // book. A value the notes compute (a distance, a time ratio) has three
+    // significant figures at most.
+    for (name, engine) in [
+        (I3, (3.72, 1.76, 89.99)),
+        (I2, (58.2, 0.0, 90.31)),
+        (I2, (1.08, 0.0, 0.0)),
+        (I2, (3.67, 2.29, 269.21)),
+        (I3, (2.75, -1.14, 270.32)),
+    ] {
+        let svg = svg_at(name, engine, None);
+        let text: String = read_text(&svg).split_whitespace().collect();
+        let at = format!("{name:?} {engine:?}");
+        let mut seen = 0;
+        for after in ["Timeratioofthequickreturn", "lies"] {
+            if let Some(number) = number_after(&text, after) {
+                seen += 1;
+                let n = significant_digits(number);
+                assert!(n <= 3, "{at}: {number} after {after}, {n} figures");
+            }
+        }
+        assert!(seen > 0, "{at}: no computed value found in {text}");
+    }
+}
+
+#[test]
+fn inversion_4_s_barrel_is_hatched_where_the_notes_say_so() {
+    // Issue 38: the notes of inversion 4 said the fixed link is hatched
+    // where its block showed three strokes (l = 1.05 r, 180°, 120 mm):
+    // the six-stroke rule of the fixed bars was not applied to it. Where
+    // the notes say hatched, the barrel carries six strokes at least.
+    for (engine, width) in [
+        ((1.05, 0.0, 180.0), Some("120mm")),
+        ((1.05, 0.0, 0.0), None),
+        ((1.05, 0.0, 90.0), Some("120mm")),
+        ((1.5, 0.0, 60.0), None),
+        ((30.0, 0.0, 90.0), None),
+        ((2.5, 0.9, 270.0), Some("120mm")),
+    ] {
+        let svg = svg_at(I4, engine, width);
+        let at = format!("{engine:?} {width:?}");
+        let text: String = read_text(&svg).split_whitespace().collect();
+        let hatched = strokes(&svg, "hatch-block-");
+        if text.contains("Thefixedlinkishatched") {
+            assert!(hatched >= 6, "{at}: notes say hatched, {hatched} strokes");
+        } else {
+            assert_eq!(hatched, 0, "{at}: notes say unhatched, {hatched} strokes");
+        }
+    }
+}
+
+/// The points of every path of the group `id`, in page units.
+fn group_points(svg: &str, id: &str) -> Points {
+    let Some(at) = svg.find(&format!("id=\"{id}\"")) else {
+        return Vec::new();
+    };
+    let end = svg[at..].find("</g>").map_or(svg.len(), |e| at + e);
+    (svg[at..end].split(" d=\"").skip(1))
+        .flat_map(|rest| {
+            let d = rest.split('"').next().unwrap_or("");
+            let n: Vec<f64> = (d.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+                .filter_map(|t| t.parse().ok())
+                .collect();
+            n.chunks(2)
+                .filter(|p| p.len() == 2)
+                .map(|p| (p[0], p[1]))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+#[test]
+fn o_cd_at_infinity_is_lettered_beside_its_arrow() {
+    // The fourteenth review (2): at l = 3.67 r, e = 2.29 r, 269.21°
+    // "O_cd at ∞" stood right of the block, across it from its
+    // left-pointing arrow, and read as naming O_bc or the block. Its
+    // letter stands nearer its arrow than the pin A it starts from.
+    for (name, engine) in [
+        (I2, (3.67, 2.29, 269.21)),
+        (I2, (3.67, 2.29, 89.71)),
+        (I2, (1.5, 0.0, 60.0)),
+        (I3, (2.75, -1.14, 270.32)),
+        (I2, (1.08, 0.0, 0.0)),
+    ] {
+        let svg = svg_at(name, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} {engine:?}");
+        let arrow = group_points(&svg, "infinity-O-cd");
+        let Some(label) = text_centre(&plate, "label-O-cd") else {
+            continue;
+        };
+        assert!(arrow.len() >= 2, "{at}: no arrow to O_cd");
+        let to_arrow = (arrow.windows(2))
+            .map(|w| to_segment(label, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min);
+        let a = pin_at(&svg, "point-A").unwrap_or_else(|| panic!("{at}: no A"));
+        let to_a = (label.0 - a.0).hypot(label.1 - a.1);
+        assert!(
+            to_arrow < to_a,
+            "{at}: O_cd's letter {to_arrow:.1} from its arrow, {to_a:.1} from A"
+        );
+    }
+}
+
+/// The side of the line `p q` the point `x` lies on (+1, −1, 0 on it).
+fn side(p: (f64, f64), q: (f64, f64), x: (f64, f64)) -> f64 {
+    ((q.0 - p.0) * (x.1 - p.1) - (q.1 - p.1) * (x.0 - p.0)).signum()
+}
+
+#[test]
+fn at_a_dead_centre_the_letters_along_one_line_take_its_two_sides() {
+    // The fourteenth review: inversion 2 at l = 1.08 r, 0° set "a d" side
+    // by side over the bar; inversion 4 at l = 1.05 r, 180° (120 mm) "b
+    // a". Where the crank and the rod lie along one line, the crank's
+    // letter and the other link's there (d's in inversion 2, whose bar
+    // holds them; b's in inversion 4) stand on the line's two sides.
+    for (name, engine, width, other) in [
+        (I2, (1.08, 0.0, 0.0), None, "label-link-d"),
+        (I2, (1.07, 0.0, 0.0), None, "label-link-d"),
+        (I4, (1.05, 0.0, 180.0), Some("120mm"), "label-link-b"),
+        (I4, (1.05, 0.0, 0.0), None, "label-link-b"),
+        (I4, (1.5, 0.0, 180.0), None, "label-link-b"),
+    ] {
+        let svg = svg_at(name, engine, width);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} {engine:?} {width:?}");
+        let b = pin_at(&svg, "point-B").unwrap_or_else(|| panic!("{at}: no B"));
+        let far = match name {
+            FigureName::Inversion2RotatingBlock => "point-A",
+            _ => "point-C",
+        };
+        let q = pin_at(&svg, far).unwrap_or_else(|| panic!("{at}: no {far}"));
+        let a = text_centre(&plate, "label-link-a").unwrap_or_else(|| panic!("{at}: no a"));
+        let o = text_centre(&plate, other).unwrap_or_else(|| panic!("{at}: no {other}"));
+        assert!(
+            side(b, q, a) * side(b, q, o) < 0.0,
+            "{at}: a at {a:?} and {other} at {o:?} on one side"
+        );
+    }
+}

@@ -64,9 +64,39 @@ fn where_near(markup: &str, p: Point, other: &str, q: Point, size: f64) -> Strin
     } else {
         format!(
             "{markup} lies {} from {other}, too near it to letter apart",
-            short(apart)
+            printed(apart)
         )
     }
+}
+
+/// Significant figures of a value the notes compute (a time ratio, a
+/// distance between centres); the values given (r, l, e, θ) are printed
+/// as given.
+const PRINTED_FIGURES: usize = 3;
+
+/// Below this a computed value is printed with a power of ten: a
+/// distance of 0.0001783 read as seven digits.
+const PRINTED_LEAST: f64 = 0.01;
+
+/// A value the notes compute, to [`PRINTED_FIGURES`] significant figures,
+/// trailing zeros dropped, and below [`PRINTED_LEAST`] as a mantissa and
+/// a power of ten (`1.78×10⁻⁴`); 0 and non-finite values print `0`.
+fn printed(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return "0".into();
+    }
+    let e = format!("{:.*e}", PRINTED_FIGURES - 1, x);
+    let (mantissa, exponent) = e.split_once('e').unwrap_or((&e, "0"));
+    let exponent: i32 = exponent.parse().unwrap_or(0);
+    let mantissa: f64 = mantissa.parse().unwrap_or(0.0);
+    if x.abs() >= PRINTED_LEAST {
+        return short(mantissa * 10f64.powi(exponent));
+    }
+    format!(
+        "{}×{}",
+        short(mantissa),
+        crate::number::power_of_ten(exponent)
+    )
 }
 
 /// The chain's pieces at one pose, in the fixed link's frame.
@@ -255,6 +285,17 @@ fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64, beyond: 
     {
         points.push(x + (x - q.a).normalize() * (BEYOND_O_BD * pad));
     }
+    // O_bd beyond the turn's world (an arrow at the edge): room past A
+    // towards it for O_cd's arrow and its letter beside it (by A near the
+    // page's edge the letter found room only across the block, l = 3.67 r,
+    // e = 2.29 r, 269.21°).
+    if let (Some(Intersection::Point(x)), Some(Intersection::AtInfinity(_))) = (bd, cd)
+        && beyond
+        && !reach.contains(x)
+        && let Some(u) = unit(x - q.a)
+    {
+        points.push(q.a + u * (BEYOND_A * pad));
+    }
     let lo = points.iter().fold(turn.max(), |lo, p| lo.inf(p));
     let hi = points.iter().fold(turn.min(), |hi, p| hi.sup(p));
     Frame::new(lo - Vector::new(pad, pad), hi + Vector::new(pad, pad))
@@ -265,65 +306,43 @@ fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64, beyond: 
 /// "at ∞" stood stacked on O_bd's letter (the default engine).
 const BEYOND_O_BD: f64 = 2.0;
 
-/// The panel's caption, `Inversion 2: link a fixed, rotating block: …`,
-/// where it fits the panel `width` on one line; on a narrower page the
-/// caption keeps `Inversion 2: link a fixed` and the notes open with the
-/// inversion's name (the second of the pair, empty when the caption holds
-/// it), so that no caption runs past the page's edges.
-fn caption(ctx: &Ctx, inversion: Inversion, width: f64) -> (String, String) {
-    let head = format!(
-        "Inversion {}: link *{}* fixed",
-        inversion.number(),
-        letter(inversion.fixed())
-    );
-    let full = format!("{head}, {}", inversion.name());
-    let size = ctx.style.font_size(TextSize::Small);
-    if RichText::parse(&full).width(ctx.font, size) <= width - 8.0 {
-        (full, String::new())
-    } else {
-        // The caption names the inversion: the notes open with its name
-        // alone ("Inversion 2:" twice read as a title printed twice).
-        let name = inversion.name();
-        let mut first = name.chars();
-        let named = first.next().map_or(String::new(), |c| {
-            format!("{}{}. ", c.to_uppercase(), first.as_str())
-        });
-        (head, named)
-    }
-}
+/// How far past A the page reaches towards O_bd beyond it, where O_cd lies
+/// at infinity on the same line, in [`EDGE_ROOM`]s: O_cd's arrow and its
+/// letter beside it clear of the block.
+const BEYOND_A: f64 = 3.0;
 
-/// The inversion's whole title as the notes' opening sentence, where a
-/// detail stands below the main view: `Inversion 2: link a fixed,
-/// rotating block: … . `
+/// The inversion's title, the notes' first line at every page width and
+/// whether a detail stands below the main view or not: `Inversion 2:
+/// link a fixed, rotating block: … .` (set as the main view's caption
+/// where it fitted, run into the notes on a narrower page, split between
+/// the two on another, the title was laid out three ways).
 fn titled(inversion: Inversion) -> String {
     format!(
-        "Inversion {}: link *{}* fixed, {}. ",
+        "Inversion {}: link *{}* fixed, {}.",
         inversion.number(),
         letter(inversion.fixed()),
         inversion.name()
     )
 }
 
-/// The height of the notes below the drawing, page units.
-const NOTES_HEIGHT: f64 = 44.0;
+/// The height of the notes below the drawing, page units: the title's
+/// line ([`titled`]) and about two more (the notes grow the page by the
+/// lines they wrap to beyond one a paragraph).
+const NOTES_HEIGHT: f64 = 61.0;
 
 pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Figure> {
     let m = ctx.mechanism;
     let chain = InvertedChain::new(m, inversion);
     let pose = chain.pose(ctx.angle);
     let (page, rect, world) = layout(ctx, &chain, &pose)?;
-    let (caption, named) = caption(ctx, inversion, rect.width);
     let plot = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
     let map = *plot.map();
     let block = super::chains::block_on_page(block_size(&m), map.scale());
     let centres = *pose.centres();
     let mut detail = crank_detail(ctx, &pose, &rect, map.scale(), None)?;
-    // Under a detail, the title opens the notes below it: set between the
-    // main view and the detail it split the figure in two.
-    let (mut plot, named) = match detail {
-        None => (plot.with_caption(&caption), named),
-        Some(_) => (plot, titled(inversion)),
-    };
+    // The title opens the notes at every width ([`titled`]): under a
+    // detail, set as the main view's caption, it split the figure in two.
+    let mut plot = plot;
     let shown_frame = map.world_frame(&plot.area());
     let region = detail.as_ref().map(|(region, _, _)| *region);
     let main = |shown: Option<Shown>| {
@@ -346,6 +365,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
         let q = parts(&m, &pose);
         let (p, r) = match inversion.fixed() {
             Link::A => (q.c, q.b),
+            // The barrel about A.
+            Link::C => (q.a, q.a),
             _ => (q.b, q.a),
         };
         let whole = region.contains(p) && region.contains(r);
@@ -384,7 +405,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.height(bottom + NOTES_HEIGHT);
     sheet.notes(
         Point::new(20.0, bottom),
-        &notes(ctx, &chain, &named, &together, hatched),
+        &notes(ctx, &chain, &together, hatched),
     );
     Ok(sheet.finish())
 }
@@ -480,7 +501,8 @@ const PINS_SPREAD: f64 = 64.0;
 /// at `scale` page units per world unit: about the crank a where it is
 /// drawn shorter than [`CRANK_LEAST`] (`None` for the crank window's
 /// own), about O_ad and O_bc where they stand nearer than
-/// [`PINS_APART`] in d's slotted bar (inversions 2 and 3; `slotted`),
+/// [`PINS_APART`] in d's slotted bar or the barrel (inversions 2 to 4;
+/// `slotted`),
 /// spread [`PINS_SPREAD`] apart; none where both read.
 fn detail_about(
     m: &SliderCrank,
@@ -516,8 +538,10 @@ fn crank_detail(
 ) -> Result<Option<(Frame, Plot, Shown)>> {
     let m = ctx.mechanism;
     let q = parts(&m, pose);
-    let slotted = matches!(pose.inversion(), Inversion::Crank | Inversion::Rod);
-    let Some((centre, wanted)) = detail_about(&m, &q, scale, slotted) else {
+    // O_ad and O_bc crowd in d's slotted bar, and in inversion 4's barrel
+    // (at l = 1.05 r, 180° their pins overlapped in it).
+    let crowding = pose.inversion() != Inversion::Frame;
+    let Some((centre, wanted)) = detail_about(&m, &q, scale, crowding) else {
         return Ok(None);
     };
     let w = CRANK_DETAIL.0.min(rect.width);
@@ -688,6 +712,9 @@ struct Drawing {
     /// where none is): the block's letter stands on its side of the bar,
     /// which A's bearing leaves clear.
     normal: Vector,
+    /// The side of d's bar its letter stands on, once lettered (world);
+    /// none before or where d is not lettered beside its bar.
+    d_way: Option<Vector>,
 }
 
 /// How a view showed the fixed bar, which the figure's other view
@@ -833,15 +860,41 @@ fn mid(p: Point, q: Point) -> Point {
     Point::from((p.coords + q.coords) * 0.5)
 }
 
+/// The crank and the rod within this angle of one line (radians, 10°)
+/// lie along each other: their letters take sides ([`Drawing::letter_ways`]).
+const ALONG_LINE: f64 = 0.175;
+
+/// How far across the fixed barrel (in its half heights) the normal at
+/// A is kept from its hatching: past both faces and the strokes' depth.
+const BARREL_REACH: f64 = 4.0;
+
+/// The least half length of inversion 4's fixed barrel on the page, page
+/// units: [`FIXED_STROKES`] strokes a spacing apart stand on one face
+/// clear of the normal at A across its middle (Fig. 60's least block,
+/// 24 units long, held three).
+const BARREL_LEAST: f64 = 26.0;
+
+/// The block's half sizes as drawn at `scale` page units per world unit:
+/// in inversion 4, the fixed barrel, at least [`BARREL_LEAST`] long each
+/// way, so that it carries the fixed link's hatching.
+fn barrel((lh, hh): (f64, f64), fixed: Link, scale: f64) -> (f64, f64) {
+    match fixed == Link::C && scale.is_finite() && scale > 0.0 {
+        true => (lh.max(BARREL_LEAST / scale), hh),
+        false => (lh, hh),
+    }
+}
+
 impl Drawing {
     /// The drawing of the chain `m` at `pose` on `canvas`, its block
     /// `block` (half length, half height) as drawn.
     fn new(m: SliderCrank, pose: &InversionPose, canvas: Canvas, block: (f64, f64)) -> Self {
         let q = parts(&m, pose);
+        let fixed = pose.inversion().fixed();
+        let block = barrel(block, fixed, canvas.transform().scale());
         Drawing {
             s: canvas,
             m,
-            fixed: pose.inversion().fixed(),
+            fixed,
             corners: self::block(&q, block.0, block.1),
             block,
             q,
@@ -856,6 +909,7 @@ impl Drawing {
             shown: None,
             feet: [None, None],
             normal: Vector::zeros(),
+            d_way: None,
         }
     }
 
@@ -974,7 +1028,6 @@ impl Drawing {
         let ways: Vec<Vector> = (meeting.iter())
             .filter_map(|q| unit(map.apply(*q) - at))
             .collect();
-        let (depth, half) = FOOT_REACH;
         let out = |f: Foot| self.base_out(p, f);
         let spread = |f: Foot| {
             let down = f.axes().0;
@@ -987,6 +1040,7 @@ impl Drawing {
             .map(|x| map.apply(*x))
             .filter(|x| (x - at).norm() > CROWDED)
             .collect();
+        let (depth, half) = FOOT_REACH;
         let clear = |f: Foot| {
             let (down, along) = f.axes();
             dots.iter().all(|x| {
@@ -1186,6 +1240,7 @@ impl Drawing {
                 return;
             }
             let (way, hh) = (self.bar_letter_side(at), self.block.1);
+            self.d_way = Some(way);
             let d = RichText::parse("*d*");
             self.s
                 .label_toward("label-link-d", at + way * hh, way, d, TextSize::Letter);
@@ -1199,9 +1254,15 @@ impl Drawing {
         let (down, _) = self.b_foot.axes();
         // The page's y runs down, the world's up.
         let way = Vector::new(down.x, -down.y);
+        self.d_way = Some(way);
         let d = RichText::parse("*d*");
+        // From the bar's edge, as beside a clear run: tried from its
+        // middle line, the first place out that way met the bar's edge,
+        // and d went to the other side, by a's letter ("a d", l = 1.08 r,
+        // 0°).
+        let edge = at + way * self.block.1;
         self.s
-            .label_toward("label-link-d", at, way, d, TextSize::Letter);
+            .label_toward("label-link-d", edge, way, d, TextSize::Letter);
     }
 
     /// The side of d's bar its letter at `at` (on the bar's middle line)
@@ -1243,6 +1304,12 @@ impl Drawing {
             moving.extend(self.kennedy.iter().copied());
         } else if self.fixed != Link::D {
             moving.extend(bar.iter().copied().zip(bar.iter().copied().skip(1)));
+            // The normal at A (O_bd's line, O_cd's at infinity) and
+            // Kennedy's lines run across the fixed barrel: the layout
+            // opens the strokes they cross.
+            let reach = self.q.v * (BARREL_REACH * self.block.1);
+            moving.push((a - reach, a + reach));
+            moving.extend(self.kennedy.iter().copied());
         }
         if self.fixed != Link::C {
             moving.extend(corners.into_iter().zip(corners.into_iter().cycle().skip(1)));
@@ -1316,15 +1383,35 @@ impl Drawing {
             }
             Link::C => {
                 // The block is the fixed barrel: hatched on the face away from
-                // the handle.
+                // the handle, or on the other where more strokes stand clear
+                // of the links and of the normal at A across its middle, by
+                // the fixed bars' rule ([`FIXED_STROKES`]): three strokes
+                // on a barrel 24 units long were called hatched (l = 1.05 r,
+                // 180°, 120 mm).
                 let corners = self.corners;
                 let (lower, upper) = ((corners[0], corners[1]), (corners[3], corners[2]));
-                let away = if self.q.v.dot(&(b - a)) > 0.0 {
-                    (lower, -self.q.v)
+                let faces = if self.q.v.dot(&(b - a)) > 0.0 {
+                    [(lower, -self.q.v), (upper, self.q.v)]
                 } else {
-                    (upper, self.q.v)
+                    [(upper, self.q.v), (lower, -self.q.v)]
                 };
-                self.s.hatch_edge("block", away.0, &[away.1], &moving, 0.0);
+                let count = |s: &mut Canvas, (edge, side): (Seg, Vector)| {
+                    s.hatch_edge_of_at_least("block", edge, &[side], &moving, 0.0, usize::MAX)
+                };
+                let [away, other] = faces;
+                let face = match count(&mut self.s, other) > count(&mut self.s, away) {
+                    true => other,
+                    false => away,
+                };
+                let least = self.least_strokes();
+                self.hatched = (self.s).hatch_edge_of_at_least(
+                    "block",
+                    face.0,
+                    &[face.1],
+                    &moving,
+                    0.0,
+                    least,
+                );
             }
             Link::D => {}
         }
@@ -1348,10 +1435,12 @@ impl Drawing {
                 points: corners.to_vec(),
             },
         );
+        let (crank_way, rod_way) = self.letter_ways();
         if !self.held(mid(c, b)) {
-            self.s.link_letter("link-a", (c, b), "*a*");
+            self.s
+                .link_letter_toward("link-a", (c, b), "*a*", crank_way);
         }
-        self.s.link_letter("link-b", (b, a), "*b*");
+        self.s.link_letter_toward("link-b", (b, a), "*b*", rod_way);
         let v = self.q.v;
         if self.held(self.q.a) {
             // The detail letters the block where it enlarges it: here, by
@@ -1378,6 +1467,30 @@ impl Drawing {
             mid(corners[1], corners[2]) + self.q.u * s.world(4.0)
         };
         s.letter("link-c", at, "*c*", TextSize::Letter);
+    }
+
+    /// The sides the crank's and the rod's letters are tried on first
+    /// where the two lie along one line (within [`ALONG_LINE`], a dead
+    /// centre): in inversion 4 on its two sides ("b a" read as one word
+    /// at l = 1.05 r, 180°), in inversions 2 and 3 both on the side of
+    /// d's bar away from d's letter ("a d" at l = 1.08 r, 0°); none
+    /// elsewhere.
+    fn letter_ways(&self) -> (Option<Vector>, Option<Vector>) {
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        let (Some(crank), Some(rod)) = (unit(b - c), unit(a - b)) else {
+            return (None, None);
+        };
+        if crank.dot(&rod).abs() < ALONG_LINE.cos() {
+            return (None, None);
+        }
+        let n = Vector::new(-rod.y, rod.x);
+        match self.d_way {
+            Some(d) if self.slotted() => {
+                let away = if d.dot(&n) > 0.0 { -n } else { n };
+                (Some(away), Some(away))
+            }
+            _ => (Some(-n), Some(n)),
+        }
     }
 
     /// Where the block c riding in d's slot is lettered, and the way
@@ -1499,9 +1612,10 @@ impl Drawing {
                 }
                 Intersection::AtInfinity(dir) => {
                     let u = self.towards(dir.into_inner(), from, along);
-                    let beside = drawn.is_some();
-                    if let Some(tail) = self.s.lettered_at_infinity(key, (from, u), markup, beside)
-                    {
+                    // Its letter names its arrow, beside it: by the tail
+                    // it stood across the block from a short arrow, on
+                    // the far side of A (l = 3.67 r, e = 2.29 r, 269.21°).
+                    if let Some(tail) = self.s.lettered_at_infinity(key, (from, u), markup, true) {
                         self.line_to_infinity(key, from, tail, drawn);
                     }
                 }
@@ -1586,20 +1700,14 @@ impl Drawing {
     }
 }
 
-/// The notes: the inversion named, the pose and the mechanism, the quick
+/// The notes: the inversion's title ([`titled`]), the pose and the mechanism, the quick
 /// return's time ratio where there is one and the centres drawn together,
 /// then the pins' letters and Kennedy's theorem.
-fn notes(
-    ctx: &Ctx,
-    chain: &InvertedChain,
-    named: &str,
-    together: &[String],
-    hatched: usize,
-) -> [String; 2] {
+fn notes(ctx: &Ctx, chain: &InvertedChain, together: &[String], hatched: usize) -> [String; 3] {
     let m = &ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
     let mut line = format!(
-        "{named}The crank *a* at θ = {}° to {}; *r* = {}, *l* = {}{}. {}",
+        "The crank *a* at θ = {}° to {}; *r* = {}, *l* = {}{}. {}",
         short(ctx.angle.degrees()),
         // d is the engine's frame, fixed only in the first inversion.
         match chain.inversion() {
@@ -1618,13 +1726,14 @@ fn notes(
     if let Some(ratio) = chain.time_ratio() {
         line.push_str(&format!(
             " Time ratio of the quick return {}.",
-            short(ratio)
+            printed(ratio)
         ));
     }
     if !together.is_empty() {
         line.push_str(&format!(" Here {}.", together.join("; ")));
     }
     [
+        titled(chain.inversion()),
         line,
         "The pins *O*_{ad}, *O*_{ab}, *O*_{bc} are *C*, *B*, *A* of Figs. 62–67; by Kennedy’s theorem *O*_{bd} on *O*_{ad}*O*_{ab} and on the normal to the stroke at *O*_{bc}, *O*_{ac} on *O*_{ab}*O*_{bc} and on the normal at *O*_{ad}.".to_string(),
     ]
@@ -1637,7 +1746,14 @@ fn fixed_shown(inversion: Inversion, hatched: usize) -> String {
     let pins = match inversion {
         Inversion::Crank => "*O*_{ad} and *O*_{ab}",
         Inversion::Rod => "*O*_{ab} and *O*_{bc}",
-        Inversion::Frame | Inversion::Slider => return "The fixed link is hatched.".to_string(),
+        Inversion::Frame => return "The fixed link is hatched.".to_string(),
+        Inversion::Slider if hatched >= FIXED_STROKES => {
+            return "The fixed link is hatched.".to_string();
+        }
+        Inversion::Slider => {
+            return "The fixed link *c*, the barrel *d* slides in, is too short here to hatch."
+                .to_string();
+        }
     };
     if hatched >= FIXED_STROKES {
         return "The fixed link is hatched.".to_string();
@@ -1681,4 +1797,21 @@ fn kennedy_lines(q: &Parts, centres: &ChainCentres) -> Vec<Seg> {
         lines.push((c, x));
     }
     lines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::printed;
+
+    #[test]
+    fn computed_values_print_to_three_figures() {
+        assert_eq!(printed(0.000_178_3), "1.78×10⁻⁴");
+        assert_eq!(printed(0.005_592), "5.59×10⁻³");
+        assert_eq!(printed(0.031_11), "0.0311");
+        assert_eq!(printed(7.111), "7.11");
+        assert_eq!(printed(1.502), "1.5");
+        assert_eq!(printed(9.996), "10");
+        assert_eq!(printed(0.0), "0");
+        assert_eq!(printed(f64::NAN), "0");
+    }
 }
