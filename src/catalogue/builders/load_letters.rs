@@ -64,6 +64,26 @@ const ONE_PLACE: f64 = 4.0;
 /// engine: the eleventh review).
 const POLE_LETTER_ROOM: f64 = 1.2;
 
+/// How much nearer its own dot than any other, in ems, a letter set
+/// beside its dot (with no leader) stands: a letter about as near two
+/// dots names either ("270°" 9.5 units from its dot and 9.2 from the 0°
+/// dot it stood under at r = 1, l = 46.2 r; "0°′" 14 and 16 units from
+/// its dot and the 180° dot at l = 3.35 r, e = 1.72 r: the thirteenth
+/// review).
+const NEARER: f64 = 0.4;
+
+/// Room a led letter's box keeps from every dot but its own, in ems: a
+/// letter against another dot, its leader running off to its own, reads
+/// as that dot's ("0°′" touching an unlettered dot at r = 1, l = 2.32 r,
+/// e = −0.685 r: the thirteenth review).
+const LED_DOT_ROOM: f64 = 0.5;
+
+/// Room a leader's start keeps from every letter but its own, in ems:
+/// a leader starting between two letters ("180°′" stacked over "180°" at
+/// r = 1, l = 3.35 r, e = 1.72 r: the thirteenth review) belongs to
+/// either.
+const START_ROOM: f64 = 0.4;
+
 /// Room between two letters on one line (their boxes level), in ems: a
 /// word space and more, so that two letters side by side read as two
 /// ("180°" and "0°" a unit apart read as "180°0°" at r = 1, l = 2.97 r,
@@ -298,7 +318,9 @@ impl Letters {
                     let (a, end) = this.leader(b, from);
                     let room = this.room(b, from, (curves, dots), true, Rules::NONE)?;
                     let keeps = |rules| this.room(b, from, (curves, dots), true, rules).is_some();
-                    let misleads = !keeps(Rules::PAIRS) || this.leader_blocked(a, end);
+                    let misleads = !keeps(Rules::PAIRS)
+                        || this.leader_blocked(a, end)
+                        || this.astray(b, (a, end), from, dots);
                     let crowds = !keeps(Rules::LINES);
                     let crossed = (curves.iter())
                         .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
@@ -400,7 +422,7 @@ impl Letters {
             }
             let d = to_box(b, *q);
             let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
-            if d * s < keep || (!led && d < own) {
+            if d * s < keep || (!led && (d - own) * s < NEARER * self.size) {
                 return None;
             }
             least = least.min(d * s - keep);
@@ -436,6 +458,25 @@ impl Letters {
             || (self.boxes.iter()).any(|o| segment_to_box(*o, a, end) == 0.0)
     }
 
+    /// Whether the letter `b` led to `from` by the leader `a`–`end`
+    /// (world) could be read as another's: its box within
+    /// [`LED_DOT_ROOM`] of another of the `dots` (the pole first), its
+    /// leader within [`DOT_ROOM`] of one ([`POLE_ROOM`] of the pole: a
+    /// leader through the × reads as pointing at *O*), or its start within
+    /// [`START_ROOM`] of another letter.
+    fn astray(&self, b: Boxed, (a, end): (Point, Point), from: Point, dots: &[Point]) -> bool {
+        let s = self.scale;
+        let mut others =
+            (dots.iter().enumerate()).filter(|(_, q)| (**q - from).norm() * s >= ONE_PLACE);
+        let near_dot = others.any(|(k, q)| {
+            let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
+            to_box(b, *q) * s < LED_DOT_ROOM * self.size
+                || point_segment_distance(*q, a, end) * s < keep
+        });
+        let shared = (self.boxes.iter()).any(|o| to_box(*o, a) * s < START_ROOM * self.size);
+        near_dot || shared
+    }
+
     /// The least room, page units, between the box `b` and the curves and
     /// the letters set, capped at an em; `None` where it meets one.
     fn clear(&self, b: Boxed, curves: &[(Point, Point)], lines: bool) -> Option<f64> {
@@ -455,7 +496,9 @@ impl Letters {
         }
         for (p, q) in self.leaders.iter().filter(|_| lines) {
             let d = segment_to_box(b, *p, *q) * s;
-            if d < ROOM {
+            // A leader's start is its letter's: another letter by it
+            // would share the leader.
+            if d < ROOM || to_box(b, *p) * s < START_ROOM * self.size {
                 return None;
             }
             least = least.min(d - ROOM);
