@@ -78,6 +78,11 @@ const NEARER: f64 = 0.4;
 /// e = −0.685 r: the thirteenth review).
 const LED_DOT_ROOM: f64 = 0.5;
 
+/// Room a leader keeps from every letter it does not start at, in ems:
+/// nearer, it reads as running through it (the 180°′ leader by "0°′"
+/// at the default engine on 120 mm).
+const LEADER_CLEAR: f64 = 0.25;
+
 /// Room a leader's start keeps from every letter but its own, in ems:
 /// a leader starting between two letters ("180°′" stacked over "180°" at
 /// r = 1, l = 3.35 r, e = 1.72 r: the thirteenth review) belongs to
@@ -105,6 +110,8 @@ struct Rules {
     pairs: bool,
     /// [`LINE_ROOM`] from a letter on its line, and clear of the leaders.
     lines: bool,
+    /// A letter beside its dot [`NEARER`] nearer it than any other dot.
+    nearer: bool,
 }
 
 impl Rules {
@@ -112,21 +119,31 @@ impl Rules {
     const NONE: Self = Self {
         pairs: false,
         lines: false,
+        nearer: false,
     };
     /// A pair's letters beyond their dots.
     const PAIRS: Self = Self {
         pairs: true,
         lines: false,
+        nearer: false,
     };
     /// Letters on a line apart and clear of the leaders.
     const LINES: Self = Self {
         pairs: false,
         lines: true,
+        nearer: false,
     };
-    /// Both.
+    /// Both, and [`NEARER`].
     const ALL: Self = Self {
         pairs: true,
         lines: true,
+        nearer: true,
+    };
+    /// Both, without [`NEARER`].
+    const NEAR: Self = Self {
+        pairs: true,
+        lines: true,
+        nearer: false,
     };
 }
 
@@ -226,12 +243,24 @@ impl Letters {
         id: String,
         strict: bool,
     ) -> Option<Item> {
+        let rules = if strict { Rules::ALL } else { Rules::NONE };
+        self.beside_with(from, text, dots, id, rules)
+    }
+
+    /// [`Letters::beside`] keeping `rules`.
+    fn beside_with(
+        &mut self,
+        from: Point,
+        text: RichText,
+        dots: &[Point],
+        id: String,
+        rules: Rules,
+    ) -> Option<Item> {
         let half = self.half(&text);
         let curves = self.curves_near(from, half, *RINGS.last().unwrap_or(&0.0));
         let b = RINGS.iter().find_map(|&ring| {
             (directions().filter_map(|u| {
                 let b = (self.centre(from, u, half, ring), half);
-                let rules = if strict { Rules::ALL } else { Rules::NONE };
                 self.room(b, from, (&curves, dots), false, rules)
                     .map(|room| (b, room))
             }))
@@ -254,7 +283,13 @@ impl Letters {
         (id, leader_id): (String, String),
     ) -> Vec<Item> {
         let o = Point::origin();
-        let items = match self.beside(o, text.clone(), dots, id.clone(), true) {
+        let first = self.beside(o, text.clone(), dots, id.clone(), true);
+        // Nearer the × than any dot, if not by [`NEARER`], rather than
+        // led an em or more away (r = 1, l = 1.05 r: its dead centres'
+        // dots all about the ×).
+        let first =
+            first.or_else(|| self.beside_with(o, text.clone(), dots, id.clone(), Rules::NEAR));
+        let items = match first {
             Some(item) => vec![item],
             None => match self.led(o, text.clone(), dots, (id.clone(), leader_id)) {
                 Some(led) => Vec::from(led),
@@ -318,14 +353,17 @@ impl Letters {
                     let (a, end) = this.leader(b, from);
                     let room = this.room(b, from, (curves, dots), true, Rules::NONE)?;
                     let keeps = |rules| this.room(b, from, (curves, dots), true, rules).is_some();
-                    let misleads = !keeps(Rules::PAIRS)
-                        || this.leader_blocked(a, end)
-                        || this.astray(b, (a, end), from, dots);
+                    // A leader across a leader or through a letter first,
+                    // then a pair's letter or a leader astray.
+                    let blocked = this.leader_blocked(a, end);
+                    // (The pole's letter, by its × unlike a dot, as before.)
+                    let astray = from != Point::origin() && this.astray(b, (a, end), from, dots);
+                    let misleads = !keeps(Rules::PAIRS) || astray;
                     let crowds = !keeps(Rules::LINES);
                     let crossed = (curves.iter())
                         .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
                         .count();
-                    Some((b, (misleads, crossed, crowds, k), room))
+                    Some((b, (blocked, misleads, crossed, crowds, k), room))
                 })
             })
             .min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2)))?;
@@ -412,6 +450,11 @@ impl Letters {
         if led && own * s < DOT_ROOM {
             return None;
         }
+        let nearer = if rules.nearer {
+            NEARER * self.size
+        } else {
+            0.0
+        };
         let mut least = self.size;
         for (k, q) in dots.iter().enumerate() {
             if rules.pairs && k > 0 && !self.beyond(b, from, *q, led) {
@@ -422,7 +465,7 @@ impl Letters {
             }
             let d = to_box(b, *q);
             let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
-            if d * s < keep || (!led && (d - own) * s < NEARER * self.size) {
+            if d * s < keep || (!led && (d - own) * s < nearer) {
                 return None;
             }
             least = least.min(d * s - keep);
@@ -455,7 +498,8 @@ impl Letters {
     /// review).
     fn leader_blocked(&self, a: Point, end: Point) -> bool {
         (self.leaders.iter()).any(|(p, q)| crossing(a, end, *p, *q).is_some())
-            || (self.boxes.iter()).any(|o| segment_to_box(*o, a, end) == 0.0)
+            || (self.boxes.iter())
+                .any(|o| segment_to_box(*o, a, end) * self.scale < LEADER_CLEAR * self.size)
     }
 
     /// Whether the letter `b` led to `from` by the leader `a`–`end`
@@ -497,8 +541,8 @@ impl Letters {
         for (p, q) in self.leaders.iter().filter(|_| lines) {
             let d = segment_to_box(b, *p, *q) * s;
             // A leader's start is its letter's: another letter by it
-            // would share the leader.
-            if d < ROOM || to_box(b, *p) * s < START_ROOM * self.size {
+            // would share the leader, and one on its way stand on it.
+            if d < LEADER_CLEAR * self.size || to_box(b, *p) * s < START_ROOM * self.size {
                 return None;
             }
             least = least.min(d - ROOM);

@@ -474,7 +474,13 @@ fn window(taken: &[Mark], scale: f64, size: (f64, f64)) -> Option<Window> {
     } else {
         pole
     };
-    let knots = knots(&lettered, scale);
+    // A knot elsewhere only where the pole is not crowded: the pole's
+    // detail is sized for the pole (r = 1, l = 1.05 r).
+    let knots = if pole.is_empty() {
+        knots(&lettered, scale)
+    } else {
+        Vec::new()
+    };
     if pole.is_empty() && knots.is_empty() {
         return None;
     }
