@@ -626,7 +626,9 @@ impl Plot {
                 }
                 v
             }
-            Shape::Region { points } | Shape::Block { points } => points.clone(),
+            Shape::Region { points } | Shape::Block { points } | Shape::Body { points } => {
+                points.clone()
+            }
             Shape::Marker { centre, .. }
             | Shape::Dot { centre }
             | Shape::Pin { centre }

@@ -261,6 +261,15 @@ pub enum Shape {
         /// Vertices in order.
         points: Vec<Point>,
     },
+    /// A link's body drawn as a bar in a light tone under the links lying
+    /// over it: the inversions' slotted bar d, inside whose outline a crank
+    /// or a rod running along it read as part of d (inversion 2 near 270°
+    /// with the offset near r). Drawn as a [`Shape::Block`] that is a bar,
+    /// toned; with fewer than three vertices, nothing.
+    Body {
+        /// Vertices in order.
+        points: Vec<Point>,
+    },
     /// A straight arrow with its head at `to`.
     Arrow {
         /// Tail.

@@ -28,9 +28,10 @@ pub(super) fn may_show(t: &PageFromWorld, rect: &PageRect, shape: &Shape) -> boo
     };
     let (points, room): (Vec<Point>, f64) = match shape {
         Shape::Path(p) => (p.points().collect(), 2.0),
-        Shape::Polyline { points, .. } | Shape::Region { points } | Shape::Block { points } => {
-            (points.clone(), 2.0)
-        }
+        Shape::Polyline { points, .. }
+        | Shape::Region { points }
+        | Shape::Block { points }
+        | Shape::Body { points } => (points.clone(), 2.0),
         Shape::Circle { centre, radius } | Shape::Arc { centre, radius, .. } => {
             (square(*centre, *radius).to_vec(), MARK)
         }

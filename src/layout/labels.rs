@@ -422,6 +422,36 @@ thread_local! {
 }
 
 impl Near<'_> {
+    /// The search narrowed to `band`, a box within its own: the obstacles
+    /// gathered that meet `band`, in the same order, so that the cost of
+    /// a box within `band` is the same sum, term by term, over fewer
+    /// looked at (a row of [`nooks`]). Unchanged where the obstacles are
+    /// looked up in the grid (more than [`FEW`]).
+    fn narrowed(&self, band: &Bounds) -> Self {
+        let meeting = |list: &[(Bounds, Obstacle)]| -> Vec<(Bounds, Obstacle)> {
+            (list.iter())
+                .filter(|(b, _)| b.meets(band))
+                .copied()
+                .collect()
+        };
+        Near {
+            obstacles: self.obstacles,
+            openings: self.openings,
+            within: match self.found {
+                Some(_) => Bounds {
+                    min: self.within.min.sup(&band.min),
+                    max: self.within.max.inf(&band.max),
+                },
+                None => self.within,
+            },
+            anchor: self.anchor,
+            found: self.found.as_deref().map(meeting),
+            pending: meeting(&self.pending),
+            hits: RefCell::new(Vec::new()),
+            marks: RefCell::new(self.marks.borrow().clone()),
+        }
+    }
+
     /// Length of line inside `b` plus a large weight for boxes it
     /// overlaps; `b` must lie within the search's bounds.
     fn cost(&self, b: &Bounds) -> f64 {
@@ -845,7 +875,7 @@ pub(crate) fn place_toward(
         .collect();
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
-    let consider = |best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
+    let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
         // The cost is never negative: a candidate whose penalty alone
         // reaches the best score cannot beat it.
         if penalty >= best.0 {
@@ -897,7 +927,7 @@ pub(crate) fn place_toward(
                 true => 1.5 * extra + 0.05 * k as f64,
                 false => 0.05 * k as f64,
             };
-            consider(&mut best, anchor + u * reach, penalty);
+            consider(&near, &mut best, anchor + u * reach, penalty);
             if best.1 < 1.0 && (!near_first || k == 0) {
                 return (best.2, best.1);
             }
@@ -908,7 +938,12 @@ pub(crate) fn place_toward(
         for (k, &(dx, dy)) in units.iter().enumerate() {
             let u = Vector::new(dx, dy);
             let reach = gap + extra + dx.abs() * half.x + dy.abs() * half.y;
-            consider(&mut best, anchor + u * reach, 1.5 * extra + 0.05 * k as f64);
+            consider(
+                &near,
+                &mut best,
+                anchor + u * reach,
+                1.5 * extra + 0.05 * k as f64,
+            );
         }
         // A preferred place farther out (near_first) waits for the rings
         // whose places could still beat it.
@@ -918,9 +953,25 @@ pub(crate) fn place_toward(
         }
     }
     // Every ring is crowded: look at every position of a fine grid within
-    // `reach`, for a nook the sixteen directions miss.
+    // `reach`, for a nook the sixteen directions miss, row by row, each
+    // row looking only at what meets its band of the page.
+    let mut row: Option<(f64, Near)> = None;
     for (penalty, centre) in nooks(anchor, half, gap, reach.max(gap)) {
-        consider(&mut best, centre, penalty);
+        if penalty >= best.0 {
+            continue;
+        }
+        if row.as_ref().is_none_or(|(y, _)| *y != centre.y) {
+            // A unit more than a candidate's room, against rounding.
+            let reach = Vector::new(0.0, half.y + 2.0 * CLEARANCE);
+            let band = Bounds {
+                min: Point::new(within.min.x, centre.y) - reach,
+                max: Point::new(within.max.x, centre.y) + reach,
+            };
+            row = Some((centre.y, near.narrowed(&band)));
+        }
+        if let Some((_, near)) = &row {
+            consider(near, &mut best, centre, penalty);
+        }
     }
     (best.2, best.1)
 }
@@ -1352,10 +1403,19 @@ mod tests {
             .filter(|(b, ob)| b.meets(&within) && !o.holds(*ob, anchor))
             .collect();
         assert!(all.len() < o.segments.len() + o.boxes.len(), "none held");
-        let mut compared = 0;
+        let (mut compared, mut narrowed) = (0, 0);
         // Boxes reaching farther than the grid's reach and not.
         for half in [Vector::new(8.0, 6.0), Vector::new(2.5, 3.5)] {
             for j in -40..=40 {
+                // The search narrowed to the row's band (as the nooks'
+                // rows are): the same sums over fewer obstacles.
+                let y = anchor.y + 1.3 * j as f64;
+                let row = near.narrowed(&Bounds {
+                    min: Point::new(within.min.x, y - half.y - 2.0),
+                    max: Point::new(within.max.x, y + half.y + 2.0),
+                });
+                narrowed +=
+                    (row.found.as_ref()).map_or(0, |f| all.len() - f.len() - row.pending.len());
                 for i in -40..=40 {
                     let centre = anchor + Vector::new(1.7 * i as f64, 1.3 * j as f64);
                     let b = Bounds::around(centre, half);
@@ -1382,11 +1442,14 @@ mod tests {
                         near.cost_of(&b, 0.0, f64::INFINITY).to_bits(),
                         sum.to_bits()
                     );
+                    assert_eq!(row.cost_of(&b, 0.0, f64::INFINITY).to_bits(), sum.to_bits());
                     compared += usize::from(terms >= 3);
                 }
             }
         }
         // Sums of three terms or more, whose order shows in their bits.
         assert!(compared > 2000, "{compared}");
+        // The rows looked through fewer.
+        assert!(narrowed > 100 * 81, "{narrowed}");
     }
 }

@@ -240,6 +240,14 @@ impl Mark {
         self
     }
 
+    /// The mark's fill at `opacity` (a filled path or circle).
+    pub fn fill_opacity(mut self, opacity: f64) -> Self {
+        if let Some(p) = self.paint_mut() {
+            p.fill_opacity = Some(opacity);
+        }
+        self
+    }
+
     /// The mark's outline dashed with `dash` (a stroked path or circle).
     pub fn dashed(mut self, dash: &'static str) -> Self {
         if let Some(s) = self.paint_mut().and_then(|p| p.stroke.as_mut()) {

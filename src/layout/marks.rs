@@ -27,6 +27,14 @@ const LEADER: f64 = 6.0;
 /// on the line of stroke), page units: a slider block's half height and a
 /// little more.
 const EXTENSION_FREE: f64 = 20.0;
+/// How far an end tick of a dimension drawn on the line it measures
+/// (offset 0: a scale bar, a curve's ΔE) reaches each side of it, page
+/// units: there no extension line runs to the dimension line, and one
+/// drawn from its point (3 units off) to a unit past it printed as a
+/// speck over the head, against the text's "²" at the bar's end.
+const TICK: f64 = 3.0;
+/// Room between the end of a scale bar's tick and its text, page units.
+const TICK_ROOM: f64 = 2.0;
 
 impl PanelLayout<'_> {
     /// A straight arrow with its head at `to`; labels keep off the shaft
@@ -162,10 +170,18 @@ impl PanelLayout<'_> {
         let n = unit(self.t.apply_vector(side))?;
         let u = unit(b - a)?;
         let (a2, b2) = (a + n * offset, b + n * offset);
-        let ext = |p: Point, q: Point| polyline_d(&[p + n * 3.0, q + n * 4.0], false);
+        // On its own line (offset 0) the ends are ticks across it and the
+        // text stands beyond them; off it, extension lines from the
+        // points to a little past the dimension line.
+        let on_line = offset == 0.0;
+        let ext = |p: Point, q: Point| match on_line {
+            true => polyline_d(&[q - n * TICK, q + n * TICK], false),
+            false => polyline_d(&[p + n * 3.0, q + n * 4.0], false),
+        };
         let size = self.style.font_size(TextSize::Small) + 1.0;
         let half = text_half(text, size, self.font);
-        let centre = self.dimension_text((a2, b2), n, half);
+        let lift = if on_line { TICK + TICK_ROOM } else { 3.0 };
+        let centre = self.dimension_text((a2, b2), n, half, lift);
         self.obstacles.boxed(Bounds::around(centre, half));
         // Too short for both heads inside: the heads point in from
         // outside the extension lines, on the line produced each way.
@@ -212,9 +228,15 @@ impl PanelLayout<'_> {
     /// drawn already runs through it, slid along the dimension line (by
     /// steps of [`SLIDE`], the text within the line's ends) as little as
     /// clears it by a step, else as little as clears it; the middle where
-    /// nothing does.
-    fn dimension_text(&self, (a2, b2): (Point, Point), n: Vector, half: Vector) -> Point {
-        let middle = nalgebra::center(&a2, &b2) + n * (half.y + 3.0);
+    /// nothing does; `lift` (page units) between the line and the text.
+    fn dimension_text(
+        &self,
+        (a2, b2): (Point, Point),
+        n: Vector,
+        half: Vector,
+        lift: f64,
+    ) -> Point {
+        let middle = nalgebra::center(&a2, &b2) + n * (half.y + lift);
         let Some(u) = unit(b2 - a2) else {
             return middle;
         };

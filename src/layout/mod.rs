@@ -260,6 +260,7 @@ impl PanelLayout<'_> {
             Shape::Bearing { centre, foot } => self.bearing(&ink, *centre, *foot),
             Shape::Hatch { from, to, side } => self.hatch(&ink, *from, *to, *side),
             Shape::Block { points } => self.block(&ink, points),
+            Shape::Body { points } => self.body(&ink, points),
             Shape::Arrow { from, to } => self.arrow(&ink, *from, *to),
             Shape::RightAngle { vertex, u, v } => self.right_angle(&ink, *vertex, *u, *v),
             Shape::AngleMark {

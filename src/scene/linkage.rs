@@ -177,6 +177,22 @@ impl Canvas {
         avoid: &[Seg],
         ends: f64,
     ) -> usize {
+        self.hatch_edge_of_at_least(name, (p, q), sides, avoid, ends, 1)
+    }
+
+    /// [`Canvas::hatch_edge`], drawn only where at least `least` strokes
+    /// would be (a fixed link shown otherwise where fewer show: its notes
+    /// then name its bearings, and a few strokes would say it is
+    /// hatched). Returns the strokes that would be drawn, drawn or not.
+    pub(crate) fn hatch_edge_of_at_least(
+        &mut self,
+        name: &str,
+        (p, q): Seg,
+        sides: &[Vector],
+        avoid: &[Seg],
+        ends: f64,
+        least: usize,
+    ) -> usize {
         // Only the part on the canvas (and a margin past its edges, where
         // the room left at a cut end falls) is hatched: a long rod's fixed
         // link in an enlarged detail ran to millions of page units, its
@@ -198,11 +214,14 @@ impl Canvas {
         let Some((_, side, runs)) = best else {
             return 0;
         };
-        self.emit_hatch(name, &[p, q], &|_| side, &runs);
         // Each run's strokes stand a spacing apart from its first to its last.
-        (runs.iter())
+        let strokes = (runs.iter())
             .map(|&(_, first, last)| ((last - first) / HATCH_SPACING).round() as usize + 1)
-            .sum()
+            .sum();
+        if strokes >= least {
+            self.emit_hatch(name, &[p, q], &|_| side, &runs);
+        }
+        strokes
     }
 
     /// Ground hatching along the fixed link `p q`, on the clearer side;
@@ -215,8 +234,22 @@ impl Canvas {
         avoid: &[Seg],
         ends: f64,
     ) -> usize {
+        self.hatch_link_of_at_least(name, (p, q), avoid, ends, 1)
+    }
+
+    /// [`Canvas::hatch_link`], drawn only where at least `least` strokes
+    /// would be ([`Canvas::hatch_edge_of_at_least`]); the strokes that
+    /// would be drawn.
+    pub(crate) fn hatch_link_of_at_least(
+        &mut self,
+        name: &str,
+        (p, q): Seg,
+        avoid: &[Seg],
+        ends: f64,
+        least: usize,
+    ) -> usize {
         let n = perp(&(q - p));
-        self.hatch_edge(name, (p, q), &[n, -n], avoid, ends)
+        self.hatch_edge_of_at_least(name, (p, q), &[n, -n], avoid, ends, least)
     }
 
     /// The two guides of a fixed `slot`, hatched on their outer sides,

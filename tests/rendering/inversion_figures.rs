@@ -16,7 +16,7 @@ const I3: FigureName = FigureName::Inversion3OscillatingCylinder;
 
 /// Whether the page point `p` lies inside the closed outline `outline`
 /// (even-odd rule).
-fn within(outline: &[(f64, f64)], p: (f64, f64)) -> bool {
+pub(super) fn within(outline: &[(f64, f64)], p: (f64, f64)) -> bool {
     let n = outline.len();
     let mut inside = false;
     for i in 0..n {
@@ -457,6 +457,95 @@ fn no_stroke_of_the_fixed_rod_s_hatching_stands_inside_d_s_bar() {
                 let middle = (0.5 * (s[0] + s[2]), 0.5 * (s[1] + s[3]));
                 assert!(!within(&bar, middle), "{at}: a stroke inside d's bar");
             }
+        }
+    }
+}
+
+#[test]
+fn a_link_lying_in_d_s_outline_stands_over_its_tone_lettered_outside() {
+    // The thirteenth review (2 and 2.5): a crank or a rod lying inside
+    // d's outline read as d's slot, and O_ab within it as a pin on d
+    // (inversion 2 at l = 2.96 r, e = −1.08 r, 269.36°, inversion 3 at
+    // l = 2.93 r, e = −1.39 r, 270.03°, the Coriolis mechanism of
+    // inversion 3 at 90.61° and 269.28°); "b" stood inside d's outline
+    // (coriolis 2 at l = 40.8 r, 90.38°). d is filled in a light tone
+    // (the links' black lines over it read as other links) and no link's
+    // letter stands inside its outline.
+    for (name, rod, offset, deg) in [
+        (I2, 2.96, -1.08, 269.36),
+        (I3, 2.93, -1.39, 270.03),
+        (FigureName::CoriolisInversion3, 2.53, 1.21, 90.61),
+        (FigureName::CoriolisInversion3, 2.97, -1.69, 269.28),
+        (FigureName::CoriolisInversion2, 40.8, 0.0, 90.38),
+        (I3, 35.3, 0.0, 90.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
+        let fill = crate::common::attr(&svg, "link-frame", "fill").unwrap_or_default();
+        let tone: f64 = crate::common::attr(&svg, "link-frame", "fill-opacity")
+            .and_then(|o| o.parse().ok())
+            .unwrap_or(0.0);
+        assert!(
+            fill != "none" && tone > 0.0 && tone <= 0.3,
+            "{at}: d not toned (fill {fill}, opacity {tone})"
+        );
+        let bar = path(&svg, "link-frame");
+        for id in ["label-link-a", "label-link-b", "label-link-d"] {
+            if let Some(c) = text_centre(&plate, id) {
+                assert!(!within(&bar, c), "{at}: {id} inside d's outline at {c:?}");
+            }
+        }
+    }
+}
+
+/// The side of its pin the bearing `id` stands on, as a unit step on the
+/// page ((0, 1) below, (−1, 0) left): the way its base's middle lies from
+/// its pedestal's middle the most.
+fn bearing_side(svg: &str, id: &str) -> Option<(i32, i32)> {
+    let (pedestal, base) = bearing(svg, id)?;
+    let middle = |p: &Points| {
+        let n = p.len().max(1) as f64;
+        let (x, y) = p.iter().fold((0.0, 0.0), |s, q| (s.0 + q.0, s.1 + q.1));
+        (x / n, y / n)
+    };
+    let (from, to) = (middle(&pedestal), middle(&base));
+    let (dx, dy) = (to.0 - from.0, to.1 - from.1);
+    Some(match dx.abs() > dy.abs() {
+        true => (dx.signum() as i32, 0),
+        false => (0, dy.signum() as i32),
+    })
+}
+
+#[test]
+fn the_main_view_and_its_detail_show_the_fixed_link_by_one_rule() {
+    // The thirteenth review (2): inversion 3 at l = 51.7 r, 180° drew
+    // four strokes of hatching by O_ad in the detail, the notes saying the
+    // rod was too short to hatch, left O_ab bare in the detail while the
+    // main view gave it a bearing, and stood that bearing sideways in the
+    // main view, upright in the detail (the Coriolis mechanism of
+    // inversion 3 at l = 55.2 r, 180° too). The detail hatches the fixed
+    // bar only where the notes say hatched; a pin drawn in both views has
+    // a bearing in both or neither, on the same side.
+    for (name, rod, deg) in [
+        (I3, 51.7, 180.0),
+        (I3, 35.3, 180.0),
+        (FigureName::CoriolisInversion3, 55.2, 180.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let at = format!("{name:?} l = {rod}, {deg}°");
+        let text: String = read_text(&svg).split_whitespace().collect();
+        if text.contains("isshownfixedbythebearingsatitspins") {
+            let strokes = strokes(&svg, "detail-hatch-rod-");
+            assert_eq!(strokes, 0, "{at}: the detail hatches the rod");
+        }
+        for pin in ["B", "A"] {
+            if pin_at(&svg, &format!("detail-point-{pin}")).is_none() {
+                continue;
+            }
+            let seen = bearing_side(&svg, &format!("bearing-{pin}"));
+            let enlarged = bearing_side(&svg, &format!("detail-bearing-{pin}"));
+            assert_eq!(seen, enlarged, "{at}: {pin}'s bearing in the two views");
         }
     }
 }

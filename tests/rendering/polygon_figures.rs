@@ -977,24 +977,56 @@ fn a_short_rod_s_pins_at_the_inner_dead_centre_stand_apart() {
 }
 
 #[test]
-fn a_side_set_beside_another_ends_on_its_point_where_it_can() {
-    // The §35 engine with an offset (r = 0.5, l = 3) near 180°: c′q′
-    // leaves c′a′ at a narrow angle and was set beside it whole, its head
-    // 7 units off q′ by a′'s letter. Turned about its head, it runs over
-    // nothing and ends on q′.
-    for (offset, deg) in [(0.9, 172.0), (0.7, 172.0)] {
+fn c_prime_q_prime_along_c_prime_a_prime_is_left_out() {
+    // The thirteenth review: where q′ lies on c′a′'s line (the rod's
+    // middle, the images b′, q′, a′ on one line near the dead centres),
+    // c′q′ was set beside c′a′ as a third line over c′a′ and c′b′'s,
+    // between the points and their letters: at l = 2.6 r, e = 1.06 r, 0°
+    // b′'s letter stood on it, its head under b′ and q′ (3.5); at 180°
+    // a′ and q′ were lettered below, a′ by x, q′ under b′x (2.5); on the
+    // §35 engine with e = 0.5 at 176° its head stood by a′'s letter.
+    // Left out there (q′'s dot on the line and the notes' c′q′ read it),
+    // and no letter of the acceleration polygon stands on one of its
+    // sides. At e = 0.9 and 0.7, 172°, it had been turned about its head
+    // to end on q′.
+    let engines = [
+        (1.0, 2.6, 1.06, 0.0),
+        (1.0, 2.6, 1.06, 180.0),
+        (0.5, 3.0, 0.5, 176.0),
+        (0.5, 3.0, 0.9, 172.0),
+        (0.5, 3.0, 0.7, 172.0),
+    ];
+    for (r, l, e, deg) in engines {
         let mut options = FigureOptions::default();
-        options.mechanism = Some(SliderCrank::new(0.5, 3.0, offset).unwrap());
+        options.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
         options.angle = Some(Angle::deg(deg));
         let name = FigureName::VelocityAccelerationPolygons;
         let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
-        let tip = arrow_tip(&svg, "acceleration-c2q2");
-        let q = dot(&svg, "point-q2");
-        let off = (tip.0 - q.0).hypot(tip.1 - q.1);
+        let at = format!("l = {l}, e = {e}, {deg}°");
         assert!(
-            off < 1.5,
-            "e = {offset}, {deg}°: c′q′ ends {off:.1} units from q′"
+            element(&svg, "acceleration-c2q2").is_none(),
+            "{at}: c′q′ drawn"
         );
+        let plate = Plate::read(&svg);
+        let all = sides(&svg, false);
+        for letter in images(&plate, true) {
+            for (id, from, to) in all.iter().filter(|s| s.0.starts_with("acceleration-")) {
+                let r = &letter.rect;
+                let inside = |(x, y): (f64, f64)| r.x0 < x && x < r.x1 && r.y0 < y && y < r.y1;
+                let edges = [
+                    ((r.x0, r.y0), (r.x1, r.y0)),
+                    ((r.x1, r.y0), (r.x1, r.y1)),
+                    ((r.x1, r.y1), (r.x0, r.y1)),
+                    ((r.x0, r.y1), (r.x0, r.y0)),
+                ];
+                let met = inside(*from)
+                    || inside(*to)
+                    || edges
+                        .iter()
+                        .any(|&e| segments_apart(e, (*from, *to)) == 0.0);
+                assert!(!met, "{at}: {} on {id}", letter.id);
+            }
+        }
     }
 }
 
@@ -1217,5 +1249,65 @@ fn a_side_on_another_s_line_is_set_beside_it_parallel() {
             off < 0.5,
             "l = {rod} r, {deg}°: cq drawn {off:.1}° off c → q"
         );
+    }
+}
+
+/// The paths of the group `id` (a dimension: its two ends, its line,
+/// its heads), each as its points.
+fn group_paths(svg: &str, id: &str) -> Vec<Vec<(f64, f64)>> {
+    let start = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let group = &svg[start..start + svg[start..].find("</g>").expect("a closed group")];
+    group
+        .split("<path d=\"")
+        .skip(1)
+        .map(|rest| {
+            let d = &rest[..rest.find('"').expect("a closed d")];
+            let numbers: Vec<f64> = d
+                .split(|c: char| c == 'M' || c == 'L' || c == 'Z' || c.is_whitespace())
+                .filter_map(|w| w.parse().ok())
+                .collect();
+            numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+        })
+        .collect()
+}
+
+#[test]
+fn a_scale_bar_s_ends_are_ticks_across_it_clear_of_its_text() {
+    // The thirteenth review: the scale bars' end ticks printed as specks
+    // above the heads (a unit long, 3 units off the line on the text's
+    // side), and the one at the end of "250 ft/s²" ran into the "²". An
+    // end of a bar is a tick across it, 3 units each side, and its text
+    // stands 2 units beyond the ticks (read to the SVG's hundredths).
+    let figures = [
+        (FigureName::CoriolisInversion2, "velocity-polygon-bar"),
+        (FigureName::CoriolisInversion2, "acceleration-polygon-bar"),
+        (FigureName::CoriolisInversion3, "acceleration-polygon-bar"),
+        (FigureName::CrankPinLoads, "fixed-bar"),
+        (FigureName::DirectReverseCranks, "bar-sum"),
+    ];
+    for (name, id) in figures {
+        let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+        let paths = group_paths(&svg, id);
+        let line_y = paths[2][0].1;
+        let text = (Plate::read(&svg).texts.into_iter())
+            .find(|t| t.id == format!("{id}-text"))
+            .unwrap_or_else(|| panic!("no text of {id}"));
+        for tick in &paths[..2] {
+            let (top, bottom) = (tick[0].1.min(tick[1].1), tick[0].1.max(tick[1].1));
+            assert!(
+                line_y - top >= 2.9 && bottom - line_y >= 2.9,
+                "{name:?} {id}: an end from {top:.1} to {bottom:.1}, the bar at {line_y:.1}"
+            );
+            let x = tick[0].0;
+            let dx = (text.rect.x0 - x).max(x - text.rect.x1).max(0.0);
+            let dy = (text.rect.y0 - bottom).max(top - text.rect.y1).max(0.0);
+            assert!(
+                dx.hypot(dy) >= 1.5,
+                "{name:?} {id}: an end {:.1} from the text",
+                dx.hypot(dy)
+            );
+        }
     }
 }

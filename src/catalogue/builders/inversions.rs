@@ -317,23 +317,51 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let map = *plot.map();
     let block = super::chains::block_on_page(block_size(&m), map.scale());
     let centres = *pose.centres();
-    let detail = crank_detail(ctx, &pose, &rect, map.scale())?;
+    let mut detail = crank_detail(ctx, &pose, &rect, map.scale(), None)?;
     // Under a detail, the title opens the notes below it: set between the
     // main view and the detail it split the figure in two.
     let (mut plot, named) = match detail {
         None => (plot.with_caption(&caption), named),
         Some(_) => (plot, titled(inversion)),
     };
-    let canvas = Canvas::new(map, map.world_frame(&plot.area()));
+    let shown_frame = map.world_frame(&plot.area());
     let region = detail.as_ref().map(|(region, _, _)| *region);
-    let mut d = Drawing::new(m, &pose, canvas, block).holding(region);
-    let together = d.draw(&pose, &centres);
-    // The notes call the fixed bar hatched where both views hatch it: in
-    // a long rod's main view the rod lay in d's bar unhatched while its
-    // crank's detail hatched it, and the notes said hatched (l = 50 r).
-    let hatched = detail
-        .as_ref()
-        .map_or(d.hatched, |(_, _, strokes)| d.hatched.min(*strokes));
+    let main = |shown: Option<Shown>| {
+        let canvas = Canvas::new(map, shown_frame);
+        let mut d = Drawing::new(m, &pose, canvas, block)
+            .holding(region)
+            .showing(shown);
+        let together = d.draw(&pose, &centres);
+        (d, together)
+    };
+    let (mut d, mut together) = main(None);
+    // Where a detail enlarges the crank, both views show the fixed bar by
+    // one decision and stand its bearings on the sides the main view
+    // chose: hatched where the detail holds the whole bar and hatches it
+    // (a long rod's fixed crank, a speck in the main view), else where
+    // both views would hatch it (in a long rod's main view inversion 3's
+    // rod lay in d's bar unhatched while the crank's detail hatched it
+    // by O_ad, and the notes said hatched, l = 50 r), else neither.
+    if let Some((region, _, seen)) = detail {
+        let q = parts(&m, &pose);
+        let (p, r) = match inversion.fixed() {
+            Link::A => (q.c, q.b),
+            _ => (q.b, q.a),
+        };
+        let whole = region.contains(p) && region.contains(r);
+        let own = d.shown();
+        let both = |v: Shown| v.hatched.unwrap_or(false);
+        let shown = Shown {
+            hatched: Some(both(seen) && (whole || both(own))),
+            ..own
+        };
+        detail = crank_detail(ctx, &pose, &rect, map.scale(), Some(shown))?;
+        (d, together) = main(Some(shown));
+    }
+    let hatched = match (d.shown.and_then(|s| s.hatched)).unwrap_or(d.hatched >= FIXED_STROKES) {
+        true => FIXED_STROKES,
+        false => 0,
+    };
     if let Some((region, _, _)) = &detail {
         super::coriolis::mark_window(&mut d.s, "mechanism", region);
     }
@@ -476,14 +504,16 @@ fn detail_about(
 /// crowd ([`PINS_APART`]), the world region about them and the detail
 /// below the panel that enlarges it (the chain drawn again there, its
 /// fixed link hatched and its centres lettered), captioned with the
-/// magnification, and the strokes of the fixed bar's hatching there;
-/// none where the crank and the pins read.
+/// magnification, and how it shows the fixed bar ([`Shown`]: as `shown`
+/// says where given, the main view's decision); none where the crank and
+/// the pins read.
 fn crank_detail(
     ctx: &Ctx,
     pose: &InversionPose,
     rect: &crate::figure::PageRect,
     scale: f64,
-) -> Result<Option<(Frame, Plot, usize)>> {
+    shown: Option<Shown>,
+) -> Result<Option<(Frame, Plot, Shown)>> {
     let m = ctx.mechanism;
     let q = parts(&m, pose);
     let slotted = matches!(pose.inversion(), Inversion::Crank | Inversion::Rod);
@@ -515,13 +545,17 @@ fn crank_detail(
         }
     };
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
-    let mut d = Drawing::new(m, pose, canvas, block);
+    let mut d = Drawing::new(m, pose, canvas, block).showing(shown);
     d.draw(pose, pose.centres());
-    let hatched = d.hatched;
+    let seen = d.shown();
+    let seen = Shown {
+        hatched: shown.and_then(|s| s.hatched).or(seen.hatched),
+        ..seen
+    };
     for item in d.s.finish().0 {
         plot.push(item);
     }
-    Ok(Some((region, plot, hatched)))
+    Ok(Some((region, plot, seen)))
 }
 
 /// The chain at `pose` drawn on `canvas`: the driven pin's path, the
@@ -530,15 +564,25 @@ fn crank_detail(
 /// own figures (the fixed pins' bearings, the block's letter out of the
 /// bar); for a figure that draws more on it (the Coriolis polygons'
 /// mechanism). The block is drawn no smaller on the page than Fig. 60's.
-pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -> LinksDrawn {
+///
+/// `follow`: how the figure's other view showed the fixed bar, whose
+/// bearings' sides this one keeps for the pins in its region
+/// ([`LinksDrawn::shown`]); none for a view of its own.
+pub(super) fn draw_links(
+    m: SliderCrank,
+    pose: &InversionPose,
+    canvas: Canvas,
+    follow: Option<Shown>,
+) -> LinksDrawn {
     let block = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
-    let mut d = Drawing::new(m, pose, canvas, block);
+    let mut d = Drawing::new(m, pose, canvas, block).showing(follow);
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
     d.letter_bar();
     d.links(Vector::zeros());
     LinksDrawn {
+        shown: d.shown(),
         b_foot: d.b_bearing.then_some(d.b_foot),
         a_way: d.pin_a_way,
         canvas: d.s,
@@ -550,6 +594,9 @@ pub(super) fn draw_links(m: SliderCrank, pose: &InversionPose, canvas: Canvas) -
 pub(super) struct LinksDrawn {
     /// The canvas drawn on.
     pub canvas: Canvas,
+    /// How it showed the fixed bar, for another view of the figure to
+    /// follow ([`Shown::about`]).
+    pub shown: Shown,
     /// The side B's bearing stands on, if one is drawn (ω's arc about B
     /// keeps off it).
     pub b_foot: Option<Foot>,
@@ -630,10 +677,50 @@ struct Drawing {
     /// counted them, and the notes called hatched a link that showed
     /// fewer than [`FIXED_STROKES`].
     kennedy: Vec<Seg>,
+    /// How the other view of the figure (its main view or its detail)
+    /// shows the fixed link, which this one follows ([`Shown`]); none for
+    /// a drawing of its own.
+    shown: Option<Shown>,
+    /// The feet of the bearings drawn at the fixed bar's two pins (C and
+    /// B in inversion 2, B and A in inversion 3), where drawn.
+    feet: [Option<Foot>; 2],
     /// The way the normal at A is drawn ([`Drawing::normal_way`]; zero
     /// where none is): the block's letter stands on its side of the bar,
     /// which A's bearing leaves clear.
     normal: Vector,
+}
+
+/// How a view showed the fixed bar, which the figure's other view
+/// follows: one rule for both (inversion 3 at l = 51.7 r, 180° hatched
+/// the rod in the detail, four strokes by O_ad, where the main view drew
+/// bearings and the notes said too short to hatch; the detail left O_ab
+/// bare; the main view stood its bearing sideways, the detail upright).
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Shown {
+    /// Whether the fixed bar is hatched (else its pins carry bearings);
+    /// none: as each view would.
+    hatched: Option<bool>,
+    /// The feet of the bearings at its two pins ([`Drawing::feet`]).
+    feet: [Option<Foot>; 2],
+    /// The region the detail enlarges: `feet` are given for its pins, a
+    /// pin out of it has its bearing stood by each view's own rule; none:
+    /// for every pin.
+    region: Option<Frame>,
+}
+
+impl Shown {
+    /// The bearings' sides of the pins in `region` (the region a detail
+    /// enlarges), each view hatching the fixed bar by its own rule: the
+    /// Coriolis figures' mechanism and its crank's detail (at l = 55.2 r,
+    /// 180° B's bearing stood sideways in the mechanism, upright in the
+    /// detail).
+    pub(super) fn about(self, region: Frame) -> Self {
+        Shown {
+            hatched: None,
+            region: Some(region),
+            ..self
+        }
+    }
 }
 
 /// Where the block's letter stands beside it, in half lengths of the
@@ -766,8 +853,57 @@ impl Drawing {
             pin_a_way: None,
             dots: dots(pose.centres()),
             kennedy: Vec::new(),
+            shown: None,
+            feet: [None, None],
             normal: Vector::zeros(),
         }
+    }
+
+    /// The same drawing showing the fixed link as `shown` says.
+    fn showing(mut self, shown: Option<Shown>) -> Self {
+        self.shown = shown;
+        self
+    }
+
+    /// How this drawing showed the fixed bar: hatched or by its bearings,
+    /// and their feet.
+    fn shown(&self) -> Shown {
+        Shown {
+            hatched: Some(self.hatched >= FIXED_STROKES),
+            feet: self.feet,
+            region: self.held,
+        }
+    }
+
+    /// The least strokes of hatching drawn on the fixed bar: as
+    /// [`Shown`] says where it is given (none, or every one), else
+    /// [`FIXED_STROKES`].
+    fn least_strokes(&self) -> usize {
+        match self.shown {
+            Some(Shown {
+                hatched: Some(true),
+                ..
+            }) => 1,
+            Some(Shown {
+                hatched: Some(false),
+                ..
+            }) => usize::MAX,
+            _ => FIXED_STROKES,
+        }
+    }
+
+    /// The foot [`Shown`] gives the bearing at the fixed bar's pin `p`
+    /// (its `k`th): the main view's, for a pin in the region the detail
+    /// enlarges, where its base stands out of d's bar here too (in a
+    /// detail that draws d's bar wider than the main view, the main view's
+    /// side could set it inside).
+    fn shown_foot(&self, p: Point, k: usize) -> Option<Foot> {
+        let shown = self.shown?;
+        let foot = match shown.region {
+            Some(region) if !region.contains(p) => None,
+            _ => shown.feet.get(k).copied().flatten(),
+        }?;
+        self.base_out(p, foot).then_some(foot)
     }
 
     /// The same drawing leaving the pins, the crank's letter and the
@@ -835,32 +971,16 @@ impl Drawing {
     fn foot_clear(&self, p: Point, meeting: &[Point]) -> (Foot, bool) {
         let map = *self.s.transform();
         let at = map.apply(p);
-        let outline: Vec<Point> = match self.slotted() {
-            true => band(&self.q, self.block.1)
-                .iter()
-                .map(|x| map.apply(*x))
-                .collect(),
-            false => Vec::new(),
-        };
         let ways: Vec<Vector> = (meeting.iter())
             .filter_map(|q| unit(map.apply(*q) - at))
             .collect();
         let (depth, half) = FOOT_REACH;
+        let out = |f: Foot| self.base_out(p, f);
         let spread = |f: Foot| {
             let down = f.axes().0;
             (ways.iter())
                 .map(|w| w.dot(&down).clamp(-1.0, 1.0).acos())
                 .fold(std::f64::consts::PI, f64::min)
-        };
-        // The base as drawn and the first units of its hatching.
-        let out = |f: Foot| {
-            let (down, along) = f.axes();
-            [BEARING_FOOT.0, depth].iter().all(|&deep| {
-                let base = at + down * deep;
-                [base, base + along * half, base - along * half]
-                    .iter()
-                    .all(|x| !inside_outline(&outline, *x))
-            })
         };
         // The centres' dots off the pin (one on it is named with it).
         let dots: Vec<Point> = (self.dots.iter())
@@ -887,6 +1007,27 @@ impl Drawing {
             })
             .unwrap_or(Foot::Below);
         (foot, out(foot))
+    }
+
+    /// Whether the base of a bearing at `p` on the side `foot` as drawn,
+    /// and the first units of its hatching, stand out of d's slotted bar.
+    fn base_out(&self, p: Point, foot: Foot) -> bool {
+        if !self.slotted() {
+            return true;
+        }
+        let map = *self.s.transform();
+        let at = map.apply(p);
+        let outline: Vec<Point> = (band(&self.q, self.block.1).iter())
+            .map(|x| map.apply(*x))
+            .collect();
+        let (depth, half) = FOOT_REACH;
+        let (down, along) = foot.axes();
+        [BEARING_FOOT.0, depth].iter().all(|&deep| {
+            let base = at + down * deep;
+            [base, base + along * half, base - along * half]
+                .iter()
+                .all(|x| !inside_outline(&outline, *x))
+        })
     }
 
     /// The path of the driven link's far pin: a circle, or the hand
@@ -954,7 +1095,7 @@ impl Drawing {
             if self.slotted() {
                 let points = band(q, self.block.1);
                 self.s
-                    .push("link-frame", Role::Link, Shape::Block { points });
+                    .push("link-frame", Role::Link, Shape::Body { points });
             } else {
                 self.s.link("frame", self.bar());
             }
@@ -1039,7 +1180,15 @@ impl Drawing {
             return;
         }
         if let Some(at) = self.bar_letter() {
-            self.s.letter("link-d", at, "*d*", TextSize::Letter);
+            if !self.slotted() {
+                // The hand pump's plunger, a line: its letter by it.
+                self.s.letter("link-d", at, "*d*", TextSize::Letter);
+                return;
+            }
+            let (way, hh) = (self.bar_letter_side(at), self.block.1);
+            let d = RichText::parse("*d*");
+            self.s
+                .label_toward("label-link-d", at + way * hh, way, d, TextSize::Letter);
             return;
         }
         let q = &self.q;
@@ -1053,6 +1202,24 @@ impl Drawing {
         let d = RichText::parse("*d*");
         self.s
             .label_toward("label-link-d", at, way, d, TextSize::Letter);
+    }
+
+    /// The side of d's bar its letter at `at` (on the bar's middle line)
+    /// stands on: away from the nearer of the crank's and the rod's
+    /// middles, where their letters stand (inversion 2's default set d in
+    /// the wedge between the bar and b, nearer b's line than d's edge).
+    fn bar_letter_side(&self, at: Point) -> Vector {
+        let q = &self.q;
+        let (crank, rod) = (mid(q.c, q.b), mid(q.b, q.a));
+        let near = match (crank - at).norm() < (rod - at).norm() {
+            true => crank,
+            false => rod,
+        };
+        if (near - at).dot(&q.v) > 0.0 {
+            -q.v
+        } else {
+            q.v
+        }
     }
 
     /// The segments of the links that move, which the fixed link's
@@ -1097,15 +1264,25 @@ impl Drawing {
                 } else {
                     self.q.t
                 };
-                let foot = self.foot(c, &[b, leg]);
+                let foot = self
+                    .shown_foot(c, 0)
+                    .unwrap_or_else(|| self.foot(c, &[b, leg]));
                 self.s.bearing_on("C", c, foot);
-                let foot = self.foot(b, &[c, a]);
+                self.feet[0] = Some(foot);
+                let foot = self
+                    .shown_foot(b, 1)
+                    .unwrap_or_else(|| self.foot(b, &[c, a]));
                 self.s.bearing_on("B", b, foot);
+                self.feet[1] = Some(foot);
                 (self.b_foot, self.b_bearing) = (foot, true);
-                self.hatched = self.s.hatch_link("crank", c, b, &moving, PIN_CLEAR);
+                let least = self.least_strokes();
+                self.hatched =
+                    (self.s).hatch_link_of_at_least("crank", (c, b), &moving, PIN_CLEAR, least);
             }
             Link::B => {
-                self.hatched = self.s.hatch_link("rod", b, a, &moving, PIN_CLEAR);
+                let least = self.least_strokes();
+                self.hatched =
+                    (self.s).hatch_link_of_at_least("rod", (b, a), &moving, PIN_CLEAR, least);
                 // The block's trunnion at A is a fixed pin as B is: the two
                 // carry a bearing each or neither (O_ab's alone read as
                 // the only fixed pin). Both where the rod is too little
@@ -1115,15 +1292,22 @@ impl Drawing {
                 // beside it took the place of the block's letter, which
                 // went into the bar: l = 1.05 r, 89.17°).
                 let (u, lh) = (self.q.u, self.block.0);
-                let at_b = self.foot(b, &[c, a]);
+                let at_b = self
+                    .shown_foot(b, 0)
+                    .unwrap_or_else(|| self.foot(b, &[c, a]));
                 // The side of the bar the block's letter is tried on first
                 // ([`Drawing::block_letter`]) is kept clear too.
                 let v = self.q.v;
                 let side = if self.normal.dot(&v) >= 0.0 { v } else { -v };
                 let by = a + side * self.block.1;
-                let at_a = self.foot(a, &[b, a + u * lh, a - u * lh, by]);
+                let at_a = (self.shown_foot(a, 1))
+                    .unwrap_or_else(|| self.foot(a, &[b, a + u * lh, a - u * lh, by]));
                 self.b_foot = at_b;
-                if self.hatched < FIXED_STROKES {
+                self.feet = [Some(at_b), Some(at_a)];
+                let hatched = (self.shown)
+                    .and_then(|shown| shown.hatched)
+                    .unwrap_or(self.hatched >= FIXED_STROKES);
+                if !hatched {
                     self.s.bearing_on("B", b, at_b);
                     self.b_bearing = true;
                     self.s.bearing_on("A", a, at_a);
@@ -1415,8 +1599,13 @@ fn notes(
     let m = &ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
     let mut line = format!(
-        "{named}The crank *a* at θ = {}° to the frame *d*; *r* = {}, *l* = {}{}. {}",
+        "{named}The crank *a* at θ = {}° to {}; *r* = {}, *l* = {}{}. {}",
         short(ctx.angle.degrees()),
+        // d is the engine's frame, fixed only in the first inversion.
+        match chain.inversion() {
+            Inversion::Frame => "the frame *d*",
+            _ => "*d* (the engine’s frame, here moving)",
+        },
         short(r),
         short(l),
         if e == 0.0 {

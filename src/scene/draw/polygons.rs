@@ -548,13 +548,19 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
     );
     canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
     if let Some(q) = p.q {
-        vector(
-            canvas,
-            format!("acceleration-{o}q2"),
-            Role::Auxiliary,
-            p.o + oq.0,
-            q + oq.1,
-        );
+        // Where it runs over c′a′ (q′ on its line), c′q′ set beside it
+        // is a third line over the two, between the points and their
+        // letters: q′ on the line and the notes' c′q′ read it.
+        let beside = oq.0.norm() > 0.0 || oq.1.norm() > 0.0;
+        if !beside {
+            vector(
+                canvas,
+                format!("acceleration-{o}q2"),
+                Role::Auxiliary,
+                p.o,
+                q,
+            );
+        }
         if off_rod(ctx) {
             image_triangle(canvas, "acceleration", [&a, &b, "q2"], [p.a, p.b, q]);
         }

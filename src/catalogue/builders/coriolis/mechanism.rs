@@ -3,7 +3,7 @@
 //! detail of the crank where it is drawn too short to read.
 
 use super::super::Ctx;
-use super::super::inversions::crank_window;
+use super::super::inversions::{Shown, crank_window};
 use super::panel::mark_window;
 use super::{GAP, MARGIN, MECHANISM_HEIGHT};
 
@@ -56,7 +56,7 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
         _ => FIXED_CRANK_LEAST,
     };
     if m.crank() * scale >= least {
-        return Ok((links_plot(ctx, pose, whole, None)?, None));
+        return Ok((links_plot(ctx, pose, whole, None, None)?.0, None));
     }
     let side = tall;
     let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
@@ -67,19 +67,26 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     // `panel-detail-mechanism`: a crank's detail, read as the plate check
     // reads every mechanism's detail (`panel-detail…`, its ids `detail-…`).
     let (region, detail) = crank_window(ctx, "detail-mechanism", b, detail_rect, scale)?;
-    let detail = links_plot(ctx, pose, detail, Some(region))?;
-    Ok((links_plot(ctx, pose, plot, Some(region))?, Some(detail)))
+    // The detail stands the bearings of its pins on the sides the whole
+    // mechanism does: one rule for both views.
+    let (plot, shown) = links_plot(ctx, pose, plot, Some(region), None)?;
+    let follow = Some(shown.about(region));
+    let (detail, _) = links_plot(ctx, pose, detail, Some(region), follow)?;
+    Ok((plot, Some(detail)))
 }
 
 /// The chain drawn on `plot`: its links, pins C, B, A lettered where on
 /// the panel, the driver's ω; on the whole mechanism (named `mechanism`)
-/// the caption and, where a detail enlarges `region`, its box.
+/// the caption and, where a detail enlarges `region`, its box; with how
+/// it showed the fixed bar, which a view drawn after it follows where
+/// `follow` says so ([`Shown`]).
 pub(super) fn links_plot(
     ctx: &Ctx,
     pose: &InversionPose,
     plot: Plot,
     region: Option<Frame>,
-) -> Result<Plot> {
+    follow: Option<Shown>,
+) -> Result<(Plot, Shown)> {
     let m = ctx.mechanism;
     let whole = plot.panel_id() == "panel-mechanism";
     let inversion = pose.inversion();
@@ -100,7 +107,8 @@ pub(super) fn links_plot(
     if !whole {
         canvas = canvas.detail("detail-");
     }
-    let drawn = super::super::inversions::draw_links(m, pose, canvas);
+    let drawn = super::super::inversions::draw_links(m, pose, canvas, follow);
+    let shown = drawn.shown;
     let mut s = drawn.canvas;
     let engine = pose.engine_pose();
     let (c, b, a) = (
@@ -137,7 +145,7 @@ pub(super) fn links_plot(
     for item in s.finish().0 {
         plot.push(item);
     }
-    Ok(plot)
+    Ok((plot, shown))
 }
 
 /// The driver's sense of turning: an arrowed arc about its fixed pin
