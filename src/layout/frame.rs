@@ -154,7 +154,9 @@ impl PanelLayout<'_> {
     /// link's letter inside d's outline named d (coriolis 2 at
     /// l = 40.8 r, 90.38°: "b" inside d by its edge).
     pub(super) fn body(&mut self, ink: &Ink, points: &[Point]) -> Option<Mark> {
-        let mark = self.block(ink, points)?;
+        let toned = (self.block(ink, points)?)
+            .fill(BODY_TONE)
+            .fill_opacity(BODY_OPACITY);
         let pts: Vec<Point> = points.iter().map(|p| self.p(*p)).collect();
         // Not in a detail: there d's bar, enlarged, takes much of the
         // frame with its pins inside it, and their letters' search for a
@@ -162,7 +164,7 @@ impl PanelLayout<'_> {
         // l = 60 r, 90°). Only where letters can go: a bar drawn far past
         // the page laid its lines across the grid's cells.
         if self.detail {
-            return Some(mark.fill(BODY_TONE).fill_opacity(BODY_OPACITY));
+            return Some(toned);
         }
         let w = self.page_width;
         let page = Frame::new(
@@ -174,7 +176,7 @@ impl PanelLayout<'_> {
                 self.obstacles.segment(a, b);
             }
         }
-        Some(mark.fill(BODY_TONE).fill_opacity(BODY_OPACITY))
+        Some(toned)
     }
 
     /// A block's room kept from letters: its box, hollow where a letter
