@@ -149,6 +149,7 @@ impl Rules {
 
 /// The letters set so far in a panel and what each later letter keeps
 /// clear of.
+#[derive(Clone)]
 pub(super) struct Letters {
     /// Both curves as world segments (their jumps' dotted lines within
     /// the cycle too).
@@ -179,6 +180,18 @@ pub(super) struct Letters {
 
 /// A box: its centre and half-size.
 type Boxed = (Point, Vector);
+
+/// A letter set with a leader ([`Letters::led`]).
+pub(super) struct Led {
+    /// The letter and its leader.
+    pub(super) items: [Item; 2],
+    /// Whether its place was the least bad of places that each mislead:
+    /// its leader across another leader or through a letter, or a pair's
+    /// letter short of its dot, or astray by another dot. The letters
+    /// set before it may be set again in another order
+    /// ([`super::loads`]'s marks, the hardest first).
+    pub(super) misleads: bool,
+}
 
 impl Letters {
     /// The letters of a panel drawn by `map` (uniform, world to page)
@@ -292,7 +305,7 @@ impl Letters {
         let items = match first {
             Some(item) => vec![item],
             None => match self.led(o, text.clone(), dots, (id.clone(), leader_id)) {
-                Some(led) => Vec::from(led),
+                Some(led) => Vec::from(led.items),
                 None => self.beside(o, text, dots, id, false).into_iter().collect(),
             },
         };
@@ -329,15 +342,16 @@ impl Letters {
     /// the curves, then keeping [`LINE_ROOM`] and clear of the leaders,
     /// then on the nearest ring, then with the most room, and a
     /// leader from its box to [`LEADER_SHORT`] short of the dot: the
-    /// text `id` and the leader `leader_id`; `None` where no place within
-    /// three ems is clear. The box is recorded for the letters after it.
+    /// text `id` and the leader `leader_id`, and whether even that place
+    /// misleads ([`Led::misleads`]); `None` where no place within three
+    /// ems is clear. The box is recorded for the letters after it.
     pub(super) fn led(
         &mut self,
         from: Point,
         text: RichText,
         dots: &[Point],
         (id, leader_id): (String, String),
-    ) -> Option<[Item; 2]> {
+    ) -> Option<Led> {
         let half = self.half(&text);
         let curves = self.curves_near(from, half, *FAR_RINGS.last().unwrap_or(&0.0));
         // Fewest crossings first over every ring, then the nearest ring,
@@ -345,7 +359,7 @@ impl Letters {
         // crossed a curve where a ring farther out had a place crossing
         // none (the offset engine r = 1, l = 3.83, e = −1.63: the
         // eleventh review).
-        let (b, _, _) = (FAR_RINGS.iter().enumerate())
+        let (b, (blocked, misleads, ..), _) = (FAR_RINGS.iter().enumerate())
             .flat_map(|(k, &ring)| {
                 let (this, curves) = (&*self, &curves);
                 directions().filter_map(move |u| {
@@ -370,18 +384,21 @@ impl Letters {
         self.boxes.push(b);
         let (a, end) = self.leader(b, from);
         self.leaders.push((a, end));
-        Some([
-            self.text(b, text, id),
-            Item::new(
-                leader_id,
-                // A thin full line, as a dimension's.
-                Role::Dimension,
-                Shape::Polyline {
-                    points: vec![a, end],
-                    closed: false,
-                },
-            ),
-        ])
+        Some(Led {
+            items: [
+                self.text(b, text, id),
+                Item::new(
+                    leader_id,
+                    // A thin full line, as a dimension's.
+                    Role::Dimension,
+                    Shape::Polyline {
+                        points: vec![a, end],
+                        closed: false,
+                    },
+                ),
+            ],
+            misleads: blocked || misleads,
+        })
     }
 
     /// A leader from the box `b` to `from` (world): from the box's point

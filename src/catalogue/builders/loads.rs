@@ -936,10 +936,13 @@ fn marks(
 
 /// The items of the marks `taken` of the panel `name`: each mark's dot
 /// `point-{name}-{curve}-{deg}`, then each lettered mark's letter
-/// `label-{name}-{curve}-{deg}`, on the side [`Letters::side`] finds
-/// clear nearest its dot, or, where none is, set farther out by
-/// [`Letters::led`] with its leader `leader-{name}-{curve}-{deg}`, in the
-/// order of the marks.
+/// ([`mark_letter`]), in the order of the marks. The letters are set in
+/// that order, and where one finds no place that does not mislead (its
+/// leader through a letter set before it: "180°′" through "0°′" at the
+/// default engine on 120 mm, 4.5 in and 500 units), set again with that
+/// one first, the hardest first, while each order still leaves one
+/// misled, at most once for each letter; the order with the fewest misled
+/// letters is kept.
 fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
     let mut items: Vec<Item> = taken
         .iter()
@@ -953,50 +956,98 @@ fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
             )
         })
         .collect();
-    for (c, d, p, letters_of) in taken.iter().filter(|t| !t.3.is_empty()) {
-        // The pole first, then every other dot.
-        let others: Vec<Point> = [Point::origin()]
-            .into_iter()
-            .chain(taken.iter().map(|t| t.2).filter(|q| q != p))
-            .collect();
-        let mut said = letters_of.clone();
-        said.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let text = (said.iter().map(|&(a, dashed)| angle_letter(a, dashed)))
-            .collect::<Vec<_>>()
-            .join(", ");
-        let text = RichText::parse(&text);
-        let id = format!("label-{name}-{c}-{d}");
-        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), true) {
-            items.push(beside);
-            continue;
+    let lettered: Vec<&Mark> = taken.iter().filter(|t| !t.3.is_empty()).collect();
+    let mut order: Vec<usize> = (0..lettered.len()).collect();
+    let mut best: Option<(usize, Vec<Vec<Item>>, Letters)> = None;
+    for _ in 0..=lettered.len() {
+        let mut trial = letters.clone();
+        let mut set: Vec<Vec<Item>> = vec![Vec::new(); lettered.len()];
+        let mut misled = Vec::new();
+        for &k in &order {
+            let Some(mark) = lettered.get(k) else {
+                continue;
+            };
+            let (its, misleads) = mark_letter(name, taken, mark, &mut trial);
+            if misleads {
+                misled.push(k);
+            }
+            if let Some(slot) = set.get_mut(k) {
+                *slot = its;
+            }
         }
-        // No side clear within a letter's reach: set farther out with a
-        // leader to the dot.
-        let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
-        if let Some(led) = letters.led(*p, text.clone(), &others, ids) {
-            items.extend(led);
-            continue;
+        let count = misled.len();
+        if best.as_ref().is_none_or(|b| count < b.0) {
+            best = Some((count, set, trial));
         }
-        // No place within three ems keeps the room a leader needs: beside
-        // its dot after all, without the pairs' and lines' rules.
-        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), false) {
-            items.push(beside);
-            continue;
+        // The first misled letter first, unless it is first already.
+        match misled.first() {
+            Some(&k) if order.first() != Some(&k) => {
+                order.retain(|&j| j != k);
+                order.insert(0, k);
+            }
+            _ => break,
         }
-        items.push(Item::new(
-            id,
-            Role::Label,
-            Shape::Label {
-                anchor: *p,
-                text,
-                // A point's letter: placed nearer its mark than any other.
-                size: TextSize::Letter,
-                toward: None,
-                line: None,
-            },
-        ));
+    }
+    if let Some((_, set, trial)) = best {
+        *letters = trial;
+        items.extend(set.into_iter().flatten());
     }
     items
+}
+
+/// The letter of the lettered mark `mark` of the panel `name` among the
+/// marks `taken`: `label-{name}-{curve}-{deg}`, on the side
+/// [`Letters::beside`] finds clear nearest its dot, or, where none is,
+/// set farther out by [`Letters::led`] with its leader
+/// `leader-{name}-{curve}-{deg}`; and whether that place misleads
+/// ([`super::load_letters::Led`]; a letter set beside its dot without
+/// the pairs' and lines' rules, or left to the layout, misleads too).
+fn mark_letter(
+    name: &str,
+    taken: &[Mark],
+    mark: &Mark,
+    letters: &mut Letters,
+) -> (Vec<Item>, bool) {
+    let (c, d, p, letters_of) = mark;
+    // The pole first, then every other dot.
+    let others: Vec<Point> = [Point::origin()]
+        .into_iter()
+        .chain(taken.iter().map(|t| t.2).filter(|q| q != p))
+        .collect();
+    let mut said = letters_of.clone();
+    said.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    let text = (said.iter().map(|&(a, dashed)| angle_letter(a, dashed)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let text = RichText::parse(&text);
+    let id = format!("label-{name}-{c}-{d}");
+    if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), true) {
+        return (vec![beside], false);
+    }
+    // No side clear within a letter's reach: set farther out with a
+    // leader to the dot.
+    let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
+    if let Some(led) = letters.led(*p, text.clone(), &others, ids) {
+        return (Vec::from(led.items), led.misleads);
+    }
+    // No place within three ems keeps the room a leader needs: beside
+    // its dot after all, without the pairs' and lines' rules.
+    if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), false) {
+        return (vec![beside], true);
+    }
+    let label = Item::new(
+        id,
+        Role::Label,
+        Shape::Label {
+            anchor: *p,
+            text,
+            // A point's letter: placed nearer its mark than any other.
+            size: TextSize::Letter,
+            toward: None,
+            line: None,
+        },
+    );
+    (vec![label], true)
 }
 
 /// The notes: the engine and its rod, the largest loads.
