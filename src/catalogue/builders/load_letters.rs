@@ -34,12 +34,9 @@ const FAR_RINGS: [f64; 8] = [12.0, 17.0, 22.0, 28.0, 34.0, 40.0, 46.0, 51.0];
 /// A direction's component below this is along an axis.
 const ALONG: f64 = 1e-9;
 
-/// How far short of its dot's centre a leader stops, page units: at the
-/// dot's edge (2.1) with half a unit between. A leader stopped a unit
-/// and a half clear of the dot ended on whatever line ran by it, and
-/// named that line ("270°′" on the dotted jump above its dot at the
-/// default engine: the thirteenth review).
-const LEADER_SHORT: f64 = 2.6;
+/// How far short of its dot a leader stops, page units: clear of the
+/// dot (2.1) by a unit and a half.
+const LEADER_SHORT: f64 = 3.6;
 
 /// Where a text set at a fixed place has its place: the middle of its
 /// letters, this many ems above its baseline ([`Shape::Text`]).
@@ -194,8 +191,6 @@ pub(super) struct Led {
     /// set before it may be set again in another order
     /// ([`super::loads`]'s marks, the hardest first).
     pub(super) misleads: bool,
-    /// How many lines of the curves its leader crosses.
-    pub(super) crossed: usize,
 }
 
 impl Letters {
@@ -364,7 +359,7 @@ impl Letters {
         // crossed a curve where a ring farther out had a place crossing
         // none (the offset engine r = 1, l = 3.83, e = −1.63: the
         // eleventh review).
-        let (b, (blocked, misleads, crossed, ..), _) = (FAR_RINGS.iter().enumerate())
+        let (b, (blocked, misleads, ..), _) = (FAR_RINGS.iter().enumerate())
             .flat_map(|(k, &ring)| {
                 let (this, curves) = (&*self, &curves);
                 directions().filter_map(move |u| {
@@ -403,7 +398,6 @@ impl Letters {
                 ),
             ],
             misleads: blocked || misleads,
-            crossed,
         })
     }
 

@@ -939,13 +939,10 @@ fn marks(
 /// ([`mark_letter`]), in the order of the marks. The letters are set in
 /// that order, and where one finds no place that does not mislead (its
 /// leader through a letter set before it: "180°′" through "0°′" at the
-/// default engine on 120 mm, 4.5 in and 500 units) or no leader that
-/// crosses no curve, set again with that one before the rest (the first
-/// misled, else the first crossing, after those moved before it), the
-/// hardest first, at most once for each letter; the order with the fewest misled letters, then the fewest
-/// crossings, is kept ("0°" led clear of the dashed curve at the default
-/// engine took the place above the 270°′ dot, whose leader then crossed
-/// the full curve from below, until 270°′ was set first).
+/// default engine on 120 mm, 4.5 in and 500 units), set again with that
+/// one first, the hardest first, while each order still leaves one
+/// misled, at most once for each letter; the order with the fewest misled
+/// letters is kept.
 fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
     let mut items: Vec<Item> = taken
         .iter()
@@ -961,43 +958,34 @@ fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
         .collect();
     let lettered: Vec<&Mark> = taken.iter().filter(|t| !t.3.is_empty()).collect();
     let mut order: Vec<usize> = (0..lettered.len()).collect();
-    // How many letters at the front of the order were moved there.
-    let mut promoted = 0;
-    let mut best: Option<((usize, usize), Vec<Vec<Item>>, Letters)> = None;
+    let mut best: Option<(usize, Vec<Vec<Item>>, Letters)> = None;
     for _ in 0..=lettered.len() {
         let mut trial = letters.clone();
         let mut set: Vec<Vec<Item>> = vec![Vec::new(); lettered.len()];
-        let (mut misled, mut crossing, mut crossings) = (Vec::new(), Vec::new(), 0);
+        let mut misled = Vec::new();
         for &k in &order {
             let Some(mark) = lettered.get(k) else {
                 continue;
             };
-            let (its, misleads, crossed) = mark_letter(name, taken, mark, &mut trial);
+            let (its, misleads) = mark_letter(name, taken, mark, &mut trial);
             if misleads {
                 misled.push(k);
             }
-            if crossed > 0 {
-                crossing.push(k);
-            }
-            crossings += crossed;
             if let Some(slot) = set.get_mut(k) {
                 *slot = its;
             }
         }
-        let grade = (misled.len(), crossings);
-        if best.as_ref().is_none_or(|b| grade < b.0) {
-            best = Some((grade, set, trial));
+        let count = misled.len();
+        if best.as_ref().is_none_or(|b| count < b.0) {
+            best = Some((count, set, trial));
         }
-        // The first misled letter, else the first crossing, not set
-        // before the rest already, next after those that are.
-        let settled = order.get(..promoted).unwrap_or_default().to_vec();
-        match (misled.iter().chain(&crossing)).find(|k| !settled.contains(k)) {
-            Some(&k) => {
+        // The first misled letter first, unless it is first already.
+        match misled.first() {
+            Some(&k) if order.first() != Some(&k) => {
                 order.retain(|&j| j != k);
-                order.insert(promoted.min(order.len()), k);
-                promoted += 1;
+                order.insert(0, k);
             }
-            None => break,
+            _ => break,
         }
     }
     if let Some((_, set, trial)) = best {
@@ -1011,16 +999,15 @@ fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
 /// marks `taken`: `label-{name}-{curve}-{deg}`, on the side
 /// [`Letters::beside`] finds clear nearest its dot, or, where none is,
 /// set farther out by [`Letters::led`] with its leader
-/// `leader-{name}-{curve}-{deg}`; whether that place misleads
+/// `leader-{name}-{curve}-{deg}`; and whether that place misleads
 /// ([`super::load_letters::Led`]; a letter set beside its dot without
-/// the pairs' and lines' rules, or left to the layout, misleads too) and
-/// how many lines of the curves its leader crosses.
+/// the pairs' and lines' rules, or left to the layout, misleads too).
 fn mark_letter(
     name: &str,
     taken: &[Mark],
     mark: &Mark,
     letters: &mut Letters,
-) -> (Vec<Item>, bool, usize) {
+) -> (Vec<Item>, bool) {
     let (c, d, p, letters_of) = mark;
     // The pole first, then every other dot.
     let others: Vec<Point> = [Point::origin()]
@@ -1035,18 +1022,18 @@ fn mark_letter(
     let text = RichText::parse(&text);
     let id = format!("label-{name}-{c}-{d}");
     if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), true) {
-        return (vec![beside], false, 0);
+        return (vec![beside], false);
     }
     // No side clear within a letter's reach: set farther out with a
     // leader to the dot.
     let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
     if let Some(led) = letters.led(*p, text.clone(), &others, ids) {
-        return (Vec::from(led.items), led.misleads, led.crossed);
+        return (Vec::from(led.items), led.misleads);
     }
     // No place within three ems keeps the room a leader needs: beside
     // its dot after all, without the pairs' and lines' rules.
     if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), false) {
-        return (vec![beside], true, 0);
+        return (vec![beside], true);
     }
     let label = Item::new(
         id,
@@ -1060,7 +1047,7 @@ fn mark_letter(
             line: None,
         },
     );
-    (vec![label], true, 0)
+    (vec![label], true)
 }
 
 /// The notes: the engine and its rod, the largest loads.
