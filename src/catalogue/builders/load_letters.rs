@@ -64,6 +64,31 @@ const ONE_PLACE: f64 = 4.0;
 /// engine: the eleventh review).
 const POLE_LETTER_ROOM: f64 = 1.2;
 
+/// How much nearer its own dot than any other, in ems, a letter set
+/// beside its dot (with no leader) stands: a letter about as near two
+/// dots names either ("270°" 9.5 units from its dot and 9.2 from the 0°
+/// dot it stood under at r = 1, l = 46.2 r; "0°′" 14 and 16 units from
+/// its dot and the 180° dot at l = 3.35 r, e = 1.72 r: the thirteenth
+/// review).
+const NEARER: f64 = 0.4;
+
+/// Room a led letter's box keeps from every dot but its own, in ems: a
+/// letter against another dot, its leader running off to its own, reads
+/// as that dot's ("0°′" touching an unlettered dot at r = 1, l = 2.32 r,
+/// e = −0.685 r: the thirteenth review).
+const LED_DOT_ROOM: f64 = 0.5;
+
+/// Room a leader keeps from every letter it does not start at, in ems:
+/// nearer, it reads as running through it (the 180°′ leader by "0°′"
+/// at the default engine on 120 mm).
+const LEADER_CLEAR: f64 = 0.25;
+
+/// Room a leader's start keeps from every letter but its own, in ems:
+/// a leader starting between two letters ("180°′" stacked over "180°" at
+/// r = 1, l = 3.35 r, e = 1.72 r: the thirteenth review) belongs to
+/// either.
+const START_ROOM: f64 = 0.4;
+
 /// Room between two letters on one line (their boxes level), in ems: a
 /// word space and more, so that two letters side by side read as two
 /// ("180°" and "0°" a unit apart read as "180°0°" at r = 1, l = 2.97 r,
@@ -85,6 +110,8 @@ struct Rules {
     pairs: bool,
     /// [`LINE_ROOM`] from a letter on its line, and clear of the leaders.
     lines: bool,
+    /// A letter beside its dot [`NEARER`] nearer it than any other dot.
+    nearer: bool,
 }
 
 impl Rules {
@@ -92,26 +119,37 @@ impl Rules {
     const NONE: Self = Self {
         pairs: false,
         lines: false,
+        nearer: false,
     };
     /// A pair's letters beyond their dots.
     const PAIRS: Self = Self {
         pairs: true,
         lines: false,
+        nearer: false,
     };
     /// Letters on a line apart and clear of the leaders.
     const LINES: Self = Self {
         pairs: false,
         lines: true,
+        nearer: false,
     };
-    /// Both.
+    /// Both, and [`NEARER`].
     const ALL: Self = Self {
         pairs: true,
         lines: true,
+        nearer: true,
+    };
+    /// Both, without [`NEARER`].
+    const NEAR: Self = Self {
+        pairs: true,
+        lines: true,
+        nearer: false,
     };
 }
 
 /// The letters set so far in a panel and what each later letter keeps
 /// clear of.
+#[derive(Clone)]
 pub(super) struct Letters {
     /// Both curves as world segments (their jumps' dotted lines within
     /// the cycle too).
@@ -142,6 +180,18 @@ pub(super) struct Letters {
 
 /// A box: its centre and half-size.
 type Boxed = (Point, Vector);
+
+/// A letter set with a leader ([`Letters::led`]).
+pub(super) struct Led {
+    /// The letter and its leader.
+    pub(super) items: [Item; 2],
+    /// Whether its place was the least bad of places that each mislead:
+    /// its leader across another leader or through a letter, or a pair's
+    /// letter short of its dot, or astray by another dot. The letters
+    /// set before it may be set again in another order
+    /// ([`super::loads`]'s marks, the hardest first).
+    pub(super) misleads: bool,
+}
 
 impl Letters {
     /// The letters of a panel drawn by `map` (uniform, world to page)
@@ -206,12 +256,24 @@ impl Letters {
         id: String,
         strict: bool,
     ) -> Option<Item> {
+        let rules = if strict { Rules::ALL } else { Rules::NONE };
+        self.beside_with(from, text, dots, id, rules)
+    }
+
+    /// [`Letters::beside`] keeping `rules`.
+    fn beside_with(
+        &mut self,
+        from: Point,
+        text: RichText,
+        dots: &[Point],
+        id: String,
+        rules: Rules,
+    ) -> Option<Item> {
         let half = self.half(&text);
         let curves = self.curves_near(from, half, *RINGS.last().unwrap_or(&0.0));
         let b = RINGS.iter().find_map(|&ring| {
             (directions().filter_map(|u| {
                 let b = (self.centre(from, u, half, ring), half);
-                let rules = if strict { Rules::ALL } else { Rules::NONE };
                 self.room(b, from, (&curves, dots), false, rules)
                     .map(|room| (b, room))
             }))
@@ -234,10 +296,16 @@ impl Letters {
         (id, leader_id): (String, String),
     ) -> Vec<Item> {
         let o = Point::origin();
-        let items = match self.beside(o, text.clone(), dots, id.clone(), true) {
+        let first = self.beside(o, text.clone(), dots, id.clone(), true);
+        // Nearer the × than any dot, if not by [`NEARER`], rather than
+        // led an em or more away (r = 1, l = 1.05 r: its dead centres'
+        // dots all about the ×).
+        let first =
+            first.or_else(|| self.beside_with(o, text.clone(), dots, id.clone(), Rules::NEAR));
+        let items = match first {
             Some(item) => vec![item],
             None => match self.led(o, text.clone(), dots, (id.clone(), leader_id)) {
-                Some(led) => Vec::from(led),
+                Some(led) => Vec::from(led.items),
                 None => self.beside(o, text, dots, id, false).into_iter().collect(),
             },
         };
@@ -274,15 +342,16 @@ impl Letters {
     /// the curves, then keeping [`LINE_ROOM`] and clear of the leaders,
     /// then on the nearest ring, then with the most room, and a
     /// leader from its box to [`LEADER_SHORT`] short of the dot: the
-    /// text `id` and the leader `leader_id`; `None` where no place within
-    /// three ems is clear. The box is recorded for the letters after it.
+    /// text `id` and the leader `leader_id`, and whether even that place
+    /// misleads ([`Led::misleads`]); `None` where no place within three
+    /// ems is clear. The box is recorded for the letters after it.
     pub(super) fn led(
         &mut self,
         from: Point,
         text: RichText,
         dots: &[Point],
         (id, leader_id): (String, String),
-    ) -> Option<[Item; 2]> {
+    ) -> Option<Led> {
         let half = self.half(&text);
         let curves = self.curves_near(from, half, *FAR_RINGS.last().unwrap_or(&0.0));
         // Fewest crossings first over every ring, then the nearest ring,
@@ -290,7 +359,7 @@ impl Letters {
         // crossed a curve where a ring farther out had a place crossing
         // none (the offset engine r = 1, l = 3.83, e = −1.63: the
         // eleventh review).
-        let (b, _, _) = (FAR_RINGS.iter().enumerate())
+        let (b, (blocked, misleads, ..), _) = (FAR_RINGS.iter().enumerate())
             .flat_map(|(k, &ring)| {
                 let (this, curves) = (&*self, &curves);
                 directions().filter_map(move |u| {
@@ -298,30 +367,38 @@ impl Letters {
                     let (a, end) = this.leader(b, from);
                     let room = this.room(b, from, (curves, dots), true, Rules::NONE)?;
                     let keeps = |rules| this.room(b, from, (curves, dots), true, rules).is_some();
-                    let misleads = !keeps(Rules::PAIRS) || this.leader_blocked(a, end);
+                    // A leader across a leader or through a letter first,
+                    // then a pair's letter or a leader astray.
+                    let blocked = this.leader_blocked(a, end);
+                    // (The pole's letter, by its × unlike a dot, as before.)
+                    let astray = from != Point::origin() && this.astray(b, (a, end), from, dots);
+                    let misleads = !keeps(Rules::PAIRS) || astray;
                     let crowds = !keeps(Rules::LINES);
                     let crossed = (curves.iter())
                         .filter(|(p, q)| crossing(a, from, *p, *q).is_some())
                         .count();
-                    Some((b, (misleads, crossed, crowds, k), room))
+                    Some((b, (blocked, misleads, crossed, crowds, k), room))
                 })
             })
             .min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2)))?;
         self.boxes.push(b);
         let (a, end) = self.leader(b, from);
         self.leaders.push((a, end));
-        Some([
-            self.text(b, text, id),
-            Item::new(
-                leader_id,
-                // A thin full line, as a dimension's.
-                Role::Dimension,
-                Shape::Polyline {
-                    points: vec![a, end],
-                    closed: false,
-                },
-            ),
-        ])
+        Some(Led {
+            items: [
+                self.text(b, text, id),
+                Item::new(
+                    leader_id,
+                    // A thin full line, as a dimension's.
+                    Role::Dimension,
+                    Shape::Polyline {
+                        points: vec![a, end],
+                        closed: false,
+                    },
+                ),
+            ],
+            misleads: blocked || misleads,
+        })
     }
 
     /// A leader from the box `b` to `from` (world): from the box's point
@@ -390,6 +467,11 @@ impl Letters {
         if led && own * s < DOT_ROOM {
             return None;
         }
+        let nearer = if rules.nearer {
+            NEARER * self.size
+        } else {
+            0.0
+        };
         let mut least = self.size;
         for (k, q) in dots.iter().enumerate() {
             if rules.pairs && k > 0 && !self.beyond(b, from, *q, led) {
@@ -400,7 +482,7 @@ impl Letters {
             }
             let d = to_box(b, *q);
             let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
-            if d * s < keep || (!led && d < own) {
+            if d * s < keep || (!led && (d - own) * s < nearer) {
                 return None;
             }
             least = least.min(d * s - keep);
@@ -433,7 +515,27 @@ impl Letters {
     /// review).
     fn leader_blocked(&self, a: Point, end: Point) -> bool {
         (self.leaders.iter()).any(|(p, q)| crossing(a, end, *p, *q).is_some())
-            || (self.boxes.iter()).any(|o| segment_to_box(*o, a, end) == 0.0)
+            || (self.boxes.iter())
+                .any(|o| segment_to_box(*o, a, end) * self.scale < LEADER_CLEAR * self.size)
+    }
+
+    /// Whether the letter `b` led to `from` by the leader `a`–`end`
+    /// (world) could be read as another's: its box within
+    /// [`LED_DOT_ROOM`] of another of the `dots` (the pole first), its
+    /// leader within [`DOT_ROOM`] of one ([`POLE_ROOM`] of the pole: a
+    /// leader through the × reads as pointing at *O*), or its start within
+    /// [`START_ROOM`] of another letter.
+    fn astray(&self, b: Boxed, (a, end): (Point, Point), from: Point, dots: &[Point]) -> bool {
+        let s = self.scale;
+        let mut others =
+            (dots.iter().enumerate()).filter(|(_, q)| (**q - from).norm() * s >= ONE_PLACE);
+        let near_dot = others.any(|(k, q)| {
+            let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
+            to_box(b, *q) * s < LED_DOT_ROOM * self.size
+                || point_segment_distance(*q, a, end) * s < keep
+        });
+        let shared = (self.boxes.iter()).any(|o| to_box(*o, a) * s < START_ROOM * self.size);
+        near_dot || shared
     }
 
     /// The least room, page units, between the box `b` and the curves and
@@ -455,7 +557,9 @@ impl Letters {
         }
         for (p, q) in self.leaders.iter().filter(|_| lines) {
             let d = segment_to_box(b, *p, *q) * s;
-            if d < ROOM {
+            // A leader's start is its letter's: another letter by it
+            // would share the leader, and one on its way stand on it.
+            if d < LEADER_CLEAR * self.size || to_box(b, *p) * s < START_ROOM * self.size {
                 return None;
             }
             least = least.min(d - ROOM);

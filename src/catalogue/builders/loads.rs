@@ -19,7 +19,7 @@
 //! and short rods, its dots would pile into a blob.
 
 use super::load_letters::Letters;
-use super::{Ctx, Sheet, short, sig};
+use super::{Ctx, Sheet, short};
 use crate::angle::Angle;
 use crate::diagram::{Curve, Plot};
 use crate::dynamics::{EXAMPLE_MASS, Engine, RodMass, TurningMoment};
@@ -77,6 +77,15 @@ const CROWD: f64 = 30.0;
 /// How many lettered marks within [`CROWD`] of the pole crowd it (with
 /// the pole's own letter, three letters in two ems).
 const CROWDED: usize = 2;
+
+/// How many lettered marks, each within [`KNOT_REACH`] of another, are a
+/// knot a detail enlarges wherever it stands ([`knots`]).
+const KNOT: usize = 3;
+
+/// Lettered marks nearer each other than this, page units, are in one
+/// knot: an em and a fifth, where three letters beside three dots
+/// cannot each stand nearer its own.
+const KNOT_REACH: f64 = 20.0;
 
 /// A lettered mark this near the pole, page units, stands on its ×
 /// (a dot's diameter): the pole is crowded by it and by the lettered
@@ -446,23 +455,47 @@ struct Window {
 /// none where the pole is not crowded or the detail would enlarge it
 /// less.
 fn window(taken: &[Mark], scale: f64, size: (f64, f64)) -> Option<Window> {
+    let lettered: Vec<Point> = (taken.iter())
+        .filter(|t| !t.3.is_empty())
+        .map(|t| t.2)
+        .collect();
     let within = |reach: f64| -> Vec<Point> {
-        (taken.iter())
-            .filter(|t| !t.3.is_empty())
-            .map(|t| t.2)
+        (lettered.iter().copied())
             .filter(|p| (*p - Point::origin()).norm() * scale < reach)
             .collect()
     };
-    let crowd = match within(CROWD) {
+    let pole = match within(CROWD) {
         near if near.len() >= CROWDED => near,
         _ if !within(ON_POLE).is_empty() => within(ON_POLE_CROWD * CROWD),
-        _ => return None,
+        _ => Vec::new(),
     };
-    if crowd.len() < CROWDED {
+    let pole = if pole.len() < CROWDED {
+        Vec::new()
+    } else {
+        pole
+    };
+    // A knot elsewhere only where the pole is not crowded: the pole's
+    // detail is sized for the pole (r = 1, l = 1.05 r).
+    let knots = if pole.is_empty() {
+        knots(&lettered, scale)
+    } else {
+        Vec::new()
+    };
+    if pole.is_empty() && knots.is_empty() {
         return None;
     }
-    let mut held = Frame::new(Point::origin(), Point::origin());
-    crowd.iter().for_each(|p| held.include(*p));
+    // The pole held where it crowds, or stands within [`CROWD`] of a
+    // knot (its letter among the knot's).
+    let near_pole = |p: &Point| (*p - Point::origin()).norm() * scale < CROWD;
+    let mut held = match (pole.first(), knots.first()) {
+        (Some(_), _) => Frame::new(Point::origin(), Point::origin()),
+        (None, Some(k)) => Frame::new(*k, *k),
+        (None, None) => return None,
+    };
+    if knots.iter().any(near_pole) {
+        held.include(Point::origin());
+    }
+    pole.iter().chain(&knots).for_each(|p| held.include(*p));
     let margin = Vector::new(WINDOW_MARGIN, WINDOW_MARGIN) / scale;
     let reach = (held.max() - held.min()) + 2.0 * margin;
     let middle = held.min() + 0.5 * (held.max() - held.min());
@@ -480,6 +513,31 @@ fn window(taken: &[Mark], scale: f64, size: (f64, f64)) -> Option<Window> {
         core: Frame::new(middle - inner, middle + inner),
         magnification,
     })
+}
+
+/// The lettered marks (`lettered`, world) of a panel at `scale` page
+/// units to the world unit that stand in knots away from the pole: each
+/// group of [`KNOT`] or more, each within [`KNOT_REACH`] of another of
+/// it. Three letters with leaders to three dots a few units apart
+/// (r = 1, l = 2.32 r, e = −0.685 r in (b): 0°′, 180°′ and 270°, 8 to
+/// 17 units apart, 30 from the pole) could not be told apart (the
+/// thirteenth review), though the pole was not crowded.
+fn knots(lettered: &[Point], scale: f64) -> Vec<Point> {
+    let near = |a: Point, b: Point| (a - b).norm() * scale < KNOT_REACH;
+    // Single linkage: a group grows by every mark near one of it.
+    let mut groups: Vec<Vec<Point>> = Vec::new();
+    for &p in lettered {
+        let (joined, apart): (Vec<_>, Vec<_>) =
+            (groups.into_iter()).partition(|g| g.iter().any(|q| near(p, *q)));
+        groups = apart;
+        let mut group: Vec<Point> = joined.into_iter().flatten().collect();
+        group.push(p);
+        groups.push(group);
+    }
+    (groups.into_iter())
+        .filter(|g| g.len() >= KNOT)
+        .flatten()
+        .collect()
 }
 
 /// The details of the panels' `windows` (each its panel's number, whether
@@ -548,9 +606,14 @@ fn polar_plot(
     };
     let caption = match view {
         View::Detail(w) => format!(
-            "({}′) The boxed region of ({}) about the pole enlarged ×{}",
+            "({}′) The boxed region of ({}){} enlarged ×{}",
             if relative { "b" } else { "a" },
             if relative { "b" } else { "a" },
+            if w.region.contains(Point::origin()) {
+                " about the pole"
+            } else {
+                ""
+            },
             short(w.magnification)
         ),
         View::Whole { .. } if relative => "(b) Relative to the crank: along it outwards (→) and across it in the sense of rotation (↑)".to_string(),
@@ -873,10 +936,13 @@ fn marks(
 
 /// The items of the marks `taken` of the panel `name`: each mark's dot
 /// `point-{name}-{curve}-{deg}`, then each lettered mark's letter
-/// `label-{name}-{curve}-{deg}`, on the side [`Letters::side`] finds
-/// clear nearest its dot, or, where none is, set farther out by
-/// [`Letters::led`] with its leader `leader-{name}-{curve}-{deg}`, in the
-/// order of the marks.
+/// ([`mark_letter`]), in the order of the marks. The letters are set in
+/// that order, and where one finds no place that does not mislead (its
+/// leader through a letter set before it: "180°′" through "0°′" at the
+/// default engine on 120 mm, 4.5 in and 500 units), set again with that
+/// one first, the hardest first, while each order still leaves one
+/// misled, at most once for each letter; the order with the fewest misled
+/// letters is kept.
 fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
     let mut items: Vec<Item> = taken
         .iter()
@@ -890,50 +956,98 @@ fn mark_items(name: &str, taken: &[Mark], letters: &mut Letters) -> Vec<Item> {
             )
         })
         .collect();
-    for (c, d, p, letters_of) in taken.iter().filter(|t| !t.3.is_empty()) {
-        // The pole first, then every other dot.
-        let others: Vec<Point> = [Point::origin()]
-            .into_iter()
-            .chain(taken.iter().map(|t| t.2).filter(|q| q != p))
-            .collect();
-        let mut said = letters_of.clone();
-        said.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
-        let text = (said.iter().map(|&(a, dashed)| angle_letter(a, dashed)))
-            .collect::<Vec<_>>()
-            .join(", ");
-        let text = RichText::parse(&text);
-        let id = format!("label-{name}-{c}-{d}");
-        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), true) {
-            items.push(beside);
-            continue;
+    let lettered: Vec<&Mark> = taken.iter().filter(|t| !t.3.is_empty()).collect();
+    let mut order: Vec<usize> = (0..lettered.len()).collect();
+    let mut best: Option<(usize, Vec<Vec<Item>>, Letters)> = None;
+    for _ in 0..=lettered.len() {
+        let mut trial = letters.clone();
+        let mut set: Vec<Vec<Item>> = vec![Vec::new(); lettered.len()];
+        let mut misled = Vec::new();
+        for &k in &order {
+            let Some(mark) = lettered.get(k) else {
+                continue;
+            };
+            let (its, misleads) = mark_letter(name, taken, mark, &mut trial);
+            if misleads {
+                misled.push(k);
+            }
+            if let Some(slot) = set.get_mut(k) {
+                *slot = its;
+            }
         }
-        // No side clear within a letter's reach: set farther out with a
-        // leader to the dot.
-        let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
-        if let Some(led) = letters.led(*p, text.clone(), &others, ids) {
-            items.extend(led);
-            continue;
+        let count = misled.len();
+        if best.as_ref().is_none_or(|b| count < b.0) {
+            best = Some((count, set, trial));
         }
-        // No place within three ems keeps the room a leader needs: beside
-        // its dot after all, without the pairs' and lines' rules.
-        if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), false) {
-            items.push(beside);
-            continue;
+        // The first misled letter first, unless it is first already.
+        match misled.first() {
+            Some(&k) if order.first() != Some(&k) => {
+                order.retain(|&j| j != k);
+                order.insert(0, k);
+            }
+            _ => break,
         }
-        items.push(Item::new(
-            id,
-            Role::Label,
-            Shape::Label {
-                anchor: *p,
-                text,
-                // A point's letter: placed nearer its mark than any other.
-                size: TextSize::Letter,
-                toward: None,
-                line: None,
-            },
-        ));
+    }
+    if let Some((_, set, trial)) = best {
+        *letters = trial;
+        items.extend(set.into_iter().flatten());
     }
     items
+}
+
+/// The letter of the lettered mark `mark` of the panel `name` among the
+/// marks `taken`: `label-{name}-{curve}-{deg}`, on the side
+/// [`Letters::beside`] finds clear nearest its dot, or, where none is,
+/// set farther out by [`Letters::led`] with its leader
+/// `leader-{name}-{curve}-{deg}`; and whether that place misleads
+/// ([`super::load_letters::Led`]; a letter set beside its dot without
+/// the pairs' and lines' rules, or left to the layout, misleads too).
+fn mark_letter(
+    name: &str,
+    taken: &[Mark],
+    mark: &Mark,
+    letters: &mut Letters,
+) -> (Vec<Item>, bool) {
+    let (c, d, p, letters_of) = mark;
+    // The pole first, then every other dot.
+    let others: Vec<Point> = [Point::origin()]
+        .into_iter()
+        .chain(taken.iter().map(|t| t.2).filter(|q| q != p))
+        .collect();
+    let mut said = letters_of.clone();
+    said.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
+    let text = (said.iter().map(|&(a, dashed)| angle_letter(a, dashed)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let text = RichText::parse(&text);
+    let id = format!("label-{name}-{c}-{d}");
+    if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), true) {
+        return (vec![beside], false);
+    }
+    // No side clear within a letter's reach: set farther out with a
+    // leader to the dot.
+    let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
+    if let Some(led) = letters.led(*p, text.clone(), &others, ids) {
+        return (Vec::from(led.items), led.misleads);
+    }
+    // No place within three ems keeps the room a leader needs: beside
+    // its dot after all, without the pairs' and lines' rules.
+    if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), false) {
+        return (vec![beside], true);
+    }
+    let label = Item::new(
+        id,
+        Role::Label,
+        Shape::Label {
+            anchor: *p,
+            text,
+            // A point's letter: placed nearer its mark than any other.
+            size: TextSize::Letter,
+            toward: None,
+            line: None,
+        },
+    );
+    (vec![label], true)
 }
 
 /// The notes: the engine and its rod, the largest loads.
@@ -949,17 +1063,17 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             ctx.offset_clause(),
             short(ctx.rpm()),
             short(ctx.options.mass.unwrap_or(EXAMPLE_MASS)),
-            sig(r.map_or(0.0, RodMass::mass)),
-            sig(r.map_or(0.0, RodMass::cg)),
-            sig(r.map_or(0.0, RodMass::gyration)),
+            short(r.map_or(0.0, RodMass::mass)),
+            short(r.map_or(0.0, RodMass::cg)),
+            short(r.map_or(0.0, RodMass::gyration)),
             rod_said(ctx),
             super::turning::guides_note(ctx),
             short(bar),
         ),
         format!(
             "Largest load on the crank pin over the cycle: {} {f} with the rod’s inertia, {} {f} without it (Newton–Euler on the slider and on the rod as a rigid body).",
-            sig(largest[0]),
-            sig(largest[1]),
+            short(largest[0]),
+            short(largest[1]),
         ),
         SHAPES.to_string(),
     ]
