@@ -142,10 +142,6 @@ pub(crate) struct Obstacles {
     opening: Vec<bool>,
     /// Whether the segments added next open for letters.
     opens: bool,
-    /// For each segment, by its place in `segments`, the hollow box whose
-    /// outline it is ([`Obstacles::hollow`]), if any: no line between
-    /// a letter and its point inside the box.
-    outline: Vec<Option<usize>>,
     /// Whether a letter's glyphs on a segment that opens are struck in a
     /// search ([`Obstacles::set_openings_strike`]).
     openings_strike: bool,
@@ -162,7 +158,6 @@ impl Default for Obstacles {
             weight: 1.0,
             opening: Vec::new(),
             opens: false,
-            outline: Vec::new(),
             openings_strike: true,
         }
     }
@@ -229,7 +224,6 @@ impl Obstacles {
             let i = self.segments.len();
             self.segments.push((a, b, self.weight));
             self.opening.push(self.opens);
-            self.outline.push(None);
             self.pending.push((rectangle(a, b), Obstacle::Segment(i)));
         }
     }
@@ -283,7 +277,6 @@ impl Obstacles {
     pub fn rollback(&mut self, mark: Mark) {
         self.segments.truncate(mark.segments);
         self.opening.truncate(mark.segments);
-        self.outline.truncate(mark.segments);
         self.boxes.truncate(mark.boxes);
         self.pending.truncate(mark.pending);
     }
@@ -304,12 +297,7 @@ impl Obstacles {
     pub fn hollow(&mut self, b: Bounds) {
         let (p, q) = (b.min, b.max);
         let corners = [p, Point::new(q.x, p.y), q, Point::new(p.x, q.y), p];
-        let first = self.segments.len();
         self.polyline(&corners);
-        let boxed = self.boxes.len();
-        for o in self.outline.iter_mut().skip(first) {
-            *o = Some(boxed);
-        }
         self.add_box(b, true);
     }
 
@@ -502,18 +490,6 @@ impl Near<'_> {
             }
             ControlFlow::Continue(())
         };
-        let _ = self.meeting(b, &mut add);
-        cost
-    }
-
-    /// Calls `add` with each obstacle whose box meets `b`, those of the
-    /// grid (or gathered) in their order, then those added since, until
-    /// it breaks off.
-    fn meeting(
-        &self,
-        b: &Bounds,
-        add: &mut impl FnMut(&(Bounds, Obstacle)) -> ControlFlow<()>,
-    ) -> ControlFlow<()> {
         let flow = match &self.found {
             Some(found) => (found.iter())
                 .filter(|(bounds, _)| {
@@ -521,53 +497,18 @@ impl Near<'_> {
                     EXAMINED.set(EXAMINED.get() + 1);
                     bounds.meets(b)
                 })
-                .try_for_each(&mut *add),
-            None => self.in_grid(b, add),
+                .try_for_each(&mut add),
+            None => self.in_grid(b, &mut add),
         };
-        flow?;
-        let pending = self.pending.iter().filter(|(bounds, _)| {
-            #[cfg(test)]
-            EXAMINED.set(EXAMINED.get() + 1);
-            bounds.meets(b)
-        });
-        pending.into_iter().try_for_each(add)
-    }
-
-    /// Whether a line no letter may sit on (weight [`OPEN`] or more, not
-    /// one that opens for letters, not the outline of a hollow box that
-    /// holds `anchor`) runs between `anchor` and the glyphs of `b`:
-    /// crosses the way from the point, [`CUT_FROM`] out of it (a line
-    /// through the point or ending at it does not cut it off), to the
-    /// glyphs' nearest point. False where the glyphs hold the anchor or
-    /// stand within [`CUT_FROM`] of it.
-    fn cut_off(&self, anchor: Point, b: &Bounds) -> bool {
-        let glyphs = b.glyphs();
-        let to = anchor.sup(&glyphs.min).inf(&glyphs.max);
-        let way = to - anchor;
-        let length = way.norm();
-        if length <= CUT_FROM {
-            return false;
+        if flow.is_continue() {
+            let pending = self.pending.iter().filter(|(bounds, _)| {
+                #[cfg(test)]
+                EXAMINED.set(EXAMINED.get() + 1);
+                bounds.meets(b)
+            });
+            let _ = pending.into_iter().try_for_each(&mut add);
         }
-        let from = anchor + way * (CUT_FROM / length);
-        let cuts = |&(_, o): &(Bounds, Obstacle)| {
-            let Obstacle::Segment(i) = o else {
-                return ControlFlow::Continue(());
-            };
-            let obstacles = self.obstacles;
-            let (Some(&(p, q, w)), Some(false), Some(outline)) = (
-                obstacles.segments.get(i),
-                obstacles.opening.get(i).copied(),
-                obstacles.outline.get(i),
-            ) else {
-                return ControlFlow::Continue(());
-            };
-            let own = outline.is_some_and(|k| obstacles.holds(Obstacle::Box(k), anchor));
-            match w >= OPEN && !own && crossing(from, to, p, q).is_some() {
-                true => ControlFlow::Break(()),
-                false => ControlFlow::Continue(()),
-            }
-        };
-        self.meeting(&rectangle(from, to), &mut { cuts }).is_break()
+        cost
     }
 
     /// Calls `add` with each obstacle of the grid whose box meets `b`, in
@@ -798,13 +739,6 @@ pub(crate) struct Steer<'a> {
     /// a box, or that stands too near the line to have one, costs
     /// [`STRUCK`] more; `None` where no leader is drawn.
     pub led: Option<(Segment, &'a [Segment], &'a [Segment])>,
-    /// Whether the anchor is a mark (a point's dot or pin) the text names:
-    /// a place a drawn line cuts off from it ([`Near::cut_off`]: c′b′
-    /// drawn beside b′c′ ran between a′'s and q′'s dots and their letters
-    /// at l = 2.6 r, e = 1.06 r, 180°) costs [`STRUCK`] more, as a letter
-    /// read with the wrong side of a line; false for a text set by a line
-    /// or an arc, or led to its line.
-    pub mark: bool,
     /// Whether `toward` is a preference only (a point's letter set away
     /// from a point near it), not a side to keep to (an angle's
     /// bisector): beyond its first ring a place along it competes with
@@ -926,7 +860,6 @@ pub(crate) fn place_toward(
         line,
         dimensions,
         led,
-        mark,
         near_first,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
@@ -982,11 +915,6 @@ pub(crate) fn place_toward(
             if !clear {
                 cost += STRUCK;
             }
-        }
-        // Last, and only for a place that would be the best: whether a
-        // line cuts it off from its point.
-        if mark && cost + penalty < best.0 && near.cut_off(anchor, &b) {
-            cost += STRUCK;
         }
         if cost + penalty < best.0 {
             *best = (cost + penalty, cost, centre);
@@ -1073,12 +1001,6 @@ const OPEN: f64 = 1.0;
 /// about them) meet something: any place where only the room is crowded
 /// is better.
 pub(crate) const STRUCK: f64 = 1000.0;
-
-/// How far from a letter's point (page units) the way to its glyphs
-/// starts that no line may cross ([`Near::cut_off`]): past a dot's or
-/// a small pin's edge, so that the lines through the point or ending at
-/// it do not count.
-const CUT_FROM: f64 = 1.5;
 
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;

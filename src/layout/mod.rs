@@ -548,7 +548,6 @@ impl PanelLayout<'_> {
                                 line: p.line.map(|own| (own, rivals.as_slice())),
                                 dimensions: &self.dimensions,
                                 led: None,
-                                mark: p.letter && p.along.is_empty() && p.line.is_none(),
                                 near_first: p.letter && p.along.is_empty() && p.line.is_none(),
                             },
                             &self.obstacles,

@@ -1312,50 +1312,6 @@ fn a_scale_bar_s_ends_are_ticks_across_it_clear_of_its_text() {
     }
 }
 
-/// Whether the segments `a b` and `c d` cross (touching included).
-fn cross(a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)) -> bool {
-    let o = |p: (f64, f64), q: (f64, f64), r: (f64, f64)| {
-        (q.0 - p.0) * (r.1 - p.1) - (q.1 - p.1) * (r.0 - p.0)
-    };
-    let (d1, d2, d3, d4) = (o(c, d, a), o(c, d, b), o(a, b, c), o(a, b, d));
-    d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != 0.0 || d2 != 0.0)
-}
-
-#[test]
-fn no_side_runs_between_a_letter_and_its_dot() {
-    // The fourteenth review: the polygons' figure at l = 2.6 r,
-    // e = 1.06 r, 180° drew c′b′ beside b′c′ (a pair on one line set
-    // apart) between a′'s dot and its letter, which read as the other
-    // side's. The way from a′'s dot (two units out of it, past the lines
-    // that end at it) to the nearest point of its letter's glyphs crosses
-    // no side of the acceleration polygon.
-    for (rod, offset, deg) in [(2.6, 1.06, 180.0), (2.58, 1.02, 180.0)] {
-        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, offset, deg);
-        let plate = Plate::read(&svg);
-        let all = sides(&svg, false);
-        for key in ["a2", "b2", "c2"] {
-            let p = dot(&svg, &format!("point-{key}"));
-            let r = (plate.texts.iter())
-                .find(|t| t.id == format!("label-{key}"))
-                .unwrap_or_else(|| panic!("no label-{key}"))
-                .rect;
-            let to = (p.0.clamp(r.x0, r.x1), p.1.clamp(r.y0, r.y1));
-            let length = (to.0 - p.0).hypot(to.1 - p.1);
-            if length <= 2.0 {
-                continue;
-            }
-            let k = 2.0 / length;
-            let from = (p.0 + (to.0 - p.0) * k, p.1 + (to.1 - p.1) * k);
-            for (id, a, b) in &all {
-                assert!(
-                    !cross(from, to, *a, *b),
-                    "l = {rod} r, e = {offset} r, {deg}°: {id} runs between {key}'s dot and its letter"
-                );
-            }
-        }
-    }
-}
-
 #[test]
 fn the_coriolis_pins_at_a_short_rod_s_inner_dead_centre_are_lettered_apart() {
     // The fourteenth review: inversion 2 at l = 1.09 r, 180° and

@@ -12,7 +12,7 @@ use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{Foot, Item, PageRect, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Point, Vector};
+use crate::geom::{Frame, Point, Vector, unit};
 use crate::scene::{Canvas, Marker};
 
 /// The page length under which inversion 3's crank CB, the driver, gets
@@ -33,14 +33,32 @@ pub(super) const FIXED_CRANK_LEAST: f64 = 15.0;
 
 /// The page distance under which the block's pin A and the crank centre
 /// C crowd: at a short rod's inner dead centre (l = 1.09 r, 180° in
-/// inversion 2, 1.02 r in inversion 3) A, C and the block's c stood on
-/// one another, the block's outline round both pins. Two em of a
-/// letter, as the inversions' figures' crowded pins.
-pub(super) const PINS_APART: f64 = 34.0;
+/// inversion 2, 10 units apart; 1.02 r in inversion 3, 2.4) A, C and the
+/// block's c stood on one another, the block's outline round both pins.
+/// Two diameters of a pin (4.2 units in radius): at two em (34 units, as
+/// the inversions' figures' crowded pins) the plate sweep found the
+/// detail's block drawn through C's letter (l = 1.05 r to 1.1 r, 120° to
+/// 150°), where the pins read on the mechanism.
+pub(super) const PINS_APART: f64 = 17.0;
 
 /// How far apart crowded pins C and A are drawn in their detail, page
 /// units, at most (the magnification is rounded down).
 pub(super) const PINS_SPREAD: f64 = 64.0;
+
+/// The angle (degrees) between the crank CB and the line CA within which
+/// the chain lies along the line of stroke at its inner dead centre, A
+/// by C inside the block and their letters stacked; with the pins
+/// crowded there, the mechanism takes their detail. Farther from it
+/// (l = 1.08 r at 160° and 200°, 20°) the detail, its block enlarged
+/// across both pins, drew the block through C's letter.
+const FOLDED: f64 = 15.0;
+
+/// The least page length of the crank on a mechanism drawn beside the
+/// crowded pins' detail: shorter, the detail goes below the mechanism,
+/// drawn across the page (inversion 3 at l = 1.09 r, 180° on a page 120
+/// mm wide set B, ω, a and b within a few units of one another on a
+/// mechanism drawn beside the detail).
+const BESIDE_CRANK: f64 = 60.0;
 
 /// The most of the pins' detail's height the slotted bar d (as wide as
 /// the block) may take: enlarged further, the bar and the block filled
@@ -61,7 +79,8 @@ const BORDER_INSET: f64 = 0.5;
 /// inside the box; where the crank reads but C and A stand nearer than
 /// [`PINS_APART`] (a short rod at the inner dead centre), the same
 /// detail about them, spread to [`PINS_SPREAD`], lettering C, A and the
-/// block there.
+/// block there (below the mechanism where beside it the crank would be
+/// drawn shorter than [`BESIDE_CRANK`]).
 pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, Option<Plot>)> {
     let m = ctx.mechanism;
     let frame = super::super::inversions::links_frame(&m, pose);
@@ -84,16 +103,31 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let engine = pose.engine_pose();
     let (c, a) = (pose.place(engine.c()), pose.place(engine.a()));
     let pins = (a - c).norm() * scale;
-    let crowded = m.crank() * scale >= least && pins < PINS_APART;
+    let b = pose.place(engine.b());
+    let folded = unit(b - c)
+        .zip(unit(a - c))
+        .is_some_and(|(u, v)| u.dot(&v).abs() > FOLDED.to_radians().cos());
+    let crowded = m.crank() * scale >= least && pins < PINS_APART && folded;
     if m.crank() * scale >= least && !crowded {
         return Ok((links_plot(ctx, pose, whole, None, None)?.0, None));
     }
     let side = tall;
     let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
-    let plot = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
+    let beside = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
+    let (plot, detail_rect) = if crowded && m.crank() * beside.map().scale() < BESIDE_CRANK {
+        let x = MARGIN + 0.5 * (width - side);
+        (
+            whole,
+            PageRect::new(x, MARGIN + rect.height + GAP, side, rect.height),
+        )
+    } else {
+        (
+            beside,
+            PageRect::new(MARGIN + width - side, MARGIN, side, rect.height),
+        )
+    };
     let scale = plot.map().scale();
-    let b = pose.place(pose.engine_pose().b());
-    let detail_rect = PageRect::new(MARGIN + width - side, MARGIN, side, rect.height);
+    let pins = (a - c).norm() * scale;
     // `panel-detail-mechanism`: a crank's detail, read as the plate check
     // reads every mechanism's detail (`panel-detail…`, its ids `detail-…`).
     let (region, detail) = match crowded {
