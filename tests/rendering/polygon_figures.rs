@@ -1311,3 +1311,60 @@ fn a_scale_bar_s_ends_are_ticks_across_it_clear_of_its_text() {
         }
     }
 }
+
+#[test]
+fn the_coriolis_pins_at_a_short_rod_s_inner_dead_centre_are_lettered_apart() {
+    // The fourteenth review: inversion 2 at l = 1.09 r, 180° and
+    // inversion 3 at 1.02 r, 180° set A, C and the block's c on one
+    // another, the block's outline round both pins. Wherever A and C are
+    // both lettered (the mechanism or its detail) their pins (4.2 units
+    // in radius) stand two diameters apart, each letter nearer its own
+    // pin than the other by 3 units, and one of the two views letters
+    // both.
+    const APART: f64 = 4.0 * 4.2;
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion2, 1.09, 180.0),
+        (FigureName::CoriolisInversion2, 1.08, 180.0),
+        (FigureName::CoriolisInversion3, 1.02, 180.0),
+        (FigureName::CoriolisInversion3, 1.05, 179.5),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let mut lettered = false;
+        for prefix in ["", "detail-"] {
+            let has = |id: &str| element(&svg, &format!("{prefix}{id}")).is_some();
+            if !(has("label-A") && has("label-C")) {
+                continue;
+            }
+            lettered = true;
+            let (a, c) = (
+                dot(&svg, &format!("{prefix}point-A")),
+                dot(&svg, &format!("{prefix}point-C")),
+            );
+            let apart = (a.0 - c.0).hypot(a.1 - c.1);
+            assert!(
+                apart >= APART,
+                "{name:?} l = {rod} r, {deg}°: {prefix}A and C lettered {apart:.1} units apart"
+            );
+            let plate = Plate::read(&svg);
+            for (key, own, other) in [("A", a, c), ("C", c, a)] {
+                let r = (plate.texts.iter())
+                    .find(|t| t.id == format!("{prefix}label-{key}"))
+                    .expect("the letter")
+                    .rect;
+                let to = |p: (f64, f64)| {
+                    (p.0.clamp(r.x0, r.x1) - p.0).hypot(p.1.clamp(r.y0, r.y1) - p.1)
+                };
+                assert!(
+                    to(own) + 3.0 <= to(other),
+                    "{name:?} l = {rod} r, {deg}°: {prefix}{key}'s letter {:.1} from its pin, {:.1} from the other",
+                    to(own),
+                    to(other)
+                );
+            }
+        }
+        assert!(
+            lettered,
+            "{name:?} l = {rod} r, {deg}°: A and C not both lettered"
+        );
+    }
+}

@@ -3,15 +3,16 @@
 //! detail of the crank where it is drawn too short to read.
 
 use super::super::Ctx;
-use super::super::inversions::{Shown, crank_window};
+use super::super::inversions::{Shown, crank_window, slot_half_width};
+use super::super::short;
 use super::panel::mark_window;
-use super::{GAP, MARGIN, MECHANISM_HEIGHT};
+use super::{FINE_STEPS, GAP, MARGIN, MECHANISM_HEIGHT, round_below};
 
 use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Foot, PageRect, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Point, Vector};
+use crate::figure::{Foot, Item, PageRect, RichText, Role, Shape, TextSize};
+use crate::geom::{Frame, Point, Vector, unit};
 use crate::scene::{Canvas, Marker};
 
 /// The page length under which inversion 3's crank CB, the driver, gets
@@ -30,12 +31,56 @@ pub(super) const CRANK_LEAST: f64 = 40.0;
 /// room of it (a rod of six cranks on a page 120 mm wide).
 pub(super) const FIXED_CRANK_LEAST: f64 = 15.0;
 
+/// The page distance under which the block's pin A and the crank centre
+/// C crowd: at a short rod's inner dead centre (l = 1.09 r, 180° in
+/// inversion 2, 10 units apart; 1.02 r in inversion 3, 2.4) A, C and the
+/// block's c stood on one another, the block's outline round both pins.
+/// Two diameters of a pin (4.2 units in radius): at two em (34 units, as
+/// the inversions' figures' crowded pins) the plate sweep found the
+/// detail's block drawn through C's letter (l = 1.05 r to 1.1 r, 120° to
+/// 150°), where the pins read on the mechanism.
+pub(super) const PINS_APART: f64 = 17.0;
+
+/// How far apart crowded pins C and A are drawn in their detail, page
+/// units, at most (the magnification is rounded down).
+pub(super) const PINS_SPREAD: f64 = 64.0;
+
+/// The angle (degrees) between the crank CB and the line CA within which
+/// the chain lies along the line of stroke at its inner dead centre, A
+/// by C inside the block and their letters stacked; with the pins
+/// crowded there, the mechanism takes their detail. Farther from it
+/// (l = 1.08 r at 160° and 200°, 20°) the detail, its block enlarged
+/// across both pins, drew the block through C's letter.
+const FOLDED: f64 = 15.0;
+
+/// The least page length of the crank on a mechanism drawn beside the
+/// crowded pins' detail: shorter, the detail goes below the mechanism,
+/// drawn across the page (inversion 3 at l = 1.09 r, 180° on a page 120
+/// mm wide set B, ω, a and b within a few units of one another on a
+/// mechanism drawn beside the detail).
+const BESIDE_CRANK: f64 = 60.0;
+
+/// The most of the pins' detail's height the slotted bar d (as wide as
+/// the block) may take: enlarged further, the bar and the block filled
+/// the detail (inversion 3 at l = 1.02 r, 180°: ×25, a grey field with
+/// C and A inside it and c's letter at its far corner), and the
+/// magnification is held to this.
+const BAR_SHARE: f64 = 0.3;
+
+/// How far inside its clipped area the pins' detail's border is drawn,
+/// page units: half its line's width, so that it is drawn whole.
+const BORDER_INSET: f64 = 0.5;
+
 /// The mechanism panel: the chain at the pose in the fixed link's frame,
 /// its pins lettered C, B, A and the driver's sense of turning; where
 /// inversion 3's crank is drawn shorter than [`CRANK_LEAST`] (inversion
 /// 2's than [`FIXED_CRANK_LEAST`]), a detail of the region about it
 /// beside the panel (boxed there), which carries ω and letters the pins
-/// inside the box.
+/// inside the box; where the crank reads but C and A stand nearer than
+/// [`PINS_APART`] (a short rod at the inner dead centre), the same
+/// detail about them, spread to [`PINS_SPREAD`], lettering C, A and the
+/// block there (below the mechanism where beside it the crank would be
+/// drawn shorter than [`BESIDE_CRANK`]).
 pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, Option<Plot>)> {
     let m = ctx.mechanism;
     let frame = super::super::inversions::links_frame(&m, pose);
@@ -55,24 +100,105 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
         Inversion::Rod => CRANK_LEAST,
         _ => FIXED_CRANK_LEAST,
     };
-    if m.crank() * scale >= least {
+    let engine = pose.engine_pose();
+    let (c, a) = (pose.place(engine.c()), pose.place(engine.a()));
+    let pins = (a - c).norm() * scale;
+    let b = pose.place(engine.b());
+    let folded = unit(b - c)
+        .zip(unit(a - c))
+        .is_some_and(|(u, v)| u.dot(&v).abs() > FOLDED.to_radians().cos());
+    let crowded = m.crank() * scale >= least && pins < PINS_APART && folded;
+    if m.crank() * scale >= least && !crowded {
         return Ok((links_plot(ctx, pose, whole, None, None)?.0, None));
     }
     let side = tall;
     let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
-    let plot = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
+    let beside = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
+    let (plot, detail_rect) = if crowded && m.crank() * beside.map().scale() < BESIDE_CRANK {
+        let x = MARGIN + 0.5 * (width - side);
+        (
+            whole,
+            PageRect::new(x, MARGIN + rect.height + GAP, side, rect.height),
+        )
+    } else {
+        (
+            beside,
+            PageRect::new(MARGIN + width - side, MARGIN, side, rect.height),
+        )
+    };
     let scale = plot.map().scale();
-    let b = pose.place(pose.engine_pose().b());
-    let detail_rect = PageRect::new(MARGIN + width - side, MARGIN, side, rect.height);
+    let pins = (a - c).norm() * scale;
     // `panel-detail-mechanism`: a crank's detail, read as the plate check
     // reads every mechanism's detail (`panel-detail…`, its ids `detail-…`).
-    let (region, detail) = crank_window(ctx, "detail-mechanism", b, detail_rect, scale)?;
+    let (region, detail) = match crowded {
+        false => crank_window(ctx, "detail-mechanism", b, detail_rect, scale)?,
+        // l > r keeps C and A apart: `pins` is not zero.
+        true => pins_window(
+            ctx,
+            c + (a - c) * 0.5,
+            PINS_SPREAD / pins,
+            detail_rect,
+            scale,
+        )?,
+    };
     // The detail stands the bearings of its pins on the sides the whole
     // mechanism does: one rule for both views.
     let (plot, shown) = links_plot(ctx, pose, plot, Some(region), None)?;
     let follow = Some(shown.about(region));
     let (detail, _) = links_plot(ctx, pose, detail, Some(region), follow)?;
     Ok((plot, Some(detail)))
+}
+
+/// The detail of the crowded pins C and A in `rect` (its caption
+/// included), for a main view at `scale` page units per world unit: the
+/// world region about `centre` it shows at the round magnification below
+/// `wanted` (at least 1; lower where the slotted bar would take more than
+/// [`BAR_SHARE`] of its height), and its plot, captioned with the magnification
+/// and framed, its panel `panel-detail-mechanism`.
+fn pins_window(
+    ctx: &Ctx,
+    centre: Point,
+    wanted: f64,
+    rect: PageRect,
+    scale: f64,
+) -> Result<(Frame, Plot)> {
+    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
+    let m = ctx.mechanism;
+    let mut magnification = round_below(wanted, &FINE_STEPS).max(1.0);
+    // The bar's width at a magnification: its world half width (the
+    // block's, at least a few units on the page) times two, enlarged.
+    let bar = |k: f64| 2.0 * slot_half_width(&m, k * scale) * k * scale;
+    while magnification > 1.0 && bar(magnification) > BAR_SHARE * h {
+        magnification = round_below(magnification * (1.0 - 1e-9), &FINE_STEPS).max(1.0);
+    }
+    let half = Vector::new(w, h) * (0.5 / (magnification * scale));
+    let region = Frame::new(centre - half, centre + half);
+    let caption = format!("the boxed region enlarged ×{}", short(magnification));
+    let mut plot = Plot::world(
+        "detail-mechanism",
+        rect,
+        &region,
+        false,
+        ctx.tolerance,
+        ctx.font,
+    )?
+    .with_caption(&caption);
+    let map = *plot.map();
+    let inside = BORDER_INSET / map.scale();
+    let seen = map.world_frame(&plot.area());
+    let (lo, hi) = (
+        seen.min() + Vector::new(inside, inside),
+        seen.max() - Vector::new(inside, inside),
+    );
+    plot.push(Item::new(
+        "detail-mechanism-border",
+        Role::Frame,
+        Shape::Polyline {
+            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
+            closed: true,
+        },
+    ));
+    Ok((region, plot))
 }
 
 /// The chain drawn on `plot`: its links, pins C, B, A lettered where on

@@ -107,7 +107,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let polygons = Polygons { inversion, p, ca };
     let page = ctx.page();
     let (mechanism, crank_detail) = mechanism_plot(ctx, &pose)?;
-    let top = mechanism.rect().y + mechanism.rect().height + GAP;
+    // The mechanism's detail stands beside it, or below it.
+    let bottom = |r: PageRect| r.y + r.height;
+    let top = crank_detail.as_ref().map_or(bottom(mechanism.rect()), |d| {
+        bottom(mechanism.rect()).max(bottom(d.rect()))
+    }) + GAP;
     let [v_rect, a_rect, rule_rect] = row(page.width(), top, POLYGON_HEIGHT);
     let [v_below, a_below, _] = row(page.width(), top + POLYGON_HEIGHT + GAP, DETAIL_HEIGHT);
     let area = |r: PageRect| (r.width, r.height - crate::diagram::CAPTION);
