@@ -448,9 +448,22 @@ fn window(
     rect: crate::figure::PageRect,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
-    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
     let steps = super::coriolis::FINE_STEPS;
     let magnification = super::coriolis::round_below(wanted, &steps).max(1.0);
+    window_at(ctx, name, (centre, magnification), rect, scale)
+}
+
+/// The detail of [`window`] at `magnification` itself (a round one, at
+/// least 1), for a figure that chooses it by a rule of its own (the
+/// Coriolis figures' pins).
+pub(super) fn window_at(
+    ctx: &Ctx,
+    name: &str,
+    (centre, magnification): (Point, f64),
+    rect: crate::figure::PageRect,
+    scale: f64,
+) -> Result<(Frame, Plot)> {
+    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
     let half = Vector::new(w, h) * (0.5 / (magnification * scale));
     let region = Frame::new(centre - half, centre + half);
     let caption = format!("the boxed region enlarged ×{}", short(magnification));

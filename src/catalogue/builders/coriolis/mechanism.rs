@@ -3,15 +3,14 @@
 //! detail of the crank where it is drawn too short to read.
 
 use super::super::Ctx;
-use super::super::inversions::{Shown, crank_window, slot_half_width};
-use super::super::short;
+use super::super::inversions::{Shown, crank_window, slot_half_width, window_at};
 use super::panel::mark_window;
 use super::{FINE_STEPS, GAP, MARGIN, MECHANISM_HEIGHT, round_below};
 
 use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Foot, Item, PageRect, RichText, Role, Shape, TextSize};
+use crate::figure::{Foot, PageRect, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector, unit};
 use crate::scene::{Canvas, Marker};
 
@@ -66,10 +65,6 @@ const BESIDE_CRANK: f64 = 60.0;
 /// C and A inside it and c's letter at its far corner), and the
 /// magnification is held to this.
 const BAR_SHARE: f64 = 0.3;
-
-/// How far inside its clipped area the pins' detail's border is drawn,
-/// page units: half its line's width, so that it is drawn whole.
-const BORDER_INSET: f64 = 0.5;
 
 /// The mechanism panel: the chain at the pose in the fixed link's frame,
 /// its pins lettered C, B, A and the driver's sense of turning; where
@@ -162,7 +157,7 @@ fn pins_window(
     rect: PageRect,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
-    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
+    let h = rect.height - crate::diagram::CAPTION;
     let m = ctx.mechanism;
     let mut magnification = round_below(wanted, &FINE_STEPS).max(1.0);
     // The bar's width at a magnification: its world half width (the
@@ -171,34 +166,13 @@ fn pins_window(
     while magnification > 1.0 && bar(magnification) > BAR_SHARE * h {
         magnification = round_below(magnification * (1.0 - 1e-9), &FINE_STEPS).max(1.0);
     }
-    let half = Vector::new(w, h) * (0.5 / (magnification * scale));
-    let region = Frame::new(centre - half, centre + half);
-    let caption = format!("the boxed region enlarged ×{}", short(magnification));
-    let mut plot = Plot::world(
+    window_at(
+        ctx,
         "detail-mechanism",
+        (centre, magnification),
         rect,
-        &region,
-        false,
-        ctx.tolerance,
-        ctx.font,
-    )?
-    .with_caption(&caption);
-    let map = *plot.map();
-    let inside = BORDER_INSET / map.scale();
-    let seen = map.world_frame(&plot.area());
-    let (lo, hi) = (
-        seen.min() + Vector::new(inside, inside),
-        seen.max() - Vector::new(inside, inside),
-    );
-    plot.push(Item::new(
-        "detail-mechanism-border",
-        Role::Frame,
-        Shape::Polyline {
-            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
-            closed: true,
-        },
-    ));
-    Ok((region, plot))
+        scale,
+    )
 }
 
 /// The chain drawn on `plot`: its links, pins C, B, A lettered where on
