@@ -34,6 +34,10 @@ pub(crate) enum Marker {
     Pin,
     /// A small dot.
     Dot,
+    /// A small dot drawn with the links, over them: a point of the
+    /// construction lying in a link drawn as a body, whose tone and the
+    /// paper round the links over it would hide a dot drawn under them.
+    DotOver,
 }
 
 /// A panel's items being drawn in one world frame with one map to the
@@ -469,6 +473,7 @@ impl Canvas {
         match marker {
             Marker::Pin => self.push(key, Role::Link, Shape::Pin { centre: p }),
             Marker::Dot => self.push(key, Role::Construction, Shape::Dot { centre: p }),
+            Marker::DotOver => self.push(key, Role::Link, Shape::Dot { centre: p }),
         };
         // A pin inside a crank's detail is lettered there: on the main
         // view its letter stood against its neighbour's (A and C touching

@@ -763,3 +763,29 @@ fn at_a_dead_centre_the_letters_along_one_line_take_its_two_sides() {
         );
     }
 }
+
+#[test]
+fn a_centre_lying_in_d_s_body_is_drawn_over_it_and_the_links() {
+    // The fifteenth review (2.5): where b crosses d's leg, O_ac lies in
+    // d's body, and its dot, drawn before the links, was hidden by d's
+    // tone and b's rim of paper; its letter named the leg's corner
+    // (inversion 2 at l = 2.91 r, e = −1.57 r and l = 1.92 r,
+    // e = 0.671 r, inversion 3 at l = 1.65 r, e = 0.402 r, all at 180°).
+    // A dot in d's outline comes after d and the links in the drawing.
+    for (name, rod, offset) in [(I2, 2.91, -1.57), (I2, 1.92, 0.671), (I3, 1.65, 0.402)] {
+        let svg = svg(name, rod, offset, 180.0);
+        let at = format!("{name:?} l = {rod}, e = {offset}, 180°");
+        let dot = pin_at(&svg, "point-O-ac").unwrap_or_else(|| panic!("{at}: no O_ac dot"));
+        assert!(
+            within(&path(&svg, "link-frame"), dot),
+            "{at}: O_ac not in d's body"
+        );
+        let order = |id: &str| svg.find(&format!("id=\"{id}\""));
+        let drawn = order("point-O-ac").unwrap();
+        for link in ["link-frame", "link-crank", "link-rod"] {
+            if let Some(at_link) = order(link) {
+                assert!(at_link < drawn, "{at}: O_ac's dot drawn under {link}");
+            }
+        }
+    }
+}

@@ -1688,7 +1688,15 @@ impl Drawing {
                 );
             }
             _ => {
-                self.s.lettered(key, p, markup, Marker::Dot, from);
+                // A centre in d's body (O_ac where b crosses d's leg) is
+                // drawn over it: under it, the tone and b's rim hid it.
+                let in_body = self.slotted() && inside_outline(&band(&self.q, self.block.1), p);
+                let marker = if in_body {
+                    Marker::DotOver
+                } else {
+                    Marker::Dot
+                };
+                self.s.lettered(key, p, markup, marker, from);
                 lettered.push((p, markup));
             }
         }
