@@ -1829,6 +1829,19 @@ class CheckReport:
         return cls(text, passed, tuple(CheckRow(*r) for r in rows))
 
 
+def _chain_report(samples: int, tolerance: Optional[float], max_cells: int, **chain: Any) -> CheckReport:
+    """``slider-crank check`` of the chain ``chain`` names (``links``,
+    ``slot`` or ``inversion``, as the native ``chain_check`` takes it),
+    its options checked as the command line checks them."""
+    result = _core.chain_check(
+        samples=_samples(samples),
+        tolerance=_option(tolerance),
+        max_cells=_max_cells(max_cells),
+        **chain,
+    )
+    return CheckReport._from(result)
+
+
 def _assumed_rpm(rpm: Optional[float], omega: Optional[float]) -> Optional[float]:
     """The speed assumed when neither ``rpm`` nor ``omega`` is given (the
     command line's default), else ``None``."""
@@ -1935,13 +1948,7 @@ class QuadricChain:
         compared over ``samples`` crank angles in both assembly modes; a
         difference passes when at most ``tolerance`` (1e-12 by default) × κ;
         ``max_cells`` as in :meth:`SliderCrank.check`."""
-        result = _core.chain_check(
-            links=self._links,
-            samples=_samples(samples),
-            tolerance=_option(tolerance),
-            max_cells=_max_cells(max_cells),
-        )
-        return CheckReport._from(result)
+        return _chain_report(samples, tolerance, max_cells, links=self._links)
 
 
 class CurvedSlot:
@@ -1991,13 +1998,8 @@ class CurvedSlot:
         difference passes when at most ``tolerance`` (1e-12 by default) × κ;
         ``max_cells`` as in :meth:`SliderCrank.check`."""
         e = self._engine
-        result = _core.chain_check(
-            slot=(e.crank, e.rod, e.offset, self._radius),
-            samples=_samples(samples),
-            tolerance=_option(tolerance),
-            max_cells=_max_cells(max_cells),
-        )
-        return CheckReport._from(result)
+        slot = (e.crank, e.rod, e.offset, self._radius)
+        return _chain_report(samples, tolerance, max_cells, slot=slot)
 
 
 class Inversion:
@@ -2061,13 +2063,8 @@ class Inversion:
         their own (the engine's check covers their relative motion) and
         raise ``ValueError``, as the command refuses them."""
         e = self._engine
-        result = _core.chain_check(
-            inversion=(e.crank, e.rod, e.offset, self._number),
-            samples=_samples(samples),
-            tolerance=_option(tolerance),
-            max_cells=_max_cells(max_cells),
-        )
-        return CheckReport._from(result)
+        inversion = (e.crank, e.rod, e.offset, self._number)
+        return _chain_report(samples, tolerance, max_cells, inversion=inversion)
 
     def figure(self, **options: Any) -> Figure:
         """This inversion's figure drawn for the engine (see
