@@ -59,6 +59,19 @@ pub fn attr(svg: &str, id: &str, name: &str) -> Option<String> {
     Some(t[v..v + t[v..].find('"')?].to_string())
 }
 
+/// The page distance from `p` to the segment `a`–`b` (to `a` where the
+/// segment is a point).
+pub fn segment_distance(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 == 0.0 {
+        0.0
+    } else {
+        (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len2).clamp(0.0, 1.0)
+    };
+    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
+}
+
 /// The box of `points` as (x0, x1, y0, y1); infinite and reversed for
 /// none.
 pub fn bounds_of(points: &[(f64, f64)]) -> (f64, f64, f64, f64) {

@@ -215,14 +215,7 @@ impl Seg {
 
     /// The distance from `p` to the segment.
     pub fn distance_to(&self, p: Pt) -> f64 {
-        let (dx, dy) = (self.1.0 - self.0.0, self.1.1 - self.0.1);
-        let len2 = dx * dx + dy * dy;
-        let t = if len2 == 0.0 {
-            0.0
-        } else {
-            (((p.0 - self.0.0) * dx + (p.1 - self.0.1) * dy) / len2).clamp(0.0, 1.0)
-        };
-        (p.0 - self.0.0 - t * dx).hypot(p.1 - self.0.1 - t * dy)
+        crate::common::segment_distance(p, self.0, self.1)
     }
 
     /// The segment with `d` taken off each end (a point if shorter than 2d).

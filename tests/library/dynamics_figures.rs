@@ -2313,18 +2313,6 @@ fn pole_of(svg: &str, panel: &str) -> (f64, f64) {
     )
 }
 
-/// The distance from the page point `p` to the segment `a`–`b`.
-fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (vx, vy) = (b.0 - a.0, b.1 - a.1);
-    let len2 = vx * vx + vy * vy;
-    let t = if len2 == 0.0 {
-        0.0
-    } else {
-        (((p.0 - a.0) * vx + (p.1 - a.1) * vy) / len2).clamp(0.0, 1.0)
-    };
-    (p.0 - a.0 - t * vx).hypot(p.1 - a.1 - t * vy)
-}
-
 #[test]
 fn the_crank_pin_loads_letters_name_one_dot_each() {
     // The thirteenth review: "270°" under the 0° dot with "0°" over it at
@@ -2383,7 +2371,7 @@ fn the_crank_pin_loads_letters_name_one_dot_each() {
                 let (a, z) = (p[0], p[p.len() - 1]);
                 for (other, q) in &others {
                     let keep = if other == "the pole" { 5.0 } else { 3.0 };
-                    let d = to_segment(*q, a, z);
+                    let d = crate::common::segment_distance(*q, a, z);
                     if d < keep {
                         wrong.push(format!(
                             "{case}: {id}'s leader ({said}) {d:.1} from {other}"

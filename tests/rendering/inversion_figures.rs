@@ -28,17 +28,6 @@ pub(super) fn within(outline: &[(f64, f64)], p: (f64, f64)) -> bool {
     inside
 }
 
-/// The page distance from `p` to the segment `a b`.
-fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let len = dx * dx + dy * dy;
-    let t = match len > 0.0 {
-        true => (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / len).clamp(0.0, 1.0),
-        false => 0.0,
-    };
-    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
-}
-
 /// The hatch strokes drawn whose ids start with `prefix` (one `M` a stroke).
 fn strokes(svg: &str, prefix: &str) -> usize {
     let key = format!("id=\"{prefix}");
@@ -173,7 +162,7 @@ fn the_block_s_letter_stands_out_of_the_bar_by_the_block() {
         assert!(!within(&bar, c), "{at}: c inside d's bar at {c:?}");
         let block = path(&svg, &format!("{view}block-slider"));
         let near = (0..block.len())
-            .map(|i| to_segment(c, block[i], block[(i + 1) % block.len()]))
+            .map(|i| crate::common::segment_distance(c, block[i], block[(i + 1) % block.len()]))
             .fold(f64::INFINITY, f64::min);
         assert!(near <= BY, "{at}: c {near:.1} from the block");
     }
@@ -419,7 +408,7 @@ fn the_coriolis_mechanism_letters_c_by_its_block_and_shows_a_fixed() {
         assert!(!within(&path(&svg, "link-frame"), c), "{at}: c in d's bar");
         let block = path(&svg, "block-slider");
         let near = (0..block.len())
-            .map(|i| to_segment(c, block[i], block[(i + 1) % block.len()]))
+            .map(|i| crate::common::segment_distance(c, block[i], block[(i + 1) % block.len()]))
             .fold(f64::INFINITY, f64::min);
         assert!(near <= BY, "{at}: c {near:.1} from the block");
         if name == FigureName::CoriolisInversion3 && strokes(&svg, "hatch-rod-") < 3 {
@@ -716,7 +705,7 @@ fn o_cd_at_infinity_is_lettered_beside_its_arrow() {
         };
         assert!(arrow.len() >= 2, "{at}: no arrow to O_cd");
         let to_arrow = (arrow.windows(2))
-            .map(|w| to_segment(label, w[0], w[1]))
+            .map(|w| crate::common::segment_distance(label, w[0], w[1]))
             .fold(f64::INFINITY, f64::min);
         let a = pin_at(&svg, "point-A").unwrap_or_else(|| panic!("{at}: no A"));
         let to_a = (label.0 - a.0).hypot(label.1 - a.1);
