@@ -3,7 +3,7 @@
 //! document.
 
 use crate::error::{Error, Input, Result};
-use crate::figure::{Figure, PageUnit};
+use crate::figure::{EngineRecord, Figure, PageUnit};
 use crate::render::{SvgOptions, metadata_of, svg_body, to_svg};
 use crate::{angle::Angle, scene::Scene};
 use serde_json::{Map, Value};
@@ -32,6 +32,11 @@ impl Frame {
     /// ([`render::metadata_of`](crate::render::metadata_of)).
     pub fn metadata(&self) -> Map<String, Value> {
         metadata_of(&self.figure)
+    }
+
+    /// The engine the still figure draws, as its metadata records it.
+    pub fn engine(&self) -> Option<&EngineRecord> {
+        self.figure.metadata().engine()
     }
 
     /// The figure's page height in page units.

@@ -100,14 +100,8 @@ fn heading(animation: &Reel) -> String {
 /// ft, l = 3 ft, in line` (or `e = …`); `None` where the metadata has no
 /// mechanism.
 fn engine(animation: &Reel) -> Option<String> {
-    let metadata = animation.first().metadata();
-    let m = metadata.get("mechanism")?;
-    let number = |key: &str| m.get(key).and_then(serde_json::Value::as_f64);
-    let (r, l, e) = (number("crank")?, number("rod")?, number("offset")?);
-    let unit = m
-        .get("unit")
-        .and_then(serde_json::Value::as_str)
-        .unwrap_or("");
+    let m = animation.first().engine()?;
+    let (r, l, e, unit) = (m.crank, m.rod, m.offset, &m.unit);
     let show = |x: f64| crate::number::short_on(x, crate::number::SetOn::Page);
     let line = if e == 0.0 {
         "in line".to_string()

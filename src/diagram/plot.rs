@@ -5,11 +5,10 @@
 use super::{Axis, Curve, Method, Scale, TraceOptions, trace};
 use crate::error::{Error, Field, Result};
 use crate::figure::{
-    Align, Dash, Font, Item, PageFromWorld, PageRect, Panel, PathBuilder, RichText, Role, Shape,
-    Symbol, TextSize,
+    Align, AxisRecord, AxisScale, Dash, Font, Item, PageFromWorld, PageRect, Panel, PathBuilder,
+    PlotRecord, RichText, Role, Shape, Symbol, TextSize,
 };
 use crate::geom::{Frame, Point, Vector};
-use serde_json::{Value, json};
 use std::ops::RangeInclusive;
 
 /// Length of a labelled tick, page units.
@@ -686,26 +685,26 @@ impl Plot {
 
     /// The plot's description for the figure's metadata: panel id, plot
     /// area and, with axes, each axis's title, range and scale.
-    pub fn metadata(&self) -> Value {
+    pub fn record(&self) -> PlotRecord {
         let r = self.area;
         let axis = |a: &Axis| {
             let (min, max) = a.range();
-            json!({
-                "title": a.title().plain(),
-                "min": min,
-                "max": max,
-                "scale": match a.scale() { Scale::Linear => "linear", Scale::Log => "log" },
-            })
+            AxisRecord {
+                title: a.title().plain(),
+                min,
+                max,
+                scale: match a.scale() {
+                    Scale::Linear => AxisScale::Linear,
+                    Scale::Log => AxisScale::Log,
+                },
+            }
         };
-        let mut v = json!({
-            "panel": self.panel_id(),
-            "area": [r.x, r.y, r.width, r.height],
-        });
-        if let (Some((x, y)), Some(fields)) = (&self.axes, v.as_object_mut()) {
-            fields.insert("x".into(), axis(x));
-            fields.insert("y".into(), axis(y));
+        PlotRecord {
+            panel: self.panel_id(),
+            area: [r.x, r.y, r.width, r.height],
+            x: self.axes.as_ref().map(|(x, _)| axis(x)),
+            y: self.axes.as_ref().map(|(_, y)| axis(y)),
         }
-        v
     }
 
     fn unmap(&self, page: Point) -> Point {

@@ -11,6 +11,7 @@ mod font;
 // Written by a test from the bundled faces (see the file), not by hand.
 #[rustfmt::skip]
 mod glyphs;
+mod metadata;
 mod model;
 mod page_length;
 mod path;
@@ -20,6 +21,7 @@ mod transform;
 
 pub use crate::error::is_noncharacter;
 pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
+pub use metadata::{AxisRecord, AxisScale, EngineRecord, Metadata, PlotRecord};
 pub use model::{
     Align, BEARING_FOOT, Dash, Figure, Foot, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize,
 };

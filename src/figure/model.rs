@@ -2,9 +2,8 @@
 //! each with a role and a stable id.
 
 use super::Style;
-use super::{Font, PageFromWorld, PageRect, PageUnit, Path, RichText, Title};
+use super::{Font, Metadata, PageFromWorld, PageRect, PageUnit, Path, RichText, Title};
 use crate::geom::{Point, Vector};
-use serde_json::{Map, Value};
 
 /// What a primitive is, which fixes how it is drawn (line weight, dash,
 /// colour in the handout style) and its stacking order.
@@ -541,7 +540,7 @@ pub struct Figure {
     font: Font,
     tolerance: f64,
     panels: Vec<Panel>,
-    metadata: Map<String, Value>,
+    metadata: Metadata,
     size_unit: PageUnit,
     title: Option<Title>,
 }
@@ -566,7 +565,7 @@ impl Figure {
         style: Style,
         tolerance: f64,
         panels: Vec<Panel>,
-        metadata: Map<String, Value>,
+        metadata: Metadata,
     ) -> Self {
         Self {
             name: name.into(),
@@ -621,8 +620,9 @@ impl Figure {
         &self.panels
     }
 
-    /// Extra metadata.
-    pub fn metadata(&self) -> &Map<String, Value> {
+    /// What the figure records beside what it draws (the writer adds its
+    /// own keys to it).
+    pub fn metadata(&self) -> &Metadata {
         &self.metadata
     }
 
@@ -725,7 +725,7 @@ mod tests {
             Style::Textbook,
             0.1,
             vec![drawing],
-            Map::new(),
+            Metadata::new(),
         );
         let title = |t: &str| Title::new(t).unwrap();
         let once = plain.clone().with_title(title("First"));

@@ -31,7 +31,7 @@ use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Input, Result};
 use crate::figure::Style;
-use crate::figure::{Figure, Font, PageRect, Panel, RichText};
+use crate::figure::{EngineRecord, Figure, Font, Metadata, PageRect, Panel, RichText};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
 use crate::figure::{NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Point, Vector};
@@ -39,7 +39,7 @@ use crate::number::format_number;
 pub(crate) use crate::number::{short, sig};
 use crate::scene::{Page, Scene};
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank, units::Unit, units::Units};
-use serde_json::{Map, Value, json};
+use serde_json::Value;
 
 pub(crate) use crate::csv::Table;
 
@@ -297,8 +297,7 @@ pub(crate) struct Sheet {
     font: Font,
     tolerance: f64,
     panels: Vec<Panel>,
-    plots: Vec<Value>,
-    meta: Map<String, Value>,
+    meta: Metadata,
     /// The page's height when not the catalogue's (fitted to a drawing).
     height: Option<f64>,
     /// The height the notes' wrapped lines add to what the sheet laid
@@ -316,8 +315,7 @@ impl Sheet {
             font: ctx.font,
             tolerance: ctx.tolerance,
             panels: Vec::new(),
-            plots: Vec::new(),
-            meta: Map::new(),
+            meta: Metadata::new(),
             height: None,
             notes_extra: 0.0,
         }
@@ -348,27 +346,28 @@ impl Sheet {
     /// Records the mechanism, speed and pose in the metadata.
     pub fn mechanism(&mut self, ctx: &Ctx, with_speed: bool, with_angle: bool) {
         let m = &ctx.mechanism;
-        self.meta.insert(
-            "mechanism".into(),
-            json!({"crank": m.crank(), "rod": m.rod(), "offset": m.offset(), "unit": ctx.unit()}),
-        );
+        self.meta.set_engine(EngineRecord {
+            crank: m.crank(),
+            rod: m.rod(),
+            offset: m.offset(),
+            unit: ctx.unit().to_string(),
+        });
         if with_speed {
-            self.meta.insert("omega".into(), json!(ctx.omega));
+            self.meta.set_omega(ctx.omega);
         }
         if with_angle {
-            self.meta
-                .insert("angle_deg".into(), json!(ctx.angle.degrees()));
+            self.meta.set_angle_deg(ctx.angle.degrees());
         }
     }
 
     /// Adds a metadata key.
     pub fn meta(&mut self, key: &str, value: Value) {
-        self.meta.insert(key.into(), value);
+        self.meta.insert(key, value);
     }
 
     /// Adds a plot's panel and its description.
     pub fn plot(&mut self, plot: Plot) {
-        self.plots.push(plot.metadata());
+        self.meta.push_plot(plot.record());
         self.panels.push(plot.finish());
     }
 
@@ -376,7 +375,7 @@ impl Sheet {
     /// links and circles run on beyond the region it enlarges), its
     /// caption below it ([`Plot::finish_detail`]).
     pub fn detail(&mut self, plot: Plot) {
-        self.plots.push(plot.metadata());
+        self.meta.push_plot(plot.record());
         let (drawn, caption) = plot.finish_detail();
         self.panels.push(drawn);
         self.panels.extend(caption);
@@ -419,15 +418,9 @@ impl Sheet {
 
     /// The figure, with every number of its metadata rounded to 12
     /// significant digits (stable text).
-    pub fn finish(mut self) -> Figure {
+    pub fn finish(self) -> Figure {
         let page = self.page;
         let height = self.height.unwrap_or(page.height()) + self.notes_extra;
-        if !self.plots.is_empty() {
-            self.meta.insert("plots".into(), Value::Array(self.plots));
-        }
-        for v in self.meta.values_mut() {
-            round_numbers(v);
-        }
         let figure = Figure::new(
             self.name.name(),
             page.width(),
@@ -435,7 +428,7 @@ impl Sheet {
             self.style,
             self.tolerance,
             self.panels,
-            self.meta,
+            self.meta.rounded(crate::scene::round),
         )
         .with_font(self.font)
         .with_size_unit(page.unit());
@@ -460,23 +453,6 @@ pub(crate) fn fitted_rect(page: &Page, world: &crate::geom::Frame, notes_height:
         most
     };
     PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION)
-}
-
-/// Rounds every number in `v` to 12 significant digits.
-fn round_numbers(v: &mut Value) {
-    match v {
-        Value::Number(n) => {
-            if let Some(x) = n.as_f64()
-                && !n.is_i64()
-                && !n.is_u64()
-            {
-                *v = json!(crate::scene::round(x));
-            }
-        }
-        Value::Array(a) => a.iter_mut().for_each(round_numbers),
-        Value::Object(o) => o.values_mut().for_each(round_numbers),
-        _ => {}
-    }
 }
 
 /// A value of the pose against the crank angle: the point (θ in degrees,

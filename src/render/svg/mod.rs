@@ -68,7 +68,7 @@ fn metadata(figure: &Figure) -> Element {
 /// page size, the first panel's map and every panel's map and
 /// rectangle).
 pub fn metadata_of(figure: &Figure) -> Map<String, Value> {
-    let mut meta = figure.metadata().clone();
+    let mut meta = figure.metadata().to_json();
     meta.insert("figure".into(), json!(figure.name()));
     meta.insert("style".into(), json!(figure.style().name()));
     meta.insert("tolerance".into(), json!(figure.tolerance()));

@@ -23,7 +23,8 @@ use super::canvas::{Canvas, round};
 use super::notation::Named;
 use crate::angle::Angle;
 use crate::figure::{
-    Align, Figure, Hue, PageFromWorld, PageRect, Panel, Part, RichText, Role, Shape, TextSize,
+    Align, EngineRecord, Figure, Hue, Metadata, PageFromWorld, PageRect, Panel, Part, RichText,
+    Role, Shape, TextSize,
 };
 use crate::figure::{HATCH_DEPTH, NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Frame, Point, Vector};
@@ -884,31 +885,32 @@ pub(crate) fn offset_note(scene: &Scene) -> String {
     )
 }
 
-fn metadata(scene: &Scene, points: Map<String, Value>, ev: &Evaluations) -> Map<String, Value> {
+fn metadata(scene: &Scene, points: Map<String, Value>, ev: &Evaluations) -> Metadata {
     let m = scene.mechanism();
-    let mut meta = Map::new();
-    meta.insert(
-        "mechanism".into(),
-        json!({"crank": round(m.crank()), "rod": round(m.rod()), "offset": round(m.offset()), "unit": scene.units().length()}),
-    );
-    meta.insert(
-        "angle_deg".into(),
-        json!(scene.angles().first().map(|a| round(a.degrees()))),
-    );
+    let mut meta = Metadata::new();
+    meta.set_engine(EngineRecord {
+        crank: round(m.crank()),
+        rod: round(m.rod()),
+        offset: round(m.offset()),
+        unit: scene.units().length().to_string(),
+    });
+    if let Some(first) = scene.angles().first() {
+        meta.set_angle_deg(round(first.degrees()));
+    }
     if scene.angles().len() > 1 {
         let all: Vec<f64> = scene.angles().iter().map(|a| round(a.degrees())).collect();
-        meta.insert("angles_deg".into(), json!(all));
+        meta.insert("angles_deg", json!(all));
     }
-    meta.insert("omega".into(), json!(round(scene.omega())));
+    meta.set_omega(round(scene.omega()));
     meta.insert(
-        "layers".into(),
+        "layers",
         json!(scene.layers().iter().map(|l| l.name()).collect::<Vec<_>>()),
     );
-    meta.insert("notation".into(), json!(scene.notation().name()));
-    meta.insert("mirrored".into(), json!(scene.is_mirrored()));
-    meta.insert("points".into(), Value::Object(points));
+    meta.insert("notation", json!(scene.notation().name()));
+    meta.insert("mirrored", json!(scene.is_mirrored()));
+    meta.insert("points", Value::Object(points));
     meta.insert(
-        "evaluations".into(),
+        "evaluations",
         serde_json::to_value(ev).unwrap_or(Value::Null),
     );
     meta
