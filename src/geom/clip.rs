@@ -29,6 +29,15 @@ impl Frame {
         }
     }
 
+    /// The frame from its least and greatest corner as given, not
+    /// reordered: a `min` past `max` on an axis (a box clipped to a region
+    /// it misses, or shrunk past its middle) gives a frame that contains
+    /// no point, holds no frame with its corners in order, overlaps
+    /// nothing and meets only a frame reaching across its crossed corners.
+    pub fn from_corners(min: Point, max: Point) -> Self {
+        Self { min, max }
+    }
+
     /// Lower-left corner.
     pub fn min(&self) -> Point {
         self.min
@@ -51,6 +60,69 @@ impl Frame {
     /// Whether `p` lies in the frame (boundary included).
     pub fn contains(&self, p: Point) -> bool {
         p.x >= self.min.x && p.x <= self.max.x && p.y >= self.min.y && p.y <= self.max.y
+    }
+
+    /// The frame reaching `half` from `centre` on each axis; a negative
+    /// component gives a frame with its corners crossed, which contains no
+    /// point (see [`Frame::from_corners`]).
+    pub fn around(centre: Point, half: Vector) -> Self {
+        Self {
+            min: centre - half,
+            max: centre + half,
+        }
+    }
+
+    /// The least frame holding every one of `points` (`None` for none).
+    pub fn enclosing(points: &[Point]) -> Option<Self> {
+        let (first, rest) = points.split_first()?;
+        Some(
+            rest.iter()
+                .fold(Self::around(*first, Vector::zeros()), |f, p| Self {
+                    min: f.min.inf(p),
+                    max: f.max.sup(p),
+                }),
+        )
+    }
+
+    /// The frame grown by `by` on every side (shrunk for a negative `by`;
+    /// shrunk past its middle, a frame with its corners crossed, see
+    /// [`Frame::from_corners`]).
+    pub fn inflate(&self, by: f64) -> Self {
+        let d = Vector::new(by, by);
+        Self {
+            min: self.min - d,
+            max: self.max + d,
+        }
+    }
+
+    /// The area the two frames share (0 where they do not overlap).
+    pub fn overlap_area(&self, o: &Frame) -> f64 {
+        let w = (self.max.x.min(o.max.x) - self.min.x.max(o.min.x)).max(0.0);
+        let h = (self.max.y.min(o.max.y) - self.min.y.max(o.min.y)).max(0.0);
+        w * h
+    }
+
+    /// Whether the two frames meet, touching included.
+    pub fn meets(&self, o: &Frame) -> bool {
+        self.min.x <= o.max.x
+            && o.min.x <= self.max.x
+            && self.min.y <= o.max.y
+            && o.min.y <= self.max.y
+    }
+
+    /// Whether `o` lies wholly in the frame (edges included).
+    pub fn holds(&self, o: &Frame) -> bool {
+        self.min.x <= o.min.x
+            && self.min.y <= o.min.y
+            && o.max.x <= self.max.x
+            && o.max.y <= self.max.y
+    }
+
+    /// The distance from the frame to the point `p` (0 inside).
+    pub fn distance_to(&self, p: Point) -> f64 {
+        let dx = (self.min.x - p.x).max(p.x - self.max.x).max(0.0);
+        let dy = (self.min.y - p.y).max(p.y - self.max.y).max(0.0);
+        dx.hypot(dy)
     }
 
     /// The part of an infinite line inside the frame (in the order of its
@@ -142,6 +214,36 @@ mod tests {
     }
 
     use super::*;
+
+    #[test]
+    fn boxes_meet_hold_and_overlap_by_their_edges() {
+        let p = Point::new;
+        let a = Frame::around(p(0.0, 0.0), Vector::new(2.0, 1.0));
+        assert_eq!((a.min(), a.max()), (p(-2.0, -1.0), p(2.0, 1.0)));
+        let touching = Frame::new(p(2.0, 0.0), p(3.0, 5.0));
+        assert!(a.meets(&touching) && touching.meets(&a));
+        assert_eq!(a.overlap_area(&touching), 0.0);
+        let across = Frame::new(p(1.0, 0.5), p(3.0, 5.0));
+        assert_eq!(a.overlap_area(&across), 0.5);
+        assert!(a.holds(&a.inflate(-0.5)) && !a.holds(&across));
+        assert_eq!(a.distance_to(p(5.0, 5.0)), 5.0);
+        assert_eq!(a.distance_to(p(1.0, 0.0)), 0.0);
+        let e = Frame::enclosing(&[p(1.0, -3.0), p(-1.0, 4.0), p(0.0, 0.0)]).unwrap();
+        assert_eq!((e.min(), e.max()), (p(-1.0, -3.0), p(1.0, 4.0)));
+        assert!(Frame::enclosing(&[]).is_none());
+    }
+
+    #[test]
+    fn a_box_shrunk_past_its_middle_is_empty() {
+        let a = Frame::around(Point::new(0.0, 0.0), Vector::new(1.0, 1.0));
+        let gone = a.inflate(-1.5);
+        assert!(!gone.contains(Point::new(0.0, 0.0)));
+        assert_eq!(gone.overlap_area(&a), 0.0);
+        let beside = Frame::around(Point::new(0.4, 0.0), Vector::new(0.05, 2.0));
+        assert!(!gone.meets(&beside));
+        let missed = Frame::from_corners(Point::new(3.0, 0.0), Point::new(2.0, 1.0));
+        assert!(!missed.contains(Point::new(2.5, 0.5)) && !missed.meets(&a));
+    }
 
     #[test]
     fn a_frame_grows_to_hold_finite_points_only() {

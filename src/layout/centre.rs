@@ -7,11 +7,12 @@
 //! breaks it.)
 
 use super::Ink;
-use super::labels::{Bounds, span};
+use super::labels::span;
 use super::mark::Mark;
 use super::mark::{PathCommand, PathData};
 use super::markup::{arc_beziers, bezier_d, path, polyline_d};
 use crate::figure::{Part, Pen, Role};
+use crate::geom::Frame;
 use crate::geom::{Point, Vector};
 
 /// The dash pattern of a centre line: long dash, gap, dot, gap.
@@ -66,7 +67,7 @@ impl OpenLine {
     /// The line as a path, one sub-path per piece left between the
     /// `boxes` it crosses; `None` where the boxes leave nothing of it (an
     /// angle's mark a degree wide under its letter).
-    pub fn written(&self, boxes: &[Bounds]) -> Option<Mark> {
+    pub fn written(&self, boxes: &[Frame]) -> Option<Mark> {
         let ink = Ink {
             id: &self.id,
             role: self.role,
@@ -111,7 +112,7 @@ impl OpenLine {
 /// The path of a closed frame through `corners`, open at the `boxes` it
 /// crosses: one closed sub-path where it crosses none, else each side's
 /// pieces.
-fn frame_d(corners: &[Point; 4], boxes: &[Bounds]) -> PathData {
+fn frame_d(corners: &[Point; 4], boxes: &[Frame]) -> PathData {
     let sides: Vec<(Point, Point)> = (0..4)
         .filter_map(|k| Some((*corners.get(k)?, *corners.get((k + 1) % 4)?)))
         .collect();
@@ -139,10 +140,10 @@ fn arc_pieces(
     centre: Point,
     radius: f64,
     (start, sweep): (f64, f64),
-    boxes: &[Bounds],
+    boxes: &[Frame],
 ) -> Vec<(f64, f64)> {
-    let ring = Bounds::around(centre, Vector::new(radius, radius));
-    let near: Vec<Bounds> = boxes
+    let ring = Frame::around(centre, Vector::new(radius, radius));
+    let near: Vec<Frame> = boxes
         .iter()
         .map(|b| b.inflate(GAP_ROOM))
         .filter(|b| b.meets(&ring))
@@ -155,7 +156,7 @@ fn arc_pieces(
     let outside = |k: usize| {
         let a = start + sweep * k as f64 / n as f64;
         let p = centre + Vector::new(a.cos(), a.sin()) * radius;
-        !near.iter().any(|b| b.holds(p))
+        !near.iter().any(|b| b.contains(p))
     };
     let mut out = Vec::new();
     let mut begin = None;
@@ -180,7 +181,7 @@ fn arc_pieces(
 
 /// The pieces of the segment `from`–`to` outside every box (each grown by
 /// [`GAP_ROOM`]), in order; the whole segment where it crosses none.
-fn pieces(from: Point, to: Point, boxes: &[Bounds]) -> Vec<(Point, Point)> {
+fn pieces(from: Point, to: Point, boxes: &[Frame]) -> Vec<(Point, Point)> {
     let d = to - from;
     let length = d.norm();
     if length == 0.0 {
@@ -218,7 +219,7 @@ mod tests {
             20.0 * (0.5f64 * quarter).cos(),
             20.0 * (0.5f64 * quarter).sin(),
         );
-        let letter = Bounds::around(mid, Vector::new(3.0, 3.0));
+        let letter = Frame::around(mid, Vector::new(3.0, 3.0));
         let p = arc_pieces(c, 20.0, (0.0, quarter), &[letter]);
         assert_eq!(p.len(), 2, "{p:?}");
         assert_eq!(p[0].0, 0.0);
@@ -240,7 +241,7 @@ mod tests {
         assert!(gap > 9.0 && gap < 13.5, "{gap}");
         // A letter clear of the arc leaves it whole; a clockwise sweep
         // opens the same way.
-        let clear = Bounds::around(Point::new(0.0, 0.0), Vector::new(3.0, 3.0));
+        let clear = Frame::around(Point::new(0.0, 0.0), Vector::new(3.0, 3.0));
         assert_eq!(
             arc_pieces(c, 20.0, (0.0, quarter), &[clear]),
             vec![(0.0, 1.0)]
@@ -295,7 +296,7 @@ mod tests {
     #[test]
     fn a_line_opens_where_a_letter_sits_and_only_there() {
         let (a, b) = (Point::new(0.0, 0.0), Point::new(100.0, 0.0));
-        let letter = Bounds::around(Point::new(50.0, 2.0), Vector::new(5.0, 6.0));
+        let letter = Frame::around(Point::new(50.0, 2.0), Vector::new(5.0, 6.0));
         let p = pieces(a, b, &[letter]);
         assert_eq!(p.len(), 2, "{p:?}");
         assert_eq!(p[0].0, a);
@@ -303,11 +304,11 @@ mod tests {
         assert!((p[1].0.x - (55.0 + GAP_ROOM)).abs() < 1e-12);
         assert_eq!(p[1].1, b);
         // A letter clear of the line leaves it whole.
-        let clear = Bounds::around(Point::new(50.0, 20.0), Vector::new(5.0, 6.0));
+        let clear = Frame::around(Point::new(50.0, 20.0), Vector::new(5.0, 6.0));
         assert_eq!(pieces(a, b, &[clear]), vec![(a, b)]);
         // Overlapping letters make one gap; a letter over an end trims it.
-        let next = Bounds::around(Point::new(58.0, 0.0), Vector::new(5.0, 6.0));
-        let end = Bounds::around(Point::new(100.0, 0.0), Vector::new(5.0, 6.0));
+        let next = Frame::around(Point::new(58.0, 0.0), Vector::new(5.0, 6.0));
+        let end = Frame::around(Point::new(100.0, 0.0), Vector::new(5.0, 6.0));
         let p = pieces(a, b, &[next, letter, end]);
         assert_eq!(p.len(), 2, "{p:?}");
         assert!((p[1].0.x - (63.0 + GAP_ROOM)).abs() < 1e-12);

@@ -2,7 +2,6 @@
 //! and the slider block that runs in them.
 
 use super::hatching::Hatching;
-use super::labels::Bounds;
 use super::mark::Mark;
 use super::mark::{PathCommand, PathData};
 use super::markup::{finite, path, polyline_d, unit};
@@ -50,7 +49,7 @@ impl PanelLayout<'_> {
             .fold((corners[0], corners[0]), |(lo, hi), p| {
                 (lo.inf(p), hi.sup(p))
             });
-        self.obstacles.boxed(Bounds { min: lo, max: hi });
+        self.obstacles.boxed(Frame::from_corners(lo, hi));
         let pen = ink.pen;
         Some(
             ink.tag(Mark::group())
@@ -188,7 +187,7 @@ impl PanelLayout<'_> {
         let (lo, hi) = pts
             .iter()
             .fold((first, first), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
-        let b = Bounds { min: lo, max: hi };
+        let b = Frame::from_corners(lo, hi);
         // Room beside the pin for its letter (about 0.8 of its size wide
         // and its size tall): the pin, the letter's gap and the letter,
         // each way (`roomy`), or across or up and down with the letter's

@@ -8,11 +8,12 @@
 //! its point is crowded.
 
 use super::Ink;
-use super::labels::{Bounds, span};
+use super::labels::span;
 use super::mark::Mark;
 use super::mark::{PathCommand, PathData};
 use super::markup::path;
 use crate::figure::{Part, Pen, Role};
+use crate::geom::Frame;
 use crate::geom::{Point, Vector};
 
 /// Room kept between a letter's box and the strokes left, page units.
@@ -35,7 +36,7 @@ impl Hatching {
     /// The strokes that meet none of the `boxes` (each grown by [`ROOM`])
     /// and keep [`ROOM`] from every one of the `crossing` lines (page
     /// segments), as one path; `None` when every stroke is covered.
-    pub fn written(&self, boxes: &[Bounds], crossing: &[(Point, Point)]) -> Option<Mark> {
+    pub fn written(&self, boxes: &[Frame], crossing: &[(Point, Point)]) -> Option<Mark> {
         let ink = Ink {
             id: &self.id,
             role: self.role,
@@ -44,9 +45,9 @@ impl Hatching {
         };
         // Only the lines that come near the hatching's strokes at all.
         let ends: Vec<Point> = self.strokes.iter().flat_map(|(p, q)| [*p, *q]).collect();
-        let reach = Bounds::enclosing(&ends)?.inflate(ROOM);
+        let reach = Frame::enclosing(&ends)?.inflate(ROOM);
         let near: Vec<&(Point, Point)> = (crossing.iter())
-            .filter(|(p, q)| Bounds::enclosing(&[*p, *q]).is_some_and(|b| b.meets(&reach)))
+            .filter(|(p, q)| Frame::enclosing(&[*p, *q]).is_some_and(|b| b.meets(&reach)))
             .filter(|line| !self.on_edge(line))
             .collect();
         let clear = |s: &&(Point, Point)| near.iter().all(|c| apart(**s, **c, ROOM));
@@ -108,15 +109,12 @@ fn apart(s: (Point, Point), t: (Point, Point), room: f64) -> bool {
 /// The strokes that meet none of the boxes grown by [`ROOM`].
 fn kept<'a>(
     strokes: &'a [(Point, Point)],
-    boxes: &'a [Bounds],
+    boxes: &'a [Frame],
 ) -> impl Iterator<Item = &'a (Point, Point)> + 'a {
     let room = Vector::new(ROOM, ROOM);
     strokes.iter().filter(move |(p, q)| {
         boxes.iter().all(|b| {
-            let grown = Bounds {
-                min: b.min - room,
-                max: b.max + room,
-            };
+            let grown = Frame::from_corners(b.min() - room, b.max() + room);
             span(*p, q - p, &grown).is_none()
         })
     })
@@ -179,13 +177,13 @@ mod tests {
     #[test]
     fn a_stroke_under_a_letter_is_left_out_and_only_that_one() {
         let strokes = band();
-        let letter = Bounds::around(Point::new(24.0, 10.0), Vector::new(4.0, 5.0));
+        let letter = Frame::around(Point::new(24.0, 10.0), Vector::new(4.0, 5.0));
         let boxes = [letter];
         let left: Vec<_> = kept(&strokes, &boxes).collect();
         // The strokes from x = 24 and 30 reach into the letter's box.
         assert_eq!(left.len(), 8, "{left:?}");
         assert!(left.iter().all(|(p, _)| p.x != 24.0 && p.x != 30.0));
-        let clear = Bounds::around(Point::new(24.0, 40.0), Vector::new(4.0, 5.0));
+        let clear = Frame::around(Point::new(24.0, 40.0), Vector::new(4.0, 5.0));
         let boxes = [clear];
         assert_eq!(kept(&strokes, &boxes).count(), 10);
     }

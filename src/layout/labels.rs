@@ -3,7 +3,7 @@
 
 use super::line_leader::leader_to_line;
 use crate::figure::PageRect;
-use crate::geom::{Point, Vector, crossing, segment_distance};
+use crate::geom::{Frame, Point, Vector, crossing, segment_distance};
 use std::cell::RefCell;
 use std::ops::{ControlFlow, RangeInclusive};
 
@@ -11,91 +11,10 @@ mod grid;
 
 use grid::{CHUNK, Grid, Shape};
 
-/// An axis-aligned box on the page.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Bounds {
-    pub min: Point,
-    pub max: Point,
-}
-
-impl Bounds {
-    pub fn around(centre: Point, half: Vector) -> Self {
-        Self {
-            min: centre - half,
-            max: centre + half,
-        }
-    }
-
-    /// The least box holding every one of `points` (`None` for none).
-    pub(crate) fn enclosing(points: &[Point]) -> Option<Self> {
-        let (first, rest) = points.split_first()?;
-        let grow = |b: Self, p: &Point| Self {
-            min: b.min.inf(p),
-            max: b.max.sup(p),
-        };
-        Some(rest.iter().fold(
-            Self {
-                min: *first,
-                max: *first,
-            },
-            grow,
-        ))
-    }
-
-    /// The box grown by `by` on every side.
-    pub(crate) fn inflate(&self, by: f64) -> Self {
-        let d = Vector::new(by, by);
-        Self {
-            min: self.min - d,
-            max: self.max + d,
-        }
-    }
-
-    fn overlap(&self, o: &Bounds) -> f64 {
-        let w = (self.max.x.min(o.max.x) - self.min.x.max(o.min.x)).max(0.0);
-        let h = (self.max.y.min(o.max.y) - self.min.y.max(o.min.y)).max(0.0);
-        w * h
-    }
-
-    /// Whether the two boxes meet, touching included.
-    pub(crate) fn meets(&self, o: &Bounds) -> bool {
-        self.min.x <= o.max.x
-            && o.min.x <= self.max.x
-            && self.min.y <= o.max.y
-            && o.min.y <= self.max.y
-    }
-
-    /// The distance from the box to the point `p` (0 inside).
-    pub(crate) fn distance_to(&self, p: Point) -> f64 {
-        let dx = (self.min.x - p.x).max(p.x - self.max.x).max(0.0);
-        let dy = (self.min.y - p.y).max(p.y - self.max.y).max(0.0);
-        dx.hypot(dy)
-    }
-
-    /// Whether the point `p` lies in the box, edges included.
-    pub(crate) fn holds(&self, p: Point) -> bool {
-        self.min.x <= p.x && p.x <= self.max.x && self.min.y <= p.y && p.y <= self.max.y
-    }
-
-    fn contains(&self, o: &Bounds) -> bool {
-        self.min.x <= o.min.x
-            && self.min.y <= o.min.y
-            && o.max.x <= self.max.x
-            && o.max.y <= self.max.y
-    }
-
-    /// The glyphs of a label's box: the box less its [`ROOM`] (the box
-    /// is measured on the ink, an italic letter's overhang included).
-    fn glyphs(&self) -> Self {
-        self.inflate(-ROOM)
-    }
-
-    fn inside(&self, r: &PageRect) -> bool {
-        self.min.x >= r.x
-            && self.min.y >= r.y
-            && self.max.x <= r.x + r.width
-            && self.max.y <= r.y + r.height
-    }
+/// The glyphs of a label's box: the box less its [`ROOM`] (the box is
+/// measured on the ink, an italic letter's overhang included).
+fn glyphs(b: &Frame) -> Frame {
+    b.inflate(-ROOM)
 }
 
 /// The obstacles' counts at a moment ([`Obstacles::mark`]).
@@ -120,19 +39,19 @@ enum Obstacle {
 pub(crate) struct Obstacles {
     segments: Vec<(Point, Point, f64)>,
     /// Each box, and whether it is hollow ([`Obstacles::hollow`]).
-    boxes: Vec<(Bounds, bool)>,
+    boxes: Vec<(Frame, bool)>,
     /// The obstacles built, each with its box, in the order they were
     /// added: the order in which a place's costs are added
     /// ([`Near::cost_of`]), so that a figure's placing depends on what
     /// it draws and in which order, not on how an index was loaded.
-    ordered: Vec<(Bounds, Obstacle)>,
+    ordered: Vec<(Frame, Obstacle)>,
     /// The obstacles of `ordered`, by their place in it, in the buckets of
     /// the cells they come within reach of: two grids, one reaching as far
     /// as three labels in four do, one as far as the largest.
     grids: [Grid; 2],
     /// Obstacles added since the grid was last built, looked at one by
     /// one.
-    pending: Vec<(Bounds, Obstacle)>,
+    pending: Vec<(Frame, Obstacle)>,
     /// Weight of the segments added next (thick links cost more to cover).
     weight: f64,
     /// Which segments open for a letter once it is placed (hatching, a
@@ -164,11 +83,8 @@ impl Default for Obstacles {
 }
 
 /// The box of the segment `a b` (or of a box's corners).
-fn rectangle(a: Point, b: Point) -> Bounds {
-    Bounds {
-        min: a.inf(&b),
-        max: a.sup(&b),
-    }
+fn rectangle(a: Point, b: Point) -> Frame {
+    Frame::from_corners(a.inf(&b), a.sup(&b))
 }
 
 impl Obstacles {
@@ -202,8 +118,8 @@ impl Obstacles {
     /// does not open for letters ([`Obstacles::set_opens`]). A placing
     /// whose struck labels sit only on hatching or a detail's frame
     /// leaves none crossed once written.
-    pub fn lasting(&self, b: &Bounds, anchor: Point) -> bool {
-        let glyphs = b.glyphs();
+    pub fn lasting(&self, b: &Frame, anchor: Point) -> bool {
+        let glyphs = glyphs(b);
         let mut near = self.near(&glyphs, Some(anchor));
         near.openings = false;
         near.cost_of(&glyphs, OPEN, f64::MIN_POSITIVE) > 0.0
@@ -212,11 +128,8 @@ impl Obstacles {
     /// Whether the segment from `a` to `b` passes through a box (a label
     /// placed, a part, a point's marker) that does not hold `anchor`.
     pub fn crosses_a_box(&self, a: Point, b: Point, anchor: Point) -> bool {
-        let at = Bounds {
-            min: anchor,
-            max: anchor,
-        };
-        (self.boxes.iter()).any(|(bx, _)| !bx.contains(&at) && span(a, b - a, bx).is_some())
+        let at = Frame::from_corners(anchor, anchor);
+        (self.boxes.iter()).any(|(bx, _)| !bx.holds(&at) && span(a, b - a, bx).is_some())
     }
 
     pub fn segment(&mut self, a: Point, b: Point) {
@@ -287,29 +200,29 @@ impl Obstacles {
         }
     }
 
-    pub fn boxed(&mut self, b: Bounds) {
+    pub fn boxed(&mut self, b: Frame) {
         self.add_box(b, false);
     }
 
     /// A box no label enters save the letter of a point inside it, which
     /// keeps off its outline only (a slider block large enough to hold
     /// its pin's letter beside the pin).
-    pub fn hollow(&mut self, b: Bounds) {
-        let (p, q) = (b.min, b.max);
+    pub fn hollow(&mut self, b: Frame) {
+        let (p, q) = (b.min(), b.max());
         let corners = [p, Point::new(q.x, p.y), q, Point::new(p.x, q.y), p];
         self.polyline(&corners);
         self.add_box(b, true);
     }
 
-    fn add_box(&mut self, b: Bounds, hollow: bool) {
-        if [b.min.x, b.min.y, b.max.x, b.max.y]
+    fn add_box(&mut self, b: Frame, hollow: bool) {
+        if [b.min().x, b.min().y, b.max().x, b.max().y]
             .iter()
             .all(|v| v.is_finite())
         {
             let i = self.boxes.len();
             self.boxes.push((b, hollow));
             self.pending
-                .push((rectangle(b.min, b.max), Obstacle::Box(i)));
+                .push((rectangle(b.min(), b.max()), Obstacle::Box(i)));
         }
     }
 
@@ -318,7 +231,7 @@ impl Obstacles {
     /// built (the labels placed so far) that meet `within`; not the
     /// hollow boxes that hold `anchor`, the point of the letter looked
     /// for.
-    fn near(&self, within: &Bounds, anchor: Option<Point>) -> Near<'_> {
+    fn near(&self, within: &Frame, anchor: Option<Point>) -> Near<'_> {
         let pending = (self.pending.iter())
             .copied()
             .filter(|(b, o)| b.meets(within) && anchor.is_none_or(|a| !self.holds(*o, a)))
@@ -345,9 +258,9 @@ impl Obstacles {
 
     /// The grid of least reach that reaches as far as `b` from its centre
     /// (else the other).
-    fn grid(&self, b: &Bounds) -> &Grid {
+    fn grid(&self, b: &Frame) -> &Grid {
         let [narrow, wide] = &self.grids;
-        let half = 0.5 * (b.max - b.min).abs();
+        let half = 0.5 * (b.max() - b.min()).abs();
         let reach = narrow.reach();
         if half.x <= reach.x && half.y <= reach.y {
             narrow
@@ -364,11 +277,11 @@ impl Obstacles {
         let Some(&(b, hollow)) = self.boxes.get(i) else {
             return false;
         };
-        hollow && b.contains(&Bounds { min: p, max: p })
+        hollow && b.contains(p)
     }
 
     /// Length of line inside `b` plus a large weight for boxes it overlaps.
-    pub fn cost(&self, b: &Bounds) -> f64 {
+    pub fn cost(&self, b: &Frame) -> f64 {
         self.near(b, None).cost(b)
     }
 }
@@ -391,17 +304,17 @@ struct Near<'a> {
     /// it, [`Obstacles::lasting`]); their cost counts either way.
     openings: bool,
     /// The box every candidate of the search lies in.
-    within: Bounds,
+    within: Frame,
     /// The point of the letter looked for, whose hollow box it may enter.
     anchor: Option<Point>,
     /// Where the grid holds no more than [`FEW`] obstacles, those of
     /// them that meet `within`, less the hollow boxes that hold the
     /// anchor, in the grid's order: each place tried looks through these
     /// instead of the grid's buckets.
-    found: Option<Vec<(Bounds, Obstacle)>>,
+    found: Option<Vec<(Frame, Obstacle)>>,
     /// The obstacles added since the grid was built that meet `within`,
     /// in the order they were added.
-    pending: Vec<(Bounds, Obstacle)>,
+    pending: Vec<(Frame, Obstacle)>,
     /// The obstacles of the grid that meet one candidate, by their place
     /// in [`Obstacles::ordered`], in that order (room kept from one
     /// candidate to the next).
@@ -427,8 +340,8 @@ impl Near<'_> {
     /// a box within `band` is the same sum, term by term, over fewer
     /// looked at (a row of [`nooks`]). Unchanged where the obstacles are
     /// looked up in the grid (more than [`FEW`]).
-    fn narrowed(&self, band: &Bounds) -> Self {
-        let meeting = |list: &[(Bounds, Obstacle)]| -> Vec<(Bounds, Obstacle)> {
+    fn narrowed(&self, band: &Frame) -> Self {
+        let meeting = |list: &[(Frame, Obstacle)]| -> Vec<(Frame, Obstacle)> {
             (list.iter())
                 .filter(|(b, _)| b.meets(band))
                 .copied()
@@ -438,10 +351,10 @@ impl Near<'_> {
             obstacles: self.obstacles,
             openings: self.openings,
             within: match self.found {
-                Some(_) => Bounds {
-                    min: self.within.min.sup(&band.min),
-                    max: self.within.max.inf(&band.max),
-                },
+                Some(_) => Frame::from_corners(
+                    self.within.min().sup(&band.min()),
+                    self.within.max().inf(&band.max()),
+                ),
                 None => self.within,
             },
             anchor: self.anchor,
@@ -454,13 +367,13 @@ impl Near<'_> {
 
     /// Length of line inside `b` plus a large weight for boxes it
     /// overlaps; `b` must lie within the search's bounds.
-    fn cost(&self, b: &Bounds) -> f64 {
+    fn cost(&self, b: &Frame) -> f64 {
         self.cost_of(b, 0.0, f64::INFINITY)
     }
 
     /// Whether `b` meets a box or a line a letter may not sit on (one of
     /// weight [`OPEN`] or more: not a centre line, which opens for it).
-    fn struck(&self, b: &Bounds) -> bool {
+    fn struck(&self, b: &Frame) -> bool {
         self.cost_of(b, OPEN, f64::MIN_POSITIVE) > 0.0
     }
 
@@ -474,12 +387,12 @@ impl Near<'_> {
     /// a few, [`Grid::cover`]), in the order added, then those added
     /// since, in the order added: the sum is the same, term by term, as
     /// one over every obstacle whose box meets `b` in the order added.
-    fn cost_of(&self, b: &Bounds, least: f64, limit: f64) -> f64 {
-        debug_assert!(self.within.contains(b), "{b:?} outside {:?}", self.within);
+    fn cost_of(&self, b: &Frame, least: f64, limit: f64) -> f64 {
+        debug_assert!(self.within.holds(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
         // Adds what an obstacle costs; breaks off once the sum reaches
         // the limit.
-        let mut add = |&(_, o): &(Bounds, Obstacle)| {
+        let mut add = |&(_, o): &(Frame, Obstacle)| {
             if self.anchor.is_none_or(|a| !self.obstacles.holds(o, a))
                 && let Some(term) = self.term(o, b, least)
             {
@@ -516,8 +429,8 @@ impl Near<'_> {
     /// holds all that meets `b`, else from the few `b` covers.
     fn in_grid(
         &self,
-        b: &Bounds,
-        add: &mut impl FnMut(&(Bounds, Obstacle)) -> ControlFlow<()>,
+        b: &Frame,
+        add: &mut impl FnMut(&(Frame, Obstacle)) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         let ordered = &self.obstacles.ordered;
         let grid = self.obstacles.grid(b);
@@ -546,7 +459,7 @@ impl Near<'_> {
         grid: &Grid,
         rows: RangeInclusive<usize>,
         columns: RangeInclusive<usize>,
-        b: &Bounds,
+        b: &Frame,
         hits: &mut Vec<u32>,
     ) {
         hits.clear();
@@ -582,11 +495,11 @@ impl Near<'_> {
         grid: &Grid,
         rows: RangeInclusive<usize>,
         columns: RangeInclusive<usize>,
-        b: &Bounds,
+        b: &Frame,
         mut found: impl FnMut(u32) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         let ordered = &self.obstacles.ordered;
-        let meets = |extent: &Bounds| {
+        let meets = |extent: &Frame| {
             #[cfg(test)]
             EXAMINED.set(EXAMINED.get() + 1);
             extent.meets(b)
@@ -613,7 +526,7 @@ impl Near<'_> {
     /// its weight times 4 plus its
     /// length inside; a box, 200 plus the area shared. `None` where it
     /// adds nothing.
-    fn term(&self, obstacle: Obstacle, b: &Bounds, least: f64) -> Option<f64> {
+    fn term(&self, obstacle: Obstacle, b: &Frame, least: f64) -> Option<f64> {
         match obstacle {
             Obstacle::Segment(i) => {
                 let &(p, q, w) = self.obstacles.segments.get(i)?;
@@ -624,7 +537,11 @@ impl Near<'_> {
                 length_inside(p, q, b).map(|length| w * (4.0 + length))
             }
             Obstacle::Box(i) => {
-                let a = self.obstacles.boxes.get(i).map_or(0.0, |o| b.overlap(&o.0));
+                let a = self
+                    .obstacles
+                    .boxes
+                    .get(i)
+                    .map_or(0.0, |o| b.overlap_area(&o.0));
                 (a > 0.0).then_some(200.0 + a)
             }
         }
@@ -634,20 +551,20 @@ impl Near<'_> {
 /// The length of the segment `pq` inside `b`, or `None` if it misses the
 /// box; a segment that only touches the box, or a point inside it, has
 /// length 0.
-fn length_inside(p: Point, q: Point, b: &Bounds) -> Option<f64> {
+fn length_inside(p: Point, q: Point, b: &Frame) -> Option<f64> {
     let d = q - p;
     span(p, d, b).map(|(t0, t1)| (t1 - t0) * d.norm())
 }
 
 /// The parameters `t0 ≤ t1` within 0..1 between which `from + t d` lies
 /// in the box `b` (Liang and Barsky's clipping), if it meets it.
-pub(crate) fn span(from: Point, d: Vector, b: &Bounds) -> Option<(f64, f64)> {
+pub(crate) fn span(from: Point, d: Vector, b: &Frame) -> Option<(f64, f64)> {
     let (mut t0, mut t1) = (0.0f64, 1.0f64);
     for (towards, room) in [
-        (-d.x, from.x - b.min.x),
-        (d.x, b.max.x - from.x),
-        (-d.y, from.y - b.min.y),
-        (d.y, b.max.y - from.y),
+        (-d.x, from.x - b.min().x),
+        (d.x, b.max().x - from.x),
+        (-d.y, from.y - b.min().y),
+        (d.y, b.max().y - from.y),
     ] {
         if towards == 0.0 {
             if room < 0.0 {
@@ -776,7 +693,7 @@ pub(crate) const MISREAD: f64 = 0.5 * STRUCK;
 /// a pair whose letters may stand on either side, but not with the other
 /// point between a letter and its own (A's letter beyond the O dot
 /// beside it); two that coincide take their letters anywhere about them.
-fn nearer_another(b: &Bounds, anchor: Point, others: &[Point], pair: f64) -> bool {
+fn nearer_another(b: &Frame, anchor: Point, others: &[Point], pair: f64) -> bool {
     let own = b.distance_to(anchor);
     others.iter().any(|&q| {
         let slack = NEARER + (pair - (q - anchor).norm()).max(0.0);
@@ -793,8 +710,8 @@ const OTHER_SIDE: f64 = 0.5;
 
 /// Whether the centre of `b` is nearer one of `others` (not coinciding
 /// with `anchor`) than `anchor`.
-fn over_the_other(b: &Bounds, anchor: Point, others: &[Point]) -> bool {
-    let centre = nalgebra::center(&b.min, &b.max);
+fn over_the_other(b: &Frame, anchor: Point, others: &[Point]) -> bool {
+    let centre = nalgebra::center(&b.min(), &b.max());
     let own = (centre - anchor).norm();
     (others.iter()).any(|&q| (q - anchor).norm() > 1.0 && (centre - q).norm() < own)
 }
@@ -803,9 +720,9 @@ fn over_the_other(b: &Bounds, anchor: Point, others: &[Point]) -> bool {
 /// than one of the `rivals` (links), or not beside `own` at all: its centre
 /// beyond the line's middle [`BESIDE`] share, by an end that other lines
 /// meet at (a text there is read with the joint).
-fn nearer_another_line(b: &Bounds, own: Segment, rivals: &[Segment]) -> bool {
+fn nearer_another_line(b: &Frame, own: Segment, rivals: &[Segment]) -> bool {
     let (p, q) = own;
-    let centre = nalgebra::center(&b.min, &b.max);
+    let centre = nalgebra::center(&b.min(), &b.max());
     let t = (centre - p).dot(&(q - p)) / (q - p).norm_squared();
     if !(BESIDE.0..=BESIDE.1).contains(&t) {
         return true;
@@ -815,13 +732,16 @@ fn nearer_another_line(b: &Bounds, own: Segment, rivals: &[Segment]) -> bool {
 
 /// Whether `b` stands less than [`LINE_NEARER`] nearer the line `own`
 /// than one of the `rivals`, wherever along it.
-pub(crate) fn nearer_a_rival(b: &Bounds, own: Segment, rivals: &[Segment]) -> bool {
+pub(crate) fn nearer_a_rival(b: &Frame, own: Segment, rivals: &[Segment]) -> bool {
     let distance = |(p, q): (Point, Point)| {
-        if b.holds(p) || b.holds(q) {
+        if b.contains(p) || b.contains(q) {
             return 0.0;
         }
-        let (c0, c1) = (b.min, b.max);
-        let (c2, c3) = (Point::new(b.max.x, b.min.y), Point::new(b.min.x, b.max.y));
+        let (c0, c1) = (b.min(), b.max());
+        let (c2, c3) = (
+            Point::new(b.max().x, b.min().y),
+            Point::new(b.min().x, b.max().y),
+        );
         [(c0, c2), (c2, c1), (c1, c3), (c3, c0)]
             .into_iter()
             .map(|(u, v)| segment_distance(u, v, p, q))
@@ -867,10 +787,10 @@ pub(crate) fn place_toward(
     // `reach`): the labels placed so far are sorted out once.
     let [.., last_ring] = RINGS;
     let out = gap.max(reach) + last_ring + NOOK_STEP + 2.0 * (half.x + half.y);
-    let within = Bounds::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
+    let within = Frame::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
     let near = obstacles.near(&within, Some(anchor));
     let others: Vec<Point> = (others.iter())
-        .filter(|&&q| within.holds(q) && q != anchor)
+        .filter(|&&q| within.contains(q) && q != anchor)
         .copied()
         .collect();
     // The best so far: its score (cost and distance), its cost, its centre.
@@ -881,18 +801,18 @@ pub(crate) fn place_toward(
         if penalty >= best.0 {
             return;
         }
-        let b = Bounds::around(centre, half);
+        let b = Frame::around(centre, half);
         // A candidate whose cost reaches this cannot beat the best.
         let limit = best.0 - penalty;
         let mut cost = near.cost_of(&b.inflate(CLEARANCE), 0.0, limit);
         if cost >= limit {
             return;
         }
-        if cost > 0.0 && near.struck(&b.glyphs()) {
+        if cost > 0.0 && near.struck(&glyphs(&b)) {
             // Not only the room about the glyphs is crowded: the glyphs.
             cost += STRUCK;
         }
-        if !b.inside(page) {
+        if !page.frame().holds(&b) {
             cost += 1e6;
         }
         if nearer_another(&b, anchor, &others, pair)
@@ -963,10 +883,10 @@ pub(crate) fn place_toward(
         if row.as_ref().is_none_or(|(y, _)| *y != centre.y) {
             // A unit more than a candidate's room, against rounding.
             let reach = Vector::new(0.0, half.y + 2.0 * CLEARANCE);
-            let band = Bounds {
-                min: Point::new(within.min.x, centre.y) - reach,
-                max: Point::new(within.max.x, centre.y) + reach,
-            };
+            let band = Frame::from_corners(
+                Point::new(within.min().x, centre.y) - reach,
+                Point::new(within.max().x, centre.y) + reach,
+            );
             row = Some((centre.y, near.narrowed(&band)));
         }
         if let Some((_, near)) = &row {
@@ -1044,7 +964,7 @@ mod tests {
             &o,
             &page,
         );
-        let b = Bounds::around(c, Vector::new(5.0, 6.0));
+        let b = Frame::around(c, Vector::new(5.0, 6.0));
         assert_eq!(o.cost(&b), 0.0, "{c:?}");
         assert_eq!(cost, 0.0);
         assert!((c - Point::new(100.0, 100.0)).norm() < 20.0);
@@ -1052,7 +972,7 @@ mod tests {
 
     #[test]
     fn length_inside_a_box_is_the_clipped_length() {
-        let b = Bounds::around(Point::new(0.0, 0.0), Vector::new(2.0, 1.0));
+        let b = Frame::around(Point::new(0.0, 0.0), Vector::new(2.0, 1.0));
         let at = |x, y| Point::new(x, y);
         let close = |got: Option<f64>, want: f64| {
             let got = got.expect("the segment meets the box");
@@ -1073,15 +993,15 @@ mod tests {
     fn a_hollow_box_takes_the_letter_of_its_own_point_only() {
         let page = PageRect::new(0.0, 0.0, 400.0, 400.0);
         let half = Vector::new(6.0, 7.0);
-        let block = Bounds::around(Point::new(200.0, 200.0), Vector::new(60.0, 60.0));
+        let block = Frame::around(Point::new(200.0, 200.0), Vector::new(60.0, 60.0));
         let mut o = Obstacles::default();
         o.hollow(block);
         // The point inside: its letter stays beside it, inside the block.
         let (inside, _) = place(Point::new(200.0, 200.0), half, 4.0, 22.0, &o, &page);
-        assert!(block.contains(&Bounds::around(inside, half)), "{inside:?}");
+        assert!(block.holds(&Frame::around(inside, half)), "{inside:?}");
         // A point outside keeps its letter out of the block.
         let (outside, _) = place(Point::new(265.0, 200.0), half, 4.0, 22.0, &o, &page);
-        assert_eq!(block.overlap(&Bounds::around(outside, half)), 0.0);
+        assert_eq!(block.overlap_area(&Frame::around(outside, half)), 0.0);
     }
 
     #[test]
@@ -1094,7 +1014,7 @@ mod tests {
         let o = Obstacles::default();
         let free = place(own, half, 4.0, 22.0, &o, &page).0;
         assert!(nearer_another(
-            &Bounds::around(free, half),
+            &Frame::around(free, half),
             own,
             &[other],
             0.0
@@ -1104,7 +1024,7 @@ mod tests {
             ..Steer::default()
         };
         let (at, cost) = place_toward(own, half, 4.0, 22.0, steer, &o, &page);
-        let b = Bounds::around(at, half);
+        let b = Frame::around(at, half);
         assert!(!nearer_another(&b, own, &[other], 0.0), "{at:?}");
         assert_eq!(cost, 0.0);
         assert!(b.distance_to(own) <= 22.0);
@@ -1116,7 +1036,7 @@ mod tests {
         let em = 17.0;
         // O's dot 13 units left of A's pin: read with it as a pair.
         let other = Point::new(87.0, 100.0);
-        let box_at = |x: f64, y: f64| Bounds::around(Point::new(x, y), half);
+        let box_at = |x: f64, y: f64| Frame::around(Point::new(x, y), half);
         // Beyond O from A: the reader takes O's dot for A.
         assert!(nearer_another(&box_at(73.0, 100.0), own, &[other], em));
         // Above the pair, or on A's side: the pair's letters.
@@ -1149,7 +1069,7 @@ mod tests {
             };
             let (centre, _) =
                 place_toward(Point::new(50.0, 0.0), half, 3.0, 20.0, steer, &o, &page);
-            Bounds::around(centre, half)
+            Frame::around(centre, half)
         };
         // Blind to the dimension, the first place tried is by it.
         assert!(nearer_another_line(&at(&[]), rod, &[dimension]));
@@ -1164,7 +1084,7 @@ mod tests {
         let rod = (Point::new(0.0, 0.0), Point::new(100.0, 0.0));
         let crank = [(Point::new(100.0, 0.0), Point::new(100.0, 30.0))];
         let half = Vector::new(10.0, 5.0);
-        let at = |x: f64, y: f64| Bounds::around(Point::new(x, y), half);
+        let at = |x: f64, y: f64| Frame::around(Point::new(x, y), half);
         assert!(!nearer_another_line(&at(50.0, 10.0), rod, &crank));
         assert!(
             nearer_another_line(&at(85.0, 15.0), rod, &crank),
@@ -1184,7 +1104,7 @@ mod tests {
         let (centre, cost) = place_toward(Point::new(96.0, 0.0), half, 3.0, 20.0, steer, &o, &page);
         assert!(cost < 1.0, "{centre:?} {cost}");
         assert!(!nearer_another_line(
-            &Bounds::around(centre, half),
+            &Frame::around(centre, half),
             rod,
             &crank
         ));
@@ -1193,10 +1113,7 @@ mod tests {
     #[test]
     fn a_segment_crossing_a_box_is_told_from_one_beside_it() {
         let mut o = Obstacles::default();
-        o.boxed(Bounds::around(
-            Point::new(50.0, 50.0),
-            Vector::new(5.0, 5.0),
-        ));
+        o.boxed(Frame::around(Point::new(50.0, 50.0), Vector::new(5.0, 5.0)));
         let a = Point::new(0.0, 50.0);
         let far = Point::new(200.0, 0.0);
         assert!(o.crosses_a_box(a, Point::new(100.0, 50.0), far));
@@ -1211,12 +1128,12 @@ mod tests {
         let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
         let half = Vector::new(5.0, 6.0);
         let (a, _) = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
-        assert!(Bounds::around(a, half).inside(&page));
+        assert!(page.frame().holds(&Frame::around(a, half)));
         let mark = o.mark();
-        o.boxed(Bounds::around(a, half));
+        o.boxed(Frame::around(a, half));
         let (b, _) = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
         assert_eq!(
-            Bounds::around(a, half).overlap(&Bounds::around(b, half)),
+            Frame::around(a, half).overlap_area(&Frame::around(b, half)),
             0.0
         );
         // Rolled back, the first label's place is free again.
@@ -1261,13 +1178,13 @@ mod tests {
         );
         let half = Vector::new(6.0, 8.0);
         let (top, bottom) = (Point::new(50.0, 20.0), Point::new(50.0, 80.0));
-        let near = o.near(&Bounds::around(top, Vector::new(20.0, 20.0)), Some(top));
-        assert!(near.struck(&Bounds::around(top, half).glyphs()));
-        assert!(!o.lasting(&Bounds::around(top, half), top));
-        assert!(o.lasting(&Bounds::around(bottom, half), bottom));
+        let near = o.near(&Frame::around(top, Vector::new(20.0, 20.0)), Some(top));
+        assert!(near.struck(&glyphs(&Frame::around(top, half))));
+        assert!(!o.lasting(&Frame::around(top, half), top));
+        assert!(o.lasting(&Frame::around(bottom, half), bottom));
         // Clear of both, nothing stays.
         let free = Point::new(50.0, 50.0);
-        assert!(!o.lasting(&Bounds::around(free, half), free));
+        assert!(!o.lasting(&Frame::around(free, half), free));
     }
 
     /// Horizontal lines every 8 units across a 100-unit page, weight 3:
@@ -1382,7 +1299,7 @@ mod tests {
             }
             let (x, y) = (200.0 * next() - 50.0, 200.0 * next() - 50.0);
             let size = if k % 50 == 0 { 300.0 } else { 12.0 * next() };
-            let b = Bounds::around(Point::new(x, y), Vector::new(size, 0.5 * size));
+            let b = Frame::around(Point::new(x, y), Vector::new(size, 0.5 * size));
             match k % 7 {
                 0 | 3 => o.boxed(b),
                 5 => o.hollow(b),
@@ -1393,12 +1310,12 @@ mod tests {
             }
         }
         let anchor = Point::new(47.3, 52.1);
-        let within = Bounds::around(anchor, Vector::new(80.0, 80.0));
+        let within = Frame::around(anchor, Vector::new(80.0, 80.0));
         let near = o.near(&within, Some(anchor));
         // What a search looked at before the grid: every obstacle
         // meeting its bounds, in the order added; not the hollow boxes
         // holding its point.
-        let all: Vec<(Bounds, Obstacle)> = (o.ordered.iter().chain(o.pending.iter()))
+        let all: Vec<(Frame, Obstacle)> = (o.ordered.iter().chain(o.pending.iter()))
             .copied()
             .filter(|(b, ob)| b.meets(&within) && !o.holds(*ob, anchor))
             .collect();
@@ -1410,15 +1327,15 @@ mod tests {
                 // The search narrowed to the row's band (as the nooks'
                 // rows are): the same sums over fewer obstacles.
                 let y = anchor.y + 1.3 * j as f64;
-                let row = near.narrowed(&Bounds {
-                    min: Point::new(within.min.x, y - half.y - 2.0),
-                    max: Point::new(within.max.x, y + half.y + 2.0),
-                });
+                let row = near.narrowed(&Frame::from_corners(
+                    Point::new(within.min().x, y - half.y - 2.0),
+                    Point::new(within.max().x, y + half.y + 2.0),
+                ));
                 narrowed +=
                     (row.found.as_ref()).map_or(0, |f| all.len() - f.len() - row.pending.len());
                 for i in -40..=40 {
                     let centre = anchor + Vector::new(1.7 * i as f64, 1.3 * j as f64);
-                    let b = Bounds::around(centre, half);
+                    let b = Frame::around(centre, half);
                     let mut sum = 0.0;
                     let mut terms = 0;
                     for (bounds, obstacle) in &all {
@@ -1431,7 +1348,7 @@ mod tests {
                                 length_inside(p, q, &b).map_or(0.0, |l| w * (4.0 + l))
                             }
                             Obstacle::Box(k) => {
-                                let a = b.overlap(&o.boxes[k].0);
+                                let a = b.overlap_area(&o.boxes[k].0);
                                 if a > 0.0 { 200.0 + a } else { 0.0 }
                             }
                         };

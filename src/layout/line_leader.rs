@@ -3,9 +3,10 @@
 //! drawn from it to the line, as a draughtsman names a part with no room
 //! beside it.
 
-use super::labels::{Bounds, MISREAD, Segment, Steer, place_toward};
+use super::labels::{MISREAD, Segment, Steer, place_toward};
 use super::{PanelLayout, Pending, ROOM};
 use crate::figure::PageRect;
+use crate::geom::Frame;
 use crate::geom::{Point, Vector, point_segment_distance};
 
 /// How far, in font sizes, a text naming a line looks for a clear place
@@ -27,14 +28,14 @@ const LED_LEAST: f64 = 3.0;
 /// The leader from the box `bx` to the middle part of the line `(a, b)`,
 /// from the box's point nearest where it ends; `None` where the box
 /// stands within [`LED_LEAST`] of it (beside the line, no leader drawn).
-pub(super) fn leader_to_line(bx: &Bounds, (a, b): Segment) -> Option<(Point, Point)> {
-    let centre = nalgebra::center(&bx.min, &bx.max);
+pub(super) fn leader_to_line(bx: &Frame, (a, b): Segment) -> Option<(Point, Point)> {
+    let centre = nalgebra::center(&bx.min(), &bx.max());
     let along = b - a;
     let t = ((centre - a).dot(&along) / along.norm_squared()).clamp(LED_ON.0, LED_ON.1);
     let to = a + along * t;
     let from = Point::new(
-        to.x.clamp(bx.min.x, bx.max.x),
-        to.y.clamp(bx.min.y, bx.max.y),
+        to.x.clamp(bx.min().x, bx.max().x),
+        to.y.clamp(bx.min().y, bx.max().y),
     );
     ((to - from).norm() >= LED_LEAST).then_some((from, to))
 }
@@ -73,7 +74,7 @@ impl PanelLayout<'_> {
             let reach = far * p.size - ROOM;
             let (centre, cost) =
                 place_toward(middle, half, p.gap, reach, steer, &self.obstacles, room);
-            let leader = leader_to_line(&Bounds::around(centre, half), own)?;
+            let leader = leader_to_line(&Frame::around(centre, half), own)?;
             (cost < LED_CROWDED).then_some(((centre, cost), leader))
         })
     }

@@ -1,13 +1,13 @@
 //! Lines: fitted paths, polylines, tinted regions, circles and arcs (an
 //! arrowed arc is a torque). Every line they draw is kept clear by labels.
 
-use super::labels::Bounds;
 use super::mark::{Mark, Paint, PathCommand, PathData, Shape};
 use super::markup::{
     arc_beziers, arrow_head, bezier_d, finite, path, polyline_d, stroked_circle, unit,
 };
 use super::{Ink, PanelLayout, centre};
 use crate::figure::{Part, Path, PathSegment, Pen, Role};
+use crate::geom::Frame;
 use crate::geom::{Point, inside_outline};
 
 /// The rim of paper each side of a link lying over a body, page units
@@ -101,7 +101,7 @@ impl PanelLayout<'_> {
         {
             // A detail's frame or border, likewise.
             let corners = [a, b, c, d];
-            if let Some(marked) = Bounds::enclosing(&corners) {
+            if let Some(marked) = Frame::enclosing(&corners) {
                 self.detail_marks.push(marked);
             }
             return Some(self.open_line(ink, centre::Course::Frame { corners }));

@@ -2,7 +2,6 @@
 //! dimensions, in page sizes whatever the scale.
 
 use super::centre::Course;
-use super::labels::Bounds;
 use super::mark::{Mark, TextAnchor};
 use super::markup::{arc_beziers, arrow_head, finite, path, polyline_d, unit};
 use super::symbol_sizes::{ANGLE_STEP, ARROW_LENGTH, RIGHT_ANGLE};
@@ -10,6 +9,7 @@ use super::text::{starts_italic, text_half, text_node};
 use super::{ALONG_ARC, Ink, PanelLayout, Pending};
 use crate::figure::angle_radius;
 use crate::figure::{Item, PageFromWorld, Pen, RichText, Role, Shape, TextSize};
+use crate::geom::Frame;
 use crate::geom::{Point, Vector};
 
 /// Step by which a dimension's text slides along its line off a line
@@ -53,7 +53,7 @@ impl PanelLayout<'_> {
         // The head is wider than the shaft: keep labels off it too.
         let half = 0.5 * ARROW_LENGTH;
         self.obstacles
-            .boxed(Bounds::around(b - u * half, Vector::new(half, half)));
+            .boxed(Frame::around(b - u * half, Vector::new(half, half)));
         let shaft = polyline_d(&[a, b - u * (0.6 * ARROW_LENGTH)], false);
         Some(
             ink.tag(Mark::group())
@@ -182,7 +182,7 @@ impl PanelLayout<'_> {
         let half = text_half(text, size, self.font);
         let lift = if on_line { TICK + TICK_ROOM } else { 3.0 };
         let centre = self.dimension_text((a2, b2), n, half, lift);
-        self.obstacles.boxed(Bounds::around(centre, half));
+        self.obstacles.boxed(Frame::around(centre, half));
         // Too short for both heads inside: the heads point in from
         // outside the extension lines, on the line produced each way.
         let outside = (b2 - a2).norm() < 2.0 * ARROW_LENGTH + HEADS_GAP;
@@ -245,7 +245,7 @@ impl PanelLayout<'_> {
             .flat_map(|k| [k, -k])
             .map(|k| middle + u * (SLIDE * f64::from(k)));
         let clear = |c: &Point, margin: f64| {
-            let b = Bounds::around(*c, half + Vector::new(margin, 0.0));
+            let b = Frame::around(*c, half + Vector::new(margin, 0.0));
             self.obstacles.cost(&b) == 0.0
         };
         places

@@ -35,8 +35,9 @@ use crate::figure::{
     Figure, Font, Item, PageFromWorld, PageRect, Panel, Part, RichText, Role, Shape,
 };
 use crate::figure::{Pen, Style};
+use crate::geom::Frame;
 use crate::geom::{Point, Vector};
-use labels::{Bounds, NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
+use labels::{NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
 pub use mark::{
     Mark, Paint, PathCommand, PathData, Shape as MarkShape, Stroke, TextAnchor, TextMark,
 };
@@ -176,7 +177,7 @@ struct PanelLayout<'a> {
     detail: bool,
     /// The page boxes of the detail marks drawn (a detail's frame on the
     /// main view, its border).
-    detail_marks: Vec<Bounds>,
+    detail_marks: Vec<Frame>,
     /// The straight pieces of the construction, result and auxiliary lines drawn
     /// (page points), which the hatching is broken for.
     crossing: Vec<(Point, Point)>,
@@ -402,7 +403,7 @@ impl PanelLayout<'_> {
     /// labels crossed by what stays once written (a letter on hatching or
     /// on a detail's frame is not: both open for it), then fewer struck
     /// labels, then less cost.
-    fn place_labels(&mut self, room: &PageRect) -> (Vec<Mark>, Vec<Bounds>) {
+    fn place_labels(&mut self, room: &PageRect) -> (Vec<Mark>, Vec<Frame>) {
         let mut pending = std::mem::take(&mut self.pending);
         let halves: Vec<Vector> = (pending.iter())
             .map(|p| ink_box(&p.text, p.size, self.font).0)
@@ -512,8 +513,8 @@ impl PanelLayout<'_> {
                 q != p.anchor
                     && (q - p.anchor).norm() < CROWDED_EMS * p.size
                     && (self.detail_marks.iter()).any(|m| {
-                        let side = (m.max - m.min).max();
-                        m.holds(p.anchor) && m.holds(q) && side < SMALL_FRAME_EMS * p.size
+                        let side = (m.max() - m.min()).max();
+                        m.contains(p.anchor) && m.contains(q) && side < SMALL_FRAME_EMS * p.size
                     })
             })
         };
@@ -524,7 +525,7 @@ impl PanelLayout<'_> {
     /// Whether a label is a joint's letter on the main view whose pin
     /// lies inside a detail's frame, the detail lettering it too.
     fn in_detail_frame(&self, p: &Pending) -> bool {
-        p.joint && !self.detail && self.detail_marks.iter().any(|m| m.holds(p.anchor))
+        p.joint && !self.detail && self.detail_marks.iter().any(|m| m.contains(p.anchor))
     }
 
     /// The labels placed in the `order` given, each box added to the
@@ -583,7 +584,7 @@ impl PanelLayout<'_> {
                         // beside another point of it.
                         let stray = match arc {
                             true => {
-                                (Bounds::around(at.0, half).distance_to(anchor) - p.gap).max(0.0)
+                                (Frame::around(at.0, half).distance_to(anchor) - p.gap).max(0.0)
                             }
                             false => 0.0,
                         };
@@ -603,7 +604,7 @@ impl PanelLayout<'_> {
                 };
                 let lasting = |(centre, cost): (Point, f64)| {
                     cost >= STRUCK
-                        && (self.obstacles).lasting(&Bounds::around(centre, half), p.anchor)
+                        && (self.obstacles).lasting(&Frame::around(centre, half), p.anchor)
                 };
                 let mut best = place(reach, half);
                 // A text naming a line whose nearest place names another
@@ -641,7 +642,7 @@ impl PanelLayout<'_> {
                     // detail's frame is left to the detail instead), the
                     // leader through no label, part or marker.
                     let far = place(LEADER_REACH * p.size - ROOM, half);
-                    let line = leader_line(&Bounds::around(far.0, half), p.anchor, reach);
+                    let line = leader_line(&Frame::around(far.0, half), p.anchor, reach);
                     let clear =
                         line.is_none_or(|(a, b)| !self.obstacles.crosses_a_box(a, b, p.anchor));
                     if !lasting(far) && clear {
@@ -650,7 +651,7 @@ impl PanelLayout<'_> {
                     }
                 }
                 let (centre, cost) = best;
-                let bounds = Bounds::around(centre, half);
+                let bounds = Frame::around(centre, half);
                 let lasting = lasting(best);
                 self.obstacles.boxed(bounds);
                 if let Some((a, b)) = leader {
@@ -701,7 +702,7 @@ fn rivals(p: &Pending, links: &[(Point, Point)]) -> Vec<(Point, Point)> {
 /// and what the place cost.
 struct Placed {
     at: Point,
-    bounds: Bounds,
+    bounds: Frame,
     cost: f64,
     /// Whether its glyphs meet what stays once written
     /// ([`Obstacles::lasting`]).
@@ -722,10 +723,10 @@ const LEADER_SHORT: f64 = 6.0;
 /// The leader from the box `b` to `anchor`: from the box's nearest point
 /// to [`LEADER_SHORT`] short of the anchor; none where the box stands
 /// within `reach`, the letter there read with its point without one.
-fn leader_line(b: &Bounds, anchor: Point, reach: f64) -> Option<(Point, Point)> {
+fn leader_line(b: &Frame, anchor: Point, reach: f64) -> Option<(Point, Point)> {
     let from = Point::new(
-        anchor.x.clamp(b.min.x, b.max.x),
-        anchor.y.clamp(b.min.y, b.max.y),
+        anchor.x.clamp(b.min().x, b.max().x),
+        anchor.y.clamp(b.min().y, b.max().y),
     );
     let d = anchor - from;
     (d.norm() > reach).then(|| (from, anchor - d * (LEADER_SHORT / d.norm())))

@@ -2,13 +2,13 @@
 //! drawn (once the panel's lines are all known), texts at fixed places
 //! (ticks, axis titles, legends) and the scale notes.
 
-use super::labels::Bounds;
 use super::mark::{Mark, TextAnchor};
 use super::markup::{finite, unit};
 use super::symbol_sizes::{LETTER_GAP, NOTE_LINE, NOTE_SIZE};
 use super::text::{BASELINE, starts_italic, text_half, text_node};
 use super::{Ink, PanelLayout, Pending};
 use crate::figure::{Align, Part, RichText, Role, TextSize};
+use crate::geom::Frame;
 use crate::geom::{Point, Vector};
 
 impl PanelLayout<'_> {
@@ -69,7 +69,7 @@ impl PanelLayout<'_> {
             Align::Middle => (TextAnchor::Middle, c),
             Align::End => (TextAnchor::End, c - Vector::new(half.x, 0.0)),
         };
-        self.obstacles.boxed(Bounds::around(middle, half));
+        self.obstacles.boxed(Frame::around(middle, half));
         Some(text_node(
             ink.id,
             c,
@@ -91,7 +91,7 @@ impl PanelLayout<'_> {
         for (i, line) in lines.iter().enumerate() {
             let y = corner.y + size * 0.8 + NOTE_LINE * i as f64;
             let half = text_half(line, size, self.font);
-            self.obstacles.boxed(Bounds::around(
+            self.obstacles.boxed(Frame::around(
                 Point::new(corner.x + half.x, y - BASELINE * size),
                 half,
             ));

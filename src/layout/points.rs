@@ -1,12 +1,12 @@
 //! Symbols at a point: pins, constructed points and the data markers of
 //! plots, each kept clear by labels as a whole.
 
-use super::labels::Bounds;
 use super::mark::{Mark, Paint, PathData, Shape, Stroke};
 use super::markup::{finite, path, polyline_d, stroked_circle};
 use super::symbol_sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
 use super::{Ink, PanelLayout};
 use crate::figure::{Pen, Symbol};
+use crate::geom::Frame;
 use crate::geom::{Point, Vector};
 
 impl PanelLayout<'_> {
@@ -19,7 +19,7 @@ impl PanelLayout<'_> {
             return None;
         }
         self.obstacles
-            .boxed(Bounds::around(c, Vector::new(radius, radius)));
+            .boxed(Frame::around(c, Vector::new(radius, radius)));
         self.points.push(c);
         Some(ink.tag(Mark::new(Shape::Circle {
             centre: c,
@@ -54,7 +54,7 @@ impl PanelLayout<'_> {
             return None;
         }
         let r = MARKER_RADIUS;
-        self.obstacles.boxed(Bounds::around(c, Vector::new(r, r)));
+        self.obstacles.boxed(Frame::around(c, Vector::new(r, r)));
         // A point a letter may name (a polar diagram's pole, lettered O):
         // another point's letter does not stand nearer it than its own.
         self.points.push(c);

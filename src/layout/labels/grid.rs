@@ -2,8 +2,8 @@
 //! in their order, the shapes that pass through its cell, so that a box
 //! looks only at the buckets it covers.
 
-use super::Bounds;
 use crate::figure::PageRect;
+use crate::geom::Frame;
 use crate::geom::{Point, Vector};
 use std::ops::RangeInclusive;
 
@@ -11,7 +11,7 @@ use std::ops::RangeInclusive;
 #[derive(Debug, Clone, Copy)]
 pub(super) enum Shape {
     Segment(Point, Point),
-    Box(Bounds),
+    Box(Frame),
 }
 
 /// The shapes given to [`Grid::new`], by their number, in a bucket per
@@ -40,12 +40,12 @@ pub(super) struct Grid {
     /// together in the order of the shapes lie together (the order they
     /// were drawn in: a curve's segments one after another), so that a box that misses a run's skips it whole, as it
     /// does a hundred short segments piled at one point.
-    chunks: Vec<Bounds>,
+    chunks: Vec<Frame>,
     /// Where each cell's boxes start in `groups` (as `starts`).
     group_starts: Vec<u32>,
     /// The box of each run of [`CHUNK`] boxes of `chunks` of a bucket, a
     /// group of [`CHUNK`]² shapes.
-    groups: Vec<Bounds>,
+    groups: Vec<Frame>,
 }
 
 /// How many shapes of a bucket one box of [`Grid::chunks`] holds.
@@ -180,10 +180,10 @@ impl Grid {
                     .filter_map(|&n| shapes.get(n as usize))
                     .map(|shape| {
                         let (b, slack) = self.extent(shape);
-                        Bounds {
-                            min: Point::new(b.min.x.max(x0 - slack), b.min.y.max(y0 - slack)),
-                            max: Point::new(b.max.x.min(x1 + slack), b.max.y.min(y1 + slack)),
-                        }
+                        Frame::from_corners(
+                            Point::new(b.min().x.max(x0 - slack), b.min().y.max(y0 - slack)),
+                            Point::new(b.max().x.min(x1 + slack), b.max().y.min(y1 + slack)),
+                        )
                     });
                 chunks.extend(cut.reduce(union));
             }
@@ -203,15 +203,15 @@ impl Grid {
     }
 
     /// A shape's box and its [`Grid::slack`].
-    fn extent(&self, shape: &Shape) -> (Bounds, f64) {
+    fn extent(&self, shape: &Shape) -> (Frame, f64) {
         let (p, q) = match *shape {
             Shape::Segment(p, q) => (p, q),
-            Shape::Box(b) => (b.min, b.max),
+            Shape::Box(b) => (b.min(), b.max()),
         };
-        let b = Bounds {
-            min: Point::new(p.x.min(q.x), p.y.min(q.y)),
-            max: Point::new(p.x.max(q.x), p.y.max(q.y)),
-        };
+        let b = Frame::from_corners(
+            Point::new(p.x.min(q.x), p.y.min(q.y)),
+            Point::new(p.x.max(q.x), p.y.max(q.y)),
+        );
         (b, self.slack(p, q))
     }
 
@@ -260,10 +260,10 @@ impl Grid {
         };
         match *shape {
             Shape::Box(b) => {
-                let slack = self.slack(b.min, b.max);
+                let slack = self.slack(b.min(), b.max());
                 let (across, down) = (self.reach.x + slack, self.reach.y + slack);
-                for row in self.row(b.min.y - down)..=self.row(b.max.y + down) {
-                    span(row, b.min.x - across, b.max.x + across);
+                for row in self.row(b.min().y - down)..=self.row(b.max().y + down) {
+                    span(row, b.min().x - across, b.max().x + across);
                 }
             }
             Shape::Segment(p, q) => {
@@ -304,14 +304,14 @@ impl Grid {
     /// wrong way round stands for the box between them). A shape meeting
     /// `b` is in one of their buckets at least, where it meets `b` within
     /// the reach of that bucket's cell.
-    pub fn cover(&self, b: &Bounds) -> (RangeInclusive<usize>, RangeInclusive<usize>) {
+    pub fn cover(&self, b: &Frame) -> (RangeInclusive<usize>, RangeInclusive<usize>) {
         let core = |lo: f64, hi: f64, reach: f64| {
             let (lo, hi) = (lo.min(hi), lo.max(hi));
             let middle = 0.5 * (lo + hi);
             (middle.min(lo + reach), middle.max(hi - reach))
         };
-        let (x0, x1) = core(b.min.x, b.max.x, self.reach.x);
-        let (y0, y1) = core(b.min.y, b.max.y, self.reach.y);
+        let (x0, x1) = core(b.min().x, b.max().x, self.reach.x);
+        let (y0, y1) = core(b.min().y, b.max().y, self.reach.y);
         (
             self.row(y0)..=self.row(y1),
             self.column(x0)..=self.column(x1),
@@ -321,7 +321,7 @@ impl Grid {
     /// The bucket of a cell that [`Grid::cover`] gave, each shape once, in
     /// the order of the shapes, with the boxes of its runs of [`CHUNK`]
     /// and of its groups of [`CHUNK`] runs.
-    pub fn bucket(&self, row: usize, column: usize) -> (&[u32], &[Bounds], &[Bounds]) {
+    pub fn bucket(&self, row: usize, column: usize) -> (&[u32], &[Frame], &[Frame]) {
         let cell = row * self.columns + column;
         (
             slice(&self.items, ends(&self.starts, cell)),
@@ -332,11 +332,11 @@ impl Grid {
 }
 
 /// The least box holding both.
-fn union(a: Bounds, b: Bounds) -> Bounds {
-    Bounds {
-        min: Point::new(a.min.x.min(b.min.x), a.min.y.min(b.min.y)),
-        max: Point::new(a.max.x.max(b.max.x), a.max.y.max(b.max.y)),
-    }
+fn union(a: Frame, b: Frame) -> Frame {
+    Frame::from_corners(
+        Point::new(a.min().x.min(b.min().x), a.min().y.min(b.min().y)),
+        Point::new(a.max().x.max(b.max().x), a.max().y.max(b.max().y)),
+    )
 }
 
 /// The part of `of` from the first of `bounds` to the second (nothing if
