@@ -1368,3 +1368,37 @@ fn the_coriolis_pins_at_a_short_rod_s_inner_dead_centre_are_lettered_apart() {
         );
     }
 }
+
+#[test]
+fn the_driver_s_omega_stands_about_b_clear_of_the_other_links_and_d() {
+    // The fifteenth review, 2: at inversion 2, l = 2.84 r, e = -1.38 r,
+    // 270.23° (B inside d's leg) ω's arc was drawn between C and B over
+    // link a and d's leg, read as a turn about C; at inversion 3,
+    // l = 3.77 r, e = -2.2 r, 270.95° (the crank along d's leg) it was
+    // drawn across d's edge. No point of the arc or its head comes within
+    // 3 units of link a (the crank CB) or of d's outline.
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion2, 2.84, -1.38, 270.23),
+        (FigureName::CoriolisInversion3, 3.77, -2.2, 270.95),
+    ] {
+        let plate = Plate::read(&svg(name, rod, offset, deg));
+        let panel = (plate.panels.iter())
+            .find(|p| p.id == "panel-mechanism")
+            .expect("a mechanism panel");
+        let strokes = |id: &'static str| panel.strokes.iter().filter(move |s| s.id == id);
+        let links: Vec<_> = (strokes("link-crank").chain(strokes("link-frame")))
+            .flat_map(|s| s.segs.iter())
+            .collect();
+        assert!(!links.is_empty(), "{name:?}: no link a or d");
+        let arc: Vec<_> = strokes("arc-omega").flat_map(|s| s.segs.iter()).collect();
+        assert!(!arc.is_empty(), "{name:?}: no ω");
+        let near = (arc.iter())
+            .flat_map(|s| [s.0, s.1, ((s.0.0 + s.1.0) / 2.0, (s.0.1 + s.1.1) / 2.0)])
+            .flat_map(|p| links.iter().map(move |l| l.distance_to(p)))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            near >= 3.0,
+            "{name:?} l = {rod}, e = {offset}, {deg}°: ω {near:.1} units from a or d"
+        );
+    }
+}
