@@ -106,4 +106,4 @@ const RULE_ARC: f64 = 0.55;
 /// How far beyond its arrow's head (or the arc's middle) each of the
 /// rule's letters is set, page units: most of a letter's height, so that
 /// the letter stands clear of the head and of its neighbour's letter.
-const RULE_LETTER: f64 = 14.0;
+const RULE_LETTER: f64 = 8.0;
