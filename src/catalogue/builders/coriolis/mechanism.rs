@@ -463,7 +463,7 @@ fn omega_place(
 /// all crossing a link, once put it over link a and d's leg between C
 /// and B (inversion 2 at l = 2.84 r, e = -1.38 r, 270.23°, where B lies
 /// inside d's leg: the room is round d's corner, at the wider radius).
-fn omega_scan(s: &Canvas, around: &[(f64, Vec<f64>)], sign: f64) -> (f64, f64, f64) {
+fn omega_scan(s: &Canvas, around: &[(f64, Vec<f64>); 2], sign: f64) -> (f64, f64, f64) {
     let scan = |sweep: f64, radius: f64, links: &[f64]| {
         (0..OMEGA_SCAN)
             .map(|i| std::f64::consts::TAU * i as f64 / OMEGA_SCAN as f64)
