@@ -402,9 +402,14 @@ fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
             *slot = o;
         }
     }
-    for ((_, _, from, to), off) in drawn.arrows.iter().zip(offsets.iter_mut()) {
-        if off.norm() == 0.0 {
-            *off = clear_of_points(s, (*from, *to), &drawn.points);
+    // On the polygon's own panel only: its detail keeps the heads on the
+    // points they end at (the ninth review read a′ set beside as the
+    // polygon not closing).
+    if least == MIN_ARROW {
+        for (i, (_, _, from, to)) in drawn.arrows.iter().enumerate() {
+            if let Some(off) = offsets.get_mut(i).filter(|o| o.norm() == 0.0) {
+                *off = clear_of_points(s, (*from, *to), drawn);
+            }
         }
     }
     offsets
@@ -417,8 +422,9 @@ fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
 /// Coriolis component k a′ ran through n, o′n ending on it, and k n a′
 /// read as two sides joined at n). A point within [`ON_LINE`] of the
 /// line counts, not one within [`SIDE_APART`] of an end (a side's own
-/// ends, and the dots crowding them, are lettered there).
-fn clear_of_points(s: &Canvas, (from, to): (Vector, Vector), points: &[Lettered]) -> Vector {
+/// ends, and the dots crowding them, are lettered there), nor one that
+/// ends a side along it.
+fn clear_of_points(s: &Canvas, (from, to): (Vector, Vector), drawn: &Drawn) -> Vector {
     let side = to - from;
     let length = side.norm();
     if s.page(length) < 2.0 * SIDE_APART {
@@ -427,9 +433,16 @@ fn clear_of_points(s: &Canvas, (from, to): (Vector, Vector), points: &[Lettered]
     let u = side / length;
     let across = Vector::new(-u.y, u.x);
     let (on, end) = (s.world(ON_LINE), s.world(SIDE_APART));
-    let passed = (points.iter()).find(|(_, _, p)| {
+    // A point that ends a side along this one is [`side_by_side`]'s to
+    // set apart (inversion 2 at l = 1.06 r, 180°: every side on one line).
+    let along_it = |p: &Vector| {
+        (drawn.arrows.iter()).any(|(_, _, a, b)| {
+            (a == p || b == p) && (b - a).norm() > 0.0 && (b - a).normalize().perp(&u).abs() < 1e-6
+        })
+    };
+    let passed = (drawn.points.iter()).find(|(_, _, p)| {
         let along = (p - from).dot(&u);
-        (along > end && along < length - end) && (p - from).dot(&across).abs() < on
+        (along > end && along < length - end) && (p - from).dot(&across).abs() < on && !along_it(p)
     });
     match passed {
         // The pole o′ is the origin: away from it.
