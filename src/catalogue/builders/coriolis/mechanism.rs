@@ -380,11 +380,15 @@ fn omega_obstacles(
         .unwrap_or_else(Vector::zeros)
         * half;
     let leg = (c - beyond, slot.0 + beyond);
-    let circle = radius + s.world(OMEGA_MARGIN);
+    let (inner, circle) = (
+        radius - s.world(OMEGA_MARGIN),
+        radius + s.world(OMEGA_MARGIN),
+    );
     for side in [-1.0, 0.0, 1.0] {
         let shift = across * side;
         let edge = (slot.0 + shift, slot.1 + shift);
         links.extend(crossings(edge, b, circle, f64::INFINITY));
+        links.extend(grazing(edge, b, (inner, circle), f64::INFINITY));
         // The leg also where it crosses the circle inside the arc: with B
         // inside the leg (inversion 3 at l = 3.77 r, e = -2.2 r,
         // 270.95°, the crank along it) its edges stand farther round
@@ -392,9 +396,10 @@ fn omega_obstacles(
         // touched the leg's edge with its end.
         let shift = pose.turn(Vector::new(half * side, 0.0));
         let edge = (leg.0 + shift, leg.1 + shift);
-        for r in [circle, radius - s.world(OMEGA_MARGIN)] {
+        for r in [circle, inner] {
             links.extend(crossings(edge, b, r, 1.0));
         }
+        links.extend(grazing(edge, b, (inner, circle), 1.0));
         // The leg's outer corners, which end inside the circle: the arc
         // passing them by less than the head (3 units outside the corner
         // in the case above) read as drawn on d.
@@ -528,6 +533,27 @@ fn crossings(slot: (Point, Point), centre: Point, radius: f64, reach: f64) -> Ve
             at.y.atan2(at.x)
         })
         .collect()
+}
+
+/// The direction from `centre` of the point of a line of d (from
+/// `slot.0` through `slot.1`, on to `reach` times their distance)
+/// nearest it, where that stands between `band.0` and `band.1` from it:
+/// the line grazes the arc there, which lies between the places it
+/// crosses the wider circle and was drawn along it (inversion 2 at
+/// l = 1.5 r, e = 0.45 r, 10°, the wider arc under d's bar). None
+/// otherwise, or where the line's ends coincide.
+fn grazing(slot: (Point, Point), centre: Point, band: (f64, f64), reach: f64) -> Option<f64> {
+    let (p, q) = slot;
+    let len = (q - p).norm();
+    if !(len > 0.0 && len.is_finite()) {
+        return None;
+    }
+    let u = (q - p) / len;
+    let w = p - centre;
+    let t = -w.dot(&u);
+    let foot = w + u * t;
+    let near = foot.norm();
+    (t >= 0.0 && t <= reach * len && near >= band.0 && near <= band.1).then(|| foot.y.atan2(foot.x))
 }
 
 /// Room about ω's arc within which the slotted link d counts as
