@@ -1368,3 +1368,108 @@ fn the_coriolis_pins_at_a_short_rod_s_inner_dead_centre_are_lettered_apart() {
         );
     }
 }
+
+#[test]
+fn the_driver_s_omega_stands_about_b_clear_of_the_other_links_and_d() {
+    // The fifteenth review, 2: at inversion 2, l = 2.84 r, e = -1.38 r,
+    // 270.23° (B inside d's leg) ω's arc was drawn between C and B over
+    // link a and d's leg, read as a turn about C; at inversion 3,
+    // l = 3.77 r, e = -2.2 r, 270.95° (the crank along d's leg) it was
+    // drawn across d's edge. No point of the arc or its head comes within
+    // 3 units of link a (the crank CB) or of d's outline.
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion2, 2.84, -1.38, 270.23),
+        (FigureName::CoriolisInversion3, 3.77, -2.2, 270.95),
+    ] {
+        let plate = Plate::read(&svg(name, rod, offset, deg));
+        let panel = (plate.panels.iter())
+            .find(|p| p.id == "panel-mechanism")
+            .expect("a mechanism panel");
+        let strokes = |id: &'static str| panel.strokes.iter().filter(move |s| s.id == id);
+        let links: Vec<_> = (strokes("link-crank").chain(strokes("link-frame")))
+            .flat_map(|s| s.segs.iter())
+            .collect();
+        assert!(!links.is_empty(), "{name:?}: no link a or d");
+        let arc: Vec<_> = strokes("arc-omega").flat_map(|s| s.segs.iter()).collect();
+        assert!(!arc.is_empty(), "{name:?}: no ω");
+        let near = (arc.iter())
+            .flat_map(|s| [s.0, s.1, ((s.0.0 + s.1.0) / 2.0, (s.0.1 + s.1.1) / 2.0)])
+            .flat_map(|p| links.iter().map(move |l| l.distance_to(p)))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            near >= 3.0,
+            "{name:?} l = {rod}, e = {offset}, {deg}°: ω {near:.1} units from a or d"
+        );
+    }
+}
+
+#[test]
+fn a_tangential_component_too_short_to_draw_is_said_so() {
+    // The fifteenth review, 3: at inversion 2, l = 2.84 r, e = -1.38 r,
+    // 0° d's tangential component n a′_d (α_d · CA = 84 ft/s², 11 units)
+    // was neither drawn nor said. It is drawn, or the notes say how long
+    // it is drawn and what marks its ends.
+    let svg = svg(FigureName::CoriolisInversion2, 2.84, -1.38, 0.0);
+    let drawn = element(&svg, "acceleration-nad").is_some();
+    // Read without spaces: the notes wrap anywhere.
+    let text: String = (crate::common::read_text(&svg).chars())
+        .filter(|c| !c.is_whitespace())
+        .collect();
+    let from = text.find("thetangentialcomponent").expect("the note");
+    let to = from
+        + text[from..]
+            .find("theslidingacceleration")
+            .expect("its end");
+    let said = text[from..to].contains("tooshort");
+    assert!(
+        drawn || said,
+        "n a′_d neither drawn nor said: {}",
+        &text[from..to]
+    );
+}
+
+#[test]
+fn a_side_does_not_run_through_another_point_of_its_polygon() {
+    // The fifteenth review, 3: at inversion 2, l = 2.84 r, e = -1.38 r,
+    // 89.44° the Coriolis component k a′ ran straight through n, o′n
+    // ending on it (k n a′ read as two sides joined at n). The side is set
+    // beside n: n's dot stands at least 3 units off its line.
+    let svg = svg(FigureName::CoriolisInversion2, 2.84, -1.38, 89.44);
+    let line = points_after(&svg, "acceleration-coriolis");
+    let n = (num(&svg, "point-n", "cx"), num(&svg, "point-n", "cy"));
+    let (first, last) = (line[0], line[line.len() - 1]);
+    let off = to_segment(n, first, last);
+    assert!(off >= 3.0, "n {off:.1} units from k a′");
+}
+
+#[test]
+fn the_coriolis_rule_s_letters_stand_apart() {
+    // The fifteenth review, 3: at inversion 3, l = 1.09 r, 89.99° and
+    // l = 1.08 r, 89.9° the rule's "2ω_d v" and "ω_d" ran together. Their
+    // boxes stand at least 2 units apart.
+    for (rod, deg) in [(1.09, 89.99), (1.08, 89.9), (3.0, 60.0)] {
+        let plate = Plate::read(&svg(FigureName::CoriolisInversion3, rod, 0.0, deg));
+        let gap = letters_gap(&plate, "label-rule-coriolis", "label-rule-omega");
+        assert!(gap >= 2.0, "l = {rod} r, {deg}°: 2ω_d v {gap:.1} from ω_d");
+    }
+}
+
+#[test]
+fn the_coriolis_notes_say_what_theta_is_measured_between() {
+    // The fifteenth review: θ is given in the notes but marked in no
+    // drawing, and read as the driver's angle. The notes say it is the
+    // angle at C from d's slot to the crank CB.
+    for name in [
+        FigureName::CoriolisInversion2,
+        FigureName::CoriolisInversion3,
+    ] {
+        // Read without spaces: the notes wrap anywhere.
+        let text: String = (crate::common::read_text(&svg(name, 3.0, 0.0, 60.0)).chars())
+            .filter(|c| !c.is_whitespace())
+            .collect();
+        assert!(
+            text.contains("(theangleatCfromthedirectionofd’sslot"),
+            "{name:?}: {text}"
+        );
+    }
+}

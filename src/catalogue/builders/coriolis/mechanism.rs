@@ -87,25 +87,43 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     );
     let width = ctx.page().width() - 2.0 * MARGIN;
     let seen = world.max() - world.min();
-    let tall = (width * seen.y / seen.x).clamp(MECHANISM_HEIGHT.0, MECHANISM_HEIGHT.1);
-    let rect = PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
-    let whole = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
-    let scale = whole.map().scale();
     let least = match pose.inversion() {
         Inversion::Rod => CRANK_LEAST,
         _ => FIXED_CRANK_LEAST,
     };
     let engine = pose.engine_pose();
     let (c, a) = (pose.place(engine.c()), pose.place(engine.a()));
-    let pins = (a - c).norm() * scale;
     let b = pose.place(engine.b());
     let folded = unit(b - c)
         .zip(unit(a - c))
         .is_some_and(|(u, v)| u.dot(&v).abs() > FOLDED.to_radians().cos());
-    let crowded = m.crank() * scale >= least && pins < PINS_APART && folded;
-    if m.crank() * scale >= least && !crowded {
+    // Whether a plot at `scale` needs no detail: its crank long enough
+    // and its pins C and A not crowded at the inner dead centre.
+    let crowded =
+        |scale: f64| m.crank() * scale >= least && (a - c).norm() * scale < PINS_APART && folded;
+    let clear = |scale: f64| m.crank() * scale >= least && !crowded(scale);
+    let panel = |tall: f64| PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
+    if let Some(tall) = taller(width, seen, m.crank()) {
+        let whole = Plot::world(
+            "mechanism",
+            panel(tall),
+            &world,
+            false,
+            ctx.tolerance,
+            ctx.font,
+        )?;
+        if clear(whole.map().scale()) {
+            return Ok((links_plot(ctx, pose, whole, None, None)?.0, None));
+        }
+    }
+    let tall = (width * seen.y / seen.x).clamp(MECHANISM_HEIGHT.0, MECHANISM_HEIGHT.1);
+    let rect = panel(tall);
+    let whole = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
+    let scale = whole.map().scale();
+    if clear(scale) {
         return Ok((links_plot(ctx, pose, whole, None, None)?.0, None));
     }
+    let crowded = crowded(scale);
     let side = tall;
     let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
     let beside = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
@@ -143,6 +161,38 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let (detail, _) = links_plot(ctx, pose, detail, Some(region), follow)?;
     Ok((plot, Some(detail)))
 }
+
+/// A taller mechanism panel's height (its caption apart) for a world of
+/// size `seen` drawn `width` page units wide, where at its usual height
+/// (its width's share by the world's shape within [`MECHANISM_HEIGHT`])
+/// the crank of length `crank` would be drawn shorter than
+/// [`CRANK_ROOM`]: the height that draws it so, or as near as the
+/// world's shape and [`MECHANISM_TALLEST`] allow (the driven pin's
+/// circle about B sized a square world, the pins, the links' and d's
+/// letters and ω crowded round a crank of 39 units: inversion 2 at
+/// l = 2.84 r, e = -1.38 r, 270.23°). None where that is no taller, or
+/// for a world with no height or width. The caller keeps it only where
+/// the mechanism then needs no detail: a long rod's crank, which no
+/// height makes readable, is left to its detail at the usual height.
+fn taller(width: f64, seen: Vector, crank: f64) -> Option<f64> {
+    let shaped = width * seen.y / seen.x;
+    if !(shaped.is_finite() && seen.y > 0.0) {
+        return None;
+    }
+    let usual = shaped.clamp(MECHANISM_HEIGHT.0, MECHANISM_HEIGHT.1);
+    let room = (CRANK_ROOM * seen.y / crank)
+        .min(MECHANISM_TALLEST)
+        .min(shaped);
+    (room > usual).then_some(room)
+}
+
+/// The page length the crank is given room for on the mechanism panel,
+/// by a taller panel ([`mechanism_height`]).
+const CRANK_ROOM: f64 = 60.0;
+
+/// The most height the mechanism panel takes to give its crank
+/// [`CRANK_ROOM`], page units.
+const MECHANISM_TALLEST: f64 = 420.0;
 
 /// The detail of the crowded pins C and A in `rect` (its caption
 /// included), for a main view at `scale` page units per world unit: the
@@ -263,6 +313,46 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_fo
     if s.page(radius) < 10.0 {
         return;
     }
+    let heading = arm.y.atan2(arm.x);
+    let sign = omega.signum();
+    // At its radius, else wider (round d's corner, where B lies inside
+    // d's leg and the room between the links at B holds their letters),
+    // else shortened at its radius.
+    let wider = radius * OMEGA_WIDER;
+    let links = |r: f64| omega_obstacles(s, pose, b_foot, r, heading);
+    let placed = |r: f64| omega_place(s, &links(r), (heading, sign), r).map(|(a, w)| (a, w, r));
+    let (start, sweep, radius) = placed(radius)
+        .or_else(|| placed(wider))
+        .unwrap_or_else(|| omega_scan(s, &[(radius, links(radius)), (wider, links(wider))], sign));
+    s.push(
+        "arc-omega",
+        Role::Force,
+        Shape::Arc {
+            centre: b,
+            radius,
+            start,
+            sweep,
+            arrow: true,
+        },
+    );
+    let mid = start + 0.5 * sweep;
+    let at = b + Vector::new(mid.cos(), mid.sin()) * radius;
+    s.label("label-omega", at, RichText::parse("ω"), TextSize::Letter);
+}
+
+/// The directions from B that ω's arc about it, of `radius`, keeps
+/// clear of: the driver (heading `heading`), the other link at B, the
+/// slotted link d's bar and leg where they cross the arc's circle, and
+/// B's bearing on the side `b_foot` where one is drawn.
+fn omega_obstacles(
+    s: &Canvas,
+    pose: &InversionPose,
+    b_foot: Option<Foot>,
+    radius: f64,
+    heading: f64,
+) -> Vec<f64> {
+    let engine = pose.engine_pose();
+    let b = pose.place(engine.b());
     // The other link at B (the fixed rod BA of inversion 3, the fixed
     // crank BC of inversion 2) and the slotted link d where it crosses
     // the arc's circle: the arc stands ahead of the driver in ω's sense,
@@ -281,10 +371,42 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_fo
     // d is a bar as wide as the block: its middle line and both sides.
     let half = super::super::inversions::slot_half_width(mechanism, s.transform().scale());
     let across = pose.turn(Vector::new(0.0, half));
+    // d's leg, from C square to the stroke where it is offset, as far
+    // as it runs (B inside it at 270° in inversion 2 with l = 2.84 r,
+    // e = -1.38 r, where the arc was drawn along it and over link a).
+    let c = pose.place(engine.c());
+    let beyond = (slot.0 - c)
+        .try_normalize(0.0)
+        .unwrap_or_else(Vector::zeros)
+        * half;
+    let leg = (c - beyond, slot.0 + beyond);
+    let (inner, circle) = (
+        radius - s.world(OMEGA_MARGIN),
+        radius + s.world(OMEGA_MARGIN),
+    );
     for side in [-1.0, 0.0, 1.0] {
         let shift = across * side;
         let edge = (slot.0 + shift, slot.1 + shift);
-        links.extend(crossings(edge, b, radius + s.world(OMEGA_MARGIN)));
+        links.extend(crossings(edge, b, circle, f64::INFINITY));
+        links.extend(grazing(edge, b, (inner, circle), f64::INFINITY));
+        // The leg also where it crosses the circle inside the arc: with B
+        // inside the leg (inversion 3 at l = 3.77 r, e = -2.2 r,
+        // 270.95°, the crank along it) its edges stand farther round
+        // there, and the arc kept clear only of the outer crossings
+        // touched the leg's edge with its end.
+        let shift = pose.turn(Vector::new(half * side, 0.0));
+        let edge = (leg.0 + shift, leg.1 + shift);
+        for r in [circle, inner] {
+            links.extend(crossings(edge, b, r, 1.0));
+        }
+        links.extend(grazing(edge, b, (inner, circle), 1.0));
+        // The leg's outer corners, which end inside the circle: the arc
+        // passing them by less than the head (3 units outside the corner
+        // in the case above) read as drawn on d.
+        let corner = leg.1 + shift - b;
+        if (corner.norm() - radius).abs() < s.world(OMEGA_MARGIN) {
+            links.push(corner.y.atan2(corner.x));
+        }
     }
     // B's bearing, where one is drawn, on the side `b_foot`: its triangle
     // and hatching span about 0.65 rad either side of its axis at the
@@ -299,55 +421,95 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_fo
         let down = (-axis.y).atan2(axis.x);
         links.extend([down - BEARING_SPREAD, down, down + BEARING_SPREAD]);
     }
-    let heading = arm.y.atan2(arm.x);
     links.push(heading);
-    let sweep = OMEGA_SWEEP * omega.signum();
-    // The arc with its head, which runs on past its end along the
-    // tangent about a head's length.
-    let reach = sweep + omega.signum() * s.world(HEAD) / radius;
-    let nearest = |start: f64| {
-        (links.iter())
-            .map(|d| clearance(start, reach, *d))
-            .fold(f64::INFINITY, f64::min)
-    };
-    // Ahead of the driver, behind it, else about B where the links and
-    // the bearing leave room (the default of inversion 3, whose crank
-    // points into the bearing's side): the first clear by
-    // [`OMEGA_CLEAR`], else the one farthest from them.
-    let ahead = heading + OMEGA_GAP * omega.signum();
-    let behind = heading - OMEGA_GAP * omega.signum() - sweep;
-    let about = OMEGA_ABOUT.map(|middle: f64| middle.to_radians() - 0.5 * sweep);
-    let candidates = [[ahead, behind].as_slice(), &about].concat();
-    let start = candidates
-        .iter()
-        .copied()
-        .find(|c| nearest(*c) >= OMEGA_CLEAR)
-        .unwrap_or_else(|| {
-            (candidates.iter().copied())
-                .max_by(|p, q| nearest(*p).total_cmp(&nearest(*q)))
-                .unwrap_or(ahead)
-        });
-    s.push(
-        "arc-omega",
-        Role::Force,
-        Shape::Arc {
-            centre: b,
-            radius,
-            start,
-            sweep,
-            arrow: true,
-        },
-    );
-    let mid = start + 0.5 * sweep;
-    let at = b + Vector::new(mid.cos(), mid.sin()) * radius;
-    s.label("label-omega", at, RichText::parse("ω"), TextSize::Letter);
+    links
 }
 
-/// The directions from `centre` of the points where the slotted link d,
-/// the ray from `slot.0` through `slot.1` (its bar runs on beyond the
-/// block), crosses the circle of `radius` about `centre`; none where it
-/// passes outside it.
-fn crossings(slot: (Point, Point), centre: Point, radius: f64) -> Vec<f64> {
+/// The clearance (radians) of ω's arc from `start` sweeping `sweep`,
+/// with its head (which runs on past its end along the tangent about a
+/// head's length), on a circle of `radius`, from the nearest of the
+/// directions `links`.
+fn omega_room(s: &Canvas, links: &[f64], (start, sweep): (f64, f64), radius: f64) -> f64 {
+    let reach = sweep + sweep.signum() * s.world(HEAD) / radius;
+    (links.iter())
+        .map(|d| clearance(start, reach, *d))
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// Where ω's arc about B stands among the directions `links`
+/// ([`omega_obstacles`]) for a driver heading `heading`, turning in the
+/// sense `sign`, on a circle of `radius`: its start and sweep (radians),
+/// the first of the usual places clear by [`OMEGA_CLEAR`] (ahead of the
+/// driver, behind it, else about B where the links and the bearing leave
+/// room: the default of inversion 3, whose crank points into the
+/// bearing's side); none where none is.
+fn omega_place(
+    s: &Canvas,
+    links: &[f64],
+    (heading, sign): (f64, f64),
+    radius: f64,
+) -> Option<(f64, f64)> {
+    let sweep = OMEGA_SWEEP * sign;
+    let ahead = heading + OMEGA_GAP * sign;
+    let behind = heading - OMEGA_GAP * sign - sweep;
+    let about = OMEGA_ABOUT.map(|middle: f64| middle.to_radians() - 0.5 * sweep);
+    let candidates = [[ahead, behind].as_slice(), &about].concat();
+    (candidates.into_iter())
+        .find(|c| omega_room(s, links, (*c, sweep), radius) >= OMEGA_CLEAR)
+        .map(|start| (start, sweep))
+}
+
+/// ω's arc where no usual place is clear at either radius: set in the
+/// widest room between the directions to keep clear of at each radius
+/// (`around`: the radius and its [`omega_obstacles`]), scanned round B,
+/// shortened (to [`OMEGA_SHORT`]) where none is clear at its full
+/// sweep; the first length and radius clear by [`OMEGA_CLEAR`], else
+/// the roomiest. Its start, sweep and radius. The five places tried,
+/// all crossing a link, once put it over link a and d's leg between C
+/// and B (inversion 2 at l = 2.84 r, e = -1.38 r, 270.23°, where B lies
+/// inside d's leg: the room is round d's corner, at the wider radius).
+fn omega_scan(s: &Canvas, around: &[(f64, Vec<f64>); 2], sign: f64) -> (f64, f64, f64) {
+    let scan = |sweep: f64, radius: f64, links: &[f64]| {
+        (0..OMEGA_SCAN)
+            .map(|i| std::f64::consts::TAU * i as f64 / OMEGA_SCAN as f64)
+            .map(|start| (start, omega_room(s, links, (start, sweep), radius)))
+            .fold((0.0, f64::NEG_INFINITY), |best, next| {
+                if next.1 > best.1 { next } else { best }
+            })
+    };
+    let mut best = (0.0, OMEGA_SWEEP * sign, around[0].0, f64::NEG_INFINITY);
+    for length in [OMEGA_SWEEP, 0.5 * (OMEGA_SWEEP + OMEGA_SHORT), OMEGA_SHORT] {
+        for (radius, links) in around {
+            let (start, room) = scan(length * sign, *radius, links);
+            if room >= OMEGA_CLEAR {
+                return (start, length * sign, *radius);
+            }
+            if room > best.3 {
+                best = (start, length * sign, *radius, room);
+            }
+        }
+    }
+    (best.0, best.1, best.2)
+}
+
+/// How much wider than its usual radius ω's arc is tried where no usual
+/// place is clear at it.
+const OMEGA_WIDER: f64 = 1.4;
+
+/// The shortest sweep (radians) ω's arc is cut to where it finds no
+/// clear place at its full [`OMEGA_SWEEP`].
+const OMEGA_SHORT: f64 = 0.6;
+
+/// The starts tried round B for ω's arc where none of the usual places
+/// is clear: every 5°.
+const OMEGA_SCAN: usize = 72;
+
+/// The directions from `centre` of the points where a line of the
+/// slotted link d, from `slot.0` through `slot.1` and on to `reach`
+/// times their distance (infinite for its bar, which runs on beyond the
+/// block; 1 for its leg), crosses the circle of `radius` about `centre`;
+/// none where it passes outside it or its ends coincide.
+fn crossings(slot: (Point, Point), centre: Point, radius: f64, reach: f64) -> Vec<f64> {
     let (p, q) = slot;
     let u = q - p;
     let len = u.norm();
@@ -365,12 +527,33 @@ fn crossings(slot: (Point, Point), centre: Point, radius: f64) -> Vec<f64> {
     let root = disc.sqrt();
     [-half - root, -half + root]
         .into_iter()
-        .filter(|t| *t >= 0.0)
+        .filter(|t| *t >= 0.0 && *t <= reach * len)
         .map(|t| {
             let at = w + u * t;
             at.y.atan2(at.x)
         })
         .collect()
+}
+
+/// The direction from `centre` of the point of a line of d (from
+/// `slot.0` through `slot.1`, on to `reach` times their distance)
+/// nearest it, where that stands between `band.0` and `band.1` from it:
+/// the line grazes the arc there, which lies between the places it
+/// crosses the wider circle and was drawn along it (inversion 2 at
+/// l = 1.5 r, e = 0.45 r, 10°, the wider arc under d's bar). None
+/// otherwise, or where the line's ends coincide.
+fn grazing(slot: (Point, Point), centre: Point, band: (f64, f64), reach: f64) -> Option<f64> {
+    let (p, q) = slot;
+    let len = (q - p).norm();
+    if !(len > 0.0 && len.is_finite()) {
+        return None;
+    }
+    let u = (q - p) / len;
+    let w = p - centre;
+    let t = -w.dot(&u);
+    let foot = w + u * t;
+    let near = foot.norm();
+    (t >= 0.0 && t <= reach * len && near >= band.0 && near <= band.1).then(|| foot.y.atan2(foot.x))
 }
 
 /// Room about ω's arc within which the slotted link d counts as

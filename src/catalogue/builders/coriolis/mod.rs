@@ -148,9 +148,21 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     }
     let a_scale = acceleration.map().scale();
     let sliding = polygons.p.a_d_acceleration() - polygons.k();
+    let tangential = polygons.p.a_d_acceleration() - polygons.p.n();
     let seen = (
         drawn_length(sliding, a_scale, a_window),
         drawn_length(polygons.p.coriolis(), a_scale, a_window),
+        // Where the detail, about the Coriolis component, holds both its
+        // ends; else as the polygon draws it.
+        drawn_length(
+            tangential,
+            a_scale,
+            a_window.filter(|w| {
+                [polygons.p.n(), polygons.p.a_d_acceleration()]
+                    .iter()
+                    .all(|p| w.frame.contains(Point::from(*p)))
+            }),
+        ),
     );
     let plain = [
         headless(&velocity_drawn, velocity.map().scale(), v_window),

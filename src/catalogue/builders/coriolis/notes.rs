@@ -32,10 +32,11 @@ pub(super) fn coriolis_json(polygons: &Polygons, v_bar: f64, a_bar: f64) -> Valu
     })
 }
 
-/// How long the sliding acceleration and the Coriolis component are drawn
-/// at their largest, page units, each with the detail's magnification
-/// where a detail draws it (`None` without one).
-pub(super) type Seen = ((f64, Option<f64>), (f64, Option<f64>));
+/// How long the sliding acceleration, the Coriolis component and d's
+/// tangential component are drawn at their largest, page units, each
+/// with the detail's magnification where a detail draws it (`None`
+/// without one).
+pub(super) type Seen = ((f64, Option<f64>), (f64, Option<f64>), (f64, Option<f64>));
 
 /// The notes: the pose and the driver, then each polygon read to its bar,
 /// then the Coriolis component and its rule.
@@ -50,7 +51,7 @@ pub(super) fn notes(
     vec![
         pose_note(ctx, chain, polygons),
         velocity_note(ctx, polygons, &read, bars.0),
-        acceleration_note(ctx, polygons, &read, bars.1, seen.0),
+        acceleration_note(ctx, polygons, &read, bars.1, (seen.0, seen.2)),
         coriolis_note(ctx, polygons, &read, bars.1, seen.1) + &headless_said(plain),
     ]
 }
@@ -84,8 +85,10 @@ impl Read {
     }
 }
 
-/// The first note: the inversion, the engine and the pose, the driver
-/// and its speed, CA, and the quick return's time ratio where it has one.
+/// The first note: the inversion, the engine and the pose (θ, with what
+/// it is measured between: the drawing marks no angle, and a reader took
+/// it for the driver's), the driver and its speed, CA, and the quick
+/// return's time ratio where it has one.
 fn pose_note(ctx: &Ctx, chain: &InvertedChain, polygons: &Polygons) -> String {
     let m = &ctx.mechanism;
     let (r, l, e) = (m.crank(), m.rod(), m.offset());
@@ -103,7 +106,7 @@ fn pose_note(ctx: &Ctx, chain: &InvertedChain, polygons: &Polygons) -> String {
         _ => ("a", "the rod *b* (*BA*)"),
     };
     format!(
-        "Inversion {}, link *{fixed}* fixed ({}) at θ = {}°; *r* = {}, *l* = {}{offset}; {driver} turns about *B* at ω = {} rad/s ({} rpm), *CA* = {} {}.{ratio}",
+        "Inversion {}, link *{fixed}* fixed ({}) at θ = {}° (the angle at *C* from the direction of *d*’s slot, the line of stroke, to the crank *CB*, counter-clockwise); *r* = {}, *l* = {}{offset}; {driver} turns about *B* at ω = {} rad/s ({} rpm), *CA* = {} {}.{ratio}",
         inversion.number(),
         inversion.name(),
         short(ctx.angle.degrees()),
@@ -137,14 +140,17 @@ fn velocity_note(ctx: &Ctx, polygons: &Polygons, read: &Read, bar: f64) -> Strin
 
 /// The acceleration polygon read to its bar of `bar`: the driven point's
 /// centripetal acceleration, d's normal and tangential components, the
-/// sliding acceleration with its sense, and, where it is drawn too short
-/// to be seen at its largest (`seen`), how long it is drawn.
+/// sliding acceleration with its sense, and, where it or the tangential
+/// component is drawn too short to be seen at its largest (`seen`: the
+/// sliding acceleration's, the tangential component's), how long it is
+/// drawn (inversion 2 at l = 2.84 r, e = -1.38 r, 0°: the tangential
+/// component n a′_d, 11 units, was drawn nowhere and not said).
 fn acceleration_note(
     ctx: &Ctx,
     polygons: &Polygons,
     read: &Read,
     bar: f64,
-    seen: (f64, Option<f64>),
+    (seen, tangent_seen): ((f64, Option<f64>), (f64, Option<f64>)),
 ) -> String {
     let u = ctx.unit();
     let p = &polygons.p;
@@ -161,8 +167,15 @@ fn acceleration_note(
         _ => ("*a*", "A"),
     };
     let normal = read.omega_d * read.omega_d * polygons.ca;
+    let tangential = read.alpha_d * polygons.ca;
+    let tangent_said = said(&[unseen(
+        tangential,
+        tangent_seen,
+        (bar, &per_s2),
+        ("*n*", "*a*′_{d}"),
+    )]);
     format!(
-        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{link}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²; the sliding acceleration along the slot {} {u}/s²{sliding_said}.",
+        "Acceleration polygon (the bar {} {u}/s²): *o*′{pin}′ = ω²·*B{link}* = {} {u}/s² towards *B*; the normal component ω_{{d}}²·*CA* = {} {u}/s² towards *C* and the tangential component perpendicular to *CA*, α_{{d}} = {} rad/s²{tangent_said}; the sliding acceleration along the slot {} {u}/s²{sliding_said}.",
         short(bar),
         sig(p.driven_acceleration().norm()),
         sig(normal),

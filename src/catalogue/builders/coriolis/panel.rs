@@ -402,8 +402,61 @@ fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
             *slot = o;
         }
     }
+    // On the polygon's own panel only: its detail keeps the heads on the
+    // points they end at (the ninth review read a′ set beside as the
+    // polygon not closing).
+    if least == MIN_ARROW {
+        for (i, (_, _, from, to)) in drawn.arrows.iter().enumerate() {
+            if let Some(off) = offsets.get_mut(i).filter(|o| o.norm() == 0.0) {
+                *off = clear_of_points(s, (*from, *to), drawn);
+            }
+        }
+    }
     offsets
 }
+
+/// The offset (world) that sets the side `from`→`to`, drawn on `s`, off
+/// a point of the polygon (`points`) its line runs through between its
+/// ends: [`SIDE_APART`] across it, away from the pole; none where it
+/// passes none (inversion 2 at l = 2.84 r, e = -1.38 r, 89.44°: the
+/// Coriolis component k a′ ran through n, o′n ending on it, and k n a′
+/// read as two sides joined at n). A point within [`ON_LINE`] of the
+/// line counts, not one within [`SIDE_APART`] of an end (a side's own
+/// ends, and the dots crowding them, are lettered there), nor one that
+/// ends a side along it.
+fn clear_of_points(s: &Canvas, (from, to): (Vector, Vector), drawn: &Drawn) -> Vector {
+    let side = to - from;
+    let length = side.norm();
+    if s.page(length) < 2.0 * SIDE_APART {
+        return Vector::zeros();
+    }
+    let u = side / length;
+    let across = Vector::new(-u.y, u.x);
+    let (on, end) = (s.world(ON_LINE), s.world(SIDE_APART));
+    // A point that ends a side along this one is [`side_by_side`]'s to
+    // set apart (inversion 2 at l = 1.06 r, 180°: every side on one line).
+    let along_it = |p: &Vector| {
+        (drawn.arrows.iter()).any(|(_, _, a, b)| {
+            (a == p || b == p) && (b - a).norm() > 0.0 && (b - a).normalize().perp(&u).abs() < 1e-6
+        })
+    };
+    let passed = (drawn.points.iter()).find(|(_, _, p)| {
+        let along = (p - from).dot(&u);
+        (along > end && along < length - end) && (p - from).dot(&across).abs() < on && !along_it(p)
+    });
+    match passed {
+        // The pole o′ is the origin: away from it.
+        Some(_) => {
+            let sign = if from.dot(&across) > 0.0 { 1.0 } else { -1.0 };
+            across * sign * s.world(SIDE_APART)
+        }
+        None => Vector::zeros(),
+    }
+}
+
+/// Page distance within which a polygon's point counts as lying on a
+/// side's line ([`clear_of_points`]): a dot's radius and a stroke.
+const ON_LINE: f64 = 3.0;
 
 /// The right angles of the acceleration polygon: d's tangential component
 /// against its normal one at n, the Coriolis component against the slot

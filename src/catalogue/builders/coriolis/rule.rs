@@ -45,9 +45,14 @@ pub(super) fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Resul
         Role::Construction,
         Shape::Arrow { from: o, to: o + u },
     );
-    s.label(
+    // Each letter set beyond its arrow's head, or the arc's middle, by
+    // [`RULE_LETTER`]: set at them, "2ω_d v" and "ω_d" ran together
+    // (inversion 3 at l = 1.09 r, 89.99°).
+    let beyond = s.world(RULE_LETTER);
+    s.label_toward(
         "label-rule-v",
-        o + u,
+        o + u * (1.0 + beyond),
+        u,
         RichText::parse("*v*"),
         TextSize::Letter,
     );
@@ -60,9 +65,10 @@ pub(super) fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Resul
             to: o + turned,
         },
     );
-    s.label(
+    s.label_toward(
         "label-rule-coriolis",
-        o + turned,
+        o + turned * (1.0 + beyond),
+        turned,
         RichText::parse("2ω_{d}*v*"),
         TextSize::Letter,
     );
@@ -73,16 +79,18 @@ pub(super) fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Resul
         Role::Force,
         Shape::Arc {
             centre: o,
-            radius: 0.55,
+            radius: RULE_ARC,
             start,
             sweep: sense * 0.5 * std::f64::consts::PI,
             arrow: true,
         },
     );
     let mid = start + sense * 0.25 * std::f64::consts::PI;
-    s.label(
+    let out = Vector::new(mid.cos(), mid.sin());
+    s.label_toward(
         "label-rule-omega",
-        o + Vector::new(mid.cos(), mid.sin()) * 0.55,
+        o + out * (RULE_ARC + beyond),
+        out,
         RichText::parse("ω_{d}"),
         TextSize::Letter,
     );
@@ -91,3 +99,11 @@ pub(super) fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Resul
     }
     Ok(plot)
 }
+
+/// The radius of the rule's quarter turn, in lengths of its arrows.
+const RULE_ARC: f64 = 0.55;
+
+/// How far beyond its arrow's head (or the arc's middle) each of the
+/// rule's letters is set, page units: most of a letter's height, so that
+/// the letter stands clear of the head and of its neighbour's letter.
+const RULE_LETTER: f64 = 8.0;
