@@ -2503,7 +2503,9 @@ fn the_crank_pin_loads_leaders_each_end_on_their_own_dot() {
                 let end = p[p.len() - 1];
                 let d = (end.0 - at.0).hypot(end.1 - at.1);
                 if d > 2.1 + 0.35 {
-                    wrong.push(format!("{case}: {leader} ends {d:.2} from its dot's centre"));
+                    wrong.push(format!(
+                        "{case}: {leader} ends {d:.2} from its dot's centre"
+                    ));
                 }
                 for (other, q) in marks.iter().filter(|m| m.0 != *id) {
                     let e = (end.0 - q.0).hypot(end.1 - q.1);
@@ -2524,10 +2526,17 @@ fn the_crank_pin_loads_default_fixed_panel_has_its_knot_about_the_pole_enlarged(
     // units apart on the x axis, their leaders across the dotted jump
     // and a dashed strand) and had no detail. Its knot, the pole's
     // letter among it, is lettered in a detail (a′).
-    let svg = to_svg(&FigureName::CrankPinLoads.figure(&FigureOptions::default()).unwrap());
+    let svg = to_svg(
+        &FigureName::CrankPinLoads
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
     let panels = drawn_load_panels(&svg);
     assert!(panels.contains(&"detail-fixed"), "{panels:?}");
-    for id in ["label-detail-fixed-with-rod-0", "label-detail-fixed-without-rod-270"] {
+    for id in [
+        "label-detail-fixed-with-rod-0",
+        "label-detail-fixed-without-rod-270",
+    ] {
         assert!(svg.contains(&format!("id=\"{id}\"")), "no {id}");
     }
 }
@@ -2548,19 +2557,24 @@ fn the_crank_pin_loads_fixed_panel_is_fitted_to_its_curves() {
             .map(|p| p.1)
             .collect();
         // The ink's top: the curves' and the letters'.
-        let tops = (svg.match_indices("id=\"label-fixed-"))
-            .map(|(i, _)| {
-                let s = &svg[i + 4..];
-                letter_box(&svg, &s[..s.find('"').unwrap()]).2
-            });
+        let tops = (svg.match_indices("id=\"label-fixed-")).map(|(i, _)| {
+            let s = &svg[i + 4..];
+            letter_box(&svg, &s[..s.find('"').unwrap()]).2
+        });
         let top = ys.iter().copied().chain(tops).fold(f64::MAX, f64::min);
         let bottom = ys.iter().copied().fold(f64::MIN, f64::max);
         let text = num(&svg, "fixed-bar-text", "y") - num(&svg, "fixed-bar-text", "font-size");
         if top - 16.0 > 51.0 {
-            wrong.push(format!("{case}: {:.0} units above (a)'s curves", top - 16.0));
+            wrong.push(format!(
+                "{case}: {:.0} units above (a)'s curves",
+                top - 16.0
+            ));
         }
         if text - bottom > 51.0 {
-            wrong.push(format!("{case}: {:.0} units between (a)'s curves and its bar", text - bottom));
+            wrong.push(format!(
+                "{case}: {:.0} units between (a)'s curves and its bar",
+                text - bottom
+            ));
         }
     }
     assert!(wrong.is_empty(), "{}", wrong.join("\n"));
@@ -2574,7 +2588,11 @@ fn note_text(svg: &str) -> String {
         lines.push(text_content(svg, &format!("note-diagram-{k}")));
         k += 1;
     }
-    lines.join(" ").split_whitespace().collect::<Vec<_>>().join(" ")
+    lines
+        .join(" ")
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
 }
 
 #[test]
@@ -2584,12 +2602,19 @@ fn the_crank_pin_loads_notes_speak_in_short_plain_sentences() {
     // drawing's"), and said nothing of the curve doubling back at the
     // default's 90° in a sliver read as an arrowhead. No sentence of the
     // notes runs past 32 words; the turning point is said.
-    let svg = to_svg(&FigureName::CrankPinLoads.figure(&FigureOptions::default()).unwrap());
+    let svg = to_svg(
+        &FigureName::CrankPinLoads
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
     let notes = note_text(&svg);
     for sentence in notes.split(". ") {
         let words = sentence.split_whitespace().count();
         assert!(words <= 32, "{words} words: {sentence}");
     }
     assert!(!notes.contains("the data’s"), "{notes}");
-    assert!(notes.contains("turning point of the load, not an arrowhead"), "{notes}");
+    assert!(
+        notes.contains("turning point of the load, not an arrowhead"),
+        "{notes}"
+    );
 }

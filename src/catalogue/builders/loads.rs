@@ -229,7 +229,16 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     // its first taken off (as a plot takes them off its area).
     let (wide, high) = (size.x + 2.0 * pad, size.y + 2.0 * pad);
     let extras = [false, true].map(|relative| {
-        caption_extra(ctx, &panel_caption(relative, View::Whole { detail: detail_size }), half)
+        caption_extra(
+            ctx,
+            &panel_caption(
+                relative,
+                View::Whole {
+                    detail: detail_size,
+                },
+            ),
+            half,
+        )
     });
     let lines = extras.iter().flatten().copied().fold(0.0, f64::max);
     let room = tall - crate::diagram::CAPTION - lines - BAR_ROOM;
@@ -627,8 +636,8 @@ fn caption_extra(ctx: &Ctx, caption: &str, width: f64) -> Result<f64> {
     let tall = 1000.0;
     let probe = Frame::new(Point::origin(), Point::new(1.0, 1.0));
     let rect = PageRect::new(0.0, 0.0, width, tall);
-    let plot = Plot::world("probe", rect, &probe, false, ctx.tolerance, ctx.font)?
-        .with_caption(caption);
+    let plot =
+        Plot::world("probe", rect, &probe, false, ctx.tolerance, ctx.font)?.with_caption(caption);
     Ok((tall - crate::diagram::CAPTION - plot.area().height).max(0.0))
 }
 
