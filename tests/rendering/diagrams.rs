@@ -1771,7 +1771,7 @@ fn the_crank_pin_loads_of_a_rod_given_are_its_newton_euler_loads() {
         .collect::<Vec<_>>()
         .join(" ");
     assert!(
-        text.contains("the rod 20 slug, its centre of mass 1.5 ft from the crank pin, radius of gyration 1 ft; the gas force"),
+        text.contains("The rod: 20 slug, its centre of mass 1.5 ft from the crank pin, its radius of gyration 1 ft. The gas force"),
         "{text}"
     );
     // A massless rod given is the dashed curve's (the dashed one runs on

@@ -34,9 +34,18 @@ const FAR_RINGS: [f64; 8] = [12.0, 17.0, 22.0, 28.0, 34.0, 40.0, 46.0, 51.0];
 /// A direction's component below this is along an axis.
 const ALONG: f64 = 1e-9;
 
-/// How far short of its dot a leader stops, page units: clear of the
-/// dot (2.1) by a unit and a half.
+/// How far short of its dot a leader is taken to stop when its place is
+/// chosen, page units: clear of the dot (2.1) by a unit and a half, the
+/// room every rule of a leader measures.
 const LEADER_SHORT: f64 = 3.6;
+
+/// How far short of its dot's centre a leader is drawn to, page units:
+/// the dot's radius, so that the leader ends on its dot. Drawn to
+/// [`LEADER_SHORT`], at a small scale it ended on the curves about the
+/// dot, on no dot of its own ("270°′" on the *x* axis in (a) at the
+/// default engine, "0°′" on the wedge's line at r = 1, l = 1.05 r on 500
+/// units: the fifteenth review).
+const LEADER_END: f64 = 2.1;
 
 /// Where a text set at a fixed place has its place: the middle of its
 /// letters, this many ems above its baseline ([`Shape::Text`]).
@@ -341,7 +350,7 @@ impl Letters {
     /// which dot is named), then whose leader crosses the fewest lines of
     /// the curves, then keeping [`LINE_ROOM`] and clear of the leaders,
     /// then on the nearest ring, then with the most room, and a
-    /// leader from its box to [`LEADER_SHORT`] short of the dot: the
+    /// leader from its box drawn on to its dot ([`LEADER_END`]): the
     /// text `id` and the leader `leader_id`, and whether even that place
     /// misleads ([`Led::misleads`]); `None` where no place within three
     /// ems is clear. The box is recorded for the letters after it.
@@ -384,6 +393,14 @@ impl Letters {
         self.boxes.push(b);
         let (a, end) = self.leader(b, from);
         self.leaders.push((a, end));
+        // Drawn on to its dot, the last unit and a half along the same
+        // line.
+        let on = LEADER_END / self.scale;
+        let end = if (from - a).norm() > on {
+            from - (from - a) * (on / (from - a).norm())
+        } else {
+            end
+        };
         Some(Led {
             items: [
                 self.text(b, text, id),

@@ -82,10 +82,12 @@ const CROWDED: usize = 2;
 /// knot a detail enlarges wherever it stands ([`knots`]).
 const KNOT: usize = 3;
 
-/// Lettered marks nearer each other than this, page units, are in one
-/// knot: an em and a fifth, where three letters beside three dots
-/// cannot each stand nearer its own.
-const KNOT_REACH: f64 = 20.0;
+/// Lettered marks (the pole among them) nearer each other than this,
+/// page units, are in one knot: two ems, where three letters beside
+/// three dots on crossing curves cannot each stand nearer its own (an em
+/// and a fifth left the default engine's (a) without a detail, its
+/// letters led across the curves about the pole: the fifteenth review).
+const KNOT_REACH: f64 = CROWD;
 
 /// A lettered mark this near the pole, page units, stands on its ×
 /// (a dot's diameter): the pole is crowded by it and by the lettered
@@ -222,26 +224,54 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         kinks: &kinks,
         cycle,
     });
+    // One scale for both panels: the width's, or on a low page the
+    // height's with the bar's band and the longer caption's lines after
+    // its first taken off (as a plot takes them off its area).
+    let (wide, high) = (size.x + 2.0 * pad, size.y + 2.0 * pad);
+    let extras = [false, true].map(|relative| {
+        caption_extra(
+            ctx,
+            &panel_caption(
+                relative,
+                View::Whole {
+                    detail: detail_size,
+                },
+            ),
+            half,
+        )
+    });
+    let lines = extras.iter().flatten().copied().fold(0.0, f64::max);
+    let room = tall - crate::diagram::CAPTION - lines - BAR_ROOM;
+    let scale = (half / wide).min(room.max(1.0) / high);
+    let mut ends = [0.0; 2];
+    let mut y = 16.0;
     let panels = [false, true].into_iter().zip(boxes).zip(&curves);
     for (k, ((relative, (lo, hi)), drawn)) in panels.enumerate() {
-        let rect = if stacked {
-            PageRect::new(16.0, 16.0 + k as f64 * (tall + 16.0), half, tall)
-        } else {
-            PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, tall)
-        };
-        let centre = Point::new(0.5 * (lo.x + hi.x), 0.5 * (lo.y + hi.y));
-        let reach = 0.5 * size + Vector::new(pad, pad);
-        // Room below for the bar, at the panel's scale: the scale the fit
-        // will take, the width's or, on a low page, the height's with the
-        // bar's band taken off.
-        let (wide, high) = (size.x + 2.0 * pad, size.y + 2.0 * pad);
-        let scale = (half / wide).min((tall - crate::diagram::CAPTION - BAR_ROOM).max(1.0) / high);
-        let below = BAR_ROOM / scale;
-        // The bar below the curves, clear of every dot.
-        let world = Frame::new(centre - reach - Vector::new(0.0, below), centre + reach);
         let view = View::Whole {
             detail: detail_size,
         };
+        // Each panel as high as its own curves (and, in (a), the bar
+        // below them): a flat (a) drawn in a world as high as (b)'s
+        // stood between wide empty bands (the fifteenth review).
+        let below = if relative { 0.0 } else { BAR_ROOM / scale };
+        let middle = 0.5 * (lo.x + hi.x);
+        let room = pad.max(LETTER_ROOM / scale);
+        let world = Frame::new(
+            Point::new(middle - 0.5 * wide, lo.y - room - below),
+            Point::new(middle + 0.5 * wide, hi.y + room),
+        );
+        let extra = caption_extra(ctx, &panel_caption(relative, view), half)?;
+        let area = ((world.max().y - world.min().y) * scale).max(LEAST_AREA);
+        let height = area + crate::diagram::CAPTION + extra;
+        let rect = if stacked {
+            PageRect::new(16.0, y, half, height)
+        } else {
+            PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, height)
+        };
+        y += height + 16.0;
+        if let Some(end) = ends.get_mut(k) {
+            *end = rect.y + height;
+        }
         let (mut plot, window) = polar_plot(ctx, drawn, relative, rect, (&world, below), view)?;
         if !relative {
             bar = bar_length(largest_load(&samples), plot.map().scale());
@@ -252,9 +282,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         }
         sheet.plot(plot);
     }
-    let panels_end = 16.0 + rows * tall + (rows - 1.0) * 16.0;
-    let layout = (stacked, half, panels_end);
-    let details_end = details(ctx, &mut sheet, &curves, &windows, layout, detail_size)?;
+    let layout = (stacked, half, ends);
+    let end = details(ctx, &mut sheet, &curves, &windows, layout, detail_size)?;
     let [fixed, _] = &samples;
     let largest = [0, 1].map(|i| {
         fixed
@@ -279,7 +308,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             })).collect::<Vec<_>>(),
         }),
     );
-    let top = details_end.unwrap_or(panels_end) + 8.0;
+    let top = end + 8.0;
     sheet.height(top + NOTES + 16.0);
     sheet.notes(Point::new(20.0, top), &notes(ctx, &rod, largest, bar));
     Ok(sheet.finish())
@@ -476,8 +505,15 @@ fn window(taken: &[Mark], scale: f64, size: (f64, f64)) -> Option<Window> {
     };
     // A knot elsewhere only where the pole is not crowded: the pole's
     // detail is sized for the pole (r = 1, l = 1.05 r).
+    // The pole's letter is one of a knot's: at the default engine in (a)
+    // "O", "270°′" and "0°" on the *x* axis, 25 and 27 units apart, their
+    // leaders across the dotted jump and a dashed strand (the fifteenth
+    // review).
     let knots = if pole.is_empty() {
-        knots(&lettered, scale)
+        let with_pole: Vec<Point> = (lettered.iter().copied())
+            .chain([Point::origin()])
+            .collect();
+        knots(&with_pole, scale)
     } else {
         Vec::new()
     };
@@ -541,28 +577,30 @@ fn knots(lettered: &[Point], scale: f64) -> Vec<Point> {
 }
 
 /// The details of the panels' `windows` (each its panel's number, whether
-/// relative, and its window), drawn below the panels
-/// ending at `panels_end`: each under its panel, side by side under
-/// stacked ones, `size` on the page; where the last ends (page units),
-/// `None` with none.
+/// relative, and its window), `size` on the page: side by side, each
+/// under its own panel (ending at `ends`, page units), where a flat (a)
+/// leaves its column's room under it; under both stacked panels, side by
+/// side. Where the figure's last panel or detail ends, page units.
 fn details(
     ctx: &Ctx,
     sheet: &mut Sheet,
     curves: &[Curves; 2],
     windows: &[(usize, bool, Window)],
-    (stacked, half, panels_end): (bool, f64, f64),
+    (stacked, half, ends): (bool, f64, [f64; 2]),
     size: (f64, f64),
-) -> Result<Option<f64>> {
-    let top = panels_end + DETAIL_GAP;
+) -> Result<f64> {
+    let last = ends.iter().copied().fold(0.0, f64::max);
+    let mut end = last;
     for &(k, relative, w) in windows {
         let Some(&panel) = curves.get(k) else {
             continue;
         };
-        let (slot, x) = if stacked {
+        let (slot, x, top) = if stacked {
             let slot = 0.5 * (half - 16.0);
-            (slot, 16.0 + k as f64 * (slot + 16.0))
+            (slot, 16.0 + k as f64 * (slot + 16.0), last + DETAIL_GAP)
         } else {
-            (half, 16.0 + k as f64 * (half + 16.0))
+            let under = ends.get(k).copied().unwrap_or(last);
+            (half, 16.0 + k as f64 * (half + 16.0), under + DETAIL_GAP)
         };
         let rect = PageRect::new(x + 0.5 * (slot - size.0), top, size.0, size.1);
         // Sampled as finely on the page as the panel's curves, which
@@ -576,8 +614,51 @@ fn details(
         let view = View::Detail(w);
         let (plot, _) = polar_plot(ctx, &curves, relative, rect, (&w.region, 0.0), view)?;
         sheet.detail(plot);
+        end = end.max(top + size.1);
     }
-    Ok((!windows.is_empty()).then_some(top + size.1))
+    Ok(end)
+}
+
+/// The least room, page units, above and below a panel's curves: for
+/// the letters of the dots on its edges, set out to three ems
+/// ([`super::load_letters`]).
+const LETTER_ROOM: f64 = 45.0;
+
+/// The least height, page units, of a panel's plot area: a plot's least
+/// (40) and a unit more.
+const LEAST_AREA: f64 = 41.0;
+
+/// How much higher than one line, page units, the caption `caption` of a
+/// panel `width` wide stands: its lines after the first, which a plot
+/// takes off its area (and so off its scale) unless its rectangle has
+/// room for them.
+fn caption_extra(ctx: &Ctx, caption: &str, width: f64) -> Result<f64> {
+    let tall = 1000.0;
+    let probe = Frame::new(Point::origin(), Point::new(1.0, 1.0));
+    let rect = PageRect::new(0.0, 0.0, width, tall);
+    let plot =
+        Plot::world("probe", rect, &probe, false, ctx.tolerance, ctx.font)?.with_caption(caption);
+    Ok((tall - crate::diagram::CAPTION - plot.area().height).max(0.0))
+}
+
+/// The caption of a panel showing `view` (of the panel relative to the
+/// crank where `relative`).
+fn panel_caption(relative: bool, view: View) -> String {
+    match view {
+        View::Detail(w) => format!(
+            "({}′) The boxed region of ({}){} enlarged ×{}",
+            if relative { "b" } else { "a" },
+            if relative { "b" } else { "a" },
+            if w.region.contains(Point::origin()) {
+                " about the pole"
+            } else {
+                ""
+            },
+            short(w.magnification)
+        ),
+        View::Whole { .. } if relative => "(b) Relative to the crank: along it outwards (→) and across it in the sense of rotation (↑)".to_string(),
+        View::Whole { .. } => "(a) In fixed axes, *x* from the crank centre towards the slider: the load on the crank pin, which a massless crank passes to the main bearing".to_string(),
+    }
 }
 
 /// One panel showing `world`: the two polar curves, the pole, and the
@@ -604,21 +685,7 @@ fn polar_plot(
         View::Whole { .. } => base.to_string(),
         View::Detail(_) => format!("detail-{base}"),
     };
-    let caption = match view {
-        View::Detail(w) => format!(
-            "({}′) The boxed region of ({}){} enlarged ×{}",
-            if relative { "b" } else { "a" },
-            if relative { "b" } else { "a" },
-            if w.region.contains(Point::origin()) {
-                " about the pole"
-            } else {
-                ""
-            },
-            short(w.magnification)
-        ),
-        View::Whole { .. } if relative => "(b) Relative to the crank: along it outwards (→) and across it in the sense of rotation (↑)".to_string(),
-        View::Whole { .. } => "(a) In fixed axes, *x* from the crank centre towards the slider: the load on the crank pin, which a massless crank passes to the main bearing".to_string(),
-    };
+    let caption = panel_caption(relative, view);
     let mut plot =
         Plot::world(&name, rect, world, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
     // The full curve's jumps, which the dashed curve's keep off.
@@ -1050,14 +1117,16 @@ fn mark_letter(
     (vec![label], true)
 }
 
-/// The notes: the engine and its rod, the largest loads.
+/// The notes, in short sentences: the engine and its rod, how the
+/// curves are read, the largest loads, and the shapes a reader might take
+/// for faults ([`SHAPES`]).
 fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
     let m = ctx.mechanism;
     let (u, f, mass_u) = (ctx.unit(), ctx.units.force(), ctx.units.mass());
     let r = rod.rod();
     vec![
         format!(
-            "*r* = {} {u}, *l* = {} {u}{}, {} rpm; reciprocating mass {} {mass_u}; the rod {} {mass_u}, its centre of mass {} {u} from the crank pin, radius of gyration {} {u}{}; the gas force as the turning-moment figure’s{}. The full curves are the load with the rod’s inertia, the dashed ones without it (a massless rod). The pole *O* is marked ×; each curve’s load at 0°, 90°, 180°, 270° by a lettered dot, the dashed curve’s angles primed (90°′), quarters at one place by one dot lettered with both; every other 30° by a dot where it stands clear of the rest (where a curve lingers, as about the pole, a dot is left out); both panels to one scale, the bar {} {f}; where the gas force jumps (at the dead centres) the load jumps, a dotted line.",
+            "*r* = {} {u}, *l* = {} {u}{}, {} rpm. Reciprocating mass {} {mass_u}. The rod: {} {mass_u}, its centre of mass {} {u} from the crank pin, its radius of gyration {} {u}{}. The gas force is the turning-moment figure’s{}.",
             short(m.crank()),
             short(m.rod()),
             ctx.offset_clause(),
@@ -1068,10 +1137,13 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             short(r.map_or(0.0, RodMass::gyration)),
             rod_said(ctx),
             super::turning::guides_note(ctx),
+        ),
+        format!(
+            "Full curves: the load with the rod’s inertia. Dashed curves: without it (a massless rod). The pole *O* is marked ×. A lettered dot marks each curve’s load at 0°, 90°, 180° and 270°; the dashed curve’s angles are primed (90°′). Two quarters at one place share one dot. Plain dots mark every other 30° where they stand clear; near the pole some are left out. Both panels are drawn to one scale: the bar is {} {f}. Where the gas force jumps, at a dead centre, a dotted line joins the curve across the jump.",
             short(bar),
         ),
         format!(
-            "Largest load on the crank pin over the cycle: {} {f} with the rod’s inertia, {} {f} without it (Newton–Euler on the slider and on the rod as a rigid body).",
+            "Largest load on the crank pin over the cycle: {} {f} with the rod’s inertia, {} {f} without it. Both are found by Newton–Euler on the slider and on the rod as a rigid body.",
             short(largest[0]),
             short(largest[1]),
         ),
@@ -1085,7 +1157,10 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
 /// again (at the default, the full curve's *x* component turns back from
 /// −5664 lbf at 62°, by the cut-off, to −4809 lbf at 82° and out to
 /// −5412 lbf at 110°, as the analysis of the default engine at those
-/// angles prints), and the dashed curve flat on the axis at long rods (a
+/// angles prints); a sharp point where a curve doubles back on itself,
+/// the load's own turning point (at the default the full curve in (a)
+/// turns back by its 90° dot in a sliver the fifteenth review read as an
+/// arrowhead); the dashed curve flat on the axis at long rods (a
 /// massless rod's force lies along the rod, within φ of the line of
 /// stroke); and the corners of the curves where the gas force is an
 /// indicator diagram's: its pressures are joined by straight lines
@@ -1093,4 +1168,4 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
 /// load turns a corner at each (the twelfth review took the small
 /// loops' corners for chords of too coarse a tracing; with a constant
 /// gas force the same loops are smooth).
-const SHAPES: &str = "Where the load turns back and out again (after the cut-off) a curve makes a small loop, the load’s own; with a long rod the dashed curve in (a) lies almost flat along the *x* axis, for a massless rod’s load lies along the rod, within φ of the line of stroke. Where the gas force is an indicator diagram’s, its pressure runs straight between the diagram’s rows and the curves turn a corner at each, the data’s, not the drawing’s.";
+const SHAPES: &str = "A small loop is the load turning back and out again, after the cut-off. A sharp point where a curve doubles back is a turning point of the load, not an arrowhead. With a long rod the dashed curve in (a) lies almost flat on the *x* axis: a massless rod’s load lies along the rod, within φ of the line of stroke. With an indicator diagram the pressure runs straight between the diagram’s rows, so the curves turn a small corner at each row.";
