@@ -19,7 +19,9 @@ use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{BEARING_FOOT, Figure, Foot, Item, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Intersection, Point, Vector, inside_outline, unit};
+use crate::geom::{
+    Frame, Intersection, Point, Vector, inside_outline, point_segment_distance, unit,
+};
 use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -111,6 +113,10 @@ struct Parts {
     /// The line of stroke's direction (+x in the engine) and its normal.
     u: Vector,
     v: Vector,
+    /// Where d's leg is set beside the line C T (a crank lying along the
+    /// leg would hide it, [`leg_jog`]): the leg's shift along the stroke,
+    /// zero where it lies on that line.
+    jog: Vector,
 }
 
 /// Lengths along the stroke: the slot's near and far ends of travel.
@@ -134,6 +140,46 @@ fn parts(m: &SliderCrank, p: &InversionPose) -> Parts {
         f: p.place(Point::new(far + lh + 0.15 * m.crank(), e)),
         u: p.turn(Vector::new(1.0, 0.0)),
         v: p.turn(Vector::new(0.0, 1.0)),
+        jog: Vector::zeros(),
+    }
+}
+
+/// The leg shorter than this many half widths of d's bar keeps to the
+/// line C T: a stub the crank's pin covers, no run of it hidden.
+const LEG_JOG: f64 = 3.0;
+
+/// The shift along the stroke (towards the arm) of d's leg for an engine
+/// whose leg is long enough to hide under the crank ([`LEG_JOG`]): at the
+/// pose where the crank lies along the leg (θ near 90° or 270° with the
+/// offset's sign) the crank covered it, and d read as welded to the crank
+/// or the crank as d's slot (inversion 4 at l = 2.45 r, e = −0.745 r,
+/// 270.12°; inversion 2 at l = 2.91 r, e = −1.57 r, 269.8°). The leg is
+/// set beside the line C T, `across` half widths `w` off it, and joined
+/// to C by an eye (the bar) or a jog (the plunger), at every pose, one
+/// shape, as a rigid link is drawn; its inner side then stands `w` off
+/// the crank's line where the two lie together. None where the block at
+/// its near end of travel (half length `lh`) would leave the arm so set
+/// back, nor with no offset.
+fn leg_jog(m: &SliderCrank, q: &Parts, (lh, w): (f64, f64), across: f64) -> Vector {
+    let leg = (q.t - q.c).norm();
+    let (near, _) = ends(m);
+    let shift = across * w;
+    if !(w > 0.0) || leg < LEG_JOG * w || near - lh < shift - w {
+        return Vector::zeros();
+    }
+    q.u * shift
+}
+
+/// How far d's leg is set off the line C T where it is ([`leg_jog`]), in
+/// d's half widths: the slotted bar (inversions 2 and 3) by twice its half
+/// width, its inner side a half width off the crank's line; the hand
+/// pump's plunger, a line, by the barrel's half height; none where d is
+/// the fixed frame.
+fn jog_across(fixed: Link) -> f64 {
+    match fixed {
+        Link::A | Link::B => 2.0,
+        Link::C => 1.0,
+        Link::D => 0.0,
     }
 }
 
@@ -653,7 +699,8 @@ pub(super) fn slot_half_width(m: &SliderCrank, scale: f64) -> f64 {
 /// frame's bar to its far end, the block and the driven pin's path.
 pub(super) fn links_frame(m: &SliderCrank, pose: &InversionPose) -> Frame {
     let (lh, hh) = block_size(m);
-    let q = parts(m, pose);
+    let mut q = parts(m, pose);
+    q.jog = leg_jog(m, &q, (lh, hh), jog_across(pose.inversion().fixed()));
     let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
     if matches!(pose.inversion(), Inversion::Crank | Inversion::Rod) {
@@ -815,13 +862,27 @@ fn band(q: &Parts, w: f64) -> Vec<Point> {
     }
     let g = leg / leg.norm();
     let s = c - g * w;
+    if q.jog.norm() == 0.0 {
+        return vec![
+            s - u * w,
+            t + g * w - u * w,
+            f + g * w,
+            f - g * w,
+            t - g * w + u * w,
+            s + u * w,
+        ];
+    }
+    // The leg beside C T, joined to C by an eye about the pin.
+    let j = q.jog;
     vec![
         s - u * w,
-        t + g * w - u * w,
+        c + g * w - u * w,
+        c + j + g * w - u * w,
+        t + j + g * w - u * w,
         f + g * w,
         f - g * w,
-        t - g * w + u * w,
-        s + u * w,
+        t + j - g * w + u * w,
+        s + j + u * w,
     ]
 }
 
@@ -840,6 +901,10 @@ fn dots(centres: &ChainCentres) -> Vec<Point> {
 /// units: a dot's radius and a stroke's width, so that it reads apart.
 const DOT_CLEAR: f64 = 5.0;
 
+/// A centre within this of a link's line, page units (a link's half
+/// width and its rim of paper), is drawn over the links.
+const ON_LINK: f64 = 4.0;
+
 /// Lines filling the slotted bar of [`band`] (`w` its half width): its
 /// middle line and the lines halfway to its sides, along its leg and its
 /// arm. A stroke of hatching that starts inside the bar meets one of
@@ -848,7 +913,7 @@ const DOT_CLEAR: f64 = 5.0;
 /// at l = 54.1 r, 90° inversion 3's rod b, running inside d's bar, was
 /// hatched inside it and the moving bar read as fixed.
 fn band_fill(q: &Parts, w: f64) -> Vec<Seg> {
-    let (c, t, f, u) = (q.c, q.t, q.f, q.u);
+    let (c, t, f, u, j) = (q.c, q.t, q.f, q.u, q.jog);
     let leg = t - c;
     let shares = [-0.5, 0.0, 0.5];
     if leg.norm() == 0.0 {
@@ -857,15 +922,20 @@ fn band_fill(q: &Parts, w: f64) -> Vec<Seg> {
     }
     let g = leg / leg.norm();
     let s = c - g * w;
-    (shares.iter())
+    let mut fill: Vec<Seg> = (shares.iter())
         .flat_map(|k| {
             let (across_leg, across_arm) = (u * (k * w), g * (k * w));
             [
-                (s + across_leg, t + across_leg + g * w),
-                (t - u * w + across_arm, f + across_arm),
+                (s + j + across_leg, t + j + across_leg + g * w),
+                (t + j - u * w + across_arm, f + across_arm),
             ]
         })
-        .collect()
+        .collect();
+    if j.norm() > 0.0 {
+        // Across the eye about C.
+        fill.extend(shares.map(|k| (c - u * w + g * (k * w), c + j + u * w + g * (k * w))));
+    }
+    fill
 }
 
 /// The middle of `p` and `q`.
@@ -901,9 +971,10 @@ impl Drawing {
     /// The drawing of the chain `m` at `pose` on `canvas`, its block
     /// `block` (half length, half height) as drawn.
     fn new(m: SliderCrank, pose: &InversionPose, canvas: Canvas, block: (f64, f64)) -> Self {
-        let q = parts(&m, pose);
+        let mut q = parts(&m, pose);
         let fixed = pose.inversion().fixed();
         let block = barrel(block, fixed, canvas.transform().scale());
+        q.jog = leg_jog(&m, &q, block, jog_across(fixed));
         Drawing {
             s: canvas,
             m,
@@ -1141,6 +1212,8 @@ impl Drawing {
         let q = &self.q;
         if self.m.offset() == 0.0 {
             vec![q.c, q.f]
+        } else if q.jog.norm() > 0.0 {
+            vec![q.c, q.c + q.jog, q.t + q.jog, q.f]
         } else {
             vec![q.c, q.t, q.f]
         }
@@ -1342,7 +1415,7 @@ impl Drawing {
                 let leg = if self.m.offset() == 0.0 {
                     self.q.f
                 } else {
-                    self.q.t
+                    self.q.t + self.q.jog
                 };
                 let foot = self
                     .shown_foot(c, 0)
@@ -1688,10 +1761,15 @@ impl Drawing {
                 );
             }
             _ => {
-                // A centre in d's body (O_ac where b crosses d's leg) is
-                // drawn over it: under it, the tone and b's rim hid it.
+                // A centre in d's body (O_ac where b crosses d's leg) or
+                // on a moving link (O_ac on b beside the leg set off C T)
+                // is drawn over them: under them, the tone and b's rim hid
+                // it.
                 let in_body = self.slotted() && inside_outline(&band(&self.q, self.block.1), p);
-                let marker = if in_body {
+                let on_link = [(self.q.c, self.q.b), (self.q.b, self.q.a)]
+                    .into_iter()
+                    .any(|(x, y)| point_segment_distance(p, x, y) <= self.s.world(ON_LINK));
+                let marker = if in_body || on_link {
                     Marker::DotOver
                 } else {
                     Marker::Dot
