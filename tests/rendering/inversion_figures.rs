@@ -761,13 +761,24 @@ fn a_centre_lying_in_d_s_body_is_drawn_over_it_and_the_links() {
     // (inversion 2 at l = 2.91 r, e = −1.57 r and l = 1.92 r,
     // e = 0.671 r, inversion 3 at l = 1.65 r, e = 0.402 r, all at 180°).
     // A dot in d's outline comes after d and the links in the drawing.
-    for (name, rod, offset) in [(I2, 2.91, -1.57), (I2, 1.92, 0.671), (I3, 1.65, 0.402)] {
+    // Where d's leg stands beside the line C T, O_ac lies on b beside it
+    // and is drawn over b likewise (inversion 4 at l = 3.4 r, e = 1.58 r
+    // and l = 2.45 r, e = −0.745 r, 180°: its dot was hidden under b).
+    for (name, rod, offset) in [
+        (I2, 2.91, -1.57),
+        (I2, 1.92, 0.671),
+        (I3, 1.65, 0.402),
+        (I4, 3.4, 1.58),
+        (I4, 2.45, -0.745),
+    ] {
         let svg = svg(name, rod, offset, 180.0);
         let at = format!("{name:?} l = {rod}, e = {offset}, 180°");
         let dot = pin_at(&svg, "point-O-ac").unwrap_or_else(|| panic!("{at}: no O_ac dot"));
+        let rod = path(&svg, "link-rod");
         assert!(
-            within(&path(&svg, "link-frame"), dot),
-            "{at}: O_ac not in d's body"
+            within(&path(&svg, "link-frame"), dot)
+                || crate::common::segment_distance(dot, rod[0], rod[1]) <= 1.0,
+            "{at}: O_ac neither in d's body nor on b"
         );
         let order = |id: &str| svg.find(&format!("id=\"{id}\""));
         let drawn = order("point-O-ac").unwrap();
@@ -776,5 +787,58 @@ fn a_centre_lying_in_d_s_body_is_drawn_over_it_and_the_links() {
                 assert!(at_link < drawn, "{at}: O_ac's dot drawn under {link}");
             }
         }
+    }
+}
+
+#[test]
+fn d_s_leg_stands_beside_a_crank_lying_along_it() {
+    // The fifteenth review (2 to 3.5): where the crank lay along d's leg
+    // (θ near 90° or 270° with the offset's sign) it hid the leg, and d
+    // read as welded to the crank (inversion 4 at l = 2.45 r,
+    // e = −0.745 r, 270.12°), O_ab as pinned partway along d (l = 3.4 r,
+    // e = 1.58 r, 90.73°), or the crank as d's slot (inversion 2 at
+    // l = 2.91 r, e = −1.57 r, 269.8° and l = 1.92 r, e = 0.671 r,
+    // 89.32°; inversion 3 at l = 1.65 r, e = 0.402 r, 90.49°). The leg
+    // stands beside the crank: no more than a third of the crank lies in
+    // d's outline or within 3 units of its line (the eye about C, or the
+    // plunger's jog there, a few units).
+    for (name, rod, offset, deg) in [
+        (I4, 2.45, -0.745, 270.12),
+        (I4, 3.4, 1.58, 90.73),
+        (I2, 2.91, -1.57, 269.8),
+        (I2, 1.92, 0.671, 89.32),
+        (I3, 1.65, 0.402, 90.49),
+        (FigureName::CoriolisInversion3, 2.53, 1.21, 90.61),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
+        let crank = path(&svg, "link-crank");
+        let d = path(&svg, "link-frame");
+        let closed = name != I4;
+        let mut edges: Vec<((f64, f64), (f64, f64))> = d.windows(2).map(|w| (w[0], w[1])).collect();
+        if closed {
+            edges.push((d[d.len() - 1], d[0]));
+        }
+        let (p, q) = (crank[0], crank[1]);
+        let length = ((q.0 - p.0).powi(2) + (q.1 - p.1).powi(2)).sqrt();
+        let n = length.ceil() as usize;
+        let on_d = (0..=n)
+            .map(|k| {
+                let t = k as f64 / n as f64;
+                (p.0 + (q.0 - p.0) * t, p.1 + (q.1 - p.1) * t)
+            })
+            .filter(|&x| {
+                (closed && within(&d, x))
+                    || edges
+                        .iter()
+                        .any(|&(a, b)| crate::common::segment_distance(x, a, b) <= 3.0)
+            })
+            .count();
+        let share = on_d as f64 / (n + 1) as f64;
+        assert!(
+            share <= 1.0 / 3.0,
+            "{at}: {:.0} % of the crank ({length:.0} units) lies on d",
+            100.0 * share
+        );
     }
 }

@@ -1204,10 +1204,10 @@ impl Drawing {
     /// The frame d's bar from C (through the foot T of its leg
     /// perpendicular to the line of stroke, where the stroke is offset):
     /// one shape at every pose, as a rigid link is drawn. A leg bent off
-    /// the crank where the two would lie together (near 90° with an
+    /// the crank only where the two would lie together (near 90° with an
     /// offset near r) was read as d changing its shape from pose to pose
-    /// and put O_ab's letter at the bend; the leg on the crank is the
-    /// pose's truth.
+    /// and put O_ab's letter at the bend; the leg set beside C T at every
+    /// pose ([`leg_jog`]) keeps one shape and shows both links.
     fn bar(&self) -> Vec<Point> {
         let q = &self.q;
         if self.m.offset() == 0.0 {
