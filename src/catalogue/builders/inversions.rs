@@ -947,6 +947,11 @@ fn mid(p: Point, q: Point) -> Point {
 /// lie along each other: their letters take sides ([`Drawing::letter_ways`]).
 const ALONG_LINE: f64 = 0.175;
 
+/// The crank and the rod within this angle of one line (radians, 40°)
+/// but not along it make a wedge at B too narrow for a letter of each:
+/// their letters are tried outside it ([`Drawing::letter_ways`]).
+const WEDGE: f64 = 0.70;
+
 /// How far across the fixed barrel (in its half heights) the normal at
 /// A is kept from its hatching: past both faces and the strokes' depth.
 const BARREL_REACH: f64 = 4.0;
@@ -1321,8 +1326,18 @@ impl Drawing {
         }
         if let Some(at) = self.bar_letter() {
             if !self.slotted() {
-                // The hand pump's plunger, a line: its letter by it.
-                self.s.letter("link-d", at, "*d*", TextSize::Letter);
+                // The hand pump's plunger, a line: its letter by it; where
+                // the crank and the rod lie along it (a dead centre), on
+                // the side away from the rod's letter ("d b" side by side
+                // at l = 1.07 r, 0°).
+                match self.letter_ways() {
+                    (_, Some(rod)) if self.along_line() => {
+                        let d = RichText::parse("*d*");
+                        self.s
+                            .label_toward("label-link-d", at, -rod, d, TextSize::Letter);
+                    }
+                    _ => self.s.letter("link-d", at, "*d*", TextSize::Letter),
+                }
                 return;
             }
             let (way, hh) = (self.bar_letter_side(at), self.block.1);
@@ -1555,19 +1570,42 @@ impl Drawing {
         s.letter("link-c", at, "*c*", TextSize::Letter);
     }
 
+    /// Whether the crank and the rod lie along one line (within
+    /// [`ALONG_LINE`]: a dead centre).
+    fn along_line(&self) -> bool {
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        match (unit(b - c), unit(a - b)) {
+            (Some(crank), Some(rod)) => crank.dot(&rod).abs() >= ALONG_LINE.cos(),
+            _ => false,
+        }
+    }
+
     /// The sides the crank's and the rod's letters are tried on first
     /// where the two lie along one line (within [`ALONG_LINE`], a dead
     /// centre): in inversion 4 on its two sides ("b a" read as one word
     /// at l = 1.05 r, 180°), in inversions 2 and 3 both on the side of
-    /// d's bar away from d's letter ("a d" at l = 1.08 r, 0°); none
+    /// d's bar away from d's letter ("a d" at l = 1.08 r, 0°); where they
+    /// make a narrow wedge at B (within [`WEDGE`]), each outside it; none
     /// elsewhere.
     fn letter_ways(&self) -> (Option<Vector>, Option<Vector>) {
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         let (Some(crank), Some(rod)) = (unit(b - c), unit(a - b)) else {
             return (None, None);
         };
-        if crank.dot(&rod).abs() < ALONG_LINE.cos() {
+        let cos = crank.dot(&rod).abs();
+        if cos < WEDGE.cos() {
             return (None, None);
+        }
+        if cos < ALONG_LINE.cos() {
+            // A narrow wedge at B: each letter outside it, on the side of
+            // its link away from the other link's far pin ("a b" side by
+            // side in the wedge named neither, inversion 3 at l = 1.07 r,
+            // 89.24°).
+            let away = |u: Vector, other: Point, on: Point| {
+                let n = Vector::new(-u.y, u.x);
+                if (other - on).dot(&n) > 0.0 { -n } else { n }
+            };
+            return (Some(away(crank, a, b)), Some(away(rod, c, b)));
         }
         let n = Vector::new(-rod.y, rod.x);
         match self.d_way {
@@ -1618,7 +1656,9 @@ impl Drawing {
         }
         if let Intersection::Point(x) = o_ac {
             produced(&mut self.s, "line-AB-O-ac", a, b, x);
-            self.s.segment("line-C-O-ac", Role::Auxiliary, c, x);
+            if let Some((from, to)) = normal_at_c(c, b, x) {
+                self.s.segment("line-C-O-ac", Role::Auxiliary, from, to);
+            }
         }
     }
 
@@ -1881,6 +1921,18 @@ fn produced_seg(p: Point, q: Point, x: Point) -> Option<Seg> {
     Some((if along > 1.0 { q } else { p }, x))
 }
 
+/// The normal at C to O_ac at `x` as drawn: from C, or where it runs
+/// along the crank C B (within [`ALONG_LINE`]), the crank produced to
+/// `x` (none where `x` lies by the crank): drawn from C beside the crank
+/// it read as a doubled stroke on it (inversion 4 at l = 1.05 r,
+/// 269.11°, O_ac 0.05 r from B).
+fn normal_at_c(c: Point, b: Point, x: Point) -> Option<Seg> {
+    match (unit(x - c), unit(b - c)) {
+        (Some(n), Some(crank)) if n.dot(&crank) >= ALONG_LINE.cos() => produced_seg(c, b, x),
+        _ => Some((c, x)),
+    }
+}
+
 /// Kennedy's lines as [`Drawing::kennedy`] draws them (up to the
 /// centres, not short of the page's edge): CB produced and the normal at
 /// A to O_bd, AB produced and the normal at C to O_ac.
@@ -1893,7 +1945,7 @@ fn kennedy_lines(q: &Parts, centres: &ChainCentres) -> Vec<Seg> {
     }
     if let Some(Intersection::Point(x)) = centres.centre(Link::A, Link::C) {
         lines.extend(produced_seg(a, b, x));
-        lines.push((c, x));
+        lines.extend(normal_at_c(c, b, x));
     }
     lines
 }
