@@ -842,3 +842,62 @@ fn d_s_leg_stands_beside_a_crank_lying_along_it() {
         );
     }
 }
+
+#[test]
+fn at_a_dead_centre_the_hand_pump_s_d_and_b_take_the_line_s_two_sides() {
+    // The fifteenth review (3.5): inversion 4 at l = 1.07 r and 1.05 r, 0°
+    // set "d b" side by side over the one line of the plunger, the crank
+    // and the rod. d's letter stands on the side away from b's.
+    for engine in [(1.07, 0.0, 0.0), (1.05, 0.0, 0.0)] {
+        let svg = svg_at(I4, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{engine:?}");
+        let b = pin_at(&svg, "point-B").unwrap_or_else(|| panic!("{at}: no B"));
+        let a = pin_at(&svg, "point-A").unwrap_or_else(|| panic!("{at}: no A"));
+        let rod = text_centre(&plate, "label-link-b").unwrap_or_else(|| panic!("{at}: no b"));
+        let d = text_centre(&plate, "label-link-d").unwrap_or_else(|| panic!("{at}: no d"));
+        assert!(
+            side(b, a, rod) * side(b, a, d) < 0.0,
+            "{at}: b at {rod:?} and d at {d:?} on one side"
+        );
+    }
+}
+
+#[test]
+fn the_crank_s_letter_stands_outside_a_narrow_wedge_with_the_rod() {
+    // The fifteenth review (2.5): inversion 3 at l = 1.07 r, 89.24° set
+    // "a b" side by side in the narrow wedge between the crank and the
+    // rod at B, naming neither; inversion 4 at l = 1.05 r, 269.11° set
+    // a's letter in the wedge too. The crank's letter stands on the side
+    // of the crank away from A.
+    for (name, engine) in [(I3, (1.07, 0.0, 89.24)), (I4, (1.05, 0.0, 269.11))] {
+        let svg = svg_at(name, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} {engine:?}");
+        let [c, b, a] = ["point-C", "point-B", "point-A"]
+            .map(|id| pin_at(&svg, id).unwrap_or_else(|| panic!("{at}: no {id}")));
+        let letter = text_centre(&plate, "label-link-a").unwrap_or_else(|| panic!("{at}: no a"));
+        assert!(
+            side(c, b, letter) * side(c, b, a) < 0.0,
+            "{at}: a's letter at {letter:?} in the wedge, on A's side of the crank"
+        );
+    }
+}
+
+#[test]
+fn the_normal_at_c_to_o_ac_does_not_run_beside_the_crank() {
+    // The fifteenth review (3.5): inversion 4 at l = 1.05 r, 269.11°, O_ac
+    // 0.05 r from B: the dashed normal at C ran from C beside the crank,
+    // a doubled stroke on it. Where it runs along the crank it is the
+    // crank produced, not a line from C.
+    let svg = svg_at(I4, (1.05, 0.0, 269.11), None);
+    let c = pin_at(&svg, "point-C").expect("C");
+    if crate::common::attr(&svg, "line-C-O-ac", "d").is_some() {
+        let line = path(&svg, "line-C-O-ac");
+        let from_c = line
+            .iter()
+            .map(|p| ((p.0 - c.0).powi(2) + (p.1 - c.1).powi(2)).sqrt())
+            .fold(f64::INFINITY, f64::min);
+        assert!(from_c > 10.0, "the normal at C starts {from_c:.1} units from C");
+    }
+}
