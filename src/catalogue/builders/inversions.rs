@@ -658,7 +658,9 @@ pub(super) fn draw_links(
     follow: Option<Shown>,
 ) -> LinksDrawn {
     let block = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
-    let mut d = Drawing::new(m, pose, canvas, block).showing(follow);
+    let mut d = Drawing::new(m, pose, canvas, block)
+        .showing(follow)
+        .leg_on_line();
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
@@ -699,8 +701,7 @@ pub(super) fn slot_half_width(m: &SliderCrank, scale: f64) -> f64 {
 /// frame's bar to its far end, the block and the driven pin's path.
 pub(super) fn links_frame(m: &SliderCrank, pose: &InversionPose) -> Frame {
     let (lh, hh) = block_size(m);
-    let mut q = parts(m, pose);
-    q.jog = leg_jog(m, &q, (lh, hh), jog_across(pose.inversion().fixed()));
+    let q = parts(m, pose);
     let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
     if matches!(pose.inversion(), Inversion::Crank | Inversion::Rod) {
@@ -1000,6 +1001,16 @@ impl Drawing {
             normal: Vector::zeros(),
             d_way: None,
         }
+    }
+
+    /// The same drawing with d's leg on the line C T ([`leg_jog`] not
+    /// applied): for the Coriolis figures' mechanism, whose driver's arc
+    /// about B keeps clear of d's arm and its line C T, not of a leg set
+    /// beside it (the arc ran along such a leg at l = 4 r, e = −2.4 r,
+    /// 340°).
+    fn leg_on_line(mut self) -> Self {
+        self.q.jog = Vector::zeros();
+        self
     }
 
     /// The same drawing showing the fixed link as `shown` says.
