@@ -903,3 +903,24 @@ fn the_normal_at_c_to_o_ac_does_not_run_beside_the_crank() {
         );
     }
 }
+
+#[test]
+fn the_hand_pump_s_page_is_fitted_to_its_drawing() {
+    // The fifteenth review (4): inversion 4's default filled only the left
+    // two thirds of its page, the turn's world set as its view (d ran from
+    // 136 to 553 on a page 760 wide). Its page is fitted to what is drawn
+    // at the pose, as inversions 2 and 3 are: d's bar, which runs from C
+    // past the barrel, leaves at most 15 % of the page's width each side.
+    let svg = svg_at(I4, (3.0, 0.0, 60.0), None);
+    let width: f64 = crate::common::attr(&svg, "paper", "width")
+        .and_then(|w| w.parse().ok())
+        .expect("the paper's width");
+    let d = path(&svg, "link-frame");
+    let (left, right) = (d.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+        (lo.min(p.0), hi.max(p.0))
+    });
+    assert!(
+        left <= 0.15 * width && width - right <= 0.15 * width,
+        "d from {left:.0} to {right:.0} on a page {width:.0} wide"
+    );
+}

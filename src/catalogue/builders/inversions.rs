@@ -239,14 +239,15 @@ fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
 
 /// The page, the panel's rectangle and the world it shows: the world of
 /// every place the chain reaches over a turn sets the scale (so that it
-/// does not change with θ), and it is what the panel shows, except in
-/// Inversions 2 and 3, whose panel shows, at that scale, what is
+/// does not change with θ), and it is what the panel shows in inversion
+/// 1; inversions 2, 3 and 4 show, at that scale, what is
 /// drawn at this pose (the links, the block, the path and the centres
 /// within the turn's world), on the figure's own page narrowed to it, at
 /// least [`crate::scene::LEAST_FITTED_WIDTH`] wide (their bar d sweeps a
 /// disc about C or B over a turn: drawn at one pose inversion 2 left the
 /// top 200 and the left 450 units of its page empty, inversion 3 at
-/// l = 1.65 r, e = 0.582 r the right 40 % of its 1520).
+/// l = 1.65 r, e = 0.582 r the right 40 % of its 1520; inversion 4's
+/// default, its handle swinging through an arc, the right third).
 fn layout(
     ctx: &Ctx,
     chain: &InvertedChain,
@@ -256,8 +257,8 @@ fn layout(
     let turn = padded(extent(m, chain), 0.1);
     let page = ctx.page();
     let full = super::fitted_rect(&page, &turn, NOTES_HEIGHT);
-    if !matches!(chain.inversion(), Inversion::Crank | Inversion::Rod) {
-        // The other two fill their turn's world at every pose.
+    if chain.inversion() == Inversion::Frame {
+        // Inversion 1 fills its turn's world at every pose.
         return Ok((page, full, turn));
     }
     let size = turn.max() - turn.min();
@@ -282,6 +283,28 @@ fn layout(
     Ok((page, rect, world))
 }
 
+/// The handle's swing in inversion 4: B's arc about A of radius l between
+/// its extremes, as [`Drawing::path`] draws it ((start, sweep) from
+/// [`swing_angles`]), sampled every few degrees.
+fn swing(m: &SliderCrank, a: Point) -> Vec<Point> {
+    let (start, sweep) = swing_angles(m);
+    (0..=32)
+        .map(|k| {
+            let t = start + sweep * f64::from(k) / 32.0;
+            a + Vector::new(t.cos(), t.sin()) * m.rod()
+        })
+        .collect()
+}
+
+/// The start and sweep (radians) of the handle's swing about A: B − A =
+/// l(−cos φ, sin φ), φ between its extremes.
+fn swing_angles(m: &SliderCrank) -> (f64, f64) {
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let top = ((r - e) / l).clamp(-1.0, 1.0).asin();
+    let bottom = ((-r - e) / l).clamp(-1.0, 1.0).asin();
+    (std::f64::consts::PI - top, top - bottom)
+}
+
 /// `frame` grown on every side by `share` of its larger side.
 fn padded(frame: Frame, share: f64) -> Frame {
     let size = frame.max() - frame.min();
@@ -292,9 +315,9 @@ fn padded(frame: Frame, share: f64) -> Frame {
     )
 }
 
-/// The world frame of what Inversion 2 or 3 draws at `pose`, grown by
+/// The world frame of what Inversion 2, 3 or 4 draws at `pose`, grown by
 /// `pad`: the links, the block, the driven pin's path about B (A's in
-/// inversion 2, C's in inversion 3), room past O_bd for O_cd
+/// inversion 2, C's in inversion 3; B's swing about A in inversion 4), room past O_bd for O_cd
 /// at infinity (`beyond`), and the centres O_bd and O_ac where they lie within the
 /// turn's world `turn` grown by a quarter of its size each way (a centre
 /// beyond is an arrow at the edge).
@@ -304,13 +327,19 @@ fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64, beyond: 
     let reach = padded(*turn, 0.25);
     let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
-    // The driven pin's path about B: A's (inversion 2), C's (inversion 3).
-    let l = match pose.inversion() {
-        Inversion::Rod => m.crank(),
-        _ => m.rod(),
-    };
-    points.push(q.b + Vector::new(l, l));
-    points.push(q.b - Vector::new(l, l));
+    // The driven pin's path about B: A's (inversion 2), C's (inversion 3);
+    // in inversion 4 the handle's swing about A.
+    match pose.inversion() {
+        Inversion::Slider => points.extend(swing(m, q.a)),
+        inversion => {
+            let l = match inversion {
+                Inversion::Rod => m.crank(),
+                _ => m.rod(),
+            };
+            points.push(q.b + Vector::new(l, l));
+            points.push(q.b - Vector::new(l, l));
+        }
+    }
     for (p, q) in [(Link::B, Link::D), (Link::A, Link::C)] {
         if let Some(Intersection::Point(x)) = pose.centres().centre(p, q)
             && reach.contains(x)
@@ -1187,7 +1216,7 @@ impl Drawing {
     /// The path of the driven link's far pin: a circle, or the hand
     /// pump's handle swinging about A.
     fn path(&mut self, inversion: Inversion) {
-        let (r, l, e) = (self.m.crank(), self.m.rod(), self.m.offset());
+        let (r, l) = (self.m.crank(), self.m.rod());
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         let path = match inversion {
             Inversion::Frame => Some((c, r, b)),
@@ -1199,18 +1228,15 @@ impl Drawing {
             self.s
                 .push("circle-path", Role::Curve, Shape::Circle { centre, radius });
         } else {
-            // The handle's swing: B − A = l(−cos φ, sin φ), φ between its
-            // extremes.
-            let top = ((r - e) / l).clamp(-1.0, 1.0).asin();
-            let bottom = ((-r - e) / l).clamp(-1.0, 1.0).asin();
+            let (start, sweep) = swing_angles(&self.m);
             self.s.push(
                 "arc-path",
                 Role::Curve,
                 Shape::Arc {
                     centre: a,
                     radius: l,
-                    start: std::f64::consts::PI - top,
-                    sweep: top - bottom,
+                    start,
+                    sweep,
                     arrow: false,
                 },
             );
