@@ -164,7 +164,7 @@ fn leg_jog(m: &SliderCrank, q: &Parts, (lh, w): (f64, f64), across: f64) -> Vect
     let leg = (q.t - q.c).norm();
     let (near, _) = ends(m);
     let shift = across * w;
-    if !(w > 0.0) || leg < LEG_JOG * w || near - lh < shift - w {
+    if !w.is_finite() || w <= 0.0 || leg < LEG_JOG * w || near - lh < shift - w {
         return Vector::zeros();
     }
     q.u * shift
