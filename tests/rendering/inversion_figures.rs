@@ -761,13 +761,24 @@ fn a_centre_lying_in_d_s_body_is_drawn_over_it_and_the_links() {
     // (inversion 2 at l = 2.91 r, e = −1.57 r and l = 1.92 r,
     // e = 0.671 r, inversion 3 at l = 1.65 r, e = 0.402 r, all at 180°).
     // A dot in d's outline comes after d and the links in the drawing.
-    for (name, rod, offset) in [(I2, 2.91, -1.57), (I2, 1.92, 0.671), (I3, 1.65, 0.402)] {
+    // Where d's leg stands beside the line C T, O_ac lies on b beside it
+    // and is drawn over b likewise (inversion 4 at l = 3.4 r, e = 1.58 r
+    // and l = 2.45 r, e = −0.745 r, 180°: its dot was hidden under b).
+    for (name, rod, offset) in [
+        (I2, 2.91, -1.57),
+        (I2, 1.92, 0.671),
+        (I3, 1.65, 0.402),
+        (I4, 3.4, 1.58),
+        (I4, 2.45, -0.745),
+    ] {
         let svg = svg(name, rod, offset, 180.0);
         let at = format!("{name:?} l = {rod}, e = {offset}, 180°");
         let dot = pin_at(&svg, "point-O-ac").unwrap_or_else(|| panic!("{at}: no O_ac dot"));
+        let rod = path(&svg, "link-rod");
         assert!(
-            within(&path(&svg, "link-frame"), dot),
-            "{at}: O_ac not in d's body"
+            within(&path(&svg, "link-frame"), dot)
+                || crate::common::segment_distance(dot, rod[0], rod[1]) <= 1.0,
+            "{at}: O_ac neither in d's body nor on b"
         );
         let order = |id: &str| svg.find(&format!("id=\"{id}\""));
         let drawn = order("point-O-ac").unwrap();
@@ -777,4 +788,139 @@ fn a_centre_lying_in_d_s_body_is_drawn_over_it_and_the_links() {
             }
         }
     }
+}
+
+#[test]
+fn d_s_leg_stands_beside_a_crank_lying_along_it() {
+    // The fifteenth review (2 to 3.5): where the crank lay along d's leg
+    // (θ near 90° or 270° with the offset's sign) it hid the leg, and d
+    // read as welded to the crank (inversion 4 at l = 2.45 r,
+    // e = −0.745 r, 270.12°), O_ab as pinned partway along d (l = 3.4 r,
+    // e = 1.58 r, 90.73°), or the crank as d's slot (inversion 2 at
+    // l = 2.91 r, e = −1.57 r, 269.8° and l = 1.92 r, e = 0.671 r,
+    // 89.32°; inversion 3 at l = 1.65 r, e = 0.402 r, 90.49°). The leg
+    // stands beside the crank: no more than a third of the crank lies in
+    // d's outline or within 3 units of its line (the eye about C, or the
+    // plunger's jog there, a few units).
+    for (name, rod, offset, deg) in [
+        (I4, 2.45, -0.745, 270.12),
+        (I4, 3.4, 1.58, 90.73),
+        (I2, 2.91, -1.57, 269.8),
+        (I2, 1.92, 0.671, 89.32),
+        (I3, 1.65, 0.402, 90.49),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
+        let crank = path(&svg, "link-crank");
+        let d = path(&svg, "link-frame");
+        let closed = name != I4;
+        let mut edges: Vec<((f64, f64), (f64, f64))> = d.windows(2).map(|w| (w[0], w[1])).collect();
+        if closed {
+            edges.push((d[d.len() - 1], d[0]));
+        }
+        let (p, q) = (crank[0], crank[1]);
+        let length = ((q.0 - p.0).powi(2) + (q.1 - p.1).powi(2)).sqrt();
+        let n = length.ceil() as usize;
+        let on_d = (0..=n)
+            .map(|k| {
+                let t = k as f64 / n as f64;
+                (p.0 + (q.0 - p.0) * t, p.1 + (q.1 - p.1) * t)
+            })
+            .filter(|&x| {
+                (closed && within(&d, x))
+                    || edges
+                        .iter()
+                        .any(|&(a, b)| crate::common::segment_distance(x, a, b) <= 3.0)
+            })
+            .count();
+        let share = on_d as f64 / (n + 1) as f64;
+        assert!(
+            share <= 1.0 / 3.0,
+            "{at}: {:.0} % of the crank ({length:.0} units) lies on d",
+            100.0 * share
+        );
+    }
+}
+
+#[test]
+fn at_a_dead_centre_the_hand_pump_s_d_and_b_take_the_line_s_two_sides() {
+    // The fifteenth review (3.5): inversion 4 at l = 1.07 r and 1.05 r, 0°
+    // set "d b" side by side over the one line of the plunger, the crank
+    // and the rod. d's letter stands on the side away from b's.
+    for engine in [(1.07, 0.0, 0.0), (1.05, 0.0, 0.0)] {
+        let svg = svg_at(I4, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{engine:?}");
+        let b = pin_at(&svg, "point-B").unwrap_or_else(|| panic!("{at}: no B"));
+        let a = pin_at(&svg, "point-A").unwrap_or_else(|| panic!("{at}: no A"));
+        let rod = text_centre(&plate, "label-link-b").unwrap_or_else(|| panic!("{at}: no b"));
+        let d = text_centre(&plate, "label-link-d").unwrap_or_else(|| panic!("{at}: no d"));
+        assert!(
+            side(b, a, rod) * side(b, a, d) < 0.0,
+            "{at}: b at {rod:?} and d at {d:?} on one side"
+        );
+    }
+}
+
+#[test]
+fn the_crank_s_letter_stands_outside_a_narrow_wedge_with_the_rod() {
+    // The fifteenth review (2.5): inversion 3 at l = 1.07 r, 89.24° set
+    // "a b" side by side in the narrow wedge between the crank and the
+    // rod at B, naming neither; inversion 4 at l = 1.05 r, 269.11° set
+    // a's letter in the wedge too. The crank's letter stands on the side
+    // of the crank away from A.
+    for (name, engine) in [(I3, (1.07, 0.0, 89.24)), (I4, (1.05, 0.0, 269.11))] {
+        let svg = svg_at(name, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} {engine:?}");
+        let [c, b, a] = ["point-C", "point-B", "point-A"]
+            .map(|id| pin_at(&svg, id).unwrap_or_else(|| panic!("{at}: no {id}")));
+        let letter = text_centre(&plate, "label-link-a").unwrap_or_else(|| panic!("{at}: no a"));
+        assert!(
+            side(c, b, letter) * side(c, b, a) < 0.0,
+            "{at}: a's letter at {letter:?} in the wedge, on A's side of the crank"
+        );
+    }
+}
+
+#[test]
+fn the_normal_at_c_to_o_ac_does_not_run_beside_the_crank() {
+    // The fifteenth review (3.5): inversion 4 at l = 1.05 r, 269.11°, O_ac
+    // 0.05 r from B: the dashed normal at C ran from C beside the crank,
+    // a doubled stroke on it. Where it runs along the crank it is the
+    // crank produced, not a line from C.
+    let svg = svg_at(I4, (1.05, 0.0, 269.11), None);
+    let c = pin_at(&svg, "point-C").expect("C");
+    if crate::common::attr(&svg, "line-C-O-ac", "d").is_some() {
+        let line = path(&svg, "line-C-O-ac");
+        let from_c = line
+            .iter()
+            .map(|p| ((p.0 - c.0).powi(2) + (p.1 - c.1).powi(2)).sqrt())
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            from_c > 10.0,
+            "the normal at C starts {from_c:.1} units from C"
+        );
+    }
+}
+
+#[test]
+fn the_hand_pump_s_page_is_fitted_to_its_drawing() {
+    // The fifteenth review (4): inversion 4's default filled only the left
+    // two thirds of its page, the turn's world set as its view (d ran from
+    // 136 to 553 on a page 760 wide). Its page is fitted to what is drawn
+    // at the pose, as inversions 2 and 3 are: d's bar, which runs from C
+    // past the barrel, leaves at most 15 % of the page's width each side.
+    let svg = svg_at(I4, (3.0, 0.0, 60.0), None);
+    let width: f64 = crate::common::attr(&svg, "paper", "width")
+        .and_then(|w| w.parse().ok())
+        .expect("the paper's width");
+    let d = path(&svg, "link-frame");
+    let (left, right) = (d.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+        (lo.min(p.0), hi.max(p.0))
+    });
+    assert!(
+        left <= 0.15 * width && width - right <= 0.15 * width,
+        "d from {left:.0} to {right:.0} on a page {width:.0} wide"
+    );
 }

@@ -108,15 +108,16 @@ fn the_frame_d_keeps_its_shape_at_every_pose() {
     ] {
         let svg = svg(name, rod, offset, deg);
         let frame = path(&svg, "link-frame");
-        assert_eq!(
-            frame.len(),
-            6,
-            "{name:?}: d's slotted bar, bent square: six corners"
+        let n = frame.len();
+        assert!(
+            n == 6 || n == 8,
+            "{name:?}: d's slotted bar, bent square: six corners, eight with \
+             its leg set beside C T and an eye about C, not {n}"
         );
         // Every corner of the outline square: the leg from C meets the
         // slot at a right angle, and the bar's ends are cut square.
-        for k in 0..6 {
-            let (p, q, s) = (frame[k], frame[(k + 5) % 6], frame[(k + 1) % 6]);
+        for k in 0..n {
+            let (p, q, s) = (frame[k], frame[(k + n - 1) % n], frame[(k + 1) % n]);
             let square = angle_at(p, q, s);
             assert!(
                 (square - 90.0).abs() < 0.1,
@@ -127,13 +128,18 @@ fn the_frame_d_keeps_its_shape_at_every_pose() {
 }
 
 #[test]
-fn a_link_along_d_s_leg_is_seen_inside_it() {
+fn a_link_along_d_s_leg_is_seen_inside_or_beside_it() {
     // The tenth review (2 to 2.5): with an offset near r, at 90° or 270°
     // d's leg from C lay on the crank or the fixed link and through pin
     // B, one thick line for two links, d read as pinned at B or welded
     // to the frame. d is drawn as a slotted bar as wide as the block: a
-    // link along its leg runs inside the outline, apart from its sides by
-    // a visible gap on each side.
+    // link along its leg runs inside the outline (the Coriolis figures'
+    // mechanism, and a leg shorter than three half widths), apart from
+    // its sides by a visible gap on each side. The fifteenth review (2 to
+    // 3.5) read a crank inside the leg as d's slot: in the inversions'
+    // own figures a longer leg stands beside the crank (eight corners, an
+    // eye about C), and at most a third of the crank lies in d's outline
+    // or within GAP of its sides.
     const GAP: f64 = 3.0;
     for (name, rod, offset, deg) in [
         (FigureName::CoriolisInversion3, 3.08, -1.26, 270.31),
@@ -172,6 +178,22 @@ fn a_link_along_d_s_leg_is_seen_inside_it() {
             on <= 4,
             "{name:?} l = {rod}, e = {offset}, {deg}°: {on} of 41 points of the crank on d's outline"
         );
+        if frame.len() == 8 {
+            let inside = (0..=40)
+                .map(|i| {
+                    let t = f64::from(i) / 40.0;
+                    (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1))
+                })
+                .filter(|p| {
+                    super::inversion_figures::within(&frame, *p)
+                        || (sides.iter()).any(|(q, s)| to_segment(*p, *q, *s) < GAP)
+                })
+                .count();
+            assert!(
+                inside <= 13,
+                "{name:?} l = {rod}, e = {offset}, {deg}°: {inside} of 41 points of the crank in d"
+            );
+        }
     }
 }
 

@@ -19,7 +19,9 @@ use crate::construct::Link;
 use crate::diagram::Plot;
 use crate::error::Result;
 use crate::figure::{BEARING_FOOT, Figure, Foot, Item, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Intersection, Point, Vector, inside_outline, unit};
+use crate::geom::{
+    Frame, Intersection, Point, Vector, inside_outline, point_segment_distance, unit,
+};
 use crate::scene::{Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -111,6 +113,10 @@ struct Parts {
     /// The line of stroke's direction (+x in the engine) and its normal.
     u: Vector,
     v: Vector,
+    /// Where d's leg is set beside the line C T (a crank lying along the
+    /// leg would hide it, [`leg_jog`]): the leg's shift along the stroke,
+    /// zero where it lies on that line.
+    jog: Vector,
 }
 
 /// Lengths along the stroke: the slot's near and far ends of travel.
@@ -134,6 +140,46 @@ fn parts(m: &SliderCrank, p: &InversionPose) -> Parts {
         f: p.place(Point::new(far + lh + 0.15 * m.crank(), e)),
         u: p.turn(Vector::new(1.0, 0.0)),
         v: p.turn(Vector::new(0.0, 1.0)),
+        jog: Vector::zeros(),
+    }
+}
+
+/// The leg shorter than this many half widths of d's bar keeps to the
+/// line C T: a stub the crank's pin covers, no run of it hidden.
+const LEG_JOG: f64 = 3.0;
+
+/// The shift along the stroke (towards the arm) of d's leg for an engine
+/// whose leg is long enough to hide under the crank ([`LEG_JOG`]): at the
+/// pose where the crank lies along the leg (θ near 90° or 270° with the
+/// offset's sign) the crank covered it, and d read as welded to the crank
+/// or the crank as d's slot (inversion 4 at l = 2.45 r, e = −0.745 r,
+/// 270.12°; inversion 2 at l = 2.91 r, e = −1.57 r, 269.8°). The leg is
+/// set beside the line C T, `across` half widths `w` off it, and joined
+/// to C by an eye (the bar) or a jog (the plunger), at every pose, one
+/// shape, as a rigid link is drawn; its inner side then stands `w` off
+/// the crank's line where the two lie together. None where the block at
+/// its near end of travel (half length `lh`) would leave the arm so set
+/// back, nor with no offset.
+fn leg_jog(m: &SliderCrank, q: &Parts, (lh, w): (f64, f64), across: f64) -> Vector {
+    let leg = (q.t - q.c).norm();
+    let (near, _) = ends(m);
+    let shift = across * w;
+    if !w.is_finite() || w <= 0.0 || leg < LEG_JOG * w || near - lh < shift - w {
+        return Vector::zeros();
+    }
+    q.u * shift
+}
+
+/// How far d's leg is set off the line C T where it is ([`leg_jog`]), in
+/// d's half widths: the slotted bar (inversions 2 and 3) by twice its half
+/// width, its inner side a half width off the crank's line; the hand
+/// pump's plunger, a line, by the barrel's half height; none where d is
+/// the fixed frame.
+fn jog_across(fixed: Link) -> f64 {
+    match fixed {
+        Link::A | Link::B => 2.0,
+        Link::C => 1.0,
+        Link::D => 0.0,
     }
 }
 
@@ -193,14 +239,15 @@ fn extent(m: &SliderCrank, chain: &InvertedChain) -> Frame {
 
 /// The page, the panel's rectangle and the world it shows: the world of
 /// every place the chain reaches over a turn sets the scale (so that it
-/// does not change with θ), and it is what the panel shows, except in
-/// Inversions 2 and 3, whose panel shows, at that scale, what is
+/// does not change with θ), and it is what the panel shows in inversion
+/// 1; inversions 2, 3 and 4 show, at that scale, what is
 /// drawn at this pose (the links, the block, the path and the centres
 /// within the turn's world), on the figure's own page narrowed to it, at
 /// least [`crate::scene::LEAST_FITTED_WIDTH`] wide (their bar d sweeps a
 /// disc about C or B over a turn: drawn at one pose inversion 2 left the
 /// top 200 and the left 450 units of its page empty, inversion 3 at
-/// l = 1.65 r, e = 0.582 r the right 40 % of its 1520).
+/// l = 1.65 r, e = 0.582 r the right 40 % of its 1520; inversion 4's
+/// default, its handle swinging through an arc, the right third).
 fn layout(
     ctx: &Ctx,
     chain: &InvertedChain,
@@ -210,8 +257,8 @@ fn layout(
     let turn = padded(extent(m, chain), 0.1);
     let page = ctx.page();
     let full = super::fitted_rect(&page, &turn, NOTES_HEIGHT);
-    if !matches!(chain.inversion(), Inversion::Crank | Inversion::Rod) {
-        // The other two fill their turn's world at every pose.
+    if chain.inversion() == Inversion::Frame {
+        // Inversion 1 fills its turn's world at every pose.
         return Ok((page, full, turn));
     }
     let size = turn.max() - turn.min();
@@ -236,6 +283,28 @@ fn layout(
     Ok((page, rect, world))
 }
 
+/// The handle's swing in inversion 4: B's arc about A of radius l between
+/// its extremes, as [`Drawing::path`] draws it ((start, sweep) from
+/// [`swing_angles`]), sampled every few degrees.
+fn swing(m: &SliderCrank, a: Point) -> Vec<Point> {
+    let (start, sweep) = swing_angles(m);
+    (0..=32)
+        .map(|k| {
+            let t = start + sweep * f64::from(k) / 32.0;
+            a + Vector::new(t.cos(), t.sin()) * m.rod()
+        })
+        .collect()
+}
+
+/// The start and sweep (radians) of the handle's swing about A: B − A =
+/// l(−cos φ, sin φ), φ between its extremes.
+fn swing_angles(m: &SliderCrank) -> (f64, f64) {
+    let (r, l, e) = (m.crank(), m.rod(), m.offset());
+    let top = ((r - e) / l).clamp(-1.0, 1.0).asin();
+    let bottom = ((-r - e) / l).clamp(-1.0, 1.0).asin();
+    (std::f64::consts::PI - top, top - bottom)
+}
+
 /// `frame` grown on every side by `share` of its larger side.
 fn padded(frame: Frame, share: f64) -> Frame {
     let size = frame.max() - frame.min();
@@ -246,9 +315,9 @@ fn padded(frame: Frame, share: f64) -> Frame {
     )
 }
 
-/// The world frame of what Inversion 2 or 3 draws at `pose`, grown by
+/// The world frame of what Inversion 2, 3 or 4 draws at `pose`, grown by
 /// `pad`: the links, the block, the driven pin's path about B (A's in
-/// inversion 2, C's in inversion 3), room past O_bd for O_cd
+/// inversion 2, C's in inversion 3; B's swing about A in inversion 4), room past O_bd for O_cd
 /// at infinity (`beyond`), and the centres O_bd and O_ac where they lie within the
 /// turn's world `turn` grown by a quarter of its size each way (a centre
 /// beyond is an arrow at the edge).
@@ -258,13 +327,19 @@ fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64, beyond: 
     let reach = padded(*turn, 0.25);
     let mut points = vec![q.c, q.b, q.a, q.t, q.f];
     points.extend(block(&q, lh, hh));
-    // The driven pin's path about B: A's (inversion 2), C's (inversion 3).
-    let l = match pose.inversion() {
-        Inversion::Rod => m.crank(),
-        _ => m.rod(),
-    };
-    points.push(q.b + Vector::new(l, l));
-    points.push(q.b - Vector::new(l, l));
+    // The driven pin's path about B: A's (inversion 2), C's (inversion 3);
+    // in inversion 4 the handle's swing about A.
+    match pose.inversion() {
+        Inversion::Slider => points.extend(swing(m, q.a)),
+        inversion => {
+            let l = match inversion {
+                Inversion::Rod => m.crank(),
+                _ => m.rod(),
+            };
+            points.push(q.b + Vector::new(l, l));
+            points.push(q.b - Vector::new(l, l));
+        }
+    }
     for (p, q) in [(Link::B, Link::D), (Link::A, Link::C)] {
         if let Some(Intersection::Point(x)) = pose.centres().centre(p, q)
             && reach.contains(x)
@@ -612,7 +687,9 @@ pub(super) fn draw_links(
     follow: Option<Shown>,
 ) -> LinksDrawn {
     let block = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
-    let mut d = Drawing::new(m, pose, canvas, block).showing(follow);
+    let mut d = Drawing::new(m, pose, canvas, block)
+        .showing(follow)
+        .leg_on_line();
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
@@ -815,13 +892,27 @@ fn band(q: &Parts, w: f64) -> Vec<Point> {
     }
     let g = leg / leg.norm();
     let s = c - g * w;
+    if q.jog.norm() == 0.0 {
+        return vec![
+            s - u * w,
+            t + g * w - u * w,
+            f + g * w,
+            f - g * w,
+            t - g * w + u * w,
+            s + u * w,
+        ];
+    }
+    // The leg beside C T, joined to C by an eye about the pin.
+    let j = q.jog;
     vec![
         s - u * w,
-        t + g * w - u * w,
+        c + g * w - u * w,
+        c + j + g * w - u * w,
+        t + j + g * w - u * w,
         f + g * w,
         f - g * w,
-        t - g * w + u * w,
-        s + u * w,
+        t + j - g * w + u * w,
+        s + j + u * w,
     ]
 }
 
@@ -840,6 +931,10 @@ fn dots(centres: &ChainCentres) -> Vec<Point> {
 /// units: a dot's radius and a stroke's width, so that it reads apart.
 const DOT_CLEAR: f64 = 5.0;
 
+/// A centre within this of a link's line, page units (a link's half
+/// width and its rim of paper), is drawn over the links.
+const ON_LINK: f64 = 4.0;
+
 /// Lines filling the slotted bar of [`band`] (`w` its half width): its
 /// middle line and the lines halfway to its sides, along its leg and its
 /// arm. A stroke of hatching that starts inside the bar meets one of
@@ -848,7 +943,7 @@ const DOT_CLEAR: f64 = 5.0;
 /// at l = 54.1 r, 90° inversion 3's rod b, running inside d's bar, was
 /// hatched inside it and the moving bar read as fixed.
 fn band_fill(q: &Parts, w: f64) -> Vec<Seg> {
-    let (c, t, f, u) = (q.c, q.t, q.f, q.u);
+    let (c, t, f, u, j) = (q.c, q.t, q.f, q.u, q.jog);
     let leg = t - c;
     let shares = [-0.5, 0.0, 0.5];
     if leg.norm() == 0.0 {
@@ -857,15 +952,20 @@ fn band_fill(q: &Parts, w: f64) -> Vec<Seg> {
     }
     let g = leg / leg.norm();
     let s = c - g * w;
-    (shares.iter())
+    let mut fill: Vec<Seg> = (shares.iter())
         .flat_map(|k| {
             let (across_leg, across_arm) = (u * (k * w), g * (k * w));
             [
-                (s + across_leg, t + across_leg + g * w),
-                (t - u * w + across_arm, f + across_arm),
+                (s + j + across_leg, t + j + across_leg + g * w),
+                (t + j - u * w + across_arm, f + across_arm),
             ]
         })
-        .collect()
+        .collect();
+    if j.norm() > 0.0 {
+        // Across the eye about C.
+        fill.extend(shares.map(|k| (c - u * w + g * (k * w), c + j + u * w + g * (k * w))));
+    }
+    fill
 }
 
 /// The middle of `p` and `q`.
@@ -876,6 +976,11 @@ fn mid(p: Point, q: Point) -> Point {
 /// The crank and the rod within this angle of one line (radians, 10°)
 /// lie along each other: their letters take sides ([`Drawing::letter_ways`]).
 const ALONG_LINE: f64 = 0.175;
+
+/// The crank and the rod within this angle of one line (radians, 40°)
+/// but not along it make a wedge at B too narrow for a letter of each:
+/// their letters are tried outside it ([`Drawing::letter_ways`]).
+const WEDGE: f64 = 0.70;
 
 /// How far across the fixed barrel (in its half heights) the normal at
 /// A is kept from its hatching: past both faces and the strokes' depth.
@@ -901,9 +1006,10 @@ impl Drawing {
     /// The drawing of the chain `m` at `pose` on `canvas`, its block
     /// `block` (half length, half height) as drawn.
     fn new(m: SliderCrank, pose: &InversionPose, canvas: Canvas, block: (f64, f64)) -> Self {
-        let q = parts(&m, pose);
+        let mut q = parts(&m, pose);
         let fixed = pose.inversion().fixed();
         let block = barrel(block, fixed, canvas.transform().scale());
+        q.jog = leg_jog(&m, &q, block, jog_across(fixed));
         Drawing {
             s: canvas,
             m,
@@ -924,6 +1030,16 @@ impl Drawing {
             normal: Vector::zeros(),
             d_way: None,
         }
+    }
+
+    /// The same drawing with d's leg on the line C T ([`leg_jog`] not
+    /// applied): for the Coriolis figures' mechanism, whose driver's arc
+    /// about B keeps clear of d's arm and its line C T, not of a leg set
+    /// beside it (the arc ran along such a leg at l = 4 r, e = −2.4 r,
+    /// 340°).
+    fn leg_on_line(mut self) -> Self {
+        self.q.jog = Vector::zeros();
+        self
     }
 
     /// The same drawing showing the fixed link as `shown` says.
@@ -1100,7 +1216,7 @@ impl Drawing {
     /// The path of the driven link's far pin: a circle, or the hand
     /// pump's handle swinging about A.
     fn path(&mut self, inversion: Inversion) {
-        let (r, l, e) = (self.m.crank(), self.m.rod(), self.m.offset());
+        let (r, l) = (self.m.crank(), self.m.rod());
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         let path = match inversion {
             Inversion::Frame => Some((c, r, b)),
@@ -1112,18 +1228,15 @@ impl Drawing {
             self.s
                 .push("circle-path", Role::Curve, Shape::Circle { centre, radius });
         } else {
-            // The handle's swing: B − A = l(−cos φ, sin φ), φ between its
-            // extremes.
-            let top = ((r - e) / l).clamp(-1.0, 1.0).asin();
-            let bottom = ((-r - e) / l).clamp(-1.0, 1.0).asin();
+            let (start, sweep) = swing_angles(&self.m);
             self.s.push(
                 "arc-path",
                 Role::Curve,
                 Shape::Arc {
                     centre: a,
                     radius: l,
-                    start: std::f64::consts::PI - top,
-                    sweep: top - bottom,
+                    start,
+                    sweep,
                     arrow: false,
                 },
             );
@@ -1133,14 +1246,16 @@ impl Drawing {
     /// The frame d's bar from C (through the foot T of its leg
     /// perpendicular to the line of stroke, where the stroke is offset):
     /// one shape at every pose, as a rigid link is drawn. A leg bent off
-    /// the crank where the two would lie together (near 90° with an
+    /// the crank only where the two would lie together (near 90° with an
     /// offset near r) was read as d changing its shape from pose to pose
-    /// and put O_ab's letter at the bend; the leg on the crank is the
-    /// pose's truth.
+    /// and put O_ab's letter at the bend; the leg set beside C T at every
+    /// pose ([`leg_jog`]) keeps one shape and shows both links.
     fn bar(&self) -> Vec<Point> {
         let q = &self.q;
         if self.m.offset() == 0.0 {
             vec![q.c, q.f]
+        } else if q.jog.norm() > 0.0 {
+            vec![q.c, q.c + q.jog, q.t + q.jog, q.f]
         } else {
             vec![q.c, q.t, q.f]
         }
@@ -1248,8 +1363,18 @@ impl Drawing {
         }
         if let Some(at) = self.bar_letter() {
             if !self.slotted() {
-                // The hand pump's plunger, a line: its letter by it.
-                self.s.letter("link-d", at, "*d*", TextSize::Letter);
+                // The hand pump's plunger, a line: its letter by it; where
+                // the crank and the rod lie along it (a dead centre), on
+                // the side away from the rod's letter ("d b" side by side
+                // at l = 1.07 r, 0°).
+                match self.letter_ways() {
+                    (_, Some(rod)) if self.along_line() => {
+                        let d = RichText::parse("*d*");
+                        self.s
+                            .label_toward("label-link-d", at, -rod, d, TextSize::Letter);
+                    }
+                    _ => self.s.letter("link-d", at, "*d*", TextSize::Letter),
+                }
                 return;
             }
             let (way, hh) = (self.bar_letter_side(at), self.block.1);
@@ -1342,7 +1467,7 @@ impl Drawing {
                 let leg = if self.m.offset() == 0.0 {
                     self.q.f
                 } else {
-                    self.q.t
+                    self.q.t + self.q.jog
                 };
                 let foot = self
                     .shown_foot(c, 0)
@@ -1482,19 +1607,42 @@ impl Drawing {
         s.letter("link-c", at, "*c*", TextSize::Letter);
     }
 
+    /// Whether the crank and the rod lie along one line (within
+    /// [`ALONG_LINE`]: a dead centre).
+    fn along_line(&self) -> bool {
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        match (unit(b - c), unit(a - b)) {
+            (Some(crank), Some(rod)) => crank.dot(&rod).abs() >= ALONG_LINE.cos(),
+            _ => false,
+        }
+    }
+
     /// The sides the crank's and the rod's letters are tried on first
     /// where the two lie along one line (within [`ALONG_LINE`], a dead
     /// centre): in inversion 4 on its two sides ("b a" read as one word
     /// at l = 1.05 r, 180°), in inversions 2 and 3 both on the side of
-    /// d's bar away from d's letter ("a d" at l = 1.08 r, 0°); none
+    /// d's bar away from d's letter ("a d" at l = 1.08 r, 0°); where they
+    /// make a narrow wedge at B (within [`WEDGE`]), each outside it; none
     /// elsewhere.
     fn letter_ways(&self) -> (Option<Vector>, Option<Vector>) {
         let (c, b, a) = (self.q.c, self.q.b, self.q.a);
         let (Some(crank), Some(rod)) = (unit(b - c), unit(a - b)) else {
             return (None, None);
         };
-        if crank.dot(&rod).abs() < ALONG_LINE.cos() {
+        let cos = crank.dot(&rod).abs();
+        if cos < WEDGE.cos() {
             return (None, None);
+        }
+        if cos < ALONG_LINE.cos() {
+            // A narrow wedge at B: each letter outside it, on the side of
+            // its link away from the other link's far pin ("a b" side by
+            // side in the wedge named neither, inversion 3 at l = 1.07 r,
+            // 89.24°).
+            let away = |u: Vector, other: Point, on: Point| {
+                let n = Vector::new(-u.y, u.x);
+                if (other - on).dot(&n) > 0.0 { -n } else { n }
+            };
+            return (Some(away(crank, a, b)), Some(away(rod, c, b)));
         }
         let n = Vector::new(-rod.y, rod.x);
         match self.d_way {
@@ -1545,7 +1693,9 @@ impl Drawing {
         }
         if let Intersection::Point(x) = o_ac {
             produced(&mut self.s, "line-AB-O-ac", a, b, x);
-            self.s.segment("line-C-O-ac", Role::Auxiliary, c, x);
+            if let Some((from, to)) = normal_at_c(c, b, x) {
+                self.s.segment("line-C-O-ac", Role::Auxiliary, from, to);
+            }
         }
     }
 
@@ -1688,10 +1838,15 @@ impl Drawing {
                 );
             }
             _ => {
-                // A centre in d's body (O_ac where b crosses d's leg) is
-                // drawn over it: under it, the tone and b's rim hid it.
+                // A centre in d's body (O_ac where b crosses d's leg) or
+                // on a moving link (O_ac on b beside the leg set off C T)
+                // is drawn over them: under them, the tone and b's rim hid
+                // it.
                 let in_body = self.slotted() && inside_outline(&band(&self.q, self.block.1), p);
-                let marker = if in_body {
+                let on_link = [(self.q.c, self.q.b), (self.q.b, self.q.a)]
+                    .into_iter()
+                    .any(|(x, y)| point_segment_distance(p, x, y) <= self.s.world(ON_LINK));
+                let marker = if in_body || on_link {
                     Marker::DotOver
                 } else {
                     Marker::Dot
@@ -1803,6 +1958,18 @@ fn produced_seg(p: Point, q: Point, x: Point) -> Option<Seg> {
     Some((if along > 1.0 { q } else { p }, x))
 }
 
+/// The normal at C to O_ac at `x` as drawn: from C, or where it runs
+/// along the crank C B (within [`ALONG_LINE`]), the crank produced to
+/// `x` (none where `x` lies by the crank): drawn from C beside the crank
+/// it read as a doubled stroke on it (inversion 4 at l = 1.05 r,
+/// 269.11°, O_ac 0.05 r from B).
+fn normal_at_c(c: Point, b: Point, x: Point) -> Option<Seg> {
+    match (unit(x - c), unit(b - c)) {
+        (Some(n), Some(crank)) if n.dot(&crank) >= ALONG_LINE.cos() => produced_seg(c, b, x),
+        _ => Some((c, x)),
+    }
+}
+
 /// Kennedy's lines as [`Drawing::kennedy`] draws them (up to the
 /// centres, not short of the page's edge): CB produced and the normal at
 /// A to O_bd, AB produced and the normal at C to O_ac.
@@ -1815,7 +1982,7 @@ fn kennedy_lines(q: &Parts, centres: &ChainCentres) -> Vec<Seg> {
     }
     if let Some(Intersection::Point(x)) = centres.centre(Link::A, Link::C) {
         lines.extend(produced_seg(a, b, x));
-        lines.push((c, x));
+        lines.extend(normal_at_c(c, b, x));
     }
     lines
 }
