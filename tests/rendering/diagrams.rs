@@ -503,6 +503,11 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
             for (id, e) in load_curves(r, l) {
                 add(&id, e);
             }
+            // The default's crowded pole in (a) has its detail (a′), which
+            // draws the fixed panel's curves again.
+            for (id, e) in load_curves(r, l).into_iter().take(2) {
+                add(&id.replacen("curve-", "curve-detail-", 1), e);
+            }
         }
         FigureName::NgFig7Calibration => {
             let (origin, (a, b)) = ng_fits();
