@@ -484,7 +484,7 @@ fn the_crank_pin_load_of_a_massless_rod_at_90_degrees_is_the_force_along_the_rod
         let text = read_text(&svg);
         let rod = four(0.6 * mass);
         let rod = rod.trim_end_matches('0').trim_end_matches('.');
-        assert!(text.contains(&format!("the rod {rod} ")), "{text}");
+        assert!(text.contains(&format!("The rod: {rod} slug")), "{text}");
     }
 }
 
@@ -777,9 +777,26 @@ fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
                         })
                         .collect();
                     assert!(angles.contains(&deg.to_string()), "{id}: {said}");
+                    // A letter set farther out has a leader to its dot,
+                    // which names it (read in
+                    // the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves
+                    // and the_crank_pin_loads_leaders_each_end_on_their_own_dot).
+                    let led =
+                        svg.contains(&format!("id=\"{}\"", id.replacen("label-", "leader-", 1)));
+                    if led {
+                        let p = path_numbers(&svg, &id.replacen("label-", "leader-", 1));
+                        let end = p[p.len() - 1];
+                        let d = (end.0 - own.0).hypot(end.1 - own.1);
+                        assert!(d < 2.1 + 0.35, "case {case}: {id}'s leader ends {d:.2} off");
+                    }
                     if angles.len() > 1 {
-                        // A letter naming several quarters at one place.
-                        assert!(to_box(own) < 1.5 * em + 8.0, "{id} far from its dot");
+                        // A letter naming several quarters at one place,
+                        // by its dot or led to it.
+                        assert!(
+                            led || to_box(own) < 1.5 * em + 8.0,
+                            "case {case}: {id} ({said}) {:.1} from its dot",
+                            to_box(own)
+                        );
                         continue;
                     }
                     // Another angle's dot, farther than an em from this
@@ -801,11 +818,6 @@ fn the_crank_pin_load_marks_stand_apart_and_each_letter_by_its_own_dot() {
                     } else {
                         5.0
                     };
-                    // A letter set farther out has a leader to its dot,
-                    // which names it (read in
-                    // the_crank_pin_loads_letters_stand_by_their_dots_unpiled_and_off_the_curves).
-                    let led =
-                        svg.contains(&format!("id=\"{}\"", id.replacen("label-", "leader-", 1)));
                     for (other, q) in &marks {
                         let far = (q.0 - own.0).hypot(q.1 - own.1) > em;
                         let angle = other.rsplit('-').next().unwrap().to_string();
