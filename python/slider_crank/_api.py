@@ -1655,9 +1655,11 @@ def _gallery_asked(
     only: Union[None, str, "list[str]", Tuple[str, ...]],
     manifest: Union[None, str, "os.PathLike[str]"],
 ) -> "Tuple[Optional[list[str]], Optional[str]]":
-    """The keywords ``only`` and ``manifest`` as the library takes them."""
+    """The keywords ``only`` and ``manifest`` as the library takes them (a
+    string is one entry, which the library splits at its commas as it
+    splits ``--only``)."""
     if isinstance(only, str):
-        only = only.split(",")
+        only = [only]
     return (
         None if only is None else list(only),
         None if manifest is None else os.fspath(manifest),

@@ -31,14 +31,8 @@ pub struct GalleryArgs {
     pub manifest: Option<PathBuf>,
     /// Only these figures, comma-separated (the tables and the index are
     /// always made)
-    #[arg(
-        long,
-        value_name = "LIST",
-        value_delimiter = ',',
-        hide = true,
-        conflicts_with = "manifest"
-    )]
-    pub only: Option<Vec<String>>,
+    #[arg(long, value_name = "LIST", hide = true, conflicts_with = "manifest")]
+    pub only: Option<String>,
 }
 
 /// Runs the subcommand: the files written, a progress line on standard
@@ -47,7 +41,7 @@ pub struct GalleryArgs {
 pub fn run(args: &GalleryArgs, out: &mut Stdout) -> Result<bool> {
     let mut request = GalleryRequest::default();
     request.manifest = args.manifest.clone();
-    request.only = args.only.clone();
+    request.only = args.only.clone().map(|list| vec![list]);
     let gallery = request.gallery()?;
     let dir = &args.out;
     if args.check {

@@ -27,6 +27,8 @@ pub struct GalleryRequest {
     pub manifest: Option<PathBuf>,
     /// Only these figures, by name, in this order (the tables and the
     /// index are always made); not with `manifest`, which names its own.
+    /// An entry may itself list several names separated by commas, as the
+    /// command line's `--only` and a Python string give them.
     pub only: Option<Vec<String>>,
 }
 
@@ -73,11 +75,12 @@ fn read_manifest(path: &Path) -> Result<Gallery> {
     })
 }
 
-/// The figures of `names` (each trimmed), the first unknown name an
-/// error.
+/// The figures of `names` (each entry split at its commas, each name
+/// trimmed), the first unknown name an error (an empty one too).
 fn figures_named(names: &[String]) -> Result<Vec<FigureName>> {
     names
         .iter()
+        .flat_map(|n| n.split(','))
         .map(|n| FigureName::from_name(n.trim()))
         .collect()
 }
@@ -104,6 +107,21 @@ mod tests {
             g.figures(),
             [FigureName::Fig66Kisch, FigureName::Fig63Velocity]
         );
+        // One entry listing several, as `--only` gives them.
+        let r = GalleryRequest {
+            only: Some(vec!["fig-67-example, fig-66-kisch".into()]),
+            ..Default::default()
+        };
+        let g = r.gallery().unwrap();
+        assert_eq!(
+            g.figures(),
+            [FigureName::Fig67Example, FigureName::Fig66Kisch]
+        );
+        let r = GalleryRequest {
+            only: Some(vec!["fig-66-kisch,".into()]),
+            ..Default::default()
+        };
+        assert!(r.gallery().is_err(), "an empty name is no figure");
     }
 
     #[test]
