@@ -78,11 +78,6 @@ pub struct Metadata {
 }
 
 impl Metadata {
-    /// The keys of the typed parts: a value inserted under one of them is
-    /// replaced by the typed part when the metadata is written, if that
-    /// part is set.
-    pub const TYPED_KEYS: [&str; 4] = ["mechanism", "omega", "angle_deg", "plots"];
-
     /// No record at all: a figure that draws no engine (a plot of data)
     /// and sets none.
     pub fn new() -> Self {
@@ -111,9 +106,9 @@ impl Metadata {
     }
 
     /// Records one of the figure's own values under `key`, replacing one
-    /// recorded there before; under a key of a typed part it is
-    /// replaced by the typed part when written, if that part is set
-    /// ([`Metadata::TYPED_KEYS`]).
+    /// recorded there before; under a key of a typed part (`mechanism`,
+    /// `omega`, `angle_deg`, `plots`) it is replaced by the typed part
+    /// when written, if that part is set.
     pub fn insert(&mut self, key: impl Into<String>, value: Value) {
         self.values.insert(key.into(), value);
     }
