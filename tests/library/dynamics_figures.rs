@@ -675,30 +675,47 @@ fn counterpart(panel: &str) -> String {
 
 /// The page width of the `case`th of [`reviewed_load_figures`].
 fn width_of(case: usize) -> Option<&'static str> {
-    [None, Some("120mm"), Some("4.5in"), Some("500")][case % 4]
+    LOAD_WIDTHS[case % LOAD_WIDTHS.len()]
 }
 
 /// The engines the fourth review drew the crank-pin loads at, with the
 /// page widths it found them worst on, and the default.
 fn reviewed_load_figures() -> Vec<String> {
-    let mut out = Vec::new();
-    for (r, l, e) in [
+    let engines = [
         (0.5, 3.0, 0.0),
         (1.0, 1.06, 0.0),
         (1.0, 51.8, 0.0),
         (1.0, 1.36, -0.313),
         (1.0, 1.08, 0.0),
-    ] {
-        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
-            let mut o = match width {
-                Some(w) => common::on_page(w, None),
-                None => FigureOptions::default(),
-            };
-            o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
-            out.push(to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap()));
-        }
-    }
-    out
+    ];
+    let figures = load_figures(&at_every_width(&engines));
+    figures.into_iter().map(|(_, svg)| svg).collect()
+}
+
+/// The page widths every reviewed engine of crank-pin-loads is drawn at
+/// (`None`: the figure's own).
+const LOAD_WIDTHS: [Option<&str>; 4] = [None, Some("120mm"), Some("4.5in"), Some("500")];
+
+/// Each engine (r, l, e) at every one of [`LOAD_WIDTHS`], in that order.
+fn at_every_width(engines: &[(f64, f64, f64)]) -> Vec<(f64, f64, f64, Option<&'static str>)> {
+    (engines.iter())
+        .flat_map(|&(r, l, e)| LOAD_WIDTHS.map(|w| (r, l, e, w)))
+        .collect()
+}
+
+/// crank-pin-loads drawn for each case (r, l, e and the page width, the
+/// figure's own where none), in the cases' order: the case in words and
+/// the SVG.
+fn load_figures(cases: &[(f64, f64, f64, Option<&'static str>)]) -> Vec<(String, String)> {
+    common::in_threads(cases, |&(r, l, e, width)| {
+        let mut o = match width {
+            Some(w) => common::on_page(w, None),
+            None => FigureOptions::default(),
+        };
+        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
+        (format!("r {r} l {l} e {e} on {width:?}"), svg)
+    })
 }
 
 #[test]
@@ -1478,19 +1495,7 @@ fn the_balance_notes_keep_each_list_on_one_line() {
 /// found letters by the wrong dot at (the default, r = 1, l = 3.83,
 /// e = −1.63), on its four page widths: (what, SVG).
 fn seventh_review_load_figures() -> Vec<(String, String)> {
-    let mut out = Vec::new();
-    for (r, l, e) in [(0.5, 3.0, 0.0), (1.0, 3.83, -1.63)] {
-        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
-            let mut o = match width {
-                Some(w) => common::on_page(w, None),
-                None => FigureOptions::default(),
-            };
-            o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
-            let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
-            out.push((format!("r {r} l {l} e {e} on {width:?}"), svg));
-        }
-    }
-    out
+    load_figures(&at_every_width(&[(0.5, 3.0, 0.0), (1.0, 3.83, -1.63)]))
 }
 
 /// The distance from the page point `p` to the box of the letter `id`:
@@ -1714,27 +1719,13 @@ fn the_balance_captions_stand_level_and_close_under_their_polygons() {
 /// r = 1 with l = 47.6, 48.2, 1.05 and 1.04), on its four page widths:
 /// (what, SVG).
 fn tenth_review_load_figures() -> Vec<(String, String)> {
-    let mut cases = Vec::new();
-    for (r, l) in [
-        (0.5, 3.0),
-        (1.0, 47.6),
-        (1.0, 48.2),
-        (1.0, 1.05),
-        (1.0, 1.04),
-    ] {
-        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
-            cases.push((r, l, width));
-        }
-    }
-    common::in_threads(&cases, |&(r, l, width)| {
-        let mut o = match width {
-            Some(w) => common::on_page(w, None),
-            None => FigureOptions::default(),
-        };
-        o.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
-        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
-        (format!("r {r} l {l} on {width:?}"), svg)
-    })
+    load_figures(&at_every_width(&[
+        (0.5, 3.0, 0.0),
+        (1.0, 47.6, 0.0),
+        (1.0, 48.2, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 1.04, 0.0),
+    ]))
 }
 
 /// The ink box of the letter `id`: (left, right, top, bottom), page
@@ -2135,27 +2126,13 @@ fn the_crank_pin_loads_quarters_letters_stand_an_em_from_o_and_their_leaders_off
 /// default, r = 1 with l = 2.97, e = −1.2; l = 3.18, e = −1.79; l = 3.83,
 /// e = −1.63; l = 40), on its four page widths: (what, SVG).
 fn twelfth_review_load_figures() -> Vec<(String, String)> {
-    let mut cases = Vec::new();
-    for (r, l, e) in [
+    load_figures(&at_every_width(&[
         (0.5, 3.0, 0.0),
         (1.0, 2.97, -1.2),
         (1.0, 3.18, -1.79),
         (1.0, 3.83, -1.63),
         (1.0, 40.0, 0.0),
-    ] {
-        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
-            cases.push((r, l, e, width));
-        }
-    }
-    common::in_threads(&cases, |&(r, l, e, width)| {
-        let mut o = match width {
-            Some(w) => common::on_page(w, None),
-            None => FigureOptions::default(),
-        };
-        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
-        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
-        (format!("r {r} l {l} e {e} on {width:?}"), svg)
-    })
+    ]))
 }
 
 /// Whether the segments `a`–`b` and `c`–`d` cross.
@@ -2299,25 +2276,13 @@ fn the_crank_pin_loads_two_curves_jumps_never_run_on_one_line() {
 /// l = 3.35 with e = 1.72, each on its four page widths): (what, SVG).
 fn thirteenth_review_load_figures() -> Vec<(String, String)> {
     let mut cases = vec![(0.5, 3.0, 0.0, None)];
-    for (r, l, e) in [
+    cases.extend(at_every_width(&[
         (1.0, 46.2, 0.0),
         (1.0, 31.7, 0.0),
         (1.0, 2.32, -0.685),
         (1.0, 3.35, 1.72),
-    ] {
-        for width in [None, Some("120mm"), Some("4.5in"), Some("500")] {
-            cases.push((r, l, e, width));
-        }
-    }
-    common::in_threads(&cases, |&(r, l, e, width)| {
-        let mut o = match width {
-            Some(w) => common::on_page(w, None),
-            None => FigureOptions::default(),
-        };
-        o.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
-        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
-        (format!("r {r} l {l} e {e} on {width:?}"), svg)
-    })
+    ]));
+    load_figures(&cases)
 }
 
 /// The page centre of the pole's × of `panel`.
@@ -2460,23 +2425,14 @@ fn the_crank_pin_loads_knot_of_lettered_marks_is_read_in_a_detail() {
 /// the default, r = 1 with l = 1.05 on 500 units and 120 mm, l = 1.09 on
 /// 120 mm, l = 31.3 on the default page and 4.5 in: (what, SVG).
 fn fifteenth_review_load_figures() -> Vec<(String, String)> {
-    let cases = [
-        (0.5, 3.0, None),
-        (1.0, 1.05, Some("500")),
-        (1.0, 1.05, Some("120mm")),
-        (1.0, 1.09, Some("120mm")),
-        (1.0, 31.3, None),
-        (1.0, 31.3, Some("4.5in")),
-    ];
-    common::in_threads(&cases, |&(r, l, width)| {
-        let mut o = match width {
-            Some(w) => common::on_page(w, None),
-            None => FigureOptions::default(),
-        };
-        o.mechanism = Some(SliderCrank::new(r, l, 0.0).unwrap());
-        let svg = to_svg(&FigureName::CrankPinLoads.figure(&o).unwrap());
-        (format!("r {r} l {l} on {width:?}"), svg)
-    })
+    load_figures(&[
+        (0.5, 3.0, 0.0, None),
+        (1.0, 1.05, 0.0, Some("500")),
+        (1.0, 1.05, 0.0, Some("120mm")),
+        (1.0, 1.09, 0.0, Some("120mm")),
+        (1.0, 31.3, 0.0, None),
+        (1.0, 31.3, 0.0, Some("4.5in")),
+    ])
 }
 
 /// The page centres of every mark of `panel` (both curves'), by id.
