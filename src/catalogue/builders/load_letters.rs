@@ -392,15 +392,15 @@ impl Letters {
             .min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2)))?;
         self.boxes.push(b);
         let (a, end) = self.leader(b, from);
-        self.leaders.push((a, end));
         // Drawn on to its dot, the last unit and a half along the same
-        // line.
+        // line, and kept clear of by the leaders after it as drawn.
         let on = LEADER_END / self.scale;
         let end = if (from - a).norm() > on {
             from - (from - a) * (on / (from - a).norm())
         } else {
             end
         };
+        self.leaders.push((a, end));
         Some(Led {
             items: [
                 self.text(b, text, id),
