@@ -28,7 +28,7 @@ pub struct GalleryRequest {
     /// Only these figures, by name, in this order (the tables and the
     /// index are always made); not with `manifest`, which names its own.
     /// An entry may itself list several names separated by commas, as the
-    /// command line's `--only` and a Python string give them.
+    /// command line and a Python string give them.
     pub only: Option<Vec<String>>,
 }
 
@@ -107,7 +107,7 @@ mod tests {
             g.figures(),
             [FigureName::Fig66Kisch, FigureName::Fig63Velocity]
         );
-        // One entry listing several, as `--only` gives them.
+        // One entry listing several, as the command line gives them.
         let r = GalleryRequest {
             only: Some(vec!["fig-67-example, fig-66-kisch".into()]),
             ..Default::default()
