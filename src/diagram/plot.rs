@@ -5,8 +5,8 @@
 use super::{Axis, Curve, Method, Scale, TraceOptions, trace};
 use crate::error::{Error, Field, Result};
 use crate::figure::{
-    Align, AxisRecord, AxisScale, Dash, Font, Item, PageFromWorld, PageRect, Panel, PathBuilder,
-    PlotRecord, RichText, Role, Shape, Symbol, TextSize,
+    Align, AxisRecord, AxisScale, Dash, Font, Item, PageFromWorld, Panel, PathBuilder, PlotRecord,
+    RichText, Role, Shape, Symbol, TextSize,
 };
 use crate::geom::{Frame, Point, Vector};
 use std::ops::RangeInclusive;
@@ -88,8 +88,8 @@ struct Block {
 #[derive(Debug, Clone)]
 pub struct Plot {
     name: String,
-    rect: PageRect,
-    area: PageRect,
+    rect: Frame,
+    area: Frame,
     axes: Option<(Axis, Axis)>,
     map: PageFromWorld,
     tolerance: f64,
@@ -128,13 +128,14 @@ const PIECES_MEET: f64 = 1e-3;
 
 const LIMIT_ADVICE: &str = "a mechanism this close to its limit of assembly (rod = crank + |offset|) changes too fast to draw: give a longer rod or a smaller offset, or data that vary less";
 
-fn too_small(rect: &PageRect) -> Error {
+fn too_small(rect: &Frame) -> Error {
     Error::OutOfRange {
         name: Field::PanelWidth,
-        value: rect.width,
+        value: rect.width(),
         reason: format!(
             "a plot panel of {} × {} leaves no room for its plot",
-            rect.width, rect.height
+            rect.width(),
+            rect.height()
         ),
     }
 }
@@ -148,7 +149,7 @@ impl Plot {
     /// 40 × 40 units or the tolerance is not positive.
     pub fn new(
         name: &str,
-        rect: PageRect,
+        rect: Frame,
         x: Axis,
         y: Axis,
         tolerance: f64,
@@ -171,22 +172,22 @@ impl Plot {
             .find_map(|t| t.label.clone())
             .unwrap_or_default();
         let right = 0.5 * RichText::parse(&last_x).width(font, TICK_TEXT) + 8.0;
-        let area = PageRect::new(
-            rect.x + left,
-            rect.y + TOP,
-            rect.width - left - right,
-            rect.height - TOP - BOTTOM - CAPTION,
+        let area = Frame::from_origin_size(
+            rect.min().x + left,
+            rect.min().y + TOP,
+            rect.width() - left - right,
+            rect.height() - TOP - BOTTOM - CAPTION,
         );
-        if area.width < 40.0 || area.height < 40.0 {
+        if area.width() < 40.0 || area.height() < 40.0 {
             return Err(too_small(&rect));
         }
         let (x0, x1) = x.world_range();
         let (y0, y1) = y.world_range();
         let map = PageFromWorld::axes(
-            area.width / (x1 - x0),
-            -area.height / (y1 - y0),
+            area.width() / (x1 - x0),
+            -area.height() / (y1 - y0),
             Point::new(x0, y0),
-            Point::new(area.x, area.y + area.height),
+            Point::new(area.min().x, area.max().y),
         )
         .ok_or_else(|| Error::OutOfRange {
             name: Field::AxisRange,
@@ -221,15 +222,20 @@ impl Plot {
     /// non-positive tolerance.
     pub fn world(
         name: &str,
-        rect: PageRect,
+        rect: Frame,
         world: &Frame,
         mirror: bool,
         tolerance: f64,
         font: Font,
     ) -> Result<Self> {
         let tolerance = crate::error::positive(Field::Tolerance, tolerance)?;
-        let area = PageRect::new(rect.x, rect.y, rect.width, rect.height - CAPTION);
-        if area.width < 40.0 || area.height < 40.0 {
+        let area = Frame::from_origin_size(
+            rect.min().x,
+            rect.min().y,
+            rect.width(),
+            rect.height() - CAPTION,
+        );
+        if area.width() < 40.0 || area.height() < 40.0 {
             return Err(too_small(&rect));
         }
         let map = PageFromWorld::fit(world, &area, mirror).ok_or_else(|| Error::OutOfRange {
@@ -247,8 +253,8 @@ impl Plot {
     /// `font`.
     pub(crate) fn with_map(
         name: &str,
-        rect: PageRect,
-        area: PageRect,
+        rect: Frame,
+        area: Frame,
         map: PageFromWorld,
         tolerance: f64,
         font: Font,
@@ -326,11 +332,19 @@ impl Plot {
     /// with it). Where that would leave the area under 40 units wide, the
     /// legend stays in a corner.
     fn with_legend_beside(mut self, width: f64) -> Self {
-        let narrower = self.area.width - width - LEGEND_GAP;
+        let narrower = self.area.width() - width - LEGEND_GAP;
         if narrower >= 40.0 {
-            self.area = PageRect::new(self.area.x, self.area.y, narrower, self.area.height);
+            self.area = Frame::from_origin_size(
+                self.area.min().x,
+                self.area.min().y,
+                narrower,
+                self.area.height(),
+            );
             self.remap();
-            self.legend_at = Some(Point::new(self.area.x + narrower + LEGEND_GAP, self.area.y));
+            self.legend_at = Some(Point::new(
+                self.area.min().x + narrower + LEGEND_GAP,
+                self.area.min().y,
+            ));
         }
         self
     }
@@ -341,13 +355,18 @@ impl Plot {
     /// Where that would leave the area under 40 units tall, the legend
     /// stays in a corner.
     fn with_legend_below(mut self, (width, height): (f64, f64)) -> Self {
-        let lower = self.area.height - height - LEGEND_GAP;
+        let lower = self.area.height() - height - LEGEND_GAP;
         if lower >= 40.0 {
-            self.area = PageRect::new(self.area.x, self.area.y, self.area.width, lower);
+            self.area = Frame::from_origin_size(
+                self.area.min().x,
+                self.area.min().y,
+                self.area.width(),
+                lower,
+            );
             self.remap();
             self.legend_at = Some(Point::new(
-                self.area.x + 0.5 * (self.area.width - width),
-                self.area.y + lower + BOTTOM + 0.5 * LEGEND_GAP,
+                self.area.min().x + 0.5 * (self.area.width() - width),
+                self.area.min().y + lower + BOTTOM + 0.5 * LEGEND_GAP,
             ));
         }
         self
@@ -372,12 +391,12 @@ impl Plot {
             _ => text.wrap(self.font, CAPTION_TEXT, self.caption_room()),
         };
         let extra = CAPTION_LINE * (lines.len() - 1) as f64;
-        if extra > 0.0 && self.area.height - extra >= 40.0 {
-            self.area = PageRect::new(
-                self.area.x,
-                self.area.y,
-                self.area.width,
-                self.area.height - extra,
+        if extra > 0.0 && self.area.height() - extra >= 40.0 {
+            self.area = Frame::from_origin_size(
+                self.area.min().x,
+                self.area.min().y,
+                self.area.width(),
+                self.area.height() - extra,
             );
             self.remap();
             self.caption = lines;
@@ -390,9 +409,9 @@ impl Plot {
     /// The widest caption line centred under the plot area that stays
     /// 4 units inside the panel.
     fn caption_room(&self) -> f64 {
-        let centre = self.area.x + 0.5 * self.area.width;
-        let left = centre - self.rect.x;
-        let right = self.rect.x + self.rect.width - centre;
+        let centre = self.area.min().x + 0.5 * self.area.width();
+        let left = centre - self.rect.min().x;
+        let right = self.rect.max().x - centre;
         2.0 * left.min(right) - 8.0
     }
 
@@ -404,10 +423,10 @@ impl Plot {
                 let (x0, x1) = x.world_range();
                 let (y0, y1) = y.world_range();
                 PageFromWorld::axes(
-                    self.area.width / (x1 - x0),
-                    -self.area.height / (y1 - y0),
+                    self.area.width() / (x1 - x0),
+                    -self.area.height() / (y1 - y0),
                     Point::new(x0, y0),
-                    Point::new(self.area.x, self.area.y + self.area.height),
+                    Point::new(self.area.min().x, self.area.max().y),
                 )
             }
             (None, Some((world, mirror))) => PageFromWorld::fit(world, &self.area, *mirror),
@@ -426,12 +445,12 @@ impl Plot {
 
     /// The panel's rectangle (page units): the area with its axes'
     /// labels, titles and caption.
-    pub fn rect(&self) -> PageRect {
+    pub fn rect(&self) -> Frame {
         self.rect
     }
 
     /// The plot area (page units): curves are clipped to it.
-    pub fn area(&self) -> PageRect {
+    pub fn area(&self) -> Frame {
         self.area
     }
 
@@ -498,7 +517,7 @@ impl Plot {
                 &|t: f64| world(*curve, t),
                 range.clone(),
                 &self.map,
-                &self.area.frame(),
+                &self.area,
                 Method::Cubic,
                 &options,
             )
@@ -548,7 +567,7 @@ impl Plot {
         symbol: Symbol,
         legend: Option<&str>,
     ) {
-        let frame = self.area.frame();
+        let frame = self.area;
         for (k, &(x, y)) in values.iter().enumerate() {
             let Some(w) = self.world_point(x, y) else {
                 continue;
@@ -701,7 +720,7 @@ impl Plot {
         };
         PlotRecord {
             panel: self.panel_id(),
-            area: [r.x, r.y, r.width, r.height],
+            area: [r.min().x, r.min().y, r.width(), r.height()],
             x: self.axes.as_ref().map(|(x, _)| axis(x)),
             y: self.axes.as_ref().map(|(_, y)| axis(y)),
         }
@@ -816,7 +835,7 @@ impl Plot {
     fn axis_items(&self, x: &Axis, y: &Axis) -> Vec<Item> {
         let n = &self.name;
         let a = self.area;
-        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
+        let (left, right, top, bottom) = (a.min().x, a.max().x, a.min().y, a.max().y);
         let mut items = vec![
             self.segment(
                 format!("{n}-axis-x"),
@@ -861,7 +880,7 @@ impl Plot {
         ));
         items.push(self.text(
             format!("{n}-title-y"),
-            Point::new(self.rect.x + 2.0, top - 19.0),
+            Point::new(self.rect.min().x + 2.0, top - 19.0),
             y.title().clone(),
             Align::Start,
             TextSize::Small,
@@ -874,7 +893,7 @@ impl Plot {
     fn x_ticks(&self, x: &Axis, items: &mut Vec<Item>, marks: &mut Marks) {
         let n = &self.name;
         let a = self.area;
-        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
+        let (left, right, top, bottom) = (a.min().x, a.max().x, a.min().y, a.max().y);
         let px = |v: f64| x.world(v).map(|w| self.map.apply(Point::new(w, 0.0)).x);
         let x_ticks = self.thinned(x, &px, left, right, Direction::Across);
         for (k, t) in x_ticks.iter().enumerate() {
@@ -913,7 +932,7 @@ impl Plot {
     fn y_ticks(&self, y: &Axis, items: &mut Vec<Item>, marks: &mut Marks) {
         let n = &self.name;
         let a = self.area;
-        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
+        let (left, right, top, bottom) = (a.min().x, a.max().x, a.min().y, a.max().y);
         let py = |v: f64| y.world(v).map(|w| self.map.apply(Point::new(0.0, w)).y);
         let y_ticks = self.thinned(y, &py, top, bottom, Direction::Up);
         for (k, t) in y_ticks.iter().enumerate() {
@@ -951,7 +970,7 @@ impl Plot {
     fn zero_lines(&self, x: &Axis, y: &Axis, items: &mut Vec<Item>) {
         let n = &self.name;
         let a = self.area;
-        let (left, right, top, bottom) = (a.x, a.x + a.width, a.y, a.y + a.height);
+        let (left, right, top, bottom) = (a.min().x, a.max().x, a.min().y, a.max().y);
         let px = |v: f64| x.world(v).map(|w| self.map.apply(Point::new(w, 0.0)).x);
         let py = |v: f64| y.world(v).map(|w| self.map.apply(Point::new(0.0, w)).y);
         if let Some(p) = py(0.0).filter(|p| *p > top + 0.5 && *p < bottom - 0.5)
@@ -998,14 +1017,14 @@ impl Plot {
         let a = self.area;
         let inset = 8.0;
         let xs = [
-            a.x + a.width - inset - width,
-            a.x + inset,
-            a.x + 0.5 * (a.width - width),
+            a.max().x - inset - width,
+            a.min().x + inset,
+            a.min().x + 0.5 * (a.width() - width),
         ];
         let ys = [
-            a.y + inset,
-            a.y + a.height - inset - height,
-            a.y + 0.5 * (a.height - height),
+            a.min().y + inset,
+            a.max().y - inset - height,
+            a.min().y + 0.5 * (a.height() - height),
         ];
         let mut best: Option<(f64, Point, usize)> = None;
         for (j, y) in ys.iter().enumerate() {
@@ -1039,7 +1058,9 @@ impl Plot {
                 }
             }
         }
-        best.map_or((Point::new(a.x, a.y), 0), |(_, lo, count)| (lo, count))
+        best.map_or((Point::new(a.min().x, a.min().y), 0), |(_, lo, count)| {
+            (lo, count)
+        })
     }
 
     /// The items of `block` set with its top left corner at `lo` in a box
@@ -1117,14 +1138,14 @@ impl Plot {
         if self.corner(width, height, &[]).1 == 0 {
             return self;
         }
-        let wide = 2.0 * width > self.area.width;
+        let wide = 2.0 * width > self.area.width();
         let plot = match wide {
             true => self.with_legend_below((width, height)),
             false => self,
         };
         // Below takes a wide legend; beside, a legend that leaves the
         // plot at least half its width.
-        match plot.legend_at.is_none() && 2.0 * width <= plot.area.width - LEGEND_GAP {
+        match plot.legend_at.is_none() && 2.0 * width <= plot.area.width() - LEGEND_GAP {
             true => plot.with_legend_beside(width),
             false => plot,
         }
@@ -1172,8 +1193,8 @@ impl Plot {
         let last = lines.len().saturating_sub(1);
         for (i, line) in lines.into_iter().enumerate() {
             let up = CAPTION_LINE * (last - i) as f64;
-            let y = self.rect.y + self.rect.height - 0.5 * CAPTION - up;
-            let x = self.area.x + 0.5 * self.area.width;
+            let y = self.rect.max().y - 0.5 * CAPTION - up;
+            let x = self.area.min().x + 0.5 * self.area.width();
             let id = match i {
                 0 => format!("{}-caption", self.name),
                 _ => format!("{}-caption-{}", self.name, i + 1),
@@ -1227,7 +1248,7 @@ mod tests {
         let y = Axis::nice("y", -1.0, 1.0).unwrap();
         Plot::new(
             "p",
-            PageRect::new(0.0, 0.0, 400.0, 300.0),
+            Frame::from_origin_size(0.0, 0.0, 400.0, 300.0),
             x,
             y,
             0.01,
@@ -1242,8 +1263,8 @@ mod tests {
         let a = p.area();
         let lo = p.map().apply(Point::new(0.0, -1.0));
         let hi = p.map().apply(Point::new(360.0, 1.0));
-        assert!((lo - Point::new(a.x, a.y + a.height)).norm() < 1e-9);
-        assert!((hi - Point::new(a.x + a.width, a.y)).norm() < 1e-9);
+        assert!((lo - Point::new(a.min().x, a.max().y)).norm() < 1e-9);
+        assert!((hi - Point::new(a.max().x, a.min().y)).norm() < 1e-9);
     }
 
     #[test]
@@ -1293,7 +1314,7 @@ mod tests {
         assert!(
             Plot::new(
                 "p",
-                PageRect::new(0.0, 0.0, 60.0, 60.0),
+                Frame::from_origin_size(0.0, 0.0, 60.0, 60.0),
                 x,
                 y,
                 0.01,
@@ -1309,7 +1330,7 @@ mod tests {
         let y = Axis::log("n", 1.0, 1e4).unwrap();
         let mut p = Plot::new(
             "b",
-            PageRect::new(0.0, 0.0, 400.0, 300.0),
+            Frame::from_origin_size(0.0, 0.0, 400.0, 300.0),
             x,
             y,
             0.01,

@@ -35,4 +35,4 @@ pub(crate) use style::{
 pub use text::{
     MAX_TITLE_CHARS, RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Title,
 };
-pub use transform::{PageFromWorld, PageRect};
+pub use transform::PageFromWorld;

@@ -2,8 +2,8 @@
 //! each with a role and a stable id.
 
 use super::Style;
-use super::{Font, Metadata, PageFromWorld, PageRect, PageUnit, Path, RichText, Title};
-use crate::geom::{Point, Vector};
+use super::{Font, Metadata, PageFromWorld, PageUnit, Path, RichText, Title};
+use crate::geom::{Frame, Point, Vector};
 
 /// What a primitive is, which fixes how it is drawn (line weight, dash,
 /// colour in the handout style) and its stacking order.
@@ -431,7 +431,7 @@ impl Item {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Panel {
     id: String,
-    rect: PageRect,
+    rect: Frame,
     transform: PageFromWorld,
     items: Vec<Item>,
     clipped: bool,
@@ -441,7 +441,7 @@ impl Panel {
     /// A panel; items are drawn by role, then in the order given.
     pub fn new(
         id: impl Into<String>,
-        rect: PageRect,
+        rect: Frame,
         transform: PageFromWorld,
         items: Vec<Item>,
     ) -> Self {
@@ -472,7 +472,7 @@ impl Panel {
     }
 
     /// Where it sits on the page.
-    pub fn rect(&self) -> &PageRect {
+    pub fn rect(&self) -> &Frame {
         &self.rect
     }
 
@@ -510,11 +510,11 @@ impl Panel {
             .collect();
         Some(Self {
             id: self.id.clone(),
-            rect: PageRect::new(
-                self.rect.x + dx,
-                self.rect.y + dy,
-                self.rect.width,
-                self.rect.height,
+            rect: Frame::from_origin_size(
+                self.rect.min().x + dx,
+                self.rect.min().y + dy,
+                self.rect.width(),
+                self.rect.height(),
             ),
             transform,
             items,
@@ -681,7 +681,7 @@ impl Figure {
                 lines: vec![text],
             }
         };
-        let rect = PageRect::new(0.0, self.height, self.width, TITLE_BAND);
+        let rect = Frame::from_origin_size(0.0, self.height, self.width, TITLE_BAND);
         self.panels.push(Panel::new(
             "panel-title",
             rect,
@@ -709,7 +709,7 @@ mod tests {
 
     #[test]
     fn a_second_title_replaces_the_first_and_keeps_the_drawing() {
-        let rect = PageRect::new(0.0, 0.0, 400.0, 300.0);
+        let rect = Frame::from_origin_size(0.0, 0.0, 400.0, 300.0);
         let dot = Item::new(
             "point-A",
             Role::Link,

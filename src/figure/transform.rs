@@ -2,49 +2,6 @@
 
 use crate::geom::{Frame, Point, Vector};
 
-/// A rectangle of the page, in page units (SVG user units, y down).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct PageRect {
-    /// Left edge.
-    pub x: f64,
-    /// Top edge.
-    pub y: f64,
-    /// Width (≥ 0).
-    pub width: f64,
-    /// Height (≥ 0).
-    pub height: f64,
-}
-
-impl PageRect {
-    /// The rectangle with top-left corner `(x, y)` and the given size.
-    pub fn new(x: f64, y: f64, width: f64, height: f64) -> Self {
-        Self {
-            x,
-            y,
-            width,
-            height,
-        }
-    }
-
-    /// The rectangle as a [`Frame`] of page points.
-    pub fn frame(&self) -> Frame {
-        Frame::new(
-            Point::new(self.x, self.y),
-            Point::new(self.x + self.width, self.y + self.height),
-        )
-    }
-
-    /// Whether `p` lies inside (boundary included).
-    pub fn contains(&self, p: Point) -> bool {
-        self.frame().contains(p)
-    }
-
-    /// The centre.
-    pub fn centre(&self) -> Point {
-        Point::new(self.x + 0.5 * self.width, self.y + 0.5 * self.height)
-    }
-}
-
 /// `page = (a x + c y + e, b x + d y + f)`: the six numbers of an SVG
 /// `matrix(a b c d e f)`, invertible by construction.
 ///
@@ -136,12 +93,12 @@ impl PageFromWorld {
 
     /// The largest uniform map that shows the world rectangle `world` whole
     /// inside `page`, centred; `None` if either is empty or not finite.
-    pub fn fit(world: &Frame, page: &PageRect, mirror: bool) -> Option<Self> {
+    pub fn fit(world: &Frame, page: &Frame, mirror: bool) -> Option<Self> {
         let size = world.max() - world.min();
-        if !(size.x > 0.0 && size.y > 0.0 && page.width > 0.0 && page.height > 0.0) {
+        if !(size.x > 0.0 && size.y > 0.0 && page.width() > 0.0 && page.height() > 0.0) {
             return None;
         }
-        let scale = (page.width / size.x).min(page.height / size.y);
+        let scale = (page.width() / size.x).min(page.height() / size.y);
         let centre = nalgebra::center(&world.min(), &world.max());
         Self::uniform(scale, mirror, centre, page.centre())
     }
@@ -199,9 +156,9 @@ impl PageFromWorld {
 
     /// The world rectangle that the page rectangle shows (exact for an
     /// axis-aligned map; the bounding box of the corners' images otherwise).
-    pub fn world_frame(&self, page: &PageRect) -> Frame {
-        let p = self.invert(Point::new(page.x, page.y));
-        let q = self.invert(Point::new(page.x + page.width, page.y + page.height));
+    pub fn world_frame(&self, page: &Frame) -> Frame {
+        let p = self.invert(Point::new(page.min().x, page.min().y));
+        let q = self.invert(Point::new(page.max().x, page.max().y));
         Frame::new(p, q)
     }
 }
@@ -231,7 +188,7 @@ mod tests {
     #[test]
     fn fit_centres_and_keeps_aspect() {
         let world = Frame::new(Point::new(0.0, 0.0), Point::new(4.0, 1.0));
-        let page = PageRect::new(10.0, 10.0, 400.0, 400.0);
+        let page = Frame::from_origin_size(10.0, 10.0, 400.0, 400.0);
         let t = PageFromWorld::fit(&world, &page, false).unwrap();
         assert_eq!(t.scale(), 100.0);
         assert_eq!(t.apply(Point::new(2.0, 0.5)), Point::new(210.0, 210.0));
@@ -243,7 +200,7 @@ mod tests {
     #[test]
     fn degenerate_maps_are_refused() {
         let empty = Frame::new(Point::new(1.0, 1.0), Point::new(1.0, 3.0));
-        let page = PageRect::new(0.0, 0.0, 10.0, 10.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 10.0, 10.0);
         assert!(PageFromWorld::fit(&empty, &page, false).is_none());
         assert!(PageFromWorld::axes(0.0, 1.0, Point::origin(), Point::origin()).is_none());
         assert!(

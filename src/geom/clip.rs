@@ -38,6 +38,35 @@ impl Frame {
         Self { min, max }
     }
 
+    /// The rectangle with its least corner at `(x, y)` (on a page, whose y
+    /// runs down, the top left) and the given size: the figure's panels and
+    /// page regions. The corners are not reordered: a negative size gives a
+    /// frame with its corners crossed (see [`Frame::from_corners`]).
+    pub fn from_origin_size(x: f64, y: f64, width: f64, height: f64) -> Self {
+        Self {
+            min: Point::new(x, y),
+            max: Point::new(x + width, y + height),
+        }
+    }
+
+    /// The extent along x (negative for corners crossed on x).
+    pub fn width(&self) -> f64 {
+        self.max.x - self.min.x
+    }
+
+    /// The extent along y (negative for corners crossed on y).
+    pub fn height(&self) -> f64 {
+        self.max.y - self.min.y
+    }
+
+    /// The centre, halfway between the corners.
+    pub fn centre(&self) -> Point {
+        Point::new(
+            self.min.x + 0.5 * self.width(),
+            self.min.y + 0.5 * self.height(),
+        )
+    }
+
     /// Lower-left corner.
     pub fn min(&self) -> Point {
         self.min

@@ -96,7 +96,7 @@ pub(super) fn only_the_mechanism(fitted: &Figure) -> Figure {
     };
     let items = panel.items().iter().filter(|i| keep(i)).cloned().collect();
     let rect = *panel.rect();
-    let height = (rect.y + rect.height + rect.y).min(fitted.height());
+    let height = (rect.max().y + rect.min().y).min(fitted.height());
     let panel = Panel::new(panel.id(), rect, *panel.transform(), items);
     Figure::new(
         fitted.name(),
@@ -163,11 +163,8 @@ pub(super) fn grid(panel: &Panel, step: f64) -> Element {
     let rect = panel.rect();
     let map = panel.transform();
     let corners = [
-        map.invert(crate::geom::Point::new(rect.x, rect.y)),
-        map.invert(crate::geom::Point::new(
-            rect.x + rect.width,
-            rect.y + rect.height,
-        )),
+        map.invert(crate::geom::Point::new(rect.min().x, rect.min().y)),
+        map.invert(crate::geom::Point::new(rect.max().x, rect.max().y)),
     ];
     let (x0, x1) = (
         corners[0].x.min(corners[1].x),
@@ -178,8 +175,8 @@ pub(super) fn grid(panel: &Panel, step: f64) -> Element {
         corners[0].y.max(corners[1].y),
     );
     let mut d = String::new();
-    let (top, bottom) = (rect.y, rect.y + rect.height);
-    let (left, right) = (rect.x, rect.x + rect.width);
+    let (top, bottom) = (rect.min().y, rect.max().y);
+    let (left, right) = (rect.min().x, rect.max().x);
     let mut k = (x0 / step).ceil();
     while k * step <= x1 {
         let x = map.apply(crate::geom::Point::new(k * step, 0.0)).x;

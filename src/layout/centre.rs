@@ -12,8 +12,7 @@ use super::mark::Mark;
 use super::mark::{PathCommand, PathData};
 use super::markup::{arc_beziers, bezier_d, path, polyline_d};
 use crate::figure::{Part, Pen, Role};
-use crate::geom::Frame;
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 
 /// The dash pattern of a centre line: long dash, gap, dot, gap.
 pub(super) const DASH: &str = "14 3 2 3";
@@ -260,7 +259,7 @@ mod tests {
 
     #[test]
     fn a_centre_line_is_known_by_its_part_never_by_its_id() {
-        use crate::figure::{Figure, Item, PageFromWorld, PageRect, Panel, Shape, Style};
+        use crate::figure::{Figure, Item, PageFromWorld, Panel, Shape, Style};
         let line = |id: &str, part: Part| {
             Item::new(
                 id,
@@ -276,7 +275,7 @@ mod tests {
             line("axis", Part::CentreLine),
             line("line-stroke", Part::Plain),
         ];
-        let rect = PageRect::new(0.0, 0.0, 200.0, 100.0);
+        let rect = Frame::from_origin_size(0.0, 0.0, 200.0, 100.0);
         let panel = Panel::new("panel", rect, PageFromWorld::identity(), items);
         let figure = Figure::new(
             "t",

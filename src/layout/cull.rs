@@ -2,8 +2,8 @@
 //! rectangle is not written, since the clip would hide it anyway.
 
 use super::symbol_sizes::ANGLE_RADIUS;
-use crate::figure::{PageFromWorld, PageRect, Shape};
-use crate::geom::{Point, Vector};
+use crate::figure::{PageFromWorld, Shape};
+use crate::geom::{Frame, Point, Vector};
 
 /// Page room around the points of a symbol drawn to page sizes: pins,
 /// dots and markers; arrows' heads; a right-angle mark.
@@ -17,7 +17,7 @@ const LETTER: f64 = 60.0;
 /// mapped to the page, grown by what its symbol adds in page units, meet
 /// the rectangle. Conservative: texts set at fixed places and notes
 /// always show; a shape with a non-finite point is left to its writer.
-pub(super) fn may_show(t: &PageFromWorld, rect: &PageRect, shape: &Shape) -> bool {
+pub(super) fn may_show(t: &PageFromWorld, rect: &Frame, shape: &Shape) -> bool {
     let square = |c: Point, r: f64| {
         [
             c + Vector::new(-r, -r),
@@ -60,10 +60,10 @@ pub(super) fn may_show(t: &PageFromWorld, rect: &PageRect, shape: &Shape) -> boo
         lo = lo.inf(p);
         hi = hi.sup(p);
     }
-    lo.x - room <= rect.x + rect.width
-        && hi.x + room >= rect.x
-        && lo.y - room <= rect.y + rect.height
-        && hi.y + room >= rect.y
+    lo.x - room <= rect.max().x
+        && hi.x + room >= rect.min().x
+        && lo.y - room <= rect.max().y
+        && hi.y + room >= rect.min().y
 }
 
 #[cfg(test)]
@@ -75,7 +75,7 @@ mod tests {
         let t = PageFromWorld::uniform(1.0, false, Point::origin(), Point::origin()).unwrap();
         // The page rectangle about the origin, so that the map's flip of
         // y does not matter.
-        let rect = PageRect::new(-50.0, -50.0, 100.0, 100.0);
+        let rect = Frame::from_origin_size(-50.0, -50.0, 100.0, 100.0);
         let far = Shape::Pin {
             centre: Point::new(500.0, 500.0),
         };

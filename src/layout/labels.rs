@@ -2,7 +2,6 @@
 //! positions around the anchor, scored against nearby segments and boxes.
 
 use super::line_leader::leader_to_line;
-use crate::figure::PageRect;
 use crate::geom::{Frame, Point, Vector, crossing, segment_distance};
 use std::cell::RefCell;
 use std::ops::{ControlFlow, RangeInclusive};
@@ -150,7 +149,7 @@ impl Obstacles {
     /// looks in one bucket of one of two grids (a label larger than
     /// [`MOST_REACH`], in a few). Up to [`FEW`], each label gathers the
     /// obstacles near it once ([`Obstacles::near`]).
-    pub fn build(&mut self, region: &PageRect, halves: &[Vector]) {
+    pub fn build(&mut self, region: &Frame, halves: &[Vector]) {
         self.ordered.append(&mut self.pending);
         let reach = |q: usize| {
             let most = Vector::new(quantile(halves, q, 0), quantile(halves, q, 1));
@@ -622,7 +621,7 @@ pub(crate) fn place(
     gap: f64,
     reach: f64,
     obstacles: &Obstacles,
-    page: &PageRect,
+    page: &Frame,
 ) -> (Point, f64) {
     place_toward(anchor, half, gap, reach, Steer::default(), obstacles, page)
 }
@@ -771,7 +770,7 @@ pub(crate) fn place_toward(
     reach: f64,
     steer: Steer<'_>,
     obstacles: &Obstacles,
-    page: &PageRect,
+    page: &Frame,
 ) -> (Point, f64) {
     let Steer {
         toward,
@@ -812,7 +811,7 @@ pub(crate) fn place_toward(
             // Not only the room about the glyphs is crowded: the glyphs.
             cost += STRUCK;
         }
-        if !page.frame().holds(&b) {
+        if !page.holds(&b) {
             cost += 1e6;
         }
         if nearer_another(&b, anchor, &others, pair)
@@ -955,7 +954,7 @@ mod tests {
         // A horizontal line through the anchor and one going up-right.
         o.segment(Point::new(0.0, 100.0), Point::new(200.0, 100.0));
         o.segment(Point::new(100.0, 100.0), Point::new(200.0, 0.0));
-        let page = PageRect::new(0.0, 0.0, 200.0, 200.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 200.0, 200.0);
         let (c, cost) = place(
             Point::new(100.0, 100.0),
             Vector::new(5.0, 6.0),
@@ -991,7 +990,7 @@ mod tests {
 
     #[test]
     fn a_hollow_box_takes_the_letter_of_its_own_point_only() {
-        let page = PageRect::new(0.0, 0.0, 400.0, 400.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 400.0, 400.0);
         let half = Vector::new(6.0, 7.0);
         let block = Frame::around(Point::new(200.0, 200.0), Vector::new(60.0, 60.0));
         let mut o = Obstacles::default();
@@ -1006,7 +1005,7 @@ mod tests {
 
     #[test]
     fn a_letter_keeps_nearer_its_own_point_than_another() {
-        let page = PageRect::new(0.0, 0.0, 200.0, 200.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 200.0, 200.0);
         let (half, own) = (Vector::new(6.0, 7.0), Point::new(100.0, 100.0));
         // Another point 18 units above-right, where the first direction
         // tried (above-right) would put the letter.
@@ -1059,7 +1058,7 @@ mod tests {
         let half = Vector::new(10.0, 5.0);
         let (o, page) = (
             Obstacles::default(),
-            PageRect::new(-100.0, -100.0, 300.0, 200.0),
+            Frame::from_origin_size(-100.0, -100.0, 300.0, 200.0),
         );
         let at = |dimensions: &[Segment]| {
             let steer = Steer {
@@ -1096,7 +1095,7 @@ mod tests {
         );
         // Steered by it, a place by the joint goes beside the rod.
         let o = Obstacles::default();
-        let page = PageRect::new(0.0, 0.0, 300.0, 200.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 300.0, 200.0);
         let steer = Steer {
             line: Some((rod, &crank)),
             ..Steer::default()
@@ -1125,10 +1124,10 @@ mod tests {
     #[test]
     fn labels_avoid_each_other_and_the_page_edge() {
         let mut o = Obstacles::default();
-        let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 100.0, 100.0);
         let half = Vector::new(5.0, 6.0);
         let (a, _) = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
-        assert!(page.frame().holds(&Frame::around(a, half)));
+        assert!(page.holds(&Frame::around(a, half)));
         let mark = o.mark();
         o.boxed(Frame::around(a, half));
         let (b, _) = place(Point::new(95.0, 5.0), half, 4.0, 24.0, &o, &page);
@@ -1155,7 +1154,7 @@ mod tests {
             let y = 8.0 * k as f64 + 2.0;
             o.segment(Point::new(0.0, y), Point::new(100.0, y));
         }
-        let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 100.0, 100.0);
         o.build(&page, &[Vector::new(6.0, 8.0)]);
         let (_, cost) = place(p, Vector::new(6.0, 8.0), 4.0, 20.0, &o, &page);
         assert!(cost >= STRUCK, "{cost}");
@@ -1173,7 +1172,7 @@ mod tests {
         o.set_opens(false);
         o.segment(Point::new(0.0, 80.0), Point::new(100.0, 80.0));
         o.build(
-            &PageRect::new(0.0, 0.0, 100.0, 100.0),
+            &Frame::from_origin_size(0.0, 0.0, 100.0, 100.0),
             &[Vector::new(6.0, 8.0)],
         );
         let half = Vector::new(6.0, 8.0);
@@ -1203,7 +1202,7 @@ mod tests {
     /// The boxes looked at while placing one letter at (50, 50) on `o`,
     /// and where it went.
     fn examined(mut o: Obstacles) -> (u64, Point, f64) {
-        let page = PageRect::new(0.0, 0.0, 100.0, 100.0);
+        let page = Frame::from_origin_size(0.0, 0.0, 100.0, 100.0);
         o.build(&page, &[Vector::new(6.0, 8.0)]);
         EXAMINED.set(0);
         let (at, cost) = place(
@@ -1289,7 +1288,7 @@ mod tests {
                 // A region smaller than the scatter: what lies beyond
                 // falls in the grid's edge cells.
                 o.build(
-                    &PageRect::new(0.0, 0.0, 100.0, 100.0),
+                    &Frame::from_origin_size(0.0, 0.0, 100.0, 100.0),
                     &[
                         Vector::new(3.0, 4.0),
                         Vector::new(1.0, 2.0),

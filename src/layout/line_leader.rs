@@ -5,9 +5,7 @@
 
 use super::labels::{MISREAD, Segment, Steer, place_toward};
 use super::{PanelLayout, Pending, ROOM};
-use crate::figure::PageRect;
-use crate::geom::Frame;
-use crate::geom::{Point, Vector, point_segment_distance};
+use crate::geom::{Frame, Point, Vector, point_segment_distance};
 
 /// How far, in font sizes, a text naming a line looks for a clear place
 /// with a leader: out to 2.5, then 4 em from the line's middle.
@@ -53,7 +51,7 @@ impl PanelLayout<'_> {
         p: &Pending,
         half: Vector,
         cost: f64,
-        room: &PageRect,
+        room: &Frame,
     ) -> Option<((Point, f64), (Point, Point))> {
         let own = p.line?;
         if cost < MISREAD {

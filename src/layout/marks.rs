@@ -9,8 +9,7 @@ use super::text::{starts_italic, text_half, text_node};
 use super::{ALONG_ARC, Ink, PanelLayout, Pending};
 use crate::figure::angle_radius;
 use crate::figure::{Item, PageFromWorld, Pen, RichText, Role, Shape, TextSize};
-use crate::geom::Frame;
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 
 /// Step by which a dimension's text slides along its line off a line
 /// drawn through it, page units.
@@ -374,9 +373,9 @@ mod tests {
     use super::super::text::{BASELINE, text_half};
     use crate::figure::Style;
     use crate::figure::{
-        Figure, Font, Item, PageFromWorld, PageRect, Panel, RichText, Role, Shape, TextSize,
+        Figure, Font, Item, PageFromWorld, Panel, RichText, Role, Shape, TextSize,
     };
-    use crate::geom::{Point, Vector};
+    use crate::geom::{Frame, Point, Vector};
     use crate::render::to_svg;
 
     /// The number after `name="` in the element with `id`.
@@ -393,7 +392,7 @@ mod tests {
     /// The figure of one panel holding `items`, 200 units square, world
     /// and page alike.
     fn one_panel(items: Vec<Item>) -> Figure {
-        let rect = PageRect::new(0.0, 0.0, 200.0, 200.0);
+        let rect = Frame::from_origin_size(0.0, 0.0, 200.0, 200.0);
         let panel = Panel::new("panel", rect, PageFromWorld::identity(), items);
         Figure::new(
             "test",

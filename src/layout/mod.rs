@@ -31,12 +31,9 @@ mod points;
 mod symbol_sizes;
 mod text;
 
-use crate::figure::{
-    Figure, Font, Item, PageFromWorld, PageRect, Panel, Part, RichText, Role, Shape,
-};
+use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Role, Shape};
 use crate::figure::{Pen, Style};
-use crate::geom::Frame;
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 use labels::{NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
 pub use mark::{
     Mark, Paint, PathCommand, PathData, Shape as MarkShape, Stroke, TextAnchor, TextMark,
@@ -315,11 +312,11 @@ fn draw_order(role: Role, shape: &Shape) -> (usize, usize) {
 /// detail's rectangle cannot show left out), then its labels placed in
 /// `room` clear of everything drawn, the lines that open for letters made
 /// with their gaps.
-fn place_panel(panel: &Panel, style: Style, font: Font, room: &PageRect) -> PlacedPanel {
+fn place_panel(panel: &Panel, style: Style, font: Font, room: &Frame) -> PlacedPanel {
     let t = panel.transform();
     let mut w = PanelLayout {
         t,
-        page_width: room.x + room.width,
+        page_width: room.max().x,
         style,
         font,
         obstacles: Obstacles::default(),
@@ -383,7 +380,7 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &PageRect) -> Plac
 /// detail's inside its frame).
 pub fn place(figure: &Figure) -> PlacedFigure<'_> {
     let (w, h) = (figure.width(), figure.height());
-    let page = PageRect::new(2.0, 2.0, w - 4.0, h - 4.0);
+    let page = Frame::from_origin_size(2.0, 2.0, w - 4.0, h - 4.0);
     let panels = (figure.panels().iter())
         .map(|panel| {
             let room = label_room(panel, &page);
@@ -403,7 +400,7 @@ impl PanelLayout<'_> {
     /// labels crossed by what stays once written (a letter on hatching or
     /// on a detail's frame is not: both open for it), then fewer struck
     /// labels, then less cost.
-    fn place_labels(&mut self, room: &PageRect) -> (Vec<Mark>, Vec<Frame>) {
+    fn place_labels(&mut self, room: &Frame) -> (Vec<Mark>, Vec<Frame>) {
         let mut pending = std::mem::take(&mut self.pending);
         let halves: Vec<Vector> = (pending.iter())
             .map(|p| ink_box(&p.text, p.size, self.font).0)
@@ -530,7 +527,7 @@ impl PanelLayout<'_> {
 
     /// The labels placed in the `order` given, each box added to the
     /// obstacles as it is placed.
-    fn placing(&mut self, order: &[&Pending], room: &PageRect) -> Vec<Placed> {
+    fn placing(&mut self, order: &[&Pending], room: &Frame) -> Vec<Placed> {
         order
             .iter()
             .map(|p| {
@@ -735,12 +732,12 @@ fn leader_line(b: &Frame, anchor: Point, reach: f64) -> Option<(Point, Point)> {
 /// Where a panel's labels may go: in the panel, or just outside it (into
 /// the margin) for points near its edge, and always on the `page`. A
 /// clipped panel (a detail) keeps its labels inside.
-fn label_room(panel: &Panel, page: &PageRect) -> PageRect {
+fn label_room(panel: &Panel, page: &Frame) -> Frame {
     let r = panel.rect();
     let out = if panel.is_clipped() { -3.0 } else { 8.0 };
-    let x0 = (r.x - out).max(page.x);
-    let y0 = (r.y - out).max(page.y);
-    let x1 = (r.x + r.width + out).min(page.x + page.width);
-    let y1 = (r.y + r.height + out).min(page.y + page.height);
-    PageRect::new(x0, y0, x1 - x0, y1 - y0)
+    let x0 = (r.min().x - out).max(page.min().x);
+    let y0 = (r.min().y - out).max(page.min().y);
+    let x1 = (r.max().x + out).min(page.max().x);
+    let y1 = (r.max().y + out).min(page.max().y);
+    Frame::from_origin_size(x0, y0, x1 - x0, y1 - y0)
 }

@@ -1,7 +1,8 @@
 //! The placed figure: what the layout decided, for the writers to write.
 
 use super::mark::Mark;
-use crate::figure::{Figure, PageFromWorld, PageRect, Panel};
+use crate::figure::{Figure, PageFromWorld, Panel};
+use crate::geom::Frame;
 
 /// A panel laid out: its id, its page-from-world map (written as the
 /// panel's metadata), the rectangle its marks are clipped to if it is a
@@ -10,7 +11,7 @@ use crate::figure::{Figure, PageFromWorld, PageRect, Panel};
 pub struct PlacedPanel {
     id: String,
     page_from_world: PageFromWorld,
-    clip: Option<PageRect>,
+    clip: Option<Frame>,
     marks: Vec<Mark>,
 }
 
@@ -37,7 +38,7 @@ impl PlacedPanel {
 
     /// The rectangle a detail's marks are clipped to; `None` for a panel
     /// drawn whole.
-    pub fn clip(&self) -> Option<&PageRect> {
+    pub fn clip(&self) -> Option<&Frame> {
         self.clip.as_ref()
     }
 

@@ -123,7 +123,7 @@ fn distance_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
     let (o, i) = dead_centres(&m);
     let far = ((m.rod() + r - m.offset()) * (m.rod() + r + m.offset())).sqrt();
     let near = ((m.rod() - r - m.offset()) * (m.rod() - r + m.offset())).sqrt();
-    let rect = super::PageRect::new(16.0, 16.0, layout.half, ROW);
+    let rect = crate::geom::Frame::from_origin_size(16.0, 16.0, layout.half, ROW);
     let x = Axis::nice(
         &format!(
             "displacement of *A* from the outer dead centre ({})",
@@ -184,7 +184,7 @@ fn time_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
     let (r, omega) = (m.crank(), ctx.omega);
     let w2 = omega * omega;
     let period = std::f64::consts::TAU / omega;
-    let rect = super::PageRect::new(layout.b_at.x, layout.b_at.y, layout.half, ROW);
+    let rect = crate::geom::Frame::from_origin_size(layout.b_at.x, layout.b_at.y, layout.half, ROW);
     let x = Axis::linear("time *t* (s);  θ = ω*t*", 0.0, period)?;
     let headroom = Axis::nice(&f.title, f.lo, f.hi + 0.2 * (f.hi - f.lo))?;
     let mut time = Plot::new("time-base", rect, x, headroom, ctx.tolerance, ctx.font)?
@@ -241,7 +241,7 @@ fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<Plot> {
         Point::new(-1.08 * r, -1.08 * reach),
         Point::new(1.08 * reach, 1.08 * reach),
     );
-    let rect = super::PageRect::new(16.0, layout.c_top, layout.half, tall);
+    let rect = crate::geom::Frame::from_origin_size(16.0, layout.c_top, layout.half, tall);
     let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dotted");
     polar_construction(&mut plot, &ctx.pose(), reach);

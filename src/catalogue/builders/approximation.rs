@@ -7,11 +7,11 @@
 //! the textbook's (velocity and acceleration towards the crank positive),
 //! for an in-line engine.
 
-use super::{Ctx, PageRect, Sheet, against_angle};
+use super::{Ctx, Sheet, against_angle};
 use crate::diagram::{Axis, Curve, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure};
-use crate::geom::Point;
+use crate::geom::{Frame, Point};
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
 
 /// The ratios n = l/r drawn, with their dashes.
@@ -115,7 +115,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             .fold((0.0f64, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
         let x = Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(60.0)?;
         let y = Axis::nice(title, lo, hi)?;
-        let rect = PageRect::new(
+        let rect = Frame::from_origin_size(
             16.0 + (k % 2) as f64 * (width + 16.0),
             16.0 + (k / 2) as f64 * (height + 8.0),
             width,

@@ -23,7 +23,7 @@ use super::{Ctx, Sheet, short, sig};
 use crate::diagram::Plot;
 use crate::dynamics::{InlineEngine, Polygon, default_planes, offset_harmonic};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Frame, Point};
 
 /// The cranks of the engine drawn, degrees ahead of the first's.
@@ -62,7 +62,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut meta = serde_json::Map::new();
     for (k, part) in Polygon::ALL.into_iter().enumerate() {
         let (row, col) = ((k / 2) as f64, (k % 2) as f64);
-        let rect = PageRect::new(
+        let rect = Frame::from_origin_size(
             16.0 + col * (half + 16.0),
             16.0 + row * (tall + 16.0),
             half,
@@ -184,7 +184,7 @@ fn drawn(ctx: &Ctx, engine: &InlineEngine, part: Polygon) -> Drawn {
 /// One polygon: its sides head to tail from the origin, each numbered by
 /// its cylinder, and where it does not close the resultant from the
 /// origin to the last side's end, dashed.
-fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect) -> Result<Plot> {
+fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: Frame) -> Result<Plot> {
     let Drawn {
         corners,
         end,
@@ -199,7 +199,7 @@ fn polygon_plot(ctx: &Ctx, engine: &InlineEngine, part: Polygon, rect: PageRect)
     // A polygon flatter than its area stands at the area's foot, by its
     // caption, the room above it (centred, it stood 55 units above the
     // caption of (b) and (d)).
-    let room = (rect.height - crate::diagram::CAPTION) / rect.width;
+    let room = (rect.height() - crate::diagram::CAPTION) / rect.width();
     let (wide, high) = (world.max().x - world.min().x, world.max().y - world.min().y);
     let world = match wide * room > high {
         true => Frame::new(

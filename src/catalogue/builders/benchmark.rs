@@ -3,11 +3,11 @@
 //! docs/curve-benchmarks.csv (written by `examples/curve_table.rs`), or of
 //! the table given as data.
 
-use super::{Ctx, PageRect, Sheet, Table};
+use super::{Ctx, Sheet, Table};
 use crate::diagram::{Axis, LEGEND_GAP, Plot};
 use crate::error::{Error, Input, Result};
 use crate::figure::{Dash, Figure, Symbol};
-use crate::geom::Point;
+use crate::geom::{Frame, Point};
 
 /// The table the repository ships.
 const TABLE: &str = include_str!("../../../docs/curve-benchmarks.csv");
@@ -93,7 +93,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         ctx,
         &rows,
         PANELS[1],
-        PageRect::new(16.0, 16.0, width, height),
+        Frame::from_origin_size(16.0, 16.0, width, height),
     )?
     .legend_size();
     if columns && tall > SHORT * height {
@@ -102,8 +102,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let room = legend + LEGEND_GAP;
         let width = 0.5 * (page.width() - 48.0 - room);
         let rects = [
-            PageRect::new(16.0, 16.0, width, height),
-            PageRect::new(32.0 + width, 16.0, width + room, height),
+            Frame::from_origin_size(16.0, 16.0, width, height),
+            Frame::from_origin_size(32.0 + width, 16.0, width + room, height),
         ];
         let first = plot(ctx, &rows, PANELS[0], rects[0])?.without_legend();
         sheet.plot(first);
@@ -111,7 +111,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     } else {
         for (k, panel) in PANELS.into_iter().enumerate() {
             let at = place(k);
-            let rect = PageRect::new(at.x, at.y, width, height);
+            let rect = Frame::from_origin_size(at.x, at.y, width, height);
             sheet.plot(plot(ctx, &rows, panel, rect)?);
         }
     }
@@ -174,7 +174,7 @@ fn plot(
     ctx: &Ctx,
     rows: &[Row],
     (name, title, caption, value): Panel,
-    rect: PageRect,
+    rect: Frame,
 ) -> Result<Plot> {
     let mut names: Vec<&str> = Vec::new();
     for r in rows {

@@ -3,13 +3,13 @@
 //! trendline, whose uncentred R² is his 0.9998), the ordinary fit with an
 //! intercept, or both; each with its equation and R².
 
-use super::{Ctx, PageRect, Sheet, Table};
+use super::{Ctx, Sheet, Table};
 use crate::analytic::calibration::{LineFit, NG_TABLE_1, fit_through_origin, fit_with_intercept};
 use crate::catalogue::Fit;
 use crate::diagram::{Axis, Curve, Plot};
 use crate::error::{Input, Result};
 use crate::figure::{Dash, Figure, Symbol};
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 use serde_json::json;
 
 fn equation(fit: &LineFit) -> String {
@@ -53,7 +53,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         all_y.iter().cloned().fold(f64::INFINITY, f64::min),
         all_y.iter().cloned().fold(f64::NEG_INFINITY, f64::max),
     )?;
-    let rect = PageRect::new(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 20.0);
+    let rect =
+        Frame::from_origin_size(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 20.0);
     let mut plot = Plot::new("calibration", rect, x, y, ctx.tolerance, ctx.font)?.with_caption(
         if ctx.options.data.is_some() {
             "Calibration of the force transducer (the data given)"

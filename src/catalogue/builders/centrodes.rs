@@ -16,8 +16,8 @@
 use super::{Ctx, Sheet, short};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, Panel, Part, Role};
-use crate::geom::Point;
+use crate::figure::{Dash, Figure, Item, Panel, Part, Role};
+use crate::geom::{Frame, Point};
 use crate::scene::Layer;
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
@@ -44,7 +44,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     #[allow(clippy::indexing_slicing)]
     let panel = scene.figure()?.panels()[0].clone();
     let r = *panel.rect();
-    let area = PageRect::new(r.x, r.y, r.width, r.height + band);
+    let area = Frame::from_origin_size(r.min().x, r.min().y, r.width(), r.height() + band);
     let items = drawn(&panel);
     let mut plot = Plot::with_map(
         "centrodes",
@@ -70,7 +70,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let panel = Panel::new(panel.id(), *panel.rect(), *panel.transform(), items)
         .with_items(legend.items().iter().cloned());
     sheet.panel(panel);
-    let top = area.y + area.height + 2.0;
+    let top = area.max().y + 2.0;
     sheet.fit(top + notes_height);
     let mut lines = vec![
             format!(

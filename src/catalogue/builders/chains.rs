@@ -260,7 +260,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.meta("slot_radius", json!(chains.rho));
     sheet.meta("virtual_centres", serde_json::Value::Object(centres));
     sheet.plot(plot);
-    let bottom = rect.y + rect.height + 6.0 + extra;
+    let bottom = rect.max().y + 6.0 + extra;
     sheet.height(bottom + NOTES_HEIGHT);
     sheet.notes(Point::new(20.0, bottom), &notes(&chains));
     Ok(sheet.finish())

@@ -8,8 +8,8 @@ use super::{Ctx, Sheet, short};
 use crate::chain::{ConvergenceRow, slot_convergence};
 use crate::diagram::{Axis, Plot};
 use crate::error::{Error, Field, Result};
-use crate::figure::{Dash, Figure, PageRect, Symbol};
-use crate::geom::Point;
+use crate::figure::{Dash, Figure, Symbol};
+use crate::geom::{Frame, Point};
 use crate::mechanism::SliderCrank;
 
 /// Crank angles per turn at which each radius is compared.
@@ -110,7 +110,7 @@ fn plot(ctx: &Ctx, rows: &[ConvergenceRow], radii: &[f64]) -> Result<Plot> {
         floor * 0.1,
         top * 100.0,
     )?;
-    let rect = PageRect::new(
+    let rect = Frame::from_origin_size(
         16.0,
         16.0,
         page.width() - 32.0,

@@ -7,8 +7,8 @@ use crate::angle::Angle;
 use crate::construct::CouplerPoint;
 use crate::diagram::{Curve, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, NOTE_LINE, PageRect, Panel, Role, Shape};
-use crate::geom::{Point, Vector};
+use crate::figure::{Dash, Figure, Item, NOTE_LINE, Panel, Role, Shape};
+use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 
 /// The points drawn: fraction AP/AB, name and dash.
@@ -37,7 +37,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     // The scene's notes go below the legend's band, which lies on the
     // drawing's foot: a narrow page has no room beside them for it.
     let (panel, notes_end) = notes_below(panel, band);
-    let area = PageRect::new(r.x, r.y, r.width, r.height + band);
+    let area = Frame::from_origin_size(r.min().x, r.min().y, r.width(), r.height() + band);
     let mut plot = Plot::with_map(
         "coupler",
         area,
@@ -79,7 +79,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     }
     let drawn = plot.finish();
     sheet.panel(panel.with_items(drawn.items().iter().cloned()));
-    let top = (area.y + area.height).max(notes_end);
+    let top = (area.max().y).max(notes_end);
     match page.fits_width() {
         // The figure's own page: as tall as its drawing, enlarged or not.
         true => sheet.height(top + notes_height + super::MARGIN),
@@ -104,7 +104,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
 /// where it has none).
 fn notes_below(panel: Panel, band: f64) -> (Panel, f64) {
     let r = *panel.rect();
-    let mut end = r.y + r.height;
+    let mut end = r.max().y;
     let items: Vec<Item> = panel
         .items()
         .iter()

@@ -15,7 +15,7 @@
 use super::{Ctx, Sheet, positive_mass, short, sig};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, Part, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Dash, Figure, Item, Part, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Frame, Point, Vector};
 
 /// An arrow shorter than this fraction of its panel's crank is left out
@@ -94,8 +94,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let most = (page.height() - 16.0 - 24.0 - 170.0 - 64.0).max(120.0);
     let tall = (half * 2.6 / 3.65 + crate::diagram::CAPTION).min(most);
     let (pa, sa) = (
-        PageRect::new(16.0, 16.0, half, tall),
-        PageRect::new(32.0 + half, 16.0, half, tall),
+        Frame::from_origin_size(16.0, 16.0, half, tall),
+        Frame::from_origin_size(32.0 + half, 16.0, half, tall),
     );
     sheet.plot(pair_plot(
         ctx,
@@ -111,7 +111,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     )?);
     let band = ctx.band(16.0 + tall + 16.0, 170.0);
     sheet.plot(sum_plot(ctx, &primary, &secondary, exact, band)?);
-    let top = band.y + band.height + 8.0;
+    let top = band.max().y + 8.0;
     sheet.height(top + 64.0 + 16.0);
     sheet.notes(
         Point::new(20.0, top),
@@ -162,7 +162,7 @@ pub(super) fn line(id: &str, role: Role, from: Point, to: Point) -> Item {
 /// (a) or (b): the circle of the cranks, the line of stroke, the direct
 /// and reverse cranks with their angles, their components on the line of
 /// stroke head to tail, and the projections.
-fn pair_plot(ctx: &Ctx, pair: &Pair, rect: PageRect, caption: &str) -> Result<Plot> {
+fn pair_plot(ctx: &Ctx, pair: &Pair, rect: Frame, caption: &str) -> Result<Plot> {
     let f = pair.force;
     let o = Point::origin();
     // Room for the circle and, on its side, the resultant (up to 2f).
@@ -263,7 +263,7 @@ fn angle_marks(plot: &mut Plot, pair: &Pair) {
 /// secondary a little above, where it would run back over the primary),
 /// and below them the exact inertia force, a dashed line joining the
 /// sum's end to it.
-fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: PageRect) -> Result<Plot> {
+fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: Frame) -> Result<Plot> {
     let (a, b) = (p.resultant(), p.resultant() + s.resultant());
     let values = [0.0, a, b, exact];
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);

@@ -8,7 +8,7 @@ use super::{Ctx, Sheet, short};
 use crate::analytic::statics::mu_from_tilt_degrees;
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Result};
-use crate::figure::{Figure, Item, PageRect, RichText, Role, Shape, TextSize};
+use crate::figure::{Figure, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 
 /// The side of the block, world units (the plane is 1 long).
@@ -37,7 +37,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         Point::new(-0.12, -0.06),
         Point::new(incline.foot.x + 0.12, incline.top.y + 0.06),
     );
-    let rect = PageRect::new(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 64.0);
+    let rect =
+        Frame::from_origin_size(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 64.0);
     let mut plot = Plot::world("incline", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(&format!(
             "A block on a plane tilted at φ = {}°, on the point of sliding",

@@ -20,7 +20,7 @@ use crate::construct::{AccelerationPoints, InstantCentre, Kisch, Klein, Velocity
 use crate::diagram::Plot;
 use crate::dynamics::{Engine, EnginePose};
 use crate::error::Result;
-use crate::figure::{Figure, Item, PageRect, Panel, RichText, Role, Shape, TextSize};
+use crate::figure::{Figure, Item, Panel, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::{Layer, torque_arrow};
 
@@ -95,7 +95,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         Some(plot) => {
             let rect = plot.rect();
             sheet.plot(plot);
-            rect.y + rect.height
+            rect.max().y
         }
         None => bottom,
     };
@@ -185,10 +185,10 @@ fn holds_the_arc(panel: &Panel, c: Point) -> bool {
     let p = panel.transform().apply(c);
     let r = panel.rect();
     let reach = TORQUE_RADIUS + 2.0 * ROOM;
-    p.x - r.x >= reach
-        && r.x + r.width - p.x >= reach
-        && p.y - r.y >= reach
-        && r.y + r.height - p.y >= reach
+    p.x - r.min().x >= reach
+        && r.max().x - p.x >= reach
+        && p.y - r.min().y >= reach
+        && r.max().y - p.y >= reach
 }
 
 /// The point of the block's face nearer the crank centre, on the line of
@@ -253,8 +253,8 @@ fn inertia_arrow(
     let edge = |corner: Point| panel.transform().invert(corner).x;
     let r = panel.rect();
     let ends = [
-        edge(Point::new(r.x, r.y)),
-        edge(Point::new(r.x + r.width, r.y)),
+        edge(Point::new(r.min().x, r.min().y)),
+        edge(Point::new(r.max().x, r.min().y)),
     ];
     let beyond = ends.iter().map(|x| (x - far) * -toward).fold(0.0, f64::max) - ROOM / scale;
     let (face, out) = if length <= clear || length > beyond {
@@ -336,7 +336,7 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
     let span = world.max() - world.min();
     let width = TRIANGLE.0.min(ctx.page().width() - 32.0);
     let tall = (width * span.y / span.x).clamp(48.0, TRIANGLE.1);
-    let rect = PageRect::new(
+    let rect = Frame::from_origin_size(
         0.5 * (ctx.page().width() - width),
         top,
         width,

@@ -252,7 +252,7 @@ fn layout(
     ctx: &Ctx,
     chain: &InvertedChain,
     pose: &InversionPose,
-) -> Result<(crate::scene::Page, crate::figure::PageRect, Frame)> {
+) -> Result<(crate::scene::Page, crate::geom::Frame, Frame)> {
     let m = chain.mechanism();
     let turn = padded(extent(m, chain), 0.1);
     let page = ctx.page();
@@ -262,8 +262,8 @@ fn layout(
         return Ok((page, full, turn));
     }
     let size = turn.max() - turn.min();
-    let tall = full.height - crate::diagram::CAPTION;
-    let scale = (full.width / size.x).min(tall / size.y);
+    let tall = full.height() - crate::diagram::CAPTION;
+    let scale = (full.width() / size.x).min(tall / size.y);
     // On a page of a fixed width, room past O_bd would cost the drawing
     // its scale: only a page that fits its width to the drawing has it.
     let world = drawn(m, pose, &turn, EDGE_ROOM / scale, page.fits_width());
@@ -274,7 +274,7 @@ fn layout(
         true => page.with_width(wide.ceil())?,
         false => page,
     };
-    let rect = crate::figure::PageRect::new(
+    let rect = crate::geom::Frame::from_origin_size(
         margin,
         margin,
         page.width() - 2.0 * margin,
@@ -472,9 +472,9 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.meta("driver", json!(letter(inversion.driver())));
     sheet.meta("virtual_centres", centres.to_json());
     sheet.plot(plot);
-    let mut bottom = rect.y + rect.height + 6.0;
+    let mut bottom = rect.max().y + 6.0;
     if let Some((_, detail, _)) = detail {
-        bottom = detail.rect().y + detail.rect().height + 6.0;
+        bottom = detail.rect().max().y + 6.0;
         sheet.detail(detail);
     }
     sheet.height(bottom + NOTES_HEIGHT);
@@ -504,10 +504,10 @@ pub(super) fn crank_window(
     ctx: &Ctx,
     name: &str,
     centre: Point,
-    rect: crate::figure::PageRect,
+    rect: crate::geom::Frame,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
-    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
+    let (w, h) = (rect.width(), rect.height() - crate::diagram::CAPTION);
     let wanted = w.min(h) / (2.0 * CRANK_REACH * ctx.mechanism.crank()) / scale;
     window(ctx, name, (centre, wanted), rect, scale)
 }
@@ -520,7 +520,7 @@ fn window(
     ctx: &Ctx,
     name: &str,
     (centre, wanted): (Point, f64),
-    rect: crate::figure::PageRect,
+    rect: crate::geom::Frame,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
     let steps = super::coriolis::FINE_STEPS;
@@ -535,10 +535,10 @@ pub(super) fn window_at(
     ctx: &Ctx,
     name: &str,
     (centre, magnification): (Point, f64),
-    rect: crate::figure::PageRect,
+    rect: crate::geom::Frame,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
-    let (w, h) = (rect.width, rect.height - crate::diagram::CAPTION);
+    let (w, h) = (rect.width(), rect.height() - crate::diagram::CAPTION);
     let half = Vector::new(w, h) * (0.5 / (magnification * scale));
     let region = Frame::new(centre - half, centre + half);
     let caption = format!("the boxed region enlarged ×{}", short(magnification));
@@ -620,7 +620,7 @@ fn detail_about(
 fn crank_detail(
     ctx: &Ctx,
     pose: &InversionPose,
-    rect: &crate::figure::PageRect,
+    rect: &crate::geom::Frame,
     scale: f64,
     shown: Option<Shown>,
 ) -> Result<Option<(Frame, Plot, Shown)>> {
@@ -632,10 +632,10 @@ fn crank_detail(
     let Some((centre, wanted)) = detail_about(&m, &q, scale, crowding) else {
         return Ok(None);
     };
-    let w = CRANK_DETAIL.0.min(rect.width);
-    let detail_rect = crate::figure::PageRect::new(
-        rect.x + 0.5 * (rect.width - w),
-        rect.y + rect.height + DETAIL_GAP,
+    let w = CRANK_DETAIL.0.min(rect.width());
+    let detail_rect = crate::geom::Frame::from_origin_size(
+        rect.min().x + 0.5 * (rect.width() - w),
+        rect.max().y + DETAIL_GAP,
         w,
         CRANK_DETAIL.1,
     );

@@ -24,7 +24,7 @@ use crate::angle::Angle;
 use crate::diagram::{Curve, Plot};
 use crate::dynamics::{EXAMPLE_MASS, Engine, RodMass, TurningMoment};
 use crate::error::{Error, Field, Input, Result, Wording};
-use crate::figure::{Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
+use crate::figure::{Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
 use crate::geom::{Frame, Point, Vector, cross, perp, unit};
 
 /// The illustrative rod's mass per unit reciprocating mass.
@@ -264,13 +264,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         let area = ((world.max().y - world.min().y) * scale).max(LEAST_AREA);
         let height = area + crate::diagram::CAPTION + extra;
         let rect = if stacked {
-            PageRect::new(16.0, y, half, height)
+            Frame::from_origin_size(16.0, y, half, height)
         } else {
-            PageRect::new(16.0 + k as f64 * (half + 16.0), 16.0, half, height)
+            Frame::from_origin_size(16.0 + k as f64 * (half + 16.0), 16.0, half, height)
         };
         y += height + 16.0;
         if let Some(end) = ends.get_mut(k) {
-            *end = rect.y + height;
+            *end = rect.min().y + height;
         }
         let (mut plot, window) = polar_plot(ctx, drawn, relative, rect, (&world, below), view)?;
         if !relative {
@@ -602,7 +602,7 @@ fn details(
             let under = ends.get(k).copied().unwrap_or(last);
             (half, 16.0 + k as f64 * (half + 16.0), under + DETAIL_GAP)
         };
-        let rect = PageRect::new(x + 0.5 * (slot - size.0), top, size.0, size.1);
+        let rect = Frame::from_origin_size(x + 0.5 * (slot - size.0), top, size.0, size.1);
         // Sampled as finely on the page as the panel's curves, which
         // the letters keep clear of: at 2 a degree, ×6 (l = 47.6 r),
         // a letter cleared the chords and stood on the curve.
@@ -635,10 +635,10 @@ const LEAST_AREA: f64 = 41.0;
 fn caption_extra(ctx: &Ctx, caption: &str, width: f64) -> Result<f64> {
     let tall = 1000.0;
     let probe = Frame::new(Point::origin(), Point::new(1.0, 1.0));
-    let rect = PageRect::new(0.0, 0.0, width, tall);
+    let rect = Frame::from_origin_size(0.0, 0.0, width, tall);
     let plot =
         Plot::world("probe", rect, &probe, false, ctx.tolerance, ctx.font)?.with_caption(caption);
-    Ok((tall - crate::diagram::CAPTION - plot.area().height).max(0.0))
+    Ok((tall - crate::diagram::CAPTION - plot.area().height()).max(0.0))
 }
 
 /// The caption of a panel showing `view` (of the panel relative to the
@@ -670,7 +670,7 @@ fn polar_plot(
     ctx: &Ctx,
     curves: &Curves,
     relative: bool,
-    rect: PageRect,
+    rect: Frame,
     (world, below): (&Frame, f64),
     view: View,
 ) -> Result<(Plot, Option<Window>)> {

@@ -31,10 +31,10 @@ use crate::diagram::DEFAULT_TOLERANCE;
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Input, Result};
 use crate::figure::Style;
-use crate::figure::{EngineRecord, Figure, Font, Metadata, PageRect, Panel, RichText};
+use crate::figure::{EngineRecord, Figure, Font, Metadata, Panel, RichText};
 use crate::figure::{Item, PageFromWorld, Role, Shape};
 use crate::figure::{NOTE_LINE, NOTE_SIZE};
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 use crate::number::format_number;
 pub(crate) use crate::number::{short, sig};
 use crate::scene::{Page, Scene};
@@ -111,9 +111,9 @@ impl Ctx<'_> {
     }
 
     /// The page rectangle inside the margin, from `top` down `height` units.
-    pub fn band(&self, top: f64, height: f64) -> PageRect {
+    pub fn band(&self, top: f64, height: f64) -> Frame {
         let page = self.page();
-        PageRect::new(MARGIN, top, page.width() - 2.0 * MARGIN, height)
+        Frame::from_origin_size(MARGIN, top, page.width() - 2.0 * MARGIN, height)
     }
 
     /// A mechanism scene of this figure's engine at its pose, drawn in the
@@ -402,7 +402,7 @@ impl Sheet {
         self.notes_extra = NOTE_LINE * lines.len().saturating_sub(given) as f64;
         let item = Item::new("note-diagram", Role::Label, Shape::Note { corner, lines });
         let page = self.page;
-        let rect = PageRect::new(
+        let rect = Frame::from_origin_size(
             corner.x,
             corner.y,
             (page.width() - MARGIN - corner.x).max(1.0),
@@ -443,7 +443,7 @@ impl Sheet {
 /// `world` whole across the page's width (less the margins) with a caption
 /// below, no taller than the catalogue's page leaves above notes
 /// `notes_height` tall.
-pub(crate) fn fitted_rect(page: &Page, world: &crate::geom::Frame, notes_height: f64) -> PageRect {
+pub(crate) fn fitted_rect(page: &Page, world: &crate::geom::Frame, notes_height: f64) -> Frame {
     let width = page.width() - 2.0 * MARGIN;
     let most = page.height() - 2.0 * MARGIN - notes_height - crate::diagram::CAPTION;
     let size = world.max() - world.min();
@@ -452,7 +452,7 @@ pub(crate) fn fitted_rect(page: &Page, world: &crate::geom::Frame, notes_height:
     } else {
         most
     };
-    PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION)
+    Frame::from_origin_size(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION)
 }
 
 /// A value of the pose against the crank angle: the point (θ in degrees,

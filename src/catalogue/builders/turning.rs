@@ -19,8 +19,8 @@ use crate::dynamics::{
     TurningMoment, example_indicator,
 };
 use crate::error::{Error, Field, Input, Result, Wording};
-use crate::figure::{Align, Dash, Figure, Item, PageRect, RichText, Role, Shape, Symbol, TextSize};
-use crate::geom::{Point, Vector};
+use crate::figure::{Align, Dash, Figure, Item, RichText, Role, Shape, Symbol, TextSize};
+use crate::geom::{Frame, Point, Vector};
 use crate::units::Units;
 
 /// Step of the tangents' differences, radians.
@@ -658,7 +658,7 @@ fn beside_dimension(
 /// `bottom` (E_min), every 2 units from the middle outwards; or beyond
 /// them, every 2 units from each end out to a box's height more, below
 /// E_min first, inside the plot's `area`. Empty where none is.
-fn heights(along: Along, (top, bottom): (f64, f64), half_high: f64, area: PageRect) -> Vec<f64> {
+fn heights(along: Along, (top, bottom): (f64, f64), half_high: f64, area: Frame) -> Vec<f64> {
     let every = |from: f64, step: f64, n: usize| (0..n).map(move |k| from + step * k as f64);
     match along {
         Along::Between => {
@@ -684,7 +684,7 @@ fn heights(along: Along, (top, bottom): (f64, f64), half_high: f64, area: PageRe
             // (l = 57.9 r on 4.5 in: the eleventh review).
             below
                 .chain(above)
-                .filter(|y| y - half_high >= area.y && y + half_high <= area.y + area.height)
+                .filter(|y| y - half_high >= area.min().y && y + half_high <= area.max().y)
                 .collect()
         }
     }

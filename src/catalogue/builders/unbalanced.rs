@@ -11,8 +11,8 @@
 use super::{Ctx, Sheet, against_angle, extent, positive_mass, short, sig};
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, PageRect};
-use crate::geom::Point;
+use crate::figure::{Dash, Figure};
+use crate::geom::{Frame, Point};
 use crate::mechanism::Pose;
 
 /// The four forces of panel (a) at a pose, each with its derivative per
@@ -80,7 +80,7 @@ fn theta() -> Result<Axis> {
 }
 
 /// (a) The four forces of [`forces`] against θ, `k` = m r ω², in `rect`.
-fn forces_plot(ctx: &Ctx, k: f64, rect: PageRect) -> Result<Plot> {
+fn forces_plot(ctx: &Ctx, k: f64, rect: Frame) -> Result<Plot> {
     let m = ctx.mechanism;
     let values = |p: &Pose| forces(p).map(|f| f.0);
     let (_, high) = extent(&m, |p| {
@@ -114,7 +114,7 @@ fn forces_plot(ctx: &Ctx, k: f64, rect: PageRect) -> Result<Plot> {
 
 /// (b) The exact force less the two terms against θ, in `rect`, and the
 /// largest of it over the turn (721 angles).
-fn remainder_plot(ctx: &Ctx, k: f64, rect: PageRect) -> Result<(Plot, f64)> {
+fn remainder_plot(ctx: &Ctx, k: f64, rect: Frame) -> Result<(Plot, f64)> {
     let remainder = |p: &Pose| {
         let [_, _, sum, exact] = forces(p);
         (k * (exact.0 - sum.0), k * (exact.1 - sum.1))

@@ -12,7 +12,7 @@
 use super::{Ctx, PER_DEGREE, Sheet, against_time, dead_centres, extent, short, sig};
 use crate::diagram::{Axis, Curve, Locus, LocusKind, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, PageRect, Panel, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, Panel, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
@@ -68,12 +68,17 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     // scene's notes, at the left with them (at the right it read as the
     // time graph's legend below it).
     let r = *panel.rect();
-    let band = if r.height < FLAT || r.width < NARROW {
+    let band = if r.height() < FLAT || r.width() < NARROW {
         Plot::band(2)
     } else {
         0.0
     };
-    let area = PageRect::new(r.x, r.y, r.width, TOP + grown + band - r.y);
+    let area = Frame::from_origin_size(
+        r.min().x,
+        r.min().y,
+        r.width(),
+        TOP + grown + band - r.min().y,
+    );
     let plot = Plot::with_map(
         "mechanism",
         r,
@@ -114,7 +119,12 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     // Within a unit of the rectangle: the frame's corners round to it.
     let holds = |d: &Panel, p: Point| {
         let r = d.rect();
-        let grown = PageRect::new(r.x - 1.0, r.y - 1.0, r.width + 2.0, r.height + 2.0);
+        let grown = Frame::from_origin_size(
+            r.min().x - 1.0,
+            r.min().y - 1.0,
+            r.width() + 2.0,
+            r.height() + 2.0,
+        );
         grown.contains(d.transform().apply(p))
     };
     let of_loops = |d: &Panel| holds(d, frame.min()) && holds(d, frame.max());

@@ -2,9 +2,7 @@
 //! in their order, the shapes that pass through its cell, so that a box
 //! looks only at the buckets it covers.
 
-use crate::figure::PageRect;
-use crate::geom::Frame;
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 use std::ops::RangeInclusive;
 
 /// A shape put in the grid: a segment (by its ends) or a box.
@@ -82,9 +80,9 @@ impl Grid {
     /// every cell within `reach` of it, about one shape a cell (cells no
     /// smaller than [`LEAST_CELL`]). A region that is empty or not finite
     /// makes one cell holding every shape.
-    pub fn new(region: &PageRect, reach: Vector, shapes: &[Shape]) -> Self {
-        let (width, height) = (region.width, region.height);
-        let sized = [region.x, region.y, width, height]
+    pub fn new(region: &Frame, reach: Vector, shapes: &[Shape]) -> Self {
+        let (width, height) = (region.width(), region.height());
+        let sized = [region.min().x, region.min().y, width, height]
             .iter()
             .all(|v| v.is_finite())
             && width > 0.0
@@ -104,7 +102,7 @@ impl Grid {
             }
         };
         let mut grid = Grid {
-            origin: Point::new(region.x, region.y),
+            origin: Point::new(region.min().x, region.min().y),
             cell,
             reach: Vector::new(reach.x.max(0.0), reach.y.max(0.0)),
             columns: count(width),

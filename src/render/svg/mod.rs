@@ -31,10 +31,10 @@ fn panel_group(panel: &PlacedPanel) -> Element {
     if let Some(r) = panel.clip() {
         let clip = format!("clip-{}", panel.id());
         let rect = Element::new("rect")
-            .set("x", fmt(r.x))
-            .set("y", fmt(r.y))
-            .set("width", fmt(r.width))
-            .set("height", fmt(r.height));
+            .set("x", fmt(r.min().x))
+            .set("y", fmt(r.min().y))
+            .set("width", fmt(r.width()))
+            .set("height", fmt(r.height()));
         g = g
             .add(
                 Element::new("defs")
@@ -85,7 +85,7 @@ pub fn metadata_of(figure: &Figure) -> Map<String, Value> {
         json!({
             "id": p.id(),
             "page_from_world": coefficients(p.transform()),
-            "rect": [r.x, r.y, r.width, r.height],
+            "rect": [r.min().x, r.min().y, r.width(), r.height()],
         })
     });
     meta.insert("panels".into(), panels.collect());

@@ -135,10 +135,10 @@ fn write_panel(out: &mut String, panel: &PlacedPanel, colours: &mut BTreeSet<Str
         let _ = writeln!(
             out,
             "\\clip ({},{}) rectangle ({},{});",
-            fmt(r.x),
-            fmt(r.y),
-            fmt(r.x + r.width),
-            fmt(r.y + r.height)
+            fmt(r.min().x),
+            fmt(r.min().y),
+            fmt(r.max().x),
+            fmt(r.max().y)
         );
     }
     for m in panel.marks() {

@@ -23,8 +23,8 @@ use super::canvas::{Canvas, round};
 use super::notation::Named;
 use crate::angle::Angle;
 use crate::figure::{
-    Align, EngineRecord, Figure, Hue, Metadata, PageFromWorld, PageRect, Panel, Part, RichText,
-    Role, Shape, TextSize,
+    Align, EngineRecord, Figure, Hue, Metadata, PageFromWorld, Panel, Part, RichText, Role, Shape,
+    TextSize,
 };
 use crate::figure::{HATCH_DEPTH, NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Frame, Point, Vector};
@@ -266,7 +266,7 @@ pub(crate) struct Layout {
     sizes: Sizes,
     /// The notes' band the fit left room for, page units.
     band: f64,
-    main: PageRect,
+    main: Frame,
     transform: PageFromWorld,
     detail: Option<detail::Detail>,
 }
@@ -337,7 +337,7 @@ pub(crate) fn own(scene: &Scene) -> Layout {
 pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
     let scale = layout.transform.scale();
     let mg = scene.page().margin();
-    let drawn = layout.sizes.fitted.map_or(layout.main.width, |world| {
+    let drawn = layout.sizes.fitted.map_or(layout.main.width(), |world| {
         (world.max().x - world.min().x) * scale + 2.0 * INSET
     });
     let detail = layout.detail.map_or(0.0, |d| {
@@ -377,7 +377,7 @@ impl Layout {
     /// The height of the page this layout draws with notes `band` tall
     /// and margin `mg`: the main view, the detail below it, the notes.
     fn height(&self, band: f64, mg: f64) -> f64 {
-        let mut bottom = self.main.y + self.main.height;
+        let mut bottom = self.main.max().y;
         if let Some(d) = &self.detail {
             let scale = self.transform.scale();
             let frame = detail_frame(d, scale, self.sizes.guide_heights());
@@ -566,7 +566,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let mut canvas = main_canvas(&layout, region);
     draw_layers(&ctx, &poses, &mut canvas, true);
 
-    let mut bottom = main.y + main.height;
+    let mut bottom = main.max().y;
     let mut panels = Vec::new();
     if let (Some(d), Some(frame)) = (detail, region) {
         let panel = detail_panel(
@@ -579,7 +579,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
             page.width(),
         );
         mark_detail(&mut canvas, &frame, panel.rect(), d.magnification);
-        bottom = panel.rect().y + panel.rect().height + NOTE_GAP;
+        bottom = panel.rect().max().y + NOTE_GAP;
         panels.push(panel);
     }
     let height = bottom + band + mg;
@@ -655,7 +655,7 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
 /// allows and only as tall as what it draws needs (the scene's page
 /// height, less the notes' `band`, is the most it may take), and its map,
 /// fitted to the `world` rectangle.
-fn main_view(ctx: &LayerCtx, band: f64, world: Frame) -> (PageRect, PageFromWorld) {
+fn main_view(ctx: &LayerCtx, band: f64, world: Frame) -> (Frame, PageFromWorld) {
     let (panel, transform) = main_view_with(ctx, band, world, 0.0);
     let scene = ctx.scene;
     if !(scene.has(Layer::Dimensions) && dimensions::above(scene.mechanism())) {
@@ -667,7 +667,7 @@ fn main_view(ctx: &LayerCtx, band: f64, world: Frame) -> (PageRect, PageFromWorl
     let e = scene.mechanism().offset();
     let stroke = transform.apply(Point::new(0.0, e)).y;
     let top = stroke - transform.scale() * ctx.sizes.block_half_height - dimensions::DEPTH;
-    let short = panel.y - top;
+    let short = panel.min().y - top;
     if short <= 0.0 {
         return (panel, transform);
     }
@@ -676,7 +676,7 @@ fn main_view(ctx: &LayerCtx, band: f64, world: Frame) -> (PageRect, PageFromWorl
 
 /// [`main_view`] with `room` page units more above the drawing, the
 /// panel as much taller.
-fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (PageRect, PageFromWorld) {
+fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (Frame, PageFromWorld) {
     let scene = ctx.scene;
     let page = scene.page();
     let mg = page.margin();
@@ -691,8 +691,8 @@ fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (PageRe
     } else {
         most
     };
-    let mut panel = PageRect::new(mg, mg, width, drawn + inset[2] + inset[3] + room);
-    let fit_rect = PageRect::new(mg + inset[0], mg + inset[2] + room, fit_width, drawn);
+    let mut panel = Frame::from_origin_size(mg, mg, width, drawn + inset[2] + inset[3] + room);
+    let fit_rect = Frame::from_origin_size(mg + inset[0], mg + inset[2] + room, fit_width, drawn);
     // cannot fail: the fallback, a map of scale 1 between finite points,
     // is valid.
     #[allow(clippy::expect_used)]
@@ -707,7 +707,8 @@ fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (PageRe
         let e = scene.mechanism().offset();
         let stroke = transform.apply(Point::new(0.0, e)).y;
         let reach = stroke + transform.scale() * ctx.sizes.block_half_height + dimensions::DEPTH;
-        panel.height = panel.height.max(reach - panel.y);
+        let bottom = panel.max().y.max(reach - panel.min().y);
+        panel = Frame::from_corners(panel.min(), Point::new(panel.max().x, bottom));
     }
     (panel, transform)
 }
@@ -770,7 +771,7 @@ fn detail_panel(
     let scene = ctx.scene;
     let scale = main_scale * d.magnification;
     let size = (frame.max() - frame.min()) * scale;
-    let rect = PageRect::new(
+    let rect = Frame::from_origin_size(
         0.5 * (width - size.x),
         top + DETAIL_GAP + CAPTION,
         size.x,
@@ -820,14 +821,14 @@ fn main_canvas(layout: &Layout, region: Option<Frame>) -> Canvas {
 /// magnification beside it; the detail's border and caption (drawn by the
 /// main view, so that the detail's clip leaves them whole). All are
 /// [`Part::DetailMark`]s.
-fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
+fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &Frame, magnification: f64) {
     canvas.with_part(Part::DetailMark, |canvas| {
         detail_marks(canvas, frame, rect, magnification);
     });
 }
 
 /// [`mark_detail`]'s items.
-fn detail_marks(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnification: f64) {
+fn detail_marks(canvas: &mut Canvas, frame: &Frame, rect: &Frame, magnification: f64) {
     let (lo, hi) = (frame.min(), frame.max());
     let x = crate::number::short(magnification);
     canvas.push(
@@ -845,8 +846,8 @@ fn detail_marks(canvas: &mut Canvas, frame: &Frame, rect: &PageRect, magnificati
         TextSize::Small,
     );
     let t = *canvas.transform();
-    let (x0, y0) = (rect.x, rect.y);
-    let (x1, y1) = (rect.x + rect.width, rect.y + rect.height);
+    let (x0, y0) = (rect.min().x, rect.min().y);
+    let (x1, y1) = (rect.max().x, rect.max().y);
     let border = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
         .map(|(x, y)| t.invert(Point::new(x, y)))
         .to_vec();

@@ -10,7 +10,7 @@ use super::{FINE_STEPS, GAP, MARGIN, MECHANISM_HEIGHT, round_below};
 use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Foot, PageRect, RichText, Role, Shape, TextSize};
+use crate::figure::{Foot, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector, unit};
 use crate::scene::{Canvas, Marker};
 
@@ -102,7 +102,8 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let crowded =
         |scale: f64| m.crank() * scale >= least && (a - c).norm() * scale < PINS_APART && folded;
     let clear = |scale: f64| m.crank() * scale >= least && !crowded(scale);
-    let panel = |tall: f64| PageRect::new(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
+    let panel =
+        |tall: f64| Frame::from_origin_size(MARGIN, MARGIN, width, tall + crate::diagram::CAPTION);
     if let Some(tall) = taller(width, seen, m.crank()) {
         let whole = Plot::world(
             "mechanism",
@@ -125,18 +126,18 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     }
     let crowded = crowded(scale);
     let side = tall;
-    let main = PageRect::new(MARGIN, MARGIN, width - side - GAP, rect.height);
+    let main = Frame::from_origin_size(MARGIN, MARGIN, width - side - GAP, rect.height());
     let beside = Plot::world("mechanism", main, &world, false, ctx.tolerance, ctx.font)?;
     let (plot, detail_rect) = if crowded && m.crank() * beside.map().scale() < BESIDE_CRANK {
         let x = MARGIN + 0.5 * (width - side);
         (
             whole,
-            PageRect::new(x, MARGIN + rect.height + GAP, side, rect.height),
+            Frame::from_origin_size(x, MARGIN + rect.height() + GAP, side, rect.height()),
         )
     } else {
         (
             beside,
-            PageRect::new(MARGIN + width - side, MARGIN, side, rect.height),
+            Frame::from_origin_size(MARGIN + width - side, MARGIN, side, rect.height()),
         )
     };
     let scale = plot.map().scale();
@@ -204,10 +205,10 @@ fn pins_window(
     ctx: &Ctx,
     centre: Point,
     wanted: f64,
-    rect: PageRect,
+    rect: Frame,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
-    let h = rect.height - crate::diagram::CAPTION;
+    let h = rect.height() - crate::diagram::CAPTION;
     let m = ctx.mechanism;
     let mut magnification = round_below(wanted, &FINE_STEPS).max(1.0);
     // The bar's width at a magnification: its world half width (the

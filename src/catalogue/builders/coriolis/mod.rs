@@ -24,8 +24,8 @@ mod rule;
 use super::{Ctx, Sheet};
 use crate::chain::{CoriolisPolygon, Inversion, InvertedChain};
 use crate::error::{Error, Result};
-use crate::figure::{Figure, Hue, PageRect};
-use crate::geom::{Point, Vector};
+use crate::figure::{Figure, Hue};
+use crate::geom::{Frame, Point, Vector};
 use crate::scene::Canvas;
 use serde_json::json;
 
@@ -86,11 +86,11 @@ pub(super) fn round_below(x: f64, steps: &[f64]) -> f64 {
 }
 
 /// The panels' rectangles across the page from `top`, by [`SHARES`].
-pub(super) fn row(width: f64, top: f64, height: f64) -> [PageRect; 3] {
+pub(super) fn row(width: f64, top: f64, height: f64) -> [Frame; 3] {
     let room = width - 2.0 * MARGIN - 2.0 * GAP;
     let mut x = MARGIN;
     SHARES.map(|share| {
-        let rect = PageRect::new(x, top, room * share, height);
+        let rect = Frame::from_origin_size(x, top, room * share, height);
         x += room * share + GAP;
         rect
     })
@@ -108,13 +108,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let page = ctx.page();
     let (mechanism, crank_detail) = mechanism_plot(ctx, &pose)?;
     // The mechanism's detail stands beside it, or below it.
-    let bottom = |r: PageRect| r.y + r.height;
+    let bottom = |r: Frame| r.max().y;
     let top = crank_detail.as_ref().map_or(bottom(mechanism.rect()), |d| {
         bottom(mechanism.rect()).max(bottom(d.rect()))
     }) + GAP;
     let [v_rect, a_rect, rule_rect] = row(page.width(), top, POLYGON_HEIGHT);
     let [v_below, a_below, _] = row(page.width(), top + POLYGON_HEIGHT + GAP, DETAIL_HEIGHT);
-    let area = |r: PageRect| (r.width, r.height - crate::diagram::CAPTION);
+    let area = |r: Frame| (r.width(), r.height() - crate::diagram::CAPTION);
     let velocity_drawn = Drawn {
         name: "velocity-polygon",
         caption: "velocity polygon",

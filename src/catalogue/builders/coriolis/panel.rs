@@ -9,7 +9,7 @@ use super::{HEADLESS, MIN_ARROW, STEPS, round_below};
 use crate::chain::Inversion;
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Hue, PageRect, RIGHT_ANGLE, RichText, Role, Shape};
+use crate::figure::{Hue, RIGHT_ANGLE, RichText, Role, Shape};
 use crate::geom::{Frame, Point, Vector, side_by_side};
 use crate::scene::{COINCIDE, Canvas, Marker};
 use serde_json::Value;
@@ -118,7 +118,7 @@ pub(super) fn polygon_frame(points: &[Lettered], least: f64) -> (Frame, f64, f64
 /// detail's window.
 pub(super) fn polygon_plot(
     ctx: &Ctx,
-    rect: PageRect,
+    rect: Frame,
     drawn: &Drawn,
     detail: (f64, f64),
     more: &impl Fn(&mut Canvas),
@@ -309,7 +309,7 @@ pub(super) fn letter(s: &mut Canvas, points: &[Lettered], quiet: Option<Frame>) 
 /// magnification.
 pub(super) fn detail_plot(
     ctx: &Ctx,
-    rect: PageRect,
+    rect: Frame,
     drawn: &Drawn,
     window: &Window,
     more: &impl Fn(&mut Canvas),

@@ -7,14 +7,14 @@ use super::polygons::Polygons;
 
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Hue, PageRect, RichText, Role, Shape, TextSize};
+use crate::figure::{Hue, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector, perp};
 use crate::scene::Canvas;
 
 /// The direction rule at the pose's own directions: the sliding velocity
 /// v along the slot, the quarter turn in the sense of ω_d, and 2 ω_d v;
 /// where v is zero, the slot and the sense of ω_d alone.
-pub(super) fn rule_plot(ctx: &Ctx, rect: PageRect, polygons: &Polygons) -> Result<Plot> {
+pub(super) fn rule_plot(ctx: &Ctx, rect: Frame, polygons: &Polygons) -> Result<Plot> {
     let p = &polygons.p;
     let v = polygons.v();
     let moving = polygons.clean(v.norm(), 1.0, false) > 0.0;
