@@ -8,6 +8,7 @@
 //! figure match the θ, φ and *AB* of the page around it. Libertinus Serif
 //! is the alternative for books set in Linux Libertine or similar faces.
 
+use super::metrics::VerticalMetrics;
 use crate::error::{Error, Input, Result};
 use serde::Deserialize;
 #[cfg(feature = "fonts")]
@@ -56,17 +57,6 @@ impl FontStyle {
             FontStyle::Regular
         }
     }
-}
-
-/// A face's vertical metrics, in ems (multiply by the font size).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct VerticalMetrics {
-    /// Height of the ascender line above the baseline.
-    pub ascent: f64,
-    /// Depth of the descender line below the baseline (positive).
-    pub descent: f64,
-    /// Height of flat capitals above the baseline.
-    pub cap_height: f64,
 }
 
 /// The extent of a set text, in page units, from the start of its
@@ -646,7 +636,7 @@ mod tests {
 // Measured advances and bounds (0.318 em) that only look like 1/π.
 #![allow(clippy::approx_constant)]
 
-use super::font::VerticalMetrics;
+use super::metrics::VerticalMetrics;
 
 /// The metrics of one style of a face.
 pub(super) struct GlyphTable {

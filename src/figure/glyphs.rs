@@ -10,7 +10,7 @@
 // Measured advances and bounds (0.318 em) that only look like 1/π.
 #![allow(clippy::approx_constant)]
 
-use super::font::VerticalMetrics;
+use super::metrics::VerticalMetrics;
 
 /// The metrics of one style of a face.
 pub(super) struct GlyphTable {

@@ -12,6 +12,7 @@ mod font;
 #[rustfmt::skip]
 mod glyphs;
 mod metadata;
+mod metrics;
 mod model;
 mod page_length;
 mod path;
@@ -20,8 +21,9 @@ mod text;
 mod transform;
 
 pub use crate::error::is_noncharacter;
-pub use font::{Font, FontStyle, TextBox, VerticalMetrics};
+pub use font::{Font, FontStyle, TextBox};
 pub use metadata::{AxisRecord, AxisScale, EngineRecord, Metadata, PlotRecord};
+pub use metrics::VerticalMetrics;
 pub use model::{
     Align, BEARING_FOOT, Dash, Figure, Foot, Hue, Item, Panel, Part, Role, Shape, Symbol, TextSize,
 };
