@@ -143,11 +143,15 @@ fn the_notes_give_the_crank_effort_f_om_with_units() {
         // Read without spaces: a wrapped note may break a line anywhere.
         let bare = |s: &str| s.chars().filter(|c| !c.is_whitespace()).collect::<String>();
         let text = bare(&read_text(&svg));
-        // T = F_i·CE as magnitudes, with its sense (CE is Ng's OM).
+        // T = F_i·CE as magnitudes, with its sense as the page shows it
+        // (CE is Ng's OM): a mirrored drawing turns it over.
         let t = force * om;
-        let sense = if t > 0.0 {
+        // The textbook's figures are drawn mirrored (the cylinder on the
+        // left) unless asked otherwise.
+        let on_page = -t;
+        let sense = if on_page > 0.0 {
             ", counter-clockwise"
-        } else if t < 0.0 {
+        } else if on_page < 0.0 {
             ", clockwise"
         } else {
             ""
@@ -2585,4 +2589,63 @@ fn the_crank_pin_loads_notes_speak_in_short_plain_sentences() {
         notes.contains("turning point of the load, not an arrowhead"),
         "{notes}"
     );
+}
+
+/// The points of the first path of the group `id`: its moves' and its
+/// curves' end points, in page units (y down).
+fn page_points_of_group(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let d = svg[at..]
+        .split(" d=\"")
+        .nth(1)
+        .unwrap()
+        .split('"')
+        .next()
+        .unwrap();
+    let numbers: Vec<f64> = d
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .map(|t| t.parse().unwrap())
+        .collect();
+    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
+#[test]
+fn the_crank_effort_s_arc_turns_as_the_notes_say_on_the_page() {
+    for ((r, l, e), deg) in CASES {
+        let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
+        let id = ["torque-T", "detail-torque-T"]
+            .into_iter()
+            .find(|id| svg.contains(&format!("id=\"{id}\"")));
+        let Some(id) = id else {
+            continue; // no arc where T = 0 (a dead centre)
+        };
+        // The arc's turn seen on the page: the sum of the cross products
+        // of its points about their mean, positive for a clockwise turn
+        // on a page whose y runs down.
+        let p = page_points_of_group(&svg, id);
+        let n = p.len() as f64;
+        let c = (
+            p.iter().map(|q| q.0).sum::<f64>() / n,
+            p.iter().map(|q| q.1).sum::<f64>() / n,
+        );
+        let turn: f64 = p
+            .windows(2)
+            .map(|w| (w[0].0 - c.0) * (w[1].1 - c.1) - (w[0].1 - c.1) * (w[1].0 - c.0))
+            .sum();
+        let text: String = read_text(&svg).split_whitespace().collect();
+        let said_clockwise = text.contains("lbf·ft,clockwise");
+        let said_counter = text.contains("lbf·ft,counter-clockwise");
+        assert!(
+            said_clockwise != said_counter,
+            "{deg}°: one sense said in {text}"
+        );
+        assert_eq!(
+            turn > 0.0,
+            said_clockwise,
+            "{r} {l} {e} at {deg}°: the arc's turn {turn}"
+        );
+    }
 }

@@ -279,10 +279,13 @@ fn inertia_arrow(
             "value-inertia",
             Role::Label,
             Shape::Label {
-                anchor: face + along * 0.5,
+                // Beyond the arrow's free end, at its height between the
+                // guides: set above or below its middle, the letter stood
+                // on the line of stroke or across a guide from its arrow.
+                anchor: face + along,
                 text: RichText::parse("*F*_i"),
                 size: TextSize::Small,
-                toward: None,
+                toward: Some(along),
                 line: None,
             },
         ),
@@ -303,9 +306,19 @@ fn torque_arc(c: Point, b: Point, block: Option<Point>, t: f64, scale: f64) -> V
     let gap = block
         .filter(|b| (b - c).norm() < radius + ROOM / scale)
         .map(|b| (b.y - c.y).atan2(b.x - c.x));
-    // Its letter clear of the crank.
+    // Its letter clear of the crank, of the line of stroke through C (CG
+    // lies on it) and of the perpendicular CE: set in the gap, below or
+    // above C, it stood beside CE and read as E's or CE's name.
     let crank = (b.y - c.y).atan2(b.x - c.x);
-    torque_arrow(c, t, radius, gap, &[crank]).to_vec()
+    let [right, up] = [0.0, std::f64::consts::FRAC_PI_2];
+    let avoid = [
+        crank,
+        right,
+        up,
+        right + std::f64::consts::PI,
+        up - std::f64::consts::PI,
+    ];
+    torque_arrow(c, t, radius, gap, &avoid).to_vec()
 }
 
 /// (b) The triangle of forces at the cross-head: F_i = F_Q + F_N, to its
@@ -416,7 +429,18 @@ fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
             sig(at.guide_thrust.abs()),
             sig(at.om.abs()),
             sig(at.crank_effort.abs()),
-            sense(at.crank_effort, ", counter-clockwise", ", clockwise"),
+            // The sense as the page shows it: a mirrored drawing turns
+            // the world's counter-clockwise clockwise (the arc at C is
+            // drawn in the world and mirrored with it).
+            sense(
+                if ctx.mirror {
+                    -at.crank_effort
+                } else {
+                    at.crank_effort
+                },
+                ", counter-clockwise",
+                ", clockwise"
+            ),
             sig(rounded_off(at.crank_effort_exact, at.inertia_force * m.crank()).abs()),
         ),
     ]
