@@ -130,6 +130,41 @@ fn o_ad_and_o_bc_crowded_at_the_inner_dead_centre_stand_apart_in_a_detail() {
 }
 
 #[test]
+fn a_crowded_pins_detail_enlarges_twice_at_least_or_is_not_drawn() {
+    // The review of inversion 3 at l = 1.05 r, 270.05°: O_ad and O_bc,
+    // 33 units apart in the main view, were drawn again ×1.5 below it, a
+    // detail that added nothing. A detail of the crowded pins enlarges
+    // them ×2 at least; where none is drawn, the main view letters both.
+    for (name, rod, offset, deg) in [
+        (I3, 1.05, 0.0, 270.05),
+        (I3, 1.05, 0.0, 270.0),
+        (I3, 1.05, 0.0, 271.0),
+        (I2, 1.05, 0.0, 270.05),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
+        let text = read_text(&svg);
+        match text.split("enlarged ×").nth(1) {
+            Some(rest) => {
+                let x: f64 = (rest.split(|c: char| !(c.is_ascii_digit() || c == '.')))
+                    .next()
+                    .and_then(|n| n.parse().ok())
+                    .unwrap_or_else(|| panic!("{at}: no magnification"));
+                assert!(x >= 2.0, "{at}: a detail ×{x}");
+            }
+            None => {
+                for key in ["C", "A"] {
+                    assert!(
+                        tag(&svg, &format!("label-{key}")).is_some(),
+                        "{at}: no detail and {key} unlettered"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
 fn the_block_s_letter_stands_out_of_the_bar_by_the_block() {
     // The eleventh review: the letter c stood in the bar's empty end
     // beyond the block and named the bar (both defaults, inversion 3 with
@@ -305,6 +340,17 @@ fn the_fixed_pins_carry_bearings_clear_of_the_centres_dots() {
                         if centre.is_some_and(|p| (p.0 - x).hypot(p.1 - y) <= AT_PIN) {
                             continue;
                         }
+                        // A dot wholly under another pin's disc (radius
+                        // 4.2, the dot's 2.1) is named with it in the
+                        // notes and not seen (O_ac at O_ad, l = 34.9 r,
+                        // 180°).
+                        let under_pin = ["C", "B", "A"].iter().any(|other| {
+                            pin_at(&svg, &format!("{prefix}point-{other}"))
+                                .is_some_and(|p| (p.0 - x).hypot(p.1 - y) <= 4.2 - 2.1)
+                        });
+                        if under_pin {
+                            continue;
+                        }
                         let on = x > b.0 - CLEAR
                             && x < b.1 + CLEAR
                             && y > b.2 - CLEAR
@@ -382,6 +428,98 @@ fn d_s_letter_stands_clear_of_a_pin_on_its_bar() {
         let b = pin_at(&svg, "point-B").unwrap_or_else(|| panic!("{at}: no B"));
         let gap = (d.0 - b.0).hypot(d.1 - b.1);
         assert!(gap >= APART, "{at}: d {gap:.1} from B");
+    }
+}
+
+#[test]
+fn d_s_letter_stands_by_its_bar_where_the_crank_runs_beside_it() {
+    // The review of inversion 2 at l = 1.42 r, e = 0.255 r, 0°: the crank
+    // and its pins, 13 units below d's bar, took every place along it,
+    // and d went under the crank beside a's letter ("d a"), far from its
+    // bar. d's letter stands within an em of its bar's outline, nearer it
+    // than the crank, and an em at least from a's letter.
+    const EM: f64 = 17.0;
+    for (rod, offset, deg) in [(1.42, 0.255, 0.0), (1.37, 0.255, 0.0), (1.42, -0.255, 0.0)] {
+        let svg = svg(I2, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        let at = format!("l = {rod}, e = {offset}, {deg}°");
+        let d = text_centre(&plate, "label-link-d").unwrap_or_else(|| panic!("{at}: no d"));
+        let a = text_centre(&plate, "label-link-a").unwrap_or_else(|| panic!("{at}: no a"));
+        let outline = path(&svg, "link-frame");
+        let to_bar = (0..outline.len())
+            .map(|k| {
+                let (p, q) = (outline[k], outline[(k + 1) % outline.len()]);
+                crate::common::segment_distance(d, p, q)
+            })
+            .fold(f64::INFINITY, f64::min);
+        let crank = path(&svg, "link-crank");
+        let to_crank = crate::common::segment_distance(d, crank[0], crank[1]);
+        assert!(to_bar <= EM, "{at}: d {to_bar:.1} from its bar");
+        assert!(to_bar < to_crank, "{at}: d nearer the crank than its bar");
+        let gap = (d.0 - a.0).hypot(d.1 - a.1);
+        assert!(gap >= EM, "{at}: d {gap:.1} from a");
+    }
+}
+
+#[test]
+fn a_centre_s_dot_stands_off_a_bearing_s_pedestal_and_hatching() {
+    // The review of inversion 2 at l = 1.42 r, e = 0.255 r, 0°: O_ac's
+    // dot, 14 units below O_ad, stood inside O_ad's bearing. No centre's
+    // dot off its pin stands within 3 units of any stroke of a bearing
+    // (its pedestal, its foot, its hatching).
+    const CLEAR: f64 = 3.0;
+    const AT_PIN: f64 = 8.0;
+    for (name, rod, offset, deg) in [
+        (I2, 1.42, 0.255, 0.0),
+        (I2, 1.37, 0.255, 0.0),
+        (I2, 1.42, -0.255, 0.0),
+        (I2, 1.42, 0.255, 1.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let at = format!("{name:?} l = {rod}, e = {offset}, {deg}°");
+        for pin in ["C", "B", "A"] {
+            let id = format!("bearing-{pin}");
+            let Some(start) = svg.find(&format!("id=\"{id}\"")) else {
+                continue;
+            };
+            let group = &svg[start..start + svg[start..].find("</g>").unwrap()];
+            let mut segs = Vec::new();
+            for rest in group.split(" d=\"").skip(1) {
+                let d = rest.split('"').next().unwrap_or("");
+                // Each subpath (M …) its own polyline; a closing Z back
+                // to its first point.
+                for sub in d.split('M').filter(|x| !x.trim().is_empty()) {
+                    let n: Vec<f64> = (sub.split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+                        .filter_map(|t| t.parse().ok())
+                        .collect();
+                    let pts: Vec<(f64, f64)> = n.chunks(2).map(|p| (p[0], p[1])).collect();
+                    for w in pts.windows(2) {
+                        segs.push((w[0], w[1]));
+                    }
+                    if sub.contains('Z') && pts.len() > 2 {
+                        segs.push((pts[pts.len() - 1], pts[0]));
+                    }
+                }
+            }
+            let centre = pin_at(&svg, &format!("point-{pin}")).unwrap();
+            for key in ["O-bd", "O-ac"] {
+                for kind in ["point", "centre"] {
+                    let Some(x) = pin_at(&svg, &format!("{kind}-{key}")) else {
+                        continue;
+                    };
+                    if (centre.0 - x.0).hypot(centre.1 - x.1) <= AT_PIN {
+                        continue;
+                    }
+                    let near = (segs.iter())
+                        .map(|&(p, q)| crate::common::segment_distance(x, p, q))
+                        .fold(f64::INFINITY, f64::min);
+                    assert!(near > CLEAR, "{at}: {key} {near:.1} from {id}");
+                    // Nor inside the pedestal's triangle (the first path).
+                    let tri: Vec<(f64, f64)> = segs.iter().take(3).map(|s| s.0).collect();
+                    assert!(!within(&tri, x), "{at}: {key} inside {id}'s pedestal");
+                }
+            }
+        }
     }
 }
 
@@ -650,6 +788,8 @@ fn inversion_4_s_barrel_is_hatched_where_the_notes_say_so() {
         ((1.5, 0.0, 60.0), None),
         ((30.0, 0.0, 90.0), None),
         ((2.5, 0.9, 270.0), Some("120mm")),
+        ((52.6, 0.0, 60.0), None),
+        ((40.0, 0.0, 90.0), None),
     ] {
         let svg = svg_at(I4, engine, width);
         let at = format!("{engine:?} {width:?}");
@@ -659,8 +799,32 @@ fn inversion_4_s_barrel_is_hatched_where_the_notes_say_so() {
             assert!(hatched >= 6, "{at}: notes say hatched, {hatched} strokes");
         } else {
             assert_eq!(hatched, 0, "{at}: notes say unhatched, {hatched} strokes");
+            // The review of inversion 4 (l = 52.6 r, 60°): the barrel
+            // neither hatched nor grounded, the notes saying only that it
+            // was too short to hatch. Unhatched, its pin carries a bearing
+            // and the notes name it.
+            assert!(
+                tag(&svg, "bearing-A").is_some(),
+                "{at}: the barrel unhatched and no bearing at its pin"
+            );
+            assert!(
+                text.contains("isshownfixedbythebearingatitspin"),
+                "{at}: the notes name no bearing"
+            );
         }
     }
+}
+
+#[test]
+fn a_detail_that_does_not_show_the_barrel_leaves_its_hatching_to_the_main_view() {
+    // The review of inversion 4 at l = 52.6 r, 60°: the crank's detail,
+    // far from the barrel, could not hatch it, and the main view followed
+    // it: the barrel, 52 units long, was drawn neither hatched nor
+    // grounded. The main view hatches it.
+    let svg = svg_at(I4, (52.6, 0.0, 60.0), None);
+    assert!(tag(&svg, "panel-detail").is_some(), "no crank detail");
+    let hatched = strokes(&svg, "hatch-block-");
+    assert!(hatched >= 6, "the barrel carries {hatched} strokes");
 }
 
 /// The points of every path of the group `id`, in page units.

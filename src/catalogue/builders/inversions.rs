@@ -436,6 +436,10 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     // both views would hatch it (in a long rod's main view inversion 3's
     // rod lay in d's bar unhatched while the crank's detail hatched it
     // by O_ad, and the notes said hatched, l = 50 r), else neither.
+    // A detail that shows none of the fixed link (inversion 4's barrel
+    // far from a long rod's crank) has no say: at l = 52.6 r, 60° the
+    // barrel, 52 units long, went unhatched because the crank's detail
+    // could not hatch what it did not show.
     if let Some((region, _, seen)) = detail {
         let q = parts(&m, &pose);
         let (p, r) = match inversion.fixed() {
@@ -445,10 +449,22 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
             _ => (q.b, q.a),
         };
         let whole = region.contains(p) && region.contains(r);
+        let (p, r) = match inversion.fixed() {
+            Link::C => {
+                let (lh, _) = block_size(&m);
+                (q.a - q.u * lh, q.a + q.u * lh)
+            }
+            _ => (p, r),
+        };
+        let any = region.clip_segment(p, r).is_some();
         let own = d.shown();
         let both = |v: Shown| v.hatched.unwrap_or(false);
+        let hatched = match any {
+            true => both(seen) && (whole || both(own)),
+            false => both(own),
+        };
         let shown = Shown {
-            hatched: Some(both(seen) && (whole || both(own))),
+            hatched: Some(hatched),
             ..own
         };
         detail = crank_detail(ctx, &pose, &rect, map.scale(), Some(shown))?;
@@ -585,6 +601,13 @@ const PINS_APART: f64 = 34.0;
 /// most (the magnification is rounded down).
 const PINS_SPREAD: f64 = 64.0;
 
+/// The least magnification of the crowded pins' detail: below it the
+/// detail draws them nearly as the main view does, a copy that enlarges
+/// nothing (inversion 3 at l = 1.05 r, 270.05°: pins 33 units apart,
+/// just within [`PINS_APART`], drawn again ×1.5), and the main view
+/// letters them.
+const PINS_ENLARGED: f64 = 2.0;
+
 /// The centre and the wanted magnification of the inversion's detail
 /// at `scale` page units per world unit: about the crank a where it is
 /// drawn shorter than [`CRANK_LEAST`] (`None` for the crank window's
@@ -601,8 +624,12 @@ fn detail_about(
     let pins = (q.a - q.c).norm() * scale;
     if m.crank() * scale < CRANK_LEAST {
         Some((mid(q.c, q.b), None))
-    } else if slotted && pins < PINS_APART {
+    } else if slotted
+        && pins < PINS_APART
         // l > r keeps C and A apart: `pins` is not zero.
+        && super::coriolis::round_below(PINS_SPREAD / pins, &super::coriolis::FINE_STEPS)
+            >= PINS_ENLARGED
+    {
         Some((mid(q.c, q.a), Some(PINS_SPREAD / pins)))
     } else {
         None
@@ -868,6 +895,47 @@ const FOOT_CLEAR: f64 = std::f64::consts::FRAC_PI_3;
 /// ([`BEARING_FOOT`], as the layout draws it) and the first 3 units of
 /// its hatching, and half the foot's length.
 const FOOT_REACH: (f64, f64) = (BEARING_FOOT.0 + 3.0, BEARING_FOOT.1);
+
+/// How far (page units) a dot at `d` towards a bearing's foot and `s`
+/// along it (from its pin) stands off the bearing's ink: its pedestal, a
+/// triangle from the pin to the foot ([`PEDESTAL_HALF`] each way there),
+/// and the foot with its hatching, a strip [`FOOT_REACH`] and
+/// [`HATCH_DEPTH`] deep; 0 inside either. Where no side of a pin is
+/// clear of the dots by [`Drawing::foot`]'s box, the side farthest by
+/// this is taken: between sides equally crowded by the box, the first
+/// was kept, and the bearing stood on the dot (inversion 2 at
+/// l = 1.42 r, e = 0.255 r, 0°: O_ac, 14 units below O_ad, inside its
+/// bearing, where a bearing to the left stood 12 units off it).
+fn bearing_room(d: f64, s: f64) -> f64 {
+    let (depth, half) = FOOT_REACH;
+    let (foot, end) = (BEARING_FOOT.0, depth + HATCH_DEPTH);
+    let strip = {
+        let dd = (foot - d).max(d - end).max(0.0);
+        let ds = (s.abs() - half).max(0.0);
+        dd.hypot(ds)
+    };
+    let x = Point::new(d, s);
+    let tri = [
+        Point::new(0.0, 0.0),
+        Point::new(foot, -PEDESTAL_HALF),
+        Point::new(foot, PEDESTAL_HALF),
+    ];
+    let pedestal = match inside_outline(&tri, x) {
+        true => 0.0,
+        false => (tri.iter().zip(tri.iter().cycle().skip(1)))
+            .map(|(p, q)| point_segment_distance(x, *p, *q))
+            .fold(f64::INFINITY, f64::min),
+    };
+    strip.min(pedestal)
+}
+
+/// The room off a bearing's ink ([`bearing_room`]) beyond which a dot
+/// is as clear as farther, page units: two dots' widths.
+const DOT_ROOM: f64 = 10.0;
+
+/// Half the width of a bearing's pedestal at its foot, page units, as
+/// the layout draws it.
+const PEDESTAL_HALF: f64 = 10.0;
 
 /// How far a bearing's hatching reaches beyond [`FOOT_REACH`]'s depth,
 /// page units (the strokes stand 6 units beyond the foot).
@@ -1177,15 +1245,25 @@ impl Drawing {
                 d < -DOT_CLEAR || d > depth + HATCH_DEPTH + DOT_CLEAR || s.abs() > half + DOT_CLEAR
             })
         };
+        // Where no side is clear of the dots by that box, the one whose
+        // ink stands farthest from them.
+        let room = |f: Foot| {
+            let (down, along) = f.axes();
+            (dots.iter())
+                .map(|x| bearing_room((x - at).dot(&down), (x - at).dot(&along)))
+                .fold(f64::INFINITY, f64::min)
+        };
         let feet = [Foot::Below, Foot::Above, Foot::Left, Foot::Right];
-        let score = |f: Foot| (out(f), clear(f), spread(f));
+        let score = |f: Foot| (out(f), clear(f), room(f).min(DOT_ROOM), spread(f));
         // Of sides equally good, the first (below) is kept.
         let foot = (feet.into_iter())
             .find(|&f| out(f) && clear(f) && spread(f) >= FOOT_CLEAR)
             .or_else(|| {
                 (feet.into_iter().rev()).max_by(|&f, &g| {
                     let (a, b) = (score(f), score(g));
-                    (a.0, a.1).cmp(&(b.0, b.1)).then(a.2.total_cmp(&b.2))
+                    ((a.0, a.1).cmp(&(b.0, b.1)))
+                        .then(a.2.total_cmp(&b.2))
+                        .then(a.3.total_cmp(&b.3))
                 })
             })
             .unwrap_or(Foot::Below);
@@ -1310,7 +1388,32 @@ impl Drawing {
     /// "d O_ab" as one label), two em each way, and, an em and a half
     /// each way, the middles of the links lying along it, where their
     /// letters stand (beside a's, d read "a d"); none where no run is clear.
-    fn bar_letter(&self) -> Option<Point> {
+    /// With the side of the bar the letter stands on
+    /// ([`Drawing::bar_letter_side`]). Where no run is clear on both
+    /// sides, a run clear on one side of the slotted bar: a pin or a link
+    /// standing off the bar on the other side, past its edge, does not
+    /// take the letter's place, the bar standing between them
+    /// (inversion 2 at l = 1.42 r, e = 0.255 r, 0°: the crank 13 units
+    /// below the bar's lower edge took every place along it, and d went
+    /// under the crank, by a's letter, "d a", far from its bar).
+    fn bar_letter(&self) -> Option<(Point, Vector)> {
+        if let Some(at) = self.bar_letter_on(None) {
+            return Some((at, self.bar_letter_side(at)));
+        }
+        if !self.slotted() {
+            return None;
+        }
+        let q = &self.q;
+        let usual = q.t + q.u * (0.85 * (q.f - q.t).dot(&q.u));
+        let first = self.bar_letter_side(usual);
+        [first, -first]
+            .into_iter()
+            .find_map(|way| Some((self.bar_letter_on(Some(way))?, way)))
+    }
+
+    /// The place along the bar for d's letter ([`Drawing::bar_letter`]),
+    /// standing on the side `way` of it, or on either (none).
+    fn bar_letter_on(&self, way: Option<Vector>) -> Option<Point> {
         let q = &self.q;
         let (lh, hh) = self.block;
         let along = |p: Point| (p - q.t).dot(&q.u);
@@ -1319,7 +1422,18 @@ impl Drawing {
         // 27 units from A's pin at l = 2.65 r, e = 1.44 r, 89.28°, where
         // it read as the block's).
         let mut taken = vec![(along(q.a) - lh - 2.0 * clear, along(q.a) + lh + 2.0 * clear)];
-        let on_bar = |p: Point| (p - q.t).dot(&q.v).abs() <= hh + clear;
+        // Within an em of the bar's edge on the letter's side, or in the
+        // bar, not beyond its other edge.
+        let on_bar = |p: Point| {
+            let off = (p - q.t).dot(&q.v);
+            match way {
+                Some(w) => {
+                    let off = off * w.dot(&q.v).signum();
+                    off >= -hh && off <= hh + clear
+                }
+                None => off.abs() <= hh + clear,
+            }
+        };
         // Two em about a pin: its letter stands beside it.
         for p in [q.b, q.c] {
             if on_bar(p) {
@@ -1361,7 +1475,7 @@ impl Drawing {
         if self.fixed == Link::D {
             return;
         }
-        if let Some(at) = self.bar_letter() {
+        if let Some((at, way)) = self.bar_letter() {
             if !self.slotted() {
                 // The hand pump's plunger, a line: its letter by it; where
                 // the crank and the rod lie along it (a dead centre), on
@@ -1377,7 +1491,7 @@ impl Drawing {
                 }
                 return;
             }
-            let (way, hh) = (self.bar_letter_side(at), self.block.1);
+            let hh = self.block.1;
             self.d_way = Some(way);
             let d = RichText::parse("*d*");
             self.s
@@ -1550,6 +1664,19 @@ impl Drawing {
                     0.0,
                     least,
                 );
+                // Too short or too crossed to hatch: the barrel's pin A
+                // carries a bearing, as a fixed bar's pins do, so that
+                // the fixed link shows fixed (at l = 52.6 r, 60° it was
+                // neither hatched nor grounded).
+                if self.hatched < least {
+                    let (u, lh) = (self.q.u, self.block.0);
+                    let mut meeting = vec![b, a + u * lh, a - u * lh];
+                    if self.normal != Vector::zeros() {
+                        meeting.push(a + self.normal);
+                    }
+                    let foot = self.foot(a, &meeting);
+                    self.s.bearing_on("A", a, foot);
+                }
             }
             Link::D => {}
         }
@@ -1927,7 +2054,7 @@ fn fixed_shown(inversion: Inversion, hatched: usize) -> String {
             return "The fixed link is hatched.".to_string();
         }
         Inversion::Slider => {
-            return "The fixed link *c*, the barrel *d* slides in, is too short here to hatch."
+            return "The fixed link *c*, the barrel *d* slides in, too short or too crossed here to hatch, is shown fixed by the bearing at its pin *O*_{bc}."
                 .to_string();
         }
     };
