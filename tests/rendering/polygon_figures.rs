@@ -1495,3 +1495,37 @@ fn the_coriolis_notes_say_what_theta_is_measured_between() {
         );
     }
 }
+
+#[test]
+fn the_coriolis_rule_draws_no_arrow_for_a_nil_vector() {
+    // At inversion 3, l = 29.5 r, 0° (and inversion 2 at l = 1.1 r, 180°)
+    // the sliding velocity v is zero, and the rule drew v and 2ω_d v as
+    // arrows of a nominal length, read as vectors of that size. Where v
+    // is zero it draws the slot as a plain line lettered v = 0, and no
+    // 2ω_d v; where it is not, both arrows.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion3, 29.5, 0.0),
+        (FigureName::CoriolisInversion2, 1.1, 180.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        for id in ["rule-v", "rule-coriolis", "label-rule-coriolis"] {
+            assert!(
+                !svg.contains(&format!("id=\"{id}\"")),
+                "{name:?} l = {rod} r, {deg}°: {id} drawn where v = 0"
+            );
+        }
+        assert!(svg.contains("id=\"rule-slot\""), "{name:?}: no slot");
+        // The letter's element, read to its end tag.
+        let at = svg.find("id=\"label-rule-v\"").expect("v's letter");
+        let (open, end) = (
+            at + svg[at..].find('>').unwrap() + 1,
+            at + svg[at..].find("</text>").unwrap(),
+        );
+        let letter = crate::common::read_text(&svg[open..end]);
+        assert!(letter.contains("= 0"), "{name:?}: v lettered {letter}");
+    }
+    let svg = svg(FigureName::CoriolisInversion3, 3.0, 0.0, 60.0);
+    for id in ["rule-v", "rule-coriolis", "rule-turn"] {
+        assert!(svg.contains(&format!("id=\"{id}\"")), "default: no {id}");
+    }
+}
