@@ -1529,3 +1529,40 @@ fn the_coriolis_rule_draws_no_arrow_for_a_nil_vector() {
         assert!(svg.contains(&format!("id=\"{id}\"")), "default: no {id}");
     }
 }
+
+#[test]
+fn the_coriolis_pins_detail_keeps_c_out_of_the_block() {
+    // At short rods near the inner dead centre the ×8 and ×10 details of
+    // the crowded pins drew the block c about A so long that C's pin
+    // stood inside it (l = 1.05 r, 180°: C 43 units from A, the block
+    // 65 each way), read as a pin of the block. C's pin (4.2 units in
+    // radius) stands clear of the block's end.
+    const PIN: f64 = 4.2;
+    for name in [
+        FigureName::CoriolisInversion2,
+        FigureName::CoriolisInversion3,
+    ] {
+        for (rod, deg) in [(1.02, 180.0), (1.05, 180.0), (1.05, 179.0), (1.08, 181.0)] {
+            let svg = svg(name, rod, 0.0, deg);
+            let block = path(&svg, "detail-block-slider");
+            let c = (
+                num(&svg, "detail-point-C", "cx"),
+                num(&svg, "detail-point-C", "cy"),
+            );
+            // The block's middle, its axis along its first side, its half
+            // length.
+            let mid = (
+                block.iter().map(|p| p.0).sum::<f64>() / block.len() as f64,
+                block.iter().map(|p| p.1).sum::<f64>() / block.len() as f64,
+            );
+            let along = (block[1].0 - block[0].0, block[1].1 - block[0].1);
+            let length = along.0.hypot(along.1);
+            let t = ((c.0 - mid.0) * along.0 + (c.1 - mid.1) * along.1) / length;
+            let clear = t.abs() - 0.5 * length;
+            assert!(
+                clear >= PIN,
+                "{name:?} l = {rod} r, {deg}°: C {clear:.1} beyond the block's end"
+            );
+        }
+    }
+}
