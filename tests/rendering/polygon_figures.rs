@@ -1566,3 +1566,38 @@ fn the_coriolis_pins_detail_keeps_c_out_of_the_block() {
         }
     }
 }
+
+#[test]
+fn the_coriolis_mechanism_letters_c_beside_the_crowded_pins_detail() {
+    // At inversion 2, l = 1.1 r, 180° the crowded pins C and A were
+    // lettered only in their detail: the mechanism, the box about them,
+    // showed no C. It letters C beside its place: within a letter's
+    // height (17 units) of the bar (as wide as the block) C lies in.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion2, 1.1, 180.0),
+        (FigureName::CoriolisInversion2, 1.05, 181.0),
+        (FigureName::CoriolisInversion3, 1.08, 179.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        assert!(
+            svg.contains("id=\"detail-label-C\""),
+            "{name:?} l = {rod} r, {deg}°: no crowded pins' detail"
+        );
+        let plate = Plate::read(&svg);
+        // The crank is drawn from C to B.
+        let c = path(&svg, "link-crank")[0];
+        let letter = (plate.texts.iter())
+            .find(|t| t.id == "label-C")
+            .unwrap_or_else(|| panic!("{name:?} l = {rod} r, {deg}°: C not lettered"));
+        let block = path(&svg, "block-slider");
+        let (x0, x1, y0, y1) = bounds_of(&block);
+        // The block's half width across the bar: its shorter half side
+        // (the bar lies along the line of stroke near 180°).
+        let half = 0.5 * (y1 - y0).min(x1 - x0);
+        let off = letter.rect.distance_to(c);
+        assert!(
+            off <= half + 17.0,
+            "{name:?} l = {rod} r, {deg}°: C's letter {off:.1} from C"
+        );
+    }
+}
