@@ -1601,3 +1601,22 @@ fn the_coriolis_mechanism_letters_c_beside_the_crowded_pins_detail() {
         );
     }
 }
+
+#[test]
+fn the_coriolis_notes_tell_apart_sides_on_one_line() {
+    // At inversion 3, l = 1.04 r, 269.87° o′c′ and the Coriolis component
+    // o′k leave o′ the opposite ways along one line, and the ×50 detail
+    // drew them as one line through o′. The notes say so; at the default
+    // engine, whose sides meet at angles, they say nothing of it.
+    let said = |rod: f64, deg: f64| -> String {
+        (crate::common::read_text(&svg(FigureName::CoriolisInversion3, rod, 0.0, deg)).chars())
+            .filter(|c| !c.is_whitespace())
+            .collect()
+    };
+    let text = said(1.04, 269.87);
+    assert!(
+        text.contains("oʹcʹandoʹklieononeline,theoppositewaysfromoʹ."),
+        "{text}"
+    );
+    assert!(!said(3.0, 60.0).contains("lieononeline"));
+}
