@@ -230,8 +230,8 @@ fn pins_window(
 /// the caption and, where a detail enlarges `region`, its box; with how
 /// it showed the fixed bar, which a view drawn after it follows where
 /// `follow` says so ([`Shown`]). Where the detail is the crowded pins'
-/// (`pins`), the whole mechanism still letters C by its place in the
-/// box, its pin left to the detail.
+/// (`pins`), the whole mechanism of inversion 2 still letters its fixed
+/// pin C by its place in the box, its pin left to the detail.
 pub(super) fn links_plot(
     ctx: &Ctx,
     pose: &InversionPose,
@@ -273,13 +273,16 @@ pub(super) fn links_plot(
     // stand by the wrong pin (B's left of C's at l = 35 r, 180°).
     let held = |at| whole && region.is_some_and(|r: Frame| r.contains(at));
     for (key, at) in [("C", c), ("B", b), ("A", a)] {
-        if key == "C" && pins && held(at) {
-            // The crowded pins' detail: C, the crank's end, is lettered
-            // on the whole mechanism too (its letter only in the detail,
-            // the reader found no C on the mechanism: inversion 2 at
-            // l = 1.1 r, 180°), its letter across the bar from the
-            // block's, its pin left to the detail (drawn here, it stood
-            // in the block, drawn at its least size about A).
+        if key == "C" && pins && held(at) && inversion != Inversion::Rod {
+            // The crowded pins' detail: C, the fixed pin whose bearing the
+            // whole mechanism draws, is lettered there too (its letter
+            // only in the detail, the reader found no C on the mechanism:
+            // inversion 2 at l = 1.1 r, 180°), its letter across the bar
+            // from the block's, its pin left to the detail (drawn here,
+            // it stood in the block, drawn at its least size about A).
+            // Inversion 3's C, a moving pin, is left to the detail with A:
+            // lettered here it stood by the block's letter, "C c" read as
+            // one label (l = 1.05 r, 180°).
             let across = unit(a - c).map_or(Vector::new(0.0, 1.0), |u| Vector::new(-u.y, u.x));
             let way = match drawn.a_way {
                 Some(way) => way,
