@@ -1495,3 +1495,129 @@ fn the_coriolis_notes_say_what_theta_is_measured_between() {
         );
     }
 }
+
+#[test]
+fn the_coriolis_rule_draws_no_arrow_for_a_nil_vector() {
+    // At inversion 3, l = 29.5 r, 0° (and inversion 2 at l = 1.1 r, 180°)
+    // the sliding velocity v is zero, and the rule drew v and 2ω_d v as
+    // arrows of a nominal length, read as vectors of that size. Where v
+    // is zero it draws the slot as a plain line lettered v = 0, and no
+    // 2ω_d v; where it is not, both arrows.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion3, 29.5, 0.0),
+        (FigureName::CoriolisInversion2, 1.1, 180.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        for id in ["rule-v", "rule-coriolis", "label-rule-coriolis"] {
+            assert!(
+                !svg.contains(&format!("id=\"{id}\"")),
+                "{name:?} l = {rod} r, {deg}°: {id} drawn where v = 0"
+            );
+        }
+        assert!(svg.contains("id=\"rule-slot\""), "{name:?}: no slot");
+        // The letter's element, read to its end tag.
+        let at = svg.find("id=\"label-rule-v\"").expect("v's letter");
+        let (open, end) = (
+            at + svg[at..].find('>').unwrap() + 1,
+            at + svg[at..].find("</text>").unwrap(),
+        );
+        let letter = crate::common::read_text(&svg[open..end]);
+        assert!(letter.contains("= 0"), "{name:?}: v lettered {letter}");
+    }
+    let svg = svg(FigureName::CoriolisInversion3, 3.0, 0.0, 60.0);
+    for id in ["rule-v", "rule-coriolis", "rule-turn"] {
+        assert!(svg.contains(&format!("id=\"{id}\"")), "default: no {id}");
+    }
+}
+
+#[test]
+fn the_coriolis_pins_detail_keeps_c_out_of_the_block() {
+    // At short rods near the inner dead centre the ×8 and ×10 details of
+    // the crowded pins drew the block c about A so long that C's pin
+    // stood inside it (l = 1.05 r, 180°: C 43 units from A, the block
+    // 65 each way), read as a pin of the block. C's pin (4.2 units in
+    // radius) stands clear of the block's end.
+    const PIN: f64 = 4.2;
+    for name in [
+        FigureName::CoriolisInversion2,
+        FigureName::CoriolisInversion3,
+    ] {
+        for (rod, deg) in [(1.02, 180.0), (1.05, 180.0), (1.05, 179.0), (1.08, 181.0)] {
+            let svg = svg(name, rod, 0.0, deg);
+            let block = path(&svg, "detail-block-slider");
+            let c = (
+                num(&svg, "detail-point-C", "cx"),
+                num(&svg, "detail-point-C", "cy"),
+            );
+            // The block's middle, its axis along its first side, its half
+            // length.
+            let mid = (
+                block.iter().map(|p| p.0).sum::<f64>() / block.len() as f64,
+                block.iter().map(|p| p.1).sum::<f64>() / block.len() as f64,
+            );
+            let along = (block[1].0 - block[0].0, block[1].1 - block[0].1);
+            let length = along.0.hypot(along.1);
+            let t = ((c.0 - mid.0) * along.0 + (c.1 - mid.1) * along.1) / length;
+            let clear = t.abs() - 0.5 * length;
+            assert!(
+                clear >= PIN,
+                "{name:?} l = {rod} r, {deg}°: C {clear:.1} beyond the block's end"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_coriolis_mechanism_letters_c_beside_the_crowded_pins_detail() {
+    // At inversion 2, l = 1.1 r, 180° the crowded pins C and A were
+    // lettered only in their detail: the mechanism, the box about them,
+    // showed no C, though it drew C's bearing. It letters C, a fixed
+    // pin, beside its place: within a letter's height (17 units) of the
+    // bar (as wide as the block) C lies in.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion2, 1.1, 180.0),
+        (FigureName::CoriolisInversion2, 1.05, 181.0),
+        (FigureName::CoriolisInversion2, 1.08, 179.0),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        assert!(
+            svg.contains("id=\"detail-label-C\""),
+            "{name:?} l = {rod} r, {deg}°: no crowded pins' detail"
+        );
+        let plate = Plate::read(&svg);
+        // The crank is drawn from C to B.
+        let c = path(&svg, "link-crank")[0];
+        let letter = (plate.texts.iter())
+            .find(|t| t.id == "label-C")
+            .unwrap_or_else(|| panic!("{name:?} l = {rod} r, {deg}°: C not lettered"));
+        let block = path(&svg, "block-slider");
+        let (x0, x1, y0, y1) = bounds_of(&block);
+        // The block's half width across the bar: its shorter half side
+        // (the bar lies along the line of stroke near 180°).
+        let half = 0.5 * (y1 - y0).min(x1 - x0);
+        let off = letter.rect.distance_to(c);
+        assert!(
+            off <= half + 17.0,
+            "{name:?} l = {rod} r, {deg}°: C's letter {off:.1} from C"
+        );
+    }
+}
+
+#[test]
+fn the_coriolis_notes_tell_apart_sides_on_one_line() {
+    // At inversion 3, l = 1.04 r, 269.87° o′c′ and the Coriolis component
+    // o′k leave o′ the opposite ways along one line, and the ×50 detail
+    // drew them as one line through o′. The notes say so; at the default
+    // engine, whose sides meet at angles, they say nothing of it.
+    let said = |rod: f64, deg: f64| -> String {
+        (crate::common::read_text(&svg(FigureName::CoriolisInversion3, rod, 0.0, deg)).chars())
+            .filter(|c| !c.is_whitespace())
+            .collect()
+    };
+    let text = said(1.04, 269.87);
+    assert!(
+        text.contains("oʹcʹandoʹklieononeline,theoppositewaysfromoʹ."),
+        "{text}"
+    );
+    assert!(!said(3.0, 60.0).contains("lieononeline"));
+}

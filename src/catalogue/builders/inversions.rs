@@ -27,11 +27,26 @@ use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
 
 /// The block's half length and half height: smaller than in Fig. 60, so
-/// that the letter of its pin finds room beside it when the block turns.
+/// that the letter of its pin finds room beside it when the block turns;
+/// its half length at most [`BLOCK_FOLDED`] of l − r, the distance CA at
+/// the inner dead centre, so that C's pin stands clear of the block
+/// there (at l = 1.05 r, 180° the block, 0.076 r each way of A, held C
+/// 0.05 r from A inside it, and the ×10 details drew C as a pin of the
+/// block).
 fn block_size(m: &SliderCrank) -> (f64, f64) {
     let (lh, hh) = super::chains::block_size(m);
-    (0.7 * lh, 0.8 * hh)
+    let folded = BLOCK_FOLDED * (m.rod() - m.crank());
+    ((0.7 * lh).min(folded), 0.8 * hh)
 }
+
+/// The most of the distance l − r (C to A at the inner dead centre) the
+/// block's half length takes: the rest, a quarter of it, leaves C's pin
+/// (4.2 units in radius) clear of the block's end where the pins are
+/// drawn 17 units apart or more, as every detail of crowded pins draws
+/// them (a main view with C and A nearer boxes them for its detail);
+/// shorter, A's letter beside its pin stood across the block's end
+/// (l = 1.03 r, 170°, the detail ×10).
+const BLOCK_FOLDED: f64 = 0.75;
 
 /// Room left at the panel's edge for an arrow at the edge, page units:
 /// the sketch's arrow (34 units, 3 from the edge) and a gap of 3, so that

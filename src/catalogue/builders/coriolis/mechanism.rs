@@ -114,7 +114,7 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
             ctx.font,
         )?;
         if clear(whole.map().scale()) {
-            return Ok((links_plot(ctx, pose, whole, None, None)?.0, None));
+            return Ok((links_plot(ctx, pose, whole, (None, false), None)?.0, None));
         }
     }
     let tall = (width * seen.y / seen.x).clamp(MECHANISM_HEIGHT.0, MECHANISM_HEIGHT.1);
@@ -122,7 +122,7 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     let whole = Plot::world("mechanism", rect, &world, false, ctx.tolerance, ctx.font)?;
     let scale = whole.map().scale();
     if clear(scale) {
-        return Ok((links_plot(ctx, pose, whole, None, None)?.0, None));
+        return Ok((links_plot(ctx, pose, whole, (None, false), None)?.0, None));
     }
     let crowded = crowded(scale);
     let side = tall;
@@ -157,9 +157,9 @@ pub(super) fn mechanism_plot(ctx: &Ctx, pose: &InversionPose) -> Result<(Plot, O
     };
     // The detail stands the bearings of its pins on the sides the whole
     // mechanism does: one rule for both views.
-    let (plot, shown) = links_plot(ctx, pose, plot, Some(region), None)?;
+    let (plot, shown) = links_plot(ctx, pose, plot, (Some(region), crowded), None)?;
     let follow = Some(shown.about(region));
-    let (detail, _) = links_plot(ctx, pose, detail, Some(region), follow)?;
+    let (detail, _) = links_plot(ctx, pose, detail, (Some(region), crowded), follow)?;
     Ok((plot, Some(detail)))
 }
 
@@ -230,12 +230,14 @@ fn pins_window(
 /// the panel, the driver's ω; on the whole mechanism (named `mechanism`)
 /// the caption and, where a detail enlarges `region`, its box; with how
 /// it showed the fixed bar, which a view drawn after it follows where
-/// `follow` says so ([`Shown`]).
+/// `follow` says so ([`Shown`]). Where the detail is the crowded pins'
+/// (`pins`), the whole mechanism of inversion 2 still letters its fixed
+/// pin C by its place in the box, its pin left to the detail.
 pub(super) fn links_plot(
     ctx: &Ctx,
     pose: &InversionPose,
     plot: Plot,
-    region: Option<Frame>,
+    (region, pins): (Option<Frame>, bool),
     follow: Option<Shown>,
 ) -> Result<(Plot, Shown)> {
     let m = ctx.mechanism;
@@ -272,6 +274,25 @@ pub(super) fn links_plot(
     // stand by the wrong pin (B's left of C's at l = 35 r, 180°).
     let held = |at| whole && region.is_some_and(|r: Frame| r.contains(at));
     for (key, at) in [("C", c), ("B", b), ("A", a)] {
+        if key == "C" && pins && held(at) && inversion != Inversion::Rod {
+            // The crowded pins' detail: C, the fixed pin whose bearing the
+            // whole mechanism draws, is lettered there too (its letter
+            // only in the detail, the reader found no C on the mechanism:
+            // inversion 2 at l = 1.1 r, 180°), its letter across the bar
+            // from the block's, its pin left to the detail (drawn here,
+            // it stood in the block, drawn at its least size about A).
+            // Inversion 3's C, a moving pin, is left to the detail with A:
+            // lettered here it stood by the block's letter, "C c" read as
+            // one label (l = 1.05 r, 180°).
+            let across = unit(a - c).map_or(Vector::new(0.0, 1.0), |u| Vector::new(-u.y, u.x));
+            let way = match drawn.a_way {
+                Some(way) => way,
+                None if across.y < 0.0 => -across,
+                None => across,
+            };
+            s.label_toward("label-C", at, way, RichText::parse("*C*"), TextSize::Letter);
+            continue;
+        }
         if (whole || s.contains(at)) && !held(at) {
             match drawn.a_way.filter(|_| key == "A") {
                 // Across the bar from the block's letter ("A c" read as

@@ -32,7 +32,7 @@ use serde_json::json;
 use mechanism::mechanism_plot;
 use notes::{coriolis_json, notes};
 pub(super) use panel::mark_window;
-use panel::{Drawn, Window, detail_plot, headless, polygon_plot, right_angles};
+use panel::{Drawn, Window, detail_plot, headless, lined_up, polygon_plot, right_angles};
 use polygons::Polygons;
 use rule::rule_plot;
 
@@ -169,6 +169,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
         headless(&acceleration_drawn, a_scale, a_window),
     ]
     .concat();
+    let lines = [
+        lined_up(&velocity_drawn, velocity.map().scale(), v_window),
+        lined_up(&acceleration_drawn, a_scale, a_window),
+    ]
+    .concat();
     let rule = rule_plot(ctx, rule_rect, &polygons)?;
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
@@ -193,7 +198,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.height(bottom + NOTES_LINES * super::NOTE_LINE + MARGIN);
     sheet.notes(
         Point::new(20.0, bottom),
-        &notes(ctx, &chain, &polygons, (v_bar, a_bar), (seen, &plain)),
+        &notes(
+            ctx,
+            &chain,
+            &polygons,
+            (v_bar, a_bar),
+            (seen, &plain, &lines),
+        ),
     );
     Ok(sheet.finish())
 }

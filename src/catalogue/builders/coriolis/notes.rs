@@ -2,6 +2,7 @@
 //! each polygon to its bar, and the values in the SVG's metadata.
 
 use super::super::{Ctx, short, sig};
+use super::panel::Lined;
 use super::polygons::Polygons;
 
 use crate::chain::{Inversion, InvertedChain};
@@ -45,14 +46,16 @@ pub(super) fn notes(
     chain: &InvertedChain,
     polygons: &Polygons,
     bars: (f64, f64),
-    (seen, plain): (Seen, &[String]),
+    (seen, plain, lines): (Seen, &[String], &[Lined]),
 ) -> Vec<String> {
     let read = Read::new(polygons);
     vec![
         pose_note(ctx, chain, polygons),
         velocity_note(ctx, polygons, &read, bars.0),
         acceleration_note(ctx, polygons, &read, bars.1, (seen.0, seen.2)),
-        coriolis_note(ctx, polygons, &read, bars.1, seen.1) + &headless_said(plain),
+        coriolis_note(ctx, polygons, &read, bars.1, seen.1)
+            + &headless_said(plain)
+            + &lined_up_said(lines),
     ]
 }
 
@@ -230,6 +233,16 @@ fn headless_said(plain: &[String]) -> String {
             rest.join(", ")
         ),
     }
+}
+
+/// The notes' word on the sides that meet at a point and run on from it
+/// the opposite ways along one line ([`super::panel::lined_up`]: each
+/// pair's names and the point's letter): drawn, they read as one side.
+/// Nothing where there are none.
+fn lined_up_said(lines: &[Lined]) -> String {
+    (lines.iter())
+        .map(|(p, q, at)| format!(" {p} and {q} lie on one line, the opposite ways from {at}."))
+        .collect()
 }
 
 /// The remarks `parts` after a value, in one bracket ("; " between them),

@@ -517,3 +517,67 @@ pub(super) fn headless(drawn: &Drawn, scale: f64, window: Option<Window>) -> Vec
         .map(|(_, _, from, to)| format!("{}{}", letter(*from), letter(*to)))
         .collect()
 }
+
+/// Two sides of a polygon on one line through a point they meet at: their
+/// names and the point's letter ([`lined_up`]).
+pub(super) type Lined = (String, String, String);
+
+/// The sine of the angle within which two sides of a polygon leaving one
+/// point the opposite ways read as one straight line (2°).
+const ONE_LINE: f64 = 0.035;
+
+/// The pairs of a polygon's sides drawn (at least [`MIN_ARROW`] long on
+/// its panel at `scale` page units per unit, or in its detail `window`
+/// where it reaches in) that meet at a point and run on from it the
+/// opposite ways along one line ([`ONE_LINE`]), each named by the letters
+/// of its ends, and the point's letter: they read as one side through
+/// the point, and the notes tell them apart (inversion 3 at l = 1.04 r,
+/// 269.87°: o′c′ and the Coriolis component o′k, one line through o′ in
+/// the ×50 detail). Sides set beside one another are not such pairs:
+/// they overlap, these only meet.
+pub(super) fn lined_up(drawn: &Drawn, scale: f64, window: Option<Window>) -> Vec<Lined> {
+    let letter = |at: Vector| {
+        (drawn.points.iter())
+            .find(|p| p.2 == at)
+            .map_or("", |p| p.1)
+    };
+    let shown = |(from, to): (Vector, Vector)| {
+        let length = (to - from).norm() * scale;
+        length >= MIN_ARROW
+            || window.is_some_and(|w| {
+                length * w.magnification >= MIN_ARROW
+                    && (w.frame.contains(Point::from(from)) || w.frame.contains(Point::from(to)))
+            })
+    };
+    let sides: Vec<(Vector, Vector)> = (drawn.arrows.iter())
+        .map(|a| (a.2, a.3))
+        .filter(|s| shown(*s))
+        .collect();
+    let name = |(from, to): (Vector, Vector)| format!("{}{}", letter(from), letter(to));
+    let mut pairs = Vec::new();
+    for (i, p) in sides.iter().enumerate() {
+        for q in sides.iter().skip(i + 1) {
+            // The point they share, and each one's way from it.
+            let ends = [(p.0, p.1), (p.1, p.0)];
+            let shared = ends.iter().find_map(|(at, far)| {
+                [(q.0, q.1), (q.1, q.0)]
+                    .iter()
+                    .find(|(other, _)| other == at)
+                    .map(|(_, other_far)| (*at, far - at, other_far - at))
+            });
+            let Some((at, u, v)) = shared else { continue };
+            let (u, v) = (u.normalize(), v.normalize());
+            let pair = (name(*p), name(*q), letter(at).to_string());
+            // Once each: sides whose ends coincide with other points are
+            // named by the first point's letter, and two such pairs are
+            // named alike (inversion 2 at l = 1.1 r, 0°).
+            let named = (pairs.iter()).any(|(a, b, _): &Lined| {
+                (*a == pair.0 && *b == pair.1) || (*a == pair.1 && *b == pair.0)
+            });
+            if u.dot(&v) < 0.0 && (u.x * v.y - u.y * v.x).abs() < ONE_LINE && !named {
+                pairs.push(pair);
+            }
+        }
+    }
+    pairs
+}

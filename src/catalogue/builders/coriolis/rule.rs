@@ -12,8 +12,12 @@ use crate::geom::{Frame, Point, Vector, perp};
 use crate::scene::Canvas;
 
 /// The direction rule at the pose's own directions: the sliding velocity
-/// v along the slot, the quarter turn in the sense of ω_d, and 2 ω_d v;
-/// where v is zero, the slot and the sense of ω_d alone.
+/// v along the slot, the quarter turn in the sense of ω_d, and 2 ω_d v.
+/// A vector that is zero is drawn as no arrow: where v is zero, the slot
+/// (a plain line, lettered v = 0) and the sense of ω_d; where ω_d is
+/// zero, v alone; in either case no 2 ω_d v (a nominal arrow there, at
+/// inversion 3's l = 29.5 r, 0°, read as a component of a length).
+/// Lettered so that the rule says which vanishes.
 pub(super) fn rule_plot(ctx: &Ctx, rect: Frame, polygons: &Polygons) -> Result<Plot> {
     let p = &polygons.p;
     let v = polygons.v();
@@ -40,11 +44,24 @@ pub(super) fn rule_plot(ctx: &Ctx, rect: Frame, polygons: &Polygons) -> Result<P
     let mut s = Canvas::new(map, map.world_frame(&plot.area()));
     let o = Point::origin();
     s.set_hue(Some(Hue::Velocity));
-    s.push(
-        "rule-v",
-        Role::Construction,
-        Shape::Arrow { from: o, to: o + u },
-    );
+    if moving {
+        s.push(
+            "rule-v",
+            Role::Construction,
+            Shape::Arrow { from: o, to: o + u },
+        );
+    } else {
+        // v = 0: the slot's direction, along which v would lie, as a
+        // plain line (an arrow there drew a velocity that is nil).
+        s.push(
+            "rule-slot",
+            Role::Construction,
+            Shape::Polyline {
+                points: vec![o, o + u],
+                closed: false,
+            },
+        );
+    }
     // Each letter set beyond its arrow's head, or the arc's middle, by
     // [`RULE_LETTER`]: set at them, "2ω_d v" and "ω_d" ran together
     // (inversion 3 at l = 1.09 r, 89.99°).
@@ -53,26 +70,35 @@ pub(super) fn rule_plot(ctx: &Ctx, rect: Frame, polygons: &Polygons) -> Result<P
         "label-rule-v",
         o + u * (1.0 + beyond),
         u,
-        RichText::parse("*v*"),
+        RichText::parse(if moving { "*v*" } else { "*v* = 0" }),
         TextSize::Letter,
     );
-    s.set_hue(Some(Hue::Acceleration));
-    s.push(
-        "rule-coriolis",
-        Role::Result,
-        Shape::Arrow {
-            from: o,
-            to: o + turned,
-        },
-    );
-    s.label_toward(
-        "label-rule-coriolis",
-        o + turned * (1.0 + beyond),
-        turned,
-        RichText::parse("2ω_{d}*v*"),
-        TextSize::Letter,
-    );
+    if moving && turning {
+        s.set_hue(Some(Hue::Acceleration));
+        s.push(
+            "rule-coriolis",
+            Role::Result,
+            Shape::Arrow {
+                from: o,
+                to: o + turned,
+            },
+        );
+        s.label_toward(
+            "label-rule-coriolis",
+            o + turned * (1.0 + beyond),
+            turned,
+            RichText::parse("2ω_{d}*v*"),
+            TextSize::Letter,
+        );
+    }
     s.set_hue(None);
+    if !turning {
+        // ω_d = 0: no sense to turn v in.
+        for item in s.finish().0 {
+            plot.push(item);
+        }
+        return Ok(plot);
+    }
     let start = u.y.atan2(u.x);
     s.push(
         "rule-turn",
