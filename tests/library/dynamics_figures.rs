@@ -2649,3 +2649,244 @@ fn the_crank_effort_s_arc_turns_as_the_notes_say_on_the_page() {
         );
     }
 }
+
+/// The crank-pin-load figures of the sixteenth review's engines: the
+/// default and r = 1 with l = 1.05, 1.07, 1.1, 30 and 52, each on its four
+/// page widths: (what, SVG).
+fn sixteenth_review_load_figures() -> Vec<(String, String)> {
+    load_figures(&at_every_width(&[
+        (0.5, 3.0, 0.0),
+        (1.0, 1.05, 0.0),
+        (1.0, 1.07, 0.0),
+        (1.0, 1.1, 0.0),
+        (1.0, 30.0, 0.0),
+        (1.0, 52.0, 0.0),
+    ]))
+}
+
+/// The page extent of the path `id`: its least and greatest x and y.
+fn path_extent(svg: &str, id: &str) -> (f64, f64, f64, f64) {
+    let p = path_numbers(svg, id);
+    let (xs, ys) = (p.iter().map(|q| q.0), p.iter().map(|q| q.1));
+    (
+        xs.clone().fold(f64::INFINITY, f64::min),
+        xs.fold(f64::NEG_INFINITY, f64::max),
+        ys.clone().fold(f64::INFINITY, f64::min),
+        ys.fold(f64::NEG_INFINITY, f64::max),
+    )
+}
+
+#[test]
+fn the_crank_pin_loads_details_frame_their_box_enlarged() {
+    // The sixteenth review: at r = 1, l = 1.07 r on 4.5 in each detail's
+    // frame was about a tenth lower than its box in the panel times the
+    // enlargement its caption gives (its caption on two lines took them
+    // off its area). Each detail's frame (drawn half a unit inside the
+    // area) is its box's width and height times the ratio of the two
+    // maps, to a unit.
+    let mut wrong = Vec::new();
+    let mut seen = 0;
+    for (case, svg) in sixteenth_review_load_figures() {
+        for panel in ["fixed", "relative"] {
+            let detail = format!("detail-{panel}");
+            let boxed = format!("{panel}-detail-box");
+            if !svg.contains(&format!("id=\"{boxed}\"")) {
+                continue;
+            }
+            seen += 1;
+            let map = |p: &str| panel_map(&svg, &format!("panel-{p}"))[0];
+            let m = map(&detail) / map(panel);
+            let (a, b) = (
+                path_extent(&svg, &boxed),
+                path_extent(&svg, &format!("{detail}-border")),
+            );
+            // The caption's enlargement is the maps' ratio.
+            let caption = ["", "-2", "-3"]
+                .iter()
+                .map(|k| format!("{detail}-caption{k}"))
+                .filter(|id| svg.contains(&format!("id=\"{id}\"")))
+                .map(|id| text_content(&svg, &id))
+                .collect::<Vec<_>>()
+                .join(" ");
+            let said: f64 = caption[caption.find('×').unwrap() + '×'.len_utf8()..]
+                .split_whitespace()
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap();
+            if (said - m).abs() > 0.01 {
+                wrong.push(format!("{case}: {detail} said ×{said}, drawn ×{m:.3}"));
+            }
+            let (w, h) = ((a.1 - a.0) * m, (a.3 - a.2) * m);
+            let (fw, fh) = (b.1 - b.0 + 1.0, b.3 - b.2 + 1.0);
+            if (w - fw).abs() > 1.0 || (h - fh).abs() > 1.0 {
+                wrong.push(format!(
+                    "{case}: {detail} {fw:.1} × {fh:.1}, its box × {m:.2} {w:.1} × {h:.1}"
+                ));
+            }
+        }
+    }
+    assert!(seen > 10, "only {seen} details");
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_crank_pin_loads_notes_say_the_dashed_curve_lies_flat_only_where_it_does() {
+    // The sixteenth review: the notes said the dashed curve of (a) lies
+    // almost flat on the x axis at r = 1, l = 1.07 r, where it stands far
+    // off it. Said at l = 30 r, where it is drawn flat; not at l = 1.07 r
+    // nor at the default (l = 6 r, its dashed curve a wedge).
+    let flat = "lies almost flat on the";
+    for ((r, l), said) in [
+        ((1.0, 30.0), true),
+        ((1.0, 1.07), false),
+        ((0.5, 3.0), false),
+    ] {
+        let (_, svg) = load_figures(&[(r, l, 0.0, None)]).remove(0);
+        let notes = note_text(&svg);
+        assert_eq!(notes.contains(flat), said, "r {r} l {l}: {notes}");
+        assert!(notes.contains("turn a small corner at each row"), "{notes}");
+    }
+}
+
+/// The strokes of the path `id` on the page, each a polyline: its cubic
+/// pieces flattened at eight points each.
+fn flattened(svg: &str, id: &str) -> Vec<Vec<(f64, f64)>> {
+    let Some(d) = attr(svg, id, "d") else {
+        return Vec::new();
+    };
+    let mut strokes: Vec<Vec<(f64, f64)>> = Vec::new();
+    let tokens = d.split_whitespace();
+    let mut cmd = 'M';
+    let mut nums: Vec<f64> = Vec::new();
+    let flush = |cmd: char, nums: &mut Vec<f64>, strokes: &mut Vec<Vec<(f64, f64)>>| {
+        let p: Vec<(f64, f64)> = nums.chunks(2).map(|q| (q[0], q[1])).collect();
+        match cmd {
+            'M' => strokes.push(p),
+            'C' => {
+                for c in p.chunks(3).filter(|c| c.len() == 3) {
+                    let from = *strokes.last().and_then(|s| s.last()).unwrap();
+                    let s = strokes.last_mut().unwrap();
+                    for k in 1..=8 {
+                        let t = f64::from(k) / 8.0;
+                        let u = 1.0 - t;
+                        let b = |a: f64, b1: f64, b2: f64, e: f64| {
+                            u * u * u * a
+                                + 3.0 * u * u * t * b1
+                                + 3.0 * u * t * t * b2
+                                + t * t * t * e
+                        };
+                        s.push((
+                            b(from.0, c[0].0, c[1].0, c[2].0),
+                            b(from.1, c[0].1, c[1].1, c[2].1),
+                        ));
+                    }
+                }
+            }
+            _ => {
+                if let Some(s) = strokes.last_mut() {
+                    s.extend(p);
+                }
+            }
+        }
+        nums.clear();
+    };
+    for t in tokens {
+        let (head, rest) = t.split_at(
+            t.find(|c: char| !c.is_ascii_alphabetic())
+                .unwrap_or(t.len()),
+        );
+        if let Some(c) = head.chars().next() {
+            flush(cmd, &mut nums, &mut strokes);
+            cmd = c;
+        }
+        if let Ok(v) = rest.parse() {
+            nums.push(v);
+        }
+    }
+    flush(cmd, &mut nums, &mut strokes);
+    strokes
+}
+
+#[test]
+fn the_crank_pin_loads_letters_see_their_dots_across_no_curve() {
+    // The sixteenth review: at r = 1, l = 1.07 and 1.1 r on 120 mm and
+    // 4.5 in, the 0° of (b′) stood over the wedge's two strands, its dot
+    // under them, with no leader: read as naming neither. A letter set
+    // by its dot with no leader sees it across no line of either curve:
+    // the way from a little off its dot (four units, past the dot and
+    // its own curve there) to its box's nearest point crosses none.
+    let mut wrong = Vec::new();
+    for (case, svg) in sixteenth_review_load_figures() {
+        for panel in drawn_load_panels(&svg) {
+            let strokes: Vec<Vec<(f64, f64)>> = ["with-rod", "without-rod"]
+                .iter()
+                .flat_map(|c| flattened(&svg, &format!("curve-{panel}-{c}")))
+                .collect();
+            for (id, at) in all_load_marks(&svg, panel) {
+                let label = id.replacen("point-", "label-", 1);
+                let leader = id.replacen("point-", "leader-", 1);
+                if !svg.contains(&format!("id=\"{label}\""))
+                    || svg.contains(&format!("id=\"{leader}\""))
+                {
+                    continue;
+                }
+                let (x0, x1, y0, y1) = letter_box(&svg, &label);
+                // The box a unit smaller all round, for the estimate of
+                // its glyphs.
+                let near = (
+                    at.0.clamp(x0 + 1.0, x1 - 1.0),
+                    at.1.clamp(y0 + 1.0, y1 - 1.0),
+                );
+                let d = (near.0 - at.0).hypot(near.1 - at.1);
+                if d <= 4.0 {
+                    continue;
+                }
+                let from = (
+                    at.0 + (near.0 - at.0) * 4.0 / d,
+                    at.1 + (near.1 - at.1) * 4.0 / d,
+                );
+                let crossed = (strokes.iter())
+                    .flat_map(|s| s.windows(2))
+                    .any(|w| segments_cross(from, near, w[0], w[1]));
+                if crossed {
+                    wrong.push(format!("{case}: {label} across a curve from its dot"));
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}
+
+#[test]
+fn the_crank_pin_loads_letters_stand_with_their_middles_nearest_their_own_dots() {
+    // The sixteenth review: at r = 1, l = 30 and 52 r the dashed curve's
+    // "90°′" in (a) stood under two of its dots, its box by both, read as
+    // naming either. A letter set by its dot with no leader has its
+    // middle nearer its own dot than any other dot of its panel.
+    let mut wrong = Vec::new();
+    for (case, svg) in sixteenth_review_load_figures() {
+        for panel in drawn_load_panels(&svg) {
+            let marks = all_load_marks(&svg, panel);
+            for (id, at) in &marks {
+                let label = id.replacen("point-", "label-", 1);
+                let leader = id.replacen("point-", "leader-", 1);
+                if !svg.contains(&format!("id=\"{label}\""))
+                    || svg.contains(&format!("id=\"{leader}\""))
+                {
+                    continue;
+                }
+                let (x0, x1, y0, y1) = letter_box(&svg, &label);
+                let c = (0.5 * (x0 + x1), 0.5 * (y0 + y1));
+                let own = (c.0 - at.0).hypot(c.1 - at.1);
+                for (other, q) in &marks {
+                    let apart = (q.0 - at.0).hypot(q.1 - at.1);
+                    if apart > 4.0 && (c.0 - q.0).hypot(c.1 - q.1) < own {
+                        wrong.push(format!("{case}: {label} nearer {other}"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+}

@@ -31,6 +31,13 @@ const RINGS: [f64; 3] = [0.0, 4.0, 8.0];
 /// with its dot, leader or not).
 const FAR_RINGS: [f64; 8] = [12.0, 17.0, 22.0, 28.0, 34.0, 40.0, 46.0, 51.0];
 
+/// The rings beyond [`FAR_RINGS`], out to four ems, page units beyond
+/// the gap: only where no place within three ems is clear, before the
+/// letter is left to the layout, which sets it by no rule of these
+/// ("180°′" an eighth of an em under *O* at r = 1, l = 1.1 r on 500
+/// units, its dot by the × with no room within three ems).
+const FARTHEST_RINGS: [f64; 3] = [57.0, 62.0, 68.0];
+
 /// A direction's component below this is along an axis.
 const ALONG: f64 = 1e-9;
 
@@ -121,6 +128,10 @@ struct Rules {
     lines: bool,
     /// A letter beside its dot [`NEARER`] nearer it than any other dot.
     nearer: bool,
+    /// A letter beside its dot seeing it across no line
+    /// ([`Letters::across`]): not the pole's, whose × stands where
+    /// curves cross.
+    sight: bool,
 }
 
 impl Rules {
@@ -129,30 +140,40 @@ impl Rules {
         pairs: false,
         lines: false,
         nearer: false,
+        sight: false,
     };
     /// A pair's letters beyond their dots.
     const PAIRS: Self = Self {
         pairs: true,
         lines: false,
         nearer: false,
+        sight: false,
     };
     /// Letters on a line apart and clear of the leaders.
     const LINES: Self = Self {
         pairs: false,
         lines: true,
         nearer: false,
+        sight: false,
     };
-    /// Both, and [`NEARER`].
+    /// Both, [`NEARER`] and in sight of its dot.
     const ALL: Self = Self {
         pairs: true,
         lines: true,
         nearer: true,
+        sight: true,
+    };
+    /// Both and [`NEARER`]: the pole's letter's.
+    const POLE: Self = Self {
+        sight: false,
+        ..Self::ALL
     };
     /// Both, without [`NEARER`].
     const NEAR: Self = Self {
         pairs: true,
         lines: true,
         nearer: false,
+        sight: false,
     };
 }
 
@@ -305,7 +326,7 @@ impl Letters {
         (id, leader_id): (String, String),
     ) -> Vec<Item> {
         let o = Point::origin();
-        let first = self.beside(o, text.clone(), dots, id.clone(), true);
+        let first = self.beside_with(o, text.clone(), dots, id.clone(), Rules::POLE);
         // Nearer the × than any dot, if not by [`NEARER`], rather than
         // led an em or more away (r = 1, l = 1.05 r: its dead centres'
         // dots all about the ×).
@@ -359,16 +380,40 @@ impl Letters {
         from: Point,
         text: RichText,
         dots: &[Point],
+        ids: (String, String),
+    ) -> Option<Led> {
+        self.led_on(&FAR_RINGS, from, text, dots, ids)
+    }
+
+    /// [`Letters::led`] on the rings [`FARTHEST_RINGS`], past three ems:
+    /// where no place nearer is clear.
+    pub(super) fn led_farther(
+        &mut self,
+        from: Point,
+        text: RichText,
+        dots: &[Point],
+        ids: (String, String),
+    ) -> Option<Led> {
+        self.led_on(&FARTHEST_RINGS, from, text, dots, ids)
+    }
+
+    /// [`Letters::led`] on the `rings`.
+    fn led_on(
+        &mut self,
+        rings: &[f64],
+        from: Point,
+        text: RichText,
+        dots: &[Point],
         (id, leader_id): (String, String),
     ) -> Option<Led> {
         let half = self.half(&text);
-        let curves = self.curves_near(from, half, *FAR_RINGS.last().unwrap_or(&0.0));
+        let curves = self.curves_near(from, half, *rings.last().unwrap_or(&0.0));
         // Fewest crossings first over every ring, then the nearest ring,
         // then the most room: the nearest ring's least crossed place
         // crossed a curve where a ring farther out had a place crossing
         // none (the offset engine r = 1, l = 3.83, e = −1.63: the
         // eleventh review).
-        let (b, (blocked, misleads, ..), _) = (FAR_RINGS.iter().enumerate())
+        let (b, (blocked, misleads, ..), _) = (rings.iter().enumerate())
             .flat_map(|(k, &ring)| {
                 let (this, curves) = (&*self, &curves);
                 directions().filter_map(move |u| {
@@ -499,13 +544,33 @@ impl Letters {
             }
             let d = to_box(b, *q);
             let keep = if k == 0 { POLE_ROOM } else { DOT_ROOM };
-            if d * s < keep || (!led && (d - own) * s < nearer) {
+            // Its middle nearer its own dot too: a wide letter under two
+            // dots, its box by both, reads as either ("90°′" between two
+            // dots of the dashed curve at r = 1, l = 52 r in (a)).
+            let middle = (*q - b.0).norm() - (from - b.0).norm();
+            if d * s < keep || (!led && ((d - own) * s < nearer || middle * s < nearer)) {
                 return None;
             }
             least = least.min(d * s - keep);
         }
+        // Its dot seen from it across no line: a letter beyond a curve
+        // from its dot reads as that curve's, its dot left bare ("0°"
+        // over the wedge's two strands, its dot under them, at r = 1,
+        // l = 1.07 r on 4.5 in).
+        if !led && rules.sight && self.across(b, from, curves) {
+            return None;
+        }
         self.clear(b, curves, rules.lines)
             .map(|room| room.min(least))
+    }
+
+    /// Whether a line of the `curves` or a dotted jump runs between the
+    /// box `b` and its dot `from`: across the way from [`LEADER_SHORT`]
+    /// off the dot (past its own curve there) to the box's nearest point.
+    fn across(&self, b: Boxed, from: Point, curves: &[(Point, Point)]) -> bool {
+        let (a, start) = self.leader(b, from);
+        // `leader` runs from the box to short of the dot: the same way.
+        (curves.iter().chain(&self.jumps)).any(|(p, q)| crossing(a, start, *p, *q).is_some())
     }
 
     /// Whether the box `b` of the letter of `from` (or, `led`, its

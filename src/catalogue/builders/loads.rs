@@ -310,7 +310,14 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     );
     let top = end + 8.0;
     sheet.height(top + NOTES + 16.0);
-    sheet.notes(Point::new(20.0, top), &notes(ctx, &rod, largest, bar));
+    // The dashed curve of (a) within an em of the *x* axis on the page:
+    // it reads as lying on it, and the notes say why.
+    let across = (fixed.iter())
+        .filter_map(|p| p.get(1))
+        .map(|v| v.y.abs())
+        .fold(0.0, f64::max);
+    let flat = across * scale < ctx.style.font_size(TextSize::Letter);
+    sheet.notes(Point::new(20.0, top), &notes(ctx, &rod, largest, bar, flat));
     Ok(sheet.finish())
 }
 
@@ -602,7 +609,13 @@ fn details(
             let under = ends.get(k).copied().unwrap_or(last);
             (half, 16.0 + k as f64 * (half + 16.0), under + DETAIL_GAP)
         };
-        let rect = Frame::from_origin_size(x + 0.5 * (slot - size.0), top, size.0, size.1);
+        // Taller by its caption's lines after the first, so that its
+        // area keeps the height the window was cut for: a caption on two
+        // lines took them off the area, and the detail showed a tenth
+        // less than its box enlarged (r = 1, l = 1.07 r on 4.5 in).
+        let view = View::Detail(w);
+        let high = size.1 + caption_extra(ctx, &panel_caption(relative, view), size.0)?;
+        let rect = Frame::from_origin_size(x + 0.5 * (slot - size.0), top, size.0, high);
         // Sampled as finely on the page as the panel's curves, which
         // the letters keep clear of: at 2 a degree, ×6 (l = 47.6 r),
         // a letter cleared the chords and stood on the curve.
@@ -611,10 +624,9 @@ fn details(
             sampled: &fine,
             ..panel
         };
-        let view = View::Detail(w);
         let (plot, _) = polar_plot(ctx, &curves, relative, rect, (&w.region, 0.0), view)?;
         sheet.detail(plot);
-        end = end.max(top + size.1);
+        end = end.max(top + high);
     }
     Ok(end)
 }
@@ -1102,6 +1114,12 @@ fn mark_letter(
     if let Some(beside) = letters.beside(*p, text.clone(), &others, id.clone(), false) {
         return (vec![beside], true);
     }
+    // Nor beside it: farther out, past three ems, rather than left to
+    // the layout.
+    let ids = (id.clone(), format!("leader-{name}-{c}-{d}"));
+    if let Some(led) = letters.led_farther(*p, text.clone(), &others, ids) {
+        return (Vec::from(led.items), true);
+    }
     let label = Item::new(
         id,
         Role::Label,
@@ -1119,8 +1137,9 @@ fn mark_letter(
 
 /// The notes, in short sentences: the engine and its rod, how the
 /// curves are read, the largest loads, and the shapes a reader might take
-/// for faults ([`SHAPES`]).
-fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
+/// for faults ([`SHAPES`]), the dashed curve's lying on the axis only
+/// where it is drawn `flat` ([`FLAT`]).
+fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64, flat: bool) -> Vec<String> {
     let m = ctx.mechanism;
     let (u, f, mass_u) = (ctx.unit(), ctx.units.force(), ctx.units.mass());
     let r = rod.rod();
@@ -1147,7 +1166,11 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
             short(largest[0]),
             short(largest[1]),
         ),
-        SHAPES.to_string(),
+        if flat {
+            format!("{} {FLAT} {}", SHAPES.0, SHAPES.1)
+        } else {
+            format!("{} {}", SHAPES.0, SHAPES.1)
+        },
     ]
 }
 
@@ -1168,4 +1191,14 @@ fn notes(ctx: &Ctx, rod: &Engine, largest: [f64; 2], bar: f64) -> Vec<String> {
 /// load turns a corner at each (the twelfth review took the small
 /// loops' corners for chords of too coarse a tracing; with a constant
 /// gas force the same loops are smooth).
-const SHAPES: &str = "A small loop is the load turning back and out again, after the cut-off. A sharp point where a curve doubles back is a turning point of the load, not an arrowhead. With a long rod the dashed curve in (a) lies almost flat on the *x* axis: a massless rod’s load lies along the rod, within φ of the line of stroke. With an indicator diagram the pressure runs straight between the diagram’s rows, so the curves turn a small corner at each row.";
+/// The two halves, about where [`FLAT`] stands.
+const SHAPES: (&str, &str) = (
+    "A small loop is the load turning back and out again, after the cut-off. A sharp point where a curve doubles back is a turning point of the load, not an arrowhead.",
+    "With an indicator diagram the pressure runs straight between the diagram’s rows, so the curves turn a small corner at each row.",
+);
+
+/// The notes' word on the dashed curve of (a) drawn flat on the *x*
+/// axis, said only where it is (within an em of the axis on the page):
+/// at a short rod, where it stands well off the axis, the sentence spoke
+/// of no curve drawn (r = 1, l = 1.07 r).
+const FLAT: &str = "With a long rod the dashed curve in (a) lies almost flat on the *x* axis: a massless rod’s load lies along the rod, within φ of the line of stroke.";
