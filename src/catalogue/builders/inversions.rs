@@ -731,7 +731,8 @@ pub(super) fn draw_links(
     let block = super::chains::block_on_page(block_size(&m), canvas.transform().scale());
     let mut d = Drawing::new(m, pose, canvas, block)
         .showing(follow)
-        .leg_on_line();
+        .leg_on_line()
+        .without_centres();
     d.path(pose.inversion());
     d.frame(pose);
     d.hatch();
@@ -1122,6 +1123,15 @@ impl Drawing {
     /// 340°).
     fn leg_on_line(mut self) -> Self {
         self.q.jog = Vector::zeros();
+        self
+    }
+
+    /// The same drawing with no centres' dots to keep the bearings clear
+    /// of: for the Coriolis figures' mechanism, which draws no centres
+    /// (an undrawn O_bd at A turned C's bearing along the crank, its
+    /// hatching out of the detail's box, at l = 1.1 r, 180°).
+    fn without_centres(mut self) -> Self {
+        self.dots.clear();
         self
     }
 
