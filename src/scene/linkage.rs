@@ -267,9 +267,18 @@ impl Canvas {
     /// the block) crosses them and clear of the bearing at `centre`, but
     /// never short of the block: they run across the crank circle (a path,
     /// not a part) and under the whole block (`guide-{name}-upper`,
-    /// `hatch-{name}-upper-k`, …).
-    pub(crate) fn guides(&mut self, name: &str, slot: &Slot, centre: Point, rod: Seg) {
+    /// `hatch-{name}-upper-k`, …). Returns the arc length where the
+    /// longer guide drawn opens (`None`: none drawn), beyond which the
+    /// slot's middle line does not run.
+    pub(crate) fn guides(
+        &mut self,
+        name: &str,
+        slot: &Slot,
+        centre: Point,
+        rod: Seg,
+    ) -> Option<f64> {
         let h = slot.half_height;
+        let mut open: Option<f64> = None;
         for (id, delta) in [("upper", h), ("lower", -h)] {
             let (s0, s1) = slot.range;
             // From the far end back towards the crank, in steps of about
@@ -295,7 +304,10 @@ impl Canvas {
                 continue;
             }
             self.guide(&format!("{name}-{id}"), &walk, last, span.norm());
+            let at = walk.at(last);
+            open = Some(open.map_or(at, |o: f64| o.min(at)));
         }
+        open
     }
 
     /// The step a guide runs to from its far end: short of the bearing at

@@ -14,6 +14,7 @@ mod plate;
 #[path = "../common/worked_engine.rs"]
 mod worked_engine;
 
+mod chain_figures;
 mod diagrams;
 mod figure_layout;
 mod figures;

@@ -14,7 +14,7 @@ use crate::chain::{ChainCentres, CylindricChain, QuadricPose};
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Result};
 use crate::figure::{Align, Figure, Item, Part, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Intersection, Point, Vector};
+use crate::geom::{Frame, Intersection, Point, Vector, segment_distance, unit};
 use crate::number::plain;
 use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Slot};
 use crate::{angle::Angle, mechanism::SliderCrank};
@@ -142,6 +142,24 @@ impl Chains {
         Point::new(0.0, self.m.offset() - self.rho)
     }
 
+    /// The distance (world units) from the crank centre C to the block
+    /// of half sizes `(lh, hh)` in the slotted panel (b) (`curved`) or
+    /// (c) (0 where the block covers C).
+    fn block_over_c(&self, curved: bool, (lh, hh): (f64, f64)) -> f64 {
+        let a = self.slotted(curved).0.pose(self.angle).a();
+        // The slot's tangent at the block: square to the radius from O_cd
+        // in (b), along x in (c).
+        let t = if curved {
+            unit(a - self.o_cd()).map_or(Vector::new(1.0, 0.0), |u| Vector::new(-u.y, u.x))
+        } else {
+            Vector::new(1.0, 0.0)
+        };
+        let v = Point::origin() - a;
+        let along = (v.dot(&t).abs() - lh).max(0.0);
+        let across = ((v.x * t.y - v.y * t.x).abs() - hh).max(0.0);
+        along.hypot(across)
+    }
+
     /// The chain of the slotted panel (b) (`curved`) or (c): the chain,
     /// its slot's radius (`None`: straight) and its block's travel.
     fn slotted(&self, curved: bool) -> (&CylindricChain, Option<f64>, (f64, f64)) {
@@ -213,6 +231,18 @@ struct Panel {
     a: Point,
 }
 
+/// A block nearer the crank centre than this (page units: the pin's
+/// radius and a little paper) stands over C's pin and its bearing, which
+/// the notes say.
+const OVER: f64 = 6.0;
+
+/// The slot's middle line stops this short of the rod (page units: the
+/// rod's half width and a little paper).
+const ROD_CLEAR: f64 = 4.0;
+/// Nearer than this (page units: the rod's half width, the line's and a
+/// little paper) the slot's middle line runs on the rod.
+const ROD_TOUCH: f64 = 2.5;
+
 /// The height of the notes below the panels, page units.
 const NOTES_HEIGHT: f64 = 44.0;
 
@@ -262,7 +292,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.plot(plot);
     let bottom = rect.max().y + 6.0 + extra;
     sheet.height(bottom + NOTES_HEIGHT);
-    sheet.notes(Point::new(20.0, bottom), &notes(&chains));
+    // The panels whose block stands over the crank's bearing at C.
+    let over: Vec<&str> = [(true, "(b)"), (false, "(c)")]
+        .into_iter()
+        .filter(|&(curved, _)| chains.block_over_c(curved, block) * map.scale() < OVER)
+        .map(|(_, name)| name)
+        .collect();
+    sheet.notes(Point::new(20.0, bottom), &notes(&chains, &over));
     Ok(sheet.finish())
 }
 
@@ -341,8 +377,11 @@ fn panel(
     s.link("rod", vec![b, a]);
     s.pin("C", c);
     s.pin("B", b);
-    s.letter("link-a", mid(c, b), "*a*", TextSize::Letter);
-    s.letter("link-b", mid(b, a), "*b*", TextSize::Letter);
+    if k != 0 {
+        let [crank, rod] = letter_ways([(c, b), (b, a)], &[], s.world(NEAR));
+        s.link_letter_toward("link-a", (c, b), "*a*", crank);
+        s.link_letter_toward("link-b", (b, a), "*b*", rod);
+    }
     let panel = Panel { k, dx, c, b, a };
     let centres = if k == 0 {
         lever_panel(s, chains, &panel)
@@ -352,9 +391,89 @@ fn panel(
     (key, centres)
 }
 
-/// The middle of `p` and `q`.
-fn mid(p: Point, q: Point) -> Point {
-    Point::from((p.coords + q.coords) * 0.5)
+/// Two links within this distance (page units) of each other, lying
+/// along one another, have their letters on their two sides.
+const NEAR: f64 = 12.0;
+/// Links within this angle (degrees) of each other lie along one another…
+const ALONG: f64 = 10.0;
+/// …and within this one meet in a wedge too narrow for a letter of each.
+const WEDGE: f64 = 40.0;
+
+/// The side each link's letter is tried on first (a world direction;
+/// `None`: wherever the renderer finds room by it). Two links lying along
+/// one another within `near` (world units) take their two sides, the
+/// shorter the side away from the `pins` off their line ("b a" side by
+/// side over one line named neither, l = 1.1 r at 180°); two meeting in a
+/// narrow wedge each the side away from the other (b between the rod and
+/// the lever c named c, l = 1.06 r at 269.41°).
+fn letter_ways<const N: usize>(
+    links: [(Point, Point); N],
+    pins: &[Point],
+    near: f64,
+) -> [Option<Vector>; N] {
+    let mut ways: [Option<Vector>; N] = [None; N];
+    let dir = |(p, q): (Point, Point)| unit(q - p);
+    let normal = |u: Vector| Vector::new(-u.y, u.x);
+    let mid = |(p, q): (Point, Point)| Point::from((p.coords + q.coords) * 0.5);
+    let get = |ways: &[Option<Vector>; N], k: usize| ways.get(k).copied().flatten();
+    let set = |ways: &mut [Option<Vector>; N], k: usize, n: Vector| {
+        if let Some(w) = ways.get_mut(k) {
+            w.get_or_insert(n);
+        }
+    };
+    type Pair = (usize, (Point, Point), Vector);
+    let pairs = |limit: f64| {
+        let mut found: Vec<(Pair, Pair)> = Vec::new();
+        for (i, &li) in links.iter().enumerate() {
+            for (j, &lj) in links.iter().enumerate().skip(i + 1) {
+                let (Some(u), Some(v)) = (dir(li), dir(lj)) else {
+                    continue;
+                };
+                if u.dot(&v).abs() >= limit.to_radians().cos()
+                    && segment_distance(li.0, li.1, lj.0, lj.1) < near
+                {
+                    found.push(((i, li, u), (j, lj, v)));
+                }
+            }
+        }
+        // The narrowest first: a link between two wedges takes its side
+        // out of the narrower.
+        found.sort_by(|x, y| {
+            let cos = |p: &(Pair, Pair)| p.0.2.dot(&p.1.2).abs();
+            cos(y).total_cmp(&cos(x))
+        });
+        found
+    };
+    for (first, second) in pairs(ALONG) {
+        // The shorter link first, its letter away from the pins off the
+        // line the two lie along.
+        let length = |(_, (p, q), _): Pair| (q - p).norm();
+        let ((s, ls, u), (l, _, _)) = if length(first) <= length(second) {
+            (first, second)
+        } else {
+            (second, first)
+        };
+        let n = normal(u);
+        let off: f64 = (pins.iter())
+            .map(|&p| (p - ls.0).dot(&n))
+            .filter(|d| d.abs() > near)
+            .sum();
+        let n = match get(&ways, s).or(get(&ways, l).map(|w| -w)) {
+            Some(w) => w,
+            None if off > 0.0 => -n,
+            None => n,
+        };
+        set(&mut ways, s, n);
+        set(&mut ways, l, -n);
+    }
+    for (first, second) in pairs(WEDGE) {
+        for ((k, lk, w), (_, lo, _)) in [(first, second), (second, first)] {
+            let n = normal(w);
+            let toward = (mid(lo) - mid(lk)).dot(&n);
+            set(&mut ways, k, if toward > 0.0 { -n } else { n });
+        }
+    }
+    ways
 }
 
 /// (a): the lever c about O_cd and the frame d from C to O_cd, hatched.
@@ -370,8 +489,15 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
     s.hatch_link("frame", c, o, &avoid, ends);
     s.pin("A", a);
     s.lettered("O-cd", o, "*O*_{cd}", Marker::Pin, c);
-    s.letter("link-c", mid(o, a), "*c*", TextSize::Letter);
-    s.letter("link-d", mid(c, o), "*d*", TextSize::Letter);
+    let links = [(c, b), (b, a), (o, a), (c, o)];
+    let ways = letter_ways(links, &[c, b, a, o], s.world(NEAR));
+    for ((name, markup), (link, way)) in [("link-a", "*a*"), ("link-b", "*b*")]
+        .into_iter()
+        .chain([("link-c", "*c*"), ("link-d", "*d*")])
+        .zip(links.into_iter().zip(ways))
+    {
+        s.link_letter_toward(name, link, markup, way);
+    }
     let (sin, cos) = chains.turn.to_radians().sin_cos();
     // Turned from the quadric chain's frame (O_cd on +x) into the slot's.
     ChainCentres::of_quadric(&chains.quadric)
@@ -401,14 +527,29 @@ fn slot_panel(
         half_height: hh,
         block: (pose.arc_position(), lh),
     };
-    // The slot's middle line, then the guides.
+    // The guides, then the slot's middle line along them only, and short
+    // of the rod where it nears it outside the block (run on past where the guides open
+    // towards the crank, it lay along the rod and crossed it).
+    let mut open = s.guides("slot", &slot, c, (b, a)).unwrap_or(slot.range.0);
+    let step = s.world(1.0);
+    let mut at = pose.arc_position() - lh;
+    let (pb, pa) = (s.transform().apply(b), s.transform().apply(a));
+    let by_rod = |at: f64| {
+        let q = s.transform().apply(point(at, 0.0));
+        segment_distance(q, q, pb, pa)
+    };
+    while at > open {
+        // On the rod, or near it and not drawing away from it (the rod
+        // leaving the block through its edge draws away from the line).
+        let d = by_rod(at);
+        if d < ROD_TOUCH || (d < ROD_CLEAR && by_rod(at - step) <= d) {
+            open = at + step;
+            break;
+        }
+        at -= step;
+    }
     let mid_line: Vec<Point> = (0..=48)
-        .map(|j| {
-            point(
-                slot.range.0 + (slot.range.1 - slot.range.0) * j as f64 / 48.0,
-                0.0,
-            )
-        })
+        .map(|j| point(open + (slot.range.1 - open) * j as f64 / 48.0, 0.0))
         .collect();
     s.push(
         "line-slot",
@@ -418,7 +559,6 @@ fn slot_panel(
             closed: false,
         },
     );
-    s.guides("slot", &slot, c, (b, a));
     // The block, following the slot.
     let sa = pose.arc_position();
     let mut outline: Vec<Point> = (0..=8)
@@ -436,15 +576,17 @@ fn slot_panel(
             s.lettered("O-cd", o, "*O*_{cd}", Marker::Dot, c);
         }
         _ => {
-            s.lettered_at_infinity("O-cd", (a, Vector::new(0.0, -1.0)), "*O*_{cd}", false);
+            // Lettered beside its arrow: by the tail the renderer set it
+            // loose, under the crank circle with a gap above the arrow.
+            s.lettered_at_infinity("O-cd", (a, Vector::new(0.0, -1.0)), "*O*_{cd}", true);
         }
     }
     ChainCentres::of_cylindric(&pose).to_json()
 }
 
 /// The notes: the mechanism and the crank angle, and what each panel's
-/// links are.
-fn notes(chains: &Chains) -> [String; 2] {
+/// links are, and the panels (`over`) whose block stands over C.
+fn notes(chains: &Chains, over: &[&str]) -> [String; 2] {
     let m = &chains.m;
     let e = m.offset();
     [
@@ -459,6 +601,16 @@ fn notes(chains: &Chains) -> [String; 2] {
             },
             short(chains.angle.degrees())
         ),
-        "(a) lever *c* = ρ about *O*_{cd}, frame *d* = *CO*_{cd}; (b) the block *c* in a slot of radius ρ about *O*_{cd}; (c) ρ → ∞.".to_string(),
+        format!(
+            "(a) lever *c* = ρ about *O*_{{cd}}, frame *d* = *CO*_{{cd}}; (b) the block *c* in a slot of radius ρ about *O*_{{cd}}; (c) ρ → ∞.{}",
+            if over.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    " At this pose the block stands over the crank centre *C* in {}.",
+                    over.join(" and ")
+                )
+            }
+        ),
     ]
 }
