@@ -653,7 +653,12 @@ impl Canvas {
         }
     }
 
-    pub(crate) fn finish(self) -> (Vec<Item>, Map<String, Value>) {
+    /// The items drawn, the letters of edge arrows running side by side
+    /// set apart ([`super::edge_letters::part`]), and the points recorded.
+    pub(crate) fn finish(mut self) -> (Vec<Item>, Map<String, Value>) {
+        let near = self.world(super::edge_letters::SIDE_BY_SIDE);
+        let shift = self.world(super::edge_letters::SHIFT);
+        super::edge_letters::part(&mut self.items, near, shift);
         (self.items, self.points)
     }
 }

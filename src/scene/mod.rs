@@ -13,6 +13,7 @@
 mod cache;
 mod canvas;
 mod draw;
+mod edge_letters;
 mod layer;
 mod linkage;
 mod notation;

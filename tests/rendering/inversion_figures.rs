@@ -1088,3 +1088,53 @@ fn the_hand_pump_s_page_is_fitted_to_its_drawing() {
         "d from {left:.0} to {right:.0} on a page {width:.0} wide"
     );
 }
+
+/// The ends of the first path inside the group `id` (an arrow's shaft),
+/// page units.
+fn shaft(svg: &str, id: &str) -> Option<((f64, f64), (f64, f64))> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let d = svg[at..].split(" d=\"").nth(1)?.split('"').next()?;
+    let n: Vec<f64> = d
+        .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    (n.len() >= 4).then(|| ((n[0], n[1]), (n[2], n[3])))
+}
+
+#[test]
+fn letters_of_parallel_edge_arrows_stand_on_their_far_sides() {
+    // The eighteenth review: inversion 2 at l = 1.08 r, 269.31° set
+    // "to O_bd" between its arrow and O_cd's parallel one, nearer O_cd's
+    // (2.5): a reader takes the wrong arrow. Each letter stands on the
+    // side of its own arrow away from the other.
+    let mut seen = 0;
+    for (rod, deg) in [
+        (1.08, 269.31),
+        (1.06, 269.31),
+        (1.1, 269.31),
+        (1.08, 268.5),
+        (1.08, 270.2),
+    ] {
+        let svg = svg_at(FigureName::Inversion2RotatingBlock, (rod, 0.0, deg), None);
+        let (Some(bd), Some(cd)) = (shaft(&svg, "offpage-O-bd"), shaft(&svg, "infinity-O-cd"))
+        else {
+            continue;
+        };
+        let plate = Plate::read(&svg);
+        for (own, other, label) in [(bd, cd, "label-O-bd"), (cd, bd, "label-O-cd")] {
+            let Some(centre) = text_centre(&plate, label) else {
+                continue;
+            };
+            let across = ((own.0.1 - other.0.1).abs()).max((own.0.0 - other.0.0).abs());
+            if across > 36.0 {
+                continue; // not side by side
+            }
+            seen += 1;
+            assert!(
+                side(own.0, own.1, centre).signum() == -side(own.0, own.1, other.0).signum(),
+                "l = {rod} r, {deg}°: {label} at {centre:?} between its arrow {own:?} and {other:?}"
+            );
+        }
+    }
+    assert!(seen >= 4, "the arrows ran side by side at {seen} letters");
+}
