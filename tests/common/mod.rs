@@ -32,6 +32,23 @@ pub fn snapshot_settings() -> insta::Settings {
     s
 }
 
+/// The points of the first path inside the element `id` (a group: an
+/// arrow's shaft and head, an arc): every pair of numbers of its `d`
+/// (moves' and lines' ends, and a curve's controls and ends), page units.
+pub fn group_path(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let at = svg.find(&format!("id=\"{id}\"")).expect(id);
+    let d = svg[at..]
+        .split(" d=\"")
+        .nth(1)
+        .and_then(|s| s.split('"').next())
+        .unwrap_or_else(|| panic!("no path in {id}"));
+    let numbers: Vec<f64> = d
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
 /// The `<metadata>` JSON of an SVG.
 pub fn metadata(svg: &str) -> serde_json::Value {
     let a = svg.find("<metadata>").unwrap() + "<metadata>".len();

@@ -2591,29 +2591,9 @@ fn the_crank_pin_loads_notes_speak_in_short_plain_sentences() {
     );
 }
 
-/// The points of the first path of the group `id`: its moves' and its
-/// curves' end points, in page units (y down).
-fn page_points_of_group(svg: &str, id: &str) -> Vec<(f64, f64)> {
-    let at = svg
-        .find(&format!("id=\"{id}\""))
-        .unwrap_or_else(|| panic!("no {id}"));
-    let d = svg[at..]
-        .split(" d=\"")
-        .nth(1)
-        .unwrap()
-        .split('"')
-        .next()
-        .unwrap();
-    let numbers: Vec<f64> = d
-        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
-        .filter(|t| !t.is_empty())
-        .map(|t| t.parse().unwrap())
-        .collect();
-    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
-}
-
 #[test]
 fn the_crank_effort_s_arc_turns_as_the_notes_say_on_the_page() {
+    let mut arcs = 0;
     for ((r, l, e), deg) in CASES {
         let svg = svg(FigureName::InertiaForce, (r, l, e), deg);
         let id = ["torque-T", "detail-torque-T"]
@@ -2622,10 +2602,11 @@ fn the_crank_effort_s_arc_turns_as_the_notes_say_on_the_page() {
         let Some(id) = id else {
             continue; // no arc where T = 0 (a dead centre)
         };
+        arcs += 1;
         // The arc's turn seen on the page: the sum of the cross products
         // of its points about their mean, positive for a clockwise turn
         // on a page whose y runs down.
-        let p = page_points_of_group(&svg, id);
+        let p = common::group_path(&svg, id);
         let n = p.len() as f64;
         let c = (
             p.iter().map(|q| q.0).sum::<f64>() / n,
@@ -2648,6 +2629,8 @@ fn the_crank_effort_s_arc_turns_as_the_notes_say_on_the_page() {
             "{r} {l} {e} at {deg}°: the arc's turn {turn}"
         );
     }
+    // Every case has a torque: none is at a dead centre.
+    assert_eq!(arcs, CASES.len(), "the arc drawn at {arcs} cases");
 }
 
 /// The crank-pin-load figures of the sixteenth review's engines: the

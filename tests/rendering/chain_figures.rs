@@ -6,7 +6,7 @@
 //! the crank's bearing unremarked.
 
 use super::polygon_figures::{path, svg, text_centre};
-use crate::common::{read_text, segment_distance};
+use crate::common::{group_path, read_text, segment_distance};
 use crate::plate::{Plate, Seg};
 use slider_crank::FigureName;
 
@@ -71,6 +71,7 @@ fn each_link_letter_stands_nearer_its_own_link_than_any_other() {
     // than any other; where two links lie along one another, the letters
     // stand on the line's two sides or each by its own link's part the
     // other leaves bare.
+    let mut lettered = 0;
     for (rod, offset, deg) in ENGINES {
         let svg = svg(FIG, rod, offset, deg);
         let plate = Plate::read(&svg);
@@ -92,6 +93,7 @@ fn each_link_letter_stands_nearer_its_own_link_than_any_other() {
                 let Some(p) = text_centre(&plate, &id) else {
                     continue;
                 };
+                lettered += 1;
                 let mine = segment_distance(p, own.0, own.1);
                 for (other, theirs) in &segs {
                     if other == letter {
@@ -119,35 +121,21 @@ fn each_link_letter_stands_nearer_its_own_link_than_any_other() {
             }
         }
     }
-}
-
-/// The first path's points inside the group `id`.
-fn group_path(svg: &str, id: &str) -> Vec<(f64, f64)> {
-    let at = svg.find(&format!("id=\"{id}\"")).expect(id);
-    let d = svg[at..]
-        .split(" d=\"")
-        .nth(1)
-        .unwrap()
-        .split('"')
-        .next()
-        .unwrap();
-    let numbers: Vec<f64> = d
-        .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
-        .filter_map(|w| w.parse().ok())
-        .collect();
-    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+    assert!(lettered > 0, "no link letter found to check");
 }
 
 #[test]
 fn o_cd_at_infinity_is_lettered_at_its_arrow() {
     // At l = 1.1 r, 90.73° and 270.58° (c)'s "O_cd at ∞" floated under
     // the crank circle with a gap above its arrow (and at the default).
+    let mut checked = 0;
     for (rod, offset, deg) in ENGINES {
         let svg = svg(FIG, rod, offset, deg);
         let plate = Plate::read(&svg);
         let Some(label) = plate.texts.iter().find(|t| t.id == "label-O-cd-c") else {
             continue;
         };
+        checked += 1;
         let arrow = group_path(&svg, "infinity-O-cd-c");
         let shaft = Seg(arrow[0], arrow[arrow.len() - 1]);
         let gap = label.rect.distance_to_seg(&shaft);
@@ -157,6 +145,7 @@ fn o_cd_at_infinity_is_lettered_at_its_arrow() {
             "l = {rod}, e = {offset}, {deg}°: O_cd's letter {gap:.1} from its arrow"
         );
     }
+    assert!(checked > 0, "no engine drew O_cd at infinity");
 }
 
 #[test]
@@ -165,12 +154,14 @@ fn the_slot_middle_line_ends_with_its_guides() {
     // the guides' open end, along the rod b and across it below its
     // letter. Every point of it lies between the guides drawn, and off
     // the rod outside the block.
+    let mut slots = 0;
     for (rod, offset, deg) in ENGINES {
         let svg = svg(FIG, rod, offset, deg);
         for suffix in ["b", "c"] {
             let Some(_) = crate::common::tag(&svg, &format!("guide-slot-upper-{suffix}")) else {
                 continue;
             };
+            slots += 1;
             let guides: Vec<Vec<(f64, f64)>> = ["upper", "lower"]
                 .iter()
                 .map(|g| path(&svg, &format!("guide-slot-{g}-{suffix}")))
@@ -195,6 +186,7 @@ fn the_slot_middle_line_ends_with_its_guides() {
             }
         }
     }
+    assert!(slots > 0, "no slot drawn to check");
 }
 
 #[test]

@@ -1090,15 +1090,15 @@ fn the_hand_pump_s_page_is_fitted_to_its_drawing() {
 }
 
 /// The ends of the first path inside the group `id` (an arrow's shaft),
-/// page units.
+/// page units; `None` where the figure draws no such arrow.
 fn shaft(svg: &str, id: &str) -> Option<((f64, f64), (f64, f64))> {
-    let at = svg.find(&format!("id=\"{id}\""))?;
-    let d = svg[at..].split(" d=\"").nth(1)?.split('"').next()?;
-    let n: Vec<f64> = d
-        .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
-        .filter_map(|w| w.parse().ok())
-        .collect();
-    (n.len() >= 4).then(|| ((n[0], n[1]), (n[2], n[3])))
+    if !svg.contains(&format!("id=\"{id}\"")) {
+        return None;
+    }
+    match crate::common::group_path(svg, id)[..] {
+        [a, b, ..] => Some((a, b)),
+        _ => None,
+    }
 }
 
 #[test]
