@@ -15,6 +15,7 @@ mod canvas;
 mod draw;
 mod edge_letters;
 mod layer;
+mod letter_ways;
 mod linkage;
 mod notation;
 pub(crate) mod valid;
@@ -23,6 +24,7 @@ pub use cache::Evaluations;
 pub(crate) use canvas::{Canvas, Marker, round};
 pub(crate) use draw::{COINCIDE, offset_note, torque_arrow};
 pub use layer::Layer;
+pub(crate) use letter_ways::{LINK_LETTER_NEAR, letter_ways};
 pub(crate) use linkage::{BEARING_REACH, PIN_CLEAR, Seg, Slot};
 pub use notation::Notation;
 
