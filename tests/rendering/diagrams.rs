@@ -466,7 +466,10 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
             // The chain r = 0.5, l = 1.5, the arm L = l + r, the driver at
             // ω: the tool at s = L r sin θ / l (inversion 3, the driver
             // at χ = θ + φ) or −L sin θ (inversion 2, χ = −θ − φ), so
-            // ds/dt = ω s′/χ′ and d²s/dt² = ω² (s″χ′ − s′χ″)/χ′³ (′ = d/dθ).
+            // ds/dt = ω s′/χ′ and d²s/dt² = ω² (s″χ′ − s′χ″)/χ′³ (′ = d/dθ),
+            // drawn against the driver's turn since the cutting stroke
+            // began, at θ = 270° in inversion 3 and 90° in inversion 2
+            // (χ − χ there, a turn added past θ = 0 or on the return).
             let (r, l) = (0.5, 1.5);
             let arm = l + r;
             let slotted = name == FigureName::QuickReturnSlottedLever;
@@ -480,23 +483,32 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
                 };
                 (w * s1 / c1, w * w * (s2 * c1 - s1 * c2) / c1.powi(3))
             };
+            let turn = move |t: f64, back: bool| {
+                let phi = |t: f64| engine(r, l, t).1.d(0);
+                let (raw, past) = if slotted {
+                    (t - 1.5 * PI + phi(t) - phi(1.5 * PI), t < PI)
+                } else {
+                    (0.5 * PI - t - phi(t) + phi(0.5 * PI), t > PI)
+                };
+                (raw + if back || past { 2.0 * PI } else { 0.0 }) / DEG
+            };
             let cutting = [(0.0, 0.5 * PI), (1.5 * PI, 2.0 * PI)];
             let back = [(0.5 * PI, 1.5 * PI)];
             add(
                 "curve-tool-velocity-cutting",
-                exact(move |t| (t / DEG, tool(t).0), &cutting),
+                exact(move |t| (turn(t, false), tool(t).0), &cutting),
             );
             add(
                 "curve-tool-velocity-return",
-                exact(move |t| (t / DEG, tool(t).0), &back),
+                exact(move |t| (turn(t, true), tool(t).0), &back),
             );
             add(
                 "curve-tool-acceleration-cutting",
-                exact(move |t| (t / DEG, tool(t).1), &cutting),
+                exact(move |t| (turn(t, false), tool(t).1), &cutting),
             );
             add(
                 "curve-tool-acceleration-return",
-                exact(move |t| (t / DEG, tool(t).1), &back),
+                exact(move |t| (turn(t, true), tool(t).1), &back),
             );
         }
         FigureName::CrankPinLoads => {

@@ -67,11 +67,12 @@ fn the_two_polygons_letter_groups_stand_apart() {
     }
 }
 
-/// The points of the path `id`, in page units.
+/// The points of the path `id`, in page units (a curve's control points
+/// among them).
 pub(super) fn path(svg: &str, id: &str) -> Vec<(f64, f64)> {
     let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
     let numbers: Vec<f64> = d
-        .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
         .filter_map(|w| w.parse().ok())
         .collect();
     numbers.chunks(2).map(|p| (p[0], p[1])).collect()
