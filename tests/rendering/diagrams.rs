@@ -1154,6 +1154,39 @@ fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
 }
 
 #[test]
+fn the_polar_diagram_letters_g_with_c_only_where_they_run_into_its_pin() {
+    // CG from the notes (f/ω², as printed), its page length through the
+    // polar panel's map: under 6 units G and G′ are lettered with C and
+    // not drawn; over it each has its dot and letter.
+    for (l, e, deg) in [
+        (2.96, -1.08, 269.36),
+        (3.0, 0.0, 30.0),
+        (1.86, 0.505, 90.03),
+    ] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+        options.angle = Some(slider_crank::Angle::deg(deg));
+        let svg = to_svg(&FigureName::AccelerationDiagrams.figure(&options).unwrap());
+        let text = read_text(&svg)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        let cg: f64 = (text.split("CG = ").skip(1))
+            .find_map(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
+            .unwrap();
+        let (_, map) = panel_map(&svg, "label-C");
+        let (o, g) = (map.apply((0.0, 0.0)), map.apply((cg, 0.0)));
+        let page = (g.0 - o.0).hypot(g.1 - o.1);
+        let at = format!("l = {l}, e = {e}, {deg}°: CG {page:.1} units on the page");
+        let joint = text.contains("C, G, G");
+        assert_eq!(joint, page < 6.0, "{at}");
+        assert_eq!(tag(&svg, "point-G").is_some(), !joint, "{at}");
+        assert_eq!(tag(&svg, "label-G1").is_some(), !joint, "{at}");
+        assert_eq!(text.contains("within C’s pin"), joint, "{at}");
+    }
+}
+
+#[test]
 fn ng_fig_7_states_both_fits_and_r_squared() {
     let (origin, (a, b)) = ng_fits();
     let svg = to_svg(&figure(FigureName::NgFig7Calibration));
