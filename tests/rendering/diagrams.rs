@@ -1187,6 +1187,32 @@ fn the_polar_diagram_letters_g_with_c_only_where_they_run_into_its_pin() {
 }
 
 #[test]
+fn primary_secondary_says_where_the_sum_is_drawn_under_the_exact_force() {
+    // The largest remainder as the notes print it, its page length on
+    // (a)'s force axis: under a line's width (1.5 units) the notes say the
+    // sum is drawn under the exact force, which hides it.
+    for (l, e) in [(6.0, 0.0), (3.19, 1.95), (1.06, 0.0), (40.0, 0.0)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+        let svg = to_svg(&FigureName::PrimarySecondary.figure(&options).unwrap());
+        let text = read_text(&svg)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        let worst: f64 = (text.split("over the turn is ").nth(1))
+            .and_then(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
+            .unwrap();
+        let (_, map) = panel_map(&svg, "curve-primary-secondary");
+        let page = (map.apply((0.0, worst)).1 - map.apply((0.0, 0.0)).1).abs();
+        assert_eq!(
+            text.contains("is drawn under it"),
+            page < 1.5,
+            "l = {l}, e = {e}: the remainder {page:.2} units on the page"
+        );
+    }
+}
+
+#[test]
 fn ng_fig_7_states_both_fits_and_r_squared() {
     let (origin, (a, b)) = ng_fits();
     let svg = to_svg(&figure(FigureName::NgFig7Calibration));
