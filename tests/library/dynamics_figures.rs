@@ -3107,3 +3107,37 @@ fn the_inertia_force_arrow_stands_off_cg_where_no_guide_runs_beside_it() {
     }
     assert!(runs >= 3, "a long run beside CG at only {runs} figures");
 }
+
+#[test]
+fn the_crank_pin_loads_pole_letter_stands_nearer_its_cross_than_any_dot() {
+    // The nineteenth review: at r = 1, l = 3.87 r, e = 1.85 r on 120 mm
+    // the pole's O, led off, stood 16 units from the dashed curve's
+    // plain 60° dot and 42 from its ×, its leader along that curve: it
+    // named the plain dot. The pole's letter stands nearer its × than any
+    // dot of its panel, lettered or plain.
+    let mut poles = 0;
+    let engines = [
+        (1.0, 3.87, 1.85),
+        (1.0, 3.87, -1.85),
+        (1.0, 3.82, 1.85),
+        (1.0, 3.92, 1.85),
+    ];
+    for (what, svg) in load_figures(&at_every_width(&engines)) {
+        for panel in drawn_load_panels(&svg) {
+            let id = format!("label-{panel}-pole");
+            if !svg.contains(&format!("id=\"{id}\"")) {
+                continue;
+            }
+            poles += 1;
+            let own = to_box_of(&svg, &id, pole_of(&svg, panel));
+            for (dot, at) in all_load_marks(&svg, panel) {
+                let other = to_box_of(&svg, &id, at);
+                assert!(
+                    other > own,
+                    "{what}: O of {panel} {other:.1} from {dot}, {own:.1} from its ×"
+                );
+            }
+        }
+    }
+    assert!(poles >= 16, "the pole lettered in only {poles} panels");
+}
