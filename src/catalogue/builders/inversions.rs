@@ -848,6 +848,10 @@ struct Drawing {
     /// The side of d's bar its letter stands on, once lettered (world);
     /// none before or where d is not lettered beside its bar.
     d_way: Option<Vector>,
+    /// Whether the links' letters are set by their runs clear of pins,
+    /// dots and crossings ([`Drawing::letter_run`]); else by their
+    /// middles (the Coriolis figures' mechanism, which draws no centres).
+    runs: bool,
 }
 
 /// How a view showed the fixed bar, which the figure's other view
@@ -1123,6 +1127,7 @@ impl Drawing {
             feet: [None, None],
             normal: Vector::zeros(),
             d_way: None,
+            runs: true,
         }
     }
 
@@ -1139,9 +1144,11 @@ impl Drawing {
     /// The same drawing with no centres' dots to keep the bearings clear
     /// of: for the Coriolis figures' mechanism, which draws no centres
     /// (an undrawn O_bd at A turned C's bearing along the crank, its
-    /// hatching out of the detail's box, at l = 1.1 r, 180°).
+    /// hatching out of the detail's box, at l = 1.1 r, 180°). Its links'
+    /// letters stand by their middles, as its reviewed plates have them.
     fn without_centres(mut self) -> Self {
         self.dots.clear();
+        self.runs = false;
         self
     }
 
@@ -1805,6 +1812,9 @@ impl Drawing {
     /// at l = 2.4 r, e = 1.11 r, 180°), and one by a crossing as the
     /// crossing line's (b by d's leg, l = 2.88 r, e = 1.19 r).
     fn letter_run(&self, (p, q): Seg) -> Seg {
+        if !self.runs {
+            return (p, q);
+        }
         let map = *self.s.transform();
         let (from, to) = (map.apply(p), map.apply(q));
         let length = (to - from).norm();
