@@ -1154,14 +1154,17 @@ fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
 }
 
 #[test]
-fn the_polar_diagram_letters_g_with_c_only_where_they_run_into_its_pin() {
-    // CG from the notes (f/ω², as printed), its page length through the
-    // polar panel's map: under 6 units G and G′ are lettered with C and
-    // not drawn; over it each has its dot and letter.
+fn the_polar_diagram_letters_g_with_a_pin_only_where_they_run_into_it() {
+    // CG from the notes (f/ω², as printed); G on the line of stroke and G′
+    // on the crank at CG from C, their page distances from C and B through
+    // the polar panel's map: under 6 units each is lettered with that pin
+    // (C first) and not drawn; over it each has its dot and letter.
     for (l, e, deg) in [
         (2.96, -1.08, 269.36),
         (3.0, 0.0, 30.0),
         (1.86, 0.505, 90.03),
+        (51.8, 0.0, 0.0),
+        (1.06, 0.0, 180.0),
     ] {
         let mut options = FigureOptions::default();
         options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
@@ -1175,14 +1178,38 @@ fn the_polar_diagram_letters_g_with_c_only_where_they_run_into_its_pin() {
             .find_map(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
             .unwrap();
         let (_, map) = panel_map(&svg, "label-C");
-        let (o, g) = (map.apply((0.0, 0.0)), map.apply((cg, 0.0)));
-        let page = (g.0 - o.0).hypot(g.1 - o.1);
-        let at = format!("l = {l}, e = {e}, {deg}°: CG {page:.1} units on the page");
-        let joint = text.contains("C, G, G");
-        assert_eq!(joint, page < 6.0, "{at}");
-        assert_eq!(tag(&svg, "point-G").is_some(), !joint, "{at}");
-        assert_eq!(tag(&svg, "label-G1").is_some(), !joint, "{at}");
-        assert_eq!(text.contains("within C’s pin"), joint, "{at}");
+        let t = deg.to_radians();
+        let page = |p: (f64, f64), q: (f64, f64)| {
+            let (a, b) = (map.apply(p), map.apply(q));
+            (a.0 - b.0).hypot(a.1 - b.1)
+        };
+        let pins = [("C", (0.0, 0.0)), ("B", (t.cos(), t.sin()))];
+        for (id, name, p) in [
+            ("G", "G", (cg, 0.0)),
+            ("G1", "G", (cg * t.cos(), cg * t.sin())),
+        ] {
+            let at = format!("l = {l}, e = {e}, {deg}°: {id}");
+            let host = pins.iter().find(|(_, q)| page(p, *q) < 6.0);
+            assert_eq!(
+                tag(&svg, &format!("point-{id}")).is_some(),
+                host.is_none(),
+                "{at}"
+            );
+            assert_eq!(
+                tag(&svg, &format!("label-{id}")).is_some(),
+                host.is_none(),
+                "{at}"
+            );
+            if let Some((pin, _)) = host {
+                let label = &svg[svg.find(&format!("id=\"label-{pin}\"")).unwrap()..];
+                let label = &label[..label.find("</text>").unwrap()];
+                assert!(
+                    label.contains(&format!(">{name}")),
+                    "{at}: not in {pin}'s letter"
+                );
+                assert!(text.contains(&format!("within {pin}’s pin")), "{at}");
+            }
+        }
     }
 }
 
