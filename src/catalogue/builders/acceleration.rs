@@ -364,8 +364,8 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> O
     let (g_host, g1_host) = (host(g), host(g1));
     let mut joined: [Vec<&str>; 2] = [vec![], vec![]];
     for (name, at) in [("*G*", g_host), ("*G*′", g1_host)] {
-        if let Some(k) = at {
-            joined[k].push(name);
+        if let Some(with) = at.and_then(|k| joined.get_mut(k)) {
+            with.push(name);
         }
     }
     let mut labels: Vec<(&str, String, Point)> = (pins.iter().zip(&joined))
