@@ -3004,16 +3004,7 @@ fn segment_gap(a: (f64, f64), b: (f64, f64), c: (f64, f64), d: (f64, f64)) -> f6
     if segments_cross(a, b, c, d) {
         return 0.0;
     }
-    let to = |p: (f64, f64), a: (f64, f64), b: (f64, f64)| {
-        let (vx, vy) = (b.0 - a.0, b.1 - a.1);
-        let n = vx * vx + vy * vy;
-        let t = if n == 0.0 {
-            0.0
-        } else {
-            (((p.0 - a.0) * vx + (p.1 - a.1) * vy) / n).clamp(0.0, 1.0)
-        };
-        (p.0 - a.0 - t * vx).hypot(p.1 - a.1 - t * vy)
-    };
+    let to = common::segment_distance;
     [to(a, c, d), to(b, c, d), to(c, a, b), to(d, a, b)]
         .into_iter()
         .fold(f64::INFINITY, f64::min)
