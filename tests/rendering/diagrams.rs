@@ -1306,6 +1306,100 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
     }
 }
 
+/// The first straight line (`M x y L x y`) written after `id` in `svg`:
+/// an arrow's shaft.
+fn shaft(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let d = &svg[at..];
+    let d = &d[d.find(" d=\"").unwrap() + 4..];
+    let n: Vec<f64> = (d[..d.find('"').unwrap()])
+        .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+        .filter_map(|t| t.parse().ok())
+        .collect();
+    ((n[0], n[1]), (n[2], n[3]))
+}
+
+/// Ng's Fig. 2 at tilts from 0.5° to 89.99°: at 89.58° the weight's
+/// component along the plane lay hidden under the weight, N and
+/// mg cos φ were bare heads, and the wedge's upright side ran with the
+/// plane as one double line; at 5° N's head ran off the page. Every
+/// force is now drawn at least two heads long and on the page, a
+/// component within 10° of the weight is set beside it, a plane within
+/// 15° of upright is a hatched line, and an arrow drawn longer than to
+/// scale is said so in the notes.
+#[test]
+fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
+    for deg in [0.5, 5.0, 45.0, 80.0, 85.0, 89.1, 89.58, 89.99] {
+        let mut o = FigureOptions::default();
+        o.angle = Some(slider_crank::Angle::deg(deg));
+        let svg = to_svg(&FigureName::NgFig2Incline.figure(&o).unwrap());
+        let plate = crate::plate::Plate::read(&svg);
+        let ids = [
+            "force-weight",
+            "force-normal",
+            "force-friction",
+            "component-along",
+            "component-across",
+        ];
+        for id in ids {
+            let (a, b) = shaft(&svg, id);
+            let length = (b.0 - a.0).hypot(b.1 - a.1);
+            // The shaft ends where the head (10 units) begins.
+            assert!(length >= 10.0, "{deg}°: {id} {length:.1} long");
+            for (x, y) in [a, b] {
+                assert!(
+                    (0.0..=plate.width).contains(&x) && (0.0..=plate.height).contains(&y),
+                    "{deg}°: {id} off the page at ({x}, {y})"
+                );
+            }
+        }
+        let (w0, w1) = shaft(&svg, "force-weight");
+        let off_weight = |p: (f64, f64)| (p.0 - w0.0).abs();
+        for id in ["component-along", "component-across"] {
+            let (a, b) = shaft(&svg, id);
+            let slant = ((b.0 - a.0).atan2(b.1 - a.1)).to_degrees().abs();
+            let beside = off_weight(a).min(off_weight(b));
+            assert!(
+                slant > 10.1 || beside > 6.0,
+                "{deg}°: {id} along the weight ({slant:.1}°, {beside:.1} off)"
+            );
+        }
+        assert!(w1.1 > w0.1, "{deg}°: the weight points down the page");
+        let plane: Vec<f64> = (attr(&svg, "plane", "d").unwrap())
+            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        let wedge = plane.len() > 4;
+        assert_eq!(wedge, deg < 75.0, "{deg}°: wedge drawn {wedge}");
+        assert_eq!(
+            svg.contains("id=\"hatch-plane\""),
+            !wedge,
+            "{deg}°: a steep plane hatched"
+        );
+        // Said where drawn longer, with the share of the weight they are.
+        let longer = svg.contains("drawn longer than to scale");
+        assert_eq!(longer, ![45.0, 80.0].contains(&deg), "{deg}°");
+        if longer {
+            let text = read_text(&svg);
+            let share: f64 = text
+                .split("longer than to scale")
+                .next()
+                .and_then(|t| t.rsplit('(').next())
+                .and_then(|t| t.split_whitespace().next())
+                .and_then(|t| t.parse().ok())
+                .unwrap_or_else(|| panic!("{deg}°: no share in {text}"));
+            let (sin, cos) = deg.to_radians().sin_cos();
+            let exact = sin.min(cos);
+            assert!(
+                (share - exact).abs() < 1e-3 * exact,
+                "{deg}°: {share} for {exact}"
+            );
+        }
+    }
+}
+
 #[test]
 fn options_a_diagram_does_not_use_are_refused() {
     let mut data = FigureOptions::default();
