@@ -298,7 +298,14 @@ fn on_the_line_of_stroke_primary_and_secondary_sum_to_the_series_beside_the_exac
             ("force-sum-secondary", k * (2.0 * t).cos() / n),
             ("force-sum-exact", -MASS * w2 * x2(r, l, e, t)),
         ];
+        // An arrow under a head and a half (15 units) on the page is
+        // left out, its value in the notes.
+        let page = panel_map(&svg, "panel-sum")[0].abs();
         for (id, value) in want {
+            if value.abs() * page < 14.9 {
+                assert!(!svg.contains(&format!("id=\"{id}\"")), "{id} at {deg}°");
+                continue;
+            }
             if value.abs() < 1e-2 * k {
                 continue;
             }

@@ -1321,6 +1321,90 @@ fn shaft(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
     ((n[0], n[1]), (n[2], n[3]))
 }
 
+/// The tail and the tip of arrow `id`: its shaft's start and its head's
+/// first point (a head is drawn from the tip).
+fn tail_and_tip(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let mut starts = svg[at..].split(" d=\"M").skip(1).map(|s| {
+        let n: Vec<f64> = s
+            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+            .take(2)
+            .map(|t| t.parse().unwrap())
+            .collect();
+        (n[0], n[1])
+    });
+    (starts.next().unwrap(), starts.next().unwrap())
+}
+
+/// The direct and reverse cranks near θ = 90° and at short rods and
+/// offsets: the projection joining the cranks' tips ran along both
+/// vertical cranks and doubled them; a resultant of −87 lbf beside cranks
+/// of 3427 was a bare head at the centre, and "primary" in (c) named a
+/// 6-unit nub; the notes put a gap of 10 400 lbf down to the offset's
+/// term alone, about 3 550 lbf, and said nothing of a gap of 11 600 lbf
+/// at l = 1.07 r with no offset. Now no arrow is drawn under a head and a
+/// half, the projection is left out within 10° of the cranks, and the
+/// notes give the gap and what makes it up.
+#[test]
+fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap() {
+    for (l, e, deg) in [
+        (2.74, -1.42, 90.73),
+        (2.68, -1.05, 269.19),
+        (1.07, 0.0, 89.73),
+        (2.74, -1.42, 180.0),
+        (6.0, 0.0, 30.0),
+        (1.07, 0.0, 0.0),
+        (40.0, 0.0, 91.0),
+    ] {
+        let svg = super::polygon_figures::svg(FigureName::DirectReverseCranks, l, e, deg);
+        let at = format!("l = {l}, e = {e}, θ = {deg}");
+        let ids: Vec<&str> = svg
+            .split("id=\"")
+            .skip(1)
+            .filter_map(|s| s.split('"').next())
+            .filter(|id| id.starts_with("force-") || id.starts_with("component-"))
+            .collect();
+        for id in &ids {
+            let (a, b) = tail_and_tip(&svg, id);
+            let length = (b.0 - a.0).hypot(b.1 - a.1);
+            assert!(length >= 14.9, "{at}: {id} {length:.1} long");
+        }
+        let near_90 = deg.to_radians().cos().abs() < 10f64.to_radians().sin();
+        assert!(
+            !(near_90 && svg.contains("id=\"projection-primary\"")),
+            "{at}: the primary cranks' projection along them"
+        );
+        let meta = metadata(&svg);
+        let c = &meta["cranks"];
+        let value = |k: &str| c[k].as_f64().unwrap();
+        let gap = value("exact") - value("primary") - value("secondary");
+        let k = 2.0 * value("primary_crank_force");
+        let text = read_text(&svg);
+        let said =
+            text.contains("make up the other") || text.contains("which they leave out: here");
+        assert_eq!(said, gap.abs() > 5e-3 * k, "{at}: gap {gap}");
+        if said {
+            let written: f64 = text
+                .split(if e == 0.0 {
+                    "make up the other "
+                } else {
+                    "which they leave out: here "
+                })
+                .nth(1)
+                .and_then(|t| t.split_whitespace().next())
+                .map(|t| t.replace('−', "-"))
+                .and_then(|t| t.parse().ok())
+                .unwrap_or_else(|| panic!("{at}: no gap in {text}"));
+            assert!(
+                (written - gap).abs() < 1e-3 * gap.abs(),
+                "{at}: {written} for {gap}"
+            );
+        }
+    }
+}
+
 /// Ng's Fig. 2 at tilts from 0.5° to 89.99°: at 89.58° the weight's
 /// component along the plane lay hidden under the weight, N and
 /// mg cos φ were bare heads, and the wedge's upright side ran with the
