@@ -1117,6 +1117,45 @@ fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     0.5 * (a + b)
 }
 
+/// Ng's Fig. 8 (b) with an offset: β = 180° − φ − θ passes 180° at small
+/// θ where φ < 0, and an axis ending at 180° cut the curve off near
+/// θ = 20° with no word (l = 3.88 r, e = 1.65 r). The curve now spans the
+/// whole axis of θ, and its axis of β covers it (β computed here).
+#[test]
+fn ng_fig_8_draws_the_transmission_angle_over_every_crank_angle() {
+    for (l, e) in [(3.88, 1.65), (3.88, -1.65), (2.88, 0.0), (1.2, 0.19)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+        let svg = to_svg(&FigureName::NgFig8Forces.figure(&options).unwrap());
+        let axis = super::polygon_figures::path(&svg, "transmission-axis-x");
+        let curve = super::polygon_figures::path(&svg, "curve-transmission-angle");
+        let (first, last) = (curve[0], curve[curve.len() - 1]);
+        assert!(
+            (first.0 - axis[0].0).abs() < 0.01 && (last.0 - axis[1].0).abs() < 0.01,
+            "l = {l}, e = {e}: β drawn from {} to {} of {:?}",
+            first.0,
+            last.0,
+            axis
+        );
+        // β at θ = 0, where sin φ = −e/l (the line of stroke e above the
+        // crank centre), below the axis's top tick.
+        let beta0 = 180.0 + (e / l).asin().to_degrees();
+        let ticks: Vec<f64> = read_text(&svg)
+            .split_whitespace()
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        let top = ticks
+            .iter()
+            .copied()
+            .filter(|t| t % 30.0 == 0.0)
+            .fold(0.0, f64::max);
+        assert!(
+            top >= beta0 - 1e-9,
+            "l = {l}, e = {e}: axis to {top}, β(0) = {beta0}"
+        );
+    }
+}
+
 #[test]
 fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
     // At long rods the two are hundredths of a degree apart: the figure
