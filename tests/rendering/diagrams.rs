@@ -1117,6 +1117,57 @@ fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     0.5 * (a + b)
 }
 
+/// The rod's motion at a long rod and at an offset: the angular
+/// velocity's trough of −0.7416 rad/s lay on the −0.75 frame line
+/// (l = 35.3 r), eq. (2a) was clipped flat along the axis at l = 1.63 r,
+/// e = 0.478 r, and at the long rod eq. (2a) lay hidden under the exact
+/// curve though the legend listed it. Each curve now keeps 2 % of its
+/// frame's height from either end, and the notes say where eq. (2a) is
+/// drawn under the exact curve and, with an offset, that it is written
+/// for an in-line engine.
+#[test]
+fn the_rod_s_motion_keeps_its_curves_off_the_frame_and_says_what_it_hides() {
+    use super::polygon_figures::{path, svg};
+    for (r, l, e, deg, under) in [
+        (1.0, 35.3, 0.0, 180.0, true),
+        (1.0, 1.63, 0.478, 0.0, false),
+        (1.0, 1.05, 0.0, 90.0, false),
+        (0.5, 3.0, 0.0, 30.0, true),
+    ] {
+        let svg = svg(FigureName::RodMotion, l / r, e / r, deg);
+        let at = format!("l = {l}, e = {e}, θ = {deg}");
+        for (panel, curves) in [
+            ("angular-velocity", &["curve-rod-angular-velocity"][..]),
+            (
+                "angular-acceleration",
+                &[
+                    "curve-rod-angular-acceleration",
+                    "curve-rod-angular-acceleration-eq-2a",
+                ][..],
+            ),
+        ] {
+            let axis = path(&svg, &format!("{panel}-axis-y"));
+            let (top, bottom) = (axis[0].1.min(axis[1].1), axis[0].1.max(axis[1].1));
+            let room = 0.02 * (bottom - top);
+            for id in curves {
+                for (_, y) in path(&svg, id) {
+                    assert!(
+                        y >= top + room && y <= bottom - room,
+                        "{at}: {id} at y {y} in {top}..{bottom}"
+                    );
+                }
+            }
+        }
+        let text = read_text(&svg);
+        assert_eq!(text.contains("drawn under it"), under, "{at}: {text}");
+        assert_eq!(
+            text.contains("written for an in-line engine"),
+            e != 0.0,
+            "{at}"
+        );
+    }
+}
+
 /// Ng's Fig. 8 (b) with an offset: β = 180° − φ − θ passes 180° at small
 /// θ where φ < 0, and an axis ending at 180° cut the curve off near
 /// θ = 20° with no word (l = 3.88 r, e = 1.65 r). The curve now spans the
