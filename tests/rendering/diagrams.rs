@@ -1117,6 +1117,44 @@ fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     0.5 * (a + b)
 }
 
+/// The approximations' errors on a narrow page: each caption broke
+/// inside its formula ("√(n² / − sin²θ) − n", "eq. (2) − / exact") and
+/// the same legend stood under each of the four panels. A formula now
+/// keeps to one line, and one legend, in (a), serves all four.
+#[test]
+fn the_approximation_errors_keep_formulas_whole_and_one_legend() {
+    for width in [None, Some("500"), Some("120mm")] {
+        let mut options = FigureOptions::default();
+        options.width = width.map(|w| w.parse().unwrap());
+        let svg = to_svg(&FigureName::ApproximationError.figure(&options).unwrap());
+        for panel in ["obliquity", "velocity", "acceleration", "rod"] {
+            assert_eq!(
+                svg.contains(&format!("id=\"{panel}-legend-box\"")),
+                panel == "obliquity",
+                "{width:?}: {panel}'s legend"
+            );
+            for id in [format!("{panel}-caption"), format!("{panel}-caption-2")] {
+                let Some(at) = svg.find(&format!("id=\"{id}\"")) else {
+                    continue;
+                };
+                let rest = &svg[at..];
+                let body = &rest[rest.find('>').unwrap() + 1..rest.find("</text>").unwrap()];
+                let line = read_text(body);
+                let line = line.trim();
+                assert!(
+                    !line.ends_with('−') && !line.starts_with('−') && !line.ends_with('('),
+                    "{width:?}: {id} breaks a formula: {line:?}"
+                );
+                assert_eq!(
+                    line.matches('(').count(),
+                    line.matches(')').count(),
+                    "{width:?}: {id} breaks a formula: {line:?}"
+                );
+            }
+        }
+    }
+}
+
 /// The rod's motion at a long rod and at an offset: the angular
 /// velocity's trough of −0.7416 rad/s lay on the −0.75 frame line
 /// (l = 35.3 r), eq. (2a) was clipped flat along the axis at l = 1.63 r,
