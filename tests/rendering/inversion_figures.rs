@@ -1339,3 +1339,70 @@ fn the_letters_of_the_edge_arrows_stand_apart_each_by_its_own_arrow_s_tail() {
     }
     assert!(pairs >= 12, "two arrows lettered at {pairs} letters");
 }
+
+#[test]
+fn an_edge_arrow_s_letter_does_not_stand_on_a_link_s_line_produced() {
+    // The thirty-eighth review: inversion 4 at l = 2.69 r, 269.36° set
+    // "to O_bd" on the line of d's leg produced, where it read as the
+    // leg's letter (2.5). An arrow's letter stands off every link's line
+    // produced beyond its ends, as far as a reader follows it.
+    const I4: FigureName = FigureName::Inversion4HandPump;
+    let mut seen = 0;
+    for (name, engine) in [
+        (I4, (2.69, 1.01, 269.36)),
+        (I4, (2.64, 1.01, 269.36)),
+        (I4, (2.74, 1.01, 269.36)),
+        (I4, (2.69, 1.01, 268.36)),
+        (I3, (2.36, 1.14, 269.57)),
+        (I3, (1.07, 0.0, 90.03)),
+    ] {
+        let svg = svg_at(name, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} {engine:?}");
+        let mut produced = Vec::new();
+        for link in ["link-frame", "link-crank", "link-rod"] {
+            if tag(&svg, link).is_none() {
+                continue;
+            }
+            for w in path(&svg, link).windows(2) {
+                let (p, q) = (w[0], w[1]);
+                let len = (q.0 - p.0).hypot(q.1 - p.1);
+                // A line an em long at least, produced as far as a
+                // reader follows it (nine em).
+                if len < 17.0 {
+                    continue;
+                }
+                let u = ((q.0 - p.0) / len, (q.1 - p.1) / len);
+                let far = 150.0;
+                produced.push((
+                    link,
+                    crate::plate::Seg(q, (q.0 + u.0 * far, q.1 + u.1 * far)),
+                ));
+                produced.push((
+                    link,
+                    crate::plate::Seg(p, (p.0 - u.0 * far, p.1 - u.1 * far)),
+                ));
+            }
+        }
+        for key in ["O-bd", "O-ac", "O-cd"] {
+            let lettered = ["offpage", "infinity"]
+                .iter()
+                .any(|kind| tag(&svg, &format!("{kind}-{key}")).is_some());
+            let label = (plate.panels.iter())
+                .flat_map(|p| &p.labels)
+                .find(|l| l.id == format!("label-{key}"));
+            let (true, Some(label)) = (lettered, label) else {
+                continue;
+            };
+            seen += 1;
+            for (link, line) in &produced {
+                assert!(
+                    label.rect.clip(line).is_none(),
+                    "{at}: {key}'s letter {:?} on {link}'s line produced {line:?}",
+                    label.rect
+                );
+            }
+        }
+    }
+    assert!(seen >= 8, "arrows lettered at {seen} engines");
+}

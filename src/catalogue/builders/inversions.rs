@@ -620,6 +620,10 @@ const CRANK_DETAIL: (f64, f64) = (300.0, 200.0);
 const EDGE_ARROW: f64 = 34.0;
 const EDGE_GAP: f64 = 3.0;
 
+/// How far behind an edge arrow's tail its letter is set beside its
+/// line, page units: one em of a letter.
+const SET_BACK: f64 = 17.0;
+
 /// Room between the mechanism and the crank detail below it, page units.
 const DETAIL_GAP: f64 = 12.0;
 
@@ -2166,14 +2170,15 @@ impl Drawing {
             .filter(|s| self.s.page(s.abs()) >= 1.0)
             .unwrap_or_else(|| n.dot(&(tail - pins)));
         let side = if away < 0.0 { -n } else { n };
-        // Beside the tail, set back along the arrow's line: square to the
-        // tail, a letter by an arrow near the page's edge ran off it and
-        // was set anywhere (between two arrows at l = 2.36 r).
-        let side = (side - u) / std::f64::consts::SQRT_2;
+        // Beside the line [`SET_BACK`] behind the tail: square to the
+        // tail itself, a letter by an arrow near the page's edge ran off
+        // it and was set anywhere (between two arrows at l = 2.36 r).
+        // No farther back than the line's start (a short arrow from B).
+        let at = tail - u * self.s.world(SET_BACK).min((tail - from).dot(&u));
         self.s.edge_arrow(id.to_string(), edge, u, EDGE_ARROW);
         let text = RichText::parse(text);
         self.s
-            .label_toward(format!("label-{key}"), tail, side, text, TextSize::Letter);
+            .label_toward(format!("label-{key}"), at, side, text, TextSize::Letter);
         Some(tail)
     }
 
