@@ -452,12 +452,13 @@ pub(super) fn driver_turn(
     // Set off the arc's middle outwards by as far as the head stands out
     // of the arc's circle (its half width, and the tangent it runs along
     // leaving the circle over its length) and [`OMEGA_LETTER_CLEAR`] em
-    // more, tried first that way: set at the arc's middle, the letter
-    // touched the head (inversion 2 at l = 45.1 r, 269.96°).
+    // more, less the placer's [`LETTER_GAP`], tried first that way: set
+    // at the arc's middle, the letter touched the head (inversion 2 at
+    // l = 45.1 r, 269.96°).
     let mid = start + 0.5 * sweep;
     let out = Vector::new(mid.cos(), mid.sin());
     let head_out = HEAD_HALF + HEAD * HEAD / (2.0 * s.page(radius));
-    let beyond = s.world(head_out + OMEGA_LETTER_CLEAR * em);
+    let beyond = s.world(head_out + OMEGA_LETTER_CLEAR * em - LETTER_GAP);
     let at = b + out * (radius + beyond);
     s.label_toward(
         "label-omega",
@@ -699,6 +700,11 @@ const HEAD_HALF: f64 = 3.2;
 
 /// The least room between ω's letter and its arc's head, in ems.
 const OMEGA_LETTER_CLEAR: f64 = 0.25;
+
+/// The room the placer leaves between a letter's anchor and its box,
+/// page units: ω's anchor stands that much nearer the arc than the room
+/// its letter keeps from the head.
+const LETTER_GAP: f64 = 4.0;
 
 /// The middles (degrees, from the frame's +x) of the arcs about B tried
 /// where neither ahead of the driver nor behind it is clear: above B
