@@ -347,3 +347,94 @@ fn the_frame_is_never_hidden_along_a_moving_link() {
     }
     assert!(checked > 0, "no link checked");
 }
+
+/// Long rods (l, e, θ at r = 1) and page widths where the crank a of
+/// every panel was a speck (l = 53 r: two pin circles, its letter naming
+/// nothing seen), with their neighbours.
+const LONG: [(f64, f64, f64, Option<&str>); 9] = [
+    (53.0, 0.0, 0.0, None),
+    (53.0, 0.0, 1.0, None),
+    (30.0, 0.0, 90.0, None),
+    (30.0, 0.0, 91.0, None),
+    (25.0, 1.5, 270.0, None),
+    (60.0, -1.9, 180.0, None),
+    (40.0, 0.0, 90.0, Some("500")),
+    (40.0, 0.0, 89.0, Some("120mm")),
+    (3.0, 0.0, 50.0, Some("120mm")),
+];
+
+/// Fig. 60 at `(rod, offset, deg)` (r = 1) on a page `width` wide (the
+/// figure's own where `None`).
+fn svg_at(rod: f64, offset: f64, deg: f64, width: Option<&str>) -> String {
+    use slider_crank::catalogue::FigureOptions;
+    use slider_crank::{Angle, SliderCrank};
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+    options.angle = Some(Angle::deg(deg));
+    options.width = width.map(|w| w.parse().unwrap());
+    slider_crank::render::to_svg(&FIG.figure(&options).unwrap())
+}
+
+/// The length on the page of the link `id` (its ends), none where it is
+/// not drawn.
+fn drawn_length(svg: &str, id: &str) -> Option<f64> {
+    crate::common::tag(svg, id)?;
+    let p = path(svg, id);
+    let (s, t) = (p[0], p[p.len() - 1]);
+    Some((t.0 - s.0).hypot(t.1 - s.1))
+}
+
+#[test]
+fn every_link_of_every_panel_is_drawn_at_least_40_units_long() {
+    // At l = 53 r the crank a of each panel was a speck of two pin
+    // circles, no enlargement; at l = 30 r, 90° it could not be seen in
+    // any panel. Each link is drawn 40 units long or more, in the panel
+    // or in its detail; a crank lettered in its detail is lettered there
+    // only, nearer its own link than the rod.
+    const SEEN: f64 = 40.0;
+    let mut details = 0;
+    for (rod, offset, deg, width) in ENGINES.iter().map(|&(l, e, d)| (l, e, d, None)).chain(LONG) {
+        let svg = svg_at(rod, offset, deg, width);
+        let plate = Plate::read(&svg);
+        let what = format!("l = {rod}, e = {offset}, {deg}°, width {width:?}");
+        for (suffix, links) in [
+            ("a", &["crank", "rod", "lever", "frame"][..]),
+            ("b", &["crank", "rod"][..]),
+            ("c", &["crank", "rod"][..]),
+        ] {
+            for link in links {
+                let main = drawn_length(&svg, &format!("link-{link}-{suffix}")).unwrap_or(0.0);
+                let detail = drawn_length(&svg, &format!("detail-link-{link}-{suffix}"));
+                details += usize::from(detail.is_some());
+                let longest = main.max(detail.unwrap_or(0.0));
+                assert!(
+                    longest >= SEEN,
+                    "{what}: ({suffix}) the {link} drawn {main:.1} long, {detail:?} in a detail"
+                );
+            }
+            let Some(_) = crate::common::tag(&svg, &format!("detail-link-crank-{suffix}")) else {
+                continue;
+            };
+            assert!(
+                text_centre(&plate, &format!("label-link-a-{suffix}")).is_none(),
+                "{what}: ({suffix}) a lettered in the panel and in its detail"
+            );
+            let p = text_centre(&plate, &format!("detail-label-link-a-{suffix}"))
+                .unwrap_or_else(|| panic!("{what}: ({suffix}) the detail's crank unlettered"));
+            let seg = |id: &str| {
+                let q = path(&svg, &format!("detail-link-{id}-{suffix}"));
+                (q[0], q[q.len() - 1])
+            };
+            let (crank, rod_b) = (seg("crank"), seg("rod"));
+            let (mine, other) = (
+                segment_distance(p, crank.0, crank.1),
+                segment_distance(p, rod_b.0, rod_b.1),
+            );
+            assert!(
+                mine < other,
+                "{what}: ({suffix}) the detail's a {mine:.1} from the crank, {other:.1} from the rod"
+            );
+        }
+    }
+    assert!(details > 0, "no detail drawn to check");
+}
