@@ -438,3 +438,86 @@ fn every_link_of_every_panel_is_drawn_at_least_40_units_long() {
     }
     assert!(details > 0, "no detail drawn to check");
 }
+
+/// The coupler curves' SVG at `(rod, offset, deg)` (r = 1) on a page
+/// `width` wide (the figure's own where `None`).
+fn coupler_at(rod: f64, offset: f64, deg: f64, width: Option<&str>) -> String {
+    use slider_crank::catalogue::FigureOptions;
+    use slider_crank::{Angle, SliderCrank};
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+    options.angle = Some(Angle::deg(deg));
+    options.width = width.map(|w| w.parse().unwrap());
+    slider_crank::render::to_svg(&FigureName::CouplerCurves.figure(&options).unwrap())
+}
+
+/// The height on the page of the path `id`, none where it is not drawn.
+fn drawn_height(svg: &str, id: &str) -> Option<f64> {
+    crate::common::tag(svg, id)?;
+    let p = path(svg, id);
+    let (lo, hi) = (p.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), q| {
+        (lo.min(q.1), hi.max(q.1))
+    });
+    Some(hi - lo)
+}
+
+#[test]
+fn a_long_rods_ovals_and_crank_are_drawn_to_be_seen() {
+    // At l = 30 r, 170° the ovals were a few units tall and the crank a
+    // speck, C's letter standing at B, no enlargement. Each oval is drawn
+    // at least 40 units tall and the crank 40 units long, in the main
+    // view or a detail, and each point's letter in a detail stands within
+    // an em and a half of its own dot.
+    const SEEN: f64 = 40.0;
+    let mut details = 0;
+    for (rod, offset, deg, width) in [
+        (30.0, 0.0, 170.0, None),
+        (30.0, 0.0, 171.0, None),
+        (30.0, 0.0, 169.0, Some("120mm")),
+        (53.0, -1.9, 270.0, Some("500")),
+        (25.0, 0.5, 90.0, None),
+        (60.0, 1.0, 0.0, None),
+        (4.0, 1.5, 90.0, None),
+        (3.0, 0.0, 91.0, None),
+    ] {
+        let svg = coupler_at(rod, offset, deg, width);
+        let plate = Plate::read(&svg);
+        let what = format!("l = {rod}, e = {offset}, {deg}°, width {width:?}");
+        let crank = drawn_length(&svg, "link-crank").unwrap_or(0.0);
+        let enlarged = drawn_length(&svg, "detail-link-crank-0");
+        assert!(
+            crank.max(enlarged.unwrap_or(0.0)) >= SEEN,
+            "{what}: the crank drawn {crank:.1} long, {enlarged:?} in a detail"
+        );
+        for (k, id) in ["25", "50", "75"].into_iter().enumerate() {
+            let main = drawn_height(&svg, &format!("curve-coupler-{id}")).unwrap_or(0.0);
+            let detail = drawn_height(&svg, &format!("detail-curve-coupler-{id}"));
+            details += usize::from(detail.is_some());
+            assert!(
+                main.max(detail.unwrap_or(0.0)) >= SEEN,
+                "{what}: P{}'s oval drawn {main:.1} tall, {detail:?} in a detail",
+                k + 1
+            );
+            let suffix = format!("P{}-{}", k + 1, k + 1);
+            let Some(letter) = plate
+                .texts
+                .iter()
+                .find(|t| t.id == format!("detail-label-{suffix}"))
+            else {
+                continue;
+            };
+            let dot = format!("detail-point-{suffix}");
+            let p = (
+                crate::common::num(&svg, &dot, "cx"),
+                crate::common::num(&svg, &dot, "cy"),
+            );
+            let gap = letter.rect.distance_to_seg(&Seg(p, p));
+            assert!(
+                gap < 1.5 * letter.font_size,
+                "{what}: P{}'s letter {gap:.1} from its dot in the detail",
+                k + 1
+            );
+        }
+    }
+    assert!(details > 0, "no detail drawn to check");
+}
