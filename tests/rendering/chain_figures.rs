@@ -521,3 +521,34 @@ fn a_long_rods_ovals_and_crank_are_drawn_to_be_seen() {
     }
     assert!(details > 0, "no detail drawn to check");
 }
+
+#[test]
+fn no_oval_is_drawn_in_the_centre_lines_pattern() {
+    // P₃'s oval was drawn long dash and dot, as the line of stroke, a
+    // centre line, running through every oval: where they ran together
+    // it read as a second centre line. Each oval's pattern differs from
+    // the line of stroke's in its kind (dashes and dots, or not).
+    let svg = coupler_at(3.0, 0.0, 40.0, None);
+    let kind = |id: &str| {
+        let dashes = crate::common::attr(&svg, id, "stroke-dasharray").unwrap_or_default();
+        let lengths: Vec<f64> = dashes
+            .split_whitespace()
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        // Dashes with dots between: a long and a short drawn length.
+        let drawn: Vec<f64> = lengths.iter().step_by(2).copied().collect();
+        let long = drawn.iter().any(|&d| d > 4.0);
+        let dot = drawn.iter().any(|&d| d < 2.5);
+        long && dot
+    };
+    assert!(
+        kind("line-stroke"),
+        "the line of stroke is not dash and dot"
+    );
+    for id in ["25", "50", "75"] {
+        assert!(
+            !kind(&format!("curve-coupler-{id}")),
+            "P's oval {id} drawn long dash and dot, as the line of stroke"
+        );
+    }
+}

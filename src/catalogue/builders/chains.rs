@@ -202,7 +202,11 @@ impl Layout {
         let y1 = r.max(e + hh);
         let width = far - x0;
         let height = y1 - y0;
-        let pad = 0.12 * width.max(height);
+        // Room about each panel's drawing: at 0.12 the default engine
+        // (l = 3 r) drew its crank 39.9 units long, under the least a
+        // link is drawn (CRANK_LEAST), and got a detail that enlarged it
+        // ×1.5.
+        let pad = 0.11 * width.max(height);
         let gap = 0.5 * pad;
         let step = width + 2.0 * pad + gap;
         let world = Frame::new(

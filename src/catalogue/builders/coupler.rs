@@ -13,11 +13,13 @@ use crate::figure::{Dash, Figure, Item, NOTE_LINE, Panel, Role, Shape};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 
-/// The points drawn: fraction AP/AB, name and dash.
+/// The points drawn: fraction AP/AB, name and dash. Not long dash and
+/// dot, the line of stroke's centre line through every oval: P₃'s oval,
+/// so drawn, read as a second centre line where they ran together.
 const POINTS: [(f64, &str, &str, Dash); 3] = [
     (0.25, "25", "¼", Dash::Solid),
     (0.5, "50", "½", Dash::Dashed),
-    (0.75, "75", "¾", Dash::DashDot),
+    (0.75, "75", "¾", Dash::Dotted),
 ];
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
