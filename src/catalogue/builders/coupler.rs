@@ -59,7 +59,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     // The details' boxes first, which the points' letters keep clear of.
     let top = (area.max().y).max(notes_end);
     let transform = *panel.transform();
-    let windows = details(ctx, &transform, top, page.width())?;
+    // Across the page as narrowed to the drawing.
+    let windows = details(ctx, &transform, top, page.width().min(drawn.width()))?;
     for (k, (region, _)) in windows.iter().enumerate() {
         plot.push(Item::new(
             format!("detail-box-{k}"),
@@ -208,6 +209,8 @@ const SEEN: f64 = 40.0;
 /// What a detail draws them at, at least, page units: [`SEEN`] and a
 /// little more.
 const ENLARGED: f64 = 46.0;
+/// The least magnification a detail is drawn at.
+const LEAST_ENLARGED: f64 = 2.0;
 /// Room about a detail's subject, page units in the detail.
 const WINDOW_PAD: f64 = 22.0;
 /// Room between the drawing and the details below it, and between two
@@ -278,9 +281,20 @@ fn details(
     let reach = Vector::new(1.15 * r, 1.15 * r);
     let mut subjects = vec![((c - reach, c + reach), r)];
     subjects.extend(ovals.iter().map(|&(lo, hi)| ((lo, hi), hi.y - lo.y)));
+    // Those the main view draws too small, and where a detail enlarges
+    // them at least twice (a tilted oval of an offset engine just under
+    // SEEN was drawn again ×1.5 and ×1, a copy that enlarges nothing).
+    let needed = |length: f64| {
+        length * scale < SEEN && round_above(ENLARGED / (length * scale)) >= LEAST_ENLARGED
+    };
     // Left to right as the main view draws them (mirrored: A on the
     // left), each detail below its box.
-    let mut order: Vec<usize> = (0..subjects.len()).collect();
+    let mut order: Vec<usize> = (0..subjects.len())
+        .filter(|&k| subjects.get(k).is_some_and(|&(_, length)| needed(length)))
+        .collect();
+    if order.is_empty() {
+        return Ok(Vec::new());
+    }
     order.sort_by(|&i, &j| {
         let x = |k: usize| {
             (subjects.get(k)).map_or(0.0, |((lo, hi), _)| t.apply(nalgebra::center(lo, hi)).x)
