@@ -210,7 +210,7 @@ const SEEN: f64 = 40.0;
 /// little more.
 const ENLARGED: f64 = 46.0;
 /// The least magnification a detail is drawn at.
-const LEAST_ENLARGED: f64 = 2.0;
+const LEAST_ENLARGED: f64 = 1.5;
 /// Room about a detail's subject, page units in the detail.
 const WINDOW_PAD: f64 = 22.0;
 /// Room between the drawing and the details below it, and between two
@@ -281,9 +281,9 @@ fn details(
     let reach = Vector::new(1.15 * r, 1.15 * r);
     let mut subjects = vec![((c - reach, c + reach), r)];
     subjects.extend(ovals.iter().map(|&(lo, hi)| ((lo, hi), hi.y - lo.y)));
-    // Those the main view draws too small, and where a detail enlarges
-    // them at least twice (a tilted oval of an offset engine just under
-    // SEEN was drawn again ×1.5 and ×1, a copy that enlarges nothing).
+    // Those the main view draws too small alone (at an offset engine a
+    // tilted oval just under SEEN brought in every detail, the others
+    // drawn again ×1, copies that enlarge nothing).
     let needed = |length: f64| {
         length * scale < SEEN && round_above(ENLARGED / (length * scale)) >= LEAST_ENLARGED
     };
