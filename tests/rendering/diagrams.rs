@@ -1245,6 +1245,26 @@ fn ng_fig_8_draws_the_transmission_angle_over_every_crank_angle() {
     }
 }
 
+/// Ng's Fig. 8 at l = 1.09 r: F′ = F(1 − μ|tan φ|) is negative where
+/// |tan φ| > 1/μ and its curve stopped at the axis between about 50° and
+/// 130° with no word. The notes now give the span, here from
+/// sin φ = sin θ / n = 1/√2 (μ = 1, in line).
+#[test]
+fn ng_fig_8_says_where_the_slider_locks() {
+    for (l, locks) in [(1.09, true), (1.3, true), (1.45, false), (3.0, false)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, 0.0).unwrap());
+        let svg = to_svg(&FigureName::NgFig8Forces.figure(&options).unwrap());
+        let text = one_line(&svg);
+        assert_eq!(text.contains("the slider locks"), locks, "l = {l}");
+        if locks {
+            let a = (l / 2f64.sqrt()).asin().to_degrees();
+            let want = format!("from θ = {a:.1}° to {:.1}°", 180.0 - a);
+            assert!(text.contains(&want), "l = {l}: {want} not in {text}");
+        }
+    }
+}
+
 #[test]
 fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
     // At long rods the two are hundredths of a degree apart: the figure
@@ -1485,6 +1505,8 @@ fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap()
         (6.0, 0.0, 30.0),
         (1.07, 0.0, 0.0),
         (40.0, 0.0, 91.0),
+        (1.02, 0.0, 180.0),
+        (53.4, 0.0, 0.0),
     ] {
         let svg = super::polygon_figures::svg(FigureName::DirectReverseCranks, l, e, deg);
         let at = format!("l = {l}, e = {e}, θ = {deg}");
@@ -1504,6 +1526,21 @@ fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap()
             !(near_90 && svg.contains("id=\"projection-primary\"")),
             "{at}: the primary cranks' projection along them"
         );
+        // A force of (c) too short to draw is named so in the notes.
+        let notes = one_line(&svg);
+        for (id, name) in [
+            ("force-sum-primary", "the primary"),
+            ("force-sum-secondary", "the secondary"),
+            ("force-sum-exact", "the exact force"),
+        ] {
+            if !svg.contains(&format!("id=\"{id}\"")) {
+                let said = notes.split("In (c) ").nth(1).unwrap_or("");
+                assert!(
+                    said.contains(name) && said.contains("too short to draw"),
+                    "{at}: {id} left out unsaid"
+                );
+            }
+        }
         let meta = metadata(&svg);
         let c = &meta["cranks"];
         let value = |k: &str| c[k].as_f64().unwrap();
