@@ -1645,6 +1645,13 @@ fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
                 (share - exact).abs() < 1e-3 * exact,
                 "{deg}°: {share} for {exact}"
             );
+            // φ at G is marked only between arrows drawn to scale: near
+            // 90° its letter stood outside the block, off its arc.
+            assert_eq!(
+                svg.contains("id=\"angle-weight\""),
+                sin < cos,
+                "{deg}°: φ at G"
+            );
         }
     }
 }
