@@ -1454,38 +1454,6 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
     }
 }
 
-/// The first straight line (`M x y L x y`) written after `id` in `svg`:
-/// an arrow's shaft.
-fn shaft(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
-    let at = svg
-        .find(&format!("id=\"{id}\""))
-        .unwrap_or_else(|| panic!("no {id}"));
-    let d = &svg[at..];
-    let d = &d[d.find(" d=\"").unwrap() + 4..];
-    let n: Vec<f64> = (d[..d.find('"').unwrap()])
-        .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
-        .filter_map(|t| t.parse().ok())
-        .collect();
-    ((n[0], n[1]), (n[2], n[3]))
-}
-
-/// The tail and the tip of arrow `id`: its shaft's start and its head's
-/// first point (a head is drawn from the tip).
-fn tail_and_tip(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
-    let at = svg
-        .find(&format!("id=\"{id}\""))
-        .unwrap_or_else(|| panic!("no {id}"));
-    let mut starts = svg[at..].split(" d=\"M").skip(1).map(|s| {
-        let n: Vec<f64> = s
-            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
-            .take(2)
-            .map(|t| t.parse().unwrap())
-            .collect();
-        (n[0], n[1])
-    });
-    (starts.next().unwrap(), starts.next().unwrap())
-}
-
 /// The direct and reverse cranks near θ = 90° and at short rods and
 /// offsets: the projection joining the cranks' tips ran along both
 /// vertical cranks and doubled them; a resultant of −87 lbf beside cranks
@@ -1517,7 +1485,7 @@ fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap()
             .filter(|id| id.starts_with("force-") || id.starts_with("component-"))
             .collect();
         for id in &ids {
-            let (a, b) = tail_and_tip(&svg, id);
+            let (a, b) = common::arrow_ends(&svg, id);
             let length = (b.0 - a.0).hypot(b.1 - a.1);
             assert!(length >= 14.9, "{at}: {id} {length:.1} long");
         }
@@ -1593,10 +1561,10 @@ fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
             "component-across",
         ];
         for id in ids {
-            let (a, b) = shaft(&svg, id);
+            let (a, b) = common::arrow_ends(&svg, id);
             let length = (b.0 - a.0).hypot(b.1 - a.1);
-            // The shaft ends where the head (10 units) begins.
-            assert!(length >= 10.0, "{deg}°: {id} {length:.1} long");
+            // Tail to tip, the head (10 units) included: a shaft of 10.
+            assert!(length >= 20.0, "{deg}°: {id} {length:.1} long");
             for (x, y) in [a, b] {
                 assert!(
                     (0.0..=plate.width).contains(&x) && (0.0..=plate.height).contains(&y),
@@ -1604,10 +1572,10 @@ fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
                 );
             }
         }
-        let (w0, w1) = shaft(&svg, "force-weight");
+        let (w0, w1) = common::arrow_ends(&svg, "force-weight");
         let off_weight = |p: (f64, f64)| (p.0 - w0.0).abs();
         for id in ["component-along", "component-across"] {
-            let (a, b) = shaft(&svg, id);
+            let (a, b) = common::arrow_ends(&svg, id);
             let slant = ((b.0 - a.0).atan2(b.1 - a.1)).to_degrees().abs();
             let beside = off_weight(a).min(off_weight(b));
             assert!(

@@ -139,31 +139,21 @@ fn apart(a: f64, b: f64, places: usize) -> String {
 /// are none (at l = 1.09 r the curve stopped between about 50° and 130°
 /// with no word).
 fn locked(m: &SliderCrank) -> String {
-    let locks = |deg: f64| pose_at(m, deg).is_some_and(|p| MU * tan_phi(&p).0 > 1.0);
-    // Where the sign changes between two samples, found to 1e-9 degrees.
-    let edge = |mut a: f64, mut b: f64| {
-        let at_a = locks(a);
-        for _ in 0..40 {
-            let mid = 0.5 * (a + b);
-            if locks(mid) == at_a {
-                a = mid;
-            } else {
-                b = mid;
-            }
-        }
-        0.5 * (a + b)
-    };
+    // Positive where the slider locks; each change of sign between two
+    // samples 0.05° apart found by [`root`].
+    let excess = |deg: f64| pose_at(m, deg).map_or(f64::NAN, |p| MU * tan_phi(&p).0 - 1.0);
     let step = |k: i32| 0.05 * f64::from(k);
     let mut spans: Vec<(f64, f64)> = Vec::new();
-    let mut start = locks(0.0).then_some(0.0);
+    let mut start = (excess(0.0) > 0.0).then_some(0.0);
     for k in 1..=3600 {
-        match (locks(step(k - 1)), locks(step(k))) {
-            (false, true) => start = Some(edge(step(k - 1), step(k))),
-            (true, false) => {
-                spans.push((start.unwrap_or(0.0), edge(step(k - 1), step(k))));
-                start = None;
-            }
-            _ => {}
+        let (a, b) = (step(k - 1), step(k));
+        let Some(edge) = root(excess, a, b).filter(|_| (excess(a) > 0.0) != (excess(b) > 0.0))
+        else {
+            continue;
+        };
+        match start.take() {
+            None => start = Some(edge),
+            Some(from) => spans.push((from, edge)),
         }
     }
     if let Some(a) = start {
