@@ -35,7 +35,7 @@ pub struct Tick {
 /// [`Axis::nice`] and [`Axis::log`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Axis {
-    title: RichText,
+    title: String,
     min: f64,
     max: f64,
     scale: Scale,
@@ -56,6 +56,13 @@ pub const MIN_LOG_VALUE: f64 = 1e-300;
 
 /// Most decades of a log axis (9 ticks each).
 pub const MAX_DECADES: f64 = 100.0;
+
+/// The largest |end| of a linear axis labelled in plain digits: from it
+/// on, a power of ten is taken into the title ([`Axis::shared_power`]).
+pub const LARGEST_PLAIN_LABEL: f64 = 1e5;
+
+/// The smallest step of a linear axis labelled in plain digits.
+pub const SMALLEST_PLAIN_STEP: f64 = 1e-4;
 
 /// Checks that `value` is finite and within ±[`MAX_AXIS_VALUE`].
 fn axis_value(name: Field, value: f64) -> Result<f64> {
@@ -94,23 +101,25 @@ fn decimals(step: f64) -> usize {
 }
 
 impl Axis {
-    /// The label of the `k`-th multiple of the step.
+    /// The label of the `k`-th multiple of the step, in the unit the
+    /// title names (a shared power of ten taken out, [`Axis::shared_power`]).
     fn label(&self, k: i64) -> String {
-        let step = self.step;
-        if (1e-4..1e6).contains(&step) {
-            return format_number(k as f64 * step, decimals(step));
-        }
-        let p = step.log10().floor() as i32;
-        let mantissa = step / 10f64.powi(p);
-        let v = k as f64 * mantissa;
-        if v == 0.0 {
-            return "0".into();
-        }
-        format!(
-            "{}×{}",
-            format_number(v, decimals(mantissa)),
-            power_of_ten(p)
-        )
+        let unit = 10f64.powi(self.shared_power().unwrap_or(0));
+        format_number(k as f64 * self.step / unit, decimals(self.step / unit))
+    }
+
+    /// The power of ten a linear axis's labels share, named once in its
+    /// title (`d²s/dt² (10⁶ ft/s²)`, labels 0.5 … 1.5) rather than in six
+    /// or more digits on every tick (`1500000`) or a power on each
+    /// (`2×10⁹⁹`): a multiple of 3 at or below the largest |end|, where
+    /// that is 10⁵ or more or the step is below 10⁻⁴. `None` otherwise
+    /// and on a log axis (its labels are powers already).
+    pub fn shared_power(&self) -> Option<i32> {
+        let largest = self.min.abs().max(self.max.abs());
+        let wanted = self.scale == Scale::Linear
+            && largest > 0.0
+            && (largest >= LARGEST_PLAIN_LABEL || self.step < SMALLEST_PLAIN_STEP);
+        wanted.then(|| 3 * (largest.log10() / 3.0).floor() as i32)
     }
 
     /// A linear axis over `[min, max]` (finite, min < max) with a round
@@ -128,7 +137,7 @@ impl Axis {
             });
         }
         Ok(Self {
-            title: RichText::parse(title),
+            title: title.to_string(),
             min,
             max,
             scale: Scale::Linear,
@@ -200,7 +209,7 @@ impl Axis {
             b = a + 1.0;
         }
         Ok(Self {
-            title: RichText::parse(title),
+            title: title.to_string(),
             min: 10f64.powf(a),
             max: 10f64.powf(b),
             scale: Scale::Log,
@@ -226,9 +235,23 @@ impl Axis {
         Ok(self)
     }
 
-    /// The title.
-    pub fn title(&self) -> &RichText {
-        &self.title
+    /// The title, with the labels' shared power of ten put in its unit:
+    /// `d²s/dt² (ft/s²)` reads `d²s/dt² (10⁶ ft/s²)`; a title with no unit
+    /// in brackets at its end gets `(×10⁶)`.
+    pub fn title(&self) -> RichText {
+        let Some(p) = self.shared_power() else {
+            return RichText::parse(&self.title);
+        };
+        let power = power_of_ten(p);
+        let title = self.title.trim_end();
+        let markup = match title.rfind('(') {
+            Some(i) if title.ends_with(')') => {
+                let (head, unit) = title.split_at(i + 1);
+                format!("{head}{power} {unit}")
+            }
+            _ => format!("{title} (×{power})"),
+        };
+        RichText::parse(&markup)
     }
 
     /// The range of values, `(min, max)`.
@@ -263,8 +286,9 @@ impl Axis {
         }
     }
 
-    /// The ticks in increasing order. Labels of a linear axis whose step
-    /// is 10⁶ or more, or below 10⁻⁴, share a power of ten: `2.5×10⁹⁹`.
+    /// The ticks in increasing order. Labels of a linear axis are in the
+    /// unit its title names, a shared power of ten taken out where one is
+    /// ([`Axis::shared_power`]).
     pub fn ticks(&self) -> Vec<Tick> {
         match self.scale {
             Scale::Linear => {
@@ -389,16 +413,37 @@ mod tests {
 
     #[test]
     fn huge_and_tiny_steps_are_labelled_with_a_power_of_ten() {
-        // Issue 9 (9): 100-digit labels left no room for the plot.
+        // Issue 9 (9): 100-digit labels left no room for the plot. The
+        // power is named once, in the title.
         let a = Axis::nice("v", 0.0, 9e99).unwrap();
         assert_eq!(a.step(), 2e99);
-        assert_eq!(
-            labels(&a),
-            ["0", "2×10⁹⁹", "4×10⁹⁹", "6×10⁹⁹", "8×10⁹⁹", "10×10⁹⁹"]
+        assert_eq!(labels(&a), ["0", "2", "4", "6", "8", "10"]);
+        assert_eq!(a.title().plain(), "v (×10⁹⁹)");
+        let b = Axis::nice("x (m)", 0.0, 2.4e-6).unwrap();
+        assert_eq!(labels(&b)[1], "0.5");
+        assert_eq!(b.title().plain(), "x (10⁻⁶ m)");
+    }
+
+    #[test]
+    fn six_digit_labels_share_their_power_in_the_unit() {
+        // The Whitworth quick return at l = 1.03 r: ticks of 1500000 ft/s².
+        let a = Axis::nice("d²*s*/d*t*² (ft/s²)", -1.45e6, 1.42e6).unwrap();
+        assert_eq!(a.shared_power(), Some(6));
+        assert_eq!(labels(&a)[0], "−1.5");
+        assert_eq!(labels(&a).last().map(String::as_str), Some("1.5"));
+        assert_eq!(a.title().plain(), "d²s/dt² (10⁶ ft/s²)");
+        let b = Axis::nice("F (lbf)", 0.0, 180000.0).unwrap();
+        assert_eq!(b.shared_power(), Some(3));
+        assert!(
+            labels(&b).iter().all(|l| l.chars().count() <= 3),
+            "{:?}",
+            labels(&b)
         );
-        let b = Axis::nice("x", 0.0, 2.4e-6).unwrap();
-        assert_eq!(labels(&b)[1], "5×10⁻⁷");
-        assert!(labels(&a).iter().all(|l| l.chars().count() <= 8));
+        // Below 10⁵ the digits stay as they are, the title untouched.
+        let c = Axis::nice("F (lbf)", 0.0, 79000.0).unwrap();
+        assert_eq!(c.shared_power(), None);
+        assert_eq!(labels(&c).last().map(String::as_str), Some("80000"));
+        assert_eq!(c.title().plain(), "F (lbf)");
     }
 
     #[test]

@@ -874,14 +874,14 @@ impl Plot {
         items.push(self.text(
             format!("{n}-title-x"),
             Point::new(0.5 * (left + right), bottom + TICK + 27.0),
-            x.title().clone(),
+            x.title(),
             Align::Middle,
             TextSize::Small,
         ));
         items.push(self.text(
             format!("{n}-title-y"),
             Point::new(self.rect.min().x + 2.0, top - 19.0),
-            y.title().clone(),
+            y.title(),
             Align::Start,
             TextSize::Small,
         ));

@@ -147,3 +147,85 @@ fn a_cutting_stroke_the_return_dwarfs_is_drawn_again_enlarged_to_be_read() {
         }
     }
 }
+
+/// The x extent of a curve on the page.
+fn extent(curve: &[(f64, f64)]) -> f64 {
+    let xs = curve.iter().map(|p| p.0);
+    xs.clone().fold(f64::MIN, f64::max) - xs.fold(f64::MAX, f64::min)
+}
+
+#[test]
+fn a_short_return_is_drawn_again_over_its_own_span_its_stretch_named() {
+    // Whitworth at l = 1.03 r: a 28° return had been a hair-thin spike
+    // against the whole turn. Returns under 60° (l below about 1.16 r)
+    // are drawn again beside each panel over their own span; the
+    // default chain's 105° return is not.
+    for (l, e, deg, beside) in [
+        (1.03, 0.0, 0.0, true),
+        (1.1, 0.0, 270.5, true),
+        (1.05, 0.0, 90.46, true),
+        (3.0, 0.0, 60.0, false),
+        (2.0, 0.5, 90.0, false),
+    ] {
+        let svg = svg(FigureName::QuickReturnWhitworth, l, e, deg);
+        let at = format!("l = {l}, e = {e}, θ = {deg}");
+        let back = 360.0 - cutting(l, e);
+        assert_eq!(back < 60.0, beside, "{at}: a {back}° return");
+        for (panel, own) in [
+            ("tool-velocity", "return-velocity"),
+            ("tool-acceleration", "return-acceleration"),
+        ] {
+            let id = format!("curve-{own}");
+            assert_eq!(svg.contains(&format!("id=\"{id}\"")), beside, "{at}: {id}");
+            if !beside {
+                continue;
+            }
+            let whole = extent(&points(&svg, &format!("curve-{panel}-return")));
+            let drawn = extent(&points(&svg, &id));
+            let stretch = drawn / whole;
+            assert!(stretch >= 2.5, "{at}, {own}: ×{stretch}");
+            let caption = text_of(&svg, &format!("{own}-caption"));
+            let named: f64 = caption
+                .rsplit('×')
+                .next()
+                .and_then(|k| k.trim().parse().ok())
+                .unwrap_or_else(|| panic!("{at}: {caption}"));
+            assert!(
+                (named - stretch).abs() <= 0.051,
+                "{at}, {own}: ×{named} named, ×{stretch} drawn"
+            );
+        }
+    }
+}
+
+/// The text of the element `id`.
+fn text_of(svg: &str, id: &str) -> String {
+    let start = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let rest = &svg[start..];
+    let open = rest.find('>').unwrap_or(0) + 1;
+    let close = rest.find("</text>").unwrap_or(rest.len());
+    crate::common::read_text(&rest[open..close])
+}
+
+#[test]
+fn tick_labels_keep_to_five_digits_the_power_named_in_the_unit() {
+    // At l = 1.03 r the acceleration's ticks read 1500000 ft/s².
+    let svg = svg(FigureName::QuickReturnWhitworth, 1.03, 0.0, 0.0);
+    let text = crate::common::read_text(&svg);
+    assert!(
+        text.contains("(10⁶ ft/s²)") || text.contains("(106 ft/s²)"),
+        "no shared power"
+    );
+    let mut n = 0;
+    for piece in svg.split("-tick-y-").skip(1) {
+        let label = piece
+            .split_once('>')
+            .map_or("", |(_, t)| t.split('<').next().unwrap_or(""));
+        let digits = label.chars().filter(char::is_ascii_digit).count();
+        assert!(digits <= 5, "tick label {label}");
+        n += 1;
+    }
+    assert!(n >= 12, "{n} tick labels read");
+}

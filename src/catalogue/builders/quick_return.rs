@@ -14,7 +14,7 @@ use crate::chain::{Inversion, QuickReturn, Stroke, ToolMotion};
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Symbol};
-use crate::geom::{Point, Vector};
+use crate::geom::{Frame, Point, Vector};
 use std::f64::consts::TAU;
 
 /// A step of θ (degrees) for the acceleration's derivative, by central
@@ -32,14 +32,22 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     sheet.meta("time_ratio", serde_json::json!(q.time_ratio()));
     sheet.meta("lever", serde_json::json!(q.lever()));
     let height = 0.5 * (page.height() - 32.0 - 74.0);
-    sheet.plot(panel(ctx, &q, Quantity::Velocity, 16.0, height)?);
-    sheet.plot(panel(
-        ctx,
-        &q,
-        Quantity::Acceleration,
-        16.0 + height + 24.0,
-        height,
-    )?);
+    let beside = q.stroke_angles().1.to_degrees() < RETURN_DETAIL_BELOW;
+    for (top, what) in [
+        (16.0, Quantity::Velocity),
+        (16.0 + height + 24.0, Quantity::Acceleration),
+    ] {
+        let band = ctx.band(top, height);
+        if !beside {
+            sheet.plot(panel(ctx, &q, what, band, TURN_AXIS)?);
+            continue;
+        }
+        let (main, detail) = split(band);
+        let main = panel(ctx, &q, what, main, TURN_AXIS_SHORT)?;
+        let per_degree = main.area().width() / 360.0;
+        sheet.plot(main);
+        sheet.plot(return_panel(ctx, &q, what, detail, per_degree)?);
+    }
     sheet.notes(Point::new(20.0, page.height() - 54.0), &notes(ctx, &q));
     Ok(sheet.finish())
 }
@@ -62,33 +70,12 @@ impl Quantity {
 
 /// One panel: the value against θ, the cutting stroke full and the
 /// return dashed, the strokes' ends dotted, the drawn pose's value marked.
-fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> Result<Plot> {
+fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, band: Frame, turn_axis: &str) -> Result<Plot> {
     let w = ctx.omega;
-    let driver = q.chain().inversion().driver();
-    let value = move |deg: f64| -> Option<f64> {
-        let a = Angle::from_degrees(deg).ok()?;
-        Some(what.of(&q.at(a, w)))
-    };
-    // The derivative per degree: the velocity's from the acceleration
-    // (dv/dθ = a / (dθ/dt), dθ/dt = ω / the driver's rate per dθ), the
-    // acceleration's by central differences.
-    // Each stroke's curve is traced over θ and set at the driver's turn
-    // (d turn/dθ = the driver's rate per dθ, with its sign: in inversion 2
-    // the driver turns forward as θ falls), the turn taken in the stroke's
-    // own span (at its ends the turn is 0 or 360°, one time).
+    let value = move |deg: f64| value(q, w, what, deg);
     let (cutting, _) = q.stroke_angles();
     let cut = cutting.to_degrees();
-    let curve = move |deg: f64, back: bool| -> Option<(Point, Vector)> {
-        let a = Angle::from_degrees(deg).ok()?;
-        let t = q.at(a, w);
-        let rate = q.chain().pose(a).link_rate(driver);
-        let slope = match what {
-            Quantity::Velocity => t.acceleration * rate / w * super::PER_DEGREE,
-            Quantity::Acceleration => (value(deg + STEP)? - value(deg - STEP)?) / (2.0 * STEP),
-        };
-        let x = in_stroke(t.driver_angle.to_degrees(), cut, back);
-        Some((Point::new(x, what.of(&t)), Vector::new(rate, slope)))
-    };
+    let curve = move |deg: f64, back: bool| traced(q, w, what, cut, deg, back);
     let cutting_curve = move |deg: f64| curve(deg, false);
     let return_curve = move |deg: f64| curve(deg, true);
     let range = |from: f64, to: f64| {
@@ -132,9 +119,8 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
     // return touched the −750 frame line.
     let pad = 0.03 * (hi - lo);
     let y = Axis::nice(&format!("{title} ({unit})"), lo - pad, hi + pad)?;
-    let x = Axis::linear(TURN_AXIS, 0.0, 360.0)?.with_step(30.0)?;
-    let mut plot = Plot::new(name, ctx.band(top, height), x, y, ctx.tolerance, ctx.font)?
-        .with_caption(&caption);
+    let x = Axis::linear(turn_axis, 0.0, 360.0)?.with_step(30.0)?;
+    let mut plot = Plot::new(name, band, x, y, ctx.tolerance, ctx.font)?.with_caption(&caption);
     let back = TAU - cutting;
     // The strokes and the pose are named in (a)'s legend only: a second
     // legend found no free corner in (b) and was set beside its plot.
@@ -202,6 +188,123 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
     Ok(plot)
 }
 
+/// The tool's value at θ = `deg` (degrees) and driver speed `w`.
+fn value(q: &QuickReturn, w: f64, what: Quantity, deg: f64) -> Option<f64> {
+    let a = Angle::from_degrees(deg).ok()?;
+    Some(what.of(&q.at(a, w)))
+}
+
+/// A stroke's curve traced over θ = `deg` and set at the driver's turn,
+/// taken in the stroke's own span (`back`: the return's; at its ends the
+/// turn is 0 or 360°, one time; `cut`, the cutting stroke's end), with
+/// its derivative per degree of θ: d turn/dθ is the driver's rate per dθ
+/// with its sign (in inversion 2 the driver turns forward as θ falls);
+/// the velocity's slope from the acceleration (dv/dθ = a / (dθ/dt),
+/// dθ/dt = ω / the driver's rate per dθ), the acceleration's by central
+/// differences. `None` where θ is not a finite angle.
+fn traced(
+    q: &QuickReturn,
+    w: f64,
+    what: Quantity,
+    cut: f64,
+    deg: f64,
+    back: bool,
+) -> Option<(Point, Vector)> {
+    let a = Angle::from_degrees(deg).ok()?;
+    let t = q.at(a, w);
+    let rate = q.chain().pose(a).link_rate(q.chain().inversion().driver());
+    let slope = match what {
+        Quantity::Velocity => t.acceleration * rate / w * super::PER_DEGREE,
+        Quantity::Acceleration => {
+            (value(q, w, what, deg + STEP)? - value(q, w, what, deg - STEP)?) / (2.0 * STEP)
+        }
+    };
+    let x = in_stroke(t.driver_angle.to_degrees(), cut, back);
+    Some((Point::new(x, what.of(&t)), Vector::new(rate, slope)))
+}
+
+/// The return's share of the driver's turn (degrees) below which each
+/// panel is drawn narrower and the return drawn again beside it over its
+/// own span: at l = 1.03 r Whitworth's return of 28° was a hair-thin
+/// spike against the whole turn.
+const RETURN_DETAIL_BELOW: f64 = 60.0;
+
+/// A panel's band parted into the whole turn's plot (left, 64 %) and the
+/// return's (right, 32 %), 4 % between them.
+fn split(band: Frame) -> (Frame, Frame) {
+    let (x, y, w, h) = (band.min().x, band.min().y, band.width(), band.height());
+    (
+        Frame::from_origin_size(x, y, 0.64 * w, h),
+        Frame::from_origin_size(x + 0.68 * w, y, 0.32 * w, h),
+    )
+}
+
+/// The return panel's range of the driver's turn: from the multiple of
+/// 5° at or below the cutting stroke's end to 360°.
+fn return_axis(q: &QuickReturn) -> (f64, f64) {
+    let cut = q.stroke_angles().0.to_degrees();
+    ((cut / 5.0).floor() * 5.0, 360.0)
+}
+
+/// The return stroke alone (dashed) over its own span of the driver's
+/// turn, its time drawn wider than in the whole turn's panel beside it
+/// (`per_degree`, that panel's page units per degree; the caption names
+/// how many times), with the strokes' end dotted and the pose marked
+/// where it falls in the return. Its values to their own scale.
+fn return_panel(
+    ctx: &Ctx,
+    q: &QuickReturn,
+    what: Quantity,
+    band: Frame,
+    per_degree: f64,
+) -> Result<Plot> {
+    let w = ctx.omega;
+    let cut = q.stroke_angles().0.to_degrees();
+    let back = move |deg: f64| traced(q, w, what, cut, deg, true);
+    let (lo, hi) = (0..=360)
+        .filter_map(|k| value(q, w, what, 90.0 + 0.5 * f64::from(k)))
+        .fold((0.0f64, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    let pad = 0.03 * (hi - lo);
+    let u = ctx.unit();
+    let (name, title, caption) = match what {
+        Quantity::Velocity => ("return-velocity", "d*s*/d*t* ({u}/s)", "(a′)"),
+        Quantity::Acceleration => ("return-acceleration", "d²*s*/d*t*² ({u}/s²)", "(b′)"),
+    };
+    let y = Axis::nice(&title.replace("{u}", &u.to_string()), lo - pad, hi + pad)?;
+    let (from, to) = return_axis(q);
+    let x = Axis::linear("the driver’s turn (°)", from, to)?.with_step(10.0)?;
+    let plot = Plot::new(name, band, x, y, ctx.tolerance, ctx.font)?;
+    let stretch = plot.area().width() / (to - from) / per_degree;
+    let caption = format!(
+        "{caption} The return, its time ×{}",
+        short((10.0 * stretch).round() / 10.0)
+    );
+    let mut plot = plot.with_caption(&caption);
+    plot.curve(
+        &format!("curve-{name}"),
+        &[(&back, 90.0..=270.0)],
+        Dash::Dashed,
+        None,
+    )?;
+    plot.line(
+        &format!("line-{name}-end"),
+        &[(cut, lo), (cut, hi)],
+        Dash::Dotted,
+        None,
+    );
+    let pose = q.at(ctx.angle, w);
+    if pose.stroke == Stroke::Return {
+        let turn = in_stroke(pose.driver_angle.to_degrees(), cut, true);
+        plot.points(
+            &format!("point-{name}"),
+            &[(turn, what.of(&pose))],
+            Symbol::Circle,
+            None,
+        );
+    }
+    Ok(plot)
+}
+
 /// How much the cutting stroke's curve is drawn enlarged beside itself,
 /// where the return's greatest value is more than ten times its own
 /// (`cutting` and `back`, each stroke's greatest magnitude): the largest
@@ -226,6 +329,10 @@ fn enlargement(cutting: f64, back: f64) -> Option<f64> {
 
 /// The title of the panels' axis of abscissae.
 const TURN_AXIS: &str = "the driver’s turn since the cutting stroke began (°), as time";
+
+/// The same, shorter, where the panel shares its width with the return's
+/// (the notes say where the turn is counted from).
+const TURN_AXIS_SHORT: &str = "the driver’s turn (°), as time";
 
 /// The driver's turn `turn` (degrees, 0 to 360) taken in its stroke's
 /// span: the cutting stroke's from 0 to `cut`, the return's from `cut`
@@ -267,7 +374,7 @@ fn notes(ctx: &Ctx, q: &QuickReturn) -> Vec<String> {
             short(q.lever()),
         ),
         format!(
-            "The strokes end where *d* is square to the crank *a*, θ = 90° and 270°; the driver turns {}° over the cutting stroke and {}° over the return (dotted: the cutting stroke’s end), time ratio {}, stroke {} {u}; *s* is + the way the tool cuts. At θ = {}°, the driver’s turn {}° ({} stroke): d²*s*/d*t*² = {} {u}/s².",
+            "The strokes end where *d* is square to the crank *a*, θ = 90° and 270°; the driver turns {}° over the cutting stroke and {}° over the return (the turn counted from the cutting stroke’s start; dotted: its end), time ratio {}, stroke {} {u}; *s* is + the way the tool cuts. At θ = {}°, the driver’s turn {}° ({} stroke): d²*s*/d*t*² = {} {u}/s².",
             short(cutting.to_degrees()),
             short(back.to_degrees()),
             sig(q.time_ratio()),
