@@ -158,12 +158,7 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, band: Frame, turn_axis: &st
             first.then_some(key.as_str()),
         )?;
     }
-    plot.line(
-        &format!("line-{name}-end"),
-        &[(cut, lo), (cut, hi)],
-        Dash::Dotted,
-        None,
-    );
+    end_line(&mut plot, name, cut, (lo, hi));
     let theta = ctx.angle.degrees();
     let pose = q.at(ctx.angle, w);
     if let Some(v) = value(theta) {
@@ -221,6 +216,17 @@ fn traced(
     };
     let x = in_stroke(t.driver_angle.to_degrees(), cut, back);
     Some((Point::new(x, what.of(&t)), Vector::new(rate, slope)))
+}
+
+/// The cutting stroke's end (`cut`, the driver's turn) dotted across the
+/// values `(lo, hi)` of the plot `name`.
+fn end_line(plot: &mut Plot, name: &str, cut: f64, (lo, hi): (f64, f64)) {
+    plot.line(
+        &format!("line-{name}-end"),
+        &[(cut, lo), (cut, hi)],
+        Dash::Dotted,
+        None,
+    );
 }
 
 /// The return's share of the driver's turn (degrees) below which each
@@ -286,12 +292,7 @@ fn return_panel(
         Dash::Dashed,
         None,
     )?;
-    plot.line(
-        &format!("line-{name}-end"),
-        &[(cut, lo), (cut, hi)],
-        Dash::Dotted,
-        None,
-    );
+    end_line(&mut plot, name, cut, (lo, hi));
     let pose = q.at(ctx.angle, w);
     if pose.stroke == Stroke::Return {
         let turn = in_stroke(pose.driver_angle.to_degrees(), cut, true);
