@@ -1,18 +1,13 @@
 //! `table dynamics`: the forces and torques of an engine against θ, with
 //! the turn's mean torque, fluctuation of energy and flywheel as notes.
 
-use super::Table;
+use super::{Table, sig};
 use crate::angle::Angle;
 use crate::dynamics::{EXAMPLE_MASS, Engine, Flywheel, FlywheelAsk, TurningMoment};
 use crate::error::Result;
+use crate::number::fixed;
 use crate::number::{angle_cell, plain};
-use crate::number::{fixed, significant};
 use crate::units::Units;
-
-/// A note's value: six significant figures.
-fn sig(x: f64) -> String {
-    significant(x, 6)
-}
 
 /// The title, headers and notes of the dynamics table of `engine` with
 /// cylinders at `phases_deg` (the notes hold the turn's results).

@@ -106,6 +106,11 @@ pub struct Table {
     pub notes: Vec<String>,
 }
 
+/// A value in a title or note: six significant figures.
+fn sig(x: f64) -> String {
+    crate::number::significant(x, 6)
+}
+
 fn ratio_label(n: f64) -> String {
     if n.is_infinite() {
         "∞".into()

@@ -3,16 +3,12 @@
 //! Whitworth's, or 3, the crank and slotted lever), with the time ratio in
 //! the title.
 
-use super::Table;
+use super::{Table, sig};
 use crate::angle::Angle;
 use crate::chain::{Inversion, QuickReturn};
 use crate::error::Result;
-use crate::number::{angle_cell, fixed, plain, significant};
+use crate::number::{angle_cell, fixed, plain};
 
-/// A title's value: six significant figures.
-fn sig(x: f64) -> String {
-    significant(x, 6)
-}
 use crate::units::Units;
 
 /// The title, headers and notes of the table, without rows.
