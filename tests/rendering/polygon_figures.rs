@@ -1860,3 +1860,81 @@ fn the_closing_point_s_letter_stands_by_its_own_dot() {
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }
+
+#[test]
+fn a_side_in_a_coriolis_detail_runs_from_or_to_a_dot() {
+    // The twenty-second review (3): inversion 3 at l = 26.3 r, 270.7°
+    // set k a′_d twice the side gap beside o′a′_d in the ×50 detail (o′
+    // and k 8 units apart there), its ends on neither k nor a′_d and no
+    // tick to them: it read as a vector of its own. Every side of the
+    // detail now has an end on one of its dots, or a tick from it.
+    for (name, rod, deg) in [
+        (FigureName::CoriolisInversion3, 26.3, 270.7),
+        (FigureName::CoriolisInversion3, 26.3, 269.7),
+        (FigureName::CoriolisInversion3, 26.3, 271.7),
+        (FigureName::CoriolisInversion3, 26.25, 270.7),
+        (FigureName::CoriolisInversion2, 29.5, 90.08),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let dots: Vec<(f64, f64)> = (svg.match_indices("id=\"detail-point-"))
+            .map(|(at, _)| {
+                let rest = &svg[at + 4..];
+                let id = &rest[..rest.find('"').unwrap()];
+                dot(&svg, id)
+            })
+            .collect();
+        let near = |p: (f64, f64)| {
+            (dots.iter())
+                .map(|d| (d.0 - p.0).hypot(d.1 - p.1))
+                .fold(f64::INFINITY, f64::min)
+        };
+        for (id, tail, head) in sides(&svg, true) {
+            if !id.starts_with("detail-") {
+                continue;
+            }
+            let grouped = element(&svg, &id).is_some_and(|t| t.starts_with("<g"));
+            let head = if grouped { arrow_tip(&svg, &id) } else { head };
+            let ticked = svg.contains(&format!("id=\"{id}-tick-"));
+            let off = near(tail).min(near(head));
+            assert!(
+                ticked || off < 2.5,
+                "{name:?} l = {rod} r, {deg}°: {id} ends {off:.1} units from every dot"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_rod_s_letter_stands_out_of_d_s_bar_apart_from_d_s() {
+    // The twenty-second review (3): inversion 2 at l = 29.5 r, 90.08°
+    // drew b's letter inside d's bar, beside d's across its edge, "d b"
+    // read as one label at the tail of ω's arrow. Where the rod lies in
+    // the bar its letter stands outside it, half an em at least from
+    // d's and from ω's.
+    let name = FigureName::CoriolisInversion2;
+    for (rod, deg) in [
+        (29.5, 90.08),
+        (29.45, 90.08),
+        (29.55, 90.08),
+        (29.5, 89.08),
+        (29.5, 91.08),
+        (29.5, 270.08),
+        (40.8, 90.38),
+    ] {
+        let svg = svg(name, rod, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let at = format!("l = {rod} r, {deg}°");
+        let bar = path(&svg, "link-frame");
+        let b = text_centre(&plate, "label-link-b").unwrap_or_else(|| panic!("{at}: no b"));
+        assert!(
+            !super::inversion_figures::within(&bar, b),
+            "{at}: b inside d's bar at {b:?}"
+        );
+        for other in ["label-link-d", "label-omega"] {
+            if plate.texts.iter().any(|t| t.id == other) {
+                let gap = letters_gap(&plate, "label-link-b", other);
+                assert!(gap >= 8.5, "{at}: b {gap:.1} units from {other}");
+            }
+        }
+    }
+}

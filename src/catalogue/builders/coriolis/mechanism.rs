@@ -320,6 +320,9 @@ pub(super) fn links_plot(
     if let (true, Some(region)) = (whole, region) {
         bar_letter_out_of(&mut items, pose, (scale, em), &region);
     }
+    if whole {
+        rod_letter_out_of_bar(&mut items, pose, (scale, em), region);
+    }
     for item in items {
         plot.push(item);
     }
@@ -403,6 +406,134 @@ fn bar_letter_out_of(
     if let Some(Shape::Label { anchor, toward, .. }) = item.map(|i| &mut i.shape) {
         *anchor = at;
         *toward = Some(way);
+    }
+}
+
+/// The rod b's letter, on the whole mechanism, where the rod lies inside
+/// the slotted bar d (both its pins within the bar's half width of its
+/// middle line: a long rod near 90° or 270° in inversion 2): anchored on
+/// the rod, the letter was set inside d's outline, in its tone, beside
+/// d's own letter across the bar's edge ("d b" read as one label at the
+/// tail of ω's arrow, inversion 2 at l = 29.5 r, 90.08°). It goes by the
+/// bar's edge on the side away from d's letter, in the middle of the
+/// longest run of the rod clear (an em each way) of its pins, of the
+/// `region` a detail enlarges, of the block and of ω's arc and letter;
+/// left where no run is. Among `items`, drawn at `scale` page units per
+/// world unit, its letters an `em` of page units.
+fn rod_letter_out_of_bar(
+    items: &mut [Item],
+    pose: &InversionPose,
+    (scale, em): (f64, f64),
+    region: Option<Frame>,
+) {
+    let engine = pose.engine_pose();
+    let mechanism = engine.mechanism();
+    let t = pose.place(Point::new(0.0, mechanism.offset()));
+    let (a, b) = (pose.place(engine.a()), pose.place(engine.b()));
+    let Some(u) = unit(a - t) else {
+        return;
+    };
+    let across = Vector::new(-u.y, u.x);
+    let half = super::super::inversions::slot_half_width(mechanism, scale);
+    let along = |p: Point| (p - t).dot(&u);
+    let off = |p: Point| (p - t).dot(&across);
+    if off(b).abs() > half || along(b) < -half {
+        return;
+    }
+    let label = |id: &str| {
+        (items.iter()).find_map(|i| match (&i.id[..], &i.shape) {
+            (x, Shape::Label { anchor, toward, .. }) if x == id => Some((*anchor, *toward)),
+            _ => None,
+        })
+    };
+    if label("label-link-b").is_none() {
+        return;
+    }
+    // Away from d's letter: the side its anchor (set by the bar's edge)
+    // or the way it is tried first stands on.
+    let d_side = label("label-link-d").map(|(at, toward)| {
+        let side = off(at);
+        if side.abs() > 1e-9 * half.max(1e-300) {
+            side.signum()
+        } else {
+            toward.map_or(1.0, |w| w.dot(&across).signum())
+        }
+    });
+    let way = across * -d_side.unwrap_or(1.0);
+    let em = em / scale;
+    let (lo_end, hi_end) = (along(b).min(along(a)), along(b).max(along(a)));
+    let mut taken: Vec<(f64, f64)> = [a, b]
+        .iter()
+        .map(|p| (along(*p) - em, along(*p) + em))
+        .collect();
+    let mut span = |points: &[Point], reach: f64| {
+        let near: Vec<f64> = (points.iter())
+            .filter(|p| {
+                (off(**p) - way.dot(&across) * half).abs() <= reach || off(**p).abs() <= half
+            })
+            .map(|p| along(*p))
+            .collect();
+        if let (Some(lo), Some(hi)) = (
+            near.iter().copied().reduce(f64::min),
+            near.iter().copied().reduce(f64::max),
+        ) {
+            taken.push((lo - em, hi + em));
+        }
+    };
+    if let Some(r) = region {
+        let (p, q) = (r.min(), r.max());
+        let corners = [p, Point::new(p.x, q.y), q, Point::new(q.x, p.y)];
+        span(&corners, f64::INFINITY);
+    }
+    for item in items.iter() {
+        match (&item.id[..], &item.shape) {
+            ("block-slider", Shape::Block { points }) => span(points, f64::INFINITY),
+            (
+                "arc-omega",
+                Shape::Arc {
+                    centre,
+                    radius,
+                    start,
+                    sweep,
+                    ..
+                },
+            ) => {
+                let points: Vec<Point> = (0..=16)
+                    .map(|k| start + sweep * (k as f64 / 16.0))
+                    .map(|g| centre + Vector::new(g.cos(), g.sin()) * *radius)
+                    .collect();
+                span(&points, 2.0 * em);
+            }
+            ("label-omega", Shape::Label { anchor, .. }) => span(&[*anchor], 2.0 * em),
+            _ => {}
+        }
+    }
+    let mut cuts: Vec<f64> = vec![lo_end, hi_end];
+    cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
+    let mut cuts: Vec<f64> = (cuts.into_iter())
+        .map(|x| x.clamp(lo_end, hi_end))
+        .collect();
+    cuts.sort_by(f64::total_cmp);
+    let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
+    let run = (cuts.iter().copied())
+        .zip(cuts.iter().copied().skip(1))
+        .filter(|(lo, hi)| hi > lo && free(0.5 * (lo + hi)))
+        .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)));
+    let Some((lo, hi)) = run else {
+        return;
+    };
+    let at = t + u * (0.5 * (lo + hi)) + way * half;
+    let item = items.iter_mut().find(|i| i.id == "label-link-b");
+    if let Some(Shape::Label {
+        anchor,
+        toward,
+        line,
+        ..
+    }) = item.map(|i| &mut i.shape)
+    {
+        *anchor = at;
+        *toward = Some(way);
+        *line = None;
     }
 }
 

@@ -461,8 +461,44 @@ fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
                 *off = clear_of_points(s, (*from, *to), drawn);
             }
         }
+    } else {
+        in_place_unless_on_a_line(s, drawn, &mut offsets);
     }
     offsets
+}
+
+/// In a detail, each side set beside its place farther than
+/// [`TICK_MOST`] (no tick joins it to its dots) drawn at its place
+/// instead, where there it lies on no other side's line (an end of it
+/// stands farther than [`ON_LINE`] from the line of every other side):
+/// it then runs dot to dot, leaving the sides it meets at a narrow
+/// angle. Set twice [`SIDE_APART`] beside o′a′_d, inversion 3's k a′_d
+/// at l = 26.3 r, 270.7° (o′ and k 8 units apart at ×50) touched
+/// neither k nor a′_d and read as a vector of its own. Sides on one
+/// line keep their places beside one another.
+fn in_place_unless_on_a_line(s: &Canvas, drawn: &Drawn, offsets: &mut [Vector]) {
+    let most = s.world(TICK_MOST);
+    let on = s.world(ON_LINE);
+    let lines: Vec<(Point, Vector)> = (drawn.arrows.iter())
+        .map(|(_, _, from, to)| (Point::from(*from), to - from))
+        .collect();
+    for (i, off) in offsets.iter_mut().enumerate() {
+        let Some((from, side)) = lines.get(i).copied() else {
+            continue;
+        };
+        if off.norm() <= most || side.norm() <= 0.0 {
+            continue;
+        }
+        let to = from + side;
+        let off_line =
+            |p: Point, (a, u): (Point, Vector)| crate::geom::cross(&u, &(p - a)).abs() / u.norm();
+        let on_a_line = (lines.iter().enumerate())
+            .filter(|(j, (_, u))| *j != i && u.norm() > 0.0)
+            .any(|(_, l)| off_line(from, *l) <= on && off_line(to, *l) <= on);
+        if !on_a_line {
+            *off = Vector::zeros();
+        }
+    }
 }
 
 /// Whether the side `from`→`to` of a polygon drawn on `s` runs through a
