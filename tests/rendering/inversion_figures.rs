@@ -1353,6 +1353,14 @@ fn an_edge_arrow_s_letter_does_not_stand_on_a_link_s_line_produced() {
         (I4, (2.64, 1.01, 269.36)),
         (I4, (2.74, 1.01, 269.36)),
         (I4, (2.69, 1.01, 268.36)),
+        // The thirty-eighth review's own engine, e = −1.01 r: the arrow
+        // up from B by the page's left edge, its letter had no room on
+        // the side away from O_cd's arrow and stood across d's leg.
+        (I4, (2.69, -1.01, 269.36)),
+        (I4, (2.64, -1.01, 269.36)),
+        (I4, (2.74, -1.01, 269.36)),
+        (I4, (2.69, -1.01, 268.36)),
+        (I4, (2.69, -1.01, 270.36)),
         (I3, (2.36, 1.14, 269.57)),
         (I3, (1.07, 0.0, 90.03)),
     ] {
@@ -1404,5 +1412,57 @@ fn an_edge_arrow_s_letter_does_not_stand_on_a_link_s_line_produced() {
             }
         }
     }
-    assert!(seen >= 8, "arrows lettered at {seen} engines");
+    assert!(seen >= 13, "arrows lettered at {seen} engines");
+}
+
+#[test]
+fn o_cd_at_infinity_stands_past_the_block_beside_its_short_arrow() {
+    // The thirty-eighth review (3): inversion 4 at l = 45 r, 0° set
+    // "O_cd at ∞" above the barrel, across it from its short arrow down
+    // from A, where it read as the hatching's or O_bc's. The letter
+    // stands wholly on the arrow's side of the block, beside the arrow.
+    const I4: FigureName = FigureName::Inversion4HandPump;
+    let mut seen = 0;
+    for engine in [
+        (45.0, 0.0, 0.0),
+        (44.95, 0.0, 0.0),
+        (45.05, 0.0, 0.0),
+        (45.0, 0.0, 1.0),
+        (45.0, 0.0, 359.0),
+        (25.0, 0.0, 0.0),
+        (60.0, 0.0, 0.0),
+    ] {
+        let svg = svg_at(I4, engine, None);
+        let plate = Plate::read(&svg);
+        let Some((tail, head)) = shaft(&svg, "infinity-O-cd") else {
+            continue;
+        };
+        let label = (plate.panels.iter())
+            .flat_map(|p| &p.labels)
+            .find(|l| l.id == "label-O-cd")
+            .unwrap_or_else(|| panic!("{engine:?}: O_cd's arrow unlettered"));
+        let a = pin_at(&svg, "point-A").unwrap_or_else(|| panic!("{engine:?}: no A"));
+        let len = (head.0 - tail.0).hypot(head.1 - tail.1);
+        let u = ((head.0 - tail.0) / len, (head.1 - tail.1) / len);
+        let along = |p: (f64, f64)| (p.0 - a.0) * u.0 + (p.1 - a.1) * u.1;
+        let block = (path(&svg, "block-slider").into_iter())
+            .map(along)
+            .fold(f64::NEG_INFINITY, f64::max);
+        let r = &label.rect;
+        let near = [(r.x0, r.y0), (r.x1, r.y0), (r.x0, r.y1), (r.x1, r.y1)]
+            .into_iter()
+            .map(along)
+            .fold(f64::INFINITY, f64::min);
+        seen += 1;
+        assert!(
+            near >= block,
+            "{engine:?}: O_cd's letter {r:?} reaches {near:.1} along its arrow, the block {block:.1}"
+        );
+        let own = r.distance_to_seg(&crate::plate::Seg(tail, head));
+        assert!(
+            own <= label.font_size,
+            "{engine:?}: O_cd's letter {own:.1} from its arrow"
+        );
+    }
+    assert!(seen >= 5, "O_cd's arrow drawn at {seen} engines");
 }

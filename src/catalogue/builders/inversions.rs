@@ -386,6 +386,20 @@ fn drawn(m: &SliderCrank, pose: &InversionPose, turn: &Frame, pad: f64, beyond: 
     {
         points.push(q.a + u * (BEYOND_A * pad));
     }
+    // O_bd beyond the turn's world: its arrow from B is lettered on the
+    // side away from A (and O_cd's arrow from it), room for "to O_bd"
+    // there; by B at the page's edge the letter found room only on the
+    // other side, on d's leg produced (inversion 4 at l = 2.69 r,
+    // e = −1.01 r, 269.36°).
+    if let Some(Intersection::Point(x)) = bd
+        && beyond
+        && !reach.contains(x)
+        && let Some(u) = unit(x - q.b)
+    {
+        let n = Vector::new(-u.y, u.x);
+        let side = if n.dot(&(q.b - q.a)) >= 0.0 { n } else { -n };
+        points.push(q.b + side * (BESIDE_B * pad));
+    }
     let lo = points.iter().fold(turn.max(), |lo, p| lo.inf(p));
     let hi = points.iter().fold(turn.min(), |hi, p| hi.sup(p));
     Frame::new(lo - Vector::new(pad, pad), hi + Vector::new(pad, pad))
@@ -400,6 +414,11 @@ const BEYOND_O_BD: f64 = 2.0;
 /// at infinity on the same line, in [`EDGE_ROOM`]s: O_cd's arrow and its
 /// letter beside it clear of the block.
 const BEYOND_A: f64 = 3.0;
+
+/// How far across O_bd's arrow from B the page reaches beside it where
+/// O_bd lies beyond the turn's world, in [`EDGE_ROOM`]s: room for "to
+/// O_bd" (about three em) and its gap to the arrow.
+const BESIDE_B: f64 = 2.0;
 
 /// The inversion's title, the notes' first line at every page width and
 /// whether a detail stands below the main view or not: `Inversion 2:
@@ -2173,8 +2192,29 @@ impl Drawing {
         // Beside the line [`SET_BACK`] behind the tail: square to the
         // tail itself, a letter by an arrow near the page's edge ran off
         // it and was set anywhere (between two arrows at l = 2.36 r).
-        // No farther back than the line's start (a short arrow from B).
-        let at = tail - u * self.s.world(SET_BACK).min((tail - from).dot(&u));
+        // No farther back than where the line leaves the block about its
+        // start (a short arrow from A: set back to A, the letter stood by
+        // the block, and across it from its arrow at l = 45 r, 0°), nor
+        // than the line's start (a short arrow from B); where that leaves
+        // less than SET_BACK before the tail, by the middle of the
+        // arrow's run past the block, the letter beside its arrow on the
+        // arrow's side of the block.
+        let along = |p: &Point| (p - from).dot(&u);
+        let clear = if inside_outline(&self.corners, from) {
+            (self.corners.iter()).map(along).fold(0.0, f64::max)
+        } else {
+            0.0
+        };
+        let (to_tail, to_edge) = (along(&tail), along(&edge));
+        let back = self.s.world(SET_BACK);
+        let at = if to_tail - back >= clear || clear >= to_edge {
+            tail - u * back.min(to_tail)
+        } else {
+            // No farther than the arrow's middle: a letter by its head
+            // half reads as naming where it points.
+            let middle = (to_tail + to_edge - self.s.world(EDGE_GAP)) / 2.0;
+            from + u * ((clear + to_edge) / 2.0).min(middle)
+        };
         self.s.edge_arrow(id.to_string(), edge, u, EDGE_ARROW);
         let text = RichText::parse(text);
         self.s
