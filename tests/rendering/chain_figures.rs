@@ -64,6 +64,16 @@ fn bare(p: (f64, f64), s: &Seg, t: &Seg) -> bool {
     (0.0..=1.0).contains(&at) && !(lo - 0.02..=hi + 0.02).contains(&at)
 }
 
+/// A link's run on the page from its path: its ends, or for the frame d
+/// drawn beside the line C O_cd (four points, turned in to its pins at
+/// either end) the straight run between the turns.
+fn run(p: &[(f64, f64)]) -> Seg {
+    match p.len() {
+        4 => Seg(p[1], p[2]),
+        _ => Seg(p[0], p[p.len() - 1]),
+    }
+}
+
 #[test]
 fn each_link_letter_stands_nearer_its_own_link_than_any_other() {
     // At l = 1.06 r, 269.41° (a) set b right of the lever c, ~37 units
@@ -84,10 +94,7 @@ fn each_link_letter_stands_nearer_its_own_link_than_any_other() {
             ("b", &[("a", "crank"), ("b", "rod")][..]),
             ("c", &[("a", "crank"), ("b", "rod")][..]),
         ] {
-            let seg = |id: &str| {
-                let p = path(&svg, &format!("link-{id}-{suffix}"));
-                Seg(p[0], p[p.len() - 1])
-            };
+            let seg = |id: &str| run(&path(&svg, &format!("link-{id}-{suffix}")));
             let segs: Vec<(&str, Seg)> = links.iter().map(|&(l, id)| (l, seg(id))).collect();
             for (letter, own) in &segs {
                 let id = format!("label-link-{letter}-{suffix}");
@@ -322,8 +329,7 @@ fn the_frame_is_never_hidden_along_a_moving_link() {
     let mut checked = 0;
     for (rod, offset, deg) in ENGINES.into_iter().chain(THROUGH_BEARING) {
         let svg = svg(FIG, rod, offset, deg);
-        let frame = path(&svg, "link-frame-a");
-        let d = Seg(frame[0], frame[frame.len() - 1]);
+        let d = run(&path(&svg, "link-frame-a"));
         for id in ["crank", "rod", "lever"] {
             let p = path(&svg, &format!("link-{id}-a"));
             let (s, t) = (p[0], p[p.len() - 1]);
@@ -346,6 +352,59 @@ fn the_frame_is_never_hidden_along_a_moving_link() {
         }
     }
     assert!(checked > 0, "no link checked");
+}
+
+/// Where (a)'s lever c leaves O_cd 11° off the line C O_cd (l = 1.42 r,
+/// e = 0.255 r, 180°), with its neighbours.
+const LEVER_BY_D: [(f64, f64, f64); 7] = [
+    (1.42, 0.255, 180.0),
+    (1.42, 0.255, 179.0),
+    (1.42, 0.255, 181.0),
+    (1.37, 0.255, 180.0),
+    (1.47, 0.255, 180.0),
+    (1.42, -0.255, 180.0),
+    (1.5, 0.0, 50.0),
+];
+
+#[test]
+fn the_frame_ends_at_its_pins_not_on_a_moving_link() {
+    // At l = 1.42 r, e = 0.255 r, 180° the lever c leaves O_cd 11° off
+    // the line C O_cd, along it over more than a pin's width, and d was
+    // drawn 7 units beside that line, straight: its end met the crank a
+    // halfway along, short of C's pin (as at l = 1.1 r, 180°, the lever
+    // folded along d). Each end of d lies at a pin (C's or O_cd's), or
+    // else clear of every moving link.
+    const PIN: f64 = 4.2;
+    let mut checked = 0;
+    for (rod, offset, deg) in ENGINES.into_iter().chain(THROUGH_BEARING).chain(LEVER_BY_D) {
+        let svg = svg(FIG, rod, offset, deg);
+        let centre = |id: &str| {
+            let at = |k: &str| {
+                crate::common::attr(&svg, id, k)
+                    .unwrap()
+                    .parse::<f64>()
+                    .unwrap()
+            };
+            (at("cx"), at("cy"))
+        };
+        let pins = [centre("pin-C-a"), centre("point-O-cd-a")];
+        let frame = path(&svg, "link-frame-a");
+        for end in [frame[0], frame[frame.len() - 1]] {
+            checked += 1;
+            if pins.iter().any(|p| (end.0 - p.0).hypot(end.1 - p.1) <= PIN) {
+                continue;
+            }
+            for id in ["crank", "rod", "lever"] {
+                let p = path(&svg, &format!("link-{id}-a"));
+                let d = segment_distance(end, p[0], p[p.len() - 1]);
+                assert!(
+                    d > 2.6,
+                    "l = {rod}, e = {offset}, {deg}°: the frame d ends {d:.1} from the {id}, off its pins"
+                );
+            }
+        }
+    }
+    assert!(checked > 0, "no end of d checked");
 }
 
 /// Long rods (l, e, θ at r = 1) and page widths where the crank a of

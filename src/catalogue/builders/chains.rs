@@ -9,11 +9,11 @@
 //! the cylindric chain; (c) is today's engine. The slot radius is
 //! [`slot_radius`] of the mechanism.
 
-use super::{Ctx, Sheet, short};
+use super::{Ctx, Sheet, crank_detail, short};
 use crate::chain::{ChainCentres, CylindricChain, QuadricPose};
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Result};
-use crate::figure::{Align, Figure, Foot, Item, Part, RichText, Role, Shape, TextSize};
+use crate::figure::{Align, Figure, Foot, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, segment_distance, unit};
 use crate::number::plain;
 use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Seg, Slot};
@@ -204,7 +204,7 @@ impl Layout {
         let height = y1 - y0;
         // Room about each panel's drawing: at 0.12 the default engine
         // (l = 3 r) drew its crank 39.9 units long, under the least a
-        // link is drawn (CRANK_LEAST), and got a detail that enlarged it
+        // link is drawn (crank_detail::CRANK_SEEN), and got a detail that enlarged it
         // ×1.5.
         let pad = 0.11 * width.max(height);
         let gap = 0.5 * pad;
@@ -278,10 +278,10 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         clear + CAPTION_LINE * (captions.iter().map(Vec::len).max().unwrap_or(1) - 1) as f64;
     let mut centres = serde_json::Map::new();
     let captions_end = rect.max().y + 6.0 + extra;
-    // A crank drawn shorter than CRANK_LEAST (a long rod: the lever, the
+    // A crank drawn shorter than CRANK_SEEN (a long rod: the lever, the
     // frame and the slot's radius are as long as the rod) is enlarged in
     // a detail below each panel, which letters it.
-    let enlarged = chains.m.crank() * map.scale() < CRANK_LEAST;
+    let enlarged = crank_detail::too_short(chains.m.crank() * map.scale());
     let mut details = Vec::new();
     for (k, suffix) in ["-a", "-b", "-c"].into_iter().enumerate() {
         let dx = Vector::new(k as f64 * layout.step, 0.0);
@@ -335,27 +335,9 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     Ok(sheet.finish())
 }
 
-/// The page length under which the crank a of each panel is enlarged
-/// in a detail below it: at l = 53 r it was a speck of two pin circles,
-/// its letter naming nothing seen.
-const CRANK_LEAST: f64 = 40.0;
-
 /// The crank's radius in its detail, page units, at least (as near as a
 /// narrow page's panel allows): a crank's length and a little more.
 const CRANK_ENLARGED: f64 = 44.0;
-
-/// The least of the round magnifications (the crank details' steps
-/// times a power of ten) not below `x` (positive and finite).
-fn round_above(x: f64) -> Option<f64> {
-    if !(x > 0.0 && x.is_finite()) {
-        return None;
-    }
-    let decade = 10f64.powf(x.log10().floor());
-    (super::coriolis::FINE_STEPS.iter())
-        .chain(&[10.0])
-        .map(|m| m * decade)
-        .find(|m| *m >= x * (1.0 - 1e-12))
-}
 
 /// A crank detail's reach about the crank centre, in cranks: the crank
 /// circle, B's pin on it and a little paper.
@@ -392,7 +374,7 @@ fn crank_detail(
     // across it.
     let side = w.min(DETAIL_SIZE.1 - crate::diagram::CAPTION);
     let most = side / (2.0 * DETAIL_REACH * r);
-    let magnification = round_above(CRANK_ENLARGED / r)
+    let magnification = crank_detail::round_above(CRANK_ENLARGED / r, &super::coriolis::FINE_STEPS)
         .filter(|m| *m <= most)
         .unwrap_or_else(|| super::coriolis::round_below(most, &super::coriolis::FINE_STEPS))
         .max(1.0);
@@ -470,16 +452,7 @@ fn panel(
     let c = Point::origin() + dx;
     let r = chains.m.crank();
     // The crank circle and the crank in every panel.
-    s.with_part(Part::CrankCircle, |s| {
-        s.push(
-            "circle-crank",
-            Role::Curve,
-            Shape::Circle {
-                centre: c,
-                radius: r,
-            },
-        );
-    });
+    crank_detail::crank_circle(s, c, r);
     let (b, a, key) = match k {
         0 => {
             let q = &chains.quadric;
@@ -542,9 +515,14 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
     // onto d), hatched on its far side.
     let frame = match beside(s, (c, o), &avoid) {
         Some(n) => {
+            // Beside the line over its length, and turned in to the pins
+            // at its ends: a link ends at its pins (run straight beside
+            // the line, its end met the crank halfway along at l =
+            // 1.1 r, 180°, short of C's pin).
             let shift = n * s.world(FRAME_BESIDE);
-            let frame = (c + shift, o + shift);
-            s.link("frame", vec![frame.0, frame.1]);
+            let along = unit(o - c).map_or(Vector::zeros(), |u| u * s.world(FRAME_JOG));
+            let frame = (c + shift + along, o + shift - along);
+            s.link("frame", vec![c, frame.0, frame.1, o]);
             s.hatch_edge_of_at_least("frame", frame, &[n], &avoid, ends, 1);
             frame
         }
@@ -671,6 +649,10 @@ fn slot_panel(
 /// where a moving link lies along it: a link's width and a little paper
 /// between the two, the pins at C and O_cd touching d.
 const FRAME_BESIDE: f64 = 7.0;
+/// How far along the line C O_cd (page units) the frame d drawn beside
+/// it turns in to the pin at each end: twice [`FRAME_BESIDE`], a slope
+/// that reads as a bend, not a step.
+const FRAME_JOG: f64 = 2.0 * FRAME_BESIDE;
 /// A moving link nearer the line C O_cd than this (page units: a link's
 /// width and a little paper)…
 const LYING_NEAR: f64 = 5.0;

@@ -4,7 +4,7 @@
 //! which draws the ovals a few units tall and the crank a speck, adds a
 //! detail of each oval and of the crank below the drawing.
 
-use super::{Ctx, PER_DEGREE, Sheet, short};
+use super::{Ctx, PER_DEGREE, Sheet, crank_detail, short};
 use crate::angle::Angle;
 use crate::construct::CouplerPoint;
 use crate::diagram::{Curve, Plot};
@@ -205,7 +205,7 @@ fn drawing(ctx: &Ctx, height: f64) -> Result<Figure> {
 /// The least a long rod's ovals are drawn tall, and its crank long, on
 /// the page, page units (in the main view or a detail): at l = 30 r the
 /// ovals were a few units tall, the crank a speck with C's letter at B.
-const SEEN: f64 = 40.0;
+const SEEN: f64 = crank_detail::CRANK_SEEN;
 /// What a detail draws them at, at least, page units: [`SEEN`] and a
 /// little more.
 const ENLARGED: f64 = 46.0;
@@ -222,19 +222,14 @@ const WINDOW_GAP: f64 = 12.0;
 type Subject = ((Point, Point), f64);
 
 /// The magnification steps (times a power of ten).
-const STEPS: [f64; 9] = [1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
+const STEPS: [f64; 9] = super::coriolis::FINE_STEPS;
 
 /// The least of the round [`STEPS`] times a power of ten not below `x`
 /// (at least 1).
 fn round_above(x: f64) -> f64 {
-    if !(x > 1.0 && x.is_finite()) {
-        return 1.0;
-    }
-    let decade = 10f64.powf(x.log10().floor());
-    (STEPS.iter().chain(&[10.0]))
-        .map(|m| m * decade)
-        .find(|m| *m >= x * (1.0 - 1e-12))
-        .unwrap_or(x)
+    crank_detail::round_above(x, &STEPS)
+        .filter(|_| x > 1.0)
+        .unwrap_or(1.0)
 }
 
 /// Where the main view (its map `t`) draws the crank shorter than
@@ -272,7 +267,7 @@ fn details(
         })
         .collect();
     let least = (ovals.iter()).map(|(lo, hi)| hi.y - lo.y).fold(r, f64::min) * scale;
-    if least.is_nan() || least >= SEEN {
+    if !crank_detail::too_short(least) {
         return Ok(Vec::new());
     }
     // The subjects: the crank circle about C, then each oval; the length
@@ -404,7 +399,7 @@ fn draw_window(
     k: usize,
     (map, seen): (&crate::figure::PageFromWorld, Frame),
 ) -> Result<()> {
-    use crate::figure::{Foot, Part, TextSize};
+    use crate::figure::{Foot, TextSize};
     use crate::scene::Canvas;
     let m = ctx.mechanism;
     let pose = ctx.pose();
@@ -417,16 +412,7 @@ fn draw_window(
     });
     match k.checked_sub(1).and_then(|j| POINTS.get(j)) {
         None => {
-            s.with_part(Part::CrankCircle, |s| {
-                s.push(
-                    "circle-crank",
-                    Role::Curve,
-                    Shape::Circle {
-                        centre: c,
-                        radius: m.crank(),
-                    },
-                );
-            });
+            crank_detail::crank_circle(&mut s, c, m.crank());
             s.link("crank", vec![c, b]);
             s.link("rod", vec![b, a]);
             // Below the shaft unless the crank points down the page.

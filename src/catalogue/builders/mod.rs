@@ -12,6 +12,7 @@ pub(super) mod chains;
 pub(super) mod convergence;
 pub(super) mod coriolis;
 pub(super) mod coupler;
+pub(super) mod crank_detail;
 pub(super) mod cranks;
 pub(super) mod flywheel;
 pub(super) mod forces;
