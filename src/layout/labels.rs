@@ -664,6 +664,37 @@ pub(crate) struct Steer<'a> {
     /// the way from a′_d, across the side o′c′, while a place beside it
     /// to its left was clear.
     pub near_first: bool,
+    /// The farthest (page units) a place on the rings may stand from
+    /// the anchor, box to anchor, if any: a point's letter, read with its
+    /// point within 1.5 em. A wide letter ("*A*, *D*", a joint letter of
+    /// points that coincide) tried on a diagonal stands farther out than
+    /// a narrow one on the same ring; it is drawn in to this.
+    pub farthest: Option<f64>,
+}
+
+/// The place along the unit page `u` from `anchor`, `out` units out to
+/// the centre of a box of half-size `half`, drawn in towards the anchor
+/// until the box stands no farther than `farthest` from it.
+fn drawn_in(anchor: Point, u: Vector, out: f64, half: Vector, farthest: Option<f64>) -> Point {
+    let apart = |t: f64| {
+        let (x, y) = ((t * u.x).abs() - half.x, (t * u.y).abs() - half.y);
+        x.max(0.0).hypot(y.max(0.0))
+    };
+    let Some(most) = farthest.filter(|m| apart(out) > *m) else {
+        return anchor + u * out;
+    };
+    // The distance grows with t: halve the span down to a hundredth of
+    // a unit.
+    let (mut lo, mut hi) = (0.0, out);
+    while hi - lo > 0.01 {
+        let mid = 0.5 * (lo + hi);
+        if apart(mid) > most {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    anchor + u * lo
 }
 
 /// How much nearer (page units) another point may be to a letter's box
@@ -780,6 +811,7 @@ pub(crate) fn place_toward(
         dimensions,
         led,
         near_first,
+        farthest,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
@@ -846,7 +878,8 @@ pub(crate) fn place_toward(
                 true => 1.5 * extra + 0.05 * k as f64,
                 false => 0.05 * k as f64,
             };
-            consider(&near, &mut best, anchor + u * reach, penalty);
+            let at = drawn_in(anchor, u, reach, half, farthest);
+            consider(&near, &mut best, at, penalty);
             if best.1 < 1.0 && (!near_first || k == 0) {
                 return (best.2, best.1);
             }
@@ -860,7 +893,7 @@ pub(crate) fn place_toward(
             consider(
                 &near,
                 &mut best,
-                anchor + u * reach,
+                drawn_in(anchor, u, reach, half, farthest),
                 1.5 * extra + 0.05 * k as f64,
             );
         }

@@ -55,6 +55,13 @@ const SMALL_FRAME_EMS: f64 = 4.0;
 /// italic letter's ink sits inside its advance, less a margin.
 const REACH: f64 = 1.3;
 
+/// The farthest a point's letter stands from its point on the rings, in
+/// font sizes, glyphs to point: a reader takes a letter within an em and
+/// a half for its point's. The box, measured on the ink with [`ROOM`]
+/// about it, keeps a unit inside that more, for the glyphs' side
+/// bearings.
+const LETTER_FARTHEST: f64 = 1.5;
+
 /// How far, in font sizes, a name or a value (not a point's letter) looks
 /// for a clear place when none within [`REACH`] is: first within 2.5 em,
 /// then within 4 (a value names what it gives, "l = 1.05 r", and reads
@@ -551,6 +558,8 @@ impl PanelLayout<'_> {
                                 dimensions: &self.dimensions,
                                 led: None,
                                 near_first: p.letter && p.along.is_empty() && p.line.is_none(),
+                                farthest: (p.letter && p.along.is_empty() && p.line.is_none())
+                                    .then_some(LETTER_FARTHEST * p.size - 2.0 * ROOM),
                             },
                             &self.obstacles,
                             room,

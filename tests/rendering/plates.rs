@@ -66,6 +66,12 @@ const RULE_PILE: &str = "13 polygon letters apart";
 /// px, each lettered). Farther apart, each keeps its own letter.
 const PILE: f64 = 6.0;
 const RULE_VALUE: &str = "14 a link's value nearest its link";
+const RULE_TOGETHER: &str = "15 coinciding points lettered together";
+/// Two named points coincide on the page when their markers' centres
+/// stand closer than this, px: a dot inside a pin (4.2 px) or two dots
+/// (2.1 px) run into one place, and one letter names them all ("A, D"
+/// at a dead centre). Two pins, each a part drawn, keep their letters.
+const TOGETHER: f64 = PILE;
 /// The values that name a link's length, each with the link it names.
 const LINK_VALUES: [(&str, &str); 2] = [("value-r", "link-crank"), ("value-l", "link-rod")];
 
@@ -886,6 +892,108 @@ fn polygon_letters_pile(plate: &Plate) -> Vec<Failure> {
     out
 }
 
+/// The names a letter's text gives, a joint letter's ("A, D") each.
+fn names_in(svg: &str, id: &str) -> Vec<String> {
+    let Some(start) = svg.find(&format!("id=\"{id}\"")) else {
+        return Vec::new();
+    };
+    let body = &svg[start..];
+    let (Some(open), Some(close)) = (body.find('>'), body.find("</text>")) else {
+        return Vec::new();
+    };
+    let text = common::read_text(&body[open + 1..close]);
+    text.split(',').map(|w| w.trim().to_string()).collect()
+}
+
+/// Whether `name` is a point's name this rule holds to: upper-case
+/// letters alone (the polygons' images are held by rule 13, the ghost
+/// poses' numbered points are lettered by their own).
+fn named_point(name: &str) -> bool {
+    name.chars().next().is_some_and(char::is_uppercase) && name.chars().all(char::is_alphabetic)
+}
+
+/// Whether the point `name` at `at` on the main view `panel` lies inside
+/// the detail's frame and the detail names it, by its own letter or in
+/// a joint one.
+fn named_in_detail(plate: &Plate, panel: &Panel, svg: &str, name: &str, at: Pt) -> bool {
+    let frame = (panel.strokes.iter()).find(|s| s.id == "detail-frame");
+    let ends = frame
+        .iter()
+        .flat_map(|s| s.segs.iter().flat_map(|g| [g.0, g.1]));
+    let inside = Rect::around(ends).is_some_and(|r| r.distance_to(at) == 0.0);
+    let detail = plate.panels.iter().find(|p| p.prefix == "detail-");
+    inside
+        && detail.is_some_and(|d| {
+            (d.labels.iter()).any(|l| {
+                l.id == format!("detail-label-{name}")
+                    || names_in(svg, &l.id).iter().any(|n| n == name)
+            })
+        })
+}
+
+/// Rule 15: named points that coincide on the main view (within
+/// [`TOGETHER`] of a marker there, not two pins) are lettered once,
+/// jointly: no two such markers each with its own letter, and a point
+/// of the metadata at such a marker without a marker or letter of its
+/// own is named in that marker's letter ("A, D": D is A).
+fn points_together(plate: &Plate, svg: &str) -> Vec<Failure> {
+    let mut out = Vec::new();
+    let Some(panel) = plate.panels.iter().find(|p| p.prefix.is_empty()) else {
+        return out;
+    };
+    let pin = |letter: &str| {
+        let id = format!("point-{letter}");
+        (plate.ink.iter()).any(|(i, r)| *i == id && r.x1 - r.x0 > 3.0 * 2.1)
+    };
+    let labelled = |letter: &str| {
+        panel
+            .labels
+            .iter()
+            .any(|l| l.id == format!("label-{letter}"))
+    };
+    let apart = |p: Pt, q: Pt| (p.0 - q.0).hypot(p.1 - q.1);
+    let mut markers: Vec<(&String, Pt)> = (panel.markers.iter())
+        .filter(|(l, _)| named_point(l))
+        .map(|(l, &p)| (l, p))
+        .collect();
+    markers.sort_by(|a, b| a.0.cmp(b.0));
+    for (i, (p, at)) in markers.iter().enumerate() {
+        for (q, bt) in &markers[i + 1..] {
+            let d = apart(*at, *bt);
+            if d < TOGETHER && !(pin(p) && pin(q)) && labelled(p) && labelled(q) {
+                out.push(fail(
+                    RULE_TOGETHER,
+                    format!("{p} and {q} {d:.1} px apart, each lettered"),
+                ));
+            }
+        }
+    }
+    let page = plate.page();
+    for (name, world) in &plate.world_points {
+        if !named_point(name) || panel.markers.contains_key(name) || labelled(name) {
+            continue;
+        }
+        let at = plate.point(panel, name).unwrap_or(*world);
+        if page.distance_to(at) > 0.0 {
+            continue;
+        }
+        let near: Vec<&(&String, Pt)> = (markers.iter())
+            .filter(|(_, m)| apart(at, *m) < TOGETHER)
+            .collect();
+        let named = near.iter().any(|(m, _)| {
+            names_in(svg, &format!("label-{m}")).contains(name)
+                || lettered_in_detail(plate, panel, m, at)
+        }) || named_in_detail(plate, panel, svg, name, at);
+        if !near.is_empty() && !named {
+            out.push(fail(
+                RULE_TOGETHER,
+                format!("{name} at {} is not named in its letter", near[0].0),
+            ));
+        }
+    }
+    out
+}
+
 // ---------------------------------------------------------------- the sweep
 
 /// The mechanism figures, and the diagrams that draw the mechanism.
@@ -1000,6 +1108,7 @@ fn inspect(
             found.extend(arrows_along_links(&plate));
             found.extend(fixed_link_unhatched(&plate, &svg, figure));
             found.extend(polygon_letters_pile(&plate));
+            found.extend(points_together(&plate, &svg));
             found
         }
         Err(e) => vec![fail(RULE_BUILD, e.to_string())],
@@ -3143,4 +3252,71 @@ fn two_equal_angles_at_a_vertex_take_two_arcs() {
             "l = {rod}, e = {offset}: φ's arc at {phi:.1}, β's at {beta:.1}"
         );
     }
+}
+
+/// The engines where coinciding points were lettered apart or not at all
+/// (figure, r, l, e, crank angle): D at A's pin lettered by the block's
+/// edge and E at C unlettered at the dead centres; Ritterhaus's E, F
+/// and K at B's pin near 90°, each lettered, or hidden under it.
+const TOGETHER_ENGINES: [(&str, f64, f64, f64, f64); 14] = [
+    ("fig-63-velocity", 1.0, 1.05, 0.0, 0.0),
+    ("fig-63-velocity", 1.0, 1.05, 0.0, 180.0),
+    ("fig-61-centrodes", 0.5, 27.6, 0.0, 0.0),
+    ("fig-62-displacement", 0.5, 35.5, 0.0, 90.55),
+    ("fig-64-velocity-diagrams", 1.0, 1.05, 0.0, 0.0),
+    ("fig-65-klein", 1.0, 1.05, 0.0, 180.0),
+    ("fig-67-example", 1.0, 1.05, 0.0, 0.0),
+    ("ng-fig-a1-velocity", 25.0, 72.0, 0.0, 180.0),
+    ("ritterhaus-construction", 1.0, 1.08, 0.0, 90.27),
+    ("ritterhaus-construction", 1.0, 1.08, 0.0, 0.0),
+    ("fig-66-kisch", 1.0, 1.02, 0.0, 90.39),
+    ("fig-65-klein", 1.0, 1.09, 0.0, 89.8),
+    ("bennett-construction", 1.0, 1.07, 0.0, 0.0),
+    ("ng-fig-1-torque", 1.0, 2.25, -0.662, 180.0),
+];
+
+#[test]
+fn coinciding_points_are_lettered_together() {
+    let failures: Vec<String> = common::in_threads(&TOGETHER_ENGINES, |&(f, r, l, e, deg)| {
+        let m = (
+            format!("r={r} l={l} e={e}"),
+            SliderCrank::new(r, l, e).unwrap(),
+        );
+        let o = inspect(f, &m, Some(Angle::deg(deg)));
+        (o.failures.iter())
+            .filter(|x| x.rule == RULE_TOGETHER)
+            .map(|x| format!("{f} {} at {deg}°: {}", m.0, x.ids))
+            .collect::<Vec<_>>()
+    })
+    .into_iter()
+    .flatten()
+    .collect();
+    assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn coinciding_points_lettered_apart_or_unnamed_are_caught() {
+    let together = |svg: &str| points_together(&Plate::read(svg), svg).len();
+    // D's dot at A's pin, each lettered.
+    let apart = r##"<circle id="point-P" class="link" cx="200" cy="60" r="4.2" fill="#fff" stroke="#000" stroke-width="1.3"/>
+<circle id="point-D" class="construction" cx="201" cy="60" r="2.1"/>
+<text id="label-P" class="label" x="186" y="52" font-size="17">P</text>
+<text id="label-D" class="label" x="216" y="52" font-size="17">D</text>"##;
+    assert_eq!(together(&clean_with(apart)), 1);
+    // One letter naming both reads as a book's "P, D".
+    let joint = r##"<circle id="point-P" class="link" cx="200" cy="60" r="4.2" fill="#fff" stroke="#000" stroke-width="1.3"/>
+<text id="label-P" class="label" x="196" y="48" font-size="17">P, D</text>"##;
+    assert_eq!(together(&clean_with(joint)), 0);
+    // D of the metadata at P's pin, drawn by neither marker nor letter
+    // of its own, is named in P's letter, or the rule fails.
+    let svg = |letter: &str| {
+        let pin = r##"<circle id="point-P" class="link" cx="200" cy="60" r="4.2" fill="#fff" stroke="#000" stroke-width="1.3"/>"##;
+        let text = format!(
+            r##"<text id="label-P" class="label" x="196" y="48" font-size="17">{letter}</text>"##
+        );
+        let body = mechanism_with_guide_to(CLEAN_MECHANISM_END) + pin + &text;
+        page(&body, NOTE, r#""D":[200.5,60]"#)
+    };
+    assert_eq!(together(&svg("P")), 1);
+    assert_eq!(together(&svg("P, D")), 0);
 }
