@@ -457,6 +457,9 @@ impl Canvas {
     /// drawn.
     fn letter_together(&mut self) {
         let marked = std::mem::take(&mut self.marked);
+        if !self.joins() {
+            return;
+        }
         let pin = |m: &(String, Point, Marker)| m.2 == Marker::Pin;
         let groups = crowds(
             &marked,
@@ -503,6 +506,14 @@ impl Canvas {
                 *text = joint;
             }
         }
+    }
+
+    /// Whether points that coincide on the page are lettered together
+    /// ([`Canvas::letter_together`]): on a main view, not in a detail,
+    /// whose enlargement sets them apart, and whose narrow frame has no
+    /// room for a joint letter beside a pin the lines leave every way.
+    pub(crate) fn joins(&self) -> bool {
+        self.edge_arrows
     }
 
     /// The world direction from the nearest of `others` (other than `p`)
