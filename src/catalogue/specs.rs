@@ -487,11 +487,12 @@ figures! {
         takes: &[MECH, Speed, Angle, Style, Font],
     },
     /// The crank and slotted lever's tool: its velocity and acceleration
-    /// against θ over the cutting and return strokes, the time ratio.
+    /// against the driver's turn over the cutting and return strokes, the
+    /// time ratio.
     QuickReturnSlottedLever => FigureSpec {
         name: "quick-return-slotted-lever",
         source: Book("§34, the third inversion of the chain of Fig. 60 (the crank and slotted lever quick return): the tool’s motion over its strokes, as a course in the kinematics of machines works it (docs/quick-return.md); not drawn in the chapter"),
-        caption: "The crank and slotted lever (r = 0.5, l = 1.5, the arm L = l + r) at 250 rpm: the tool’s velocity and acceleration against θ over the cutting stroke (full) and the quicker return (dashed), the strokes ending at θ = 90° and 270°; time ratio 1.552.",
+        caption: "The crank and slotted lever (r = 0.5, l = 1.5, the arm L = l + r) at 250 rpm: the tool’s velocity and acceleration against the driver’s turn, which is time, over the cutting stroke (full, 218.9°) and the quicker return (dashed, 141.1°), the strokes ending at θ = 90° and 270°; time ratio 1.552.",
         mechanism: CHAIN,
         at: Crank(60.0),
         page: (760.0, 700.0),
@@ -499,11 +500,12 @@ figures! {
         takes: &[MECH, Speed, Angle, Style, Font],
     },
     /// Whitworth's quick return's tool: its velocity and acceleration
-    /// against θ over the cutting and return strokes, the time ratio.
+    /// against the driver's turn over the cutting and return strokes, the
+    /// time ratio.
     QuickReturnWhitworth => FigureSpec {
         name: "quick-return-whitworth",
         source: Book("§34, the second inversion of the chain of Fig. 60 (Whitworth’s quick return): the tool’s motion over its strokes, as a course in the kinematics of machines works it (docs/quick-return.md); not drawn in the chapter"),
-        caption: "Whitworth’s quick return (r = 0.5, l = 1.5, the arm L = l + r) at 250 rpm of the rod: the tool’s velocity and acceleration against θ over the cutting stroke (full) and the quicker return (dashed), the strokes ending at θ = 90° and 270°; time ratio 1.552.",
+        caption: "Whitworth’s quick return (r = 0.5, l = 1.5, the arm L = l + r) at 250 rpm of the rod: the tool’s velocity and acceleration against the driver’s turn, which is time, over the cutting stroke (full, 218.9°) and the quicker return (dashed, 141.1°), the strokes ending at θ = 90° and 270°; time ratio 1.552.",
         mechanism: CHAIN,
         at: Crank(60.0),
         page: (760.0, 700.0),

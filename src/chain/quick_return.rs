@@ -16,9 +16,11 @@
 //! moves the + way on its cutting stroke (the driver turning
 //! counter-clockwise) and the − way on its return.
 //!
-//! The strokes end where d is square to the line of centres: at θ = 90°
-//! and 270° in both inversions (θ the crank a against the frame d, as
-//! everywhere), whatever the offset. The driver (the crank a about B in
+//! The strokes end where d stops turning against the fixed link, square
+//! to the crank a: at θ = 90° and 270° in both inversions (θ the crank a
+//! against the frame d, as everywhere), whatever the offset. In inversion
+//! 2 the crank is the fixed link, so d is then square to the line of
+//! centres; in inversion 3 d is tangent to the crank pin's circle. The driver (the crank a about B in
 //! inversion 3, the rod b about B in inversion 2) turns through
 //! π + φ(270°) − φ(90°) between them one way (the return, through
 //! θ = 180°) and the rest of its turn the other (the cutting stroke): in

@@ -616,6 +616,9 @@ fn past_a_half_turn_each_crank_keeps_its_name_and_its_angle_runs_the_way_it_turn
         ((1.0, 2.76, -1.03), 90.82),
         ((1.0, 1.08, 0.0), 270.72),
         ((1.0, 1.1, 0.0), 269.26),
+        ((1.0, 58.7, 0.0), 270.17),
+        ((1.0, 2.0, 0.0), 120.0),
+        ((1.0, 2.0, 0.5), 180.0),
     ] {
         let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
         for (name, angle) in [("primary", deg), ("secondary", 2.0 * deg)] {
@@ -623,16 +626,30 @@ fn past_a_half_turn_each_crank_keeps_its_name_and_its_angle_runs_the_way_it_turn
             let d = world_arrow(&svg, &panel, &format!("force-{name}-direct"));
             let v = world_arrow(&svg, &panel, &format!("force-{name}-reverse"));
             let text = world_text(&svg, &panel, &format!("value-{name}-direct"));
+            // (Two cranks within 5° of the line of stroke lie together:
+            // either name stands by both.)
+            let half = angle.rem_euclid(180.0);
+            let apart = half > 5.0 && half < 175.0;
             assert!(
-                to_arrow(text, d) < to_arrow(text, v),
+                !apart || to_arrow(text, d) < to_arrow(text, v),
                 "{name} at {deg}°: \"direct\" nearer the reverse crank"
             );
             // The direct crank's angle is swept from the stroke the way
-            // the crank turns: its letter stands by the middle of that
-            // sweep, the reverse's by the middle of the other.
-            let sweep = angle.rem_euclid(360.0);
-            if !(5.0..=355.0).contains(&sweep) {
+            // the crank turns up to 185°, past that the short way round
+            // (named θ − 360°: two arcs of more than half a turn overlap
+            // where their letters stand); its letter stands by the middle
+            // of that sweep, the reverse's by the middle of the other.
+            let turn = angle.rem_euclid(360.0);
+            let sweep = if turn > 185.0 { turn - 360.0 } else { turn };
+            if sweep.abs() < 5.0 || (turn - 180.0).abs() <= 5.0 {
                 continue;
+            }
+            let text = read_text(&svg);
+            let written = if name == "primary" { "θ" } else { "2θ" };
+            if turn > 185.0 {
+                for w in [format!("{written} − 360°"), format!("360° − {written}")] {
+                    assert!(text.contains(&w), "{name} at {deg}°: no {w}");
+                }
             }
             for (id, middle) in [("direct", 0.5 * sweep), ("reverse", -0.5 * sweep)] {
                 let (x, y) = world_text(&svg, &panel, &format!("label-{name}-{id}"));
@@ -643,6 +660,35 @@ fn past_a_half_turn_each_crank_keeps_its_name_and_its_angle_runs_the_way_it_turn
                 );
             }
         }
+    }
+}
+
+#[test]
+fn the_sum_on_the_line_of_stroke_is_drawn_to_its_own_scale() {
+    // Near 90° at long rods the primary, the secondary and the exact force
+    // are a few hundredths of m r ω²: drawn to the cranks' scale they were
+    // dots under their heads. The longest of them spans a good part of
+    // panel (c) at every pose, its shaft read from the SVG.
+    for ((r, l, e), deg) in [
+        ((1.0, 58.7, 0.0), 89.33),
+        ((1.0, 58.7, 0.0), 270.17),
+        ((1.0, 42.6, 0.0), 89.42),
+        ((1.0, 3.0, 0.0), 30.0),
+        ((1.0, 1.08, 0.0), 0.0),
+    ] {
+        let svg = svg(FigureName::DirectReverseCranks, (r, l, e), deg);
+        let longest = ["primary", "secondary", "exact"]
+            .iter()
+            .filter(|id| svg.contains(&format!("id=\"force-sum-{id}\"")))
+            .map(|id| {
+                let (a, b) = arrow(&svg, &format!("force-sum-{id}"));
+                (b.0 - a.0).hypot(b.1 - a.1)
+            })
+            .fold(0.0, f64::max);
+        assert!(
+            longest > 100.0,
+            "l = {l}, {deg}°: the longest arrow {longest:.1} long"
+        );
     }
 }
 

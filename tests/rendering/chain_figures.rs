@@ -3,7 +3,8 @@
 //! by another link, two links lying along one another with their letters
 //! side by side over one line, O_cd's letter loose from its arrow, the
 //! slot's middle line run on past its guides along the rod, the block over
-//! the crank's bearing unremarked.
+//! the crank's bearing unremarked, a rod run through the crank centre's
+//! ground mark.
 
 use super::polygon_figures::{path, svg, text_centre};
 use crate::common::{group_path, read_text, segment_distance};
@@ -218,4 +219,131 @@ fn a_block_over_the_crank_centre_is_noted() {
             "l = {rod}, e = {offset}, {deg}°: the block over C {over}, noted {noted}"
         );
     }
+}
+
+/// Engines where a link ran through a bearing's pedestal or base (l, e, θ
+/// at r = 1): the rod just under the crank centre, the crank pointing
+/// straight down, the rod folded back onto the crank.
+const THROUGH_BEARING: [(f64, f64, f64); 8] = [
+    (1.97, -0.484, 180.0),
+    (1.97, -0.484, 179.0),
+    (1.97, 0.484, 180.0),
+    (1.93, -0.484, 180.0),
+    (1.97, -0.484, 269.32),
+    (1.08, 0.0, 269.31),
+    (1.08, 0.0, 180.0),
+    (2.5, -0.5, 181.0),
+];
+
+/// The strokes of the group `id` (each path's pieces from one `M` to the
+/// next), page units; empty where there is no such group.
+fn group_strokes(svg: &str, id: &str) -> Vec<((f64, f64), (f64, f64))> {
+    let Some(at) = svg.find(&format!("id=\"{id}\"")) else {
+        return Vec::new();
+    };
+    let end = at + svg[at..].find("</g>").expect("group closed");
+    let mut strokes = Vec::new();
+    for d in svg[at..end].split(" d=\"").skip(1) {
+        let d = &d[..d.find('"').expect("d closed")];
+        for piece in d.split('M') {
+            let numbers: Vec<f64> = piece
+                .split(|c: char| c == 'L' || c == 'Z' || c.is_whitespace())
+                .filter_map(|w| w.parse().ok())
+                .collect();
+            let points: Vec<(f64, f64)> = numbers.chunks(2).map(|p| (p[0], p[1])).collect();
+            strokes.extend(points.windows(2).map(|w| (w[0], w[1])));
+        }
+    }
+    strokes
+}
+
+#[test]
+fn no_link_runs_through_a_bearing() {
+    // At l = 1.97 r, e = -0.484 r, 180° the rod b passed through the
+    // crank's pedestal and hatched base just under C in all three panels
+    // and read as pinned there; at 269.32° the crank a ran down through
+    // its own pedestal. A bearing turns to a side clear of the links: no
+    // link comes within a line's width of its ink away from the shaft's
+    // pin (the links leave the pin between its pedestal's sides).
+    let mut bearings = 0;
+    for (rod, offset, deg) in ENGINES.into_iter().chain(THROUGH_BEARING) {
+        let svg = svg(FIG, rod, offset, deg);
+        for (suffix, links) in [
+            ("a", &["crank", "rod", "lever"][..]),
+            ("b", &["crank", "rod"][..]),
+            ("c", &["crank", "rod"][..]),
+        ] {
+            let links: Vec<Seg> = (links.iter())
+                .map(|id| {
+                    let p = path(&svg, &format!("link-{id}-{suffix}"));
+                    Seg(p[0], p[p.len() - 1])
+                })
+                .collect();
+            for (bearing, pin) in [("C", "pin-C"), ("O-cd", "point-O-cd")] {
+                let strokes = group_strokes(&svg, &format!("bearing-{bearing}-{suffix}"));
+                if strokes.is_empty() {
+                    continue;
+                }
+                bearings += 1;
+                let pin = format!("{pin}-{suffix}");
+                let centre = (
+                    crate::common::num(&svg, &pin, "cx"),
+                    crate::common::num(&svg, &pin, "cy"),
+                );
+                for (p, q) in strokes {
+                    for k in 0..=20 {
+                        let t = f64::from(k) / 20.0;
+                        let x = (p.0 + (q.0 - p.0) * t, p.1 + (q.1 - p.1) * t);
+                        if (x.0 - centre.0).hypot(x.1 - centre.1) < 9.0 {
+                            continue;
+                        }
+                        for link in &links {
+                            let d = segment_distance(x, link.0, link.1);
+                            assert!(
+                                d > 1.5,
+                                "l = {rod}, e = {offset}, {deg}°: ({suffix}) a link {d:.1} from {bearing}'s bearing at {x:?}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(bearings > 0, "no bearing found to check");
+}
+
+#[test]
+fn the_frame_is_never_hidden_along_a_moving_link() {
+    // At l = 1.08 r, 269.31° (a)'s crank a pointed at O_cd and lay on the
+    // frame d, hidden in it, its pin read as a joint halfway along d; at
+    // 180° the lever c, folded onto d, merged with it. d is drawn beside
+    // the line C O_cd there: no moving link comes within 3 units of it
+    // over more than a pin's width.
+    let mut checked = 0;
+    for (rod, offset, deg) in ENGINES.into_iter().chain(THROUGH_BEARING) {
+        let svg = svg(FIG, rod, offset, deg);
+        let frame = path(&svg, "link-frame-a");
+        let d = Seg(frame[0], frame[frame.len() - 1]);
+        for id in ["crank", "rod", "lever"] {
+            let p = path(&svg, &format!("link-{id}-a"));
+            let (s, t) = (p[0], p[p.len() - 1]);
+            let length = (t.0 - s.0).hypot(t.1 - s.1);
+            let n = (length.ceil() as usize).max(1);
+            let near = (0..=n)
+                .map(|k| {
+                    let u = k as f64 / n as f64;
+                    (s.0 + (t.0 - s.0) * u, s.1 + (t.1 - s.1) * u)
+                })
+                .filter(|&x| segment_distance(x, d.0, d.1) < 3.0)
+                .count() as f64
+                * length
+                / n as f64;
+            checked += 1;
+            assert!(
+                near <= 10.0,
+                "l = {rod}, e = {offset}, {deg}°: the {id} lies along the frame d over {near:.1} units"
+            );
+        }
+    }
+    assert!(checked > 0, "no link checked");
 }

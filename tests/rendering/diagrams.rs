@@ -466,7 +466,10 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
             // The chain r = 0.5, l = 1.5, the arm L = l + r, the driver at
             // ω: the tool at s = L r sin θ / l (inversion 3, the driver
             // at χ = θ + φ) or −L sin θ (inversion 2, χ = −θ − φ), so
-            // ds/dt = ω s′/χ′ and d²s/dt² = ω² (s″χ′ − s′χ″)/χ′³ (′ = d/dθ).
+            // ds/dt = ω s′/χ′ and d²s/dt² = ω² (s″χ′ − s′χ″)/χ′³ (′ = d/dθ),
+            // drawn against the driver's turn since the cutting stroke
+            // began, at θ = 270° in inversion 3 and 90° in inversion 2
+            // (χ − χ there, a turn added past θ = 0 or on the return).
             let (r, l) = (0.5, 1.5);
             let arm = l + r;
             let slotted = name == FigureName::QuickReturnSlottedLever;
@@ -480,23 +483,32 @@ fn curves(name: FigureName) -> Vec<(String, Exact)> {
                 };
                 (w * s1 / c1, w * w * (s2 * c1 - s1 * c2) / c1.powi(3))
             };
+            let turn = move |t: f64, back: bool| {
+                let phi = |t: f64| engine(r, l, t).1.d(0);
+                let (raw, past) = if slotted {
+                    (t - 1.5 * PI + phi(t) - phi(1.5 * PI), t < PI)
+                } else {
+                    (0.5 * PI - t - phi(t) + phi(0.5 * PI), t > PI)
+                };
+                (raw + if back || past { 2.0 * PI } else { 0.0 }) / DEG
+            };
             let cutting = [(0.0, 0.5 * PI), (1.5 * PI, 2.0 * PI)];
             let back = [(0.5 * PI, 1.5 * PI)];
             add(
                 "curve-tool-velocity-cutting",
-                exact(move |t| (t / DEG, tool(t).0), &cutting),
+                exact(move |t| (turn(t, false), tool(t).0), &cutting),
             );
             add(
                 "curve-tool-velocity-return",
-                exact(move |t| (t / DEG, tool(t).0), &back),
+                exact(move |t| (turn(t, true), tool(t).0), &back),
             );
             add(
                 "curve-tool-acceleration-cutting",
-                exact(move |t| (t / DEG, tool(t).1), &cutting),
+                exact(move |t| (turn(t, false), tool(t).1), &cutting),
             );
             add(
                 "curve-tool-acceleration-return",
-                exact(move |t| (t / DEG, tool(t).1), &back),
+                exact(move |t| (turn(t, true), tool(t).1), &back),
             );
         }
         FigureName::CrankPinLoads => {
@@ -1069,13 +1081,6 @@ fn ng_fig_8_marks_the_measured_points_and_the_least_force() {
     assert!(tag(&svg, "point-measured-10").is_none());
     // The least F is where OM = −ds/dθ is greatest; β = 90° where
     // θ + φ = 90°: found here by bisection on the formulas.
-    let bisect = |f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64| {
-        for _ in 0..100 {
-            let m = 0.5 * (a + b);
-            if f(a) * f(m) <= 0.0 { b = m } else { a = m }
-        }
-        0.5 * (a + b)
-    };
     let least = bisect(&|t| engine(25.0, 72.0, t).0.d(2), 0.1, 3.0) / DEG;
     let right = bisect(&|t| 0.5 * PI - t - (25.0 * t.sin() / 72.0).asin(), 0.1, 3.0) / DEG;
     let meta = metadata(&svg);
@@ -1086,6 +1091,125 @@ fn ng_fig_8_marks_the_measured_points_and_the_least_force() {
     assert!(text.contains(&format!("θ = {least:.1}°")), "{least}");
     assert!(text.contains(&format!("θ = {right:.1}°")), "{right}");
     assert!((least - 72.6).abs() < 0.05 && (right - 70.9).abs() < 0.05);
+}
+
+/// A root of `f` between `a` and `b` (of opposite signs) by bisection.
+fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    for _ in 0..100 {
+        let m = 0.5 * (a + b);
+        if f(a) * f(m) <= 0.0 { b = m } else { a = m }
+    }
+    0.5 * (a + b)
+}
+
+#[test]
+fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
+    // At long rods the two are hundredths of a degree apart: the figure
+    // prints them to as many places as tell them apart, and says which
+    // comes first (found here by bisection on the formulas).
+    for (r, l) in [
+        (25.0, 72.0),
+        (1.0, 3.0),
+        (1.0, 36.8),
+        (1.0, 44.9),
+        (1.0, 60.0),
+    ] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(r, l, 0.0).unwrap());
+        let svg = to_svg(&FigureName::NgFig8Forces.figure(&options).unwrap());
+        let least = bisect(&|t| engine(r, l, t).0.d(2), 0.1, 3.0) / DEG;
+        let right = bisect(&|t| 0.5 * PI - t - (r * t.sin() / l).asin(), 0.1, 3.0) / DEG;
+        let text = read_text(&svg)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        let printed: Vec<(f64, i32)> = (text.split("θ = ").skip(1))
+            .filter_map(|t| {
+                let n = t.split('°').next()?;
+                let places = n.split('.').nth(1).map_or(0, str::len) as i32;
+                Some((n.parse().ok()?, places))
+            })
+            .collect();
+        let as_printed = |x: f64| -> Vec<f64> {
+            (printed.iter())
+                .filter(|(v, p)| (v - x).abs() <= 0.5 * 10f64.powi(-p) + 1e-9)
+                .map(|(v, _)| *v)
+                .collect()
+        };
+        let (a, b) = (as_printed(least), as_printed(right));
+        assert!(
+            a.len() >= 2 && b.len() >= 2,
+            "l = {l}: {printed:?} for {least}, {right}"
+        );
+        assert!(
+            a.iter().all(|v| !b.contains(v)),
+            "l = {l}: one value printed for both"
+        );
+        let way = if least > right { "after" } else { "before" };
+        assert!(
+            text.contains(&format!("° of crank angle {way} β = 90°")),
+            "l = {l}"
+        );
+    }
+}
+
+#[test]
+fn the_polar_diagram_letters_g_with_c_only_where_they_run_into_its_pin() {
+    // CG from the notes (f/ω², as printed), its page length through the
+    // polar panel's map: under 6 units G and G′ are lettered with C and
+    // not drawn; over it each has its dot and letter.
+    for (l, e, deg) in [
+        (2.96, -1.08, 269.36),
+        (3.0, 0.0, 30.0),
+        (1.86, 0.505, 90.03),
+    ] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+        options.angle = Some(slider_crank::Angle::deg(deg));
+        let svg = to_svg(&FigureName::AccelerationDiagrams.figure(&options).unwrap());
+        let text = read_text(&svg)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        let cg: f64 = (text.split("CG = ").skip(1))
+            .find_map(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
+            .unwrap();
+        let (_, map) = panel_map(&svg, "label-C");
+        let (o, g) = (map.apply((0.0, 0.0)), map.apply((cg, 0.0)));
+        let page = (g.0 - o.0).hypot(g.1 - o.1);
+        let at = format!("l = {l}, e = {e}, {deg}°: CG {page:.1} units on the page");
+        let joint = text.contains("C, G, G");
+        assert_eq!(joint, page < 6.0, "{at}");
+        assert_eq!(tag(&svg, "point-G").is_some(), !joint, "{at}");
+        assert_eq!(tag(&svg, "label-G1").is_some(), !joint, "{at}");
+        assert_eq!(text.contains("within C’s pin"), joint, "{at}");
+    }
+}
+
+#[test]
+fn primary_secondary_says_where_the_sum_is_drawn_under_the_exact_force() {
+    // The largest remainder as the notes print it, its page length on
+    // (a)'s force axis: under a line's width (1.5 units) the notes say the
+    // sum is drawn under the exact force, which hides it.
+    for (l, e) in [(6.0, 0.0), (3.19, 1.95), (1.06, 0.0), (40.0, 0.0)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+        let svg = to_svg(&FigureName::PrimarySecondary.figure(&options).unwrap());
+        let text = read_text(&svg)
+            .split_whitespace()
+            .collect::<Vec<_>>()
+            .join(" ");
+        let worst: f64 = (text.split("over the turn is ").nth(1))
+            .and_then(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
+            .unwrap();
+        let (_, map) = panel_map(&svg, "curve-primary-secondary");
+        let page = (map.apply((0.0, worst)).1 - map.apply((0.0, 0.0)).1).abs();
+        assert_eq!(
+            text.contains("is drawn under it"),
+            page < 1.5,
+            "l = {l}, e = {e}: the remainder {page:.2} units on the page"
+        );
+    }
 }
 
 #[test]

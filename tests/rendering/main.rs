@@ -21,3 +21,4 @@ mod figures;
 mod inversion_figures;
 mod plates;
 mod polygon_figures;
+mod quick_return_figures;

@@ -67,11 +67,12 @@ fn the_two_polygons_letter_groups_stand_apart() {
     }
 }
 
-/// The points of the path `id`, in page units.
+/// The points of the path `id`, in page units (a curve's control points
+/// among them).
 pub(super) fn path(svg: &str, id: &str) -> Vec<(f64, f64)> {
     let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
     let numbers: Vec<f64> = d
-        .split(|c: char| c == 'M' || c == 'L' || c.is_whitespace())
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
         .filter_map(|w| w.parse().ok())
         .collect();
     numbers.chunks(2).map(|p| (p[0], p[1])).collect()
@@ -796,15 +797,100 @@ fn the_arrows_into_a_prime_end_on_it_in_the_detail() {
     // polygon read as not closing. Both heads now end on a′'s dot.
     for (rod, deg) in [(49.8, 90.89), (49.8, 269.21), (42.5, 90.44), (41.9, 89.41)] {
         let svg = svg(FigureName::CoriolisInversion2, rod, 0.0, deg);
+        // Or, set beside a side on its line, on a tick from a′'s dot (the
+        // twenty-first review: k a′ on the line ran through n).
         let a = dot(&svg, "detail-point-a2");
         for id in ["detail-acceleration-oa", "detail-acceleration-coriolis"] {
             let tip = arrow_tip(&svg, id);
-            let off = (tip.0 - a.0).hypot(tip.1 - a.1);
+            let off = joined(&svg, id, "head", a, tip);
             assert!(
                 off < 1.5,
                 "l = {rod} r, {deg}°: {id} ends {off:.1} units from a′"
             );
         }
+    }
+}
+
+/// The ends of the line `id` as drawn (page units): a plain `<path>`'s,
+/// whose `d` comes before its id, or an arrow's (a `<g>` whose first
+/// path is its line).
+fn line_of(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let line = path_points(svg, id);
+    (line[0], line[line.len() - 1])
+}
+
+/// The points of the path `id` (page units): a plain `<path>`'s, whose
+/// `d` comes before its id, or a group's first path's.
+fn path_points(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let tag = element(svg, id).unwrap_or_else(|| panic!("no {id}"));
+    if !tag.starts_with("<path") {
+        return points_after(svg, id);
+    }
+    let d = tag.split(" d=\"").nth(1).expect("a d").split('"').next();
+    (d.unwrap()
+        .split(|c: char| c == ' ' || c.is_ascii_alphabetic()))
+    .filter_map(|t| t.parse().ok())
+    .collect::<Vec<f64>>()
+    .chunks(2)
+    .map(|p| (p[0], p[1]))
+    .collect()
+}
+
+/// How far the end `end` ("tail" or "head") of the side `id`, drawn at
+/// `at`, stands from the dot `dot` it runs from or to: 0 where a tick
+/// (`{id}-tick-{end}`) joins them, else the distance between them.
+fn joined(svg: &str, id: &str, end: &str, dot: (f64, f64), at: (f64, f64)) -> f64 {
+    let direct = (at.0 - dot.0).hypot(at.1 - dot.1);
+    let tick = format!("{id}-tick-{end}");
+    if !svg.contains(&format!("id=\"{tick}\"")) {
+        return direct;
+    }
+    let (p, q) = line_of(svg, &tick);
+    let gap = |x: (f64, f64), y: (f64, f64)| (x.0 - y.0).hypot(x.1 - y.1);
+    direct.min(gap(p, dot).max(gap(q, at)))
+}
+
+#[test]
+fn a_coriolis_component_along_the_tangential_one_keeps_off_n() {
+    // The twenty-first review, 2: at inversion 2 near 90° and 270° (l =
+    // 45.1 r, 90.25° and 269.96°; 26.4 r, 90.29°; 1.08 r, 89.76°) the
+    // Coriolis component k a′ ran straight through n and its right angle,
+    // and the tangential component n a′_d along it was set beside,
+    // touching neither n nor a′_d. Where the polygon has a detail it is
+    // read there, else on the panel: n's dot stands at least 3 units off
+    // k a′, n a′_d runs from n's dot, and each end of k a′ is on its dot
+    // or on a tick from it.
+    for (rod, deg) in [(45.1, 90.25), (45.1, 269.96), (26.4, 90.29), (1.08, 89.76)] {
+        let svg = svg(FigureName::CoriolisInversion2, rod, 0.0, deg);
+        let pre = if svg.contains("id=\"detail-point-n\"") {
+            "detail-"
+        } else {
+            ""
+        };
+        let at = |id: &str| dot(&svg, &format!("{pre}point-{id}"));
+        let (n, k, a) = (at("n"), at("k"), at("a2"));
+        let coriolis = format!("{pre}acceleration-coriolis");
+        let (tail, head) = line_of(&svg, &coriolis);
+        let off = to_segment(n, tail, head);
+        assert!(
+            off >= 3.0,
+            "l = {rod} r, {deg}°: n {off:.1} units from k a′"
+        );
+        let tip = arrow_tip(&svg, &coriolis);
+        for (end, dot, drawn) in [("tail", k, tail), ("head", a, tip)] {
+            let gap = joined(&svg, &coriolis, end, dot, drawn);
+            assert!(
+                gap < 1.5,
+                "l = {rod} r, {deg}°: k a′'s {end} {gap:.1} units from its dot"
+            );
+        }
+        let nad = format!("{pre}acceleration-nad");
+        let from = line_of(&svg, &nad).0;
+        let gap = joined(&svg, &nad, "tail", n, from);
+        assert!(
+            gap < 1.5,
+            "l = {rod} r, {deg}°: n a′_d starts {gap:.1} units from n"
+        );
     }
 }
 
@@ -1213,7 +1299,9 @@ fn a_side_set_beside_another_starts_clear_of_the_side_before_it() {
     // the tangential component n a′_d beside the Coriolis component's line
     // towards o′, so it started partway down o′n, under the right-angle
     // mark at n, and its head lay on o′a′_d's. It stands now on the side
-    // away from o′n.
+    // away from o′n, or (the twenty-first review: the Coriolis component
+    // is set beside it, not it beside the Coriolis component) starts on
+    // n's dot, which o′n ends on, the rest of it clear of o′n.
     for (rod, deg) in [
         (1.02, 90.0),
         (1.07, 90.0),
@@ -1222,11 +1310,21 @@ fn a_side_set_beside_another_starts_clear_of_the_side_before_it() {
         (1.07, 89.54),
         (1.04, 270.22),
     ] {
-        let apart = sides_apart(
-            FigureName::CoriolisInversion2,
-            (rod, deg),
-            ("acceleration-nad", "acceleration-on"),
+        let svg = svg(FigureName::CoriolisInversion2, rod, 0.0, deg);
+        let all = sides(&svg, true);
+        let (nad, on) = (
+            drawn_side(&all, "acceleration-nad"),
+            drawn_side(&all, "acceleration-on"),
         );
+        let n = dot(&svg, "point-n");
+        let from_n = (nad.0.0 - n.0).hypot(nad.0.1 - n.1);
+        let apart = if from_n < 1.5 {
+            // From n on: its head and its middle off o′n.
+            let middle = (0.5 * (nad.0.0 + nad.1.0), 0.5 * (nad.0.1 + nad.1.1));
+            to_segment(nad.1, on.0, on.1).min(to_segment(middle, on.0, on.1))
+        } else {
+            segments_apart(nad, on)
+        };
         assert!(
             apart >= 3.0,
             "l = {rod} r, {deg}°: n a′_d {apart:.1} units from o′n"
@@ -1620,4 +1718,41 @@ fn the_coriolis_notes_tell_apart_sides_on_one_line() {
         "{text}"
     );
     assert!(!said(3.0, 60.0).contains("lieononeline"));
+}
+
+/// The distance from `p` to the closed outline through `points`.
+fn to_outline(p: (f64, f64), points: &[(f64, f64)]) -> f64 {
+    (0..points.len())
+        .map(|i| to_segment(p, points[i], points[(i + 1) % points.len()]))
+        .fold(f64::INFINITY, f64::min)
+}
+
+#[test]
+fn the_slotted_bar_s_letter_stands_by_the_bar_not_in_the_crank_s_box() {
+    // The twenty-first review, 1: inversion 2 at l = 26.4 r, 180° set d
+    // right of the pivot C and its ground, past the bar's end, by the
+    // crank's middle inside the box its detail enlarges: it read as
+    // naming the pivot, and the bar read as b. d's letter now stands
+    // nearer the bar's outline than the box's, beside the bar (within an
+    // em and a half of it), its middle within the bar's length.
+    for (rod, deg) in [(26.4, 180.0), (26.35, 180.0), (26.4, 179.0), (26.4, 181.0)] {
+        let svg = svg(FigureName::CoriolisInversion2, rod, 0.0, deg);
+        let at = (
+            num(&svg, "label-link-d", "x"),
+            num(&svg, "label-link-d", "y") - 6.0,
+        );
+        let bar = path_points(&svg, "link-frame");
+        let area = path_points(&svg, "mechanism-detail-box");
+        let (to_bar, to_box) = (to_outline(at, &bar), to_outline(at, &area));
+        assert!(
+            to_bar < to_box && to_bar < 25.0,
+            "l = {rod} r, {deg}°: d {to_bar:.1} units from its bar, {to_box:.1} from the box"
+        );
+        let (x0, x1, _, _) = bounds_of(&bar);
+        assert!(
+            at.0 > x0 && at.0 < x1,
+            "l = {rod} r, {deg}°: d at x = {:.1}, the bar from {x0:.1} to {x1:.1}",
+            at.0
+        );
+    }
 }

@@ -13,7 +13,7 @@ use super::{
 };
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
-use crate::figure::{Dash, Figure, Item, NOTE_LINE, Part, Role, Shape, Symbol};
+use crate::figure::{Dash, Figure, Item, NOTE_LINE, Part, RichText, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
 use crate::{angle::Angle, mechanism::Pose};
 
@@ -95,7 +95,8 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.plot(time_base(ctx, &layout, &f)?);
     // As tall as beside the notes on the figure's own page.
     let tall = page.height() - (16.0 + ROW + 12.0) - 16.0;
-    sheet.plot(polar_diagram(ctx, &layout, tall)?);
+    let (polar, with_c) = polar_diagram(ctx, &layout, tall)?;
+    sheet.plot(polar);
     let corner = match layout.columns {
         true => Point::new(16.0 + layout.half + 28.0, layout.c_top + 30.0),
         false => {
@@ -104,7 +105,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             Point::new(28.0, below)
         }
     };
-    sheet.notes(corner, &notes(ctx));
+    sheet.notes(corner, &notes(ctx, with_c));
     Ok(sheet.finish())
 }
 
@@ -214,7 +215,8 @@ fn time_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
 /// (c) The polar diagram in the mechanism's world coordinates, `tall`
 /// page units high: CG′ = CG on the crank over a turn, simple harmonic
 /// motion's circle, and the construction at the drawn pose.
-fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<Plot> {
+/// Also whether G and G′ are lettered with C ([`polar_construction`]).
+fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<(Plot, bool)> {
     let m = ctx.mechanism;
     let r = m.crank();
     let polar = |deg: f64| {
@@ -244,7 +246,8 @@ fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<Plot> {
     let rect = crate::geom::Frame::from_origin_size(16.0, layout.c_top, layout.half, tall);
     let mut plot = Plot::world("polar", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption("(c) Polar diagram, *CG*′ = *CG* = *f*/ω² on the crank; SHM dotted");
-    polar_construction(&mut plot, &ctx.pose(), reach);
+    let scale = (rect.width() / world.width()).min(rect.height() / world.height());
+    let with_c = polar_construction(&mut plot, &ctx.pose(), reach, scale);
     plot.curve(
         "curve-polar-acceleration",
         &[(&polar, 0.0..=360.0)],
@@ -257,12 +260,13 @@ fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<Plot> {
         Dash::Dotted,
         None,
     )?;
-    Ok(plot)
+    Ok((plot, with_c))
 }
 
 /// The notes: the engine and its speed, the acceleration scale, CG and f
-/// at the drawn pose, and f at the dead centres.
-fn notes(ctx: &Ctx) -> [String; 6] {
+/// at the drawn pose (saying where G and G′ are lettered `with_c`), and f
+/// at the dead centres.
+fn notes(ctx: &Ctx, with_c: bool) -> [String; 6] {
     let m = ctx.mechanism;
     let (r, omega) = (m.crank(), ctx.omega);
     let w2 = omega * omega;
@@ -287,19 +291,32 @@ fn notes(ctx: &Ctx) -> [String; 6] {
             sig(w2)
         ),
         format!(
-            "At θ = {}°: *CG* = {} {unit}, so *f* = {} {unit}/s².",
+            "At θ = {}°: *CG* = {} {unit}, so *f* = {} {unit}/s²{}.",
             short(pose.angle().degrees()),
             sig(cg),
-            sig(w2 * cg)
+            sig(w2 * cg),
+            if with_c {
+                " (*G* and *G*′ within *C*’s pin in (c))"
+            } else {
+                ""
+            }
         ),
         "Outer dead centre: *f* = *r*ω²(1 + 1/*n*);".to_string(),
         "inner dead centre: *f* = −*r*ω²(1 − 1/*n*) (in line).".to_string(),
     ]
 }
 
+/// Page distance from C under which G and G′ are lettered with C, not
+/// drawn apart: their dots run into C's pin (at r = 1, l = 2.96, e = −1.08,
+/// 269.36° CG = 0.016 drew three letters about one ring, G and G′ not to
+/// be seen).
+const WITHIN_C: f64 = 6.0;
+
 /// The crank circle, the line of stroke, the crank at the drawn pose, G
-/// on the line of stroke and G′ on the crank with the arc between them.
-fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64) {
+/// on the line of stroke and G′ on the crank with the arc between them;
+/// where they fall within [`WITHIN_C`] of C at `scale` page units to the
+/// world's one, C lettered "C, G, G′" (and true returned).
+fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> bool {
     let r = pose.mechanism().crank();
     let c = Point::origin();
     let b = pose.b();
@@ -339,8 +356,10 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64) {
     plot.push(Item::new("pin-B", Role::Link, Shape::Pin { centre: b }));
     let g = Point::new(cg, 0.0);
     let g1 = c + u * cg;
-    let mut labels = vec![("C", "C", c), ("B", "B", b)];
-    if cg.abs() > 1e-6 * r {
+    let apart = cg.abs() * scale >= WITHIN_C;
+    let mut labels = vec![("C", if apart { "*C*" } else { "*C*, *G*, *G*′" }, c)];
+    labels.push(("B", "*B*", b));
+    if apart {
         let start = if cg > 0.0 { 0.0 } else { std::f64::consts::PI };
         let end = (g1.y).atan2(g1.x);
         plot.push(Item::new(
@@ -361,10 +380,21 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64) {
                 symbol: Symbol::Disc,
             },
         ));
-        labels.push(("G", "G", g));
-        labels.push(("G1", "G′", g1));
+        labels.push(("G", "*G*", g));
+        labels.push(("G1", "*G*′", g1));
     }
     for (id, name, p) in labels {
-        plot.push(super::letter(id, p, name));
+        plot.push(Item::new(
+            format!("label-{id}"),
+            Role::Label,
+            Shape::Label {
+                anchor: p,
+                text: RichText::parse(name),
+                size: crate::figure::TextSize::Letter,
+                toward: None,
+                line: None,
+            },
+        ));
     }
+    !apart
 }

@@ -13,10 +13,10 @@ use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, CylindricChain, QuadricPose};
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Result};
-use crate::figure::{Align, Figure, Item, Part, RichText, Role, Shape, TextSize};
+use crate::figure::{Align, Figure, Foot, Item, Part, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, segment_distance, unit};
 use crate::number::plain;
-use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Slot};
+use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::scene::{LINK_LETTER_NEAR, letter_ways};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -373,10 +373,14 @@ fn panel(
             (p.b() + dx, p.a() + dx, if k == 1 { "b" } else { "c" })
         }
     };
-    s.bearing("C", c);
     s.link("crank", vec![c, b]);
     s.link("rod", vec![b, a]);
-    s.pin("C", c);
+    if k == 0 {
+        // (b) and (c) draw C's bearing after the block, over it.
+        let links = [(c, b), (b, a), (chains.o_cd() + dx, a)];
+        s.bearing_on("C", c, foot(s, c, &links, &[]));
+        s.pin("C", c);
+    }
     s.pin("B", b);
     if k != 0 {
         let [crank, rod] = letter_ways([(c, b), (b, a)], &[], s.world(LINK_LETTER_NEAR));
@@ -397,15 +401,30 @@ fn panel(
 fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value {
     let (c, b, a) = (p.c, p.b, p.a);
     let o = chains.o_cd() + p.dx;
-    s.bearing("O-cd", o);
+    s.bearing_on("O-cd", o, foot(s, o, &[(c, b), (b, a), (o, a)], &[]));
     s.link("lever", vec![o, a]);
-    s.link("frame", vec![c, o]);
     let avoid = [(c, b), (b, a), (o, a)];
     let ends = PIN_CLEAR;
-    s.hatch_link("frame", c, o, &avoid, ends);
+    // The frame d on the line C O_cd, or beside it where a moving link
+    // lies along that line (the crank pointing at O_cd, the lever folded
+    // onto d), hatched on its far side.
+    let frame = match beside(s, (c, o), &avoid) {
+        Some(n) => {
+            let shift = n * s.world(FRAME_BESIDE);
+            let frame = (c + shift, o + shift);
+            s.link("frame", vec![frame.0, frame.1]);
+            s.hatch_edge_of_at_least("frame", frame, &[n], &avoid, ends, 1);
+            frame
+        }
+        None => {
+            s.link("frame", vec![c, o]);
+            s.hatch_link("frame", c, o, &avoid, ends);
+            (c, o)
+        }
+    };
     s.pin("A", a);
     s.lettered("O-cd", o, "*O*_{cd}", Marker::Pin, c);
-    let links = [(c, b), (b, a), (o, a), (c, o)];
+    let links = [(c, b), (b, a), (o, a), frame];
     let ways = letter_ways(links, &[c, b, a, o], s.world(LINK_LETTER_NEAR));
     for ((name, markup), (link, way)) in [("link-a", "*a*"), ("link-b", "*b*")]
         .into_iter()
@@ -481,7 +500,22 @@ fn slot_panel(
         .map(|j| point(sa - lh + 2.0 * lh * j as f64 / 8.0, -hh))
         .collect();
     outline.extend((0..=8).map(|j| point(sa + lh - 2.0 * lh * j as f64 / 8.0, hh)));
+    // C's bearing turned to a side clear of the crank and the rod, then
+    // of the block, the guides along it and O_cd's radius; drawn over the
+    // block where none is clear of it.
+    let mut others: Vec<Seg> = (outline.iter().zip(outline.iter().cycle().skip(1)))
+        .map(|(&p, &q)| (p, q))
+        .collect();
+    for delta in [-hh, hh] {
+        let at = |j: usize| point(sa - lh + (slot.range.1 - sa + lh) * j as f64 / 32.0, delta);
+        others.extend((0..32).map(|j| (at(j), at(j + 1))));
+    }
+    if let Intersection::Point(o) = pose.chain().slot_centre() {
+        others.push((o + dx, a));
+    }
     s.push("block-slider", Role::Link, Shape::Block { points: outline });
+    s.bearing_on("C", c, foot(s, c, &[(c, b), (b, a)], &others));
+    s.pin("C", c);
     s.pin("A", a);
     s.letter("link-c", point(sa, -hh), "*c*", TextSize::Letter);
     s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
@@ -498,6 +532,130 @@ fn slot_panel(
         }
     }
     ChainCentres::of_cylindric(&pose).to_json()
+}
+
+/// How far (page units) the frame d is drawn beside the line C O_cd
+/// where a moving link lies along it: a link's width and a little paper
+/// between the two, the pins at C and O_cd touching d.
+const FRAME_BESIDE: f64 = 7.0;
+/// A moving link nearer the line C O_cd than this (page units: a link's
+/// width and a little paper)…
+const LYING_NEAR: f64 = 5.0;
+/// …over at least this length of it (page units) lies along it.
+const LYING_OVER: f64 = 16.0;
+
+/// The side (a world unit vector square to `p q`) the fixed link `p q`
+/// is drawn beside its line on where one of the moving `links` lies along
+/// that line (within [`LYING_NEAR`] of it over [`LYING_OVER`]): away from
+/// the links lying along it, or, where these lie on the line itself, from
+/// the others. `None` where none lies along it.
+fn beside(s: &Canvas, (p, q): Seg, links: &[Seg]) -> Option<Vector> {
+    let u = unit(q - p)?;
+    let n = Vector::new(-u.y, u.x);
+    let length = (q - p).norm();
+    // The signed distances from the line of a link's points over it.
+    let over = |&(a, b): &Seg| -> Vec<f64> {
+        (0..=32)
+            .map(|k| a + (b - a) * (f64::from(k) / 32.0))
+            .filter(|x| (0.0..=length).contains(&(x - p).dot(&u)))
+            .map(|x| (x - p).dot(&n))
+            .collect()
+    };
+    let lying = |link: &Seg| {
+        let step = s.page((link.1 - link.0).norm()) / 32.0;
+        let near = (over(link).iter())
+            .filter(|d| s.page(d.abs()) < LYING_NEAR)
+            .count();
+        near as f64 * step >= LYING_OVER
+    };
+    let (along, off): (Vec<&Seg>, Vec<&Seg>) = links.iter().partition(|l| lying(l));
+    if along.is_empty() {
+        return None;
+    }
+    // The side whose line meets fewer of the links' points, then the side
+    // away from the links lying along it (their mean distance from the
+    // line), or from the others where these lie on the line itself.
+    let crowd = |m: Vector| {
+        let shift = m * s.world(FRAME_BESIDE);
+        let (a, b) = (p + shift, q + shift);
+        (links.iter())
+            .flat_map(|&(x, y)| (0..=64).map(move |k| x + (y - x) * (f64::from(k) / 64.0)))
+            .filter(|&x| s.page(segment_distance(x, x, a, b)) < LYING_NEAR)
+            .count()
+    };
+    let mean = |ls: &[&Seg]| {
+        let all: Vec<f64> = ls.iter().flat_map(|l| over(l)).collect();
+        all.iter().sum::<f64>() / all.len().max(1) as f64
+    };
+    let side = mean(&along);
+    let side = if s.page(side.abs()) > 1.0 {
+        side
+    } else {
+        mean(&off)
+    };
+    let away = if side > 0.0 { -n } else { n };
+    Some(match crowd(n).cmp(&crowd(-n)) {
+        std::cmp::Ordering::Less => n,
+        std::cmp::Ordering::Greater => -n,
+        std::cmp::Ordering::Equal => away,
+    })
+}
+
+/// A bearing's ink about its centre, page units (the SVG writer's
+/// bearing): its pedestal from the shaft's pin (which the links leave
+/// from) out to its base, half as wide there; the base's half width, and
+/// how far out its hatching reaches.
+const PEDESTAL: (f64, f64, f64) = (6.0, 17.0, 10.0);
+const BASE: (f64, f64) = (17.0, 23.0);
+/// Paper kept round a bearing's ink, page units: a link's half width and
+/// a little more.
+const INK_CLEAR: f64 = 2.5;
+
+/// Whether the page point `v` (from a bearing's centre, `o` out towards
+/// its foot and `w` across) falls on the bearing's ink or within
+/// [`INK_CLEAR`] of it.
+fn on_bearing(o: f64, w: f64) -> bool {
+    let (pin, foot, half) = PEDESTAL;
+    let (base_half, reach) = BASE;
+    let pedestal = o > pin && o < foot + INK_CLEAR && w.abs() < half * o / foot + INK_CLEAR;
+    // The hatching leans back across the base by its depth.
+    let base = o > foot - INK_CLEAR
+        && o < reach + INK_CLEAR
+        && w.abs() < base_half + (reach - foot) + INK_CLEAR;
+    pedestal || base
+}
+
+/// The side a fixed pin `p`'s bearing stands on: the first of below,
+/// above, left and right whose pedestal and hatched base ([`on_bearing`])
+/// keep clear of
+/// the moving `links`, and of these the one that meets least of the
+/// `others` drawn (the block, its guides, a dashed radius); where none is
+/// clear of the links, the one that meets them least (a rod passing just
+/// under the crank centre ran through the pedestal and read as pinned
+/// there).
+fn foot(s: &Canvas, p: Point, links: &[Seg], others: &[Seg]) -> Foot {
+    let t = s.transform();
+    let at = t.apply(p);
+    let hits = |f: Foot, segs: &[Seg]| -> usize {
+        let (out, along) = f.axes();
+        (segs.iter())
+            .map(|&(a, b)| {
+                let (a, b) = (t.apply(a), t.apply(b));
+                let n = ((b - a).norm() / 2.0).ceil().clamp(1.0, 4000.0) as usize;
+                (0..=n)
+                    .filter(|&k| {
+                        let v = a + (b - a) * (k as f64 / n as f64) - at;
+                        on_bearing(v.dot(&out), v.dot(&along))
+                    })
+                    .count()
+            })
+            .sum()
+    };
+    // Of sides equally clear, the first (below) is kept.
+    [Foot::Below, Foot::Above, Foot::Left, Foot::Right]
+        .into_iter()
+        .min_by_key(|&f| (hits(f, links), hits(f, others)))
+        .unwrap_or(Foot::Below)
 }
 
 /// The notes: the mechanism and the crank angle, and what each panel's

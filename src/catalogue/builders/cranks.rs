@@ -235,17 +235,26 @@ fn pair_plot(ctx: &Ctx, pair: &Pair, rect: Frame, caption: &str) -> Result<Plot>
 
 /// The angles of the direct crank (from the line of stroke to it) and of
 /// the reverse (to it the other way), where they are wide enough to mark.
+/// Past 180° each is marked the short way round and named so (θ − 360°
+/// and 360° − θ): two arcs of more than half a turn overlap over their
+/// middles, where their letters stand, and the letter of one read as the
+/// other's. Within 5° of 180° the two cranks lie together and one arc, the
+/// direct crank's, is marked: the two halves closed into a circle.
 fn angle_marks(plot: &mut Plot, pair: &Pair) {
-    if pair.angle.abs() < 5f64.to_radians() || pair.force <= 0.0 {
+    use std::f64::consts::{PI, TAU};
+    let turn = pair.angle.rem_euclid(TAU);
+    let (sweep, direct, reverse) = if turn > PI + 5f64.to_radians() {
+        let w = pair.written;
+        (turn - TAU, format!("{w} − 360°"), format!("360° − {w}"))
+    } else {
+        (turn, pair.written.to_string(), format!("−{}", pair.written))
+    };
+    if sweep.abs() < 5f64.to_radians() || pair.force <= 0.0 {
         return;
     }
-    // The direct crank's angle swept the way it turns, from the line of
-    // stroke (past 180° for θ or 2θ there), the reverse's the other way.
-    let sweep = pair.angle.rem_euclid(std::f64::consts::TAU);
-    for (id, sweep, text) in [
-        ("direct", sweep, pair.written.to_string()),
-        ("reverse", -sweep, format!("−{}", pair.written)),
-    ] {
+    let together = (turn - PI).abs() <= 5f64.to_radians();
+    let marks = [("direct", sweep, direct), ("reverse", -sweep, reverse)];
+    for (id, sweep, text) in marks.into_iter().take(if together { 1 } else { 2 }) {
         plot.push(Item::new(
             format!("angle-{}-{id}", pair.name),
             Role::Dimension,
@@ -268,7 +277,11 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: Frame) -> Result<Pl
     let values = [0.0, a, b, exact];
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let span = (hi - lo).max(2.0 * p.force);
+    // The panel's own scale, for the forces it draws: near 90° at long
+    // rods they are a few hundredths of m r ω², and the cranks' scale
+    // drew them as dots under their heads. At least a millionth of
+    // m r ω², where all of them vanish together.
+    let span = (hi - lo).max(2e-6 * p.force);
     let row = 0.045 * span;
     // Below the arrows a row for the panel's scale bar.
     let world = Frame::new(
@@ -278,7 +291,7 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: Frame) -> Result<Pl
     let mut plot = Plot::world("sum", rect, &world, false, ctx.tolerance, ctx.font)?.with_caption(
         "(c) On the line of stroke: primary + secondary, and the exact inertia force −*m a* below",
     );
-    let least = SHORTEST * p.force;
+    let least = SHORTEST * span;
     plot.push(
         line(
             "line-stroke-sum",

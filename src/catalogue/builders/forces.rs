@@ -70,16 +70,59 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.meta("friction", serde_json::json!(MU));
     let measured = measured(ctx)?;
     let height = page.height() - 16.0 - BETA_HEIGHT - 54.0 - 8.0;
-    let (forces, least_f) = forces(ctx, &measured, height)?;
-    sheet.plot(forces);
-    let (beta, right) = transmission(ctx, 16.0 + height + 8.0)?;
-    sheet.plot(beta);
+    let m = ctx.mechanism;
+    let least_f = least_force_angle(&m);
+    let right = right_angle(&m);
+    let places = least_f.zip(right).map_or(1, |(a, b)| places_apart(a, b));
+    sheet.plot(forces(ctx, &measured, height, least_f, places)?);
+    sheet.plot(transmission(ctx, 16.0 + height + 8.0, right, places)?);
     if let (Some(a), Some(b)) = (least_f, right) {
         sheet.meta("least_force_deg", serde_json::json!(a));
         sheet.meta("right_transmission_deg", serde_json::json!(b));
     }
-    sheet.notes(Point::new(20.0, page.height() - 42.0), &notes(ctx));
+    let notes = notes(ctx, least_f.zip(right), places);
+    sheet.notes(Point::new(20.0, page.height() - 42.0), &notes);
     Ok(sheet.finish())
+}
+
+/// The crank angle of the least F, degrees: where OM = −ds/dθ is
+/// greatest, d²s/dθ² = 0 (none where no root is found in 1° to 179°).
+fn least_force_angle(m: &SliderCrank) -> Option<f64> {
+    root(|d| at(m, d, Pose::position_acceleration), 1.0, 179.0)
+}
+
+/// The crank angle where β = 90°, degrees (θ + φ = 90°; none where it is
+/// not reached).
+fn right_angle(m: &SliderCrank) -> Option<f64> {
+    root(
+        |d| 90.0 - d - at(m, d, Pose::obliquity).to_degrees(),
+        0.0,
+        180.0,
+    )
+}
+
+/// The fewest decimal places, at least 1 and at most 9, at which the
+/// angles `a` and `b` print differently, so that the figure never prints
+/// one value for two angles it says are apart (at long rods the least F
+/// and β = 90° are hundredths of a degree apart); 9 where they agree
+/// even there.
+fn places_apart(a: f64, b: f64) -> usize {
+    (1..=9)
+        .find(|&p| format!("{a:.p$}") != format!("{b:.p$}"))
+        .unwrap_or(9)
+}
+
+/// The sentence saying where the least F falls against β = 90°: `a` and
+/// `b` their crank angles, printed to `places` decimals.
+fn apart(a: f64, b: f64, places: usize) -> String {
+    if a == b {
+        return format!(" The least *F* is at β = 90°, θ = {a:.places$}°.");
+    }
+    let (by, way) = ((a - b).abs(), if a > b { "after" } else { "before" });
+    format!(
+        " The least *F* (θ = {a:.places$}°) comes {}° of crank angle {way} β = 90° (θ = {b:.places$}°): *F* = *T* / *OM* is least where *OM* is greatest, not where the rod is square to the crank.",
+        sig(by)
+    )
 }
 
 /// Whether the figure draws Ng's own rig (r = 25, l = 72, in line), whose
@@ -125,9 +168,15 @@ fn theta() -> Result<Axis> {
 }
 
 /// (a) F and F′ (theory) against θ, `height` page units high, with the
-/// `measured` F′ and the least F; returns the plot and the angle of the
-/// least F, if found.
-fn forces(ctx: &Ctx, measured: &[(f64, f64)], height: f64) -> Result<(Plot, Option<f64>)> {
+/// `measured` F′ and the least F at `least_f` (its angle printed to
+/// `places` decimals).
+fn forces(
+    ctx: &Ctx,
+    measured: &[(f64, f64)],
+    height: f64,
+    least_f: Option<f64>,
+    places: usize,
+) -> Result<Plot> {
     let m = ctx.mechanism;
     let f_curve = |deg: f64| -> Option<(Point, Vector)> {
         let (f, df) = force(&pose_at(&m, deg)?)?;
@@ -142,8 +191,6 @@ fn forces(ctx: &Ctx, measured: &[(f64, f64)], height: f64) -> Result<(Plot, Opti
             Vector::new(1.0, (df * (1.0 - MU * k) - f * MU * dk) * PER_DEGREE),
         ))
     };
-    // The least F: where OM = −ds/dθ is greatest, d²s/dθ² = 0.
-    let least_f = root(|d| at(&m, d, Pose::position_acceleration), 1.0, 179.0);
     let least_force = least_f
         .and_then(|d| pose_at(&m, d).as_ref().and_then(force))
         .map(|(f, _)| (least_f.unwrap_or(90.0), f));
@@ -199,15 +246,18 @@ fn forces(ctx: &Ctx, measured: &[(f64, f64)], height: f64) -> Result<(Plot, Opti
             "point-least-force",
             &[(d, f)],
             Symbol::Triangle,
-            Some(&format!("least *F*: θ = {d:.1}°, {} {force_unit}", sig(f))),
+            Some(&format!(
+                "least *F*: θ = {d:.places$}°, {} {force_unit}",
+                sig(f)
+            )),
         );
     }
-    Ok((forces, least_f))
+    Ok(forces)
 }
 
 /// (b) The transmission angle β against θ from `top` down, with β = 90°
-/// marked where it is reached; returns the plot and that angle.
-fn transmission(ctx: &Ctx, top: f64) -> Result<(Plot, Option<f64>)> {
+/// marked at `right` where it is reached (printed to `places` decimals).
+fn transmission(ctx: &Ctx, top: f64, right: Option<f64>, places: usize) -> Result<Plot> {
     let m = ctx.mechanism;
     let y = Axis::linear("transmission angle β (°)", 0.0, 180.0)?.with_step(30.0)?;
     let mut beta = Plot::new(
@@ -228,11 +278,6 @@ fn transmission(ctx: &Ctx, top: f64) -> Result<(Plot, Option<f64>)> {
     };
     let pieces: [(&dyn Curve, _); 1] = [(&b_curve, 0.0..=180.0)];
     beta.curve("curve-transmission-angle", &pieces, Dash::Solid, Some("β"))?;
-    let right = root(
-        |d| 90.0 - d - at(&m, d, Pose::obliquity).to_degrees(),
-        0.0,
-        180.0,
-    );
     if let Some(d) = right {
         beta.push(
             Item::new(
@@ -249,14 +294,16 @@ fn transmission(ctx: &Ctx, top: f64) -> Result<(Plot, Option<f64>)> {
             "point-beta-90",
             &[(d, 90.0)],
             Symbol::Circle,
-            Some(&format!("β = 90° at θ = {d:.1}°")),
+            Some(&format!("β = 90° at θ = {d:.places$}°")),
         );
     }
-    Ok((beta, right))
+    Ok(beta)
 }
 
-/// The notes: Ng's rig and the torque, and how F′ is drawn.
-fn notes(ctx: &Ctx) -> [String; 2] {
+/// The notes: Ng's rig and the torque, how F′ is drawn, and how far the
+/// least F (the first of `angles`) falls from β = 90° (the second), to
+/// `places` decimals.
+fn notes(ctx: &Ctx, angles: Option<(f64, f64)>, places: usize) -> [String; 2] {
     let m = ctx.mechanism;
     let rig = if ngs_rig(ctx) {
         "Ng’s rig"
@@ -270,13 +317,16 @@ fn notes(ctx: &Ctx) -> [String; 2] {
             short(m.rod()),
             ctx.offset_clause(),
             ctx.units.torque(),
-            if ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
+            if ngs_rig(ctx) && ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
                 " (1 kg on the 27 mm crank)"
             } else {
                 ""
             },
             u = ctx.unit(),
         ),
-        "*F*′ with each angle’s φ (Ng’s printed *F*′ used φ of 60° throughout). The least *F* is not quite at β = 90°.".into(),
+        format!(
+            "*F*′ is drawn with each angle’s φ (Ng’s printed *F*′ used φ of 60° throughout).{}",
+            angles.map_or(String::new(), |(a, b)| apart(a, b, places))
+        ),
     ]
 }

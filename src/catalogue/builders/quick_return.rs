@@ -1,16 +1,21 @@
-//! The quick return's tool (its ram) against θ: (a) its velocity and (b)
-//! its acceleration over the cutting stroke (full) and the return stroke
-//! (dashed), the strokes' ends at θ = 90° and 270° dotted, the values at
-//! the drawn pose marked, and the time ratio in the notes
-//! ([`crate::chain::QuickReturn`], docs/quick-return.md).
+//! The quick return's tool (its ram) against the driver's turn since the
+//! cutting stroke began, which is time at the driver's constant speed:
+//! (a) its velocity and (b) its acceleration over the cutting stroke
+//! (full) and the quicker return (dashed), the strokes' end dotted where
+//! the driver has turned through the cutting stroke's angle (θ = 90° or
+//! 270°, d square to the crank a), the values at the drawn pose marked,
+//! and the time ratio in the notes ([`crate::chain::QuickReturn`],
+//! docs/quick-return.md). Against θ the strokes would take half a turn
+//! each and the quick return would not show.
 
 use super::{Ctx, Sheet, short, sig};
 use crate::angle::Angle;
-use crate::chain::{Inversion, QuickReturn, ToolMotion};
+use crate::chain::{Inversion, QuickReturn, Stroke, ToolMotion};
 use crate::diagram::{Axis, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Symbol};
 use crate::geom::{Point, Vector};
+use std::f64::consts::TAU;
 
 /// A step of θ (degrees) for the acceleration's derivative, by central
 /// differences: its error, about 1e-9 of the value, is far below the
@@ -67,18 +72,25 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
     // The derivative per degree: the velocity's from the acceleration
     // (dv/dθ = a / (dθ/dt), dθ/dt = ω / the driver's rate per dθ), the
     // acceleration's by central differences.
-    let curve = move |deg: f64| -> Option<(Point, Vector)> {
+    // Each stroke's curve is traced over θ and set at the driver's turn
+    // (d turn/dθ = the driver's rate per dθ, with its sign: in inversion 2
+    // the driver turns forward as θ falls), the turn taken in the stroke's
+    // own span (at its ends the turn is 0 or 360°, one time).
+    let (cutting, _) = q.stroke_angles();
+    let cut = cutting.to_degrees();
+    let curve = move |deg: f64, back: bool| -> Option<(Point, Vector)> {
         let a = Angle::from_degrees(deg).ok()?;
         let t = q.at(a, w);
+        let rate = q.chain().pose(a).link_rate(driver);
         let slope = match what {
-            Quantity::Velocity => {
-                let rate = q.chain().pose(a).link_rate(driver);
-                t.acceleration * rate / w * super::PER_DEGREE
-            }
+            Quantity::Velocity => t.acceleration * rate / w * super::PER_DEGREE,
             Quantity::Acceleration => (value(deg + STEP)? - value(deg - STEP)?) / (2.0 * STEP),
         };
-        Some((Point::new(deg, what.of(&t)), Vector::new(1.0, slope)))
+        let x = in_stroke(t.driver_angle.to_degrees(), cut, back);
+        Some((Point::new(x, what.of(&t)), Vector::new(rate, slope)))
     };
+    let cutting_curve = move |deg: f64| curve(deg, false);
+    let return_curve = move |deg: f64| curve(deg, true);
     let (lo, hi) = (0..=720)
         .filter_map(|k| value(0.5 * f64::from(k)))
         .fold((0.0f64, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
@@ -98,10 +110,10 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
         ),
     };
     let y = Axis::nice(&format!("{title} ({unit})"), lo, hi)?;
-    let x = Axis::linear("crank angle θ (°)", 0.0, 360.0)?.with_step(30.0)?;
+    let x = Axis::linear(TURN_AXIS, 0.0, 360.0)?.with_step(30.0)?;
     let mut plot = Plot::new(name, ctx.band(top, height), x, y, ctx.tolerance, ctx.font)?
         .with_caption(caption);
-    let (cutting, back) = q.stroke_angles();
+    let back = TAU - cutting;
     // The strokes and the pose are named in (a)'s legend only: a second
     // legend found no free corner in (b) and was set beside its plot.
     let first = matches!(what, Quantity::Velocity);
@@ -112,35 +124,62 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
     let return_key = format!("return stroke, {}°", short(back.to_degrees()));
     plot.curve(
         &format!("curve-{name}-cutting"),
-        &[(&curve, 0.0..=90.0), (&curve, 270.0..=360.0)],
+        &[
+            (&cutting_curve, 270.0..=360.0),
+            (&cutting_curve, 0.0..=90.0),
+        ],
         Dash::Solid,
         first.then_some(cutting_key.as_str()),
     )?;
     plot.curve(
         &format!("curve-{name}-return"),
-        &[(&curve, 90.0..=270.0)],
+        &[(&return_curve, 90.0..=270.0)],
         Dash::Dashed,
         first.then_some(return_key.as_str()),
     )?;
-    for end in [90.0, 270.0] {
-        plot.line(
-            &format!("line-{name}-end-{end}"),
-            &[(end, lo), (end, hi)],
-            Dash::Dotted,
-            None,
-        );
-    }
+    plot.line(
+        &format!("line-{name}-end"),
+        &[(cut, lo), (cut, hi)],
+        Dash::Dotted,
+        None,
+    );
     let theta = ctx.angle.degrees();
+    let pose = q.at(ctx.angle, w);
     if let Some(v) = value(theta) {
-        let key = format!("θ = {}°: {} {unit}", short(theta), sig(v));
+        let turn = in_stroke(
+            pose.driver_angle.to_degrees(),
+            cut,
+            pose.stroke == Stroke::Return,
+        );
+        let key = format!(
+            "θ = {}° (turn {}°): {} {unit}",
+            short(theta),
+            short(turn),
+            sig(v)
+        );
         plot.points(
             &format!("point-{name}"),
-            &[(theta, v)],
+            &[(turn, v)],
             Symbol::Circle,
             first.then_some(key.as_str()),
         );
     }
     Ok(plot)
+}
+
+/// The title of the panels' axis of abscissae.
+const TURN_AXIS: &str = "the driver’s turn since the cutting stroke began (°), as time";
+
+/// The driver's turn `turn` (degrees, 0 to 360) taken in its stroke's
+/// span: the cutting stroke's from 0 to `cut`, the return's from `cut`
+/// to 360 (`back`), so that a stroke's end, where the turn is both 0 and
+/// 360°, lands at its own stroke's end.
+fn in_stroke(turn: f64, cut: f64, back: bool) -> f64 {
+    match back {
+        true if turn < 0.5 * cut => turn + 360.0,
+        false if turn > 0.5 * (cut + 360.0) => turn - 360.0,
+        _ => turn,
+    }
 }
 
 /// The notes: the mechanism, the arm and the drive, the time ratio and
@@ -157,7 +196,7 @@ fn notes(ctx: &Ctx, q: &QuickReturn) -> Vec<String> {
         ),
         _ => (
             "Inversion 2, Whitworth’s quick return",
-            "the rod *b* turns about *B* (θ falling: the strokes run from right to left)",
+            "the rod *b* turns about *B* (θ falling as it turns)",
         ),
     };
     let offset = ctx.offset_clause();
@@ -171,12 +210,13 @@ fn notes(ctx: &Ctx, q: &QuickReturn) -> Vec<String> {
             short(q.lever()),
         ),
         format!(
-            "The strokes end where *d* is square to the line of centres, θ = 90° and 270° (dotted): time ratio {}° / {}° = {}, stroke {} {u}; *s* is + the way the tool cuts. At θ = {}° ({}): d²*s*/d*t*² = {} {u}/s².",
+            "The strokes end where *d* is square to the crank *a*, θ = 90° and 270°; the driver turns {}° over the cutting stroke and {}° over the return (dotted: the cutting stroke’s end), time ratio {}, stroke {} {u}; *s* is + the way the tool cuts. At θ = {}°, the driver’s turn {}° ({} stroke): d²*s*/d*t*² = {} {u}/s².",
             short(cutting.to_degrees()),
             short(back.to_degrees()),
             sig(q.time_ratio()),
             sig(q.stroke_length()),
             short(ctx.angle.degrees()),
+            short(pose.driver_angle.to_degrees()),
             pose.stroke.name(),
             sig(pose.acceleration),
         ),

@@ -10,7 +10,7 @@ use super::{FINE_STEPS, GAP, MARGIN, MECHANISM_HEIGHT, round_below};
 use crate::chain::{Inversion, InversionPose};
 use crate::diagram::Plot;
 use crate::error::Result;
-use crate::figure::{Foot, RichText, Role, Shape, TextSize};
+use crate::figure::{Foot, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector, unit};
 use crate::scene::{Canvas, Marker};
 
@@ -314,11 +314,93 @@ pub(super) fn links_plot(
     if let (true, Some(region)) = (whole, region) {
         mark_window(&mut s, "mechanism", &region);
     }
-    for item in s.finish().0 {
+    let scale = s.transform().scale();
+    let mut items = s.finish().0;
+    if let (true, Some(region)) = (whole, region) {
+        bar_letter_out_of(&mut items, pose, scale, &region);
+    }
+    for item in items {
         plot.push(item);
     }
     Ok((plot, shown))
 }
+
+/// The slotted bar d's letter, on the whole mechanism, moved out of the
+/// `region` its detail enlarges where it was set inside it (among
+/// `items`, drawn at `scale` page units per world unit): there it stood
+/// by the crank's middle, the fixed link a few units long in its box,
+/// beside the pivot C and its ground, past the bar's end, and read as
+/// naming them, the bar named by b alone (inversion 2 at l = 26.4 r,
+/// 180°). It goes by the bar's edge on the side it was set on, in the
+/// middle of the longest run of the bar from C to A clear of the region
+/// and of the block (an em each way) and of the rod's middle, where b's
+/// letter stands (an em and a half each way); left where no run is.
+fn bar_letter_out_of(items: &mut [Item], pose: &InversionPose, scale: f64, region: &Frame) {
+    let letter = (items.iter()).find_map(|i| match (&i.id[..], &i.shape) {
+        ("label-link-d", Shape::Label { anchor, toward, .. }) => Some((*anchor, *toward)),
+        _ => None,
+    });
+    let Some((_, toward)) = letter.filter(|(at, _)| region.contains(*at)) else {
+        return;
+    };
+    let engine = pose.engine_pose();
+    let mechanism = engine.mechanism();
+    let t = pose.place(Point::new(0.0, mechanism.offset()));
+    let (a, b) = (pose.place(engine.a()), pose.place(engine.b()));
+    let Some(u) = unit(a - t) else {
+        return;
+    };
+    let across = Vector::new(-u.y, u.x);
+    let way = toward.and_then(unit).map_or(across, |w| {
+        if w.dot(&across) < 0.0 {
+            -across
+        } else {
+            across
+        }
+    });
+    let em = LETTER_EM / scale;
+    let along = |p: Point| (p - t).dot(&u);
+    let end = along(a);
+    let mut taken = Vec::new();
+    if let Some((p, q)) = region.clip_segment(t, a) {
+        let (x, y) = (along(p), along(q));
+        taken.push((x.min(y) - em, x.max(y) + em));
+    }
+    let block = (items.iter()).find_map(|i| match (&i.id[..], &i.shape) {
+        ("block-slider", Shape::Block { points }) => Some(points.clone()),
+        _ => None,
+    });
+    let (lo, hi) = block
+        .unwrap_or_default()
+        .iter()
+        .map(|p| along(*p))
+        .fold((end, end), |(lo, hi), x| (lo.min(x), hi.max(x)));
+    taken.push((lo - em, hi + em));
+    let rod = along(Point::from((a.coords + b.coords) * 0.5));
+    taken.push((rod - 1.5 * em, rod + 1.5 * em));
+    let mut cuts: Vec<f64> = vec![0.0, end];
+    cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
+    let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(0.0, end)).collect();
+    cuts.sort_by(f64::total_cmp);
+    let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
+    let run = (cuts.iter().copied())
+        .zip(cuts.iter().copied().skip(1))
+        .filter(|(lo, hi)| hi > lo && free(0.5 * (lo + hi)))
+        .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)));
+    let Some((lo, hi)) = run else {
+        return;
+    };
+    let half = super::super::inversions::slot_half_width(mechanism, scale);
+    let at = t + u * (0.5 * (lo + hi)) + way * half;
+    let item = items.iter_mut().find(|i| i.id == "label-link-d");
+    if let Some(Shape::Label { anchor, toward, .. }) = item.map(|i| &mut i.shape) {
+        *anchor = at;
+        *toward = Some(way);
+    }
+}
+
+/// A letter's em, page units (the letters' size).
+const LETTER_EM: f64 = 17.0;
 
 /// The driver's sense of turning: an arrowed arc about its fixed pin
 /// (the crank about B in inversion 3, the rod about B in inversion 2),

@@ -152,7 +152,10 @@ pub(super) fn polygon_plot(
             s.push(*id, *role, Shape::Arrow { from, to });
         } else if length >= MIN_ARROW {
             s.segment(*id, *role, from, to);
+        } else {
+            continue;
         }
+        ticks(&mut s, id, (from, to), off);
     }
     more(&mut s);
     s.set_hue(old);
@@ -343,6 +346,7 @@ pub(super) fn detail_plot(
         } else {
             s.segment(*id, role, tail, head);
         }
+        ticks(&mut s, id, (from, to), off);
     }
     more(&mut s);
     s.set_hue(old);
@@ -373,9 +377,17 @@ pub(super) const SIDE_APART: f64 = 7.0;
 /// a′_d k and o′a′_d on one line read as one line with a head at either
 /// end). A side the frame misses counts as a point.
 fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
+    // A side whose line runs through a point of the polygon between its
+    // ends (not the result) is set beside the others rather than they
+    // beside it: on the line, it would run through that point's dot
+    // (inversion 2 at l = 45.1 r, 90.25°: the Coriolis component k a′
+    // through n and its right angle, the tangential component n a′_d
+    // along it set beside, touching neither of its dots).
     let rank = |a: &Arrow| {
         if a.1 == Role::Result {
             0
+        } else if passes_point(s, (a.2, a.3), drawn) {
+            3
         } else if drawn.subject == Some((a.2, a.3)) {
             1
         } else {
@@ -403,8 +415,9 @@ fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
         }
     }
     // On the polygon's own panel only: its detail keeps the heads on the
-    // points they end at (the ninth review read a′ set beside as the
-    // polygon not closing).
+    // points they end at where it can (the ninth review read a′ set
+    // beside as the polygon not closing); a side set beside there is
+    // joined to its points by ticks ([`ticks`]).
     if least == MIN_ARROW {
         for (i, (_, _, from, to)) in drawn.arrows.iter().enumerate() {
             if let Some(off) = offsets.get_mut(i).filter(|o| o.norm() == 0.0) {
@@ -413,6 +426,51 @@ fn apart(s: &Canvas, drawn: &Drawn, least: f64) -> Vec<Vector> {
         }
     }
     offsets
+}
+
+/// Whether the side `from`→`to` of a polygon drawn on `s` runs through a
+/// point of it (`drawn`) that is not its end: within [`ON_LINE`] of its
+/// line, farther than [`SIDE_APART`] along it from either end, inside
+/// the frame. Every such point counts, those ending a side along it too
+/// (unlike [`clear_of_points`]): they are what [`apart`] sets it beside.
+fn passes_point(s: &Canvas, (from, to): (Vector, Vector), drawn: &Drawn) -> bool {
+    let side = to - from;
+    let length = side.norm();
+    if length.is_nan() || length <= 0.0 || s.page(length) < 2.0 * SIDE_APART {
+        return false;
+    }
+    let u = side / length;
+    let across = Vector::new(-u.y, u.x);
+    let (on, end) = (s.world(ON_LINE), s.world(SIDE_APART));
+    (drawn.points.iter()).any(|(_, _, p)| {
+        let along = (p - from).dot(&u);
+        s.contains(Point::from(*p))
+            && along > end
+            && along < length - end
+            && (p - from).dot(&across).abs() < on
+    })
+}
+
+/// The ticks that join a side set `off` (world) beside its place, drawn
+/// from `from` to `to` there, to the dots of its ends, each end whose dot
+/// `s` shows: a side set beside with nothing to its dots read as a vector
+/// of its own (inversion 2 at l = 45.1 r, 90.25°: n a′_d beside k a′,
+/// touching neither n nor a′_d). Ids `{id}-tick-tail`, `{id}-tick-head`.
+/// None for a side set farther than [`TICK_MOST`]: three sides leaving
+/// the pole on one line, the outer set twice [`SIDE_APART`] beside, drew
+/// a tick 14 units across from o′ that read as a side of its own (l =
+/// 45.1 r, 90.25°, the polygon's panel).
+fn ticks(s: &mut Canvas, id: &str, (from, to): (Point, Point), off: Vector) {
+    let apart = s.page(off.norm());
+    if !(1.0..=TICK_MOST).contains(&apart) {
+        return;
+    }
+    for (end, at) in [("tail", from), ("head", to)] {
+        let dot = at - off;
+        if s.contains(dot) {
+            s.segment(format!("{id}-tick-{end}"), Role::Construction, dot, at);
+        }
+    }
 }
 
 /// The offset (world) that sets the side `from`→`to`, drawn on `s`, off
@@ -453,6 +511,11 @@ fn clear_of_points(s: &Canvas, (from, to): (Vector, Vector), drawn: &Drawn) -> V
         None => Vector::zeros(),
     }
 }
+
+/// The farthest a side is set beside its place and still joined to its
+/// dots by ticks ([`ticks`]), page units: once [`SIDE_APART`] and a
+/// half.
+const TICK_MOST: f64 = 1.5 * SIDE_APART + 0.01;
 
 /// Page distance within which a polygon's point counts as lying on a
 /// side's line ([`clear_of_points`]): a dot's radius and a stroke.

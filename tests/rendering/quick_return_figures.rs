@@ -1,0 +1,81 @@
+//! The quick returns' figures read back from their SVG: the tool's motion
+//! drawn against the driver's turn (time), so that the cutting stroke
+//! takes its larger share of the axis and the return its smaller, the
+//! stroke's end where the time ratio puts it (computed here from the
+//! geometry, not read from the program), the cutting stroke's velocity
+//! forward and the return's back.
+
+use super::polygon_figures::{path as points, svg};
+use slider_crank::FigureName;
+
+/// Engines (l, e, θ at r = 1): the default chain's proportions, a short
+/// rod (time ratio about 9), a long one (about 1), offsets of both signs,
+/// poses in either stroke and at its ends.
+const ENGINES: [(f64, f64, f64); 8] = [
+    (3.0, 0.0, 60.0),
+    (1.05, 0.0, 90.46),
+    (1.08, 0.0, 180.0),
+    (33.4, 0.0, 269.43),
+    (3.12, 1.29, 0.0),
+    (3.12, -1.29, 300.0),
+    (2.0, 0.5, 90.0),
+    (48.5, 0.0, 270.0),
+];
+
+/// The driver's turn over the cutting stroke, degrees: 180° + β with
+/// β = asin((r + e)/l) + asin((r − e)/l) (docs/quick-return.md).
+fn cutting(l: f64, e: f64) -> f64 {
+    180.0 + ((1.0 + e) / l).asin().to_degrees() + ((1.0 - e) / l).asin().to_degrees()
+}
+
+#[test]
+fn the_tool_moves_against_the_driver_s_turn_its_strokes_in_their_shares_of_it() {
+    for name in [
+        FigureName::QuickReturnSlottedLever,
+        FigureName::QuickReturnWhitworth,
+    ] {
+        for (l, e, deg) in ENGINES {
+            let svg = svg(name, l, e, deg);
+            let at = format!("{name:?} at l = {l}, e = {e}, θ = {deg}");
+            let axis = points(&svg, "tool-velocity-axis-x");
+            let (x0, x1, zero) = (axis[0].0, axis[1].0, axis[0].1);
+            let x = |turn: f64| x0 + turn / 360.0 * (x1 - x0);
+            let end = points(&svg, "line-tool-velocity-end");
+            let cut = cutting(l, e);
+            assert!(
+                (end[0].0 - x(cut)).abs() < 0.01,
+                "{at}: the stroke's end drawn at {} for {cut}° of the turn ({})",
+                end[0].0,
+                x(cut)
+            );
+            let cutting = points(&svg, "curve-tool-velocity-cutting");
+            let back = points(&svg, "curve-tool-velocity-return");
+            let within = |p: &(f64, f64), a: f64, b: f64| p.0 >= a - 0.01 && p.0 <= b + 0.01;
+            assert!(cutting.iter().all(|p| within(p, x0, x(cut))), "{at}");
+            assert!(back.iter().all(|p| within(p, x(cut), x1)), "{at}");
+            // At rest at both ends of the turn and at the stroke's end (the
+            // curves' points nearest there, read on either side).
+            let nearest = |curve: &[(f64, f64)], to: f64| {
+                *(curve.iter())
+                    .min_by(|a, b| (a.0 - to).abs().total_cmp(&(b.0 - to).abs()))
+                    .unwrap()
+            };
+            let rest = nearest(&cutting, x0).1;
+            for p in [
+                nearest(&cutting, x(cut)),
+                nearest(&back, x(cut)),
+                nearest(&back, x1),
+            ] {
+                assert!(
+                    (p.1 - rest).abs() < 0.05,
+                    "{at}: {p:?} not at rest ({rest})"
+                );
+            }
+            // Forward (up the page) on the cutting stroke, back on the
+            // return: no point of either on the other side of rest.
+            assert!(cutting.iter().all(|p| p.1 <= rest + 0.05), "{at}");
+            assert!(back.iter().all(|p| p.1 >= rest - 0.05), "{at}");
+            assert!(zero > rest, "{at}: the axis below the curve's rest");
+        }
+    }
+}
