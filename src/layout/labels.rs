@@ -124,6 +124,28 @@ impl Obstacles {
         near.cost_of(&glyphs, OPEN, f64::MIN_POSITIVE) > 0.0
     }
 
+    /// Whether the segment from `a` to `b` (a leader) runs along a line
+    /// drawn that a letter may not sit on (weight [`OPEN`] or more): at
+    /// less than [`ALONG_ANGLE`] to it, within [`ALONG_NEAR`] of it over
+    /// a part of its length, where a reader would take the two for one.
+    pub fn runs_along(&self, a: Point, b: Point) -> bool {
+        let Some(u) = (b - a).try_normalize(0.0) else {
+            return false;
+        };
+        (self.segments.iter()).any(|&(p, q, w)| {
+            let Some(v) = (q - p).try_normalize(0.0) else {
+                return false;
+            };
+            let sine = (u.x * v.y - u.y * v.x).abs();
+            // The leader's points, by quarters, near the line's segment.
+            let near = (0..=4)
+                .map(|k| a + (b - a) * (f64::from(k) / 4.0))
+                .filter(|&m| crate::geom::point_segment_distance(m, p, q) < ALONG_NEAR)
+                .count();
+            w >= OPEN && sine < ALONG_ANGLE.sin() && near >= 2
+        })
+    }
+
     /// Whether the segment from `a` to `b` passes through a box (a label
     /// placed, a part, a point's marker) that does not hold `anchor`.
     pub fn crosses_a_box(&self, a: Point, b: Point, anchor: Point) -> bool {
@@ -948,6 +970,15 @@ pub(crate) const ROOM: f64 = 1.0;
 /// The least weight of a line no letter may sit on (lighter ones open
 /// for letters).
 const OPEN: f64 = 1.0;
+
+/// The angle (radians) under which a leader is taken to run along a
+/// line ([`Obstacles::runs_along`]): 10°.
+const ALONG_ANGLE: f64 = std::f64::consts::PI / 18.0;
+
+/// How near (page units) a leader's points stand to a line it runs
+/// along ([`Obstacles::runs_along`]): a thick link's half-width and the
+/// leader's, with a unit between.
+const ALONG_NEAR: f64 = 3.0;
 
 /// What a place costs more whose glyphs themselves (not only the room
 /// about them) meet something: any place where only the room is crowded

@@ -105,6 +105,7 @@ pub(super) const ALONG_ARC: [f64; 5] = [0.5, 0.35, 0.65, 0.22, 0.78];
 const WIDE_ROOM: f64 = 0.3;
 
 /// A label waiting to be placed once every line is known.
+#[derive(Clone)]
 struct Pending {
     id: String,
     anchor: Point,
@@ -135,12 +136,67 @@ struct Pending {
 }
 
 impl Pending {
+    /// A joint letter of points that coincide ("*B*, *E*", the names
+    /// parted by an upright ", ") as one letter per point at the same
+    /// place, each with its point's id (`label-B`, `label-E`, with the
+    /// panel's prefix and suffix); `None` for any other label.
+    fn apart(&self) -> Option<Vec<Pending>> {
+        if !self.letter || self.line.is_some() || !self.along.is_empty() {
+            return None;
+        }
+        let mut names: Vec<Vec<&crate::figure::Run>> = vec![Vec::new()];
+        for run in self.text.runs() {
+            if run.text == ", " && !run.italic {
+                names.push(Vec::new());
+            } else if let Some(last) = names.last_mut() {
+                last.push(run);
+            }
+        }
+        let plain = |runs: &[&crate::figure::Run]| -> String {
+            runs.iter().map(|r| r.text.as_str()).collect()
+        };
+        let first = plain(names.first()?);
+        let own = format!("label-{first}");
+        let at = self.id.find(&own)?;
+        if names.len() < 2 || names.iter().any(|n| n.is_empty()) {
+            return None;
+        }
+        let markup = |runs: &[&crate::figure::Run]| -> Option<String> {
+            (runs.iter())
+                .map(|r| match (r.subscript || r.superscript, r.italic) {
+                    (true, _) => None,
+                    (false, true) => Some(format!("*{}*", r.text)),
+                    (false, false) => Some(r.text.clone()),
+                })
+                .collect()
+        };
+        (names.iter())
+            .map(|runs| {
+                let id = format!(
+                    "{}label-{}{}",
+                    &self.id[..at],
+                    plain(runs),
+                    &self.id[at + own.len()..]
+                );
+                let text = RichText::parse(&markup(runs)?);
+                Some(Pending {
+                    id,
+                    text,
+                    ..self.clone()
+                })
+            })
+            .collect()
+    }
+
     /// Whether the label says what it marks, and so may stand farther
     /// from it than a letter ([`WIDE_REACH`]): a name or a value, or a
     /// letter with words ("D at ∞" at an arrow towards a point off the
-    /// page); not a letter alone, read with what is nearest.
+    /// page); not a letter alone, read with what is nearest, nor the
+    /// joint letter of points that coincide ("*O*, *M*"), whose names
+    /// are letters alone parted by commas: crossed within reach, it goes
+    /// farther out with a leader to its point, as a letter does.
     fn names_itself(&self) -> bool {
-        !self.letter || self.text.plain().contains(' ')
+        !self.letter || (self.text.plain().split(", ")).any(|name| name.contains(' '))
     }
 }
 
@@ -415,6 +471,50 @@ impl PanelLayout<'_> {
         self.obstacles.build(room, &halves);
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
+        let (mut order, mut placed) = self.arranged(&pending, room, start);
+        // A detail's joint letter of points that coincide there ("B, E")
+        // with no clear place that reads for its point (its narrow
+        // frame, lines leaving the pin every way, other points about):
+        // the points are lettered apart, each by its own letter,
+        // narrower, and the labels placed once more.
+        let apart: Vec<Pending> = match self.detail {
+            true => (order.iter().zip(&placed))
+                .flat_map(|(p, at)| match at.cost >= STRUCK {
+                    true => p.apart().unwrap_or_else(|| vec![(*p).clone()]),
+                    false => vec![(*p).clone()],
+                })
+                .collect(),
+            false => Vec::new(),
+        };
+        if apart.len() > order.len() {
+            self.obstacles.rollback(start);
+            (order, placed) = self.arranged(&apart, room, start);
+        }
+        let joints: Vec<Point> = (order.iter())
+            .filter(|p| p.joint)
+            .map(|p| p.anchor)
+            .collect();
+        let mut nodes = Vec::new();
+        let mut boxes = Vec::new();
+        for (p, at) in order.into_iter().zip(placed) {
+            let others = others(p, &self.points, p.size);
+            if !self.left_to_detail(p, &at, &joints, (joints.iter()).chain(&others)) {
+                nodes.extend(self.label_nodes(p, &at));
+                boxes.push(at.bounds);
+            }
+        }
+        (nodes, boxes)
+    }
+
+    /// The `pending` labels placed (in their order, or, where some could
+    /// not keep clear, in a better one), the obstacles rolled back to
+    /// `start` between tries: the order kept and the places.
+    fn arranged<'p>(
+        &mut self,
+        pending: &'p [Pending],
+        room: &Frame,
+        start: labels::Mark,
+    ) -> (Vec<&'p Pending>, Vec<Placed>) {
         let first: Vec<&Pending> = pending.iter().collect();
         let placed = self.placing(&first, room);
         // Labels crossed once written (a hatching and a detail's frame
@@ -453,20 +553,7 @@ impl PanelLayout<'_> {
             }
             best
         };
-        let joints: Vec<Point> = (order.iter())
-            .filter(|p| p.joint)
-            .map(|p| p.anchor)
-            .collect();
-        let mut nodes = Vec::new();
-        let mut boxes = Vec::new();
-        for (p, at) in order.into_iter().zip(placed) {
-            let others = others(p, &self.points, p.size);
-            if !self.left_to_detail(p, &at, &joints, (joints.iter()).chain(&others)) {
-                nodes.extend(self.label_nodes(p, &at));
-                boxes.push(at.bounds);
-            }
-        }
-        (nodes, boxes)
+        (order, placed)
     }
 
     /// A placed label's text, then its leader if it has one.
@@ -482,8 +569,10 @@ impl PanelLayout<'_> {
             starts_italic(&p.text),
         );
         let leader = at.leader.map(|(a, b)| {
-            let id = match p.id.strip_prefix("label-") {
-                Some(rest) => format!("leader-{rest}"),
+            // `label-B` → `leader-B`, a detail's `detail-label-B` →
+            // `detail-leader-B`; any other id `leader-` before it.
+            let id = match p.id.split_once("label-") {
+                Some((prefix, rest)) => format!("{prefix}leader-{rest}"),
                 None => format!("leader-{}", p.id),
             };
             path(polyline_d(&[a, b], false), pen).tagged(id, "leader")
@@ -647,18 +736,55 @@ impl PanelLayout<'_> {
                     // letters a point with no room beside it (a pin in a
                     // detail's frame is left to the detail instead), the
                     // leader through no label, part or marker.
-                    let far = place(LEADER_REACH * p.size - ROOM, half);
-                    let line = leader_line(&Frame::around(far.0, half), p.anchor, reach);
-                    let clear =
-                        line.is_none_or(|(a, b)| !self.obstacles.crosses_a_box(a, b, p.anchor));
-                    if !lasting(far) && clear {
+                    // A place whose leader runs along a line drawn (the
+                    // crank beside its centre, the leader lost in it) or
+                    // through a box is shut, and the next best looked for.
+                    let far_reach = LEADER_REACH * p.size - ROOM;
+                    let mark = self.obstacles.mark();
+                    let mut found = None;
+                    for _ in 0..LEADER_TRIES {
+                        let far = place_toward(
+                            p.anchor,
+                            half,
+                            p.gap,
+                            far_reach,
+                            Steer {
+                                toward: p.toward,
+                                others: &others,
+                                pair: p.size,
+                                line: None,
+                                dimensions: &self.dimensions,
+                                led: None,
+                                near_first: p.letter && p.along.is_empty(),
+                                farthest: None,
+                            },
+                            &self.obstacles,
+                            room,
+                        );
+                        let b = Frame::around(far.0, half);
+                        if far.1 >= STRUCK && self.obstacles.lasting(&b, p.anchor) {
+                            break;
+                        }
+                        let line = leader_line(&b, p.anchor, reach);
+                        let clear = line.is_none_or(|(a, b)| {
+                            !self.obstacles.crosses_a_box(a, b, p.anchor)
+                                && !self.obstacles.runs_along(a, b)
+                        });
+                        if clear {
+                            found = Some((far, line));
+                            break;
+                        }
+                        self.obstacles.boxed(b);
+                    }
+                    self.obstacles.rollback(mark);
+                    if let Some((far, line)) = found {
                         best = far;
                         leader = line;
                     }
                 }
                 let (centre, cost) = best;
                 let bounds = Frame::around(centre, half);
-                let lasting = lasting(best);
+                let lasting = cost >= STRUCK && self.obstacles.lasting(&bounds, p.anchor);
                 self.obstacles.boxed(bounds);
                 if let Some((a, b)) = leader {
                     self.obstacles.set_weight(1.0);
@@ -721,6 +847,11 @@ struct Placed {
 /// How far, in font sizes, a point's letter crossed within [`REACH`]
 /// looks for a clear place with a leader to its point.
 const LEADER_REACH: f64 = 2.5;
+
+/// How many places farther out a letter tries ([`LEADER_REACH`]) for
+/// one whose leader runs along no line drawn, each tried place shut
+/// before the next.
+const LEADER_TRIES: usize = 8;
 
 /// How far (page units) a leader stops short of its point: clear of a
 /// pin's circle (4.2) and a dot.

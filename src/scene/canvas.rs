@@ -457,14 +457,12 @@ impl Canvas {
     /// drawn.
     fn letter_together(&mut self) {
         let marked = std::mem::take(&mut self.marked);
-        if !self.joins() {
-            return;
-        }
+        let within = self.together_within();
         let pin = |m: &(String, Point, Marker)| m.2 == Marker::Pin;
         let groups = crowds(
             &marked,
             |_| true,
-            |p, q| !(pin(p) && pin(q)) && self.page((p.1 - q.1).norm()) < COINCIDE,
+            |p, q| !(pin(p) && pin(q)) && self.page((p.1 - q.1).norm()) < within,
         );
         for mut group in groups.into_iter().filter(|g| g.len() > 1) {
             // Pins first in the order drawn, then the others by name.
@@ -508,12 +506,13 @@ impl Canvas {
         }
     }
 
-    /// Whether points that coincide on the page are lettered together
-    /// ([`Canvas::letter_together`]): on a main view, not in a detail,
-    /// whose enlargement sets them apart, and whose narrow frame has no
-    /// room for a joint letter beside a pin the lines leave every way.
-    pub(crate) fn joins(&self) -> bool {
-        self.edge_arrows
+    /// The page distance under which points are lettered together
+    /// ([`Canvas::letter_together`]): [`COINCIDE`] on a main view; in a
+    /// detail, whose enlargement sets apart points merely near, only
+    /// those that coincide there exactly ([`EXACTLY`]: E at C at a dead
+    /// centre), which the main view leaves to it.
+    fn together_within(&self) -> f64 {
+        if self.edge_arrows { COINCIDE } else { EXACTLY }
     }
 
     /// The world direction from the nearest of `others` (other than `p`)
@@ -736,6 +735,11 @@ impl Canvas {
 /// letter names them all ([`Canvas::letter_together`]), as the polygons'
 /// images are ([`super::draw::polygons::COINCIDE`]).
 pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
+
+/// Page distance under which two named points are one point in a
+/// detail: a dot inside the other's marker, lettered with it there
+/// ([`Canvas::letter_together`]).
+const EXACTLY: f64 = 1.0;
 
 /// The groups of `things` that crowd, in order: the first thing left
 /// that is `shown`, with every shown thing `near` one of the group

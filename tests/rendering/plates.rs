@@ -3320,3 +3320,54 @@ fn coinciding_points_lettered_apart_or_unnamed_are_caught() {
     assert_eq!(together(&svg("P")), 1);
     assert_eq!(together(&svg("P, D")), 0);
 }
+
+/// The plate of `figure` at a crank of 1, `rod`, `offset` and
+/// `degrees`, run through every rule of the sweep.
+fn failures_at(figure: &'static str, rod: f64, offset: f64, degrees: f64) -> Vec<Failure> {
+    let m = (
+        format!("l={rod} e={offset}"),
+        SliderCrank::new(1.0, rod, offset).unwrap(),
+    );
+    inspect(figure, &m, Some(Angle::deg(degrees))).failures
+}
+
+#[test]
+fn a_detail_letters_points_that_coincide_there_jointly() {
+    // Klein's construction at l = 1.1 r, the inner dead centre: E is C.
+    // The main view leaves both to the crank's detail, which had only
+    // recorded E: nothing named it. The detail now letters them "C, E".
+    for figure in ["fig-65-klein", "fig-66-kisch", "fig-67-example"] {
+        let svg = svg_at(figure, 1.1, 0.0, 180.0);
+        let names = names_in(&svg, "detail-label-C");
+        assert_eq!(names, ["C", "E"], "{figure} at 180°");
+        let plate = Plate::read(&svg);
+        assert_eq!(points_together(&plate, &svg), [], "{figure} at 180°");
+    }
+}
+
+#[test]
+fn a_joint_letter_with_no_clear_place_in_a_detail_is_parted() {
+    // Fig. 63 at l = 50 r, 90°: E is B in the detail, whose narrow frame
+    // leaves "B, E" no place off BD produced. B and E are lettered each
+    // by its own letter there, clear of the lines.
+    let svg = svg_at("fig-63-velocity", 50.0, 0.0, 90.0);
+    assert_eq!(names_in(&svg, "detail-label-B"), ["B"]);
+    assert_eq!(names_in(&svg, "detail-label-E"), ["E"]);
+    assert_eq!(failures_at("fig-63-velocity", 50.0, 0.0, 90.0), []);
+}
+
+#[test]
+fn a_joint_letter_with_no_room_near_its_point_is_led_to_it() {
+    // Ng's torque figure at l = 1.2 r, 180°: M is O, and the torque
+    // arrow circling O leaves "O, M" no clear place within 1.5 em. It had
+    // stood 40 px out, beyond the arrow, as if a name; it now stands
+    // farther out with a leader to O, one not lost along the crank.
+    let plate = plate_at("ng-fig-1-torque", 1.2, 0.0, 180.0);
+    let main = &plate.panels[0];
+    let label = main.labels.iter().find(|l| l.id == "label-O").unwrap();
+    let at = main.markers["O"];
+    let svg = svg_at("ng-fig-1-torque", 1.2, 0.0, 180.0);
+    assert_eq!(names_in(&svg, "label-O"), ["O", "M"]);
+    assert!(led(main, label, "O", at), "no leader from O, M to O");
+    assert_eq!(failures_at("ng-fig-1-torque", 1.2, 0.0, 180.0), []);
+}
