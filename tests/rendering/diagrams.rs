@@ -1093,6 +1093,21 @@ fn ng_fig_8_marks_the_measured_points_and_the_least_force() {
     assert!((least - 72.6).abs() < 0.05 && (right - 70.9).abs() < 0.05);
 }
 
+/// The text of an SVG as read, on one line, runs of white space as one.
+fn one_line(svg: &str) -> String {
+    read_text(svg)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The first number printed after `key` in `text` (a minus sign as −).
+fn number_after(text: &str, key: &str) -> f64 {
+    (text.split(key).skip(1))
+        .find_map(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
+        .unwrap_or_else(|| panic!("no number after {key}"))
+}
+
 /// A root of `f` between `a` and `b` (of opposite signs) by bisection.
 fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     for _ in 0..100 {
@@ -1119,10 +1134,7 @@ fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
         let svg = to_svg(&FigureName::NgFig8Forces.figure(&options).unwrap());
         let least = bisect(&|t| engine(r, l, t).0.d(2), 0.1, 3.0) / DEG;
         let right = bisect(&|t| 0.5 * PI - t - (r * t.sin() / l).asin(), 0.1, 3.0) / DEG;
-        let text = read_text(&svg)
-            .split_whitespace()
-            .collect::<Vec<_>>()
-            .join(" ");
+        let text = one_line(&svg);
         let printed: Vec<(f64, i32)> = (text.split("θ = ").skip(1))
             .filter_map(|t| {
                 let n = t.split('°').next()?;
@@ -1154,35 +1166,57 @@ fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
 }
 
 #[test]
-fn the_polar_diagram_letters_g_with_c_only_where_they_run_into_its_pin() {
-    // CG from the notes (f/ω², as printed), its page length through the
-    // polar panel's map: under 6 units G and G′ are lettered with C and
-    // not drawn; over it each has its dot and letter.
+fn the_polar_diagram_letters_g_with_a_pin_only_where_they_run_into_it() {
+    // CG from the notes (f/ω², as printed); G on the line of stroke and G′
+    // on the crank at CG from C, their page distances from C and B through
+    // the polar panel's map: under 6 units each is lettered with that pin
+    // (C first) and not drawn; over it each has its dot and letter.
     for (l, e, deg) in [
         (2.96, -1.08, 269.36),
         (3.0, 0.0, 30.0),
         (1.86, 0.505, 90.03),
+        (51.8, 0.0, 0.0),
+        (1.06, 0.0, 180.0),
     ] {
         let mut options = FigureOptions::default();
         options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
         options.angle = Some(slider_crank::Angle::deg(deg));
         let svg = to_svg(&FigureName::AccelerationDiagrams.figure(&options).unwrap());
-        let text = read_text(&svg)
-            .split_whitespace()
-            .collect::<Vec<_>>()
-            .join(" ");
-        let cg: f64 = (text.split("CG = ").skip(1))
-            .find_map(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
-            .unwrap();
+        let text = one_line(&svg);
+        let cg = number_after(&text, "CG = ");
         let (_, map) = panel_map(&svg, "label-C");
-        let (o, g) = (map.apply((0.0, 0.0)), map.apply((cg, 0.0)));
-        let page = (g.0 - o.0).hypot(g.1 - o.1);
-        let at = format!("l = {l}, e = {e}, {deg}°: CG {page:.1} units on the page");
-        let joint = text.contains("C, G, G");
-        assert_eq!(joint, page < 6.0, "{at}");
-        assert_eq!(tag(&svg, "point-G").is_some(), !joint, "{at}");
-        assert_eq!(tag(&svg, "label-G1").is_some(), !joint, "{at}");
-        assert_eq!(text.contains("within C’s pin"), joint, "{at}");
+        let t = deg.to_radians();
+        let page = |p: (f64, f64), q: (f64, f64)| {
+            let (a, b) = (map.apply(p), map.apply(q));
+            (a.0 - b.0).hypot(a.1 - b.1)
+        };
+        let pins = [("C", (0.0, 0.0)), ("B", (t.cos(), t.sin()))];
+        for (id, name, p) in [
+            ("G", "G", (cg, 0.0)),
+            ("G1", "G", (cg * t.cos(), cg * t.sin())),
+        ] {
+            let at = format!("l = {l}, e = {e}, {deg}°: {id}");
+            let host = pins.iter().find(|(_, q)| page(p, *q) < 6.0);
+            assert_eq!(
+                tag(&svg, &format!("point-{id}")).is_some(),
+                host.is_none(),
+                "{at}"
+            );
+            assert_eq!(
+                tag(&svg, &format!("label-{id}")).is_some(),
+                host.is_none(),
+                "{at}"
+            );
+            if let Some((pin, _)) = host {
+                let label = &svg[svg.find(&format!("id=\"label-{pin}\"")).unwrap()..];
+                let label = &label[..label.find("</text>").unwrap()];
+                assert!(
+                    label.contains(&format!(">{name}")),
+                    "{at}: not in {pin}'s letter"
+                );
+                assert!(text.contains(&format!("within {pin}’s pin")), "{at}");
+            }
+        }
     }
 }
 
@@ -1195,13 +1229,8 @@ fn primary_secondary_says_where_the_sum_is_drawn_under_the_exact_force() {
         let mut options = FigureOptions::default();
         options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
         let svg = to_svg(&FigureName::PrimarySecondary.figure(&options).unwrap());
-        let text = read_text(&svg)
-            .split_whitespace()
-            .collect::<Vec<_>>()
-            .join(" ");
-        let worst: f64 = (text.split("over the turn is ").nth(1))
-            .and_then(|t| t.split(' ').next()?.replace('−', "-").parse().ok())
-            .unwrap();
+        let text = one_line(&svg);
+        let worst = number_after(&text, "over the turn is ");
         let (_, map) = panel_map(&svg, "curve-primary-secondary");
         let page = (map.apply((0.0, worst)).1 - map.apply((0.0, 0.0)).1).abs();
         assert_eq!(
@@ -1895,10 +1924,7 @@ fn the_crank_pin_loads_of_a_rod_given_are_its_newton_euler_loads() {
             .filter(|(id, _)| svg.contains(&format!("id=\"{id}\""))),
     );
     measure_curves("crank-pin-loads with a rod given", &svg, &expected);
-    let text = read_text(&svg)
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ");
+    let text = one_line(&svg);
     assert!(
         text.contains("The rod: 20 slug, its centre of mass 1.5 ft from the crank pin, its radius of gyration 1 ft. The gas force"),
         "{text}"

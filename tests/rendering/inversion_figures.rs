@@ -7,7 +7,7 @@
 //! drawn inside d's bar.
 
 use super::polygon_figures::{path, svg, text_centre};
-use crate::common::{read_text, tag};
+use crate::common::{attr, read_text, tag};
 use crate::plate::Plate;
 use slider_crank::FigureName;
 
@@ -1137,4 +1137,82 @@ fn letters_of_parallel_edge_arrows_stand_on_their_far_sides() {
         }
     }
     assert!(seen >= 4, "the arrows ran side by side at {seen} letters");
+}
+
+#[test]
+fn a_link_letter_stands_clear_of_the_dots_on_its_link_and_their_names() {
+    // The thirty-eighth review: inversion 4 at l = 2.4 r, e = 1.11 r, 180°
+    // set b right over O_ac's dot, "O_ac b" read as one label (2);
+    // inversion 3 at l = 2.19 r, e = 0.777 r, 180° the same. A link's
+    // letter stands clear of every centre's dot by half an em, and half an
+    // em from the dot's own name.
+    for (name, rod, offset, deg) in [
+        (I4, 2.4, 1.11, 180.0),
+        (I4, 2.45, 1.11, 180.0),
+        (I4, 2.88, 1.19, 180.0),
+        (I4, 2.4, -1.11, 180.0),
+        (I3, 2.19, 0.777, 180.0),
+        (I3, 2.19, 0.777, 181.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        let boxes = |id: &str| plate.texts.iter().find(|t| t.id == id).cloned();
+        for link in ["label-link-a", "label-link-b"] {
+            let Some(letter) = boxes(link) else {
+                continue;
+            };
+            let r = letter.rect;
+            let em = letter.font_size;
+            for dot in ["O-ac", "O-bd"] {
+                let id = format!("point-{dot}");
+                let (Some(cx), Some(cy)) = (attr(&svg, &id, "cx"), attr(&svg, &id, "cy")) else {
+                    continue;
+                };
+                let (x, y): (f64, f64) = (cx.parse().unwrap(), cy.parse().unwrap());
+                let dx = (r.x0 - x).max(x - r.x1).max(0.0);
+                let dy = (r.y0 - y).max(y - r.y1).max(0.0);
+                assert!(
+                    dx.hypot(dy) >= 0.5 * em,
+                    "{name:?} l = {rod}, e = {offset}, {deg}°: {link} {r:?} on the dot {id} ({x}, {y})"
+                );
+                if let Some(other) = boxes(&format!("label-{dot}")) {
+                    let o = other.rect;
+                    let gx = (r.x0 - o.x1).max(o.x0 - r.x1).max(0.0);
+                    let gy = (r.y0 - o.y1).max(o.y0 - r.y1).max(0.0);
+                    assert!(
+                        gx.hypot(gy) >= 0.5 * em,
+                        "{name:?} l = {rod}, e = {offset}, {deg}°: {link} {r:?} against {dot}'s name {o:?}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_plungers_foot_does_not_continue_the_cranks_line() {
+    // The thirty-eighth review: inversion 4 at l = 2.4 r, e = 1.11 r, 180°
+    // drew d's foot square from C along the stroke, on the crank's line:
+    // O_ab, O_ad and the corner read as one straight link (2). At the
+    // dead centres the first piece of d's bar from C stands 10° at least
+    // off the crank's line.
+    for (rod, offset, deg) in [
+        (2.4, 1.11, 180.0),
+        (2.4, 1.11, 0.0),
+        (2.88, 1.19, 180.0),
+        (2.4, -1.11, 180.0),
+    ] {
+        let svg = svg(I4, rod, offset, deg);
+        let (bar, crank) = (path(&svg, "link-frame"), path(&svg, "link-crank"));
+        let (bar, crank) = (bar.get(..2), crank.get(..2));
+        let (Some(&[p0, p1]), Some(&[c0, c1])) = (bar, crank) else {
+            panic!("l = {rod}, e = {offset}, {deg}°: no bar or crank");
+        };
+        let (u, v) = ((p1.0 - p0.0, p1.1 - p0.1), (c1.0 - c0.0, c1.1 - c0.1));
+        let sine = (u.0 * v.1 - u.1 * v.0).abs() / (u.0.hypot(u.1) * v.0.hypot(v.1));
+        assert!(
+            sine >= 10f64.to_radians().sin(),
+            "l = {rod}, e = {offset}, {deg}°: d's foot {p0:?}–{p1:?} on the crank's line {c0:?}–{c1:?}"
+        );
+    }
 }

@@ -215,8 +215,9 @@ fn time_base(ctx: &Ctx, layout: &Layout, f: &FAxis) -> Result<Plot> {
 /// (c) The polar diagram in the mechanism's world coordinates, `tall`
 /// page units high: CG′ = CG on the crank over a turn, simple harmonic
 /// motion's circle, and the construction at the drawn pose.
-/// Also whether G and G′ are lettered with C ([`polar_construction`]).
-fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<(Plot, bool)> {
+/// Also the words saying which of G and G′ are lettered with a pin
+/// ([`polar_construction`]).
+fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<(Plot, Option<String>)> {
     let m = ctx.mechanism;
     let r = m.crank();
     let polar = |deg: f64| {
@@ -264,9 +265,9 @@ fn polar_diagram(ctx: &Ctx, layout: &Layout, tall: f64) -> Result<(Plot, bool)> 
 }
 
 /// The notes: the engine and its speed, the acceleration scale, CG and f
-/// at the drawn pose (saying where G and G′ are lettered `with_c`), and f
+/// at the drawn pose (saying which of G and G′ lie `within` a pin), and f
 /// at the dead centres.
-fn notes(ctx: &Ctx, with_c: bool) -> [String; 6] {
+fn notes(ctx: &Ctx, within: Option<String>) -> [String; 6] {
     let m = ctx.mechanism;
     let (r, omega) = (m.crank(), ctx.omega);
     let w2 = omega * omega;
@@ -295,28 +296,25 @@ fn notes(ctx: &Ctx, with_c: bool) -> [String; 6] {
             short(pose.angle().degrees()),
             sig(cg),
             sig(w2 * cg),
-            if with_c {
-                " (*G* and *G*′ within *C*’s pin in (c))"
-            } else {
-                ""
-            }
+            within.map_or(String::new(), |w| format!(" ({w} in (c))"))
         ),
         "Outer dead centre: *f* = *r*ω²(1 + 1/*n*);".to_string(),
         "inner dead centre: *f* = −*r*ω²(1 − 1/*n*) (in line).".to_string(),
     ]
 }
 
-/// Page distance from C under which G and G′ are lettered with C, not
-/// drawn apart: their dots run into C's pin (at r = 1, l = 2.96, e = −1.08,
+/// Page distance from C or B under which G or G′ is lettered with that
+/// pin, not drawn apart: its dot runs into the pin (at r = 1, l = 2.96, e = −1.08,
 /// 269.36° CG = 0.016 drew three letters about one ring, G and G′ not to
 /// be seen).
 const WITHIN_C: f64 = 6.0;
 
 /// The crank circle, the line of stroke, the crank at the drawn pose, G
 /// on the line of stroke and G′ on the crank with the arc between them;
-/// where they fall within [`WITHIN_C`] of C at `scale` page units to the
-/// world's one, C lettered "C, G, G′" (and true returned).
-fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> bool {
+/// where one falls within [`WITHIN_C`] of C or B at `scale` page units to
+/// the world's one, that pin lettered with it ("C, G, G′", "B, G′"), and
+/// the words saying so returned.
+fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> Option<String> {
     let r = pose.mechanism().crank();
     let c = Point::origin();
     let b = pose.b();
@@ -356,10 +354,29 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> b
     plot.push(Item::new("pin-B", Role::Link, Shape::Pin { centre: b }));
     let g = Point::new(cg, 0.0);
     let g1 = c + u * cg;
-    let apart = cg.abs() * scale >= WITHIN_C;
-    let mut labels = vec![("C", if apart { "*C*" } else { "*C*, *G*, *G*′" }, c)];
-    labels.push(("B", "*B*", b));
-    if apart {
+    // G and G′ each lettered with the first pin, C then B, they run into
+    // on the page (at θ = 0 on long rods G′ is at B, CG ≈ r(1 + 1/n)).
+    let pins = [("C", c), ("B", b)];
+    let host = |p: Point| {
+        pins.iter()
+            .position(|(_, q)| (p - *q).norm() * scale < WITHIN_C)
+    };
+    let (g_host, g1_host) = (host(g), host(g1));
+    let mut joined: [Vec<&str>; 2] = [vec![], vec![]];
+    for (name, at) in [("*G*", g_host), ("*G*′", g1_host)] {
+        if let Some(with) = at.and_then(|k| joined.get_mut(k)) {
+            with.push(name);
+        }
+    }
+    let mut labels: Vec<(&str, String, Point)> = (pins.iter().zip(&joined))
+        .map(|((id, p), with)| {
+            let names: Vec<String> = std::iter::once(format!("*{id}*"))
+                .chain(with.iter().map(|n| n.to_string()))
+                .collect();
+            (*id, names.join(", "), *p)
+        })
+        .collect();
+    if g_host.is_none() || g1_host.is_none() {
         let start = if cg > 0.0 { 0.0 } else { std::f64::consts::PI };
         let end = (g1.y).atan2(g1.x);
         plot.push(Item::new(
@@ -367,11 +384,16 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> b
             Role::Auxiliary,
             super::short_arc(c, cg.abs(), start, end),
         ));
+    }
+    if g_host.is_none() {
         plot.push(Item::new(
             "point-G",
             Role::Construction,
             Shape::Dot { centre: g },
         ));
+        labels.push(("G", "*G*".into(), g));
+    }
+    if g1_host.is_none() {
         plot.push(Item::new(
             "point-G1",
             Role::Construction,
@@ -380,8 +402,7 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> b
                 symbol: Symbol::Disc,
             },
         ));
-        labels.push(("G", "*G*", g));
-        labels.push(("G1", "*G*′", g1));
+        labels.push(("G1", "*G*′".into(), g1));
     }
     for (id, name, p) in labels {
         plot.push(Item::new(
@@ -389,12 +410,16 @@ fn polar_construction(plot: &mut Plot, pose: &Pose, reach: f64, scale: f64) -> b
             Role::Label,
             Shape::Label {
                 anchor: p,
-                text: RichText::parse(name),
+                text: RichText::parse(&name),
                 size: crate::figure::TextSize::Letter,
                 toward: None,
                 line: None,
             },
         ));
     }
-    !apart
+    let within = |(id, with): (&(&str, Point), &Vec<&str>)| {
+        (!with.is_empty()).then(|| format!("{} within *{}*’s pin", with.join(" and "), id.0))
+    };
+    let said: Vec<String> = pins.iter().zip(&joined).filter_map(within).collect();
+    (!said.is_empty()).then(|| said.join(", "))
 }

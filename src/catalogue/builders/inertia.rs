@@ -40,6 +40,14 @@ const TORQUE_RADIUS: f64 = 30.0;
 /// Room kept for an arrow's name and between arrows, page units.
 const ROOM: f64 = 12.0;
 
+/// An inertia-force arrow with a stretch at least this long on the page
+/// (page units) beside no guide is lettered by that stretch's middle, not
+/// beyond its free end.
+const LONG_ARROW: f64 = 5.0 * ROOM;
+
+/// The length of a drawn arrowhead, page units (the layout's).
+const ARROW_HEAD: f64 = 10.0;
+
 /// An arrow shorter than this on the page (page units) is left out: the
 /// notes give its value.
 const SHORTEST: f64 = 2.0;
@@ -91,18 +99,21 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.mechanism(ctx, true, true);
     metadata(&mut sheet, &forces);
     let bottom = mechanism(ctx, &forces, &mut sheet)?;
-    let top = match triangle(ctx, &forces, bottom + 8.0)? {
-        Some(plot) => {
+    let (top, fn_left_out) = match triangle(ctx, &forces, bottom + 8.0)? {
+        Some((plot, left_out)) => {
             let rect = plot.rect();
             sheet.plot(plot);
-            rect.max().y
+            (rect.max().y, left_out)
         }
-        None => bottom,
+        None => (bottom, false),
     };
     // The page holds what was set: a detail or the triangle may take it
     // past the figure's own height.
     sheet.height(top + NOTES + 16.0);
-    sheet.notes(Point::new(20.0, top + 8.0), &notes(ctx, &forces));
+    sheet.notes(
+        Point::new(20.0, top + 8.0),
+        &notes(ctx, &forces, fn_left_out),
+    );
     Ok(sheet.finish())
 }
 
@@ -148,13 +159,7 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
     // the main view.
     let home = details.iter().position(|d| holds_the_arc(d, pose.c()));
     let effort = |panel: &Panel, block: Option<Point>| {
-        torque_arc(
-            pose.c(),
-            pose.b(),
-            block,
-            f.at.crank_effort,
-            panel.transform().scale(),
-        )
+        torque_arc_clear(panel, pose.c(), pose.b(), block, f.at.crank_effort)
     };
     let mut items = inertia_arrow(main, &pose, f, scale);
     if home.is_none() {
@@ -262,7 +267,19 @@ fn inertia_arrow(
     } else {
         (far, -toward)
     };
-    let quarter = block_span(panel, |p| p.y).map_or(0.0, |(lo, hi)| 0.25 * (hi - lo));
+    // Between the line of stroke and a guide running beside it, midway
+    // (a quarter of the block's height off the line); with no guide
+    // beside it, nearer the block's edge, clear of the line of stroke and
+    // of CG along it: a quarter off, it ran tight beside the thick CG and
+    // read as that line.
+    let end = face + out * length;
+    let (x0, x1) = (face.min(end), face.max(end));
+    let guides = guide_spans(panel);
+    let beside = guides
+        .iter()
+        .any(|&(u, v)| u.max(x0) < v.min(x1) - 2.0 * ROOM / scale);
+    let share = if beside { 0.25 } else { 0.4 };
+    let quarter = block_span(panel, |p| p.y).map_or(0.0, |(lo, hi)| share * (hi - lo));
     let away = if pose.b().y > a.y { -1.0 } else { 1.0 };
     let face = Point::new(face, a.y + away * quarter);
     let along = Vector::new(out * length, 0.0);
@@ -273,23 +290,233 @@ fn inertia_arrow(
     } else {
         (face + along, face)
     };
+    // Its letter beyond the arrow's free end, at its height between the
+    // guides: set above or below its middle beside a guide, it stood on
+    // the line of stroke or across the guide from its arrow. A long
+    // arrow's free end reaches C or G, whose letters it ran into
+    // ("C F_i"): where a long stretch of it runs with no guide beside it,
+    // its letter by that stretch's middle, on its side away from the line
+    // of stroke.
+    let (anchor, toward) = match unguided(x0, x1, &guides) {
+        Some((u, v)) if (v - u) * scale >= LONG_ARROW => {
+            (Point::new(0.5 * (u + v), face.y), Vector::new(0.0, away))
+        }
+        _ => (face + along, along),
+    };
     vec![
         Item::new("force-inertia", Role::Force, Shape::Arrow { from, to }),
         Item::new(
             "value-inertia",
             Role::Label,
             Shape::Label {
-                // Beyond the arrow's free end, at its height between the
-                // guides: set above or below its middle, the letter stood
-                // on the line of stroke or across a guide from its arrow.
-                anchor: face + along,
+                anchor,
                 text: RichText::parse("*F*_i"),
                 size: TextSize::Small,
-                toward: Some(along),
+                toward: Some(toward),
                 line: None,
             },
         ),
     ]
+}
+
+/// Room kept between the crank effort's arc (its head's half width
+/// included) and the block, the guides, their hatching and the bearing,
+/// page units.
+const ARC_CLEAR: f64 = 5.0;
+
+/// The radii tried for the crank effort's arc, page units, from the usual
+/// one outwards: the first whose arc stands clear of the block, the
+/// guides and the bearing.
+const ARC_RADII: [f64; 6] = [
+    TORQUE_RADIUS,
+    TORQUE_RADIUS + 4.0,
+    TORQUE_RADIUS + 8.0,
+    TORQUE_RADIUS + 12.0,
+    TORQUE_RADIUS + 16.0,
+    TORQUE_RADIUS + 20.0,
+];
+
+/// The crank effort's arc in `panel` ([`torque_arc`]) at the smallest
+/// radius of [`ARC_RADII`], and with its gap facing the block (`block`)
+/// or set as at any pose, at which the arc, its head and its tail keep
+/// [`ARC_CLEAR`] from the block, the guides with their hatching and the
+/// bearing and stay inside the panel: drawn over the block or the guides'
+/// hatching it read as a mark of theirs. Where no such place is, the
+/// clearest. Its letter is kept off the directions of the panel's other
+/// letters within its reach (a detail's "×N" tag beside C read as one
+/// label with T).
+fn torque_arc_clear(panel: &Panel, c: Point, b: Point, block: Option<Point>, t: f64) -> Vec<Item> {
+    let scale = panel.transform().scale();
+    let obstacles = arc_obstacles(panel);
+    let gaps = match block {
+        Some(_) => vec![block, None],
+        None => vec![None],
+    };
+    let mut best: Option<(f64, Vec<Item>)> = None;
+    for radius in ARC_RADII {
+        let labels = nearby_letters(panel, c, radius);
+        for gap in &gaps {
+            let items = torque_arc(c, b, *gap, t, scale, radius, &labels);
+            let clear = arc_clearance(panel, &items, &obstacles);
+            if clear >= ARC_CLEAR {
+                return items;
+            }
+            if best.as_ref().is_none_or(|(c, _)| clear > *c) {
+                best = Some((clear, items));
+            }
+        }
+    }
+    best.map(|(_, items)| items).unwrap_or_default()
+}
+
+/// The world directions from `c` of the panel's letters whose anchors lie
+/// within two [`ROOM`]s of the circle of page radius `radius` about it,
+/// where the crank effort's letter stands.
+fn nearby_letters(panel: &Panel, c: Point, radius: f64) -> Vec<f64> {
+    let t = panel.transform();
+    panel
+        .items()
+        .iter()
+        .filter_map(|item| match &item.shape {
+            Shape::Label { anchor, .. } => {
+                let d = anchor - c;
+                let page = t.apply_vector(d).norm();
+                ((page - radius).abs() <= 2.0 * ROOM).then(|| d.y.atan2(d.x))
+            }
+            _ => None,
+        })
+        .collect()
+}
+
+/// The page segments the crank effort's arc keeps clear of: the block's
+/// edges, the guides and the outer edge of their hatching, and the
+/// bearing's pedestal with its hatched foot.
+fn arc_obstacles(panel: &Panel) -> Vec<(Point, Point)> {
+    use crate::figure::{BEARING_FOOT, HATCH_DEPTH};
+    let t = panel.transform();
+    let mut out = Vec::new();
+    let ring = |points: &[Point], closed: bool, out: &mut Vec<(Point, Point)>| {
+        let page: Vec<Point> = points.iter().map(|p| t.apply(*p)).collect();
+        out.extend(page.iter().zip(page.iter().skip(1)).map(|(a, b)| (*a, *b)));
+        if closed
+            && page.len() > 2
+            && let (Some(last), Some(first)) = (page.last(), page.first())
+        {
+            out.push((*last, *first));
+        }
+    };
+    for item in panel.items() {
+        match &item.shape {
+            Shape::Block { points } => ring(points, true, &mut out),
+            Shape::Polyline { points, .. } if item.id.starts_with("guide-") => {
+                ring(points, false, &mut out);
+            }
+            Shape::Hatch { from, to, side } => {
+                let (p, q) = (t.apply(*from), t.apply(*to));
+                let v = t.apply_vector(*side);
+                let n = v.norm();
+                if n > 0.0 {
+                    let d = v * (HATCH_DEPTH / n);
+                    out.extend([(p, q), (p + d, q + d), (p, p + d), (q, q + d)]);
+                }
+            }
+            Shape::Bearing { centre, foot } => {
+                let (down, along) = foot.axes();
+                let o = t.apply(*centre);
+                let (depth, half) = BEARING_FOOT;
+                let at = |a: f64, s: f64| o + down * a + along * s;
+                let outer = depth + HATCH_DEPTH;
+                out.extend([
+                    (o, at(depth, -0.6 * half)),
+                    (o, at(depth, 0.6 * half)),
+                    (at(depth, -half), at(depth, half)),
+                    (at(outer, -half), at(outer, half)),
+                    (at(depth, -half), at(outer, -half)),
+                    (at(depth, half), at(outer, half)),
+                ]);
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The least page distance between the arc of `items` and `obstacles`;
+/// nothing where it leaves the panel (less [`ROOM`] for its letter).
+fn arc_clearance(panel: &Panel, items: &[Item], obstacles: &[(Point, Point)]) -> f64 {
+    let Some((centre, radius, start, sweep)) = items.iter().find_map(|i| match i.shape {
+        Shape::Arc {
+            centre,
+            radius,
+            start,
+            sweep,
+            ..
+        } => Some((centre, radius, start, sweep)),
+        _ => None,
+    }) else {
+        return f64::INFINITY;
+    };
+    let t = panel.transform();
+    const STEPS: u32 = 72;
+    let points: Vec<Point> = (0..=STEPS)
+        .map(|k| {
+            let a = start + sweep * f64::from(k) / f64::from(STEPS);
+            t.apply(centre + Vector::new(a.cos(), a.sin()) * radius)
+        })
+        .collect();
+    let r = panel.rect();
+    let inside = points.iter().all(|p| {
+        p.x >= r.min().x + ROOM
+            && p.x <= r.max().x - ROOM
+            && p.y >= r.min().y + ROOM
+            && p.y <= r.max().y - ROOM
+    });
+    if !inside {
+        return f64::NEG_INFINITY;
+    }
+    points
+        .iter()
+        .zip(points.iter().skip(1))
+        .flat_map(|(a, b)| {
+            obstacles
+                .iter()
+                .map(move |(p, q)| crate::geom::segment_distance(*a, *b, *p, *q))
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+/// The longest stretch of `x0`..`x1` (world x) beside none of the
+/// `guides`' spans.
+fn unguided(x0: f64, x1: f64, guides: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let mut pieces = vec![(x0, x1)];
+    for &(u, v) in guides {
+        pieces = pieces
+            .into_iter()
+            .flat_map(|(p, q)| [(p, q.min(u)), (p.max(v), q)])
+            .filter(|(p, q)| q > p)
+            .collect();
+    }
+    pieces
+        .into_iter()
+        .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0)))
+}
+
+/// The guides' extents along x in the panel, world units.
+fn guide_spans(panel: &Panel) -> Vec<(f64, f64)> {
+    panel
+        .items()
+        .iter()
+        .filter_map(|item| match &item.shape {
+            Shape::Polyline { points, .. } if item.id.starts_with("guide-") => {
+                let xs = points.iter().map(|p| p.x);
+                Some((
+                    xs.clone().fold(f64::INFINITY, f64::min),
+                    xs.fold(f64::NEG_INFINITY, f64::max),
+                ))
+            }
+            _ => None,
+        })
+        .collect()
 }
 
 /// The crank effort `t` as the scene's torque arrow about the crank
@@ -298,11 +525,19 @@ fn inertia_arrow(
 /// the block comes within the arc's reach (`block`, its nearest point, a
 /// short rod near the inner dead centre). Nothing at a dead centre, where
 /// T = 0.
-fn torque_arc(c: Point, b: Point, block: Option<Point>, t: f64, scale: f64) -> Vec<Item> {
+fn torque_arc(
+    c: Point,
+    b: Point,
+    block: Option<Point>,
+    t: f64,
+    scale: f64,
+    page_radius: f64,
+    letters: &[f64],
+) -> Vec<Item> {
     if t == 0.0 || scale.is_nan() || scale <= 0.0 {
         return Vec::new();
     }
-    let radius = TORQUE_RADIUS / scale;
+    let radius = page_radius / scale;
     let gap = block
         .filter(|b| (b - c).norm() < radius + ROOM / scale)
         .map(|b| (b.y - c.y).atan2(b.x - c.x));
@@ -311,13 +546,14 @@ fn torque_arc(c: Point, b: Point, block: Option<Point>, t: f64, scale: f64) -> V
     // above C, it stood beside CE and read as E's or CE's name.
     let crank = (b.y - c.y).atan2(b.x - c.x);
     let [right, up] = [0.0, std::f64::consts::FRAC_PI_2];
-    let avoid = [
+    let mut avoid = vec![
         crank,
         right,
         up,
         right + std::f64::consts::PI,
         up - std::f64::consts::PI,
     ];
+    avoid.extend_from_slice(letters);
     torque_arrow(c, t, radius, gap, &avoid).to_vec()
 }
 
@@ -325,7 +561,7 @@ fn torque_arc(c: Point, b: Point, block: Option<Point>, t: f64, scale: f64) -> V
 /// own scale, drawn as the mechanism is (mirrored with it), centred on
 /// the page from `top` down, no taller than it needs. `None` where there
 /// is no force (a = 0).
-fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
+fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<(Plot, bool)>> {
     let pose = ctx.pose();
     let at = &f.at;
     let fi = f.vector();
@@ -359,7 +595,18 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
         .with_caption("The inertia force at the cross-head: *F*_i = *F*_Q + *F*_N, along the rod and on the guides");
     let arrow =
         |id: &str, from: Point, to: Point| Item::new(id, Role::Force, Shape::Arrow { from, to });
-    let label = |id: &str, at: Point, text: &str| {
+    // Each letter by its arrow's middle on the side away from the
+    // triangle's third corner: in a flat triangle F_i's and F_Q's middles
+    // nearly meet, and letters set about them alike stood side by side.
+    let label = |id: &str, from: Point, to: Point, third: Point, text: &str| {
+        let at = from + (to - from) * 0.5;
+        let along = to - from;
+        let across = Vector::new(-along.y, along.x);
+        let out = if across.dot(&(third - at)) > 0.0 {
+            -across
+        } else {
+            across
+        };
         Item::new(
             format!("value-{id}"),
             Role::Label,
@@ -367,25 +614,41 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<Plot>> {
                 anchor: at,
                 text: RichText::parse(text),
                 size: TextSize::Small,
-                toward: None,
+                toward: (out.norm() > 0.0).then_some(out),
                 line: None,
             },
         )
     };
     plot.push(arrow("force-triangle-inertia", o, o + fi));
-    plot.push(label("triangle-inertia", o + fi * 0.5, "*F*_i"));
     plot.push(arrow("force-triangle-rod", o, o + q));
-    plot.push(label("triangle-rod", o + q * 0.5, "*F*_Q"));
-    if at.guide_thrust != 0.0 {
-        plot.push(arrow("force-triangle-guides", o + q, o + fi));
-        plot.push(label("triangle-guides", o + (q + fi) * 0.5, "*F*_N"));
+    if at.guide_thrust == 0.0 {
+        // A flat triangle (the rod on the line of stroke): F_Q is F_i,
+        // one arrow, said so in one label, not two letters side by side
+        // on it.
+        plot.push(label(
+            "triangle-inertia",
+            o,
+            o + fi,
+            o + Vector::new(0.0, -1.0),
+            "*F*_Q = *F*_i",
+        ));
+        return Ok(Some((plot, false)));
     }
-    Ok(Some(plot))
+    plot.push(label("triangle-inertia", o, o + fi, o + q, "*F*_i"));
+    plot.push(label("triangle-rod", o, o + q, o + fi, "*F*_Q"));
+    // F_N no longer than two arrowheads on the page shows a head and no
+    // shaft, a letter with no arrow: left out, the notes say why.
+    let shown = plot.map().apply_vector(fi - q).norm() >= 2.0 * ARROW_HEAD;
+    if shown {
+        plot.push(arrow("force-triangle-guides", o + q, o + fi));
+        plot.push(label("triangle-guides", o + q, o + fi, o, "*F*_N"));
+    }
+    Ok(Some((plot, !shown)))
 }
 
 /// The notes: the engine, the scale, and every force with its value and
 /// unit, the graphical beside the exact.
-fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
+fn notes(ctx: &Ctx, f: &Forces, fn_left_out: bool) -> Vec<String> {
     let m = ctx.mechanism;
     let at = &f.at;
     let (u, fu) = (ctx.unit(), ctx.units.force());
@@ -400,7 +663,7 @@ fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
             String::new()
         }
     };
-    vec![
+    let mut lines = vec![
         format!(
             "*r* = {} {u}, *l* = {} {u}{}, θ = {}°, {} rpm; reciprocating mass *m* = {} {mass_u}, no gas force. Scale: *CG* is the acceleration ω²·*CG* and the inertia force *m*ω²·*CG*: 1 {u} = {} {fu}.",
             short(m.crank()),
@@ -443,7 +706,13 @@ fn notes(ctx: &Ctx, f: &Forces) -> Vec<String> {
             ),
             sig(rounded_off(at.crank_effort_exact, at.inertia_force * m.crank()).abs()),
         ),
-    ]
+    ];
+    if fn_left_out {
+        lines.push(
+            "*F*_N is too short to draw in the triangle of forces at its scale: *F*_Q and *F*_i all but coincide.".to_string(),
+        );
+    }
+    lines
 }
 
 /// `x`, a torque of the size of `scale`, or 0 where it is within the

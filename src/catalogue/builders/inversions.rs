@@ -848,6 +848,10 @@ struct Drawing {
     /// The side of d's bar its letter stands on, once lettered (world);
     /// none before or where d is not lettered beside its bar.
     d_way: Option<Vector>,
+    /// Whether the links' letters are set by their runs clear of pins,
+    /// dots and crossings ([`Drawing::letter_run`]); else by their
+    /// middles (the Coriolis figures' mechanism, which draws no centres).
+    runs: bool,
 }
 
 /// How a view showed the fixed bar, which the figure's other view
@@ -1066,6 +1070,16 @@ const ALONG_LINE: f64 = 0.175;
 /// their letters are tried outside it ([`Drawing::letter_ways`]).
 const WEDGE: f64 = 0.70;
 
+/// How far along a link its letter's place is kept from a pin, a
+/// centre's dot on the link or a line crossing it, page units: two ems
+/// of a letter, so that the letter stands by its own link's run and
+/// clear of the dot's name.
+const LETTER_RUN_CLEAR: f64 = 36.0;
+
+/// A centre's dot within this of a link's line, page units (an em),
+/// stands on the link for its letter ([`Drawing::letter_run`]).
+const ON_LINE: f64 = 18.0;
+
 /// How far across the fixed barrel (in its half heights) the normal at
 /// A is kept from its hatching: past both faces and the strokes' depth.
 const BARREL_REACH: f64 = 4.0;
@@ -1113,6 +1127,7 @@ impl Drawing {
             feet: [None, None],
             normal: Vector::zeros(),
             d_way: None,
+            runs: true,
         }
     }
 
@@ -1129,9 +1144,11 @@ impl Drawing {
     /// The same drawing with no centres' dots to keep the bearings clear
     /// of: for the Coriolis figures' mechanism, which draws no centres
     /// (an undrawn O_bd at A turned C's bearing along the crank, its
-    /// hatching out of the detail's box, at l = 1.1 r, 180°).
+    /// hatching out of the detail's box, at l = 1.1 r, 180°). Its links'
+    /// letters stand by their middles, as its reviewed plates have them.
     fn without_centres(mut self) -> Self {
         self.dots.clear();
+        self.runs = false;
         self
     }
 
@@ -1352,13 +1369,18 @@ impl Drawing {
     /// the crank only where the two would lie together (near 90° with an
     /// offset near r) was read as d changing its shape from pose to pose
     /// and put O_ab's letter at the bend; the leg set beside C T at every
-    /// pose ([`leg_jog`]) keeps one shape and shows both links.
+    /// pose ([`leg_jog`]) keeps one shape and shows both links. Its
+    /// foot runs from C slanting to the leg, not square along the stroke:
+    /// square, it continued the crank's line at the dead centres, and
+    /// crank, pin and foot read as one straight link (inversion 4 at
+    /// l = 2.4 r, e = 1.11 r, 180°).
     fn bar(&self) -> Vec<Point> {
         let q = &self.q;
         if self.m.offset() == 0.0 {
             vec![q.c, q.f]
         } else if q.jog.norm() > 0.0 {
-            vec![q.c, q.c + q.jog, q.t + q.jog, q.f]
+            let g = unit(q.t - q.c).unwrap_or(q.v);
+            vec![q.c, q.c + q.jog + g * q.jog.norm(), q.t + q.jog, q.f]
         } else {
             vec![q.c, q.t, q.f]
         }
@@ -1726,11 +1748,12 @@ impl Drawing {
             },
         );
         let (crank_way, rod_way) = self.letter_ways();
+        let (crank_run, rod_run) = (self.letter_run((c, b)), self.letter_run((b, a)));
         if !self.held(mid(c, b)) {
             self.s
-                .link_letter_toward("link-a", (c, b), "*a*", crank_way);
+                .link_letter_toward("link-a", crank_run, "*a*", crank_way);
         }
-        self.s.link_letter_toward("link-b", (b, a), "*b*", rod_way);
+        self.s.link_letter_toward("link-b", rod_run, "*b*", rod_way);
         let v = self.q.v;
         if self.held(self.q.a) {
             // The detail letters the block where it enlarges it: here, by
@@ -1757,6 +1780,89 @@ impl Drawing {
             mid(corners[1], corners[2]) + self.q.u * s.world(4.0)
         };
         s.letter("link-c", at, "*c*", TextSize::Letter);
+    }
+
+    /// The lines a link's letter keeps its distance from where they
+    /// cross the link: the crank and the rod, d's bar (its outline where
+    /// it is slotted) and the block's sides.
+    fn crossing_lines(&self) -> Vec<Seg> {
+        let (c, b, a) = (self.q.c, self.q.b, self.q.a);
+        let mut lines: Vec<Seg> = vec![(c, b), (b, a)];
+        let outline = |points: &[Point], closed: bool| -> Vec<Seg> {
+            let next = points.iter().copied().cycle().skip(1);
+            let sides = points.iter().copied().zip(next);
+            sides.take(points.len() - usize::from(!closed)).collect()
+        };
+        if self.slotted() {
+            lines.extend(outline(&band(&self.q, self.block.1), true));
+        } else if self.fixed != Link::D {
+            lines.extend(outline(&self.bar(), false));
+        }
+        lines.extend(outline(&self.corners, true));
+        lines
+    }
+
+    /// The part of the link `p q` whose middle its letter is set by: the
+    /// whole link where its middle stands [`LETTER_RUN_CLEAR`] along it
+    /// from its pins, from the centres' dots on it (within
+    /// [`ON_LINE`]) and from every line crossing it
+    /// ([`Drawing::crossing_lines`]); else the widest stretch between two
+    /// of these, where that leaves more room. A letter over a dot on the
+    /// link read as the dot's ("O_ac b", b over O_ac's dot, inversion 4
+    /// at l = 2.4 r, e = 1.11 r, 180°), and one by a crossing as the
+    /// crossing line's (b by d's leg, l = 2.88 r, e = 1.19 r).
+    fn letter_run(&self, (p, q): Seg) -> Seg {
+        if !self.runs {
+            return (p, q);
+        }
+        let map = *self.s.transform();
+        let (from, to) = (map.apply(p), map.apply(q));
+        let length = (to - from).norm();
+        let Some(u) = unit(to - from) else {
+            return (p, q);
+        };
+        let n = Vector::new(-u.y, u.x);
+        let inside = |s: f64| s > 0.0 && s < length;
+        let mut stops = vec![0.0, length];
+        for x in self.dots.iter().map(|x| map.apply(*x)) {
+            let (s, d) = ((x - from).dot(&u), (x - from).dot(&n));
+            if d.abs() <= ON_LINE && inside(s) {
+                stops.push(s);
+            }
+        }
+        for (r, t) in self.crossing_lines() {
+            let (r, t) = (map.apply(r), map.apply(t));
+            let w = t - r;
+            let across = u.x * w.y - u.y * w.x;
+            if across.abs() < 1e-9 * w.norm() {
+                continue;
+            }
+            let k = r - from;
+            // Along the link to the crossing, and along r t.
+            let s = (k.x * w.y - k.y * w.x) / across;
+            let h = (k.x * u.y - k.y * u.x) / across;
+            if (0.0..=1.0).contains(&h) && inside(s) {
+                stops.push(s);
+            }
+        }
+        stops.sort_by(f64::total_cmp);
+        let middle = length / 2.0;
+        let nearest = (stops.iter())
+            .map(|s| (s - middle).abs())
+            .fold(f64::INFINITY, f64::min);
+        if nearest >= LETTER_RUN_CLEAR {
+            return (p, q);
+        }
+        let widest = (stops.windows(2))
+            .filter_map(|w| Some((*w.first()?, *w.get(1)?)))
+            .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)));
+        match widest {
+            Some((lo, hi)) if (hi - lo) / 2.0 > nearest => {
+                let at = |s: f64| p + (q - p) * (s / length);
+                (at(lo), at(hi))
+            }
+            _ => (p, q),
+        }
     }
 
     /// Whether the crank and the rod lie along one line (within
