@@ -34,7 +34,7 @@ mod text;
 use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Role, Shape};
 use crate::figure::{Pen, Style};
 use crate::geom::{Frame, Point, Vector};
-use labels::{NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
+use labels::{NEARER, Obstacles, ROOM, STRUCK, Steer, TOO_NEAR, over_the_other, place_toward};
 pub use mark::{
     Mark, Paint, PathCommand, PathData, Shape as MarkShape, Stroke, TextAnchor, TextMark,
 };
@@ -649,6 +649,7 @@ impl PanelLayout<'_> {
                                 near_first: p.letter && p.along.is_empty() && p.line.is_none(),
                                 farthest: (p.letter && p.along.is_empty() && p.line.is_none())
                                     .then_some(LETTER_FARTHEST * p.size - 2.0 * ROOM),
+                                apart: APART_EMS * p.size,
                             },
                             &self.obstacles,
                             room,
@@ -705,18 +706,25 @@ impl PanelLayout<'_> {
                 // A text naming a line whose nearest place names another
                 // link looks further out too.
                 let misnames = |(_, cost): (Point, f64)| p.line.is_some() && cost >= STRUCK;
-                if p.names_itself() && (lasting(best) || misnames(best)) {
+                // Within half an em of another text, its glyphs clear.
+                let crowds = |(centre, cost): (Point, f64)| {
+                    let grown = Frame::around(centre, half).inflate(APART_EMS * p.size);
+                    (TOO_NEAR..STRUCK).contains(&cost) && self.obstacles.meets_a_text(&grown)
+                };
+                let crowded = crowds(best);
+                if p.names_itself() && (lasting(best) || misnames(best) || crowded) {
                     // A name or a value crossed within a letter's reach by
                     // a line that stays (a detail's magnification beside a
                     // frame among crowding pins) looks further out, no
                     // point holding it near, with a space's room on each
                     // side so that it does not read as one word with a
-                    // letter beside it.
+                    // letter beside it; one within half an em of another
+                    // text ("E″×20"), for a place clear of the texts.
                     let room = Vector::new(WIDE_ROOM * p.size, 0.0);
                     let farther = p.line.map(|_| LINE_REACH);
                     for far in WIDE_REACH.into_iter().chain(farther) {
                         let wide = place(far * p.size - ROOM, half + room);
-                        if !lasting(wide) && !misnames(wide) {
+                        if !lasting(wide) && !misnames(wide) && (!crowded || wide.1 < TOO_NEAR) {
                             best = wide;
                             break;
                         }
@@ -728,7 +736,16 @@ impl PanelLayout<'_> {
                     leader = Some(line);
                 }
                 let framed = self.in_detail_frame(p);
-                if !p.names_itself() && self.points.contains(&p.anchor) && !framed && lasting(best)
+                // Whether a place stands nearer another point than its
+                // own, measured from its middle.
+                let over = |(centre, _): (Point, f64)| {
+                    over_the_other(&Frame::around(centre, half), p.anchor, &others)
+                };
+                let crossed = lasting(best);
+                if !p.names_itself()
+                    && self.points.contains(&p.anchor)
+                    && !framed
+                    && (crossed || over(best) || crowds(best))
                 {
                     // A point's letter crossed within reach by a line
                     // that stays goes to a clear place farther out, a
@@ -739,6 +756,10 @@ impl PanelLayout<'_> {
                     // A place whose leader runs along a line drawn (the
                     // crank beside its centre, the leader lost in it) or
                     // through a box is shut, and the next best looked for.
+                    // So too a letter with no clear place whose nearest
+                    // point is its own: it stands where it must, nearer
+                    // another point, with a leader to its own however
+                    // near it stands.
                     let far_reach = LEADER_REACH * p.size - ROOM;
                     let mark = self.obstacles.mark();
                     let mut found = None;
@@ -757,6 +778,7 @@ impl PanelLayout<'_> {
                                 led: None,
                                 near_first: p.letter && p.along.is_empty(),
                                 farthest: None,
+                                apart: APART_EMS * p.size,
                             },
                             &self.obstacles,
                             room,
@@ -765,7 +787,11 @@ impl PanelLayout<'_> {
                         if far.1 >= STRUCK && self.obstacles.lasting(&b, p.anchor) {
                             break;
                         }
-                        let line = leader_line(&b, p.anchor, reach);
+                        let within = match over(far) {
+                            true => LEADER_LEAST,
+                            false => reach,
+                        };
+                        let line = leader_line(&b, p.anchor, within);
                         let clear = line.is_none_or(|(a, b)| {
                             !self.obstacles.crosses_a_box(a, b, p.anchor)
                                 && !self.obstacles.runs_along(a, b)
@@ -777,15 +803,34 @@ impl PanelLayout<'_> {
                         self.obstacles.boxed(b);
                     }
                     self.obstacles.rollback(mark);
-                    if let Some((far, line)) = found {
-                        best = far;
-                        leader = line;
+                    // A letter that looked farther only for standing over
+                    // another point, or within half an em of another text,
+                    // takes a place there that reads as its own and is
+                    // clear (of the other texts too, where it stood too
+                    // near one), else keeps its own, with a leader where
+                    // it stands over another point far enough out for one.
+                    let better = |far: (Point, f64)| {
+                        far.1 < STRUCK && !over(far) && (over(best) || far.1 < TOO_NEAR)
+                    };
+                    match found {
+                        Some((far, line)) if crossed || better(far) => {
+                            best = far;
+                            leader = line;
+                        }
+                        _ if over(best) => {
+                            let b = Frame::around(best.0, half);
+                            leader = leader_line(&b, p.anchor, LEADER_LEAST).filter(|&(a, b)| {
+                                !self.obstacles.crosses_a_box(a, b, p.anchor)
+                                    && !self.obstacles.runs_along(a, b)
+                            });
+                        }
+                        _ => {}
                     }
                 }
                 let (centre, cost) = best;
                 let bounds = Frame::around(centre, half);
                 let lasting = cost >= STRUCK && self.obstacles.lasting(&bounds, p.anchor);
-                self.obstacles.boxed(bounds);
+                self.obstacles.text(bounds);
                 if let Some((a, b)) = leader {
                     self.obstacles.set_weight(1.0);
                     self.obstacles.segment(a, b);
@@ -856,6 +901,15 @@ const LEADER_TRIES: usize = 8;
 /// How far (page units) a leader stops short of its point: clear of a
 /// pin's circle (4.2) and a dot.
 const LEADER_SHORT: f64 = 6.0;
+
+/// The least distance (page units) from a letter's box to its point at
+/// which a leader is drawn to a letter standing nearer another point
+/// ([`over_the_other`]): [`LEADER_SHORT`] and two units of line.
+const LEADER_LEAST: f64 = LEADER_SHORT + 2.0;
+
+/// The room, in font sizes, a label keeps from any other text
+/// ([`Steer::apart`]): half an em.
+const APART_EMS: f64 = 0.5;
 
 /// The leader from the box `b` to `anchor`: from the box's nearest point
 /// to [`LEADER_SHORT`] short of the anchor; none where the box stands
