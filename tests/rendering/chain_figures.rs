@@ -347,3 +347,208 @@ fn the_frame_is_never_hidden_along_a_moving_link() {
     }
     assert!(checked > 0, "no link checked");
 }
+
+/// Long rods (l, e, θ at r = 1) and page widths where the crank a of
+/// every panel was a speck (l = 53 r: two pin circles, its letter naming
+/// nothing seen), with their neighbours.
+const LONG: [(f64, f64, f64, Option<&str>); 9] = [
+    (53.0, 0.0, 0.0, None),
+    (53.0, 0.0, 1.0, None),
+    (30.0, 0.0, 90.0, None),
+    (30.0, 0.0, 91.0, None),
+    (25.0, 1.5, 270.0, None),
+    (60.0, -1.9, 180.0, None),
+    (40.0, 0.0, 90.0, Some("500")),
+    (40.0, 0.0, 89.0, Some("120mm")),
+    (3.0, 0.0, 50.0, Some("120mm")),
+];
+
+/// Fig. 60 at `(rod, offset, deg)` (r = 1) on a page `width` wide (the
+/// figure's own where `None`).
+fn svg_at(rod: f64, offset: f64, deg: f64, width: Option<&str>) -> String {
+    use slider_crank::catalogue::FigureOptions;
+    use slider_crank::{Angle, SliderCrank};
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+    options.angle = Some(Angle::deg(deg));
+    options.width = width.map(|w| w.parse().unwrap());
+    slider_crank::render::to_svg(&FIG.figure(&options).unwrap())
+}
+
+/// The length on the page of the link `id` (its ends), none where it is
+/// not drawn.
+fn drawn_length(svg: &str, id: &str) -> Option<f64> {
+    crate::common::tag(svg, id)?;
+    let p = path(svg, id);
+    let (s, t) = (p[0], p[p.len() - 1]);
+    Some((t.0 - s.0).hypot(t.1 - s.1))
+}
+
+#[test]
+fn every_link_of_every_panel_is_drawn_at_least_40_units_long() {
+    // At l = 53 r the crank a of each panel was a speck of two pin
+    // circles, no enlargement; at l = 30 r, 90° it could not be seen in
+    // any panel. Each link is drawn 40 units long or more, in the panel
+    // or in its detail; a crank lettered in its detail is lettered there
+    // only, nearer its own link than the rod.
+    const SEEN: f64 = 40.0;
+    let mut details = 0;
+    for (rod, offset, deg, width) in ENGINES.iter().map(|&(l, e, d)| (l, e, d, None)).chain(LONG) {
+        let svg = svg_at(rod, offset, deg, width);
+        let plate = Plate::read(&svg);
+        let what = format!("l = {rod}, e = {offset}, {deg}°, width {width:?}");
+        for (suffix, links) in [
+            ("a", &["crank", "rod", "lever", "frame"][..]),
+            ("b", &["crank", "rod"][..]),
+            ("c", &["crank", "rod"][..]),
+        ] {
+            for link in links {
+                let main = drawn_length(&svg, &format!("link-{link}-{suffix}")).unwrap_or(0.0);
+                let detail = drawn_length(&svg, &format!("detail-link-{link}-{suffix}"));
+                details += usize::from(detail.is_some());
+                let longest = main.max(detail.unwrap_or(0.0));
+                assert!(
+                    longest >= SEEN,
+                    "{what}: ({suffix}) the {link} drawn {main:.1} long, {detail:?} in a detail"
+                );
+            }
+            let Some(_) = crate::common::tag(&svg, &format!("detail-link-crank-{suffix}")) else {
+                continue;
+            };
+            assert!(
+                text_centre(&plate, &format!("label-link-a-{suffix}")).is_none(),
+                "{what}: ({suffix}) a lettered in the panel and in its detail"
+            );
+            let p = text_centre(&plate, &format!("detail-label-link-a-{suffix}"))
+                .unwrap_or_else(|| panic!("{what}: ({suffix}) the detail's crank unlettered"));
+            let seg = |id: &str| {
+                let q = path(&svg, &format!("detail-link-{id}-{suffix}"));
+                (q[0], q[q.len() - 1])
+            };
+            let (crank, rod_b) = (seg("crank"), seg("rod"));
+            let (mine, other) = (
+                segment_distance(p, crank.0, crank.1),
+                segment_distance(p, rod_b.0, rod_b.1),
+            );
+            assert!(
+                mine < other,
+                "{what}: ({suffix}) the detail's a {mine:.1} from the crank, {other:.1} from the rod"
+            );
+        }
+    }
+    assert!(details > 0, "no detail drawn to check");
+}
+
+/// The coupler curves' SVG at `(rod, offset, deg)` (r = 1) on a page
+/// `width` wide (the figure's own where `None`).
+fn coupler_at(rod: f64, offset: f64, deg: f64, width: Option<&str>) -> String {
+    use slider_crank::catalogue::FigureOptions;
+    use slider_crank::{Angle, SliderCrank};
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+    options.angle = Some(Angle::deg(deg));
+    options.width = width.map(|w| w.parse().unwrap());
+    slider_crank::render::to_svg(&FigureName::CouplerCurves.figure(&options).unwrap())
+}
+
+/// The height on the page of the path `id`, none where it is not drawn.
+fn drawn_height(svg: &str, id: &str) -> Option<f64> {
+    crate::common::tag(svg, id)?;
+    let p = path(svg, id);
+    let (lo, hi) = (p.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), q| {
+        (lo.min(q.1), hi.max(q.1))
+    });
+    Some(hi - lo)
+}
+
+#[test]
+fn a_long_rods_ovals_and_crank_are_drawn_to_be_seen() {
+    // At l = 30 r, 170° the ovals were a few units tall and the crank a
+    // speck, C's letter standing at B, no enlargement. Each oval is drawn
+    // at least 40 units tall and the crank 40 units long, in the main
+    // view or a detail, and each point's letter in a detail stands within
+    // an em and a half of its own dot.
+    const SEEN: f64 = 40.0;
+    let mut details = 0;
+    for (rod, offset, deg, width) in [
+        (30.0, 0.0, 170.0, None),
+        (30.0, 0.0, 171.0, None),
+        (30.0, 0.0, 169.0, Some("120mm")),
+        (53.0, -1.9, 270.0, Some("500")),
+        (25.0, 0.5, 90.0, None),
+        (60.0, 1.0, 0.0, None),
+        (4.0, 1.5, 90.0, None),
+        (3.0, 0.0, 91.0, None),
+    ] {
+        let svg = coupler_at(rod, offset, deg, width);
+        let plate = Plate::read(&svg);
+        let what = format!("l = {rod}, e = {offset}, {deg}°, width {width:?}");
+        let crank = drawn_length(&svg, "link-crank").unwrap_or(0.0);
+        let enlarged = drawn_length(&svg, "detail-link-crank-0");
+        assert!(
+            crank.max(enlarged.unwrap_or(0.0)) >= SEEN,
+            "{what}: the crank drawn {crank:.1} long, {enlarged:?} in a detail"
+        );
+        for (k, id) in ["25", "50", "75"].into_iter().enumerate() {
+            let main = drawn_height(&svg, &format!("curve-coupler-{id}")).unwrap_or(0.0);
+            let detail = drawn_height(&svg, &format!("detail-curve-coupler-{id}"));
+            details += usize::from(detail.is_some());
+            assert!(
+                main.max(detail.unwrap_or(0.0)) >= SEEN,
+                "{what}: P{}'s oval drawn {main:.1} tall, {detail:?} in a detail",
+                k + 1
+            );
+            let suffix = format!("P{}-{}", k + 1, k + 1);
+            let Some(letter) = plate
+                .texts
+                .iter()
+                .find(|t| t.id == format!("detail-label-{suffix}"))
+            else {
+                continue;
+            };
+            let dot = format!("detail-point-{suffix}");
+            let p = (
+                crate::common::num(&svg, &dot, "cx"),
+                crate::common::num(&svg, &dot, "cy"),
+            );
+            let gap = letter.rect.distance_to_seg(&Seg(p, p));
+            assert!(
+                gap < 1.5 * letter.font_size,
+                "{what}: P{}'s letter {gap:.1} from its dot in the detail",
+                k + 1
+            );
+        }
+    }
+    assert!(details > 0, "no detail drawn to check");
+}
+
+#[test]
+fn no_oval_is_drawn_in_the_centre_lines_pattern() {
+    // P₃'s oval was drawn long dash and dot, as the line of stroke, a
+    // centre line, running through every oval: where they ran together
+    // it read as a second centre line. Each oval's pattern differs from
+    // the line of stroke's in its kind (dashes and dots, or not).
+    let svg = coupler_at(3.0, 0.0, 40.0, None);
+    let kind = |id: &str| {
+        let dashes = crate::common::attr(&svg, id, "stroke-dasharray").unwrap_or_default();
+        let lengths: Vec<f64> = dashes
+            .split_whitespace()
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        // Dashes with dots between: a long and a short drawn length.
+        let drawn: Vec<f64> = lengths.iter().step_by(2).copied().collect();
+        let long = drawn.iter().any(|&d| d > 4.0);
+        let dot = drawn.iter().any(|&d| d < 2.5);
+        long && dot
+    };
+    assert!(
+        kind("line-stroke"),
+        "the line of stroke is not dash and dot"
+    );
+    for id in ["25", "50", "75"] {
+        assert!(
+            !kind(&format!("curve-coupler-{id}")),
+            "P's oval {id} drawn long dash and dot, as the line of stroke"
+        );
+    }
+}

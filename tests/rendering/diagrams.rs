@@ -1117,6 +1117,134 @@ fn bisect(f: &dyn Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
     0.5 * (a + b)
 }
 
+/// The approximations' errors on a narrow page: each caption broke
+/// inside its formula ("√(n² / − sin²θ) − n", "eq. (2) − / exact") and
+/// the same legend stood under each of the four panels. A formula now
+/// keeps to one line, and one legend, in (a), serves all four.
+#[test]
+fn the_approximation_errors_keep_formulas_whole_and_one_legend() {
+    for width in [None, Some("500"), Some("120mm")] {
+        let mut options = FigureOptions::default();
+        options.width = width.map(|w| w.parse().unwrap());
+        let svg = to_svg(&FigureName::ApproximationError.figure(&options).unwrap());
+        for panel in ["obliquity", "velocity", "acceleration", "rod"] {
+            assert_eq!(
+                svg.contains(&format!("id=\"{panel}-legend-box\"")),
+                panel == "obliquity",
+                "{width:?}: {panel}'s legend"
+            );
+            for id in [format!("{panel}-caption"), format!("{panel}-caption-2")] {
+                let Some(at) = svg.find(&format!("id=\"{id}\"")) else {
+                    continue;
+                };
+                let rest = &svg[at..];
+                let body = &rest[rest.find('>').unwrap() + 1..rest.find("</text>").unwrap()];
+                let line = read_text(body);
+                let line = line.trim();
+                assert!(
+                    !line.ends_with('−') && !line.starts_with('−') && !line.ends_with('('),
+                    "{width:?}: {id} breaks a formula: {line:?}"
+                );
+                assert_eq!(
+                    line.matches('(').count(),
+                    line.matches(')').count(),
+                    "{width:?}: {id} breaks a formula: {line:?}"
+                );
+            }
+        }
+    }
+}
+
+/// The rod's motion at a long rod and at an offset: the angular
+/// velocity's trough of −0.7416 rad/s lay on the −0.75 frame line
+/// (l = 35.3 r), eq. (2a) was clipped flat along the axis at l = 1.63 r,
+/// e = 0.478 r, and at the long rod eq. (2a) lay hidden under the exact
+/// curve though the legend listed it. Each curve now keeps 2 % of its
+/// frame's height from either end, and the notes say where eq. (2a) is
+/// drawn under the exact curve and, with an offset, that it is written
+/// for an in-line engine.
+#[test]
+fn the_rod_s_motion_keeps_its_curves_off_the_frame_and_says_what_it_hides() {
+    use super::polygon_figures::{path, svg};
+    for (r, l, e, deg, under) in [
+        (1.0, 35.3, 0.0, 180.0, true),
+        (1.0, 1.63, 0.478, 0.0, false),
+        (1.0, 1.05, 0.0, 90.0, false),
+        (0.5, 3.0, 0.0, 30.0, true),
+    ] {
+        let svg = svg(FigureName::RodMotion, l / r, e / r, deg);
+        let at = format!("l = {l}, e = {e}, θ = {deg}");
+        for (panel, curves) in [
+            ("angular-velocity", &["curve-rod-angular-velocity"][..]),
+            (
+                "angular-acceleration",
+                &[
+                    "curve-rod-angular-acceleration",
+                    "curve-rod-angular-acceleration-eq-2a",
+                ][..],
+            ),
+        ] {
+            let axis = path(&svg, &format!("{panel}-axis-y"));
+            let (top, bottom) = (axis[0].1.min(axis[1].1), axis[0].1.max(axis[1].1));
+            let room = 0.02 * (bottom - top);
+            for id in curves {
+                for (_, y) in path(&svg, id) {
+                    assert!(
+                        y >= top + room && y <= bottom - room,
+                        "{at}: {id} at y {y} in {top}..{bottom}"
+                    );
+                }
+            }
+        }
+        let text = read_text(&svg);
+        assert_eq!(text.contains("drawn under it"), under, "{at}: {text}");
+        assert_eq!(
+            text.contains("written for an in-line engine"),
+            e != 0.0,
+            "{at}"
+        );
+    }
+}
+
+/// Ng's Fig. 8 (b) with an offset: β = 180° − φ − θ passes 180° at small
+/// θ where φ < 0, and an axis ending at 180° cut the curve off near
+/// θ = 20° with no word (l = 3.88 r, e = 1.65 r). The curve now spans the
+/// whole axis of θ, and its axis of β covers it (β computed here).
+#[test]
+fn ng_fig_8_draws_the_transmission_angle_over_every_crank_angle() {
+    for (l, e) in [(3.88, 1.65), (3.88, -1.65), (2.88, 0.0), (1.2, 0.19)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, e).unwrap());
+        let svg = to_svg(&FigureName::NgFig8Forces.figure(&options).unwrap());
+        let axis = super::polygon_figures::path(&svg, "transmission-axis-x");
+        let curve = super::polygon_figures::path(&svg, "curve-transmission-angle");
+        let (first, last) = (curve[0], curve[curve.len() - 1]);
+        assert!(
+            (first.0 - axis[0].0).abs() < 0.01 && (last.0 - axis[1].0).abs() < 0.01,
+            "l = {l}, e = {e}: β drawn from {} to {} of {:?}",
+            first.0,
+            last.0,
+            axis
+        );
+        // β at θ = 0, where sin φ = −e/l (the line of stroke e above the
+        // crank centre), below the axis's top tick.
+        let beta0 = 180.0 + (e / l).asin().to_degrees();
+        let ticks: Vec<f64> = read_text(&svg)
+            .split_whitespace()
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        let top = ticks
+            .iter()
+            .copied()
+            .filter(|t| t % 30.0 == 0.0)
+            .fold(0.0, f64::max);
+        assert!(
+            top >= beta0 - 1e-9,
+            "l = {l}, e = {e}: axis to {top}, β(0) = {beta0}"
+        );
+    }
+}
+
 #[test]
 fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
     // At long rods the two are hundredths of a degree apart: the figure
@@ -1303,6 +1431,184 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
             o
         });
         assert!(r.is_err(), "{bad}");
+    }
+}
+
+/// The first straight line (`M x y L x y`) written after `id` in `svg`:
+/// an arrow's shaft.
+fn shaft(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let d = &svg[at..];
+    let d = &d[d.find(" d=\"").unwrap() + 4..];
+    let n: Vec<f64> = (d[..d.find('"').unwrap()])
+        .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+        .filter_map(|t| t.parse().ok())
+        .collect();
+    ((n[0], n[1]), (n[2], n[3]))
+}
+
+/// The tail and the tip of arrow `id`: its shaft's start and its head's
+/// first point (a head is drawn from the tip).
+fn tail_and_tip(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let mut starts = svg[at..].split(" d=\"M").skip(1).map(|s| {
+        let n: Vec<f64> = s
+            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+            .take(2)
+            .map(|t| t.parse().unwrap())
+            .collect();
+        (n[0], n[1])
+    });
+    (starts.next().unwrap(), starts.next().unwrap())
+}
+
+/// The direct and reverse cranks near θ = 90° and at short rods and
+/// offsets: the projection joining the cranks' tips ran along both
+/// vertical cranks and doubled them; a resultant of −87 lbf beside cranks
+/// of 3427 was a bare head at the centre, and "primary" in (c) named a
+/// 6-unit nub; the notes put a gap of 10 400 lbf down to the offset's
+/// term alone, about 3 550 lbf, and said nothing of a gap of 11 600 lbf
+/// at l = 1.07 r with no offset. Now no arrow is drawn under a head and a
+/// half, the projection is left out within 10° of the cranks, and the
+/// notes give the gap and what makes it up.
+#[test]
+fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap() {
+    for (l, e, deg) in [
+        (2.74, -1.42, 90.73),
+        (2.68, -1.05, 269.19),
+        (1.07, 0.0, 89.73),
+        (2.74, -1.42, 180.0),
+        (6.0, 0.0, 30.0),
+        (1.07, 0.0, 0.0),
+        (40.0, 0.0, 91.0),
+    ] {
+        let svg = super::polygon_figures::svg(FigureName::DirectReverseCranks, l, e, deg);
+        let at = format!("l = {l}, e = {e}, θ = {deg}");
+        let ids: Vec<&str> = svg
+            .split("id=\"")
+            .skip(1)
+            .filter_map(|s| s.split('"').next())
+            .filter(|id| id.starts_with("force-") || id.starts_with("component-"))
+            .collect();
+        for id in &ids {
+            let (a, b) = tail_and_tip(&svg, id);
+            let length = (b.0 - a.0).hypot(b.1 - a.1);
+            assert!(length >= 14.9, "{at}: {id} {length:.1} long");
+        }
+        let near_90 = deg.to_radians().cos().abs() < 10f64.to_radians().sin();
+        assert!(
+            !(near_90 && svg.contains("id=\"projection-primary\"")),
+            "{at}: the primary cranks' projection along them"
+        );
+        let meta = metadata(&svg);
+        let c = &meta["cranks"];
+        let value = |k: &str| c[k].as_f64().unwrap();
+        let gap = value("exact") - value("primary") - value("secondary");
+        let k = 2.0 * value("primary_crank_force");
+        let text = read_text(&svg);
+        let said =
+            text.contains("make up the other") || text.contains("which they leave out: here");
+        assert_eq!(said, gap.abs() > 5e-3 * k, "{at}: gap {gap}");
+        if said {
+            let written: f64 = text
+                .split(if e == 0.0 {
+                    "make up the other "
+                } else {
+                    "which they leave out: here "
+                })
+                .nth(1)
+                .and_then(|t| t.split_whitespace().next())
+                .map(|t| t.replace('−', "-"))
+                .and_then(|t| t.parse().ok())
+                .unwrap_or_else(|| panic!("{at}: no gap in {text}"));
+            assert!(
+                (written - gap).abs() < 1e-3 * gap.abs(),
+                "{at}: {written} for {gap}"
+            );
+        }
+    }
+}
+
+/// Ng's Fig. 2 at tilts from 0.5° to 89.99°: at 89.58° the weight's
+/// component along the plane lay hidden under the weight, N and
+/// mg cos φ were bare heads, and the wedge's upright side ran with the
+/// plane as one double line; at 5° N's head ran off the page. Every
+/// force is now drawn at least two heads long and on the page, a
+/// component within 10° of the weight is set beside it, a plane within
+/// 15° of upright is a hatched line, and an arrow drawn longer than to
+/// scale is said so in the notes.
+#[test]
+fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
+    for deg in [0.5, 5.0, 45.0, 80.0, 85.0, 89.1, 89.58, 89.99] {
+        let mut o = FigureOptions::default();
+        o.angle = Some(slider_crank::Angle::deg(deg));
+        let svg = to_svg(&FigureName::NgFig2Incline.figure(&o).unwrap());
+        let plate = crate::plate::Plate::read(&svg);
+        let ids = [
+            "force-weight",
+            "force-normal",
+            "force-friction",
+            "component-along",
+            "component-across",
+        ];
+        for id in ids {
+            let (a, b) = shaft(&svg, id);
+            let length = (b.0 - a.0).hypot(b.1 - a.1);
+            // The shaft ends where the head (10 units) begins.
+            assert!(length >= 10.0, "{deg}°: {id} {length:.1} long");
+            for (x, y) in [a, b] {
+                assert!(
+                    (0.0..=plate.width).contains(&x) && (0.0..=plate.height).contains(&y),
+                    "{deg}°: {id} off the page at ({x}, {y})"
+                );
+            }
+        }
+        let (w0, w1) = shaft(&svg, "force-weight");
+        let off_weight = |p: (f64, f64)| (p.0 - w0.0).abs();
+        for id in ["component-along", "component-across"] {
+            let (a, b) = shaft(&svg, id);
+            let slant = ((b.0 - a.0).atan2(b.1 - a.1)).to_degrees().abs();
+            let beside = off_weight(a).min(off_weight(b));
+            assert!(
+                slant > 10.1 || beside > 6.0,
+                "{deg}°: {id} along the weight ({slant:.1}°, {beside:.1} off)"
+            );
+        }
+        assert!(w1.1 > w0.1, "{deg}°: the weight points down the page");
+        let plane: Vec<f64> = (attr(&svg, "plane", "d").unwrap())
+            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
+            .filter_map(|t| t.parse().ok())
+            .collect();
+        let wedge = plane.len() > 4;
+        assert_eq!(wedge, deg < 75.0, "{deg}°: wedge drawn {wedge}");
+        assert_eq!(
+            svg.contains("id=\"hatch-plane\""),
+            !wedge,
+            "{deg}°: a steep plane hatched"
+        );
+        // Said where drawn longer, with the share of the weight they are.
+        let longer = svg.contains("drawn longer than to scale");
+        assert_eq!(longer, ![45.0, 80.0].contains(&deg), "{deg}°");
+        if longer {
+            let text = read_text(&svg);
+            let share: f64 = text
+                .split("longer than to scale")
+                .next()
+                .and_then(|t| t.rsplit('(').next())
+                .and_then(|t| t.split_whitespace().next())
+                .and_then(|t| t.parse().ok())
+                .unwrap_or_else(|| panic!("{deg}°: no share in {text}"));
+            let (sin, cos) = deg.to_radians().sin_cos();
+            let exact = sin.min(cos);
+            assert!(
+                (share - exact).abs() < 1e-3 * exact,
+                "{deg}°: {share} for {exact}"
+            );
+        }
     }
 }
 

@@ -1216,3 +1216,193 @@ fn the_plungers_foot_does_not_continue_the_cranks_line() {
         );
     }
 }
+
+#[test]
+fn an_inversion_s_detail_enlarges_one_and_a_half_times_or_is_not_drawn() {
+    // The thirty-eighth review: inversion 2 at l = 3.89 r, e = −1.57 r,
+    // 0° drew the crank again ×1 below the main view, a copy that added
+    // nothing, the main view leaving its pins to it (2.5). A detail
+    // enlarges ×1.5 at least; where none is drawn, the main view letters
+    // the crank's pins.
+    let mut drawn = 0;
+    for (name, engine) in [
+        (I2, (3.89, -1.57, 0.0)),
+        (I2, (3.84, -1.57, 0.0)),
+        (I2, (3.94, -1.57, 0.0)),
+        (I2, (3.89, 1.57, 0.0)),
+        (I2, (3.89, -1.57, 1.0)),
+        (I2, (3.89, -1.57, 359.0)),
+        (I3, (3.89, -1.57, 0.0)),
+        (I2, (40.0, 0.0, 60.0)),
+        (I3, (40.0, 0.0, 60.0)),
+    ] {
+        let svg = svg_at(name, engine, None);
+        let at = format!("{name:?} {engine:?}");
+        let text = read_text(&svg);
+        match text.split("enlarged ×").nth(1) {
+            Some(rest) => {
+                let x: f64 = (rest.split(|c: char| !(c.is_ascii_digit() || c == '.')))
+                    .next()
+                    .and_then(|n| n.parse().ok())
+                    .unwrap_or_else(|| panic!("{at}: no magnification"));
+                assert!(x >= 1.5, "{at}: a detail ×{x}");
+                drawn += 1;
+            }
+            None => {
+                for key in ["C", "B"] {
+                    assert!(
+                        tag(&svg, &format!("label-{key}")).is_some(),
+                        "{at}: no detail and {key} unlettered"
+                    );
+                }
+            }
+        }
+    }
+    assert!(drawn >= 2, "a long rod's crank enlarged at {drawn} engines");
+}
+
+/// The gap between two page boxes (0 where they meet).
+fn gap(a: &crate::plate::Rect, b: &crate::plate::Rect) -> f64 {
+    let dx = (a.x0.max(b.x0) - a.x1.min(b.x1)).max(0.0);
+    let dy = (a.y0.max(b.y0) - a.y1.min(b.y1)).max(0.0);
+    dx.hypot(dy)
+}
+
+#[test]
+fn the_letters_of_the_edge_arrows_stand_apart_each_by_its_own_arrow_s_tail() {
+    // The thirty-eighth review: inversion 3 at l = 2.36 r, e = 1.14 r,
+    // 269.57° set "to O_bd" and "O_cd at ∞" between their two arrows,
+    // run together as one label (2.5); at l = 1.07 r, 90.03° "O_cd at ∞"
+    // stood by its arrow's middle, between two slanting arrows. Each
+    // letter stands by its own arrow's tail, nearer it than any other
+    // arrow, and half an em at least from another's letter.
+    let mut pairs = 0;
+    for (name, engine) in [
+        (I3, (2.36, 1.14, 269.57)),
+        (I3, (2.31, 1.14, 269.57)),
+        (I3, (2.41, 1.14, 269.57)),
+        (I3, (2.36, 1.14, 268.57)),
+        (I3, (2.36, 1.14, 270.57)),
+        (I3, (2.36, -1.14, 269.57)),
+        (I3, (1.07, 0.0, 90.03)),
+        (I3, (1.02, 0.0, 90.03)),
+        (I3, (1.1, 0.0, 90.03)),
+        (I3, (1.07, 0.0, 91.03)),
+        (I3, (1.07, 0.0, 89.03)),
+        (I2, (1.08, 0.0, 269.31)),
+    ] {
+        let svg = svg_at(name, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} {engine:?}");
+        let mut arrows = Vec::new();
+        for key in ["O-bd", "O-ac", "O-cd"] {
+            for kind in ["offpage", "infinity"] {
+                if let Some((tail, head)) = shaft(&svg, &format!("{kind}-{key}")) {
+                    let label = (plate.panels.iter())
+                        .flat_map(|p| &p.labels)
+                        .find(|l| l.id == format!("label-{key}"))
+                        .unwrap_or_else(|| panic!("{at}: {key}'s arrow unlettered"));
+                    arrows.push((key, kind, tail, head, label.clone()));
+                }
+            }
+        }
+        for (key, kind, tail, head, label) in &arrows {
+            let own = label.rect.distance_to_seg(&crate::plate::Seg(*tail, *head));
+            // A centre at infinity's letter stands level with the
+            // arrow's tail half or behind it, along the arrow.
+            let r = &label.rect;
+            let centre = ((r.x0 + r.x1) / 2.0, (r.y0 + r.y1) / 2.0);
+            let middle = ((tail.0 + head.0) / 2.0, (tail.1 + head.1) / 2.0);
+            let along = (centre.0 - middle.0) * (head.0 - tail.0)
+                + (centre.1 - middle.1) * (head.1 - tail.1);
+            assert!(
+                *kind == "offpage" || along <= 0.0,
+                "{at}: {key}'s letter {r:?} by its arrow's head half, not its tail {tail:?}"
+            );
+            for (other, _, t, h, l) in &arrows {
+                if other == key {
+                    continue;
+                }
+                pairs += 1;
+                let theirs = label.rect.distance_to_seg(&crate::plate::Seg(*t, *h));
+                assert!(
+                    own < theirs,
+                    "{at}: {key}'s letter {own:.1} from its arrow, {theirs:.1} from {other}'s"
+                );
+                let apart = gap(&label.rect, &l.rect);
+                assert!(
+                    apart >= 0.5 * label.font_size,
+                    "{at}: {key}'s and {other}'s letters {apart:.1} apart"
+                );
+            }
+        }
+    }
+    assert!(pairs >= 12, "two arrows lettered at {pairs} letters");
+}
+
+#[test]
+fn an_edge_arrow_s_letter_does_not_stand_on_a_link_s_line_produced() {
+    // The thirty-eighth review: inversion 4 at l = 2.69 r, 269.36° set
+    // "to O_bd" on the line of d's leg produced, where it read as the
+    // leg's letter (2.5). An arrow's letter stands off every link's line
+    // produced beyond its ends, as far as a reader follows it.
+    const I4: FigureName = FigureName::Inversion4HandPump;
+    let mut seen = 0;
+    for (name, engine) in [
+        (I4, (2.69, 1.01, 269.36)),
+        (I4, (2.64, 1.01, 269.36)),
+        (I4, (2.74, 1.01, 269.36)),
+        (I4, (2.69, 1.01, 268.36)),
+        (I3, (2.36, 1.14, 269.57)),
+        (I3, (1.07, 0.0, 90.03)),
+    ] {
+        let svg = svg_at(name, engine, None);
+        let plate = Plate::read(&svg);
+        let at = format!("{name:?} {engine:?}");
+        let mut produced = Vec::new();
+        for link in ["link-frame", "link-crank", "link-rod"] {
+            if tag(&svg, link).is_none() {
+                continue;
+            }
+            for w in path(&svg, link).windows(2) {
+                let (p, q) = (w[0], w[1]);
+                let len = (q.0 - p.0).hypot(q.1 - p.1);
+                // A line an em long at least, produced as far as a
+                // reader follows it (nine em).
+                if len < 17.0 {
+                    continue;
+                }
+                let u = ((q.0 - p.0) / len, (q.1 - p.1) / len);
+                let far = 150.0;
+                produced.push((
+                    link,
+                    crate::plate::Seg(q, (q.0 + u.0 * far, q.1 + u.1 * far)),
+                ));
+                produced.push((
+                    link,
+                    crate::plate::Seg(p, (p.0 - u.0 * far, p.1 - u.1 * far)),
+                ));
+            }
+        }
+        for key in ["O-bd", "O-ac", "O-cd"] {
+            let lettered = ["offpage", "infinity"]
+                .iter()
+                .any(|kind| tag(&svg, &format!("{kind}-{key}")).is_some());
+            let label = (plate.panels.iter())
+                .flat_map(|p| &p.labels)
+                .find(|l| l.id == format!("label-{key}"));
+            let (true, Some(label)) = (lettered, label) else {
+                continue;
+            };
+            seen += 1;
+            for (link, line) in &produced {
+                assert!(
+                    label.rect.clip(line).is_none(),
+                    "{at}: {key}'s letter {:?} on {link}'s line produced {line:?}",
+                    label.rect
+                );
+            }
+        }
+    }
+    assert!(seen >= 8, "arrows lettered at {seen} engines");
+}

@@ -1385,7 +1385,7 @@ fn group_paths(svg: &str, id: &str) -> Vec<Vec<(f64, f64)>> {
         .map(|rest| {
             let d = &rest[..rest.find('"').expect("a closed d")];
             let numbers: Vec<f64> = d
-                .split(|c: char| c == 'M' || c == 'L' || c == 'Z' || c.is_whitespace())
+                .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
                 .filter_map(|w| w.parse().ok())
                 .collect();
             numbers.chunks(2).map(|p| (p[0], p[1])).collect()
@@ -1755,4 +1755,108 @@ fn the_slotted_bar_s_letter_stands_by_the_bar_not_in_the_crank_s_box() {
             at.0
         );
     }
+}
+
+#[test]
+fn omega_s_letter_keeps_clear_of_its_arc_s_head() {
+    // The nineteenth review (2.5): at l = 45.1 r, 269.96° inversion 2's
+    // ω, set by its arc's middle, touched the arc's head, on the whole
+    // mechanism and in the crank's detail. The letter now keeps a
+    // quarter of an em (4.25 units at 17) from every edge of the head,
+    // here and at the neighbouring engines and the defaults.
+    use crate::plate::Seg;
+    for (name, rod, offset, deg) in [
+        (FigureName::CoriolisInversion2, 45.1, 0.0, 269.96),
+        (FigureName::CoriolisInversion2, 45.1, 0.0, 268.96),
+        (FigureName::CoriolisInversion2, 45.1, 0.0, 270.96),
+        (FigureName::CoriolisInversion2, 45.05, 0.0, 269.96),
+        (FigureName::CoriolisInversion2, 45.15, 0.0, 269.96),
+        (FigureName::CoriolisInversion2, 3.0, 0.0, 60.0),
+        (FigureName::CoriolisInversion3, 3.0, 0.0, 60.0),
+        (FigureName::CoriolisInversion3, 45.1, 0.0, 269.96),
+        (FigureName::CoriolisInversion2, 1.85, -0.65, 0.0),
+        (FigureName::CoriolisInversion2, 1.08, 0.0, 180.0),
+    ] {
+        let svg = svg(name, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        for prefix in ["", "detail-"] {
+            let arc = format!("{prefix}arc-omega");
+            if !svg.contains(&format!("id=\"{arc}\"")) {
+                continue;
+            }
+            let id = format!("{prefix}label-omega");
+            let label = (plate.texts.iter())
+                .find(|t| t.id == id)
+                .unwrap_or_else(|| panic!("no {id}"));
+            let paths = group_paths(&svg, &arc);
+            let head = paths.get(1).unwrap_or_else(|| panic!("{arc} has no head"));
+            let gap = (0..head.len())
+                .map(|k| Seg(head[k], head[(k + 1) % head.len()]))
+                .map(|g| label.rect.distance_to_seg(&g))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                gap >= 0.25 * label.font_size,
+                "{name:?} l = {rod} r, e = {offset} r, {deg}°: {id} {gap:.2} from its head"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_closing_point_s_letter_stands_by_its_own_dot() {
+    // The nineteenth review (2.5): at l = 1.85 r, e = −0.65 r, 0°
+    // inversion 2's a′_d, 12 units above n (the tangential component too
+    // short to draw), had no room by its dot among the sides there and
+    // was lettered across o′a′ from it. The detail about the Coriolis
+    // component now takes a′_d and n in too. Wherever a′_d is lettered,
+    // its letter stands within 1.5 em of its dot, no side runs between
+    // them (from the dot to the nearest point of the letter's box), and
+    // no other dot is nearer the letter. (At 359° the detail's ×2.5
+    // still leaves the letter no place by its dot: it is set across o′a′
+    // there, as at 1.8 r and 1°, where no detail is drawn.)
+    let mut failures = Vec::new();
+    for (rod, offset, deg) in [
+        (1.85, -0.65, 0.0),
+        (1.9, -0.65, 0.0),
+        (1.85, 0.65, 180.0),
+        (3.0, 0.0, 60.0),
+    ] {
+        let svg = svg(FigureName::CoriolisInversion2, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        let all: Vec<Side> = sides(&svg, true);
+        for prefix in ["", "detail-"] {
+            let id = format!("{prefix}label-ad2");
+            let Some(label) = plate.texts.iter().find(|t| t.id == id) else {
+                continue;
+            };
+            let at = dot(&svg, &format!("{prefix}point-ad2"));
+            let r = label.rect;
+            let own = r.distance_to(at);
+            let engine = format!("l = {rod} r, e = {offset} r, {deg}°: {id}");
+            if own > 1.5 * label.font_size {
+                failures.push(format!("{engine} {own:.1} from its dot"));
+            }
+            let near = (at.0.clamp(r.x0, r.x1), at.1.clamp(r.y0, r.y1));
+            let ours = |id: &str| {
+                id.starts_with(&format!("{prefix}acceleration-"))
+                    && (prefix == "detail-" || !id.starts_with("detail-"))
+            };
+            for (side, p, q) in all.iter().filter(|s| ours(&s.0)) {
+                let ends_here = [p, q].iter().any(|e| (e.0 - at.0).hypot(e.1 - at.1) < 3.0);
+                if !ends_here && segments_apart((at, near), (*p, *q)) == 0.0 {
+                    failures.push(format!("{engine}: {side} runs between it and its dot"));
+                }
+            }
+            for other in ["o2", "a2", "n", "k"] {
+                let key = format!("{prefix}point-{other}");
+                if svg.contains(&format!("id=\"{key}\"")) {
+                    let d = r.distance_to(dot(&svg, &key));
+                    if d < own {
+                        failures.push(format!("{engine} {own:.1} from its dot, {d:.1} from {key}"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
 }

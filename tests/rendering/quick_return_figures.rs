@@ -79,3 +79,71 @@ fn the_tool_moves_against_the_driver_s_turn_its_strokes_in_their_shares_of_it() 
         }
     }
 }
+
+/// The cutting stroke's greatest height from the zero line on the page,
+/// the return's, and the zero line's page y, read from a panel's curves.
+fn heights(svg: &str, panel: &str) -> (f64, f64, f64) {
+    let cutting = points(svg, &format!("curve-{panel}-cutting"));
+    let back = points(svg, &format!("curve-{panel}-return"));
+    // The zero line: rest for the velocity, no acceleration for the
+    // acceleration.
+    let rest = points(svg, &format!("{panel}-zero-y"))[0].1;
+    let peak = |c: &[(f64, f64)]| c.iter().map(|p| (p.1 - rest).abs()).fold(0.0, f64::max);
+    (peak(&cutting), peak(&back), rest)
+}
+
+#[test]
+fn a_cutting_stroke_the_return_dwarfs_is_drawn_again_enlarged_to_be_read() {
+    // Whitworth at l = 1.1 r: a 49° return, its spike 21 times the
+    // cutting speed; the default chain and a long rod: no enlargement.
+    for (name, l, e, deg) in [
+        (FigureName::QuickReturnWhitworth, 1.1, 0.0, 0.0),
+        (FigureName::QuickReturnWhitworth, 1.05, 0.0, 90.46),
+        (FigureName::QuickReturnSlottedLever, 1.05, 0.0, 180.0),
+        (FigureName::QuickReturnWhitworth, 3.0, 0.0, 60.0),
+        (FigureName::QuickReturnSlottedLever, 33.4, 0.0, 269.43),
+    ] {
+        let svg = svg(name, l, e, deg);
+        let at = format!("{name:?} at l = {l}, e = {e}, θ = {deg}");
+        for panel in ["tool-velocity", "tool-acceleration"] {
+            let (cut, back, rest) = heights(&svg, panel);
+            let id = format!("curve-{panel}-cutting-enlarged");
+            let drawn = svg.contains(&format!("id=\"{id}\""));
+            assert_eq!(
+                drawn,
+                back > 10.0 * cut,
+                "{at}, {panel}: {cut} against {back}"
+            );
+            if !drawn {
+                continue;
+            }
+            let enlarged = points(&svg, &id);
+            let cutting = points(&svg, &format!("curve-{panel}-cutting"));
+            let big = enlarged
+                .iter()
+                .map(|p| (p.1 - rest).abs())
+                .fold(0.0, f64::max);
+            // To a round factor (1, 2, 5 in each decade), to between a
+            // fifth and half the return. Page coordinates are written to
+            // 0.01.
+            let round = [5.0, 10.0, 20.0, 50.0, 100.0, 200.0, 500.0, 1000.0];
+            let k = round
+                .into_iter()
+                .find(|r| (big - r * cut).abs() < 0.01 * (r + 1.0))
+                .unwrap_or_else(|| panic!("{at}, {panel}: enlarged ×{}", big / cut));
+            assert!(
+                big >= 0.2 * back && big <= 0.5 * back + 1e-6,
+                "{at}, {panel}: {big} of {back}"
+            );
+            // The same stroke: over the same turn, at rest where it is.
+            let (a, b) = (cutting[0].0, cutting[cutting.len() - 1].0);
+            assert!(
+                (enlarged[0].0 - a).abs() < 0.01
+                    && (enlarged[enlarged.len() - 1].0 - b).abs() < 0.01,
+                "{at}"
+            );
+            let named = format!("×{k}");
+            assert!(svg.contains(&named), "{at}, {panel}: ×{k} not named");
+        }
+    }
+}

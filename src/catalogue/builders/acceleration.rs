@@ -15,6 +15,7 @@ use crate::diagram::{Axis, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, NOTE_LINE, Part, RichText, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
+use crate::scene::COINCIDE;
 use crate::{angle::Angle, mechanism::Pose};
 
 /// The narrowest page (page units) that sets (a) and (b) side by side:
@@ -304,10 +305,10 @@ fn notes(ctx: &Ctx, within: Option<String>) -> [String; 6] {
 }
 
 /// Page distance from C or B under which G or G′ is lettered with that
-/// pin, not drawn apart: its dot runs into the pin (at r = 1, l = 2.96, e = −1.08,
-/// 269.36° CG = 0.016 drew three letters about one ring, G and G′ not to
-/// be seen).
-const WITHIN_C: f64 = 6.0;
+/// pin, not drawn apart: the scene's distance within which points read
+/// as one ([`COINCIDE`]); at r = 1, l = 2.96, e = −1.08, 269.36° CG =
+/// 0.016 drew three letters about one ring, G and G′ not to be seen.
+const WITHIN_C: f64 = COINCIDE;
 
 /// The crank circle, the line of stroke, the crank at the drawn pose, G
 /// on the line of stroke and G′ on the crank with the arc between them;

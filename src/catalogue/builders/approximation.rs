@@ -75,25 +75,25 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         (
             "obliquity",
             "error ÷ *r*",
-            "(a) Error due to obliquity, √(*n*² − sin²θ) − *n*",
+            "(a) Error due to obliquity, √(*n*²\u{a0}−\u{a0}sin²θ)\u{a0}−\u{a0}*n*",
             obliquity,
         ),
         (
             "velocity",
             "error ÷ *V*_c",
-            "(b) Piston velocity: eq. (2) − exact",
+            "(b) Piston velocity: eq.\u{a0}(2)\u{a0}−\u{a0}exact",
             velocity,
         ),
         (
             "acceleration",
             "error ÷ *r*ω²",
-            "(c) Piston acceleration: eq. (3) − exact",
+            "(c) Piston acceleration: eq.\u{a0}(3)\u{a0}−\u{a0}exact",
             acceleration,
         ),
         (
             "rod",
             "error ÷ ω²",
-            "(d) Rod angular acceleration: eq. (2a) − exact",
+            "(d) Rod angular acceleration: eq.\u{a0}(2a)\u{a0}−\u{a0}exact",
             rod,
         ),
     ];
@@ -122,14 +122,17 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             height,
         );
         let mut plot = Plot::new(name, rect, x, y, ctx.tolerance, ctx.font)?.with_caption(caption);
+        // One legend, in (a): the rods are drawn alike in every panel (at
+        // 500 units wide the same legend stood under each of the four).
         for (m, (n, dash)) in engines.iter().zip(RATIOS) {
             let curve = against_angle(*m, f);
             let pieces: [(&dyn Curve, _); 1] = [(&curve, 0.0..=360.0)];
+            let key = format!("*n* = {}", n as u32);
             plot.curve(
                 &format!("curve-{name}-n{}", n as u32),
                 &pieces,
                 dash,
-                Some(&format!("*n* = {}", n as u32)),
+                (k == 0).then_some(key.as_str()),
             )?;
         }
         sheet.plot(plot);
@@ -137,7 +140,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.notes(
         Point::new(20.0, page.height() - 44.0),
         &[
-            "Approximation − exact, divided by *r*, *V*_c = *r*ω, *r*ω² or ω², so the same for any crank and speed; in-line engine.".into(),
+            "Approximation − exact, divided by *r*, *V*_c = *r*ω, *r*ω² or ω², so the same for any crank and speed; in-line engine; each rod drawn alike in every panel, as (a)’s legend gives.".into(),
             "Signs as the textbook’s: velocity and acceleration towards the crank positive; the rod’s d²φ/d*t*² as in §37.".into(),
         ],
     );

@@ -202,7 +202,11 @@ impl Layout {
         let y1 = r.max(e + hh);
         let width = far - x0;
         let height = y1 - y0;
-        let pad = 0.12 * width.max(height);
+        // Room about each panel's drawing: at 0.12 the default engine
+        // (l = 3 r) drew its crank 39.9 units long, under the least a
+        // link is drawn (CRANK_LEAST), and got a detail that enlarged it
+        // ×1.5.
+        let pad = 0.11 * width.max(height);
         let gap = 0.5 * pad;
         let step = width + 2.0 * pad + gap;
         let world = Frame::new(
@@ -226,6 +230,9 @@ impl Layout {
 /// the rod.
 struct Panel {
     k: usize,
+    /// Whether the crank a is lettered here (not where a detail of the
+    /// crank letters it).
+    crank_letter: bool,
     dx: Vector,
     c: Point,
     b: Point,
@@ -270,18 +277,39 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let extra =
         clear + CAPTION_LINE * (captions.iter().map(Vec::len).max().unwrap_or(1) - 1) as f64;
     let mut centres = serde_json::Map::new();
+    let captions_end = rect.max().y + 6.0 + extra;
+    // A crank drawn shorter than CRANK_LEAST (a long rod: the lever, the
+    // frame and the slot's radius are as long as the rod) is enlarged in
+    // a detail below each panel, which letters it.
+    let enlarged = chains.m.crank() * map.scale() < CRANK_LEAST;
+    let mut details = Vec::new();
     for (k, suffix) in ["-a", "-b", "-c"].into_iter().enumerate() {
         let dx = Vector::new(k as f64 * layout.step, 0.0);
         let frame = Frame::new(
             Point::new(layout.x0 - layout.pad + dx.x, shown.min().y),
             Point::new(layout.x0 + layout.width + layout.pad + dx.x, shown.max().y),
         );
+        let detail = match enlarged {
+            true => Some(crank_detail(
+                ctx,
+                (&chains, &layout),
+                &frame,
+                map,
+                captions_end,
+                (k, suffix),
+            )?),
+            false => None,
+        };
         let mut s = Canvas::new(map, frame).suffixed(suffix);
-        let (key, panel_centres) = panel(&mut s, &chains, &layout, block, k);
+        let (key, panel_centres) = panel(&mut s, &chains, &layout, block, (k, !enlarged, false));
         centres.insert(key.into(), panel_centres);
+        if let Some((region, _)) = &detail {
+            super::coriolis::mark_window(&mut s, "mechanism", region);
+        }
         for item in s.finish().0 {
             plot.push(item);
         }
+        details.extend(detail.map(|(_, d)| d));
         let at = Point::new(layout.x0 + 0.5 * layout.width + dx.x, shown.min().y);
         let lines = captions.get(k).map_or(&[][..], Vec::as_slice);
         push_caption(&mut plot, lines, at, clear, suffix);
@@ -291,7 +319,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.meta("slot_radius", json!(chains.rho));
     sheet.meta("virtual_centres", serde_json::Value::Object(centres));
     sheet.plot(plot);
-    let bottom = rect.max().y + 6.0 + extra;
+    let mut bottom = captions_end;
+    for detail in details {
+        bottom = bottom.max(detail.rect().max().y + 6.0);
+        sheet.detail(detail);
+    }
     sheet.height(bottom + NOTES_HEIGHT);
     // The panels whose block stands over the crank's bearing at C.
     let over: Vec<&str> = [(true, "(b)"), (false, "(c)")]
@@ -301,6 +333,89 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         .collect();
     sheet.notes(Point::new(20.0, bottom), &notes(&chains, &over));
     Ok(sheet.finish())
+}
+
+/// The page length under which the crank a of each panel is enlarged
+/// in a detail below it: at l = 53 r it was a speck of two pin circles,
+/// its letter naming nothing seen.
+const CRANK_LEAST: f64 = 40.0;
+
+/// The crank's radius in its detail, page units, at least (as near as a
+/// narrow page's panel allows): a crank's length and a little more.
+const CRANK_ENLARGED: f64 = 44.0;
+
+/// The least of the round magnifications (the crank details' steps
+/// times a power of ten) not below `x` (positive and finite).
+fn round_above(x: f64) -> Option<f64> {
+    if !(x > 0.0 && x.is_finite()) {
+        return None;
+    }
+    let decade = 10f64.powf(x.log10().floor());
+    (super::coriolis::FINE_STEPS.iter())
+        .chain(&[10.0])
+        .map(|m| m * decade)
+        .find(|m| *m >= x * (1.0 - 1e-12))
+}
+
+/// A crank detail's reach about the crank centre, in cranks: the crank
+/// circle, B's pin on it and a little paper.
+const DETAIL_REACH: f64 = 1.2;
+
+/// The most a detail's panel is wide and tall (its caption included),
+/// page units.
+const DETAIL_SIZE: (f64, f64) = (200.0, 170.0);
+
+/// Room between the captions and the details below them, page units.
+const DETAIL_GAP: f64 = 10.0;
+
+/// Panel `k`'s detail of the crank (its `frame` on the page by `map`),
+/// below `top`: the world region it enlarges, and its plot with the
+/// panel drawn again there, the crank lettered. The magnification is a
+/// round one that draws the crank circle within the panel's width, at
+/// least [`CRANK_ENLARGED`] in radius where the panel gives room.
+fn crank_detail(
+    ctx: &Ctx,
+    (chains, layout): (&Chains, &Layout),
+    frame: &Frame,
+    map: crate::figure::PageFromWorld,
+    top: f64,
+    (k, suffix): (usize, &'static str),
+) -> Result<(Frame, Plot)> {
+    let scale = map.scale();
+    let (x0, x1) = (
+        map.apply(frame.min()).x.min(map.apply(frame.max()).x),
+        map.apply(frame.min()).x.max(map.apply(frame.max()).x),
+    );
+    let w = DETAIL_SIZE.0.min(x1 - x0);
+    let r = chains.m.crank() * scale;
+    // A square area below the caption, the crank circle and its reach
+    // across it.
+    let side = w.min(DETAIL_SIZE.1 - crate::diagram::CAPTION);
+    let most = side / (2.0 * DETAIL_REACH * r);
+    let magnification = round_above(CRANK_ENLARGED / r)
+        .filter(|m| *m <= most)
+        .unwrap_or_else(|| super::coriolis::round_below(most, &super::coriolis::FINE_STEPS))
+        .max(1.0);
+    let rect = Frame::from_origin_size(
+        0.5 * (x0 + x1 - w),
+        top + DETAIL_GAP,
+        w,
+        side + crate::diagram::CAPTION,
+    );
+    let c = Point::new(k as f64 * layout.step, 0.0);
+    let name = format!("detail{suffix}");
+    let (region, mut plot) =
+        super::inversions::window_at(ctx, &name, (c, magnification), rect, scale)?;
+    let dmap = *plot.map();
+    let block = block_on_page(block_size(&chains.m), dmap.scale());
+    let mut s = Canvas::new(dmap, dmap.world_frame(&plot.area()))
+        .detail("detail-")
+        .suffixed(suffix);
+    panel(&mut s, chains, layout, block, (k, true, true));
+    for item in s.finish().0 {
+        plot.push(item);
+    }
+    Ok((region, plot))
 }
 
 /// Each panel's caption broken to the panel's width `room` at its own
@@ -341,13 +456,15 @@ fn push_caption(plot: &mut Plot, lines: &[RichText], at: Point, clear: f64, suff
 
 /// Panel `k` drawn on `s`: the crank circle, the crank and the rod with
 /// their pins and letters, then (a)'s lever and frame or the slot and
-/// block of (b) and (c). Returns the panel's key and its virtual centres.
+/// block of (b) and (c); the crank lettered where `crank_letter` (not
+/// in a panel whose crank a detail letters), and `detail` where `s` is a
+/// crank's detail. Returns the panel's key and its virtual centres.
 fn panel(
     s: &mut Canvas,
     chains: &Chains,
     layout: &Layout,
     block: (f64, f64),
-    k: usize,
+    (k, crank_letter, detail): (usize, bool, bool),
 ) -> (&'static str, serde_json::Value) {
     let dx = Vector::new(k as f64 * layout.step, 0.0);
     let c = Point::origin() + dx;
@@ -377,17 +494,32 @@ fn panel(
     s.link("rod", vec![b, a]);
     if k == 0 {
         // (b) and (c) draw C's bearing after the block, over it.
-        let links = [(c, b), (b, a), (chains.o_cd() + dx, a)];
-        s.bearing_on("C", c, foot(s, c, &links, &[]));
+        // In a crank's detail clear of the frame d too, which leaves C
+        // towards O_cd there alone (its base lay across d's hatching);
+        // the panel keeps the side clear of the links, which their
+        // letters are set about.
+        let o = chains.o_cd() + dx;
+        let links = [(c, b), (b, a), (o, a)];
+        let frame: &[Seg] = if detail { &[(c, o)] } else { &[] };
+        s.bearing_on("C", c, foot(s, c, &links, frame));
         s.pin("C", c);
     }
     s.pin("B", b);
     if k != 0 {
         let [crank, rod] = letter_ways([(c, b), (b, a)], &[], s.world(LINK_LETTER_NEAR));
-        s.link_letter_toward("link-a", (c, b), "*a*", crank);
+        if crank_letter {
+            s.link_letter_toward("link-a", (c, b), "*a*", crank);
+        }
         s.link_letter_toward("link-b", (b, a), "*b*", rod);
     }
-    let panel = Panel { k, dx, c, b, a };
+    let panel = Panel {
+        k,
+        dx,
+        c,
+        b,
+        a,
+        crank_letter,
+    };
     let centres = if k == 0 {
         lever_panel(s, chains, &panel)
     } else {
@@ -430,6 +562,7 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
         .into_iter()
         .chain([("link-c", "*c*"), ("link-d", "*d*")])
         .zip(links.into_iter().zip(ways))
+        .filter(|((name, _), _)| p.crank_letter || *name != "link-a")
     {
         s.link_letter_toward(name, link, markup, way);
     }
@@ -553,16 +686,21 @@ fn beside(s: &Canvas, (p, q): Seg, links: &[Seg]) -> Option<Vector> {
     let u = unit(q - p)?;
     let n = Vector::new(-u.y, u.x);
     let length = (q - p).norm();
-    // The signed distances from the line of a link's points over it.
+    // The signed distances from the line of a link's points over it, a
+    // point every page unit or so (33 points along a lever drawn 500
+    // units long in a crank's detail stood 16 apart, and its end at O_cd
+    // alone read as lying along d).
+    let samples = |&(a, b): &Seg| (s.page((b - a).norm()).ceil() as usize).clamp(32, 4000);
     let over = |&(a, b): &Seg| -> Vec<f64> {
-        (0..=32)
-            .map(|k| a + (b - a) * (f64::from(k) / 32.0))
+        let m = samples(&(a, b));
+        (0..=m)
+            .map(|k| a + (b - a) * (k as f64 / m as f64))
             .filter(|x| (0.0..=length).contains(&(x - p).dot(&u)))
             .map(|x| (x - p).dot(&n))
             .collect()
     };
     let lying = |link: &Seg| {
-        let step = s.page((link.1 - link.0).norm()) / 32.0;
+        let step = s.page((link.1 - link.0).norm()) / samples(link) as f64;
         let near = (over(link).iter())
             .filter(|d| s.page(d.abs()) < LYING_NEAR)
             .count();

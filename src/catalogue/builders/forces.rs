@@ -264,7 +264,19 @@ fn forces(
 /// marked at `right` where it is reached (printed to `places` decimals).
 fn transmission(ctx: &Ctx, top: f64, right: Option<f64>, places: usize) -> Result<Plot> {
     let m = ctx.mechanism;
-    let y = Axis::linear("transmission angle β (°)", 0.0, 180.0)?.with_step(30.0)?;
+    // From 0° to 180°, or in steps of 30° as far beyond as β goes: with an
+    // offset β passes 180° (φ < 0 at small θ), and an axis ending at 180°
+    // cut its curve off near θ = 20° with no word (l = 3.88 r, e = 1.65 r).
+    let beta_at = |deg: f64| pose_at(&m, deg).map(|p| 180.0 - deg - p.obliquity().to_degrees());
+    let (lo, hi) = (0..=360)
+        .filter_map(|k| beta_at(0.5 * f64::from(k)))
+        .fold((0.0f64, 180.0f64), |(lo, hi), b| (lo.min(b), hi.max(b)));
+    let y = Axis::linear(
+        "transmission angle β (°)",
+        (lo / 30.0).floor() * 30.0,
+        (hi / 30.0).ceil() * 30.0,
+    )?
+    .with_step(30.0)?;
     let mut beta = Plot::new(
         "transmission",
         ctx.band(top, BETA_HEIGHT),

@@ -4,7 +4,7 @@
 //! the friction μN up the plane, whence mg sin φ = μ mg cos φ (eq. 9) and
 //! μ = tan φ (eq. 10). The tilt is the figure's angle (45° on Ng's rig).
 
-use super::{Ctx, Sheet, short};
+use super::{Ctx, Sheet, short, sig};
 use crate::analytic::statics::mu_from_tilt_degrees;
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Result};
@@ -16,6 +16,32 @@ const SIDE: f64 = 0.2;
 
 /// The length of the weight's arrow, world units.
 const WEIGHT: f64 = 0.42;
+
+/// The least length an arrow is drawn, world units (a third of the
+/// block's side, three heads on the default page): near 90° the normal
+/// reaction and the weight's component into the plane, near 0° the
+/// friction and the component along it, are a few thousandths of the
+/// weight, and at scale they were bare heads (at 89.58°, N = 0.0073 mg).
+/// An arrow drawn longer is said so in the notes.
+const LEAST: f64 = SIDE / 3.0;
+
+/// Within this angle (degrees) of the weight a component of it is set
+/// beside it, [`BESIDE`] off: at 89.58° the component along the plane
+/// lay under the weight's arrow and was hidden.
+const ALONG_WEIGHT: f64 = 10.0;
+
+/// How far a component within [`ALONG_WEIGHT`] of the weight is set off
+/// it, world units (a fifth of the block's side).
+const BESIDE: f64 = SIDE / 5.0;
+
+/// Within this angle (degrees) of upright the plane is drawn as a line
+/// hatched underneath rather than a wedge: the wedge's upright side and
+/// the plane, 0.4° apart at 89.58°, read as one double line.
+const STEEP: f64 = 15.0;
+
+/// How far off the plane the friction is drawn, world units (a third of
+/// the block's side): a tenth of it read as a second line of the plane.
+const FRICTION_OFF: f64 = SIDE / 3.0;
 
 pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let page = ctx.page();
@@ -32,13 +58,14 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     sheet.mechanism(ctx, false, false);
     sheet.meta("tilt_deg", serde_json::json!(tilt));
     sheet.meta("mu", serde_json::json!(mu));
-    let incline = Incline::new(ctx, mu);
-    let world = Frame::new(
-        Point::new(-0.12, -0.06),
-        Point::new(incline.foot.x + 0.12, incline.top.y + 0.06),
-    );
+    let incline = Incline::new(ctx);
+    let mut lines = notes(tilt, mu).to_vec();
+    lines.extend(incline.lengthened());
+    // Each line of the notes 18 units, 24 more under them.
+    let room = 24.0 + 18.0 * lines.len() as f64;
+    let world = incline.reach();
     let rect =
-        Frame::from_origin_size(16.0, 16.0, page.width() - 32.0, page.height() - 32.0 - 64.0);
+        Frame::from_origin_size(16.0, 16.0, page.width() - 32.0, page.height() - 36.0 - room);
     let mut plot = Plot::world("incline", rect, &world, false, ctx.tolerance, ctx.font)?
         .with_caption(&format!(
             "A block on a plane tilted at φ = {}°, on the point of sliding",
@@ -54,7 +81,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         plot.push(item);
     }
     sheet.plot(plot);
-    sheet.notes(Point::new(20.0, page.height() - 60.0), &notes(tilt, mu));
+    sheet.notes(Point::new(20.0, page.height() - room), &lines);
     Ok(sheet.finish())
 }
 
@@ -80,13 +107,14 @@ struct Incline {
     face: Point,
     /// Where the friction is drawn from.
     friction_at: Point,
-    /// The lengths of N's and the friction's arrows.
+    /// The lengths of N's and the friction's arrows, each at least
+    /// [`LEAST`]; the weight's components are as long as these.
     normal: f64,
     friction: f64,
 }
 
 impl Incline {
-    fn new(ctx: &Ctx, mu: f64) -> Self {
+    fn new(ctx: &Ctx) -> Self {
         let (sin, cos) = (ctx.angle.sin(), ctx.angle.cos());
         let u = Vector::new(cos, sin);
         let n = Vector::new(-sin, cos);
@@ -95,11 +123,13 @@ impl Incline {
         let top = o + u * length;
         let contact = o + u * (0.55 * length);
         let g = contact + n * (0.5 * SIDE);
-        let normal = WEIGHT * cos;
+        // N = mg cos φ, μN = mg sin φ at the point of sliding.
+        let normal = (WEIGHT * cos).max(LEAST);
+        let friction = (WEIGHT * sin).max(LEAST);
         // Friction acts in the contact face: drawn from the block's uphill
-        // face, parallel to the plane and just clear of its line, so that the
+        // face, parallel to the plane and clear of its line, so that the
         // arrow reads as a force and not as the plane's edge.
-        let clear = n * (0.1 * SIDE);
+        let clear = n * FRICTION_OFF;
         Self {
             phi: ctx.angle.radians(),
             sin,
@@ -115,20 +145,115 @@ impl Incline {
             face: g + n * (0.5 * SIDE),
             friction_at: contact + u * (0.5 * SIDE) + clear,
             normal,
-            friction: mu * normal,
+            friction,
         }
     }
 
-    /// The plane on its hatched ground, the block and its centre G.
+    /// The world frame the figure spans: the plane and its ground, and
+    /// every arrow's head (at a shallow tilt N rises far above the
+    /// plane's top, and ran off the page).
+    fn reach(&self) -> Frame {
+        let down = Vector::new(0.0, -1.0);
+        let [along, across] = self.components();
+        let heads = [
+            self.g + down * WEIGHT,
+            self.face + self.n * self.normal,
+            self.friction_at + self.u * self.friction,
+            along.1,
+            across.1,
+        ];
+        let (lo, hi) = heads.iter().fold(
+            (
+                Point::new(-0.12, -0.06),
+                Point::new(self.foot.x + 0.12, self.top.y + 0.06),
+            ),
+            |(lo, hi), p| {
+                (
+                    Point::new(lo.x.min(p.x - 0.06), lo.y.min(p.y - 0.06)),
+                    Point::new(hi.x.max(p.x + 0.06), hi.y.max(p.y + 0.06)),
+                )
+            },
+        );
+        Frame::new(lo, hi)
+    }
+
+    /// Whether the weight's component along the plane (`along`) or into
+    /// it lies within [`ALONG_WEIGHT`] of the weight.
+    fn near_weight(&self, along: bool) -> bool {
+        let off_weight = if along {
+            90.0 - self.phi.to_degrees()
+        } else {
+            self.phi.to_degrees()
+        };
+        off_weight <= ALONG_WEIGHT
+    }
+
+    /// Where the weight's components start: at G, or [`BESIDE`] off it
+    /// where one would lie along the weight (the one along the plane
+    /// set away from the plane, the one into it set uphill).
+    fn component_from(&self, along: bool) -> Point {
+        match (along, self.near_weight(along)) {
+            (true, true) => self.g + self.n * BESIDE,
+            (false, true) => self.g + self.u * BESIDE,
+            _ => self.g,
+        }
+    }
+
+    /// The weight's component along the plane (down it) and into it,
+    /// from where each starts to its head.
+    fn components(&self) -> [(Point, Point); 2] {
+        let along = self.component_from(true);
+        let across = self.component_from(false);
+        [
+            (along, along - self.u * self.friction),
+            (across, across - self.n * self.normal),
+        ]
+    }
+
+    /// Where the name of the weight's component into the plane is tried
+    /// first: beyond its head, or uphill where that head lies in the block
+    /// (beyond it is the plane and its hatching) or the component is set
+    /// beside the weight (beyond it is the weight's name).
+    fn across_side(&self) -> Vector {
+        if self.normal < 0.5 * SIDE || self.near_weight(false) {
+            self.u
+        } else {
+            -self.n
+        }
+    }
+
+    /// The notes' line naming the arrows drawn longer than to scale
+    /// ([`LEAST`]), if any.
+    fn lengthened(&self) -> Option<String> {
+        let (names, share) = if WEIGHT * self.cos < LEAST {
+            ("*N* and *mg* cos φ", self.cos)
+        } else if WEIGHT * self.sin < LEAST {
+            ("μ*N* and *mg* sin φ", self.sin)
+        } else {
+            return None;
+        };
+        Some(format!(
+            "{names} ({} *mg*) are drawn longer than to scale, to be seen.",
+            sig(share)
+        ))
+    }
+
+    /// The plane on its hatched ground, the block and its centre G; within
+    /// [`STEEP`] of upright the plane a line hatched underneath.
     fn plane_and_block(&self) -> Vec<Item> {
         let (u, n, contact) = (self.u, self.n, self.contact);
-        vec![
+        let steep = 90.0 - self.phi.to_degrees() < STEEP;
+        let plane = match steep {
+            true => vec![self.o, self.top],
+            false => vec![self.o, self.top, self.foot],
+        };
+        let mut items = vec![
             Item::new(
                 "plane",
                 Role::Frame,
                 Shape::Polyline {
-                    points: vec![self.o, self.top, self.foot],
-                    closed: true,
+                    points: plane,
+                    closed: !steep,
                 },
             ),
             Item::new(
@@ -155,7 +280,20 @@ impl Incline {
                 },
             ),
             Item::new("point-G", Role::Construction, Shape::Dot { centre: self.g }),
-        ]
+        ];
+        // A steep plane is a line hatched on its solid side (no wedge).
+        if steep {
+            items.push(Item::new(
+                "hatch-plane",
+                Role::Frame,
+                Shape::Hatch {
+                    from: self.o,
+                    to: self.top,
+                    side: -n,
+                },
+            ));
+        }
+        items
     }
 
     /// The weight, N and the friction, and the weight's components along
@@ -166,6 +304,7 @@ impl Incline {
         };
         let (g, u, n) = (self.g, self.u, self.n);
         let down = Vector::new(0.0, -1.0);
+        let [along, across] = self.components();
         vec![
             arrow("force-weight", Role::Force, g, g + down * WEIGHT),
             arrow(
@@ -180,18 +319,8 @@ impl Incline {
                 self.friction_at,
                 self.friction_at + u * self.friction,
             ),
-            arrow(
-                "component-along",
-                Role::Auxiliary,
-                g,
-                g - u * (WEIGHT * self.sin),
-            ),
-            arrow(
-                "component-across",
-                Role::Auxiliary,
-                g,
-                g - n * (WEIGHT * self.cos),
-            ),
+            arrow("component-along", Role::Auxiliary, along.0, along.1),
+            arrow("component-across", Role::Auxiliary, across.0, across.1),
         ]
     }
 
@@ -242,12 +371,13 @@ impl Incline {
     fn labels(&self) -> Vec<Item> {
         let (g, u, n) = (self.g, self.u, self.n);
         let down = Vector::new(0.0, -1.0);
+        let [along, across] = self.components();
         [
             ("weight", g + down * WEIGHT, "*mg*", down),
             ("normal", self.face + n * self.normal, "*N*", n),
             ("friction", self.friction_at + u * self.friction, "μ*N*", u),
-            ("along", g - u * (WEIGHT * self.sin), "*mg* sin φ", n),
-            ("across", g - n * (WEIGHT * self.cos), "*mg* cos φ", -n),
+            ("along", along.1, "*mg* sin φ", n),
+            ("across", across.1, "*mg* cos φ", self.across_side()),
         ]
         .into_iter()
         .map(|(id, at, text, toward)| {

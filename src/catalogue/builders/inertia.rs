@@ -20,7 +20,7 @@ use crate::construct::{AccelerationPoints, InstantCentre, Kisch, Klein, Velocity
 use crate::diagram::Plot;
 use crate::dynamics::{Engine, EnginePose};
 use crate::error::Result;
-use crate::figure::{Figure, Item, Panel, RichText, Role, Shape, TextSize};
+use crate::figure::{Figure, HATCH_DEPTH, Item, Panel, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::{Layer, torque_arrow};
 
@@ -158,12 +158,36 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
     // block, A's letter and F_i crowd about C on the main view), else on
     // the main view.
     let home = details.iter().position(|d| holds_the_arc(d, pose.c()));
-    let effort = |panel: &Panel, block: Option<Point>| {
-        torque_arc_clear(panel, pose.c(), pose.b(), block, f.at.crank_effort)
+    // F_i keeps clear of the arc where it is drawn here, and the arc,
+    // set again, of F_i.
+    let arc = |shafts: &[(Point, Point)]| {
+        torque_arc_clear(
+            main,
+            pose.c(),
+            pose.b(),
+            nearest_face(main, &pose),
+            f.at.crank_effort,
+            shafts,
+        )
     };
-    let mut items = inertia_arrow(main, &pose, f, scale);
+    let arc_radius = match home {
+        None => arc(&[]).iter().find_map(|i| match i.shape {
+            Shape::Arc { radius, .. } => Some(radius * scale),
+            _ => None,
+        }),
+        Some(_) => None,
+    };
+    let mut items = inertia_arrow(main, &pose, f, scale, arc_radius);
     if home.is_none() {
-        items.extend(effort(main, nearest_face(main, &pose)));
+        // The arc keeps clear of F_i's shaft as of the block's edges.
+        let shaft: Vec<(Point, Point)> = items
+            .iter()
+            .filter_map(|i| match i.shape {
+                Shape::Arrow { from, to } => Some((from, to)),
+                _ => None,
+            })
+            .collect();
+        items.extend(arc(&shaft));
     }
     sheet.panel(main.clone().with_items(items));
     for (k, detail) in details.into_iter().enumerate() {
@@ -171,7 +195,8 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
             // Its gap and letter below C, as at any pose: the enlarged
             // block is drawn about C, and a gap facing its nearer face
             // would set T between A's and C's letters.
-            let mut own = effort(detail, None);
+            let mut own =
+                torque_arc_clear(detail, pose.c(), pose.b(), None, f.at.crank_effort, &[]);
             for item in &mut own {
                 item.id.insert_str(0, "detail-");
             }
@@ -235,13 +260,16 @@ fn block_span(panel: &Panel, coordinate: impl Fn(&Point) -> f64) -> Option<(f64,
 /// of stroke, pulling the block from one face or pushing on it, on the
 /// crank's side of the block where it keeps clear of the crank centre's
 /// torque arrow, else on the far side, within the panel; set off the
-/// line of stroke by a quarter of the block's height on the side away
-/// from the rod, which near the dead centres lies on that line.
+/// line of stroke in the channel on the side away from the rod, or,
+/// where a link or CG runs along it there or it would cross the crank
+/// effort's arc of page radius `arc_radius` (where drawn on this panel),
+/// beyond the guides and that arc.
 fn inertia_arrow(
     panel: &Panel,
     pose: &crate::mechanism::Pose,
     f: &Forces,
     scale: f64,
+    arc_radius: Option<f64>,
 ) -> Vec<Item> {
     let (a, c) = (pose.a(), pose.c());
     let length = f.points.cg().abs();
@@ -279,9 +307,45 @@ fn inertia_arrow(
         .iter()
         .any(|&(u, v)| u.max(x0) < v.min(x1) - 2.0 * ROOM / scale);
     let share = if beside { 0.25 } else { 0.4 };
-    let quarter = block_span(panel, |p| p.y).map_or(0.0, |(lo, hi)| share * (hi - lo));
+    let height = block_span(panel, |p| p.y).map_or(0.0, |(lo, hi)| hi - lo);
     let away = if pose.b().y > a.y { -1.0 } else { 1.0 };
-    let face = Point::new(face, a.y + away * quarter);
+    // Within the channel where no link or CG runs beside it and it keeps
+    // clear of the crank effort's arc about C; else beyond the guides'
+    // hatching (and the arc's reach): at a short rod's dead centres the
+    // crank and the rod lie on the line of stroke, and at 90° and 270° CG
+    // does, tight beside an arrow in the channel, which read as theirs.
+    let t = panel.transform();
+    let strokes = along_strokes(panel);
+    let r = panel.rect();
+    let stroke_y = t.apply(a).y;
+    let fits = |off: f64| {
+        let (p, q) = (
+            t.apply(Point::new(x0, a.y + off)),
+            t.apply(Point::new(x1, a.y + off)),
+        );
+        let on_page = [p, q]
+            .iter()
+            .all(|p| p.y >= r.min().y + ROOM && p.y <= r.max().y - ROOM);
+        let by_arc = arc_radius
+            .is_some_and(|r| crate::geom::point_segment_distance(t.apply(c), p, q) < r + ARC_REACH);
+        on_page && !by_arc && share_beside(p, q, stroke_y, &strokes) < ALONG_SHARE
+    };
+    let inside = share * height;
+    let mut outside = 0.5 * height + (HATCH_DEPTH + 0.5 * ROOM) / scale;
+    if let Some(r) = arc_radius {
+        outside = outside.max((r + ARC_REACH) / scale);
+    }
+    let off = [
+        away * inside,
+        -away * inside,
+        away * outside,
+        -away * outside,
+    ]
+    .into_iter()
+    .find(|&o| fits(o))
+    .unwrap_or(away * inside);
+    let side = if off < 0.0 { -1.0 } else { 1.0 };
+    let face = Point::new(face, a.y + off);
     let along = Vector::new(out * length, 0.0);
     // Pulled from the face where the force points away from the block on
     // this side, pushed on it where it points into the block.
@@ -296,11 +360,47 @@ fn inertia_arrow(
     // arrow's free end reaches C or G, whose letters it ran into
     // ("C F_i"): where a long stretch of it runs with no guide beside it,
     // its letter by that stretch's middle, on its side away from the line
-    // of stroke.
-    let (anchor, toward) = match unguided(x0, x1, &guides) {
-        Some((u, v)) if (v - u) * scale >= LONG_ARROW => {
-            (Point::new(0.5 * (u + v), face.y), Vector::new(0.0, away))
+    // of stroke; beyond the guides, by its middle on that side.
+    // By a stretch's middle, that of a piece the crank circle does not
+    // cross (at its middle F_i stood on the circle): of those long enough
+    // for it, the one farthest from the panel's other letters (by a
+    // detail's "×N" tag it was pushed off above the tag), else the
+    // longest.
+    let circle = (c, pose.mechanism().crank());
+    let letters: Vec<Point> = panel
+        .items()
+        .iter()
+        .filter_map(|i| match &i.shape {
+            Shape::Label { anchor, .. } => Some(t.apply(*anchor)),
+            _ => None,
+        })
+        .collect();
+    let middle = |u: f64, v: f64| {
+        let pieces = uncrossed(u, v, face.y, circle);
+        let room = |&(p, q): &(f64, f64)| {
+            let m = t.apply(Point::new(0.5 * (p + q), face.y));
+            letters
+                .iter()
+                .map(|l| (*l - m).norm())
+                .fold(f64::INFINITY, f64::min)
+        };
+        let long: Vec<&(f64, f64)> = pieces
+            .iter()
+            .filter(|(p, q)| (q - p) * scale >= 3.0 * ROOM)
+            .collect();
+        let (u, v) = match long.is_empty() {
+            false => long.into_iter().max_by(|a, b| room(a).total_cmp(&room(b))),
+            true => pieces
+                .iter()
+                .max_by(|a, b| (a.1 - a.0).total_cmp(&(b.1 - b.0))),
         }
+        .copied()
+        .unwrap_or((u, v));
+        (Point::new(0.5 * (u + v), face.y), Vector::new(0.0, side))
+    };
+    let (anchor, toward) = match unguided(x0, x1, &guides) {
+        _ if off.abs() > 0.5 * height => middle(x0, x1),
+        Some((u, v)) if (v - u) * scale >= LONG_ARROW => middle(u, v),
         _ => (face + along, along),
     };
     vec![
@@ -317,6 +417,77 @@ fn inertia_arrow(
             },
         ),
     ]
+}
+
+/// Beyond the crank effort's arc radius, the page room F_i's shaft keeps
+/// from C where the arc is drawn on its panel: room for T's letter set
+/// on the arc (at the arc's clearance only, T stood on the arrow).
+const ARC_REACH: f64 = 2.0 * ROOM;
+
+/// A link or CG nearer F_i's shaft than this (page units), parallel to it
+/// within [`ALONG_ANGLE`], reads as running along it (CG 14 units off the
+/// arrow at 90° did).
+const BESIDE: f64 = 1.5 * ROOM;
+
+/// The greatest angle (degrees) between F_i's shaft and a stroke running
+/// along it.
+const ALONG_ANGLE: f64 = 10.0;
+
+/// The share of F_i's shaft beside a link or CG at which it reads as
+/// lying along it.
+const ALONG_SHARE: f64 = 1.0 / 3.0;
+
+/// The page segments of the panel's links and of CG within
+/// [`ALONG_ANGLE`] of the line of stroke (the page's x axis).
+fn along_strokes(panel: &Panel) -> Vec<(Point, Point)> {
+    let t = panel.transform();
+    let tan = ALONG_ANGLE.to_radians().tan();
+    panel
+        .items()
+        .iter()
+        .filter(|i| i.id.starts_with("link-") || i.id == "line-CG")
+        .filter_map(|i| match &i.shape {
+            Shape::Polyline { points, .. } => Some(points),
+            _ => None,
+        })
+        .flat_map(|points| {
+            let page: Vec<Point> = points.iter().map(|p| t.apply(*p)).collect();
+            page.iter()
+                .zip(page.iter().skip(1))
+                .map(|(a, b)| (*a, *b))
+                .collect::<Vec<_>>()
+        })
+        .filter(|(p, q)| (q.y - p.y).abs() <= tan * (q.x - p.x).abs() && p != q)
+        .collect()
+}
+
+/// A stroke whose ends both lie this near the line of stroke (page units)
+/// lies on it: CG, the crank and the rod at a dead centre or a degree
+/// from it.
+const ON_LINE: f64 = 4.0;
+
+/// The share of the page shaft `p q` (level, off the line of stroke at
+/// page height `stroke_y`) within [`BESIDE`] of one of `strokes` where
+/// that stroke lies on the line of stroke ([`ON_LINE`]) or on the
+/// shaft's side of it: the rod rising from A on the other side of the
+/// line (the default engine's) stands apart from it across the channel.
+fn share_beside(p: Point, q: Point, stroke_y: f64, strokes: &[(Point, Point)]) -> f64 {
+    const STEPS: u32 = 32;
+    let side = p.y - stroke_y;
+    let near = (0..=STEPS)
+        .map(|k| p + (q - p) * (f64::from(k) / f64::from(STEPS)))
+        .filter(|s| {
+            strokes.iter().any(|&(u, v)| {
+                let d = v - u;
+                let k = ((s - u).dot(&d) / d.dot(&d)).clamp(0.0, 1.0);
+                let n = u + d * k;
+                let on_line =
+                    (u.y - stroke_y).abs() <= ON_LINE && (v.y - stroke_y).abs() <= ON_LINE;
+                (on_line || (n.y - stroke_y) * side > 0.0) && (s - n).norm() < BESIDE
+            })
+        })
+        .count();
+    near as f64 / f64::from(STEPS + 1)
 }
 
 /// Room kept between the crank effort's arc (its head's half width
@@ -344,17 +515,44 @@ const ARC_RADII: [f64; 6] = [
 /// hatching it read as a mark of theirs. Where no such place is, the
 /// clearest. Its letter is kept off the directions of the panel's other
 /// letters within its reach (a detail's "×N" tag beside C read as one
-/// label with T).
-fn torque_arc_clear(panel: &Panel, c: Point, b: Point, block: Option<Point>, t: f64) -> Vec<Item> {
+/// label with T). The arc keeps clear of `shafts` (world segments: F_i's,
+/// where it passes by C) as of the block.
+fn torque_arc_clear(
+    panel: &Panel,
+    c: Point,
+    b: Point,
+    block: Option<Point>,
+    t: f64,
+    shafts: &[(Point, Point)],
+) -> Vec<Item> {
     let scale = panel.transform().scale();
-    let obstacles = arc_obstacles(panel);
+    let page = panel.transform();
+    // C's own letter, where it has one, stands first above and to the
+    // right of it on the page: T kept off that direction too (set there,
+    // by the arc's clearest share between the line of stroke and CE, it
+    // stood against C's letter once F_i left that corner free).
+    let lettered = panel.items().iter().any(|i| match &i.shape {
+        Shape::Label { anchor, .. } => page.apply_vector(anchor - c).norm() < ROOM,
+        _ => false,
+    });
+    let up_right = {
+        let (x, y) = (
+            page.apply_vector(Vector::new(1.0, 0.0)).x,
+            page.apply_vector(Vector::new(0.0, 1.0)).y,
+        );
+        Vector::new(x.signum(), -y.signum())
+    };
+    let own_letter = lettered.then(|| up_right.y.atan2(up_right.x));
+    let mut obstacles = arc_obstacles(panel);
+    obstacles.extend(shafts.iter().map(|(p, q)| (page.apply(*p), page.apply(*q))));
     let gaps = match block {
         Some(_) => vec![block, None],
         None => vec![None],
     };
     let mut best: Option<(f64, Vec<Item>)> = None;
     for radius in ARC_RADII {
-        let labels = nearby_letters(panel, c, radius);
+        let mut labels = nearby_letters(panel, c, radius);
+        labels.extend(own_letter);
         for gap in &gaps {
             let items = torque_arc(c, b, *gap, t, scale, radius, &labels);
             let clear = arc_clearance(panel, &items, &obstacles);
@@ -392,7 +590,7 @@ fn nearby_letters(panel: &Panel, c: Point, radius: f64) -> Vec<f64> {
 /// edges, the guides and the outer edge of their hatching, and the
 /// bearing's pedestal with its hatched foot.
 fn arc_obstacles(panel: &Panel) -> Vec<(Point, Point)> {
-    use crate::figure::{BEARING_FOOT, HATCH_DEPTH};
+    use crate::figure::BEARING_FOOT;
     let t = panel.transform();
     let mut out = Vec::new();
     let ring = |points: &[Point], closed: bool, out: &mut Vec<(Point, Point)>| {
@@ -483,6 +681,25 @@ fn arc_clearance(panel: &Panel, items: &[Item], obstacles: &[(Point, Point)]) ->
                 .map(move |(p, q)| crate::geom::segment_distance(*a, *b, *p, *q))
         })
         .fold(f64::INFINITY, f64::min)
+}
+
+/// The pieces of the level stretch `x0`..`x1` at height `y` (world)
+/// between the crossings of the circle `(centre, radius)`.
+fn uncrossed(x0: f64, x1: f64, y: f64, (centre, radius): (Point, f64)) -> Vec<(f64, f64)> {
+    let h = radius * radius - (y - centre.y).powi(2);
+    let mut cuts = vec![x0];
+    if h > 0.0 {
+        cuts.extend(
+            [centre.x - h.sqrt(), centre.x + h.sqrt()]
+                .into_iter()
+                .filter(|x| *x > x0 && *x < x1),
+        );
+    }
+    cuts.push(x1);
+    cuts.iter()
+        .zip(cuts.iter().skip(1))
+        .map(|(a, b)| (*a, *b))
+        .collect()
 }
 
 /// The longest stretch of `x0`..`x1` (world x) beside none of the

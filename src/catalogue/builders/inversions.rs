@@ -538,10 +538,22 @@ pub(super) fn crank_window(
     rect: crate::geom::Frame,
     scale: f64,
 ) -> Result<(Frame, Plot)> {
-    let (w, h) = (rect.width(), rect.height() - crate::diagram::CAPTION);
-    let wanted = w.min(h) / (2.0 * CRANK_REACH * ctx.mechanism.crank()) / scale;
+    let wanted = crank_wanted(ctx, &rect, scale);
     window(ctx, name, (centre, wanted), rect, scale)
 }
+
+/// The magnification that shows [`CRANK_REACH`] cranks each way across
+/// the shorter side of the panel `rect` (its caption included), for a
+/// main view at `scale` page units per world unit, before rounding.
+fn crank_wanted(ctx: &Ctx, rect: &crate::geom::Frame, scale: f64) -> f64 {
+    let (w, h) = (rect.width(), rect.height() - crate::diagram::CAPTION);
+    w.min(h) / (2.0 * CRANK_REACH * ctx.mechanism.crank()) / scale
+}
+
+/// The least magnification of an inversion's detail: below it the
+/// detail draws what the main view shows at nearly its size, and is not
+/// drawn (the main view letters it all).
+const DETAIL_LEAST: f64 = 1.5;
 
 /// An enlarged detail in the panel `rect` (its caption included) of a
 /// main view at `scale` page units per world unit, about `centre` at
@@ -602,6 +614,15 @@ const BORDER_INSET: f64 = 0.5;
 /// The crank detail's size on the page, page units (its caption
 /// included in the height).
 const CRANK_DETAIL: (f64, f64) = (300.0, 200.0);
+
+/// The length of an arrow at the frame's edge and its gap to the edge,
+/// page units, as the canvas draws them.
+const EDGE_ARROW: f64 = 34.0;
+const EDGE_GAP: f64 = 3.0;
+
+/// How far behind an edge arrow's tail its letter is set beside its
+/// line, page units: one em of a letter.
+const SET_BACK: f64 = 17.0;
 
 /// Room between the mechanism and the crank detail below it, page units.
 const DETAIL_GAP: f64 = 12.0;
@@ -681,6 +702,17 @@ fn crank_detail(
         w,
         CRANK_DETAIL.1,
     );
+    // A detail enlarges, or is not drawn: at l = 3.89 r, e = −1.57 r, 0°
+    // the crank, 39.7 units long in the main view, was drawn again ×1
+    // below it, a copy that added nothing, and the main view left its
+    // pins to the copy.
+    let enlarged = match wanted {
+        None => crank_wanted(ctx, &detail_rect, scale),
+        Some(wanted) => wanted,
+    };
+    if super::coriolis::round_below(enlarged, &super::coriolis::FINE_STEPS) < DETAIL_LEAST {
+        return Ok(None);
+    }
     let (region, mut plot) = match wanted {
         None => crank_window(ctx, "detail", centre, detail_rect, scale)?,
         Some(wanted) => window(ctx, "detail", (centre, wanted), detail_rect, scale)?,
@@ -699,7 +731,9 @@ fn crank_detail(
         }
     };
     let canvas = Canvas::new(map, map.world_frame(&plot.area())).detail("detail-");
-    let mut d = Drawing::new(m, pose, canvas, block).showing(shown);
+    let mut d = Drawing::new(m, pose, canvas, block)
+        .showing(shown)
+        .in_detail();
     d.draw(pose, pose.centres());
     let seen = d.shown();
     let seen = Shown {
@@ -852,6 +886,10 @@ struct Drawing {
     /// dots and crossings ([`Drawing::letter_run`]); else by their
     /// middles (the Coriolis figures' mechanism, which draws no centres).
     runs: bool,
+    /// Whether a centre off the page or at infinity is shown by an arrow
+    /// at the frame's edge: not in a detail, whose edge is not the
+    /// drawing's (its links run on beyond it).
+    edge_arrows: bool,
 }
 
 /// How a view showed the fixed bar, which the figure's other view
@@ -1128,7 +1166,14 @@ impl Drawing {
             normal: Vector::zeros(),
             d_way: None,
             runs: true,
+            edge_arrows: true,
         }
+    }
+
+    /// The same drawing as a detail's: no arrows at its edge.
+    fn in_detail(mut self) -> Self {
+        self.edge_arrows = false;
+        self
     }
 
     /// The same drawing with d's leg on the line C T ([`leg_jog`] not
@@ -2015,7 +2060,7 @@ impl Drawing {
             Intersection::Point(d) if self.s.contains(d) => Some(d),
             _ => None,
         };
-        for (key, markup, centre, from, along, drawn) in [
+        let far = [
             ("O-bd", "*O*_{bd}", o_bd, b, b - c, None),
             ("O-ac", "*O*_{ac}", get(Link::A, Link::C), b, b - a, None),
             (
@@ -2026,24 +2071,115 @@ impl Drawing {
                 towards_d,
                 drawn_to,
             ),
-        ] {
+        ];
+        // The arrows at the edge, known before any is lettered: each
+        // letter stands on the side of its arrow away from the others.
+        let arrows: Vec<(Point, Vector)> = (far.iter())
+            .filter_map(|&(_, _, centre, from, along, _)| self.edge_ray(centre, from, along))
+            .filter_map(|(from, u)| Some((self.arrow_tail(from, u)?, u)))
+            .collect();
+        for (key, markup, centre, from, along, drawn) in far {
             match centre {
-                Intersection::Point(p) => {
+                Intersection::Point(p) if self.s.contains(p) => {
                     self.centre(key, markup, p, from, &mut lettered, &mut together)
                 }
-                Intersection::AtInfinity(dir) => {
-                    let u = self.towards(dir.into_inner(), from, along);
-                    // Its letter names its arrow, beside it: by the tail
-                    // it stood across the block from a short arrow, on
-                    // the far side of A (l = 3.67 r, e = 2.29 r, 269.21°).
-                    if let Some(tail) = self.s.lettered_at_infinity(key, (from, u), markup, true) {
-                        self.line_to_infinity(key, from, tail, drawn);
+                Intersection::Point(_) | Intersection::AtInfinity(_) => {
+                    let Some(ray) = self.edge_ray(centre, from, along) else {
+                        continue;
+                    };
+                    // An off-page centre's arrow is "to" it; one at
+                    // infinity's is it, its line dashed up to the arrow.
+                    if let Intersection::Point(p) = centre {
+                        let text = format!("to {markup}");
+                        self.edge_lettered(&format!("offpage-{key}"), key, ray, &text, &arrows);
+                        lettered.push((p, markup));
+                    } else {
+                        let text = format!("{markup} at ∞");
+                        let id = format!("infinity-{key}");
+                        if let Some(tail) = self.edge_lettered(&id, key, ray, &text, &arrows) {
+                            self.line_to_infinity(key, from, tail, drawn);
+                        }
                     }
                 }
                 Intersection::Coincident => {}
             }
         }
         together
+    }
+
+    /// The ray from `from` on which an arrow at the frame's edge shows
+    /// `centre`: towards it where it is a point off the page, along its
+    /// direction ([`Drawing::towards`], `along`) where it is at infinity;
+    /// none for a centre on the page, or where no arrows are drawn.
+    fn edge_ray(
+        &self,
+        centre: Intersection,
+        from: Point,
+        along: Vector,
+    ) -> Option<(Point, Vector)> {
+        if !self.edge_arrows {
+            return None;
+        }
+        let u = match centre {
+            Intersection::Point(p) if !self.s.contains(p) => p - from,
+            Intersection::AtInfinity(dir) => self.towards(dir.into_inner(), from, along),
+            _ => return None,
+        };
+        Some((from, unit(u)?))
+    }
+
+    /// The tail of the arrow at the frame's edge on the ray from `from`
+    /// along the unit `u`, where the arrow fits between `from` and the
+    /// edge.
+    fn arrow_tail(&self, from: Point, u: Vector) -> Option<Point> {
+        let (_, edge) = self.s.frame().clip_ray(from, u)?;
+        let tail = edge - u * self.s.world(EDGE_GAP + EDGE_ARROW);
+        ((tail - from).dot(&u) >= 0.0).then_some(tail)
+    }
+
+    /// The arrow `id` at the frame's edge on the ray `(from, u)`, lettered
+    /// `text` (`label-{key}`) by its tail, where it leaves the figure, on
+    /// the side away from the nearest other of the `arrows` (tails and
+    /// directions), else from the pins: by its middle, as a line's name,
+    /// "O_cd at ∞" stood between two slanting arrows (inversion 3 at
+    /// l = 1.07 r, 90.03°); between two, "to O_bd" and "O_cd at ∞" ran
+    /// together as one label (l = 2.36 r, e = 1.14 r, 269.57°); beside a
+    /// lone arrow up from O_ad, "to O_bd" stood on the line of d's leg
+    /// produced (inversion 4 at l = 2.69 r, e = −1.01 r, 269.36°).
+    /// Returns the tail; none where the arrow does not fit.
+    fn edge_lettered(
+        &mut self,
+        id: &str,
+        key: &str,
+        (from, u): (Point, Vector),
+        text: &str,
+        arrows: &[(Point, Vector)],
+    ) -> Option<Point> {
+        let tail = self.arrow_tail(from, u)?;
+        let (_, edge) = self.s.frame().clip_ray(from, u)?;
+        let n = crate::geom::perp(&u);
+        let apart = |p: &Point| (p - tail).norm();
+        let other = (arrows.iter())
+            .map(|(t, _)| *t)
+            .filter(|t| self.s.page(apart(t)) > 1.0)
+            .min_by(|p, q| apart(p).total_cmp(&apart(q)));
+        let pins = Point::from((self.q.c.coords + self.q.b.coords + self.q.a.coords) / 3.0);
+        // Across its arrow from the other's tail; where the two lie on
+        // one line, away from the pins.
+        let away = (other.map(|t| n.dot(&(tail - t))))
+            .filter(|s| self.s.page(s.abs()) >= 1.0)
+            .unwrap_or_else(|| n.dot(&(tail - pins)));
+        let side = if away < 0.0 { -n } else { n };
+        // Beside the line [`SET_BACK`] behind the tail: square to the
+        // tail itself, a letter by an arrow near the page's edge ran off
+        // it and was set anywhere (between two arrows at l = 2.36 r).
+        // No farther back than the line's start (a short arrow from B).
+        let at = tail - u * self.s.world(SET_BACK).min((tail - from).dot(&u));
+        self.s.edge_arrow(id.to_string(), edge, u, EDGE_ARROW);
+        let text = RichText::parse(text);
+        self.s
+            .label_toward(format!("label-{key}"), at, side, text, TextSize::Letter);
+        Some(tail)
     }
 
     /// The line on which a centre at infinity lies, dashed from `from` to

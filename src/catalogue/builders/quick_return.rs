@@ -91,9 +91,21 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
     };
     let cutting_curve = move |deg: f64| curve(deg, false);
     let return_curve = move |deg: f64| curve(deg, true);
-    let (lo, hi) = (0..=720)
-        .filter_map(|k| value(0.5 * f64::from(k)))
-        .fold((0.0f64, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)));
+    let range = |from: f64, to: f64| {
+        (0..=360)
+            .filter_map(|k| value(from + (to - from) * f64::from(k) / 360.0))
+            .fold((0.0f64, 0.0f64), |(lo, hi), v| (lo.min(v), hi.max(v)))
+    };
+    // Cutting over θ from 270° to 450° (as the curves are traced), the
+    // return over 90° to 270°.
+    let (cut_range, back_range) = (range(270.0, 450.0), range(90.0, 270.0));
+    let peak = |(lo, hi): (f64, f64)| lo.abs().max(hi);
+    let times = enlargement(peak(cut_range), peak(back_range));
+    let k = times.unwrap_or(1.0);
+    let (lo, hi) = (
+        back_range.0.min(k * cut_range.0),
+        back_range.1.max(k * cut_range.1),
+    );
     let u = ctx.unit();
     let (name, title, caption, unit) = match what {
         Quantity::Velocity => (
@@ -109,10 +121,17 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
             format!("{u}/s²"),
         ),
     };
+    // (b) has no legend: its enlargement is named in its caption.
+    let caption = match (what, times) {
+        (Quantity::Acceleration, Some(k)) => {
+            format!("{caption}; dash-dot: the cutting stroke ×{}", short(k))
+        }
+        _ => caption.to_string(),
+    };
     let y = Axis::nice(&format!("{title} ({unit})"), lo, hi)?;
     let x = Axis::linear(TURN_AXIS, 0.0, 360.0)?.with_step(30.0)?;
     let mut plot = Plot::new(name, ctx.band(top, height), x, y, ctx.tolerance, ctx.font)?
-        .with_caption(caption);
+        .with_caption(&caption);
     let back = TAU - cutting;
     // The strokes and the pose are named in (a)'s legend only: a second
     // legend found no free corner in (b) and was set beside its plot.
@@ -137,6 +156,19 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
         Dash::Dashed,
         first.then_some(return_key.as_str()),
     )?;
+    if let Some(k) = times {
+        let enlarged = move |deg: f64| {
+            let (p, d) = curve(deg, false)?;
+            Some((Point::new(p.x, k * p.y), Vector::new(d.x, k * d.y)))
+        };
+        let key = format!("cutting stroke ×{}", short(k));
+        plot.curve(
+            &format!("curve-{name}-cutting-enlarged"),
+            &[(&enlarged, 270.0..=360.0), (&enlarged, 0.0..=90.0)],
+            Dash::DashDot,
+            first.then_some(key.as_str()),
+        )?;
+    }
     plot.line(
         &format!("line-{name}-end"),
         &[(cut, lo), (cut, hi)],
@@ -165,6 +197,28 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
         );
     }
     Ok(plot)
+}
+
+/// How much the cutting stroke's curve is drawn enlarged beside itself,
+/// where the return's greatest value is more than ten times its own
+/// (`cutting` and `back`, each stroke's greatest magnitude): the largest
+/// of 5, 10, 20, 50, … that takes it to no more than half the return's,
+/// so that the stroke the tool works in is read to its own scale (at
+/// l = 1.1 r Whitworth's return of 49° reached 21 times the cutting
+/// speed and its acceleration's spike flattened the cutting stroke onto
+/// the zero line). `None` where the curves share a scale well (a
+/// cutting stroke of no motion included).
+fn enlargement(cutting: f64, back: f64) -> Option<f64> {
+    let ratio = 0.5 * back / cutting;
+    if !(ratio.is_finite() && ratio >= 5.0) {
+        return None;
+    }
+    let decade = 10f64.powf(ratio.log10().floor());
+    [5.0, 2.0, 1.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&k| k <= ratio)
+        .filter(|&k| k >= 5.0)
 }
 
 /// The title of the panels' axis of abscissae.
@@ -221,4 +275,21 @@ fn notes(ctx: &Ctx, q: &QuickReturn) -> Vec<String> {
             sig(pose.acceleration),
         ),
     ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::enlargement;
+
+    #[test]
+    fn the_cutting_stroke_is_enlarged_only_where_the_return_dwarfs_it() {
+        assert_eq!(enlargement(1.0, 9.9), None);
+        assert_eq!(enlargement(1.0, 10.0), Some(5.0));
+        assert_eq!(enlargement(28.8, 600.0), Some(10.0));
+        assert_eq!(enlargement(1.0, 39.9), Some(10.0));
+        assert_eq!(enlargement(1.0, 40.0), Some(20.0));
+        assert_eq!(enlargement(1.0, 150.0), Some(50.0));
+        assert_eq!(enlargement(0.0, 1.0), None);
+        assert_eq!(enlargement(0.0, 0.0), None);
+    }
 }

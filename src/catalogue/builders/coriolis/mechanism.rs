@@ -310,14 +310,15 @@ pub(super) fn links_plot(
             }
         }
     }
-    driver_turn(&mut s, pose, ctx.omega, drawn.b_foot);
+    let em = ctx.style.font_size(TextSize::Letter);
+    driver_turn(&mut s, pose, (ctx.omega, em), drawn.b_foot);
     if let (true, Some(region)) = (whole, region) {
         mark_window(&mut s, "mechanism", &region);
     }
     let scale = s.transform().scale();
     let mut items = s.finish().0;
     if let (true, Some(region)) = (whole, region) {
-        bar_letter_out_of(&mut items, pose, scale, &region);
+        bar_letter_out_of(&mut items, pose, (scale, em), &region);
     }
     for item in items {
         plot.push(item);
@@ -327,7 +328,8 @@ pub(super) fn links_plot(
 
 /// The slotted bar d's letter, on the whole mechanism, moved out of the
 /// `region` its detail enlarges where it was set inside it (among
-/// `items`, drawn at `scale` page units per world unit): there it stood
+/// `items`, drawn at `scale` page units per world unit, its letters an
+/// `em` of page units): there it stood
 /// by the crank's middle, the fixed link a few units long in its box,
 /// beside the pivot C and its ground, past the bar's end, and read as
 /// naming them, the bar named by b alone (inversion 2 at l = 26.4 r,
@@ -335,7 +337,12 @@ pub(super) fn links_plot(
 /// middle of the longest run of the bar from C to A clear of the region
 /// and of the block (an em each way) and of the rod's middle, where b's
 /// letter stands (an em and a half each way); left where no run is.
-fn bar_letter_out_of(items: &mut [Item], pose: &InversionPose, scale: f64, region: &Frame) {
+fn bar_letter_out_of(
+    items: &mut [Item],
+    pose: &InversionPose,
+    (scale, em): (f64, f64),
+    region: &Frame,
+) {
     let letter = (items.iter()).find_map(|i| match (&i.id[..], &i.shape) {
         ("label-link-d", Shape::Label { anchor, toward, .. }) => Some((*anchor, *toward)),
         _ => None,
@@ -358,7 +365,7 @@ fn bar_letter_out_of(items: &mut [Item], pose: &InversionPose, scale: f64, regio
             across
         }
     });
-    let em = LETTER_EM / scale;
+    let em = em / scale;
     let along = |p: Point| (p - t).dot(&u);
     let end = along(a);
     let mut taken = Vec::new();
@@ -399,13 +406,16 @@ fn bar_letter_out_of(items: &mut [Item], pose: &InversionPose, scale: f64, regio
     }
 }
 
-/// A letter's em, page units (the letters' size).
-const LETTER_EM: f64 = 17.0;
-
 /// The driver's sense of turning: an arrowed arc about its fixed pin
 /// (the crank about B in inversion 3, the rod about B in inversion 2),
-/// lettered ω.
-pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_foot: Option<Foot>) {
+/// lettered ω beyond the arc's middle, clear of its head by a share of
+/// the letters' `em` (page units).
+pub(super) fn driver_turn(
+    s: &mut Canvas,
+    pose: &InversionPose,
+    (omega, em): (f64, f64),
+    b_foot: Option<Foot>,
+) {
     let engine = pose.engine_pose();
     let b = pose.place(engine.b());
     let tip = match pose.inversion() {
@@ -439,9 +449,24 @@ pub(super) fn driver_turn(s: &mut Canvas, pose: &InversionPose, omega: f64, b_fo
             arrow: true,
         },
     );
+    // Set off the arc's middle outwards by as far as the head stands out
+    // of the arc's circle (its half width, and the tangent it runs along
+    // leaving the circle over its length) and [`OMEGA_LETTER_CLEAR`] em
+    // more, less the placer's [`LETTER_GAP`], tried first that way: set
+    // at the arc's middle, the letter touched the head (inversion 2 at
+    // l = 45.1 r, 269.96°).
     let mid = start + 0.5 * sweep;
-    let at = b + Vector::new(mid.cos(), mid.sin()) * radius;
-    s.label("label-omega", at, RichText::parse("ω"), TextSize::Letter);
+    let out = Vector::new(mid.cos(), mid.sin());
+    let head_out = HEAD_HALF + HEAD * HEAD / (2.0 * s.page(radius));
+    let beyond = s.world(head_out + OMEGA_LETTER_CLEAR * em - LETTER_GAP);
+    let at = b + out * (radius + beyond);
+    s.label_toward(
+        "label-omega",
+        at,
+        out,
+        RichText::parse("ω"),
+        TextSize::Letter,
+    );
 }
 
 /// The directions from B that ω's arc about it, of `radius`, keeps
@@ -669,6 +694,17 @@ const OMEGA_MARGIN: f64 = 8.0;
 
 /// A head's length along ω's arc, page units: the arrowhead's.
 const HEAD: f64 = 10.0;
+
+/// Half an arrowhead's width at its back, page units: the renderer's.
+const HEAD_HALF: f64 = 3.2;
+
+/// The least room between ω's letter and its arc's head, in ems.
+const OMEGA_LETTER_CLEAR: f64 = 0.25;
+
+/// The room the placer leaves between a letter's anchor and its box,
+/// page units: ω's anchor stands that much nearer the arc than the room
+/// its letter keeps from the head.
+const LETTER_GAP: f64 = 4.0;
 
 /// The middles (degrees, from the frame's +x) of the arcs about B tried
 /// where neither ahead of the driver nor behind it is clear: above B

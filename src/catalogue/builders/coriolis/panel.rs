@@ -155,7 +155,7 @@ pub(super) fn polygon_plot(
         } else {
             continue;
         }
-        ticks(&mut s, id, (from, to), off);
+        ticks(&mut s, id, (from, to), off, window.map(|w| w.frame));
     }
     more(&mut s);
     s.set_hue(old);
@@ -215,7 +215,44 @@ pub(super) fn window(
     if length <= 0.0 || !length.is_finite() || length * scale >= SUBJECT_LEAST {
         return None;
     }
-    let mut crowd = vec![side.0, side.1];
+    let about = |start: &[Vector]| window_about(points, side, start, (closing, scale, area));
+    // The point the polygon closes at, where another stands within
+    // [`CROWD`] of it (not lettered with it, [`COINCIDE`]): its letter
+    // finds no room by its dot among the sides there and is read in the
+    // detail with the subject (inversion 2 at l = 1.85 r, e = −0.65 r,
+    // 0°: a′_d, 12 units above n, the tangential component too short to
+    // draw, lettered across o′a′ 15 units from its dot), where the detail
+    // then still enlarges at least [`CROWD_ENLARGED`] times (on a page
+    // 500 wide it enlarged it once, the box round the whole polygon).
+    let crowded = |c: &Vector| {
+        (points.iter()).any(|p| {
+            let apart = (p.2 - c).norm() * scale;
+            (COINCIDE..CROWD).contains(&apart)
+        })
+    };
+    let subject = [side.0, side.1];
+    closing
+        .filter(|c| !subject.contains(c) && crowded(c))
+        .map(|c| about(&[side.0, side.1, c]))
+        .filter(|w| w.magnification >= CROWD_ENLARGED)
+        .or_else(|| Some(about(&subject)))
+}
+
+/// The least magnification of a detail that takes in the crowded point
+/// the polygon closes at besides its subject ([`window`]).
+const CROWD_ENLARGED: f64 = 2.0;
+
+/// [`window`] about the points `start` (the subject's ends, and the
+/// point the polygon closes at where it is crowded) and those crowding
+/// them; `closing`, `scale` and `area` as there.
+fn window_about(
+    points: &[Lettered],
+    side: Subject,
+    start: &[Vector],
+    (closing, scale, area): (Option<Vector>, f64, (f64, f64)),
+) -> Window {
+    let length = (side.1 - side.0).norm();
+    let mut crowd = start.to_vec();
     loop {
         let near = points
             .iter()
@@ -247,10 +284,10 @@ pub(super) fn window(
     };
     let half = Vector::new(area.0, area.1) * (0.5 / detail);
     let frame = Frame::new(Point::from(centre - half), Point::from(centre + half));
-    Some(Window {
+    Window {
         frame,
         magnification,
-    })
+    }
 }
 
 /// The box on a polygon marking the region its detail enlarges (at
@@ -346,7 +383,7 @@ pub(super) fn detail_plot(
         } else {
             s.segment(*id, role, tail, head);
         }
-        ticks(&mut s, id, (from, to), off);
+        ticks(&mut s, id, (from, to), off, None);
     }
     more(&mut s);
     s.set_hue(old);
@@ -453,21 +490,23 @@ fn passes_point(s: &Canvas, (from, to): (Vector, Vector), drawn: &Drawn) -> bool
 
 /// The ticks that join a side set `off` (world) beside its place, drawn
 /// from `from` to `to` there, to the dots of its ends, each end whose dot
-/// `s` shows: a side set beside with nothing to its dots read as a vector
+/// `s` shows (not one in the region `quiet` left to a detail, which
+/// draws the dot: a tick to no dot, inversion 2 at l = 1.85 r,
+/// e = −0.65 r, 0°): a side set beside with nothing to its dots read as a vector
 /// of its own (inversion 2 at l = 45.1 r, 90.25°: n a′_d beside k a′,
 /// touching neither n nor a′_d). Ids `{id}-tick-tail`, `{id}-tick-head`.
 /// None for a side set farther than [`TICK_MOST`]: three sides leaving
 /// the pole on one line, the outer set twice [`SIDE_APART`] beside, drew
 /// a tick 14 units across from o′ that read as a side of its own (l =
 /// 45.1 r, 90.25°, the polygon's panel).
-fn ticks(s: &mut Canvas, id: &str, (from, to): (Point, Point), off: Vector) {
+fn ticks(s: &mut Canvas, id: &str, (from, to): (Point, Point), off: Vector, quiet: Option<Frame>) {
     let apart = s.page(off.norm());
     if !(1.0..=TICK_MOST).contains(&apart) {
         return;
     }
     for (end, at) in [("tail", from), ("head", to)] {
         let dot = at - off;
-        if s.contains(dot) {
+        if s.contains(dot) && !quiet.is_some_and(|f| f.contains(dot)) {
             s.segment(format!("{id}-tick-{end}"), Role::Construction, dot, at);
         }
     }
