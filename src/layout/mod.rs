@@ -711,7 +711,10 @@ impl PanelLayout<'_> {
                     let grown = Frame::around(centre, half).inflate(APART_EMS * p.size);
                     (TOO_NEAR..STRUCK).contains(&cost) && self.obstacles.meets_a_text(&grown)
                 };
-                let crowded = crowds(best);
+                // A link's name keeps its place by its link (farther
+                // out it reads as another's): only a value or a scale
+                // looks farther for room from the texts.
+                let crowded = p.line.is_none() && crowds(best);
                 if p.names_itself() && (lasting(best) || misnames(best) || crowded) {
                     // A name or a value crossed within a letter's reach by
                     // a line that stays (a detail's magnification beside a
@@ -796,7 +799,11 @@ impl PanelLayout<'_> {
                             !self.obstacles.crosses_a_box(a, b, p.anchor)
                                 && !self.obstacles.runs_along(a, b)
                         });
-                        if clear {
+                        // A far place whose box stands nearer another
+                        // point than its own reads as the other's, its
+                        // leader notwithstanding: shut, as one whose
+                        // leader is not clear.
+                        if clear && !nearer_by_box(&b, p.anchor, &others) {
                             found = Some((far, line));
                             break;
                         }
@@ -845,6 +852,14 @@ impl PanelLayout<'_> {
             })
             .collect()
     }
+}
+
+/// Whether the box `b` stands nearer one of `others` (not coinciding
+/// with `anchor`) than `anchor`, box to point: a letter there reads as
+/// the other point's, as a reader measures it.
+fn nearer_by_box(b: &Frame, anchor: Point, others: &[Point]) -> bool {
+    let own = b.distance_to(anchor);
+    (others.iter()).any(|&q| (q - anchor).norm() > 1.0 && b.distance_to(q) < own)
 }
 
 /// The points a label's place keeps farther from than from its own:
