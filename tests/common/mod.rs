@@ -164,3 +164,20 @@ pub fn in_threads<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync) -> 
     done.sort_by_key(|(i, _)| *i);
     done.into_iter().map(|(_, r)| r).collect()
 }
+
+/// The tail and the tip of the arrow `id` on the page: the start of its
+/// shaft and the first point of its head (the renderer draws the head
+/// from the tip). Panics where there is no such arrow.
+pub fn arrow_ends(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
+    let at = svg
+        .find(&format!("id=\"{id}\""))
+        .unwrap_or_else(|| panic!("no {id}"));
+    let mut starts = svg[at..].split(" d=\"M").skip(1).map(|s| {
+        let end = s.find(|c: char| c.is_ascii_alphabetic()).unwrap();
+        let mut xy = s[..end]
+            .split_whitespace()
+            .map(|v| v.parse::<f64>().unwrap());
+        (xy.next().unwrap(), xy.next().unwrap())
+    });
+    (starts.next().unwrap(), starts.next().unwrap())
+}

@@ -31,23 +31,9 @@ fn panel_map(svg: &str, panel: &str) -> [f64; 6] {
     [v[0], v[1], v[2], v[3], v[4], v[5]]
 }
 
-/// The tail and the tip of the arrow `id` on the page: the start of its
-/// shaft and the first point of its head (the renderer draws the head
-/// from the tip).
+/// The tail and the tip of the arrow `id` on the page.
 fn arrow(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
-    let at = svg
-        .find(&format!("id=\"{id}\""))
-        .unwrap_or_else(|| panic!("no {id}"));
-    let mut paths = svg[at..].split(" d=\"M").skip(1).map(|s| {
-        let end = s.find(|c: char| c.is_ascii_alphabetic()).unwrap();
-        let mut xy = s[..end]
-            .split_whitespace()
-            .map(|v| v.parse::<f64>().unwrap());
-        (xy.next().unwrap(), xy.next().unwrap())
-    });
-    let tail = paths.next().unwrap();
-    let tip = paths.next().unwrap();
-    (tail, tip)
+    common::arrow_ends(svg, id)
 }
 
 fn length((a, b): ((f64, f64), (f64, f64))) -> f64 {

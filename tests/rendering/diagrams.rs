@@ -1245,6 +1245,26 @@ fn ng_fig_8_draws_the_transmission_angle_over_every_crank_angle() {
     }
 }
 
+/// Ng's Fig. 8 at l = 1.09 r: F′ = F(1 − μ|tan φ|) is negative where
+/// |tan φ| > 1/μ and its curve stopped at the axis between about 50° and
+/// 130° with no word. The notes now give the span, here from
+/// sin φ = sin θ / n = 1/√2 (μ = 1, in line).
+#[test]
+fn ng_fig_8_says_where_the_slider_locks() {
+    for (l, locks) in [(1.09, true), (1.3, true), (1.45, false), (3.0, false)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(slider_crank::SliderCrank::new(1.0, l, 0.0).unwrap());
+        let svg = to_svg(&FigureName::NgFig8Forces.figure(&options).unwrap());
+        let text = one_line(&svg);
+        assert_eq!(text.contains("the slider locks"), locks, "l = {l}");
+        if locks {
+            let a = (l / 2f64.sqrt()).asin().to_degrees();
+            let want = format!("from θ = {a:.1}° to {:.1}°", 180.0 - a);
+            assert!(text.contains(&want), "l = {l}: {want} not in {text}");
+        }
+    }
+}
+
 #[test]
 fn ng_fig_8_never_prints_one_angle_for_the_least_force_and_beta_90() {
     // At long rods the two are hundredths of a degree apart: the figure
@@ -1434,38 +1454,6 @@ fn the_incline_gives_mu_as_the_tangent_of_the_tilt() {
     }
 }
 
-/// The first straight line (`M x y L x y`) written after `id` in `svg`:
-/// an arrow's shaft.
-fn shaft(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
-    let at = svg
-        .find(&format!("id=\"{id}\""))
-        .unwrap_or_else(|| panic!("no {id}"));
-    let d = &svg[at..];
-    let d = &d[d.find(" d=\"").unwrap() + 4..];
-    let n: Vec<f64> = (d[..d.find('"').unwrap()])
-        .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
-        .filter_map(|t| t.parse().ok())
-        .collect();
-    ((n[0], n[1]), (n[2], n[3]))
-}
-
-/// The tail and the tip of arrow `id`: its shaft's start and its head's
-/// first point (a head is drawn from the tip).
-fn tail_and_tip(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
-    let at = svg
-        .find(&format!("id=\"{id}\""))
-        .unwrap_or_else(|| panic!("no {id}"));
-    let mut starts = svg[at..].split(" d=\"M").skip(1).map(|s| {
-        let n: Vec<f64> = s
-            .split(|c: char| c == ' ' || c.is_ascii_alphabetic())
-            .take(2)
-            .map(|t| t.parse().unwrap())
-            .collect();
-        (n[0], n[1])
-    });
-    (starts.next().unwrap(), starts.next().unwrap())
-}
-
 /// The direct and reverse cranks near θ = 90° and at short rods and
 /// offsets: the projection joining the cranks' tips ran along both
 /// vertical cranks and doubled them; a resultant of −87 lbf beside cranks
@@ -1485,6 +1473,8 @@ fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap()
         (6.0, 0.0, 30.0),
         (1.07, 0.0, 0.0),
         (40.0, 0.0, 91.0),
+        (1.02, 0.0, 180.0),
+        (53.4, 0.0, 0.0),
     ] {
         let svg = super::polygon_figures::svg(FigureName::DirectReverseCranks, l, e, deg);
         let at = format!("l = {l}, e = {e}, θ = {deg}");
@@ -1495,7 +1485,7 @@ fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap()
             .filter(|id| id.starts_with("force-") || id.starts_with("component-"))
             .collect();
         for id in &ids {
-            let (a, b) = tail_and_tip(&svg, id);
+            let (a, b) = common::arrow_ends(&svg, id);
             let length = (b.0 - a.0).hypot(b.1 - a.1);
             assert!(length >= 14.9, "{at}: {id} {length:.1} long");
         }
@@ -1504,6 +1494,21 @@ fn the_direct_and_reverse_cranks_draw_no_nub_no_doubled_crank_and_name_the_gap()
             !(near_90 && svg.contains("id=\"projection-primary\"")),
             "{at}: the primary cranks' projection along them"
         );
+        // A force of (c) too short to draw is named so in the notes.
+        let notes = one_line(&svg);
+        for (id, name) in [
+            ("force-sum-primary", "the primary"),
+            ("force-sum-secondary", "the secondary"),
+            ("force-sum-exact", "the exact force"),
+        ] {
+            if !svg.contains(&format!("id=\"{id}\"")) {
+                let said = notes.split("In (c) ").nth(1).unwrap_or("");
+                assert!(
+                    said.contains(name) && said.contains("too short to draw"),
+                    "{at}: {id} left out unsaid"
+                );
+            }
+        }
         let meta = metadata(&svg);
         let c = &meta["cranks"];
         let value = |k: &str| c[k].as_f64().unwrap();
@@ -1556,10 +1561,10 @@ fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
             "component-across",
         ];
         for id in ids {
-            let (a, b) = shaft(&svg, id);
+            let (a, b) = common::arrow_ends(&svg, id);
             let length = (b.0 - a.0).hypot(b.1 - a.1);
-            // The shaft ends where the head (10 units) begins.
-            assert!(length >= 10.0, "{deg}°: {id} {length:.1} long");
+            // Tail to tip, the head (10 units) included: a shaft of 10.
+            assert!(length >= 20.0, "{deg}°: {id} {length:.1} long");
             for (x, y) in [a, b] {
                 assert!(
                     (0.0..=plate.width).contains(&x) && (0.0..=plate.height).contains(&y),
@@ -1567,10 +1572,10 @@ fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
                 );
             }
         }
-        let (w0, w1) = shaft(&svg, "force-weight");
+        let (w0, w1) = common::arrow_ends(&svg, "force-weight");
         let off_weight = |p: (f64, f64)| (p.0 - w0.0).abs();
         for id in ["component-along", "component-across"] {
-            let (a, b) = shaft(&svg, id);
+            let (a, b) = common::arrow_ends(&svg, id);
             let slant = ((b.0 - a.0).atan2(b.1 - a.1)).to_degrees().abs();
             let beside = off_weight(a).min(off_weight(b));
             assert!(
@@ -1607,6 +1612,13 @@ fn the_incline_draws_every_force_apart_long_enough_and_on_the_page() {
             assert!(
                 (share - exact).abs() < 1e-3 * exact,
                 "{deg}°: {share} for {exact}"
+            );
+            // φ at G is marked only between arrows drawn to scale: near
+            // 90° its letter stood outside the block, off its arc.
+            assert_eq!(
+                svg.contains("id=\"angle-weight\""),
+                sin < cos,
+                "{deg}°: φ at G"
             );
         }
     }

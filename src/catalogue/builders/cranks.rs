@@ -130,12 +130,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         "(b) Secondary: *m*/2 at *r*/4*n* on cranks at ±2θ, turning at ±2ω",
     )?);
     let band = ctx.band(16.0 + tall + 16.0, 170.0);
-    sheet.plot(sum_plot(ctx, &primary, &secondary, exact, band)?);
+    let (sum, unseen) = sum_plot(ctx, &primary, &secondary, exact, band)?;
+    sheet.plot(sum);
     let top = band.max().y + 8.0;
     sheet.height(top + 64.0 + 16.0);
     sheet.notes(
         Point::new(20.0, top),
-        &notes(ctx, mass, k, &primary, &secondary, exact),
+        &notes(ctx, mass, k, &primary, &secondary, exact, &unseen),
     );
     Ok(sheet.finish())
 }
@@ -294,8 +295,15 @@ fn angle_marks(plot: &mut Plot, pair: &Pair) {
 /// (c) The two resultants on the line of stroke, head to tail (the
 /// secondary a little above, where it would run back over the primary),
 /// and below them the exact inertia force, a dashed line joining the
-/// sum's end to it.
-fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: Frame) -> Result<Plot> {
+/// sum's end to it; also the names of the forces too short to draw
+/// there.
+fn sum_plot(
+    ctx: &Ctx,
+    p: &Pair,
+    s: &Pair,
+    exact: f64,
+    rect: Frame,
+) -> Result<(Plot, Vec<&'static str>)> {
     let (a, b) = (p.resultant(), p.resultant() + s.resultant());
     let values = [0.0, a, b, exact];
     let lo = values.iter().copied().fold(f64::INFINITY, f64::min);
@@ -315,6 +323,15 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: Frame) -> Result<Pl
         "(c) On the line of stroke: primary + secondary, and the exact inertia force −*m a* below",
     );
     let least = (SHORTEST * span).max(LEAST_ON_PAGE * world_per_page(rect, &world));
+    let unseen: Vec<&'static str> = [
+        ("the primary", a),
+        ("the secondary", b - a),
+        ("the exact force", exact),
+    ]
+    .into_iter()
+    .filter(|(_, f)| f.abs() <= least)
+    .map(|(name, _)| name)
+    .collect();
     plot.push(
         line(
             "line-stroke-sum",
@@ -358,12 +375,21 @@ fn sum_plot(ctx: &Ctx, p: &Pair, s: &Pair, exact: f64, rect: Frame) -> Result<Pl
     let from = Point::new(lo - 0.1 * span, -3.7 * row);
     let text = format!("{} {}", short(bar), ctx.units.force());
     plot.push(super::scale_bar("bar-sum", from, bar, &text));
-    Ok(plot)
+    Ok((plot, unseen))
 }
 
 /// The notes: the engine, the cranks' forces, the two resultants, their
-/// sum and the exact force, with units.
-fn notes(ctx: &Ctx, mass: f64, k: f64, p: &Pair, s: &Pair, exact: f64) -> Vec<String> {
+/// sum and the exact force, with units, and which of them are too short
+/// to draw in (c) (`unseen`).
+fn notes(
+    ctx: &Ctx,
+    mass: f64,
+    k: f64,
+    p: &Pair,
+    s: &Pair,
+    exact: f64,
+    unseen: &[&str],
+) -> Vec<String> {
     let m = ctx.mechanism;
     let (u, f) = (ctx.unit(), ctx.units.force());
     let mass_u = ctx.units.mass();
@@ -387,8 +413,22 @@ fn notes(ctx: &Ctx, mass: f64, k: f64, p: &Pair, s: &Pair, exact: f64) -> Vec<St
             sig(p.resultant() + s.resultant()),
             sig(exact),
             shortfall(ctx, k, p.resultant() + s.resultant(), exact),
-        ),
+        ) + &too_short(unseen),
     ]
+}
+
+/// The sentence naming the forces too short to draw in (c), if any (at
+/// 180° the exact force showed as a stray dot and at 90° the primary was
+/// missing, with no word).
+fn too_short(unseen: &[&str]) -> String {
+    match unseen {
+        [] => String::new(),
+        [one] => format!(" In (c) {one} is too short to draw at the panel’s scale."),
+        [first @ .., last] => format!(
+            " In (c) {} and {last} are too short to draw at the panel’s scale.",
+            first.join(", ")
+        ),
+    }
 }
 
 /// What the two cranks' sum leaves out of the exact force, where it

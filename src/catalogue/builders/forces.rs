@@ -123,10 +123,52 @@ fn apart(a: f64, b: f64, places: usize) -> String {
     if a == b {
         return format!(" The least *F* is at β = 90°, θ = {a:.places$}°.");
     }
-    let (by, way) = ((a - b).abs(), if a > b { "after" } else { "before" });
+    let way = if a > b { "after" } else { "before" };
+    // The gap between the angles as printed, so that the three numbers
+    // agree (1.785° between 72.6° and 70.9° read as a slip).
+    let printed = |x: f64| format!("{x:.places$}").parse::<f64>().unwrap_or(x);
+    let by = (printed(a) - printed(b)).abs();
     format!(
-        " The least *F* (θ = {a:.places$}°) comes {}° of crank angle {way} β = 90° (θ = {b:.places$}°): *F* = *T* / *OM* is least where *OM* is greatest, not where the rod is square to the crank.",
-        sig(by)
+        " The least *F* (θ = {a:.places$}°) comes {by:.places$}° of crank angle {way} β = 90° (θ = {b:.places$}°): *F* = *T* / *OM* is least where *OM* is greatest, not where the rod is square to the crank."
+    )
+}
+
+/// The crank angles (0° to 180°) where |tan φ| > 1/μ, so that
+/// F′ = F(1 − μ |tan φ|) would be negative (the slider locks) and its
+/// curve stops at the axis, as a clause for the notes; empty where there
+/// are none (at l = 1.09 r the curve stopped between about 50° and 130°
+/// with no word).
+fn locked(m: &SliderCrank) -> String {
+    // Positive where the slider locks; each change of sign between two
+    // samples 0.05° apart found by [`root`].
+    let excess = |deg: f64| pose_at(m, deg).map_or(f64::NAN, |p| MU * tan_phi(&p).0 - 1.0);
+    let step = |k: i32| 0.05 * f64::from(k);
+    let mut spans: Vec<(f64, f64)> = Vec::new();
+    let mut start = (excess(0.0) > 0.0).then_some(0.0);
+    for k in 1..=3600 {
+        let (a, b) = (step(k - 1), step(k));
+        let Some(edge) = root(excess, a, b).filter(|_| (excess(a) > 0.0) != (excess(b) > 0.0))
+        else {
+            continue;
+        };
+        match start.take() {
+            None => start = Some(edge),
+            Some(from) => spans.push((from, edge)),
+        }
+    }
+    if let Some(a) = start {
+        spans.push((a, 180.0));
+    }
+    if spans.is_empty() {
+        return String::new();
+    }
+    let spans: Vec<String> = spans
+        .iter()
+        .map(|(a, b)| format!("{a:.1}° to {b:.1}°"))
+        .collect();
+    format!(
+        "; from θ = {} |tan φ| > 1/μ, where *F*′ would be negative (the slider locks) and is not drawn",
+        spans.join(" and ")
     )
 }
 
@@ -335,14 +377,15 @@ fn notes(ctx: &Ctx, angles: Option<(f64, f64)>, places: usize) -> [String; 2] {
             ctx.offset_clause(),
             ctx.units.torque(),
             if ngs_rig(ctx) && ctx.units == crate::units::Units::MILLIMETRE_NEWTON {
-                " (1 kg on the 27 mm crank)"
+                " (1 kg hung at the 27 mm radius of Ng’s circular crank)"
             } else {
                 ""
             },
             u = ctx.unit(),
         ),
         format!(
-            "*F*′ is drawn with each angle’s φ (Ng’s printed *F*′ used φ of 60° throughout).{}",
+            "*F*′ is drawn with each angle’s φ (Ng’s printed *F*′ used φ of 60° throughout){}.{}",
+            locked(&m),
             angles.map_or(String::new(), |(a, b)| apart(a, b, places))
         ),
     ]

@@ -325,12 +325,16 @@ impl Incline {
     }
 
     /// The tilt φ at the foot, φ again between the weight and its
-    /// component into the plane, and the components' right angle.
+    /// component into the plane where that is drawn to scale, and the
+    /// components' right angle. A component drawn longer than to scale
+    /// lies inside the block near 90°, and its angle's letter stood
+    /// outside the block, cut off from its arc (at 89.03°).
     fn angles(&self) -> Vec<Item> {
         let (u, n, g) = (self.u, self.n, self.g);
         // The angle between the weight and its component into the plane.
         let into = (-n).y.atan2((-n).x);
-        vec![
+        let to_scale = WEIGHT * self.cos >= LEAST;
+        let mut items = vec![
             Item::new(
                 "angle-tilt",
                 Role::Dimension,
@@ -360,7 +364,11 @@ impl Incline {
                     v: -n,
                 },
             ),
-        ]
+        ];
+        if !to_scale {
+            items.retain(|item| item.id != "angle-weight");
+        }
+        items
     }
 
     /// The forces' names at their arrows' heads, each tried first beyond

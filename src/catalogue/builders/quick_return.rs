@@ -128,7 +128,10 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, top: f64, height: f64) -> R
         }
         _ => caption.to_string(),
     };
-    let y = Axis::nice(&format!("{title} ({unit})"), lo, hi)?;
+    // 3 % of the span to spare at each end: the slotted lever's default
+    // return touched the −750 frame line.
+    let pad = 0.03 * (hi - lo);
+    let y = Axis::nice(&format!("{title} ({unit})"), lo - pad, hi + pad)?;
     let x = Axis::linear(TURN_AXIS, 0.0, 360.0)?.with_step(30.0)?;
     let mut plot = Plot::new(name, ctx.band(top, height), x, y, ctx.tolerance, ctx.font)?
         .with_caption(&caption);

@@ -129,7 +129,7 @@ fn acceleration(ctx: &Ctx, top: f64, height: f64) -> Result<(Plot, bool)> {
     let approx = against_angle(m, |p: &Pose| {
         let (s, c) = (p.angle().sin(), p.angle().cos());
         let q = (n - s) * (n + s);
-        (-w2 * s / q.sqrt(), -w2 * n * n * c / (q * q.sqrt()))
+        (eq_2a(p), -w2 * n * n * c / (q * q.sqrt()))
     });
     acceleration.curve(
         "curve-rod-angular-acceleration-eq-2a",
