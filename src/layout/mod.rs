@@ -34,7 +34,10 @@ mod text;
 use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Role, Shape};
 use crate::figure::{Pen, Style};
 use crate::geom::{Frame, Point, Vector};
-use labels::{NEARER, Obstacles, ROOM, STRUCK, Steer, TOO_NEAR, over_the_other, place_toward};
+use labels::{
+    NEARER, Obstacles, ROOM, STRUCK, Steer, TOO_NEAR, box_nearer_another, over_the_other,
+    place_toward,
+};
 pub use mark::{
     Mark, Paint, PathCommand, PathData, Shape as MarkShape, Stroke, TextAnchor, TextMark,
 };
@@ -744,11 +747,16 @@ impl PanelLayout<'_> {
                 let over = |(centre, _): (Point, f64)| {
                     over_the_other(&Frame::around(centre, half), p.anchor, &others)
                 };
+                // Whether its box stands nearer another point than its
+                // own, however little: read as the other's.
+                let nearer = |(centre, _): (Point, f64)| {
+                    box_nearer_another(&Frame::around(centre, half), p.anchor, &others)
+                };
                 let crossed = lasting(best);
                 if !p.names_itself()
                     && self.points.contains(&p.anchor)
                     && !framed
-                    && (crossed || over(best) || crowds(best))
+                    && (crossed || over(best) || crowds(best) || nearer(best))
                 {
                     // A point's letter crossed within reach by a line
                     // that stays goes to a clear place farther out, a
@@ -802,8 +810,10 @@ impl PanelLayout<'_> {
                         // A far place whose box stands nearer another
                         // point than its own reads as the other's, its
                         // leader notwithstanding: shut, as one whose
-                        // leader is not clear.
-                        if clear && !nearer_by_box(&b, p.anchor, &others) {
+                        // leader is not clear; so is one beyond a
+                        // letter's reach with no leader.
+                        let held = line.is_some() || b.distance_to(p.anchor) <= reach;
+                        if clear && held && !box_nearer_another(&b, p.anchor, &others) {
                             found = Some((far, line));
                             break;
                         }
@@ -811,11 +821,12 @@ impl PanelLayout<'_> {
                     }
                     self.obstacles.rollback(mark);
                     // A letter that looked farther only for standing over
-                    // another point, or within half an em of another text,
-                    // takes a place there that reads as its own and is
-                    // clear (of the other texts too, where it stood too
-                    // near one), else keeps its own, with a leader where
-                    // it stands over another point far enough out for one.
+                    // another point or nearer it, or within half an em of
+                    // another text, takes a place there that reads as its
+                    // own and is clear (of the other texts too, where it
+                    // stood too near one), else keeps its own, with a
+                    // leader where it stands over another point far
+                    // enough out for one.
                     let better = |far: (Point, f64)| {
                         far.1 < STRUCK && !over(far) && (over(best) || far.1 < TOO_NEAR)
                     };
@@ -852,14 +863,6 @@ impl PanelLayout<'_> {
             })
             .collect()
     }
-}
-
-/// Whether the box `b` stands nearer one of `others` (not coinciding
-/// with `anchor`) than `anchor`, box to point: a letter there reads as
-/// the other point's, as a reader measures it.
-fn nearer_by_box(b: &Frame, anchor: Point, others: &[Point]) -> bool {
-    let own = b.distance_to(anchor);
-    (others.iter()).any(|&q| (q - anchor).norm() > 1.0 && b.distance_to(q) < own)
 }
 
 /// The points a label's place keeps farther from than from its own:
