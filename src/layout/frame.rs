@@ -86,6 +86,13 @@ impl PanelLayout<'_> {
             self.obstacles
                 .segment(a + n * (depth * HATCH_DEPTH), b + n * (depth * HATCH_DEPTH));
         }
+        // The strokes' tips, slanted back along the edge: a letter within
+        // its room of them opens the hatching once written
+        // ([`Hatching::written`]), so the placer keeps clear of them too.
+        let tips = n * HATCH_DEPTH - t * (0.8 * HATCH_DEPTH);
+        if let (Some(first), Some(last)) = (strokes.first(), strokes.last()) {
+            self.obstacles.segment(first.0 + tips, last.0 + tips);
+        }
         // Written again once the labels are placed, open where one sits.
         let hatching = Hatching {
             node: usize::MAX,

@@ -39,6 +39,9 @@ pub(crate) struct Obstacles {
     segments: Vec<(Point, Point, f64)>,
     /// Each box, and whether it is hollow ([`Obstacles::hollow`]).
     boxes: Vec<(Frame, bool)>,
+    /// Whether each box of `boxes` is a text's ([`Obstacles::text`]),
+    /// which another text keeps half an em from ([`Steer::apart`]).
+    texts: Vec<bool>,
     /// The obstacles built, each with its box, in the order they were
     /// added: the order in which a place's costs are added
     /// ([`Near::cost_of`]), so that a figure's placing depends on what
@@ -70,6 +73,7 @@ impl Default for Obstacles {
         Self {
             segments: Vec::new(),
             boxes: Vec::new(),
+            texts: Vec::new(),
             ordered: Vec::new(),
             grids: [Grid::default(), Grid::default()],
             pending: Vec::new(),
@@ -122,6 +126,33 @@ impl Obstacles {
         let mut near = self.near(&glyphs, Some(anchor));
         near.openings = false;
         near.cost_of(&glyphs, OPEN, f64::MIN_POSITIVE) > 0.0
+    }
+
+    /// Whether the segment from `a` to `b` (a leader) runs along a line
+    /// drawn that a letter may not sit on (weight [`OPEN`] or more): at
+    /// less than [`ALONG_ANGLE`] to it, within [`ALONG_NEAR`] of it over
+    /// a part of its length, where a reader would take the two for one.
+    pub fn runs_along(&self, a: Point, b: Point) -> bool {
+        let Some(u) = (b - a).try_normalize(0.0) else {
+            return false;
+        };
+        (self.segments.iter()).any(|&(p, q, w)| {
+            let Some(v) = (q - p).try_normalize(0.0) else {
+                return false;
+            };
+            let sine = (u.x * v.y - u.y * v.x).abs();
+            // The leader's points, by quarters, near the line's segment.
+            let near = (0..=4)
+                .map(|k| a + (b - a) * (f64::from(k) / 4.0))
+                .filter(|&m| crate::geom::point_segment_distance(m, p, q) < ALONG_NEAR)
+                .count();
+            w >= OPEN && sine < ALONG_ANGLE.sin() && near >= 2
+        })
+    }
+
+    /// Whether `b` meets the box of a text ([`Obstacles::text`]).
+    pub fn meets_a_text(&self, b: &Frame) -> bool {
+        (self.boxes.iter().zip(&self.texts)).any(|((t, _), &text)| text && b.overlap_area(t) > 0.0)
     }
 
     /// Whether the segment from `a` to `b` passes through a box (a label
@@ -190,6 +221,7 @@ impl Obstacles {
         self.segments.truncate(mark.segments);
         self.opening.truncate(mark.segments);
         self.boxes.truncate(mark.boxes);
+        self.texts.truncate(mark.boxes);
         self.pending.truncate(mark.pending);
     }
 
@@ -200,7 +232,15 @@ impl Obstacles {
     }
 
     pub fn boxed(&mut self, b: Frame) {
-        self.add_box(b, false);
+        self.add_box(b, false, false);
+    }
+
+    /// The box of a text written (a label placed, a note's line, a
+    /// dimension's value): a box as [`Obstacles::boxed`], which another
+    /// text's place also keeps [`Steer::apart`] from, lest the two read
+    /// as one run ("LG", "B F").
+    pub fn text(&mut self, b: Frame) {
+        self.add_box(b, false, true);
     }
 
     /// A box no label enters save the letter of a point inside it, which
@@ -210,16 +250,17 @@ impl Obstacles {
         let (p, q) = (b.min(), b.max());
         let corners = [p, Point::new(q.x, p.y), q, Point::new(p.x, q.y), p];
         self.polyline(&corners);
-        self.add_box(b, true);
+        self.add_box(b, true, false);
     }
 
-    fn add_box(&mut self, b: Frame, hollow: bool) {
+    fn add_box(&mut self, b: Frame, hollow: bool, text: bool) {
         if [b.min().x, b.min().y, b.max().x, b.max().y]
             .iter()
             .all(|v| v.is_finite())
         {
             let i = self.boxes.len();
             self.boxes.push((b, hollow));
+            self.texts.push(text);
             self.pending
                 .push((rectangle(b.min(), b.max()), Obstacle::Box(i)));
         }
@@ -387,13 +428,33 @@ impl Near<'_> {
     /// since, in the order added: the sum is the same, term by term, as
     /// one over every obstacle whose box meets `b` in the order added.
     fn cost_of(&self, b: &Frame, least: f64, limit: f64) -> f64 {
+        self.sum(b, limit, |o| self.term(o, b, least))
+    }
+
+    /// What the texts whose boxes meet `b` (a place's box grown by
+    /// [`Steer::apart`]) add to its cost: [`TOO_NEAR`] and the area
+    /// shared each, or some sum not below `limit` once it reaches it.
+    fn crowding(&self, b: &Frame, limit: f64) -> f64 {
+        self.sum(b, limit, |o| match o {
+            Obstacle::Box(i) if self.obstacles.texts.get(i) == Some(&true) => {
+                let a = (self.obstacles.boxes.get(i)).map_or(0.0, |t| b.overlap_area(&t.0));
+                (a > 0.0).then_some(TOO_NEAR + a)
+            }
+            _ => None,
+        })
+    }
+
+    /// The sum of `term` over the obstacles whose boxes meet `b`, in the
+    /// order of [`Near::cost_of`], or some sum not below `limit` once it
+    /// reaches it.
+    fn sum(&self, b: &Frame, limit: f64, term: impl Fn(Obstacle) -> Option<f64>) -> f64 {
         debug_assert!(self.within.holds(b), "{b:?} outside {:?}", self.within);
         let mut cost = 0.0;
         // Adds what an obstacle costs; breaks off once the sum reaches
         // the limit.
         let mut add = |&(_, o): &(Frame, Obstacle)| {
             if self.anchor.is_none_or(|a| !self.obstacles.holds(o, a))
-                && let Some(term) = self.term(o, b, least)
+                && let Some(term) = term(o)
             {
                 cost += term;
                 if cost >= limit {
@@ -664,6 +725,43 @@ pub(crate) struct Steer<'a> {
     /// the way from a′_d, across the side o′c′, while a place beside it
     /// to its left was clear.
     pub near_first: bool,
+    /// The room (page units) a place's box keeps from any text's box
+    /// ([`Obstacles::text`]), half the label's em: two labels of
+    /// different things nearer than that read as one run ("LG", "O T",
+    /// "ω ×40"). A place within it costs [`TOO_NEAR`] more and the area
+    /// shared; 0 for none.
+    pub apart: f64,
+    /// The farthest (page units) a place on the rings may stand from
+    /// the anchor, box to anchor, if any: a point's letter, read with its
+    /// point within 1.5 em. A wide letter ("*A*, *D*", a joint letter of
+    /// points that coincide) tried on a diagonal stands farther out than
+    /// a narrow one on the same ring; it is drawn in to this.
+    pub farthest: Option<f64>,
+}
+
+/// The place along the unit page `u` from `anchor`, `out` units out to
+/// the centre of a box of half-size `half`, drawn in towards the anchor
+/// until the box stands no farther than `farthest` from it.
+fn drawn_in(anchor: Point, u: Vector, out: f64, half: Vector, farthest: Option<f64>) -> Point {
+    let apart = |t: f64| {
+        let (x, y) = ((t * u.x).abs() - half.x, (t * u.y).abs() - half.y);
+        x.max(0.0).hypot(y.max(0.0))
+    };
+    let Some(most) = farthest.filter(|m| apart(out) > *m) else {
+        return anchor + u * out;
+    };
+    // The distance grows with t: halve the span down to a hundredth of
+    // a unit.
+    let (mut lo, mut hi) = (0.0, out);
+    while hi - lo > 0.01 {
+        let mid = 0.5 * (lo + hi);
+        if apart(mid) > most {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    anchor + u * lo
 }
 
 /// How much nearer (page units) another point may be to a letter's box
@@ -700,19 +798,37 @@ fn nearer_another(b: &Frame, anchor: Point, others: &[Point], pair: f64) -> bool
     })
 }
 
-/// What a place costs more whose centre stands nearer another point of
-/// a pair than its own (allowed by [`nearer_another`]): less than a unit,
-/// so that a clear place on its own side of the same ring is taken first
-/// and a crowded pair still keeps its letters. Ng's O between O and P at
-/// a short rod's inner dead centre read as P's letter.
-const OTHER_SIDE: f64 = 0.5;
+/// What a place costs more whose middle stands nearer another point
+/// than its own ([`over_the_other`]; where [`nearer_another`] reads it as
+/// the other's, on top of [`AMBIGUOUS`]): as much as glyphs struck
+/// ([`STRUCK`]), so that any clear place whose nearest point is its own
+/// is taken first, farther out if need be; only where none is clear may
+/// a letter stand over another point, and then with a leader to its own. Ng's "O, M" between O and
+/// P at a short rod's inner dead centre, taken at the first place tried
+/// for half a unit more, read as P's letter.
+const OTHER_SIDE: f64 = STRUCK;
 
 /// Whether the centre of `b` is nearer one of `others` (not coinciding
 /// with `anchor`) than `anchor`.
-fn over_the_other(b: &Frame, anchor: Point, others: &[Point]) -> bool {
+pub(crate) fn over_the_other(b: &Frame, anchor: Point, others: &[Point]) -> bool {
     let centre = nalgebra::center(&b.min(), &b.max());
     let own = (centre - anchor).norm();
     (others.iter()).any(|&q| (q - anchor).norm() > 1.0 && (centre - q).norm() < own)
+}
+
+/// What a place costs more whose box stands nearer another point than
+/// its own at all, however little ([`box_nearer_another`]): a ring's
+/// step and more, so that a place as clear on the same ring or the next
+/// whose nearest point is its own wins, and none is shut for it. At
+/// l = 1.08 r, 170° Fig. 64's E′ over the guide stood 0.7 unit nearer E″,
+/// 14 units from it, than E′.
+const BOX_NEARER: f64 = 10.0;
+
+/// Whether the box `b` stands nearer one of `others` (not coinciding
+/// with `anchor`) than `anchor`, box to point, as a reader measures it.
+pub(crate) fn box_nearer_another(b: &Frame, anchor: Point, others: &[Point]) -> bool {
+    let own = b.distance_to(anchor);
+    (others.iter()).any(|&q| (q - anchor).norm() > 1.0 && b.distance_to(q) < own)
 }
 
 /// Whether `b` stands less than [`LINE_NEARER`] nearer the line `own`
@@ -780,12 +896,14 @@ pub(crate) fn place_toward(
         dimensions,
         led,
         near_first,
+        farthest,
+        apart,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
     // `reach`): the labels placed so far are sorted out once.
     let [.., last_ring] = RINGS;
-    let out = gap.max(reach) + last_ring + NOOK_STEP + 2.0 * (half.x + half.y);
+    let out = gap.max(reach) + last_ring + NOOK_STEP + 2.0 * (half.x + half.y) + apart;
     let within = Frame::around(anchor, Vector::new(out, out)).inflate(CLEARANCE);
     let near = obstacles.near(&within, Some(anchor));
     let others: Vec<Point> = (others.iter())
@@ -811,6 +929,12 @@ pub(crate) fn place_toward(
             // Not only the room about the glyphs is crowded: the glyphs.
             cost += STRUCK;
         }
+        if apart > 0.0 {
+            cost += near.crowding(&b.inflate(apart), limit - cost);
+            if cost >= limit {
+                return;
+            }
+        }
         if !page.holds(&b) {
             cost += 1e6;
         }
@@ -820,8 +944,13 @@ pub(crate) fn place_toward(
             cost += AMBIGUOUS;
         } else if line.is_some_and(|(own, _)| nearer_another_line(&b, own, dimensions)) {
             cost += MISREAD;
-        } else if over_the_other(&b, anchor, &others) {
+        }
+        // On top of [`AMBIGUOUS`]: a place read as another's is worse
+        // than one merely over another point of a pair.
+        if over_the_other(&b, anchor, &others) {
             cost += OTHER_SIDE;
+        } else if box_nearer_another(&b, anchor, &others) {
+            cost += BOX_NEARER;
         }
         if let Some((own, links, dimensions)) = led {
             // Led, it still stands nearer its own line than another link.
@@ -846,7 +975,8 @@ pub(crate) fn place_toward(
                 true => 1.5 * extra + 0.05 * k as f64,
                 false => 0.05 * k as f64,
             };
-            consider(&near, &mut best, anchor + u * reach, penalty);
+            let at = drawn_in(anchor, u, reach, half, farthest);
+            consider(&near, &mut best, at, penalty);
             if best.1 < 1.0 && (!near_first || k == 0) {
                 return (best.2, best.1);
             }
@@ -860,7 +990,7 @@ pub(crate) fn place_toward(
             consider(
                 &near,
                 &mut best,
-                anchor + u * reach,
+                drawn_in(anchor, u, reach, half, farthest),
                 1.5 * extra + 0.05 * k as f64,
             );
         }
@@ -881,7 +1011,7 @@ pub(crate) fn place_toward(
         }
         if row.as_ref().is_none_or(|(y, _)| *y != centre.y) {
             // A unit more than a candidate's room, against rounding.
-            let reach = Vector::new(0.0, half.y + 2.0 * CLEARANCE);
+            let reach = Vector::new(0.0, half.y + 2.0 * CLEARANCE + apart);
             let band = Frame::from_corners(
                 Point::new(within.min().x, centre.y) - reach,
                 Point::new(within.max().x, centre.y) + reach,
@@ -916,10 +1046,25 @@ pub(crate) const ROOM: f64 = 1.0;
 /// for letters).
 const OPEN: f64 = 1.0;
 
+/// The angle (radians) under which a leader is taken to run along a
+/// line ([`Obstacles::runs_along`]): 10°.
+const ALONG_ANGLE: f64 = std::f64::consts::PI / 18.0;
+
+/// How near (page units) a leader's points stand to a line it runs
+/// along ([`Obstacles::runs_along`]): a thick link's half-width and the
+/// leader's, with a unit between.
+const ALONG_NEAR: f64 = 3.0;
+
 /// What a place costs more whose glyphs themselves (not only the room
 /// about them) meet something: any place where only the room is crowded
 /// is better.
 pub(crate) const STRUCK: f64 = 1000.0;
+
+/// What a place costs more whose box, grown by [`Steer::apart`], meets
+/// another text's: as much as a box in its room, so that a place half
+/// an em clear of the other labels beats one beside a line or a ring
+/// farther out, and any whose glyphs are clear beats one struck.
+pub(crate) const TOO_NEAR: f64 = 200.0;
 
 /// Spacing of the fine grid of [`nooks`], page units.
 const NOOK_STEP: f64 = 1.5;

@@ -65,6 +65,7 @@ impl PanelLayout<'_> {
         let steer = Steer {
             pair: p.size,
             led: Some((own, &links, &self.dimensions)),
+            apart: super::APART_EMS * p.size,
             ..Steer::default()
         };
         let middle = nalgebra::center(&own.0, &own.1);

@@ -181,7 +181,7 @@ impl PanelLayout<'_> {
         let half = text_half(text, size, self.font);
         let lift = if on_line { TICK + TICK_ROOM } else { 3.0 };
         let centre = self.dimension_text((a2, b2), n, half, lift);
-        self.obstacles.boxed(Frame::around(centre, half));
+        self.obstacles.text(Frame::around(centre, half));
         // Too short for both heads inside: the heads point in from
         // outside the extension lines, on the line produced each way.
         let outside = (b2 - a2).norm() < 2.0 * ARROW_LENGTH + HEADS_GAP;

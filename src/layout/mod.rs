@@ -34,7 +34,10 @@ mod text;
 use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Role, Shape};
 use crate::figure::{Pen, Style};
 use crate::geom::{Frame, Point, Vector};
-use labels::{NEARER, Obstacles, ROOM, STRUCK, Steer, place_toward};
+use labels::{
+    NEARER, Obstacles, ROOM, STRUCK, Steer, TOO_NEAR, box_nearer_another, over_the_other,
+    place_toward,
+};
 pub use mark::{
     Mark, Paint, PathCommand, PathData, Shape as MarkShape, Stroke, TextAnchor, TextMark,
 };
@@ -54,6 +57,13 @@ const SMALL_FRAME_EMS: f64 = 4.0;
 /// sizes: 1.5 em, less the side bearing (up to about 0.15 em) by which an
 /// italic letter's ink sits inside its advance, less a margin.
 const REACH: f64 = 1.3;
+
+/// The farthest a point's letter stands from its point on the rings, in
+/// font sizes, glyphs to point: a reader takes a letter within an em and
+/// a half for its point's. The box, measured on the ink with [`ROOM`]
+/// about it, keeps a unit inside that more, for the glyphs' side
+/// bearings.
+const LETTER_FARTHEST: f64 = 1.5;
 
 /// How far, in font sizes, a name or a value (not a point's letter) looks
 /// for a clear place when none within [`REACH`] is: first within 2.5 em,
@@ -98,6 +108,7 @@ pub(super) const ALONG_ARC: [f64; 5] = [0.5, 0.35, 0.65, 0.22, 0.78];
 const WIDE_ROOM: f64 = 0.3;
 
 /// A label waiting to be placed once every line is known.
+#[derive(Clone)]
 struct Pending {
     id: String,
     anchor: Point,
@@ -128,12 +139,67 @@ struct Pending {
 }
 
 impl Pending {
+    /// A joint letter of points that coincide ("*B*, *E*", the names
+    /// parted by an upright ", ") as one letter per point at the same
+    /// place, each with its point's id (`label-B`, `label-E`, with the
+    /// panel's prefix and suffix); `None` for any other label.
+    fn apart(&self) -> Option<Vec<Pending>> {
+        if !self.letter || self.line.is_some() || !self.along.is_empty() {
+            return None;
+        }
+        let mut names: Vec<Vec<&crate::figure::Run>> = vec![Vec::new()];
+        for run in self.text.runs() {
+            if run.text == ", " && !run.italic {
+                names.push(Vec::new());
+            } else if let Some(last) = names.last_mut() {
+                last.push(run);
+            }
+        }
+        let plain = |runs: &[&crate::figure::Run]| -> String {
+            runs.iter().map(|r| r.text.as_str()).collect()
+        };
+        let first = plain(names.first()?);
+        let own = format!("label-{first}");
+        let at = self.id.find(&own)?;
+        if names.len() < 2 || names.iter().any(|n| n.is_empty()) {
+            return None;
+        }
+        let markup = |runs: &[&crate::figure::Run]| -> Option<String> {
+            (runs.iter())
+                .map(|r| match (r.subscript || r.superscript, r.italic) {
+                    (true, _) => None,
+                    (false, true) => Some(format!("*{}*", r.text)),
+                    (false, false) => Some(r.text.clone()),
+                })
+                .collect()
+        };
+        (names.iter())
+            .map(|runs| {
+                let id = format!(
+                    "{}label-{}{}",
+                    &self.id[..at],
+                    plain(runs),
+                    &self.id[at + own.len()..]
+                );
+                let text = RichText::parse(&markup(runs)?);
+                Some(Pending {
+                    id,
+                    text,
+                    ..self.clone()
+                })
+            })
+            .collect()
+    }
+
     /// Whether the label says what it marks, and so may stand farther
     /// from it than a letter ([`WIDE_REACH`]): a name or a value, or a
     /// letter with words ("D at ∞" at an arrow towards a point off the
-    /// page); not a letter alone, read with what is nearest.
+    /// page); not a letter alone, read with what is nearest, nor the
+    /// joint letter of points that coincide ("*O*, *M*"), whose names
+    /// are letters alone parted by commas: crossed within reach, it goes
+    /// farther out with a leader to its point, as a letter does.
     fn names_itself(&self) -> bool {
-        !self.letter || self.text.plain().contains(' ')
+        !self.letter || (self.text.plain().split(", ")).any(|name| name.contains(' '))
     }
 }
 
@@ -408,6 +474,50 @@ impl PanelLayout<'_> {
         self.obstacles.build(room, &halves);
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
+        let (mut order, mut placed) = self.arranged(&pending, room, start);
+        // A detail's joint letter of points that coincide there ("B, E")
+        // with no clear place that reads for its point (its narrow
+        // frame, lines leaving the pin every way, other points about):
+        // the points are lettered apart, each by its own letter,
+        // narrower, and the labels placed once more.
+        let apart: Vec<Pending> = match self.detail {
+            true => (order.iter().zip(&placed))
+                .flat_map(|(p, at)| match at.cost >= STRUCK {
+                    true => p.apart().unwrap_or_else(|| vec![(*p).clone()]),
+                    false => vec![(*p).clone()],
+                })
+                .collect(),
+            false => Vec::new(),
+        };
+        if apart.len() > order.len() {
+            self.obstacles.rollback(start);
+            (order, placed) = self.arranged(&apart, room, start);
+        }
+        let joints: Vec<Point> = (order.iter())
+            .filter(|p| p.joint)
+            .map(|p| p.anchor)
+            .collect();
+        let mut nodes = Vec::new();
+        let mut boxes = Vec::new();
+        for (p, at) in order.into_iter().zip(placed) {
+            let others = others(p, &self.points, p.size);
+            if !self.left_to_detail(p, &at, &joints, (joints.iter()).chain(&others)) {
+                nodes.extend(self.label_nodes(p, &at));
+                boxes.push(at.bounds);
+            }
+        }
+        (nodes, boxes)
+    }
+
+    /// The `pending` labels placed (in their order, or, where some could
+    /// not keep clear, in a better one), the obstacles rolled back to
+    /// `start` between tries: the order kept and the places.
+    fn arranged<'p>(
+        &mut self,
+        pending: &'p [Pending],
+        room: &Frame,
+        start: labels::Mark,
+    ) -> (Vec<&'p Pending>, Vec<Placed>) {
         let first: Vec<&Pending> = pending.iter().collect();
         let placed = self.placing(&first, room);
         // Labels crossed once written (a hatching and a detail's frame
@@ -446,20 +556,7 @@ impl PanelLayout<'_> {
             }
             best
         };
-        let joints: Vec<Point> = (order.iter())
-            .filter(|p| p.joint)
-            .map(|p| p.anchor)
-            .collect();
-        let mut nodes = Vec::new();
-        let mut boxes = Vec::new();
-        for (p, at) in order.into_iter().zip(placed) {
-            let others = others(p, &self.points, p.size);
-            if !self.left_to_detail(p, &at, &joints, (joints.iter()).chain(&others)) {
-                nodes.extend(self.label_nodes(p, &at));
-                boxes.push(at.bounds);
-            }
-        }
-        (nodes, boxes)
+        (order, placed)
     }
 
     /// A placed label's text, then its leader if it has one.
@@ -475,8 +572,10 @@ impl PanelLayout<'_> {
             starts_italic(&p.text),
         );
         let leader = at.leader.map(|(a, b)| {
-            let id = match p.id.strip_prefix("label-") {
-                Some(rest) => format!("leader-{rest}"),
+            // `label-B` → `leader-B`, a detail's `detail-label-B` →
+            // `detail-leader-B`; any other id `leader-` before it.
+            let id = match p.id.split_once("label-") {
+                Some((prefix, rest)) => format!("{prefix}leader-{rest}"),
                 None => format!("leader-{}", p.id),
             };
             path(polyline_d(&[a, b], false), pen).tagged(id, "leader")
@@ -551,6 +650,9 @@ impl PanelLayout<'_> {
                                 dimensions: &self.dimensions,
                                 led: None,
                                 near_first: p.letter && p.along.is_empty() && p.line.is_none(),
+                                farthest: (p.letter && p.along.is_empty() && p.line.is_none())
+                                    .then_some(LETTER_FARTHEST * p.size - 2.0 * ROOM),
+                                apart: APART_EMS * p.size,
                             },
                             &self.obstacles,
                             room,
@@ -607,18 +709,28 @@ impl PanelLayout<'_> {
                 // A text naming a line whose nearest place names another
                 // link looks further out too.
                 let misnames = |(_, cost): (Point, f64)| p.line.is_some() && cost >= STRUCK;
-                if p.names_itself() && (lasting(best) || misnames(best)) {
+                // Within half an em of another text, its glyphs clear.
+                let crowds = |(centre, cost): (Point, f64)| {
+                    let grown = Frame::around(centre, half).inflate(APART_EMS * p.size);
+                    (TOO_NEAR..STRUCK).contains(&cost) && self.obstacles.meets_a_text(&grown)
+                };
+                // A link's name keeps its place by its link (farther
+                // out it reads as another's): only a value or a scale
+                // looks farther for room from the texts.
+                let crowded = p.line.is_none() && crowds(best);
+                if p.names_itself() && (lasting(best) || misnames(best) || crowded) {
                     // A name or a value crossed within a letter's reach by
                     // a line that stays (a detail's magnification beside a
                     // frame among crowding pins) looks further out, no
                     // point holding it near, with a space's room on each
                     // side so that it does not read as one word with a
-                    // letter beside it.
+                    // letter beside it; one within half an em of another
+                    // text ("E″×20"), for a place clear of the texts.
                     let room = Vector::new(WIDE_ROOM * p.size, 0.0);
                     let farther = p.line.map(|_| LINE_REACH);
                     for far in WIDE_REACH.into_iter().chain(farther) {
                         let wide = place(far * p.size - ROOM, half + room);
-                        if !lasting(wide) && !misnames(wide) {
+                        if !lasting(wide) && !misnames(wide) && (!crowded || wide.1 < TOO_NEAR) {
                             best = wide;
                             break;
                         }
@@ -630,7 +742,21 @@ impl PanelLayout<'_> {
                     leader = Some(line);
                 }
                 let framed = self.in_detail_frame(p);
-                if !p.names_itself() && self.points.contains(&p.anchor) && !framed && lasting(best)
+                // Whether a place stands nearer another point than its
+                // own, measured from its middle.
+                let over = |(centre, _): (Point, f64)| {
+                    over_the_other(&Frame::around(centre, half), p.anchor, &others)
+                };
+                // Whether its box stands nearer another point than its
+                // own, however little: read as the other's.
+                let nearer = |(centre, _): (Point, f64)| {
+                    box_nearer_another(&Frame::around(centre, half), p.anchor, &others)
+                };
+                let crossed = lasting(best);
+                if !p.names_itself()
+                    && self.points.contains(&p.anchor)
+                    && !framed
+                    && (crossed || over(best) || crowds(best) || nearer(best))
                 {
                     // A point's letter crossed within reach by a line
                     // that stays goes to a clear place farther out, a
@@ -638,19 +764,91 @@ impl PanelLayout<'_> {
                     // letters a point with no room beside it (a pin in a
                     // detail's frame is left to the detail instead), the
                     // leader through no label, part or marker.
-                    let far = place(LEADER_REACH * p.size - ROOM, half);
-                    let line = leader_line(&Frame::around(far.0, half), p.anchor, reach);
-                    let clear =
-                        line.is_none_or(|(a, b)| !self.obstacles.crosses_a_box(a, b, p.anchor));
-                    if !lasting(far) && clear {
-                        best = far;
-                        leader = line;
+                    // A place whose leader runs along a line drawn (the
+                    // crank beside its centre, the leader lost in it) or
+                    // through a box is shut, and the next best looked for.
+                    // So too a letter with no clear place whose nearest
+                    // point is its own: it stands where it must, nearer
+                    // another point, with a leader to its own however
+                    // near it stands.
+                    let far_reach = LEADER_REACH * p.size - ROOM;
+                    let mark = self.obstacles.mark();
+                    let mut found = None;
+                    for _ in 0..LEADER_TRIES {
+                        let far = place_toward(
+                            p.anchor,
+                            half,
+                            p.gap,
+                            far_reach,
+                            Steer {
+                                toward: p.toward,
+                                others: &others,
+                                pair: p.size,
+                                line: None,
+                                dimensions: &self.dimensions,
+                                led: None,
+                                near_first: p.letter && p.along.is_empty(),
+                                farthest: None,
+                                apart: APART_EMS * p.size,
+                            },
+                            &self.obstacles,
+                            room,
+                        );
+                        let b = Frame::around(far.0, half);
+                        if far.1 >= STRUCK && self.obstacles.lasting(&b, p.anchor) {
+                            break;
+                        }
+                        let within = match over(far) {
+                            true => LEADER_LEAST,
+                            false => reach,
+                        };
+                        let line = leader_line(&b, p.anchor, within);
+                        let clear = line.is_none_or(|(a, b)| {
+                            !self.obstacles.crosses_a_box(a, b, p.anchor)
+                                && !self.obstacles.runs_along(a, b)
+                        });
+                        // A far place whose box stands nearer another
+                        // point than its own reads as the other's, its
+                        // leader notwithstanding: shut, as one whose
+                        // leader is not clear; so is one beyond a
+                        // letter's reach with no leader.
+                        let held = line.is_some() || b.distance_to(p.anchor) <= reach;
+                        if clear && held && !box_nearer_another(&b, p.anchor, &others) {
+                            found = Some((far, line));
+                            break;
+                        }
+                        self.obstacles.boxed(b);
+                    }
+                    self.obstacles.rollback(mark);
+                    // A letter that looked farther only for standing over
+                    // another point or nearer it, or within half an em of
+                    // another text, takes a place there that reads as its
+                    // own and is clear (of the other texts too, where it
+                    // stood too near one), else keeps its own, with a
+                    // leader where it stands over another point far
+                    // enough out for one.
+                    let better = |far: (Point, f64)| {
+                        far.1 < STRUCK && !over(far) && (over(best) || far.1 < TOO_NEAR)
+                    };
+                    match found {
+                        Some((far, line)) if crossed || better(far) => {
+                            best = far;
+                            leader = line;
+                        }
+                        _ if over(best) => {
+                            let b = Frame::around(best.0, half);
+                            leader = leader_line(&b, p.anchor, LEADER_LEAST).filter(|&(a, b)| {
+                                !self.obstacles.crosses_a_box(a, b, p.anchor)
+                                    && !self.obstacles.runs_along(a, b)
+                            });
+                        }
+                        _ => {}
                     }
                 }
                 let (centre, cost) = best;
                 let bounds = Frame::around(centre, half);
-                let lasting = lasting(best);
-                self.obstacles.boxed(bounds);
+                let lasting = cost >= STRUCK && self.obstacles.lasting(&bounds, p.anchor);
+                self.obstacles.text(bounds);
                 if let Some((a, b)) = leader {
                     self.obstacles.set_weight(1.0);
                     self.obstacles.segment(a, b);
@@ -713,9 +911,23 @@ struct Placed {
 /// looks for a clear place with a leader to its point.
 const LEADER_REACH: f64 = 2.5;
 
+/// How many places farther out a letter tries ([`LEADER_REACH`]) for
+/// one whose leader runs along no line drawn, each tried place shut
+/// before the next.
+const LEADER_TRIES: usize = 8;
+
 /// How far (page units) a leader stops short of its point: clear of a
 /// pin's circle (4.2) and a dot.
 const LEADER_SHORT: f64 = 6.0;
+
+/// The least distance (page units) from a letter's box to its point at
+/// which a leader is drawn to a letter standing nearer another point
+/// ([`over_the_other`]): [`LEADER_SHORT`] and two units of line.
+const LEADER_LEAST: f64 = LEADER_SHORT + 2.0;
+
+/// The room, in font sizes, a label keeps from any other text
+/// ([`Steer::apart`]): half an em.
+const APART_EMS: f64 = 0.5;
 
 /// The leader from the box `b` to `anchor`: from the box's nearest point
 /// to [`LEADER_SHORT`] short of the anchor; none where the box stands

@@ -69,7 +69,7 @@ impl PanelLayout<'_> {
             Align::Middle => (TextAnchor::Middle, c),
             Align::End => (TextAnchor::End, c - Vector::new(half.x, 0.0)),
         };
-        self.obstacles.boxed(Frame::around(middle, half));
+        self.obstacles.text(Frame::around(middle, half));
         Some(text_node(
             ink.id,
             c,
@@ -91,7 +91,7 @@ impl PanelLayout<'_> {
         for (i, line) in lines.iter().enumerate() {
             let y = corner.y + size * 0.8 + NOTE_LINE * i as f64;
             let half = text_half(line, size, self.font);
-            self.obstacles.boxed(Frame::around(
+            self.obstacles.text(Frame::around(
                 Point::new(corner.x + half.x, y - BASELINE * size),
                 half,
             ));

@@ -66,6 +66,10 @@ pub(crate) struct Canvas {
     hue: Option<Hue>,
     /// What the items drawn now are ([`Canvas::with_part`]).
     part: Part,
+    /// The named points marked on the page, in the order drawn (name,
+    /// place, marker): those that coincide are lettered together when
+    /// the panel is finished ([`Canvas::letter_together`]).
+    marked: Vec<(String, Point, Marker)>,
 }
 
 impl Canvas {
@@ -83,6 +87,7 @@ impl Canvas {
             bare: None,
             hue: None,
             part: Part::Plain,
+            marked: Vec::new(),
         }
     }
 
@@ -381,6 +386,7 @@ impl Canvas {
         if quiet {
         } else if self.contains(p) {
             self.mark(name, p, marker, letter, toward);
+            self.marked.push((name.to_string(), p, marker));
         } else if !self.edge_arrows {
         } else if let Some((_, edge)) = self.frame.clip_segment(from, p) {
             let dir = p - from;
@@ -415,22 +421,11 @@ impl Canvas {
         held: Option<Frame>,
     ) {
         let shown = |c: &Self, p: Point| c.contains(p) && !held.is_some_and(|f| f.contains(p));
-        let mut left: Vec<&(&str, &str, Point)> = points.iter().collect();
-        let mut groups = Vec::new();
-        while !left.is_empty() {
-            let first = left.remove(0);
-            let mut group = vec![first];
-            while shown(self, first.2) {
-                let near = left.iter().position(|p| {
-                    shown(self, p.2) && group.iter().any(|g| self.page((g.2 - p.2).norm()) < crowd)
-                });
-                match near {
-                    Some(j) => group.push(left.remove(j)),
-                    None => break,
-                }
-            }
-            groups.push(group);
-        }
+        let groups = crowds(
+            points,
+            |p| shown(self, p.2),
+            |p, q| self.page((p.2 - q.2).norm()) < crowd,
+        );
         let lettered: Vec<Point> = (groups.iter())
             .filter_map(|g| g.first().map(|p| p.2))
             .filter(|p| shown(self, *p))
@@ -447,6 +442,77 @@ impl Canvas {
                 self.record(g.0, g.2);
             }
         }
+    }
+
+    /// Letters the named points marked on the page that coincide there
+    /// (within [`COINCIDE`] page units of each other, their dots run into
+    /// one) by one letter, as a book does: "*A*, *D*" at a dead centre,
+    /// where D is A, "*B*, *E*, *F*, *K*" where Ritterhaus's points meet
+    /// at the crank pin near θ = 90°. Grouped as
+    /// [`Canvas::letter_crowded`] groups a polygon's images; the letter
+    /// is a pin's where one is among them (its own letter first, the
+    /// others' after it in the order of their names), and the others'
+    /// markers and letters are taken out, their places kept in the
+    /// metadata. Two pins are not joined to each other: each is a part
+    /// drawn.
+    fn letter_together(&mut self) {
+        let marked = std::mem::take(&mut self.marked);
+        let within = self.together_within();
+        let pin = |m: &(String, Point, Marker)| m.2 == Marker::Pin;
+        let groups = crowds(
+            &marked,
+            |_| true,
+            |p, q| !(pin(p) && pin(q)) && self.page((p.1 - q.1).norm()) < within,
+        );
+        for mut group in groups.into_iter().filter(|g| g.len() > 1) {
+            // Pins first in the order drawn, then the others by name.
+            group.sort_by_key(|m| (!pin(m), (!pin(m)).then_some(m.0.as_str())));
+            let Some((head, rest)) = group.split_first() else {
+                continue;
+            };
+            let id =
+                |kind: &str, name: &str| format!("{}{kind}-{name}{}", self.prefix, self.suffix);
+            let text_of = |items: &[Item], name: &str| {
+                let label = id("label", name);
+                (items.iter().find(|it| it.id == label)).and_then(|it| match &it.shape {
+                    Shape::Label { text, .. } => Some(text.clone()),
+                    _ => None,
+                })
+            };
+            let gone: Vec<String> = (rest.iter())
+                .flat_map(|m| [id("label", &m.0), id("point", &m.0)])
+                .collect();
+            let Some(mut joint) = text_of(&self.items, &head.0) else {
+                // A pin lettered in the crank's detail: the points at it
+                // are lettered with it there.
+                if pin(head) && self.is_bare(head.1) {
+                    self.items.retain(|it| !gone.contains(&it.id));
+                }
+                continue;
+            };
+            for m in rest {
+                if let Some(text) = text_of(&self.items, &m.0) {
+                    joint = joint.then(RichText::parse(", ")).then(text);
+                }
+            }
+            self.items.retain(|it| !gone.contains(&it.id));
+            let label = id("label", &head.0);
+            if let Some(Shape::Label { text, .. }) = (self.items.iter_mut())
+                .find(|it| it.id == label)
+                .map(|it| &mut it.shape)
+            {
+                *text = joint;
+            }
+        }
+    }
+
+    /// The page distance under which points are lettered together
+    /// ([`Canvas::letter_together`]): [`COINCIDE`] on a main view; in a
+    /// detail, whose enlargement sets apart points merely near, only
+    /// those that coincide there exactly ([`EXACTLY`]: E at C at a dead
+    /// centre), which the main view leaves to it.
+    fn together_within(&self) -> f64 {
+        if self.edge_arrows { COINCIDE } else { EXACTLY }
     }
 
     /// The world direction from the nearest of `others` (other than `p`)
@@ -656,11 +722,49 @@ impl Canvas {
     /// The items drawn, the letters of edge arrows running side by side
     /// set apart ([`super::edge_letters::part`]), and the points recorded.
     pub(crate) fn finish(mut self) -> (Vec<Item>, Map<String, Value>) {
+        self.letter_together();
         let near = self.world(super::edge_letters::SIDE_BY_SIDE);
         let shift = self.world(super::edge_letters::SHIFT);
         super::edge_letters::part(&mut self.items, near, shift);
         (self.items, self.points)
     }
+}
+
+/// Page distance under which two named points coincide for the eye:
+/// their dots (2.1 units in radius, a pin's 4.2) run into one, and one
+/// letter names them all ([`Canvas::letter_together`]), as the polygons'
+/// images are ([`super::draw::polygons::COINCIDE`]).
+pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
+
+/// Page distance under which two named points are one point in a
+/// detail: a dot inside the other's marker, lettered with it there
+/// ([`Canvas::letter_together`]).
+const EXACTLY: f64 = 1.0;
+
+/// The groups of `things` that crowd, in order: the first thing left
+/// that is `shown`, with every shown thing `near` one of the group
+/// already (one not shown stands alone); a group's first member is the
+/// first of it in order.
+fn crowds<T>(
+    things: &[T],
+    shown: impl Fn(&T) -> bool,
+    near: impl Fn(&T, &T) -> bool,
+) -> Vec<Vec<&T>> {
+    let mut left: Vec<&T> = things.iter().collect();
+    let mut groups = Vec::new();
+    while !left.is_empty() {
+        let first = left.remove(0);
+        let mut group = vec![first];
+        if shown(first) {
+            while let Some(j) =
+                (left.iter()).position(|p| shown(p) && group.iter().any(|g| near(g, p)))
+            {
+                group.push(left.remove(j));
+            }
+        }
+        groups.push(group);
+    }
+    groups
 }
 
 /// A number for the metadata, to 12 significant digits (stable text).

@@ -707,7 +707,7 @@ fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (Frame,
         let e = scene.mechanism().offset();
         let stroke = transform.apply(Point::new(0.0, e)).y;
         let reach = stroke + transform.scale() * ctx.sizes.block_half_height + dimensions::DEPTH;
-        let bottom = panel.max().y.max(reach - panel.min().y);
+        let bottom = panel.max().y.max(reach);
         panel = Frame::from_corners(panel.min(), Point::new(panel.max().x, bottom));
     }
     (panel, transform)

@@ -47,20 +47,11 @@ pub(crate) fn basics_e(ctx: &LayerCtx, canvas: &mut Canvas) {
             },
         );
     }
-    if canvas.page((e - c).norm()) < COINCIDENT {
-        // At a dead centre E is C: a second letter at C's pin stood over
-        // the slider's pin beside it (Ng's "M O P" at 180°, short rods);
-        // the notes give CE = 0.
-        canvas.record(ctx.letter(VelocityPoint), e);
-    } else {
-        canvas.point(ctx.letter(VelocityPoint), e, Marker::Dot, c);
-    }
+    // At a dead centre E is C: the two are lettered together ("C, E"),
+    // as the canvas letters every pair that coincides, in a detail too.
+    canvas.point(ctx.letter(VelocityPoint), e, Marker::Dot, c);
     canvas.set_hue(hue);
 }
-
-/// The page distance (units) under which E is drawn as C itself, its
-/// dot inside C's pin circle, and only recorded.
-const COINCIDENT: f64 = 1.0;
 
 /// D: CB produced meets the perpendicular to the stroke at A; a point off
 /// the page or at infinity is shown by an arrow at the frame edge.
