@@ -611,3 +611,48 @@ fn no_oval_is_drawn_in_the_centre_lines_pattern() {
         );
     }
 }
+
+#[test]
+fn no_piece_of_guide_the_block_does_not_stand_on_is_shorter_than_the_block() {
+    // At l = 1.37 r, e = 0.225 r, 0° the rod crossing the lower guide
+    // left a piece of it, about 40 units, standing alone beside B.
+    for (rod, offset, deg) in [
+        (1.37, 0.225, 0.0),
+        (1.37, 0.225, 180.0),
+        (1.32, 0.225, 1.0),
+        (1.42, -0.225, 359.0),
+        (1.07, 0.0, 180.0),
+        (3.0, 0.0, 40.0),
+    ] {
+        let svg = coupler_at(rod, offset, deg, None);
+        let block = path(&svg, "block-slider");
+        let xs = || block.iter().map(|p| p.0);
+        let (b0, b1) = (
+            xs().fold(f64::MAX, f64::min),
+            xs().fold(f64::MIN, f64::max),
+        );
+        let mut pieces = 0;
+        for side in ["upper", "lower"] {
+            for k in 1..6 {
+                let id = match k {
+                    1 => format!("guide-{side}"),
+                    _ => format!("guide-{side}-{k}"),
+                };
+                if !svg.contains(&format!("id=\"{id}\"")) {
+                    continue;
+                }
+                pieces += 1;
+                let g = path(&svg, &id);
+                let (u, v) = (g[0].0.min(g[1].0), g[0].0.max(g[1].0));
+                let under = u <= b1 + 0.01 && v >= b0 - 0.01;
+                assert!(
+                    under || v - u >= b1 - b0,
+                    "l = {rod}, e = {offset}, θ = {deg}: {id} over {u}..{v}, {} long, the block {} long",
+                    v - u,
+                    b1 - b0
+                );
+            }
+        }
+        assert!(pieces >= 2, "l = {rod}, e = {offset}, θ = {deg}: {pieces} guides");
+    }
+}

@@ -231,17 +231,27 @@ fn guide_stretch(ctx: &LayerCtx, canvas: &Canvas, ghosts: &[Constructions]) -> S
 
 /// The guides under the block over [`guide_stretch`], each hatched on
 /// its outer side and broken where [`openings`] says; pieces shorter
-/// than [`GUIDE_MIN`] are left out. Ids `guide-upper`, `guide-upper-2`,
+/// than [`GUIDE_MIN`] are left out, and pieces the block does not stand
+/// on that are shorter than the block. Ids `guide-upper`, `guide-upper-2`,
 /// … in order along the stroke, each with its `hatch-` twin.
 fn guides(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas) {
     let m = ctx.scene.mechanism();
     let e = m.offset();
     let whole = guide_stretch(ctx, canvas, ghosts);
     let h = ctx.sizes.block_half_height;
+    let (a, l) = (ctx.main.pose().a().x, ctx.sizes.block_half_length);
+    // A piece cut off by a link that the block does not stand on and
+    // shorter than the block holds nothing on the page and reads as a
+    // stray (the coupler curves at l = 1.37 r, e = 0.225 r, 0°: a piece
+    // of the lower guide beside B, past the rod).
+    let shortest = canvas.world(GUIDE_MIN);
+    let kept = |(u, v): &Span| {
+        v - u >= shortest && ((*u <= a + l && *v >= a - l) || v - u >= 2.0 * l)
+    };
     for (name, y, side) in [("upper", e + h, 1.0), ("lower", e - h, -1.0)] {
         let drawn: Vec<Span> = pieces(whole, openings(ctx, canvas, y, side, false))
             .into_iter()
-            .filter(|(u, v)| canvas.page(v - u) >= GUIDE_MIN)
+            .filter(kept)
             .collect();
         let hatched = pieces(whole, openings(ctx, canvas, y, side, true));
         for (k, (u, v)) in drawn.into_iter().enumerate() {
