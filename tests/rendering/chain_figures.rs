@@ -627,10 +627,7 @@ fn no_piece_of_guide_the_block_does_not_stand_on_is_shorter_than_the_block() {
         let svg = coupler_at(rod, offset, deg, None);
         let block = path(&svg, "block-slider");
         let xs = || block.iter().map(|p| p.0);
-        let (b0, b1) = (
-            xs().fold(f64::MAX, f64::min),
-            xs().fold(f64::MIN, f64::max),
-        );
+        let (b0, b1) = (xs().fold(f64::MAX, f64::min), xs().fold(f64::MIN, f64::max));
         let mut pieces = 0;
         for side in ["upper", "lower"] {
             for k in 1..6 {
@@ -653,6 +650,9 @@ fn no_piece_of_guide_the_block_does_not_stand_on_is_shorter_than_the_block() {
                 );
             }
         }
-        assert!(pieces >= 2, "l = {rod}, e = {offset}, θ = {deg}: {pieces} guides");
+        assert!(
+            pieces >= 2,
+            "l = {rod}, e = {offset}, θ = {deg}: {pieces} guides"
+        );
     }
 }

@@ -1532,7 +1532,12 @@ impl Drawing {
         // Two em beyond the block, as about a pin (one left d's letter
         // 27 units from A's pin at l = 2.65 r, e = 1.44 r, 89.28°, where
         // it read as the block's).
-        let mut taken = vec![(along(q.a) - lh - 2.0 * clear, along(q.a) + lh + 2.0 * clear)];
+        // In the hand pump five: "O_cd at ∞" stands beside its arrow
+        // down from A past the block, and a letter of d two em off sent
+        // it over the barrel (l = 25 r, 0°: no room between them for the
+        // half em two labels keep apart).
+        let ems = if self.fixed == Link::C { 5.0 } else { 2.0 };
+        let mut taken = vec![(along(q.a) - lh - ems * clear, along(q.a) + lh + ems * clear)];
         // Within an em of the bar's edge on the letter's side, or in the
         // bar, not beyond its other edge.
         let on_bar = |p: Point| {

@@ -245,9 +245,8 @@ fn guides(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas) {
     // stray (the coupler curves at l = 1.37 r, e = 0.225 r, 0°: a piece
     // of the lower guide beside B, past the rod).
     let shortest = canvas.world(GUIDE_MIN);
-    let kept = |(u, v): &Span| {
-        v - u >= shortest && ((*u <= a + l && *v >= a - l) || v - u >= 2.0 * l)
-    };
+    let kept =
+        |(u, v): &Span| v - u >= shortest && ((*u <= a + l && *v >= a - l) || v - u >= 2.0 * l);
     for (name, y, side) in [("upper", e + h, 1.0), ("lower", e - h, -1.0)] {
         let drawn: Vec<Span> = pieces(whole, openings(ctx, canvas, y, side, false))
             .into_iter()
