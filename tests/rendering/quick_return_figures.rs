@@ -182,6 +182,14 @@ fn a_short_return_is_drawn_again_over_its_own_span_its_stretch_named() {
             }
             let whole = extent(&points(&svg, &format!("curve-{panel}-return")));
             let drawn = extent(&points(&svg, &id));
+            // The dotted end clear of the axis (at l = 1.1 r it ran into
+            // it, 0.8° apart).
+            let end = points(&svg, &format!("line-{own}-end"))[0].0;
+            let axis = points(&svg, &format!("{own}-axis-y"))[0].0;
+            assert!(
+                (end - axis).abs() >= 5.0,
+                "{at}, {own}: the end {end} by the axis {axis}"
+            );
             let stretch = drawn / whole;
             assert!(stretch >= 2.5, "{at}, {own}: ×{stretch}");
             let caption = text_of(&svg, &format!("{own}-caption"));

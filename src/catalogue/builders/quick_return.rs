@@ -246,10 +246,12 @@ fn split(band: Frame) -> (Frame, Frame) {
 }
 
 /// The return panel's range of the driver's turn: from the multiple of
-/// 5° at or below the cutting stroke's end to 360°.
+/// 5° at least 2.5° below the cutting stroke's end to 360°, so that the
+/// dotted end stands clear of the axis (at l = 1.1 r, 310.8°, it had run
+/// into the axis at 310°).
 fn return_axis(q: &QuickReturn) -> (f64, f64) {
     let cut = q.stroke_angles().0.to_degrees();
-    ((cut / 5.0).floor() * 5.0, 360.0)
+    (((cut - 2.5) / 5.0).floor() * 5.0, 360.0)
 }
 
 /// The return stroke alone (dashed) over its own span of the driver's

@@ -329,6 +329,34 @@ pub(super) fn links_plot(
     Ok((plot, shown))
 }
 
+/// The slotted bar d on the page: `t`, where its middle line meets the
+/// line through C square to the stroke (the engine's T), the pins `a`
+/// (A, the block's) and `b` (B), its direction `u` from T to A and
+/// `across` it. `None` where A stands at T (no direction).
+struct Bar {
+    t: Point,
+    a: Point,
+    b: Point,
+    u: Vector,
+    across: Vector,
+}
+
+impl Bar {
+    fn of(pose: &InversionPose) -> Option<Bar> {
+        let engine = pose.engine_pose();
+        let t = pose.place(Point::new(0.0, engine.mechanism().offset()));
+        let (a, b) = (pose.place(engine.a()), pose.place(engine.b()));
+        let u = unit(a - t)?;
+        Some(Bar {
+            t,
+            a,
+            b,
+            u,
+            across: Vector::new(-u.y, u.x),
+        })
+    }
+}
+
 /// The slotted bar d's letter, on the whole mechanism, moved out of the
 /// `region` its detail enlarges where it was set inside it (among
 /// `items`, drawn at `scale` page units per world unit, its letters an
@@ -353,14 +381,9 @@ fn bar_letter_out_of(
     let Some((_, toward)) = letter.filter(|(at, _)| region.contains(*at)) else {
         return;
     };
-    let engine = pose.engine_pose();
-    let mechanism = engine.mechanism();
-    let t = pose.place(Point::new(0.0, mechanism.offset()));
-    let (a, b) = (pose.place(engine.a()), pose.place(engine.b()));
-    let Some(u) = unit(a - t) else {
+    let Some(Bar { t, a, b, u, across }) = Bar::of(pose) else {
         return;
     };
-    let across = Vector::new(-u.y, u.x);
     let way = toward.and_then(unit).map_or(across, |w| {
         if w.dot(&across) < 0.0 {
             -across
@@ -400,7 +423,7 @@ fn bar_letter_out_of(
     let Some((lo, hi)) = run else {
         return;
     };
-    let half = super::super::inversions::slot_half_width(mechanism, scale);
+    let half = super::super::inversions::slot_half_width(pose.engine_pose().mechanism(), scale);
     let at = t + u * (0.5 * (lo + hi)) + way * half;
     let item = items.iter_mut().find(|i| i.id == "label-link-d");
     if let Some(Shape::Label { anchor, toward, .. }) = item.map(|i| &mut i.shape) {
@@ -426,15 +449,10 @@ fn rod_letter_out_of_bar(
     (scale, em): (f64, f64),
     region: Option<Frame>,
 ) {
-    let engine = pose.engine_pose();
-    let mechanism = engine.mechanism();
-    let t = pose.place(Point::new(0.0, mechanism.offset()));
-    let (a, b) = (pose.place(engine.a()), pose.place(engine.b()));
-    let Some(u) = unit(a - t) else {
+    let Some(Bar { t, a, b, u, across }) = Bar::of(pose) else {
         return;
     };
-    let across = Vector::new(-u.y, u.x);
-    let half = super::super::inversions::slot_half_width(mechanism, scale);
+    let half = super::super::inversions::slot_half_width(pose.engine_pose().mechanism(), scale);
     let along = |p: Point| (p - t).dot(&u);
     let off = |p: Point| (p - t).dot(&across);
     if off(b).abs() > half || along(b) < -half {
