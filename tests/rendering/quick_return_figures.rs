@@ -237,3 +237,24 @@ fn tick_labels_keep_to_five_digits_the_power_named_in_the_unit() {
     }
     assert!(n >= 12, "{n} tick labels read");
 }
+
+#[test]
+fn an_offset_is_named_as_the_chain_has_it_the_slot_in_d() {
+    // The figures draw no mechanism: "the line of stroke above the crank
+    // centre" read as the ram's line, which the offset does not move.
+    for name in [
+        FigureName::QuickReturnWhitworth,
+        FigureName::QuickReturnSlottedLever,
+    ] {
+        // The notes' lines read run together, without their breaks.
+        let squeeze = |t: &str| t.split_whitespace().collect::<String>();
+        let text = squeeze(&crate::common::read_text(&svg(name, 3.31, 0.5, 30.0)));
+        let wanted =
+            "the slot in d, the engine’s line of stroke, set 0.5 ft off the crank’s centre C";
+        assert!(text.contains(&squeeze(wanted)), "{name:?}: {text}");
+        assert!(
+            !text.contains(&squeeze("the line of stroke above")),
+            "{name:?}"
+        );
+    }
+}

@@ -39,11 +39,11 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     ] {
         let band = ctx.band(top, height);
         if !beside {
-            sheet.plot(panel(ctx, &q, what, band, TURN_AXIS)?);
+            sheet.plot(panel(ctx, &q, what, band)?);
             continue;
         }
         let (main, detail) = split(band);
-        let main = panel(ctx, &q, what, main, TURN_AXIS_SHORT)?;
+        let main = panel(ctx, &q, what, main)?;
         let per_degree = main.area().width() / 360.0;
         sheet.plot(main);
         sheet.plot(return_panel(ctx, &q, what, detail, per_degree)?);
@@ -70,7 +70,7 @@ impl Quantity {
 
 /// One panel: the value against θ, the cutting stroke full and the
 /// return dashed, the strokes' ends dotted, the drawn pose's value marked.
-fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, band: Frame, turn_axis: &str) -> Result<Plot> {
+fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, band: Frame) -> Result<Plot> {
     let w = ctx.omega;
     let value = move |deg: f64| value(q, w, what, deg);
     let (cutting, _) = q.stroke_angles();
@@ -119,7 +119,7 @@ fn panel(ctx: &Ctx, q: &QuickReturn, what: Quantity, band: Frame, turn_axis: &st
     // return touched the −750 frame line.
     let pad = 0.03 * (hi - lo);
     let y = Axis::nice(&format!("{title} ({unit})"), lo - pad, hi + pad)?;
-    let x = Axis::linear(turn_axis, 0.0, 360.0)?.with_step(30.0)?;
+    let x = Axis::linear(TURN_AXIS, 0.0, 360.0)?.with_step(30.0)?;
     let mut plot = Plot::new(name, band, x, y, ctx.tolerance, ctx.font)?.with_caption(&caption);
     let back = TAU - cutting;
     // The strokes and the pose are named in (a)'s legend only: a second
@@ -330,12 +330,10 @@ fn enlargement(cutting: f64, back: f64) -> Option<f64> {
         .filter(|&k| k >= 5.0)
 }
 
-/// The title of the panels' axis of abscissae.
-const TURN_AXIS: &str = "the driver’s turn since the cutting stroke began (°), as time";
-
-/// The same, shorter, where the panel shares its width with the return's
-/// (the notes say where the turn is counted from).
-const TURN_AXIS_SHORT: &str = "the driver’s turn (°), as time";
+/// The title of the panels' axis of abscissae, one at every engine (the
+/// notes say where the turn is counted from: a longer title, "… since
+/// the cutting stroke began …", did not fit beside the return's panel).
+const TURN_AXIS: &str = "the driver’s turn (°), as time";
 
 /// The driver's turn `turn` (degrees, 0 to 360) taken in its stroke's
 /// span: the cutting stroke's from 0 to `cut`, the return's from `cut`
@@ -366,7 +364,18 @@ fn notes(ctx: &Ctx, q: &QuickReturn) -> Vec<String> {
             "the rod *b* turns about *B* (θ falling as it turns)",
         ),
     };
-    let offset = ctx.offset_clause();
+    // The offset named as the chain has it: the line of stroke is the
+    // slot in d, set e off the crank's centre C (the figure draws no
+    // mechanism; "the line of stroke above the crank centre" read as the
+    // ram's).
+    let offset = match m.offset() {
+        0.0 => String::new(),
+        e => format!(
+            ", *e* = {} {u} (the slot in *d*, the engine’s line of stroke, set {} {u} off the crank’s centre *C*)",
+            short(e),
+            short(e.abs())
+        ),
+    };
     vec![
         format!(
             "{name}: *r* = {} {u}, *l* = {} {u}{offset}; {driver} at ω = {} rad/s ({} rpm); the tool is driven by the arm *L* = {} {u} of the slotted link *d* through a pin in a slot of the ram, its stroke square to the fixed link’s line of centres.",
