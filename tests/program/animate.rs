@@ -199,16 +199,34 @@ fn d_runs_off_to_infinity_and_back_with_its_arrow() {
         // near them D is beyond the page, an arrow pointing to it.
         let at_infinity = d.get("at_infinity").is_some();
         assert_eq!(at_infinity, k == 2 || k == 6, "frame {k}: D = {d}");
-        let drawn: Vec<&str> = ["point-D", "offpage-D", "infinity-D"]
+        let mut drawn: Vec<&str> = ["point-D", "offpage-D", "infinity-D"]
             .into_iter()
             .filter(|id| f.contains(&format!(" id=\"{id}\"")))
             .collect();
+        // At a dead centre D is at A: its dot is A's, lettered "A, D".
+        if d == &common::metadata(f)["points"]["A"] {
+            assert!(drawn.is_empty(), "frame {k}: D at A drawn apart {drawn:?}");
+            assert!(letter_of(f, "label-A").contains("A, D"), "frame {k}");
+            drawn.push("at A");
+        }
         assert_eq!(drawn.len(), 1, "frame {k}: {drawn:?}");
         assert_eq!(drawn[0] == "infinity-D", at_infinity, "frame {k}");
         kinds.push(drawn[0]);
     }
+    // At the dead centres with A, off the page near them, at infinity at
+    // 90° and 270°.
     let seen: HashSet<&str> = kinds.iter().copied().collect();
-    assert_eq!(seen.len(), 3, "{kinds:?}");
+    let want: HashSet<&str> = ["at A", "offpage-D", "infinity-D"].into();
+    assert_eq!(seen, want, "{kinds:?}");
+}
+
+/// The text of the element `id` in `svg`, its tags left out.
+fn letter_of(svg: &str, id: &str) -> String {
+    let from = svg.find(&format!(" id=\"{id}\"")).unwrap_or(svg.len());
+    let rest = &svg[from..];
+    let open = rest.find('>').map_or(rest.len(), |i| i + 1);
+    let close = rest.find("</text>").unwrap_or(rest.len());
+    common::read_text(rest.get(open..close).unwrap_or(""))
 }
 
 #[test]
