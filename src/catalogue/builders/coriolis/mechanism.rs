@@ -329,6 +329,21 @@ pub(super) fn links_plot(
     Ok((plot, shown))
 }
 
+/// The longest run of `(from, to)` (along a bar, page units from its
+/// start) clear of every `taken` stretch; `None` where none is longer
+/// than nothing.
+fn longest_clear_run(taken: &[(f64, f64)], (from, to): (f64, f64)) -> Option<(f64, f64)> {
+    let mut cuts: Vec<f64> = vec![from, to];
+    cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
+    let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(from, to)).collect();
+    cuts.sort_by(f64::total_cmp);
+    let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
+    (cuts.iter().copied())
+        .zip(cuts.iter().copied().skip(1))
+        .filter(|(lo, hi)| hi > lo && free(0.5 * (lo + hi)))
+        .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
+}
+
 /// The slotted bar d on the page: `t`, where its middle line meets the
 /// line through C square to the stroke (the engine's T), the pins `a`
 /// (A, the block's) and `b` (B), its direction `u` from T to A and
@@ -411,16 +426,7 @@ fn bar_letter_out_of(
     taken.push((lo - em, hi + em));
     let rod = along(Point::from((a.coords + b.coords) * 0.5));
     taken.push((rod - 1.5 * em, rod + 1.5 * em));
-    let mut cuts: Vec<f64> = vec![0.0, end];
-    cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
-    let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(0.0, end)).collect();
-    cuts.sort_by(f64::total_cmp);
-    let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
-    let run = (cuts.iter().copied())
-        .zip(cuts.iter().copied().skip(1))
-        .filter(|(lo, hi)| hi > lo && free(0.5 * (lo + hi)))
-        .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)));
-    let Some((lo, hi)) = run else {
+    let Some((lo, hi)) = longest_clear_run(&taken, (0.0, end)) else {
         return;
     };
     let half = super::super::inversions::slot_half_width(pose.engine_pose().mechanism(), scale);
@@ -526,18 +532,7 @@ fn rod_letter_out_of_bar(
             _ => {}
         }
     }
-    let mut cuts: Vec<f64> = vec![lo_end, hi_end];
-    cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
-    let mut cuts: Vec<f64> = (cuts.into_iter())
-        .map(|x| x.clamp(lo_end, hi_end))
-        .collect();
-    cuts.sort_by(f64::total_cmp);
-    let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
-    let run = (cuts.iter().copied())
-        .zip(cuts.iter().copied().skip(1))
-        .filter(|(lo, hi)| hi > lo && free(0.5 * (lo + hi)))
-        .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)));
-    let Some((lo, hi)) = run else {
+    let Some((lo, hi)) = longest_clear_run(&taken, (lo_end, hi_end)) else {
         return;
     };
     let at = t + u * (0.5 * (lo + hi)) + way * half;
