@@ -17,6 +17,7 @@ mod worked_engine;
 mod chain_figures;
 mod diagrams;
 mod figure_layout;
+mod figure_texts;
 mod figures;
 mod inversion_figures;
 mod plates;

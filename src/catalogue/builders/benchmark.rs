@@ -120,7 +120,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         &[if ctx.options.data.is_some() {
             "From the table given.".to_string()
         } else {
-            "From docs/curve-benchmarks.csv, written by the curve table example (criterion times on the machine that ran it).".to_string()
+            "The library’s own curves as it flattens them: segments, measured error and criterion times, on the machine that measured them.".to_string()
         }],
     );
     Ok(sheet.finish())
