@@ -1976,3 +1976,50 @@ fn a_crowded_closing_point_is_lettered_by_its_dot() {
         }
     }
 }
+
+#[test]
+fn a_needle_s_sides_stand_on_one_side_and_its_letters_on_the_other() {
+    // Review 42: the engine at l = 1.09 r, 0° set the acceleration
+    // polygon's c′b′ below its line and b′x above it, lettered q′ above
+    // b′x (its dot on the line below the arrow, the letter naming the
+    // arrow) and left c′q′ undrawn. A needle's sides are now stacked on
+    // one side of its line, c′q′ among them, and its letters stand on
+    // the other.
+    const ON: f64 = 3.0;
+    for (rod, deg) in [
+        (1.09, 0.0),
+        (1.1, 0.0),
+        (1.14, 0.0),
+        (1.09, 180.0),
+        (4.0, 0.0),
+    ] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let at = format!("l = {rod} r, {deg}°");
+        let line = dot(&svg, "point-c2").1;
+        let middle = |r: &crate::plate::Rect| 0.5 * (r.y0 + r.y1) - line;
+        let sides: Vec<f64> = (plate.ink.iter())
+            .filter(|(id, _)| id.starts_with("acceleration-") && !id.contains("caption"))
+            .map(|(_, r)| middle(r))
+            .filter(|d| d.abs() > ON)
+            .collect();
+        assert!(!sides.is_empty(), "{at}: no side set beside the line");
+        let below = sides[0] > 0.0;
+        assert!(
+            sides.iter().all(|d| (*d > 0.0) == below),
+            "{at}: sides on both sides of the line: {sides:?}"
+        );
+        assert!(
+            element(&svg, "acceleration-c2q2").is_some(),
+            "{at}: c′q′ not drawn"
+        );
+        for label in images(&plate, true) {
+            let d = middle(&label.rect);
+            assert!(
+                d.abs() <= ON || (d > 0.0) != below,
+                "{at}: {} on the sides' side of the line ({d:.1})",
+                label.id
+            );
+        }
+    }
+}
