@@ -1528,9 +1528,12 @@ fn a_tangential_component_too_short_to_draw_is_said_so() {
     // The fifteenth review, 3: at inversion 2, l = 2.84 r, e = -1.38 r,
     // 0° d's tangential component n a′_d (α_d · CA = 84 ft/s², 11 units)
     // was neither drawn nor said. It is drawn, or the notes say how long
-    // it is drawn and what marks its ends.
+    // it is drawn and what marks its ends; drawn, in the polygon or in
+    // the detail that enlarges a′_d crowded by n.
     let svg = svg(FigureName::CoriolisInversion2, 2.84, -1.38, 0.0);
-    let drawn = element(&svg, "acceleration-nad").is_some();
+    let drawn = ["acceleration-nad", "detail-acceleration-nad"]
+        .iter()
+        .any(|id| element(&svg, id).is_some());
     // Read without spaces: the notes wrap anywhere.
     let text: String = (crate::common::read_text(&svg).chars())
         .filter(|c| !c.is_whitespace())
@@ -1935,6 +1938,88 @@ fn the_rod_s_letter_stands_out_of_d_s_bar_apart_from_d_s() {
                 let gap = letters_gap(&plate, "label-link-b", other);
                 assert!(gap >= 8.5, "{at}: b {gap:.1} units from {other}");
             }
+        }
+    }
+}
+
+/// The distance from `p` to the box of the letter `id`, if set.
+fn to_letter(plate: &Plate, id: &str, p: (f64, f64)) -> Option<f64> {
+    let t = plate.texts.iter().find(|t| t.id == id)?;
+    let dx = (t.rect.x0 - p.0).max(p.0 - t.rect.x1).max(0.0);
+    let dy = (t.rect.y0 - p.1).max(p.1 - t.rect.y1).max(0.0);
+    Some(dx.hypot(dy))
+}
+
+#[test]
+fn a_crowded_closing_point_is_lettered_by_its_dot() {
+    // Review 42: inversion 2 at l = 2.8 r, e = 1.22 r, 0° set a′_d 9
+    // units below n (the tangential component too short to draw), o′a′
+    // 10 units below it, and lettered it across o′a′, 22 units from its
+    // dot. A detail now enlarges the two, where (or where the polygon
+    // draws them) each letter stands by its dot.
+    const BY: f64 = 8.0;
+    for (rod, offset, deg) in [(2.8, 1.22, 0.0), (2.75, 1.22, 0.0), (2.8, 1.22, 1.0)] {
+        let svg = svg(FigureName::CoriolisInversion2, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        for key in ["ad2", "n"] {
+            let gap = ["detail-", ""]
+                .iter()
+                .find_map(|pre| {
+                    let dot = circle(&svg, &format!("{pre}point-{key}"))?;
+                    to_letter(&plate, &format!("{pre}label-{key}"), dot)
+                })
+                .unwrap_or_else(|| panic!("l = {rod} r, {deg}°: {key} unlettered"));
+            assert!(
+                gap <= BY,
+                "l = {rod} r, e = {offset} r, {deg}°: {key}'s letter {gap:.1} from its dot"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_needle_s_sides_stand_on_one_side_and_its_letters_on_the_other() {
+    // Review 42: the engine at l = 1.09 r, 0° set the acceleration
+    // polygon's c′b′ below its line and b′x above it, lettered q′ above
+    // b′x (its dot on the line below the arrow, the letter naming the
+    // arrow) and left c′q′ undrawn. A needle's sides are now stacked on
+    // one side of its line, c′q′ among them, and its letters stand on
+    // the other.
+    const ON: f64 = 3.0;
+    for (rod, deg) in [
+        (1.09, 0.0),
+        (1.1, 0.0),
+        (1.14, 0.0),
+        (1.09, 180.0),
+        (4.0, 0.0),
+    ] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let at = format!("l = {rod} r, {deg}°");
+        let line = dot(&svg, "point-c2").1;
+        let middle = |r: &crate::plate::Rect| 0.5 * (r.y0 + r.y1) - line;
+        let sides: Vec<f64> = (plate.ink.iter())
+            .filter(|(id, _)| id.starts_with("acceleration-") && !id.contains("caption"))
+            .map(|(_, r)| middle(r))
+            .filter(|d| d.abs() > ON)
+            .collect();
+        assert!(!sides.is_empty(), "{at}: no side set beside the line");
+        let below = sides[0] > 0.0;
+        assert!(
+            sides.iter().all(|d| (*d > 0.0) == below),
+            "{at}: sides on both sides of the line: {sides:?}"
+        );
+        assert!(
+            element(&svg, "acceleration-c2q2").is_some(),
+            "{at}: c′q′ not drawn"
+        );
+        for label in images(&plate, true) {
+            let d = middle(&label.rect);
+            assert!(
+                d.abs() <= ON || (d > 0.0) != below,
+                "{at}: {} on the sides' side of the line ({d:.1})",
+                label.id
+            );
         }
     }
 }

@@ -429,15 +429,86 @@ const SIDE_APART: f64 = 7.0;
 /// running back over c′b′, and the two read as one line; the velocity
 /// polygon's cb and ca are one arrow where a = b. A side set beside one
 /// it leaves at a narrow angle keeps its head on its point. Sides too
-/// short to be drawn count as points.
-fn apart<const N: usize>(canvas: &Canvas, sides: [(Point, Point); N]) -> [(Vector, Vector); N] {
+/// short to be drawn count as points. A needle's sides are stacked on one
+/// side of its line instead ([`stacked`]), told by the flag returned.
+fn apart<const N: usize>(
+    canvas: &Canvas,
+    sides: [(Point, Point); N],
+) -> ([(Vector, Vector); N], bool) {
     let drawn = sides.map(|(p, q)| {
         let seen = canvas.page((q - p).norm()) >= MIN_ARROW;
         (p, if seen { q } else { p })
     });
-    let offsets = side_by_side_ends(&drawn, canvas.world(SIDE_APART));
     let zero = (Vector::zeros(), Vector::zeros());
-    std::array::from_fn(|i| offsets.get(i).copied().unwrap_or(zero))
+    if let Some(offsets) = stacked(canvas, &drawn) {
+        let offsets = std::array::from_fn(|i| offsets.get(i).map_or(zero, |o| (*o, *o)));
+        return (offsets, true);
+    }
+    let offsets = side_by_side_ends(&drawn, canvas.world(SIDE_APART));
+    let offsets = std::array::from_fn(|i| offsets.get(i).copied().unwrap_or(zero));
+    (offsets, false)
+}
+
+/// Page distance from the line of a polygon's longest side within which
+/// every end of its sides stands where the polygon is a needle, folded
+/// onto one line (at the dead centres): half [`SIDE_APART`].
+const NEEDLE: f64 = 0.5 * SIDE_APART;
+
+/// The offsets of the `sides` (drawn ends; the result first) of a
+/// polygon folded onto one line ([`NEEDLE`]), or none where it is not
+/// one: each side, in order, on the first of the line and the rows
+/// [`SIDE_APART`] beside it, all on one side of it, where it shares no
+/// run with a side already there (a side running on from the head of
+/// another stays in its row). Set beside the line to either side, as
+/// sides off a polygon's line are, the sides of a needle left its
+/// letters no side of their dots clear of arrows: the engine at
+/// l = 1.09 r, 0° drew c′b′ below the line and b′x above it, q′ was
+/// lettered above b′x, naming it, and c′q′ was not drawn. A needle along
+/// the page is stacked below its line, one up it to its right, and its
+/// letters stand on the side clear of arrows.
+fn stacked(canvas: &Canvas, sides: &[(Point, Point)]) -> Option<Vec<Vector>> {
+    let (p, q) =
+        *(sides.iter()).max_by(|a, b| (a.1 - a.0).norm().total_cmp(&(b.1 - b.0).norm()))?;
+    let length = (q - p).norm();
+    if length.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+        return None;
+    }
+    let u = (q - p) / length;
+    let off = |x: Point| crate::geom::cross(&u, &(x - p)).abs();
+    let needle = (sides.iter()).all(|s| canvas.page(off(s.0).max(off(s.1))) < NEEDLE);
+    if !needle {
+        return None;
+    }
+    // Below the line on the page (world y up), or to its right where it
+    // runs up the page.
+    let normal = Vector::new(-u.y, u.x);
+    let down = if u.x.abs() >= u.y.abs() {
+        normal.y < 0.0
+    } else {
+        normal.x > 0.0
+    };
+    let across = if down { normal } else { -normal };
+    let step = canvas.world(SIDE_APART);
+    let mut rows: Vec<Vec<(f64, f64)>> = Vec::new();
+    let offsets = (sides.iter())
+        .map(|(a, b)| {
+            let (s, t) = ((a - p).dot(&u), (b - p).dot(&u));
+            let run = (s.min(t), s.max(t));
+            if t == s {
+                return Vector::zeros();
+            }
+            let free = |row: &Vec<(f64, f64)>| {
+                (row.iter()).all(|r| run.1.min(r.1) - run.0.max(r.0) < 0.5 * step)
+            };
+            let level = rows.iter().position(free).unwrap_or(rows.len());
+            match rows.get_mut(level) {
+                Some(row) => row.push(run),
+                None => rows.push(vec![run]),
+            }
+            across * (level as f64 * step)
+        })
+        .collect();
+    Some(offsets)
 }
 
 fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
@@ -447,7 +518,7 @@ fn velocity(ctx: &LayerCtx, canvas: &mut Canvas, p: &VelocityPoints) {
         id(ctx, Slider, false),
     );
     let q = p.q.unwrap_or(p.o);
-    let [oa, ob, ab, oq] = apart(canvas, [(p.o, p.a), (p.o, p.b), (p.a, p.b), (p.o, q)]);
+    let ([oa, ob, ab, oq], _) = apart(canvas, [(p.o, p.a), (p.o, p.b), (p.a, p.b), (p.o, q)]);
     vector(
         canvas,
         format!("velocity-{o}{b}"),
@@ -514,7 +585,7 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         id(ctx, Slider, true),
     );
     let q = p.q.unwrap_or(p.o);
-    let [oa, ob, bx, xa, oq] = apart(
+    let ([oa, ob, bx, xa, oq], needle) = apart(
         canvas,
         [(p.o, p.a), (p.o, p.b), (p.b, p.x), (p.x, p.a), (p.o, q)],
     );
@@ -551,14 +622,16 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         // Where it runs over c′a′ (q′ on its line), c′q′ set beside it
         // is a third line over the two, between the points and their
         // letters: q′ on the line and the notes' c′q′ read it.
+        // A needle's c′q′ is stacked beside the others, clear of the
+        // letters ([`stacked`]).
         let beside = oq.0.norm() > 0.0 || oq.1.norm() > 0.0;
-        if !beside {
+        if !beside || needle {
             vector(
                 canvas,
                 format!("acceleration-{o}q2"),
                 Role::Auxiliary,
-                p.o,
-                q,
+                p.o + oq.0,
+                q + oq.1,
             );
         }
         if off_rod(ctx) {

@@ -149,19 +149,26 @@ pub(in crate::catalogue) fn build(ctx: &Ctx, inversion: Inversion) -> Result<Fig
     let a_scale = acceleration.map().scale();
     let sliding = polygons.p.a_d_acceleration() - polygons.k();
     let tangential = polygons.p.a_d_acceleration() - polygons.p.n();
+    // Each as the detail draws it where the detail holds both its ends
+    // (a detail about the crowded point the polygon closes at may leave
+    // the Coriolis component out); else as the polygon draws it.
+    let held = |ends: [Vector; 2]| {
+        a_window.filter(|w| ends.iter().all(|p| w.frame.contains(Point::from(*p))))
+    };
+    let coriolis_ends = polygons
+        .acceleration_subject()
+        .map_or([Vector::zeros(); 2], |s| [s.0, s.1]);
     let seen = (
-        drawn_length(sliding, a_scale, a_window),
-        drawn_length(polygons.p.coriolis(), a_scale, a_window),
-        // Where the detail, about the Coriolis component, holds both its
-        // ends; else as the polygon draws it.
+        drawn_length(
+            sliding,
+            a_scale,
+            held([polygons.k(), polygons.p.a_d_acceleration()]),
+        ),
+        drawn_length(polygons.p.coriolis(), a_scale, held(coriolis_ends)),
         drawn_length(
             tangential,
             a_scale,
-            a_window.filter(|w| {
-                [polygons.p.n(), polygons.p.a_d_acceleration()]
-                    .iter()
-                    .all(|p| w.frame.contains(Point::from(*p)))
-            }),
+            held([polygons.p.n(), polygons.p.a_d_acceleration()]),
         ),
     );
     let plain = [

@@ -212,8 +212,11 @@ pub(super) fn window(
     area: (f64, f64),
 ) -> Option<Window> {
     let length = (side.1 - side.0).norm();
-    if length <= 0.0 || !length.is_finite() || length * scale >= SUBJECT_LEAST {
+    if length <= 0.0 || !length.is_finite() {
         return None;
+    }
+    if length * scale >= SUBJECT_LEAST {
+        return crowd_window(points, side, closing, scale, area);
     }
     let about = |start: &[Vector]| window_about(points, side, start, (closing, scale, area));
     // The point the polygon closes at, where another stands within
@@ -236,6 +239,32 @@ pub(super) fn window(
         .map(|c| about(&[side.0, side.1, c]))
         .filter(|w| w.magnification >= CROWD_ENLARGED)
         .or_else(|| Some(about(&subject)))
+}
+
+/// Where the subject `side` reads in the polygon: the detail of the
+/// point the polygon closes at (`closing`) and the nearest point that
+/// crowds it (within [`CROWD`], not lettered with it, [`COINCIDE`]),
+/// enlarged about the two ([`window_about`], the short side between them
+/// its subject) at least [`CROWD_ENLARGED`] times; `None` where no point
+/// crowds it. Inversion 2 at l = 2.8 r, e = 1.22 r, 0°: a′_d stood 9
+/// units below n (the tangential component too short to draw), o′a′ 10
+/// units below it and k a′_d to its left, and its letter found room
+/// only across o′a′, 35 units below its dot.
+fn crowd_window(
+    points: &[Lettered],
+    side: Subject,
+    closing: Option<Vector>,
+    scale: f64,
+    area: (f64, f64),
+) -> Option<Window> {
+    let c = closing.filter(|c| *c != side.0 && *c != side.1)?;
+    let apart = |p: &Vector| (p - c).norm() * scale;
+    let near = (points.iter())
+        .map(|p| p.2)
+        .filter(|p| (COINCIDE..CROWD).contains(&apart(p)))
+        .min_by(|p, q| apart(p).total_cmp(&apart(q)))?;
+    let w = window_about(points, (near, c), &[near, c], (closing, scale, area));
+    (w.magnification >= CROWD_ENLARGED).then_some(w)
 }
 
 /// The least magnification of a detail that takes in the crowded point
