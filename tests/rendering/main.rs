@@ -16,6 +16,7 @@ mod worked_engine;
 
 mod chain_figures;
 mod diagrams;
+mod dynamics_marks;
 mod figure_layout;
 mod figure_texts;
 mod figures;

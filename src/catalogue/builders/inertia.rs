@@ -515,7 +515,8 @@ const ARC_RADII: [f64; 6] = [
 /// hatching it read as a mark of theirs. Where no such place is, the
 /// clearest. Its letter is kept off the directions of the panel's other
 /// letters within its reach (a detail's "×N" tag beside C read as one
-/// label with T). The arc keeps clear of `shafts` (world segments: F_i's,
+/// label with T). It keeps [`END_CLEAR`] from the ends of the panel's
+/// links and lines ([`line_ends`]). The arc keeps clear of `shafts` (world segments: F_i's,
 /// where it passes by C) as of the block.
 fn torque_arc_clear(
     panel: &Panel,
@@ -545,6 +546,7 @@ fn torque_arc_clear(
     let own_letter = lettered.then(|| up_right.y.atan2(up_right.x));
     let mut obstacles = arc_obstacles(panel);
     obstacles.extend(shafts.iter().map(|(p, q)| (page.apply(*p), page.apply(*q))));
+    let ends = line_ends(panel, c);
     let gaps = match block {
         Some(_) => vec![block, None],
         None => vec![None],
@@ -555,7 +557,8 @@ fn torque_arc_clear(
         labels.extend(own_letter);
         for gap in &gaps {
             let items = torque_arc(c, b, *gap, t, scale, radius, &labels);
-            let clear = arc_clearance(panel, &items, &obstacles);
+            let clear = arc_clearance(panel, &items, &obstacles)
+                .min(arc_clearance(panel, &items, &ends) - (END_CLEAR - ARC_CLEAR));
             if clear >= ARC_CLEAR {
                 return items;
             }
@@ -637,6 +640,39 @@ fn arc_obstacles(panel: &Panel) -> Vec<(Point, Point)> {
         }
     }
     out
+}
+
+/// Room kept between the crank effort's arc and the ends of the panel's
+/// links and construction lines off C (and a detail frame's corners),
+/// page units: an arc through G, where CG and the line from B end, with
+/// its head there, read as that line's arrowhead.
+const END_CLEAR: f64 = ROOM;
+
+/// The page points (as segments of no length) where the panel's links
+/// and construction lines end, and the corners of a detail's frame drawn
+/// on it (the arc's head on one read as the frame's mark), other than at
+/// the crank centre `c`.
+fn line_ends(panel: &Panel, c: Point) -> Vec<(Point, Point)> {
+    let t = panel.transform();
+    let centre = t.apply(c);
+    panel
+        .items()
+        .iter()
+        .filter_map(|i| match &i.shape {
+            Shape::Polyline {
+                points,
+                closed: false,
+            } if i.id.starts_with("line-") || i.id.starts_with("link-") => {
+                Some(vec![*points.first()?, *points.last()?])
+            }
+            Shape::Polyline { points, .. } if i.id == "detail-frame" => Some(points.clone()),
+            _ => None,
+        })
+        .flatten()
+        .map(|p| t.apply(p))
+        .filter(|p| (p - centre).norm() > ROOM)
+        .map(|p| (p, p))
+        .collect()
 }
 
 /// The least page distance between the arc of `items` and `obstacles`;

@@ -120,9 +120,21 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         // it passes within the arc's reach (a short rod or an offset).
         let crank = (b - c).y.atan2((b - c).x);
         let reach = canvas.world(TORQUE_REACH);
+        // The torque line OM from the centre, the rod produced to M and
+        // the offset's dimension line (world −x from the centre) too: at
+        // a dead centre OM ran down through the gap, and T, set off it by
+        // its letter's placing, stood by M's dot, far from the arc, or on
+        // the rod.
+        let m = ctx.main.e().e();
+        let produced = (m - b).dot(&(b - a)) > 0.0;
+        let e = pose.mechanism().offset();
+        let extension = (canvas.page(e.abs()) >= 4.0).then_some(std::f64::consts::PI);
         let avoid: Vec<f64> = [crank, 0.5 * crank.rem_euclid(std::f64::consts::TAU)]
             .into_iter()
+            .chain(extension)
             .chain(within(c, reach, b, a))
+            .chain(within(c, reach, c, m))
+            .chain(within(c, reach, b, m).filter(|_| produced))
             .collect();
         for item in torque_arrow(c, scene.torque(), radius, gap, &avoid) {
             canvas.push_item(item);
@@ -163,6 +175,11 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
 /// one of `avoid` runs through (the crank at 270°, a rod passing below
 /// the centre) gives its letter up in the same way. A zero torque turns
 /// counter-clockwise (a caller that draws no arrow for it leaves it out).
+/// Where no gap is given and one of `avoid` runs through the usual gap,
+/// the gap turns to the nearest direction that leaves each of them well
+/// past the arc's ends ([`free_gap`]), and T stands in it, between the
+/// arrowhead and the tail; only where there is none is T set beside the
+/// arc.
 pub(crate) fn torque_arrow(
     c: Point,
     t: f64,
@@ -173,16 +190,25 @@ pub(crate) fn torque_arrow(
     let turn = if t >= 0.0 { 1.0 } else { -1.0 };
     let sweep = turn * TORQUE_SWEEP;
     // The gap's middle is half a sweep and half a turn past the start.
+    let half_gap = 0.5 * (std::f64::consts::TAU - TORQUE_SWEEP);
+    let usual = -0.9 * turn;
+    let gap = gap.map(|g| (g, Gap::Block)).or_else(|| {
+        let middle = usual + 0.5 * sweep + std::f64::consts::PI;
+        free_gap(middle, half_gap, turn, avoid).map(|(g, turned)| match turned {
+            true => (g, Gap::Turned),
+            false => (g, Gap::Usual),
+        })
+    });
     let start = match gap {
-        Some(g) => g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI),
-        None => -0.9 * turn,
+        Some((g, _)) => g - turn * (0.5 * TORQUE_SWEEP + std::f64::consts::PI),
+        None => usual,
     };
     // T in the gap, or, where the gap holds the block or something to
     // avoid, beside the arc clear of what stands about the centre.
     let middle = start + 0.5 * sweep + std::f64::consts::PI;
-    let half_gap = 0.5 * (std::f64::consts::TAU - TORQUE_SWEEP);
     let mid = match gap {
-        Some(g) => {
+        Some((_, Gap::Usual | Gap::Turned)) => middle,
+        Some((g, Gap::Block)) => {
             let avoid: Vec<f64> = avoid.iter().copied().chain([g]).collect();
             start + sweep * clearest_share(start, sweep, &avoid)
         }
@@ -215,6 +241,50 @@ pub(crate) fn torque_arrow(
             },
         ),
     ]
+}
+
+/// Where the torque arrow's gap faces.
+#[derive(Clone, Copy)]
+enum Gap {
+    /// The slider's block, given by the caller.
+    Block,
+    /// Below the centre (above it for a clockwise torque).
+    Usual,
+    /// Turned from there, clear of what ran through it ([`free_gap`]).
+    Turned,
+}
+
+/// How far past the arc's tail (radians, 9°) every direction to be
+/// avoided keeps from a turned gap…
+const TAIL_MARGIN: f64 = 0.15;
+/// …and past its arrowhead (23°: the head's length, about 13° of the
+/// arc, and as much again): a head on a line read as that line's.
+const HEAD_MARGIN: f64 = 0.4;
+
+/// The gap's middle for T, the arc turning in the sense `turn` (±1),
+/// and whether it is turned: `usual` where none of `avoid` comes within
+/// `half_gap` of it, else the nearest direction, in steps of 5° either
+/// way, from which each of them lies [`TAIL_MARGIN`] past the tail or
+/// [`HEAD_MARGIN`] past the head, else none.
+fn free_gap(usual: f64, half_gap: f64, turn: f64, avoid: &[f64]) -> Option<(f64, bool)> {
+    if avoid.iter().all(|&a| apart(a, usual) >= half_gap) {
+        return Some((usual, false));
+    }
+    let free = |g: f64| {
+        avoid.iter().all(|&a| {
+            // Where a lies from the gap's middle, in the arc's sense:
+            // the tail at +half_gap, the head at −half_gap.
+            let d = (a - g + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+                - std::f64::consts::PI;
+            let s = turn * d;
+            s >= half_gap + TAIL_MARGIN || s <= -half_gap - HEAD_MARGIN
+        })
+    };
+    let step = 5.0_f64.to_radians();
+    (1..=36)
+        .flat_map(|k| [usual + step * f64::from(k), usual - step * f64::from(k)])
+        .find(|&g| free(g))
+        .map(|g| (g, true))
 }
 
 /// The share of the arc from `start` through `sweep` (radians) at which it
@@ -266,9 +336,16 @@ pub(super) const ALONGSIDE: f64 = 7.0;
 /// pin is drawn beside the member that brings it: the unit vector to
 /// that side, else zero. `u` is the force's direction, `rod` the rod from
 /// the pin.
-fn beside_the_rod(u: Vector, rod: Vector) -> Vector {
-    let n = rod.norm();
-    if n == 0.0 || (-u).dot(&rod) < n * ALONG_THE_ROD.cos() {
+///
+/// So too where it runs along the parallel to the stroke through the pin
+/// towards the slider (`parallel`), φ's reference: F_c from the block's
+/// side at 90° lay on that dashed line and read as a mark of φ's.
+fn beside_the_rod(u: Vector, rod: Vector, parallel: Vector) -> Vector {
+    let along = |line: Vector| {
+        let n = line.norm();
+        n > 0.0 && (-u).dot(&line) >= n * ALONG_THE_ROD.cos()
+    };
+    if !along(rod) && !along(parallel) {
         return Vector::zeros();
     }
     let side = Vector::new(-u.y, u.x);
@@ -301,7 +378,8 @@ pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArr
         let u = Vector::new(-cb.y, cb.x) / cb.norm() * t.signum();
         // Short of the pin's circle on its line; beside the rod, level
         // with the pin.
-        let side = beside_the_rod(u, a - b);
+        let parallel = Vector::new((a - b).x.signum(), 0.0);
+        let side = beside_the_rod(u, a - b, parallel);
         let short = if side == Vector::zeros() {
             PIN_SHORT
         } else {

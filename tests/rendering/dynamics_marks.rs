@@ -1,0 +1,128 @@
+//! The marks of the dynamics figures read back from their SVG: the crank
+//! effort's arc of the inertia force figure and the torque arrow of Ng's
+//! Fig. 1, each by what it names and clear of what it does not.
+
+use crate::plate;
+
+use plate::{Label, Panel, Plate, Pt, Seg};
+use slider_crank::catalogue::FigureOptions;
+use slider_crank::{Angle, FigureName, SliderCrank, render::to_svg};
+
+/// The plate of `figure` at a crank of 1, `rod`, `offset` and `degrees`.
+fn plate_at(figure: &str, rod: f64, offset: f64, degrees: f64) -> Plate {
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+    options.angle = Some(Angle::deg(degrees));
+    let f = FigureName::from_name(figure).unwrap().figure(&options);
+    Plate::read(&to_svg(&f.unwrap()))
+}
+
+/// The pieces of the strokes of `panel` with the id `id`.
+fn segs<'a>(panel: &'a Panel, id: &str) -> Vec<&'a Seg> {
+    panel
+        .strokes
+        .iter()
+        .filter(|s| s.id == id)
+        .flat_map(|s| &s.segs)
+        .collect()
+}
+
+fn label<'a>(panel: &'a Panel, id: &str) -> &'a Label {
+    let found = panel.labels.iter().find(|l| l.id == id);
+    found.unwrap_or_else(|| panic!("no {id}"))
+}
+
+fn centre(l: &Label) -> Pt {
+    (0.5 * (l.rect.x0 + l.rect.x1), 0.5 * (l.rect.y0 + l.rect.y1))
+}
+
+fn distance(p: Pt, q: Pt) -> f64 {
+    (p.0 - q.0).hypot(p.1 - q.1)
+}
+
+#[test]
+fn the_crank_effort_s_arc_keeps_off_the_ends_of_the_construction() {
+    // The inertia force at l = 2.04 r, e = 0.562 r, 90.16°: CG on the
+    // main view as long as the arc's radius, the arc ran through G,
+    // where CG and the line from B end, its head there: it read as the
+    // arrowhead of the line from B. The arc keeps a letter's room from
+    // the ends of the lines.
+    let plate = plate_at("inertia-force", 2.04, 0.562, 90.16);
+    let main = &plate.panels[0];
+    let arc = segs(main, "torque-T");
+    assert!(!arc.is_empty(), "no crank effort on the main view");
+    // G: the end of CG away from C.
+    let c = plate.point(main, "C").expect("C");
+    let cg = segs(main, "line-CG");
+    let g = [cg.first().expect("no CG").0, cg.last().expect("no CG").1]
+        .into_iter()
+        .max_by(|p, q| distance(*p, c).total_cmp(&distance(*q, c)))
+        .unwrap();
+    let near = arc
+        .iter()
+        .map(|s| s.distance_to(g))
+        .fold(f64::INFINITY, f64::min);
+    assert!(near >= 10.0, "the arc {near:.1} from G");
+}
+
+#[test]
+fn ng_s_torque_letter_stands_by_its_arc_clear_of_the_rest() {
+    // Ng's Fig. 1 at l = 1.53 r, e = 0.467 r, 0°: the torque line OM ran
+    // down through the arc's gap and T, set off it, stood beyond M's dot,
+    // far from its arc; at l = 1.93 r, e = −0.732 r, 180°, on the rod in
+    // a row with l and M. The gap turns where nothing runs through it
+    // (the crank, OM, the rod, the offset's extension line), and T stands
+    // in it on the arc's circle, clear of the links and the other
+    // letters.
+    for (rod, offset, degrees) in [(1.53, 0.467, 0.0), (1.93, -0.732, 180.0)] {
+        let at = format!("at l = {rod}, e = {offset}, {degrees}°");
+        let plate = plate_at("ng-fig-1-torque", rod, offset, degrees);
+        let main = &plate.panels[0];
+        let o = plate.point(main, "O").expect("O");
+        let arc = segs(main, "torque-T");
+        let radius = distance(arc[0].0, o);
+        let t = label(main, "value-T");
+        let off = (distance(centre(t), o) - radius).abs();
+        // Within an em of the circle: nearer than a point's letter to
+        // its point (the plate check's 1.5 em).
+        assert!(off <= t.font_size, "T {off:.1} off its arc {at}");
+        let mut lines = segs(main, "link-rod");
+        lines.extend(segs(main, "link-crank"));
+        let near = lines
+            .iter()
+            .map(|s| t.rect.distance_to_seg(s))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near >= 0.5 * t.font_size, "T {near:.1} from a line {at}");
+        for other in main.labels.iter().filter(|l| l.id != t.id) {
+            let r = &other.rect;
+            let dx = (t.rect.x0 - r.x1).max(r.x0 - t.rect.x1).max(0.0);
+            let dy = (t.rect.y0 - r.y1).max(r.y0 - t.rect.y1).max(0.0);
+            let gap = dx.hypot(dy);
+            assert!(
+                gap >= 0.5 * t.font_size,
+                "T {gap:.1} from {} {at}",
+                other.id
+            );
+        }
+    }
+}
+
+#[test]
+fn ng_s_crank_pin_force_keeps_off_phi_s_reference() {
+    // Ng's Fig. 1 at l = 1.53 r, e = 0.467 r, 90.98°: the crank upright,
+    // F_c came level from the block's side onto the pin along the dashed
+    // parallel to the stroke from which φ is measured, and read as a mark
+    // of φ's. It is set off that line, as beside the rod.
+    let plate = plate_at("ng-fig-1-torque", 1.53, 0.467, 90.98);
+    let main = &plate.panels[0];
+    let parallel = segs(main, "line-parallel-B");
+    assert!(!parallel.is_empty(), "no parallel for φ");
+    let shaft = segs(main, "force-Fc");
+    let s = shaft.first().expect("no F_c");
+    let mid = (0.5 * (s.0.0 + s.1.0), 0.5 * (s.0.1 + s.1.1));
+    let near = parallel
+        .iter()
+        .map(|p| p.distance_to(mid))
+        .fold(f64::INFINITY, f64::min);
+    assert!(near >= 4.0, "F_c's shaft {near:.1} from φ's reference");
+}
