@@ -19,6 +19,7 @@ mod diagrams;
 mod figure_layout;
 mod figures;
 mod inversion_figures;
+mod mechanism_review;
 mod plates;
 mod polygon_figures;
 mod quick_return_figures;
