@@ -184,3 +184,47 @@ fn fig_62s_dimensions_keep_off_the_links() {
         }
     }
 }
+
+/// Bennett's construction at l = 1.03 r by the inner dead centre: the
+/// detail about A, C and the points by them stood within the guides'
+/// channel, and of the block it showed one face, a lone line across the
+/// panel. It takes in the guides and the block whole.
+#[test]
+fn a_detail_crossing_the_block_shows_it_between_its_guides() {
+    for (l, deg) in [(1.03, 180.0), (1.03, 179.0), (1.03, 181.0)] {
+        let text = svg(FigureName::BennettConstruction, (1.0, l, 0.0, deg));
+        let meta = metadata(&text);
+        let panel = (meta["panels"].as_array().unwrap().iter())
+            .find(|p| p["id"] == "panel-detail")
+            .unwrap_or_else(|| panic!("l = {l}, {deg}°: no detail"));
+        let rect: Vec<f64> = (panel["rect"].as_array().unwrap().iter())
+            .map(|v| v.as_f64().unwrap())
+            .collect();
+        let inside = |p: (f64, f64)| {
+            p.0 >= rect[0] - 1.0
+                && p.0 <= rect[0] + rect[2] + 1.0
+                && p.1 >= rect[1] - 1.0
+                && p.1 <= rect[1] + rect[3] + 1.0
+        };
+        let d = attr(&text, "detail-block-slider", "d")
+            .unwrap_or_else(|| panic!("l = {l}, {deg}°: no block in the detail"));
+        let n: Vec<f64> = (d.split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace()))
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        for p in n.chunks(2) {
+            assert!(
+                inside((p[0], p[1])),
+                "l = {l}, {deg}°: the block's corner {p:?} outside the detail {rect:?}"
+            );
+        }
+        for guide in ["detail-guide-upper", "detail-guide-lower"] {
+            let g =
+                attr(&text, guide, "d").unwrap_or_else(|| panic!("l = {l}, {deg}°: no {guide}"));
+            let y: f64 = g.split_whitespace().nth(1).unwrap().parse().unwrap();
+            assert!(
+                y > rect[1] && y < rect[1] + rect[3],
+                "l = {l}, {deg}°: {guide} at {y} outside the detail {rect:?}"
+            );
+        }
+    }
+}
