@@ -172,6 +172,13 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
     })
 }
 
+/// The most the guides' height apart may take in a detail grown to them
+/// ([`with_guides`]), page units: the block is drawn to the main view's
+/// page sizes, and where the main view is drawn small (a page whose
+/// height is fixed low) it is many cranks tall in the world, and a
+/// detail grown to it ran to thousands of units.
+const GUIDES_EXTENT: f64 = 400.0;
+
 /// `d`, a construction's detail, its region grown up and down to the
 /// guides where its frame (the region and [`PAD`] about it) crosses the
 /// slider block without holding its height: at a rod of little more than
@@ -198,6 +205,9 @@ fn with_guides(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail 
     // The frame [`ABOUT_BLOCK_MAIN`] off the guides on the main view at
     // least, told from them there as a crank's detail grown to the block.
     let room = (ABOUT_BLOCK_MAIN / scale - pad).max(0.0);
+    if (2.0 * (h + room)) * page > GUIDES_EXTENT {
+        return d;
+    }
     let (lo, hi) = (
         Point::new(lo.x, lo.y.min(a.y - h - room)),
         Point::new(hi.x, hi.y.max(a.y + h + room)),
