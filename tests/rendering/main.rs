@@ -21,6 +21,7 @@ mod figure_layout;
 mod figure_texts;
 mod figures;
 mod inversion_figures;
+mod mechanism_review;
 mod plates;
 mod polygon_figures;
 mod quick_return_figures;

@@ -3456,13 +3456,15 @@ fn a_detail_letters_points_that_coincide_there_jointly() {
 }
 
 #[test]
-fn a_joint_letter_with_no_clear_place_in_a_detail_is_parted() {
+fn a_joint_letter_in_a_narrow_detail_finds_room_by_its_edge() {
     // Fig. 63 at l = 50 r, 90°: E is B in the detail, whose narrow frame
-    // leaves "B, E" no place off BD produced. B and E are lettered each
-    // by its own letter there, clear of the lines.
+    // left "B, E" no place off BD produced, and B and E were lettered
+    // each by its own letter there. The detail now leaves room for a
+    // joint letter beside the edge its points stand on, and "B, E" takes
+    // it, clear of the lines: one dot, one letter.
     let svg = svg_at("fig-63-velocity", 50.0, 0.0, 90.0);
-    assert_eq!(names_in(&svg, "detail-label-B"), ["B"]);
-    assert_eq!(names_in(&svg, "detail-label-E"), ["E"]);
+    assert_eq!(names_in(&svg, "detail-label-B"), ["B", "E"]);
+    assert_eq!(names_in(&svg, "detail-label-E"), Vec::<String>::new());
     assert_eq!(failures_at("fig-63-velocity", 50.0, 0.0, 90.0), []);
 }
 

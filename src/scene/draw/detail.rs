@@ -166,8 +166,121 @@ pub(crate) fn detail(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detai
     let d = chosen(ctx, scale, max_width)?;
     Some(match d.focus {
         Focus::Crank => clear_of_block(ctx, d, scale, max_width),
-        Focus::Construction => d,
+        Focus::Construction => {
+            with_guides(ctx, joint_room(ctx, d, scale, max_width), scale, max_width)
+        }
     })
+}
+
+/// The most the guides' height apart may take in a detail grown to them
+/// ([`with_guides`]), page units: the block is drawn to the main view's
+/// page sizes, and where the main view is drawn small (a page whose
+/// height is fixed low) it is many cranks tall in the world, and a
+/// detail grown to it ran to thousands of units.
+const GUIDES_EXTENT: f64 = 400.0;
+
+/// `d`, a construction's detail, its region grown up and down to the
+/// guides where its frame (the region and [`PAD`] about it) crosses the
+/// slider block without holding its height: at a rod of little more than
+/// a crank near the inner dead centre the detail about A, C and the
+/// points by them stood within the channel, and of the block it showed
+/// one face, a lone line across the panel, its corners and the guides
+/// outside. Taking in the guides, and the block's length where the page
+/// holds it, it shows the block between them, as the main view draws it.
+fn with_guides(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail {
+    let page = scale * d.magnification;
+    if !(page > 0.0 && page.is_finite()) {
+        return d;
+    }
+    let pad = PAD / page;
+    let a = ctx.main.pose().a();
+    let (l, h) = (ctx.sizes.block_half_length, ctx.sizes.block_half_height);
+    let (lo, hi) = (d.region.min(), d.region.max());
+    let across = lo.x - pad < a.x + l && hi.x + pad > a.x - l;
+    let meets = lo.y - pad < a.y + h && hi.y + pad > a.y - h;
+    let holds = lo.y - pad <= a.y - h && hi.y + pad >= a.y + h;
+    if !(across && meets) || holds {
+        return d;
+    }
+    // The frame [`ABOUT_BLOCK_MAIN`] off the guides on the main view at
+    // least, told from them there as a crank's detail grown to the block.
+    let room = (ABOUT_BLOCK_MAIN / scale - pad).max(0.0);
+    if (2.0 * (h + room)) * page > GUIDES_EXTENT {
+        return d;
+    }
+    let (lo, hi) = (
+        Point::new(lo.x, lo.y.min(a.y - h - room)),
+        Point::new(hi.x, hi.y.max(a.y + h + room)),
+    );
+    // The block whole, where its length fits the page at the detail's
+    // magnification.
+    let (x0, x1) = (lo.x.min(a.x - l - room), hi.x.max(a.x + l + room));
+    let whole = (x1 - x0) * page + 2.0 * PAD <= max_width;
+    let (lo, hi) = match whole {
+        true => (Point::new(x0, lo.y), Point::new(x1, hi.y)),
+        false => (lo, hi),
+    };
+    Detail {
+        region: Frame::new(lo, hi),
+        ..d
+    }
+}
+
+/// Page units (in the detail) a joint letter takes for each name after
+/// its first: ", *G*" at the letters' size, a comma, its space and an
+/// italic capital.
+const JOINT_NAME: f64 = 18.0;
+
+/// Page units (in the detail) under which two lettered points coincide
+/// there and take one joint letter ("*F*, *G*, *K*, *L*" at a dead
+/// centre), as the canvas letters them.
+const ONE_POINT: f64 = 1.0;
+
+/// `d`, a construction's detail, its region grown on the side (left or
+/// right) where lettered points that coincide stand on its edge, by the
+/// width their joint letter takes beyond a single letter's
+/// ([`JOINT_NAME`] for each name after the first), so that the letter
+/// finds its room there beside its dot rather than across the lines
+/// leaving it (at a long rod's outer dead centre F, G, K and L by B,
+/// the joint letter on the frame's edge had no room and its names were
+/// scattered along the frame). Lowered a step where the grown region no
+/// longer fits `max_width`.
+fn joint_room(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail {
+    let (core, h) = points(ctx);
+    let mut lettered = [core.as_slice(), &[ctx.main.pose().a()]].concat();
+    lettered.extend(h);
+    let page = scale * d.magnification;
+    if !(page > 0.0 && page.is_finite()) {
+        return d;
+    }
+    let (lo, hi) = (d.region.min(), d.region.max());
+    let edge_room = |x: f64| {
+        // The most lettered points at one point on the edge at x.
+        let on_edge = |p: &&Point| ((p.x - x) * page).abs() < ONE_POINT;
+        let at: Vec<&Point> = lettered.iter().filter(on_edge).collect();
+        let most = (at.iter())
+            .map(|p| {
+                (lettered.iter())
+                    .filter(|q| (*q - *p).norm() * page < ONE_POINT)
+                    .count()
+            })
+            .max()
+            .unwrap_or(0);
+        most.saturating_sub(1) as f64 * JOINT_NAME / page
+    };
+    let (left, right) = (edge_room(lo.x), edge_room(hi.x));
+    if left == 0.0 && right == 0.0 {
+        return d;
+    }
+    let (lo, hi) = (lo - Vector::new(left, 0.0), hi + Vector::new(right, 0.0));
+    match magnify(d.magnification, (hi.x - lo.x) * scale, max_width) {
+        Some(magnification) => Detail {
+            region: Frame::new(lo, hi),
+            magnification,
+            ..d
+        },
+        None => d,
+    }
 }
 
 /// Room (page units in the detail) a detail's region keeps about the

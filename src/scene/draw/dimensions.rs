@@ -4,7 +4,6 @@
 use super::LayerCtx;
 use crate::figure::{RichText, Role, Shape, TextSize, angle_radius};
 use crate::geom::{Point, Vector};
-use crate::mechanism::SliderCrank;
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named;
 
@@ -112,12 +111,46 @@ const PARALLEL: f64 = crate::figure::ANGLE_RADIUS_MOST + 12.0;
 
 /// Whether the displacement and the stroke are dimensioned above the
 /// guides: where the line of stroke runs above the whole crank circle
-/// (an offset e > r), the side away from the crank; below them otherwise
-/// (the textbook's Fig. 62), where the crank circle reaches past the
-/// stroke both ways or lies above it.
-pub(crate) fn above(m: &SliderCrank) -> bool {
-    m.offset() > m.crank()
+/// (an offset e > r), the side away from the crank; or where the links
+/// reach below the guides over the stroke's span (a rod of less than two
+/// cranks near 270°: the stroke's extension line beside the crank
+/// doubled it, its arrowhead landed on the rod), and not above them, the
+/// side they leave clear. Below them otherwise (the textbook's Fig. 62),
+/// where the crank circle reaches past the stroke both ways or lies
+/// above it; a view held over a series of poses keeps its side.
+pub(crate) fn above(ctx: &LayerCtx) -> bool {
+    let m = ctx.scene.mechanism();
+    if m.offset() > m.crank() {
+        return true;
+    }
+    ctx.scene.held_view().is_none() && reach_beyond(ctx, -1.0) && !reach_beyond(ctx, 1.0)
 }
+
+/// Whether the crank or the rod runs beyond the guide on `side` (+1
+/// above the line of stroke, −1 below, world) over the stroke's span
+/// and [`SPAN_MARGIN`] of a block's length either way: across the
+/// dimensions stacked there.
+fn reach_beyond(ctx: &LayerCtx, side: f64) -> bool {
+    let pose = ctx.main.pose();
+    let e = pose.mechanism().offset();
+    let (near, far) = ctx.sizes.travel;
+    let margin = SPAN_MARGIN * ctx.sizes.block_half_length;
+    let (x0, x1) = (near.min(far) - margin, near.max(far) + margin);
+    let h = ctx.sizes.block_half_height;
+    let (a, b, c) = (pose.a(), pose.b(), pose.c());
+    [(c, b), (b, a)].into_iter().any(|(p, q)| {
+        (0..=64).any(|k| {
+            let t = f64::from(k) / 64.0;
+            let s = p + (q - p) * t;
+            (x0..=x1).contains(&s.x) && side * (s.y - e) > h
+        })
+    })
+}
+
+/// How far past the stroke's ends, in blocks' half-lengths, a link
+/// beyond the guides counts against the dimensions there: their
+/// extension lines and arrowheads.
+const SPAN_MARGIN: f64 = 1.0;
 
 pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
@@ -128,7 +161,7 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     // from C, is positive here).
     let (near, far) = ctx.sizes.travel;
     let o = Point::new(0.5 * (near + far), e);
-    let below = match above(m) {
+    let below = match above(ctx) {
         true => Vector::new(0.0, 1.0),
         false => Vector::new(0.0, -1.0),
     };

@@ -21,24 +21,89 @@ type Span = (f64, f64);
 const THROUGH_PEDESTAL: f64 = 0.7;
 
 /// The side of the crank centre its bearing stands on: below, save where
-/// the crank points down the page within [`THROUGH_PEDESTAL`] (about
-/// 270°) and a pedestal below had the crank drawn through it. Then it
-/// hangs from above, unless the guides run there (an offset engine with
+/// a line the scene draws from the crank centre points down the page
+/// within [`THROUGH_PEDESTAL`] and a pedestal below had it drawn through
+/// it: the crank (about 270°), or the result CE of a construction that
+/// finds E (E below C: an in-line engine past 180°, an offset engine
+/// whose rod crosses below the crank centre), or CB produced to D
+/// through C. Then it hangs from above where no such line runs up
+/// through it and the guides do not run there (an offset engine with
 /// the block by the crank centre: the hanging foot and its hatching read
-/// as a piece of the guide), when it stands out to the side the rod
-/// leaves clear. A view held over a series of poses keeps it standing, so
-/// that it does not turn over from frame to frame.
+/// as a piece of the guide), else it stands out to the side the lines
+/// leave clear; where every side is taken, it hangs as the crank alone
+/// would have it. A view held over a series of poses keeps it standing,
+/// so that it does not turn over from frame to frame.
 fn foot(ctx: &LayerCtx, canvas: &Canvas) -> Foot {
     let pose = ctx.main.pose();
     let v = canvas.transform().apply_vector(pose.b() - pose.c());
     let n = v.norm();
-    if ctx.scene.held_view().is_some() || n == 0.0 || v.y / n <= THROUGH_PEDESTAL.cos() {
+    if ctx.scene.held_view().is_some() || n == 0.0 {
         return Foot::Below;
     }
+    let lines: Vec<Vector> = (lines_from_centre(ctx, canvas).into_iter())
+        .map(|w| canvas.transform().apply_vector(w))
+        .filter(|w| w.norm() >= PIN_CLEAR_OF_BEARING)
+        .collect();
+    // A pedestal on `foot` with one of the lines within the cone about
+    // its direction runs through it.
+    let pierced = |foot: Foot| {
+        let out = foot.axes().0;
+        (lines.iter()).any(|w| w.dot(&out) / w.norm() > THROUGH_PEDESTAL.cos())
+    };
+    if !pierced(Foot::Below) {
+        return Foot::Below;
+    }
+    let crank_down = v.y / n > THROUGH_PEDESTAL.cos();
     [Foot::Above, Foot::Left, Foot::Right]
         .into_iter()
-        .find(|&f| clear_for(ctx, canvas, f))
-        .unwrap_or(Foot::Above)
+        .find(|&f| !pierced(f) && clear_for(ctx, canvas, f))
+        .or_else(|| {
+            // Every side taken: as the crank alone would have it.
+            (crank_down).then(|| {
+                [Foot::Above, Foot::Left, Foot::Right]
+                    .into_iter()
+                    .find(|&f| clear_for(ctx, canvas, f))
+                    .unwrap_or(Foot::Above)
+            })
+        })
+        .unwrap_or(Foot::Below)
+}
+
+/// The world vectors from the crank centre along the lines the scene
+/// draws from it: the crank CB; CE where a layer finds E (the velocity
+/// layer's, and every acceleration construction's velocity part); CB
+/// produced through C to D where the velocity or Klein's layer draws BD
+/// and D lies beyond C from B; and the leg along the stroke (towards the
+/// slider) of the right angle at C that marks CE where it is drawn.
+fn lines_from_centre(ctx: &LayerCtx, canvas: &Canvas) -> Vec<Vector> {
+    use crate::scene::Layer;
+    let scene = ctx.scene;
+    let pose = ctx.main.pose();
+    let (b, c) = (pose.b(), pose.c());
+    let mut lines = vec![b - c];
+    let finds_e = [
+        Layer::Velocity,
+        Layer::Klein,
+        Layer::Kisch,
+        Layer::Ritterhaus,
+        Layer::Bennett,
+    ]
+    .into_iter()
+    .any(|l| scene.has(l));
+    if finds_e {
+        let ce = ctx.main.e().e() - c;
+        lines.push(ce);
+        if canvas.page(ce.norm()) >= 2.0 * crate::figure::RIGHT_ANGLE {
+            lines.push(Vector::new(ce.norm(), 0.0));
+        }
+    }
+    if (scene.has(Layer::Velocity) || scene.has(Layer::Klein))
+        && let crate::geom::Intersection::Point(d) = ctx.main.d().d()
+        && (d - c).dot(&(b - c)) < 0.0
+    {
+        lines.push(d - c);
+    }
+    lines
 }
 
 /// Whether a bearing standing on `foot` keeps clear: hanging, of the

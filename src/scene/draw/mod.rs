@@ -658,7 +658,7 @@ fn draw_layers(ctx: &LayerCtx, poses: &[Constructions], canvas: &mut Canvas, mai
 fn main_view(ctx: &LayerCtx, band: f64, world: Frame) -> (Frame, PageFromWorld) {
     let (panel, transform) = main_view_with(ctx, band, world, 0.0);
     let scene = ctx.scene;
-    if !(scene.has(Layer::Dimensions) && dimensions::above(scene.mechanism())) {
+    if !(scene.has(Layer::Dimensions) && dimensions::above(ctx)) {
         return (panel, transform);
     }
     // The dimensions stacked above the guides: the drawing moves down to
@@ -701,7 +701,7 @@ fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (Frame,
             PageFromWorld::uniform(1.0, scene.is_mirrored(), Point::origin(), panel.centre())
         })
         .expect("a unit map is valid");
-    if scene.has(Layer::Dimensions) && !dimensions::above(scene.mechanism()) {
+    if scene.has(Layer::Dimensions) && !dimensions::above(ctx) {
         // The dimensions stacked below the guides: the panel grows to hold
         // them (the drawing keeps its scale).
         let e = scene.mechanism().offset();
