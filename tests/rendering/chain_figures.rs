@@ -727,3 +727,55 @@ fn links_folded_over_one_another_are_drawn_apart() {
     }
     assert!(checked > 0, "no pair checked");
 }
+
+#[test]
+fn crowded_pins_under_the_coupler_figures_block_get_a_detail() {
+    // At l = 1.08 r, 180° the block stood over C, the pins of C and A
+    // 12 units apart inside it, and no detail showed them. Where the
+    // main view draws C and A under 17 units apart a detail draws them
+    // at least 40 apart, each lettered nearer its own pin than the
+    // other's.
+    let mut crowded = 0;
+    for (rod, offset, deg) in [
+        (1.08, 0.0, 180.0),
+        (1.08, 0.0, 179.0),
+        (1.08, 0.0, 181.0),
+        (1.03, 0.0, 180.0),
+        (1.08, 0.05, 180.0),
+        (1.08, -0.05, 180.0),
+    ] {
+        let svg = coupler_at(rod, offset, deg, None);
+        let what = format!("l = {rod}, e = {offset}, {deg}°");
+        let centre = |id: &str| {
+            (
+                crate::common::num(&svg, id, "cx"),
+                crate::common::num(&svg, id, "cy"),
+            )
+        };
+        let apart = |c: (f64, f64), a: (f64, f64)| (c.0 - a.0).hypot(c.1 - a.1);
+        if apart(centre("point-C"), centre("point-A")) >= 17.0 {
+            continue;
+        }
+        crowded += 1;
+        assert!(
+            crate::common::tag(&svg, "detail-point-C-4").is_some(),
+            "{what}: C and A crowd under the block, no detail of them"
+        );
+        let (c, a) = (centre("detail-point-C-4"), centre("detail-point-A-4"));
+        assert!(
+            apart(c, a) >= 40.0,
+            "{what}: the detail draws C and A {:.1} apart",
+            apart(c, a)
+        );
+        let plate = Plate::read(&svg);
+        for (id, own, other) in [("C", c, a), ("A", a, c)] {
+            let p = text_centre(&plate, &format!("detail-label-{id}-4"))
+                .unwrap_or_else(|| panic!("{what}: {id} unlettered in the detail"));
+            assert!(
+                apart(p, own) < apart(p, other),
+                "{what}: the detail's {id} nearer the other pin"
+            );
+        }
+    }
+    assert!(crowded > 0, "no engine crowded C and A");
+}
