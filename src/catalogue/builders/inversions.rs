@@ -13,7 +13,6 @@
 //! that it does not change with θ (Inversion 2's panel shows, at that
 //! scale, only what its pose draws).
 
-use super::clear_run::longest_clear_run;
 use super::{Ctx, Sheet, short};
 use crate::chain::{ChainCentres, Inversion, InversionPose, InvertedChain};
 use crate::construct::Link;
@@ -1571,7 +1570,15 @@ impl Drawing {
             return Some(q.t + q.u * usual);
         }
         // The runs between what is taken, the longest kept.
-        longest_clear_run(&taken, (0.0, end)).map(|run| q.t + q.u * (0.5 * (run.0 + run.1)))
+        let mut cuts: Vec<f64> = vec![0.0, end];
+        cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
+        let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(0.0, end)).collect();
+        cuts.sort_by(f64::total_cmp);
+        (cuts.iter().copied())
+            .zip(cuts.iter().copied().skip(1))
+            .filter(|(lo, hi)| free(0.5 * (lo + hi)))
+            .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
+            .map(|run| q.t + q.u * (0.5 * (run.0 + run.1)))
     }
 
     /// The turning bar d lettered ([`Drawing::bar_letter`]); where no run

@@ -9,7 +9,6 @@ pub(super) mod benchmark;
 pub(super) mod calibration;
 pub(super) mod centrodes;
 pub(super) mod chains;
-pub(super) mod clear_run;
 pub(super) mod convergence;
 pub(super) mod coriolis;
 pub(super) mod coupler;

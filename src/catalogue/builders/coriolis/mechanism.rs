@@ -3,7 +3,6 @@
 //! detail of the crank where it is drawn too short to read.
 
 use super::super::Ctx;
-use super::super::clear_run::longest_clear_run;
 use super::super::inversions::{Shown, crank_window, slot_half_width, window_at};
 use super::panel::mark_window;
 use super::{FINE_STEPS, GAP, MARGIN, MECHANISM_HEIGHT, round_below};
@@ -328,6 +327,21 @@ pub(super) fn links_plot(
         plot.push(item);
     }
     Ok((plot, shown))
+}
+
+/// The longest run of `(from, to)` (along a bar, page units from its
+/// start) clear of every `taken` stretch; `None` where none is longer
+/// than nothing.
+fn longest_clear_run(taken: &[(f64, f64)], (from, to): (f64, f64)) -> Option<(f64, f64)> {
+    let mut cuts: Vec<f64> = vec![from, to];
+    cuts.extend(taken.iter().flat_map(|(lo, hi)| [*lo, *hi]));
+    let mut cuts: Vec<f64> = cuts.into_iter().map(|x| x.clamp(from, to)).collect();
+    cuts.sort_by(f64::total_cmp);
+    let free = |x: f64| taken.iter().all(|(lo, hi)| x < *lo || x > *hi);
+    (cuts.iter().copied())
+        .zip(cuts.iter().copied().skip(1))
+        .filter(|(lo, hi)| hi > lo && free(0.5 * (lo + hi)))
+        .max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0)))
 }
 
 /// The slotted bar d on the page: `t`, where its middle line meets the
