@@ -689,7 +689,9 @@ fn links_folded_over_one_another_are_drawn_apart() {
     // At l = 1.06 r, 180° the rod folded back over the crank in every
     // panel, drawn on it: one line with a letter either side; and (a)'s
     // frame d, 7 units beside the lever c folded onto it, read with it
-    // as one double line. The rod runs 8 units or more (a link's width
+    // as one double line. In (a) (in (b) and (c) the rod turned in to A
+    // would cross the slot's guides, and is drawn on the crank still)
+    // the rod runs 8 units or more (a link's width
     // and paper) from the crank, and d from the lever, but where each
     // turns in to its pins (within 25 units of them).
     const APART: f64 = 8.0;
@@ -699,7 +701,7 @@ fn links_folded_over_one_another_are_drawn_apart() {
         let svg = svg(FIG, rod, offset, deg);
         let seg = |p: Vec<(f64, f64)>| Seg(p[0], p[p.len() - 1]);
         let mut pairs = vec![];
-        for k in ["a", "b", "c"] {
+        for k in ["a"] {
             let crank = seg(path(&svg, &format!("link-crank-{k}")));
             let rod = path(&svg, &format!("link-rod-{k}"));
             // Folded: the rod leaves B back along the crank (within 6°)

@@ -478,8 +478,10 @@ fn panel(
     let o = chains.o_cd() + dx;
     // A longer rod, A outside the crank circle, leaves the crank
     // plain beyond C.
+    // In (a) alone: in (b) and (c) the rod so turned in to A crossed the
+    // slot's guide at the block (l = 1.05 r, 90° to 170°).
     let rod_side = beside(s, (b, a), &[(c, b)])
-        .filter(|_| (a - c).norm() < r)
+        .filter(|_| k == 0 && (a - c).norm() < r)
         .map(|n| if n.dot(&(o - b)) > 0.0 { -n } else { n });
     let rod = match rod_side {
         Some(n) => beside_path(s, (b, a), n),
