@@ -701,7 +701,8 @@ fn links_folded_over_one_another_are_drawn_apart() {
         let svg = svg(FIG, rod, offset, deg);
         let seg = |p: Vec<(f64, f64)>| Seg(p[0], p[p.len() - 1]);
         let mut pairs = vec![];
-        for k in ["a"] {
+        {
+            let k = "a";
             let crank = seg(path(&svg, &format!("link-crank-{k}")));
             let rod = path(&svg, &format!("link-rod-{k}"));
             // Folded: the rod leaves B back along the crank (within 6°)
