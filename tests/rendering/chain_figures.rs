@@ -280,10 +280,12 @@ fn no_link_runs_through_a_bearing() {
             ("b", &["crank", "rod"][..]),
             ("c", &["crank", "rod"][..]),
         ] {
+            // Each piece of a link as drawn (a rod folded over the crank
+            // drawn beside it, turned in to its pins).
             let links: Vec<Seg> = (links.iter())
-                .map(|id| {
+                .flat_map(|id| {
                     let p = path(&svg, &format!("link-{id}-{suffix}"));
-                    Seg(p[0], p[p.len() - 1])
+                    (p.windows(2).map(|w| Seg(w[0], w[1]))).collect::<Vec<_>>()
                 })
                 .collect();
             for (bearing, pin) in [("C", "pin-C"), ("O-cd", "point-O-cd")] {
@@ -655,4 +657,128 @@ fn no_piece_of_guide_the_block_does_not_stand_on_is_shorter_than_the_block() {
             "l = {rod}, e = {offset}, θ = {deg}: {pieces} guides"
         );
     }
+}
+
+/// The length (page units) of the polyline `p` within `near` of the
+/// segment `s`, from a point every half unit or so, leaving out its
+/// points within `ends` of its first and last.
+fn length_near(p: &[(f64, f64)], s: &Seg, near: f64, ends: f64) -> f64 {
+    let (first, last) = (p[0], p[p.len() - 1]);
+    let off = |x: (f64, f64), e: (f64, f64)| (x.0 - e.0).hypot(x.1 - e.1) >= ends;
+    p.windows(2)
+        .map(|w| {
+            let (a, b) = (w[0], w[1]);
+            let length = (b.0 - a.0).hypot(b.1 - a.1);
+            let n = ((2.0 * length).ceil() as usize).max(1);
+            (0..n)
+                .map(|k| {
+                    let u = (k as f64 + 0.5) / n as f64;
+                    (a.0 + (b.0 - a.0) * u, a.1 + (b.1 - a.1) * u)
+                })
+                .filter(|&x| off(x, first) && off(x, last))
+                .filter(|&x| segment_distance(x, s.0, s.1) < near)
+                .count() as f64
+                * length
+                / n as f64
+        })
+        .sum()
+}
+
+#[test]
+fn links_folded_over_one_another_are_drawn_apart() {
+    // At l = 1.06 r, 180° the rod folded back over the crank in every
+    // panel, drawn on it: one line with a letter either side; and (a)'s
+    // frame d, 7 units beside the lever c folded onto it, read with it
+    // as one double line. In (a) (in (b) and (c) the rod turned in to A
+    // would cross the slot's guides, and is drawn on the crank still)
+    // the rod runs 8 units or more (a link's width
+    // and paper) from the crank, and d from the lever, but where each
+    // turns in to its pins (within 25 units of them).
+    const APART: f64 = 8.0;
+    const TURNS: f64 = 25.0;
+    let mut checked = 0;
+    for (rod, offset, deg) in ENGINES {
+        let svg = svg(FIG, rod, offset, deg);
+        let seg = |p: Vec<(f64, f64)>| Seg(p[0], p[p.len() - 1]);
+        let mut pairs = vec![];
+        {
+            let k = "a";
+            let crank = seg(path(&svg, &format!("link-crank-{k}")));
+            let rod = path(&svg, &format!("link-rod-{k}"));
+            // Folded: the rod leaves B back along the crank (within 6°)
+            // and ends on it, by C.
+            let (b, a) = (rod[0], rod[rod.len() - 1]);
+            let (u, v) = ((crank.0.0 - b.0, crank.0.1 - b.1), (a.0 - b.0, a.1 - b.1));
+            let cos = (u.0 * v.0 + u.1 * v.1) / (u.0.hypot(u.1) * v.0.hypot(v.1));
+            if cos > 6f64.to_radians().cos() && v.0.hypot(v.1) < 1.5 * u.0.hypot(u.1) {
+                pairs.push((format!("rod b of ({k})"), rod, crank));
+            }
+        }
+        let lever = seg(path(&svg, "link-lever-a"));
+        let frame = path(&svg, "link-frame-a");
+        if frame.len() == 4 {
+            pairs.push(("frame d of (a)".into(), frame, lever));
+        }
+        for (what, p, other) in pairs {
+            checked += 1;
+            let near = length_near(&p, &other, APART, TURNS);
+            assert!(
+                near < 1.0,
+                "l = {rod}, e = {offset}, {deg}°: the {what} runs {near:.1} units within {APART} of the link folded under it"
+            );
+        }
+    }
+    assert!(checked > 0, "no pair checked");
+}
+
+#[test]
+fn crowded_pins_under_the_coupler_figures_block_get_a_detail() {
+    // At l = 1.08 r, 180° the block stood over C, the pins of C and A
+    // 12 units apart inside it, and no detail showed them. Where the
+    // main view draws C and A under 17 units apart a detail draws them
+    // at least 40 apart, each lettered nearer its own pin than the
+    // other's.
+    let mut crowded = 0;
+    for (rod, offset, deg) in [
+        (1.08, 0.0, 180.0),
+        (1.08, 0.0, 179.0),
+        (1.08, 0.0, 181.0),
+        (1.03, 0.0, 180.0),
+        (1.08, 0.05, 180.0),
+        (1.08, -0.05, 180.0),
+    ] {
+        let svg = coupler_at(rod, offset, deg, None);
+        let what = format!("l = {rod}, e = {offset}, {deg}°");
+        let centre = |id: &str| {
+            (
+                crate::common::num(&svg, id, "cx"),
+                crate::common::num(&svg, id, "cy"),
+            )
+        };
+        let apart = |c: (f64, f64), a: (f64, f64)| (c.0 - a.0).hypot(c.1 - a.1);
+        if apart(centre("point-C"), centre("point-A")) >= 17.0 {
+            continue;
+        }
+        crowded += 1;
+        assert!(
+            crate::common::tag(&svg, "detail-point-C-4").is_some(),
+            "{what}: C and A crowd under the block, no detail of them"
+        );
+        let (c, a) = (centre("detail-point-C-4"), centre("detail-point-A-4"));
+        assert!(
+            apart(c, a) >= 40.0,
+            "{what}: the detail draws C and A {:.1} apart",
+            apart(c, a)
+        );
+        let plate = Plate::read(&svg);
+        for (id, own, other) in [("C", c, a), ("A", a, c)] {
+            let p = text_centre(&plate, &format!("detail-label-{id}-4"))
+                .unwrap_or_else(|| panic!("{what}: {id} unlettered in the detail"));
+            assert!(
+                apart(p, own) < apart(p, other),
+                "{what}: the detail's {id} nearer the other pin"
+            );
+        }
+    }
+    assert!(crowded > 0, "no engine crowded C and A");
 }

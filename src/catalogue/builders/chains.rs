@@ -14,7 +14,7 @@ use crate::chain::{ChainCentres, CylindricChain, QuadricPose};
 use crate::diagram::Plot;
 use crate::error::{Error, Field, Result};
 use crate::figure::{Align, Figure, Foot, Item, RichText, Role, Shape, TextSize};
-use crate::geom::{Frame, Intersection, Point, Vector, segment_distance, unit};
+use crate::geom::{Frame, Intersection, Point, Vector, crossing, segment_distance, unit};
 use crate::number::plain;
 use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Seg, Slot};
 use crate::scene::{LINK_LETTER_NEAR, letter_ways};
@@ -237,6 +237,10 @@ struct Panel {
     c: Point,
     b: Point,
     a: Point,
+    /// The rod as drawn: B A, or beside the crank folded under it.
+    rod: Vec<Seg>,
+    /// The side the rod is drawn beside the crank on, if it is.
+    rod_side: Option<Vector>,
 }
 
 /// A block nearer the crank centre than this (page units: the pin's
@@ -464,26 +468,58 @@ fn panel(
         }
     };
     s.link("crank", vec![c, b]);
-    s.link("rod", vec![b, a]);
+    // The rod folded back over the crank and ending on it (a short rod
+    // about the inner dead centre, where it lies along the crank for
+    // much of the turn:
+    // at l = 1.06 r it leaves it at 2° at 150°) drawn beside it, as the
+    // frame d beside a link lying along it, on the side away from O_cd
+    // (where the lever, the frame and the slot's radius run): drawn
+    // over it, the two read as one line with two letters.
+    let o = chains.o_cd() + dx;
+    // A longer rod, A outside the crank circle, leaves the crank
+    // plain beyond C.
+    // In (a) alone: in (b) and (c) the rod so turned in to A crossed the
+    // slot's guide at the block (l = 1.05 r, 90° to 170°).
+    let rod_side = beside(s, (b, a), &[(c, b)])
+        .filter(|_| k == 0 && (a - c).norm() < r)
+        .map(|n| if n.dot(&(o - b)) > 0.0 { -n } else { n });
+    let rod = match rod_side {
+        Some(n) => beside_path(s, (b, a), n),
+        None => vec![b, a],
+    };
+    s.link("rod", rod.clone());
+    let rod_segs: Vec<Seg> = rod
+        .iter()
+        .zip(rod.iter().skip(1))
+        .map(|(&p, &q)| (p, q))
+        .collect();
+    let rod_run = match rod.as_slice() {
+        [_, p, q, _] => (*p, *q),
+        _ => (b, a),
+    };
     if k == 0 {
         // (b) and (c) draw C's bearing after the block, over it.
         // In a crank's detail clear of the frame d too, which leaves C
         // towards O_cd there alone (its base lay across d's hatching);
         // the panel keeps the side clear of the links, which their
         // letters are set about.
-        let o = chains.o_cd() + dx;
-        let links = [(c, b), (b, a), (o, a)];
+        let mut links = vec![(c, b), (o, a)];
+        links.extend(&rod_segs);
         let frame: &[Seg] = if detail { &[(c, o)] } else { &[] };
         s.bearing_on("C", c, foot(s, c, &links, frame));
         s.pin("C", c);
     }
     s.pin("B", b);
     if k != 0 {
-        let [crank, rod] = letter_ways([(c, b), (b, a)], &[], s.world(LINK_LETTER_NEAR));
+        let [crank, rod] = match rod_side {
+            // Each letter on its own link's side.
+            Some(n) => [Some(-n), Some(n)],
+            None => letter_ways([(c, b), (b, a)], &[], s.world(LINK_LETTER_NEAR)),
+        };
         if crank_letter {
             s.link_letter_toward("link-a", (c, b), "*a*", crank);
         }
-        s.link_letter_toward("link-b", (b, a), "*b*", rod);
+        s.link_letter_toward("link-b", rod_run, "*b*", rod);
     }
     let panel = Panel {
         k,
@@ -491,6 +527,8 @@ fn panel(
         c,
         b,
         a,
+        rod: rod_segs,
+        rod_side,
         crank_letter,
     };
     let centres = if k == 0 {
@@ -506,9 +544,10 @@ fn panel(
 fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value {
     let (c, b, a) = (p.c, p.b, p.a);
     let o = chains.o_cd() + p.dx;
-    s.bearing_on("O-cd", o, foot(s, o, &[(c, b), (b, a), (o, a)], &[]));
+    let mut avoid = vec![(c, b), (o, a)];
+    avoid.extend(&p.rod);
+    s.bearing_on("O-cd", o, foot(s, o, &avoid, &[]));
     s.link("lever", vec![o, a]);
-    let avoid = [(c, b), (b, a), (o, a)];
     let ends = PIN_CLEAR;
     // The frame d on the line C O_cd, or beside it where a moving link
     // lies along that line (the crank pointing at O_cd, the lever folded
@@ -519,10 +558,12 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
             // at its ends: a link ends at its pins (run straight beside
             // the line, its end met the crank halfway along at l =
             // 1.1 r, 180°, short of C's pin).
-            let shift = n * s.world(FRAME_BESIDE);
-            let along = unit(o - c).map_or(Vector::zeros(), |u| u * s.world(FRAME_JOG));
-            let frame = (c + shift + along, o + shift - along);
-            s.link("frame", vec![c, frame.0, frame.1, o]);
+            let path = beside_path(s, (c, o), n);
+            let frame = match path.as_slice() {
+                [_, p, q, _] => (*p, *q),
+                _ => (c, o),
+            };
+            s.link("frame", path);
             s.hatch_edge_of_at_least("frame", frame, &[n], &avoid, ends, 1);
             frame
         }
@@ -534,8 +575,17 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
     };
     s.pin("A", a);
     s.lettered("O-cd", o, "*O*_{cd}", Marker::Pin, c);
-    let links = [(c, b), (b, a), (o, a), frame];
-    let ways = letter_ways(links, &[c, b, a, o], s.world(LINK_LETTER_NEAR));
+    let rod_run = match p.rod.as_slice() {
+        [_, run, _] => *run,
+        _ => (b, a),
+    };
+    let links = [(c, b), rod_run, (o, a), frame];
+    let mut ways = letter_ways(links, &[c, b, a, o], s.world(LINK_LETTER_NEAR));
+    if let (Some(n), [crank, rod, ..]) = (p.rod_side, &mut ways) {
+        // Each of the crank and the rod drawn beside it lettered on its
+        // own side.
+        (*crank, *rod) = (Some(-n), Some(n));
+    }
     for ((name, markup), (link, way)) in [("link-a", "*a*"), ("link-b", "*b*")]
         .into_iter()
         .chain([("link-c", "*c*"), ("link-d", "*d*")])
@@ -625,7 +675,9 @@ fn slot_panel(
         others.push((o + dx, a));
     }
     s.push("block-slider", Role::Link, Shape::Block { points: outline });
-    s.bearing_on("C", c, foot(s, c, &[(c, b), (b, a)], &others));
+    let mut links = vec![(c, b)];
+    links.extend(&p.rod);
+    s.bearing_on("C", c, foot(s, c, &links, &others));
     s.pin("C", c);
     s.pin("A", a);
     s.letter("link-c", point(sa, -hh), "*c*", TextSize::Letter);
@@ -646,13 +698,30 @@ fn slot_panel(
 }
 
 /// How far (page units) the frame d is drawn beside the line C O_cd
-/// where a moving link lies along it: a link's width and a little paper
-/// between the two, the pins at C and O_cd touching d.
-const FRAME_BESIDE: f64 = 7.0;
+/// where a moving link lies along it, and the rod beside the crank
+/// folded under it: a link's width and paper that reads as a gap
+/// between two links (at 7 units, 4.4 of paper, the lever folded onto d
+/// and d beside it read as one double line at l = 1.06 r, 180°), the
+/// pins at the ends touching the link.
+const FRAME_BESIDE: f64 = 10.0;
 /// How far along the line C O_cd (page units) the frame d drawn beside
 /// it turns in to the pin at each end: twice [`FRAME_BESIDE`], a slope
 /// that reads as a bend, not a step.
 const FRAME_JOG: f64 = 2.0 * FRAME_BESIDE;
+/// The link `p q` drawn beside its line on the side `n` (a world unit
+/// vector square to it), [`FRAME_BESIDE`] off it over its length and
+/// turned in to its pins at the ends over [`FRAME_JOG`] (run straight
+/// beside the line, the frame's end met the crank halfway along at
+/// l = 1.1 r, 180°, short of C's pin): p, the two ends of its run, q.
+fn beside_path(s: &Canvas, (p, q): Seg, n: Vector) -> Vec<Point> {
+    let shift = n * s.world(FRAME_BESIDE);
+    // At most a third of the link's length each way, the run between
+    // kept.
+    let jog = s.world(FRAME_JOG).min((q - p).norm() / 3.0);
+    let along = unit(q - p).map_or(Vector::zeros(), |u| u * jog);
+    vec![p, p + shift + along, q + shift - along, q]
+}
+
 /// A moving link nearer the line C O_cd than this (page units: a link's
 /// width and a little paper)…
 const LYING_NEAR: f64 = 5.0;
@@ -714,12 +783,34 @@ fn beside(s: &Canvas, (p, q): Seg, links: &[Seg]) -> Option<Vector> {
         mean(&off)
     };
     let away = if side > 0.0 { -n } else { n };
-    Some(match crowd(n).cmp(&crowd(-n)) {
-        std::cmp::Ordering::Less => n,
-        std::cmp::Ordering::Greater => -n,
-        std::cmp::Ordering::Equal => away,
-    })
+    // The links the link drawn on side `m` would cross, off its pins (at
+    // l = 1.06 r, 180° d turned in to C on the side of A, 4 units from
+    // C, and crossed the lever leaving A).
+    let crossings = |m: Vector| {
+        let path = beside_path(s, (p, q), m);
+        let trim = s.world(END_TOUCH);
+        let cut =
+            |from: Point, to: Point| from + unit(to - from).map_or(Vector::zeros(), |u| u * trim);
+        let runs: Vec<Seg> = match path.as_slice() {
+            [a, b, c, d] => vec![(cut(*a, *b), *b), (*b, *c), (*c, cut(*d, *c))],
+            _ => Vec::new(),
+        };
+        (links.iter())
+            .filter(|&&(x, y)| (runs.iter()).any(|&(a, b)| crossing(a, b, x, y).is_some()))
+            .count()
+    };
+    Some(
+        match (crossings(n), crowd(n)).cmp(&(crossings(-n), crowd(-n))) {
+            std::cmp::Ordering::Less => n,
+            std::cmp::Ordering::Greater => -n,
+            std::cmp::Ordering::Equal => away,
+        },
+    )
 }
+
+/// How near its pins (page units: a pin's radius) a link drawn beside
+/// its line may meet another link there.
+const END_TOUCH: f64 = 4.0;
 
 /// A bearing's ink about its centre, page units (the SVG writer's
 /// bearing): its pedestal from the shaft's pin (which the links leave
