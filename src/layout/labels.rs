@@ -150,6 +150,34 @@ impl Obstacles {
         })
     }
 
+    /// The lines a letter's way back to its point `anchor` may not cross
+    /// ([`crosses_back`]): those of weight [`LINK`] or more (links, guides,
+    /// forces) that meet `within` and do not open for letters, less the
+    /// outline of a box that holds the anchor (a slider block about its
+    /// pin, which any letter outside it crosses).
+    fn thick_near(&self, within: &Frame, anchor: Point) -> Vec<Segment> {
+        let on_edge = |f: &Frame, q: Point| {
+            let (lo, hi) = (f.min(), f.max());
+            f.inflate(0.5).contains(q)
+                && [q.x - lo.x, hi.x - q.x, q.y - lo.y, hi.y - q.y]
+                    .iter()
+                    .any(|d| d.abs() < 0.5)
+        };
+        let holding: Vec<&Frame> = (self.boxes.iter())
+            .map(|(f, _)| f)
+            .filter(|f| f.contains(anchor))
+            .collect();
+        (self.segments.iter().zip(&self.opening))
+            .filter(|((p, q, w), opens)| {
+                *w >= LINK
+                    && !**opens
+                    && rectangle(*p, *q).meets(within)
+                    && !holding.iter().any(|f| on_edge(f, *p) && on_edge(f, *q))
+            })
+            .map(|(&(p, q, _), _)| (p, q))
+            .collect()
+    }
+
     /// Whether `b` meets the box of a text ([`Obstacles::text`]).
     pub fn meets_a_text(&self, b: &Frame) -> bool {
         (self.boxes.iter().zip(&self.texts)).any(|((t, _), &text)| text && b.overlap_area(t) > 0.0)
@@ -737,6 +765,10 @@ pub(crate) struct Steer<'a> {
     /// points that coincide) tried on a diagonal stands farther out than
     /// a narrow one on the same ring; it is drawn in to this.
     pub farthest: Option<f64>,
+    /// Whether the place is a point's letter read with its point along
+    /// the straight way back to it, which should cross no link, guide or
+    /// other point ([`crosses_back`]).
+    pub back: bool,
 }
 
 /// The place along the unit page `u` from `anchor`, `out` units out to
@@ -763,6 +795,56 @@ fn drawn_in(anchor: Point, u: Vector, out: f64, half: Vector, farthest: Option<f
     }
     anchor + u * lo
 }
+
+/// The number of `thick` lines and `others` points met by the way back
+/// from the middle of the glyphs `b` to their point `anchor`: its part
+/// outside the glyphs and beyond the pin about the anchor ([`PIN_CLEAR`]).
+/// Across a link, a guide or another point, a reader pairs the letter
+/// with what lies on the other side: the "A" below a lower guide, the
+/// "C" nearer G's dot than its pin.
+fn crosses_back(b: &Frame, anchor: Point, thick: &[Segment], others: &[Point]) -> usize {
+    let centre = nalgebra::center(&b.min(), &b.max());
+    let d = centre - anchor;
+    let length = d.norm();
+    if length <= PIN_CLEAR {
+        return 0;
+    }
+    // Where the way enters the glyphs, from the anchor.
+    let enter = span(anchor, d, b).map_or(1.0, |(t0, _)| t0);
+    let from = anchor + d * (PIN_CLEAR / length);
+    let to = anchor + d * enter;
+    if (to - anchor).norm() <= PIN_CLEAR {
+        return 0;
+    }
+    let lines = (thick.iter())
+        .filter(|&&(p, q)| crossing(from, to, p, q).is_some())
+        .count();
+    let points = (others.iter())
+        .filter(|&&q| crate::geom::point_segment_distance(q, from, to) < DOT_CLEAR)
+        .count();
+    lines + points
+}
+
+/// How far (page units) from its point the way back to it is looked at
+/// ([`crosses_back`]): past the pin's circle (4.2) and its line.
+const PIN_CLEAR: f64 = 5.0;
+
+/// How near (page units) the way back passes another point to meet it:
+/// its dot's radius (2.1) and a little more.
+const DOT_CLEAR: f64 = 2.5;
+
+/// The least weight of a line drawn as a link, a guide or a force.
+const LINK: f64 = 3.0;
+
+/// What a place costs more whose way back to its point crosses more
+/// links, guides and other points than the fewest any first-ring place
+/// does ([`crosses_back`]): half a struck letter's, as a text misread
+/// ([`MISREAD`]), so that any place whose way back is clear and whose
+/// glyphs are clear beats it, and it still beats one whose glyphs are
+/// struck (at 1.0 [`STRUCK`] C's letter of inversion 2 at l = 3 r went
+/// onto the frame's line, its way back from the one clear place lying
+/// across the frame).
+const ACROSS: f64 = MISREAD;
 
 /// How much nearer (page units) another point may be to a letter's box
 /// (its glyphs and the room about them) than its own before the letter
@@ -898,6 +980,7 @@ pub(crate) fn place_toward(
         near_first,
         farthest,
         apart,
+        back,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
@@ -910,6 +993,25 @@ pub(crate) fn place_toward(
         .filter(|&&q| within.contains(q) && q != anchor)
         .copied()
         .collect();
+    // The lines the way back to the point should not cross, and the
+    // fewest any first-ring place crosses (a pin inside a closed outline
+    // crosses it every way).
+    let thick = match back {
+        true => obstacles.thick_near(&within, anchor),
+        false => Vec::new(),
+    };
+    let fewest = match back {
+        true => (directions().iter())
+            .map(|&(dx, dy)| {
+                let u = Vector::new(dx, dy);
+                let reach = gap + dx.abs() * half.x + dy.abs() * half.y;
+                let at = drawn_in(anchor, u, reach, half, farthest);
+                crosses_back(&glyphs(&Frame::around(at, half)), anchor, &thick, &others)
+            })
+            .min()
+            .unwrap_or(0),
+        false => 0,
+    };
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
@@ -951,6 +1053,9 @@ pub(crate) fn place_toward(
             cost += OTHER_SIDE;
         } else if box_nearer_another(&b, anchor, &others) {
             cost += BOX_NEARER;
+        }
+        if back && crosses_back(&glyphs(&b), anchor, &thick, &others) > fewest {
+            cost += ACROSS;
         }
         if let Some((own, links, dimensions)) = led {
             // Led, it still stands nearer its own line than another link.

@@ -653,6 +653,10 @@ impl PanelLayout<'_> {
                                 farthest: (p.letter && p.along.is_empty() && p.line.is_none())
                                     .then_some(LETTER_FARTHEST * p.size - 2.0 * ROOM),
                                 apart: APART_EMS * p.size,
+                                back: p.letter
+                                    && p.along.is_empty()
+                                    && p.line.is_none()
+                                    && self.points.contains(&p.anchor),
                             },
                             &self.obstacles,
                             room,
@@ -790,6 +794,7 @@ impl PanelLayout<'_> {
                                 near_first: p.letter && p.along.is_empty(),
                                 farthest: None,
                                 apart: APART_EMS * p.size,
+                                back: false,
                             },
                             &self.obstacles,
                             room,

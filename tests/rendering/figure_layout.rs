@@ -495,3 +495,45 @@ fn o_cd_at_infinity_is_lettered_apart_from_o_bd() {
         .max(bd.y0 - cd.y1);
     assert!(gap >= 20.0, "O_cd's and O_bd's letters {gap:.1} apart");
 }
+
+/// Whether the straight way from the point `at` to the middle of the box
+/// `r`, less its first 5 units (the pin), crosses one of the panel's
+/// lines whose ids start with one of `prefixes`.
+fn way_back_crosses(
+    panel: &plate::Panel,
+    at: (f64, f64),
+    r: &Rect,
+    prefixes: &[&str],
+) -> Vec<String> {
+    let c = centre(r);
+    let d = distance(at, c);
+    let from = (at.0 + (c.0 - at.0) * 5.0 / d, at.1 + (c.1 - at.1) * 5.0 / d);
+    let way = plate::Seg(from, c);
+    (panel.strokes.iter())
+        .filter(|s| prefixes.iter().any(|p| s.id.starts_with(p)))
+        .filter(|s| s.segs.iter().any(|g| g.meets(&way)))
+        .map(|s| s.id.clone())
+        .collect()
+}
+
+/// The relative-velocity figure at l = 2.34 r, e = 0.672 r, 269.45°
+/// (issue 38): A's letter stood below the lower guide, the way from it
+/// back to A's pin across the ground line, read as lettering the rod
+/// beside it. A letter now keeps on its point's side of the links and
+/// guides where a place there is as clear: A's way back crosses no guide
+/// nor link.
+#[test]
+fn a_letter_keeps_on_its_points_side_of_the_guides() {
+    let engine = Some((1.0, 2.34, 0.672, 269.45));
+    let text = svg(FigureName::VelocityAccelerationPolygons, engine, None);
+    let plate = Plate::read(&text);
+    let panel = &plate.panels[0];
+    let a = panel
+        .labels
+        .iter()
+        .find(|l| l.id == "label-A")
+        .unwrap()
+        .rect;
+    let crossed = way_back_crosses(panel, panel.markers["A"], &a, &["guide-", "link-"]);
+    assert!(crossed.is_empty(), "A's letter {a:?} across {crossed:?}");
+}
