@@ -60,12 +60,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let top = (area.max().y).max(notes_end);
     let transform = *panel.transform();
     // Across the page as narrowed to the drawing.
-    let windows = details(
-        ctx,
-        (&transform, panel.items()),
-        top,
-        page.width().min(drawn.width()),
-    )?;
+    let windows = details(ctx, &transform, top, page.width().min(drawn.width()))?;
     for (k, (region, _)) in windows.iter().enumerate() {
         plot.push(Item::new(
             format!("detail-box-{k}"),
@@ -246,7 +241,7 @@ fn round_above(x: f64) -> f64 {
 /// enlarges (boxed in the main view). None where all read.
 fn details(
     ctx: &Ctx,
-    (t, drawn): (&crate::figure::PageFromWorld, &[Item]),
+    t: &crate::figure::PageFromWorld,
     top: f64,
     width: f64,
 ) -> Result<Vec<(Frame, Plot)>> {
@@ -272,56 +267,25 @@ fn details(
         })
         .collect();
     let least = (ovals.iter()).map(|(lo, hi)| hi.y - lo.y).fold(r, f64::min) * scale;
-    let c = pose.c();
-    // C and A crowded under the block (a short rod at the inner dead
-    // centre: at l = 1.08 r, 180° the block stood over C, their pins
-    // touching).
-    let apart = (pose.a() - c).norm();
-    let crowded = apart > 0.0 && apart * scale < PINS_APART;
-    if !crank_detail::too_short(least) && !crowded {
+    if !crank_detail::too_short(least) {
         return Ok(Vec::new());
     }
     // The subjects: the crank circle about C, then each oval; the length
     // that is to be drawn ENLARGED.
+    let c = pose.c();
     let reach = Vector::new(1.15 * r, 1.15 * r);
     let mut subjects = vec![((c - reach, c + reach), r)];
     subjects.extend(ovals.iter().map(|&(lo, hi)| ((lo, hi), hi.y - lo.y)));
-    // Then the pins C and A with the block over them (its outline as the
-    // main view draws it), to be drawn PINS_SPREAD apart: the block no
-    // farther than C and A stand apart beyond them (the block of a rod
-    // of 1.03 r, whole, made a detail 400 units square of an empty box
-    // about two pins).
-    let (a, reach) = (pose.a(), Vector::new(apart, apart));
-    let (lo, hi) = (c.inf(&a) - reach, c.sup(&a) + reach);
-    let block = (drawn.iter())
-        .filter_map(|item| match &item.shape {
-            Shape::Block { points } => Some(points.iter()),
-            _ => None,
-        })
-        .flatten()
-        .chain([&c, &a])
-        .fold((c, c), |(lo, hi), p| (lo.inf(p), hi.sup(p)));
-    let block = (block.0.sup(&lo), block.1.inf(&hi));
-    subjects.push((block, apart * ENLARGED / PINS_SPREAD));
     // Those the main view draws too small alone (at an offset engine a
     // tilted oval just under SEEN brought in every detail, the others
-    // drawn again ×1, copies that enlarge nothing); the pins where they
-    // crowd.
-    let pins = subjects.len() - 1;
-    let needed = |k: usize, length: f64| match k == pins {
-        true => crowded,
-        false => {
-            length * scale < SEEN && round_above(ENLARGED / (length * scale)) >= LEAST_ENLARGED
-        }
+    // drawn again ×1, copies that enlarge nothing).
+    let needed = |length: f64| {
+        length * scale < SEEN && round_above(ENLARGED / (length * scale)) >= LEAST_ENLARGED
     };
     // Left to right as the main view draws them (mirrored: A on the
     // left), each detail below its box.
     let mut order: Vec<usize> = (0..subjects.len())
-        .filter(|&k| {
-            subjects
-                .get(k)
-                .is_some_and(|&(_, length)| needed(k, length))
-        })
+        .filter(|&k| subjects.get(k).is_some_and(|&(_, length)| needed(length)))
         .collect();
     if order.is_empty() {
         return Ok(Vec::new());
@@ -393,7 +357,6 @@ fn details(
             let name = format!("detail-{k}");
             let what = match k {
                 0 => "crank".to_string(),
-                _ if k == pins => "*C* and *A*".to_string(),
                 _ => format!("*P*_{k}"),
             };
             let mut plot = Plot::world(
@@ -420,48 +383,12 @@ fn details(
                     closed: true,
                 },
             ));
-            match k == pins {
-                true => draw_pins(&mut plot, ctx, drawn, (&map, seen)),
-                false => draw_window(&mut plot, ctx, k, (&map, seen))?,
-            }
+            draw_window(&mut plot, ctx, k, (&map, seen))?;
             windows.push((seen, plot));
         }
         y = bottom + WINDOW_GAP;
     }
     Ok(windows)
-}
-
-/// C and A nearer than this on the main view (page units: two pins'
-/// widths and a little paper) crowd under the block, and get a detail.
-const PINS_APART: f64 = 17.0;
-/// How far apart the detail of crowded pins draws C and A, page units.
-const PINS_SPREAD: f64 = 64.0;
-
-/// The detail of the crowded pins C and A drawn on its plot (its map
-/// and seen region given): the mechanism as the main view `drawn` draws
-/// it, its letters left out, enlarged; C and A lettered anew there.
-fn draw_pins(
-    plot: &mut Plot,
-    ctx: &Ctx,
-    drawn: &[Item],
-    (map, seen): (&crate::figure::PageFromWorld, Frame),
-) {
-    use crate::figure::TextSize;
-    use crate::scene::Canvas;
-    let pose = ctx.pose();
-    let mut s = Canvas::new(*map, seen).detail("detail-").suffixed("-4");
-    for item in drawn {
-        if matches!(item.shape, Shape::Text { .. } | Shape::Note { .. }) || item.role == Role::Label
-        {
-            continue;
-        }
-        s.push(item.id.clone(), item.role, item.shape.clone());
-    }
-    s.letter("C", pose.c(), "*C*", TextSize::Letter);
-    s.letter("A", pose.a(), "*A*", TextSize::Letter);
-    for item in s.finish().0 {
-        plot.push(item);
-    }
 }
 
 /// Detail `k` (0: the crank; else the oval of point `k`) drawn on its
