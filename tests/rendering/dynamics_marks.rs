@@ -126,3 +126,49 @@ fn ng_s_crank_pin_force_keeps_off_phi_s_reference() {
         .fold(f64::INFINITY, f64::min);
     assert!(near >= 4.0, "F_c's shaft {near:.1} from φ's reference");
 }
+
+/// The inertia figure's SVG at a crank of 1, `rod` and `degrees`.
+fn inertia_svg(rod: f64, degrees: f64) -> String {
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+    options.angle = Some(Angle::deg(degrees));
+    let f = FigureName::from_name("inertia-force")
+        .unwrap()
+        .figure(&options);
+    to_svg(&f.unwrap())
+}
+
+/// F_i shorter than its least length on the main view (l = 38 r and
+/// 58.1 r near 90°: CG under 0.03 r) is left out there and the notes say
+/// so, every line of them on the page (with F_N's note too, five lines
+/// ran past the notes' room and off the page's foot); at the default it
+/// is drawn and nothing is said.
+#[test]
+fn an_inertia_force_too_short_to_draw_is_said_so_on_the_page() {
+    let said = "too short to draw at the cross-head";
+    for (rod, degrees) in [(38.0, 90.09), (58.1, 90.62)] {
+        let svg = inertia_svg(rod, degrees);
+        assert!(
+            !svg.contains("id=\"force-inertia\""),
+            "l = {rod}: F_i drawn"
+        );
+        assert!(svg.contains(said), "l = {rod}: nothing said");
+        let plate = Plate::read(&svg);
+        for t in &plate.texts {
+            assert!(
+                t.rect.y1 <= plate.height,
+                "l = {rod}: {} at {} past the page's {}",
+                t.id,
+                t.rect.y1,
+                plate.height
+            );
+        }
+    }
+    let svg = to_svg(
+        &FigureName::from_name("inertia-force")
+            .unwrap()
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    assert!(svg.contains("id=\"force-inertia\"") && !svg.contains(said));
+}

@@ -887,12 +887,12 @@ fn notes(chains: &Chains, over: &[&str]) -> [String; 2] {
             short(chains.angle.degrees())
         ),
         format!(
-            "(a) lever *c* = ρ about *O*_{{cd}}, frame *d* = *CO*_{{cd}}; (b) the block *c* in a slot of radius ρ about *O*_{{cd}}; (c) ρ → ∞.{}",
+            "(a) lever *c* = ρ about *O*_{{cd}}, frame *d* from the crank’s centre to *O*_{{cd}}; (b) the block *c* in a slot of radius ρ about *O*_{{cd}}; (c) ρ → ∞.{}",
             if over.is_empty() {
                 String::new()
             } else {
                 format!(
-                    " At this pose the block stands over the crank centre *C* in {}.",
+                    " At this pose the block stands over the crank’s centre in {}.",
                     over.join(" and ")
                 )
             }

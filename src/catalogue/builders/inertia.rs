@@ -20,7 +20,7 @@ use crate::construct::{AccelerationPoints, InstantCentre, Kisch, Klein, Velocity
 use crate::diagram::Plot;
 use crate::dynamics::{Engine, EnginePose};
 use crate::error::Result;
-use crate::figure::{Figure, HATCH_DEPTH, Item, Panel, RichText, Role, Shape, TextSize};
+use crate::figure::{Figure, HATCH_DEPTH, Item, NOTE_LINE, Panel, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::{Layer, torque_arrow};
 
@@ -31,7 +31,9 @@ const SCENE: f64 = 430.0;
 /// The most height and width of the triangle of forces, page units.
 const TRIANGLE: (f64, f64) = (440.0, 180.0);
 
-/// Room for the notes below the triangle, page units.
+/// Room for the notes below the triangle, page units: their three lines
+/// (each line more, one said left out of the drawing, takes a
+/// [`NOTE_LINE`] more).
 const NOTES: f64 = 64.0;
 
 /// Radius of the crank effort's arc arrow about C, page units.
@@ -98,7 +100,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
     metadata(&mut sheet, &forces);
-    let bottom = mechanism(ctx, &forces, &mut sheet)?;
+    let (bottom, fi_left_out) = mechanism(ctx, &forces, &mut sheet)?;
     let (top, fn_left_out) = match triangle(ctx, &forces, bottom + 8.0)? {
         Some((plot, left_out)) => {
             let rect = plot.rect();
@@ -108,12 +110,12 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
         None => (bottom, false),
     };
     // The page holds what was set: a detail or the triangle may take it
-    // past the figure's own height.
-    sheet.height(top + NOTES + 16.0);
-    sheet.notes(
-        Point::new(20.0, top + 8.0),
-        &notes(ctx, &forces, fn_left_out),
-    );
+    // past the figure's own height, a note of a force left out past
+    // the notes' room.
+    let notes = notes(ctx, &forces, fn_left_out, fi_left_out);
+    let more = NOTE_LINE * notes.len().saturating_sub(3) as f64;
+    sheet.height(top + NOTES + more + 16.0);
+    sheet.notes(Point::new(20.0, top + 8.0), &notes);
     Ok(sheet.finish())
 }
 
@@ -140,15 +142,17 @@ fn metadata(sheet: &mut Sheet, f: &Forces) {
 
 /// The scene's mechanism with Klein's construction, the inertia force at
 /// the cross-head and the crank effort added to its main view; its
-/// details as drawn. Returns the bottom of what it set on the page.
-fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
+/// details as drawn. Returns the bottom of what it set on the page and
+/// whether F_i was left out of the main view (shorter than
+/// [`SHORTEST`] there).
+fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool)> {
     let scene = ctx
         .scene(ctx.page().width(), SCENE)?
         .with_layers([Layer::Mechanism, Layer::Klein]);
     let base = scene.figure()?;
     let mut panels = base.panels().iter();
     let Some(main) = panels.next() else {
-        return Ok(base.height());
+        return Ok((base.height(), false));
     };
     let scale = main.transform().scale();
     let pose = ctx.pose();
@@ -178,6 +182,7 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
         Some(_) => None,
     };
     let mut items = inertia_arrow(main, &pose, f, scale, arc_radius);
+    let fi_left_out = items.is_empty();
     if home.is_none() {
         // The arc keeps clear of F_i's shaft as of the block's edges.
         let shaft: Vec<(Point, Point)> = items
@@ -206,7 +211,7 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<f64> {
         };
         sheet.panel(detail.clone().with_items(own));
     }
-    Ok(base.height())
+    Ok((base.height(), fi_left_out))
 }
 
 /// Whether the detail `panel` shows the crank centre `c` with the crank
@@ -901,7 +906,7 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<(Plot, bool)>> {
 
 /// The notes: the engine, the scale, and every force with its value and
 /// unit, the graphical beside the exact.
-fn notes(ctx: &Ctx, f: &Forces, fn_left_out: bool) -> Vec<String> {
+fn notes(ctx: &Ctx, f: &Forces, fn_left_out: bool, fi_left_out: bool) -> Vec<String> {
     let m = ctx.mechanism;
     let at = &f.at;
     let (u, fu) = (ctx.unit(), ctx.units.force());
@@ -960,6 +965,11 @@ fn notes(ctx: &Ctx, f: &Forces, fn_left_out: bool) -> Vec<String> {
             sig(rounded_off(at.crank_effort_exact, at.inertia_force * m.crank()).abs()),
         ),
     ];
+    if fi_left_out {
+        lines.push(
+            "*F*_i, *CG* long at the drawing’s scale, is too short to draw at the cross-head in the main view: its value is given above.".to_string(),
+        );
+    }
     if fn_left_out {
         lines.push(
             "*F*_N is too short to draw in the triangle of forces at its scale: *F*_Q and *F*_i all but coincide.".to_string(),
