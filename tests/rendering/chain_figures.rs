@@ -206,7 +206,7 @@ fn a_block_over_the_crank_centre_is_noted() {
     for (rod, offset, deg) in ENGINES {
         let svg = svg(FIG, rod, offset, deg);
         let text: String = read_text(&svg).split_whitespace().collect();
-        let noted = text.contains("blockstandsoverthecrankcentre");
+        let noted = text.contains("blockstandsoverthecrank’scentre");
         let mut over = false;
         for suffix in ["b", "c"] {
             let c = (
