@@ -181,3 +181,25 @@ pub fn arrow_ends(svg: &str, id: &str) -> ((f64, f64), (f64, f64)) {
     });
     (starts.next().unwrap(), starts.next().unwrap())
 }
+
+/// The strokes of the group `id` (each path's pieces from one `M` to the
+/// next), page units; empty where there is no such group.
+pub fn group_strokes(svg: &str, id: &str) -> Vec<((f64, f64), (f64, f64))> {
+    let Some(at) = svg.find(&format!("id=\"{id}\"")) else {
+        return Vec::new();
+    };
+    let end = at + svg[at..].find("</g>").expect("group closed");
+    let mut strokes = Vec::new();
+    for d in svg[at..end].split(" d=\"").skip(1) {
+        let d = &d[..d.find('"').expect("d closed")];
+        for piece in d.split('M') {
+            let numbers: Vec<f64> = piece
+                .split(|c: char| c == 'L' || c == 'Z' || c.is_whitespace())
+                .filter_map(|w| w.parse().ok())
+                .collect();
+            let points: Vec<(f64, f64)> = numbers.chunks(2).map(|p| (p[0], p[1])).collect();
+            strokes.extend(points.windows(2).map(|w| (w[0], w[1])));
+        }
+    }
+    strokes
+}

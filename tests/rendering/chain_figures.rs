@@ -7,7 +7,7 @@
 //! ground mark.
 
 use super::polygon_figures::{path, svg, text_centre};
-use crate::common::{group_path, read_text, segment_distance};
+use crate::common::{group_path, group_strokes, read_text, segment_distance};
 use crate::plate::{Plate, Seg};
 use slider_crank::FigureName;
 
@@ -241,28 +241,6 @@ const THROUGH_BEARING: [(f64, f64, f64); 8] = [
     (1.08, 0.0, 180.0),
     (2.5, -0.5, 181.0),
 ];
-
-/// The strokes of the group `id` (each path's pieces from one `M` to the
-/// next), page units; empty where there is no such group.
-fn group_strokes(svg: &str, id: &str) -> Vec<((f64, f64), (f64, f64))> {
-    let Some(at) = svg.find(&format!("id=\"{id}\"")) else {
-        return Vec::new();
-    };
-    let end = at + svg[at..].find("</g>").expect("group closed");
-    let mut strokes = Vec::new();
-    for d in svg[at..end].split(" d=\"").skip(1) {
-        let d = &d[..d.find('"').expect("d closed")];
-        for piece in d.split('M') {
-            let numbers: Vec<f64> = piece
-                .split(|c: char| c == 'L' || c == 'Z' || c.is_whitespace())
-                .filter_map(|w| w.parse().ok())
-                .collect();
-            let points: Vec<(f64, f64)> = numbers.chunks(2).map(|p| (p[0], p[1])).collect();
-            strokes.extend(points.windows(2).map(|w| (w[0], w[1])));
-        }
-    }
-    strokes
-}
 
 #[test]
 fn no_link_runs_through_a_bearing() {

@@ -13,18 +13,9 @@ fn texts(svg: &str) -> Vec<String> {
     svg.split("<text")
         .skip(1)
         .map(|element| {
-            let body = element.split("</text>").next().unwrap_or("");
-            let mut words = String::new();
-            let mut inside_tag = true;
-            for c in body.chars() {
-                match c {
-                    '<' => inside_tag = true,
-                    '>' => inside_tag = false,
-                    _ if !inside_tag => words.push(c),
-                    _ => {}
-                }
-            }
-            words
+            // The element's body: past its start tag, up to its end tag.
+            let body = element.split_once('>').map_or("", |(_, body)| body);
+            crate::common::read_text(body.split("</text>").next().unwrap_or(""))
         })
         .collect()
 }

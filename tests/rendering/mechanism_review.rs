@@ -6,7 +6,7 @@
 
 use crate::common;
 
-use common::{attr, metadata, segment_distance};
+use common::{attr, group_strokes, metadata, segment_distance};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::render::to_svg;
 use slider_crank::{Angle, FigureName, SliderCrank};
@@ -17,28 +17,6 @@ fn svg(name: FigureName, (r, l, e, deg): (f64, f64, f64, f64)) -> String {
     options.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
     options.angle = Some(Angle::deg(deg));
     to_svg(&name.figure(&options).unwrap())
-}
-
-/// The straight strokes of every path in the group `id` (none where
-/// there is no such group), page units.
-fn group_strokes(svg: &str, id: &str) -> Vec<((f64, f64), (f64, f64))> {
-    let Some(at) = svg.find(&format!("id=\"{id}\"")) else {
-        return Vec::new();
-    };
-    let end = at + svg[at..].find("</g>").expect("group closed");
-    let mut strokes = Vec::new();
-    for d in svg[at..end].split(" d=\"").skip(1) {
-        let d = &d[..d.find('"').expect("d closed")];
-        for piece in d.split('M') {
-            let numbers: Vec<f64> = piece
-                .split(|c: char| c == 'L' || c == 'Z' || c.is_whitespace())
-                .filter_map(|w| w.parse().ok())
-                .collect();
-            let points: Vec<(f64, f64)> = numbers.chunks(2).map(|p| (p[0], p[1])).collect();
-            strokes.extend(points.windows(2).map(|w| (w[0], w[1])));
-        }
-    }
-    strokes
 }
 
 /// The two ends of the single-segment path `id`.

@@ -227,15 +227,9 @@ pub(super) fn window(
     // draw, lettered across o′a′ 15 units from its dot), where the detail
     // then still enlarges at least [`CROWD_ENLARGED`] times (on a page
     // 500 wide it enlarged it once, the box round the whole polygon).
-    let crowded = |c: &Vector| {
-        (points.iter()).any(|p| {
-            let apart = (p.2 - c).norm() * scale;
-            (COINCIDE..CROWD).contains(&apart)
-        })
-    };
     let subject = [side.0, side.1];
     closing
-        .filter(|c| !subject.contains(c) && crowded(c))
+        .filter(|c| !subject.contains(c) && crowder(points, *c, scale).is_some())
         .map(|c| about(&[side.0, side.1, c]))
         .filter(|w| w.magnification >= CROWD_ENLARGED)
         .or_else(|| Some(about(&subject)))
@@ -258,13 +252,20 @@ fn crowd_window(
     area: (f64, f64),
 ) -> Option<Window> {
     let c = closing.filter(|c| *c != side.0 && *c != side.1)?;
-    let apart = |p: &Vector| (p - c).norm() * scale;
-    let near = (points.iter())
-        .map(|p| p.2)
-        .filter(|p| (COINCIDE..CROWD).contains(&apart(p)))
-        .min_by(|p, q| apart(p).total_cmp(&apart(q)))?;
+    let near = crowder(points, c, scale)?;
     let w = window_about(points, (near, c), &[near, c], (closing, scale, area));
     (w.magnification >= CROWD_ENLARGED).then_some(w)
+}
+
+/// The point of `points` nearest `c` that crowds it on the page at
+/// `scale`: within [`CROWD`] of it but not lettered with it
+/// ([`COINCIDE`]); `None` where none does.
+fn crowder(points: &[Lettered], c: Vector, scale: f64) -> Option<Vector> {
+    let apart = |p: &Vector| (p - c).norm() * scale;
+    (points.iter())
+        .map(|p| p.2)
+        .filter(|p| (COINCIDE..CROWD).contains(&apart(p)))
+        .min_by(|p, q| apart(p).total_cmp(&apart(q)))
 }
 
 /// The least magnification of a detail that takes in the crowded point
