@@ -186,7 +186,11 @@ fn the_slot_middle_line_ends_with_its_guides() {
                     d < 0.5 * width + 1.5,
                     "l = {rod}, e = {offset}, {deg}°: ({suffix}) middle line at {p:?} {d:.1} from the guides, past their end"
                 );
-                let by_rod = segment_distance(p, link_b[0], link_b[link_b.len() - 1]);
+                // The rod as drawn (beside the crank where it lies
+                // along it, turned in to its pins).
+                let by_rod = (link_b.windows(2))
+                    .map(|w| segment_distance(p, w[0], w[1]))
+                    .fold(f64::INFINITY, f64::min);
                 assert!(
                     by_rod > 2.0 || super::inversion_figures::within(&block, p),
                     "l = {rod}, e = {offset}, {deg}°: ({suffix}) middle line at {p:?} {by_rod:.1} from the rod b, outside the block"
@@ -460,15 +464,15 @@ fn every_link_of_every_panel_is_drawn_at_least_40_units_long() {
             );
             let p = text_centre(&plate, &format!("detail-label-link-a-{suffix}"))
                 .unwrap_or_else(|| panic!("{what}: ({suffix}) the detail's crank unlettered"));
-            let seg = |id: &str| {
+            // Each link as drawn (the rod beside the crank where it lies
+            // along it, turned in to its pins).
+            let by = |id: &str| {
                 let q = path(&svg, &format!("detail-link-{id}-{suffix}"));
-                (q[0], q[q.len() - 1])
+                (q.windows(2))
+                    .map(|w| segment_distance(p, w[0], w[1]))
+                    .fold(f64::INFINITY, f64::min)
             };
-            let (crank, rod_b) = (seg("crank"), seg("rod"));
-            let (mine, other) = (
-                segment_distance(p, crank.0, crank.1),
-                segment_distance(p, rod_b.0, rod_b.1),
-            );
+            let (mine, other) = (by("crank"), by("rod"));
             assert!(
                 mine < other,
                 "{what}: ({suffix}) the detail's a {mine:.1} from the crank, {other:.1} from the rod"
@@ -667,20 +671,19 @@ fn links_folded_over_one_another_are_drawn_apart() {
     // At l = 1.06 r, 180° the rod folded back over the crank in every
     // panel, drawn on it: one line with a letter either side; and (a)'s
     // frame d, 7 units beside the lever c folded onto it, read with it
-    // as one double line. In (a) (in (b) and (c) the rod turned in to A
-    // would cross the slot's guides, and is drawn on the crank still)
-    // the rod runs 8 units or more (a link's width
-    // and paper) from the crank, and d from the lever, but where each
-    // turns in to its pins (within 25 units of them).
+    // as one double line; at l = 1.03 r and 1.08 r, 180° the rod lay on
+    // the crank in (b) and (c), where (a) drew it beside. In every panel
+    // the rod runs 8 units or more (a link's width and paper) from the
+    // crank, and d from the lever, but where each turns in to its pins
+    // (within 25 units of them).
     const APART: f64 = 8.0;
     const TURNS: f64 = 25.0;
     let mut checked = 0;
-    for (rod, offset, deg) in ENGINES {
+    for (rod, offset, deg) in ENGINES.into_iter().chain(FOLDED) {
         let svg = svg(FIG, rod, offset, deg);
         let seg = |p: Vec<(f64, f64)>| Seg(p[0], p[p.len() - 1]);
         let mut pairs = vec![];
-        {
-            let k = "a";
+        for k in ["a", "b", "c"] {
             let crank = seg(path(&svg, &format!("link-crank-{k}")));
             let rod = path(&svg, &format!("link-rod-{k}"));
             // Folded: the rod leaves B back along the crank (within 6°)
@@ -707,4 +710,101 @@ fn links_folded_over_one_another_are_drawn_apart() {
         }
     }
     assert!(checked > 0, "no pair checked");
+}
+
+/// Engines where the short rod folded back over the crank lay on it in
+/// (b) and (c) (l, e, θ at r = 1), and their neighbours.
+const FOLDED: [(f64, f64, f64); 5] = [
+    (1.03, 0.0, 180.0),
+    (1.03, 0.0, 181.0),
+    (1.08, 0.0, 180.0),
+    (1.08, 0.0, 179.0),
+    (1.06, 0.0, 181.0),
+];
+
+/// Engines where (a) drew the rod bent beside its line, the crank 11°
+/// off it, A inside the crank circle (l, e, θ at r = 1).
+const APART_ALREADY: [(f64, f64, f64); 4] = [
+    (1.4, 0.3, 180.0),
+    (1.4, -0.3, 180.0),
+    (1.35, 0.3, 180.0),
+    (1.4, 0.3, 181.0),
+];
+
+#[test]
+fn the_rod_is_drawn_beside_its_line_only_where_the_crank_lies_along_it() {
+    // At l = 1.4 r, e = 0.3 r, 180° (a) bent the rod beside its line
+    // because A stood inside the crank circle, though the crank left it
+    // at 11°. The rod is drawn beside its line (four points) only where
+    // the crank's far end C lies within 15 units of that line (two
+    // links' widths and paper: the two lie along one another).
+    const ALONG: f64 = 15.0;
+    let mut rods = 0;
+    for (rod, offset, deg) in ENGINES.into_iter().chain(FOLDED).chain(APART_ALREADY) {
+        let svg = svg(FIG, rod, offset, deg);
+        for k in ["a", "b", "c"] {
+            let crank = path(&svg, &format!("link-crank-{k}"));
+            let p = path(&svg, &format!("link-rod-{k}"));
+            rods += 1;
+            if p.len() != 4 {
+                continue;
+            }
+            let d = segment_distance(crank[0], p[0], p[3]);
+            assert!(
+                d < ALONG,
+                "l = {rod}, e = {offset}, {deg}°: ({k}) the rod is drawn beside its line, C {d:.1} units off it"
+            );
+        }
+    }
+    assert!(rods > 0, "no rod checked");
+}
+
+#[test]
+fn the_block_over_the_crank_centre_is_lettered_away_from_its_bearing() {
+    // At l = 1.03 r, 180° the block of (c) stood over C and its letter c
+    // was set under C's bearing, by its hatching. Where the block stands
+    // over C (A within 15 units of C), its letter stands on the other
+    // side of the slot's line through A from the bearing's base.
+    let mut checked = 0;
+    for (rod, offset, deg) in FOLDED {
+        let svg = svg(FIG, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        for k in ["b", "c"] {
+            let at = |id: &str| {
+                let id = format!("{id}-{k}");
+                (
+                    crate::common::num(&svg, &id, "cx"),
+                    crate::common::num(&svg, &id, "cy"),
+                )
+            };
+            let (a, c) = (at("pin-A"), at("pin-C"));
+            if (a.0 - c.0).hypot(a.1 - c.1) > 15.0 {
+                continue;
+            }
+            // Across the slot at A: along the radius from O_cd in (b),
+            // upright in (c).
+            let across = match k {
+                "b" => {
+                    let r = path(&svg, "line-radius-b");
+                    let (o, q) = (r[0], r[r.len() - 1]);
+                    let n = (q.0 - o.0).hypot(q.1 - o.1);
+                    ((q.0 - o.0) / n, (q.1 - o.1) / n)
+                }
+                _ => (0.0, 1.0),
+            };
+            let strokes = group_strokes(&svg, &format!("bearing-C-{k}"));
+            let far = (strokes.iter())
+                .flat_map(|&(p, q)| [p, q])
+                .map(|p| (p.0 - a.0) * across.0 + (p.1 - a.1) * across.1)
+                .fold(0.0, |m: f64, d| if d.abs() > m.abs() { d } else { m });
+            let letter = text_centre(&plate, &format!("label-link-c-{k}")).expect("c lettered");
+            let side = (letter.0 - a.0) * across.0 + (letter.1 - a.1) * across.1;
+            checked += 1;
+            assert!(
+                side * far < 0.0,
+                "l = {rod}, e = {offset}, {deg}°: ({k}) c lettered {side:.1} across the slot, C's bearing reaching {far:.1}"
+            );
+        }
+    }
+    assert!(checked > 0, "no block over C checked");
 }

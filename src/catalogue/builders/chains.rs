@@ -475,13 +475,13 @@ fn panel(
     // frame d beside a link lying along it, on the side away from O_cd
     // (where the lever, the frame and the slot's radius run): drawn
     // over it, the two read as one line with two letters.
+    // In every panel, and only where the crank lies along the rod
+    // ([`beside`]): not where A is inside the crank circle alone (at
+    // l = 1.4 r, e = 0.3 r, 180° (a) bent a rod 11° off the crank). In
+    // (b) and (c) the guides leave the hatching clear of the rod's turn
+    // in to A.
     let o = chains.o_cd() + dx;
-    // A longer rod, A outside the crank circle, leaves the crank
-    // plain beyond C.
-    // In (a) alone: in (b) and (c) the rod so turned in to A crossed the
-    // slot's guide at the block (l = 1.05 r, 90° to 170°).
-    let rod_side = beside(s, (b, a), &[(c, b)])
-        .filter(|_| k == 0 && (a - c).norm() < r)
+    let rod_side = beside(s, (b, a), &[(c, b)], LYING_SHARE)
         .map(|n| if n.dot(&(o - b)) > 0.0 { -n } else { n });
     let rod = match rod_side {
         Some(n) => beside_path(s, (b, a), n),
@@ -552,7 +552,7 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
     // The frame d on the line C O_cd, or beside it where a moving link
     // lies along that line (the crank pointing at O_cd, the lever folded
     // onto d), hatched on its far side.
-    let frame = match beside(s, (c, o), &avoid) {
+    let frame = match beside(s, (c, o), &avoid, 0.0) {
         Some(n) => {
             // Beside the line over its length, and turned in to the pins
             // at its ends: a link ends at its pins (run straight beside
@@ -626,13 +626,20 @@ fn slot_panel(
     // The guides, then the slot's middle line along them only, and short
     // of the rod where it nears it outside the block (run on past where the guides open
     // towards the crank, it lay along the rod and crossed it).
-    let mut open = s.guides("slot", &slot, c, (b, a)).unwrap_or(slot.range.0);
+    // The rod's last run into A: the turn in to A where the rod is drawn
+    // beside the crank, which the guides' hatching keeps clear of.
+    let into_a = p.rod.last().copied().unwrap_or((b, a));
+    let mut open = s.guides("slot", &slot, c, into_a).unwrap_or(slot.range.0);
     let step = s.world(1.0);
     let mut at = pose.arc_position() - lh;
-    let (pb, pa) = (s.transform().apply(b), s.transform().apply(a));
+    let rod_page: Vec<Seg> = (p.rod.iter())
+        .map(|&(x, y)| (s.transform().apply(x), s.transform().apply(y)))
+        .collect();
     let by_rod = |at: f64| {
         let q = s.transform().apply(point(at, 0.0));
-        segment_distance(q, q, pb, pa)
+        (rod_page.iter())
+            .map(|&(x, y)| segment_distance(q, q, x, y))
+            .fold(f64::INFINITY, f64::min)
     };
     while at > open {
         // On the rod, or near it and not drawing away from it (the rod
@@ -677,10 +684,24 @@ fn slot_panel(
     s.push("block-slider", Role::Link, Shape::Block { points: outline });
     let mut links = vec![(c, b)];
     links.extend(&p.rod);
-    s.bearing_on("C", c, foot(s, c, &links, &others));
+    let c_foot = foot(s, c, &links, &others);
+    s.bearing_on("C", c, c_foot);
     s.pin("C", c);
     s.pin("A", a);
-    s.letter("link-c", point(sa, -hh), "*c*", TextSize::Letter);
+    // The block's letter by its inner side, or, where the block stands
+    // over C, by the side away from C's bearing (set by the inner side,
+    // it stood under the bearing's hatching at l = 1.03 r, 180°).
+    let over = s.page(chains.block_over_c(p.k == 1, (lh, hh))) < OVER;
+    let side = |delta: f64| {
+        let t = s.transform();
+        (t.apply(point(sa, delta)) - t.apply(point(sa, 0.0))).dot(&c_foot.axes().0)
+    };
+    let delta = if over && side(-hh) > side(hh) {
+        hh
+    } else {
+        -hh
+    };
+    s.letter("link-c", point(sa, delta), "*c*", TextSize::Letter);
     s.letter("link-d", point(slot.range.1, hh), "*d*", TextSize::Letter);
     match pose.chain().slot_centre() {
         Intersection::Point(o) => {
@@ -725,15 +746,22 @@ fn beside_path(s: &Canvas, (p, q): Seg, n: Vector) -> Vec<Point> {
 /// A moving link nearer the line C O_cd than this (page units: a link's
 /// width and a little paper)…
 const LYING_NEAR: f64 = 5.0;
-/// …over at least this length of it (page units) lies along it.
+/// …over at least this length of it (page units)…
 const LYING_OVER: f64 = 16.0;
+/// …and, for the crank along the rod, over at least this share of the
+/// crank's own length: two links leaving one pin a few degrees apart are
+/// near each other by the pin whatever the angle (the rod 11° off the
+/// crank at l = 1.4 r, e = 0.3 r, 180°, within [`LYING_NEAR`] of it over
+/// 26 units), but they part visibly before half the crank is reached.
+const LYING_SHARE: f64 = 0.5;
 
 /// The side (a world unit vector square to `p q`) the fixed link `p q`
 /// is drawn beside its line on where one of the moving `links` lies along
-/// that line (within [`LYING_NEAR`] of it over [`LYING_OVER`]): away from
+/// that line (within [`LYING_NEAR`] of it over [`LYING_OVER`], and over
+/// `share` of the link's length): away from
 /// the links lying along it, or, where these lie on the line itself, from
 /// the others. `None` where none lies along it.
-fn beside(s: &Canvas, (p, q): Seg, links: &[Seg]) -> Option<Vector> {
+fn beside(s: &Canvas, (p, q): Seg, links: &[Seg], share: f64) -> Option<Vector> {
     let u = unit(q - p)?;
     let n = Vector::new(-u.y, u.x);
     let length = (q - p).norm();
@@ -751,11 +779,12 @@ fn beside(s: &Canvas, (p, q): Seg, links: &[Seg]) -> Option<Vector> {
             .collect()
     };
     let lying = |link: &Seg| {
-        let step = s.page((link.1 - link.0).norm()) / samples(link) as f64;
+        let length = s.page((link.1 - link.0).norm());
+        let step = length / samples(link) as f64;
         let near = (over(link).iter())
             .filter(|d| s.page(d.abs()) < LYING_NEAR)
             .count();
-        near as f64 * step >= LYING_OVER
+        near as f64 * step >= LYING_OVER.max(share * length)
     };
     let (along, off): (Vec<&Seg>, Vec<&Seg>) = links.iter().partition(|l| lying(l));
     if along.is_empty() {
