@@ -2023,3 +2023,27 @@ fn a_needle_s_sides_stand_on_one_side_and_its_letters_on_the_other() {
         }
     }
 }
+
+#[test]
+fn a_folded_acceleration_polygon_draws_no_image_line_over_a_side() {
+    // Review 2026-11w: near 90° at a long rod the acceleration polygon
+    // folds, a′ by c′ and x by b′; the dashed image line b′a′ lay along
+    // the arrow c′b′ its whole length, and the two read as one doubled
+    // line. The image line is left out where it runs along a side drawn.
+    const APART: f64 = 7.0;
+    for (rod, deg) in [(55.4, 90.47), (55.4, 270.15), (51.1, 90.38), (51.1, 270.2)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let at = format!("l = {rod} r, {deg}°");
+        let (tail, head) = crate::common::arrow_ends(&svg, "acceleration-c2b2");
+        if element(&svg, "acceleration-a2b2").is_some() {
+            let line = path(&svg, "acceleration-a2b2");
+            let along =
+                (line.iter()).all(|p| crate::common::segment_distance(*p, tail, head) < APART);
+            assert!(!along, "{at}: b′a′ drawn along c′b′");
+        }
+    }
+    // Where it stands clear of the sides (l = 4 r at 45°), it is drawn;
+    // near 90° it lies on x a′ (x by b′) and is not.
+    let svg = svg(FigureName::VelocityAccelerationPolygons, 4.0, 0.0, 45.0);
+    assert!(element(&svg, "acceleration-a2b2").is_some());
+}

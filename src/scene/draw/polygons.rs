@@ -617,7 +617,21 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         p.o + oa.0,
         p.a + oa.1,
     );
-    canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
+    // The image line a′b′, q′ on it, where it does not run along a side
+    // drawn: near 90° at a long rod a′ stands by c′ and x by b′, and the
+    // dashed b′a′ over c′b′ read as one doubled line; at a dead centre it
+    // lies on the polygon's line.
+    let drawn = [
+        (p.o + oa.0, p.a + oa.1),
+        (p.o + ob.0, p.b + ob.1),
+        (p.x + xa.0, p.a + xa.1),
+    ];
+    if !drawn
+        .iter()
+        .any(|&side| runs_along(canvas, (p.a, p.b), side))
+    {
+        canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
+    }
     if let Some(q) = p.q {
         // Where it runs over c′a′ (q′ on its line), c′q′ set beside it
         // is a third line over the two, between the points and their
@@ -666,6 +680,16 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         letters.push((id(ctx, Coupler, true), image(ctx, Coupler, true), q));
     }
     letter(canvas, &letters, p.o);
+}
+
+/// Whether the line `(a, b)` runs along the side `(s, t)` as drawn: the
+/// side long enough to be drawn ([`MIN_ARROW`]) and both ends of the line
+/// within [`SIDE_APART`] of it on the page, the two read as one.
+fn runs_along(canvas: &Canvas, (a, b): (Point, Point), (s, t): (Point, Point)) -> bool {
+    canvas.page((t - s).norm()) >= MIN_ARROW
+        && [a, b]
+            .iter()
+            .all(|e| canvas.page(crate::geom::point_segment_distance(*e, s, t)) < SIDE_APART)
 }
 
 /// The notes that state the polygons' scales and read them: the velocity
