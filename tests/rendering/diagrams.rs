@@ -14,6 +14,7 @@ use slider_crank::FigureName;
 use slider_crank::catalogue::{FigureOptions, Fit};
 use slider_crank::figure::Figure;
 use slider_crank::render::to_svg;
+use std::collections::HashMap;
 use std::f64::consts::PI;
 
 fn figure(name: FigureName) -> Figure {
@@ -682,6 +683,16 @@ struct Sampled {
     params: Vec<f64>,
     /// Index ranges of the pieces (no refinement across a gap).
     pieces: Vec<(usize, usize)>,
+    /// The samples by the square of side [`CELL`] holding them.
+    cells: HashMap<(i64, i64), Vec<usize>>,
+}
+
+/// The side of the squares the samples are filed by, in page units.
+const CELL: f64 = 4.0;
+
+/// The square of side [`CELL`] holding `p`.
+fn cell_of(p: P) -> (i64, i64) {
+    ((p.0 / CELL).floor() as i64, (p.1 / CELL).floor() as i64)
 }
 
 fn sample(e: &Exact, map: &Map, per_piece: usize) -> Sampled {
@@ -689,6 +700,7 @@ fn sample(e: &Exact, map: &Map, per_piece: usize) -> Sampled {
         page: Vec::new(),
         params: Vec::new(),
         pieces: Vec::new(),
+        cells: HashMap::new(),
     };
     for &(a, b) in &e.ranges {
         let first = s.page.len();
@@ -702,7 +714,110 @@ fn sample(e: &Exact, map: &Map, per_piece: usize) -> Sampled {
         }
         s.pieces.push((first, s.page.len()));
     }
+    for (i, p) in s.page.iter().enumerate() {
+        s.cells.entry(cell_of(*p)).or_default().push(i);
+    }
     s
+}
+
+impl Sampled {
+    /// The samples in the squares at most `ring` squares from `q`'s
+    /// (a square ring of them when `only_ring`).
+    fn near(&self, q: P, ring: i64, only_ring: bool) -> impl Iterator<Item = usize> + '_ {
+        let (cx, cy) = cell_of(q);
+        (-ring..=ring)
+            .flat_map(move |dx| (-ring..=ring).map(move |dy| (dx, dy)))
+            .filter(move |(dx, dy)| !only_ring || dx.abs().max(dy.abs()) == ring)
+            .filter_map(move |(dx, dy)| self.cells.get(&(cx + dx, cy + dy)))
+            .flatten()
+            .copied()
+    }
+
+    /// The distance from `q` to its nearest sample: the squares ring by
+    /// ring outward until a sample found is nearer than any square not
+    /// yet searched can hold (every sample when `q` lies more than 64
+    /// squares from the nearest found by then).
+    fn nearest(&self, q: P) -> f64 {
+        let mut best = f64::INFINITY;
+        for ring in 0..64 {
+            for i in self.near(q, ring, true) {
+                best = best.min(dist(self.page[i], q));
+            }
+            if best <= ring as f64 * CELL {
+                return best;
+            }
+        }
+        (self.page.iter()).fold(f64::INFINITY, |m, p| m.min(dist(*p, q)))
+    }
+}
+
+/// A written path's points in order, its segments (each pair of
+/// neighbours) filed by the squares of side [`CELL`] their boxes cover;
+/// a segment covering more than 8 squares a side is kept apart and
+/// measured always.
+struct Polyline<'a> {
+    points: &'a [P],
+    cells: HashMap<(i64, i64), Vec<usize>>,
+    long: Vec<usize>,
+}
+
+impl<'a> Polyline<'a> {
+    fn new(points: &'a [P]) -> Self {
+        let mut line = Polyline {
+            points,
+            cells: HashMap::new(),
+            long: Vec::new(),
+        };
+        for (i, w) in points.windows(2).enumerate() {
+            let (a, b) = (cell_of(w[0]), cell_of(w[1]));
+            let (x0, x1) = (a.0.min(b.0), a.0.max(b.0));
+            let (y0, y1) = (a.1.min(b.1), a.1.max(b.1));
+            if x1 - x0 > 8 || y1 - y0 > 8 {
+                line.long.push(i);
+                continue;
+            }
+            for x in x0..=x1 {
+                for y in y0..=y1 {
+                    line.cells.entry((x, y)).or_default().push(i);
+                }
+            }
+        }
+        line
+    }
+
+    /// The distance from `p` to segment `i`.
+    fn to_segment(&self, p: P, i: usize) -> f64 {
+        let (a, b) = (self.points[i], self.points[i + 1]);
+        let ab = (b.0 - a.0, b.1 - a.1);
+        let len2 = ab.0 * ab.0 + ab.1 * ab.1;
+        let t = if len2 == 0.0 {
+            0.0
+        } else {
+            (((p.0 - a.0) * ab.0 + (p.1 - a.1) * ab.1) / len2).clamp(0.0, 1.0)
+        };
+        dist(p, (a.0 + ab.0 * t, a.1 + ab.1 * t))
+    }
+
+    /// The distance from `p` to the path where it is at most `reach`
+    /// (less than a square's side): the segments filed in the squares
+    /// about `p`'s; the distance to every segment otherwise.
+    fn distance_within(&self, p: P, reach: f64) -> f64 {
+        assert!(reach < CELL);
+        let (cx, cy) = cell_of(p);
+        let near = (-1..=1)
+            .flat_map(|dx| (-1..=1).map(move |dy| (cx + dx, cy + dy)))
+            .filter_map(|c| self.cells.get(&c))
+            .flatten()
+            .chain(&self.long)
+            .map(|&i| self.to_segment(p, i))
+            .fold(f64::INFINITY, f64::min);
+        if near <= reach {
+            return near;
+        }
+        (0..self.points.len().saturating_sub(1))
+            .map(|i| self.to_segment(p, i))
+            .fold(f64::INFINITY, f64::min)
+    }
 }
 
 /// The distance (page units) from `q` to the exact curve: about each
@@ -713,17 +828,29 @@ fn sample(e: &Exact, map: &Map, per_piece: usize) -> Sampled {
 /// its own part lay farther: the massless rod's crank-pin loads, whose
 /// curves pass near themselves (and through the pole, where the piston
 /// effort changes sign), measured 0.050 units off where they are 0.0066.
+///
+/// The samples within a unit of the nearest are found by the squares
+/// they are filed in (the same samples a pass over all of them finds).
 fn distance_to_curve(q: P, e: &Exact, s: &Sampled, map: &Map) -> f64 {
-    let d: Vec<f64> = s.page.iter().map(|p| dist(*p, q)).collect();
-    let nearest = d.iter().copied().fold(f64::INFINITY, f64::min);
+    let nearest = s.nearest(q);
+    if !nearest.is_finite() {
+        return nearest;
+    }
+    let reach = nearest + 1.0;
+    let d = |i: usize| dist(s.page[i], q);
     let mut best = nearest;
-    for &(lo_i, hi_i) in &s.pieces {
-        for i in lo_i..hi_i {
-            let left = i == lo_i || d[i - 1] >= d[i];
-            let right = i + 1 == hi_i || d[i + 1] >= d[i];
-            if left && right && d[i] <= nearest + 1.0 {
-                best = best.min(refine(q, e, s, map, i, (lo_i, hi_i)));
-            }
+    for i in s.near(q, (reach / CELL).ceil() as i64 + 1, false) {
+        let di = d(i);
+        if di > reach {
+            continue;
+        }
+        let Some(&(lo_i, hi_i)) = s.pieces.iter().find(|(lo, hi)| (*lo..*hi).contains(&i)) else {
+            continue;
+        };
+        let left = i == lo_i || d(i - 1) >= di;
+        let right = i + 1 == hi_i || d(i + 1) >= di;
+        if left && right {
+            best = best.min(refine(q, e, s, map, i, (lo_i, hi_i)));
         }
     }
     best
@@ -852,26 +979,14 @@ fn measure_curves(name: &str, svg: &str, expected: &[(String, Exact)]) -> f64 {
             written.push(at);
         }
         // Nothing of the curve inside the frame is missing from the path.
+        let path = Polyline::new(&written);
         for p in s
             .page
             .iter()
             .step_by(3)
             .filter(|p| inside(&frame, **p, 1.0))
         {
-            let near = written
-                .windows(2)
-                .map(|w| {
-                    let (a, b) = (w[0], w[1]);
-                    let ab = (b.0 - a.0, b.1 - a.1);
-                    let len2 = ab.0 * ab.0 + ab.1 * ab.1;
-                    let t = if len2 == 0.0 {
-                        0.0
-                    } else {
-                        (((p.0 - a.0) * ab.0 + (p.1 - a.1) * ab.1) / len2).clamp(0.0, 1.0)
-                    };
-                    dist(*p, (a.0 + ab.0 * t, a.1 + ab.1 * t))
-                })
-                .fold(f64::INFINITY, f64::min);
+            let near = path.distance_within(*p, 0.25);
             assert!(
                 near <= 0.25,
                 "{} {id}: the curve at {p:?} is {near} px from the path",

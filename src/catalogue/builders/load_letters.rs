@@ -639,7 +639,14 @@ impl Letters {
             return None;
         }
         let mut least = self.size;
+        // A segment whose box lies farther off than an em and the room
+        // changes nothing: passed over before its distance is measured
+        // (with a margin for the rounding of the two measures).
+        let far = (self.size + ROOM) * (1.0 + 1e-9) + 1e-9;
         for (p, q) in curves.iter().chain(&self.jumps) {
+            if boxes_gap(b, *p, *q) * s > far {
+                continue;
+            }
             let d = segment_to_box(b, *p, *q) * s;
             if d < ROOM {
                 return None;
@@ -704,6 +711,14 @@ fn segment_to_box(b: Boxed, p: Point, q: Point) -> f64 {
     (corners.iter().zip(corners.iter().cycle().skip(1)))
         .map(|(a, b)| segment_distance(*a, *b, p, q))
         .fold(f64::INFINITY, f64::min)
+}
+
+/// The gap between the box `b` and the box of the segment `p`–`q`, the
+/// larger of its two axes' (0 where they meet): never more than the
+/// distance from the segment to `b`.
+fn boxes_gap((c, h): Boxed, p: Point, q: Point) -> f64 {
+    let gap = |lo: f64, hi: f64, c: f64, h: f64| (lo - (c + h)).max((c - h) - hi).max(0.0);
+    gap(p.x.min(q.x), p.x.max(q.x), c.x, h.x).max(gap(p.y.min(q.y), p.y.max(q.y), c.y, h.y))
 }
 
 /// Whether two boxes are level: on one line, their heights overlapping.
