@@ -172,3 +172,61 @@ fn an_inertia_force_too_short_to_draw_is_said_so_on_the_page() {
     );
     assert!(svg.contains("id=\"force-inertia\"") && !svg.contains(said));
 }
+
+/// CG of a few hundredths of the crank (l = 38 r at 90.09° and 269.98°,
+/// l = 54.9 r at 89.84° and 270.56°: 9 units or less in the ×20 detail)
+/// left G, the figure's subject, under C's pin and its ground symbol,
+/// and nothing said so. C and G are drawn again in a detail of their
+/// own, apart there by more than two letters' room, each lettered, and
+/// the notes say why; at the default, where CG reads, there is none.
+#[test]
+fn a_cg_too_short_to_read_gets_its_own_detail_and_a_note() {
+    use crate::common::{num, read_text};
+    let said = "too short to show G clear of C";
+    for (rod, degrees) in [(38.0, 90.09), (38.0, 269.98), (54.9, 89.84), (54.9, 270.56)] {
+        let svg = inertia_svg(rod, degrees);
+        assert!(
+            svg.contains("id=\"panel-cg\""),
+            "l = {rod}, {degrees}°: no detail at C and G"
+        );
+        let at = |id: &str| (num(&svg, id, "cx"), num(&svg, id, "cy"));
+        let (c, g) = (at("cg-point-C"), at("cg-point-G"));
+        let apart = distance(c, g);
+        assert!(
+            apart >= 24.0,
+            "l = {rod}, {degrees}°: CG {apart:.1} in its detail"
+        );
+        // Both inside the detail's border.
+        let d = crate::common::attr(&svg, "cg-border", "d").expect("no border");
+        let v: Vec<f64> = (d.split(|ch: char| !(ch.is_ascii_digit() || ch == '.' || ch == '-')))
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        let (xs, ys): (Vec<f64>, Vec<f64>) = v.chunks(2).map(|p| (p[0], p[1])).unzip();
+        let within = |p: (f64, f64)| {
+            let lo = |w: &[f64]| w.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = |w: &[f64]| w.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            p.0 > lo(&xs) && p.0 < hi(&xs) && p.1 > lo(&ys) && p.1 < hi(&ys)
+        };
+        assert!(
+            within(c) && within(g),
+            "l = {rod}, {degrees}°: C or G outside"
+        );
+        for id in ["cg-label-C", "cg-label-G"] {
+            assert!(
+                svg.contains(&format!("id=\"{id}\"")),
+                "l = {rod}, {degrees}°: no {id}"
+            );
+        }
+        assert!(
+            read_text(&svg).contains(said),
+            "l = {rod}, {degrees}°: nothing said"
+        );
+    }
+    let svg = to_svg(
+        &FigureName::from_name("inertia-force")
+            .unwrap()
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    assert!(!svg.contains("id=\"panel-cg\"") && !read_text(&svg).contains(said));
+}
