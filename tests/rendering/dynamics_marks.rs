@@ -230,3 +230,52 @@ fn a_cg_too_short_to_read_gets_its_own_detail_and_a_note() {
     );
     assert!(!svg.contains("id=\"panel-cg\"") && !read_text(&svg).contains(said));
 }
+
+/// T names its torque arrow where it stands by the arrowhead: at the
+/// gap's middle it stood as far from the head as from the tail, and where
+/// the gap turned (l = 3.72 r, e = −2.04 r at 180° and 269.1°) it stood
+/// by the end of θ's arc, read as naming θ; where the crank ran through
+/// the gap (l = 1.53 r, e = 0.467 r, 270.95°) it was set on the arc's
+/// far side, struck by θ's arc. At every pose it stands nearer the head
+/// than the tail, within two ems of it.
+#[test]
+fn ng_s_torque_letter_stands_by_its_arrowhead() {
+    use crate::common::group_path;
+    let poses = [
+        (3.72, -2.04, 180.0),
+        (3.72, -2.04, 269.1),
+        (1.53, 0.467, 270.95),
+        (49.4, 0.0, 269.66),
+        (72.0 / 25.0, 0.0, 60.0),
+    ];
+    for (rod, offset, degrees) in poses {
+        let at = format!("at l = {rod}, e = {offset}, {degrees}°");
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+        options.angle = Some(Angle::deg(degrees));
+        let f = FigureName::from_name("ng-fig-1-torque")
+            .unwrap()
+            .figure(&options);
+        let svg = to_svg(&f.unwrap());
+        let prefix = if svg.contains("id=\"detail-torque-T\"") {
+            "detail-"
+        } else {
+            ""
+        };
+        let arc = group_path(&svg, &format!("{prefix}torque-T"));
+        let (tail, head) = (arc[0], *arc.last().unwrap());
+        let plate = Plate::read(&svg);
+        let id = format!("{prefix}value-T");
+        let t = plate
+            .panels
+            .iter()
+            .flat_map(|p| &p.labels)
+            .find(|l| l.id == id)
+            .unwrap_or_else(|| panic!("no T {at}"));
+        let (to_head, to_tail) = (distance(centre(t), head), distance(centre(t), tail));
+        assert!(
+            to_head <= 0.75 * to_tail && to_head <= 2.0 * t.font_size,
+            "T {to_head:.1} from the head, {to_tail:.1} from the tail {at}"
+        );
+    }
+}
