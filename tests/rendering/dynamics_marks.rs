@@ -279,3 +279,31 @@ fn ng_s_torque_letter_stands_by_its_arrowhead() {
         );
     }
 }
+
+/// The side thrust F_s of a long rod near 90° and 270° (l = 49.4 r and
+/// 53.3 r: tan φ about 0.02) was drawn at its least length, 16 units
+/// from the block's face, of which the guide's hatching (6.5 deep) took
+/// the first and the head (10 long) the rest: a stub buried in the
+/// hatching. Its shaft now runs out of the hatching by a head's length
+/// before its head.
+#[test]
+fn ng_s_side_thrust_clears_the_guide_s_hatching() {
+    use crate::common::arrow_ends;
+    const HATCH: f64 = 6.5;
+    const HEAD: f64 = 10.0;
+    for (rod, degrees) in [(49.4, 90.2), (49.4, 269.66), (53.3, 89.66)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+        options.angle = Some(Angle::deg(degrees));
+        let f = FigureName::from_name("ng-fig-1-torque")
+            .unwrap()
+            .figure(&options);
+        let svg = to_svg(&f.unwrap());
+        let (tail, tip) = arrow_ends(&svg, "force-Fs");
+        let long = distance(tail, tip);
+        assert!(
+            long >= HATCH + 2.0 * HEAD - 0.5,
+            "F_s {long:.1} long at l = {rod}, {degrees}°"
+        );
+    }
+}

@@ -3,8 +3,9 @@
 
 use super::velocity::basics_e;
 use super::{LayerCtx, NamedArrow};
-use crate::figure::{Hue, Item, RichText, Role, Shape, TextSize};
+use crate::figure::{HATCH_DEPTH, Hue, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
+use crate::layout::ARROW_LENGTH;
 use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
 use crate::scene::notation::Named::*;
@@ -379,6 +380,12 @@ pub(super) const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
 /// line stops: clear of its circle.
 pub(super) const PIN_SHORT: f64 = 7.0;
 
+/// The least length of the side thrust's arrow, page units: its shaft
+/// clear of the guide's hatching it leaves the block through, with its
+/// head beyond (at 16 units, l = 49.4 r near 90° and 270°, the arrow was
+/// a stub buried in the hatching).
+const SIDE_THRUST_LEAST: f64 = HATCH_DEPTH + 2.0 * ARROW_LENGTH;
+
 /// The force arrows, their page lengths turned to world lengths by
 /// `world`: F_c = T / r on the crank pin, perpendicular to the crank in
 /// the torque's sense (Ng eq. 2), pointing at the pin; the slider force
@@ -451,7 +458,7 @@ pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArr
         if nonzero && tan_phi != 0.0 {
             let uy = Vector::new(0.0, sign * tan_phi.signum());
             let face = a + uy * s.block_half_height;
-            let len = (FORCE_ARROW * tan_phi.abs()).clamp(16.0, FORCE_ARROW);
+            let len = (FORCE_ARROW * tan_phi.abs()).clamp(SIDE_THRUST_LEAST, FORCE_ARROW);
             let to = face + uy * world(len);
             out.push(NamedArrow {
                 id: "Fs",
