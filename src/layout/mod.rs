@@ -29,7 +29,6 @@ mod notes;
 mod placed;
 mod points;
 mod symbol_sizes;
-pub(crate) use symbol_sizes::ARROW_LENGTH;
 mod text;
 
 use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Role, Shape};

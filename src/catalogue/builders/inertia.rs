@@ -20,9 +20,10 @@ use crate::construct::{AccelerationPoints, InstantCentre, Kisch, Klein, Velocity
 use crate::diagram::Plot;
 use crate::dynamics::{Engine, EnginePose};
 use crate::error::Result;
-use crate::figure::{Figure, HATCH_DEPTH, Item, NOTE_LINE, Panel, RichText, Role, Shape, TextSize};
+use crate::figure::{
+    ARROW_LENGTH, Figure, HATCH_DEPTH, Item, NOTE_LINE, Panel, RichText, Role, Shape, TextSize,
+};
 use crate::geom::{Frame, Point, Vector};
-use crate::layout::ARROW_LENGTH;
 use crate::scene::{Layer, torque_arrow};
 
 /// Height given to the scene of the mechanism, page units (it ends

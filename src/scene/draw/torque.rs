@@ -3,9 +3,8 @@
 
 use super::velocity::basics_e;
 use super::{LayerCtx, NamedArrow};
-use crate::figure::{HATCH_DEPTH, Hue, Item, RichText, Role, Shape, TextSize};
+use crate::figure::{ARROW_LENGTH, HATCH_DEPTH, Hue, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
-use crate::layout::ARROW_LENGTH;
 use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
 use crate::scene::notation::Named::*;
