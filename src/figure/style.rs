@@ -162,6 +162,8 @@ impl Style {
 /// writer's and the hand-drawn sketches' alike).
 pub(crate) const HATCH_SPACING: f64 = 6.0;
 /// Depth of the strip of ground hatching, page units.
+/// Length of an arrowhead, page units (the renderer's).
+pub(crate) const ARROW_LENGTH: f64 = 10.0;
 pub(crate) const HATCH_DEPTH: f64 = 6.5;
 /// Font size of notes, the largest they are set in (the layouts that
 /// leave room for notes and the writer that sets them share it).

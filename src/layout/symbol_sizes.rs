@@ -7,12 +7,10 @@ pub(crate) const PIN_RADIUS: f64 = 4.2;
 pub(crate) const LETTER_GAP: f64 = 4.0;
 /// Radius of a constructed point's dot.
 pub(crate) const DOT_RADIUS: f64 = 2.1;
-/// Length of an arrowhead.
-pub(crate) const ARROW_LENGTH: f64 = 10.0;
 /// Half the width of an arrowhead at its back.
 pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
 pub(crate) use crate::figure::{
-    ANGLE_RADIUS, HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, RIGHT_ANGLE,
+    ANGLE_RADIUS, ARROW_LENGTH, HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, RIGHT_ANGLE,
 };
 /// How much larger each further angle mark at the same vertex is drawn,
 /// so that two adjacent angles (Ng's φ and β at the crank pin) read as

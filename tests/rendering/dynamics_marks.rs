@@ -172,3 +172,138 @@ fn an_inertia_force_too_short_to_draw_is_said_so_on_the_page() {
     );
     assert!(svg.contains("id=\"force-inertia\"") && !svg.contains(said));
 }
+
+/// CG of a few hundredths of the crank (l = 38 r at 90.09° and 269.98°,
+/// l = 54.9 r at 89.84° and 270.56°: 9 units or less in the ×20 detail)
+/// left G, the figure's subject, under C's pin and its ground symbol,
+/// and nothing said so. C and G are drawn again in a detail of their
+/// own, apart there by more than two letters' room, each lettered, and
+/// the notes say why; at the default, where CG reads, there is none.
+#[test]
+fn a_cg_too_short_to_read_gets_its_own_detail_and_a_note() {
+    use crate::common::{num, read_text};
+    let said = "too short to show G clear of C";
+    for (rod, degrees) in [(38.0, 90.09), (38.0, 269.98), (54.9, 89.84), (54.9, 270.56)] {
+        let svg = inertia_svg(rod, degrees);
+        assert!(
+            svg.contains("id=\"panel-cg\""),
+            "l = {rod}, {degrees}°: no detail at C and G"
+        );
+        let at = |id: &str| (num(&svg, id, "cx"), num(&svg, id, "cy"));
+        let (c, g) = (at("cg-point-C"), at("cg-point-G"));
+        let apart = distance(c, g);
+        assert!(
+            apart >= 24.0,
+            "l = {rod}, {degrees}°: CG {apart:.1} in its detail"
+        );
+        // Both inside the detail's border.
+        let d = crate::common::attr(&svg, "cg-border", "d").expect("no border");
+        let v: Vec<f64> = (d.split(|ch: char| !(ch.is_ascii_digit() || ch == '.' || ch == '-')))
+            .filter_map(|w| w.parse().ok())
+            .collect();
+        let (xs, ys): (Vec<f64>, Vec<f64>) = v.chunks(2).map(|p| (p[0], p[1])).unzip();
+        let within = |p: (f64, f64)| {
+            let lo = |w: &[f64]| w.iter().copied().fold(f64::INFINITY, f64::min);
+            let hi = |w: &[f64]| w.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+            p.0 > lo(&xs) && p.0 < hi(&xs) && p.1 > lo(&ys) && p.1 < hi(&ys)
+        };
+        assert!(
+            within(c) && within(g),
+            "l = {rod}, {degrees}°: C or G outside"
+        );
+        for id in ["cg-label-C", "cg-label-G"] {
+            assert!(
+                svg.contains(&format!("id=\"{id}\"")),
+                "l = {rod}, {degrees}°: no {id}"
+            );
+        }
+        assert!(
+            read_text(&svg).contains(said),
+            "l = {rod}, {degrees}°: nothing said"
+        );
+    }
+    let svg = to_svg(
+        &FigureName::from_name("inertia-force")
+            .unwrap()
+            .figure(&FigureOptions::default())
+            .unwrap(),
+    );
+    assert!(!svg.contains("id=\"panel-cg\"") && !read_text(&svg).contains(said));
+}
+
+/// T names its torque arrow where it stands by the arrowhead: at the
+/// gap's middle it stood as far from the head as from the tail, and where
+/// the gap turned (l = 3.72 r, e = −2.04 r at 180° and 269.1°) it stood
+/// by the end of θ's arc, read as naming θ; where the crank ran through
+/// the gap (l = 1.53 r, e = 0.467 r, 270.95°) it was set on the arc's
+/// far side, struck by θ's arc. At every pose it stands nearer the head
+/// than the tail, within two ems of it.
+#[test]
+fn ng_s_torque_letter_stands_by_its_arrowhead() {
+    use crate::common::group_path;
+    let poses = [
+        (3.72, -2.04, 180.0),
+        (3.72, -2.04, 269.1),
+        (1.53, 0.467, 270.95),
+        (49.4, 0.0, 269.66),
+        (72.0 / 25.0, 0.0, 60.0),
+    ];
+    for (rod, offset, degrees) in poses {
+        let at = format!("at l = {rod}, e = {offset}, {degrees}°");
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+        options.angle = Some(Angle::deg(degrees));
+        let f = FigureName::from_name("ng-fig-1-torque")
+            .unwrap()
+            .figure(&options);
+        let svg = to_svg(&f.unwrap());
+        let prefix = if svg.contains("id=\"detail-torque-T\"") {
+            "detail-"
+        } else {
+            ""
+        };
+        let arc = group_path(&svg, &format!("{prefix}torque-T"));
+        let (tail, head) = (arc[0], *arc.last().unwrap());
+        let plate = Plate::read(&svg);
+        let id = format!("{prefix}value-T");
+        let t = plate
+            .panels
+            .iter()
+            .flat_map(|p| &p.labels)
+            .find(|l| l.id == id)
+            .unwrap_or_else(|| panic!("no T {at}"));
+        let (to_head, to_tail) = (distance(centre(t), head), distance(centre(t), tail));
+        assert!(
+            to_head <= 0.75 * to_tail && to_head <= 2.0 * t.font_size,
+            "T {to_head:.1} from the head, {to_tail:.1} from the tail {at}"
+        );
+    }
+}
+
+/// The side thrust F_s of a long rod near 90° and 270° (l = 49.4 r and
+/// 53.3 r: tan φ about 0.02) was drawn at its least length, 16 units
+/// from the block's face, of which the guide's hatching (6.5 deep) took
+/// the first and the head (10 long) the rest: a stub buried in the
+/// hatching. Its shaft now runs out of the hatching by a head's length
+/// before its head.
+#[test]
+fn ng_s_side_thrust_clears_the_guide_s_hatching() {
+    use crate::common::arrow_ends;
+    const HATCH: f64 = 6.5;
+    const HEAD: f64 = 10.0;
+    for (rod, degrees) in [(49.4, 90.2), (49.4, 269.66), (53.3, 89.66)] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, 0.0).unwrap());
+        options.angle = Some(Angle::deg(degrees));
+        let f = FigureName::from_name("ng-fig-1-torque")
+            .unwrap()
+            .figure(&options);
+        let svg = to_svg(&f.unwrap());
+        let (tail, tip) = arrow_ends(&svg, "force-Fs");
+        let long = distance(tail, tip);
+        assert!(
+            long >= HATCH + 2.0 * HEAD - 0.5,
+            "F_s {long:.1} long at l = {rod}, {degrees}°"
+        );
+    }
+}

@@ -20,7 +20,9 @@ use crate::construct::{AccelerationPoints, InstantCentre, Kisch, Klein, Velocity
 use crate::diagram::Plot;
 use crate::dynamics::{Engine, EnginePose};
 use crate::error::Result;
-use crate::figure::{Figure, HATCH_DEPTH, Item, NOTE_LINE, Panel, RichText, Role, Shape, TextSize};
+use crate::figure::{
+    ARROW_LENGTH, Figure, HATCH_DEPTH, Item, NOTE_LINE, Panel, RichText, Role, Shape, TextSize,
+};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::{Layer, torque_arrow};
 
@@ -46,9 +48,6 @@ const ROOM: f64 = 12.0;
 /// (page units) beside no guide is lettered by that stretch's middle, not
 /// beyond its free end.
 const LONG_ARROW: f64 = 5.0 * ROOM;
-
-/// The length of a drawn arrowhead, page units (the layout's).
-const ARROW_HEAD: f64 = 10.0;
 
 /// An arrow shorter than this on the page (page units) is left out: the
 /// notes give its value.
@@ -100,7 +99,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     let mut sheet = Sheet::new(ctx);
     sheet.mechanism(ctx, true, true);
     metadata(&mut sheet, &forces);
-    let (bottom, fi_left_out) = mechanism(ctx, &forces, &mut sheet)?;
+    let (bottom, fi_left_out, shown) = mechanism(ctx, &forces, &mut sheet)?;
+    let (bottom, enlarged) = match shown {
+        Some((panel, main_scale)) => {
+            cg_detail(ctx, &forces, &mut sheet, &panel, main_scale, bottom)?
+        }
+        None => (bottom, None),
+    };
     let (top, fn_left_out) = match triangle(ctx, &forces, bottom + 8.0)? {
         Some((plot, left_out)) => {
             let rect = plot.rect();
@@ -112,7 +117,7 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
     // The page holds what was set: a detail or the triangle may take it
     // past the figure's own height, a note of a force left out past
     // the notes' room.
-    let notes = notes(ctx, &forces, fn_left_out, fi_left_out);
+    let notes = notes(ctx, &forces, fn_left_out, fi_left_out, enlarged);
     let more = NOTE_LINE * notes.len().saturating_sub(3) as f64;
     sheet.height(top + NOTES + more + 16.0);
     sheet.notes(Point::new(20.0, top + 8.0), &notes);
@@ -140,19 +145,24 @@ fn metadata(sheet: &mut Sheet, f: &Forces) {
     );
 }
 
+/// The panel that shows G and the main view's scale (page units to the
+/// world unit).
+type Shown = (Panel, f64);
+
 /// The scene's mechanism with Klein's construction, the inertia force at
 /// the cross-head and the crank effort added to its main view; its
-/// details as drawn. Returns the bottom of what it set on the page and
+/// details as drawn. Returns the bottom of what it set on the page,
 /// whether F_i was left out of the main view (shorter than
-/// [`SHORTEST`] there).
-fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool)> {
+/// [`SHORTEST`] there), and the panel that shows G (the first detail
+/// whose frame holds it, else the main view) with the main view's scale.
+fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool, Option<Shown>)> {
     let scene = ctx
         .scene(ctx.page().width(), SCENE)?
         .with_layers([Layer::Mechanism, Layer::Klein]);
     let base = scene.figure()?;
     let mut panels = base.panels().iter();
     let Some(main) = panels.next() else {
-        return Ok((base.height(), false));
+        return Ok((base.height(), false, None));
     };
     let scale = main.transform().scale();
     let pose = ctx.pose();
@@ -195,7 +205,7 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool)> {
         items.extend(arc(&shaft));
     }
     sheet.panel(main.clone().with_items(items));
-    for (k, detail) in details.into_iter().enumerate() {
+    for (k, &detail) in details.iter().enumerate() {
         let own = if home == Some(k) {
             // Its gap and letter below C, as at any pose: the enlarged
             // block is drawn about C, and a gap facing its nearer face
@@ -211,7 +221,123 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool)> {
         };
         sheet.panel(detail.clone().with_items(own));
     }
-    Ok((base.height(), fi_left_out))
+    let g = f.points.g();
+    let shown = details
+        .iter()
+        .find(|d| d.rect().contains(d.transform().apply(g)))
+        .copied()
+        .unwrap_or(main);
+    Ok((base.height(), fi_left_out, Some((shown.clone(), scale))))
+}
+
+/// CG shorter than this on the page (page units) in the panel that
+/// shows G leaves G's dot within C's pin, its letter and its ground
+/// symbol: G, the figure's subject, could not be seen (l = 38 r at
+/// 90.09°, CG 9 units in the ×20 detail).
+const CG_READS: f64 = 2.0 * ROOM;
+
+/// The length CG is drawn on the page in its own detail at C, at most,
+/// page units.
+const CG_SHOWN: f64 = 100.0;
+
+/// The plot area of the detail at C and G, page units.
+const CG_AREA: (f64, f64) = (260.0, 110.0);
+
+/// The magnifications offered for the detail at C and G over the main
+/// view: 1, 2, 2.5, 3, 4, 5, 6 and 8 times a power of ten, the largest
+/// at or under `most`.
+fn round_magnification(most: f64) -> Option<f64> {
+    if !(most.is_finite() && most >= 1.0) {
+        return None;
+    }
+    let decade = 10f64.powf(most.log10().floor());
+    [8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.0]
+        .into_iter()
+        .map(|k| k * decade)
+        .find(|m| *m <= most * (1.0 + 1e-9))
+}
+
+/// Where CG is shorter than [`CG_READS`] on the page in `shown` (the
+/// panel that shows G; the main view is drawn at `main_scale`), C and G
+/// drawn again in a detail of their own below the mechanism (from
+/// `top`), CG at most [`CG_SHOWN`] long there: the lines through them
+/// as `shown` draws them, without C's ground symbol (drawn at a page
+/// size, it stood over CG again), C and G lettered. Returns the bottom
+/// of what is set on the page and the detail's magnification over the
+/// main view, if drawn (none where G is C: the notes say so).
+fn cg_detail(
+    ctx: &Ctx,
+    f: &Forces,
+    sheet: &mut Sheet,
+    shown: &Panel,
+    main_scale: f64,
+    top: f64,
+) -> Result<(f64, Option<f64>)> {
+    let pose = ctx.pose();
+    let (c, g) = (pose.c(), f.points.g());
+    let cg = (g - c).norm();
+    let t = shown.transform();
+    if cg == 0.0 || (t.apply(g) - t.apply(c)).norm() >= CG_READS {
+        return Ok((top, None));
+    }
+    let Some(magnification) = round_magnification(CG_SHOWN / (cg * main_scale)) else {
+        return Ok((top, None));
+    };
+    let scale = magnification * main_scale;
+    let (w, h) = CG_AREA;
+    let width = w.min(ctx.page().width() - 32.0);
+    let mid = c + (g - c) * 0.5;
+    let half = Vector::new(0.5 * width / scale, 0.5 * h / scale);
+    let world = Frame::new(mid - half, mid + half);
+    let rect = Frame::from_origin_size(
+        0.5 * (ctx.page().width() - width),
+        top + 8.0,
+        width,
+        h + crate::diagram::CAPTION,
+    );
+    let mut plot = Plot::world("cg", rect, &world, ctx.mirror, ctx.tolerance, ctx.font)?
+        .with_caption(&format!("*C* and *G* ×{}", short(magnification)));
+    let seen = plot.map().world_frame(&plot.area());
+    let at = |p: Point, q: Point| (p - q).norm() * scale < 1.0;
+    let own = |id: &str| id.strip_prefix("detail-").unwrap_or(id).to_string();
+    for item in shown.items() {
+        let name = own(&item.id);
+        let keep = match &item.shape {
+            Shape::Label { anchor, .. } => {
+                name.starts_with("label-") && (at(*anchor, c) || at(*anchor, g))
+            }
+            Shape::Bearing { .. } | Shape::Block { .. } | Shape::Hatch { .. } => false,
+            Shape::Pin { centre } | Shape::Dot { centre } => seen.contains(*centre),
+            _ => {
+                !(name.starts_with("offpage")
+                    || name.starts_with("guide")
+                    || name.starts_with("detail")
+                    || name.starts_with("torque")
+                    || name.starts_with("value")
+                    || name.starts_with("dimension"))
+            }
+        };
+        if keep {
+            let mut item = item.clone();
+            item.id = format!("cg-{name}");
+            plot.push(item);
+        }
+    }
+    let inset = 0.5 / scale;
+    let (lo, hi) = (
+        seen.min() + Vector::new(inset, inset),
+        seen.max() - Vector::new(inset, inset),
+    );
+    plot.push(Item::new(
+        "cg-border",
+        Role::Frame,
+        Shape::Polyline {
+            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
+            closed: true,
+        },
+    ));
+    sheet.detail(plot);
+    Ok((rect.max().y, Some(magnification)))
 }
 
 /// Whether the detail `panel` shows the crank centre `c` with the crank
@@ -896,7 +1022,7 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<(Plot, bool)>> {
     plot.push(label("triangle-rod", o, o + q, o + fi, "*F*_Q"));
     // F_N no longer than two arrowheads on the page shows a head and no
     // shaft, a letter with no arrow: left out, the notes say why.
-    let shown = plot.map().apply_vector(fi - q).norm() >= 2.0 * ARROW_HEAD;
+    let shown = plot.map().apply_vector(fi - q).norm() >= 2.0 * ARROW_LENGTH;
     if shown {
         plot.push(arrow("force-triangle-guides", o + q, o + fi));
         plot.push(label("triangle-guides", o + q, o + fi, o, "*F*_N"));
@@ -906,7 +1032,13 @@ fn triangle(ctx: &Ctx, f: &Forces, top: f64) -> Result<Option<(Plot, bool)>> {
 
 /// The notes: the engine, the scale, and every force with its value and
 /// unit, the graphical beside the exact.
-fn notes(ctx: &Ctx, f: &Forces, fn_left_out: bool, fi_left_out: bool) -> Vec<String> {
+fn notes(
+    ctx: &Ctx,
+    f: &Forces,
+    fn_left_out: bool,
+    fi_left_out: bool,
+    enlarged: Option<f64>,
+) -> Vec<String> {
     let m = ctx.mechanism;
     let at = &f.at;
     let (u, fu) = (ctx.unit(), ctx.units.force());
@@ -969,6 +1101,12 @@ fn notes(ctx: &Ctx, f: &Forces, fn_left_out: bool, fi_left_out: bool) -> Vec<Str
         lines.push(
             "*F*_i, *CG* long at the drawing’s scale, is too short to draw at the cross-head in the main view: its value is given above.".to_string(),
         );
+    }
+    if let Some(m) = enlarged {
+        lines.push(format!(
+            "*CG* is too short to show *G* clear of *C* in the mechanism: *C* and *G* are drawn again below it, ×{} the main view.",
+            short(m)
+        ));
     }
     if fn_left_out {
         lines.push(

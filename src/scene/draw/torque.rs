@@ -3,7 +3,7 @@
 
 use super::velocity::basics_e;
 use super::{LayerCtx, NamedArrow};
-use crate::figure::{Hue, Item, RichText, Role, Shape, TextSize};
+use crate::figure::{ARROW_LENGTH, HATCH_DEPTH, Hue, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, cross};
 use crate::number::{given, sig};
 use crate::scene::canvas::Canvas;
@@ -178,7 +178,7 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
 /// Where no gap is given and one of `avoid` runs through the usual gap,
 /// the gap turns to the nearest direction that leaves each of them well
 /// past the arc's ends ([`free_gap`]), and T stands in it, between the
-/// arrowhead and the tail; only where there is none is T set beside the
+/// arrowhead and the tail, by the head; only where there is none is T set beside the
 /// arc.
 pub(crate) fn torque_arrow(
     c: Point,
@@ -205,17 +205,30 @@ pub(crate) fn torque_arrow(
     };
     // T in the gap, or, where the gap holds the block or something to
     // avoid, beside the arc clear of what stands about the centre.
+    // By the arrowhead, so that T names the arrow: at the gap's middle it
+    // stood as far from the head as from the tail, and where the gap
+    // turned (Ng's Fig. 1 at 180°, an offset of −2.04 r) by the end of
+    // θ's arc, which it read as naming.
     let middle = start + 0.5 * sweep + std::f64::consts::PI;
+    let by_head = start + sweep + turn * BY_HEAD;
     let mid = match gap {
-        Some((_, Gap::Usual | Gap::Turned)) => middle,
+        Some((_, Gap::Usual | Gap::Turned)) => by_head,
         Some((g, Gap::Block)) => {
             let avoid: Vec<f64> = avoid.iter().copied().chain([g]).collect();
             start + sweep * clearest_share(start, sweep, &avoid)
         }
+        // One of `avoid` runs through the gap: T still by the head where
+        // that stands clear of them all (set by the arc's clearest share,
+        // it stood by θ's arc, struck by it, far from the head: l = 1.53 r,
+        // e = 0.467 r, 270.95°).
         None if avoid.iter().any(|&a| apart(a, middle) < half_gap) => {
-            start + sweep * clearest_share(start, sweep, avoid)
+            if avoid.iter().all(|&a| apart(a, by_head) >= HEAD_MARGIN) {
+                by_head
+            } else {
+                start + sweep * clearest_share(start, sweep, avoid)
+            }
         }
-        None => middle,
+        None => by_head,
     };
     [
         Item::new(
@@ -242,6 +255,11 @@ pub(crate) fn torque_arrow(
         ),
     ]
 }
+
+/// How far past the torque arc's head, radians (17°), its letter stands
+/// in the gap: clear of the head (about 13° of the arc long) and nearer
+/// it than the tail.
+const BY_HEAD: f64 = 0.3;
 
 /// Where the torque arrow's gap faces.
 #[derive(Clone, Copy)]
@@ -288,10 +306,10 @@ fn free_gap(usual: f64, half_gap: f64, turn: f64, avoid: &[f64]) -> Option<(f64,
 }
 
 /// The share of the arc from `start` through `sweep` (radians) at which it
-/// runs farthest, in angle, from every direction of `avoid`: the arc's
-/// middle where nothing is to be avoided, or among equals (in steps of a
-/// twentieth, within its middle two fifths, clear of the arrowhead, the
-/// tail and what stands in the gap).
+/// runs farthest, in angle, from every direction of `avoid`: the share
+/// nearest the arrowhead among equals (in steps of a twentieth, within
+/// its middle two fifths, clear of the arrowhead, the tail and what
+/// stands in the gap).
 fn clearest_share(start: f64, sweep: f64, avoid: &[f64]) -> f64 {
     let clearance = |k: f64| {
         let at = start + sweep * k;
@@ -300,9 +318,10 @@ fn clearest_share(start: f64, sweep: f64, avoid: &[f64]) -> f64 {
             .map(|&a| apart(at, a))
             .fold(f64::INFINITY, f64::min)
     };
-    // From the middle outwards, so that the middle wins among equals.
-    let shares = (0..=4).flat_map(|i| [0.5 + 0.05 * f64::from(i), 0.5 - 0.05 * f64::from(i)]);
-    shares.fold(0.5, |best, k| match clearance(k) > clearance(best) + 1e-9 {
+    // From the head's end of its middle two fifths towards the tail, so
+    // that among equals T stands nearest the arrowhead it names.
+    let shares = (0..=8).map(|i| 0.7 - 0.05 * f64::from(i));
+    shares.fold(0.7, |best, k| match clearance(k) > clearance(best) + 1e-9 {
         true => k,
         false => best,
     })
@@ -359,6 +378,12 @@ pub(super) const ALONG_THE_ROD: f64 = 20.0 * std::f64::consts::PI / 180.0;
 /// How far short of a pin (page units) an arrow that comes to it on its
 /// line stops: clear of its circle.
 pub(super) const PIN_SHORT: f64 = 7.0;
+
+/// The least length of the side thrust's arrow, page units: its shaft
+/// clear of the guide's hatching it leaves the block through, with its
+/// head beyond (at 16 units, l = 49.4 r near 90° and 270°, the arrow was
+/// a stub buried in the hatching).
+const SIDE_THRUST_LEAST: f64 = HATCH_DEPTH + 2.0 * ARROW_LENGTH;
 
 /// The force arrows, their page lengths turned to world lengths by
 /// `world`: F_c = T / r on the crank pin, perpendicular to the crank in
@@ -432,7 +457,7 @@ pub(crate) fn forces(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<NamedArr
         if nonzero && tan_phi != 0.0 {
             let uy = Vector::new(0.0, sign * tan_phi.signum());
             let face = a + uy * s.block_half_height;
-            let len = (FORCE_ARROW * tan_phi.abs()).clamp(16.0, FORCE_ARROW);
+            let len = (FORCE_ARROW * tan_phi.abs()).clamp(SIDE_THRUST_LEAST, FORCE_ARROW);
             let to = face + uy * world(len);
             out.push(NamedArrow {
                 id: "Fs",
