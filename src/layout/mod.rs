@@ -41,7 +41,7 @@ use labels::{
 pub use mark::{
     Mark, Paint, PathCommand, PathData, Shape as MarkShape, Stroke, TextAnchor, TextMark,
 };
-use markup::{path, polyline_d, unit};
+use markup::{finite, path, polyline_d, unit};
 pub use placed::{PlacedFigure, PlacedPanel};
 use text::{ink_box, starts_italic, text_node};
 
@@ -247,6 +247,11 @@ struct PanelLayout<'a> {
     /// The page centres of the pins and constructed points drawn, which
     /// a point's letter keeps nearer its own than.
     points: Vec<Point>,
+    /// The page centres of the constructed points left to a detail
+    /// (undrawn here, where lines drawn meet): a joint's letter whose pin
+    /// lies in the detail's frame that stands nearer one of these than
+    /// its own pin is left to the detail (Kisch's A under the foot F, G).
+    quiet: Vec<Point>,
     /// The links and forces drawn (page segments), which a text naming a
     /// line keeps nearer its own than.
     links: Vec<(Point, Point)>,
@@ -322,6 +327,16 @@ impl PanelLayout<'_> {
                 arrow,
             } => self.arc(&ink, *centre, *radius, (*start, *sweep), *arrow),
             Shape::Pin { centre } => self.pin(&ink, *centre),
+            // A constructed point left to a detail: undrawn here, but a
+            // point a joint's letter in the detail's frame that stands
+            // nearer it than its own pin is left to the detail for.
+            Shape::Dot { centre } if item.part == Part::DetailMark => {
+                let c = self.p(*centre);
+                if finite(&c) {
+                    self.quiet.push(c);
+                }
+                None
+            }
             Shape::Dot { centre } => self.dot(&ink, *centre),
             Shape::Marker { centre, symbol } => self.marker(&ink, *centre, *symbol),
             Shape::Bearing { centre, foot } => self.bearing(&ink, *centre, *foot),
@@ -394,6 +409,7 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &Frame) -> PlacedP
         detail_marks: Vec::new(),
         crossing: Vec::new(),
         points: Vec::new(),
+        quiet: Vec::new(),
         links: Vec::new(),
         dimensions: Vec::new(),
         bodies: Vec::new(),
@@ -500,7 +516,7 @@ impl PanelLayout<'_> {
         let mut nodes = Vec::new();
         let mut boxes = Vec::new();
         for (p, at) in order.into_iter().zip(placed) {
-            let others = others(p, &self.points, p.size);
+            let others = self.others(p, p.size);
             if !self.left_to_detail(p, &at, &joints, (joints.iter()).chain(&others)) {
                 nodes.extend(self.label_nodes(p, &at));
                 boxes.push(at.bounds);
@@ -616,6 +632,18 @@ impl PanelLayout<'_> {
         };
         let mut nearer = || near.any(|&q| q != p.anchor && at.bounds.distance_to(q) + NEARER < own);
         at.lasting || crowded() || nearer()
+    }
+
+    /// [`others`], and for a joint's letter whose pin lies in a detail's
+    /// frame the points left to the detail too ([`PanelLayout::quiet`]):
+    /// those it may not stand nearer than its own pin, else it is left
+    /// to the detail.
+    fn others(&self, p: &Pending, beyond: f64) -> Vec<Point> {
+        let mut near = others(p, &self.points, beyond);
+        if self.in_detail_frame(p) && !near.is_empty() {
+            near.extend((self.quiet.iter()).filter(|q| (**q - p.anchor).norm() > beyond));
+        }
+        near
     }
 
     /// Whether a label is a joint's letter on the main view whose pin

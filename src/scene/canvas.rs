@@ -384,6 +384,13 @@ impl Canvas {
             .insert(name.to_string(), json!([round(p.x), round(p.y)]));
         let quiet = marker == Marker::Dot && self.quiet.is_some_and(|f| f.contains(p));
         if quiet {
+            // Left to the detail, the point is still where the lines
+            // drawn meet: a pin's letter in the detail's frame that
+            // stands nearer it than its own pin is left to the detail.
+            // It is kept undrawn, as a detail's mark ([`Part::DetailMark`]).
+            self.with_part(Part::DetailMark, |canvas| {
+                canvas.push(key, Role::Construction, Shape::Dot { centre: p });
+            });
         } else if self.contains(p) {
             self.mark(name, p, marker, letter, toward);
             self.marked.push((name.to_string(), p, marker));

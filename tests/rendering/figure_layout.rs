@@ -537,3 +537,42 @@ fn a_letter_keeps_on_its_points_side_of_the_guides() {
     let crossed = way_back_crosses(panel, panel.markers["A"], &a, &["guide-", "link-"]);
     assert!(crossed.is_empty(), "A's letter {a:?} across {crossed:?}");
 }
+
+/// Kisch's construction at l = 1.09 r, 0° (issue 38): the foot of the
+/// perpendicular F, G lies inside the detail's frame, its dot and letter
+/// left to the detail, and A's letter on the main view stood under it,
+/// outside the block, far from A's pin: read as naming the foot. A point
+/// left to a detail is still a point the letters of the main view keep
+/// farther from than from their own: A's letter, where it stands, is
+/// nearer A than any other named point (from the metadata) on the page.
+#[test]
+fn a_letter_keeps_nearer_its_own_point_than_one_left_to_the_detail() {
+    let text = svg(FigureName::Fig66Kisch, Some((1.0, 1.09, 0.0, 0.0)), None);
+    let plate = Plate::read(&text);
+    let meta = common::metadata(&text);
+    let m: Vec<f64> = (meta["page_from_world"].as_array().unwrap().iter())
+        .map(|v| v.as_f64().unwrap())
+        .collect();
+    let page = |p: &serde_json::Value| {
+        let (x, y) = (p[0].as_f64().unwrap(), p[1].as_f64().unwrap());
+        (m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5])
+    };
+    let points = meta["points"].as_object().unwrap();
+    let own = page(&points["A"]);
+    let panel = &plate.panels[0];
+    let Some(a) = panel.labels.iter().find(|l| l.id == "label-A") else {
+        return;
+    };
+    let mine = a.rect.distance_to(own);
+    for (name, p) in points {
+        let q = page(p);
+        if distance(q, own) > 1.0 {
+            let d = a.rect.distance_to(q);
+            assert!(
+                mine <= d,
+                "A's letter {:?} {mine:.1} from A, {d:.1} from {name}",
+                a.rect
+            );
+        }
+    }
+}
