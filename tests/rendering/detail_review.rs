@@ -193,3 +193,22 @@ fn no_construction_line_doubles_the_crank_in_a_detail() {
         }
     }
 }
+
+/// Kisch's construction on an offset engine at its outer dead centre
+/// (l = 3.99, e = −1.6, 0°): the perpendicular from H meets the line
+/// through C at G before AB at F, and stopped at G, so that F's right
+/// angle stood off every line but the rod. A drawn line ends at F.
+#[test]
+fn kisch_perpendicular_reaches_f_beyond_g() {
+    let text = svg(FigureName::Fig66Kisch, (1.0, 3.99, -1.6, 0.0));
+    let f = (
+        common::num(&text, "detail-point-F", "cx"),
+        common::num(&text, "detail-point-F", "cy"),
+    );
+    let at_f = |p: (f64, f64)| (p.0 - f.0).hypot(p.1 - f.1) < 0.5;
+    let lines = detail_lines(&text);
+    assert!(
+        lines.iter().any(|(_, p, q)| at_f(*p) || at_f(*q)),
+        "no line ends at F {f:?}: {lines:?}"
+    );
+}
