@@ -15,6 +15,7 @@ mod plate;
 mod worked_engine;
 
 mod chain_figures;
+mod detail_review;
 mod diagrams;
 mod dynamics_marks;
 mod figure_layout;

@@ -16,6 +16,13 @@ fn fg(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, 
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let (f, g) = (p.f(), p.g());
     canvas.segment(ctx.line(from_name, G), Role::Construction, from, g);
+    // Kisch's perpendicular from H meets the line through C at G before
+    // it meets AB at F where F lies beyond G from H (an offset engine at
+    // its outer dead centre): carried on to F, so that a drawn line meets
+    // AB at F's right angle.
+    if from_name != F && (f - from).norm() > (g - from).norm() {
+        canvas.segment(ctx.line(G, F), Role::Construction, g, f);
+    }
     canvas.segment(ctx.line(CrankCentre, G), Role::Result, c, g);
     let along = if (a - f).norm() > (b - f).norm() {
         a - f

@@ -6,6 +6,7 @@ mod curves;
 mod detail;
 mod dimensions;
 mod fit;
+mod joint;
 mod mechanism;
 mod motion;
 pub(crate) mod polygons;
@@ -786,7 +787,9 @@ fn detail_panel(
         .expect("a finite positive scale");
     let mut canvas = Canvas::new(transform, *frame).detail("detail-");
     draw_layers(ctx, poses, &mut canvas, false);
-    let (items, _) = canvas.finish();
+    let (mut items, _) = canvas.finish();
+    joint::leave_out_along_links(&mut items, "detail-", scale);
+    joint::letter_near_together(&mut items, "detail-", scale);
     Panel::new("panel-detail", rect, transform, items).clipped()
 }
 
