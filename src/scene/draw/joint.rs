@@ -4,7 +4,7 @@
 
 use super::COINCIDE;
 use crate::figure::{Item, Part, RichText, Role, Shape};
-use crate::geom::Point;
+use crate::geom::{Point, point_segment_distance};
 
 /// A marked point of a detail: its name, its place and whether it is a
 /// pin.
@@ -119,7 +119,8 @@ pub(super) fn leave_out_along_links(items: &mut Vec<Item>, prefix: &str, scale: 
         })
         .filter_map(ends)
         .collect();
-    let beside = |p: Point, (a, b): (Point, Point)| distance_to_segment(p, a, b) * scale < COINCIDE;
+    let beside =
+        |p: Point, (a, b): (Point, Point)| point_segment_distance(p, a, b) * scale < COINCIDE;
     items.retain(|it| {
         // The line of stroke is the frame's centre line, not a
         // construction: it stays where the crank lies along it.
@@ -130,17 +131,4 @@ pub(super) fn leave_out_along_links(items: &mut Vec<Item>, prefix: &str, scale: 
         };
         !links.iter().any(|&link| beside(p, link) && beside(q, link))
     });
-}
-
-/// The distance from `p` to the segment `a b` (to `a` where it is a
-/// point).
-fn distance_to_segment(p: Point, a: Point, b: Point) -> f64 {
-    let ab = b - a;
-    let len2 = ab.norm_squared();
-    let t = if len2 > 0.0 {
-        ((p - a).dot(&ab) / len2).clamp(0.0, 1.0)
-    } else {
-        0.0
-    };
-    (p - (a + ab * t)).norm()
 }
