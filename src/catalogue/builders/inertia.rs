@@ -300,6 +300,7 @@ fn cg_detail(
     let seen = plot.map().world_frame(&plot.area());
     let at = |p: Point, q: Point| (p - q).norm() * scale < 1.0;
     let own = |id: &str| id.strip_prefix("detail-").unwrap_or(id).to_string();
+    let mut kept = Vec::new();
     for item in shown.items() {
         let name = own(&item.id);
         let keep = match &item.shape {
@@ -320,8 +321,12 @@ fn cg_detail(
         if keep {
             let mut item = item.clone();
             item.id = format!("cg-{name}");
-            plot.push(item);
+            kept.push(item);
         }
+    }
+    apart_again(&mut kept, g);
+    for item in kept {
+        plot.push(item);
     }
     let inset = 0.5 / scale;
     let (lo, hi) = (
@@ -548,6 +553,38 @@ fn inertia_arrow(
             },
         ),
     ]
+}
+
+/// The dot and letter of G where the construction's detail joined them
+/// to C's pin ("*C*, *G*": its dot ran into the pin there), for the
+/// detail of C and G that sets them apart (its `items`): C's letter
+/// again alone, G's dot and a letter of its own, like C's.
+fn apart_again(items: &mut Vec<Item>, g: Point) {
+    if items.iter().any(|it| it.id == "cg-point-G") {
+        return;
+    }
+    let Some(c) = items.iter_mut().find(|it| it.id == "cg-label-C") else {
+        return;
+    };
+    let mut own_g = c.clone();
+    own_g.id = "cg-label-G".to_string();
+    if let (
+        Shape::Label { text, .. },
+        Shape::Label {
+            text: t, anchor, ..
+        },
+    ) = (&mut c.shape, &mut own_g.shape)
+    {
+        *text = RichText::parse("*C*");
+        *t = RichText::parse("*G*");
+        *anchor = g;
+    }
+    items.push(Item::new(
+        "cg-point-G",
+        Role::Construction,
+        Shape::Dot { centre: g },
+    ));
+    items.push(own_g);
 }
 
 /// Beyond the crank effort's arc radius, the page room F_i's shaft keeps

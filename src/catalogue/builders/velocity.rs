@@ -14,7 +14,7 @@ use crate::diagram::{Axis, Curve, Locus, LocusKind, Plot};
 use crate::error::Result;
 use crate::figure::{Dash, Figure, Item, Panel, Role, Shape, Symbol};
 use crate::geom::{Frame, Point, Vector};
-use crate::scene::Layer;
+use crate::scene::{Layer, letter_near_together};
 use crate::{angle::Angle, mechanism::Pose, mechanism::SliderCrank};
 
 /// Height of the mechanism panel with its scale notes.
@@ -130,16 +130,31 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     let of_loops = |d: &Panel| holds(d, frame.min()) && holds(d, frame.max());
     let details: Vec<Panel> = base.panels().iter().skip(1).cloned().collect();
     let lettered_there = details.iter().any(of_loops) && e_prime(&ctx.pose()).is_some();
-    let main = (drawn.items().iter())
-        .filter(|i| !(lettered_there && i.id == "label-E1"))
-        .cloned();
-    sheet.panel(panel.with_items(main));
+    // E′ copied in by C's pin joins C's letter, as the scene's points
+    // there do (E′ stood apart at a long rod's dead centre, led from past
+    // "C, E"); the main view then leaves its dot to the detail too, as it
+    // does the scene's points inside the detail's frame.
+    let mut joined_e1 = false;
+    let mut panels = Vec::new();
     for detail in details {
-        let items: Vec<Item> = match of_loops(&detail) {
-            true => in_detail.clone(),
-            false => Vec::new(),
-        };
-        sheet.panel(detail.with_items(items));
+        let copied = of_loops(&detail);
+        let mut all: Vec<Item> = detail.items().to_vec();
+        all.extend(copied.then(|| in_detail.clone()).into_iter().flatten());
+        letter_near_together(&mut all, "detail-", detail.transform().scale());
+        joined_e1 |= copied && !all.iter().any(|i| i.id == "detail-point-E1");
+        let joined = Panel::new(detail.id(), *detail.rect(), *detail.transform(), all);
+        panels.push(if detail.is_clipped() {
+            joined.clipped()
+        } else {
+            joined
+        });
+    }
+    let left =
+        |i: &&Item| (lettered_there && i.id == "label-E1") || (joined_e1 && i.id == "point-E1");
+    let main = (drawn.items().iter()).filter(|i| !left(i)).cloned();
+    sheet.panel(panel.with_items(main));
+    for detail in panels {
+        sheet.panel(detail);
     }
     // The band's legend is the mechanism's: more paper below it than
     // above, so that it does not read with the time graph.

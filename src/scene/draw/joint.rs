@@ -26,7 +26,7 @@ struct Marked {
 /// constructed points apart, and two dots side by side still show two
 /// points). The dots' markers and letters are taken out and their names
 /// added to the pin's letter.
-pub(super) fn letter_near_together(items: &mut Vec<Item>, prefix: &str, scale: f64) {
+pub(crate) fn letter_near_together(items: &mut Vec<Item>, prefix: &str, scale: f64) {
     let point_id = format!("{prefix}point-");
     let marked: Vec<Marked> = (items.iter())
         .filter_map(|it| {

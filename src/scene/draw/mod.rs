@@ -14,6 +14,7 @@ mod scales;
 mod torque;
 mod velocity;
 
+pub(crate) use joint::letter_near_together;
 pub(crate) use polygons::COINCIDE;
 pub(crate) use torque::torque_arrow;
 
