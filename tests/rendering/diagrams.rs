@@ -787,15 +787,7 @@ impl<'a> Polyline<'a> {
 
     /// The distance from `p` to segment `i`.
     fn to_segment(&self, p: P, i: usize) -> f64 {
-        let (a, b) = (self.points[i], self.points[i + 1]);
-        let ab = (b.0 - a.0, b.1 - a.1);
-        let len2 = ab.0 * ab.0 + ab.1 * ab.1;
-        let t = if len2 == 0.0 {
-            0.0
-        } else {
-            (((p.0 - a.0) * ab.0 + (p.1 - a.1) * ab.1) / len2).clamp(0.0, 1.0)
-        };
-        dist(p, (a.0 + ab.0 * t, a.1 + ab.1 * t))
+        common::segment_distance(p, self.points[i], self.points[i + 1])
     }
 
     /// The distance from `p` to the path where it is at most `reach`

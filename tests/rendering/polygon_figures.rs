@@ -4,7 +4,7 @@
 //! fifth review (docs/figures/review-2026-11e.md) where a reader misread
 //! them.
 
-use crate::common::{attr, bounds_of, num};
+use crate::common::{attr, bounds_of, num, segment_distance};
 use crate::plate::{Label, Plate};
 use slider_crank::catalogue::FigureOptions;
 use slider_crank::{Angle, FigureName, SliderCrank};
@@ -170,7 +170,7 @@ fn a_link_along_d_s_leg_is_seen_inside_or_beside_it() {
                 let t = f64::from(i) / 40.0;
                 let p = (a.0 + t * (b.0 - a.0), a.1 + t * (b.1 - a.1));
                 (sides.iter())
-                    .map(|(q, s)| to_segment(p, *q, *s))
+                    .map(|(q, s)| segment_distance(p, *q, *s))
                     .fold(f64::INFINITY, f64::min)
             })
             .filter(|d| *d < GAP)
@@ -187,7 +187,7 @@ fn a_link_along_d_s_leg_is_seen_inside_or_beside_it() {
                 })
                 .filter(|p| {
                     super::inversion_figures::within(&frame, *p)
-                        || (sides.iter()).any(|(q, s)| to_segment(*p, *q, *s) < GAP)
+                        || (sides.iter()).any(|(q, s)| segment_distance(*p, *q, *s) < GAP)
                 })
                 .count();
             assert!(
@@ -582,13 +582,6 @@ fn points_after(svg: &str, id: &str) -> Vec<(f64, f64)> {
     numbers.chunks(2).map(|p| (p[0], p[1])).collect()
 }
 
-/// The distance from `p` to the segment `a b`.
-fn to_segment(p: (f64, f64), a: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
-    let t = (((p.0 - a.0) * dx + (p.1 - a.1) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
-    (p.0 - a.0 - t * dx).hypot(p.1 - a.1 - t * dy)
-}
-
 #[test]
 fn omega_s_arc_keeps_off_the_rod_and_the_block() {
     // At l = 1.07 r, 270.92°, ω's arc half a radian after the crank ran
@@ -602,7 +595,7 @@ fn omega_s_arc_keeps_off_the_rod_and_the_block() {
     let mut parts: Vec<((f64, f64), (f64, f64))> = vec![(rod[0], rod[1])];
     parts.extend((0..block.len()).map(|k| (block[k], block[(k + 1) % block.len()])));
     let nearest = (arc.iter())
-        .flat_map(|&p| parts.iter().map(move |&(a, b)| to_segment(p, a, b)))
+        .flat_map(|&p| parts.iter().map(move |&(a, b)| segment_distance(p, a, b)))
         .fold(f64::INFINITY, f64::min);
     assert!(
         nearest >= 4.0,
@@ -716,7 +709,7 @@ fn run_over(a: ((f64, f64), (f64, f64)), b: ((f64, f64), (f64, f64))) -> f64 {
         .map(|i| (i as f64 + 0.5) / 100.0)
         .filter(|t| {
             let p = (a.0.0 + v.0 * t, a.0.1 + v.1 * t);
-            to_segment(p, b.0, b.1) < 3.0
+            segment_distance(p, b.0, b.1) < 3.0
         })
         .count();
     near as f64 / 100.0 * lv
@@ -871,7 +864,7 @@ fn a_coriolis_component_along_the_tangential_one_keeps_off_n() {
         let (n, k, a) = (at("n"), at("k"), at("a2"));
         let coriolis = format!("{pre}acceleration-coriolis");
         let (tail, head) = line_of(&svg, &coriolis);
-        let off = to_segment(n, tail, head);
+        let off = segment_distance(n, tail, head);
         assert!(
             off >= 3.0,
             "l = {rod} r, {deg}°: n {off:.1} units from k a′"
@@ -1269,10 +1262,10 @@ fn segments_apart(a: ((f64, f64), (f64, f64)), b: ((f64, f64), (f64, f64))) -> f
         return 0.0;
     }
     [
-        to_segment(a.0, b.0, b.1),
-        to_segment(a.1, b.0, b.1),
-        to_segment(b.0, a.0, a.1),
-        to_segment(b.1, a.0, a.1),
+        segment_distance(a.0, b.0, b.1),
+        segment_distance(a.1, b.0, b.1),
+        segment_distance(b.0, a.0, a.1),
+        segment_distance(b.1, a.0, a.1),
     ]
     .into_iter()
     .fold(f64::INFINITY, f64::min)
@@ -1321,7 +1314,7 @@ fn a_side_set_beside_another_starts_clear_of_the_side_before_it() {
         let apart = if from_n < 1.5 {
             // From n on: its head and its middle off o′n.
             let middle = (0.5 * (nad.0.0 + nad.1.0), 0.5 * (nad.0.1 + nad.1.1));
-            to_segment(nad.1, on.0, on.1).min(to_segment(middle, on.0, on.1))
+            segment_distance(nad.1, on.0, on.1).min(segment_distance(middle, on.0, on.1))
         } else {
             segments_apart(nad, on)
         };
@@ -1561,7 +1554,7 @@ fn a_side_does_not_run_through_another_point_of_its_polygon() {
     let line = points_after(&svg, "acceleration-coriolis");
     let n = (num(&svg, "point-n", "cx"), num(&svg, "point-n", "cy"));
     let (first, last) = (line[0], line[line.len() - 1]);
-    let off = to_segment(n, first, last);
+    let off = segment_distance(n, first, last);
     assert!(off >= 3.0, "n {off:.1} units from k a′");
 }
 
@@ -1726,7 +1719,7 @@ fn the_coriolis_notes_tell_apart_sides_on_one_line() {
 /// The distance from `p` to the closed outline through `points`.
 fn to_outline(p: (f64, f64), points: &[(f64, f64)]) -> f64 {
     (0..points.len())
-        .map(|i| to_segment(p, points[i], points[(i + 1) % points.len()]))
+        .map(|i| segment_distance(p, points[i], points[(i + 1) % points.len()]))
         .fold(f64::INFINITY, f64::min)
 }
 
@@ -2037,8 +2030,7 @@ fn a_folded_acceleration_polygon_draws_no_image_line_over_a_side() {
         let (tail, head) = crate::common::arrow_ends(&svg, "acceleration-c2b2");
         if element(&svg, "acceleration-a2b2").is_some() {
             let line = path(&svg, "acceleration-a2b2");
-            let along =
-                (line.iter()).all(|p| crate::common::segment_distance(*p, tail, head) < APART);
+            let along = (line.iter()).all(|p| segment_distance(*p, tail, head) < APART);
             assert!(!along, "{at}: b′a′ drawn along c′b′");
         }
     }

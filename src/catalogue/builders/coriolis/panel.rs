@@ -227,12 +227,10 @@ pub(super) fn window(
     // draw, lettered across o′a′ 15 units from its dot), where the detail
     // then still enlarges at least [`CROWD_ENLARGED`] times (on a page
     // 500 wide it enlarged it once, the box round the whole polygon).
-    let subject = [side.0, side.1];
-    closing
-        .filter(|c| !subject.contains(c) && crowder(points, *c, scale).is_some())
-        .map(|c| about(&[side.0, side.1, c]))
+    crowded_closing(points, side, closing, scale)
+        .map(|(c, _)| about(&[side.0, side.1, c]))
         .filter(|w| w.magnification >= CROWD_ENLARGED)
-        .or_else(|| Some(about(&subject)))
+        .or_else(|| Some(about(&[side.0, side.1])))
 }
 
 /// Where the subject `side` reads in the polygon: the detail of the
@@ -251,10 +249,22 @@ fn crowd_window(
     scale: f64,
     area: (f64, f64),
 ) -> Option<Window> {
-    let c = closing.filter(|c| *c != side.0 && *c != side.1)?;
-    let near = crowder(points, c, scale)?;
+    let (c, near) = crowded_closing(points, side, closing, scale)?;
     let w = window_about(points, (near, c), &[near, c], (closing, scale, area));
     (w.magnification >= CROWD_ENLARGED).then_some(w)
+}
+
+/// The point the polygon closes at (`closing`), where it is not an end
+/// of the subject `side`, and the point of `points` nearest it that
+/// crowds it ([`crowder`]); `None` where none does.
+fn crowded_closing(
+    points: &[Lettered],
+    side: Subject,
+    closing: Option<Vector>,
+    scale: f64,
+) -> Option<(Vector, Vector)> {
+    let c = closing.filter(|c| *c != side.0 && *c != side.1)?;
+    Some((c, crowder(points, c, scale)?))
 }
 
 /// The point of `points` nearest `c` that crowds it on the page at
