@@ -1,60 +1,63 @@
-//! The Python package's test build shares the root's compiled
-//! dependencies (`.ci/run` builds the wheel with python/Cargo.toml's `dev`
-//! profile into the root's target directory): that holds only while the
-//! two profiles build each dependency with the same settings, which this
-//! suite checks from the two manifests. (The features the two turn on are
-//! aligned by the root's `[build-dependencies]` and dev-dependencies;
-//! docs/design.md, "Python package".)
+//! The Python package's test build shares the root's compiled units, the
+//! library among them (`.ci/run` builds the wheel with the test build's
+//! profile and the library's default features into the root's target
+//! directory): that holds only while the package is a member of the
+//! root's workspace, with no profile of its own, and the wheel's profiles
+//! are the root's, which this suite checks from the manifests. (The
+//! features the two turn on in shared dependencies are aligned by the
+//! root's `[build-dependencies]` and dev-dependencies; docs/design.md,
+//! "Python package".)
 
-use std::collections::BTreeMap;
-
-/// The `[profile.dev]` of a manifest: its own settings and its package
-/// tables by package name.
-fn dev_profile(manifest: &str) -> (toml::Table, BTreeMap<String, toml::Value>) {
-    let text = std::fs::read_to_string(manifest).unwrap();
-    let doc: toml::Table = toml::from_str(&text).unwrap();
-    let mut dev = doc["profile"]["dev"].as_table().unwrap().clone();
-    let packages = dev
-        .remove("package")
-        .and_then(|p| p.as_table().cloned())
-        .unwrap_or_default();
-    (dev, packages.into_iter().collect())
-}
-
-/// The packages named in a lock file.
-fn locked(lock: &str) -> Vec<String> {
-    let text = std::fs::read_to_string(lock).unwrap();
-    let doc: toml::Table = toml::from_str(&text).unwrap();
-    doc["package"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|p| p["name"].as_str().unwrap().to_string())
-        .collect()
+/// A TOML file of the repository, parsed.
+fn manifest(path: &str) -> toml::Table {
+    let text = std::fs::read_to_string(path).unwrap();
+    toml::from_str(&text).unwrap()
 }
 
 #[test]
-fn the_python_package_builds_the_shared_dependencies_as_the_root_does() {
-    let (root, root_packages) = dev_profile("Cargo.toml");
-    let (python, python_packages) = dev_profile("python/Cargo.toml");
-    assert_eq!(root, python, "[profile.dev]'s own settings");
-    let in_python = locked("python/Cargo.lock");
-    for (name, settings) in &root_packages {
-        if name == "*" || in_python.contains(name) {
-            assert_eq!(
-                python_packages.get(name),
-                Some(settings),
-                "[profile.dev.package.{name:?}] in python/Cargo.toml"
-            );
-        }
-    }
-    // The library itself is compiled anew for the wheel (other features):
-    // it alone may differ, and every other table is the root's.
-    for name in python_packages.keys() {
-        assert!(
-            root_packages.contains_key(name) || name == "slider-crank",
-            "[profile.dev.package.{name:?}] in python/Cargo.toml only"
-        );
-    }
-    assert!(root_packages.len() > 5 && in_python.contains(&"syn".to_string()));
+fn the_python_package_is_a_member_of_the_root_workspace_without_profiles_of_its_own() {
+    let root = manifest("Cargo.toml");
+    let workspace = root["workspace"].as_table().unwrap();
+    let members = workspace["members"].as_array().unwrap();
+    assert!(members.iter().any(|m| m.as_str() == Some("python")));
+    // The root crate alone is the default member: `cargo test` and
+    // `cargo clippy --all-targets` at the root never build the bindings.
+    assert!(!workspace.contains_key("default-members"));
+    let python = manifest("python/Cargo.toml");
+    // A table of either would make the package a workspace of its own or
+    // be ignored (Cargo reads a member's profiles from the root only).
+    assert!(
+        !python.contains_key("workspace"),
+        "[workspace] in python/Cargo.toml"
+    );
+    assert!(
+        !python.contains_key("profile"),
+        "[profile] in python/Cargo.toml"
+    );
+    assert!(
+        !std::path::Path::new("python/Cargo.lock").exists(),
+        "python/Cargo.lock: the workspace's lock file is the root's"
+    );
+}
+
+#[test]
+fn the_wheels_profiles_are_the_roots() {
+    let profiles = manifest("Cargo.toml")["profile"]
+        .as_table()
+        .unwrap()
+        .clone();
+    let pyproject = manifest("python/pyproject.toml");
+    let wheel = pyproject["tool"]["maturin"]["profile"].as_str().unwrap();
+    let table = profiles[wheel].as_table().unwrap();
+    assert_eq!(table["inherits"].as_str(), Some("release"));
+    assert_eq!(table["lto"].as_str(), Some("thin"));
+    // The wheel `.ci/run` tests: the test build's profile and the
+    // library's default features, or the library is compiled again.
+    let ci = std::fs::read_to_string(".ci/run").unwrap();
+    let args = (ci.lines())
+        .find_map(|l| l.trim().strip_prefix("MATURIN_PEP517_ARGS=\""))
+        .unwrap();
+    assert!(args.starts_with("--profile test "), "{args}");
+    assert!(args.contains("slider-crank/default"), "{args}");
+    assert!(profiles.contains_key("test"));
 }

@@ -260,15 +260,15 @@ fn degenerate_poses_draw_cleanly_inside_the_page() {
         SliderCrank::in_line(1e9, 4e9).unwrap(),
         SliderCrank::in_line(1.0, 1e6).unwrap(),
     ];
-    // Some 170 figures of every layer: built on two threads (the suite's
-    // longest test, which the others finished beside on one core).
+    // Some 80 figures of every layer, each style and each hand at every
+    // pose (the two styles' text sizes and the mirror's sides are what
+    // move a drawing towards the page's edge; all four pairs made this
+    // the suite's longest test, twice as long): built on two threads.
     let mut poses = Vec::new();
     for m in mechanisms {
         for deg in [0.0, 90.0, 180.0, 270.0, 89.9, 45.0] {
-            for style in [Style::Textbook, Style::Handout] {
-                for mirror in [false, true] {
-                    poses.push((m, deg, style, mirror));
-                }
+            for (style, mirror) in [(Style::Textbook, false), (Style::Handout, true)] {
+                poses.push((m, deg, style, mirror));
             }
         }
     }
