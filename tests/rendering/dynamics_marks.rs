@@ -307,3 +307,69 @@ fn ng_s_side_thrust_clears_the_guide_s_hatching() {
         );
     }
 }
+
+/// Ng's v_c where it shares F_c's sense: at l = 3 r, e = −1.29 r,
+/// 269.53° it left the pin along the dashed parallel to the stroke from
+/// which φ is measured, just above it, through β's arc, its letter
+/// pushed off up by the crank circle. It comes to the pin from the other
+/// side, clear of φ's reference and β's arc, its letter by its tail.
+#[test]
+fn ng_s_crank_pin_velocity_keeps_off_phi_s_reference_and_beta_s_arc() {
+    let plate = plate_at("ng-fig-1-torque", 3.0, -1.29, 269.53);
+    let main = &plate.panels[0];
+    let shaft = segs(main, "velocity-vc");
+    let s = *shaft.first().expect("no v_c");
+    let near = segs(main, "line-parallel-B")
+        .iter()
+        .flat_map(|p| [p.distance_to(s.0), p.distance_to(s.1)])
+        .fold(f64::INFINITY, f64::min);
+    assert!(near >= 4.0, "v_c's shaft {near:.1} from φ's reference");
+    let beta = segs(main, "angle-beta");
+    assert!(!beta.is_empty(), "no β");
+    assert!(
+        beta.iter().all(|b| !b.meets(s)),
+        "v_c's shaft runs through β's arc"
+    );
+    let name = label(main, "value-vc");
+    let by = name.rect.distance_to_seg(s);
+    assert!(by <= name.font_size, "v_c's letter {by:.1} from its arrow");
+}
+
+/// Ng's v_c at a dead centre of a short rod (l = 1.04 r, 0° and 180°;
+/// and 1° past the first): set off F_c's line on the rod's side, it ran
+/// up through the upper guide's hatching. It keeps to the crank's side,
+/// clear of the guides.
+#[test]
+fn ng_s_crank_pin_velocity_keeps_off_the_guides_at_a_dead_centre() {
+    for degrees in [0.0, 1.0, 180.0] {
+        let plate = plate_at("ng-fig-1-torque", 1.04, 0.0, degrees);
+        let main = &plate.panels[0];
+        let vc = segs(main, "velocity-vc");
+        assert!(!vc.is_empty(), "no v_c at {degrees}°");
+        let mut guides = segs(main, "hatch-guide-upper");
+        guides.extend(segs(main, "hatch-guide-lower"));
+        guides.extend(segs(main, "guide-upper"));
+        guides.extend(segs(main, "guide-lower"));
+        assert!(!guides.is_empty(), "no guides at {degrees}°");
+        let near = vc
+            .iter()
+            .flat_map(|v| guides.iter().map(move |g| seg_gap(v, g)))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near >= 2.0, "v_c {near:.1} from the guides at {degrees}°");
+    }
+}
+
+/// The least distance between two segments on the page.
+fn seg_gap(a: &Seg, b: &Seg) -> f64 {
+    if a.meets(b) {
+        return 0.0;
+    }
+    [
+        a.distance_to(b.0),
+        a.distance_to(b.1),
+        b.distance_to(a.0),
+        b.distance_to(a.1),
+    ]
+    .into_iter()
+    .fold(f64::INFINITY, f64::min)
+}
