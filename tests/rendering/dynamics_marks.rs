@@ -404,3 +404,40 @@ fn an_inertia_force_drawn_has_a_shaft() {
         }
     }
 }
+
+/// The detail of C and G letters them from their own places, each by its
+/// own letter alone, G with a dot of its own, whatever the panel it
+/// copies joined there (the construction's detail letters them "C, G"
+/// where CG is short).
+#[test]
+fn the_cg_detail_letters_c_and_g_each_alone() {
+    use crate::common::{attr, tag};
+    for (rod, offset, degrees) in [
+        (38.0, 0.0, 90.09),
+        (54.9, 0.0, 270.56),
+        (2.14, -0.923, 269.19),
+    ] {
+        let at = format!("at l = {rod}, e = {offset}, {degrees}°");
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+        options.angle = Some(Angle::deg(degrees));
+        let f = FigureName::from_name("inertia-force")
+            .unwrap()
+            .figure(&options);
+        let svg = to_svg(&f.unwrap());
+        assert!(svg.contains("id=\"panel-cg\""), "no detail of C and G {at}");
+        let ids: Vec<&str> = svg
+            .split("id=\"cg-label-")
+            .skip(1)
+            .map(|s| &s[..s.find('"').unwrap()])
+            .collect();
+        assert_eq!(ids, ["C", "G"], "the detail's letters {at}");
+        for (id, name) in [("cg-label-C", "C"), ("cg-label-G", "G")] {
+            let t = tag(&svg, id).unwrap_or_else(|| panic!("no {id} {at}"));
+            let start = svg.find(t).unwrap() + t.len() + 1;
+            let text = &svg[start..start + svg[start..].find("</text>").unwrap()];
+            assert_eq!(text, name, "{id} reads {text} {at}");
+        }
+        assert!(attr(&svg, "cg-point-G", "cx").is_some(), "no dot at G {at}");
+    }
+}
