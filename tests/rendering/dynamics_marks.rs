@@ -374,37 +374,6 @@ fn seg_gap(a: &Seg, b: &Seg) -> f64 {
     .fold(f64::INFINITY, f64::min)
 }
 
-/// The inertia force on the main view is an arrowhead with a shaft at
-/// least as long, or it is left out and the notes say so: at l = 2.14 r,
-/// e = −0.923 r, 269.19° (CG 7.7 units) it was a bare arrowhead on the
-/// block's corner, read as a flag.
-#[test]
-fn an_inertia_force_drawn_has_a_shaft() {
-    use crate::common::arrow_ends;
-    let said = "too short to draw at the cross-head";
-    for (rod, offset, degrees) in [
-        (2.14, -0.923, 269.19),
-        (2.14, -0.923, 89.55),
-        (1.08, 0.0, 0.0),
-    ] {
-        let at = format!("at l = {rod}, e = {offset}, {degrees}°");
-        let mut options = FigureOptions::default();
-        options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
-        options.angle = Some(Angle::deg(degrees));
-        let f = FigureName::from_name("inertia-force")
-            .unwrap()
-            .figure(&options);
-        let svg = to_svg(&f.unwrap());
-        if svg.contains("id=\"force-inertia\"") {
-            let (tail, tip) = arrow_ends(&svg, "force-inertia");
-            let long = distance(tail, tip);
-            assert!(long >= 20.0, "F_i {long:.1} long {at}");
-        } else {
-            assert!(svg.contains(said), "F_i left out, nothing said {at}");
-        }
-    }
-}
-
 /// The detail of C and G letters them from their own places, each by its
 /// own letter alone, G with a dot of its own, whatever the panel it
 /// copies joined there (the construction's detail letters them "C, G"

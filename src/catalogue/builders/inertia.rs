@@ -50,10 +50,8 @@ const ROOM: f64 = 12.0;
 const LONG_ARROW: f64 = 5.0 * ROOM;
 
 /// An arrow shorter than this on the page (page units) is left out: the
-/// notes give its value. Its head and a shaft as long: shorter, it was a
-/// bare arrowhead on the block's corner, read as a flag, not a force
-/// (l = 2.14 r, e = −0.923 r, 269.19°: CG 7.7 units on the main view).
-const SHORTEST: f64 = 2.0 * ARROW_LENGTH;
+/// notes give its value.
+const SHORTEST: f64 = 2.0;
 
 /// The engine's forces at the figure's pose.
 struct Forces {
