@@ -307,3 +307,106 @@ fn ng_s_side_thrust_clears_the_guide_s_hatching() {
         );
     }
 }
+
+/// Ng's v_c where it shares F_c's sense: at l = 3 r, e = −1.29 r,
+/// 269.53° it left the pin along the dashed parallel to the stroke from
+/// which φ is measured, just above it, through β's arc, its letter
+/// pushed off up by the crank circle. It comes to the pin from the other
+/// side, clear of φ's reference and β's arc, its letter by its tail.
+#[test]
+fn ng_s_crank_pin_velocity_keeps_off_phi_s_reference_and_beta_s_arc() {
+    let plate = plate_at("ng-fig-1-torque", 3.0, -1.29, 269.53);
+    let main = &plate.panels[0];
+    let shaft = segs(main, "velocity-vc");
+    let s = *shaft.first().expect("no v_c");
+    let near = segs(main, "line-parallel-B")
+        .iter()
+        .flat_map(|p| [p.distance_to(s.0), p.distance_to(s.1)])
+        .fold(f64::INFINITY, f64::min);
+    assert!(near >= 4.0, "v_c's shaft {near:.1} from φ's reference");
+    let beta = segs(main, "angle-beta");
+    assert!(!beta.is_empty(), "no β");
+    assert!(
+        beta.iter().all(|b| !b.meets(s)),
+        "v_c's shaft runs through β's arc"
+    );
+    let name = label(main, "value-vc");
+    let by = name.rect.distance_to_seg(s);
+    assert!(by <= name.font_size, "v_c's letter {by:.1} from its arrow");
+}
+
+/// Ng's v_c at a dead centre of a short rod (l = 1.04 r, 0° and 180°;
+/// and 1° past the first): set off F_c's line on the rod's side, it ran
+/// up through the upper guide's hatching. It keeps to the crank's side,
+/// clear of the guides.
+#[test]
+fn ng_s_crank_pin_velocity_keeps_off_the_guides_at_a_dead_centre() {
+    for degrees in [0.0, 1.0, 180.0] {
+        let plate = plate_at("ng-fig-1-torque", 1.04, 0.0, degrees);
+        let main = &plate.panels[0];
+        let vc = segs(main, "velocity-vc");
+        assert!(!vc.is_empty(), "no v_c at {degrees}°");
+        let mut guides = segs(main, "hatch-guide-upper");
+        guides.extend(segs(main, "hatch-guide-lower"));
+        guides.extend(segs(main, "guide-upper"));
+        guides.extend(segs(main, "guide-lower"));
+        assert!(!guides.is_empty(), "no guides at {degrees}°");
+        let near = vc
+            .iter()
+            .flat_map(|v| guides.iter().map(move |g| seg_gap(v, g)))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near >= 2.0, "v_c {near:.1} from the guides at {degrees}°");
+    }
+}
+
+/// The least distance between two segments on the page.
+fn seg_gap(a: &Seg, b: &Seg) -> f64 {
+    if a.meets(b) {
+        return 0.0;
+    }
+    [
+        a.distance_to(b.0),
+        a.distance_to(b.1),
+        b.distance_to(a.0),
+        b.distance_to(a.1),
+    ]
+    .into_iter()
+    .fold(f64::INFINITY, f64::min)
+}
+
+/// The detail of C and G letters them from their own places, each by its
+/// own letter alone, G with a dot of its own, whatever the panel it
+/// copies joined there (the construction's detail letters them "C, G"
+/// where CG is short).
+#[test]
+fn the_cg_detail_letters_c_and_g_each_alone() {
+    use crate::common::{attr, tag};
+    for (rod, offset, degrees) in [
+        (38.0, 0.0, 90.09),
+        (54.9, 0.0, 270.56),
+        (2.14, -0.923, 269.19),
+    ] {
+        let at = format!("at l = {rod}, e = {offset}, {degrees}°");
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(1.0, rod, offset).unwrap());
+        options.angle = Some(Angle::deg(degrees));
+        let f = FigureName::from_name("inertia-force")
+            .unwrap()
+            .figure(&options);
+        let svg = to_svg(&f.unwrap());
+        assert!(svg.contains("id=\"panel-cg\""), "no detail of C and G {at}");
+        let ids: Vec<&str> = svg
+            .split("id=\"cg-label-")
+            .skip(1)
+            .map(|s| &s[..s.find('"').unwrap()])
+            .collect();
+        assert_eq!(ids, ["C", "G"], "the detail's letters {at}");
+        for (id, name) in [("cg-label-C", "C"), ("cg-label-G", "G")] {
+            let t = tag(&svg, id).unwrap_or_else(|| panic!("no {id} {at}"));
+            let start = svg.find(t).unwrap() + t.len() + 1;
+            let text = &svg[start..start + svg[start..].find("</text>").unwrap()];
+            assert_eq!(text, name, "{id} reads {text} {at}");
+        }
+        assert!(attr(&svg, "cg-point-G", "cx").is_some(), "no dot at G {at}");
+    }
+}

@@ -303,11 +303,12 @@ fn cg_detail(
     let mut kept = Vec::new();
     for item in shown.items() {
         let name = own(&item.id);
+        // C's and G's letters, and G's dot, are the detail's own (drawn
+        // below): the panel's letter there may join them ("*C*, *G*").
         let keep = match &item.shape {
-            Shape::Label { anchor, .. } => {
-                name.starts_with("label-") && (at(*anchor, c) || at(*anchor, g))
-            }
+            Shape::Label { .. } => false,
             Shape::Bearing { .. } | Shape::Block { .. } | Shape::Hatch { .. } => false,
+            Shape::Dot { centre } if at(*centre, g) => false,
             Shape::Pin { centre } | Shape::Dot { centre } => seen.contains(*centre),
             _ => {
                 !(name.starts_with("offpage")
@@ -324,7 +325,7 @@ fn cg_detail(
             kept.push(item);
         }
     }
-    apart_again(&mut kept, g);
+    kept.extend(own_letters(c, g));
     for item in kept {
         plot.push(item);
     }
@@ -555,36 +556,29 @@ fn inertia_arrow(
     ]
 }
 
-/// The dot and letter of G where the construction's detail joined them
-/// to C's pin ("*C*, *G*": its dot ran into the pin there), for the
-/// detail of C and G that sets them apart (its `items`): C's letter
-/// again alone, G's dot and a letter of its own, like C's.
-fn apart_again(items: &mut Vec<Item>, g: Point) {
-    if items.iter().any(|it| it.id == "cg-point-G") {
-        return;
-    }
-    let Some(c) = items.iter_mut().find(|it| it.id == "cg-label-C") else {
-        return;
+/// The letters of C and G and G's dot for their detail, each from its
+/// own place: the panel the detail copies may letter them together
+/// ("*C*, *G*", G's dot within C's pin), as the construction's detail
+/// does where CG is short.
+fn own_letters(c: Point, g: Point) -> [Item; 3] {
+    let letter = |id: &str, at: Point, name: &str| {
+        Item::new(
+            id,
+            Role::Label,
+            Shape::Label {
+                anchor: at,
+                text: RichText::parse(name),
+                size: TextSize::Letter,
+                toward: None,
+                line: None,
+            },
+        )
     };
-    let mut own_g = c.clone();
-    own_g.id = "cg-label-G".to_string();
-    if let (
-        Shape::Label { text, .. },
-        Shape::Label {
-            text: t, anchor, ..
-        },
-    ) = (&mut c.shape, &mut own_g.shape)
-    {
-        *text = RichText::parse("*C*");
-        *t = RichText::parse("*G*");
-        *anchor = g;
-    }
-    items.push(Item::new(
-        "cg-point-G",
-        Role::Construction,
-        Shape::Dot { centre: g },
-    ));
-    items.push(own_g);
+    [
+        letter("cg-label-C", c, "*C*"),
+        Item::new("cg-point-G", Role::Construction, Shape::Dot { centre: g }),
+        letter("cg-label-G", g, "*G*"),
+    ]
 }
 
 /// Beyond the crank effort's arc radius, the page room F_i's shaft keeps
