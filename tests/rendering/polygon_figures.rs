@@ -2039,3 +2039,18 @@ fn a_folded_acceleration_polygon_draws_no_image_line_over_a_side() {
     let svg = svg(FigureName::VelocityAccelerationPolygons, 4.0, 0.0, 45.0);
     assert!(element(&svg, "acceleration-a2b2").is_some());
 }
+
+#[test]
+fn c_prime_q_prime_beside_c_prime_b_prime_is_drawn() {
+    // The twenty-fifth review: at l = 35.8 r, 269.7° and l = 44.4 r,
+    // 269.73° c′a′ is too short to be drawn and q′ lies on c′b′; c′q′,
+    // set beside c′b′, was left out as if it ran over c′a′, q′'s dot left
+    // on c′b′ with no vector though the notes give c′q′ = 4.003 ft (3).
+    for (rod, deg) in [(35.8, 269.7), (44.4, 269.73)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        assert!(
+            element(&svg, "acceleration-c2q2").is_some(),
+            "l = {rod}, {deg}°: c′q′ not drawn"
+        );
+    }
+}

@@ -638,8 +638,12 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         // letters: q′ on the line and the notes' c′q′ read it.
         // A needle's c′q′ is stacked beside the others, clear of the
         // letters ([`stacked`]).
+        // Where c′a′ is too short to be drawn (near 90°), c′q′ set
+        // beside c′b′ is drawn: q′'s dot was left on c′b′ with no vector
+        // of its own, though the notes give c′q′.
         let beside = oq.0.norm() > 0.0 || oq.1.norm() > 0.0;
-        if !beside || needle {
+        let result_drawn = canvas.page((p.a - p.o).norm()) >= MIN_ARROW;
+        if !beside || needle || !result_drawn {
             vector(
                 canvas,
                 format!("acceleration-{o}q2"),
