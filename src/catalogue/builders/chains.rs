@@ -299,14 +299,14 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
                 .map(|(mid, m)| About::Pins(mid + dx, m)),
         };
         let detail = match about {
-            Some(about) => Some(crank_detail(
+            Some(about) => crank_detail(
                 ctx,
                 (&chains, &layout),
                 &frame,
                 map,
                 captions_end,
                 (k, suffix, about),
-            )?),
+            )?,
             None => None,
         };
         let mut s = Canvas::new(map, frame).suffixed(suffix);
@@ -435,7 +435,7 @@ fn crank_detail(
     map: crate::figure::PageFromWorld,
     top: f64,
     (k, suffix, about): (usize, &'static str, About),
-) -> Result<(Frame, Plot)> {
+) -> Result<Option<(Frame, Plot)>> {
     let scale = map.scale();
     let (x0, x1, w, side) = detail_area(frame, map);
     let r = chains.m.crank() * scale;
@@ -467,10 +467,42 @@ fn crank_detail(
     // The crowded pins' detail leaves the crank's letter to the panel.
     let crank_letter = matches!(about, About::Crank);
     panel(&mut s, chains, layout, block, (k, crank_letter, true));
-    for item in s.finish().0 {
+    let items = s.finish().0;
+    if !crank_letter && links_cross_guides(&items) {
+        return Ok(None);
+    }
+    for item in items {
         plot.push(item);
     }
-    Ok((region, plot))
+    Ok(Some((region, plot)))
+}
+
+/// Whether the crank of `items` crosses a guide of the slot or its
+/// hatching's line: a crowded pins' detail where the crank leaves C
+/// under the block across the slot (l = 1.05 r, 120° to 140°) would
+/// draw it through the guide, which the main view draws open there; it
+/// is left out, the notes saying the block stands over C.
+fn links_cross_guides(items: &[Item]) -> bool {
+    let segs = |it: &Item| -> Vec<Seg> {
+        match &it.shape {
+            Shape::Polyline { points, .. } => points
+                .iter()
+                .copied()
+                .zip(points.iter().copied().skip(1))
+                .collect(),
+            Shape::Hatch { from, to, .. } => vec![(*from, *to)],
+            _ => Vec::new(),
+        }
+    };
+    let links: Vec<Seg> = (items.iter())
+        // The rod enters the block through its edge on the guide's line.
+        .filter(|it| it.role == Role::Link && it.id.contains("link-crank"))
+        .flat_map(segs)
+        .collect();
+    (items.iter())
+        .filter(|it| it.id.contains("guide-") || it.id.contains("hatch-"))
+        .flat_map(segs)
+        .any(|(a, b)| (links.iter()).any(|&(p, q)| crossing(a, b, p, q).is_some()))
 }
 
 /// Each panel's caption broken to the panel's width `room` at its own
