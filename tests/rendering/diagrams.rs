@@ -2572,3 +2572,44 @@ fn a_dashed_load_curve_runs_on_where_its_pieces_meet() {
         }
     }
 }
+
+#[test]
+fn fig_64_e_prime_on_b_s_pin_is_lettered_with_b() {
+    // The review of l = 1.07 r, 90.06° (2.5): E′, where CE is nearly the
+    // crank, lay under B's pin, and its letter stood on the dashed line
+    // E E″ with no dot of its own. An E′ whose dot runs into a pin of the
+    // main view (within 6 units) is named in that pin's letter.
+    for (rod, deg) in [(1.07, 90.06), (1.07, 90.0), (1.07, 89.06), (1.12, 90.06)] {
+        let svg = super::polygon_figures::svg(FigureName::Fig64VelocityDiagrams, rod, 0.0, deg);
+        let at = format!("l = {rod}, {deg}°");
+        let b = (num(&svg, "point-B", "cx"), num(&svg, "point-B", "cy"));
+        let text = |id: &str| {
+            let start = svg
+                .find(&format!("id=\"{id}\""))
+                .unwrap_or_else(|| panic!("{at}: no {id}"));
+            let end = start + svg[start..].find("</text>").unwrap_or(0);
+            read_text(&format!("<{}", &svg[start..end]))
+        };
+        match tag(&svg, "point-E1") {
+            Some(_) => {
+                let e1 = (num(&svg, "point-E1", "cx"), num(&svg, "point-E1", "cy"));
+                let d = (e1.0 - b.0).hypot(e1.1 - b.1);
+                assert!(
+                    d >= 6.0,
+                    "{at}: E′'s dot {d:.1} from B's pin, lettered apart"
+                );
+            }
+            None => {
+                assert!(
+                    tag(&svg, "label-E1").is_none(),
+                    "{at}: E′ lettered with no dot"
+                );
+                let joint = text("label-B");
+                assert!(
+                    joint.contains('ʹ') || joint.contains('′'),
+                    "{at}: B's letter {joint:?} leaves out E′"
+                );
+            }
+        }
+    }
+}
