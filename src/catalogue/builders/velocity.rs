@@ -151,19 +151,8 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     }
     let left =
         |i: &&Item| (lettered_there && i.id == "label-E1") || (joined_e1 && i.id == "point-E1");
-    let mut main: Vec<Item> = panel.items().to_vec();
-    main.extend((drawn.items().iter()).filter(|i| !left(i)).cloned());
-    // E′ on a pin of the main view (at B where CE is nearly the crank,
-    // about 90° at a short rod) joins that pin's letter too: set by the
-    // placer beside B's pin, it stood on the dashed line E E″ with no dot
-    // of its own to name (l = 1.07 r, 90.06°).
-    letter_near_together(&mut main, "", panel.transform().scale());
-    let joined = Panel::new(panel.id(), *panel.rect(), *panel.transform(), main);
-    sheet.panel(if panel.is_clipped() {
-        joined.clipped()
-    } else {
-        joined
-    });
+    let main = (drawn.items().iter()).filter(|i| !left(i)).cloned();
+    sheet.panel(panel.with_items(main));
     for detail in panels {
         sheet.panel(detail);
     }
