@@ -432,8 +432,8 @@ fn every_link_of_every_panel_is_drawn_at_least_40_units_long() {
     // At l = 53 r the crank a of each panel was a speck of two pin
     // circles, no enlargement; at l = 30 r, 90° it could not be seen in
     // any panel. Each link is drawn 40 units long or more, in the panel
-    // or in its detail; a crank lettered in its detail is lettered there
-    // only, nearer its own link than the rod.
+    // or in its detail; a crank is lettered once, in its detail where
+    // the panel draws it shorter, nearer its own link than the rod.
     const SEEN: f64 = 40.0;
     let mut details = 0;
     for (rod, offset, deg, width) in ENGINES.iter().map(|&(l, e, d)| (l, e, d, None)).chain(LONG) {
@@ -458,12 +458,24 @@ fn every_link_of_every_panel_is_drawn_at_least_40_units_long() {
             let Some(_) = crate::common::tag(&svg, &format!("detail-link-crank-{suffix}")) else {
                 continue;
             };
-            assert!(
-                text_centre(&plate, &format!("label-link-a-{suffix}")).is_none(),
-                "{what}: ({suffix}) a lettered in the panel and in its detail"
-            );
-            let p = text_centre(&plate, &format!("detail-label-link-a-{suffix}"))
-                .unwrap_or_else(|| panic!("{what}: ({suffix}) the detail's crank unlettered"));
+            // Lettered once: in the panel (a detail of crowded pins, the
+            // crank seen in the panel) or in its detail.
+            let panel = text_centre(&plate, &format!("label-link-a-{suffix}"));
+            let detail = text_centre(&plate, &format!("detail-label-link-a-{suffix}"));
+            let p = match (panel, detail) {
+                (Some(_), None)
+                    if drawn_length(&svg, &format!("link-crank-{suffix}"))
+                        .is_some_and(|l| l >= SEEN) =>
+                {
+                    continue;
+                }
+                (None, Some(p)) => p,
+                (panel, detail) => panic!(
+                    "{what}: ({suffix}) a lettered in the panel {}, in its detail {}",
+                    panel.is_some(),
+                    detail.is_some()
+                ),
+            };
             // Each link as drawn (the rod beside the crank where it lies
             // along it, turned in to its pins).
             let by = |id: &str| {
@@ -807,4 +819,62 @@ fn the_block_over_the_crank_centre_is_lettered_away_from_its_bearing() {
         }
     }
     assert!(checked > 0, "no block over C checked");
+}
+
+#[test]
+fn the_crank_centre_and_the_rod_s_end_crowded_stand_apart_in_a_detail() {
+    // The review of l = 1.03 r, 180° (2.5): in (a) the crank centre's
+    // pin and the b–c pin merged under one ground mark, in (b) and (c)
+    // the block stood over the crank centre, and no detail showed them.
+    // Where C and A stand nearer than two em (34 units) on the page, each
+    // panel has a detail that draws them twice as far apart at least,
+    // the block of (b) and (c) drawn there.
+    for (rod, offset, deg) in [
+        (1.03, 0.0, 180.0),
+        (1.03, 0.0, 179.0),
+        (1.08, 0.0, 180.0),
+        (1.03, 0.0, 90.89),
+        (1.06, 0.0, 180.0),
+    ] {
+        let svg = svg(FIG, rod, offset, deg);
+        let at = format!("l = {rod}, e = {offset}, {deg}°");
+        let centre = |id: &str| {
+            let cx: f64 = crate::common::attr(&svg, id, "cx")?.parse().ok()?;
+            let cy: f64 = crate::common::attr(&svg, id, "cy")?.parse().ok()?;
+            Some((cx, cy))
+        };
+        let gap = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).hypot(p.1 - q.1);
+        let mut crowded = 0;
+        for suffix in ["a", "b", "c"] {
+            let (Some(c), Some(a)) = (
+                centre(&format!("pin-C-{suffix}")),
+                centre(&format!("pin-A-{suffix}")),
+            ) else {
+                panic!("{at}: ({suffix}) has no pins C and A");
+            };
+            let main = gap(c, a);
+            if main >= 34.0 {
+                continue;
+            }
+            crowded += 1;
+            let (Some(dc), Some(da)) = (
+                centre(&format!("detail-pin-C-{suffix}")),
+                centre(&format!("detail-pin-A-{suffix}")),
+            ) else {
+                panic!("{at}: C and A {main:.1} apart in ({suffix}), no detail draws them");
+            };
+            let drawn = gap(dc, da);
+            assert!(
+                drawn >= 2.0 * main,
+                "{at}: C and A {main:.1} apart in ({suffix}), {drawn:.1} in its detail"
+            );
+            if suffix != "a" {
+                assert!(
+                    crate::common::tag(&svg, &format!("detail-block-slider-{suffix}")).is_some(),
+                    "{at}: ({suffix})'s detail leaves out the block"
+                );
+            }
+        }
+        assert!(crowded > 0, "{at}: C and A read apart in every panel");
+    }
 }

@@ -293,16 +293,21 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             Point::new(layout.x0 - layout.pad + dx.x, shown.min().y),
             Point::new(layout.x0 + layout.width + layout.pad + dx.x, shown.max().y),
         );
-        let detail = match enlarged {
-            true => Some(crank_detail(
+        let about = match enlarged {
+            true => Some(About::Crank),
+            false => crowded(&chains, k, map.scale(), detail_area(&frame, map).3)
+                .map(|(mid, m)| About::Pins(mid + dx, m)),
+        };
+        let detail = match about {
+            Some(about) => crank_detail(
                 ctx,
                 (&chains, &layout),
                 &frame,
                 map,
                 captions_end,
-                (k, suffix),
-            )?),
-            false => None,
+                (k, suffix, about),
+            )?,
+            None => None,
         };
         let mut s = Canvas::new(map, frame).suffixed(suffix);
         let (key, panel_centres) = panel(&mut s, &chains, &layout, block, (k, !enlarged, false));
@@ -354,41 +359,103 @@ const DETAIL_SIZE: (f64, f64) = (200.0, 170.0);
 /// Room between the captions and the details below them, page units.
 const DETAIL_GAP: f64 = 10.0;
 
-/// Panel `k`'s detail of the crank (its `frame` on the page by `map`),
-/// below `top`: the world region it enlarges, and its plot with the
-/// panel drawn again there, the crank lettered. The magnification is a
-/// round one that draws the crank circle within the panel's width, at
-/// least [`CRANK_ENLARGED`] in radius where the panel gives room.
+/// A panel's detail on the page below its `frame` (drawn by `map`): the
+/// panel's left and right ends, the detail's width and the side of its
+/// square area below the caption, page units.
+fn detail_area(frame: &Frame, map: crate::figure::PageFromWorld) -> (f64, f64, f64, f64) {
+    let (x0, x1) = (
+        map.apply(frame.min()).x.min(map.apply(frame.max()).x),
+        map.apply(frame.min()).x.max(map.apply(frame.max()).x),
+    );
+    let w = DETAIL_SIZE.0.min(x1 - x0);
+    // A square area below the caption, the crank circle and its reach
+    // across it.
+    let side = w.min(DETAIL_SIZE.1 - crate::diagram::CAPTION);
+    (x0, x1, w, side)
+}
+
+/// The share of a crowded pins' detail's height the block's height
+/// across the slot (the slot runs across the detail by the crank centre,
+/// its middle at the height of the offset) and the pins take: enlarged
+/// further, the block's sides and the guides left the detail, which
+/// showed two pins on bare links (×30 at l = 1.03 r, 180°).
+const BLOCK_SEEN: f64 = 0.8;
+
+/// What a panel's detail enlarges.
+#[derive(Clone, Copy)]
+enum About {
+    /// The crank, drawn too short to be seen, about the crank centre.
+    Crank,
+    /// The crank centre C and the pin A at the rod's end, crowded on the
+    /// page: about the world point between them, at the magnification.
+    Pins(Point, f64),
+}
+
+/// Where panel `k`'s crank centre C and the pin A at the rod's end (the
+/// joint of the rod b and the lever or block c) stand nearer than
+/// [`super::inversions::PINS_APART`] on the page at `scale` page units
+/// per world unit (a short rod about the inner dead centre: at
+/// l = 1.03 r, 180° their circles merged under one ground mark in (a),
+/// the block stood over C in (b) and (c)), the world point between them
+/// (C at the origin, before the panel is moved to its place) and the
+/// magnification that draws them [`super::inversions::PINS_SPREAD`] apart
+/// at most, if it is [`super::inversions::PINS_ENLARGED`] at least; none
+/// where both read.
+fn crowded(chains: &Chains, k: usize, scale: f64, side: f64) -> Option<(Point, f64)> {
+    use super::inversions::{PINS_APART, PINS_ENLARGED, PINS_SPREAD};
+    let a = match k {
+        0 => chains.rotate(chains.quadric.a()),
+        _ => chains.slotted(k == 1).0.pose(chains.angle).a(),
+    };
+    let c = Point::origin();
+    let pins = (a - c).norm() * scale;
+    if !(pins > 0.0 && pins < PINS_APART) {
+        return None;
+    }
+    // The block of (b) and (c) seen across the slot with both pins, at
+    // the same magnification in (a): the block's height and the pins'
+    // rise within BLOCK_SEEN of the area's height.
+    let across = 2.0 * block_size(&chains.m).1 + (a - c).y.abs();
+    let fit = BLOCK_SEEN * side / (across * scale);
+    let m =
+        super::coriolis::round_below((PINS_SPREAD / pins).min(fit), &super::coriolis::FINE_STEPS);
+    (m >= PINS_ENLARGED).then(|| (c + (a - c) * 0.5, m))
+}
+
+/// Panel `k`'s detail (its `frame` on the page by `map`), below `top`:
+/// the world region it enlarges, and its plot with the panel drawn again
+/// there ([`About::Crank`]'s crank lettered). [`About::Crank`] enlarges the crank at a
+/// round magnification that draws the crank circle within the panel's
+/// width, at least [`CRANK_ENLARGED`] in radius where the panel gives
+/// room; [`About::Pins`] the crowded pins at their own.
 fn crank_detail(
     ctx: &Ctx,
     (chains, layout): (&Chains, &Layout),
     frame: &Frame,
     map: crate::figure::PageFromWorld,
     top: f64,
-    (k, suffix): (usize, &'static str),
-) -> Result<(Frame, Plot)> {
+    (k, suffix, about): (usize, &'static str, About),
+) -> Result<Option<(Frame, Plot)>> {
     let scale = map.scale();
-    let (x0, x1) = (
-        map.apply(frame.min()).x.min(map.apply(frame.max()).x),
-        map.apply(frame.min()).x.max(map.apply(frame.max()).x),
-    );
-    let w = DETAIL_SIZE.0.min(x1 - x0);
+    let (x0, x1, w, side) = detail_area(frame, map);
     let r = chains.m.crank() * scale;
-    // A square area below the caption, the crank circle and its reach
-    // across it.
-    let side = w.min(DETAIL_SIZE.1 - crate::diagram::CAPTION);
     let most = side / (2.0 * DETAIL_REACH * r);
-    let magnification = crank_detail::round_above(CRANK_ENLARGED / r, &super::coriolis::FINE_STEPS)
-        .filter(|m| *m <= most)
-        .unwrap_or_else(|| super::coriolis::round_below(most, &super::coriolis::FINE_STEPS))
-        .max(1.0);
+    let (c, magnification) = match about {
+        About::Crank => (
+            Point::new(k as f64 * layout.step, 0.0),
+            crank_detail::round_above(CRANK_ENLARGED / r, &super::coriolis::FINE_STEPS)
+                .filter(|m| *m <= most)
+                .unwrap_or_else(|| super::coriolis::round_below(most, &super::coriolis::FINE_STEPS))
+                .max(1.0),
+        ),
+        About::Pins(mid, m) => (mid, m),
+    };
     let rect = Frame::from_origin_size(
         0.5 * (x0 + x1 - w),
         top + DETAIL_GAP,
         w,
         side + crate::diagram::CAPTION,
     );
-    let c = Point::new(k as f64 * layout.step, 0.0);
     let name = format!("detail{suffix}");
     let (region, mut plot) =
         super::inversions::window_at(ctx, &name, (c, magnification), rect, scale)?;
@@ -397,11 +464,45 @@ fn crank_detail(
     let mut s = Canvas::new(dmap, dmap.world_frame(&plot.area()))
         .detail("detail-")
         .suffixed(suffix);
-    panel(&mut s, chains, layout, block, (k, true, true));
-    for item in s.finish().0 {
+    // The crowded pins' detail leaves the crank's letter to the panel.
+    let crank_letter = matches!(about, About::Crank);
+    panel(&mut s, chains, layout, block, (k, crank_letter, true));
+    let items = s.finish().0;
+    if !crank_letter && links_cross_guides(&items) {
+        return Ok(None);
+    }
+    for item in items {
         plot.push(item);
     }
-    Ok((region, plot))
+    Ok(Some((region, plot)))
+}
+
+/// Whether the crank of `items` crosses a guide of the slot or its
+/// hatching's line: a crowded pins' detail where the crank leaves C
+/// under the block across the slot (l = 1.05 r, 120° to 140°) would
+/// draw it through the guide, which the main view draws open there; it
+/// is left out, the notes saying the block stands over C.
+fn links_cross_guides(items: &[Item]) -> bool {
+    let segs = |it: &Item| -> Vec<Seg> {
+        match &it.shape {
+            Shape::Polyline { points, .. } => points
+                .iter()
+                .copied()
+                .zip(points.iter().copied().skip(1))
+                .collect(),
+            Shape::Hatch { from, to, .. } => vec![(*from, *to)],
+            _ => Vec::new(),
+        }
+    };
+    let links: Vec<Seg> = (items.iter())
+        // The rod enters the block through its edge on the guide's line.
+        .filter(|it| it.role == Role::Link && it.id.contains("link-crank"))
+        .flat_map(segs)
+        .collect();
+    (items.iter())
+        .filter(|it| it.id.contains("guide-") || it.id.contains("hatch-"))
+        .flat_map(segs)
+        .any(|(a, b)| (links.iter()).any(|&(p, q)| crossing(a, b, p, q).is_some()))
 }
 
 /// Each panel's caption broken to the panel's width `room` at its own

@@ -650,18 +650,18 @@ const DETAIL_GAP: f64 = 12.0;
 /// units (two em of a letter), are crowded: at a short rod's inner dead
 /// centre (l = 1.06 r at 180°) their circles overlapped as a figure 8
 /// inside the block, their letters anyone's.
-const PINS_APART: f64 = 34.0;
+pub(super) const PINS_APART: f64 = 34.0;
 
 /// How far apart crowded pins are drawn in their detail, page units, at
 /// most (the magnification is rounded down).
-const PINS_SPREAD: f64 = 64.0;
+pub(super) const PINS_SPREAD: f64 = 64.0;
 
 /// The least magnification of the crowded pins' detail: below it the
 /// detail draws them nearly as the main view does, a copy that enlarges
 /// nothing (inversion 3 at l = 1.05 r, 270.05°: pins 33 units apart,
 /// just within [`PINS_APART`], drawn again ×1.5), and the main view
 /// letters them.
-const PINS_ENLARGED: f64 = 2.0;
+pub(super) const PINS_ENLARGED: f64 = 2.0;
 
 /// The centre and the wanted magnification of the inversion's detail
 /// at `scale` page units per world unit: about the crank a where it is
