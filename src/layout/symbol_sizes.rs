@@ -7,6 +7,8 @@ pub(crate) const PIN_RADIUS: f64 = 4.2;
 pub(crate) const LETTER_GAP: f64 = 4.0;
 /// Radius of a constructed point's dot.
 pub(crate) const DOT_RADIUS: f64 = 2.1;
+/// Width of the pen a pin's circle is drawn with.
+pub(crate) const PIN_PEN: f64 = 1.3;
 /// Half the width of an arrowhead at its back.
 pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
 pub(crate) use crate::figure::{

@@ -3453,6 +3453,76 @@ fn a_detail_letters_points_that_coincide_there_jointly() {
     }
 }
 
+/// Points whose dots lie under one pin in a detail, or within two of
+/// its pen widths of its circle, take one joint letter by the pin, the
+/// pin's name first: Kisch's E, F and H under B at l = 43.8 r (each
+/// 4.2 units from B at ×20) stood lettered at the four corners of the
+/// pin with no dot to tell them by; Bennett's E at the edge of B's pin
+/// and K and G at C's were lettered apart round them at l = 29 r.
+#[test]
+fn points_under_one_pin_take_one_letter_by_it() {
+    for (figure, rod, degrees, joints) in [
+        (
+            "fig-66-kisch",
+            43.8,
+            90.84,
+            vec![("B", vec!["B", "E", "F", "H"])],
+        ),
+        (
+            "fig-66-kisch",
+            43.8,
+            270.24,
+            vec![("B", vec!["B", "E", "F", "H"])],
+        ),
+        (
+            "bennett-construction",
+            29.0,
+            89.08,
+            vec![("B", vec!["B", "E", "F"]), ("C", vec!["C", "G", "K"])],
+        ),
+    ] {
+        let svg = svg_at(figure, rod, 0.0, degrees);
+        let number = |id: &str, name: &str| -> f64 {
+            let v = common::attr(&svg, id, name);
+            v.unwrap_or_else(|| panic!("{figure} {degrees}°: no {name} of {id}"))
+                .parse()
+                .unwrap()
+        };
+        for (pin, names) in joints {
+            let id = format!("detail-label-{pin}");
+            // The pin's own name first, then the others (in the order
+            // they were joined).
+            let mut got = names_in(&svg, &id);
+            assert_eq!(
+                got.first().map(String::as_str),
+                Some(pin),
+                "{figure} {degrees}°"
+            );
+            got[1..].sort();
+            assert_eq!(got, names, "{figure} l = {rod}, {degrees}°");
+            for name in &names[1..] {
+                for kind in ["label", "point"] {
+                    let other = format!("detail-{kind}-{name}");
+                    assert!(
+                        common::tag(&svg, &other).is_none(),
+                        "{figure} l = {rod}, {degrees}°: {other} drawn beside {id}"
+                    );
+                }
+            }
+            // By its pin: its middle within an em and a half of it and
+            // half its width, or led to it.
+            let point = format!("detail-point-{pin}");
+            let (px, py) = (number(&point, "cx"), number(&point, "cy"));
+            let (lx, ly) = (number(&id, "x"), number(&id, "y"));
+            let led = common::tag(&svg, &format!("detail-leader-{pin}")).is_some();
+            assert!(
+                led || (lx - px).hypot(ly - py) < 1.5 * 17.0 + names.len() as f64 * 10.0,
+                "{figure} l = {rod}, {degrees}°: {id} at ({lx}, {ly}), its pin at ({px}, {py})"
+            );
+        }
+    }
+}
+
 #[test]
 fn a_joint_letter_in_a_narrow_detail_finds_room_by_its_edge() {
     // Fig. 63 at l = 50 r, 90°: E is B in the detail, whose narrow frame
