@@ -28,7 +28,7 @@ mod markup;
 mod notes;
 mod placed;
 mod points;
-pub(crate) mod symbol_sizes;
+mod symbol_sizes;
 mod text;
 
 use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Role, Shape};

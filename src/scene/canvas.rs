@@ -4,9 +4,11 @@
 //! linkage sketches draw with it alike (the frame's bearings, hatching and
 //! guides are in [`super::ground`]).
 
-use crate::figure::{Hue, Item, PageFromWorld, Part, RichText, Role, Shape, TextSize};
+use crate::figure::{
+    DOT_RADIUS, Hue, Item, PIN_PEN, PIN_RADIUS, PageFromWorld, Part, RichText, Role, Shape,
+    TextSize,
+};
 use crate::geom::{Direction, Frame, Intersection, MeetJson, Point, Vector};
-use crate::layout::symbol_sizes::{DOT_RADIUS, PIN_PEN, PIN_RADIUS};
 use serde_json::{Map, Value, json};
 use std::collections::BTreeSet;
 
