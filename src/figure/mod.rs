@@ -31,8 +31,8 @@ pub use page_length::{PageLength, PageUnit, UNITS_PER_INCH};
 pub use path::{Path, PathBuilder, PathSegment};
 pub use style::Style;
 pub(crate) use style::{
-    ANGLE_RADIUS, ANGLE_RADIUS_MOST, ARROW_LENGTH, HATCH_DEPTH, HATCH_SPACING, NOTE_LINE,
-    NOTE_SIZE, Pen, RIGHT_ANGLE, angle_radius,
+    ANGLE_RADIUS, ANGLE_RADIUS_MOST, ARROW_LENGTH, DOT_RADIUS, HATCH_DEPTH, HATCH_SPACING,
+    NOTE_LINE, NOTE_SIZE, PIN_PEN, PIN_RADIUS, Pen, RIGHT_ANGLE, angle_radius,
 };
 pub use text::{
     MAX_TITLE_CHARS, RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Title,

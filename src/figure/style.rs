@@ -170,6 +170,13 @@ pub(crate) const HATCH_DEPTH: f64 = 6.5;
 pub(crate) const NOTE_SIZE: f64 = 13.0;
 /// Line height of notes, page units.
 pub(crate) const NOTE_LINE: f64 = 17.0;
+/// Radius of a pin joint's circle, page units: the layout draws it, and
+/// the scene joins to a pin's letter a dot under it.
+pub(crate) const PIN_RADIUS: f64 = 4.2;
+/// Radius of a constructed point's dot, page units.
+pub(crate) const DOT_RADIUS: f64 = 2.1;
+/// Width of the pen a pin's circle is drawn with, page units.
+pub(crate) const PIN_PEN: f64 = 1.3;
 /// Length of each side of a right-angle mark, page units (the scene
 /// draws one only on a leg longer than two of them).
 pub(crate) const RIGHT_ANGLE: f64 = 10.0;

@@ -139,58 +139,6 @@ struct Pending {
 }
 
 impl Pending {
-    /// A joint letter of points that coincide ("*B*, *E*", the names
-    /// parted by an upright ", ") as one letter per point at the same
-    /// place, each with its point's id (`label-B`, `label-E`, with the
-    /// panel's prefix and suffix); `None` for any other label.
-    fn apart(&self) -> Option<Vec<Pending>> {
-        if !self.letter || self.line.is_some() || !self.along.is_empty() {
-            return None;
-        }
-        let mut names: Vec<Vec<&crate::figure::Run>> = vec![Vec::new()];
-        for run in self.text.runs() {
-            if run.text == ", " && !run.italic {
-                names.push(Vec::new());
-            } else if let Some(last) = names.last_mut() {
-                last.push(run);
-            }
-        }
-        let plain = |runs: &[&crate::figure::Run]| -> String {
-            runs.iter().map(|r| r.text.as_str()).collect()
-        };
-        let first = plain(names.first()?);
-        let own = format!("label-{first}");
-        let at = self.id.find(&own)?;
-        if names.len() < 2 || names.iter().any(|n| n.is_empty()) {
-            return None;
-        }
-        let markup = |runs: &[&crate::figure::Run]| -> Option<String> {
-            (runs.iter())
-                .map(|r| match (r.subscript || r.superscript, r.italic) {
-                    (true, _) => None,
-                    (false, true) => Some(format!("*{}*", r.text)),
-                    (false, false) => Some(r.text.clone()),
-                })
-                .collect()
-        };
-        (names.iter())
-            .map(|runs| {
-                let id = format!(
-                    "{}label-{}{}",
-                    &self.id[..at],
-                    plain(runs),
-                    &self.id[at + own.len()..]
-                );
-                let text = RichText::parse(&markup(runs)?);
-                Some(Pending {
-                    id,
-                    text,
-                    ..self.clone()
-                })
-            })
-            .collect()
-    }
-
     /// Whether the label says what it marks, and so may stand farther
     /// from it than a letter ([`WIDE_REACH`]): a name or a value, or a
     /// letter with words ("D at ∞" at an arrow towards a point off the
@@ -490,25 +438,12 @@ impl PanelLayout<'_> {
         self.obstacles.build(room, &halves);
         pending.sort_by_key(|p| !p.letter);
         let start = self.obstacles.mark();
-        let (mut order, mut placed) = self.arranged(&pending, room, start);
-        // A detail's joint letter of points that coincide there ("B, E")
-        // with no clear place that reads for its point (its narrow
-        // frame, lines leaving the pin every way, other points about):
-        // the points are lettered apart, each by its own letter,
-        // narrower, and the labels placed once more.
-        let apart: Vec<Pending> = match self.detail {
-            true => (order.iter().zip(&placed))
-                .flat_map(|(p, at)| match at.cost >= STRUCK {
-                    true => p.apart().unwrap_or_else(|| vec![(*p).clone()]),
-                    false => vec![(*p).clone()],
-                })
-                .collect(),
-            false => Vec::new(),
-        };
-        if apart.len() > order.len() {
-            self.obstacles.rollback(start);
-            (order, placed) = self.arranged(&apart, room, start);
-        }
+        let (order, placed) = self.arranged(&pending, room, start);
+        // A detail's joint letter of points that coincide there ("B, E,
+        // F, H" under Kisch's crank pin) stays one letter by its pin even
+        // where it finds no clear place: parted, each name stood at a
+        // corner of the pin with no dot of its own to read it by, and
+        // the reader could not tell which point was which.
         let joints: Vec<Point> = (order.iter())
             .filter(|p| p.joint)
             .map(|p| p.anchor)

@@ -3,7 +3,7 @@
 
 use super::mark::{Mark, Paint, PathData, Shape, Stroke};
 use super::markup::{finite, path, polyline_d, stroked_circle};
-use super::symbol_sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_RADIUS};
+use super::symbol_sizes::{DOT_RADIUS, MARKER_RADIUS, PIN_PEN, PIN_RADIUS};
 use super::{Ink, PanelLayout};
 use crate::figure::{Pen, Symbol};
 use crate::geom::Frame;
@@ -33,7 +33,7 @@ impl PanelLayout<'_> {
         let paint = Paint {
             stroke: Some(Stroke {
                 colour: ink.pen.colour,
-                width: 1.3,
+                width: PIN_PEN,
                 dash: None,
                 round: false,
             }),

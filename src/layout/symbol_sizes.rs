@@ -1,16 +1,13 @@
 //! Sizes of the renderer's symbols and text, in page units: the same at
 //! every scale and in both styles.
 
-/// Radius of a pin joint's circle.
-pub(crate) const PIN_RADIUS: f64 = 4.2;
 /// Room between a point and its letter's box.
 pub(crate) const LETTER_GAP: f64 = 4.0;
-/// Radius of a constructed point's dot.
-pub(crate) const DOT_RADIUS: f64 = 2.1;
 /// Half the width of an arrowhead at its back.
 pub(crate) const ARROW_HALF_WIDTH: f64 = 3.2;
 pub(crate) use crate::figure::{
-    ANGLE_RADIUS, ARROW_LENGTH, HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE, RIGHT_ANGLE,
+    ANGLE_RADIUS, ARROW_LENGTH, DOT_RADIUS, HATCH_DEPTH, HATCH_SPACING, NOTE_LINE, NOTE_SIZE,
+    PIN_PEN, PIN_RADIUS, RIGHT_ANGLE,
 };
 /// How much larger each further angle mark at the same vertex is drawn,
 /// so that two adjacent angles (Ng's φ and β at the crank pin) read as

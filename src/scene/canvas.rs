@@ -4,7 +4,10 @@
 //! linkage sketches draw with it alike (the frame's bearings, hatching and
 //! guides are in [`super::ground`]).
 
-use crate::figure::{Hue, Item, PageFromWorld, Part, RichText, Role, Shape, TextSize};
+use crate::figure::{
+    DOT_RADIUS, Hue, Item, PIN_PEN, PIN_RADIUS, PageFromWorld, Part, RichText, Role, Shape,
+    TextSize,
+};
 use crate::geom::{Direction, Frame, Intersection, MeetJson, Point, Vector};
 use serde_json::{Map, Value, json};
 use std::collections::BTreeSet;
@@ -742,6 +745,15 @@ impl Canvas {
 /// letter names them all ([`Canvas::letter_together`]), as the polygons'
 /// images are ([`super::draw::polygons::COINCIDE`]).
 pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
+
+/// Page distance, centre to centre, under which a constructed point's
+/// dot is one point with a pin's in a detail: the dot under the pin's
+/// circle or its edge within two of the circle's pen widths of it
+/// ([`crate::scene::letter_near_together`]). Kisch's E, F and H at 4.2
+/// units from B at l = 43.8 r, 90.84°, Bennett's E at 6.8 from B and G
+/// at 7.8 from C at l = 29 r, 89.08°, hidden by the pin or read as a
+/// burr on it, each stood lettered apart with no dot to tell it by.
+pub(crate) const UNDER_PIN: f64 = PIN_RADIUS + DOT_RADIUS + 2.0 * PIN_PEN;
 
 /// Page distance under which two named points are one point in a
 /// detail: a dot inside the other's marker, lettered with it there

@@ -1280,14 +1280,16 @@ fn every_plate_is_clean() {
 }
 
 /// Rule 16 is held where it stands, not yet at 0: of the sweep's 12 896
-/// plates, 28 set two texts within half an em where the placer found no
+/// plates, 24 set two texts within half an em where the placer found no
 /// place clear of the other texts whose glyphs are clear: the value of l
 /// among φ, O, A and the stroke's text of a short rod's Fig. 62 (12,
 /// since its dimensions go above the guides where the links reach below
-/// them), Bennett's narrow detail at a long rod (6), Fig. 64's E′ by C at
-/// a dead centre (3), the centrodes' (3), and a few more. (Down from 54
-/// as a detail's dots running into a pin join the pin's letter.)
-const APART_HELD: usize = 28;
+/// them), Fig. 64's E′ by C at a dead centre (3), the centrodes' (3),
+/// Bennett's narrow detail at a long rod (2, L by F), Ng's Fig. A1 (2)
+/// and the Coriolis inversion's link letters (2). (Down from 54 as a
+/// detail's dots running into a pin join the pin's letter, and from 28
+/// as the dots under a pin or within two of its pen widths do.)
+const APART_HELD: usize = 24;
 
 /// One line per failure of the sweep, for `PLATES_LOG=file`.
 fn every_failure(outcomes: &[Outcome]) -> String {
@@ -3450,6 +3452,76 @@ fn a_detail_letters_points_that_coincide_there_jointly() {
         assert_eq!(names, ["C", "E"], "{figure} at 180°");
         let plate = Plate::read(&svg);
         assert_eq!(points_together(&plate, &svg), [], "{figure} at 180°");
+    }
+}
+
+/// Points whose dots lie under one pin in a detail, or within two of
+/// its pen widths of its circle, take one joint letter by the pin, the
+/// pin's name first: Kisch's E, F and H under B at l = 43.8 r (each
+/// 4.2 units from B at ×20) stood lettered at the four corners of the
+/// pin with no dot to tell them by; Bennett's E at the edge of B's pin
+/// and K and G at C's were lettered apart round them at l = 29 r.
+#[test]
+fn points_under_one_pin_take_one_letter_by_it() {
+    for (figure, rod, degrees, joints) in [
+        (
+            "fig-66-kisch",
+            43.8,
+            90.84,
+            vec![("B", vec!["B", "E", "F", "H"])],
+        ),
+        (
+            "fig-66-kisch",
+            43.8,
+            270.24,
+            vec![("B", vec!["B", "E", "F", "H"])],
+        ),
+        (
+            "bennett-construction",
+            29.0,
+            89.08,
+            vec![("B", vec!["B", "E", "F"]), ("C", vec!["C", "G", "K"])],
+        ),
+    ] {
+        let svg = svg_at(figure, rod, 0.0, degrees);
+        let number = |id: &str, name: &str| -> f64 {
+            let v = common::attr(&svg, id, name);
+            v.unwrap_or_else(|| panic!("{figure} {degrees}°: no {name} of {id}"))
+                .parse()
+                .unwrap()
+        };
+        for (pin, names) in joints {
+            let id = format!("detail-label-{pin}");
+            // The pin's own name first, then the others (in the order
+            // they were joined).
+            let mut got = names_in(&svg, &id);
+            assert_eq!(
+                got.first().map(String::as_str),
+                Some(pin),
+                "{figure} {degrees}°"
+            );
+            got[1..].sort();
+            assert_eq!(got, names, "{figure} l = {rod}, {degrees}°");
+            for name in &names[1..] {
+                for kind in ["label", "point"] {
+                    let other = format!("detail-{kind}-{name}");
+                    assert!(
+                        common::tag(&svg, &other).is_none(),
+                        "{figure} l = {rod}, {degrees}°: {other} drawn beside {id}"
+                    );
+                }
+            }
+            // By its pin: its middle within an em and a half of it and
+            // half its width, or led to it.
+            let point = format!("detail-point-{pin}");
+            let (px, py) = (number(&point, "cx"), number(&point, "cy"));
+            let (lx, ly) = (number(&id, "x"), number(&id, "y"));
+            let led = common::tag(&svg, &format!("detail-leader-{pin}")).is_some();
+            assert!(
+                led || (lx - px).hypot(ly - py) < 1.5 * 17.0 + names.len() as f64 * 10.0,
+                "{figure} l = {rod}, {degrees}°: {id} at ({lx}, {ly}), its pin at ({px}, {py})"
+            );
+        }
     }
 }
 

@@ -50,6 +50,7 @@
 use super::LayerCtx;
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
+use crate::scene::canvas::UNDER_PIN;
 
 /// The extent, page units, under which the velocity triangle ECB gets a
 /// detail (see the module docs).
@@ -231,6 +232,12 @@ fn with_guides(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail 
 /// italic capital.
 const JOINT_NAME: f64 = 18.0;
 
+/// Page units (in the detail) a joint letter keeps each side beyond
+/// [`JOINT_NAME`] for each of its names inside the frame: its first
+/// name's comma-less remainder, the room about its glyphs and the labels'
+/// inset from the frame ("*B*, *E*, *F*, *H*" is 81 units wide).
+const JOINT_ROOM: f64 = 10.0;
+
 /// Page units (in the detail) under which two lettered points coincide
 /// there and take one joint letter ("*F*, *G*, *K*, *L*" at a dead
 /// centre), as the canvas letters them.
@@ -269,10 +276,24 @@ fn joint_room(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail {
         most.saturating_sub(1) as f64 * JOINT_NAME / page
     };
     let (left, right) = (edge_room(lo.x), edge_room(hi.x));
-    if left == 0.0 && right == 0.0 {
+    let (mut lo, mut hi) = (lo - Vector::new(left, 0.0), hi + Vector::new(right, 0.0));
+    // A joint letter of the points under one pin ("B, E, F, H" under
+    // Kisch's B at a long rod near 90°) wholly to either side of the pin
+    // within the frame, clear of a line leaving the pin up or down (the
+    // semicircle on AB, the crank): its width and a letter's room each
+    // side of the pin.
+    for p in &lettered {
+        let under = |q: &&Point| (*q - p).norm() * page < UNDER_PIN;
+        let names = lettered.iter().filter(under).count();
+        if names > 1 {
+            let half = (names as f64 * JOINT_NAME + 2.0 * JOINT_ROOM - PAD).max(0.0) / page;
+            lo.x = lo.x.min(p.x - half);
+            hi.x = hi.x.max(p.x + half);
+        }
+    }
+    if lo == d.region.min() && hi == d.region.max() {
         return d;
     }
-    let (lo, hi) = (lo - Vector::new(left, 0.0), hi + Vector::new(right, 0.0));
     match magnify(d.magnification, (hi.x - lo.x) * scale, max_width) {
         Some(magnification) => Detail {
             region: Frame::new(lo, hi),

@@ -15,9 +15,9 @@ struct Marked {
 }
 
 /// Letters together the points of a detail's `items` (ids `{prefix}point-…`
-/// and `{prefix}label-…`) whose markers stand within [`COINCIDE`] page
+/// and `{prefix}label-…`) whose markers stand within `UNDER_PIN` page
 /// units of each other at the detail's `scale` (page units per world
-/// unit): where the enlargement is held to the page's width, G at 0.02 of
+/// unit: a dot under a pin's circle or within two of its pen widths): where the enlargement is held to the page's width, G at 0.02 of
 /// the crank from C, K between them, stay under C's pin at ×25, and their
 /// own dots and letters named points the reader cannot find. A dot is
 /// joined to a pin whose marker it runs into, the pin heading the group
@@ -43,7 +43,9 @@ pub(crate) fn letter_near_together(items: &mut Vec<Item>, prefix: &str, scale: f
             })
         })
         .collect();
-    let near = |p: &Marked, q: &Marked| (p.pin != q.pin) && (p.at - q.at).norm() * scale < COINCIDE;
+    let near = |p: &Marked, q: &Marked| {
+        (p.pin != q.pin) && (p.at - q.at).norm() * scale < crate::scene::canvas::UNDER_PIN
+    };
     let mut left: Vec<&Marked> = marked.iter().collect();
     let mut groups: Vec<Vec<&Marked>> = Vec::new();
     while !left.is_empty() {
