@@ -17,7 +17,8 @@ struct Marked {
 /// Letters together the points of a detail's `items` (ids `{prefix}point-…`
 /// and `{prefix}label-…`) whose markers stand within `UNDER_PIN` page
 /// units of each other at the detail's `scale` (page units per world
-/// unit: a dot under a pin's circle or within two of its pen widths): where the enlargement is held to the page's width, G at 0.02 of
+/// unit: a dot under a pin's circle or within two of its pen widths):
+/// where the enlargement is held to the page's width, G at 0.02 of
 /// the crank from C, K between them, stay under C's pin at ×25, and their
 /// own dots and letters named points the reader cannot find. A dot is
 /// joined to a pin whose marker it runs into, the pin heading the group
