@@ -78,12 +78,10 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
             // (l = 3 r, e = −1.29 r, 269.53°): it comes to the pin from
             // the other side instead, as where it would run along the
             // rod, beside F_c's line (F_c comes to the pin from there),
-            // away from the rod produced, named at its tail; twice as far
-            // off as beside it, so that the two heads, side by side by
-            // the pin, keep apart.
+            // away from the rod produced, named at its tail.
             let parallel = Vector::new(rod.x.signum(), 0.0);
             if u.dot(&parallel) > ALONG_THE_ROD.cos() {
-                let side = away_from(-ahead, cb) * world(2.0 * super::torque::ALONGSIDE);
+                let side = away_from(-ahead, cb) * world(super::torque::ALONGSIDE);
                 let to = b - u * world(PIN_SHORT) + side;
                 let from = to - u * world(VC_ARROW);
                 (from, to, from)
