@@ -64,33 +64,11 @@ pub(crate) fn velocities(ctx: &LayerCtx, world: &dyn Fn(f64) -> f64) -> Vec<Name
             // leaves the pin beside F_c's line, set off it away from the
             // rod or the rod produced, whichever runs on its side of the
             // pin (the produced rod to M).
-            //
-            // Where the rod runs across v_c's line (at and near a dead
-            // centre) neither runs along it: it keeps to the crank's side,
-            // away from the rod, which leads to the guides (l = 1.04 r at
-            // 0°: set off on the rod's side, it ran up through the guide's
-            // hatching, off the pin).
-            let across = rod.norm() * ALONG_THE_ROD.sin();
-            let ahead = if rod.dot(&u) > -across { rod } else { -rod };
-            // Leaving the pin along φ's reference, the parallel to the
-            // stroke towards the slider, it lay on that dashed line and
-            // ran through β's arc, its letter pushed off far from it
-            // (l = 3 r, e = −1.29 r, 269.53°): it comes to the pin from
-            // the other side instead, as where it would run along the
-            // rod, beside F_c's line (F_c comes to the pin from there),
-            // away from the rod produced, named at its tail.
-            let parallel = Vector::new(rod.x.signum(), 0.0);
-            if u.dot(&parallel) > ALONG_THE_ROD.cos() {
-                let side = away_from(-ahead, cb) * world(super::torque::ALONGSIDE);
-                let to = b - u * world(PIN_SHORT) + side;
-                let from = to - u * world(VC_ARROW);
-                (from, to, from)
-            } else {
-                let side = away_from(ahead, cb) * world(super::torque::ALONGSIDE);
-                let from = b + u * world(PIN_SHORT) + side;
-                let to = from + u * world(VC_ARROW);
-                (from, to, to)
-            }
+            let ahead = if rod.dot(&u) > 0.0 { rod } else { -rod };
+            let side = away_from(ahead, cb) * world(super::torque::ALONGSIDE);
+            let from = b + u * world(PIN_SHORT) + side;
+            let to = from + u * world(VC_ARROW);
+            (from, to, to)
         } else if along {
             // Drawn from the pin it would run along the rod: it comes to
             // the pin from the other side, its head short of the pin's
