@@ -1,6 +1,6 @@
 //! The Python package's test build shares the root's compiled units, the
 //! library among them (`.ci/run` builds the wheel with the test build's
-//! profile and the library's default features into the root's target
+//! settings and the library's default features into the root's target
 //! directory): that holds only while the package is a member of the
 //! root's workspace, with no profile of its own, and the wheel's profiles
 //! are the root's, which this suite checks from the manifests. (The
@@ -51,13 +51,27 @@ fn the_wheels_profiles_are_the_roots() {
     let table = profiles[wheel].as_table().unwrap();
     assert_eq!(table["inherits"].as_str(), Some("release"));
     assert_eq!(table["lto"].as_str(), Some("thin"));
-    // The wheel `.ci/run` tests: the test build's profile and the
-    // library's default features, or the library is compiled again.
+    // The wheel `.ci/run` tests: the `dev` profile (maturin's `cargo
+    // rustc` builds `test` as a test harness), whose library is at the
+    // test profile's level, and the library's default features, or the
+    // library is compiled again.
     let ci = std::fs::read_to_string(".ci/run").unwrap();
     let args = (ci.lines())
         .find_map(|l| l.trim().strip_prefix("MATURIN_PEP517_ARGS=\""))
         .unwrap();
-    assert!(args.starts_with("--profile test "), "{args}");
-    assert!(args.contains("slider-crank/default"), "{args}");
-    assert!(profiles.contains_key("test"));
+    assert!(args.starts_with("--profile dev "), "{args}");
+    assert!(args.contains("test-build"), "{args}");
+    let python = manifest("python/Cargo.toml");
+    let features = python["features"]["test-build"].as_array().unwrap();
+    assert!(
+        features
+            .iter()
+            .any(|f| f.as_str() == Some("slider-crank/default"))
+    );
+    let test = profiles["test"].as_table().unwrap();
+    let library = profiles["dev"]["package"]["slider-crank"]
+        .as_table()
+        .unwrap();
+    assert_eq!(library.get("opt-level"), test.get("opt-level"));
+    assert_eq!(test.len(), 1, "[profile.test] sets more than the level");
 }
