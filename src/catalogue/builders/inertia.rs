@@ -244,18 +244,8 @@ const CG_SHOWN: f64 = 100.0;
 const CG_AREA: (f64, f64) = (260.0, 110.0);
 
 /// The magnifications offered for the detail at C and G over the main
-/// view: 1, 2, 2.5, 3, 4, 5, 6 and 8 times a power of ten, the largest
-/// at or under `most`.
-fn round_magnification(most: f64) -> Option<f64> {
-    if !(most.is_finite() && most >= 1.0) {
-        return None;
-    }
-    let decade = 10f64.powf(most.log10().floor());
-    [8.0, 6.0, 5.0, 4.0, 3.0, 2.5, 2.0, 1.0]
-        .into_iter()
-        .map(|k| k * decade)
-        .find(|m| *m <= most * (1.0 + 1e-9))
-}
+/// view, times a power of ten ([`super::coriolis::round_below`]).
+const CG_STEPS: [f64; 8] = [1.0, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0];
 
 /// Where CG is shorter than [`CG_READS`] on the page in `shown` (the
 /// panel that shows G; the main view is drawn at `main_scale`), C and G
@@ -280,9 +270,11 @@ fn cg_detail(
     if cg == 0.0 || (t.apply(g) - t.apply(c)).norm() >= CG_READS {
         return Ok((top, None));
     }
-    let Some(magnification) = round_magnification(CG_SHOWN / (cg * main_scale)) else {
+    let most = CG_SHOWN / (cg * main_scale);
+    if !(most.is_finite() && most >= 1.0) {
         return Ok((top, None));
-    };
+    }
+    let magnification = super::coriolis::round_below(most, &CG_STEPS);
     let scale = magnification * main_scale;
     let (w, h) = CG_AREA;
     let width = w.min(ctx.page().width() - 32.0);
@@ -329,19 +321,7 @@ fn cg_detail(
     for item in kept {
         plot.push(item);
     }
-    let inset = 0.5 / scale;
-    let (lo, hi) = (
-        seen.min() + Vector::new(inset, inset),
-        seen.max() - Vector::new(inset, inset),
-    );
-    plot.push(Item::new(
-        "cg-border",
-        Role::Frame,
-        Shape::Polyline {
-            points: vec![lo, Point::new(hi.x, lo.y), hi, Point::new(lo.x, hi.y)],
-            closed: true,
-        },
-    ));
+    super::inversions::border(&mut plot, "cg");
     sheet.detail(plot);
     Ok((rect.max().y, Some(magnification)))
 }

@@ -606,8 +606,14 @@ pub(super) fn window_at(
     let caption = format!("the boxed region enlarged ×{}", short(magnification));
     let mut plot =
         Plot::world(name, rect, &region, false, ctx.tolerance, ctx.font)?.with_caption(&caption);
-    // Its border, half a unit inside the area the detail is clipped to,
-    // so that the links cut there end on a line, not in the air.
+    border(&mut plot, name);
+    Ok((region, plot))
+}
+
+/// A detail's border (`{name}-border`), half a unit inside the area the
+/// detail `plot` is clipped to, so that the links cut there end on a
+/// line, not in the air.
+pub(super) fn border(plot: &mut Plot, name: &str) {
     let map = *plot.map();
     let inside = BORDER_INSET / map.scale();
     let seen = map.world_frame(&plot.area());
@@ -623,7 +629,6 @@ pub(super) fn window_at(
             closed: true,
         },
     ));
-    Ok((region, plot))
 }
 
 /// How far inside its clipped area a crank detail's border is drawn,
