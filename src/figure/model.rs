@@ -527,6 +527,14 @@ impl Panel {
         self.items.extend(items);
         self
     }
+
+    /// The same panel (its place, transform and clip) with its items as
+    /// `edit` leaves them; an edit that empties them leaves an empty
+    /// panel.
+    pub fn with_items_edited(mut self, edit: impl FnOnce(&mut Vec<Item>)) -> Self {
+        edit(&mut self.items);
+        self
+    }
 }
 
 /// A whole figure: page size, style, panels and the metadata written to

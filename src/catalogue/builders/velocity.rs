@@ -138,16 +138,12 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
     let mut panels = Vec::new();
     for detail in details {
         let copied = of_loops(&detail);
-        let mut all: Vec<Item> = detail.items().to_vec();
-        all.extend(copied.then(|| in_detail.clone()).into_iter().flatten());
-        letter_near_together(&mut all, "detail-", detail.transform().scale());
-        joined_e1 |= copied && !all.iter().any(|i| i.id == "detail-point-E1");
-        let joined = Panel::new(detail.id(), *detail.rect(), *detail.transform(), all);
-        panels.push(if detail.is_clipped() {
-            joined.clipped()
-        } else {
-            joined
-        });
+        let scale = detail.transform().scale();
+        let joined = detail
+            .with_items(copied.then(|| in_detail.clone()).into_iter().flatten())
+            .with_items_edited(|all| letter_near_together(all, "detail-", scale));
+        joined_e1 |= copied && joined.item("detail-point-E1").is_none();
+        panels.push(joined);
     }
     let left =
         |i: &&Item| (lettered_there && i.id == "label-E1") || (joined_e1 && i.id == "point-E1");

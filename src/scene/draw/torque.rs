@@ -178,8 +178,8 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
 /// Where no gap is given and one of `avoid` runs through the usual gap,
 /// the gap turns to the nearest direction that leaves each of them well
 /// past the arc's ends ([`free_gap`]), and T stands in it, between the
-/// arrowhead and the tail, by the head; only where there is none is T set beside the
-/// arc.
+/// arrowhead and the tail, by the head; only where there is none is T
+/// set beside the arc.
 pub(crate) fn torque_arrow(
     c: Point,
     t: f64,
