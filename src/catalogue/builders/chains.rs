@@ -468,7 +468,7 @@ fn crank_detail(
     let crank_letter = matches!(about, About::Crank);
     panel(&mut s, chains, layout, block, (k, crank_letter, true));
     let items = s.finish().0;
-    if !crank_letter && links_cross_guides(&items) {
+    if !crank_letter && crank_crosses_guides(&items) {
         return Ok(None);
     }
     for item in items {
@@ -482,7 +482,7 @@ fn crank_detail(
 /// under the block across the slot (l = 1.05 r, 120° to 140°) would
 /// draw it through the guide, which the main view draws open there; it
 /// is left out, the notes saying the block stands over C.
-fn links_cross_guides(items: &[Item]) -> bool {
+fn crank_crosses_guides(items: &[Item]) -> bool {
     let segs = |it: &Item| -> Vec<Seg> {
         match &it.shape {
             Shape::Polyline { points, .. } => points
@@ -494,15 +494,16 @@ fn links_cross_guides(items: &[Item]) -> bool {
             _ => Vec::new(),
         }
     };
-    let links: Vec<Seg> = (items.iter())
-        // The rod enters the block through its edge on the guide's line.
+    // The crank alone: the rod enters the block through its edge on the
+    // guide's line.
+    let crank: Vec<Seg> = (items.iter())
         .filter(|it| it.role == Role::Link && it.id.contains("link-crank"))
         .flat_map(segs)
         .collect();
     (items.iter())
         .filter(|it| it.id.contains("guide-") || it.id.contains("hatch-"))
         .flat_map(segs)
-        .any(|(a, b)| (links.iter()).any(|&(p, q)| crossing(a, b, p, q).is_some()))
+        .any(|(a, b)| (crank.iter()).any(|&(p, q)| crossing(a, b, p, q).is_some()))
 }
 
 /// Each panel's caption broken to the panel's width `room` at its own
