@@ -241,7 +241,9 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     if off_rod(ctx) {
         canvas.link("rod-plate", vec![pose.a(), coupler, pose.b()]);
     }
-    canvas.point(ctx.letter(Coupler), coupler, Marker::Dot, pose.c());
+    // On the rod as drawn: beside the crank where the rod is drawn so.
+    let dot = super::mechanism::on_rod_as_drawn(ctx, canvas, coupler);
+    canvas.point(ctx.letter(Coupler), dot, Marker::Dot, pose.c());
     let hue = canvas.set_hue(Some(Hue::Velocity));
     let v = placed.velocity_points();
     velocity(ctx, canvas, &v);
