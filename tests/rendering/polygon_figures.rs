@@ -2098,3 +2098,27 @@ fn the_crank_under_the_rod_at_180_degrees_is_seen() {
         );
     }
 }
+
+#[test]
+fn a_piston_acceleration_too_short_to_draw_is_said_so() {
+    // Review 2026-11w: near 90° at a long rod c′a′ (17.99 ft/s² at
+    // l = 55.4 r, 90.47°) is too short to be drawn and was never drawn,
+    // the joint letter "c′, a′" alone telling of it, and the notes did
+    // not say why. They say so now, and only there.
+    const SAID: &str = "too short to be drawn at this scale";
+    for (rod, deg) in [(55.4, 90.47), (55.4, 270.15), (51.1, 90.38)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        assert!(
+            element(&svg, "acceleration-c2a2").is_none(),
+            "l = {rod} r, {deg}°: c′a′ drawn"
+        );
+        assert!(
+            words(&svg).contains(SAID),
+            "l = {rod} r, {deg}°: c′a′'s shortness not said"
+        );
+    }
+    for (rod, deg) in [(4.0, 45.0), (55.4, 0.0)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        assert!(!words(&svg).contains(SAID), "l = {rod} r, {deg}°");
+    }
+}
