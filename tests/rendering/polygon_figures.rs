@@ -2054,3 +2054,71 @@ fn c_prime_q_prime_beside_c_prime_b_prime_is_drawn() {
         );
     }
 }
+
+#[test]
+fn the_crank_under_the_rod_at_180_degrees_is_seen() {
+    // Review 2026-11y: at l = 58.2 r and 37.7 r, 180° the crank's detail
+    // drew the rod from the frame's edge straight through C's pin to B,
+    // the crank CB wholly under it: the detail made to show the crank
+    // hid it, and the rod read as pinned at C. The default engine's main
+    // view at 180° hid its crank the same way. The rod is drawn beside
+    // the crank there: the crank's middle stands clear of the rod as
+    // drawn by more than a link's width.
+    const CLEAR: f64 = 6.0;
+    for (rod, deg, panel, prefix) in [
+        (58.2, 180.0, "panel-detail", "detail-"),
+        (37.7, 180.0, "panel-detail", "detail-"),
+        (58.2, 180.8, "panel-detail", "detail-"),
+        (37.7, 179.2, "panel-detail", "detail-"),
+        (4.0, 180.0, "panel-mechanism", ""),
+    ] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let plate = Plate::read(&svg);
+        let p = (plate.panels.iter())
+            .find(|p| p.id == panel)
+            .unwrap_or_else(|| panic!("l = {rod} r, {deg}°: no {panel}"));
+        let (b, c) = (plate.point(p, "B").unwrap(), plate.point(p, "C").unwrap());
+        let middle = (0.5 * (b.0 + c.0), 0.5 * (b.1 + c.1));
+        let line = path_points(&svg, &format!("{prefix}link-rod"));
+        let off = (line.windows(2))
+            .map(|w| segment_distance(middle, w[0], w[1]))
+            .fold(f64::INFINITY, f64::min);
+        assert!(
+            off > CLEAR,
+            "l = {rod} r, {deg}°: the crank's middle {off:.1} units from the rod"
+        );
+        // The rod still runs from B's pin.
+        let end = line[0];
+        let from_b = (end.0 - b.0)
+            .hypot(end.1 - b.1)
+            .min((line[line.len() - 1].0 - b.0).hypot(line[line.len() - 1].1 - b.1));
+        assert!(
+            from_b < 1.0,
+            "l = {rod} r, {deg}°: the rod {from_b:.1} from B"
+        );
+    }
+}
+
+#[test]
+fn a_piston_acceleration_too_short_to_draw_is_said_so() {
+    // Review 2026-11w: near 90° at a long rod c′a′ (17.99 ft/s² at
+    // l = 55.4 r, 90.47°) is too short to be drawn and was never drawn,
+    // the joint letter "c′, a′" alone telling of it, and the notes did
+    // not say why. They say so now, and only there.
+    const SAID: &str = "too short to be drawn at this scale";
+    for (rod, deg) in [(55.4, 90.47), (55.4, 270.15), (51.1, 90.38)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        assert!(
+            element(&svg, "acceleration-c2a2").is_none(),
+            "l = {rod} r, {deg}°: c′a′ drawn"
+        );
+        assert!(
+            words(&svg).contains(SAID),
+            "l = {rod} r, {deg}°: c′a′'s shortness not said"
+        );
+    }
+    for (rod, deg) in [(4.0, 45.0), (55.4, 0.0)] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        assert!(!words(&svg).contains(SAID), "l = {rod} r, {deg}°");
+    }
+}

@@ -373,13 +373,11 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
             },
         );
     });
+    let foot = foot(ctx, canvas);
     canvas.push(
         format!("bearing-{}", ctx.letter(Named::CrankCentre)),
         Role::Frame,
-        Shape::Bearing {
-            centre: c,
-            foot: foot(ctx, canvas),
-        },
+        Shape::Bearing { centre: c, foot },
     );
 
     // Guides with their hatching on the outside, under the block over
@@ -404,12 +402,117 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
         },
     );
     canvas.segment("link-crank", Role::Link, c, b);
-    canvas.segment("link-rod", Role::Link, b, a);
+    match rod_beside_crank(canvas, (c, b, a), foot) {
+        Some(points) => {
+            canvas.push(
+                "link-rod",
+                Role::Link,
+                Shape::Polyline {
+                    points,
+                    closed: false,
+                },
+            );
+        }
+        None => canvas.segment("link-rod", Role::Link, b, a),
+    }
     canvas.with_part(Part::Joint, |canvas| {
         canvas.point(ctx.letter(Named::CrankCentre), c, Marker::Pin, c);
         canvas.point(ctx.letter(Named::CrankPin), b, Marker::Pin, c);
         canvas.point(ctx.letter(Named::Slider), a, Marker::Pin, c);
     });
+}
+
+/// How far (page units) the rod is drawn beside the crank where it lies
+/// over it: a link's width and paper that reads as a gap between two
+/// links, as Fig. 60 draws a rod folded back over its crank.
+const ROD_BESIDE: f64 = 10.0;
+/// How far along the crank (page units) the rod drawn beside it turns
+/// in to its line at each end: twice [`ROD_BESIDE`], a slope that reads
+/// as a bend, not a step.
+const ROD_JOG: f64 = 2.0 * ROD_BESIDE;
+/// The crank lies under the rod where the crank centre stands nearer the
+/// rod than this (page units; a link's width and a little paper): the
+/// two leave B along one line and read as one.
+const UNDER_ROD: f64 = 5.0;
+/// The shortest crank (page units) the rod is drawn beside: on a shorter
+/// one the bend would be most of it (a crank a speck on a long rod is
+/// shown in a detail, where it is drawn long).
+const BESIDE_LEAST: f64 = 40.0;
+
+/// The rod's line where the crank lies under it (the crank centre C
+/// within [`UNDER_ROD`] of the rod B A: an in-line engine's rod runs over
+/// C at 180°, and its crank, wholly under it, was not seen, the rod
+/// appearing pinned at C, in the crank's detail of a long rod too): from
+/// B turned out [`ROD_BESIDE`] beside the crank, on the side away from
+/// C's bearing, past C's pin, and back in to its line on to A (clipped to
+/// the canvas's frame). `None` where the crank does not lie under it, or
+/// is shorter on the page than [`BESIDE_LEAST`], or where A stands
+/// within [`BESIDE_LEAST`] of the rod's return to its line, or that
+/// return is past the rod's middle.
+fn rod_beside_crank(
+    canvas: &Canvas,
+    (c, b, a): (Point, Point, Point),
+    foot: Foot,
+) -> Option<Vec<Point>> {
+    let crank = (b - c).norm();
+    let length = (a - b).norm();
+    if canvas.page(crank) < BESIDE_LEAST
+        || length <= 0.0
+        || canvas.page(crate::geom::point_segment_distance(c, b, a)) >= UNDER_ROD
+    {
+        return None;
+    }
+    let u = (a - b) / length;
+    let normal = Vector::new(-u.y, u.x);
+    // Away from the bearing's foot on the page (world y up).
+    let out = canvas.transform().apply_vector(normal);
+    let n = if out.dot(&foot.axes().0) > 0.0 {
+        -normal
+    } else {
+        normal
+    };
+    let shift = n * canvas.world(ROD_BESIDE);
+    let jog = canvas.world(ROD_JOG).min(crank / 3.0);
+    // Past C's pin by the jog, back on the line short of A.
+    let past = (c - b).dot(&u) + canvas.world(crate::scene::canvas::UNDER_PIN);
+    let back = past + jog;
+    // A short rod folded back over its crank (l = 1.05 r at 160°, 1.2 r
+    // at 180°) ends by C: drawn beside the crank it ran into the block
+    // and the guides. Its middle, where its value's letter is set, kept
+    // on its line: beside the crank to its middle (l = 1.5 r, e = 0.45 r
+    // at 244°), the rod's l was set on the crank.
+    if canvas.page(length - back) < BESIDE_LEAST || back > 0.5 * length {
+        return None;
+    }
+    let at = |s: f64| b + u * s;
+    let mut points = vec![b, at(jog) + shift, at(past) + shift, at(back)];
+    points.extend(canvas.frame().clip_segment(at(back), a).map(|(_, end)| end));
+    Some(points)
+}
+
+/// Where the point `p` of the rod's line is drawn on the rod as drawn
+/// ([`rod_beside_crank`]): beside the crank with the rod where the rod is
+/// drawn there (Q, the rod's mid-point, over the crank of a short rod at
+/// 180° stood on the crank, not on the rod); `p` itself elsewhere, or off
+/// the rod.
+pub(crate) fn on_rod_as_drawn(ctx: &LayerCtx, canvas: &Canvas, p: Point) -> Point {
+    let pose = ctx.main.pose();
+    let (c, b, a) = (pose.c(), pose.b(), pose.a());
+    let Some(path) = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas)) else {
+        return p;
+    };
+    let length = (a - b).norm();
+    if canvas.page(crate::geom::point_segment_distance(p, b, a)) >= 0.5 {
+        return p;
+    }
+    let u = (a - b) / length;
+    let s = (p - b).dot(&u);
+    (path.iter().zip(path.iter().skip(1)))
+        .find_map(|(&p0, &p1)| {
+            let (s0, s1) = ((p0 - b).dot(&u), (p1 - b).dot(&u));
+            (s1 > s0 && (s0..=s1).contains(&s)).then(|| p0 + (p1 - p0) * ((s - s0) / (s1 - s0)))
+        })
+        .unwrap_or(p)
 }
 
 /// The ghost poses: their links, and their crank pins and cross-heads

@@ -241,7 +241,9 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     if off_rod(ctx) {
         canvas.link("rod-plate", vec![pose.a(), coupler, pose.b()]);
     }
-    canvas.point(ctx.letter(Coupler), coupler, Marker::Dot, pose.c());
+    // On the rod as drawn: beside the crank where the rod is drawn so.
+    let dot = super::mechanism::on_rod_as_drawn(ctx, canvas, coupler);
+    canvas.point(ctx.letter(Coupler), dot, Marker::Dot, pose.c());
     let hue = canvas.set_hue(Some(Hue::Velocity));
     let v = placed.velocity_points();
     velocity(ctx, canvas, &v);
@@ -766,9 +768,14 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             sig(w * w * acc.rod_angular_acceleration_ratio().abs())
         )),
         RichText::parse(&format!(
-            "{o2s}{a2} = {} {u}: the piston’s acceleration {} {u}/s²; {o2s}{q2} = {} {u}: *{}*’s, {} {u}/s².",
+            "{o2s}{a2} = {} {u}: the piston’s acceleration {} {u}/s²{}; {o2s}{q2} = {} {u}: *{}*’s, {} {u}/s².",
             len(acc.slider_acceleration_ratio()),
             sig(w * w * acc.slider_acceleration_ratio().abs()),
+            if too_short_to_draw(ctx, &placed) {
+                ", too short to be drawn at this scale"
+            } else {
+                ""
+            },
             len(aq),
             ctx.letter(Coupler),
             sig(w * w * aq)
@@ -784,6 +791,18 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         )));
     }
     notes
+}
+
+/// Whether the piston's acceleration c′a′, not nil, is drawn shorter
+/// than [`MIN_ARROW`] and so not drawn (near 90° at a long rod, 0.26
+/// units at l = 55.4 r, 90.47°): the notes say so, else only the joint
+/// letter "c′, a′" told of it. Not known before the page scale is.
+fn too_short_to_draw(ctx: &LayerCtx, placed: &Placed) -> bool {
+    let p = placed.acceleration_points();
+    let length = (p.a - p.o).norm();
+    ctx.sizes
+        .page_scale
+        .is_some_and(|scale| length > 0.0 && length * scale < MIN_ARROW)
 }
 
 #[cfg(test)]
