@@ -394,3 +394,44 @@ fn path_points(svg: &str, id: &str) -> Vec<(f64, f64)> {
         .collect();
     numbers.chunks(2).map(|p| (p[0], p[1])).collect()
 }
+
+/// The offset's extension line from the crank centre (Ng's Fig. 1 at
+/// l = 3.77 r, e = −1.56 r, 90.04°) ran straight through O's letter and
+/// across the torque arc about O: it starts past both. Its neighbours
+/// (89.04°, l = 3.72 r) and the offset's other sign alike.
+#[test]
+fn the_offset_s_extension_line_keeps_off_o_s_letter_and_the_torque_arc() {
+    for (rod, offset, degrees) in [
+        (3.77, -1.56, 90.04),
+        (3.77, -1.56, 89.04),
+        (3.72, -1.56, 90.04),
+        (3.77, 1.56, 90.04),
+    ] {
+        let at = format!("l = {rod}, e = {offset}, {degrees}°");
+        let plate = plate_at("ng-fig-1-torque", rod, offset, degrees);
+        let main = &plate.panels[0];
+        let o = plate.point(main, "O").expect("no O");
+        let extension: Vec<&Seg> = segs(main, "dimension-e")
+            .into_iter()
+            .filter(|s| (s.0.1 - o.1).abs() < 0.5 && (s.1.1 - o.1).abs() < 0.5)
+            .collect();
+        assert!(!extension.is_empty(), "{at}: no extension line from O");
+        let letter = label(main, "label-O");
+        let arc = segs(main, "torque-T");
+        assert!(!arc.is_empty(), "{at}: no torque arc");
+        for s in &extension {
+            let clear = letter.rect.distance_to_seg(s);
+            assert!(
+                clear >= 2.0,
+                "{at}: the extension line {clear:.1} from O's letter"
+            );
+            for a in &arc {
+                let near = s.distance_to(a.0).min(s.distance_to(a.1));
+                assert!(
+                    !s.meets(a) && near >= 3.0,
+                    "{at}: the extension line {near:.1} from the torque arc"
+                );
+            }
+        }
+    }
+}
