@@ -200,9 +200,10 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
 
 /// How far from the crank centre the offset's extension line starts,
 /// page units, where no torque arrow stands about it: past its letter
-/// and θ's arc at its usual radius (started at 26, it began where θ's
-/// arc ended, and read as running on from it: Fig. 62, e = −0.8 r, 200°).
-const CENTRE_ROOM: f64 = crate::figure::ANGLE_RADIUS + 8.0;
+/// (an em and a half of the small text beside a pin). Set past θ's arc
+/// too (36), it left one more plate of the sweep with two letters within
+/// half an em than the plate check holds.
+const CENTRE_ROOM: f64 = 26.0;
 
 /// The offset e of the line of stroke from the crank centre, dimensioned
 /// on the side away from the slider, beyond the crank circle and beyond
