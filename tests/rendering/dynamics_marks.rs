@@ -344,3 +344,94 @@ fn the_cg_detail_letters_c_and_g_each_alone() {
         assert!(attr(&svg, "cg-point-G", "cx").is_some(), "no dot at G {at}");
     }
 }
+
+/// F_i at a short rod's dead centre (l = 1.07 r at 180°: CG 0.065 r)
+/// was a bare arrowhead on the block's corner of the main view and
+/// missing from the ×4 detail that holds the cross-head. It is drawn in
+/// that detail instead, its shaft at least as long as its head, its
+/// tail or tip on a face of the enlarged block, inside the detail's
+/// border; the main view draws no stub of it. Its neighbours (180° ± 1°,
+/// l = 1.12 r) alike.
+#[test]
+fn a_short_inertia_force_is_drawn_in_the_detail_at_the_cross_head() {
+    use crate::common::{arrow_ends, bounds_of};
+    for (rod, degrees) in [(1.07, 180.0), (1.07, 179.0), (1.07, 181.0), (1.12, 180.0)] {
+        let svg = inertia_svg(rod, degrees);
+        assert!(
+            !svg.contains("id=\"force-inertia\""),
+            "l = {rod}, {degrees}°: a stub of F_i on the main view"
+        );
+        let (tail, tip) = arrow_ends(&svg, "detail-force-inertia");
+        let length = (tip.0 - tail.0).hypot(tip.1 - tail.1);
+        assert!(
+            length >= 20.0,
+            "l = {rod}, {degrees}°: F_i {length:.1} long"
+        );
+        let (x0, x1, y0, y1) = bounds_of(&path_points(&svg, "detail-block-slider"));
+        let on_face = |p: (f64, f64)| {
+            ((p.0 - x0).abs() < 0.5 || (p.0 - x1).abs() < 0.5) && p.1 > y0 && p.1 < y1
+        };
+        assert!(
+            on_face(tail) || on_face(tip),
+            "l = {rod}, {degrees}°: F_i {tail:?}–{tip:?} off the block {x0}–{x1}, {y0}–{y1}"
+        );
+        let border = bounds_of(&path_points(&svg, "detail-border"));
+        for p in [tail, tip] {
+            assert!(
+                p.0 > border.0 && p.0 < border.1 && p.1 > border.2 && p.1 < border.3,
+                "l = {rod}, {degrees}°: F_i's end {p:?} outside the detail"
+            );
+        }
+    }
+}
+
+/// The points of the `d` of the path `id` (not a group), page units.
+fn path_points(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let d = crate::common::attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
+    let numbers: Vec<f64> = d
+        .split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace())
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
+/// The offset's extension line from the crank centre (Ng's Fig. 1 at
+/// l = 3.77 r, e = −1.56 r, 90.04°) ran straight through O's letter and
+/// across the torque arc about O: it starts past both. Its neighbours
+/// (89.04°, l = 3.72 r) and the offset's other sign alike.
+#[test]
+fn the_offset_s_extension_line_keeps_off_o_s_letter_and_the_torque_arc() {
+    for (rod, offset, degrees) in [
+        (3.77, -1.56, 90.04),
+        (3.77, -1.56, 89.04),
+        (3.72, -1.56, 90.04),
+        (3.77, 1.56, 90.04),
+    ] {
+        let at = format!("l = {rod}, e = {offset}, {degrees}°");
+        let plate = plate_at("ng-fig-1-torque", rod, offset, degrees);
+        let main = &plate.panels[0];
+        let o = plate.point(main, "O").expect("no O");
+        let extension: Vec<&Seg> = segs(main, "dimension-e")
+            .into_iter()
+            .filter(|s| (s.0.1 - o.1).abs() < 0.5 && (s.1.1 - o.1).abs() < 0.5)
+            .collect();
+        assert!(!extension.is_empty(), "{at}: no extension line from O");
+        let letter = label(main, "label-O");
+        let arc = segs(main, "torque-T");
+        assert!(!arc.is_empty(), "{at}: no torque arc");
+        for s in &extension {
+            let clear = letter.rect.distance_to_seg(s);
+            assert!(
+                clear >= 2.0,
+                "{at}: the extension line {clear:.1} from O's letter"
+            );
+            for a in &arc {
+                let near = s.distance_to(a.0).min(s.distance_to(a.1));
+                assert!(
+                    !s.meets(a) && near >= 3.0,
+                    "{at}: the extension line {near:.1} from the torque arc"
+                );
+            }
+        }
+    }
+}

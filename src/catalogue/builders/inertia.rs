@@ -192,16 +192,22 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool, Opt
         Some(_) => None,
     };
     let mut items = inertia_arrow(main, &pose, f, scale, arc_radius);
-    let fi_left_out = items.is_empty();
+    // Too short to read on the main view (a bare arrowhead on the block's
+    // corner at a short rod's dead centre, l = 1.07 r at 180°), F_i is
+    // drawn in the first detail that holds it whole, enlarged, instead.
+    let enlarged = match shaft_length(&items) * scale < READABLE {
+        true => details.iter().enumerate().find_map(|(k, detail)| {
+            enlarged_arrow(detail, &pose, f, home == Some(k)).map(|items| (k, items))
+        }),
+        false => None,
+    };
+    if enlarged.is_some() {
+        items.clear();
+    }
+    let fi_left_out = items.is_empty() && enlarged.is_none();
     if home.is_none() {
         // The arc keeps clear of F_i's shaft as of the block's edges.
-        let shaft: Vec<(Point, Point)> = items
-            .iter()
-            .filter_map(|i| match i.shape {
-                Shape::Arrow { from, to } => Some((from, to)),
-                _ => None,
-            })
-            .collect();
+        let shaft = shafts(&items);
         items.extend(arc(&shaft));
     }
     sheet.panel(main.clone().with_items(items));
@@ -210,15 +216,21 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool, Opt
             // Its gap and letter below C, as at any pose: the enlarged
             // block is drawn about C, and a gap facing its nearer face
             // would set T between A's and C's letters.
-            let mut own =
-                torque_arc_clear(detail, pose.c(), pose.b(), None, f.at.crank_effort, &[]);
-            for item in &mut own {
-                item.id.insert_str(0, "detail-");
-            }
-            own
+            let shaft = match &enlarged {
+                Some((j, arrow)) if *j == k => shafts(arrow),
+                _ => Vec::new(),
+            };
+            torque_arc_clear(detail, pose.c(), pose.b(), None, f.at.crank_effort, &shaft)
         } else {
             Vec::new()
         };
+        let mut own: Vec<Item> = match &enlarged {
+            Some((j, arrow)) if *j == k => arrow.iter().cloned().chain(own).collect(),
+            _ => own,
+        };
+        for item in &mut own {
+            item.id.insert_str(0, "detail-");
+        }
         sheet.panel(detail.clone().with_items(own));
     }
     let g = f.points.g();
@@ -324,6 +336,62 @@ fn cg_detail(
     super::inversions::border(&mut plot, "cg");
     sheet.detail(plot);
     Ok((rect.max().y, Some(magnification)))
+}
+
+/// F_i shorter than this on the main view (page units: a head and a
+/// shaft of its length) is drawn in a detail that holds it whole instead.
+const READABLE: f64 = 2.0 * ARROW_LENGTH;
+
+/// The world segments of the arrows among `items` (F_i's shaft).
+fn shafts(items: &[Item]) -> Vec<(Point, Point)> {
+    items
+        .iter()
+        .filter_map(|i| match i.shape {
+            Shape::Arrow { from, to } => Some((from, to)),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The length of the longest arrow among `items`, world units (none:
+/// zero).
+fn shaft_length(items: &[Item]) -> f64 {
+    shafts(items)
+        .iter()
+        .map(|(p, q)| (q - p).norm())
+        .fold(0.0, f64::max)
+}
+
+/// F_i in the detail `panel` (which draws the crank effort's arc about
+/// C where `holds_arc`), clear of that arc: where the panel holds A and
+/// the whole arrow, at least [`READABLE`] long there, else none.
+fn enlarged_arrow(
+    panel: &Panel,
+    pose: &crate::mechanism::Pose,
+    f: &Forces,
+    holds_arc: bool,
+) -> Option<Vec<Item>> {
+    let t = panel.transform();
+    let scale = t.scale();
+    let r = panel.rect();
+    if !r.contains(t.apply(pose.a())) {
+        return None;
+    }
+    let arc_radius = holds_arc
+        .then(|| {
+            torque_arc_clear(panel, pose.c(), pose.b(), None, f.at.crank_effort, &[])
+                .iter()
+                .find_map(|i| match i.shape {
+                    Shape::Arc { radius, .. } => Some(radius * scale),
+                    _ => None,
+                })
+        })
+        .flatten();
+    let items = inertia_arrow(panel, pose, f, scale, arc_radius);
+    let whole = shafts(&items)
+        .iter()
+        .all(|(p, q)| r.contains(t.apply(*p)) && r.contains(t.apply(*q)));
+    (whole && shaft_length(&items) * scale >= READABLE).then_some(items)
 }
 
 /// Whether the detail `panel` shows the crank centre `c` with the crank

@@ -198,6 +198,13 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
     );
 }
 
+/// How far from the crank centre the offset's extension line starts,
+/// page units, where no torque arrow stands about it: past its letter
+/// (an em and a half of the small text beside a pin). Set past θ's arc
+/// too (36), it left one more plate of the sweep with two letters within
+/// half an em than the plate check holds.
+const CENTRE_ROOM: f64 = 26.0;
+
 /// The offset e of the line of stroke from the crank centre, dimensioned
 /// on the side away from the slider, beyond the crank circle and beyond
 /// whatever the constructions draw on that side (Kisch's semicircle and
@@ -211,14 +218,25 @@ pub(crate) fn offset(ctx: &LayerCtx, canvas: &mut Canvas) {
     }
     let reach = ctx.sizes.fitted.unwrap_or_else(|| super::fit::frame(ctx));
     let beyond = r.max(-reach.min().x);
+    // The extension lines start past what stands about the crank centre
+    // on that side: its letter, and the torque arrow about it where one
+    // is drawn (at l = 3.77 r, e = −1.56 r, 90.04° the line from the
+    // centre struck through O's letter and crossed the arc). They stay
+    // within the crank circle's reach, so that each keeps a length.
+    let torque = ctx.scene.has(crate::scene::Layer::Torque) && !canvas.is_bare(Point::origin());
+    let crowded = match torque {
+        true => super::torque::TORQUE_REACH,
+        false => CENTRE_ROOM,
+    };
+    let start = canvas.world(crowded).min(beyond);
     canvas.push(
         "dimension-e",
         Role::Dimension,
         Shape::Dimension {
-            from: Point::origin(),
-            to: Point::new(0.0, e),
+            from: Point::new(-start, 0.0),
+            to: Point::new(-start, e),
             side: Vector::new(-1.0, 0.0),
-            offset: canvas.page(beyond) + 18.0,
+            offset: canvas.page(beyond - start) + 18.0,
             text: RichText::italic("e"),
         },
     );
