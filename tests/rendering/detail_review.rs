@@ -269,15 +269,6 @@ fn path_of(svg: &str, id: &str) -> Vec<(f64, f64)> {
     numbers.chunks(2).map(|p| (p[0], p[1])).collect()
 }
 
-/// The ends and controls of the path with `id`, page units.
-fn path_of(svg: &str, id: &str) -> Vec<(f64, f64)> {
-    let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
-    let numbers: Vec<f64> = (d.split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace()))
-        .filter_map(|w| w.parse().ok())
-        .collect();
-    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
-}
-
 /// Kisch's detail at a long rod near 90° and Bennett's near 270° (issue
 /// 38, its 2026-11 review): no thin construction line of the detail runs
 /// beside the crank or the rod, its middle half within 6 units of it,
