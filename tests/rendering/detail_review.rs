@@ -212,3 +212,114 @@ fn kisch_perpendicular_reaches_f_beyond_g() {
         "no line ends at F {f:?}: {lines:?}"
     );
 }
+
+/// Kisch's detail at a rod of 1.02 cranks by the outer dead centre
+/// (issue 38, its 2026-11 review): the detail about A, F and G holds H,
+/// 33 units above them on the main view, whose letter, right-angle mark
+/// and the detail's tag were jammed over the block while the detail's
+/// lines ran off its frame towards it; and the frame on the main view,
+/// grown to the guides, holds the block and stands clear of the guides'
+/// hatching, where it ran along the hatching's ends about the block and
+/// read as a second block.
+#[test]
+fn kisch_detail_holds_h_and_its_frame_stands_clear_of_the_guides() {
+    for deg in [0.0, 1.0] {
+        let svg = svg(FigureName::Fig66Kisch, (1.0, 1.02, 0.0, deg));
+        let at = format!("l 1.02 at {deg}°");
+        let h = (markers(&svg).into_iter())
+            .find(|(name, _, _)| name == "H")
+            .unwrap_or_else(|| panic!("{at}: the detail leaves out H"));
+        let (bx0, bx1, by0, by1) = common::bounds_of(&path_of(&svg, "detail-border"));
+        let (hx, hy) = h.1;
+        assert!(
+            (bx0..=bx1).contains(&hx) && (by0..=by1).contains(&hy),
+            "{at}: H at ({hx}, {hy}) outside the detail ({bx0}..{bx1}, {by0}..{by1})"
+        );
+        let frame = common::bounds_of(&path_of(&svg, "detail-frame"));
+        let block = common::bounds_of(&path_of(&svg, "block-slider"));
+        assert!(
+            frame.0 < block.0 - 1.0
+                && frame.1 > block.1 + 1.0
+                && frame.2 < block.2 - 1.0
+                && frame.3 > block.3 + 1.0,
+            "{at}: the frame {frame:?} does not stand about the block {block:?}"
+        );
+        let upper = common::bounds_of(&path_of(&svg, "hatch-guide-upper"));
+        let lower = common::bounds_of(&path_of(&svg, "hatch-guide-lower"));
+        assert!(
+            frame.2 < upper.2 - 1.0 && frame.3 > lower.3 + 1.0,
+            "{at}: the frame's top {} or bottom {} on the guides' hatching \
+             ({}..{} above, {}..{} below)",
+            frame.2,
+            frame.3,
+            upper.2,
+            upper.3,
+            lower.2,
+            lower.3
+        );
+    }
+}
+
+/// The ends and controls of the path with `id`, page units.
+fn path_of(svg: &str, id: &str) -> Vec<(f64, f64)> {
+    let d = attr(svg, id, "d").unwrap_or_else(|| panic!("no {id}"));
+    let numbers: Vec<f64> = (d.split(|c: char| c.is_ascii_alphabetic() || c.is_whitespace()))
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
+/// Kisch's detail at a long rod near 90° and Bennett's near 270° (issue
+/// 38, its 2026-11 review): no thin construction line of the detail runs
+/// beside the crank or the rod, its middle half within 6 units of it,
+/// where the perpendicular through C and Kisch's HG drew the crank
+/// double; and Bennett's right angles at L and F, a few units apart on
+/// the rod, are not both drawn within a mark's two sides of each other,
+/// where they drew one double box.
+#[test]
+fn no_construction_line_doubles_a_link_and_no_right_angles_overlap() {
+    let cases = [
+        (FigureName::Fig66Kisch, (1.0, 26.6, 0.0, 89.22)),
+        (FigureName::Fig66Kisch, (1.0, 43.1, 0.0, 270.36)),
+        (FigureName::BennettConstruction, (1.0, 55.6, 0.0, 269.02)),
+        (FigureName::BennettConstruction, (1.0, 55.6, 0.0, 89.39)),
+    ];
+    for (name, engine) in cases {
+        let svg = svg(name, engine);
+        let at = format!("{name:?} at {engine:?}");
+        let links: Vec<_> = ["detail-link-crank", "detail-link-rod"]
+            .iter()
+            .map(|id| path_of(&svg, id))
+            .collect();
+        let key = "id=\"detail-line-";
+        let mut from = 0;
+        while let Some(found) = svg[from..].find(key) {
+            let start = from + found + 4;
+            let id = &svg[start..start + svg[start..].find('"').unwrap()];
+            from = start;
+            if attr(&svg, id, "class").is_none_or(|c| c != "construction") {
+                continue;
+            }
+            let line = path_of(&svg, id);
+            let (p, q) = (line[0], line[line.len() - 1]);
+            // Its middle half, clear of the ends a line is produced by.
+            let at_t = |t: f64| (p.0 + t * (q.0 - p.0), p.1 + t * (q.1 - p.1));
+            for link in &links {
+                let off = |t| common::segment_distance(at_t(t), link[0], link[1]);
+                let most = [0.25, 0.5, 0.75].map(off).into_iter().fold(0.0, f64::max);
+                assert!(
+                    most >= 6.0,
+                    "{at}: {id} runs along a link, its middle half within {most:.1} units of it"
+                );
+            }
+        }
+        let vertex = |id: &str| attr(&svg, id, "d").map(|_| path_of(&svg, id)[1]);
+        if let (Some(l), Some(f)) = (vertex("detail-angle-L"), vertex("detail-angle-F")) {
+            let apart = (l.0 - f.0).hypot(l.1 - f.1);
+            assert!(
+                apart >= 20.0,
+                "{at}: the right angles at L and F {apart:.1} units apart"
+            );
+        }
+    }
+}

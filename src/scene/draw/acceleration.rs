@@ -2,7 +2,7 @@
 //! acceleration constructions.
 
 use super::LayerCtx;
-use super::velocity::{basics_d, basics_e};
+use super::velocity::{along_link, basics_d, basics_e};
 use crate::construct::{AccelerationPoints, Kisch};
 use crate::figure::{Role, Shape};
 use crate::geom::{Point, Vector};
@@ -15,7 +15,13 @@ fn fg(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, 
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let (f, g) = (p.f(), p.g());
-    canvas.segment(ctx.line(from_name, G), Role::Construction, from, g);
+    // Left out where it lies along a link (Kisch's HG along the crank
+    // near 90°, H by B and G by C), with F's right angle, which would
+    // mark a line not drawn.
+    let drawn = !along_link(ctx, canvas, from, g);
+    if drawn {
+        canvas.segment(ctx.line(from_name, G), Role::Construction, from, g);
+    }
     // Kisch's perpendicular from H meets the line through C at G before
     // it meets AB at F where F lies beyond G from H (an offset engine at
     // its outer dead centre): carried on to F, so that a drawn line meets
@@ -29,7 +35,7 @@ fn fg(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints, from: Point, 
     } else {
         b - f
     };
-    if (g - f).norm() > 0.0 {
+    if drawn && (g - f).norm() > 0.0 {
         canvas.push(
             "angle-F",
             Role::Construction,
@@ -229,9 +235,23 @@ pub(crate) fn bennett(ctx: &LayerCtx, canvas: &mut Canvas) {
     let pose = ctx.main.pose();
     let (a, c) = (pose.a(), pose.c());
     let (l, k, f) = (bn.l(), bn.k(), bn.points().f());
-    canvas.segment(ctx.line(L, K), Role::Construction, l, k);
-    canvas.segment(ctx.line(K, F), Role::Construction, k, f);
-    right_angle(canvas, "angle-L", l, a - l, k - l);
+    // LK and KF left out where they lie along a link (the crank near
+    // 90°, L and F by B, K by C), LK with its right angle; L's right
+    // angle left out too where it stands within a mark's two sides of
+    // F's, which marks the same right angle with AB (at a long rod L and
+    // F a few units apart on the rod, the two marks drew one double box).
+    let lk = !along_link(ctx, canvas, l, k);
+    if lk {
+        canvas.segment(ctx.line(L, K), Role::Construction, l, k);
+    }
+    if !along_link(ctx, canvas, k, f) {
+        canvas.segment(ctx.line(K, F), Role::Construction, k, f);
+    }
+    let f_marked = !along_link(ctx, canvas, f, bn.points().g());
+    let by_f = canvas.page((l - f).norm()) < 2.0 * crate::figure::RIGHT_ANGLE;
+    if lk && !(by_f && f_marked) {
+        right_angle(canvas, "angle-L", l, a - l, k - l);
+    }
     canvas.point(ctx.letter(L), l, Marker::Dot, c);
     canvas.point(ctx.letter(K), k, Marker::Dot, c);
     fg(ctx, canvas, bn.points(), f, F);

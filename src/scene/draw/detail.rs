@@ -48,6 +48,7 @@
 //! a crank not to be seen.
 
 use super::LayerCtx;
+use crate::figure::HATCH_DEPTH;
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
 use crate::scene::canvas::UNDER_PIN;
@@ -203,19 +204,44 @@ fn with_guides(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail 
     if !(across && meets) || holds {
         return d;
     }
-    // The frame [`ABOUT_BLOCK_MAIN`] off the guides on the main view at
-    // least, told from them there as a crank's detail grown to the block.
-    let room = (ABOUT_BLOCK_MAIN / scale - pad).max(0.0);
-    if (2.0 * (h + room)) * page > GUIDES_EXTENT {
-        return d;
-    }
+    // The frame [`ABOUT_HATCH`] off the guides' hatching on the main
+    // view at least: [`ABOUT_BLOCK_MAIN`] off the guides alone, it ran
+    // along the hatching's ends and, as near the block's ends, read as a
+    // second block about it.
+    let room = |page: f64| ((ABOUT_HATCH + HATCH_DEPTH) / scale - PAD / page).max(0.0);
+    let tall = |page: f64| 2.0 * (h + room(page)) * page > GUIDES_EXTENT;
+    // Too tall at its magnification, the detail is lowered to the step
+    // that holds the guides, while its closest lettered points still
+    // stand [`CROWD`] apart there: grown at ×8 to the guides, with its
+    // frame on their hatching, Kisch's detail at a rod of 1.02 cranks
+    // read as a second block; not grown, its frame crossed the block.
+    let d = match tall(page) {
+        false => d,
+        true => {
+            let closest = closest_within(ctx, &d.region, scale);
+            let lower = steps()
+                .rev()
+                .find(|m| *m <= d.magnification && !tall(scale * m));
+            match lower {
+                Some(m) if closest * m >= APART => Detail {
+                    magnification: m,
+                    ..d
+                },
+                _ => return d,
+            }
+        }
+    };
+    let page = scale * d.magnification;
+    let room = room(page);
     let (lo, hi) = (
         Point::new(lo.x, lo.y.min(a.y - h - room)),
         Point::new(hi.x, hi.y.max(a.y + h + room)),
     );
     // The block whole, where its length fits the page at the detail's
-    // magnification.
-    let (x0, x1) = (lo.x.min(a.x - l - room), hi.x.max(a.x + l + room));
+    // magnification, the frame [`ABOUT_BLOCK_MAIN`] off its ends (which
+    // carry no hatching).
+    let side = (ABOUT_BLOCK_MAIN / scale - PAD / page).max(0.0);
+    let (x0, x1) = (lo.x.min(a.x - l - side), hi.x.max(a.x + l + side));
     let whole = (x1 - x0) * page + 2.0 * PAD <= max_width;
     let (lo, hi) = match whole {
         true => (Point::new(x0, lo.y), Point::new(x1, hi.y)),
@@ -225,6 +251,23 @@ fn with_guides(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail 
         region: Frame::new(lo, hi),
         ..d
     }
+}
+
+/// The least distance, page units on the main view at `scale`, between
+/// two lettered points of the construction within `region` that a
+/// detail separates (at least [`CROWD`] / [`MOST_CROWDED`] apart: those
+/// closer are taken as one); infinite where there are none.
+fn closest_within(ctx: &LayerCtx, region: &Frame, scale: f64) -> f64 {
+    let (core, h) = points(ctx);
+    let mut lettered = [core.as_slice(), &[ctx.main.pose().a()]].concat();
+    lettered.extend(h);
+    let (lo, hi) = (region.min(), region.max());
+    let inside = |p: &Point| p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y;
+    lettered.retain(inside);
+    (within(&lettered, CROWD, scale).iter())
+        .map(|&(_, _, d)| d)
+        .filter(|d| *d >= CROWD / MOST_CROWDED)
+        .fold(f64::INFINITY, f64::min)
 }
 
 /// Page units (in the detail) a joint letter takes for each name after
@@ -315,6 +358,11 @@ const ABOUT_BLOCK: f64 = 14.0;
 /// crank's detail grown to it keeps: its frame there is told from the
 /// block's outline.
 const ABOUT_BLOCK_MAIN: f64 = 6.0;
+
+/// The least room (page units on the main view) a detail grown to the
+/// guides ([`with_guides`]) keeps beyond their hatching's ends: a line's
+/// gap clear of the strokes.
+const ABOUT_HATCH: f64 = 3.0;
 
 /// The larger side, page units, a crank's detail grown to the block
 /// keeps within (the magnification step at or below it): held within
@@ -408,7 +456,9 @@ fn chosen(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
     } else {
         0.0
     };
-    let crowding = crowded(&lettered, reach, scale, max_width);
+    // Kisch's H joins a crowd by it (its lines run to it from F, G and A).
+    let by_crowd = h.filter(|_| scene.has(Layer::Kisch));
+    let crowding = crowded(&lettered, by_crowd, reach, scale, max_width);
     if !readable {
         let near = neighbours(&core, &lettered, scale);
         let all = whole(&core, h, &near, core_extent, scale, max_width);
@@ -545,19 +595,38 @@ fn crowding_points(pts: &[Point], within: f64) -> usize {
 /// A, E by C, a rod's length away) the box of the largest cluster of them
 /// ([`largest_cluster`]), and where no cluster holds [`CLUSTER`] points
 /// the largest of those whose pairs lie within [`NEIGHBOURS`] of each
-/// other; see [`about`].
-fn crowded(lettered: &[Point], reach: f64, scale: f64, max_width: f64) -> Crowding {
+/// other; see [`about`]. Each takes in `h`, the point the construction
+/// finds, where it stands by the crowd ([`with_h`]).
+fn crowded(
+    lettered: &[Point],
+    h: Option<Point>,
+    reach: f64,
+    scale: f64,
+    max_width: f64,
+) -> Crowding {
     let pairs = crowding_pairs(lettered, scale);
     if pairs.is_empty() {
         return Crowding::Apart;
     }
     let of = clusters(lettered.len(), &pairs);
     let every = crowd_of(lettered, &pairs, &of, None);
-    let detail = (every.and_then(|(m, closest)| about(&m, closest, reach, scale, max_width)))
+    // The crowd with H where the detail holding it still sets the crowd
+    // [`APART`] (at the inner dead centre of a rod of 1.03 cranks, A by
+    // C, H took the detail down to ×6, where C's joint letter found no
+    // room clear of Kisch's arc); else the crowd alone.
+    let about = |m: &[Point], closest: f64| {
+        let all = with_h(m, h, scale);
+        let with = (all.len() > m.len())
+            .then(|| about(&all, closest, reach, scale, max_width, true))
+            .flatten()
+            .filter(|d| closest * d.magnification >= APART);
+        with.or_else(|| about(m, closest, reach, scale, max_width, false))
+    };
+    let detail = (every.and_then(|(m, closest)| about(&m, closest)))
         .or_else(|| {
             let c = largest_cluster(&pairs, &of)?;
             let (m, closest) = crowd_of(lettered, &pairs, &of, Some(c))?;
-            about(&m, closest, reach, scale, max_width)
+            about(&m, closest)
         })
         .or_else(|| {
             // No cluster is large enough: near a dead centre the pairs
@@ -566,7 +635,7 @@ fn crowded(lettered: &[Point], reach: f64, scale: f64, max_width: f64) -> Crowdi
             let linked = clusters(lettered.len(), &within(lettered, NEIGHBOURS, scale));
             let c = largest_cluster(&pairs, &linked)?;
             let (m, closest) = crowd_of(lettered, &pairs, &linked, Some(c))?;
-            about(&m, closest, reach, scale, max_width)
+            about(&m, closest)
         });
     match detail {
         Some(d) => Crowding::Separable(d),
@@ -574,23 +643,53 @@ fn crowded(lettered: &[Point], reach: f64, scale: f64, max_width: f64) -> Crowdi
     }
 }
 
+/// `members`, crowding points in a main view at `scale`, with the point
+/// the construction finds by them, `h` (Kisch's H), where it lies within
+/// [`NEIGHBOURS`] page units of one of them: its letter shares the
+/// crowd's room, and left out of the crowd's detail, whose lines run
+/// towards it, it was lettered on the main view among the crowd's lines
+/// and the detail's tag (H 33 units above F and G by A at a rod of 1.02
+/// cranks, its letter, right-angle mark and "×8" jammed over the block).
+fn with_h(members: &[Point], h: Option<Point>, scale: f64) -> Vec<Point> {
+    let mut all = members.to_vec();
+    if let Some(h) = h
+        && !all.contains(&h)
+        && (members.iter()).any(|m| (m - h).norm() * scale < NEIGHBOURS)
+    {
+        all.push(h);
+    }
+    all
+}
+
 /// The detail about the crowding points `members` whose closest pair a
 /// detail separates stands `closest` page units apart in a main view at
 /// `scale`: their box grown each way so that the frame drawn about it on
 /// the main view stands `reach` page units off (0: the box itself,
 /// padded), magnified until that pair is [`APART`], the box at most
-/// [`CROWD_EXTENT`], and the detail within `max_width` (none if no step
-/// fits).
+/// [`CROWD_EXTENT`] (by the step at or under it where `bounded`: the
+/// members hold the construction's point by the crowd, [`with_h`]), and
+/// the detail within `max_width` (none if no step fits).
 fn about(
     members: &[Point],
     closest: f64,
     reach: f64,
     scale: f64,
     max_width: f64,
+    bounded: bool,
 ) -> Option<Detail> {
     let (lo, hi) = bounds(members);
     let size = (hi - lo) * scale;
-    let wanted = (APART / closest).min(CROWD_EXTENT / size.max().max(1e-9));
+    // With the construction's point by the crowd (`bounded`), the step
+    // that sets the closest pair [`APART`], or where it would draw the
+    // box over [`CROWD_EXTENT`] the largest step within it: rounded up,
+    // the bound was a step over, and H and A at the inner dead centre of
+    // a rod of 1.02 cranks stood 540 units apart.
+    let apart = (APART / closest).max(1.0);
+    let most = CROWD_EXTENT / size.max().max(1e-9);
+    let wanted = match steps().find(|m| *m >= apart) {
+        Some(m) if bounded && m > most => steps().rev().find(|m| *m <= most).unwrap_or(1.0),
+        _ => apart.min(most),
+    };
     let first = magnify(wanted.max(1.0), size.x, max_width)?;
     // The frame on the main view `reach` from the crowded points, its
     // padding included, so that the letters of the pins among them find
@@ -825,7 +924,7 @@ fn crowded_crank(ctx: &LayerCtx, scale: f64, max_width: f64) -> Option<Detail> {
         return None;
     }
     let pins = [pose.a(), pose.b(), pose.c()];
-    match crowded(&pins, FRAME_REACH, scale, max_width) {
+    match crowded(&pins, None, FRAME_REACH, scale, max_width) {
         Crowding::Separable(d) => Some(Detail {
             focus: Focus::Crank,
             ..d

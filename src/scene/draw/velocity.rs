@@ -3,13 +3,33 @@
 
 use super::LayerCtx;
 use crate::figure::{Hue, RIGHT_ANGLE, Role, Shape};
-use crate::geom::{Intersection, Point, Vector, cross};
+use crate::geom::{Intersection, Point, Vector, cross, point_segment_distance};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
 
 /// How far past its ends the perpendicular through C is produced at
 /// most, page units.
 const PRODUCED: f64 = 6.0;
+
+/// Page units within which a thin construction line beside a link along
+/// its whole length reads as the link drawn double: a pin's radius (4.2)
+/// and its pen, closer than which the two lines leave no gap a reader
+/// tells from the heavy line's own width (Kisch's HG and the
+/// perpendicular through C along the crank at a long rod near 90°).
+const ON_LINK: f64 = 6.0;
+
+/// Whether the segment `p`–`q` lies along a link (the crank CB or the
+/// rod AB) on the canvas's page: both its ends within [`ON_LINK`] of the
+/// link, and so all of it. Such a line is left out, its construction
+/// read from the link it lies on.
+pub(super) fn along_link(ctx: &LayerCtx, canvas: &Canvas, p: Point, q: Point) -> bool {
+    let pose = ctx.main.pose();
+    let links = [(pose.c(), pose.b()), (pose.b(), pose.a())];
+    links.iter().any(|&(s, t)| {
+        let off = |x: Point| canvas.page(point_segment_distance(x, s, t));
+        off(p) < ON_LINK && off(q) < ON_LINK
+    })
+}
 
 /// E: the perpendicular to the stroke through C, AB produced to meet it,
 /// the right angle at C.
@@ -23,13 +43,17 @@ pub(crate) fn basics_e(ctx: &LayerCtx, canvas: &mut Canvas) {
     // than [`PRODUCED`] on the page, so that a large crank leaves room
     // for E's letter beyond it.
     let ext = (0.12 * r).min(canvas.world(PRODUCED));
-    // The perpendicular through C, and on it the result CE, heavier.
-    canvas.segment(
-        format!("{}-produced", ctx.line(CrankCentre, VelocityPoint)),
-        Role::Construction,
-        Point::new(0.0, e.y.min(0.0) - ext),
-        Point::new(0.0, e.y.max(0.0) + ext),
-    );
+    // The perpendicular through C, and on it the result CE, heavier; the
+    // perpendicular left out where CE lies along the crank (near 90°,
+    // E by B), where it drew the crank double.
+    if !along_link(ctx, canvas, c, e) {
+        canvas.segment(
+            format!("{}-produced", ctx.line(CrankCentre, VelocityPoint)),
+            Role::Construction,
+            Point::new(0.0, e.y.min(0.0) - ext),
+            Point::new(0.0, e.y.max(0.0) + ext),
+        );
+    }
     canvas.segment(ctx.line(CrankCentre, VelocityPoint), Role::Result, c, e);
     if (e - b).dot(&(b - a)) > 0.0 {
         canvas.segment(ctx.line(CrankPin, VelocityPoint), Role::Auxiliary, b, e);
