@@ -161,7 +161,10 @@ impl PanelLayout<'_> {
             .into_iter()
             .map(|b| b.map(|p| self.p(p)))
             .collect();
-        self.bezier_obstacles(&pieces);
+        let chords = self.bezier_obstacles(&pieces);
+        if ink.role == Role::Curve {
+            self.curves.extend(chords);
+        }
         if !finite(&c) {
             return None;
         }
