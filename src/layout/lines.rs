@@ -161,10 +161,7 @@ impl PanelLayout<'_> {
             .into_iter()
             .map(|b| b.map(|p| self.p(p)))
             .collect();
-        let chords = self.bezier_obstacles(&pieces);
-        if ink.role == Role::Curve {
-            self.curves.extend(chords);
-        }
+        self.bezier_obstacles(&pieces);
         if !finite(&c) {
             return None;
         }

@@ -203,10 +203,6 @@ struct PanelLayout<'a> {
     /// The links and forces drawn (page segments), which a text naming a
     /// line keeps nearer its own than.
     links: Vec<(Point, Point)>,
-    /// The chords of the circles drawn (page segments: the crank's
-    /// circle), which a text naming a line keeps nearer its line than, as
-    /// it does another link.
-    curves: Vec<(Point, Point)>,
     /// The dimension lines drawn (page segments), which a text naming a
     /// line keeps nearer its own than where it can.
     dimensions: Vec<(Point, Point)>,
@@ -363,7 +359,6 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &Frame) -> PlacedP
         points: Vec::new(),
         quiet: Vec::new(),
         links: Vec::new(),
-        curves: Vec::new(),
         dimensions: Vec::new(),
         bodies: Vec::new(),
     };
@@ -599,7 +594,7 @@ impl PanelLayout<'_> {
             .iter()
             .map(|p| {
                 let others = others(p, &self.points, 0.0);
-                let rivals = rivals(p, &self.links, &self.curves);
+                let rivals = rivals(p, &self.links);
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
@@ -854,19 +849,16 @@ fn others(p: &Pending, points: &[Point], beyond: f64) -> Vec<Point> {
         .collect()
 }
 
-/// The lines a text naming a line keeps nearer its own line than: every
-/// link drawn but the pieces of its own, and the chords of the circles drawn
-/// (Fig. 60's "b" at l = 3.09 r, e = 1.72 r, 180° stood on the crank's
-/// circle, 2 units from it and 20 from rod b); none for a text that names
-/// no line.
-fn rivals(p: &Pending, links: &[(Point, Point)], curves: &[(Point, Point)]) -> Vec<(Point, Point)> {
+/// The links a text naming a line keeps nearer its own line than: every
+/// link drawn but the pieces of its own; none for a text that names no
+/// line.
+fn rivals(p: &Pending, links: &[(Point, Point)]) -> Vec<(Point, Point)> {
     let Some((a, b)) = p.line else {
         return Vec::new();
     };
     let on_own = |q: Point| crate::geom::point_segment_distance(q, a, b) < 0.5;
     (links.iter())
         .filter(|(p, q)| !(on_own(*p) && on_own(*q)))
-        .chain(curves)
         .copied()
         .collect()
 }

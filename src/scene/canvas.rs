@@ -5,7 +5,8 @@
 //! guides are in [`super::ground`]).
 
 use crate::figure::{
-    DOT_RADIUS, Hue, Item, PIN_RADIUS, PageFromWorld, Part, RichText, Role, Shape, TextSize,
+    DOT_RADIUS, Hue, Item, PIN_PEN, PIN_RADIUS, PageFromWorld, Part, RichText, Role, Shape,
+    TextSize,
 };
 use crate::geom::{Direction, Frame, Intersection, MeetJson, Point, Vector};
 use serde_json::{Map, Value, json};
@@ -757,6 +758,13 @@ pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
 /// HG meets the rod visibly short of the pin, was lettered "B, F, G"
 /// with no dot.
 pub(crate) const UNDER_PIN: f64 = PIN_RADIUS + DOT_RADIUS;
+
+/// Page distance, centre to centre, within which a constructed point's
+/// dot stands by a pin in a detail: under it ([`UNDER_PIN`]) or its edge
+/// within two of the circle's pen widths of it. The letters of such
+/// points, joined or each its own, are set beside the pin, and the
+/// detail keeps room for them there.
+pub(crate) const BESIDE_PIN: f64 = PIN_RADIUS + DOT_RADIUS + 2.0 * PIN_PEN;
 
 /// Page distance under which two named points are one point in a
 /// detail: a dot inside the other's marker, lettered with it there

@@ -577,60 +577,6 @@ fn a_letter_keeps_nearer_its_own_point_than_one_left_to_the_detail() {
     }
 }
 
-/// A link's letter stands nearer its link than the crank's circle: it
-/// names the link, not the circle. Fig. 60's "b" at l = 3.09 r,
-/// e = 1.72 r, 180° stood on the crank's circle in all three panels, 2
-/// units from it and 20 from rod b (so too at 270.37°, and at l = 2.82 r,
-/// e = 0.982 r, 269.48°).
-#[test]
-fn a_links_letter_stands_nearer_its_link_than_the_cranks_circle() {
-    for (l, e, deg) in [
-        (3.09, 1.72, 180.0),
-        (3.09, 1.72, 270.37),
-        (2.82, 0.982, 269.48),
-    ] {
-        let svg = svg(FigureName::Fig60Chains, Some((1.0, l, e, deg)), None);
-        let plate = Plate::read(&svg);
-        for panel in ["a", "b", "c"] {
-            let id = format!("label-link-b-{panel}");
-            let Some(label) = (plate.panels.iter())
-                .flat_map(|p| &p.labels)
-                .find(|label| label.id == id)
-            else {
-                continue;
-            };
-            // The box's edge, as the placer measures it, at every unit.
-            let r = &label.rect;
-            let edge: Vec<(f64, f64)> = (0..=40)
-                .flat_map(|k| {
-                    let t = k as f64 / 40.0;
-                    let (x, y) = (r.x0 + t * (r.x1 - r.x0), r.y0 + t * (r.y1 - r.y0));
-                    [(x, r.y0), (x, r.y1), (r.x0, y), (r.x1, y)]
-                })
-                .collect();
-            let circle = format!("circle-crank-{panel}");
-            let (cx, cy, radius) = (
-                common::num(&svg, &circle, "cx"),
-                common::num(&svg, &circle, "cy"),
-                common::num(&svg, &circle, "r"),
-            );
-            let to_circle = (edge.iter())
-                .map(|&p| (distance(p, (cx, cy)) - radius).abs())
-                .fold(f64::INFINITY, f64::min);
-            let rod = path_numbers(&common::attr(&svg, &format!("link-rod-{panel}"), "d").unwrap());
-            let to_rod = (rod.chunks(2).zip(rod.chunks(2).skip(1)))
-                .flat_map(|(p, q)| {
-                    (edge.iter()).map(|&e| common::segment_distance(e, (p[0], p[1]), (q[0], q[1])))
-                })
-                .fold(f64::INFINITY, f64::min);
-            assert!(
-                to_rod < to_circle,
-                "l = {l}, e = {e}, {deg}°: {id} {to_rod} from rod b, {to_circle} from the circle"
-            );
-        }
-    }
-}
-
 /// The line of stroke, opened for a letter near its end, leaves no stub
 /// beyond it shorter than one period of its dashes (14 3 2 3): alone
 /// beside the letter it reads as a sign, "−A" (the polygons at
