@@ -76,7 +76,7 @@ impl OpenLine {
         let d = match self.course {
             Course::Centre { from, to } => {
                 let mut d = PathData::new();
-                for (s, t) in pieces(from, to, boxes) {
+                for (s, t) in without_stubs(from, to, pieces(from, to, boxes)) {
                     d.push(PathCommand::Move(s));
                     d.push(PathCommand::Line(t));
                 }
@@ -176,6 +176,30 @@ fn arc_pieces(
         .filter(|(b, e)| (e - b) as f64 / n as f64 * length > SHORTEST)
         .map(|(b, e)| (b as f64 / n as f64, e as f64 / n as f64))
         .collect()
+}
+
+/// The length of one period of a centre line's dashes ([`DASH`]): a
+/// long dash, a dot and their gaps.
+fn dash_period() -> f64 {
+    (DASH.split(' '))
+        .filter_map(|n| n.parse::<f64>().ok())
+        .sum()
+}
+
+/// The `pieces` of the centre line `from`–`to` less a piece at either end
+/// of it, cut off by a letter, shorter than one period of its dashes
+/// ([`dash_period`]) where a longer piece stays: such a stub is one dash
+/// alone beside the letter, read with it as a sign. At l = 58.2 r, 180°,
+/// the line of stroke opened for A between the guides and left 9 units
+/// of it beyond, and A read "−A".
+fn without_stubs(from: Point, to: Point, pieces: Vec<(Point, Point)>) -> Vec<(Point, Point)> {
+    let period = dash_period();
+    let stub = |&(s, t): &(Point, Point)| (s == from || t == to) && (t - s).norm() < period;
+    let whole = pieces.as_slice() == [(from, to)];
+    if whole || pieces.iter().all(stub) {
+        return pieces;
+    }
+    pieces.into_iter().filter(|p| !stub(p)).collect()
 }
 
 /// The pieces of the segment `from`–`to` outside every box (each grown by
@@ -312,5 +336,22 @@ mod tests {
         assert_eq!(p.len(), 2, "{p:?}");
         assert!((p[1].0.x - (63.0 + GAP_ROOM)).abs() < 1e-12);
         assert!((p[1].1.x - (95.0 - GAP_ROOM)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_centre_line_leaves_no_stub_beyond_a_letter_at_its_end() {
+        let (a, b) = (Point::new(0.0, 0.0), Point::new(100.0, 0.0));
+        assert_eq!(dash_period(), 22.0);
+        // A letter 10 units from the end: the 3.5 units beyond it go.
+        let letter = Frame::around(Point::new(10.0, 0.0), Vector::new(5.0, 6.0));
+        let kept = without_stubs(a, b, pieces(a, b, &[letter]));
+        assert_eq!(kept.len(), 1, "{kept:?}");
+        assert_eq!(kept[0].1, b);
+        // 30 units beyond it, a period and more: they stay.
+        let letter = Frame::around(Point::new(37.0, 0.0), Vector::new(5.0, 6.0));
+        assert_eq!(without_stubs(a, b, pieces(a, b, &[letter])).len(), 2);
+        // The line whole, however short, stays whole.
+        let short = Point::new(10.0, 0.0);
+        assert_eq!(without_stubs(a, short, vec![(a, short)]), vec![(a, short)]);
     }
 }

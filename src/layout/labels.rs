@@ -769,7 +769,25 @@ pub(crate) struct Steer<'a> {
     /// the straight way back to it, which should cross no link, guide or
     /// other point ([`crosses_back`]).
     pub back: bool,
+    /// Whether the text is a joint letter of the points under one pin,
+    /// the pin's own name first ("*B*, *F*, *E*, *H*"): it stands by its
+    /// pin only where its head is, so a place whose head stands farther
+    /// from the anchor than its tail (the letter to the left of the pin,
+    /// run along the rod away from it) costs [`HEAD_AWAY`] more.
+    pub head_first: bool,
 }
+
+/// What a joint letter's place costs more where its head (the pin's own
+/// name) stands farther from the pin than its tail ([`Steer::head_first`]):
+/// as much as a place misread, so that a clear place at the pin's other
+/// side or over it wins at any ring, and one whose glyphs meet a line
+/// does not. Kisch's "B, F, E, H" at l = 43.1 r, 89.44° ran along the rod
+/// to the left of B, its B four names away from the pin.
+const HEAD_AWAY: f64 = MISREAD;
+
+/// How far (page units) left of its anchor a joint letter's middle may
+/// stand before its head counts as farther from it than its tail.
+const HEAD_SLACK: f64 = 1.0;
 
 /// The place along the unit page `u` from `anchor`, `out` units out to
 /// the centre of a box of half-size `half`, drawn in towards the anchor
@@ -981,6 +999,7 @@ pub(crate) fn place_toward(
         farthest,
         apart,
         back,
+        head_first,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
@@ -1015,6 +1034,10 @@ pub(crate) fn place_toward(
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
+        let penalty = match head_first && centre.x < anchor.x - HEAD_SLACK {
+            true => penalty + HEAD_AWAY,
+            false => penalty,
+        };
         // The cost is never negative: a candidate whose penalty alone
         // reaches the best score cannot beat it.
         if penalty >= best.0 {

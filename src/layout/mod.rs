@@ -620,6 +620,7 @@ impl PanelLayout<'_> {
                                     && p.along.is_empty()
                                     && p.line.is_none()
                                     && self.points.contains(&p.anchor),
+                                head_first: p.joint && p.text.plain().contains(", "),
                             },
                             &self.obstacles,
                             room,
@@ -758,6 +759,7 @@ impl PanelLayout<'_> {
                                 farthest: None,
                                 apart: APART_EMS * p.size,
                                 back: false,
+                                head_first: false,
                             },
                             &self.obstacles,
                             room,

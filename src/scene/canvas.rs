@@ -747,13 +747,24 @@ impl Canvas {
 pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
 
 /// Page distance, centre to centre, under which a constructed point's
-/// dot is one point with a pin's in a detail: the dot under the pin's
-/// circle or its edge within two of the circle's pen widths of it
+/// dot is one point with a pin's in a detail: the dot runs into the pin's
+/// circle past the middle of its line, a burr on the pin
 /// ([`crate::scene::letter_near_together`]). Kisch's E, F and H at 4.2
-/// units from B at l = 43.8 r, 90.84°, Bennett's E at 6.8 from B and G
-/// at 7.8 from C at l = 29 r, 89.08°, hidden by the pin or read as a
-/// burr on it, each stood lettered apart with no dot to tell it by.
-pub(crate) const UNDER_PIN: f64 = PIN_RADIUS + DOT_RADIUS + 2.0 * PIN_PEN;
+/// units from B at l = 43.8 r, 90.84°, and Bennett's L and G 5 units from
+/// B and C at l = 56.2 r, 90.03°, half hidden by the pin, each stood
+/// lettered apart with no dot to tell it by. Farther out the dot shows
+/// whole beside the pin's line and is a point of its own: Kisch's foot
+/// F, G at 6.7 units from B at l = 43.1 r, 180°, where the perpendicular
+/// HG meets the rod visibly short of the pin, was lettered "B, F, G"
+/// with no dot.
+pub(crate) const UNDER_PIN: f64 = PIN_RADIUS + DOT_RADIUS;
+
+/// Page distance, centre to centre, within which a constructed point's
+/// dot stands by a pin in a detail: under it ([`UNDER_PIN`]) or its edge
+/// within two of the circle's pen widths of it. The letters of such
+/// points, joined or each its own, are set beside the pin, and the
+/// detail keeps room for them there.
+pub(crate) const BESIDE_PIN: f64 = PIN_RADIUS + DOT_RADIUS + 2.0 * PIN_PEN;
 
 /// Page distance under which two named points are one point in a
 /// detail: a dot inside the other's marker, lettered with it there

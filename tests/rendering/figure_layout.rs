@@ -576,3 +576,29 @@ fn a_letter_keeps_nearer_its_own_point_than_one_left_to_the_detail() {
         }
     }
 }
+
+/// The line of stroke, opened for a letter near its end, leaves no stub
+/// beyond it shorter than one period of its dashes (14 3 2 3): alone
+/// beside the letter it reads as a sign, "−A" (the polygons at
+/// l = 58.2 r, 180° and l = 37.7 r, 89.61°).
+#[test]
+fn the_line_of_stroke_leaves_no_stub_beside_a_letter() {
+    for (l, deg) in [(58.2, 180.0), (37.7, 89.61)] {
+        let svg = svg(
+            FigureName::VelocityAccelerationPolygons,
+            Some((1.0, l, 0.0, deg)),
+            None,
+        );
+        let d = common::attr(&svg, "line-stroke", "d").unwrap();
+        let pieces: Vec<f64> = (d.split('M').filter(|s| !s.trim().is_empty()))
+            .map(|piece| {
+                let n = path_numbers(piece);
+                (n[2] - n[0]).hypot(n[3] - n[1])
+            })
+            .collect();
+        assert!(
+            pieces.len() == 1 || pieces.iter().all(|&length| length >= 22.0),
+            "l = {l}, {deg}°: pieces {pieces:?} of {d}"
+        );
+    }
+}

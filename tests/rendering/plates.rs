@@ -3455,12 +3455,15 @@ fn a_detail_letters_points_that_coincide_there_jointly() {
     }
 }
 
-/// Points whose dots lie under one pin in a detail, or within two of
-/// its pen widths of its circle, take one joint letter by the pin, the
-/// pin's name first: Kisch's E, F and H under B at l = 43.8 r (each
-/// 4.2 units from B at ×20) stood lettered at the four corners of the
-/// pin with no dot to tell them by; Bennett's E at the edge of B's pin
-/// and K and G at C's were lettered apart round them at l = 29 r.
+/// Points whose dots lie under one pin in a detail (running into its
+/// circle past its line's middle) take one joint letter by the pin, the
+/// pin's name first:
+/// Kisch's E, F and H under B at l = 43.8 r (each 4.2 units from B at
+/// ×20) stood lettered at the four corners of the pin with no dot to
+/// tell them by; Bennett's F under B at l = 29 r. Bennett's E, K and G
+/// there, 6.8 and 7.8 units from their pins, show their dots beside them
+/// and keep their own letters
+/// ([`a_dot_showing_beside_a_pin_keeps_its_own_letter`]).
 #[test]
 fn points_under_one_pin_take_one_letter_by_it() {
     for (figure, rod, degrees, joints) in [
@@ -3480,7 +3483,7 @@ fn points_under_one_pin_take_one_letter_by_it() {
             "bennett-construction",
             29.0,
             89.08,
-            vec![("B", vec!["B", "E", "F"]), ("C", vec!["C", "G", "K"])],
+            vec![("B", vec!["B", "F"])],
         ),
     ] {
         let svg = svg_at(figure, rod, 0.0, degrees);
@@ -3522,6 +3525,104 @@ fn points_under_one_pin_take_one_letter_by_it() {
                 "{figure} l = {rod}, {degrees}°: {id} at ({lx}, {ly}), its pin at ({px}, {py})"
             );
         }
+    }
+}
+
+/// A constructed point whose dot shows whole beside a pin in a detail,
+/// clear of the middle of the pin's line, keeps its own dot and letter:
+/// only the points under the pin join its letter. Kisch's foot of the
+/// perpendicular from H, F and G, 6.7 units from B at ×20 at l = 43.1 r,
+/// 180°, where the thin line visibly meets the rod short of the pin, was
+/// lettered "B, F, G" with no dot (so too at l = 26.6 r and 43.1 r, 0°);
+/// Bennett's E, K and G 6.8 and 7.8 units from B and C at l = 29 r,
+/// 89.08°.
+#[test]
+fn a_dot_showing_beside_a_pin_keeps_its_own_letter() {
+    for (figure, rod, degrees, apart) in [
+        // F and G are one point, the foot: one dot, "F, G".
+        ("fig-66-kisch", 43.1, 180.0, vec![("B", vec!["F", "G"])]),
+        ("fig-66-kisch", 43.1, 0.0, vec![("B", vec!["F", "G"])]),
+        ("fig-66-kisch", 26.6, 0.0, vec![("B", vec!["F", "G"])]),
+        (
+            "bennett-construction",
+            29.0,
+            89.08,
+            vec![("B", vec!["E"]), ("C", vec!["G"]), ("C", vec!["K"])],
+        ),
+    ] {
+        let svg = svg_at(figure, rod, 0.0, degrees);
+        let centre = |name: &str| -> (f64, f64) {
+            let id = format!("detail-point-{name}");
+            let number = |key: &str| -> f64 {
+                common::attr(&svg, &id, key)
+                    .unwrap_or_else(|| panic!("{figure} l = {rod}, {degrees}°: no {id}"))
+                    .parse()
+                    .unwrap()
+            };
+            (number("cx"), number("cy"))
+        };
+        for (pin, names) in apart {
+            let name = names[0];
+            let (p, q) = (centre(pin), centre(name));
+            let between = (p.0 - q.0).hypot(p.1 - q.1);
+            // Its dot clear of the middle of the pin's line.
+            assert!(
+                between > 4.2 + 2.1,
+                "{figure} l = {rod}, {degrees}°: {name} {between} from {pin}"
+            );
+            let pins = names_in(&svg, &format!("detail-label-{pin}"));
+            assert_eq!(
+                pins.iter().filter(|n| names.contains(&n.as_str())).count(),
+                0,
+                "{figure} l = {rod}, {degrees}°: {names:?} joined to {pin}: {pins:?}"
+            );
+            let own = names_in(&svg, &format!("detail-label-{name}"));
+            assert_eq!(own, names, "{figure} l = {rod}, {degrees}°");
+        }
+    }
+}
+
+/// A joint letter of the points under one pin stands by its pin with the
+/// pin's own name, its head, no farther from the pin than its tail: never
+/// to the pin's left, run along a link away from it. Kisch's "B, F, E,
+/// H" at l = 43.1 r, 89.44° and 270.36° ran along the rod to the left of
+/// B, and Bennett's "B, F, G, K, L" at l = 55.6 r, 0°, its B far left of
+/// the pin; Bennett's "B, E" at l = 3.16 r, e = 1.11 r, 270.79° stood to
+/// the left of B, E just beyond it to the right.
+#[test]
+fn a_joint_letter_stands_with_its_head_by_its_pin() {
+    for (figure, rod, offset, degrees) in [
+        ("fig-66-kisch", 43.1, 0.0, 89.44),
+        ("fig-66-kisch", 43.1, 0.0, 270.36),
+        ("bennett-construction", 55.6, 0.0, 0.0),
+        ("bennett-construction", 3.16, 1.11, 270.79),
+    ] {
+        let svg = svg_at(figure, rod, offset, degrees);
+        let names = names_in(&svg, "detail-label-B");
+        assert!(
+            names.len() > 1 && names[0] == "B",
+            "{figure} l = {rod}, {degrees}°: {names:?}"
+        );
+        let number =
+            |id: &str, key: &str| -> f64 { common::attr(&svg, id, key).unwrap().parse().unwrap() };
+        // The text is set by its middle: its head is no farther from the
+        // pin than its tail where its middle is not left of the pin.
+        let (middle, pin) = (
+            number("detail-label-B", "x"),
+            number("detail-point-B", "cx"),
+        );
+        assert!(
+            middle >= pin - 1.0,
+            "{figure} l = {rod}, {degrees}°: {names:?} by its middle at {middle}, B at {pin}"
+        );
+        let y = (
+            number("detail-label-B", "y"),
+            number("detail-point-B", "cy"),
+        );
+        assert!(
+            (y.0 - y.1).abs() < 2.0 * 17.0,
+            "{figure} l = {rod}, {degrees}°: {names:?} at {y:?}"
+        );
     }
 }
 

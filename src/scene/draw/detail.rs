@@ -51,7 +51,7 @@ use super::LayerCtx;
 use crate::figure::HATCH_DEPTH;
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::Layer;
-use crate::scene::canvas::UNDER_PIN;
+use crate::scene::canvas::BESIDE_PIN;
 
 /// The extent, page units, under which the velocity triangle ECB gets a
 /// detail (see the module docs).
@@ -324,9 +324,12 @@ fn joint_room(ctx: &LayerCtx, d: Detail, scale: f64, max_width: f64) -> Detail {
     // Kisch's B at a long rod near 90°) wholly to either side of the pin
     // within the frame, clear of a line leaving the pin up or down (the
     // semicircle on AB, the crank): its width and a letter's room each
-    // side of the pin.
+    // side of the pin. The letters of dots just beside the pin, within
+    // two of its pen widths though not under it (Bennett's E by B at
+    // l = 30 r, 91°), take as much room beside it as their joint letter
+    // would.
     for p in &lettered {
-        let under = |q: &&Point| (*q - p).norm() * page < UNDER_PIN;
+        let under = |q: &&Point| (*q - p).norm() * page < BESIDE_PIN;
         let names = lettered.iter().filter(under).count();
         if names > 1 {
             let half = (names as f64 * JOINT_NAME + 2.0 * JOINT_ROOM - PAD).max(0.0) / page;
