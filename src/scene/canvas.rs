@@ -747,17 +747,18 @@ impl Canvas {
 pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
 
 /// Page distance, centre to centre, under which a constructed point's
-/// dot is one point with a pin's in a detail: the dot runs into the pin's
-/// circle past the middle of its line, a burr on the pin
+/// dot is one point with a pin's in a detail: the dot under the pin's
+/// circle or its edge within two of the circle's pen widths of it
 /// ([`crate::scene::letter_near_together`]). Kisch's E, F and H at 4.2
-/// units from B at l = 43.8 r, 90.84°, and Bennett's L and G 5 units from
-/// B and C at l = 56.2 r, 90.03°, half hidden by the pin, each stood
-/// lettered apart with no dot to tell it by. Farther out the dot shows
-/// whole beside the pin's line and is a point of its own: Kisch's foot
-/// F, G at 6.7 units from B at l = 43.1 r, 180°, where the perpendicular
-/// HG meets the rod visibly short of the pin, was lettered "B, F, G"
-/// with no dot.
-pub(crate) const UNDER_PIN: f64 = PIN_RADIUS + DOT_RADIUS;
+/// units from B at l = 43.8 r, 90.84°, Bennett's E at 6.8 from B and G
+/// at 7.8 from C at l = 29 r, 89.08°, hidden by the pin or read as a
+/// burr on it, each stood lettered apart with no dot to tell it by.
+/// Parting the dots just beside a pin from it (6.3 units, the dot clear of
+/// the pin line's middle) gave Kisch's foot F, G at 6.7 units from B at
+/// l = 43.1 r, 180° its own letter, but set Bennett's E, 7.1 units from B
+/// at l = 30 r, 91°, lettered alone 3.5 units from B's letter: the dots'
+/// own letters must first be placed apart from the pin's.
+pub(crate) const UNDER_PIN: f64 = PIN_RADIUS + DOT_RADIUS + 2.0 * PIN_PEN;
 
 /// Page distance, centre to centre, within which a constructed point's
 /// dot stands by a pin in a detail: under it ([`UNDER_PIN`]) or its edge

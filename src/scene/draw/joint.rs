@@ -17,18 +17,15 @@ struct Marked {
 /// Letters together the points of a detail's `items` (ids `{prefix}point-…`
 /// and `{prefix}label-…`) whose markers stand within `UNDER_PIN` page
 /// units of each other at the detail's `scale` (page units per world
-/// unit: a dot running into the pin's circle past the middle of its
-/// line, a burr on the pin):
+/// unit: a dot under a pin's circle or within two of its pen widths):
 /// where the enlargement is held to the page's width, G at 0.02 of
 /// the crank from C, K between them, stay under C's pin at ×25, and their
 /// own dots and letters named points the reader cannot find. A dot is
-/// joined to a pin whose circle it runs into, the pin heading the group
+/// joined to a pin whose marker it runs into, the pin heading the group
 /// and the dots by name after it; two pins are never joined (each is a
 /// part drawn), nor two dots alone (the detail was chosen to set the
 /// constructed points apart, and two dots side by side still show two
-/// points), nor a dot that stands out beside the pin (Kisch's foot F, G
-/// 6.7 units from B at l = 43.1 r, 180°, where the perpendicular visibly
-/// meets the rod short of the pin: it keeps its dot and letter). The dots' markers and letters are taken out and their names
+/// points). The dots' markers and letters are taken out and their names
 /// added to the pin's letter.
 pub(crate) fn letter_near_together(items: &mut Vec<Item>, prefix: &str, scale: f64) {
     let point_id = format!("{prefix}point-");
