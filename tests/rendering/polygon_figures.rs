@@ -2104,8 +2104,10 @@ fn a_piston_acceleration_too_short_to_draw_is_said_so() {
     // Review 2026-11w: near 90° at a long rod c′a′ (17.99 ft/s² at
     // l = 55.4 r, 90.47°) is too short to be drawn and was never drawn,
     // the joint letter "c′, a′" alone telling of it, and the notes did
-    // not say why. They say so now, and only there.
-    const SAID: &str = "too short to be drawn at this scale";
+    // not say why. They say so now, and only there. Review 2026-12a: at
+    // l = 1.07 r, 180° "too short to be drawn" beside c′'s and a′'s two
+    // dots read as a contradiction; what is too short is the arrow.
+    const SAID: &str = "too short for an arrow at this scale";
     for (rod, deg) in [(55.4, 90.47), (55.4, 270.15), (51.1, 90.38)] {
         let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
         assert!(

@@ -772,7 +772,7 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             len(acc.slider_acceleration_ratio()),
             sig(w * w * acc.slider_acceleration_ratio().abs()),
             if too_short_to_draw(ctx, &placed) {
-                ", too short to be drawn at this scale"
+                ", too short for an arrow at this scale"
             } else {
                 ""
             },
