@@ -50,9 +50,27 @@ pub(crate) fn point_segment_distance(p: Point, a: Point, b: Point) -> f64 {
     (p - (a + ab * t)).norm()
 }
 
+/// The greatest distance from a point of the segment `p q` to the segment
+/// `a b`: at one of `p q`'s ends, the distance being convex along it. A
+/// line lies beside a link all its length where this is small (0 where
+/// `p q` lies on `a b`; `a b` may be a point).
+pub(crate) fn farthest_from_segment(p: Point, q: Point, a: Point, b: Point) -> f64 {
+    point_segment_distance(p, a, b).max(point_segment_distance(q, a, b))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_segment_is_as_far_from_another_as_its_farther_end() {
+        let p = |x: f64, y: f64| Point::new(x, y);
+        let (a, b) = (p(0.0, 0.0), p(10.0, 0.0));
+        assert_eq!(farthest_from_segment(p(1.0, 1.0), p(9.0, 3.0), a, b), 3.0);
+        assert_eq!(farthest_from_segment(p(2.0, 0.0), p(8.0, 0.0), a, b), 0.0);
+        // Past the end of a b: measured to b.
+        assert_eq!(farthest_from_segment(p(5.0, 0.0), p(14.0, 3.0), a, b), 5.0);
+    }
 
     #[test]
     fn distances_between_segments() {

@@ -4,7 +4,7 @@
 
 use super::COINCIDE;
 use crate::figure::{Item, Part, RichText, Role, Shape};
-use crate::geom::{Point, point_segment_distance};
+use crate::geom::{Point, farthest_from_segment};
 
 /// A marked point of a detail: its name, its place and whether it is a
 /// pin.
@@ -122,8 +122,6 @@ pub(super) fn leave_out_along_links(items: &mut Vec<Item>, prefix: &str, scale: 
         })
         .filter_map(ends)
         .collect();
-    let beside =
-        |p: Point, (a, b): (Point, Point)| point_segment_distance(p, a, b) * scale < COINCIDE;
     items.retain(|it| {
         // The line of stroke is the frame's centre line, not a
         // construction: it stays where the crank lies along it.
@@ -132,6 +130,6 @@ pub(super) fn leave_out_along_links(items: &mut Vec<Item>, prefix: &str, scale: 
         let Some((p, q)) = ends(it).filter(|_| drawn) else {
             return true;
         };
-        !links.iter().any(|&link| beside(p, link) && beside(q, link))
+        !(links.iter()).any(|&(a, b)| farthest_from_segment(p, q, a, b) * scale < COINCIDE)
     });
 }

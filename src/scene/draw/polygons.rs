@@ -693,9 +693,7 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
 /// within [`SIDE_APART`] of it on the page, the two read as one.
 fn runs_along(canvas: &Canvas, (a, b): (Point, Point), (s, t): (Point, Point)) -> bool {
     canvas.page((t - s).norm()) >= MIN_ARROW
-        && [a, b]
-            .iter()
-            .all(|e| canvas.page(crate::geom::point_segment_distance(*e, s, t)) < SIDE_APART)
+        && canvas.page(crate::geom::farthest_from_segment(a, b, s, t)) < SIDE_APART
 }
 
 /// The notes that state the polygons' scales and read them: the velocity

@@ -3,7 +3,7 @@
 
 use super::LayerCtx;
 use crate::figure::{Hue, RIGHT_ANGLE, Role, Shape};
-use crate::geom::{Intersection, Point, Vector, cross, point_segment_distance};
+use crate::geom::{Intersection, Point, Vector, cross, farthest_from_segment};
 use crate::scene::canvas::{Canvas, Marker};
 use crate::scene::notation::Named::{self, *};
 
@@ -25,10 +25,7 @@ const ON_LINK: f64 = 6.0;
 pub(super) fn along_link(ctx: &LayerCtx, canvas: &Canvas, p: Point, q: Point) -> bool {
     let pose = ctx.main.pose();
     let links = [(pose.c(), pose.b()), (pose.b(), pose.a())];
-    links.iter().any(|&(s, t)| {
-        let off = |x: Point| canvas.page(point_segment_distance(x, s, t));
-        off(p) < ON_LINK && off(q) < ON_LINK
-    })
+    (links.iter()).any(|&(s, t)| canvas.page(farthest_from_segment(p, q, s, t)) < ON_LINK)
 }
 
 /// E: the perpendicular to the stroke through C, AB produced to meet it,
