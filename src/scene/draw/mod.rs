@@ -557,12 +557,10 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let own = band(&notes);
     let layout = *layout;
     ctx.sizes = layout.sizes;
-    // The polygons' notes say what is too short to be drawn at the page's
-    // scale: read again at it (as many notes, the band kept).
-    let notes = match scene.has(Layer::Polygons) {
-        true => self::notes(&ctx),
-        false => notes,
-    };
+    // The notes read again at the page's scale, which some of them speak
+    // of (the polygons' vectors too short for an arrow): as many notes as
+    // before it, so the band is kept.
+    let notes = self::notes(&ctx);
     let page = scene.page();
     // A pose outside a held range may have more notes than it left room
     // for: the page grows for them, the map stays.
