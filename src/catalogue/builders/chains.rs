@@ -16,7 +16,9 @@ use crate::error::{Error, Field, Result};
 use crate::figure::{Align, Figure, Foot, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, crossing, segment_distance, unit};
 use crate::number::plain;
-use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Seg, Slot};
+use crate::scene::{
+    BEARING_REACH, Canvas, LINK_BESIDE, LINK_JOG, Marker, PIN_CLEAR, Seg, Slot, path_beside,
+};
 use crate::scene::{LINK_LETTER_NEAR, letter_ways};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -820,29 +822,13 @@ fn slot_panel(
     ChainCentres::of_cylindric(&pose).to_json()
 }
 
-/// How far (page units) the frame d is drawn beside the line C O_cd
-/// where a moving link lies along it, and the rod beside the crank
-/// folded under it: a link's width and paper that reads as a gap
-/// between two links (at 7 units, 4.4 of paper, the lever folded onto d
-/// and d beside it read as one double line at l = 1.06 r, 180°), the
-/// pins at the ends touching the link.
-const FRAME_BESIDE: f64 = 10.0;
-/// How far along the line C O_cd (page units) the frame d drawn beside
-/// it turns in to the pin at each end: twice [`FRAME_BESIDE`], a slope
-/// that reads as a bend, not a step.
-const FRAME_JOG: f64 = 2.0 * FRAME_BESIDE;
 /// The link `p q` drawn beside its line on the side `n` (a world unit
-/// vector square to it), [`FRAME_BESIDE`] off it over its length and
-/// turned in to its pins at the ends over [`FRAME_JOG`] (run straight
-/// beside the line, the frame's end met the crank halfway along at
-/// l = 1.1 r, 180°, short of C's pin): p, the two ends of its run, q.
+/// vector square to it), [`LINK_BESIDE`] off it over its length and
+/// turned in to its pins at the ends over [`LINK_JOG`], at most a third
+/// of its length each way (run straight beside the line, the frame's end
+/// met the crank halfway along at l = 1.1 r, 180°, short of C's pin).
 fn beside_path(s: &Canvas, (p, q): Seg, n: Vector) -> Vec<Point> {
-    let shift = n * s.world(FRAME_BESIDE);
-    // At most a third of the link's length each way, the run between
-    // kept.
-    let jog = s.world(FRAME_JOG).min((q - p).norm() / 3.0);
-    let along = unit(q - p).map_or(Vector::zeros(), |u| u * jog);
-    vec![p, p + shift + along, q + shift - along, q]
+    path_beside(s, (p, q), n, s.world(LINK_JOG).min((q - p).norm() / 3.0))
 }
 
 /// A moving link nearer the line C O_cd than this (page units: a link's
@@ -896,7 +882,7 @@ fn beside(s: &Canvas, (p, q): Seg, links: &[Seg], share: f64) -> Option<Vector> 
     // away from the links lying along it (their mean distance from the
     // line), or from the others where these lie on the line itself.
     let crowd = |m: Vector| {
-        let shift = m * s.world(FRAME_BESIDE);
+        let shift = m * s.world(LINK_BESIDE);
         let (a, b) = (p + shift, q + shift);
         (links.iter())
             .flat_map(|&(x, y)| (0..=64).map(move |k| x + (y - x) * (f64::from(k) / 64.0)))

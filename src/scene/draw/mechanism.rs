@@ -422,14 +422,31 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
     });
 }
 
-/// How far (page units) the rod is drawn beside the crank where it lies
-/// over it: a link's width and paper that reads as a gap between two
-/// links, as Fig. 60 draws a rod folded back over its crank.
-const ROD_BESIDE: f64 = 10.0;
-/// How far along the crank (page units) the rod drawn beside it turns
-/// in to its line at each end: twice [`ROD_BESIDE`], a slope that reads
-/// as a bend, not a step.
-const ROD_JOG: f64 = 2.0 * ROD_BESIDE;
+/// How far (page units) a link is drawn beside the line of another that
+/// lies along it (the rod over the crank here, Fig. 60's frame d beside
+/// a moving link): a link's width and paper that reads as a gap between
+/// two links (at 7 units, 4.4 of paper, Fig. 60's lever folded onto d
+/// and d beside it read as one double line at l = 1.06 r, 180°).
+pub(crate) const LINK_BESIDE: f64 = 10.0;
+/// How far along its line (page units) a link drawn beside it turns in
+/// at each end: twice [`LINK_BESIDE`], a slope that reads as a bend, not
+/// a step.
+pub(crate) const LINK_JOG: f64 = 2.0 * LINK_BESIDE;
+
+/// The link `p q` drawn beside its line on the side `n` (a world unit
+/// vector square to it), [`LINK_BESIDE`] off it between its ends and
+/// turned in to them over `jog` (world units) at each: p, the two ends
+/// of the run beside, q. A `p q` of no length is its ends.
+pub(crate) fn path_beside(
+    canvas: &Canvas,
+    (p, q): (Point, Point),
+    n: Vector,
+    jog: f64,
+) -> Vec<Point> {
+    let shift = n * canvas.world(LINK_BESIDE);
+    let along = crate::geom::unit(q - p).map_or(Vector::zeros(), |u| u * jog);
+    vec![p, p + shift + along, q + shift - along, q]
+}
 /// The crank lies under the rod where the crank centre stands nearer the
 /// rod than this (page units; a link's width and a little paper): the
 /// two leave B along one line and read as one.
@@ -471,8 +488,7 @@ fn rod_beside_crank(
     } else {
         normal
     };
-    let shift = n * canvas.world(ROD_BESIDE);
-    let jog = canvas.world(ROD_JOG).min(crank / 3.0);
+    let jog = canvas.world(LINK_JOG).min(crank / 3.0);
     // Past C's pin by the jog, back on the line short of A.
     let past = (c - b).dot(&u) + canvas.world(crate::scene::canvas::UNDER_PIN);
     let back = past + jog;
@@ -485,7 +501,7 @@ fn rod_beside_crank(
         return None;
     }
     let at = |s: f64| b + u * s;
-    let mut points = vec![b, at(jog) + shift, at(past) + shift, at(back)];
+    let mut points = path_beside(canvas, (b, at(back)), n, jog);
     points.extend(canvas.frame().clip_segment(at(back), a).map(|(_, end)| end));
     Some(points)
 }
