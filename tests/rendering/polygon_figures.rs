@@ -591,6 +591,33 @@ fn points_after(svg: &str, id: &str) -> Vec<(f64, f64)> {
 }
 
 #[test]
+fn omega_s_arc_keeps_off_the_guides_hatching() {
+    // Review 2026-12a: at l = 1.05 r, 270.05° and l = 1.07 r, 269.72° the
+    // tail of ω's arc ended on the upper guide's hatching: the arc was
+    // kept clear of the guide's line, not of the hatching beyond it.
+    for (rod, deg) in [
+        (1.05, 270.05),
+        (1.07, 269.72),
+        (1.05, 269.05),
+        (1.1, 270.05),
+    ] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let arc = points_after(&svg, "polygons-omega");
+        let ends = [arc[0], arc[arc.len() - 1]];
+        for id in ["hatch-guide-upper", "hatch-guide-lower"] {
+            let hatch = path(&svg, id);
+            let nearest = (hatch.chunks(2))
+                .flat_map(|h| ends.iter().map(move |&p| segment_distance(p, h[0], h[1])))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                nearest >= 3.0,
+                "l = {rod} r, {deg}°: ω's arc {nearest:.1} units from {id}"
+            );
+        }
+    }
+}
+
+#[test]
 fn omega_s_arc_keeps_off_the_rod_and_the_block() {
     // At l = 1.07 r, 270.92°, ω's arc half a radian after the crank ran
     // across the rod into the slider's block (the eighth review, 2.5: read
