@@ -367,18 +367,26 @@ fn the_polygons_crank_is_seen_and_turns() {
 }
 
 #[test]
-fn a_short_component_is_drawn_without_a_head() {
+fn a_short_component_is_drawn_with_its_head() {
     // The seventh review: at the default the rod's normal component b′x,
-    // 0.0845 ft to the polygons' ×2 (14 units), was mostly head, its head
-    // against c′b′'s at b′ (4); in inversion 3's default the normal
-    // component c′n was a stub on c′'s dot (4). Shorter than two and a
-    // half heads (25 units), a side is a plain line; the sides before
-    // them keep their heads.
+    // 0.0845 ft to the polygons' ×2 (14 units), was mostly head, and it
+    // was drawn as a plain line. Review 2026-12a: a plain b′x, two dots
+    // joined by a line, left its sense to the notes (4). Every vector of
+    // the polygons drawn carries its head; in inversion 3's default the
+    // normal component c′n, a stub on c′'s dot, is still a plain side.
     let name = FigureName::VelocityAccelerationPolygons;
     let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
-    let normal = side_length(&svg, "acceleration-b2x").expect("b′x a plain side");
+    let all = sides(&svg, false);
+    for id in ["acceleration-b2x", "acceleration-c2b2", "acceleration-xa2"] {
+        assert!(
+            element(&svg, id).is_some_and(|t| t.starts_with("<g")),
+            "{id} drawn without its head"
+        );
+    }
+    let (from, _) = drawn_side(&all, "acceleration-b2x");
+    let to = arrow_tip(&svg, "acceleration-b2x");
+    let normal = (to.0 - from.0).hypot(to.1 - from.1);
     assert!((12.0..25.0).contains(&normal), "b′x {normal:.1} long");
-    assert!(element(&svg, "acceleration-c2b2").is_some_and(|t| t.starts_with("<g")));
     let name = FigureName::CoriolisInversion3;
     let svg = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
     let normal = side_length(&svg, "acceleration-cn").expect("c′n a plain side");
@@ -580,6 +588,33 @@ fn points_after(svg: &str, id: &str) -> Vec<(f64, f64)> {
         .filter_map(|w| w.parse().ok())
         .collect();
     numbers.chunks(2).map(|p| (p[0], p[1])).collect()
+}
+
+#[test]
+fn omega_s_arc_keeps_off_the_guides_hatching() {
+    // Review 2026-12a: at l = 1.05 r, 270.05° and l = 1.07 r, 269.72° the
+    // tail of ω's arc ended on the upper guide's hatching: the arc was
+    // kept clear of the guide's line, not of the hatching beyond it.
+    for (rod, deg) in [
+        (1.05, 270.05),
+        (1.07, 269.72),
+        (1.05, 269.05),
+        (1.1, 270.05),
+    ] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, 0.0, deg);
+        let arc = points_after(&svg, "polygons-omega");
+        let ends = [arc[0], arc[arc.len() - 1]];
+        for id in ["hatch-guide-upper", "hatch-guide-lower"] {
+            let hatch = path(&svg, id);
+            let nearest = (hatch.chunks(2))
+                .flat_map(|h| ends.iter().map(move |&p| segment_distance(p, h[0], h[1])))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                nearest >= 3.0,
+                "l = {rod} r, {deg}°: ω's arc {nearest:.1} units from {id}"
+            );
+        }
+    }
 }
 
 #[test]
@@ -1077,26 +1112,50 @@ fn a_short_rod_s_pins_at_the_inner_dead_centre_stand_apart() {
     }
 }
 
+/// The signed distance of `x` from the line through `a` and `b`, page
+/// units.
+fn across_line(x: (f64, f64), (a, b): ((f64, f64), (f64, f64))) -> f64 {
+    let (u, v) = ((b.0 - a.0, b.1 - a.1), (x.0 - a.0, x.1 - a.1));
+    (u.0 * v.1 - u.1 * v.0) / u.0.hypot(u.1)
+}
+
 #[test]
-fn c_prime_q_prime_along_c_prime_a_prime_is_left_out() {
+fn c_prime_q_prime_along_c_prime_a_prime_is_drawn_beyond_c_prime_b_prime() {
     // The thirteenth review: where q′ lies on c′a′'s line (the rod's
     // middle, the images b′, q′, a′ on one line near the dead centres),
-    // c′q′ was set beside c′a′ as a third line over c′a′ and c′b′'s,
-    // between the points and their letters: at l = 2.6 r, e = 1.06 r, 0°
-    // b′'s letter stood on it, its head under b′ and q′ (3.5); at 180°
-    // a′ and q′ were lettered below, a′ by x, q′ under b′x (2.5); on the
-    // §35 engine with e = 0.5 at 176° its head stood by a′'s letter.
-    // Left out there (q′'s dot on the line and the notes' c′q′ read it),
-    // and no letter of the acceleration polygon stands on one of its
-    // sides. At e = 0.9 and 0.7, 172°, it had been turned about its head
-    // to end on q′.
+    // c′q′ set beside c′a′ across the line from c′b′ stood between the
+    // points and their letters (l = 2.6 r, e = 1.06 r, 0°: b′'s letter
+    // on it); it was then left out. Review 2026-12a: at l = 2.23 r,
+    // e = −0.933 r, 0° and 180° the notes' c′q′ was not drawn at all
+    // (2.5). Where c′b′ is set beside c′a′, c′q′ is drawn beside them
+    // beyond c′b′, on c′b′'s side of the line, the other side left to the
+    // letters; no letter of the acceleration polygon stands on one of
+    // its sides.
     let engines = [
+        (1.0, 2.23, -0.933, 0.0),
+        (1.0, 2.23, -0.933, 180.0),
         (1.0, 2.6, 1.06, 0.0),
         (1.0, 2.6, 1.06, 180.0),
         (0.5, 3.0, 0.5, 176.0),
+    ];
+    // Where c′q′ leaves c′a′ at a narrow angle and no side on its line
+    // is set beside it, it is still left out: turned about its head it
+    // ran across c′a′ (e = 0.9 and 0.7, 172°; l = 50 r, 170°).
+    for (r, l, e, deg) in [
         (0.5, 3.0, 0.9, 172.0),
         (0.5, 3.0, 0.7, 172.0),
-    ];
+        (1.0, 50.0, 0.0, 170.0),
+    ] {
+        let mut options = FigureOptions::default();
+        options.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
+        options.angle = Some(Angle::deg(deg));
+        let name = FigureName::VelocityAccelerationPolygons;
+        let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
+        assert!(
+            element(&svg, "acceleration-c2q2").is_none(),
+            "l = {l}, e = {e}, {deg}°: c′q′ drawn across c′a′"
+        );
+    }
     for (r, l, e, deg) in engines {
         let mut options = FigureOptions::default();
         options.mechanism = Some(SliderCrank::new(r, l, e).unwrap());
@@ -1104,12 +1163,22 @@ fn c_prime_q_prime_along_c_prime_a_prime_is_left_out() {
         let name = FigureName::VelocityAccelerationPolygons;
         let svg = slider_crank::render::to_svg(&name.figure(&options).unwrap());
         let at = format!("l = {l}, e = {e}, {deg}°");
-        assert!(
-            element(&svg, "acceleration-c2q2").is_none(),
-            "{at}: c′q′ drawn"
-        );
-        let plate = Plate::read(&svg);
         let all = sides(&svg, false);
+        let (c, a) = (dot(&svg, "point-c2"), dot(&svg, "point-a2"));
+        assert!(
+            all.iter().any(|s| s.0 == "acceleration-c2q2"),
+            "{at}: c′q′ not drawn"
+        );
+        let q = drawn_side(&all, "acceleration-c2q2");
+        let b = drawn_side(&all, "acceleration-c2b2");
+        let (dq, db) = (across_line(q.0, (c, a)), across_line(b.0, (c, a)));
+        if db.abs() > 1.0 {
+            assert!(
+                dq * db > 0.0 && dq.abs() > db.abs() + 3.5,
+                "{at}: c′q′ {dq:.1} off c′a′, c′b′ {db:.1}"
+            );
+        }
+        let plate = Plate::read(&svg);
         for letter in images(&plate, true) {
             for (id, from, to) in all.iter().filter(|s| s.0.starts_with("acceleration-")) {
                 let r = &letter.rect;
@@ -1128,6 +1197,40 @@ fn c_prime_q_prime_along_c_prime_a_prime_is_left_out() {
                 assert!(!met, "{at}: {} on {id}", letter.id);
             }
         }
+    }
+}
+
+#[test]
+fn c_prime_q_prime_beside_c_prime_b_prime_keeps_out_of_c_prime_s_letter() {
+    // Review 2026-12a: at l = 2.23 r, e = −0.933 r, 269.25° c′a′ is too
+    // short to be drawn, and c′q′, set beside c′b′ across it from xa′,
+    // ran its dashed tail into the letter "c′, a′" by c′'s dot. It stands
+    // beyond xa′ now, the side of c′b′ by c′ left to the letter.
+    for (rod, offset, deg) in [
+        (2.23, -0.933, 269.25),
+        (2.23, 0.933, 269.25),
+        (2.18, -0.933, 268.25),
+    ] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, rod, offset, deg);
+        let plate = Plate::read(&svg);
+        let all = sides(&svg, false);
+        let q = drawn_side(&all, "acceleration-c2q2");
+        let label = (plate.texts.iter())
+            .find(|t| t.id == "label-c2")
+            .expect("no c′'s letter");
+        let r = &label.rect;
+        let edges = [
+            ((r.x0, r.y0), (r.x1, r.y0)),
+            ((r.x1, r.y0), (r.x1, r.y1)),
+            ((r.x1, r.y1), (r.x0, r.y1)),
+            ((r.x0, r.y1), (r.x0, r.y0)),
+        ];
+        let inside = |(x, y): (f64, f64)| r.x0 < x && x < r.x1 && r.y0 < y && y < r.y1;
+        let met = inside(q.0) || inside(q.1) || edges.iter().any(|&e| segments_apart(e, q) == 0.0);
+        assert!(
+            !met,
+            "l = {rod}, e = {offset}, {deg}°: c′q′ runs into c′'s letter"
+        );
     }
 }
 

@@ -4,7 +4,7 @@
 
 use super::torque::{ALONG_THE_ROD, PIN_SHORT};
 use super::{LayerCtx, NamedArrow};
-use crate::figure::{Hue, RichText, Role, Shape, TextSize};
+use crate::figure::{HATCH_DEPTH, Hue, RichText, Role, Shape, TextSize};
 use crate::geom::{Point, Vector, point_segment_distance};
 use crate::scene::canvas::Canvas;
 
@@ -250,8 +250,9 @@ fn omega_start(ctx: &LayerCtx, radius: f64, clear: f64) -> f64 {
         (corner(hl, -hh), corner(hl, hh)),
         (corner(hl, hh), corner(-hl, hh)),
         (corner(-hl, hh), corner(-hl, -hh)),
-        guide(e + hh),
-        guide(e - hh),
+        // Each guide with its hatching beyond it (`clear` is OMEGA_CLEAR).
+        guide(e + hh + clear * HATCH_DEPTH / OMEGA_CLEAR),
+        guide(e - hh - clear * HATCH_DEPTH / OMEGA_CLEAR),
     ];
     let room = |start: f64| {
         (0..=24)

@@ -208,27 +208,17 @@ fn id(ctx: &LayerCtx, n: Named, prime: bool) -> String {
     if prime { format!("{letter}2") } else { letter }
 }
 
-/// A vector of a polygon as an arrow (`{kind}-{p}{q}`), where it is long
-/// enough on the page to carry its head; shorter than [`HEADLESS`], as a
-/// plain side.
+/// A vector of a polygon as an arrow (`{kind}-{p}{q}`), with its head,
+/// where it is long enough on the page to carry one ([`MIN_ARROW`]).
+/// Every vector drawn carries its head: at the default a plain b′x,
+/// two dots joined by a line, left its sense to the notes.
 fn vector(canvas: &mut Canvas, id: String, role: Role, from: Point, to: Point) {
     let length = canvas.page((to - from).norm());
     if length < MIN_ARROW {
         return;
     }
-    if length < HEADLESS {
-        canvas.segment(id, role, from, to);
-        return;
-    }
     canvas.push(id, role, Shape::Arrow { from, to });
 }
-
-/// Shortest vector drawn with its head, page units: two and a half
-/// heads. Shorter, the head is most of it and stands on the head of the
-/// side before it (the rod's normal component b′x, 14 units at the §35
-/// default, its head against c′b′'s at b′); its sense is the polygon's
-/// order, read from the letters at its ends.
-const HEADLESS: f64 = 25.0;
 
 /// Draws both polygons, each point lettered, and Q on the rod; a Q off
 /// the rod's line on the rod drawn as the plate ABQ, and its images with
@@ -635,17 +625,27 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         canvas.segment(format!("acceleration-{a}{b}"), Role::Auxiliary, p.a, p.b);
     }
     if let Some(q) = p.q {
-        // Where it runs over c′a′ (q′ on its line), c′q′ set beside it
-        // is a third line over the two, between the points and their
-        // letters: q′ on the line and the notes' c′q′ read it.
-        // A needle's c′q′ is stacked beside the others, clear of the
-        // letters ([`stacked`]).
-        // Where c′a′ is too short to be drawn (near 90°), c′q′ set
-        // beside c′b′ is drawn: q′'s dot was left on c′b′ with no vector
-        // of its own, though the notes give c′q′.
-        let beside = oq.0.norm() > 0.0 || oq.1.norm() > 0.0;
-        let result_drawn = canvas.page((p.a - p.o).norm()) >= MIN_ARROW;
-        if !beside || needle || !result_drawn {
+        // Set beside the sides on its line (over c′a′ and c′b′ at the
+        // dead centres, beside c′b′ near 90°), c′q′ stands beyond those
+        // already set beside them, on their side of the line: the other
+        // side is left to the points' letters. A needle's c′q′ is
+        // stacked beside the others, clear of the letters ([`stacked`]).
+        let oq = if needle {
+            Some(oq)
+        } else {
+            outside(
+                canvas,
+                (p.o, q),
+                oq,
+                &[
+                    (p.o, p.a, oa),
+                    (p.o, p.b, ob),
+                    (p.b, p.x, bx),
+                    (p.x, p.a, xa),
+                ],
+            )
+        };
+        if let Some(oq) = oq {
             vector(
                 canvas,
                 format!("acceleration-{o}q2"),
@@ -686,6 +686,71 @@ fn acceleration(ctx: &LayerCtx, canvas: &mut Canvas, p: &AccelerationPoints) {
         letters.push((id(ctx, Coupler, true), image(ctx, Coupler, true), q));
     }
     letter(canvas, &letters, p.o);
+}
+
+/// The offsets (tail, head) of `side`, set beside the sides on its line
+/// where [`apart`] moved it (`placed`): moved whole to the side of its
+/// line that those of `others` (from, to, offsets) set beside along its
+/// run stand on, [`SIDE_APART`] beyond the farthest of them, and further
+/// by as much where it would come within half that of a side drawn;
+/// `placed` where it is not moved; none (it is left out) where none was
+/// set beside along it or no place is clear. Set to either side as
+/// [`apart`] found room, c′q′ over c′a′ at the dead centres stood across
+/// the line from c′b′, between the points and their letters (l = 2.6 r,
+/// e = 1.06 r, 0°: b′'s letter on it), and beside c′b′ near 90° it stood
+/// across c′b′ from xa′, its tail in the letter of c′ (l = 2.23 r,
+/// e = −0.933 r, 269.25°). Leaving c′a′ at a narrow angle with nothing
+/// set beside it (l = 50 r, 170°), turned about its head it ran across
+/// c′a′, and drawn where it stands it crowded q′'s letter against b′'s.
+fn outside(
+    canvas: &Canvas,
+    (p, q): (Point, Point),
+    placed: (Vector, Vector),
+    others: &[(Point, Point, (Vector, Vector))],
+) -> Option<(Vector, Vector)> {
+    const SAMPLES: usize = 32;
+    let length = (q - p).norm();
+    let moved = placed.0.norm() > 0.0 || placed.1.norm() > 0.0;
+    if !(moved && length > 0.0) {
+        return Some(placed);
+    }
+    let u = (q - p) / length;
+    let n = Vector::new(-u.y, u.x);
+    let step = canvas.world(SIDE_APART);
+    let drawn: Vec<(Point, Point, (Vector, Vector))> = (others.iter().copied())
+        .filter(|(s, t, _)| canvas.page((t - s).norm()) >= MIN_ARROW)
+        .collect();
+    // How far off the line, signed across it, each side set beside
+    // stands where it runs along it.
+    let mut off: Vec<f64> = Vec::new();
+    for (s, t, (o0, o1)) in &drawn {
+        if o0.norm() == 0.0 && o1.norm() == 0.0 {
+            continue;
+        }
+        for i in 0..=SAMPLES {
+            let f = i as f64 / SAMPLES as f64;
+            let x = s + (t - s) * f;
+            let along = (x - p).dot(&u);
+            let across = crate::geom::cross(&u, &(x - p)).abs();
+            if (0.0..=length).contains(&along) && canvas.page(across) < NEEDLE {
+                off.push((x + o0 + (o1 - o0) * f - p).dot(&n));
+            }
+        }
+    }
+    let first = off.first()?;
+    let sign = first.signum();
+    let beyond = (off.iter())
+        .filter(|d| d.signum() == sign)
+        .fold(0.0, |m: f64, d| m.max(d.abs()));
+    let clear = |o: Vector| {
+        (drawn.iter()).all(|(s, t, (o0, o1))| {
+            crate::geom::segment_distance(p + o, q + o, s + o0, t + o1) >= 0.5 * step
+        })
+    };
+    (1..=4)
+        .map(|m| n * (sign * (beyond + m as f64 * step)))
+        .find(|o| clear(*o))
+        .map(|o| (o, o))
 }
 
 /// Whether the line `(a, b)` runs along the side `(s, t)` as drawn: the
