@@ -173,39 +173,6 @@ fn an_inertia_force_too_short_to_draw_is_said_so_on_the_page() {
     assert!(svg.contains("id=\"force-inertia\"") && !svg.contains(said));
 }
 
-/// F_i at a long rod's dead centres (l = 52.6 r at 0° and 180°: CG 1.02 r,
-/// 12 units on the main view, no detail at the cross-head) was a bare
-/// arrowhead with a shaft of 6 units floating over the guide's hatching,
-/// away from A. An arrow too short to read where no detail holds it is
-/// left out and the notes say so; the neighbours (±1°, l = 52.55 r)
-/// alike. Where F_i reads on the main view (l = 1.1 r at 180°) it is
-/// drawn, its head and a shaft of its length at least.
-#[test]
-fn an_inertia_force_too_short_to_read_is_left_out_and_said_so() {
-    use crate::common::arrow_ends;
-    let said = "too short to draw at the cross-head";
-    for (rod, degrees) in [
-        (52.6, 0.0),
-        (52.6, 180.0),
-        (52.6, 1.0),
-        (52.6, 179.0),
-        (52.55, 0.0),
-    ] {
-        let svg = inertia_svg(rod, degrees);
-        if svg.contains("id=\"force-inertia\"") {
-            let (tail, tip) = arrow_ends(&svg, "force-inertia");
-            let length = (tip.0 - tail.0).hypot(tip.1 - tail.1);
-            panic!("l = {rod}, {degrees}°: F_i drawn {length:.1} long");
-        }
-        assert!(svg.contains(said), "l = {rod}, {degrees}°: nothing said");
-    }
-    let svg = inertia_svg(1.5, 180.0);
-    let (tail, tip) = arrow_ends(&svg, "force-inertia");
-    let length = (tip.0 - tail.0).hypot(tip.1 - tail.1);
-    assert!(length >= 20.0, "l = 1.5, 180°: F_i {length:.1} long");
-    assert!(!svg.contains(said), "l = 1.5, 180°: said left out");
-}
-
 /// CG of a few hundredths of the crank (l = 38 r at 90.09° and 269.98°,
 /// l = 54.9 r at 89.84° and 270.56°: 9 units or less in the ×20 detail)
 /// left G, the figure's subject, under C's pin and its ground symbol,

@@ -153,9 +153,8 @@ type Shown = (Panel, f64);
 /// the cross-head and the crank effort added to its main view; its
 /// details as drawn. Returns the bottom of what it set on the page,
 /// whether F_i was left out of the main view (shorter than
-/// [`READABLE`] there and held whole by no detail), and the panel that
-/// shows G (the first detail whose frame holds it, else the main view)
-/// with the main view's scale.
+/// [`SHORTEST`] there), and the panel that shows G (the first detail
+/// whose frame holds it, else the main view) with the main view's scale.
 fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool, Option<Shown>)> {
     let scene = ctx
         .scene(ctx.page().width(), SCENE)?
@@ -195,18 +194,14 @@ fn mechanism(ctx: &Ctx, f: &Forces, sheet: &mut Sheet) -> Result<(f64, bool, Opt
     let mut items = inertia_arrow(main, &pose, f, scale, arc_radius);
     // Too short to read on the main view (a bare arrowhead on the block's
     // corner at a short rod's dead centre, l = 1.07 r at 180°), F_i is
-    // drawn in the first detail that holds it whole, enlarged, instead;
-    // where none does, it is left out and the notes say so (a long rod's
-    // dead centres, l = 52.6 r: a head with a shaft of 6 units floating
-    // over the guide's hatching, away from A, read as no arrow at all).
-    let unreadable = shaft_length(&items) * scale < READABLE;
-    let enlarged = match unreadable {
+    // drawn in the first detail that holds it whole, enlarged, instead.
+    let enlarged = match shaft_length(&items) * scale < READABLE {
         true => details.iter().enumerate().find_map(|(k, detail)| {
             enlarged_arrow(detail, &pose, f, home == Some(k)).map(|items| (k, items))
         }),
         false => None,
     };
-    if unreadable {
+    if enlarged.is_some() {
         items.clear();
     }
     let fi_left_out = items.is_empty() && enlarged.is_none();
