@@ -435,3 +435,37 @@ fn the_offset_s_extension_line_keeps_off_o_s_letter_and_the_torque_arc() {
         }
     }
 }
+
+/// Ng's Fig. 1 at l = 1.55 r, e = 0.402 r, 180°: the rod passed over the
+/// torque arc's top 3 units from it at M, arc, rod, M and θ's arc piled
+/// up there. The arc's radius keeps its room from a rod running by the
+/// centre at about its radius, M a letter's half-em and more off the
+/// arc; the neighbours (±1°, l ± 0.05 r) alike.
+#[test]
+fn ng_s_torque_arc_keeps_off_the_rod_passing_by_m() {
+    for (rod, degrees) in [
+        (1.55, 180.0),
+        (1.55, 179.0),
+        (1.55, 181.0),
+        (1.5, 180.0),
+        (1.6, 180.0),
+    ] {
+        let at = format!("at l = {rod}, e = 0.402, {degrees}°");
+        let plate = plate_at("ng-fig-1-torque", rod, 0.402, degrees);
+        let main = &plate.panels[0];
+        let o = plate.point(main, "O").expect("O");
+        let om = segs(main, "line-OM");
+        let m = om
+            .iter()
+            .flat_map(|s| [s.0, s.1])
+            .max_by(|p, q| distance(*p, o).total_cmp(&distance(*q, o)))
+            .expect("no OM");
+        let arc = segs(main, "torque-T");
+        assert!(!arc.is_empty(), "no torque arc {at}");
+        let near = arc
+            .iter()
+            .map(|s| s.distance_to(m))
+            .fold(f64::INFINITY, f64::min);
+        assert!(near >= 6.0, "M {near:.1} from the torque arc {at}");
+    }
+}

@@ -115,7 +115,15 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         let block = s.block_half_length.hypot(s.block_half_height);
         let near = ca.norm() - block < canvas.world(TORQUE_REACH);
         let gap = near.then(|| ca.y.atan2(ca.x));
-        let radius = canvas.world(TORQUE_RADIUS);
+        // The arc clear of the rod and the rod produced to M where they
+        // run by it about as far from the centre as its radius.
+        let m = ctx.main.e().e();
+        let produced = (m - b).dot(&(b - a)) > 0.0;
+        let rods = std::iter::once((b, a)).chain(produced.then_some((b, m)));
+        let passing: Vec<f64> = rods
+            .map(|(p, q)| canvas.page(crate::geom::point_segment_distance(c, p, q)))
+            .collect();
+        let radius = canvas.world(clear_of_the_rod(&passing));
         // The crank, θ's letter on its mark's bisector, and the rod where
         // it passes within the arc's reach (a short rod or an offset).
         let crank = (b - c).y.atan2((b - c).x);
@@ -125,8 +133,6 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
         // a dead centre OM ran down through the gap, and T, set off it by
         // its letter's placing, stood by M's dot, far from the arc, or on
         // the rod.
-        let m = ctx.main.e().e();
-        let produced = (m - b).dot(&(b - a)) > 0.0;
         let e = pose.mechanism().offset();
         let extension = (canvas.page(e.abs()) >= 4.0).then_some(std::f64::consts::PI);
         let avoid: Vec<f64> = [crank, 0.5 * crank.rem_euclid(std::f64::consts::TAU)]
@@ -162,6 +168,29 @@ pub(crate) fn draw(ctx: &LayerCtx, canvas: &mut Canvas) {
             },
         );
     }
+}
+
+/// The least room (page units) between the torque arc and a rod that
+/// runs by the crank centre at about the arc's radius: at l = 1.55 r,
+/// e = 0.402 r, 180° the rod passed 3 units over the arc's top at M,
+/// arc, rod, M and θ's arc piled up there.
+const ROD_ROOM: f64 = 8.0;
+
+/// The least radius of the torque arc, page units: O's letter within it.
+const TORQUE_LEAST: f64 = 26.0;
+
+/// The torque arc's radius, page units: [`TORQUE_RADIUS`], or where a
+/// rod runs by the centre (`passing`, its least page distances from it)
+/// within [`ROD_ROOM`] of that circle, along it, the largest radius down
+/// to [`TORQUE_LEAST`] that keeps the room from them all; where none
+/// does, the usual one.
+fn clear_of_the_rod(passing: &[f64]) -> f64 {
+    let clear = |r: f64| passing.iter().all(|d| (d - r).abs() >= ROD_ROOM);
+    let steps = (TORQUE_RADIUS - TORQUE_LEAST) as u32;
+    (0..=steps)
+        .map(|k| TORQUE_RADIUS - f64::from(k))
+        .find(|&r| clear(r))
+        .unwrap_or(TORQUE_RADIUS)
 }
 
 /// The torque `t` as an arc arrow of `radius` (world units) about the
