@@ -26,3 +26,4 @@ mod mechanism_review;
 mod plates;
 mod polygon_figures;
 mod quick_return_figures;
+mod straight_links;
