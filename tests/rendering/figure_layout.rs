@@ -602,3 +602,41 @@ fn the_line_of_stroke_leaves_no_stub_beside_a_letter() {
         );
     }
 }
+
+/// The block's letter in Fig. 60 (issue 38): at l = 1.06 r, 269.09°,
+/// (b)'s "c" stood between the crank and the rod hugging the rod, read
+/// as the rod's name; at 90.03° (c)'s stood under C's bearing, nowhere
+/// near the block. A block's letter stands nearer the block's outline
+/// than any link or bearing of its panel (by the glyphs' box, read from
+/// the main view's strokes).
+#[test]
+fn a_blocks_letter_stands_nearer_its_block_than_a_link_or_a_bearing() {
+    for deg in [269.09, 90.03] {
+        let text = svg(FigureName::Fig60Chains, Some((1.0, 1.06, 0.0, deg)), None);
+        let plate = Plate::read(&text);
+        let panel = &plate.panels[0];
+        for k in ["b", "c"] {
+            let Some(letter) = (panel.labels.iter()).find(|l| l.id == format!("label-link-c-{k}"))
+            else {
+                panic!("{deg}°: no letter of the block in ({k})");
+            };
+            let nearest = |prefix: &str| {
+                (panel.strokes.iter())
+                    .filter(|s| s.id.starts_with(prefix) && s.id.ends_with(&format!("-{k}")))
+                    .flat_map(|s| s.segs.iter())
+                    .map(|s| letter.rect.distance_to_seg(s))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let own = nearest("block-slider");
+            assert!(own.is_finite(), "{deg}°: no block read in ({k})");
+            for rival in ["link-crank", "link-rod", "bearing-C"] {
+                let d = nearest(rival);
+                assert!(
+                    own + 1.0 <= d,
+                    "{deg}°: ({k})'s c {:?} {own:.1} from its block, {d:.1} from {rival}",
+                    letter.rect
+                );
+            }
+        }
+    }
+}
