@@ -50,6 +50,11 @@ impl PanelLayout<'_> {
                 (lo.inf(p), hi.sup(p))
             });
         self.obstacles.boxed(Frame::from_corners(lo, hi));
+        // The triangle, the foot and the hatched strip's far edge: what a
+        // block's letter keeps farther from than from its block.
+        let far = [at(-base - 5.0, h + 6.0), at(base, h + 6.0)];
+        (self.grounds).extend([(tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])]);
+        (self.grounds).extend([(feet[0], feet[1]), (far[0], far[1])]);
         let pen = ink.pen;
         Some(
             ink.tag(Mark::group())
@@ -138,6 +143,14 @@ impl PanelLayout<'_> {
         } else {
             self.block_room(&pts);
         }
+        let closed: Vec<Point> = pts.iter().chain(pts.first()).copied().collect();
+        (self.blocks).push(
+            closed
+                .iter()
+                .zip(closed.iter().skip(1))
+                .map(|(p, q)| (*p, *q))
+                .collect(),
+        );
         Some(
             ink.tag(path(
                 polyline_d(&pts, true),

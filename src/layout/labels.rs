@@ -738,6 +738,11 @@ pub(crate) struct Steer<'a> {
     /// The dimension lines a text naming a line keeps nearer its own
     /// line than, at a lesser cost ([`MISREAD`]) than another link's.
     pub dimensions: &'a [Segment],
+    /// The sides of the block a letter names and the links, which a place
+    /// should not stand nearer to than to the block ([`AMBIGUOUS`]):
+    /// a block's letter nearer a link names the link. `None` for any
+    /// other label.
+    pub block: Option<(&'a [Segment], &'a [Segment])>,
     /// The line a leader from the place runs to, the other links and the
     /// dimension lines: a place nearer another link than its line, whose
     /// leader ([`leader_to_line`]) would cross a link, a dimension line or
@@ -948,7 +953,13 @@ fn nearer_another_line(b: &Frame, own: Segment, rivals: &[Segment]) -> bool {
 /// Whether `b` stands less than [`LINE_NEARER`] nearer the line `own`
 /// than one of the `rivals`, wherever along it.
 pub(crate) fn nearer_a_rival(b: &Frame, own: Segment, rivals: &[Segment]) -> bool {
-    let distance = |(p, q): (Point, Point)| {
+    nearer_a_rival_than(b, &[own], rivals)
+}
+
+/// Whether `b` stands less than [`LINE_NEARER`] nearer the nearest of
+/// the lines `own` (a block's sides) than one of the `rivals`.
+fn nearer_a_rival_than(b: &Frame, own: &[Segment], rivals: &[Segment]) -> bool {
+    let distance = |&(p, q): &(Point, Point)| {
         if b.contains(p) || b.contains(q) {
             return 0.0;
         }
@@ -962,8 +973,8 @@ pub(crate) fn nearer_a_rival(b: &Frame, own: Segment, rivals: &[Segment]) -> boo
             .map(|(u, v)| segment_distance(u, v, p, q))
             .fold(f64::INFINITY, f64::min)
     };
-    let mine = distance(own);
-    rivals.iter().any(|&r| distance(r) < mine + LINE_NEARER)
+    let mine = own.iter().map(distance).fold(f64::INFINITY, f64::min);
+    rivals.iter().any(|r| distance(r) < mine + LINE_NEARER)
 }
 
 /// How much nearer (page units) a text naming a line stands to it than
@@ -994,6 +1005,7 @@ pub(crate) fn place_toward(
         pair,
         line,
         dimensions,
+        block,
         led,
         near_first,
         farthest,
@@ -1065,6 +1077,7 @@ pub(crate) fn place_toward(
         }
         if nearer_another(&b, anchor, &others, pair)
             || line.is_some_and(|(own, rivals)| nearer_another_line(&b, own, rivals))
+            || block.is_some_and(|(own, rivals)| nearer_a_rival_than(&b, own, rivals))
         {
             cost += AMBIGUOUS;
         } else if line.is_some_and(|(own, _)| nearer_another_line(&b, own, dimensions)) {

@@ -209,6 +209,14 @@ struct PanelLayout<'a> {
     /// The outlines of the bodies drawn (page points), over which a link
     /// is drawn with a rim of paper.
     bodies: Vec<Vec<Point>>,
+    /// The sides of the blocks and bars drawn (page segments, each one's
+    /// closed outline): a letter set on a block's side names the block,
+    /// and keeps nearer it than any link.
+    blocks: Vec<Vec<(Point, Point)>>,
+    /// The bearings drawn (page segments: each one's triangle, foot and
+    /// the far edge of its hatching), which a block's letter keeps
+    /// farther from than from its block.
+    grounds: Vec<(Point, Point)>,
 }
 
 impl PanelLayout<'_> {
@@ -361,6 +369,8 @@ fn place_panel(panel: &Panel, style: Style, font: Font, room: &Frame) -> PlacedP
         links: Vec::new(),
         dimensions: Vec::new(),
         bodies: Vec::new(),
+        blocks: Vec::new(),
+        grounds: Vec::new(),
     };
     let clip = panel.is_clipped().then(|| *panel.rect());
     let mut order: Vec<(usize, &Item)> = panel
@@ -595,6 +605,15 @@ impl PanelLayout<'_> {
             .map(|p| {
                 let others = others(p, &self.points, 0.0);
                 let rivals = rivals(p, &self.links);
+                let block = block_of(p, &self.points, &self.blocks);
+                // A bar's sides are links too: its own are not its rivals.
+                let unlike_block: Vec<(Point, Point)> = match block {
+                    Some(own) => (self.links.iter().chain(&self.grounds))
+                        .filter(|l| !own.contains(l))
+                        .copied()
+                        .collect(),
+                    None => Vec::new(),
+                };
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
@@ -611,6 +630,7 @@ impl PanelLayout<'_> {
                                 pair: p.size,
                                 line: p.line.map(|own| (own, rivals.as_slice())),
                                 dimensions: &self.dimensions,
+                                block: block.map(|own| (own, unlike_block.as_slice())),
                                 led: None,
                                 near_first: p.letter && p.along.is_empty() && p.line.is_none(),
                                 farthest: (p.letter && p.along.is_empty() && p.line.is_none())
@@ -754,6 +774,7 @@ impl PanelLayout<'_> {
                                 pair: p.size,
                                 line: None,
                                 dimensions: &self.dimensions,
+                                block: None,
                                 led: None,
                                 near_first: p.letter && p.along.is_empty(),
                                 farthest: None,
@@ -861,6 +882,26 @@ fn rivals(p: &Pending, links: &[(Point, Point)]) -> Vec<(Point, Point)> {
         .filter(|(p, q)| !(on_own(*p) && on_own(*q)))
         .copied()
         .collect()
+}
+
+/// The sides of the block a point's letter is set on (its anchor on the
+/// block's outline, not a point drawn): the block's own letter ("c", the
+/// block in Fig. 60's slot), which keeps nearer the block than any link
+/// or bearing ([`labels::Steer::block`]). Set by the rod it entered the slot by, it
+/// hugged the rod and named it (Fig. 60 (b) at l = 1.06 r, 269.09°); by
+/// the crank, under C's bearing (main (c) at 90.03°).
+fn block_of<'b>(
+    p: &Pending,
+    points: &[Point],
+    blocks: &'b [Vec<(Point, Point)>],
+) -> Option<&'b [(Point, Point)]> {
+    if !p.letter || p.line.is_some() || !p.along.is_empty() || points.contains(&p.anchor) {
+        return None;
+    }
+    let on = |sides: &&Vec<(Point, Point)>| {
+        (sides.iter()).any(|&(x, y)| crate::geom::point_segment_distance(p.anchor, x, y) < 0.5)
+    };
+    blocks.iter().find(on).map(Vec::as_slice)
 }
 
 /// Where a label was placed: the point its text is written at, its box,

@@ -602,3 +602,105 @@ fn the_line_of_stroke_leaves_no_stub_beside_a_letter() {
         );
     }
 }
+
+/// The text of the `<text>` element with `id`, its tags dropped.
+fn text_of(svg: &str, id: &str) -> Option<String> {
+    let at = svg.find(&format!("id=\"{id}\""))?;
+    let body = at + svg[at..].find('>')? + 1;
+    let end = body + svg[body..].find("</text>")?;
+    Some(common::read_text(&svg[body..end]))
+}
+
+/// Points lettered together (issue 38): "B, F, G" under Kisch's B at
+/// l = 39.3 r, 0°, while the foot of the perpendicular from H stood 8
+/// units beside B's pin in the detail; Bennett's "B, F, G, K, L" with
+/// CG = 1.023 CB (F 6.85 units from B at ×20), "C, K, G" at 90.01°
+/// with G 6.9 units off. One letter names points only where their marks
+/// run into one on the page, in a detail as on the main view: every
+/// name of a joint letter within the main view's 6 units of the first,
+/// in its panel, from their markers or the metadata's places.
+#[test]
+fn points_lettered_together_are_one_mark_on_the_page() {
+    let engines = [
+        (FigureName::Fig66Kisch, (1.0, 39.3, 0.0, 0.0)),
+        (FigureName::Fig66Kisch, (1.0, 39.3, 0.0, 180.0)),
+        (FigureName::Fig66Kisch, (1.0, 55.4, 0.0, 0.0)),
+        (FigureName::BennettConstruction, (1.0, 42.7, 0.0, 0.0)),
+        (FigureName::BennettConstruction, (1.0, 42.7, 0.0, 90.01)),
+        (
+            FigureName::VelocityAccelerationPolygons,
+            (1.0, 1.05, 0.0, 89.17),
+        ),
+    ];
+    let joined = 6.0;
+    for (name, engine) in engines {
+        let text = svg(name, Some(engine), None);
+        let plate = Plate::read(&text);
+        for panel in plate.panels.iter().chain(&plate.polygons) {
+            for label in &panel.labels {
+                let Some(words) = text_of(&text, &label.id) else {
+                    continue;
+                };
+                let names: Vec<String> = (words.split(", "))
+                    .map(|n| n.trim().replace(['ʹ', '′'], "2"))
+                    .collect();
+                if names.len() < 2 {
+                    continue;
+                }
+                let Some(head) = plate.point(panel, &names[0]) else {
+                    continue;
+                };
+                for n in &names[1..] {
+                    let Some(p) = plate.point(panel, n) else {
+                        continue;
+                    };
+                    let d = distance(p, head);
+                    assert!(
+                        d <= joined,
+                        "{name:?} {engine:?}: {} \"{words}\": {n} {d:.2} from {}",
+                        label.id,
+                        names[0]
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The block's letter in Fig. 60 (issue 38): at l = 1.06 r, 269.09°,
+/// (b)'s "c" stood between the crank and the rod hugging the rod, read
+/// as the rod's name; at 90.03° (c)'s stood under C's bearing, nowhere
+/// near the block. A block's letter stands nearer the block's outline
+/// than any link or bearing of its panel (by the glyphs' box, read from
+/// the main view's strokes).
+#[test]
+fn a_blocks_letter_stands_nearer_its_block_than_a_link_or_a_bearing() {
+    for deg in [269.09, 90.03] {
+        let text = svg(FigureName::Fig60Chains, Some((1.0, 1.06, 0.0, deg)), None);
+        let plate = Plate::read(&text);
+        let panel = &plate.panels[0];
+        for k in ["b", "c"] {
+            let Some(letter) = (panel.labels.iter()).find(|l| l.id == format!("label-link-c-{k}"))
+            else {
+                panic!("{deg}°: no letter of the block in ({k})");
+            };
+            let nearest = |prefix: &str| {
+                (panel.strokes.iter())
+                    .filter(|s| s.id.starts_with(prefix) && s.id.ends_with(&format!("-{k}")))
+                    .flat_map(|s| s.segs.iter())
+                    .map(|s| letter.rect.distance_to_seg(s))
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let own = nearest("block-slider");
+            assert!(own.is_finite(), "{deg}°: no block read in ({k})");
+            for rival in ["link-crank", "link-rod", "bearing-C"] {
+                let d = nearest(rival);
+                assert!(
+                    own + 1.0 <= d,
+                    "{deg}°: ({k})'s c {:?} {own:.1} from its block, {d:.1} from {rival}",
+                    letter.rect
+                );
+            }
+        }
+    }
+}
