@@ -58,17 +58,8 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
             },
         );
     }
-    // Where the crank lies under the rod (drawn as an arm beneath it), r
-    // is tried first on the crank's side of the rod and l on the other,
-    // so that each value stands nearer its own link.
-    let crank_side = super::mechanism::crank_under_rod(canvas, (c, b, a))
-        .then(|| crank_side_of_rod((c, b, a)));
     if !canvas.is_bare(nalgebra::center(&c, &b)) {
-        let r = RichText::italic("r");
-        match crank_side {
-            Some(side) => canvas.line_label_toward("value-r", (c, b), side, r, TextSize::Small),
-            None => canvas.line_label("value-r", (c, b), r, TextSize::Small),
-        }
+        canvas.line_label("value-r", (c, b), RichText::italic("r"), TextSize::Small);
     }
     let l = if ctx.scene.notation() == crate::scene::Notation::Ng {
         RichText::italic("l")
@@ -76,28 +67,7 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
         RichText::parse(&format!("*l* = {}*r*", crate::number::short(m.ratio())))
     };
     if !canvas.is_bare(nalgebra::center(&b, &a)) {
-        match crank_side {
-            Some(side) => canvas.line_label_toward("value-l", (b, a), -side, l, TextSize::Small),
-            None => canvas.line_label("value-l", (b, a), l, TextSize::Small),
-        }
-    }
-}
-
-/// The unit normal to the rod B A on the side the crank C B leaves it
-/// towards (the side of C); below the rod where C lies on its line (an
-/// in-line engine at the inner dead centre), or along y where the rod
-/// has no length.
-fn crank_side_of_rod((c, b, a): (Point, Point, Point)) -> Vector {
-    let Some(u) = crate::geom::unit(a - b) else {
-        return Vector::new(0.0, -1.0);
-    };
-    let n = Vector::new(-u.y, u.x);
-    let side = (c - b).dot(&n);
-    match side {
-        s if s > 0.0 => n,
-        s if s < 0.0 => -n,
-        _ if n.y <= 0.0 => n,
-        _ => -n,
+        canvas.line_label("value-l", (b, a), l, TextSize::Small);
     }
 }
 

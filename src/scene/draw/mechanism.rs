@@ -455,7 +455,7 @@ const UNDER_ROD: f64 = 5.0;
 /// of the rod (an in-line engine's rod runs over C at 180°, and its
 /// crank, wholly under it, was not seen, the rod appearing pinned at C,
 /// in the crank's detail of a long rod too).
-pub(crate) fn crank_under_rod(canvas: &Canvas, (c, b, a): (Point, Point, Point)) -> bool {
+fn crank_under_rod(canvas: &Canvas, (c, b, a): (Point, Point, Point)) -> bool {
     (b - c).norm() > 0.0
         && (a - b).norm() > 0.0
         && canvas.page(crate::geom::point_segment_distance(c, b, a)) < UNDER_ROD
