@@ -22,7 +22,9 @@ pub(crate) mod valid;
 
 pub use cache::Evaluations;
 pub(crate) use canvas::{Canvas, Marker, round};
-pub(crate) use draw::{COINCIDE, arm, letter_near_together, offset_note, torque_arrow};
+pub(crate) use draw::{
+    COINCIDE, LINK_BESIDE, LINK_JOG, letter_near_together, offset_note, path_beside, torque_arrow,
+};
 pub use layer::Layer;
 pub(crate) use letter_ways::{LINK_LETTER_NEAR, letter_ways};
 pub(crate) use linkage::{BEARING_REACH, PIN_CLEAR, Seg, Slot};

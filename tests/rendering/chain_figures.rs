@@ -64,9 +64,14 @@ fn bare(p: (f64, f64), s: &Seg, t: &Seg) -> bool {
     (0.0..=1.0).contains(&at) && !(lo - 0.02..=hi + 0.02).contains(&at)
 }
 
-/// A link's run on the page from its path: its ends.
+/// A link's run on the page from its path: its ends, or for the frame d
+/// drawn beside the line C O_cd (four points, turned in to its pins at
+/// either end) the straight run between the turns.
 fn run(p: &[(f64, f64)]) -> Seg {
-    Seg(p[0], p[p.len() - 1])
+    match p.len() {
+        4 => Seg(p[1], p[2]),
+        _ => Seg(p[0], p[p.len() - 1]),
+    }
 }
 
 #[test]
@@ -97,17 +102,7 @@ fn each_link_letter_stands_nearer_its_own_link_than_any_other() {
                     continue;
                 };
                 lettered += 1;
-                // A link drawn as an arm under another lying over it is
-                // seen as the arm's outline too.
-                let id_of = |l: &str| links.iter().find(|&&(x, _)| x == l).map(|&(_, i)| i);
-                let arm = format!("arm-{}-{suffix}", id_of(letter).unwrap_or(""));
-                let by_arm = match crate::common::tag(&svg, &arm) {
-                    Some(_) => (path(&svg, &arm).windows(2))
-                        .map(|w| segment_distance(p, w[0], w[1]))
-                        .fold(f64::INFINITY, f64::min),
-                    None => f64::INFINITY,
-                };
-                let mine = segment_distance(p, own.0, own.1).min(by_arm);
+                let mine = segment_distance(p, own.0, own.1);
                 for (other, theirs) in &segs {
                     if other == letter {
                         continue;
@@ -312,11 +307,9 @@ fn no_link_runs_through_a_bearing() {
 fn the_frame_is_never_hidden_along_a_moving_link() {
     // At l = 1.08 r, 269.31° (a)'s crank a pointed at O_cd and lay on the
     // frame d, hidden in it, its pin read as a joint halfway along d; at
-    // 180° the lever c, folded onto d, merged with it. d drawn beside the
-    // line C O_cd there read as a bent bar (review 2026-12a): d is drawn
-    // straight, and a moving link within 3 units of it over more than a
-    // pin's width and half its length or more (hidden along it, not
-    // leaving a pin on it a few degrees off) is drawn as an arm about its line, seen each side of d.
+    // 180° the lever c, folded onto d, merged with it. d is drawn beside
+    // the line C O_cd there: no moving link comes within 3 units of it
+    // over more than a pin's width.
     let mut checked = 0;
     for (rod, offset, deg) in ENGINES.into_iter().chain(THROUGH_BEARING) {
         let svg = svg(FIG, rod, offset, deg);
@@ -336,14 +329,9 @@ fn the_frame_is_never_hidden_along_a_moving_link() {
                 * length
                 / n as f64;
             checked += 1;
-            if near <= 10.0 || near < 0.5 * length {
-                continue;
-            }
-            let arm = format!("arm-{id}-a");
             assert!(
-                crate::common::attr(&svg, &arm, "d").is_some()
-                    && super::straight_links::arm_seen(&path(&svg, &arm), s, t),
-                "l = {rod}, e = {offset}, {deg}°: the {id} lies along the frame d over {near:.1} units, no arm seen"
+                near <= 10.0,
+                "l = {rod}, e = {offset}, {deg}°: the {id} lies along the frame d over {near:.1} units"
             );
         }
     }
@@ -488,23 +476,15 @@ fn every_link_of_every_panel_is_drawn_at_least_40_units_long() {
                     detail.is_some()
                 ),
             };
-            // Each link as drawn.
+            // Each link as drawn (the rod beside the crank where it lies
+            // along it, turned in to its pins).
             let by = |id: &str| {
                 let q = path(&svg, &format!("detail-link-{id}-{suffix}"));
                 (q.windows(2))
                     .map(|w| segment_distance(p, w[0], w[1]))
                     .fold(f64::INFINITY, f64::min)
             };
-            // The crank drawn as an arm under the rod: by the arm's
-            // outline.
-            let arm = format!("detail-arm-crank-{suffix}");
-            let by_arm = match crate::common::tag(&svg, &arm) {
-                Some(_) => (path(&svg, &arm).windows(2))
-                    .map(|w| segment_distance(p, w[0], w[1]))
-                    .fold(f64::INFINITY, f64::min),
-                None => f64::INFINITY,
-            };
-            let (mine, other) = (by("crank").min(by_arm), by("rod"));
+            let (mine, other) = (by("crank"), by("rod"));
             assert!(
                 mine < other,
                 "{what}: ({suffix}) the detail's a {mine:.1} from the crank, {other:.1} from the rod"
@@ -673,16 +653,43 @@ fn no_piece_of_guide_the_block_does_not_stand_on_is_shorter_than_the_block() {
     }
 }
 
+/// The length (page units) of the polyline `p` within `near` of the
+/// segment `s`, from a point every half unit or so, leaving out its
+/// points within `ends` of its first and last.
+fn length_near(p: &[(f64, f64)], s: &Seg, near: f64, ends: f64) -> f64 {
+    let (first, last) = (p[0], p[p.len() - 1]);
+    let off = |x: (f64, f64), e: (f64, f64)| (x.0 - e.0).hypot(x.1 - e.1) >= ends;
+    p.windows(2)
+        .map(|w| {
+            let (a, b) = (w[0], w[1]);
+            let length = (b.0 - a.0).hypot(b.1 - a.1);
+            let n = ((2.0 * length).ceil() as usize).max(1);
+            (0..n)
+                .map(|k| {
+                    let u = (k as f64 + 0.5) / n as f64;
+                    (a.0 + (b.0 - a.0) * u, a.1 + (b.1 - a.1) * u)
+                })
+                .filter(|&x| off(x, first) && off(x, last))
+                .filter(|&x| segment_distance(x, s.0, s.1) < near)
+                .count() as f64
+                * length
+                / n as f64
+        })
+        .sum()
+}
+
 #[test]
 fn links_folded_over_one_another_are_drawn_apart() {
     // At l = 1.06 r, 180° the rod folded back over the crank in every
     // panel, drawn on it: one line with a letter either side; and (a)'s
     // frame d, 7 units beside the lever c folded onto it, read with it
     // as one double line; at l = 1.03 r and 1.08 r, 180° the rod lay on
-    // the crank in (b) and (c), where (a) drew it beside. Drawn beside,
-    // jogged in to its pins, the rod read as a bent bar (review 2026-12a).
-    // In every panel the rod runs straight, and the crank folded under it
-    // is drawn as an arm about its line, seen each side of the rod.
+    // the crank in (b) and (c), where (a) drew it beside. In every panel
+    // the rod runs 8 units or more (a link's width and paper) from the
+    // crank, and d from the lever, but where each turns in to its pins
+    // (within 25 units of them).
+    const APART: f64 = 8.0;
+    const TURNS: f64 = 25.0;
     let mut checked = 0;
     for (rod, offset, deg) in ENGINES.into_iter().chain(FOLDED) {
         let svg = svg(FIG, rod, offset, deg);
@@ -697,21 +704,20 @@ fn links_folded_over_one_another_are_drawn_apart() {
             let (u, v) = ((crank.0.0 - b.0, crank.0.1 - b.1), (a.0 - b.0, a.1 - b.1));
             let cos = (u.0 * v.0 + u.1 * v.1) / (u.0.hypot(u.1) * v.0.hypot(v.1));
             if cos > 6f64.to_radians().cos() && v.0.hypot(v.1) < 1.5 * u.0.hypot(u.1) {
-                pairs.push((k, rod, crank));
+                pairs.push((format!("rod b of ({k})"), rod, crank));
             }
         }
-        for (k, p, other) in pairs {
+        let lever = seg(path(&svg, "link-lever-a"));
+        let frame = path(&svg, "link-frame-a");
+        if frame.len() == 4 {
+            pairs.push(("frame d of (a)".into(), frame, lever));
+        }
+        for (what, p, other) in pairs {
             checked += 1;
-            assert_eq!(
-                p.len(),
-                2,
-                "l = {rod}, e = {offset}, {deg}°: ({k}) the rod bent"
-            );
-            let arm = format!("arm-crank-{k}");
+            let near = length_near(&p, &other, APART, TURNS);
             assert!(
-                crate::common::attr(&svg, &arm, "d").is_some()
-                    && super::straight_links::arm_seen(&path(&svg, &arm), other.0, other.1),
-                "l = {rod}, e = {offset}, {deg}°: ({k}) the crank folded under the rod not seen"
+                near < 1.0,
+                "l = {rod}, e = {offset}, {deg}°: the {what} runs {near:.1} units within {APART} of the link folded under it"
             );
         }
     }
@@ -741,9 +747,9 @@ const APART_ALREADY: [(f64, f64, f64); 4] = [
 fn the_rod_is_drawn_beside_its_line_only_where_the_crank_lies_along_it() {
     // At l = 1.4 r, e = 0.3 r, 180° (a) bent the rod beside its line
     // because A stood inside the crank circle, though the crank left it
-    // at 11°. The crank is drawn as an arm under the rod only where its
-    // far end C lies within 15 units of the rod's line (two links'
-    // widths and paper: the two lie along one another).
+    // at 11°. The rod is drawn beside its line (four points) only where
+    // the crank's far end C lies within 15 units of that line (two
+    // links' widths and paper: the two lie along one another).
     const ALONG: f64 = 15.0;
     let mut rods = 0;
     for (rod, offset, deg) in ENGINES.into_iter().chain(FOLDED).chain(APART_ALREADY) {
@@ -752,21 +758,13 @@ fn the_rod_is_drawn_beside_its_line_only_where_the_crank_lies_along_it() {
             let crank = path(&svg, &format!("link-crank-{k}"));
             let p = path(&svg, &format!("link-rod-{k}"));
             rods += 1;
-            if crate::common::attr(&svg, &format!("arm-crank-{k}"), "d").is_none() {
+            if p.len() != 4 {
                 continue;
             }
-            // (a)'s crank lying along the frame d is drawn as an arm
-            // under d (its end B within 15 units of d's line).
-            if k == "a" {
-                let d = path(&svg, "link-frame-a");
-                if segment_distance(crank[crank.len() - 1], d[0], d[d.len() - 1]) < ALONG {
-                    continue;
-                }
-            }
-            let d = segment_distance(crank[0], p[0], p[p.len() - 1]);
+            let d = segment_distance(crank[0], p[0], p[3]);
             assert!(
                 d < ALONG,
-                "l = {rod}, e = {offset}, {deg}°: ({k}) the crank drawn as an arm, C {d:.1} units off the rod"
+                "l = {rod}, e = {offset}, {deg}°: ({k}) the rod is drawn beside its line, C {d:.1} units off it"
             );
         }
     }
@@ -879,103 +877,4 @@ fn the_crank_centre_and_the_rod_s_end_crowded_stand_apart_in_a_detail() {
         }
         assert!(crowded > 0, "{at}: C and A read apart in every panel");
     }
-}
-
-/// The way (a unit page vector from its pin) the ground mark `bearing`
-/// (an id) stands out to, from the mean of its strokes' ends, with the
-/// pin `pin`'s centre; `None` where it is not drawn.
-fn bearing_way(svg: &str, bearing: &str, pin: &str) -> Option<(f64, f64)> {
-    let strokes = group_strokes(svg, bearing);
-    if strokes.is_empty() {
-        return None;
-    }
-    let centre = (
-        crate::common::num(svg, pin, "cx"),
-        crate::common::num(svg, pin, "cy"),
-    );
-    let (sx, sy) = (strokes.iter())
-        .flat_map(|&(p, q)| [p, q])
-        .fold((0.0, 0.0), |(x, y), p| {
-            (x + p.0 - centre.0, y + p.1 - centre.1)
-        });
-    let n = sx.hypot(sy);
-    (n > 0.0).then(|| (sx / n, sy / n))
-}
-
-/// Engines the review 2026-12a found C's ground mark facing one way in a
-/// panel and another in its detail, with their neighbours (l, e, θ at
-/// r = 1).
-const DETAILED: [(f64, f64, f64); 8] = [
-    (1.1, 0.0, 180.0),
-    (1.06, 0.0, 180.0),
-    (1.1, 0.0, 89.66),
-    (1.06, 0.0, 90.03),
-    (29.5, 0.0, 90.08),
-    (29.5, 0.0, 0.0),
-    (1.15, 0.0, 180.0),
-    (1.1, 0.0, 181.0),
-];
-
-#[test]
-fn a_ground_mark_faces_the_same_way_in_a_panel_and_its_detail() {
-    // Review 2026-12a: at l = 1.1 r and 1.06 r, 180° C's ground mark
-    // pointed up in (a) and (b) and down in their ×8 and ×15 details; at
-    // l = 1.1 r, 89.66° it stood to the side in (b) and below in the
-    // detail. Each detail turned it by its own enlarged links. The
-    // detail's faces as its panel's.
-    let mut checked = 0;
-    for (rod, offset, deg) in DETAILED {
-        let svg = svg(FIG, rod, offset, deg);
-        for k in ["a", "b", "c"] {
-            let main = bearing_way(&svg, &format!("bearing-C-{k}"), &format!("pin-C-{k}"));
-            let detail = bearing_way(
-                &svg,
-                &format!("detail-bearing-C-{k}"),
-                &format!("detail-pin-C-{k}"),
-            );
-            let (Some(m), Some(d)) = (main, detail) else {
-                continue;
-            };
-            checked += 1;
-            assert!(
-                m.0 * d.0 + m.1 * d.1 > 0.9,
-                "l = {rod}, e = {offset}, {deg}°: ({k}) C's ground mark faces {m:.2?} in the panel, {d:.2?} in its detail"
-            );
-        }
-    }
-    assert!(checked > 0, "no detail's ground mark checked");
-}
-
-#[test]
-fn the_frame_d_keeps_off_the_crank_centre_s_ground_mark() {
-    // Review 2026-12a: in (a) the frame d and its hatching ran straight
-    // through C's ground triangle and its hatched base at every render,
-    // the default too: two grounds read as one tangle. Away from C's pin
-    // (9 units), no stroke of C's ground mark comes within 1.5 units of d.
-    let mut checked = 0;
-    for (rod, offset, deg) in ENGINES.into_iter().chain(DETAILED) {
-        let svg = svg(FIG, rod, offset, deg);
-        let d = path(&svg, "link-frame-a");
-        let (s, t) = (d[0], d[d.len() - 1]);
-        let centre = (
-            crate::common::num(&svg, "pin-C-a", "cx"),
-            crate::common::num(&svg, "pin-C-a", "cy"),
-        );
-        for (p, q) in group_strokes(&svg, "bearing-C-a") {
-            for j in 0..=20 {
-                let u = f64::from(j) / 20.0;
-                let x = (p.0 + (q.0 - p.0) * u, p.1 + (q.1 - p.1) * u);
-                if (x.0 - centre.0).hypot(x.1 - centre.1) < 9.0 {
-                    continue;
-                }
-                checked += 1;
-                let off = segment_distance(x, s, t);
-                assert!(
-                    off > 1.5,
-                    "l = {rod}, e = {offset}, {deg}°: C's ground mark {off:.1} from d at {x:?}"
-                );
-            }
-        }
-    }
-    assert!(checked > 0, "no ground mark checked");
 }

@@ -26,4 +26,3 @@ mod mechanism_review;
 mod plates;
 mod polygon_figures;
 mod quick_return_figures;
-mod straight_links;

@@ -16,7 +16,9 @@ use crate::error::{Error, Field, Result};
 use crate::figure::{Align, Figure, Foot, Item, RichText, Role, Shape, TextSize};
 use crate::geom::{Frame, Intersection, Point, Vector, crossing, segment_distance, unit};
 use crate::number::plain;
-use crate::scene::{BEARING_REACH, Canvas, Marker, PIN_CLEAR, Seg, Slot, arm};
+use crate::scene::{
+    BEARING_REACH, Canvas, LINK_BESIDE, LINK_JOG, Marker, PIN_CLEAR, Seg, Slot, path_beside,
+};
 use crate::scene::{LINK_LETTER_NEAR, letter_ways};
 use crate::{angle::Angle, mechanism::SliderCrank};
 use serde_json::json;
@@ -237,11 +239,10 @@ struct Panel {
     c: Point,
     b: Point,
     a: Point,
-    /// Where the crank lies under the rod (drawn as an arm), the side
-    /// the rod is lettered on, the crank's letter on the other.
+    /// The rod as drawn: B A, or beside the crank folded under it.
+    rod: Vec<Seg>,
+    /// The side the rod is drawn beside the crank on, if it is.
     rod_side: Option<Vector>,
-    /// The side C's ground mark is held to (a detail's, its panel's).
-    c_foot: Option<Foot>,
 }
 
 /// A block nearer the crank centre than this (page units: the pin's
@@ -299,13 +300,6 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
             false => crowded(&chains, k, map.scale(), detail_area(&frame, map).3)
                 .map(|(mid, m)| About::Pins(mid + dx, m)),
         };
-        let mut s = Canvas::new(map, frame).suffixed(suffix);
-        let (key, panel_centres, c_foot) =
-            panel(&mut s, &chains, &layout, block, (k, !enlarged, None));
-        centres.insert(key.into(), panel_centres);
-        // The detail draws C's ground mark facing as the panel's: turned
-        // by its own enlarged links, it pointed up in the panel and down
-        // in the detail (l = 1.1 r, 180°).
         let detail = match about {
             Some(about) => crank_detail(
                 ctx,
@@ -313,10 +307,13 @@ pub(in crate::catalogue) fn build(ctx: &Ctx) -> Result<Figure> {
                 &frame,
                 map,
                 captions_end,
-                (k, suffix, about, c_foot),
+                (k, suffix, about),
             )?,
             None => None,
         };
+        let mut s = Canvas::new(map, frame).suffixed(suffix);
+        let (key, panel_centres) = panel(&mut s, &chains, &layout, block, (k, !enlarged, false));
+        centres.insert(key.into(), panel_centres);
         if let Some((region, _)) = &detail {
             super::coriolis::mark_window(&mut s, "mechanism", region);
         }
@@ -439,7 +436,7 @@ fn crank_detail(
     frame: &Frame,
     map: crate::figure::PageFromWorld,
     top: f64,
-    (k, suffix, about, c_foot): (usize, &'static str, About, Foot),
+    (k, suffix, about): (usize, &'static str, About),
 ) -> Result<Option<(Frame, Plot)>> {
     let scale = map.scale();
     let (x0, x1, w, side) = detail_area(frame, map);
@@ -471,13 +468,7 @@ fn crank_detail(
         .suffixed(suffix);
     // The crowded pins' detail leaves the crank's letter to the panel.
     let crank_letter = matches!(about, About::Crank);
-    panel(
-        &mut s,
-        chains,
-        layout,
-        block,
-        (k, crank_letter, Some(c_foot)),
-    );
+    panel(&mut s, chains, layout, block, (k, crank_letter, true));
     let items = s.finish().0;
     if !crank_letter && crank_crosses_guides(&items) {
         return Ok(None);
@@ -556,17 +547,15 @@ fn push_caption(plot: &mut Plot, lines: &[RichText], at: Point, clear: f64, suff
 /// Panel `k` drawn on `s`: the crank circle, the crank and the rod with
 /// their pins and letters, then (a)'s lever and frame or the slot and
 /// block of (b) and (c); the crank lettered where `crank_letter` (not
-/// in a panel whose crank a detail letters), C's ground mark facing
-/// `c_foot` where given (a detail facing it as its panel's). Returns the
-/// panel's key, its virtual centres and the side C's ground mark stands
-/// on.
+/// in a panel whose crank a detail letters), and `detail` where `s` is a
+/// crank's detail. Returns the panel's key and its virtual centres.
 fn panel(
     s: &mut Canvas,
     chains: &Chains,
     layout: &Layout,
     block: (f64, f64),
-    (k, crank_letter, c_foot): (usize, bool, Option<Foot>),
-) -> (&'static str, serde_json::Value, Foot) {
+    (k, crank_letter, detail): (usize, bool, bool),
+) -> (&'static str, serde_json::Value) {
     let dx = Vector::new(k as f64 * layout.step, 0.0);
     let c = Point::origin() + dx;
     let r = chains.m.crank();
@@ -582,48 +571,46 @@ fn panel(
             (p.b() + dx, p.a() + dx, if k == 1 { "b" } else { "c" })
         }
     };
+    s.link("crank", vec![c, b]);
     // The rod folded back over the crank and ending on it (a short rod
     // about the inner dead centre, where it lies along the crank for
-    // much of the turn: at l = 1.06 r it leaves it at 2° at 150°), in
-    // every panel: the crank drawn as an outlined arm under the rod's
-    // straight line ([`arm`]), the two lettered on either side. Only where the crank lies along the rod
-    // ([`lying`]): not where A is inside the crank circle alone (at
-    // l = 1.4 r, e = 0.3 r, 180° the crank leaves the rod at 11°).
+    // much of the turn:
+    // at l = 1.06 r it leaves it at 2° at 150°) drawn beside it, as the
+    // frame d beside a link lying along it, on the side away from O_cd
+    // (where the lever, the frame and the slot's radius run): drawn
+    // over it, the two read as one line with two letters.
+    // In every panel, and only where the crank lies along the rod
+    // ([`beside`]): not where A is inside the crank circle alone (at
+    // l = 1.4 r, e = 0.3 r, 180° (a) bent a rod 11° off the crank). In
+    // (b) and (c) the guides leave the hatching clear of the rod's turn
+    // in to A.
     let o = chains.o_cd() + dx;
-    let rod_side = lying(s, (b, a), (c, b), LYING_SHARE)
-        .then(|| unit(a - b).map(|u| Vector::new(-u.y, u.x)))
-        .flatten()
-        .map(|n| {
-            // The rod's run past C leaning off the crank's line (an offset
-            // engine): the rod lettered on that side, the crank on the
-            // other, where the rod leaves it bare (lettered away from
-            // O_cd, a stood nearer the rod than the crank at l = 60 r,
-            // e = -1.9 r, 180°).
-            let m = unit(b - c).map_or(n, |u| Vector::new(-u.y, u.x));
-            let lean = (a - c).dot(&m) * m.dot(&n).signum();
-            let side = if s.page(lean.abs()) > 1.0 {
-                lean
-            } else {
-                -n.dot(&(o - b))
-            };
-            if side < 0.0 { -n } else { n }
-        });
-    if rod_side.is_some() {
-        arm(s, "crank", (c, b));
-    }
-    s.link("crank", vec![c, b]);
-    s.link("rod", vec![b, a]);
-    // The side C's ground mark stands on, (a)'s here.
-    let mut stood = Foot::Below;
+    let rod_side = beside(s, (b, a), &[(c, b)], LYING_SHARE)
+        .map(|n| if n.dot(&(o - b)) > 0.0 { -n } else { n });
+    let rod = match rod_side {
+        Some(n) => beside_path(s, (b, a), n),
+        None => vec![b, a],
+    };
+    s.link("rod", rod.clone());
+    let rod_segs: Vec<Seg> = rod
+        .iter()
+        .zip(rod.iter().skip(1))
+        .map(|(&p, &q)| (p, q))
+        .collect();
+    let rod_run = match rod.as_slice() {
+        [_, p, q, _] => (*p, *q),
+        _ => (b, a),
+    };
     if k == 0 {
         // (b) and (c) draw C's bearing after the block, over it.
-        // Clear of the moving links first, then of the frame d, which
-        // leaves C towards O_cd (d and its hatching ran through the
-        // pedestal and its base below C at every pose: two grounds read
-        // as one tangle).
-        let links = [(c, b), (o, a), (b, a)];
-        stood = c_foot.unwrap_or_else(|| foot(s, c, &links, &[(c, o)]));
-        s.bearing_on("C", c, stood);
+        // In a crank's detail clear of the frame d too, which leaves C
+        // towards O_cd there alone (its base lay across d's hatching);
+        // the panel keeps the side clear of the links, which their
+        // letters are set about.
+        let mut links = vec![(c, b), (o, a)];
+        links.extend(&rod_segs);
+        let frame: &[Seg] = if detail { &[(c, o)] } else { &[] };
+        s.bearing_on("C", c, foot(s, c, &links, frame));
         s.pin("C", c);
     }
     s.pin("B", b);
@@ -636,7 +623,7 @@ fn panel(
         if crank_letter {
             s.link_letter_toward("link-a", (c, b), "*a*", crank);
         }
-        s.link_letter_toward("link-b", (b, a), "*b*", rod);
+        s.link_letter_toward("link-b", rod_run, "*b*", rod);
     }
     let panel = Panel {
         k,
@@ -644,18 +631,16 @@ fn panel(
         c,
         b,
         a,
+        rod: rod_segs,
         rod_side,
         crank_letter,
-        c_foot,
     };
     let centres = if k == 0 {
         lever_panel(s, chains, &panel)
     } else {
-        let (centres, f) = slot_panel(s, chains, layout, block, &panel);
-        stood = f;
-        centres
+        slot_panel(s, chains, layout, block, &panel)
     };
-    (key, centres, stood)
+    (key, centres)
 }
 
 /// (a): the lever c about O_cd and the frame d from C to O_cd, hatched.
@@ -664,59 +649,46 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
     let (c, b, a) = (p.c, p.b, p.a);
     let o = chains.o_cd() + p.dx;
     let mut avoid = vec![(c, b), (o, a)];
-    avoid.push((b, a));
-    s.bearing_on("O-cd", o, foot(s, o, &avoid, &[(c, o)]));
+    avoid.extend(&p.rod);
+    s.bearing_on("O-cd", o, foot(s, o, &avoid, &[]));
     s.link("lever", vec![o, a]);
     let ends = PIN_CLEAR;
-    // The frame d straight on the line C O_cd, hatched on its far side;
-    // a moving link lying along it (the crank pointing at O_cd, the
-    // lever folded onto d) drawn as an outlined arm under it ([`arm`]):
-    // d drawn beside its line, jogged in to its pins, read as a bent bar.
-    // Of the links lettered (crank, rod, lever: 0, 1, 2), those drawn as
-    // arms along d, and the side of d each is lettered on: away from the
-    // other moving links (which leave d's line to one side), else the
-    // side it leans to.
-    let mut armed = Vec::new();
-    let d_normal = unit(o - c).map_or(Vector::new(1.0, 0.0), |u| Vector::new(-u.y, u.x));
-    let moving = [("crank", (c, b)), ("rod", (b, a)), ("lever", (o, a))];
-    let lean = |(p, q): Seg| (p - c).dot(&d_normal) + (q - c).dot(&d_normal);
-    for (k, (name, link)) in moving.into_iter().enumerate() {
-        if lying(s, (c, o), link, LYING_SHARE) {
-            arm(s, name, link);
-            let others: f64 = (moving.iter().enumerate())
-                .filter(|&(j, _)| j != k)
-                .map(|(_, &(_, l))| lean(l))
-                .sum();
-            let side = if s.page(others.abs()) > 1.0 {
-                -others
-            } else {
-                lean(link)
+    // The frame d on the line C O_cd, or beside it where a moving link
+    // lies along that line (the crank pointing at O_cd, the lever folded
+    // onto d), hatched on its far side.
+    let frame = match beside(s, (c, o), &avoid, 0.0) {
+        Some(n) => {
+            // Beside the line over its length, and turned in to the pins
+            // at its ends: a link ends at its pins (run straight beside
+            // the line, its end met the crank halfway along at l =
+            // 1.1 r, 180°, short of C's pin).
+            let path = beside_path(s, (c, o), n);
+            let frame = match path.as_slice() {
+                [_, p, q, _] => (*p, *q),
+                _ => (c, o),
             };
-            armed.push((k, if side < 0.0 { -d_normal } else { d_normal }));
+            s.link("frame", path);
+            s.hatch_edge_of_at_least("frame", frame, &[n], &avoid, ends, 1);
+            frame
         }
-    }
-    s.link("frame", vec![c, o]);
-    s.hatch_link("frame", c, o, &avoid, ends);
-    let frame = (c, o);
+        None => {
+            s.link("frame", vec![c, o]);
+            s.hatch_link("frame", c, o, &avoid, ends);
+            (c, o)
+        }
+    };
     s.pin("A", a);
     s.lettered("O-cd", o, "*O*_{cd}", Marker::Pin, c);
-    let links = [(c, b), (b, a), (o, a), frame];
+    let rod_run = match p.rod.as_slice() {
+        [_, run, _] => *run,
+        _ => (b, a),
+    };
+    let links = [(c, b), rod_run, (o, a), frame];
     let mut ways = letter_ways(links, &[c, b, a, o], s.world(LINK_LETTER_NEAR));
     if let (Some(n), [crank, rod, ..]) = (p.rod_side, &mut ways) {
-        // The crank under the rod and the rod each lettered on its own
-        // side.
+        // Each of the crank and the rod drawn beside it lettered on its
+        // own side.
         (*crank, *rod) = (Some(-n), Some(n));
-    }
-    // A link drawn as an arm along d and d each lettered on its own
-    // side (d's letter by the crank lying 1.6° off it at l = 1.06 r,
-    // 268.41°, stood nearer the crank than d).
-    for (k, m) in armed {
-        if let Some(w) = ways.get_mut(k) {
-            *w = Some(m);
-        }
-        if let Some(w) = ways.get_mut(3) {
-            *w = Some(-m);
-        }
     }
     for ((name, markup), (link, way)) in [("link-a", "*a*"), ("link-b", "*b*")]
         .into_iter()
@@ -735,14 +707,14 @@ fn lever_panel(s: &mut Canvas, chains: &Chains, p: &Panel) -> serde_json::Value 
 
 /// (b) and (c): the slot's middle line and guides, the block following
 /// the slot, and O_cd (at infinity in (c)). Returns the cylindric chain's
-/// virtual centres and the side C's ground mark stands on.
+/// virtual centres.
 fn slot_panel(
     s: &mut Canvas,
     chains: &Chains,
     layout: &Layout,
     (lh, hh): (f64, f64),
     p: &Panel,
-) -> (serde_json::Value, Foot) {
+) -> serde_json::Value {
     let (c, b, a, dx) = (p.c, p.b, p.a, p.dx);
     let (chain, rho, (lo, hi)) = chains.slotted(p.k == 1);
     let pose = chain.pose(chains.angle);
@@ -758,13 +730,20 @@ fn slot_panel(
     // The guides, then the slot's middle line along them only, and short
     // of the rod where it nears it outside the block (run on past where the guides open
     // towards the crank, it lay along the rod and crossed it).
-    let mut open = s.guides("slot", &slot, c, (b, a)).unwrap_or(slot.range.0);
+    // The rod's last run into A: the turn in to A where the rod is drawn
+    // beside the crank, which the guides' hatching keeps clear of.
+    let into_a = p.rod.last().copied().unwrap_or((b, a));
+    let mut open = s.guides("slot", &slot, c, into_a).unwrap_or(slot.range.0);
     let step = s.world(1.0);
     let mut at = pose.arc_position() - lh;
-    let rod_page = (s.transform().apply(b), s.transform().apply(a));
+    let rod_page: Vec<Seg> = (p.rod.iter())
+        .map(|&(x, y)| (s.transform().apply(x), s.transform().apply(y)))
+        .collect();
     let by_rod = |at: f64| {
         let q = s.transform().apply(point(at, 0.0));
-        segment_distance(q, q, rod_page.0, rod_page.1)
+        (rod_page.iter())
+            .map(|&(x, y)| segment_distance(q, q, x, y))
+            .fold(f64::INFINITY, f64::min)
     };
     while at > open {
         // On the rod, or near it and not drawing away from it (the rod
@@ -807,8 +786,9 @@ fn slot_panel(
         others.push((o + dx, a));
     }
     s.push("block-slider", Role::Link, Shape::Block { points: outline });
-    let links = [(c, b), (b, a)];
-    let c_foot = p.c_foot.unwrap_or_else(|| foot(s, c, &links, &others));
+    let mut links = vec![(c, b)];
+    links.extend(&p.rod);
+    let c_foot = foot(s, c, &links, &others);
     s.bearing_on("C", c, c_foot);
     s.pin("C", c);
     s.pin("A", a);
@@ -839,7 +819,16 @@ fn slot_panel(
             s.lettered_at_infinity("O-cd", (a, Vector::new(0.0, -1.0)), "*O*_{cd}", true);
         }
     }
-    (ChainCentres::of_cylindric(&pose).to_json(), c_foot)
+    ChainCentres::of_cylindric(&pose).to_json()
+}
+
+/// The link `p q` drawn beside its line on the side `n` (a world unit
+/// vector square to it), [`LINK_BESIDE`] off it over its length and
+/// turned in to its pins at the ends over [`LINK_JOG`], at most a third
+/// of its length each way (run straight beside the line, the frame's end
+/// met the crank halfway along at l = 1.1 r, 180°, short of C's pin).
+fn beside_path(s: &Canvas, (p, q): Seg, n: Vector) -> Vec<Point> {
+    path_beside(s, (p, q), n, s.world(LINK_JOG).min((q - p).norm() / 3.0))
 }
 
 /// A moving link nearer the line C O_cd than this (page units: a link's
@@ -854,27 +843,91 @@ const LYING_OVER: f64 = 16.0;
 /// 26 units), but they part visibly before half the crank is reached.
 const LYING_SHARE: f64 = 0.5;
 
-/// Whether the moving `link` lies along the line `p q`: within
-/// [`LYING_NEAR`] of it over [`LYING_OVER`], and over `share` of the
-/// link's own length, its points taken every page unit or so (33 points
-/// along a lever drawn 500 units long in a crank's detail stood 16
-/// apart, and its end at O_cd alone read as lying along d).
-fn lying(s: &Canvas, (p, q): Seg, (a, b): Seg, share: f64) -> bool {
-    let Some(u) = unit(q - p) else {
-        return false;
-    };
+/// The side (a world unit vector square to `p q`) the fixed link `p q`
+/// is drawn beside its line on where one of the moving `links` lies along
+/// that line (within [`LYING_NEAR`] of it over [`LYING_OVER`], and over
+/// `share` of the link's length): away from
+/// the links lying along it, or, where these lie on the line itself, from
+/// the others. `None` where none lies along it.
+fn beside(s: &Canvas, (p, q): Seg, links: &[Seg], share: f64) -> Option<Vector> {
+    let u = unit(q - p)?;
     let n = Vector::new(-u.y, u.x);
     let length = (q - p).norm();
-    let along = s.page((b - a).norm());
-    let m = (along.ceil() as usize).clamp(32, 4000);
-    let step = along / m as f64;
-    let near = (0..=m)
-        .map(|k| a + (b - a) * (k as f64 / m as f64))
-        .filter(|x| (0.0..=length).contains(&(x - p).dot(&u)))
-        .filter(|x| s.page((x - p).dot(&n).abs()) < LYING_NEAR)
-        .count();
-    near as f64 * step >= LYING_OVER.max(share * along)
+    // The signed distances from the line of a link's points over it, a
+    // point every page unit or so (33 points along a lever drawn 500
+    // units long in a crank's detail stood 16 apart, and its end at O_cd
+    // alone read as lying along d).
+    let samples = |&(a, b): &Seg| (s.page((b - a).norm()).ceil() as usize).clamp(32, 4000);
+    let over = |&(a, b): &Seg| -> Vec<f64> {
+        let m = samples(&(a, b));
+        (0..=m)
+            .map(|k| a + (b - a) * (k as f64 / m as f64))
+            .filter(|x| (0.0..=length).contains(&(x - p).dot(&u)))
+            .map(|x| (x - p).dot(&n))
+            .collect()
+    };
+    let lying = |link: &Seg| {
+        let length = s.page((link.1 - link.0).norm());
+        let step = length / samples(link) as f64;
+        let near = (over(link).iter())
+            .filter(|d| s.page(d.abs()) < LYING_NEAR)
+            .count();
+        near as f64 * step >= LYING_OVER.max(share * length)
+    };
+    let (along, off): (Vec<&Seg>, Vec<&Seg>) = links.iter().partition(|l| lying(l));
+    if along.is_empty() {
+        return None;
+    }
+    // The side whose line meets fewer of the links' points, then the side
+    // away from the links lying along it (their mean distance from the
+    // line), or from the others where these lie on the line itself.
+    let crowd = |m: Vector| {
+        let shift = m * s.world(LINK_BESIDE);
+        let (a, b) = (p + shift, q + shift);
+        (links.iter())
+            .flat_map(|&(x, y)| (0..=64).map(move |k| x + (y - x) * (f64::from(k) / 64.0)))
+            .filter(|&x| s.page(segment_distance(x, x, a, b)) < LYING_NEAR)
+            .count()
+    };
+    let mean = |ls: &[&Seg]| {
+        let all: Vec<f64> = ls.iter().flat_map(|l| over(l)).collect();
+        all.iter().sum::<f64>() / all.len().max(1) as f64
+    };
+    let side = mean(&along);
+    let side = if s.page(side.abs()) > 1.0 {
+        side
+    } else {
+        mean(&off)
+    };
+    let away = if side > 0.0 { -n } else { n };
+    // The links the link drawn on side `m` would cross, off its pins (at
+    // l = 1.06 r, 180° d turned in to C on the side of A, 4 units from
+    // C, and crossed the lever leaving A).
+    let crossings = |m: Vector| {
+        let path = beside_path(s, (p, q), m);
+        let trim = s.world(END_TOUCH);
+        let cut =
+            |from: Point, to: Point| from + unit(to - from).map_or(Vector::zeros(), |u| u * trim);
+        let runs: Vec<Seg> = match path.as_slice() {
+            [a, b, c, d] => vec![(cut(*a, *b), *b), (*b, *c), (*c, cut(*d, *c))],
+            _ => Vec::new(),
+        };
+        (links.iter())
+            .filter(|&&(x, y)| (runs.iter()).any(|&(a, b)| crossing(a, b, x, y).is_some()))
+            .count()
+    };
+    Some(
+        match (crossings(n), crowd(n)).cmp(&(crossings(-n), crowd(-n))) {
+            std::cmp::Ordering::Less => n,
+            std::cmp::Ordering::Greater => -n,
+            std::cmp::Ordering::Equal => away,
+        },
+    )
 }
+
+/// How near its pins (page units: a pin's radius) a link drawn beside
+/// its line may meet another link there.
+const END_TOUCH: f64 = 4.0;
 
 /// A bearing's ink about its centre, page units (the SVG writer's
 /// bearing): its pedestal from the shaft's pin (which the links leave

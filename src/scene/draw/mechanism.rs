@@ -401,13 +401,20 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
             ],
         },
     );
-    // The crank lying under the rod is drawn as an outlined arm, the
-    // rod's straight line over it: both straight, both seen.
-    if crank_under_rod(canvas, (c, b, a)) {
-        arm(canvas, "crank", (c, b));
-    }
     canvas.segment("link-crank", Role::Link, c, b);
-    canvas.segment("link-rod", Role::Link, b, a);
+    match rod_beside_crank(canvas, (c, b, a), foot) {
+        Some(points) => {
+            canvas.push(
+                "link-rod",
+                Role::Link,
+                Shape::Polyline {
+                    points,
+                    closed: false,
+                },
+            );
+        }
+        None => canvas.segment("link-rod", Role::Link, b, a),
+    }
     canvas.with_part(Part::Joint, |canvas| {
         canvas.point(ctx.letter(Named::CrankCentre), c, Marker::Pin, c);
         canvas.point(ctx.letter(Named::CrankPin), b, Marker::Pin, c);
@@ -415,57 +422,113 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
     });
 }
 
-/// Half the width (page units) of a link drawn as an outlined arm under
-/// another lying over it: clear of its pins (a pin's radius, 4.2) by a
-/// little paper and the outline's pen, so that the heavy line over it
-/// (a link's pen, 2.6) runs between its sides with paper either way.
-pub(crate) const ARM_HALF: f64 = 7.0;
+/// How far (page units) a link is drawn beside the line of another that
+/// lies along it (the rod over the crank here, Fig. 60's frame d beside
+/// a moving link): a link's width and paper that reads as a gap between
+/// two links (at 7 units, 4.4 of paper, Fig. 60's lever folded onto d
+/// and d beside it read as one double line at l = 1.06 r, 180°).
+pub(crate) const LINK_BESIDE: f64 = 10.0;
+/// How far along its line (page units) a link drawn beside it turns in
+/// at each end: twice [`LINK_BESIDE`], a slope that reads as a bend, not
+/// a step.
+pub(crate) const LINK_JOG: f64 = 2.0 * LINK_BESIDE;
 
-/// The link `p q` (`name`) where another lies over it along its line
-/// (the crank under the rod at an in-line engine's inner dead centre,
-/// Fig. 60's crank or lever folded onto the frame d) drawn as a book
-/// draws it: an outlined arm, a bar [`ARM_HALF`] each side of its line
-/// rounded about its pins, toned, under the straight heavy line of the
-/// link over it (`arm-{name}`, a [`Shape::Body`]). Every link stays
-/// straight: one drawn jogged out beside the other read as a cranked
-/// bar. The link's own line is drawn as ever, under the other's.
-pub(crate) fn arm(canvas: &mut Canvas, name: &str, (p, q): (Point, Point)) {
-    let w = canvas.world(ARM_HALF);
-    let u = crate::geom::unit(q - p).unwrap_or(Vector::new(1.0, 0.0));
-    let n = Vector::new(-u.y, u.x);
-    // Half circles of radius w about q (from +n round through +u to -n)
-    // and about p (from -n round through -u to +n).
-    const STEPS: usize = 12;
-    let half = |centre: Point, from: Vector, via: Vector| {
-        (0..=STEPS).map(move |k| {
-            let t = std::f64::consts::PI * k as f64 / STEPS as f64;
-            centre + (from * t.cos() + via * t.sin()) * w
-        })
-    };
-    let points: Vec<Point> = half(q, n, u).chain(half(p, -n, -u)).collect();
-    canvas.push(format!("arm-{name}"), Role::Link, Shape::Body { points });
+/// The link `p q` drawn beside its line on the side `n` (a world unit
+/// vector square to it), [`LINK_BESIDE`] off it between its ends and
+/// turned in to them over `jog` (world units) at each: p, the two ends
+/// of the run beside, q. A `p q` of no length is its ends.
+pub(crate) fn path_beside(
+    canvas: &Canvas,
+    (p, q): (Point, Point),
+    n: Vector,
+    jog: f64,
+) -> Vec<Point> {
+    let shift = n * canvas.world(LINK_BESIDE);
+    let along = crate::geom::unit(q - p).map_or(Vector::zeros(), |u| u * jog);
+    vec![p, p + shift + along, q + shift - along, q]
 }
-
 /// The crank lies under the rod where the crank centre stands nearer the
 /// rod than this (page units; a link's width and a little paper): the
 /// two leave B along one line and read as one.
 const UNDER_ROD: f64 = 5.0;
+/// The shortest crank (page units) the rod is drawn beside: on a shorter
+/// one the bend would be most of it (a crank a speck on a long rod is
+/// shown in a detail, where it is drawn long).
+const BESIDE_LEAST: f64 = 40.0;
 
-/// Whether the crank C B lies under the rod B A: C within [`UNDER_ROD`]
-/// of the rod (an in-line engine's rod runs over C at 180°, and its
-/// crank, wholly under it, was not seen, the rod appearing pinned at C,
-/// in the crank's detail of a long rod too).
-fn crank_under_rod(canvas: &Canvas, (c, b, a): (Point, Point, Point)) -> bool {
-    (b - c).norm() > 0.0
-        && (a - b).norm() > 0.0
-        && canvas.page(crate::geom::point_segment_distance(c, b, a)) < UNDER_ROD
+/// The rod's line where the crank lies under it (the crank centre C
+/// within [`UNDER_ROD`] of the rod B A: an in-line engine's rod runs over
+/// C at 180°, and its crank, wholly under it, was not seen, the rod
+/// appearing pinned at C, in the crank's detail of a long rod too): from
+/// B turned out [`ROD_BESIDE`] beside the crank, on the side away from
+/// C's bearing, past C's pin, and back in to its line on to A (clipped to
+/// the canvas's frame). `None` where the crank does not lie under it, or
+/// is shorter on the page than [`BESIDE_LEAST`], or where A stands
+/// within [`BESIDE_LEAST`] of the rod's return to its line, or that
+/// return is past the rod's middle.
+fn rod_beside_crank(
+    canvas: &Canvas,
+    (c, b, a): (Point, Point, Point),
+    foot: Foot,
+) -> Option<Vec<Point>> {
+    let crank = (b - c).norm();
+    let length = (a - b).norm();
+    if canvas.page(crank) < BESIDE_LEAST
+        || length <= 0.0
+        || canvas.page(crate::geom::point_segment_distance(c, b, a)) >= UNDER_ROD
+    {
+        return None;
+    }
+    let u = (a - b) / length;
+    let normal = Vector::new(-u.y, u.x);
+    // Away from the bearing's foot on the page (world y up).
+    let out = canvas.transform().apply_vector(normal);
+    let n = if out.dot(&foot.axes().0) > 0.0 {
+        -normal
+    } else {
+        normal
+    };
+    let jog = canvas.world(LINK_JOG).min(crank / 3.0);
+    // Past C's pin by the jog, back on the line short of A.
+    let past = (c - b).dot(&u) + canvas.world(crate::scene::canvas::UNDER_PIN);
+    let back = past + jog;
+    // A short rod folded back over its crank (l = 1.05 r at 160°, 1.2 r
+    // at 180°) ends by C: drawn beside the crank it ran into the block
+    // and the guides. Its middle, where its value's letter is set, kept
+    // on its line: beside the crank to its middle (l = 1.5 r, e = 0.45 r
+    // at 244°), the rod's l was set on the crank.
+    if canvas.page(length - back) < BESIDE_LEAST || back > 0.5 * length {
+        return None;
+    }
+    let at = |s: f64| b + u * s;
+    let mut points = path_beside(canvas, (b, at(back)), n, jog);
+    points.extend(canvas.frame().clip_segment(at(back), a).map(|(_, end)| end));
+    Some(points)
 }
 
-/// Where the point `p` of the rod's line is drawn on the rod: `p`
-/// itself, the rod being drawn straight from B to A whatever lies under
-/// it ([`arm`]).
-pub(crate) fn on_rod_as_drawn(_ctx: &LayerCtx, _canvas: &Canvas, p: Point) -> Point {
-    p
+/// Where the point `p` of the rod's line is drawn on the rod as drawn
+/// ([`rod_beside_crank`]): beside the crank with the rod where the rod is
+/// drawn there (Q, the rod's mid-point, over the crank of a short rod at
+/// 180° stood on the crank, not on the rod); `p` itself elsewhere, or off
+/// the rod.
+pub(crate) fn on_rod_as_drawn(ctx: &LayerCtx, canvas: &Canvas, p: Point) -> Point {
+    let pose = ctx.main.pose();
+    let (c, b, a) = (pose.c(), pose.b(), pose.a());
+    let Some(path) = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas)) else {
+        return p;
+    };
+    let length = (a - b).norm();
+    if canvas.page(crate::geom::point_segment_distance(p, b, a)) >= 0.5 {
+        return p;
+    }
+    let u = (a - b) / length;
+    let s = (p - b).dot(&u);
+    (path.iter().zip(path.iter().skip(1)))
+        .find_map(|(&p0, &p1)| {
+            let (s0, s1) = ((p0 - b).dot(&u), (p1 - b).dot(&u));
+            (s1 > s0 && (s0..=s1).contains(&s)).then(|| p0 + (p1 - p0) * ((s - s0) / (s1 - s0)))
+        })
+        .unwrap_or(p)
 }
 
 /// The ghost poses: their links, and their crank pins and cross-heads

@@ -8,7 +8,7 @@ mod dimensions;
 mod fit;
 mod joint;
 mod mechanism;
-pub(crate) use mechanism::arm;
+pub(crate) use mechanism::{LINK_BESIDE, LINK_JOG, path_beside};
 mod motion;
 pub(crate) mod polygons;
 mod scales;
