@@ -747,10 +747,9 @@ impl Canvas {
 pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
 
 /// Page distance, centre to centre, under which a constructed point's
-/// dot stands under a pin's circle or its edge within two of the
-/// circle's pen widths of it. A detail joined such a dot to the pin
-/// once; it now joins only those within [`COINCIDE`], as the main view
-/// does ([`crate::scene::letter_near_together`]). Kisch's E, F and H at 4.2
+/// dot is one point with a pin's in a detail: the dot under the pin's
+/// circle or its edge within two of the circle's pen widths of it
+/// ([`crate::scene::letter_near_together`]). Kisch's E, F and H at 4.2
 /// units from B at l = 43.8 r, 90.84°, Bennett's E at 6.8 from B and G
 /// at 7.8 from C at l = 29 r, 89.08°, hidden by the pin or read as a
 /// burr on it, each stood lettered apart with no dot to tell it by.

@@ -3459,10 +3459,8 @@ fn a_detail_letters_points_that_coincide_there_jointly() {
 /// its pen widths of its circle, take one joint letter by the pin, the
 /// pin's name first: Kisch's E, F and H under B at l = 43.8 r (each
 /// 4.2 units from B at ×20) stood lettered at the four corners of the
-/// pin with no dot to tell them by. Bennett's E, 6.8 units from B at
-/// l = 29 r, 89.08°, and K and G, 6.8 and 7.8 units from C, their dots
-/// beside the pins' circles, are points the reader sees apart: each
-/// keeps its own dot and letter there (issue 38); F, under B, joins it.
+/// pin with no dot to tell them by; Bennett's E at the edge of B's pin
+/// and K and G at C's were lettered apart round them at l = 29 r.
 #[test]
 fn points_under_one_pin_take_one_letter_by_it() {
     for (figure, rod, degrees, joints) in [
@@ -3482,7 +3480,7 @@ fn points_under_one_pin_take_one_letter_by_it() {
             "bennett-construction",
             29.0,
             89.08,
-            vec![("B", vec!["B", "F"])],
+            vec![("B", vec!["B", "E", "F"]), ("C", vec!["C", "G", "K"])],
         ),
     ] {
         let svg = svg_at(figure, rod, 0.0, degrees);
