@@ -52,9 +52,8 @@ impl PanelLayout<'_> {
         self.obstacles.boxed(Frame::from_corners(lo, hi));
         // The triangle, the foot and the hatched strip's far edge: what a
         // block's letter keeps farther from than from its block.
-        let far = [at(-base - 5.0, h + 6.0), at(base, h + 6.0)];
         (self.grounds).extend([(tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])]);
-        (self.grounds).extend([(feet[0], feet[1]), (far[0], far[1])]);
+        (self.grounds).extend([(feet[0], feet[1]), (corners[2], corners[3])]);
         let pen = ink.pen;
         Some(
             ink.tag(Mark::group())
@@ -129,28 +128,19 @@ impl PanelLayout<'_> {
         if pts.len() < 3 || !pts.iter().all(finite) {
             return None;
         }
+        let closed: Vec<Point> = pts.iter().chain(pts.first()).copied().collect();
+        let sides: Vec<(Point, Point)> = (closed.iter().copied())
+            .zip(closed.iter().copied().skip(1))
+            .collect();
         if is_bar(&pts) {
             // A slotted bar: its sides are lines to keep clear of and
             // links a link's letter must not stand nearer than its own.
-            let closed: Vec<Point> = pts.iter().chain(pts.first()).copied().collect();
             self.obstacles.polyline(&closed);
-            self.links.extend(
-                closed
-                    .iter()
-                    .zip(closed.iter().skip(1))
-                    .map(|(p, q)| (*p, *q)),
-            );
+            self.links.extend(&sides);
         } else {
             self.block_room(&pts);
         }
-        let closed: Vec<Point> = pts.iter().chain(pts.first()).copied().collect();
-        (self.blocks).push(
-            closed
-                .iter()
-                .zip(closed.iter().skip(1))
-                .map(|(p, q)| (*p, *q))
-                .collect(),
-        );
+        self.blocks.push(sides);
         Some(
             ink.tag(path(
                 polyline_d(&pts, true),

@@ -194,7 +194,7 @@ pub(crate) fn omega(ctx: &LayerCtx, canvas: &mut Canvas, id: &str, radius: f64) 
     let pose = ctx.main.pose();
     let c = pose.c();
     let turn = ctx.scene.omega().signum();
-    let start = omega_start(ctx, canvas.world(radius), canvas.world(OMEGA_CLEAR));
+    let start = omega_start(ctx, canvas, canvas.world(radius));
     canvas.push_hued(
         id,
         Role::Force,
@@ -222,12 +222,14 @@ const OMEGA_CLEAR: f64 = 6.0;
 
 /// Where ω's arc of world `radius` about the crank centre starts: half
 /// a radian after the crank in the sense of rotation, or, where the arc
-/// there (its sweep of 1.4 rad) would come within `clear` of the rod, the
-/// block, a guide or the crank, the first of seven further starts an
+/// there (its sweep of 1.4 rad) would come within [`OMEGA_CLEAR`] of the rod, the
+/// block, a guide with its hatching or the crank, the first of seven further starts an
 /// eighth of a turn apart that keeps clear; the clearest if none does.
 /// At a short rod near 270° the arc after the crank ran across the rod
 /// into the block, and read as the rod's or the slider's motion.
-fn omega_start(ctx: &LayerCtx, radius: f64, clear: f64) -> f64 {
+fn omega_start(ctx: &LayerCtx, canvas: &Canvas, radius: f64) -> f64 {
+    let clear = canvas.world(OMEGA_CLEAR);
+    let hatch = canvas.world(HATCH_DEPTH);
     let pose = ctx.main.pose();
     let (a, b, c) = (pose.a(), pose.b(), pose.c());
     let turn = ctx.scene.omega().signum();
@@ -250,9 +252,9 @@ fn omega_start(ctx: &LayerCtx, radius: f64, clear: f64) -> f64 {
         (corner(hl, -hh), corner(hl, hh)),
         (corner(hl, hh), corner(-hl, hh)),
         (corner(-hl, hh), corner(-hl, -hh)),
-        // Each guide with its hatching beyond it (`clear` is OMEGA_CLEAR).
-        guide(e + hh + clear * HATCH_DEPTH / OMEGA_CLEAR),
-        guide(e - hh - clear * HATCH_DEPTH / OMEGA_CLEAR),
+        // Each guide with its hatching beyond it.
+        guide(e + hh + hatch),
+        guide(e - hh - hatch),
     ];
     let room = |start: f64| {
         (0..=24)
