@@ -89,6 +89,30 @@ pub(crate) fn klein_points(ctx: &LayerCtx) -> AccelerationPoints {
     }
 }
 
+/// The F and G of each acceleration construction the scene draws (Klein's,
+/// Kisch's, Ritterhaus's, Bennett's, in that order), the ends of the CG
+/// each draws from C; none for Bennett's at an offset engine, which
+/// draws E alone.
+pub(crate) fn drawn_points(ctx: &LayerCtx) -> Vec<AccelerationPoints> {
+    use crate::scene::Layer;
+    let scene = ctx.scene;
+    let main = ctx.main;
+    [
+        scene.has(Layer::Klein).then(|| klein_points(ctx)),
+        scene.has(Layer::Kisch).then(|| *main.kisch().points()),
+        scene
+            .has(Layer::Ritterhaus)
+            .then(|| *main.ritterhaus().points()),
+        scene
+            .has(Layer::Bennett)
+            .then(|| main.bennett().map(|b| *b.points()))
+            .flatten(),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
 /// The unit normal to AB on the side of Kisch's semicircle: away from C,
 /// upwards when C is on AB (as [`Kisch`] places H).
 pub(crate) fn kisch_side(pose: &crate::mechanism::Pose) -> Vector {

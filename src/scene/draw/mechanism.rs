@@ -26,61 +26,88 @@ const THROUGH_PEDESTAL: f64 = 0.7;
 /// it: the crank (about 270°), or the result CE of a construction that
 /// finds E (E below C: an in-line engine past 180°, an offset engine
 /// whose rod crosses below the crank centre), or CB produced to D
-/// through C. Then it hangs from above where no such line runs up
-/// through it and the guides do not run there (an offset engine with
-/// the block by the crank centre: the hanging foot and its hatching read
-/// as a piece of the guide), else it stands out to the side the lines
-/// leave clear; where every side is taken, it hangs as the crank alone
-/// would have it. A view held over a series of poses keeps it standing,
-/// so that it does not turn over from frame to frame.
-fn foot(ctx: &LayerCtx, canvas: &Canvas) -> Foot {
+/// through C, or an acceleration construction's CF or its result CG.
+/// Then it hangs from above where no such line runs up through it and
+/// the guides do not run there (an offset engine with the block by the
+/// crank centre: the hanging foot and its hatching read as a piece of
+/// the guide), else it stands out to the side the lines leave clear.
+/// Where every side is taken, it stands below, save where the crank
+/// points down through it: then on the side, of those that keep clear of
+/// the guides and links, where the line through it weighs least
+/// ([`Through`]: a construction line before a link or a result), or
+/// hanging where none keeps clear.
+/// The right angle marking CE at C takes its leg along the stroke on the
+/// side the bearing leaves ([`mark_leg`]): at Kisch's construction with
+/// the crank down, l = 1.09 r at 269.67°, the crank took the foot below,
+/// the mark's leg the side of the slider, and the pedestal stood on the
+/// side of G with CG drawn through it.
+/// A view held over a series of poses keeps it standing, so that it does
+/// not turn over from frame to frame.
+pub(super) fn foot(ctx: &LayerCtx, canvas: &Canvas) -> Foot {
     let pose = ctx.main.pose();
     let v = canvas.transform().apply_vector(pose.b() - pose.c());
-    let n = v.norm();
-    if ctx.scene.held_view().is_some() || n == 0.0 {
+    if ctx.scene.held_view().is_some() || v.norm() == 0.0 {
         return Foot::Below;
     }
-    let lines: Vec<Vector> = (lines_from_centre(ctx, canvas).into_iter())
-        .map(|w| canvas.transform().apply_vector(w))
-        .filter(|w| w.norm() >= PIN_CLEAR_OF_BEARING)
+    let lines: Vec<(Vector, Through)> = (lines_from_centre(ctx).into_iter())
+        .map(|(w, through)| (canvas.transform().apply_vector(w), through))
+        .filter(|(w, _)| w.norm() >= PIN_CLEAR_OF_BEARING)
         .collect();
-    // A pedestal on `foot` with one of the lines within the cone about
-    // its direction runs through it.
+    // The heaviest of the lines within the cone about `foot`'s direction,
+    // which a pedestal standing there has run through it.
     let pierced = |foot: Foot| {
         let out = foot.axes().0;
-        (lines.iter()).any(|w| w.dot(&out) / w.norm() > THROUGH_PEDESTAL.cos())
+        (lines.iter())
+            .filter(|(w, _)| w.dot(&out) / w.norm() > THROUGH_PEDESTAL.cos())
+            .map(|&(_, through)| through)
+            .max()
     };
-    if !pierced(Foot::Below) {
+    if pierced(Foot::Below).is_none() {
         return Foot::Below;
     }
-    let crank_down = v.y / n > THROUGH_PEDESTAL.cos();
-    [Foot::Above, Foot::Left, Foot::Right]
-        .into_iter()
-        .find(|&f| !pierced(f) && clear_for(ctx, canvas, f))
-        .or_else(|| {
-            // Every side taken: as the crank alone would have it.
-            (crank_down).then(|| {
-                [Foot::Above, Foot::Left, Foot::Right]
-                    .into_iter()
-                    .find(|&f| clear_for(ctx, canvas, f))
-                    .unwrap_or(Foot::Above)
-            })
-        })
-        .unwrap_or(Foot::Below)
+    let sides = [Foot::Above, Foot::Left, Foot::Right];
+    if let Some(f) =
+        (sides.into_iter()).find(|&f| pierced(f).is_none() && clear_for(ctx, canvas, f))
+    {
+        return f;
+    }
+    // Every side taken: as the crank alone would have it, hanging or to
+    // a side where the crank points down through the foot below (the
+    // least weighed of the sides clear, the first of equals; above where
+    // none is), else below.
+    let crank_down = v.y / v.norm() > THROUGH_PEDESTAL.cos();
+    if !crank_down {
+        return Foot::Below;
+    }
+    (sides.into_iter())
+        .filter(|&f| clear_for(ctx, canvas, f))
+        .min_by_key(|&f| pierced(f))
+        .unwrap_or(Foot::Above)
+}
+
+/// What a line from the crank centre through a bearing's pedestal is, in
+/// the order of the harm done by drawing it through: a construction
+/// line, then a link or a result.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+enum Through {
+    /// A construction line: CB produced to D, Klein's CF.
+    Construction,
+    /// The crank, or a result: CE, CG.
+    Part,
 }
 
 /// The world vectors from the crank centre along the lines the scene
-/// draws from it: the crank CB; CE where a layer finds E (the velocity
-/// layer's, and every acceleration construction's velocity part); CB
-/// produced through C to D where the velocity or Klein's layer draws BD
-/// and D lies beyond C from B; and the leg along the stroke (towards the
-/// slider) of the right angle at C that marks CE where it is drawn.
-fn lines_from_centre(ctx: &LayerCtx, canvas: &Canvas) -> Vec<Vector> {
+/// draws from it, each with what it is: the crank CB; CE where a layer
+/// finds E (the velocity layer's, and every acceleration construction's
+/// velocity part); CB produced through C to D where the velocity or
+/// Klein's layer draws BD and D lies beyond C from B; each acceleration construction's result CG, and
+/// Klein's CF.
+fn lines_from_centre(ctx: &LayerCtx) -> Vec<(Vector, Through)> {
     use crate::scene::Layer;
     let scene = ctx.scene;
     let pose = ctx.main.pose();
     let (b, c) = (pose.b(), pose.c());
-    let mut lines = vec![b - c];
+    let mut lines = vec![(b - c, Through::Part)];
     let finds_e = [
         Layer::Velocity,
         Layer::Klein,
@@ -92,18 +119,37 @@ fn lines_from_centre(ctx: &LayerCtx, canvas: &Canvas) -> Vec<Vector> {
     .any(|l| scene.has(l));
     if finds_e {
         let ce = ctx.main.e().e() - c;
-        lines.push(ce);
-        if canvas.page(ce.norm()) >= 2.0 * crate::figure::RIGHT_ANGLE {
-            lines.push(Vector::new(ce.norm(), 0.0));
-        }
+        lines.push((ce, Through::Part));
     }
     if (scene.has(Layer::Velocity) || scene.has(Layer::Klein))
         && let crate::geom::Intersection::Point(d) = ctx.main.d().d()
         && (d - c).dot(&(b - c)) < 0.0
     {
-        lines.push(d - c);
+        lines.push((d - c, Through::Construction));
+    }
+    for points in super::acceleration::drawn_points(ctx) {
+        lines.push((points.g() - c, Through::Part));
+    }
+    if scene.has(Layer::Klein) {
+        let f = super::acceleration::klein_points(ctx).f();
+        lines.push((f - c, Through::Construction));
     }
     lines
+}
+
+/// The world direction along the stroke of the leg of the right angle
+/// that marks CE at C: towards the slider, save where the crank
+/// centre's bearing stands out to that side on the page, whose pedestal
+/// the mark was drawn into; then the other way, along the stroke's line
+/// through C all the same.
+pub(super) fn mark_leg(ctx: &LayerCtx, canvas: &Canvas) -> Vector {
+    let towards_slider = Vector::new(1.0, 0.0);
+    let page = canvas.transform().apply_vector(towards_slider);
+    if page.dot(&foot(ctx, canvas).axes().0) > 0.5 * page.norm() {
+        -towards_slider
+    } else {
+        towards_slider
+    }
 }
 
 /// Whether a bearing standing on `foot` keeps clear: hanging, of the
@@ -192,12 +238,16 @@ fn openings(ctx: &LayerCtx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> 
     let (lo, hi) = (y.min(depth), y.max(depth));
     let slant = canvas.world(HATCH_SLANT);
     let d = canvas.world(LINK_CLEARANCE);
-    let mut open: Vec<Span> = [(c, b), (b, a)]
-        .into_iter()
+    let stand = foot(ctx, canvas);
+    // The rod as drawn: beside the crank where it lies over it (folded
+    // back at l = 1.08 r, 170°, it crossed the guide a little way from
+    // its line's crossing, where the guide was left whole).
+    let rod = rod_beside_crank(canvas, (c, b, a), stand, folds(ctx)).unwrap_or_else(|| vec![b, a]);
+    let mut open: Vec<Span> = std::iter::once((c, b))
+        .chain(rod.iter().zip(rod.iter().skip(1)).map(|(&p, &q)| (p, q)))
         .filter_map(|(p, q)| x_within(p, q, lo - d, hi + d))
         .map(|(x0, x1)| (x0 - d, x1 + d + slant))
         .collect();
-    let stand = foot(ctx, canvas);
     let mut reach = bearing_box(stand);
     // A bearing to a side is boxed on the page; the world runs the other
     // way on a mirrored page.
@@ -402,7 +452,7 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
         },
     );
     canvas.segment("link-crank", Role::Link, c, b);
-    match rod_beside_crank(canvas, (c, b, a), foot) {
+    match rod_beside_crank(canvas, (c, b, a), foot, folds(ctx)) {
         Some(points) => {
             canvas.push(
                 "link-rod",
@@ -462,14 +512,17 @@ const BESIDE_LEAST: f64 = 40.0;
 /// appearing pinned at C, in the crank's detail of a long rod too): from
 /// B turned out [`ROD_BESIDE`] beside the crank, on the side away from
 /// C's bearing, past C's pin, and back in to its line on to A (clipped to
-/// the canvas's frame). `None` where the crank does not lie under it, or
-/// is shorter on the page than [`BESIDE_LEAST`], or where A stands
-/// within [`BESIDE_LEAST`] of the rod's return to its line, or that
-/// return is past the rod's middle.
+/// the canvas's frame). Where A stands within [`BESIDE_LEAST`] of that
+/// return, or the return is past the rod's middle (a short rod folded
+/// back over its crank), beside the crank the whole way and turned in
+/// only at A. `None` where the crank does not lie under it, or is
+/// shorter on the page than [`BESIDE_LEAST`], or, folded, where A stands
+/// less than [`FOLD_TURN_LEAST`] past C or not `folds` ([`folds`]).
 fn rod_beside_crank(
     canvas: &Canvas,
     (c, b, a): (Point, Point, Point),
     foot: Foot,
+    folds: bool,
 ) -> Option<Vec<Point>> {
     let crank = (b - c).norm();
     let length = (a - b).norm();
@@ -497,13 +550,58 @@ fn rod_beside_crank(
     // and the guides. Its middle, where its value's letter is set, kept
     // on its line: beside the crank to its middle (l = 1.5 r, e = 0.45 r
     // at 244°), the rod's l was set on the crank.
-    if canvas.page(length - back) < BESIDE_LEAST || back > 0.5 * length {
-        return None;
-    }
     let at = |s: f64| b + u * s;
+    if canvas.page(length - back) < BESIDE_LEAST || back > 0.5 * length {
+        // Folded back over the crank (l = 1.08 r at 180°: A a few units
+        // past C): beside the crank the whole way, turned in only at A,
+        // from over C at the earliest (the slope from there to A clears
+        // C's pin), where A stands that far past C; else on its line (A
+        // by C: the detail shows them).
+        let left = length - (c - b).dot(&u);
+        if !folds || canvas.page(left) < FOLD_TURN_LEAST {
+            return None;
+        }
+        let shift = n * canvas.world(LINK_BESIDE);
+        return Some(vec![
+            b,
+            at(jog) + shift,
+            at(length - jog.min(left)) + shift,
+            a,
+        ]);
+    }
     let mut points = path_beside(canvas, (b, at(back)), n, jog);
     points.extend(canvas.frame().clip_segment(at(back), a).map(|(_, end)| end));
     Some(points)
+}
+
+/// How far past C (page units: two pins' radii) A must stand for a rod
+/// folded back over its crank to be turned in to A from beside the
+/// crank: nearer, and the turn is a step across the two pins.
+const FOLD_TURN_LEAST: f64 = 10.0;
+
+/// Whether the rod folded back over its crank may be drawn beside it the
+/// whole way ([`rod_beside_crank`]): not where the scene marks points of
+/// the rod on its line, the coupler layer's, or those of curves drawn on
+/// the mechanism, which its guides keep clear of (the coupler curves'
+/// P₁, P₂, P₃ on their ovals: the rod drawn beside them at l = 1.2 r,
+/// 170°, left them on the crank).
+fn folds(ctx: &LayerCtx) -> bool {
+    !ctx.scene.has(crate::scene::Layer::Coupler) && ctx.scene.extremes().is_empty()
+}
+
+/// The run of the rod drawn beside the crank ([`rod_beside_crank`]), its
+/// ends, and the world unit vector square to the rod's line towards it:
+/// where the rod's letter is set, on that side, and the crank's on the
+/// other (l = 1.08 r at 180°: set on the rod's line, the rod's letter
+/// stood under the crank). `None` where the rod is drawn on its line.
+pub(super) fn rod_run_beside(ctx: &LayerCtx, canvas: &Canvas) -> Option<((Point, Point), Vector)> {
+    let pose = ctx.main.pose();
+    let (c, b, a) = (pose.c(), pose.b(), pose.a());
+    let path = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas), folds(ctx))?;
+    let (p, q) = (*path.get(1)?, *path.get(2)?);
+    let u = crate::geom::unit(a - b)?;
+    let off = (p - b) - u * (p - b).dot(&u);
+    Some(((p, q), crate::geom::unit(off)?))
 }
 
 /// Where the point `p` of the rod's line is drawn on the rod as drawn
@@ -514,7 +612,7 @@ fn rod_beside_crank(
 pub(crate) fn on_rod_as_drawn(ctx: &LayerCtx, canvas: &Canvas, p: Point) -> Point {
     let pose = ctx.main.pose();
     let (c, b, a) = (pose.c(), pose.b(), pose.a());
-    let Some(path) = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas)) else {
+    let Some(path) = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas), folds(ctx)) else {
         return p;
     };
     let length = (a - b).norm();

@@ -63,7 +63,7 @@ pub(crate) fn basics_e(ctx: &LayerCtx, canvas: &mut Canvas) {
             Role::Construction,
             Shape::RightAngle {
                 vertex: c,
-                u: Vector::new(1.0, 0.0),
+                u: super::mechanism::mark_leg(ctx, canvas),
                 v: e - c,
             },
         );
