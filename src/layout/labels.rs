@@ -178,6 +178,12 @@ impl Obstacles {
             .collect()
     }
 
+    /// Whether the segment from `a` to `b` (a leader) crosses a line
+    /// drawn that a letter may not sit on (weight [`OPEN`] or more).
+    pub fn crosses_a_line(&self, a: Point, b: Point) -> bool {
+        (self.segments.iter()).any(|&(p, q, w)| w >= OPEN && crossing(a, b, p, q).is_some())
+    }
+
     /// Whether `b` meets the box of a text ([`Obstacles::text`]).
     pub fn meets_a_text(&self, b: &Frame) -> bool {
         (self.boxes.iter().zip(&self.texts)).any(|((t, _), &text)| text && b.overlap_area(t) > 0.0)
@@ -718,6 +724,29 @@ pub(crate) fn place(
 /// A straight piece of a line on the page, from one end to the other.
 pub(crate) type Segment = (Point, Point);
 
+/// An angle's sector on the page: the wedge between its two legs, which
+/// its letter's middle keeps within ([`Steer::wedge`]), read as the
+/// angle between them and no other.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Wedge {
+    /// The angle's vertex.
+    pub vertex: Point,
+    /// The unit page direction of the angle's middle (its bisector).
+    pub middle: Vector,
+    /// Half the angle's size, radians.
+    pub half: f64,
+}
+
+impl Wedge {
+    /// Whether the page point `p` lies within the wedge, its direction
+    /// from the vertex within [`Wedge::half`] of the bisector.
+    pub fn holds(&self, p: Point) -> bool {
+        (p - self.vertex)
+            .try_normalize(0.0)
+            .is_some_and(|u| u.dot(&self.middle) >= self.half.min(std::f64::consts::PI).cos())
+    }
+}
+
 /// What steers a letter's place besides what it keeps clear of.
 #[derive(Debug, Default, Clone, Copy)]
 pub(crate) struct Steer<'a> {
@@ -780,6 +809,13 @@ pub(crate) struct Steer<'a> {
     /// from the anchor than its tail (the letter to the left of the pin,
     /// run along the rod away from it) costs [`HEAD_AWAY`] more.
     pub head_first: bool,
+    /// The sector of the angle a letter names, if any: a place whose
+    /// middle lies outside it is not taken (there it reads as the
+    /// neighbouring angle's), and one whose way back to its point of
+    /// the arc crosses a link or a force beyond [`PIN_CLEAR`] costs
+    /// [`ACROSS`] more (θ beyond the rod from its arc, read as the
+    /// angle between the rod and the force beside it).
+    pub wedge: Option<Wedge>,
 }
 
 /// What a joint letter's place costs more where its head (the pin's own
@@ -1012,6 +1048,7 @@ pub(crate) fn place_toward(
         apart,
         back,
         head_first,
+        wedge,
     } = steer;
     // Every candidate box lies within this one (a ring's centre is at
     // most gap + 17 + half.x + half.y out, a nook's box edge at most
@@ -1027,7 +1064,7 @@ pub(crate) fn place_toward(
     // The lines the way back to the point should not cross, and the
     // fewest any first-ring place crosses (a pin inside a closed outline
     // crosses it every way).
-    let thick = match back {
+    let thick = match back || wedge.is_some() {
         true => obstacles.thick_near(&within, anchor),
         false => Vec::new(),
     };
@@ -1046,6 +1083,9 @@ pub(crate) fn place_toward(
     // The best so far: its score (cost and distance), its cost, its centre.
     let mut best = (f64::INFINITY, f64::INFINITY, anchor);
     let consider = |near: &Near, best: &mut (f64, f64, Point), centre: Point, penalty: f64| {
+        if wedge.is_some_and(|w| !w.holds(centre)) {
+            return;
+        }
         let penalty = match head_first && centre.x < anchor.x - HEAD_SLACK {
             true => penalty + HEAD_AWAY,
             false => penalty,
@@ -1091,6 +1131,9 @@ pub(crate) fn place_toward(
             cost += BOX_NEARER;
         }
         if back && crosses_back(&glyphs(&b), anchor, &thick, &others) > fewest {
+            cost += ACROSS;
+        }
+        if wedge.is_some() && crosses_back(&glyphs(&b), anchor, &thick, &[]) > 0 {
             cost += ACROSS;
         }
         if let Some((own, links, dimensions)) = led {
@@ -1171,7 +1214,7 @@ pub(crate) fn place_toward(
 const MOST_REACH: Vector = Vector::new(64.0, 64.0);
 
 /// Room a label keeps from what it avoids, page units.
-const CLEARANCE: f64 = 1.0;
+pub(crate) const CLEARANCE: f64 = 1.0;
 
 /// Up to this many obstacles, each label gathers those near it once and
 /// its places look through them ([`Obstacles::near`]); beyond, each place

@@ -15,6 +15,7 @@
 //! angle marks, dimensions) and text (`notes.rs`: labels, fixed texts,
 //! notes).
 
+mod angle_leader;
 mod centre;
 mod cull;
 mod frame;
@@ -35,7 +36,7 @@ use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Ro
 use crate::figure::{Pen, Style};
 use crate::geom::{Frame, Point, Vector};
 use labels::{
-    NEARER, Obstacles, ROOM, STRUCK, Steer, TOO_NEAR, box_nearer_another, over_the_other,
+    NEARER, Obstacles, ROOM, STRUCK, Steer, TOO_NEAR, Wedge, box_nearer_another, over_the_other,
     place_toward,
 };
 pub use mark::{
@@ -43,6 +44,8 @@ pub use mark::{
 };
 use markup::{finite, path, polyline_d, unit};
 pub use placed::{PlacedFigure, PlacedPanel};
+use std::cell::Cell;
+use std::f64::consts::FRAC_PI_2;
 use text::{ink_box, starts_italic, text_node};
 
 /// Two joints nearer than this many ems inside one small detail's frame
@@ -87,6 +90,12 @@ const ALONG_LINE: [f64; 5] = [0.5, 0.35, 0.65, 0.2, 0.8];
 /// more than a clear place beside another point of the arc, less than
 /// a crowded one.
 const ARC_STRAY: f64 = 0.1;
+
+/// The room (page units) an angle's letter keeps from each leg of its
+/// angle: a link's half width and a letter's clearance. A sector whose
+/// chord a letter's height beyond its arc is narrower than the letter and
+/// this either side cannot hold it, and its letter stands beside it.
+const LEG_ROOM: f64 = 3.0;
 
 /// What a place outside its angle costs an angle's letter more: more
 /// than a clear place 10 units out from its arc (Ng's φ above its dashed
@@ -617,6 +626,17 @@ impl PanelLayout<'_> {
                 let (half, shift) = ink_box(&p.text, p.size, self.font);
                 // The box keeps [`ROOM`] about the glyphs: its reach is that less.
                 let reach = REACH * p.size - ROOM;
+                // An angle's letter keeps within its sector where that is
+                // wide enough to hold it just beyond its arc.
+                let sector = Cell::new(p.wedge.and_then(|(vertex, middle, half_angle)| {
+                    let out = (p.anchor - vertex).norm() + 2.0 * half.y;
+                    let chord = 2.0 * out * half_angle.min(FRAC_PI_2).sin();
+                    (chord >= 2.0 * (half.x + LEG_ROOM)).then_some(Wedge {
+                        vertex,
+                        middle,
+                        half: half_angle,
+                    })
+                }));
                 let place_from =
                     |anchor: Point, toward: Option<Vector>, reach: f64, half: Vector| {
                         place_toward(
@@ -641,6 +661,7 @@ impl PanelLayout<'_> {
                                     && p.line.is_none()
                                     && self.points.contains(&p.anchor),
                                 head_first: p.joint && p.text.plain().contains(", "),
+                                wedge: sector.get(),
                             },
                             &self.obstacles,
                             room,
@@ -694,6 +715,19 @@ impl PanelLayout<'_> {
                         && (self.obstacles).lasting(&Frame::around(centre, half), p.anchor)
                 };
                 let mut best = place(reach, half);
+                // An angle's letter crowded in its sector stands beyond its
+                // arc with a leader; where that finds no room either and
+                // every place in the sector is struck, the best outside it,
+                // with a leader to its arc.
+                let mut angle_led = self.angle_leader(p, half, best.1, room);
+                if let Some((led, _)) = angle_led {
+                    best = led;
+                } else if best.1 >= STRUCK && sector.take().is_some() {
+                    best = Some(place(reach, half))
+                        .filter(|free| free.1 < best.1)
+                        .unwrap_or(best);
+                    angle_led = (self.outside_leader(p, best.0, half)).map(|line| (best, line));
+                }
                 // A text naming a line whose nearest place names another
                 // link looks further out too.
                 let misnames = |(_, cost): (Point, f64)| p.line.is_some() && cost >= STRUCK;
@@ -724,7 +758,7 @@ impl PanelLayout<'_> {
                         }
                     }
                 }
-                let mut leader = None;
+                let mut leader = angle_led.map(|(_, line)| line);
                 if let Some((led, line)) = self.line_leader(p, half, best.1, room) {
                     best = led;
                     leader = Some(line);
@@ -781,6 +815,7 @@ impl PanelLayout<'_> {
                                 apart: APART_EMS * p.size,
                                 back: false,
                                 head_first: false,
+                                wedge: None,
                             },
                             &self.obstacles,
                             room,

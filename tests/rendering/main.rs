@@ -14,6 +14,7 @@ mod plate;
 #[path = "../common/worked_engine.rs"]
 mod worked_engine;
 
+mod angle_letters;
 mod chain_figures;
 mod detail_review;
 mod diagrams;
