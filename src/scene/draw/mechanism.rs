@@ -42,10 +42,14 @@ const THROUGH_PEDESTAL: f64 = 0.7;
 /// the mark's leg the side of the slider, and the pedestal stood on the
 /// side of G with CG drawn through it.
 /// A view held over a series of poses keeps it standing, so that it does
-/// not turn over from frame to frame.
+/// not turn over from frame to frame; a detail keeps the main view's
+/// ([`LayerCtx::foot`]).
 pub(super) fn foot(ctx: &LayerCtx, canvas: &Canvas) -> Foot {
     let pose = ctx.main.pose();
     let v = canvas.transform().apply_vector(pose.b() - pose.c());
+    if let Some(kept) = ctx.foot {
+        return kept;
+    }
     if ctx.scene.held_view().is_some() || v.norm() == 0.0 {
         return Foot::Below;
     }
@@ -239,10 +243,9 @@ fn openings(ctx: &LayerCtx, canvas: &Canvas, y: f64, side: f64, hatch: bool) -> 
     let slant = canvas.world(HATCH_SLANT);
     let d = canvas.world(LINK_CLEARANCE);
     let stand = foot(ctx, canvas);
-    // The rod as drawn: beside the crank where it lies over it (folded
-    // back at l = 1.08 r, 170°, it crossed the guide a little way from
-    // its line's crossing, where the guide was left whole).
-    let rod = rod_beside_crank(canvas, (c, b, a), stand, folds(ctx)).unwrap_or_else(|| vec![b, a]);
+    // The rod as drawn: beside the crank where it lies over it (there it
+    // crosses a guide a little way from its line's crossing).
+    let rod = rod_beside_crank(canvas, (c, b, a), stand).unwrap_or_else(|| vec![b, a]);
     let mut open: Vec<Span> = std::iter::once((c, b))
         .chain(rod.iter().zip(rod.iter().skip(1)).map(|(&p, &q)| (p, q)))
         .filter_map(|(p, q)| x_within(p, q, lo - d, hi + d))
@@ -452,7 +455,7 @@ pub(crate) fn draw(ctx: &LayerCtx, ghosts: &[Constructions], canvas: &mut Canvas
         },
     );
     canvas.segment("link-crank", Role::Link, c, b);
-    match rod_beside_crank(canvas, (c, b, a), foot, folds(ctx)) {
+    match rod_beside_crank(canvas, (c, b, a), foot) {
         Some(points) => {
             canvas.push(
                 "link-rod",
@@ -512,17 +515,14 @@ const BESIDE_LEAST: f64 = 40.0;
 /// appearing pinned at C, in the crank's detail of a long rod too): from
 /// B turned out [`ROD_BESIDE`] beside the crank, on the side away from
 /// C's bearing, past C's pin, and back in to its line on to A (clipped to
-/// the canvas's frame). Where A stands within [`BESIDE_LEAST`] of that
-/// return, or the return is past the rod's middle (a short rod folded
-/// back over its crank), beside the crank the whole way and turned in
-/// only at A. `None` where the crank does not lie under it, or is
-/// shorter on the page than [`BESIDE_LEAST`], or, folded, where A stands
-/// less than [`FOLD_TURN_LEAST`] past C or not `folds` ([`folds`]).
+/// the canvas's frame). `None` where the crank does not lie under it, or
+/// is shorter on the page than [`BESIDE_LEAST`], or where A stands
+/// within [`BESIDE_LEAST`] of the rod's return to its line, or that
+/// return is past the rod's middle.
 fn rod_beside_crank(
     canvas: &Canvas,
     (c, b, a): (Point, Point, Point),
     foot: Foot,
-    folds: bool,
 ) -> Option<Vec<Point>> {
     let crank = (b - c).norm();
     let length = (a - b).norm();
@@ -547,46 +547,18 @@ fn rod_beside_crank(
     let back = past + jog;
     // A short rod folded back over its crank (l = 1.05 r at 160°, 1.2 r
     // at 180°) ends by C: drawn beside the crank it ran into the block
-    // and the guides. Its middle, where its value's letter is set, kept
-    // on its line: beside the crank to its middle (l = 1.5 r, e = 0.45 r
-    // at 244°), the rod's l was set on the crank.
-    let at = |s: f64| b + u * s;
+    // and the guides, and drawn beside it the whole way, turned in only
+    // at A (l = 1.08 r, 180°), three reviewers took it for a bent link.
+    // Its middle, where its value's letter is set, kept on its line:
+    // beside the crank to its middle (l = 1.5 r, e = 0.45 r at 244°),
+    // the rod's l was set on the crank.
     if canvas.page(length - back) < BESIDE_LEAST || back > 0.5 * length {
-        // Folded back over the crank (l = 1.08 r at 180°: A a few units
-        // past C): beside the crank the whole way, turned in only at A,
-        // from over C at the earliest (the slope from there to A clears
-        // C's pin), where A stands that far past C; else on its line (A
-        // by C: the detail shows them).
-        let left = length - (c - b).dot(&u);
-        if !folds || canvas.page(left) < FOLD_TURN_LEAST {
-            return None;
-        }
-        let shift = n * canvas.world(LINK_BESIDE);
-        return Some(vec![
-            b,
-            at(jog) + shift,
-            at(length - jog.min(left)) + shift,
-            a,
-        ]);
+        return None;
     }
+    let at = |s: f64| b + u * s;
     let mut points = path_beside(canvas, (b, at(back)), n, jog);
     points.extend(canvas.frame().clip_segment(at(back), a).map(|(_, end)| end));
     Some(points)
-}
-
-/// How far past C (page units: two pins' radii) A must stand for a rod
-/// folded back over its crank to be turned in to A from beside the
-/// crank: nearer, and the turn is a step across the two pins.
-const FOLD_TURN_LEAST: f64 = 10.0;
-
-/// Whether the rod folded back over its crank may be drawn beside it the
-/// whole way ([`rod_beside_crank`]): not where the scene marks points of
-/// the rod on its line, the coupler layer's, or those of curves drawn on
-/// the mechanism, which its guides keep clear of (the coupler curves'
-/// P₁, P₂, P₃ on their ovals: the rod drawn beside them at l = 1.2 r,
-/// 170°, left them on the crank).
-fn folds(ctx: &LayerCtx) -> bool {
-    !ctx.scene.has(crate::scene::Layer::Coupler) && ctx.scene.extremes().is_empty()
 }
 
 /// The run of the rod drawn beside the crank ([`rod_beside_crank`]), its
@@ -597,7 +569,7 @@ fn folds(ctx: &LayerCtx) -> bool {
 pub(super) fn rod_run_beside(ctx: &LayerCtx, canvas: &Canvas) -> Option<((Point, Point), Vector)> {
     let pose = ctx.main.pose();
     let (c, b, a) = (pose.c(), pose.b(), pose.a());
-    let path = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas), folds(ctx))?;
+    let path = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas))?;
     let (p, q) = (*path.get(1)?, *path.get(2)?);
     let u = crate::geom::unit(a - b)?;
     let off = (p - b) - u * (p - b).dot(&u);
@@ -612,7 +584,7 @@ pub(super) fn rod_run_beside(ctx: &LayerCtx, canvas: &Canvas) -> Option<((Point,
 pub(crate) fn on_rod_as_drawn(ctx: &LayerCtx, canvas: &Canvas, p: Point) -> Point {
     let pose = ctx.main.pose();
     let (c, b, a) = (pose.c(), pose.b(), pose.a());
-    let Some(path) = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas), folds(ctx)) else {
+    let Some(path) = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas)) else {
         return p;
     };
     let length = (a - b).norm();

@@ -238,6 +238,11 @@ pub(crate) struct LayerCtx<'a> {
     pub scene: &'a Scene,
     pub main: &'a Constructions,
     pub sizes: Sizes,
+    /// The side the crank centre's bearing stands on as the main view
+    /// has it, which a detail keeps (chosen again at the detail's scale,
+    /// the wall at C stood on one side of C in the main view and on the
+    /// other in the detail); `None` until the main view is drawn.
+    pub foot: Option<crate::figure::Foot>,
 }
 
 impl LayerCtx<'_> {
@@ -330,6 +335,7 @@ pub(crate) fn own(scene: &Scene) -> Layout {
         scene,
         main: &poses[0],
         sizes: Sizes::new(scene),
+        foot: None,
     };
     fit_within(&ctx, band(&notes(&ctx)))
 }
@@ -474,6 +480,7 @@ pub(crate) fn held_view(scene: &Scene, angles: &[Angle]) -> Layout {
             scene,
             main,
             sizes: Sizes::new(scene),
+            foot: None,
         })
         .collect();
     let band = ctxs.iter().map(|c| band(&notes(c))).fold(0.0, f64::max);
@@ -551,6 +558,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
         scene,
         main: &poses[0],
         sizes: Sizes::new(scene),
+        foot: None,
     };
 
     // Notes first: their number of lines fixes the band below the panels.
@@ -573,6 +581,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let detail = layout.detail;
     let region = detail.map(|d| detail_frame(&d, transform.scale(), layout.sizes.guide_heights()));
     let mut canvas = main_canvas(&layout, region);
+    ctx.foot = Some(mechanism::foot(&ctx, &canvas));
     draw_layers(&ctx, &poses, &mut canvas, true);
 
     let mut bottom = main.max().y;
