@@ -2227,22 +2227,3 @@ fn a_piston_acceleration_too_short_to_draw_is_said_so() {
         assert!(!words(&svg).contains(SAID), "l = {rod} r, {deg}°");
     }
 }
-
-#[test]
-fn a_side_too_short_for_an_arrow_is_named_in_the_notes() {
-    // At l = 30.9 r, 0° the rod's normal component b′x, 5 units long on
-    // the page, was left undrawn with no word of it: a reader looked for
-    // it among the dots that heaped at b′. The notes name it; the
-    // default figure, whose sides all carry arrows, says nothing of it.
-    for deg in [0.0, 180.0] {
-        let svg = svg(FigureName::VelocityAccelerationPolygons, 30.9, 0.0, deg);
-        let text = words(&svg);
-        let at = (text.find("shorter than an arrow’s head at this scale, not drawn: it is left"))
-            .unwrap_or_else(|| panic!("{deg}°: no word of b′x: {text}"));
-        let named = &text[at.saturating_sub(20)..at];
-        assert!(named.contains('x'), "{deg}°: {named}");
-    }
-    let name = FigureName::VelocityAccelerationPolygons;
-    let default = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
-    assert!(!words(&default).contains("left to the dots at its ends"));
-}

@@ -567,15 +567,13 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let layout = *layout;
     ctx.sizes = layout.sizes;
     // The notes read again at the page's scale, which some of them speak
-    // of (the polygons' vectors too short for an arrow); the band grows
-    // where they are more than before it.
+    // of (the polygons' vectors too short for an arrow): as many notes as
+    // before it, so the band is kept.
     let notes = self::notes(&ctx);
     let page = scene.page();
     // A pose outside a held range may have more notes than it left room
-    // for, and the notes read at the page's scale more than those read
-    // before it (a polygon's side too short for an arrow): the page grows
-    // for them, the map stays.
-    let band = own.max(self::band(&notes)).max(layout.band);
+    // for: the page grows for them, the map stays.
+    let band = own.max(layout.band);
     let mg = page.margin();
     let (main, transform) = (layout.main, layout.transform);
     let detail = layout.detail;
