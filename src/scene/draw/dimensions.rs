@@ -58,15 +58,8 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
             },
         );
     }
-    // The rod drawn beside the crank lying under it: each letter on its
-    // own link's side.
-    let beside = super::mechanism::rod_run_beside(ctx, canvas);
     if !canvas.is_bare(nalgebra::center(&c, &b)) {
-        let r = RichText::italic("r");
-        match beside {
-            Some((_, n)) => canvas.line_label_toward("value-r", (c, b), -n, r, TextSize::Small),
-            None => canvas.line_label("value-r", (c, b), r, TextSize::Small),
-        }
+        canvas.line_label("value-r", (c, b), RichText::italic("r"), TextSize::Small);
     }
     let l = if ctx.scene.notation() == crate::scene::Notation::Ng {
         RichText::italic("l")
@@ -74,10 +67,7 @@ pub(crate) fn angles(ctx: &LayerCtx, canvas: &mut Canvas) {
         RichText::parse(&format!("*l* = {}*r*", crate::number::short(m.ratio())))
     };
     if !canvas.is_bare(nalgebra::center(&b, &a)) {
-        match beside {
-            Some((run, n)) => canvas.line_label_toward("value-l", run, n, l, TextSize::Small),
-            None => canvas.line_label("value-l", (b, a), l, TextSize::Small),
-        }
+        canvas.line_label("value-l", (b, a), l, TextSize::Small);
     }
 }
 

@@ -561,21 +561,6 @@ fn rod_beside_crank(
     Some(points)
 }
 
-/// The run of the rod drawn beside the crank ([`rod_beside_crank`]), its
-/// ends, and the world unit vector square to the rod's line towards it:
-/// where the rod's letter is set, on that side, and the crank's on the
-/// other (l = 1.08 r at 180°: set on the rod's line, the rod's letter
-/// stood under the crank). `None` where the rod is drawn on its line.
-pub(super) fn rod_run_beside(ctx: &LayerCtx, canvas: &Canvas) -> Option<((Point, Point), Vector)> {
-    let pose = ctx.main.pose();
-    let (c, b, a) = (pose.c(), pose.b(), pose.a());
-    let path = rod_beside_crank(canvas, (c, b, a), foot(ctx, canvas))?;
-    let (p, q) = (*path.get(1)?, *path.get(2)?);
-    let u = crate::geom::unit(a - b)?;
-    let off = (p - b) - u * (p - b).dot(&u);
-    Some(((p, q), crate::geom::unit(off)?))
-}
-
 /// Where the point `p` of the rod's line is drawn on the rod as drawn
 /// ([`rod_beside_crank`]): beside the crank with the rod where the rod is
 /// drawn there (Q, the rod's mid-point, over the crank of a short rod at
