@@ -2227,3 +2227,51 @@ fn a_piston_acceleration_too_short_to_draw_is_said_so() {
         assert!(!words(&svg).contains(SAID), "l = {rod} r, {deg}°");
     }
 }
+
+#[test]
+fn a_side_too_short_for_an_arrow_is_named_in_the_notes() {
+    // At l = 30.9 r, 0° the rod's normal component b′x, 5 units long on
+    // the page, was left undrawn with no word of it: a reader looked for
+    // it among the dots that heaped at b′. The notes name it; the
+    // default figure, whose sides all carry arrows, says nothing of it.
+    for deg in [0.0, 180.0] {
+        let svg = svg(FigureName::VelocityAccelerationPolygons, 30.9, 0.0, deg);
+        let text = words(&svg);
+        let at = (text.find("shorter than an arrow’s head at this scale, not drawn: it is left"))
+            .unwrap_or_else(|| panic!("{deg}°: no word of b′x: {text}"));
+        let named = &text[at.saturating_sub(20)..at];
+        assert!(named.contains('x'), "{deg}°: {named}");
+    }
+    let name = FigureName::VelocityAccelerationPolygons;
+    let default = slider_crank::render::to_svg(&name.figure(&FigureOptions::default()).unwrap());
+    assert!(!words(&default).contains("left to the dots at its ends"));
+}
+
+#[test]
+fn a_short_side_s_note_keeps_a_fixed_page_s_height() {
+    // The teacher's handout lays the polygons out on a page 760 by 480:
+    // at r = 60 mm, l = 240 mm, 1500 rpm, 30° b′x is shorter than an
+    // arrow at that page's scale, and its note, one more than the notes
+    // read before the scale was known, grew the page past 480; the
+    // handout fell back to the figure's own height, 720, and printed on
+    // a page more. The layout keeps room for it: the page stays 480 and
+    // the note is there.
+    use slider_crank::Unit;
+    use slider_crank::figure::{PageLength, PageUnit};
+    let mut options = FigureOptions::default();
+    options.mechanism = Some(SliderCrank::new(60.0, 240.0, 0.0).unwrap());
+    options.angle = Some(Angle::deg(30.0));
+    options.omega = Some(1500.0 * std::f64::consts::PI / 30.0);
+    options.length_unit = Some(Unit::new("mm").unwrap());
+    options.width = Some(PageLength::new(760.0, PageUnit::Px).unwrap());
+    options.height = Some(PageLength::new(480.0, PageUnit::Px).unwrap());
+    let name = FigureName::VelocityAccelerationPolygons;
+    let figure = name
+        .figure(&options)
+        .unwrap_or_else(|e| panic!("refused on its page: {e}"));
+    assert!(figure.height() <= 480.0, "{}", figure.height());
+    let text = words(&slider_crank::render::to_svg(&figure));
+    let at = (text.find("is shorter than an arrow’s head at this scale"))
+        .unwrap_or_else(|| panic!("no word of b′x: {text}"));
+    assert!(text[at.saturating_sub(12)..at].contains('x'));
+}

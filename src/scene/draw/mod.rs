@@ -337,7 +337,23 @@ pub(crate) fn own(scene: &Scene) -> Layout {
         sizes: Sizes::new(scene),
         foot: None,
     };
-    fit_within(&ctx, band(&notes(&ctx)))
+    let before = band(&notes(&ctx));
+    let layout = fit_within(&ctx, before);
+    if !scene.page().has_fixed_height() {
+        return layout;
+    }
+    // The notes read at the page's scale may be one more (a polygon's
+    // side too short for an arrow, [`polygons::notes`]): a page free to
+    // grow grows for it ([`build`]), a fixed one is fitted again with
+    // room for it. At the smaller scale the side is shorter still: once
+    // is enough.
+    match band(&notes(&LayerCtx {
+        sizes: layout.sizes,
+        ..ctx
+    })) {
+        after if after > before => fit_within(&ctx, after),
+        _ => layout,
+    }
 }
 
 /// The width of the page (page units, margins included) that the scene's
@@ -500,6 +516,12 @@ pub(crate) fn held_view(scene: &Scene, angles: &[Angle]) -> Layout {
             c.sizes = sizes;
         }
     }
+    // The notes read at the page's scale (a polygon's side too short for
+    // an arrow) may be more: room kept for them.
+    let band = ctxs
+        .iter()
+        .map(|c| self::band(&notes(c)))
+        .fold(band, f64::max);
     let page = scene.page();
     let width = page.width() - 2.0 * page.margin();
     with_detail(&ctxs[0], band, union(&ctxs), |scale| {
@@ -567,13 +589,15 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let layout = *layout;
     ctx.sizes = layout.sizes;
     // The notes read again at the page's scale, which some of them speak
-    // of (the polygons' vectors too short for an arrow): as many notes as
-    // before it, so the band is kept.
+    // of (the polygons' vectors too short for an arrow); the band grows
+    // where they are more than before it.
     let notes = self::notes(&ctx);
     let page = scene.page();
     // A pose outside a held range may have more notes than it left room
-    // for: the page grows for them, the map stays.
-    let band = own.max(layout.band);
+    // for, and the notes read at the page's scale more than those read
+    // before it (a polygon's side too short for an arrow): the page grows
+    // for them, the map stays.
+    let band = own.max(self::band(&notes)).max(layout.band);
     let mg = page.margin();
     let (main, transform) = (layout.main, layout.transform);
     let detail = layout.detail;

@@ -844,6 +844,19 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
             sig(w * w * aq)
         )),
     ];
+    let short_sides = too_short_sides(
+        ctx,
+        &placed,
+        [
+            format!("*{a}{b}*"),
+            format!("*{o}{a}*"),
+            format!("*{o}{q}*"),
+            format!("{b2s}*x*"),
+            format!("*x{a}*′"),
+            format!("{o2s}{q2}"),
+        ],
+    );
+    notes.extend(short_sides);
     let point = scene.coupler();
     if off_rod(ctx) {
         notes.push(RichText::parse(&format!(
@@ -854,6 +867,46 @@ pub(crate) fn notes(ctx: &LayerCtx) -> Vec<RichText> {
         )));
     }
     notes
+}
+
+/// The note naming the sides of the polygons (other than c′a′, which
+/// its own note names) that are not nil but drawn shorter than
+/// [`MIN_ARROW`], and so not drawn, if any: ab, ca, cq, b′x, xa′ and c′q′
+/// as `names` give them. At l = 30.9 r, 0° b′x, 5 units long, was drawn
+/// as nothing and said nowhere: a reader looked for the rod's normal
+/// component among the dots. Not known before the page scale is.
+fn too_short_sides(ctx: &LayerCtx, placed: &Placed, names: [String; 6]) -> Option<RichText> {
+    let scale = ctx.sizes.page_scale?;
+    let v = placed.velocity_points();
+    let p = placed.acceleration_points();
+    let sides = [
+        (v.a, v.b),
+        (v.o, v.a),
+        (v.o, v.q.unwrap_or(v.o)),
+        (p.b, p.x),
+        (p.x, p.a),
+        (p.o, p.q.unwrap_or(p.o)),
+    ];
+    let short: Vec<&str> = (sides.iter().zip(&names))
+        .filter(|((s, t), _)| {
+            let length = (t - s).norm();
+            length > 0.0 && length * scale < MIN_ARROW
+        })
+        .map(|(_, name)| name.as_str())
+        .collect();
+    let (last, rest) = short.split_last()?;
+    let list = match rest {
+        [] => last.to_string(),
+        _ => format!("{} and {last}", rest.join(", ")),
+    };
+    let (verb, each) = if rest.is_empty() {
+        ("is", "it is left to the dots at its ends")
+    } else {
+        ("are", "each is left to the dots at its ends")
+    };
+    Some(RichText::parse(&format!(
+        "{list} {verb} shorter than an arrow’s head at this scale, not drawn: {each}."
+    )))
 }
 
 /// Whether the piston's acceleration c′a′, not nil, is drawn shorter
