@@ -323,3 +323,107 @@ fn no_construction_line_doubles_a_link_and_no_right_angles_overlap() {
         }
     }
 }
+
+/// The sides of the box `(x0, x1, y0, y1)` as segments.
+fn sides((x0, x1, y0, y1): (f64, f64, f64, f64)) -> [((f64, f64), (f64, f64)); 4] {
+    [
+        ((x0, y0), (x1, y0)),
+        ((x1, y0), (x1, y1)),
+        ((x1, y1), (x0, y1)),
+        ((x0, y1), (x0, y0)),
+    ]
+}
+
+/// Whether the segments `s` and `t`, each level or upright, run side by
+/// side within `near` of each other over some length.
+fn run_together(s: ((f64, f64), (f64, f64)), t: ((f64, f64), (f64, f64)), near: f64) -> bool {
+    let level = |g: ((f64, f64), (f64, f64))| (g.0.1 - g.1.1).abs() < 0.01;
+    let upright = |g: ((f64, f64), (f64, f64))| (g.0.0 - g.1.0).abs() < 0.01;
+    let span = |a: f64, b: f64| (a.min(b), a.max(b));
+    let overlap = |(a0, a1): (f64, f64), (b0, b1): (f64, f64)| a0.max(b0) < a1.min(b1) - 1.0;
+    if level(s) && level(t) {
+        (s.0.1 - t.0.1).abs() < near && overlap(span(s.0.0, s.1.0), span(t.0.0, t.1.0))
+    } else if upright(s) && upright(t) {
+        (s.0.0 - t.0.0).abs() < near && overlap(span(s.0.1, s.1.1), span(t.0.1, t.1.1))
+    } else {
+        false
+    }
+}
+
+/// The twenty-eighth review: Kisch's construction at l = 2.46 r,
+/// e = 0.861 r, 180° and 89.62° drew its detail's frame on the main view
+/// with its bottom edge on C's bearing's base line, the hatching hanging
+/// off the frame; Bennett's at l = 2.69 r, e = 1.21 r, 0° ran its top
+/// edge through the hanging bearing's pedestal. There the frame holds
+/// the bearing whole with room about it, and over a sweep no frame's or
+/// detail border's edge runs along a bearing's base within 4 units.
+#[test]
+fn a_detail_s_frame_keeps_off_c_s_bearing() {
+    const ROOM: f64 = 4.0;
+    let bearing_box = |svg: &str, id: &str| {
+        let strokes = common::group_strokes(svg, id);
+        let ends: Vec<(f64, f64)> = strokes.iter().flat_map(|s| [s.0, s.1]).collect();
+        (common::bounds_of(&ends), strokes)
+    };
+    for (name, l, e, deg) in [
+        ("bennett-construction", 2.69, 1.21, 0.0),
+        ("fig-66-kisch", 2.46, 0.861, 180.0),
+        ("fig-66-kisch", 2.46, 0.861, 89.62),
+    ] {
+        let svg = svg(FigureName::from_name(name).unwrap(), (1.0, l, e, deg));
+        let frame = common::bounds_of(&path_of(&svg, "detail-frame"));
+        let (b, _) = bearing_box(&svg, "bearing-C");
+        assert!(
+            frame.0 <= b.0 - ROOM
+                && frame.1 >= b.1 + ROOM
+                && frame.2 <= b.2 - ROOM
+                && frame.3 >= b.3 + ROOM,
+            "{name} at l {l}, e {e}, {deg}°: the frame {frame:?} cuts the bearing {b:?}"
+        );
+    }
+    let mut frames = 0;
+    let mut along = Vec::new();
+    for name in [
+        "bennett-construction",
+        "fig-65-klein",
+        "fig-66-kisch",
+        "fig-63-velocity",
+    ] {
+        let figure = FigureName::from_name(name).unwrap();
+        for (l, e) in [
+            (2.69, 1.21),
+            (2.46, 0.861),
+            (1.3, 0.0),
+            (3.0, -0.8),
+            (1.08, 0.0),
+        ] {
+            for deg in [0.0, 30.0, 89.62, 150.0, 180.0, 225.0, 270.0, 330.0] {
+                let svg = svg(figure, (1.0, l, e, deg));
+                if !svg.contains("id=\"detail-frame\"") {
+                    continue;
+                }
+                frames += 1;
+                let at = format!("{name} at l {l}, e {e}, {deg}°");
+                for (edge, bearing) in [
+                    ("detail-frame", "bearing-C"),
+                    ("detail-border", "detail-bearing-C"),
+                ] {
+                    let frame = common::bounds_of(&path_of(&svg, edge));
+                    let (_, strokes) = bearing_box(&svg, bearing);
+                    if sides(frame)
+                        .iter()
+                        .any(|side| strokes.iter().any(|s| run_together(*side, *s, ROOM)))
+                    {
+                        along.push(format!("{at}: {edge} runs along {bearing}'s base"));
+                    }
+                }
+            }
+        }
+    }
+    assert!(frames >= 40, "only {frames} frames");
+    // Held: Kisch's at l = 3 r, e = −0.8 r, 270°, a ×8 detail about C
+    // whose room about C keeps the edge from coming in, and which would
+    // grow by 94 units (a third of it) to hold the bearing.
+    let held = ["fig-66-kisch at l 3, e -0.8, 270°: detail-frame runs along bearing-C's base"];
+    assert_eq!(along, held, "{} of {frames}", along.len());
+}

@@ -29,8 +29,9 @@ use crate::figure::{
     Align, EngineRecord, Figure, Hue, Metadata, PageFromWorld, Panel, Part, RichText, Role, Shape,
     TextSize,
 };
-use crate::figure::{HATCH_DEPTH, NOTE_LINE, NOTE_SIZE};
+use crate::figure::{BEARING_FOOT, Foot, HATCH_DEPTH, NOTE_LINE, NOTE_SIZE};
 use crate::geom::{Frame, Point, Vector};
+use crate::scene::linkage::HATCH_SLANT;
 use serde_json::{Map, Value, json};
 
 /// Room kept around the fitted drawing for letters, in page units.
@@ -277,6 +278,63 @@ pub(crate) struct Layout {
     main: Frame,
     transform: PageFromWorld,
     detail: Option<detail::Detail>,
+    /// The crank centre's bearing as the main view stands it, where the
+    /// scene draws the mechanism: a detail's frame keeps off its base.
+    bearing: Option<Bearing>,
+}
+
+/// The crank centre's bearing on the main view: C, the side it stands
+/// on, and the world direction (a unit vector along x or y) from C out
+/// to its base.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Bearing {
+    c: Point,
+    foot: Foot,
+    out: Vector,
+    /// The page width (page units) a detail may take.
+    width: f64,
+}
+
+impl Bearing {
+    /// The bearing of the main view `main` drawn by `transform` at the
+    /// pose of `ctx` ([`mechanism::foot`]); none where the scene draws no
+    /// mechanism.
+    fn of(ctx: &LayerCtx, main: &Frame, transform: PageFromWorld) -> Option<Self> {
+        if !ctx.scene.has(Layer::Mechanism) {
+            return None;
+        }
+        let canvas = Canvas::new(transform, transform.world_frame(main));
+        let foot = mechanism::foot(ctx, &canvas);
+        let out = transform.inverse().apply_vector(foot.axes().0);
+        let page = ctx.scene.page();
+        Some(Self {
+            c: ctx.main.pose().c(),
+            foot,
+            out: out / out.norm(),
+            width: page.width() - 2.0 * page.margin(),
+        })
+    }
+
+    /// The world band its base and hatching take, from C out along
+    /// `out` (least, most), and the stretch across it (least, most), at
+    /// the main view's `scale`: whether the band runs across y (`true`, a
+    /// bearing standing below or hanging) or across x (a wall).
+    fn base(&self, scale: f64) -> (bool, (f64, f64), (f64, f64)) {
+        let (depth, half) = BEARING_FOOT;
+        let (near, far) = (depth / scale, (depth + HATCH_DEPTH) / scale);
+        let across = (half + HATCH_SLANT) / scale;
+        let along_y = self.out.y.abs() > self.out.x.abs();
+        let (at, side, sign) = match along_y {
+            true => (self.c.y, self.c.x, self.out.y.signum()),
+            false => (self.c.x, self.c.y, self.out.x.signum()),
+        };
+        let (a, b) = (at + sign * near, at + sign * far);
+        (
+            along_y,
+            (a.min(b), a.max(b)),
+            (side - across, side + across),
+        )
+    }
 }
 
 /// The notes of the scene at the pose of `ctx`: their number of lines
@@ -366,7 +424,12 @@ pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
         (world.max().x - world.min().x) * scale + 2.0 * INSET
     });
     let detail = layout.detail.map_or(0.0, |d| {
-        let frame = detail_frame(&d, scale, layout.sizes.guide_heights());
+        let frame = detail_frame(
+            &d,
+            scale,
+            layout.sizes.guide_heights(),
+            layout.bearing.as_ref(),
+        );
         (frame.max().x - frame.min().x) * scale * d.magnification
     });
     drawn.max(detail) + 2.0 * mg
@@ -405,7 +468,7 @@ impl Layout {
         let mut bottom = self.main.max().y;
         if let Some(d) = &self.detail {
             let scale = self.transform.scale();
-            let frame = detail_frame(d, scale, self.sizes.guide_heights());
+            let frame = detail_frame(d, scale, self.sizes.guide_heights(), self.bearing.as_ref());
             let tall = (frame.max().y - frame.min().y) * scale * d.magnification;
             bottom += DETAIL_GAP + CAPTION + tall + NOTE_GAP;
         }
@@ -452,16 +515,19 @@ fn with_detail(
     };
     let (mut main, mut transform) = main_view(ctx, band, frame);
     let mut detail = details(transform.scale());
+    let mut bearing = Bearing::of(ctx, &main, transform);
     let grown = beside_detail(
         ctx.scene,
         &ctx.sizes,
         frame,
         detail.as_ref(),
         transform.scale(),
+        bearing.as_ref(),
     );
     if grown != frame {
         (main, transform) = main_view(ctx, band, grown);
         detail = details(transform.scale());
+        bearing = Bearing::of(ctx, &main, transform);
     }
     Layout {
         sizes: Sizes {
@@ -472,6 +538,7 @@ fn with_detail(
         main,
         transform,
         detail,
+        bearing,
     }
 }
 
@@ -545,6 +612,7 @@ fn beside_detail(
     frame: Frame,
     detail: Option<&detail::Detail>,
     scale: f64,
+    bearing: Option<&Bearing>,
 ) -> Frame {
     let Some(d) = detail else {
         return frame;
@@ -552,7 +620,9 @@ fn beside_detail(
     if scene.mechanism().offset() == 0.0 || !scene.has(Layer::Mechanism) {
         return frame;
     }
-    let left = detail_frame(d, scale, sizes.guide_heights()).min().x;
+    let left = detail_frame(d, scale, sizes.guide_heights(), bearing)
+        .min()
+        .x;
     if left >= frame.min().x {
         return frame;
     }
@@ -601,9 +671,13 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let mg = page.margin();
     let (main, transform) = (layout.main, layout.transform);
     let detail = layout.detail;
-    let region = detail.map(|d| detail_frame(&d, transform.scale(), layout.sizes.guide_heights()));
+    let bearing = layout.bearing.as_ref();
+    let region =
+        detail.map(|d| detail_frame(&d, transform.scale(), layout.sizes.guide_heights(), bearing));
     let mut canvas = main_canvas(&layout, region);
-    ctx.foot = Some(mechanism::foot(&ctx, &canvas));
+    // The bearing the layout kept the detail's frame off, where it found
+    // one; found from the canvas alike.
+    ctx.foot = Some(bearing.map_or_else(|| mechanism::foot(&ctx, &canvas), |b| b.foot));
     draw_layers(&ctx, &poses, &mut canvas, true);
 
     let mut bottom = main.max().y;
@@ -761,37 +835,165 @@ fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (Frame,
 /// that the frame never reads as one more guide, cuts its hatching or
 /// closes the channel with the block (a short rod's inner dead centre,
 /// where the detail about C was just the guides' height), and what lay
-/// outside the frame beyond a guide stays outside.
-fn detail_frame(d: &detail::Detail, main_scale: f64, guides: [f64; 2]) -> Frame {
+/// outside the frame beyond a guide stays outside. An edge that runs
+/// along the base of the crank centre's `bearing`, as the main view or
+/// the detail draws it, moves off it ([`Bearing::kept_off`]): at Kisch's
+/// l = 2.46 r, e = 0.861 r, 180° the frame's bottom edge was the
+/// bearing's base line, the hatching hanging off the frame.
+fn detail_frame(
+    d: &detail::Detail,
+    main_scale: f64,
+    guides: [f64; 2],
+    bearing: Option<&Bearing>,
+) -> Frame {
     let scale = main_scale * d.magnification;
     let pad = detail::PAD / scale;
     let (lo, hi) = (d.region.min(), d.region.max());
     let grow = (0.5 * detail::MIN_HEIGHT / scale - 0.5 * (hi.y - lo.y) - pad).max(0.0);
     let (mut bottom, mut top) = (lo.y - pad - grow, hi.y + pad + grow);
+    let (left, right) = (lo.x - pad, hi.x + pad);
+    let keep = 0.5 * pad;
     let clear = GUIDE_CLEAR / scale;
     // Twice: an edge moved off one guide may come near the other.
-    for y in [guides, guides].concat() {
-        if (top - y).abs() < clear {
-            let inward = y - clear;
-            let keeps = inward >= hi.y + 0.5 * pad;
-            top = if keeps && top - inward < y + clear - top {
-                inward
-            } else {
-                y + clear
-            };
-        }
-        if (bottom - y).abs() < clear {
-            let inward = y + clear;
-            let keeps = inward <= lo.y - 0.5 * pad;
-            bottom = if keeps && inward - bottom < bottom - (y - clear) {
-                inward
-            } else {
-                y - clear
-            };
+    for _ in 0..2 {
+        for y in guides {
+            top = off_band(top, hi.y + keep, (y, y), clear);
+            bottom = -off_band(-bottom, -(lo.y - keep), (-y, -y), clear);
         }
     }
-    Frame::new(Point::new(lo.x - pad, bottom), Point::new(hi.x + pad, top))
+    let mut frame = Frame::new(Point::new(left, bottom), Point::new(right, top));
+    if let Some(b) = bearing {
+        let off_guides = |y: f64| guides.iter().all(|g| (y - g).abs() >= clear);
+        let inner = Frame::new(
+            Point::new(lo.x - keep, lo.y - keep),
+            Point::new(hi.x + keep, hi.y + keep),
+        );
+        for s in [main_scale, scale] {
+            frame = b.kept_off(frame, &inner, (s, scale), &off_guides);
+        }
+    }
+    frame
 }
+
+/// A frame's far edge at `edge` (its inside below it) moved off the band
+/// `(a, b)` where it runs within `clear` of it: in to `a - clear` where
+/// that is nearer than out to `b + clear` and keeps at or beyond
+/// `inner` (the detailed points and room about them), else out. The
+/// near edge is the same negated.
+fn off_band(edge: f64, inner: f64, (a, b): (f64, f64), clear: f64) -> f64 {
+    if edge <= a - clear || edge >= b + clear {
+        return edge;
+    }
+    let (inward, outward) = (a - clear, b + clear);
+    if inward >= inner && edge - inward < outward - edge {
+        inward
+    } else {
+        outward
+    }
+}
+
+impl Bearing {
+    /// `frame` (a detail's, world) with its edges off the base of this
+    /// bearing drawn at `scale` (the main view's or the detail's), the
+    /// detail drawn at `detail`: an edge within [`BEARING_CLEAR`] of the
+    /// base and its hatching, where it runs across them, moves out past
+    /// them where that grows the detail by at most [`MOST_FOR_BEARING`]
+    /// or [`GROW_SHARE`] of its extent, and the sides then take in the base's ends where the detail still
+    /// fits its width; else in, short of the base, where that keeps
+    /// `inner` (the detailed points and room about them) inside; else
+    /// it stays. No move lands an edge by a guide (`off_guides` of a
+    /// height). A wall's base is moved out from only where the detail
+    /// still fits its width (`self.width`, page units).
+    fn kept_off(
+        &self,
+        frame: Frame,
+        inner: &Frame,
+        (scale, detail): (f64, f64),
+        off_guides: &impl Fn(f64) -> bool,
+    ) -> Frame {
+        let (along_y, (a, b), (s0, s1)) = self.base(scale);
+        let clear = BEARING_CLEAR / scale;
+        let (lo, hi) = (frame.min(), frame.max());
+        let extent = if along_y { hi.y - lo.y } else { hi.x - lo.x };
+        let most = (MOST_FOR_BEARING / detail).max(GROW_SHARE * extent);
+        // (near edge, far edge, inner near, inner far) along the base's
+        // axis, and the stretch of the frame across it.
+        let (near, far, inner_near, inner_far, across) = match along_y {
+            true => (lo.y, hi.y, inner.min().y, inner.max().y, (lo.x, hi.x)),
+            false => (lo.x, hi.x, inner.min().x, inner.max().x, (lo.y, hi.y)),
+        };
+        if s0 >= across.1 || s1 <= across.0 {
+            return frame;
+        }
+        let ok = |v: f64| !along_y || off_guides(v);
+        let moved = |grow: f64| {
+            let far = moved_off(far, inner_far, (a, b), clear, grow, &ok);
+            let near = -moved_off(-near, -inner_near, (-b, -a), clear, grow, &|v| ok(-v));
+            (near, far)
+        };
+        // A wall's base is moved out from only where the detail still
+        // fits its width.
+        let (near, far) = match moved(most) {
+            (n, f) if !along_y && (f - n) * detail > self.width => moved(f64::NEG_INFINITY),
+            moved => moved,
+        };
+        let (mut x0, mut x1) = across;
+        if along_y && near < a && b < far {
+            let (w0, w1) = ((s0 - clear).min(x0), (s1 + clear).max(x1));
+            let cheap = x0 - w0 <= most && w1 - x1 <= most;
+            if cheap && (w1 - w0) * detail <= self.width {
+                (x0, x1) = (w0, w1);
+            }
+        }
+        match along_y {
+            true => Frame::new(Point::new(x0, near), Point::new(x1, far)),
+            false => Frame::new(Point::new(near, x0), Point::new(far, x1)),
+        }
+    }
+}
+
+/// [`Bearing::kept_off`]'s move of a far edge at `edge` off the band
+/// `(a, b)`: out to `b + clear` where that grows by at most `grow`, else
+/// in to `a - clear` where that keeps `inner` inside, each only where
+/// `ok`; else where it is.
+fn moved_off(
+    edge: f64,
+    inner: f64,
+    (a, b): (f64, f64),
+    clear: f64,
+    grow: f64,
+    ok: &impl Fn(f64) -> bool,
+) -> f64 {
+    if edge <= a - clear || edge >= b + clear {
+        return edge;
+    }
+    let (inward, outward) = (a - clear, b + clear);
+    if outward - edge <= grow && ok(outward) {
+        outward
+    } else if inward >= inner && ok(inward) {
+        inward
+    } else {
+        edge
+    }
+}
+
+/// The most a detail's frame grows (the detail's page units) to take
+/// in the crank centre's bearing whose base it ran along
+/// ([`Bearing::kept_off`]): beyond, it is brought in across the
+/// pedestal (at ×10 the bearing drawn to the main view's sizes is a
+/// tenth of a crank, and a detail grown to it showed mostly paper).
+const MOST_FOR_BEARING: f64 = 72.0;
+
+/// The most a detail's frame grows to take in the bearing, as a share of
+/// its extent along the base's axis, where that is more than
+/// [`MOST_FOR_BEARING`].
+const GROW_SHARE: f64 = 0.1;
+
+/// The least distance, page units of the view that draws it (the main
+/// view's or the detail's), between a detail's frame and the crank
+/// centre's bearing's base or its hatching's far edge, where the frame
+/// runs across them.
+const BEARING_CLEAR: f64 = 5.0;
 
 /// The least distance between a detail's frame and a guide along it,
 /// page units: the guide's hatching (6.5 deep) and a clear gap.
