@@ -315,13 +315,17 @@ impl Bearing {
         })
     }
 
-    /// The world band its base and hatching take, from C out along
-    /// `out` (least, most), and the stretch across it (least, most), at
-    /// the main view's `scale`: whether the band runs across y (`true`, a
-    /// bearing standing below or hanging) or across x (a wall).
+    /// The world band its pedestal, base and hatching take, from just
+    /// past the pin ([`PEDESTAL_FROM`]) out along `out` (least, most),
+    /// and the stretch of the base across it (least, most), drawn at
+    /// `scale`: whether the band runs across y (`true`, a bearing
+    /// standing below or hanging) or across x (a wall). A frame's edge
+    /// through the pedestal cuts the ground symbol in two (Klein's
+    /// default, the twenty-ninth review), as one along the base reads as
+    /// the base.
     fn base(&self, scale: f64) -> (bool, (f64, f64), (f64, f64)) {
         let (depth, half) = BEARING_FOOT;
-        let (near, far) = (depth / scale, (depth + HATCH_DEPTH) / scale);
+        let (near, far) = (PEDESTAL_FROM / scale, (depth + HATCH_DEPTH) / scale);
         let across = (half + HATCH_SLANT) / scale;
         let along_y = self.out.y.abs() > self.out.x.abs();
         let (at, side, sign) = match along_y {
@@ -983,6 +987,10 @@ fn moved_off(
 /// pedestal (at ×10 the bearing drawn to the main view's sizes is a
 /// tenth of a crank, and a detail grown to it showed mostly paper).
 const MOST_FOR_BEARING: f64 = 72.0;
+
+/// Where a bearing's pedestal begins, page units out from its centre:
+/// past the pin's circle (4.2) and its line.
+const PEDESTAL_FROM: f64 = 6.0;
 
 /// The most a detail's frame grows to take in the bearing, as a share of
 /// its extent along the base's axis, where that is more than
