@@ -293,6 +293,11 @@ struct Bearing {
     out: Vector,
     /// The page width (page units) a detail may take.
     width: f64,
+    /// Whether a detail may grow to take the bearing in: not on a page of
+    /// fixed height, where the detail's size is its own and a frame grown
+    /// by page units does not shrink with the main view (Fig. 67 on a page
+    /// 1000 tall needed 1031).
+    grows: bool,
 }
 
 impl Bearing {
@@ -312,6 +317,7 @@ impl Bearing {
             foot,
             out: out / out.norm(),
             width: page.width() - 2.0 * page.margin(),
+            grows: !page.has_fixed_height(),
         })
     }
 
@@ -901,7 +907,8 @@ impl Bearing {
     /// bearing drawn at `scale` (the main view's or the detail's), the
     /// detail drawn at `detail`: an edge within [`BEARING_CLEAR`] of the
     /// base and its hatching, where it runs across them, moves out past
-    /// them where that grows the detail by at most [`MOST_FOR_BEARING`]
+    /// them, on a page free to grow ([`Bearing::grows`]), where that
+    /// grows the detail by at most [`MOST_FOR_BEARING`]
     /// or [`GROW_SHARE`] of its extent, and the sides then take in the base's ends where the detail still
     /// fits its width; else in, short of the base, where that keeps
     /// `inner` (the detailed points and room about them) inside; else
@@ -919,7 +926,10 @@ impl Bearing {
         let clear = BEARING_CLEAR / scale;
         let (lo, hi) = (frame.min(), frame.max());
         let extent = if along_y { hi.y - lo.y } else { hi.x - lo.x };
-        let most = (MOST_FOR_BEARING / detail).max(GROW_SHARE * extent);
+        let most = match self.grows {
+            true => (MOST_FOR_BEARING / detail).max(GROW_SHARE * extent),
+            false => f64::NEG_INFINITY,
+        };
         // (near edge, far edge, inner near, inner far) along the base's
         // axis, and the stretch of the frame across it.
         let (near, far, inner_near, inner_far, across) = match along_y {
