@@ -760,6 +760,15 @@ pub(crate) const COINCIDE: f64 = super::draw::polygons::COINCIDE;
 /// own letters must first be placed apart from the pin's.
 pub(crate) const UNDER_PIN: f64 = PIN_RADIUS + DOT_RADIUS + 2.0 * PIN_PEN;
 
+/// Page distance, centre to centre, within which a result's dot in a
+/// detail (E, G: [`crate::scene::letter_near_together`]) is one point
+/// with a pin's: its disc reaching the pin's circle, read as on the pin.
+/// A result's dot further off is seen beside the pin and lettered apart:
+/// Bennett's G, 0.026 r beyond B at l = 39 r, 0°, 8.3 units from B at
+/// ×20, was lettered "B, F, G, K, L", and the figure read as CG = CB
+/// against notes giving CG = 1.026 r.
+pub(crate) const ON_PIN: f64 = PIN_RADIUS + DOT_RADIUS;
+
 /// Page distance, centre to centre, within which a constructed point's
 /// dot stands by a pin in a detail: under it ([`UNDER_PIN`]) or its edge
 /// within two of the circle's pen widths of it. The letters of such

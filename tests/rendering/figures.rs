@@ -100,10 +100,17 @@ fn letters(name: FigureName) -> [&'static str; 5] {
 
 #[test]
 fn seed_figures_match_their_reviewed_snapshots() {
-    for name in FigureName::SCENES {
-        let svg = to_svg(&name.scene().unwrap().figure().unwrap());
-        snapshot_settings().bind(|| insta::assert_snapshot!(name.name(), svg));
-    }
+    // Every figure is compared before the test fails, so that one run
+    // names (and, with INSTA_UPDATE, writes) every snapshot that differs.
+    let differing: Vec<&str> = (FigureName::SCENES.iter())
+        .filter(|name| {
+            let svg = to_svg(&name.scene().unwrap().figure().unwrap());
+            let compare = || snapshot_settings().bind(|| insta::assert_snapshot!(name.name(), svg));
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(compare)).is_err()
+        })
+        .map(|name| name.name())
+        .collect();
+    assert!(differing.is_empty(), "snapshots that differ: {differing:?}");
 }
 
 fn ink_near(pixmap: &tiny_skia::Pixmap, p: (f64, f64), radius: i64) -> bool {

@@ -3460,8 +3460,11 @@ fn a_detail_letters_points_that_coincide_there_jointly() {
 /// its pen widths of its circle, take one joint letter by the pin, the
 /// pin's name first: Kisch's E, F and H under B at l = 43.8 r (each
 /// 4.2 units from B at ×20) stood lettered at the four corners of the
-/// pin with no dot to tell them by; Bennett's E at the edge of B's pin
-/// and K and G at C's were lettered apart round them at l = 29 r.
+/// pin with no dot to tell them by; Bennett's K at the edge of C's pin
+/// was lettered apart round it at l = 29 r. The results E and G join a
+/// pin only with their disc on its circle: Bennett's E (6.8 units from
+/// B) and G (7.8 from C) there are seen beside their pins and keep their
+/// own letters ([`a_result_seen_beside_a_pin_keeps_its_own_letter`]).
 #[test]
 fn points_under_one_pin_take_one_letter_by_it() {
     for (figure, rod, degrees, joints) in [
@@ -3481,7 +3484,7 @@ fn points_under_one_pin_take_one_letter_by_it() {
             "bennett-construction",
             29.0,
             89.08,
-            vec![("B", vec!["B", "E", "F"]), ("C", vec!["C", "G", "K"])],
+            vec![("B", vec!["B", "F"]), ("C", vec!["C", "K"])],
         ),
     ] {
         let svg = svg_at(figure, rod, 0.0, degrees);
@@ -3521,6 +3524,83 @@ fn points_under_one_pin_take_one_letter_by_it() {
             assert!(
                 led || (lx - px).hypot(ly - py) < 1.5 * 17.0 + names.len() as f64 * 10.0,
                 "{figure} l = {rod}, {degrees}°: {id} at ({lx}, {ly}), its pin at ({px}, {py})"
+            );
+        }
+    }
+}
+
+/// A result (E, the piston's velocity read as CE; G, its acceleration
+/// read as CG) whose dot is seen beside a pin in a detail keeps its dot
+/// and its own letter, each letter nearer its own mark's edge: Bennett's
+/// G, 0.026 r beyond B at l = 39 r, 0° (8.3 units at ×20), was lettered
+/// "B, F, G, K, L", and a reviewer read CG = CB off the figure against
+/// notes giving CG = 1.026 r; so at 180° (CG = 0.974 r) and Bennett's G
+/// by C at l = 29 r, 89.08°.
+#[test]
+fn a_result_seen_beside_a_pin_keeps_its_own_letter() {
+    for (rod, degrees, result, pin) in [
+        (39.0, 0.0, "G", "B"),
+        (39.0, 180.0, "G", "B"),
+        (29.0, 89.08, "G", "C"),
+        (29.0, 89.08, "E", "B"),
+    ] {
+        let svg = svg_at("bennett-construction", rod, 0.0, degrees);
+        let at = format!("l = {rod}, {degrees}°");
+        let joint = names_in(&svg, &format!("detail-label-{pin}"));
+        assert!(!joint.iter().any(|n| n == result), "{at}: {joint:?}");
+        let number = |id: &str, key: &str| -> f64 {
+            let v = common::attr(&svg, id, key).unwrap_or_else(|| panic!("{at}: no {key} of {id}"));
+            v.parse().unwrap()
+        };
+        // The letter naming the result, alone or with the points at its
+        // place ("F, G, K, L"), and its dot.
+        let head = ('A'..='Z')
+            .map(String::from)
+            .find(|n| {
+                names_in(&svg, &format!("detail-label-{n}"))
+                    .iter()
+                    .any(|m| m == result)
+            })
+            .unwrap_or_else(|| panic!("{at}: no letter names {result}"));
+        let dot = format!("detail-point-{head}");
+        let (dx, dy) = (number(&dot, "cx"), number(&dot, "cy"));
+        let (px, py) = (
+            number(&format!("detail-point-{pin}"), "cx"),
+            number(&format!("detail-point-{pin}"), "cy"),
+        );
+        let apart = (dx - px).hypot(dy - py);
+        assert!(
+            apart > 6.3,
+            "{at}: {result}'s dot {apart:.2} from {pin}'s pin"
+        );
+        // Each letter's box nearer its own mark than the other's.
+        let plate = Plate::read(&svg);
+        let pin_at = (
+            number(&format!("detail-point-{pin}"), "cx"),
+            number(&format!("detail-point-{pin}"), "cy"),
+        );
+        let from = |id: &str, p: (f64, f64)| {
+            let label = (plate.texts.iter()).find(|t| t.id == id);
+            label
+                .unwrap_or_else(|| panic!("{at}: no {id}"))
+                .rect
+                .distance_to(p)
+        };
+        let (own, other) = (
+            format!("detail-label-{head}"),
+            format!("detail-label-{pin}"),
+        );
+        // Measured to each mark's edge: a pin's circle 4.2 units about
+        // its centre, a dot's 2.1.
+        let (pin_edge, dot_edge) = (4.2, 2.1);
+        for (id, mine, theirs) in [
+            (&own, ((dx, dy), dot_edge), (pin_at, pin_edge)),
+            (&other, (pin_at, pin_edge), ((dx, dy), dot_edge)),
+        ] {
+            let (near, far) = (from(id, mine.0) - mine.1, from(id, theirs.0) - theirs.1);
+            assert!(
+                near < far,
+                "{at}: {id} {near:.1} from its mark, {far:.1} from the other"
             );
         }
     }

@@ -141,7 +141,7 @@ fn mechanism(ctx: &Ctx, sheet: &mut Sheet) -> Result<f64> {
         let scale = detail.transform().scale();
         let joined = detail
             .with_items(copied.then(|| in_detail.clone()).into_iter().flatten())
-            .with_items_edited(|all| letter_near_together(all, "detail-", scale));
+            .with_items_edited(|all| letter_near_together(all, "detail-", scale, &[]));
         joined_e1 |= copied && joined.item("detail-point-E1").is_none();
         panels.push(joined);
     }

@@ -12,12 +12,16 @@ struct Marked {
     name: String,
     at: Point,
     pin: bool,
+    /// Whether its letter names a result.
+    result: bool,
 }
 
 /// Letters together the points of a detail's `items` (ids `{prefix}point-…`
 /// and `{prefix}label-…`) whose markers stand within `UNDER_PIN` page
 /// units of each other at the detail's `scale` (page units per world
-/// unit: a dot under a pin's circle or within two of its pen widths):
+/// unit: a dot under a pin's circle or within two of its pen widths; one
+/// lettered with a result of `results`, only with its disc reaching the
+/// circle, [`crate::scene::canvas::ON_PIN`]):
 /// where the enlargement is held to the page's width, G at 0.02 of
 /// the crank from C, K between them, stay under C's pin at ×25, and their
 /// own dots and letters named points the reader cannot find. A dot is
@@ -27,8 +31,33 @@ struct Marked {
 /// constructed points apart, and two dots side by side still show two
 /// points). The dots' markers and letters are taken out and their names
 /// added to the pin's letter.
-pub(crate) fn letter_near_together(items: &mut Vec<Item>, prefix: &str, scale: f64) {
+///
+/// `results` are the letters of the points whose distance from C the
+/// figure is read by (E, CE the piston's velocity; G, CG its
+/// acceleration): seen beside a pin and lettered with it, G read as
+/// standing at B (Bennett's construction at l = 39 r, 0°: "B, F, G, K,
+/// L" with CG = 1.026 r in the notes), and the figure gave another
+/// acceleration than its notes.
+pub(crate) fn letter_near_together(
+    items: &mut Vec<Item>,
+    prefix: &str,
+    scale: f64,
+    results: &[&str],
+) {
     let point_id = format!("{prefix}point-");
+    let label_id = |name: &str| format!("{prefix}label-{name}");
+    let text_of = |items: &[Item], name: &str| {
+        let id = label_id(name);
+        (items.iter().find(|it| it.id == id)).and_then(|it| match &it.shape {
+            Shape::Label { text, .. } => Some(text.clone()),
+            _ => None,
+        })
+    };
+    // Whether a point's letter names a result (alone or with the points
+    // at its place, "F, G, K, L").
+    let names_a_result = |name: &str| {
+        text_of(items, name).is_some_and(|t| t.plain().split(", ").any(|n| results.contains(&n)))
+    };
     let marked: Vec<Marked> = (items.iter())
         .filter_map(|it| {
             let name = it.id.strip_prefix(&point_id)?;
@@ -41,11 +70,16 @@ pub(crate) fn letter_near_together(items: &mut Vec<Item>, prefix: &str, scale: f
                 name: name.to_string(),
                 at,
                 pin,
+                result: names_a_result(name),
             })
         })
         .collect();
     let near = |p: &Marked, q: &Marked| {
-        (p.pin != q.pin) && (p.at - q.at).norm() * scale < crate::scene::canvas::UNDER_PIN
+        let within = match p.result || q.result {
+            true => crate::scene::canvas::ON_PIN,
+            false => crate::scene::canvas::UNDER_PIN,
+        };
+        (p.pin != q.pin) && (p.at - q.at).norm() * scale < within
     };
     let mut left: Vec<&Marked> = marked.iter().collect();
     let mut groups: Vec<Vec<&Marked>> = Vec::new();
@@ -59,14 +93,6 @@ pub(crate) fn letter_near_together(items: &mut Vec<Item>, prefix: &str, scale: f
             groups.push(group);
         }
     }
-    let label_id = |name: &str| format!("{prefix}label-{name}");
-    let text_of = |items: &[Item], name: &str| {
-        let id = label_id(name);
-        (items.iter().find(|it| it.id == id)).and_then(|it| match &it.shape {
-            Shape::Label { text, .. } => Some(text.clone()),
-            _ => None,
-        })
-    };
     for mut group in groups {
         // Pins first in the order drawn, then the others by name.
         group.sort_by_key(|m| (!m.pin, (!m.pin).then_some(m.name.as_str())));

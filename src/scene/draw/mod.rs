@@ -1048,7 +1048,9 @@ fn detail_panel(
     draw_layers(ctx, poses, &mut canvas, false);
     let (mut items, _) = canvas.finish();
     joint::leave_out_along_links(&mut items, "detail-", scale);
-    joint::letter_near_together(&mut items, "detail-", scale);
+    let notation = scene.notation();
+    let results = [Named::VelocityPoint, Named::G].map(|p| notation.letter(p));
+    joint::letter_near_together(&mut items, "detail-", scale, &results);
     Panel::new("panel-detail", rect, transform, items).clipped()
 }
 
