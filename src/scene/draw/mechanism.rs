@@ -55,7 +55,12 @@ pub(super) fn foot(ctx: &LayerCtx, canvas: &Canvas) -> Foot {
     }
     let lines: Vec<(Vector, Through)> = (lines_from_centre(ctx).into_iter())
         .map(|(w, through)| (canvas.transform().apply_vector(w), through))
-        .filter(|(w, _)| w.norm() >= PIN_CLEAR_OF_BEARING)
+        // However short on the main view: a line hidden under the pin
+        // there is drawn in the crank's detail, which keeps this foot
+        // (Klein's CG at l = 29.7 r, 90.91°, 0.05 r to the right of C:
+        // left out, the bearing stood out to the right, and G's dot
+        // stood in its hatching at ×20).
+        .filter(|(w, _)| w.norm() > 0.0)
         .collect();
     // The heaviest of the lines within the cone about `foot`'s direction,
     // which a pedestal standing there has run through it.
