@@ -2228,12 +2228,16 @@ fn a_crowding_detail_s_frame_leaves_the_pins_letters_a_side() {
     // Kisch's construction at l = 1.05 r, 110°: A and C 21 units apart,
     // the detail ×2.5. Its frame stood 25.6 units left of A, where A's
     // letter fitted neither inside (the block's edge) nor outside (beyond
-    // 1.5 em): it sat on the frame. The frame now stands 20 units off.
+    // 1.5 em): it sat on the frame. The frame now stands 20 units off,
+    // or more where it keeps off the block's end (then 2.5 units off it,
+    // doubling it on the main view).
     let plate = plate_at("fig-66-kisch", 1.05, 0.0, 110.0);
     let main = &plate.panels[0];
     let frame = stroke_box(main, "detail-frame");
     let a = plate.point(main, "A").expect("A");
-    assert!((a.0 - frame.x0 - 20.0).abs() < 0.5, "{a:?} {frame:?}");
+    assert!(a.0 - frame.x0 > 19.5, "{a:?} {frame:?}");
+    let block = stroke_box(main, "block-slider");
+    assert!(block.x0 - frame.x0 >= 5.9, "{block:?} {frame:?}");
     assert_eq!(check(&plate, true), [], "fig-66 at 110°");
 }
 
@@ -3704,5 +3708,46 @@ fn labels_of_different_things_stand_half_an_em_apart() {
             near.is_empty(),
             "{figure} l = {rod}, e = {offset}, {degrees}°: {near:?}"
         );
+    }
+}
+
+/// A detail's frame on the main view keeps its sides off the slider
+/// block's ends (6 units) and its top and bottom off the guides' lines
+/// where the guides run across it (10 units: their hatching, 6.5 deep,
+/// and a gap). Kisch's construction at l = 1.08 r, 180° drew its ×4
+/// frame 3.5 units off the upper guide, inside its hatching, and its
+/// left side 3 units off the block's: read as the block's edge and the
+/// guide drawn twice (twenty-ninth review, 3).
+#[test]
+fn a_detail_s_frame_keeps_off_the_block_s_ends_and_the_guides() {
+    for (figure, rod, degrees) in [
+        ("fig-66-kisch", 1.08, 180.0),
+        ("fig-66-kisch", 1.05, 110.0),
+        ("fig-65-klein", 1.08, 180.0),
+        ("bennett-construction", 1.04, 180.0),
+    ] {
+        let plate = plate_at(figure, rod, 0.0, degrees);
+        let main = &plate.panels[0];
+        let frame = stroke_box(main, "detail-frame");
+        let block = stroke_box(main, "block-slider");
+        let at = format!("{figure} l = {rod}, {degrees}°");
+        let across = |lo: f64, hi: f64, a: f64, b: f64| lo < b && hi > a;
+        if across(frame.y0, frame.y1, block.y0, block.y1) {
+            for side in [frame.x0, frame.x1] {
+                for end in [block.x0, block.x1] {
+                    let apart = (side - end).abs();
+                    assert!(apart >= 5.9, "{at}: a side {apart:.1} off the block's end");
+                }
+            }
+        }
+        for id in ["guide-upper", "guide-lower"] {
+            let guide = stroke_box(main, id);
+            if across(frame.x0, frame.x1, guide.x0, guide.x1) {
+                for edge in [frame.y0, frame.y1] {
+                    let apart = (edge - guide.y0).abs();
+                    assert!(apart >= 9.9, "{at}: an edge {apart:.1} off {id}");
+                }
+            }
+        }
     }
 }

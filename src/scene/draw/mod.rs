@@ -60,6 +60,11 @@ pub(crate) struct Sizes {
     /// The world frame the main view was fitted to (over every held pose),
     /// once fitted: what the drawing reaches, for what is set beyond it.
     pub fitted: Option<Frame>,
+    /// The slider block's ends (world x) on a view of one pose that draws
+    /// the mechanism, once fitted: a detail's frame keeps its sides off
+    /// them ([`detail_frame`]). None on a view held over several poses,
+    /// where the block moves.
+    block_ends: Option<(f64, f64)>,
 }
 
 /// The slider block on the page, page units: its largest half length,
@@ -90,6 +95,7 @@ impl Sizes {
             offset: e,
             page_scale: None,
             fitted: None,
+            block_ends: None,
         }
     }
 
@@ -434,12 +440,7 @@ pub(crate) fn used_width(scene: &Scene, layout: &Layout) -> f64 {
         (world.max().x - world.min().x) * scale + 2.0 * INSET
     });
     let detail = layout.detail.map_or(0.0, |d| {
-        let frame = detail_frame(
-            &d,
-            scale,
-            layout.sizes.guide_heights(),
-            layout.bearing.as_ref(),
-        );
+        let frame = detail_frame(&d, scale, &layout.sizes, layout.bearing.as_ref());
         (frame.max().x - frame.min().x) * scale * d.magnification
     });
     drawn.max(detail) + 2.0 * mg
@@ -478,7 +479,7 @@ impl Layout {
         let mut bottom = self.main.max().y;
         if let Some(d) = &self.detail {
             let scale = self.transform.scale();
-            let frame = detail_frame(d, scale, self.sizes.guide_heights(), self.bearing.as_ref());
+            let frame = detail_frame(d, scale, &self.sizes, self.bearing.as_ref());
             let tall = (frame.max().y - frame.min().y) * scale * d.magnification;
             bottom += DETAIL_GAP + CAPTION + tall + NOTE_GAP;
         }
@@ -523,12 +524,21 @@ fn with_detail(
             details(scale)
         }
     };
+    let scene = ctx.scene;
+    let block_ends = (scene.held_view().is_none() && scene.has(Layer::Mechanism)).then(|| {
+        let (x, half) = (ctx.main.pose().a().x, ctx.sizes.block_half_length);
+        (x - half, x + half)
+    });
+    let sizes = Sizes {
+        block_ends,
+        ..ctx.sizes
+    };
     let (mut main, mut transform) = main_view(ctx, band, frame);
     let mut detail = details(transform.scale());
     let mut bearing = Bearing::of(ctx, &main, transform);
     let grown = beside_detail(
         ctx.scene,
-        &ctx.sizes,
+        &sizes,
         frame,
         detail.as_ref(),
         transform.scale(),
@@ -542,7 +552,7 @@ fn with_detail(
     Layout {
         sizes: Sizes {
             fitted: Some(grown),
-            ..ctx.sizes
+            ..sizes
         },
         band,
         main,
@@ -630,9 +640,7 @@ fn beside_detail(
     if scene.mechanism().offset() == 0.0 || !scene.has(Layer::Mechanism) {
         return frame;
     }
-    let left = detail_frame(d, scale, sizes.guide_heights(), bearing)
-        .min()
-        .x;
+    let left = detail_frame(d, scale, sizes, bearing).min().x;
     if left >= frame.min().x {
         return frame;
     }
@@ -682,8 +690,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
     let (main, transform) = (layout.main, layout.transform);
     let detail = layout.detail;
     let bearing = layout.bearing.as_ref();
-    let region =
-        detail.map(|d| detail_frame(&d, transform.scale(), layout.sizes.guide_heights(), bearing));
+    let region = detail.map(|d| detail_frame(&d, transform.scale(), &layout.sizes, bearing));
     let mut canvas = main_canvas(&layout, region);
     // The bearing the layout kept the detail's frame off, where it found
     // one; found from the canvas alike.
@@ -853,22 +860,47 @@ fn main_view_with(ctx: &LayerCtx, band: f64, world: Frame, room: f64) -> (Frame,
 fn detail_frame(
     d: &detail::Detail,
     main_scale: f64,
-    guides: [f64; 2],
+    sizes: &Sizes,
     bearing: Option<&Bearing>,
 ) -> Frame {
+    let guides = sizes.guide_heights();
     let scale = main_scale * d.magnification;
     let pad = detail::PAD / scale;
     let (lo, hi) = (d.region.min(), d.region.max());
     let grow = (0.5 * detail::MIN_HEIGHT / scale - 0.5 * (hi.y - lo.y) - pad).max(0.0);
     let (mut bottom, mut top) = (lo.y - pad - grow, hi.y + pad + grow);
-    let (left, right) = (lo.x - pad, hi.x + pad);
+    let (mut left, mut right) = (lo.x - pad, hi.x + pad);
     let keep = 0.5 * pad;
-    let clear = GUIDE_CLEAR / scale;
+    // Clear of the guides' heights in the detail, and on the main view
+    // where the guides run across the frame.
+    let (g0, g1) = sizes.guides();
+    let clear = match left < g1 && right > g0 {
+        true => (GUIDE_CLEAR / scale).max(GUIDE_CLEAR_MAIN / main_scale),
+        false => GUIDE_CLEAR / scale,
+    };
     // Twice: an edge moved off one guide may come near the other.
     for _ in 0..2 {
         for y in guides {
             top = off_band(top, hi.y + keep, (y, y), clear);
             bottom = -off_band(-bottom, -(lo.y - keep), (-y, -y), clear);
+        }
+    }
+    // The sides off the block's ends, where the block runs across the
+    // frame's height and the detail still fits the page's width.
+    let across = |(y0, y1): (f64, f64)| bottom < y1 && top > y0;
+    if let (Some(ends), Some(width)) = (sizes.block_ends, bearing.map(|b| b.width))
+        && across((guides[0], guides[1]))
+    {
+        let clear = (BLOCK_CLEAR / scale).max(BLOCK_CLEAR_MAIN / main_scale);
+        let (mut l, mut r) = (left, right);
+        for _ in 0..2 {
+            for x in [ends.0, ends.1] {
+                r = off_band(r, hi.x + keep, (x, x), clear);
+                l = -off_band(-l, -(lo.x - keep), (-x, -x), clear);
+            }
+        }
+        if (r - l) * scale <= width {
+            (left, right) = (l, r);
         }
     }
     let mut frame = Frame::new(Point::new(left, bottom), Point::new(right, top));
@@ -1016,6 +1048,21 @@ const BEARING_CLEAR: f64 = 5.0;
 /// The least distance between a detail's frame and a guide along it,
 /// page units: the guide's hatching (6.5 deep) and a clear gap.
 const GUIDE_CLEAR: f64 = 14.0;
+
+/// The least distance between a detail's frame drawn on the main view
+/// and a guide along it, main view's page units: the hatching and a gap.
+/// Held to [`GUIDE_CLEAR`] in the detail alone, the frame of a ×4 detail
+/// stood 3.5 units off the guide on the main view, inside its hatching
+/// (Kisch's construction at l = 1.08 r, 180°, the twenty-ninth review).
+const GUIDE_CLEAR_MAIN: f64 = 10.0;
+
+/// The least distance between a detail's side and an end of the slider
+/// block, page units of the detail, and of the main view: a side within
+/// it read as the block's edge drawn twice (Kisch's construction at
+/// l = 1.08 r, 180°, its frame's left side 3 units off the block's on
+/// the main view, the twenty-ninth review).
+const BLOCK_CLEAR: f64 = 10.0;
+const BLOCK_CLEAR_MAIN: f64 = 6.0;
 
 /// The detail panel showing `frame` below `top`, centred on a page
 /// `width` wide.
