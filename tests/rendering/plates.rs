@@ -3751,3 +3751,44 @@ fn a_detail_s_frame_keeps_off_the_block_s_ends_and_the_guides() {
         }
     }
 }
+
+/// The box marking a detail on the main view is not a slim box hugging
+/// the pins, nor has an edge through a pin it enlarges: at a long rod
+/// the ×20 frame about the crank, a few units wider than its two pins,
+/// or with its bottom edge along the rod through both, read as a
+/// slotted link (twenty-ninth review, Kisch's construction at l = 48 r,
+/// Bennett's at l = 39 r, 3). Each side is now 14 units at least and
+/// every edge 5 units or more from the centres of B and C.
+#[test]
+fn a_detail_s_box_on_the_main_view_reads_as_no_link() {
+    for (figure, rod, degrees) in [
+        ("fig-66-kisch", 48.0, 269.9),
+        ("fig-66-kisch", 48.0, 90.36),
+        ("fig-66-kisch", 48.0, 0.0),
+        ("fig-65-klein", 52.2, 89.92),
+        ("bennett-construction", 39.0, 0.0),
+        ("bennett-construction", 39.0, 180.0),
+    ] {
+        let plate = plate_at(figure, rod, 0.0, degrees);
+        let main = &plate.panels[0];
+        let frame = stroke_box(main, "detail-frame");
+        let at = format!("{figure} l = {rod}, {degrees}°");
+        let (w, h) = (frame.x1 - frame.x0, frame.y1 - frame.y0);
+        assert!(w.min(h) >= 14.0, "{at}: a box {w:.1} by {h:.1}");
+        for pin in ["B", "C"] {
+            let p = plate.point(main, pin).expect(pin);
+            let edges = [
+                p.0 - frame.x0,
+                frame.x1 - p.0,
+                p.1 - frame.y0,
+                frame.y1 - p.1,
+            ];
+            let inside = edges.iter().all(|e| *e > 0.0);
+            let nearest = edges.iter().fold(f64::INFINITY, |a, e| a.min(e.abs()));
+            assert!(
+                !inside || nearest >= 5.0,
+                "{at}: an edge {nearest:.1} from {pin}'s centre"
+            );
+        }
+    }
+}

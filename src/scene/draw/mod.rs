@@ -709,7 +709,21 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
             bottom,
             page.width(),
         );
-        mark_detail(&mut canvas, &frame, panel.rect(), d.magnification);
+        let pose = ctx.main.pose();
+        // The pins the detail was drawn for: at a high magnification the
+        // frame's pad about them is less than a pin's radius on the main
+        // view.
+        let pins: Vec<Point> = [pose.a(), pose.b(), pose.c()]
+            .into_iter()
+            .filter(|p| {
+                d.region
+                    .inflate(1e-9 * d.region.width().max(d.region.height()))
+                    .contains(*p)
+            })
+            .collect();
+        let scales = (transform.scale(), transform.scale() * d.magnification);
+        let mark = detail_mark(&frame, scales, bearing, &pins);
+        mark_detail(&mut canvas, &mark, panel.rect(), d.magnification);
         bottom = panel.rect().max().y + NOTE_GAP;
         panels.push(panel);
     }
@@ -1137,6 +1151,93 @@ fn mark_detail(canvas: &mut Canvas, frame: &Frame, rect: &Frame, magnification: 
         detail_marks(canvas, frame, rect, magnification);
     });
 }
+
+/// The box marking on the main view (drawn at `scale`, the detail at
+/// `detail`) the detail's
+/// `frame`: the frame, grown where a side of it is under [`MARK_SLIM`]
+/// about its middle to [`MARK_LEAST`] a side, and where an edge runs
+/// through the circle of one of the mechanism's `pins` (those the detail
+/// enlarges)
+/// ([`MARK_THROUGH_PIN`]), out past the pin by [`MARK_PIN_CLEAR`]; then kept off the crank centre's
+/// `bearing` ([`Bearing::kept_off`], grown past it by up to
+/// [`MOST_FOR_BEARING`] main view units where the box stays under
+/// [`MARK_MOST`] a side). At a long rod the frame about the
+/// crank, a few units wider than the crank pin and the crank centre's
+/// pin, hugged both, or ran along the rod through both: three reviewers
+/// read it as a slotted link. The frame as it is where nothing grows it.
+fn detail_mark(
+    frame: &Frame,
+    (scale, detail): (f64, f64),
+    bearing: Option<&Bearing>,
+    pins: &[Point],
+) -> Frame {
+    let least = match frame.width().min(frame.height()) * scale < MARK_SLIM {
+        true => MARK_LEAST / scale,
+        false => 0.0,
+    };
+    let half = Vector::new(frame.width().max(least), frame.height().max(least)) * 0.5;
+    let (mut lo, mut hi) = (frame.centre() - half, frame.centre() + half);
+    let (clear, through) = (MARK_PIN_CLEAR / scale, MARK_THROUGH_PIN / scale);
+    for p in pins {
+        // Each edge running through the pin's circle moves out past it.
+        let (near, far) = (p - lo, hi - p);
+        if near.x < through {
+            lo.x = p.x - clear;
+        }
+        if near.y < through {
+            lo.y = p.y - clear;
+        }
+        if far.x < through {
+            hi.x = p.x + clear;
+        }
+        if far.y < through {
+            hi.y = p.y + clear;
+        }
+    }
+    let mark = Frame::new(lo, hi);
+    if mark == *frame {
+        return mark;
+    }
+    let Some(b) = bearing else {
+        return mark;
+    };
+    // Grown past the bearing as the main view draws it where the box
+    // stays small (a long rod's crank and its bearing boxed together),
+    // else by no more than the detail's frame would be.
+    let wide = b.kept_off(mark, frame, (scale, scale), &|_| true);
+    match (wide.max() - wide.min()).max() * scale < MARK_MOST {
+        true => wide,
+        false => b.kept_off(mark, frame, (scale, detail), &|_| true),
+    }
+}
+
+/// The least side (page units) of the box marking a detail on the main
+/// view: the crank centre's pin (4.2 units), a pin's width clear of it
+/// each side of the crank of a long rod.
+const MARK_LEAST: f64 = 28.0;
+
+/// The side (page units) under which a detail's frame on the main view
+/// is a slim box that reads as a link: a pin's width (8.4) and its pen
+/// and a gap each side.
+const MARK_SLIM: f64 = 14.0;
+
+/// The least distance (page units) between the box marking a detail on
+/// the main view and a pin of the mechanism inside it: its circle (4.2)
+/// and a gap.
+const MARK_PIN_CLEAR: f64 = 7.0;
+
+/// The distance (page units) from a pin's centre within which an edge
+/// of the box marking a detail runs through the pin's circle (4.2) and
+/// pen.
+const MARK_THROUGH_PIN: f64 = 5.0;
+
+/// The most side (page units) of a detail's box on the main view grown
+/// past the crank centre's bearing by the main view's units: four ems,
+/// the side under which two joints in it are lettered in the detail
+/// alone (grown past the bearing at Fig. 67, l = 1.1 r, e = 0.08 r,
+/// 210°, the box reached 69 units and C and A were lettered on the main
+/// view again, crowded).
+const MARK_MOST: f64 = 68.0;
 
 /// [`mark_detail`]'s items.
 fn detail_marks(canvas: &mut Canvas, frame: &Frame, rect: &Frame, magnification: f64) {
