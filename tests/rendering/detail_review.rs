@@ -474,3 +474,51 @@ fn c_s_bearing_stands_away_from_a_short_result() {
         );
     }
 }
+
+/// Where a long rod is drawn beside its crank at 180° in the crank's
+/// detail, it turns out from B steeply enough to leave a result's dot on
+/// the crank just short of B in sight: Klein's and the inertia force's
+/// F, G (CG = 0.977 r at l = 43.5 r, 8 units from B at ×20) stood under
+/// the rod turning out along 20 units, and CG could not be read
+/// (thirtieth review, 2). The rod's drawn line keeps 4.4 units (its half
+/// pen, the dot's radius and a gap) from the dot's centre.
+#[test]
+fn a_rod_beside_its_crank_leaves_a_result_by_b_in_sight() {
+    for (name, engine) in [
+        (FigureName::Fig65Klein, (1.0, 43.5, 0.0, 180.0)),
+        (FigureName::InertiaForce, (1.0, 43.8, 0.0, 180.0)),
+        (FigureName::Fig66Kisch, (1.0, 43.5, 0.0, 180.0)),
+    ] {
+        let text = svg(name, engine);
+        let rod = path_of(&text, "detail-link-rod");
+        assert!(
+            rod.len() >= 4,
+            "{name:?} {engine:?}: the rod not drawn beside the crank"
+        );
+        let (key, mut checked) = ("id=\"detail-point-", 0);
+        for (name_at, _) in text.match_indices(key) {
+            let id_end = text[name_at + 4..].find('"').unwrap() + name_at + 4;
+            let id = &text[name_at + 4..id_end];
+            let (Some(r), Some(cx), Some(cy)) = (
+                attr(&text, id, "r"),
+                attr(&text, id, "cx"),
+                attr(&text, id, "cy"),
+            ) else {
+                continue;
+            };
+            if r.parse::<f64>().unwrap() > 3.0 {
+                continue; // a pin
+            }
+            let p = (cx.parse().unwrap(), cy.parse().unwrap());
+            let near = (rod.windows(2))
+                .map(|w| common::segment_distance(p, w[0], w[1]))
+                .fold(f64::INFINITY, f64::min);
+            assert!(
+                near >= 4.4,
+                "{name:?} {engine:?}: {id} {near:.2} from the rod"
+            );
+            checked += 1;
+        }
+        assert!(checked > 0, "{name:?} {engine:?}: no dot in the detail");
+    }
+}

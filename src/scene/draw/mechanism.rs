@@ -561,7 +561,13 @@ fn rod_beside_crank(
         return None;
     }
     let at = |s: f64| b + u * s;
-    let mut points = path_beside(canvas, (b, at(back)), n, jog);
+    // Out from B at 45°, within a link's width of it beside: a result's
+    // dot on the crank just short of B (Klein's F, G at l = 43.5 r,
+    // 180°, 8 units from B at ×20) stood under the rod turning out along
+    // twice that, and CG could not be read (thirtieth review, 2).
+    let shift = n * canvas.world(LINK_BESIDE);
+    let out = u * canvas.world(LINK_BESIDE).min(jog);
+    let mut points = vec![b, b + shift + out, at(back) + shift - u * jog, at(back)];
     points.extend(canvas.frame().clip_segment(at(back), a).map(|(_, end)| end));
     Some(points)
 }
