@@ -32,7 +32,8 @@ pub use path::{Path, PathBuilder, PathSegment};
 pub use style::Style;
 pub(crate) use style::{
     ANGLE_RADIUS, ANGLE_RADIUS_MOST, ARROW_LENGTH, DOT_RADIUS, HATCH_DEPTH, HATCH_SPACING,
-    NOTE_LINE, NOTE_SIZE, PIN_PEN, PIN_RADIUS, Pen, RIGHT_ANGLE, angle_radius,
+    LETTER_SIZE, NOTE_LINE, NOTE_SIZE, PIN_PEN, PIN_RADIUS, Pen, RIGHT_ANGLE, SMALL_DETAIL_EMS,
+    angle_radius,
 };
 pub use text::{
     MAX_TITLE_CHARS, RichText, Run, SUBSCRIPT_DROP, SUBSCRIPT_SIZE, SUPERSCRIPT_RISE, Title,

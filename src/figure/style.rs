@@ -151,7 +151,7 @@ impl Style {
     /// Font size of a text.
     pub(crate) fn font_size(&self, size: TextSize) -> f64 {
         match size {
-            TextSize::Letter => 17.0,
+            TextSize::Letter => LETTER_SIZE,
             TextSize::Small => 13.0,
             TextSize::Tick => 12.0,
         }
@@ -161,6 +161,16 @@ impl Style {
 /// Distance between the strokes of ground hatching, page units (the
 /// writer's and the hand-drawn sketches' alike).
 pub(crate) const HATCH_SPACING: f64 = 6.0;
+
+/// Font size of a point's letter ([`TextSize::Letter`]), page units.
+pub(crate) const LETTER_SIZE: f64 = 17.0;
+
+/// A detail's frame on the main view with no side this many ems (of a
+/// point's letter) long is too small to letter two pins beside it: they
+/// are lettered in the detail alone. The layout keeps to it, and the
+/// scene keeps a detail's box grown past the crank centre's bearing
+/// under it.
+pub(crate) const SMALL_DETAIL_EMS: f64 = 4.0;
 /// Depth of the strip of ground hatching, page units.
 /// Length of an arrowhead, page units (the renderer's).
 pub(crate) const ARROW_LENGTH: f64 = 10.0;

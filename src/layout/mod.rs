@@ -33,7 +33,7 @@ mod symbol_sizes;
 mod text;
 
 use crate::figure::{Figure, Font, Item, PageFromWorld, Panel, Part, RichText, Role, Shape};
-use crate::figure::{Pen, Style};
+use crate::figure::{Pen, SMALL_DETAIL_EMS, Style};
 use crate::geom::{Frame, Point, Vector};
 use labels::{
     NEARER, Obstacles, ROOM, STRUCK, Steer, TOO_NEAR, Wedge, box_nearer_another, over_the_other,
@@ -49,13 +49,10 @@ use std::f64::consts::FRAC_PI_2;
 use text::{ink_box, starts_italic, text_node};
 
 /// Two joints nearer than this many ems inside one small detail's frame
-/// (its sides under [`SMALL_FRAME_EMS`]) are lettered in the detail only:
+/// (its sides under [`SMALL_DETAIL_EMS`]) are lettered in the detail only:
 /// on the main view their letters would pile on each other and on the
 /// frame's magnification (the crank of a long rod, a few units across).
 const CROWDED_EMS: f64 = 2.0;
-/// A detail's frame on the main view with no side this many ems long is
-/// too small to letter two pins beside it.
-const SMALL_FRAME_EMS: f64 = 4.0;
 /// The farthest a label's glyphs may be put from its anchor, in font
 /// sizes: 1.5 em, less the side bearing (up to about 0.15 em) by which an
 /// italic letter's ink sits inside its advance, less a margin.
@@ -580,7 +577,7 @@ impl PanelLayout<'_> {
                     && (q - p.anchor).norm() < CROWDED_EMS * p.size
                     && (self.detail_marks.iter()).any(|m| {
                         let side = (m.max() - m.min()).max();
-                        m.contains(p.anchor) && m.contains(q) && side < SMALL_FRAME_EMS * p.size
+                        m.contains(p.anchor) && m.contains(q) && side < SMALL_DETAIL_EMS * p.size
                     })
             })
         };

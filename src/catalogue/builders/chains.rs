@@ -828,7 +828,8 @@ fn slot_panel(
 /// of its length each way (run straight beside the line, the frame's end
 /// met the crank halfway along at l = 1.1 r, 180°, short of C's pin).
 fn beside_path(s: &Canvas, (p, q): Seg, n: Vector) -> Vec<Point> {
-    path_beside(s, (p, q), n, s.world(LINK_JOG).min((q - p).norm() / 3.0))
+    let jog = s.world(LINK_JOG).min((q - p).norm() / 3.0);
+    path_beside(s, (p, q), n, (jog, jog))
 }
 
 /// A moving link nearer the line C O_cd than this (page units: a link's

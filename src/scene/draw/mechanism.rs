@@ -493,17 +493,18 @@ pub(crate) const LINK_JOG: f64 = 2.0 * LINK_BESIDE;
 
 /// The link `p q` drawn beside its line on the side `n` (a world unit
 /// vector square to it), [`LINK_BESIDE`] off it between its ends and
-/// turned in to them over `jog` (world units) at each: p, the two ends
-/// of the run beside, q. A `p q` of no length is its ends.
+/// turned in to them over `jogs` (world units along the line) at p and
+/// at q: p, the two ends of the run beside, q. A `p q` of no length is
+/// its ends.
 pub(crate) fn path_beside(
     canvas: &Canvas,
     (p, q): (Point, Point),
     n: Vector,
-    jog: f64,
+    (at_p, at_q): (f64, f64),
 ) -> Vec<Point> {
     let shift = n * canvas.world(LINK_BESIDE);
-    let along = crate::geom::unit(q - p).map_or(Vector::zeros(), |u| u * jog);
-    vec![p, p + shift + along, q + shift - along, q]
+    let u = crate::geom::unit(q - p).unwrap_or_else(Vector::zeros);
+    vec![p, p + shift + u * at_p, q + shift - u * at_q, q]
 }
 /// The crank lies under the rod where the crank centre stands nearer the
 /// rod than this (page units; a link's width and a little paper): the
@@ -565,9 +566,8 @@ fn rod_beside_crank(
     // dot on the crank just short of B (Klein's F, G at l = 43.5 r,
     // 180°, 8 units from B at ×20) stood under the rod turning out along
     // twice that, and CG could not be read (thirtieth review, 2).
-    let shift = n * canvas.world(LINK_BESIDE);
-    let out = u * canvas.world(LINK_BESIDE).min(jog);
-    let mut points = vec![b, b + shift + out, at(back) + shift - u * jog, at(back)];
+    let out = canvas.world(LINK_BESIDE).min(jog);
+    let mut points = path_beside(canvas, (b, at(back)), n, (out, jog));
     points.extend(canvas.frame().clip_segment(at(back), a).map(|(_, end)| end));
     Some(points)
 }

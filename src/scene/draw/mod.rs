@@ -29,7 +29,9 @@ use crate::figure::{
     Align, EngineRecord, Figure, Hue, Metadata, PageFromWorld, Panel, Part, RichText, Role, Shape,
     TextSize,
 };
-use crate::figure::{BEARING_FOOT, Foot, HATCH_DEPTH, NOTE_LINE, NOTE_SIZE};
+use crate::figure::{
+    BEARING_FOOT, Foot, HATCH_DEPTH, LETTER_SIZE, NOTE_LINE, NOTE_SIZE, SMALL_DETAIL_EMS,
+};
 use crate::geom::{Frame, Point, Vector};
 use crate::scene::linkage::HATCH_SLANT;
 use serde_json::{Map, Value, json};
@@ -715,11 +717,7 @@ pub(crate) fn build(scene: &Scene, layout: &Layout) -> (Figure, Evaluations) {
         // view.
         let pins: Vec<Point> = [pose.a(), pose.b(), pose.c()]
             .into_iter()
-            .filter(|p| {
-                d.region
-                    .inflate(1e-9 * d.region.width().max(d.region.height()))
-                    .contains(*p)
-            })
+            .filter(|p| d.region.contains(*p))
             .collect();
         let scales = (transform.scale(), transform.scale() * d.magnification);
         let mark = detail_mark(&frame, scales, bearing, &pins);
@@ -892,13 +890,7 @@ fn detail_frame(
         true => (GUIDE_CLEAR / scale).max(GUIDE_CLEAR_MAIN / main_scale),
         false => GUIDE_CLEAR / scale,
     };
-    // Twice: an edge moved off one guide may come near the other.
-    for _ in 0..2 {
-        for y in guides {
-            top = off_band(top, hi.y + keep, (y, y), clear);
-            bottom = -off_band(-bottom, -(lo.y - keep), (-y, -y), clear);
-        }
-    }
+    (bottom, top) = off_lines((bottom, top), (lo.y - keep, hi.y + keep), &guides, clear);
     // The sides off the block's ends, where the block runs across the
     // frame's height and the detail still fits the page's width.
     let across = |(y0, y1): (f64, f64)| bottom < y1 && top > y0;
@@ -906,13 +898,8 @@ fn detail_frame(
         && across((guides[0], guides[1]))
     {
         let clear = (BLOCK_CLEAR / scale).max(BLOCK_CLEAR_MAIN / main_scale);
-        let (mut l, mut r) = (left, right);
-        for _ in 0..2 {
-            for x in [ends.0, ends.1] {
-                r = off_band(r, hi.x + keep, (x, x), clear);
-                l = -off_band(-l, -(lo.x - keep), (-x, -x), clear);
-            }
-        }
+        let inner = (lo.x - keep, hi.x + keep);
+        let (l, r) = off_lines((left, right), inner, &[ends.0, ends.1], clear);
         if (r - l) * scale <= width {
             (left, right) = (l, r);
         }
@@ -929,6 +916,25 @@ fn detail_frame(
         }
     }
     frame
+}
+
+/// A frame's near and far edges along one axis, `(near, far)`, each
+/// moved off the `lines` it runs within `clear` of ([`off_band`]), its
+/// inside kept to `(inner near, inner far)`; twice, as an edge moved off
+/// one line may come near another.
+fn off_lines(
+    (mut near, mut far): (f64, f64),
+    (inner_near, inner_far): (f64, f64),
+    lines: &[f64],
+    clear: f64,
+) -> (f64, f64) {
+    for _ in 0..2 {
+        for &v in lines {
+            far = off_band(far, inner_far, (v, v), clear);
+            near = -off_band(-near, -inner_near, (-v, -v), clear);
+        }
+    }
+    (near, far)
 }
 
 /// A frame's far edge at `edge` (its inside below it) moved off the band
@@ -1232,12 +1238,12 @@ const MARK_PIN_CLEAR: f64 = 7.0;
 const MARK_THROUGH_PIN: f64 = 5.0;
 
 /// The most side (page units) of a detail's box on the main view grown
-/// past the crank centre's bearing by the main view's units: four ems,
-/// the side under which two joints in it are lettered in the detail
-/// alone (grown past the bearing at Fig. 67, l = 1.1 r, e = 0.08 r,
-/// 210°, the box reached 69 units and C and A were lettered on the main
-/// view again, crowded).
-const MARK_MOST: f64 = 68.0;
+/// past the crank centre's bearing by the main view's units: the side
+/// under which two joints in it are lettered in the detail alone
+/// ([`SMALL_DETAIL_EMS`] at a point's letter size; grown past the
+/// bearing at Fig. 67, l = 1.1 r, e = 0.08 r, 210°, the box reached 69
+/// units and C and A were lettered on the main view again, crowded).
+const MARK_MOST: f64 = SMALL_DETAIL_EMS * LETTER_SIZE;
 
 /// [`mark_detail`]'s items.
 fn detail_marks(canvas: &mut Canvas, frame: &Frame, rect: &Frame, magnification: f64) {
